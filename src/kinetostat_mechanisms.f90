@@ -1,0 +1,56 @@
+!> The registry of mechanisms: the one place that maps a deck's first namelist group
+!> (or a `template KIND`) to the mechanism's run and template routines.
+!> Adding a mechanism = its own modules + one `case` in each routine here.
+module kinetostat_mechanisms
+  use kinetostat_error, only: error_t, fatal_error, exit_input, exit_usage
+  use kinetostat_deck, only: read_group_name
+  use kinetostat_pr3207_report, only: run_pr3207
+  use kinetostat_pr3207_deck, only: write_pr3207_template
+  implicit none
+  private
+  public :: run_deck, write_template, known_kinds
+
+  !> Mechanism kinds (namelist group names) the program knows, for messages and --help.
+  character(*), parameter :: known_kinds = "pr3207"
+
+contains
+
+  !> Run the mechanism named by the deck's first namelist group; write to `unit`.
+  subroutine run_deck(path, output_format, unit, error)
+    !> Deck file.
+    character(*), intent(in) :: path
+    !> `format_table` or `format_csv`.
+    integer, intent(in) :: output_format
+    !> Output unit.
+    integer, intent(in) :: unit
+    !> Input or geometry error.
+    type(error_t), allocatable, intent(out) :: error
+    character(len=:), allocatable :: group
+    call read_group_name(path, group, error)
+    if (allocated(error)) return
+    select case (group)
+    case ("pr3207")
+      call run_pr3207(path, output_format, unit, error)
+    case default
+      call fatal_error(error, exit_input, path//": &"//group// &
+        ": unknown mechanism (known: "//known_kinds//")")
+    end select
+  end subroutine run_deck
+
+  !> Print the commented template deck of a mechanism kind.
+  subroutine write_template(kind, unit, error)
+    !> Namelist group name of the mechanism.
+    character(*), intent(in) :: kind
+    !> Output unit.
+    integer, intent(in) :: unit
+    !> Usage error for an unknown kind.
+    type(error_t), allocatable, intent(out) :: error
+    select case (kind)
+    case ("pr3207")
+      call write_pr3207_template(unit)
+    case default
+      call fatal_error(error, exit_usage, "template: unknown kind '"//kind//"' (known: "//known_kinds//")")
+    end select
+  end subroutine write_template
+
+end module kinetostat_mechanisms

@@ -1,0 +1,155 @@
+!> Writing helpers shared by every mechanism's report: output formats, the INPUT DATA
+!> echo, CSV rows at full precision, and the self-check footer.
+module kinetostat_output
+  use kinetostat_kinds, only: wp
+  use kinetostat_vec2, only: clean_zero
+  use kinetostat_selfcheck, only: selfcheck_tolerance
+  implicit none
+  private
+  public :: format_table, format_csv, format_from_name
+  public :: echo_real, echo_int, echo_logical, echo_array, echo_heading
+  public :: write_csv_header, write_csv_row, write_selfcheck_footer, selfcheck_ok
+
+  !> Output format: fixed-format legacy table.
+  integer, parameter :: format_table = 1
+  !> Output format: CSV, header row then one row per step.
+  integer, parameter :: format_csv = 2
+
+  !> INPUT DATA line for a real: name, value, unit.
+  character(*), parameter :: echo_real_fmt = '(3x,a,t20,"=",es18.9,2x,a)'
+  !> INPUT DATA line for an integer.
+  character(*), parameter :: echo_int_fmt = '(3x,a,t20,"=",i18,2x,a)'
+  !> INPUT DATA line for a logical.
+  character(*), parameter :: echo_logical_fmt = '(3x,a,t20,"=",l18,2x,a)'
+  !> INPUT DATA array heading: name(count), unit.
+  character(*), parameter :: echo_array_head_fmt = '(3x,a,"(",i0,")",t20,"=",2x,a)'
+  !> INPUT DATA array values, five per line.
+  character(*), parameter :: echo_array_fmt = '(6x,5es14.6)'
+  !> A heading line inside the table (e.g. " INPUT DATA").
+  character(*), parameter :: heading_fmt = '(/,1x,a)'
+  !> One CSV value: 13 significant digits.
+  character(*), parameter :: csv_value_fmt = '(es20.12e3)'
+  !> Self-check footer lines.
+  character(*), parameter :: footer_fmt = '(3x,a,t58,es10.2,2x,a)'
+
+contains
+
+  !> Output format code from its name; 0 when unknown.
+  pure integer function format_from_name(name)
+    character(*), intent(in) :: name
+    select case (name)
+    case ('table')
+      format_from_name = format_table
+    case ('csv')
+      format_from_name = format_csv
+    case default
+      format_from_name = 0
+    end select
+  end function format_from_name
+
+  !> A heading line (blank line before it).
+  subroutine echo_heading(unit, text)
+    integer, intent(in) :: unit
+    character(*), intent(in) :: text
+    write (unit, heading_fmt) text
+  end subroutine echo_heading
+
+  !> Echo one real deck value: NAME = value unit.
+  subroutine echo_real(unit, name, value, unit_name)
+    integer, intent(in) :: unit
+    character(*), intent(in) :: name, unit_name
+    real(wp), intent(in) :: value
+    write (unit, echo_real_fmt) name, clean_zero(value), unit_name
+  end subroutine echo_real
+
+  !> Echo one integer deck value.
+  subroutine echo_int(unit, name, value, unit_name)
+    integer, intent(in) :: unit
+    character(*), intent(in) :: name, unit_name
+    integer, intent(in) :: value
+    write (unit, echo_int_fmt) name, value, unit_name
+  end subroutine echo_int
+
+  !> Echo one logical deck value.
+  subroutine echo_logical(unit, name, value, unit_name)
+    integer, intent(in) :: unit
+    character(*), intent(in) :: name, unit_name
+    logical, intent(in) :: value
+    write (unit, echo_logical_fmt) name, value, unit_name
+  end subroutine echo_logical
+
+  !> Echo an array deck value, five numbers per line.
+  subroutine echo_array(unit, name, values, unit_name)
+    integer, intent(in) :: unit
+    character(*), intent(in) :: name, unit_name
+    real(wp), intent(in) :: values(:)
+    write (unit, echo_array_head_fmt) name, size(values), unit_name
+    write (unit, echo_array_fmt) clean_zero(values)
+  end subroutine echo_array
+
+  !> CSV header: the column names joined by commas.
+  subroutine write_csv_header(unit, columns)
+    integer, intent(in) :: unit
+    !> Column names (trailing blanks ignored).
+    character(*), intent(in) :: columns(:)
+    character(len=:), allocatable :: line
+    integer :: i
+    line = trim(columns(1))
+    do i = 2, size(columns)
+      line = line//","//trim(columns(i))
+    end do
+    write (unit, '(a)') line
+  end subroutine write_csv_header
+
+  !> One CSV row at full precision.
+  subroutine write_csv_row(unit, values)
+    integer, intent(in) :: unit
+    real(wp), intent(in) :: values(:)
+    character(len=(20 + 1) * size(values)) :: line
+    character(len=20) :: buf
+    integer :: i, pos
+    pos = 0
+    do i = 1, size(values)
+      write (buf, csv_value_fmt) clean_zero(values(i))
+      if (i > 1) then
+        line(pos + 1:pos + 1) = ","
+        pos = pos + 1
+      end if
+      line(pos + 1:pos + len_trim(adjustl(buf))) = trim(adjustl(buf))
+      pos = pos + len_trim(adjustl(buf))
+    end do
+    write (unit, '(a)') line(1:pos)
+  end subroutine write_csv_row
+
+  !> Whether both self-check figures are within `selfcheck_tolerance`.
+  pure logical function selfcheck_ok(max_residual, max_mismatch)
+    real(wp), intent(in) :: max_residual, max_mismatch
+    selfcheck_ok = max_residual <= selfcheck_tolerance .and. max_mismatch <= selfcheck_tolerance
+  end function selfcheck_ok
+
+  !> The table footer: worst equilibrium residual and worst power-balance mismatch.
+  subroutine write_selfcheck_footer(unit, max_residual, max_mismatch, driver_name)
+    integer, intent(in) :: unit
+    !> Largest relative equilibrium residual over all links and steps.
+    real(wp), intent(in) :: max_residual
+    !> Largest relative mismatch of the driving moment/force against the power balance.
+    real(wp), intent(in) :: max_mismatch
+    !> Name of the driving quantity (e.g. "M1", "F2").
+    character(*), intent(in) :: driver_name
+    character(len=2) :: verdict
+    call echo_heading(unit, "SELF-CHECK (relative; limit "//trim(tol_text())//")")
+    verdict = "OK"
+    if (max_residual > selfcheck_tolerance) verdict = "!!"
+    write (unit, footer_fmt) "MAX EQUILIBRIUM RESIDUAL, ALL LINKS AND STEPS", max_residual, verdict
+    verdict = "OK"
+    if (max_mismatch > selfcheck_tolerance) verdict = "!!"
+    write (unit, footer_fmt) "MAX "//driver_name//" MISMATCH VS POWER BALANCE", max_mismatch, verdict
+  end subroutine write_selfcheck_footer
+
+  function tol_text() result(s)
+    character(len=16) :: s
+    write (s, '(es8.1)') selfcheck_tolerance
+    s = adjustl(s)
+  end function tol_text
+
+end module kinetostat_output

@@ -1,0 +1,201 @@
+!> `&pr3207` decks: reading, validation, and the commented template.
+module kinetostat_pr3207_deck
+  use kinetostat_kinds, only: wp, g_default
+  use kinetostat_error, only: error_t
+  use kinetostat_text, only: real_str, int_str
+  use kinetostat_deck, only: deck_context_t, unset_real, unset_int, max_deck_array, &
+    open_deck, namelist_failure, deck_error, is_set, require_set, require_positive, &
+    require_nonnegative, require_rule, optional_default, count_values, steps_over_turn
+  use kinetostat_pr3207, only: pr3207_params_t
+  implicit none
+  private
+  public :: pr3207_deck_t, read_pr3207_deck, write_pr3207_template, pr3207_cut_force
+
+  !> A validated `&pr3207` deck.
+  type :: pr3207_deck_t
+    !> Mechanism data, SI.
+    type(pr3207_params_t) :: p
+    !> First crank angle, deg.
+    real(wp) :: phi_start = 0.0_wp
+    !> Crank step, deg.
+    real(wp) :: dphi = 0.0_wp
+    !> Number of steps.
+    integer :: n = 0
+    !> True when the cutting force came in the two-value form.
+    logical :: two_value = .false.
+    !> Two-value form: force on the working stroke, N (along +y).
+    real(wp) :: f5c_work = 0.0_wp
+    !> Two-value form: force elsewhere, N (along +y).
+    real(wp) :: f5c_idle = 0.0_wp
+    !> Two-value form: crank angle where cutting starts, deg.
+    real(wp) :: phi_cut_start = 0.0_wp
+    !> Two-value form: crank angle where cutting ends, deg.
+    real(wp) :: phi_cut_end = 0.0_wp
+    !> Cutting force per step, N (along +y).
+    real(wp), allocatable :: f5c(:)
+    !> Crank angle per step, deg.
+    real(wp), allocatable :: phi1_deg(:)
+  end type pr3207_deck_t
+
+  !> Template deck (reference data of the spec), one line per entry.
+  character(*), parameter :: template_lines(*) = [character(len=78) :: &
+    "! kinetostat deck: PR 3207, six-bar slotted-link (shaper) mechanism.", &
+    "! Frame: origin A, x from A to C pointing down (gravity along +x), y horizontal.", &
+    "! Links: 1 crank AB, 2 block on the lever, 3 slotted lever CD, 4 block at D,", &
+    "! 5 ram (moves along y), 6 frame. Blocks 2, 4 massless; crank's mass centre at A.", &
+    "&pr3207", &
+    "  l_ab   = 0.11    ! m, crank AB (must be < l_ac)", &
+    "  l_ac   = 0.38    ! m, centre distance A-C", &
+    "  l_cd   = 0.72    ! m, lever C-D (must be > l_ac + l_ab)", &
+    "  l_cs3  = 0.36    ! m, C to the lever's centre of mass S3", &
+    "  m1     = 12      ! kg, crank", &
+    "  m3     = 22      ! kg, lever", &
+    "  m5     = 60      ! kg, ram", &
+    "  j3     = 1.1     ! kg*m^2, lever about S3", &
+    "  omega1 = 7.5     ! rad/s, crank speed (constant; + = CCW)", &
+    "  g      = 9.81    ! m/s^2, gravity (optional, default 9.81; 0 = off)", &
+    "  phi_start = 0    ! deg, first crank angle from +x (optional, default 0)", &
+    "  dphi   = 30      ! deg, crank step (> 0)", &
+    "  ! n    = 13      ! steps (optional; default 360/dphi + 1)", &
+    "  ! cutting force F5c, N, signed along +y: either per step, f5c = v1, v2, ... (n values)", &
+    "  ! or the two-value form below (f5c_idle optional, default 0):", &
+    "  f5c_work = 3000  ! N, for crank angles in [phi_cut_start, phi_cut_end] (mod 360)", &
+    "  f5c_idle = 0     ! N, elsewhere", &
+    "  phi_cut_start = 95   ! deg", &
+    "  phi_cut_end   = 265  ! deg", &
+    "/"]
+
+contains
+
+  !> Print the commented template deck.
+  subroutine write_pr3207_template(unit)
+    !> Output unit.
+    integer, intent(in) :: unit
+    integer :: i
+    do i = 1, size(template_lines)
+      write (unit, '(a)') trim(template_lines(i))
+    end do
+  end subroutine write_pr3207_template
+
+  !> Two-value cutting force at crank angle `phi_deg` (deg): `work` inside
+  !> [start, end] taken counter-clockwise modulo 360, `idle` elsewhere.
+  pure function pr3207_cut_force(phi_deg, start, end, work, idle) result(f)
+    real(wp), intent(in) :: phi_deg, start, end, work, idle
+    real(wp) :: f
+    real(wp), parameter :: angle_tol = 1.0e-9_wp
+    real(wp) :: span, offset
+    span = end - start
+    f = idle
+    if (span >= 360.0_wp) then
+      f = work
+      return
+    end if
+    span = modulo(span, 360.0_wp)
+    offset = modulo(phi_deg - start, 360.0_wp)
+    if (offset <= span + angle_tol .or. offset >= 360.0_wp - angle_tol) f = work
+  end function pr3207_cut_force
+
+  !> Read and validate a `&pr3207` deck.
+  subroutine read_pr3207_deck(path, deck, error)
+    !> Deck file.
+    character(*), intent(in) :: path
+    !> The validated deck.
+    type(pr3207_deck_t), intent(out) :: deck
+    !> Input error naming file, group, variable and reason.
+    type(error_t), allocatable, intent(out) :: error
+    real(wp) :: l_ab, l_ac, l_cd, l_cs3, m1, m3, m5, j3, omega1, g, phi_start, dphi
+    real(wp) :: f5c_work, f5c_idle, phi_cut_start, phi_cut_end
+    real(wp), allocatable :: f5c(:)
+    integer :: n, unit, ios, n_f5c, k
+    character(len=512) :: msg
+    type(deck_context_t) :: ctx
+    logical :: two_value_given
+    namelist /pr3207/ l_ab, l_ac, l_cd, l_cs3, m1, m3, m5, j3, omega1, g, phi_start, dphi, n, &
+      f5c, f5c_work, f5c_idle, phi_cut_start, phi_cut_end
+
+    ctx%path = path
+    ctx%group = "pr3207"
+    l_ab = unset_real; l_ac = unset_real; l_cd = unset_real; l_cs3 = unset_real
+    m1 = unset_real; m3 = unset_real; m5 = unset_real; j3 = unset_real
+    omega1 = unset_real; g = unset_real; phi_start = unset_real; dphi = unset_real
+    f5c_work = unset_real; f5c_idle = unset_real; phi_cut_start = unset_real; phi_cut_end = unset_real
+    n = unset_int
+    allocate (f5c(max_deck_array), source=unset_real)
+
+    call open_deck(path, unit, error)
+    if (allocated(error)) return
+    read (unit, nml=pr3207, iostat=ios, iomsg=msg)
+    close (unit)
+    if (ios /= 0) then
+      call namelist_failure(ctx, ios, msg, error)
+      return
+    end if
+
+    ! lengths, masses, inertia, speed
+    call require_positive(ctx, "l_ab", l_ab, error); if (allocated(error)) return
+    call require_positive(ctx, "l_ac", l_ac, error); if (allocated(error)) return
+    call require_positive(ctx, "l_cd", l_cd, error); if (allocated(error)) return
+    call require_nonnegative(ctx, "l_cs3", l_cs3, error); if (allocated(error)) return
+    call require_nonnegative(ctx, "m1", m1, error); if (allocated(error)) return
+    call require_nonnegative(ctx, "m3", m3, error); if (allocated(error)) return
+    call require_nonnegative(ctx, "m5", m5, error); if (allocated(error)) return
+    call require_nonnegative(ctx, "j3", j3, error); if (allocated(error)) return
+    call require_set(ctx, "omega1", omega1, error); if (allocated(error)) return
+    g = optional_default(g, g_default)
+    call require_nonnegative(ctx, "g", g, error); if (allocated(error)) return
+    call require_rule(ctx, "l_ab", l_ab < l_ac, "must be < l_ac (got l_ab = "//real_str(l_ab)// &
+      ", l_ac = "//real_str(l_ac)//"): the lever must oscillate, the crank must not reach C", error)
+    if (allocated(error)) return
+    call require_rule(ctx, "l_cd", l_cd > l_ac + l_ab, "must be > l_ac + l_ab = "// &
+      real_str(l_ac + l_ab)//" (got "//real_str(l_cd)//"): D must pass beyond the crank circle", error)
+    if (allocated(error)) return
+
+    ! crank angles
+    phi_start = optional_default(phi_start, 0.0_wp)
+    call require_set(ctx, "phi_start", phi_start, error); if (allocated(error)) return
+    call steps_over_turn(ctx, dphi, n, deck%n, error); if (allocated(error)) return
+
+    ! cutting force: per-step array or the two-value form, not both
+    call count_values(ctx, "f5c", f5c, n_f5c, error); if (allocated(error)) return
+    two_value_given = any(is_set([f5c_work, f5c_idle, phi_cut_start, phi_cut_end]))
+    if (n_f5c > 0 .and. two_value_given) then
+      call deck_error(ctx, "f5c", "give either f5c(:) or f5c_work/f5c_idle/phi_cut_start/phi_cut_end, not both", error)
+      return
+    end if
+    if (n_f5c > 0) then
+      call require_rule(ctx, "f5c", n_f5c == deck%n, "expected "//int_str(deck%n)// &
+        " values (one per step), got "//int_str(n_f5c), error)
+      if (allocated(error)) return
+      deck%f5c = f5c(1:n_f5c)
+    else
+      if (.not. two_value_given) then
+        call deck_error(ctx, "f5c", "missing: give f5c(:) per step or f5c_work with phi_cut_start, phi_cut_end", error)
+        return
+      end if
+      call require_set(ctx, "f5c_work", f5c_work, error); if (allocated(error)) return
+      f5c_idle = optional_default(f5c_idle, 0.0_wp)
+      call require_set(ctx, "f5c_idle", f5c_idle, error); if (allocated(error)) return
+      call require_set(ctx, "phi_cut_start", phi_cut_start, error); if (allocated(error)) return
+      call require_set(ctx, "phi_cut_end", phi_cut_end, error); if (allocated(error)) return
+      deck%two_value = .true.
+      deck%f5c_work = f5c_work
+      deck%f5c_idle = f5c_idle
+      deck%phi_cut_start = phi_cut_start
+      deck%phi_cut_end = phi_cut_end
+    end if
+
+    deck%p = pr3207_params_t(l_ab=l_ab, l_ac=l_ac, l_cd=l_cd, l_cs3=l_cs3, m1=m1, m3=m3, m5=m5, &
+                             j3=j3, omega1=omega1, g=g)
+    deck%phi_start = phi_start
+    deck%dphi = dphi
+    allocate (deck%phi1_deg(deck%n))
+    deck%phi1_deg = [(phi_start + real(k - 1, wp) * dphi, k=1, deck%n)]
+    if (deck%two_value) then
+      allocate (deck%f5c(deck%n))
+      do k = 1, deck%n
+        deck%f5c(k) = pr3207_cut_force(deck%phi1_deg(k), phi_cut_start, phi_cut_end, f5c_work, f5c_idle)
+      end do
+    end if
+  end subroutine read_pr3207_deck
+
+end module kinetostat_pr3207_deck

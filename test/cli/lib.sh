@@ -1,0 +1,75 @@
+# Helpers for the command-line tests (sourced by tools/test). $KINETOSTAT is the binary.
+# Each check prints "FAIL name: detail" on failure and counts passes and failures.
+cli_passed=0
+cli_failed=0
+cli_tmp="$(mktemp -d)"
+# numdiff tolerances for golden comparisons: relative 1e-9, absolute 1e-9 (for exact zeros).
+golden_rtol=1e-9
+golden_atol=1e-9
+
+pass() { cli_passed=$((cli_passed + 1)); }
+fail() { cli_failed=$((cli_failed + 1)); echo "FAIL $1: $2"; }
+
+# run_ks ARGS...: run kinetostat, capture stdout/stderr/exit code in $out $err $rc.
+run_ks() {
+  out="$cli_tmp/stdout"; err="$cli_tmp/stderr"
+  "$KINETOSTAT" "$@" >"$out" 2>"$err"; rc=$?
+}
+
+# expect_exit NAME CODE ARGS...: exit code must be CODE.
+expect_exit() {
+  local name="$1" code="$2"; shift 2
+  run_ks "$@"
+  if [ "$rc" -eq "$code" ]; then pass; else fail "$name" "exit code $rc, expected $code; stderr: $(head -c 300 "$err")"; fi
+}
+
+# expect_input_error NAME PATTERN DECK: exit 2, one stderr line "kinetostat: error: ..." naming
+# the deck and matching PATTERN (grep -E), nothing on stdout, no output file, no NaN.
+expect_input_error() {
+  local name="$1" pattern="$2" deck="$3" code="${4:-2}"
+  local target="$cli_tmp/never_written.out"
+  rm -f "$target" "$target".tmp.*
+  run_ks "$deck" -o "$target"
+  local lines; lines=$(wc -l <"$err")
+  if [ "$rc" -ne "$code" ]; then fail "$name" "exit code $rc, expected $code; stderr: $(head -c 300 "$err")"; return; fi
+  if [ "$lines" -ne 1 ]; then fail "$name" "stderr has $lines lines, expected 1: $(head -c 300 "$err")"; return; fi
+  if ! grep -q "^kinetostat: error: $deck" "$err"; then fail "$name" "message does not start with 'kinetostat: error: $deck': $(cat "$err")"; return; fi
+  if ! grep -Eq "$pattern" "$err"; then fail "$name" "message does not match /$pattern/: $(cat "$err")"; return; fi
+  if ls "$target"* >/dev/null 2>&1; then fail "$name" "output file left behind"; return; fi
+  if [ -s "$out" ]; then fail "$name" "something was written to stdout"; return; fi
+  if grep -qiE 'backtrace|error termination|runtime error|^STOP' "$err"; then fail "$name" "runtime error text in stderr"; return; fi
+  pass
+}
+
+# expect_same NAME EXPECTED ACTUAL: numdiff within the golden tolerances.
+expect_same() {
+  local name="$1" expected="$2" actual="$3"
+  if numdiff -q -s ' \t\n,=()' -r "$golden_rtol" -a "$golden_atol" "$expected" "$actual" >/dev/null 2>&1; then
+    pass
+  else
+    fail "$name" "differs from $expected beyond rel $golden_rtol / abs $golden_atol:
+$(numdiff -s ' \t\n,=()' -r "$golden_rtol" -a "$golden_atol" "$expected" "$actual" 2>&1 | head -20)"
+  fi
+}
+
+# expect_differ NAME EXPECTED ACTUAL: numdiff must report a difference (the comparison can fail).
+expect_differ() {
+  local name="$1" expected="$2" actual="$3"
+  if numdiff -q -s ' \t\n,=()' -r "$golden_rtol" -a "$golden_atol" "$expected" "$actual" >/dev/null 2>&1; then
+    fail "$name" "numdiff accepted a perturbed file: the golden comparison cannot fail"
+  else
+    pass
+  fi
+}
+
+# expect_no_nan NAME FILE
+expect_no_nan() {
+  if grep -qiE '(^|[^a-z])(nan|inf|infinity)([^a-z]|$)|\*\*\*' "$2"; then fail "$1" "NaN/Infinity/overflow stars in $2"; else pass; fi
+}
+
+# deck_with NAME BASE SED_EXPR: a copy of deck BASE edited by sed, written to $cli_tmp/NAME.nml.
+deck_with() {
+  local name="$1" base="$2" expr="$3"
+  sed -e "$expr" "$base" >"$cli_tmp/$name.nml"
+  echo "$cli_tmp/$name.nml"
+}

@@ -1,0 +1,12 @@
+!> kinetostat's Fortran test program: physics and unit tests of every mechanism.
+!> Prints one line per failure and ends with "fortran: N passed, M failed".
+program kinetostat_tests
+  use test_harness, only: test_counts_t, report_counts
+  use test_foundation, only: run_foundation_tests
+  use test_pr3207, only: run_pr3207_tests
+  implicit none
+  type(test_counts_t) :: t
+  call run_foundation_tests(t)
+  call run_pr3207_tests(t)
+  call report_counts(t)
+end program kinetostat_tests
