@@ -27,8 +27,8 @@ module kinetostat_output
   character(*), parameter :: echo_array_fmt = '(6x,5es14.6)'
   !> A heading line inside the table (e.g. " INPUT DATA").
   character(*), parameter :: heading_fmt = '(/,1x,a)'
-  !> One CSV value: 13 significant digits.
-  character(*), parameter :: csv_value_fmt = '(es20.12e3)'
+  !> A CSV row: values with 13 significant digits, comma-separated (blanks dropped after).
+  character(*), parameter :: csv_row_fmt = '(*(es20.12e3,:,","))'
   !> Self-check footer lines.
   character(*), parameter :: footer_fmt = '(3x,a,t58,es10.2,2x,a)'
 
@@ -101,22 +101,19 @@ contains
     write (unit, '(a)') line
   end subroutine write_csv_header
 
-  !> One CSV row at full precision.
+  !> One CSV row at full precision: one formatted write, then the padding blanks dropped.
   subroutine write_csv_row(unit, values)
     integer, intent(in) :: unit
     real(wp), intent(in) :: values(:)
-    character(len=(20 + 1) * size(values)) :: line
-    character(len=20) :: buf
+    character(len=21 * size(values)) :: padded, line
     integer :: i, pos
+    write (padded, csv_row_fmt) clean_zero(values)
     pos = 0
-    do i = 1, size(values)
-      write (buf, csv_value_fmt) clean_zero(values(i))
-      if (i > 1) then
-        line(pos + 1:pos + 1) = ","
+    do i = 1, len_trim(padded)
+      if (padded(i:i) /= " ") then
         pos = pos + 1
+        line(pos:pos) = padded(i:i)
       end if
-      line(pos + 1:pos + len_trim(adjustl(buf))) = trim(adjustl(buf))
-      pos = pos + len_trim(adjustl(buf))
     end do
     write (unit, '(a)') line(1:pos)
   end subroutine write_csv_row
