@@ -5,7 +5,7 @@ module kinetostat_cli
   use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char
   use kinetostat_kinds, only: version_string
   use kinetostat_error, only: error_t, fatal_error, exit_success, exit_usage, exit_input
-  use kinetostat_output, only: format_table, format_from_name
+  use kinetostat_output, only: format_table, format_from_name, run_summary_t, selfcheck_ok
   use kinetostat_mechanisms, only: run_deck, write_template, known_kinds
   implicit none
   private
@@ -14,6 +14,9 @@ module kinetostat_cli
   !> One-line usage, printed with usage errors.
   character(*), parameter :: usage_line = &
     "usage: kinetostat DECK [-o FILE] [--format table|csv] [--quiet] | kinetostat template KIND | --help | --version"
+
+  !> Warning line when a run's self-check exceeds its tolerance.
+  character(*), parameter :: selfcheck_warning_fmt = '(a,es9.2,a,es9.2)'
 
   !> Help text.
   character(*), parameter :: help_lines(*) = [character(len=88) :: &
@@ -26,7 +29,7 @@ module kinetostat_cli
     "DECK is a Fortran namelist file; its first group names the mechanism.", &
     "-o FILE     write to FILE (atomically: nothing is left behind on error)", &
     "--format    table (default, the legacy printout) or csv (full precision)", &
-    "--quiet     no warnings on stderr (errors are still reported)", &
+    "--quiet     no self-check warnings on stderr (errors are still reported)", &
     "", &
     "Exit codes: 0 ok, 1 usage, 2 input error, 3 geometry error (step named)."]
 
@@ -61,6 +64,7 @@ contains
     integer, intent(out) :: exit_code
     type(cli_args_t) :: args
     type(error_t), allocatable :: error
+    type(run_summary_t) :: summary
     integer :: i
 
     call parse_args(args, error)
@@ -75,9 +79,16 @@ contains
       else if (allocated(args%template_kind)) then
         call write_template(args%template_kind, output_unit, error)
       else if (allocated(args%out_file)) then
-        call run_to_file(args, error)
+        call run_to_file(args, error, summary)
       else
-        call run_deck(args%deck, args%output_format, output_unit, error)
+        call run_deck(args%deck, args%output_format, output_unit, error, summary)
+      end if
+    end if
+    if (.not. allocated(error) .and. .not. args%quiet .and. summary%steps > 0) then
+      if (.not. selfcheck_ok(summary%max_residual, summary%max_mismatch)) then
+        write (error_unit, selfcheck_warning_fmt) "kinetostat: warning: "//args%deck// &
+          ": self-check failed (a bug; please report): max equilibrium residual", summary%max_residual, &
+          ", max "//summary%driver//" mismatch vs power balance", summary%max_mismatch
       end if
     end if
 
@@ -166,9 +177,10 @@ contains
 
   !> Write to a temporary file beside the target, rename it over the target on success,
   !> delete it on failure: an error never leaves a partial file.
-  subroutine run_to_file(args, error)
+  subroutine run_to_file(args, error, summary)
     type(cli_args_t), intent(in) :: args
     type(error_t), allocatable, intent(out) :: error
+    type(run_summary_t), intent(out) :: summary
     character(len=:), allocatable :: tmp
     character(len=16) :: pid_text
     character(len=512) :: msg
@@ -181,7 +193,7 @@ contains
       call fatal_error(error, exit_input, args%out_file//": cannot write output: "//trim(msg))
       return
     end if
-    call run_deck(args%deck, args%output_format, unit, error)
+    call run_deck(args%deck, args%output_format, unit, error, summary)
     if (allocated(error)) then
       close (unit, status='delete')
       return

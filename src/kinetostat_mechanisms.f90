@@ -4,6 +4,7 @@
 module kinetostat_mechanisms
   use kinetostat_error, only: error_t, fatal_error, exit_input, exit_usage
   use kinetostat_deck, only: read_group_name
+  use kinetostat_output, only: run_summary_t
   use kinetostat_pr3207_report, only: run_pr3207
   use kinetostat_pr3207_deck, only: write_pr3207_template
   implicit none
@@ -16,7 +17,7 @@ module kinetostat_mechanisms
 contains
 
   !> Run the mechanism named by the deck's first namelist group; write to `unit`.
-  subroutine run_deck(path, output_format, unit, error)
+  subroutine run_deck(path, output_format, unit, error, summary)
     !> Deck file.
     character(*), intent(in) :: path
     !> `format_table` or `format_csv`.
@@ -25,12 +26,14 @@ contains
     integer, intent(in) :: unit
     !> Input or geometry error.
     type(error_t), allocatable, intent(out) :: error
+    !> Self-check figures (steps = 0 when the mechanism has none).
+    type(run_summary_t), intent(out) :: summary
     character(len=:), allocatable :: group
     call read_group_name(path, group, error)
     if (allocated(error)) return
     select case (group)
     case ("pr3207")
-      call run_pr3207(path, output_format, unit, error)
+      call run_pr3207(path, output_format, unit, error, summary)
     case default
       call fatal_error(error, exit_input, path//": &"//group// &
         ": unknown mechanism (known: "//known_kinds//")")

@@ -9,6 +9,7 @@ module kinetostat_output
   public :: format_table, format_csv, format_from_name
   public :: echo_real, echo_int, echo_logical, echo_array, echo_heading
   public :: write_csv_header, write_csv_row, write_selfcheck_footer, selfcheck_ok
+  public :: run_summary_t
 
   !> Output format: fixed-format legacy table.
   integer, parameter :: format_table = 1
@@ -31,6 +32,18 @@ module kinetostat_output
   character(*), parameter :: csv_row_fmt = '(*(es20.12e3,:,","))'
   !> Self-check footer lines.
   character(*), parameter :: footer_fmt = '(3x,a,t58,es10.2,2x,a)'
+
+  !> What a run reports back to the CLI besides its output: the self-check figures.
+  type :: run_summary_t
+    !> Number of steps computed (0 when the mechanism has no self-check).
+    integer :: steps = 0
+    !> Largest relative equilibrium residual over all links and steps.
+    real(wp) :: max_residual = 0.0_wp
+    !> Largest relative mismatch of the driving moment/force against the power balance.
+    real(wp) :: max_mismatch = 0.0_wp
+    !> Name of the driving quantity ("M1", "F2", ...).
+    character(len=:), allocatable :: driver
+  end type run_summary_t
 
 contains
 

@@ -3,7 +3,7 @@ module kinetostat_pr3207_report
   use kinetostat_kinds, only: wp, deg_to_rad, rad_to_deg
   use kinetostat_error, only: error_t
   use kinetostat_vec2, only: magnitude, angle_360_deg, snap_noise
-  use kinetostat_output, only: format_csv, echo_heading, echo_real, echo_int, echo_array, &
+  use kinetostat_output, only: format_csv, run_summary_t, echo_heading, echo_real, echo_int, echo_array, &
     write_csv_header, write_csv_row, write_selfcheck_footer
   use kinetostat_pr3207, only: pr3207_step_t, pr3207_step
   use kinetostat_pr3207_deck, only: pr3207_deck_t, read_pr3207_deck
@@ -46,7 +46,7 @@ contains
 
   !> Read the deck, compute every step, then write the table or CSV to `unit`.
   !> Nothing is written unless the whole run succeeded.
-  subroutine run_pr3207(path, output_format, unit, error)
+  subroutine run_pr3207(path, output_format, unit, error, summary)
     !> Deck file.
     character(*), intent(in) :: path
     !> `format_table` or `format_csv`.
@@ -55,12 +55,16 @@ contains
     integer, intent(in) :: unit
     !> Input error from the deck.
     type(error_t), allocatable, intent(out) :: error
+    !> Self-check figures of the run.
+    type(run_summary_t), intent(out), optional :: summary
     type(pr3207_deck_t) :: deck
     type(pr3207_step_t), allocatable :: steps(:)
 
     call read_pr3207_deck(path, deck, error)
     if (allocated(error)) return
     call pr3207_solve(deck, steps)
+    if (present(summary)) summary = run_summary_t(size(steps), maxval(steps%residual), &
+                                                  maxval(steps%mismatch), "M1")
     if (output_format == format_csv) then
       call write_pr3207_csv(unit, deck, steps)
     else

@@ -75,3 +75,7 @@ expect_input_error f5c-both-forms '&pr3207: f5c: give either' "$(deck_with f5c_b
 expect_input_error f5c-neither '&pr3207: f5c: missing' "$(deck_with f5c_none "$ref" '/f5c_work/d; /phi_cut_start/d')"
 expect_input_error f5c-cut-missing '&pr3207: phi_cut_end: missing' "$(deck_with cut_missing "$ref" 's/, phi_cut_end = 265//')"
 expect_input_error unterminated '&pr3207: namelist' "$(deck_with unterminated "$ref" '/^\//d')"
+
+# --- success prints nothing on stderr (no self-check warning on the reference deck)
+run_ks "$ref"
+if [ "$rc" -eq 0 ] && [ ! -s "$err" ]; then pass; else fail pr3207-quiet-success "rc=$rc stderr: $(head -c 200 "$err")"; fi
