@@ -23,7 +23,14 @@ module test_pr3050
 
   !> Positions of the independent evaluation (computed here from scratch, not by the product).
   type :: frame_t
-    real(wp) :: a(2), b(2), s1(2), s2(2), s3(2), e2(2), phi2, s
+    !> Pivot A, pin B, centres of mass S1, S2, S3, m.
+    real(wp) :: a(2), b(2), s1(2), s2(2), s3(2)
+    !> Unit vector B -> A.
+    real(wp) :: e2(2)
+    !> Axis angle B -> A, rad.
+    real(wp) :: phi2
+    !> Cylinder length |A - B|, m.
+    real(wp) :: s
   end type frame_t
 
 contains

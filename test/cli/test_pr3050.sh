@@ -110,3 +110,16 @@ run_ks "$(deck_with p3050_around "$ref3050" 's/phi3_start = 43.72, phi3_end = 88
      s/^  omega3 = .*/  omega3 = 2*0.5/; s/^  eps3 = .*/  eps3 = 2*0/')" --format csv
 [ "$rc" -eq 0 ] && pass || fail pr3050-around-dead "rc=$rc: $(cat "$err")"
 expect_no_nan pr3050-around-dead-no-nan "$out"
+
+# --- constant speed: omega3 = 10*0.5, eps3 = 10*0 (repeat counts) reproduces the cruise steps
+# 4..7 of the reference law (omega3 = 0.5, eps3 = 0 there) exactly
+run_ks "$(deck_with const3050 "$ref3050" 's/^  omega3 = .*/  omega3 = 10*0.5/; s/^  eps3 = .*/  eps3 = 10*0/')" --format csv
+sed -n '5,8p' "$out" >"$cli_tmp/const3050.rows"
+sed -n '5,8p' data/expected/pr3050.csv >"$cli_tmp/cruise3050.rows"
+if [ "$rc" -eq 0 ] && [ "$(wc -l <"$cli_tmp/const3050.rows")" -eq 4 ]; then pass
+else fail pr3050-constant-speed-runs "rc=$rc: $(cat "$err")"; fi
+expect_same pr3050-constant-speed-equals-cruise "$cli_tmp/cruise3050.rows" "$cli_tmp/const3050.rows"
+# ... while its acceleration steps differ from the reference law's (eps3 /= 0 there)
+sed -n '2,4p' "$out" >"$cli_tmp/const3050.start"
+sed -n '2,4p' data/expected/pr3050.csv >"$cli_tmp/accel3050.start"
+expect_differ pr3050-constant-speed-differs-in-ramp "$cli_tmp/accel3050.start" "$cli_tmp/const3050.start"
