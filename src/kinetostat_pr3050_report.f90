@@ -1,6 +1,6 @@
 !> PR 3050 run: deck -> all steps -> legacy table (one line per step, E format) or CSV.
 module kinetostat_pr3050_report
-  use kinetostat_kinds, only: wp, deg_to_rad, rad_to_deg
+  use kinetostat_kinds, only: wp, deg_to_rad
   use kinetostat_error, only: error_t
   use kinetostat_text, only: int_str, real_str
   use kinetostat_vec2, only: magnitude, angle_360_deg, snap_noise
@@ -85,13 +85,13 @@ contains
     end if
   end subroutine run_pr3050
 
-  !> The row of CSV values of one step (rocker angle `phi3_deg` from `phi3_start`, deg).
+  !> The row of CSV values of one step.
   !> Forces below `noise_rel` times the step's largest force are roundoff: printed as 0 with angle 0.
-  pure function pr3050_csv_values(s, phi3_start) result(v)
+  pure function pr3050_csv_values(s, phi3rel) result(v)
     !> Results of the step.
     type(pr3050_step_t), intent(in) :: s
-    !> First rocker angle of the run, deg.
-    real(wp), intent(in) :: phi3_start
+    !> Rocker angle from the first step, phi3 - phi3_start (the original's F13G), deg.
+    real(wp), intent(in) :: phi3rel
     real(wp) :: v(size(pr3050_csv_columns))
     real(wp) :: floor, f(2, 3)
     integer :: i
@@ -100,7 +100,7 @@ contains
     do i = 1, 3
       f(:, i) = snap_noise(f(:, i), floor)
     end do
-    v(1) = s%phi3 * rad_to_deg - phi3_start
+    v(1) = phi3rel
     do i = 1, 3
       v(2 * i) = magnitude(f(:, i))
       v(2 * i + 1) = angle_360_deg(f(:, i))
@@ -116,7 +116,7 @@ contains
     integer :: k
     call write_csv_header(unit, pr3050_csv_columns)
     do k = 1, size(steps)
-      call write_csv_row(unit, pr3050_csv_values(steps(k), deck%phi3_start))
+      call write_csv_row(unit, pr3050_csv_values(steps(k), phi3rel(deck, k)))
     end do
   end subroutine write_pr3050_csv
 
@@ -157,7 +157,7 @@ contains
       write (unit, '(a)') trim(header_lines(k))
     end do
     do k = 1, size(steps)
-      v = pr3050_csv_values(steps(k), deck%phi3_start)
+      v = pr3050_csv_values(steps(k), phi3rel(deck, k))
       write (unit, step_line_fmt) v
     end do
 
@@ -166,7 +166,7 @@ contains
       write (unit, '(a)') trim(pair_header_lines(k))
     end do
     do k = 1, size(steps)
-      v = pr3050_csv_values(steps(k), deck%phi3_start)
+      v = pr3050_csv_values(steps(k), phi3rel(deck, k))
       floor = noise_rel * maxval(abs(v(2:8:2)))
       n21 = steps(k)%n21
       if (abs(n21) <= floor) n21 = 0.0_wp
@@ -177,5 +177,13 @@ contains
     end do
     call write_selfcheck_footer(unit, maxval(steps%residual), maxval(steps%mismatch), "F2")
   end subroutine write_pr3050_table
+
+  !> Rocker angle of step `k` from the first step, (k - 1)*dphi3, deg.
+  pure function phi3rel(deck, k) result(angle)
+    type(pr3050_deck_t), intent(in) :: deck
+    integer, intent(in) :: k
+    real(wp) :: angle
+    angle = real(k - 1, wp) * deck%dphi3
+  end function phi3rel
 
 end module kinetostat_pr3050_report

@@ -146,8 +146,8 @@ contains
   end subroutine test_statics_by_hand
 
   !> omega3 = eps3 = 0, only the rocker has weight (reference geometry, every step of the range):
-  !> the cylinder-rod assembly is then a two-force member along AB, and moments about C give
-  !> F2 * h = -M_C(G3)... with h = l_CA*l_CB*sin(phi3)/s the distance from C to the axis AB:
+  !> the cylinder-rod assembly is then a two-force member along AB, and moments of the rocker
+  !> about C give F2*h = -M_C(G3), h = l_CA*l_CB*sin(phi3)/s the distance from C to the axis:
   !> cross(B, F32) + cross(S3, G3) = 0 with F32 = -F2*e2 and cross(B, e2) = -h.
   subroutine test_statics_rocker_weight(t)
     type(test_counts_t), intent(inout) :: t
