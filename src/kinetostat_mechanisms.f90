@@ -7,12 +7,14 @@ module kinetostat_mechanisms
   use kinetostat_output, only: run_summary_t
   use kinetostat_pr3207_report, only: run_pr3207
   use kinetostat_pr3207_deck, only: write_pr3207_template
+  use kinetostat_pr3050_report, only: run_pr3050
+  use kinetostat_pr3050_deck, only: write_pr3050_template
   implicit none
   private
   public :: run_deck, write_template, known_kinds
 
   !> Mechanism kinds (namelist group names) the program knows, for messages and --help.
-  character(*), parameter :: known_kinds = "pr3207"
+  character(*), parameter :: known_kinds = "pr3207, pr3050"
 
 contains
 
@@ -34,6 +36,8 @@ contains
     select case (group)
     case ("pr3207")
       call run_pr3207(path, output_format, unit, error, summary)
+    case ("pr3050")
+      call run_pr3050(path, output_format, unit, error, summary)
     case default
       call fatal_error(error, exit_input, path//": &"//group// &
         ": unknown mechanism (known: "//known_kinds//")")
@@ -51,6 +55,8 @@ contains
     select case (kind)
     case ("pr3207")
       call write_pr3207_template(unit)
+    case ("pr3050")
+      call write_pr3050_template(unit)
     case default
       call fatal_error(error, exit_usage, "template: unknown kind '"//kind//"' (known: "//known_kinds//")")
     end select

@@ -1,0 +1,205 @@
+!> `&pr3050` decks: reading, validation, and the commented template.
+module kinetostat_pr3050_deck
+  use kinetostat_kinds, only: wp, g_default, deg_to_rad
+  use kinetostat_error, only: error_t
+  use kinetostat_text, only: real_str, int_str
+  use kinetostat_deck, only: deck_context_t, unset_real, max_deck_array, max_steps, &
+    open_deck, namelist_failure, deck_error, require_set, require_positive, &
+    require_nonnegative, require_rule, optional_default, count_values
+  use kinetostat_pr3050, only: pr3050_params_t
+  implicit none
+  private
+  public :: pr3050_deck_t, read_pr3050_deck, write_pr3050_template, pr3050_step_count
+
+  !> Largest distance of (phi3_end - phi3_start)/dphi3 from a whole number, relative to it
+  !> (at least 1), that still counts as whole (decimal angles are not exact in binary).
+  real(wp), parameter :: whole_steps_tol = 1.0e-9_wp
+
+  !> A validated `&pr3050` deck.
+  type :: pr3050_deck_t
+    !> Mechanism data, SI (angles delta, gamma in rad).
+    type(pr3050_params_t) :: p
+    !> Angle of CS3 ahead of CB as given, deg.
+    real(wp) :: delta_deg = 0.0_wp
+    !> Direction of gravity as given, deg.
+    real(wp) :: gamma_deg = 0.0_wp
+    !> First rocker angle, deg.
+    real(wp) :: phi3_start = 0.0_wp
+    !> Last rocker angle, deg.
+    real(wp) :: phi3_end = 0.0_wp
+    !> Rocker step, deg.
+    real(wp) :: dphi3 = 0.0_wp
+    !> Number of steps N = (phi3_end - phi3_start)/dphi3 + 1.
+    integer :: n = 0
+    !> Rocker angle per step, deg.
+    real(wp), allocatable :: phi3_deg(:)
+    !> Rocker angular speed per step, rad/s.
+    real(wp), allocatable :: omega3(:)
+    !> Rocker angular acceleration per step, rad/s^2.
+    real(wp), allocatable :: eps3(:)
+  end type pr3050_deck_t
+
+  !> Template deck (the spec's reference data), one line per entry.
+  character(*), parameter :: template_lines(*) = [character(len=100) :: &
+    "! kinetostat deck: PR 3050, four-bar with an oscillating hydraulic cylinder.", &
+    "! Links: 1 cylinder pivoted on the frame at A, 2 piston with rod pinned at B to 3,", &
+    "! 3 rocker (turning platform) pivoted at C, 4 frame. Frame: origin C, x from C to A,", &
+    "! y counter-clockwise; angles in deg counter-clockwise from x. The oil force F2 drives", &
+    "! (positive pushing the rod out of the cylinder); the rocker's motion is prescribed.", &
+    "&pr3050", &
+    "  l_ca   = 1.667   ! m, centre distance C-A (> 0)", &
+    "  l_cb   = 1.222   ! m, rocker arm C-B (> 0)", &
+    "  l_cs3  = 2.31    ! m, C to the rocker's centre of mass S3 (>= 0)", &
+    "  delta  = 10.5    ! deg, angle of CS3 ahead of CB (counter-clockwise)", &
+    "  l_bs2  = 0.48    ! m, B to the rod's centre of mass S2, along the rod (>= 0)", &
+    "  l_s1a  = 0.42    ! m, the cylinder's centre of mass S1 to A, along the axis (>= 0)", &
+    "  gamma  = 313.72  ! deg, direction of gravity in the C-A frame (270 if x is horizontal)", &
+    "  g      = 9.81    ! m/s^2, gravity (optional, default 9.81; 0 = off)", &
+    "  m1     = 15      ! kg, cylinder 1 (>= 0)", &
+    "  m2     = 28      ! kg, rod with piston 2 (>= 0)", &
+    "  m3     = 1056    ! kg, rocker 3 (>= 0)", &
+    "  j1     = 1.5     ! kg*m^2, cylinder about S1 (>= 0)", &
+    "  j2     = 1.5     ! kg*m^2, rod about S2 (>= 0)", &
+    "  j3     = 622     ! kg*m^2, rocker about S3 (>= 0)", &
+    "  phi3_start = 43.72  ! deg, first rocker angle", &
+    "  phi3_end   = 88.72  ! deg, last rocker angle (> phi3_start)", &
+    "  dphi3      = 5      ! deg, step (> 0); N = (phi3_end - phi3_start)/dphi3 + 1 must be whole", &
+    "  ! rocker speed and angular acceleration, exactly N values each (+ = counter-clockwise)", &
+    "  omega3 = 0, 0.28868, 0.40825, 0.5, 0.5, 0.5, 0.5, 0.40825, 0.28868, 0        ! rad/s", &
+    "  eps3   = 0.47746, 0.47746, 0.47746, 0, 0, 0, 0, -0.47746, -0.47746, -0.47746  ! rad/s^2", &
+    "/"]
+
+contains
+
+  !> Print the commented template deck.
+  subroutine write_pr3050_template(unit)
+    !> Output unit.
+    integer, intent(in) :: unit
+    integer :: i
+    do i = 1, size(template_lines)
+      write (unit, '(a)') trim(template_lines(i))
+    end do
+  end subroutine write_pr3050_template
+
+  !> Number of steps N = (phi3_end - phi3_start)/dphi3 + 1 of a rocker range (deg), or 0
+  !> when the range is not a whole number of steps, or -1 when it exceeds max_steps.
+  !> Needs dphi3 > 0 and phi3_end > phi3_start.
+  pure function pr3050_step_count(phi3_start, phi3_end, dphi3) result(n)
+    !> First rocker angle, deg.
+    real(wp), intent(in) :: phi3_start
+    !> Last rocker angle, deg.
+    real(wp), intent(in) :: phi3_end
+    !> Rocker step, deg.
+    real(wp), intent(in) :: dphi3
+    integer :: n
+    real(wp) :: q
+    q = (phi3_end - phi3_start) / dphi3
+    if (.not. q + 1.0_wp <= real(max_steps, wp)) then
+      n = -1
+    else if (abs(q - anint(q)) > whole_steps_tol * max(1.0_wp, q)) then
+      n = 0
+    else
+      n = nint(q) + 1
+    end if
+  end function pr3050_step_count
+
+  !> Read and validate a `&pr3050` deck.
+  subroutine read_pr3050_deck(path, deck, error)
+    !> Deck file.
+    character(*), intent(in) :: path
+    !> The validated deck.
+    type(pr3050_deck_t), intent(out) :: deck
+    !> Input error naming file, group, variable and reason.
+    type(error_t), allocatable, intent(out) :: error
+    real(wp) :: l_ca, l_cb, l_cs3, delta, l_bs2, l_s1a, gamma, g, m1, m2, m3, j1, j2, j3
+    real(wp) :: phi3_start, phi3_end, dphi3
+    real(wp), allocatable :: omega3(:), eps3(:)
+    integer :: unit, ios, n_omega3, n_eps3, k
+    character(len=512) :: msg
+    type(deck_context_t) :: ctx
+    namelist /pr3050/ l_ca, l_cb, l_cs3, delta, l_bs2, l_s1a, gamma, g, m1, m2, m3, j1, j2, j3, &
+      phi3_start, phi3_end, dphi3, omega3, eps3
+
+    ctx%path = path
+    ctx%group = "pr3050"
+    l_ca = unset_real; l_cb = unset_real; l_cs3 = unset_real; delta = unset_real
+    l_bs2 = unset_real; l_s1a = unset_real; gamma = unset_real; g = unset_real
+    m1 = unset_real; m2 = unset_real; m3 = unset_real
+    j1 = unset_real; j2 = unset_real; j3 = unset_real
+    phi3_start = unset_real; phi3_end = unset_real; dphi3 = unset_real
+    allocate (omega3(max_deck_array), source=unset_real)
+    allocate (eps3(max_deck_array), source=unset_real)
+
+    call open_deck(path, unit, error)
+    if (allocated(error)) return
+    read (unit, nml=pr3050, iostat=ios, iomsg=msg)
+    close (unit)
+    if (ios /= 0) then
+      call namelist_failure(ctx, ios, msg, error)
+      return
+    end if
+
+    ! lengths and angles of the links
+    call require_positive(ctx, "l_ca", l_ca, error); if (allocated(error)) return
+    call require_positive(ctx, "l_cb", l_cb, error); if (allocated(error)) return
+    call require_nonnegative(ctx, "l_cs3", l_cs3, error); if (allocated(error)) return
+    call require_set(ctx, "delta", delta, error); if (allocated(error)) return
+    call require_nonnegative(ctx, "l_bs2", l_bs2, error); if (allocated(error)) return
+    call require_nonnegative(ctx, "l_s1a", l_s1a, error); if (allocated(error)) return
+    ! gravity, masses, inertias
+    call require_set(ctx, "gamma", gamma, error); if (allocated(error)) return
+    g = optional_default(g, g_default)
+    call require_nonnegative(ctx, "g", g, error); if (allocated(error)) return
+    call require_nonnegative(ctx, "m1", m1, error); if (allocated(error)) return
+    call require_nonnegative(ctx, "m2", m2, error); if (allocated(error)) return
+    call require_nonnegative(ctx, "m3", m3, error); if (allocated(error)) return
+    call require_nonnegative(ctx, "j1", j1, error); if (allocated(error)) return
+    call require_nonnegative(ctx, "j2", j2, error); if (allocated(error)) return
+    call require_nonnegative(ctx, "j3", j3, error); if (allocated(error)) return
+
+    ! rocker range: N = (phi3_end - phi3_start)/dphi3 + 1
+    call require_set(ctx, "phi3_start", phi3_start, error); if (allocated(error)) return
+    call require_set(ctx, "phi3_end", phi3_end, error); if (allocated(error)) return
+    call require_positive(ctx, "dphi3", dphi3, error); if (allocated(error)) return
+    call require_rule(ctx, "phi3_end", phi3_end > phi3_start, "must be > phi3_start (got phi3_end = "// &
+      real_str(phi3_end)//", phi3_start = "//real_str(phi3_start)//"): the range gives no steps", error)
+    if (allocated(error)) return
+    deck%n = pr3050_step_count(phi3_start, phi3_end, dphi3)
+    call require_rule(ctx, "dphi3", deck%n /= -1, "too small: (phi3_end - phi3_start)/dphi3 + 1 exceeds "// &
+      int_str(max_steps)//" steps", error)
+    if (allocated(error)) return
+    call require_rule(ctx, "dphi3", deck%n /= 0, "phi3_end - phi3_start = "//real_str(phi3_end - phi3_start)// &
+      " is not a whole number of steps dphi3 = "//real_str(dphi3), error)
+    if (allocated(error)) return
+
+    ! speed law: exactly N values each
+    call count_values(ctx, "omega3", omega3, n_omega3, error); if (allocated(error)) return
+    call require_rule(ctx, "omega3", n_omega3 > 0, "missing: give N = "//int_str(deck%n)// &
+      " values (one per step)", error)
+    if (allocated(error)) return
+    call require_rule(ctx, "omega3", n_omega3 == deck%n, "expected "//int_str(deck%n)// &
+      " values (one per step), got "//int_str(n_omega3), error)
+    if (allocated(error)) return
+    call count_values(ctx, "eps3", eps3, n_eps3, error); if (allocated(error)) return
+    call require_rule(ctx, "eps3", n_eps3 > 0, "missing: give N = "//int_str(deck%n)// &
+      " values (one per step)", error)
+    if (allocated(error)) return
+    call require_rule(ctx, "eps3", n_eps3 == deck%n, "expected "//int_str(deck%n)// &
+      " values (one per step), got "//int_str(n_eps3), error)
+    if (allocated(error)) return
+
+    deck%p = pr3050_params_t(l_ca=l_ca, l_cb=l_cb, l_cs3=l_cs3, delta=delta * deg_to_rad, l_bs2=l_bs2, &
+                             l_s1a=l_s1a, gamma=gamma * deg_to_rad, g=g, m1=m1, m2=m2, m3=m3, &
+                             j1=j1, j2=j2, j3=j3)
+    deck%delta_deg = delta
+    deck%gamma_deg = gamma
+    deck%phi3_start = phi3_start
+    deck%phi3_end = phi3_end
+    deck%dphi3 = dphi3
+    allocate (deck%phi3_deg(deck%n))
+    deck%phi3_deg = [(phi3_start + real(k - 1, wp) * dphi3, k=1, deck%n)]
+    deck%omega3 = omega3(1:deck%n)
+    deck%eps3 = eps3(1:deck%n)
+  end subroutine read_pr3050_deck
+
+end module kinetostat_pr3050_deck
