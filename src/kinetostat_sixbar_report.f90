@@ -1,0 +1,199 @@
+!> T.FTN run: deck -> all steps -> legacy table (appendix 2's two lines per step) or CSV.
+module kinetostat_sixbar_report
+  use kinetostat_kinds, only: wp, deg_to_rad, rad_to_deg
+  use kinetostat_error, only: error_t, fatal_error, exit_geometry
+  use kinetostat_text, only: real_str, int_str
+  use kinetostat_vec2, only: magnitude, angle_180_deg, snap_noise
+  use kinetostat_output, only: format_csv, echo_heading, echo_real, echo_int, echo_logical, echo_array, &
+    write_csv_header, write_csv_row, write_selfcheck_footer
+  use kinetostat_sixbar, only: sixbar_step_t, sixbar_step, sixbar_ok, sixbar_open1, sixbar_dead1, &
+    sixbar_open2, sixbar_dead2
+  use kinetostat_sixbar_deck, only: sixbar_deck_t, read_sixbar_deck
+  implicit none
+  private
+  public :: run_sixbar, sixbar_solve, sixbar_csv_columns, sixbar_csv_values
+
+  !> CSV columns, in the spec's order.
+  character(*), parameter :: sixbar_csv_columns(*) = [character(len=4) :: &
+    "phi1", "F21", "F21G", "F32", "F32G", "F43", "F43G", "F45", "F45G", "F36", "F36G", &
+    "F16", "F16G", "F56", "M1"]
+  !> Title line of the table.
+  character(*), parameter :: title_fmt = '(1x,a)'
+  !> Results header: appendix 2's two lines (F0 = crank angle), then units and frames.
+  character(*), parameter :: header_lines(*) = [character(len=108) :: &
+    "       F0         F21         F32         F43         F45         F36         F16         F56          M1", &
+    "                 F21G        F32G        F43G        F45G        F36G        F16G", &
+    "      deg           N           N           N           N           N           N           N         N*m", &
+    "                deg/x1      deg/x1      deg/x2      deg/x2      deg/x1      deg/x1"]
+  !> Step line 1: crank angle, six force magnitudes, signed F56, driving moment.
+  character(*), parameter :: step_line1_fmt = '(f9.2,7f12.2,f12.3)'
+  !> Step line 2: the six force angles under their magnitudes.
+  character(*), parameter :: step_line2_fmt = '(9x,6f12.2)'
+  !> Relative roundoff floor below which a force counts as zero in the output.
+  real(wp), parameter :: noise_rel = 1.0e-12_wp
+
+contains
+
+  !> All steps of a validated deck; a step that cannot be assembled (or is a dead position)
+  !> is a geometry error naming the step number and the crank angle.
+  subroutine sixbar_solve(deck, steps, error, path)
+    !> Validated deck.
+    type(sixbar_deck_t), intent(in) :: deck
+    !> One result per crank step.
+    type(sixbar_step_t), allocatable, intent(out) :: steps(:)
+    !> Geometry error (exit 3).
+    type(error_t), allocatable, intent(out) :: error
+    !> Deck file, for the message.
+    character(*), intent(in) :: path
+    integer :: k
+    allocate (steps(deck%n))
+    do k = 1, deck%n
+      steps(k) = sixbar_step(deck%p, deck%phi1_deg(k) * deg_to_rad, deck%f5(k))
+      if (steps(k)%status /= sixbar_ok) then
+        call fatal_error(error, exit_geometry, path//": &sixbar: step "//int_str(k)//" (phi1 = "// &
+          real_str(deck%phi1_deg(k))//" deg): "//failure_text(deck, steps(k)))
+        return
+      end if
+    end do
+  end subroutine sixbar_solve
+
+  !> Why a position failed, with the numbers.
+  function failure_text(deck, s) result(text)
+    type(sixbar_deck_t), intent(in) :: deck
+    type(sixbar_step_t), intent(in) :: s
+    character(len=:), allocatable :: text
+    real(wp) :: l2, l3
+    l2 = deck%p%lam2 * deck%p%l1
+    l3 = deck%p%lam3 * deck%p%l1
+    select case (s%status)
+    case (sixbar_open1)
+      text = "contour A-B-C-D cannot be assembled: |BD| = "//real_str(s%pos%detail)// &
+        " m is outside [|l2 - l3|, l2 + l3] = ["//real_str(abs(l2 - l3))//", "//real_str(l2 + l3)//"] m"
+    case (sixbar_dead1)
+      text = "dead position of contour A-B-C-D: B, C, D in line (sin(phi3 - phi2) = "// &
+        real_str(s%pos%detail)//"), reactions undetermined"
+    case (sixbar_open2)
+      text = "contour D-E-H cannot be assembled: |e - y_E| = "//real_str(s%pos%detail)// &
+        " m exceeds l4 = "//real_str(deck%p%lam4 * deck%p%l1)//" m"
+    case (sixbar_dead2)
+      text = "dead position of contour D-E-H: link 4 perpendicular to the guide (cos(phi4) = "// &
+        real_str(s%pos%detail)//"), reactions undetermined"
+    case default
+      text = "position failure "//int_str(s%status)
+    end select
+  end function failure_text
+
+  !> Read the deck, compute every step, then write the table or CSV to `unit`.
+  !> Nothing is written unless the whole run succeeded.
+  subroutine run_sixbar(path, output_format, unit, error)
+    !> Deck file.
+    character(*), intent(in) :: path
+    !> `format_table` or `format_csv`.
+    integer, intent(in) :: output_format
+    !> Output unit.
+    integer, intent(in) :: unit
+    !> Input or geometry error.
+    type(error_t), allocatable, intent(out) :: error
+    type(sixbar_deck_t) :: deck
+    type(sixbar_step_t), allocatable :: steps(:)
+
+    call read_sixbar_deck(path, deck, error)
+    if (allocated(error)) return
+    call sixbar_solve(deck, steps, error, path)
+    if (allocated(error)) return
+    if (output_format == format_csv) then
+      call write_sixbar_csv(unit, deck, steps)
+    else
+      call write_sixbar_table(unit, path, deck, steps)
+    end if
+  end subroutine run_sixbar
+
+  !> The row of CSV values of one step. Forces below `noise_rel` times the step's largest
+  !> force (and M1 below that force times l1) are roundoff: printed as 0 with angle 0.
+  pure function sixbar_csv_values(s, l1) result(v)
+    !> One computed step.
+    type(sixbar_step_t), intent(in) :: s
+    !> Crank length, m (moment scale).
+    real(wp), intent(in) :: l1
+    real(wp) :: v(size(sixbar_csv_columns))
+    real(wp) :: floor, f(2, 6)
+    integer :: i
+    f = reshape([s%f21, s%f32, s%f43, s%f45, s%f36, s%f16], [2, 6])
+    floor = noise_rel * max(maxval([(magnitude(f(:, i)), i=1, 6)]), abs(s%f56))
+    do i = 1, 6
+      f(:, i) = snap_noise(f(:, i), floor)
+    end do
+    v(1) = s%pos%phi1 * rad_to_deg
+    do i = 1, 6
+      v(2 * i) = magnitude(f(:, i))
+      v(2 * i + 1) = angle_180_deg(f(:, i))
+    end do
+    v(14) = s%f56
+    if (abs(v(14)) <= floor) v(14) = 0.0_wp
+    v(15) = s%m1
+    if (abs(v(15)) <= floor * l1) v(15) = 0.0_wp
+  end function sixbar_csv_values
+
+  subroutine write_sixbar_csv(unit, deck, steps)
+    integer, intent(in) :: unit
+    type(sixbar_deck_t), intent(in) :: deck
+    type(sixbar_step_t), intent(in) :: steps(:)
+    integer :: k
+    call write_csv_header(unit, sixbar_csv_columns)
+    do k = 1, size(steps)
+      call write_csv_row(unit, sixbar_csv_values(steps(k), deck%p%l1))
+    end do
+  end subroutine write_sixbar_csv
+
+  subroutine write_sixbar_table(unit, path, deck, steps)
+    integer, intent(in) :: unit
+    character(*), intent(in) :: path
+    type(sixbar_deck_t), intent(in) :: deck
+    type(sixbar_step_t), intent(in) :: steps(:)
+    real(wp) :: v(size(sixbar_csv_columns))
+    integer :: k
+
+    write (unit, title_fmt) "KINETOSTAT  T.FTN  FORCE ANALYSIS OF THE SIX-BAR CRANK-ROCKER-SLIDER MECHANISM"
+    write (unit, title_fmt) "DECK: "//path
+    call echo_heading(unit, "INPUT DATA")
+    call echo_real(unit, "A", deck%p%a, "m")
+    call echo_real(unit, "B", deck%p%b, "m")
+    call echo_real(unit, "L1", deck%p%l1, "m")
+    call echo_real(unit, "LAM2", deck%p%lam2, "l_BC/l1")
+    call echo_real(unit, "LAM_S2", deck%p%lam_s2, "l_BS2/l_BC")
+    call echo_real(unit, "LAM3", deck%p%lam3, "l_DC/l1")
+    call echo_real(unit, "LAM_DE", deck%p%lam_de, "l_DE/l1")
+    call echo_real(unit, "LAM4", deck%p%lam4, "l_EH/l1")
+    call echo_real(unit, "LAM_S4", deck%p%lam_s4, "l_ES4/l_EH")
+    call echo_real(unit, "LAM_E", deck%p%lam_e, "e/l1")
+    call echo_real(unit, "M1", deck%p%m1, "kg")
+    call echo_real(unit, "M2", deck%p%m2, "kg")
+    call echo_real(unit, "M3", deck%p%m3, "kg")
+    call echo_real(unit, "M4", deck%p%m4, "kg")
+    call echo_real(unit, "M5", deck%p%m5, "kg")
+    call echo_real(unit, "J1", deck%p%j1, "kg*m^2")
+    call echo_real(unit, "J2", deck%p%j2, "kg*m^2")
+    call echo_real(unit, "J3", deck%p%j3, "kg*m^2")
+    call echo_real(unit, "J4", deck%p%j4, "kg*m^2")
+    call echo_real(unit, "OMEGA1", deck%p%omega1, "rad/s")
+    call echo_real(unit, "G", deck%p%g, "m/s^2")
+    call echo_logical(unit, "START_AT_EXTREME", deck%start_at_extreme, "")
+    call echo_real(unit, "PHI_START", deck%phi_start, "deg (frame 1)")
+    call echo_real(unit, "DPHI", deck%dphi, "deg")
+    call echo_int(unit, "N", deck%n, "steps")
+    call echo_array(unit, "F5", deck%f5, "N (along +x2)")
+    call echo_logical(unit, "LEGACY_EQ2", deck%p%legacy_eq2, "(1991 erratum in eps_q2)")
+
+    call echo_heading(unit, "RESULTS")
+    do k = 1, size(header_lines)
+      write (unit, '(a)') trim(header_lines(k))
+    end do
+    do k = 1, size(steps)
+      v = sixbar_csv_values(steps(k), deck%p%l1)
+      write (unit, step_line1_fmt) v(1), v(2), v(4), v(6), v(8), v(10), v(12), v(14), v(15)
+      write (unit, step_line2_fmt) v(3), v(5), v(7), v(9), v(11), v(13)
+    end do
+    call write_selfcheck_footer(unit, maxval(steps%residual), maxval(steps%mismatch), "M1")
+  end subroutine write_sixbar_table
+
+end module kinetostat_sixbar_report
