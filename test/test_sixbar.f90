@@ -78,6 +78,11 @@ contains
     p%legacy_eq2 = .true.
     s = sixbar_step(p, phi_example * deg_to_rad, f5_example)
     call check_close(t, "manual eps_q2 = 0.201638 (legacy_eq2)", 0.201638_wp, s%pos%eps_q2, 5.0e-4_wp, 0.0_wp)
+    ! group 2-3 of the manual (it inherits the erratum): F36 = (18548.77, 8935.10) N in frame 1,
+    ! |F36| = 20588.7 N (the OCR'd text reads 18348.77; 18548.77 is what its |F36| and cos need)
+    call check_close(t, "manual F36x = 18548.77 N (legacy_eq2)", 18548.77_wp, s%f36(1), rk, 0.0_wp)
+    call check_close(t, "manual F36y = 8935.10 N (legacy_eq2)", 8935.10_wp, s%f36(2), rk, 0.0_wp)
+    call check_close(t, "manual |F36| = 20588.7 N (legacy_eq2)", 20588.7_wp, hypot(s%f36(1), s%f36(2)), rk, 0.0_wp)
   end subroutine test_example_printed
 
   !> Exact values at the worked example, from an independent prototype (complex numbers,

@@ -86,3 +86,11 @@ expect_input_error sixbar-f5-gap '&sixbar: f5: values must be given without gaps
 expect_input_error sixbar-f5-nan '&sixbar: f5\(2\): must be a finite number' "$(deck_with sx_f5nan "$sx_ref" 's/f5 = 7\*1000, 6\*0/f5 = 1, NaN, 11*0/')"
 expect_input_error sixbar-legacy-not-logical '&sixbar: namelist error' "$(deck_with sx_legbad "$sx_ref" 's/^\//  legacy_eq2 = 2.5\n\//')"
 expect_input_error sixbar-unterminated '&sixbar: namelist' "$(deck_with sx_unterminated "$sx_ref" '/^\//d')"
+
+# --- the manual's worked example (one position, phi1 = 66.8 deg, g = 10): golden CSV; with
+# legacy_eq2 the group 2-3 values move, group 4-5 stays
+run_ks data/sixbar_example.nml --format csv; cp "$out" "$cli_tmp/sx_example.csv"
+expect_same sixbar-example-golden data/expected/sixbar_example.csv "$cli_tmp/sx_example.csv"
+run_ks "$(deck_with sx_example_legacy data/sixbar_example.nml 's/^\//  legacy_eq2 = .true.\n\//')" --format csv
+cp "$out" "$cli_tmp/sx_example_legacy.csv"
+expect_differ sixbar-example-legacy-differs data/expected/sixbar_example.csv "$cli_tmp/sx_example_legacy.csv"
