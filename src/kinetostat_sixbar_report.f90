@@ -1,7 +1,8 @@
 !> T.FTN run: deck -> all steps -> legacy table (appendix 2's two lines per step) or CSV.
 module kinetostat_sixbar_report
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use kinetostat_kinds, only: wp, deg_to_rad, rad_to_deg
-  use kinetostat_error, only: error_t, fatal_error, exit_geometry
+  use kinetostat_error, only: error_t, fatal_error, exit_geometry, exit_input
   use kinetostat_text, only: real_str, int_str
   use kinetostat_vec2, only: magnitude, angle_180_deg, snap_noise
   use kinetostat_output, only: format_csv, echo_heading, echo_real, echo_int, echo_logical, echo_array, &
@@ -25,10 +26,14 @@ module kinetostat_sixbar_report
     "                 F21G        F32G        F43G        F45G        F36G        F16G", &
     "      deg           N           N           N           N           N           N           N         N*m", &
     "                deg/x1      deg/x1      deg/x2      deg/x2      deg/x1      deg/x1"]
-  !> Step line 1: crank angle, six force magnitudes, signed F56, driving moment.
-  character(*), parameter :: step_line1_fmt = '(f9.2,7f12.2,f12.3)'
+  !> Step line 1: crank angle, six force magnitudes, signed F56, driving moment (fields below).
+  character(*), parameter :: step_line1_fmt = '(a9,8a12)'
   !> Step line 2: the six force angles under their magnitudes.
-  character(*), parameter :: step_line2_fmt = '(9x,6f12.2)'
+  character(*), parameter :: step_line2_fmt = '(9x,6a12)'
+  !> A table field that fits: fixed point with 2 (M1: 3) decimals.
+  character(*), parameter :: field_f2_fmt = '(f40.2)', field_f3_fmt = '(f40.3)'
+  !> A table field too wide for fixed point (|x| >= 1e7 N or N*m): exponent form.
+  character(*), parameter :: field_es_fmt = '(es11.4)'
   !> Relative roundoff floor below which a force counts as zero in the output.
   real(wp), parameter :: noise_rel = 1.0e-12_wp
 
@@ -52,6 +57,11 @@ contains
       if (steps(k)%status /= sixbar_ok) then
         call fatal_error(error, exit_geometry, path//": &sixbar: step "//int_str(k)//" (phi1 = "// &
           real_str(deck%phi1_deg(k))//" deg): "//failure_text(deck, steps(k)))
+        return
+      end if
+      if (.not. all(ieee_is_finite(sixbar_csv_values(steps(k), deck%p%l1)))) then
+        call fatal_error(error, exit_input, path//": &sixbar: step "//int_str(k)//" (phi1 = "// &
+          real_str(deck%phi1_deg(k))//" deg): results overflow (not finite): the deck's magnitudes are out of range")
         return
       end if
     end do
@@ -151,7 +161,7 @@ contains
     type(sixbar_deck_t), intent(in) :: deck
     type(sixbar_step_t), intent(in) :: steps(:)
     real(wp) :: v(size(sixbar_csv_columns))
-    integer :: k
+    integer :: k, i
 
     write (unit, title_fmt) "KINETOSTAT  T.FTN  FORCE ANALYSIS OF THE SIX-BAR CRANK-ROCKER-SLIDER MECHANISM"
     write (unit, title_fmt) "DECK: "//path
@@ -190,10 +200,31 @@ contains
     end do
     do k = 1, size(steps)
       v = sixbar_csv_values(steps(k), deck%p%l1)
-      write (unit, step_line1_fmt) v(1), v(2), v(4), v(6), v(8), v(10), v(12), v(14), v(15)
-      write (unit, step_line2_fmt) v(3), v(5), v(7), v(9), v(11), v(13)
+      write (unit, step_line1_fmt) field(v(1), 9, field_f2_fmt), &
+        (field(v(i), 12, field_f2_fmt), i=2, 14, 2), field(v(15), 12, field_f3_fmt)
+      write (unit, step_line2_fmt) (field(v(i), 12, field_f2_fmt), i=3, 13, 2)
     end do
     call write_selfcheck_footer(unit, maxval(steps%residual), maxval(steps%mismatch), "M1")
   end subroutine write_sixbar_table
+
+  !> One right-justified table field of `width` characters: `fixed_fmt` when it fits
+  !> (leaving one blank), otherwise the exponent form, so a table never shows '*'.
+  pure function field(x, width, fixed_fmt) result(text)
+    !> Value.
+    real(wp), intent(in) :: x
+    !> Field width, characters (9 or 12).
+    integer, intent(in) :: width
+    !> Fixed-point format, wide enough for any value, e.g. '(f40.2)'.
+    character(*), intent(in) :: fixed_fmt
+    character(len=width) :: text
+    character(len=40) :: buf
+    write (buf, fixed_fmt) x + 0.0_wp
+    buf = adjustl(buf)
+    if (len_trim(buf) >= width) then
+      write (buf, field_es_fmt) x + 0.0_wp
+      buf = adjustl(buf)
+    end if
+    text = adjustr(buf(1:width))
+  end function field
 
 end module kinetostat_sixbar_report

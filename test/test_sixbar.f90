@@ -181,6 +181,8 @@ contains
         call check_close(t, "a_hq"//trim(at), (pp%h(c) - 2 * p0%h(c) + pm%h(c)) / h**2, p0%a_hq(c), rtol, atol)
       end do
       call check_close(t, "H stays on the guide"//trim(at), ref%lam_e * ref%l1, p0%h(2), 1.0e-15_wp, 0.0_wp)
+      call check_close(t, "v_H has no y2 component"//trim(at), 0.0_wp, p0%v_hq(2), 0.0_wp, 1.0e-16_wp)
+      call check_close(t, "a_H has no y2 component"//trim(at), 0.0_wp, p0%a_hq(2), 0.0_wp, 1.0e-16_wp)
       call check_close(t, "|BC| = l2"//trim(at), ref%lam2 * ref%l1, hypot(p0%c(1) - p0%b(1), p0%c(2) - p0%b(2)), &
                        1.0e-13_wp, 0.0_wp)
       call check_close(t, "|EH| = l4"//trim(at), ref%lam4 * ref%l1, hypot(p0%h(1) - p0%e(1), p0%h(2) - p0%e(2)), &
