@@ -32,7 +32,7 @@ module kinetostat_sixbar_report
   character(*), parameter :: step_line2_fmt = '(9x,6a12)'
   !> A table field that fits: fixed point with 2 (M1: 3) decimals.
   character(*), parameter :: field_f2_fmt = '(f40.2)', field_f3_fmt = '(f40.3)'
-  !> A table field too wide for fixed point (|x| >= 1e7 N or N*m): exponent form.
+  !> A table field too wide for fixed point (from 1e7 or 1e8, N or N*m): exponent form.
   character(*), parameter :: field_es_fmt = '(es11.4)'
   !> Relative roundoff floor below which a force counts as zero in the output.
   real(wp), parameter :: noise_rel = 1.0e-12_wp
