@@ -41,15 +41,15 @@ contains
 
   !> All steps of a validated deck; a step that cannot be assembled (or is a dead position)
   !> is a geometry error naming the step number and the crank angle.
-  subroutine sixbar_solve(deck, steps, error, path)
+  subroutine sixbar_solve(path, deck, steps, error)
+    !> Deck file, for the message.
+    character(*), intent(in) :: path
     !> Validated deck.
     type(sixbar_deck_t), intent(in) :: deck
     !> One result per crank step.
     type(sixbar_step_t), allocatable, intent(out) :: steps(:)
-    !> Geometry error (exit 3).
+    !> Geometry error (exit 3), or overflow (exit 2).
     type(error_t), allocatable, intent(out) :: error
-    !> Deck file, for the message.
-    character(*), intent(in) :: path
     integer :: k
     allocate (steps(deck%n))
     do k = 1, deck%n
@@ -109,7 +109,7 @@ contains
 
     call read_sixbar_deck(path, deck, error)
     if (allocated(error)) return
-    call sixbar_solve(deck, steps, error, path)
+    call sixbar_solve(path, deck, steps, error)
     if (allocated(error)) return
     if (output_format == format_csv) then
       call write_sixbar_csv(unit, deck, steps)

@@ -235,7 +235,7 @@ contains
     call check_close(t, "reference deck f5(8) = 0", 0.0_wp, deck%f5(8), 0.0_wp, 0.0_wp)
     do pass = 1, 2
       if (pass == 2) deck%p%legacy_eq2 = .true.
-      call sixbar_solve(deck, steps, error, "data/sixbar.nml")
+      call sixbar_solve("data/sixbar.nml", deck, steps, error)
       call check_true(t, "reference deck assembles", .not. allocated(error), "geometry error")
       if (allocated(error)) return
       do k = 1, size(steps)
@@ -408,7 +408,7 @@ contains
     if (allocated(error)) return
     deck%p%lam2 = 1.6_wp
     deck%phi1_deg = [(30.0_wp * real(k - 1, wp), k=1, deck%n)]
-    call sixbar_solve(deck, steps, error, "short.nml")
+    call sixbar_solve("short.nml", deck, steps, error)
     call check_true(t, "short rod deck: geometry error", allocated(error), "no error")
     if (.not. allocated(error)) return
     call check_true(t, "short rod deck: exit 3", error%code == exit_geometry, "wrong exit code")
