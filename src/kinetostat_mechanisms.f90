@@ -9,12 +9,14 @@ module kinetostat_mechanisms
   use kinetostat_pr3207_deck, only: write_pr3207_template
   use kinetostat_pr3050_report, only: run_pr3050
   use kinetostat_pr3050_deck, only: write_pr3050_template
+  use kinetostat_sixbar_report, only: run_sixbar
+  use kinetostat_sixbar_deck, only: write_sixbar_template
   implicit none
   private
   public :: run_deck, write_template, known_kinds
 
   !> Mechanism kinds (namelist group names) the program knows, for messages and --help.
-  character(*), parameter :: known_kinds = "pr3207, pr3050"
+  character(*), parameter :: known_kinds = "pr3207, pr3050, sixbar"
 
 contains
 
@@ -38,6 +40,8 @@ contains
       call run_pr3207(path, output_format, unit, error, summary)
     case ("pr3050")
       call run_pr3050(path, output_format, unit, error, summary)
+    case ("sixbar")
+      call run_sixbar(path, output_format, unit, error, summary)
     case default
       call fatal_error(error, exit_input, path//": &"//group// &
         ": unknown mechanism (known: "//known_kinds//")")
@@ -57,6 +61,8 @@ contains
       call write_pr3207_template(unit)
     case ("pr3050")
       call write_pr3050_template(unit)
+    case ("sixbar")
+      call write_sixbar_template(unit)
     case default
       call fatal_error(error, exit_usage, "template: unknown kind '"//kind//"' (known: "//known_kinds//")")
     end select

@@ -1,0 +1,185 @@
+!> `&sixbar` decks (T.FTN): reading, validation, and the commented template.
+module kinetostat_sixbar_deck
+  use kinetostat_kinds, only: wp, g_default, rad_to_deg
+  use kinetostat_error, only: error_t, fatal_error, exit_geometry
+  use kinetostat_text, only: real_str, int_str
+  use kinetostat_deck, only: deck_context_t, unset_real, unset_int, max_deck_array, &
+    open_deck, namelist_failure, deck_error, is_set, require_set, require_positive, &
+    require_nonnegative, require_rule, optional_default, count_values, steps_over_turn
+  use kinetostat_sixbar, only: sixbar_params_t, sixbar_extreme_phi1
+  implicit none
+  private
+  public :: sixbar_deck_t, read_sixbar_deck, write_sixbar_template
+
+  !> A validated `&sixbar` deck.
+  type :: sixbar_deck_t
+    !> Mechanism data, SI.
+    type(sixbar_params_t) :: p
+    !> First crank angle (frame 1), deg: as given, or angle B0AD of the extreme position.
+    real(wp) :: phi_start = 0.0_wp
+    !> Whether phi_start was computed as the extreme position.
+    logical :: start_at_extreme = .false.
+    !> Crank step, deg.
+    real(wp) :: dphi = 0.0_wp
+    !> Number of steps.
+    integer :: n = 0
+    !> Slider load per step, N, signed along +x2.
+    real(wp), allocatable :: f5(:)
+    !> Crank angle per step (frame 1), deg.
+    real(wp), allocatable :: phi1_deg(:)
+  end type sixbar_deck_t
+
+  !> Template deck (the reference deck data/sixbar.nml), one line per entry.
+  character(*), parameter :: template_lines(*) = [character(len=92) :: &
+    "! kinetostat deck: T.FTN, six-bar crank-rocker-slider mechanism (manual section 2).", &
+    "! Links: 1 crank AB, 2 rod BC, 3 rocker C-D-E (pivot D, C and E opposite), 4 rod EH,", &
+    "! 5 slider at H, 6 frame. Global frame: origin A, y0 up (gravity -y0), D = A + (a, b).", &
+    "! Frame 1: origin A, x1 along AD (crank angles). Frame 2: origin D, x2 straight down", &
+    "! (angle in frame 2 = angle in frame 1 + 180 - beta, beta = atan2(a, b)), guide y2 = e.", &
+    "&sixbar", &
+    "  a = 0.170, b = 0.340   ! m, pivot D from A in the global frame", &
+    "  l1 = 0.100             ! m, crank AB", &
+    "  lam2 = 4               ! l_BC / l1", &
+    "  lam_s2 = 0.5           ! l_BS2 / l_BC (>= 0)", &
+    "  lam3 = 3               ! l_DC / l1", &
+    "  lam_de = 3             ! l_DE / l1", &
+    "  lam4 = 2               ! l_EH / l1", &
+    "  lam_s4 = 0.5           ! l_ES4 / l_EH (>= 0)", &
+    "  lam_e = 2.5            ! e / l1, signed: the slider guide is the line y2 = e", &
+    "  m1 = 50, m2 = 5, m3 = 8, m4 = 2, m5 = 6         ! kg (S1 = A, S3 = D, S5 = H)", &
+    "  j1 = 20, j2 = 0.01, j3 = 0.2, j4 = 0.007        ! kg*m^2 (j1 about A, j3 about D)", &
+    "  omega1 = 100           ! rad/s, crank speed (constant; + = CCW in frame 1)", &
+    "  g = 9.81               ! m/s^2, gravity (optional, default 9.81; 0 = off)", &
+    "  start_at_extreme = .true.  ! start at angle B0AD (optional; else phi_start, deg)", &
+    "  ! phi_start = 36.77    ! deg in frame 1 (optional, default 0; not with start_at_extreme)", &
+    "  dphi = 30              ! deg, crank step (> 0)", &
+    "  n = 13                 ! steps (optional; default 360/dphi + 1)", &
+    "  f5 = 7*1000, 6*0       ! N per step (n values), signed along +x2 (down)", &
+    "  legacy_eq2 = .false.   ! .true. = the 1991 manual's eps_q2 erratum (old printouts)", &
+    "/"]
+
+contains
+
+  !> Print the commented template deck.
+  subroutine write_sixbar_template(unit)
+    !> Output unit.
+    integer, intent(in) :: unit
+    integer :: i
+    do i = 1, size(template_lines)
+      write (unit, '(a)') trim(template_lines(i))
+    end do
+  end subroutine write_sixbar_template
+
+  !> Read and validate a `&sixbar` deck. Input errors have exit code 2; a requested
+  !> extreme position that does not exist is a geometry error (exit 3).
+  subroutine read_sixbar_deck(path, deck, error)
+    !> Deck file.
+    character(*), intent(in) :: path
+    !> The validated deck.
+    type(sixbar_deck_t), intent(out) :: deck
+    !> Input (or geometry) error naming file, group, variable and reason.
+    type(error_t), allocatable, intent(out) :: error
+    real(wp) :: a, b, l1, lam2, lam_s2, lam3, lam_de, lam4, lam_s4, lam_e
+    real(wp) :: m1, m2, m3, m4, m5, j1, j2, j3, j4, omega1, g, dphi, phi_start, phi_ext
+    real(wp), allocatable :: f5(:)
+    logical :: start_at_extreme, legacy_eq2, ok
+    integer :: n, unit, ios, n_f5, k
+    character(len=512) :: msg
+    type(deck_context_t) :: ctx
+    namelist /sixbar/ a, b, l1, lam2, lam_s2, lam3, lam_de, lam4, lam_s4, lam_e, &
+      m1, m2, m3, m4, m5, j1, j2, j3, j4, omega1, g, dphi, n, phi_start, start_at_extreme, f5, legacy_eq2
+
+    ctx%path = path
+    ctx%group = "sixbar"
+    a = unset_real; b = unset_real; l1 = unset_real
+    lam2 = unset_real; lam_s2 = unset_real; lam3 = unset_real; lam_de = unset_real
+    lam4 = unset_real; lam_s4 = unset_real; lam_e = unset_real
+    m1 = unset_real; m2 = unset_real; m3 = unset_real; m4 = unset_real; m5 = unset_real
+    j1 = unset_real; j2 = unset_real; j3 = unset_real; j4 = unset_real
+    omega1 = unset_real; g = unset_real; dphi = unset_real; phi_start = unset_real
+    n = unset_int
+    start_at_extreme = .false.
+    legacy_eq2 = .false.
+    allocate (f5(max_deck_array), source=unset_real)
+
+    call open_deck(path, unit, error)
+    if (allocated(error)) return
+    read (unit, nml=sixbar, iostat=ios, iomsg=msg)
+    close (unit)
+    if (ios /= 0) then
+      call namelist_failure(ctx, ios, msg, error)
+      return
+    end if
+
+    ! geometry: D, lengths and ratios
+    call require_set(ctx, "a", a, error); if (allocated(error)) return
+    call require_set(ctx, "b", b, error); if (allocated(error)) return
+    call require_rule(ctx, "b", hypot(a, b) > 0.0_wp, "a and b must not both be 0: D must differ from A", error)
+    if (allocated(error)) return
+    call require_positive(ctx, "l1", l1, error); if (allocated(error)) return
+    call require_positive(ctx, "lam2", lam2, error); if (allocated(error)) return
+    call require_nonnegative(ctx, "lam_s2", lam_s2, error); if (allocated(error)) return
+    call require_positive(ctx, "lam3", lam3, error); if (allocated(error)) return
+    call require_positive(ctx, "lam_de", lam_de, error); if (allocated(error)) return
+    call require_positive(ctx, "lam4", lam4, error); if (allocated(error)) return
+    call require_nonnegative(ctx, "lam_s4", lam_s4, error); if (allocated(error)) return
+    call require_set(ctx, "lam_e", lam_e, error); if (allocated(error)) return
+
+    ! masses, inertia, speed, gravity
+    call require_nonnegative(ctx, "m1", m1, error); if (allocated(error)) return
+    call require_nonnegative(ctx, "m2", m2, error); if (allocated(error)) return
+    call require_nonnegative(ctx, "m3", m3, error); if (allocated(error)) return
+    call require_nonnegative(ctx, "m4", m4, error); if (allocated(error)) return
+    call require_nonnegative(ctx, "m5", m5, error); if (allocated(error)) return
+    call require_nonnegative(ctx, "j1", j1, error); if (allocated(error)) return
+    call require_nonnegative(ctx, "j2", j2, error); if (allocated(error)) return
+    call require_nonnegative(ctx, "j3", j3, error); if (allocated(error)) return
+    call require_nonnegative(ctx, "j4", j4, error); if (allocated(error)) return
+    call require_set(ctx, "omega1", omega1, error); if (allocated(error)) return
+    g = optional_default(g, g_default)
+    call require_nonnegative(ctx, "g", g, error); if (allocated(error)) return
+
+    deck%p = sixbar_params_t(a=a, b=b, l1=l1, lam2=lam2, lam_s2=lam_s2, lam3=lam3, lam_de=lam_de, &
+      lam4=lam4, lam_s4=lam_s4, lam_e=lam_e, m1=m1, m2=m2, m3=m3, m4=m4, m5=m5, j1=j1, j2=j2, j3=j3, &
+      j4=j4, omega1=omega1, g=g, legacy_eq2=legacy_eq2)
+
+    ! crank angles: phi_start or the extreme position, not both
+    if (start_at_extreme .and. is_set(phi_start)) then
+      call deck_error(ctx, "phi_start", "give either phi_start or start_at_extreme = .true., not both", error)
+      return
+    end if
+    if (start_at_extreme) then
+      call sixbar_extreme_phi1(deck%p, phi_ext, ok)
+      if (.not. ok) then
+        call fatal_error(error, exit_geometry, path//": &sixbar: start_at_extreme: step 1 (extreme position)"// &
+          " cannot be assembled: crank and connecting rod cannot lie in line (l1 + l2 = "// &
+          real_str(l1 * (1.0_wp + lam2))//" m; needs |l_AD - l3| < l1 + l2 < l_AD + l3 with l_AD = "// &
+          real_str(hypot(a, b))//" m, l3 = "//real_str(lam3 * l1)//" m)")
+        return
+      end if
+      phi_start = phi_ext * rad_to_deg
+    else
+      phi_start = optional_default(phi_start, 0.0_wp)
+      call require_set(ctx, "phi_start", phi_start, error); if (allocated(error)) return
+    end if
+    call steps_over_turn(ctx, dphi, n, deck%n, error); if (allocated(error)) return
+
+    ! slider load: one value per step
+    call count_values(ctx, "f5", f5, n_f5, error); if (allocated(error)) return
+    if (n_f5 == 0) then
+      call deck_error(ctx, "f5", "missing: give f5 = v1, v2, ... (one value per step, N along +x2)", error)
+      return
+    end if
+    call require_rule(ctx, "f5", n_f5 == deck%n, "expected "//int_str(deck%n)// &
+      " values (one per step), got "//int_str(n_f5), error)
+    if (allocated(error)) return
+
+    deck%f5 = f5(1:n_f5)
+    deck%phi_start = phi_start
+    deck%start_at_extreme = start_at_extreme
+    deck%dphi = dphi
+    allocate (deck%phi1_deg(deck%n))
+    deck%phi1_deg = [(phi_start + real(k - 1, wp) * dphi, k=1, deck%n)]
+  end subroutine read_sixbar_deck
+
+end module kinetostat_sixbar_deck
