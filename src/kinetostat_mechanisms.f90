@@ -6,12 +6,16 @@ module kinetostat_mechanisms
   use kinetostat_deck, only: read_group_name
   use kinetostat_pr3207_report, only: run_pr3207
   use kinetostat_pr3207_deck, only: write_pr3207_template
+  use kinetostat_gears_report, only: run_gears
+  use kinetostat_gears_deck, only: write_gears_template
+  use kinetostat_cam_report, only: run_cam
+  use kinetostat_cam_deck, only: write_cam_template
   implicit none
   private
   public :: run_deck, write_template, known_kinds
 
   !> Mechanism kinds (namelist group names) the program knows, for messages and --help.
-  character(*), parameter :: known_kinds = "pr3207"
+  character(*), parameter :: known_kinds = "pr3207, gears, cam"
 
 contains
 
@@ -31,6 +35,10 @@ contains
     select case (group)
     case ("pr3207")
       call run_pr3207(path, output_format, unit, error)
+    case ("gears")
+      call run_gears(path, output_format, unit, error)
+    case ("cam")
+      call run_cam(path, output_format, unit, error)
     case default
       call fatal_error(error, exit_input, path//": &"//group// &
         ": unknown mechanism (known: "//known_kinds//")")
@@ -48,6 +56,10 @@ contains
     select case (kind)
     case ("pr3207")
       call write_pr3207_template(unit)
+    case ("gears")
+      call write_gears_template(unit)
+    case ("cam")
+      call write_cam_template(unit)
     case default
       call fatal_error(error, exit_usage, "template: unknown kind '"//kind//"' (known: "//known_kinds//")")
     end select
