@@ -52,7 +52,7 @@ module kinetostat_cam_deck
   end type cam_deck_t
 
   !> Template deck, one line per entry.
-  character(*), parameter :: template_lines(*) = [character(len=92) :: &
+  character(*), parameter :: template_lines(*) = [character(len=100) :: &
     "! kinetostat deck: cam with a translating follower in a guide (manual section 7).", &
     "! Guide ends C (near the cam) and D; contact point B an overhang l_over before C.", &
     "! Per-step values: one per cam angle (n values) or one value for every step.", &

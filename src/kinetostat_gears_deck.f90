@@ -40,7 +40,7 @@ module kinetostat_gears_deck
   end type gears_deck_t
 
   !> Template deck, one line per entry.
-  character(*), parameter :: template_lines(*) = [character(len=92) :: &
+  character(*), parameter :: template_lines(*) = [character(len=100) :: &
     "! kinetostat deck: gear meshes (manual section 6). One &gears group; every per-stage", &
     "! variable is an array indexed by stage: stage(1), stage(2), ... (no gaps).", &
     "! Friction-free, uniform rotation. Torques N*m (CCW +), module/diameters mm, angles deg.", &
