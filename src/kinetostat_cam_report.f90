@@ -1,7 +1,9 @@
 !> Cam run: deck -> all cam angles -> table (one line per step) or CSV.
 module kinetostat_cam_report
   use kinetostat_kinds, only: wp, deg_to_rad, rad_to_deg
-  use kinetostat_error, only: error_t
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+  use kinetostat_error, only: error_t, fatal_error, exit_input
+  use kinetostat_text, only: int_str
   use kinetostat_vec2, only: magnitude, angle_360_deg
   use kinetostat_output, only: format_csv, echo_heading, echo_real, echo_int, echo_array, &
     write_csv_header, write_csv_row
@@ -61,9 +63,19 @@ contains
     type(error_t), allocatable, intent(out) :: error
     type(cam_deck_t) :: deck
     type(cam_step_t), allocatable :: steps(:)
+    integer :: i
+    !> Word for one output row in messages.
+    character(*), parameter :: row_name = "step"
     call read_cam_deck(path, deck, error)
     if (allocated(error)) return
     call cam_solve(deck, steps)
+    do i = 1, size(steps)
+      if (.not. all(ieee_is_finite(cam_csv_values(deck, steps(i), i)))) then
+        call fatal_error(error, exit_input, path//": results overflow at "//row_name//" "//int_str(i)// &
+          ": input values out of the representable range")
+        return
+      end if
+    end do
     if (output_format == format_csv) then
       call write_cam_csv(unit, deck, steps)
     else

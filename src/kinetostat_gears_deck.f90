@@ -22,6 +22,8 @@ module kinetostat_gears_deck
   integer, parameter :: layout_series = 2
   !> Layout names as written in decks.
   character(*), parameter :: layout_names(2) = [character(len=8) :: "separate", "series"]
+  !> Largest number of teeth accepted (keeps z1 + 2*z2 and the ratios far from overflow).
+  integer, parameter :: max_teeth = 100000
   !> Default operating pressure angle, deg (standard basic rack).
   real(wp), parameter :: alpha_default = 20.0_wp
 
@@ -248,7 +250,8 @@ contains
       else
         call not_used_int(ctx, "z3"//at, z3(i), kind, error); if (allocated(error)) return
         call not_used_int(ctx, "k"//at, k(i), kind, error); if (allocated(error)) return
-        call require_rule(ctx, "alpha_w23"//at, .not. is_set(alpha_w23(i)), "only for a 'planetary' stage", error)
+        call require_rule(ctx, "alpha_w23"//at, .not. is_set(alpha_w23(i)) .or. alpha_w23(i) == 0.0_wp, &
+          "only for a 'planetary' stage: leave it 0 or unset", error)
         if (allocated(error)) return
       end if
     end do
@@ -278,7 +281,7 @@ contains
     angle = a * deg_to_rad
   end subroutine pressure_angle
 
-  !> Teeth count: present and >= 1.
+  !> Teeth count: present and from 1 to max_teeth.
   subroutine require_teeth(ctx, name, z, error)
     type(deck_context_t), intent(in) :: ctx
     character(*), intent(in) :: name
@@ -288,6 +291,8 @@ contains
       call deck_error(ctx, name, "missing (number of teeth)", error)
     else if (z <= 0) then
       call deck_error(ctx, name, "must be >= 1 teeth (got "//int_str(z)//")", error)
+    else if (z > max_teeth) then
+      call deck_error(ctx, name, "must be <= "//int_str(max_teeth)//" teeth (got "//int_str(z)//")", error)
     end if
   end subroutine require_teeth
 

@@ -1,7 +1,9 @@
 !> Gears run: deck -> every stage -> table (one block per stage) or CSV (one row per stage).
 module kinetostat_gears_report
   use kinetostat_kinds, only: wp, rad_to_deg
-  use kinetostat_error, only: error_t
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+  use kinetostat_error, only: error_t, fatal_error, exit_input
+  use kinetostat_text, only: int_str
   use kinetostat_vec2, only: magnitude, angle_360_deg, snap_noise
   use kinetostat_output, only: format_csv, echo_heading, echo_real, echo_int, &
     write_csv_header, write_csv_row, write_selfcheck_footer
@@ -65,9 +67,19 @@ contains
     type(error_t), allocatable, intent(out) :: error
     type(gears_deck_t) :: deck
     type(gear_result_t), allocatable :: res(:)
+    integer :: i
+    !> Word for one output row in messages.
+    character(*), parameter :: row_name = "stage"
     call read_gears_deck(path, deck, error)
     if (allocated(error)) return
     call gears_solve(deck, res)
+    do i = 1, size(res)
+      if (.not. all(ieee_is_finite(gears_csv_values(deck, res, i)))) then
+        call fatal_error(error, exit_input, path//": results overflow at "//row_name//" "//int_str(i)// &
+          ": input values out of the representable range")
+        return
+      end if
+    end do
     if (output_format == format_csv) then
       call write_gears_csv(unit, deck, res)
     else

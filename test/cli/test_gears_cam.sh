@@ -107,3 +107,8 @@ expect_input_error cam-flat-theta '&cam: theta: not for follower = .flat.' "$(de
 expect_input_error cam-flat-fcam-negative '&cam: f_cam: must be >= 0' "$(deck_with c_ffc "$fl" 's/f_cam     = 0.1 /f_cam = -0.1 /')"
 expect_input_error cam-flat-omega '&cam: omega_dir: must be \+1' "$(deck_with c_fo2 "$fl" 's/omega_dir = 1 /omega_dir = 0 /')"
 expect_input_error cam-flat-ds-missing '&cam: ds_dphi: missing' "$(deck_with c_fds "$fl" '/ds_dphi = /,/0.02     !/d')"
+expect_input_error gears-z-too-many '&gears: z2\(1\): must be <= 100000 teeth' "$(deck_with g_zbig "$g" 's/z2      = 40, 54/z2 = 2000000000, 54/')"
+expect_input_error gears-overflow 'results overflow at stage 1' "$(deck_with g_ovf "$g" 's/m1      = 50 /m1 = 1e308 /')"
+expect_input_error cam-overflow 'results overflow at step 3' "$(deck_with c_ovf "$c" 's/^  f2    = .*/  f2 = 1e308/')"
+run_ks "$(deck_with g_a23zero "$b" 's/beta    = 0, 0, 12/beta = 0, 0, 12, alpha_w23 = 0, 0, 0/')" --format csv
+expect_same gears-alpha_w23-zero-accepted data/expected/gears_bevel.csv "$out"
