@@ -11,12 +11,16 @@ module kinetostat_mechanisms
   use kinetostat_pr3050_deck, only: write_pr3050_template
   use kinetostat_sixbar_report, only: run_sixbar
   use kinetostat_sixbar_deck, only: write_sixbar_template
+  use kinetostat_gears_report, only: run_gears
+  use kinetostat_gears_deck, only: write_gears_template
+  use kinetostat_cam_report, only: run_cam
+  use kinetostat_cam_deck, only: write_cam_template
   implicit none
   private
   public :: run_deck, write_template, known_kinds
 
   !> Mechanism kinds (namelist group names) the program knows, for messages and --help.
-  character(*), parameter :: known_kinds = "pr3207, pr3050, sixbar"
+  character(*), parameter :: known_kinds = "pr3207, pr3050, sixbar, gears, cam"
 
 contains
 
@@ -42,6 +46,10 @@ contains
       call run_pr3050(path, output_format, unit, error, summary)
     case ("sixbar")
       call run_sixbar(path, output_format, unit, error, summary)
+    case ("gears")
+      call run_gears(path, output_format, unit, error, summary)
+    case ("cam")
+      call run_cam(path, output_format, unit, error, summary)
     case default
       call fatal_error(error, exit_input, path//": &"//group// &
         ": unknown mechanism (known: "//known_kinds//")")
@@ -63,6 +71,10 @@ contains
       call write_pr3050_template(unit)
     case ("sixbar")
       call write_sixbar_template(unit)
+    case ("gears")
+      call write_gears_template(unit)
+    case ("cam")
+      call write_cam_template(unit)
     case default
       call fatal_error(error, exit_usage, "template: unknown kind '"//kind//"' (known: "//known_kinds//")")
     end select

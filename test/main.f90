@@ -6,11 +6,15 @@ program kinetostat_tests
   use test_pr3207, only: run_pr3207_tests
   use test_pr3050, only: run_pr3050_tests
   use test_sixbar, only: run_sixbar_tests
+  use test_gears, only: run_gears_tests
+  use test_cam, only: run_cam_tests
   implicit none
   type(test_counts_t) :: t
   call run_foundation_tests(t)
   call run_pr3207_tests(t)
   call run_pr3050_tests(t)
   call run_sixbar_tests(t)
+  call run_gears_tests(t)
+  call run_cam_tests(t)
   call report_counts(t)
 end program kinetostat_tests

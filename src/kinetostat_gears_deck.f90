@@ -1,0 +1,343 @@
+!> `&gears` decks: reading, validation, and the commented template. One group lists the
+!> stages as arrays indexed by stage (stage(i), z1(i), ...); `layout` says whether the
+!> stages are separate pairs or a reducer in series.
+module kinetostat_gears_deck
+  use kinetostat_kinds, only: wp, deg_to_rad, pi
+  use kinetostat_error, only: error_t
+  use kinetostat_text, only: real_str, int_str, lower
+  use kinetostat_deck, only: deck_context_t, unset_real, unset_int, &
+    open_deck, namelist_failure, deck_error, is_set, require_set, require_positive, require_rule
+  use kinetostat_gears, only: gear_stage_t, gear_spur, gear_helical, gear_bevel, gear_planetary, &
+    gear_kind_names
+  implicit none
+  private
+  public :: gears_deck_t, read_gears_deck, write_gears_template, max_stages
+  public :: layout_separate, layout_series, layout_names
+
+  !> Largest number of stages in one deck.
+  integer, parameter :: max_stages = 20
+  !> Layout: independent stages, each with its own input torque.
+  integer, parameter :: layout_separate = 1
+  !> Layout: parallel-shaft stages in series (reducer, manual fig. 18).
+  integer, parameter :: layout_series = 2
+  !> Layout names as written in decks.
+  character(*), parameter :: layout_names(2) = [character(len=8) :: "separate", "series"]
+  !> Largest number of teeth accepted (keeps z1 + 2*z2 and the ratios far from overflow).
+  integer, parameter :: max_teeth = 100000
+  !> Default operating pressure angle, deg (standard basic rack).
+  real(wp), parameter :: alpha_default = 20.0_wp
+
+  !> A validated `&gears` deck (angles in the stages in rad, lengths in m).
+  type :: gears_deck_t
+    !> layout_separate or layout_series.
+    integer :: layout = layout_separate
+    !> Number of stages.
+    integer :: n = 0
+    !> Stage geometry, SI.
+    type(gear_stage_t), allocatable :: st(:)
+    !> Input torque of each stage, N*m (series: stage 1 only, the rest 0).
+    real(wp), allocatable :: m1(:)
+    !> Module of each stage as given, mm (0 when dw1 was given instead).
+    real(wp), allocatable :: module_mm(:)
+  end type gears_deck_t
+
+  !> Template deck, one line per entry.
+  character(*), parameter :: template_lines(*) = [character(len=100) :: &
+    "! kinetostat deck: gear meshes (manual section 6). One &gears group; every per-stage", &
+    "! variable is an array indexed by stage: stage(1), stage(2), ... (no gaps).", &
+    "! Friction-free, uniform rotation. Torques N*m (CCW +), module/diameters mm, angles deg.", &
+    "&gears", &
+    "  layout  = 'separate'   ! 'separate' (each stage its own m1) or 'series' (reducer: gear 2", &
+    "                         ! of stage i and gear 1 of stage i+1 share a shaft; m1(1) only)", &
+    "  stage   = 'spur', 'helical', 'bevel', 'planetary'   ! kind of each stage", &
+    "  m1      = 100, 100, 100, 100   ! N*m, torque on gear 1 (planetary: the sun) from its shaft", &
+    "  z1      = 20, 20, 20, 24       ! teeth of gear 1 (planetary: sun), >= 1", &
+    "  z2      = 40, 40, 40, 24       ! teeth of gear 2 (planetary: one satellite), >= 1", &
+    "  m       = 4, 4, 4, 3           ! mm, module (bevel: mean-section module); or give dw1", &
+    "  ! dw1   = 80, 80, 80, 72       ! mm, pitch diameter of gear 1 (bevel: d_m1); default z1*m", &
+    "  alpha_w = 20, 20, 20, 20       ! deg, operating pressure angle, in (0, 45); default 20", &
+    "  beta    = 0, 15, 0, 0          ! deg, helix angle (helical only), |beta| < 45; default 0", &
+    "  gamma   = 0, 0, 0, 90          ! deg, direction O1->O2 (planetary: to satellite 1); def. 0", &
+    "  z3      = 0, 0, 0, 72          ! planetary: ring teeth, = z1 + 2*z2 (others: leave 0)", &
+    "  k       = 0, 0, 0, 3           ! planetary: number of satellites >= 1 (others: leave 0)", &
+    "  ! alpha_w23 = 0, 0, 0, 20      ! deg, planetary: satellite-ring mesh; default alpha_w", &
+    "/"]
+
+contains
+
+  !> Print the commented template deck.
+  subroutine write_gears_template(unit)
+    !> Output unit.
+    integer, intent(in) :: unit
+    integer :: i
+    do i = 1, size(template_lines)
+      write (unit, '(a)') trim(template_lines(i))
+    end do
+  end subroutine write_gears_template
+
+  !> Read and validate a `&gears` deck.
+  subroutine read_gears_deck(path, deck, error)
+    !> Deck file.
+    character(*), intent(in) :: path
+    !> The validated deck.
+    type(gears_deck_t), intent(out) :: deck
+    !> Input error naming file, group, variable and reason.
+    type(error_t), allocatable, intent(out) :: error
+    character(len=16) :: layout, stage(max_stages)
+    real(wp), dimension(max_stages) :: m1, m, dw1, alpha_w, alpha_w23, beta, gamma
+    integer, dimension(max_stages) :: z1, z2, z3, k
+    integer :: unit, ios, i, n, kind
+    character(len=512) :: msg
+    character(len=:), allocatable :: at
+    type(deck_context_t) :: ctx
+    namelist /gears/ layout, stage, m1, z1, z2, m, dw1, alpha_w, beta, gamma, z3, k, alpha_w23
+
+    ctx%path = path
+    ctx%group = "gears"
+    layout = " "
+    stage = " "
+    m1 = unset_real; m = unset_real; dw1 = unset_real; alpha_w = unset_real
+    alpha_w23 = unset_real; beta = unset_real; gamma = unset_real
+    z1 = unset_int; z2 = unset_int; z3 = unset_int; k = unset_int
+
+    call open_deck(path, unit, error)
+    if (allocated(error)) return
+    read (unit, nml=gears, iostat=ios, iomsg=msg)
+    close (unit)
+    if (ios /= 0) then
+      call namelist_failure(ctx, ios, msg, error)
+      return
+    end if
+
+    ! layout
+    select case (lower(trim(adjustl(layout))))
+    case ("", "separate")
+      deck%layout = layout_separate
+    case ("series")
+      deck%layout = layout_series
+    case default
+      call deck_error(ctx, "layout", "must be 'separate' or 'series' (got '"//trim(layout)//"')", error)
+      return
+    end select
+
+    ! number of stages: the leading non-blank stage entries, no gaps
+    n = 0
+    do i = 1, max_stages
+      if (len_trim(stage(i)) == 0) exit
+      n = i
+    end do
+    if (n == 0) then
+      call deck_error(ctx, "stage", "missing: give stage = 'spur' | 'helical' | 'bevel' | 'planetary' "// &
+        "for each stage", error)
+      return
+    end if
+    if (n < max_stages) then
+      if (any(len_trim(stage(n + 1:)) > 0)) then
+        call deck_error(ctx, "stage", "values must be given without gaps (element "//int_str(n + 1)// &
+          " is missing)", error)
+        return
+      end if
+    end if
+    ! nothing may be given for a stage that does not exist
+    call no_extra_real(ctx, "m1", m1, n, error); if (allocated(error)) return
+    call no_extra_real(ctx, "m", m, n, error); if (allocated(error)) return
+    call no_extra_real(ctx, "dw1", dw1, n, error); if (allocated(error)) return
+    call no_extra_real(ctx, "alpha_w", alpha_w, n, error); if (allocated(error)) return
+    call no_extra_real(ctx, "alpha_w23", alpha_w23, n, error); if (allocated(error)) return
+    call no_extra_real(ctx, "beta", beta, n, error); if (allocated(error)) return
+    call no_extra_real(ctx, "gamma", gamma, n, error); if (allocated(error)) return
+    call no_extra_int(ctx, "z1", z1, n, error); if (allocated(error)) return
+    call no_extra_int(ctx, "z2", z2, n, error); if (allocated(error)) return
+    call no_extra_int(ctx, "z3", z3, n, error); if (allocated(error)) return
+    call no_extra_int(ctx, "k", k, n, error); if (allocated(error)) return
+
+    deck%n = n
+    allocate (deck%st(n), deck%m1(n), deck%module_mm(n))
+    deck%m1 = 0.0_wp
+    deck%module_mm = 0.0_wp
+    do i = 1, n
+      at = "("//int_str(i)//")"
+      kind = findloc(gear_kind_names, lower(trim(adjustl(stage(i)))), dim=1)
+      if (kind == 0) then
+        call deck_error(ctx, "stage"//at, "must be 'spur', 'helical', 'bevel' or 'planetary' (got '"// &
+          trim(stage(i))//"')", error)
+        return
+      end if
+      deck%st(i)%kind = kind
+      if (deck%layout == layout_series .and. (kind == gear_bevel .or. kind == gear_planetary)) then
+        call deck_error(ctx, "stage"//at, "'"//trim(gear_kind_names(kind))//"' cannot be a stage of "// &
+          "layout 'series' (parallel-shaft spur/helical stages only)", error)
+        return
+      end if
+
+      ! input torque
+      if (deck%layout == layout_series .and. i > 1) then
+        call require_rule(ctx, "m1"//at, .not. is_set(m1(i)), "not allowed in layout 'series': "// &
+          "the torque of stage "//int_str(i)//" comes from stage "//int_str(i - 1), error)
+        if (allocated(error)) return
+      else
+        call require_set(ctx, "m1"//at, m1(i), error); if (allocated(error)) return
+        deck%m1(i) = m1(i)
+      end if
+
+      ! teeth
+      call require_teeth(ctx, "z1"//at, z1(i), error); if (allocated(error)) return
+      call require_teeth(ctx, "z2"//at, z2(i), error); if (allocated(error)) return
+      deck%st(i)%z1 = z1(i)
+      deck%st(i)%z2 = z2(i)
+
+      ! size: module or pitch diameter of gear 1
+      if (is_set(dw1(i))) then
+        call require_positive(ctx, "dw1"//at, dw1(i), error); if (allocated(error)) return
+        call require_rule(ctx, "m"//at, .not. is_set(m(i)), "give either m or dw1 for a stage, not both", error)
+        if (allocated(error)) return
+        deck%st(i)%dw1 = dw1(i) * 1.0e-3_wp
+      else
+        if (.not. is_set(m(i))) then
+          call deck_error(ctx, "m"//at, "missing: give the module m (mm) or the pitch diameter dw1 (mm)", error)
+          return
+        end if
+        call require_positive(ctx, "m"//at, m(i), error); if (allocated(error)) return
+        deck%module_mm(i) = m(i)
+        deck%st(i)%dw1 = real(z1(i), wp) * m(i) * 1.0e-3_wp
+      end if
+
+      ! angles
+      call pressure_angle(ctx, "alpha_w"//at, alpha_w(i), alpha_default, deck%st(i)%alpha_w, error)
+      if (allocated(error)) return
+      if (is_set(beta(i))) then
+        call require_set(ctx, "beta"//at, beta(i), error); if (allocated(error)) return
+        call require_rule(ctx, "beta"//at, kind == gear_helical .or. beta(i) == 0.0_wp, &
+          "only for a 'helical' stage (stage "//int_str(i)//" is '"//trim(gear_kind_names(kind))// &
+          "'): leave it 0 or unset", error)
+        if (allocated(error)) return
+        call require_rule(ctx, "beta"//at, abs(beta(i)) < 45.0_wp, "must be in (-45, 45) deg (got "// &
+          real_str(beta(i))//")", error)
+        if (allocated(error)) return
+        deck%st(i)%beta = beta(i) * deg_to_rad
+      end if
+      if (is_set(gamma(i))) then
+        call require_set(ctx, "gamma"//at, gamma(i), error); if (allocated(error)) return
+        deck%st(i)%gamma = gamma(i) * deg_to_rad
+      end if
+      if (kind == gear_bevel) deck%st(i)%delta1 = atan2(real(z1(i), wp), real(z2(i), wp))
+
+      ! planetary data, only for planetary stages (0 = "not used" is accepted elsewhere)
+      if (kind == gear_planetary) then
+        call require_teeth(ctx, "z3"//at, z3(i), error); if (allocated(error)) return
+        call require_rule(ctx, "z3"//at, z3(i) == z1(i) + 2 * z2(i), "must be z1 + 2*z2 = "// &
+          int_str(z1(i) + 2 * z2(i))//" (coaxial sun, satellites and ring; got "//int_str(z3(i))//")", error)
+        if (allocated(error)) return
+        if (.not. is_set(k(i))) then
+          call deck_error(ctx, "k"//at, "missing (number of satellites)", error)
+          return
+        end if
+        call require_rule(ctx, "k"//at, k(i) >= 1, "must be >= 1 (got "//int_str(k(i))//")", error)
+        if (allocated(error)) return
+        call require_rule(ctx, "k"//at, modulo(z1(i) + z3(i), k(i)) == 0, "(z1 + z3)/k must be an integer "// &
+          "for equally spaced satellites (z1 + z3 = "//int_str(z1(i) + z3(i))//", k = "//int_str(k(i))//")", error)
+        if (allocated(error)) return
+        if (k(i) >= 2) then
+          call require_rule(ctx, "k"//at, real(z1(i) + z2(i), wp) * sin(pi / real(k(i), wp)) > real(z2(i) + 2, wp), &
+            "too many satellites: neighbours collide, (z1 + z2)*sin(180/k) must exceed z2 + 2", error)
+          if (allocated(error)) return
+        end if
+        deck%st(i)%z3 = z3(i)
+        deck%st(i)%k = k(i)
+        call pressure_angle(ctx, "alpha_w23"//at, alpha_w23(i), alpha_w(i), deck%st(i)%alpha_w23, error)
+        if (allocated(error)) return
+        if (.not. is_set(gamma(i))) deck%st(i)%gamma = 0.5_wp * pi
+      else
+        call not_used_int(ctx, "z3"//at, z3(i), kind, error); if (allocated(error)) return
+        call not_used_int(ctx, "k"//at, k(i), kind, error); if (allocated(error)) return
+        call require_rule(ctx, "alpha_w23"//at, .not. is_set(alpha_w23(i)) .or. alpha_w23(i) == 0.0_wp, &
+          "only for a 'planetary' stage: leave it 0 or unset", error)
+        if (allocated(error)) return
+      end if
+    end do
+  end subroutine read_gears_deck
+
+  !> A pressure angle in deg: optional with `default` (itself possibly unset -> 20 deg),
+  !> finite and strictly inside (0, 45) deg; returned in rad.
+  subroutine pressure_angle(ctx, name, value, default, angle, error)
+    type(deck_context_t), intent(in) :: ctx
+    character(*), intent(in) :: name
+    real(wp), intent(in) :: value, default
+    real(wp), intent(out) :: angle
+    type(error_t), allocatable, intent(out) :: error
+    real(wp) :: a
+    angle = 0.0_wp
+    if (is_set(value)) then
+      a = value
+    else if (is_set(default)) then
+      a = default
+    else
+      a = alpha_default
+    end if
+    call require_set(ctx, name, a, error); if (allocated(error)) return
+    call require_rule(ctx, name, a > 0.0_wp .and. a < 45.0_wp, "must be in (0, 45) deg (got "// &
+      real_str(a)//")", error)
+    if (allocated(error)) return
+    angle = a * deg_to_rad
+  end subroutine pressure_angle
+
+  !> Teeth count: present and from 1 to max_teeth.
+  subroutine require_teeth(ctx, name, z, error)
+    type(deck_context_t), intent(in) :: ctx
+    character(*), intent(in) :: name
+    integer, intent(in) :: z
+    type(error_t), allocatable, intent(out) :: error
+    if (.not. is_set(z)) then
+      call deck_error(ctx, name, "missing (number of teeth)", error)
+    else if (z <= 0) then
+      call deck_error(ctx, name, "must be >= 1 teeth (got "//int_str(z)//")", error)
+    else if (z > max_teeth) then
+      call deck_error(ctx, name, "must be <= "//int_str(max_teeth)//" teeth (got "//int_str(z)//")", error)
+    end if
+  end subroutine require_teeth
+
+  !> A planetary-only integer on another stage: unset or 0.
+  subroutine not_used_int(ctx, name, value, kind, error)
+    type(deck_context_t), intent(in) :: ctx
+    character(*), intent(in) :: name
+    integer, intent(in) :: value, kind
+    type(error_t), allocatable, intent(out) :: error
+    if (is_set(value) .and. value /= 0) call deck_error(ctx, name, "only for a 'planetary' stage (this one is '"// &
+      trim(gear_kind_names(kind))//"'): leave it 0 or unset", error)
+  end subroutine not_used_int
+
+  !> No real value beyond the last stage.
+  subroutine no_extra_real(ctx, name, values, n, error)
+    type(deck_context_t), intent(in) :: ctx
+    character(*), intent(in) :: name
+    real(wp), intent(in) :: values(:)
+    integer, intent(in) :: n
+    type(error_t), allocatable, intent(out) :: error
+    integer :: i
+    do i = n + 1, size(values)
+      if (is_set(values(i))) then
+        call deck_error(ctx, name//"("//int_str(i)//")", "given for stage "//int_str(i)// &
+          " but the deck has "//int_str(n)//" stage(s) (see 'stage')", error)
+        return
+      end if
+    end do
+  end subroutine no_extra_real
+
+  !> No integer value beyond the last stage.
+  subroutine no_extra_int(ctx, name, values, n, error)
+    type(deck_context_t), intent(in) :: ctx
+    character(*), intent(in) :: name
+    integer, intent(in) :: values(:)
+    integer, intent(in) :: n
+    type(error_t), allocatable, intent(out) :: error
+    integer :: i
+    do i = n + 1, size(values)
+      if (is_set(values(i))) then
+        call deck_error(ctx, name//"("//int_str(i)//")", "given for stage "//int_str(i)// &
+          " but the deck has "//int_str(n)//" stage(s) (see 'stage')", error)
+        return
+      end if
+    end do
+  end subroutine no_extra_int
+
+end module kinetostat_gears_deck
