@@ -4,7 +4,7 @@ module kinetostat_cam_deck
   use kinetostat_kinds, only: wp, deg_to_rad
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str, lower
-  use kinetostat_deck, only: deck_context_t, unset_real, unset_int, max_deck_array, &
+  use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, unset_int, max_deck_array, &
     open_deck, namelist_failure, deck_error, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn
   use kinetostat_cam, only: cam_params_t
@@ -77,10 +77,7 @@ contains
   subroutine write_cam_template(unit)
     !> Output unit.
     integer, intent(in) :: unit
-    integer :: i
-    do i = 1, size(template_lines)
-      write (unit, '(a)') trim(template_lines(i))
-    end do
+    call write_template_lines(unit, template_lines)
   end subroutine write_cam_template
 
   !> Read and validate a `&cam` deck.

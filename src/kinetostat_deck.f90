@@ -11,7 +11,7 @@ module kinetostat_deck
   public :: deck_context_t, unset_real, unset_int, max_deck_array, max_steps
   public :: read_group_name, open_deck, namelist_failure, deck_error
   public :: is_set, require_set, require_positive, require_nonnegative, require_rule
-  public :: optional_default, count_values, steps_over_turn
+  public :: optional_default, count_values, steps_over_turn, write_template_lines
 
   !> Sentinel of a real deck variable the deck did not set.
   real(wp), parameter :: unset_real = -huge(1.0_wp)
@@ -35,6 +35,18 @@ module kinetostat_deck
   end interface is_set
 
 contains
+
+  !> Print a template deck held as lines (trailing blanks dropped).
+  subroutine write_template_lines(unit, lines)
+    !> Output unit.
+    integer, intent(in) :: unit
+    !> The deck's lines.
+    character(*), intent(in) :: lines(:)
+    integer :: i
+    do i = 1, size(lines)
+      write (unit, '(a)') trim(lines(i))
+    end do
+  end subroutine write_template_lines
 
   !> The name of the first namelist group in the deck (lower case, without '&').
   subroutine read_group_name(path, group, error)

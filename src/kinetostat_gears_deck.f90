@@ -5,7 +5,7 @@ module kinetostat_gears_deck
   use kinetostat_kinds, only: wp, deg_to_rad, pi
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str, lower
-  use kinetostat_deck, only: deck_context_t, unset_real, unset_int, &
+  use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, unset_int, &
     open_deck, namelist_failure, deck_error, is_set, require_set, require_positive, require_rule
   use kinetostat_gears, only: gear_stage_t, gear_spur, gear_helical, gear_bevel, gear_planetary, &
     gear_kind_names
@@ -69,10 +69,7 @@ contains
   subroutine write_gears_template(unit)
     !> Output unit.
     integer, intent(in) :: unit
-    integer :: i
-    do i = 1, size(template_lines)
-      write (unit, '(a)') trim(template_lines(i))
-    end do
+    call write_template_lines(unit, template_lines)
   end subroutine write_gears_template
 
   !> Read and validate a `&gears` deck.

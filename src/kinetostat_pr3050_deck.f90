@@ -3,7 +3,7 @@ module kinetostat_pr3050_deck
   use kinetostat_kinds, only: wp, g_default, deg_to_rad
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str
-  use kinetostat_deck, only: deck_context_t, unset_real, max_deck_array, max_steps, &
+  use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, max_deck_array, max_steps, &
     open_deck, namelist_failure, deck_error, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values
   use kinetostat_pr3050, only: pr3050_params_t
@@ -75,10 +75,7 @@ contains
   subroutine write_pr3050_template(unit)
     !> Output unit.
     integer, intent(in) :: unit
-    integer :: i
-    do i = 1, size(template_lines)
-      write (unit, '(a)') trim(template_lines(i))
-    end do
+    call write_template_lines(unit, template_lines)
   end subroutine write_pr3050_template
 
   !> Number of steps N = (phi3_end - phi3_start)/dphi3 + 1 of a rocker range (deg), or 0

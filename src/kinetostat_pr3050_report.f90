@@ -3,8 +3,9 @@ module kinetostat_pr3050_report
   use kinetostat_kinds, only: wp, deg_to_rad
   use kinetostat_error, only: error_t
   use kinetostat_text, only: int_str, real_str
-  use kinetostat_vec2, only: magnitude, angle_360_deg, snap_noise
-  use kinetostat_output, only: format_csv, run_summary_t, echo_heading, echo_real, echo_int, echo_array, &
+  use kinetostat_vec2, only: magnitude, angle_360_deg
+  use kinetostat_output, only: format_csv, run_summary_t, noise_rel, noise_floor, force_columns, angles_0_360, &
+    echo_heading, echo_real, echo_int, echo_array, &
     write_csv_header, write_csv_row, write_selfcheck_footer
   use kinetostat_pr3050, only: pr3050_step_t, pr3050_step, pr3050_check_position
   use kinetostat_pr3050_deck, only: pr3050_deck_t, read_pr3050_deck
@@ -32,8 +33,6 @@ module kinetostat_pr3050_report
     "      deg       deg         m       m/s           N         N*m"]
   !> Prismatic-pair line: rocker angle from the start, axis angle B->A, length, rate, N21, M21.
   character(*), parameter :: pair_line_fmt = '(f9.2,f10.2,2f10.4,2e12.3)'
-  !> Relative roundoff floor below which a force counts as zero in the output.
-  real(wp), parameter :: noise_rel = 1.0e-12_wp
 
 contains
 
@@ -98,17 +97,10 @@ contains
     real(wp), intent(in) :: phi3rel
     real(wp) :: v(size(pr3050_csv_columns))
     real(wp) :: floor, f(2, 3)
-    integer :: i
     f = reshape([s%f14, s%f34, s%f32], [2, 3])
-    floor = noise_rel * max(maxval([(magnitude(f(:, i)), i=1, 3)]), abs(s%f2))
-    do i = 1, 3
-      f(:, i) = snap_noise(f(:, i), floor)
-    end do
+    floor = noise_floor(f, [s%f2])
     v(1) = phi3rel
-    do i = 1, 3
-      v(2 * i) = magnitude(f(:, i))
-      v(2 * i + 1) = angle_360_deg(f(:, i))
-    end do
+    v(2:7) = force_columns(f, floor, angles_0_360)
     v(8) = s%f2
     if (abs(v(8)) <= floor) v(8) = 0.0_wp
   end function pr3050_csv_values

@@ -3,7 +3,7 @@ module kinetostat_pr3207_deck
   use kinetostat_kinds, only: wp, g_default
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str
-  use kinetostat_deck, only: deck_context_t, unset_real, unset_int, max_deck_array, &
+  use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, unset_int, max_deck_array, &
     open_deck, namelist_failure, deck_error, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn
   use kinetostat_pr3207, only: pr3207_params_t
@@ -71,10 +71,7 @@ contains
   subroutine write_pr3207_template(unit)
     !> Output unit.
     integer, intent(in) :: unit
-    integer :: i
-    do i = 1, size(template_lines)
-      write (unit, '(a)') trim(template_lines(i))
-    end do
+    call write_template_lines(unit, template_lines)
   end subroutine write_pr3207_template
 
   !> Two-value cutting force at crank angle `phi_deg` (deg): `work` inside

@@ -2,8 +2,8 @@
 module kinetostat_pr3207_report
   use kinetostat_kinds, only: wp, deg_to_rad, rad_to_deg
   use kinetostat_error, only: error_t
-  use kinetostat_vec2, only: magnitude, angle_360_deg, snap_noise
-  use kinetostat_output, only: format_csv, run_summary_t, echo_heading, echo_real, echo_int, echo_array, &
+    use kinetostat_output, only: format_csv, run_summary_t, noise_floor, force_columns, angles_0_360, &
+    echo_heading, echo_real, echo_int, echo_array, &
     write_csv_header, write_csv_row, write_selfcheck_footer
   use kinetostat_pr3207, only: pr3207_step_t, pr3207_step
   use kinetostat_pr3207_deck, only: pr3207_deck_t, read_pr3207_deck
@@ -24,8 +24,6 @@ module kinetostat_pr3207_report
     "                  deg         deg         deg         deg         deg"]
   !> Step line 1: crank angle, five force magnitudes, driving moment.
   character(*), parameter :: step_line1_fmt = '(f9.2,5f12.2,f12.3)'
-  !> Relative roundoff floor below which a force counts as zero in the output.
-  real(wp), parameter :: noise_rel = 1.0e-12_wp
   !> Step line 2: the five force angles under their magnitudes.
   character(*), parameter :: step_line2_fmt = '(9x,5f12.2)'
 
@@ -80,17 +78,10 @@ contains
     real(wp), intent(in) :: l_ab
     real(wp) :: v(size(pr3207_csv_columns))
     real(wp) :: floor, f(2, 5)
-    integer :: i
     f = reshape([s%f16, s%f21, s%f36, s%f34, s%f56], [2, 5])
-    floor = noise_rel * maxval([(magnitude(f(:, i)), i=1, 5)])
-    do i = 1, 5
-      f(:, i) = snap_noise(f(:, i), floor)
-    end do
+    floor = noise_floor(f, [real(wp) ::])
     v(1) = s%phi1 * rad_to_deg
-    do i = 1, 5
-      v(2 * i) = magnitude(f(:, i))
-      v(2 * i + 1) = angle_360_deg(f(:, i))
-    end do
+    v(2:11) = force_columns(f, floor, angles_0_360)
     v(12) = s%m1
     if (abs(v(12)) <= floor * l_ab) v(12) = 0.0_wp
   end function pr3207_csv_values

@@ -3,7 +3,7 @@ module kinetostat_sixbar_deck
   use kinetostat_kinds, only: wp, g_default, rad_to_deg
   use kinetostat_error, only: error_t, fatal_error, exit_geometry
   use kinetostat_text, only: real_str, int_str
-  use kinetostat_deck, only: deck_context_t, unset_real, unset_int, max_deck_array, &
+  use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, unset_int, max_deck_array, &
     open_deck, namelist_failure, deck_error, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn
   use kinetostat_sixbar, only: sixbar_params_t, sixbar_extreme_phi1
@@ -64,10 +64,7 @@ contains
   subroutine write_sixbar_template(unit)
     !> Output unit.
     integer, intent(in) :: unit
-    integer :: i
-    do i = 1, size(template_lines)
-      write (unit, '(a)') trim(template_lines(i))
-    end do
+    call write_template_lines(unit, template_lines)
   end subroutine write_sixbar_template
 
   !> Read and validate a `&sixbar` deck. Input errors have exit code 2; a requested

@@ -4,8 +4,8 @@ module kinetostat_sixbar_report
   use kinetostat_kinds, only: wp, deg_to_rad, rad_to_deg
   use kinetostat_error, only: error_t, fatal_error, exit_geometry, exit_input
   use kinetostat_text, only: real_str, int_str
-  use kinetostat_vec2, only: magnitude, angle_180_deg, snap_noise
-  use kinetostat_output, only: format_csv, run_summary_t, echo_heading, echo_real, echo_int, echo_logical, echo_array, &
+  use kinetostat_output, only: format_csv, run_summary_t, noise_rel, noise_floor, force_columns, angles_pm180, &
+    echo_heading, echo_real, echo_int, echo_logical, echo_array, &
     write_csv_header, write_csv_row, write_selfcheck_footer
   use kinetostat_sixbar, only: sixbar_step_t, sixbar_step, sixbar_ok, sixbar_open1, sixbar_dead1, &
     sixbar_open2, sixbar_dead2
@@ -34,8 +34,6 @@ module kinetostat_sixbar_report
   character(*), parameter :: field_f2_fmt = '(f40.2)', field_f3_fmt = '(f40.3)'
   !> A table field too wide for fixed point (from 1e7 or 1e8, N or N*m): exponent form.
   character(*), parameter :: field_es_fmt = '(es11.4)'
-  !> Relative roundoff floor below which a force counts as zero in the output.
-  real(wp), parameter :: noise_rel = 1.0e-12_wp
 
 contains
 
@@ -131,17 +129,10 @@ contains
     real(wp), intent(in) :: l1
     real(wp) :: v(size(sixbar_csv_columns))
     real(wp) :: floor, f(2, 6)
-    integer :: i
     f = reshape([s%f21, s%f32, s%f43, s%f45, s%f36, s%f16], [2, 6])
-    floor = noise_rel * max(maxval([(magnitude(f(:, i)), i=1, 6)]), abs(s%f56))
-    do i = 1, 6
-      f(:, i) = snap_noise(f(:, i), floor)
-    end do
+    floor = noise_floor(f, [s%f56])
     v(1) = s%pos%phi1 * rad_to_deg
-    do i = 1, 6
-      v(2 * i) = magnitude(f(:, i))
-      v(2 * i + 1) = angle_180_deg(f(:, i))
-    end do
+    v(2:13) = force_columns(f, floor, angles_pm180)
     v(14) = s%f56
     if (abs(v(14)) <= floor) v(14) = 0.0_wp
     v(15) = s%m1
