@@ -6,12 +6,14 @@ module kinetostat_mechanisms
   use kinetostat_deck, only: read_group_name
   use kinetostat_pr3207_report, only: run_pr3207
   use kinetostat_pr3207_deck, only: write_pr3207_template
+  use kinetostat_assur_report, only: run_assur
+  use kinetostat_assur_deck, only: write_assur_template
   implicit none
   private
   public :: run_deck, write_template, known_kinds
 
   !> Mechanism kinds (namelist group names) the program knows, for messages and --help.
-  character(*), parameter :: known_kinds = "pr3207"
+  character(*), parameter :: known_kinds = "pr3207 assur"
 
 contains
 
@@ -31,6 +33,8 @@ contains
     select case (group)
     case ("pr3207")
       call run_pr3207(path, output_format, unit, error)
+    case ("assur")
+      call run_assur(path, output_format, unit, error)
     case default
       call fatal_error(error, exit_input, path//": &"//group// &
         ": unknown mechanism (known: "//known_kinds//")")
@@ -48,6 +52,8 @@ contains
     select case (kind)
     case ("pr3207")
       call write_pr3207_template(unit)
+    case ("assur")
+      call write_assur_template(unit)
     case default
       call fatal_error(error, exit_usage, "template: unknown kind '"//kind//"' (known: "//known_kinds//")")
     end select
