@@ -114,7 +114,8 @@ contains
 
   !> The CSV row of one step, in the order of assur_csv_columns. Forces below `noise_rel`
   !> times the step's largest force (moments below that force times the crank's length
-  !> scale) are roundoff: printed as 0 with angle 0.
+  !> scale) are roundoff: printed as 0 with angle 0; so are single components below that floor
+  !> (a force along an axis gets exactly that axis' angle).
   pure function assur_csv_values(deck, s) result(v)
     !> Validated deck.
     type(assur_deck_t), intent(in) :: deck
@@ -135,6 +136,7 @@ contains
     pos = 1
     do ip = 1, np
       f = rotate(snap_noise(s%f(:, ip), floor), -deck%pair_frame(ip))
+      where (abs(f) <= floor) f = 0.0_wp
       v(pos + 1) = magnitude(f)
       if (deck%angles_signed) then
         v(pos + 2) = angle_180_deg(f)
