@@ -4,9 +4,11 @@ program kinetostat_tests
   use test_harness, only: test_counts_t, report_counts
   use test_foundation, only: run_foundation_tests
   use test_pr3207, only: run_pr3207_tests
+  use test_assur, only: run_assur_tests
   implicit none
   type(test_counts_t) :: t
   call run_foundation_tests(t)
   call run_pr3207_tests(t)
+  call run_assur_tests(t)
   call report_counts(t)
 end program kinetostat_tests
