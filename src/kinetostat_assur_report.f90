@@ -206,7 +206,7 @@ contains
     real(wp), allocatable :: v(:)
     real(wp) :: mag(size(deck%pair_name)), ang(size(deck%pair_name)), nn(size(deck%pair_name))
     real(wp) :: mm(size(deck%pair_name)), m1
-    integer :: k, ip, np, pos, d, i
+    integer :: k, ip, np, pos, d
     logical :: any_p
 
     np = size(deck%pair_name)
@@ -322,7 +322,6 @@ contains
         write (unit, '(a)') trim(line4)
       end if
     end do
-    i = 0
     call write_selfcheck_footer(unit, maxval(steps%residual), maxval(steps%mismatch), "M1")
   end subroutine write_assur_table
 

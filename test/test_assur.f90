@@ -31,6 +31,7 @@ contains
     call test_slider_crank_by_hand(t)
     call test_sixbar_worked_example(t)
     call test_toggle(t)
+    call test_parallel_groups(t)
     call test_prescribed_speed_law(t)
     call test_window(t)
   end subroutine run_assur_tests
@@ -500,6 +501,56 @@ contains
     call assur_step(mech, 0.0_wp, 1.0_wp, 0.0_wp, [real(wp) ::], [real(wp) ::], s, error)
     call check_true(t, "parallel PRP guides: geometry error", allocated(error), "no error")
   end subroutine test_toggle
+
+  ! ----------------------------------------------------------------------------------------
+  !> Two groups hanging on the crank in parallel (a V-twin: two RRP groups on the same crank
+  !> pin, guides at 0 and 90 deg): each group's reactions are those it has alone, and the
+  !> massless crank's pin reaction and balancing moment are the sums (2016 paper's note).
+  subroutine test_parallel_groups(t)
+    type(test_counts_t), intent(inout) :: t
+    real(wp), parameter :: z2(2) = 0.0_wp, rtol = 1.0e-12_wp
+    type(assur_dyad_t) :: d1, d2
+    type(assur_mech_t) :: both, one, two
+    type(assur_step_t) :: sb, s1, s2
+    type(error_t), allocatable :: e0, e1, e2
+    real(wp) :: phi, scale
+    integer :: k, c, j
+    character(len=40) :: at
+    d1 = dyad(kind_rrp, [1, 0], reshape([0.1_wp, 0.0_wp, 0.0_wp, 0.0_wp], [2, 2]), [0.0_wp, 0.0_wp], &
+              0.4_wp, 0.0_wp, 0.0_wp, 1, z2, 0.0_wp)
+    d2 = dyad(kind_rrp, [1, 0], reshape([0.1_wp, 0.0_wp, 0.0_wp, 0.0_wp], [2, 2]), [0.0_wp, 90.0_wp], &
+              0.4_wp, 0.0_wp, 0.0_wp, 1, z2, 0.0_wp)
+    both = make_mech([d1, d2])
+    one = make_mech([d1])
+    two = make_mech([d2])
+    both%links(2:5) = [assur_link_t(id=2, m=1.2_wp, j=0.02_wp, s=[0.15_wp, 0.01_wp]), assur_link_t(id=3, m=2.0_wp), &
+                       assur_link_t(id=4, m=1.1_wp, j=0.03_wp, s=[0.2_wp, 0.0_wp]), assur_link_t(id=5, m=2.5_wp)]
+    one%links(2:3) = both%links(2:3)
+    two%links(2:3) = both%links(4:5)
+    both%g = 9.81_wp; one%g = 9.81_wp; two%g = 9.81_wp
+    do k = 0, 11
+      phi = (10.0_wp + 30.0_wp * k) * deg_to_rad
+      write (at, '(" at phi1=",f6.1)') phi * rad_to_deg
+      call assur_step(both, phi, 30.0_wp, 5.0_wp, [real(wp) ::], [real(wp) ::], sb, e0)
+      call assur_step(one, phi, 30.0_wp, 5.0_wp, [real(wp) ::], [real(wp) ::], s1, e1)
+      call assur_step(two, phi, 30.0_wp, 5.0_wp, [real(wp) ::], [real(wp) ::], s2, e2)
+      if (allocated(e0) .or. allocated(e1) .or. allocated(e2)) then
+        call check_true(t, "parallel groups solvable"//trim(at), .false., "geometry error")
+        cycle
+      end if
+      scale = max(magnitude(sb%f(:, 7)), 1.0_wp)
+      do c = 1, 2
+        call check_close(t, "parallel: crank pin = sum"//trim(at), s1%f(c, 4) + s2%f(c, 4), sb%f(c, 7), rtol, rtol * scale)
+        do j = 1, 3
+          call check_close(t, "parallel: group 1 as alone"//trim(at), s1%f(c, j), sb%f(c, j), rtol, rtol * scale)
+          call check_close(t, "parallel: group 2 as alone"//trim(at), s2%f(c, j), sb%f(c, 3 + j), rtol, rtol * scale)
+        end do
+      end do
+      call check_close(t, "parallel: M1 = sum"//trim(at), s1%m1 + s2%m1, sb%m1, rtol, rtol * scale * 0.1_wp)
+      call check_true(t, "parallel: self-check"//trim(at), sb%residual <= 1.0e-12_wp .and. sb%mismatch <= 1.0e-12_wp, &
+                      "residual or power mismatch above 1e-12")
+    end do
+  end subroutine test_parallel_groups
 
   ! ----------------------------------------------------------------------------------------
   !> Prescribed omega(k), eps(k): a crank with J about its pivot and massless, unloaded dyad
