@@ -54,6 +54,8 @@ module kinetostat_assur_deck
     real(wp) :: m3 = unset_real, j3 = unset_real, s3(2) = unset_real
     !> Reporting frame: angle of its x-axis in the global frame, deg.
     real(wp) :: frame_angle = unset_real
+    !> Link (link2 or link3) on which the reported inner-pair force acts; default link2.
+    integer :: inner_on = unset_int
   end type dyad_in_t
 
   !> A per-step value: constant, angle window, or a column of `step_values`.
@@ -126,6 +128,8 @@ module kinetostat_assur_deck
     real(wp), allocatable :: pair_frame(:)
     !> Column name stem of each pair ("F21").
     character(len=16), allocatable :: pair_name(:)
+    !> +1, or -1 where the report shows the reaction's opposite (inner pair on link b).
+    real(wp), allocatable :: pair_sign(:)
     !> Angles in (-180, 180] instead of [0, 360).
     logical :: angles_signed = .false.
     !> CSV also carries the x, y components of every pair force.
@@ -365,10 +369,15 @@ contains
     end do
 
     ! ---- report: pair names and reporting frames
-    allocate (deck%pair_name(3 * nd + 1), deck%pair_frame(3 * nd + 1))
+    allocate (deck%pair_name(3 * nd + 1), deck%pair_frame(3 * nd + 1), deck%pair_sign(3 * nd + 1))
+    deck%pair_sign = 1.0_wp
     do d = 1, nd
       deck%pair_name(3 * d - 2) = pair_stem(dyad(d)%link2, dyad(d)%on2)
       deck%pair_name(3 * d - 1) = pair_stem(dyad(d)%link2, dyad(d)%link3)
+      if (dyad(d)%inner_on == dyad(d)%link3) then
+        deck%pair_name(3 * d - 1) = pair_stem(dyad(d)%link3, dyad(d)%link2)
+        deck%pair_sign(3 * d - 1) = -1.0_wp
+      end if
       deck%pair_name(3 * d) = pair_stem(dyad(d)%link3, dyad(d)%on3)
       deck%pair_frame(3 * d - 2:3 * d) = optional_default(dyad(d)%frame_angle, 0.0_wp) * deg_to_rad
     end do
@@ -403,7 +412,8 @@ contains
     type(dyad_in_t), intent(in) :: dy
     dyad_touched = is_set(dy%link2) .or. is_set(dy%link3) .or. is_set(dy%on2) .or. is_set(dy%on3) .or. &
       any(is_set([dy%at2, dy%at3, dy%angle2, dy%angle3, dy%l2, dy%l3, dy%e, dy%slot_at, dy%slot_angle, &
-                  dy%m2, dy%j2, dy%s2, dy%m3, dy%j3, dy%s3, dy%frame_angle])) .or. is_set(dy%mode)
+                  dy%m2, dy%j2, dy%s2, dy%m3, dy%j3, dy%s3, dy%frame_angle])) .or. is_set(dy%mode) .or. &
+      is_set(dy%inner_on)
   end function dyad_touched
 
   !> A two-component point: default (0, 0) when unset; both or none; finite.
@@ -572,6 +582,10 @@ contains
     call require_nonnegative(ctx, p//"j3", dy%j3, error); if (allocated(error)) return
     call optional_pair(ctx, p//"s2", dy%s2, error); if (allocated(error)) return
     call optional_pair(ctx, p//"s3", dy%s3, error); if (allocated(error)) return
+    if (.not. is_set(dy%inner_on)) dy%inner_on = dy%link2
+    call require_rule(ctx, p//"inner_on", dy%inner_on == dy%link2 .or. dy%inner_on == dy%link3, &
+      "must be link2 ("//int_str(dy%link2)//") or link3 ("//int_str(dy%link3)//"), got "//int_str(dy%inner_on), error)
+    if (allocated(error)) return
     if (is_set(dy%frame_angle)) then
       call require_set(ctx, p//"frame_angle", dy%frame_angle, error); if (allocated(error)) return
     end if

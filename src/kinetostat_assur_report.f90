@@ -135,7 +135,7 @@ contains
     v(1) = s%phi1 * rad_to_deg
     pos = 1
     do ip = 1, np
-      f = rotate(snap_noise(s%f(:, ip), floor), -deck%pair_frame(ip))
+      f = rotate(snap_noise(deck%pair_sign(ip) * s%f(:, ip), floor), -deck%pair_frame(ip))
       where (abs(f) <= floor) f = 0.0_wp
       v(pos + 1) = magnitude(f)
       if (deck%angles_signed) then
@@ -149,8 +149,8 @@ contains
         pos = pos + 2
       end if
       if (assur_pair_prismatic(deck, ip)) then
-        nn = s%n(ip)
-        mm = s%m(ip)
+        nn = deck%pair_sign(ip) * s%n(ip)
+        mm = deck%pair_sign(ip) * s%m(ip)
         if (abs(nn) <= floor) nn = 0.0_wp
         if (abs(mm) <= mfloor) mm = 0.0_wp
         v(pos + 1:pos + 2) = [nn, mm]

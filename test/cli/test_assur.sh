@@ -113,3 +113,13 @@ expect_same assur-prescribed-constant-law data/expected/assur_slider_crank.csv "
 run_ks "$(deck_with a_law2 "$sc" 's/omega1 = 50 /omega1_step = 13*50, eps1_step = 13*400 /')"
 if [ "$rc" -eq 0 ] && grep -q 'MISMATCH VS POWER BALANCE .*OK' "$out"; then pass
 else fail assur-prescribed-eps-selfcheck "rc=$rc, self-check not OK"; fi
+
+# --- inner_on: which link the reported inner-pair force acts on (names F32 instead of F23)
+expect_input_error assur-inner-on '&assur: dyad\(1\)%inner_on: must be link2 \(2\) or link3 \(3\), got 5' "$(deck_with a_in "$sc" 's/dyad(1)%mode = 1/dyad(1)%mode = 1, dyad(1)%inner_on = 5/')"
+run_ks "$(deck_with a_in23 data/assur_sixbar.nml '/inner_on/d')" --format csv
+cp "$out" "$cli_tmp/six_f23.csv"
+# F23 = -F32: same magnitude, opposite components
+paste -d, <(assur_cols "$cli_tmp/six_f23.csv" F23 F23x F23y | tail -n +2) \
+          <(assur_cols data/expected/assur_sixbar.csv F32 F32x F32y | tail -n +2) |
+  awk -F, '{ if ($1 != $4 || $2 + $5 != 0 || $3 + $6 != 0) bad = 1 } END { exit bad }' && pass ||
+  fail assur-inner-on-sense "F23 is not -F32"
