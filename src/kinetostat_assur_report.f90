@@ -232,6 +232,7 @@ contains
     call echo_real(unit, "DPHI", deck%dphi, "deg")
     call echo_int(unit, "N", deck%n, "steps")
     call echo_logical(unit, "ANGLES_SIGNED", deck%angles_signed, "")
+    call echo_logical(unit, "COMPONENTS", deck%components, "")
     do d = 1, size(deck%mech%dyads)
       associate (dy => deck%mech%dyads(d), lk => deck%mech%links)
         write (unit, dyad_echo_fmt) d, kind_names(dy%geom%kind), lk(2 * d)%id, lk(2 * d + 1)%id, &
@@ -252,6 +253,7 @@ contains
         call echo_real(unit, "J3", lk(2 * d + 1)%j, "kg*m^2")
         call echo_array(unit, "S3", lk(2 * d + 1)%s, "m")
         call echo_real(unit, "FRAME_ANGLE", deck%pair_frame(3 * d) * rad_to_deg, "deg")
+        call echo_int(unit, "INNER_ON", lk(merge(2 * d + 1, 2 * d, deck%pair_sign(3 * d - 1) < 0.0_wp))%id, "")
       end associate
     end do
     do k = 1, size(deck%mech%forces)
