@@ -101,6 +101,9 @@ module kinetostat_assur
     real(wp) :: mismatch = 0.0_wp
   end type assur_step_t
 
+  !> Smallest link load scale, relative to the step's largest, for the equilibrium residual.
+  real(wp), parameter :: floor_rel = 1.0e-6_wp
+
   !> Sum of forces and moments (about a link's origin) acting on a link, with the sums of
   !> their magnitudes for relative residuals.
   type :: wrench_acc_t
@@ -160,9 +163,14 @@ contains
     acc%sm = acc%sm + abs(c)
   end subroutine add_couple
 
-  pure real(wp) function acc_residual(acc)
+  !> Relative residual of one link; its scales are at least `floor_rel` times the step's
+  !> largest link scales `sf_max`, `sm_max` (a link whose loads are all roundoff-level,
+  !> e.g. an unloaded massless link, is judged against the mechanism's load level).
+  pure real(wp) function acc_residual(acc, sf_max, sm_max)
     type(wrench_acc_t), intent(in) :: acc
-    acc_residual = max(ratio(magnitude(acc%f), acc%sf), ratio(abs(acc%m), acc%sm))
+    real(wp), intent(in) :: sf_max, sm_max
+    acc_residual = max(ratio(magnitude(acc%f), max(acc%sf, floor_rel * sf_max)), &
+                       ratio(abs(acc%m), max(acc%sm, floor_rel * sm_max)))
   end function acc_residual
 
   pure real(wp) function ratio(num, den)
@@ -338,7 +346,6 @@ contains
     ! equilibrium residual of every moving link with all its loads and reactions
     call add_force(known(1), states(1)%o, states(1)%o, step%f(:, crank_pin_index(nd)))
     call add_couple(known(1), step%m1)
-    residual = acc_residual(known(1))
     do d = 1, nd
       associate (pa => link_a(d), pb => link_b(d))
         call add_force(known(pa), states(pa)%o, poses(d)%p(:, 1), step%f(:, pair_index(d, 1)))
@@ -349,8 +356,11 @@ contains
         call add_couple(known(pb), -step%m(pair_index(d, 2)))
         call add_force(known(pb), states(pb)%o, poses(d)%p(:, 3), step%f(:, pair_index(d, 3)))
         call add_couple(known(pb), step%m(pair_index(d, 3)))
-        residual = max(residual, acc_residual(known(pa)), acc_residual(known(pb)))
       end associate
+    end do
+    residual = 0.0_wp
+    do i = 1, ubound(known, 1)
+      residual = max(residual, acc_residual(known(i), maxval(known(1:)%sf), maxval(known(1:)%sm)))
     end do
     step%residual = residual
   end subroutine assur_step

@@ -21,10 +21,12 @@ module kinetostat_assur_report
   real(wp), parameter :: noise_rel = 1.0e-12_wp
   !> Results header: a label in the PHI1 column then 12-wide names.
   character(*), parameter :: header_fmt = '(a9,*(a12))'
-  !> Step line 1: crank angle, force magnitudes, M1.
-  character(*), parameter :: line1_fmt = '(f9.2,*(f12.2))'
-  !> One 12-wide numeric field of lines 2-4.
+  !> Step line 1 starts with the crank angle.
+  character(*), parameter :: phi_fmt = '(f9.2)'
+  !> One 12-wide numeric field (forces, angles, moments).
   character(*), parameter :: field_fmt = '(f12.2)'
+  !> The same field for values too large for field_fmt (|x| >= 1e8).
+  character(*), parameter :: field_big_fmt = '(es12.4)'
   !> Dyad line of the INPUT DATA echo.
   character(*), parameter :: dyad_echo_fmt = '(3x,"DYAD ",i0,": ",a," LINKS ",i0,"-",i0,", ON LINKS ",i0," AND ",i0, &
     &", MODE ",i0)'
@@ -175,6 +177,17 @@ contains
     if (.not. crank_length > 0.0_wp) crank_length = 1.0_wp
   end function crank_length
 
+  !> A 12-wide table field: fixed point, or exponent form when too large (never '*').
+  pure function field12(x) result(text)
+    real(wp), intent(in) :: x
+    character(len=12) :: text
+    if (abs(x) < 1.0e8_wp) then
+      write (text, field_fmt) x
+    else
+      write (text, field_big_fmt) x
+    end if
+  end function field12
+
   !> A 12-wide right-adjusted header label `name//suffix`, blank when `show` is false.
   pure function p_label(name, suffix, show) result(label)
     character(*), intent(in) :: name, suffix
@@ -201,7 +214,7 @@ contains
     type(assur_deck_t), intent(in) :: deck
     type(assur_step_t), intent(in) :: steps(:)
     character(len=12), allocatable :: names(:)
-    character(len=:), allocatable :: line2, line3, line4
+    character(len=:), allocatable :: line1, line2, line3, line4
     character(len=12) :: buf
     real(wp), allocatable :: v(:)
     real(wp) :: mag(size(deck%pair_name)), ang(size(deck%pair_name)), nn(size(deck%pair_name))
@@ -301,18 +314,20 @@ contains
         end if
       end do
       m1 = v(pos + 1)
-      write (unit, line1_fmt) v(1), mag, m1
+      write (buf, phi_fmt) v(1)
+      line1 = buf(1:9)
+      do ip = 1, np
+        line1 = line1//field12(mag(ip))
+      end do
+      write (unit, '(a)') line1//field12(m1)
       line2 = repeat(" ", 9)
       line3 = repeat(" ", 9)
       line4 = repeat(" ", 9)
       do ip = 1, np
-        write (buf, field_fmt) ang(ip)
-        line2 = line2//buf
+        line2 = line2//field12(ang(ip))
         if (assur_pair_prismatic(deck, ip)) then
-          write (buf, field_fmt) nn(ip)
-          line3 = line3//buf
-          write (buf, field_fmt) mm(ip)
-          line4 = line4//buf
+          line3 = line3//field12(nn(ip))
+          line4 = line4//field12(mm(ip))
         else
           line3 = line3//repeat(" ", 12)
           line4 = line4//repeat(" ", 12)
