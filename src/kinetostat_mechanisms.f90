@@ -15,12 +15,14 @@ module kinetostat_mechanisms
   use kinetostat_gears_deck, only: write_gears_template
   use kinetostat_cam_report, only: run_cam
   use kinetostat_cam_deck, only: write_cam_template
+  use kinetostat_assur_report, only: run_assur
+  use kinetostat_assur_deck, only: write_assur_template
   implicit none
   private
   public :: run_deck, write_template, known_kinds
 
   !> Mechanism kinds (namelist group names) the program knows, for messages and --help.
-  character(*), parameter :: known_kinds = "pr3207, pr3050, sixbar, gears, cam"
+  character(*), parameter :: known_kinds = "pr3207, pr3050, sixbar, assur, gears, cam"
 
 contains
 
@@ -50,6 +52,8 @@ contains
       call run_gears(path, output_format, unit, error, summary)
     case ("cam")
       call run_cam(path, output_format, unit, error, summary)
+    case ("assur")
+      call run_assur(path, output_format, unit, error, summary)
     case default
       call fatal_error(error, exit_input, path//": &"//group// &
         ": unknown mechanism (known: "//known_kinds//")")
@@ -75,6 +79,8 @@ contains
       call write_gears_template(unit)
     case ("cam")
       call write_cam_template(unit)
+    case ("assur")
+      call write_assur_template(unit)
     case default
       call fatal_error(error, exit_usage, "template: unknown kind '"//kind//"' (known: "//known_kinds//")")
     end select

@@ -8,6 +8,7 @@ program kinetostat_tests
   use test_sixbar, only: run_sixbar_tests
   use test_gears, only: run_gears_tests
   use test_cam, only: run_cam_tests
+  use test_assur, only: run_assur_tests
   implicit none
   type(test_counts_t) :: t
   call run_foundation_tests(t)
@@ -16,5 +17,6 @@ program kinetostat_tests
   call run_sixbar_tests(t)
   call run_gears_tests(t)
   call run_cam_tests(t)
+  call run_assur_tests(t)
   call report_counts(t)
 end program kinetostat_tests

@@ -1,0 +1,368 @@
+!> Generic mechanism, layer 3: assembly of a one-DOF planar linkage = frame + initial link
+!> (crank) + an ordered list of class-II dyads, and its kinetostatics at one input angle:
+!> kinematics link by link, gravity and d'Alembert loads of every link (manual section 5:
+!> reduced to the link's frame origin), reactions dyad by dyad from the last back to the
+!> first (a solved dyad's reactions become loads on the links it hangs on), then the crank's
+!> pin reaction and balancing moment; self-check by per-link equilibrium residuals and the
+!> power (virtual work) balance of the balancing moment.
+!>
+!> Internal link indices: 0 frame, 1 crank, dyad d owns links 2d (a) and 2d+1 (b).
+!> Pair index of the results: 3(d-1)+j for pair j of dyad d; the crank's pin is 3*nd+1.
+module kinetostat_assur
+  use kinetostat_kinds, only: wp
+  use kinetostat_error, only: error_t, fatal_error, exit_geometry
+  use kinetostat_vec2, only: unit_at, cross, magnitude
+  use kinetostat_loads, only: inertia_force, inertia_moment, gravity_force
+  use kinetostat_selfcheck, only: power_mismatch
+  use kinetostat_text, only: int_str
+  use kinetostat_assur_kinematics, only: link_state_t, point_state_t, dyad_geometry_t, dyad_pose_t, &
+    point_on, crank_state, frame_state, dyad_pose, kind_names, pose_ok, pose_no_assembly
+  use kinetostat_assur_statics, only: dyad_reactions_t, dyad_reactions
+  implicit none
+  private
+  public :: assur_link_t, assur_dyad_t, assur_force_t, assur_mech_t, assur_step_t
+  public :: assur_step, assur_kinematics, link_a, link_b, pair_index, crank_pin_index
+
+  !> Mass data of a moving link.
+  type :: assur_link_t
+    !> Number of the link in the deck (for column names), >= 0.
+    integer :: id = 0
+    !> Mass, kg.
+    real(wp) :: m = 0.0_wp
+    !> Moment of inertia about the centre of mass, kg*m^2.
+    real(wp) :: j = 0.0_wp
+    !> Centre of mass in the link's coordinates, m.
+    real(wp) :: s(2) = 0.0_wp
+  end type assur_link_t
+
+  !> A dyad and where it hangs.
+  type :: assur_dyad_t
+    !> Kind, assembly mode and dimensions.
+    type(dyad_geometry_t) :: geom
+    !> Internal indices of the links its outer pairs 1 and 3 attach to (< its own links).
+    integer :: on(2) = 0
+    !> Attachment points in those links' coordinates (pin or a point of the guide), m.
+    real(wp) :: at(2, 2) = 0.0_wp
+    !> Guide directions relative to those links (prismatic outer pairs), rad.
+    real(wp) :: ang(2) = 0.0_wp
+  end type assur_dyad_t
+
+  !> An external force on a link (its magnitude is given per step).
+  type :: assur_force_t
+    !> Internal index of the loaded link (>= 1).
+    integer :: link = 1
+    !> Point of application in the link's coordinates, m.
+    real(wp) :: at(2) = 0.0_wp
+    !> Direction, rad: global, or relative to the link's x-axis when `follow`.
+    real(wp) :: angle = 0.0_wp
+    !> Whether the direction turns with the link.
+    logical :: follow = .false.
+  end type assur_force_t
+
+  !> A validated mechanism.
+  type :: assur_mech_t
+    !> Crank pivot A on the frame, global, m.
+    real(wp) :: pivot(2) = 0.0_wp
+    !> Gravity, m/s^2.
+    real(wp) :: g = 0.0_wp
+    !> Unit vector of gravity's direction, global.
+    real(wp) :: down(2) = [0.0_wp, -1.0_wp]
+    !> Frame (index 0), crank (1) and the dyads' links (2 .. 2*nd+1).
+    type(assur_link_t), allocatable :: links(:)
+    !> The dyads in attachment order.
+    type(assur_dyad_t), allocatable :: dyads(:)
+    !> External forces.
+    type(assur_force_t), allocatable :: forces(:)
+    !> Internal index of the link each external moment acts on.
+    integer, allocatable :: moment_link(:)
+  end type assur_mech_t
+
+  !> Results at one input angle (forces global, N; moments N*m).
+  type :: assur_step_t
+    !> Crank angle, rad.
+    real(wp) :: phi1 = 0.0_wp
+    !> Crank speed, rad/s.
+    real(wp) :: omega1 = 0.0_wp
+    !> Crank angular acceleration, rad/s^2.
+    real(wp) :: eps1 = 0.0_wp
+    !> Pair forces (2, 3*nd+1): dyad pairs then the crank pin (on the crank from the frame), N.
+    real(wp), allocatable :: f(:, :)
+    !> Signed normal force of prismatic pairs (0 for revolute), N.
+    real(wp), allocatable :: n(:)
+    !> Reaction moment of prismatic pairs about their reference points (0 for revolute), N*m.
+    real(wp), allocatable :: m(:)
+    !> Balancing moment on the crank, N*m, CCW positive.
+    real(wp) :: m1 = 0.0_wp
+    !> The same from the power balance (virtual work), N*m.
+    real(wp) :: m1_power = 0.0_wp
+    !> Largest relative equilibrium residual of the moving links.
+    real(wp) :: residual = 0.0_wp
+    !> Relative mismatch |M1 - M1_power| / scale.
+    real(wp) :: mismatch = 0.0_wp
+  end type assur_step_t
+
+  !> Smallest link load scale, relative to the step's largest, for the equilibrium residual.
+  real(wp), parameter :: floor_rel = 1.0e-6_wp
+
+  !> Sum of forces and moments (about a link's origin) acting on a link, with the sums of
+  !> their magnitudes for relative residuals.
+  type :: wrench_acc_t
+    real(wp) :: f(2) = 0.0_wp
+    real(wp) :: m = 0.0_wp
+    real(wp) :: sf = 0.0_wp
+    real(wp) :: sm = 0.0_wp
+  end type wrench_acc_t
+
+contains
+
+  !> Internal index of link a (first link) of dyad `d`.
+  elemental integer function link_a(d)
+    !> Dyad number.
+    integer, intent(in) :: d
+    link_a = 2 * d
+  end function link_a
+
+  !> Internal index of link b (second link) of dyad `d`.
+  elemental integer function link_b(d)
+    !> Dyad number.
+    integer, intent(in) :: d
+    link_b = 2 * d + 1
+  end function link_b
+
+  !> Result index of pair `j` (1..3) of dyad `d`.
+  elemental integer function pair_index(d, j)
+    !> Dyad number.
+    integer, intent(in) :: d
+    !> Pair: 1 outer of a, 2 inner, 3 outer of b.
+    integer, intent(in) :: j
+    pair_index = 3 * (d - 1) + j
+  end function pair_index
+
+  !> Result index of the crank's pin when there are `nd` dyads.
+  elemental integer function crank_pin_index(nd)
+    !> Number of dyads.
+    integer, intent(in) :: nd
+    crank_pin_index = 3 * nd + 1
+  end function crank_pin_index
+
+  pure subroutine add_force(acc, o, p, f)
+    type(wrench_acc_t), intent(inout) :: acc
+    real(wp), intent(in) :: o(2), p(2), f(2)
+    real(wp) :: mo
+    mo = cross(p - o, f)
+    acc%f = acc%f + f
+    acc%m = acc%m + mo
+    acc%sf = acc%sf + magnitude(f)
+    acc%sm = acc%sm + abs(mo)
+  end subroutine add_force
+
+  pure subroutine add_couple(acc, c)
+    type(wrench_acc_t), intent(inout) :: acc
+    real(wp), intent(in) :: c
+    acc%m = acc%m + c
+    acc%sm = acc%sm + abs(c)
+  end subroutine add_couple
+
+  !> Relative residual of one link; its scales are at least `floor_rel` times the step's
+  !> largest link scales `sf_max`, `sm_max` (a link whose loads are all roundoff-level,
+  !> e.g. an unloaded massless link, is judged against the mechanism's load level).
+  pure real(wp) function acc_residual(acc, sf_max, sm_max)
+    type(wrench_acc_t), intent(in) :: acc
+    real(wp), intent(in) :: sf_max, sm_max
+    acc_residual = max(ratio(magnitude(acc%f), max(acc%sf, floor_rel * sf_max)), &
+                       ratio(abs(acc%m), max(acc%sm, floor_rel * sm_max)))
+  end function acc_residual
+
+  pure real(wp) function ratio(num, den)
+    real(wp), intent(in) :: num, den
+    if (den > 0.0_wp) then
+      ratio = num / den
+    else
+      ratio = num
+    end if
+  end function ratio
+
+  !> "dyad d (KIND, links i-j)" for messages.
+  pure function dyad_label(mech, d) result(s)
+    type(assur_mech_t), intent(in) :: mech
+    integer, intent(in) :: d
+    character(len=:), allocatable :: s
+    s = "dyad "//int_str(d)//" ("//kind_names(mech%dyads(d)%geom%kind)//", links "// &
+        int_str(mech%links(link_a(d))%id)//"-"//int_str(mech%links(link_b(d))%id)//")"
+  end function dyad_label
+
+  !> Kinematics of every link at crank angle `phi1` (rad): frames 0..2*nd+1 and dyad poses.
+  pure subroutine assur_kinematics(mech, phi1, states, poses, error)
+    !> Mechanism.
+    type(assur_mech_t), intent(in) :: mech
+    !> Crank angle, rad.
+    real(wp), intent(in) :: phi1
+    !> Frames of links 0..2*nd+1.
+    type(link_state_t), intent(out) :: states(0:)
+    !> Pose of each dyad.
+    type(dyad_pose_t), intent(out) :: poses(:)
+    !> Geometry error naming the dyad.
+    type(error_t), allocatable, intent(out) :: error
+    integer :: d
+    states(0) = frame_state()
+    states(1) = crank_state(mech%pivot, phi1)
+    do d = 1, size(mech%dyads)
+      associate (dy => mech%dyads(d))
+        poses(d) = dyad_pose(dy%geom, states(dy%on(1)), dy%at(:, 1), dy%ang(1), &
+                             states(dy%on(2)), dy%at(:, 2), dy%ang(2))
+        if (poses(d)%status /= pose_ok) then
+          if (poses(d)%status == pose_no_assembly) then
+            call fatal_error(error, exit_geometry, dyad_label(mech, d)//": cannot be assembled")
+          else
+            call fatal_error(error, exit_geometry, dyad_label(mech, d)// &
+              ": dead (toggle) position, transfer functions undetermined")
+          end if
+          return
+        end if
+        states(link_a(d)) = poses(d)%link(1)
+        states(link_b(d)) = poses(d)%link(2)
+      end associate
+    end do
+  end subroutine assur_kinematics
+
+  !> Kinetostatic analysis at crank angle `phi1` (rad), crank speed `omega1` (rad/s) and
+  !> acceleration `eps1` (rad/s^2), with the external forces' magnitudes `f_mag` (N) and
+  !> the external moments `m_mag` (N*m, CCW positive) of this step.
+  pure subroutine assur_step(mech, phi1, omega1, eps1, f_mag, m_mag, step, error)
+    !> Mechanism.
+    type(assur_mech_t), intent(in) :: mech
+    !> Crank angle, rad.
+    real(wp), intent(in) :: phi1
+    !> Crank speed, rad/s.
+    real(wp), intent(in) :: omega1
+    !> Crank angular acceleration, rad/s^2.
+    real(wp), intent(in) :: eps1
+    !> Magnitudes of the external forces at this step, N.
+    real(wp), intent(in) :: f_mag(:)
+    !> External moments at this step, N*m.
+    real(wp), intent(in) :: m_mag(:)
+    !> Results.
+    type(assur_step_t), intent(out) :: step
+    !> Geometry error (cannot assemble, dead position, undetermined reactions).
+    type(error_t), allocatable, intent(out) :: error
+    type(link_state_t) :: states(0:2 * size(mech%dyads) + 1)
+    type(dyad_pose_t) :: poses(size(mech%dyads))
+    type(wrench_acc_t) :: known(0:2 * size(mech%dyads) + 1)
+    type(point_state_t) :: ps
+    type(dyad_reactions_t) :: r
+    type(error_t), allocatable :: solve_error
+    real(wp) :: w2, a_s(2), eps, phi_f(2), gw(2), m_phi, dir(2), f_known(2, 2), m_known(2), o(2)
+    real(wp) :: power, power_scale, term, residual
+    integer :: i, d, nd, k, q, jp
+    integer, parameter :: pair_of_link(2) = [1, 3]
+
+    nd = size(mech%dyads)
+    allocate (step%f(2, 3 * nd + 1), step%n(3 * nd + 1), step%m(3 * nd + 1))
+    step%f = 0.0_wp
+    step%n = 0.0_wp
+    step%m = 0.0_wp
+    step%phi1 = phi1
+    step%omega1 = omega1
+    step%eps1 = eps1
+    call assur_kinematics(mech, phi1, states, poses, error)
+    if (allocated(error)) return
+    w2 = omega1**2
+
+    ! applied loads on every moving link, summed about the link's origin; power terms
+    power = 0.0_wp
+    power_scale = 0.0_wp
+    do i = 1, ubound(states, 1)
+      associate (lk => mech%links(i), st => states(i))
+        ps = point_on(st, lk%s)
+        a_s = ps%a * w2 + ps%v * eps1
+        eps = st%eq * w2 + st%u * eps1
+        gw = gravity_force(lk%m, mech%g, mech%down)
+        phi_f = inertia_force(lk%m, a_s)
+        m_phi = inertia_moment(lk%j, eps)
+        call add_force(known(i), st%o, ps%p, gw + phi_f)
+        call add_couple(known(i), m_phi)
+        term = dot_product(gw + phi_f, ps%v)
+        power = power + term + m_phi * st%u
+        power_scale = power_scale + abs(term) + abs(m_phi * st%u)
+      end associate
+    end do
+    do k = 1, size(mech%forces)
+      associate (fo => mech%forces(k))
+        i = fo%link
+        ps = point_on(states(i), fo%at)
+        if (fo%follow) then
+          dir = unit_at(fo%angle + states(i)%th)
+        else
+          dir = unit_at(fo%angle)
+        end if
+        call add_force(known(i), states(i)%o, ps%p, f_mag(k) * dir)
+        term = dot_product(f_mag(k) * dir, ps%v)
+        power = power + term
+        power_scale = power_scale + abs(term)
+      end associate
+    end do
+    do k = 1, size(mech%moment_link)
+      i = mech%moment_link(k)
+      call add_couple(known(i), m_mag(k))
+      power = power + m_mag(k) * states(i)%u
+      power_scale = power_scale + abs(m_mag(k) * states(i)%u)
+    end do
+
+    ! dyads from the last to the first; each passes its outer reactions to the links it hangs on
+    do d = nd, 1, -1
+      o = poses(d)%p(:, 2)
+      do q = 1, 2
+        i = 2 * d + q - 1
+        f_known(:, q) = known(i)%f
+        m_known(q) = known(i)%m + cross(states(i)%o - o, known(i)%f)
+      end do
+      call dyad_reactions(mech%dyads(d)%geom%kind, poses(d)%p, poses(d)%t, o, f_known, m_known, r, solve_error)
+      if (allocated(solve_error)) then
+        call fatal_error(error, exit_geometry, dyad_label(mech, d)//": reactions undetermined, "// &
+                         solve_error%message)
+        return
+      end if
+      do jp = 1, 3
+        step%f(:, pair_index(d, jp)) = r%f(:, jp)
+        step%n(pair_index(d, jp)) = r%n(jp)
+        step%m(pair_index(d, jp)) = r%m(jp)
+      end do
+      ! reactions on the earlier links (action = -reaction, couples too)
+      do q = 1, 2
+        jp = pair_of_link(q)
+        i = mech%dyads(d)%on(q)
+        if (i == 0) cycle
+        call add_force(known(i), states(i)%o, poses(d)%p(:, jp), -r%f(:, jp))
+        call add_couple(known(i), -r%m(jp))
+      end do
+    end do
+
+    ! crank: pin reaction from the frame and balancing moment about the pivot
+    step%f(:, crank_pin_index(nd)) = -known(1)%f
+    step%m1 = -known(1)%m
+    step%m1_power = -power
+    step%mismatch = power_mismatch(step%m1, step%m1_power, power_scale)
+
+    ! equilibrium residual of every moving link with all its loads and reactions
+    call add_force(known(1), states(1)%o, states(1)%o, step%f(:, crank_pin_index(nd)))
+    call add_couple(known(1), step%m1)
+    do d = 1, nd
+      associate (pa => link_a(d), pb => link_b(d))
+        call add_force(known(pa), states(pa)%o, poses(d)%p(:, 1), step%f(:, pair_index(d, 1)))
+        call add_couple(known(pa), step%m(pair_index(d, 1)))
+        call add_force(known(pa), states(pa)%o, poses(d)%p(:, 2), step%f(:, pair_index(d, 2)))
+        call add_couple(known(pa), step%m(pair_index(d, 2)))
+        call add_force(known(pb), states(pb)%o, poses(d)%p(:, 2), -step%f(:, pair_index(d, 2)))
+        call add_couple(known(pb), -step%m(pair_index(d, 2)))
+        call add_force(known(pb), states(pb)%o, poses(d)%p(:, 3), step%f(:, pair_index(d, 3)))
+        call add_couple(known(pb), step%m(pair_index(d, 3)))
+      end associate
+    end do
+    residual = 0.0_wp
+    do i = 1, ubound(known, 1)
+      residual = max(residual, acc_residual(known(i), maxval(known(1:)%sf), maxval(known(1:)%sm)))
+    end do
+    step%residual = residual
+  end subroutine assur_step
+
+end module kinetostat_assur

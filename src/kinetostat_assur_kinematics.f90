@@ -1,0 +1,380 @@
+!> Generic mechanism, layer 1: kinematics of the initial link and of the five kinds of
+!> class-II Assur groups (dyads) by transfer functions (analogues, d/dphi1 and d2/dphi1^2).
+!>
+!> Every moving link carries a body frame: origin `o` and angle `th` in the global frame,
+!> with their analogues. A point given in link coordinates r is o + R(th) r. The frames of
+!> the dyad links are fixed by the kind (outer-inner-outer pairs, links a = first, b = second):
+!>
+!> | kind | pairs | link a frame                    | link b frame                       |
+!> |------|-------|---------------------------------|------------------------------------|
+!> | 1    | RRR   | origin A, x-axis A->B           | origin C, x-axis C->B              |
+!> | 2    | RRP   | origin A, x-axis A->B           | origin B (pin), x-axis along guide |
+!> | 3    | RPR   | origin A, x-axis along the slide| origin C, x-axis along the slide   |
+!> | 4    | PRP   | origin B, x-axis along guide 1  | origin B, x-axis along guide 2     |
+!> | 5    | RPP   | origin A, x-axis along the slot | origin on the guide, x along guide |
+!>
+!> A, C: outer pins; B: inner pin; a guide is a line on an earlier link along which the
+!> slider's reference point moves (any offset of the slider is part of the line's position).
+module kinetostat_assur_kinematics
+  use kinetostat_kinds, only: wp
+  use kinetostat_vec2, only: unit_at, perp, cross, rotate, magnitude
+  implicit none
+  private
+  public :: link_state_t, point_state_t, dyad_geometry_t, dyad_pose_t
+  public :: point_on, crank_state, frame_state, dyad_pose
+  public :: kind_rrr, kind_rrp, kind_rpr, kind_prp, kind_rpp, kind_names, kind_has_mode
+  public :: pose_ok, pose_no_assembly, pose_dead
+
+  !> Dyad kind codes (outer-inner-outer pairs).
+  integer, parameter :: kind_rrr = 1, kind_rrp = 2, kind_rpr = 3, kind_prp = 4, kind_rpp = 5
+  !> Names of the kinds, by code.
+  character(len=3), parameter :: kind_names(5) = ["RRR", "RRP", "RPR", "PRP", "RPP"]
+  !> Whether the kind has two assembly modes (kinds 4 and 5 have one solution).
+  logical, parameter :: kind_has_mode(5) = [.true., .true., .true., .false., .false.]
+  !> Pose status: assembled.
+  integer, parameter :: pose_ok = 0
+  !> Pose status: the dyad cannot be assembled at this input (links too short, parallel lines).
+  integer, parameter :: pose_no_assembly = 1
+  !> Pose status: dead (toggle) position, the transfer functions are undetermined.
+  integer, parameter :: pose_dead = 2
+  !> Relative tolerance for "just reaches" (a negative discriminant within roundoff is 0).
+  real(wp), parameter :: reach_tol = 1.0e-12_wp
+
+  !> State of a link's body frame with its analogues.
+  type :: link_state_t
+    !> Origin, m.
+    real(wp) :: o(2) = 0.0_wp
+    !> Angle of the x-axis, rad.
+    real(wp) :: th = 0.0_wp
+    !> d o / d phi1, m/rad.
+    real(wp) :: vo(2) = 0.0_wp
+    !> u = d th / d phi1.
+    real(wp) :: u = 0.0_wp
+    !> d2 o / d phi1^2, m/rad^2.
+    real(wp) :: ao(2) = 0.0_wp
+    !> eps_q = d2 th / d phi1^2.
+    real(wp) :: eq = 0.0_wp
+  end type link_state_t
+
+  !> A point with its analogues.
+  type :: point_state_t
+    !> Position, m.
+    real(wp) :: p(2) = 0.0_wp
+    !> d p / d phi1, m/rad.
+    real(wp) :: v(2) = 0.0_wp
+    !> d2 p / d phi1^2, m/rad^2.
+    real(wp) :: a(2) = 0.0_wp
+  end type point_state_t
+
+  !> Geometry of one dyad (lengths in m, angles in rad).
+  type :: dyad_geometry_t
+    !> Kind code, 1..5.
+    integer :: kind = kind_rrr
+    !> Assembly mode, +1 or -1 (kinds 1-3).
+    integer :: mode = 1
+    !> RRR, RRP: length A-B of link a, m.
+    real(wp) :: l2 = 0.0_wp
+    !> RRR: length C-B of link b, m.
+    real(wp) :: l3 = 0.0_wp
+    !> RPR: signed distance of pin A from the slide line through C + e*n, m.
+    real(wp) :: e = 0.0_wp
+    !> RPP: a point of the slot in link b's coordinates, m.
+    real(wp) :: slot_at(2) = 0.0_wp
+    !> RPP: slot direction relative to link b's x-axis, rad.
+    real(wp) :: slot_angle = 0.0_wp
+  end type dyad_geometry_t
+
+  !> Result of a dyad's position analysis.
+  type :: dyad_pose_t
+    !> pose_ok, pose_no_assembly or pose_dead.
+    integer :: status = pose_ok
+    !> Frames of links a and b.
+    type(link_state_t) :: link(2)
+    !> Reference points of the pairs: 1 outer of a, 2 inner, 3 outer of b, m.
+    real(wp) :: p(2, 3) = 0.0_wp
+    !> Unit direction of the sliding line of each prismatic pair (zero for revolute pairs).
+    real(wp) :: t(2, 3) = 0.0_wp
+  end type dyad_pose_t
+
+contains
+
+  !> The frame (fixed link): origin 0, angle 0, no motion.
+  pure function frame_state() result(ls)
+    type(link_state_t) :: ls
+    ls = link_state_t()
+  end function frame_state
+
+  !> Crank pivoted at `pivot` (m, global), its x-axis at angle phi1 (rad): u = 1, eps_q = 0.
+  pure function crank_state(pivot, phi1) result(ls)
+    !> Pivot A, m.
+    real(wp), intent(in) :: pivot(2)
+    !> Crank angle, rad.
+    real(wp), intent(in) :: phi1
+    type(link_state_t) :: ls
+    ls%o = pivot
+    ls%th = phi1
+    ls%u = 1.0_wp
+  end function crank_state
+
+  !> A point given in a link's coordinates `r` (m), with its analogues.
+  pure function point_on(ls, r) result(ps)
+    !> Link frame.
+    type(link_state_t), intent(in) :: ls
+    !> Local coordinates, m.
+    real(wp), intent(in) :: r(2)
+    type(point_state_t) :: ps
+    real(wp) :: w(2)
+    w = rotate(r, ls%th)
+    ps%p = ls%o + w
+    ps%v = ls%vo + ls%u * perp(w)
+    ps%a = ls%ao + ls%eq * perp(w) - ls%u**2 * w
+  end function point_on
+
+  !> Solve [c1 c2] x = rhs (2x2); `ok` false when the columns are (nearly) parallel.
+  pure subroutine solve2(c1, c2, rhs, x, ok)
+    real(wp), intent(in) :: c1(2), c2(2), rhs(2)
+    real(wp), intent(out) :: x(2)
+    logical, intent(out) :: ok
+    real(wp) :: det, scale
+    det = cross(c1, c2)
+    scale = magnitude(c1) * magnitude(c2)
+    ok = abs(det) > reach_tol * scale .and. scale > 0.0_wp
+    if (.not. ok) then
+      x = 0.0_wp
+      return
+    end if
+    x(1) = cross(rhs, c2) / det
+    x(2) = cross(c1, rhs) / det
+  end subroutine solve2
+
+  !> Position analysis of a dyad: `q1` and `q3` are the frames of the links its outer pairs
+  !> attach to, `at1`/`at3` the attachment points in those links' coordinates (m) and
+  !> `ang1`/`ang3` the guide directions relative to those links (rad, prismatic outer pairs).
+  pure function dyad_pose(g, q1, at1, ang1, q3, at3, ang3) result(pose)
+    !> Dyad geometry.
+    type(dyad_geometry_t), intent(in) :: g
+    !> Frame of the link pair 1 attaches to.
+    type(link_state_t), intent(in) :: q1
+    !> Attachment point on it (pin, or a point of the guide line), m.
+    real(wp), intent(in) :: at1(2)
+    !> Guide direction on it (prismatic pair 1 only), rad.
+    real(wp), intent(in) :: ang1
+    !> Frame of the link pair 3 attaches to.
+    type(link_state_t), intent(in) :: q3
+    !> Attachment point on it, m.
+    real(wp), intent(in) :: at3(2)
+    !> Guide direction on it (prismatic pair 3 only), rad.
+    real(wp), intent(in) :: ang3
+    type(dyad_pose_t) :: pose
+    type(point_state_t) :: a, c
+    a = point_on(q1, at1)
+    c = point_on(q3, at3)
+    select case (g%kind)
+    case (kind_rrr)
+      call pose_rrr(g, a, c, pose)
+    case (kind_rrp)
+      call pose_rrp(g, a, c, q3%th + ang3, q3%u, q3%eq, pose)
+    case (kind_rpr)
+      call pose_rpr(g, a, c, pose)
+    case (kind_prp)
+      call pose_prp(a, q1%th + ang1, q1%u, q1%eq, c, q3%th + ang3, q3%u, q3%eq, pose)
+    case (kind_rpp)
+      call pose_rpp(g, a, c, q3%th + ang3, q3%u, q3%eq, pose)
+    case default
+      pose%status = pose_no_assembly
+    end select
+  end function dyad_pose
+
+  !> RRR: B = A + l2 e(th_a) = C + l3 e(th_b); mode +1 puts B left of A->C.
+  pure subroutine pose_rrr(g, a, c, pose)
+    type(dyad_geometry_t), intent(in) :: g
+    type(point_state_t), intent(in) :: a, c
+    type(dyad_pose_t), intent(inout) :: pose
+    real(wp) :: d(2), l, cos_al, alpha, tha, thb, b(2), ea(2), eb(2), x(2), rhs(2), ua, ub
+    logical :: ok
+    d = c%p - a%p
+    l = magnitude(d)
+    if (.not. l > 0.0_wp) then
+      pose%status = pose_no_assembly
+      return
+    end if
+    cos_al = (g%l2**2 + l**2 - g%l3**2) / (2.0_wp * g%l2 * l)
+    if (abs(cos_al) > 1.0_wp + reach_tol) then
+      pose%status = pose_no_assembly
+      return
+    end if
+    alpha = acos(max(-1.0_wp, min(1.0_wp, cos_al)))
+    tha = atan2(d(2), d(1)) + real(g%mode, wp) * alpha
+    ea = unit_at(tha)
+    b = a%p + g%l2 * ea
+    thb = atan2(b(2) - c%p(2), b(1) - c%p(1))
+    eb = unit_at(thb)
+    call solve2(g%l2 * perp(ea), -g%l3 * perp(eb), c%v - a%v, x, ok)
+    if (.not. ok) then
+      pose%status = pose_dead
+      return
+    end if
+    ua = x(1)
+    ub = x(2)
+    rhs = c%a - a%a + g%l2 * ua**2 * ea - g%l3 * ub**2 * eb
+    call solve2(g%l2 * perp(ea), -g%l3 * perp(eb), rhs, x, ok)
+    pose%link(1) = link_state_t(o=a%p, th=tha, vo=a%v, u=ua, ao=a%a, eq=x(1))
+    pose%link(2) = link_state_t(o=c%p, th=thb, vo=c%v, u=ub, ao=c%a, eq=x(2))
+    pose%p(:, 1) = a%p
+    pose%p(:, 2) = b
+    pose%p(:, 3) = c%p
+  end subroutine pose_rrr
+
+  !> RRP: B = A + l2 e(th_a) = G + s t (guide through G at angle gam); mode +1 takes the
+  !> larger s (B further along +t).
+  pure subroutine pose_rrp(g, a, gp, gam, gam_u, gam_eq, pose)
+    type(dyad_geometry_t), intent(in) :: g
+    type(point_state_t), intent(in) :: a, gp
+    real(wp), intent(in) :: gam, gam_u, gam_eq
+    type(dyad_pose_t), intent(inout) :: pose
+    real(wp) :: t(2), n(2), d(2), dt, disc, s, b(2), tha, ea(2), x(2), rhs(2), ua, ds
+    real(wp) :: vb(2), ab(2)
+    logical :: ok
+    t = unit_at(gam)
+    n = perp(t)
+    d = gp%p - a%p
+    dt = dot_product(d, t)
+    disc = dt**2 - dot_product(d, d) + g%l2**2
+    if (disc < -reach_tol * g%l2**2) then
+      pose%status = pose_no_assembly
+      return
+    end if
+    s = -dt + real(g%mode, wp) * sqrt(max(disc, 0.0_wp))
+    b = gp%p + s * t
+    tha = atan2(b(2) - a%p(2), b(1) - a%p(1))
+    ea = unit_at(tha)
+    call solve2(g%l2 * perp(ea), -t, gp%v + s * gam_u * n - a%v, x, ok)
+    if (.not. ok) then
+      pose%status = pose_dead
+      return
+    end if
+    ua = x(1)
+    ds = x(2)
+    rhs = gp%a + (2.0_wp * ds * gam_u + s * gam_eq) * n - s * gam_u**2 * t - a%a + g%l2 * ua**2 * ea
+    call solve2(g%l2 * perp(ea), -t, rhs, x, ok)
+    vb = a%v + g%l2 * ua * perp(ea)
+    ab = a%a + g%l2 * x(1) * perp(ea) - g%l2 * ua**2 * ea
+    pose%link(1) = link_state_t(o=a%p, th=tha, vo=a%v, u=ua, ao=a%a, eq=x(1))
+    pose%link(2) = link_state_t(o=b, th=gam, vo=vb, u=gam_u, ao=ab, eq=gam_eq)
+    pose%p(:, 1) = a%p
+    pose%p(:, 2) = b
+    pose%p(:, 3) = b
+    pose%t(:, 3) = t
+  end subroutine pose_rrp
+
+  !> RPR: A - C = s t + e n with t = e(th) the common slide direction; mode +1 takes s > 0.
+  pure subroutine pose_rpr(g, a, c, pose)
+    type(dyad_geometry_t), intent(in) :: g
+    type(point_state_t), intent(in) :: a, c
+    type(dyad_pose_t), intent(inout) :: pose
+    real(wp) :: d(2), l2sq, disc, s, th, t(2), n(2), x(2), rhs(2), u, ds, col1(2)
+    logical :: ok
+    d = a%p - c%p
+    l2sq = dot_product(d, d)
+    disc = l2sq - g%e**2
+    if (disc < -reach_tol * max(l2sq, g%e**2) .or. .not. l2sq > 0.0_wp) then
+      pose%status = pose_no_assembly
+      return
+    end if
+    s = real(g%mode, wp) * sqrt(max(disc, 0.0_wp))
+    th = atan2(d(2), d(1)) - atan2(g%e, s)
+    t = unit_at(th)
+    n = perp(t)
+    col1 = s * n - g%e * t
+    call solve2(col1, t, a%v - c%v, x, ok)
+    if (.not. ok) then
+      pose%status = pose_dead
+      return
+    end if
+    u = x(1)
+    ds = x(2)
+    rhs = a%a - c%a - 2.0_wp * ds * u * n + u**2 * (s * t + g%e * n)
+    call solve2(col1, t, rhs, x, ok)
+    pose%link(1) = link_state_t(o=a%p, th=th, vo=a%v, u=u, ao=a%a, eq=x(1))
+    pose%link(2) = link_state_t(o=c%p, th=th, vo=c%v, u=u, ao=c%a, eq=x(1))
+    pose%p(:, 1) = a%p
+    pose%p(:, 2) = a%p
+    pose%p(:, 3) = c%p
+    pose%t(:, 2) = t
+  end subroutine pose_rpr
+
+  !> PRP: B = G1 + s1 t1 = G2 + s2 t2 (intersection of the two guides).
+  pure subroutine pose_prp(g1, gam1, u1, eq1, g2, gam2, u2, eq2, pose)
+    type(point_state_t), intent(in) :: g1, g2
+    real(wp), intent(in) :: gam1, u1, eq1, gam2, u2, eq2
+    type(dyad_pose_t), intent(inout) :: pose
+    real(wp) :: t1(2), t2(2), n1(2), n2(2), x(2), s1, s2, ds1, ds2, rhs(2), b(2), vb(2), ab(2)
+    logical :: ok
+    t1 = unit_at(gam1)
+    t2 = unit_at(gam2)
+    n1 = perp(t1)
+    n2 = perp(t2)
+    call solve2(t1, -t2, g2%p - g1%p, x, ok)
+    if (.not. ok) then
+      pose%status = pose_no_assembly
+      return
+    end if
+    s1 = x(1)
+    s2 = x(2)
+    b = g1%p + s1 * t1
+    call solve2(t1, -t2, g2%v - g1%v + s2 * u2 * n2 - s1 * u1 * n1, x, ok)
+    ds1 = x(1)
+    ds2 = x(2)
+    rhs = g2%a - g1%a + (2.0_wp * ds2 * u2 + s2 * eq2) * n2 - s2 * u2**2 * t2 &
+          - (2.0_wp * ds1 * u1 + s1 * eq1) * n1 + s1 * u1**2 * t1
+    call solve2(t1, -t2, rhs, x, ok)
+    vb = g1%v + ds1 * t1 + s1 * u1 * n1
+    ab = g1%a + x(1) * t1 + (2.0_wp * ds1 * u1 + s1 * eq1) * n1 - s1 * u1**2 * t1
+    pose%link(1) = link_state_t(o=b, th=gam1, vo=vb, u=u1, ao=ab, eq=eq1)
+    pose%link(2) = link_state_t(o=b, th=gam2, vo=vb, u=u2, ao=ab, eq=eq2)
+    pose%p(:, 1) = b
+    pose%p(:, 2) = b
+    pose%p(:, 3) = b
+    pose%t(:, 1) = t1
+    pose%t(:, 3) = t2
+  end subroutine pose_prp
+
+  !> RPP: link b slides along the guide (G, t), its origin O_b = G + s_b t; the slot of b
+  !> (through O_b + R(gam) slot_at, direction gam + slot_angle) carries pin A at s_a.
+  pure subroutine pose_rpp(g, a, gp, gam, gam_u, gam_eq, pose)
+    type(dyad_geometry_t), intent(in) :: g
+    type(point_state_t), intent(in) :: a, gp
+    real(wp), intent(in) :: gam, gam_u, gam_eq
+    type(dyad_pose_t), intent(inout) :: pose
+    real(wp) :: t(2), n(2), ts(2), ns(2), w(2), x(2), sb, sa, dsb, dsa, rhs(2), ob(2), vb(2), ab(2)
+    logical :: ok
+    t = unit_at(gam)
+    n = perp(t)
+    ts = unit_at(gam + g%slot_angle)
+    ns = perp(ts)
+    w = a%p - gp%p
+    call solve2(t, ts, w - rotate(g%slot_at, gam), x, ok)
+    if (.not. ok) then
+      pose%status = pose_no_assembly
+      return
+    end if
+    sb = x(1)
+    sa = x(2)
+    call solve2(t, ts, a%v - gp%v - gam_u * perp(w), x, ok)
+    dsb = x(1)
+    dsa = x(2)
+    rhs = a%a - gp%a - 2.0_wp * gam_u * (dsb * n + dsa * ns) - gam_eq * perp(w) + gam_u**2 * w
+    call solve2(t, ts, rhs, x, ok)
+    ob = gp%p + sb * t
+    vb = gp%v + dsb * t + sb * gam_u * n
+    ab = gp%a + x(1) * t + (2.0_wp * dsb * gam_u + sb * gam_eq) * n - sb * gam_u**2 * t
+    pose%link(1) = link_state_t(o=a%p, th=gam + g%slot_angle, vo=a%v, u=gam_u, ao=a%a, eq=gam_eq)
+    pose%link(2) = link_state_t(o=ob, th=gam, vo=vb, u=gam_u, ao=ab, eq=gam_eq)
+    pose%p(:, 1) = a%p
+    pose%p(:, 2) = a%p
+    pose%p(:, 3) = ob
+    pose%t(:, 2) = ts
+    pose%t(:, 3) = t
+  end subroutine pose_rpp
+
+end module kinetostat_assur_kinematics
