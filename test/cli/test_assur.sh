@@ -42,6 +42,21 @@ run_ks "$(deck_with pr_m3 data/assur_pr3207.nml 's/dyad(1)%m3 = 22/dyad(1)%m3 = 
 to_pr3207_columns "$out" >"$cli_tmp/assur_as_pr3207_m3.csv"
 expect_differ assur-pr3207-comparison-can-fail "$cli_tmp/dedicated_pr3207.csv" "$cli_tmp/assur_as_pr3207_m3.csv"
 
+# --- cross-mechanism: the generic six-bar deck reproduces the dedicated T.FTN program at every
+# step (same pair names and angle frames as sixbar.md; the signed slider force is column F56N).
+to_sixbar_columns() {
+  assur_cols "$1" phi1 F21 F21G F32 F32G F43 F43G F45 F45G F36 F36G F16 F16G F56N M1 | sed '1s/F56N/F56/'
+}
+to_sixbar_columns "$cli_tmp/assur_sixbar.csv" >"$cli_tmp/assur_as_sixbar.csv"
+run_ks data/sixbar.nml --format csv; cp "$out" "$cli_tmp/dedicated_sixbar.csv"
+expect_same assur-sixbar-vs-dedicated-program "$cli_tmp/dedicated_sixbar.csv" "$cli_tmp/assur_as_sixbar.csv"
+expect_same assur-sixbar-vs-dedicated-golden data/expected/sixbar.csv "$cli_tmp/assur_as_sixbar.csv"
+if [ "$(wc -l <"$cli_tmp/assur_as_sixbar.csv")" -eq 14 ]; then pass; else fail assur-sixbar-rows "expected 13 steps"; fi
+# and the comparison can fail: a generic deck with a heavier slider must differ
+run_ks "$(deck_with sb_m5 data/assur_sixbar.nml 's/dyad(2)%m3 = 6,/dyad(2)%m3 = 6.001,/')" --format csv
+to_sixbar_columns "$out" >"$cli_tmp/assur_as_sixbar_m5.csv"
+expect_differ assur-sixbar-comparison-can-fail "$cli_tmp/dedicated_sixbar.csv" "$cli_tmp/assur_as_sixbar_m5.csv"
+
 # --- template: a valid deck (the slider-crank) giving the golden results
 run_ks template assur; cp "$out" "$cli_tmp/assur_template.nml"
 [ "$rc" -eq 0 ] && grep -q '^&assur' "$cli_tmp/assur_template.nml" && pass || fail assur-template "rc=$rc"
