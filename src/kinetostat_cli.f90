@@ -84,6 +84,9 @@ contains
         call run_deck(args%deck, args%output_format, output_unit, error, summary)
       end if
     end if
+    if (.not. allocated(error) .and. .not. args%quiet .and. allocated(summary%warning)) then
+      write (error_unit, '(a)') "kinetostat: warning: "//args%deck//": "//summary%warning
+    end if
     if (.not. allocated(error) .and. .not. args%quiet .and. summary%steps > 0) then
       if (.not. selfcheck_ok(summary%max_residual, summary%max_mismatch)) then
         write (error_unit, selfcheck_warning_fmt) "kinetostat: warning: "//args%deck// &

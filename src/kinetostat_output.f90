@@ -52,6 +52,8 @@ module kinetostat_output
     real(wp) :: max_mismatch = 0.0_wp
     !> Name of the driving quantity ("M1", "F2", ...).
     character(len=:), allocatable :: driver
+    !> A remark for the user on stderr (e.g. a singular position between two steps), if any.
+    character(len=:), allocatable :: warning
   end type run_summary_t
 
 contains

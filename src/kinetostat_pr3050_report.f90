@@ -56,6 +56,28 @@ contains
     end do
   end subroutine pr3050_solve
 
+  !> A warning when the rocker passes the dead position (C, B, A collinear: phi3 = k*180 deg,
+  !> where s' = 0 and F2 is unbounded) strictly between two computed steps; every step is
+  !> valid, but the table does not show the singularity in between.
+  pure subroutine dead_position_between_steps(deck, warning)
+    !> Validated deck.
+    type(pr3050_deck_t), intent(in) :: deck
+    !> The warning, unallocated when the range stays clear.
+    character(len=:), allocatable, intent(out) :: warning
+    integer :: k, half_turns
+    do k = 2, deck%n
+      half_turns = floor(deck%phi3_deg(k) / 180.0_wp)
+      if (floor(deck%phi3_deg(k - 1) / 180.0_wp) /= half_turns .and. &
+          modulo(deck%phi3_deg(k), 180.0_wp) /= 0.0_wp) then
+        warning = "between step "//int_str(k - 1)//" (phi3 = "//real_str(deck%phi3_deg(k - 1))// &
+          " deg) and step "//int_str(k)//" (phi3 = "//real_str(deck%phi3_deg(k))// &
+          " deg) the rocker passes the dead position phi3 = "//real_str(180.0_wp * half_turns)// &
+          " deg (C, B, A collinear: F2 is unbounded there)"
+        return
+      end if
+    end do
+  end subroutine dead_position_between_steps
+
   !> Read the deck, compute every step, then write the table or CSV to `unit`.
   !> Nothing is written unless the whole run succeeded.
   subroutine run_pr3050(path, output_format, unit, error, summary)
@@ -79,8 +101,10 @@ contains
       error%message = path//": &pr3050: "//error%message
       return
     end if
-    if (present(summary)) summary = run_summary_t(size(steps), maxval(steps%residual), &
-                                                  maxval(steps%mismatch), "F2")
+    if (present(summary)) then
+      summary = run_summary_t(size(steps), maxval(steps%residual), maxval(steps%mismatch), "F2")
+      call dead_position_between_steps(deck, summary%warning)
+    end if
     if (output_format == format_csv) then
       call write_pr3050_csv(unit, deck, steps)
     else

@@ -11,7 +11,7 @@ module kinetostat_text
 contains
 
   !> A real as trimmed text (for messages).
-  function real_str(x) result(s)
+  pure function real_str(x) result(s)
     !> Value.
     real(wp), intent(in) :: x
     character(len=:), allocatable :: s

@@ -110,6 +110,14 @@ run_ks "$(deck_with p3050_around "$ref3050" 's/phi3_start = 43.72, phi3_end = 88
      s/^  omega3 = .*/  omega3 = 2*0.5/; s/^  eps3 = .*/  eps3 = 2*0/')" --format csv
 [ "$rc" -eq 0 ] && pass || fail pr3050-around-dead "rc=$rc: $(cat "$err")"
 expect_no_nan pr3050-around-dead-no-nan "$out"
+# ... but the user is told that the dead position lies between steps 1 and 2 (--quiet silences it)
+if grep -Eq '^kinetostat: warning: .*between step 1 \(phi3 = 170(\.0*)? deg\) and step 2 \(phi3 = 190(\.0*)? deg\).*dead position phi3 = 180(\.0*)? deg' "$err" \
+   && [ "$(wc -l <"$err")" -eq 1 ]; then pass; else fail pr3050-around-dead-warning "stderr: $(cat "$err")"; fi
+run_ks "$cli_tmp/p3050_around.nml" --format csv --quiet
+if [ "$rc" -eq 0 ] && [ ! -s "$err" ]; then pass; else fail pr3050-around-dead-quiet "rc=$rc stderr: $(cat "$err")"; fi
+# the reference range (43.72..88.72 deg) stays clear: no warning
+run_ks "$ref3050"
+if [ "$rc" -eq 0 ] && [ ! -s "$err" ]; then pass; else fail pr3050-reference-no-warning "stderr: $(cat "$err")"; fi
 
 # --- constant speed: omega3 = 10*0.5, eps3 = 10*0 (repeat counts) reproduces the cruise steps
 # 4..7 of the reference law (omega3 = 0.5, eps3 = 0 there) exactly
