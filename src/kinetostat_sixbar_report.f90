@@ -4,7 +4,7 @@ module kinetostat_sixbar_report
   use kinetostat_kinds, only: wp, deg_to_rad, rad_to_deg
   use kinetostat_error, only: error_t, fatal_error, exit_geometry, exit_input
   use kinetostat_text, only: real_str, int_str
-  use kinetostat_output, only: format_csv, run_summary_t, noise_rel, noise_floor, force_columns, angles_pm180, &
+  use kinetostat_output, only: format_csv, run_summary_t, noise_floor, force_columns, angles_pm180, &
     echo_heading, echo_real, echo_int, echo_logical, echo_array, &
     write_csv_header, write_csv_row, write_selfcheck_footer
   use kinetostat_sixbar, only: sixbar_step_t, sixbar_step, sixbar_ok, sixbar_open1, sixbar_dead1, &
