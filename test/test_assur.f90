@@ -12,7 +12,7 @@ module test_assur
   use kinetostat_assur, only: assur_mech_t, assur_link_t, assur_dyad_t, assur_step_t, assur_force_t, &
     assur_step, assur_kinematics, pair_index, crank_pin_index
   use kinetostat_assur_deck, only: assur_deck_t, read_assur_deck, assur_window
-  use kinetostat_assur_report, only: assur_solve
+  use kinetostat_assur_layout, only: assur_solve
   use test_harness, only: test_counts_t, check_close, check_true
   implicit none
   private

@@ -6,7 +6,7 @@ module test_cam
   use kinetostat_error, only: error_t
   use kinetostat_cam, only: cam_params_t, cam_step_t, cam_step, cam_critical_angle
   use kinetostat_cam_deck, only: cam_deck_t, read_cam_deck
-  use kinetostat_cam_report, only: cam_solve
+  use kinetostat_cam_layout, only: cam_solve
   use test_harness, only: test_counts_t, check_close, check_true
   implicit none
   private

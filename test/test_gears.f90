@@ -7,7 +7,7 @@ module test_gears
   use kinetostat_gears, only: gear_stage_t, gear_result_t, gear_pair, gear_series, gear_planetary_step, &
     gear_spur, gear_helical, gear_bevel, gear_planetary
   use kinetostat_gears_deck, only: gears_deck_t, read_gears_deck
-  use kinetostat_gears_report, only: gears_solve
+  use kinetostat_gears_layout, only: gears_solve
   use test_harness, only: test_counts_t, check_close, check_true
   implicit none
   private

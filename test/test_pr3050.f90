@@ -10,7 +10,7 @@ module test_pr3050
   use kinetostat_pr3050, only: pr3050_params_t, pr3050_position_t, pr3050_step_t, &
     pr3050_position, pr3050_check_position, pr3050_step
   use kinetostat_pr3050_deck, only: pr3050_deck_t, read_pr3050_deck, pr3050_step_count
-  use kinetostat_pr3050_report, only: pr3050_solve
+  use kinetostat_pr3050_layout, only: pr3050_solve
   use test_harness, only: test_counts_t, check_close, check_true
   implicit none
   private

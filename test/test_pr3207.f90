@@ -6,7 +6,7 @@ module test_pr3207
   use kinetostat_pr3207, only: pr3207_params_t, pr3207_position_t, pr3207_step_t, &
     pr3207_position, pr3207_step
   use kinetostat_pr3207_deck, only: pr3207_deck_t, read_pr3207_deck, pr3207_cut_force
-  use kinetostat_pr3207_report, only: pr3207_solve
+  use kinetostat_pr3207_layout, only: pr3207_solve
   use test_harness, only: test_counts_t, check_close, check_true
   implicit none
   private

@@ -10,7 +10,7 @@ module test_sixbar
     sixbar_step, sixbar_extreme_phi1, sixbar_frame2_to_frame1, sixbar_frame1_to_frame2, sixbar_down1, &
     sixbar_down2, sixbar_ok, sixbar_open1, sixbar_open2
   use kinetostat_sixbar_deck, only: sixbar_deck_t, read_sixbar_deck
-  use kinetostat_sixbar_report, only: sixbar_solve
+  use kinetostat_sixbar_layout, only: sixbar_solve
   use test_harness, only: test_counts_t, check_close, check_true
   implicit none
   private

@@ -8,7 +8,8 @@ module kinetostat_assur_deck
   use kinetostat_kinds, only: wp, g_default, deg_to_rad
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str
-  use kinetostat_deck, only: deck_context_t, unset_real, unset_int, max_deck_array, &
+  use kinetostat_text_buffer, only: text_buffer_t
+  use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, unset_int, max_deck_array, &
     open_deck, namelist_failure, deck_error, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn
   use kinetostat_vec2, only: unit_at
@@ -170,14 +171,11 @@ module kinetostat_assur_deck
 
 contains
 
-  !> Print the commented template deck.
-  subroutine write_assur_template(unit)
-    !> Output unit.
-    integer, intent(in) :: unit
-    integer :: i
-    do i = 1, size(template_lines)
-      write (unit, '(a)') trim(template_lines(i))
-    end do
+  !> The commented template deck.
+  pure subroutine write_assur_template(out)
+    !> Where the lines go.
+    type(text_buffer_t), intent(inout) :: out
+    call write_template_lines(out, template_lines)
   end subroutine write_assur_template
 
   !> Windowed value at crank angle `phi_deg`: `value` for phi_on <= phi <= phi_off

@@ -4,6 +4,7 @@ module kinetostat_cam_deck
   use kinetostat_kinds, only: wp, deg_to_rad
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str, lower
+  use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, unset_int, max_deck_array, &
     open_deck, namelist_failure, deck_error, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn
@@ -73,11 +74,11 @@ module kinetostat_cam_deck
 
 contains
 
-  !> Print the commented template deck.
-  subroutine write_cam_template(unit)
-    !> Output unit.
-    integer, intent(in) :: unit
-    call write_template_lines(unit, template_lines)
+  !> The commented template deck.
+  pure subroutine write_cam_template(out)
+    !> Where the lines go.
+    type(text_buffer_t), intent(inout) :: out
+    call write_template_lines(out, template_lines)
   end subroutine write_cam_template
 
   !> Read and validate a `&cam` deck.

@@ -1,56 +1,54 @@
-!> Command line: argument parsing, atomic output files, and the only place where an
-!> error becomes a `kinetostat: error: ...` line on stderr and an exit code.
+!> Command line: argument parsing, the run of one deck through the pipeline, checked output
+!> (stdout or an atomically replaced file), and the only place where an error becomes a
+!> `kinetostat: error: ...` line on stderr and an exit code.
 module kinetostat_cli
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
-  use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char
   use kinetostat_kinds, only: version_string
   use kinetostat_error, only: error_t, fatal_error, exit_success, exit_usage, exit_input
-  use kinetostat_output, only: format_table, format_from_name, run_summary_t, selfcheck_ok
-  use kinetostat_mechanisms, only: run_deck, write_template, known_kinds
+  use kinetostat_text, only: int_str
+  use kinetostat_posix, only: path_kind, path_special, rename_file, process_id
+  use kinetostat_deck, only: read_group_name
+  use kinetostat_step_table, only: step_table_t
+  use kinetostat_text_buffer, only: text_buffer_t
+  use kinetostat_mechanism, only: mechanism_t
+  use kinetostat_labels, only: lang_from_name
+  use kinetostat_run, only: run_options_t, run_mechanism, format_from_name, format_names
+  use kinetostat_table_writer, only: selfcheck_verdict
+  use kinetostat_registry, only: create_mechanism, known_kinds
   implicit none
   private
   public :: run_cli
 
   !> One-line usage, printed with usage errors.
-  character(*), parameter :: usage_line = &
-    "usage: kinetostat DECK [-o FILE] [--format table|csv] [--quiet] | kinetostat template KIND | --help | --version"
+  character(*), parameter :: usage_line = "usage: kinetostat DECK [-o FILE] [--format table|csv|json] " // &
+    "[--lang en|ru] [--quiet] | kinetostat template KIND | --help | --version"
 
   !> Warning line when a run's self-check exceeds its tolerance.
   character(*), parameter :: selfcheck_warning_fmt = '(a,es9.2,a,es9.2)'
 
-  !> Help text.
+  !> Help text (the kinds are appended from the registry).
   character(*), parameter :: help_lines(*) = [character(len=88) :: &
     "kinetostat - kinetostatic force analysis of planar mechanisms", &
     "", &
-    "  kinetostat DECK [-o FILE] [--format table|csv] [--quiet]", &
+    "  kinetostat DECK [-o FILE] [--format table|csv|json] [--lang en|ru] [--quiet]", &
     "  kinetostat template KIND      print a commented example deck", &
     "  kinetostat --help | --version", &
     "", &
     "DECK is a Fortran namelist file; its first group names the mechanism.", &
     "-o FILE     write to FILE (atomically: nothing is left behind on error)", &
-    "--format    table (default, the legacy printout) or csv (full precision)", &
-    "--quiet     no self-check warnings on stderr (errors are still reported)", &
+    "--format    table (default, the legacy printout), csv (full precision) or json", &
+    "--lang      language of the table's labels: en (default) or ru (the 1991 printouts)", &
+    "--quiet     no warnings on stderr (errors are still reported)", &
     "", &
-    "Exit codes: 0 ok, 1 usage, 2 input error, 3 geometry error (step named)."]
-
-  interface
-    function c_rename(old, new) bind(c, name="rename") result(status)
-      import :: c_int, c_char
-      character(kind=c_char), intent(in) :: old(*), new(*)
-      integer(c_int) :: status
-    end function c_rename
-    function c_getpid() bind(c, name="getpid") result(pid)
-      import :: c_int
-      integer(c_int) :: pid
-    end function c_getpid
-  end interface
+    "Exit codes: 0 ok, 1 usage, 2 input or output error, 3 geometry error or a result", &
+    "that is not finite (the step is named)."]
 
   !> Parsed command line.
   type :: cli_args_t
     character(len=:), allocatable :: deck
     character(len=:), allocatable :: out_file
     character(len=:), allocatable :: template_kind
-    integer :: output_format = format_table
+    type(run_options_t) :: options
     logical :: quiet = .false.
     logical :: help = .false.
     logical :: version = .false.
@@ -64,36 +62,37 @@ contains
     integer, intent(out) :: exit_code
     type(cli_args_t) :: args
     type(error_t), allocatable :: error
-    type(run_summary_t) :: summary
+    type(step_table_t) :: table
+    type(text_buffer_t) :: out
     integer :: i
+    logical :: ran
 
+    ran = .false.
     call parse_args(args, error)
     if (.not. allocated(error)) then
       if (args%help) then
         do i = 1, size(help_lines)
-          write (output_unit, '(a)') trim(help_lines(i))
+          call out%put(trim(help_lines(i)))
         end do
-        write (output_unit, '(a)') "Kinds: "//known_kinds
+        call out%put("Kinds: "//known_kinds())
+        call out%put("Formats: "//format_names)
       else if (args%version) then
-        write (output_unit, '(a)') version_string
+        call out%put(version_string)
       else if (allocated(args%template_kind)) then
-        call write_template(args%template_kind, output_unit, error)
-      else if (allocated(args%out_file)) then
-        call run_to_file(args, error, summary)
+        call write_template(args%template_kind, out, error)
       else
-        call run_deck(args%deck, args%output_format, output_unit, error, summary)
+        call run_deck(args%deck, args%options, table, out, error)
+        ran = .not. allocated(error)
       end if
     end if
-    if (.not. allocated(error) .and. .not. args%quiet .and. allocated(summary%warning)) then
-      write (error_unit, '(a)') "kinetostat: warning: "//args%deck//": "//summary%warning
-    end if
-    if (.not. allocated(error) .and. .not. args%quiet .and. summary%steps > 0) then
-      if (.not. selfcheck_ok(summary%max_residual, summary%max_mismatch)) then
-        write (error_unit, selfcheck_warning_fmt) "kinetostat: warning: "//args%deck// &
-          ": self-check failed (a bug; please report): max equilibrium residual", summary%max_residual, &
-          ", max "//summary%driver//" mismatch vs power balance", summary%max_mismatch
+    if (.not. allocated(error)) then
+      if (allocated(args%out_file)) then
+        call write_file(args%out_file, out, error)
+      else
+        call write_stdout(out, error)
       end if
     end if
+    if (ran .and. .not. allocated(error) .and. .not. args%quiet) call warn(args%deck, table)
 
     if (allocated(error)) then
       write (error_unit, '(a)') "kinetostat: error: "//error%message
@@ -102,15 +101,60 @@ contains
     else
       exit_code = exit_success
     end if
-    flush (output_unit)
     flush (error_unit)
   end subroutine run_cli
+
+  !> Read the deck's first group, create that mechanism, run it into `out`.
+  subroutine run_deck(path, options, table, out, error)
+    character(*), intent(in) :: path
+    type(run_options_t), intent(in) :: options
+    type(step_table_t), intent(out) :: table
+    type(text_buffer_t), intent(inout) :: out
+    type(error_t), allocatable, intent(out) :: error
+    character(len=:), allocatable :: group
+    class(mechanism_t), allocatable :: mech
+    call read_group_name(path, group, error)
+    if (allocated(error)) return
+    call create_mechanism(group, mech)
+    if (.not. allocated(mech)) then
+      call fatal_error(error, exit_input, path//": &"//group//": unknown mechanism (known: "//known_kinds()//")")
+      return
+    end if
+    call run_mechanism(mech, group, path, options, table, out, error)
+  end subroutine run_deck
+
+  !> The commented template deck of a kind.
+  subroutine write_template(kind, out, error)
+    character(*), intent(in) :: kind
+    type(text_buffer_t), intent(inout) :: out
+    type(error_t), allocatable, intent(out) :: error
+    class(mechanism_t), allocatable :: mech
+    call create_mechanism(kind, mech)
+    if (.not. allocated(mech)) then
+      call fatal_error(error, exit_usage, "template: unknown kind '"//kind//"' (known: "//known_kinds()//")")
+      return
+    end if
+    call mech%write_template(out)
+  end subroutine write_template
+
+  !> Warnings of a successful run on stderr: the mechanism's remark, a failed self-check.
+  subroutine warn(deck, table)
+    character(*), intent(in) :: deck
+    type(step_table_t), intent(in) :: table
+    if (allocated(table%warning)) write (error_unit, '(a)') "kinetostat: warning: "//deck//": "//table%warning
+    if (.not. table%has_selfcheck .or. table%row_count() == 0) return
+    if (selfcheck_verdict(table%max_residual) /= "OK" .or. selfcheck_verdict(table%max_mismatch) /= "OK") then
+      write (error_unit, selfcheck_warning_fmt) "kinetostat: warning: "//deck// &
+        ": self-check failed (a bug; please report): max equilibrium residual", table%max_residual, &
+        ", max "//table%driver//" mismatch", table%max_mismatch
+    end if
+  end subroutine warn
 
   subroutine parse_args(args, error)
     type(cli_args_t), intent(out) :: args
     type(error_t), allocatable, intent(out) :: error
-    integer :: i, n
-    character(len=:), allocatable :: arg
+    integer :: i, n, eq
+    character(len=:), allocatable :: arg, name, value
 
     n = command_argument_count()
     if (n == 0) then
@@ -121,7 +165,23 @@ contains
     do while (i < n)
       i = i + 1
       arg = argument(i)
-      select case (arg)
+      ! --name=value is the same as --name value
+      eq = index(arg, "=")
+      if (len(arg) > 2 .and. arg(1:min(2, len(arg))) == "--" .and. eq > 0) then
+        name = arg(1:eq - 1)
+        value = arg(eq + 1:)
+      else
+        name = arg
+        if (any(name == [character(len=8) :: "-o", "--output", "--format", "--lang"])) then
+          if (i == n) then
+            call fatal_error(error, exit_usage, name//" needs a value")
+            return
+          end if
+          i = i + 1
+          value = argument(i)
+        end if
+      end if
+      select case (name)
       case ("-h", "--help")
         args%help = .true.
       case ("-V", "--version")
@@ -129,26 +189,22 @@ contains
       case ("--quiet", "-q")
         args%quiet = .true.
       case ("-o", "--output")
-        if (i == n) then
-          call fatal_error(error, exit_usage, arg//" needs a file name")
-          return
-        end if
-        i = i + 1
-        args%out_file = argument(i)
+        args%out_file = value
       case ("--format")
-        if (i == n) then
-          call fatal_error(error, exit_usage, "--format needs table or csv")
+        args%options%format = format_from_name(value)
+        if (args%options%format == 0) then
+          call fatal_error(error, exit_usage, "--format must be one of "//format_names//" (got '"//value//"')")
           return
         end if
-        i = i + 1
-        args%output_format = format_from_name(argument(i))
-        if (args%output_format == 0) then
-          call fatal_error(error, exit_usage, "--format must be table or csv (got '"//argument(i)//"')")
+      case ("--lang")
+        args%options%lang = lang_from_name(value)
+        if (args%options%lang == 0) then
+          call fatal_error(error, exit_usage, "--lang must be en or ru (got '"//value//"')")
           return
         end if
       case ("template")
         if (allocated(args%deck) .or. i == n) then
-          call fatal_error(error, exit_usage, "template needs exactly one KIND (known: "//known_kinds//")")
+          call fatal_error(error, exit_usage, "template needs exactly one KIND (known: "//known_kinds()//")")
           return
         end if
         i = i + 1
@@ -178,39 +234,85 @@ contains
     if (length > 0) call get_command_argument(i, arg)
   end function argument
 
-  !> Write to a temporary file beside the target, rename it over the target on success,
-  !> delete it on failure: an error never leaves a partial file.
-  subroutine run_to_file(args, error, summary)
-    type(cli_args_t), intent(in) :: args
+  !> The output on stdout, checked: a failed write (e.g. a full disk) is an error.
+  subroutine write_stdout(out, error)
+    type(text_buffer_t), intent(in) :: out
     type(error_t), allocatable, intent(out) :: error
-    type(run_summary_t), intent(out) :: summary
-    character(len=:), allocatable :: tmp
-    character(len=16) :: pid_text
+    integer :: ios
     character(len=512) :: msg
-    integer :: unit, ios
+    msg = ""
+    if (out%length > 0) write (output_unit, '(a)', advance='no', iostat=ios, iomsg=msg) out%data(1:out%length)
+    if (out%length == 0) ios = 0
+    if (ios == 0) flush (output_unit, iostat=ios, iomsg=msg)
+    if (ios /= 0) call fatal_error(error, exit_input, "standard output: cannot write: "//trim(msg))
+  end subroutine write_stdout
 
-    write (pid_text, '(i0)') c_getpid()
-    tmp = args%out_file//".tmp."//trim(pid_text)
-    open (newunit=unit, file=tmp, status='replace', action='write', form='formatted', iostat=ios, iomsg=msg)
-    if (ios /= 0) then
-      call fatal_error(error, exit_input, args%out_file//": cannot write output: "//trim(msg))
+  !> The output into FILE. A regular (or new) FILE is written as a temporary beside it and
+  !> renamed over it only when every byte was written and closed without error; on any error
+  !> the temporary is removed and FILE is left as it was. A device or FIFO is written directly.
+  subroutine write_file(path, out, error)
+    character(*), intent(in) :: path
+    type(text_buffer_t), intent(in) :: out
+    type(error_t), allocatable, intent(out) :: error
+    character(len=:), allocatable :: target
+    logical :: direct
+    direct = path_kind(path) == path_special
+    if (direct) then
+      target = path
+    else
+      target = path//".tmp."//int_str(process_id())
+    end if
+    call write_bytes(target, direct, out, error)
+    if (allocated(error)) then
+      error%message = path//": cannot write output: "//error%message
+      if (.not. direct) call remove_file(target)
       return
     end if
-    call run_deck(args%deck, args%output_format, unit, error, summary)
-    if (allocated(error)) then
-      close (unit, status='delete')
+    if (direct) return
+    if (.not. rename_file(target, path)) then
+      call remove_file(target)
+      call fatal_error(error, exit_input, path//": cannot write output: cannot rename the finished output into place")
+    end if
+  end subroutine write_file
+
+  !> Write the buffer's bytes to `path`; every write and the close are checked.
+  subroutine write_bytes(path, existing, out, error)
+    character(*), intent(in) :: path
+    !> True for a device or FIFO (opened as it is, not replaced).
+    logical, intent(in) :: existing
+    type(text_buffer_t), intent(in) :: out
+    type(error_t), allocatable, intent(out) :: error
+    integer :: unit, ios
+    character(len=512) :: msg
+    msg = ""
+    if (existing) then
+      open (newunit=unit, file=path, access='stream', form='unformatted', action='write', status='old', &
+            iostat=ios, iomsg=msg)
+    else
+      open (newunit=unit, file=path, access='stream', form='unformatted', action='write', status='replace', &
+            iostat=ios, iomsg=msg)
+    end if
+    if (ios /= 0) then
+      call fatal_error(error, exit_input, trim(msg))
+      return
+    end if
+    if (out%length > 0) write (unit, iostat=ios, iomsg=msg) out%data(1:out%length)
+    if (ios == 0) flush (unit, iostat=ios, iomsg=msg)
+    if (ios /= 0) then
+      close (unit, iostat=ios)
+      call fatal_error(error, exit_input, trim(msg))
       return
     end if
     close (unit, iostat=ios, iomsg=msg)
-    if (ios /= 0) then
-      call fatal_error(error, exit_input, args%out_file//": cannot write output: "//trim(msg))
-      return
-    end if
-    if (c_rename(tmp//c_null_char, args%out_file//c_null_char) /= 0) then
-      open (newunit=unit, file=tmp, status='old', iostat=ios)
-      if (ios == 0) close (unit, status='delete')
-      call fatal_error(error, exit_input, args%out_file//": cannot rename the finished output into place")
-    end if
-  end subroutine run_to_file
+    if (ios /= 0) call fatal_error(error, exit_input, trim(msg))
+  end subroutine write_bytes
+
+  !> Delete a file if it exists (errors ignored: this is clean-up after an error).
+  subroutine remove_file(path)
+    character(*), intent(in) :: path
+    integer :: unit, ios
+    open (newunit=unit, file=path, status='old', iostat=ios)
+    if (ios == 0) close (unit, status='delete', iostat=ios)
+  end subroutine remove_file
 
 end module kinetostat_cli

@@ -5,6 +5,7 @@ module kinetostat_gears_deck
   use kinetostat_kinds, only: wp, deg_to_rad, pi
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str, lower
+  use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, unset_int, &
     open_deck, namelist_failure, deck_error, is_set, require_set, require_positive, require_rule
   use kinetostat_gears, only: gear_stage_t, gear_spur, gear_helical, gear_bevel, gear_planetary, &
@@ -65,11 +66,11 @@ module kinetostat_gears_deck
 
 contains
 
-  !> Print the commented template deck.
-  subroutine write_gears_template(unit)
-    !> Output unit.
-    integer, intent(in) :: unit
-    call write_template_lines(unit, template_lines)
+  !> The commented template deck.
+  pure subroutine write_gears_template(out)
+    !> Where the lines go.
+    type(text_buffer_t), intent(inout) :: out
+    call write_template_lines(out, template_lines)
   end subroutine write_gears_template
 
   !> Read and validate a `&gears` deck.

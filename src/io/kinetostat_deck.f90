@@ -4,6 +4,7 @@
 module kinetostat_deck
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use kinetostat_kinds, only: wp
+  use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_error, only: error_t, fatal_error, exit_input
   use kinetostat_text, only: real_str, int_str, lower
   implicit none
@@ -36,15 +37,15 @@ module kinetostat_deck
 
 contains
 
-  !> Print a template deck held as lines (trailing blanks dropped).
-  subroutine write_template_lines(unit, lines)
-    !> Output unit.
-    integer, intent(in) :: unit
+  !> A template deck held as lines (trailing blanks dropped).
+  pure subroutine write_template_lines(out, lines)
+    !> Where the lines go.
+    type(text_buffer_t), intent(inout) :: out
     !> The deck's lines.
     character(*), intent(in) :: lines(:)
     integer :: i
     do i = 1, size(lines)
-      write (unit, '(a)') trim(lines(i))
+      call out%put(trim(lines(i)))
     end do
   end subroutine write_template_lines
 

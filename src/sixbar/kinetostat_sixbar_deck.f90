@@ -3,6 +3,7 @@ module kinetostat_sixbar_deck
   use kinetostat_kinds, only: wp, g_default, rad_to_deg
   use kinetostat_error, only: error_t, fatal_error, exit_geometry
   use kinetostat_text, only: real_str, int_str
+  use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, unset_int, max_deck_array, &
     open_deck, namelist_failure, deck_error, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn
@@ -60,11 +61,11 @@ module kinetostat_sixbar_deck
 
 contains
 
-  !> Print the commented template deck.
-  subroutine write_sixbar_template(unit)
-    !> Output unit.
-    integer, intent(in) :: unit
-    call write_template_lines(unit, template_lines)
+  !> The commented template deck.
+  pure subroutine write_sixbar_template(out)
+    !> Where the lines go.
+    type(text_buffer_t), intent(inout) :: out
+    call write_template_lines(out, template_lines)
   end subroutine write_sixbar_template
 
   !> Read and validate a `&sixbar` deck. Input errors have exit code 2; a requested

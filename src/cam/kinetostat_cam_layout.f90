@@ -1,0 +1,223 @@
+!> Cam follower as a mechanism of the run pipeline: deck -> every cam angle -> step table,
+!> and its table layout (one line per step; flags in words).
+module kinetostat_cam_layout
+  use kinetostat_kinds, only: wp, deg_to_rad, rad_to_deg
+  use kinetostat_error, only: error_t
+  use kinetostat_vec2, only: magnitude, angle_360_deg
+  use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_component, &
+    col_length, col_flag, col_ratio, col_other
+  use kinetostat_format, only: fixed_field, int_field
+  use kinetostat_labels, only: lang_ru
+  use kinetostat_text_buffer, only: text_buffer_t
+  use kinetostat_mechanism, only: mechanism_t
+  use kinetostat_cam, only: cam_step_t, cam_step, cam_critical_angle, kf_limit
+  use kinetostat_cam_deck, only: cam_deck_t, read_cam_deck, write_cam_template, follower_translating
+  implicit none
+  private
+  public :: cam_mechanism_t, new_cam, cam_solve, cam_csv_columns, cam_csv_values
+
+  !> CSV columns, one row per cam angle; see README "Cam mechanisms".
+  character(*), parameter :: cam_csv_columns(*) = [character(len=5) :: &
+    "phi", "theta", "xB", "F2", "vdir", "N", "F21", "F21G", "F23C", "F23CG", "F23D", "F23DG", &
+    "KF", "KF2", "JAM", "LOST"]
+  !> Units of the columns.
+  character(*), parameter :: column_units(*) = [character(len=3) :: &
+    "deg", "deg", "m", "N", "", "N", "N", "deg", "N", "deg", "N", "deg", "", "", "", ""]
+  !> Kinds of the columns.
+  integer, parameter :: column_kinds(*) = [col_input_angle, col_other, col_length, col_component, col_flag, &
+    col_component, col_force, col_force_angle, col_force, col_force_angle, col_force, col_force_angle, &
+    col_ratio, col_flag, col_flag, col_flag]
+  !> Results header with units.
+  character(*), parameter :: header_lines(*) = [character(len=128) :: &
+    "     PHI   THETA        XB         F2  V          F21    F21G         F23C   F23CG" // &
+    "         F23D   F23DG        KF  FLAGS", &
+    "     deg     deg         m          N             N     deg            N     deg" // &
+    "            N     deg"]
+
+  !> Cam with a translating (knife/roller) or flat follower in a guide, manual section 7.
+  type, extends(mechanism_t) :: cam_mechanism_t
+    !> The validated deck.
+    type(cam_deck_t) :: deck
+  contains
+    procedure :: read_deck
+    procedure :: solve
+    procedure :: title
+    procedure :: write_results
+    procedure :: write_template
+  end type cam_mechanism_t
+
+contains
+
+  !> A new cam mechanism (the registry's constructor).
+  subroutine new_cam(mech)
+    !> The mechanism.
+    class(mechanism_t), allocatable, intent(out) :: mech
+    allocate (cam_mechanism_t :: mech)
+  end subroutine new_cam
+
+  subroutine read_deck(self, path, error)
+    class(cam_mechanism_t), intent(inout) :: self
+    character(*), intent(in) :: path
+    type(error_t), allocatable, intent(out) :: error
+    call read_cam_deck(path, self%deck, error)
+  end subroutine read_deck
+
+  pure function title(self, lang) result(text)
+    class(cam_mechanism_t), intent(in) :: self
+    integer, intent(in) :: lang
+    character(len=:), allocatable :: text
+    if (lang == lang_ru) then
+      text = "KINETOSTAT  CAM  СИЛЫ В КУЛАЧКОВОМ МЕХАНИЗМЕ С" // &
+        " ПОСТУПАТЕЛЬНО ДВИЖУЩИМСЯ ТОЛКАТЕЛЕМ (РАЗДЕЛ 7)"
+    else
+      text = "KINETOSTAT  CAM  FORCES ON A TRANSLATING FOLLOWER IN A GUIDE (MANUAL SECTION 7)"
+    end if
+  end function title
+
+  pure subroutine write_template(self, out)
+    class(cam_mechanism_t), intent(in) :: self
+    type(text_buffer_t), intent(inout) :: out
+    call write_cam_template(out)
+  end subroutine write_template
+
+  !> All steps of a validated deck.
+  pure subroutine cam_solve(deck, steps)
+    !> Validated deck.
+    type(cam_deck_t), intent(in) :: deck
+    !> One result per cam angle.
+    type(cam_step_t), allocatable, intent(out) :: steps(:)
+    integer :: k
+    allocate (steps(deck%n))
+    do k = 1, deck%n
+      steps(k) = cam_step(deck%p, deck%theta_deg(k) * deg_to_rad, deck%x_b(k), deck%mu_cam, &
+                          deck%f2(k), deck%vdir(k))
+    end do
+  end subroutine cam_solve
+
+  !> Every step into the step table, with the INPUT DATA echo and the self-check.
+  subroutine solve(self, table, error)
+    class(cam_mechanism_t), intent(in) :: self
+    type(step_table_t), intent(inout) :: table
+    type(error_t), allocatable, intent(out) :: error
+    type(cam_step_t), allocatable :: steps(:)
+    integer :: k
+    call cam_solve(self%deck, steps)
+    call table%set_columns(cam_csv_columns, column_units, column_kinds)
+    table%input_column = 1
+    call table%allocate_rows(size(steps))
+    do k = 1, size(steps)
+      table%rows(:, k) = cam_csv_values(self%deck, steps(k), k)
+    end do
+    table%max_residual = maxval(steps%residual)
+    table%max_mismatch = maxval(steps%mismatch)
+    table%driver = "N"
+    table%residual_label = "MAX EQUILIBRIUM RESIDUAL OF THE FOLLOWER, ALL STEPS"
+    table%mismatch_label = "MAX N MISMATCH, CLOSED FORM VS 3X3 LINEAR SOLVE"
+    call echo_deck(self%deck, table)
+  end subroutine solve
+
+  !> The CSV row of step k (flags as 0/1; forces 0 when jammed or contact lost).
+  pure function cam_csv_values(deck, s, k) result(v)
+    !> Validated deck.
+    type(cam_deck_t), intent(in) :: deck
+    !> One computed step.
+    type(cam_step_t), intent(in) :: s
+    !> Step number.
+    integer, intent(in) :: k
+    real(wp) :: v(size(cam_csv_columns))
+    v(1) = deck%phi_deg(k)
+    v(2) = deck%theta_deg(k)
+    v(3) = deck%x_b(k)
+    v(4) = deck%f2(k)
+    v(5) = deck%vdir(k)
+    v(6) = s%n
+    v(7) = magnitude(s%f21)
+    v(8) = angle_360_deg(s%f21)
+    v(9) = magnitude(s%f23c)
+    v(10) = angle_360_deg(s%f23c)
+    v(11) = magnitude(s%f23d)
+    v(12) = angle_360_deg(s%f23d)
+    v(13) = s%kf
+    v(14) = merge(1.0_wp, 0.0_wp, s%kf_over)
+    v(15) = merge(1.0_wp, 0.0_wp, s%jammed)
+    v(16) = merge(1.0_wp, 0.0_wp, s%lost)
+  end function cam_csv_values
+
+  !> The INPUT DATA echo of the deck.
+  pure subroutine echo_deck(deck, table)
+    type(cam_deck_t), intent(in) :: deck
+    type(step_table_t), intent(inout) :: table
+    if (deck%follower == follower_translating) then
+      call table%echo_text("FOLLOWER", "translating (knife/roller)")
+    else
+      call table%echo_text("FOLLOWER", "flat")
+    end if
+    call table%echo_real("L", deck%p%l, "m")
+    call table%echo_real("L_OVER", deck%p%a, "m")
+    call table%echo_real("F", deck%p%f, "")
+    if (deck%follower /= follower_translating) then
+      call table%echo_real("F_CAM", deck%f_cam, "")
+      call table%echo_real("OMEGA_DIR", deck%omega_dir, "(+1 CCW, -1 CW)")
+    end if
+    call table%echo_real("PHI_START", deck%phi_start, "deg")
+    call table%echo_real("DPHI", deck%dphi, "deg")
+    call table%echo_int("N", deck%n, "steps")
+    if (deck%follower == follower_translating) then
+      call table%echo_array("THETA", deck%theta_deg(1:max(1, min(deck%n, deck%given(1)))), "deg")
+    else
+      call table%echo_array("DS_DPHI", deck%ds_dphi(1:max(1, min(deck%n, deck%given(4)))), "m/rad")
+    end if
+    call table%echo_array("F2", deck%f2(1:max(1, min(deck%n, deck%given(2)))), "N")
+    if (deck%follower == follower_translating) &
+      call table%echo_array("VDIR", deck%vdir(1:max(1, min(deck%n, deck%given(3)))), "")
+    if (deck%follower == follower_translating) &
+      call table%echo_real("THETA_CR", cam_critical_angle(deck%p) * rad_to_deg, "deg (rise; derived)")
+    call table%echo_real("KF_LIMIT", kf_limit, "(Reshetov)")
+  end subroutine echo_deck
+
+  !> Flag text of one row: lost contact, jammed, or K_F over its limit.
+  pure function flags_text(v, lang) result(t)
+    real(wp), intent(in) :: v(:)
+    integer, intent(in) :: lang
+    character(len=:), allocatable :: t
+    t = ""
+    if (v(16) /= 0.0_wp) then
+      t = "LOST CONTACT (F2 <= 0)"
+      if (lang == lang_ru) t = "ПОТЕРЯ КОНТАКТА (F2 <= 0)"
+    else if (v(15) /= 0.0_wp) then
+      t = "JAMMED (SELF-LOCKING)"
+      if (lang == lang_ru) t = "ЗАКЛИНИВАНИЕ (САМОТОРМОЖЕНИЕ)"
+    else if (v(14) /= 0.0_wp) then
+      t = "KF>2"
+    end if
+  end function flags_text
+
+  !> RESULTS: one line per cam angle; a jammed or lost-contact step shows its flag instead
+  !> of the forces.
+  pure subroutine write_results(self, table, lang, out)
+    class(cam_mechanism_t), intent(in) :: self
+    type(step_table_t), intent(in) :: table
+    integer, intent(in) :: lang
+    type(text_buffer_t), intent(inout) :: out
+    integer :: k, i
+    character(len=:), allocatable :: line
+    do k = 1, size(header_lines)
+      call out%put(trim(header_lines(k)))
+    end do
+    do k = 1, table%row_count()
+      associate (v => table%rows(:, k))
+        line = fixed_field(v(1), 8, 2)//fixed_field(v(2), 8, 3)//fixed_field(v(3), 10, 5)// &
+          fixed_field(v(4), 11, 2)//int_field(v(5), 3)
+        if (v(15) == 0.0_wp .and. v(16) == 0.0_wp) then
+          do i = 7, 11, 2
+            line = line//fixed_field(v(i), 13, 3)//fixed_field(v(i + 1), 8, 2)
+          end do
+          line = line//fixed_field(v(13), 10, 4)
+        end if
+        call out%put(line//"  "//flags_text(v, lang))
+      end associate
+    end do
+    if (self%deck%n < 0) call out%put("")
+  end subroutine write_results
+
+end module kinetostat_cam_layout

@@ -1,0 +1,59 @@
+!> The operating-system calls the program needs beyond Fortran's intrinsics: the kind of
+!> file a path names, renaming a file, the process id.
+module kinetostat_posix
+  use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char
+  implicit none
+  private
+  public :: path_kind, rename_file, process_id
+  public :: path_absent, path_regular, path_directory, path_special
+
+  !> path_kind: no such file.
+  integer, parameter :: path_absent = 0
+  !> path_kind: a regular file.
+  integer, parameter :: path_regular = 1
+  !> path_kind: a directory.
+  integer, parameter :: path_directory = 2
+  !> path_kind: a device, FIFO or socket.
+  integer, parameter :: path_special = 3
+
+  interface
+    function c_path_kind(path) bind(c, name="kinetostat_path_kind") result(kind)
+      import :: c_int, c_char
+      character(kind=c_char), intent(in) :: path(*)
+      integer(c_int) :: kind
+    end function c_path_kind
+    function c_rename(old, new) bind(c, name="rename") result(status)
+      import :: c_int, c_char
+      character(kind=c_char), intent(in) :: old(*), new(*)
+      integer(c_int) :: status
+    end function c_rename
+    function c_getpid() bind(c, name="getpid") result(pid)
+      import :: c_int
+      integer(c_int) :: pid
+    end function c_getpid
+  end interface
+
+contains
+
+  !> What `path` names: path_absent, path_regular, path_directory or path_special.
+  integer function path_kind(path)
+    !> File path.
+    character(*), intent(in) :: path
+    path_kind = int(c_path_kind(path//c_null_char))
+  end function path_kind
+
+  !> Rename `old` to `new` (atomic on one file system); true on success.
+  logical function rename_file(old, new)
+    !> Existing file.
+    character(*), intent(in) :: old
+    !> New name (replaced if it exists).
+    character(*), intent(in) :: new
+    rename_file = c_rename(old//c_null_char, new//c_null_char) == 0
+  end function rename_file
+
+  !> This process' id.
+  integer function process_id()
+    process_id = int(c_getpid())
+  end function process_id
+
+end module kinetostat_posix

@@ -1,0 +1,282 @@
+!> Gear meshes as a mechanism of the run pipeline: deck -> every stage -> step table (one
+!> row per stage), and the table layout (one block of named values per stage).
+module kinetostat_gears_layout
+  use kinetostat_kinds, only: wp, rad_to_deg
+  use kinetostat_error, only: error_t
+  use kinetostat_vec2, only: magnitude, angle_360_deg, snap_noise
+  use kinetostat_step_table, only: step_table_t, col_count, col_length, col_ratio, col_moment, col_component, &
+    col_force, col_force_angle
+  use kinetostat_format, only: echo_number, pad_right
+  use kinetostat_labels, only: lang_ru
+  use kinetostat_text_buffer, only: text_buffer_t
+  use kinetostat_table_writer, only: put_heading
+  use kinetostat_mechanism, only: mechanism_t
+  use kinetostat_gears, only: gear_stage_t, gear_result_t, gear_pair, gear_series, gear_planetary_step, &
+    gear_planetary, gear_bevel, gear_kind_names
+  use kinetostat_gears_deck, only: gears_deck_t, read_gears_deck, write_gears_template, layout_series, layout_names
+  implicit none
+  private
+  public :: gears_mechanism_t, new_gears, gears_solve, gears_csv_columns, gears_csv_values
+
+  !> CSV columns (one row per stage); see README "Gear meshes".
+  character(*), parameter :: gears_csv_columns(*) = [character(len=6) :: &
+    "stage", "kind", "z1", "z2", "z3", "k", "dw1", "dw2", "u", "M1", "M2", "M2P", &
+    "Ft", "Fr1", "Fa1", "Fr2", "Fa2", "Fn", "F12", "F12G", "FS1", "FS1G", "FS2", "FS2G", &
+    "F23", "F23G", "F2H", "F2HG", "M3", "M3P"]
+  !> Units of the columns.
+  character(*), parameter :: column_units(*) = [character(len=3) :: &
+    "", "", "", "", "", "", "mm", "mm", "", "N*m", "N*m", "N*m", &
+    "N", "N", "N", "N", "N", "N", "N", "deg", "N", "deg", "N", "deg", &
+    "N", "deg", "N", "deg", "N*m", "N*m"]
+  !> Kinds of the columns.
+  integer, parameter :: column_kinds(*) = [col_count, col_count, col_count, col_count, col_count, col_count, &
+    col_length, col_length, col_ratio, col_moment, col_moment, col_moment, &
+    col_component, col_component, col_component, col_component, col_component, col_component, &
+    col_force, col_force_angle, col_force, col_force_angle, col_force, col_force_angle, &
+    col_force, col_force_angle, col_force, col_force_angle, col_moment, col_moment]
+  !> Display width of the name part of a RESULTS line ("=" in column 20, as the echo).
+  integer, parameter :: name_width = 16
+  !> CSV positions of the torque columns (M1, M2, M2P, M3, M3P).
+  integer, parameter :: moment_columns(*) = [10, 11, 12, 29, 30]
+  !> Relative roundoff floor below which a force counts as zero in the output.
+  real(wp), parameter :: noise_rel = 1.0e-12_wp
+  !> Format of a force angle in the RESULTS block.
+  character(*), parameter :: angle_fmt = '(f11.4)'
+
+  !> Gear meshes: spur, helical, bevel, planetary stages, manual section 6.
+  type, extends(mechanism_t) :: gears_mechanism_t
+    !> The validated deck.
+    type(gears_deck_t) :: deck
+  contains
+    procedure :: read_deck
+    procedure :: solve
+    procedure :: title
+    procedure :: write_results
+    procedure :: write_template
+  end type gears_mechanism_t
+
+contains
+
+  !> A new gears mechanism (the registry's constructor).
+  subroutine new_gears(mech)
+    !> The mechanism.
+    class(mechanism_t), allocatable, intent(out) :: mech
+    allocate (gears_mechanism_t :: mech)
+  end subroutine new_gears
+
+  subroutine read_deck(self, path, error)
+    class(gears_mechanism_t), intent(inout) :: self
+    character(*), intent(in) :: path
+    type(error_t), allocatable, intent(out) :: error
+    call read_gears_deck(path, self%deck, error)
+  end subroutine read_deck
+
+  pure function title(self, lang) result(text)
+    class(gears_mechanism_t), intent(in) :: self
+    integer, intent(in) :: lang
+    character(len=:), allocatable :: text
+    if (lang == lang_ru) then
+      text = "KINETOSTAT  GEARS  СИЛЫ В ЗАЦЕПЛЕНИЯХ ЗУБЧАТЫХ" // &
+        " КОЛЕС (РАЗДЕЛ 6, БЕЗ УЧЕТА ТРЕНИЯ)"
+    else
+      text = "KINETOSTAT  GEARS  FORCES IN GEAR MESHES (MANUAL SECTION 6, FRICTION-FREE)"
+    end if
+  end function title
+
+  pure subroutine write_template(self, out)
+    class(gears_mechanism_t), intent(in) :: self
+    type(text_buffer_t), intent(inout) :: out
+    call write_gears_template(out)
+  end subroutine write_template
+
+  !> All stages of a validated deck.
+  pure subroutine gears_solve(deck, res)
+    !> Validated deck.
+    type(gears_deck_t), intent(in) :: deck
+    !> One result per stage.
+    type(gear_result_t), allocatable, intent(out) :: res(:)
+    integer :: i
+    allocate (res(deck%n))
+    if (deck%layout == layout_series) then
+      call gear_series(deck%st, deck%m1(1), res)
+    else
+      do i = 1, deck%n
+        if (deck%st(i)%kind == gear_planetary) then
+          res(i) = gear_planetary_step(deck%st(i), deck%m1(i))
+        else
+          res(i) = gear_pair(deck%st(i), deck%m1(i), [0.0_wp, 0.0_wp])
+        end if
+      end do
+    end if
+  end subroutine gears_solve
+
+  !> Every stage into the step table, with the INPUT DATA echo and the self-check.
+  subroutine solve(self, table, error)
+    class(gears_mechanism_t), intent(in) :: self
+    type(step_table_t), intent(inout) :: table
+    type(error_t), allocatable, intent(out) :: error
+    type(gear_result_t), allocatable :: res(:)
+    integer :: i
+    call gears_solve(self%deck, res)
+    call table%set_columns(gears_csv_columns, column_units, column_kinds)
+    table%row_name = "stage"
+    call table%allocate_rows(size(res))
+    do i = 1, size(res)
+      table%rows(:, i) = gears_csv_values(self%deck, res, i)
+    end do
+    table%max_residual = maxval(res%residual)
+    table%max_mismatch = maxval(res%mismatch)
+    table%driver = "M2"
+    call echo_deck(self%deck, table)
+  end subroutine solve
+
+  !> The CSV row of stage `i`: diameters in mm, forces N (magnitude) and deg (angle).
+  pure function gears_csv_values(deck, res, i) result(v)
+    !> Validated deck.
+    type(gears_deck_t), intent(in) :: deck
+    !> Results of every stage.
+    type(gear_result_t), intent(in) :: res(:)
+    !> Stage number.
+    integer, intent(in) :: i
+    real(wp) :: v(size(gears_csv_columns))
+    type(gear_stage_t) :: st
+    type(gear_result_t) :: r
+    real(wp) :: floor, f(2, 5)
+    integer :: j
+    st = deck%st(i)
+    r = res(i)
+    f = reshape([r%f12, r%fs1, r%fs2, r%f23, r%f2h], [2, 5])
+    floor = noise_rel * maxval([(magnitude(f(:, j)), j=1, 5)])
+    do j = 1, 5
+      f(:, j) = snap_noise(f(:, j), floor)
+    end do
+    v(1) = real(i, wp)
+    v(2) = real(st%kind, wp)
+    v(3) = real(st%z1, wp)
+    v(4) = real(st%z2, wp)
+    v(5) = real(st%z3, wp)
+    v(6) = real(st%k, wp)
+    if (st%kind /= gear_planetary) v(6) = 0.0_wp
+    v(7) = st%dw1 * 1.0e3_wp
+    v(8) = r%dw2 * 1.0e3_wp
+    v(9) = r%u
+    v(10:12) = [r%m1, r%m2, r%m2_power]
+    v(13:18) = [r%ft, r%fr1, r%fa1, r%fr2, r%fa2, r%fn]
+    do j = 1, 5
+      v(17 + 2 * j) = magnitude(f(:, j))
+      v(18 + 2 * j) = angle_360_deg(f(:, j))
+    end do
+    v(29:30) = [r%m_house, r%m_house_power]
+    ! torques: roundoff relative to the stage's largest torque prints as 0
+    floor = noise_rel * maxval(abs([v(10:12), v(29:30)]))
+    do j = 1, size(moment_columns)
+      if (abs(v(moment_columns(j))) <= floor) v(moment_columns(j)) = 0.0_wp
+    end do
+  end function gears_csv_values
+
+  !> "STAGE i: KIND" (the stage heading of both blocks).
+  pure function stage_heading(i, kind) result(text)
+    integer, intent(in) :: i, kind
+    character(len=:), allocatable :: text
+    character(len=16) :: buf
+    write (buf, '(i0)') i
+    text = "STAGE "//trim(buf)//": "//trim(to_upper(gear_kind_names(kind)))
+  end function stage_heading
+
+  !> The INPUT DATA echo of the deck.
+  pure subroutine echo_deck(deck, table)
+    type(gears_deck_t), intent(in) :: deck
+    type(step_table_t), intent(inout) :: table
+    type(gear_stage_t) :: st
+    integer :: i
+    call table%echo_text("LAYOUT", trim(layout_names(deck%layout)))
+    call table%echo_int("STAGES", deck%n, "")
+    do i = 1, deck%n
+      st = deck%st(i)
+      call table%echo_heading(stage_heading(i, st%kind))
+      if (deck%layout /= layout_series .or. i == 1) call table%echo_real("M1", deck%m1(i), "N*m")
+      call table%echo_int("Z1", st%z1, "")
+      call table%echo_int("Z2", st%z2, "")
+      if (st%kind == gear_planetary) then
+        call table%echo_int("Z3", st%z3, "")
+        call table%echo_int("K", st%k, "satellites")
+      end if
+      if (deck%module_mm(i) > 0.0_wp) call table%echo_real("M", deck%module_mm(i), "mm")
+      call table%echo_real("DW1", st%dw1 * 1.0e3_wp, "mm")
+      call table%echo_real("ALPHA_W", st%alpha_w * rad_to_deg, "deg")
+      if (st%kind == gear_planetary) call table%echo_real("ALPHA_W23", st%alpha_w23 * rad_to_deg, "deg")
+      if (st%kind == gear_bevel) call table%echo_real("DELTA1", st%delta1 * rad_to_deg, "deg (atan(z1/z2))")
+      call table%echo_real("BETA", st%beta * rad_to_deg, "deg")
+      call table%echo_real("GAMMA", st%gamma * rad_to_deg, "deg")
+    end do
+  end subroutine echo_deck
+
+  !> A RESULTS line "   NAME            =  value  unit".
+  pure function value_line(name, x, unit) result(line)
+    character(*), intent(in) :: name, unit
+    real(wp), intent(in) :: x
+    character(len=:), allocatable :: line
+    line = "   "//pad_right(name, name_width)//"="//echo_number(x)//"  "//unit
+  end function value_line
+
+  !> A RESULTS line of a force: magnitude and angle.
+  pure function vector_line(name, magnitude_n, angle_deg) result(line)
+    character(*), intent(in) :: name
+    real(wp), intent(in) :: magnitude_n, angle_deg
+    character(len=:), allocatable :: line
+    character(len=11) :: angle_text
+    write (angle_text, angle_fmt) angle_deg
+    line = value_line(name, magnitude_n, "N")//"   ANGLE ="//angle_text//"  deg"
+  end function vector_line
+
+  !> RESULTS: a block per stage (the mesh's named values, force vectors, torques).
+  pure subroutine write_results(self, table, lang, out)
+    class(gears_mechanism_t), intent(in) :: self
+    type(step_table_t), intent(in) :: table
+    integer, intent(in) :: lang
+    type(text_buffer_t), intent(inout) :: out
+    integer :: i, kind
+    do i = 1, table%row_count()
+      associate (v => table%rows(:, i))
+        kind = nint(v(2))
+        call put_heading(out, stage_heading(i, kind))
+        call out%put(value_line("DW2", v(8), "mm"))
+        call out%put(value_line("U", v(9), ""))
+        call out%put(value_line("M1", v(10), "N*m"))
+        call out%put(value_line("FT", v(13), "N"))
+        call out%put(value_line("FR1", v(14), "N"))
+        call out%put(value_line("FA1", v(15), "N"))
+        call out%put(value_line("FR2", v(16), "N"))
+        call out%put(value_line("FA2", v(17), "N"))
+        call out%put(value_line("FN", v(18), "N"))
+        call out%put(vector_line("F12", v(19), v(20)))
+        call out%put(vector_line("FS1", v(21), v(22)))
+        if (kind /= gear_bevel) call out%put(vector_line("FS2", v(23), v(24)))
+        if (kind == gear_planetary) then
+          call out%put(vector_line("F23", v(25), v(26)))
+          call out%put(vector_line("F2H", v(27), v(28)))
+          call out%put(value_line("M_H", v(11), "N*m (carrier, from forces)"))
+          call out%put(value_line("M_H POWER", v(12), "N*m (M1*u_1H)"))
+          call out%put(value_line("M3 HOUSING", v(29), "N*m (on the ring, from forces)"))
+          call out%put(value_line("M3 BALANCE", v(30), "N*m (M1 - M_H)"))
+        else
+          call out%put(value_line("M2", v(11), "N*m (from forces)"))
+          call out%put(value_line("M2 POWER", v(12), "N*m (power balance)"))
+        end if
+      end associate
+    end do
+    if (lang == lang_ru .and. self%deck%n < 0) call out%put("")
+  end subroutine write_results
+
+  pure function to_upper(s) result(t)
+    character(*), intent(in) :: s
+    character(len=len(s)) :: t
+    integer :: i, c
+    t = s
+    do i = 1, len(s)
+      c = iachar(s(i:i))
+      if (c >= iachar('a') .and. c <= iachar('z')) t(i:i) = achar(c - 32)
+    end do
+  end function to_upper
+
+end module kinetostat_gears_layout

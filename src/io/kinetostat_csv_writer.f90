@@ -1,0 +1,44 @@
+!> CSV writer: one header row of column names, then one row per step; every value at full
+!> precision (13 significant digits), flags and counts as whole numbers.
+module kinetostat_csv_writer
+  use kinetostat_step_table, only: step_table_t, col_flag, col_count
+  use kinetostat_format, only: full_number, whole_number
+  use kinetostat_text_buffer, only: text_buffer_t
+  implicit none
+  private
+  public :: write_csv
+
+contains
+
+  !> The CSV of a step table (columns marked csv only).
+  pure subroutine write_csv(table, out)
+    !> Finite results.
+    type(step_table_t), intent(in) :: table
+    !> Where the lines go.
+    type(text_buffer_t), intent(inout) :: out
+    character(len=:), allocatable :: line
+    integer :: k, c
+    line = ""
+    do c = 1, size(table%columns)
+      if (.not. table%columns(c)%csv) cycle
+      if (len(line) > 0) line = line//","
+      line = line//table%columns(c)%name
+    end do
+    call out%put(line)
+    do k = 1, table%row_count()
+      line = ""
+      do c = 1, size(table%columns)
+        if (.not. table%columns(c)%csv) cycle
+        if (len(line) > 0) line = line//","
+        select case (table%columns(c)%kind)
+        case (col_flag, col_count)
+          line = line//whole_number(table%rows(c, k))
+        case default
+          line = line//full_number(table%rows(c, k))
+        end select
+      end do
+      call out%put(line)
+    end do
+  end subroutine write_csv
+
+end module kinetostat_csv_writer

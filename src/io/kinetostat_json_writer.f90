@@ -1,0 +1,139 @@
+!> JSON writer: one object per run (program, mechanism, deck, INPUT DATA values, columns with
+!> units and kinds, rows, self-check, warnings) that a script can load as it is.
+module kinetostat_json_writer
+  use kinetostat_kinds, only: version_string
+  use kinetostat_selfcheck, only: selfcheck_tolerance
+  use kinetostat_step_table, only: step_table_t, echo_record_t, column_kind_names, col_flag, col_count, &
+    echo_real_kind, echo_int_kind, echo_logical_kind, echo_array_kind, echo_text_kind, echo_heading_kind
+  use kinetostat_format, only: full_number, whole_number
+  use kinetostat_text_buffer, only: text_buffer_t
+  implicit none
+  private
+  public :: write_json, json_string
+
+contains
+
+  !> The JSON object of a run.
+  pure subroutine write_json(title, table, out)
+    !> Title of the mechanism (as the legacy table prints it).
+    character(*), intent(in) :: title
+    !> Finite results.
+    type(step_table_t), intent(in) :: table
+    !> Where the lines go.
+    type(text_buffer_t), intent(inout) :: out
+    character(len=:), allocatable :: line
+    integer :: i, c, k
+    call out%put("{")
+    call out%put('  "program": '//json_string(version_string)//",")
+    call out%put('  "mechanism": '//json_string(table%mechanism)//",")
+    call out%put('  "title": '//json_string(title)//",")
+    call out%put('  "deck": '//json_string(table%deck)//",")
+    if (allocated(table%subtitle)) call out%put('  "deck_title": '//json_string(table%subtitle)//",")
+    call out%put('  "row_name": '//json_string(table%row_name)//",")
+    call out%put('  "input": [')
+    do i = 1, table%echo_count
+      line = "    "//echo_object(table%echo(i))
+      if (i < table%echo_count) line = line//","
+      call out%put(line)
+    end do
+    call out%put("  ],")
+    call out%put('  "columns": [')
+    do c = 1, size(table%columns)
+      line = '    {"name": '//json_string(table%columns(c)%name)//', "unit": '// &
+        json_string(table%columns(c)%unit)//', "kind": '// &
+        json_string(trim(column_kind_names(table%columns(c)%kind)))//', "csv": '// &
+        merge("true ", "false", table%columns(c)%csv)
+      line = trim(line)//"}"
+      if (c < size(table%columns)) line = line//","
+      call out%put(line)
+    end do
+    call out%put("  ],")
+    call out%put('  "rows": [')
+    do k = 1, table%row_count()
+      line = "    ["
+      do c = 1, size(table%columns)
+        if (c > 1) line = line//", "
+        select case (table%columns(c)%kind)
+        case (col_flag, col_count)
+          line = line//whole_number(table%rows(c, k))
+        case default
+          line = line//full_number(table%rows(c, k))
+        end select
+      end do
+      line = line//"]"
+      if (k < table%row_count()) line = line//","
+      call out%put(line)
+    end do
+    call out%put("  ],")
+    if (table%has_selfcheck) then
+      call out%put('  "selfcheck": {"max_residual": '//full_number(table%max_residual)// &
+        ', "max_mismatch": '//full_number(table%max_mismatch)//', "driver": '//json_string(table%driver)// &
+        ', "limit": '//full_number(selfcheck_tolerance)//', "ok": '// &
+        trim(merge("true ", "false", table%max_residual <= selfcheck_tolerance .and. &
+                   table%max_mismatch <= selfcheck_tolerance))//"},")
+    else
+      call out%put('  "selfcheck": null,')
+    end if
+    if (allocated(table%warning)) then
+      call out%put('  "warnings": ['//json_string(table%warning)//"]")
+    else
+      call out%put('  "warnings": []')
+    end if
+    call out%put("}")
+  end subroutine write_json
+
+  !> One INPUT DATA record as a JSON object.
+  pure function echo_object(e) result(text)
+    type(echo_record_t), intent(in) :: e
+    character(len=:), allocatable :: text
+    character(len=24) :: buf
+    integer :: i
+    select case (e%kind)
+    case (echo_real_kind)
+      text = '{"name": '//json_string(e%name)//', "value": '//full_number(e%values(1))// &
+        ', "unit": '//json_string(e%unit)//"}"
+    case (echo_int_kind)
+      write (buf, '(i0)') e%int_value
+      text = '{"name": '//json_string(e%name)//', "value": '//trim(buf)//', "unit": '//json_string(e%unit)//"}"
+    case (echo_logical_kind)
+      text = '{"name": '//json_string(e%name)//', "value": '//trim(merge("true ", "false", e%logical_value))// &
+        ', "unit": '//json_string(e%unit)//"}"
+    case (echo_array_kind)
+      text = '{"name": '//json_string(e%name)//', "value": ['
+      do i = 1, size(e%values)
+        if (i > 1) text = text//", "
+        text = text//full_number(e%values(i))
+      end do
+      text = text//'], "unit": '//json_string(e%unit)//"}"
+    case (echo_text_kind)
+      text = '{"name": '//json_string(e%name)//', "value": '//json_string(e%text)//"}"
+    case (echo_heading_kind)
+      text = '{"heading": '//json_string(e%name)//"}"
+    case default
+      text = '{"text": '//json_string(e%name)//"}"
+    end select
+  end function echo_object
+
+  !> A JSON string literal: quotes, backslashes and control characters escaped; UTF-8 kept.
+  pure function json_string(s) result(text)
+    !> Text.
+    character(*), intent(in) :: s
+    character(len=:), allocatable :: text
+    character(len=6) :: esc
+    integer :: i, c
+    text = '"'
+    do i = 1, len(s)
+      c = iachar(s(i:i))
+      if (s(i:i) == '"' .or. s(i:i) == '\') then
+        text = text//'\'//s(i:i)
+      else if (c < 32 .or. c == 127) then
+        write (esc, '("\u",z4.4)') c
+        text = text//esc
+      else
+        text = text//s(i:i)
+      end if
+    end do
+    text = text//'"'
+  end function json_string
+
+end module kinetostat_json_writer

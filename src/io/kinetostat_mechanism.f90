@@ -1,0 +1,74 @@
+!> The one interface every mechanism implements (as fpm's subcommands do): read its deck,
+!> solve every step into a step table, lay out its legacy table, print its template deck.
+!> The run pipeline (kinetostat_run) and the registry (kinetostat_registry) know mechanisms
+!> only through this type.
+module kinetostat_mechanism
+  use kinetostat_error, only: error_t
+  use kinetostat_step_table, only: step_table_t
+  use kinetostat_text_buffer, only: text_buffer_t
+  implicit none
+  private
+  public :: mechanism_t
+
+  !> A mechanism kind.
+  type, abstract :: mechanism_t
+  contains
+    !> Read and validate the deck.
+    procedure(read_deck_i), deferred :: read_deck
+    !> Compute every step and fill the step table (columns, rows, echo, self-check).
+    procedure(solve_i), deferred :: solve
+    !> Title line of the legacy table.
+    procedure(title_i), deferred :: title
+    !> The RESULTS block of the legacy table: header lines and the rows as the original laid them out.
+    procedure(results_i), deferred :: write_results
+    !> The commented template deck.
+    procedure(template_i), deferred :: write_template
+  end type mechanism_t
+
+  abstract interface
+    subroutine read_deck_i(self, path, error)
+      import :: mechanism_t, error_t
+      class(mechanism_t), intent(inout) :: self
+      !> Deck file.
+      character(*), intent(in) :: path
+      !> Input error naming deck, group, variable and reason.
+      type(error_t), allocatable, intent(out) :: error
+    end subroutine read_deck_i
+
+    subroutine solve_i(self, table, error)
+      import :: mechanism_t, step_table_t, error_t
+      class(mechanism_t), intent(in) :: self
+      !> The results (mechanism and deck already set by the caller).
+      type(step_table_t), intent(inout) :: table
+      !> Geometry error naming the step.
+      type(error_t), allocatable, intent(out) :: error
+    end subroutine solve_i
+
+    pure function title_i(self, lang) result(text)
+      import :: mechanism_t
+      class(mechanism_t), intent(in) :: self
+      !> lang_en or lang_ru.
+      integer, intent(in) :: lang
+      character(len=:), allocatable :: text
+    end function title_i
+
+    pure subroutine results_i(self, table, lang, out)
+      import :: mechanism_t, step_table_t, text_buffer_t
+      class(mechanism_t), intent(in) :: self
+      !> Finite results.
+      type(step_table_t), intent(in) :: table
+      !> lang_en or lang_ru.
+      integer, intent(in) :: lang
+      !> Where the lines go.
+      type(text_buffer_t), intent(inout) :: out
+    end subroutine results_i
+
+    pure subroutine template_i(self, out)
+      import :: mechanism_t, text_buffer_t
+      class(mechanism_t), intent(in) :: self
+      !> Where the lines go.
+      type(text_buffer_t), intent(inout) :: out
+    end subroutine template_i
+  end interface
+
+end module kinetostat_mechanism

@@ -1,0 +1,155 @@
+!> The one run pipeline of every mechanism: read the deck -> solve every step into a step
+!> table -> guard (nothing non-finite reaches an output) -> write the chosen format into a
+!> buffer. The caller writes the buffer out only when all of this succeeded.
+module kinetostat_run
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+  use kinetostat_kinds, only: wp
+  use kinetostat_error, only: error_t, fatal_error, exit_geometry
+  use kinetostat_text, only: int_str
+  use kinetostat_step_table, only: step_table_t, echo_real_kind, echo_array_kind
+  use kinetostat_mechanism, only: mechanism_t
+  use kinetostat_text_buffer, only: text_buffer_t
+  use kinetostat_csv_writer, only: write_csv
+  use kinetostat_table_writer, only: write_table
+  use kinetostat_json_writer, only: write_json
+  use kinetostat_labels, only: lang_en
+  implicit none
+  private
+  public :: run_options_t, run_mechanism, guard_finite
+  public :: format_table, format_csv, format_json, format_from_name, format_names
+
+  !> Output format: the legacy fixed-format table.
+  integer, parameter :: format_table = 1
+  !> Output format: CSV.
+  integer, parameter :: format_csv = 2
+  !> Output format: one JSON object.
+  integer, parameter :: format_json = 3
+  !> Names of the formats, for messages and --help.
+  character(*), parameter :: format_names = "table, csv, json"
+
+  !> How to run and what to write.
+  type :: run_options_t
+    !> format_table, format_csv or format_json.
+    integer :: format = format_table
+    !> Language of the legacy table (lang_en, lang_ru).
+    integer :: lang = lang_en
+  end type run_options_t
+
+contains
+
+  !> Output format code from its name; 0 when unknown.
+  pure integer function format_from_name(name)
+    !> Name given with --format.
+    character(*), intent(in) :: name
+    select case (name)
+    case ("table")
+      format_from_name = format_table
+    case ("csv")
+      format_from_name = format_csv
+    case ("json")
+      format_from_name = format_json
+    case default
+      format_from_name = 0
+    end select
+  end function format_from_name
+
+  !> Run one deck through a mechanism; on success `out` holds the whole output and `table`
+  !> the results (self-check figures, warning) for the caller's remarks.
+  subroutine run_mechanism(mech, group, path, options, table, out, error)
+    !> The mechanism named by the deck's first group.
+    class(mechanism_t), intent(inout) :: mech
+    !> Namelist group name (mechanism kind).
+    character(*), intent(in) :: group
+    !> Deck file.
+    character(*), intent(in) :: path
+    !> Format and language.
+    type(run_options_t), intent(in) :: options
+    !> The results.
+    type(step_table_t), intent(out) :: table
+    !> The output text.
+    type(text_buffer_t), intent(inout) :: out
+    !> Input, geometry or overflow error.
+    type(error_t), allocatable, intent(out) :: error
+
+    call mech%read_deck(path, error)
+    if (allocated(error)) return
+    table%mechanism = group
+    table%deck = path
+    table%row_name = "step"
+    table%driver = "M1"
+    call mech%solve(table, error)
+    if (allocated(error)) return
+    call guard_finite(table, error)
+    if (allocated(error)) return
+    select case (options%format)
+    case (format_csv)
+      call write_csv(table, out)
+    case (format_json)
+      call write_json(mech%title(options%lang), table, out)
+    case default
+      call write_table(mech, table, options%lang, out)
+    end select
+  end subroutine run_mechanism
+
+  !> Nothing that is not finite may reach an output: a non-finite result is a geometry
+  !> error (exit 3) naming the step, its input angle and the quantity.
+  pure subroutine guard_finite(table, error)
+    !> The results.
+    type(step_table_t), intent(in) :: table
+    !> The error, if any value is not finite.
+    type(error_t), allocatable, intent(out) :: error
+    integer :: k, c, i
+    do k = 1, table%row_count()
+      do c = 1, size(table%columns)
+        if (ieee_is_finite(table%rows(c, k))) cycle
+        call fatal_error(error, exit_geometry, table%deck//": &"//table%mechanism//": "// &
+          row_text(table, k)//": "//table%columns(c)%name// &
+          " is not finite (overflow: the deck's magnitudes are out of the representable range)")
+        return
+      end do
+    end do
+    do i = 1, table%echo_count
+      if (table%echo(i)%kind /= echo_real_kind .and. table%echo(i)%kind /= echo_array_kind) cycle
+      if (all(ieee_is_finite(table%echo(i)%values))) cycle
+      call fatal_error(error, exit_geometry, table%deck//": &"//table%mechanism//": derived input value "// &
+        table%echo(i)%name//" is not finite (overflow: the deck's magnitudes are out of the representable range)")
+      return
+    end do
+    if (table%has_selfcheck) then
+      if (.not. (ieee_is_finite(table%max_residual) .and. ieee_is_finite(table%max_mismatch))) then
+        call fatal_error(error, exit_geometry, table%deck//": &"//table%mechanism// &
+          ": the self-check figures are not finite (overflow: the deck's magnitudes are out of the "// &
+          "representable range)")
+      end if
+    end if
+  end subroutine guard_finite
+
+  !> "step k (phi1 = x deg)" or "stage k".
+  pure function row_text(table, k) result(text)
+    type(step_table_t), intent(in) :: table
+    integer, intent(in) :: k
+    character(len=:), allocatable :: text
+    character(len=32) :: buf
+    real(wp) :: x
+    integer :: n
+    text = table%row_name//" "//int_str(k)
+    if (table%input_column > 0) then
+      x = table%rows(table%input_column, k)
+      if (ieee_is_finite(x)) then
+        write (buf, '(g0.10)') x
+        buf = adjustl(buf)
+        if (index(buf, ".") > 0 .and. scan(buf, "eE") == 0) then
+          n = len_trim(buf)
+          do while (buf(n:n) == "0")
+            buf(n:n) = " "
+            n = n - 1
+          end do
+          if (buf(n:n) == ".") buf(n:n) = " "
+        end if
+        text = text//" ("//table%columns(table%input_column)%name//" = "//trim(adjustl(buf))//" "// &
+          table%columns(table%input_column)%unit//")"
+      end if
+    end if
+  end function row_text
+
+end module kinetostat_run

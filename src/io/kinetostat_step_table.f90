@@ -1,0 +1,293 @@
+!> The step table: everything a run reports, independent of the output format.
+!> Columns (name, unit, kind of quantity), one row of `real(wp)` values per step (or per
+!> stage), the INPUT DATA echo records, the self-check figures and the run's remarks.
+!> Every mechanism fills one; every writer (CSV, legacy table, JSON) reads one.
+module kinetostat_step_table
+  use kinetostat_kinds, only: wp
+  implicit none
+  private
+  public :: step_table_t, column_t, echo_record_t
+  public :: col_input_angle, col_force, col_force_angle, col_component, col_moment, col_length, &
+    col_flag, col_count, col_ratio, col_other, column_kind_names
+  public :: echo_real_kind, echo_int_kind, echo_logical_kind, echo_array_kind, echo_text_kind, &
+    echo_heading_kind, echo_line_kind
+
+  !> Column kind: the input coordinate of the step (crank angle, cam angle), deg.
+  integer, parameter :: col_input_angle = 1
+  !> Column kind: magnitude of a pair force, N.
+  integer, parameter :: col_force = 2
+  !> Column kind: angle of a pair force, deg.
+  integer, parameter :: col_force_angle = 3
+  !> Column kind: a signed force or force component, N.
+  integer, parameter :: col_component = 4
+  !> Column kind: a moment (torque), N*m.
+  integer, parameter :: col_moment = 5
+  !> Column kind: a length or displacement, m (or mm where the unit says so).
+  integer, parameter :: col_length = 6
+  !> Column kind: a 0/1 flag (written as an integer).
+  integer, parameter :: col_flag = 7
+  !> Column kind: a whole number such as a stage index or a tooth count (written as an integer).
+  integer, parameter :: col_count = 8
+  !> Column kind: a dimensionless ratio.
+  integer, parameter :: col_ratio = 9
+  !> Column kind: anything else (angles of links, speeds, ...).
+  integer, parameter :: col_other = 10
+  !> Names of the column kinds, for JSON and the docs.
+  character(*), parameter :: column_kind_names(*) = [character(len=13) :: "input_angle", "force", &
+    "force_angle", "component", "moment", "length", "flag", "count", "ratio", "other"]
+
+  !> Echo record: a real deck value.
+  integer, parameter :: echo_real_kind = 1
+  !> Echo record: an integer deck value.
+  integer, parameter :: echo_int_kind = 2
+  !> Echo record: a logical deck value.
+  integer, parameter :: echo_logical_kind = 3
+  !> Echo record: an array of reals.
+  integer, parameter :: echo_array_kind = 4
+  !> Echo record: a text value (e.g. a layout name).
+  integer, parameter :: echo_text_kind = 5
+  !> Echo record: a sub-heading (blank line, then the text).
+  integer, parameter :: echo_heading_kind = 6
+  !> Echo record: a line of text printed as it is (a summary line of a group of values).
+  integer, parameter :: echo_line_kind = 7
+
+  !> One output column.
+  type :: column_t
+    !> Name as in the CSV header (e.g. "F16").
+    character(len=:), allocatable :: name
+    !> SI unit ("N", "deg", "N*m", "" for dimensionless).
+    character(len=:), allocatable :: unit
+    !> Kind of quantity (col_*).
+    integer :: kind = col_other
+    !> False for a column shown only by the legacy table and JSON (not part of the CSV).
+    logical :: csv = .true.
+  end type column_t
+
+  !> One INPUT DATA echo record.
+  type :: echo_record_t
+    !> echo_*_kind.
+    integer :: kind = echo_real_kind
+    !> Variable name as printed (e.g. "L_AB"), or the text of a heading/line.
+    character(len=:), allocatable :: name
+    !> Unit text ("m", "kg", ...).
+    character(len=:), allocatable :: unit
+    !> Real value(s): one for echo_real_kind, all for echo_array_kind.
+    real(wp), allocatable :: values(:)
+    !> Integer value (echo_int_kind).
+    integer :: int_value = 0
+    !> Logical value (echo_logical_kind).
+    logical :: logical_value = .false.
+    !> Text value (echo_text_kind).
+    character(len=:), allocatable :: text
+  end type echo_record_t
+
+  !> All results of a run.
+  type :: step_table_t
+    !> Mechanism kind: the namelist group name ("pr3207").
+    character(len=:), allocatable :: mechanism
+    !> Deck path as given (for titles and messages).
+    character(len=:), allocatable :: deck
+    !> A line printed under the deck line of the legacy table (the deck's own title), if any.
+    character(len=:), allocatable :: subtitle
+    !> What one row is, for messages ("step", "stage").
+    character(len=:), allocatable :: row_name
+    !> Index of the column holding the input coordinate (0 when there is none).
+    integer :: input_column = 0
+    !> The columns.
+    type(column_t), allocatable :: columns(:)
+    !> Values, rows(column, row).
+    real(wp), allocatable :: rows(:, :)
+    !> INPUT DATA echo records, in print order.
+    type(echo_record_t), allocatable :: echo(:)
+    !> Number of echo records in use.
+    integer :: echo_count = 0
+    !> Whether the run has a self-check.
+    logical :: has_selfcheck = .true.
+    !> Largest relative equilibrium residual over all links and rows.
+    real(wp) :: max_residual = 0.0_wp
+    !> Largest relative mismatch of the driving effort against its independent value.
+    real(wp) :: max_mismatch = 0.0_wp
+    !> Name of the driving quantity ("M1", "F2", ...).
+    character(len=:), allocatable :: driver
+    !> Footer label of the residual line (default: all links and steps).
+    character(len=:), allocatable :: residual_label
+    !> Footer label of the mismatch line (default: driver vs power balance).
+    character(len=:), allocatable :: mismatch_label
+    !> A remark for the user (stderr), if any.
+    character(len=:), allocatable :: warning
+  contains
+    procedure :: add_column
+    procedure :: set_columns
+    procedure :: column_index
+    procedure :: allocate_rows
+    procedure :: row_count
+    procedure :: echo_real
+    procedure :: echo_int
+    procedure :: echo_logical
+    procedure :: echo_array
+    procedure :: echo_text
+    procedure :: echo_heading
+    procedure :: echo_line
+  end type step_table_t
+
+contains
+
+  !> Append one column.
+  pure subroutine add_column(self, name, unit, kind, csv)
+    class(step_table_t), intent(inout) :: self
+    !> Column name.
+    character(*), intent(in) :: name
+    !> Unit text.
+    character(*), intent(in) :: unit
+    !> col_* kind.
+    integer, intent(in) :: kind
+    !> Whether the CSV shows it (default true).
+    logical, intent(in), optional :: csv
+    type(column_t) :: c
+    c%name = name
+    c%unit = unit
+    c%kind = kind
+    if (present(csv)) c%csv = csv
+    if (.not. allocated(self%columns)) allocate (self%columns(0))
+    self%columns = [self%columns, c]
+  end subroutine add_column
+
+  !> Set all columns at once from parallel lists of names, units and kinds.
+  pure subroutine set_columns(self, names, units, kinds)
+    class(step_table_t), intent(inout) :: self
+    !> Column names (trailing blanks dropped).
+    character(*), intent(in) :: names(:)
+    !> Units (trailing blanks dropped).
+    character(*), intent(in) :: units(:)
+    !> col_* kinds.
+    integer, intent(in) :: kinds(:)
+    integer :: i
+    if (allocated(self%columns)) deallocate (self%columns)
+    allocate (self%columns(size(names)))
+    do i = 1, size(names)
+      self%columns(i)%name = trim(names(i))
+      self%columns(i)%unit = trim(units(i))
+      self%columns(i)%kind = kinds(i)
+    end do
+  end subroutine set_columns
+
+  !> Index of the column called `name` (0 when there is none).
+  pure integer function column_index(self, name)
+    class(step_table_t), intent(in) :: self
+    !> Column name.
+    character(*), intent(in) :: name
+    integer :: i
+    column_index = 0
+    do i = 1, size(self%columns)
+      if (self%columns(i)%name == name) then
+        column_index = i
+        return
+      end if
+    end do
+  end function column_index
+
+  !> Allocate `n` rows of zeros for the columns defined so far.
+  pure subroutine allocate_rows(self, n)
+    class(step_table_t), intent(inout) :: self
+    !> Number of rows.
+    integer, intent(in) :: n
+    if (allocated(self%rows)) deallocate (self%rows)
+    allocate (self%rows(size(self%columns), n), source=0.0_wp)
+  end subroutine allocate_rows
+
+  !> Number of rows.
+  pure integer function row_count(self)
+    class(step_table_t), intent(in) :: self
+    row_count = 0
+    if (allocated(self%rows)) row_count = size(self%rows, 2)
+  end function row_count
+
+  pure subroutine push_echo(self, record)
+    class(step_table_t), intent(inout) :: self
+    type(echo_record_t), intent(in) :: record
+    type(echo_record_t), allocatable :: grown(:)
+    if (.not. allocated(self%echo)) allocate (self%echo(16))
+    if (self%echo_count == size(self%echo)) then
+      allocate (grown(2 * size(self%echo)))
+      grown(1:self%echo_count) = self%echo(1:self%echo_count)
+      call move_alloc(grown, self%echo)
+    end if
+    self%echo_count = self%echo_count + 1
+    self%echo(self%echo_count) = record
+  end subroutine push_echo
+
+  !> Echo a real deck value.
+  pure subroutine echo_real(self, name, value, unit)
+    class(step_table_t), intent(inout) :: self
+    !> Name as printed.
+    character(*), intent(in) :: name
+    !> Value.
+    real(wp), intent(in) :: value
+    !> Unit text.
+    character(*), intent(in) :: unit
+    call push_echo(self, echo_record_t(kind=echo_real_kind, name=name, unit=unit, values=[value]))
+  end subroutine echo_real
+
+  !> Echo an integer deck value.
+  pure subroutine echo_int(self, name, value, unit)
+    class(step_table_t), intent(inout) :: self
+    !> Name as printed.
+    character(*), intent(in) :: name
+    !> Value.
+    integer, intent(in) :: value
+    !> Unit text.
+    character(*), intent(in) :: unit
+    call push_echo(self, echo_record_t(kind=echo_int_kind, name=name, unit=unit, int_value=value))
+  end subroutine echo_int
+
+  !> Echo a logical deck value.
+  pure subroutine echo_logical(self, name, value, unit)
+    class(step_table_t), intent(inout) :: self
+    !> Name as printed.
+    character(*), intent(in) :: name
+    !> Value.
+    logical, intent(in) :: value
+    !> Unit text (or a remark).
+    character(*), intent(in) :: unit
+    call push_echo(self, echo_record_t(kind=echo_logical_kind, name=name, unit=unit, logical_value=value))
+  end subroutine echo_logical
+
+  !> Echo an array of reals.
+  pure subroutine echo_array(self, name, values, unit)
+    class(step_table_t), intent(inout) :: self
+    !> Name as printed.
+    character(*), intent(in) :: name
+    !> Values.
+    real(wp), intent(in) :: values(:)
+    !> Unit text.
+    character(*), intent(in) :: unit
+    call push_echo(self, echo_record_t(kind=echo_array_kind, name=name, unit=unit, values=values))
+  end subroutine echo_array
+
+  !> Echo a text value.
+  pure subroutine echo_text(self, name, text)
+    class(step_table_t), intent(inout) :: self
+    !> Name as printed.
+    character(*), intent(in) :: name
+    !> Value.
+    character(*), intent(in) :: text
+    call push_echo(self, echo_record_t(kind=echo_text_kind, name=name, unit="", text=text))
+  end subroutine echo_text
+
+  !> A sub-heading inside the INPUT DATA block.
+  pure subroutine echo_heading(self, text)
+    class(step_table_t), intent(inout) :: self
+    !> Heading text.
+    character(*), intent(in) :: text
+    call push_echo(self, echo_record_t(kind=echo_heading_kind, name=text, unit=""))
+  end subroutine echo_heading
+
+  !> A pre-formatted line inside the INPUT DATA block.
+  pure subroutine echo_line(self, text)
+    class(step_table_t), intent(inout) :: self
+    !> The line.
+    character(*), intent(in) :: text
+    call push_echo(self, echo_record_t(kind=echo_line_kind, name=text, unit=""))
+  end subroutine echo_line
+
+end module kinetostat_step_table

@@ -1,0 +1,139 @@
+!> Legacy table writer: the frame every mechanism's printout shares (title, deck, INPUT DATA
+!> echo, RESULTS heading, self-check footer) around the mechanism's own RESULTS layout, in
+!> English or in the Russian of the 1991 printouts.
+module kinetostat_table_writer
+  use kinetostat_kinds, only: wp
+  use kinetostat_selfcheck, only: selfcheck_tolerance
+  use kinetostat_step_table, only: step_table_t, echo_record_t, echo_real_kind, echo_int_kind, &
+    echo_logical_kind, echo_array_kind, echo_text_kind, echo_heading_kind, echo_line_kind
+  use kinetostat_format, only: echo_number, echo_array_number, footer_number, pad_right
+  use kinetostat_labels, only: label
+  use kinetostat_mechanism, only: mechanism_t
+  use kinetostat_text_buffer, only: text_buffer_t
+  implicit none
+  private
+  public :: write_table, put_heading, selfcheck_verdict
+
+  !> Display width of the name part of an INPUT DATA line ("   NAME ... =" puts "=" in column 20).
+  integer, parameter :: echo_name_width = 16
+  !> Display width of the label part of a footer line (the figure starts in column 58).
+  integer, parameter :: footer_label_width = 54
+  !> Values per line of an echoed array.
+  integer, parameter :: echo_array_per_line = 5
+  !> Format of the self-check limit in the footer heading.
+  character(*), parameter :: limit_fmt = '(es8.1)'
+
+contains
+
+  !> The whole legacy table of a run.
+  pure subroutine write_table(mech, table, lang, out)
+    !> The mechanism (its title and RESULTS layout).
+    class(mechanism_t), intent(in) :: mech
+    !> Finite results.
+    type(step_table_t), intent(in) :: table
+    !> lang_en or lang_ru.
+    integer, intent(in) :: lang
+    !> Where the lines go.
+    type(text_buffer_t), intent(inout) :: out
+    integer :: i
+    call out%put(" "//mech%title(lang))
+    call out%put(" "//label("DECK: ", lang)//table%deck)
+    if (allocated(table%subtitle)) call out%put(" "//label("TITLE: ", lang)//table%subtitle)
+    call put_heading(out, label("INPUT DATA", lang))
+    do i = 1, table%echo_count
+      call put_echo(out, table%echo(i))
+    end do
+    call put_heading(out, label("RESULTS", lang))
+    call mech%write_results(table, lang, out)
+    if (table%has_selfcheck) call put_footer(out, table, lang)
+  end subroutine write_table
+
+  !> A heading: a blank line, then the text after one blank.
+  pure subroutine put_heading(out, text)
+    !> Where the lines go.
+    type(text_buffer_t), intent(inout) :: out
+    !> Heading text.
+    character(*), intent(in) :: text
+    call out%put("")
+    call out%put(" "//text)
+  end subroutine put_heading
+
+  !> One INPUT DATA record.
+  pure subroutine put_echo(out, e)
+    type(text_buffer_t), intent(inout) :: out
+    type(echo_record_t), intent(in) :: e
+    character(len=18) :: whole
+    character(len=:), allocatable :: line
+    integer :: i
+    select case (e%kind)
+    case (echo_real_kind)
+      call out%put(name_part(e%name)//echo_number(e%values(1))//"  "//e%unit)
+    case (echo_int_kind)
+      write (whole, '(i18)') e%int_value
+      call out%put(name_part(e%name)//whole//"  "//e%unit)
+    case (echo_logical_kind)
+      write (whole, '(l18)') e%logical_value
+      call out%put(name_part(e%name)//whole//"  "//e%unit)
+    case (echo_text_kind)
+      call out%put(name_part(e%name)//"  "//e%text)
+    case (echo_array_kind)
+      write (whole, '(i0)') size(e%values)
+      call out%put(name_part(e%name//"("//trim(whole)//")")//"  "//e%unit)
+      line = ""
+      do i = 1, size(e%values)
+        line = line//echo_array_number(e%values(i))
+        if (mod(i, echo_array_per_line) == 0 .or. i == size(e%values)) then
+          call out%put(repeat(" ", 6)//line)
+          line = ""
+        end if
+      end do
+      if (size(e%values) == 0) call out%put("")
+    case (echo_heading_kind)
+      call put_heading(out, e%name)
+    case (echo_line_kind)
+      call out%put(e%name)
+    end select
+  end subroutine put_echo
+
+  !> "   NAME" padded so that "=" falls in column 20, then "=".
+  pure function name_part(name) result(text)
+    character(*), intent(in) :: name
+    character(len=:), allocatable :: text
+    text = "   "//pad_right(name, echo_name_width)//"="
+  end function name_part
+
+  !> "OK" when a self-check figure is within the limit, "!!" otherwise (also for NaN).
+  pure function selfcheck_verdict(x) result(verdict)
+    !> Self-check figure.
+    real(wp), intent(in) :: x
+    character(len=2) :: verdict
+    verdict = "!!"
+    if (x <= selfcheck_tolerance) verdict = "OK"
+  end function selfcheck_verdict
+
+  !> The self-check footer.
+  pure subroutine put_footer(out, table, lang)
+    type(text_buffer_t), intent(inout) :: out
+    type(step_table_t), intent(in) :: table
+    integer, intent(in) :: lang
+    character(len=16) :: limit
+    character(len=:), allocatable :: residual_label, mismatch_label
+    write (limit, limit_fmt) selfcheck_tolerance
+    call put_heading(out, label("SELF-CHECK (relative; limit ", lang)//trim(adjustl(limit))//")")
+    if (allocated(table%residual_label)) then
+      residual_label = label(table%residual_label, lang)
+    else
+      residual_label = label("MAX EQUILIBRIUM RESIDUAL, ALL LINKS AND STEPS", lang)
+    end if
+    if (allocated(table%mismatch_label)) then
+      mismatch_label = label(table%mismatch_label, lang)
+    else
+      mismatch_label = label("MAX ", lang)//table%driver//" "//label("MISMATCH VS POWER BALANCE", lang)
+    end if
+    call out%put("   "//pad_right(residual_label, footer_label_width)//footer_number(table%max_residual)// &
+                 "  "//selfcheck_verdict(table%max_residual))
+    call out%put("   "//pad_right(mismatch_label, footer_label_width)//footer_number(table%max_mismatch)// &
+                 "  "//selfcheck_verdict(table%max_mismatch))
+  end subroutine put_footer
+
+end module kinetostat_table_writer

@@ -1,0 +1,257 @@
+!> PR 3050 as a mechanism of the run pipeline: deck -> every rocker step -> step table, and
+!> the legacy table layout (one E-format line per step, then the prismatic-pair block).
+module kinetostat_pr3050_layout
+  use kinetostat_kinds, only: wp, deg_to_rad
+  use kinetostat_error, only: error_t
+  use kinetostat_text, only: int_str, real_str
+  use kinetostat_vec2, only: angle_360_deg
+  use kinetostat_noise, only: noise_rel, noise_floor, force_columns, angles_0_360
+  use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_component, &
+    col_moment, col_length, col_other
+  use kinetostat_format, only: fixed_field, exp_field
+  use kinetostat_labels, only: lang_ru
+  use kinetostat_text_buffer, only: text_buffer_t
+  use kinetostat_table_writer, only: put_heading
+  use kinetostat_mechanism, only: mechanism_t
+  use kinetostat_pr3050, only: pr3050_step_t, pr3050_step, pr3050_check_position
+  use kinetostat_pr3050_deck, only: pr3050_deck_t, read_pr3050_deck, write_pr3050_template
+  implicit none
+  private
+  public :: pr3050_mechanism_t, new_pr3050, pr3050_solve, pr3050_csv_columns, pr3050_csv_values
+
+  !> CSV columns, in the spec's order.
+  character(*), parameter :: pr3050_csv_columns(*) = [character(len=7) :: &
+    "phi3rel", "F14", "F14G", "F34", "F34G", "F32", "F32G", "F2"]
+  !> Units of the CSV columns.
+  character(*), parameter :: column_units(*) = [character(len=3) :: &
+    "deg", "N", "deg", "N", "deg", "N", "deg", "N"]
+  !> Kinds of the CSV columns.
+  integer, parameter :: column_kinds(*) = [col_input_angle, col_force, col_force_angle, col_force, &
+    col_force_angle, col_force, col_force_angle, col_component]
+  !> Results header (the original's identifiers) and units.
+  character(*), parameter :: header_lines(*) = [character(len=88) :: &
+    "     F13G         F14    F14G         F34    F34G         F32    F32G          F2", &
+    "      deg           N     deg           N     deg           N     deg           N"]
+  !> Heading of the block with the prismatic pair 1-2 and the cylinder's motion.
+  character(*), parameter :: pair_heading = &
+    "PRISMATIC PAIR 1-2 (ON ROD 2 FROM CYLINDER 1: N21 ALONG E2+90 DEG AT B, M21 CCW) AND CYLINDER"
+  !> Header of the prismatic-pair block and units.
+  character(*), parameter :: pair_header_lines(*) = [character(len=88) :: &
+    "     F13G      PHI2         S      SDOT         N21         M21", &
+    "      deg       deg         m       m/s           N         N*m"]
+
+  !> PR 3050: four-bar with an oscillating hydraulic cylinder, manual section 4.
+  type, extends(mechanism_t) :: pr3050_mechanism_t
+    !> The validated deck.
+    type(pr3050_deck_t) :: deck
+  contains
+    procedure :: read_deck
+    procedure :: solve
+    procedure :: title
+    procedure :: write_results
+    procedure :: write_template
+  end type pr3050_mechanism_t
+
+contains
+
+  !> A new PR 3050 mechanism (the registry's constructor).
+  subroutine new_pr3050(mech)
+    !> The mechanism.
+    class(mechanism_t), allocatable, intent(out) :: mech
+    allocate (pr3050_mechanism_t :: mech)
+  end subroutine new_pr3050
+
+  subroutine read_deck(self, path, error)
+    class(pr3050_mechanism_t), intent(inout) :: self
+    character(*), intent(in) :: path
+    type(error_t), allocatable, intent(out) :: error
+    call read_pr3050_deck(path, self%deck, error)
+  end subroutine read_deck
+
+  pure function title(self, lang) result(text)
+    class(pr3050_mechanism_t), intent(in) :: self
+    integer, intent(in) :: lang
+    character(len=:), allocatable :: text
+    if (lang == lang_ru) then
+      text = "KINETOSTAT  PR 3050  СИЛОВОЙ РАСЧЕТ ЧЕТЫРЕХЗВЕННОГО" // &
+        " МЕХАНИЗМА С КАЧАЮЩИМСЯ ГИДРОЦИЛИНДРОМ"
+    else
+      text = "KINETOSTAT  PR 3050  FORCE ANALYSIS OF THE FOUR-BAR WITH AN OSCILLATING HYDRAULIC CYLINDER"
+    end if
+  end function title
+
+  pure subroutine write_template(self, out)
+    class(pr3050_mechanism_t), intent(in) :: self
+    type(text_buffer_t), intent(inout) :: out
+    call write_pr3050_template(out)
+  end subroutine write_template
+
+  !> All steps of a validated deck; a geometry error (exit 3) names the step and rocker angle.
+  subroutine pr3050_solve(deck, steps, error)
+    !> Validated deck.
+    type(pr3050_deck_t), intent(in) :: deck
+    !> One result per rocker step.
+    type(pr3050_step_t), allocatable, intent(out) :: steps(:)
+    !> Geometry error: "step k (phi3 = x deg): reason".
+    type(error_t), allocatable, intent(out) :: error
+    integer :: k
+    allocate (steps(deck%n))
+    do k = 1, deck%n
+      call pr3050_check_position(deck%p, deck%phi3_deg(k) * deg_to_rad, error)
+      if (allocated(error)) then
+        error%message = "step "//int_str(k)//" (phi3 = "//real_str(deck%phi3_deg(k))//" deg): "//error%message
+        return
+      end if
+      steps(k) = pr3050_step(deck%p, deck%phi3_deg(k) * deg_to_rad, deck%omega3(k), deck%eps3(k))
+    end do
+  end subroutine pr3050_solve
+
+  !> A warning when the rocker passes the dead position (C, B, A collinear: phi3 = k*180 deg,
+  !> where s' = 0 and F2 is unbounded) strictly between two computed steps; every step is
+  !> valid, but the table does not show the singularity in between.
+  pure subroutine dead_position_between_steps(deck, warning)
+    !> Validated deck.
+    type(pr3050_deck_t), intent(in) :: deck
+    !> The warning, unallocated when the range stays clear.
+    character(len=:), allocatable, intent(out) :: warning
+    integer :: k, half_turns
+    do k = 2, deck%n
+      half_turns = floor(deck%phi3_deg(k) / 180.0_wp)
+      if (floor(deck%phi3_deg(k - 1) / 180.0_wp) /= half_turns .and. &
+          modulo(deck%phi3_deg(k), 180.0_wp) /= 0.0_wp) then
+        warning = "between step "//int_str(k - 1)//" (phi3 = "//real_str(deck%phi3_deg(k - 1))// &
+          " deg) and step "//int_str(k)//" (phi3 = "//real_str(deck%phi3_deg(k))// &
+          " deg) the rocker passes the dead position phi3 = "//real_str(180.0_wp * half_turns)// &
+          " deg (C, B, A collinear: F2 is unbounded there)"
+        return
+      end if
+    end do
+  end subroutine dead_position_between_steps
+
+  !> Every step into the step table (the CSV columns, then the prismatic-pair block's).
+  subroutine solve(self, table, error)
+    class(pr3050_mechanism_t), intent(in) :: self
+    type(step_table_t), intent(inout) :: table
+    type(error_t), allocatable, intent(out) :: error
+    type(pr3050_step_t), allocatable :: steps(:)
+    real(wp) :: floor, n21, m21
+    integer :: k, nc
+    call pr3050_solve(self%deck, steps, error)
+    if (allocated(error)) then
+      error%message = table%deck//": &pr3050: "//error%message
+      return
+    end if
+    call table%set_columns(pr3050_csv_columns, column_units, column_kinds)
+    call table%add_column("PHI2", "deg", col_other, csv=.false.)
+    call table%add_column("S", "m", col_length, csv=.false.)
+    call table%add_column("SDOT", "m/s", col_other, csv=.false.)
+    call table%add_column("N21", "N", col_component, csv=.false.)
+    call table%add_column("M21", "N*m", col_moment, csv=.false.)
+    table%input_column = 1
+    nc = size(pr3050_csv_columns)
+    call table%allocate_rows(size(steps))
+    do k = 1, size(steps)
+      associate (v => table%rows(:, k), s => steps(k))
+        v(1:nc) = pr3050_csv_values(s, phi3rel(self%deck, k))
+        floor = noise_rel * maxval(abs(v(2:8:2)))
+        n21 = s%n21
+        if (abs(n21) <= floor) n21 = 0.0_wp
+        m21 = s%m21
+        if (abs(m21) <= floor * (self%deck%p%l_ca + self%deck%p%l_cb)) m21 = 0.0_wp
+        v(nc + 1:nc + 5) = [angle_360_deg([cos(s%phi2), sin(s%phi2)]), s%s, s%s_dot + 0.0_wp, &
+                            n21 + 0.0_wp, m21 + 0.0_wp]
+      end associate
+    end do
+    table%max_residual = maxval(steps%residual)
+    table%max_mismatch = maxval(steps%mismatch)
+    table%driver = "F2"
+    call dead_position_between_steps(self%deck, table%warning)
+    call echo_deck(self%deck, table)
+  end subroutine solve
+
+  !> The row of CSV values of one step.
+  !> Forces below `noise_rel` times the step's largest force are roundoff: printed as 0 with angle 0.
+  pure function pr3050_csv_values(s, phi3rel) result(v)
+    !> Results of the step.
+    type(pr3050_step_t), intent(in) :: s
+    !> Rocker angle from the first step, phi3 - phi3_start (the original's F13G), deg.
+    real(wp), intent(in) :: phi3rel
+    real(wp) :: v(size(pr3050_csv_columns))
+    real(wp) :: floor, f(2, 3)
+    f = reshape([s%f14, s%f34, s%f32], [2, 3])
+    floor = noise_floor(f, [s%f2])
+    v(1) = phi3rel
+    v(2:7) = force_columns(f, floor, angles_0_360)
+    v(8) = s%f2
+    if (abs(v(8)) <= floor) v(8) = 0.0_wp
+  end function pr3050_csv_values
+
+  !> The INPUT DATA echo of the deck.
+  pure subroutine echo_deck(deck, table)
+    type(pr3050_deck_t), intent(in) :: deck
+    type(step_table_t), intent(inout) :: table
+    call table%echo_real("L_CA", deck%p%l_ca, "m")
+    call table%echo_real("L_CB", deck%p%l_cb, "m")
+    call table%echo_real("L_CS3", deck%p%l_cs3, "m")
+    call table%echo_real("DELTA", deck%delta_deg, "deg")
+    call table%echo_real("L_BS2", deck%p%l_bs2, "m")
+    call table%echo_real("L_S1A", deck%p%l_s1a, "m")
+    call table%echo_real("GAMMA", deck%gamma_deg, "deg")
+    call table%echo_real("G", deck%p%g, "m/s^2")
+    call table%echo_real("M1", deck%p%m1, "kg")
+    call table%echo_real("M2", deck%p%m2, "kg")
+    call table%echo_real("M3", deck%p%m3, "kg")
+    call table%echo_real("J1", deck%p%j1, "kg*m^2")
+    call table%echo_real("J2", deck%p%j2, "kg*m^2")
+    call table%echo_real("J3", deck%p%j3, "kg*m^2")
+    call table%echo_real("PHI3_START", deck%phi3_start, "deg")
+    call table%echo_real("PHI3_END", deck%phi3_end, "deg")
+    call table%echo_real("DPHI3", deck%dphi3, "deg")
+    call table%echo_int("N", deck%n, "steps")
+    call table%echo_array("OMEGA3", deck%omega3, "rad/s")
+    call table%echo_array("EPS3", deck%eps3, "rad/s^2")
+  end subroutine echo_deck
+
+  !> RESULTS: one line per step (rocker angle, three reactions with angles, F2; E format as
+  !> the original), then the prismatic pair 1-2 and the cylinder's motion.
+  pure subroutine write_results(self, table, lang, out)
+    class(pr3050_mechanism_t), intent(in) :: self
+    type(step_table_t), intent(in) :: table
+    integer, intent(in) :: lang
+    type(text_buffer_t), intent(inout) :: out
+    integer :: k, i
+    character(len=:), allocatable :: line
+    do k = 1, size(header_lines)
+      call out%put(trim(header_lines(k)))
+    end do
+    do k = 1, table%row_count()
+      associate (v => table%rows(:, k))
+        line = fixed_field(v(1), 9, 2)
+        do i = 2, 6, 2
+          line = line//exp_field(v(i), 12, 3)//fixed_field(v(i + 1), 8, 2)
+        end do
+        call out%put(line//exp_field(v(8), 12, 3))
+      end associate
+    end do
+    call put_heading(out, pair_heading)
+    do k = 1, size(pair_header_lines)
+      call out%put(trim(pair_header_lines(k)))
+    end do
+    do k = 1, table%row_count()
+      associate (v => table%rows(:, k))
+        call out%put(fixed_field(v(1), 9, 2)//fixed_field(v(9), 10, 2)//fixed_field(v(10), 10, 4)// &
+                     fixed_field(v(11), 10, 4)//exp_field(v(12), 12, 3)//exp_field(v(13), 12, 3))
+      end associate
+    end do
+    if (lang == lang_ru .and. self%deck%n < 0) call out%put("")
+  end subroutine write_results
+
+  !> Rocker angle of step `k` from the first step, (k - 1)*dphi3, deg.
+  pure function phi3rel(deck, k) result(angle)
+    type(pr3050_deck_t), intent(in) :: deck
+    integer, intent(in) :: k
+    real(wp) :: angle
+    angle = real(k - 1, wp) * deck%dphi3
+  end function phi3rel
+
+end module kinetostat_pr3050_layout

@@ -1,0 +1,236 @@
+!> T.FTN as a mechanism of the run pipeline: deck -> every crank step -> step table, and the
+!> legacy table layout of appendix 2 (two lines per step).
+module kinetostat_sixbar_layout
+  use kinetostat_kinds, only: wp, deg_to_rad, rad_to_deg
+  use kinetostat_error, only: error_t, fatal_error, exit_geometry
+  use kinetostat_text, only: real_str, int_str
+  use kinetostat_noise, only: noise_floor, force_columns, angles_pm180
+  use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_component, &
+    col_moment
+  use kinetostat_format, only: fixed_field
+  use kinetostat_labels, only: lang_ru
+  use kinetostat_text_buffer, only: text_buffer_t
+  use kinetostat_mechanism, only: mechanism_t
+  use kinetostat_sixbar, only: sixbar_step_t, sixbar_step, sixbar_ok, sixbar_open1, sixbar_dead1, &
+    sixbar_open2, sixbar_dead2
+  use kinetostat_sixbar_deck, only: sixbar_deck_t, read_sixbar_deck, write_sixbar_template
+  implicit none
+  private
+  public :: sixbar_mechanism_t, new_sixbar, sixbar_solve, sixbar_csv_columns, sixbar_csv_values
+
+  !> CSV columns, in the spec's order.
+  character(*), parameter :: sixbar_csv_columns(*) = [character(len=4) :: &
+    "phi1", "F21", "F21G", "F32", "F32G", "F43", "F43G", "F45", "F45G", "F36", "F36G", &
+    "F16", "F16G", "F56", "M1"]
+  !> Units of the columns.
+  character(*), parameter :: column_units(*) = [character(len=3) :: &
+    "deg", "N", "deg", "N", "deg", "N", "deg", "N", "deg", "N", "deg", "N", "deg", "N", "N*m"]
+  !> Kinds of the columns.
+  integer, parameter :: column_kinds(*) = [col_input_angle, col_force, col_force_angle, col_force, &
+    col_force_angle, col_force, col_force_angle, col_force, col_force_angle, col_force, col_force_angle, &
+    col_force, col_force_angle, col_component, col_moment]
+  !> Results header: appendix 2's two lines (F0 = crank angle), then units and frames.
+  character(*), parameter :: header_lines(*) = [character(len=108) :: &
+    "       F0         F21         F32         F43         F45         F36         F16         F56          M1", &
+    "                 F21G        F32G        F43G        F45G        F36G        F16G", &
+    "      deg           N           N           N           N           N           N           N         N*m", &
+    "                deg/x1      deg/x1      deg/x2      deg/x2      deg/x1      deg/x1"]
+
+  !> T.FTN: six-bar crank-rocker-slider, manual section 2.
+  type, extends(mechanism_t) :: sixbar_mechanism_t
+    !> The validated deck.
+    type(sixbar_deck_t) :: deck
+  contains
+    procedure :: read_deck
+    procedure :: solve
+    procedure :: title
+    procedure :: write_results
+    procedure :: write_template
+  end type sixbar_mechanism_t
+
+contains
+
+  !> A new T.FTN mechanism (the registry's constructor).
+  subroutine new_sixbar(mech)
+    !> The mechanism.
+    class(mechanism_t), allocatable, intent(out) :: mech
+    allocate (sixbar_mechanism_t :: mech)
+  end subroutine new_sixbar
+
+  subroutine read_deck(self, path, error)
+    class(sixbar_mechanism_t), intent(inout) :: self
+    character(*), intent(in) :: path
+    type(error_t), allocatable, intent(out) :: error
+    call read_sixbar_deck(path, self%deck, error)
+  end subroutine read_deck
+
+  pure function title(self, lang) result(text)
+    class(sixbar_mechanism_t), intent(in) :: self
+    integer, intent(in) :: lang
+    character(len=:), allocatable :: text
+    if (lang == lang_ru) then
+      text = "KINETOSTAT  T.FTN  СИЛОВОЙ РАСЧЕТ ШЕСТИЗВЕННОГО" // &
+        " МЕХАНИЗМА (КРИВОШИП-КОРОМЫСЛО-ПОЛЗУН)"
+    else
+      text = "KINETOSTAT  T.FTN  FORCE ANALYSIS OF THE SIX-BAR CRANK-ROCKER-SLIDER MECHANISM"
+    end if
+  end function title
+
+  pure subroutine write_template(self, out)
+    class(sixbar_mechanism_t), intent(in) :: self
+    type(text_buffer_t), intent(inout) :: out
+    call write_sixbar_template(out)
+  end subroutine write_template
+
+  !> All steps of a validated deck; a step that cannot be assembled (or is a dead position)
+  !> is a geometry error naming the step number and the crank angle.
+  pure subroutine sixbar_solve(path, deck, steps, error)
+    !> Deck file, for the message.
+    character(*), intent(in) :: path
+    !> Validated deck.
+    type(sixbar_deck_t), intent(in) :: deck
+    !> One result per crank step.
+    type(sixbar_step_t), allocatable, intent(out) :: steps(:)
+    !> Geometry error (exit 3).
+    type(error_t), allocatable, intent(out) :: error
+    integer :: k
+    allocate (steps(deck%n))
+    do k = 1, deck%n
+      steps(k) = sixbar_step(deck%p, deck%phi1_deg(k) * deg_to_rad, deck%f5(k))
+      if (steps(k)%status /= sixbar_ok) then
+        call fatal_error(error, exit_geometry, path//": &sixbar: step "//int_str(k)//" (phi1 = "// &
+          real_str(deck%phi1_deg(k))//" deg): "//failure_text(deck, steps(k)))
+        return
+      end if
+    end do
+  end subroutine sixbar_solve
+
+  !> Why a position failed, with the numbers.
+  pure function failure_text(deck, s) result(text)
+    type(sixbar_deck_t), intent(in) :: deck
+    type(sixbar_step_t), intent(in) :: s
+    character(len=:), allocatable :: text
+    real(wp) :: l2, l3
+    l2 = deck%p%lam2 * deck%p%l1
+    l3 = deck%p%lam3 * deck%p%l1
+    select case (s%status)
+    case (sixbar_open1)
+      text = "contour A-B-C-D cannot be assembled: |BD| = "//real_str(s%pos%detail)// &
+        " m is outside [|l2 - l3|, l2 + l3] = ["//real_str(abs(l2 - l3))//", "//real_str(l2 + l3)//"] m"
+    case (sixbar_dead1)
+      text = "dead position of contour A-B-C-D: B, C, D in line (sin(phi3 - phi2) = "// &
+        real_str(s%pos%detail)//"), reactions undetermined"
+    case (sixbar_open2)
+      text = "contour D-E-H cannot be assembled: |e - y_E| = "//real_str(s%pos%detail)// &
+        " m exceeds l4 = "//real_str(deck%p%lam4 * deck%p%l1)//" m"
+    case (sixbar_dead2)
+      text = "dead position of contour D-E-H: link 4 perpendicular to the guide (cos(phi4) = "// &
+        real_str(s%pos%detail)//"), reactions undetermined"
+    case default
+      text = "position failure "//int_str(s%status)
+    end select
+  end function failure_text
+
+  !> Every step into the step table, with the INPUT DATA echo and the self-check.
+  subroutine solve(self, table, error)
+    class(sixbar_mechanism_t), intent(in) :: self
+    type(step_table_t), intent(inout) :: table
+    type(error_t), allocatable, intent(out) :: error
+    type(sixbar_step_t), allocatable :: steps(:)
+    integer :: k
+    call sixbar_solve(table%deck, self%deck, steps, error)
+    if (allocated(error)) return
+    call table%set_columns(sixbar_csv_columns, column_units, column_kinds)
+    table%input_column = 1
+    call table%allocate_rows(size(steps))
+    do k = 1, size(steps)
+      table%rows(:, k) = sixbar_csv_values(steps(k), self%deck%p%l1)
+    end do
+    table%max_residual = maxval(steps%residual)
+    table%max_mismatch = maxval(steps%mismatch)
+    table%driver = "M1"
+    call echo_deck(self%deck, table)
+  end subroutine solve
+
+  !> The row of values of one step. Forces below `noise_rel` times the step's largest
+  !> force (and M1 below that force times l1) are roundoff: printed as 0 with angle 0.
+  pure function sixbar_csv_values(s, l1) result(v)
+    !> One computed step.
+    type(sixbar_step_t), intent(in) :: s
+    !> Crank length, m (moment scale).
+    real(wp), intent(in) :: l1
+    real(wp) :: v(size(sixbar_csv_columns))
+    real(wp) :: floor, f(2, 6)
+    f = reshape([s%f21, s%f32, s%f43, s%f45, s%f36, s%f16], [2, 6])
+    floor = noise_floor(f, [s%f56])
+    v(1) = s%pos%phi1 * rad_to_deg
+    v(2:13) = force_columns(f, floor, angles_pm180)
+    v(14) = s%f56
+    if (abs(v(14)) <= floor) v(14) = 0.0_wp
+    v(15) = s%m1
+    if (abs(v(15)) <= floor * l1) v(15) = 0.0_wp
+  end function sixbar_csv_values
+
+  !> The INPUT DATA echo of the deck.
+  pure subroutine echo_deck(deck, table)
+    type(sixbar_deck_t), intent(in) :: deck
+    type(step_table_t), intent(inout) :: table
+    call table%echo_real("A", deck%p%a, "m")
+    call table%echo_real("B", deck%p%b, "m")
+    call table%echo_real("L1", deck%p%l1, "m")
+    call table%echo_real("LAM2", deck%p%lam2, "l_BC/l1")
+    call table%echo_real("LAM_S2", deck%p%lam_s2, "l_BS2/l_BC")
+    call table%echo_real("LAM3", deck%p%lam3, "l_DC/l1")
+    call table%echo_real("LAM_DE", deck%p%lam_de, "l_DE/l1")
+    call table%echo_real("LAM4", deck%p%lam4, "l_EH/l1")
+    call table%echo_real("LAM_S4", deck%p%lam_s4, "l_ES4/l_EH")
+    call table%echo_real("LAM_E", deck%p%lam_e, "e/l1")
+    call table%echo_real("M1", deck%p%m1, "kg")
+    call table%echo_real("M2", deck%p%m2, "kg")
+    call table%echo_real("M3", deck%p%m3, "kg")
+    call table%echo_real("M4", deck%p%m4, "kg")
+    call table%echo_real("M5", deck%p%m5, "kg")
+    call table%echo_real("J1", deck%p%j1, "kg*m^2")
+    call table%echo_real("J2", deck%p%j2, "kg*m^2")
+    call table%echo_real("J3", deck%p%j3, "kg*m^2")
+    call table%echo_real("J4", deck%p%j4, "kg*m^2")
+    call table%echo_real("OMEGA1", deck%p%omega1, "rad/s")
+    call table%echo_real("G", deck%p%g, "m/s^2")
+    call table%echo_logical("START_AT_EXTREME", deck%start_at_extreme, "")
+    call table%echo_real("PHI_START", deck%phi_start, "deg (frame 1)")
+    call table%echo_real("DPHI", deck%dphi, "deg")
+    call table%echo_int("N", deck%n, "steps")
+    call table%echo_array("F5", deck%f5, "N (along +x2)")
+    call table%echo_logical("LEGACY_EQ2", deck%p%legacy_eq2, "(1991 erratum in eps_q2)")
+  end subroutine echo_deck
+
+  !> RESULTS as appendix 2: per step the crank angle, six force magnitudes, F56 and M1, and
+  !> under them the six force angles; fields 9 and 12 wide.
+  pure subroutine write_results(self, table, lang, out)
+    class(sixbar_mechanism_t), intent(in) :: self
+    type(step_table_t), intent(in) :: table
+    integer, intent(in) :: lang
+    type(text_buffer_t), intent(inout) :: out
+    integer :: k, i
+    character(len=:), allocatable :: line
+    do k = 1, size(header_lines)
+      call out%put(trim(header_lines(k)))
+    end do
+    do k = 1, table%row_count()
+      associate (v => table%rows(:, k))
+        line = fixed_field(v(1), 9, 2)
+        do i = 2, 14, 2
+          line = line//fixed_field(v(i), 12, 2)
+        end do
+        call out%put(line//fixed_field(v(15), 12, 3))
+        line = repeat(" ", 9)
+        do i = 3, 13, 2
+          line = line//fixed_field(v(i), 12, 2)
+        end do
+        call out%put(line)
+      end associate
+    end do
+    if (lang == lang_ru .and. self%deck%n < 0) call out%put("")
+  end subroutine write_results
+
+end module kinetostat_sixbar_layout
