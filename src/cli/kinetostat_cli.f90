@@ -6,7 +6,7 @@ module kinetostat_cli
   use kinetostat_kinds, only: version_string
   use kinetostat_error, only: error_t, fatal_error, exit_success, exit_usage, exit_input
   use kinetostat_text, only: int_str
-  use kinetostat_posix, only: path_kind, path_special, rename_file, process_id
+  use kinetostat_posix, only: path_kind, path_special, rename_file, process_id, write_standard_output
   use kinetostat_deck, only: read_group_name
   use kinetostat_step_table, only: step_table_t
   use kinetostat_text_buffer, only: text_buffer_t
@@ -234,17 +234,14 @@ contains
     if (length > 0) call get_command_argument(i, arg)
   end function argument
 
-  !> The output on stdout, checked: a failed write (e.g. a full disk) is an error.
+  !> The output on stdout, checked: a failed write (a full disk, a closed pipe) is an error.
   subroutine write_stdout(out, error)
     type(text_buffer_t), intent(in) :: out
     type(error_t), allocatable, intent(out) :: error
-    integer :: ios
-    character(len=512) :: msg
-    msg = ""
-    if (out%length > 0) write (output_unit, '(a)', advance='no', iostat=ios, iomsg=msg) out%data(1:out%length)
-    if (out%length == 0) ios = 0
-    if (ios == 0) flush (output_unit, iostat=ios, iomsg=msg)
-    if (ios /= 0) call fatal_error(error, exit_input, "standard output: cannot write: "//trim(msg))
+    if (out%length == 0) return
+    flush (output_unit)
+    if (.not. write_standard_output(out%data(1:out%length))) &
+      call fatal_error(error, exit_input, "standard output: cannot write the output (disk full or pipe closed?)")
   end subroutine write_stdout
 
   !> The output into FILE. A regular (or new) FILE is written as a temporary beside it and

@@ -1,10 +1,10 @@
 !> The operating-system calls the program needs beyond Fortran's intrinsics: the kind of
 !> file a path names, renaming a file, the process id.
 module kinetostat_posix
-  use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char
+  use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_size_t, c_long
   implicit none
   private
-  public :: path_kind, rename_file, process_id
+  public :: path_kind, rename_file, process_id, write_standard_output
   public :: path_absent, path_regular, path_directory, path_special
 
   !> path_kind: no such file.
@@ -27,6 +27,13 @@ module kinetostat_posix
       character(kind=c_char), intent(in) :: old(*), new(*)
       integer(c_int) :: status
     end function c_rename
+    function c_write(fd, buf, count) bind(c, name="write") result(written)
+      import :: c_int, c_char, c_size_t, c_long
+      integer(c_int), value :: fd
+      character(kind=c_char), intent(in) :: buf(*)
+      integer(c_size_t), value :: count
+      integer(c_long) :: written
+    end function c_write
     function c_getpid() bind(c, name="getpid") result(pid)
       import :: c_int
       integer(c_int) :: pid
@@ -55,5 +62,24 @@ contains
   integer function process_id()
     process_id = int(c_getpid())
   end function process_id
+
+  !> Write `text` to standard output (file descriptor 1) unbuffered, every byte checked;
+  !> false when the system refused a write (a full disk, a closed pipe).
+  logical function write_standard_output(text)
+    !> The bytes.
+    character(*), intent(in) :: text
+    integer(c_long) :: written
+    integer :: done
+    done = 0
+    write_standard_output = .true.
+    do while (done < len(text))
+      written = c_write(1_c_int, text(done + 1:), int(len(text) - done, c_size_t))
+      if (written <= 0) then
+        write_standard_output = .false.
+        return
+      end if
+      done = done + int(written)
+    end do
+  end function write_standard_output
 
 end module kinetostat_posix
