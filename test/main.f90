@@ -9,6 +9,7 @@ program kinetostat_tests
   use test_gears, only: run_gears_tests
   use test_cam, only: run_cam_tests
   use test_assur, only: run_assur_tests
+  use test_io, only: run_io_tests
   implicit none
   type(test_counts_t) :: t
   call run_foundation_tests(t)
@@ -18,5 +19,6 @@ program kinetostat_tests
   call run_gears_tests(t)
   call run_cam_tests(t)
   call run_assur_tests(t)
+  call run_io_tests(t)
   call report_counts(t)
 end program kinetostat_tests

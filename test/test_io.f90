@@ -1,0 +1,163 @@
+!> Unit tests of the output side: the step table, the output policy (fields never `*`,
+!> exponent form when too wide), and every writer (CSV, legacy table frame, JSON), and the
+!> finite guard of the run pipeline.
+module test_io
+  use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_positive_inf
+  use kinetostat_kinds, only: wp
+  use kinetostat_error, only: error_t, exit_geometry
+  use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_flag, col_count
+  use kinetostat_format, only: fixed_field, exp_field, int_field, full_number, whole_number, echo_number, &
+    display_width, pad_right
+  use kinetostat_text_buffer, only: text_buffer_t
+  use kinetostat_csv_writer, only: write_csv
+  use kinetostat_json_writer, only: write_json, json_string
+  use kinetostat_run, only: guard_finite
+  use test_harness, only: test_counts_t, check_true
+  implicit none
+  private
+  public :: run_io_tests
+
+contains
+
+  subroutine run_io_tests(t)
+    type(test_counts_t), intent(inout) :: t
+    call test_fields(t)
+    call test_step_table(t)
+    call test_csv(t)
+    call test_json(t)
+    call test_guard(t)
+  end subroutine run_io_tests
+
+  !> Expect `computed` to equal `expected` exactly, printing both on failure.
+  subroutine check_text(t, name, expected, computed)
+    type(test_counts_t), intent(inout) :: t
+    character(*), intent(in) :: name, expected, computed
+    call check_true(t, name, expected == computed, "expected '"//expected//"', computed '"//computed//"'")
+  end subroutine check_text
+
+  subroutine test_fields(t)
+    type(test_counts_t), intent(inout) :: t
+    real(wp) :: x
+    integer :: e
+    character(len=12) :: f
+    call check_text(t, "fixed_field fits", "     2741.19", fixed_field(2741.19_wp, 12, 2))
+    call check_text(t, "fixed_field negative zero", "        0.00", fixed_field(-0.0_wp, 12, 2))
+    ! 123456789.00 takes all 12 characters: it would run into the previous field
+    call check_text(t, "fixed_field too wide -> exponent", "  1.2346E+08", fixed_field(123456789.0_wp, 12, 2))
+    call check_text(t, "fixed_field 1e300", "  1.00E+300", fixed_field(1.0e300_wp, 11, 2))
+    call check_text(t, "fixed_field -1e-300 rounds", "      -0.00", fixed_field(-1.0e-300_wp, 11, 2))
+    call check_text(t, "fixed_field -1e300", " -1.00E+300", fixed_field(-1.0e300_wp, 11, 2))
+    call check_text(t, "exp_field legacy E", "   0.274E+04", exp_field(2741.19_wp, 12, 3))
+    call check_text(t, "exp_field keeps E for 3-digit exponents", "  0.100E+301", exp_field(1.0e300_wp, 12, 3))
+    call check_text(t, "int_field", " -1", int_field(-1.0_wp, 3))
+    call check_text(t, "full_number", "2.741190000000E+003", full_number(2741.19_wp))
+    call check_text(t, "full_number minus zero", "0.000000000000E+000", full_number(-0.0_wp))
+    call check_text(t, "whole_number", "1", whole_number(1.0_wp))
+    call check_text(t, "whole_number of a fraction", "1.500000000000E+000", whole_number(1.5_wp))
+    call check_text(t, "echo_number 3-digit exponent keeps E", " -1.000000000E+300", echo_number(-1.0e300_wp))
+    call check_true(t, "display_width Cyrillic", display_width("ИСХОДНЫЕ") == 8, "UTF-8 letters count once")
+    call check_true(t, "pad_right Cyrillic", display_width(pad_right("Н*м", 6)) == 6, "padded to 6 columns")
+    ! no '*' in any field over the whole exponent range, at every width the tables use
+    do e = -308, 308, 7
+      x = -7.123456789_wp * 10.0_wp**e
+      f = fixed_field(x, 12, 2)
+      call check_true(t, "fixed_field no star 1e"//trim(itoa(e)), index(f, "*") == 0 .and. f(1:1) == " ", &
+                      "got '"//f//"'")
+      call check_true(t, "fixed_field width 9 1e"//trim(itoa(e)), index(fixed_field(x, 9, 2), "*") == 0, &
+                      "got '"//fixed_field(x, 9, 2)//"'")
+      call check_true(t, "exp_field no star 1e"//trim(itoa(e)), index(exp_field(x, 12, 3), "*") == 0, &
+                      "got '"//exp_field(x, 12, 3)//"'")
+    end do
+  end subroutine test_fields
+
+  function itoa(i) result(s)
+    integer, intent(in) :: i
+    character(len=12) :: s
+    write (s, '(i0)') i
+  end function itoa
+
+  !> A small table: two rows, an angle, a force with its angle, a flag, a count.
+  function sample_table() result(table)
+    type(step_table_t) :: table
+    table%mechanism = "demo"
+    table%deck = 'dir/"quoted".nml'
+    table%row_name = "step"
+    table%driver = "M1"
+    call table%add_column("phi1", "deg", col_input_angle)
+    call table%add_column("F16", "N", col_force)
+    call table%add_column("F16G", "deg", col_force_angle)
+    call table%add_column("JAM", "", col_flag)
+    call table%add_column("z1", "", col_count)
+    call table%add_column("hidden", "m", col_force, csv=.false.)
+    table%input_column = 1
+    call table%allocate_rows(2)
+    table%rows(:, 1) = [0.0_wp, 2741.19_wp, 180.0_wp, 0.0_wp, 20.0_wp, 1.0_wp]
+    table%rows(:, 2) = [30.0_wp, -0.0_wp, 0.0_wp, 1.0_wp, 40.0_wp, 2.0_wp]
+    call table%echo_real("L_AB", 0.11_wp, "m")
+    call table%echo_array("F5C", [1.0_wp, 2.0_wp], "N")
+  end function sample_table
+
+  subroutine test_step_table(t)
+    type(test_counts_t), intent(inout) :: t
+    type(step_table_t) :: table
+    integer :: i
+    table = sample_table()
+    call check_true(t, "step table column_index", table%column_index("F16G") == 3, "F16G is column 3")
+    call check_true(t, "step table column_index unknown", table%column_index("nope") == 0, "0 when absent")
+    call check_true(t, "step table rows", table%row_count() == 2, "two rows")
+    call check_true(t, "step table echo count", table%echo_count == 2, "two records")
+    do i = 1, 40
+      call table%echo_real("X", real(i, wp), "")
+    end do
+    call check_true(t, "step table echo grows", table%echo_count == 42 .and. table%echo(42)%values(1) == 40.0_wp, &
+                    "42 records, the last 40")
+  end subroutine test_step_table
+
+  subroutine test_csv(t)
+    type(test_counts_t), intent(inout) :: t
+    type(text_buffer_t) :: out
+    character(len=*), parameter :: nl = new_line("a")
+    call write_csv(sample_table(), out)
+    call check_text(t, "csv writer", "phi1,F16,F16G,JAM,z1"//nl// &
+      "0.000000000000E+000,2.741190000000E+003,1.800000000000E+002,0,20"//nl// &
+      "3.000000000000E+001,0.000000000000E+000,0.000000000000E+000,1,40"//nl, out%text())
+  end subroutine test_csv
+
+  subroutine test_json(t)
+    type(test_counts_t), intent(inout) :: t
+    type(text_buffer_t) :: out
+    character(len=:), allocatable :: text
+    call write_json("DEMO TITLE", sample_table(), out)
+    text = out%text()
+    call check_true(t, "json escapes the deck path", index(text, '"deck": "dir/\"quoted\".nml"') > 0, text)
+    call check_true(t, "json rows", index(text, "[3.000000000000E+001, 0.000000000000E+000, " // &
+                    "0.000000000000E+000, 1, 40, 2.000000000000E+000]") > 0, text)
+    call check_true(t, "json hidden column listed", index(text, '"name": "hidden", "unit": "m", "kind": "force", ' // &
+                    '"csv": false}') > 0, text)
+    call check_true(t, "json array echo", index(text, '{"name": "F5C", "value": [1.000000000000E+000, ' // &
+                    '2.000000000000E+000], "unit": "N"}') > 0, text)
+    call check_text(t, "json_string control characters", '"a\u0009b\\c"', json_string("a"//achar(9)//"b\c"))
+  end subroutine test_json
+
+  subroutine test_guard(t)
+    type(test_counts_t), intent(inout) :: t
+    type(step_table_t) :: table
+    type(error_t), allocatable :: error
+    table = sample_table()
+    call guard_finite(table, error)
+    call check_true(t, "guard passes finite results", .not. allocated(error), "no error")
+    table%rows(2, 2) = ieee_value(1.0_wp, ieee_quiet_nan)
+    call guard_finite(table, error)
+    call check_true(t, "guard rejects NaN", allocated(error), "an error")
+    if (allocated(error)) then
+      call check_true(t, "guard exit 3", error%code == exit_geometry, "code 3")
+      call check_text(t, "guard message", 'dir/"quoted".nml: &demo: step 2 (phi1 = 30 deg): F16 is not finite ' // &
+        "(overflow: the deck's magnitudes are out of the representable range)", error%message)
+    end if
+    table = sample_table()
+    table%max_residual = ieee_value(1.0_wp, ieee_positive_inf)
+    call guard_finite(table, error)
+    call check_true(t, "guard rejects an infinite self-check figure", allocated(error), "an error")
+  end subroutine test_guard
+
+end module test_io
