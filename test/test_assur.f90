@@ -204,7 +204,7 @@ contains
     type(assur_dyad_t), intent(in) :: dyads(:)
     type(assur_mech_t) :: mech
     integer :: i
-    mech%dyads = dyads
+    allocate (mech%dyads, source=dyads)
     allocate (mech%links(0:2 * size(dyads) + 1))
     mech%links = [(assur_link_t(id=i), i=0, 2 * size(dyads) + 1)]
     allocate (mech%forces(0), mech%moment_link(0))

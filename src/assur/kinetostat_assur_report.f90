@@ -292,7 +292,7 @@ contains
     do ip = 1, np
       any_p = any_p .or. assur_pair_prismatic(deck, ip)
     end do
-    names = [(deck%pair_name(ip)(1:12), ip=1, np)]
+    names = [character(len=12) :: (deck%pair_name(ip)(1:12), ip=1, np)]
     write (unit, header_fmt) "PHI1", (adjustr(names(ip)), ip=1, np), "M1"
     write (unit, header_fmt) "", (adjustr(trim(names(ip))//"G"), ip=1, np)
     if (any_p) then
