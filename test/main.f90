@@ -72,6 +72,7 @@ contains
     case ("gears"); call run_gears_tests(t)
     case ("cam"); call run_cam_tests(t)
     case ("assur"); call run_assur_tests(t)
+    case default; error stop "run_suite: no suite '"//name//"'"
     end select
   end subroutine run_suite
 
