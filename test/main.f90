@@ -1,5 +1,7 @@
 !> kinetostat's Fortran test program: physics and unit tests of every mechanism.
-!> Prints one line per failure and ends with "fortran: N passed, M failed".
+!> Prints one line per failure and ends with "fortran: N passed, M failed"; stops with exit
+!> status 1 when anything failed. With arguments, runs only the named suites
+!> (`fpm test -- pr3207 cam`); an unknown name is a usage error (exit 2) listing the names.
 program kinetostat_tests
   use test_harness, only: test_counts_t, report_counts
   use test_foundation, only: run_foundation_tests
@@ -10,15 +12,70 @@ program kinetostat_tests
   use test_cam, only: run_cam_tests
   use test_assur, only: run_assur_tests
   use test_io, only: run_io_tests
+  use, intrinsic :: iso_fortran_env, only: error_unit
   implicit none
+  !> Suite names, in the order they run.
+  character(*), parameter :: suite_names(*) = [character(len=10) :: &
+    "foundation", "pr3207", "pr3050", "sixbar", "gears", "cam", "assur", "io"]
   type(test_counts_t) :: t
-  call run_foundation_tests(t)
-  call run_pr3207_tests(t)
-  call run_pr3050_tests(t)
-  call run_sixbar_tests(t)
-  call run_gears_tests(t)
-  call run_cam_tests(t)
-  call run_assur_tests(t)
-  call run_io_tests(t)
+  logical :: selected(size(suite_names))
+  integer :: i
+
+  call select_suites(selected)
+  do i = 1, size(suite_names)
+    if (selected(i)) call run_suite(trim(suite_names(i)), t)
+  end do
   call report_counts(t)
+  if (t%failed > 0) stop 1
+
+contains
+
+  !> All suites without arguments, otherwise the ones named on the command line.
+  subroutine select_suites(selected)
+    logical, intent(out) :: selected(:)
+    character(len=64) :: arg
+    integer :: i, k
+    if (command_argument_count() == 0) then
+      selected = .true.
+      return
+    end if
+    selected = .false.
+    do i = 1, command_argument_count()
+      call get_command_argument(i, arg)
+      k = findloc(suite_names, arg, dim=1)
+      if (k == 0) then
+        write (error_unit, '(a)') "kinetostat-tests: unknown suite '"//trim(arg)//"'; suites: "//suite_list()
+        stop 2
+      end if
+      selected(k) = .true.
+    end do
+  end subroutine select_suites
+
+  !> The suite names separated by blanks.
+  function suite_list() result(list)
+    character(len=:), allocatable :: list
+    integer :: i
+    list = trim(suite_names(1))
+    do i = 2, size(suite_names)
+      list = list//" "//trim(suite_names(i))
+    end do
+  end function suite_list
+
+  !> Run the suite called `name`.
+  subroutine run_suite(name, t)
+    character(*), intent(in) :: name
+    type(test_counts_t), intent(inout) :: t
+    select case (name)
+    case ("foundation"); call run_foundation_tests(t)
+    case ("pr3207"); call run_pr3207_tests(t)
+    case ("pr3050"); call run_pr3050_tests(t)
+    case ("sixbar"); call run_sixbar_tests(t)
+    case ("gears"); call run_gears_tests(t)
+    case ("cam"); call run_cam_tests(t)
+    case ("assur"); call run_assur_tests(t)
+    case ("io"); call run_io_tests(t)
+    case default; error stop "run_suite: no suite '"//name//"'"
+    end select
+  end subroutine run_suite
+
 end program kinetostat_tests

@@ -123,6 +123,8 @@ contains
       m(2) = -mk(1)
       m(3) = m(2) - mk(2) - cross(p(:, 3) - p(:, 1), f(:, 3))
       cond = abs(det)
+    case default
+      error stop "cramer: unknown dyad kind"
     end select
   end subroutine cramer
 
@@ -159,6 +161,8 @@ contains
           p(:, 1) = p(:, 2); p(:, 3) = p(:, 2)
         case (kind_rpp)
           p(:, 2) = p(:, 1)
+        case default
+          continue  ! RRR: three distinct pins
         end select
         do j = 1, 2
           fk(:, j) = [uniform(state, -1.0e3_wp, 1.0e3_wp), uniform(state, -1.0e3_wp, 1.0e3_wp)]
@@ -204,7 +208,7 @@ contains
     type(assur_dyad_t), intent(in) :: dyads(:)
     type(assur_mech_t) :: mech
     integer :: i
-    mech%dyads = dyads
+    allocate (mech%dyads, source=dyads)
     allocate (mech%links(0:2 * size(dyads) + 1))
     mech%links = [(assur_link_t(id=i), i=0, 2 * size(dyads) + 1)]
     allocate (mech%forces(0), mech%moment_link(0))

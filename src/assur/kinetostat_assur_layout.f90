@@ -83,8 +83,10 @@ contains
     type(assur_step_t), allocatable :: steps(:)
     character(len=24), allocatable :: names(:)
     integer :: k, c, ip
+    allocate (steps(0)) ! defined before the call (gcc's -Wmaybe-uninitialized on the descriptor)
     call assur_solve(table%deck, self%deck, steps, error)
     if (allocated(error)) return
+    allocate (names(0))
     names = assur_csv_columns(self%deck)
     allocate (table%columns(0))
     call table%add_column("phi1", "deg", col_input_angle)
@@ -320,6 +322,7 @@ contains
     type(text_buffer_t), intent(inout) :: out
     character(len=:), allocatable :: line1, line2, line3, line4
     character(len=field_width) :: name
+    character(len=len(self%deck%pair_name)) :: full_name
     character(len=:), allocatable :: deg, newton, newton_m
     real(wp) :: mag, ang, nn, mm
     integer :: k, ip, np, pos
@@ -344,7 +347,8 @@ contains
     line3 = repeat(" ", phi_width)
     line4 = repeat(" ", phi_width)
     do ip = 1, np
-      name = self%deck%pair_name(ip)(1:field_width)
+      full_name = self%deck%pair_name(ip)
+      name = full_name(1:field_width)
       prismatic = assur_pair_prismatic(self%deck, ip)
       line1 = line1//adjustr(name)
       line2 = line2//right(trim(name)//"G", field_width)

@@ -168,10 +168,10 @@ contains
       call table%echo_array("DS_DPHI", deck%ds_dphi(1:max(1, min(deck%n, deck%given(4)))), "m/rad")
     end if
     call table%echo_array("F2", deck%f2(1:max(1, min(deck%n, deck%given(2)))), "N")
-    if (deck%follower == follower_translating) &
+    if (deck%follower == follower_translating) then
       call table%echo_array("VDIR", deck%vdir(1:max(1, min(deck%n, deck%given(3)))), "")
-    if (deck%follower == follower_translating) &
       call table%echo_real("THETA_CR", cam_critical_angle(deck%p) * rad_to_deg, "deg (rise; derived)")
+    end if
     call table%echo_real("KF_LIMIT", kf_limit, "(Reshetov)")
   end subroutine echo_deck
 
@@ -217,7 +217,6 @@ contains
         call out%put(line//"  "//flags_text(v, lang))
       end associate
     end do
-    if (self%deck%n < 0) call out%put("")
   end subroutine write_results
 
 end module kinetostat_cam_layout

@@ -240,8 +240,9 @@ contains
     type(error_t), allocatable, intent(out) :: error
     if (out%length == 0) return
     flush (output_unit)
-    if (.not. write_standard_output(out%data(1:out%length))) &
+    if (.not. write_standard_output(out%data(1:out%length))) then
       call fatal_error(error, exit_input, "standard output: cannot write the output (disk full or pipe closed?)")
+    end if
   end subroutine write_stdout
 
   !> The output into FILE. A regular (or new) FILE is written as a temporary beside it and
@@ -296,20 +297,24 @@ contains
     if (out%length > 0) write (unit, iostat=ios, iomsg=msg) out%data(1:out%length)
     if (ios == 0) flush (unit, iostat=ios, iomsg=msg)
     if (ios /= 0) then
-      close (unit, iostat=ios)
       call fatal_error(error, exit_input, trim(msg))
+      close (unit, iostat=ios)
+      if (ios /= 0) error%message = error%message//" (and the file could not be closed)"
       return
     end if
     close (unit, iostat=ios, iomsg=msg)
     if (ios /= 0) call fatal_error(error, exit_input, trim(msg))
   end subroutine write_bytes
 
-  !> Delete a file if it exists (errors ignored: this is clean-up after an error).
+  !> Delete a file if it exists (clean-up after an error: a failure here changes nothing
+  !> about the error already being reported, so it is not reported again).
   subroutine remove_file(path)
     character(*), intent(in) :: path
     integer :: unit, ios
     open (newunit=unit, file=path, status='old', iostat=ios)
-    if (ios == 0) close (unit, status='delete', iostat=ios)
+    if (ios /= 0) return
+    close (unit, status='delete', iostat=ios)
+    if (ios /= 0) return
   end subroutine remove_file
 
 end module kinetostat_cli

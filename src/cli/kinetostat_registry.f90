@@ -17,6 +17,7 @@ module kinetostat_registry
     !> Allocate a new mechanism of one kind.
     subroutine constructor_i(mech)
       import :: mechanism_t
+      implicit none
       !> The mechanism.
       class(mechanism_t), allocatable, intent(out) :: mech
     end subroutine constructor_i
@@ -49,6 +50,7 @@ contains
     character(len=:), allocatable :: text
     type(registry_entry_t), allocatable :: entries(:)
     integer :: i
+    allocate (entries(0)) ! defined before the assignment (gcc's -Wuninitialized on the descriptor)
     entries = registry_entries()
     text = trim(entries(1)%name)
     do i = 2, size(entries)
@@ -64,6 +66,7 @@ contains
     class(mechanism_t), allocatable, intent(out) :: mech
     type(registry_entry_t), allocatable :: entries(:)
     integer :: i
+    allocate (entries(0)) ! defined before the assignment (gcc's -Wuninitialized on the descriptor)
     entries = registry_entries()
     do i = 1, size(entries)
       if (trim(entries(i)%name) == name) then

@@ -9,10 +9,13 @@ module kinetostat_lapack
   !> Reciprocal condition number below which a system counts as singular (dead position).
   real(wp), parameter :: rcond_threshold = 1.0e-12_wp
 
+  ! LAPACK's Fortran 77 interfaces take assumed-size arrays.
+  ! allow(assumed-size)
   interface
     !> LU factorisation and solve of a general system (LAPACK).
     pure subroutine dgesv(n, nrhs, a, lda, ipiv, b, ldb, info)
       import :: wp
+      implicit none
       integer, intent(in) :: n, nrhs, lda, ldb
       real(wp), intent(inout) :: a(lda, *), b(ldb, *)
       integer, intent(out) :: ipiv(*)
@@ -21,6 +24,7 @@ module kinetostat_lapack
     !> Reciprocal condition number estimate from an LU factorisation (LAPACK).
     pure subroutine dgecon(norm, n, a, lda, anorm, rcond, work, iwork, info)
       import :: wp
+      implicit none
       character, intent(in) :: norm
       integer, intent(in) :: n, lda
       real(wp), intent(in) :: a(lda, *), anorm

@@ -16,19 +16,23 @@ module kinetostat_posix
   !> path_kind: a device, FIFO or socket.
   integer, parameter :: path_special = 3
 
+  ! allow(assumed-size)
   interface
     function c_path_kind(path) bind(c, name="kinetostat_path_kind") result(kind)
       import :: c_int, c_char
+      implicit none
       character(kind=c_char), intent(in) :: path(*)
       integer(c_int) :: kind
     end function c_path_kind
     function c_rename(old, new) bind(c, name="rename") result(status)
       import :: c_int, c_char
+      implicit none
       character(kind=c_char), intent(in) :: old(*), new(*)
       integer(c_int) :: status
     end function c_rename
     function c_write(fd, buf, count) bind(c, name="write") result(written)
       import :: c_int, c_char, c_size_t, c_long
+      implicit none
       integer(c_int), value :: fd
       character(kind=c_char), intent(in) :: buf(*)
       integer(c_size_t), value :: count
@@ -36,6 +40,7 @@ module kinetostat_posix
     end function c_write
     function c_getpid() bind(c, name="getpid") result(pid)
       import :: c_int
+      implicit none
       integer(c_int) :: pid
     end function c_getpid
   end interface

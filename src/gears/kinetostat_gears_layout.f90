@@ -265,7 +265,6 @@ contains
         end if
       end associate
     end do
-    if (lang == lang_ru .and. self%deck%n < 0) call out%put("")
   end subroutine write_results
 
   pure function to_upper(s) result(t)

@@ -54,6 +54,8 @@ contains
       text = "РАСХОЖДЕНИЕ С БАЛАНСОМ МОЩНОСТЕЙ"
     case ("MAX ")
       text = "НАИБ. "
+    case default
+      text = english
     end select
   end function label
 

@@ -28,6 +28,7 @@ module kinetostat_mechanism
   abstract interface
     subroutine read_deck_i(self, path, error)
       import :: mechanism_t, error_t
+      implicit none
       class(mechanism_t), intent(inout) :: self
       !> Deck file.
       character(*), intent(in) :: path
@@ -37,6 +38,7 @@ module kinetostat_mechanism
 
     subroutine solve_i(self, table, error)
       import :: mechanism_t, step_table_t, error_t
+      implicit none
       class(mechanism_t), intent(in) :: self
       !> The results (mechanism and deck already set by the caller).
       type(step_table_t), intent(inout) :: table
@@ -46,6 +48,7 @@ module kinetostat_mechanism
 
     pure function title_i(self, lang) result(text)
       import :: mechanism_t
+      implicit none
       class(mechanism_t), intent(in) :: self
       !> lang_en or lang_ru.
       integer, intent(in) :: lang
@@ -54,6 +57,7 @@ module kinetostat_mechanism
 
     pure subroutine results_i(self, table, lang, out)
       import :: mechanism_t, step_table_t, text_buffer_t
+      implicit none
       class(mechanism_t), intent(in) :: self
       !> Finite results.
       type(step_table_t), intent(in) :: table
@@ -65,6 +69,7 @@ module kinetostat_mechanism
 
     pure subroutine template_i(self, out)
       import :: mechanism_t, text_buffer_t
+      implicit none
       class(mechanism_t), intent(in) :: self
       !> Where the lines go.
       type(text_buffer_t), intent(inout) :: out

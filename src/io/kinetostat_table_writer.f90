@@ -92,6 +92,8 @@ contains
       call put_heading(out, e%name)
     case (echo_line_kind)
       call out%put(e%name)
+    case default
+      call out%put(e%name)
     end select
   end subroutine put_echo
 

@@ -243,7 +243,6 @@ contains
                      fixed_field(v(11), 10, 4)//exp_field(v(12), 12, 3)//exp_field(v(13), 12, 3))
       end associate
     end do
-    if (lang == lang_ru .and. self%deck%n < 0) call out%put("")
   end subroutine write_results
 
   !> Rocker angle of step `k` from the first step, (k - 1)*dphi3, deg.

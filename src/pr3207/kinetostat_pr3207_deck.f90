@@ -39,7 +39,7 @@ module kinetostat_pr3207_deck
   end type pr3207_deck_t
 
   !> Template deck (reference data of the spec), one line per entry.
-  character(*), parameter :: template_lines(*) = [character(len=78) :: &
+  character(*), parameter :: template_lines(*) = [character(len=100) :: &
     "! kinetostat deck: PR 3207, six-bar slotted-link (shaper) mechanism.", &
     "! Frame: origin A, x from A to C pointing down (gravity along +x), y horizontal.", &
     "! Links: 1 crank AB, 2 block on the lever, 3 slotted lever CD, 4 block at D,", &

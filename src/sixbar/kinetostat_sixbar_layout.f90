@@ -230,7 +230,6 @@ contains
         call out%put(line)
       end associate
     end do
-    if (lang == lang_ru .and. self%deck%n < 0) call out%put("")
   end subroutine write_results
 
 end module kinetostat_sixbar_layout
