@@ -9,7 +9,7 @@ module kinetostat_assur_deck
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str
   use kinetostat_deck, only: deck_context_t, unset_real, unset_int, max_deck_array, &
-    open_deck, namelist_failure, deck_error, is_set, require_set, require_positive, &
+    deck_source_t, namelist_failure, deck_error, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn
   use kinetostat_vec2, only: unit_at
   use kinetostat_assur_kinematics, only: dyad_geometry_t, kind_names, kind_has_mode, &
@@ -199,15 +199,15 @@ contains
   end function assur_window
 
   !> Read and validate an `&assur` deck.
-  subroutine read_assur_deck(path, deck, error)
-    !> Deck file.
-    character(*), intent(in) :: path
+  subroutine read_assur_deck(source, deck, error)
+    !> The deck, read into memory (see load_deck).
+    type(deck_source_t), intent(in) :: source
     !> The validated deck.
     type(assur_deck_t), intent(out) :: deck
     !> Input error naming file, group, variable and reason.
     type(error_t), allocatable, intent(out) :: error
     character(len=80) :: title
-    integer :: frame_id, crank_id, n, nd, nf, nm, n_omega, n_eps, n_values, unit, ios, k, d, i
+    integer :: frame_id, crank_id, n, nd, nf, nm, n_omega, n_eps, n_values, ios, k, d, i
     real(wp) :: crank_at(2), crank_m, crank_j, crank_s(2), omega1, g, gravity_angle, phi_start, dphi
     real(wp), allocatable :: omega1_step(:), eps1_step(:), step_values(:)
     logical :: angles_signed, components
@@ -223,7 +223,7 @@ contains
       omega1_step, eps1_step, g, gravity_angle, phi_start, dphi, n, dyad, force, moment, &
       step_values, angles_signed, components
 
-    ctx%path = path
+    ctx%path = source%path
     ctx%group = group_name
     title = ""
     frame_id = 0; crank_id = 1; n = unset_int
@@ -234,10 +234,7 @@ contains
     allocate (omega1_step(max_deck_array), eps1_step(max_deck_array), step_values(max_deck_array), &
               source=unset_real)
 
-    call open_deck(path, unit, error)
-    if (allocated(error)) return
-    read (unit, nml=assur, iostat=ios, iomsg=msg)
-    close (unit)
+    read (source%lines, nml=assur, iostat=ios, iomsg=msg)
     if (ios /= 0) then
       call namelist_failure(ctx, ios, msg, error)
       return

@@ -10,6 +10,7 @@ module kinetostat_assur_report
   use kinetostat_assur_kinematics, only: kind_names
   use kinetostat_assur_statics, only: pair_is_prismatic
   use kinetostat_assur, only: assur_step_t, assur_step
+  use kinetostat_deck, only: deck_source_t
   use kinetostat_assur_deck, only: assur_deck_t, read_assur_deck
   implicit none
   private
@@ -75,9 +76,9 @@ contains
   end subroutine assur_solve
 
   !> Read the deck, compute every step, then write the table or CSV to `unit`.
-  subroutine run_assur(path, output_format, unit, error, summary)
-    !> Deck file.
-    character(*), intent(in) :: path
+  subroutine run_assur(source, output_format, unit, error, summary)
+    !> The deck, read into memory.
+    type(deck_source_t), intent(in) :: source
     !> `format_table` or `format_csv`.
     integer, intent(in) :: output_format
     !> Output unit.
@@ -88,16 +89,16 @@ contains
     type(run_summary_t), intent(out), optional :: summary
     type(assur_deck_t) :: deck
     type(assur_step_t), allocatable :: steps(:)
-    call read_assur_deck(path, deck, error)
+    call read_assur_deck(source, deck, error)
     if (allocated(error)) return
-    call assur_solve(path, deck, steps, error)
+    call assur_solve(source%path, deck, steps, error)
     if (allocated(error)) return
     if (present(summary)) summary = run_summary_t(size(steps), maxval(steps%residual), &
                                                   maxval(steps%mismatch), "M1")
     if (output_format == format_csv) then
       call write_assur_csv(unit, deck, steps)
     else
-      call write_assur_table(unit, path, deck, steps)
+      call write_assur_table(unit, source%path, deck, steps)
     end if
   end subroutine run_assur
 

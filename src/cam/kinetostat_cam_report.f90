@@ -9,6 +9,7 @@ module kinetostat_cam_report
     write_csv_header, write_csv_row
   use kinetostat_selfcheck, only: selfcheck_tolerance
   use kinetostat_cam, only: cam_step_t, cam_step, cam_critical_angle, kf_limit
+  use kinetostat_deck, only: deck_source_t
   use kinetostat_cam_deck, only: cam_deck_t, read_cam_deck, follower_translating
   implicit none
   private
@@ -52,9 +53,9 @@ contains
   end subroutine cam_solve
 
   !> Read the deck, compute every step, then write the table or CSV to `unit`.
-  subroutine run_cam(path, output_format, unit, error, summary)
-    !> Deck file.
-    character(*), intent(in) :: path
+  subroutine run_cam(source, output_format, unit, error, summary)
+    !> The deck, read into memory.
+    type(deck_source_t), intent(in) :: source
     !> `format_table` or `format_csv`.
     integer, intent(in) :: output_format
     !> Output unit.
@@ -68,12 +69,12 @@ contains
     integer :: i
     !> Word for one output row in messages.
     character(*), parameter :: row_name = "step"
-    call read_cam_deck(path, deck, error)
+    call read_cam_deck(source, deck, error)
     if (allocated(error)) return
     call cam_solve(deck, steps)
     do i = 1, size(steps)
       if (.not. all(ieee_is_finite(cam_csv_values(deck, steps(i), i)))) then
-        call fatal_error(error, exit_input, path//": results overflow at "//row_name//" "//int_str(i)// &
+        call fatal_error(error, exit_input, source%path//": results overflow at "//row_name//" "//int_str(i)// &
           ": input values out of the representable range")
         return
       end if
@@ -83,7 +84,7 @@ contains
     if (output_format == format_csv) then
       call write_cam_csv(unit, deck, steps)
     else
-      call write_cam_table(unit, path, deck, steps)
+      call write_cam_table(unit, source%path, deck, steps)
     end if
   end subroutine run_cam
 

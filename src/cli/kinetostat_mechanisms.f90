@@ -3,7 +3,7 @@
 !> Adding a mechanism = its own modules + one `case` in each routine here.
 module kinetostat_mechanisms
   use kinetostat_error, only: error_t, fatal_error, exit_input, exit_usage
-  use kinetostat_deck, only: read_group_name
+  use kinetostat_deck, only: deck_source_t, load_deck, read_group_name
   use kinetostat_output, only: run_summary_t
   use kinetostat_pr3207_report, only: run_pr3207
   use kinetostat_pr3207_deck, only: write_pr3207_template
@@ -39,21 +39,24 @@ contains
     !> Self-check figures (steps = 0 when the mechanism has none).
     type(run_summary_t), intent(out) :: summary
     character(len=:), allocatable :: group
-    call read_group_name(path, group, error)
+    type(deck_source_t) :: source
+    call load_deck(path, source, error)
+    if (allocated(error)) return
+    call read_group_name(source, group, error)
     if (allocated(error)) return
     select case (group)
     case ("pr3207")
-      call run_pr3207(path, output_format, unit, error, summary)
+      call run_pr3207(source, output_format, unit, error, summary)
     case ("pr3050")
-      call run_pr3050(path, output_format, unit, error, summary)
+      call run_pr3050(source, output_format, unit, error, summary)
     case ("sixbar")
-      call run_sixbar(path, output_format, unit, error, summary)
+      call run_sixbar(source, output_format, unit, error, summary)
     case ("gears")
-      call run_gears(path, output_format, unit, error, summary)
+      call run_gears(source, output_format, unit, error, summary)
     case ("cam")
-      call run_cam(path, output_format, unit, error, summary)
+      call run_cam(source, output_format, unit, error, summary)
     case ("assur")
-      call run_assur(path, output_format, unit, error, summary)
+      call run_assur(source, output_format, unit, error, summary)
     case default
       call fatal_error(error, exit_input, path//": &"//group// &
         ": unknown mechanism (known: "//known_kinds//")")

@@ -6,7 +6,7 @@ module kinetostat_gears_deck
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str, lower
   use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, unset_int, &
-    open_deck, namelist_failure, deck_error, is_set, require_set, require_positive, require_rule
+    deck_source_t, namelist_failure, deck_error, is_set, require_set, require_positive, require_rule
   use kinetostat_gears, only: gear_stage_t, gear_spur, gear_helical, gear_bevel, gear_planetary, &
     gear_kind_names
   implicit none
@@ -73,9 +73,9 @@ contains
   end subroutine write_gears_template
 
   !> Read and validate a `&gears` deck.
-  subroutine read_gears_deck(path, deck, error)
-    !> Deck file.
-    character(*), intent(in) :: path
+  subroutine read_gears_deck(source, deck, error)
+    !> The deck, read into memory (see load_deck).
+    type(deck_source_t), intent(in) :: source
     !> The validated deck.
     type(gears_deck_t), intent(out) :: deck
     !> Input error naming file, group, variable and reason.
@@ -83,13 +83,13 @@ contains
     character(len=16) :: layout, stage(max_stages)
     real(wp), dimension(max_stages) :: m1, m, dw1, alpha_w, alpha_w23, beta, gamma
     integer, dimension(max_stages) :: z1, z2, z3, k
-    integer :: unit, ios, i, n, kind
+    integer :: ios, i, n, kind
     character(len=512) :: msg
     character(len=:), allocatable :: at
     type(deck_context_t) :: ctx
     namelist /gears/ layout, stage, m1, z1, z2, m, dw1, alpha_w, beta, gamma, z3, k, alpha_w23
 
-    ctx%path = path
+    ctx%path = source%path
     ctx%group = "gears"
     layout = " "
     stage = " "
@@ -97,10 +97,7 @@ contains
     alpha_w23 = unset_real; beta = unset_real; gamma = unset_real
     z1 = unset_int; z2 = unset_int; z3 = unset_int; k = unset_int
 
-    call open_deck(path, unit, error)
-    if (allocated(error)) return
-    read (unit, nml=gears, iostat=ios, iomsg=msg)
-    close (unit)
+    read (source%lines, nml=gears, iostat=ios, iomsg=msg)
     if (ios /= 0) then
       call namelist_failure(ctx, ios, msg, error)
       return

@@ -9,6 +9,7 @@ module kinetostat_gears_report
     write_csv_header, write_csv_row, write_selfcheck_footer
   use kinetostat_gears, only: gear_stage_t, gear_result_t, gear_pair, gear_series, gear_planetary_step, &
     gear_planetary, gear_bevel, gear_kind_names
+  use kinetostat_deck, only: deck_source_t
   use kinetostat_gears_deck, only: gears_deck_t, read_gears_deck, layout_series, layout_names
   implicit none
   private
@@ -56,9 +57,9 @@ contains
   end subroutine gears_solve
 
   !> Read the deck, compute every stage, then write the table or CSV to `unit`.
-  subroutine run_gears(path, output_format, unit, error, summary)
-    !> Deck file.
-    character(*), intent(in) :: path
+  subroutine run_gears(source, output_format, unit, error, summary)
+    !> The deck, read into memory.
+    type(deck_source_t), intent(in) :: source
     !> `format_table` or `format_csv`.
     integer, intent(in) :: output_format
     !> Output unit.
@@ -72,12 +73,12 @@ contains
     integer :: i
     !> Word for one output row in messages.
     character(*), parameter :: row_name = "stage"
-    call read_gears_deck(path, deck, error)
+    call read_gears_deck(source, deck, error)
     if (allocated(error)) return
     call gears_solve(deck, res)
     do i = 1, size(res)
       if (.not. all(ieee_is_finite(gears_csv_values(deck, res, i)))) then
-        call fatal_error(error, exit_input, path//": results overflow at "//row_name//" "//int_str(i)// &
+        call fatal_error(error, exit_input, source%path//": results overflow at "//row_name//" "//int_str(i)// &
           ": input values out of the representable range")
         return
       end if
@@ -87,7 +88,7 @@ contains
     if (output_format == format_csv) then
       call write_gears_csv(unit, deck, res)
     else
-      call write_gears_table(unit, path, deck, res)
+      call write_gears_table(unit, source%path, deck, res)
     end if
   end subroutine run_gears
 

@@ -1,15 +1,17 @@
-!> Deck (namelist file) plumbing shared by every mechanism: finding the group name,
-!> opening, turning namelist I/O errors into messages, and validation rules that name
-!> the file, the group, the variable and the reason.
+!> Deck (namelist file) plumbing shared by every mechanism: reading the deck once into
+!> memory, finding the group name, turning namelist I/O errors into messages, and
+!> validation rules that name the file, the group, the variable and the reason.
 module kinetostat_deck
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+  use, intrinsic :: iso_fortran_env, only: int64
   use kinetostat_kinds, only: wp
   use kinetostat_error, only: error_t, fatal_error, exit_input
   use kinetostat_text, only: real_str, int_str, lower
   implicit none
   private
   public :: deck_context_t, unset_real, unset_int, max_deck_array, max_steps
-  public :: read_group_name, open_deck, namelist_failure, deck_error
+  public :: deck_source_t, load_deck, deck_source_from_text
+  public :: read_group_name, namelist_failure, deck_error
   public :: is_set, require_set, require_positive, require_nonnegative, require_rule
   public :: optional_default, count_values, steps_over_turn, write_template_lines
 
@@ -21,6 +23,15 @@ module kinetostat_deck
   integer, parameter :: max_deck_array = 1000000
   !> Largest number of steps a run may have.
   integer, parameter :: max_steps = 1000000
+
+  !> A deck read into memory: its lines, ready for an internal namelist READ.
+  type :: deck_source_t
+    !> Name of the deck in messages (the file path as given, or e.g. "<stdin>").
+    character(len=:), allocatable :: path
+    !> The deck's lines without line terminators (LF, CRLF) and without a leading UTF-8
+    !> byte-order mark, blank-padded to the longest line (length at least 1).
+    character(len=:), allocatable :: lines(:)
+  end type deck_source_t
 
   !> Where a deck value comes from: file and namelist group (for messages).
   type :: deck_context_t
@@ -48,52 +59,135 @@ contains
     end do
   end subroutine write_template_lines
 
-  !> The name of the first namelist group in the deck (lower case, without '&').
-  subroutine read_group_name(path, group, error)
+  !> Read a whole deck file into memory (any line length, LF or CRLF line ends, with or
+  !> without a final newline, optional UTF-8 byte-order mark).
+  subroutine load_deck(path, source, error)
     !> Deck file.
     character(*), intent(in) :: path
+    !> The deck's lines.
+    type(deck_source_t), intent(out) :: source
+    !> Set when the file cannot be opened or read.
+    type(error_t), allocatable, intent(out) :: error
+    character(len=:), allocatable :: text
+    character(len=1) :: byte
+    integer :: unit, ios, n
+    integer(int64) :: file_size
+    character(len=512) :: msg
+    open (newunit=unit, file=path, status='old', action='read', access='stream', form='unformatted', &
+          iostat=ios, iomsg=msg)
+    if (ios /= 0) then
+      call fatal_error(error, exit_input, path//": cannot open deck: "//trim(msg))
+      return
+    end if
+    inquire (unit=unit, size=file_size)
+    if (file_size > 0) then
+      allocate (character(len=file_size) :: text)
+      read (unit, iostat=ios, iomsg=msg) text
+    else
+      ! size unknown (pipe, device) or reported as 0: read byte by byte until the end
+      allocate (character(len=4096) :: text)
+      n = 0
+      do
+        read (unit, iostat=ios, iomsg=msg) byte
+        if (ios /= 0) exit
+        n = n + 1
+        if (n > len(text)) text = text//repeat(' ', len(text))
+        text(n:n) = byte
+      end do
+      if (is_iostat_end(ios)) ios = 0
+      text = text(1:n)
+    end if
+    close (unit)
+    if (ios /= 0) then
+      call fatal_error(error, exit_input, path//": cannot read deck: "//trim(msg))
+      return
+    end if
+    call deck_source_from_text(path, text, source)
+  end subroutine load_deck
+
+  !> A deck from text held in memory: lines split at LF, a CR before each LF dropped, a
+  !> leading UTF-8 byte-order mark dropped; a last line without LF is kept.
+  pure subroutine deck_source_from_text(name, text, source)
+    !> Name of the deck in messages.
+    character(*), intent(in) :: name
+    !> The deck's text.
+    character(*), intent(in) :: text
+    !> The deck's lines.
+    type(deck_source_t), intent(out) :: source
+    character(len=*), parameter :: bom = achar(239)//achar(187)//achar(191)
+    character(len=*), parameter :: lf = achar(10), cr = achar(13)
+    integer :: first, n_lines, longest, i, line_start, line_end, k
+    first = 1
+    if (len(text) >= 3) then
+      if (text(1:3) == bom) first = 4
+    end if
+    ! count lines and the longest one
+    n_lines = 0
+    longest = 1
+    line_start = first
+    do while (line_start <= len(text))
+      call next_line(line_start, line_end, i)
+      n_lines = n_lines + 1
+      longest = max(longest, line_end - line_start + 1)
+      line_start = i
+    end do
+    source%path = name
+    allocate (character(len=longest) :: source%lines(n_lines))
+    line_start = first
+    do k = 1, n_lines
+      call next_line(line_start, line_end, i)
+      source%lines(k) = text(line_start:line_end)
+      line_start = i
+    end do
+  contains
+    !> The line starting at `s`: its last character `e` (without LF or CR LF) and the start
+    !> `following` of the next line.
+    pure subroutine next_line(s, e, following)
+      integer, intent(in) :: s
+      integer, intent(out) :: e, following
+      integer :: at
+      at = index(text(s:), lf)
+      if (at == 0) then
+        e = len(text)
+        following = len(text) + 1
+      else
+        e = s + at - 2
+        following = s + at
+      end if
+      if (e >= s) then
+        if (text(e:e) == cr) e = e - 1
+      end if
+    end subroutine next_line
+  end subroutine deck_source_from_text
+
+  !> The name of the first namelist group in the deck (lower case, without '&').
+  subroutine read_group_name(source, group, error)
+    !> The deck.
+    type(deck_source_t), intent(in) :: source
     !> Group name found.
     character(len=:), allocatable, intent(out) :: group
-    !> Unreadable file or no group.
+    !> No group.
     type(error_t), allocatable, intent(out) :: error
-    character(len=1024) :: line
-    integer :: unit, ios, i, j
-    call open_deck(path, unit, error)
-    if (allocated(error)) return
-    do
-      read (unit, '(a)', iostat=ios) line
-      if (ios /= 0) exit
-      line = adjustl(line)
+    character(len=:), allocatable :: line
+    integer :: k, i, j
+    do k = 1, size(source%lines)
+      line = trim(adjustl(source%lines(k)))
+      if (len(line) == 0) cycle
       if (line(1:1) /= '&') cycle
-      j = len_trim(line)
-      do i = 2, len_trim(line)
+      j = len(line)
+      do i = 2, len(line)
         if (index(' /,!', line(i:i)) > 0) then
           j = i - 1
           exit
         end if
       end do
       group = lower(line(2:j))
-      close (unit)
-      if (len(group) == 0) call fatal_error(error, exit_input, path//": empty namelist group name")
+      if (len(group) == 0) call fatal_error(error, exit_input, source%path//": empty namelist group name")
       return
     end do
-    close (unit)
-    call fatal_error(error, exit_input, path//": no namelist group (a line starting with '&name') found")
+    call fatal_error(error, exit_input, source%path// &
+      ": no namelist group (a line starting with '&name') found")
   end subroutine read_group_name
-
-  !> Open a deck for reading.
-  subroutine open_deck(path, unit, error)
-    !> Deck file.
-    character(*), intent(in) :: path
-    !> Unit opened.
-    integer, intent(out) :: unit
-    !> Set when the file cannot be opened.
-    type(error_t), allocatable, intent(out) :: error
-    integer :: ios
-    character(len=512) :: msg
-    open (newunit=unit, file=path, status='old', action='read', form='formatted', iostat=ios, iomsg=msg)
-    if (ios /= 0) call fatal_error(error, exit_input, path//": cannot open deck: "//trim(msg))
-  end subroutine open_deck
 
   !> Turn a failed namelist READ into an input error naming file and group.
   subroutine namelist_failure(ctx, ios, msg, error)

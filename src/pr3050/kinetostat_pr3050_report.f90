@@ -8,6 +8,7 @@ module kinetostat_pr3050_report
     echo_heading, echo_real, echo_int, echo_array, &
     write_csv_header, write_csv_row, write_selfcheck_footer
   use kinetostat_pr3050, only: pr3050_step_t, pr3050_step, pr3050_check_position
+  use kinetostat_deck, only: deck_source_t
   use kinetostat_pr3050_deck, only: pr3050_deck_t, read_pr3050_deck
   implicit none
   private
@@ -80,9 +81,9 @@ contains
 
   !> Read the deck, compute every step, then write the table or CSV to `unit`.
   !> Nothing is written unless the whole run succeeded.
-  subroutine run_pr3050(path, output_format, unit, error, summary)
-    !> Deck file.
-    character(*), intent(in) :: path
+  subroutine run_pr3050(source, output_format, unit, error, summary)
+    !> The deck, read into memory.
+    type(deck_source_t), intent(in) :: source
     !> `format_table` or `format_csv`.
     integer, intent(in) :: output_format
     !> Output unit.
@@ -94,11 +95,11 @@ contains
     type(pr3050_deck_t) :: deck
     type(pr3050_step_t), allocatable :: steps(:)
 
-    call read_pr3050_deck(path, deck, error)
+    call read_pr3050_deck(source, deck, error)
     if (allocated(error)) return
     call pr3050_solve(deck, steps, error)
     if (allocated(error)) then
-      error%message = path//": &pr3050: "//error%message
+      error%message = source%path//": &pr3050: "//error%message
       return
     end if
     if (present(summary)) then
@@ -108,7 +109,7 @@ contains
     if (output_format == format_csv) then
       call write_pr3050_csv(unit, deck, steps)
     else
-      call write_pr3050_table(unit, path, deck, steps)
+      call write_pr3050_table(unit, source%path, deck, steps)
     end if
   end subroutine run_pr3050
 

@@ -6,6 +6,7 @@ module kinetostat_pr3207_report
     echo_heading, echo_real, echo_int, echo_array, &
     write_csv_header, write_csv_row, write_selfcheck_footer
   use kinetostat_pr3207, only: pr3207_step_t, pr3207_step
+  use kinetostat_deck, only: deck_source_t
   use kinetostat_pr3207_deck, only: pr3207_deck_t, read_pr3207_deck
   implicit none
   private
@@ -44,9 +45,9 @@ contains
 
   !> Read the deck, compute every step, then write the table or CSV to `unit`.
   !> Nothing is written unless the whole run succeeded.
-  subroutine run_pr3207(path, output_format, unit, error, summary)
-    !> Deck file.
-    character(*), intent(in) :: path
+  subroutine run_pr3207(source, output_format, unit, error, summary)
+    !> The deck, read into memory.
+    type(deck_source_t), intent(in) :: source
     !> `format_table` or `format_csv`.
     integer, intent(in) :: output_format
     !> Output unit.
@@ -58,7 +59,7 @@ contains
     type(pr3207_deck_t) :: deck
     type(pr3207_step_t), allocatable :: steps(:)
 
-    call read_pr3207_deck(path, deck, error)
+    call read_pr3207_deck(source, deck, error)
     if (allocated(error)) return
     call pr3207_solve(deck, steps)
     if (present(summary)) summary = run_summary_t(size(steps), maxval(steps%residual), &
@@ -66,7 +67,7 @@ contains
     if (output_format == format_csv) then
       call write_pr3207_csv(unit, deck, steps)
     else
-      call write_pr3207_table(unit, path, deck, steps)
+      call write_pr3207_table(unit, source%path, deck, steps)
     end if
   end subroutine run_pr3207
 

@@ -9,6 +9,7 @@ module kinetostat_sixbar_report
     write_csv_header, write_csv_row, write_selfcheck_footer
   use kinetostat_sixbar, only: sixbar_step_t, sixbar_step, sixbar_ok, sixbar_open1, sixbar_dead1, &
     sixbar_open2, sixbar_dead2
+  use kinetostat_deck, only: deck_source_t
   use kinetostat_sixbar_deck, only: sixbar_deck_t, read_sixbar_deck
   implicit none
   private
@@ -93,9 +94,9 @@ contains
 
   !> Read the deck, compute every step, then write the table or CSV to `unit`.
   !> Nothing is written unless the whole run succeeded.
-  subroutine run_sixbar(path, output_format, unit, error, summary)
-    !> Deck file.
-    character(*), intent(in) :: path
+  subroutine run_sixbar(source, output_format, unit, error, summary)
+    !> The deck, read into memory.
+    type(deck_source_t), intent(in) :: source
     !> `format_table` or `format_csv`.
     integer, intent(in) :: output_format
     !> Output unit.
@@ -107,16 +108,16 @@ contains
     type(sixbar_deck_t) :: deck
     type(sixbar_step_t), allocatable :: steps(:)
 
-    call read_sixbar_deck(path, deck, error)
+    call read_sixbar_deck(source, deck, error)
     if (allocated(error)) return
-    call sixbar_solve(path, deck, steps, error)
+    call sixbar_solve(source%path, deck, steps, error)
     if (allocated(error)) return
     if (present(summary)) summary = run_summary_t(size(steps), maxval(steps%residual), &
                                                   maxval(steps%mismatch), "M1")
     if (output_format == format_csv) then
       call write_sixbar_csv(unit, deck, steps)
     else
-      call write_sixbar_table(unit, path, deck, steps)
+      call write_sixbar_table(unit, source%path, deck, steps)
     end if
   end subroutine run_sixbar
 
