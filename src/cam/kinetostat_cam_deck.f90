@@ -4,7 +4,7 @@ module kinetostat_cam_deck
   use kinetostat_kinds, only: wp, deg_to_rad
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str, lower
-  use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, unset_int, max_deck_array, &
+  use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, max_deck_array, &
     deck_source_t, namelist_failure, deck_error, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn
   use kinetostat_cam, only: cam_params_t
@@ -91,7 +91,9 @@ contains
     character(len=16) :: follower
     real(wp) :: l, l_over, f, f_cam, omega_dir, phi_start, dphi
     real(wp), allocatable :: theta(:), f2(:), vdir(:), ds_dphi(:)
-    integer :: n, ios, k
+    !> Number of steps as given (an integer deck variable, read as a real: see require_whole).
+    real(wp) :: n
+    integer :: ios, k
     character(len=512) :: msg
     type(deck_context_t) :: ctx
     namelist /cam/ follower, l, l_over, f, f_cam, omega_dir, phi_start, dphi, n, theta, f2, vdir, ds_dphi
@@ -101,7 +103,7 @@ contains
     follower = " "
     l = unset_real; l_over = unset_real; f = unset_real; f_cam = unset_real
     omega_dir = unset_real; phi_start = unset_real; dphi = unset_real
-    n = unset_int
+    n = unset_real
     allocate (theta(max_deck_array), f2(max_deck_array), vdir(max_deck_array), ds_dphi(max_deck_array), &
               source=unset_real)
 

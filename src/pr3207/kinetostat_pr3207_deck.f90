@@ -3,7 +3,7 @@ module kinetostat_pr3207_deck
   use kinetostat_kinds, only: wp, g_default
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str
-  use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, unset_int, max_deck_array, &
+  use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, max_deck_array, &
     deck_source_t, namelist_failure, deck_error, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn
   use kinetostat_pr3207, only: pr3207_params_t
@@ -103,7 +103,9 @@ contains
     real(wp) :: l_ab, l_ac, l_cd, l_cs3, m1, m3, m5, j3, omega1, g, phi_start, dphi
     real(wp) :: f5c_work, f5c_idle, phi_cut_start, phi_cut_end
     real(wp), allocatable :: f5c(:)
-    integer :: n, ios, n_f5c, k
+    !> Number of steps as given (an integer deck variable, read as a real: see require_whole).
+    real(wp) :: n
+    integer :: ios, n_f5c, k
     character(len=512) :: msg
     type(deck_context_t) :: ctx
     logical :: two_value_given
@@ -116,7 +118,7 @@ contains
     m1 = unset_real; m3 = unset_real; m5 = unset_real; j3 = unset_real
     omega1 = unset_real; g = unset_real; phi_start = unset_real; dphi = unset_real
     f5c_work = unset_real; f5c_idle = unset_real; phi_cut_start = unset_real; phi_cut_end = unset_real
-    n = unset_int
+    n = unset_real
     allocate (f5c(max_deck_array), source=unset_real)
 
     read (source%lines, nml=pr3207, iostat=ios, iomsg=msg)

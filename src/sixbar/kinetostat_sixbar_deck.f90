@@ -3,7 +3,7 @@ module kinetostat_sixbar_deck
   use kinetostat_kinds, only: wp, g_default, rad_to_deg
   use kinetostat_error, only: error_t, fatal_error, exit_geometry
   use kinetostat_text, only: real_str, int_str
-  use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, unset_int, max_deck_array, &
+  use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, max_deck_array, &
     deck_source_t, namelist_failure, deck_error, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn
   use kinetostat_sixbar, only: sixbar_params_t, sixbar_extreme_phi1
@@ -80,7 +80,9 @@ contains
     real(wp) :: m1, m2, m3, m4, m5, j1, j2, j3, j4, omega1, g, dphi, phi_start, phi_ext
     real(wp), allocatable :: f5(:)
     logical :: start_at_extreme, legacy_eq2, ok
-    integer :: n, ios, n_f5, k
+    !> Number of steps as given (an integer deck variable, read as a real: see require_whole).
+    real(wp) :: n
+    integer :: ios, n_f5, k
     character(len=512) :: msg
     type(deck_context_t) :: ctx
     namelist /sixbar/ a, b, l1, lam2, lam_s2, lam3, lam_de, lam4, lam_s4, lam_e, &
@@ -94,7 +96,7 @@ contains
     m1 = unset_real; m2 = unset_real; m3 = unset_real; m4 = unset_real; m5 = unset_real
     j1 = unset_real; j2 = unset_real; j3 = unset_real; j4 = unset_real
     omega1 = unset_real; g = unset_real; dphi = unset_real; phi_start = unset_real
-    n = unset_int
+    n = unset_real
     start_at_extreme = .false.
     legacy_eq2 = .false.
     allocate (f5(max_deck_array), source=unset_real)
