@@ -12,6 +12,7 @@ module test_assur
   use kinetostat_assur, only: assur_mech_t, assur_link_t, assur_dyad_t, assur_step_t, assur_force_t, &
     assur_step, assur_kinematics, pair_index, crank_pin_index
   use kinetostat_assur_deck, only: assur_deck_t, read_assur_deck, assur_window
+  use kinetostat_deck, only: deck_source_t, load_deck
   use kinetostat_assur_layout, only: assur_solve
   use test_harness, only: test_counts_t, check_close, check_true
   implicit none
@@ -303,10 +304,12 @@ contains
     type(assur_deck_t) :: deck
     type(assur_step_t), allocatable :: steps(:)
     type(error_t), allocatable :: error
+    type(deck_source_t) :: source
     character(len=80) :: detail
     integer :: i, k
     do i = 1, size(decks)
-      call read_assur_deck(trim(decks(i)), deck, error)
+      call load_deck(trim(decks(i)), source, error)
+      if (.not. allocated(error)) call read_assur_deck(source, deck, error)
       call check_true(t, "read "//trim(decks(i)), .not. allocated(error), "deck rejected")
       if (allocated(error)) then
         write (*, '(a)') error%message
@@ -339,11 +342,13 @@ contains
     type(assur_deck_t) :: deck
     type(assur_step_t), allocatable :: steps(:)
     type(error_t), allocatable :: error
+    type(deck_source_t) :: source
     real(wp) :: phi, sth, cth, th, u, eq, xbqq, a(2), b(2), ws(2), a_s2(2), g2(2), phi2(2), mphi2
     real(wp) :: f32(2), f21(2), f12(2), f10(2), mm1, nn, p_val, scale
     integer :: k
     character(len=40) :: at
-    call read_assur_deck("data/assur_slider_crank.nml", deck, error)
+    call load_deck("data/assur_slider_crank.nml", source, error)
+    if (.not. allocated(error)) call read_assur_deck(source, deck, error)
     if (allocated(error)) then
       call check_true(t, "read slider-crank deck", .false., error%message)
       return
@@ -401,10 +406,12 @@ contains
     type(assur_deck_t) :: deck
     type(assur_step_t) :: s
     type(error_t), allocatable :: error
+    type(deck_source_t) :: source
     type(link_state_t) :: st(0:5)
     type(dyad_pose_t) :: poses(2)
     real(wp) :: phi1, rot2, x2(2), f45(2), f43(2), phi4, m54e, l_eh, a_s4(2), a_h, m54e_formula
-    call read_assur_deck("data/assur_sixbar.nml", deck, error)
+    call load_deck("data/assur_sixbar.nml", source, error)
+    if (.not. allocated(error)) call read_assur_deck(source, deck, error)
     if (allocated(error)) then
       call check_true(t, "read sixbar deck", .false., error%message)
       return

@@ -6,6 +6,7 @@ module test_cam
   use kinetostat_error, only: error_t
   use kinetostat_cam, only: cam_params_t, cam_step_t, cam_step, cam_critical_angle
   use kinetostat_cam_deck, only: cam_deck_t, read_cam_deck
+  use kinetostat_deck, only: deck_source_t, load_deck
   use kinetostat_cam_layout, only: cam_solve
   use test_harness, only: test_counts_t, check_close, check_true
   implicit none
@@ -172,16 +173,19 @@ contains
     type(cam_deck_t) :: deck
     type(cam_step_t), allocatable :: steps(:)
     type(error_t), allocatable :: error
+    type(deck_source_t) :: source
     integer :: i
     do i = 1, size(decks)
-      call read_cam_deck(trim(decks(i)), deck, error)
+      call load_deck(trim(decks(i)), source, error)
+      if (.not. allocated(error)) call read_cam_deck(source, deck, error)
       call check_true(t, "read "//trim(decks(i)), .not. allocated(error), "deck rejected")
       if (allocated(error)) cycle
       call cam_solve(deck, steps)
       call check_true(t, trim(decks(i))//" residual <= 1e-9", maxval(steps%residual) <= 1.0e-9_wp, "too large")
       call check_true(t, trim(decks(i))//" N mismatch <= 1e-9", maxval(steps%mismatch) <= 1.0e-9_wp, "too large")
     end do
-    call read_cam_deck("data/cam_translating.nml", deck, error)
+    call load_deck("data/cam_translating.nml", source, error)
+    if (.not. allocated(error)) call read_cam_deck(source, deck, error)
     if (allocated(error)) return
     call cam_solve(deck, steps)
     call check_true(t, "translating deck: step 4 (45 deg > theta_cr) jammed", steps(4)%jammed, "not jammed")

@@ -1,7 +1,13 @@
-!> Tests of the shared layers: vectors and angles, self-check measures, LAPACK wrapper.
+!> Tests of the shared layers: vectors and angles, self-check measures, LAPACK wrapper,
+!> and the deck layer (reading decks into memory, the unset sentinel, whole numbers).
 module test_foundation
+  use, intrinsic :: iso_fortran_env, only: int64
   use kinetostat_kinds, only: wp, pi
-  use kinetostat_error, only: error_t, exit_geometry
+  use kinetostat_error, only: error_t, exit_geometry, exit_input
+  use kinetostat_text, only: number_str
+  use kinetostat_deck, only: deck_source_t, load_deck, deck_source_from_text, read_group_name, &
+    deck_context_t, unset_real, unset_bits, is_set, is_whole_in, require_whole, require_set, &
+    steps_over_turn
   use kinetostat_vec2, only: angle_360_deg, angle_180_deg, cross, perp, rotate, snap_noise
   use kinetostat_selfcheck, only: link_residual, power_mismatch
   use kinetostat_lapack, only: solve_dense
@@ -55,6 +61,169 @@ contains
     call check_true(t, "solve_dense singular -> error", allocated(error), "no error for a singular matrix")
     if (allocated(error)) call check_true(t, "solve_dense singular -> exit 3", error%code == exit_geometry, &
                                           "wrong exit code")
+
+    call test_deck_source(t)
+    call test_load_deck(t)
+    call test_unset_and_whole(t)
   end subroutine run_foundation_tests
+
+  !> Pass when two texts are equal; both are printed on failure.
+  subroutine check_text(t, name, expected, computed)
+    type(test_counts_t), intent(inout) :: t
+    character(*), intent(in) :: name, expected, computed
+    call check_true(t, name, expected == computed .and. len(expected) == len(computed), &
+                    "expected '"//expected//"', computed '"//computed//"'")
+  end subroutine check_text
+
+  !> The message of `error`, or "(no error)".
+  function message_of(error) result(m)
+    type(error_t), allocatable, intent(in) :: error
+    character(len=:), allocatable :: m
+    if (allocated(error)) then
+      m = error%message
+    else
+      m = "(no error)"
+    end if
+  end function message_of
+
+  !> deck_source_from_text: line splitting, CRLF, BOM, final newline, namelist READ.
+  subroutine test_deck_source(t)
+    type(test_counts_t), intent(inout) :: t
+    character(len=*), parameter :: lf = achar(10), cr = achar(13)
+    character(len=*), parameter :: bom = char(239)//char(187)//char(191)
+    type(deck_source_t) :: src
+    type(error_t), allocatable :: error
+    character(len=:), allocatable :: group
+    real(wp) :: a, b
+    integer :: ios
+    character(len=256) :: msg
+    namelist /grp/ a, b
+
+    call deck_source_from_text("<text>", "&grp"//lf//" a = 1.5,"//lf//lf//" b = 2 /", src)
+    call check_text(t, "source name", "<text>", src%path)
+    call check_true(t, "4 lines from 3 LFs, no final LF", size(src%lines) == 4, "got "//number_str(real(size(src%lines), wp)))
+    call check_true(t, "line length = longest line (9)", len(src%lines) == 9, "got "//number_str(real(len(src%lines), wp)))
+    if (size(src%lines) == 4) then
+      call check_text(t, "line 1", "&grp", trim(src%lines(1)))
+      call check_text(t, "empty line 3 kept", "", trim(src%lines(3)))
+      call check_text(t, "last line without LF kept", " b = 2 /", trim(src%lines(4)))
+    end if
+    a = -1.0_wp; b = -1.0_wp
+    read (src%lines, nml=grp, iostat=ios, iomsg=msg)
+    call check_true(t, "namelist READ from a source without final newline", ios == 0, trim(msg))
+    call check_close(t, "namelist READ a", 1.5_wp, a, 0.0_wp, 0.0_wp)
+    call check_close(t, "namelist READ b", 2.0_wp, b, 0.0_wp, 0.0_wp)
+
+    call deck_source_from_text("crlf", bom//"&Grp, a = 3"//cr//lf//"/"//cr//lf, src)
+    call check_true(t, "CRLF text with final CRLF: 2 lines", size(src%lines) == 2, &
+                    "got "//number_str(real(size(src%lines), wp)))
+    if (size(src%lines) == 2) then
+      call check_text(t, "BOM and CR stripped from line 1", "&Grp, a = 3", trim(src%lines(1)))
+      call check_text(t, "CR stripped from line 2", "/", trim(src%lines(2)))
+    end if
+    call read_group_name(src, group, error)
+    call check_text(t, "group name after a BOM, lower case", "grp", group)
+    a = -1.0_wp
+    read (src%lines, nml=grp, iostat=ios, iomsg=msg)
+    call check_true(t, "namelist READ of a CRLF source with BOM", ios == 0 .and. a == 3.0_wp, trim(msg))
+
+    call deck_source_from_text("empty", "", src)
+    call check_true(t, "empty text: no lines", size(src%lines) == 0, "got "//number_str(real(size(src%lines), wp)))
+    call read_group_name(src, group, error)
+    call check_true(t, "empty text: no group -> input error", allocated(error), "no error")
+    if (allocated(error)) then
+      call check_true(t, "no group -> exit 2", error%code == exit_input, "wrong exit code")
+      call check_text(t, "no group message", "empty: no namelist group (a line starting with '&name') found", &
+                      error%message)
+    end if
+  end subroutine test_deck_source
+
+  !> load_deck: a file without a final newline, with CRLF and a BOM; a missing file.
+  subroutine test_load_deck(t)
+    type(test_counts_t), intent(inout) :: t
+    character(len=*), parameter :: path = "build/test_load_deck.tmp"
+    character(len=*), parameter :: lf = achar(10), cr = achar(13)
+    character(len=:), allocatable :: long_value
+    type(deck_source_t) :: src
+    type(error_t), allocatable :: error
+    integer :: unit
+    long_value = repeat("9", 3000)
+    open (newunit=unit, file=path, access='stream', form='unformatted', status='replace', action='write')
+    write (unit) char(239)//char(187)//char(191)//"&g"//cr//lf//" x = "//long_value//lf//"/"
+    close (unit)
+    call load_deck(path, src, error)
+    call check_true(t, "load_deck reads the file", .not. allocated(error), message_of(error))
+    call check_text(t, "load_deck keeps the path for messages", path, src%path)
+    call check_true(t, "load_deck: 3 lines", size(src%lines) == 3, "got "//number_str(real(size(src%lines), wp)))
+    call check_true(t, "load_deck: a 3005-character line is kept whole", len(src%lines) == 3005, &
+                    "line length "//number_str(real(len(src%lines), wp)))
+    if (size(src%lines) == 3) then
+      call check_text(t, "load_deck: BOM and CR stripped", "&g", trim(src%lines(1)))
+      call check_text(t, "load_deck: last line without newline", "/", trim(src%lines(3)))
+    end if
+    open (newunit=unit, file=path, status='old')
+    close (unit, status='delete')
+    call load_deck(path, src, error)
+    call check_true(t, "load_deck of a missing file -> error", allocated(error), "no error")
+    if (allocated(error)) then
+      call check_true(t, "missing file -> exit 2", error%code == exit_input, "wrong exit code")
+      call check_true(t, "missing file message", index(error%message, path//": cannot open deck: ") == 1, &
+                      error%message)
+    end if
+  end subroutine test_load_deck
+
+  !> The unset sentinel cannot be typed; require_whole; steps_over_turn cannot overflow.
+  subroutine test_unset_and_whole(t)
+    type(test_counts_t), intent(inout) :: t
+    type(deck_context_t) :: ctx
+    type(deck_source_t) :: src
+    type(error_t), allocatable :: error
+    real(wp) :: x, typed(3)
+    integer :: value, n, ios
+    character(len=256) :: msg
+    namelist /nums/ typed
+    ctx%path = "d.nml"
+    ctx%group = "g"
+
+    x = unset_real
+    call check_true(t, "unset_real keeps its payload in other modules", transfer(x, 0_int64) == unset_bits, &
+                    "bits lost (a NaN parameter from a .mod file?)")
+    call check_true(t, "is_set(unset_real) is false", .not. is_set(x), "true")
+    call check_true(t, "is_set(0), is_set(-huge) are true", is_set(0.0_wp) .and. is_set(-huge(1.0_wp)), "false")
+    ! NaN typed in a deck: set (not the sentinel), then rejected as not finite
+    typed = unset_real
+    call deck_source_from_text("nan", "&nums typed = nan, NaN(0x1), -nan /", src)
+    read (src%lines, nml=nums, iostat=ios, iomsg=msg)
+    call check_true(t, "namelist READ of typed NaNs", ios == 0, trim(msg))
+    call check_true(t, "typed NaNs are not the sentinel", all(is_set(typed)), "a typed NaN reads as unset_real")
+    call require_set(ctx, "typed", typed(2), error)
+    call check_text(t, "typed NaN -> must be a finite number", "d.nml: &g: typed: must be a finite number (got NaN)", &
+                    message_of(error))
+
+    call check_true(t, "is_whole_in(5, 1, 5)", is_whole_in(5.0_wp, 1, 5), "false")
+    call check_true(t, "not is_whole_in(5.5, 1, 9), (0, 1, 5), (6, 1, 5), (NaN)", .not. any(is_whole_in( &
+                    [5.5_wp, 0.0_wp, 6.0_wp, unset_real], [1, 1, 1, 1], [9, 5, 5, 5])), "true")
+    call require_whole(ctx, "n", 13.0_wp, 1, 1000000, value, error)
+    call check_true(t, "require_whole(13) = 13", .not. allocated(error) .and. value == 13, message_of(error))
+    call require_whole(ctx, "n", -2147483647.0_wp, 1, 1000000, value, error)
+    call check_text(t, "require_whole(-2147483647)", &
+                    "d.nml: &g: n: must be a whole number from 1 to 1000000 (got -2147483647)", message_of(error))
+    call require_whole(ctx, "n", 2147483648.0_wp, 1, huge(1), value, error)
+    call check_text(t, "require_whole(2147483648) beyond default integer", &
+                    "d.nml: &g: n: must be a whole number from 1 to 2147483647 (got 2147483648)", message_of(error))
+    call require_whole(ctx, "n", 1.5_wp, 1, 1000000, value, error)
+    call check_text(t, "require_whole(1.5)", &
+                    "d.nml: &g: n: must be a whole number from 1 to 1000000 (got 1.500000000)", message_of(error))
+    call require_whole(ctx, "n", unset_real, 1, 1000000, value, error)
+    call check_text(t, "require_whole(unset)", "d.nml: &g: n: missing (required variable)", message_of(error))
+
+    call steps_over_turn(ctx, 30.0_wp, unset_real, n, error)
+    call check_true(t, "steps_over_turn(30 deg) = 13", .not. allocated(error) .and. n == 13, message_of(error))
+    call steps_over_turn(ctx, 1.0e-12_wp, unset_real, n, error)
+    call check_true(t, "steps_over_turn(1e-12 deg) -> error naming dphi", &
+                    index(message_of(error), "d.nml: &g: dphi: too small") == 1, message_of(error))
+    call steps_over_turn(ctx, 30.0_wp, 7.0_wp, n, error)
+    call check_true(t, "steps_over_turn with n = 7", .not. allocated(error) .and. n == 7, message_of(error))
+  end subroutine test_unset_and_whole
 
 end module test_foundation

@@ -7,6 +7,7 @@ module test_gears
   use kinetostat_gears, only: gear_stage_t, gear_result_t, gear_pair, gear_series, gear_planetary_step, &
     gear_spur, gear_helical, gear_bevel, gear_planetary
   use kinetostat_gears_deck, only: gears_deck_t, read_gears_deck
+  use kinetostat_deck, only: deck_source_t, load_deck
   use kinetostat_gears_layout, only: gears_solve
   use test_harness, only: test_counts_t, check_close, check_true
   implicit none
@@ -185,9 +186,11 @@ contains
     type(gears_deck_t) :: deck
     type(gear_result_t), allocatable :: res(:)
     type(error_t), allocatable :: error
+    type(deck_source_t) :: source
     integer :: i
     do i = 1, size(decks)
-      call read_gears_deck(trim(decks(i)), deck, error)
+      call load_deck(trim(decks(i)), source, error)
+      if (.not. allocated(error)) call read_gears_deck(source, deck, error)
       call check_true(t, "read "//trim(decks(i)), .not. allocated(error), "deck rejected")
       if (allocated(error)) cycle
       call gears_solve(deck, res)

@@ -10,6 +10,7 @@ module test_pr3050
   use kinetostat_pr3050, only: pr3050_params_t, pr3050_position_t, pr3050_step_t, &
     pr3050_position, pr3050_check_position, pr3050_step
   use kinetostat_pr3050_deck, only: pr3050_deck_t, read_pr3050_deck, pr3050_step_count
+  use kinetostat_deck, only: deck_source_t, load_deck
   use kinetostat_pr3050_layout, only: pr3050_solve
   use test_harness, only: test_counts_t, check_close, check_true
   implicit none
@@ -92,9 +93,11 @@ contains
     type(pr3050_deck_t) :: deck
     type(pr3050_step_t), allocatable :: steps(:)
     type(error_t), allocatable :: error
+    type(deck_source_t) :: source
     character(len=64) :: detail
     integer :: k
-    call read_pr3050_deck("data/pr3050.nml", deck, error)
+    call load_deck("data/pr3050.nml", source, error)
+    if (.not. allocated(error)) call read_pr3050_deck(source, deck, error)
     call check_true(t, "read data/pr3050.nml", .not. allocated(error), "deck rejected")
     if (allocated(error)) return
     call check_true(t, "pr3050 reference deck has 10 steps", deck%n == 10, "wrong step count")

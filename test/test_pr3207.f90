@@ -6,6 +6,7 @@ module test_pr3207
   use kinetostat_pr3207, only: pr3207_params_t, pr3207_position_t, pr3207_step_t, &
     pr3207_position, pr3207_step
   use kinetostat_pr3207_deck, only: pr3207_deck_t, read_pr3207_deck, pr3207_cut_force
+  use kinetostat_deck, only: deck_source_t, load_deck
   use kinetostat_pr3207_layout, only: pr3207_solve
   use test_harness, only: test_counts_t, check_close, check_true
   implicit none
@@ -64,9 +65,11 @@ contains
     type(pr3207_deck_t) :: deck
     type(pr3207_step_t), allocatable :: steps(:)
     type(error_t), allocatable :: error
+    type(deck_source_t) :: source
     character(len=64) :: detail
     integer :: k
-    call read_pr3207_deck("data/pr3207.nml", deck, error)
+    call load_deck("data/pr3207.nml", source, error)
+    if (.not. allocated(error)) call read_pr3207_deck(source, deck, error)
     call check_true(t, "read data/pr3207.nml", .not. allocated(error), "deck rejected")
     if (allocated(error)) return
     call check_true(t, "reference deck has 13 steps", deck%n == 13, "wrong step count")

@@ -10,6 +10,7 @@ module test_sixbar
     sixbar_step, sixbar_extreme_phi1, sixbar_frame2_to_frame1, sixbar_frame1_to_frame2, sixbar_down1, &
     sixbar_down2, sixbar_ok, sixbar_open1, sixbar_open2
   use kinetostat_sixbar_deck, only: sixbar_deck_t, read_sixbar_deck
+  use kinetostat_deck, only: deck_source_t, load_deck
   use kinetostat_sixbar_layout, only: sixbar_solve
   use test_harness, only: test_counts_t, check_close, check_true
   implicit none
@@ -224,9 +225,11 @@ contains
     type(sixbar_deck_t) :: deck
     type(sixbar_step_t), allocatable :: steps(:)
     type(error_t), allocatable :: error
+    type(deck_source_t) :: source
     character(len=64) :: detail
     integer :: k, pass
-    call read_sixbar_deck("data/sixbar.nml", deck, error)
+    call load_deck("data/sixbar.nml", source, error)
+    if (.not. allocated(error)) call read_sixbar_deck(source, deck, error)
     call check_true(t, "read data/sixbar.nml", .not. allocated(error), "deck rejected")
     if (allocated(error)) return
     call check_true(t, "reference deck has 13 steps", deck%n == 13, "wrong step count")
@@ -393,6 +396,7 @@ contains
     type(sixbar_deck_t) :: deck
     type(sixbar_step_t), allocatable :: steps(:)
     type(error_t), allocatable :: error
+    type(deck_source_t) :: source
     integer :: k
     p = ref
     p%lam2 = 1.6_wp
@@ -404,7 +408,8 @@ contains
     p%lam_e = 5.5_wp
     q = sixbar_position(p, 60.0_wp * deg_to_rad)
     call check_true(t, "far guide: contour 2 open", q%status == sixbar_open2, "status not open2")
-    call read_sixbar_deck("data/sixbar.nml", deck, error)
+    call load_deck("data/sixbar.nml", source, error)
+    if (.not. allocated(error)) call read_sixbar_deck(source, deck, error)
     if (allocated(error)) return
     deck%p%lam2 = 1.6_wp
     deck%phi1_deg = [(30.0_wp * real(k - 1, wp), k=1, deck%n)]

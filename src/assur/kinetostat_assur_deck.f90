@@ -2,16 +2,19 @@
 !>
 !> Links are named by the deck's link numbers (ids); the frame, the crank and every dyad
 !> link have distinct ids. Dyads, forces and moments are derived-type arrays of the namelist
-!> (`dyad(1)%kind = 1, dyad(1)%l2 = 0.4, ...`); unset components are detected by sentinels.
+!> (`dyad(1)%kind = 1, dyad(1)%l2 = 0.4, ...`); unset components are detected by the
+!> sentinel `unset_real`. Integer deck variables (kinds, link numbers, modes, columns, n)
+!> are read as reals and converted by `require_whole` or an equivalent whole-number check.
 module kinetostat_assur_deck
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use kinetostat_kinds, only: wp, g_default, deg_to_rad
   use kinetostat_error, only: error_t
-  use kinetostat_text, only: real_str, int_str
+  use kinetostat_text, only: real_str, int_str, number_str
   use kinetostat_text_buffer, only: text_buffer_t
-  use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, unset_int, max_deck_array, &
-    open_deck, namelist_failure, deck_error, is_set, require_set, require_positive, &
-    require_nonnegative, require_rule, optional_default, count_values, steps_over_turn
+  use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, unset_bits, max_deck_array, &
+    deck_source_t, namelist_failure, deck_error, is_set, require_set, require_positive, &
+    require_nonnegative, require_rule, optional_default, count_values, steps_over_turn, &
+    is_whole_in, require_whole
   use kinetostat_vec2, only: unit_at
   use kinetostat_assur_kinematics, only: dyad_geometry_t, kind_names, kind_has_mode, &
     kind_rrr, kind_rrp, kind_rpr, kind_prp, kind_rpp
@@ -30,71 +33,76 @@ module kinetostat_assur_deck
   !> Unset logical marker is not available in namelists: logicals have plain defaults.
   character(*), parameter :: group_name = "assur"
 
-  !> One dyad as written in the deck (degrees, ids).
+  !> `unset_real` for the default initialisation of the deck types below. Their variables
+  !> must be declared in this module only: a NaN constant loses its payload in .mod files.
+  real(wp), parameter :: unset = transfer(unset_bits, 1.0_wp)
+
+  !> One dyad as written in the deck (degrees, ids). Kind, ids and mode are whole numbers
+  !> read as reals.
   type :: dyad_in_t
     !> Kind 1..5 (RRR, RRP, RPR, PRP, RPP).
-    integer :: kind = unset_int
+    real(wp) :: kind = unset
     !> Ids of the dyad's links a (first) and b (second).
-    integer :: link2 = unset_int, link3 = unset_int
+    real(wp) :: link2 = unset, link3 = unset
     !> Ids of the links the outer pairs of a and b attach to.
-    integer :: on2 = unset_int, on3 = unset_int
+    real(wp) :: on2 = unset, on3 = unset
     !> Attachment points on those links (their coordinates), m.
-    real(wp) :: at2(2) = unset_real, at3(2) = unset_real
+    real(wp) :: at2(2) = unset, at3(2) = unset
     !> Guide directions relative to those links (prismatic outer pairs), deg.
-    real(wp) :: angle2 = unset_real, angle3 = unset_real
+    real(wp) :: angle2 = unset, angle3 = unset
     !> Lengths A-B (RRR, RRP) and C-B (RRR), m.
-    real(wp) :: l2 = unset_real, l3 = unset_real
+    real(wp) :: l2 = unset, l3 = unset
     !> RPR offset of pin A from the slide line through C, m.
-    real(wp) :: e = unset_real
+    real(wp) :: e = unset
     !> RPP slot: a point in link b's coordinates (m) and its direction (deg, rel. to b).
-    real(wp) :: slot_at(2) = unset_real, slot_angle = unset_real
+    real(wp) :: slot_at(2) = unset, slot_angle = unset
     !> Assembly mode +1 / -1 (kinds 1-3).
-    integer :: mode = unset_int
+    real(wp) :: mode = unset
     !> Masses (kg), moments of inertia about S (kg*m^2), centres of mass (link coords, m).
-    real(wp) :: m2 = unset_real, j2 = unset_real, s2(2) = unset_real
-    real(wp) :: m3 = unset_real, j3 = unset_real, s3(2) = unset_real
+    real(wp) :: m2 = unset, j2 = unset, s2(2) = unset
+    real(wp) :: m3 = unset, j3 = unset, s3(2) = unset
     !> Reporting frame: angle of its x-axis in the global frame, deg.
-    real(wp) :: frame_angle = unset_real
+    real(wp) :: frame_angle = unset
     !> Link (link2 or link3) on which the reported inner-pair force acts; default link2.
-    integer :: inner_on = unset_int
+    real(wp) :: inner_on = unset
   end type dyad_in_t
 
   !> A per-step value: constant, angle window, or a column of `step_values`.
   type :: schedule_in_t
     !> Value (N or N*m): constant, or inside the window.
-    real(wp) :: value = unset_real
+    real(wp) :: value = unset
     !> Value outside the window, default 0.
-    real(wp) :: idle = unset_real
+    real(wp) :: idle = unset
     !> Window [phi_on, phi_off] of crank angles (deg, absolute, not modulo 360).
-    real(wp) :: phi_on = unset_real, phi_off = unset_real
-    !> Column of `step_values` holding one value per step instead.
-    integer :: column = unset_int
+    real(wp) :: phi_on = unset, phi_off = unset
+    !> Column of `step_values` holding one value per step instead (a whole number).
+    real(wp) :: column = unset
   end type schedule_in_t
 
   !> An external force as written in the deck.
   type :: force_in_t
-    !> Id of the loaded link.
-    integer :: link = unset_int
+    !> Id of the loaded link (a whole number).
+    real(wp) :: link = unset
     !> Point of application in the link's coordinates, m (default 0, 0).
-    real(wp) :: at(2) = unset_real
+    real(wp) :: at(2) = unset
     !> Direction, deg, global (or relative to the link when follow).
-    real(wp) :: angle = unset_real
+    real(wp) :: angle = unset
     !> Direction turns with the link.
     logical :: follow = .false.
     !> Magnitude (signed, along `angle`), N.
-    real(wp) :: value = unset_real, idle = unset_real, phi_on = unset_real, phi_off = unset_real
-    !> Column of step_values.
-    integer :: column = unset_int
+    real(wp) :: value = unset, idle = unset, phi_on = unset, phi_off = unset
+    !> Column of step_values (a whole number).
+    real(wp) :: column = unset
   end type force_in_t
 
   !> An external moment as written in the deck.
   type :: moment_in_t
-    !> Id of the loaded link.
-    integer :: link = unset_int
+    !> Id of the loaded link (a whole number).
+    real(wp) :: link = unset
     !> Moment, N*m, CCW positive.
-    real(wp) :: value = unset_real, idle = unset_real, phi_on = unset_real, phi_off = unset_real
-    !> Column of step_values.
-    integer :: column = unset_int
+    real(wp) :: value = unset, idle = unset, phi_on = unset, phi_off = unset
+    !> Column of step_values (a whole number).
+    real(wp) :: column = unset
   end type moment_in_t
 
   !> A validated `&assur` deck.
@@ -197,15 +205,18 @@ contains
   end function assur_window
 
   !> Read and validate an `&assur` deck.
-  subroutine read_assur_deck(path, deck, error)
-    !> Deck file.
-    character(*), intent(in) :: path
+  subroutine read_assur_deck(source, deck, error)
+    !> The deck, read into memory (see load_deck).
+    type(deck_source_t), intent(in) :: source
     !> The validated deck.
     type(assur_deck_t), intent(out) :: deck
     !> Input error naming file, group, variable and reason.
     type(error_t), allocatable, intent(out) :: error
     character(len=80) :: title
-    integer :: frame_id, crank_id, n, nd, nf, nm, n_omega, n_eps, n_values, unit, ios, k, d, i
+    !> Integer deck variables, read as reals (see require_whole).
+    real(wp) :: frame_id, crank_id, n
+    !> frame_id and crank_id as integers.
+    integer :: frame_no, crank_no, nd, nf, nm, n_omega, n_eps, n_values, ios, k, d, i
     real(wp) :: crank_at(2), crank_m, crank_j, crank_s(2), omega1, g, gravity_angle, phi_start, dphi
     real(wp), allocatable :: omega1_step(:), eps1_step(:), step_values(:)
     logical :: angles_signed, components
@@ -221,10 +232,10 @@ contains
       omega1_step, eps1_step, g, gravity_angle, phi_start, dphi, n, dyad, force, moment, &
       step_values, angles_signed, components
 
-    ctx%path = path
+    ctx%path = source%path
     ctx%group = group_name
     title = ""
-    frame_id = 0; crank_id = 1; n = unset_int
+    frame_id = 0.0_wp; crank_id = 1.0_wp; n = unset_real
     crank_at = unset_real; crank_m = unset_real; crank_j = unset_real; crank_s = unset_real
     omega1 = unset_real; g = unset_real; gravity_angle = unset_real
     phi_start = unset_real; dphi = unset_real
@@ -232,20 +243,17 @@ contains
     allocate (omega1_step(max_deck_array), eps1_step(max_deck_array), step_values(max_deck_array), &
               source=unset_real)
 
-    call open_deck(path, unit, error)
-    if (allocated(error)) return
-    read (unit, nml=assur, iostat=ios, iomsg=msg)
-    close (unit)
+    read (source%lines, nml=assur, iostat=ios, iomsg=msg)
     if (ios /= 0) then
       call namelist_failure(ctx, ios, msg, error)
       return
     end if
 
     ! ---- frame, crank, speed law, gravity, steps
-    call require_rule(ctx, "frame_id", frame_id >= 0, "must be >= 0 (got "//int_str(frame_id)//")", error)
-    if (allocated(error)) return
-    call require_rule(ctx, "crank_id", crank_id >= 0 .and. crank_id /= frame_id, &
-      "must be >= 0 and differ from frame_id (got "//int_str(crank_id)//")", error)
+    call require_whole(ctx, "frame_id", frame_id, 0, huge(1), frame_no, error); if (allocated(error)) return
+    call require_whole(ctx, "crank_id", crank_id, 0, huge(1), crank_no, error); if (allocated(error)) return
+    call require_rule(ctx, "crank_id", crank_no /= frame_no, &
+      "must be >= 0 and differ from frame_id (got "//int_str(crank_no)//")", error)
     if (allocated(error)) return
     call optional_pair(ctx, "crank_at", crank_at, error); if (allocated(error)) return
     call optional_pair(ctx, "crank_s", crank_s, error); if (allocated(error)) return
@@ -302,18 +310,18 @@ contains
     end do
 
     allocate (deck%mech%links(0:2 * nd + 1), deck%mech%dyads(nd))
-    deck%mech%links(0) = assur_link_t(id=frame_id)
-    deck%mech%links(1) = assur_link_t(id=crank_id, m=crank_m, j=crank_j, s=crank_s)
+    deck%mech%links(0) = assur_link_t(id=frame_no)
+    deck%mech%links(1) = assur_link_t(id=crank_no, m=crank_m, j=crank_j, s=crank_s)
     deck%mech%pivot = crank_at
     allocate (ids(0:2 * nd + 1))
-    ids(0) = frame_id
-    ids(1) = crank_id
+    ids(0) = frame_no
+    ids(1) = crank_no
     do d = 1, nd
       call read_dyad(ctx, d, dyad(d), ids(0:2 * d - 1), deck%mech%dyads(d), &
                      deck%mech%links(link_a(d)), deck%mech%links(link_b(d)), error)
       if (allocated(error)) return
-      ids(2 * d) = dyad(d)%link2
-      ids(2 * d + 1) = dyad(d)%link3
+      ids(2 * d) = deck%mech%links(link_a(d))%id
+      ids(2 * d + 1) = deck%mech%links(link_b(d))%id
     end do
 
     ! ---- external forces and moments
@@ -370,16 +378,20 @@ contains
     allocate (deck%pair_name(3 * nd + 1), deck%pair_frame(3 * nd + 1), deck%pair_sign(3 * nd + 1))
     deck%pair_sign = 1.0_wp
     do d = 1, nd
-      deck%pair_name(3 * d - 2) = pair_stem(dyad(d)%link2, dyad(d)%on2)
-      deck%pair_name(3 * d - 1) = pair_stem(dyad(d)%link2, dyad(d)%link3)
-      if (dyad(d)%inner_on == dyad(d)%link3) then
-        deck%pair_name(3 * d - 1) = pair_stem(dyad(d)%link3, dyad(d)%link2)
-        deck%pair_sign(3 * d - 1) = -1.0_wp
-      end if
-      deck%pair_name(3 * d) = pair_stem(dyad(d)%link3, dyad(d)%on3)
+      ! ids of the dyad's links (a, b) and of the links they hang on (validated whole numbers)
+      associate (id_a => ids(2 * d), id_b => ids(2 * d + 1), on_a => ids(deck%mech%dyads(d)%on(1)), &
+                 on_b => ids(deck%mech%dyads(d)%on(2)))
+        deck%pair_name(3 * d - 2) = pair_stem(id_a, on_a)
+        deck%pair_name(3 * d - 1) = pair_stem(id_a, id_b)
+        if (dyad(d)%inner_on == dyad(d)%link3) then
+          deck%pair_name(3 * d - 1) = pair_stem(id_b, id_a)
+          deck%pair_sign(3 * d - 1) = -1.0_wp
+        end if
+        deck%pair_name(3 * d) = pair_stem(id_b, on_b)
+      end associate
       deck%pair_frame(3 * d - 2:3 * d) = optional_default(dyad(d)%frame_angle, 0.0_wp) * deg_to_rad
     end do
-    deck%pair_name(3 * nd + 1) = pair_stem(crank_id, frame_id)
+    deck%pair_name(3 * nd + 1) = pair_stem(crank_no, frame_no)
     deck%pair_frame(3 * nd + 1) = 0.0_wp
 
     deck%mech%g = g
@@ -390,8 +402,8 @@ contains
     deck%dphi = dphi
     deck%angles_signed = angles_signed
     deck%components = components
-    deck%frame_id = frame_id
-    deck%crank_id = crank_id
+    deck%frame_id = frame_no
+    deck%crank_id = crank_no
   end subroutine read_assur_deck
 
   !> Column name stem of the force on link `on` from link `from`: "F21", or "F12_3" for ids >= 10.
@@ -408,10 +420,9 @@ contains
   !> Whether any component of a dyad entry was set.
   pure logical function dyad_touched(dy)
     type(dyad_in_t), intent(in) :: dy
-    dyad_touched = is_set(dy%link2) .or. is_set(dy%link3) .or. is_set(dy%on2) .or. is_set(dy%on3) .or. &
-      any(is_set([dy%at2, dy%at3, dy%angle2, dy%angle3, dy%l2, dy%l3, dy%e, dy%slot_at, dy%slot_angle, &
-                  dy%m2, dy%j2, dy%s2, dy%m3, dy%j3, dy%s3, dy%frame_angle])) .or. is_set(dy%mode) .or. &
-      is_set(dy%inner_on)
+    dyad_touched = any(is_set([dy%link2, dy%link3, dy%on2, dy%on3, dy%at2, dy%at3, dy%angle2, dy%angle3, &
+                               dy%l2, dy%l3, dy%e, dy%slot_at, dy%slot_angle, dy%mode, dy%m2, dy%j2, dy%s2, &
+                               dy%m3, dy%j3, dy%s3, dy%frame_angle, dy%inner_on]))
   end function dyad_touched
 
   !> A two-component point: default (0, 0) when unset; both or none; finite.
@@ -445,20 +456,22 @@ contains
   end subroutine require_pair
 
   !> The internal index of a link id among `ids(0:)` (frame allowed when `allow_frame`).
-  subroutine find_link(ctx, name, id, ids, allow_frame, index, error)
+  subroutine find_link(ctx, name, id_in, ids, allow_frame, index, error)
     type(deck_context_t), intent(in) :: ctx
     character(*), intent(in) :: name
-    integer, intent(in) :: id
+    !> Link number as given (an integer deck variable, read as a real).
+    real(wp), intent(in) :: id_in
     integer, intent(in) :: ids(0:)
     logical, intent(in) :: allow_frame
     integer, intent(out) :: index
     type(error_t), allocatable, intent(out) :: error
-    integer :: i
+    integer :: i, id
     index = -1
-    if (.not. is_set(id)) then
+    if (.not. is_set(id_in)) then
       call deck_error(ctx, name, "missing (required link number)", error)
       return
     end if
+    call require_whole(ctx, name, id_in, 0, huge(1), id, error); if (allocated(error)) return
     do i = 0, ubound(ids, 1)
       if (ids(i) == id) index = i
     end do
@@ -472,10 +485,12 @@ contains
     end if
   end subroutine find_link
 
+  !> The internal index of a moving link (crank or dyad link) among `ids(0:)`.
   subroutine moving_link(ctx, name, id, ids, index, error)
     type(deck_context_t), intent(in) :: ctx
     character(*), intent(in) :: name
-    integer, intent(in) :: id
+    !> Link number as given (an integer deck variable, read as a real).
+    real(wp), intent(in) :: id
     integer, intent(in) :: ids(0:)
     integer, intent(out) :: index
     type(error_t), allocatable, intent(out) :: error
@@ -493,23 +508,27 @@ contains
     type(error_t), allocatable, intent(out) :: error
     character(len=:), allocatable :: p, kn
     logical :: p1, p3
+    integer :: kind, link2, link3
     p = "dyad("//int_str(d)//")%"
-    call require_rule(ctx, p//"kind", dy%kind >= 1 .and. dy%kind <= 5, "must be 1..5 "// &
-      "(1 RRR, 2 RRP, 3 RPR, 4 PRP, 5 RPP), got "//int_str(dy%kind), error)
+    call require_rule(ctx, p//"kind", is_whole_in(dy%kind, 1, 5), "must be 1..5 "// &
+      "(1 RRR, 2 RRP, 3 RPR, 4 PRP, 5 RPP), got "//number_str(dy%kind), error)
     if (allocated(error)) return
-    kn = " (kind "//kind_names(dy%kind)//")"
-    p1 = dy%kind == kind_prp
-    p3 = dy%kind == kind_rrp .or. dy%kind == kind_prp .or. dy%kind == kind_rpp
+    kind = nint(dy%kind)
+    kn = " (kind "//kind_names(kind)//")"
+    p1 = kind == kind_prp
+    p3 = kind == kind_rrp .or. kind == kind_prp .or. kind == kind_rpp
     ! link ids: new and distinct
     call require_rule(ctx, p//"link2", is_set(dy%link2), "missing (required link number)", error)
     if (allocated(error)) return
     call require_rule(ctx, p//"link3", is_set(dy%link3), "missing (required link number)", error)
     if (allocated(error)) return
-    call require_rule(ctx, p//"link2", dy%link2 >= 0 .and. all(ids /= dy%link2), "link number "// &
-      int_str(dy%link2)//" must be >= 0 and not used by the frame, the crank or an earlier dyad", error)
+    call require_whole(ctx, p//"link2", dy%link2, 0, huge(1), link2, error); if (allocated(error)) return
+    call require_whole(ctx, p//"link3", dy%link3, 0, huge(1), link3, error); if (allocated(error)) return
+    call require_rule(ctx, p//"link2", all(ids /= link2), "link number "// &
+      int_str(link2)//" must be >= 0 and not used by the frame, the crank or an earlier dyad", error)
     if (allocated(error)) return
-    call require_rule(ctx, p//"link3", dy%link3 >= 0 .and. all(ids /= dy%link3) .and. dy%link3 /= dy%link2, &
-      "link number "//int_str(dy%link3)//" must be >= 0, differ from link2 and not be used before", error)
+    call require_rule(ctx, p//"link3", all(ids /= link3) .and. link3 /= link2, &
+      "link number "//int_str(link3)//" must be >= 0, differ from link2 and not be used before", error)
     if (allocated(error)) return
     call find_link(ctx, p//"on2", dy%on2, ids, .true., out%on(1), error); if (allocated(error)) return
     call find_link(ctx, p//"on3", dy%on3, ids, .true., out%on(2), error); if (allocated(error)) return
@@ -529,18 +548,18 @@ contains
       out%ang(2) = dy%angle3 * deg_to_rad
     end if
     ! dimensions
-    out%geom%kind = dy%kind
-    call used_only_if(ctx, p//"l2", is_set(dy%l2), dy%kind == kind_rrr .or. dy%kind == kind_rrp, kn, error)
+    out%geom%kind = kind
+    call used_only_if(ctx, p//"l2", is_set(dy%l2), kind == kind_rrr .or. kind == kind_rrp, kn, error)
     if (allocated(error)) return
-    call used_only_if(ctx, p//"l3", is_set(dy%l3), dy%kind == kind_rrr, kn, error); if (allocated(error)) return
-    call used_only_if(ctx, p//"e", is_set(dy%e), dy%kind == kind_rpr, kn, error); if (allocated(error)) return
-    call used_only_if(ctx, p//"slot_at", any(is_set(dy%slot_at)), dy%kind == kind_rpp, kn, error)
+    call used_only_if(ctx, p//"l3", is_set(dy%l3), kind == kind_rrr, kn, error); if (allocated(error)) return
+    call used_only_if(ctx, p//"e", is_set(dy%e), kind == kind_rpr, kn, error); if (allocated(error)) return
+    call used_only_if(ctx, p//"slot_at", any(is_set(dy%slot_at)), kind == kind_rpp, kn, error)
     if (allocated(error)) return
-    call used_only_if(ctx, p//"slot_angle", is_set(dy%slot_angle), dy%kind == kind_rpp, kn, error)
+    call used_only_if(ctx, p//"slot_angle", is_set(dy%slot_angle), kind == kind_rpp, kn, error)
     if (allocated(error)) return
-    call used_only_if(ctx, p//"mode", is_set(dy%mode), kind_has_mode(dy%kind), kn, error)
+    call used_only_if(ctx, p//"mode", is_set(dy%mode), kind_has_mode(kind), kn, error)
     if (allocated(error)) return
-    select case (dy%kind)
+    select case (kind)
     case (kind_rrr)
       call require_positive(ctx, p//"l2", dy%l2, error); if (allocated(error)) return
       call require_positive(ctx, p//"l3", dy%l3, error); if (allocated(error)) return
@@ -562,12 +581,12 @@ contains
       out%geom%slot_at = dy%slot_at
       out%geom%slot_angle = dy%slot_angle * deg_to_rad
     end select
-    if (kind_has_mode(dy%kind)) then
-      if (.not. is_set(dy%mode)) dy%mode = 1
-      call require_rule(ctx, p//"mode", abs(dy%mode) == 1, "must be +1 or -1 (assembly mode), got "// &
-        int_str(dy%mode), error)
+    if (kind_has_mode(kind)) then
+      if (.not. is_set(dy%mode)) dy%mode = 1.0_wp
+      call require_rule(ctx, p//"mode", dy%mode == 1.0_wp .or. dy%mode == -1.0_wp, &
+        "must be +1 or -1 (assembly mode), got "//number_str(dy%mode), error)
       if (allocated(error)) return
-      out%geom%mode = dy%mode
+      out%geom%mode = nint(dy%mode)
     end if
     ! masses
     dy%m2 = optional_default(dy%m2, 0.0_wp)
@@ -582,13 +601,13 @@ contains
     call optional_pair(ctx, p//"s3", dy%s3, error); if (allocated(error)) return
     if (.not. is_set(dy%inner_on)) dy%inner_on = dy%link2
     call require_rule(ctx, p//"inner_on", dy%inner_on == dy%link2 .or. dy%inner_on == dy%link3, &
-      "must be link2 ("//int_str(dy%link2)//") or link3 ("//int_str(dy%link3)//"), got "//int_str(dy%inner_on), error)
+      "must be link2 ("//int_str(link2)//") or link3 ("//int_str(link3)//"), got "//number_str(dy%inner_on), error)
     if (allocated(error)) return
     if (is_set(dy%frame_angle)) then
       call require_set(ctx, p//"frame_angle", dy%frame_angle, error); if (allocated(error)) return
     end if
-    la = assur_link_t(id=dy%link2, m=dy%m2, j=dy%j2, s=dy%s2)
-    lb = assur_link_t(id=dy%link3, m=dy%m3, j=dy%j3, s=dy%s3)
+    la = assur_link_t(id=link2, m=dy%m2, j=dy%j2, s=dy%s2)
+    lb = assur_link_t(id=link3, m=dy%m3, j=dy%j3, s=dy%s3)
   end subroutine read_dyad
 
   !> Reject a variable that the dyad's kind does not use.
@@ -611,20 +630,21 @@ contains
     real(wp), intent(in) :: step_values(:)
     real(wp), intent(out) :: values(:)
     type(error_t), allocatable, intent(out) :: error
-    integer :: n
+    integer :: n, column
     n = size(phi1_deg)
     values = 0.0_wp
     if (is_set(s%column)) then
       call require_rule(ctx, name//"column", .not. any(is_set([s%value, s%idle, s%phi_on, s%phi_off])), &
         "give either column (per-step values) or value [idle, phi_on, phi_off], not both", error)
       if (allocated(error)) return
-      call require_rule(ctx, name//"column", s%column >= 1, "must be >= 1 (got "//int_str(s%column)//")", error)
+      call require_whole(ctx, name//"column", s%column, 1, max_deck_array, column, error)
       if (allocated(error)) return
-      call require_rule(ctx, name//"column", s%column * n <= size(step_values), "step_values has "// &
-        int_str(size(step_values))//" values; column "//int_str(s%column)//" needs "// &
-        int_str(s%column * n)//" (n = "//int_str(n)//" per column)", error)
+      ! column*n in real arithmetic: both may be up to a million
+      call require_rule(ctx, name//"column", real(column, wp) * real(n, wp) <= real(size(step_values), wp), &
+        "step_values has "//int_str(size(step_values))//" values; column "//int_str(column)//" needs "// &
+        number_str(real(column, wp) * real(n, wp))//" (n = "//int_str(n)//" per column)", error)
       if (allocated(error)) return
-      values = step_values((s%column - 1) * n + 1:s%column * n)
+      values = step_values((column - 1) * n + 1:column * n)
       return
     end if
     call require_set(ctx, name//"value", s%value, error); if (allocated(error)) return

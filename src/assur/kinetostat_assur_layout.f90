@@ -3,6 +3,7 @@
 !> angles / normal forces / reaction moments per step).
 module kinetostat_assur_layout
   use kinetostat_kinds, only: wp, deg_to_rad, rad_to_deg
+  use kinetostat_deck, only: deck_source_t
   use kinetostat_error, only: error_t, fatal_error, exit_geometry
   use kinetostat_text, only: int_str
   use kinetostat_vec2, only: magnitude, angle_360_deg, angle_180_deg, rotate, snap_noise, clean_zero
@@ -51,11 +52,11 @@ contains
     allocate (assur_mechanism_t :: mech)
   end subroutine new_assur
 
-  subroutine read_deck(self, path, error)
+  subroutine read_deck(self, source, error)
     class(assur_mechanism_t), intent(inout) :: self
-    character(*), intent(in) :: path
+    type(deck_source_t), intent(in) :: source
     type(error_t), allocatable, intent(out) :: error
-    call read_assur_deck(path, self%deck, error)
+    call read_assur_deck(source, self%deck, error)
   end subroutine read_deck
 
   pure function title(self, lang) result(text)

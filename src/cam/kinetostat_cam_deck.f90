@@ -5,8 +5,8 @@ module kinetostat_cam_deck
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str, lower
   use kinetostat_text_buffer, only: text_buffer_t
-  use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, unset_int, max_deck_array, &
-    open_deck, namelist_failure, deck_error, is_set, require_set, require_positive, &
+  use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, max_deck_array, &
+    deck_source_t, namelist_failure, deck_error, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn
   use kinetostat_cam, only: cam_params_t
   implicit none
@@ -82,9 +82,9 @@ contains
   end subroutine write_cam_template
 
   !> Read and validate a `&cam` deck.
-  subroutine read_cam_deck(path, deck, error)
-    !> Deck file.
-    character(*), intent(in) :: path
+  subroutine read_cam_deck(source, deck, error)
+    !> The deck, read into memory (see load_deck).
+    type(deck_source_t), intent(in) :: source
     !> The validated deck.
     type(cam_deck_t), intent(out) :: deck
     !> Input error naming file, group, variable and reason.
@@ -92,24 +92,23 @@ contains
     character(len=16) :: follower
     real(wp) :: l, l_over, f, f_cam, omega_dir, phi_start, dphi
     real(wp), allocatable :: theta(:), f2(:), vdir(:), ds_dphi(:)
-    integer :: n, unit, ios, k
+    !> Number of steps as given (an integer deck variable, read as a real: see require_whole).
+    real(wp) :: n
+    integer :: ios, k
     character(len=512) :: msg
     type(deck_context_t) :: ctx
     namelist /cam/ follower, l, l_over, f, f_cam, omega_dir, phi_start, dphi, n, theta, f2, vdir, ds_dphi
 
-    ctx%path = path
+    ctx%path = source%path
     ctx%group = "cam"
     follower = " "
     l = unset_real; l_over = unset_real; f = unset_real; f_cam = unset_real
     omega_dir = unset_real; phi_start = unset_real; dphi = unset_real
-    n = unset_int
+    n = unset_real
     allocate (theta(max_deck_array), f2(max_deck_array), vdir(max_deck_array), ds_dphi(max_deck_array), &
               source=unset_real)
 
-    call open_deck(path, unit, error)
-    if (allocated(error)) return
-    read (unit, nml=cam, iostat=ios, iomsg=msg)
-    close (unit)
+    read (source%lines, nml=cam, iostat=ios, iomsg=msg)
     if (ios /= 0) then
       call namelist_failure(ctx, ios, msg, error)
       return

@@ -2,6 +2,7 @@
 !> and its table layout (one line per step; flags in words).
 module kinetostat_cam_layout
   use kinetostat_kinds, only: wp, deg_to_rad, rad_to_deg
+  use kinetostat_deck, only: deck_source_t
   use kinetostat_error, only: error_t
   use kinetostat_vec2, only: magnitude, angle_360_deg
   use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_component, &
@@ -55,11 +56,11 @@ contains
     allocate (cam_mechanism_t :: mech)
   end subroutine new_cam
 
-  subroutine read_deck(self, path, error)
+  subroutine read_deck(self, source, error)
     class(cam_mechanism_t), intent(inout) :: self
-    character(*), intent(in) :: path
+    type(deck_source_t), intent(in) :: source
     type(error_t), allocatable, intent(out) :: error
-    call read_cam_deck(path, self%deck, error)
+    call read_cam_deck(source, self%deck, error)
   end subroutine read_deck
 
   pure function title(self, lang) result(text)

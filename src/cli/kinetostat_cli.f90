@@ -7,7 +7,7 @@ module kinetostat_cli
   use kinetostat_error, only: error_t, fatal_error, exit_success, exit_usage, exit_input
   use kinetostat_text, only: int_str
   use kinetostat_posix, only: path_kind, path_special, rename_file, process_id, write_standard_output
-  use kinetostat_deck, only: read_group_name
+  use kinetostat_deck, only: deck_source_t, load_deck, read_group_name
   use kinetostat_step_table, only: step_table_t
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_mechanism, only: mechanism_t
@@ -113,14 +113,17 @@ contains
     type(error_t), allocatable, intent(out) :: error
     character(len=:), allocatable :: group
     class(mechanism_t), allocatable :: mech
-    call read_group_name(path, group, error)
+    type(deck_source_t) :: source
+    call load_deck(path, source, error)
+    if (allocated(error)) return
+    call read_group_name(source, group, error)
     if (allocated(error)) return
     call create_mechanism(group, mech)
     if (.not. allocated(mech)) then
       call fatal_error(error, exit_input, path//": &"//group//": unknown mechanism (known: "//known_kinds()//")")
       return
     end if
-    call run_mechanism(mech, group, path, options, table, out, error)
+    call run_mechanism(mech, group, source, options, table, out, error)
   end subroutine run_deck
 
   !> The commented template deck of a kind.

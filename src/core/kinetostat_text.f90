@@ -1,9 +1,10 @@
 !> Small string helpers: numbers to trimmed text, lower case.
 module kinetostat_text
+  use, intrinsic :: iso_fortran_env, only: int64
   use kinetostat_kinds, only: wp
   implicit none
   private
-  public :: real_str, int_str, lower
+  public :: real_str, int_str, number_str, lower
 
   !> Format of a real in a message: shortest general form with 10 significant digits.
   character(*), parameter :: real_msg_fmt = '(g0.10)'
@@ -19,6 +20,21 @@ contains
     write (buf, real_msg_fmt) x
     s = trim(adjustl(buf))
   end function real_str
+
+  !> A deck number as trimmed text: a whole number below 1e15 in magnitude without a
+  !> decimal point ("2147483648"), anything else as `real_str` ("1.500000000", "NaN").
+  pure function number_str(x) result(s)
+    !> Value.
+    real(wp), intent(in) :: x
+    character(len=:), allocatable :: s
+    character(len=24) :: buf
+    if (abs(x) < 1.0e15_wp .and. x == aint(x)) then
+      write (buf, '(i0)') int(x, int64)
+      s = trim(buf)
+    else
+      s = real_str(x)
+    end if
+  end function number_str
 
   !> An integer as trimmed text.
   pure function int_str(i) result(s)

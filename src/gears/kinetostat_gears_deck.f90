@@ -4,10 +4,11 @@
 module kinetostat_gears_deck
   use kinetostat_kinds, only: wp, deg_to_rad, pi
   use kinetostat_error, only: error_t
-  use kinetostat_text, only: real_str, int_str, lower
+  use kinetostat_text, only: real_str, int_str, number_str, lower
   use kinetostat_text_buffer, only: text_buffer_t
-  use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, unset_int, &
-    open_deck, namelist_failure, deck_error, is_set, require_set, require_positive, require_rule
+  use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, &
+    deck_source_t, namelist_failure, deck_error, is_set, require_set, require_positive, require_rule, &
+    require_whole
   use kinetostat_gears, only: gear_stage_t, gear_spur, gear_helical, gear_bevel, gear_planetary, &
     gear_kind_names
   implicit none
@@ -74,34 +75,32 @@ contains
   end subroutine write_gears_template
 
   !> Read and validate a `&gears` deck.
-  subroutine read_gears_deck(path, deck, error)
-    !> Deck file.
-    character(*), intent(in) :: path
+  subroutine read_gears_deck(source, deck, error)
+    !> The deck, read into memory (see load_deck).
+    type(deck_source_t), intent(in) :: source
     !> The validated deck.
     type(gears_deck_t), intent(out) :: deck
     !> Input error naming file, group, variable and reason.
     type(error_t), allocatable, intent(out) :: error
     character(len=16) :: layout, stage(max_stages)
     real(wp), dimension(max_stages) :: m1, m, dw1, alpha_w, alpha_w23, beta, gamma
-    integer, dimension(max_stages) :: z1, z2, z3, k
-    integer :: unit, ios, i, n, kind
+    !> Teeth and satellite counts: integer deck variables, read as reals (see require_whole).
+    real(wp), dimension(max_stages) :: z1, z2, z3, k
+    integer :: ios, i, n, kind, iz1, iz2, iz3, ik
     character(len=512) :: msg
     character(len=:), allocatable :: at
     type(deck_context_t) :: ctx
     namelist /gears/ layout, stage, m1, z1, z2, m, dw1, alpha_w, beta, gamma, z3, k, alpha_w23
 
-    ctx%path = path
+    ctx%path = source%path
     ctx%group = "gears"
     layout = " "
     stage = " "
     m1 = unset_real; m = unset_real; dw1 = unset_real; alpha_w = unset_real
     alpha_w23 = unset_real; beta = unset_real; gamma = unset_real
-    z1 = unset_int; z2 = unset_int; z3 = unset_int; k = unset_int
+    z1 = unset_real; z2 = unset_real; z3 = unset_real; k = unset_real
 
-    call open_deck(path, unit, error)
-    if (allocated(error)) return
-    read (unit, nml=gears, iostat=ios, iomsg=msg)
-    close (unit)
+    read (source%lines, nml=gears, iostat=ios, iomsg=msg)
     if (ios /= 0) then
       call namelist_failure(ctx, ios, msg, error)
       return
@@ -144,10 +143,10 @@ contains
     call no_extra_real(ctx, "alpha_w23", alpha_w23, n, error); if (allocated(error)) return
     call no_extra_real(ctx, "beta", beta, n, error); if (allocated(error)) return
     call no_extra_real(ctx, "gamma", gamma, n, error); if (allocated(error)) return
-    call no_extra_int(ctx, "z1", z1, n, error); if (allocated(error)) return
-    call no_extra_int(ctx, "z2", z2, n, error); if (allocated(error)) return
-    call no_extra_int(ctx, "z3", z3, n, error); if (allocated(error)) return
-    call no_extra_int(ctx, "k", k, n, error); if (allocated(error)) return
+    call no_extra_real(ctx, "z1", z1, n, error); if (allocated(error)) return
+    call no_extra_real(ctx, "z2", z2, n, error); if (allocated(error)) return
+    call no_extra_real(ctx, "z3", z3, n, error); if (allocated(error)) return
+    call no_extra_real(ctx, "k", k, n, error); if (allocated(error)) return
 
     deck%n = n
     allocate (deck%st(n), deck%m1(n), deck%module_mm(n))
@@ -179,10 +178,10 @@ contains
       end if
 
       ! teeth
-      call require_teeth(ctx, "z1"//at, z1(i), error); if (allocated(error)) return
-      call require_teeth(ctx, "z2"//at, z2(i), error); if (allocated(error)) return
-      deck%st(i)%z1 = z1(i)
-      deck%st(i)%z2 = z2(i)
+      call require_teeth(ctx, "z1"//at, z1(i), iz1, error); if (allocated(error)) return
+      call require_teeth(ctx, "z2"//at, z2(i), iz2, error); if (allocated(error)) return
+      deck%st(i)%z1 = iz1
+      deck%st(i)%z2 = iz2
 
       ! size: module or pitch diameter of gear 1
       if (is_set(dw1(i))) then
@@ -197,7 +196,7 @@ contains
         end if
         call require_positive(ctx, "m"//at, m(i), error); if (allocated(error)) return
         deck%module_mm(i) = m(i)
-        deck%st(i)%dw1 = real(z1(i), wp) * m(i) * 1.0e-3_wp
+        deck%st(i)%dw1 = real(iz1, wp) * m(i) * 1.0e-3_wp
       end if
 
       ! angles
@@ -218,30 +217,31 @@ contains
         call require_set(ctx, "gamma"//at, gamma(i), error); if (allocated(error)) return
         deck%st(i)%gamma = gamma(i) * deg_to_rad
       end if
-      if (kind == gear_bevel) deck%st(i)%delta1 = atan2(real(z1(i), wp), real(z2(i), wp))
+      if (kind == gear_bevel) deck%st(i)%delta1 = atan2(real(iz1, wp), real(iz2, wp))
 
       ! planetary data, only for planetary stages (0 = "not used" is accepted elsewhere)
       if (kind == gear_planetary) then
-        call require_teeth(ctx, "z3"//at, z3(i), error); if (allocated(error)) return
-        call require_rule(ctx, "z3"//at, z3(i) == z1(i) + 2 * z2(i), "must be z1 + 2*z2 = "// &
-          int_str(z1(i) + 2 * z2(i))//" (coaxial sun, satellites and ring; got "//int_str(z3(i))//")", error)
+        call require_teeth(ctx, "z3"//at, z3(i), iz3, error); if (allocated(error)) return
+        call require_rule(ctx, "z3"//at, iz3 == iz1 + 2 * iz2, "must be z1 + 2*z2 = "// &
+          int_str(iz1 + 2 * iz2)//" (coaxial sun, satellites and ring; got "//int_str(iz3)//")", error)
         if (allocated(error)) return
         if (.not. is_set(k(i))) then
           call deck_error(ctx, "k"//at, "missing (number of satellites)", error)
           return
         end if
-        call require_rule(ctx, "k"//at, k(i) >= 1, "must be >= 1 (got "//int_str(k(i))//")", error)
+        call require_rule(ctx, "k"//at, .not. k(i) < 1.0_wp, "must be >= 1 (got "//number_str(k(i))//")", error)
         if (allocated(error)) return
-        call require_rule(ctx, "k"//at, modulo(z1(i) + z3(i), k(i)) == 0, "(z1 + z3)/k must be an integer "// &
-          "for equally spaced satellites (z1 + z3 = "//int_str(z1(i) + z3(i))//", k = "//int_str(k(i))//")", error)
+        call require_whole(ctx, "k"//at, k(i), 1, huge(1), ik, error); if (allocated(error)) return
+        call require_rule(ctx, "k"//at, modulo(iz1 + iz3, ik) == 0, "(z1 + z3)/k must be an integer "// &
+          "for equally spaced satellites (z1 + z3 = "//int_str(iz1 + iz3)//", k = "//int_str(ik)//")", error)
         if (allocated(error)) return
-        if (k(i) >= 2) then
-          call require_rule(ctx, "k"//at, real(z1(i) + z2(i), wp) * sin(pi / real(k(i), wp)) > real(z2(i) + 2, wp), &
+        if (ik >= 2) then
+          call require_rule(ctx, "k"//at, real(iz1 + iz2, wp) * sin(pi / real(ik, wp)) > real(iz2 + 2, wp), &
             "too many satellites: neighbours collide, (z1 + z2)*sin(180/k) must exceed z2 + 2", error)
           if (allocated(error)) return
         end if
-        deck%st(i)%z3 = z3(i)
-        deck%st(i)%k = k(i)
+        deck%st(i)%z3 = iz3
+        deck%st(i)%k = ik
         call pressure_angle(ctx, "alpha_w23"//at, alpha_w23(i), alpha_w(i), deck%st(i)%alpha_w23, error)
         if (allocated(error)) return
         if (.not. is_set(gamma(i))) deck%st(i)%gamma = 0.5_wp * pi
@@ -279,18 +279,24 @@ contains
     angle = a * deg_to_rad
   end subroutine pressure_angle
 
-  !> Teeth count: present and from 1 to max_teeth.
-  subroutine require_teeth(ctx, name, z, error)
+  !> Teeth count: present and a whole number from 1 to max_teeth.
+  subroutine require_teeth(ctx, name, z, teeth, error)
     type(deck_context_t), intent(in) :: ctx
     character(*), intent(in) :: name
-    integer, intent(in) :: z
+    !> Deck value (an integer deck variable, read as a real).
+    real(wp), intent(in) :: z
+    !> The count.
+    integer, intent(out) :: teeth
     type(error_t), allocatable, intent(out) :: error
+    teeth = 0
     if (.not. is_set(z)) then
       call deck_error(ctx, name, "missing (number of teeth)", error)
-    else if (z <= 0) then
-      call deck_error(ctx, name, "must be >= 1 teeth (got "//int_str(z)//")", error)
-    else if (z > max_teeth) then
-      call deck_error(ctx, name, "must be <= "//int_str(max_teeth)//" teeth (got "//int_str(z)//")", error)
+    else if (z < 1.0_wp) then
+      call deck_error(ctx, name, "must be >= 1 teeth (got "//number_str(z)//")", error)
+    else if (z > real(max_teeth, wp)) then
+      call deck_error(ctx, name, "must be <= "//int_str(max_teeth)//" teeth (got "//number_str(z)//")", error)
+    else
+      call require_whole(ctx, name, z, 1, max_teeth, teeth, error)
     end if
   end subroutine require_teeth
 
@@ -298,9 +304,11 @@ contains
   subroutine not_used_int(ctx, name, value, kind, error)
     type(deck_context_t), intent(in) :: ctx
     character(*), intent(in) :: name
-    integer, intent(in) :: value, kind
+    !> Deck value (an integer deck variable, read as a real).
+    real(wp), intent(in) :: value
+    integer, intent(in) :: kind
     type(error_t), allocatable, intent(out) :: error
-    if (is_set(value) .and. value /= 0) call deck_error(ctx, name, "only for a 'planetary' stage (this one is '"// &
+    if (is_set(value) .and. value /= 0.0_wp) call deck_error(ctx, name, "only for a 'planetary' stage (this one is '"// &
       trim(gear_kind_names(kind))//"'): leave it 0 or unset", error)
   end subroutine not_used_int
 
@@ -320,22 +328,5 @@ contains
       end if
     end do
   end subroutine no_extra_real
-
-  !> No integer value beyond the last stage.
-  subroutine no_extra_int(ctx, name, values, n, error)
-    type(deck_context_t), intent(in) :: ctx
-    character(*), intent(in) :: name
-    integer, intent(in) :: values(:)
-    integer, intent(in) :: n
-    type(error_t), allocatable, intent(out) :: error
-    integer :: i
-    do i = n + 1, size(values)
-      if (is_set(values(i))) then
-        call deck_error(ctx, name//"("//int_str(i)//")", "given for stage "//int_str(i)// &
-          " but the deck has "//int_str(n)//" stage(s) (see 'stage')", error)
-        return
-      end if
-    end do
-  end subroutine no_extra_int
 
 end module kinetostat_gears_deck

@@ -2,6 +2,7 @@
 !> row per stage), and the table layout (one block of named values per stage).
 module kinetostat_gears_layout
   use kinetostat_kinds, only: wp, rad_to_deg
+  use kinetostat_deck, only: deck_source_t
   use kinetostat_error, only: error_t
   use kinetostat_vec2, only: magnitude, angle_360_deg, snap_noise
   use kinetostat_step_table, only: step_table_t, col_count, col_length, col_ratio, col_moment, col_component, &
@@ -64,11 +65,11 @@ contains
     allocate (gears_mechanism_t :: mech)
   end subroutine new_gears
 
-  subroutine read_deck(self, path, error)
+  subroutine read_deck(self, source, error)
     class(gears_mechanism_t), intent(inout) :: self
-    character(*), intent(in) :: path
+    type(deck_source_t), intent(in) :: source
     type(error_t), allocatable, intent(out) :: error
-    call read_gears_deck(path, self%deck, error)
+    call read_gears_deck(source, self%deck, error)
   end subroutine read_deck
 
   pure function title(self, lang) result(text)

@@ -4,6 +4,7 @@
 !> only through this type.
 module kinetostat_mechanism
   use kinetostat_error, only: error_t
+  use kinetostat_deck, only: deck_source_t
   use kinetostat_step_table, only: step_table_t
   use kinetostat_text_buffer, only: text_buffer_t
   implicit none
@@ -26,12 +27,12 @@ module kinetostat_mechanism
   end type mechanism_t
 
   abstract interface
-    subroutine read_deck_i(self, path, error)
-      import :: mechanism_t, error_t
+    subroutine read_deck_i(self, source, error)
+      import :: mechanism_t, deck_source_t, error_t
       implicit none
       class(mechanism_t), intent(inout) :: self
-      !> Deck file.
-      character(*), intent(in) :: path
+      !> The deck, read into memory.
+      type(deck_source_t), intent(in) :: source
       !> Input error naming deck, group, variable and reason.
       type(error_t), allocatable, intent(out) :: error
     end subroutine read_deck_i

@@ -7,6 +7,7 @@ module kinetostat_run
   use kinetostat_error, only: error_t, fatal_error, exit_geometry
   use kinetostat_text, only: int_str
   use kinetostat_step_table, only: step_table_t, echo_real_kind, echo_array_kind
+  use kinetostat_deck, only: deck_source_t
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_csv_writer, only: write_csv
@@ -55,13 +56,13 @@ contains
 
   !> Run one deck through a mechanism; on success `out` holds the whole output and `table`
   !> the results (self-check figures, warning) for the caller's remarks.
-  subroutine run_mechanism(mech, group, path, options, table, out, error)
+  subroutine run_mechanism(mech, group, source, options, table, out, error)
     !> The mechanism named by the deck's first group.
     class(mechanism_t), intent(inout) :: mech
     !> Namelist group name (mechanism kind).
     character(*), intent(in) :: group
-    !> Deck file.
-    character(*), intent(in) :: path
+    !> The deck, read into memory.
+    type(deck_source_t), intent(in) :: source
     !> Format and language.
     type(run_options_t), intent(in) :: options
     !> The results.
@@ -71,10 +72,10 @@ contains
     !> Input, geometry or overflow error.
     type(error_t), allocatable, intent(out) :: error
 
-    call mech%read_deck(path, error)
+    call mech%read_deck(source, error)
     if (allocated(error)) return
     table%mechanism = group
-    table%deck = path
+    table%deck = source%path
     table%row_name = "step"
     table%driver = "M1"
     call mech%solve(table, error)

@@ -5,7 +5,7 @@ module kinetostat_pr3050_deck
   use kinetostat_text, only: real_str, int_str
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, max_deck_array, max_steps, &
-    open_deck, namelist_failure, deck_error, require_set, require_positive, &
+    deck_source_t, namelist_failure, deck_error, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values
   use kinetostat_pr3050, only: pr3050_params_t
   implicit none
@@ -102,9 +102,9 @@ contains
   end function pr3050_step_count
 
   !> Read and validate a `&pr3050` deck.
-  subroutine read_pr3050_deck(path, deck, error)
-    !> Deck file.
-    character(*), intent(in) :: path
+  subroutine read_pr3050_deck(source, deck, error)
+    !> The deck, read into memory (see load_deck).
+    type(deck_source_t), intent(in) :: source
     !> The validated deck.
     type(pr3050_deck_t), intent(out) :: deck
     !> Input error naming file, group, variable and reason.
@@ -112,13 +112,13 @@ contains
     real(wp) :: l_ca, l_cb, l_cs3, delta, l_bs2, l_s1a, gamma, g, m1, m2, m3, j1, j2, j3
     real(wp) :: phi3_start, phi3_end, dphi3
     real(wp), allocatable :: omega3(:), eps3(:)
-    integer :: unit, ios, n_omega3, n_eps3, k
+    integer :: ios, n_omega3, n_eps3, k
     character(len=512) :: msg
     type(deck_context_t) :: ctx
     namelist /pr3050/ l_ca, l_cb, l_cs3, delta, l_bs2, l_s1a, gamma, g, m1, m2, m3, j1, j2, j3, &
       phi3_start, phi3_end, dphi3, omega3, eps3
 
-    ctx%path = path
+    ctx%path = source%path
     ctx%group = "pr3050"
     l_ca = unset_real; l_cb = unset_real; l_cs3 = unset_real; delta = unset_real
     l_bs2 = unset_real; l_s1a = unset_real; gamma = unset_real; g = unset_real
@@ -128,10 +128,7 @@ contains
     allocate (omega3(max_deck_array), source=unset_real)
     allocate (eps3(max_deck_array), source=unset_real)
 
-    call open_deck(path, unit, error)
-    if (allocated(error)) return
-    read (unit, nml=pr3050, iostat=ios, iomsg=msg)
-    close (unit)
+    read (source%lines, nml=pr3050, iostat=ios, iomsg=msg)
     if (ios /= 0) then
       call namelist_failure(ctx, ios, msg, error)
       return

@@ -2,6 +2,7 @@
 !> the legacy table layout (one E-format line per step, then the prismatic-pair block).
 module kinetostat_pr3050_layout
   use kinetostat_kinds, only: wp, deg_to_rad
+  use kinetostat_deck, only: deck_source_t
   use kinetostat_error, only: error_t
   use kinetostat_text, only: int_str, real_str
   use kinetostat_vec2, only: angle_360_deg
@@ -61,11 +62,11 @@ contains
     allocate (pr3050_mechanism_t :: mech)
   end subroutine new_pr3050
 
-  subroutine read_deck(self, path, error)
+  subroutine read_deck(self, source, error)
     class(pr3050_mechanism_t), intent(inout) :: self
-    character(*), intent(in) :: path
+    type(deck_source_t), intent(in) :: source
     type(error_t), allocatable, intent(out) :: error
-    call read_pr3050_deck(path, self%deck, error)
+    call read_pr3050_deck(source, self%deck, error)
   end subroutine read_deck
 
   pure function title(self, lang) result(text)

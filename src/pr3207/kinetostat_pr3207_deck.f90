@@ -4,8 +4,8 @@ module kinetostat_pr3207_deck
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str
   use kinetostat_text_buffer, only: text_buffer_t
-  use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, unset_int, max_deck_array, &
-    open_deck, namelist_failure, deck_error, is_set, require_set, require_positive, &
+  use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, max_deck_array, &
+    deck_source_t, namelist_failure, deck_error, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn
   use kinetostat_pr3207, only: pr3207_params_t
   implicit none
@@ -94,9 +94,9 @@ contains
   end function pr3207_cut_force
 
   !> Read and validate a `&pr3207` deck.
-  subroutine read_pr3207_deck(path, deck, error)
-    !> Deck file.
-    character(*), intent(in) :: path
+  subroutine read_pr3207_deck(source, deck, error)
+    !> The deck, read into memory (see load_deck).
+    type(deck_source_t), intent(in) :: source
     !> The validated deck.
     type(pr3207_deck_t), intent(out) :: deck
     !> Input error naming file, group, variable and reason.
@@ -104,26 +104,25 @@ contains
     real(wp) :: l_ab, l_ac, l_cd, l_cs3, m1, m3, m5, j3, omega1, g, phi_start, dphi
     real(wp) :: f5c_work, f5c_idle, phi_cut_start, phi_cut_end
     real(wp), allocatable :: f5c(:)
-    integer :: n, unit, ios, n_f5c, k
+    !> Number of steps as given (an integer deck variable, read as a real: see require_whole).
+    real(wp) :: n
+    integer :: ios, n_f5c, k
     character(len=512) :: msg
     type(deck_context_t) :: ctx
     logical :: two_value_given
     namelist /pr3207/ l_ab, l_ac, l_cd, l_cs3, m1, m3, m5, j3, omega1, g, phi_start, dphi, n, &
       f5c, f5c_work, f5c_idle, phi_cut_start, phi_cut_end
 
-    ctx%path = path
+    ctx%path = source%path
     ctx%group = "pr3207"
     l_ab = unset_real; l_ac = unset_real; l_cd = unset_real; l_cs3 = unset_real
     m1 = unset_real; m3 = unset_real; m5 = unset_real; j3 = unset_real
     omega1 = unset_real; g = unset_real; phi_start = unset_real; dphi = unset_real
     f5c_work = unset_real; f5c_idle = unset_real; phi_cut_start = unset_real; phi_cut_end = unset_real
-    n = unset_int
+    n = unset_real
     allocate (f5c(max_deck_array), source=unset_real)
 
-    call open_deck(path, unit, error)
-    if (allocated(error)) return
-    read (unit, nml=pr3207, iostat=ios, iomsg=msg)
-    close (unit)
+    read (source%lines, nml=pr3207, iostat=ios, iomsg=msg)
     if (ios /= 0) then
       call namelist_failure(ctx, ios, msg, error)
       return

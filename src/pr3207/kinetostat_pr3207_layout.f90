@@ -2,6 +2,7 @@
 !> the legacy table layout of the 1991 printout (two lines per step).
 module kinetostat_pr3207_layout
   use kinetostat_kinds, only: wp, deg_to_rad, rad_to_deg
+  use kinetostat_deck, only: deck_source_t
   use kinetostat_error, only: error_t
   use kinetostat_noise, only: noise_floor, force_columns, angles_0_360
   use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_moment
@@ -58,11 +59,11 @@ contains
     allocate (pr3207_mechanism_t :: mech)
   end subroutine new_pr3207
 
-  subroutine read_deck(self, path, error)
+  subroutine read_deck(self, source, error)
     class(pr3207_mechanism_t), intent(inout) :: self
-    character(*), intent(in) :: path
+    type(deck_source_t), intent(in) :: source
     type(error_t), allocatable, intent(out) :: error
-    call read_pr3207_deck(path, self%deck, error)
+    call read_pr3207_deck(source, self%deck, error)
   end subroutine read_deck
 
   pure function title(self, lang) result(text)

@@ -4,8 +4,8 @@ module kinetostat_sixbar_deck
   use kinetostat_error, only: error_t, fatal_error, exit_geometry
   use kinetostat_text, only: real_str, int_str
   use kinetostat_text_buffer, only: text_buffer_t
-  use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, unset_int, max_deck_array, &
-    open_deck, namelist_failure, deck_error, is_set, require_set, require_positive, &
+  use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, max_deck_array, &
+    deck_source_t, namelist_failure, deck_error, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn
   use kinetostat_sixbar, only: sixbar_params_t, sixbar_extreme_phi1
   implicit none
@@ -70,9 +70,9 @@ contains
 
   !> Read and validate a `&sixbar` deck. Input errors have exit code 2; a requested
   !> extreme position that does not exist is a geometry error (exit 3).
-  subroutine read_sixbar_deck(path, deck, error)
-    !> Deck file.
-    character(*), intent(in) :: path
+  subroutine read_sixbar_deck(source, deck, error)
+    !> The deck, read into memory (see load_deck).
+    type(deck_source_t), intent(in) :: source
     !> The validated deck.
     type(sixbar_deck_t), intent(out) :: deck
     !> Input (or geometry) error naming file, group, variable and reason.
@@ -81,13 +81,15 @@ contains
     real(wp) :: m1, m2, m3, m4, m5, j1, j2, j3, j4, omega1, g, dphi, phi_start, phi_ext
     real(wp), allocatable :: f5(:)
     logical :: start_at_extreme, legacy_eq2, ok
-    integer :: n, unit, ios, n_f5, k
+    !> Number of steps as given (an integer deck variable, read as a real: see require_whole).
+    real(wp) :: n
+    integer :: ios, n_f5, k
     character(len=512) :: msg
     type(deck_context_t) :: ctx
     namelist /sixbar/ a, b, l1, lam2, lam_s2, lam3, lam_de, lam4, lam_s4, lam_e, &
       m1, m2, m3, m4, m5, j1, j2, j3, j4, omega1, g, dphi, n, phi_start, start_at_extreme, f5, legacy_eq2
 
-    ctx%path = path
+    ctx%path = source%path
     ctx%group = "sixbar"
     a = unset_real; b = unset_real; l1 = unset_real
     lam2 = unset_real; lam_s2 = unset_real; lam3 = unset_real; lam_de = unset_real
@@ -95,15 +97,12 @@ contains
     m1 = unset_real; m2 = unset_real; m3 = unset_real; m4 = unset_real; m5 = unset_real
     j1 = unset_real; j2 = unset_real; j3 = unset_real; j4 = unset_real
     omega1 = unset_real; g = unset_real; dphi = unset_real; phi_start = unset_real
-    n = unset_int
+    n = unset_real
     start_at_extreme = .false.
     legacy_eq2 = .false.
     allocate (f5(max_deck_array), source=unset_real)
 
-    call open_deck(path, unit, error)
-    if (allocated(error)) return
-    read (unit, nml=sixbar, iostat=ios, iomsg=msg)
-    close (unit)
+    read (source%lines, nml=sixbar, iostat=ios, iomsg=msg)
     if (ios /= 0) then
       call namelist_failure(ctx, ios, msg, error)
       return
@@ -149,7 +148,7 @@ contains
     if (start_at_extreme) then
       call sixbar_extreme_phi1(deck%p, phi_ext, ok)
       if (.not. ok) then
-        call fatal_error(error, exit_geometry, path//": &sixbar: start_at_extreme: step 1 (extreme position)"// &
+        call fatal_error(error, exit_geometry, source%path//": &sixbar: start_at_extreme: step 1 (extreme position)"// &
           " cannot be assembled: crank and connecting rod cannot lie in line (l1 + l2 = "// &
           real_str(l1 * (1.0_wp + lam2))//" m; needs |l_AD - l3| < l1 + l2 < l_AD + l3 with l_AD = "// &
           real_str(hypot(a, b))//" m, l3 = "//real_str(lam3 * l1)//" m)")

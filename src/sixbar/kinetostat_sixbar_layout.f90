@@ -2,6 +2,7 @@
 !> legacy table layout of appendix 2 (two lines per step).
 module kinetostat_sixbar_layout
   use kinetostat_kinds, only: wp, deg_to_rad, rad_to_deg
+  use kinetostat_deck, only: deck_source_t
   use kinetostat_error, only: error_t, fatal_error, exit_geometry
   use kinetostat_text, only: real_str, int_str
   use kinetostat_noise, only: noise_floor, force_columns, angles_pm180
@@ -57,11 +58,11 @@ contains
     allocate (sixbar_mechanism_t :: mech)
   end subroutine new_sixbar
 
-  subroutine read_deck(self, path, error)
+  subroutine read_deck(self, source, error)
     class(sixbar_mechanism_t), intent(inout) :: self
-    character(*), intent(in) :: path
+    type(deck_source_t), intent(in) :: source
     type(error_t), allocatable, intent(out) :: error
-    call read_sixbar_deck(path, self%deck, error)
+    call read_sixbar_deck(source, self%deck, error)
   end subroutine read_deck
 
   pure function title(self, lang) result(text)

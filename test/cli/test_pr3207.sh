@@ -68,7 +68,7 @@ expect_input_error negative-g '&pr3207: g: must be >= 0' "$(deck_with neg_g "$re
 expect_input_error l_ab-ge-l_ac '&pr3207: l_ab: must be < l_ac' "$(deck_with ab_ac "$ref" 's/l_ab = 0.11/l_ab = 0.38/')"
 expect_input_error l_cd-too-short '&pr3207: l_cd: must be > l_ac \+ l_ab' "$(deck_with cd_short "$ref" 's/l_cd = 0.72/l_cd = 0.49/')"
 expect_input_error zero-step '&pr3207: dphi: must be > 0' "$(deck_with zero_step "$ref" 's/dphi = 30/dphi = 0/')"
-expect_input_error no-positions '&pr3207: n: must be from 1' "$(deck_with no_pos "$ref" 's/dphi = 30/dphi = 30, n = 0/')"
+expect_input_error no-positions '&pr3207: n: must be a whole number from 1 to 1000000' "$(deck_with no_pos "$ref" 's/dphi = 30/dphi = 30, n = 0/')"
 expect_input_error f5c-wrong-length '&pr3207: f5c: expected 13 values' "$(deck_with f5c_len "$ref" 's/f5c_work = 3000, f5c_idle = 0/f5c = 1, 2, 3/; /phi_cut_start/d')"
 expect_input_error f5c-gap '&pr3207: f5c: values must be given without gaps' "$(deck_with f5c_gap "$ref" 's/f5c_work = 3000, f5c_idle = 0/f5c(1) = 1, f5c(3) = 2/; /phi_cut_start/d')"
 expect_input_error f5c-both-forms '&pr3207: f5c: give either' "$(deck_with f5c_both "$ref" 's/f5c_idle = 0/f5c_idle = 0, f5c = 1/')"

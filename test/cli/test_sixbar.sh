@@ -78,7 +78,7 @@ expect_input_error sixbar-missing-omega1 '&sixbar: omega1: missing' "$(deck_with
 expect_input_error sixbar-inf-omega1 '&sixbar: omega1: must be a finite number' "$(deck_with sx_winf "$sx_ref" 's/omega1 = 100/omega1 = Infinity/')"
 expect_input_error sixbar-negative-g '&sixbar: g: must be >= 0' "$(deck_with sx_g "$sx_ref" 's/g = 9.81/g = -9.81/')"
 expect_input_error sixbar-zero-step '&sixbar: dphi: must be > 0' "$(deck_with sx_dphi "$sx_ref" 's/dphi = 30/dphi = 0/')"
-expect_input_error sixbar-no-positions '&sixbar: n: must be from 1' "$(deck_with sx_n "$sx_ref" 's/n = 13/n = 0/')"
+expect_input_error sixbar-no-positions '&sixbar: n: must be a whole number from 1 to 1000000' "$(deck_with sx_n "$sx_ref" 's/n = 13/n = 0/')"
 expect_input_error sixbar-both-starts '&sixbar: phi_start: give either' "$(deck_with sx_both "$sx_ref" 's/dphi = 30/phi_start = 10, dphi = 30/')"
 expect_input_error sixbar-f5-wrong-length '&sixbar: f5: expected 13 values' "$(deck_with sx_f5len "$sx_ref" 's/f5 = 7\*1000, 6\*0/f5 = 1, 2, 3/')"
 expect_input_error sixbar-f5-missing '&sixbar: f5: missing' "$(deck_with sx_f5none "$sx_ref" '/f5 =/d')"
