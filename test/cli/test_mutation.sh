@@ -11,7 +11,7 @@ for category in exit-code non-finite error-shape no-leftover warning-shape runti
     pass
   else
     fail "mutation-$category" "$(grep -m1 "^check $category:" "$mutation_log" || echo "no verdict (script failed: $(tail -3 "$mutation_log"))")
-$(grep "^FAIL .* $category (" "$mutation_log" | head -20)"
+$(grep "^FAIL .* $category (" "$mutation_log" | head -100)"
   fi
 done
 grep '^mutation: ' "$mutation_log"
