@@ -9,7 +9,8 @@ module test_foundation
     deck_context_t, unset_real, unset_bits, is_set, is_whole_in, require_whole, require_set, &
     steps_over_turn
   use kinetostat_vec2, only: angle_360_deg, angle_180_deg, cross, perp, rotate, snap_noise
-  use kinetostat_selfcheck, only: link_residual, power_mismatch
+  use kinetostat_selfcheck, only: link_residual, power_mismatch, link_balance_t, balance_add_force, &
+    equilibrium_residual
   use kinetostat_lapack, only: solve_dense
   use test_harness, only: test_counts_t, check_close, check_true, operator(.dot.)
   implicit none
@@ -23,6 +24,7 @@ contains
     real(wp), parameter :: tol = 1.0e-14_wp
     real(wp) :: a(3, 3), x(3), r
     type(error_t), allocatable :: error
+    type(link_balance_t) :: links(3)
 
     ! angles: ranges, zero vector, signed zeros
     call check_close(t, "angle_360 of (-1,-1)", 225.0_wp, angle_360_deg([-1.0_wp, -1.0_wp]), tol, tol)
@@ -48,6 +50,32 @@ contains
     call check_close(t, "unbalanced lever residual", 1.0_wp / 5.0_wp, r, tol, tol)
     call check_close(t, "power mismatch scaled by max(|q|,scale)", 0.01_wp / 1.01_wp, &
                      power_mismatch(1.01_wp, 1.0_wp, 1.0_wp), 1.0e-12_wp, 0.0_wp)
+
+    ! shared floor rule: link 1 a short loaded lever (1000 N, arms 1 mm: sum |M_i| = 4 N*m);
+    ! link 2 a two-force link whose moments are roundoff (1e-13 N*m against 1000 N * 1 m): its
+    ! own moment ratio is 1; judged against 1e-6 of the step's largest sum |r|*|F| (1000 N*m)
+    ! it is 1e-10 (against 1e-6 of the largest sum |M_i|, 4 N*m, it would be 2.5e-8, as
+    ! pr3050 with g = 0 showed)
+    call balance_add_force(links(1), [0.0_wp, 0.0_wp], [0.0_wp, 0.0_wp], [0.0_wp, 1000.0_wp])
+    call balance_add_force(links(1), [0.0_wp, 0.0_wp], [1.0e-3_wp, 0.0_wp], [0.0_wp, -2000.0_wp])
+    call balance_add_force(links(1), [0.0_wp, 0.0_wp], [2.0e-3_wp, 0.0_wp], [0.0_wp, 1000.0_wp])
+    call balance_add_force(links(2), [0.0_wp, 0.0_wp], [0.0_wp, 0.0_wp], [1000.0_wp, 0.0_wp])
+    call balance_add_force(links(2), [0.0_wp, 0.0_wp], [1.0_wp, 1.0e-16_wp], [-1000.0_wp, 0.0_wp])
+    call check_close(t, "two-force link: |sum M| / sum |M_i| is 1 (roundoff scale)", 1.0_wp, &
+                     abs(links(2)%sum_m) / links(2)%scale_m, 1.0e-12_wp, 0.0_wp)
+    r = equilibrium_residual(links(1:2))
+    call check_true(t, "two-force link in its step: residual <= 1e-9", r <= 1.0e-9_wp, &
+                    "residual "//trim(real_text(r))//", expected <= 1e-9")
+    ! the check can still fail: a wrong reaction (999 N instead of 1000 N) on link 2 ...
+    links(2) = link_balance_t()
+    call balance_add_force(links(2), [0.0_wp, 0.0_wp], [0.0_wp, 0.0_wp], [1000.0_wp, 0.0_wp])
+    call balance_add_force(links(2), [0.0_wp, 0.0_wp], [1.0_wp, 0.0_wp], [-999.0_wp, 0.0_wp])
+    call check_close(t, "wrong reaction on a loaded link: residual 1/1999", 1.0_wp / 1999.0_wp, &
+                     equilibrium_residual(links(1:2)), 1.0e-12_wp, 0.0_wp)
+    ! ... and a 1 N force left unbalanced on an otherwise unloaded link (above the floor)
+    call balance_add_force(links(3), [0.0_wp, 0.0_wp], [0.0_wp, 0.0_wp], [1.0_wp, 0.0_wp])
+    call check_close(t, "unbalanced 1 N on an unloaded link: residual 1", 1.0_wp, &
+                     equilibrium_residual(links), 1.0e-12_wp, 0.0_wp)
 
     ! LAPACK wrapper: a known solution, then a singular matrix -> geometry error
     a = reshape([4.0_wp, 1.0_wp, 0.0_wp, 1.0_wp, 3.0_wp, 1.0_wp, 0.0_wp, 1.0_wp, 2.0_wp], [3, 3])
@@ -225,5 +253,12 @@ contains
     call steps_over_turn(ctx, 30.0_wp, 7.0_wp, n, error)
     call check_true(t, "steps_over_turn with n = 7", .not. allocated(error) .and. n == 7, message_of(error))
   end subroutine test_unset_and_whole
+
+  !> A real in es10.3 for messages.
+  pure function real_text(x) result(text)
+    real(wp), intent(in) :: x
+    character(len=10) :: text
+    write (text, '(es10.3)') x
+  end function real_text
 
 end module test_foundation

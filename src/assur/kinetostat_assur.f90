@@ -13,7 +13,8 @@ module kinetostat_assur
   use kinetostat_error, only: error_t, fatal_error, exit_geometry
   use kinetostat_vec2, only: unit_at, cross, magnitude
   use kinetostat_loads, only: inertia_force, inertia_moment, gravity_force
-  use kinetostat_selfcheck, only: power_mismatch
+  use kinetostat_selfcheck, only: link_balance_t, balance_add_force, balance_add_couple, equilibrium_residual, &
+    power_mismatch
   use kinetostat_text, only: int_str
   use kinetostat_assur_kinematics, only: link_state_t, point_state_t, dyad_geometry_t, dyad_pose_t, &
     point_on, crank_state, frame_state, dyad_pose, kind_names, pose_ok, pose_no_assembly
@@ -101,18 +102,6 @@ module kinetostat_assur
     real(wp) :: mismatch = 0.0_wp
   end type assur_step_t
 
-  !> Smallest link load scale, relative to the step's largest, for the equilibrium residual.
-  real(wp), parameter :: floor_rel = 1.0e-6_wp
-
-  !> Sum of forces and moments (about a link's origin) acting on a link, with the sums of
-  !> their magnitudes for relative residuals.
-  type :: wrench_acc_t
-    real(wp) :: f(2) = 0.0_wp
-    real(wp) :: m = 0.0_wp
-    real(wp) :: sf = 0.0_wp
-    real(wp) :: sm = 0.0_wp
-  end type wrench_acc_t
-
 contains
 
   !> Internal index of link a (first link) of dyad `d`.
@@ -144,43 +133,6 @@ contains
     integer, intent(in) :: nd
     crank_pin_index = 3 * nd + 1
   end function crank_pin_index
-
-  pure subroutine add_force(acc, o, p, f)
-    type(wrench_acc_t), intent(inout) :: acc
-    real(wp), intent(in) :: o(2), p(2), f(2)
-    real(wp) :: mo
-    mo = cross(p - o, f)
-    acc%f = acc%f + f
-    acc%m = acc%m + mo
-    acc%sf = acc%sf + magnitude(f)
-    acc%sm = acc%sm + abs(mo)
-  end subroutine add_force
-
-  pure subroutine add_couple(acc, c)
-    type(wrench_acc_t), intent(inout) :: acc
-    real(wp), intent(in) :: c
-    acc%m = acc%m + c
-    acc%sm = acc%sm + abs(c)
-  end subroutine add_couple
-
-  !> Relative residual of one link; its scales are at least `floor_rel` times the step's
-  !> largest link scales `sf_max`, `sm_max` (a link whose loads are all roundoff-level,
-  !> e.g. an unloaded massless link, is judged against the mechanism's load level).
-  pure real(wp) function acc_residual(acc, sf_max, sm_max)
-    type(wrench_acc_t), intent(in) :: acc
-    real(wp), intent(in) :: sf_max, sm_max
-    acc_residual = max(ratio(magnitude(acc%f), max(acc%sf, floor_rel * sf_max)), &
-                       ratio(abs(acc%m), max(acc%sm, floor_rel * sm_max)))
-  end function acc_residual
-
-  pure real(wp) function ratio(num, den)
-    real(wp), intent(in) :: num, den
-    if (den > 0.0_wp) then
-      ratio = num / den
-    else
-      ratio = num
-    end if
-  end function ratio
 
   !> "dyad d (KIND, links i-j)" for messages.
   pure function dyad_label(mech, d) result(s)
@@ -247,12 +199,12 @@ contains
     type(error_t), allocatable, intent(out) :: error
     type(link_state_t) :: states(0:2 * size(mech%dyads) + 1)
     type(dyad_pose_t) :: poses(size(mech%dyads))
-    type(wrench_acc_t) :: known(0:2 * size(mech%dyads) + 1)
+    type(link_balance_t) :: known(0:2 * size(mech%dyads) + 1)
     type(point_state_t) :: ps
     type(dyad_reactions_t) :: r
     type(error_t), allocatable :: solve_error
     real(wp) :: w2, a_s(2), eps, phi_f(2), gw(2), m_phi, dir(2), f_known(2, 2), m_known(2), o(2)
-    real(wp) :: power, power_scale, term, residual
+    real(wp) :: power, power_scale, term
     integer :: i, d, nd, k, q, jp
     integer, parameter :: pair_of_link(2) = [1, 3]
 
@@ -279,8 +231,8 @@ contains
         gw = gravity_force(lk%m, mech%g, mech%down)
         phi_f = inertia_force(lk%m, a_s)
         m_phi = inertia_moment(lk%j, eps)
-        call add_force(known(i), st%o, ps%p, gw + phi_f)
-        call add_couple(known(i), m_phi)
+        call balance_add_force(known(i), st%o, ps%p, gw + phi_f)
+        call balance_add_couple(known(i), m_phi)
         term = dot_product(gw + phi_f, ps%v)
         power = power + term + m_phi * st%u
         power_scale = power_scale + abs(term) + abs(m_phi * st%u)
@@ -295,7 +247,7 @@ contains
         else
           dir = unit_at(fo%angle)
         end if
-        call add_force(known(i), states(i)%o, ps%p, f_mag(k) * dir)
+        call balance_add_force(known(i), states(i)%o, ps%p, f_mag(k) * dir)
         term = dot_product(f_mag(k) * dir, ps%v)
         power = power + term
         power_scale = power_scale + abs(term)
@@ -303,7 +255,7 @@ contains
     end do
     do k = 1, size(mech%moment_link)
       i = mech%moment_link(k)
-      call add_couple(known(i), m_mag(k))
+      call balance_add_couple(known(i), m_mag(k))
       power = power + m_mag(k) * states(i)%u
       power_scale = power_scale + abs(m_mag(k) * states(i)%u)
     end do
@@ -313,8 +265,8 @@ contains
       o = poses(d)%p(:, 2)
       do q = 1, 2
         i = 2 * d + q - 1
-        f_known(:, q) = known(i)%f
-        m_known(q) = known(i)%m + cross(states(i)%o - o, known(i)%f)
+        f_known(:, q) = known(i)%sum_f
+        m_known(q) = known(i)%sum_m + cross(states(i)%o - o, known(i)%sum_f)
       end do
       call dyad_reactions(mech%dyads(d)%geom%kind, poses(d)%p, poses(d)%t, o, f_known, m_known, r, solve_error)
       if (allocated(solve_error)) then
@@ -332,37 +284,33 @@ contains
         jp = pair_of_link(q)
         i = mech%dyads(d)%on(q)
         if (i == 0) cycle
-        call add_force(known(i), states(i)%o, poses(d)%p(:, jp), -r%f(:, jp))
-        call add_couple(known(i), -r%m(jp))
+        call balance_add_force(known(i), states(i)%o, poses(d)%p(:, jp), -r%f(:, jp))
+        call balance_add_couple(known(i), -r%m(jp))
       end do
     end do
 
     ! crank: pin reaction from the frame and balancing moment about the pivot
-    step%f(:, crank_pin_index(nd)) = -known(1)%f
-    step%m1 = -known(1)%m
+    step%f(:, crank_pin_index(nd)) = -known(1)%sum_f
+    step%m1 = -known(1)%sum_m
     step%m1_power = -power
     step%mismatch = power_mismatch(step%m1, step%m1_power, power_scale)
 
     ! equilibrium residual of every moving link with all its loads and reactions
-    call add_force(known(1), states(1)%o, states(1)%o, step%f(:, crank_pin_index(nd)))
-    call add_couple(known(1), step%m1)
+    call balance_add_force(known(1), states(1)%o, states(1)%o, step%f(:, crank_pin_index(nd)))
+    call balance_add_couple(known(1), step%m1)
     do d = 1, nd
       associate (pa => link_a(d), pb => link_b(d))
-        call add_force(known(pa), states(pa)%o, poses(d)%p(:, 1), step%f(:, pair_index(d, 1)))
-        call add_couple(known(pa), step%m(pair_index(d, 1)))
-        call add_force(known(pa), states(pa)%o, poses(d)%p(:, 2), step%f(:, pair_index(d, 2)))
-        call add_couple(known(pa), step%m(pair_index(d, 2)))
-        call add_force(known(pb), states(pb)%o, poses(d)%p(:, 2), -step%f(:, pair_index(d, 2)))
-        call add_couple(known(pb), -step%m(pair_index(d, 2)))
-        call add_force(known(pb), states(pb)%o, poses(d)%p(:, 3), step%f(:, pair_index(d, 3)))
-        call add_couple(known(pb), step%m(pair_index(d, 3)))
+        call balance_add_force(known(pa), states(pa)%o, poses(d)%p(:, 1), step%f(:, pair_index(d, 1)))
+        call balance_add_couple(known(pa), step%m(pair_index(d, 1)))
+        call balance_add_force(known(pa), states(pa)%o, poses(d)%p(:, 2), step%f(:, pair_index(d, 2)))
+        call balance_add_couple(known(pa), step%m(pair_index(d, 2)))
+        call balance_add_force(known(pb), states(pb)%o, poses(d)%p(:, 2), -step%f(:, pair_index(d, 2)))
+        call balance_add_couple(known(pb), -step%m(pair_index(d, 2)))
+        call balance_add_force(known(pb), states(pb)%o, poses(d)%p(:, 3), step%f(:, pair_index(d, 3)))
+        call balance_add_couple(known(pb), step%m(pair_index(d, 3)))
       end associate
     end do
-    residual = 0.0_wp
-    do i = 1, ubound(known, 1)
-      residual = max(residual, acc_residual(known(i), maxval(known(1:)%sf), maxval(known(1:)%sm)))
-    end do
-    step%residual = residual
+    step%residual = equilibrium_residual(known(1:))
   end subroutine assur_step
 
 end module kinetostat_assur

@@ -5,16 +5,109 @@ module kinetostat_selfcheck
   use kinetostat_vec2, only: cross, magnitude
   implicit none
   private
-  public :: link_residual, power_mismatch, selfcheck_tolerance
+  public :: link_balance_t, link_balance, balance_add_force, balance_add_couple
+  public :: equilibrium_residual, link_residual, power_mismatch
+  public :: selfcheck_tolerance, residual_floor_rel
 
   !> A self-check worse than this (relative) is a bug: the CLI warns and the tests fail.
   real(wp), parameter :: selfcheck_tolerance = 1.0e-6_wp
+  !> Smallest load scale of a link in its equilibrium residual, relative to the step's
+  !> largest: forces against the largest sum |F_i| of a link, moments against the largest
+  !> sum |r_i|*|F_i| + sum |C_j| (the size of the terms whose roundoff the moment sum
+  !> carries). A link whose loads are all roundoff-level (a massless unloaded link, the
+  !> moments of a two-force link) is judged against the step's load level instead of
+  !> reporting a residual near 1.
+  real(wp), parameter :: residual_floor_rel = 1.0e-6_wp
+
+  !> The loads acting on one link: resultant force (N) and moment (N*m, about the link's
+  !> reference point), with the sums of their magnitudes (the link's scales).
+  type :: link_balance_t
+    !> Resultant force, N.
+    real(wp) :: sum_f(2) = 0.0_wp
+    !> Resultant moment about the reference point, N*m.
+    real(wp) :: sum_m = 0.0_wp
+    !> Sum of the force magnitudes, N.
+    real(wp) :: scale_f = 0.0_wp
+    !> Sum of the moment magnitudes (forces' moments and couples), N*m.
+    real(wp) :: scale_m = 0.0_wp
+    !> Sum of |lever arm| * |force| and of the couples' magnitudes, N*m (>= scale_m).
+    real(wp) :: lever_m = 0.0_wp
+  end type link_balance_t
 
 contains
 
-  !> Relative equilibrium residual of one link: forces `f(:,i)` applied at `at(:,i)` and
-  !> couples `c(:)`. Returns max(|sum F| / sum |F_i|, |sum M_O| / sum |M_i|), moments taken
-  !> about the first point; each ratio is 0 when its scale is 0 (nothing acts).
+  !> Adds force `f` (N) applied at `at` (m) to `balance`, its moment taken about `origin` (m).
+  pure subroutine balance_add_force(balance, origin, at, f)
+    !> The link's loads so far.
+    type(link_balance_t), intent(inout) :: balance
+    !> Reference point of the link's moments, m.
+    real(wp), intent(in) :: origin(2)
+    !> Point of application, m.
+    real(wp), intent(in) :: at(2)
+    !> Force, N.
+    real(wp), intent(in) :: f(2)
+    real(wp) :: m
+    m = cross(at - origin, f)
+    balance%sum_f = balance%sum_f + f
+    balance%scale_f = balance%scale_f + magnitude(f)
+    balance%sum_m = balance%sum_m + m
+    balance%scale_m = balance%scale_m + abs(m)
+    balance%lever_m = balance%lever_m + magnitude(at - origin) * magnitude(f)
+  end subroutine balance_add_force
+
+  !> Adds couple `c` (N*m, CCW positive) to `balance`.
+  pure subroutine balance_add_couple(balance, c)
+    !> The link's loads so far.
+    type(link_balance_t), intent(inout) :: balance
+    !> Couple, N*m.
+    real(wp), intent(in) :: c
+    balance%sum_m = balance%sum_m + c
+    balance%scale_m = balance%scale_m + abs(c)
+    balance%lever_m = balance%lever_m + abs(c)
+  end subroutine balance_add_couple
+
+  !> The loads of one link: forces `f(:,i)` applied at `at(:,i)` and couples `c(:)`,
+  !> moments taken about the first point.
+  pure function link_balance(at, f, c) result(balance)
+    !> Points of application, m (2 x n).
+    real(wp), intent(in) :: at(:, :)
+    !> Forces, N (2 x n).
+    real(wp), intent(in) :: f(:, :)
+    !> Couples, N*m (may be empty).
+    real(wp), intent(in) :: c(:)
+    type(link_balance_t) :: balance
+    integer :: i
+    do i = 1, size(c)
+      call balance_add_couple(balance, c(i))
+    end do
+    do i = 1, size(f, 2)
+      call balance_add_force(balance, at(:, 1), at(:, i), f(:, i))
+    end do
+  end function link_balance
+
+  !> Largest relative equilibrium residual of the links of one step (the shared rule of every
+  !> mechanism): per link max(|sum F| / S_F, |sum M| / S_M) with S_F = max(sum |F_i|,
+  !> residual_floor_rel * the step's largest sum |F_i|) and S_M = max(sum |M_i|,
+  !> residual_floor_rel * the step's largest sum |r_i|*|F_i| + sum |C_j|); a ratio is 0 when
+  !> its scale is 0 (nothing acts anywhere in the step).
+  pure function equilibrium_residual(links) result(residual)
+    !> The loads of every link of the step.
+    type(link_balance_t), intent(in) :: links(:)
+    real(wp) :: residual
+    real(wp) :: floor_f, floor_m
+    integer :: i
+    residual = 0.0_wp
+    if (size(links) == 0) return
+    floor_f = residual_floor_rel * maxval(links%scale_f)
+    floor_m = residual_floor_rel * maxval(links%lever_m)
+    do i = 1, size(links)
+      residual = max(residual, ratio(magnitude(links(i)%sum_f), max(links(i)%scale_f, floor_f)), &
+                     ratio(abs(links(i)%sum_m), max(links(i)%scale_m, floor_m)))
+    end do
+  end function equilibrium_residual
+
+  !> Relative equilibrium residual of a single link (forces `f(:,i)` at `at(:,i)`, couples
+  !> `c`): equilibrium_residual of that link alone.
   pure function link_residual(at, f, c) result(residual)
     !> Points of application, m (2 x n).
     real(wp), intent(in) :: at(:, :)
@@ -23,20 +116,7 @@ contains
     !> Couples, N*m (may be empty).
     real(wp), intent(in) :: c(:)
     real(wp) :: residual
-    real(wp) :: sum_f(2), sum_m, scale_f, scale_m, m_i
-    integer :: i
-    sum_f = 0.0_wp
-    scale_f = 0.0_wp
-    sum_m = sum(c)
-    scale_m = sum(abs(c))
-    do i = 1, size(f, 2)
-      sum_f = sum_f + f(:, i)
-      scale_f = scale_f + magnitude(f(:, i))
-      m_i = cross(at(:, i) - at(:, 1), f(:, i))
-      sum_m = sum_m + m_i
-      scale_m = scale_m + abs(m_i)
-    end do
-    residual = max(ratio(magnitude(sum_f), scale_f), ratio(abs(sum_m), scale_m))
+    residual = equilibrium_residual([link_balance(at, f, c)])
   end function link_residual
 
   !> Relative mismatch of a driving moment (or force) `q` against its power-balance value

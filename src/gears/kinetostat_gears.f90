@@ -7,7 +7,8 @@
 module kinetostat_gears
   use kinetostat_kinds, only: wp, pi
   use kinetostat_vec2, only: unit_at, perp, cross
-  use kinetostat_selfcheck, only: link_residual, power_mismatch
+  use kinetostat_selfcheck, only: link_balance_t, link_balance, equilibrium_residual, link_residual, &
+    power_mismatch
   implicit none
   private
   public :: gear_spur, gear_helical, gear_bevel, gear_planetary, gear_kind_names
@@ -177,7 +178,8 @@ contains
     !> Centre of gear 1, m.
     real(wp), intent(in) :: o1(2)
     type(gear_result_t) :: r
-    real(wp) :: e(2), r1, r2, f21(2), res(2)
+    real(wp) :: e(2), r1, r2, f21(2)
+    type(link_balance_t) :: links(2)
 
     r%m1 = m1
     r%u = real(st%z2, wp) / real(st%z1, wp)
@@ -197,17 +199,18 @@ contains
       r%m2 = r%ft * r2 * sign(1.0_wp, m1)
       r%m2_power = m1 * r%u
       r%fs2 = 0.0_wp
-      res(2) = 0.0_wp
+      links(1) = link_balance(reshape([o1, r%p, o1], [2, 3]), reshape([r%fs1, r%f12, 0.0_wp, 0.0_wp], [2, 3]), [m1])
+      r%residual = equilibrium_residual(links(1:1))
     else
       r%m2 = cross(r%p - r%o2, f21)
       r%m2_power = m1 * (-r%u)
       r%fs2 = -f21
       ! gear 2: mesh force, support, and the load's moment -M2
-      res(2) = link_residual(reshape([r%o2, r%p, r%o2], [2, 3]), reshape([r%fs2, f21, 0.0_wp, 0.0_wp], [2, 3]), &
-                             [-r%m2])
+      links(1) = link_balance(reshape([o1, r%p, o1], [2, 3]), reshape([r%fs1, r%f12, 0.0_wp, 0.0_wp], [2, 3]), [m1])
+      links(2) = link_balance(reshape([r%o2, r%p, r%o2], [2, 3]), reshape([r%fs2, f21, 0.0_wp, 0.0_wp], [2, 3]), &
+                              [-r%m2])
+      r%residual = equilibrium_residual(links)
     end if
-    res(1) = link_residual(reshape([o1, r%p, o1], [2, 3]), reshape([r%fs1, r%f12, 0.0_wp, 0.0_wp], [2, 3]), [m1])
-    r%residual = maxval(res)
     r%mismatch = power_mismatch(r%m2, r%m2_power, abs(r%m2_power))
   end function gear_pair
 
@@ -260,8 +263,10 @@ contains
     real(wp), intent(in) :: m1
     type(gear_result_t) :: r
     real(wp) :: r1, r2, a_w, e(2), m_sat, ft, fr12, fr23, p23(2), sum_sun(2)
-    real(wp) :: m_carrier, m_ring, res(3), mis(2), f12j(2), f23j(2), f2hj(2), o2j(2), p12j(2)
+    real(wp) :: m_carrier, m_ring, mis(2), f12j(2), f23j(2), f2hj(2), o2j(2), p12j(2)
     real(wp), allocatable :: sun_at(:, :), sun_f(:, :), car_at(:, :), car_f(:, :)
+    !> Sun, carrier, satellites 1..k.
+    type(link_balance_t), allocatable :: links(:)
     integer :: j
 
     r%m1 = m1
@@ -282,10 +287,10 @@ contains
     r%fn = ft / cos(st%alpha_w)
 
     allocate (sun_at(2, st%k + 1), sun_f(2, st%k + 1), car_at(2, st%k + 1), car_f(2, st%k + 1))
+    allocate (links(st%k + 2))
     sum_sun = 0.0_wp
     m_carrier = 0.0_wp
     m_ring = 0.0_wp
-    res = 0.0_wp
     sun_at(:, 1) = 0.0_wp
     car_at(:, 1) = 0.0_wp
     do j = 1, st%k
@@ -305,8 +310,8 @@ contains
       sum_sun = sum_sun + f12j
       m_carrier = m_carrier + cross(o2j, -f2hj)
       m_ring = m_ring + cross(p23, -f23j)
-      res(2) = max(res(2), link_residual(reshape([o2j, p12j, p23], [2, 3]), &
-                                         reshape([f2hj, -f12j, f23j], [2, 3]), [real(wp) ::]))
+      links(j + 2) = link_balance(reshape([o2j, p12j, p23], [2, 3]), reshape([f2hj, -f12j, f23j], [2, 3]), &
+                                 [real(wp) ::])
       if (j == 1) then
         r%o2 = o2j
         r%p = p12j
@@ -319,13 +324,13 @@ contains
     r%fs2 = -sum(car_f(:, 2:), dim=2)
     sun_f(:, 1) = r%fs1
     car_f(:, 1) = r%fs2
-    res(1) = link_residual(sun_at, sun_f, [m1])
-    res(3) = link_residual(car_at, car_f, [-m_carrier])
+    links(1) = link_balance(sun_at, sun_f, [m1])
+    links(2) = link_balance(car_at, car_f, [-m_carrier])
     r%m2 = m_carrier
     r%m2_power = m1 * r%u
     r%m_house = m_ring
     r%m_house_power = m1 - r%m2_power
-    r%residual = maxval(res)
+    r%residual = equilibrium_residual(links)
     mis(1) = power_mismatch(r%m2, r%m2_power, abs(r%m2_power))
     mis(2) = power_mismatch(r%m_house, r%m_house_power, abs(m1) + abs(r%m2_power))
     r%mismatch = maxval(mis)

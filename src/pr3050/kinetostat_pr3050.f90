@@ -12,7 +12,7 @@ module kinetostat_pr3050
   use kinetostat_text, only: real_str
   use kinetostat_vec2, only: unit_at, perp, cross, polar
   use kinetostat_loads, only: inertia_force, inertia_moment, gravity_force
-  use kinetostat_selfcheck, only: link_residual, power_mismatch
+  use kinetostat_selfcheck, only: link_balance_t, link_balance, equilibrium_residual, power_mismatch
   implicit none
   private
   public :: pr3050_params_t, pr3050_position_t, pr3050_step_t
@@ -217,7 +217,8 @@ contains
     type(pr3050_position_t) :: pos
     real(wp) :: w2, down(2), c(2), n2(2), l1(2), l2(2), l3(2), g1(2), g2(2), g3(2)
     real(wp) :: m_phi1, m_phi2, m_phi3, m_a, m_a12, m_b3, f21n(2), oil_rod(2)
-    real(wp) :: terms(6), residuals(3)
+    type(link_balance_t) :: links(3)
+    real(wp) :: terms(6)
 
     pos = pr3050_position(p, phi3)
     w2 = omega3**2
@@ -267,13 +268,13 @@ contains
     ! self-check 1: equilibrium residual of every link with the computed reactions
     f21n = step%n21 * n2
     oil_rod = -step%f2 * pos%e2
-    residuals(1) = link_residual(reshape([pos%a, pos%b, pos%a, pos%s1], [2, 4]), &
-                                 reshape([step%f14, -f21n, -oil_rod, l1], [2, 4]), [-step%m21, m_phi1])
-    residuals(2) = link_residual(reshape([pos%s2, pos%b, pos%b, pos%b], [2, 4]), &
-                                 reshape([l2, -step%f32, f21n, oil_rod], [2, 4]), [step%m21, m_phi2])
-    residuals(3) = link_residual(reshape([c, pos%b, pos%s3], [2, 3]), &
-                                 reshape([step%f34, step%f32, l3], [2, 3]), [m_phi3])
-    step%residual = maxval(residuals)
+    links(1) = link_balance(reshape([pos%a, pos%b, pos%a, pos%s1], [2, 4]), &
+                            reshape([step%f14, -f21n, -oil_rod, l1], [2, 4]), [-step%m21, m_phi1])
+    links(2) = link_balance(reshape([pos%s2, pos%b, pos%b, pos%b], [2, 4]), &
+                            reshape([l2, -step%f32, f21n, oil_rod], [2, 4]), [step%m21, m_phi2])
+    links(3) = link_balance(reshape([c, pos%b, pos%s3], [2, 3]), &
+                            reshape([step%f34, step%f32, l3], [2, 3]), [m_phi3])
+    step%residual = equilibrium_residual(links)
 
     ! self-check 2: power balance divided by omega3 (analogues, also valid at omega3 = 0):
     ! F2*s' + sum (G_i + Phi_i).v_Siq + sum M_Phi_i*u_i3 = 0, u13 = u23, u33 = 1

@@ -8,7 +8,7 @@ module kinetostat_pr3207
   use kinetostat_kinds, only: wp
   use kinetostat_vec2, only: unit_at, perp, cross, polar
   use kinetostat_loads, only: inertia_force, inertia_moment, gravity_force
-  use kinetostat_selfcheck, only: link_residual, power_mismatch
+  use kinetostat_selfcheck, only: link_balance_t, link_balance, equilibrium_residual, power_mismatch
   implicit none
   private
   public :: pr3207_params_t, pr3207_position_t, pr3207_step_t
@@ -150,7 +150,8 @@ contains
     type(pr3207_position_t) :: pos
     real(wp) :: w2, a_s3(2), g1(2), g3(2), g5(2), phi3_f(2), phi5_f(2), m_phi3, f_cut(2)
     real(wp) :: a(2), c(2), e3(2), n32, f32(2), f12(2)
-    real(wp) :: terms(4), residuals(5)
+    type(link_balance_t) :: links(5)
+    real(wp) :: terms(4)
 
     pos = pr3207_position(p, phi1)
     w2 = p%omega1**2
@@ -188,18 +189,18 @@ contains
     step%m1 = -cross(pos%b - a, f12)
 
     ! self-check 1: equilibrium residual of every link with the computed reactions
-    residuals(1) = link_residual(reshape([a, pos%b, a], [2, 3]), &
-                                 reshape([step%f16, f12, g1], [2, 3]), [step%m1])
-    residuals(2) = link_residual(reshape([pos%b, pos%b], [2, 2]), &
-                                 reshape([step%f21, -f32], [2, 2]), [real(wp) ::])
-    residuals(3) = link_residual(reshape([c, pos%b, pos%d, pos%s3, pos%s3], [2, 5]), &
-                                 reshape([step%f36, f32, step%f34, g3, phi3_f], [2, 5]), [m_phi3])
-    residuals(4) = link_residual(reshape([pos%d, pos%d], [2, 2]), &
-                                 reshape([-step%f34, step%f34], [2, 2]), [real(wp) ::])
+    links(1) = link_balance(reshape([a, pos%b, a], [2, 3]), &
+                            reshape([step%f16, f12, g1], [2, 3]), [step%m1])
+    links(2) = link_balance(reshape([pos%b, pos%b], [2, 2]), &
+                            reshape([step%f21, -f32], [2, 2]), [real(wp) ::])
+    links(3) = link_balance(reshape([c, pos%b, pos%d, pos%s3, pos%s3], [2, 5]), &
+                            reshape([step%f36, f32, step%f34, g3, phi3_f], [2, 5]), [m_phi3])
+    links(4) = link_balance(reshape([pos%d, pos%d], [2, 2]), &
+                            reshape([-step%f34, step%f34], [2, 2]), [real(wp) ::])
     ! ram: force equations only (its moment equation holds through the unreported guide moment)
-    residuals(5) = link_residual(reshape([pos%d, pos%d, pos%d, pos%d, pos%d], [2, 5]), &
-                                 reshape([-step%f34, step%f56, f_cut, g5, phi5_f], [2, 5]), [real(wp) ::])
-    step%residual = maxval(residuals)
+    links(5) = link_balance(reshape([pos%d, pos%d, pos%d, pos%d, pos%d], [2, 5]), &
+                            reshape([-step%f34, step%f56, f_cut, g5, phi5_f], [2, 5]), [real(wp) ::])
+    step%residual = equilibrium_residual(links)
 
     ! self-check 2: M1 from virtual work, M1 + sum(F . v_q) + sum(M . u) = 0 (analogues)
     terms(1) = dot_product(g3 + phi3_f, pos%v_s3q)

@@ -11,7 +11,7 @@ module kinetostat_sixbar
   use kinetostat_kinds, only: wp, pi
   use kinetostat_vec2, only: unit_at, perp, cross
   use kinetostat_loads, only: inertia_force, inertia_moment, gravity_force
-  use kinetostat_selfcheck, only: link_residual, power_mismatch
+  use kinetostat_selfcheck, only: link_balance_t, link_balance, equilibrium_residual, power_mismatch
   implicit none
   private
   public :: sixbar_params_t, sixbar_position_t, sixbar_step_t
@@ -363,7 +363,8 @@ contains
     real(wp) :: w2, down1(2), down2(2), zero2(2)
     real(wp) :: g1(2), g2(2), g3(2), g4(2), g5(2), phi2_f(2), phi4_f(2), phi5_f(2), f_load(2)
     real(wp) :: m_phi2, m_phi3, m_phi4, load5(2), f56v(2), f34(2), r1(2), r2(2), det, m3c, m23b
-    real(wp) :: f12(2), terms(7), residuals(5)
+    real(wp) :: f12(2), terms(7)
+    type(link_balance_t) :: links(5)
 
     pos = sixbar_position(p, phi1)
     step%status = pos%status
@@ -420,17 +421,17 @@ contains
     step%m1 = -cross(pos%b, f12)
 
     ! self-check 1: equilibrium residual of every link with the computed reactions
-    residuals(1) = link_residual(reshape([zero2, pos%b, zero2], [2, 3]), &
-                                 reshape([step%f16, f12, g1], [2, 3]), [step%m1])
-    residuals(2) = link_residual(reshape([pos%b, pos%c, pos%s2, pos%s2], [2, 4]), &
-                                 reshape([step%f21, -step%f32, g2, phi2_f], [2, 4]), [m_phi2])
-    residuals(3) = link_residual(reshape([pos%d, pos%c, pos%e1, pos%d], [2, 4]), &
-                                 reshape([step%f36, step%f32, f34, g3], [2, 4]), [m_phi3])
-    residuals(4) = link_residual(reshape([pos%e, pos%h, pos%s4, pos%s4], [2, 4]), &
-                                 reshape([step%f43, step%f45, g4, phi4_f], [2, 4]), [m_phi4])
-    residuals(5) = link_residual(reshape([pos%h, pos%h, pos%h, pos%h, pos%h], [2, 5]), &
-                                 reshape([step%f54, f56v, f_load, g5, phi5_f], [2, 5]), [real(wp) ::])
-    step%residual = maxval(residuals)
+    links(1) = link_balance(reshape([zero2, pos%b, zero2], [2, 3]), &
+                            reshape([step%f16, f12, g1], [2, 3]), [step%m1])
+    links(2) = link_balance(reshape([pos%b, pos%c, pos%s2, pos%s2], [2, 4]), &
+                            reshape([step%f21, -step%f32, g2, phi2_f], [2, 4]), [m_phi2])
+    links(3) = link_balance(reshape([pos%d, pos%c, pos%e1, pos%d], [2, 4]), &
+                            reshape([step%f36, step%f32, f34, g3], [2, 4]), [m_phi3])
+    links(4) = link_balance(reshape([pos%e, pos%h, pos%s4, pos%s4], [2, 4]), &
+                            reshape([step%f43, step%f45, g4, phi4_f], [2, 4]), [m_phi4])
+    links(5) = link_balance(reshape([pos%h, pos%h, pos%h, pos%h, pos%h], [2, 5]), &
+                            reshape([step%f54, f56v, f_load, g5, phi5_f], [2, 5]), [real(wp) ::])
+    step%residual = equilibrium_residual(links)
 
     ! self-check 2: M1 from virtual work, M1 + sum(F . v_q) + sum(M . u) = 0 (analogues;
     ! each load with the velocity analogue of its point in its own frame)

@@ -1,0 +1,29 @@
+# Deterministic mutation test (issue 9), sourced by tools/test with test/cli/lib.sh.
+# tools/mutate_decks.py derives >= 500 broken or extreme decks from data/*.nml (fixed seed) and
+# runs $KINETOSTAT on each (table, CSV, -o FILE). It reports one verdict per assertion category
+# ("check NAME: ok" / "check NAME: FAIL (n decks)"); each category counts as ONE check here, so
+# that 500+ decks do not swamp the counters of the rest of the suite. The failing decks are
+# listed one per line (mutation, failed check, reproducer under test/out/mutation/).
+mutation_log="$cli_tmp/mutation.log"
+if python3 "$root/tools/mutate_decks.py" --bin "$KINETOSTAT" --out "$root/test/out/mutation" >"$mutation_log" 2>&1; then :; fi
+for category in exit-code non-finite error-shape no-leftover warning-shape runtime-text; do
+  if grep -qx "check $category: ok" "$mutation_log"; then
+    pass
+  else
+    fail "mutation-$category" "$(grep -m1 "^check $category:" "$mutation_log" || echo "no verdict (script failed: $(tail -3 "$mutation_log"))")
+$(grep "^FAIL .* $category (" "$mutation_log" | head -100)"
+  fi
+done
+grep '^mutation: ' "$mutation_log"
+
+# The mutation checks can fail: a fake binary that prints a NaN and exits 0, and one that
+# exits 1 with two stderr lines, must be caught.
+fake="$cli_tmp/fake_kinetostat"
+printf '#!/bin/sh\necho "  1.00  NaN"\nexit 0\n' >"$fake"; chmod +x "$fake"
+python3 "$root/tools/mutate_decks.py" --bin "$fake" --only pr3050_001 --out "$cli_tmp/mut_fake" >"$cli_tmp/mut_fake.log" 2>&1
+if grep -q '^check non-finite: FAIL' "$cli_tmp/mut_fake.log"; then pass
+else fail mutation-can-fail-nan "a binary printing NaN passed: $(tail -2 "$cli_tmp/mut_fake.log")"; fi
+printf '#!/bin/sh\necho one >&2\necho two >&2\nexit 1\n' >"$fake"
+python3 "$root/tools/mutate_decks.py" --bin "$fake" --only pr3050_001 --out "$cli_tmp/mut_fake" >"$cli_tmp/mut_fake.log" 2>&1
+if grep -q '^check exit-code: FAIL' "$cli_tmp/mut_fake.log" && grep -q '^check error-shape: FAIL' "$cli_tmp/mut_fake.log"; then pass
+else fail mutation-can-fail-exit "a binary exiting 1 with two stderr lines passed: $(tail -2 "$cli_tmp/mut_fake.log")"; fi
