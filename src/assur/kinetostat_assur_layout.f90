@@ -335,7 +335,7 @@ contains
       any_p = any_p .or. assur_pair_prismatic(self%deck, ip)
     end do
     if (lang == lang_ru) then
-      deg = "град."
+      deg = "град"
       newton = "Н"
       newton_m = "Н*м"
     else

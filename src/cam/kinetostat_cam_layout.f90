@@ -35,6 +35,10 @@ module kinetostat_cam_layout
     "     deg     deg         m          N             N     deg            N     deg" // &
     "            N     deg"]
 
+  !> Units line of the header in Russian.
+  character(*), parameter :: units_ru = &
+    "    град    град         м          Н             Н    град            Н    град            Н    град"
+
   !> Cam with a translating (knife/roller) or flat follower in a guide, manual section 7.
   type, extends(mechanism_t) :: cam_mechanism_t
     !> The validated deck.
@@ -202,9 +206,12 @@ contains
     type(text_buffer_t), intent(inout) :: out
     integer :: k, i
     character(len=:), allocatable :: line
-    do k = 1, size(header_lines)
-      call out%put(trim(header_lines(k)))
-    end do
+    call out%put(trim(header_lines(1)))
+    if (lang == lang_ru) then
+      call out%put(units_ru)
+    else
+      call out%put(trim(header_lines(2)))
+    end if
     do k = 1, table%row_count()
       associate (v => table%rows(:, k))
         line = fixed_field(v(1), 8, 2)//fixed_field(v(2), 8, 3)//fixed_field(v(3), 10, 5)// &

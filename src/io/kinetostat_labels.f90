@@ -47,13 +47,38 @@ contains
     case ("TITLE: ")
       text = "НАЗВАНИЕ: "
     case ("SELF-CHECK (relative; limit ")
-      text = "САМОПРОВЕРКА (относительная; допуск "
+      text = "САМОКОНТРОЛЬ (ОТНОСИТЕЛЬНЫЕ ВЕЛИЧИНЫ; ДОПУСК "
     case ("MAX EQUILIBRIUM RESIDUAL, ALL LINKS AND STEPS")
-      text = "НАИБ. НЕВЯЗКА РАВНОВЕСИЯ, ВСЕ ЗВЕНЬЯ И ШАГИ"
-    case ("MISMATCH VS POWER BALANCE")
-      text = "РАСХОЖДЕНИЕ С БАЛАНСОМ МОЩНОСТЕЙ"
-    case ("MAX ")
-      text = "НАИБ. "
+      text = "НАИБ. НЕВЯЗКА РАВНОВЕСИЯ ПО ВСЕМ ЗВЕНЬЯМ И ПОЛОЖЕНИЯМ"
+    case ("MAX EQUILIBRIUM RESIDUAL OF THE FOLLOWER, ALL STEPS")
+      text = "НАИБ. НЕВЯЗКА РАВНОВЕСИЯ ТОЛКАТЕЛЯ ПО ВСЕМ ПОЛОЖЕНИЯМ"
+    case ("MAX N MISMATCH, CLOSED FORM VS 3X3 LINEAR SOLVE")
+      text = "НАИБ. РАСХОЖДЕНИЕ N: ФОРМУЛА И РЕШЕНИЕ СИСТЕМЫ 3X3"
+    ! units (ГОСТ symbols, as the 1991 printouts write them)
+    case ("m")
+      text = "м"
+    case ("mm")
+      text = "мм"
+    case ("kg")
+      text = "кг"
+    case ("kg*m^2")
+      text = "кг*м^2"
+    case ("N")
+      text = "Н"
+    case ("N*m")
+      text = "Н*м"
+    case ("deg")
+      text = "град"
+    case ("rad/s")
+      text = "рад/с"
+    case ("rad/s^2")
+      text = "рад/с^2"
+    case ("m/s^2")
+      text = "м/с^2"
+    case ("m/rad")
+      text = "м/рад"
+    case ("steps")
+      text = "положений"
     case default
       text = english
     end select

@@ -7,7 +7,7 @@ module kinetostat_table_writer
   use kinetostat_step_table, only: step_table_t, echo_record_t, echo_real_kind, echo_int_kind, &
     echo_logical_kind, echo_array_kind, echo_text_kind, echo_heading_kind, echo_line_kind
   use kinetostat_format, only: echo_number, echo_array_number, footer_number, pad_right
-  use kinetostat_labels, only: label
+  use kinetostat_labels, only: label, lang_ru
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_text_buffer, only: text_buffer_t
   implicit none
@@ -41,7 +41,7 @@ contains
     if (allocated(table%subtitle)) call out%put(" "//label("TITLE: ", lang)//table%subtitle)
     call put_heading(out, label("INPUT DATA", lang))
     do i = 1, table%echo_count
-      call put_echo(out, table%echo(i))
+      call put_echo(out, table%echo(i), lang)
     end do
     call put_heading(out, label("RESULTS", lang))
     call mech%write_results(table, lang, out)
@@ -59,26 +59,27 @@ contains
   end subroutine put_heading
 
   !> One INPUT DATA record.
-  pure subroutine put_echo(out, e)
+  pure subroutine put_echo(out, e, lang)
     type(text_buffer_t), intent(inout) :: out
     type(echo_record_t), intent(in) :: e
+    integer, intent(in) :: lang
     character(len=18) :: whole
     character(len=:), allocatable :: line
     integer :: i
     select case (e%kind)
     case (echo_real_kind)
-      call out%put(name_part(e%name)//echo_number(e%values(1))//"  "//e%unit)
+      call out%put(name_part(e%name)//echo_number(e%values(1))//"  "//label(e%unit, lang))
     case (echo_int_kind)
       write (whole, '(i18)') e%int_value
-      call out%put(name_part(e%name)//whole//"  "//e%unit)
+      call out%put(name_part(e%name)//whole//"  "//label(e%unit, lang))
     case (echo_logical_kind)
       write (whole, '(l18)') e%logical_value
-      call out%put(name_part(e%name)//whole//"  "//e%unit)
+      call out%put(name_part(e%name)//whole//"  "//label(e%unit, lang))
     case (echo_text_kind)
       call out%put(name_part(e%name)//"  "//e%text)
     case (echo_array_kind)
       write (whole, '(i0)') size(e%values)
-      call out%put(name_part(e%name//"("//trim(whole)//")")//"  "//e%unit)
+      call out%put(name_part(e%name//"("//trim(whole)//")")//"  "//label(e%unit, lang))
       line = ""
       do i = 1, size(e%values)
         line = line//echo_array_number(e%values(i))
@@ -130,7 +131,11 @@ contains
     if (allocated(table%mismatch_label)) then
       mismatch_label = label(table%mismatch_label, lang)
     else
-      mismatch_label = label("MAX ", lang)//table%driver//" "//label("MISMATCH VS POWER BALANCE", lang)
+      mismatch_label = "MAX "//table%driver//" MISMATCH VS POWER BALANCE"
+      if (lang == lang_ru) then
+        mismatch_label = "НАИБ. РАСХОЖДЕНИЕ "//table%driver// &
+          " С РАВЕНСТВОМ МОЩНОСТЕЙ"
+      end if
     end if
     call out%put("   "//pad_right(residual_label, footer_label_width)//footer_number(table%max_residual)// &
                  "  "//selfcheck_verdict(table%max_residual))

@@ -33,6 +33,26 @@ module kinetostat_pr3050_layout
   character(*), parameter :: header_lines(*) = [character(len=88) :: &
     "     F13G         F14    F14G         F34    F34G         F32    F32G          F2", &
     "      deg           N     deg           N     deg           N     deg           N"]
+  !> Results header in Russian (the original's identifiers; units in the legend).
+  character(*), parameter :: header_ru = &
+    "     F13G         F14    F14G         F34    F34G         F32    F32G          F2"
+  !> Legend under the Russian results (the manual's section 4 wording).
+  character(*), parameter :: legend_ru(*) = [character(len=160) :: &
+    " F13G - УГОЛ ПОВОРОТА ЗВЕНА 3 ОТ НАЧАЛЬНОГО ПОЛОЖЕНИЯ (PHI3 - PHI3_START)," // &
+      " град;", &
+    " F14, F14G - СИЛА В ШАРНИРЕ A НА ЗВЕНО 1 СО СТОРОНЫ СТОЙКИ 4, Н, град;", &
+    " F34, F34G - СИЛА В ШАРНИРЕ C НА ЗВЕНО 3 СО СТОРОНЫ СТОЙКИ 4, Н, град;", &
+    " F32, F32G - СИЛА В ШАРНИРЕ B НА ЗВЕНО 3 СО СТОРОНЫ ЗВЕНА 2, Н, град;", &
+    " F2 - ДВИЖУЩАЯ СИЛА НА ШТОК 2 (ДАВЛЕНИЕ МАСЛА), Н, F2 > 0 ВЫДВИГАЕТ ШТОК;", &
+    " УГЛЫ - ОТ ОСИ X (ОТ C К A) ПРОТИВ ЧАСОВОЙ СТРЕЛКИ"]
+  !> Heading of the prismatic-pair block in Russian (two lines).
+  character(*), parameter :: pair_heading_ru(*) = [character(len=160) :: &
+    "ПОСТУПАТЕЛЬНАЯ ПАРА 1-2 И ГИДРОЦИЛИНДР (N21 - НА ШТОК 2 ОТ ЦИЛИНДРА 1" // &
+      " ПО E2+90 ГРАД В ТОЧКЕ B,", &
+    " M21 - МОМЕНТ НА ШТОК 2 ОТ ЦИЛИНДРА 1, ПРОТИВ ЧАСОВОЙ СТРЕЛКИ)"]
+  !> Units line of the prismatic-pair block in Russian.
+  character(*), parameter :: pair_units_ru = &
+    "     град      град         м       м/с           Н         Н*м"
   !> Heading of the block with the prismatic pair 1-2 and the cylinder's motion.
   character(*), parameter :: pair_heading = &
     "PRISMATIC PAIR 1-2 (ON ROD 2 FROM CYLINDER 1: N21 ALONG E2+90 DEG AT B, M21 CCW) AND CYLINDER"
@@ -222,9 +242,13 @@ contains
     type(text_buffer_t), intent(inout) :: out
     integer :: k, i
     character(len=:), allocatable :: line
-    do k = 1, size(header_lines)
-      call out%put(trim(header_lines(k)))
-    end do
+    if (lang == lang_ru) then
+      call out%put(header_ru)
+    else
+      do k = 1, size(header_lines)
+        call out%put(trim(header_lines(k)))
+      end do
+    end if
     do k = 1, table%row_count()
       associate (v => table%rows(:, k))
         line = fixed_field(v(1), 9, 2)
@@ -234,10 +258,20 @@ contains
         call out%put(line//exp_field(v(8), 12, 3))
       end associate
     end do
-    call put_heading(out, pair_heading)
-    do k = 1, size(pair_header_lines)
-      call out%put(trim(pair_header_lines(k)))
-    end do
+    if (lang == lang_ru) then
+      do k = 1, size(legend_ru)
+        call out%put(trim(legend_ru(k)))
+      end do
+      call put_heading(out, trim(pair_heading_ru(1)))
+      call out%put(trim(pair_heading_ru(2)))
+      call out%put(trim(pair_header_lines(1)))
+      call out%put(pair_units_ru)
+    else
+      call put_heading(out, pair_heading)
+      do k = 1, size(pair_header_lines)
+        call out%put(trim(pair_header_lines(k)))
+      end do
+    end if
     do k = 1, table%row_count()
       associate (v => table%rows(:, k))
         call out%put(fixed_field(v(1), 9, 2)//fixed_field(v(9), 10, 2)//fixed_field(v(10), 10, 4)// &

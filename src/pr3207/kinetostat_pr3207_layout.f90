@@ -35,8 +35,8 @@ module kinetostat_pr3207_layout
   character(*), parameter :: header_lines_ru(*) = [character(len=100) :: &
     "     PHI1         F16         F21         F36         F34         F56          M1", &
     "                 F16G        F21G        F36G        F34G        F56G", &
-    "    град.           Н           Н           Н           Н           Н         Н*м", &
-    "                 град.       град.       град.       град.       град."]
+    "     град           Н           Н           Н           Н           Н         Н*м", &
+    "                  град        град        град        град        град"]
 
   !> PR 3207: six-bar slotted-link (shaper) mechanism, manual section 3.
   type, extends(mechanism_t) :: pr3207_mechanism_t

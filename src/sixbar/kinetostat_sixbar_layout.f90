@@ -12,6 +12,7 @@ module kinetostat_sixbar_layout
   use kinetostat_labels, only: lang_ru
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_mechanism, only: mechanism_t
+  use kinetostat_table_writer, only: put_heading
   use kinetostat_sixbar, only: sixbar_step_t, sixbar_step, sixbar_ok, sixbar_open1, sixbar_dead1, &
     sixbar_open2, sixbar_dead2
   use kinetostat_sixbar_deck, only: sixbar_deck_t, read_sixbar_deck, write_sixbar_template
@@ -36,6 +37,23 @@ module kinetostat_sixbar_layout
     "                 F21G        F32G        F43G        F45G        F36G        F16G", &
     "      deg           N           N           N           N           N           N           N         N*m", &
     "                deg/x1      deg/x1      deg/x2      deg/x2      deg/x1      deg/x1"]
+  !> Appendix 2's header (--lang ru): the original's eight columns and six angles, no units.
+  character(*), parameter :: header_lines_ru(*) = [character(len=96) :: &
+    "       F0         F21         F32         F43         F45         F36         F16         F56", &
+    "                 F21G        F32G        F43G        F45G        F36G        F16G"]
+  !> Appendix 2's dotted rule under the header and after the last row.
+  character(*), parameter :: dotted_rule = " "//repeat(".", 92)
+  !> Legend under the Russian table (the original printed no unit lines).
+  character(*), parameter :: legend_ru(*) = [character(len=160) :: &
+    " F0 - ТЕКУЩИЙ УГОЛ ПОВОРОТА КРИВОШИПА (ОТ ОСИ X1), град; F21 ... F16 -" // &
+      " МОДУЛИ СИЛ, Н;", &
+    " F56 - СИЛА НА ПОЛЗУН 5 ОТ СТОЙКИ 6 (ПРОЕКЦИЯ НА ОСЬ Y2), Н;", &
+    " F21G, F32G, F36G, F16G - УГЛЫ СИЛ ОТ ОСИ X1, F43G, F45G - ОТ ОСИ X2, град"]
+  !> The driving moment block after the Russian table (T.FTN did not print M1).
+  character(*), parameter :: moment_block_ru(*) = [character(len=64) :: &
+    "ДВИЖУЩИЙ МОМЕНТ НА КРИВОШИПЕ 1", &
+    "       F0          M1", &
+    "     град         Н*м"]
 
   !> T.FTN: six-bar crank-rocker-slider, manual section 2.
   type, extends(mechanism_t) :: sixbar_mechanism_t
@@ -70,8 +88,8 @@ contains
     integer, intent(in) :: lang
     character(len=:), allocatable :: text
     if (lang == lang_ru) then
-      text = "KINETOSTAT  T.FTN  СИЛОВОЙ РАСЧЕТ ШЕСТИЗВЕННОГО" // &
-        " МЕХАНИЗМА (КРИВОШИП-КОРОМЫСЛО-ПОЛЗУН)"
+      text = "KINETOSTAT  T.FTN  КПФ И УСИЛИЯ КРИВОШИПНО-КОРОМЫСЛОВО-ПОЛЗУННОГО" // &
+        " МЕХАНИЗМА"
     else
       text = "KINETOSTAT  T.FTN  FORCE ANALYSIS OF THE SIX-BAR CRANK-ROCKER-SLIDER MECHANISM"
     end if
@@ -214,6 +232,10 @@ contains
     type(text_buffer_t), intent(inout) :: out
     integer :: k, i
     character(len=:), allocatable :: line
+    if (lang == lang_ru) then
+      call write_results_ru(table, out)
+      return
+    end if
     do k = 1, size(header_lines)
       call out%put(trim(header_lines(k)))
     end do
@@ -232,5 +254,42 @@ contains
       end associate
     end do
   end subroutine write_results
+
+  !> RESULTS as appendix 2 prints them (--lang ru): the original's header and dotted rules,
+  !> the eight columns and six angles per step, a legend with the units, then M1 apart.
+  pure subroutine write_results_ru(table, out)
+    type(step_table_t), intent(in) :: table
+    type(text_buffer_t), intent(inout) :: out
+    integer :: k, i
+    character(len=:), allocatable :: line
+    do k = 1, size(header_lines_ru)
+      call out%put(trim(header_lines_ru(k)))
+    end do
+    call out%put(dotted_rule)
+    do k = 1, table%row_count()
+      associate (v => table%rows(:, k))
+        line = fixed_field(v(1), 9, 2)
+        do i = 2, 14, 2
+          line = line//fixed_field(v(i), 12, 2)
+        end do
+        call out%put(line)
+        line = repeat(" ", 9)
+        do i = 3, 13, 2
+          line = line//fixed_field(v(i), 12, 2)
+        end do
+        call out%put(line)
+      end associate
+    end do
+    call out%put(dotted_rule)
+    do k = 1, size(legend_ru)
+      call out%put(trim(legend_ru(k)))
+    end do
+    call put_heading(out, trim(moment_block_ru(1)))
+    call out%put(trim(moment_block_ru(2)))
+    call out%put(trim(moment_block_ru(3)))
+    do k = 1, table%row_count()
+      call out%put(fixed_field(table%rows(1, k), 9, 2)//fixed_field(table%rows(15, k), 12, 3))
+    end do
+  end subroutine write_results_ru
 
 end module kinetostat_sixbar_layout
