@@ -1,8 +1,8 @@
 !> CSV writer: one header row of column names, then one row per step; every value at full
 !> precision (13 significant digits), flags and counts as whole numbers.
 module kinetostat_csv_writer
-  use kinetostat_step_table, only: step_table_t, col_flag, col_count
-  use kinetostat_format, only: full_number, whole_number
+  use kinetostat_step_table, only: step_table_t
+  use kinetostat_format, only: cell_number
   use kinetostat_text_buffer, only: text_buffer_t
   implicit none
   private
@@ -30,12 +30,7 @@ contains
       do c = 1, size(table%columns)
         if (.not. table%columns(c)%csv) cycle
         if (len(line) > 0) line = line//","
-        select case (table%columns(c)%kind)
-        case (col_flag, col_count)
-          line = line//whole_number(table%rows(c, k))
-        case default
-          line = line//full_number(table%rows(c, k))
-        end select
+        line = line//cell_number(table%rows(c, k), table%is_whole(c))
       end do
       call out%put(line)
     end do

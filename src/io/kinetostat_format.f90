@@ -8,7 +8,7 @@ module kinetostat_format
   use kinetostat_kinds, only: wp
   implicit none
   private
-  public :: fixed_field, exp_field, int_field, full_number, whole_number
+  public :: fixed_field, exp_field, int_field, full_number, whole_number, cell_number
   public :: echo_number, echo_array_number, footer_number, pad_right, display_width
 
   !> A full-precision number (CSV, JSON): 13 significant digits, 3-digit exponent.
@@ -139,6 +139,20 @@ contains
       text = full_number(x)
     end if
   end function whole_number
+
+  !> A CSV cell or JSON number: whole_number for flags and counts, full_number otherwise.
+  pure function cell_number(x, whole) result(text)
+    !> Finite value.
+    real(wp), intent(in) :: x
+    !> True for a column of whole numbers.
+    logical, intent(in) :: whole
+    character(len=:), allocatable :: text
+    if (whole) then
+      text = whole_number(x)
+    else
+      text = full_number(x)
+    end if
+  end function cell_number
 
   !> An INPUT DATA value (18 characters).
   pure function echo_number(x) result(text)

@@ -3,9 +3,9 @@
 module kinetostat_json_writer
   use kinetostat_kinds, only: version_string
   use kinetostat_selfcheck, only: selfcheck_tolerance
-  use kinetostat_step_table, only: step_table_t, echo_record_t, column_kind_names, col_flag, col_count, &
+  use kinetostat_step_table, only: step_table_t, echo_record_t, column_kind_names, &
     echo_real_kind, echo_int_kind, echo_logical_kind, echo_array_kind, echo_text_kind, echo_heading_kind
-  use kinetostat_format, only: full_number, whole_number
+  use kinetostat_format, only: full_number, cell_number
   use kinetostat_text_buffer, only: text_buffer_t
   implicit none
   private
@@ -53,12 +53,7 @@ contains
       line = "    ["
       do c = 1, size(table%columns)
         if (c > 1) line = line//", "
-        select case (table%columns(c)%kind)
-        case (col_flag, col_count)
-          line = line//whole_number(table%rows(c, k))
-        case default
-          line = line//full_number(table%rows(c, k))
-        end select
+        line = line//cell_number(table%rows(c, k), table%is_whole(c))
       end do
       line = line//"]"
       if (k < table%row_count()) line = line//","

@@ -121,6 +121,7 @@ module kinetostat_step_table
     procedure :: column_index
     procedure :: allocate_rows
     procedure :: row_count
+    procedure :: is_whole
     procedure :: echo_real
     procedure :: echo_int
     procedure :: echo_logical
@@ -194,6 +195,14 @@ contains
     if (allocated(self%rows)) deallocate (self%rows)
     allocate (self%rows(size(self%columns), n), source=0.0_wp)
   end subroutine allocate_rows
+
+  !> Whether column `c` holds whole numbers (flags and counts), written without a fraction.
+  pure logical function is_whole(self, c)
+    class(step_table_t), intent(in) :: self
+    !> Column index.
+    integer, intent(in) :: c
+    is_whole = self%columns(c)%kind == col_flag .or. self%columns(c)%kind == col_count
+  end function is_whole
 
   !> Number of rows.
   pure integer function row_count(self)
