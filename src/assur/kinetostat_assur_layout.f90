@@ -38,7 +38,6 @@ module kinetostat_assur_layout
   contains
     procedure :: read_deck
     procedure :: solve
-    procedure :: title
     procedure :: write_results
     procedure :: write_template
   end type assur_mechanism_t
@@ -50,6 +49,9 @@ contains
     !> The mechanism.
     class(mechanism_t), allocatable, intent(out) :: mech
     allocate (assur_mechanism_t :: mech)
+    mech%title_en = "KINETOSTAT  ASSUR  FORCE ANALYSIS OF A LINKAGE OF CLASS-II ASSUR GROUPS"
+    mech%title_ru = "KINETOSTAT  ASSUR  СИЛОВОЙ РАСЧЕТ МЕХАНИЗМА ИЗ ГРУПП АССУРА II" // &
+      " КЛАССА"
   end subroutine new_assur
 
   subroutine read_deck(self, source, error)
@@ -58,17 +60,6 @@ contains
     type(error_t), allocatable, intent(out) :: error
     call read_assur_deck(source, self%deck, error)
   end subroutine read_deck
-
-  pure function title(self, lang) result(text)
-    class(assur_mechanism_t), intent(in) :: self
-    integer, intent(in) :: lang
-    character(len=:), allocatable :: text
-    if (lang == lang_ru) then
-      text = "KINETOSTAT  ASSUR  СИЛОВОЙ РАСЧЕТ МЕХАНИЗМА ИЗ ГРУПП АССУРА II КЛАССА"
-    else
-      text = "KINETOSTAT  ASSUR  FORCE ANALYSIS OF A LINKAGE OF CLASS-II ASSUR GROUPS"
-    end if
-  end function title
 
   pure subroutine write_template(self, out)
     class(assur_mechanism_t), intent(in) :: self

@@ -37,7 +37,8 @@ module kinetostat_cam_layout
 
   !> Units line of the header in Russian.
   character(*), parameter :: units_ru = &
-    "    град    град         м          Н             Н    град            Н    град            Н    град"
+    "    град    град         м          Н             Н    град            Н    град            Н   " // &
+      " град"
 
   !> Cam with a translating (knife/roller) or flat follower in a guide, manual section 7.
   type, extends(mechanism_t) :: cam_mechanism_t
@@ -46,7 +47,6 @@ module kinetostat_cam_layout
   contains
     procedure :: read_deck
     procedure :: solve
-    procedure :: title
     procedure :: write_results
     procedure :: write_template
   end type cam_mechanism_t
@@ -58,6 +58,9 @@ contains
     !> The mechanism.
     class(mechanism_t), allocatable, intent(out) :: mech
     allocate (cam_mechanism_t :: mech)
+    mech%title_en = "KINETOSTAT  CAM  FORCES ON A TRANSLATING FOLLOWER IN A GUIDE (MANUAL SECTION 7)"
+    mech%title_ru = "KINETOSTAT  CAM  СИЛЫ В КУЛАЧКОВОМ МЕХАНИЗМЕ С" // &
+      " ПОСТУПАТЕЛЬНО ДВИЖУЩИМСЯ ТОЛКАТЕЛЕМ (РАЗДЕЛ 7)"
   end subroutine new_cam
 
   subroutine read_deck(self, source, error)
@@ -66,18 +69,6 @@ contains
     type(error_t), allocatable, intent(out) :: error
     call read_cam_deck(source, self%deck, error)
   end subroutine read_deck
-
-  pure function title(self, lang) result(text)
-    class(cam_mechanism_t), intent(in) :: self
-    integer, intent(in) :: lang
-    character(len=:), allocatable :: text
-    if (lang == lang_ru) then
-      text = "KINETOSTAT  CAM  СИЛЫ В КУЛАЧКОВОМ МЕХАНИЗМЕ С" // &
-        " ПОСТУПАТЕЛЬНО ДВИЖУЩИМСЯ ТОЛКАТЕЛЕМ (РАЗДЕЛ 7)"
-    else
-      text = "KINETOSTAT  CAM  FORCES ON A TRANSLATING FOLLOWER IN A GUIDE (MANUAL SECTION 7)"
-    end if
-  end function title
 
   pure subroutine write_template(self, out)
     class(cam_mechanism_t), intent(in) :: self

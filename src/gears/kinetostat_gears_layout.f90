@@ -51,7 +51,6 @@ module kinetostat_gears_layout
   contains
     procedure :: read_deck
     procedure :: solve
-    procedure :: title
     procedure :: write_results
     procedure :: write_template
   end type gears_mechanism_t
@@ -63,6 +62,9 @@ contains
     !> The mechanism.
     class(mechanism_t), allocatable, intent(out) :: mech
     allocate (gears_mechanism_t :: mech)
+    mech%title_en = "KINETOSTAT  GEARS  FORCES IN GEAR MESHES (MANUAL SECTION 6, FRICTION-FREE)"
+    mech%title_ru = "KINETOSTAT  GEARS  СИЛЫ В ЗАЦЕПЛЕНИЯХ ЗУБЧАТЫХ" // &
+      " КОЛЕС (РАЗДЕЛ 6, БЕЗ УЧЕТА ТРЕНИЯ)"
   end subroutine new_gears
 
   subroutine read_deck(self, source, error)
@@ -71,18 +73,6 @@ contains
     type(error_t), allocatable, intent(out) :: error
     call read_gears_deck(source, self%deck, error)
   end subroutine read_deck
-
-  pure function title(self, lang) result(text)
-    class(gears_mechanism_t), intent(in) :: self
-    integer, intent(in) :: lang
-    character(len=:), allocatable :: text
-    if (lang == lang_ru) then
-      text = "KINETOSTAT  GEARS  СИЛЫ В ЗАЦЕПЛЕНИЯХ ЗУБЧАТЫХ" // &
-        " КОЛЕС (РАЗДЕЛ 6, БЕЗ УЧЕТА ТРЕНИЯ)"
-    else
-      text = "KINETOSTAT  GEARS  FORCES IN GEAR MESHES (MANUAL SECTION 6, FRICTION-FREE)"
-    end if
-  end function title
 
   pure subroutine write_template(self, out)
     class(gears_mechanism_t), intent(in) :: self

@@ -7,19 +7,24 @@ module kinetostat_mechanism
   use kinetostat_deck, only: deck_source_t
   use kinetostat_step_table, only: step_table_t
   use kinetostat_text_buffer, only: text_buffer_t
+  use kinetostat_labels, only: lang_ru
   implicit none
   private
   public :: mechanism_t
 
   !> A mechanism kind.
   type, abstract :: mechanism_t
+    !> Title line of the legacy table, English.
+    character(len=:), allocatable :: title_en
+    !> Title line of the legacy table, Russian (the 1991 printout's wording where known).
+    character(len=:), allocatable :: title_ru
   contains
     !> Read and validate the deck.
     procedure(read_deck_i), deferred :: read_deck
     !> Compute every step and fill the step table (columns, rows, echo, self-check).
     procedure(solve_i), deferred :: solve
-    !> Title line of the legacy table.
-    procedure(title_i), deferred :: title
+    !> Title line of the legacy table in a language.
+    procedure :: title
     !> The RESULTS block of the legacy table: header lines and the rows as the original laid them out.
     procedure(results_i), deferred :: write_results
     !> The commented template deck.
@@ -47,15 +52,6 @@ module kinetostat_mechanism
       type(error_t), allocatable, intent(out) :: error
     end subroutine solve_i
 
-    pure function title_i(self, lang) result(text)
-      import :: mechanism_t
-      implicit none
-      class(mechanism_t), intent(in) :: self
-      !> lang_en or lang_ru.
-      integer, intent(in) :: lang
-      character(len=:), allocatable :: text
-    end function title_i
-
     pure subroutine results_i(self, table, lang, out)
       import :: mechanism_t, step_table_t, text_buffer_t
       implicit none
@@ -76,5 +72,20 @@ module kinetostat_mechanism
       type(text_buffer_t), intent(inout) :: out
     end subroutine template_i
   end interface
+
+contains
+
+  !> Title line of the legacy table in language `lang` (lang_en, lang_ru).
+  pure function title(self, lang) result(text)
+    class(mechanism_t), intent(in) :: self
+    !> lang_en or lang_ru.
+    integer, intent(in) :: lang
+    character(len=:), allocatable :: text
+    if (lang == lang_ru) then
+      text = self%title_ru
+    else
+      text = self%title_en
+    end if
+  end function title
 
 end module kinetostat_mechanism

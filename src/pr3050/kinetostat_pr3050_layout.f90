@@ -68,7 +68,6 @@ module kinetostat_pr3050_layout
   contains
     procedure :: read_deck
     procedure :: solve
-    procedure :: title
     procedure :: write_results
     procedure :: write_template
   end type pr3050_mechanism_t
@@ -80,6 +79,9 @@ contains
     !> The mechanism.
     class(mechanism_t), allocatable, intent(out) :: mech
     allocate (pr3050_mechanism_t :: mech)
+    mech%title_en = "KINETOSTAT  PR 3050  FORCE ANALYSIS OF THE FOUR-BAR WITH AN OSCILLATING HYDRAULIC CYLINDER"
+    mech%title_ru = "KINETOSTAT  PR 3050  СИЛОВОЙ РАСЧЕТ ЧЕТЫРЕХЗВЕННОГО" // &
+      " МЕХАНИЗМА С КАЧАЮЩИМСЯ ГИДРОЦИЛИНДРОМ"
   end subroutine new_pr3050
 
   subroutine read_deck(self, source, error)
@@ -88,18 +90,6 @@ contains
     type(error_t), allocatable, intent(out) :: error
     call read_pr3050_deck(source, self%deck, error)
   end subroutine read_deck
-
-  pure function title(self, lang) result(text)
-    class(pr3050_mechanism_t), intent(in) :: self
-    integer, intent(in) :: lang
-    character(len=:), allocatable :: text
-    if (lang == lang_ru) then
-      text = "KINETOSTAT  PR 3050  СИЛОВОЙ РАСЧЕТ ЧЕТЫРЕХЗВЕННОГО" // &
-        " МЕХАНИЗМА С КАЧАЮЩИМСЯ ГИДРОЦИЛИНДРОМ"
-    else
-      text = "KINETOSTAT  PR 3050  FORCE ANALYSIS OF THE FOUR-BAR WITH AN OSCILLATING HYDRAULIC CYLINDER"
-    end if
-  end function title
 
   pure subroutine write_template(self, out)
     class(pr3050_mechanism_t), intent(in) :: self

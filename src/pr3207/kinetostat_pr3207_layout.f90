@@ -45,7 +45,6 @@ module kinetostat_pr3207_layout
   contains
     procedure :: read_deck
     procedure :: solve
-    procedure :: title
     procedure :: write_results
     procedure :: write_template
   end type pr3207_mechanism_t
@@ -57,6 +56,9 @@ contains
     !> The mechanism.
     class(mechanism_t), allocatable, intent(out) :: mech
     allocate (pr3207_mechanism_t :: mech)
+    mech%title_en = "KINETOSTAT  PR 3207  FORCE ANALYSIS OF THE SIX-BAR SLOTTED-LINK (SHAPER) MECHANISM"
+    mech%title_ru = "KINETOSTAT  PR 3207  СИЛОВОЙ РАСЧЕТ ШЕСТИЗВЕННОГО" // &
+      " КУЛИСНОГО МЕХАНИЗМА (ПОПЕРЕЧНО-СТРОГАЛЬНОГО)"
   end subroutine new_pr3207
 
   subroutine read_deck(self, source, error)
@@ -65,18 +67,6 @@ contains
     type(error_t), allocatable, intent(out) :: error
     call read_pr3207_deck(source, self%deck, error)
   end subroutine read_deck
-
-  pure function title(self, lang) result(text)
-    class(pr3207_mechanism_t), intent(in) :: self
-    integer, intent(in) :: lang
-    character(len=:), allocatable :: text
-    if (lang == lang_ru) then
-      text = "KINETOSTAT  PR 3207  СИЛОВОЙ РАСЧЕТ ШЕСТИЗВЕННОГО" // &
-        " КУЛИСНОГО МЕХАНИЗМА (ПОПЕРЕЧНО-СТРОГАЛЬНОГО)"
-    else
-      text = "KINETOSTAT  PR 3207  FORCE ANALYSIS OF THE SIX-BAR SLOTTED-LINK (SHAPER) MECHANISM"
-    end if
-  end function title
 
   pure subroutine write_template(self, out)
     class(pr3207_mechanism_t), intent(in) :: self

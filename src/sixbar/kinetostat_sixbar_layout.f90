@@ -62,7 +62,6 @@ module kinetostat_sixbar_layout
   contains
     procedure :: read_deck
     procedure :: solve
-    procedure :: title
     procedure :: write_results
     procedure :: write_template
   end type sixbar_mechanism_t
@@ -74,6 +73,10 @@ contains
     !> The mechanism.
     class(mechanism_t), allocatable, intent(out) :: mech
     allocate (sixbar_mechanism_t :: mech)
+    mech%title_en = "KINETOSTAT  T.FTN  FORCE ANALYSIS OF THE SIX-BAR CRANK-ROCKER-SLIDER MECHANISM"
+    mech%title_ru = "KINETOSTAT  T.FTN  КПФ И УСИЛИЯ" // &
+      " КРИВОШИПНО-КОРОМЫСЛОВО-ПОЛЗУННОГО" // &
+      " МЕХАНИЗМА"
   end subroutine new_sixbar
 
   subroutine read_deck(self, source, error)
@@ -82,18 +85,6 @@ contains
     type(error_t), allocatable, intent(out) :: error
     call read_sixbar_deck(source, self%deck, error)
   end subroutine read_deck
-
-  pure function title(self, lang) result(text)
-    class(sixbar_mechanism_t), intent(in) :: self
-    integer, intent(in) :: lang
-    character(len=:), allocatable :: text
-    if (lang == lang_ru) then
-      text = "KINETOSTAT  T.FTN  КПФ И УСИЛИЯ КРИВОШИПНО-КОРОМЫСЛОВО-ПОЛЗУННОГО" // &
-        " МЕХАНИЗМА"
-    else
-      text = "KINETOSTAT  T.FTN  FORCE ANALYSIS OF THE SIX-BAR CRANK-ROCKER-SLIDER MECHANISM"
-    end if
-  end function title
 
   pure subroutine write_template(self, out)
     class(sixbar_mechanism_t), intent(in) :: self
