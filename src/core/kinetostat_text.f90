@@ -4,7 +4,7 @@ module kinetostat_text
   use kinetostat_kinds, only: wp
   implicit none
   private
-  public :: real_str, int_str, number_str, lower
+  public :: real_str, int_str, number_str, lower, upper
 
   !> Format of a real in a message: shortest general form with 10 significant digits.
   character(*), parameter :: real_msg_fmt = '(g0.10)'
@@ -58,5 +58,18 @@ contains
       if (c >= iachar('A') .and. c <= iachar('Z')) t(i:i) = achar(c + 32)
     end do
   end function lower
+
+  !> ASCII upper case.
+  pure function upper(s) result(t)
+    !> Any text.
+    character(*), intent(in) :: s
+    character(len=len(s)) :: t
+    integer :: i, c
+    t = s
+    do i = 1, len(s)
+      c = iachar(s(i:i))
+      if (c >= iachar('a') .and. c <= iachar('z')) t(i:i) = achar(c - 32)
+    end do
+  end function upper
 
 end module kinetostat_text

@@ -4,6 +4,7 @@ module kinetostat_gears_layout
   use kinetostat_kinds, only: wp, rad_to_deg
   use kinetostat_deck, only: deck_source_t
   use kinetostat_error, only: error_t
+  use kinetostat_text, only: upper
   use kinetostat_vec2, only: magnitude, angle_360_deg, snap_noise
   use kinetostat_step_table, only: step_table_t, col_count, col_length, col_ratio, col_moment, col_component, &
     col_force, col_force_angle
@@ -171,7 +172,7 @@ contains
     character(len=:), allocatable :: text
     character(len=16) :: buf
     write (buf, '(i0)') i
-    text = "STAGE "//trim(buf)//": "//trim(to_upper(gear_kind_names(kind)))
+    text = "STAGE "//trim(buf)//": "//trim(upper(gear_kind_names(kind)))
   end function stage_heading
 
   !> The INPUT DATA echo of the deck.
@@ -258,15 +259,5 @@ contains
     end do
   end subroutine write_results
 
-  pure function to_upper(s) result(t)
-    character(*), intent(in) :: s
-    character(len=len(s)) :: t
-    integer :: i, c
-    t = s
-    do i = 1, len(s)
-      c = iachar(s(i:i))
-      if (c >= iachar('a') .and. c <= iachar('z')) t(i:i) = achar(c - 32)
-    end do
-  end function to_upper
 
 end module kinetostat_gears_layout

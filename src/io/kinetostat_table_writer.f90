@@ -6,13 +6,13 @@ module kinetostat_table_writer
   use kinetostat_selfcheck, only: selfcheck_tolerance
   use kinetostat_step_table, only: step_table_t, echo_record_t, echo_real_kind, echo_int_kind, &
     echo_logical_kind, echo_array_kind, echo_text_kind, echo_heading_kind, echo_line_kind
-  use kinetostat_format, only: echo_number, echo_array_number, footer_number, pad_right
+  use kinetostat_format, only: echo_number, echo_array_number, footer_number, pad_right, fixed_field
   use kinetostat_labels, only: label, lang_ru
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_text_buffer, only: text_buffer_t
   implicit none
   private
-  public :: write_table, put_heading, selfcheck_verdict
+  public :: write_table, put_heading, selfcheck_verdict, put_two_line_step
 
   !> Display width of the name part of an INPUT DATA line ("   NAME ... =" puts "=" in column 20).
   integer, parameter :: echo_name_width = 16
@@ -57,6 +57,33 @@ contains
     call out%put("")
     call out%put(" "//text)
   end subroutine put_heading
+
+  !> One step as PR 3207 and T.FTN print it: the input angle (9 wide) and the magnitudes
+  !> (12 wide, 2 decimals), then `tail`; under them the angles of the same forces.
+  pure subroutine put_two_line_step(out, v, line1_columns, line2_columns, tail)
+    !> Where the lines go.
+    type(text_buffer_t), intent(inout) :: out
+    !> The step's row; v(1) is the input angle.
+    real(wp), intent(in) :: v(:)
+    !> Columns of line 1 after the angle (magnitudes).
+    integer, intent(in) :: line1_columns(:)
+    !> Columns of line 2 (angles, each under its magnitude).
+    integer, intent(in) :: line2_columns(:)
+    !> Text after line 1's fields (e.g. the driving moment's field).
+    character(*), intent(in) :: tail
+    character(len=:), allocatable :: line
+    integer :: i
+    line = fixed_field(v(1), 9, 2)
+    do i = 1, size(line1_columns)
+      line = line//fixed_field(v(line1_columns(i)), 12, 2)
+    end do
+    call out%put(line//tail)
+    line = repeat(" ", 9)
+    do i = 1, size(line2_columns)
+      line = line//fixed_field(v(line2_columns(i)), 12, 2)
+    end do
+    call out%put(line)
+  end subroutine put_two_line_step
 
   !> One INPUT DATA record.
   pure subroutine put_echo(out, e, lang)

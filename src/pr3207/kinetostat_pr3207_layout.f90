@@ -10,6 +10,7 @@ module kinetostat_pr3207_layout
   use kinetostat_labels, only: lang_ru
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_mechanism, only: mechanism_t
+  use kinetostat_table_writer, only: put_two_line_step
   use kinetostat_pr3207, only: pr3207_step_t, pr3207_step
   use kinetostat_pr3207_deck, only: pr3207_deck_t, read_pr3207_deck, write_pr3207_template
   implicit none
@@ -158,8 +159,7 @@ contains
     type(step_table_t), intent(in) :: table
     integer, intent(in) :: lang
     type(text_buffer_t), intent(inout) :: out
-    integer :: k, i
-    character(len=:), allocatable :: line
+    integer :: k
     do k = 1, size(header_lines)
       if (lang == lang_ru) then
         call out%put(trim(header_lines_ru(k)))
@@ -168,18 +168,8 @@ contains
       end if
     end do
     do k = 1, table%row_count()
-      associate (v => table%rows(:, k))
-        line = fixed_field(v(1), 9, 2)
-        do i = 2, 10, 2
-          line = line//fixed_field(v(i), 12, 2)
-        end do
-        call out%put(line//fixed_field(v(12), 12, 3))
-        line = repeat(" ", 9)
-        do i = 3, 11, 2
-          line = line//fixed_field(v(i), 12, 2)
-        end do
-        call out%put(line)
-      end associate
+      call put_two_line_step(out, table%rows(:, k), [2, 4, 6, 8, 10], [3, 5, 7, 9, 11], &
+                             fixed_field(table%rows(12, k), 12, 3))
     end do
   end subroutine write_results
 

@@ -12,7 +12,7 @@ module kinetostat_sixbar_layout
   use kinetostat_labels, only: lang_ru
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_mechanism, only: mechanism_t
-  use kinetostat_table_writer, only: put_heading
+  use kinetostat_table_writer, only: put_heading, put_two_line_step
   use kinetostat_sixbar, only: sixbar_step_t, sixbar_step, sixbar_ok, sixbar_open1, sixbar_dead1, &
     sixbar_open2, sixbar_dead2
   use kinetostat_sixbar_deck, only: sixbar_deck_t, read_sixbar_deck, write_sixbar_template
@@ -37,6 +37,10 @@ module kinetostat_sixbar_layout
     "                 F21G        F32G        F43G        F45G        F36G        F16G", &
     "      deg           N           N           N           N           N           N           N         N*m", &
     "                deg/x1      deg/x1      deg/x2      deg/x2      deg/x1      deg/x1"]
+  !> Columns of a step's first line after the crank angle: six magnitudes and F56.
+  integer, parameter :: magnitude_columns(*) = [2, 4, 6, 8, 10, 12, 14]
+  !> Columns of a step's second line: the six force angles.
+  integer, parameter :: angle_columns(*) = [3, 5, 7, 9, 11, 13]
   !> Appendix 2's header (--lang ru): the original's eight columns and six angles, no units.
   character(*), parameter :: header_lines_ru(*) = [character(len=96) :: &
     "       F0         F21         F32         F43         F45         F36         F16         F56", &
@@ -221,8 +225,7 @@ contains
     type(step_table_t), intent(in) :: table
     integer, intent(in) :: lang
     type(text_buffer_t), intent(inout) :: out
-    integer :: k, i
-    character(len=:), allocatable :: line
+    integer :: k
     if (lang == lang_ru) then
       call write_results_ru(table, out)
       return
@@ -231,18 +234,8 @@ contains
       call out%put(trim(header_lines(k)))
     end do
     do k = 1, table%row_count()
-      associate (v => table%rows(:, k))
-        line = fixed_field(v(1), 9, 2)
-        do i = 2, 14, 2
-          line = line//fixed_field(v(i), 12, 2)
-        end do
-        call out%put(line//fixed_field(v(15), 12, 3))
-        line = repeat(" ", 9)
-        do i = 3, 13, 2
-          line = line//fixed_field(v(i), 12, 2)
-        end do
-        call out%put(line)
-      end associate
+      call put_two_line_step(out, table%rows(:, k), magnitude_columns, angle_columns, &
+                             fixed_field(table%rows(15, k), 12, 3))
     end do
   end subroutine write_results
 
@@ -251,25 +244,13 @@ contains
   pure subroutine write_results_ru(table, out)
     type(step_table_t), intent(in) :: table
     type(text_buffer_t), intent(inout) :: out
-    integer :: k, i
-    character(len=:), allocatable :: line
+    integer :: k
     do k = 1, size(header_lines_ru)
       call out%put(trim(header_lines_ru(k)))
     end do
     call out%put(dotted_rule)
     do k = 1, table%row_count()
-      associate (v => table%rows(:, k))
-        line = fixed_field(v(1), 9, 2)
-        do i = 2, 14, 2
-          line = line//fixed_field(v(i), 12, 2)
-        end do
-        call out%put(line)
-        line = repeat(" ", 9)
-        do i = 3, 13, 2
-          line = line//fixed_field(v(i), 12, 2)
-        end do
-        call out%put(line)
-      end associate
+      call put_two_line_step(out, table%rows(:, k), magnitude_columns, angle_columns, "")
     end do
     call out%put(dotted_rule)
     do k = 1, size(legend_ru)
