@@ -104,9 +104,7 @@ contains
     do k = 1, size(steps)
       table%rows(:, k) = assur_csv_values(self%deck, steps(k))
     end do
-    table%max_residual = maxval(steps%residual)
-    table%max_mismatch = maxval(steps%mismatch)
-    table%driver = "M1"
+    call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "M1")
     if (len_trim(self%deck%title) > 0) table%subtitle = trim(self%deck%title)
     call echo_deck(self%deck, table)
   end subroutine solve

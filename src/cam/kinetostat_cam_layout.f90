@@ -104,9 +104,7 @@ contains
     do k = 1, size(steps)
       table%rows(:, k) = cam_csv_values(self%deck, steps(k), k)
     end do
-    table%max_residual = maxval(steps%residual)
-    table%max_mismatch = maxval(steps%mismatch)
-    table%driver = "N"
+    call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "N")
     table%residual_label = "MAX EQUILIBRIUM RESIDUAL OF THE FOLLOWER, ALL STEPS"
     table%mismatch_label = "MAX N MISMATCH, CLOSED FORM VS 3X3 LINEAR SOLVE"
     call echo_deck(self%deck, table)

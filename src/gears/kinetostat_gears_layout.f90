@@ -116,9 +116,7 @@ contains
     do i = 1, size(res)
       table%rows(:, i) = gears_csv_values(self%deck, res, i)
     end do
-    table%max_residual = maxval(res%residual)
-    table%max_mismatch = maxval(res%mismatch)
-    table%driver = "M2"
+    call table%set_selfcheck(maxval(res%residual), maxval(res%mismatch), "M2")
     call echo_deck(self%deck, table)
   end subroutine solve
 

@@ -122,6 +122,7 @@ module kinetostat_step_table
     procedure :: allocate_rows
     procedure :: row_count
     procedure :: is_whole
+    procedure :: set_selfcheck
     procedure :: echo_real
     procedure :: echo_int
     procedure :: echo_logical
@@ -203,6 +204,20 @@ contains
     integer, intent(in) :: c
     is_whole = self%columns(c)%kind == col_flag .or. self%columns(c)%kind == col_count
   end function is_whole
+
+  !> The self-check figures of the run.
+  pure subroutine set_selfcheck(self, max_residual, max_mismatch, driver)
+    class(step_table_t), intent(inout) :: self
+    !> Largest relative equilibrium residual over all links and rows.
+    real(wp), intent(in) :: max_residual
+    !> Largest relative mismatch of the driving effort.
+    real(wp), intent(in) :: max_mismatch
+    !> Name of the driving quantity ("M1", "F2", ...).
+    character(*), intent(in) :: driver
+    self%max_residual = max_residual
+    self%max_mismatch = max_mismatch
+    self%driver = driver
+  end subroutine set_selfcheck
 
   !> Number of rows.
   pure integer function row_count(self)

@@ -173,9 +173,7 @@ contains
                             n21 + 0.0_wp, m21 + 0.0_wp]
       end associate
     end do
-    table%max_residual = maxval(steps%residual)
-    table%max_mismatch = maxval(steps%mismatch)
-    table%driver = "F2"
+    call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "F2")
     call dead_position_between_steps(self%deck, table%warning)
     call echo_deck(self%deck, table)
   end subroutine solve

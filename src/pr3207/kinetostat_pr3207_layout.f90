@@ -102,9 +102,7 @@ contains
     do k = 1, size(steps)
       table%rows(:, k) = pr3207_csv_values(steps(k), self%deck%p%l_ab)
     end do
-    table%max_residual = maxval(steps%residual)
-    table%max_mismatch = maxval(steps%mismatch)
-    table%driver = "M1"
+    call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "M1")
     call echo_deck(self%deck, table)
   end subroutine solve
 

@@ -160,9 +160,7 @@ contains
     do k = 1, size(steps)
       table%rows(:, k) = sixbar_csv_values(steps(k), self%deck%p%l1)
     end do
-    table%max_residual = maxval(steps%residual)
-    table%max_mismatch = maxval(steps%mismatch)
-    table%driver = "M1"
+    call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "M1")
     call echo_deck(self%deck, table)
   end subroutine solve
 
