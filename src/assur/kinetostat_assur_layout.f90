@@ -6,6 +6,7 @@ module kinetostat_assur_layout
   use kinetostat_deck, only: deck_source_t
   use kinetostat_error, only: error_t, fatal_error, exit_geometry
   use kinetostat_text, only: int_str
+  use kinetostat_noise, only: noise_rel
   use kinetostat_vec2, only: magnitude, angle_360_deg, angle_180_deg, rotate, snap_noise, clean_zero
   use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_component, &
     col_moment
@@ -21,8 +22,6 @@ module kinetostat_assur_layout
   private
   public :: assur_mechanism_t, new_assur, assur_solve, assur_csv_columns, assur_csv_values, assur_pair_prismatic
 
-  !> Relative roundoff floor below which a force counts as zero in the output.
-  real(wp), parameter :: noise_rel = 1.0e-12_wp
   !> Width of the PHI1 field of the RESULTS block.
   integer, parameter :: phi_width = 9
   !> Width of every other field of the RESULTS block.

@@ -5,13 +5,12 @@ module kinetostat_gears_layout
   use kinetostat_deck, only: deck_source_t
   use kinetostat_error, only: error_t
   use kinetostat_text, only: upper
+  use kinetostat_noise, only: noise_rel
   use kinetostat_vec2, only: magnitude, angle_360_deg, snap_noise
   use kinetostat_step_table, only: step_table_t, col_count, col_length, col_ratio, col_moment, col_component, &
     col_force, col_force_angle
-  use kinetostat_format, only: echo_number, pad_right
-  use kinetostat_labels, only: lang_ru
   use kinetostat_text_buffer, only: text_buffer_t
-  use kinetostat_table_writer, only: put_heading
+  use kinetostat_table_writer, only: put_heading, value_line
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_gears, only: gear_stage_t, gear_result_t, gear_pair, gear_series, gear_planetary_step, &
     gear_planetary, gear_bevel, gear_kind_names
@@ -36,12 +35,8 @@ module kinetostat_gears_layout
     col_component, col_component, col_component, col_component, col_component, col_component, &
     col_force, col_force_angle, col_force, col_force_angle, col_force, col_force_angle, &
     col_force, col_force_angle, col_force, col_force_angle, col_moment, col_moment]
-  !> Display width of the name part of a RESULTS line ("=" in column 20, as the echo).
-  integer, parameter :: name_width = 16
   !> CSV positions of the torque columns (M1, M2, M2P, M3, M3P).
   integer, parameter :: moment_columns(*) = [10, 11, 12, 29, 30]
-  !> Relative roundoff floor below which a force counts as zero in the output.
-  real(wp), parameter :: noise_rel = 1.0e-12_wp
   !> Format of a force angle in the RESULTS block.
   character(*), parameter :: angle_fmt = '(f11.4)'
 
@@ -200,14 +195,6 @@ contains
       call table%echo_real("GAMMA", st%gamma * rad_to_deg, "deg")
     end do
   end subroutine echo_deck
-
-  !> A RESULTS line "   NAME            =  value  unit".
-  pure function value_line(name, x, unit) result(line)
-    character(*), intent(in) :: name, unit
-    real(wp), intent(in) :: x
-    character(len=:), allocatable :: line
-    line = "   "//pad_right(name, name_width)//"="//echo_number(x)//"  "//unit
-  end function value_line
 
   !> A RESULTS line of a force: magnitude and angle.
   pure function vector_line(name, magnitude_n, angle_deg) result(line)

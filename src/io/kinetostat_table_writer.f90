@@ -5,14 +5,14 @@ module kinetostat_table_writer
   use kinetostat_kinds, only: wp
   use kinetostat_selfcheck, only: selfcheck_tolerance
   use kinetostat_step_table, only: step_table_t, echo_record_t, echo_real_kind, echo_int_kind, &
-    echo_logical_kind, echo_array_kind, echo_text_kind, echo_heading_kind, echo_line_kind
+    echo_logical_kind, echo_array_kind, echo_text_kind, echo_heading_kind
   use kinetostat_format, only: echo_number, echo_array_number, footer_number, pad_right, fixed_field
   use kinetostat_labels, only: label, lang_ru
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_text_buffer, only: text_buffer_t
   implicit none
   private
-  public :: write_table, put_heading, selfcheck_verdict, put_two_line_step
+  public :: write_table, put_heading, selfcheck_verdict, put_two_line_step, value_line
 
   !> Display width of the name part of an INPUT DATA line ("   NAME ... =" puts "=" in column 20).
   integer, parameter :: echo_name_width = 16
@@ -95,7 +95,7 @@ contains
     integer :: i
     select case (e%kind)
     case (echo_real_kind)
-      call out%put(name_part(e%name)//echo_number(e%values(1))//"  "//label(e%unit, lang))
+      call out%put(value_line(e%name, e%values(1), label(e%unit, lang)))
     case (echo_int_kind)
       write (whole, '(i18)') e%int_value
       call out%put(name_part(e%name)//whole//"  "//label(e%unit, lang))
@@ -118,12 +118,22 @@ contains
       if (size(e%values) == 0) call out%put("")
     case (echo_heading_kind)
       call put_heading(out, e%name)
-    case (echo_line_kind)
-      call out%put(e%name)
-    case default
+    case default ! echo_line_kind: a line printed as it is
       call out%put(e%name)
     end select
   end subroutine put_echo
+
+  !> An INPUT DATA style line of a real: "   NAME            =  value  unit".
+  pure function value_line(name, x, unit) result(line)
+    !> Name as printed.
+    character(*), intent(in) :: name
+    !> Finite value.
+    real(wp), intent(in) :: x
+    !> Unit text.
+    character(*), intent(in) :: unit
+    character(len=:), allocatable :: line
+    line = name_part(name)//echo_number(x)//"  "//unit
+  end function value_line
 
   !> "   NAME" padded so that "=" falls in column 20, then "=".
   pure function name_part(name) result(text)
