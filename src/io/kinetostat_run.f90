@@ -34,6 +34,9 @@ module kinetostat_run
     integer :: format = format_table
     !> Language of the legacy table (lang_en, lang_ru).
     integer :: lang = lang_en
+    !> CSV and JSON add the kinematics columns (positions, link angles and speeds,
+    !> accelerations of the centres of mass, force components).
+    logical :: kinematics = .false.
   end type run_options_t
 
 contains
@@ -84,9 +87,9 @@ contains
     if (allocated(error)) return
     select case (options%format)
     case (format_csv)
-      call write_csv(table, out)
+      call write_csv(table, out, options%kinematics)
     case (format_json)
-      call write_json(mech%title(options%lang), table, out)
+      call write_json(mech%title(options%lang), table, out, options%kinematics)
     case default
       call write_table(mech, table, options%lang, out)
     end select
