@@ -129,9 +129,10 @@ contains
   end function pr3207_csv_values
 
   !> The kinematics columns of step `k` (frame: origin A, x from A to C): joints A, B, C, D
-  !> and centres of mass S1 (= A), S3; links 1 (crank), 2 (block, turns with the lever) and
-  !> 3 (lever); accelerations of S1, S3 and of the ram 5 (translating along y); components of
-  !> the pair forces in the same frame. Blocks 4 and the ram 5 translate (no angle columns).
+  !> and centres of mass S1 (= A), S3, S5 (the ram's, taken on the line x = 0 through A, as
+  !> the generic twin deck does: only its travel y5 = y_D is defined); links 1 (crank), 2
+  !> (block, turns with the lever) and 3 (lever); accelerations of S1, S3, S5; components of
+  !> the pair forces in the same frame. Block 4 and the ram 5 translate (no angle columns).
   pure subroutine put_kinematics(table, k, p, s)
     !> The step table (columns appended on first use).
     type(step_table_t), intent(inout) :: table
@@ -152,6 +153,7 @@ contains
     call table%put_point(k, "D", pos%d)
     call table%put_point(k, "S1", [0.0_wp, 0.0_wp])
     call table%put_point(k, "S3", pos%s3)
+    call table%put_point(k, "S5", [0.0_wp, pos%y5])
     call table%put_link(k, "1", s%phi1, p%omega1, 0.0_wp)
     call table%put_link(k, "2", pos%phi3, pos%u31 * p%omega1, pos%eps31 * w2)
     call table%put_link(k, "3", pos%phi3, pos%u31 * p%omega1, pos%eps31 * w2)
