@@ -22,7 +22,7 @@ module kinetostat_gears_layout
   !> In-plane forces with an angle column, in the order of the CSV columns.
   character(*), parameter :: force_names(*) = [character(len=3) :: "F12", "FS1", "FS2", "F23", "F2H"]
 
-  !> CSV columns (one row per stage); see README "Gear meshes".
+  !> CSV columns (one row per stage); see docs/gears-cams.md "Gears: table and CSV".
   character(*), parameter :: gears_csv_columns(*) = [character(len=6) :: &
     "stage", "kind", "z1", "z2", "z3", "k", "dw1", "dw2", "u", "M1", "M2", "M2P", &
     "Ft", "Fr1", "Fa1", "Fr2", "Fa2", "Fn", "F12", "F12G", "FS1", "FS1G", "FS2", "FS2G", &
