@@ -14,6 +14,7 @@ module test_kinematics
   use kinetostat_csv_writer, only: write_csv
   use kinetostat_json_writer, only: write_json
   use kinetostat_mechanism, only: mechanism_t
+  use kinetostat_sketch, only: sketch_t
   use kinetostat_registry, only: create_mechanism
   use kinetostat_pr3207_layout, only: pr3207_mechanism_t
   use kinetostat_pr3050_layout, only: pr3050_mechanism_t
@@ -56,6 +57,7 @@ contains
     call test_twin_sixbar(t)
     call test_twin_pr3207(t)
     call test_default_hides(t)
+    call test_sketch(t)
   end subroutine run_kinematics_tests
 
   !> The input angles [b - h, b, b + h] for every base angle b, deg.
@@ -467,5 +469,57 @@ contains
                     "found")
     call check_true(t, "kinematics json has x_B", index(kin_json%text(), '"name": "x_B"') > 0, "missing")
   end subroutine test_default_hides
+
+  !> Every linkage deck's sketch names only points the table has (x_<P>, y_<P>), has a
+  !> pivot and every moving link with an angle column drawn; gears and cams have none.
+  subroutine test_sketch(t)
+    type(test_counts_t), intent(inout) :: t
+    type(deck_source_t) :: source
+    type(step_table_t) :: table
+    type(sketch_t) :: sk
+    type(error_t), allocatable :: error
+    class(mechanism_t), allocatable :: mech
+    character(len=:), allocatable :: group, deck
+    integer :: i, l, j, links_with_angle, c
+    logical :: ok
+    do i = 1, size(bundled)
+      deck = trim(bundled(i))
+      call run_deck(t, deck, table, ok)
+      if (.not. ok) cycle
+      call load(t, deck, source, ok)
+      call read_group_name(source, group, error)
+      if (allocated(error)) cycle
+      call create_mechanism(group, mech)
+      call mech%read_deck(source, error)
+      if (allocated(error)) cycle
+      call mech%sketch(sk)
+      if (group == "gears" .or. group == "cam") then
+        call check_true(t, deck//": no sketch", .not. sk%available, "a sketch is given")
+        cycle
+      end if
+      call check_true(t, deck//": sketch available", sk%available, "none")
+      if (.not. sk%available) cycle
+      call check_true(t, deck//": sketch has a pivot", size(sk%pivots) > 0, "no pivot")
+      do l = 1, size(sk%links)
+        do j = 1, size(sk%links(l)%points)
+          c = column(t, deck//" sketch link "//sk%links(l)%name, table, "x_"//trim(sk%links(l)%points(j)))
+        end do
+      end do
+      do j = 1, size(sk%pivots)
+        c = column(t, deck//" sketch pivot", table, "x_"//trim(sk%pivots(j)))
+      end do
+      if (allocated(sk%guides)) then
+        do j = 1, size(sk%guides)
+          c = column(t, deck//" sketch guide", table, "y_"//trim(sk%guides(j)%point))
+        end do
+      end if
+      links_with_angle = 0
+      do c = 1, size(table%columns)
+        if (index(table%columns(c)%name, "omega") == 1) links_with_angle = links_with_angle + 1
+      end do
+      call check_true(t, deck//": every link with an angle is drawn", size(sk%links) >= links_with_angle, &
+                      "fewer sketch links than omega columns")
+    end do
+  end subroutine test_sketch
 
 end module test_kinematics
