@@ -79,6 +79,8 @@ module kinetostat_step_table
     logical :: logical_value = .false.
     !> Text value (echo_text_kind).
     character(len=:), allocatable :: text
+    !> True when the value came from --set (marked in the INPUT DATA echo).
+    logical :: overridden = .false.
   end type echo_record_t
 
   !> All results of a run.
@@ -115,6 +117,8 @@ module kinetostat_step_table
     character(len=:), allocatable :: mismatch_label
     !> A remark for the user (stderr), if any.
     character(len=:), allocatable :: warning
+    !> The run's overrides as given ("l_ab=0.12"), blank-padded; not allocated without any.
+    character(len=:), allocatable :: overrides(:)
   contains
     procedure :: add_column
     procedure :: set_columns
