@@ -4,7 +4,7 @@
 module kinetostat_cli
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
   use kinetostat_kinds, only: version_string
-  use kinetostat_error, only: error_t, fatal_error, exit_success, exit_usage, exit_input
+  use kinetostat_error, only: error_t, fatal_error, exit_success, exit_usage, exit_input, exit_warning
   use kinetostat_text, only: int_str
   use kinetostat_posix, only: path_kind, path_special, rename_file, process_id, write_standard_output
   use kinetostat_deck, only: deck_source_t, load_deck, read_group_name
@@ -22,7 +22,7 @@ module kinetostat_cli
 
   !> One-line usage, printed with usage errors.
   character(*), parameter :: usage_line = "usage: kinetostat DECK|- [--set NAME=VALUE]... [-o FILE] " // &
-    "[--format table|csv|json] [--lang en|ru] [--quiet] | kinetostat template KIND | --help | --version"
+    "[--format table|csv|json] [--lang en|ru] [--quiet] [--strict] | kinetostat template KIND | --help | --version"
 
   !> Warning line when a run's self-check exceeds its tolerance.
   character(*), parameter :: selfcheck_warning_fmt = '(a,es9.2,a,es9.2)'
@@ -32,7 +32,7 @@ module kinetostat_cli
     "kinetostat - kinetostatic force analysis of planar mechanisms", &
     "", &
     "  kinetostat DECK [--set NAME=VALUE]... [-o FILE] [--format table|csv|json]", &
-    "                  [--lang en|ru] [--quiet]", &
+    "                  [--lang en|ru] [--quiet] [--strict]", &
     "  kinetostat template KIND      print a commented example deck", &
     "  kinetostat --help | --version", &
     "", &
@@ -44,9 +44,12 @@ module kinetostat_cli
     "--format    table (default, the legacy printout), csv (full precision) or json", &
     "--lang      language of the table's labels: en (default) or ru (the 1991 printouts)", &
     "--quiet     no warnings on stderr (errors are still reported)", &
+    "--strict    a run that warns (self-check above its limit, a dead position between", &
+    "            steps, a jammed cam or lost contact, a coarse step near a load edge)", &
+    "            exits 4; the output is still written", &
     "", &
     "Exit codes: 0 ok, 1 usage, 2 input or output error, 3 geometry error or a result", &
-    "that is not finite (the step is named)."]
+    "that is not finite (the step is named), 4 warnings with --strict (output written)."]
 
   !> Parsed command line.
   type :: cli_args_t
@@ -55,6 +58,8 @@ module kinetostat_cli
     character(len=:), allocatable :: template_kind
     type(run_options_t) :: options
     logical :: quiet = .false.
+    !> --strict: a run that warned exits with exit_warning (its output is still written).
+    logical :: strict = .false.
     logical :: help = .false.
     logical :: version = .false.
   end type cli_args_t
@@ -69,7 +74,7 @@ contains
     type(error_t), allocatable :: error
     type(step_table_t) :: table
     type(text_buffer_t) :: out
-    integer :: i
+    integer :: i, warnings
     logical :: ran
 
     ran = .false.
@@ -97,12 +102,15 @@ contains
         call write_stdout(out, error)
       end if
     end if
-    if (ran .and. .not. allocated(error) .and. .not. args%quiet) call warn(args%deck, table)
+    warnings = 0
+    if (ran .and. .not. allocated(error)) call warn(table, args%quiet, warnings)
 
     if (allocated(error)) then
       write (error_unit, '(a)') "kinetostat: error: "//error%message
       if (error%code == exit_usage) write (error_unit, '(a)') usage_line
       exit_code = error%code
+    else if (args%strict .and. warnings > 0) then
+      exit_code = exit_warning
     else
       exit_code = exit_success
     end if
@@ -211,15 +219,30 @@ contains
     call mech%write_template(out)
   end subroutine write_template
 
-  !> Warnings of a successful run on stderr: the mechanism's remark, a failed self-check.
-  subroutine warn(deck, table)
-    character(*), intent(in) :: deck
+  !> Warnings of a successful run, one stderr line each unless `quiet`: the mechanism's
+  !> remarks, a failed self-check.
+  subroutine warn(table, quiet, count)
+    !> The run's results.
     type(step_table_t), intent(in) :: table
-    if (allocated(table%warning)) write (error_unit, '(a)') "kinetostat: warning: "//deck//": "//table%warning
+    !> --quiet: count the warnings, print none.
+    logical, intent(in) :: quiet
+    !> Number of warnings.
+    integer, intent(out) :: count
+    integer :: i
+    character(len=:), allocatable :: prefix
+    prefix = "kinetostat: warning: "//table%deck//": "
+    count = table%warning_count()
+    if (.not. quiet) then
+      do i = 1, table%warning_count()
+        write (error_unit, '(a)') prefix//table%warnings(i)%text
+      end do
+    end if
     if (.not. table%has_selfcheck .or. table%row_count() == 0) return
     if (selfcheck_verdict(table%max_residual) /= "OK" .or. selfcheck_verdict(table%max_mismatch) /= "OK") then
-      write (error_unit, selfcheck_warning_fmt) "kinetostat: warning: "//deck// &
-        ": self-check failed (a bug; please report): max equilibrium residual", table%max_residual, &
+      count = count + 1
+      if (quiet) return
+      write (error_unit, selfcheck_warning_fmt) prefix// &
+        "self-check failed (a bug; please report): max equilibrium residual", table%max_residual, &
         ", max "//table%driver//" mismatch", table%max_mismatch
     end if
   end subroutine warn
@@ -262,6 +285,8 @@ contains
         args%version = .true.
       case ("--quiet", "-q")
         args%quiet = .true.
+      case ("--strict")
+        args%strict = .true.
       case ("-o", "--output")
         args%out_file = value
       case ("--format")

@@ -77,11 +77,12 @@ contains
     else
       call out%put('  "selfcheck": null,')
     end if
-    if (allocated(table%warning)) then
-      call out%put('  "warnings": ['//json_string(table%warning)//"]")
-    else
-      call out%put('  "warnings": []')
-    end if
+    line = '  "warnings": ['
+    do i = 1, table%warning_count()
+      if (i > 1) line = line//", "
+      line = line//json_string(table%warnings(i)%text)
+    end do
+    call out%put(line//"]")
     call out%put("}")
   end subroutine write_json
 
