@@ -167,6 +167,7 @@ contains
     type(pr3050_step_t), allocatable :: steps(:)
     real(wp) :: floor, n21, m21
     integer :: k, nc
+    character(len=:), allocatable :: warning
     call pr3050_solve(self%deck, steps, error)
     if (allocated(error)) then
       error%message = table%deck//": &pr3050: "//error%message
@@ -197,7 +198,8 @@ contains
       call put_kinematics(table, k, self%deck%p, steps(k))
     end do
     call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "F2")
-    call dead_position_between_steps(self%deck, table%warning)
+    call dead_position_between_steps(self%deck, warning)
+    if (allocated(warning)) call table%add_warning(warning)
     call echo_deck(self%deck, table)
   end subroutine solve
 
