@@ -22,7 +22,8 @@ module kinetostat_cli
 
   !> One-line usage, printed with usage errors.
   character(*), parameter :: usage_line = "usage: kinetostat DECK|- [--set NAME=VALUE]... [-o FILE] " // &
-    "[--format table|csv|json] [--lang en|ru] [--quiet] [--strict] | kinetostat template KIND | --help | --version"
+    "[--format table|csv|json] [--lang en|ru] [--kinematics] [--quiet] [--strict] | " // &
+    "kinetostat template KIND | --help | --version"
 
   !> Warning line when a run's self-check exceeds its tolerance.
   character(*), parameter :: selfcheck_warning_fmt = '(a,es9.2,a,es9.2)'
@@ -32,7 +33,7 @@ module kinetostat_cli
     "kinetostat - kinetostatic force analysis of planar mechanisms", &
     "", &
     "  kinetostat DECK [--set NAME=VALUE]... [-o FILE] [--format table|csv|json]", &
-    "                  [--lang en|ru] [--quiet] [--strict]", &
+    "                  [--lang en|ru] [--kinematics] [--quiet] [--strict]", &
     "  kinetostat template KIND      print a commented example deck", &
     "  kinetostat --help | --version", &
     "", &
@@ -43,6 +44,9 @@ module kinetostat_cli
     "-o FILE     write to FILE (atomically: nothing is left behind on error)", &
     "--format    table (default, the legacy printout), csv (full precision) or json", &
     "--lang      language of the table's labels: en (default) or ru (the 1991 printouts)", &
+    "--kinematics  csv and json add positions of joints and centres of mass, link angles,", &
+    "            angular speeds and accelerations, accelerations of the centres of mass and", &
+    "            the x, y components of the pair forces (the table is unchanged)", &
     "--quiet     no warnings on stderr (errors are still reported)", &
     "--strict    a run that warns (self-check above its limit, a dead position between", &
     "            steps, a jammed cam or lost contact, a coarse step near a load edge)", &
@@ -287,6 +291,8 @@ contains
         args%quiet = .true.
       case ("--strict")
         args%strict = .true.
+      case ("--kinematics")
+        args%options%kinematics = .true.
       case ("-o", "--output")
         args%out_file = value
       case ("--format")

@@ -37,6 +37,9 @@ module kinetostat_run
     integer :: lang = lang_en
     !> The --set overrides (already written into the deck; marked in the outputs).
     type(override_t), allocatable :: overrides(:)
+    !> CSV and JSON add the kinematics columns (positions, link angles and speeds,
+    !> accelerations of the centres of mass, force components).
+    logical :: kinematics = .false.
   end type run_options_t
 
 contains
@@ -90,9 +93,9 @@ contains
     end if
     select case (options%format)
     case (format_csv)
-      call write_csv(table, out)
+      call write_csv(table, out, options%kinematics)
     case (format_json)
-      call write_json(mech%title(options%lang), table, out)
+      call write_json(mech%title(options%lang), table, out, options%kinematics)
     case default
       call write_table(mech, table, options%lang, out)
     end select
