@@ -41,6 +41,7 @@ module test_kinematics
   real(wp), parameter :: same_tol = 1.0e-9_wp
   !> Bundled decks (all mechanisms; data/assur_toggle.nml stops at its dead position).
   character(len=32), parameter :: bundled(*) = [character(len=32) :: "data/pr3207.nml", "data/pr3050.nml", &
+    "data/assur_pr3050.nml", &
     "data/sixbar.nml", "data/sixbar_example.nml", "data/assur_pr3207.nml", "data/assur_sixbar.nml", &
     "data/assur_slider_crank.nml", "data/gears_reducer.nml", "data/gears_bevel.nml", &
     "data/gears_planetary.nml", "data/cam_translating.nml", "data/cam_flat.nml"]
@@ -56,6 +57,7 @@ contains
     call test_components(t)
     call test_twin_sixbar(t)
     call test_twin_pr3207(t)
+    call test_twin_pr3050(t)
     call test_default_hides(t)
     call test_sketch(t)
   end subroutine run_kinematics_tests
@@ -304,7 +306,7 @@ contains
   subroutine test_fd_assur(t)
     type(test_counts_t), intent(inout) :: t
     character(len=32), parameter :: decks(*) = [character(len=32) :: "data/assur_pr3207.nml", &
-      "data/assur_sixbar.nml", "data/assur_slider_crank.nml"]
+      "data/assur_sixbar.nml", "data/assur_slider_crank.nml", "data/assur_pr3050.nml"]
     type(assur_mechanism_t) :: mech
     type(deck_source_t) :: source
     type(step_table_t) :: table
@@ -448,6 +450,17 @@ contains
                     [character(len=3) :: "J16", "J21", "J36", "J43", "F43"], &
                     [1.0_wp, 1.0_wp, 1.0_wp, 1.0_wp, -1.0_wp])
   end subroutine test_twin_pr3207
+
+  !> PR 3050 vs its generic twin (rocker 3 as the input link, cylinder 1 and rod 2 an RPR
+  !> dyad driven by the actuator): joints C A B are the pairs 34 14 23, F32 = -F23, the
+  !> cylinder's angle columns are phiL1, omegaL1, epsL1.
+  subroutine test_twin_pr3050(t)
+    type(test_counts_t), intent(inout) :: t
+    call check_twin(t, "data/pr3050.nml", "data/assur_pr3050.nml", &
+                    [character(len=8) :: "C", "A", "B", "F32", "phi1", "omega1", "eps1"], &
+                    [character(len=8) :: "J34", "J14", "J23", "F23", "phiL1", "omegaL1", "epsL1"], &
+                    [1.0_wp, 1.0_wp, 1.0_wp, -1.0_wp, 1.0_wp, 1.0_wp, 1.0_wp])
+  end subroutine test_twin_pr3050
 
   !> The default CSV and JSON carry no kinematics column; with kinematics asked they carry
   !> every one of them.

@@ -22,8 +22,8 @@ module kinetostat_cli
 
   !> One-line usage, printed with usage errors.
   character(*), parameter :: usage_line = "usage: kinetostat DECK|- [--set NAME=VALUE]... [-o FILE] " // &
-    "[--format table|csv|json] [--lang en|ru] [--kinematics] [--quiet] [--strict] | kinetostat template KIND | " // &
-    "--help | --version"
+    "[--format table|csv|json] [--lang en|ru] [--kinematics] [--quiet] [--strict] | " // &
+    "kinetostat template KIND | --help | --version"
 
   !> Warning line when a run's self-check exceeds its tolerance.
   character(*), parameter :: selfcheck_warning_fmt = '(a,es9.2,a,es9.2)'
@@ -289,10 +289,10 @@ contains
         args%version = .true.
       case ("--quiet", "-q")
         args%quiet = .true.
-      case ("--kinematics")
-        args%options%kinematics = .true.
       case ("--strict")
         args%strict = .true.
+      case ("--kinematics")
+        args%options%kinematics = .true.
       case ("-o", "--output")
         args%out_file = value
       case ("--format")

@@ -35,11 +35,11 @@ module kinetostat_run
     integer :: format = format_table
     !> Language of the legacy table (lang_en, lang_ru).
     integer :: lang = lang_en
+    !> The --set overrides (already written into the deck; marked in the outputs).
+    type(override_t), allocatable :: overrides(:)
     !> CSV and JSON add the kinematics columns (positions, link angles and speeds,
     !> accelerations of the centres of mass, force components).
     logical :: kinematics = .false.
-    !> The --set overrides (already written into the deck; marked in the outputs).
-    type(override_t), allocatable :: overrides(:)
   end type run_options_t
 
 contains
