@@ -12,7 +12,7 @@ module kinetostat_cli
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_labels, only: lang_from_name
-  use kinetostat_run, only: run_options_t, run_mechanism, format_from_name, format_names
+  use kinetostat_run, only: run_options_t, run_mechanism, format_from_name, format_names, format_svg
   use kinetostat_table_writer, only: selfcheck_verdict
   use kinetostat_registry, only: create_mechanism, known_kinds
   implicit none
@@ -20,8 +20,8 @@ module kinetostat_cli
   public :: run_cli
 
   !> One-line usage, printed with usage errors.
-  character(*), parameter :: usage_line = "usage: kinetostat DECK [-o FILE] [--format table|csv|json] " // &
-    "[--lang en|ru] [--quiet] | kinetostat template KIND | --help | --version"
+  character(*), parameter :: usage_line = "usage: kinetostat DECK [-o FILE] [--format table|csv|json|svg] " // &
+    "[--pairs LIST] [--lang en|ru] [--quiet] | kinetostat template KIND | --help | --version"
 
   !> Warning line when a run's self-check exceeds its tolerance.
   character(*), parameter :: selfcheck_warning_fmt = '(a,es9.2,a,es9.2)'
@@ -30,13 +30,16 @@ module kinetostat_cli
   character(*), parameter :: help_lines(*) = [character(len=88) :: &
     "kinetostat - kinetostatic force analysis of planar mechanisms", &
     "", &
-    "  kinetostat DECK [-o FILE] [--format table|csv|json] [--lang en|ru] [--quiet]", &
+    "  kinetostat DECK [-o FILE] [--format table|csv|json|svg] [--pairs LIST] [--lang en|ru]", &
+    "                 [--quiet]", &
     "  kinetostat template KIND      print a commented example deck", &
     "  kinetostat --help | --version", &
     "", &
     "DECK is a Fortran namelist file; its first group names the mechanism.", &
     "-o FILE     write to FILE (atomically: nothing is left behind on error)", &
-    "--format    table (default, the legacy printout), csv (full precision) or json", &
+    "--format    table (default, the legacy printout), csv (full precision), json, or svg", &
+    "            (a sheet of force hodographs and diagrams; see docs/pictures.md)", &
+    "--pairs     with svg: only these pair forces, e.g. --pairs F16,F36", &
     "--lang      language of the table's labels: en (default) or ru (the 1991 printouts)", &
     "--quiet     no warnings on stderr (errors are still reported)", &
     "", &
@@ -175,7 +178,7 @@ contains
         value = arg(eq + 1:)
       else
         name = arg
-        if (any(name == [character(len=8) :: "-o", "--output", "--format", "--lang"])) then
+        if (any(name == [character(len=8) :: "-o", "--output", "--format", "--lang", "--pairs"])) then
           if (i == n) then
             call fatal_error(error, exit_usage, name//" needs a value")
             return
@@ -199,6 +202,8 @@ contains
           call fatal_error(error, exit_usage, "--format must be one of "//format_names//" (got '"//value//"')")
           return
         end if
+      case ("--pairs")
+        args%options%pairs = value
       case ("--lang")
         args%options%lang = lang_from_name(value)
         if (args%options%lang == 0) then
@@ -225,7 +230,11 @@ contains
       end select
     end do
     if (args%help .or. args%version .or. allocated(args%template_kind)) return
-    if (.not. allocated(args%deck)) call fatal_error(error, exit_usage, "no deck given")
+    if (.not. allocated(args%deck)) then
+      call fatal_error(error, exit_usage, "no deck given")
+    else if (allocated(args%options%pairs) .and. args%options%format /= format_svg) then
+      call fatal_error(error, exit_usage, "--pairs needs --format svg")
+    end if
   end subroutine parse_args
 
   function argument(i) result(arg)
