@@ -64,12 +64,13 @@ contains
     type(text_buffer_t), intent(inout) :: out
     !> Usage error: a name in `pairs` that is no pair force of the table.
     type(error_t), allocatable, intent(out) :: error
-    type(pair_force_t), allocatable :: all(:), chosen(:)
+    type(pair_force_t), allocatable :: every_pair(:), chosen(:)
     integer :: columns, rows, n_panels, i
     real(wp) :: panel_w, panel_h, y, height, x0, y0, chart_h
 
-    call find_pair_forces(table, all)
-    call select_pair_forces(table, all, pairs, chosen, error)
+    allocate (every_pair(0)) ! defined before the call (gcc's -Wmaybe-uninitialized on the descriptor)
+    call find_pair_forces(table, every_pair)
+    call select_pair_forces(table, every_pair, pairs, chosen, error)
     if (allocated(error)) return
 
     if (table%input_column > 0) then
@@ -153,11 +154,13 @@ contains
     if (allocated(table%subtitle)) line = line//"   "//table%subtitle
     call out%put(svg_text(margin, 20.5_wp, line, 'class="subtitle"'))
     n = table%row_count()
-    line = int_str(n)//" "//table%row_name//"s"
+    line = int_str(n)//" "//table%row_name
+    if (n /= 1) line = line//"s"
     if (table%input_column > 0 .and. n > 0) then
       associate (c => table%columns(table%input_column))
-        line = line//", "//c%name//" = "//short_number(table%rows(table%input_column, 1))//" ... "// &
-          short_number(table%rows(table%input_column, n))//" "//c%unit
+        line = line//", "//c%name//" = "//short_number(table%rows(table%input_column, 1))
+        if (n > 1) line = line//" ... "//short_number(table%rows(table%input_column, n))
+        line = line//" "//c%unit
       end associate
     end if
     line = line//"; "//version_string
@@ -487,8 +490,9 @@ contains
       qy = py0 + m * sin(d) * 1.9_wp
       score = label_clearance(qx, qy, hw, cx, cy, ox, oy, lx, ly, lw)
       if (m > 1) score = score - 0.6_wp
-      if (qx - hw < bx .or. qx + hw > bx + bw .or. qy - 1.0_wp < by .or. qy + 1.0_wp > by + bh) &
+      if (qx - hw < bx .or. qx + hw > bx + bw .or. qy - 1.0_wp < by .or. qy + 1.0_wp > by + bh) then
         score = score - 100.0_wp
+      end if
       if (score > best + 1.0e-9_wp) then
         best = score
         tx = qx
@@ -685,7 +689,7 @@ contains
     type(step_table_t), intent(in) :: table
     type(pair_force_t), intent(in) :: pairs(:)
     real(wp), intent(in) :: x0, y0, w, h
-    real(wp), allocatable :: x(:), y(:), all(:)
+    real(wp), allocatable :: x(:), y(:), magnitudes(:)
     real(wp) :: left, top, pw, ph, xlo, xhi, xstep, ylo, yhi, ystep, legend_x, row, dy
     character(len=7) :: colour
     character(len=:), allocatable :: dash
@@ -703,11 +707,11 @@ contains
     pw = w - 21.0_wp - 16.0_wp
     ph = h - 22.0_wp
     call x_range(table%rows(ci, :), table%columns(ci)%unit == "deg", xlo, xhi, xstep)
-    allocate (all(0))
+    allocate (magnitudes(0))
     do i = 1, size(pairs)
-      all = [all, table%rows(pairs(i)%magnitude, :)]
+      magnitudes = [magnitudes, table%rows(pairs(i)%magnitude, :)]
     end do
-    call y_range(all, ylo, yhi, ystep)
+    call y_range(magnitudes, ylo, yhi, ystep)
     call put_axes(out, left, top, pw, ph, xlo, xhi, xstep, ylo, yhi, ystep, &
       table%columns(ci)%name//", "//table%columns(ci)%unit, "force, N")
     x = left + pw * (table%rows(ci, :) - xlo) / (xhi - xlo)
