@@ -13,7 +13,7 @@ module kinetostat_cli
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_labels, only: lang_from_name
-  use kinetostat_run, only: run_options_t, run_mechanism, format_from_name, format_names
+  use kinetostat_run, only: run_options_t, run_mechanism, format_from_name, format_names, format_svg
   use kinetostat_table_writer, only: selfcheck_verdict
   use kinetostat_registry, only: create_mechanism, known_kinds, known_columns
   use kinetostat_step_table, only: column_t
@@ -24,7 +24,7 @@ module kinetostat_cli
 
   !> One-line usage, printed with usage errors.
   character(*), parameter :: usage_line = "usage: kinetostat DECK|- [--set NAME=VALUE]... [-o FILE] " // &
-    "[--format table|csv|json] [--lang en|ru] [--kinematics] [--quiet] [--strict] | " // &
+    "[--format table|csv|json|svg] [--pairs LIST] [--lang en|ru] [--kinematics] [--quiet] [--strict] | " // &
     "kinetostat template KIND | --help | --version"
 
   !> Warning line when a run's self-check exceeds its tolerance.
@@ -34,8 +34,8 @@ module kinetostat_cli
   character(*), parameter :: help_lines(*) = [character(len=92) :: &
     "kinetostat - kinetostatic force analysis of planar mechanisms", &
     "", &
-    "  kinetostat DECK [--set NAME=VALUE]... [-o FILE] [--format table|csv|json]", &
-    "                  [--lang en|ru] [--kinematics] [--quiet] [--strict]", &
+    "  kinetostat DECK [--set NAME=VALUE]... [-o FILE] [--format table|csv|json|svg]", &
+    "                  [--pairs LIST] [--lang en|ru] [--kinematics] [--quiet] [--strict]", &
     "  kinetostat template KIND      print a commented example deck", &
     "  kinetostat diff A B [--rtol R] [--atol A] [--quiet]   compare two outputs", &
     "  kinetostat --help | --version", &
@@ -45,7 +45,9 @@ module kinetostat_cli
     "--set NAME=VALUE  set a deck variable as if the deck ended with NAME = VALUE", &
     "            (repeatable; l_ab=0.12, f5c(3)=0, 'dyad(2)%l2=0.45'); marked (--set)", &
     "-o FILE     write to FILE (atomically: nothing is left behind on error)", &
-    "--format    table (default, the legacy printout), csv (full precision) or json", &
+    "--format    table (default, the legacy printout), csv (full precision), json, or svg", &
+    "            (a sheet of force hodographs and diagrams; see docs/pictures.md)", &
+    "--pairs     with svg: only these pair forces, e.g. --pairs F16,F36", &
     "--lang      language of the table's labels: en (default) or ru (the 1991 printouts)", &
     "--kinematics  csv and json add positions of joints and centres of mass, link angles,", &
     "            angular speeds and accelerations, accelerations of the centres of mass and", &
@@ -296,7 +298,7 @@ contains
         value = arg(eq + 1:)
       else
         name = arg
-        if (any(name == [character(len=8) :: "-o", "--output", "--format", "--lang", "--set"])) then
+        if (any(name == [character(len=8) :: "-o", "--output", "--format", "--lang", "--set", "--pairs"])) then
           if (i == n) then
             call fatal_error(error, exit_usage, name//" needs a value")
             return
@@ -324,6 +326,8 @@ contains
           call fatal_error(error, exit_usage, "--format must be one of "//format_names//" (got '"//value//"')")
           return
         end if
+      case ("--pairs")
+        args%options%pairs = value
       case ("--lang")
         args%options%lang = lang_from_name(value)
         if (args%options%lang == 0) then
@@ -360,7 +364,11 @@ contains
       end select
     end do
     if (args%help .or. args%version .or. allocated(args%template_kind)) return
-    if (.not. allocated(args%deck)) call fatal_error(error, exit_usage, "no deck given")
+    if (.not. allocated(args%deck)) then
+      call fatal_error(error, exit_usage, "no deck given")
+    else if (allocated(args%options%pairs) .and. args%options%format /= format_svg) then
+      call fatal_error(error, exit_usage, "--pairs needs --format svg")
+    end if
   end subroutine parse_args
 
   !> The arguments of `kinetostat diff A B [--rtol R] [--atol A] [--quiet]` (errors: exit 2).
