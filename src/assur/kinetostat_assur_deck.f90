@@ -11,7 +11,7 @@ module kinetostat_assur_deck
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str, number_str
   use kinetostat_text_buffer, only: text_buffer_t
-  use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, unset_bits, max_deck_array, &
+  use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, unset_bits, max_deck_array, deck_array_capacities, &
     deck_source_t, namelist_failure, deck_error, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn, &
     is_whole_in, require_whole
@@ -222,6 +222,8 @@ contains
     integer :: frame_no, crank_no, nd, nf, nm, n_omega, n_eps, n_values, ios, k, d, i
     real(wp) :: crank_at(2), crank_m, crank_j, crank_s(2), omega1, g, gravity_angle, phi_start, dphi
     real(wp), allocatable :: omega1_step(:), eps1_step(:), step_values(:)
+    !> Elements allocated for each per-step array the deck may give (see deck_array_capacities).
+    integer, allocatable :: capacity(:)
     logical :: angles_signed, components
     type(dyad_in_t) :: dyad(max_dyads)
     type(force_in_t) :: force(max_forces)
@@ -244,8 +246,8 @@ contains
     omega1 = unset_real; g = unset_real; gravity_angle = unset_real
     phi_start = unset_real; dphi = unset_real
     angles_signed = .false.; components = .true.
-    allocate (omega1_step(max_deck_array), eps1_step(max_deck_array), step_values(max_deck_array), &
-              source=unset_real)
+    capacity = deck_array_capacities(source, ctx%group, [character(len=11) :: "omega1_step", "eps1_step", "step_values"])
+    allocate (omega1_step(capacity(1)), eps1_step(capacity(2)), step_values(capacity(3)), source=unset_real)
 
     read (source%lines, nml=assur, iostat=ios, iomsg=msg)
     if (ios /= 0) then
