@@ -247,7 +247,7 @@ contains
           deck = deck//lf
           cycle
         case (5); deck = deck//" b = 2.5"//trim(seps(pick(1, size(seps))))
-        case (6); deck = deck//" s = 'p = q / r, ''t'' = 1 2',"//lf
+        case default; deck = deck//" s = 'p = q / r, ''t'' = 1 2',"//lf
         end select
         if (index(deck(max(1, len(deck) - 2):), "=") == 0) cycle
         do j = 1, pick(0, 12)
@@ -255,7 +255,7 @@ contains
           case (1, 2); deck = deck//" "//int_text(pick(0, 99))//".5"
           case (3); deck = deck//" "//int_text(pick(1, 6))//"*"//int_text(pick(0, 9))
           case (4); deck = deck//" "//int_text(pick(1, 4))//"*"
-          case (5); deck = deck//""
+          case default; deck = deck//""  ! an empty value: nulls come from the separators
           end select
           deck = deck//trim(seps(pick(1, size(seps))))
         end do
