@@ -21,7 +21,7 @@ module kinetostat_cli
 
   !> One-line usage, printed with usage errors.
   character(*), parameter :: usage_line = "usage: kinetostat DECK [-o FILE] [--format table|csv|json|svg] " // &
-    "[--pairs LIST] [--lang en|ru] [--quiet] | kinetostat template KIND | --help | --version"
+    "[--pairs LIST] [--lang en|ru] [--kinematics] [--quiet] | kinetostat template KIND | --help | --version"
 
   !> Warning line when a run's self-check exceeds its tolerance.
   character(*), parameter :: selfcheck_warning_fmt = '(a,es9.2,a,es9.2)'
@@ -31,7 +31,7 @@ module kinetostat_cli
     "kinetostat - kinetostatic force analysis of planar mechanisms", &
     "", &
     "  kinetostat DECK [-o FILE] [--format table|csv|json|svg] [--pairs LIST] [--lang en|ru]", &
-    "                 [--quiet]", &
+    "                 [--kinematics] [--quiet]", &
     "  kinetostat template KIND      print a commented example deck", &
     "  kinetostat --help | --version", &
     "", &
@@ -41,6 +41,9 @@ module kinetostat_cli
     "            (a sheet of force hodographs and diagrams; see docs/pictures.md)", &
     "--pairs     with svg: only these pair forces, e.g. --pairs F16,F36", &
     "--lang      language of the table's labels: en (default) or ru (the 1991 printouts)", &
+    "--kinematics  csv and json add positions of joints and centres of mass, link angles,", &
+    "            angular speeds and accelerations, accelerations of the centres of mass and", &
+    "            the x, y components of the pair forces (the table is unchanged)", &
     "--quiet     no warnings on stderr (errors are still reported)", &
     "", &
     "Exit codes: 0 ok, 1 usage, 2 input or output error, 3 geometry error or a result", &
@@ -194,6 +197,8 @@ contains
         args%version = .true.
       case ("--quiet", "-q")
         args%quiet = .true.
+      case ("--kinematics")
+        args%options%kinematics = .true.
       case ("-o", "--output")
         args%out_file = value
       case ("--format")

@@ -37,6 +37,9 @@ module kinetostat_run
     integer :: format = format_table
     !> Language of the legacy table (lang_en, lang_ru).
     integer :: lang = lang_en
+    !> CSV and JSON add the kinematics columns (positions, link angles and speeds,
+    !> accelerations of the centres of mass, force components).
+    logical :: kinematics = .false.
     !> SVG: the pair forces to draw, comma-separated ("" for all).
     character(len=:), allocatable :: pairs
   end type run_options_t
@@ -91,9 +94,9 @@ contains
     if (allocated(error)) return
     select case (options%format)
     case (format_csv)
-      call write_csv(table, out)
+      call write_csv(table, out, options%kinematics)
     case (format_json)
-      call write_json(mech%title(options%lang), table, out)
+      call write_json(mech%title(options%lang), table, out, options%kinematics)
     case (format_svg)
       if (allocated(options%pairs)) then
         call write_svg(mech%title(options%lang), table, options%pairs, out, error)
