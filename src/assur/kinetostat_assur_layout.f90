@@ -2,7 +2,7 @@
 !> step table (`phi1`, every pair, crank pin, `M1`), and its table layout (magnitudes /
 !> angles / normal forces / reaction moments per step).
 module kinetostat_assur_layout
-  use kinetostat_kinds, only: wp, deg_to_rad, rad_to_deg
+  use kinetostat_kinds, only: wp, pi, deg_to_rad, rad_to_deg
   use kinetostat_deck, only: deck_source_t
   use kinetostat_error, only: error_t, fatal_error, exit_geometry
   use kinetostat_text, only: int_str
@@ -16,7 +16,8 @@ module kinetostat_assur_layout
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_assur_kinematics, only: kind_names, link_state_t, dyad_pose_t, point_state_t, point_on
   use kinetostat_assur_statics, only: pair_is_prismatic
-  use kinetostat_assur, only: assur_step_t, assur_step, assur_kinematics
+  use kinetostat_assur, only: assur_step_t, assur_step, assur_kinematics, link_a, link_b, pair_index, crank_pin_index
+  use kinetostat_sketch, only: sketch_t, point_joint, point_pivot, point_com, point_plain, force_load
   use kinetostat_assur_deck, only: assur_deck_t, read_assur_deck, write_assur_template
   implicit none
   private
@@ -39,6 +40,7 @@ module kinetostat_assur_layout
     procedure :: solve
     procedure :: write_results
     procedure :: write_template
+    procedure :: sketch
   end type assur_mechanism_t
 
 contains
@@ -275,6 +277,158 @@ contains
                                 deck%pair_frame(ip) * rad_to_deg)
     end do
   end subroutine put_kinematics
+
+  !> The sketch at row `k` (--format svg --at K), built from the deck's structure: every
+  !> pair's point J<pair> from the kinematics columns (a revolute pair with the frame is a
+  !> pivot; a prismatic pair is a block of the sliding link along the pair's line, with a
+  !> hatched guide over its travel when it slides on the frame); every moving link as a bar
+  !> (points on a line) or a plate through its pairs' points; centres of mass; the pair
+  !> forces, the deck's external forces (Q<i>) and moments (MQ<i>), the weights, the
+  !> inertia forces and moments, and M1. The frame is turned so that gravity points down.
+  pure subroutine sketch(self, table, k, drawing, error)
+    class(assur_mechanism_t), intent(in) :: self
+    type(step_table_t), intent(in) :: table
+    integer, intent(in) :: k
+    type(sketch_t), intent(out) :: drawing
+    type(error_t), allocatable, intent(out) :: error
+    type(link_state_t) :: states(0:2 * size(self%deck%mech%dyads) + 1)
+    type(dyad_pose_t) :: poses(size(self%deck%mech%dyads))
+    type(point_state_t) :: ps
+    character(len=16), allocatable :: names(:)
+    integer, allocatable :: pair_links(:, :)
+    logical, allocatable :: prismatic(:)
+    real(wp), allocatable :: slide(:, :)
+    real(wp) :: dir, size_scale
+    integer :: nd, np, ip, d, j, i, kind, block_link, guide_link
+    associate (mech => self%deck%mech, deck => self%deck)
+      nd = size(mech%dyads)
+      np = crank_pin_index(nd)
+      call assur_kinematics(mech, deck%phi1_deg(k) * deg_to_rad, states, poses, error)
+      if (allocated(error)) return
+      drawing%view_angle = -0.5_wp * pi - deck%gravity_angle * deg_to_rad
+      drawing%view_note = "gravity down the sheet"
+      ! the pairs: links, points, sliding lines
+      allocate (names(np), pair_links(2, np), prismatic(np), slide(2, np))
+      prismatic = .false.
+      slide = 0.0_wp
+      do ip = 1, np
+        names(ip) = joint_name(deck%pair_name(ip))
+      end do
+      do d = 1, nd
+        pair_links(:, pair_index(d, 1)) = [link_a(d), mech%dyads(d)%on(1)]
+        pair_links(:, pair_index(d, 2)) = [link_a(d), link_b(d)]
+        pair_links(:, pair_index(d, 3)) = [link_b(d), mech%dyads(d)%on(2)]
+        do j = 1, 3
+          slide(:, pair_index(d, j)) = poses(d)%t(:, j)
+          prismatic(pair_index(d, j)) = any(poses(d)%t(:, j) /= 0.0_wp)
+        end do
+      end do
+      pair_links(:, np) = [1, 0]
+      size_scale = 0.0_wp
+      do ip = 1, np
+        if (prismatic(ip)) then
+          kind = point_plain
+        else if (any(pair_links(:, ip) == 0)) then
+          kind = point_pivot
+        else
+          kind = point_joint
+        end if
+        call drawing%point_from_table(table, k, trim(names(ip)), kind, error)
+        if (allocated(error)) return
+        size_scale = max(size_scale, norm2(drawing%at(trim(names(ip))) - drawing%at(trim(names(np)))))
+      end do
+      do i = 1, ubound(states, 1)
+        call drawing%point_from_table(table, k, "S"//int_str(mech%links(i)%id), point_com, error)
+        if (allocated(error)) return
+      end do
+      ! the moving links as bars or plates through their pairs' points
+      do i = 1, ubound(states, 1)
+        call drawing%add_bar(int_str(mech%links(i)%id), ordered_points(drawing, pack(names, &
+          pair_links(1, :) == i .or. pair_links(2, :) == i)))
+      end do
+      ! sliders: the block is the first link of the pair (the outer pair's own link, or link a
+      ! of the inner pair); the line belongs to the second
+      do ip = 1, np
+        if (.not. prismatic(ip)) cycle
+        block_link = pair_links(1, ip)
+        guide_link = pair_links(2, ip)
+        dir = atan2(slide(2, ip), slide(1, ip))
+        call drawing%add_block(int_str(mech%links(block_link)%id), trim(names(ip)), dir)
+        if (guide_link == 0) call drawing%add_guide_over_rows(table, trim(names(ip)), dir, 0.15_wp * size_scale)
+      end do
+      do ip = 1, np
+        call drawing%pair_from_table(table, k, trim(deck%pair_name(ip)), trim(names(ip)), error)
+        if (allocated(error)) return
+      end do
+      do i = 1, size(mech%forces)
+        associate (f => mech%forces(i))
+          ps = point_on(states(f%link), f%at)
+          dir = f%angle
+          if (f%follow) dir = dir + states(f%link)%th
+          call drawing%add_force("Q"//int_str(i), force_load, ps%p, deck%f_mag(i, k) * [cos(dir), sin(dir)])
+        end associate
+      end do
+      do i = 1, size(mech%moment_link)
+        call drawing%add_moment("MQ"//int_str(i), force_load, drawing%at("S"//int_str(mech%links(mech%moment_link(i))%id)), &
+          deck%m_mag(i, k))
+      end do
+      do i = 1, ubound(states, 1)
+        associate (l => mech%links(i))
+          call drawing%add_link_loads(table, k, int_str(l%id), "S"//int_str(l%id), "S"//int_str(l%id), l%m, l%j, &
+            mech%g * mech%down)
+        end associate
+      end do
+      call drawing%add_moment("M1", force_load, drawing%at(trim(names(np))), table%rows(table%column_index("M1"), k))
+    end associate
+  end subroutine sketch
+
+  !> The points of one link in drawing order: along the line through the two farthest
+  !> apart when they lie on it (a bar), else around their centroid (a plate).
+  pure function ordered_points(drawing, names) result(ordered)
+    type(sketch_t), intent(in) :: drawing
+    character(*), intent(in) :: names(:)
+    character(len=16), allocatable :: ordered(:)
+    real(wp) :: p(2, size(names)), key(size(names)), c(2), u(2), far, dist
+    integer :: i, j, i1, i2, order(size(names))
+    logical :: on_line
+    ordered = names
+    if (size(names) < 3) return
+    do i = 1, size(names)
+      p(:, i) = drawing%at(trim(names(i)))
+    end do
+    far = -1.0_wp
+    i1 = 1
+    i2 = 2
+    do i = 1, size(names)
+      do j = i + 1, size(names)
+        dist = hypot(p(1, j) - p(1, i), p(2, j) - p(2, i))
+        if (dist > far) then
+          far = dist
+          i1 = i
+          i2 = j
+        end if
+      end do
+    end do
+    if (far <= 0.0_wp) return
+    u = (p(:, i2) - p(:, i1)) / far
+    on_line = all(abs(u(1) * (p(2, :) - p(2, i1)) - u(2) * (p(1, :) - p(1, i1))) <= 0.01_wp * far)
+    if (on_line) then
+      key = u(1) * (p(1, :) - p(1, i1)) + u(2) * (p(2, :) - p(2, i1))
+    else
+      c = sum(p, dim=2) / size(names)
+      key = atan2(p(2, :) - c(2), p(1, :) - c(1))
+    end if
+    order = [(i, i=1, size(names))]
+    do i = 2, size(names)
+      j = i
+      do while (j > 1)
+        if (key(order(j - 1)) <= key(order(j))) exit
+        order([j - 1, j]) = order([j, j - 1])
+        j = j - 1
+      end do
+    end do
+    ordered = names(order)
+  end function ordered_points
 
   !> The joint of a pair: "J21" for the pair of F21.
   pure function joint_name(pair_name) result(name)

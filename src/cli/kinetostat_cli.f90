@@ -21,7 +21,7 @@ module kinetostat_cli
 
   !> One-line usage, printed with usage errors.
   character(*), parameter :: usage_line = "usage: kinetostat DECK [-o FILE] [--format table|csv|json|svg] " // &
-    "[--pairs LIST] [--lang en|ru] [--kinematics] [--quiet] | kinetostat template KIND | --help | --version"
+    "[--pairs LIST] [--at K] [--lang en|ru] [--kinematics] [--quiet] | kinetostat template KIND | --help | --version"
 
   !> Warning line when a run's self-check exceeds its tolerance.
   character(*), parameter :: selfcheck_warning_fmt = '(a,es9.2,a,es9.2)'
@@ -30,8 +30,8 @@ module kinetostat_cli
   character(*), parameter :: help_lines(*) = [character(len=88) :: &
     "kinetostat - kinetostatic force analysis of planar mechanisms", &
     "", &
-    "  kinetostat DECK [-o FILE] [--format table|csv|json|svg] [--pairs LIST] [--lang en|ru]", &
-    "                 [--kinematics] [--quiet]", &
+    "  kinetostat DECK [-o FILE] [--format table|csv|json|svg] [--pairs LIST] [--at K]", &
+    "                 [--lang en|ru] [--kinematics] [--quiet]", &
     "  kinetostat template KIND      print a commented example deck", &
     "  kinetostat --help | --version", &
     "", &
@@ -40,6 +40,7 @@ module kinetostat_cli
     "--format    table (default, the legacy printout), csv (full precision), json, or svg", &
     "            (a sheet of force hodographs and diagrams; see docs/pictures.md)", &
     "--pairs     with svg: only these pair forces, e.g. --pairs F16,F36", &
+    "--at K      with svg: the mechanism drawn at step K with every force of the step", &
     "--lang      language of the table's labels: en (default) or ru (the 1991 printouts)", &
     "--kinematics  csv and json add positions of joints and centres of mass, link angles,", &
     "            angular speeds and accelerations, accelerations of the centres of mass and", &
@@ -162,7 +163,7 @@ contains
   subroutine parse_args(args, error)
     type(cli_args_t), intent(out) :: args
     type(error_t), allocatable, intent(out) :: error
-    integer :: i, n, eq
+    integer :: i, n, eq, ios
     character(len=:), allocatable :: arg, name, value
 
     n = command_argument_count()
@@ -181,7 +182,7 @@ contains
         value = arg(eq + 1:)
       else
         name = arg
-        if (any(name == [character(len=8) :: "-o", "--output", "--format", "--lang", "--pairs"])) then
+        if (any(name == [character(len=8) :: "-o", "--output", "--format", "--lang", "--pairs", "--at"])) then
           if (i == n) then
             call fatal_error(error, exit_usage, name//" needs a value")
             return
@@ -209,6 +210,12 @@ contains
         end if
       case ("--pairs")
         args%options%pairs = value
+      case ("--at")
+        read (value, *, iostat=ios) args%options%at_step
+        if (ios /= 0 .or. args%options%at_step < 1 .or. verify(value, "0123456789 ") /= 0) then
+          call fatal_error(error, exit_usage, "--at needs a step number 1, 2, ... (got '"//value//"')")
+          return
+        end if
       case ("--lang")
         args%options%lang = lang_from_name(value)
         if (args%options%lang == 0) then
@@ -239,6 +246,8 @@ contains
       call fatal_error(error, exit_usage, "no deck given")
     else if (allocated(args%options%pairs) .and. args%options%format /= format_svg) then
       call fatal_error(error, exit_usage, "--pairs needs --format svg")
+    else if (args%options%at_step > 0 .and. args%options%format /= format_svg) then
+      call fatal_error(error, exit_usage, "--at needs --format svg")
     end if
   end subroutine parse_args
 

@@ -3,11 +3,13 @@
 !> The run pipeline (kinetostat_run) and the registry (kinetostat_registry) know mechanisms
 !> only through this type.
 module kinetostat_mechanism
-  use kinetostat_error, only: error_t
+  use kinetostat_error, only: error_t, fatal_error, exit_usage
+  use kinetostat_sketch, only: sketch_t
   use kinetostat_deck, only: deck_source_t
   use kinetostat_step_table, only: step_table_t
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_labels, only: lang_ru
+  use kinetostat_kinds, only: wp
   implicit none
   private
   public :: mechanism_t
@@ -29,6 +31,8 @@ module kinetostat_mechanism
     procedure(results_i), deferred :: write_results
     !> The commented template deck.
     procedure(template_i), deferred :: write_template
+    !> The sketch of the mechanism at one row, for --format svg --at K (default: not drawn).
+    procedure :: sketch
   end type mechanism_t
 
   abstract interface
@@ -87,5 +91,23 @@ contains
       text = self%title_en
     end if
   end function title
+
+  !> The sketch of the mechanism at row `k` of its results (`--format svg --at K`): points,
+  !> links, guides and forces (see kinetostat_sketch). This default draws nothing and
+  !> says so; the linkages override it.
+  pure subroutine sketch(self, table, k, drawing, error)
+    class(mechanism_t), intent(in) :: self
+    !> The results of the run (with the kinematics columns).
+    type(step_table_t), intent(in) :: table
+    !> Row to draw, 1..row_count.
+    integer, intent(in) :: k
+    !> The sketch.
+    type(sketch_t), intent(out) :: drawing
+    !> Why it cannot be drawn.
+    type(error_t), allocatable, intent(out) :: error
+    drawing%view_angle = 0.0_wp
+    call fatal_error(error, exit_usage, table%deck//": &"//table%mechanism//": --at: this mechanism is not "// &
+      "drawn (only linkages are); --format svg without --at shows its forces")
+  end subroutine sketch
 
 end module kinetostat_mechanism
