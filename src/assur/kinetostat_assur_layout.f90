@@ -2,22 +2,24 @@
 !> step table (`phi1`, every pair, crank pin, `M1`), and its table layout (magnitudes /
 !> angles / normal forces / reaction moments per step).
 module kinetostat_assur_layout
-  use kinetostat_kinds, only: wp, pi, deg_to_rad, rad_to_deg
+  use kinetostat_kinds, only: wp, deg_to_rad, rad_to_deg
   use kinetostat_deck, only: deck_source_t
   use kinetostat_error, only: error_t, fatal_error, exit_geometry
   use kinetostat_text, only: int_str
   use kinetostat_noise, only: noise_rel, force_components
   use kinetostat_vec2, only: magnitude, angle_360_deg, angle_180_deg, rotate, snap_noise, clean_zero
-  use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_component, &
-    col_moment
+  use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_component, col_length, &
+    col_moment, col_other
   use kinetostat_format, only: fixed_field, display_width
   use kinetostat_labels, only: lang_ru
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_mechanism, only: mechanism_t
-  use kinetostat_assur_kinematics, only: kind_names, link_state_t, dyad_pose_t, point_state_t, point_on
+  use kinetostat_sketch, only: sketch_t
+  use kinetostat_assur_kinematics, only: kind_names, link_state_t, dyad_pose_t, point_state_t, point_on, &
+    kind_rrp, kind_rpr, kind_prp, kind_rpp
   use kinetostat_assur_statics, only: pair_is_prismatic
-  use kinetostat_assur, only: assur_step_t, assur_step, assur_kinematics, link_a, link_b, pair_index, crank_pin_index
-  use kinetostat_sketch, only: sketch_t, point_joint, point_pivot, point_com, point_plain, force_load
+  use kinetostat_assur, only: assur_step_t, assur_step, assur_kinematics, link_a, link_b, crank_pin_index
+  use kinetostat_drawing, only: drawing_t, force_load
   use kinetostat_assur_deck, only: assur_deck_t, read_assur_deck, write_assur_template
   implicit none
   private
@@ -27,6 +29,8 @@ module kinetostat_assur_layout
   integer, parameter :: phi_width = 9
   !> Width of every other field of the RESULTS block.
   integer, parameter :: field_width = 12
+  !> Decimals of the actuator's stroke (m), stroke speed (m/s) and acceleration (m/s^2).
+  integer, parameter :: stroke_decimals = 4
   !> Dyad line of the INPUT DATA echo.
   character(*), parameter :: dyad_echo_fmt = '(3x,"DYAD ",i0,": ",a," LINKS ",i0,"-",i0,", ON LINKS ",i0," AND ",i0, &
     &", MODE ",i0)'
@@ -41,6 +45,7 @@ module kinetostat_assur_layout
     procedure :: write_results
     procedure :: write_template
     procedure :: sketch
+    procedure :: force_plan
   end type assur_mechanism_t
 
 contains
@@ -67,6 +72,100 @@ contains
     type(text_buffer_t), intent(inout) :: out
     call write_assur_template(out)
   end subroutine write_template
+
+  !> The topology for a drawing: every moving link joins the joints J<pair> of its pairs (a
+  !> dyad's link a: pairs 1, 2; link b: pairs 2, 3; the crank: its pivot; each link also the
+  !> joints of the later dyads attached to it). A link that slides on a prismatic pair is a
+  !> block: RRP link b on its guide, RPR link a along link b's x axis, PRP both links, RPP
+  !> link a along the slot of link b and link b on its guide. Pivots: the revolute pairs with
+  !> the frame; guides: every prismatic pair's line.
+  pure subroutine sketch(self, out)
+    class(assur_mechanism_t), intent(in) :: self
+    type(sketch_t), intent(out) :: out
+    character(len=16), allocatable :: joints(:)
+    integer :: nd, d, i, q, e
+    real(wp) :: slot_deg
+    associate (mech => self%deck%mech, names => self%deck%pair_name)
+      nd = size(mech%dyads)
+      do i = 1, 2 * nd + 1
+        ! the link's own pairs, then the outer pairs of later dyads attached to it
+        if (i == 1) then
+          joints = [character(len=16) :: joint_name(names(3 * nd + 1))]
+        else
+          d = i / 2
+          q = i - 2 * d + 1
+          joints = [character(len=16) :: joint_name(names(3 * d - 3 + q)), joint_name(names(3 * d - 2 + q))]
+        end if
+        do e = 1, nd
+          if (mech%dyads(e)%on(1) == i) joints = [character(len=16) :: joints, joint_name(names(3 * e - 2))]
+          if (mech%dyads(e)%on(2) == i) joints = [character(len=16) :: joints, joint_name(names(3 * e))]
+        end do
+        call add_sketch_link(out, self%deck, i, joints)
+      end do
+      call out%add_pivot(joint_name(names(3 * nd + 1)))
+      do d = 1, nd
+        associate (dy => mech%dyads(d))
+          do q = 1, 2
+            e = 3 * d - 2 + 2 * (q - 1)
+            if (assur_pair_prismatic(self%deck, e)) then
+              call out%add_guide(joint_name(names(e)), dy%ang(q) * rad_to_deg, link_label(self%deck, dy%on(q)))
+            else if (dy%on(q) == 0) then
+              call out%add_pivot(joint_name(names(e)))
+            end if
+          end do
+          if (assur_pair_prismatic(self%deck, 3 * d - 1)) then
+            slot_deg = 0.0_wp
+            if (dy%geom%kind == kind_rpp) slot_deg = dy%geom%slot_angle * rad_to_deg
+            call out%add_guide(joint_name(names(3 * d - 1)), slot_deg, link_label(self%deck, link_b(d)))
+          end if
+        end associate
+      end do
+      out%down = mech%down
+    end associate
+  end subroutine sketch
+
+  !> One moving link (internal index i) of the sketch: a bar through `joints`, or a block.
+  pure subroutine add_sketch_link(out, deck, i, joints)
+    type(sketch_t), intent(inout) :: out
+    type(assur_deck_t), intent(in) :: deck
+    integer, intent(in) :: i
+    character(*), intent(in) :: joints(:)
+    integer :: d, kind
+    character(len=:), allocatable :: name
+    name = link_label(deck, i)
+    if (i == 1) then
+      call out%add_link(name, joints)
+      return
+    end if
+    d = i / 2
+    kind = deck%mech%dyads(d)%geom%kind
+    associate (dy => deck%mech%dyads(d))
+      if (i == link_a(d) .and. kind == kind_rpr) then
+        call out%add_link(name, joints, 0.0_wp, link_label(deck, link_b(d)))
+      else if (i == link_a(d) .and. kind == kind_prp) then
+        call out%add_link(name, joints, dy%ang(1) * rad_to_deg, link_label(deck, dy%on(1)))
+      else if (i == link_a(d) .and. kind == kind_rpp) then
+        call out%add_link(name, joints, (dy%ang(2) + dy%geom%slot_angle) * rad_to_deg, link_label(deck, dy%on(2)))
+      else if (i == link_b(d) .and. (kind == kind_rrp .or. kind == kind_prp .or. kind == kind_rpp)) then
+        ! the block sits on the guide (pair 3) first
+        call out%add_link(name, [joints(2), joints(1), joints(3:)], dy%ang(2) * rad_to_deg, link_label(deck, dy%on(2)))
+      else
+        call out%add_link(name, joints)
+      end if
+    end associate
+  end subroutine add_sketch_link
+
+  !> The name of link `i` (internal index) in phi<name>, omega<name>, eps<name>: its number;
+  !> "L1" for a link numbered 1 that is not the crank (`phi1` is the input angle, the crank's);
+  !> "" for the frame.
+  pure function link_label(deck, i) result(label)
+    type(assur_deck_t), intent(in) :: deck
+    integer, intent(in) :: i
+    character(len=:), allocatable :: label
+    label = ""
+    if (i > 0) label = int_str(deck%mech%links(i)%id)
+    if (i > 1 .and. label == "1") label = "L1"
+  end function link_label
 
   !> Every step into the step table, with the INPUT DATA echo and the self-check.
   subroutine solve(self, table, error)
@@ -99,7 +198,14 @@ contains
         c = c + 2
       end if
     end do
-    call table%add_column("M1", "N*m", col_moment)
+    if (self%deck%mech%drive_dyad == 0) then
+      call table%add_column("M1", "N*m", col_moment)
+    else
+      call table%add_column("F_drive", "N", col_component)
+      call table%add_column("stroke", "m", col_length)
+      call table%add_column("stroke_v", "m/s", col_other)
+      call table%add_column("stroke_a", "m/s^2", col_other)
+    end if
     table%input_column = 1
     call table%allocate_rows(size(steps))
     do k = 1, size(steps)
@@ -108,7 +214,11 @@ contains
     do k = 1, size(steps)
       call put_kinematics(table, k, self%deck, steps(k))
     end do
-    call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "M1")
+    if (self%deck%mech%drive_dyad == 0) then
+      call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "M1")
+    else
+      call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "F_drive")
+    end if
     if (len_trim(self%deck%title) > 0) table%subtitle = trim(self%deck%title)
     call echo_deck(self%deck, table)
   end subroutine solve
@@ -154,7 +264,8 @@ contains
     end do
   end subroutine assur_solve
 
-  !> CSV column names: phi1; per pair F, FG, [Fx, Fy], [FN, FM for prismatic pairs]; M1.
+  !> CSV column names: phi1; per pair F, FG, [Fx, Fy], [FN, FM for prismatic pairs]; M1, or
+  !> with a linear actuator as driver F_drive, stroke, stroke_v, stroke_a.
   pure function assur_csv_columns(deck) result(cols)
     !> Validated deck.
     type(assur_deck_t), intent(in) :: deck
@@ -168,7 +279,11 @@ contains
       if (assur_pair_prismatic(deck, ip)) cols = [character(len=24) :: cols, trim(deck%pair_name(ip))//"N", &
                                                   trim(deck%pair_name(ip))//"M"]
     end do
-    cols = [character(len=24) :: cols, "M1"]
+    if (deck%mech%drive_dyad == 0) then
+      cols = [character(len=24) :: cols, "M1"]
+    else
+      cols = [character(len=24) :: cols, "F_drive", "stroke", "stroke_v", "stroke_a"]
+    end if
   end function assur_csv_columns
 
   !> The CSV row of one step, in the order of assur_csv_columns. Forces below `noise_rel`
@@ -184,7 +299,7 @@ contains
     real(wp) :: floor, f(2), mfloor, nn, mm
     integer :: ip, np, pos
     np = size(s%f, 2)
-    allocate (v(1 + 6 * np + 1))
+    allocate (v(1 + 6 * np + 4))
     floor = 0.0_wp
     do ip = 1, np
       floor = max(floor, magnitude(s%f(:, ip)))
@@ -216,17 +331,24 @@ contains
         pos = pos + 2
       end if
     end do
-    v(pos + 1) = s%m1
-    if (abs(v(pos + 1)) <= mfloor) v(pos + 1) = 0.0_wp
-    v = clean_zero(v(1:pos + 1))
+    if (deck%mech%drive_dyad == 0) then
+      v(pos + 1) = s%m1
+      if (abs(v(pos + 1)) <= mfloor) v(pos + 1) = 0.0_wp
+      v = clean_zero(v(1:pos + 1))
+    else
+      v(pos + 1:pos + 4) = [s%f_drive, s%stroke, s%stroke_v, s%stroke_a]
+      if (abs(v(pos + 1)) <= floor) v(pos + 1) = 0.0_wp
+      v = clean_zero(v(1:pos + 4))
+    end if
   end function assur_csv_values
 
   !> The kinematics columns of step `k`, in the deck's global frame: the reference point
   !> J<pair> of every pair (x_J21 for the pair of F21: the pin of a revolute pair, the
   !> slider's reference point of a prismatic pair; the crank's pair with the frame is the
   !> pivot), the centre of mass S<id> of every moving link and its acceleration, the angle
-  !> (of the link's x axis), angular velocity and acceleration of every moving link, and the
-  !> components of every pair force as the F<pair>x, F<pair>y columns give them.
+  !> (of the link's x axis), angular velocity and acceleration of every moving link (named
+  !> by link_label), and the components of every pair force as the F<pair>x, F<pair>y columns
+  !> give them.
   pure subroutine put_kinematics(table, k, deck, s)
     !> The step table (columns appended on first use).
     type(step_table_t), intent(inout) :: table
@@ -259,7 +381,7 @@ contains
       call table%put_point(k, "S"//int_str(deck%mech%links(i)%id), ps%p)
     end do
     do i = 1, ubound(states, 1)
-      call table%put_link(k, int_str(deck%mech%links(i)%id), states(i)%th, states(i)%u * s%omega1, &
+      call table%put_link(k, link_label(deck, i), states(i)%th, states(i)%u * s%omega1, &
                           states(i)%eq * w2 + states(i)%u * s%eps1)
     end do
     do i = 1, ubound(states, 1)
@@ -278,86 +400,26 @@ contains
     end do
   end subroutine put_kinematics
 
-  !> The sketch at row `k` (--format svg --at K), built from the deck's structure: every
-  !> pair's point J<pair> from the kinematics columns (a revolute pair with the frame is a
-  !> pivot; a prismatic pair is a block of the sliding link along the pair's line, with a
-  !> hatched guide over its travel when it slides on the frame); every moving link as a bar
-  !> (points on a line) or a plate through its pairs' points; centres of mass; the pair
-  !> forces, the deck's external forces (Q<i>) and moments (MQ<i>), the weights, the
-  !> inertia forces and moments, and M1. The frame is turned so that gravity points down.
-  pure subroutine sketch(self, table, k, drawing, error)
+  !> The forces of row `k` on its drawing (--format svg --at K): every pair force at its
+  !> pair's point J<pair>, the deck's external forces (Q<i>, at their points) and moments
+  !> (MQ<i>, at the link's centre of mass), the weights, inertia forces and moments of the
+  !> moving links, and M1 at the crank's pivot.
+  pure subroutine force_plan(self, table, k, drawing, error)
     class(assur_mechanism_t), intent(in) :: self
     type(step_table_t), intent(in) :: table
     integer, intent(in) :: k
-    type(sketch_t), intent(out) :: drawing
+    type(drawing_t), intent(inout) :: drawing
     type(error_t), allocatable, intent(out) :: error
     type(link_state_t) :: states(0:2 * size(self%deck%mech%dyads) + 1)
     type(dyad_pose_t) :: poses(size(self%deck%mech%dyads))
     type(point_state_t) :: ps
-    character(len=16), allocatable :: names(:)
-    integer, allocatable :: pair_links(:, :)
-    logical, allocatable :: prismatic(:)
-    real(wp), allocatable :: slide(:, :)
-    real(wp) :: dir, size_scale
-    integer :: nd, np, ip, d, j, i, kind, block_link, guide_link
+    real(wp) :: dir
+    integer :: ip, i
     associate (mech => self%deck%mech, deck => self%deck)
-      nd = size(mech%dyads)
-      np = crank_pin_index(nd)
       call assur_kinematics(mech, deck%phi1_deg(k) * deg_to_rad, states, poses, error)
       if (allocated(error)) return
-      drawing%view_angle = -0.5_wp * pi - deck%gravity_angle * deg_to_rad
-      drawing%view_note = "gravity down the sheet"
-      ! the pairs: links, points, sliding lines
-      allocate (names(np), pair_links(2, np), prismatic(np), slide(2, np))
-      prismatic = .false.
-      slide = 0.0_wp
-      do ip = 1, np
-        names(ip) = joint_name(deck%pair_name(ip))
-      end do
-      do d = 1, nd
-        pair_links(:, pair_index(d, 1)) = [link_a(d), mech%dyads(d)%on(1)]
-        pair_links(:, pair_index(d, 2)) = [link_a(d), link_b(d)]
-        pair_links(:, pair_index(d, 3)) = [link_b(d), mech%dyads(d)%on(2)]
-        do j = 1, 3
-          slide(:, pair_index(d, j)) = poses(d)%t(:, j)
-          prismatic(pair_index(d, j)) = any(poses(d)%t(:, j) /= 0.0_wp)
-        end do
-      end do
-      pair_links(:, np) = [1, 0]
-      size_scale = 0.0_wp
-      do ip = 1, np
-        if (prismatic(ip)) then
-          kind = point_plain
-        else if (any(pair_links(:, ip) == 0)) then
-          kind = point_pivot
-        else
-          kind = point_joint
-        end if
-        call drawing%point_from_table(table, k, trim(names(ip)), kind, error)
-        if (allocated(error)) return
-        size_scale = max(size_scale, norm2(drawing%at(trim(names(ip))) - drawing%at(trim(names(np)))))
-      end do
-      do i = 1, ubound(states, 1)
-        call drawing%point_from_table(table, k, "S"//int_str(mech%links(i)%id), point_com, error)
-        if (allocated(error)) return
-      end do
-      ! the moving links as bars or plates through their pairs' points
-      do i = 1, ubound(states, 1)
-        call drawing%add_bar(int_str(mech%links(i)%id), ordered_points(drawing, pack(names, &
-          pair_links(1, :) == i .or. pair_links(2, :) == i)))
-      end do
-      ! sliders: the block is the first link of the pair (the outer pair's own link, or link a
-      ! of the inner pair); the line belongs to the second
-      do ip = 1, np
-        if (.not. prismatic(ip)) cycle
-        block_link = pair_links(1, ip)
-        guide_link = pair_links(2, ip)
-        dir = atan2(slide(2, ip), slide(1, ip))
-        call drawing%add_block(int_str(mech%links(block_link)%id), trim(names(ip)), dir)
-        if (guide_link == 0) call drawing%add_guide_over_rows(table, trim(names(ip)), dir, 0.15_wp * size_scale)
-      end do
-      do ip = 1, np
-        call drawing%pair_from_table(table, k, trim(deck%pair_name(ip)), trim(names(ip)), error)
+      do ip = 1, size(deck%pair_name)
+        call drawing%pair_from_table(table, k, trim(deck%pair_name(ip)), joint_name(deck%pair_name(ip)), error)
         if (allocated(error)) return
       end do
       do i = 1, size(mech%forces)
@@ -378,57 +440,12 @@ contains
             mech%g * mech%down)
         end associate
       end do
-      call drawing%add_moment("M1", force_load, drawing%at(trim(names(np))), table%rows(table%column_index("M1"), k))
+      ! the balancing moment on the crank (a deck driven otherwise has no M1 column)
+      i = table%column_index("M1")
+      if (i > 0) call drawing%add_moment("M1", force_load, &
+        drawing%at(joint_name(deck%pair_name(crank_pin_index(size(mech%dyads))))), table%rows(i, k))
     end associate
-  end subroutine sketch
-
-  !> The points of one link in drawing order: along the line through the two farthest
-  !> apart when they lie on it (a bar), else around their centroid (a plate).
-  pure function ordered_points(drawing, names) result(ordered)
-    type(sketch_t), intent(in) :: drawing
-    character(*), intent(in) :: names(:)
-    character(len=16), allocatable :: ordered(:)
-    real(wp) :: p(2, size(names)), key(size(names)), c(2), u(2), far, dist
-    integer :: i, j, i1, i2, order(size(names))
-    logical :: on_line
-    ordered = names
-    if (size(names) < 3) return
-    do i = 1, size(names)
-      p(:, i) = drawing%at(trim(names(i)))
-    end do
-    far = -1.0_wp
-    i1 = 1
-    i2 = 2
-    do i = 1, size(names)
-      do j = i + 1, size(names)
-        dist = hypot(p(1, j) - p(1, i), p(2, j) - p(2, i))
-        if (dist > far) then
-          far = dist
-          i1 = i
-          i2 = j
-        end if
-      end do
-    end do
-    if (far <= 0.0_wp) return
-    u = (p(:, i2) - p(:, i1)) / far
-    on_line = all(abs(u(1) * (p(2, :) - p(2, i1)) - u(2) * (p(1, :) - p(1, i1))) <= 0.01_wp * far)
-    if (on_line) then
-      key = u(1) * (p(1, :) - p(1, i1)) + u(2) * (p(2, :) - p(2, i1))
-    else
-      c = sum(p, dim=2) / size(names)
-      key = atan2(p(2, :) - c(2), p(1, :) - c(1))
-    end if
-    order = [(i, i=1, size(names))]
-    do i = 2, size(names)
-      j = i
-      do while (j > 1)
-        if (key(order(j - 1)) <= key(order(j))) exit
-        order([j - 1, j]) = order([j, j - 1])
-        j = j - 1
-      end do
-    end do
-    ordered = names(order)
-  end function ordered_points
+  end subroutine force_plan
 
   !> The joint of a pair: "J21" for the pair of F21.
   pure function joint_name(pair_name) result(name)
@@ -484,6 +501,10 @@ contains
     call table%echo_int("N", deck%n, "steps")
     call table%echo_logical("ANGLES_SIGNED", deck%angles_signed, "")
     call table%echo_logical("COMPONENTS", deck%components, "")
+    if (deck%mech%drive_dyad > 0) then
+      call table%echo_int("DRIVE_DYAD", deck%mech%drive_dyad, "")
+      call table%echo_int("DRIVE_PAIR", deck%mech%drive_pair, "")
+    end if
     do d = 1, size(deck%mech%dyads)
       associate (dy => deck%mech%dyads(d), lk => deck%mech%links)
         write (line, dyad_echo_fmt) d, kind_names(dy%geom%kind), lk(2 * d)%id, lk(2 * d + 1)%id, &
@@ -524,7 +545,9 @@ contains
   end subroutine echo_deck
 
   !> RESULTS: per step the crank angle, every pair's magnitude and M1; under them the angles;
-  !> for prismatic pairs two more lines with the normal force and the reaction moment.
+  !> for prismatic pairs two more lines with the normal force and the reaction moment. With a
+  !> linear actuator as driver the last column holds F_drive, stroke, stroke speed and
+  !> acceleration (lines 1-4) instead of M1.
   pure subroutine write_results(self, table, lang, out)
     class(assur_mechanism_t), intent(in) :: self
     type(step_table_t), intent(in) :: table
@@ -533,11 +556,12 @@ contains
     character(len=:), allocatable :: line1, line2, line3, line4
     character(len=field_width) :: name
     character(len=len(self%deck%pair_name)) :: full_name
-    character(len=:), allocatable :: deg, newton, newton_m
+    character(len=:), allocatable :: deg, newton, newton_m, metre
     real(wp) :: mag, ang, nn, mm
     integer :: k, ip, np, pos
-    logical :: any_p, prismatic
+    logical :: any_p, prismatic, drive
 
+    drive = self%deck%mech%drive_dyad > 0
     np = size(self%deck%pair_name)
     any_p = .false.
     do ip = 1, np
@@ -547,10 +571,12 @@ contains
       deg = "град"
       newton = "Н"
       newton_m = "Н*м"
+      metre = "м"
     else
       deg = "deg"
       newton = "N"
       newton_m = "N*m"
+      metre = "m"
     end if
     line1 = adjustr(pad9("PHI1"))
     line2 = repeat(" ", phi_width)
@@ -565,11 +591,19 @@ contains
       line3 = line3//p_label(name, "N", prismatic)
       line4 = line4//p_label(name, "M", prismatic)
     end do
-    call out%put(trim(line1//adjustr(pad12("M1"))))
-    call out%put(trim(line2))
-    if (any_p) then
-      call out%put(line3)
-      call out%put(line4)
+    if (drive) then
+      ! the actuator's force, stroke, stroke speed and acceleration in the last column
+      call out%put(trim(line1//adjustr(pad12("F_DRIVE"))))
+      call out%put(trim(line2//adjustr(pad12("STROKE"))))
+      call out%put(line3//adjustr(pad12("STROKE_V")))
+      call out%put(line4//adjustr(pad12("STROKE_A")))
+    else
+      call out%put(trim(line1//adjustr(pad12("M1"))))
+      call out%put(trim(line2))
+      if (any_p) then
+        call out%put(line3)
+        call out%put(line4)
+      end if
     end if
     line1 = right(deg, phi_width)
     line2 = repeat(" ", phi_width)
@@ -577,8 +611,13 @@ contains
       line1 = line1//right(newton, field_width)
       line2 = line2//right(deg, field_width)
     end do
-    call out%put(trim(line1//right(newton_m, field_width)))
-    call out%put(trim(line2))
+    if (drive) then
+      call out%put(trim(line1//right(newton, field_width)))
+      call out%put(trim(line2//right(metre, field_width)))
+    else
+      call out%put(trim(line1//right(newton_m, field_width)))
+      call out%put(trim(line2))
+    end if
     do k = 1, table%row_count()
       associate (v => table%rows(:, k))
         line1 = fixed_field(v(1), phi_width, 2)
@@ -604,11 +643,18 @@ contains
             line4 = line4//repeat(" ", field_width)
           end if
         end do
-        call out%put(line1//fixed_field(v(pos + 1), field_width, 2))
-        call out%put(line2)
-        if (any_p) then
-          call out%put(trim(line3))
-          call out%put(trim(line4))
+        if (drive) then
+          call out%put(line1//fixed_field(v(pos + 1), field_width, 2))
+          call out%put(line2//fixed_field(v(pos + 2), field_width, stroke_decimals))
+          call out%put(line3//fixed_field(v(pos + 3), field_width, stroke_decimals))
+          call out%put(line4//fixed_field(v(pos + 4), field_width, stroke_decimals))
+        else
+          call out%put(line1//fixed_field(v(pos + 1), field_width, 2))
+          call out%put(line2)
+          if (any_p) then
+            call out%put(trim(line3))
+            call out%put(trim(line4))
+          end if
         end if
       end associate
     end do

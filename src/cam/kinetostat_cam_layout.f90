@@ -4,6 +4,7 @@ module kinetostat_cam_layout
   use kinetostat_kinds, only: wp, deg_to_rad, rad_to_deg
   use kinetostat_deck, only: deck_source_t
   use kinetostat_error, only: error_t
+  use kinetostat_text, only: int_str, number_str
   use kinetostat_vec2, only: magnitude, angle_360_deg
   use kinetostat_noise, only: noise_floor, force_components
   use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_component, &
@@ -114,7 +115,39 @@ contains
     table%residual_label = "MAX EQUILIBRIUM RESIDUAL OF THE FOLLOWER, ALL STEPS"
     table%mismatch_label = "MAX N MISMATCH, CLOSED FORM VS 3X3 LINEAR SOLVE"
     call echo_deck(self%deck, table)
+    call flag_warnings(self%deck, steps, table)
   end subroutine solve
+
+  !> Warnings for the steps whose forces the table shows as 0: a jammed (self-locking)
+  !> follower and a lost contact, each with the number of such steps and the first one.
+  pure subroutine flag_warnings(deck, steps, table)
+    !> Validated deck.
+    type(cam_deck_t), intent(in) :: deck
+    !> The computed steps.
+    type(cam_step_t), intent(in) :: steps(:)
+    !> Where the warnings go.
+    type(step_table_t), intent(inout) :: table
+    integer :: first
+    if (any(steps%jammed)) then
+      first = findloc(steps%jammed, .true., dim=1)
+      call table%add_warning("the follower jams (self-locking: no finite contact force moves it) at "// &
+        steps_text(count(steps%jammed))//", the first at step "//int_str(first)//" (phi = "// &
+        number_str(deck%phi_deg(first))//" deg); the table shows 0 forces there")
+    end if
+    if (any(steps%lost)) then
+      first = findloc(steps%lost, .true., dim=1)
+      call table%add_warning("contact is lost (F2 <= 0 does not hold the follower on the cam) at "// &
+        steps_text(count(steps%lost))//", the first at step "//int_str(first)//" (phi = "// &
+        number_str(deck%phi_deg(first))//" deg); the table shows 0 forces there")
+    end if
+  contains
+    pure function steps_text(n) result(t)
+      integer, intent(in) :: n
+      character(len=:), allocatable :: t
+      t = int_str(n)//" step"
+      if (n /= 1) t = t//"s"
+    end function steps_text
+  end subroutine flag_warnings
 
   !> The CSV row of step k (flags as 0/1; forces 0 when jammed or contact lost).
   pure function cam_csv_values(deck, s, k) result(v)

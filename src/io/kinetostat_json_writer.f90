@@ -40,6 +40,14 @@ contains
     call out%put('  "deck": '//json_string(table%deck)//",")
     if (allocated(table%subtitle)) call out%put('  "deck_title": '//json_string(table%subtitle)//",")
     call out%put('  "row_name": '//json_string(table%row_name)//",")
+    if (allocated(table%overrides)) then
+      line = '  "overrides": ['
+      do i = 1, size(table%overrides)
+        if (i > 1) line = line//", "
+        line = line//json_string(trim(table%overrides(i)))
+      end do
+      call out%put(line//"],")
+    end if
     call out%put('  "input": [')
     do i = 1, table%echo_count
       line = "    "//echo_object(table%echo(i))
@@ -87,11 +95,12 @@ contains
     else
       call out%put('  "selfcheck": null,')
     end if
-    if (allocated(table%warning)) then
-      call out%put('  "warnings": ['//json_string(table%warning)//"]")
-    else
-      call out%put('  "warnings": []')
-    end if
+    line = '  "warnings": ['
+    do i = 1, table%warning_count()
+      if (i > 1) line = line//", "
+      line = line//json_string(table%warnings(i)%text)
+    end do
+    call out%put(line//"]")
     call out%put("}")
   end subroutine write_json
 
@@ -125,6 +134,7 @@ contains
     case default
       text = '{"text": '//json_string(e%name)//"}"
     end select
+    if (e%overridden) text = text(1:len(text) - 1)//', "overridden": true}'
   end function echo_object
 
   !> A JSON string literal: quotes, backslashes and control characters escaped; UTF-8 kept.

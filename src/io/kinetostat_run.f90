@@ -16,8 +16,10 @@ module kinetostat_run
   use kinetostat_svg_writer, only: write_svg
   use kinetostat_svg_mechanism, only: write_svg_mechanism
   use kinetostat_sketch, only: sketch_t
+  use kinetostat_drawing, only: drawing_t, drawing_from_sketch
   use kinetostat_error, only: exit_usage
   use kinetostat_labels, only: lang_en
+  use kinetostat_override, only: override_t, mark_overrides
   implicit none
   private
   public :: run_options_t, run_mechanism, guard_finite
@@ -40,6 +42,8 @@ module kinetostat_run
     integer :: format = format_table
     !> Language of the legacy table (lang_en, lang_ru).
     integer :: lang = lang_en
+    !> The --set overrides (already written into the deck; marked in the outputs).
+    type(override_t), allocatable :: overrides(:)
     !> CSV and JSON add the kinematics columns (positions, link angles and speeds,
     !> accelerations of the centres of mass, force components).
     logical :: kinematics = .false.
@@ -97,6 +101,9 @@ contains
     if (allocated(error)) return
     call guard_finite(table, error)
     if (allocated(error)) return
+    if (allocated(options%overrides)) then
+      if (size(options%overrides) > 0) call mark_overrides(table, options%overrides)
+    end if
     select case (options%format)
     case (format_csv)
       call write_csv(table, out, options%kinematics)
@@ -122,7 +129,8 @@ contains
     type(run_options_t), intent(in) :: options
     type(text_buffer_t), intent(inout) :: out
     type(error_t), allocatable, intent(out) :: error
-    type(sketch_t) :: drawing
+    type(sketch_t) :: topo
+    type(drawing_t) :: drawing
     integer :: k
     k = options%at_step
     if (k > table%row_count()) then
@@ -130,7 +138,15 @@ contains
         int_str(table%row_count())//" "//table%row_name//"s (1.."//int_str(table%row_count())//")")
       return
     end if
-    call mech%sketch(table, k, drawing, error)
+    call mech%sketch(topo)
+    if (.not. topo%available) then
+      call fatal_error(error, exit_usage, table%deck//": &"//table%mechanism//": --at: this mechanism is not "// &
+        "drawn (only linkages are); --format svg without --at shows its forces")
+      return
+    end if
+    call drawing_from_sketch(topo, table, k, drawing, error)
+    if (allocated(error)) return
+    call mech%force_plan(table, k, drawing, error)
     if (allocated(error)) return
     call write_svg_mechanism(mech%title(options%lang), table, k, drawing, out)
   end subroutine write_at_step

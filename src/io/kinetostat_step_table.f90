@@ -6,7 +6,7 @@ module kinetostat_step_table
   use kinetostat_kinds, only: wp, rad_to_deg
   implicit none
   private
-  public :: step_table_t, column_t, echo_record_t
+  public :: step_table_t, column_t, echo_record_t, remark_t
   public :: col_input_angle, col_force, col_force_angle, col_component, col_moment, col_length, &
     col_flag, col_count, col_ratio, col_other, column_kind_names
   public :: echo_real_kind, echo_int_kind, echo_logical_kind, echo_array_kind, echo_text_kind, &
@@ -70,6 +70,12 @@ module kinetostat_step_table
     real(wp) :: frame_angle = 0.0_wp
   end type column_t
 
+  !> One remark of a run for the user (a warning on stderr, in JSON).
+  type :: remark_t
+    !> The text, without "kinetostat: warning: <deck>: ".
+    character(len=:), allocatable :: text
+  end type remark_t
+
   !> One INPUT DATA echo record.
   type :: echo_record_t
     !> echo_*_kind.
@@ -86,6 +92,8 @@ module kinetostat_step_table
     logical :: logical_value = .false.
     !> Text value (echo_text_kind).
     character(len=:), allocatable :: text
+    !> True when the value came from --set (marked in the INPUT DATA echo).
+    logical :: overridden = .false.
   end type echo_record_t
 
   !> All results of a run.
@@ -120,8 +128,10 @@ module kinetostat_step_table
     character(len=:), allocatable :: residual_label
     !> Footer label of the mismatch line (default: driver vs power balance).
     character(len=:), allocatable :: mismatch_label
-    !> A remark for the user (stderr), if any.
-    character(len=:), allocatable :: warning
+    !> The run's warnings (stderr unless --quiet, exit 4 with --strict), in order.
+    type(remark_t), allocatable :: warnings(:)
+    !> The run's overrides as given ("l_ab=0.12"), blank-padded; not allocated without any.
+    character(len=:), allocatable :: overrides(:)
   contains
     procedure :: add_column
     procedure :: put_point
@@ -133,6 +143,8 @@ module kinetostat_step_table
     procedure :: column_index
     procedure :: allocate_rows
     procedure :: row_count
+    procedure :: add_warning
+    procedure :: warning_count
     procedure :: is_whole
     procedure :: set_selfcheck
     procedure :: echo_real
@@ -340,6 +352,22 @@ contains
     row_count = 0
     if (allocated(self%rows)) row_count = size(self%rows, 2)
   end function row_count
+
+  !> Append a warning.
+  pure subroutine add_warning(self, text)
+    class(step_table_t), intent(inout) :: self
+    !> The warning (one line, without the "kinetostat: warning: <deck>: " prefix).
+    character(*), intent(in) :: text
+    if (.not. allocated(self%warnings)) allocate (self%warnings(0))
+    self%warnings = [self%warnings, remark_t(text)]
+  end subroutine add_warning
+
+  !> Number of warnings of the run.
+  pure integer function warning_count(self)
+    class(step_table_t), intent(in) :: self
+    warning_count = 0
+    if (allocated(self%warnings)) warning_count = size(self%warnings)
+  end function warning_count
 
   pure subroutine push_echo(self, record)
     class(step_table_t), intent(inout) :: self

@@ -4,7 +4,8 @@
 !> every force of the sketch (pair forces, loads, weights, inertia forces, one force scale),
 !> each labelled with its value ("F21 = 2716 N"), moments as arcs; a length scale bar, a
 !> force scale bar and a list of the forces. The drawing comes from the mechanism's
-!> sketch (kinetostat_sketch); this module only draws it.
+!> drawing (kinetostat_drawing: the topology of kinetostat_sketch, positions from the
+!> kinematics columns, forces from the mechanism's force_plan); this module only draws it.
 module kinetostat_svg_mechanism
   use kinetostat_kinds, only: wp, pi, rad_to_deg, version_string
   use kinetostat_text, only: int_str
@@ -14,7 +15,7 @@ module kinetostat_svg_mechanism
   use kinetostat_svg, only: svg_open, svg_close, svg_line, svg_path, svg_polyline_d, svg_circle, svg_rect, &
     svg_text, svg_arrow, svg_polygon, coord
   use kinetostat_svg_writer, only: nice_step, place_label
-  use kinetostat_sketch, only: sketch_t, point_pivot, point_com, point_plain, body_bar, body_block, force_pair, force_load, &
+  use kinetostat_drawing, only: drawing_t, point_pivot, point_com, point_plain, body_bar, body_block, force_pair, force_load, &
     force_gravity, force_inertia, force_kind_names
   implicit none
   private
@@ -44,7 +45,7 @@ contains
     !> Row drawn (1-based).
     integer, intent(in) :: k
     !> The mechanism's sketch at that row.
-    type(sketch_t), intent(in) :: drawing
+    type(drawing_t), intent(in) :: drawing
     !> Where the lines go.
     type(text_buffer_t), intent(inout) :: out
     real(wp), allocatable :: px(:), py(:), lx(:), ly(:), lw(:), obst_x(:), obst_y(:)
@@ -282,7 +283,7 @@ contains
   !> Guide `i` of the sketch: a line with hatching on its right side.
   pure subroutine put_guide(out, drawing, i, ox, oy, len_scale)
     type(text_buffer_t), intent(inout) :: out
-    type(sketch_t), intent(in) :: drawing
+    type(drawing_t), intent(in) :: drawing
     integer, intent(in) :: i
     real(wp), intent(in) :: ox, oy, len_scale
     real(wp) :: a(2), b(2), u(2), nrm(2), length, s
@@ -330,7 +331,7 @@ contains
   !> showing its sense, labelled with its value.
   pure subroutine put_moment(out, drawing, i, ox, oy, len_scale)
     type(text_buffer_t), intent(inout) :: out
-    type(sketch_t), intent(in) :: drawing
+    type(drawing_t), intent(in) :: drawing
     integer, intent(in) :: i
     real(wp), intent(in) :: ox, oy, len_scale
     real(wp), parameter :: r = 5.0_wp
@@ -361,7 +362,7 @@ contains
   !> position frame) in four columns.
   pure subroutine put_force_list(out, drawing, x, y)
     type(text_buffer_t), intent(inout) :: out
-    type(sketch_t), intent(in) :: drawing
+    type(drawing_t), intent(in) :: drawing
     real(wp), intent(in) :: x, y
     character(len=:), allocatable :: text
     real(wp) :: a

@@ -1,7 +1,7 @@
 !> PR 3050 as a mechanism of the run pipeline: deck -> every rocker step -> step table, and
 !> the legacy table layout (one E-format line per step, then the prismatic-pair block).
 module kinetostat_pr3050_layout
-  use kinetostat_kinds, only: wp, pi, deg_to_rad
+  use kinetostat_kinds, only: wp, deg_to_rad
   use kinetostat_deck, only: deck_source_t
   use kinetostat_error, only: error_t
   use kinetostat_text, only: int_str, real_str
@@ -14,10 +14,11 @@ module kinetostat_pr3050_layout
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_table_writer, only: put_heading
   use kinetostat_mechanism, only: mechanism_t
+  use kinetostat_sketch, only: sketch_t
   use kinetostat_pr3050, only: pr3050_params_t, pr3050_position_t, pr3050_step_t, pr3050_step, &
     pr3050_check_position, pr3050_position
   use kinetostat_pr3050_deck, only: pr3050_deck_t, read_pr3050_deck, write_pr3050_template
-  use kinetostat_sketch, only: sketch_t, point_joint, point_pivot, point_com, point_plain, force_load
+  use kinetostat_drawing, only: drawing_t, force_load
   implicit none
   private
   public :: pr3050_mechanism_t, new_pr3050, pr3050_solve, pr3050_csv_columns, pr3050_csv_values
@@ -75,6 +76,7 @@ module kinetostat_pr3050_layout
     procedure :: write_results
     procedure :: write_template
     procedure :: sketch
+    procedure :: force_plan
   end type pr3050_mechanism_t
 
 contains
@@ -101,6 +103,21 @@ contains
     type(text_buffer_t), intent(inout) :: out
     call write_pr3050_template(out)
   end subroutine write_template
+
+  !> The topology for a drawing: cylinder 1 from A along the axis (through S1), rod 2 from B
+  !> (through S2) sliding in it, rocker 3 C-B with its centre of mass S3; pivots C, A; the
+  !> rod's guide is the cylinder's axis (phi1).
+  pure subroutine sketch(self, out)
+    class(pr3050_mechanism_t), intent(in) :: self
+    type(sketch_t), intent(out) :: out
+    call out%add_link("1", [character(len=2) :: "A", "S1"])
+    call out%add_link("2", [character(len=2) :: "B", "S2"])
+    call out%add_link("3", [character(len=2) :: "C", "B", "S3", "C"])
+    call out%add_pivot("C")
+    call out%add_pivot("A")
+    call out%add_guide("A", 0.0_wp, "1")
+    out%down = [cos(self%deck%p%gamma), sin(self%deck%p%gamma)]
+  end subroutine sketch
 
   !> All steps of a validated deck; a geometry error (exit 3) names the step and rocker angle.
   subroutine pr3050_solve(deck, steps, error)
@@ -152,6 +169,7 @@ contains
     type(pr3050_step_t), allocatable :: steps(:)
     real(wp) :: floor, n21, m21
     integer :: k, nc
+    character(len=:), allocatable :: warning
     call pr3050_solve(self%deck, steps, error)
     if (allocated(error)) then
       error%message = table%deck//": &pr3050: "//error%message
@@ -182,7 +200,8 @@ contains
       call put_kinematics(table, k, self%deck%p, steps(k))
     end do
     call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "F2")
-    call dead_position_between_steps(self%deck, table%warning)
+    call dead_position_between_steps(self%deck, warning)
+    if (allocated(warning)) call table%add_warning(warning)
     call echo_deck(self%deck, table)
   end subroutine solve
 
@@ -320,48 +339,33 @@ contains
     angle = real(k - 1, wp) * deck%dphi3
   end function phi3rel
 
-  !> The sketch at row `k` (--format svg --at K): positions from the kinematics columns,
-  !> the frame turned so that gravity (angle gamma) points down the sheet; the rocker 3 as
-  !> the plate C-B-S3, the cylinder 1 from A past S1 and the rod 2 from B past S2 (each
-  !> twice its centre-of-mass distance long); the pair forces, the driving force F2 on the
-  !> rod (along A->B, at the piston end), the weights, the inertia forces and moments.
-  pure subroutine sketch(self, table, k, drawing, error)
+  !> The forces of row `k` on its drawing (--format svg --at K): the pair forces at their
+  !> joints, the driving force F2 on the rod (along A->B, at S2), the weights (angle gamma),
+  !> the inertia forces and moments of links 1, 2 and 3.
+  pure subroutine force_plan(self, table, k, drawing, error)
     class(pr3050_mechanism_t), intent(in) :: self
     type(step_table_t), intent(in) :: table
     integer, intent(in) :: k
-    type(sketch_t), intent(out) :: drawing
+    type(drawing_t), intent(inout) :: drawing
     type(error_t), allocatable, intent(out) :: error
-    character(len=2), parameter :: points(*) = [character(len=2) :: "C", "A", "B", "S1", "S2", "S3"]
-    integer, parameter :: kinds(*) = [point_pivot, point_pivot, point_joint, point_com, point_com, point_com]
     character(len=3), parameter :: pairs(*) = [character(len=3) :: "F14", "F34", "F32"]
     character(len=1), parameter :: pair_points(*) = ["A", "C", "B"]
     real(wp) :: gravity(2), a(2), b(2), u(2)
     integer :: i
     associate (p => self%deck%p)
-      drawing%view_angle = -0.5_wp * pi - p%gamma
-      drawing%view_note = "gravity down the sheet"
-      do i = 1, size(points)
-        call drawing%point_from_table(table, k, trim(points(i)), kinds(i), error)
-        if (allocated(error)) return
-      end do
-      a = drawing%at("A")
-      b = drawing%at("B")
-      u = (b - a) / max(hypot(b(1) - a(1), b(2) - a(2)), tiny(1.0_wp))
-      call drawing%add_point("K1", a + 2.0_wp * (drawing%at("S1") - a), point_plain)
-      call drawing%add_point("K2", b + 2.0_wp * (drawing%at("S2") - b), point_plain)
-      call drawing%add_bar("3", [character(len=2) :: "C", "B", "S3"])
-      call drawing%add_bar("1", [character(len=2) :: "A", "K1"])
-      call drawing%add_bar("2", [character(len=2) :: "B", "K2"])
       do i = 1, size(pairs)
         call drawing%pair_from_table(table, k, trim(pairs(i)), pair_points(i), error)
         if (allocated(error)) return
       end do
-      call drawing%add_force("F2", force_load, drawing%at("K2"), table%rows(table%column_index("F2"), k) * u)
+      a = drawing%at("A")
+      b = drawing%at("B")
+      u = (b - a) / max(norm2(b - a), tiny(1.0_wp))
+      call drawing%add_force("F2", force_load, drawing%at("S2"), table%rows(table%column_index("F2"), k) * u)
       gravity = p%g * [cos(p%gamma), sin(p%gamma)]
       call drawing%add_link_loads(table, k, "1", "S1", "S1", p%m1, p%j1, gravity)
       call drawing%add_link_loads(table, k, "2", "S2", "S2", p%m2, p%j2, gravity)
       call drawing%add_link_loads(table, k, "3", "S3", "S3", p%m3, p%j3, gravity)
     end associate
-  end subroutine sketch
+  end subroutine force_plan
 
 end module kinetostat_pr3050_layout

@@ -1,7 +1,7 @@
 !> PR 3207 as a mechanism of the run pipeline: deck -> every crank step -> step table, and
 !> the legacy table layout of the 1991 printout (two lines per step).
 module kinetostat_pr3207_layout
-  use kinetostat_kinds, only: wp, pi, deg_to_rad, rad_to_deg
+  use kinetostat_kinds, only: wp, deg_to_rad, rad_to_deg
   use kinetostat_deck, only: deck_source_t
   use kinetostat_error, only: error_t
   use kinetostat_noise, only: noise_floor, force_columns, force_components, angles_0_360
@@ -10,10 +10,11 @@ module kinetostat_pr3207_layout
   use kinetostat_labels, only: lang_ru
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_mechanism, only: mechanism_t
+  use kinetostat_sketch, only: sketch_t
   use kinetostat_table_writer, only: put_two_line_step
   use kinetostat_pr3207, only: pr3207_params_t, pr3207_position_t, pr3207_step_t, pr3207_step, pr3207_position
   use kinetostat_pr3207_deck, only: pr3207_deck_t, read_pr3207_deck, write_pr3207_template
-  use kinetostat_sketch, only: sketch_t, point_joint, point_pivot, point_com, point_plain, force_load
+  use kinetostat_drawing, only: drawing_t, force_load
   implicit none
   private
   public :: pr3207_mechanism_t, new_pr3207, pr3207_solve, pr3207_csv_columns, pr3207_csv_values
@@ -52,6 +53,7 @@ module kinetostat_pr3207_layout
     procedure :: write_results
     procedure :: write_template
     procedure :: sketch
+    procedure :: force_plan
   end type pr3207_mechanism_t
 
 contains
@@ -78,6 +80,24 @@ contains
     type(text_buffer_t), intent(inout) :: out
     call write_pr3207_template(out)
   end subroutine write_template
+
+  !> The topology for a drawing: crank A-B, block 2 at B sliding along the lever C-D, block 4
+  !> at D sliding along x in the ram's slot, the ram from its guide (x = 0, along y) to D;
+  !> pivots A, C; gravity along +x.
+  pure subroutine sketch(self, out)
+    class(pr3207_mechanism_t), intent(in) :: self
+    type(sketch_t), intent(out) :: out
+    call out%add_link("1", [character(len=2) :: "A", "B"])
+    call out%add_link("2", ["B"], 0.0_wp, "3")
+    call out%add_link("3", [character(len=2) :: "C", "D"])
+    call out%add_link("4", ["D"], 0.0_wp, "")
+    call out%add_link("5", [character(len=2) :: "S5", "D"])
+    call out%add_pivot("A")
+    call out%add_pivot("C")
+    call out%add_guide("S5", 90.0_wp, "")
+    call out%add_guide("D", 0.0_wp, "5")
+    out%down = [1.0_wp, 0.0_wp]
+  end subroutine sketch
 
   !> All steps of a validated deck.
   pure subroutine pr3207_solve(deck, steps)
@@ -131,9 +151,10 @@ contains
   end function pr3207_csv_values
 
   !> The kinematics columns of step `k` (frame: origin A, x from A to C): joints A, B, C, D
-  !> and centres of mass S1 (= A), S3; links 1 (crank), 2 (block, turns with the lever) and
-  !> 3 (lever); accelerations of S1, S3 and of the ram 5 (translating along y); components of
-  !> the pair forces in the same frame. Blocks 4 and the ram 5 translate (no angle columns).
+  !> and centres of mass S1 (= A), S3, S5 (the ram's, taken on the line x = 0 through A, as
+  !> the generic twin deck does: only its travel y5 = y_D is defined); links 1 (crank), 2
+  !> (block, turns with the lever) and 3 (lever); accelerations of S1, S3, S5; components of
+  !> the pair forces in the same frame. Block 4 and the ram 5 translate (no angle columns).
   pure subroutine put_kinematics(table, k, p, s)
     !> The step table (columns appended on first use).
     type(step_table_t), intent(inout) :: table
@@ -154,6 +175,7 @@ contains
     call table%put_point(k, "D", pos%d)
     call table%put_point(k, "S1", [0.0_wp, 0.0_wp])
     call table%put_point(k, "S3", pos%s3)
+    call table%put_point(k, "S5", [0.0_wp, pos%y5])
     call table%put_link(k, "1", s%phi1, p%omega1, 0.0_wp)
     call table%put_link(k, "2", pos%phi3, pos%u31 * p%omega1, pos%eps31 * w2)
     call table%put_link(k, "3", pos%phi3, pos%u31 * p%omega1, pos%eps31 * w2)
@@ -215,57 +237,31 @@ contains
     end do
   end subroutine write_results
 
-  !> The sketch at row `k` (--format svg --at K): positions from the kinematics columns,
-  !> the frame turned so that x (gravity) points down the sheet; blocks 2 (on the lever)
-  !> and 4 (in the ram's slot, along x); the ram 5 as its slot over the travel of D and a
-  !> block on a frame guide along y; every pair force, the cutting force F5c, the weights,
-  !> the inertia forces and moment, and M1.
-  pure subroutine sketch(self, table, k, drawing, error)
+  !> The forces of row `k` on its drawing (--format svg --at K): the pair forces at their
+  !> joints (F56 at the ram's S5), the cutting force F5c on the ram along y, the weights and
+  !> inertia forces of links 1, 3 and 5, the inertia moment of the lever, and M1.
+  pure subroutine force_plan(self, table, k, drawing, error)
     class(pr3207_mechanism_t), intent(in) :: self
     type(step_table_t), intent(in) :: table
     integer, intent(in) :: k
-    type(sketch_t), intent(out) :: drawing
+    type(drawing_t), intent(inout) :: drawing
     type(error_t), allocatable, intent(out) :: error
-    character(len=2), parameter :: points(*) = [character(len=2) :: "A", "B", "C", "D", "S3"]
-    integer, parameter :: kinds(*) = [point_pivot, point_joint, point_pivot, point_joint, point_com]
     character(len=3), parameter :: pairs(*) = [character(len=3) :: "F16", "F21", "F36", "F34", "F56"]
-    character(len=2), parameter :: pair_points(*) = [character(len=2) :: "A", "B", "C", "D", "R5"]
-    real(wp) :: gravity(2), margin, x_ram, y_lo, y_hi, d(2)
-    integer :: i, cx, cy
+    character(len=2), parameter :: pair_points(*) = [character(len=2) :: "A", "B", "C", "D", "S5"]
+    real(wp) :: gravity(2)
+    integer :: i
     associate (p => self%deck%p)
-      drawing%view_angle = -0.5_wp * pi
-      drawing%view_note = "x (gravity) down the sheet"
-      do i = 1, size(points)
-        call drawing%point_from_table(table, k, trim(points(i)), kinds(i), error)
-        if (allocated(error)) return
-      end do
-      cx = table%column_index("x_D")
-      cy = table%column_index("y_D")
-      d = drawing%at("D")
-      margin = 0.08_wp * p%l_cd
-      x_ram = minval(table%rows(cx, :)) - margin
-      y_lo = minval(table%rows(cy, :))
-      y_hi = maxval(table%rows(cy, :))
-      call drawing%add_point("R5", [x_ram, d(2)], point_plain)
-      call drawing%add_point("R", [maxval(table%rows(cx, :)) + margin, d(2)], point_plain)
-      call drawing%add_bar("1", [character(len=1) :: "A", "B"])
-      call drawing%add_bar("3", [character(len=1) :: "C", "D"])
-      call drawing%add_bar("5", [character(len=2) :: "R5", "R"])
-      call drawing%add_block("2", "B", table%rows(table%column_index("phi3"), k) * deg_to_rad)
-      call drawing%add_block("4", "D", 0.0_wp)
-      call drawing%add_block("5", "R5", 0.5_wp * pi)
-      call drawing%add_guide([x_ram, 0.5_wp * (y_lo + y_hi)], 0.5_wp * pi, 0.5_wp * (y_hi - y_lo) + 2.0_wp * margin)
       do i = 1, size(pairs)
         call drawing%pair_from_table(table, k, trim(pairs(i)), trim(pair_points(i)), error)
         if (allocated(error)) return
       end do
-      call drawing%add_force("F5c", force_load, drawing%at("R5"), [0.0_wp, self%deck%f5c(k)])
+      call drawing%add_force("F5c", force_load, drawing%at("S5"), [0.0_wp, self%deck%f5c(k)])
       gravity = [p%g, 0.0_wp]
-      call drawing%add_link_loads(table, k, "1", "A", "S1", p%m1, 0.0_wp, gravity)
+      call drawing%add_link_loads(table, k, "1", "S1", "S1", p%m1, 0.0_wp, gravity)
       call drawing%add_link_loads(table, k, "3", "S3", "S3", p%m3, p%j3, gravity)
-      call drawing%add_link_loads(table, k, "5", "R5", "S5", p%m5, 0.0_wp, gravity)
+      call drawing%add_link_loads(table, k, "5", "S5", "S5", p%m5, 0.0_wp, gravity)
       call drawing%add_moment("M1", force_load, drawing%at("A"), table%rows(table%column_index("M1"), k))
     end associate
-  end subroutine sketch
+  end subroutine force_plan
 
 end module kinetostat_pr3207_layout

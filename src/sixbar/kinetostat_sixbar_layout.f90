@@ -12,11 +12,12 @@ module kinetostat_sixbar_layout
   use kinetostat_labels, only: lang_ru
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_mechanism, only: mechanism_t
+  use kinetostat_sketch, only: sketch_t
   use kinetostat_table_writer, only: put_heading, put_two_line_step
   use kinetostat_sixbar, only: sixbar_params_t, sixbar_step_t, sixbar_step, sixbar_ok, sixbar_open1, &
-    sixbar_dead1, sixbar_open2, sixbar_dead2, sixbar_frame2_to_frame1
+    sixbar_dead1, sixbar_open2, sixbar_dead2, sixbar_frame2_to_frame1, sixbar_down1
   use kinetostat_sixbar_deck, only: sixbar_deck_t, read_sixbar_deck, write_sixbar_template
-  use kinetostat_sketch, only: sketch_t, point_joint, point_pivot, point_com, force_load
+  use kinetostat_drawing, only: drawing_t, force_load
   implicit none
   private
   public :: sixbar_mechanism_t, new_sixbar, sixbar_solve, sixbar_csv_columns, sixbar_csv_values
@@ -74,6 +75,7 @@ module kinetostat_sixbar_layout
     procedure :: write_results
     procedure :: write_template
     procedure :: sketch
+    procedure :: force_plan
   end type sixbar_mechanism_t
 
 contains
@@ -101,6 +103,24 @@ contains
     type(text_buffer_t), intent(inout) :: out
     call write_sixbar_template(out)
   end subroutine write_template
+
+  !> The topology for a drawing (frame 1): crank A-B, rod B-C, rocker C-D-E, rod E-H, slider 5
+  !> at H on the guide along x2 (at beta - 180 deg); pivots A, D; gravity -y0.
+  pure subroutine sketch(self, out)
+    class(sixbar_mechanism_t), intent(in) :: self
+    type(sketch_t), intent(out) :: out
+    real(wp) :: x2
+    x2 = atan2(self%deck%p%a, self%deck%p%b) * rad_to_deg - 180.0_wp
+    call out%add_link("1", ["A", "B"])
+    call out%add_link("2", ["B", "C"])
+    call out%add_link("3", ["C", "D", "E"])
+    call out%add_link("4", ["E", "H"])
+    call out%add_link("5", ["H"], x2, "")
+    call out%add_pivot("A")
+    call out%add_pivot("D")
+    call out%add_guide("H", x2, "")
+    out%down = sixbar_down1(self%deck%p)
+  end subroutine sketch
 
   !> All steps of a validated deck; a step that cannot be assembled (or is a dead position)
   !> is a geometry error naming the step number and the crank angle.
@@ -323,53 +343,35 @@ contains
     end do
   end subroutine write_results_ru
 
-  !> The sketch at row `k` (--format svg --at K): positions from the kinematics columns
-  !> (frame 1), turned into frame 0 on the sheet (y0 up, gravity down); the slider's guide
-  !> along x2 over its travel; every pair force, the load F5 along x2, the weights, the
-  !> inertia forces and moments, and M1.
-  pure subroutine sketch(self, table, k, drawing, error)
+  !> The forces of row `k` on its drawing (--format svg --at K): every pair force at its
+  !> joint (F56, the guide's normal force, at H), the load F5 along x2, the weights (-y0),
+  !> inertia forces and moments of links 1..5, and M1.
+  pure subroutine force_plan(self, table, k, drawing, error)
     class(sixbar_mechanism_t), intent(in) :: self
     type(step_table_t), intent(in) :: table
     integer, intent(in) :: k
-    type(sketch_t), intent(out) :: drawing
+    type(drawing_t), intent(inout) :: drawing
     type(error_t), allocatable, intent(out) :: error
-    character(len=3), parameter :: joints(*) = [character(len=3) :: "A", "B", "C", "D", "E", "H", "S2", "S4"]
-    integer, parameter :: kinds(*) = [point_pivot, point_joint, point_joint, point_pivot, point_joint, point_joint, &
-      point_com, point_com]
     character(len=3), parameter :: pairs(*) = [character(len=3) :: "F21", "F32", "F43", "F45", "F36", "F16", "F56"]
     character(len=1), parameter :: pair_points(*) = ["B", "C", "E", "H", "D", "A", "H"]
-    real(wp) :: frame2, gravity(2), view
+    real(wp) :: x2, gravity(2)
     integer :: i
     associate (p => self%deck%p)
-      view = atan2(p%b, p%a)
-      drawing%view_angle = view
-      drawing%view_note = "drawn in frame 0 (y0 up), positions in frame 1 (x1 along AD)"
-      do i = 1, size(joints)
-        call drawing%point_from_table(table, k, trim(joints(i)), kinds(i), error)
-        if (allocated(error)) return
-      end do
-      ! x2 in frame 1, rad
-      frame2 = atan2(p%a, p%b) - pi
-      call drawing%add_bar("1", [character(len=1) :: "A", "B"])
-      call drawing%add_bar("2", [character(len=1) :: "B", "C"])
-      call drawing%add_bar("3", [character(len=1) :: "C", "D", "E"])
-      call drawing%add_bar("4", [character(len=1) :: "E", "H"])
-      call drawing%add_block("5", "H", frame2)
-      call drawing%add_guide_over_rows(table, "H", frame2, 0.3_wp * p%l1)
       do i = 1, size(pairs)
         call drawing%pair_from_table(table, k, trim(pairs(i)), pair_points(i), error)
         if (allocated(error)) return
       end do
-      call drawing%add_force("F5", force_load, drawing%at("H"), self%deck%f5(k) * [cos(frame2), sin(frame2)])
-      ! gravity: -y0, in frame 1
-      gravity = p%g * [-sin(view), -cos(view)]
-      call drawing%add_link_loads(table, k, "1", "A", "S1", p%m1, p%j1, gravity)
+      ! x2 in frame 1, rad
+      x2 = atan2(p%a, p%b) - pi
+      call drawing%add_force("F5", force_load, drawing%at("H"), self%deck%f5(k) * [cos(x2), sin(x2)])
+      gravity = p%g * sixbar_down1(p)
+      call drawing%add_link_loads(table, k, "1", "S1", "S1", p%m1, p%j1, gravity)
       call drawing%add_link_loads(table, k, "2", "S2", "S2", p%m2, p%j2, gravity)
-      call drawing%add_link_loads(table, k, "3", "D", "S3", p%m3, p%j3, gravity)
+      call drawing%add_link_loads(table, k, "3", "S3", "S3", p%m3, p%j3, gravity)
       call drawing%add_link_loads(table, k, "4", "S4", "S4", p%m4, p%j4, gravity)
-      call drawing%add_link_loads(table, k, "5", "H", "S5", p%m5, 0.0_wp, gravity)
+      call drawing%add_link_loads(table, k, "5", "S5", "S5", p%m5, 0.0_wp, gravity)
       call drawing%add_moment("M1", force_load, drawing%at("A"), table%rows(table%column_index("M1"), k))
     end associate
-  end subroutine sketch
+  end subroutine force_plan
 
 end module kinetostat_sixbar_layout

@@ -64,7 +64,7 @@ grep -q '>stage 2</text>' "$cli_tmp/gears_reducer.svg" && ! grep -q 'class="hodo
 # --at K: every linkage deck drawn at one step (xmllint, self-contained, PNG of A4 size, not
 # blank), and the forces listed on the sheet carry the CSV's magnitudes (to the 3-4 digits
 # shown: relative 0.5 %, or 0.5 N at 100 N and above)
-for spec in pr3207:2 pr3050:4 sixbar:2 sixbar_example:1 assur_pr3207:2 assur_sixbar:2 assur_slider_crank:3; do
+for spec in pr3207:2 pr3050:4 sixbar:2 sixbar_example:1 assur_pr3207:2 assur_sixbar:2 assur_slider_crank:3 assur_pr3050:3; do
   name=${spec%%:*}; k=${spec##*:}
   run_ks "data/$name.nml" --format svg --at "$k"
   if [ "$rc" -ne 0 ]; then fail "svg-at-runs-$name" "rc=$rc: $(head -c 300 "$err")"; continue; fi
