@@ -7,9 +7,9 @@
 !> are read as reals and converted by `require_whole` or an equivalent whole-number check.
 module kinetostat_assur_deck
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
-  use kinetostat_kinds, only: wp, g_default, deg_to_rad
+  use kinetostat_kinds, only: wp, g_default, deg_to_rad, rad_to_deg
   use kinetostat_error, only: error_t
-  use kinetostat_text, only: real_str, int_str, number_str
+  use kinetostat_text, only: real_str, int_str, number_str, lower
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, unset_bits, max_deck_array, &
     deck_source_t, namelist_failure, deck_error, is_set, require_set, require_positive, &
@@ -19,7 +19,8 @@ module kinetostat_assur_deck
   use kinetostat_assur_kinematics, only: dyad_geometry_t, kind_names, kind_has_mode, &
     kind_rrr, kind_rrp, kind_rpr, kind_prp, kind_rpp
   use kinetostat_assur_statics, only: pair_is_prismatic
-  use kinetostat_assur, only: assur_mech_t, assur_link_t, assur_dyad_t, assur_force_t, link_a, link_b
+  use kinetostat_assur, only: assur_mech_t, assur_link_t, assur_dyad_t, assur_force_t, link_a, link_b, &
+    output_pair_of, assur_extreme
   implicit none
   private
   public :: assur_deck_t, read_assur_deck, write_assur_template, assur_window
@@ -118,6 +119,10 @@ module kinetostat_assur_deck
     real(wp) :: dphi = 0.0_wp
     !> Number of steps.
     integer :: n = 0
+    !> Crank angles given as a list phi1(:), deg (not allocated: phi_start + k*dphi).
+    real(wp), allocatable :: phi_list(:)
+    !> Whether phi_start was computed as the extreme position of the output link.
+    logical :: start_extreme = .false.
     !> Direction of gravity, deg.
     real(wp) :: gravity_angle = -90.0_wp
     !> Constant crank speed (when not prescribed per step), rad/s.
@@ -218,6 +223,11 @@ contains
     real(wp) :: frame_id, crank_id, n
     !> Linear actuator as driver: dyad number and pair 1..3 (whole numbers, read as reals).
     real(wp) :: drive_dyad, drive_pair
+    !> Output link's id (a whole number read as a real); crank angles as a list, deg.
+    real(wp) :: output_link
+    real(wp), allocatable :: phi1(:)
+    !> Where the steps start: '' (phi_start) or 'extreme' (of the output link).
+    character(len=16) :: start_at
     !> frame_id and crank_id as integers.
     integer :: frame_no, crank_no, nd, nf, nm, n_omega, n_eps, n_values, ios, k, d, i
     real(wp) :: crank_at(2), crank_m, crank_j, crank_s(2), omega1, g, gravity_angle, phi_start, dphi
@@ -233,19 +243,20 @@ contains
     character(len=:), allocatable :: name
     namelist /assur/ title, frame_id, crank_id, crank_at, crank_m, crank_j, crank_s, omega1, &
       omega1_step, eps1_step, g, gravity_angle, phi_start, dphi, n, dyad, force, moment, &
-      step_values, angles_signed, components, drive_dyad, drive_pair
+      step_values, angles_signed, components, drive_dyad, drive_pair, output_link, phi1, start_at
 
     ctx%path = source%path
     ctx%group = group_name
     title = ""
     frame_id = 0.0_wp; crank_id = 1.0_wp; n = unset_real
     drive_dyad = unset_real; drive_pair = unset_real
+    output_link = unset_real; start_at = ""
     crank_at = unset_real; crank_m = unset_real; crank_j = unset_real; crank_s = unset_real
     omega1 = unset_real; g = unset_real; gravity_angle = unset_real
     phi_start = unset_real; dphi = unset_real
     angles_signed = .false.; components = .true.
     allocate (omega1_step(max_deck_array), eps1_step(max_deck_array), step_values(max_deck_array), &
-              source=unset_real)
+              phi1(max_deck_array), source=unset_real)
 
     read (source%lines, nml=assur, iostat=ios, iomsg=msg)
     if (ios /= 0) then
@@ -269,9 +280,7 @@ contains
     call require_nonnegative(ctx, "g", g, error); if (allocated(error)) return
     gravity_angle = optional_default(gravity_angle, -90.0_wp)
     call require_set(ctx, "gravity_angle", gravity_angle, error); if (allocated(error)) return
-    phi_start = optional_default(phi_start, 0.0_wp)
-    call require_set(ctx, "phi_start", phi_start, error); if (allocated(error)) return
-    call steps_over_turn(ctx, dphi, n, deck%n, error); if (allocated(error)) return
+    call read_steps(ctx, phi1, phi_start, dphi, n, start_at, deck, error); if (allocated(error)) return
 
     call count_values(ctx, "omega1_step", omega1_step, n_omega, error); if (allocated(error)) return
     call count_values(ctx, "eps1_step", eps1_step, n_eps, error); if (allocated(error)) return
@@ -293,6 +302,7 @@ contains
       allocate (deck%omega1(deck%n), source=omega1)
       allocate (deck%eps1(deck%n), source=0.0_wp)
       deck%omega1_const = omega1
+      if (allocated(deck%phi_list)) deck%omega1 = signed_speed(deck%phi_list, omega1)
     end if
     deallocate (omega1_step, eps1_step)
     call count_values(ctx, "step_values", step_values, n_values, error); if (allocated(error)) return
@@ -343,8 +353,8 @@ contains
     end do
     allocate (deck%mech%forces(nf), deck%mech%moment_link(nm))
     allocate (deck%f_mag(nf, deck%n), deck%m_mag(nm, deck%n))
-    allocate (deck%phi1_deg(deck%n))
-    deck%phi1_deg = [(phi_start + real(k - 1, wp) * dphi, k=1, deck%n)]
+    call read_output_link(ctx, output_link, ids, deck%mech, error); if (allocated(error)) return
+    call crank_angles(ctx, deck, error); if (allocated(error)) return
     do k = nf + 1, max_forces
       if (is_set(force(k)%value) .or. is_set(force(k)%angle) .or. is_set(force(k)%column)) then
         call deck_error(ctx, "force("//int_str(k)//")%link", "missing (forces must be numbered without gaps)", error)
@@ -404,13 +414,115 @@ contains
     deck%gravity_angle = gravity_angle
     deck%mech%down = unit_at(gravity_angle * deg_to_rad)
     deck%title = title
-    deck%phi_start = phi_start
-    deck%dphi = dphi
     deck%angles_signed = angles_signed
     deck%components = components
     deck%frame_id = frame_no
     deck%crank_id = crank_no
   end subroutine read_assur_deck
+
+  !> The steps' crank angles as a list `phi1(:)` (any order), or phi_start [or
+  !> start_at = 'extreme'], dphi, n; sets deck%n, deck%phi_list, deck%phi_start, deck%dphi,
+  !> deck%start_extreme.
+  subroutine read_steps(ctx, phi1, phi_start, dphi, n, start_at, deck, error)
+    type(deck_context_t), intent(in) :: ctx
+    !> The list as read (unset after its values), deg.
+    real(wp), intent(in) :: phi1(:)
+    !> First angle (deg), step (deg), number of steps as read (or unset).
+    real(wp), intent(in) :: phi_start, dphi, n
+    !> '' or 'extreme'.
+    character(*), intent(in) :: start_at
+    type(assur_deck_t), intent(inout) :: deck
+    type(error_t), allocatable, intent(out) :: error
+    integer :: n_list
+    call require_rule(ctx, "start_at", any(lower(trim(start_at)) == [character(len=8) :: "", "extreme"]), &
+      "must be 'extreme' (the first extreme position of the output link at or after phi_start), got '"// &
+      trim(start_at)//"'", error)
+    if (allocated(error)) return
+    deck%start_extreme = lower(trim(start_at)) == "extreme"
+    call count_values(ctx, "phi1", phi1, n_list, error); if (allocated(error)) return
+    if (n_list > 0) then
+      call require_rule(ctx, "phi1", .not. any(is_set([phi_start, dphi, n])) .and. .not. deck%start_extreme, &
+        "give either phi1(:) (a list of crank angles) or phi_start [start_at], dphi, n, not both", error)
+      if (allocated(error)) return
+      deck%phi_list = phi1(1:n_list)
+      deck%n = n_list
+      return
+    end if
+    deck%phi_start = optional_default(phi_start, 0.0_wp)
+    call require_set(ctx, "phi_start", deck%phi_start, error); if (allocated(error)) return
+    call steps_over_turn(ctx, dphi, n, deck%n, error); if (allocated(error)) return
+    deck%dphi = dphi
+  end subroutine read_steps
+
+  !> Crank speed per step of an angle list at constant |omega1| (rad/s): its sign is that
+  !> of the move that brought the crank to the step's angle, + from a smaller angle, - from
+  !> a larger one (a turning point keeps the sign it was reached with); the first step (and
+  !> repeats) take the first move's sign; without any move omega1 is kept as given. A
+  !> rocking list thus equals its monotonic runs, each turning point ending a run.
+  pure function signed_speed(phi, omega1) result(w)
+    !> Crank angles, deg.
+    real(wp), intent(in) :: phi(:)
+    !> Speed, rad/s.
+    real(wp), intent(in) :: omega1
+    real(wp) :: w(size(phi))
+    real(wp) :: dir(size(phi))
+    integer :: k, n
+    n = size(phi)
+    dir = 0.0_wp
+    do k = 2, n
+      if (phi(k) /= phi(k - 1)) then
+        dir(k) = sign(1.0_wp, phi(k) - phi(k - 1))
+      else
+        dir(k) = dir(k - 1)
+      end if
+    end do
+    do k = n - 1, 1, -1
+      if (dir(k) == 0.0_wp) dir(k) = dir(k + 1)
+    end do
+    w = omega1
+    where (dir /= 0.0_wp) w = dir * abs(omega1)
+  end function signed_speed
+
+  !> The output link (default: link b of the last dyad) and how its position is measured.
+  subroutine read_output_link(ctx, output_link, ids, mech, error)
+    type(deck_context_t), intent(in) :: ctx
+    !> Link id as read (or unset).
+    real(wp), intent(in) :: output_link
+    !> Link ids by internal index.
+    integer, intent(in) :: ids(0:)
+    type(assur_mech_t), intent(inout) :: mech
+    type(error_t), allocatable, intent(out) :: error
+    integer :: i
+    i = ubound(ids, 1)
+    if (is_set(output_link)) then
+      call moving_link(ctx, "output_link", output_link, ids, i, error); if (allocated(error)) return
+    end if
+    mech%output_link = i
+    mech%output_pair = output_pair_of(mech, i)
+  end subroutine read_output_link
+
+  !> The crank angle of every step (deg): the list, or from phi_start (or the extreme
+  !> position of the output link at or after it) by dphi.
+  subroutine crank_angles(ctx, deck, error)
+    type(deck_context_t), intent(in) :: ctx
+    type(assur_deck_t), intent(inout) :: deck
+    type(error_t), allocatable, intent(out) :: error
+    real(wp) :: phi
+    integer :: k
+    if (allocated(deck%phi_list)) then
+      deck%phi1_deg = deck%phi_list
+      return
+    end if
+    if (deck%start_extreme) then
+      call assur_extreme(deck%mech, deck%phi_start * deg_to_rad, phi, error)
+      if (allocated(error)) then
+        error%message = ctx%path//": &"//group_name//": start_at: "//error%message
+        return
+      end if
+      deck%phi_start = phi * rad_to_deg
+    end if
+    deck%phi1_deg = [(deck%phi_start + real(k - 1, wp) * deck%dphi, k=1, deck%n)]
+  end subroutine crank_angles
 
   !> The driving linear actuator, when `drive_dyad` and `drive_pair` name one: a prismatic
   !> pair of a dyad whose axial force replaces the crank's balancing moment as the unknown.

@@ -2,7 +2,7 @@
 !> as driver (data/assur_pr3050.nml against the dedicated PR 3050 program, a perturbed deck
 !> rejected by the same comparison; F_drive by the power balance of a slider-crank driven
 !> by its slider).
-module test_assur_drive
+module test_assur_ext
   use kinetostat_kinds, only: wp, deg_to_rad
   use kinetostat_error, only: error_t
   use kinetostat_vec2, only: magnitude
@@ -16,15 +16,15 @@ module test_assur_drive
   use test_harness, only: test_counts_t, check_close, check_true
   implicit none
   private
-  public :: run_assur_drive_tests
+  public :: run_assur_ext_tests
 
 contains
 
-  subroutine run_assur_drive_tests(t)
+  subroutine run_assur_ext_tests(t)
     type(test_counts_t), intent(inout) :: t
     call test_pr3050_vs_dedicated(t)
     call test_actuator_slider_crank(t)
-  end subroutine run_assur_drive_tests
+  end subroutine run_assur_ext_tests
 
   !> Largest relative difference (to the step's largest force) between the generic PR 3050
   !> deck's F14, F34, F32 = -F23 (vectors) and F_drive and the dedicated program's F14, F34,
@@ -142,4 +142,4 @@ contains
     end do
   end subroutine test_actuator_slider_crank
 
-end module test_assur_drive
+end module test_assur_ext
