@@ -25,7 +25,7 @@ module kinetostat_assur
   private
   public :: assur_link_t, assur_dyad_t, assur_force_t, assur_mech_t, assur_step_t
   public :: assur_step, assur_kinematics, link_a, link_b, pair_index, crank_pin_index, pair_sides
-  public :: output_pair_of, output_position, assur_extreme
+  public :: output_pair_of, output_position, link_position, assur_extreme
 
   !> An actuator whose crank moment per newton |stroke'| is below this times the driving
   !> dyad's size (m) is in a dead position: it cannot move the input link.
@@ -345,18 +345,30 @@ contains
     type(dyad_pose_t), intent(in) :: poses(:)
     !> Position, its first and second analogues.
     real(wp), intent(out) :: q, dq, ddq
-    integer :: d
-    if (mech%output_pair == 0) then
-      q = states(mech%output_link)%th
-      dq = states(mech%output_link)%u
-      ddq = states(mech%output_link)%eq
-    else
-      d = mech%output_link / 2
-      q = poses(d)%stroke(mech%output_pair)
-      dq = poses(d)%stroke_v(mech%output_pair)
-      ddq = poses(d)%stroke_a(mech%output_pair)
-    end if
+    call link_position(states, poses, mech%output_link, mech%output_pair, q, dq, ddq)
   end subroutine output_position
+
+  !> Position of link `i` with its analogues: its angle (`pair` = 0; rad, rad/rad,
+  !> rad/rad^2) or the stroke of pair `pair` of its dyad (m, m/rad, m/rad^2).
+  pure subroutine link_position(states, poses, i, pair, q, dq, ddq)
+    !> Frames of links 0..2*nd+1.
+    type(link_state_t), intent(in) :: states(0:)
+    !> Pose of each dyad.
+    type(dyad_pose_t), intent(in) :: poses(:)
+    !> Internal link index; 0 or the pair of its dyad whose stroke is its position.
+    integer, intent(in) :: i, pair
+    !> Position, its first and second analogues.
+    real(wp), intent(out) :: q, dq, ddq
+    if (pair == 0) then
+      q = states(i)%th
+      dq = states(i)%u
+      ddq = states(i)%eq
+    else
+      q = poses(i / 2)%stroke(pair)
+      dq = poses(i / 2)%stroke_v(pair)
+      ddq = poses(i / 2)%stroke_a(pair)
+    end if
+  end subroutine link_position
 
   !> The first extreme position of the output link (its position's analogue changes sign)
   !> at or after crank angle `phi_from` (rad), within one turn: a scan in 0.5 deg steps over

@@ -16,11 +16,11 @@ module kinetostat_assur_deck
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn, &
     is_whole_in, require_whole
   use kinetostat_vec2, only: unit_at
-  use kinetostat_assur_kinematics, only: dyad_geometry_t, kind_names, kind_has_mode, &
+  use kinetostat_assur_kinematics, only: link_state_t, dyad_pose_t, dyad_geometry_t, kind_names, kind_has_mode, &
     kind_rrr, kind_rrp, kind_rpr, kind_prp, kind_rpp
   use kinetostat_assur_statics, only: pair_is_prismatic
   use kinetostat_assur, only: assur_mech_t, assur_link_t, assur_dyad_t, assur_force_t, link_a, link_b, &
-    output_pair_of, assur_extreme
+    output_pair_of, assur_extreme, assur_kinematics, link_position
   implicit none
   private
   public :: assur_deck_t, read_assur_deck, write_assur_template, assur_window
@@ -32,6 +32,8 @@ module kinetostat_assur_deck
   integer, parameter :: max_forces = 16
   !> Capacity of the external moment list.
   integer, parameter :: max_moments = 16
+  !> Capacity of a load table, (position, value) points.
+  integer, parameter :: max_table_points = 64
   !> Unset logical marker is not available in namelists: logicals have plain defaults.
   character(*), parameter :: group_name = "assur"
 
@@ -95,6 +97,13 @@ module kinetostat_assur_deck
     real(wp) :: value = unset, idle = unset, phi_on = unset, phi_off = unset
     !> Column of step_values (a whole number).
     real(wp) :: column = unset
+    !> Components instead of angle and value (global, or link axes when follow), N.
+    real(wp) :: fx = unset, fy = unset
+    !> Value over the position of link `over`: pairs (position, value), position in deg
+    !> (a link's angle) or m (a slider's stroke on its frame guide), value in N.
+    real(wp) :: table(2 * max_table_points) = unset
+    !> Id of the link whose position is the table's abscissa (default: output_link).
+    real(wp) :: over = unset
   end type force_in_t
 
   !> An external moment as written in the deck.
@@ -105,6 +114,10 @@ module kinetostat_assur_deck
     real(wp) :: value = unset, idle = unset, phi_on = unset, phi_off = unset
     !> Column of step_values (a whole number).
     real(wp) :: column = unset
+    !> Value over the position of link `over`: pairs (position, value), N*m.
+    real(wp) :: table(2 * max_table_points) = unset
+    !> Id of the link whose position is the table's abscissa (default: output_link).
+    real(wp) :: over = unset
   end type moment_in_t
 
   !> A validated `&assur` deck.
@@ -356,13 +369,13 @@ contains
     call read_output_link(ctx, output_link, ids, deck%mech, error); if (allocated(error)) return
     call crank_angles(ctx, deck, error); if (allocated(error)) return
     do k = nf + 1, max_forces
-      if (is_set(force(k)%value) .or. is_set(force(k)%angle) .or. is_set(force(k)%column)) then
+      if (any(is_set([force(k)%value, force(k)%angle, force(k)%column, force(k)%fx, force(k)%fy, force(k)%table(1)]))) then
         call deck_error(ctx, "force("//int_str(k)//")%link", "missing (forces must be numbered without gaps)", error)
         return
       end if
     end do
     do k = nm + 1, max_moments
-      if (is_set(moment(k)%value) .or. is_set(moment(k)%column)) then
+      if (any(is_set([moment(k)%value, moment(k)%column, moment(k)%table(1)]))) then
         call deck_error(ctx, "moment("//int_str(k)//")%link", "missing (moments must be numbered without gaps)", error)
         return
       end if
@@ -372,10 +385,20 @@ contains
       associate (fi => force(k))
         call moving_link(ctx, name//"link", fi%link, ids, i, error); if (allocated(error)) return
         call optional_pair(ctx, name//"at", fi%at, error); if (allocated(error)) return
+        if (any(is_set([fi%fx, fi%fy]))) then
+          call force_components(ctx, name, fi, error); if (allocated(error)) return
+        end if
         call require_set(ctx, name//"angle", fi%angle, error); if (allocated(error)) return
         deck%mech%forces(k) = assur_force_t(link=i, at=fi%at, angle=fi%angle * deg_to_rad, follow=fi%follow)
-        sched = schedule_in_t(value=fi%value, idle=fi%idle, phi_on=fi%phi_on, phi_off=fi%phi_off, column=fi%column)
-        call read_schedule(ctx, name, sched, deck%phi1_deg, step_values(1:n_values), deck%f_mag(k, :), error)
+        if (is_set(fi%table(1))) then
+          call read_table(ctx, name, fi%table, fi%over, [fi%value, fi%idle, fi%phi_on, fi%phi_off, fi%column], &
+                          ids, deck, deck%f_mag(k, :), error)
+        else
+          call require_rule(ctx, name//"over", .not. is_set(fi%over), "only used with table", error)
+          if (allocated(error)) return
+          sched = schedule_in_t(value=fi%value, idle=fi%idle, phi_on=fi%phi_on, phi_off=fi%phi_off, column=fi%column)
+          call read_schedule(ctx, name, sched, deck%phi1_deg, step_values(1:n_values), deck%f_mag(k, :), error)
+        end if
         if (allocated(error)) return
       end associate
     end do
@@ -384,8 +407,15 @@ contains
       associate (mi => moment(k))
         call moving_link(ctx, name//"link", mi%link, ids, i, error); if (allocated(error)) return
         deck%mech%moment_link(k) = i
-        sched = schedule_in_t(value=mi%value, idle=mi%idle, phi_on=mi%phi_on, phi_off=mi%phi_off, column=mi%column)
-        call read_schedule(ctx, name, sched, deck%phi1_deg, step_values(1:n_values), deck%m_mag(k, :), error)
+        if (is_set(mi%table(1))) then
+          call read_table(ctx, name, mi%table, mi%over, [mi%value, mi%idle, mi%phi_on, mi%phi_off, mi%column], &
+                          ids, deck, deck%m_mag(k, :), error)
+        else
+          call require_rule(ctx, name//"over", .not. is_set(mi%over), "only used with table", error)
+          if (allocated(error)) return
+          sched = schedule_in_t(value=mi%value, idle=mi%idle, phi_on=mi%phi_on, phi_off=mi%phi_off, column=mi%column)
+          call read_schedule(ctx, name, sched, deck%phi1_deg, step_values(1:n_values), deck%m_mag(k, :), error)
+        end if
         if (allocated(error)) return
       end associate
     end do
@@ -482,6 +512,103 @@ contains
     w = omega1
     where (dir /= 0.0_wp) w = dir * abs(omega1)
   end function signed_speed
+
+  !> A force by components (fx, fy; global, or link axes when follow): becomes its angle and
+  !> a constant value (or `value` inside the window phi_on..phi_off, 0 outside).
+  subroutine force_components(ctx, name, fi, error)
+    type(deck_context_t), intent(in) :: ctx
+    !> Prefix, e.g. "force(1)%".
+    character(*), intent(in) :: name
+    !> The force as read; angle and value are set from the components.
+    type(force_in_t), intent(inout) :: fi
+    type(error_t), allocatable, intent(out) :: error
+    call require_rule(ctx, name//"fx", .not. any(is_set([fi%angle, fi%value, fi%column, fi%idle, fi%table(1)])), &
+      "give the force either by components fx, fy or by angle with value/column/table, not both", error)
+    if (allocated(error)) return
+    fi%fx = optional_default(fi%fx, 0.0_wp)
+    fi%fy = optional_default(fi%fy, 0.0_wp)
+    call require_set(ctx, name//"fx", fi%fx, error); if (allocated(error)) return
+    call require_set(ctx, name//"fy", fi%fy, error); if (allocated(error)) return
+    fi%angle = atan2(fi%fy, fi%fx) * rad_to_deg
+    fi%value = hypot(fi%fx, fi%fy)
+  end subroutine force_components
+
+  !> Per-step values of a load given as a table of (position, value) pairs over the position
+  !> of link `over` (default: the output link): its angle in deg, taken modulo 360 into
+  !> [x1, x1 + 360), or a slider's stroke on its frame guide in m; linear interpolation,
+  !> positions strictly increasing, every step's position inside the table.
+  subroutine read_table(ctx, name, table, over, others, ids, deck, values, error)
+    type(deck_context_t), intent(in) :: ctx
+    !> Prefix, e.g. "force(1)%".
+    character(*), intent(in) :: name
+    !> The table as read.
+    real(wp), intent(in) :: table(:)
+    !> Link id of the abscissa, or unset.
+    real(wp), intent(in) :: over
+    !> value, idle, phi_on, phi_off, column as read (must be unset).
+    real(wp), intent(in) :: others(:)
+    !> Link ids by internal index.
+    integer, intent(in) :: ids(0:)
+    !> The deck (mechanism and crank angles).
+    type(assur_deck_t), intent(in) :: deck
+    !> Value per step.
+    real(wp), intent(out) :: values(:)
+    type(error_t), allocatable, intent(out) :: error
+    type(link_state_t) :: states(0:2 * size(deck%mech%dyads) + 1)
+    type(dyad_pose_t) :: poses(size(deck%mech%dyads))
+    type(error_t), allocatable :: kin_error
+    real(wp), allocatable :: x(:), v(:)
+    real(wp) :: q, dq, ddq, tol
+    integer :: n_values, np, i, pair, k, seg
+    character(len=:), allocatable :: unit
+    values = 0.0_wp
+    call require_rule(ctx, name//"table", .not. any(is_set(others)), &
+      "give either table (values over a link's position) or value [idle, phi_on, phi_off] or column", error)
+    if (allocated(error)) return
+    call count_values(ctx, name//"table", table, n_values, error); if (allocated(error)) return
+    call require_rule(ctx, name//"table", modulo(n_values, 2) == 0, "needs pairs (position, value), got "// &
+      int_str(n_values)//" numbers", error)
+    if (allocated(error)) return
+    np = n_values / 2
+    x = table(1:n_values:2)
+    v = table(2:n_values:2)
+    do k = 2, np
+      if (.not. x(k) > x(k - 1)) then
+        call deck_error(ctx, name//"table", "positions must be strictly increasing: point "//int_str(k)// &
+          " ("//real_str(x(k))//") after "//real_str(x(k - 1)), error)
+        return
+      end if
+    end do
+    i = deck%mech%output_link
+    if (is_set(over)) then
+      call moving_link(ctx, name//"over", over, ids, i, error); if (allocated(error)) return
+    end if
+    pair = output_pair_of(deck%mech, i)
+    unit = " deg"
+    if (pair /= 0) unit = " m"
+    tol = 1.0e-9_wp * max(x(np) - x(1), abs(x(1)), abs(x(np)), 1.0e-300_wp)
+    do k = 1, deck%n
+      call assur_kinematics(deck%mech, deck%phi1_deg(k) * deg_to_rad, states, poses, kin_error)
+      if (allocated(kin_error)) cycle ! reported by the solution with the step
+      call link_position(states, poses, i, pair, q, dq, ddq)
+      if (pair == 0) q = x(1) + modulo(q * rad_to_deg - x(1), 360.0_wp)
+      if (q < x(1) - tol .or. q > x(np) + tol) then
+        call deck_error(ctx, name//"table", "at step "//int_str(k)//" (phi1 = "//real_str(deck%phi1_deg(k))// &
+          " deg) link "//int_str(ids(i))//" is at "//real_str(q)//unit//", outside the table ["// &
+          real_str(x(1))//", "//real_str(x(np))//"]"//unit, error)
+        return
+      end if
+      if (np == 1) then
+        values(k) = v(1)
+        cycle
+      end if
+      seg = 1
+      do while (seg < np - 1 .and. q > x(seg + 1))
+        seg = seg + 1
+      end do
+      values(k) = v(seg) + (v(seg + 1) - v(seg)) * (q - x(seg)) / (x(seg + 1) - x(seg))
+    end do
+  end subroutine read_table
 
   !> The output link (default: link b of the last dyad) and how its position is measured.
   subroutine read_output_link(ctx, output_link, ids, mech, error)

@@ -1,6 +1,6 @@
 # Command-line tests of the generic engine's extensions (sourced by tools/test with
 # test/cli/lib.sh): linear actuator as driver, crank angle lists (rocking inputs), start at the
-# extreme position.
+# extreme position, loads by components and tables over a link's position.
 
 # drive_cols FILE NAME...: the named columns of a CSV file (header + rows), in the given order.
 drive_cols() {
@@ -121,3 +121,48 @@ expect_input_error assur-output-link '&assur: output_link: link 9 is not a movin
 # the crank as output link has no extreme position: geometry error, exit 3
 expect_input_error assur-no-extreme "&assur: start_at: no extreme position of link 1 \(the output link\)" \
   "$(deck_with se_none "$six" "s/phi_start = 36.77061636665199, dphi = 30/start_at = 'extreme', output_link = 1, dphi = 30/")" 3
+
+# --- loads: components, tables over a link's position (slider-crank: slider 3 on the guide)
+win='force(1)%value = 500, force(1)%idle = 100, force(1)%phi_on = 0, force(1)%phi_off = 180'
+# a constant table equals the constant load, over the slider's stroke (m) and over the crank's
+# angle (deg, modulo 360 into the table's range)
+run_ks "$(deck_with ld_const "$sc" "s/$win/force(1)%value = 300/")" --format csv; cp "$out" "$cli_tmp/ld_const.csv"
+run_ks "$(deck_with ld_tab "$sc" "s/$win/force(1)%table = 0.2, 300, 0.5, 300/")" --format csv
+[ "$rc" -eq 0 ] && pass || fail assur-table-runs "exit $rc: $(cat "$err")"
+expect_same assur-constant-table-equals-constant "$cli_tmp/ld_const.csv" "$out"
+run_ks "$(deck_with ld_tab1 "$sc" "s/$win/force(1)%table = -180, 300, 180, 300, force(1)%over = 1/")" --format csv
+expect_same assur-constant-table-over-angle "$cli_tmp/ld_const.csv" "$out"
+run_ks "$(deck_with ld_tab2 "$sc" "s/$win/force(1)%table = 0.2, 300, 0.5, 300.001/")" --format csv
+expect_differ assur-table-comparison-can-fail "$cli_tmp/ld_const.csv" "$out"
+# a moment table equals a constant moment
+run_ks "$(deck_with ld_m "$sc" "s/$win/force(1)%value = 300, moment(1)%link = 2, moment(1)%value = 4/")" --format csv
+cp "$out" "$cli_tmp/ld_m.csv"
+run_ks "$(deck_with ld_mt "$sc" "s/$win/force(1)%value = 300, moment(1)%link = 2, moment(1)%table = 0.2, 4, 0.5, 4/")" --format csv
+expect_same assur-constant-moment-table "$cli_tmp/ld_m.csv" "$out"
+# components equal angle + value: global (with a window), and in the link's axes (follow)
+run_ks "$(deck_with ld_ang "$sc" "s/$win/force(1)%value = 500, force(1)%phi_on = 0, force(1)%phi_off = 180/")" --format csv
+cp "$out" "$cli_tmp/ld_ang.csv"
+run_ks "$(deck_with ld_fx "$sc" "s/$win/force(1)%fx = -500, force(1)%phi_on = 0, force(1)%phi_off = 180/; s/, force(1)%angle = 180//")" --format csv
+expect_same assur-components-equal-angle-value "$cli_tmp/ld_ang.csv" "$out"
+run_ks "$(deck_with ld_fol "$sc" "s/$win/force(1)%value = 300, force(2)%link = 2, force(2)%at = 0.2, 0, force(2)%angle = 90, force(2)%follow = .true., force(2)%value = 40/")" --format csv
+cp "$out" "$cli_tmp/ld_fol.csv"
+run_ks "$(deck_with ld_folc "$sc" "s/$win/force(1)%value = 300, force(2)%link = 2, force(2)%at = 0.2, 0, force(2)%fy = 40, force(2)%follow = .true./")" --format csv
+expect_same assur-components-in-link-axes "$cli_tmp/ld_fol.csv" "$out"
+expect_differ assur-components-in-link-axes-can-fail "$cli_tmp/ld_const.csv" "$out"
+# deck errors
+expect_input_error assur-table-not-increasing '&assur: force\(1\)%table: positions must be strictly increasing: point 2' \
+  "$(deck_with le_inc "$sc" "s/$win/force(1)%table = 0.5, 0, 0.2, 600/")"
+expect_input_error assur-table-odd '&assur: force\(1\)%table: needs pairs \(position, value\), got 3 numbers' \
+  "$(deck_with le_odd "$sc" "s/$win/force(1)%table = 0.2, 0, 0.5/")"
+expect_input_error assur-table-range '&assur: force\(1\)%table: at step 1 \(phi1 = 0\.0+ deg\) link 3 is at 0\.44.* m, outside the table \[0\.20*, 0\.40*\] m' \
+  "$(deck_with le_rng "$sc" "s/$win/force(1)%table = 0.2, 0, 0.4, 600/")"
+expect_input_error assur-table-and-value '&assur: force\(1\)%table: give either table' \
+  "$(deck_with le_tv "$sc" "s/$win/force(1)%value = 1, force(1)%table = 0.2, 0, 0.5, 600/")"
+expect_input_error assur-table-moment '&assur: moment\(1\)%table: positions must be strictly increasing' \
+  "$(deck_with le_mi "$sc" "s/$win/force(1)%value = 1, moment(1)%link = 2, moment(1)%table = 0.2, 0, 0.2, 6/")"
+expect_input_error assur-over-without-table '&assur: force\(1\)%over: only used with table' \
+  "$(deck_with le_ov "$sc" "s/$win/force(1)%value = 1, force(1)%over = 2/")"
+expect_input_error assur-over-link '&assur: force\(1\)%over: link 8 is not a moving link' \
+  "$(deck_with le_ol "$sc" "s/$win/force(1)%table = 0.2, 0, 0.5, 600, force(1)%over = 8/")"
+expect_input_error assur-components-and-angle '&assur: force\(1\)%fx: give the force either by components' \
+  "$(deck_with le_fa "$sc" "s/$win/force(1)%fx = 1/")"
