@@ -6,7 +6,7 @@ module kinetostat_assur_layout
   use kinetostat_deck, only: deck_source_t
   use kinetostat_error, only: error_t, fatal_error, exit_geometry
   use kinetostat_text, only: int_str
-  use kinetostat_noise, only: noise_rel
+  use kinetostat_noise, only: noise_rel, force_components
   use kinetostat_vec2, only: magnitude, angle_360_deg, angle_180_deg, rotate, snap_noise, clean_zero
   use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_component, col_length, &
     col_moment, col_other
@@ -14,9 +14,9 @@ module kinetostat_assur_layout
   use kinetostat_labels, only: lang_ru
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_mechanism, only: mechanism_t
-  use kinetostat_assur_kinematics, only: kind_names
+  use kinetostat_assur_kinematics, only: kind_names, link_state_t, dyad_pose_t, point_state_t, point_on
   use kinetostat_assur_statics, only: pair_is_prismatic
-  use kinetostat_assur, only: assur_step_t, assur_step
+  use kinetostat_assur, only: assur_step_t, assur_step, assur_kinematics
   use kinetostat_assur_deck, only: assur_deck_t, read_assur_deck, write_assur_template
   implicit none
   private
@@ -111,6 +111,9 @@ contains
     call table%allocate_rows(size(steps))
     do k = 1, size(steps)
       table%rows(:, k) = assur_csv_values(self%deck, steps(k))
+    end do
+    do k = 1, size(steps)
+      call put_kinematics(table, k, self%deck, steps(k))
     end do
     if (self%deck%mech%drive_dyad == 0) then
       call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "M1")
@@ -239,6 +242,70 @@ contains
       v = clean_zero(v(1:pos + 4))
     end if
   end function assur_csv_values
+
+  !> The kinematics columns of step `k`, in the deck's global frame: the reference point
+  !> J<pair> of every pair (x_J21 for the pair of F21: the pin of a revolute pair, the
+  !> slider's reference point of a prismatic pair; the crank's pair with the frame is the
+  !> pivot), the centre of mass S<id> of every moving link and its acceleration, the angle
+  !> (of the link's x axis), angular velocity and acceleration of every moving link, and the
+  !> components of every pair force as the F<pair>x, F<pair>y columns give them.
+  pure subroutine put_kinematics(table, k, deck, s)
+    !> The step table (columns appended on first use).
+    type(step_table_t), intent(inout) :: table
+    !> Row.
+    integer, intent(in) :: k
+    !> Validated deck.
+    type(assur_deck_t), intent(in) :: deck
+    !> The computed step.
+    type(assur_step_t), intent(in) :: s
+    type(link_state_t) :: states(0:2 * size(deck%mech%dyads) + 1)
+    type(dyad_pose_t) :: poses(size(deck%mech%dyads))
+    type(point_state_t) :: ps
+    type(error_t), allocatable :: error
+    real(wp) :: w2, floor, f(2)
+    integer :: i, ip, d, np
+    call assur_kinematics(deck%mech, s%phi1, states, poses, error)
+    if (allocated(error)) return ! cannot happen: the step was solved at this angle
+    w2 = s%omega1**2
+    np = size(s%f, 2)
+    do ip = 1, np
+      d = (ip - 1) / 3 + 1
+      if (ip == np) then
+        call table%put_point(k, joint_name(deck%pair_name(ip)), deck%mech%pivot)
+      else
+        call table%put_point(k, joint_name(deck%pair_name(ip)), poses(d)%p(:, ip - 3 * (d - 1)))
+      end if
+    end do
+    do i = 1, ubound(states, 1)
+      ps = point_on(states(i), deck%mech%links(i)%s)
+      call table%put_point(k, "S"//int_str(deck%mech%links(i)%id), ps%p)
+    end do
+    do i = 1, ubound(states, 1)
+      call table%put_link(k, int_str(deck%mech%links(i)%id), states(i)%th, states(i)%u * s%omega1, &
+                          states(i)%eq * w2 + states(i)%u * s%eps1)
+    end do
+    do i = 1, ubound(states, 1)
+      ps = point_on(states(i), deck%mech%links(i)%s)
+      call table%put_acceleration(k, "S"//int_str(deck%mech%links(i)%id), ps%a * w2 + ps%v * s%eps1)
+    end do
+    floor = 0.0_wp
+    do ip = 1, np
+      floor = max(floor, magnitude(s%f(:, ip)))
+    end do
+    floor = noise_rel * floor
+    do ip = 1, np
+      f = rotate(snap_noise(deck%pair_sign(ip) * s%f(:, ip), floor), -deck%pair_frame(ip))
+      call table%put_components(k, trim(deck%pair_name(ip)), force_components(f, floor), &
+                                deck%pair_frame(ip) * rad_to_deg)
+    end do
+  end subroutine put_kinematics
+
+  !> The joint of a pair: "J21" for the pair of F21.
+  pure function joint_name(pair_name) result(name)
+    character(*), intent(in) :: pair_name
+    character(len=:), allocatable :: name
+    name = "J"//trim(pair_name(2:))
+  end function joint_name
 
   !> Length scale of the crank: its farthest attachment point from the pivot (1 m if none).
   pure real(wp) function crank_length(deck)
