@@ -570,6 +570,7 @@ contains
       int_str(n_values)//" numbers", error)
     if (allocated(error)) return
     np = n_values / 2
+    allocate (x(np), v(np))
     x = table(1:n_values:2)
     v = table(2:n_values:2)
     do k = 2, np
