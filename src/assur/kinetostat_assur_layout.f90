@@ -488,7 +488,10 @@ contains
     call table%echo_real("CRANK_M", deck%mech%links(1)%m, "kg")
     call table%echo_real("CRANK_J", deck%mech%links(1)%j, "kg*m^2")
     call table%echo_array("CRANK_S", deck%mech%links(1)%s, "m")
-    if (deck%prescribed) then
+    if (allocated(deck%phi_list) .and. .not. deck%prescribed) then
+      call table%echo_real("OMEGA1", deck%omega1_const, "rad/s")
+      call table%echo_array("OMEGA1_STEP", deck%omega1, "rad/s")
+    else if (deck%prescribed) then
       call table%echo_array("OMEGA1_STEP", deck%omega1, "rad/s")
       call table%echo_array("EPS1_STEP", deck%eps1, "rad/s^2")
     else
@@ -496,8 +499,16 @@ contains
     end if
     call table%echo_real("G", deck%mech%g, "m/s^2")
     call table%echo_real("GRAVITY_ANGLE", deck%gravity_angle, "deg")
-    call table%echo_real("PHI_START", deck%phi_start, "deg")
-    call table%echo_real("DPHI", deck%dphi, "deg")
+    if (allocated(deck%phi_list)) then
+      call table%echo_array("PHI1", deck%phi_list, "deg")
+    else
+      if (deck%start_extreme) then
+        call table%echo_text("START_AT", "extreme")
+        call table%echo_int("OUTPUT_LINK", deck%mech%links(deck%mech%output_link)%id, "")
+      end if
+      call table%echo_real("PHI_START", deck%phi_start, "deg")
+      call table%echo_real("DPHI", deck%dphi, "deg")
+    end if
     call table%echo_int("N", deck%n, "steps")
     call table%echo_logical("ANGLES_SIGNED", deck%angles_signed, "")
     call table%echo_logical("COMPONENTS", deck%components, "")
