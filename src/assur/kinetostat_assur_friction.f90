@@ -279,7 +279,7 @@ contains
     type(link_balance_t) :: balances(0:2 * size(mech%dyads) + 1)
     type(pair_geometry_t), allocatable :: pg(:)
     type(assur_step_t) :: old
-    real(wp) :: power_used, scale_used, power_final, scale_final, change, previous, q, length
+    real(wp) :: power_used, scale_used, power_final, scale_final, change, previous, q, length, roundoff_moment
     real(wp), allocatable :: effort(:), rate(:)
     integer :: it, where, np, i, growing
     logical :: converged
@@ -297,6 +297,8 @@ contains
     end do
     if (.not. length > 0.0_wp) length = 1.0_wp
     fs%m1_frictionless = step%m1
+    ! a frictionless M1 at roundoff level has no sign (self-locking test below)
+    roundoff_moment = roundoff_rel * step%power_scale
     fs%motion_sign = s
     previous = 0.0_wp
     q = 0.0_wp
@@ -347,7 +349,7 @@ contains
     fs%p_loss = fs%rate_total * abs(omega1)
 
     ! self-locking: the input at rest and friction reverses the driving moment
-    if (omega1 == 0.0_wp .and. fs%m1_frictionless /= 0.0_wp .and. step%m1 /= 0.0_wp .and. &
+    if (omega1 == 0.0_wp .and. abs(fs%m1_frictionless) > roundoff_moment .and. step%m1 /= 0.0_wp .and. &
         sign(1.0_wp, step%m1) /= sign(1.0_wp, fs%m1_frictionless)) then
       call fatal_error(error, exit_geometry, "friction: self-locking with the input at rest: friction reverses "// &
         "the driving moment (M1 = "//real_str(fs%m1_frictionless)//" N*m without friction, "// &
