@@ -171,7 +171,7 @@ module kinetostat_assur_deck
     "! Offset slider-crank = frame 0 + crank 1 + dyad RRP (rod 2, slider 3).", &
     "! Global frame: origin anywhere, angles CCW from +x; gravity along gravity_angle.", &
     "! Link coordinates: crank: origin at its pivot, x-axis along the crank (pin at (l1, 0));", &
-    "! dyad links: see README (RRR: origin A, x-axis A->B / origin C, x-axis C->B; ...).", &
+    "! dyad links: see docs/assur.md (RRR: origin A, x-axis A->B / origin C, x-axis C->B; ...).", &
     "&assur", &
     "  title = 'offset slider-crank'", &
     "  frame_id = 0, crank_id = 1     ! link numbers (column names F<on><from>)", &

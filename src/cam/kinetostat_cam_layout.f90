@@ -17,7 +17,7 @@ module kinetostat_cam_layout
   private
   public :: cam_mechanism_t, new_cam, cam_solve, cam_csv_columns, cam_csv_values
 
-  !> CSV columns, one row per cam angle; see README "Cam mechanisms".
+  !> CSV columns, one row per cam angle; see docs/gears-cams.md "Cams: table and CSV".
   character(*), parameter :: cam_csv_columns(*) = [character(len=5) :: &
     "phi", "theta", "xB", "F2", "vdir", "N", "F21", "F21G", "F23C", "F23CG", "F23D", "F23DG", &
     "KF", "KF2", "JAM", "LOST"]

@@ -19,7 +19,7 @@ module kinetostat_gears_layout
   private
   public :: gears_mechanism_t, new_gears, gears_solve, gears_csv_columns, gears_csv_values
 
-  !> CSV columns (one row per stage); see README "Gear meshes".
+  !> CSV columns (one row per stage); see docs/gears-cams.md "Gears: table and CSV".
   character(*), parameter :: gears_csv_columns(*) = [character(len=6) :: &
     "stage", "kind", "z1", "z2", "z3", "k", "dw1", "dw2", "u", "M1", "M2", "M2P", &
     "Ft", "Fr1", "Fa1", "Fr2", "Fa2", "Fn", "F12", "F12G", "FS1", "FS1G", "FS2", "FS2G", &
