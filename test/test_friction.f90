@@ -78,6 +78,7 @@ contains
     integer :: k, run
     logical :: ok
     character(len=64) :: at
+    allocate (steps(0), fsteps(0)) ! defined before the calls (gcc's -Wmaybe-uninitialized)
     do run = 1, 2
       omega = merge(10.0_wp, -10.0_wp, run == 1)
       call solve_text(t, "crank journal", deck_a//merge(" omega1 =  10", " omega1 = -10", run == 1)//lf//"/", &
@@ -120,6 +121,7 @@ contains
     real(wp) :: n, q
     logical :: ok
     integer :: ip
+    allocate (steps(0), fsteps(0)) ! defined before the calls (gcc's -Wmaybe-uninitialized)
     ip = pair_index(1, 3)
     n = m * g
     call solve_text(t, "slider statics", base//"/", deck, steps, fsteps, ok)
@@ -160,6 +162,7 @@ contains
     character(len=120) :: detail
     integer :: k
     logical :: ok
+    allocate (steps(0), steps0(0), fsteps(0)) ! defined before the calls (gcc's -Wmaybe-uninitialized)
     call solve_text(t, "friction slider-crank", path, deck, steps, fsteps, ok)
     if (.not. ok) return
     call check_true(t, "friction slider-crank has 37 steps", size(steps) == 37, "wrong step count")
@@ -212,6 +215,7 @@ contains
     type(friction_step_t), allocatable :: fsteps(:)
     logical :: ok, same
     integer :: k
+    allocate (steps(0), steps0(0), fsteps(0)) ! defined before the calls (gcc's -Wmaybe-uninitialized)
     call solve_text(t, "zero friction", base//" crank_f = 0, crank_r = 0.01, dyad(1)%f2 = 0, dyad(1)%r2 = 0.01,"// &
       " dyad(1)%f23 = 0, dyad(1)%f3 = 0, dyad(1)%guide3 = 0.2, dyad(1)%block3 = 0.05"//lf//"/", deck, steps, fsteps, ok)
     if (.not. ok) return
