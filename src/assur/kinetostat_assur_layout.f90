@@ -159,15 +159,24 @@ contains
     !> Its friction results.
     type(friction_step_t), intent(in) :: fs
     real(wp), allocatable :: v(:)
-    real(wp) :: driver
+    real(wp) :: driver, mfloor, eta
     integer :: ip
+    ! M1_0 below the roundoff floor of M1 (see assur_csv_values) is 0, as M1 would be
+    mfloor = 0.0_wp
+    do ip = 1, size(s%f, 2)
+      mfloor = max(mfloor, magnitude(s%f(:, ip)))
+    end do
+    mfloor = noise_rel * mfloor * crank_length(deck)
     v = [fs%m1_frictionless]
+    if (abs(v(1)) <= mfloor) v(1) = 0.0_wp
     do ip = 1, size(deck%friction)
       if (deck%friction(ip)%f > 0.0_wp) v = [v, fs%loss(ip)]
     end do
     driver = s%m1 * fs%motion_sign
     if (driver > 0.0_wp) then
-      v = [v, fs%p_loss, 1.0_wp, 1.0_wp - fs%rate_total / driver]
+      eta = 1.0_wp - fs%rate_total / driver
+      if (abs(eta) <= eta_roundoff) eta = 0.0_wp
+      v = [v, fs%p_loss, 1.0_wp, eta]
     else
       v = [v, fs%p_loss, 0.0_wp, 0.0_wp]
     end if
