@@ -29,6 +29,7 @@ contains
     call test_slider_statics(t)
     call test_friction_slider_crank(t)
     call test_zero_coefficients(t)
+    call test_actuator_friction(t)
   end subroutine run_friction_tests
 
   !> Read a deck from text (or a file when `path` is given) and solve it with friction.
@@ -92,7 +93,7 @@ contains
                          rtol, 0.0_wp)
         call check_close(t, "journal M1 = M_load + s f r |F| by hand"//trim(at), -p * l + sign(f * r * fa, omega), &
                          steps(k)%m1, rtol, rtol * p * l)
-        call check_close(t, "journal M1_0 = M_load"//trim(at), -p * l, fsteps(k)%m1_frictionless, rtol, 0.0_wp)
+        call check_close(t, "journal M1_0 = M_load"//trim(at), -p * l, fsteps(k)%driver_frictionless, rtol, 0.0_wp)
         call check_close(t, "journal P_loss = f r |F| |omega1|"//trim(at), f * r * fa * abs(omega), fsteps(k)%p_loss, &
                          rtol, 0.0_wp)
         call check_true(t, "journal self-check <= 1e-9"//trim(at), steps(k)%residual <= selfcheck_limit .and. &
@@ -131,7 +132,7 @@ contains
       call check_close(t, "slider statics rod force = f N", f * n, magnitude(steps(1)%f(:, pair_index(1, 2))), &
                        rtol, 0.0_wp)
       call check_close(t, "slider statics M1 = f N h", f * n * h, steps(1)%m1, rtol, 0.0_wp)
-      call check_close(t, "slider statics M1_0 = 0", 0.0_wp, fsteps(1)%m1_frictionless, 0.0_wp, 1.0e-12_wp * n * h)
+      call check_close(t, "slider statics M1_0 = 0", 0.0_wp, fsteps(1)%driver_frictionless, 0.0_wp, 1.0e-12_wp * n * h)
       call check_close(t, "slider statics P_loss = 0 at rest", 0.0_wp, fsteps(1)%p_loss, 0.0_wp, 0.0_wp)
       call check_true(t, "slider statics self-check <= 1e-9", steps(1)%residual <= selfcheck_limit .and. &
                       steps(1)%mismatch <= selfcheck_limit, "residual/mismatch too large")
@@ -175,14 +176,14 @@ contains
     do k = 1, size(steps)
       write (detail, '("phi1 = ",f6.1," deg: residual ",es9.2,", mismatch ",es9.2,", P_loss ",es10.3, &
         &", M1 - M1_0 ",es10.3)') deck%phi1_deg(k), steps(k)%residual, steps(k)%mismatch, fsteps(k)%p_loss, &
-        steps(k)%m1 - fsteps(k)%m1_frictionless
+        steps(k)%m1 - fsteps(k)%driver_frictionless
       call check_true(t, "friction slider-crank residual <= 1e-9", steps(k)%residual <= selfcheck_limit, detail)
       call check_true(t, "friction slider-crank power balance <= 1e-9", steps(k)%mismatch <= selfcheck_limit, detail)
       call check_true(t, "friction slider-crank P_loss >= 0", fsteps(k)%p_loss >= 0.0_wp .and. &
                       all(fsteps(k)%loss >= 0.0_wp), detail)
       call check_true(t, "friction slider-crank M1 - M1_0 has the sign of omega1 (> 0)", &
-                      steps(k)%m1 - fsteps(k)%m1_frictionless > 0.0_wp, detail)
-      call check_close(t, "friction slider-crank M1_0 = frictionless run", steps0(k)%m1, fsteps(k)%m1_frictionless, &
+                      steps(k)%m1 - fsteps(k)%driver_frictionless > 0.0_wp, detail)
+      call check_close(t, "friction slider-crank M1_0 = frictionless run", steps0(k)%m1, fsteps(k)%driver_frictionless, &
                        1.0e-12_wp, 1.0e-12_wp)
       call check_close(t, "friction slider-crank P_loss = sum of the pairs", sum(fsteps(k)%loss), fsteps(k)%p_loss, &
                        1.0e-14_wp, 0.0_wp)
@@ -229,5 +230,39 @@ contains
     end do
     call check_true(t, "zero friction: every reaction and M1 equal (bit for bit)", same, "differ")
   end subroutine test_zero_coefficients
+
+  !> data/assur_pr3050_friction.nml (a hydraulic cylinder drives, friction in its own pair too):
+  !> self-check <= 1e-9, P_loss >= 0 at every step; F_drive_0 = F_drive of the frictionless
+  !> data/assur_pr3050.nml; where the rocker moves, friction raises the driver's power:
+  !> (F_drive - F_drive_0) * stroke speed > 0.
+  subroutine test_actuator_friction(t)
+    type(test_counts_t), intent(inout) :: t
+    type(assur_deck_t) :: deck, plain
+    type(assur_step_t), allocatable :: steps(:), steps0(:)
+    type(friction_step_t), allocatable :: fsteps(:), none(:)
+    character(len=200) :: detail
+    integer :: k
+    logical :: ok
+    allocate (steps(0), steps0(0), fsteps(0), none(0)) ! defined before the calls (gcc's -Wmaybe-uninitialized)
+    call solve_text(t, "actuator friction", "data/assur_pr3050_friction.nml", deck, steps, fsteps, ok)
+    if (.not. ok) return
+    call solve_text(t, "actuator without friction", "data/assur_pr3050.nml", plain, steps0, none, ok)
+    if (.not. ok) return
+    call check_true(t, "actuator friction: same steps", size(steps) == size(steps0) .and. size(steps) == 10, &
+                    "step counts differ")
+    if (size(steps) /= size(steps0)) return
+    do k = 1, size(steps)
+      write (detail, '("phi1 = ",f6.2," deg: residual ",es9.2,", mismatch ",es9.2,", F_drive ",es12.5,", F_drive_0 ",&
+        &es12.5,", stroke_v ",es10.3)') deck%phi1_deg(k), steps(k)%residual, steps(k)%mismatch, steps(k)%f_drive, &
+        fsteps(k)%driver_frictionless, steps(k)%stroke_v
+      call check_true(t, "actuator friction residual <= 1e-9", steps(k)%residual <= selfcheck_limit, detail)
+      call check_true(t, "actuator friction F_drive power balance <= 1e-9", steps(k)%mismatch <= selfcheck_limit, detail)
+      call check_true(t, "actuator friction P_loss >= 0", fsteps(k)%p_loss >= 0.0_wp, detail)
+      call check_close(t, "actuator F_drive_0 = frictionless deck", steps0(k)%f_drive, fsteps(k)%driver_frictionless, &
+                       1.0e-12_wp, 0.0_wp)
+      if (deck%omega1(k) /= 0.0_wp) call check_true(t, "actuator friction raises the driver's power", &
+        (steps(k)%f_drive - fsteps(k)%driver_frictionless) * steps(k)%stroke_v > 0.0_wp, detail)
+    end do
+  end subroutine test_actuator_friction
 
 end module test_friction

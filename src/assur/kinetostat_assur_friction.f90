@@ -17,6 +17,8 @@
 !>   analogue within roundoff of zero (1e-10 of its scale) gives no friction at that step;
 !> - loss per radian of the input R = Q*|relative analogue| (N*m/rad) and power loss
 !>   P = R*|omega1| (W); the friction loads' virtual power per unit crank speed is -s*sum R.
+!> The driver is the crank's balancing moment M1, or a linear actuator's force F_drive (the
+!> input link's motion prescribed): friction in the actuator's own pair is a pair like any other.
 module kinetostat_assur_friction
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use kinetostat_kinds, only: wp
@@ -72,8 +74,11 @@ module kinetostat_assur_friction
     real(wp) :: p_loss = 0.0_wp
     !> Total loss per radian of the input, N*m/rad.
     real(wp) :: rate_total = 0.0_wp
-    !> M1 of the same step without friction, N*m.
-    real(wp) :: m1_frictionless = 0.0_wp
+    !> The driving effort of the same step without friction: M1 (N*m), or F_drive (N) when a
+    !> linear actuator drives.
+    real(wp) :: driver_frictionless = 0.0_wp
+    !> Virtual power of the driver per unit crank rate, N*m/rad: M1, or F_drive*stroke'.
+    real(wp) :: driver_rate = 0.0_wp
     !> Motion sign of the input used for the friction senses (+1 or -1).
     real(wp) :: motion_sign = 1.0_wp
     !> Iterations of the coupled solve.
@@ -230,18 +235,30 @@ contains
       fmax = max(fmax, magnitude(new%f(:, ip)))
     end do
     floor = roundoff_rel * fmax
-    change = abs(new%m1 - old%m1) / max(abs(new%m1), floor * length)
+    change = max(relative(abs(new%m1 - old%m1), max(abs(new%m1), floor * length)), &
+                 relative(abs(new%f_drive - old%f_drive), max(abs(new%f_drive), floor)))
     where = 0
-    if (.not. change > 0.0_wp) change = 0.0_wp
     do ip = 1, size(new%f, 2)
-      c = max(magnitude(new%f(:, ip) - old%f(:, ip)) / max(magnitude(new%f(:, ip)), floor), &
-              abs(new%m(ip) - old%m(ip)) / max(abs(new%m(ip)), floor * length))
+      c = max(relative(magnitude(new%f(:, ip) - old%f(:, ip)), max(magnitude(new%f(:, ip)), floor)), &
+              relative(abs(new%m(ip) - old%m(ip)), max(abs(new%m(ip)), floor * length)))
       if (.not. c <= change) then
         change = c
         where = ip
       end if
     end do
   end subroutine largest_change
+
+  !> num / den, 0 when num is 0 (also for den = 0), huge when only den is 0.
+  pure real(wp) function relative(num, den)
+    real(wp), intent(in) :: num, den
+    if (.not. num > 0.0_wp) then
+      relative = 0.0_wp
+    else if (den > 0.0_wp) then
+      relative = num / den
+    else
+      relative = huge(1.0_wp)
+    end if
+  end function relative
 
   !> Kinetostatics with friction at one input position: the step of kinetostat_assur with
   !> the friction loads of every pair, iterated from the frictionless solution until every
@@ -279,10 +296,10 @@ contains
     type(link_balance_t) :: balances(0:2 * size(mech%dyads) + 1)
     type(pair_geometry_t), allocatable :: pg(:)
     type(assur_step_t) :: old
-    real(wp) :: power_used, scale_used, power_final, scale_final, change, previous, q, length, roundoff_moment
+    real(wp) :: power_used, scale_used, power_final, scale_final, change, previous, q, length, roundoff_driver, ds
     real(wp), allocatable :: effort(:), rate(:)
     integer :: it, where, np, i, growing
-    logical :: converged
+    logical :: converged, actuator
 
     call assur_step(mech, phi1, omega1, eps1, f_mag, m_mag, step, error)
     if (allocated(error)) return
@@ -296,9 +313,13 @@ contains
       length = max(length, magnitude(pg(i)%p - mech%pivot))
     end do
     if (.not. length > 0.0_wp) length = 1.0_wp
-    fs%m1_frictionless = step%m1
-    ! a frictionless M1 at roundoff level has no sign (self-locking test below)
-    roundoff_moment = roundoff_rel * step%power_scale
+    ! the driver: the crank's balancing moment, or a linear actuator's force (stroke' = ds)
+    actuator = mech%drive_dyad > 0
+    ds = 1.0_wp
+    if (actuator) ds = poses(mech%drive_dyad)%stroke_v(mech%drive_pair)
+    fs%driver_frictionless = driver_of(step)
+    ! a frictionless driving effort at roundoff level has no sign (self-locking test below)
+    roundoff_driver = roundoff_rel * step%power_scale / abs(ds)
     fs%motion_sign = s
     previous = 0.0_wp
     q = 0.0_wp
@@ -339,23 +360,52 @@ contains
       balances(i)%sum_m = balances(i)%sum_m + final(i)%sum_m - used(i)%sum_m
     end do
     step%residual = equilibrium_residual(balances(1:))
-    step%m1_power = step%m1_power + power_used - power_final
     step%power_scale = step%power_scale - scale_used + scale_final
-    step%mismatch = power_mismatch(step%m1, step%m1_power, step%power_scale)
+    if (actuator) then
+      step%f_drive_power = step%f_drive_power + (power_used - power_final) / ds
+      step%mismatch = power_mismatch(step%f_drive, step%f_drive_power, step%power_scale / abs(ds))
+    else
+      step%m1_power = step%m1_power + power_used - power_final
+      step%mismatch = power_mismatch(step%m1, step%m1_power, step%power_scale)
+    end if
+    fs%driver_rate = driver_of(step) * ds
     fs%effort = effort
     fs%rate = rate
     fs%loss = rate * abs(omega1)
     fs%rate_total = sum(rate)
     fs%p_loss = fs%rate_total * abs(omega1)
 
-    ! self-locking: the input at rest and friction reverses the driving moment
-    if (omega1 == 0.0_wp .and. abs(fs%m1_frictionless) > roundoff_moment .and. step%m1 /= 0.0_wp .and. &
-        sign(1.0_wp, step%m1) /= sign(1.0_wp, fs%m1_frictionless)) then
+    ! self-locking: the input at rest and friction reverses the driving effort
+    if (omega1 == 0.0_wp .and. abs(fs%driver_frictionless) > roundoff_driver .and. driver_of(step) /= 0.0_wp .and. &
+        sign(1.0_wp, driver_of(step)) /= sign(1.0_wp, fs%driver_frictionless)) then
       call fatal_error(error, exit_geometry, "friction: self-locking with the input at rest: friction reverses "// &
-        "the driving moment (M1 = "//real_str(fs%m1_frictionless)//" N*m without friction, "// &
-        real_str(step%m1)//" N*m with it; largest friction load in "//pair_text(friction, maxloc(rate, 1))//")")
+        "the driving effort ("//driver_text(actuator, fs%driver_frictionless)//" without friction, "// &
+        driver_text(actuator, driver_of(step))//" with it; largest friction load in "// &
+        pair_text(friction, maxloc(rate, 1))//")")
     end if
+
+  contains
+
+    !> The driving effort of a step: M1, or F_drive with an actuator.
+    pure real(wp) function driver_of(st)
+      type(assur_step_t), intent(in) :: st
+      driver_of = st%m1
+      if (actuator) driver_of = st%f_drive
+    end function driver_of
+
   end subroutine assur_friction_step
+
+  !> "M1 = x N*m" or "F_drive = x N" for messages.
+  pure function driver_text(actuator, x) result(text)
+    logical, intent(in) :: actuator
+    real(wp), intent(in) :: x
+    character(len=:), allocatable :: text
+    if (actuator) then
+      text = "F_drive = "//real_str(x)//" N"
+    else
+      text = "M1 = "//real_str(x)//" N*m"
+    end if
+  end function driver_text
 
   !> "pair F21" (or "M1" for index 0) for messages.
   pure function pair_text(friction, ip) result(text)

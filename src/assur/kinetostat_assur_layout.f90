@@ -5,18 +5,18 @@ module kinetostat_assur_layout
   use kinetostat_kinds, only: wp, deg_to_rad, rad_to_deg
   use kinetostat_deck, only: deck_source_t
   use kinetostat_error, only: error_t, fatal_error, exit_geometry
-  use kinetostat_text, only: int_str
-  use kinetostat_noise, only: noise_rel
+  use kinetostat_text, only: int_str, upper
+  use kinetostat_noise, only: noise_rel, force_components
   use kinetostat_vec2, only: magnitude, angle_360_deg, angle_180_deg, rotate, snap_noise, clean_zero
-  use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_component, &
+  use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_component, col_length, &
     col_moment, col_other, col_flag, col_ratio
   use kinetostat_format, only: fixed_field, display_width
   use kinetostat_labels, only: lang_ru
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_mechanism, only: mechanism_t
-  use kinetostat_assur_kinematics, only: kind_names
+  use kinetostat_assur_kinematics, only: kind_names, link_state_t, dyad_pose_t, point_state_t, point_on
   use kinetostat_assur_statics, only: pair_is_prismatic
-  use kinetostat_assur, only: assur_step_t, assur_step
+  use kinetostat_assur, only: assur_step_t, assur_step, assur_kinematics
   use kinetostat_assur_friction, only: friction_step_t, assur_friction_step
   use kinetostat_assur_deck, only: assur_deck_t, read_assur_deck, write_assur_template
   implicit none
@@ -32,6 +32,8 @@ module kinetostat_assur_layout
   real(wp), parameter :: whole_turn_tol = 1.0e-9_wp
   !> An efficiency within this of 0 is roundoff (A_loss = A_driver: the loads do no net work).
   real(wp), parameter :: eta_roundoff = 1.0e-12_wp
+  !> Decimals of the actuator's stroke (m), stroke speed (m/s) and acceleration (m/s^2).
+  integer, parameter :: stroke_decimals = 4
   !> Dyad line of the INPUT DATA echo.
   character(*), parameter :: dyad_echo_fmt = '(3x,"DYAD ",i0,": ",a," LINKS ",i0,"-",i0,", ON LINKS ",i0," AND ",i0, &
     &", MODE ",i0)'
@@ -104,10 +106,21 @@ contains
         c = c + 2
       end if
     end do
-    call table%add_column("M1", "N*m", col_moment)
+    if (self%deck%mech%drive_dyad == 0) then
+      call table%add_column("M1", "N*m", col_moment)
+    else
+      call table%add_column("F_drive", "N", col_component)
+      call table%add_column("stroke", "m", col_length)
+      call table%add_column("stroke_v", "m/s", col_other)
+      call table%add_column("stroke_a", "m/s^2", col_other)
+    end if
     if (self%deck%friction_on) then
       names = friction_csv_columns(self%deck)
-      call table%add_column(trim(names(1)), "N*m", col_moment)
+      if (self%deck%mech%drive_dyad == 0) then
+        call table%add_column(trim(names(1)), "N*m", col_moment)
+      else
+        call table%add_column(trim(names(1)), "N", col_component)
+      end if
       do c = 2, size(names) - 2
         call table%add_column(trim(names(c)), "W", col_other)
       end do
@@ -123,12 +136,19 @@ contains
         table%rows(:, k) = assur_csv_values(self%deck, steps(k))
       end if
     end do
-    call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "M1")
+    do k = 1, size(steps)
+      call put_kinematics(table, k, self%deck, steps(k))
+    end do
+    if (self%deck%mech%drive_dyad == 0) then
+      call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "M1")
+    else
+      call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "F_drive")
+    end if
     if (len_trim(self%deck%title) > 0) table%subtitle = trim(self%deck%title)
     call echo_deck(self%deck, table)
     if (self%deck%friction_on) then
       table%residual_label = "MAX EQUILIBRIUM RESIDUAL WITH FRICTION LOADS"
-      table%mismatch_label = "MAX M1 MISMATCH VS POWER BALANCE WITH FRICTION LOSSES"
+      table%mismatch_label = "MAX "//table%driver//" MISMATCH, POWER BALANCE WITH FRICTION"
       call friction_summary(self%deck, steps, fsteps, table)
     end if
   end subroutine solve
@@ -140,7 +160,11 @@ contains
     type(assur_deck_t), intent(in) :: deck
     character(len=24), allocatable :: cols(:)
     integer :: ip
-    cols = [character(len=24) :: "M1_0"]
+    if (deck%mech%drive_dyad > 0) then
+      cols = [character(len=24) :: "F_drive_0"]
+    else
+      cols = [character(len=24) :: "M1_0"]
+    end if
     do ip = 1, size(deck%friction)
       if (deck%friction(ip)%f > 0.0_wp) cols = [character(len=24) :: cols, "P_loss_"//trim(deck%pair_name(ip))]
     end do
@@ -167,12 +191,16 @@ contains
       mfloor = max(mfloor, magnitude(s%f(:, ip)))
     end do
     mfloor = noise_rel * mfloor * crank_length(deck)
-    v = [fs%m1_frictionless]
-    if (abs(v(1)) <= mfloor) v(1) = 0.0_wp
+    v = [fs%driver_frictionless]
+    if (deck%mech%drive_dyad > 0) then
+      if (abs(v(1)) <= noise_rel * max(mfloor / crank_length(deck), abs(s%f_drive))) v(1) = 0.0_wp
+    else if (abs(v(1)) <= mfloor) then
+      v(1) = 0.0_wp
+    end if
     do ip = 1, size(deck%friction)
       if (deck%friction(ip)%f > 0.0_wp) v = [v, fs%loss(ip)]
     end do
-    driver = s%m1 * fs%motion_sign
+    driver = fs%driver_rate * fs%motion_sign
     if (driver > 0.0_wp) then
       eta = 1.0_wp - fs%rate_total / driver
       if (abs(eta) <= eta_roundoff) eta = 0.0_wp
@@ -202,8 +230,8 @@ contains
     a_loss = 0.0_wp
     do k = 1, size(steps) - 1
       dphi = abs(deck%phi1_deg(k + 1) - deck%phi1_deg(k)) * deg_to_rad
-      a_driver = a_driver + 0.5_wp * dphi * (steps(k)%m1 * fsteps(k)%motion_sign + &
-                                             steps(k + 1)%m1 * fsteps(k + 1)%motion_sign)
+      a_driver = a_driver + 0.5_wp * dphi * (fsteps(k)%driver_rate * fsteps(k)%motion_sign + &
+                                             fsteps(k + 1)%driver_rate * fsteps(k + 1)%motion_sign)
       a_loss = a_loss + 0.5_wp * dphi * (fsteps(k)%rate_total + fsteps(k + 1)%rate_total)
     end do
   end subroutine friction_work
@@ -287,7 +315,8 @@ contains
     end do
   end subroutine assur_solve
 
-  !> CSV column names: phi1; per pair F, FG, [Fx, Fy], [FN, FM for prismatic pairs]; M1.
+  !> CSV column names: phi1; per pair F, FG, [Fx, Fy], [FN, FM for prismatic pairs]; M1, or
+  !> with a linear actuator as driver F_drive, stroke, stroke_v, stroke_a.
   pure function assur_csv_columns(deck) result(cols)
     !> Validated deck.
     type(assur_deck_t), intent(in) :: deck
@@ -301,7 +330,11 @@ contains
       if (assur_pair_prismatic(deck, ip)) cols = [character(len=24) :: cols, trim(deck%pair_name(ip))//"N", &
                                                   trim(deck%pair_name(ip))//"M"]
     end do
-    cols = [character(len=24) :: cols, "M1"]
+    if (deck%mech%drive_dyad == 0) then
+      cols = [character(len=24) :: cols, "M1"]
+    else
+      cols = [character(len=24) :: cols, "F_drive", "stroke", "stroke_v", "stroke_a"]
+    end if
   end function assur_csv_columns
 
   !> The CSV row of one step, in the order of assur_csv_columns. Forces below `noise_rel`
@@ -317,7 +350,7 @@ contains
     real(wp) :: floor, f(2), mfloor, nn, mm
     integer :: ip, np, pos
     np = size(s%f, 2)
-    allocate (v(1 + 6 * np + 1))
+    allocate (v(1 + 6 * np + 4))
     floor = 0.0_wp
     do ip = 1, np
       floor = max(floor, magnitude(s%f(:, ip)))
@@ -349,10 +382,80 @@ contains
         pos = pos + 2
       end if
     end do
-    v(pos + 1) = s%m1
-    if (abs(v(pos + 1)) <= mfloor) v(pos + 1) = 0.0_wp
-    v = clean_zero(v(1:pos + 1))
+    if (deck%mech%drive_dyad == 0) then
+      v(pos + 1) = s%m1
+      if (abs(v(pos + 1)) <= mfloor) v(pos + 1) = 0.0_wp
+      v = clean_zero(v(1:pos + 1))
+    else
+      v(pos + 1:pos + 4) = [s%f_drive, s%stroke, s%stroke_v, s%stroke_a]
+      if (abs(v(pos + 1)) <= floor) v(pos + 1) = 0.0_wp
+      v = clean_zero(v(1:pos + 4))
+    end if
   end function assur_csv_values
+
+  !> The kinematics columns of step `k`, in the deck's global frame: the reference point
+  !> J<pair> of every pair (x_J21 for the pair of F21: the pin of a revolute pair, the
+  !> slider's reference point of a prismatic pair; the crank's pair with the frame is the
+  !> pivot), the centre of mass S<id> of every moving link and its acceleration, the angle
+  !> (of the link's x axis), angular velocity and acceleration of every moving link, and the
+  !> components of every pair force as the F<pair>x, F<pair>y columns give them.
+  pure subroutine put_kinematics(table, k, deck, s)
+    !> The step table (columns appended on first use).
+    type(step_table_t), intent(inout) :: table
+    !> Row.
+    integer, intent(in) :: k
+    !> Validated deck.
+    type(assur_deck_t), intent(in) :: deck
+    !> The computed step.
+    type(assur_step_t), intent(in) :: s
+    type(link_state_t) :: states(0:2 * size(deck%mech%dyads) + 1)
+    type(dyad_pose_t) :: poses(size(deck%mech%dyads))
+    type(point_state_t) :: ps
+    type(error_t), allocatable :: error
+    real(wp) :: w2, floor, f(2)
+    integer :: i, ip, d, np
+    call assur_kinematics(deck%mech, s%phi1, states, poses, error)
+    if (allocated(error)) return ! cannot happen: the step was solved at this angle
+    w2 = s%omega1**2
+    np = size(s%f, 2)
+    do ip = 1, np
+      d = (ip - 1) / 3 + 1
+      if (ip == np) then
+        call table%put_point(k, joint_name(deck%pair_name(ip)), deck%mech%pivot)
+      else
+        call table%put_point(k, joint_name(deck%pair_name(ip)), poses(d)%p(:, ip - 3 * (d - 1)))
+      end if
+    end do
+    do i = 1, ubound(states, 1)
+      ps = point_on(states(i), deck%mech%links(i)%s)
+      call table%put_point(k, "S"//int_str(deck%mech%links(i)%id), ps%p)
+    end do
+    do i = 1, ubound(states, 1)
+      call table%put_link(k, int_str(deck%mech%links(i)%id), states(i)%th, states(i)%u * s%omega1, &
+                          states(i)%eq * w2 + states(i)%u * s%eps1)
+    end do
+    do i = 1, ubound(states, 1)
+      ps = point_on(states(i), deck%mech%links(i)%s)
+      call table%put_acceleration(k, "S"//int_str(deck%mech%links(i)%id), ps%a * w2 + ps%v * s%eps1)
+    end do
+    floor = 0.0_wp
+    do ip = 1, np
+      floor = max(floor, magnitude(s%f(:, ip)))
+    end do
+    floor = noise_rel * floor
+    do ip = 1, np
+      f = rotate(snap_noise(deck%pair_sign(ip) * s%f(:, ip), floor), -deck%pair_frame(ip))
+      call table%put_components(k, trim(deck%pair_name(ip)), force_components(f, floor), &
+                                deck%pair_frame(ip) * rad_to_deg)
+    end do
+  end subroutine put_kinematics
+
+  !> The joint of a pair: "J21" for the pair of F21.
+  pure function joint_name(pair_name) result(name)
+    character(*), intent(in) :: pair_name
+    character(len=:), allocatable :: name
+    name = "J"//trim(pair_name(2:))
+  end function joint_name
 
   !> Length scale of the crank: its farthest attachment point from the pivot (1 m if none).
   pure real(wp) function crank_length(deck)
@@ -402,6 +505,10 @@ contains
     call table%echo_int("N", deck%n, "steps")
     call table%echo_logical("ANGLES_SIGNED", deck%angles_signed, "")
     call table%echo_logical("COMPONENTS", deck%components, "")
+    if (deck%mech%drive_dyad > 0) then
+      call table%echo_int("DRIVE_DYAD", deck%mech%drive_dyad, "")
+      call table%echo_int("DRIVE_PAIR", deck%mech%drive_pair, "")
+    end if
     do d = 1, size(deck%mech%dyads)
       associate (dy => deck%mech%dyads(d), lk => deck%mech%links)
         write (line, dyad_echo_fmt) d, kind_names(dy%geom%kind), lk(2 * d)%id, lk(2 * d + 1)%id, &
@@ -469,22 +576,31 @@ contains
     type(step_table_t), intent(in) :: table
     integer, intent(in) :: lang
     type(text_buffer_t), intent(inout) :: out
-    character(len=:), allocatable :: line1, line2, watt, newton_m, deg
+    character(len=:), allocatable :: line1, line2, watt, unit, deg, driver, zero
     integer :: k, c, first, last
+    if (deck%mech%drive_dyad > 0) then
+      driver = "F_DRIVE"
+      zero = "F_drive_0"
+    else
+      driver = "M1"
+      zero = "M1_0"
+    end if
     call out%put("")
     if (lang == lang_ru) then
-      call out%put(" ТРЕНИЕ: ПОТЕРИ МОЩНОСТИ В ПАРАХ, M1 БЕЗ ТРЕНИЯ, "// &
-                   "МГНОВЕННЫЙ КПД")
+      call out%put(" ТРЕНИЕ: ПОТЕРИ МОЩНОСТИ В ПАРАХ, "//driver// &
+                   " БЕЗ ТРЕНИЯ, МГНОВЕННЫЙ КПД")
       watt = "Вт"
-      newton_m = "Н*м"
+      unit = "Н"
+      if (deck%mech%drive_dyad == 0) unit = "Н*м"
       deg = "град"
     else
-      call out%put(" FRICTION: POWER LOSS IN THE PAIRS, M1 WITHOUT FRICTION, INSTANTANEOUS EFFICIENCY")
+      call out%put(" FRICTION: POWER LOSS IN THE PAIRS, "//driver//" WITHOUT FRICTION, INSTANTANEOUS EFFICIENCY")
       watt = "W"
-      newton_m = "N*m"
+      unit = "N"
+      if (deck%mech%drive_dyad == 0) unit = "N*m"
       deg = "deg"
     end if
-    first = table%column_index("M1_0")
+    first = table%column_index(zero)
     last = table%column_index("eta")
     line1 = adjustr(pad9("PHI1"))
     line2 = right(deg, phi_width)
@@ -492,8 +608,8 @@ contains
       line1 = line1//right("P_"//table%columns(c)%name(8:), field_width)
       line2 = line2//right(watt, field_width)
     end do
-    line1 = line1//right("P_LOSS", field_width)//right("M1_0", field_width)//right("ETA", field_width)
-    line2 = line2//right(watt, field_width)//right(newton_m, field_width)
+    line1 = line1//right("P_LOSS", field_width)//right(upper(zero), field_width)//right("ETA", field_width)
+    line2 = line2//right(watt, field_width)//right(unit, field_width)
     call out%put(line1)
     call out%put(trim(line2))
     do k = 1, table%row_count()
@@ -510,7 +626,9 @@ contains
   end subroutine write_friction_results
 
   !> RESULTS: per step the crank angle, every pair's magnitude and M1; under them the angles;
-  !> for prismatic pairs two more lines with the normal force and the reaction moment.
+  !> for prismatic pairs two more lines with the normal force and the reaction moment. With a
+  !> linear actuator as driver the last column holds F_drive, stroke, stroke speed and
+  !> acceleration (lines 1-4) instead of M1.
   pure subroutine write_results(self, table, lang, out)
     class(assur_mechanism_t), intent(in) :: self
     type(step_table_t), intent(in) :: table
@@ -519,11 +637,12 @@ contains
     character(len=:), allocatable :: line1, line2, line3, line4
     character(len=field_width) :: name
     character(len=len(self%deck%pair_name)) :: full_name
-    character(len=:), allocatable :: deg, newton, newton_m
+    character(len=:), allocatable :: deg, newton, newton_m, metre
     real(wp) :: mag, ang, nn, mm
     integer :: k, ip, np, pos
-    logical :: any_p, prismatic
+    logical :: any_p, prismatic, drive
 
+    drive = self%deck%mech%drive_dyad > 0
     np = size(self%deck%pair_name)
     any_p = .false.
     do ip = 1, np
@@ -533,10 +652,12 @@ contains
       deg = "град"
       newton = "Н"
       newton_m = "Н*м"
+      metre = "м"
     else
       deg = "deg"
       newton = "N"
       newton_m = "N*m"
+      metre = "m"
     end if
     line1 = adjustr(pad9("PHI1"))
     line2 = repeat(" ", phi_width)
@@ -551,11 +672,19 @@ contains
       line3 = line3//p_label(name, "N", prismatic)
       line4 = line4//p_label(name, "M", prismatic)
     end do
-    call out%put(trim(line1//adjustr(pad12("M1"))))
-    call out%put(trim(line2))
-    if (any_p) then
-      call out%put(line3)
-      call out%put(line4)
+    if (drive) then
+      ! the actuator's force, stroke, stroke speed and acceleration in the last column
+      call out%put(trim(line1//adjustr(pad12("F_DRIVE"))))
+      call out%put(trim(line2//adjustr(pad12("STROKE"))))
+      call out%put(line3//adjustr(pad12("STROKE_V")))
+      call out%put(line4//adjustr(pad12("STROKE_A")))
+    else
+      call out%put(trim(line1//adjustr(pad12("M1"))))
+      call out%put(trim(line2))
+      if (any_p) then
+        call out%put(line3)
+        call out%put(line4)
+      end if
     end if
     line1 = right(deg, phi_width)
     line2 = repeat(" ", phi_width)
@@ -563,8 +692,13 @@ contains
       line1 = line1//right(newton, field_width)
       line2 = line2//right(deg, field_width)
     end do
-    call out%put(trim(line1//right(newton_m, field_width)))
-    call out%put(trim(line2))
+    if (drive) then
+      call out%put(trim(line1//right(newton, field_width)))
+      call out%put(trim(line2//right(metre, field_width)))
+    else
+      call out%put(trim(line1//right(newton_m, field_width)))
+      call out%put(trim(line2))
+    end if
     do k = 1, table%row_count()
       associate (v => table%rows(:, k))
         line1 = fixed_field(v(1), phi_width, 2)
@@ -590,11 +724,18 @@ contains
             line4 = line4//repeat(" ", field_width)
           end if
         end do
-        call out%put(line1//fixed_field(v(pos + 1), field_width, 2))
-        call out%put(line2)
-        if (any_p) then
-          call out%put(trim(line3))
-          call out%put(trim(line4))
+        if (drive) then
+          call out%put(line1//fixed_field(v(pos + 1), field_width, 2))
+          call out%put(line2//fixed_field(v(pos + 2), field_width, stroke_decimals))
+          call out%put(line3//fixed_field(v(pos + 3), field_width, stroke_decimals))
+          call out%put(line4//fixed_field(v(pos + 4), field_width, stroke_decimals))
+        else
+          call out%put(line1//fixed_field(v(pos + 1), field_width, 2))
+          call out%put(line2)
+          if (any_p) then
+            call out%put(trim(line3))
+            call out%put(trim(line4))
+          end if
         end if
       end associate
     end do

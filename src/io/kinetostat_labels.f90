@@ -71,9 +71,11 @@ contains
         "НЕ ПОЛОЖИТЕЛЬНА"
     case ("MAX EQUILIBRIUM RESIDUAL WITH FRICTION LOADS")
       text = "НАИБ. НЕВЯЗКА РАВНОВЕСИЯ С СИЛАМИ ТРЕНИЯ"
-    case ("MAX M1 MISMATCH VS POWER BALANCE WITH FRICTION LOSSES")
-      text = "НАИБ. РАСХОЖДЕНИЕ M1 С РАВЕНСТВОМ МОЩНОСТЕЙ "// &
-        "С ТРЕНИЕМ"
+    case ("MAX M1 MISMATCH, POWER BALANCE WITH FRICTION")
+      text = "НАИБ. РАСХОЖДЕНИЕ M1, БАЛАНС МОЩНОСТЕЙ С ТРЕНИЕМ"
+    case ("MAX F_drive MISMATCH, POWER BALANCE WITH FRICTION")
+      text = "НАИБ. РАСХОЖДЕНИЕ F_drive, БАЛАНС МОЩНОСТЕЙ С "// &
+        "ТРЕНИЕМ"
     case ("J")
       text = "Дж"
     ! units (ГОСТ symbols, as the 1991 printouts write them)

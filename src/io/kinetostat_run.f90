@@ -14,6 +14,7 @@ module kinetostat_run
   use kinetostat_table_writer, only: write_table
   use kinetostat_json_writer, only: write_json
   use kinetostat_labels, only: lang_en
+  use kinetostat_override, only: override_t, mark_overrides
   implicit none
   private
   public :: run_options_t, run_mechanism, guard_finite
@@ -34,6 +35,11 @@ module kinetostat_run
     integer :: format = format_table
     !> Language of the legacy table (lang_en, lang_ru).
     integer :: lang = lang_en
+    !> The --set overrides (already written into the deck; marked in the outputs).
+    type(override_t), allocatable :: overrides(:)
+    !> CSV and JSON add the kinematics columns (positions, link angles and speeds,
+    !> accelerations of the centres of mass, force components).
+    logical :: kinematics = .false.
   end type run_options_t
 
 contains
@@ -82,11 +88,14 @@ contains
     if (allocated(error)) return
     call guard_finite(table, error)
     if (allocated(error)) return
+    if (allocated(options%overrides)) then
+      if (size(options%overrides) > 0) call mark_overrides(table, options%overrides)
+    end if
     select case (options%format)
     case (format_csv)
-      call write_csv(table, out)
+      call write_csv(table, out, options%kinematics)
     case (format_json)
-      call write_json(mech%title(options%lang), table, out)
+      call write_json(mech%title(options%lang), table, out, options%kinematics)
     case default
       call write_table(mech, table, options%lang, out)
     end select
