@@ -305,6 +305,8 @@ contains
     character(*), parameter :: other_values(3) = [character(len=6) :: "1", ".true.", "'x'"]
     character(len=:), allocatable :: line, text, value
     integer :: mid, cut
+    probe_more = .false.
+    if (self%stage == 4) return
     probe_more = .true.
     select case (self%stage)
     case (1)
@@ -452,7 +454,11 @@ contains
     any_comma = decimal_comma_at(value, "", "repeat")
     hint = ""
     if (any_comma > 0) hint = "; a decimal comma? write "//value(1:any_comma - 1)//"."//value(any_comma + 1:)
-    if (len(name) > 0 .and. token == lower(name)) then
+    if (index(msg, "out of range") > 0) then
+      reason = "subscript out of range ("//trim(msg)//")"
+    else if (len(name) > 0 .and. (token == lower(name) .or. .not. any(reads) .and. index(text, "=") > 0)) then
+      ! gfortran says "Cannot match" or, after a list of values, "Bad data for" the previous
+      ! variable; nothing at all reads in this place
       reason = "unknown variable '"//name//"' in this group (a typing error?)"
     else if (comma > 0 .and. .not. reads(3) .and. .not. reads(4)) then
       reason = "decimal comma? write "//value(1:comma - 1)//"."//value(comma + 1:)
