@@ -193,7 +193,11 @@ contains
                              states(dy%on(2)), dy%at(:, 2), dy%ang(2))
         if (poses(d)%status /= pose_ok) then
           if (poses(d)%status == pose_no_assembly) then
-            call fatal_error(error, exit_geometry, dyad_label(mech, d)//": cannot be assembled")
+            if (allocated(poses(d)%detail)) then
+              call fatal_error(error, exit_geometry, dyad_label(mech, d)//": cannot be assembled: "//poses(d)%detail)
+            else
+              call fatal_error(error, exit_geometry, dyad_label(mech, d)//": cannot be assembled")
+            end if
           else
             call fatal_error(error, exit_geometry, dyad_label(mech, d)// &
               ": dead (toggle) position, transfer functions undetermined")
