@@ -13,11 +13,13 @@ program kinetostat_tests
   use test_assur, only: run_assur_tests
   use test_assur_ext, only: run_assur_ext_tests
   use test_io, only: run_io_tests
+  use test_kinematics, only: run_kinematics_tests
+  use test_svg, only: run_svg_tests
   use, intrinsic :: iso_fortran_env, only: error_unit
   implicit none
   !> Suite names, in the order they run.
   character(*), parameter :: suite_names(*) = [character(len=11) :: &
-    "foundation", "pr3207", "pr3050", "sixbar", "gears", "cam", "assur", "assur_ext", "io"]
+    "foundation", "pr3207", "pr3050", "sixbar", "gears", "cam", "assur", "assur_ext", "io", "kinematics", "svg"]
   type(test_counts_t) :: t
   logical :: selected(size(suite_names))
   integer :: i
@@ -76,6 +78,8 @@ contains
     case ("assur"); call run_assur_tests(t)
     case ("assur_ext"); call run_assur_ext_tests(t)
     case ("io"); call run_io_tests(t)
+    case ("kinematics"); call run_kinematics_tests(t)
+    case ("svg"); call run_svg_tests(t)
     case default; error stop "run_suite: no suite '"//name//"'"
     end select
   end subroutine run_suite

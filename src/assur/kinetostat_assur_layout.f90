@@ -14,9 +14,11 @@ module kinetostat_assur_layout
   use kinetostat_labels, only: lang_ru
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_mechanism, only: mechanism_t
-  use kinetostat_assur_kinematics, only: kind_names, link_state_t, dyad_pose_t, point_state_t, point_on
+  use kinetostat_sketch, only: sketch_t
+  use kinetostat_assur_kinematics, only: kind_names, link_state_t, dyad_pose_t, point_state_t, point_on, &
+    kind_rrp, kind_rpr, kind_prp, kind_rpp
   use kinetostat_assur_statics, only: pair_is_prismatic
-  use kinetostat_assur, only: assur_step_t, assur_step, assur_kinematics
+  use kinetostat_assur, only: assur_step_t, assur_step, assur_kinematics, link_a, link_b
   use kinetostat_assur_deck, only: assur_deck_t, read_assur_deck, write_assur_template
   implicit none
   private
@@ -41,6 +43,7 @@ module kinetostat_assur_layout
     procedure :: solve
     procedure :: write_results
     procedure :: write_template
+    procedure :: sketch
   end type assur_mechanism_t
 
 contains
@@ -67,6 +70,100 @@ contains
     type(text_buffer_t), intent(inout) :: out
     call write_assur_template(out)
   end subroutine write_template
+
+  !> The topology for a drawing: every moving link joins the joints J<pair> of its pairs (a
+  !> dyad's link a: pairs 1, 2; link b: pairs 2, 3; the crank: its pivot; each link also the
+  !> joints of the later dyads attached to it). A link that slides on a prismatic pair is a
+  !> block: RRP link b on its guide, RPR link a along link b's x axis, PRP both links, RPP
+  !> link a along the slot of link b and link b on its guide. Pivots: the revolute pairs with
+  !> the frame; guides: every prismatic pair's line.
+  pure subroutine sketch(self, out)
+    class(assur_mechanism_t), intent(in) :: self
+    type(sketch_t), intent(out) :: out
+    character(len=16), allocatable :: joints(:)
+    integer :: nd, d, i, q, e
+    real(wp) :: slot_deg
+    associate (mech => self%deck%mech, names => self%deck%pair_name)
+      nd = size(mech%dyads)
+      do i = 1, 2 * nd + 1
+        ! the link's own pairs, then the outer pairs of later dyads attached to it
+        if (i == 1) then
+          joints = [character(len=16) :: joint_name(names(3 * nd + 1))]
+        else
+          d = i / 2
+          q = i - 2 * d + 1
+          joints = [character(len=16) :: joint_name(names(3 * d - 3 + q)), joint_name(names(3 * d - 2 + q))]
+        end if
+        do e = 1, nd
+          if (mech%dyads(e)%on(1) == i) joints = [character(len=16) :: joints, joint_name(names(3 * e - 2))]
+          if (mech%dyads(e)%on(2) == i) joints = [character(len=16) :: joints, joint_name(names(3 * e))]
+        end do
+        call add_sketch_link(out, self%deck, i, joints)
+      end do
+      call out%add_pivot(joint_name(names(3 * nd + 1)))
+      do d = 1, nd
+        associate (dy => mech%dyads(d))
+          do q = 1, 2
+            e = 3 * d - 2 + 2 * (q - 1)
+            if (assur_pair_prismatic(self%deck, e)) then
+              call out%add_guide(joint_name(names(e)), dy%ang(q) * rad_to_deg, link_label(self%deck, dy%on(q)))
+            else if (dy%on(q) == 0) then
+              call out%add_pivot(joint_name(names(e)))
+            end if
+          end do
+          if (assur_pair_prismatic(self%deck, 3 * d - 1)) then
+            slot_deg = 0.0_wp
+            if (dy%geom%kind == kind_rpp) slot_deg = dy%geom%slot_angle * rad_to_deg
+            call out%add_guide(joint_name(names(3 * d - 1)), slot_deg, link_label(self%deck, link_b(d)))
+          end if
+        end associate
+      end do
+      out%down = mech%down
+    end associate
+  end subroutine sketch
+
+  !> One moving link (internal index i) of the sketch: a bar through `joints`, or a block.
+  pure subroutine add_sketch_link(out, deck, i, joints)
+    type(sketch_t), intent(inout) :: out
+    type(assur_deck_t), intent(in) :: deck
+    integer, intent(in) :: i
+    character(*), intent(in) :: joints(:)
+    integer :: d, kind
+    character(len=:), allocatable :: name
+    name = link_label(deck, i)
+    if (i == 1) then
+      call out%add_link(name, joints)
+      return
+    end if
+    d = i / 2
+    kind = deck%mech%dyads(d)%geom%kind
+    associate (dy => deck%mech%dyads(d))
+      if (i == link_a(d) .and. kind == kind_rpr) then
+        call out%add_link(name, joints, 0.0_wp, link_label(deck, link_b(d)))
+      else if (i == link_a(d) .and. kind == kind_prp) then
+        call out%add_link(name, joints, dy%ang(1) * rad_to_deg, link_label(deck, dy%on(1)))
+      else if (i == link_a(d) .and. kind == kind_rpp) then
+        call out%add_link(name, joints, (dy%ang(2) + dy%geom%slot_angle) * rad_to_deg, link_label(deck, dy%on(2)))
+      else if (i == link_b(d) .and. (kind == kind_rrp .or. kind == kind_prp .or. kind == kind_rpp)) then
+        ! the block sits on the guide (pair 3) first
+        call out%add_link(name, [joints(2), joints(1), joints(3:)], dy%ang(2) * rad_to_deg, link_label(deck, dy%on(2)))
+      else
+        call out%add_link(name, joints)
+      end if
+    end associate
+  end subroutine add_sketch_link
+
+  !> The name of link `i` (internal index) in phi<name>, omega<name>, eps<name>: its number;
+  !> "L1" for a link numbered 1 that is not the crank (`phi1` is the input angle, the crank's);
+  !> "" for the frame.
+  pure function link_label(deck, i) result(label)
+    type(assur_deck_t), intent(in) :: deck
+    integer, intent(in) :: i
+    character(len=:), allocatable :: label
+    label = ""
+    if (i > 0) label = int_str(deck%mech%links(i)%id)
+    if (i > 1 .and. label == "1") label = "L1"
+  end function link_label
 
   !> Every step into the step table, with the INPUT DATA echo and the self-check.
   subroutine solve(self, table, error)
@@ -247,8 +344,9 @@ contains
   !> J<pair> of every pair (x_J21 for the pair of F21: the pin of a revolute pair, the
   !> slider's reference point of a prismatic pair; the crank's pair with the frame is the
   !> pivot), the centre of mass S<id> of every moving link and its acceleration, the angle
-  !> (of the link's x axis), angular velocity and acceleration of every moving link, and the
-  !> components of every pair force as the F<pair>x, F<pair>y columns give them.
+  !> (of the link's x axis), angular velocity and acceleration of every moving link (named
+  !> by link_label), and the components of every pair force as the F<pair>x, F<pair>y columns
+  !> give them.
   pure subroutine put_kinematics(table, k, deck, s)
     !> The step table (columns appended on first use).
     type(step_table_t), intent(inout) :: table
@@ -281,7 +379,7 @@ contains
       call table%put_point(k, "S"//int_str(deck%mech%links(i)%id), ps%p)
     end do
     do i = 1, ubound(states, 1)
-      call table%put_link(k, int_str(deck%mech%links(i)%id), states(i)%th, states(i)%u * s%omega1, &
+      call table%put_link(k, link_label(deck, i), states(i)%th, states(i)%u * s%omega1, &
                           states(i)%eq * w2 + states(i)%u * s%eps1)
     end do
     do i = 1, ubound(states, 1)

@@ -14,6 +14,7 @@ module kinetostat_pr3050_layout
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_table_writer, only: put_heading
   use kinetostat_mechanism, only: mechanism_t
+  use kinetostat_sketch, only: sketch_t
   use kinetostat_pr3050, only: pr3050_params_t, pr3050_position_t, pr3050_step_t, pr3050_step, &
     pr3050_check_position, pr3050_position
   use kinetostat_pr3050_deck, only: pr3050_deck_t, read_pr3050_deck, write_pr3050_template
@@ -73,6 +74,7 @@ module kinetostat_pr3050_layout
     procedure :: solve
     procedure :: write_results
     procedure :: write_template
+    procedure :: sketch
   end type pr3050_mechanism_t
 
 contains
@@ -99,6 +101,21 @@ contains
     type(text_buffer_t), intent(inout) :: out
     call write_pr3050_template(out)
   end subroutine write_template
+
+  !> The topology for a drawing: cylinder 1 from A along the axis (through S1), rod 2 from B
+  !> (through S2) sliding in it, rocker 3 C-B with its centre of mass S3; pivots C, A; the
+  !> rod's guide is the cylinder's axis (phi1).
+  pure subroutine sketch(self, out)
+    class(pr3050_mechanism_t), intent(in) :: self
+    type(sketch_t), intent(out) :: out
+    call out%add_link("1", [character(len=2) :: "A", "S1"])
+    call out%add_link("2", [character(len=2) :: "B", "S2"])
+    call out%add_link("3", [character(len=2) :: "C", "B", "S3", "C"])
+    call out%add_pivot("C")
+    call out%add_pivot("A")
+    call out%add_guide("A", 0.0_wp, "1")
+    out%down = [cos(self%deck%p%gamma), sin(self%deck%p%gamma)]
+  end subroutine sketch
 
   !> All steps of a validated deck; a geometry error (exit 3) names the step and rocker angle.
   subroutine pr3050_solve(deck, steps, error)

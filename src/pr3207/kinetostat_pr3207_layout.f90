@@ -10,6 +10,7 @@ module kinetostat_pr3207_layout
   use kinetostat_labels, only: lang_ru
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_mechanism, only: mechanism_t
+  use kinetostat_sketch, only: sketch_t
   use kinetostat_table_writer, only: put_two_line_step
   use kinetostat_pr3207, only: pr3207_params_t, pr3207_position_t, pr3207_step_t, pr3207_step, pr3207_position
   use kinetostat_pr3207_deck, only: pr3207_deck_t, read_pr3207_deck, write_pr3207_template
@@ -50,6 +51,7 @@ module kinetostat_pr3207_layout
     procedure :: solve
     procedure :: write_results
     procedure :: write_template
+    procedure :: sketch
   end type pr3207_mechanism_t
 
 contains
@@ -76,6 +78,24 @@ contains
     type(text_buffer_t), intent(inout) :: out
     call write_pr3207_template(out)
   end subroutine write_template
+
+  !> The topology for a drawing: crank A-B, block 2 at B sliding along the lever C-D, block 4
+  !> at D sliding along x in the ram's slot, the ram from its guide (x = 0, along y) to D;
+  !> pivots A, C; gravity along +x.
+  pure subroutine sketch(self, out)
+    class(pr3207_mechanism_t), intent(in) :: self
+    type(sketch_t), intent(out) :: out
+    call out%add_link("1", [character(len=2) :: "A", "B"])
+    call out%add_link("2", ["B"], 0.0_wp, "3")
+    call out%add_link("3", [character(len=2) :: "C", "D"])
+    call out%add_link("4", ["D"], 0.0_wp, "")
+    call out%add_link("5", [character(len=2) :: "S5", "D"])
+    call out%add_pivot("A")
+    call out%add_pivot("C")
+    call out%add_guide("S5", 90.0_wp, "")
+    call out%add_guide("D", 0.0_wp, "5")
+    out%down = [1.0_wp, 0.0_wp]
+  end subroutine sketch
 
   !> All steps of a validated deck.
   pure subroutine pr3207_solve(deck, steps)
@@ -129,9 +149,10 @@ contains
   end function pr3207_csv_values
 
   !> The kinematics columns of step `k` (frame: origin A, x from A to C): joints A, B, C, D
-  !> and centres of mass S1 (= A), S3; links 1 (crank), 2 (block, turns with the lever) and
-  !> 3 (lever); accelerations of S1, S3 and of the ram 5 (translating along y); components of
-  !> the pair forces in the same frame. Blocks 4 and the ram 5 translate (no angle columns).
+  !> and centres of mass S1 (= A), S3, S5 (the ram's, taken on the line x = 0 through A, as
+  !> the generic twin deck does: only its travel y5 = y_D is defined); links 1 (crank), 2
+  !> (block, turns with the lever) and 3 (lever); accelerations of S1, S3, S5; components of
+  !> the pair forces in the same frame. Block 4 and the ram 5 translate (no angle columns).
   pure subroutine put_kinematics(table, k, p, s)
     !> The step table (columns appended on first use).
     type(step_table_t), intent(inout) :: table
@@ -152,6 +173,7 @@ contains
     call table%put_point(k, "D", pos%d)
     call table%put_point(k, "S1", [0.0_wp, 0.0_wp])
     call table%put_point(k, "S3", pos%s3)
+    call table%put_point(k, "S5", [0.0_wp, pos%y5])
     call table%put_link(k, "1", s%phi1, p%omega1, 0.0_wp)
     call table%put_link(k, "2", pos%phi3, pos%u31 * p%omega1, pos%eps31 * w2)
     call table%put_link(k, "3", pos%phi3, pos%u31 * p%omega1, pos%eps31 * w2)

@@ -12,9 +12,10 @@ module kinetostat_sixbar_layout
   use kinetostat_labels, only: lang_ru
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_mechanism, only: mechanism_t
+  use kinetostat_sketch, only: sketch_t
   use kinetostat_table_writer, only: put_heading, put_two_line_step
   use kinetostat_sixbar, only: sixbar_params_t, sixbar_step_t, sixbar_step, sixbar_ok, sixbar_open1, &
-    sixbar_dead1, sixbar_open2, sixbar_dead2, sixbar_frame2_to_frame1
+    sixbar_dead1, sixbar_open2, sixbar_dead2, sixbar_frame2_to_frame1, sixbar_down1
   use kinetostat_sixbar_deck, only: sixbar_deck_t, read_sixbar_deck, write_sixbar_template
   implicit none
   private
@@ -72,6 +73,7 @@ module kinetostat_sixbar_layout
     procedure :: solve
     procedure :: write_results
     procedure :: write_template
+    procedure :: sketch
   end type sixbar_mechanism_t
 
 contains
@@ -99,6 +101,24 @@ contains
     type(text_buffer_t), intent(inout) :: out
     call write_sixbar_template(out)
   end subroutine write_template
+
+  !> The topology for a drawing (frame 1): crank A-B, rod B-C, rocker C-D-E, rod E-H, slider 5
+  !> at H on the guide along x2 (at beta - 180 deg); pivots A, D; gravity -y0.
+  pure subroutine sketch(self, out)
+    class(sixbar_mechanism_t), intent(in) :: self
+    type(sketch_t), intent(out) :: out
+    real(wp) :: x2
+    x2 = atan2(self%deck%p%a, self%deck%p%b) * rad_to_deg - 180.0_wp
+    call out%add_link("1", ["A", "B"])
+    call out%add_link("2", ["B", "C"])
+    call out%add_link("3", ["C", "D", "E"])
+    call out%add_link("4", ["E", "H"])
+    call out%add_link("5", ["H"], x2, "")
+    call out%add_pivot("A")
+    call out%add_pivot("D")
+    call out%add_guide("H", x2, "")
+    out%down = sixbar_down1(self%deck%p)
+  end subroutine sketch
 
   !> All steps of a validated deck; a step that cannot be assembled (or is a dead position)
   !> is a geometry error naming the step number and the crank angle.
