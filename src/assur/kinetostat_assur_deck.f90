@@ -241,7 +241,9 @@ contains
     type(assur_deck_t), intent(out) :: deck
     !> Input error naming file, group, variable and reason.
     type(error_t), allocatable, intent(out) :: error
-    character(len=80) :: title
+    !> As long as the whole deck: an unterminated quote reads the rest of the deck into it
+    !> (a shorter variable makes gfortran print a runtime warning); at most 80 are kept.
+    character(len=size(source%lines) * len(source%lines) + 1) :: title
     !> Integer deck variables, read as reals (see require_whole).
     real(wp) :: frame_id, crank_id, n
     !> Linear actuator as driver: dyad number and pair 1..3 (whole numbers, read as reals).
@@ -296,6 +298,10 @@ contains
       call namelist_failure(ctx, ios, msg, error)
       return
     end if
+
+    call require_rule(ctx, "title", len_trim(title) <= len(deck%title), "longer than "// &
+      int_str(len(deck%title))//" characters", error)
+    if (allocated(error)) return
 
     ! ---- frame, crank, speed law, gravity, steps
     call require_whole(ctx, "frame_id", frame_id, 0, huge(1), frame_no, error); if (allocated(error)) return

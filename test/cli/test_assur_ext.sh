@@ -197,3 +197,10 @@ expect_input_error assur-coordinates "&assur: coordinates: must be 'local'" "$(d
 expect_input_error assur-global-no-b '&assur: dyad\(1\)%b: missing: the global form gives the inner joint B' "$(deck_with gl_nb data/assur_fourbar_global.nml '/dyad(1)%b =/d')"
 expect_input_error assur-global-l2 '&assur: dyad\(1\)%l2: derived from at2 and b in the global form' "$(deck_with gl_l2 data/assur_fourbar_global.nml 's/dyad(1)%kind = 1,/dyad(1)%kind = 1, dyad(1)%l2 = 0.35,/')"
 expect_input_error assur-global-b-rpr '&assur: dyad\(1\)%b: not used by this dyad \(kind RPR\)' "$(deck_with gl_br data/assur_pr3050.nml "s/dyad(1)%e = 0/dyad(1)%e = 0, dyad(1)%b = 1, 1/; s/frame_id = 4/coordinates = 'global', phi_ref = 0, frame_id = 4/")"
+
+# --- a title longer than 80 characters is an input error; an unterminated quote (a truncated
+# deck) is a namelist error on one line, without gfortran's runtime warning
+expect_input_error assur-title-long '&assur: title: longer than 80 characters' \
+  "$(deck_with tl_long data/assur_fourbar.nml "s/title = '[^']*'/title = '$(printf 'x%.0s' {1..81})'/")"
+head -c 286 data/assur_fourbar.nml >"$cli_tmp/tl_cut.nml"
+expect_input_error assur-title-unterminated '&assur: namelist group not terminated' "$cli_tmp/tl_cut.nml"
