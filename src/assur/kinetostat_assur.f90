@@ -20,11 +20,12 @@ module kinetostat_assur
   use kinetostat_text, only: int_str
   use kinetostat_assur_kinematics, only: link_state_t, point_state_t, dyad_geometry_t, dyad_pose_t, &
     point_on, crank_state, frame_state, dyad_pose, kind_names, pose_ok, pose_no_assembly
-  use kinetostat_assur_statics, only: dyad_reactions_t, dyad_reactions
+  use kinetostat_assur_statics, only: dyad_reactions_t, dyad_reactions, pair_is_prismatic
   implicit none
   private
   public :: assur_link_t, assur_dyad_t, assur_force_t, assur_mech_t, assur_step_t
   public :: assur_step, assur_kinematics, link_a, link_b, pair_index, crank_pin_index, pair_sides
+  public :: output_pair_of, output_position, link_position, assur_extreme
 
   !> An actuator whose crank moment per newton |stroke'| is below this times the driving
   !> dyad's size (m) is in a dead position: it cannot move the input link.
@@ -87,6 +88,11 @@ module kinetostat_assur
     integer :: drive_dyad = 0
     !> The actuator's pair in that dyad (1 outer of a, 2 inner, 3 outer of b).
     integer :: drive_pair = 0
+    !> Internal index of the output link (extreme positions, load tables over its position).
+    integer :: output_link = 1
+    !> 0: the output position is the link's angle; j: it slides on a frame guide and its
+    !> position is the stroke of pair j of its dyad.
+    integer :: output_pair = 0
   end type assur_mech_t
 
   !> Results at one input angle (forces global, N; moments N*m).
@@ -331,6 +337,146 @@ contains
     step%residual = equilibrium_residual(known(1:))
     if (present(balances)) balances = known
   end subroutine assur_step
+
+  !> The pair whose stroke is the position of link `i` (internal index): the prismatic pair
+  !> by which it slides on a frame guide (link a: pair 1, link b: pair 3), else 0 (the
+  !> link's position is its angle).
+  pure integer function output_pair_of(mech, i) result(j)
+    !> Mechanism.
+    type(assur_mech_t), intent(in) :: mech
+    !> Internal link index (>= 1).
+    integer, intent(in) :: i
+    integer :: d
+    j = 0
+    if (i < 2) return
+    d = i / 2
+    if (i == link_a(d)) then
+      if (mech%dyads(d)%on(1) == 0 .and. pair_is_prismatic(mech%dyads(d)%geom%kind, 1)) j = 1
+    else
+      if (mech%dyads(d)%on(2) == 0 .and. pair_is_prismatic(mech%dyads(d)%geom%kind, 3)) j = 3
+    end if
+  end function output_pair_of
+
+  !> Position of the output link with its analogues: its angle (rad, rad/rad, rad/rad^2), or
+  !> for a slider on a frame guide its stroke along the guide (m, m/rad, m/rad^2).
+  pure subroutine output_position(mech, states, poses, q, dq, ddq)
+    !> Mechanism.
+    type(assur_mech_t), intent(in) :: mech
+    !> Frames of links 0..2*nd+1.
+    type(link_state_t), intent(in) :: states(0:)
+    !> Pose of each dyad.
+    type(dyad_pose_t), intent(in) :: poses(:)
+    !> Position, its first and second analogues.
+    real(wp), intent(out) :: q, dq, ddq
+    call link_position(states, poses, mech%output_link, mech%output_pair, q, dq, ddq)
+  end subroutine output_position
+
+  !> Position of link `i` with its analogues: its angle (`pair` = 0; rad, rad/rad,
+  !> rad/rad^2) or the stroke of pair `pair` of its dyad (m, m/rad, m/rad^2).
+  pure subroutine link_position(states, poses, i, pair, q, dq, ddq)
+    !> Frames of links 0..2*nd+1.
+    type(link_state_t), intent(in) :: states(0:)
+    !> Pose of each dyad.
+    type(dyad_pose_t), intent(in) :: poses(:)
+    !> Internal link index; 0 or the pair of its dyad whose stroke is its position.
+    integer, intent(in) :: i, pair
+    !> Position, its first and second analogues.
+    real(wp), intent(out) :: q, dq, ddq
+    if (pair == 0) then
+      q = states(i)%th
+      dq = states(i)%u
+      ddq = states(i)%eq
+    else
+      q = poses(i / 2)%stroke(pair)
+      dq = poses(i / 2)%stroke_v(pair)
+      ddq = poses(i / 2)%stroke_a(pair)
+    end if
+  end subroutine link_position
+
+  !> The first extreme position of the output link (its position's analogue changes sign)
+  !> at or after crank angle `phi_from` (rad), within one turn: a scan in 0.5 deg steps over
+  !> the assembled positions, then bisection to roundoff.
+  pure subroutine assur_extreme(mech, phi_from, phi, error)
+    !> Mechanism.
+    type(assur_mech_t), intent(in) :: mech
+    !> Where the search starts, rad.
+    real(wp), intent(in) :: phi_from
+    !> Crank angle of the extreme position, rad.
+    real(wp), intent(out) :: phi
+    !> Geometry error when there is none within one turn.
+    type(error_t), allocatable, intent(out) :: error
+    integer, parameter :: n_scan = 720
+    real(wp), parameter :: two_pi = 8.0_wp * atan(1.0_wp)
+    real(wp) :: x, dq, prev_dq, prev_x, lo, hi, dq_lo, mid, dq_mid
+    logical :: prev_ok, ok
+    integer :: k, it
+    phi = phi_from
+    prev_ok = .false.
+    prev_dq = 0.0_wp
+    prev_x = phi_from
+    do k = 0, n_scan
+      x = phi_from + two_pi * real(k, wp) / real(n_scan, wp)
+      call output_rate(mech, x, dq, ok)
+      if (.not. ok) then
+        prev_ok = .false.
+        cycle
+      end if
+      if (dq == 0.0_wp) then
+        phi = x
+        return
+      end if
+      if (prev_ok .and. sign(1.0_wp, dq) /= sign(1.0_wp, prev_dq)) then
+        lo = prev_x
+        hi = x
+        dq_lo = prev_dq
+        do it = 1, 200
+          mid = 0.5_wp * (lo + hi)
+          if (mid <= lo .or. mid >= hi) exit
+          call output_rate(mech, mid, dq_mid, ok)
+          if (.not. ok) exit
+          if (dq_mid == 0.0_wp) then
+            lo = mid
+            hi = mid
+            exit
+          end if
+          if (sign(1.0_wp, dq_mid) == sign(1.0_wp, dq_lo)) then
+            lo = mid
+            dq_lo = dq_mid
+          else
+            hi = mid
+          end if
+        end do
+        phi = 0.5_wp * (lo + hi)
+        return
+      end if
+      prev_ok = .true.
+      prev_dq = dq
+      prev_x = x
+    end do
+    call fatal_error(error, exit_geometry, "no extreme position of link "//int_str(mech%links(mech%output_link)%id)// &
+      " (the output link) within one turn of the crank")
+  end subroutine assur_extreme
+
+  !> The output position's first analogue `dq` at crank angle `phi` (rad); `ok` false where
+  !> the mechanism cannot be assembled.
+  pure subroutine output_rate(mech, phi, dq, ok)
+    !> Mechanism.
+    type(assur_mech_t), intent(in) :: mech
+    !> Crank angle, rad.
+    real(wp), intent(in) :: phi
+    !> d(output position)/d phi1 (rad/rad or m/rad).
+    real(wp), intent(out) :: dq
+    !> Whether the mechanism is assembled there.
+    logical, intent(out) :: ok
+    type(link_state_t) :: states(0:2 * size(mech%dyads) + 1)
+    type(dyad_pose_t) :: poses(size(mech%dyads))
+    type(error_t), allocatable :: error
+    real(wp) :: q, ddq
+    dq = 0.0_wp
+    call assur_kinematics(mech, phi, states, poses, error)
+    ok = .not. allocated(error)
+    if (ok) call output_position(mech, states, poses, q, dq, ddq)
+  end subroutine output_rate
 
   !> Internal indices of the two sides of pair `j` of dyad `d`: (1) the sliding side (the
   !> dyad's link a for pairs 1 and 2, link b for pair 3), (2) the other side.

@@ -18,7 +18,8 @@ module kinetostat_assur_layout
   use kinetostat_assur_kinematics, only: kind_names, link_state_t, dyad_pose_t, point_state_t, point_on, &
     kind_rrp, kind_rpr, kind_prp, kind_rpp
   use kinetostat_assur_statics, only: pair_is_prismatic
-  use kinetostat_assur, only: assur_step_t, assur_step, assur_kinematics, link_a, link_b
+  use kinetostat_assur, only: assur_step_t, assur_step, assur_kinematics, link_a, link_b, crank_pin_index
+  use kinetostat_drawing, only: drawing_t, force_load
   use kinetostat_assur_friction, only: friction_step_t, assur_friction_step
   use kinetostat_assur_deck, only: assur_deck_t, read_assur_deck, write_assur_template
   implicit none
@@ -50,6 +51,7 @@ module kinetostat_assur_layout
     procedure :: write_results
     procedure :: write_template
     procedure :: sketch
+    procedure :: force_plan
   end type assur_mechanism_t
 
 contains
@@ -548,6 +550,53 @@ contains
     end do
   end subroutine put_kinematics
 
+  !> The forces of row `k` on its drawing (--format svg --at K): every pair force at its
+  !> pair's point J<pair>, the deck's external forces (Q<i>, at their points) and moments
+  !> (MQ<i>, at the link's centre of mass), the weights, inertia forces and moments of the
+  !> moving links, and M1 at the crank's pivot.
+  pure subroutine force_plan(self, table, k, drawing, error)
+    class(assur_mechanism_t), intent(in) :: self
+    type(step_table_t), intent(in) :: table
+    integer, intent(in) :: k
+    type(drawing_t), intent(inout) :: drawing
+    type(error_t), allocatable, intent(out) :: error
+    type(link_state_t) :: states(0:2 * size(self%deck%mech%dyads) + 1)
+    type(dyad_pose_t) :: poses(size(self%deck%mech%dyads))
+    type(point_state_t) :: ps
+    real(wp) :: dir
+    integer :: ip, i
+    associate (mech => self%deck%mech, deck => self%deck)
+      call assur_kinematics(mech, deck%phi1_deg(k) * deg_to_rad, states, poses, error)
+      if (allocated(error)) return
+      do ip = 1, size(deck%pair_name)
+        call drawing%pair_from_table(table, k, trim(deck%pair_name(ip)), joint_name(deck%pair_name(ip)), error)
+        if (allocated(error)) return
+      end do
+      do i = 1, size(mech%forces)
+        associate (f => mech%forces(i))
+          ps = point_on(states(f%link), f%at)
+          dir = f%angle
+          if (f%follow) dir = dir + states(f%link)%th
+          call drawing%add_force("Q"//int_str(i), force_load, ps%p, deck%f_mag(i, k) * [cos(dir), sin(dir)])
+        end associate
+      end do
+      do i = 1, size(mech%moment_link)
+        call drawing%add_moment("MQ"//int_str(i), force_load, drawing%at("S"//int_str(mech%links(mech%moment_link(i))%id)), &
+          deck%m_mag(i, k))
+      end do
+      do i = 1, ubound(states, 1)
+        associate (l => mech%links(i))
+          call drawing%add_link_loads(table, k, int_str(l%id), "S"//int_str(l%id), "S"//int_str(l%id), l%m, l%j, &
+            mech%g * mech%down)
+        end associate
+      end do
+      ! the balancing moment on the crank (a deck driven otherwise has no M1 column)
+      i = table%column_index("M1")
+      if (i > 0) call drawing%add_moment("M1", force_load, &
+        drawing%at(joint_name(deck%pair_name(crank_pin_index(size(mech%dyads))))), table%rows(i, k))
+    end associate
+  end subroutine force_plan
+
   !> The joint of a pair: "J21" for the pair of F21.
   pure function joint_name(pair_name) result(name)
     character(*), intent(in) :: pair_name
@@ -590,7 +639,10 @@ contains
     call table%echo_real("CRANK_J", deck%mech%links(1)%j, "kg*m^2")
     call table%echo_array("CRANK_S", deck%mech%links(1)%s, "m")
     if (deck%friction_on) call echo_friction(deck, size(deck%friction), "CRANK_", "", table)
-    if (deck%prescribed) then
+    if (allocated(deck%phi_list) .and. .not. deck%prescribed) then
+      call table%echo_real("OMEGA1", deck%omega1_const, "rad/s")
+      call table%echo_array("OMEGA1_STEP", deck%omega1, "rad/s")
+    else if (deck%prescribed) then
       call table%echo_array("OMEGA1_STEP", deck%omega1, "rad/s")
       call table%echo_array("EPS1_STEP", deck%eps1, "rad/s^2")
     else
@@ -598,8 +650,16 @@ contains
     end if
     call table%echo_real("G", deck%mech%g, "m/s^2")
     call table%echo_real("GRAVITY_ANGLE", deck%gravity_angle, "deg")
-    call table%echo_real("PHI_START", deck%phi_start, "deg")
-    call table%echo_real("DPHI", deck%dphi, "deg")
+    if (allocated(deck%phi_list)) then
+      call table%echo_array("PHI1", deck%phi_list, "deg")
+    else
+      if (deck%start_extreme) then
+        call table%echo_text("START_AT", "extreme")
+        call table%echo_int("OUTPUT_LINK", deck%mech%links(deck%mech%output_link)%id, "")
+      end if
+      call table%echo_real("PHI_START", deck%phi_start, "deg")
+      call table%echo_real("DPHI", deck%dphi, "deg")
+    end if
     call table%echo_int("N", deck%n, "steps")
     call table%echo_logical("ANGLES_SIGNED", deck%angles_signed, "")
     call table%echo_logical("COMPONENTS", deck%components, "")
