@@ -12,11 +12,12 @@ program kinetostat_tests
   use test_cam, only: run_cam_tests
   use test_assur, only: run_assur_tests
   use test_io, only: run_io_tests
+  use test_decimal, only: run_decimal_tests
   use, intrinsic :: iso_fortran_env, only: error_unit
   implicit none
   !> Suite names, in the order they run.
   character(*), parameter :: suite_names(*) = [character(len=10) :: &
-    "foundation", "pr3207", "pr3050", "sixbar", "gears", "cam", "assur", "io"]
+    "foundation", "pr3207", "pr3050", "sixbar", "gears", "cam", "assur", "io", "decimal"]
   type(test_counts_t) :: t
   logical :: selected(size(suite_names))
   integer :: i
@@ -74,6 +75,7 @@ contains
     case ("cam"); call run_cam_tests(t)
     case ("assur"); call run_assur_tests(t)
     case ("io"); call run_io_tests(t)
+    case ("decimal"); call run_decimal_tests(t)
     case default; error stop "run_suite: no suite '"//name//"'"
     end select
   end subroutine run_suite

@@ -2,7 +2,7 @@
 !> precision (13 significant digits), flags and counts as whole numbers.
 module kinetostat_csv_writer
   use kinetostat_step_table, only: step_table_t
-  use kinetostat_format, only: cell_number
+  use kinetostat_format, only: put_cell
   use kinetostat_text_buffer, only: text_buffer_t
   implicit none
   private
@@ -17,6 +17,8 @@ contains
     !> Where the lines go.
     type(text_buffer_t), intent(inout) :: out
     character(len=:), allocatable :: line
+    logical, allocatable :: whole(:)
+    integer, allocatable :: shown(:)
     integer :: k, c
     line = ""
     do c = 1, size(table%columns)
@@ -25,14 +27,17 @@ contains
       line = line//table%columns(c)%name
     end do
     call out%put(line)
+    allocate (shown(0))
+    do c = 1, size(table%columns)
+      if (table%columns(c)%csv) shown = [shown, c]
+    end do
+    whole = [(table%is_whole(shown(c)), c = 1, size(shown))]
     do k = 1, table%row_count()
-      line = ""
-      do c = 1, size(table%columns)
-        if (.not. table%columns(c)%csv) cycle
-        if (len(line) > 0) line = line//","
-        line = line//cell_number(table%rows(c, k), table%is_whole(c))
+      do c = 1, size(shown)
+        if (c > 1) call out%append(",")
+        call put_cell(out, table%rows(shown(c), k), whole(c))
       end do
-      call out%put(line)
+      call out%end_line()
     end do
   end subroutine write_csv
 

@@ -5,7 +5,7 @@ module kinetostat_json_writer
   use kinetostat_selfcheck, only: selfcheck_tolerance
   use kinetostat_step_table, only: step_table_t, echo_record_t, column_kind_names, &
     echo_real_kind, echo_int_kind, echo_logical_kind, echo_array_kind, echo_text_kind, echo_heading_kind
-  use kinetostat_format, only: full_number, cell_number
+  use kinetostat_format, only: full_number, put_cell
   use kinetostat_text_buffer, only: text_buffer_t
   implicit none
   private
@@ -22,6 +22,7 @@ contains
     !> Where the lines go.
     type(text_buffer_t), intent(inout) :: out
     character(len=:), allocatable :: line
+    logical, allocatable :: whole(:)
     integer :: i, c, k
     call out%put("{")
     call out%put('  "program": '//json_string(version_string)//",")
@@ -32,9 +33,10 @@ contains
     call out%put('  "row_name": '//json_string(table%row_name)//",")
     call out%put('  "input": [')
     do i = 1, table%echo_count
-      line = "    "//echo_object(table%echo(i))
-      if (i < table%echo_count) line = line//","
-      call out%put(line)
+      call out%append("    ")
+      call put_echo_object(out, table%echo(i))
+      if (i < table%echo_count) call out%append(",")
+      call out%end_line()
     end do
     call out%put("  ],")
     call out%put('  "columns": [')
@@ -49,15 +51,19 @@ contains
     end do
     call out%put("  ],")
     call out%put('  "rows": [')
+    whole = [(table%is_whole(c), c = 1, size(table%columns))]
     do k = 1, table%row_count()
-      line = "    ["
+      call out%append("    [")
       do c = 1, size(table%columns)
-        if (c > 1) line = line//", "
-        line = line//cell_number(table%rows(c, k), table%is_whole(c))
+        if (c > 1) call out%append(", ")
+        call put_cell(out, table%rows(c, k), whole(c))
       end do
-      line = line//"]"
-      if (k < table%row_count()) line = line//","
-      call out%put(line)
+      if (k < table%row_count()) then
+        call out%append("],")
+      else
+        call out%append("]")
+      end if
+      call out%end_line()
     end do
     call out%put("  ],")
     if (table%has_selfcheck) then
@@ -77,8 +83,10 @@ contains
     call out%put("}")
   end subroutine write_json
 
-  !> One INPUT DATA record as a JSON object.
-  pure function echo_object(e) result(text)
+  !> One INPUT DATA record as a JSON object, appended to the current line (an array of
+  !> per-step values may be long: its numbers go straight into the buffer).
+  pure subroutine put_echo_object(out, e)
+    type(text_buffer_t), intent(inout) :: out
     type(echo_record_t), intent(in) :: e
     character(len=:), allocatable :: text
     character(len=24) :: buf
@@ -94,12 +102,12 @@ contains
       text = '{"name": '//json_string(e%name)//', "value": '//trim(merge("true ", "false", e%logical_value))// &
         ', "unit": '//json_string(e%unit)//"}"
     case (echo_array_kind)
-      text = '{"name": '//json_string(e%name)//', "value": ['
+      call out%append('{"name": '//json_string(e%name)//', "value": [')
       do i = 1, size(e%values)
-        if (i > 1) text = text//", "
-        text = text//full_number(e%values(i))
+        if (i > 1) call out%append(", ")
+        call put_cell(out, e%values(i), .false.)
       end do
-      text = text//'], "unit": '//json_string(e%unit)//"}"
+      text = '], "unit": '//json_string(e%unit)//"}"
     case (echo_text_kind)
       text = '{"name": '//json_string(e%name)//', "value": '//json_string(e%text)//"}"
     case (echo_heading_kind)
@@ -107,7 +115,8 @@ contains
     case default
       text = '{"text": '//json_string(e%name)//"}"
     end select
-  end function echo_object
+    call out%append(text)
+  end subroutine put_echo_object
 
   !> A JSON string literal: quotes, backslashes and control characters escaped; UTF-8 kept.
   pure function json_string(s) result(text)
