@@ -2,7 +2,7 @@
 !> precision (13 significant digits), flags and counts as whole numbers.
 module kinetostat_csv_writer
   use kinetostat_step_table, only: step_table_t
-  use kinetostat_format, only: put_cell
+  use kinetostat_format, only: put_cell, cell_room
   use kinetostat_text_buffer, only: text_buffer_t
   implicit none
   private
@@ -32,6 +32,8 @@ contains
       if (table%columns(c)%csv) shown = [shown, c]
     end do
     whole = [(table%is_whole(shown(c)), c = 1, size(shown))]
+    ! room for every row at once (no copying while the buffer grows)
+    call out%reserve(table%row_count() * (size(shown) * (cell_room + 1) + 1))
     do k = 1, table%row_count()
       do c = 1, size(shown)
         if (c > 1) call out%append(",")

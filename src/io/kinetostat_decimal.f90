@@ -14,7 +14,7 @@ module kinetostat_decimal
   use kinetostat_kinds, only: wp
   implicit none
   private
-  public :: edit_f, edit_e, edit_es, put_es_compact, put_whole, i16
+  public :: edit_f, edit_e, edit_es, edit_f_with_blank, put_es_compact, put_whole, i16
 
   !> Integer kind of the exact products (128 bits).
   integer, parameter :: i16 = selected_int_kind(38)
@@ -38,7 +38,13 @@ module kinetostat_decimal
   !> Largest number of significant digits of the fast path (q < 10**18 fits in int64).
   integer, parameter :: max_digits = 17
   !> Width of the scratch texts.
-  integer, parameter :: scratch_len = 64
+  integer, parameter :: scratch_len = 72
+  !> Status of a field body: written.
+  integer, parameter :: body_ok = 0
+  !> Status of a field body: does not fit its width (the field is all '*').
+  integer, parameter :: body_stars = 1
+  !> Status of a field body: outside the fast path (the compiler's WRITE makes it).
+  integer, parameter :: body_fallback = 2
 
 contains
 
@@ -233,80 +239,90 @@ contains
     call edit_exponent(x, d, e, .false., text)
   end subroutine edit_e
 
-  !> ES (scientific) or E (0.ddd) form.
+  !> ES (scientific) or E (0.ddd) form, right-justified in text.
   pure subroutine edit_exponent(x, d, e, scientific, text)
     real(wp), intent(in) :: x
     integer, intent(in) :: d, e
     logical, intent(in) :: scientific
     character(*), intent(out) :: text
     character(len=scratch_len) :: body
+    integer :: n, status, w
+    w = len(text)
+    call exponent_body(x, d, e, scientific, w, body, n, status)
+    select case (status)
+    case (body_ok)
+      call right_justify(body(1:n), text)
+    case (body_stars)
+      text = repeat("*", w)
+    case default
+      call fallback_exponent(x, d, e, scientific, text)
+    end select
+  end subroutine edit_exponent
+
+  !> The characters of an E or ES field without the blanks in front: body(1:n), status
+  !> body_ok; body_stars when it does not fit in w; body_fallback outside the fast path.
+  pure subroutine exponent_body(x, d, e, scientific, w, body, n, status)
+    real(wp), intent(in) :: x
+    integer, intent(in) :: d, e
+    logical, intent(in) :: scientific
+    !> Field width (decides the optional leading zero of the E form, and '*').
+    integer, intent(in) :: w
+    character(len=scratch_len), intent(out) :: body
+    integer, intent(out) :: n, status
     character(len=8) :: expo
     integer(int64) :: m, q
-    integer :: ex, n, k, w, length, elen, pos
-    logical :: negative, ok, lead_zero
-    w = len(text)
+    integer :: ex, digits, k, elen
+    logical :: negative, ok
+    n = 0
+    status = body_fallback
     call split(x, negative, m, ex)
-    if (scientific) then
-      n = d + 1
-    else
-      n = d
-    end if
-    if (n < 1 .or. n > max_digits .or. w > scratch_len) then
-      call fallback_exponent(x, d, e, scientific, text)
-      return
-    end if
+    digits = d
+    if (scientific) digits = d + 1
+    if (digits < 1 .or. digits > max_digits .or. w > scratch_len - 8) return
     if (m == 0) then
       q = 0
       k = 0
       if (.not. scientific) k = -1
     else
-      call round_significant(m, ex, n, q, k, ok)
-      if (.not. ok) then
-        call fallback_exponent(x, d, e, scientific, text)
-        return
-      end if
+      call round_significant(m, ex, digits, q, k, ok)
+      if (.not. ok) return
     end if
-    if (scientific) then
-      call exponent_part(k, e, expo, elen, ok)
-    else
-      call exponent_part(k + 1, e, expo, elen, ok)
-    end if
-    if (.not. ok) then
-      text = repeat("*", w)
-      return
-    end if
-    ! body: [-][d].ddd + exponent
-    pos = 0
+    if (.not. scientific) k = k + 1        ! 0.ddd form: the exponent of the digit before the first
+    call exponent_part(k, e, expo, elen, ok)
+    status = body_stars
+    if (.not. ok) return
     if (negative) then
-      pos = 1
+      n = 1
       body(1:1) = "-"
     end if
     if (scientific) then
-      call put_digits(q, n, body(pos + 2:pos + n + 1))
-      body(pos + 1:pos + 1) = body(pos + 2:pos + 2)
-      body(pos + 2:pos + 2) = "."
-      pos = pos + n + 1
+      call put_digits(q, digits, body(n + 2:n + digits + 1))
+      body(n + 1:n + 1) = body(n + 2:n + 2)
+      body(n + 2:n + 2) = "."
+      n = n + digits + 1
     else
-      length = pos + 1 + n + elen      ! without the optional leading zero
-      lead_zero = length < w
-      if (lead_zero) then
-        body(pos + 1:pos + 2) = "0."
-        pos = pos + 2
-      else
-        body(pos + 1:pos + 1) = "."
-        pos = pos + 1
+      if (n + 2 + digits + elen <= w) then  ! the leading zero is optional: kept when it fits
+        body(n + 1:n + 1) = "0"
+        n = n + 1
       end if
-      call put_digits(q, n, body(pos + 1:pos + n))
-      pos = pos + n
+      body(n + 1:n + 1) = "."
+      call put_digits(q, digits, body(n + 2:n + digits + 1))
+      n = n + digits + 1
     end if
-    body(pos + 1:pos + elen) = expo(1:elen)
-    pos = pos + elen
-    if (pos > w) then
-      text = repeat("*", w)
-    else
-      text = repeat(" ", w - pos)//body(1:pos)
-    end if
-  end subroutine edit_exponent
+    body(n + 1:n + elen) = expo(1:elen)
+    n = n + elen
+    if (n <= w) status = body_ok
+  end subroutine exponent_body
+
+  !> text = blanks, then s at its right end (len(s) <= len(text)).
+  pure subroutine right_justify(s, text)
+    character(*), intent(in) :: s
+    character(*), intent(out) :: text
+    integer :: w
+    w = len(text)
+    text(1:w - len(s)) = ""
+    text(w - len(s) + 1:w) = s
+  end subroutine right_justify
 
   !> The compiler's own E/ES edit (values or descriptors outside the fast path).
   pure subroutine fallback_exponent(x, d, e, scientific, text)
@@ -336,45 +352,84 @@ contains
     character(*), intent(out) :: text
     character(len=scratch_len) :: body
     character(len=32) :: fmt
+    integer :: n, status
+    call fixed_body(x, d, len(text), body, n, status)
+    select case (status)
+    case (body_ok)
+      call right_justify(body(1:n), text)
+    case (body_stars)
+      text = repeat("*", len(text))
+    case default
+      write (fmt, '("(f",i0,".",i0,")")') len(text), d
+      write (text, fmt) x
+    end select
+  end subroutine edit_f
+
+  !> The characters of an Fw.d field without the blanks in front: body(1:n), with status
+  !> as exponent_body's.
+  pure subroutine fixed_body(x, d, w, body, n, status)
+    real(wp), intent(in) :: x
+    integer, intent(in) :: d
+    !> Field width (decides the optional leading zero, and '*').
+    integer, intent(in) :: w
+    character(len=scratch_len), intent(out) :: body
+    integer, intent(out) :: n, status
     integer(int64) :: m, int_part, frac_part
     integer(i16) :: q
-    integer :: ex, w, pos, ni
+    integer :: ex, ni
     logical :: negative, ok
-    w = len(text)
+    n = 0
+    status = body_fallback
     call split(x, negative, m, ex)
-    ok = d >= 0 .and. d <= 18 .and. w <= scratch_len
-    if (ok) call scaled_round(m, ex, d, q, ok)
-    if (ok) ok = q < pow10(18 + d)      ! integer part below 10**18
-    if (.not. ok) then
-      write (fmt, '("(f",i0,".",i0,")")') w, d
-      write (text, fmt) x
-      return
-    end if
+    if (d < 0 .or. d > 18) return
+    call scaled_round(m, ex, d, q, ok)
+    if (.not. ok) return
+    if (q >= pow10(18 + d)) return        ! integer part of 19 digits or more
     int_part = int(q / pow10(d), int64)
     frac_part = int(q - int(int_part, i16) * pow10(d), int64)
-    pos = 0
     if (negative) then
-      pos = 1
+      n = 1
       body(1:1) = "-"
     end if
     ni = digit_count(int_part)
     ! the leading zero of |x| < 1 is optional: dropped only when the field is too narrow
-    if (int_part == 0 .and. pos + 1 + d >= w .and. d > 0) ni = 0
-    if (ni > 0) call put_digits(int_part, ni, body(pos + 1:pos + ni))
-    pos = pos + ni
-    body(pos + 1:pos + 1) = "."
-    pos = pos + 1
-    if (d > 0) call put_digits(frac_part, d, body(pos + 1:pos + d))
-    pos = pos + d
-    if (pos > w) then
-      text = repeat("*", w)
-    else
-      text = repeat(" ", w - pos)//body(1:pos)
+    if (int_part == 0 .and. n + 2 + d > w .and. d > 0) ni = 0
+    if (ni > 0) call put_digits(int_part, ni, body(n + 1:n + ni))
+    n = n + ni
+    body(n + 1:n + 1) = "."
+    n = n + 1
+    if (d > 0) call put_digits(frac_part, d, body(n + 1:n + d))
+    n = n + d
+    status = body_stars
+    if (n <= w) status = body_ok
+  end subroutine fixed_body
+
+  !> Fw.d when the field leaves at least one blank in front, as `fits`; otherwise nothing
+  !> is written and `fits` is false (the caller chooses another form).
+  pure subroutine edit_f_with_blank(x, d, text, fits)
+    !> Finite value.
+    real(wp), intent(in) :: x
+    !> Digits after the point.
+    integer, intent(in) :: d
+    !> The field (its length is the width w).
+    character(*), intent(out) :: text
+    !> Whether the fixed form was written.
+    logical, intent(out) :: fits
+    character(len=scratch_len) :: body, wide
+    integer :: n, status, first
+    call fixed_body(x, d, scratch_len, body, n, status)
+    if (status == body_fallback) then
+      call edit_f(x, d, wide)
+      first = verify(wide, " ")
+      n = scratch_len - first + 1
+      body(1:n) = wide(first:)
     end if
-  end subroutine edit_f
+    fits = n < len(text) .and. status /= body_stars
+    if (fits) call right_justify(body(1:n), text)
+  end subroutine edit_f_with_blank
 
   !> Append x in ESw.dEe form without leading blanks to buf at pos+1.. (pos advanced):
-  !> the text of adjustl(ES(d+8).dEe) for a CSV cell or a JSON number.
+  !> the text of adjustl(ES(d+e+6).dEe) for a CSV cell or a JSON number.
   pure subroutine put_es_compact(x, d, e, buf, pos)
     !> Finite value.
     real(wp), intent(in) :: x
@@ -382,17 +437,22 @@ contains
     integer, intent(in) :: d
     !> Exponent digits.
     integer, intent(in) :: e
-    !> Output characters (room for d + e + 5 more).
+    !> Output characters (room for d + e + 6 more).
     character(*), intent(inout) :: buf
     !> Characters in use.
     integer, intent(inout) :: pos
-    character(len=scratch_len) :: field
-    integer :: w, first
+    character(len=scratch_len) :: body
+    integer :: w, first, n, status
     w = d + e + 6
-    call edit_es(x, d, e, field(1:w))
-    first = verify(field(1:w), " ")
-    buf(pos + 1:pos + w - first + 1) = field(first:w)
-    pos = pos + w - first + 1
+    call exponent_body(x, d, e, .true., w, body, n, status)
+    if (status /= body_ok) then
+      call edit_es(x, d, e, body(1:w))
+      first = verify(body(1:w), " ")
+      n = w - first + 1
+      body(1:n) = body(first:w)
+    end if
+    buf(pos + 1:pos + n) = body(1:n)
+    pos = pos + n
   end subroutine put_es_compact
 
   !> Append the whole number q (any sign) to buf at pos+1.. (pos advanced), as I0 prints it.

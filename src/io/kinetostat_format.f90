@@ -6,13 +6,13 @@
 module kinetostat_format
   use, intrinsic :: iso_fortran_env, only: int64
   use kinetostat_kinds, only: wp
-  use kinetostat_decimal, only: edit_f, edit_e, edit_es, put_es_compact, put_whole
+  use kinetostat_decimal, only: edit_f_with_blank, edit_e, edit_es, put_es_compact, put_whole
   use kinetostat_text_buffer, only: text_buffer_t
   implicit none
   private
   public :: fixed_field, exp_field, int_field, full_number, whole_number, cell_number
   public :: echo_number, echo_array_number, footer_number, limit_number, pad_right, display_width
-  public :: put_cell, put_fixed
+  public :: put_cell, put_fixed, cell_room
 
   ! The edit descriptors of the policy (kinetostat_decimal writes them exactly as the
   ! compiler's formatted WRITE would, only faster):
@@ -57,17 +57,10 @@ contains
     real(wp), intent(in) :: x
     integer, intent(in) :: decimals
     character(*), intent(out) :: text
-    character(len=scratch_len) :: buf
-    integer :: first
-    if (abs(x) < 1.0e30_wp) then
-      call edit_f(x + 0.0_wp, decimals, buf)
-      first = verify(buf, " ")
-      if (scratch_len - first + 1 < len(text)) then
-        text = buf(scratch_len - len(text) + 1:)
-        return
-      end if
-    end if
-    call exponent_text(x, text)
+    logical :: fits
+    fits = .false.
+    if (abs(x) < 1.0e30_wp) call edit_f_with_blank(x + 0.0_wp, decimals, text, fits)
+    if (.not. fits) call exponent_text(x, text)
   end subroutine fixed_text
 
   !> Exponent form in `len(text)` characters with one blank in front (ES, digits as fit).

@@ -5,7 +5,7 @@ module kinetostat_json_writer
   use kinetostat_selfcheck, only: selfcheck_tolerance
   use kinetostat_step_table, only: step_table_t, echo_record_t, column_kind_names, &
     echo_real_kind, echo_int_kind, echo_logical_kind, echo_array_kind, echo_text_kind, echo_heading_kind
-  use kinetostat_format, only: full_number, put_cell
+  use kinetostat_format, only: full_number, put_cell, cell_room
   use kinetostat_text_buffer, only: text_buffer_t
   implicit none
   private
@@ -52,6 +52,8 @@ contains
     call out%put("  ],")
     call out%put('  "rows": [')
     whole = [(table%is_whole(c), c = 1, size(table%columns))]
+    ! room for every row at once (no copying while the buffer grows)
+    call out%reserve(table%row_count() * (size(table%columns) * (cell_room + 2) + 8))
     do k = 1, table%row_count()
       call out%append("    [")
       do c = 1, size(table%columns)
