@@ -71,7 +71,7 @@ contains
     call check_close(t, "cam f=0: theta_cr = 90", 90.0_wp, cam_critical_angle(p) * rad_to_deg, 1.0e-14_wp, 0.0_wp)
   end subroutine test_no_friction
 
-  !> Self-locking on the rise starts at tan(theta_cr) = l/(f (l + 2a)) (README derivation):
+  !> Self-locking on the rise starts at tan(theta_cr) = l/(f (l + 2a)) (docs/gears-cams.md derivation):
   !> l = 0.04, a = 0.05, f = 0.3 -> theta_cr = atan(0.04/0.042) = 43.60281897 deg.
   subroutine test_critical_angle(t)
     type(test_counts_t), intent(inout) :: t

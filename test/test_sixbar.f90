@@ -48,7 +48,7 @@ contains
   !> The values the manual prints for phi1 = 66.8 deg, g = 10. The 1991 printout is
   !> consistent with exact physics only to about 1e-3 (its phi4 is 0.015 deg low, which
   !> moves M_54E, F56 and F54y by 0.4 %); tolerances: kinematics relative 2e-3 (angles
-  !> absolute 0.02 deg), a_S4y and group 4-5 forces relative 5e-3 (README, errata).
+  !> absolute 0.02 deg), a_S4y and group 4-5 forces relative 5e-3 (docs/sixbar.md, errata).
   subroutine test_example_printed(t)
     type(test_counts_t), intent(inout) :: t
     real(wp), parameter :: rk = 2.0e-3_wp, ra = 0.02_wp, rf = 5.0e-3_wp

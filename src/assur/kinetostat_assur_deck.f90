@@ -18,6 +18,7 @@ module kinetostat_assur_deck
   use kinetostat_vec2, only: unit_at
   use kinetostat_assur_kinematics, only: dyad_geometry_t, kind_names, kind_has_mode, &
     kind_rrr, kind_rrp, kind_rpr, kind_prp, kind_rpp
+  use kinetostat_assur_statics, only: pair_is_prismatic
   use kinetostat_assur, only: assur_mech_t, assur_link_t, assur_dyad_t, assur_force_t, link_a, link_b
   implicit none
   private
@@ -153,7 +154,7 @@ module kinetostat_assur_deck
     "! Offset slider-crank = frame 0 + crank 1 + dyad RRP (rod 2, slider 3).", &
     "! Global frame: origin anywhere, angles CCW from +x; gravity along gravity_angle.", &
     "! Link coordinates: crank: origin at its pivot, x-axis along the crank (pin at (l1, 0));", &
-    "! dyad links: see README (RRR: origin A, x-axis A->B / origin C, x-axis C->B; ...).", &
+    "! dyad links: see docs/assur.md (RRR: origin A, x-axis A->B / origin C, x-axis C->B; ...).", &
     "&assur", &
     "  title = 'offset slider-crank'", &
     "  frame_id = 0, crank_id = 1     ! link numbers (column names F<on><from>)", &
@@ -215,6 +216,8 @@ contains
     character(len=80) :: title
     !> Integer deck variables, read as reals (see require_whole).
     real(wp) :: frame_id, crank_id, n
+    !> Linear actuator as driver: dyad number and pair 1..3 (whole numbers, read as reals).
+    real(wp) :: drive_dyad, drive_pair
     !> frame_id and crank_id as integers.
     integer :: frame_no, crank_no, nd, nf, nm, n_omega, n_eps, n_values, ios, k, d, i
     real(wp) :: crank_at(2), crank_m, crank_j, crank_s(2), omega1, g, gravity_angle, phi_start, dphi
@@ -230,12 +233,13 @@ contains
     character(len=:), allocatable :: name
     namelist /assur/ title, frame_id, crank_id, crank_at, crank_m, crank_j, crank_s, omega1, &
       omega1_step, eps1_step, g, gravity_angle, phi_start, dphi, n, dyad, force, moment, &
-      step_values, angles_signed, components
+      step_values, angles_signed, components, drive_dyad, drive_pair
 
     ctx%path = source%path
     ctx%group = group_name
     title = ""
     frame_id = 0.0_wp; crank_id = 1.0_wp; n = unset_real
+    drive_dyad = unset_real; drive_pair = unset_real
     crank_at = unset_real; crank_m = unset_real; crank_j = unset_real; crank_s = unset_real
     omega1 = unset_real; g = unset_real; gravity_angle = unset_real
     phi_start = unset_real; dphi = unset_real
@@ -324,6 +328,8 @@ contains
       ids(2 * d + 1) = deck%mech%links(link_b(d))%id
     end do
 
+    call read_driver(ctx, drive_dyad, drive_pair, deck%mech, error); if (allocated(error)) return
+
     ! ---- external forces and moments
     nf = 0
     do k = 1, max_forces
@@ -405,6 +411,45 @@ contains
     deck%frame_id = frame_no
     deck%crank_id = crank_no
   end subroutine read_assur_deck
+
+  !> The driving linear actuator, when `drive_dyad` and `drive_pair` name one: a prismatic
+  !> pair of a dyad whose axial force replaces the crank's balancing moment as the unknown.
+  subroutine read_driver(ctx, drive_dyad, drive_pair, mech, error)
+    type(deck_context_t), intent(in) :: ctx
+    !> Deck values (whole numbers read as reals, or unset).
+    real(wp), intent(in) :: drive_dyad, drive_pair
+    !> Mechanism with its dyads; receives drive_dyad, drive_pair.
+    type(assur_mech_t), intent(inout) :: mech
+    type(error_t), allocatable, intent(out) :: error
+    integer :: d, j, kind
+    character(len=:), allocatable :: prismatic
+    if (.not. is_set(drive_dyad) .and. .not. is_set(drive_pair)) return
+    call require_rule(ctx, "drive_pair", is_set(drive_pair), "missing: a linear actuator is named by "// &
+      "drive_dyad and drive_pair (its prismatic pair: 1 outer of link2, 2 inner, 3 outer of link3)", error)
+    if (allocated(error)) return
+    call require_rule(ctx, "drive_dyad", is_set(drive_dyad), "missing: a linear actuator is named by "// &
+      "drive_dyad and drive_pair", error)
+    if (allocated(error)) return
+    call require_whole(ctx, "drive_dyad", drive_dyad, 1, size(mech%dyads), d, error); if (allocated(error)) return
+    call require_whole(ctx, "drive_pair", drive_pair, 1, 3, j, error); if (allocated(error)) return
+    kind = mech%dyads(d)%geom%kind
+    if (.not. pair_is_prismatic(kind, j)) then
+      prismatic = ""
+      do j = 1, 3
+        if (pair_is_prismatic(kind, j)) prismatic = prismatic//" "//int_str(j)
+      end do
+      if (len(prismatic) == 0) then
+        prismatic = "; dyad "//int_str(d)//" (RRR) has none"
+      else
+        prismatic = "; its prismatic pairs:"//prismatic
+      end if
+      call deck_error(ctx, "drive_pair", "pair "//number_str(drive_pair)//" of dyad "//int_str(d)//" ("// &
+        kind_names(kind)//") is revolute: a linear actuator drives a prismatic pair"//prismatic, error)
+      return
+    end if
+    mech%drive_dyad = d
+    mech%drive_pair = j
+  end subroutine read_driver
 
   !> Column name stem of the force on link `on` from link `from`: "F21", or "F12_3" for ids >= 10.
   pure function pair_stem(on, from) result(s)

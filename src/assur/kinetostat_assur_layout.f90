@@ -6,17 +6,19 @@ module kinetostat_assur_layout
   use kinetostat_deck, only: deck_source_t
   use kinetostat_error, only: error_t, fatal_error, exit_geometry
   use kinetostat_text, only: int_str
-  use kinetostat_noise, only: noise_rel
+  use kinetostat_noise, only: noise_rel, force_components
   use kinetostat_vec2, only: magnitude, angle_360_deg, angle_180_deg, rotate, snap_noise, clean_zero
-  use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_component, &
-    col_moment
+  use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_component, col_length, &
+    col_moment, col_other
   use kinetostat_format, only: fixed_field, display_width
   use kinetostat_labels, only: lang_ru
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_mechanism, only: mechanism_t
-  use kinetostat_assur_kinematics, only: kind_names
+  use kinetostat_sketch, only: sketch_t
+  use kinetostat_assur_kinematics, only: kind_names, link_state_t, dyad_pose_t, point_state_t, point_on, &
+    kind_rrp, kind_rpr, kind_prp, kind_rpp
   use kinetostat_assur_statics, only: pair_is_prismatic
-  use kinetostat_assur, only: assur_step_t, assur_step
+  use kinetostat_assur, only: assur_step_t, assur_step, assur_kinematics, link_a, link_b
   use kinetostat_assur_deck, only: assur_deck_t, read_assur_deck, write_assur_template
   implicit none
   private
@@ -26,6 +28,8 @@ module kinetostat_assur_layout
   integer, parameter :: phi_width = 9
   !> Width of every other field of the RESULTS block.
   integer, parameter :: field_width = 12
+  !> Decimals of the actuator's stroke (m), stroke speed (m/s) and acceleration (m/s^2).
+  integer, parameter :: stroke_decimals = 4
   !> Dyad line of the INPUT DATA echo.
   character(*), parameter :: dyad_echo_fmt = '(3x,"DYAD ",i0,": ",a," LINKS ",i0,"-",i0,", ON LINKS ",i0," AND ",i0, &
     &", MODE ",i0)'
@@ -39,6 +43,7 @@ module kinetostat_assur_layout
     procedure :: solve
     procedure :: write_results
     procedure :: write_template
+    procedure :: sketch
   end type assur_mechanism_t
 
 contains
@@ -65,6 +70,100 @@ contains
     type(text_buffer_t), intent(inout) :: out
     call write_assur_template(out)
   end subroutine write_template
+
+  !> The topology for a drawing: every moving link joins the joints J<pair> of its pairs (a
+  !> dyad's link a: pairs 1, 2; link b: pairs 2, 3; the crank: its pivot; each link also the
+  !> joints of the later dyads attached to it). A link that slides on a prismatic pair is a
+  !> block: RRP link b on its guide, RPR link a along link b's x axis, PRP both links, RPP
+  !> link a along the slot of link b and link b on its guide. Pivots: the revolute pairs with
+  !> the frame; guides: every prismatic pair's line.
+  pure subroutine sketch(self, out)
+    class(assur_mechanism_t), intent(in) :: self
+    type(sketch_t), intent(out) :: out
+    character(len=16), allocatable :: joints(:)
+    integer :: nd, d, i, q, e
+    real(wp) :: slot_deg
+    associate (mech => self%deck%mech, names => self%deck%pair_name)
+      nd = size(mech%dyads)
+      do i = 1, 2 * nd + 1
+        ! the link's own pairs, then the outer pairs of later dyads attached to it
+        if (i == 1) then
+          joints = [character(len=16) :: joint_name(names(3 * nd + 1))]
+        else
+          d = i / 2
+          q = i - 2 * d + 1
+          joints = [character(len=16) :: joint_name(names(3 * d - 3 + q)), joint_name(names(3 * d - 2 + q))]
+        end if
+        do e = 1, nd
+          if (mech%dyads(e)%on(1) == i) joints = [character(len=16) :: joints, joint_name(names(3 * e - 2))]
+          if (mech%dyads(e)%on(2) == i) joints = [character(len=16) :: joints, joint_name(names(3 * e))]
+        end do
+        call add_sketch_link(out, self%deck, i, joints)
+      end do
+      call out%add_pivot(joint_name(names(3 * nd + 1)))
+      do d = 1, nd
+        associate (dy => mech%dyads(d))
+          do q = 1, 2
+            e = 3 * d - 2 + 2 * (q - 1)
+            if (assur_pair_prismatic(self%deck, e)) then
+              call out%add_guide(joint_name(names(e)), dy%ang(q) * rad_to_deg, link_label(self%deck, dy%on(q)))
+            else if (dy%on(q) == 0) then
+              call out%add_pivot(joint_name(names(e)))
+            end if
+          end do
+          if (assur_pair_prismatic(self%deck, 3 * d - 1)) then
+            slot_deg = 0.0_wp
+            if (dy%geom%kind == kind_rpp) slot_deg = dy%geom%slot_angle * rad_to_deg
+            call out%add_guide(joint_name(names(3 * d - 1)), slot_deg, link_label(self%deck, link_b(d)))
+          end if
+        end associate
+      end do
+      out%down = mech%down
+    end associate
+  end subroutine sketch
+
+  !> One moving link (internal index i) of the sketch: a bar through `joints`, or a block.
+  pure subroutine add_sketch_link(out, deck, i, joints)
+    type(sketch_t), intent(inout) :: out
+    type(assur_deck_t), intent(in) :: deck
+    integer, intent(in) :: i
+    character(*), intent(in) :: joints(:)
+    integer :: d, kind
+    character(len=:), allocatable :: name
+    name = link_label(deck, i)
+    if (i == 1) then
+      call out%add_link(name, joints)
+      return
+    end if
+    d = i / 2
+    kind = deck%mech%dyads(d)%geom%kind
+    associate (dy => deck%mech%dyads(d))
+      if (i == link_a(d) .and. kind == kind_rpr) then
+        call out%add_link(name, joints, 0.0_wp, link_label(deck, link_b(d)))
+      else if (i == link_a(d) .and. kind == kind_prp) then
+        call out%add_link(name, joints, dy%ang(1) * rad_to_deg, link_label(deck, dy%on(1)))
+      else if (i == link_a(d) .and. kind == kind_rpp) then
+        call out%add_link(name, joints, (dy%ang(2) + dy%geom%slot_angle) * rad_to_deg, link_label(deck, dy%on(2)))
+      else if (i == link_b(d) .and. (kind == kind_rrp .or. kind == kind_prp .or. kind == kind_rpp)) then
+        ! the block sits on the guide (pair 3) first
+        call out%add_link(name, [joints(2), joints(1), joints(3:)], dy%ang(2) * rad_to_deg, link_label(deck, dy%on(2)))
+      else
+        call out%add_link(name, joints)
+      end if
+    end associate
+  end subroutine add_sketch_link
+
+  !> The name of link `i` (internal index) in phi<name>, omega<name>, eps<name>: its number;
+  !> "L1" for a link numbered 1 that is not the crank (`phi1` is the input angle, the crank's);
+  !> "" for the frame.
+  pure function link_label(deck, i) result(label)
+    type(assur_deck_t), intent(in) :: deck
+    integer, intent(in) :: i
+    character(len=:), allocatable :: label
+    label = ""
+    if (i > 0) label = int_str(deck%mech%links(i)%id)
+    if (i > 1 .and. label == "1") label = "L1"
+  end function link_label
 
   !> Every step into the step table, with the INPUT DATA echo and the self-check.
   subroutine solve(self, table, error)
@@ -97,13 +196,27 @@ contains
         c = c + 2
       end if
     end do
-    call table%add_column("M1", "N*m", col_moment)
+    if (self%deck%mech%drive_dyad == 0) then
+      call table%add_column("M1", "N*m", col_moment)
+    else
+      call table%add_column("F_drive", "N", col_component)
+      call table%add_column("stroke", "m", col_length)
+      call table%add_column("stroke_v", "m/s", col_other)
+      call table%add_column("stroke_a", "m/s^2", col_other)
+    end if
     table%input_column = 1
     call table%allocate_rows(size(steps))
     do k = 1, size(steps)
       table%rows(:, k) = assur_csv_values(self%deck, steps(k))
     end do
-    call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "M1")
+    do k = 1, size(steps)
+      call put_kinematics(table, k, self%deck, steps(k))
+    end do
+    if (self%deck%mech%drive_dyad == 0) then
+      call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "M1")
+    else
+      call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "F_drive")
+    end if
     if (len_trim(self%deck%title) > 0) table%subtitle = trim(self%deck%title)
     call echo_deck(self%deck, table)
   end subroutine solve
@@ -149,7 +262,8 @@ contains
     end do
   end subroutine assur_solve
 
-  !> CSV column names: phi1; per pair F, FG, [Fx, Fy], [FN, FM for prismatic pairs]; M1.
+  !> CSV column names: phi1; per pair F, FG, [Fx, Fy], [FN, FM for prismatic pairs]; M1, or
+  !> with a linear actuator as driver F_drive, stroke, stroke_v, stroke_a.
   pure function assur_csv_columns(deck) result(cols)
     !> Validated deck.
     type(assur_deck_t), intent(in) :: deck
@@ -163,7 +277,11 @@ contains
       if (assur_pair_prismatic(deck, ip)) cols = [character(len=24) :: cols, trim(deck%pair_name(ip))//"N", &
                                                   trim(deck%pair_name(ip))//"M"]
     end do
-    cols = [character(len=24) :: cols, "M1"]
+    if (deck%mech%drive_dyad == 0) then
+      cols = [character(len=24) :: cols, "M1"]
+    else
+      cols = [character(len=24) :: cols, "F_drive", "stroke", "stroke_v", "stroke_a"]
+    end if
   end function assur_csv_columns
 
   !> The CSV row of one step, in the order of assur_csv_columns. Forces below `noise_rel`
@@ -179,7 +297,7 @@ contains
     real(wp) :: floor, f(2), mfloor, nn, mm
     integer :: ip, np, pos
     np = size(s%f, 2)
-    allocate (v(1 + 6 * np + 1))
+    allocate (v(1 + 6 * np + 4))
     floor = 0.0_wp
     do ip = 1, np
       floor = max(floor, magnitude(s%f(:, ip)))
@@ -211,10 +329,81 @@ contains
         pos = pos + 2
       end if
     end do
-    v(pos + 1) = s%m1
-    if (abs(v(pos + 1)) <= mfloor) v(pos + 1) = 0.0_wp
-    v = clean_zero(v(1:pos + 1))
+    if (deck%mech%drive_dyad == 0) then
+      v(pos + 1) = s%m1
+      if (abs(v(pos + 1)) <= mfloor) v(pos + 1) = 0.0_wp
+      v = clean_zero(v(1:pos + 1))
+    else
+      v(pos + 1:pos + 4) = [s%f_drive, s%stroke, s%stroke_v, s%stroke_a]
+      if (abs(v(pos + 1)) <= floor) v(pos + 1) = 0.0_wp
+      v = clean_zero(v(1:pos + 4))
+    end if
   end function assur_csv_values
+
+  !> The kinematics columns of step `k`, in the deck's global frame: the reference point
+  !> J<pair> of every pair (x_J21 for the pair of F21: the pin of a revolute pair, the
+  !> slider's reference point of a prismatic pair; the crank's pair with the frame is the
+  !> pivot), the centre of mass S<id> of every moving link and its acceleration, the angle
+  !> (of the link's x axis), angular velocity and acceleration of every moving link (named
+  !> by link_label), and the components of every pair force as the F<pair>x, F<pair>y columns
+  !> give them.
+  pure subroutine put_kinematics(table, k, deck, s)
+    !> The step table (columns appended on first use).
+    type(step_table_t), intent(inout) :: table
+    !> Row.
+    integer, intent(in) :: k
+    !> Validated deck.
+    type(assur_deck_t), intent(in) :: deck
+    !> The computed step.
+    type(assur_step_t), intent(in) :: s
+    type(link_state_t) :: states(0:2 * size(deck%mech%dyads) + 1)
+    type(dyad_pose_t) :: poses(size(deck%mech%dyads))
+    type(point_state_t) :: ps
+    type(error_t), allocatable :: error
+    real(wp) :: w2, floor, f(2)
+    integer :: i, ip, d, np
+    call assur_kinematics(deck%mech, s%phi1, states, poses, error)
+    if (allocated(error)) return ! cannot happen: the step was solved at this angle
+    w2 = s%omega1**2
+    np = size(s%f, 2)
+    do ip = 1, np
+      d = (ip - 1) / 3 + 1
+      if (ip == np) then
+        call table%put_point(k, joint_name(deck%pair_name(ip)), deck%mech%pivot)
+      else
+        call table%put_point(k, joint_name(deck%pair_name(ip)), poses(d)%p(:, ip - 3 * (d - 1)))
+      end if
+    end do
+    do i = 1, ubound(states, 1)
+      ps = point_on(states(i), deck%mech%links(i)%s)
+      call table%put_point(k, "S"//int_str(deck%mech%links(i)%id), ps%p)
+    end do
+    do i = 1, ubound(states, 1)
+      call table%put_link(k, link_label(deck, i), states(i)%th, states(i)%u * s%omega1, &
+                          states(i)%eq * w2 + states(i)%u * s%eps1)
+    end do
+    do i = 1, ubound(states, 1)
+      ps = point_on(states(i), deck%mech%links(i)%s)
+      call table%put_acceleration(k, "S"//int_str(deck%mech%links(i)%id), ps%a * w2 + ps%v * s%eps1)
+    end do
+    floor = 0.0_wp
+    do ip = 1, np
+      floor = max(floor, magnitude(s%f(:, ip)))
+    end do
+    floor = noise_rel * floor
+    do ip = 1, np
+      f = rotate(snap_noise(deck%pair_sign(ip) * s%f(:, ip), floor), -deck%pair_frame(ip))
+      call table%put_components(k, trim(deck%pair_name(ip)), force_components(f, floor), &
+                                deck%pair_frame(ip) * rad_to_deg)
+    end do
+  end subroutine put_kinematics
+
+  !> The joint of a pair: "J21" for the pair of F21.
+  pure function joint_name(pair_name) result(name)
+    character(*), intent(in) :: pair_name
+    character(len=:), allocatable :: name
+    name = "J"//trim(pair_name(2:))
+  end function joint_name
 
   !> Length scale of the crank: its farthest attachment point from the pivot (1 m if none).
   pure real(wp) function crank_length(deck)
@@ -263,6 +452,10 @@ contains
     call table%echo_int("N", deck%n, "steps")
     call table%echo_logical("ANGLES_SIGNED", deck%angles_signed, "")
     call table%echo_logical("COMPONENTS", deck%components, "")
+    if (deck%mech%drive_dyad > 0) then
+      call table%echo_int("DRIVE_DYAD", deck%mech%drive_dyad, "")
+      call table%echo_int("DRIVE_PAIR", deck%mech%drive_pair, "")
+    end if
     do d = 1, size(deck%mech%dyads)
       associate (dy => deck%mech%dyads(d), lk => deck%mech%links)
         write (line, dyad_echo_fmt) d, kind_names(dy%geom%kind), lk(2 * d)%id, lk(2 * d + 1)%id, &
@@ -303,7 +496,9 @@ contains
   end subroutine echo_deck
 
   !> RESULTS: per step the crank angle, every pair's magnitude and M1; under them the angles;
-  !> for prismatic pairs two more lines with the normal force and the reaction moment.
+  !> for prismatic pairs two more lines with the normal force and the reaction moment. With a
+  !> linear actuator as driver the last column holds F_drive, stroke, stroke speed and
+  !> acceleration (lines 1-4) instead of M1.
   pure subroutine write_results(self, table, lang, out)
     class(assur_mechanism_t), intent(in) :: self
     type(step_table_t), intent(in) :: table
@@ -312,11 +507,12 @@ contains
     character(len=:), allocatable :: line1, line2, line3, line4
     character(len=field_width) :: name
     character(len=len(self%deck%pair_name)) :: full_name
-    character(len=:), allocatable :: deg, newton, newton_m
+    character(len=:), allocatable :: deg, newton, newton_m, metre
     real(wp) :: mag, ang, nn, mm
     integer :: k, ip, np, pos
-    logical :: any_p, prismatic
+    logical :: any_p, prismatic, drive
 
+    drive = self%deck%mech%drive_dyad > 0
     np = size(self%deck%pair_name)
     any_p = .false.
     do ip = 1, np
@@ -326,10 +522,12 @@ contains
       deg = "град"
       newton = "Н"
       newton_m = "Н*м"
+      metre = "м"
     else
       deg = "deg"
       newton = "N"
       newton_m = "N*m"
+      metre = "m"
     end if
     line1 = adjustr(pad9("PHI1"))
     line2 = repeat(" ", phi_width)
@@ -344,11 +542,19 @@ contains
       line3 = line3//p_label(name, "N", prismatic)
       line4 = line4//p_label(name, "M", prismatic)
     end do
-    call out%put(trim(line1//adjustr(pad12("M1"))))
-    call out%put(trim(line2))
-    if (any_p) then
-      call out%put(line3)
-      call out%put(line4)
+    if (drive) then
+      ! the actuator's force, stroke, stroke speed and acceleration in the last column
+      call out%put(trim(line1//adjustr(pad12("F_DRIVE"))))
+      call out%put(trim(line2//adjustr(pad12("STROKE"))))
+      call out%put(line3//adjustr(pad12("STROKE_V")))
+      call out%put(line4//adjustr(pad12("STROKE_A")))
+    else
+      call out%put(trim(line1//adjustr(pad12("M1"))))
+      call out%put(trim(line2))
+      if (any_p) then
+        call out%put(line3)
+        call out%put(line4)
+      end if
     end if
     line1 = right(deg, phi_width)
     line2 = repeat(" ", phi_width)
@@ -356,8 +562,13 @@ contains
       line1 = line1//right(newton, field_width)
       line2 = line2//right(deg, field_width)
     end do
-    call out%put(trim(line1//right(newton_m, field_width)))
-    call out%put(trim(line2))
+    if (drive) then
+      call out%put(trim(line1//right(newton, field_width)))
+      call out%put(trim(line2//right(metre, field_width)))
+    else
+      call out%put(trim(line1//right(newton_m, field_width)))
+      call out%put(trim(line2))
+    end if
     do k = 1, table%row_count()
       associate (v => table%rows(:, k))
         line1 = fixed_field(v(1), phi_width, 2)
@@ -383,11 +594,18 @@ contains
             line4 = line4//repeat(" ", field_width)
           end if
         end do
-        call out%put(line1//fixed_field(v(pos + 1), field_width, 2))
-        call out%put(line2)
-        if (any_p) then
-          call out%put(trim(line3))
-          call out%put(trim(line4))
+        if (drive) then
+          call out%put(line1//fixed_field(v(pos + 1), field_width, 2))
+          call out%put(line2//fixed_field(v(pos + 2), field_width, stroke_decimals))
+          call out%put(line3//fixed_field(v(pos + 3), field_width, stroke_decimals))
+          call out%put(line4//fixed_field(v(pos + 4), field_width, stroke_decimals))
+        else
+          call out%put(line1//fixed_field(v(pos + 1), field_width, 2))
+          call out%put(line2)
+          if (any_p) then
+            call out%put(trim(line3))
+            call out%put(trim(line4))
+          end if
         end if
       end associate
     end do

@@ -12,7 +12,7 @@ module kinetostat_format
   private
   public :: fixed_field, exp_field, int_field, full_number, whole_number, cell_number
   public :: echo_number, echo_array_number, footer_number, limit_number, pad_right, display_width
-  public :: put_cell, put_fixed, cell_room
+  public :: put_cell, put_fixed, cell_room, fixed_number, short_number
 
   ! The edit descriptors of the policy (kinetostat_decimal writes them exactly as the
   ! compiler's formatted WRITE would, only faster):
@@ -248,6 +248,69 @@ contains
     call edit_es(x, 1, 0, field)
     text = trim(adjustl(field))
   end function limit_number
+  !> A number in fixed point with `decimals` decimals and no blanks (drawing coordinates and
+  !> labels of the SVG sheets): a leading zero is always written ("0.50", "-0.25"), a value
+  !> that rounds to zero is written without a sign; |x| >= 1e15 goes to exponent form.
+  pure function fixed_number(x, decimals) result(text)
+    !> Finite value.
+    real(wp), intent(in) :: x
+    !> Decimals (0 gives a whole number without a point).
+    integer, intent(in) :: decimals
+    character(len=:), allocatable :: text
+    character(len=scratch_len) :: buf
+    real(wp) :: scale
+    logical :: fits
+    if (abs(x) >= 1.0e15_wp) then
+      text = full_number(x)
+      return
+    end if
+    scale = 10.0_wp**decimals
+    if (anint(abs(x) * scale) == 0.0_wp) then
+      buf = "0"
+      if (decimals > 0) buf = "0."//repeat("0", decimals)
+      text = trim(buf)
+      return
+    end if
+    call edit_f_with_blank(x, decimals, buf, fits)   ! F0.d with its leading zero
+    text = trim(adjustl(buf))
+    if (decimals == 0 .and. text(len(text):len(text)) == ".") text = text(1:len(text) - 1)
+  end function fixed_number
+
+  !> A value for a label beside a picture ("2716", "12.3", "0.457"): about three
+  !> significant digits in fixed point (none after the point from 100 up), exponent form
+  !> (3 significant digits, ES10.2) from 1e7 up.
+  pure function short_number(x) result(text)
+    !> Finite value.
+    real(wp), intent(in) :: x
+    character(len=:), allocatable :: text
+    real(wp) :: a
+    a = abs(x)
+    if (a >= 1.0e7_wp) then
+      text = short_exponent(x)
+    else if (a >= 100.0_wp) then
+      text = fixed_number(x, 0)
+    else if (a >= 10.0_wp) then
+      text = fixed_number(x, 1)
+    else if (a >= 1.0_wp) then
+      text = fixed_number(x, 2)
+    else if (a >= 1.0e-3_wp) then
+      text = fixed_number(x, 3)
+    else if (a == 0.0_wp) then
+      text = "0"
+    else
+      text = short_exponent(x)
+    end if
+  end function short_number
+
+  !> ES10.2 without blanks.
+  pure function short_exponent(x) result(text)
+    real(wp), intent(in) :: x
+    character(len=:), allocatable :: text
+    character(len=10) :: field
+    call edit_es(x, 2, 0, field)
+    text = trim(adjustl(field))
+  end function short_exponent
+
 
   !> Characters a UTF-8 text takes on screen (continuation bytes 0x80-0xBF not counted), so
   !> that Cyrillic labels (two bytes a letter) keep columns aligned.

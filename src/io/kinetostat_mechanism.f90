@@ -8,6 +8,7 @@ module kinetostat_mechanism
   use kinetostat_step_table, only: step_table_t
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_labels, only: lang_ru
+  use kinetostat_sketch, only: sketch_t
   implicit none
   private
   public :: mechanism_t
@@ -29,6 +30,9 @@ module kinetostat_mechanism
     procedure(results_i), deferred :: write_results
     !> The commented template deck.
     procedure(template_i), deferred :: write_template
+    !> The topology for a drawing (links and their points, pivots, guides, gravity) after
+    !> read_deck; by default not available.
+    procedure :: sketch
   end type mechanism_t
 
   abstract interface
@@ -87,5 +91,13 @@ contains
       text = self%title_en
     end if
   end function title
+
+  !> The topology for a drawing: by default none (`sketch%available` false).
+  pure subroutine sketch(self, out)
+    class(mechanism_t), intent(in) :: self
+    !> The topology; names as in the kinematics columns (x_<P>, phi<i>).
+    type(sketch_t), intent(out) :: out
+    out%available = .false.
+  end subroutine sketch
 
 end module kinetostat_mechanism
