@@ -223,7 +223,8 @@ contains
     open (newunit=unit, file="/proc/self/clear_refs", action='write', iostat=ios)
     if (ios /= 0) return
     write (unit, '(a)', iostat=ios) "5"
-    close (unit, iostat=ios)
+    if (ios /= 0) write (output_unit, '(a)') "bench: cannot reset the peak memory; the peaks are since the start"
+    close (unit)
   end subroutine reset_peak
 
   !> Peak resident set size since the last reset, MiB (VmHWM of /proc/self/status; 0 if unknown).

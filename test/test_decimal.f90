@@ -54,7 +54,7 @@ contains
     integer :: i, j, bad
     character(len=:), allocatable :: shown
     bad = 0
-    shown = ""
+    allocate (character(len=0) :: shown) ! not shown = "" (gcc's -Wmaybe-uninitialized)
     do i = 1, size(cases)
       do j = 1, size(descriptors)
         call compare(cases(i), descriptors(j), bad, shown)
@@ -75,7 +75,7 @@ contains
     integer :: pos
     state = 14_int64
     bad = 0
-    shown = ""
+    allocate (character(len=0) :: shown) ! not shown = "" (gcc's -Wmaybe-uninitialized)
     k = 0
     do i = 1, sample_count
       x = sample(state, i)
@@ -162,6 +162,7 @@ contains
       select case (mod(abs(next(state)), 3_int64))
       case (1); x = nearest(x, 1.0_wp)
       case (2); x = nearest(x, -1.0_wp)
+      case default ! the decimal as it is
       end select
       if (btest(bits, 62)) x = -x
     case (3) ! just below a power of ten: rounds up to a new power at some digit count

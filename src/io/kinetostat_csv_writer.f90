@@ -39,7 +39,10 @@ contains
     do c = 1, size(table%columns)
       if (shown(c)) columns = [columns, c]
     end do
-    whole = [(table%is_whole(columns(c)), c = 1, size(columns))]
+    allocate (whole(size(columns)))
+    do c = 1, size(columns)
+      whole(c) = table%is_whole(columns(c))
+    end do
     ! room for every row at once (no copying while the buffer grows)
     call out%reserve(table%row_count() * (size(columns) * (cell_room + 1) + 1))
     do k = 1, table%row_count()

@@ -9,6 +9,9 @@
 !> product does not fit in 128 bits (|x| far from 1 for the digits asked) and descriptors
 !> outside the fast path fall back to an internal WRITE with the same descriptor, so the
 !> result is always the compiler's.
+!> Every field routine writes into a character(*) dummy whose length IS the field width (as
+!> an internal WRITE does), so intent(out)/(inout) with an assumed length is the design here.
+! allow(assumed-size-character-intent)
 module kinetostat_decimal
   use, intrinsic :: iso_fortran_env, only: int64
   use kinetostat_kinds, only: wp

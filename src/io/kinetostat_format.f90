@@ -3,6 +3,8 @@
 !> field (never `*`); three-digit exponents keep their `E`; CSV and JSON numbers carry 13
 !> significant digits; flags and counts are whole numbers. Non-finite values never get
 !> here: the run pipeline rejects them first (see kinetostat_run).
+!> Field routines write into a character(*) dummy whose length is the field width.
+! allow(assumed-size-character-intent)
 module kinetostat_format
   use, intrinsic :: iso_fortran_env, only: int64
   use kinetostat_kinds, only: wp

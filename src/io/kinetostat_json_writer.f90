@@ -77,7 +77,10 @@ contains
     end do
     call out%put("  ],")
     call out%put('  "rows": [')
-    whole = [(table%is_whole(c), c = 1, size(table%columns))]
+    allocate (whole(size(table%columns)))
+    do c = 1, size(table%columns)
+      whole(c) = table%is_whole(c)
+    end do
     ! room for every row at once (no copying while the buffer grows)
     call out%reserve(table%row_count() * (size(table%columns) * (cell_room + 2) + 8))
     do k = 1, table%row_count()
