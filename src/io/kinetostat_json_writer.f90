@@ -103,9 +103,10 @@ contains
     if (allocated(table%summary)) then
       call out%put('  "summary": [')
       do i = 1, size(table%summary)
-        line = "    "//echo_object(table%summary(i))
-        if (i < size(table%summary)) line = line//","
-        call out%put(line)
+        call out%append("    ")
+        call put_echo_object(out, table%summary(i))
+        if (i < size(table%summary)) call out%append(",")
+        call out%end_line()
       end do
       call out%put("  ],")
     end if
