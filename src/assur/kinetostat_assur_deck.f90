@@ -15,8 +15,9 @@ module kinetostat_assur_deck
     deck_array_capacities, deck_source_t, namelist_probe_t, deck_error, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn, &
     is_whole_in, require_whole
-  use kinetostat_vec2, only: unit_at
+  use kinetostat_vec2, only: unit_at, rotate, magnitude, cross
   use kinetostat_assur_kinematics, only: link_state_t, dyad_pose_t, dyad_geometry_t, kind_names, kind_has_mode, &
+    frame_state, crank_state, dyad_pose, pose_ok, &
     kind_rrr, kind_rrp, kind_rpr, kind_prp, kind_rpp
   use kinetostat_assur_statics, only: pair_is_prismatic
   use kinetostat_assur, only: assur_mech_t, assur_link_t, assur_dyad_t, assur_force_t, link_a, link_b, &
@@ -33,6 +34,8 @@ module kinetostat_assur_deck
   integer, parameter :: max_forces = 16
   !> Capacity of the external moment list.
   integer, parameter :: max_moments = 16
+  !> Global form: largest misfit of a given joint, relative to the dyad's size.
+  real(wp), parameter :: misfit_rel = 1.0e-6_wp
   !> Capacity of a load table, (position, value) points.
   integer, parameter :: max_table_points = 64
   !> Unset logical marker is not available in namelists: logicals have plain defaults.
@@ -79,6 +82,9 @@ module kinetostat_assur_deck
     !> two-contact model over the shorter of the two), m.
     real(wp) :: guide2 = unset, guide3 = unset, guide23 = unset
     real(wp) :: block2 = unset, block3 = unset, block23 = unset
+    !> Global form only: the inner joint B at the reference position (RRR, RRP; PRP: a
+    !> check), m.
+    real(wp) :: b(2) = unset
   end type dyad_in_t
 
   !> A per-step value: constant, angle window, or a column of `step_values`.
@@ -146,6 +152,10 @@ module kinetostat_assur_deck
     real(wp), allocatable :: phi_list(:)
     !> Whether phi_start was computed as the extreme position of the output link.
     logical :: start_extreme = .false.
+    !> Whether the deck gave global points at the reference position (coordinates = 'global').
+    logical :: global = .false.
+    !> Reference position of the crank for the global form, deg.
+    real(wp) :: phi_ref = 0.0_wp
     !> Direction of gravity, deg.
     real(wp) :: gravity_angle = -90.0_wp
     !> Constant crank speed (when not prescribed per step), rad/s.
@@ -248,7 +258,9 @@ contains
     type(assur_deck_t), intent(out) :: deck
     !> Input error naming file, group, variable and reason.
     type(error_t), allocatable, intent(out) :: error
-    character(len=80) :: title
+    !> As long as the whole deck: an unterminated quote reads the rest of the deck into it
+    !> (a shorter variable makes gfortran print a runtime warning); at most 80 are kept.
+    character(len=size(source%lines) * len(source%lines) + 1) :: title
     !> Integer deck variables, read as reals (see require_whole).
     real(wp) :: frame_id, crank_id, n
     !> Linear actuator as driver: dyad number and pair 1..3 (whole numbers, read as reals).
@@ -258,6 +270,14 @@ contains
     real(wp), allocatable :: phi1(:)
     !> Where the steps start: '' (phi_start) or 'extreme' (of the output link).
     character(len=16) :: start_at
+    !> 'local' (link coordinates) or 'global' (points at the reference position phi_ref, deg).
+    character(len=16) :: coordinates
+    real(wp) :: phi_ref
+    !> Global form: frames of the links at the reference position; given global points of
+    !> each dyad (A, B, C) and whether its centres of mass were given.
+    type(link_state_t), allocatable :: ref(:)
+    real(wp) :: glob(2, 3)
+    logical :: global, s_given(2), crank_s_given, at_given
     !> frame_id and crank_id as integers.
     integer :: frame_no, crank_no, nd, nf, nm, n_omega, n_eps, n_values, ios, k, d, i
     real(wp) :: crank_at(2), crank_m, crank_j, crank_s(2), omega1, g, gravity_angle, phi_start, dphi
@@ -278,7 +298,8 @@ contains
     character(len=:), allocatable :: name
     namelist /assur/ title, frame_id, crank_id, crank_at, crank_m, crank_j, crank_s, omega1, &
       omega1_step, eps1_step, g, gravity_angle, phi_start, dphi, n, dyad, force, moment, &
-      step_values, angles_signed, components, drive_dyad, drive_pair, output_link, phi1, start_at, crank_f, crank_r
+      step_values, angles_signed, components, drive_dyad, drive_pair, output_link, phi1, start_at, crank_f, crank_r, &
+      coordinates, phi_ref
 
     ctx%path = source%path
     ctx%group = group_name
@@ -286,6 +307,7 @@ contains
     frame_id = 0.0_wp; crank_id = 1.0_wp; n = unset_real
     drive_dyad = unset_real; drive_pair = unset_real
     output_link = unset_real; start_at = ""; crank_f = unset_real; crank_r = unset_real
+    coordinates = "local"; phi_ref = unset_real
     crank_at = unset_real; crank_m = unset_real; crank_j = unset_real; crank_s = unset_real
     omega1 = unset_real; g = unset_real; gravity_angle = unset_real
     phi_start = unset_real; dphi = unset_real
@@ -307,6 +329,10 @@ contains
       return
     end if
 
+    call require_rule(ctx, "title", len_trim(title) <= len(deck%title), "longer than "// &
+      int_str(len(deck%title))//" characters", error)
+    if (allocated(error)) return
+
     ! ---- frame, crank, speed law, gravity, steps
     call require_whole(ctx, "frame_id", frame_id, 0, huge(1), frame_no, error); if (allocated(error)) return
     call require_whole(ctx, "crank_id", crank_id, 0, huge(1), crank_no, error); if (allocated(error)) return
@@ -314,7 +340,19 @@ contains
       "must be >= 0 and differ from frame_id (got "//int_str(crank_no)//")", error)
     if (allocated(error)) return
     call optional_pair(ctx, "crank_at", crank_at, error); if (allocated(error)) return
+    crank_s_given = any(is_set(crank_s))
     call optional_pair(ctx, "crank_s", crank_s, error); if (allocated(error)) return
+    call require_rule(ctx, "coordinates", any(lower(trim(coordinates)) == [character(len=8) :: "local", "global"]), &
+      "must be 'local' (link coordinates) or 'global' (points at the reference position phi_ref), got '"// &
+      trim(coordinates)//"'", error)
+    if (allocated(error)) return
+    global = lower(trim(coordinates)) == "global"
+    if (global) then
+      call require_set(ctx, "phi_ref", phi_ref, error); if (allocated(error)) return
+    else
+      call require_rule(ctx, "phi_ref", .not. is_set(phi_ref), "only used with coordinates = 'global'", error)
+      if (allocated(error)) return
+    end if
     crank_m = optional_default(crank_m, 0.0_wp)
     call require_nonnegative(ctx, "crank_m", crank_m, error); if (allocated(error)) return
     crank_j = optional_default(crank_j, 0.0_wp)
@@ -373,12 +411,28 @@ contains
     allocate (ids(0:2 * nd + 1))
     ids(0) = frame_no
     ids(1) = crank_no
+    if (global) then
+      allocate (ref(0:2 * nd + 1))
+      ref(0) = frame_state()
+      ref(1) = crank_state(crank_at, phi_ref * deg_to_rad)
+      if (crank_s_given) deck%mech%links(1)%s = to_local(ref(1), crank_s)
+      deck%phi_ref = phi_ref
+      deck%global = .true.
+    end if
     do d = 1, nd
+      if (global) then
+        call globalize_dyad(ctx, d, dyad(d), ids(0:2 * d - 1), ref, glob, s_given, error)
+        if (allocated(error)) return
+      end if
       call read_dyad(ctx, d, dyad(d), ids(0:2 * d - 1), deck%mech%dyads(d), &
                      deck%mech%links(link_a(d)), deck%mech%links(link_b(d)), error)
       if (allocated(error)) return
       ids(2 * d) = deck%mech%links(link_a(d))%id
       ids(2 * d + 1) = deck%mech%links(link_b(d))%id
+      if (global) then
+        call reference_pose(ctx, d, phi_ref, glob, s_given, is_set(dyad(d)%b(1)), deck%mech, ref, error)
+        if (allocated(error)) return
+      end if
     end do
 
     call read_driver(ctx, drive_dyad, drive_pair, deck%mech, error); if (allocated(error)) return
@@ -414,11 +468,16 @@ contains
       name = "force("//int_str(k)//")%"
       associate (fi => force(k))
         call moving_link(ctx, name//"link", fi%link, ids, i, error); if (allocated(error)) return
+        at_given = any(is_set(fi%at))
         call optional_pair(ctx, name//"at", fi%at, error); if (allocated(error)) return
         if (any(is_set([fi%fx, fi%fy]))) then
           call force_components(ctx, name, fi, error); if (allocated(error)) return
         end if
         call require_set(ctx, name//"angle", fi%angle, error); if (allocated(error)) return
+        if (global) then
+          if (at_given) fi%at = to_local(ref(i), fi%at)
+          if (fi%follow) fi%angle = fi%angle - ref(i)%th * rad_to_deg
+        end if
         deck%mech%forces(k) = assur_force_t(link=i, at=fi%at, angle=fi%angle * deg_to_rad, follow=fi%follow)
         if (is_set(fi%table(1))) then
           call read_table(ctx, name, fi%table, fi%over, [fi%value, fi%idle, fi%phi_on, fi%phi_off, fi%column], &
@@ -492,6 +551,155 @@ contains
     deck%frame_id = frame_no
     deck%crank_id = crank_no
   end subroutine read_assur_deck
+
+  !> Point `p` (global, m) in the coordinates of the link whose frame is `ls` (components
+  !> below 1e-13 of its distance from the link's origin are roundoff: 0).
+  pure function to_local(ls, p) result(r)
+    type(link_state_t), intent(in) :: ls
+    real(wp), intent(in) :: p(2)
+    real(wp) :: r(2)
+    r = rotate(p - ls%o, -ls%th)
+    ! roundoff of the rotation (a point on the link's axis) is 0
+    where (abs(r) <= 1.0e-13_wp * magnitude(p - ls%o)) r = 0.0_wp
+  end function to_local
+
+  !> Global form, before the dyad is validated: its attachment points and guide angles
+  !> (global at the reference position) become coordinates of the links they attach to,
+  !> RRR's l2, l3 and RRP's l2 come from the joints A, B, C (and the mode from B's side),
+  !> RPP's slot point and angle become link b's (its origin at the guide point then).
+  subroutine globalize_dyad(ctx, d, dy, ids, ref, glob, s_given, error)
+    type(deck_context_t), intent(in) :: ctx
+    !> Dyad number.
+    integer, intent(in) :: d
+    !> The dyad as read; converted in place.
+    type(dyad_in_t), intent(inout) :: dy
+    !> Ids of the links defined before it.
+    integer, intent(in) :: ids(0:)
+    !> Frames of the links at the reference position (those before the dyad are set).
+    type(link_state_t), intent(in) :: ref(0:)
+    !> The given global points A (pair 1), B (inner, or unset), C (pair 3), m.
+    real(wp), intent(out) :: glob(2, 3)
+    !> Whether the centres of mass s2, s3 were given (global points, converted later).
+    logical, intent(out) :: s_given(2)
+    type(error_t), allocatable, intent(out) :: error
+    character(len=:), allocatable :: p
+    integer :: i1, i3, kind
+    real(wp) :: t(2), gam
+    p = "dyad("//int_str(d)//")%"
+    glob = unset_real
+    s_given = [any(is_set(dy%s2)), any(is_set(dy%s3))]
+    if (.not. is_whole_in(dy%kind, 1, 5)) return ! read_dyad reports it
+    kind = nint(dy%kind)
+    call find_link(ctx, p//"on2", dy%on2, ids, .true., i1, error); if (allocated(error)) return
+    call find_link(ctx, p//"on3", dy%on3, ids, .true., i3, error); if (allocated(error)) return
+    call require_pair(ctx, p//"at2", dy%at2, error); if (allocated(error)) return
+    call require_pair(ctx, p//"at3", dy%at3, error); if (allocated(error)) return
+    glob(:, 1) = dy%at2
+    glob(:, 3) = dy%at3
+    if (is_set(dy%b(1)) .or. is_set(dy%b(2))) then
+      call require_pair(ctx, p//"b", dy%b, error); if (allocated(error)) return
+      glob(:, 2) = dy%b
+    end if
+    dy%at2 = to_local(ref(i1), glob(:, 1))
+    dy%at3 = to_local(ref(i3), glob(:, 3))
+    gam = dy%angle3
+    if (is_set(dy%angle2)) dy%angle2 = dy%angle2 - ref(i1)%th * rad_to_deg
+    if (is_set(dy%angle3)) dy%angle3 = dy%angle3 - ref(i3)%th * rad_to_deg
+    select case (kind)
+    case (kind_rrr, kind_rrp)
+      call require_rule(ctx, p//"b", is_set(dy%b(1)), "missing: the global form gives the inner joint B "// &
+        "(its lengths are derived from A, B, C)", error)
+      if (allocated(error)) return
+      call require_rule(ctx, p//"l2", .not. is_set(dy%l2), "derived from at2 and b in the global form: remove it", error)
+      if (allocated(error)) return
+      dy%l2 = magnitude(glob(:, 2) - glob(:, 1))
+      if (kind == kind_rrr) then
+        call require_rule(ctx, p//"l3", .not. is_set(dy%l3), "derived from at3 and b in the global form: remove it", &
+          error)
+        if (allocated(error)) return
+        dy%l3 = magnitude(glob(:, 2) - glob(:, 3))
+        ! mode +1: B left of A -> C
+        if (.not. is_set(dy%mode)) dy%mode = merge(1.0_wp, -1.0_wp, &
+          cross(glob(:, 3) - glob(:, 1), glob(:, 2) - glob(:, 1)) >= 0.0_wp)
+      else if (is_set(gam)) then
+        ! mode +1: B at the larger of the two guide coordinates (their mean is -(C - A).t)
+        t = unit_at(gam * deg_to_rad)
+        if (.not. is_set(dy%mode)) dy%mode = merge(1.0_wp, -1.0_wp, &
+          dot_product(glob(:, 2) - glob(:, 3), t) >= -dot_product(glob(:, 3) - glob(:, 1), t))
+      end if
+    case (kind_prp)
+      continue
+    case default
+      call require_rule(ctx, p//"b", .not. is_set(dy%b(1)), "not used by this dyad (kind "//kind_names(kind)// &
+        "): its inner pair is prismatic", error)
+      if (allocated(error)) return
+      if (kind == kind_rpp .and. is_set(gam)) then
+        ! the slot: a global point and direction; link b's origin is at the guide point C here
+        call require_pair(ctx, p//"slot_at", dy%slot_at, error); if (allocated(error)) return
+        dy%slot_at = rotate(dy%slot_at - glob(:, 3), -gam * deg_to_rad)
+        if (is_set(dy%slot_angle)) dy%slot_angle = dy%slot_angle - gam
+      end if
+    end select
+  end subroutine globalize_dyad
+
+  !> Global form, after the dyad is validated: its pose at the reference position must put
+  !> the joints where the deck gave them (relative misfit 1e-6 of the dyad's size), else an
+  !> input error naming the joint and the misfit; its links' frames there convert their
+  !> centres of mass to link coordinates.
+  subroutine reference_pose(ctx, d, phi_ref, glob, s_given, b_given, mech, ref, error)
+    type(deck_context_t), intent(in) :: ctx
+    !> Dyad number.
+    integer, intent(in) :: d
+    !> Reference crank angle, deg.
+    real(wp), intent(in) :: phi_ref
+    !> Given global points A, B, C, m.
+    real(wp), intent(in) :: glob(2, 3)
+    !> Whether s2, s3 were given; whether B was given.
+    logical, intent(in) :: s_given(2), b_given
+    !> The mechanism, dyad d built; its links' centres of mass are converted.
+    type(assur_mech_t), intent(inout) :: mech
+    !> Frames at the reference position; those of the dyad's links are set.
+    type(link_state_t), intent(inout) :: ref(0:)
+    type(error_t), allocatable, intent(out) :: error
+    type(dyad_pose_t) :: pose
+    character(len=:), allocatable :: p, at_ref
+    real(wp) :: size, misfit
+    integer :: kind
+    p = "dyad("//int_str(d)//")%"
+    at_ref = " at the reference position (phi_ref = "//real_str(phi_ref)//" deg)"
+    associate (dy => mech%dyads(d))
+      kind = dy%geom%kind
+      pose = dyad_pose(dy%geom, ref(dy%on(1)), dy%at(:, 1), dy%ang(1), ref(dy%on(2)), dy%at(:, 2), dy%ang(2))
+    end associate
+    if (pose%status /= pose_ok) then
+      call deck_error(ctx, "dyad("//int_str(d)//")", "cannot be assembled"//at_ref, error)
+      return
+    end if
+    size = magnitude(glob(:, 3) - glob(:, 1))
+    if (b_given) size = max(size, magnitude(glob(:, 2) - glob(:, 1)), magnitude(glob(:, 2) - glob(:, 3)))
+    size = max(size, tiny(1.0_wp))
+    if (b_given) then
+      misfit = magnitude(pose%p(:, 2) - glob(:, 2))
+      if (misfit > misfit_rel * size) then
+        call deck_error(ctx, p//"b", "the reference position is not assembled: joint B is "//real_str(misfit)// &
+          " m from where the links put it ("//real_str(pose%p(1, 2))//", "//real_str(pose%p(2, 2))//")"// &
+          at_ref, error)
+        return
+      end if
+    end if
+    if (kind == kind_rpp) then
+      misfit = magnitude(pose%link(2)%o - glob(:, 3))
+      if (misfit > misfit_rel * size) then
+        call deck_error(ctx, p//"at2", "the reference position is not assembled: pin A is "//real_str(misfit)// &
+          " m off the slot through slot_at"//at_ref, error)
+        return
+      end if
+    end if
+    ref(link_a(d)) = pose%link(1)
+    ref(link_b(d)) = pose%link(2)
+    if (s_given(1)) mech%links(link_a(d))%s = to_local(ref(link_a(d)), mech%links(link_a(d))%s)
+    if (s_given(2)) mech%links(link_b(d))%s = to_local(ref(link_b(d)), mech%links(link_b(d))%s)
+  end subroutine reference_pose
 
   !> The steps' crank angles as a list `phi1(:)` (any order), or phi_start [or
   !> start_at = 'extreme'], dphi, n; sets deck%n, deck%phi_list, deck%phi_start, deck%dphi,
@@ -752,7 +960,7 @@ contains
                                dy%l2, dy%l3, dy%e, dy%slot_at, dy%slot_angle, dy%mode, dy%m2, dy%j2, dy%s2, &
                                dy%m3, dy%j3, dy%s3, dy%frame_angle, dy%inner_on, dy%f2, dy%f3, dy%f23, &
                                dy%r2, dy%r3, dy%r23, dy%guide2, dy%guide3, dy%guide23, dy%block2, dy%block3, &
-                               dy%block23]))
+                               dy%block23, dy%b]))
   end function dyad_touched
 
   !> A two-component point: default (0, 0) when unset; both or none; finite.

@@ -632,6 +632,10 @@ contains
     type(step_table_t), intent(inout) :: table
     character(len=160) :: line
     integer :: k, d
+    if (deck%global) then
+      call table%echo_text("COORDINATES", "global (echoed below as derived link coordinates)")
+      call table%echo_real("PHI_REF", deck%phi_ref, "deg")
+    end if
     call table%echo_int("FRAME_ID", deck%frame_id, "")
     call table%echo_int("CRANK_ID", deck%crank_id, "")
     call table%echo_array("CRANK_AT", deck%mech%pivot, "m")

@@ -1,6 +1,7 @@
 # Command-line tests of the generic engine's extensions (sourced by tools/test with
 # test/cli/lib.sh): linear actuator as driver, crank angle lists (rocking inputs), start at the
-# extreme position, loads by components and tables over a link's position.
+# extreme position, loads by components and tables over a link's position, the global
+# coordinates deck form.
 
 # drive_cols FILE NAME...: the named columns of a CSV file (header + rows), in the given order.
 drive_cols() {
@@ -166,3 +167,40 @@ expect_input_error assur-over-link '&assur: force\(1\)%over: link 8 is not a mov
   "$(deck_with le_ol "$sc" "s/$win/force(1)%table = 0.2, 0, 0.5, 600, force(1)%over = 8/")"
 expect_input_error assur-components-and-angle '&assur: force\(1\)%fx: give the force either by components' \
   "$(deck_with le_fa "$sc" "s/$win/force(1)%fx = 1/")"
+
+# --- global coordinates: a four-bar and the generic six-bar written both ways give identical
+# output (CSV byte for byte; the table's RESULTS except the self-check's roundoff figures)
+for d in fourbar sixbar; do
+  run_ks "data/assur_$d.nml" --format csv; cp "$out" "$cli_tmp/gl_local_$d.csv"
+  run_ks "data/assur_${d}_global.nml" --format csv; cp "$out" "$cli_tmp/gl_global_$d.csv"
+  [ "$rc" -eq 0 ] && pass || fail "assur-global-$d-exit" "exit $rc: $(cat "$err")"
+  if cmp -s "$cli_tmp/gl_local_$d.csv" "$cli_tmp/gl_global_$d.csv"; then pass
+  else fail "assur-global-$d-identical" "CSV differs: $(diff "$cli_tmp/gl_local_$d.csv" "$cli_tmp/gl_global_$d.csv" | head -4)"; fi
+  run_ks "data/assur_$d.nml"; sed -n '/RESULTS/,/SELF-CHECK/p' "$out" >"$cli_tmp/gl_local_$d.table"
+  run_ks "data/assur_${d}_global.nml"; sed -n '/RESULTS/,/SELF-CHECK/p' "$out" >"$cli_tmp/gl_global_$d.table"
+  if cmp -s "$cli_tmp/gl_local_$d.table" "$cli_tmp/gl_global_$d.table"; then pass
+  else fail "assur-global-$d-table-identical" "table RESULTS differ"; fi
+done
+# the comparison can fail: the coupler's joint C 0.1 mm off gives another four-bar
+run_ks "$(deck_with gl_c data/assur_fourbar_global.nml 's/dyad(1)%b = 0.38136313809986955/dyad(1)%b = 0.38146313809986955/')" --format csv
+expect_differ assur-global-comparison-can-fail "$cli_tmp/gl_local_fourbar.csv" "$out"
+# misfits of the reference position: exit 2 naming the joint and the misfit
+expect_input_error assur-global-misfit-rrp '&assur: dyad\(2\)%b: the reference position is not assembled: joint B is 0\.1007[0-9]*E-2 m from where the links put it' \
+  "$(deck_with gl_h data/assur_sixbar_global.nml 's/dyad(2)%b = 0.2066768052997261, -0.36623587262509272/dyad(2)%b = 0.2071240188952261, -0.36713029981609263/')"
+expect_input_error assur-global-misfit-mode '&assur: dyad\(1\)%b: the reference position is not assembled: joint B is 0\.499[0-9]* m' \
+  "$(deck_with gl_m data/assur_fourbar_global.nml 's/dyad(1)%kind = 1,/dyad(1)%kind = 1, dyad(1)%mode = -1,/')"
+expect_input_error assur-global-unassembled '&assur: dyad\(1\): cannot be assembled at the reference position \(phi_ref = 0\.0+ deg\)' \
+  "$(deck_with gl_ua data/assur_pr3050.nml "s/dyad(1)%e = 0/dyad(1)%e = 5/; s/frame_id = 4/coordinates = 'global', phi_ref = 0, frame_id = 4/")"
+expect_input_error assur-global-phi-ref '&assur: phi_ref: missing' "$(deck_with gl_pr data/assur_fourbar_global.nml 's/, phi_ref = 40//')"
+expect_input_error assur-local-phi-ref "&assur: phi_ref: only used with coordinates = 'global'" "$(deck_with gl_lp data/assur_fourbar.nml 's/omega1 = 20 /omega1 = 20, phi_ref = 3 /')"
+expect_input_error assur-coordinates "&assur: coordinates: must be 'local'" "$(deck_with gl_co data/assur_fourbar_global.nml "s/coordinates = 'global'/coordinates = 'world'/")"
+expect_input_error assur-global-no-b '&assur: dyad\(1\)%b: missing: the global form gives the inner joint B' "$(deck_with gl_nb data/assur_fourbar_global.nml '/dyad(1)%b =/d')"
+expect_input_error assur-global-l2 '&assur: dyad\(1\)%l2: derived from at2 and b in the global form' "$(deck_with gl_l2 data/assur_fourbar_global.nml 's/dyad(1)%kind = 1,/dyad(1)%kind = 1, dyad(1)%l2 = 0.35,/')"
+expect_input_error assur-global-b-rpr '&assur: dyad\(1\)%b: not used by this dyad \(kind RPR\)' "$(deck_with gl_br data/assur_pr3050.nml "s/dyad(1)%e = 0/dyad(1)%e = 0, dyad(1)%b = 1, 1/; s/frame_id = 4/coordinates = 'global', phi_ref = 0, frame_id = 4/")"
+
+# --- a title longer than 80 characters is an input error; an unterminated quote (a truncated
+# deck) is a namelist error on one line, without gfortran's runtime warning
+expect_input_error assur-title-long '&assur: title: longer than 80 characters' \
+  "$(deck_with tl_long data/assur_fourbar.nml "s/title = '[^']*'/title = '$(printf 'x%.0s' {1..81})'/")"
+head -c 286 data/assur_fourbar.nml >"$cli_tmp/tl_cut.nml"
+expect_input_error assur-title-unterminated '&assur: namelist group not terminated' "$cli_tmp/tl_cut.nml"
