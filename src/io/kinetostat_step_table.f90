@@ -112,6 +112,9 @@ module kinetostat_step_table
     type(column_t), allocatable :: columns(:)
     !> Values, rows(column, row).
     real(wp), allocatable :: rows(:, :)
+    !> Column of the last put_kinematic: every row puts its kinematics in the same order, so
+    !> the next one is almost always the column after it (found without a search by name).
+    integer :: kinematic_cursor = 0
     !> INPUT DATA echo records, in print order.
     type(echo_record_t), allocatable :: echo(:)
     !> Number of echo records in use.
@@ -261,7 +264,12 @@ contains
     type(column_t) :: c
     real(wp), allocatable :: grown(:, :)
     integer :: i
-    i = self%column_index(name)
+    i = 0
+    if (self%kinematic_cursor >= 0 .and. self%kinematic_cursor < size(self%columns)) then
+      if (self%columns(self%kinematic_cursor + 1)%name == name) i = self%kinematic_cursor + 1
+    end if
+    if (i == 0) i = self%column_index(name)
+    self%kinematic_cursor = i
     if (i == 0) then
       c%name = name
       c%unit = unit
@@ -273,6 +281,7 @@ contains
       allocate (grown(i, size(self%rows, 2)), source=0.0_wp)
       grown(1:i - 1, :) = self%rows
       call move_alloc(grown, self%rows)
+      self%kinematic_cursor = i
     end if
     if (self%columns(i)%kinematic) self%rows(i, k) = value + 0.0_wp
   end subroutine put_kinematic
