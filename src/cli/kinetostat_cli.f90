@@ -17,13 +17,14 @@ module kinetostat_cli
   use kinetostat_registry, only: create_mechanism, known_kinds, known_columns
   use kinetostat_step_table, only: column_t
   use kinetostat_diff, only: diff_options_t, diff_outputs
+  use kinetostat_assur_presets, only: assur_preset, preset_names
   implicit none
   private
   public :: run_cli
 
   !> One-line usage, printed with usage errors.
   character(*), parameter :: usage_line = "usage: kinetostat DECK [-o FILE] [--format table|csv|json] " // &
-    "[--lang en|ru] [--quiet] | kinetostat template KIND | --help | --version"
+    "[--lang en|ru] [--quiet] | kinetostat template KIND [-o FILE] | kinetostat diff A B | --help | --version"
 
   !> Warning line when a run's self-check exceeds its tolerance.
   character(*), parameter :: selfcheck_warning_fmt = '(a,es9.2,a,es9.2)'
@@ -33,15 +34,18 @@ module kinetostat_cli
     "kinetostat - kinetostatic force analysis of planar mechanisms", &
     "", &
     "  kinetostat DECK [-o FILE] [--format table|csv|json] [--lang en|ru] [--quiet]", &
-    "  kinetostat template KIND      print a commented example deck", &
+    "  kinetostat template KIND [-o FILE]   print a commented deck to start from (KIND: a", &
+    "                                       mechanism, or a preset of the generic engine)", &
     "  kinetostat diff A B [--rtol R] [--atol A] [--quiet]   compare two outputs", &
     "  kinetostat --help | --version", &
     "", &
     "DECK is a Fortran namelist file; its first group names the mechanism.", &
-    "-o FILE     write to FILE (atomically: nothing is left behind on error)", &
-    "--format    table (default, the legacy printout), csv (full precision) or json", &
-    "--lang      language of the table's labels: en (default) or ru (the 1991 printouts)", &
-    "--quiet     no warnings on stderr (errors are still reported); diff: no report", &
+    "-o FILE, --output FILE   write to FILE (atomically: nothing is left behind on error)", &
+    "--format table|csv|json  the legacy printout (default), CSV (full precision) or JSON", &
+    "--lang en|ru             language of the table's labels (ru: the 1991 printouts)", &
+    "-q, --quiet              no warnings on stderr (errors are still reported); diff: no report", &
+    "-h, --help               this text;  -V, --version  the version", &
+    "--rtol R, --atol A       diff's tolerances (below)", &
     "--name=VALUE is the same as --name VALUE.", &
     "", &
     "diff compares two tables (same --lang) or two CSV files of the program value by value:", &
@@ -98,6 +102,7 @@ contains
           call out%put(trim(help_lines(i)))
         end do
         call out%put("Kinds: "//known_kinds())
+        call out%put("Presets (template): "//preset_names)
         call out%put("Formats: "//format_names)
       else if (args%version) then
         call out%put(version_string)
@@ -149,18 +154,23 @@ contains
     call run_mechanism(mech, group, source, options, table, out, error)
   end subroutine run_deck
 
-  !> The commented template deck of a kind.
+  !> The commented template deck of a kind, or a preset of the generic engine.
   subroutine write_template(kind, out, error)
     character(*), intent(in) :: kind
     type(text_buffer_t), intent(inout) :: out
     type(error_t), allocatable, intent(out) :: error
     class(mechanism_t), allocatable :: mech
+    logical :: found
     call create_mechanism(kind, mech)
-    if (.not. allocated(mech)) then
-      call fatal_error(error, exit_usage, "template: unknown kind '"//kind//"' (known: "//known_kinds()//")")
+    if (allocated(mech)) then
+      call mech%write_template(out)
       return
     end if
-    call mech%write_template(out)
+    call assur_preset(kind, out, found)
+    if (.not. found) then
+      call fatal_error(error, exit_usage, "template: unknown kind '"//kind//"' (known: "//known_kinds()// &
+        "; presets: "//preset_names//")")
+    end if
   end subroutine write_template
 
   !> Warnings of a successful run on stderr: the mechanism's remark, a failed self-check.
