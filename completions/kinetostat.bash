@@ -7,13 +7,13 @@ _kinetostat() {
   cur="${COMP_WORDS[COMP_CWORD]}"
   prev="${COMP_WORDS[COMP_CWORD-1]}"
   local kinds="pr3207 pr3050 sixbar assur gears cam fourbar engine"
-  local run_opts="-o --output --format --lang --quiet --help --version"
+  local run_opts="-o --output --set --format --pairs --at --lang --kinematics --quiet --strict --help --version"
   case "$prev" in
-    --format) COMPREPLY=($(compgen -W "table csv json" -- "$cur")); return ;;
+    --format) COMPREPLY=($(compgen -W "table csv json svg" -- "$cur")); return ;;
     --lang) COMPREPLY=($(compgen -W "en ru" -- "$cur")); return ;;
     -o|--output) COMPREPLY=($(compgen -f -- "$cur")); return ;;
     template) COMPREPLY=($(compgen -W "$kinds" -- "$cur")); return ;;
-    --rtol|--atol) COMPREPLY=(); return ;;
+    --rtol|--atol|--set|--pairs|--at) COMPREPLY=(); return ;;
   esac
   case "${COMP_WORDS[1]}" in
     diff)
@@ -29,7 +29,7 @@ _kinetostat() {
   if [[ "$cur" == -* ]]; then
     COMPREPLY=($(compgen -W "$run_opts" -- "$cur"))
   elif [ "$COMP_CWORD" -eq 1 ]; then
-    COMPREPLY=($(compgen -W "template diff" -- "$cur") $(compgen -f -X '!*.nml' -- "$cur") $(compgen -d -- "$cur"))
+    COMPREPLY=($(compgen -W "template diff -" -- "$cur") $(compgen -f -X '!*.nml' -- "$cur") $(compgen -d -- "$cur"))
   else
     COMPREPLY=($(compgen -f -X '!*.nml' -- "$cur") $(compgen -d -- "$cur"))
   fi

@@ -97,6 +97,15 @@ module kinetostat_assur_kinematics
     real(wp) :: t(2, 3) = 0.0_wp
     !> Why the dyad cannot be assembled, with the numbers (pose_no_assembly only).
     character(len=:), allocatable :: detail
+    !> Stroke of each prismatic pair: position of its sliding side (link a for pairs 1, 2;
+    !> link b for pair 3) along `extend` relative to the other side, m (0 for revolute pairs).
+    real(wp) :: stroke(3) = 0.0_wp
+    !> d stroke / d phi1, m/rad.
+    real(wp) :: stroke_v(3) = 0.0_wp
+    !> d2 stroke / d phi1^2, m/rad^2.
+    real(wp) :: stroke_a(3) = 0.0_wp
+    !> Unit direction in which the sliding side moves when the stroke grows (+-t).
+    real(wp) :: extend(2, 3) = 0.0_wp
   end type dyad_pose_t
 
 contains
@@ -273,6 +282,7 @@ contains
     pose%p(:, 2) = b
     pose%p(:, 3) = b
     pose%t(:, 3) = t
+    call set_stroke(pose, 3, s, ds, x(2), t)
   end subroutine pose_rrp
 
   !> RPR: A - C = s t + e n with t = e(th) the common slide direction; mode +1 takes s > 0.
@@ -311,6 +321,9 @@ contains
     pose%p(:, 2) = a%p
     pose%p(:, 3) = c%p
     pose%t(:, 2) = t
+    ! pin A (link a) moves away from C (link b) as |s| grows: the actuator's length
+    call set_stroke(pose, 2, real(g%mode, wp) * s, real(g%mode, wp) * ds, real(g%mode, wp) * x(2), &
+                    real(g%mode, wp) * t)
   end subroutine pose_rpr
 
   !> PRP: B = G1 + s1 t1 = G2 + s2 t2 (intersection of the two guides).
@@ -349,6 +362,8 @@ contains
     pose%p(:, 3) = b
     pose%t(:, 1) = t1
     pose%t(:, 3) = t2
+    call set_stroke(pose, 1, s1, ds1, x(1), t1)
+    call set_stroke(pose, 3, s2, ds2, x(2), t2)
   end subroutine pose_prp
 
   !> RPP: link b slides along the guide (G, t), its origin O_b = G + s_b t; the slot of b
@@ -388,6 +403,24 @@ contains
     pose%p(:, 3) = ob
     pose%t(:, 2) = ts
     pose%t(:, 3) = t
+    call set_stroke(pose, 2, sa, dsa, x(2), ts)
+    call set_stroke(pose, 3, sb, dsb, x(1), t)
   end subroutine pose_rpp
+
+  !> Record the stroke of prismatic pair `j` with its analogues and extension direction.
+  pure subroutine set_stroke(pose, j, s, ds, dds, extend)
+    !> Pose being filled.
+    type(dyad_pose_t), intent(inout) :: pose
+    !> Pair index 1..3.
+    integer, intent(in) :: j
+    !> Stroke, m; d/dphi1, m/rad; d2/dphi1^2, m/rad^2.
+    real(wp), intent(in) :: s, ds, dds
+    !> Unit direction of extension.
+    real(wp), intent(in) :: extend(2)
+    pose%stroke(j) = s
+    pose%stroke_v(j) = ds
+    pose%stroke_a(j) = dds
+    pose%extend(:, j) = extend
+  end subroutine set_stroke
 
 end module kinetostat_assur_kinematics

@@ -4,15 +4,16 @@
 module kinetostat_cli
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
   use kinetostat_kinds, only: wp, version_string
-  use kinetostat_error, only: error_t, fatal_error, exit_success, exit_usage, exit_input
+  use kinetostat_error, only: error_t, fatal_error, exit_success, exit_usage, exit_input, exit_warning
   use kinetostat_text, only: int_str
   use kinetostat_posix, only: path_kind, path_special, rename_file, process_id, write_standard_output
   use kinetostat_deck, only: deck_source_t, load_deck, read_group_name
+  use kinetostat_override, only: override_t, parse_override, apply_overrides
   use kinetostat_step_table, only: step_table_t
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_labels, only: lang_from_name
-  use kinetostat_run, only: run_options_t, run_mechanism, format_from_name, format_names
+  use kinetostat_run, only: run_options_t, run_mechanism, format_from_name, format_names, format_svg
   use kinetostat_table_writer, only: selfcheck_verdict
   use kinetostat_registry, only: create_mechanism, known_kinds, known_columns
   use kinetostat_step_table, only: column_t
@@ -23,8 +24,9 @@ module kinetostat_cli
   public :: run_cli
 
   !> One-line usage, printed with usage errors.
-  character(*), parameter :: usage_line = "usage: kinetostat DECK [-o FILE] [--format table|csv|json] " // &
-    "[--lang en|ru] [--quiet] | kinetostat template KIND [-o FILE] | kinetostat diff A B | --help | --version"
+  character(*), parameter :: usage_line = "usage: kinetostat DECK|- [--set NAME=VALUE]... [-o FILE] " // &
+    "[--format table|csv|json|svg] [--pairs LIST] [--at K] [--lang en|ru] [--kinematics] [--quiet] [--strict] | " // &
+    "kinetostat template KIND [-o FILE] | kinetostat diff A B [--rtol R] [--atol A] | --help | --version"
 
   !> Warning line when a run's self-check exceeds its tolerance.
   character(*), parameter :: selfcheck_warning_fmt = '(a,es9.2,a,es9.2)'
@@ -33,19 +35,32 @@ module kinetostat_cli
   character(*), parameter :: help_lines(*) = [character(len=92) :: &
     "kinetostat - kinetostatic force analysis of planar mechanisms", &
     "", &
-    "  kinetostat DECK [-o FILE] [--format table|csv|json] [--lang en|ru] [--quiet]", &
-    "  kinetostat template KIND [-o FILE]   print a commented deck to start from (KIND: a", &
-    "                                       mechanism, or a preset of the generic engine)", &
+    "  kinetostat DECK [--set NAME=VALUE]... [-o FILE] [--format table|csv|json|svg]", &
+    "                  [--pairs LIST] [--at K] [--lang en|ru] [--kinematics] [--quiet] [--strict]", &
+    "  kinetostat template KIND [-o FILE]   a commented deck to start from (KIND: a mechanism,", &
+    "                                       or a preset of the generic engine)", &
     "  kinetostat diff A B [--rtol R] [--atol A] [--quiet]   compare two outputs", &
     "  kinetostat --help | --version", &
     "", &
-    "DECK is a Fortran namelist file; its first group names the mechanism.", &
-    "-o FILE, --output FILE   write to FILE (atomically: nothing is left behind on error)", &
-    "--format table|csv|json  the legacy printout (default), CSV (full precision) or JSON", &
-    "--lang en|ru             language of the table's labels (ru: the 1991 printouts)", &
-    "-q, --quiet              no warnings on stderr (errors are still reported); diff: no report", &
-    "-h, --help               this text;  -V, --version  the version", &
-    "--rtol R, --atol A       diff's tolerances (below)", &
+    "DECK is a Fortran namelist file; its first group names the mechanism; - reads it", &
+    "from standard input (so does a pipe given as a path, e.g. /dev/stdin).", &
+    "--set NAME=VALUE  set a deck variable as if the deck ended with NAME = VALUE", &
+    "            (repeatable; l_ab=0.12, f5c(3)=0, 'dyad(2)%l2=0.45'); marked (--set)", &
+    "-o FILE, --output FILE  write to FILE (atomically: nothing is left behind on error)", &
+    "--format    table (default, the legacy printout), csv (full precision), json, or svg", &
+    "            (a sheet of force hodographs and diagrams; see docs/pictures.md)", &
+    "--pairs     with svg: only these pair forces, e.g. --pairs F16,F36", &
+    "--at K      with svg: the mechanism drawn at step K with every force of the step", &
+    "--lang      language of the table's labels: en (default) or ru (the 1991 printouts)", &
+    "--kinematics  csv and json add positions of joints and centres of mass, link angles,", &
+    "            angular speeds and accelerations, accelerations of the centres of mass and", &
+    "            the x, y components of the pair forces (the table is unchanged)", &
+    "-q, --quiet no warnings on stderr (errors are still reported); diff: no report", &
+    "--strict    a run that warns (self-check above its limit, a dead position between", &
+    "            steps, a jammed cam or lost contact, a coarse step near a load edge)", &
+    "            exits 4; the output is still written", &
+    "-h, --help  this text;  -V, --version  the version", &
+    "--rtol R, --atol A  the tolerances of diff (below)", &
     "--name=VALUE is the same as --name VALUE.", &
     "", &
     "diff compares two tables (same --lang) or two CSV files of the program value by value:", &
@@ -57,7 +72,7 @@ module kinetostat_cli
     "  and exits 0 same, 1 different, 2 unreadable or not the same mechanism/columns.", &
     "", &
     "Exit codes: 0 ok, 1 usage, 2 input or output error, 3 geometry error or a result", &
-    "that is not finite (the step is named)."]
+    "that is not finite (the step is named), 4 warnings with --strict (output written)."]
 
   !> Usage of the diff subcommand (its errors exit 2: exit 1 means "different").
   character(*), parameter :: diff_usage = "usage: kinetostat diff A B [--rtol R] [--atol A] [--quiet]"
@@ -69,6 +84,8 @@ module kinetostat_cli
     character(len=:), allocatable :: template_kind
     type(run_options_t) :: options
     logical :: quiet = .false.
+    !> --strict: a run that warned exits with exit_warning (its output is still written).
+    logical :: strict = .false.
     logical :: help = .false.
     logical :: version = .false.
     !> `kinetostat diff A B`: the two files.
@@ -87,7 +104,7 @@ contains
     type(error_t), allocatable :: error
     type(step_table_t) :: table
     type(text_buffer_t) :: out
-    integer :: i
+    integer :: i, warnings
     logical :: ran
 
     ran = .false.
@@ -120,12 +137,15 @@ contains
         call write_stdout(out, error)
       end if
     end if
-    if (ran .and. .not. allocated(error) .and. .not. args%quiet) call warn(args%deck, table)
+    warnings = 0
+    if (ran .and. .not. allocated(error)) call warn(table, args%quiet, warnings)
 
     if (allocated(error)) then
       write (error_unit, '(a)') "kinetostat: error: "//error%message
       if (error%code == exit_usage) write (error_unit, '(a)') usage_line
       exit_code = error%code
+    else if (args%strict .and. warnings > 0) then
+      exit_code = exit_warning
     else
       exit_code = exit_success
     end if
@@ -142,17 +162,83 @@ contains
     character(len=:), allocatable :: group
     class(mechanism_t), allocatable :: mech
     type(deck_source_t) :: source
+    type(deck_source_t) :: patched
     call load_deck(path, source, error)
     if (allocated(error)) return
     call read_group_name(source, group, error)
     if (allocated(error)) return
     call create_mechanism(group, mech)
     if (.not. allocated(mech)) then
-      call fatal_error(error, exit_input, path//": &"//group//": unknown mechanism (known: "//known_kinds()//")")
+      call fatal_error(error, exit_input, source%path//": &"//group//": unknown mechanism (known: "// &
+        known_kinds()//")")
       return
     end if
-    call run_mechanism(mech, group, source, options, table, out, error)
+    if (.not. allocated(options%overrides)) then
+      call run_mechanism(mech, group, source, options, table, out, error)
+      return
+    end if
+    call apply_overrides(source, options%overrides, patched)
+    call run_mechanism(mech, group, patched, options, table, out, error)
+    if (allocated(error)) then
+      if (error%code == exit_input) call blame_override(source, group, options%overrides, error)
+    end if
   end subroutine run_deck
+
+  !> Append the override "NAME=VALUE" of a --set.
+  subroutine add_override(overrides, arg, error)
+    !> The overrides so far.
+    type(override_t), allocatable, intent(inout) :: overrides(:)
+    !> The argument of --set.
+    character(*), intent(in) :: arg
+    !> Malformed argument (exit 2).
+    type(error_t), allocatable, intent(out) :: error
+    type(override_t) :: one
+    call parse_override(arg, "--set", one, error)
+    if (allocated(error)) return
+    if (.not. allocated(overrides)) allocate (overrides(0))
+    overrides = [overrides, one]
+  end subroutine add_override
+
+  !> An input error of a run with overrides: when the first k overrides give an error the
+  !> first k-1 do not (or a different one), override k is named in the message as its cause;
+  !> an error of the deck itself stays as it is.
+  subroutine blame_override(source, group, overrides, error)
+    !> The deck as read (without overrides).
+    type(deck_source_t), intent(in) :: source
+    !> Its first group.
+    character(*), intent(in) :: group
+    !> The overrides.
+    type(override_t), intent(in) :: overrides(:)
+    !> The run's error; its message is replaced when an override is found to be the cause.
+    type(error_t), intent(inout) :: error
+    type(error_t), allocatable :: previous, current
+    type(deck_source_t) :: patched
+    class(mechanism_t), allocatable :: mech
+    integer :: k
+    do k = 0, size(overrides)
+      call apply_overrides(source, overrides(1:k), patched)
+      if (allocated(mech)) deallocate (mech)
+      call create_mechanism(group, mech)
+      call mech%read_deck(patched, current)
+      if (k > 0 .and. allocated(current)) then
+        if (.not. allocated(previous)) then
+          call name_cause(current%message)
+          return
+        else if (current%message /= previous%message) then
+          call name_cause(current%message)
+          return
+        end if
+      end if
+      if (allocated(previous)) deallocate (previous)
+      if (allocated(current)) call move_alloc(current, previous)
+    end do
+  contains
+    subroutine name_cause(message)
+      character(*), intent(in) :: message
+      error%message = message//" (from --set "//overrides(k)%name//"="//overrides(k)%value//")"
+      error%code = exit_input
+    end subroutine name_cause
+  end subroutine blame_override
 
   !> The commented template deck of a kind, or a preset of the generic engine.
   subroutine write_template(kind, out, error)
@@ -173,15 +259,30 @@ contains
     end if
   end subroutine write_template
 
-  !> Warnings of a successful run on stderr: the mechanism's remark, a failed self-check.
-  subroutine warn(deck, table)
-    character(*), intent(in) :: deck
+  !> Warnings of a successful run, one stderr line each unless `quiet`: the mechanism's
+  !> remarks, a failed self-check.
+  subroutine warn(table, quiet, count)
+    !> The run's results.
     type(step_table_t), intent(in) :: table
-    if (allocated(table%warning)) write (error_unit, '(a)') "kinetostat: warning: "//deck//": "//table%warning
+    !> --quiet: count the warnings, print none.
+    logical, intent(in) :: quiet
+    !> Number of warnings.
+    integer, intent(out) :: count
+    integer :: i
+    character(len=:), allocatable :: prefix
+    prefix = "kinetostat: warning: "//table%deck//": "
+    count = table%warning_count()
+    if (.not. quiet) then
+      do i = 1, table%warning_count()
+        write (error_unit, '(a)') prefix//table%warnings(i)%text
+      end do
+    end if
     if (.not. table%has_selfcheck .or. table%row_count() == 0) return
     if (selfcheck_verdict(table%max_residual) /= "OK" .or. selfcheck_verdict(table%max_mismatch) /= "OK") then
-      write (error_unit, selfcheck_warning_fmt) "kinetostat: warning: "//deck// &
-        ": self-check failed (a bug; please report): max equilibrium residual", table%max_residual, &
+      count = count + 1
+      if (quiet) return
+      write (error_unit, selfcheck_warning_fmt) prefix// &
+        "self-check failed (a bug; please report): max equilibrium residual", table%max_residual, &
         ", max "//table%driver//" mismatch", table%max_mismatch
     end if
   end subroutine warn
@@ -189,7 +290,7 @@ contains
   subroutine parse_args(args, error)
     type(cli_args_t), intent(out) :: args
     type(error_t), allocatable, intent(out) :: error
-    integer :: i, n, eq
+    integer :: i, n, eq, ios
     character(len=:), allocatable :: arg, name, value
 
     n = command_argument_count()
@@ -208,7 +309,7 @@ contains
         value = arg(eq + 1:)
       else
         name = arg
-        if (any(name == [character(len=8) :: "-o", "--output", "--format", "--lang"])) then
+        if (any(name == [character(len=8) :: "-o", "--output", "--format", "--lang", "--set", "--pairs", "--at"])) then
           if (i == n) then
             call fatal_error(error, exit_usage, name//" needs a value")
             return
@@ -224,6 +325,10 @@ contains
         args%version = .true.
       case ("--quiet", "-q")
         args%quiet = .true.
+      case ("--strict")
+        args%strict = .true.
+      case ("--kinematics")
+        args%options%kinematics = .true.
       case ("-o", "--output")
         args%out_file = value
       case ("--format")
@@ -232,12 +337,23 @@ contains
           call fatal_error(error, exit_usage, "--format must be one of "//format_names//" (got '"//value//"')")
           return
         end if
+      case ("--pairs")
+        args%options%pairs = value
+      case ("--at")
+        read (value, *, iostat=ios) args%options%at_step
+        if (ios /= 0 .or. args%options%at_step < 1 .or. verify(value, "0123456789 ") /= 0) then
+          call fatal_error(error, exit_usage, "--at needs a step number 1, 2, ... (got '"//value//"')")
+          return
+        end if
       case ("--lang")
         args%options%lang = lang_from_name(value)
         if (args%options%lang == 0) then
           call fatal_error(error, exit_usage, "--lang must be en or ru (got '"//value//"')")
           return
         end if
+      case ("--set")
+        call add_override(args%options%overrides, value, error)
+        if (allocated(error)) return
       case ("diff")
         if (i == 1) then
           call parse_diff_args(args, error)
@@ -265,7 +381,13 @@ contains
       end select
     end do
     if (args%help .or. args%version .or. allocated(args%template_kind)) return
-    if (.not. allocated(args%deck)) call fatal_error(error, exit_usage, "no deck given")
+    if (.not. allocated(args%deck)) then
+      call fatal_error(error, exit_usage, "no deck given")
+    else if (allocated(args%options%pairs) .and. args%options%format /= format_svg) then
+      call fatal_error(error, exit_usage, "--pairs needs --format svg")
+    else if (args%options%at_step > 0 .and. args%options%format /= format_svg) then
+      call fatal_error(error, exit_usage, "--at needs --format svg")
+    end if
   end subroutine parse_args
 
   !> The arguments of `kinetostat diff A B [--rtol R] [--atol A] [--quiet]` (errors: exit 2).

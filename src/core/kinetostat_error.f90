@@ -3,7 +3,7 @@ module kinetostat_error
   implicit none
   private
   public :: error_t, fatal_error
-  public :: exit_success, exit_usage, exit_input, exit_geometry
+  public :: exit_success, exit_usage, exit_input, exit_geometry, exit_warning
 
   !> Exit code: success.
   integer, parameter :: exit_success = 0
@@ -13,6 +13,9 @@ module kinetostat_error
   integer, parameter :: exit_input = 2
   !> Exit code: mechanism cannot be assembled or a reaction is undetermined at some step.
   integer, parameter :: exit_geometry = 3
+  !> Exit code: the run succeeded and its output was written, but it warned and --strict
+  !> was given.
+  integer, parameter :: exit_warning = 4
 
   !> A failure: one-line message and the exit code it maps to.
   type :: error_t

@@ -1,11 +1,16 @@
 !> The operating-system calls the program needs beyond Fortran's intrinsics: the kind of
-!> file a path names, renaming a file, the process id.
+!> file a path names, renaming a file, the process id, reading standard input as bytes,
+!> whether standard error is a terminal.
 module kinetostat_posix
   use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_size_t, c_long
   implicit none
   private
-  public :: path_kind, rename_file, process_id, write_standard_output
+  public :: path_kind, rename_file, process_id, write_standard_output, read_standard_input
+  public :: stderr_is_terminal
   public :: path_absent, path_regular, path_directory, path_special
+
+  !> Bytes asked for by one read of standard input.
+  integer, parameter :: read_chunk = 65536
 
   !> path_kind: no such file.
   integer, parameter :: path_absent = 0
@@ -38,6 +43,20 @@ module kinetostat_posix
       integer(c_size_t), value :: count
       integer(c_long) :: written
     end function c_write
+    function c_read(fd, buf, count) bind(c, name="read") result(got)
+      import :: c_int, c_char, c_size_t, c_long, read_chunk
+      implicit none
+      integer(c_int), value :: fd
+      character(kind=c_char), intent(out) :: buf(read_chunk)
+      integer(c_size_t), value :: count
+      integer(c_long) :: got
+    end function c_read
+    function c_isatty(fd) bind(c, name="isatty") result(yes)
+      import :: c_int
+      implicit none
+      integer(c_int), value :: fd
+      integer(c_int) :: yes
+    end function c_isatty
     function c_getpid() bind(c, name="getpid") result(pid)
       import :: c_int
       implicit none
@@ -86,5 +105,42 @@ contains
       done = done + int(written)
     end do
   end function write_standard_output
+
+  !> All of standard input (file descriptor 0) as bytes, read to its end: a pipe, a
+  !> terminal or a redirected file alike (read once; nothing is rewound). False when the
+  !> system refused a read.
+  logical function read_standard_input(text)
+    !> The bytes read (empty on failure).
+    character(len=:), allocatable, intent(out) :: text
+    character(len=read_chunk) :: buf
+    character(len=:), allocatable :: grown
+    integer(c_long) :: got
+    integer :: n
+    allocate (character(len=read_chunk) :: text)
+    n = 0
+    read_standard_input = .true.
+    do
+      got = c_read(0_c_int, buf, int(read_chunk, c_size_t))
+      if (got == 0) exit
+      if (got < 0) then
+        read_standard_input = .false.
+        text = ""
+        return
+      end if
+      if (n + int(got) > len(text)) then
+        allocate (character(len=2 * len(text) + int(got)) :: grown)
+        grown(1:n) = text(1:n)
+        call move_alloc(grown, text)
+      end if
+      text(n + 1:n + int(got)) = buf(1:int(got))
+      n = n + int(got)
+    end do
+    text = text(1:n)
+  end function read_standard_input
+
+  !> Whether standard error (file descriptor 2) is a terminal (progress lines go there only then).
+  logical function stderr_is_terminal()
+    stderr_is_terminal = c_isatty(2_c_int) == 1
+  end function stderr_is_terminal
 
 end module kinetostat_posix

@@ -10,17 +10,25 @@ module kinetostat_csv_writer
 
 contains
 
-  !> The CSV of a step table (columns marked csv only).
-  pure subroutine write_csv(table, out)
+  !> The CSV of a step table (columns marked csv only; kinematics columns when asked).
+  pure subroutine write_csv(table, out, kinematics)
     !> Finite results.
     type(step_table_t), intent(in) :: table
     !> Where the lines go.
     type(text_buffer_t), intent(inout) :: out
+    !> Whether to add the kinematics columns (--kinematics); default false.
+    logical, intent(in), optional :: kinematics
     character(len=:), allocatable :: line
     integer :: k, c
+    logical :: shown(size(table%columns)), with_kinematics
+    with_kinematics = .false.
+    if (present(kinematics)) with_kinematics = kinematics
+    do c = 1, size(table%columns)
+      shown(c) = table%columns(c)%csv .and. table%shows(c, with_kinematics)
+    end do
     line = ""
     do c = 1, size(table%columns)
-      if (.not. table%columns(c)%csv) cycle
+      if (.not. shown(c)) cycle
       if (len(line) > 0) line = line//","
       line = line//table%columns(c)%name
     end do
@@ -28,7 +36,7 @@ contains
     do k = 1, table%row_count()
       line = ""
       do c = 1, size(table%columns)
-        if (.not. table%columns(c)%csv) cycle
+        if (.not. shown(c)) cycle
         if (len(line) > 0) line = line//","
         line = line//cell_number(table%rows(c, k), table%is_whole(c))
       end do

@@ -8,10 +8,11 @@ module kinetostat_deck
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_error, only: error_t, fatal_error, exit_input
   use kinetostat_text, only: real_str, int_str, number_str, lower
+  use kinetostat_posix, only: read_standard_input
   implicit none
   private
   public :: deck_context_t, unset_real, unset_bits, max_deck_array, max_steps
-  public :: deck_source_t, load_deck, deck_source_from_text
+  public :: deck_source_t, load_deck, deck_source_from_text, stdin_deck_path, stdin_deck_name
   public :: read_group_name, namelist_failure, deck_error, namelist_probe_t, require_all_set
   public :: is_set, require_set, require_positive, require_nonnegative, require_rule
   public :: is_whole_in, require_whole
@@ -29,6 +30,10 @@ module kinetostat_deck
   !> (for a derived type's default initialisation, use transfer(unset_bits, 1.0_wp) in
   !> the module that declares the variables, see kinetostat_assur_deck).
   real(wp), protected :: unset_real = transfer(unset_bits, 1.0_wp)
+  !> The deck path that means standard input.
+  character(*), parameter :: stdin_deck_path = "-"
+  !> Name of a deck read from standard input, in messages and in the table's DECK line.
+  character(*), parameter :: stdin_deck_name = "<stdin>"
   !> Capacity of a per-step array in a deck (values beyond it are a namelist error).
   integer, parameter :: max_deck_array = 1000000
   !> Largest number of steps a run may have.
@@ -109,9 +114,11 @@ contains
   end subroutine write_template_lines
 
   !> Read a whole deck file into memory (any line length, LF or CRLF line ends, with or
-  !> without a final newline, optional UTF-8 byte-order mark).
+  !> without a final newline, optional UTF-8 byte-order mark). The path "-" reads standard
+  !> input to its end (the deck is then named "<stdin>"); a pipe given as a path
+  !> (/dev/stdin, /dev/fd/N, a FIFO) is read to its end as well: read once, never rewound.
   subroutine load_deck(path, source, error)
-    !> Deck file.
+    !> Deck file, or "-" for standard input.
     character(*), intent(in) :: path
     !> The deck's lines.
     type(deck_source_t), intent(out) :: source
@@ -122,6 +129,14 @@ contains
     integer :: unit, ios, n
     integer(int64) :: file_size
     character(len=512) :: msg
+    if (path == stdin_deck_path) then
+      if (.not. read_standard_input(text)) then
+        call fatal_error(error, exit_input, stdin_deck_name//": cannot read the deck from standard input")
+        return
+      end if
+      call deck_source_from_text(stdin_deck_name, text, source)
+      return
+    end if
     open (newunit=unit, file=path, status='old', action='read', access='stream', form='unformatted', &
           iostat=ios, iomsg=msg)
     if (ios /= 0) then

@@ -10,6 +10,7 @@ module kinetostat_format
   private
   public :: fixed_field, exp_field, int_field, full_number, whole_number, cell_number
   public :: echo_number, echo_array_number, footer_number, pad_right, display_width
+  public :: fixed_number, short_number
 
   !> A full-precision number (CSV, JSON): 13 significant digits, 3-digit exponent.
   character(*), parameter :: full_fmt = '(es20.12e3)'
@@ -25,6 +26,10 @@ module kinetostat_format
   character(*), parameter :: footer_fmt = '(es10.2)'
   !> The same for three-digit exponents.
   character(*), parameter :: footer_e3_fmt = '(es10.1e3)'
+  !> Format of the format of fixed_number (its decimals go in): F0.d.
+  character(*), parameter :: fixed_number_fmt_fmt = '("(f0.",i0,")")'
+  !> A short label number beyond the fixed-point range: 3 significant digits.
+  character(*), parameter :: short_exp_fmt = '(es10.2)'
   !> Width of the scratch buffer for one field.
   integer, parameter :: scratch_len = 64
 
@@ -189,6 +194,68 @@ contains
       write (text, footer_fmt) x + 0.0_wp
     end if
   end function footer_number
+
+  !> A number in fixed point with `decimals` decimals and no blanks (drawing coordinates and
+  !> labels of the SVG sheets): a leading zero is always written ("0.50", "-0.25"), a value
+  !> that rounds to zero is written without a sign; |x| >= 1e15 goes to exponent form.
+  pure function fixed_number(x, decimals) result(text)
+    !> Finite value.
+    real(wp), intent(in) :: x
+    !> Decimals (0 gives a whole number without a point).
+    integer, intent(in) :: decimals
+    character(len=:), allocatable :: text
+    character(len=scratch_len) :: buf
+    character(len=16) :: fmt
+    real(wp) :: scale
+    if (abs(x) >= 1.0e15_wp) then
+      text = full_number(x)
+      return
+    end if
+    scale = 10.0_wp**decimals
+    if (anint(abs(x) * scale) == 0.0_wp) then
+      buf = "0"
+      if (decimals > 0) buf = "0."//repeat("0", decimals)
+      text = trim(buf)
+      return
+    end if
+    write (fmt, fixed_number_fmt_fmt) decimals
+    write (buf, fmt) x
+    text = trim(adjustl(buf))
+    if (text(1:1) == ".") text = "0"//text
+    if (len(text) > 1) then
+      if (text(1:2) == "-.") text = "-0"//text(2:)
+    end if
+    if (decimals == 0 .and. text(len(text):len(text)) == ".") text = text(1:len(text) - 1)
+  end function fixed_number
+
+  !> A value for a label beside a picture ("2716", "12.3", "0.457"): about three
+  !> significant digits in fixed point (none after the point from 100 up), exponent form
+  !> (3 significant digits) from 1e7 up.
+  pure function short_number(x) result(text)
+    !> Finite value.
+    real(wp), intent(in) :: x
+    character(len=:), allocatable :: text
+    character(len=scratch_len) :: buf
+    real(wp) :: a
+    a = abs(x)
+    if (a >= 1.0e7_wp) then
+      write (buf, short_exp_fmt) x
+      text = trim(adjustl(buf))
+    else if (a >= 100.0_wp) then
+      text = fixed_number(x, 0)
+    else if (a >= 10.0_wp) then
+      text = fixed_number(x, 1)
+    else if (a >= 1.0_wp) then
+      text = fixed_number(x, 2)
+    else if (a >= 1.0e-3_wp) then
+      text = fixed_number(x, 3)
+    else if (a == 0.0_wp) then
+      text = "0"
+    else
+      write (buf, short_exp_fmt) x
+      text = trim(adjustl(buf))
+    end if
+  end function short_number
 
   !> Characters a UTF-8 text takes on screen (continuation bytes 0x80-0xBF not counted), so
   !> that Cyrillic labels (two bytes a letter) keep columns aligned.

@@ -3,7 +3,7 @@
 module kinetostat_json_writer
   use kinetostat_kinds, only: version_string
   use kinetostat_selfcheck, only: selfcheck_tolerance
-  use kinetostat_step_table, only: step_table_t, echo_record_t, column_kind_names, &
+  use kinetostat_step_table, only: step_table_t, echo_record_t, column_kind_names, col_component, &
     echo_real_kind, echo_int_kind, echo_logical_kind, echo_array_kind, echo_text_kind, echo_heading_kind
   use kinetostat_format, only: full_number, cell_number
   use kinetostat_text_buffer, only: text_buffer_t
@@ -14,15 +14,25 @@ module kinetostat_json_writer
 contains
 
   !> The JSON object of a run.
-  pure subroutine write_json(title, table, out)
+  pure subroutine write_json(title, table, out, kinematics)
     !> Title of the mechanism (as the legacy table prints it).
     character(*), intent(in) :: title
     !> Finite results.
     type(step_table_t), intent(in) :: table
     !> Where the lines go.
     type(text_buffer_t), intent(inout) :: out
+    !> Whether to add the kinematics columns (--kinematics); default false.
+    logical, intent(in), optional :: kinematics
     character(len=:), allocatable :: line
-    integer :: i, c, k
+    integer :: i, c, k, last
+    logical :: shown(size(table%columns)), with_kinematics
+    with_kinematics = .false.
+    if (present(kinematics)) with_kinematics = kinematics
+    last = 0
+    do c = 1, size(table%columns)
+      shown(c) = table%shows(c, with_kinematics)
+      if (shown(c)) last = c
+    end do
     call out%put("{")
     call out%put('  "program": '//json_string(version_string)//",")
     call out%put('  "mechanism": '//json_string(table%mechanism)//",")
@@ -30,6 +40,14 @@ contains
     call out%put('  "deck": '//json_string(table%deck)//",")
     if (allocated(table%subtitle)) call out%put('  "deck_title": '//json_string(table%subtitle)//",")
     call out%put('  "row_name": '//json_string(table%row_name)//",")
+    if (allocated(table%overrides)) then
+      line = '  "overrides": ['
+      do i = 1, size(table%overrides)
+        if (i > 1) line = line//", "
+        line = line//json_string(trim(table%overrides(i)))
+      end do
+      call out%put(line//"],")
+    end if
     call out%put('  "input": [')
     do i = 1, table%echo_count
       line = "    "//echo_object(table%echo(i))
@@ -39,12 +57,19 @@ contains
     call out%put("  ],")
     call out%put('  "columns": [')
     do c = 1, size(table%columns)
+      if (.not. shown(c)) cycle
       line = '    {"name": '//json_string(table%columns(c)%name)//', "unit": '// &
         json_string(table%columns(c)%unit)//', "kind": '// &
         json_string(trim(column_kind_names(table%columns(c)%kind)))//', "csv": '// &
         merge("true ", "false", table%columns(c)%csv)
-      line = trim(line)//"}"
-      if (c < size(table%columns)) line = line//","
+      line = trim(line)
+      if (table%columns(c)%kinematic) then
+        line = line//', "kinematic": true'
+        if (table%columns(c)%kind == col_component) line = line//', "frame_angle": '// &
+          full_number(table%columns(c)%frame_angle)
+      end if
+      line = line//"}"
+      if (c < last) line = line//","
       call out%put(line)
     end do
     call out%put("  ],")
@@ -52,7 +77,8 @@ contains
     do k = 1, table%row_count()
       line = "    ["
       do c = 1, size(table%columns)
-        if (c > 1) line = line//", "
+        if (.not. shown(c)) cycle
+        if (len(line) > 5) line = line//", "
         line = line//cell_number(table%rows(c, k), table%is_whole(c))
       end do
       line = line//"]"
@@ -60,6 +86,15 @@ contains
       call out%put(line)
     end do
     call out%put("  ],")
+    if (allocated(table%summary)) then
+      call out%put('  "summary": [')
+      do i = 1, size(table%summary)
+        line = "    "//echo_object(table%summary(i))
+        if (i < size(table%summary)) line = line//","
+        call out%put(line)
+      end do
+      call out%put("  ],")
+    end if
     if (table%has_selfcheck) then
       call out%put('  "selfcheck": {"max_residual": '//full_number(table%max_residual)// &
         ', "max_mismatch": '//full_number(table%max_mismatch)//', "driver": '//json_string(table%driver)// &
@@ -69,11 +104,12 @@ contains
     else
       call out%put('  "selfcheck": null,')
     end if
-    if (allocated(table%warning)) then
-      call out%put('  "warnings": ['//json_string(table%warning)//"]")
-    else
-      call out%put('  "warnings": []')
-    end if
+    line = '  "warnings": ['
+    do i = 1, table%warning_count()
+      if (i > 1) line = line//", "
+      line = line//json_string(table%warnings(i)%text)
+    end do
+    call out%put(line//"]")
     call out%put("}")
   end subroutine write_json
 
@@ -107,6 +143,7 @@ contains
     case default
       text = '{"text": '//json_string(e%name)//"}"
     end select
+    if (e%overridden) text = text(1:len(text) - 1)//', "overridden": true}'
   end function echo_object
 
   !> A JSON string literal: quotes, backslashes and control characters escaped; UTF-8 kept.

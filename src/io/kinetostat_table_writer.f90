@@ -5,7 +5,7 @@ module kinetostat_table_writer
   use kinetostat_kinds, only: wp
   use kinetostat_selfcheck, only: selfcheck_tolerance
   use kinetostat_step_table, only: step_table_t, echo_record_t, echo_real_kind, echo_int_kind, &
-    echo_logical_kind, echo_array_kind, echo_text_kind, echo_heading_kind
+    echo_logical_kind, echo_array_kind, echo_text_kind, echo_heading_kind, echo_line_kind
   use kinetostat_format, only: echo_number, echo_array_number, footer_number, pad_right, fixed_field
   use kinetostat_labels, only: label, lang_ru
   use kinetostat_mechanism, only: mechanism_t
@@ -18,6 +18,8 @@ module kinetostat_table_writer
   integer, parameter :: echo_name_width = 16
   !> Display width of the label part of a footer line (the figure starts in column 58).
   integer, parameter :: footer_label_width = 54
+  !> Mark after an INPUT DATA record whose value came from --set.
+  character(*), parameter :: override_mark = " (--set)"
   !> Values per line of an echoed array.
   integer, parameter :: echo_array_per_line = 5
   !> Format of the self-check limit in the footer heading.
@@ -40,11 +42,17 @@ contains
     call out%put(" "//label("DECK: ", lang)//table%deck)
     if (allocated(table%subtitle)) call out%put(" "//label("TITLE: ", lang)//table%subtitle)
     call put_heading(out, label("INPUT DATA", lang))
+    if (allocated(table%overrides)) then
+      do i = 1, size(table%overrides)
+        call out%put("   --set "//trim(table%overrides(i)))
+      end do
+    end if
     do i = 1, table%echo_count
       call put_echo(out, table%echo(i), lang)
     end do
     call put_heading(out, label("RESULTS", lang))
     call mech%write_results(table, lang, out)
+    if (allocated(table%summary)) call put_summary(out, table, lang)
     if (table%has_selfcheck) call put_footer(out, table, lang)
   end subroutine write_table
 
@@ -85,28 +93,30 @@ contains
     call out%put(line)
   end subroutine put_two_line_step
 
-  !> One INPUT DATA record.
+  !> One INPUT DATA record (its first line ends in " (--set)" when --set gave the value).
   pure subroutine put_echo(out, e, lang)
     type(text_buffer_t), intent(inout) :: out
     type(echo_record_t), intent(in) :: e
     integer, intent(in) :: lang
     character(len=18) :: whole
-    character(len=:), allocatable :: line
+    character(len=:), allocatable :: line, mark
     integer :: i
+    mark = ""
+    if (e%overridden) mark = override_mark
     select case (e%kind)
     case (echo_real_kind)
-      call out%put(value_line(e%name, e%values(1), label(e%unit, lang)))
+      call out%put(value_line(e%name, e%values(1), label(e%unit, lang))//mark)
     case (echo_int_kind)
       write (whole, '(i18)') e%int_value
-      call out%put(name_part(e%name)//whole//"  "//label(e%unit, lang))
+      call out%put(name_part(e%name)//whole//"  "//label(e%unit, lang)//mark)
     case (echo_logical_kind)
       write (whole, '(l18)') e%logical_value
-      call out%put(name_part(e%name)//whole//"  "//label(e%unit, lang))
+      call out%put(name_part(e%name)//whole//"  "//label(e%unit, lang)//mark)
     case (echo_text_kind)
-      call out%put(name_part(e%name)//"  "//e%text)
+      call out%put(name_part(e%name)//"  "//e%text//mark)
     case (echo_array_kind)
       write (whole, '(i0)') size(e%values)
-      call out%put(name_part(e%name//"("//trim(whole)//")")//"  "//label(e%unit, lang))
+      call out%put(name_part(e%name//"("//trim(whole)//")")//"  "//label(e%unit, lang)//mark)
       line = ""
       do i = 1, size(e%values)
         line = line//echo_array_number(e%values(i))
@@ -150,6 +160,23 @@ contains
     verdict = "!!"
     if (x <= selfcheck_tolerance) verdict = "OK"
   end function selfcheck_verdict
+
+  !> The summary block: a heading, then the records (values as INPUT DATA lines, text lines
+  !> through the glossary).
+  pure subroutine put_summary(out, table, lang)
+    type(text_buffer_t), intent(inout) :: out
+    type(step_table_t), intent(in) :: table
+    integer, intent(in) :: lang
+    integer :: i
+    if (allocated(table%summary_heading)) call put_heading(out, label(table%summary_heading, lang))
+    do i = 1, size(table%summary)
+      if (table%summary(i)%kind == echo_line_kind) then
+        call out%put("   "//label(table%summary(i)%name, lang))
+      else
+        call put_echo(out, table%summary(i), lang)
+      end if
+    end do
+  end subroutine put_summary
 
   !> The self-check footer.
   pure subroutine put_footer(out, table, lang)

@@ -1,0 +1,246 @@
+!> Deck overrides given on the command line (`--set NAME=VALUE`, and each variant of a
+!> sweep): checked for form, then written into the in-memory deck as one more assignment
+!> just before the first group's closing '/'. A later namelist assignment wins, so an
+!> override goes through exactly the READ and the validation of the deck itself; a name the
+!> deck does not have is added the same way. Overridden values are marked in the INPUT DATA
+!> echo.
+module kinetostat_override
+  use kinetostat_error, only: error_t, fatal_error, exit_input
+  use kinetostat_text, only: upper
+  use kinetostat_deck, only: deck_source_t, deck_source_from_text
+  use kinetostat_step_table, only: step_table_t, echo_heading_kind, echo_line_kind
+  implicit none
+  private
+  public :: override_t, parse_override, apply_overrides, mark_overrides
+
+  !> One override.
+  type :: override_t
+    !> Namelist designator as given, without surrounding blanks ("l_ab", "dyad(2)%l2").
+    character(len=:), allocatable :: name
+    !> Value in namelist syntax as given ("0.45", "'flat'", "1, 2, 3").
+    character(len=:), allocatable :: value
+  end type override_t
+
+contains
+
+  !> An override from "NAME=VALUE". NAME must be a namelist designator (letters, digits,
+  !> '_', subscripts in parentheses, '%' members); VALUE must be non-empty, with balanced
+  !> quotes and, outside quotes, no '/', '&', '$', '!' or '=' (which would end the group,
+  !> start a comment or smuggle in a second assignment).
+  pure subroutine parse_override(arg, option, override, error)
+    !> The argument ("l_ab=0.12").
+    character(*), intent(in) :: arg
+    !> The option it came with, for messages ("--set", "--vary").
+    character(*), intent(in) :: option
+    !> The override.
+    type(override_t), intent(out) :: override
+    !> Input error (exit 2) naming the option and the argument.
+    type(error_t), allocatable, intent(out) :: error
+    integer :: eq
+    character(len=:), allocatable :: what
+    what = option//" '"//arg//"': "
+    eq = index(arg, "=")
+    if (eq == 0) then
+      call fatal_error(error, exit_input, what//"expected NAME=VALUE (e.g. "//option//" l_ab=0.12)")
+      return
+    end if
+    override%name = trim(adjustl(arg(1:eq - 1)))
+    override%value = trim(adjustl(arg(eq + 1:)))
+    if (.not. is_designator(override%name)) then
+      call fatal_error(error, exit_input, what//"'"//override%name//"' is not a deck variable name "// &
+        "(letters, digits, '_', subscripts like f5c(3), members like dyad(2)%l2)")
+    else if (len(override%value) == 0) then
+      call fatal_error(error, exit_input, what//"no value after '='")
+    else if (.not. is_plain_value(override%value)) then
+      call fatal_error(error, exit_input, what//"the value must be one namelist value list: "// &
+        "balanced quotes, and no '/', '&', '$', '!' or '=' outside quotes")
+    end if
+  end subroutine parse_override
+
+  !> Whether `name` looks like a namelist designator: a letter, then letters, digits, '_',
+  !> and '%' members, each part optionally subscripted with digits, ',', ':', '+', '-' and
+  !> blanks in balanced, unnested parentheses.
+  pure logical function is_designator(name)
+    character(*), intent(in) :: name
+    integer :: i
+    logical :: inside, part_start
+    is_designator = .false.
+    if (len(name) == 0) return
+    inside = .false.
+    part_start = .true.
+    do i = 1, len(name)
+      associate (c => name(i:i))
+        if (inside) then
+          if (c == ")") then
+            inside = .false.
+          else if (.not. (is_digit(c) .or. index(",:+- ", c) > 0)) then
+            return
+          end if
+        else if (part_start) then
+          if (.not. is_letter(c)) return
+          part_start = .false.
+        else if (c == "(") then
+          if (name(i - 1:i - 1) == ")") return
+          inside = .true.
+        else if (c == "%") then
+          part_start = .true.
+        else if (.not. (is_letter(c) .or. is_digit(c) .or. c == "_")) then
+          return
+        else if (name(i - 1:i - 1) == ")") then
+          return
+        end if
+      end associate
+    end do
+    is_designator = .not. inside .and. .not. part_start
+  end function is_designator
+
+  !> Whether `value` is a value list that cannot end the group or add an assignment.
+  pure logical function is_plain_value(value)
+    character(*), intent(in) :: value
+    integer :: i
+    character(len=1) :: quote
+    is_plain_value = .false.
+    quote = " "
+    do i = 1, len(value)
+      associate (c => value(i:i))
+        if (quote /= " ") then
+          if (c == quote) quote = " "
+        else if (c == "'" .or. c == '"') then
+          quote = c
+        else if (index("/&$!=", c) > 0 .or. iachar(c) < 32) then
+          return
+        end if
+      end associate
+    end do
+    is_plain_value = quote == " "
+  end function is_plain_value
+
+  pure logical function is_letter(c)
+    character, intent(in) :: c
+    is_letter = (c >= "a" .and. c <= "z") .or. (c >= "A" .and. c <= "Z")
+  end function is_letter
+
+  pure logical function is_digit(c)
+    character, intent(in) :: c
+    is_digit = c >= "0" .and. c <= "9"
+  end function is_digit
+
+  !> The deck with the overrides written, one "  NAME = VALUE" line each and in order, just
+  !> before the closing '/' (or '&end') of its first namelist group; the deck's own lines
+  !> keep their numbers. A deck whose first group is not closed gets them at its end (its
+  !> READ then fails as the deck alone would).
+  pure subroutine apply_overrides(source, overrides, patched)
+    !> The deck as read.
+    type(deck_source_t), intent(in) :: source
+    !> The overrides, in command-line order.
+    type(override_t), intent(in) :: overrides(:)
+    !> The deck to read.
+    type(deck_source_t), intent(out) :: patched
+    character(*), parameter :: lf = achar(10)
+    character(len=:), allocatable :: text, added
+    integer :: k, col, i
+    added = ""
+    do i = 1, size(overrides)
+      added = added//"  "//overrides(i)%name//" = "//overrides(i)%value//lf
+    end do
+    call group_end(source, k, col)
+    text = ""
+    do i = 1, size(source%lines)
+      if (i == k) then
+        if (col > 1) text = text//source%lines(i)(1:col - 1)//lf
+        text = text//added//source%lines(i)(col:)//lf
+      else
+        text = text//source%lines(i)//lf
+      end if
+    end do
+    if (k == 0) text = text//added
+    call deck_source_from_text(source%path, text, patched)
+  end subroutine apply_overrides
+
+  !> Line `k` and column `col` of the character that closes the deck's first namelist group:
+  !> the first '/', '&' or '$' after the group name outside quotes and '!' comments
+  !> (0, 0 when the group is not closed).
+  pure subroutine group_end(source, k, col)
+    type(deck_source_t), intent(in) :: source
+    integer, intent(out) :: k, col
+    integer :: line, i, first
+    character(len=1) :: quote
+    logical :: started
+    k = 0
+    col = 0
+    started = .false.
+    quote = " "
+    do line = 1, size(source%lines)
+      first = 1
+      if (.not. started) then
+        associate (text => source%lines(line))
+          first = index(text, "&")
+          if (first == 0) cycle
+          if (len_trim(text(1:first - 1)) > 0) cycle
+          ! skip the group name
+          first = first + 1
+          do while (first <= len(text))
+            if (index(" /,!", text(first:first)) > 0) exit
+            first = first + 1
+          end do
+        end associate
+        started = .true.
+      end if
+      do i = first, len(source%lines(line))
+        associate (c => source%lines(line)(i:i))
+          if (quote /= " ") then
+            if (c == quote) quote = " "
+          else if (c == "'" .or. c == '"') then
+            quote = c
+          else if (c == "!") then
+            exit
+          else if (index("/&$", c) > 0) then
+            k = line
+            col = i
+            return
+          end if
+        end associate
+      end do
+    end do
+  end subroutine group_end
+
+  !> Mark the run as overridden: the overrides as given go first in the INPUT DATA echo
+  !> (`table%overrides`), and the echo record of a plain variable or array set by --set is
+  !> marked when exactly one record carries its name (a member of a derived type, or a
+  !> name echoed in several blocks, is shown by the first lines only).
+  pure subroutine mark_overrides(table, overrides)
+    !> The run's results.
+    type(step_table_t), intent(inout) :: table
+    !> The overrides.
+    type(override_t), intent(in) :: overrides(:)
+    integer :: i, j, hits, at, paren
+    character(len=:), allocatable :: base
+    integer :: longest
+    longest = 0
+    do i = 1, size(overrides)
+      longest = max(longest, len(overrides(i)%name) + 1 + len(overrides(i)%value))
+    end do
+    allocate (character(len=longest) :: table%overrides(size(overrides)))
+    do i = 1, size(overrides)
+      table%overrides(i) = overrides(i)%name//"="//overrides(i)%value
+      if (index(overrides(i)%name, "%") > 0) cycle
+      paren = index(overrides(i)%name, "(")
+      if (paren > 0) then
+        base = upper(overrides(i)%name(1:paren - 1))
+      else
+        base = upper(overrides(i)%name)
+      end if
+      hits = 0
+      at = 0
+      do j = 1, table%echo_count
+        if (table%echo(j)%kind == echo_heading_kind .or. table%echo(j)%kind == echo_line_kind) cycle
+        if (upper(table%echo(j)%name) == base) then
+          hits = hits + 1
+          at = j
+        end if
+      end do
+      if (hits == 1) table%echo(at)%overridden = .true.
+    end do
+  end subroutine mark_overrides
+
+end module kinetostat_override
