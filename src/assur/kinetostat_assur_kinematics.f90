@@ -95,8 +95,6 @@ module kinetostat_assur_kinematics
     real(wp) :: p(2, 3) = 0.0_wp
     !> Unit direction of the sliding line of each prismatic pair (zero for revolute pairs).
     real(wp) :: t(2, 3) = 0.0_wp
-    !> Why the dyad cannot be assembled, with the numbers (pose_no_assembly only).
-    character(len=:), allocatable :: detail
     !> Stroke of each prismatic pair: position of its sliding side (link a for pairs 1, 2;
     !> link b for pair 3) along `extend` relative to the other side, m (0 for revolute pairs).
     real(wp) :: stroke(3) = 0.0_wp
@@ -106,6 +104,8 @@ module kinetostat_assur_kinematics
     real(wp) :: stroke_a(3) = 0.0_wp
     !> Unit direction in which the sliding side moves when the stroke grows (+-t).
     real(wp) :: extend(2, 3) = 0.0_wp
+    !> Why the dyad cannot be assembled, with the numbers (pose_no_assembly only).
+    character(len=:), allocatable :: detail
   end type dyad_pose_t
 
 contains
