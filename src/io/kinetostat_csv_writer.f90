@@ -45,7 +45,7 @@ contains
     do c = 1, size(columns)
       whole(c) = table%is_whole(columns(c))
     end do
-    call put_row_blocks(table%row_count(), put_rows, out)
+    call put_row_blocks(table%row_count(), size(columns) * (cell_room + 1) + 1, put_rows, out)
   contains
     !> Rows `first` to `last`.
     subroutine put_rows(first, last, part)

@@ -82,7 +82,7 @@ contains
     do c = 1, size(table%columns)
       whole(c) = table%is_whole(c)
     end do
-    call put_row_blocks(table%row_count(), put_rows, out)
+    call put_row_blocks(table%row_count(), size(table%columns) * (cell_room + 2) + 8, put_rows, out)
     call out%put("  ],")
     if (allocated(table%summary)) then
       call out%put('  "summary": [')
