@@ -16,6 +16,8 @@ module kinetostat_row_blocks
   !> Rows of a block: the text of one wave of blocks (threads * blocks_per_thread of them)
   !> is all the memory the parallel formatting adds (about 6 MB for 2 threads).
   integer, parameter :: rows_per_block = 2048
+  !> Most room reserved at once, bytes (1 GiB; the buffer grows beyond it as needed).
+  integer(int64), parameter :: max_reserve = 1073741824_int64
   !> Blocks per thread in a wave (more, smaller blocks even out the threads' loads).
   integer, parameter :: blocks_per_thread = 4
 
@@ -57,7 +59,7 @@ contains
       call put_rows(1, n_rows, out)
       return
     end if
-    call out%reserve(int(min(int(n_rows, int64) * row_room, int(huge(1) / 2, int64))))
+    call out%reserve(int(min(int(n_rows, int64) * row_room, max_reserve)))
     wave = blocks_per_thread * threads
     block_rows = min(rows_per_block, (n_rows + wave - 1) / wave)
     n_blocks = (n_rows + block_rows - 1) / block_rows
