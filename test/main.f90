@@ -12,6 +12,7 @@ program kinetostat_tests
   use test_cam, only: run_cam_tests
   use test_assur, only: run_assur_tests
   use test_assur_ext, only: run_assur_ext_tests
+  use test_friction, only: run_friction_tests
   use test_io, only: run_io_tests
   use test_kinematics, only: run_kinematics_tests
   use test_svg, only: run_svg_tests
@@ -19,7 +20,8 @@ program kinetostat_tests
   implicit none
   !> Suite names, in the order they run.
   character(*), parameter :: suite_names(*) = [character(len=11) :: &
-    "foundation", "pr3207", "pr3050", "sixbar", "gears", "cam", "assur", "assur_ext", "io", "kinematics", "svg"]
+    "foundation", "pr3207", "pr3050", "sixbar", "gears", "cam", "assur", "assur_ext", "friction", "io", &
+    "kinematics", "svg"]
   type(test_counts_t) :: t
   logical :: selected(size(suite_names))
   integer :: i
@@ -77,6 +79,7 @@ contains
     case ("cam"); call run_cam_tests(t)
     case ("assur"); call run_assur_tests(t)
     case ("assur_ext"); call run_assur_ext_tests(t)
+    case ("friction"); call run_friction_tests(t)
     case ("io"); call run_io_tests(t)
     case ("kinematics"); call run_kinematics_tests(t)
     case ("svg"); call run_svg_tests(t)

@@ -16,7 +16,7 @@ module kinetostat_assur
   use kinetostat_vec2, only: unit_at, cross, magnitude
   use kinetostat_loads, only: inertia_force, inertia_moment, gravity_force
   use kinetostat_selfcheck, only: link_balance_t, balance_add_force, balance_add_couple, equilibrium_residual, &
-    power_mismatch
+    power_mismatch, balance_add_balance
   use kinetostat_text, only: int_str
   use kinetostat_assur_kinematics, only: link_state_t, point_state_t, dyad_geometry_t, dyad_pose_t, &
     point_on, crank_state, frame_state, dyad_pose, kind_names, pose_ok, pose_no_assembly
@@ -117,6 +117,8 @@ module kinetostat_assur
     real(wp) :: residual = 0.0_wp
     !> Relative mismatch |M1 - M1_power| / scale (|F_drive - F_drive_power| with an actuator).
     real(wp) :: mismatch = 0.0_wp
+    !> Scale of the power balance: sum of the magnitudes of its terms (per unit crank speed), N*m.
+    real(wp) :: power_scale = 0.0_wp
     !> Actuator (driving prismatic pair) only: axial force, N, positive extending it.
     real(wp) :: f_drive = 0.0_wp
     !> The same from the power balance, N.
@@ -191,7 +193,11 @@ contains
                              states(dy%on(2)), dy%at(:, 2), dy%ang(2))
         if (poses(d)%status /= pose_ok) then
           if (poses(d)%status == pose_no_assembly) then
-            call fatal_error(error, exit_geometry, dyad_label(mech, d)//": cannot be assembled")
+            if (allocated(poses(d)%detail)) then
+              call fatal_error(error, exit_geometry, dyad_label(mech, d)//": cannot be assembled: "//poses(d)%detail)
+            else
+              call fatal_error(error, exit_geometry, dyad_label(mech, d)//": cannot be assembled")
+            end if
           else
             call fatal_error(error, exit_geometry, dyad_label(mech, d)// &
               ": dead (toggle) position, transfer functions undetermined")
@@ -206,8 +212,12 @@ contains
 
   !> Kinetostatic analysis at crank angle `phi1` (rad), crank speed `omega1` (rad/s) and
   !> acceleration `eps1` (rad/s^2), with the external forces' magnitudes `f_mag` (N) and
-  !> the external moments `m_mag` (N*m, CCW positive) of this step.
-  pure subroutine assur_step(mech, phi1, omega1, eps1, f_mag, m_mag, step, error)
+  !> the external moments `m_mag` (N*m, CCW positive) of this step. Optional `extra` loads
+  !> (e.g. friction, see kinetostat_assur_friction) act on the moving links besides the
+  !> applied ones, with their virtual power per unit crank speed `extra_power` (N*m) and the
+  !> sum of its terms' magnitudes `extra_scale`; `balances` returns every link's loads.
+  pure subroutine assur_step(mech, phi1, omega1, eps1, f_mag, m_mag, step, error, extra, extra_power, &
+                             extra_scale, balances)
     !> Mechanism.
     type(assur_mech_t), intent(in) :: mech
     !> Crank angle, rad.
@@ -224,6 +234,14 @@ contains
     type(assur_step_t), intent(out) :: step
     !> Geometry error (cannot assemble, dead position, undetermined reactions).
     type(error_t), allocatable, intent(out) :: error
+    !> Further loads on links 0..2*nd+1 (moments about each link's origin), N and N*m.
+    type(link_balance_t), intent(in), optional :: extra(0:)
+    !> Virtual power of `extra` per unit crank speed, N*m.
+    real(wp), intent(in), optional :: extra_power
+    !> Sum of the magnitudes of the terms of `extra_power`, N*m.
+    real(wp), intent(in), optional :: extra_scale
+    !> All loads and reactions of links 0..2*nd+1 as summed for the equilibrium residual.
+    type(link_balance_t), intent(out), optional :: balances(0:)
     type(link_state_t) :: states(0:2 * size(mech%dyads) + 1)
     type(dyad_pose_t) :: poses(size(mech%dyads))
     type(link_balance_t) :: known(0:2 * size(mech%dyads) + 1)
@@ -283,6 +301,13 @@ contains
       power = power + m_mag(k) * states(i)%u
       power_scale = power_scale + abs(m_mag(k) * states(i)%u)
     end do
+    if (present(extra)) then
+      do i = 1, ubound(states, 1)
+        call balance_add_balance(known(i), extra(i))
+      end do
+    end if
+    if (present(extra_power)) power = power + extra_power
+    if (present(extra_scale)) power_scale = power_scale + extra_scale
 
     if (mech%drive_dyad == 0) then
       ! dyads from the last to the first; each passes its outer reactions to the links it hangs on
@@ -296,6 +321,7 @@ contains
       call drive_by_actuator(mech, states, poses, known, power, power_scale, step, error)
       if (allocated(error)) return
     end if
+    step%power_scale = power_scale
 
     ! equilibrium residual of every moving link with all its loads and reactions
     call balance_add_force(known(1), states(1)%o, states(1)%o, step%f(:, crank_pin_index(nd)))
@@ -313,6 +339,7 @@ contains
       end associate
     end do
     step%residual = equilibrium_residual(known(1:))
+    if (present(balances)) balances = known
   end subroutine assur_step
 
   !> The pair whose stroke is the position of link `i` (internal index): the prismatic pair

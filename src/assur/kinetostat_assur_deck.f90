@@ -12,7 +12,7 @@ module kinetostat_assur_deck
   use kinetostat_text, only: real_str, int_str, number_str, lower
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, unset_bits, max_deck_array, &
-    deck_source_t, namelist_failure, deck_error, is_set, require_set, require_positive, &
+    deck_source_t, namelist_probe_t, deck_error, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn, &
     is_whole_in, require_whole
   use kinetostat_vec2, only: unit_at, rotate, magnitude, cross
@@ -22,6 +22,7 @@ module kinetostat_assur_deck
   use kinetostat_assur_statics, only: pair_is_prismatic
   use kinetostat_assur, only: assur_mech_t, assur_link_t, assur_dyad_t, assur_force_t, link_a, link_b, &
     output_pair_of, assur_extreme, assur_kinematics, link_position
+  use kinetostat_assur_friction, only: pair_friction_t, friction_active
   implicit none
   private
   public :: assur_deck_t, read_assur_deck, write_assur_template, assur_window
@@ -72,6 +73,15 @@ module kinetostat_assur_deck
     real(wp) :: frame_angle = unset
     !> Link (link2 or link3) on which the reported inner-pair force acts; default link2.
     real(wp) :: inner_on = unset
+    !> Friction coefficients of the outer pair of link2, of the outer pair of link3 and of the
+    !> inner pair (default 0: frictionless).
+    real(wp) :: f2 = unset, f3 = unset, f23 = unset
+    !> Journal radii of those pairs when they are turning pairs, m.
+    real(wp) :: r2 = unset, r3 = unset, r23 = unset
+    !> Guide and block lengths of those pairs when they are sliding pairs (optional: the
+    !> two-contact model over the shorter of the two), m.
+    real(wp) :: guide2 = unset, guide3 = unset, guide23 = unset
+    real(wp) :: block2 = unset, block3 = unset, block23 = unset
     !> Global form only: the inner joint B at the reference position (RRR, RRP; PRP: a
     !> check), m.
     real(wp) :: b(2) = unset
@@ -174,6 +184,13 @@ module kinetostat_assur_deck
     logical :: components = .true.
     !> Frame id, crank id.
     integer :: frame_id = 0, crank_id = 1
+    !> Friction data of every pair (dyad pairs, then the crank pin).
+    type(pair_friction_t), allocatable :: friction(:)
+    !> Whether any pair has friction (otherwise the run is the frictionless one, byte for byte).
+    logical :: friction_on = .false.
+    !> Motion sign of the input per step: the sign of omega1, or with the input at rest the
+    !> direction in which the run moves it (+1: phi1 increasing).
+    real(wp), allocatable :: motion_sign(:)
   end type assur_deck_t
 
   !> Template deck: the slider-crank of data/assur_slider_crank.nml.
@@ -264,6 +281,8 @@ contains
     !> frame_id and crank_id as integers.
     integer :: frame_no, crank_no, nd, nf, nm, n_omega, n_eps, n_values, ios, k, d, i
     real(wp) :: crank_at(2), crank_m, crank_j, crank_s(2), omega1, g, gravity_angle, phi_start, dphi
+    !> Friction coefficient and journal radius (m) of the crank's pivot A.
+    real(wp) :: crank_f, crank_r
     real(wp), allocatable :: omega1_step(:), eps1_step(:), step_values(:)
     logical :: angles_signed, components
     type(dyad_in_t) :: dyad(max_dyads)
@@ -272,11 +291,12 @@ contains
     type(schedule_in_t) :: sched
     character(len=512) :: msg
     type(deck_context_t) :: ctx
+    type(namelist_probe_t) :: probe
     integer, allocatable :: ids(:)
     character(len=:), allocatable :: name
     namelist /assur/ title, frame_id, crank_id, crank_at, crank_m, crank_j, crank_s, omega1, &
       omega1_step, eps1_step, g, gravity_angle, phi_start, dphi, n, dyad, force, moment, &
-      step_values, angles_signed, components, drive_dyad, drive_pair, output_link, phi1, start_at, &
+      step_values, angles_signed, components, drive_dyad, drive_pair, output_link, phi1, start_at, crank_f, crank_r, &
       coordinates, phi_ref
 
     ctx%path = source%path
@@ -284,7 +304,7 @@ contains
     title = ""
     frame_id = 0.0_wp; crank_id = 1.0_wp; n = unset_real
     drive_dyad = unset_real; drive_pair = unset_real
-    output_link = unset_real; start_at = ""
+    output_link = unset_real; start_at = ""; crank_f = unset_real; crank_r = unset_real
     coordinates = "local"; phi_ref = unset_real
     crank_at = unset_real; crank_m = unset_real; crank_j = unset_real; crank_s = unset_real
     omega1 = unset_real; g = unset_real; gravity_angle = unset_real
@@ -295,7 +315,13 @@ contains
 
     read (source%lines, nml=assur, iostat=ios, iomsg=msg)
     if (ios /= 0) then
-      call namelist_failure(ctx, ios, msg, error)
+      ! find the line and the assignment that failed (gfortran's message does not say)
+      call probe%start(source, ios, msg)
+      do while (probe%more(source))
+        read (probe%lines, nml=assur, iostat=ios, iomsg=msg)
+        call probe%take(ios, msg)
+      end do
+      call probe%report(source, ctx, error)
       return
     end if
 
@@ -498,6 +524,19 @@ contains
     end do
     deck%pair_name(3 * nd + 1) = pair_stem(crank_no, frame_no)
     deck%pair_frame(3 * nd + 1) = 0.0_wp
+
+    ! ---- friction in the pairs (all 0 by default)
+    allocate (deck%friction(3 * nd + 1))
+    do d = 1, nd
+      call read_dyad_friction(ctx, d, dyad(d), deck%friction(3 * d - 2:3 * d), error)
+      if (allocated(error)) return
+    end do
+    call read_pair_friction(ctx, "crank_f", "crank_r", "", "", crank_f, crank_r, unset_real, unset_real, .false., &
+                            deck%friction(3 * nd + 1), error)
+    if (allocated(error)) return
+    deck%friction%name = deck%pair_name
+    deck%friction_on = friction_active(deck%friction)
+    deck%motion_sign = merge(-1.0_wp, 1.0_wp, deck%omega1 < 0.0_wp)
 
     deck%mech%g = g
     deck%gravity_angle = gravity_angle
@@ -915,7 +954,9 @@ contains
     type(dyad_in_t), intent(in) :: dy
     dyad_touched = any(is_set([dy%link2, dy%link3, dy%on2, dy%on3, dy%at2, dy%at3, dy%angle2, dy%angle3, &
                                dy%l2, dy%l3, dy%e, dy%slot_at, dy%slot_angle, dy%mode, dy%m2, dy%j2, dy%s2, &
-                               dy%m3, dy%j3, dy%s3, dy%frame_angle, dy%inner_on, dy%b]))
+                               dy%m3, dy%j3, dy%s3, dy%frame_angle, dy%inner_on, dy%f2, dy%f3, dy%f23, &
+                               dy%r2, dy%r3, dy%r23, dy%guide2, dy%guide3, dy%guide23, dy%block2, dy%block3, &
+                               dy%block23, dy%b]))
   end function dyad_touched
 
   !> A two-component point: default (0, 0) when unset; both or none; finite.
@@ -1102,6 +1143,81 @@ contains
     la = assur_link_t(id=link2, m=dy%m2, j=dy%j2, s=dy%s2)
     lb = assur_link_t(id=link3, m=dy%m3, j=dy%j3, s=dy%s3)
   end subroutine read_dyad
+
+  !> Friction data of the three pairs of dyad `d` (outer of link2, inner, outer of link3).
+  subroutine read_dyad_friction(ctx, d, dy, out, error)
+    type(deck_context_t), intent(in) :: ctx
+    integer, intent(in) :: d
+    type(dyad_in_t), intent(in) :: dy
+    !> Friction of pairs 1, 2, 3 of the dyad.
+    type(pair_friction_t), intent(out) :: out(3)
+    type(error_t), allocatable, intent(out) :: error
+    character(len=:), allocatable :: p
+    integer :: kind
+    p = "dyad("//int_str(d)//")%"
+    kind = nint(dy%kind)
+    call read_pair_friction(ctx, p//"f2", p//"r2", p//"guide2", p//"block2", dy%f2, dy%r2, dy%guide2, dy%block2, &
+                            pair_is_prismatic(kind, 1), out(1), error)
+    if (allocated(error)) return
+    call read_pair_friction(ctx, p//"f23", p//"r23", p//"guide23", p//"block23", dy%f23, dy%r23, dy%guide23, &
+                            dy%block23, pair_is_prismatic(kind, 2), out(2), error)
+    if (allocated(error)) return
+    call read_pair_friction(ctx, p//"f3", p//"r3", p//"guide3", p//"block3", dy%f3, dy%r3, dy%guide3, dy%block3, &
+                            pair_is_prismatic(kind, 3), out(3), error)
+  end subroutine read_dyad_friction
+
+  !> Friction data of one pair: coefficient `f` >= 0 (default 0); a turning pair takes the
+  !> journal radius `r` (> 0 when f > 0), a sliding pair the optional guide and block lengths
+  !> (> 0 when given; the contact span is the shorter of those given).
+  subroutine read_pair_friction(ctx, f_name, r_name, guide_name, block_name, f, r, guide, block, prismatic, &
+                                out, error)
+    type(deck_context_t), intent(in) :: ctx
+    !> Variable names as in the deck.
+    character(*), intent(in) :: f_name, r_name, guide_name, block_name
+    !> Values as read (unset_real when not given): coefficient, radius (m), lengths (m).
+    real(wp), intent(in) :: f, r, guide, block
+    !> Whether the pair is a sliding pair.
+    logical, intent(in) :: prismatic
+    type(pair_friction_t), intent(out) :: out
+    type(error_t), allocatable, intent(out) :: error
+    character(*), parameter :: turning = " (a turning pair: give its journal radius instead)"
+    character(*), parameter :: sliding = " (a sliding pair: give its guide and block lengths instead)"
+    out%f = optional_default(f, 0.0_wp)
+    call require_finite_nonnegative(ctx, f_name, out%f, error); if (allocated(error)) return
+    if (prismatic) then
+      call require_rule(ctx, r_name, .not. is_set(r), "not used by this pair"//sliding//": remove it", error)
+      if (allocated(error)) return
+      if (is_set(guide)) then
+        call require_finite_nonnegative(ctx, guide_name, guide, error); if (allocated(error)) return
+        if (guide > 0.0_wp) out%span = guide
+      end if
+      if (is_set(block)) then
+        call require_finite_nonnegative(ctx, block_name, block, error); if (allocated(error)) return
+        if (block > 0.0_wp .and. (out%span == 0.0_wp .or. block < out%span)) out%span = block
+      end if
+    else
+      if (len(guide_name) > 0) then
+        call require_rule(ctx, guide_name, .not. is_set(guide), "not used by this pair"//turning//": remove it", error)
+        if (allocated(error)) return
+        call require_rule(ctx, block_name, .not. is_set(block), "not used by this pair"//turning//": remove it", error)
+        if (allocated(error)) return
+      end if
+      out%r = optional_default(r, 0.0_wp)
+      call require_finite_nonnegative(ctx, r_name, out%r, error); if (allocated(error)) return
+      call require_rule(ctx, r_name, out%r > 0.0_wp .or. .not. out%f > 0.0_wp, "the journal radius must be > 0 "// &
+        "when the friction coefficient "//f_name//" is > 0 (the friction moment is f*r*|F|)", error)
+    end if
+  end subroutine read_pair_friction
+
+  !> A variable that must be a finite number >= 0.
+  subroutine require_finite_nonnegative(ctx, name, x, error)
+    type(deck_context_t), intent(in) :: ctx
+    character(*), intent(in) :: name
+    real(wp), intent(in) :: x
+    type(error_t), allocatable, intent(out) :: error
+    call require_nonnegative(ctx, name, x, error); if (allocated(error)) return
+    call require_rule(ctx, name, ieee_is_finite(x), "must be a finite number (got "//real_str(x)//")", error)
+  end subroutine require_finite_nonnegative
 
   !> Reject a variable that the dyad's kind does not use.
   pure subroutine used_only_if(ctx, name, given, used, kind_note, error)

@@ -24,7 +24,7 @@ module kinetostat_cli
 
   !> One-line usage, printed with usage errors.
   character(*), parameter :: usage_line = "usage: kinetostat DECK|- [--set NAME=VALUE]... [-o FILE] " // &
-    "[--format table|csv|json|svg] [--pairs LIST] [--lang en|ru] [--kinematics] [--quiet] [--strict] | " // &
+    "[--format table|csv|json|svg] [--pairs LIST] [--at K] [--lang en|ru] [--kinematics] [--quiet] [--strict] | " // &
     "kinetostat template KIND | --help | --version"
 
   !> Warning line when a run's self-check exceeds its tolerance.
@@ -35,7 +35,7 @@ module kinetostat_cli
     "kinetostat - kinetostatic force analysis of planar mechanisms", &
     "", &
     "  kinetostat DECK [--set NAME=VALUE]... [-o FILE] [--format table|csv|json|svg]", &
-    "                  [--pairs LIST] [--lang en|ru] [--kinematics] [--quiet] [--strict]", &
+    "                  [--pairs LIST] [--at K] [--lang en|ru] [--kinematics] [--quiet] [--strict]", &
     "  kinetostat template KIND      print a commented example deck", &
     "  kinetostat diff A B [--rtol R] [--atol A] [--quiet]   compare two outputs", &
     "  kinetostat --help | --version", &
@@ -48,6 +48,7 @@ module kinetostat_cli
     "--format    table (default, the legacy printout), csv (full precision), json, or svg", &
     "            (a sheet of force hodographs and diagrams; see docs/pictures.md)", &
     "--pairs     with svg: only these pair forces, e.g. --pairs F16,F36", &
+    "--at K      with svg: the mechanism drawn at step K with every force of the step", &
     "--lang      language of the table's labels: en (default) or ru (the 1991 printouts)", &
     "--kinematics  csv and json add positions of joints and centres of mass, link angles,", &
     "            angular speeds and accelerations, accelerations of the centres of mass and", &
@@ -279,7 +280,7 @@ contains
   subroutine parse_args(args, error)
     type(cli_args_t), intent(out) :: args
     type(error_t), allocatable, intent(out) :: error
-    integer :: i, n, eq
+    integer :: i, n, eq, ios
     character(len=:), allocatable :: arg, name, value
 
     n = command_argument_count()
@@ -298,7 +299,7 @@ contains
         value = arg(eq + 1:)
       else
         name = arg
-        if (any(name == [character(len=8) :: "-o", "--output", "--format", "--lang", "--set", "--pairs"])) then
+        if (any(name == [character(len=8) :: "-o", "--output", "--format", "--lang", "--set", "--pairs", "--at"])) then
           if (i == n) then
             call fatal_error(error, exit_usage, name//" needs a value")
             return
@@ -328,6 +329,12 @@ contains
         end if
       case ("--pairs")
         args%options%pairs = value
+      case ("--at")
+        read (value, *, iostat=ios) args%options%at_step
+        if (ios /= 0 .or. args%options%at_step < 1 .or. verify(value, "0123456789 ") /= 0) then
+          call fatal_error(error, exit_usage, "--at needs a step number 1, 2, ... (got '"//value//"')")
+          return
+        end if
       case ("--lang")
         args%options%lang = lang_from_name(value)
         if (args%options%lang == 0) then
@@ -368,6 +375,8 @@ contains
       call fatal_error(error, exit_usage, "no deck given")
     else if (allocated(args%options%pairs) .and. args%options%format /= format_svg) then
       call fatal_error(error, exit_usage, "--pairs needs --format svg")
+    else if (args%options%at_step > 0 .and. args%options%format /= format_svg) then
+      call fatal_error(error, exit_usage, "--at needs --format svg")
     end if
   end subroutine parse_args
 

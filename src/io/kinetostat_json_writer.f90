@@ -86,6 +86,15 @@ contains
       call out%put(line)
     end do
     call out%put("  ],")
+    if (allocated(table%summary)) then
+      call out%put('  "summary": [')
+      do i = 1, size(table%summary)
+        line = "    "//echo_object(table%summary(i))
+        if (i < size(table%summary)) line = line//","
+        call out%put(line)
+      end do
+      call out%put("  ],")
+    end if
     if (table%has_selfcheck) then
       call out%put('  "selfcheck": {"max_residual": '//full_number(table%max_residual)// &
         ', "max_mismatch": '//full_number(table%max_mismatch)//', "driver": '//json_string(table%driver)// &
