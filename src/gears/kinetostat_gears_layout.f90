@@ -11,6 +11,7 @@ module kinetostat_gears_layout
     col_force, col_force_angle
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_table_writer, only: put_heading, value_line
+  use kinetostat_format, only: fixed_field
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_gears, only: gear_stage_t, gear_result_t, gear_pair, gear_series, gear_planetary_step, &
     gear_planetary, gear_bevel, gear_kind_names
@@ -40,8 +41,8 @@ module kinetostat_gears_layout
     col_force, col_force_angle, col_force, col_force_angle, col_moment, col_moment]
   !> CSV positions of the torque columns (M1, M2, M2P, M3, M3P).
   integer, parameter :: moment_columns(*) = [10, 11, 12, 29, 30]
-  !> Format of a force angle in the RESULTS block.
-  character(*), parameter :: angle_fmt = '(f11.4)'
+  !> Width and decimals of a force angle in the RESULTS block (F11.4).
+  integer, parameter :: angle_width = 11, angle_decimals = 4
 
   !> Gear meshes: spur, helical, bevel, planetary stages, manual section 6.
   type, extends(mechanism_t) :: gears_mechanism_t
@@ -230,8 +231,8 @@ contains
     character(*), intent(in) :: name
     real(wp), intent(in) :: magnitude_n, angle_deg
     character(len=:), allocatable :: line
-    character(len=11) :: angle_text
-    write (angle_text, angle_fmt) angle_deg
+    character(len=angle_width) :: angle_text
+    angle_text = fixed_field(angle_deg, angle_width, angle_decimals)
     line = value_line(name, magnitude_n, "N")//"   ANGLE ="//angle_text//"  deg"
   end function vector_line
 

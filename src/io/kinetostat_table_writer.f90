@@ -6,7 +6,7 @@ module kinetostat_table_writer
   use kinetostat_selfcheck, only: selfcheck_tolerance
   use kinetostat_step_table, only: step_table_t, echo_record_t, echo_real_kind, echo_int_kind, &
     echo_logical_kind, echo_array_kind, echo_text_kind, echo_heading_kind, echo_line_kind
-  use kinetostat_format, only: echo_number, echo_array_number, footer_number, pad_right, fixed_field
+  use kinetostat_format, only: echo_number, echo_array_number, footer_number, limit_number, pad_right, put_fixed
   use kinetostat_labels, only: label, lang_ru
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_text_buffer, only: text_buffer_t
@@ -22,8 +22,6 @@ module kinetostat_table_writer
   character(*), parameter :: override_mark = " (--set)"
   !> Values per line of an echoed array.
   integer, parameter :: echo_array_per_line = 5
-  !> Format of the self-check limit in the footer heading.
-  character(*), parameter :: limit_fmt = '(es8.1)'
 
 contains
 
@@ -79,18 +77,17 @@ contains
     integer, intent(in) :: line2_columns(:)
     !> Text after line 1's fields (e.g. the driving moment's field).
     character(*), intent(in) :: tail
-    character(len=:), allocatable :: line
     integer :: i
-    line = fixed_field(v(1), 9, 2)
+    call put_fixed(out, v(1), 9, 2)
     do i = 1, size(line1_columns)
-      line = line//fixed_field(v(line1_columns(i)), 12, 2)
+      call put_fixed(out, v(line1_columns(i)), 12, 2)
     end do
-    call out%put(line//tail)
-    line = repeat(" ", 9)
+    call out%put(tail)
+    call out%append(repeat(" ", 9))
     do i = 1, size(line2_columns)
-      line = line//fixed_field(v(line2_columns(i)), 12, 2)
+      call put_fixed(out, v(line2_columns(i)), 12, 2)
     end do
-    call out%put(line)
+    call out%end_line()
   end subroutine put_two_line_step
 
   !> One INPUT DATA record (its first line ends in " (--set)" when --set gave the value).
@@ -183,10 +180,8 @@ contains
     type(text_buffer_t), intent(inout) :: out
     type(step_table_t), intent(in) :: table
     integer, intent(in) :: lang
-    character(len=16) :: limit
     character(len=:), allocatable :: residual_label, mismatch_label
-    write (limit, limit_fmt) selfcheck_tolerance
-    call put_heading(out, label("SELF-CHECK (relative; limit ", lang)//trim(adjustl(limit))//")")
+    call put_heading(out, label("SELF-CHECK (relative; limit ", lang)//limit_number(selfcheck_tolerance)//")")
     if (allocated(table%residual_label)) then
       residual_label = label(table%residual_label, lang)
     else

@@ -142,7 +142,11 @@ contains
     real(wp), intent(in) :: l_ab
     real(wp) :: v(size(pr3207_csv_columns))
     real(wp) :: floor, f(2, 5)
-    f = reshape([s%f16, s%f21, s%f36, s%f34, s%f56], [2, 5])
+    f(:, 1) = s%f16
+    f(:, 2) = s%f21
+    f(:, 3) = s%f36
+    f(:, 4) = s%f34
+    f(:, 5) = s%f56
     floor = noise_floor(f, [real(wp) ::])
     v(1) = s%phi1 * rad_to_deg
     v(2:11) = force_columns(f, floor, angles_0_360)
