@@ -106,10 +106,6 @@ contains
     call cam_solve(self%deck, steps)
     call table%set_columns(cam_csv_columns, column_units, column_kinds)
     table%input_column = 1
-    ! the kinematics columns first, on a 1-row table: the rows are then allocated once for all
-    ! columns instead of regrown for each new column
-    call table%allocate_rows(1)
-    if (size(steps) > 0) call put_kinematics(table, 1, self%deck, steps(1))
     call table%allocate_rows(size(steps))
     !$omp parallel do schedule(static)
     do k = 1, size(steps)

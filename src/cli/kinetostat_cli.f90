@@ -24,7 +24,8 @@ module kinetostat_cli
 
   !> One-line usage, printed with usage errors.
   character(*), parameter :: usage_line = "usage: kinetostat DECK|- [--set NAME=VALUE]... [-o FILE] " // &
-    "[--format table|csv|json|svg] [--pairs LIST] [--at K] [--lang en|ru] [--kinematics] [--quiet] [--strict] | " // &
+    "[--format table|csv|json|svg] [--pairs LIST] [--at K] [--lang en|ru] [--kinematics] [--frame global|link] " // &
+    "[--quiet] [--strict] | " // &
     "kinetostat template KIND [-o FILE] | kinetostat diff A B [--rtol R] [--atol A] | --help | --version"
 
   !> Warning line when a run's self-check exceeds its tolerance.
@@ -54,6 +55,9 @@ module kinetostat_cli
     "--kinematics  csv and json add positions of joints and centres of mass, link angles,", &
     "            angular speeds and accelerations, accelerations of the centres of mass and", &
     "            the x, y components of the pair forces (the table is unchanged)", &
+    "--frame     global (default) or link: &assur decks also report every pair force as", &
+    "            <F>_along, <F>_across in the axes of the link it acts on (the table prints", &
+    "            them instead of magnitudes and angles)", &
     "-q, --quiet no warnings on stderr (errors are still reported); diff: no report", &
     "--strict    a run that warns (self-check above its limit, a dead position between", &
     "            steps, a jammed cam or lost contact, a coarse step near a load edge)", &
@@ -308,7 +312,7 @@ contains
         value = arg(eq + 1:)
       else
         name = arg
-        if (any(name == [character(len=8) :: "-o", "--output", "--format", "--lang", "--set", "--pairs", "--at"])) then
+        if (any(name == [character(len=8) :: "-o", "--output", "--format", "--lang", "--set", "--pairs", "--at", "--frame"])) then
           if (i == n) then
             call fatal_error(error, exit_usage, name//" needs a value")
             return
@@ -338,6 +342,12 @@ contains
         end if
       case ("--pairs")
         args%options%pairs = value
+      case ("--frame")
+        if (value /= "global" .and. value /= "link") then
+          call fatal_error(error, exit_usage, "--frame must be global or link (got '"//value//"')")
+          return
+        end if
+        args%options%link_frame = value == "link"
       case ("--at")
         read (value, *, iostat=ios) args%options%at_step
         if (ios /= 0 .or. args%options%at_step < 1 .or. verify(value, "0123456789 ") /= 0) then

@@ -16,7 +16,7 @@ contains
 
   !> The JSON object of a run. The rows are formatted in parallel blocks with more than one
   !> OpenMP thread (same bytes).
-  subroutine write_json(title, table, out, kinematics)
+  subroutine write_json(title, table, out, kinematics, link_axes)
     !> Title of the mechanism (as the legacy table prints it).
     character(*), intent(in) :: title
     !> Finite results.
@@ -25,15 +25,19 @@ contains
     type(text_buffer_t), intent(inout) :: out
     !> Whether to add the kinematics columns (--kinematics); default false.
     logical, intent(in), optional :: kinematics
+    !> Whether to add the pair forces in link axes (--frame link); default false.
+    logical, intent(in), optional :: link_axes
     character(len=:), allocatable :: line
     logical, allocatable :: whole(:)
     integer :: i, c, last
-    logical :: shown(size(table%columns)), with_kinematics
+    logical :: shown(size(table%columns)), with_kinematics, with_link_axes
     with_kinematics = .false.
     if (present(kinematics)) with_kinematics = kinematics
+    with_link_axes = .false.
+    if (present(link_axes)) with_link_axes = link_axes
     last = 0
     do c = 1, size(table%columns)
-      shown(c) = table%shows(c, with_kinematics)
+      shown(c) = table%shows(c, with_kinematics, with_link_axes)
       if (shown(c)) last = c
     end do
     call out%put("{")
@@ -72,6 +76,8 @@ contains
         if (table%columns(c)%kind == col_component) line = line//', "frame_angle": '// &
           full_number(table%columns(c)%frame_angle)
       end if
+      if (table%columns(c)%link_axes) line = line//', "frame": "link", "link": '// &
+        json_string(table%columns(c)%frame_link)
       line = line//"}"
       if (c < last) line = line//","
       call out%put(line)

@@ -68,6 +68,11 @@ module kinetostat_step_table
     !> Force component columns: angle of the x axis of the frame the components are given in,
     !> measured in the mechanism's position frame, deg (0 when they are the same frame).
     real(wp) :: frame_angle = 0.0_wp
+    !> True for a pair force component in the moving axes of the link it acts on (<F>_along,
+    !> <F>_across): always in the table, shown by CSV and JSON only with --frame link.
+    logical :: link_axes = .false.
+    !> Link-axes columns: the label of that link (its angle is the kinematics column phi<label>).
+    character(len=:), allocatable :: frame_link
   end type column_t
 
   !> One remark of a run for the user (a warning on stderr, in JSON).
@@ -108,13 +113,17 @@ module kinetostat_step_table
     character(len=:), allocatable :: row_name
     !> Index of the column holding the input coordinate (0 when there is none).
     integer :: input_column = 0
+    !> Column put_kinematic set last (a step puts its kinematics in the same order every
+    !> time, so the next one is looked for after it before searching all columns).
+    integer :: last_kinematic = 0
+    !> Row 1 of kinematics columns added during row 1 and not yet in `rows` (a table of many
+    !> rows grows by all of them at once, when row 2 arrives or finish_columns is called,
+    !> instead of copying every row once per new column).
+    real(wp), allocatable :: pending(:)
     !> The columns.
     type(column_t), allocatable :: columns(:)
     !> Values, rows(column, row).
     real(wp), allocatable :: rows(:, :)
-    !> Column of the last put_kinematic: every row puts its kinematics in the same order, so
-    !> the next one is almost always the column after it (found without a search by name).
-    integer :: kinematic_cursor = 0
     !> INPUT DATA echo records, in print order.
     type(echo_record_t), allocatable :: echo(:)
     !> Number of echo records in use.
@@ -139,13 +148,18 @@ module kinetostat_step_table
     character(len=:), allocatable :: summary_heading
     !> Summary records (real values and lines of text), printed after RESULTS; none by default.
     type(echo_record_t), allocatable :: summary(:)
+    !> The run reports the pair forces in link axes (--frame link; the legacy table prints the
+    !> link-axes columns instead of magnitudes and angles).
+    logical :: link_frame = .false.
   contains
     procedure :: add_column
     procedure :: put_point
     procedure :: put_link
     procedure :: put_acceleration
     procedure :: put_components
+    procedure :: put_link_axes
     procedure :: shows
+    procedure :: finish_columns
     procedure :: set_columns
     procedure :: column_index
     procedure :: allocate_rows
@@ -251,49 +265,106 @@ contains
     call put_kinematic(self, k, force//"_y", "N", col_component, f(2), frame_angle)
   end subroutine put_components
 
+  !> Link axes (--frame link): components <force>_along, <force>_across (N) of a pair force
+  !> in row `k` in the moving axes of the link it acts on (x along the link's x axis).
+  pure subroutine put_link_axes(self, k, force, f, link)
+    class(step_table_t), intent(inout) :: self
+    !> Row.
+    integer, intent(in) :: k
+    !> Force name ("F21").
+    character(*), intent(in) :: force
+    !> Components (along, across), N.
+    real(wp), intent(in) :: f(2)
+    !> Label of the link the force acts on ("2"; its angle column is phi<link>).
+    character(*), intent(in) :: link
+    call put_kinematic(self, k, force//"_along", "N", col_component, f(1), link=link)
+    call put_kinematic(self, k, force//"_across", "N", col_component, f(2), link=link)
+  end subroutine put_link_axes
+
   !> Set the value of kinematics column `name` in row `k`, appending the column (zero in
   !> every row) on first use; a column of that name that is not a kinematics column (one the
-  !> mechanism reports anyway) is left as it is.
-  pure subroutine put_kinematic(self, k, name, unit, kind, value, frame_angle)
+  !> mechanism reports anyway) is left as it is. With `link` the column is a link-axes column
+  !> of that link instead.
+  pure subroutine put_kinematic(self, k, name, unit, kind, value, frame_angle, link)
     type(step_table_t), intent(inout) :: self
     integer, intent(in) :: k
     character(*), intent(in) :: name, unit
     integer, intent(in) :: kind
     real(wp), intent(in) :: value
     real(wp), intent(in), optional :: frame_angle
+    character(*), intent(in), optional :: link
     type(column_t) :: c
     real(wp), allocatable :: grown(:, :)
     integer :: i
-    i = 0
-    if (self%kinematic_cursor >= 0 .and. self%kinematic_cursor < size(self%columns)) then
-      if (self%columns(self%kinematic_cursor + 1)%name == name) i = self%kinematic_cursor + 1
+    if (allocated(self%pending) .and. k /= 1) call self%finish_columns()
+    i = self%last_kinematic + 1
+    if (i > size(self%columns)) then
+      i = 0
+    else if (self%columns(i)%name /= name) then
+      i = 0
     end if
     if (i == 0) i = self%column_index(name)
-    self%kinematic_cursor = i
     if (i == 0) then
       c%name = name
       c%unit = unit
       c%kind = kind
-      c%kinematic = .true.
+      c%kinematic = .not. present(link)
+      c%link_axes = present(link)
+      if (present(link)) c%frame_link = link
       if (present(frame_angle)) c%frame_angle = frame_angle
       self%columns = [self%columns, c]
       i = size(self%columns)
-      allocate (grown(i, size(self%rows, 2)), source=0.0_wp)
-      grown(1:i - 1, :) = self%rows
-      call move_alloc(grown, self%rows)
-      self%kinematic_cursor = i
+      if (k == 1 .and. size(self%rows, 2) > 1) then
+        if (.not. allocated(self%pending)) allocate (self%pending(0))
+        self%pending = [self%pending, 0.0_wp]
+      else
+        call self%finish_columns()
+        allocate (grown(i, size(self%rows, 2)), source=0.0_wp)
+        grown(1:i - 1, :) = self%rows
+        call move_alloc(grown, self%rows)
+      end if
     end if
-    if (self%columns(i)%kinematic) self%rows(i, k) = value + 0.0_wp
+    if (self%columns(i)%kinematic .or. self%columns(i)%link_axes) then
+      if (i > size(self%rows, 1)) then
+        self%pending(i - size(self%rows, 1)) = value + 0.0_wp
+      else
+        self%rows(i, k) = value + 0.0_wp
+      end if
+    end if
+    self%last_kinematic = i
   end subroutine put_kinematic
 
-  !> Whether a writer shows column `c`: kinematics columns only when `kinematics` is true.
-  pure logical function shows(self, c, kinematics)
+  !> Give `rows` every column added so far (the pending kinematics columns of row 1, zero in
+  !> the other rows); the run pipeline calls it after the mechanism's solve.
+  pure subroutine finish_columns(self)
+    class(step_table_t), intent(inout) :: self
+    real(wp), allocatable :: grown(:, :)
+    integer :: done
+    if (.not. allocated(self%pending)) return
+    done = size(self%rows, 1)
+    allocate (grown(size(self%columns), size(self%rows, 2)), source=0.0_wp)
+    grown(1:done, :) = self%rows
+    grown(done + 1:, 1) = self%pending
+    call move_alloc(grown, self%rows)
+    deallocate (self%pending)
+  end subroutine finish_columns
+
+  !> Whether a writer shows column `c`: kinematics columns only when `kinematics` is true,
+  !> link-axes columns only when `link_axes` is true (default false).
+  pure logical function shows(self, c, kinematics, link_axes)
     class(step_table_t), intent(in) :: self
     !> Column index.
     integer, intent(in) :: c
     !> Whether the kinematics columns were asked for (--kinematics).
     logical, intent(in) :: kinematics
-    shows = kinematics .or. .not. self%columns(c)%kinematic
+    !> Whether the link-axes columns were asked for (--frame link).
+    logical, intent(in), optional :: link_axes
+    if (self%columns(c)%link_axes) then
+      shows = .false.
+      if (present(link_axes)) shows = link_axes
+    else
+      shows = kinematics .or. .not. self%columns(c)%kinematic
+    end if
   end function shows
 
   !> Set all columns at once from parallel lists of names, units and kinds.

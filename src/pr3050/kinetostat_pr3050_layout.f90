@@ -193,10 +193,6 @@ contains
     call table%add_column("M21", "N*m", col_moment, csv=.false.)
     table%input_column = 1
     nc = size(pr3050_csv_columns)
-    ! the kinematics columns first, on a 1-row table: the rows are then allocated once for all
-    ! columns instead of regrown for each new column
-    call table%allocate_rows(1)
-    if (size(steps) > 0) call put_kinematics(table, 1, self%deck%p, steps(1))
     call table%allocate_rows(size(steps))
     !$omp parallel do schedule(static) private(floor, n21, m21)
     do k = 1, size(steps)
