@@ -104,6 +104,12 @@ contains
       table%rows(:, k) = assur_csv_values(self%deck, steps(k))
     end do
     call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "M1")
+    do k = 1, size(self%deck%f_mag, 1)
+      call table%note_load(self%deck%f_mag(k, :))
+    end do
+    do k = 1, size(self%deck%m_mag, 1)
+      call table%note_load(self%deck%m_mag(k, :))
+    end do
     if (len_trim(self%deck%title) > 0) table%subtitle = trim(self%deck%title)
     call echo_deck(self%deck, table)
   end subroutine solve

@@ -54,7 +54,21 @@ contains
       text = "НАИБ. НЕВЯЗКА РАВНОВЕСИЯ ТОЛКАТЕЛЯ ПО ВСЕМ ПОЛОЖЕНИЯМ"
     case ("MAX N MISMATCH, CLOSED FORM VS 3X3 LINEAR SOLVE")
       text = "НАИБ. РАСХОЖДЕНИЕ N: ФОРМУЛА И РЕШЕНИЕ СИСТЕМЫ 3X3"
+    case ("SUMMARY")
+      text = "СВОДКА"
+    case ("MAX")
+      text = "НАИБ"
+    case ("MIN")
+      text = "НАИМ"
+    case ("MEAN")
+      text = "СРЕДН"
+    case ("AT ")
+      text = "ПРИ "
+    case ("WORK OF ")
+      text = "РАБОТА "
     ! units (ГОСТ symbols, as the 1991 printouts write them)
+    case ("J")
+      text = "Дж"
     case ("m")
       text = "м"
     case ("mm")

@@ -4,7 +4,7 @@
 module kinetostat_run
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use kinetostat_kinds, only: wp
-  use kinetostat_error, only: error_t, fatal_error, exit_geometry
+  use kinetostat_error, only: error_t, fatal_error, exit_geometry, exit_input
   use kinetostat_text, only: int_str
   use kinetostat_step_table, only: step_table_t, echo_real_kind, echo_array_kind
   use kinetostat_deck, only: deck_source_t
@@ -15,10 +15,11 @@ module kinetostat_run
   use kinetostat_json_writer, only: write_json
   use kinetostat_labels, only: lang_en
   use kinetostat_override, only: override_t, mark_overrides
+  use kinetostat_summary, only: coarse_step_warning, summary_header, summary_row
   implicit none
   private
   public :: run_options_t, run_mechanism, guard_finite
-  public :: format_table, format_csv, format_json, format_from_name, format_names
+  public :: format_table, format_csv, format_json, format_summary, format_from_name, format_names
 
   !> Output format: the legacy fixed-format table.
   integer, parameter :: format_table = 1
@@ -26,8 +27,10 @@ module kinetostat_run
   integer, parameter :: format_csv = 2
   !> Output format: one JSON object.
   integer, parameter :: format_json = 3
+  !> Output format: a CSV header and one summary row (extremes, means, work).
+  integer, parameter :: format_summary = 4
   !> Names of the formats, for messages and --help.
-  character(*), parameter :: format_names = "table, csv, json"
+  character(*), parameter :: format_names = "table, csv, json, summary"
 
   !> How to run and what to write.
   type :: run_options_t
@@ -52,6 +55,8 @@ contains
       format_from_name = format_csv
     case ("json")
       format_from_name = format_json
+    case ("summary")
+      format_from_name = format_summary
     case default
       format_from_name = 0
     end select
@@ -74,6 +79,7 @@ contains
     type(text_buffer_t), intent(inout) :: out
     !> Input, geometry or overflow error.
     type(error_t), allocatable, intent(out) :: error
+    character(len=:), allocatable :: warning
 
     call mech%read_deck(source, error)
     if (allocated(error)) return
@@ -88,9 +94,18 @@ contains
     if (allocated(options%overrides)) then
       if (size(options%overrides) > 0) call mark_overrides(table, options%overrides)
     end if
+    call coarse_step_warning(table, warning)
+    if (allocated(warning)) call table%add_warning(warning)
     select case (options%format)
     case (format_csv)
       call write_csv(table, out)
+    case (format_summary)
+      if (table%row_count() == 0) then
+        call fatal_error(error, exit_input, table%deck//": &"//table%mechanism//": no rows to summarize")
+        return
+      end if
+      call out%put(summary_header(table))
+      call out%put(summary_row(table))
     case (format_json)
       call write_json(mech%title(options%lang), table, out)
     case default

@@ -103,6 +103,7 @@ contains
       table%rows(:, k) = pr3207_csv_values(steps(k), self%deck%p%l_ab)
     end do
     call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "M1")
+    call table%note_load(self%deck%f5c)
     call echo_deck(self%deck, table)
   end subroutine solve
 

@@ -161,6 +161,7 @@ contains
       table%rows(:, k) = sixbar_csv_values(steps(k), self%deck%p%l1)
     end do
     call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "M1")
+    call table%note_load(self%deck%f5)
     call echo_deck(self%deck, table)
   end subroutine solve
 
