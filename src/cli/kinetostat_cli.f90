@@ -95,7 +95,7 @@ contains
     type(step_table_t) :: table
     type(text_buffer_t) :: out
     integer :: i, warnings
-    logical :: ran
+    logical :: ran, progress
 
     ran = .false.
     warnings = 0
@@ -114,7 +114,10 @@ contains
       else if (args%sweep) then
         call sweep_deck(args, out, warnings, error)
       else
+        progress = stderr_is_terminal() .and. .not. args%quiet
+        if (progress) call progress_line("kinetostat: "//args%deck//": running ...")
         call run_deck(args%deck, args%options, table, out, error)
+        if (progress) call progress_line("")
         ran = .not. allocated(error)
       end if
     end if
@@ -192,6 +195,22 @@ contains
       parts = 1
     end if
   end subroutine parse_part
+
+  !> The progress line on stderr (a terminal): `text` written over the previous one from
+  !> the start of the line; "" erases it.
+  subroutine progress_line(text)
+    character(*), intent(in) :: text
+    !> Characters erased by "" (the longest line written so far).
+    integer, save :: written = 0
+    if (len(text) == 0) then
+      write (error_unit, '(a)', advance='no') achar(13)//repeat(" ", written)//achar(13)
+      written = 0
+    else
+      write (error_unit, '(a)', advance='no') achar(13)//text
+      written = max(written, len(text))
+    end if
+    flush (error_unit)
+  end subroutine progress_line
 
   !> Append a --vary axis.
   subroutine add_vary(varies, arg, error)

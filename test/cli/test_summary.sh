@@ -162,3 +162,17 @@ run_ks sweep data/pr3207.nml --vary l_ab=0.1:0.12:2.5
 run_ks sweep data/pr3207.nml --vary l_ab=0.3:0.5:3 --quiet
 [ "$rc" -eq 2 ] && [ ! -s "$out" ] && [ "$(wc -l <"$err")" -eq 1 ] \
   && grep -q "l_ab: .*(sweep variant 2: l_ab=0.4)$" "$err" && pass || fail sweep-variant-error "rc=$rc $(cat "$err")"
+
+# --- progress (issue 10 item 8): only when stderr is a terminal, overwritten in place and
+# erased at the end; never in a pipe or a file, never with --quiet
+if command -v script >/dev/null 2>&1; then
+  script -qec "'$KINETOSTAT' data/pr3050.nml -o '$cli_tmp/progress.table'" /dev/null >"$cli_tmp/pty.txt" 2>&1
+  if grep -q $'\rkinetostat: data/pr3050.nml: running \.\.\.\r' "$cli_tmp/pty.txt" && cmp -s "$cli_tmp/progress.table" data/expected/pr3050.table; then
+    pass; else fail progress-terminal "$(od -c "$cli_tmp/pty.txt" | head -5)"; fi
+  script -qec "'$KINETOSTAT' data/pr3050.nml --quiet -o /dev/null" /dev/null >"$cli_tmp/pty.txt" 2>&1
+  [ ! -s "$cli_tmp/pty.txt" ] && pass || fail progress-quiet "$(od -c "$cli_tmp/pty.txt" | head -3)"
+fi
+run_ks data/pr3050.nml
+[ ! -s "$err" ] && pass || fail progress-not-in-pipes "$(od -c "$err" | head -3)"
+run_ks sweep data/pr3050.nml --vary m3=1000:1100:3
+[ ! -s "$err" ] && pass || fail progress-not-in-pipes-sweep "$(od -c "$err" | head -3)"
