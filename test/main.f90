@@ -11,12 +11,18 @@ program kinetostat_tests
   use test_gears, only: run_gears_tests
   use test_cam, only: run_cam_tests
   use test_assur, only: run_assur_tests
+  use test_assur_ext, only: run_assur_ext_tests
+  use test_friction, only: run_friction_tests
   use test_io, only: run_io_tests
+  use test_kinematics, only: run_kinematics_tests
+  use test_svg, only: run_svg_tests
+  use test_decimal, only: run_decimal_tests
   use, intrinsic :: iso_fortran_env, only: error_unit
   implicit none
   !> Suite names, in the order they run.
-  character(*), parameter :: suite_names(*) = [character(len=10) :: &
-    "foundation", "pr3207", "pr3050", "sixbar", "gears", "cam", "assur", "io"]
+  character(*), parameter :: suite_names(*) = [character(len=11) :: &
+    "foundation", "pr3207", "pr3050", "sixbar", "gears", "cam", "assur", "assur_ext", "friction", "io", &
+    "kinematics", "svg", "decimal"]
   type(test_counts_t) :: t
   logical :: selected(size(suite_names))
   integer :: i
@@ -73,7 +79,12 @@ contains
     case ("gears"); call run_gears_tests(t)
     case ("cam"); call run_cam_tests(t)
     case ("assur"); call run_assur_tests(t)
+    case ("assur_ext"); call run_assur_ext_tests(t)
+    case ("friction"); call run_friction_tests(t)
     case ("io"); call run_io_tests(t)
+    case ("kinematics"); call run_kinematics_tests(t)
+    case ("svg"); call run_svg_tests(t)
+    case ("decimal"); call run_decimal_tests(t)
     case default; error stop "run_suite: no suite '"//name//"'"
     end select
   end subroutine run_suite

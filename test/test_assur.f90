@@ -10,7 +10,7 @@ module test_assur
     kind_rrr, kind_rrp, kind_rpr, kind_prp, kind_rpp, kind_names
   use kinetostat_assur_statics, only: dyad_reactions_t, dyad_reactions, pair_is_prismatic
   use kinetostat_assur, only: assur_mech_t, assur_link_t, assur_dyad_t, assur_step_t, assur_force_t, &
-    assur_step, assur_kinematics, pair_index, crank_pin_index
+    assur_step, assur_kinematics, pair_index, crank_pin_index, pair_sides
   use kinetostat_assur_deck, only: assur_deck_t, read_assur_deck, assur_window
   use kinetostat_deck, only: deck_source_t, load_deck
   use kinetostat_assur_layout, only: assur_solve
@@ -266,17 +266,17 @@ contains
     !> FD step, rad; tolerances relative 1e-6, absolute 1e-6 (m/rad or rad/rad).
     real(wp), parameter :: h = 1.0e-4_wp, rtol = 1.0e-6_wp, atol = 1.0e-6_wp
     type(link_state_t) :: s0(0:5), sm(0:5), sp(0:5)
-    type(dyad_pose_t) :: poses(2)
+    type(dyad_pose_t) :: poses(2), pm(2), pp(2)
     type(error_t), allocatable :: e0, em, ep
     real(wp) :: phi
-    integer :: k, i, c, assembled
+    integer :: k, i, c, assembled, d, j, sides(2)
     character(len=80) :: at
     assembled = 0
     do k = 0, 23
       phi = (7.0_wp + 15.0_wp * k) * deg_to_rad
       call assur_kinematics(mech, phi, s0, poses, e0)
-      call assur_kinematics(mech, phi - h, sm, poses, em)
-      call assur_kinematics(mech, phi + h, sp, poses, ep)
+      call assur_kinematics(mech, phi - h, sm, pm, em)
+      call assur_kinematics(mech, phi + h, sp, pp, ep)
       if (allocated(e0) .or. allocated(em) .or. allocated(ep)) cycle
       assembled = assembled + 1
       do i = 2, 5
@@ -290,9 +290,34 @@ contains
                            s0(i)%ao(c), rtol, atol)
         end do
       end do
+      ! strokes of the prismatic pairs (actuator length, speed and acceleration analogues)
+      do d = 1, 2
+        do j = 1, 3
+          if (.not. pair_is_prismatic(mech%dyads(d)%geom%kind, j)) cycle
+          write (at, '(a," dyad ",i0," pair ",i0," at phi1=",f6.1)') label, d, j, phi * rad_to_deg
+          call check_close(t, "stroke' "//trim(at), (pp(d)%stroke(j) - pm(d)%stroke(j)) / (2 * h), &
+                           poses(d)%stroke_v(j), rtol, atol)
+          call check_close(t, "stroke'' "//trim(at), (pp(d)%stroke(j) - 2 * poses(d)%stroke(j) + pm(d)%stroke(j)) &
+                           / h**2, poses(d)%stroke_a(j), rtol, atol)
+          ! the sliding side's point at the pair moves along `extend` at stroke' relative to the other side
+          sides = pair_sides(mech, d, j)
+          call check_close(t, "stroke' = relative sliding speed "//trim(at), &
+                           dot_product(point_velocity(s0(sides(1)), poses(d)%p(:, j)) &
+                                       - point_velocity(s0(sides(2)), poses(d)%p(:, j)), poses(d)%extend(:, j)), &
+                           poses(d)%stroke_v(j), 1.0e-12_wp, 1.0e-12_wp)
+        end do
+      end do
     end do
     call check_true(t, label//": assembled at >= 8 of 24 test angles", assembled >= 8, "too few")
   end subroutine fd_mech
+
+  !> Velocity analogue (m/rad) of the point of link `ls` now at `p` (m).
+  pure function point_velocity(ls, p) result(v)
+    type(link_state_t), intent(in) :: ls
+    real(wp), intent(in) :: p(2)
+    real(wp) :: v(2)
+    v = ls%vo + ls%u * perp(p - ls%o)
+  end function point_velocity
 
   ! ----------------------------------------------------------------------------------------
   !> Every step of the three generic decks: equilibrium residual and power balance <= 1e-9.

@@ -12,6 +12,8 @@ module test_io
   use kinetostat_csv_writer, only: write_csv
   use kinetostat_json_writer, only: write_json, json_string
   use kinetostat_run, only: guard_finite
+  use kinetostat_diff, only: diff_options_t, diff_outputs, diff_same, diff_different
+  use kinetostat_step_table, only: column_t
   use test_harness, only: test_counts_t, check_true
   implicit none
   private
@@ -26,7 +28,43 @@ contains
     call test_csv(t)
     call test_json(t)
     call test_guard(t)
+    call test_diff(t)
   end subroutine run_io_tests
+
+  !> kinetostat_diff on crafted CSV and table pairs: angles modulo 360, the angle of a
+  !> vanishing force ignored, a real difference reported, not comparable pairs rejected.
+  subroutine test_diff(t)
+    type(test_counts_t), intent(inout) :: t
+    character(len=*), parameter :: header = "phi1,F16,F16G,M1"
+    type(column_t) :: catalog(0)
+    type(diff_options_t) :: options
+    type(text_buffer_t) :: report
+    type(error_t), allocatable :: error
+    integer :: status
+    character(len=60) :: a(3), b(3)
+    a = [character(len=60) :: header, "0,1.0E+2,3.59999E+2,5.0", "30,0.0E+0,0.0E+0,1.0"]
+    b = [character(len=60) :: header, "0,1.0E+2,1.0E-3,5.0", "30,0.0E+0,1.234E+2,1.0"]
+    options%atol = 0.005_wp
+    call diff_outputs("a", a, "b", b, catalog, options, report, status, error)
+    call check_true(t, "diff: 359.999 vs 0.001 deg and a vanishing force's angle are the same", &
+      .not. allocated(error) .and. status == diff_same, report%text())
+    options = diff_options_t()
+    report = text_buffer_t()
+    call diff_outputs("a", a, "b", b, catalog, options, report, status, error)
+    call check_true(t, "diff: 0.002 deg is beyond the default angle tolerance", status == diff_different .and. &
+      index(report%text(), "step 1, column F16G: 3.59999E+2 vs 1.0E-3 (diff 2.0e-03 deg)") == 1, report%text())
+    b(2) = "0,1.0E+2,3.59999E+2,5.1"
+    report = text_buffer_t()
+    call diff_outputs("a", a, "b", b, catalog, options, report, status, error)
+    call check_true(t, "diff: a real difference is named", status == diff_different .and. &
+      index(report%text(), "step 1, column M1: 5.0 vs 5.1 (rel 2.0e-02)") == 1, report%text())
+    b(1) = "phi1,F21,F21G,M1"
+    call diff_outputs("a", a, "b", b, catalog, options, report, status, error)
+    call check_true(t, "diff: other columns are an error", allocated(error), "no error")
+    a(1) = " KINETOSTAT  X"
+    call diff_outputs("a", a, "b", b, catalog, options, report, status, error)
+    call check_true(t, "diff: a table and a CSV file are not comparable", allocated(error), "no error")
+  end subroutine test_diff
 
   !> Expect `computed` to equal `expected` exactly, printing both on failure.
   subroutine check_text(t, name, expected, computed)

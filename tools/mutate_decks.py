@@ -231,6 +231,7 @@ def check_deck(job):
     binary, name, desc, data, with_file = job
     failures = []
     selfcheck = False
+    table_run = None
     work = tempfile.mkdtemp(prefix="ks_mut_")
     try:
         deck = os.path.join(work, "deck.nml")
@@ -241,6 +242,8 @@ def check_deck(job):
             modes.append(("-o", ["deck.nml", "--format", "csv", "-o", "out.csv"]))
         for mode, args in modes:
             rc, out, err = run(binary, args, work)
+            if mode == "table":
+                table_run = (rc, err)
             file_text = ""
             if mode == "-o":
                 target = os.path.join(work, "out.csv")
@@ -281,7 +284,22 @@ def check_deck(job):
                     failures.append(("runtime-text", mode, "%s contains %r" % (label, hit[0])))
     finally:
         shutil.rmtree(work, ignore_errors=True)
-    return name, desc, failures, selfcheck
+    return name, desc, failures, selfcheck, table_run
+
+
+#: Mutations of one variable's value (the variable is the first word of the description).
+SINGLE_VARIABLE_KINDS = {kind for kind, _ in VALUE_KINDS}
+MUTATED_RE = re.compile(r"^(?:delete )?([A-Za-z_]\w*)(?:\(\s*\d+\s*\))?(?:%([A-Za-z_]\w*))?")
+
+
+def names_variable(desc, message):
+    """Whether an error message names the variable a single-variable mutation changed (its
+    name, and for a derived-type member the member too, as words, in any case)."""
+    m = MUTATED_RE.match(desc.split(": ", 1)[1])
+    if not m:
+        return False
+    words = set(re.findall(r"[a-z_][a-z0-9_]*", message.lower()))
+    return all(part.lower() in words for part in m.groups() if part)
 
 
 def main():
@@ -295,6 +313,8 @@ def main():
     ap.add_argument("--only", default="", help="run only decks whose name contains this text")
     ap.add_argument("--selfcheck", action="store_true", help="also list decks that gave a self-check warning")
     ap.add_argument("--jobs", type=int, default=2, help="worker processes (2)")
+    ap.add_argument("--unnamed", action="store_true",
+                    help="list the input errors of single-variable mutations that do not name the variable")
     args = ap.parse_args()
 
     decks = derive_decks(args.data)
@@ -322,7 +342,16 @@ def main():
     if os.path.isdir(args.out):
         for old in glob.glob(os.path.join(args.out, "*.nml")):
             os.remove(old)
-    for name, desc, failures, selfcheck in results:
+    named = unnamed = 0
+    for name, desc, failures, selfcheck, table_run in results:
+        kind = next((k for k in SINGLE_VARIABLE_KINDS if name.endswith("_" + k)), None)
+        if kind and table_run and table_run[0] == 2:
+            if names_variable(desc, table_run[1]):
+                named += 1
+            else:
+                unnamed += 1
+                if args.unnamed:
+                    print("UNNAMED %s [%s]: %s" % (name, desc, table_run[1].strip()[:300]))
         if selfcheck:
             selfcheck_decks.append((name, desc))
         if not failures:
@@ -346,6 +375,9 @@ def main():
     for check in CHECKS:
         n = failed_by_check[check]
         print("check %s: %s" % (check, "ok" if n == 0 else "FAIL (%d decks)" % n))
+    if named + unnamed:
+        print("named: %d of %d input errors (exit 2) of single-variable mutations name the variable (%.0f %%)" % (
+            named, named + unnamed, 100.0 * named / (named + unnamed)))
     runs = sum(3 if j[4] else 2 for j in jobs)
     print("mutation: %d decks, %d runs, %d decks failed (%s); %d self-check warnings (not counted)" % (
         len(jobs), runs, failed_decks,

@@ -16,8 +16,9 @@
 !> A, C: outer pins; B: inner pin; a guide is a line on an earlier link along which the
 !> slider's reference point moves (any offset of the slider is part of the line's position).
 module kinetostat_assur_kinematics
-  use kinetostat_kinds, only: wp
+  use kinetostat_kinds, only: wp, rad_to_deg
   use kinetostat_vec2, only: unit_at, perp, cross, rotate, magnitude
+  use kinetostat_text, only: real_str
   implicit none
   private
   public :: link_state_t, point_state_t, dyad_geometry_t, dyad_pose_t
@@ -94,6 +95,17 @@ module kinetostat_assur_kinematics
     real(wp) :: p(2, 3) = 0.0_wp
     !> Unit direction of the sliding line of each prismatic pair (zero for revolute pairs).
     real(wp) :: t(2, 3) = 0.0_wp
+    !> Stroke of each prismatic pair: position of its sliding side (link a for pairs 1, 2;
+    !> link b for pair 3) along `extend` relative to the other side, m (0 for revolute pairs).
+    real(wp) :: stroke(3) = 0.0_wp
+    !> d stroke / d phi1, m/rad.
+    real(wp) :: stroke_v(3) = 0.0_wp
+    !> d2 stroke / d phi1^2, m/rad^2.
+    real(wp) :: stroke_a(3) = 0.0_wp
+    !> Unit direction in which the sliding side moves when the stroke grows (+-t).
+    real(wp) :: extend(2, 3) = 0.0_wp
+    !> Why the dyad cannot be assembled, with the numbers (pose_no_assembly only).
+    character(len=:), allocatable :: detail
   end type dyad_pose_t
 
 contains
@@ -196,11 +208,14 @@ contains
     l = magnitude(d)
     if (.not. l > 0.0_wp) then
       pose%status = pose_no_assembly
+      pose%detail = "its outer joints coincide (distance 0 m)"
       return
     end if
     cos_al = (g%l2**2 + l**2 - g%l3**2) / (2.0_wp * g%l2 * l)
     if (abs(cos_al) > 1.0_wp + reach_tol) then
       pose%status = pose_no_assembly
+      pose%detail = "distance between its outer joints "//real_str(l)//" m is outside [|l2 - l3|, l2 + l3] = ["// &
+        real_str(abs(g%l2 - g%l3))//", "//real_str(g%l2 + g%l3)//"] m"
       return
     end if
     alpha = acos(max(-1.0_wp, min(1.0_wp, cos_al)))
@@ -242,6 +257,8 @@ contains
     disc = dt**2 - dot_product(d, d) + g%l2**2
     if (disc < -reach_tol * g%l2**2) then
       pose%status = pose_no_assembly
+      pose%detail = "distance from its joint to the guide "//real_str(sqrt(max(dot_product(d, d) - dt**2, 0.0_wp)))// &
+        " m exceeds l2 = "//real_str(g%l2)//" m"
       return
     end if
     s = -dt + real(g%mode, wp) * sqrt(max(disc, 0.0_wp))
@@ -265,6 +282,7 @@ contains
     pose%p(:, 2) = b
     pose%p(:, 3) = b
     pose%t(:, 3) = t
+    call set_stroke(pose, 3, s, ds, x(2), t)
   end subroutine pose_rrp
 
   !> RPR: A - C = s t + e n with t = e(th) the common slide direction; mode +1 takes s > 0.
@@ -279,6 +297,8 @@ contains
     disc = l2sq - g%e**2
     if (disc < -reach_tol * max(l2sq, g%e**2) .or. .not. l2sq > 0.0_wp) then
       pose%status = pose_no_assembly
+      pose%detail = "distance between its outer joints "//real_str(sqrt(l2sq))//" m is less than the slider's offset |e| = "// &
+        real_str(abs(g%e))//" m"
       return
     end if
     s = real(g%mode, wp) * sqrt(max(disc, 0.0_wp))
@@ -301,6 +321,9 @@ contains
     pose%p(:, 2) = a%p
     pose%p(:, 3) = c%p
     pose%t(:, 2) = t
+    ! pin A (link a) moves away from C (link b) as |s| grows: the actuator's length
+    call set_stroke(pose, 2, real(g%mode, wp) * s, real(g%mode, wp) * ds, real(g%mode, wp) * x(2), &
+                    real(g%mode, wp) * t)
   end subroutine pose_rpr
 
   !> PRP: B = G1 + s1 t1 = G2 + s2 t2 (intersection of the two guides).
@@ -317,6 +340,8 @@ contains
     call solve2(t1, -t2, g2%p - g1%p, x, ok)
     if (.not. ok) then
       pose%status = pose_no_assembly
+      pose%detail = "its two guides are parallel (directions "//real_str(modulo(gam1 * rad_to_deg, 360.0_wp))//" and "// &
+        real_str(modulo(gam2 * rad_to_deg, 360.0_wp))//" deg)"
       return
     end if
     s1 = x(1)
@@ -337,6 +362,8 @@ contains
     pose%p(:, 3) = b
     pose%t(:, 1) = t1
     pose%t(:, 3) = t2
+    call set_stroke(pose, 1, s1, ds1, x(1), t1)
+    call set_stroke(pose, 3, s2, ds2, x(2), t2)
   end subroutine pose_prp
 
   !> RPP: link b slides along the guide (G, t), its origin O_b = G + s_b t; the slot of b
@@ -356,6 +383,7 @@ contains
     call solve2(t, ts, w - rotate(g%slot_at, gam), x, ok)
     if (.not. ok) then
       pose%status = pose_no_assembly
+      pose%detail = "its slot is parallel to its guide (slot_angle = "//real_str(g%slot_angle * rad_to_deg)//" deg)"
       return
     end if
     sb = x(1)
@@ -375,6 +403,24 @@ contains
     pose%p(:, 3) = ob
     pose%t(:, 2) = ts
     pose%t(:, 3) = t
+    call set_stroke(pose, 2, sa, dsa, x(2), ts)
+    call set_stroke(pose, 3, sb, dsb, x(1), t)
   end subroutine pose_rpp
+
+  !> Record the stroke of prismatic pair `j` with its analogues and extension direction.
+  pure subroutine set_stroke(pose, j, s, ds, dds, extend)
+    !> Pose being filled.
+    type(dyad_pose_t), intent(inout) :: pose
+    !> Pair index 1..3.
+    integer, intent(in) :: j
+    !> Stroke, m; d/dphi1, m/rad; d2/dphi1^2, m/rad^2.
+    real(wp), intent(in) :: s, ds, dds
+    !> Unit direction of extension.
+    real(wp), intent(in) :: extend(2)
+    pose%stroke(j) = s
+    pose%stroke_v(j) = ds
+    pose%stroke_a(j) = dds
+    pose%extend(:, j) = extend
+  end subroutine set_stroke
 
 end module kinetostat_assur_kinematics

@@ -5,27 +5,38 @@ module kinetostat_assur_layout
   use kinetostat_kinds, only: wp, deg_to_rad, rad_to_deg
   use kinetostat_deck, only: deck_source_t
   use kinetostat_error, only: error_t, fatal_error, exit_geometry
-  use kinetostat_text, only: int_str
-  use kinetostat_noise, only: noise_rel
+  use kinetostat_text, only: int_str, upper
+  use kinetostat_noise, only: noise_rel, force_components
   use kinetostat_vec2, only: magnitude, angle_360_deg, angle_180_deg, rotate, snap_noise, clean_zero
-  use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_component, &
-    col_moment
+  use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_component, col_length, &
+    col_moment, col_other, col_flag, col_ratio
   use kinetostat_format, only: fixed_field, display_width
   use kinetostat_labels, only: lang_ru
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_mechanism, only: mechanism_t
-  use kinetostat_assur_kinematics, only: kind_names
+  use kinetostat_sketch, only: sketch_t
+  use kinetostat_assur_kinematics, only: kind_names, link_state_t, dyad_pose_t, point_state_t, point_on, &
+    kind_rrp, kind_rpr, kind_prp, kind_rpp
   use kinetostat_assur_statics, only: pair_is_prismatic
-  use kinetostat_assur, only: assur_step_t, assur_step
+  use kinetostat_assur, only: assur_step_t, assur_step, assur_kinematics, link_a, link_b, crank_pin_index
+  use kinetostat_drawing, only: drawing_t, force_load
+  use kinetostat_assur_friction, only: friction_step_t, assur_friction_step
   use kinetostat_assur_deck, only: assur_deck_t, read_assur_deck, write_assur_template
   implicit none
   private
   public :: assur_mechanism_t, new_assur, assur_solve, assur_csv_columns, assur_csv_values, assur_pair_prismatic
+  public :: friction_csv_columns, friction_csv_values, friction_work
 
   !> Width of the PHI1 field of the RESULTS block.
   integer, parameter :: phi_width = 9
   !> Width of every other field of the RESULTS block.
   integer, parameter :: field_width = 12
+  !> A run spanning at least 360 deg minus this covers a whole turn of the input, deg.
+  real(wp), parameter :: whole_turn_tol = 1.0e-9_wp
+  !> An efficiency within this of 0 is roundoff (A_loss = A_driver: the loads do no net work).
+  real(wp), parameter :: eta_roundoff = 1.0e-12_wp
+  !> Decimals of the actuator's stroke (m), stroke speed (m/s) and acceleration (m/s^2).
+  integer, parameter :: stroke_decimals = 4
   !> Dyad line of the INPUT DATA echo.
   character(*), parameter :: dyad_echo_fmt = '(3x,"DYAD ",i0,": ",a," LINKS ",i0,"-",i0,", ON LINKS ",i0," AND ",i0, &
     &", MODE ",i0)'
@@ -39,6 +50,8 @@ module kinetostat_assur_layout
     procedure :: solve
     procedure :: write_results
     procedure :: write_template
+    procedure :: sketch
+    procedure :: force_plan
   end type assur_mechanism_t
 
 contains
@@ -66,16 +79,111 @@ contains
     call write_assur_template(out)
   end subroutine write_template
 
+  !> The topology for a drawing: every moving link joins the joints J<pair> of its pairs (a
+  !> dyad's link a: pairs 1, 2; link b: pairs 2, 3; the crank: its pivot; each link also the
+  !> joints of the later dyads attached to it). A link that slides on a prismatic pair is a
+  !> block: RRP link b on its guide, RPR link a along link b's x axis, PRP both links, RPP
+  !> link a along the slot of link b and link b on its guide. Pivots: the revolute pairs with
+  !> the frame; guides: every prismatic pair's line.
+  pure subroutine sketch(self, out)
+    class(assur_mechanism_t), intent(in) :: self
+    type(sketch_t), intent(out) :: out
+    character(len=16), allocatable :: joints(:)
+    integer :: nd, d, i, q, e
+    real(wp) :: slot_deg
+    associate (mech => self%deck%mech, names => self%deck%pair_name)
+      nd = size(mech%dyads)
+      do i = 1, 2 * nd + 1
+        ! the link's own pairs, then the outer pairs of later dyads attached to it
+        if (i == 1) then
+          joints = [character(len=16) :: joint_name(names(3 * nd + 1))]
+        else
+          d = i / 2
+          q = i - 2 * d + 1
+          joints = [character(len=16) :: joint_name(names(3 * d - 3 + q)), joint_name(names(3 * d - 2 + q))]
+        end if
+        do e = 1, nd
+          if (mech%dyads(e)%on(1) == i) joints = [character(len=16) :: joints, joint_name(names(3 * e - 2))]
+          if (mech%dyads(e)%on(2) == i) joints = [character(len=16) :: joints, joint_name(names(3 * e))]
+        end do
+        call add_sketch_link(out, self%deck, i, joints)
+      end do
+      call out%add_pivot(joint_name(names(3 * nd + 1)))
+      do d = 1, nd
+        associate (dy => mech%dyads(d))
+          do q = 1, 2
+            e = 3 * d - 2 + 2 * (q - 1)
+            if (assur_pair_prismatic(self%deck, e)) then
+              call out%add_guide(joint_name(names(e)), dy%ang(q) * rad_to_deg, link_label(self%deck, dy%on(q)))
+            else if (dy%on(q) == 0) then
+              call out%add_pivot(joint_name(names(e)))
+            end if
+          end do
+          if (assur_pair_prismatic(self%deck, 3 * d - 1)) then
+            slot_deg = 0.0_wp
+            if (dy%geom%kind == kind_rpp) slot_deg = dy%geom%slot_angle * rad_to_deg
+            call out%add_guide(joint_name(names(3 * d - 1)), slot_deg, link_label(self%deck, link_b(d)))
+          end if
+        end associate
+      end do
+      out%down = mech%down
+    end associate
+  end subroutine sketch
+
+  !> One moving link (internal index i) of the sketch: a bar through `joints`, or a block.
+  pure subroutine add_sketch_link(out, deck, i, joints)
+    type(sketch_t), intent(inout) :: out
+    type(assur_deck_t), intent(in) :: deck
+    integer, intent(in) :: i
+    character(*), intent(in) :: joints(:)
+    integer :: d, kind
+    character(len=:), allocatable :: name
+    name = link_label(deck, i)
+    if (i == 1) then
+      call out%add_link(name, joints)
+      return
+    end if
+    d = i / 2
+    kind = deck%mech%dyads(d)%geom%kind
+    associate (dy => deck%mech%dyads(d))
+      if (i == link_a(d) .and. kind == kind_rpr) then
+        call out%add_link(name, joints, 0.0_wp, link_label(deck, link_b(d)))
+      else if (i == link_a(d) .and. kind == kind_prp) then
+        call out%add_link(name, joints, dy%ang(1) * rad_to_deg, link_label(deck, dy%on(1)))
+      else if (i == link_a(d) .and. kind == kind_rpp) then
+        call out%add_link(name, joints, (dy%ang(2) + dy%geom%slot_angle) * rad_to_deg, link_label(deck, dy%on(2)))
+      else if (i == link_b(d) .and. (kind == kind_rrp .or. kind == kind_prp .or. kind == kind_rpp)) then
+        ! the block sits on the guide (pair 3) first
+        call out%add_link(name, [joints(2), joints(1), joints(3:)], dy%ang(2) * rad_to_deg, link_label(deck, dy%on(2)))
+      else
+        call out%add_link(name, joints)
+      end if
+    end associate
+  end subroutine add_sketch_link
+
+  !> The name of link `i` (internal index) in phi<name>, omega<name>, eps<name>: its number;
+  !> "L1" for a link numbered 1 that is not the crank (`phi1` is the input angle, the crank's);
+  !> "" for the frame.
+  pure function link_label(deck, i) result(label)
+    type(assur_deck_t), intent(in) :: deck
+    integer, intent(in) :: i
+    character(len=:), allocatable :: label
+    label = ""
+    if (i > 0) label = int_str(deck%mech%links(i)%id)
+    if (i > 1 .and. label == "1") label = "L1"
+  end function link_label
+
   !> Every step into the step table, with the INPUT DATA echo and the self-check.
   subroutine solve(self, table, error)
     class(assur_mechanism_t), intent(in) :: self
     type(step_table_t), intent(inout) :: table
     type(error_t), allocatable, intent(out) :: error
     type(assur_step_t), allocatable :: steps(:)
+    type(friction_step_t), allocatable :: fsteps(:)
     character(len=24), allocatable :: names(:)
     integer :: k, c, ip
-    allocate (steps(0)) ! defined before the call (gcc's -Wmaybe-uninitialized on the descriptor)
-    call assur_solve(table%deck, self%deck, steps, error)
+    allocate (steps(0), fsteps(0)) ! defined before the call (gcc's -Wmaybe-uninitialized on the descriptor)
+    call assur_solve(table%deck, self%deck, steps, error, fsteps)
     if (allocated(error)) return
     allocate (names(0))
     names = assur_csv_columns(self%deck)
@@ -97,13 +205,44 @@ contains
         c = c + 2
       end if
     end do
-    call table%add_column("M1", "N*m", col_moment)
+    if (self%deck%mech%drive_dyad == 0) then
+      call table%add_column("M1", "N*m", col_moment)
+    else
+      call table%add_column("F_drive", "N", col_component)
+      call table%add_column("stroke", "m", col_length)
+      call table%add_column("stroke_v", "m/s", col_other)
+      call table%add_column("stroke_a", "m/s^2", col_other)
+    end if
+    if (self%deck%friction_on) then
+      names = friction_csv_columns(self%deck)
+      if (self%deck%mech%drive_dyad == 0) then
+        call table%add_column(trim(names(1)), "N*m", col_moment)
+      else
+        call table%add_column(trim(names(1)), "N", col_component)
+      end if
+      do c = 2, size(names) - 2
+        call table%add_column(trim(names(c)), "W", col_other)
+      end do
+      call table%add_column(trim(names(size(names) - 1)), "", col_flag)
+      call table%add_column(trim(names(size(names))), "", col_ratio)
+    end if
     table%input_column = 1
     call table%allocate_rows(size(steps))
     do k = 1, size(steps)
-      table%rows(:, k) = assur_csv_values(self%deck, steps(k))
+      if (self%deck%friction_on) then
+        table%rows(:, k) = [assur_csv_values(self%deck, steps(k)), friction_csv_values(self%deck, steps(k), fsteps(k))]
+      else
+        table%rows(:, k) = assur_csv_values(self%deck, steps(k))
+      end if
     end do
-    call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "M1")
+    do k = 1, size(steps)
+      call put_kinematics(table, k, self%deck, steps(k))
+    end do
+    if (self%deck%mech%drive_dyad == 0) then
+      call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "M1")
+    else
+      call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "F_drive")
+    end if
     do k = 1, size(self%deck%f_mag, 1)
       call table%note_load(self%deck%f_mag(k, :))
     end do
@@ -112,7 +251,123 @@ contains
     end do
     if (len_trim(self%deck%title) > 0) table%subtitle = trim(self%deck%title)
     call echo_deck(self%deck, table)
+    if (self%deck%friction_on) then
+      table%residual_label = "MAX EQUILIBRIUM RESIDUAL WITH FRICTION LOADS"
+      table%mismatch_label = "MAX "//table%driver//" MISMATCH, POWER BALANCE WITH FRICTION"
+      call friction_summary(self%deck, steps, fsteps, table)
+    end if
   end subroutine solve
+
+  !> Friction columns after M1: M1_0 (M1 without friction), P_loss_<pair> for every pair with
+  !> friction, P_loss, eta_defined, eta.
+  pure function friction_csv_columns(deck) result(cols)
+    !> Validated deck.
+    type(assur_deck_t), intent(in) :: deck
+    character(len=24), allocatable :: cols(:)
+    integer :: ip
+    if (deck%mech%drive_dyad > 0) then
+      cols = [character(len=24) :: "F_drive_0"]
+    else
+      cols = [character(len=24) :: "M1_0"]
+    end if
+    do ip = 1, size(deck%friction)
+      if (deck%friction(ip)%f > 0.0_wp) cols = [character(len=24) :: cols, "P_loss_"//trim(deck%pair_name(ip))]
+    end do
+    cols = [character(len=24) :: cols, "P_loss", "eta_defined", "eta"]
+  end function friction_csv_columns
+
+  !> The friction values of one step, in the order of friction_csv_columns. The instantaneous
+  !> efficiency eta = 1 - R/(M1*s) (R: loss per radian of the input, s: its motion sign) is
+  !> defined where the driver delivers power (M1*s > 0; at rest: virtual power); elsewhere
+  !> eta_defined = 0 and eta = 0.
+  pure function friction_csv_values(deck, s, fs) result(v)
+    !> Validated deck.
+    type(assur_deck_t), intent(in) :: deck
+    !> One step with friction.
+    type(assur_step_t), intent(in) :: s
+    !> Its friction results.
+    type(friction_step_t), intent(in) :: fs
+    real(wp), allocatable :: v(:)
+    real(wp) :: driver, mfloor, eta
+    integer :: ip
+    ! M1_0 below the roundoff floor of M1 (see assur_csv_values) is 0, as M1 would be
+    mfloor = 0.0_wp
+    do ip = 1, size(s%f, 2)
+      mfloor = max(mfloor, magnitude(s%f(:, ip)))
+    end do
+    mfloor = noise_rel * mfloor * crank_length(deck)
+    v = [fs%driver_frictionless]
+    if (deck%mech%drive_dyad > 0) then
+      if (abs(v(1)) <= noise_rel * max(mfloor / crank_length(deck), abs(s%f_drive))) v(1) = 0.0_wp
+    else if (abs(v(1)) <= mfloor) then
+      v(1) = 0.0_wp
+    end if
+    do ip = 1, size(deck%friction)
+      if (deck%friction(ip)%f > 0.0_wp) v = [v, fs%loss(ip)]
+    end do
+    driver = fs%driver_rate * fs%motion_sign
+    if (driver > 0.0_wp) then
+      eta = 1.0_wp - fs%rate_total / driver
+      if (abs(eta) <= eta_roundoff) eta = 0.0_wp
+      v = [v, fs%p_loss, 1.0_wp, eta]
+    else
+      v = [v, fs%p_loss, 0.0_wp, 0.0_wp]
+    end if
+    v = clean_zero(v)
+  end function friction_csv_values
+
+  !> Work of the driver and work lost to friction over the run, J: trapezoidal sums over the
+  !> steps of M1*s and of the loss per radian R against |d phi1|.
+  pure subroutine friction_work(deck, steps, fsteps, a_driver, a_loss)
+    !> Validated deck.
+    type(assur_deck_t), intent(in) :: deck
+    !> The steps with friction.
+    type(assur_step_t), intent(in) :: steps(:)
+    !> Their friction results.
+    type(friction_step_t), intent(in) :: fsteps(:)
+    !> Work of the driver, J.
+    real(wp), intent(out) :: a_driver
+    !> Work lost to friction, J.
+    real(wp), intent(out) :: a_loss
+    real(wp) :: dphi
+    integer :: k
+    a_driver = 0.0_wp
+    a_loss = 0.0_wp
+    do k = 1, size(steps) - 1
+      dphi = abs(deck%phi1_deg(k + 1) - deck%phi1_deg(k)) * deg_to_rad
+      a_driver = a_driver + 0.5_wp * dphi * (fsteps(k)%driver_rate * fsteps(k)%motion_sign + &
+                                             fsteps(k + 1)%driver_rate * fsteps(k + 1)%motion_sign)
+      a_loss = a_loss + 0.5_wp * dphi * (fsteps(k)%rate_total + fsteps(k + 1)%rate_total)
+    end do
+  end subroutine friction_work
+
+  !> The summary block of a run with friction: works, cycle efficiency and what it means.
+  pure subroutine friction_summary(deck, steps, fsteps, table)
+    type(assur_deck_t), intent(in) :: deck
+    type(assur_step_t), intent(in) :: steps(:)
+    type(friction_step_t), intent(in) :: fsteps(:)
+    type(step_table_t), intent(inout) :: table
+    real(wp) :: a_driver, a_loss, span, eta
+    call friction_work(deck, steps, fsteps, a_driver, a_loss)
+    span = abs(deck%phi1_deg(size(deck%phi1_deg)) - deck%phi1_deg(1))
+    table%summary_heading = "WORK AND EFFICIENCY WITH FRICTION"
+    call table%summary_real("RUN SPAN", span, "deg")
+    call table%summary_real("A_DRIVER", clean_zero(a_driver), "J")
+    call table%summary_real("A_LOSS", clean_zero(a_loss), "J")
+    if (a_driver > 0.0_wp) then
+      eta = 1.0_wp - a_loss / a_driver
+      if (abs(eta) <= eta_roundoff) eta = 0.0_wp
+      call table%summary_real("ETA", eta, "")
+      if (span >= 360.0_wp - whole_turn_tol) then
+        call table%summary_line("ETA = 1 - A_LOSS/A_DRIVER OVER A WHOLE TURN OF THE INPUT: THE CYCLE EFFICIENCY")
+      else
+        call table%summary_line("ETA = 1 - A_LOSS/A_DRIVER OVER LESS THAN A WHOLE TURN: NOT THE CYCLE EFFICIENCY")
+        call table%summary_line("(THE DRIVER'S WORK ALSO CHANGES THE KINETIC AND POTENTIAL ENERGY)")
+      end if
+    else
+      call table%summary_line("ETA NOT DEFINED: THE DRIVER DELIVERS NO NET WORK OVER THE RUN")
+    end if
+  end subroutine friction_summary
 
   !> Whether result pair `ip` (dyad pairs then crank pin) is prismatic.
   pure logical function assur_pair_prismatic(deck, ip)
@@ -130,22 +385,32 @@ contains
   end function assur_pair_prismatic
 
   !> All steps of a validated deck; a geometry error names the step and the input angle.
-  pure subroutine assur_solve(path, deck, steps, error)
+  pure subroutine assur_solve(path, deck, steps, error, fsteps)
     !> Deck file (for messages).
     character(*), intent(in) :: path
     !> Validated deck.
     type(assur_deck_t), intent(in) :: deck
     !> One result per step.
     type(assur_step_t), allocatable, intent(out) :: steps(:)
-    !> Geometry error.
+    !> Geometry error (also: friction does not converge, self-locking).
     type(error_t), allocatable, intent(out) :: error
+    !> Friction results per step (deck%friction_on; else none).
+    type(friction_step_t), allocatable, intent(out), optional :: fsteps(:)
     type(error_t), allocatable :: step_error
+    type(friction_step_t) :: fs
     character(len=32) :: angle_text
     integer :: k
     allocate (steps(deck%n))
+    if (present(fsteps)) allocate (fsteps(merge(deck%n, 0, deck%friction_on)))
     do k = 1, deck%n
-      call assur_step(deck%mech, deck%phi1_deg(k) * deg_to_rad, deck%omega1(k), deck%eps1(k), &
-                      deck%f_mag(:, k), deck%m_mag(:, k), steps(k), step_error)
+      if (deck%friction_on) then
+        call assur_friction_step(deck%mech, deck%friction, deck%phi1_deg(k) * deg_to_rad, deck%omega1(k), &
+          deck%eps1(k), deck%motion_sign(k), deck%f_mag(:, k), deck%m_mag(:, k), steps(k), fs, step_error)
+        if (present(fsteps)) fsteps(k) = fs
+      else
+        call assur_step(deck%mech, deck%phi1_deg(k) * deg_to_rad, deck%omega1(k), deck%eps1(k), &
+                        deck%f_mag(:, k), deck%m_mag(:, k), steps(k), step_error)
+      end if
       if (allocated(step_error)) then
         write (angle_text, '(g0.10)') deck%phi1_deg(k)
         call fatal_error(error, exit_geometry, path//": &assur: step "//int_str(k)//" (phi1 = "// &
@@ -155,7 +420,8 @@ contains
     end do
   end subroutine assur_solve
 
-  !> CSV column names: phi1; per pair F, FG, [Fx, Fy], [FN, FM for prismatic pairs]; M1.
+  !> CSV column names: phi1; per pair F, FG, [Fx, Fy], [FN, FM for prismatic pairs]; M1, or
+  !> with a linear actuator as driver F_drive, stroke, stroke_v, stroke_a.
   pure function assur_csv_columns(deck) result(cols)
     !> Validated deck.
     type(assur_deck_t), intent(in) :: deck
@@ -169,7 +435,11 @@ contains
       if (assur_pair_prismatic(deck, ip)) cols = [character(len=24) :: cols, trim(deck%pair_name(ip))//"N", &
                                                   trim(deck%pair_name(ip))//"M"]
     end do
-    cols = [character(len=24) :: cols, "M1"]
+    if (deck%mech%drive_dyad == 0) then
+      cols = [character(len=24) :: cols, "M1"]
+    else
+      cols = [character(len=24) :: cols, "F_drive", "stroke", "stroke_v", "stroke_a"]
+    end if
   end function assur_csv_columns
 
   !> The CSV row of one step, in the order of assur_csv_columns. Forces below `noise_rel`
@@ -185,7 +455,7 @@ contains
     real(wp) :: floor, f(2), mfloor, nn, mm
     integer :: ip, np, pos
     np = size(s%f, 2)
-    allocate (v(1 + 6 * np + 1))
+    allocate (v(1 + 6 * np + 4))
     floor = 0.0_wp
     do ip = 1, np
       floor = max(floor, magnitude(s%f(:, ip)))
@@ -217,10 +487,128 @@ contains
         pos = pos + 2
       end if
     end do
-    v(pos + 1) = s%m1
-    if (abs(v(pos + 1)) <= mfloor) v(pos + 1) = 0.0_wp
-    v = clean_zero(v(1:pos + 1))
+    if (deck%mech%drive_dyad == 0) then
+      v(pos + 1) = s%m1
+      if (abs(v(pos + 1)) <= mfloor) v(pos + 1) = 0.0_wp
+      v = clean_zero(v(1:pos + 1))
+    else
+      v(pos + 1:pos + 4) = [s%f_drive, s%stroke, s%stroke_v, s%stroke_a]
+      if (abs(v(pos + 1)) <= floor) v(pos + 1) = 0.0_wp
+      v = clean_zero(v(1:pos + 4))
+    end if
   end function assur_csv_values
+
+  !> The kinematics columns of step `k`, in the deck's global frame: the reference point
+  !> J<pair> of every pair (x_J21 for the pair of F21: the pin of a revolute pair, the
+  !> slider's reference point of a prismatic pair; the crank's pair with the frame is the
+  !> pivot), the centre of mass S<id> of every moving link and its acceleration, the angle
+  !> (of the link's x axis), angular velocity and acceleration of every moving link (named
+  !> by link_label), and the components of every pair force as the F<pair>x, F<pair>y columns
+  !> give them.
+  pure subroutine put_kinematics(table, k, deck, s)
+    !> The step table (columns appended on first use).
+    type(step_table_t), intent(inout) :: table
+    !> Row.
+    integer, intent(in) :: k
+    !> Validated deck.
+    type(assur_deck_t), intent(in) :: deck
+    !> The computed step.
+    type(assur_step_t), intent(in) :: s
+    type(link_state_t) :: states(0:2 * size(deck%mech%dyads) + 1)
+    type(dyad_pose_t) :: poses(size(deck%mech%dyads))
+    type(point_state_t) :: ps
+    type(error_t), allocatable :: error
+    real(wp) :: w2, floor, f(2)
+    integer :: i, ip, d, np
+    call assur_kinematics(deck%mech, s%phi1, states, poses, error)
+    if (allocated(error)) return ! cannot happen: the step was solved at this angle
+    w2 = s%omega1**2
+    np = size(s%f, 2)
+    do ip = 1, np
+      d = (ip - 1) / 3 + 1
+      if (ip == np) then
+        call table%put_point(k, joint_name(deck%pair_name(ip)), deck%mech%pivot)
+      else
+        call table%put_point(k, joint_name(deck%pair_name(ip)), poses(d)%p(:, ip - 3 * (d - 1)))
+      end if
+    end do
+    do i = 1, ubound(states, 1)
+      ps = point_on(states(i), deck%mech%links(i)%s)
+      call table%put_point(k, "S"//int_str(deck%mech%links(i)%id), ps%p)
+    end do
+    do i = 1, ubound(states, 1)
+      call table%put_link(k, link_label(deck, i), states(i)%th, states(i)%u * s%omega1, &
+                          states(i)%eq * w2 + states(i)%u * s%eps1)
+    end do
+    do i = 1, ubound(states, 1)
+      ps = point_on(states(i), deck%mech%links(i)%s)
+      call table%put_acceleration(k, "S"//int_str(deck%mech%links(i)%id), ps%a * w2 + ps%v * s%eps1)
+    end do
+    floor = 0.0_wp
+    do ip = 1, np
+      floor = max(floor, magnitude(s%f(:, ip)))
+    end do
+    floor = noise_rel * floor
+    do ip = 1, np
+      f = rotate(snap_noise(deck%pair_sign(ip) * s%f(:, ip), floor), -deck%pair_frame(ip))
+      call table%put_components(k, trim(deck%pair_name(ip)), force_components(f, floor), &
+                                deck%pair_frame(ip) * rad_to_deg)
+    end do
+  end subroutine put_kinematics
+
+  !> The forces of row `k` on its drawing (--format svg --at K): every pair force at its
+  !> pair's point J<pair>, the deck's external forces (Q<i>, at their points) and moments
+  !> (MQ<i>, at the link's centre of mass), the weights, inertia forces and moments of the
+  !> moving links, and M1 at the crank's pivot.
+  pure subroutine force_plan(self, table, k, drawing, error)
+    class(assur_mechanism_t), intent(in) :: self
+    type(step_table_t), intent(in) :: table
+    integer, intent(in) :: k
+    type(drawing_t), intent(inout) :: drawing
+    type(error_t), allocatable, intent(out) :: error
+    type(link_state_t) :: states(0:2 * size(self%deck%mech%dyads) + 1)
+    type(dyad_pose_t) :: poses(size(self%deck%mech%dyads))
+    type(point_state_t) :: ps
+    real(wp) :: dir
+    integer :: ip, i
+    associate (mech => self%deck%mech, deck => self%deck)
+      call assur_kinematics(mech, deck%phi1_deg(k) * deg_to_rad, states, poses, error)
+      if (allocated(error)) return
+      do ip = 1, size(deck%pair_name)
+        call drawing%pair_from_table(table, k, trim(deck%pair_name(ip)), joint_name(deck%pair_name(ip)), error)
+        if (allocated(error)) return
+      end do
+      do i = 1, size(mech%forces)
+        associate (f => mech%forces(i))
+          ps = point_on(states(f%link), f%at)
+          dir = f%angle
+          if (f%follow) dir = dir + states(f%link)%th
+          call drawing%add_force("Q"//int_str(i), force_load, ps%p, deck%f_mag(i, k) * [cos(dir), sin(dir)])
+        end associate
+      end do
+      do i = 1, size(mech%moment_link)
+        call drawing%add_moment("MQ"//int_str(i), force_load, drawing%at("S"//int_str(mech%links(mech%moment_link(i))%id)), &
+          deck%m_mag(i, k))
+      end do
+      do i = 1, ubound(states, 1)
+        associate (l => mech%links(i))
+          call drawing%add_link_loads(table, k, int_str(l%id), "S"//int_str(l%id), "S"//int_str(l%id), l%m, l%j, &
+            mech%g * mech%down)
+        end associate
+      end do
+      ! the balancing moment on the crank (a deck driven otherwise has no M1 column)
+      i = table%column_index("M1")
+      if (i > 0) call drawing%add_moment("M1", force_load, &
+        drawing%at(joint_name(deck%pair_name(crank_pin_index(size(mech%dyads))))), table%rows(i, k))
+    end associate
+  end subroutine force_plan
+
+  !> The joint of a pair: "J21" for the pair of F21.
+  pure function joint_name(pair_name) result(name)
+    character(*), intent(in) :: pair_name
+    character(len=:), allocatable :: name
+    name = "J"//trim(pair_name(2:))
+  end function joint_name
 
   !> Length scale of the crank: its farthest attachment point from the pivot (1 m if none).
   pure real(wp) function crank_length(deck)
@@ -250,13 +638,21 @@ contains
     type(step_table_t), intent(inout) :: table
     character(len=160) :: line
     integer :: k, d
+    if (deck%global) then
+      call table%echo_text("COORDINATES", "global (echoed below as derived link coordinates)")
+      call table%echo_real("PHI_REF", deck%phi_ref, "deg")
+    end if
     call table%echo_int("FRAME_ID", deck%frame_id, "")
     call table%echo_int("CRANK_ID", deck%crank_id, "")
     call table%echo_array("CRANK_AT", deck%mech%pivot, "m")
     call table%echo_real("CRANK_M", deck%mech%links(1)%m, "kg")
     call table%echo_real("CRANK_J", deck%mech%links(1)%j, "kg*m^2")
     call table%echo_array("CRANK_S", deck%mech%links(1)%s, "m")
-    if (deck%prescribed) then
+    if (deck%friction_on) call echo_friction(deck, size(deck%friction), "CRANK_", "", table)
+    if (allocated(deck%phi_list) .and. .not. deck%prescribed) then
+      call table%echo_real("OMEGA1", deck%omega1_const, "rad/s")
+      call table%echo_array("OMEGA1_STEP", deck%omega1, "rad/s")
+    else if (deck%prescribed) then
       call table%echo_array("OMEGA1_STEP", deck%omega1, "rad/s")
       call table%echo_array("EPS1_STEP", deck%eps1, "rad/s^2")
     else
@@ -264,11 +660,23 @@ contains
     end if
     call table%echo_real("G", deck%mech%g, "m/s^2")
     call table%echo_real("GRAVITY_ANGLE", deck%gravity_angle, "deg")
-    call table%echo_real("PHI_START", deck%phi_start, "deg")
-    call table%echo_real("DPHI", deck%dphi, "deg")
+    if (allocated(deck%phi_list)) then
+      call table%echo_array("PHI1", deck%phi_list, "deg")
+    else
+      if (deck%start_extreme) then
+        call table%echo_text("START_AT", "extreme")
+        call table%echo_int("OUTPUT_LINK", deck%mech%links(deck%mech%output_link)%id, "")
+      end if
+      call table%echo_real("PHI_START", deck%phi_start, "deg")
+      call table%echo_real("DPHI", deck%dphi, "deg")
+    end if
     call table%echo_int("N", deck%n, "steps")
     call table%echo_logical("ANGLES_SIGNED", deck%angles_signed, "")
     call table%echo_logical("COMPONENTS", deck%components, "")
+    if (deck%mech%drive_dyad > 0) then
+      call table%echo_int("DRIVE_DYAD", deck%mech%drive_dyad, "")
+      call table%echo_int("DRIVE_PAIR", deck%mech%drive_pair, "")
+    end if
     do d = 1, size(deck%mech%dyads)
       associate (dy => deck%mech%dyads(d), lk => deck%mech%links)
         write (line, dyad_echo_fmt) d, kind_names(dy%geom%kind), lk(2 * d)%id, lk(2 * d + 1)%id, &
@@ -291,6 +699,11 @@ contains
         call table%echo_array("S3", lk(2 * d + 1)%s, "m")
         call table%echo_real("FRAME_ANGLE", deck%pair_frame(3 * d) * rad_to_deg, "deg")
         call table%echo_int("INNER_ON", lk(merge(2 * d + 1, 2 * d, deck%pair_sign(3 * d - 1) < 0.0_wp))%id, "")
+        if (deck%friction_on) then
+          call echo_friction(deck, 3 * d - 2, "", "2", table)
+          call echo_friction(deck, 3 * d - 1, "", "23", table)
+          call echo_friction(deck, 3 * d, "", "3", table)
+        end if
       end associate
     end do
     do k = 1, size(deck%mech%forces)
@@ -308,8 +721,82 @@ contains
     end do
   end subroutine echo_deck
 
+  !> INPUT DATA lines of the friction of result pair `ip`: F, and R (turning pair) or
+  !> CONTACT_SPAN (sliding pair; 0: resultant-normal model), named prefix//name//suffix.
+  pure subroutine echo_friction(deck, ip, prefix, suffix, table)
+    type(assur_deck_t), intent(in) :: deck
+    integer, intent(in) :: ip
+    character(*), intent(in) :: prefix, suffix
+    type(step_table_t), intent(inout) :: table
+    call table%echo_real(prefix//"F"//suffix, deck%friction(ip)%f, "")
+    if (assur_pair_prismatic(deck, ip)) then
+      call table%echo_real(prefix//"CONTACT_SPAN"//suffix, deck%friction(ip)%span, "m")
+    else
+      call table%echo_real(prefix//"R"//suffix, deck%friction(ip)%r, "m")
+    end if
+  end subroutine echo_friction
+
+  !> The friction block of RESULTS: per step the crank angle, the power loss of every pair
+  !> with friction, P_loss, M1 without friction and the instantaneous efficiency (blank where
+  !> the driver delivers no power).
+  pure subroutine write_friction_results(deck, table, lang, out)
+    type(assur_deck_t), intent(in) :: deck
+    type(step_table_t), intent(in) :: table
+    integer, intent(in) :: lang
+    type(text_buffer_t), intent(inout) :: out
+    character(len=:), allocatable :: line1, line2, watt, unit, deg, driver, zero
+    integer :: k, c, first, last
+    if (deck%mech%drive_dyad > 0) then
+      driver = "F_DRIVE"
+      zero = "F_drive_0"
+    else
+      driver = "M1"
+      zero = "M1_0"
+    end if
+    call out%put("")
+    if (lang == lang_ru) then
+      call out%put(" ТРЕНИЕ: ПОТЕРИ МОЩНОСТИ В ПАРАХ, "//driver// &
+                   " БЕЗ ТРЕНИЯ, МГНОВЕННЫЙ КПД")
+      watt = "Вт"
+      unit = "Н"
+      if (deck%mech%drive_dyad == 0) unit = "Н*м"
+      deg = "град"
+    else
+      call out%put(" FRICTION: POWER LOSS IN THE PAIRS, "//driver//" WITHOUT FRICTION, INSTANTANEOUS EFFICIENCY")
+      watt = "W"
+      unit = "N"
+      if (deck%mech%drive_dyad == 0) unit = "N*m"
+      deg = "deg"
+    end if
+    first = table%column_index(zero)
+    last = table%column_index("eta")
+    line1 = adjustr(pad9("PHI1"))
+    line2 = right(deg, phi_width)
+    do c = first + 1, last - 3
+      line1 = line1//right("P_"//table%columns(c)%name(8:), field_width)
+      line2 = line2//right(watt, field_width)
+    end do
+    line1 = line1//right("P_LOSS", field_width)//right(upper(zero), field_width)//right("ETA", field_width)
+    line2 = line2//right(watt, field_width)//right(unit, field_width)
+    call out%put(line1)
+    call out%put(trim(line2))
+    do k = 1, table%row_count()
+      associate (v => table%rows(:, k))
+        line1 = fixed_field(v(1), phi_width, 2)
+        do c = first + 1, last - 2
+          line1 = line1//fixed_field(v(c), field_width, 2)
+        end do
+        line1 = line1//fixed_field(v(first), field_width, 2)
+        if (v(last - 1) > 0.0_wp) line1 = line1//fixed_field(v(last), field_width, 4)
+        call out%put(line1)
+      end associate
+    end do
+  end subroutine write_friction_results
+
   !> RESULTS: per step the crank angle, every pair's magnitude and M1; under them the angles;
-  !> for prismatic pairs two more lines with the normal force and the reaction moment.
+  !> for prismatic pairs two more lines with the normal force and the reaction moment. With a
+  !> linear actuator as driver the last column holds F_drive, stroke, stroke speed and
+  !> acceleration (lines 1-4) instead of M1.
   pure subroutine write_results(self, table, lang, out)
     class(assur_mechanism_t), intent(in) :: self
     type(step_table_t), intent(in) :: table
@@ -318,11 +805,12 @@ contains
     character(len=:), allocatable :: line1, line2, line3, line4
     character(len=field_width) :: name
     character(len=len(self%deck%pair_name)) :: full_name
-    character(len=:), allocatable :: deg, newton, newton_m
+    character(len=:), allocatable :: deg, newton, newton_m, metre
     real(wp) :: mag, ang, nn, mm
     integer :: k, ip, np, pos
-    logical :: any_p, prismatic
+    logical :: any_p, prismatic, drive
 
+    drive = self%deck%mech%drive_dyad > 0
     np = size(self%deck%pair_name)
     any_p = .false.
     do ip = 1, np
@@ -332,10 +820,12 @@ contains
       deg = "град"
       newton = "Н"
       newton_m = "Н*м"
+      metre = "м"
     else
       deg = "deg"
       newton = "N"
       newton_m = "N*m"
+      metre = "m"
     end if
     line1 = adjustr(pad9("PHI1"))
     line2 = repeat(" ", phi_width)
@@ -350,11 +840,19 @@ contains
       line3 = line3//p_label(name, "N", prismatic)
       line4 = line4//p_label(name, "M", prismatic)
     end do
-    call out%put(trim(line1//adjustr(pad12("M1"))))
-    call out%put(trim(line2))
-    if (any_p) then
-      call out%put(line3)
-      call out%put(line4)
+    if (drive) then
+      ! the actuator's force, stroke, stroke speed and acceleration in the last column
+      call out%put(trim(line1//adjustr(pad12("F_DRIVE"))))
+      call out%put(trim(line2//adjustr(pad12("STROKE"))))
+      call out%put(line3//adjustr(pad12("STROKE_V")))
+      call out%put(line4//adjustr(pad12("STROKE_A")))
+    else
+      call out%put(trim(line1//adjustr(pad12("M1"))))
+      call out%put(trim(line2))
+      if (any_p) then
+        call out%put(line3)
+        call out%put(line4)
+      end if
     end if
     line1 = right(deg, phi_width)
     line2 = repeat(" ", phi_width)
@@ -362,8 +860,13 @@ contains
       line1 = line1//right(newton, field_width)
       line2 = line2//right(deg, field_width)
     end do
-    call out%put(trim(line1//right(newton_m, field_width)))
-    call out%put(trim(line2))
+    if (drive) then
+      call out%put(trim(line1//right(newton, field_width)))
+      call out%put(trim(line2//right(metre, field_width)))
+    else
+      call out%put(trim(line1//right(newton_m, field_width)))
+      call out%put(trim(line2))
+    end if
     do k = 1, table%row_count()
       associate (v => table%rows(:, k))
         line1 = fixed_field(v(1), phi_width, 2)
@@ -389,14 +892,22 @@ contains
             line4 = line4//repeat(" ", field_width)
           end if
         end do
-        call out%put(line1//fixed_field(v(pos + 1), field_width, 2))
-        call out%put(line2)
-        if (any_p) then
-          call out%put(trim(line3))
-          call out%put(trim(line4))
+        if (drive) then
+          call out%put(line1//fixed_field(v(pos + 1), field_width, 2))
+          call out%put(line2//fixed_field(v(pos + 2), field_width, stroke_decimals))
+          call out%put(line3//fixed_field(v(pos + 3), field_width, stroke_decimals))
+          call out%put(line4//fixed_field(v(pos + 4), field_width, stroke_decimals))
+        else
+          call out%put(line1//fixed_field(v(pos + 1), field_width, 2))
+          call out%put(line2)
+          if (any_p) then
+            call out%put(trim(line3))
+            call out%put(trim(line4))
+          end if
         end if
       end associate
     end do
+    if (self%deck%friction_on) call write_friction_results(self%deck, table, lang, out)
   end subroutine write_results
 
   !> `text` right-justified in `width` display characters.

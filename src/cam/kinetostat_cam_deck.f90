@@ -6,7 +6,7 @@ module kinetostat_cam_deck
   use kinetostat_text, only: real_str, int_str, lower
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, max_deck_array, &
-    deck_source_t, namelist_failure, deck_error, is_set, require_set, require_positive, &
+    deck_source_t, namelist_probe_t, require_all_set, deck_error, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn
   use kinetostat_cam, only: cam_params_t
   implicit none
@@ -97,6 +97,7 @@ contains
     integer :: ios, k
     character(len=512) :: msg
     type(deck_context_t) :: ctx
+    type(namelist_probe_t) :: probe
     namelist /cam/ follower, l, l_over, f, f_cam, omega_dir, phi_start, dphi, n, theta, f2, vdir, ds_dphi
 
     ctx%path = source%path
@@ -110,7 +111,13 @@ contains
 
     read (source%lines, nml=cam, iostat=ios, iomsg=msg)
     if (ios /= 0) then
-      call namelist_failure(ctx, ios, msg, error)
+      ! find the line and the assignment that failed (gfortran's message does not say)
+      call probe%start(source, ios, msg)
+      do while (probe%more(source))
+        read (probe%lines, nml=cam, iostat=ios, iomsg=msg)
+        call probe%take(ios, msg)
+      end do
+      call probe%report(source, ctx, error)
       return
     end if
 
@@ -123,6 +130,11 @@ contains
       call deck_error(ctx, "follower", "must be 'translating' or 'flat' (got '"//trim(follower)//"')", error)
       return
     end select
+
+    ! every missing required variable in one message
+    call require_all_set(ctx, [character(len=6) :: "l", "l_over", "f", "dphi"], &
+      [l, l_over, f, dphi], error)
+    if (allocated(error)) return
 
     ! guide
     call require_positive(ctx, "l", l, error); if (allocated(error)) return

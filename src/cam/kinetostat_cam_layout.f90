@@ -6,6 +6,7 @@ module kinetostat_cam_layout
   use kinetostat_error, only: error_t
   use kinetostat_text, only: int_str, number_str
   use kinetostat_vec2, only: magnitude, angle_360_deg
+  use kinetostat_noise, only: noise_floor, force_components
   use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_component, &
     col_length, col_flag, col_ratio, col_other
   use kinetostat_format, only: fixed_field, int_field
@@ -22,6 +23,8 @@ module kinetostat_cam_layout
   character(*), parameter :: cam_csv_columns(*) = [character(len=5) :: &
     "phi", "theta", "xB", "F2", "vdir", "N", "F21", "F21G", "F23C", "F23CG", "F23D", "F23DG", &
     "KF", "KF2", "JAM", "LOST"]
+  !> Forces with an angle column, in the order of the CSV columns.
+  character(*), parameter :: force_names(*) = [character(len=4) :: "F21", "F23C", "F23D"]
   !> Units of the columns.
   character(*), parameter :: column_units(*) = [character(len=3) :: &
     "deg", "deg", "m", "N", "", "N", "N", "deg", "N", "deg", "N", "deg", "", "", "", ""]
@@ -105,6 +108,9 @@ contains
     do k = 1, size(steps)
       table%rows(:, k) = cam_csv_values(self%deck, steps(k), k)
     end do
+    do k = 1, size(steps)
+      call put_kinematics(table, k, self%deck, steps(k))
+    end do
     call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "N")
     table%residual_label = "MAX EQUILIBRIUM RESIDUAL OF THE FOLLOWER, ALL STEPS"
     table%mismatch_label = "MAX N MISMATCH, CLOSED FORM VS 3X3 LINEAR SOLVE"
@@ -169,6 +175,31 @@ contains
     v(15) = merge(1.0_wp, 0.0_wp, s%jammed)
     v(16) = merge(1.0_wp, 0.0_wp, s%lost)
   end function cam_csv_values
+
+  !> The kinematics columns of step `k` (frame: origin C, y along the follower's axis from C
+  !> to D): the contact point B and the guide ends C, D, and the components of the forces
+  !> F21, F23C, F23D. The deck gives no displacement law of the follower, so its position,
+  !> velocity and acceleration are not computed.
+  pure subroutine put_kinematics(table, k, deck, s)
+    !> The step table (columns appended on first use).
+    type(step_table_t), intent(inout) :: table
+    !> Row.
+    integer, intent(in) :: k
+    !> Validated deck.
+    type(cam_deck_t), intent(in) :: deck
+    !> The computed step.
+    type(cam_step_t), intent(in) :: s
+    real(wp) :: f(2, 3), floor
+    integer :: j
+    call table%put_point(k, "B", [deck%x_b(k), -deck%p%a])
+    call table%put_point(k, "C", [0.0_wp, 0.0_wp])
+    call table%put_point(k, "D", [0.0_wp, deck%p%l])
+    f = reshape([s%f21, s%f23c, s%f23d], [2, 3])
+    floor = noise_floor(f, [real(wp) ::])
+    do j = 1, size(force_names)
+      call table%put_components(k, trim(force_names(j)), force_components(f(:, j), floor), 0.0_wp)
+    end do
+  end subroutine put_kinematics
 
   !> The INPUT DATA echo of the deck.
   pure subroutine echo_deck(deck, table)

@@ -2,44 +2,48 @@
 !> (stdout or an atomically replaced file), and the only place where an error becomes a
 !> `kinetostat: error: ...` line on stderr and an exit code.
 module kinetostat_cli
-  use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
-  use kinetostat_kinds, only: version_string
+  use, intrinsic :: iso_fortran_env, only: error_unit
+  use kinetostat_kinds, only: wp, version_string
   use kinetostat_error, only: error_t, fatal_error, exit_success, exit_usage, exit_input, exit_warning
-  use kinetostat_text, only: int_str
-  use kinetostat_posix, only: path_kind, path_special, rename_file, process_id, write_standard_output
   use kinetostat_deck, only: deck_source_t, load_deck, read_group_name
   use kinetostat_override, only: override_t, parse_override, apply_overrides
   use kinetostat_sweep, only: vary_t, parse_vary, run_sweep, variant_result_t
   use kinetostat_posix, only: stderr_is_terminal
+  use kinetostat_text, only: int_str
   use kinetostat_run, only: format_summary
   use kinetostat_step_table, only: step_table_t
   use kinetostat_text_buffer, only: text_buffer_t
+  use kinetostat_output, only: write_output_file, write_output_stdout
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_labels, only: lang_from_name
-  use kinetostat_run, only: run_options_t, run_mechanism, format_from_name, format_names
+  use kinetostat_run, only: run_options_t, run_mechanism, format_from_name, format_names, format_svg
   use kinetostat_table_writer, only: selfcheck_verdict
-  use kinetostat_registry, only: create_mechanism, known_kinds
+  use kinetostat_registry, only: create_mechanism, known_kinds, known_columns
+  use kinetostat_step_table, only: column_t
+  use kinetostat_diff, only: diff_options_t, diff_outputs
   implicit none
   private
   public :: run_cli
 
   !> One-line usage, printed with usage errors.
   character(*), parameter :: usage_line = "usage: kinetostat DECK|- [--set NAME=VALUE]... [-o FILE] " // &
-    "[--format table|csv|json|summary] [--lang en|ru] [--quiet] [--strict] | kinetostat sweep DECK " // &
-    "--vary NAME=FROM:TO:COUNT... [--part K/N] | kinetostat template KIND | --help | --version"
+    "[--format table|csv|json|svg|summary] [--pairs LIST] [--at K] [--lang en|ru] [--kinematics] [--quiet] " // &
+    "[--strict] | kinetostat sweep DECK --vary NAME=FROM:TO:COUNT... [--part K/N] | kinetostat template KIND | " // &
+    "--help | --version"
 
   !> Warning line when a run's self-check exceeds its tolerance.
   character(*), parameter :: selfcheck_warning_fmt = '(a,es9.2,a,es9.2)'
 
   !> Help text (the kinds are appended from the registry).
-  character(*), parameter :: help_lines(*) = [character(len=88) :: &
+  character(*), parameter :: help_lines(*) = [character(len=92) :: &
     "kinetostat - kinetostatic force analysis of planar mechanisms", &
     "", &
-    "  kinetostat DECK [--set NAME=VALUE]... [-o FILE] [--format table|csv|json|summary]", &
-    "                  [--lang en|ru] [--quiet] [--strict]", &
+    "  kinetostat DECK [--set NAME=VALUE]... [-o FILE] [--format table|csv|json|svg|summary]", &
+    "                  [--pairs LIST] [--at K] [--lang en|ru] [--kinematics] [--quiet] [--strict]", &
     "  kinetostat sweep DECK --vary NAME=FROM:TO:COUNT... [--set NAME=VALUE]... [--part K/N]", &
     "                  [-o FILE] [--quiet] [--strict]", &
     "  kinetostat template KIND      print a commented example deck", &
+    "  kinetostat diff A B [--rtol R] [--atol A] [--quiet]   compare two outputs", &
     "  kinetostat --help | --version", &
     "", &
     "DECK is a Fortran namelist file; its first group names the mechanism; - reads it", &
@@ -47,19 +51,37 @@ module kinetostat_cli
     "--set NAME=VALUE  set a deck variable as if the deck ended with NAME = VALUE", &
     "            (repeatable; l_ab=0.12, f5c(3)=0, 'dyad(2)%l2=0.45'); marked (--set)", &
     "-o FILE     write to FILE (atomically: nothing is left behind on error)", &
-    "--format    table (default, the legacy printout), csv (full precision), json, or", &
-    "            summary (a CSV header and one row: max, min, where, mean, work per column)", &
+    "--format    table (default, the legacy printout), csv (full precision), json, svg", &
+    "            (a sheet of force hodographs and diagrams; see docs/pictures.md), or summary", &
+    "            (a CSV header and one row: max, min, where, mean per column, work)", &
+    "--pairs     with svg: only these pair forces, e.g. --pairs F16,F36", &
+    "--at K      with svg: the mechanism drawn at step K with every force of the step", &
     "--lang      language of the table's labels: en (default) or ru (the 1991 printouts)", &
-    "--quiet     no warnings on stderr (errors are still reported)", &
+    "--kinematics  csv and json add positions of joints and centres of mass, link angles,", &
+    "            angular speeds and accelerations, accelerations of the centres of mass and", &
+    "            the x, y components of the pair forces (the table is unchanged)", &
+    "--quiet     no warnings on stderr (errors are still reported); diff: no report", &
     "sweep       one summary row per variant of the grid of every --vary (COUNT values", &
     "            from FROM to TO), the first --vary slowest; --part K/N runs block K of N", &
     "            (the parts' outputs concatenated in order are the whole sweep's)", &
     "--strict    a run that warns (self-check above its limit, a dead position between", &
     "            steps, a jammed cam or lost contact, a coarse step near a load edge)", &
     "            exits 4; the output is still written", &
+    "--name=VALUE is the same as --name VALUE.", &
+    "", &
+    "diff compares two tables (same --lang) or two CSV files of the program value by value:", &
+    "  |a - b| <= atol + rtol*max(|a|,|b|); angles modulo 360 deg with atol + rtol*(1 rad);", &
+    "  the angle of a force at or below the noise floor (1e-12 of its step's largest force,", &
+    "  or atol) is not compared; title and deck lines are ignored. Defaults: --rtol 1e-6,", &
+    "  --atol per unit: 1e-6 N, N*m, deg and mm, 1e-9 m and everything else.", &
+    "  Prints the first differences ('step 2, column F16: 2741.19 vs 2741.25 (rel 2.2e-05)')", &
+    "  and exits 0 same, 1 different, 2 unreadable or not the same mechanism/columns.", &
     "", &
     "Exit codes: 0 ok, 1 usage, 2 input or output error, 3 geometry error or a result", &
     "that is not finite (the step is named), 4 warnings with --strict (output written)."]
+
+  !> Usage of the diff subcommand (its errors exit 2: exit 1 means "different").
+  character(*), parameter :: diff_usage = "usage: kinetostat diff A B [--rtol R] [--atol A] [--quiet]"
 
   !> Parsed command line.
   type :: cli_args_t
@@ -82,6 +104,10 @@ module kinetostat_cli
     logical :: format_given = .false.
     logical :: help = .false.
     logical :: version = .false.
+    !> `kinetostat diff A B`: the two files.
+    character(len=:), allocatable :: diff_files(:)
+    !> Tolerances of `diff`.
+    type(diff_options_t) :: diff_options
   end type cli_args_t
 
 contains
@@ -100,6 +126,10 @@ contains
     ran = .false.
     warnings = 0
     call parse_args(args, error)
+    if (.not. allocated(error) .and. allocated(args%diff_files) .and. .not. args%help) then
+      call run_diff(args, exit_code)
+      return
+    end if
     if (.not. allocated(error)) then
       if (args%help) then
         do i = 1, size(help_lines)
@@ -123,9 +153,9 @@ contains
     end if
     if (.not. allocated(error)) then
       if (allocated(args%out_file)) then
-        call write_file(args%out_file, out, error)
+        call write_output_file(args%out_file, out, error)
       else
-        call write_stdout(out, error)
+        call write_output_stdout(out, error)
       end if
     end if
     if (ran .and. .not. allocated(error)) call warn(table, args%quiet, warnings)
@@ -390,7 +420,7 @@ contains
   subroutine parse_args(args, error)
     type(cli_args_t), intent(out) :: args
     type(error_t), allocatable, intent(out) :: error
-    integer :: i, n, eq
+    integer :: i, n, eq, ios
     character(len=:), allocatable :: arg, name, value
 
     n = command_argument_count()
@@ -409,7 +439,8 @@ contains
         value = arg(eq + 1:)
       else
         name = arg
-        if (any(name == [character(len=8) :: "-o", "--output", "--format", "--lang", "--set", "--vary", "--part"])) then
+        if (any(name == [character(len=8) :: "-o", "--output", "--format", "--lang", "--set", "--pairs", "--at", &
+                         "--vary", "--part"])) then
           if (i == n) then
             call fatal_error(error, exit_usage, name//" needs a value")
             return
@@ -427,6 +458,8 @@ contains
         args%quiet = .true.
       case ("--strict")
         args%strict = .true.
+      case ("--kinematics")
+        args%options%kinematics = .true.
       case ("-o", "--output")
         args%out_file = value
       case ("--format")
@@ -434,6 +467,14 @@ contains
         args%options%format = format_from_name(value)
         if (args%options%format == 0) then
           call fatal_error(error, exit_usage, "--format must be one of "//format_names//" (got '"//value//"')")
+          return
+        end if
+      case ("--pairs")
+        args%options%pairs = value
+      case ("--at")
+        read (value, *, iostat=ios) args%options%at_step
+        if (ios /= 0 .or. args%options%at_step < 1 .or. verify(value, "0123456789 ") /= 0) then
+          call fatal_error(error, exit_usage, "--at needs a step number 1, 2, ... (got '"//value//"')")
           return
         end if
       case ("--lang")
@@ -457,6 +498,13 @@ contains
           return
         end if
         args%sweep = .true.
+      case ("diff")
+        if (i == 1) then
+          call parse_diff_args(args, error)
+          return
+        end if
+        call fatal_error(error, exit_usage, "diff must come first: "//diff_usage)
+        return
       case ("template")
         if (allocated(args%deck) .or. i == n) then
           call fatal_error(error, exit_usage, "template needs exactly one KIND (known: "//known_kinds()//")")
@@ -486,8 +534,124 @@ contains
         "kinetostat sweep DECK --vary ...")
     else if (args%sweep .and. args%format_given .and. args%options%format /= format_summary) then
       call fatal_error(error, exit_usage, "sweep writes the summary format only (--format summary)")
+    else if (allocated(args%options%pairs) .and. args%options%format /= format_svg) then
+      call fatal_error(error, exit_usage, "--pairs needs --format svg")
+    else if (args%options%at_step > 0 .and. args%options%format /= format_svg) then
+      call fatal_error(error, exit_usage, "--at needs --format svg")
     end if
   end subroutine parse_args
+
+  !> The arguments of `kinetostat diff A B [--rtol R] [--atol A] [--quiet]` (errors: exit 2).
+  subroutine parse_diff_args(args, error)
+    type(cli_args_t), intent(inout) :: args
+    type(error_t), allocatable, intent(out) :: error
+    integer :: i, n, eq, ios
+    character(len=:), allocatable :: arg, name, value
+    character(len=4096) :: files(2)
+    integer :: n_files
+    real(wp) :: x
+    n = command_argument_count()
+    n_files = 0
+    i = 1
+    do while (i < n)
+      i = i + 1
+      arg = argument(i)
+      eq = index(arg, "=")
+      if (len(arg) > 2 .and. arg(1:min(2, len(arg))) == "--" .and. eq > 0) then
+        name = arg(1:eq - 1)
+        value = arg(eq + 1:)
+      else
+        name = arg
+        value = ""
+        if (name == "--rtol" .or. name == "--atol") then
+          if (i == n) then
+            call fatal_error(error, exit_input, "diff: "//name//" needs a value; "//diff_usage)
+            return
+          end if
+          i = i + 1
+          value = argument(i)
+        end if
+      end if
+      select case (name)
+      case ("-h", "--help")
+        args%help = .true.
+      case ("-q", "--quiet")
+        args%quiet = .true.
+      case ("--rtol", "--atol")
+        read (value, *, iostat=ios) x
+        if (ios /= 0 .or. .not. (x >= 0.0_wp .and. x < huge(x))) then
+          call fatal_error(error, exit_input, "diff: "//name//" must be a number >= 0 (got '"//value//"')")
+          return
+        end if
+        if (name == "--rtol") then
+          args%diff_options%rtol = x
+        else
+          args%diff_options%atol = x
+        end if
+      case default
+        if (len(arg) > 1 .and. arg(1:1) == "-") then
+          call fatal_error(error, exit_input, "diff: unknown option '"//arg//"'; "//diff_usage)
+          return
+        end if
+        n_files = n_files + 1
+        if (n_files > 2) then
+          call fatal_error(error, exit_input, "diff: more than two files given ('"//arg//"'); "//diff_usage)
+          return
+        end if
+        if (len(arg) > len(files(1))) then
+          call fatal_error(error, exit_input, "diff: file name too long")
+          return
+        end if
+        files(n_files) = arg
+      end select
+    end do
+    if (args%help) return
+    if (n_files /= 2) then
+      call fatal_error(error, exit_input, "diff: needs two files; "//diff_usage)
+      return
+    end if
+    args%diff_files = [character(len=max(len_trim(files(1)), len_trim(files(2)))) :: files(1), files(2)]
+  end subroutine parse_diff_args
+
+  !> `kinetostat diff A B`: the report on stdout; exit 0 same, 1 different, 2 trouble.
+  subroutine run_diff(args, exit_code)
+    type(cli_args_t), intent(in) :: args
+    integer, intent(out) :: exit_code
+    type(deck_source_t) :: a, b
+    type(column_t), allocatable :: catalog(:)
+    type(text_buffer_t) :: report
+    type(error_t), allocatable :: error
+    integer :: status
+    call read_output_file(trim(args%diff_files(1)), a, error)
+    if (.not. allocated(error)) call read_output_file(trim(args%diff_files(2)), b, error)
+    if (.not. allocated(error)) then
+      call known_columns(catalog)
+      call diff_outputs(a%path, a%lines, b%path, b%lines, catalog, args%diff_options, report, status, error)
+    end if
+    if (.not. allocated(error) .and. .not. args%quiet) call write_output_stdout(report, error)
+    if (allocated(error)) then
+      write (error_unit, '(a)') "kinetostat: error: "//error%message
+      exit_code = exit_input
+    else
+      exit_code = status
+    end if
+    flush (error_unit)
+  end subroutine run_diff
+
+  !> A file to compare, read into memory as lines.
+  subroutine read_output_file(path, source, error)
+    character(*), intent(in) :: path
+    type(deck_source_t), intent(out) :: source
+    type(error_t), allocatable, intent(out) :: error
+    logical :: exists
+    inquire (file=path, exist=exists)
+    if (.not. exists) then
+      call fatal_error(error, exit_input, path//": no such file")
+      return
+    end if
+    call load_deck(path, source, error)
+    if (allocated(error)) error%message = path//": cannot read the file"
+  end subroutine read_output_file
 
   function argument(i) result(arg)
     integer, intent(in) :: i
@@ -497,88 +661,5 @@ contains
     allocate (character(len=length) :: arg)
     if (length > 0) call get_command_argument(i, arg)
   end function argument
-
-  !> The output on stdout, checked: a failed write (a full disk, a closed pipe) is an error.
-  subroutine write_stdout(out, error)
-    type(text_buffer_t), intent(in) :: out
-    type(error_t), allocatable, intent(out) :: error
-    if (out%length == 0) return
-    flush (output_unit)
-    if (.not. write_standard_output(out%data(1:out%length))) then
-      call fatal_error(error, exit_input, "standard output: cannot write the output (disk full or pipe closed?)")
-    end if
-  end subroutine write_stdout
-
-  !> The output into FILE. A regular (or new) FILE is written as a temporary beside it and
-  !> renamed over it only when every byte was written and closed without error; on any error
-  !> the temporary is removed and FILE is left as it was. A device or FIFO is written directly.
-  subroutine write_file(path, out, error)
-    character(*), intent(in) :: path
-    type(text_buffer_t), intent(in) :: out
-    type(error_t), allocatable, intent(out) :: error
-    character(len=:), allocatable :: target
-    logical :: direct
-    direct = path_kind(path) == path_special
-    if (direct) then
-      target = path
-    else
-      target = path//".tmp."//int_str(process_id())
-    end if
-    call write_bytes(target, direct, out, error)
-    if (allocated(error)) then
-      error%message = path//": cannot write output: "//error%message
-      if (.not. direct) call remove_file(target)
-      return
-    end if
-    if (direct) return
-    if (.not. rename_file(target, path)) then
-      call remove_file(target)
-      call fatal_error(error, exit_input, path//": cannot write output: cannot rename the finished output into place")
-    end if
-  end subroutine write_file
-
-  !> Write the buffer's bytes to `path`; every write and the close are checked.
-  subroutine write_bytes(path, existing, out, error)
-    character(*), intent(in) :: path
-    !> True for a device or FIFO (opened as it is, not replaced).
-    logical, intent(in) :: existing
-    type(text_buffer_t), intent(in) :: out
-    type(error_t), allocatable, intent(out) :: error
-    integer :: unit, ios
-    character(len=512) :: msg
-    msg = ""
-    if (existing) then
-      open (newunit=unit, file=path, access='stream', form='unformatted', action='write', status='old', &
-            iostat=ios, iomsg=msg)
-    else
-      open (newunit=unit, file=path, access='stream', form='unformatted', action='write', status='replace', &
-            iostat=ios, iomsg=msg)
-    end if
-    if (ios /= 0) then
-      call fatal_error(error, exit_input, trim(msg))
-      return
-    end if
-    if (out%length > 0) write (unit, iostat=ios, iomsg=msg) out%data(1:out%length)
-    if (ios == 0) flush (unit, iostat=ios, iomsg=msg)
-    if (ios /= 0) then
-      call fatal_error(error, exit_input, trim(msg))
-      close (unit, iostat=ios)
-      if (ios /= 0) error%message = error%message//" (and the file could not be closed)"
-      return
-    end if
-    close (unit, iostat=ios, iomsg=msg)
-    if (ios /= 0) call fatal_error(error, exit_input, trim(msg))
-  end subroutine write_bytes
-
-  !> Delete a file if it exists (clean-up after an error: a failure here changes nothing
-  !> about the error already being reported, so it is not reported again).
-  subroutine remove_file(path)
-    character(*), intent(in) :: path
-    integer :: unit, ios
-    open (newunit=unit, file=path, status='old', iostat=ios)
-    if (ios /= 0) return
-    close (unit, status='delete', iostat=ios)
-    if (ios /= 0) return
-  end subroutine remove_file
 
 end module kinetostat_cli

@@ -3,6 +3,10 @@
 !> folder under src/ + one line in `registry_entries`.
 module kinetostat_registry
   use kinetostat_mechanism, only: mechanism_t
+  use kinetostat_error, only: error_t
+  use kinetostat_deck, only: deck_source_t, deck_source_from_text
+  use kinetostat_step_table, only: step_table_t, column_t
+  use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_pr3207_layout, only: new_pr3207
   use kinetostat_pr3050_layout, only: new_pr3050
   use kinetostat_sixbar_layout, only: new_sixbar
@@ -11,7 +15,7 @@ module kinetostat_registry
   use kinetostat_cam_layout, only: new_cam
   implicit none
   private
-  public :: create_mechanism, known_kinds
+  public :: create_mechanism, known_kinds, known_columns
 
   abstract interface
     !> Allocate a new mechanism of one kind.
@@ -75,5 +79,39 @@ contains
       end if
     end do
   end subroutine create_mechanism
+
+  !> The columns (name, unit, kind) of every kind's output, as its template deck gives them:
+  !> what `kinetostat diff` knows about the columns of a CSV file. A kind whose template does
+  !> not run adds nothing.
+  subroutine known_columns(columns)
+    !> The columns of all kinds, in registry order (names may repeat).
+    type(column_t), allocatable, intent(out) :: columns(:)
+    type(registry_entry_t), allocatable :: entries(:)
+    class(mechanism_t), allocatable :: mech
+    type(text_buffer_t) :: deck
+    type(deck_source_t) :: source
+    type(step_table_t) :: table
+    type(error_t), allocatable :: error
+    integer :: i
+    allocate (columns(0))
+    allocate (entries(0)) ! defined before the assignment (gcc's -Wuninitialized on the descriptor)
+    entries = registry_entries()
+    do i = 1, size(entries)
+      call entries(i)%create(mech)
+      deck = text_buffer_t()
+      call mech%write_template(deck)
+      call deck_source_from_text("template", deck%text(), source)
+      call mech%read_deck(source, error)
+      if (allocated(error)) cycle
+      table = step_table_t()
+      table%mechanism = trim(entries(i)%name)
+      table%deck = "template"
+      table%row_name = "step"
+      table%driver = "M1"
+      call mech%solve(table, error)
+      if (allocated(error)) cycle
+      columns = [columns, table%columns]
+    end do
+  end subroutine known_columns
 
 end module kinetostat_registry

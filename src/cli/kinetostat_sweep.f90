@@ -271,8 +271,8 @@ contains
     options%overrides = result%overrides
     call run_mechanism(mech, group, patched, options, table, out, result%error)
     if (allocated(result%error)) return
-    result%header = summary_header(table)
-    result%row = summary_row(table)
+    result%header = summary_header(table, .false.)
+    result%row = summary_row(table, .false.)
     do i = 1, table%warning_count()
       call result%warnings%put(table%warnings(i)%text)
     end do

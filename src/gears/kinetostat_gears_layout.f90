@@ -5,12 +5,13 @@ module kinetostat_gears_layout
   use kinetostat_deck, only: deck_source_t
   use kinetostat_error, only: error_t
   use kinetostat_text, only: upper
-  use kinetostat_noise, only: noise_rel
+  use kinetostat_noise, only: noise_rel, force_components
   use kinetostat_vec2, only: magnitude, angle_360_deg, snap_noise
   use kinetostat_step_table, only: step_table_t, col_count, col_length, col_ratio, col_moment, col_component, &
     col_force, col_force_angle
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_table_writer, only: put_heading, value_line
+  use kinetostat_format, only: fixed_field
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_gears, only: gear_stage_t, gear_result_t, gear_pair, gear_series, gear_planetary_step, &
     gear_planetary, gear_bevel, gear_kind_names
@@ -18,6 +19,9 @@ module kinetostat_gears_layout
   implicit none
   private
   public :: gears_mechanism_t, new_gears, gears_solve, gears_csv_columns, gears_csv_values
+
+  !> In-plane forces with an angle column, in the order of the CSV columns.
+  character(*), parameter :: force_names(*) = [character(len=3) :: "F12", "FS1", "FS2", "F23", "F2H"]
 
   !> CSV columns (one row per stage); see docs/gears-cams.md "Gears: table and CSV".
   character(*), parameter :: gears_csv_columns(*) = [character(len=6) :: &
@@ -37,8 +41,8 @@ module kinetostat_gears_layout
     col_force, col_force_angle, col_force, col_force_angle, col_moment, col_moment]
   !> CSV positions of the torque columns (M1, M2, M2P, M3, M3P).
   integer, parameter :: moment_columns(*) = [10, 11, 12, 29, 30]
-  !> Format of a force angle in the RESULTS block.
-  character(*), parameter :: angle_fmt = '(f11.4)'
+  !> Width and decimals of a force angle in the RESULTS block (F11.4).
+  integer, parameter :: angle_width = 11, angle_decimals = 4
 
   !> Gear meshes: spur, helical, bevel, planetary stages, manual section 6.
   type, extends(mechanism_t) :: gears_mechanism_t
@@ -111,9 +115,35 @@ contains
     do i = 1, size(res)
       table%rows(:, i) = gears_csv_values(self%deck, res, i)
     end do
+    do i = 1, size(res)
+      call put_kinematics(table, i, res(i))
+    end do
     call table%set_selfcheck(maxval(res%residual), maxval(res%mismatch), "M2")
     call echo_deck(self%deck, table)
   end subroutine solve
+
+  !> The kinematics columns of stage `i` (statics only: no motion is computed): in the stage
+  !> frame, the centres O1, O2 of gears 1 and 2 (planetary: sun and satellite 1) and the pitch
+  !> point P of their mesh, and the components of the in-plane forces F12, FS1, FS2, F23, F2H
+  !> as their angle columns give them.
+  pure subroutine put_kinematics(table, i, r)
+    !> The step table (columns appended on first use).
+    type(step_table_t), intent(inout) :: table
+    !> Row (stage).
+    integer, intent(in) :: i
+    !> Results of the stage.
+    type(gear_result_t), intent(in) :: r
+    real(wp) :: f(2, 5), floor
+    integer :: j
+    call table%put_point(i, "O1", r%o1)
+    call table%put_point(i, "O2", r%o2)
+    call table%put_point(i, "P", r%p)
+    f = reshape([r%f12, r%fs1, r%fs2, r%f23, r%f2h], [2, 5])
+    floor = noise_rel * maxval([(magnitude(f(:, j)), j=1, 5)])
+    do j = 1, size(force_names)
+      call table%put_components(i, trim(force_names(j)), force_components(f(:, j), floor), 0.0_wp)
+    end do
+  end subroutine put_kinematics
 
   !> The CSV row of stage `i`: diameters in mm, forces N (magnitude) and deg (angle).
   pure function gears_csv_values(deck, res, i) result(v)
@@ -201,8 +231,8 @@ contains
     character(*), intent(in) :: name
     real(wp), intent(in) :: magnitude_n, angle_deg
     character(len=:), allocatable :: line
-    character(len=11) :: angle_text
-    write (angle_text, angle_fmt) angle_deg
+    character(len=angle_width) :: angle_text
+    angle_text = fixed_field(angle_deg, angle_width, angle_decimals)
     line = value_line(name, magnitude_n, "N")//"   ANGLE ="//angle_text//"  deg"
   end function vector_line
 

@@ -2,7 +2,7 @@
 !> precision (13 significant digits), flags and counts as whole numbers.
 module kinetostat_csv_writer
   use kinetostat_step_table, only: step_table_t
-  use kinetostat_format, only: cell_number
+  use kinetostat_format, only: put_cell, cell_room
   use kinetostat_text_buffer, only: text_buffer_t
   implicit none
   private
@@ -10,29 +10,47 @@ module kinetostat_csv_writer
 
 contains
 
-  !> The CSV of a step table (columns marked csv only).
-  pure subroutine write_csv(table, out)
+  !> The CSV of a step table (columns marked csv only; kinematics columns when asked).
+  pure subroutine write_csv(table, out, kinematics)
     !> Finite results.
     type(step_table_t), intent(in) :: table
     !> Where the lines go.
     type(text_buffer_t), intent(inout) :: out
+    !> Whether to add the kinematics columns (--kinematics); default false.
+    logical, intent(in), optional :: kinematics
     character(len=:), allocatable :: line
+    logical, allocatable :: whole(:)
+    integer, allocatable :: columns(:)
     integer :: k, c
+    logical :: shown(size(table%columns)), with_kinematics
+    with_kinematics = .false.
+    if (present(kinematics)) with_kinematics = kinematics
+    do c = 1, size(table%columns)
+      shown(c) = table%columns(c)%csv .and. table%shows(c, with_kinematics)
+    end do
     line = ""
     do c = 1, size(table%columns)
-      if (.not. table%columns(c)%csv) cycle
+      if (.not. shown(c)) cycle
       if (len(line) > 0) line = line//","
       line = line//table%columns(c)%name
     end do
     call out%put(line)
+    allocate (columns(0))
+    do c = 1, size(table%columns)
+      if (shown(c)) columns = [columns, c]
+    end do
+    allocate (whole(size(columns)))
+    do c = 1, size(columns)
+      whole(c) = table%is_whole(columns(c))
+    end do
+    ! room for every row at once (no copying while the buffer grows)
+    call out%reserve(table%row_count() * (size(columns) * (cell_room + 1) + 1))
     do k = 1, table%row_count()
-      line = ""
-      do c = 1, size(table%columns)
-        if (.not. table%columns(c)%csv) cycle
-        if (len(line) > 0) line = line//","
-        line = line//cell_number(table%rows(c, k), table%is_whole(c))
+      do c = 1, size(columns)
+        if (c > 1) call out%append(",")
+        call put_cell(out, table%rows(columns(c), k), whole(c))
       end do
-      call out%put(line)
+      call out%end_line()
     end do
   end subroutine write_csv
 

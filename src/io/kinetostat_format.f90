@@ -3,28 +3,32 @@
 !> field (never `*`); three-digit exponents keep their `E`; CSV and JSON numbers carry 13
 !> significant digits; flags and counts are whole numbers. Non-finite values never get
 !> here: the run pipeline rejects them first (see kinetostat_run).
+!> Field routines write into a character(*) dummy whose length is the field width.
+! allow(assumed-size-character-intent)
 module kinetostat_format
   use, intrinsic :: iso_fortran_env, only: int64
   use kinetostat_kinds, only: wp
+  use kinetostat_decimal, only: edit_f_with_blank, edit_e, edit_es, put_es_compact, put_whole
+  use kinetostat_text_buffer, only: text_buffer_t
   implicit none
   private
   public :: fixed_field, exp_field, int_field, full_number, whole_number, cell_number
-  public :: echo_number, echo_array_number, footer_number, pad_right, display_width
+  public :: echo_number, echo_array_number, footer_number, limit_number, pad_right, display_width
+  public :: put_cell, put_fixed, cell_room, fixed_number, short_number
 
-  !> A full-precision number (CSV, JSON): 13 significant digits, 3-digit exponent.
-  character(*), parameter :: full_fmt = '(es20.12e3)'
-  !> A deck value in the INPUT DATA echo.
-  character(*), parameter :: echo_fmt = '(es18.9)'
-  !> The same for values whose decimal exponent has three digits.
-  character(*), parameter :: echo_e3_fmt = '(es18.9e3)'
-  !> One value of an echoed array.
-  character(*), parameter :: echo_array_fmt = '(es14.6)'
-  !> The same for three-digit exponents.
-  character(*), parameter :: echo_array_e3_fmt = '(es14.5e3)'
-  !> A self-check figure in the footer.
-  character(*), parameter :: footer_fmt = '(es10.2)'
-  !> The same for three-digit exponents.
-  character(*), parameter :: footer_e3_fmt = '(es10.1e3)'
+  ! The edit descriptors of the policy (kinetostat_decimal writes them exactly as the
+  ! compiler's formatted WRITE would, only faster):
+  !   CSV cell, JSON number   ES20.12E3 without blanks (full_digits, full_exponent_digits)
+  !   INPUT DATA value        ES18.9, ES18.9E3 for three-digit exponents
+  !   echoed array value      ES14.6, ES14.5E3
+  !   self-check figure       ES10.2, ES10.1E3; its limit ES8.1
+  !   table fields            Fw.d, else ESw.(w-8) / ESw.(w-9)E3; legacy Ew.d / Ew.dE3
+  !> Digits after the point of a full-precision number (13 significant digits).
+  integer, parameter :: full_digits = 12
+  !> Exponent digits of a full-precision number.
+  integer, parameter :: full_exponent_digits = 3
+  !> Room a CSV cell needs at most, characters.
+  integer, parameter :: cell_room = 24
   !> Width of the scratch buffer for one field.
   integer, parameter :: scratch_len = 64
 
@@ -47,36 +51,30 @@ contains
     !> Decimals of the fixed-point form.
     integer, intent(in) :: decimals
     character(len=width) :: text
-    character(len=scratch_len) :: buf
-    character(len=16) :: fmt
-    if (abs(x) < 1.0e30_wp) then
-      write (fmt, '("(f",i0,".",i0,")")') scratch_len, decimals
-      write (buf, fmt) x + 0.0_wp
-      buf = adjustl(buf)
-      if (len_trim(buf) < width) then
-        text = adjustr(buf(1:width))
-        return
-      end if
-    end if
-    text = exponent_text(x, width)
+    call fixed_text(x, decimals, text)
   end function fixed_field
 
-  !> Exponent form in `width` characters with one blank in front (ES, digits as fit).
-  pure function exponent_text(x, width) result(text)
+  !> fixed_field into `text` (its length is the width).
+  pure subroutine fixed_text(x, decimals, text)
     real(wp), intent(in) :: x
-    integer, intent(in) :: width
-    character(len=width) :: text
-    character(len=24) :: fmt
-    integer :: digits
+    integer, intent(in) :: decimals
+    character(*), intent(out) :: text
+    logical :: fits
+    fits = .false.
+    if (abs(x) < 1.0e30_wp) call edit_f_with_blank(x + 0.0_wp, decimals, text, fits)
+    if (.not. fits) call exponent_text(x, text)
+  end subroutine fixed_text
+
+  !> Exponent form in `len(text)` characters with one blank in front (ES, digits as fit).
+  pure subroutine exponent_text(x, text)
+    real(wp), intent(in) :: x
+    character(*), intent(out) :: text
     if (needs_e3(x)) then
-      digits = max(0, width - 9)
-      write (fmt, '("(es",i0,".",i0,"e3)")') width, digits
+      call edit_es(x + 0.0_wp, max(0, len(text) - 9), 3, text)
     else
-      digits = max(0, width - 8)
-      write (fmt, '("(es",i0,".",i0,")")') width, digits
+      call edit_es(x + 0.0_wp, max(0, len(text) - 8), 0, text)
     end if
-    write (text, fmt) x + 0.0_wp
-  end function exponent_text
+  end subroutine exponent_text
 
   !> A field in the legacy E form (`Ew.d`, e.g. 0.123E+04), with an `E` kept for
   !> three-digit exponents.
@@ -88,13 +86,11 @@ contains
     !> Significant digits after the point.
     integer, intent(in) :: decimals
     character(len=width) :: text
-    character(len=24) :: fmt
     if (needs_e3(x)) then
-      write (fmt, '("(e",i0,".",i0,"e3)")') width, max(0, min(decimals, width - 9))
+      call edit_e(x + 0.0_wp, max(0, min(decimals, width - 9)), 3, text)
     else
-      write (fmt, '("(e",i0,".",i0,")")') width, decimals
+      call edit_e(x + 0.0_wp, decimals, 0, text)
     end if
-    write (text, fmt) x + 0.0_wp
   end function exp_field
 
   !> A right-justified whole number in `width` characters (exponent form if it cannot fit).
@@ -105,15 +101,28 @@ contains
     integer, intent(in) :: width
     character(len=width) :: text
     character(len=scratch_len) :: buf
+    integer :: n
     if (abs(x) < 1.0e15_wp) then
-      write (buf, '(i0)') nint(x, kind=int64)
-      if (len_trim(buf) <= width) then
-        text = adjustr(buf(1:width))
+      n = 0
+      call put_whole(nint(x, kind=int64), buf, n)
+      if (n <= width) then
+        text = repeat(" ", width - n)//buf(1:n)
         return
       end if
     end if
-    text = exponent_text(x, max(width, 9))
+    if (width >= 9) then
+      call exponent_text(x, text)
+    else
+      text = exponent_9(x)
+    end if
   end function int_field
+
+  !> exponent_text in 9 characters.
+  pure function exponent_9(x) result(text)
+    real(wp), intent(in) :: x
+    character(len=9) :: text
+    call exponent_text(x, text)
+  end function exponent_9
 
   !> A number at full precision without blanks (CSV cells, JSON numbers): 13 significant
   !> digits, e.g. 2.741190000000E+003; minus zero is written as zero.
@@ -122,8 +131,10 @@ contains
     real(wp), intent(in) :: x
     character(len=:), allocatable :: text
     character(len=scratch_len) :: buf
-    write (buf, full_fmt) x + 0.0_wp
-    text = trim(adjustl(buf))
+    integer :: n
+    n = 0
+    call put_es_compact(x + 0.0_wp, full_digits, full_exponent_digits, buf, n)
+    text = buf(1:n)
   end function full_number
 
   !> A whole number without blanks (flags and counts); full_number when beyond 1e15.
@@ -132,12 +143,10 @@ contains
     real(wp), intent(in) :: x
     character(len=:), allocatable :: text
     character(len=scratch_len) :: buf
-    if (abs(x) < 1.0e15_wp .and. x == aint(x)) then
-      write (buf, '(i0)') nint(x, kind=int64)
-      text = trim(buf)
-    else
-      text = full_number(x)
-    end if
+    integer :: n
+    n = 0
+    call put_cell_text(x, .true., buf, n)
+    text = buf(1:n)
   end function whole_number
 
   !> A CSV cell or JSON number: whole_number for flags and counts, full_number otherwise.
@@ -147,12 +156,54 @@ contains
     !> True for a column of whole numbers.
     logical, intent(in) :: whole
     character(len=:), allocatable :: text
-    if (whole) then
-      text = whole_number(x)
-    else
-      text = full_number(x)
-    end if
+    character(len=scratch_len) :: buf
+    integer :: n
+    n = 0
+    call put_cell_text(x, whole, buf, n)
+    text = buf(1:n)
   end function cell_number
+
+  !> cell_number appended to buf at n+1.. (n advanced; room for 24 more).
+  pure subroutine put_cell_text(x, whole, buf, n)
+    real(wp), intent(in) :: x
+    logical, intent(in) :: whole
+    character(*), intent(inout) :: buf
+    integer, intent(inout) :: n
+    if (whole) then
+      if (abs(x) < 1.0e15_wp .and. x == aint(x)) then
+        call put_whole(nint(x, kind=int64), buf, n)
+        return
+      end if
+    end if
+    call put_es_compact(x + 0.0_wp, full_digits, full_exponent_digits, buf, n)
+  end subroutine put_cell_text
+
+  !> Append cell_number(x, whole) to the output (no newline).
+  pure subroutine put_cell(out, x, whole)
+    !> Where the text goes.
+    type(text_buffer_t), intent(inout) :: out
+    !> Finite value.
+    real(wp), intent(in) :: x
+    !> True for a column of whole numbers.
+    logical, intent(in) :: whole
+    call out%reserve(cell_room)
+    call put_cell_text(x, whole, out%data, out%length)
+  end subroutine put_cell
+
+  !> Append fixed_field(x, width, decimals) to the output (no newline).
+  pure subroutine put_fixed(out, x, width, decimals)
+    !> Where the text goes.
+    type(text_buffer_t), intent(inout) :: out
+    !> Finite value.
+    real(wp), intent(in) :: x
+    !> Field width, characters (>= 9).
+    integer, intent(in) :: width
+    !> Decimals of the fixed-point form.
+    integer, intent(in) :: decimals
+    call out%reserve(width)
+    call fixed_text(x, decimals, out%data(out%length + 1:out%length + width))
+    out%length = out%length + width
+  end subroutine put_fixed
 
   !> An INPUT DATA value (18 characters).
   pure function echo_number(x) result(text)
@@ -160,9 +211,9 @@ contains
     real(wp), intent(in) :: x
     character(len=18) :: text
     if (needs_e3(x)) then
-      write (text, echo_e3_fmt) x + 0.0_wp
+      call edit_es(x + 0.0_wp, 9, 3, text)
     else
-      write (text, echo_fmt) x + 0.0_wp
+      call edit_es(x + 0.0_wp, 9, 0, text)
     end if
   end function echo_number
 
@@ -172,9 +223,9 @@ contains
     real(wp), intent(in) :: x
     character(len=14) :: text
     if (needs_e3(x)) then
-      write (text, echo_array_e3_fmt) x + 0.0_wp
+      call edit_es(x + 0.0_wp, 5, 3, text)
     else
-      write (text, echo_array_fmt) x + 0.0_wp
+      call edit_es(x + 0.0_wp, 6, 0, text)
     end if
   end function echo_array_number
 
@@ -184,11 +235,84 @@ contains
     real(wp), intent(in) :: x
     character(len=10) :: text
     if (needs_e3(x)) then
-      write (text, footer_e3_fmt) x + 0.0_wp
+      call edit_es(x + 0.0_wp, 1, 3, text)
     else
-      write (text, footer_fmt) x + 0.0_wp
+      call edit_es(x + 0.0_wp, 2, 0, text)
     end if
   end function footer_number
+
+  !> A self-check limit in the footer heading, without blanks (ES8.1, e.g. 1.0E-09).
+  pure function limit_number(x) result(text)
+    !> Finite value.
+    real(wp), intent(in) :: x
+    character(len=:), allocatable :: text
+    character(len=8) :: field
+    call edit_es(x, 1, 0, field)
+    text = trim(adjustl(field))
+  end function limit_number
+  !> A number in fixed point with `decimals` decimals and no blanks (drawing coordinates and
+  !> labels of the SVG sheets): a leading zero is always written ("0.50", "-0.25"), a value
+  !> that rounds to zero is written without a sign; |x| >= 1e15 goes to exponent form.
+  pure function fixed_number(x, decimals) result(text)
+    !> Finite value.
+    real(wp), intent(in) :: x
+    !> Decimals (0 gives a whole number without a point).
+    integer, intent(in) :: decimals
+    character(len=:), allocatable :: text
+    character(len=scratch_len) :: buf
+    real(wp) :: scale
+    logical :: fits
+    if (abs(x) >= 1.0e15_wp) then
+      text = full_number(x)
+      return
+    end if
+    scale = 10.0_wp**decimals
+    if (anint(abs(x) * scale) == 0.0_wp) then
+      buf = "0"
+      if (decimals > 0) buf = "0."//repeat("0", decimals)
+      text = trim(buf)
+      return
+    end if
+    call edit_f_with_blank(x, decimals, buf, fits)   ! F0.d with its leading zero
+    text = trim(adjustl(buf))
+    if (decimals == 0 .and. text(len(text):len(text)) == ".") text = text(1:len(text) - 1)
+  end function fixed_number
+
+  !> A value for a label beside a picture ("2716", "12.3", "0.457"): about three
+  !> significant digits in fixed point (none after the point from 100 up), exponent form
+  !> (3 significant digits, ES10.2) from 1e7 up.
+  pure function short_number(x) result(text)
+    !> Finite value.
+    real(wp), intent(in) :: x
+    character(len=:), allocatable :: text
+    real(wp) :: a
+    a = abs(x)
+    if (a >= 1.0e7_wp) then
+      text = short_exponent(x)
+    else if (a >= 100.0_wp) then
+      text = fixed_number(x, 0)
+    else if (a >= 10.0_wp) then
+      text = fixed_number(x, 1)
+    else if (a >= 1.0_wp) then
+      text = fixed_number(x, 2)
+    else if (a >= 1.0e-3_wp) then
+      text = fixed_number(x, 3)
+    else if (a == 0.0_wp) then
+      text = "0"
+    else
+      text = short_exponent(x)
+    end if
+  end function short_number
+
+  !> ES10.2 without blanks.
+  pure function short_exponent(x) result(text)
+    real(wp), intent(in) :: x
+    character(len=:), allocatable :: text
+    character(len=10) :: field
+    call edit_es(x, 2, 0, field)
+    text = trim(adjustl(field))
+  end function short_exponent
+
 
   !> Characters a UTF-8 text takes on screen (continuation bytes 0x80-0xBF not counted), so
   !> that Cyrillic labels (two bytes a letter) keep columns aligned.

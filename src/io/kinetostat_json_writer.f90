@@ -3,9 +3,9 @@
 module kinetostat_json_writer
   use kinetostat_kinds, only: version_string
   use kinetostat_selfcheck, only: selfcheck_tolerance
-  use kinetostat_step_table, only: step_table_t, echo_record_t, column_kind_names, &
+  use kinetostat_step_table, only: step_table_t, echo_record_t, column_kind_names, col_component, &
     echo_real_kind, echo_int_kind, echo_logical_kind, echo_array_kind, echo_text_kind, echo_heading_kind
-  use kinetostat_format, only: full_number, cell_number
+  use kinetostat_format, only: full_number, put_cell, cell_room
   use kinetostat_text_buffer, only: text_buffer_t
   implicit none
   private
@@ -14,15 +14,27 @@ module kinetostat_json_writer
 contains
 
   !> The JSON object of a run.
-  pure subroutine write_json(title, table, out)
+  pure subroutine write_json(title, table, out, kinematics)
     !> Title of the mechanism (as the legacy table prints it).
     character(*), intent(in) :: title
     !> Finite results.
     type(step_table_t), intent(in) :: table
     !> Where the lines go.
     type(text_buffer_t), intent(inout) :: out
+    !> Whether to add the kinematics columns (--kinematics); default false.
+    logical, intent(in), optional :: kinematics
     character(len=:), allocatable :: line
-    integer :: i, c, k
+    logical, allocatable :: whole(:)
+    integer :: i, c, k, last
+    logical :: shown(size(table%columns)), with_kinematics
+    logical :: first
+    with_kinematics = .false.
+    if (present(kinematics)) with_kinematics = kinematics
+    last = 0
+    do c = 1, size(table%columns)
+      shown(c) = table%shows(c, with_kinematics)
+      if (shown(c)) last = c
+    end do
     call out%put("{")
     call out%put('  "program": '//json_string(version_string)//",")
     call out%put('  "mechanism": '//json_string(table%mechanism)//",")
@@ -40,34 +52,64 @@ contains
     end if
     call out%put('  "input": [')
     do i = 1, table%echo_count
-      line = "    "//echo_object(table%echo(i))
-      if (i < table%echo_count) line = line//","
-      call out%put(line)
+      call out%append("    ")
+      call put_echo_object(out, table%echo(i))
+      if (i < table%echo_count) call out%append(",")
+      call out%end_line()
     end do
     call out%put("  ],")
     call out%put('  "columns": [')
     do c = 1, size(table%columns)
+      if (.not. shown(c)) cycle
       line = '    {"name": '//json_string(table%columns(c)%name)//', "unit": '// &
         json_string(table%columns(c)%unit)//', "kind": '// &
         json_string(trim(column_kind_names(table%columns(c)%kind)))//', "csv": '// &
         merge("true ", "false", table%columns(c)%csv)
-      line = trim(line)//"}"
-      if (c < size(table%columns)) line = line//","
+      line = trim(line)
+      if (table%columns(c)%kinematic) then
+        line = line//', "kinematic": true'
+        if (table%columns(c)%kind == col_component) line = line//', "frame_angle": '// &
+          full_number(table%columns(c)%frame_angle)
+      end if
+      line = line//"}"
+      if (c < last) line = line//","
       call out%put(line)
     end do
     call out%put("  ],")
     call out%put('  "rows": [')
+    allocate (whole(size(table%columns)))
+    do c = 1, size(table%columns)
+      whole(c) = table%is_whole(c)
+    end do
+    ! room for every row at once (no copying while the buffer grows)
+    call out%reserve(table%row_count() * (size(table%columns) * (cell_room + 2) + 8))
     do k = 1, table%row_count()
-      line = "    ["
+      call out%append("    [")
+      first = .true.
       do c = 1, size(table%columns)
-        if (c > 1) line = line//", "
-        line = line//cell_number(table%rows(c, k), table%is_whole(c))
+        if (.not. shown(c)) cycle
+        if (.not. first) call out%append(", ")
+        first = .false.
+        call put_cell(out, table%rows(c, k), whole(c))
       end do
-      line = line//"]"
-      if (k < table%row_count()) line = line//","
-      call out%put(line)
+      if (k < table%row_count()) then
+        call out%append("],")
+      else
+        call out%append("]")
+      end if
+      call out%end_line()
     end do
     call out%put("  ],")
+    if (allocated(table%summary)) then
+      call out%put('  "summary": [')
+      do i = 1, size(table%summary)
+        call out%append("    ")
+        call put_echo_object(out, table%summary(i))
+        if (i < size(table%summary)) call out%append(",")
+        call out%end_line()
+      end do
+      call out%put("  ],")
+    end if
     if (table%has_selfcheck) then
       call out%put('  "selfcheck": {"max_residual": '//full_number(table%max_residual)// &
         ', "max_mismatch": '//full_number(table%max_mismatch)//', "driver": '//json_string(table%driver)// &
@@ -86,8 +128,10 @@ contains
     call out%put("}")
   end subroutine write_json
 
-  !> One INPUT DATA record as a JSON object.
-  pure function echo_object(e) result(text)
+  !> One INPUT DATA record as a JSON object, appended to the current line (an array of
+  !> per-step values may be long: its numbers go straight into the buffer).
+  pure subroutine put_echo_object(out, e)
+    type(text_buffer_t), intent(inout) :: out
     type(echo_record_t), intent(in) :: e
     character(len=:), allocatable :: text
     character(len=24) :: buf
@@ -103,12 +147,12 @@ contains
       text = '{"name": '//json_string(e%name)//', "value": '//trim(merge("true ", "false", e%logical_value))// &
         ', "unit": '//json_string(e%unit)//"}"
     case (echo_array_kind)
-      text = '{"name": '//json_string(e%name)//', "value": ['
+      call out%append('{"name": '//json_string(e%name)//', "value": [')
       do i = 1, size(e%values)
-        if (i > 1) text = text//", "
-        text = text//full_number(e%values(i))
+        if (i > 1) call out%append(", ")
+        call put_cell(out, e%values(i), .false.)
       end do
-      text = text//'], "unit": '//json_string(e%unit)//"}"
+      text = '], "unit": '//json_string(e%unit)//"}"
     case (echo_text_kind)
       text = '{"name": '//json_string(e%name)//', "value": '//json_string(e%text)//"}"
     case (echo_heading_kind)
@@ -117,7 +161,8 @@ contains
       text = '{"text": '//json_string(e%name)//"}"
     end select
     if (e%overridden) text = text(1:len(text) - 1)//', "overridden": true}'
-  end function echo_object
+    call out%append(text)
+  end subroutine put_echo_object
 
   !> A JSON string literal: quotes, backslashes and control characters escaped; UTF-8 kept.
   pure function json_string(s) result(text)

@@ -6,7 +6,7 @@ module kinetostat_noise
   use kinetostat_vec2, only: magnitude, snap_noise, angle_360_deg, angle_180_deg
   implicit none
   private
-  public :: noise_rel, angles_0_360, angles_pm180, noise_floor, force_columns
+  public :: noise_rel, angles_0_360, angles_pm180, noise_floor, force_columns, force_components
 
   !> Relative roundoff floor: a force at or below noise_rel times the largest force of its
   !> step vanishes in theory and is printed as 0 with angle 0.
@@ -57,5 +57,18 @@ contains
       end if
     end do
   end function force_columns
+
+  !> The x, y components of a force as the kinematics columns report it: a force at or below
+  !> `floor` is 0 (as its magnitude and angle columns), and so is a single component at or
+  !> below it (a force along an axis has exactly one nonzero component).
+  pure function force_components(f, floor) result(v)
+    !> Force, N.
+    real(wp), intent(in) :: f(2)
+    !> Roundoff floor, N (see noise_floor).
+    real(wp), intent(in) :: floor
+    real(wp) :: v(2)
+    v = snap_noise(f, floor)
+    where (abs(v) <= floor) v = 0.0_wp
+  end function force_components
 
 end module kinetostat_noise

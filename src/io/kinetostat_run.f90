@@ -13,13 +13,18 @@ module kinetostat_run
   use kinetostat_csv_writer, only: write_csv
   use kinetostat_table_writer, only: write_table
   use kinetostat_json_writer, only: write_json
+  use kinetostat_svg_writer, only: write_svg
+  use kinetostat_svg_mechanism, only: write_svg_mechanism
+  use kinetostat_sketch, only: sketch_t
+  use kinetostat_drawing, only: drawing_t, drawing_from_sketch
+  use kinetostat_error, only: exit_usage
   use kinetostat_labels, only: lang_en
   use kinetostat_override, only: override_t, mark_overrides
   use kinetostat_summary, only: coarse_step_warning, summary_header, summary_row
   implicit none
   private
   public :: run_options_t, run_mechanism, guard_finite
-  public :: format_table, format_csv, format_json, format_summary, format_from_name, format_names
+  public :: format_table, format_csv, format_json, format_svg, format_summary, format_from_name, format_names
 
   !> Output format: the legacy fixed-format table.
   integer, parameter :: format_table = 1
@@ -27,10 +32,12 @@ module kinetostat_run
   integer, parameter :: format_csv = 2
   !> Output format: one JSON object.
   integer, parameter :: format_json = 3
+  !> Output format: one SVG sheet (hodographs and diagrams, or the mechanism at a step).
+  integer, parameter :: format_svg = 4
   !> Output format: a CSV header and one summary row (extremes, means, work).
-  integer, parameter :: format_summary = 4
+  integer, parameter :: format_summary = 5
   !> Names of the formats, for messages and --help.
-  character(*), parameter :: format_names = "table, csv, json, summary"
+  character(*), parameter :: format_names = "table, csv, json, svg, summary"
 
   !> How to run and what to write.
   type :: run_options_t
@@ -40,6 +47,13 @@ module kinetostat_run
     integer :: lang = lang_en
     !> The --set overrides (already written into the deck; marked in the outputs).
     type(override_t), allocatable :: overrides(:)
+    !> CSV and JSON add the kinematics columns (positions, link angles and speeds,
+    !> accelerations of the centres of mass, force components).
+    logical :: kinematics = .false.
+    !> SVG: the pair forces to draw, comma-separated ("" for all).
+    character(len=:), allocatable :: pairs
+    !> SVG: draw the mechanism at this row (0: the sheet of hodographs and diagrams).
+    integer :: at_step = 0
   end type run_options_t
 
 contains
@@ -57,6 +71,8 @@ contains
       format_from_name = format_json
     case ("summary")
       format_from_name = format_summary
+    case ("svg")
+      format_from_name = format_svg
     case default
       format_from_name = 0
     end select
@@ -98,20 +114,57 @@ contains
     if (allocated(warning)) call table%add_warning(warning)
     select case (options%format)
     case (format_csv)
-      call write_csv(table, out)
+      call write_csv(table, out, options%kinematics)
     case (format_summary)
       if (table%row_count() == 0) then
         call fatal_error(error, exit_input, table%deck//": &"//table%mechanism//": no rows to summarize")
         return
       end if
-      call out%put(summary_header(table))
-      call out%put(summary_row(table))
+      call out%put(summary_header(table, options%kinematics))
+      call out%put(summary_row(table, options%kinematics))
     case (format_json)
-      call write_json(mech%title(options%lang), table, out)
+      call write_json(mech%title(options%lang), table, out, options%kinematics)
+    case (format_svg)
+      if (options%at_step > 0) then
+        call write_at_step(mech, table, options, out, error)
+      else if (allocated(options%pairs)) then
+        call write_svg(mech%title(options%lang), table, options%pairs, out, error)
+      else
+        call write_svg(mech%title(options%lang), table, "", out, error)
+      end if
     case default
       call write_table(mech, table, options%lang, out)
     end select
   end subroutine run_mechanism
+
+  !> The mechanism at row options%at_step, drawn from its sketch.
+  subroutine write_at_step(mech, table, options, out, error)
+    class(mechanism_t), intent(in) :: mech
+    type(step_table_t), intent(in) :: table
+    type(run_options_t), intent(in) :: options
+    type(text_buffer_t), intent(inout) :: out
+    type(error_t), allocatable, intent(out) :: error
+    type(sketch_t) :: topo
+    type(drawing_t) :: drawing
+    integer :: k
+    k = options%at_step
+    if (k > table%row_count()) then
+      call fatal_error(error, exit_usage, "--at "//int_str(k)//": "//table%deck//" has "// &
+        int_str(table%row_count())//" "//table%row_name//"s (1.."//int_str(table%row_count())//")")
+      return
+    end if
+    call mech%sketch(topo)
+    if (.not. topo%available) then
+      call fatal_error(error, exit_usage, table%deck//": &"//table%mechanism//": --at: this mechanism is not "// &
+        "drawn (only linkages are); --format svg without --at shows its forces")
+      return
+    end if
+    call drawing_from_sketch(topo, table, k, drawing, error)
+    if (allocated(error)) return
+    call mech%force_plan(table, k, drawing, error)
+    if (allocated(error)) return
+    call write_svg_mechanism(mech%title(options%lang), table, k, drawing, out)
+  end subroutine write_at_step
 
   !> Nothing that is not finite may reach an output: a non-finite result is a geometry
   !> error (exit 3) naming the step, its input angle and the quantity.

@@ -3,7 +3,7 @@
 !> stage), the INPUT DATA echo records, the self-check figures and the run's remarks.
 !> Every mechanism fills one; every writer (CSV, legacy table, JSON) reads one.
 module kinetostat_step_table
-  use kinetostat_kinds, only: wp
+  use kinetostat_kinds, only: wp, rad_to_deg
   implicit none
   private
   public :: step_table_t, column_t, echo_record_t, remark_t
@@ -61,6 +61,13 @@ module kinetostat_step_table
     integer :: kind = col_other
     !> False for a column shown only by the legacy table and JSON (not part of the CSV).
     logical :: csv = .true.
+    !> True for a kinematics column (positions, link angles and speeds, accelerations, force
+    !> components): always in the table, shown by CSV and JSON only when asked (--kinematics),
+    !> never by the legacy table.
+    logical :: kinematic = .false.
+    !> Force component columns: angle of the x axis of the frame the components are given in,
+    !> measured in the mechanism's position frame, deg (0 when they are the same frame).
+    real(wp) :: frame_angle = 0.0_wp
   end type column_t
 
   !> One remark of a run for the user (a warning on stderr, in JSON).
@@ -132,8 +139,17 @@ module kinetostat_step_table
     integer :: work_column = 0
     !> The run's overrides as given ("l_ab=0.12"), blank-padded; not allocated without any.
     character(len=:), allocatable :: overrides(:)
+    !> Heading of the summary block (results of the whole run, e.g. work and efficiency).
+    character(len=:), allocatable :: summary_heading
+    !> Summary records (real values and lines of text), printed after RESULTS; none by default.
+    type(echo_record_t), allocatable :: summary(:)
   contains
     procedure :: add_column
+    procedure :: put_point
+    procedure :: put_link
+    procedure :: put_acceleration
+    procedure :: put_components
+    procedure :: shows
     procedure :: set_columns
     procedure :: column_index
     procedure :: allocate_rows
@@ -150,6 +166,8 @@ module kinetostat_step_table
     procedure :: echo_text
     procedure :: echo_heading
     procedure :: echo_line
+    procedure :: summary_real
+    procedure :: summary_line
   end type step_table_t
 
 contains
@@ -173,6 +191,109 @@ contains
     if (.not. allocated(self%columns)) allocate (self%columns(0))
     self%columns = [self%columns, c]
   end subroutine add_column
+
+  !> Kinematics: the position x_<point>, y_<point> (m) of a named point (joint, centre of mass)
+  !> in row `k`; the columns are created on first use.
+  pure subroutine put_point(self, k, point, p)
+    class(step_table_t), intent(inout) :: self
+    !> Row.
+    integer, intent(in) :: k
+    !> Point name as the manual names it ("A", "S3").
+    character(*), intent(in) :: point
+    !> Position, m.
+    real(wp), intent(in) :: p(2)
+    call put_kinematic(self, k, "x_"//point, "m", col_length, p(1))
+    call put_kinematic(self, k, "y_"//point, "m", col_length, p(2))
+  end subroutine put_point
+
+  !> Kinematics: angle phi<link> (deg), angular velocity omega<link> (rad/s) and acceleration
+  !> eps<link> (rad/s^2) of a link in row `k`. A column the mechanism reports already (the
+  !> input angle phi1) keeps its value.
+  pure subroutine put_link(self, k, link, phi, omega, eps)
+    class(step_table_t), intent(inout) :: self
+    !> Row.
+    integer, intent(in) :: k
+    !> Link number as the manual names it ("3").
+    character(*), intent(in) :: link
+    !> Angle, rad.
+    real(wp), intent(in) :: phi
+    !> Angular velocity, rad/s, counter-clockwise positive.
+    real(wp), intent(in) :: omega
+    !> Angular acceleration, rad/s^2.
+    real(wp), intent(in) :: eps
+    call put_kinematic(self, k, "phi"//link, "deg", col_other, phi * rad_to_deg)
+    call put_kinematic(self, k, "omega"//link, "rad/s", col_other, omega)
+    call put_kinematic(self, k, "eps"//link, "rad/s^2", col_other, eps)
+  end subroutine put_link
+
+  !> Kinematics: acceleration ax_<point>, ay_<point> (m/s^2) of a centre of mass in row `k`.
+  pure subroutine put_acceleration(self, k, point, a)
+    class(step_table_t), intent(inout) :: self
+    !> Row.
+    integer, intent(in) :: k
+    !> Point name ("S3").
+    character(*), intent(in) :: point
+    !> Acceleration, m/s^2.
+    real(wp), intent(in) :: a(2)
+    call put_kinematic(self, k, "ax_"//point, "m/s^2", col_other, a(1))
+    call put_kinematic(self, k, "ay_"//point, "m/s^2", col_other, a(2))
+  end subroutine put_acceleration
+
+  !> Kinematics: components <force>_x, <force>_y (N) of a pair force in row `k`, in the frame
+  !> of the table's angle column <force>G, whose x axis lies at `frame_angle` (deg) in the
+  !> position frame.
+  pure subroutine put_components(self, k, force, f, frame_angle)
+    class(step_table_t), intent(inout) :: self
+    !> Row.
+    integer, intent(in) :: k
+    !> Force name ("F21").
+    character(*), intent(in) :: force
+    !> Components, N.
+    real(wp), intent(in) :: f(2)
+    !> Angle of the components' frame in the position frame, deg.
+    real(wp), intent(in) :: frame_angle
+    call put_kinematic(self, k, force//"_x", "N", col_component, f(1), frame_angle)
+    call put_kinematic(self, k, force//"_y", "N", col_component, f(2), frame_angle)
+  end subroutine put_components
+
+  !> Set the value of kinematics column `name` in row `k`, appending the column (zero in
+  !> every row) on first use; a column of that name that is not a kinematics column (one the
+  !> mechanism reports anyway) is left as it is.
+  pure subroutine put_kinematic(self, k, name, unit, kind, value, frame_angle)
+    type(step_table_t), intent(inout) :: self
+    integer, intent(in) :: k
+    character(*), intent(in) :: name, unit
+    integer, intent(in) :: kind
+    real(wp), intent(in) :: value
+    real(wp), intent(in), optional :: frame_angle
+    type(column_t) :: c
+    real(wp), allocatable :: grown(:, :)
+    integer :: i
+    i = self%column_index(name)
+    if (i == 0) then
+      c%name = name
+      c%unit = unit
+      c%kind = kind
+      c%kinematic = .true.
+      if (present(frame_angle)) c%frame_angle = frame_angle
+      self%columns = [self%columns, c]
+      i = size(self%columns)
+      allocate (grown(i, size(self%rows, 2)), source=0.0_wp)
+      grown(1:i - 1, :) = self%rows
+      call move_alloc(grown, self%rows)
+    end if
+    if (self%columns(i)%kinematic) self%rows(i, k) = value + 0.0_wp
+  end subroutine put_kinematic
+
+  !> Whether a writer shows column `c`: kinematics columns only when `kinematics` is true.
+  pure logical function shows(self, c, kinematics)
+    class(step_table_t), intent(in) :: self
+    !> Column index.
+    integer, intent(in) :: c
+    !> Whether the kinematics columns were asked for (--kinematics).
+    logical, intent(in) :: kinematics
+    shows = kinematics .or. .not. self%columns(c)%kinematic
+  end function shows
 
   !> Set all columns at once from parallel lists of names, units and kinds.
   pure subroutine set_columns(self, names, units, kinds)
@@ -368,5 +489,27 @@ contains
     character(*), intent(in) :: text
     call push_echo(self, echo_record_t(kind=echo_line_kind, name=text, unit=""))
   end subroutine echo_line
+
+  !> A real value of the summary block (a result of the whole run).
+  pure subroutine summary_real(self, name, value, unit)
+    class(step_table_t), intent(inout) :: self
+    !> Name as printed.
+    character(*), intent(in) :: name
+    !> Value.
+    real(wp), intent(in) :: value
+    !> Unit text.
+    character(*), intent(in) :: unit
+    if (.not. allocated(self%summary)) allocate (self%summary(0))
+    self%summary = [self%summary, echo_record_t(kind=echo_real_kind, name=name, unit=unit, values=[value])]
+  end subroutine summary_real
+
+  !> A line of text of the summary block (translated by the table writer's glossary).
+  pure subroutine summary_line(self, text)
+    class(step_table_t), intent(inout) :: self
+    !> The line (an English glossary key).
+    character(*), intent(in) :: text
+    if (.not. allocated(self%summary)) allocate (self%summary(0))
+    self%summary = [self%summary, echo_record_t(kind=echo_line_kind, name=text, unit="")]
+  end subroutine summary_line
 
 end module kinetostat_step_table

@@ -12,6 +12,8 @@ module kinetostat_summary
   public :: column_stats_t, column_stats, summarized, drive_work, coarse_step_warning
   public :: summary_header, summary_row, coarse_step_limit
 
+  !> Values closer than this, relative to the column's largest magnitude, are a tie.
+  real(wp), parameter :: tie_rel = 1.0e-12_wp
   !> Input steps coarser than this (deg) may miss a force peak next to a load edge.
   real(wp), parameter :: coarse_step_limit = 5.0_wp
 
@@ -23,7 +25,9 @@ module kinetostat_summary
     real(wp) :: min = 0.0_wp
     !> Mean over the input angle (trapezoid rule), or over the rows without one.
     real(wp) :: mean = 0.0_wp
-    !> Row of the largest value (the first one on a tie).
+    !> Row of the largest value (the first one on a tie: within `tie_rel` of the column's
+    !> largest magnitude, so that roundoff between equal positions, such as 0 and 360 deg,
+    !> does not decide).
     integer :: max_row = 0
     !> Row of the smallest value (the first one on a tie).
     integer :: min_row = 0
@@ -33,14 +37,16 @@ contains
 
   !> Whether column `c` takes part in a summary: a CSV column other than the input angle
   !> and other than the angle of a force (a direction modulo 360 deg has no meaningful
-  !> extremes or mean).
-  pure logical function summarized(table, c)
+  !> extremes or mean); a kinematics column only when `kinematics` (--kinematics).
+  pure logical function summarized(table, c, kinematics)
     !> The results.
     type(step_table_t), intent(in) :: table
     !> Column index.
     integer, intent(in) :: c
+    !> Whether the kinematics columns are shown.
+    logical, intent(in) :: kinematics
     summarized = table%columns(c)%csv .and. c /= table%input_column .and. &
-      table%columns(c)%kind /= col_force_angle
+      table%columns(c)%kind /= col_force_angle .and. (kinematics .or. .not. table%columns(c)%kinematic)
   end function summarized
 
   !> Extremes and mean of column `c` (the table has at least one row). The mean is the
@@ -53,12 +59,13 @@ contains
     !> Column index.
     integer, intent(in) :: c
     type(column_stats_t) :: s
-    real(wp) :: span
+    real(wp) :: span, tie
     integer :: n
     n = table%row_count()
     associate (v => table%rows(c, :))
-      s%max_row = maxloc(v, dim=1)
-      s%min_row = minloc(v, dim=1)
+      tie = tie_rel * maxval(abs(v))
+      s%max_row = findloc(v >= maxval(v) - tie, .true., dim=1)
+      s%min_row = findloc(v <= minval(v) + tie, .true., dim=1)
       s%max = v(s%max_row)
       s%min = v(s%min_row)
       s%mean = sum(v) / real(n, wp)
@@ -202,9 +209,11 @@ contains
   !> Summary CSV header: the override names, then rows and the input range, then per
   !> summarized column NAME_max, NAME_max_at, NAME_min, NAME_min_at, NAME_mean, then
   !> work_DRIVER when the work is defined.
-  pure function summary_header(table) result(line)
+  pure function summary_header(table, kinematics) result(line)
     !> The results of one run (columns and overrides; the rows are not used).
     type(step_table_t), intent(in) :: table
+    !> Whether the kinematics columns are summarized too (--kinematics).
+    logical, intent(in) :: kinematics
     character(len=:), allocatable :: line
     character(len=:), allocatable :: at
     real(wp) :: work
@@ -223,7 +232,7 @@ contains
       line = line//","//at//"_first,"//at//"_last"
     end if
     do c = 1, size(table%columns)
-      if (.not. summarized(table, c)) cycle
+      if (.not. summarized(table, c, kinematics)) cycle
       associate (name => table%columns(c)%name)
         line = line//","//name//"_max,"//name//"_max_at,"//name//"_min,"//name//"_min_at,"//name//"_mean"
       end associate
@@ -234,9 +243,11 @@ contains
 
   !> Summary CSV row of a run (the columns of `summary_header`): override values as given,
   !> numbers at full precision (as the CSV), "_at" the input angle (or the row number).
-  pure function summary_row(table) result(line)
+  pure function summary_row(table, kinematics) result(line)
     !> The results of one run (at least one row).
     type(step_table_t), intent(in) :: table
+    !> Whether the kinematics columns are summarized too (--kinematics).
+    logical, intent(in) :: kinematics
     character(len=:), allocatable :: line
     type(column_stats_t) :: s
     real(wp) :: work
@@ -253,7 +264,7 @@ contains
     if (table%input_column > 0) line = line//","//cell_number(table%rows(table%input_column, 1), .false.)// &
       ","//cell_number(table%rows(table%input_column, n), .false.)
     do c = 1, size(table%columns)
-      if (.not. summarized(table, c)) cycle
+      if (.not. summarized(table, c, kinematics)) cycle
       s = column_stats(table, c)
       whole = table%is_whole(c)
       line = line//","//cell_number(s%max, whole)//","//at_text(s%max_row)//","//cell_number(s%min, whole)// &

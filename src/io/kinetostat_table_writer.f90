@@ -5,8 +5,9 @@ module kinetostat_table_writer
   use kinetostat_kinds, only: wp
   use kinetostat_selfcheck, only: selfcheck_tolerance
   use kinetostat_step_table, only: step_table_t, echo_record_t, echo_real_kind, echo_int_kind, &
-    echo_logical_kind, echo_array_kind, echo_text_kind, echo_heading_kind, col_force
-  use kinetostat_format, only: echo_number, echo_array_number, footer_number, pad_right, fixed_field
+    echo_logical_kind, echo_array_kind, echo_text_kind, echo_heading_kind, echo_line_kind, col_force
+  use kinetostat_format, only: echo_number, echo_array_number, footer_number, limit_number, pad_right, put_fixed, &
+    fixed_field
   use kinetostat_labels, only: label, lang_ru
   use kinetostat_summary, only: column_stats_t, column_stats, drive_work
   use kinetostat_text, only: upper
@@ -24,8 +25,6 @@ module kinetostat_table_writer
   character(*), parameter :: override_mark = " (--set)"
   !> Values per line of an echoed array.
   integer, parameter :: echo_array_per_line = 5
-  !> Format of the self-check limit in the footer heading.
-  character(*), parameter :: limit_fmt = '(es8.1)'
 
 contains
 
@@ -54,7 +53,8 @@ contains
     end do
     call put_heading(out, label("RESULTS", lang))
     call mech%write_results(table, lang, out)
-    call put_summary(out, table, lang)
+    call put_run_summary(out, table, lang)
+    if (allocated(table%summary)) call put_summary(out, table, lang)
     if (table%has_selfcheck) call put_footer(out, table, lang)
   end subroutine write_table
 
@@ -81,18 +81,17 @@ contains
     integer, intent(in) :: line2_columns(:)
     !> Text after line 1's fields (e.g. the driving moment's field).
     character(*), intent(in) :: tail
-    character(len=:), allocatable :: line
     integer :: i
-    line = fixed_field(v(1), 9, 2)
+    call put_fixed(out, v(1), 9, 2)
     do i = 1, size(line1_columns)
-      line = line//fixed_field(v(line1_columns(i)), 12, 2)
+      call put_fixed(out, v(line1_columns(i)), 12, 2)
     end do
-    call out%put(line//tail)
-    line = repeat(" ", 9)
+    call out%put(tail)
+    call out%append(repeat(" ", 9))
     do i = 1, size(line2_columns)
-      line = line//fixed_field(v(line2_columns(i)), 12, 2)
+      call put_fixed(out, v(line2_columns(i)), 12, 2)
     end do
-    call out%put(line)
+    call out%end_line()
   end subroutine put_two_line_step
 
   !> One INPUT DATA record (its first line ends in " (--set)" when --set gave the value).
@@ -167,7 +166,7 @@ contains
   !> force magnitude column its largest value and the input angle where it occurs; the
   !> driving effort's largest, smallest and mean value (mean over the input angle) and
   !> its work over the run.
-  pure subroutine put_summary(out, table, lang)
+  pure subroutine put_run_summary(out, table, lang)
     type(text_buffer_t), intent(inout) :: out
     type(step_table_t), intent(in) :: table
     integer, intent(in) :: lang
@@ -209,17 +208,33 @@ contains
         label("AT ", lang)//input//" ="//fixed_field(table%rows(table%input_column, k), 9, 2)//" "// &
         label(table%columns(table%input_column)%unit, lang)
     end function at_line
+  end subroutine put_run_summary
+
+  !> The summary block: a heading, then the records (values as INPUT DATA lines, text lines
+  !> through the glossary).
+  pure subroutine put_summary(out, table, lang)
+    type(text_buffer_t), intent(inout) :: out
+    type(step_table_t), intent(in) :: table
+    integer, intent(in) :: lang
+    integer :: i
+    if (allocated(table%summary_heading)) call put_heading(out, label(table%summary_heading, lang))
+    do i = 1, size(table%summary)
+      if (table%summary(i)%kind == echo_line_kind) then
+        call out%put("   "//label(table%summary(i)%name, lang))
+      else
+        call put_echo(out, table%summary(i), lang)
+      end if
+    end do
   end subroutine put_summary
+
 
   !> The self-check footer.
   pure subroutine put_footer(out, table, lang)
     type(text_buffer_t), intent(inout) :: out
     type(step_table_t), intent(in) :: table
     integer, intent(in) :: lang
-    character(len=16) :: limit
     character(len=:), allocatable :: residual_label, mismatch_label
-    write (limit, limit_fmt) selfcheck_tolerance
-    call put_heading(out, label("SELF-CHECK (relative; limit ", lang)//trim(adjustl(limit))//")")
+    call put_heading(out, label("SELF-CHECK (relative; limit ", lang)//limit_number(selfcheck_tolerance)//")")
     if (allocated(table%residual_label)) then
       residual_label = label(table%residual_label, lang)
     else

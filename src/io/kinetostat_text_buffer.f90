@@ -16,6 +16,9 @@ module kinetostat_text_buffer
     integer :: length = 0
   contains
     procedure :: put
+    procedure :: append
+    procedure :: end_line
+    procedure :: reserve
     procedure :: text
   end type text_buffer_t
 
@@ -26,19 +29,48 @@ contains
     class(text_buffer_t), intent(inout) :: self
     !> The line, without its newline.
     character(*), intent(in) :: line
-    character(len=:), allocatable :: grown
     integer :: need
     need = self%length + len(line) + 1
-    if (.not. allocated(self%data)) allocate (character(len=max(initial_capacity, need)) :: self%data)
-    if (need > len(self%data)) then
-      allocate (character(len=max(need, 2 * len(self%data))) :: grown)
-      grown(1:self%length) = self%data(1:self%length)
-      call move_alloc(grown, self%data)
-    end if
+    call self%reserve(len(line) + 1)
     self%data(self%length + 1:self%length + len(line)) = line
     self%data(need:need) = new_line("a")
     self%length = need
   end subroutine put
+
+  !> Append text to the current line (no newline).
+  pure subroutine append(self, s)
+    class(text_buffer_t), intent(inout) :: self
+    !> The text.
+    character(*), intent(in) :: s
+    call self%reserve(len(s))
+    self%data(self%length + 1:self%length + len(s)) = s
+    self%length = self%length + len(s)
+  end subroutine append
+
+  !> End the current line (a newline).
+  pure subroutine end_line(self)
+    class(text_buffer_t), intent(inout) :: self
+    call self%reserve(1)
+    self%length = self%length + 1
+    self%data(self%length:self%length) = new_line("a")
+  end subroutine end_line
+
+  !> Make room for `extra` more bytes after data(1:length) (writers that fill data directly).
+  pure subroutine reserve(self, extra)
+    class(text_buffer_t), intent(inout) :: self
+    !> Bytes needed, beyond the length in use.
+    integer, intent(in) :: extra
+    character(len=:), allocatable :: grown
+    integer :: need
+    need = self%length + extra
+    if (.not. allocated(self%data)) then
+      allocate (character(len=max(initial_capacity, need)) :: self%data)
+    else if (need > len(self%data)) then
+      allocate (character(len=max(need, 2 * len(self%data))) :: grown)
+      grown(1:self%length) = self%data(1:self%length)
+      call move_alloc(grown, self%data)
+    end if
+  end subroutine reserve
 
   !> The text so far.
   pure function text(self) result(s)

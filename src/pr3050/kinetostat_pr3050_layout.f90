@@ -6,7 +6,7 @@ module kinetostat_pr3050_layout
   use kinetostat_error, only: error_t
   use kinetostat_text, only: int_str, real_str
   use kinetostat_vec2, only: angle_360_deg
-  use kinetostat_noise, only: noise_rel, noise_floor, force_columns, angles_0_360
+  use kinetostat_noise, only: noise_rel, noise_floor, force_columns, force_components, angles_0_360
   use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_component, &
     col_moment, col_length, col_other
   use kinetostat_format, only: fixed_field, exp_field
@@ -14,8 +14,11 @@ module kinetostat_pr3050_layout
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_table_writer, only: put_heading
   use kinetostat_mechanism, only: mechanism_t
-  use kinetostat_pr3050, only: pr3050_step_t, pr3050_step, pr3050_check_position
+  use kinetostat_sketch, only: sketch_t
+  use kinetostat_pr3050, only: pr3050_params_t, pr3050_position_t, pr3050_step_t, pr3050_step, &
+    pr3050_check_position, pr3050_position
   use kinetostat_pr3050_deck, only: pr3050_deck_t, read_pr3050_deck, write_pr3050_template
+  use kinetostat_drawing, only: drawing_t, force_load
   implicit none
   private
   public :: pr3050_mechanism_t, new_pr3050, pr3050_solve, pr3050_csv_columns, pr3050_csv_values
@@ -23,6 +26,8 @@ module kinetostat_pr3050_layout
   !> CSV columns, in the spec's order.
   character(*), parameter :: pr3050_csv_columns(*) = [character(len=7) :: &
     "phi3rel", "F14", "F14G", "F34", "F34G", "F32", "F32G", "F2"]
+  !> Pair forces, in the order of the CSV columns.
+  character(*), parameter :: force_names(*) = [character(len=3) :: "F14", "F34", "F32"]
   !> Units of the CSV columns.
   character(*), parameter :: column_units(*) = [character(len=3) :: &
     "deg", "N", "deg", "N", "deg", "N", "deg", "N"]
@@ -70,6 +75,8 @@ module kinetostat_pr3050_layout
     procedure :: solve
     procedure :: write_results
     procedure :: write_template
+    procedure :: sketch
+    procedure :: force_plan
   end type pr3050_mechanism_t
 
 contains
@@ -96,6 +103,21 @@ contains
     type(text_buffer_t), intent(inout) :: out
     call write_pr3050_template(out)
   end subroutine write_template
+
+  !> The topology for a drawing: cylinder 1 from A along the axis (through S1), rod 2 from B
+  !> (through S2) sliding in it, rocker 3 C-B with its centre of mass S3; pivots C, A; the
+  !> rod's guide is the cylinder's axis (phi1).
+  pure subroutine sketch(self, out)
+    class(pr3050_mechanism_t), intent(in) :: self
+    type(sketch_t), intent(out) :: out
+    call out%add_link("1", [character(len=2) :: "A", "S1"])
+    call out%add_link("2", [character(len=2) :: "B", "S2"])
+    call out%add_link("3", [character(len=2) :: "C", "B", "S3", "C"])
+    call out%add_pivot("C")
+    call out%add_pivot("A")
+    call out%add_guide("A", 0.0_wp, "1")
+    out%down = [cos(self%deck%p%gamma), sin(self%deck%p%gamma)]
+  end subroutine sketch
 
   !> All steps of a validated deck; a geometry error (exit 3) names the step and rocker angle.
   subroutine pr3050_solve(deck, steps, error)
@@ -175,11 +197,50 @@ contains
                             n21 + 0.0_wp, m21 + 0.0_wp]
       end associate
     end do
+    do k = 1, size(steps)
+      call put_kinematics(table, k, self%deck%p, steps(k))
+    end do
     call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "F2")
     call dead_position_between_steps(self%deck, warning)
     if (allocated(warning)) call table%add_warning(warning)
     call echo_deck(self%deck, table)
   end subroutine solve
+
+  !> The kinematics columns of step `k` (frame: origin C, x from C to A): joints C, A, B and
+  !> centres of mass S1, S2, S3; links 1 (cylinder) and 2 (rod), which turn together, and 3
+  !> (rocker); accelerations of S1, S2, S3; components of the pair forces in the same frame.
+  pure subroutine put_kinematics(table, k, p, s)
+    !> The step table (columns appended on first use).
+    type(step_table_t), intent(inout) :: table
+    !> Row.
+    integer, intent(in) :: k
+    !> Mechanism data.
+    type(pr3050_params_t), intent(in) :: p
+    !> The computed step.
+    type(pr3050_step_t), intent(in) :: s
+    type(pr3050_position_t) :: pos
+    real(wp) :: w2, f(2, 3), floor
+    integer :: i
+    pos = pr3050_position(p, s%phi3)
+    w2 = s%omega3**2
+    call table%put_point(k, "C", [0.0_wp, 0.0_wp])
+    call table%put_point(k, "A", pos%a)
+    call table%put_point(k, "B", pos%b)
+    call table%put_point(k, "S1", pos%s1)
+    call table%put_point(k, "S2", pos%s2)
+    call table%put_point(k, "S3", pos%s3)
+    call table%put_link(k, "1", pos%phi2, s%omega2, s%eps2)
+    call table%put_link(k, "2", pos%phi2, s%omega2, s%eps2)
+    call table%put_link(k, "3", s%phi3, s%omega3, s%eps3)
+    call table%put_acceleration(k, "S1", pos%a_s1q * w2 + pos%v_s1q * s%eps3)
+    call table%put_acceleration(k, "S2", pos%a_s2q * w2 + pos%v_s2q * s%eps3)
+    call table%put_acceleration(k, "S3", pos%a_s3q * w2 + pos%v_s3q * s%eps3)
+    f = reshape([s%f14, s%f34, s%f32], [2, 3])
+    floor = noise_floor(f, [s%f2])
+    do i = 1, size(force_names)
+      call table%put_components(k, force_names(i), force_components(f(:, i), floor), 0.0_wp)
+    end do
+  end subroutine put_kinematics
 
   !> The row of CSV values of one step.
   !> Forces below `noise_rel` times the step's largest force are roundoff: printed as 0 with angle 0.
@@ -278,5 +339,34 @@ contains
     real(wp) :: angle
     angle = real(k - 1, wp) * deck%dphi3
   end function phi3rel
+
+  !> The forces of row `k` on its drawing (--format svg --at K): the pair forces at their
+  !> joints, the driving force F2 on the rod (along A->B, at S2), the weights (angle gamma),
+  !> the inertia forces and moments of links 1, 2 and 3.
+  pure subroutine force_plan(self, table, k, drawing, error)
+    class(pr3050_mechanism_t), intent(in) :: self
+    type(step_table_t), intent(in) :: table
+    integer, intent(in) :: k
+    type(drawing_t), intent(inout) :: drawing
+    type(error_t), allocatable, intent(out) :: error
+    character(len=3), parameter :: pairs(*) = [character(len=3) :: "F14", "F34", "F32"]
+    character(len=1), parameter :: pair_points(*) = ["A", "C", "B"]
+    real(wp) :: gravity(2), a(2), b(2), u(2)
+    integer :: i
+    associate (p => self%deck%p)
+      do i = 1, size(pairs)
+        call drawing%pair_from_table(table, k, trim(pairs(i)), pair_points(i), error)
+        if (allocated(error)) return
+      end do
+      a = drawing%at("A")
+      b = drawing%at("B")
+      u = (b - a) / max(norm2(b - a), tiny(1.0_wp))
+      call drawing%add_force("F2", force_load, drawing%at("S2"), table%rows(table%column_index("F2"), k) * u)
+      gravity = p%g * [cos(p%gamma), sin(p%gamma)]
+      call drawing%add_link_loads(table, k, "1", "S1", "S1", p%m1, p%j1, gravity)
+      call drawing%add_link_loads(table, k, "2", "S2", "S2", p%m2, p%j2, gravity)
+      call drawing%add_link_loads(table, k, "3", "S3", "S3", p%m3, p%j3, gravity)
+    end associate
+  end subroutine force_plan
 
 end module kinetostat_pr3050_layout

@@ -5,7 +5,7 @@ module kinetostat_pr3207_deck
   use kinetostat_text, only: real_str, int_str
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, max_deck_array, &
-    deck_source_t, namelist_failure, deck_error, is_set, require_set, require_positive, &
+    deck_source_t, namelist_probe_t, require_all_set, deck_error, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn
   use kinetostat_pr3207, only: pr3207_params_t
   implicit none
@@ -109,6 +109,7 @@ contains
     integer :: ios, n_f5c, k
     character(len=512) :: msg
     type(deck_context_t) :: ctx
+    type(namelist_probe_t) :: probe
     logical :: two_value_given
     namelist /pr3207/ l_ab, l_ac, l_cd, l_cs3, m1, m3, m5, j3, omega1, g, phi_start, dphi, n, &
       f5c, f5c_work, f5c_idle, phi_cut_start, phi_cut_end
@@ -124,9 +125,20 @@ contains
 
     read (source%lines, nml=pr3207, iostat=ios, iomsg=msg)
     if (ios /= 0) then
-      call namelist_failure(ctx, ios, msg, error)
+      ! find the line and the assignment that failed (gfortran's message does not say)
+      call probe%start(source, ios, msg)
+      do while (probe%more(source))
+        read (probe%lines, nml=pr3207, iostat=ios, iomsg=msg)
+        call probe%take(ios, msg)
+      end do
+      call probe%report(source, ctx, error)
       return
     end if
+
+    ! every missing required variable in one message
+    call require_all_set(ctx, [character(len=6) :: "l_ab", "l_ac", "l_cd", "l_cs3", "m1", "m3", "m5", "j3", "omega1", "dphi"], &
+      [l_ab, l_ac, l_cd, l_cs3, m1, m3, m5, j3, omega1, dphi], error)
+    if (allocated(error)) return
 
     ! lengths, masses, inertia, speed
     call require_positive(ctx, "l_ab", l_ab, error); if (allocated(error)) return

@@ -4,15 +4,17 @@ module kinetostat_pr3207_layout
   use kinetostat_kinds, only: wp, deg_to_rad, rad_to_deg
   use kinetostat_deck, only: deck_source_t
   use kinetostat_error, only: error_t
-  use kinetostat_noise, only: noise_floor, force_columns, angles_0_360
+  use kinetostat_noise, only: noise_floor, force_columns, force_components, angles_0_360
   use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_moment
   use kinetostat_format, only: fixed_field
   use kinetostat_labels, only: lang_ru
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_mechanism, only: mechanism_t
+  use kinetostat_sketch, only: sketch_t
   use kinetostat_table_writer, only: put_two_line_step
-  use kinetostat_pr3207, only: pr3207_step_t, pr3207_step
+  use kinetostat_pr3207, only: pr3207_params_t, pr3207_position_t, pr3207_step_t, pr3207_step, pr3207_position
   use kinetostat_pr3207_deck, only: pr3207_deck_t, read_pr3207_deck, write_pr3207_template
+  use kinetostat_drawing, only: drawing_t, force_load
   implicit none
   private
   public :: pr3207_mechanism_t, new_pr3207, pr3207_solve, pr3207_csv_columns, pr3207_csv_values
@@ -20,6 +22,8 @@ module kinetostat_pr3207_layout
   !> CSV columns, in the spec's order.
   character(*), parameter :: pr3207_csv_columns(*) = [character(len=4) :: &
     "phi1", "F16", "F16G", "F21", "F21G", "F36", "F36G", "F34", "F34G", "F56", "F56G", "M1"]
+  !> Pair forces, in the order of the CSV columns.
+  character(*), parameter :: force_names(*) = [character(len=3) :: "F16", "F21", "F36", "F34", "F56"]
   !> Units of the columns.
   character(*), parameter :: column_units(*) = [character(len=3) :: &
     "deg", "N", "deg", "N", "deg", "N", "deg", "N", "deg", "N", "deg", "N*m"]
@@ -48,6 +52,8 @@ module kinetostat_pr3207_layout
     procedure :: solve
     procedure :: write_results
     procedure :: write_template
+    procedure :: sketch
+    procedure :: force_plan
   end type pr3207_mechanism_t
 
 contains
@@ -74,6 +80,24 @@ contains
     type(text_buffer_t), intent(inout) :: out
     call write_pr3207_template(out)
   end subroutine write_template
+
+  !> The topology for a drawing: crank A-B, block 2 at B sliding along the lever C-D, block 4
+  !> at D sliding along x in the ram's slot, the ram from its guide (x = 0, along y) to D;
+  !> pivots A, C; gravity along +x.
+  pure subroutine sketch(self, out)
+    class(pr3207_mechanism_t), intent(in) :: self
+    type(sketch_t), intent(out) :: out
+    call out%add_link("1", [character(len=2) :: "A", "B"])
+    call out%add_link("2", ["B"], 0.0_wp, "3")
+    call out%add_link("3", [character(len=2) :: "C", "D"])
+    call out%add_link("4", ["D"], 0.0_wp, "")
+    call out%add_link("5", [character(len=2) :: "S5", "D"])
+    call out%add_pivot("A")
+    call out%add_pivot("C")
+    call out%add_guide("S5", 90.0_wp, "")
+    call out%add_guide("D", 0.0_wp, "5")
+    out%down = [1.0_wp, 0.0_wp]
+  end subroutine sketch
 
   !> All steps of a validated deck.
   pure subroutine pr3207_solve(deck, steps)
@@ -102,6 +126,9 @@ contains
     do k = 1, size(steps)
       table%rows(:, k) = pr3207_csv_values(steps(k), self%deck%p%l_ab)
     end do
+    do k = 1, size(steps)
+      call put_kinematics(table, k, self%deck%p, steps(k))
+    end do
     call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "M1")
     call table%note_load(self%deck%f5c)
     call echo_deck(self%deck, table)
@@ -116,13 +143,56 @@ contains
     real(wp), intent(in) :: l_ab
     real(wp) :: v(size(pr3207_csv_columns))
     real(wp) :: floor, f(2, 5)
-    f = reshape([s%f16, s%f21, s%f36, s%f34, s%f56], [2, 5])
+    f(:, 1) = s%f16
+    f(:, 2) = s%f21
+    f(:, 3) = s%f36
+    f(:, 4) = s%f34
+    f(:, 5) = s%f56
     floor = noise_floor(f, [real(wp) ::])
     v(1) = s%phi1 * rad_to_deg
     v(2:11) = force_columns(f, floor, angles_0_360)
     v(12) = s%m1
     if (abs(v(12)) <= floor * l_ab) v(12) = 0.0_wp
   end function pr3207_csv_values
+
+  !> The kinematics columns of step `k` (frame: origin A, x from A to C): joints A, B, C, D
+  !> and centres of mass S1 (= A), S3, S5 (the ram's, taken on the line x = 0 through A, as
+  !> the generic twin deck does: only its travel y5 = y_D is defined); links 1 (crank), 2
+  !> (block, turns with the lever) and 3 (lever); accelerations of S1, S3, S5; components of
+  !> the pair forces in the same frame. Block 4 and the ram 5 translate (no angle columns).
+  pure subroutine put_kinematics(table, k, p, s)
+    !> The step table (columns appended on first use).
+    type(step_table_t), intent(inout) :: table
+    !> Row.
+    integer, intent(in) :: k
+    !> Mechanism data.
+    type(pr3207_params_t), intent(in) :: p
+    !> The computed step.
+    type(pr3207_step_t), intent(in) :: s
+    type(pr3207_position_t) :: pos
+    real(wp) :: w2, f(2, 5), floor
+    integer :: i
+    pos = pr3207_position(p, s%phi1)
+    w2 = p%omega1**2
+    call table%put_point(k, "A", [0.0_wp, 0.0_wp])
+    call table%put_point(k, "B", pos%b)
+    call table%put_point(k, "C", [p%l_ac, 0.0_wp])
+    call table%put_point(k, "D", pos%d)
+    call table%put_point(k, "S1", [0.0_wp, 0.0_wp])
+    call table%put_point(k, "S3", pos%s3)
+    call table%put_point(k, "S5", [0.0_wp, pos%y5])
+    call table%put_link(k, "1", s%phi1, p%omega1, 0.0_wp)
+    call table%put_link(k, "2", pos%phi3, pos%u31 * p%omega1, pos%eps31 * w2)
+    call table%put_link(k, "3", pos%phi3, pos%u31 * p%omega1, pos%eps31 * w2)
+    call table%put_acceleration(k, "S1", [0.0_wp, 0.0_wp])
+    call table%put_acceleration(k, "S3", pos%a_s3q * w2)
+    call table%put_acceleration(k, "S5", [0.0_wp, pos%a5q * w2])
+    f = reshape([s%f16, s%f21, s%f36, s%f34, s%f56], [2, 5])
+    floor = noise_floor(f, [real(wp) ::])
+    do i = 1, size(force_names)
+      call table%put_components(k, force_names(i), force_components(f(:, i), floor), 0.0_wp)
+    end do
+  end subroutine put_kinematics
 
   !> The INPUT DATA echo of the deck.
   pure subroutine echo_deck(deck, table)
@@ -171,5 +241,32 @@ contains
                              fixed_field(table%rows(12, k), 12, 3))
     end do
   end subroutine write_results
+
+  !> The forces of row `k` on its drawing (--format svg --at K): the pair forces at their
+  !> joints (F56 at the ram's S5), the cutting force F5c on the ram along y, the weights and
+  !> inertia forces of links 1, 3 and 5, the inertia moment of the lever, and M1.
+  pure subroutine force_plan(self, table, k, drawing, error)
+    class(pr3207_mechanism_t), intent(in) :: self
+    type(step_table_t), intent(in) :: table
+    integer, intent(in) :: k
+    type(drawing_t), intent(inout) :: drawing
+    type(error_t), allocatable, intent(out) :: error
+    character(len=3), parameter :: pairs(*) = [character(len=3) :: "F16", "F21", "F36", "F34", "F56"]
+    character(len=2), parameter :: pair_points(*) = [character(len=2) :: "A", "B", "C", "D", "S5"]
+    real(wp) :: gravity(2)
+    integer :: i
+    associate (p => self%deck%p)
+      do i = 1, size(pairs)
+        call drawing%pair_from_table(table, k, trim(pairs(i)), trim(pair_points(i)), error)
+        if (allocated(error)) return
+      end do
+      call drawing%add_force("F5c", force_load, drawing%at("S5"), [0.0_wp, self%deck%f5c(k)])
+      gravity = [p%g, 0.0_wp]
+      call drawing%add_link_loads(table, k, "1", "S1", "S1", p%m1, 0.0_wp, gravity)
+      call drawing%add_link_loads(table, k, "3", "S3", "S3", p%m3, p%j3, gravity)
+      call drawing%add_link_loads(table, k, "5", "S5", "S5", p%m5, 0.0_wp, gravity)
+      call drawing%add_moment("M1", force_load, drawing%at("A"), table%rows(table%column_index("M1"), k))
+    end associate
+  end subroutine force_plan
 
 end module kinetostat_pr3207_layout

@@ -5,7 +5,7 @@ module kinetostat_sixbar_deck
   use kinetostat_text, only: real_str, int_str
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, max_deck_array, &
-    deck_source_t, namelist_failure, deck_error, is_set, require_set, require_positive, &
+    deck_source_t, namelist_probe_t, require_all_set, deck_error, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn
   use kinetostat_sixbar, only: sixbar_params_t, sixbar_extreme_phi1
   implicit none
@@ -86,6 +86,7 @@ contains
     integer :: ios, n_f5, k
     character(len=512) :: msg
     type(deck_context_t) :: ctx
+    type(namelist_probe_t) :: probe
     namelist /sixbar/ a, b, l1, lam2, lam_s2, lam3, lam_de, lam4, lam_s4, lam_e, &
       m1, m2, m3, m4, m5, j1, j2, j3, j4, omega1, g, dphi, n, phi_start, start_at_extreme, f5, legacy_eq2
 
@@ -104,9 +105,21 @@ contains
 
     read (source%lines, nml=sixbar, iostat=ios, iomsg=msg)
     if (ios /= 0) then
-      call namelist_failure(ctx, ios, msg, error)
+      ! find the line and the assignment that failed (gfortran's message does not say)
+      call probe%start(source, ios, msg)
+      do while (probe%more(source))
+        read (probe%lines, nml=sixbar, iostat=ios, iomsg=msg)
+        call probe%take(ios, msg)
+      end do
+      call probe%report(source, ctx, error)
       return
     end if
+
+    ! every missing required variable in one message
+    call require_all_set(ctx, [character(len=6) :: "a", "b", "l1", "lam2", "lam_s2", "lam3", "lam_de", "lam4", "lam_s4", "lam_e", &
+      "m1", "m2", "m3", "m4", "m5", "j1", "j2", "j3", "j4", "omega1"], &
+      [a, b, l1, lam2, lam_s2, lam3, lam_de, lam4, lam_s4, lam_e, m1, m2, m3, m4, m5, j1, j2, j3, j4, omega1], error)
+    if (allocated(error)) return
 
     ! geometry: D, lengths and ratios
     call require_set(ctx, "a", a, error); if (allocated(error)) return

@@ -1,21 +1,23 @@
 !> T.FTN as a mechanism of the run pipeline: deck -> every crank step -> step table, and the
 !> legacy table layout of appendix 2 (two lines per step).
 module kinetostat_sixbar_layout
-  use kinetostat_kinds, only: wp, deg_to_rad, rad_to_deg
+  use kinetostat_kinds, only: wp, pi, deg_to_rad, rad_to_deg
   use kinetostat_deck, only: deck_source_t
   use kinetostat_error, only: error_t, fatal_error, exit_geometry
   use kinetostat_text, only: real_str, int_str
-  use kinetostat_noise, only: noise_floor, force_columns, angles_pm180
+  use kinetostat_noise, only: noise_floor, force_columns, force_components, angles_pm180
   use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_component, &
     col_moment
   use kinetostat_format, only: fixed_field
   use kinetostat_labels, only: lang_ru
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_mechanism, only: mechanism_t
+  use kinetostat_sketch, only: sketch_t
   use kinetostat_table_writer, only: put_heading, put_two_line_step
-  use kinetostat_sixbar, only: sixbar_step_t, sixbar_step, sixbar_ok, sixbar_open1, sixbar_dead1, &
-    sixbar_open2, sixbar_dead2
+  use kinetostat_sixbar, only: sixbar_params_t, sixbar_step_t, sixbar_step, sixbar_ok, sixbar_open1, &
+    sixbar_dead1, sixbar_open2, sixbar_dead2, sixbar_frame2_to_frame1, sixbar_down1
   use kinetostat_sixbar_deck, only: sixbar_deck_t, read_sixbar_deck, write_sixbar_template
+  use kinetostat_drawing, only: drawing_t, force_load
   implicit none
   private
   public :: sixbar_mechanism_t, new_sixbar, sixbar_solve, sixbar_csv_columns, sixbar_csv_values
@@ -24,6 +26,10 @@ module kinetostat_sixbar_layout
   character(*), parameter :: sixbar_csv_columns(*) = [character(len=4) :: &
     "phi1", "F21", "F21G", "F32", "F32G", "F43", "F43G", "F45", "F45G", "F36", "F36G", &
     "F16", "F16G", "F56", "M1"]
+  !> Pair forces with an angle column (and the guide's F56), in the order of the CSV columns.
+  character(*), parameter :: force_names(*) = [character(len=3) :: "F21", "F32", "F43", "F45", "F36", "F16", "F56"]
+  !> Whether a force of force_names is given in frame 2 (the others in frame 1).
+  logical, parameter :: force_in_frame2(*) = [.false., .false., .true., .true., .false., .false., .true.]
   !> Units of the columns.
   character(*), parameter :: column_units(*) = [character(len=3) :: &
     "deg", "N", "deg", "N", "deg", "N", "deg", "N", "deg", "N", "deg", "N", "deg", "N", "N*m"]
@@ -68,6 +74,8 @@ module kinetostat_sixbar_layout
     procedure :: solve
     procedure :: write_results
     procedure :: write_template
+    procedure :: sketch
+    procedure :: force_plan
   end type sixbar_mechanism_t
 
 contains
@@ -95,6 +103,24 @@ contains
     type(text_buffer_t), intent(inout) :: out
     call write_sixbar_template(out)
   end subroutine write_template
+
+  !> The topology for a drawing (frame 1): crank A-B, rod B-C, rocker C-D-E, rod E-H, slider 5
+  !> at H on the guide along x2 (at beta - 180 deg); pivots A, D; gravity -y0.
+  pure subroutine sketch(self, out)
+    class(sixbar_mechanism_t), intent(in) :: self
+    type(sketch_t), intent(out) :: out
+    real(wp) :: x2
+    x2 = atan2(self%deck%p%a, self%deck%p%b) * rad_to_deg - 180.0_wp
+    call out%add_link("1", ["A", "B"])
+    call out%add_link("2", ["B", "C"])
+    call out%add_link("3", ["C", "D", "E"])
+    call out%add_link("4", ["E", "H"])
+    call out%add_link("5", ["H"], x2, "")
+    call out%add_pivot("A")
+    call out%add_pivot("D")
+    call out%add_guide("H", x2, "")
+    out%down = sixbar_down1(self%deck%p)
+  end subroutine sketch
 
   !> All steps of a validated deck; a step that cannot be assembled (or is a dead position)
   !> is a geometry error naming the step number and the crank angle.
@@ -160,6 +186,9 @@ contains
     do k = 1, size(steps)
       table%rows(:, k) = sixbar_csv_values(steps(k), self%deck%p%l1)
     end do
+    do k = 1, size(steps)
+      call put_kinematics(table, k, self%deck%p, steps(k))
+    end do
     call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "M1")
     call table%note_load(self%deck%f5)
     call echo_deck(self%deck, table)
@@ -183,6 +212,58 @@ contains
     v(15) = s%m1
     if (abs(v(15)) <= floor * l1) v(15) = 0.0_wp
   end function sixbar_csv_values
+
+  !> The kinematics columns of step `k`, all positions and link angles in frame 1 (origin A,
+  !> x1 along AD: the frame of phi1 and of the generic twin deck data/assur_sixbar.nml):
+  !> joints A, B, C, D, E, H and centres of mass S1 (= A), S2, S3 (= D), S4, S5 (= H); links
+  !> 1..4 (the slider 5 translates along x2); accelerations of S1..S5; components of the
+  !> pair forces in the frames of their angle columns: F21, F32, F36, F16 in frame 1; F43,
+  !> F45 and the guide's F56 (along y2) in frame 2, whose x axis lies at beta - 180 deg.
+  pure subroutine put_kinematics(table, k, p, s)
+    !> The step table (columns appended on first use).
+    type(step_table_t), intent(inout) :: table
+    !> Row.
+    integer, intent(in) :: k
+    !> Mechanism data.
+    type(sixbar_params_t), intent(in) :: p
+    !> The computed step.
+    type(sixbar_step_t), intent(in) :: s
+    real(wp) :: w, w2, frame2, f(2, 7), floor, zero(2)
+    integer :: i
+    w = p%omega1
+    w2 = w**2
+    zero = 0.0_wp
+    ! angle of x2 in frame 1, rad: beta - pi
+    frame2 = atan2(p%a, p%b) - pi
+    associate (pos => s%pos)
+      call table%put_point(k, "A", zero)
+      call table%put_point(k, "B", pos%b)
+      call table%put_point(k, "C", pos%c)
+      call table%put_point(k, "D", pos%d)
+      call table%put_point(k, "E", pos%e1)
+      call table%put_point(k, "H", pos%d + sixbar_frame2_to_frame1(p, pos%h))
+      call table%put_point(k, "S1", zero)
+      call table%put_point(k, "S2", pos%s2)
+      call table%put_point(k, "S3", pos%d)
+      call table%put_point(k, "S4", pos%d + sixbar_frame2_to_frame1(p, pos%s4))
+      call table%put_point(k, "S5", pos%d + sixbar_frame2_to_frame1(p, pos%h))
+      call table%put_link(k, "1", pos%phi1, w, 0.0_wp)
+      call table%put_link(k, "2", pos%phi2, pos%u21 * w, s%eps(2))
+      call table%put_link(k, "3", pos%phi3, pos%u31 * w, s%eps(3))
+      call table%put_link(k, "4", modulo(pos%phi4 + frame2 + pi, 2.0_wp * pi) - pi, pos%u41 * w, s%eps(4))
+      call table%put_acceleration(k, "S1", zero)
+      call table%put_acceleration(k, "S2", pos%a_s2q * w2)
+      call table%put_acceleration(k, "S3", zero)
+      call table%put_acceleration(k, "S4", sixbar_frame2_to_frame1(p, pos%a_s4q * w2))
+      call table%put_acceleration(k, "S5", sixbar_frame2_to_frame1(p, [pos%a_hq(1) * w2, 0.0_wp]))
+    end associate
+    f = reshape([s%f21, s%f32, s%f43, s%f45, s%f36, s%f16, [0.0_wp, s%f56]], [2, 7])
+    floor = noise_floor(f(:, 1:6), [s%f56])
+    do i = 1, size(force_names)
+      call table%put_components(k, trim(force_names(i)), force_components(f(:, i), floor), &
+                                merge(frame2 * rad_to_deg, 0.0_wp, force_in_frame2(i)))
+    end do
+  end subroutine put_kinematics
 
   !> The INPUT DATA echo of the deck.
   pure subroutine echo_deck(deck, table)
@@ -262,5 +343,36 @@ contains
       call out%put(fixed_field(table%rows(1, k), 9, 2)//fixed_field(table%rows(15, k), 12, 3))
     end do
   end subroutine write_results_ru
+
+  !> The forces of row `k` on its drawing (--format svg --at K): every pair force at its
+  !> joint (F56, the guide's normal force, at H), the load F5 along x2, the weights (-y0),
+  !> inertia forces and moments of links 1..5, and M1.
+  pure subroutine force_plan(self, table, k, drawing, error)
+    class(sixbar_mechanism_t), intent(in) :: self
+    type(step_table_t), intent(in) :: table
+    integer, intent(in) :: k
+    type(drawing_t), intent(inout) :: drawing
+    type(error_t), allocatable, intent(out) :: error
+    character(len=3), parameter :: pairs(*) = [character(len=3) :: "F21", "F32", "F43", "F45", "F36", "F16", "F56"]
+    character(len=1), parameter :: pair_points(*) = ["B", "C", "E", "H", "D", "A", "H"]
+    real(wp) :: x2, gravity(2)
+    integer :: i
+    associate (p => self%deck%p)
+      do i = 1, size(pairs)
+        call drawing%pair_from_table(table, k, trim(pairs(i)), pair_points(i), error)
+        if (allocated(error)) return
+      end do
+      ! x2 in frame 1, rad
+      x2 = atan2(p%a, p%b) - pi
+      call drawing%add_force("F5", force_load, drawing%at("H"), self%deck%f5(k) * [cos(x2), sin(x2)])
+      gravity = p%g * sixbar_down1(p)
+      call drawing%add_link_loads(table, k, "1", "S1", "S1", p%m1, p%j1, gravity)
+      call drawing%add_link_loads(table, k, "2", "S2", "S2", p%m2, p%j2, gravity)
+      call drawing%add_link_loads(table, k, "3", "S3", "S3", p%m3, p%j3, gravity)
+      call drawing%add_link_loads(table, k, "4", "S4", "S4", p%m4, p%j4, gravity)
+      call drawing%add_link_loads(table, k, "5", "S5", "S5", p%m5, 0.0_wp, gravity)
+      call drawing%add_moment("M1", force_load, drawing%at("A"), table%rows(table%column_index("M1"), k))
+    end associate
+  end subroutine force_plan
 
 end module kinetostat_sixbar_layout

@@ -3,7 +3,8 @@
 cli_passed=0
 cli_failed=0
 cli_tmp="$(mktemp -d)"
-# numdiff tolerances for golden comparisons: relative 1e-9, absolute 1e-9 (for exact zeros).
+# Tolerances of golden comparisons (kinetostat diff and numdiff): relative 1e-9, absolute 1e-9
+# (for exact zeros).
 golden_rtol=1e-9
 golden_atol=1e-9
 
@@ -41,20 +42,49 @@ expect_input_error() {
   pass
 }
 
-# expect_same NAME EXPECTED ACTUAL: numdiff within the golden tolerances.
+# is_output FILE: whether FILE is an output of the program (a legacy table or a CSV file).
+is_output() {
+  head -1 "$1" | grep -Eq '^ KINETOSTAT |^[A-Za-z0-9_]+(,[A-Za-z0-9_]+)+$'
+}
+
+# ks_diff EXPECTED ACTUAL: `kinetostat diff` with the golden tolerances (rtol and atol 1e-9 in
+# every column's unit); its report in $cli_tmp/ks_diff.out, its exit code returned.
+ks_diff() {
+  "$KINETOSTAT" diff --rtol "$golden_rtol" --atol "$golden_atol" "$1" "$2" >"$cli_tmp/ks_diff.out" 2>&1
+}
+
+# expect_same NAME EXPECTED ACTUAL: outputs of the program agree by `kinetostat diff` (angles
+# modulo 360, deck lines ignored) and, as a second opinion, by numdiff; other files (rows cut
+# out of a CSV) by numdiff alone. All within the golden tolerances.
 expect_same() {
-  local name="$1" expected="$2" actual="$3"
+  local name="$1" expected="$2" actual="$3" drc
+  if is_output "$expected"; then
+    ks_diff "$expected" "$actual"; drc=$?
+    if [ "$drc" -ne 0 ]; then
+      fail "$name" "kinetostat diff (exit $drc) finds $actual differs from $expected beyond rel $golden_rtol / abs $golden_atol:
+$(head -20 "$cli_tmp/ks_diff.out")"
+      return
+    fi
+  fi
   if numdiff -q -s ' \t\n,=()' -r "$golden_rtol" -a "$golden_atol" "$expected" "$actual" >/dev/null 2>&1; then
     pass
   else
-    fail "$name" "differs from $expected beyond rel $golden_rtol / abs $golden_atol:
+    fail "$name" "numdiff: differs from $expected beyond rel $golden_rtol / abs $golden_atol:
 $(numdiff -s ' \t\n,=()' -r "$golden_rtol" -a "$golden_atol" "$expected" "$actual" 2>&1 | head -20)"
   fi
 }
 
-# expect_differ NAME EXPECTED ACTUAL: numdiff must report a difference (the comparison can fail).
+# expect_differ NAME EXPECTED ACTUAL: the comparison must report a difference (it can fail):
+# `kinetostat diff` exits 1 on outputs of the program, and numdiff differs too.
 expect_differ() {
-  local name="$1" expected="$2" actual="$3"
+  local name="$1" expected="$2" actual="$3" drc
+  if is_output "$expected"; then
+    ks_diff "$expected" "$actual"; drc=$?
+    if [ "$drc" -ne 1 ]; then
+      fail "$name" "kinetostat diff exits $drc (expected 1) on a perturbed file: $(head -5 "$cli_tmp/ks_diff.out")"
+      return
+    fi
+  fi
   if numdiff -q -s ' \t\n,=()' -r "$golden_rtol" -a "$golden_atol" "$expected" "$actual" >/dev/null 2>&1; then
     fail "$name" "numdiff accepted a perturbed file: the golden comparison cannot fail"
   else

@@ -36,3 +36,10 @@ missing = [l for l in shown if l not in actual]
 if missing or len(shown) < 10:
     print("missing:", missing, "shown:", len(shown)); sys.exit(1)
 PY
+
+# tutorial §5: the same run diffs as the same (exit 0); the changed load as different (exit 1)
+run_ks docs/examples/fourbar.nml --format csv; cp "$out" "$cli_tmp/tut_expected.csv"
+run_ks docs/examples/fourbar.nml --format csv --set 'moment(1)%value=-20.001'; cp "$out" "$cli_tmp/tut_fresh.csv"
+expect_exit docs-tutorial-diff-same 0 diff "$cli_tmp/tut_expected.csv" "$cli_tmp/tut_expected.csv"
+expect_exit docs-tutorial-diff-changed 1 diff "$cli_tmp/tut_expected.csv" "$cli_tmp/tut_fresh.csv"
+if grep -q '^different: 415 of 450 values differ' "$out"; then pass; else fail docs-tutorial-diff-report "$(tail -1 "$out")"; fi

@@ -27,7 +27,9 @@ for c in cols[1:] if has_input else cols:
     if c + "_max" not in s:
         continue
     v = [float(r[c]) for r in rows]
-    kmax = max(range(len(v)), key=lambda k: (v[k], -k)); kmin = min(range(len(v)), key=lambda k: (v[k], k))
+    tie = 1e-12 * max(abs(t) for t in v)  # first row within 1e-12 of the largest magnitude
+    kmax = next(k for k in range(len(v)) if v[k] >= max(v) - tie)
+    kmin = next(k for k in range(len(v)) if v[k] <= min(v) + tie)
     close(float(s[c + "_max"]), v[kmax], c + "_max"); close(float(s[c + "_min"]), v[kmin], c + "_min")
     at = (lambda k: x[k]) if has_input else (lambda k: k + 1)
     close(float(s[c + "_max_at"]), at(kmax), c + "_max_at"); close(float(s[c + "_min_at"]), at(kmin), c + "_min_at")

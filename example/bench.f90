@@ -1,0 +1,250 @@
+!> The benchmark of kinetostat (not a test: it prints figures, it never fails on them).
+!>
+!>   fpm run --profile release --example bench [-- [MAX_STEPS] [KIND...]]
+!>
+!> For every stepped mechanism (a bundled deck scaled in memory to 10^4, 10^5 and 10^6 steps,
+!> up to MAX_STEPS) it prints the solve rate (kernel and step table, steps/s), the end-to-end
+!> rate of CSV, the legacy table and JSON written to a file (deck text -> output file, the
+!> pipeline of `kinetostat DECK -o FILE`), the peak resident memory of each end-to-end run
+!> (VmHWM of /proc/self/status after resetting it through /proc/self/clear_refs), and every
+!> rate as a fraction of the physical-limit estimate of one dedicated step on one core.
+!> Rates are steps per second of processor time (the machine may be shared: wall time would
+!> measure the other processes too). Run from the project root (it reads data/*.nml).
+program bench
+  use, intrinsic :: iso_fortran_env, only: int64, output_unit
+  use kinetostat_kinds, only: wp
+  use kinetostat_error, only: error_t
+  use kinetostat_deck, only: deck_source_t, deck_source_from_text, load_deck, read_group_name
+  use kinetostat_mechanism, only: mechanism_t
+  use kinetostat_registry, only: create_mechanism
+  use kinetostat_step_table, only: step_table_t
+  use kinetostat_text_buffer, only: text_buffer_t
+  use kinetostat_run, only: run_options_t, run_mechanism, format_csv, format_table, format_json
+  use kinetostat_output, only: write_output_file
+  implicit none
+
+  !> Physical-limit estimate of one dedicated step on one core, steps/s: ~300 flops and ~15
+  !> sin/atan2 calls of 10-11 ns each (issue 14).
+  real(wp), parameter :: limit_rate = 2.0e6_wp
+  !> Step counts of the runs.
+  integer, parameter :: step_counts(*) = [10000, 100000, 1000000]
+  !> Row format: kind, steps, solve rate, three end-to-end rates, three peaks, ratios.
+  character(*), parameter :: row_fmt = '(a8,i9,4es10.2,3f8.1,4f7.3)'
+  !> Header lines of the table.
+  character(*), parameter :: header(*) = [character(len=111) :: &
+    "                  steps per CPU second (solve = kernel + table)   peak MiB               ratio to limit", &
+    "    kind    steps     solve       csv     table      json     csv   table    json  solve    csv  table   json"]
+
+  !> A benchmarked case: the bundled deck and the kind of override its step count needs.
+  type :: bench_case_t
+    !> Mechanism kind (namelist group).
+    character(len=8) :: kind
+    !> Bundled deck scaled.
+    character(len=32) :: deck
+  end type bench_case_t
+
+  type(bench_case_t), parameter :: cases(*) = [ &
+    bench_case_t("pr3207", "data/pr3207.nml"), &
+    bench_case_t("pr3050", "data/pr3050.nml"), &
+    bench_case_t("sixbar", "data/sixbar.nml"), &
+    bench_case_t("assur", "data/assur_sixbar.nml"), &
+    bench_case_t("cam", "data/cam_flat.nml")]
+
+  character(len=:), allocatable :: out_path, arg
+  integer :: max_steps, i, j, length
+  logical :: any_kind, wanted(size(cases))
+
+  max_steps = step_counts(size(step_counts))
+  any_kind = .false.
+  wanted = .false.
+  do i = 1, command_argument_count()
+    call get_command_argument(i, length=length)
+    allocate (character(len=length) :: arg)
+    call get_command_argument(i, arg)
+    if (verify(arg, "0123456789") == 0 .and. length > 0) then
+      read (arg, *) max_steps
+    else
+      any_kind = .true.
+      wanted = wanted .or. cases%kind == arg
+    end if
+    deallocate (arg)
+  end do
+  if (.not. any_kind) wanted = .true.
+  out_path = "/tmp/kinetostat-bench.out"
+
+  write (output_unit, '(a,es8.1,a)') "kinetostat bench: physical-limit estimate ", limit_rate, &
+    " steps/s (one dedicated step, one core)"
+  do i = 1, size(header)
+    write (output_unit, '(a)') trim(header(i))
+  end do
+  do i = 1, size(cases)
+    if (.not. wanted(i)) cycle
+    do j = 1, size(step_counts)
+      if (step_counts(j) > max_steps) exit
+      call bench_one(cases(i), step_counts(j), out_path)
+    end do
+  end do
+  open (newunit=i, file=out_path, status='old', iostat=j)
+  if (j == 0) close (i, status='delete')
+
+contains
+
+  !> One case at one step count: one row of the table.
+  subroutine bench_one(c, n, path)
+    type(bench_case_t), intent(in) :: c
+    !> Steps.
+    integer, intent(in) :: n
+    !> Output file of the end-to-end runs.
+    character(*), intent(in) :: path
+    character(len=:), allocatable :: text
+    real(wp) :: solve_rate, rates(3), peaks(3)
+    integer, parameter :: formats(3) = [format_csv, format_table, format_json]
+    integer :: f
+    text = scaled_deck(c, n)
+    solve_rate = n / solve_seconds(c, text)
+    do f = 1, 3
+      call reset_peak()
+      rates(f) = n / end_to_end_seconds(c, text, formats(f), path)
+      peaks(f) = peak_mib()
+    end do
+    write (output_unit, row_fmt) c%kind, n, solve_rate, rates, peaks, solve_rate / limit_rate, rates / limit_rate
+    flush (output_unit)
+  end subroutine bench_one
+
+  !> The bundled deck with its step count set to `n` (namelist: the last value given wins).
+  function scaled_deck(c, n) result(text)
+    type(bench_case_t), intent(in) :: c
+    integer, intent(in) :: n
+    character(len=:), allocatable :: text
+    type(deck_source_t) :: source
+    type(error_t), allocatable :: error
+    character(len=:), allocatable :: extra
+    character(len=32) :: dphi, count
+    integer :: k, last
+    call load_deck(trim(c%deck), source, error)
+    if (allocated(error)) error stop "bench: run from the project root (cannot read the bundled decks)"
+    write (dphi, '(es24.17)') 360.0_wp / n
+    write (count, '(i0)') n
+    select case (trim(c%kind))
+    case ("pr3207")
+      extra = "dphi = "//trim(dphi)//", n = "//trim(count)
+    case ("pr3050")
+      write (dphi, '(es24.17)') 45.0_wp / (n - 1)
+      extra = "dphi3 = "//trim(dphi)//", omega3 = "//trim(count)//"*0.4, eps3 = "//trim(count)//"*0.1"
+    case ("sixbar")
+      extra = "dphi = "//trim(dphi)//", n = "//trim(count)//", f5 = "//trim(count)//"*1000"
+    case ("assur")
+      extra = "dphi = "//trim(dphi)//", n = "//trim(count)//", step_values = "//trim(count)//"*1000"
+    case default
+      extra = "dphi = "//trim(dphi)//", n = "//trim(count)//", ds_dphi = "//trim(count)//"*0.01"
+    end select
+    last = size(source%lines)
+    do k = size(source%lines), 1, -1
+      if (adjustl(source%lines(k)) == "/") then
+        last = k
+        exit
+      end if
+    end do
+    text = ""
+    do k = 1, last - 1
+      text = text//trim(source%lines(k))//new_line("a")
+    end do
+    text = text//"  "//extra//new_line("a")//"/"//new_line("a")
+  end function scaled_deck
+
+  !> Seconds of the solve alone (kernel and step table) of a deck read beforehand.
+  real(wp) function solve_seconds(c, text)
+    type(bench_case_t), intent(in) :: c
+    character(*), intent(in) :: text
+    class(mechanism_t), allocatable :: mech
+    type(deck_source_t) :: source
+    type(step_table_t) :: table
+    type(error_t), allocatable :: error
+    real(wp) :: t0
+    call deck_source_from_text(trim(c%deck), text, source)
+    call create_mechanism(trim(c%kind), mech)
+    call mech%read_deck(source, error)
+    if (allocated(error)) call fail(error)
+    t0 = clock()
+    call mech%solve(table, error)
+    solve_seconds = seconds_since(t0)
+    if (allocated(error)) call fail(error)
+  end function solve_seconds
+
+  !> Seconds from the deck's text to the closed output file, as `kinetostat DECK -o FILE`.
+  real(wp) function end_to_end_seconds(c, text, format, path)
+    type(bench_case_t), intent(in) :: c
+    character(*), intent(in) :: text
+    integer, intent(in) :: format
+    character(*), intent(in) :: path
+    class(mechanism_t), allocatable :: mech
+    character(len=:), allocatable :: group
+    type(deck_source_t) :: source
+    type(step_table_t) :: table
+    type(text_buffer_t) :: out
+    type(run_options_t) :: options
+    type(error_t), allocatable :: error
+    real(wp) :: t0
+    options%format = format
+    t0 = clock()
+    call deck_source_from_text(trim(c%deck), text, source)
+    call read_group_name(source, group, error)
+    if (allocated(error)) call fail(error)
+    call create_mechanism(group, mech)
+    call run_mechanism(mech, group, source, options, table, out, error)
+    if (allocated(error)) call fail(error)
+    call write_output_file(path, out, error)
+    if (allocated(error)) call fail(error)
+    end_to_end_seconds = seconds_since(t0)
+  end function end_to_end_seconds
+
+  subroutine fail(error)
+    type(error_t), intent(in) :: error
+    write (output_unit, '(a)') "bench: "//error%message
+    error stop 1
+  end subroutine fail
+
+  !> Processor time of the process so far, s (all threads; the machine may be shared, so
+  !> processor time, not wall time, measures the program).
+  real(wp) function clock()
+    call cpu_time(clock)
+  end function clock
+
+  !> Processor seconds since `t0` (at least 1 us).
+  real(wp) function seconds_since(t0)
+    !> Start, from clock().
+    real(wp), intent(in) :: t0
+    seconds_since = max(clock() - t0, 1.0e-6_wp)
+  end function seconds_since
+
+  !> Reset the peak resident set size of this process (Linux: "5" into /proc/self/clear_refs).
+  subroutine reset_peak()
+    integer :: unit, ios
+    open (newunit=unit, file="/proc/self/clear_refs", action='write', iostat=ios)
+    if (ios /= 0) return
+    write (unit, '(a)', iostat=ios) "5"
+    if (ios /= 0) write (output_unit, '(a)') "bench: cannot reset the peak memory; the peaks are since the start"
+    close (unit)
+  end subroutine reset_peak
+
+  !> Peak resident set size since the last reset, MiB (VmHWM of /proc/self/status; 0 if unknown).
+  real(wp) function peak_mib()
+    character(len=256) :: line
+    integer :: unit, ios
+    integer(int64) :: kib
+    peak_mib = 0.0_wp
+    open (newunit=unit, file="/proc/self/status", action='read', iostat=ios)
+    if (ios /= 0) return
+    do
+      read (unit, '(a)', iostat=ios) line
+      if (ios /= 0) exit
+      if (line(1:6) == "VmHWM:") then
+        read (line(7:), *, iostat=ios) kib
+        if (ios == 0) peak_mib = real(kib, wp) / 1024.0_wp
+        exit
+      end if
+    end do
+    close (unit)
+  end function peak_mib
+
+end program bench

@@ -1,0 +1,486 @@
+!> Exact binary-to-decimal conversion for the output policy (kinetostat_format): the edit
+!> descriptors Fw.d, Ew.d[Ee] and ESw.d[Ee] of a real(wp), byte for byte as the compiler's
+!> formatted WRITE prints them (default rounding: the exact binary value rounded to the
+!> nearest decimal, ties to even), without the run-time library's cost.
+!>
+!> Fast path: x = m * 2**e (m < 2**53) times 10**s is rounded in exact 128-bit integer
+!> arithmetic (x * 10**s = m * 5**s * 2**(e + s) for s >= 0, a long division for s < 0),
+!> so the digits and the tie decision are exact, not estimated. Values whose scaled
+!> product does not fit in 128 bits (|x| far from 1 for the digits asked) and descriptors
+!> outside the fast path fall back to an internal WRITE with the same descriptor, so the
+!> result is always the compiler's.
+!> Every field routine writes into a character(*) dummy whose length IS the field width (as
+!> an internal WRITE does), so intent(out)/(inout) with an assumed length is the design here.
+! allow(assumed-size-character-intent)
+module kinetostat_decimal
+  use, intrinsic :: iso_fortran_env, only: int64
+  use kinetostat_kinds, only: wp
+  implicit none
+  private
+  public :: edit_f, edit_e, edit_es, edit_f_with_blank, put_es_compact, put_whole, i16
+
+  !> Integer kind of the exact products (128 bits).
+  integer, parameter :: i16 = selected_int_kind(38)
+  !> Index of the implied DO loops of the tables below.
+  integer, private :: i_
+  !> Largest s of the table of 5**s (5**27 < 2**63).
+  integer, parameter :: max_pow5 = 27
+  !> 5**s, s = 0..max_pow5.
+  integer(i16), parameter :: pow5(0:max_pow5) = [(5_i16**i_, i_ = 0, max_pow5)]
+  !> Largest t of the table of 10**t in 128 bits.
+  integer, parameter :: max_pow10 = 38
+  !> 10**t, t = 0..max_pow10.
+  integer(i16), parameter :: pow10(0:max_pow10) = [(10_i16**i_, i_ = 0, max_pow10)]
+  !> log10(2), for the first estimate of the decimal exponent.
+  real(wp), parameter :: log10_2 = 0.30102999566398119521373889472449302677_wp
+  !> "00", "01", ..., "99": two digits at a time.
+  character(len=200), parameter :: digit_pairs = &
+    "00010203040506070809101112131415161718192021222324252627282930313233343536373839" // &
+    "40414243444546474849505152535455565758596061626364656667686970717273747576777879" // &
+    "8081828384858687888990919293949596979899"
+  !> Largest number of significant digits of the fast path (q < 10**18 fits in int64).
+  integer, parameter :: max_digits = 17
+  !> Width of the scratch texts.
+  integer, parameter :: scratch_len = 72
+  !> Status of a field body: written.
+  integer, parameter :: body_ok = 0
+  !> Status of a field body: does not fit its width (the field is all '*').
+  integer, parameter :: body_stars = 1
+  !> Status of a field body: outside the fast path (the compiler's WRITE makes it).
+  integer, parameter :: body_fallback = 2
+
+contains
+
+  !> Sign bit, mantissa and binary exponent of a finite x: |x| = m * 2**e.
+  pure subroutine split(x, negative, m, e)
+    real(wp), intent(in) :: x
+    logical, intent(out) :: negative
+    integer(int64), intent(out) :: m
+    integer, intent(out) :: e
+    integer(int64) :: bits
+    integer :: biased
+    bits = transfer(x, bits)
+    negative = bits < 0
+    biased = int(iand(shiftr(bits, 52), 2047_int64))
+    m = iand(bits, shiftl(1_int64, 52) - 1_int64)
+    if (biased == 0) then
+      e = -1074
+    else
+      m = m + shiftl(1_int64, 52)
+      e = biased - 1075
+    end if
+  end subroutine split
+
+  !> q = m * 2**e * 10**s rounded to the nearest integer, ties to even, exactly; ok is false
+  !> when the operands do not fit the 128-bit fast path (the caller then falls back).
+  pure subroutine scaled_round(m, e, s, q, ok)
+    integer(int64), intent(in) :: m
+    integer, intent(in) :: e, s
+    integer(i16), intent(out) :: q
+    logical, intent(out) :: ok
+    integer(i16) :: p, rem, half, num, den
+    integer :: sh, bits_p
+    ok = .false.
+    q = 0
+    if (s >= 0) then
+      if (s > max_pow5) return
+      p = int(m, i16) * pow5(s)
+      sh = e + s
+      bits_p = bit_length(p)
+      if (sh >= 0) then
+        if (bits_p + sh > 126) return
+        q = shiftl(p, sh)
+      else
+        sh = -sh
+        if (sh > 125) then
+          ok = bits_p + 1 < sh ! then x * 10**s < 1/2: q = 0
+          return
+        end if
+        q = shiftr(p, sh)
+        rem = p - shiftl(q, sh)
+        half = shiftl(1_i16, sh - 1)
+        if (rem > half .or. (rem == half .and. btest(q, 0))) q = q + 1
+      end if
+    else
+      if (-s > max_pow10) return
+      if (e >= 0) then
+        if (bit_length(int(m, i16)) + e > 126) return
+        num = shiftl(int(m, i16), e)
+        den = pow10(-s)
+      else
+        num = int(m, i16)
+        if (bit_length(pow10(-s)) - e > 125) return
+        den = shiftl(pow10(-s), -e)
+      end if
+      q = num / den
+      rem = num - q * den
+      if (2 * rem > den .or. (2 * rem == den .and. btest(q, 0))) q = q + 1
+    end if
+    ok = .true.
+  end subroutine scaled_round
+
+  !> Number of bits of a non-negative integer (0 for 0).
+  pure integer function bit_length(p)
+    integer(i16), intent(in) :: p
+    bit_length = int(bit_size(p)) - leadz(p)
+  end function bit_length
+
+  !> |x| (finite, nonzero) rounded to n significant digits: q with 10**(n-1) <= q < 10**n
+  !> and the decimal exponent k of the first digit (|x| ~ q * 10**(k - n + 1)).
+  pure subroutine round_significant(m, e, n, q, k, ok)
+    integer(int64), intent(in) :: m
+    integer, intent(in) :: e, n
+    integer(int64), intent(out) :: q
+    integer, intent(out) :: k
+    logical, intent(out) :: ok
+    integer(i16) :: q16
+    integer :: attempt, top
+    q = 0
+    top = e + int(bit_size(m)) - 1 - leadz(m)   ! 2**top <= |x| < 2**(top + 1)
+    k = floor(top * log10_2)               ! exact: top * log10(2) is never near an integer
+    do attempt = 1, 3
+      call scaled_round(m, e, n - 1 - k, q16, ok)
+      if (.not. ok) return
+      if (q16 < pow10(n)) then
+        q = int(q16, int64)
+        return
+      end if
+      k = k + 1                            ! |x| >= 10**(k+1), or it rounded up to it
+    end do
+    ok = .false.
+  end subroutine round_significant
+
+  !> The n decimal digits of q (leading zeros kept) into text(1:n).
+  pure subroutine put_digits(q, n, text)
+    integer(int64), intent(in) :: q
+    integer, intent(in) :: n
+    character(*), intent(inout) :: text
+    integer(int64) :: r, two
+    integer :: p
+    r = q
+    p = n
+    do while (p >= 2)
+      two = mod(r, 100_int64)
+      r = r / 100_int64
+      text(p - 1:p) = digit_pairs(2 * two + 1:2 * two + 2)
+      p = p - 2
+    end do
+    if (p == 1) text(1:1) = achar(48 + int(mod(r, 10_int64)))
+  end subroutine put_digits
+
+  !> Number of decimal digits of q >= 0 (1 for 0).
+  pure integer function digit_count(q)
+    integer(int64), intent(in) :: q
+    digit_count = 1
+    do while (digit_count < 19)
+      if (q < int(pow10(digit_count), int64)) return
+      digit_count = digit_count + 1
+    end do
+  end function digit_count
+
+  !> The exponent part of an E or ES field: "E+dd" (e = 0, |k| <= 99), "+ddd" (e = 0, |k| <= 999),
+  !> "E+" followed by e digits; ok false when k does not fit.
+  pure subroutine exponent_part(k, e, text, length, ok)
+    integer, intent(in) :: k, e
+    character(len=8), intent(out) :: text
+    integer, intent(out) :: length
+    logical, intent(out) :: ok
+    character :: sign
+    integer :: digits
+    sign = "+"
+    if (k < 0) sign = "-"
+    ok = .true.
+    if (e == 0) then
+      if (abs(k) <= 99) then
+        text(1:2) = "E"//sign
+        call put_digits(int(abs(k), int64), 2, text(3:4))
+        length = 4
+      else if (abs(k) <= 999) then
+        text(1:1) = sign
+        call put_digits(int(abs(k), int64), 3, text(2:4))
+        length = 4
+      else
+        ok = .false.
+        length = 0
+      end if
+    else
+      digits = e
+      if (digits > 6 .or. abs(k) >= int(pow10(min(digits, 6)))) then
+        ok = .false.
+        length = 0
+        return
+      end if
+      text(1:2) = "E"//sign
+      call put_digits(int(abs(k), int64), digits, text(3:2 + digits))
+      length = 2 + digits
+    end if
+  end subroutine exponent_part
+
+  !> text = x written with ESw.d (e = 0) or ESw.dEe, right-justified in len(text) = w.
+  pure subroutine edit_es(x, d, e, text)
+    !> Finite value.
+    real(wp), intent(in) :: x
+    !> Digits after the point.
+    integer, intent(in) :: d
+    !> Exponent digits (0: the default form).
+    integer, intent(in) :: e
+    !> The field (its length is the width w).
+    character(*), intent(out) :: text
+    call edit_exponent(x, d, e, .true., text)
+  end subroutine edit_es
+
+  !> text = x written with Ew.d (e = 0) or Ew.dEe, right-justified in len(text) = w.
+  pure subroutine edit_e(x, d, e, text)
+    !> Finite value.
+    real(wp), intent(in) :: x
+    !> Significant digits (after the point).
+    integer, intent(in) :: d
+    !> Exponent digits (0: the default form).
+    integer, intent(in) :: e
+    !> The field (its length is the width w).
+    character(*), intent(out) :: text
+    call edit_exponent(x, d, e, .false., text)
+  end subroutine edit_e
+
+  !> ES (scientific) or E (0.ddd) form, right-justified in text.
+  pure subroutine edit_exponent(x, d, e, scientific, text)
+    real(wp), intent(in) :: x
+    integer, intent(in) :: d, e
+    logical, intent(in) :: scientific
+    character(*), intent(out) :: text
+    character(len=scratch_len) :: body
+    integer :: n, status, w
+    w = len(text)
+    call exponent_body(x, d, e, scientific, w, body, n, status)
+    select case (status)
+    case (body_ok)
+      call right_justify(body(1:n), text)
+    case (body_stars)
+      text = repeat("*", w)
+    case default
+      call fallback_exponent(x, d, e, scientific, text)
+    end select
+  end subroutine edit_exponent
+
+  !> The characters of an E or ES field without the blanks in front: body(1:n), status
+  !> body_ok; body_stars when it does not fit in w; body_fallback outside the fast path.
+  pure subroutine exponent_body(x, d, e, scientific, w, body, n, status)
+    real(wp), intent(in) :: x
+    integer, intent(in) :: d, e
+    logical, intent(in) :: scientific
+    !> Field width (decides the optional leading zero of the E form, and '*').
+    integer, intent(in) :: w
+    character(len=scratch_len), intent(out) :: body
+    integer, intent(out) :: n, status
+    character(len=8) :: expo
+    integer(int64) :: m, q
+    integer :: ex, digits, k, elen
+    logical :: negative, ok
+    n = 0
+    status = body_fallback
+    call split(x, negative, m, ex)
+    digits = d
+    if (scientific) digits = d + 1
+    if (digits < 1 .or. digits > max_digits .or. w > scratch_len - 8) return
+    if (m == 0) then
+      q = 0
+      k = 0
+      if (.not. scientific) k = -1
+    else
+      call round_significant(m, ex, digits, q, k, ok)
+      if (.not. ok) return
+    end if
+    if (.not. scientific) k = k + 1        ! 0.ddd form: the exponent of the digit before the first
+    call exponent_part(k, e, expo, elen, ok)
+    status = body_stars
+    if (.not. ok) return
+    if (negative) then
+      n = 1
+      body(1:1) = "-"
+    end if
+    if (scientific) then
+      call put_digits(q, digits, body(n + 2:n + digits + 1))
+      body(n + 1:n + 1) = body(n + 2:n + 2)
+      body(n + 2:n + 2) = "."
+      n = n + digits + 1
+    else
+      if (n + 2 + digits + elen <= w) then  ! the leading zero is optional: kept when it fits
+        body(n + 1:n + 1) = "0"
+        n = n + 1
+      end if
+      body(n + 1:n + 1) = "."
+      call put_digits(q, digits, body(n + 2:n + digits + 1))
+      n = n + digits + 1
+    end if
+    body(n + 1:n + elen) = expo(1:elen)
+    n = n + elen
+    if (n <= w) status = body_ok
+  end subroutine exponent_body
+
+  !> text = blanks, then s at its right end (len(s) <= len(text)).
+  pure subroutine right_justify(s, text)
+    character(*), intent(in) :: s
+    character(*), intent(out) :: text
+    integer :: w
+    w = len(text)
+    text(1:w - len(s)) = ""
+    text(w - len(s) + 1:w) = s
+  end subroutine right_justify
+
+  !> The compiler's own E/ES edit (values or descriptors outside the fast path).
+  pure subroutine fallback_exponent(x, d, e, scientific, text)
+    real(wp), intent(in) :: x
+    integer, intent(in) :: d, e
+    logical, intent(in) :: scientific
+    character(*), intent(out) :: text
+    character(len=32) :: fmt
+    character(len=2) :: letters
+    letters = "e "
+    if (scientific) letters = "es"
+    if (e > 0) then
+      write (fmt, '("(",a,i0,".",i0,"e",i0,")")') trim(letters), len(text), d, e
+    else
+      write (fmt, '("(",a,i0,".",i0,")")') trim(letters), len(text), d
+    end if
+    write (text, fmt) x
+  end subroutine fallback_exponent
+
+  !> text = x written with Fw.d, right-justified in len(text) = w.
+  pure subroutine edit_f(x, d, text)
+    !> Finite value.
+    real(wp), intent(in) :: x
+    !> Digits after the point.
+    integer, intent(in) :: d
+    !> The field (its length is the width w).
+    character(*), intent(out) :: text
+    character(len=scratch_len) :: body
+    character(len=32) :: fmt
+    integer :: n, status
+    call fixed_body(x, d, len(text), body, n, status)
+    select case (status)
+    case (body_ok)
+      call right_justify(body(1:n), text)
+    case (body_stars)
+      text = repeat("*", len(text))
+    case default
+      write (fmt, '("(f",i0,".",i0,")")') len(text), d
+      write (text, fmt) x
+    end select
+  end subroutine edit_f
+
+  !> The characters of an Fw.d field without the blanks in front: body(1:n), with status
+  !> as exponent_body's.
+  pure subroutine fixed_body(x, d, w, body, n, status)
+    real(wp), intent(in) :: x
+    integer, intent(in) :: d
+    !> Field width (decides the optional leading zero, and '*').
+    integer, intent(in) :: w
+    character(len=scratch_len), intent(out) :: body
+    integer, intent(out) :: n, status
+    integer(int64) :: m, int_part, frac_part
+    integer(i16) :: q
+    integer :: ex, ni
+    logical :: negative, ok
+    n = 0
+    status = body_fallback
+    call split(x, negative, m, ex)
+    if (d < 0 .or. d > 18) return
+    call scaled_round(m, ex, d, q, ok)
+    if (.not. ok) return
+    if (q >= pow10(18 + d)) return        ! integer part of 19 digits or more
+    int_part = int(q / pow10(d), int64)
+    frac_part = int(q - int(int_part, i16) * pow10(d), int64)
+    if (negative) then
+      n = 1
+      body(1:1) = "-"
+    end if
+    ni = digit_count(int_part)
+    ! the leading zero of |x| < 1 is optional: dropped only when the field is too narrow
+    if (int_part == 0 .and. n + 2 + d > w .and. d > 0) ni = 0
+    if (ni > 0) call put_digits(int_part, ni, body(n + 1:n + ni))
+    n = n + ni
+    body(n + 1:n + 1) = "."
+    n = n + 1
+    if (d > 0) call put_digits(frac_part, d, body(n + 1:n + d))
+    n = n + d
+    status = body_stars
+    if (n <= w) status = body_ok
+  end subroutine fixed_body
+
+  !> Fw.d when the field leaves at least one blank in front, as `fits`; otherwise nothing
+  !> is written and `fits` is false (the caller chooses another form).
+  pure subroutine edit_f_with_blank(x, d, text, fits)
+    !> Finite value.
+    real(wp), intent(in) :: x
+    !> Digits after the point.
+    integer, intent(in) :: d
+    !> The field (its length is the width w).
+    character(*), intent(out) :: text
+    !> Whether the fixed form was written.
+    logical, intent(out) :: fits
+    character(len=scratch_len) :: body, wide
+    integer :: n, status, first
+    call fixed_body(x, d, scratch_len, body, n, status)
+    if (status == body_fallback) then
+      call edit_f(x, d, wide)
+      first = verify(wide, " ")
+      n = scratch_len - first + 1
+      body(1:n) = wide(first:)
+    end if
+    fits = n < len(text) .and. status /= body_stars
+    if (fits) call right_justify(body(1:n), text)
+  end subroutine edit_f_with_blank
+
+  !> Append x in ESw.dEe form without leading blanks to buf at pos+1.. (pos advanced):
+  !> the text of adjustl(ES(d+e+6).dEe) for a CSV cell or a JSON number.
+  pure subroutine put_es_compact(x, d, e, buf, pos)
+    !> Finite value.
+    real(wp), intent(in) :: x
+    !> Digits after the point.
+    integer, intent(in) :: d
+    !> Exponent digits.
+    integer, intent(in) :: e
+    !> Output characters (room for d + e + 6 more).
+    character(*), intent(inout) :: buf
+    !> Characters in use.
+    integer, intent(inout) :: pos
+    character(len=scratch_len) :: body
+    integer :: w, first, n, status
+    w = d + e + 6
+    call exponent_body(x, d, e, .true., w, body, n, status)
+    if (status /= body_ok) then
+      call edit_es(x, d, e, body(1:w))
+      first = verify(body(1:w), " ")
+      n = w - first + 1
+      body(1:n) = body(first:w)
+    end if
+    buf(pos + 1:pos + n) = body(1:n)
+    pos = pos + n
+  end subroutine put_es_compact
+
+  !> Append the whole number q (any sign) to buf at pos+1.. (pos advanced), as I0 prints it.
+  pure subroutine put_whole(q, buf, pos)
+    !> The number.
+    integer(int64), intent(in) :: q
+    !> Output characters (room for 20 more).
+    character(*), intent(inout) :: buf
+    !> Characters in use.
+    integer, intent(inout) :: pos
+    integer(int64) :: a
+    integer :: n
+    if (q == -huge(q) - 1_int64) then
+      buf(pos + 1:pos + 20) = "-9223372036854775808"
+      pos = pos + 20
+      return
+    end if
+    a = abs(q)
+    if (q < 0) then
+      pos = pos + 1
+      buf(pos:pos) = "-"
+    end if
+    n = digit_count(a)
+    call put_digits(a, n, buf(pos + 1:pos + n))
+    pos = pos + n
+  end subroutine put_whole
+
+end module kinetostat_decimal

@@ -1,0 +1,208 @@
+!> The exact number writer (kinetostat_decimal) against the compiler's formatted WRITE, byte
+!> for byte: 10^6 pseudo-random doubles (a fixed seed, so a failure repeats) over the whole
+!> exponent range (random bit patterns, subnormals among them), decimal ties and near-ties,
+!> values that round up to a new power of ten, +-0, each through the CSV descriptor
+!> ES20.12E3, and every third one through one more descriptor of the output policy in turn
+!> (E, ES and F forms).
+module test_decimal
+  use, intrinsic :: iso_fortran_env, only: int64
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+  use kinetostat_kinds, only: wp
+  use kinetostat_decimal, only: edit_f, edit_e, edit_es, put_es_compact, put_whole
+  use test_harness, only: test_counts_t, check_true
+  implicit none
+  private
+  public :: run_decimal_tests
+
+  !> Number of random doubles.
+  integer, parameter :: sample_count = 1000000
+  !> Mismatches printed at most.
+  integer, parameter :: max_shown = 10
+
+  !> One edit descriptor of the policy: letter (F, E, S for ES), width, digits, exponent digits.
+  type :: descriptor_t
+    character :: letter
+    integer :: w, d, e
+  end type descriptor_t
+
+  !> The descriptors kinetostat_format uses (and a few narrow ones for the '*' and
+  !> leading-zero rules).
+  type(descriptor_t), parameter :: descriptors(*) = [ &
+    descriptor_t("S", 18, 9, 0), descriptor_t("S", 18, 9, 3), descriptor_t("S", 14, 6, 0), &
+    descriptor_t("S", 14, 5, 3), descriptor_t("S", 10, 2, 0), descriptor_t("S", 10, 1, 3), &
+    descriptor_t("S", 12, 4, 0), descriptor_t("S", 12, 3, 3), descriptor_t("S", 9, 1, 0), &
+    descriptor_t("E", 12, 3, 0), descriptor_t("E", 12, 3, 3), descriptor_t("E", 9, 3, 0), &
+    descriptor_t("E", 10, 3, 0), descriptor_t("F", 64, 2, 0), descriptor_t("F", 64, 3, 0), &
+    descriptor_t("F", 64, 4, 0), descriptor_t("F", 64, 5, 0), descriptor_t("F", 11, 4, 0), &
+    descriptor_t("F", 5, 2, 0), descriptor_t("F", 4, 2, 0), descriptor_t("F", 8, 0, 0)]
+
+contains
+
+  subroutine run_decimal_tests(t)
+    type(test_counts_t), intent(inout) :: t
+    call test_fixed_cases(t)
+    call test_random(t)
+    call test_whole(t)
+  end subroutine run_decimal_tests
+
+  !> The cases named in the spec of the writer, each through every descriptor.
+  subroutine test_fixed_cases(t)
+    type(test_counts_t), intent(inout) :: t
+    real(wp), parameter :: cases(*) = [0.0_wp, -0.0_wp, 0.125_wp, 0.375_wp, 2.5_wp, -0.001_wp, 0.005_wp, &
+      9.9999999999995_wp, 9.99999999999949_wp, 99.995_wp, 0.995_wp, 9.9996e99_wp, 1.0e-100_wp, 1.0e300_wp, &
+      huge(1.0_wp), tiny(1.0_wp), 4.9406564584124654e-324_wp, 1.0e30_wp, 999999.995_wp, 1.0e22_wp, 1.0e23_wp]
+    integer :: i, j, bad
+    character(len=:), allocatable :: shown
+    bad = 0
+    allocate (character(len=0) :: shown) ! not shown = "" (gcc's -Wmaybe-uninitialized)
+    do i = 1, size(cases)
+      do j = 1, size(descriptors)
+        call compare(cases(i), descriptors(j), bad, shown)
+      end do
+    end do
+    call check_true(t, "decimal: named cases through every descriptor", bad == 0, shown)
+  end subroutine test_fixed_cases
+
+  !> 10^6 doubles of five families, each through ES20.12E3 and one descriptor in turn.
+  subroutine test_random(t)
+    type(test_counts_t), intent(inout) :: t
+    integer(int64) :: state
+    real(wp) :: x
+    integer :: i, bad, k
+    character(len=:), allocatable :: shown
+    character(len=20) :: mine, theirs
+    character(len=32) :: compact
+    integer :: pos
+    state = 14_int64
+    bad = 0
+    allocate (character(len=0) :: shown) ! not shown = "" (gcc's -Wmaybe-uninitialized)
+    k = 0
+    do i = 1, sample_count
+      x = sample(state, i)
+      call edit_es(x, 12, 3, mine)
+      write (theirs, '(es20.12e3)') x
+      pos = 0
+      call put_es_compact(x, 12, 3, compact, pos)
+      if (mine /= theirs .or. compact(1:pos) /= trim(adjustl(theirs))) then
+        bad = bad + 1
+        if (bad <= max_shown) shown = shown//" ["//hex(x)//" ES20.12E3 '"//mine//"' vs '"//theirs//"']"
+      end if
+      if (mod(i, 3) /= 0) cycle
+      k = mod(k, size(descriptors)) + 1
+      call compare(x, descriptors(k), bad, shown)
+    end do
+    call check_true(t, "decimal: 10^6 random doubles equal the compiler's formatted WRITE", bad == 0, &
+                    "mismatches "//itoa(bad)//":"//shown)
+  end subroutine test_random
+
+  !> put_whole against I0.
+  subroutine test_whole(t)
+    type(test_counts_t), intent(inout) :: t
+    integer(int64), parameter :: cases(*) = [0_int64, 1_int64, -1_int64, 9_int64, 10_int64, 99_int64, &
+      100_int64, -12345_int64, 999999999999999_int64, huge(1_int64), -huge(1_int64), -huge(1_int64) - 1_int64]
+    character(len=32) :: mine, theirs
+    integer :: i, pos, bad
+    bad = 0
+    do i = 1, size(cases)
+      pos = 0
+      call put_whole(cases(i), mine, pos)
+      write (theirs, '(i0)') cases(i)
+      if (mine(1:pos) /= trim(theirs)) bad = bad + 1
+    end do
+    call check_true(t, "decimal: whole numbers equal I0", bad == 0, itoa(bad)//" differ")
+  end subroutine test_whole
+
+  !> One value through one descriptor, mine against the compiler's.
+  subroutine compare(x, dsc, bad, shown)
+    real(wp), intent(in) :: x
+    type(descriptor_t), intent(in) :: dsc
+    integer, intent(inout) :: bad
+    character(len=:), allocatable, intent(inout) :: shown
+    character(len=dsc%w) :: mine, theirs
+    character(len=24) :: fmt
+    select case (dsc%letter)
+    case ("F")
+      call edit_f(x, dsc%d, mine)
+      write (fmt, '("(f",i0,".",i0,")")') dsc%w, dsc%d
+    case ("E")
+      call edit_e(x, dsc%d, dsc%e, mine)
+      write (fmt, '("(e",i0,".",i0,"e",i0,")")') dsc%w, dsc%d, dsc%e
+      if (dsc%e == 0) write (fmt, '("(e",i0,".",i0,")")') dsc%w, dsc%d
+    case default
+      call edit_es(x, dsc%d, dsc%e, mine)
+      write (fmt, '("(es",i0,".",i0,"e",i0,")")') dsc%w, dsc%d, dsc%e
+      if (dsc%e == 0) write (fmt, '("(es",i0,".",i0,")")') dsc%w, dsc%d
+    end select
+    write (theirs, fmt) x
+    if (mine /= theirs) then
+      bad = bad + 1
+      if (bad <= max_shown) shown = shown//" ["//hex(x)//" "//trim(fmt)//" '"//mine//"' vs '"//theirs//"']"
+    end if
+  end subroutine compare
+
+  !> The i-th sample: a family chosen by i, values drawn from the generator.
+  function sample(state, i) result(x)
+    integer(int64), intent(inout) :: state
+    integer, intent(in) :: i
+    real(wp) :: x
+    integer(int64) :: bits
+    real(wp) :: u
+    integer :: digits, expo
+    bits = next(state)
+    select case (mod(i, 6))
+    case (0) ! any finite bit pattern: the whole exponent range, both signs
+      x = transfer(bits, x)
+      if (.not. ieee_is_finite(x)) x = transfer(ishft(bits, -12), x)
+    case (1) ! subnormals and the smallest normals
+      x = transfer(iand(bits, int(z'801FFFFFFFFFFFFF', int64)), x)
+    case (2) ! a short decimal: an exact or near tie of some descriptor, nudged by 0 or +-1 ulp
+      digits = int(mod(abs(next(state)), 10_int64)) + 1
+      expo = int(mod(abs(next(state)), 40_int64)) - 20
+      x = real(mod(abs(bits), 10_int64**digits), wp) * 10.0_wp**expo + 5.0_wp * 10.0_wp**(expo - 1)
+      select case (mod(abs(next(state)), 3_int64))
+      case (1); x = nearest(x, 1.0_wp)
+      case (2); x = nearest(x, -1.0_wp)
+      case default ! the decimal as it is
+      end select
+      if (btest(bits, 62)) x = -x
+    case (3) ! just below a power of ten: rounds up to a new power at some digit count
+      expo = int(mod(abs(bits), 60_int64)) - 30
+      digits = int(mod(abs(next(state)), 16_int64)) + 1
+      x = 10.0_wp**expo * (1.0_wp - 0.5_wp * 10.0_wp**(-digits))
+      x = nearest(x, real(mod(abs(next(state)), 3_int64) - 1, wp) + 0.5_wp)
+    case (4) ! dyadic fractions: exact decimal ties (0.125, 2.5, ...)
+      x = real(mod(abs(bits), 100000_int64), wp) / 2.0_wp**int(mod(abs(next(state)), 20_int64))
+    case default ! magnitudes of results: 1e-8 .. 1e22, uniform in the logarithm
+      u = real(shiftr(bits, 11), wp) * 2.0_wp**(-53)
+      x = 10.0_wp**(30.0_wp * u - 8.0_wp)
+      if (btest(bits, 3)) x = -x
+    end select
+  end function sample
+
+  !> splitmix64.
+  function next(state) result(z)
+    integer(int64), intent(inout) :: state
+    integer(int64) :: z
+    state = state + int(z'9E3779B97F4A7C15', int64)
+    z = state
+    z = ieor(z, shiftr(z, 30)) * int(z'BF58476D1CE4E5B9', int64)
+    z = ieor(z, shiftr(z, 27)) * int(z'94D049BB133111EB', int64)
+    z = ieor(z, shiftr(z, 31))
+  end function next
+
+  !> The bits of x in hex (a failing value can be reproduced exactly).
+  function hex(x) result(text)
+    real(wp), intent(in) :: x
+    character(len=18) :: text
+    write (text, '("z",z16.16,"")') transfer(x, 1_int64)
+  end function hex
+
+  function itoa(i) result(text)
+    integer, intent(in) :: i
+    character(len=:), allocatable :: text
+    character(len=16) :: buf
+    write (buf, '(i0)') i
+    text = trim(buf)
+  end function itoa
+
+end module test_decimal

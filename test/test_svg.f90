@@ -1,0 +1,162 @@
+!> Unit tests of the SVG sheets: number formatting of drawings, the SVG primitives, nice
+!> ticks, the cycle mean, --pairs selection, and a small sheet whose hodograph path is
+!> checked point by point against the forces it was drawn from.
+module test_svg
+  use kinetostat_kinds, only: wp, deg_to_rad
+  use kinetostat_error, only: error_t, exit_usage
+  use kinetostat_format, only: fixed_number, short_number
+  use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_moment
+  use kinetostat_text_buffer, only: text_buffer_t
+  use kinetostat_svg, only: xml_escape, svg_line, svg_arrow
+  use kinetostat_svg_writer, only: write_svg, pair_force_t, find_pair_forces, select_pair_forces, nice_step, &
+    cycle_mean
+  use test_harness, only: test_counts_t, check_true, check_close
+  implicit none
+  private
+  public :: run_svg_tests
+
+contains
+
+  subroutine run_svg_tests(t)
+    type(test_counts_t), intent(inout) :: t
+    call test_numbers(t)
+    call test_primitives(t)
+    call test_ticks_and_mean(t)
+    call test_pairs(t)
+    call test_sheet(t)
+  end subroutine run_svg_tests
+
+  subroutine check_text(t, name, expected, computed)
+    type(test_counts_t), intent(inout) :: t
+    character(*), intent(in) :: name, expected, computed
+    call check_true(t, name, expected == computed, "expected '"//expected//"', computed '"//computed//"'")
+  end subroutine check_text
+
+  subroutine test_numbers(t)
+    type(test_counts_t), intent(inout) :: t
+    call check_text(t, "fixed_number 2 decimals", "12.35", fixed_number(12.345678_wp, 2))
+    call check_text(t, "fixed_number leading zero", "0.50", fixed_number(0.5_wp, 2))
+    call check_text(t, "fixed_number negative leading zero", "-0.25", fixed_number(-0.25_wp, 2))
+    call check_text(t, "fixed_number rounds to zero without sign", "0.00", fixed_number(-0.001_wp, 2))
+    call check_text(t, "fixed_number 0 decimals", "-180", fixed_number(-180.0_wp, 0))
+    call check_text(t, "fixed_number huge -> exponent", "1.000000000000E+020", fixed_number(1.0e20_wp, 2))
+    call check_text(t, "short_number large", "2716", short_number(2716.428_wp))
+    call check_text(t, "short_number tens", "35.3", short_number(35.31_wp))
+    call check_text(t, "short_number small", "0.457", short_number(0.4567_wp))
+    call check_text(t, "short_number zero", "0", short_number(0.0_wp))
+    call check_text(t, "short_number 1e8", "1.23E+08", short_number(1.234e8_wp))
+  end subroutine test_numbers
+
+  subroutine test_primitives(t)
+    type(test_counts_t), intent(inout) :: t
+    character(len=:), allocatable :: a
+    call check_text(t, "xml_escape", "a &amp; &lt;b&gt; &quot;c&quot; &apos;d&apos;", xml_escape("a & <b> ""c"" 'd'"))
+    call check_text(t, "svg_line", '<line x1="1.00" y1="2.00" x2="3.50" y2="-4.00" class="axis"/>', &
+      svg_line(1.0_wp, 2.0_wp, 3.5_wp, -4.0_wp, 'class="axis"'))
+    ! an arrow: shaft to the base of the head, head ending at the tip
+    a = svg_arrow(0.0_wp, 0.0_wp, 10.0_wp, 0.0_wp, "#000000", 0.4_wp, 2.0_wp)
+    call check_true(t, "svg_arrow shaft ends at the head", index(a, 'x2="8.00" y2="0.00"') > 0, a)
+    call check_true(t, "svg_arrow head at the tip", index(a, 'points="10.00,0.00 8.00,0.70 8.00,-0.70"') > 0, a)
+    call check_text(t, "svg_arrow of zero length", "", svg_arrow(1.0_wp, 1.0_wp, 1.0_wp, 1.0_wp, "#000000", &
+      0.4_wp, 2.0_wp))
+  end subroutine test_primitives
+
+  subroutine test_ticks_and_mean(t)
+    type(test_counts_t), intent(inout) :: t
+    call check_close(t, "nice_step 6000/5", 2000.0_wp, nice_step(6000.0_wp, 5, .false.), 0.0_wp, 1.0e-9_wp)
+    call check_close(t, "nice_step 0.7/5", 0.2_wp, nice_step(0.7_wp, 5, .false.), 0.0_wp, 1.0e-12_wp)
+    call check_close(t, "nice_step 360 deg/6", 60.0_wp, nice_step(360.0_wp, 6, .true.), 0.0_wp, 1.0e-12_wp)
+    call check_close(t, "nice_step 45 deg/6", 15.0_wp, nice_step(45.0_wp, 6, .true.), 0.0_wp, 1.0e-12_wp)
+    ! trapezoidal mean: a linear ramp 0..10 over 0..360 has mean 5 whatever the spacing
+    call check_close(t, "cycle_mean ramp", 5.0_wp, cycle_mean([0.0_wp, 60.0_wp, 360.0_wp], [0.0_wp, 10.0_wp / 6, &
+      10.0_wp]), 1.0e-14_wp, 0.0_wp)
+    call check_close(t, "cycle_mean one row", 3.0_wp, cycle_mean([10.0_wp], [3.0_wp]), 0.0_wp, 0.0_wp)
+  end subroutine test_ticks_and_mean
+
+  !> A table: phi1, F16, F16G, F21, F21G, M1 over 4 steps.
+  subroutine small_table(table)
+    type(step_table_t), intent(out) :: table
+    integer :: k
+    table%mechanism = "test"
+    table%deck = "small<&>.nml"
+    table%row_name = "step"
+    call table%set_columns([character(len=4) :: "phi1", "F16", "F16G", "F21", "F21G", "M1"], &
+      [character(len=3) :: "deg", "N", "deg", "N", "deg", "N*m"], &
+      [col_input_angle, col_force, col_force_angle, col_force, col_force_angle, col_moment])
+    table%input_column = 1
+    table%driver = "M1"
+    call table%allocate_rows(4)
+    do k = 1, 4
+      table%rows(:, k) = [90.0_wp * (k - 1), 100.0_wp * k, 30.0_wp * k, 50.0_wp, 180.0_wp, 10.0_wp * k]
+    end do
+  end subroutine small_table
+
+  subroutine test_pairs(t)
+    type(test_counts_t), intent(inout) :: t
+    type(step_table_t) :: table
+    type(pair_force_t), allocatable :: all(:), chosen(:)
+    type(error_t), allocatable :: error
+    call small_table(table)
+    call find_pair_forces(table, all)
+    call check_true(t, "find_pair_forces", size(all) == 2, "expected F16 and F21")
+    if (size(all) /= 2) return
+    call check_text(t, "find_pair_forces names", "F16 F21", all(1)%name//" "//all(2)%name)
+    call select_pair_forces(table, all, " f21 ", chosen, error)
+    call check_true(t, "select_pair_forces any case", .not. allocated(error) .and. size(chosen) == 1, "F21 chosen")
+    call select_pair_forces(table, all, "F16,F99", chosen, error)
+    call check_true(t, "select_pair_forces unknown", allocated(error), "F99 must be an error")
+    if (.not. allocated(error)) return
+    call check_true(t, "select_pair_forces unknown is a usage error", error%code == exit_usage, error%message)
+    call check_text(t, "select_pair_forces message", "--pairs: 'F99' is not a pair force of small<&>.nml " // &
+      "(pair forces: F16, F21)", error%message)
+  end subroutine test_pairs
+
+  !> The sheet of the small table: the F16 path read back (origin and scale from its
+  !> attributes) equals F16's components within the 0.005 mm rounding of the coordinates.
+  subroutine test_sheet(t)
+    type(test_counts_t), intent(inout) :: t
+    type(step_table_t) :: table
+    type(text_buffer_t) :: out
+    type(error_t), allocatable :: error
+    character(len=:), allocatable :: s, d
+    real(wp) :: ox, oy, scale, x, y, fx, fy
+    integer :: i, j, k, ios
+    scale = 0.0_wp
+    ox = 0.0_wp
+    oy = 0.0_wp
+    call small_table(table)
+    call write_svg("TEST", table, "", out, error)
+    call check_true(t, "write_svg runs", .not. allocated(error), "no error expected")
+    s = out%text()
+    call check_true(t, "sheet escapes the deck name", index(s, "small&lt;&amp;&gt;.nml") > 0 .and. &
+      index(s, "small<&>") == 0, "deck name not escaped")
+    call check_true(t, "sheet has the mean", index(s, "mean 25.0 N*m") > 0, &
+      "mean of M1 = 10, 20, 30, 40 over 0..270 deg (trapezoid) = 25")
+    i = index(s, 'data-force="F16"')
+    call check_true(t, "sheet has the F16 hodograph", i > 0, "no F16 path")
+    if (i == 0) return
+    j = index(s(i:), 'data-origin="') + i + 12
+    read (s(j:j + index(s(j:), '"') - 2), *, iostat=ios) ox, oy
+    call check_true(t, "F16 data-origin reads", ios == 0, s(j:j + 20))
+    j = index(s(i:), 'data-scale="') + i + 11
+    read (s(j:j + index(s(j:), '"') - 2), *, iostat=ios) scale
+    call check_true(t, "F16 data-scale reads", ios == 0 .and. scale > 0.0_wp, s(j:j + 20))
+    if (scale <= 0.0_wp) return
+    j = index(s(1:i), '<path d="', back=.true.) + 9
+    d = s(j:j + index(s(j:), '"') - 2)
+    do k = 1, 4
+      j = scan(d, "ML")
+      d = d(j + 1:)
+      read (d, *, iostat=ios) x, y
+      call check_true(t, "F16 path point reads", ios == 0, d(1:min(len(d), 30)))
+      fx = (x - ox) / scale
+      fy = (oy - y) / scale
+      call check_close(t, "F16 path x, step", 100.0_wp * k * cos(30.0_wp * k * deg_to_rad), fx, 0.0_wp, &
+        0.0051_wp / scale)
+      call check_close(t, "F16 path y, step", 100.0_wp * k * sin(30.0_wp * k * deg_to_rad), fy, 0.0_wp, &
+        0.0051_wp / scale)
+    end do
+    call check_true(t, "sheet ends", s(len(s) - 6:) == "</svg>"//new_line("a"), "no closing tag")
+  end subroutine test_sheet
+
+end module test_svg
