@@ -368,10 +368,26 @@ contains
       if (allocated(current)) call move_alloc(current, previous)
     end do
   contains
+    !> The message with the override as its cause. A message that names a line of the deck
+    !> ("deck.nml:11: ...") names the override's own line, which the file does not have:
+    !> "--set NAME=VALUE: ..." replaces "deck.nml:11".
     subroutine name_cause(message)
       character(*), intent(in) :: message
-      error%message = message//" (from --set "//overrides(k)%name//"="//overrides(k)%value//")"
+      character(len=:), allocatable :: given, rest
+      integer :: d
+      given = overrides(k)%name//"="//overrides(k)%value
       error%code = exit_input
+      if (index(message, source%path//":") == 1) then
+        rest = message(len(source%path) + 2:)
+        d = verify(rest, "0123456789")
+        if (d > 1) then
+          if (rest(d:d) == ":") then
+            error%message = "--set "//given//rest(d:)
+            return
+          end if
+        end if
+      end if
+      error%message = message//" (from --set "//given//")"
     end subroutine name_cause
   end subroutine blame_override
 
