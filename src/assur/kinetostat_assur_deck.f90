@@ -12,7 +12,7 @@ module kinetostat_assur_deck
   use kinetostat_text, only: real_str, int_str, number_str, lower
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, unset_bits, max_deck_array, &
-    deck_source_t, namelist_probe_t, deck_error, is_set, require_set, require_positive, &
+    deck_array_capacities, deck_source_t, namelist_probe_t, deck_error, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn, &
     is_whole_in, require_whole
   use kinetostat_vec2, only: unit_at, rotate, magnitude, cross
@@ -284,6 +284,8 @@ contains
     !> Friction coefficient and journal radius (m) of the crank's pivot A.
     real(wp) :: crank_f, crank_r
     real(wp), allocatable :: omega1_step(:), eps1_step(:), step_values(:)
+    !> Elements allocated for each per-step array the deck may give (see deck_array_capacities).
+    integer, allocatable :: capacity(:)
     logical :: angles_signed, components
     type(dyad_in_t) :: dyad(max_dyads)
     type(force_in_t) :: force(max_forces)
@@ -310,8 +312,10 @@ contains
     omega1 = unset_real; g = unset_real; gravity_angle = unset_real
     phi_start = unset_real; dphi = unset_real
     angles_signed = .false.; components = .true.
-    allocate (omega1_step(max_deck_array), eps1_step(max_deck_array), step_values(max_deck_array), &
-              phi1(max_deck_array), source=unset_real)
+    capacity = deck_array_capacities(source, ctx%group, [character(len=11) :: "omega1_step", "eps1_step", &
+      "step_values", "phi1"])
+    allocate (omega1_step(capacity(1)), eps1_step(capacity(2)), step_values(capacity(3)), phi1(capacity(4)), &
+              source=unset_real)
 
     read (source%lines, nml=assur, iostat=ios, iomsg=msg)
     if (ios /= 0) then

@@ -5,7 +5,7 @@ module kinetostat_cam_deck
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str, lower
   use kinetostat_text_buffer, only: text_buffer_t
-  use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, max_deck_array, &
+  use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, deck_array_capacities, &
     deck_source_t, namelist_probe_t, require_all_set, deck_error, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn
   use kinetostat_cam, only: cam_params_t
@@ -95,6 +95,8 @@ contains
     !> Number of steps as given (an integer deck variable, read as a real: see require_whole).
     real(wp) :: n
     integer :: ios, k
+    !> Elements allocated for each per-step array the deck may give (see deck_array_capacities).
+    integer, allocatable :: capacity(:)
     character(len=512) :: msg
     type(deck_context_t) :: ctx
     type(namelist_probe_t) :: probe
@@ -106,8 +108,8 @@ contains
     l = unset_real; l_over = unset_real; f = unset_real; f_cam = unset_real
     omega_dir = unset_real; phi_start = unset_real; dphi = unset_real
     n = unset_real
-    allocate (theta(max_deck_array), f2(max_deck_array), vdir(max_deck_array), ds_dphi(max_deck_array), &
-              source=unset_real)
+    capacity = deck_array_capacities(source, ctx%group, [character(len=7) :: "theta", "f2", "vdir", "ds_dphi"])
+    allocate (theta(capacity(1)), f2(capacity(2)), vdir(capacity(3)), ds_dphi(capacity(4)), source=unset_real)
 
     read (source%lines, nml=cam, iostat=ios, iomsg=msg)
     if (ios /= 0) then

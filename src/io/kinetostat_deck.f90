@@ -17,6 +17,7 @@ module kinetostat_deck
   public :: is_set, require_set, require_positive, require_nonnegative, require_rule
   public :: is_whole_in, require_whole
   public :: optional_default, count_values, steps_over_turn, write_template_lines
+  public :: deck_array_capacities
 
   !> Bit pattern of `unset_real`: a quiet NaN with a payload. A NaN typed in a deck
   !> ("nan", "NaN(0x1)") reads as the plain quiet NaN 7FF8000000000000, so no deck can
@@ -886,5 +887,215 @@ contains
       n = nint(n_real)
     end if
   end subroutine steps_over_turn
+
+  !> Capacities for the per-step arrays `names` of namelist group `group`: for each, an upper
+  !> bound on the highest element the deck's text can assign (from its value lists, repeat
+  !> counts `r*c`, null values and subscripts `name(i)`), at least 1 and at most
+  !> max_deck_array. An array sized so reads exactly as one of max_deck_array elements (a
+  !> deck giving more values than that fails the same way), without the 10^6-element buffer.
+  !> The scan starts after the first line opening the group ('&group'), skips quoted strings
+  !> (which may span lines) and '!' comments, and stops at '/'. Each '=' closes the value
+  !> list before it and opens one for the designator written just before it; a list's count
+  !> includes that following designator, so the bound may exceed the truth by one or more
+  !> (never fall short of it). Not `pure` only because its internal steps share the scan's
+  !> state; it has no side effects.
+  function deck_array_capacities(source, group, names) result(capacity)
+    !> The deck.
+    type(deck_source_t), intent(in) :: source
+    !> Group name, lower case, without '&'.
+    character(*), intent(in) :: group
+    !> Array names, lower case (trailing blanks ignored).
+    character(*), intent(in) :: names(:)
+    !> Elements to allocate for each array.
+    integer :: capacity(size(names))
+    !> Longest token kept (a longer one counts as a huge repeat count or subscript).
+    integer, parameter :: token_max = 128
+    !> Cap of counts (well above max_deck_array, far below overflow).
+    integer(int64), parameter :: count_cap = 1000000000000_int64
+    character(len=*), parameter :: tab = achar(9)
+    integer(int64) :: bound(size(names)), slots, first
+    character(len=token_max) :: token, last, before_last
+    integer :: token_len, last_len, before_last_len, depth, line, i, start, target
+    logical :: truncated, last_truncated, before_last_truncated, value_since_comma
+    character(len=1) :: quote, c
+
+    bound = 0
+    capacity = 1
+    call find_group(line, start)
+    if (line == 0) return
+    target = 0
+    first = 1
+    slots = 0
+    value_since_comma = .false.
+    token_len = 0; last_len = 0; before_last_len = 0
+    truncated = .false.; last_truncated = .false.; before_last_truncated = .false.
+    depth = 0
+    quote = " "
+    scan: do while (line <= size(source%lines))
+      associate (text => source%lines(line))
+        do i = start, len_trim(text)
+          c = text(i:i)
+          if (quote /= " ") then
+            call add_char(c)
+            if (c == quote) quote = " "
+          else if (depth > 0) then
+            call add_char(c)
+            if (c == "(") depth = depth + 1
+            if (c == ")") depth = depth - 1
+          else if (c == "'" .or. c == '"') then
+            quote = c
+            call add_char(c)
+          else if (c == "(") then
+            depth = 1
+            call add_char(c)
+          else if (c == "!") then
+            ! gfortran may take a comment after a separator for a null value: count one
+            call end_token()
+            slots = min(slots + 1, count_cap)
+            exit
+          else if (c == "/") then
+            call end_token()
+            exit scan
+          else if (c == " " .or. c == tab) then
+            call end_token()
+          else if (c == "," .or. c == ";") then
+            call end_token()
+            ! a separator after a separator (or right after '=') is a null value
+            if (.not. value_since_comma) slots = min(slots + 1, count_cap)
+            value_since_comma = .false.
+          else if (c == "=") then
+            call end_token()
+            call close_list()
+            call open_list()
+          else
+            call add_char(c)
+          end if
+        end do
+      end associate
+      if (quote == " " .and. depth == 0) then
+        ! the end of a line separates values like a comma (gfortran: "1<eol>, 2" is 1, null, 2);
+        ! counted as a null when no value came since the last separator (may over-count)
+        call end_token()
+        if (.not. value_since_comma) slots = min(slots + 1, count_cap)
+        value_since_comma = .false.
+      end if
+      line = line + 1
+      start = 1
+    end do scan
+    call close_list()
+    capacity = int(max(1_int64, min(bound, int(max_deck_array, int64))))
+
+  contains
+
+    !> Line and column just after '&group' on the first line opening the group (0 when none).
+    subroutine find_group(line, start)
+      integer, intent(out) :: line, start
+      integer :: k, at, j
+      do k = 1, size(source%lines)
+        associate (text => source%lines(k))
+          at = verify(text, " "//tab)
+          if (at == 0) cycle
+          if (text(at:at) /= "&") cycle
+          j = at + 1
+          do while (j <= len(text))
+            if (index(" /,!"//tab, text(j:j)) > 0) exit
+            j = j + 1
+          end do
+          if (lower(text(at + 1:j - 1)) /= group) cycle
+          line = k
+          start = j
+          return
+        end associate
+      end do
+      line = 0
+      start = 1
+    end subroutine find_group
+
+    !> One more character of the current token.
+    subroutine add_char(ch)
+      character(len=1), intent(in) :: ch
+      if (token_len < token_max) then
+        token_len = token_len + 1
+        token(token_len:token_len) = ch
+      else
+        truncated = .true.
+      end if
+    end subroutine add_char
+
+    !> The current token is complete: it is a value (or the next designator) of the list.
+    subroutine end_token()
+      if (token_len == 0) return
+      slots = min(slots + repeat_count(token(1:token_len), truncated), count_cap)
+      value_since_comma = .true.
+      before_last = last; before_last_len = last_len; before_last_truncated = last_truncated
+      last = token; last_len = token_len; last_truncated = truncated
+      token_len = 0
+      truncated = .false.
+    end subroutine end_token
+
+    !> The values counted since the last '=' end at element first + slots - 1 of the array.
+    subroutine close_list()
+      ! the designator's element itself must exist even when no value follows ("a(5) = /")
+      if (target > 0) bound(target) = max(bound(target), min(first + max(slots, 1_int64) - 1, count_cap))
+    end subroutine close_list
+
+    !> A '=' follows the designator last read (a subscript written apart, "f5c (3)", is
+    !> joined to its name): the array it names, if one of `names`, and its first element.
+    subroutine open_list()
+      character(len=:), allocatable :: designator
+      logical :: cut
+      integer :: paren, k
+      integer(int64) :: number
+      target = 0
+      first = 1
+      slots = 0
+      value_since_comma = .false.
+      if (last_len == 0) return
+      designator = lower(last(1:last_len))
+      cut = last_truncated
+      if (designator(1:1) == "(" .and. before_last_len > 0) then
+        designator = lower(before_last(1:before_last_len))//designator
+        cut = cut .or. before_last_truncated
+      end if
+      last_len = 0
+      before_last_len = 0
+      if (index(designator, "%") > 0) return
+      paren = index(designator, "(")
+      if (paren == 0) paren = len(designator) + 1
+      target = findloc([(trim(names(k)) == designator(1:paren - 1), k=1, size(names))], .true., dim=1)
+      if (target == 0) return
+      ! first element: the largest number in the subscript (a section's upper end)
+      number = 0
+      do k = paren + 1, len(designator)
+        if (designator(k:k) >= "0" .and. designator(k:k) <= "9") then
+          number = min(number * 10 + (iachar(designator(k:k)) - iachar("0")), count_cap)
+          first = max(first, number)
+        else
+          number = 0
+        end if
+      end do
+      if (cut) first = count_cap
+    end subroutine open_list
+
+    !> Values a token stands for: r for a repeat "r*c" or "r*", else 1.
+    pure integer(int64) function repeat_count(tok, cut)
+      character(*), intent(in) :: tok
+      !> The token was longer than kept.
+      logical, intent(in) :: cut
+      integer :: star, k
+      repeat_count = 1
+      star = verify(tok, "0123456789")
+      if (star == 0) then
+        ! all digits: a long run may continue with '*' beyond what was kept
+        if (cut) repeat_count = count_cap
+        return
+      end if
+      if (star == 1 .or. tok(star:star) /= "*") return
+      repeat_count = 0
+      do k = 1, star - 1
+        repeat_count = min(repeat_count * 10 + (iachar(tok(k:k)) - iachar("0")), count_cap)
+      end do
+    end function repeat_count
+  end function deck_array_capacities
 
 end module kinetostat_deck

@@ -50,6 +50,8 @@ module kinetostat_run
     !> CSV and JSON add the kinematics columns (positions, link angles and speeds,
     !> accelerations of the centres of mass, force components).
     logical :: kinematics = .false.
+    !> Pair forces also in the moving axes of the link each acts on (--frame link).
+    logical :: link_frame = .false.
     !> SVG: the pair forces to draw, comma-separated ("" for all).
     character(len=:), allocatable :: pairs
     !> SVG: draw the mechanism at this row (0: the sheet of hodographs and diagrams).
@@ -107,6 +109,14 @@ contains
     if (allocated(error)) return
     call guard_finite(table, error)
     if (allocated(error)) return
+    if (options%link_frame) then
+      if (.not. any(table%columns%link_axes)) then
+        call fatal_error(error, exit_usage, "--frame link: only the generic engine (&assur) reports reactions "// &
+          "in link axes; "//table%deck//" is &"//group)
+        return
+      end if
+      table%link_frame = .true.
+    end if
     if (allocated(options%overrides)) then
       if (size(options%overrides) > 0) call mark_overrides(table, options%overrides)
     end if
@@ -114,7 +124,7 @@ contains
     if (allocated(warning)) call table%add_warning(warning)
     select case (options%format)
     case (format_csv)
-      call write_csv(table, out, options%kinematics)
+      call write_csv(table, out, options%kinematics, options%link_frame)
     case (format_summary)
       if (table%row_count() == 0) then
         call fatal_error(error, exit_input, table%deck//": &"//table%mechanism//": no rows to summarize")
@@ -123,7 +133,7 @@ contains
       call out%put(summary_header(table, options%kinematics))
       call out%put(summary_row(table, options%kinematics))
     case (format_json)
-      call write_json(mech%title(options%lang), table, out, options%kinematics)
+      call write_json(mech%title(options%lang), table, out, options%kinematics, options%link_frame)
     case (format_svg)
       if (options%at_step > 0) then
         call write_at_step(mech, table, options, out, error)

@@ -68,6 +68,11 @@ module kinetostat_step_table
     !> Force component columns: angle of the x axis of the frame the components are given in,
     !> measured in the mechanism's position frame, deg (0 when they are the same frame).
     real(wp) :: frame_angle = 0.0_wp
+    !> True for a pair force component in the moving axes of the link it acts on (<F>_along,
+    !> <F>_across): always in the table, shown by CSV and JSON only with --frame link.
+    logical :: link_axes = .false.
+    !> Link-axes columns: the label of that link (its angle is the kinematics column phi<label>).
+    character(len=:), allocatable :: frame_link
   end type column_t
 
   !> One remark of a run for the user (a warning on stderr, in JSON).
@@ -143,12 +148,16 @@ module kinetostat_step_table
     character(len=:), allocatable :: summary_heading
     !> Summary records (real values and lines of text), printed after RESULTS; none by default.
     type(echo_record_t), allocatable :: summary(:)
+    !> The run reports the pair forces in link axes (--frame link; the legacy table prints the
+    !> link-axes columns instead of magnitudes and angles).
+    logical :: link_frame = .false.
   contains
     procedure :: add_column
     procedure :: put_point
     procedure :: put_link
     procedure :: put_acceleration
     procedure :: put_components
+    procedure :: put_link_axes
     procedure :: shows
     procedure :: set_columns
     procedure :: column_index
@@ -256,16 +265,34 @@ contains
     call put_kinematic(self, k, force//"_y", "N", col_component, f(2), frame_angle)
   end subroutine put_components
 
+  !> Link axes (--frame link): components <force>_along, <force>_across (N) of a pair force
+  !> in row `k` in the moving axes of the link it acts on (x along the link's x axis).
+  pure subroutine put_link_axes(self, k, force, f, link)
+    class(step_table_t), intent(inout) :: self
+    !> Row.
+    integer, intent(in) :: k
+    !> Force name ("F21").
+    character(*), intent(in) :: force
+    !> Components (along, across), N.
+    real(wp), intent(in) :: f(2)
+    !> Label of the link the force acts on ("2"; its angle column is phi<link>).
+    character(*), intent(in) :: link
+    call put_kinematic(self, k, force//"_along", "N", col_component, f(1), link=link)
+    call put_kinematic(self, k, force//"_across", "N", col_component, f(2), link=link)
+  end subroutine put_link_axes
+
   !> Set the value of kinematics column `name` in row `k`, appending the column (zero in
   !> every row) on first use; a column of that name that is not a kinematics column (one the
-  !> mechanism reports anyway) is left as it is.
-  pure subroutine put_kinematic(self, k, name, unit, kind, value, frame_angle)
+  !> mechanism reports anyway) is left as it is. With `link` the column is a link-axes column
+  !> of that link instead.
+  pure subroutine put_kinematic(self, k, name, unit, kind, value, frame_angle, link)
     type(step_table_t), intent(inout) :: self
     integer, intent(in) :: k
     character(*), intent(in) :: name, unit
     integer, intent(in) :: kind
     real(wp), intent(in) :: value
     real(wp), intent(in), optional :: frame_angle
+    character(*), intent(in), optional :: link
     type(column_t) :: c
     real(wp), allocatable :: grown(:, :)
     integer :: i
@@ -274,7 +301,9 @@ contains
       c%name = name
       c%unit = unit
       c%kind = kind
-      c%kinematic = .true.
+      c%kinematic = .not. present(link)
+      c%link_axes = present(link)
+      if (present(link)) c%frame_link = link
       if (present(frame_angle)) c%frame_angle = frame_angle
       self%columns = [self%columns, c]
       i = size(self%columns)
@@ -282,17 +311,25 @@ contains
       grown(1:i - 1, :) = self%rows
       call move_alloc(grown, self%rows)
     end if
-    if (self%columns(i)%kinematic) self%rows(i, k) = value + 0.0_wp
+    if (self%columns(i)%kinematic .or. self%columns(i)%link_axes) self%rows(i, k) = value + 0.0_wp
   end subroutine put_kinematic
 
-  !> Whether a writer shows column `c`: kinematics columns only when `kinematics` is true.
-  pure logical function shows(self, c, kinematics)
+  !> Whether a writer shows column `c`: kinematics columns only when `kinematics` is true,
+  !> link-axes columns only when `link_axes` is true (default false).
+  pure logical function shows(self, c, kinematics, link_axes)
     class(step_table_t), intent(in) :: self
     !> Column index.
     integer, intent(in) :: c
     !> Whether the kinematics columns were asked for (--kinematics).
     logical, intent(in) :: kinematics
-    shows = kinematics .or. .not. self%columns(c)%kinematic
+    !> Whether the link-axes columns were asked for (--frame link).
+    logical, intent(in), optional :: link_axes
+    if (self%columns(c)%link_axes) then
+      shows = .false.
+      if (present(link_axes)) shows = link_axes
+    else
+      shows = kinematics .or. .not. self%columns(c)%kinematic
+    end if
   end function shows
 
   !> Set all columns at once from parallel lists of names, units and kinds.

@@ -4,7 +4,7 @@ module kinetostat_pr3050_deck
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str
   use kinetostat_text_buffer, only: text_buffer_t
-  use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, max_deck_array, max_steps, &
+  use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, deck_array_capacities, max_steps, &
     deck_source_t, namelist_probe_t, require_all_set, deck_error, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values
   use kinetostat_pr3050, only: pr3050_params_t
@@ -113,6 +113,8 @@ contains
     real(wp) :: phi3_start, phi3_end, dphi3
     real(wp), allocatable :: omega3(:), eps3(:)
     integer :: ios, n_omega3, n_eps3, k
+    !> Elements allocated for each per-step array the deck may give (see deck_array_capacities).
+    integer, allocatable :: capacity(:)
     character(len=512) :: msg
     type(deck_context_t) :: ctx
     type(namelist_probe_t) :: probe
@@ -126,8 +128,9 @@ contains
     m1 = unset_real; m2 = unset_real; m3 = unset_real
     j1 = unset_real; j2 = unset_real; j3 = unset_real
     phi3_start = unset_real; phi3_end = unset_real; dphi3 = unset_real
-    allocate (omega3(max_deck_array), source=unset_real)
-    allocate (eps3(max_deck_array), source=unset_real)
+    capacity = deck_array_capacities(source, ctx%group, [character(len=6) :: "omega3", "eps3"])
+    allocate (omega3(capacity(1)), source=unset_real)
+    allocate (eps3(capacity(2)), source=unset_real)
 
     read (source%lines, nml=pr3050, iostat=ios, iomsg=msg)
     if (ios /= 0) then

@@ -4,7 +4,7 @@ module kinetostat_pr3207_deck
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str
   use kinetostat_text_buffer, only: text_buffer_t
-  use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, max_deck_array, &
+  use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, deck_array_capacities, &
     deck_source_t, namelist_probe_t, require_all_set, deck_error, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn
   use kinetostat_pr3207, only: pr3207_params_t
@@ -107,6 +107,8 @@ contains
     !> Number of steps as given (an integer deck variable, read as a real: see require_whole).
     real(wp) :: n
     integer :: ios, n_f5c, k
+    !> Elements allocated for each per-step array the deck may give (see deck_array_capacities).
+    integer, allocatable :: capacity(:)
     character(len=512) :: msg
     type(deck_context_t) :: ctx
     type(namelist_probe_t) :: probe
@@ -121,7 +123,8 @@ contains
     omega1 = unset_real; g = unset_real; phi_start = unset_real; dphi = unset_real
     f5c_work = unset_real; f5c_idle = unset_real; phi_cut_start = unset_real; phi_cut_end = unset_real
     n = unset_real
-    allocate (f5c(max_deck_array), source=unset_real)
+    capacity = deck_array_capacities(source, ctx%group, ["f5c"])
+    allocate (f5c(capacity(1)), source=unset_real)
 
     read (source%lines, nml=pr3207, iostat=ios, iomsg=msg)
     if (ios /= 0) then

@@ -4,7 +4,7 @@ module kinetostat_sixbar_deck
   use kinetostat_error, only: error_t, fatal_error, exit_geometry
   use kinetostat_text, only: real_str, int_str
   use kinetostat_text_buffer, only: text_buffer_t
-  use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, max_deck_array, &
+  use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, deck_array_capacities, &
     deck_source_t, namelist_probe_t, require_all_set, deck_error, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn
   use kinetostat_sixbar, only: sixbar_params_t, sixbar_extreme_phi1
@@ -84,6 +84,8 @@ contains
     !> Number of steps as given (an integer deck variable, read as a real: see require_whole).
     real(wp) :: n
     integer :: ios, n_f5, k
+    !> Elements allocated for each per-step array the deck may give (see deck_array_capacities).
+    integer, allocatable :: capacity(:)
     character(len=512) :: msg
     type(deck_context_t) :: ctx
     type(namelist_probe_t) :: probe
@@ -101,7 +103,8 @@ contains
     n = unset_real
     start_at_extreme = .false.
     legacy_eq2 = .false.
-    allocate (f5(max_deck_array), source=unset_real)
+    capacity = deck_array_capacities(source, ctx%group, ["f5"])
+    allocate (f5(capacity(1)), source=unset_real)
 
     read (source%lines, nml=sixbar, iostat=ios, iomsg=msg)
     if (ios /= 0) then
