@@ -17,12 +17,13 @@ program kinetostat_tests
   use test_kinematics, only: run_kinematics_tests
   use test_svg, only: run_svg_tests
   use test_decimal, only: run_decimal_tests
+  use test_lapack, only: run_lapack_tests
   use, intrinsic :: iso_fortran_env, only: error_unit
   implicit none
   !> Suite names, in the order they run.
   character(*), parameter :: suite_names(*) = [character(len=11) :: &
     "foundation", "pr3207", "pr3050", "sixbar", "gears", "cam", "assur", "assur_ext", "friction", "io", &
-    "kinematics", "svg", "decimal"]
+    "kinematics", "svg", "decimal", "lapack"]
   type(test_counts_t) :: t
   logical :: selected(size(suite_names))
   integer :: i
@@ -85,6 +86,7 @@ contains
     case ("kinematics"); call run_kinematics_tests(t)
     case ("svg"); call run_svg_tests(t)
     case ("decimal"); call run_decimal_tests(t)
+    case ("lapack"); call run_lapack_tests(t)
     case default; error stop "run_suite: no suite '"//name//"'"
     end select
   end subroutine run_suite

@@ -1,6 +1,6 @@
 !> Generic mechanism, layer 2: the reactions of one class-II Assur group (dyad) from its
 !> six equilibrium equations (manual section 5, Table 1: three per link), solved with LAPACK
-!> through kinetostat_lapack's solve_dense (dgesv + dgecon; ill-conditioned = dead position).
+!> through kinetostat_lapack's solve_dense (dgesv; dgecon near its threshold; ill-conditioned = dead position).
 !>
 !> Pairs: 1 = outer pair of link a, 2 = inner pair (a with b), 3 = outer pair of link b.
 !> Unknowns: a revolute pair carries a force (Rx, Ry) and no moment; a prismatic pair
@@ -26,8 +26,6 @@ module kinetostat_assur_statics
     real(wp) :: n(3) = 0.0_wp
     !> Reaction moment of each prismatic pair about its reference point (0 for revolute), N*m.
     real(wp) :: m(3) = 0.0_wp
-    !> Reciprocal condition estimate of the scaled 6x6 system (LAPACK dgecon, 1-norm).
-    real(wp) :: rcond = 0.0_wp
   end type dyad_reactions_t
 
 contains
@@ -107,7 +105,7 @@ contains
     b(3) = -m_known(1) / scale
     b(4:5) = -f_known(:, 2)
     b(6) = -m_known(2) / scale
-    call solve_dense(a, b, x, error, r%rcond)
+    call solve_dense(a, b, x, error)
     if (allocated(error)) return
     do j = 1, 3
       col = 2 * j - 1

@@ -107,6 +107,7 @@ contains
     table%driver = "M1"
     call mech%solve(table, error)
     if (allocated(error)) return
+    call table%finish_columns()
     call guard_finite(table, error)
     if (allocated(error)) return
     if (options%link_frame) then

@@ -113,6 +113,13 @@ module kinetostat_step_table
     character(len=:), allocatable :: row_name
     !> Index of the column holding the input coordinate (0 when there is none).
     integer :: input_column = 0
+    !> Column put_kinematic set last (a step puts its kinematics in the same order every
+    !> time, so the next one is looked for after it before searching all columns).
+    integer :: last_kinematic = 0
+    !> Row 1 of kinematics columns added during row 1 and not yet in `rows` (a table of many
+    !> rows grows by all of them at once, when row 2 arrives or finish_columns is called,
+    !> instead of copying every row once per new column).
+    real(wp), allocatable :: pending(:)
     !> The columns.
     type(column_t), allocatable :: columns(:)
     !> Values, rows(column, row).
@@ -159,6 +166,7 @@ module kinetostat_step_table
     procedure :: put_components
     procedure :: put_link_axes
     procedure :: shows
+    procedure :: finish_columns
     procedure :: set_columns
     procedure :: column_index
     procedure :: allocate_rows
@@ -296,7 +304,14 @@ contains
     type(column_t) :: c
     real(wp), allocatable :: grown(:, :)
     integer :: i
-    i = self%column_index(name)
+    if (allocated(self%pending) .and. k /= 1) call self%finish_columns()
+    i = self%last_kinematic + 1
+    if (i > size(self%columns)) then
+      i = 0
+    else if (self%columns(i)%name /= name) then
+      i = 0
+    end if
+    if (i == 0) i = self%column_index(name)
     if (i == 0) then
       c%name = name
       c%unit = unit
@@ -307,12 +322,40 @@ contains
       if (present(frame_angle)) c%frame_angle = frame_angle
       self%columns = [self%columns, c]
       i = size(self%columns)
-      allocate (grown(i, size(self%rows, 2)), source=0.0_wp)
-      grown(1:i - 1, :) = self%rows
-      call move_alloc(grown, self%rows)
+      if (k == 1 .and. size(self%rows, 2) > 1) then
+        if (.not. allocated(self%pending)) allocate (self%pending(0))
+        self%pending = [self%pending, 0.0_wp]
+      else
+        call self%finish_columns()
+        allocate (grown(i, size(self%rows, 2)), source=0.0_wp)
+        grown(1:i - 1, :) = self%rows
+        call move_alloc(grown, self%rows)
+      end if
     end if
-    if (self%columns(i)%kinematic .or. self%columns(i)%link_axes) self%rows(i, k) = value + 0.0_wp
+    if (self%columns(i)%kinematic .or. self%columns(i)%link_axes) then
+      if (i > size(self%rows, 1)) then
+        self%pending(i - size(self%rows, 1)) = value + 0.0_wp
+      else
+        self%rows(i, k) = value + 0.0_wp
+      end if
+    end if
+    self%last_kinematic = i
   end subroutine put_kinematic
+
+  !> Give `rows` every column added so far (the pending kinematics columns of row 1, zero in
+  !> the other rows); the run pipeline calls it after the mechanism's solve.
+  pure subroutine finish_columns(self)
+    class(step_table_t), intent(inout) :: self
+    real(wp), allocatable :: grown(:, :)
+    integer :: done
+    if (.not. allocated(self%pending)) return
+    done = size(self%rows, 1)
+    allocate (grown(size(self%columns), size(self%rows, 2)), source=0.0_wp)
+    grown(1:done, :) = self%rows
+    grown(done + 1:, 1) = self%pending
+    call move_alloc(grown, self%rows)
+    deallocate (self%pending)
+  end subroutine finish_columns
 
   !> Whether a writer shows column `c`: kinematics columns only when `kinematics` is true,
   !> link-axes columns only when `link_axes` is true (default false).

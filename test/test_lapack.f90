@@ -1,0 +1,102 @@
+!> The singular-position test of solve_dense (a cheap bound first, dgecon only near the
+!> threshold) against the test as it was (dgesv, then dgecon always): the same verdict on a
+!> fuzzed set of 6x6 and 3x3 systems, well-conditioned, badly scaled and near-singular ones
+!> whose reciprocal condition straddles rcond_threshold (a fixed seed, so a failure repeats).
+module test_lapack
+  use, intrinsic :: iso_fortran_env, only: int64
+  use kinetostat_kinds, only: wp
+  use kinetostat_error, only: error_t
+  use kinetostat_lapack, only: solve_dense, singular_by_estimate
+  use test_harness, only: test_counts_t, check_true
+  implicit none
+  private
+  public :: run_lapack_tests
+
+  !> Fuzzed systems per size.
+  integer, parameter :: system_count = 20000
+
+contains
+
+  subroutine run_lapack_tests(t)
+    type(test_counts_t), intent(inout) :: t
+    call fuzz(t, 6)
+    call fuzz(t, 3)
+  end subroutine run_lapack_tests
+
+  !> system_count systems of size n: the verdicts must agree; both kinds must occur.
+  subroutine fuzz(t, n)
+    type(test_counts_t), intent(inout) :: t
+    integer, intent(in) :: n
+    real(wp) :: a(n, n), x(n), b(n)
+    type(error_t), allocatable :: error
+    integer(int64) :: state
+    integer :: i, differ, singular, regular
+    character(len=160) :: detail
+    state = 1400_int64 + n
+    differ = 0
+    singular = 0
+    regular = 0
+    do i = 1, system_count
+      call random_system(state, mod(i, 4), a)
+      b = 1.0_wp
+      call solve_dense(a, b, x, error)
+      if (allocated(error) .neqv. singular_by_estimate(a)) differ = differ + 1
+      if (allocated(error)) then
+        singular = singular + 1
+      else
+        regular = regular + 1
+      end if
+    end do
+    write (detail, '(a,i0,a,i0,a,i0,a,i0)') "n = ", n, ": ", differ, " verdicts differ; singular ", singular, &
+      ", regular ", regular
+    call check_true(t, "lapack: cheap singular test = dgecon's verdict", differ == 0, trim(detail))
+    call check_true(t, "lapack: the fuzzed set has singular and regular systems", singular > system_count / 10 &
+                    .and. regular > system_count / 10, trim(detail))
+  end subroutine fuzz
+
+  !> A random system of a family: 0 random, 1 badly scaled rows and columns, 2 and 3 a rank
+  !> deficient matrix plus a perturbation of relative size 1e-18 .. 1e-6.
+  subroutine random_system(state, family, a)
+    integer(int64), intent(inout) :: state
+    integer, intent(in) :: family
+    real(wp), intent(out) :: a(:, :)
+    real(wp) :: c(size(a, 1)), eps
+    integer :: i, j, n
+    n = size(a, 1)
+    do j = 1, n
+      do i = 1, n
+        a(i, j) = 2.0_wp * uniform(state) - 1.0_wp
+      end do
+    end do
+    select case (family)
+    case (1)
+      do i = 1, n
+        a(i, :) = a(i, :) * 10.0_wp**(6.0_wp * uniform(state) - 3.0_wp)
+        a(:, i) = a(:, i) * 10.0_wp**(6.0_wp * uniform(state) - 3.0_wp)
+      end do
+    case (2, 3)
+      do j = 1, n - 1
+        c(j) = 2.0_wp * uniform(state) - 1.0_wp
+      end do
+      a(:, n) = matmul(a(:, 1:n - 1), c(1:n - 1))
+      eps = 10.0_wp**(-18.0_wp + 12.0_wp * uniform(state))
+      do i = 1, n
+        a(i, n) = a(i, n) + eps * (2.0_wp * uniform(state) - 1.0_wp)
+      end do
+    case default ! a plain random matrix
+    end select
+  end subroutine random_system
+
+  !> A uniform deviate in [0, 1) (splitmix64).
+  real(wp) function uniform(state)
+    integer(int64), intent(inout) :: state
+    integer(int64) :: z
+    state = state + int(z'9E3779B97F4A7C15', int64)
+    z = state
+    z = ieor(z, shiftr(z, 30)) * int(z'BF58476D1CE4E5B9', int64)
+    z = ieor(z, shiftr(z, 27)) * int(z'94D049BB133111EB', int64)
+    z = ieor(z, shiftr(z, 31))
+    uniform = real(shiftr(z, 11), wp) * 2.0_wp**(-53)
+  end function uniform
+
+end module test_lapack
