@@ -188,7 +188,7 @@ contains
     type(assur_step_t), allocatable :: steps(:)
     type(friction_step_t), allocatable :: fsteps(:)
     character(len=24), allocatable :: names(:)
-    integer :: k, c, ip
+    integer :: k, c, ip, nc
     allocate (steps(0), fsteps(0)) ! defined before the call (gcc's -Wmaybe-uninitialized on the descriptor)
     call assur_solve(table%deck, self%deck, steps, error, fsteps)
     if (allocated(error)) return
@@ -234,14 +234,21 @@ contains
       call table%add_column(trim(names(size(names))), "", col_ratio)
     end if
     table%input_column = 1
+    ! the kinematics columns first, on a 1-row table: the rows are then allocated once for all
+    ! columns instead of regrown for each new column
+    nc = size(table%columns)
+    call table%allocate_rows(1)
+    if (size(steps) > 0) call put_kinematics(table, 1, self%deck, steps(1))
     call table%allocate_rows(size(steps))
+    !$omp parallel do schedule(static)
     do k = 1, size(steps)
       if (self%deck%friction_on) then
-        table%rows(:, k) = [assur_csv_values(self%deck, steps(k)), friction_csv_values(self%deck, steps(k), fsteps(k))]
+        table%rows(1:nc, k) = [assur_csv_values(self%deck, steps(k)), friction_csv_values(self%deck, steps(k), fsteps(k))]
       else
-        table%rows(:, k) = assur_csv_values(self%deck, steps(k))
+        table%rows(1:nc, k) = assur_csv_values(self%deck, steps(k))
       end if
     end do
+    !$omp end parallel do
     do k = 1, size(steps)
       call put_kinematics(table, k, self%deck, steps(k))
     end do
@@ -392,7 +399,7 @@ contains
   end function assur_pair_prismatic
 
   !> All steps of a validated deck; a geometry error names the step and the input angle.
-  pure subroutine assur_solve(path, deck, steps, error, fsteps)
+  subroutine assur_solve(path, deck, steps, error, fsteps)
     !> Deck file (for messages).
     character(*), intent(in) :: path
     !> Validated deck.
@@ -406,25 +413,43 @@ contains
     type(error_t), allocatable :: step_error
     type(friction_step_t) :: fs
     character(len=32) :: angle_text
-    integer :: k
+    integer :: k, first_bad
+    logical :: keep_friction
     allocate (steps(deck%n))
-    if (present(fsteps)) allocate (fsteps(merge(deck%n, 0, deck%friction_on)))
+    keep_friction = present(fsteps)
+    if (keep_friction) allocate (fsteps(merge(deck%n, 0, deck%friction_on)))
+    ! steps in parallel with OpenMP threads; the error reported is the first step's in step order
+    ! (that step is solved again alone for its message)
+    first_bad = deck%n + 1
+    !$omp parallel do schedule(dynamic, 64) private(fs, step_error) reduction(min:first_bad)
     do k = 1, deck%n
+      call one_step(k, steps(k), fs, step_error)
+      if (deck%friction_on .and. keep_friction) fsteps(k) = fs
+      if (allocated(step_error)) first_bad = min(first_bad, k)
+    end do
+    !$omp end parallel do
+    if (first_bad <= deck%n) then
+      k = first_bad
+      call one_step(k, steps(k), fs, step_error)
+      write (angle_text, '(g0.10)') deck%phi1_deg(k)
+      call fatal_error(error, exit_geometry, path//": &assur: step "//int_str(k)//" (phi1 = "// &
+        trim(adjustl(angle_text))//" deg): "//step_error%message)
+    end if
+  contains
+    !> Step `k`: its results, friction results (deck%friction_on), error.
+    subroutine one_step(k, step, fstep, step_error)
+      integer, intent(in) :: k
+      type(assur_step_t), intent(out) :: step
+      type(friction_step_t), intent(out) :: fstep
+      type(error_t), allocatable, intent(out) :: step_error
       if (deck%friction_on) then
         call assur_friction_step(deck%mech, deck%friction, deck%phi1_deg(k) * deg_to_rad, deck%omega1(k), &
-          deck%eps1(k), deck%motion_sign(k), deck%f_mag(:, k), deck%m_mag(:, k), steps(k), fs, step_error)
-        if (present(fsteps)) fsteps(k) = fs
+          deck%eps1(k), deck%motion_sign(k), deck%f_mag(:, k), deck%m_mag(:, k), step, fstep, step_error)
       else
         call assur_step(deck%mech, deck%phi1_deg(k) * deg_to_rad, deck%omega1(k), deck%eps1(k), &
-                        deck%f_mag(:, k), deck%m_mag(:, k), steps(k), step_error)
+                        deck%f_mag(:, k), deck%m_mag(:, k), step, step_error)
       end if
-      if (allocated(step_error)) then
-        write (angle_text, '(g0.10)') deck%phi1_deg(k)
-        call fatal_error(error, exit_geometry, path//": &assur: step "//int_str(k)//" (phi1 = "// &
-          trim(adjustl(angle_text))//" deg): "//step_error%message)
-        return
-      end if
-    end do
+    end subroutine one_step
   end subroutine assur_solve
 
   !> CSV column names: phi1; per pair F, FG, [Fx, Fy], [FN, FM for prismatic pairs]; M1, or

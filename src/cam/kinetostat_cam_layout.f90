@@ -80,18 +80,20 @@ contains
     call write_cam_template(out)
   end subroutine write_template
 
-  !> All steps of a validated deck.
-  pure subroutine cam_solve(deck, steps)
+  !> All steps of a validated deck (in parallel with OpenMP threads).
+  subroutine cam_solve(deck, steps)
     !> Validated deck.
     type(cam_deck_t), intent(in) :: deck
     !> One result per cam angle.
     type(cam_step_t), allocatable, intent(out) :: steps(:)
     integer :: k
     allocate (steps(deck%n))
+    !$omp parallel do schedule(static)
     do k = 1, deck%n
       steps(k) = cam_step(deck%p, deck%theta_deg(k) * deg_to_rad, deck%x_b(k), deck%mu_cam, &
                           deck%f2(k), deck%vdir(k))
     end do
+    !$omp end parallel do
   end subroutine cam_solve
 
   !> Every step into the step table, with the INPUT DATA echo and the self-check.
@@ -104,10 +106,16 @@ contains
     call cam_solve(self%deck, steps)
     call table%set_columns(cam_csv_columns, column_units, column_kinds)
     table%input_column = 1
+    ! the kinematics columns first, on a 1-row table: the rows are then allocated once for all
+    ! columns instead of regrown for each new column
+    call table%allocate_rows(1)
+    if (size(steps) > 0) call put_kinematics(table, 1, self%deck, steps(1))
     call table%allocate_rows(size(steps))
+    !$omp parallel do schedule(static)
     do k = 1, size(steps)
-      table%rows(:, k) = cam_csv_values(self%deck, steps(k), k)
+      table%rows(1:size(cam_csv_columns), k) = cam_csv_values(self%deck, steps(k), k)
     end do
+    !$omp end parallel do
     do k = 1, size(steps)
       call put_kinematics(table, k, self%deck, steps(k))
     end do

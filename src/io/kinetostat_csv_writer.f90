@@ -4,14 +4,17 @@ module kinetostat_csv_writer
   use kinetostat_step_table, only: step_table_t
   use kinetostat_format, only: put_cell, cell_room
   use kinetostat_text_buffer, only: text_buffer_t
+  use kinetostat_row_blocks, only: put_row_blocks
   implicit none
   private
   public :: write_csv
 
 contains
 
-  !> The CSV of a step table (columns marked csv only; kinematics and link-axes columns when asked).
-  pure subroutine write_csv(table, out, kinematics, link_axes)
+  !> The CSV of a step table (columns marked csv only; kinematics and link-axes columns when
+  !> asked). The rows are formatted in parallel blocks with more than one OpenMP thread
+  !> (same bytes).
+  subroutine write_csv(table, out, kinematics, link_axes)
     !> Finite results.
     type(step_table_t), intent(in) :: table
     !> Where the lines go.
@@ -23,7 +26,7 @@ contains
     character(len=:), allocatable :: line
     logical, allocatable :: whole(:)
     integer, allocatable :: columns(:)
-    integer :: k, c
+    integer :: c
     logical :: shown(size(table%columns)), with_kinematics, with_link_axes
     with_kinematics = .false.
     if (present(kinematics)) with_kinematics = kinematics
@@ -47,15 +50,23 @@ contains
     do c = 1, size(columns)
       whole(c) = table%is_whole(columns(c))
     end do
-    ! room for every row at once (no copying while the buffer grows)
-    call out%reserve(table%row_count() * (size(columns) * (cell_room + 1) + 1))
-    do k = 1, table%row_count()
-      do c = 1, size(columns)
-        if (c > 1) call out%append(",")
-        call put_cell(out, table%rows(columns(c), k), whole(c))
+    call put_row_blocks(table%row_count(), size(columns) * (cell_room + 1) + 1, put_rows, out)
+  contains
+    !> Rows `first` to `last`.
+    subroutine put_rows(first, last, part)
+      integer, intent(in) :: first, last
+      type(text_buffer_t), intent(inout) :: part
+      integer :: k, c
+      ! room for every row at once (no copying while the buffer grows)
+      call part%reserve((last - first + 1) * (size(columns) * (cell_room + 1) + 1))
+      do k = first, last
+        do c = 1, size(columns)
+          if (c > 1) call part%append(",")
+          call put_cell(part, table%rows(columns(c), k), whole(c))
+        end do
+        call part%end_line()
       end do
-      call out%end_line()
-    end do
+    end subroutine put_rows
   end subroutine write_csv
 
 end module kinetostat_csv_writer

@@ -7,14 +7,16 @@ module kinetostat_json_writer
     echo_real_kind, echo_int_kind, echo_logical_kind, echo_array_kind, echo_text_kind, echo_heading_kind
   use kinetostat_format, only: full_number, put_cell, cell_room
   use kinetostat_text_buffer, only: text_buffer_t
+  use kinetostat_row_blocks, only: put_row_blocks
   implicit none
   private
   public :: write_json, json_string
 
 contains
 
-  !> The JSON object of a run.
-  pure subroutine write_json(title, table, out, kinematics, link_axes)
+  !> The JSON object of a run. The rows are formatted in parallel blocks with more than one
+  !> OpenMP thread (same bytes).
+  subroutine write_json(title, table, out, kinematics, link_axes)
     !> Title of the mechanism (as the legacy table prints it).
     character(*), intent(in) :: title
     !> Finite results.
@@ -27,9 +29,8 @@ contains
     logical, intent(in), optional :: link_axes
     character(len=:), allocatable :: line
     logical, allocatable :: whole(:)
-    integer :: i, c, k, last
+    integer :: i, c, last
     logical :: shown(size(table%columns)), with_kinematics, with_link_axes
-    logical :: first
     with_kinematics = .false.
     if (present(kinematics)) with_kinematics = kinematics
     with_link_axes = .false.
@@ -87,24 +88,7 @@ contains
     do c = 1, size(table%columns)
       whole(c) = table%is_whole(c)
     end do
-    ! room for every row at once (no copying while the buffer grows)
-    call out%reserve(table%row_count() * (size(table%columns) * (cell_room + 2) + 8))
-    do k = 1, table%row_count()
-      call out%append("    [")
-      first = .true.
-      do c = 1, size(table%columns)
-        if (.not. shown(c)) cycle
-        if (.not. first) call out%append(", ")
-        first = .false.
-        call put_cell(out, table%rows(c, k), whole(c))
-      end do
-      if (k < table%row_count()) then
-        call out%append("],")
-      else
-        call out%append("]")
-      end if
-      call out%end_line()
-    end do
+    call put_row_blocks(table%row_count(), size(table%columns) * (cell_room + 2) + 8, put_rows, out)
     call out%put("  ],")
     if (allocated(table%summary)) then
       call out%put('  "summary": [')
@@ -132,6 +116,32 @@ contains
     end do
     call out%put(line//"]")
     call out%put("}")
+  contains
+    !> Rows `first_row` to `last_row`, one JSON array a line.
+    subroutine put_rows(first_row, last_row, part)
+      integer, intent(in) :: first_row, last_row
+      type(text_buffer_t), intent(inout) :: part
+      integer :: k, c
+      logical :: first
+      ! room for every row at once (no copying while the buffer grows)
+      call part%reserve((last_row - first_row + 1) * (size(table%columns) * (cell_room + 2) + 8))
+      do k = first_row, last_row
+        call part%append("    [")
+        first = .true.
+        do c = 1, size(table%columns)
+          if (.not. shown(c)) cycle
+          if (.not. first) call part%append(", ")
+          first = .false.
+          call put_cell(part, table%rows(c, k), whole(c))
+        end do
+        if (k < table%row_count()) then
+          call part%append("],")
+        else
+          call part%append("]")
+        end if
+        call part%end_line()
+      end do
+    end subroutine put_rows
   end subroutine write_json
 
   !> One INPUT DATA record as a JSON object, appended to the current line (an array of

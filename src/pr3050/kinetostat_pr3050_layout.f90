@@ -127,16 +127,26 @@ contains
     type(pr3050_step_t), allocatable, intent(out) :: steps(:)
     !> Geometry error: "step k (phi3 = x deg): reason".
     type(error_t), allocatable, intent(out) :: error
-    integer :: k
+    type(error_t), allocatable :: step_error
+    integer :: k, first_bad
     allocate (steps(deck%n))
+    ! steps in parallel with OpenMP threads; the error reported is the first step's in step order
+    first_bad = deck%n + 1
+    !$omp parallel do schedule(static) private(step_error) reduction(min:first_bad)
     do k = 1, deck%n
-      call pr3050_check_position(deck%p, deck%phi3_deg(k) * deg_to_rad, error)
-      if (allocated(error)) then
-        error%message = "step "//int_str(k)//" (phi3 = "//real_str(deck%phi3_deg(k))//" deg): "//error%message
-        return
+      call pr3050_check_position(deck%p, deck%phi3_deg(k) * deg_to_rad, step_error)
+      if (allocated(step_error)) then
+        first_bad = min(first_bad, k)
+      else
+        steps(k) = pr3050_step(deck%p, deck%phi3_deg(k) * deg_to_rad, deck%omega3(k), deck%eps3(k))
       end if
-      steps(k) = pr3050_step(deck%p, deck%phi3_deg(k) * deg_to_rad, deck%omega3(k), deck%eps3(k))
     end do
+    !$omp end parallel do
+    if (first_bad <= deck%n) then
+      k = first_bad
+      call pr3050_check_position(deck%p, deck%phi3_deg(k) * deg_to_rad, error)
+      error%message = "step "//int_str(k)//" (phi3 = "//real_str(deck%phi3_deg(k))//" deg): "//error%message
+    end if
   end subroutine pr3050_solve
 
   !> A warning when the rocker passes the dead position (C, B, A collinear: phi3 = k*180 deg,
@@ -184,7 +194,12 @@ contains
     table%input_column = 1
     table%work_column = table%column_index("S")
     nc = size(pr3050_csv_columns)
+    ! the kinematics columns first, on a 1-row table: the rows are then allocated once for all
+    ! columns instead of regrown for each new column
+    call table%allocate_rows(1)
+    if (size(steps) > 0) call put_kinematics(table, 1, self%deck%p, steps(1))
     call table%allocate_rows(size(steps))
+    !$omp parallel do schedule(static) private(floor, n21, m21)
     do k = 1, size(steps)
       associate (v => table%rows(:, k), s => steps(k))
         v(1:nc) = pr3050_csv_values(s, phi3rel(self%deck, k))
@@ -197,6 +212,7 @@ contains
                             n21 + 0.0_wp, m21 + 0.0_wp]
       end associate
     end do
+    !$omp end parallel do
     do k = 1, size(steps)
       call put_kinematics(table, k, self%deck%p, steps(k))
     end do

@@ -99,17 +99,19 @@ contains
     out%down = [1.0_wp, 0.0_wp]
   end subroutine sketch
 
-  !> All steps of a validated deck.
-  pure subroutine pr3207_solve(deck, steps)
+  !> All steps of a validated deck (in parallel with OpenMP threads).
+  subroutine pr3207_solve(deck, steps)
     !> Validated deck.
     type(pr3207_deck_t), intent(in) :: deck
     !> One result per crank step.
     type(pr3207_step_t), allocatable, intent(out) :: steps(:)
     integer :: k
     allocate (steps(deck%n))
+    !$omp parallel do schedule(static)
     do k = 1, deck%n
       steps(k) = pr3207_step(deck%p, deck%phi1_deg(k) * deg_to_rad, deck%f5c(k))
     end do
+    !$omp end parallel do
   end subroutine pr3207_solve
 
   !> Every step into the step table, with the INPUT DATA echo and the self-check.
@@ -122,10 +124,16 @@ contains
     call pr3207_solve(self%deck, steps)
     call table%set_columns(pr3207_csv_columns, column_units, column_kinds)
     table%input_column = 1
+    ! the kinematics columns first, on a 1-row table: the rows are then allocated once for all
+    ! columns instead of regrown for each new column
+    call table%allocate_rows(1)
+    if (size(steps) > 0) call put_kinematics(table, 1, self%deck%p, steps(1))
     call table%allocate_rows(size(steps))
+    !$omp parallel do schedule(static)
     do k = 1, size(steps)
-      table%rows(:, k) = pr3207_csv_values(steps(k), self%deck%p%l_ab)
+      table%rows(1:size(pr3207_csv_columns), k) = pr3207_csv_values(steps(k), self%deck%p%l_ab)
     end do
+    !$omp end parallel do
     do k = 1, size(steps)
       call put_kinematics(table, k, self%deck%p, steps(k))
     end do

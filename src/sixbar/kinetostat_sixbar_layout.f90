@@ -124,7 +124,7 @@ contains
 
   !> All steps of a validated deck; a step that cannot be assembled (or is a dead position)
   !> is a geometry error naming the step number and the crank angle.
-  pure subroutine sixbar_solve(path, deck, steps, error)
+  subroutine sixbar_solve(path, deck, steps, error)
     !> Deck file, for the message.
     character(*), intent(in) :: path
     !> Validated deck.
@@ -133,16 +133,21 @@ contains
     type(sixbar_step_t), allocatable, intent(out) :: steps(:)
     !> Geometry error (exit 3).
     type(error_t), allocatable, intent(out) :: error
-    integer :: k
+    integer :: k, first_bad
     allocate (steps(deck%n))
+    ! steps in parallel with OpenMP threads; the error reported is the first step's in step order
+    first_bad = deck%n + 1
+    !$omp parallel do schedule(static) reduction(min:first_bad)
     do k = 1, deck%n
       steps(k) = sixbar_step(deck%p, deck%phi1_deg(k) * deg_to_rad, deck%f5(k))
-      if (steps(k)%status /= sixbar_ok) then
-        call fatal_error(error, exit_geometry, path//": &sixbar: step "//int_str(k)//" (phi1 = "// &
-          real_str(deck%phi1_deg(k))//" deg): "//failure_text(deck, steps(k)))
-        return
-      end if
+      if (steps(k)%status /= sixbar_ok) first_bad = min(first_bad, k)
     end do
+    !$omp end parallel do
+    if (first_bad <= deck%n) then
+      k = first_bad
+      call fatal_error(error, exit_geometry, path//": &sixbar: step "//int_str(k)//" (phi1 = "// &
+        real_str(deck%phi1_deg(k))//" deg): "//failure_text(deck, steps(k)))
+    end if
   end subroutine sixbar_solve
 
   !> Why a position failed, with the numbers.
@@ -182,10 +187,16 @@ contains
     if (allocated(error)) return
     call table%set_columns(sixbar_csv_columns, column_units, column_kinds)
     table%input_column = 1
+    ! the kinematics columns first, on a 1-row table: the rows are then allocated once for all
+    ! columns instead of regrown for each new column
+    call table%allocate_rows(1)
+    if (size(steps) > 0) call put_kinematics(table, 1, self%deck%p, steps(1))
     call table%allocate_rows(size(steps))
+    !$omp parallel do schedule(static)
     do k = 1, size(steps)
-      table%rows(:, k) = sixbar_csv_values(steps(k), self%deck%p%l1)
+      table%rows(1:size(sixbar_csv_columns), k) = sixbar_csv_values(steps(k), self%deck%p%l1)
     end do
+    !$omp end parallel do
     do k = 1, size(steps)
       call put_kinematics(table, k, self%deck%p, steps(k))
     end do

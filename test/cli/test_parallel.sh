@@ -1,0 +1,59 @@
+# Parallel steps (issue 14, item 5): with OMP_NUM_THREADS=2 every output is byte for byte the
+# one of OMP_NUM_THREADS=1 (stdout, stderr and exit code), for every bundled deck in every
+# format, for decks scaled to thousands of steps (the writers then format rows in parallel
+# blocks) and for a deck failing at many steps (the first failing step in step order is the
+# one reported).
+
+# expect_same_threads NAME ARGS...: the run with 2 threads gives the bytes and exit code of
+# the run with 1 thread.
+expect_same_threads() {
+  local name="$1"; shift
+  local rc1 rc2
+  OMP_NUM_THREADS=1 "$KINETOSTAT" "$@" >"$cli_tmp/par1.out" 2>"$cli_tmp/par1.err"; rc1=$?
+  OMP_NUM_THREADS=2 "$KINETOSTAT" "$@" >"$cli_tmp/par2.out" 2>"$cli_tmp/par2.err"; rc2=$?
+  if [ "$rc1" -ne "$rc2" ]; then fail "$name" "exit code $rc2 with 2 threads, $rc1 with 1"; return; fi
+  if ! cmp -s "$cli_tmp/par1.out" "$cli_tmp/par2.out"; then
+    fail "$name" "stdout differs with 2 threads: $(cmp "$cli_tmp/par1.out" "$cli_tmp/par2.out")"; return
+  fi
+  if ! cmp -s "$cli_tmp/par1.err" "$cli_tmp/par2.err"; then
+    fail "$name" "stderr differs with 2 threads: $(diff "$cli_tmp/par1.err" "$cli_tmp/par2.err" | head -4)"; return
+  fi
+  pass
+}
+
+for deck in data/*.nml; do
+  name=$(basename "$deck" .nml)
+  for format in table csv json svg; do
+    expect_same_threads "threads-$name-$format" "$deck" --format "$format"
+  done
+  expect_same_threads "threads-$name-csv-kinematics" "$deck" --format csv --kinematics
+done
+
+# decks scaled to 3000 steps (more than the writers' threshold of 256 rows per thread)
+sed 's/dphi = 30 /dphi = 0.1, n = 3000 /' data/pr3207.nml >"$cli_tmp/par_pr3207.nml"
+sed 's/dphi = 30, n = 13/dphi = 0.1, n = 3000/; s/f5 = 7\*1000, 6\*0/f5 = 1500*1000, 1500*0/' \
+  data/sixbar.nml >"$cli_tmp/par_sixbar.nml"
+sed 's/dphi = 30, n = 13/dphi = 0.1, n = 3000/; s/step_values = 7\*1000, 6\*0/step_values = 1500*1000, 1500*0/' \
+  data/assur_sixbar.nml >"$cli_tmp/par_assur_sixbar.nml"
+sed 's/dphi = 30, n = 13/dphi = 0.1, n = 3000/; s/^  theta = .*/  theta = 1000*0, 1000*20, 1000*-15/;
+     s/^  vdir  = .*/  vdir = 1000*1, 1000*1, 1000*-1/; s/^  f2    = .*/  f2 = 3000*300/' \
+  data/cam_translating.nml >"$cli_tmp/par_cam.nml"
+# the toggle is singular every 180 deg: steps 2, 8, 14, ... fail (exit 3, step 2 named)
+sed 's/n = 3$/n = 3000/' data/assur_toggle.nml >"$cli_tmp/par_toggle.nml"
+for deck in par_pr3207 par_sixbar par_assur_sixbar par_cam par_toggle; do
+  if ! grep -q "3000" "$cli_tmp/$deck.nml"; then fail "threads-$deck" "the deck was not scaled"; continue; fi
+  for format in table csv json; do
+    expect_same_threads "threads-$deck-$format" "$cli_tmp/$deck.nml" --format "$format"
+  done
+  expect_same_threads "threads-$deck-csv-kinematics" "$cli_tmp/$deck.nml" --format csv --kinematics
+done
+OMP_NUM_THREADS=2 run_ks "$cli_tmp/par_toggle.nml"
+if [ "$rc" -eq 3 ] && grep -q "step 2 (phi1 = 0.000000000 deg)" "$err"; then pass; else
+  fail "threads-toggle-first-step" "expected exit 3 naming step 2 (phi1 = 0.000000000 deg), got $rc: $(head -c 300 "$err")"
+fi
+for deck in par_pr3207 par_sixbar par_assur_sixbar par_cam; do
+  OMP_NUM_THREADS=2 run_ks "$cli_tmp/$deck.nml" --format csv
+  if [ "$rc" -eq 0 ] && [ "$(wc -l <"$out")" -eq 3001 ]; then pass; else
+    fail "threads-$deck-rows" "expected exit 0 and 3001 CSV lines, got $rc and $(wc -l <"$out")"
+  fi
+done
