@@ -253,6 +253,12 @@ contains
     else
       call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "F_drive")
     end if
+    do k = 1, size(self%deck%f_mag, 1)
+      call table%note_load(self%deck%f_mag(k, :))
+    end do
+    do k = 1, size(self%deck%m_mag, 1)
+      call table%note_load(self%deck%m_mag(k, :))
+    end do
     if (len_trim(self%deck%title) > 0) table%subtitle = trim(self%deck%title)
     call echo_deck(self%deck, table)
     if (self%deck%friction_on) then

@@ -11,8 +11,9 @@ module kinetostat_csv_writer
 
 contains
 
-  !> The CSV of a step table (columns marked csv only; kinematics and link-axes columns when asked).
-  !> The rows are formatted in parallel blocks with more than one OpenMP thread (same bytes).
+  !> The CSV of a step table (columns marked csv only; kinematics and link-axes columns when
+  !> asked). The rows are formatted in parallel blocks with more than one OpenMP thread
+  !> (same bytes).
   subroutine write_csv(table, out, kinematics, link_axes)
     !> Finite results.
     type(step_table_t), intent(in) :: table

@@ -142,6 +142,13 @@ module kinetostat_step_table
     character(len=:), allocatable :: mismatch_label
     !> The run's warnings (stderr unless --quiet, exit 4 with --strict), in order.
     type(remark_t), allocatable :: warnings(:)
+    !> load_changes(k): an applied load (a cutting force, a resistance) has another value at
+    !> row k than at row k-1 (row 1: than at the last row, used when the run spans a turn).
+    !> Not allocated when the mechanism reports no switching loads.
+    logical, allocatable :: load_changes(:)
+    !> Index of the column of the coordinate along which the driver does work (a length, m);
+    !> 0: the input angle (deg) when the driver is a moment.
+    integer :: work_column = 0
     !> The run's overrides as given ("l_ab=0.12"), blank-padded; not allocated without any.
     character(len=:), allocatable :: overrides(:)
     !> Heading of the summary block (results of the whole run, e.g. work and efficiency).
@@ -165,6 +172,7 @@ module kinetostat_step_table
     procedure :: allocate_rows
     procedure :: row_count
     procedure :: add_warning
+    procedure :: note_load
     procedure :: warning_count
     procedure :: is_whole
     procedure :: set_selfcheck
@@ -447,6 +455,25 @@ contains
     if (.not. allocated(self%warnings)) allocate (self%warnings(0))
     self%warnings = [self%warnings, remark_t(text)]
   end subroutine add_warning
+
+  !> Note a load applied per row: when it switches between two values (on and off: a
+  !> working and an idle value), the rows where it changes are marked in `load_changes`
+  !> (for the coarse-step warning of kinetostat_summary). A load with more than two values
+  !> (a curve, such as a gas force) is not a switch and marks nothing.
+  pure subroutine note_load(self, values)
+    class(step_table_t), intent(inout) :: self
+    !> The load's value at every row (any unit).
+    real(wp), intent(in) :: values(:)
+    integer :: n, other
+    n = size(values)
+    if (.not. allocated(self%load_changes)) allocate (self%load_changes(n), source=.false.)
+    if (n < 2 .or. size(self%load_changes) /= n) return
+    other = findloc(values /= values(1), .true., dim=1)
+    if (other == 0) return
+    if (any(values /= values(1) .and. values /= values(other))) return
+    self%load_changes(2:) = self%load_changes(2:) .or. values(2:) /= values(:n - 1)
+    self%load_changes(1) = self%load_changes(1) .or. values(1) /= values(n)
+  end subroutine note_load
 
   !> Number of warnings of the run.
   pure integer function warning_count(self)
