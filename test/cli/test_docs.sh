@@ -43,3 +43,17 @@ run_ks docs/examples/fourbar.nml --format csv --set 'moment(1)%value=-20.001'; c
 expect_exit docs-tutorial-diff-same 0 diff "$cli_tmp/tut_expected.csv" "$cli_tmp/tut_expected.csv"
 expect_exit docs-tutorial-diff-changed 1 diff "$cli_tmp/tut_expected.csv" "$cli_tmp/tut_fresh.csv"
 if grep -q '^different: 415 of 450 values differ' "$out"; then pass; else fail docs-tutorial-diff-report "$(tail -1 "$out")"; fi
+
+# tutorial §4: the sweep's rows as the tutorial prints them
+"$KINETOSTAT" sweep docs/examples/fourbar.nml --vary 'dyad(1)%at2(1)=0.08:0.12:5' 2>/dev/null |
+  awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i } { print $1 "," $c["M1_max"] "," $c["M1_min"] "," $c["F10_max"] }' \
+  >"$cli_tmp/tut_sweep.txt"
+python3 - docs/tutorial.md "$cli_tmp/tut_sweep.txt" <<'PY' && pass || fail docs-tutorial-sweep "the tutorial's sweep rows are not the program's"
+import sys
+doc = open(sys.argv[1], encoding="utf-8").read()
+block = doc.split("## 4. A parameter study", 1)[1].split("```")[3]
+shown = [l for l in block.splitlines() if l.strip()]
+actual = open(sys.argv[2]).read().splitlines()
+if shown != actual:
+    print("shown:", shown, "actual:", actual); sys.exit(1)
+PY
