@@ -11,7 +11,8 @@ module kinetostat_assur_deck
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str, number_str
   use kinetostat_text_buffer, only: text_buffer_t
-  use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, unset_bits, max_deck_array, &
+  use kinetostat_deck, only: write_template_lines, deck_array_capacity, deck_context_t, unset_real, unset_bits, &
+    max_deck_array, &
     deck_source_t, namelist_failure, deck_error, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn, &
     is_whole_in, require_whole
@@ -231,6 +232,8 @@ contains
     type(deck_context_t) :: ctx
     integer, allocatable :: ids(:)
     character(len=:), allocatable :: name
+    !> Elements of each per-step array (deck_array_capacity).
+    integer :: capacity
     namelist /assur/ title, frame_id, crank_id, crank_at, crank_m, crank_j, crank_s, omega1, &
       omega1_step, eps1_step, g, gravity_angle, phi_start, dphi, n, dyad, force, moment, &
       step_values, angles_signed, components, drive_dyad, drive_pair
@@ -244,7 +247,8 @@ contains
     omega1 = unset_real; g = unset_real; gravity_angle = unset_real
     phi_start = unset_real; dphi = unset_real
     angles_signed = .false.; components = .true.
-    allocate (omega1_step(max_deck_array), eps1_step(max_deck_array), step_values(max_deck_array), &
+    capacity = deck_array_capacity(source)   ! not max_deck_array: a small deck stays small
+    allocate (omega1_step(capacity), eps1_step(capacity), step_values(capacity), &
               source=unset_real)
 
     read (source%lines, nml=assur, iostat=ios, iomsg=msg)

@@ -5,7 +5,7 @@ module kinetostat_cam_deck
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str, lower
   use kinetostat_text_buffer, only: text_buffer_t
-  use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, max_deck_array, &
+  use kinetostat_deck, only: write_template_lines, deck_array_capacity, deck_context_t, unset_real, &
     deck_source_t, namelist_failure, deck_error, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn
   use kinetostat_cam, only: cam_params_t
@@ -97,6 +97,8 @@ contains
     integer :: ios, k
     character(len=512) :: msg
     type(deck_context_t) :: ctx
+    !> Elements of each per-step array (deck_array_capacity).
+    integer :: capacity
     namelist /cam/ follower, l, l_over, f, f_cam, omega_dir, phi_start, dphi, n, theta, f2, vdir, ds_dphi
 
     ctx%path = source%path
@@ -105,7 +107,8 @@ contains
     l = unset_real; l_over = unset_real; f = unset_real; f_cam = unset_real
     omega_dir = unset_real; phi_start = unset_real; dphi = unset_real
     n = unset_real
-    allocate (theta(max_deck_array), f2(max_deck_array), vdir(max_deck_array), ds_dphi(max_deck_array), &
+    capacity = deck_array_capacity(source)   ! not max_deck_array: a small deck stays small
+    allocate (theta(capacity), f2(capacity), vdir(capacity), ds_dphi(capacity), &
               source=unset_real)
 
     read (source%lines, nml=cam, iostat=ios, iomsg=msg)

@@ -16,7 +16,7 @@ module kinetostat_deck
   public :: read_group_name, namelist_failure, deck_error
   public :: is_set, require_set, require_positive, require_nonnegative, require_rule
   public :: is_whole_in, require_whole
-  public :: optional_default, count_values, steps_over_turn, write_template_lines
+  public :: optional_default, count_values, steps_over_turn, write_template_lines, deck_array_capacity
 
   !> Bit pattern of `unset_real`: a quiet NaN with a payload. A NaN typed in a deck
   !> ("nan", "NaN(0x1)") reads as the plain quiet NaN 7FF8000000000000, so no deck can
@@ -180,6 +180,34 @@ contains
       end if
     end subroutine next_line
   end subroutine deck_source_from_text
+
+  !> Capacity for a per-step array of this deck: enough for every value the deck can give
+  !> it, without max_deck_array elements filled before reading. Each value takes at least
+  !> one character of the text, a repeat count r*c gives r values and a subscript f(i)
+  !> reaches element i, so the text's length plus the sum of every whole number written in
+  !> it (counts, subscripts and anything else) bounds what a namelist READ can store;
+  !> capped at max_deck_array (beyond it a deck gets the same namelist error as before).
+  pure integer function deck_array_capacity(source)
+    !> The deck.
+    type(deck_source_t), intent(in) :: source
+    integer(int64) :: total, run
+    integer :: k, i, c
+    total = 0
+    do k = 1, size(source%lines)
+      run = 0
+      do i = 1, len_trim(source%lines(k))
+        c = iachar(source%lines(k)(i:i)) - iachar("0")
+        if (c >= 0 .and. c <= 9) then
+          run = min(10 * run + c, int(max_deck_array, int64))
+        else
+          total = total + run
+          run = 0
+        end if
+      end do
+      total = min(total + run + len_trim(source%lines(k)) + 1, int(max_deck_array, int64))
+    end do
+    deck_array_capacity = int(total)
+  end function deck_array_capacity
 
   !> The name of the first namelist group in the deck (lower case, without '&').
   subroutine read_group_name(source, group, error)

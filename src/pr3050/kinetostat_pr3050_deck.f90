@@ -4,7 +4,7 @@ module kinetostat_pr3050_deck
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str
   use kinetostat_text_buffer, only: text_buffer_t
-  use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, max_deck_array, max_steps, &
+  use kinetostat_deck, only: write_template_lines, deck_array_capacity, deck_context_t, unset_real, max_steps, &
     deck_source_t, namelist_failure, deck_error, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values
   use kinetostat_pr3050, only: pr3050_params_t
@@ -115,6 +115,8 @@ contains
     integer :: ios, n_omega3, n_eps3, k
     character(len=512) :: msg
     type(deck_context_t) :: ctx
+    !> Elements of each per-step array (deck_array_capacity).
+    integer :: capacity
     namelist /pr3050/ l_ca, l_cb, l_cs3, delta, l_bs2, l_s1a, gamma, g, m1, m2, m3, j1, j2, j3, &
       phi3_start, phi3_end, dphi3, omega3, eps3
 
@@ -125,8 +127,9 @@ contains
     m1 = unset_real; m2 = unset_real; m3 = unset_real
     j1 = unset_real; j2 = unset_real; j3 = unset_real
     phi3_start = unset_real; phi3_end = unset_real; dphi3 = unset_real
-    allocate (omega3(max_deck_array), source=unset_real)
-    allocate (eps3(max_deck_array), source=unset_real)
+    capacity = deck_array_capacity(source)   ! not max_deck_array: a small deck stays small
+    allocate (omega3(capacity), source=unset_real)
+    allocate (eps3(capacity), source=unset_real)
 
     read (source%lines, nml=pr3050, iostat=ios, iomsg=msg)
     if (ios /= 0) then

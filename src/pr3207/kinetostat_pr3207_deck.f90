@@ -4,7 +4,7 @@ module kinetostat_pr3207_deck
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str
   use kinetostat_text_buffer, only: text_buffer_t
-  use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, max_deck_array, &
+  use kinetostat_deck, only: write_template_lines, deck_array_capacity, deck_context_t, unset_real, &
     deck_source_t, namelist_failure, deck_error, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn
   use kinetostat_pr3207, only: pr3207_params_t
@@ -110,6 +110,8 @@ contains
     character(len=512) :: msg
     type(deck_context_t) :: ctx
     logical :: two_value_given
+    !> Elements of each per-step array (deck_array_capacity).
+    integer :: capacity
     namelist /pr3207/ l_ab, l_ac, l_cd, l_cs3, m1, m3, m5, j3, omega1, g, phi_start, dphi, n, &
       f5c, f5c_work, f5c_idle, phi_cut_start, phi_cut_end
 
@@ -120,7 +122,8 @@ contains
     omega1 = unset_real; g = unset_real; phi_start = unset_real; dphi = unset_real
     f5c_work = unset_real; f5c_idle = unset_real; phi_cut_start = unset_real; phi_cut_end = unset_real
     n = unset_real
-    allocate (f5c(max_deck_array), source=unset_real)
+    capacity = deck_array_capacity(source)   ! not max_deck_array: a small deck stays small
+    allocate (f5c(capacity), source=unset_real)
 
     read (source%lines, nml=pr3207, iostat=ios, iomsg=msg)
     if (ios /= 0) then

@@ -4,7 +4,7 @@ module kinetostat_sixbar_deck
   use kinetostat_error, only: error_t, fatal_error, exit_geometry
   use kinetostat_text, only: real_str, int_str
   use kinetostat_text_buffer, only: text_buffer_t
-  use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, max_deck_array, &
+  use kinetostat_deck, only: write_template_lines, deck_array_capacity, deck_context_t, unset_real, &
     deck_source_t, namelist_failure, deck_error, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn
   use kinetostat_sixbar, only: sixbar_params_t, sixbar_extreme_phi1
@@ -86,6 +86,8 @@ contains
     integer :: ios, n_f5, k
     character(len=512) :: msg
     type(deck_context_t) :: ctx
+    !> Elements of each per-step array (deck_array_capacity).
+    integer :: capacity
     namelist /sixbar/ a, b, l1, lam2, lam_s2, lam3, lam_de, lam4, lam_s4, lam_e, &
       m1, m2, m3, m4, m5, j1, j2, j3, j4, omega1, g, dphi, n, phi_start, start_at_extreme, f5, legacy_eq2
 
@@ -100,7 +102,8 @@ contains
     n = unset_real
     start_at_extreme = .false.
     legacy_eq2 = .false.
-    allocate (f5(max_deck_array), source=unset_real)
+    capacity = deck_array_capacity(source)   ! not max_deck_array: a small deck stays small
+    allocate (f5(capacity), source=unset_real)
 
     read (source%lines, nml=sixbar, iostat=ios, iomsg=msg)
     if (ios /= 0) then
