@@ -11,7 +11,8 @@ program kinetostat_tests
   use test_gears, only: run_gears_tests
   use test_cam, only: run_cam_tests
   use test_assur, only: run_assur_tests
-  use test_assur_drive, only: run_assur_drive_tests
+  use test_assur_ext, only: run_assur_ext_tests
+  use test_friction, only: run_friction_tests
   use test_io, only: run_io_tests
   use test_kinematics, only: run_kinematics_tests
   use test_svg, only: run_svg_tests
@@ -21,8 +22,8 @@ program kinetostat_tests
   implicit none
   !> Suite names, in the order they run.
   character(*), parameter :: suite_names(*) = [character(len=11) :: &
-    "foundation", "pr3207", "pr3050", "sixbar", "gears", "cam", "assur", "assur_drive", "io", "kinematics", "svg", &
-    "decimal", "lapack"]
+    "foundation", "pr3207", "pr3050", "sixbar", "gears", "cam", "assur", "assur_ext", "friction", "io", &
+    "kinematics", "svg", "decimal", "lapack"]
   type(test_counts_t) :: t
   logical :: selected(size(suite_names))
   integer :: i
@@ -79,7 +80,8 @@ contains
     case ("gears"); call run_gears_tests(t)
     case ("cam"); call run_cam_tests(t)
     case ("assur"); call run_assur_tests(t)
-    case ("assur_drive"); call run_assur_drive_tests(t)
+    case ("assur_ext"); call run_assur_ext_tests(t)
+    case ("friction"); call run_friction_tests(t)
     case ("io"); call run_io_tests(t)
     case ("kinematics"); call run_kinematics_tests(t)
     case ("svg"); call run_svg_tests(t)

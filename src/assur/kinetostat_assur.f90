@@ -16,15 +16,16 @@ module kinetostat_assur
   use kinetostat_vec2, only: unit_at, cross, magnitude
   use kinetostat_loads, only: inertia_force, inertia_moment, gravity_force
   use kinetostat_selfcheck, only: link_balance_t, balance_add_force, balance_add_couple, equilibrium_residual, &
-    power_mismatch
+    power_mismatch, balance_add_balance
   use kinetostat_text, only: int_str
   use kinetostat_assur_kinematics, only: link_state_t, point_state_t, dyad_geometry_t, dyad_pose_t, &
     point_on, crank_state, frame_state, dyad_pose, kind_names, pose_ok, pose_no_assembly
-  use kinetostat_assur_statics, only: dyad_reactions_t, dyad_reactions
+  use kinetostat_assur_statics, only: dyad_reactions_t, dyad_reactions, pair_is_prismatic
   implicit none
   private
   public :: assur_link_t, assur_dyad_t, assur_force_t, assur_mech_t, assur_step_t
   public :: assur_step, assur_kinematics, link_a, link_b, pair_index, crank_pin_index, pair_sides
+  public :: output_pair_of, output_position, link_position, assur_extreme
 
   !> An actuator whose crank moment per newton |stroke'| is below this times the driving
   !> dyad's size (m) is in a dead position: it cannot move the input link.
@@ -87,6 +88,11 @@ module kinetostat_assur
     integer :: drive_dyad = 0
     !> The actuator's pair in that dyad (1 outer of a, 2 inner, 3 outer of b).
     integer :: drive_pair = 0
+    !> Internal index of the output link (extreme positions, load tables over its position).
+    integer :: output_link = 1
+    !> 0: the output position is the link's angle; j: it slides on a frame guide and its
+    !> position is the stroke of pair j of its dyad.
+    integer :: output_pair = 0
   end type assur_mech_t
 
   !> Results at one input angle (forces global, N; moments N*m).
@@ -111,6 +117,8 @@ module kinetostat_assur
     real(wp) :: residual = 0.0_wp
     !> Relative mismatch |M1 - M1_power| / scale (|F_drive - F_drive_power| with an actuator).
     real(wp) :: mismatch = 0.0_wp
+    !> Scale of the power balance: sum of the magnitudes of its terms (per unit crank speed), N*m.
+    real(wp) :: power_scale = 0.0_wp
     !> Actuator (driving prismatic pair) only: axial force, N, positive extending it.
     real(wp) :: f_drive = 0.0_wp
     !> The same from the power balance, N.
@@ -185,7 +193,11 @@ contains
                              states(dy%on(2)), dy%at(:, 2), dy%ang(2))
         if (poses(d)%status /= pose_ok) then
           if (poses(d)%status == pose_no_assembly) then
-            call fatal_error(error, exit_geometry, dyad_label(mech, d)//": cannot be assembled")
+            if (allocated(poses(d)%detail)) then
+              call fatal_error(error, exit_geometry, dyad_label(mech, d)//": cannot be assembled: "//poses(d)%detail)
+            else
+              call fatal_error(error, exit_geometry, dyad_label(mech, d)//": cannot be assembled")
+            end if
           else
             call fatal_error(error, exit_geometry, dyad_label(mech, d)// &
               ": dead (toggle) position, transfer functions undetermined")
@@ -200,8 +212,12 @@ contains
 
   !> Kinetostatic analysis at crank angle `phi1` (rad), crank speed `omega1` (rad/s) and
   !> acceleration `eps1` (rad/s^2), with the external forces' magnitudes `f_mag` (N) and
-  !> the external moments `m_mag` (N*m, CCW positive) of this step.
-  pure subroutine assur_step(mech, phi1, omega1, eps1, f_mag, m_mag, step, error)
+  !> the external moments `m_mag` (N*m, CCW positive) of this step. Optional `extra` loads
+  !> (e.g. friction, see kinetostat_assur_friction) act on the moving links besides the
+  !> applied ones, with their virtual power per unit crank speed `extra_power` (N*m) and the
+  !> sum of its terms' magnitudes `extra_scale`; `balances` returns every link's loads.
+  pure subroutine assur_step(mech, phi1, omega1, eps1, f_mag, m_mag, step, error, extra, extra_power, &
+                             extra_scale, balances)
     !> Mechanism.
     type(assur_mech_t), intent(in) :: mech
     !> Crank angle, rad.
@@ -218,6 +234,14 @@ contains
     type(assur_step_t), intent(out) :: step
     !> Geometry error (cannot assemble, dead position, undetermined reactions).
     type(error_t), allocatable, intent(out) :: error
+    !> Further loads on links 0..2*nd+1 (moments about each link's origin), N and N*m.
+    type(link_balance_t), intent(in), optional :: extra(0:)
+    !> Virtual power of `extra` per unit crank speed, N*m.
+    real(wp), intent(in), optional :: extra_power
+    !> Sum of the magnitudes of the terms of `extra_power`, N*m.
+    real(wp), intent(in), optional :: extra_scale
+    !> All loads and reactions of links 0..2*nd+1 as summed for the equilibrium residual.
+    type(link_balance_t), intent(out), optional :: balances(0:)
     type(link_state_t) :: states(0:2 * size(mech%dyads) + 1)
     type(dyad_pose_t) :: poses(size(mech%dyads))
     type(link_balance_t) :: known(0:2 * size(mech%dyads) + 1)
@@ -277,6 +301,13 @@ contains
       power = power + m_mag(k) * states(i)%u
       power_scale = power_scale + abs(m_mag(k) * states(i)%u)
     end do
+    if (present(extra)) then
+      do i = 1, ubound(states, 1)
+        call balance_add_balance(known(i), extra(i))
+      end do
+    end if
+    if (present(extra_power)) power = power + extra_power
+    if (present(extra_scale)) power_scale = power_scale + extra_scale
 
     if (mech%drive_dyad == 0) then
       ! dyads from the last to the first; each passes its outer reactions to the links it hangs on
@@ -290,6 +321,7 @@ contains
       call drive_by_actuator(mech, states, poses, known, power, power_scale, step, error)
       if (allocated(error)) return
     end if
+    step%power_scale = power_scale
 
     ! equilibrium residual of every moving link with all its loads and reactions
     call balance_add_force(known(1), states(1)%o, states(1)%o, step%f(:, crank_pin_index(nd)))
@@ -307,7 +339,148 @@ contains
       end associate
     end do
     step%residual = equilibrium_residual(known(1:))
+    if (present(balances)) balances = known
   end subroutine assur_step
+
+  !> The pair whose stroke is the position of link `i` (internal index): the prismatic pair
+  !> by which it slides on a frame guide (link a: pair 1, link b: pair 3), else 0 (the
+  !> link's position is its angle).
+  pure integer function output_pair_of(mech, i) result(j)
+    !> Mechanism.
+    type(assur_mech_t), intent(in) :: mech
+    !> Internal link index (>= 1).
+    integer, intent(in) :: i
+    integer :: d
+    j = 0
+    if (i < 2) return
+    d = i / 2
+    if (i == link_a(d)) then
+      if (mech%dyads(d)%on(1) == 0 .and. pair_is_prismatic(mech%dyads(d)%geom%kind, 1)) j = 1
+    else
+      if (mech%dyads(d)%on(2) == 0 .and. pair_is_prismatic(mech%dyads(d)%geom%kind, 3)) j = 3
+    end if
+  end function output_pair_of
+
+  !> Position of the output link with its analogues: its angle (rad, rad/rad, rad/rad^2), or
+  !> for a slider on a frame guide its stroke along the guide (m, m/rad, m/rad^2).
+  pure subroutine output_position(mech, states, poses, q, dq, ddq)
+    !> Mechanism.
+    type(assur_mech_t), intent(in) :: mech
+    !> Frames of links 0..2*nd+1.
+    type(link_state_t), intent(in) :: states(0:)
+    !> Pose of each dyad.
+    type(dyad_pose_t), intent(in) :: poses(:)
+    !> Position, its first and second analogues.
+    real(wp), intent(out) :: q, dq, ddq
+    call link_position(states, poses, mech%output_link, mech%output_pair, q, dq, ddq)
+  end subroutine output_position
+
+  !> Position of link `i` with its analogues: its angle (`pair` = 0; rad, rad/rad,
+  !> rad/rad^2) or the stroke of pair `pair` of its dyad (m, m/rad, m/rad^2).
+  pure subroutine link_position(states, poses, i, pair, q, dq, ddq)
+    !> Frames of links 0..2*nd+1.
+    type(link_state_t), intent(in) :: states(0:)
+    !> Pose of each dyad.
+    type(dyad_pose_t), intent(in) :: poses(:)
+    !> Internal link index; 0 or the pair of its dyad whose stroke is its position.
+    integer, intent(in) :: i, pair
+    !> Position, its first and second analogues.
+    real(wp), intent(out) :: q, dq, ddq
+    if (pair == 0) then
+      q = states(i)%th
+      dq = states(i)%u
+      ddq = states(i)%eq
+    else
+      q = poses(i / 2)%stroke(pair)
+      dq = poses(i / 2)%stroke_v(pair)
+      ddq = poses(i / 2)%stroke_a(pair)
+    end if
+  end subroutine link_position
+
+  !> The first extreme position of the output link (its position's analogue changes sign)
+  !> at or after crank angle `phi_from` (rad), within one turn: a scan in 0.5 deg steps over
+  !> the assembled positions, then bisection to roundoff.
+  pure subroutine assur_extreme(mech, phi_from, phi, error)
+    !> Mechanism.
+    type(assur_mech_t), intent(in) :: mech
+    !> Where the search starts, rad.
+    real(wp), intent(in) :: phi_from
+    !> Crank angle of the extreme position, rad.
+    real(wp), intent(out) :: phi
+    !> Geometry error when there is none within one turn.
+    type(error_t), allocatable, intent(out) :: error
+    integer, parameter :: n_scan = 720
+    real(wp), parameter :: two_pi = 8.0_wp * atan(1.0_wp)
+    real(wp) :: x, dq, prev_dq, prev_x, lo, hi, dq_lo, mid, dq_mid
+    logical :: prev_ok, ok
+    integer :: k, it
+    phi = phi_from
+    prev_ok = .false.
+    prev_dq = 0.0_wp
+    prev_x = phi_from
+    do k = 0, n_scan
+      x = phi_from + two_pi * real(k, wp) / real(n_scan, wp)
+      call output_rate(mech, x, dq, ok)
+      if (.not. ok) then
+        prev_ok = .false.
+        cycle
+      end if
+      if (dq == 0.0_wp) then
+        phi = x
+        return
+      end if
+      if (prev_ok .and. sign(1.0_wp, dq) /= sign(1.0_wp, prev_dq)) then
+        lo = prev_x
+        hi = x
+        dq_lo = prev_dq
+        do it = 1, 200
+          mid = 0.5_wp * (lo + hi)
+          if (mid <= lo .or. mid >= hi) exit
+          call output_rate(mech, mid, dq_mid, ok)
+          if (.not. ok) exit
+          if (dq_mid == 0.0_wp) then
+            lo = mid
+            hi = mid
+            exit
+          end if
+          if (sign(1.0_wp, dq_mid) == sign(1.0_wp, dq_lo)) then
+            lo = mid
+            dq_lo = dq_mid
+          else
+            hi = mid
+          end if
+        end do
+        phi = 0.5_wp * (lo + hi)
+        return
+      end if
+      prev_ok = .true.
+      prev_dq = dq
+      prev_x = x
+    end do
+    call fatal_error(error, exit_geometry, "no extreme position of link "//int_str(mech%links(mech%output_link)%id)// &
+      " (the output link) within one turn of the crank")
+  end subroutine assur_extreme
+
+  !> The output position's first analogue `dq` at crank angle `phi` (rad); `ok` false where
+  !> the mechanism cannot be assembled.
+  pure subroutine output_rate(mech, phi, dq, ok)
+    !> Mechanism.
+    type(assur_mech_t), intent(in) :: mech
+    !> Crank angle, rad.
+    real(wp), intent(in) :: phi
+    !> d(output position)/d phi1 (rad/rad or m/rad).
+    real(wp), intent(out) :: dq
+    !> Whether the mechanism is assembled there.
+    logical, intent(out) :: ok
+    type(link_state_t) :: states(0:2 * size(mech%dyads) + 1)
+    type(dyad_pose_t) :: poses(size(mech%dyads))
+    type(error_t), allocatable :: error
+    real(wp) :: q, ddq
+    dq = 0.0_wp
+    call assur_kinematics(mech, phi, states, poses, error)
+    ok = .not. allocated(error)
+    if (ok) call output_position(mech, states, poses, q, dq, ddq)
+  end subroutine output_rate
 
   !> Internal indices of the two sides of pair `j` of dyad `d`: (1) the sliding side (the
   !> dyad's link a for pairs 1 and 2, link b for pair 3), (2) the other side.

@@ -7,20 +7,22 @@
 !> are read as reals and converted by `require_whole` or an equivalent whole-number check.
 module kinetostat_assur_deck
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
-  use kinetostat_kinds, only: wp, g_default, deg_to_rad
+  use kinetostat_kinds, only: wp, g_default, deg_to_rad, rad_to_deg
   use kinetostat_error, only: error_t
-  use kinetostat_text, only: real_str, int_str, number_str
+  use kinetostat_text, only: real_str, int_str, number_str, lower
   use kinetostat_text_buffer, only: text_buffer_t
-  use kinetostat_deck, only: write_template_lines, deck_array_capacity, deck_context_t, unset_real, unset_bits, &
-    max_deck_array, &
-    deck_source_t, namelist_failure, deck_error, is_set, require_set, require_positive, &
+  use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, unset_bits, max_deck_array, &
+    deck_array_capacities, deck_source_t, namelist_probe_t, deck_error, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn, &
     is_whole_in, require_whole
-  use kinetostat_vec2, only: unit_at
-  use kinetostat_assur_kinematics, only: dyad_geometry_t, kind_names, kind_has_mode, &
+  use kinetostat_vec2, only: unit_at, rotate, magnitude, cross
+  use kinetostat_assur_kinematics, only: link_state_t, dyad_pose_t, dyad_geometry_t, kind_names, kind_has_mode, &
+    frame_state, crank_state, dyad_pose, pose_ok, &
     kind_rrr, kind_rrp, kind_rpr, kind_prp, kind_rpp
   use kinetostat_assur_statics, only: pair_is_prismatic
-  use kinetostat_assur, only: assur_mech_t, assur_link_t, assur_dyad_t, assur_force_t, link_a, link_b
+  use kinetostat_assur, only: assur_mech_t, assur_link_t, assur_dyad_t, assur_force_t, link_a, link_b, &
+    output_pair_of, assur_extreme, assur_kinematics, link_position
+  use kinetostat_assur_friction, only: pair_friction_t, friction_active
   implicit none
   private
   public :: assur_deck_t, read_assur_deck, write_assur_template, assur_window
@@ -32,6 +34,10 @@ module kinetostat_assur_deck
   integer, parameter :: max_forces = 16
   !> Capacity of the external moment list.
   integer, parameter :: max_moments = 16
+  !> Global form: largest misfit of a given joint, relative to the dyad's size.
+  real(wp), parameter :: misfit_rel = 1.0e-6_wp
+  !> Capacity of a load table, (position, value) points.
+  integer, parameter :: max_table_points = 64
   !> Unset logical marker is not available in namelists: logicals have plain defaults.
   character(*), parameter :: group_name = "assur"
 
@@ -67,6 +73,18 @@ module kinetostat_assur_deck
     real(wp) :: frame_angle = unset
     !> Link (link2 or link3) on which the reported inner-pair force acts; default link2.
     real(wp) :: inner_on = unset
+    !> Friction coefficients of the outer pair of link2, of the outer pair of link3 and of the
+    !> inner pair (default 0: frictionless).
+    real(wp) :: f2 = unset, f3 = unset, f23 = unset
+    !> Journal radii of those pairs when they are turning pairs, m.
+    real(wp) :: r2 = unset, r3 = unset, r23 = unset
+    !> Guide and block lengths of those pairs when they are sliding pairs (optional: the
+    !> two-contact model over the shorter of the two), m.
+    real(wp) :: guide2 = unset, guide3 = unset, guide23 = unset
+    real(wp) :: block2 = unset, block3 = unset, block23 = unset
+    !> Global form only: the inner joint B at the reference position (RRR, RRP; PRP: a
+    !> check), m.
+    real(wp) :: b(2) = unset
   end type dyad_in_t
 
   !> A per-step value: constant, angle window, or a column of `step_values`.
@@ -95,6 +113,13 @@ module kinetostat_assur_deck
     real(wp) :: value = unset, idle = unset, phi_on = unset, phi_off = unset
     !> Column of step_values (a whole number).
     real(wp) :: column = unset
+    !> Components instead of angle and value (global, or link axes when follow), N.
+    real(wp) :: fx = unset, fy = unset
+    !> Value over the position of link `over`: pairs (position, value), position in deg
+    !> (a link's angle) or m (a slider's stroke on its frame guide), value in N.
+    real(wp) :: table(2 * max_table_points) = unset
+    !> Id of the link whose position is the table's abscissa (default: output_link).
+    real(wp) :: over = unset
   end type force_in_t
 
   !> An external moment as written in the deck.
@@ -105,6 +130,10 @@ module kinetostat_assur_deck
     real(wp) :: value = unset, idle = unset, phi_on = unset, phi_off = unset
     !> Column of step_values (a whole number).
     real(wp) :: column = unset
+    !> Value over the position of link `over`: pairs (position, value), N*m.
+    real(wp) :: table(2 * max_table_points) = unset
+    !> Id of the link whose position is the table's abscissa (default: output_link).
+    real(wp) :: over = unset
   end type moment_in_t
 
   !> A validated `&assur` deck.
@@ -119,6 +148,14 @@ module kinetostat_assur_deck
     real(wp) :: dphi = 0.0_wp
     !> Number of steps.
     integer :: n = 0
+    !> Crank angles given as a list phi1(:), deg (not allocated: phi_start + k*dphi).
+    real(wp), allocatable :: phi_list(:)
+    !> Whether phi_start was computed as the extreme position of the output link.
+    logical :: start_extreme = .false.
+    !> Whether the deck gave global points at the reference position (coordinates = 'global').
+    logical :: global = .false.
+    !> Reference position of the crank for the global form, deg.
+    real(wp) :: phi_ref = 0.0_wp
     !> Direction of gravity, deg.
     real(wp) :: gravity_angle = -90.0_wp
     !> Constant crank speed (when not prescribed per step), rad/s.
@@ -147,6 +184,13 @@ module kinetostat_assur_deck
     logical :: components = .true.
     !> Frame id, crank id.
     integer :: frame_id = 0, crank_id = 1
+    !> Friction data of every pair (dyad pairs, then the crank pin).
+    type(pair_friction_t), allocatable :: friction(:)
+    !> Whether any pair has friction (otherwise the run is the frictionless one, byte for byte).
+    logical :: friction_on = .false.
+    !> Motion sign of the input per step: the sign of omega1, or with the input at rest the
+    !> direction in which the run moves it (+1: phi1 increasing).
+    real(wp), allocatable :: motion_sign(:)
   end type assur_deck_t
 
   !> Template deck: the slider-crank of data/assur_slider_crank.nml.
@@ -214,15 +258,34 @@ contains
     type(assur_deck_t), intent(out) :: deck
     !> Input error naming file, group, variable and reason.
     type(error_t), allocatable, intent(out) :: error
-    character(len=80) :: title
+    !> As long as the whole deck: an unterminated quote reads the rest of the deck into it
+    !> (a shorter variable makes gfortran print a runtime warning); at most 80 are kept.
+    character(len=size(source%lines) * len(source%lines) + 1) :: title
     !> Integer deck variables, read as reals (see require_whole).
     real(wp) :: frame_id, crank_id, n
     !> Linear actuator as driver: dyad number and pair 1..3 (whole numbers, read as reals).
     real(wp) :: drive_dyad, drive_pair
+    !> Output link's id (a whole number read as a real); crank angles as a list, deg.
+    real(wp) :: output_link
+    real(wp), allocatable :: phi1(:)
+    !> Where the steps start: '' (phi_start) or 'extreme' (of the output link).
+    character(len=16) :: start_at
+    !> 'local' (link coordinates) or 'global' (points at the reference position phi_ref, deg).
+    character(len=16) :: coordinates
+    real(wp) :: phi_ref
+    !> Global form: frames of the links at the reference position; given global points of
+    !> each dyad (A, B, C) and whether its centres of mass were given.
+    type(link_state_t), allocatable :: ref(:)
+    real(wp) :: glob(2, 3)
+    logical :: global, s_given(2), crank_s_given, at_given
     !> frame_id and crank_id as integers.
     integer :: frame_no, crank_no, nd, nf, nm, n_omega, n_eps, n_values, ios, k, d, i
     real(wp) :: crank_at(2), crank_m, crank_j, crank_s(2), omega1, g, gravity_angle, phi_start, dphi
+    !> Friction coefficient and journal radius (m) of the crank's pivot A.
+    real(wp) :: crank_f, crank_r
     real(wp), allocatable :: omega1_step(:), eps1_step(:), step_values(:)
+    !> Elements allocated for each per-step array the deck may give (see deck_array_capacities).
+    integer, allocatable :: capacity(:)
     logical :: angles_signed, components
     type(dyad_in_t) :: dyad(max_dyads)
     type(force_in_t) :: force(max_forces)
@@ -230,32 +293,45 @@ contains
     type(schedule_in_t) :: sched
     character(len=512) :: msg
     type(deck_context_t) :: ctx
+    type(namelist_probe_t) :: probe
     integer, allocatable :: ids(:)
     character(len=:), allocatable :: name
-    !> Elements of each per-step array (deck_array_capacity).
-    integer :: capacity
     namelist /assur/ title, frame_id, crank_id, crank_at, crank_m, crank_j, crank_s, omega1, &
       omega1_step, eps1_step, g, gravity_angle, phi_start, dphi, n, dyad, force, moment, &
-      step_values, angles_signed, components, drive_dyad, drive_pair
+      step_values, angles_signed, components, drive_dyad, drive_pair, output_link, phi1, start_at, crank_f, crank_r, &
+      coordinates, phi_ref
 
     ctx%path = source%path
     ctx%group = group_name
     title = ""
     frame_id = 0.0_wp; crank_id = 1.0_wp; n = unset_real
     drive_dyad = unset_real; drive_pair = unset_real
+    output_link = unset_real; start_at = ""; crank_f = unset_real; crank_r = unset_real
+    coordinates = "local"; phi_ref = unset_real
     crank_at = unset_real; crank_m = unset_real; crank_j = unset_real; crank_s = unset_real
     omega1 = unset_real; g = unset_real; gravity_angle = unset_real
     phi_start = unset_real; dphi = unset_real
     angles_signed = .false.; components = .true.
-    capacity = deck_array_capacity(source)   ! not max_deck_array: a small deck stays small
-    allocate (omega1_step(capacity), eps1_step(capacity), step_values(capacity), &
+    capacity = deck_array_capacities(source, ctx%group, [character(len=11) :: "omega1_step", "eps1_step", &
+      "step_values", "phi1"])
+    allocate (omega1_step(capacity(1)), eps1_step(capacity(2)), step_values(capacity(3)), phi1(capacity(4)), &
               source=unset_real)
 
     read (source%lines, nml=assur, iostat=ios, iomsg=msg)
     if (ios /= 0) then
-      call namelist_failure(ctx, ios, msg, error)
+      ! find the line and the assignment that failed (gfortran's message does not say)
+      call probe%start(source, ios, msg)
+      do while (probe%more(source))
+        read (probe%lines, nml=assur, iostat=ios, iomsg=msg)
+        call probe%take(ios, msg)
+      end do
+      call probe%report(source, ctx, error)
       return
     end if
+
+    call require_rule(ctx, "title", len_trim(title) <= len(deck%title), "longer than "// &
+      int_str(len(deck%title))//" characters", error)
+    if (allocated(error)) return
 
     ! ---- frame, crank, speed law, gravity, steps
     call require_whole(ctx, "frame_id", frame_id, 0, huge(1), frame_no, error); if (allocated(error)) return
@@ -264,7 +340,19 @@ contains
       "must be >= 0 and differ from frame_id (got "//int_str(crank_no)//")", error)
     if (allocated(error)) return
     call optional_pair(ctx, "crank_at", crank_at, error); if (allocated(error)) return
+    crank_s_given = any(is_set(crank_s))
     call optional_pair(ctx, "crank_s", crank_s, error); if (allocated(error)) return
+    call require_rule(ctx, "coordinates", any(lower(trim(coordinates)) == [character(len=8) :: "local", "global"]), &
+      "must be 'local' (link coordinates) or 'global' (points at the reference position phi_ref), got '"// &
+      trim(coordinates)//"'", error)
+    if (allocated(error)) return
+    global = lower(trim(coordinates)) == "global"
+    if (global) then
+      call require_set(ctx, "phi_ref", phi_ref, error); if (allocated(error)) return
+    else
+      call require_rule(ctx, "phi_ref", .not. is_set(phi_ref), "only used with coordinates = 'global'", error)
+      if (allocated(error)) return
+    end if
     crank_m = optional_default(crank_m, 0.0_wp)
     call require_nonnegative(ctx, "crank_m", crank_m, error); if (allocated(error)) return
     crank_j = optional_default(crank_j, 0.0_wp)
@@ -273,9 +361,7 @@ contains
     call require_nonnegative(ctx, "g", g, error); if (allocated(error)) return
     gravity_angle = optional_default(gravity_angle, -90.0_wp)
     call require_set(ctx, "gravity_angle", gravity_angle, error); if (allocated(error)) return
-    phi_start = optional_default(phi_start, 0.0_wp)
-    call require_set(ctx, "phi_start", phi_start, error); if (allocated(error)) return
-    call steps_over_turn(ctx, dphi, n, deck%n, error); if (allocated(error)) return
+    call read_steps(ctx, phi1, phi_start, dphi, n, start_at, deck, error); if (allocated(error)) return
 
     call count_values(ctx, "omega1_step", omega1_step, n_omega, error); if (allocated(error)) return
     call count_values(ctx, "eps1_step", eps1_step, n_eps, error); if (allocated(error)) return
@@ -297,6 +383,7 @@ contains
       allocate (deck%omega1(deck%n), source=omega1)
       allocate (deck%eps1(deck%n), source=0.0_wp)
       deck%omega1_const = omega1
+      if (allocated(deck%phi_list)) deck%omega1 = signed_speed(deck%phi_list, omega1)
     end if
     deallocate (omega1_step, eps1_step)
     call count_values(ctx, "step_values", step_values, n_values, error); if (allocated(error)) return
@@ -324,12 +411,28 @@ contains
     allocate (ids(0:2 * nd + 1))
     ids(0) = frame_no
     ids(1) = crank_no
+    if (global) then
+      allocate (ref(0:2 * nd + 1))
+      ref(0) = frame_state()
+      ref(1) = crank_state(crank_at, phi_ref * deg_to_rad)
+      if (crank_s_given) deck%mech%links(1)%s = to_local(ref(1), crank_s)
+      deck%phi_ref = phi_ref
+      deck%global = .true.
+    end if
     do d = 1, nd
+      if (global) then
+        call globalize_dyad(ctx, d, dyad(d), ids(0:2 * d - 1), ref, glob, s_given, error)
+        if (allocated(error)) return
+      end if
       call read_dyad(ctx, d, dyad(d), ids(0:2 * d - 1), deck%mech%dyads(d), &
                      deck%mech%links(link_a(d)), deck%mech%links(link_b(d)), error)
       if (allocated(error)) return
       ids(2 * d) = deck%mech%links(link_a(d))%id
       ids(2 * d + 1) = deck%mech%links(link_b(d))%id
+      if (global) then
+        call reference_pose(ctx, d, phi_ref, glob, s_given, is_set(dyad(d)%b(1)), deck%mech, ref, error)
+        if (allocated(error)) return
+      end if
     end do
 
     call read_driver(ctx, drive_dyad, drive_pair, deck%mech, error); if (allocated(error)) return
@@ -347,16 +450,16 @@ contains
     end do
     allocate (deck%mech%forces(nf), deck%mech%moment_link(nm))
     allocate (deck%f_mag(nf, deck%n), deck%m_mag(nm, deck%n))
-    allocate (deck%phi1_deg(deck%n))
-    deck%phi1_deg = [(phi_start + real(k - 1, wp) * dphi, k=1, deck%n)]
+    call read_output_link(ctx, output_link, ids, deck%mech, error); if (allocated(error)) return
+    call crank_angles(ctx, deck, error); if (allocated(error)) return
     do k = nf + 1, max_forces
-      if (is_set(force(k)%value) .or. is_set(force(k)%angle) .or. is_set(force(k)%column)) then
+      if (any(is_set([force(k)%value, force(k)%angle, force(k)%column, force(k)%fx, force(k)%fy, force(k)%table(1)]))) then
         call deck_error(ctx, "force("//int_str(k)//")%link", "missing (forces must be numbered without gaps)", error)
         return
       end if
     end do
     do k = nm + 1, max_moments
-      if (is_set(moment(k)%value) .or. is_set(moment(k)%column)) then
+      if (any(is_set([moment(k)%value, moment(k)%column, moment(k)%table(1)]))) then
         call deck_error(ctx, "moment("//int_str(k)//")%link", "missing (moments must be numbered without gaps)", error)
         return
       end if
@@ -365,11 +468,26 @@ contains
       name = "force("//int_str(k)//")%"
       associate (fi => force(k))
         call moving_link(ctx, name//"link", fi%link, ids, i, error); if (allocated(error)) return
+        at_given = any(is_set(fi%at))
         call optional_pair(ctx, name//"at", fi%at, error); if (allocated(error)) return
+        if (any(is_set([fi%fx, fi%fy]))) then
+          call force_components(ctx, name, fi, error); if (allocated(error)) return
+        end if
         call require_set(ctx, name//"angle", fi%angle, error); if (allocated(error)) return
+        if (global) then
+          if (at_given) fi%at = to_local(ref(i), fi%at)
+          if (fi%follow) fi%angle = fi%angle - ref(i)%th * rad_to_deg
+        end if
         deck%mech%forces(k) = assur_force_t(link=i, at=fi%at, angle=fi%angle * deg_to_rad, follow=fi%follow)
-        sched = schedule_in_t(value=fi%value, idle=fi%idle, phi_on=fi%phi_on, phi_off=fi%phi_off, column=fi%column)
-        call read_schedule(ctx, name, sched, deck%phi1_deg, step_values(1:n_values), deck%f_mag(k, :), error)
+        if (is_set(fi%table(1))) then
+          call read_table(ctx, name, fi%table, fi%over, [fi%value, fi%idle, fi%phi_on, fi%phi_off, fi%column], &
+                          ids, deck, deck%f_mag(k, :), error)
+        else
+          call require_rule(ctx, name//"over", .not. is_set(fi%over), "only used with table", error)
+          if (allocated(error)) return
+          sched = schedule_in_t(value=fi%value, idle=fi%idle, phi_on=fi%phi_on, phi_off=fi%phi_off, column=fi%column)
+          call read_schedule(ctx, name, sched, deck%phi1_deg, step_values(1:n_values), deck%f_mag(k, :), error)
+        end if
         if (allocated(error)) return
       end associate
     end do
@@ -378,8 +496,15 @@ contains
       associate (mi => moment(k))
         call moving_link(ctx, name//"link", mi%link, ids, i, error); if (allocated(error)) return
         deck%mech%moment_link(k) = i
-        sched = schedule_in_t(value=mi%value, idle=mi%idle, phi_on=mi%phi_on, phi_off=mi%phi_off, column=mi%column)
-        call read_schedule(ctx, name, sched, deck%phi1_deg, step_values(1:n_values), deck%m_mag(k, :), error)
+        if (is_set(mi%table(1))) then
+          call read_table(ctx, name, mi%table, mi%over, [mi%value, mi%idle, mi%phi_on, mi%phi_off, mi%column], &
+                          ids, deck, deck%m_mag(k, :), error)
+        else
+          call require_rule(ctx, name//"over", .not. is_set(mi%over), "only used with table", error)
+          if (allocated(error)) return
+          sched = schedule_in_t(value=mi%value, idle=mi%idle, phi_on=mi%phi_on, phi_off=mi%phi_off, column=mi%column)
+          call read_schedule(ctx, name, sched, deck%phi1_deg, step_values(1:n_values), deck%m_mag(k, :), error)
+        end if
         if (allocated(error)) return
       end associate
     end do
@@ -404,17 +529,379 @@ contains
     deck%pair_name(3 * nd + 1) = pair_stem(crank_no, frame_no)
     deck%pair_frame(3 * nd + 1) = 0.0_wp
 
+    ! ---- friction in the pairs (all 0 by default)
+    allocate (deck%friction(3 * nd + 1))
+    do d = 1, nd
+      call read_dyad_friction(ctx, d, dyad(d), deck%friction(3 * d - 2:3 * d), error)
+      if (allocated(error)) return
+    end do
+    call read_pair_friction(ctx, "crank_f", "crank_r", "", "", crank_f, crank_r, unset_real, unset_real, .false., &
+                            deck%friction(3 * nd + 1), error)
+    if (allocated(error)) return
+    deck%friction%name = deck%pair_name
+    deck%friction_on = friction_active(deck%friction)
+    deck%motion_sign = merge(-1.0_wp, 1.0_wp, deck%omega1 < 0.0_wp)
+
     deck%mech%g = g
     deck%gravity_angle = gravity_angle
     deck%mech%down = unit_at(gravity_angle * deg_to_rad)
     deck%title = title
-    deck%phi_start = phi_start
-    deck%dphi = dphi
     deck%angles_signed = angles_signed
     deck%components = components
     deck%frame_id = frame_no
     deck%crank_id = crank_no
   end subroutine read_assur_deck
+
+  !> Point `p` (global, m) in the coordinates of the link whose frame is `ls` (components
+  !> below 1e-13 of its distance from the link's origin are roundoff: 0).
+  pure function to_local(ls, p) result(r)
+    type(link_state_t), intent(in) :: ls
+    real(wp), intent(in) :: p(2)
+    real(wp) :: r(2)
+    r = rotate(p - ls%o, -ls%th)
+    ! roundoff of the rotation (a point on the link's axis) is 0
+    where (abs(r) <= 1.0e-13_wp * magnitude(p - ls%o)) r = 0.0_wp
+  end function to_local
+
+  !> Global form, before the dyad is validated: its attachment points and guide angles
+  !> (global at the reference position) become coordinates of the links they attach to,
+  !> RRR's l2, l3 and RRP's l2 come from the joints A, B, C (and the mode from B's side),
+  !> RPP's slot point and angle become link b's (its origin at the guide point then).
+  subroutine globalize_dyad(ctx, d, dy, ids, ref, glob, s_given, error)
+    type(deck_context_t), intent(in) :: ctx
+    !> Dyad number.
+    integer, intent(in) :: d
+    !> The dyad as read; converted in place.
+    type(dyad_in_t), intent(inout) :: dy
+    !> Ids of the links defined before it.
+    integer, intent(in) :: ids(0:)
+    !> Frames of the links at the reference position (those before the dyad are set).
+    type(link_state_t), intent(in) :: ref(0:)
+    !> The given global points A (pair 1), B (inner, or unset), C (pair 3), m.
+    real(wp), intent(out) :: glob(2, 3)
+    !> Whether the centres of mass s2, s3 were given (global points, converted later).
+    logical, intent(out) :: s_given(2)
+    type(error_t), allocatable, intent(out) :: error
+    character(len=:), allocatable :: p
+    integer :: i1, i3, kind
+    real(wp) :: t(2), gam
+    p = "dyad("//int_str(d)//")%"
+    glob = unset_real
+    s_given = [any(is_set(dy%s2)), any(is_set(dy%s3))]
+    if (.not. is_whole_in(dy%kind, 1, 5)) return ! read_dyad reports it
+    kind = nint(dy%kind)
+    call find_link(ctx, p//"on2", dy%on2, ids, .true., i1, error); if (allocated(error)) return
+    call find_link(ctx, p//"on3", dy%on3, ids, .true., i3, error); if (allocated(error)) return
+    call require_pair(ctx, p//"at2", dy%at2, error); if (allocated(error)) return
+    call require_pair(ctx, p//"at3", dy%at3, error); if (allocated(error)) return
+    glob(:, 1) = dy%at2
+    glob(:, 3) = dy%at3
+    if (is_set(dy%b(1)) .or. is_set(dy%b(2))) then
+      call require_pair(ctx, p//"b", dy%b, error); if (allocated(error)) return
+      glob(:, 2) = dy%b
+    end if
+    dy%at2 = to_local(ref(i1), glob(:, 1))
+    dy%at3 = to_local(ref(i3), glob(:, 3))
+    gam = dy%angle3
+    if (is_set(dy%angle2)) dy%angle2 = dy%angle2 - ref(i1)%th * rad_to_deg
+    if (is_set(dy%angle3)) dy%angle3 = dy%angle3 - ref(i3)%th * rad_to_deg
+    select case (kind)
+    case (kind_rrr, kind_rrp)
+      call require_rule(ctx, p//"b", is_set(dy%b(1)), "missing: the global form gives the inner joint B "// &
+        "(its lengths are derived from A, B, C)", error)
+      if (allocated(error)) return
+      call require_rule(ctx, p//"l2", .not. is_set(dy%l2), "derived from at2 and b in the global form: remove it", error)
+      if (allocated(error)) return
+      dy%l2 = magnitude(glob(:, 2) - glob(:, 1))
+      if (kind == kind_rrr) then
+        call require_rule(ctx, p//"l3", .not. is_set(dy%l3), "derived from at3 and b in the global form: remove it", &
+          error)
+        if (allocated(error)) return
+        dy%l3 = magnitude(glob(:, 2) - glob(:, 3))
+        ! mode +1: B left of A -> C
+        if (.not. is_set(dy%mode)) dy%mode = merge(1.0_wp, -1.0_wp, &
+          cross(glob(:, 3) - glob(:, 1), glob(:, 2) - glob(:, 1)) >= 0.0_wp)
+      else if (is_set(gam)) then
+        ! mode +1: B at the larger of the two guide coordinates (their mean is -(C - A).t)
+        t = unit_at(gam * deg_to_rad)
+        if (.not. is_set(dy%mode)) dy%mode = merge(1.0_wp, -1.0_wp, &
+          dot_product(glob(:, 2) - glob(:, 3), t) >= -dot_product(glob(:, 3) - glob(:, 1), t))
+      end if
+    case (kind_prp)
+      continue
+    case default
+      call require_rule(ctx, p//"b", .not. is_set(dy%b(1)), "not used by this dyad (kind "//kind_names(kind)// &
+        "): its inner pair is prismatic", error)
+      if (allocated(error)) return
+      if (kind == kind_rpp .and. is_set(gam)) then
+        ! the slot: a global point and direction; link b's origin is at the guide point C here
+        call require_pair(ctx, p//"slot_at", dy%slot_at, error); if (allocated(error)) return
+        dy%slot_at = rotate(dy%slot_at - glob(:, 3), -gam * deg_to_rad)
+        if (is_set(dy%slot_angle)) dy%slot_angle = dy%slot_angle - gam
+      end if
+    end select
+  end subroutine globalize_dyad
+
+  !> Global form, after the dyad is validated: its pose at the reference position must put
+  !> the joints where the deck gave them (relative misfit 1e-6 of the dyad's size), else an
+  !> input error naming the joint and the misfit; its links' frames there convert their
+  !> centres of mass to link coordinates.
+  subroutine reference_pose(ctx, d, phi_ref, glob, s_given, b_given, mech, ref, error)
+    type(deck_context_t), intent(in) :: ctx
+    !> Dyad number.
+    integer, intent(in) :: d
+    !> Reference crank angle, deg.
+    real(wp), intent(in) :: phi_ref
+    !> Given global points A, B, C, m.
+    real(wp), intent(in) :: glob(2, 3)
+    !> Whether s2, s3 were given; whether B was given.
+    logical, intent(in) :: s_given(2), b_given
+    !> The mechanism, dyad d built; its links' centres of mass are converted.
+    type(assur_mech_t), intent(inout) :: mech
+    !> Frames at the reference position; those of the dyad's links are set.
+    type(link_state_t), intent(inout) :: ref(0:)
+    type(error_t), allocatable, intent(out) :: error
+    type(dyad_pose_t) :: pose
+    character(len=:), allocatable :: p, at_ref
+    real(wp) :: size, misfit
+    integer :: kind
+    p = "dyad("//int_str(d)//")%"
+    at_ref = " at the reference position (phi_ref = "//real_str(phi_ref)//" deg)"
+    associate (dy => mech%dyads(d))
+      kind = dy%geom%kind
+      pose = dyad_pose(dy%geom, ref(dy%on(1)), dy%at(:, 1), dy%ang(1), ref(dy%on(2)), dy%at(:, 2), dy%ang(2))
+    end associate
+    if (pose%status /= pose_ok) then
+      call deck_error(ctx, "dyad("//int_str(d)//")", "cannot be assembled"//at_ref, error)
+      return
+    end if
+    size = magnitude(glob(:, 3) - glob(:, 1))
+    if (b_given) size = max(size, magnitude(glob(:, 2) - glob(:, 1)), magnitude(glob(:, 2) - glob(:, 3)))
+    size = max(size, tiny(1.0_wp))
+    if (b_given) then
+      misfit = magnitude(pose%p(:, 2) - glob(:, 2))
+      if (misfit > misfit_rel * size) then
+        call deck_error(ctx, p//"b", "the reference position is not assembled: joint B is "//real_str(misfit)// &
+          " m from where the links put it ("//real_str(pose%p(1, 2))//", "//real_str(pose%p(2, 2))//")"// &
+          at_ref, error)
+        return
+      end if
+    end if
+    if (kind == kind_rpp) then
+      misfit = magnitude(pose%link(2)%o - glob(:, 3))
+      if (misfit > misfit_rel * size) then
+        call deck_error(ctx, p//"at2", "the reference position is not assembled: pin A is "//real_str(misfit)// &
+          " m off the slot through slot_at"//at_ref, error)
+        return
+      end if
+    end if
+    ref(link_a(d)) = pose%link(1)
+    ref(link_b(d)) = pose%link(2)
+    if (s_given(1)) mech%links(link_a(d))%s = to_local(ref(link_a(d)), mech%links(link_a(d))%s)
+    if (s_given(2)) mech%links(link_b(d))%s = to_local(ref(link_b(d)), mech%links(link_b(d))%s)
+  end subroutine reference_pose
+
+  !> The steps' crank angles as a list `phi1(:)` (any order), or phi_start [or
+  !> start_at = 'extreme'], dphi, n; sets deck%n, deck%phi_list, deck%phi_start, deck%dphi,
+  !> deck%start_extreme.
+  subroutine read_steps(ctx, phi1, phi_start, dphi, n, start_at, deck, error)
+    type(deck_context_t), intent(in) :: ctx
+    !> The list as read (unset after its values), deg.
+    real(wp), intent(in) :: phi1(:)
+    !> First angle (deg), step (deg), number of steps as read (or unset).
+    real(wp), intent(in) :: phi_start, dphi, n
+    !> '' or 'extreme'.
+    character(*), intent(in) :: start_at
+    type(assur_deck_t), intent(inout) :: deck
+    type(error_t), allocatable, intent(out) :: error
+    integer :: n_list
+    call require_rule(ctx, "start_at", any(lower(trim(start_at)) == [character(len=8) :: "", "extreme"]), &
+      "must be 'extreme' (the first extreme position of the output link at or after phi_start), got '"// &
+      trim(start_at)//"'", error)
+    if (allocated(error)) return
+    deck%start_extreme = lower(trim(start_at)) == "extreme"
+    call count_values(ctx, "phi1", phi1, n_list, error); if (allocated(error)) return
+    if (n_list > 0) then
+      call require_rule(ctx, "phi1", .not. any(is_set([phi_start, dphi, n])) .and. .not. deck%start_extreme, &
+        "give either phi1(:) (a list of crank angles) or phi_start [start_at], dphi, n, not both", error)
+      if (allocated(error)) return
+      deck%phi_list = phi1(1:n_list)
+      deck%n = n_list
+      return
+    end if
+    deck%phi_start = optional_default(phi_start, 0.0_wp)
+    call require_set(ctx, "phi_start", deck%phi_start, error); if (allocated(error)) return
+    call steps_over_turn(ctx, dphi, n, deck%n, error); if (allocated(error)) return
+    deck%dphi = dphi
+  end subroutine read_steps
+
+  !> Crank speed per step of an angle list at constant |omega1| (rad/s): its sign is that
+  !> of the move that brought the crank to the step's angle, + from a smaller angle, - from
+  !> a larger one (a turning point keeps the sign it was reached with); the first step (and
+  !> repeats) take the first move's sign; without any move omega1 is kept as given. A
+  !> rocking list thus equals its monotonic runs, each turning point ending a run.
+  pure function signed_speed(phi, omega1) result(w)
+    !> Crank angles, deg.
+    real(wp), intent(in) :: phi(:)
+    !> Speed, rad/s.
+    real(wp), intent(in) :: omega1
+    real(wp) :: w(size(phi))
+    real(wp) :: dir(size(phi))
+    integer :: k, n
+    n = size(phi)
+    dir = 0.0_wp
+    do k = 2, n
+      if (phi(k) /= phi(k - 1)) then
+        dir(k) = sign(1.0_wp, phi(k) - phi(k - 1))
+      else
+        dir(k) = dir(k - 1)
+      end if
+    end do
+    do k = n - 1, 1, -1
+      if (dir(k) == 0.0_wp) dir(k) = dir(k + 1)
+    end do
+    w = omega1
+    where (dir /= 0.0_wp) w = dir * abs(omega1)
+  end function signed_speed
+
+  !> A force by components (fx, fy; global, or link axes when follow): becomes its angle and
+  !> a constant value (or `value` inside the window phi_on..phi_off, 0 outside).
+  subroutine force_components(ctx, name, fi, error)
+    type(deck_context_t), intent(in) :: ctx
+    !> Prefix, e.g. "force(1)%".
+    character(*), intent(in) :: name
+    !> The force as read; angle and value are set from the components.
+    type(force_in_t), intent(inout) :: fi
+    type(error_t), allocatable, intent(out) :: error
+    call require_rule(ctx, name//"fx", .not. any(is_set([fi%angle, fi%value, fi%column, fi%idle, fi%table(1)])), &
+      "give the force either by components fx, fy or by angle with value/column/table, not both", error)
+    if (allocated(error)) return
+    fi%fx = optional_default(fi%fx, 0.0_wp)
+    fi%fy = optional_default(fi%fy, 0.0_wp)
+    call require_set(ctx, name//"fx", fi%fx, error); if (allocated(error)) return
+    call require_set(ctx, name//"fy", fi%fy, error); if (allocated(error)) return
+    fi%angle = atan2(fi%fy, fi%fx) * rad_to_deg
+    fi%value = hypot(fi%fx, fi%fy)
+  end subroutine force_components
+
+  !> Per-step values of a load given as a table of (position, value) pairs over the position
+  !> of link `over` (default: the output link): its angle in deg, taken modulo 360 into
+  !> [x1, x1 + 360), or a slider's stroke on its frame guide in m; linear interpolation,
+  !> positions strictly increasing, every step's position inside the table.
+  subroutine read_table(ctx, name, table, over, others, ids, deck, values, error)
+    type(deck_context_t), intent(in) :: ctx
+    !> Prefix, e.g. "force(1)%".
+    character(*), intent(in) :: name
+    !> The table as read.
+    real(wp), intent(in) :: table(:)
+    !> Link id of the abscissa, or unset.
+    real(wp), intent(in) :: over
+    !> value, idle, phi_on, phi_off, column as read (must be unset).
+    real(wp), intent(in) :: others(:)
+    !> Link ids by internal index.
+    integer, intent(in) :: ids(0:)
+    !> The deck (mechanism and crank angles).
+    type(assur_deck_t), intent(in) :: deck
+    !> Value per step.
+    real(wp), intent(out) :: values(:)
+    type(error_t), allocatable, intent(out) :: error
+    type(link_state_t) :: states(0:2 * size(deck%mech%dyads) + 1)
+    type(dyad_pose_t) :: poses(size(deck%mech%dyads))
+    type(error_t), allocatable :: kin_error
+    real(wp), allocatable :: x(:), v(:)
+    real(wp) :: q, dq, ddq, tol
+    integer :: n_values, np, i, pair, k, seg
+    character(len=:), allocatable :: unit
+    values = 0.0_wp
+    call require_rule(ctx, name//"table", .not. any(is_set(others)), &
+      "give either table (values over a link's position) or value [idle, phi_on, phi_off] or column", error)
+    if (allocated(error)) return
+    call count_values(ctx, name//"table", table, n_values, error); if (allocated(error)) return
+    call require_rule(ctx, name//"table", modulo(n_values, 2) == 0, "needs pairs (position, value), got "// &
+      int_str(n_values)//" numbers", error)
+    if (allocated(error)) return
+    np = n_values / 2
+    allocate (x(np), v(np))
+    x = table(1:n_values:2)
+    v = table(2:n_values:2)
+    do k = 2, np
+      if (.not. x(k) > x(k - 1)) then
+        call deck_error(ctx, name//"table", "positions must be strictly increasing: point "//int_str(k)// &
+          " ("//real_str(x(k))//") after "//real_str(x(k - 1)), error)
+        return
+      end if
+    end do
+    i = deck%mech%output_link
+    if (is_set(over)) then
+      call moving_link(ctx, name//"over", over, ids, i, error); if (allocated(error)) return
+    end if
+    pair = output_pair_of(deck%mech, i)
+    unit = " deg"
+    if (pair /= 0) unit = " m"
+    tol = 1.0e-9_wp * max(x(np) - x(1), abs(x(1)), abs(x(np)), 1.0e-300_wp)
+    do k = 1, deck%n
+      call assur_kinematics(deck%mech, deck%phi1_deg(k) * deg_to_rad, states, poses, kin_error)
+      if (allocated(kin_error)) cycle ! reported by the solution with the step
+      call link_position(states, poses, i, pair, q, dq, ddq)
+      if (pair == 0) q = x(1) + modulo(q * rad_to_deg - x(1), 360.0_wp)
+      if (q < x(1) - tol .or. q > x(np) + tol) then
+        call deck_error(ctx, name//"table", "at step "//int_str(k)//" (phi1 = "//real_str(deck%phi1_deg(k))// &
+          " deg) link "//int_str(ids(i))//" is at "//real_str(q)//unit//", outside the table ["// &
+          real_str(x(1))//", "//real_str(x(np))//"]"//unit, error)
+        return
+      end if
+      if (np == 1) then
+        values(k) = v(1)
+        cycle
+      end if
+      seg = 1
+      do while (seg < np - 1 .and. q > x(seg + 1))
+        seg = seg + 1
+      end do
+      values(k) = v(seg) + (v(seg + 1) - v(seg)) * (q - x(seg)) / (x(seg + 1) - x(seg))
+    end do
+  end subroutine read_table
+
+  !> The output link (default: link b of the last dyad) and how its position is measured.
+  subroutine read_output_link(ctx, output_link, ids, mech, error)
+    type(deck_context_t), intent(in) :: ctx
+    !> Link id as read (or unset).
+    real(wp), intent(in) :: output_link
+    !> Link ids by internal index.
+    integer, intent(in) :: ids(0:)
+    type(assur_mech_t), intent(inout) :: mech
+    type(error_t), allocatable, intent(out) :: error
+    integer :: i
+    i = ubound(ids, 1)
+    if (is_set(output_link)) then
+      call moving_link(ctx, "output_link", output_link, ids, i, error); if (allocated(error)) return
+    end if
+    mech%output_link = i
+    mech%output_pair = output_pair_of(mech, i)
+  end subroutine read_output_link
+
+  !> The crank angle of every step (deg): the list, or from phi_start (or the extreme
+  !> position of the output link at or after it) by dphi.
+  subroutine crank_angles(ctx, deck, error)
+    type(deck_context_t), intent(in) :: ctx
+    type(assur_deck_t), intent(inout) :: deck
+    type(error_t), allocatable, intent(out) :: error
+    real(wp) :: phi
+    integer :: k
+    if (allocated(deck%phi_list)) then
+      deck%phi1_deg = deck%phi_list
+      return
+    end if
+    if (deck%start_extreme) then
+      call assur_extreme(deck%mech, deck%phi_start * deg_to_rad, phi, error)
+      if (allocated(error)) then
+        error%message = ctx%path//": &"//group_name//": start_at: "//error%message
+        return
+      end if
+      deck%phi_start = phi * rad_to_deg
+    end if
+    deck%phi1_deg = [(deck%phi_start + real(k - 1, wp) * deck%dphi, k=1, deck%n)]
+  end subroutine crank_angles
 
   !> The driving linear actuator, when `drive_dyad` and `drive_pair` name one: a prismatic
   !> pair of a dyad whose axial force replaces the crank's balancing moment as the unknown.
@@ -471,7 +958,9 @@ contains
     type(dyad_in_t), intent(in) :: dy
     dyad_touched = any(is_set([dy%link2, dy%link3, dy%on2, dy%on3, dy%at2, dy%at3, dy%angle2, dy%angle3, &
                                dy%l2, dy%l3, dy%e, dy%slot_at, dy%slot_angle, dy%mode, dy%m2, dy%j2, dy%s2, &
-                               dy%m3, dy%j3, dy%s3, dy%frame_angle, dy%inner_on]))
+                               dy%m3, dy%j3, dy%s3, dy%frame_angle, dy%inner_on, dy%f2, dy%f3, dy%f23, &
+                               dy%r2, dy%r3, dy%r23, dy%guide2, dy%guide3, dy%guide23, dy%block2, dy%block3, &
+                               dy%block23, dy%b]))
   end function dyad_touched
 
   !> A two-component point: default (0, 0) when unset; both or none; finite.
@@ -658,6 +1147,81 @@ contains
     la = assur_link_t(id=link2, m=dy%m2, j=dy%j2, s=dy%s2)
     lb = assur_link_t(id=link3, m=dy%m3, j=dy%j3, s=dy%s3)
   end subroutine read_dyad
+
+  !> Friction data of the three pairs of dyad `d` (outer of link2, inner, outer of link3).
+  subroutine read_dyad_friction(ctx, d, dy, out, error)
+    type(deck_context_t), intent(in) :: ctx
+    integer, intent(in) :: d
+    type(dyad_in_t), intent(in) :: dy
+    !> Friction of pairs 1, 2, 3 of the dyad.
+    type(pair_friction_t), intent(out) :: out(3)
+    type(error_t), allocatable, intent(out) :: error
+    character(len=:), allocatable :: p
+    integer :: kind
+    p = "dyad("//int_str(d)//")%"
+    kind = nint(dy%kind)
+    call read_pair_friction(ctx, p//"f2", p//"r2", p//"guide2", p//"block2", dy%f2, dy%r2, dy%guide2, dy%block2, &
+                            pair_is_prismatic(kind, 1), out(1), error)
+    if (allocated(error)) return
+    call read_pair_friction(ctx, p//"f23", p//"r23", p//"guide23", p//"block23", dy%f23, dy%r23, dy%guide23, &
+                            dy%block23, pair_is_prismatic(kind, 2), out(2), error)
+    if (allocated(error)) return
+    call read_pair_friction(ctx, p//"f3", p//"r3", p//"guide3", p//"block3", dy%f3, dy%r3, dy%guide3, dy%block3, &
+                            pair_is_prismatic(kind, 3), out(3), error)
+  end subroutine read_dyad_friction
+
+  !> Friction data of one pair: coefficient `f` >= 0 (default 0); a turning pair takes the
+  !> journal radius `r` (> 0 when f > 0), a sliding pair the optional guide and block lengths
+  !> (> 0 when given; the contact span is the shorter of those given).
+  subroutine read_pair_friction(ctx, f_name, r_name, guide_name, block_name, f, r, guide, block, prismatic, &
+                                out, error)
+    type(deck_context_t), intent(in) :: ctx
+    !> Variable names as in the deck.
+    character(*), intent(in) :: f_name, r_name, guide_name, block_name
+    !> Values as read (unset_real when not given): coefficient, radius (m), lengths (m).
+    real(wp), intent(in) :: f, r, guide, block
+    !> Whether the pair is a sliding pair.
+    logical, intent(in) :: prismatic
+    type(pair_friction_t), intent(out) :: out
+    type(error_t), allocatable, intent(out) :: error
+    character(*), parameter :: turning = " (a turning pair: give its journal radius instead)"
+    character(*), parameter :: sliding = " (a sliding pair: give its guide and block lengths instead)"
+    out%f = optional_default(f, 0.0_wp)
+    call require_finite_nonnegative(ctx, f_name, out%f, error); if (allocated(error)) return
+    if (prismatic) then
+      call require_rule(ctx, r_name, .not. is_set(r), "not used by this pair"//sliding//": remove it", error)
+      if (allocated(error)) return
+      if (is_set(guide)) then
+        call require_finite_nonnegative(ctx, guide_name, guide, error); if (allocated(error)) return
+        if (guide > 0.0_wp) out%span = guide
+      end if
+      if (is_set(block)) then
+        call require_finite_nonnegative(ctx, block_name, block, error); if (allocated(error)) return
+        if (block > 0.0_wp .and. (out%span == 0.0_wp .or. block < out%span)) out%span = block
+      end if
+    else
+      if (len(guide_name) > 0) then
+        call require_rule(ctx, guide_name, .not. is_set(guide), "not used by this pair"//turning//": remove it", error)
+        if (allocated(error)) return
+        call require_rule(ctx, block_name, .not. is_set(block), "not used by this pair"//turning//": remove it", error)
+        if (allocated(error)) return
+      end if
+      out%r = optional_default(r, 0.0_wp)
+      call require_finite_nonnegative(ctx, r_name, out%r, error); if (allocated(error)) return
+      call require_rule(ctx, r_name, out%r > 0.0_wp .or. .not. out%f > 0.0_wp, "the journal radius must be > 0 "// &
+        "when the friction coefficient "//f_name//" is > 0 (the friction moment is f*r*|F|)", error)
+    end if
+  end subroutine read_pair_friction
+
+  !> A variable that must be a finite number >= 0.
+  subroutine require_finite_nonnegative(ctx, name, x, error)
+    type(deck_context_t), intent(in) :: ctx
+    character(*), intent(in) :: name
+    real(wp), intent(in) :: x
+    type(error_t), allocatable, intent(out) :: error
+    call require_nonnegative(ctx, name, x, error); if (allocated(error)) return
+    call require_rule(ctx, name, ieee_is_finite(x), "must be a finite number (got "//real_str(x)//")", error)
+  end subroutine require_finite_nonnegative
 
   !> Reject a variable that the dyad's kind does not use.
   pure subroutine used_only_if(ctx, name, given, used, kind_note, error)

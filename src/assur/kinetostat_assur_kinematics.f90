@@ -16,8 +16,9 @@
 !> A, C: outer pins; B: inner pin; a guide is a line on an earlier link along which the
 !> slider's reference point moves (any offset of the slider is part of the line's position).
 module kinetostat_assur_kinematics
-  use kinetostat_kinds, only: wp
+  use kinetostat_kinds, only: wp, rad_to_deg
   use kinetostat_vec2, only: unit_at, perp, cross, rotate, magnitude
+  use kinetostat_text, only: real_str
   implicit none
   private
   public :: link_state_t, point_state_t, dyad_geometry_t, dyad_pose_t
@@ -103,6 +104,8 @@ module kinetostat_assur_kinematics
     real(wp) :: stroke_a(3) = 0.0_wp
     !> Unit direction in which the sliding side moves when the stroke grows (+-t).
     real(wp) :: extend(2, 3) = 0.0_wp
+    !> Why the dyad cannot be assembled, with the numbers (pose_no_assembly only).
+    character(len=:), allocatable :: detail
   end type dyad_pose_t
 
 contains
@@ -205,11 +208,14 @@ contains
     l = magnitude(d)
     if (.not. l > 0.0_wp) then
       pose%status = pose_no_assembly
+      pose%detail = "its outer joints coincide (distance 0 m)"
       return
     end if
     cos_al = (g%l2**2 + l**2 - g%l3**2) / (2.0_wp * g%l2 * l)
     if (abs(cos_al) > 1.0_wp + reach_tol) then
       pose%status = pose_no_assembly
+      pose%detail = "distance between its outer joints "//real_str(l)//" m is outside [|l2 - l3|, l2 + l3] = ["// &
+        real_str(abs(g%l2 - g%l3))//", "//real_str(g%l2 + g%l3)//"] m"
       return
     end if
     alpha = acos(max(-1.0_wp, min(1.0_wp, cos_al)))
@@ -251,6 +257,8 @@ contains
     disc = dt**2 - dot_product(d, d) + g%l2**2
     if (disc < -reach_tol * g%l2**2) then
       pose%status = pose_no_assembly
+      pose%detail = "distance from its joint to the guide "//real_str(sqrt(max(dot_product(d, d) - dt**2, 0.0_wp)))// &
+        " m exceeds l2 = "//real_str(g%l2)//" m"
       return
     end if
     s = -dt + real(g%mode, wp) * sqrt(max(disc, 0.0_wp))
@@ -289,6 +297,8 @@ contains
     disc = l2sq - g%e**2
     if (disc < -reach_tol * max(l2sq, g%e**2) .or. .not. l2sq > 0.0_wp) then
       pose%status = pose_no_assembly
+      pose%detail = "distance between its outer joints "//real_str(sqrt(l2sq))//" m is less than the slider's offset |e| = "// &
+        real_str(abs(g%e))//" m"
       return
     end if
     s = real(g%mode, wp) * sqrt(max(disc, 0.0_wp))
@@ -330,6 +340,8 @@ contains
     call solve2(t1, -t2, g2%p - g1%p, x, ok)
     if (.not. ok) then
       pose%status = pose_no_assembly
+      pose%detail = "its two guides are parallel (directions "//real_str(modulo(gam1 * rad_to_deg, 360.0_wp))//" and "// &
+        real_str(modulo(gam2 * rad_to_deg, 360.0_wp))//" deg)"
       return
     end if
     s1 = x(1)
@@ -371,6 +383,7 @@ contains
     call solve2(t, ts, w - rotate(g%slot_at, gam), x, ok)
     if (.not. ok) then
       pose%status = pose_no_assembly
+      pose%detail = "its slot is parallel to its guide (slot_angle = "//real_str(g%slot_angle * rad_to_deg)//" deg)"
       return
     end if
     sb = x(1)

@@ -5,11 +5,11 @@ module kinetostat_assur_layout
   use kinetostat_kinds, only: wp, deg_to_rad, rad_to_deg
   use kinetostat_deck, only: deck_source_t
   use kinetostat_error, only: error_t, fatal_error, exit_geometry
-  use kinetostat_text, only: int_str
+  use kinetostat_text, only: int_str, upper
   use kinetostat_noise, only: noise_rel, force_components
   use kinetostat_vec2, only: magnitude, angle_360_deg, angle_180_deg, rotate, snap_noise, clean_zero
   use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_component, col_length, &
-    col_moment, col_other
+    col_moment, col_other, col_flag, col_ratio
   use kinetostat_format, only: fixed_field, display_width
   use kinetostat_labels, only: lang_ru
   use kinetostat_text_buffer, only: text_buffer_t
@@ -18,16 +18,23 @@ module kinetostat_assur_layout
   use kinetostat_assur_kinematics, only: kind_names, link_state_t, dyad_pose_t, point_state_t, point_on, &
     kind_rrp, kind_rpr, kind_prp, kind_rpp
   use kinetostat_assur_statics, only: pair_is_prismatic
-  use kinetostat_assur, only: assur_step_t, assur_step, assur_kinematics, link_a, link_b
+  use kinetostat_assur, only: assur_step_t, assur_step, assur_kinematics, link_a, link_b, crank_pin_index
+  use kinetostat_drawing, only: drawing_t, force_load
+  use kinetostat_assur_friction, only: friction_step_t, assur_friction_step
   use kinetostat_assur_deck, only: assur_deck_t, read_assur_deck, write_assur_template
   implicit none
   private
   public :: assur_mechanism_t, new_assur, assur_solve, assur_csv_columns, assur_csv_values, assur_pair_prismatic
+  public :: friction_csv_columns, friction_csv_values, friction_work
 
   !> Width of the PHI1 field of the RESULTS block.
   integer, parameter :: phi_width = 9
   !> Width of every other field of the RESULTS block.
   integer, parameter :: field_width = 12
+  !> A run spanning at least 360 deg minus this covers a whole turn of the input, deg.
+  real(wp), parameter :: whole_turn_tol = 1.0e-9_wp
+  !> An efficiency within this of 0 is roundoff (A_loss = A_driver: the loads do no net work).
+  real(wp), parameter :: eta_roundoff = 1.0e-12_wp
   !> Decimals of the actuator's stroke (m), stroke speed (m/s) and acceleration (m/s^2).
   integer, parameter :: stroke_decimals = 4
   !> Dyad line of the INPUT DATA echo.
@@ -44,6 +51,7 @@ module kinetostat_assur_layout
     procedure :: write_results
     procedure :: write_template
     procedure :: sketch
+    procedure :: force_plan
   end type assur_mechanism_t
 
 contains
@@ -171,10 +179,11 @@ contains
     type(step_table_t), intent(inout) :: table
     type(error_t), allocatable, intent(out) :: error
     type(assur_step_t), allocatable :: steps(:)
+    type(friction_step_t), allocatable :: fsteps(:)
     character(len=24), allocatable :: names(:)
     integer :: k, c, ip
-    allocate (steps(0)) ! defined before the call (gcc's -Wmaybe-uninitialized on the descriptor)
-    call assur_solve(table%deck, self%deck, steps, error)
+    allocate (steps(0), fsteps(0)) ! defined before the call (gcc's -Wmaybe-uninitialized on the descriptor)
+    call assur_solve(table%deck, self%deck, steps, error, fsteps)
     if (allocated(error)) return
     allocate (names(0))
     names = assur_csv_columns(self%deck)
@@ -204,10 +213,27 @@ contains
       call table%add_column("stroke_v", "m/s", col_other)
       call table%add_column("stroke_a", "m/s^2", col_other)
     end if
+    if (self%deck%friction_on) then
+      names = friction_csv_columns(self%deck)
+      if (self%deck%mech%drive_dyad == 0) then
+        call table%add_column(trim(names(1)), "N*m", col_moment)
+      else
+        call table%add_column(trim(names(1)), "N", col_component)
+      end if
+      do c = 2, size(names) - 2
+        call table%add_column(trim(names(c)), "W", col_other)
+      end do
+      call table%add_column(trim(names(size(names) - 1)), "", col_flag)
+      call table%add_column(trim(names(size(names))), "", col_ratio)
+    end if
     table%input_column = 1
     call table%allocate_rows(size(steps))
     do k = 1, size(steps)
-      table%rows(:, k) = assur_csv_values(self%deck, steps(k))
+      if (self%deck%friction_on) then
+        table%rows(:, k) = [assur_csv_values(self%deck, steps(k)), friction_csv_values(self%deck, steps(k), fsteps(k))]
+      else
+        table%rows(:, k) = assur_csv_values(self%deck, steps(k))
+      end if
     end do
     do k = 1, size(steps)
       call put_kinematics(table, k, self%deck, steps(k))
@@ -219,7 +245,123 @@ contains
     end if
     if (len_trim(self%deck%title) > 0) table%subtitle = trim(self%deck%title)
     call echo_deck(self%deck, table)
+    if (self%deck%friction_on) then
+      table%residual_label = "MAX EQUILIBRIUM RESIDUAL WITH FRICTION LOADS"
+      table%mismatch_label = "MAX "//table%driver//" MISMATCH, POWER BALANCE WITH FRICTION"
+      call friction_summary(self%deck, steps, fsteps, table)
+    end if
   end subroutine solve
+
+  !> Friction columns after M1: M1_0 (M1 without friction), P_loss_<pair> for every pair with
+  !> friction, P_loss, eta_defined, eta.
+  pure function friction_csv_columns(deck) result(cols)
+    !> Validated deck.
+    type(assur_deck_t), intent(in) :: deck
+    character(len=24), allocatable :: cols(:)
+    integer :: ip
+    if (deck%mech%drive_dyad > 0) then
+      cols = [character(len=24) :: "F_drive_0"]
+    else
+      cols = [character(len=24) :: "M1_0"]
+    end if
+    do ip = 1, size(deck%friction)
+      if (deck%friction(ip)%f > 0.0_wp) cols = [character(len=24) :: cols, "P_loss_"//trim(deck%pair_name(ip))]
+    end do
+    cols = [character(len=24) :: cols, "P_loss", "eta_defined", "eta"]
+  end function friction_csv_columns
+
+  !> The friction values of one step, in the order of friction_csv_columns. The instantaneous
+  !> efficiency eta = 1 - R/(M1*s) (R: loss per radian of the input, s: its motion sign) is
+  !> defined where the driver delivers power (M1*s > 0; at rest: virtual power); elsewhere
+  !> eta_defined = 0 and eta = 0.
+  pure function friction_csv_values(deck, s, fs) result(v)
+    !> Validated deck.
+    type(assur_deck_t), intent(in) :: deck
+    !> One step with friction.
+    type(assur_step_t), intent(in) :: s
+    !> Its friction results.
+    type(friction_step_t), intent(in) :: fs
+    real(wp), allocatable :: v(:)
+    real(wp) :: driver, mfloor, eta
+    integer :: ip
+    ! M1_0 below the roundoff floor of M1 (see assur_csv_values) is 0, as M1 would be
+    mfloor = 0.0_wp
+    do ip = 1, size(s%f, 2)
+      mfloor = max(mfloor, magnitude(s%f(:, ip)))
+    end do
+    mfloor = noise_rel * mfloor * crank_length(deck)
+    v = [fs%driver_frictionless]
+    if (deck%mech%drive_dyad > 0) then
+      if (abs(v(1)) <= noise_rel * max(mfloor / crank_length(deck), abs(s%f_drive))) v(1) = 0.0_wp
+    else if (abs(v(1)) <= mfloor) then
+      v(1) = 0.0_wp
+    end if
+    do ip = 1, size(deck%friction)
+      if (deck%friction(ip)%f > 0.0_wp) v = [v, fs%loss(ip)]
+    end do
+    driver = fs%driver_rate * fs%motion_sign
+    if (driver > 0.0_wp) then
+      eta = 1.0_wp - fs%rate_total / driver
+      if (abs(eta) <= eta_roundoff) eta = 0.0_wp
+      v = [v, fs%p_loss, 1.0_wp, eta]
+    else
+      v = [v, fs%p_loss, 0.0_wp, 0.0_wp]
+    end if
+    v = clean_zero(v)
+  end function friction_csv_values
+
+  !> Work of the driver and work lost to friction over the run, J: trapezoidal sums over the
+  !> steps of M1*s and of the loss per radian R against |d phi1|.
+  pure subroutine friction_work(deck, steps, fsteps, a_driver, a_loss)
+    !> Validated deck.
+    type(assur_deck_t), intent(in) :: deck
+    !> The steps with friction.
+    type(assur_step_t), intent(in) :: steps(:)
+    !> Their friction results.
+    type(friction_step_t), intent(in) :: fsteps(:)
+    !> Work of the driver, J.
+    real(wp), intent(out) :: a_driver
+    !> Work lost to friction, J.
+    real(wp), intent(out) :: a_loss
+    real(wp) :: dphi
+    integer :: k
+    a_driver = 0.0_wp
+    a_loss = 0.0_wp
+    do k = 1, size(steps) - 1
+      dphi = abs(deck%phi1_deg(k + 1) - deck%phi1_deg(k)) * deg_to_rad
+      a_driver = a_driver + 0.5_wp * dphi * (fsteps(k)%driver_rate * fsteps(k)%motion_sign + &
+                                             fsteps(k + 1)%driver_rate * fsteps(k + 1)%motion_sign)
+      a_loss = a_loss + 0.5_wp * dphi * (fsteps(k)%rate_total + fsteps(k + 1)%rate_total)
+    end do
+  end subroutine friction_work
+
+  !> The summary block of a run with friction: works, cycle efficiency and what it means.
+  pure subroutine friction_summary(deck, steps, fsteps, table)
+    type(assur_deck_t), intent(in) :: deck
+    type(assur_step_t), intent(in) :: steps(:)
+    type(friction_step_t), intent(in) :: fsteps(:)
+    type(step_table_t), intent(inout) :: table
+    real(wp) :: a_driver, a_loss, span, eta
+    call friction_work(deck, steps, fsteps, a_driver, a_loss)
+    span = abs(deck%phi1_deg(size(deck%phi1_deg)) - deck%phi1_deg(1))
+    table%summary_heading = "WORK AND EFFICIENCY WITH FRICTION"
+    call table%summary_real("RUN SPAN", span, "deg")
+    call table%summary_real("A_DRIVER", clean_zero(a_driver), "J")
+    call table%summary_real("A_LOSS", clean_zero(a_loss), "J")
+    if (a_driver > 0.0_wp) then
+      eta = 1.0_wp - a_loss / a_driver
+      if (abs(eta) <= eta_roundoff) eta = 0.0_wp
+      call table%summary_real("ETA", eta, "")
+      if (span >= 360.0_wp - whole_turn_tol) then
+        call table%summary_line("ETA = 1 - A_LOSS/A_DRIVER OVER A WHOLE TURN OF THE INPUT: THE CYCLE EFFICIENCY")
+      else
+        call table%summary_line("ETA = 1 - A_LOSS/A_DRIVER OVER LESS THAN A WHOLE TURN: NOT THE CYCLE EFFICIENCY")
+        call table%summary_line("(THE DRIVER'S WORK ALSO CHANGES THE KINETIC AND POTENTIAL ENERGY)")
+      end if
+    else
+      call table%summary_line("ETA NOT DEFINED: THE DRIVER DELIVERS NO NET WORK OVER THE RUN")
+    end if
+  end subroutine friction_summary
 
   !> Whether result pair `ip` (dyad pairs then crank pin) is prismatic.
   pure logical function assur_pair_prismatic(deck, ip)
@@ -237,22 +379,32 @@ contains
   end function assur_pair_prismatic
 
   !> All steps of a validated deck; a geometry error names the step and the input angle.
-  pure subroutine assur_solve(path, deck, steps, error)
+  pure subroutine assur_solve(path, deck, steps, error, fsteps)
     !> Deck file (for messages).
     character(*), intent(in) :: path
     !> Validated deck.
     type(assur_deck_t), intent(in) :: deck
     !> One result per step.
     type(assur_step_t), allocatable, intent(out) :: steps(:)
-    !> Geometry error.
+    !> Geometry error (also: friction does not converge, self-locking).
     type(error_t), allocatable, intent(out) :: error
+    !> Friction results per step (deck%friction_on; else none).
+    type(friction_step_t), allocatable, intent(out), optional :: fsteps(:)
     type(error_t), allocatable :: step_error
+    type(friction_step_t) :: fs
     character(len=32) :: angle_text
     integer :: k
     allocate (steps(deck%n))
+    if (present(fsteps)) allocate (fsteps(merge(deck%n, 0, deck%friction_on)))
     do k = 1, deck%n
-      call assur_step(deck%mech, deck%phi1_deg(k) * deg_to_rad, deck%omega1(k), deck%eps1(k), &
-                      deck%f_mag(:, k), deck%m_mag(:, k), steps(k), step_error)
+      if (deck%friction_on) then
+        call assur_friction_step(deck%mech, deck%friction, deck%phi1_deg(k) * deg_to_rad, deck%omega1(k), &
+          deck%eps1(k), deck%motion_sign(k), deck%f_mag(:, k), deck%m_mag(:, k), steps(k), fs, step_error)
+        if (present(fsteps)) fsteps(k) = fs
+      else
+        call assur_step(deck%mech, deck%phi1_deg(k) * deg_to_rad, deck%omega1(k), deck%eps1(k), &
+                        deck%f_mag(:, k), deck%m_mag(:, k), steps(k), step_error)
+      end if
       if (allocated(step_error)) then
         write (angle_text, '(g0.10)') deck%phi1_deg(k)
         call fatal_error(error, exit_geometry, path//": &assur: step "//int_str(k)//" (phi1 = "// &
@@ -398,6 +550,53 @@ contains
     end do
   end subroutine put_kinematics
 
+  !> The forces of row `k` on its drawing (--format svg --at K): every pair force at its
+  !> pair's point J<pair>, the deck's external forces (Q<i>, at their points) and moments
+  !> (MQ<i>, at the link's centre of mass), the weights, inertia forces and moments of the
+  !> moving links, and M1 at the crank's pivot.
+  pure subroutine force_plan(self, table, k, drawing, error)
+    class(assur_mechanism_t), intent(in) :: self
+    type(step_table_t), intent(in) :: table
+    integer, intent(in) :: k
+    type(drawing_t), intent(inout) :: drawing
+    type(error_t), allocatable, intent(out) :: error
+    type(link_state_t) :: states(0:2 * size(self%deck%mech%dyads) + 1)
+    type(dyad_pose_t) :: poses(size(self%deck%mech%dyads))
+    type(point_state_t) :: ps
+    real(wp) :: dir
+    integer :: ip, i
+    associate (mech => self%deck%mech, deck => self%deck)
+      call assur_kinematics(mech, deck%phi1_deg(k) * deg_to_rad, states, poses, error)
+      if (allocated(error)) return
+      do ip = 1, size(deck%pair_name)
+        call drawing%pair_from_table(table, k, trim(deck%pair_name(ip)), joint_name(deck%pair_name(ip)), error)
+        if (allocated(error)) return
+      end do
+      do i = 1, size(mech%forces)
+        associate (f => mech%forces(i))
+          ps = point_on(states(f%link), f%at)
+          dir = f%angle
+          if (f%follow) dir = dir + states(f%link)%th
+          call drawing%add_force("Q"//int_str(i), force_load, ps%p, deck%f_mag(i, k) * [cos(dir), sin(dir)])
+        end associate
+      end do
+      do i = 1, size(mech%moment_link)
+        call drawing%add_moment("MQ"//int_str(i), force_load, drawing%at("S"//int_str(mech%links(mech%moment_link(i))%id)), &
+          deck%m_mag(i, k))
+      end do
+      do i = 1, ubound(states, 1)
+        associate (l => mech%links(i))
+          call drawing%add_link_loads(table, k, int_str(l%id), "S"//int_str(l%id), "S"//int_str(l%id), l%m, l%j, &
+            mech%g * mech%down)
+        end associate
+      end do
+      ! the balancing moment on the crank (a deck driven otherwise has no M1 column)
+      i = table%column_index("M1")
+      if (i > 0) call drawing%add_moment("M1", force_load, &
+        drawing%at(joint_name(deck%pair_name(crank_pin_index(size(mech%dyads))))), table%rows(i, k))
+    end associate
+  end subroutine force_plan
+
   !> The joint of a pair: "J21" for the pair of F21.
   pure function joint_name(pair_name) result(name)
     character(*), intent(in) :: pair_name
@@ -433,13 +632,21 @@ contains
     type(step_table_t), intent(inout) :: table
     character(len=160) :: line
     integer :: k, d
+    if (deck%global) then
+      call table%echo_text("COORDINATES", "global (echoed below as derived link coordinates)")
+      call table%echo_real("PHI_REF", deck%phi_ref, "deg")
+    end if
     call table%echo_int("FRAME_ID", deck%frame_id, "")
     call table%echo_int("CRANK_ID", deck%crank_id, "")
     call table%echo_array("CRANK_AT", deck%mech%pivot, "m")
     call table%echo_real("CRANK_M", deck%mech%links(1)%m, "kg")
     call table%echo_real("CRANK_J", deck%mech%links(1)%j, "kg*m^2")
     call table%echo_array("CRANK_S", deck%mech%links(1)%s, "m")
-    if (deck%prescribed) then
+    if (deck%friction_on) call echo_friction(deck, size(deck%friction), "CRANK_", "", table)
+    if (allocated(deck%phi_list) .and. .not. deck%prescribed) then
+      call table%echo_real("OMEGA1", deck%omega1_const, "rad/s")
+      call table%echo_array("OMEGA1_STEP", deck%omega1, "rad/s")
+    else if (deck%prescribed) then
       call table%echo_array("OMEGA1_STEP", deck%omega1, "rad/s")
       call table%echo_array("EPS1_STEP", deck%eps1, "rad/s^2")
     else
@@ -447,8 +654,16 @@ contains
     end if
     call table%echo_real("G", deck%mech%g, "m/s^2")
     call table%echo_real("GRAVITY_ANGLE", deck%gravity_angle, "deg")
-    call table%echo_real("PHI_START", deck%phi_start, "deg")
-    call table%echo_real("DPHI", deck%dphi, "deg")
+    if (allocated(deck%phi_list)) then
+      call table%echo_array("PHI1", deck%phi_list, "deg")
+    else
+      if (deck%start_extreme) then
+        call table%echo_text("START_AT", "extreme")
+        call table%echo_int("OUTPUT_LINK", deck%mech%links(deck%mech%output_link)%id, "")
+      end if
+      call table%echo_real("PHI_START", deck%phi_start, "deg")
+      call table%echo_real("DPHI", deck%dphi, "deg")
+    end if
     call table%echo_int("N", deck%n, "steps")
     call table%echo_logical("ANGLES_SIGNED", deck%angles_signed, "")
     call table%echo_logical("COMPONENTS", deck%components, "")
@@ -478,6 +693,11 @@ contains
         call table%echo_array("S3", lk(2 * d + 1)%s, "m")
         call table%echo_real("FRAME_ANGLE", deck%pair_frame(3 * d) * rad_to_deg, "deg")
         call table%echo_int("INNER_ON", lk(merge(2 * d + 1, 2 * d, deck%pair_sign(3 * d - 1) < 0.0_wp))%id, "")
+        if (deck%friction_on) then
+          call echo_friction(deck, 3 * d - 2, "", "2", table)
+          call echo_friction(deck, 3 * d - 1, "", "23", table)
+          call echo_friction(deck, 3 * d, "", "3", table)
+        end if
       end associate
     end do
     do k = 1, size(deck%mech%forces)
@@ -494,6 +714,78 @@ contains
       call table%echo_array("  VALUE", deck%m_mag(k, :), "N*m")
     end do
   end subroutine echo_deck
+
+  !> INPUT DATA lines of the friction of result pair `ip`: F, and R (turning pair) or
+  !> CONTACT_SPAN (sliding pair; 0: resultant-normal model), named prefix//name//suffix.
+  pure subroutine echo_friction(deck, ip, prefix, suffix, table)
+    type(assur_deck_t), intent(in) :: deck
+    integer, intent(in) :: ip
+    character(*), intent(in) :: prefix, suffix
+    type(step_table_t), intent(inout) :: table
+    call table%echo_real(prefix//"F"//suffix, deck%friction(ip)%f, "")
+    if (assur_pair_prismatic(deck, ip)) then
+      call table%echo_real(prefix//"CONTACT_SPAN"//suffix, deck%friction(ip)%span, "m")
+    else
+      call table%echo_real(prefix//"R"//suffix, deck%friction(ip)%r, "m")
+    end if
+  end subroutine echo_friction
+
+  !> The friction block of RESULTS: per step the crank angle, the power loss of every pair
+  !> with friction, P_loss, M1 without friction and the instantaneous efficiency (blank where
+  !> the driver delivers no power).
+  pure subroutine write_friction_results(deck, table, lang, out)
+    type(assur_deck_t), intent(in) :: deck
+    type(step_table_t), intent(in) :: table
+    integer, intent(in) :: lang
+    type(text_buffer_t), intent(inout) :: out
+    character(len=:), allocatable :: line1, line2, watt, unit, deg, driver, zero
+    integer :: k, c, first, last
+    if (deck%mech%drive_dyad > 0) then
+      driver = "F_DRIVE"
+      zero = "F_drive_0"
+    else
+      driver = "M1"
+      zero = "M1_0"
+    end if
+    call out%put("")
+    if (lang == lang_ru) then
+      call out%put(" ТРЕНИЕ: ПОТЕРИ МОЩНОСТИ В ПАРАХ, "//driver// &
+                   " БЕЗ ТРЕНИЯ, МГНОВЕННЫЙ КПД")
+      watt = "Вт"
+      unit = "Н"
+      if (deck%mech%drive_dyad == 0) unit = "Н*м"
+      deg = "град"
+    else
+      call out%put(" FRICTION: POWER LOSS IN THE PAIRS, "//driver//" WITHOUT FRICTION, INSTANTANEOUS EFFICIENCY")
+      watt = "W"
+      unit = "N"
+      if (deck%mech%drive_dyad == 0) unit = "N*m"
+      deg = "deg"
+    end if
+    first = table%column_index(zero)
+    last = table%column_index("eta")
+    line1 = adjustr(pad9("PHI1"))
+    line2 = right(deg, phi_width)
+    do c = first + 1, last - 3
+      line1 = line1//right("P_"//table%columns(c)%name(8:), field_width)
+      line2 = line2//right(watt, field_width)
+    end do
+    line1 = line1//right("P_LOSS", field_width)//right(upper(zero), field_width)//right("ETA", field_width)
+    line2 = line2//right(watt, field_width)//right(unit, field_width)
+    call out%put(line1)
+    call out%put(trim(line2))
+    do k = 1, table%row_count()
+      associate (v => table%rows(:, k))
+        line1 = fixed_field(v(1), phi_width, 2)
+        do c = first + 1, last - 2
+          line1 = line1//fixed_field(v(c), field_width, 2)
+        end do
+        line1 = line1//fixed_field(v(first), field_width, 2)
+        if (v(last - 1) > 0.0_wp) line1 = line1//fixed_field(v(last), field_width, 4)
+        call out%put(line1)
+      end associate
+    end do
+  end subroutine write_friction_results
 
   !> RESULTS: per step the crank angle, every pair's magnitude and M1; under them the angles;
   !> for prismatic pairs two more lines with the normal force and the reaction moment. With a
@@ -609,6 +901,7 @@ contains
         end if
       end associate
     end do
+    if (self%deck%friction_on) call write_friction_results(self%deck, table, lang, out)
   end subroutine write_results
 
   !> `text` right-justified in `width` display characters.

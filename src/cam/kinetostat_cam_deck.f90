@@ -5,8 +5,8 @@ module kinetostat_cam_deck
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str, lower
   use kinetostat_text_buffer, only: text_buffer_t
-  use kinetostat_deck, only: write_template_lines, deck_array_capacity, deck_context_t, unset_real, &
-    deck_source_t, namelist_failure, deck_error, is_set, require_set, require_positive, &
+  use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, deck_array_capacities, &
+    deck_source_t, namelist_probe_t, require_all_set, deck_error, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn
   use kinetostat_cam, only: cam_params_t
   implicit none
@@ -95,10 +95,11 @@ contains
     !> Number of steps as given (an integer deck variable, read as a real: see require_whole).
     real(wp) :: n
     integer :: ios, k
+    !> Elements allocated for each per-step array the deck may give (see deck_array_capacities).
+    integer, allocatable :: capacity(:)
     character(len=512) :: msg
     type(deck_context_t) :: ctx
-    !> Elements of each per-step array (deck_array_capacity).
-    integer :: capacity
+    type(namelist_probe_t) :: probe
     namelist /cam/ follower, l, l_over, f, f_cam, omega_dir, phi_start, dphi, n, theta, f2, vdir, ds_dphi
 
     ctx%path = source%path
@@ -107,13 +108,18 @@ contains
     l = unset_real; l_over = unset_real; f = unset_real; f_cam = unset_real
     omega_dir = unset_real; phi_start = unset_real; dphi = unset_real
     n = unset_real
-    capacity = deck_array_capacity(source)   ! not max_deck_array: a small deck stays small
-    allocate (theta(capacity), f2(capacity), vdir(capacity), ds_dphi(capacity), &
-              source=unset_real)
+    capacity = deck_array_capacities(source, ctx%group, [character(len=7) :: "theta", "f2", "vdir", "ds_dphi"])
+    allocate (theta(capacity(1)), f2(capacity(2)), vdir(capacity(3)), ds_dphi(capacity(4)), source=unset_real)
 
     read (source%lines, nml=cam, iostat=ios, iomsg=msg)
     if (ios /= 0) then
-      call namelist_failure(ctx, ios, msg, error)
+      ! find the line and the assignment that failed (gfortran's message does not say)
+      call probe%start(source, ios, msg)
+      do while (probe%more(source))
+        read (probe%lines, nml=cam, iostat=ios, iomsg=msg)
+        call probe%take(ios, msg)
+      end do
+      call probe%report(source, ctx, error)
       return
     end if
 
@@ -126,6 +132,11 @@ contains
       call deck_error(ctx, "follower", "must be 'translating' or 'flat' (got '"//trim(follower)//"')", error)
       return
     end select
+
+    ! every missing required variable in one message
+    call require_all_set(ctx, [character(len=6) :: "l", "l_over", "f", "dphi"], &
+      [l, l_over, f, dphi], error)
+    if (allocated(error)) return
 
     ! guide
     call require_positive(ctx, "l", l, error); if (allocated(error)) return

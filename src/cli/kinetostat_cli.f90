@@ -17,14 +17,15 @@ module kinetostat_cli
   use kinetostat_registry, only: create_mechanism, known_kinds, known_columns
   use kinetostat_step_table, only: column_t
   use kinetostat_diff, only: diff_options_t, diff_outputs
+  use kinetostat_assur_presets, only: assur_preset, preset_names
   implicit none
   private
   public :: run_cli
 
   !> One-line usage, printed with usage errors.
   character(*), parameter :: usage_line = "usage: kinetostat DECK|- [--set NAME=VALUE]... [-o FILE] " // &
-    "[--format table|csv|json|svg] [--pairs LIST] [--lang en|ru] [--kinematics] [--quiet] [--strict] | " // &
-    "kinetostat template KIND | --help | --version"
+    "[--format table|csv|json|svg] [--pairs LIST] [--at K] [--lang en|ru] [--kinematics] [--quiet] [--strict] | " // &
+    "kinetostat template KIND [-o FILE] | kinetostat diff A B [--rtol R] [--atol A] | --help | --version"
 
   !> Warning line when a run's self-check exceeds its tolerance.
   character(*), parameter :: selfcheck_warning_fmt = '(a,es9.2,a,es9.2)'
@@ -34,8 +35,9 @@ module kinetostat_cli
     "kinetostat - kinetostatic force analysis of planar mechanisms", &
     "", &
     "  kinetostat DECK [--set NAME=VALUE]... [-o FILE] [--format table|csv|json|svg]", &
-    "                  [--pairs LIST] [--lang en|ru] [--kinematics] [--quiet] [--strict]", &
-    "  kinetostat template KIND      print a commented example deck", &
+    "                  [--pairs LIST] [--at K] [--lang en|ru] [--kinematics] [--quiet] [--strict]", &
+    "  kinetostat template KIND [-o FILE]   a commented deck to start from (KIND: a mechanism,", &
+    "                                       or a preset of the generic engine)", &
     "  kinetostat diff A B [--rtol R] [--atol A] [--quiet]   compare two outputs", &
     "  kinetostat --help | --version", &
     "", &
@@ -43,18 +45,21 @@ module kinetostat_cli
     "from standard input (so does a pipe given as a path, e.g. /dev/stdin).", &
     "--set NAME=VALUE  set a deck variable as if the deck ended with NAME = VALUE", &
     "            (repeatable; l_ab=0.12, f5c(3)=0, 'dyad(2)%l2=0.45'); marked (--set)", &
-    "-o FILE     write to FILE (atomically: nothing is left behind on error)", &
+    "-o FILE, --output FILE  write to FILE (atomically: nothing is left behind on error)", &
     "--format    table (default, the legacy printout), csv (full precision), json, or svg", &
     "            (a sheet of force hodographs and diagrams; see docs/pictures.md)", &
     "--pairs     with svg: only these pair forces, e.g. --pairs F16,F36", &
+    "--at K      with svg: the mechanism drawn at step K with every force of the step", &
     "--lang      language of the table's labels: en (default) or ru (the 1991 printouts)", &
     "--kinematics  csv and json add positions of joints and centres of mass, link angles,", &
     "            angular speeds and accelerations, accelerations of the centres of mass and", &
     "            the x, y components of the pair forces (the table is unchanged)", &
-    "--quiet     no warnings on stderr (errors are still reported); diff: no report", &
+    "-q, --quiet no warnings on stderr (errors are still reported); diff: no report", &
     "--strict    a run that warns (self-check above its limit, a dead position between", &
     "            steps, a jammed cam or lost contact, a coarse step near a load edge)", &
     "            exits 4; the output is still written", &
+    "-h, --help  this text;  -V, --version  the version", &
+    "--rtol R, --atol A  the tolerances of diff (below)", &
     "--name=VALUE is the same as --name VALUE.", &
     "", &
     "diff compares two tables (same --lang) or two CSV files of the program value by value:", &
@@ -113,6 +118,7 @@ contains
           call out%put(trim(help_lines(i)))
         end do
         call out%put("Kinds: "//known_kinds())
+        call out%put("Presets (template): "//preset_names)
         call out%put("Formats: "//format_names)
       else if (args%version) then
         call out%put(version_string)
@@ -233,18 +239,23 @@ contains
     end subroutine name_cause
   end subroutine blame_override
 
-  !> The commented template deck of a kind.
+  !> The commented template deck of a kind, or a preset of the generic engine.
   subroutine write_template(kind, out, error)
     character(*), intent(in) :: kind
     type(text_buffer_t), intent(inout) :: out
     type(error_t), allocatable, intent(out) :: error
     class(mechanism_t), allocatable :: mech
+    logical :: found
     call create_mechanism(kind, mech)
-    if (.not. allocated(mech)) then
-      call fatal_error(error, exit_usage, "template: unknown kind '"//kind//"' (known: "//known_kinds()//")")
+    if (allocated(mech)) then
+      call mech%write_template(out)
       return
     end if
-    call mech%write_template(out)
+    call assur_preset(kind, out, found)
+    if (.not. found) then
+      call fatal_error(error, exit_usage, "template: unknown kind '"//kind//"' (known: "//known_kinds()// &
+        "; presets: "//preset_names//")")
+    end if
   end subroutine write_template
 
   !> Warnings of a successful run, one stderr line each unless `quiet`: the mechanism's
@@ -278,7 +289,7 @@ contains
   subroutine parse_args(args, error)
     type(cli_args_t), intent(out) :: args
     type(error_t), allocatable, intent(out) :: error
-    integer :: i, n, eq
+    integer :: i, n, eq, ios
     character(len=:), allocatable :: arg, name, value
 
     n = command_argument_count()
@@ -297,7 +308,7 @@ contains
         value = arg(eq + 1:)
       else
         name = arg
-        if (any(name == [character(len=8) :: "-o", "--output", "--format", "--lang", "--set", "--pairs"])) then
+        if (any(name == [character(len=8) :: "-o", "--output", "--format", "--lang", "--set", "--pairs", "--at"])) then
           if (i == n) then
             call fatal_error(error, exit_usage, name//" needs a value")
             return
@@ -327,6 +338,12 @@ contains
         end if
       case ("--pairs")
         args%options%pairs = value
+      case ("--at")
+        read (value, *, iostat=ios) args%options%at_step
+        if (ios /= 0 .or. args%options%at_step < 1 .or. verify(value, "0123456789 ") /= 0) then
+          call fatal_error(error, exit_usage, "--at needs a step number 1, 2, ... (got '"//value//"')")
+          return
+        end if
       case ("--lang")
         args%options%lang = lang_from_name(value)
         if (args%options%lang == 0) then
@@ -367,6 +384,8 @@ contains
       call fatal_error(error, exit_usage, "no deck given")
     else if (allocated(args%options%pairs) .and. args%options%format /= format_svg) then
       call fatal_error(error, exit_usage, "--pairs needs --format svg")
+    else if (args%options%at_step > 0 .and. args%options%format /= format_svg) then
+      call fatal_error(error, exit_usage, "--at needs --format svg")
     end if
   end subroutine parse_args
 

@@ -5,7 +5,7 @@ module kinetostat_selfcheck
   use kinetostat_vec2, only: cross, magnitude
   implicit none
   private
-  public :: link_balance_t, link_balance, balance_add_force, balance_add_couple
+  public :: link_balance_t, link_balance, balance_add_force, balance_add_couple, balance_add_balance
   public :: equilibrium_residual, link_residual, power_mismatch
   public :: selfcheck_tolerance, residual_floor_rel
 
@@ -65,6 +65,19 @@ contains
     balance%scale_m = balance%scale_m + abs(c)
     balance%lever_m = balance%lever_m + abs(c)
   end subroutine balance_add_couple
+
+  !> Adds the loads summed in `other` (moments about the same reference point) to `balance`.
+  pure subroutine balance_add_balance(balance, other)
+    !> The link's loads so far.
+    type(link_balance_t), intent(inout) :: balance
+    !> Further loads on the same link.
+    type(link_balance_t), intent(in) :: other
+    balance%sum_f = balance%sum_f + other%sum_f
+    balance%sum_m = balance%sum_m + other%sum_m
+    balance%scale_f = balance%scale_f + other%scale_f
+    balance%scale_m = balance%scale_m + other%scale_m
+    balance%lever_m = balance%lever_m + other%lever_m
+  end subroutine balance_add_balance
 
   !> The loads of one link: forces `f(:,i)` applied at `at(:,i)` and couples `c(:)`,
   !> moments taken about the first point.

@@ -7,7 +7,7 @@ module kinetostat_gears_deck
   use kinetostat_text, only: real_str, int_str, number_str, lower
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, &
-    deck_source_t, namelist_failure, deck_error, is_set, require_set, require_positive, require_rule, &
+    deck_source_t, namelist_probe_t, deck_error, is_set, require_set, require_positive, require_rule, &
     require_whole
   use kinetostat_gears, only: gear_stage_t, gear_spur, gear_helical, gear_bevel, gear_planetary, &
     gear_kind_names
@@ -90,6 +90,7 @@ contains
     character(len=512) :: msg
     character(len=:), allocatable :: at
     type(deck_context_t) :: ctx
+    type(namelist_probe_t) :: probe
     namelist /gears/ layout, stage, m1, z1, z2, m, dw1, alpha_w, beta, gamma, z3, k, alpha_w23
 
     ctx%path = source%path
@@ -102,7 +103,13 @@ contains
 
     read (source%lines, nml=gears, iostat=ios, iomsg=msg)
     if (ios /= 0) then
-      call namelist_failure(ctx, ios, msg, error)
+      ! find the line and the assignment that failed (gfortran's message does not say)
+      call probe%start(source, ios, msg)
+      do while (probe%more(source))
+        read (probe%lines, nml=gears, iostat=ios, iomsg=msg)
+        call probe%take(ios, msg)
+      end do
+      call probe%report(source, ctx, error)
       return
     end if
 

@@ -13,10 +13,11 @@ module kinetostat_deck
   private
   public :: deck_context_t, unset_real, unset_bits, max_deck_array, max_steps
   public :: deck_source_t, load_deck, deck_source_from_text, stdin_deck_path, stdin_deck_name
-  public :: read_group_name, namelist_failure, deck_error
+  public :: read_group_name, namelist_failure, deck_error, namelist_probe_t, require_all_set
   public :: is_set, require_set, require_positive, require_nonnegative, require_rule
   public :: is_whole_in, require_whole
-  public :: optional_default, count_values, steps_over_turn, write_template_lines, deck_array_capacity
+  public :: optional_default, count_values, steps_over_turn, write_template_lines
+  public :: deck_array_capacities
 
   !> Bit pattern of `unset_real`: a quiet NaN with a payload. A NaN typed in a deck
   !> ("nan", "NaN(0x1)") reads as the plain quiet NaN 7FF8000000000000, so no deck can
@@ -47,6 +48,49 @@ module kinetostat_deck
     !> byte-order mark, blank-padded to the longest line (length at least 1).
     character(len=:), allocatable :: lines(:)
   end type deck_source_t
+
+  !> Finds where a namelist READ of a deck failed, so that the message can name the line,
+  !> the assignment and the variable (gfortran's iomsg names a token or an item number only).
+  !> The mechanism READs copies of the deck cut short and closed by '/': first after each
+  !> line (bisection: the first line whose copy fails), then after each assignment on that
+  !> line. Use:
+  !>     call probe%start(source, ios, msg)
+  !>     do while (probe%more(source))
+  !>       read (probe%lines, nml=group, iostat=ios, iomsg=msg)
+  !>       call probe%take(ios, msg)
+  !>     end do
+  !>     call probe%report(source, ctx, error)
+  type :: namelist_probe_t
+    !> The copy to READ next.
+    character(len=:), allocatable :: lines(:)
+    !> iostat of the READ of `lines` (see `take`).
+    integer :: ios = 0
+    !> iomsg of that READ.
+    character(len=512) :: msg = ""
+    !> iomsg of the failing READ of the whole deck, then of the failing copy.
+    character(len=512) :: failure = ""
+    !> Bisection: the copy through line `good` reads, the copy through line `bad` fails.
+    integer :: good = 0
+    !> First line whose copy fails (when `stage` > 1).
+    integer :: bad = 0
+    !> 1: looking for the line, 2: for the assignment on it, 3: trying other values in
+    !> the assignment (which type the variable has), 4: done.
+    integer :: stage = 4
+    !> Line count (stage 1), assignment index (stage 2) or other value (stage 3) in `lines`.
+    integer :: trying = 0
+    !> Stage 3: whether the assignment reads with its first value alone, with 1, with
+    !> .true., with 'x' instead of its value.
+    logical :: reads(4) = .false.
+    !> Start columns of the assignments on the failing line.
+    integer, allocatable :: starts(:)
+    !> The failing assignment on that line (0: not known).
+    integer :: piece = 0
+  contains
+    procedure :: start => probe_start
+    procedure :: more => probe_more
+    procedure :: take => probe_take
+    procedure :: report => probe_report
+  end type namelist_probe_t
 
   !> Where a deck value comes from: file and namelist group (for messages).
   type :: deck_context_t
@@ -181,34 +225,6 @@ contains
     end subroutine next_line
   end subroutine deck_source_from_text
 
-  !> Capacity for a per-step array of this deck: enough for every value the deck can give
-  !> it, without max_deck_array elements filled before reading. Each value takes at least
-  !> one character of the text, a repeat count r*c gives r values and a subscript f(i)
-  !> reaches element i, so the text's length plus the sum of every whole number written in
-  !> it (counts, subscripts and anything else) bounds what a namelist READ can store;
-  !> capped at max_deck_array (beyond it a deck gets the same namelist error as before).
-  pure integer function deck_array_capacity(source)
-    !> The deck.
-    type(deck_source_t), intent(in) :: source
-    integer(int64) :: total, run
-    integer :: k, i, c
-    total = 0
-    do k = 1, size(source%lines)
-      run = 0
-      do i = 1, len_trim(source%lines(k))
-        c = iachar(source%lines(k)(i:i)) - iachar("0")
-        if (c >= 0 .and. c <= 9) then
-          run = min(10 * run + c, int(max_deck_array, int64))
-        else
-          total = total + run
-          run = 0
-        end if
-      end do
-      total = min(total + run + len_trim(source%lines(k)) + 1, int(max_deck_array, int64))
-    end do
-    deck_array_capacity = int(total)
-  end function deck_array_capacity
-
   !> The name of the first namelist group in the deck (lower case, without '&').
   subroutine read_group_name(source, group, error)
     !> The deck.
@@ -256,6 +272,448 @@ contains
         trim(msg)//" (unknown variable, wrong type, or too many array values)")
     end if
   end subroutine namelist_failure
+
+  !> Start looking for the place of a failed READ of the whole deck (iostat `ios`, iomsg `msg`).
+  subroutine probe_start(self, source, ios, msg)
+    class(namelist_probe_t), intent(inout) :: self
+    !> The deck.
+    type(deck_source_t), intent(in) :: source
+    !> iostat of the failed READ.
+    integer, intent(in) :: ios
+    !> iomsg of the failed READ.
+    character(*), intent(in) :: msg
+    integer :: k
+    self%failure = msg
+    self%stage = 4
+    self%bad = 0
+    self%piece = 0
+    self%reads = .false.
+    if (ios < 0) return ! end of file: no line to point at
+    self%good = 0
+    do k = 1, size(source%lines)
+      if (index(adjustl(source%lines(k)), "&") == 1) then
+        self%good = k - 1
+        exit
+      end if
+    end do
+    self%bad = size(source%lines)
+    self%trying = 0
+    self%stage = 1
+  end subroutine probe_start
+
+  !> The result of the READ of `lines`.
+  pure subroutine probe_take(self, ios, msg)
+    class(namelist_probe_t), intent(inout) :: self
+    !> iostat of the READ.
+    integer, intent(in) :: ios
+    !> iomsg of the READ.
+    character(*), intent(in) :: msg
+    self%ios = ios
+    self%msg = msg
+  end subroutine probe_take
+
+  !> Take in the result of the last READ (if any) and prepare the next copy in `lines`;
+  !> false when the place is found.
+  logical function probe_more(self, source)
+    class(namelist_probe_t), intent(inout) :: self
+    !> The deck.
+    type(deck_source_t), intent(in) :: source
+    character(*), parameter :: other_values(3) = [character(len=6) :: "1", ".true.", "'x'"]
+    character(len=:), allocatable :: line, text, value
+    integer :: mid, cut
+    probe_more = .false.
+    if (self%stage == 4) return
+    probe_more = .true.
+    select case (self%stage)
+    case (1)
+      if (self%trying > 0) then
+        if (self%ios == 0) then
+          self%good = self%trying
+        else
+          self%bad = self%trying
+          self%failure = self%msg
+        end if
+      end if
+      if (self%bad - self%good > 1) then
+        mid = (self%good + self%bad) / 2
+        self%trying = mid
+        self%lines = [character(len=len(source%lines)) :: source%lines(1:mid), "/"]
+        return
+      end if
+      self%stage = 2
+      self%starts = assignment_starts(source%lines(self%bad))
+      self%trying = 0
+      self%piece = size(self%starts)
+    case (2)
+      if (self%ios /= 0) then
+        self%piece = self%trying
+        self%failure = self%msg
+        self%stage = 3
+        self%trying = 0
+      end if
+    case (3)
+      self%reads(self%trying) = self%ios == 0
+    case default
+      continue
+    end select
+    line = source%lines(self%bad)
+    if (self%stage == 2) then
+      if (self%trying < size(self%starts) - 1) then
+        self%trying = self%trying + 1
+        cut = self%starts(self%trying + 1) - 1
+        self%lines = [character(len=len(source%lines)) :: source%lines(1:self%bad - 1), line(1:cut), "/"]
+        return
+      end if
+      self%stage = 3
+      self%trying = 0
+    end if
+    if (self%stage == 3 .and. self%piece > 0 .and. self%trying < 4) then
+      self%trying = self%trying + 1
+      if (self%piece < size(self%starts)) then
+        text = strip_comment(line(self%starts(self%piece):self%starts(self%piece + 1) - 1))
+      else
+        text = strip_comment(line(self%starts(self%piece):))
+      end if
+      if (self%trying == 1) then
+        value = first_item(text(index(text, "=") + 1:))
+      else
+        value = trim(other_values(self%trying - 1))
+      end if
+      text = line(1:self%starts(self%piece) - 1)//text(1:index(text, "="))//" "//value
+      self%lines = [character(len=max(len(source%lines), len(text))) :: source%lines(1:self%bad - 1), text, "/"]
+      return
+    end if
+    self%stage = 4
+    probe_more = .false.
+  end function probe_more
+
+  !> The input error: "<deck>:<line>: &<group>: <assignment>: <reason>".
+  subroutine probe_report(self, source, ctx, error)
+    class(namelist_probe_t), intent(in) :: self
+    !> The deck.
+    type(deck_source_t), intent(in) :: source
+    !> Deck and group.
+    type(deck_context_t), intent(in) :: ctx
+    !> The input error.
+    type(error_t), allocatable, intent(out) :: error
+    character(len=:), allocatable :: line, text, name, reason
+    integer :: from, to, k
+    integer, allocatable :: starts(:)
+    if (self%bad == 0) then
+      call namelist_failure(ctx, -1, self%failure, error)
+      return
+    end if
+    line = trim(source%lines(self%bad))
+    from = verify(line, " ")
+    to = len(line)
+    if (self%piece > 0) then
+      from = self%starts(self%piece)
+      if (self%piece < size(self%starts)) to = self%starts(self%piece + 1) - 1
+    end if
+    text = strip_comment(line(max(from, 1):to))
+    ! the variable: the assignment's name, or for a line of more values the last name above
+    name = ""
+    if (index(text, "=") > 0) then
+      name = trim(adjustl(text(1:index(text, "=") - 1)))
+    else
+      do k = self%bad - 1, 1, -1
+        starts = assignment_starts(source%lines(k))
+        if (size(starts) == 0) cycle
+        name = source%lines(k)(starts(size(starts)):)
+        name = trim(adjustl(name(1:index(name, "=") - 1)))
+        exit
+      end do
+    end if
+    if (self%piece > 0 .and. index(text, "=") > 0) then
+      reason = namelist_reason(name, text, self%failure, self%reads)
+    else
+      reason = namelist_reason(name, text, self%failure, [.false., .false., .false., .false.])
+    end if
+    if (index(text, "=") == 0 .and. len(name) > 0) reason = name//": "//reason
+    call fatal_error(error, exit_input, ctx%path//":"//int_str(self%bad)//": &"//ctx%group//": "// &
+      clipped(text)//": "//reason)
+  end subroutine probe_report
+
+  !> The first item of a value list (quotes respected).
+  pure function first_item(value) result(item)
+    character(*), intent(in) :: value
+    character(len=:), allocatable :: item
+    integer :: n_items, bad_item
+    character(len=:), allocatable :: bad, first, last
+    call scan_items(value, n_items, bad_item, bad, first, last)
+    item = first
+  end function first_item
+
+  !> Why an assignment `text` of variable `name` does not read, from its text, gfortran's
+  !> iomsg and what else reads in its place (`reads`: its first value alone, a number,
+  !> .true., a quoted text; all false when not tried).
+  pure function namelist_reason(name, text, msg, reads) result(reason)
+    !> The variable ("" when not known).
+    character(*), intent(in) :: name
+    !> The assignment ("name = value") or a line of more values.
+    character(*), intent(in) :: text
+    !> gfortran's iomsg.
+    character(*), intent(in) :: msg
+    !> Whether the assignment reads with its first value alone, 1, .true., 'x'.
+    logical, intent(in) :: reads(4)
+    character(len=:), allocatable :: reason
+    character(len=:), allocatable :: value, token, bad, first, last, hint
+    character(*), parameter :: no_match = "Cannot match namelist object name "
+    integer :: at, comma, any_comma, n_items, bad_item
+    value = text
+    if (index(text, "=") > 0) value = trim(adjustl(text(index(text, "=") + 1:)))
+    token = ""
+    at = index(msg, no_match)
+    if (at > 0) token = lower(trim(msg(at + len(no_match):)))
+    call scan_items(value, n_items, bad_item, bad, first, last)
+    comma = decimal_comma_at(value, token, msg)
+    any_comma = decimal_comma_at(value, "", "repeat")
+    hint = ""
+    if (any_comma > 0) hint = "; a decimal comma? write "//value(1:any_comma - 1)//"."//value(any_comma + 1:)
+    if (index(msg, "out of range") > 0) then
+      reason = "subscript out of range ("//trim(msg)//")"
+    else if (len(name) > 0 .and. (token == lower(name) .or. .not. any(reads) .and. index(text, "=") > 0)) then
+      ! gfortran says "Cannot match" or, after a list of values, "Bad data for" the previous
+      ! variable; nothing at all reads in this place
+      reason = "unknown variable '"//name//"' in this group (a typing error?)"
+    else if (comma > 0 .and. .not. reads(3) .and. .not. reads(4)) then
+      reason = "decimal comma? write "//value(1:comma - 1)//"."//value(comma + 1:)
+    else if (index(msg, "verflow") > 0) then
+      reason = "out of range (too large for an integer)"
+    else if (reads(4) .and. scan(first(1:1), "'""") == 0) then
+      reason = first//" is not a text in quotes ('...')"
+    else if (reads(2) .and. bad_item > 0 .and. .not. reads(4)) then
+      reason = not_a_number(bad)
+    else if (reads(3) .and. .not. reads(2) .and. .not. is_logical_text(first)) then
+      reason = first//" is not a logical value (.true. or .false.)"
+    else if (n_items > 1 .and. (reads(1) .or. (len(token) > 0 .and. same_item(token, last)))) then
+      reason = "too many values (one value, or an array's size, expected)"//hint
+    else if (bad_item > 0) then
+      reason = not_a_number(bad)
+    else
+      reason = "cannot be read ("//trim(msg)//")"
+    end if
+  end function namelist_reason
+
+  !> Why a value item is not a number: text, a logical, or anything else.
+  pure function not_a_number(item) result(reason)
+    character(*), intent(in) :: item
+    character(len=:), allocatable :: reason
+    if (scan(item(1:1), "'""") > 0) then
+      reason = item//" is text; a number is expected"
+    else if (is_logical_text(item)) then
+      reason = item//" is a logical value; a number is expected"
+    else
+      reason = "'"//item//"' is not a number"
+    end if
+  end function not_a_number
+
+  !> The items of a value list (separated by commas or blanks, quotes respected): how many,
+  !> the first that is not a number (index 0 when all are; "r*x" repeats and Inf/NaN count
+  !> as numbers), the first and the last.
+  pure subroutine scan_items(value, n_items, bad_item, bad, first, last)
+    character(*), intent(in) :: value
+    integer, intent(out) :: n_items, bad_item
+    character(len=:), allocatable, intent(out) :: bad, first, last
+    integer :: i, start
+    character(len=1) :: quote
+    character(len=:), allocatable :: word
+    n_items = 0
+    bad_item = 0
+    bad = ""
+    first = ""
+    last = ""
+    start = 0
+    quote = " "
+    do i = 1, len(value) + 1
+      if (i <= len(value)) then
+        if (quote /= " ") then
+          if (value(i:i) == quote) quote = " "
+          cycle
+        end if
+        if (value(i:i) == "'" .or. value(i:i) == '"') quote = value(i:i)
+        if (index(", ", value(i:i)) == 0) then
+          if (start == 0) start = i
+          cycle
+        end if
+      end if
+      if (start == 0) cycle
+      word = value(start:i - 1)
+      start = 0
+      n_items = n_items + 1
+      if (n_items == 1) first = word
+      last = word
+      if (bad_item == 0 .and. .not. is_number_text(word)) then
+        bad_item = n_items
+        bad = word
+      end if
+    end do
+  end subroutine scan_items
+
+  !> Whether gfortran's unmatched token is this item (it drops a logical's leading '.').
+  pure logical function same_item(token, item)
+    character(*), intent(in) :: token, item
+    same_item = token == lower(item)
+    if (len(item) > 1) same_item = same_item .or. (item(1:1) == "." .and. token == lower(item(2:)))
+  end function same_item
+
+  !> Whether a value item reads as a number: [r*][sign]digits[.digits][exponent], Inf, NaN.
+  pure logical function is_number_text(word)
+    character(*), intent(in) :: word
+    character(len=:), allocatable :: w
+    real(wp) :: x
+    integer :: ios
+    w = lower(word)
+    if (index(w, "*") > 0) w = w(index(w, "*") + 1:)
+    is_number_text = .false.
+    if (len(w) == 0) return
+    if (verify(w, "0123456789+-.ed") /= 0 .and. verify(w, "+-infatyn()x0123456789abcdef") /= 0) return
+    if (scan(w, "0123456789") == 0 .and. index(w, "inf") == 0 .and. index(w, "nan") == 0) return
+    read (w, *, iostat=ios) x
+    is_number_text = ios == 0
+  end function is_number_text
+
+  !> Position of a decimal comma in a value ("0,11": a digit, a comma, a digit, where the
+  !> READ stopped at the digits after the comma, `token`, or at a repeat count), 0 if none.
+  pure integer function decimal_comma_at(value, token, msg)
+    !> The assignment's value text.
+    character(*), intent(in) :: value
+    !> The text gfortran could not match as a name ("" if none).
+    character(*), intent(in) :: token
+    !> gfortran's iomsg.
+    character(*), intent(in) :: msg
+    integer :: i, e
+    decimal_comma_at = 0
+    do i = 2, len(value) - 1
+      if (value(i:i) /= ",") cycle
+      if (index("0123456789", value(i - 1:i - 1)) == 0 .or. index("0123456789", value(i + 1:i + 1)) == 0) cycle
+      e = scan(value(i + 1:), ", *")
+      if (e == 0) then
+        e = len(value)
+      else
+        e = i + e - 1
+      end if
+      if (value(i + 1:e) == token .or. index(msg, "repeat") > 0) decimal_comma_at = i
+      return
+    end do
+  end function decimal_comma_at
+
+  !> Whether a value is a Fortran logical (.true., .false., T, F, .t., ...).
+  pure logical function is_logical_text(value)
+    character(*), intent(in) :: value
+    character(len=:), allocatable :: v
+    v = lower(value)
+    is_logical_text = v == "t" .or. v == "f" .or. (len(v) > 1 .and. v(1:1) == "." .and. &
+      (v(2:2) == "t" .or. v(2:2) == "f"))
+  end function is_logical_text
+
+  !> A line without its comment ('!' outside quotes) and without a trailing comma.
+  pure function strip_comment(line) result(text)
+    character(*), intent(in) :: line
+    character(len=:), allocatable :: text
+    character(len=1) :: quote
+    integer :: i, n
+    quote = " "
+    n = len(line)
+    do i = 1, len(line)
+      if (quote /= " ") then
+        if (line(i:i) == quote) quote = " "
+      else if (line(i:i) == "'" .or. line(i:i) == '"') then
+        quote = line(i:i)
+      else if (line(i:i) == "!") then
+        n = i - 1
+        exit
+      end if
+    end do
+    text = trim(adjustl(line(1:n)))
+    if (len(text) > 0) then
+      if (text(len(text):) == ",") text = trim(text(1:len(text) - 1))
+    end if
+  end function strip_comment
+
+  !> At most 60 characters of a text ("..." when cut).
+  pure function clipped(text) result(short)
+    character(*), intent(in) :: text
+    character(len=:), allocatable :: short
+    if (len(text) > 60) then
+      short = text(1:57)//"..."
+    else
+      short = text
+    end if
+  end function clipped
+
+  !> Start columns of the assignments on a deck line ("name =", "name(2) =", "a(1)%b ="),
+  !> outside quotes and comments; a group line's '&name' is not one.
+  pure function assignment_starts(line) result(starts)
+    character(*), intent(in) :: line
+    integer, allocatable :: starts(:)
+    character(len=len(line)) :: masked
+    character(len=1) :: quote
+    integer :: i, j, k
+    ! blank out quoted text and the comment
+    masked = line
+    quote = " "
+    do i = 1, len(line)
+      if (quote /= " ") then
+        if (line(i:i) == quote) then
+          quote = " "
+        else
+          masked(i:i) = "x"
+        end if
+      else if (line(i:i) == "'" .or. line(i:i) == '"') then
+        quote = line(i:i)
+      else if (line(i:i) == "!") then
+        masked(i:) = " "
+        exit
+      end if
+    end do
+    allocate (starts(0))
+    do i = 1, len_trim(masked)
+      if (masked(i:i) /= "=") cycle
+      ! walk back over blanks, then over the name with its subscripts and components
+      j = i - 1
+      do while (j >= 1)
+        if (masked(j:j) /= " ") exit
+        j = j - 1
+      end do
+      k = j
+      do while (k >= 1)
+        if (index("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_%()", masked(k:k)) == 0) exit
+        k = k - 1
+      end do
+      k = k + 1
+      if (k > j) cycle
+      starts = [starts, k]
+    end do
+  end function assignment_starts
+
+  !> All required real variables that the deck did not set, in one message:
+  !> "<deck>: &<group>: missing required variables: a, b, c".
+  pure subroutine require_all_set(ctx, names, values, error)
+    !> Deck and group.
+    type(deck_context_t), intent(in) :: ctx
+    !> Names of the required variables (trailing blanks dropped).
+    character(*), intent(in) :: names(:)
+    !> Their values as read (unset_real when not set).
+    real(wp), intent(in) :: values(:)
+    !> The input error (none when all are set).
+    type(error_t), allocatable, intent(out) :: error
+    character(len=:), allocatable :: missing
+    integer :: i, count
+    missing = ""
+    count = 0
+    do i = 1, size(names)
+      if (is_set(values(i))) cycle
+      count = count + 1
+      if (count > 1) missing = missing//", "
+      missing = missing//trim(names(i))
+    end do
+    if (count == 1) then
+      call fatal_error(error, exit_input, ctx%path//": &"//ctx%group//": "//missing//": missing (required variable)")
+    else if (count > 1) then
+      call fatal_error(error, exit_input, ctx%path//": &"//ctx%group//": missing required variables: "//missing)
+    end if
+  end subroutine require_all_set
 
   !> An input error about one variable: "<deck>: &<group>: <name>: <reason>".
   pure subroutine deck_error(ctx, name, reason, error)
@@ -429,5 +887,215 @@ contains
       n = nint(n_real)
     end if
   end subroutine steps_over_turn
+
+  !> Capacities for the per-step arrays `names` of namelist group `group`: for each, an upper
+  !> bound on the highest element the deck's text can assign (from its value lists, repeat
+  !> counts `r*c`, null values and subscripts `name(i)`), at least 1 and at most
+  !> max_deck_array. An array sized so reads exactly as one of max_deck_array elements (a
+  !> deck giving more values than that fails the same way), without the 10^6-element buffer.
+  !> The scan starts after the first line opening the group ('&group'), skips quoted strings
+  !> (which may span lines) and '!' comments, and stops at '/'. Each '=' closes the value
+  !> list before it and opens one for the designator written just before it; a list's count
+  !> includes that following designator, so the bound may exceed the truth by one or more
+  !> (never fall short of it). Not `pure` only because its internal steps share the scan's
+  !> state; it has no side effects.
+  function deck_array_capacities(source, group, names) result(capacity)
+    !> The deck.
+    type(deck_source_t), intent(in) :: source
+    !> Group name, lower case, without '&'.
+    character(*), intent(in) :: group
+    !> Array names, lower case (trailing blanks ignored).
+    character(*), intent(in) :: names(:)
+    !> Elements to allocate for each array.
+    integer :: capacity(size(names))
+    !> Longest token kept (a longer one counts as a huge repeat count or subscript).
+    integer, parameter :: token_max = 128
+    !> Cap of counts (well above max_deck_array, far below overflow).
+    integer(int64), parameter :: count_cap = 1000000000000_int64
+    character(len=*), parameter :: tab = achar(9)
+    integer(int64) :: bound(size(names)), slots, first
+    character(len=token_max) :: token, last, before_last
+    integer :: token_len, last_len, before_last_len, depth, line, i, start, target
+    logical :: truncated, last_truncated, before_last_truncated, value_since_comma
+    character(len=1) :: quote, c
+
+    bound = 0
+    capacity = 1
+    call find_group(line, start)
+    if (line == 0) return
+    target = 0
+    first = 1
+    slots = 0
+    value_since_comma = .false.
+    token_len = 0; last_len = 0; before_last_len = 0
+    truncated = .false.; last_truncated = .false.; before_last_truncated = .false.
+    depth = 0
+    quote = " "
+    scan: do while (line <= size(source%lines))
+      associate (text => source%lines(line))
+        do i = start, len_trim(text)
+          c = text(i:i)
+          if (quote /= " ") then
+            call add_char(c)
+            if (c == quote) quote = " "
+          else if (depth > 0) then
+            call add_char(c)
+            if (c == "(") depth = depth + 1
+            if (c == ")") depth = depth - 1
+          else if (c == "'" .or. c == '"') then
+            quote = c
+            call add_char(c)
+          else if (c == "(") then
+            depth = 1
+            call add_char(c)
+          else if (c == "!") then
+            ! gfortran may take a comment after a separator for a null value: count one
+            call end_token()
+            slots = min(slots + 1, count_cap)
+            exit
+          else if (c == "/") then
+            call end_token()
+            exit scan
+          else if (c == " " .or. c == tab) then
+            call end_token()
+          else if (c == "," .or. c == ";") then
+            call end_token()
+            ! a separator after a separator (or right after '=') is a null value
+            if (.not. value_since_comma) slots = min(slots + 1, count_cap)
+            value_since_comma = .false.
+          else if (c == "=") then
+            call end_token()
+            call close_list()
+            call open_list()
+          else
+            call add_char(c)
+          end if
+        end do
+      end associate
+      if (quote == " " .and. depth == 0) then
+        ! the end of a line separates values like a comma (gfortran: "1<eol>, 2" is 1, null, 2);
+        ! counted as a null when no value came since the last separator (may over-count)
+        call end_token()
+        if (.not. value_since_comma) slots = min(slots + 1, count_cap)
+        value_since_comma = .false.
+      end if
+      line = line + 1
+      start = 1
+    end do scan
+    call close_list()
+    capacity = int(max(1_int64, min(bound, int(max_deck_array, int64))))
+
+  contains
+
+    !> Line and column just after '&group' on the first line opening the group (0 when none).
+    subroutine find_group(line, start)
+      integer, intent(out) :: line, start
+      integer :: k, at, j
+      do k = 1, size(source%lines)
+        associate (text => source%lines(k))
+          at = verify(text, " "//tab)
+          if (at == 0) cycle
+          if (text(at:at) /= "&") cycle
+          j = at + 1
+          do while (j <= len(text))
+            if (index(" /,!"//tab, text(j:j)) > 0) exit
+            j = j + 1
+          end do
+          if (lower(text(at + 1:j - 1)) /= group) cycle
+          line = k
+          start = j
+          return
+        end associate
+      end do
+      line = 0
+      start = 1
+    end subroutine find_group
+
+    !> One more character of the current token.
+    subroutine add_char(ch)
+      character(len=1), intent(in) :: ch
+      if (token_len < token_max) then
+        token_len = token_len + 1
+        token(token_len:token_len) = ch
+      else
+        truncated = .true.
+      end if
+    end subroutine add_char
+
+    !> The current token is complete: it is a value (or the next designator) of the list.
+    subroutine end_token()
+      if (token_len == 0) return
+      slots = min(slots + repeat_count(token(1:token_len), truncated), count_cap)
+      value_since_comma = .true.
+      before_last = last; before_last_len = last_len; before_last_truncated = last_truncated
+      last = token; last_len = token_len; last_truncated = truncated
+      token_len = 0
+      truncated = .false.
+    end subroutine end_token
+
+    !> The values counted since the last '=' end at element first + slots - 1 of the array.
+    subroutine close_list()
+      ! the designator's element itself must exist even when no value follows ("a(5) = /")
+      if (target > 0) bound(target) = max(bound(target), min(first + max(slots, 1_int64) - 1, count_cap))
+    end subroutine close_list
+
+    !> A '=' follows the designator last read (a subscript written apart, "f5c (3)", is
+    !> joined to its name): the array it names, if one of `names`, and its first element.
+    subroutine open_list()
+      character(len=:), allocatable :: designator
+      logical :: cut
+      integer :: paren, k
+      integer(int64) :: number
+      target = 0
+      first = 1
+      slots = 0
+      value_since_comma = .false.
+      if (last_len == 0) return
+      designator = lower(last(1:last_len))
+      cut = last_truncated
+      if (designator(1:1) == "(" .and. before_last_len > 0) then
+        designator = lower(before_last(1:before_last_len))//designator
+        cut = cut .or. before_last_truncated
+      end if
+      last_len = 0
+      before_last_len = 0
+      if (index(designator, "%") > 0) return
+      paren = index(designator, "(")
+      if (paren == 0) paren = len(designator) + 1
+      target = findloc([(trim(names(k)) == designator(1:paren - 1), k=1, size(names))], .true., dim=1)
+      if (target == 0) return
+      ! first element: the largest number in the subscript (a section's upper end)
+      number = 0
+      do k = paren + 1, len(designator)
+        if (designator(k:k) >= "0" .and. designator(k:k) <= "9") then
+          number = min(number * 10 + (iachar(designator(k:k)) - iachar("0")), count_cap)
+          first = max(first, number)
+        else
+          number = 0
+        end if
+      end do
+      if (cut) first = count_cap
+    end subroutine open_list
+
+    !> Values a token stands for: r for a repeat "r*c" or "r*", else 1.
+    pure integer(int64) function repeat_count(tok, cut)
+      character(*), intent(in) :: tok
+      !> The token was longer than kept.
+      logical, intent(in) :: cut
+      integer :: star, k
+      repeat_count = 1
+      star = verify(tok, "0123456789")
+      if (star == 0) then
+        ! all digits: a long run may continue with '*' beyond what was kept
+        if (cut) repeat_count = count_cap
+        return
+      end if
+      if (star == 1 .or. tok(star:star) /= "*") return
+      repeat_count = 0
+      do k = 1, star - 1
+        repeat_count = min(repeat_count * 10 + (iachar(tok(k:k)) - iachar("0")), count_cap)
+      end do
+    end function repeat_count
+  end function deck_array_capacities
 
 end module kinetostat_deck

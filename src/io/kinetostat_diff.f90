@@ -7,7 +7,7 @@
 !> (kinetostat_noise's noise_rel times the step's largest force, or atol) is not compared.
 !> Title, deck path and deck title lines are ignored. Pure: the caller reads the files.
 module kinetostat_diff
-  use kinetostat_kinds, only: wp
+  use kinetostat_kinds, only: wp, rad_to_deg
   use kinetostat_error, only: error_t, fatal_error, exit_input
   use kinetostat_text, only: int_str, lower
   use kinetostat_text_buffer, only: text_buffer_t
@@ -32,7 +32,7 @@ module kinetostat_diff
   !> Default absolute tolerance of any other column (dimensionless, m/s, unknown unit).
   real(wp), parameter :: atol_other = 1.0e-9_wp
   !> One radian in degrees: the scale of the relative tolerance of an angle, deg.
-  real(wp), parameter :: radian_deg = 57.295779513082321_wp
+  real(wp), parameter :: radian_deg = rad_to_deg
   !> Format of a relative difference or an angle difference in a report line.
   character(*), parameter :: rel_fmt = '(es8.1)'
   !> How far ahead (in values) a value of A is looked for in B when the two are out of step.

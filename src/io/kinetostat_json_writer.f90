@@ -100,6 +100,16 @@ contains
       call out%end_line()
     end do
     call out%put("  ],")
+    if (allocated(table%summary)) then
+      call out%put('  "summary": [')
+      do i = 1, size(table%summary)
+        call out%append("    ")
+        call put_echo_object(out, table%summary(i))
+        if (i < size(table%summary)) call out%append(",")
+        call out%end_line()
+      end do
+      call out%put("  ],")
+    end if
     if (table%has_selfcheck) then
       call out%put('  "selfcheck": {"max_residual": '//full_number(table%max_residual)// &
         ', "max_mismatch": '//full_number(table%max_mismatch)//', "driver": '//json_string(table%driver)// &

@@ -54,6 +54,30 @@ contains
       text = "НАИБ. НЕВЯЗКА РАВНОВЕСИЯ ТОЛКАТЕЛЯ ПО ВСЕМ ПОЛОЖЕНИЯМ"
     case ("MAX N MISMATCH, CLOSED FORM VS 3X3 LINEAR SOLVE")
       text = "НАИБ. РАСХОЖДЕНИЕ N: ФОРМУЛА И РЕШЕНИЕ СИСТЕМЫ 3X3"
+    ! friction in the pairs of the generic engine (summary block and self-check)
+    case ("WORK AND EFFICIENCY WITH FRICTION")
+      text = "РАБОТА И КПД С УЧЕТОМ ТРЕНИЯ"
+    case ("ETA = 1 - A_LOSS/A_DRIVER OVER A WHOLE TURN OF THE INPUT: THE CYCLE EFFICIENCY")
+      text = "ETA = 1 - A_LOSS/A_DRIVER ЗА ПОЛНЫЙ ОБОРОТ ВХОДНОГО "// &
+        "ЗВЕНА: ЦИКЛОВОЙ КПД"
+    case ("ETA = 1 - A_LOSS/A_DRIVER OVER LESS THAN A WHOLE TURN: NOT THE CYCLE EFFICIENCY")
+      text = "ETA = 1 - A_LOSS/A_DRIVER МЕНЕЕ ЧЕМ ЗА ОБОРОТ: НЕ "// &
+        "ЦИКЛОВОЙ КПД"
+    case ("(THE DRIVER'S WORK ALSO CHANGES THE KINETIC AND POTENTIAL ENERGY)")
+      text = "(РАБОТА ДВИГАТЕЛЯ ИДЕТ ТАКЖЕ НА ИЗМЕНЕНИЕ "// &
+        "КИНЕТИЧЕСКОЙ И ПОТЕНЦИАЛЬНОЙ ЭНЕРГИИ)"
+    case ("ETA NOT DEFINED: THE DRIVER DELIVERS NO NET WORK OVER THE RUN")
+      text = "КПД НЕ ОПРЕДЕЛЕН: РАБОТА ДВИГАТЕЛЯ ЗА РАСЧЕТ "// &
+        "НЕ ПОЛОЖИТЕЛЬНА"
+    case ("MAX EQUILIBRIUM RESIDUAL WITH FRICTION LOADS")
+      text = "НАИБ. НЕВЯЗКА РАВНОВЕСИЯ С СИЛАМИ ТРЕНИЯ"
+    case ("MAX M1 MISMATCH, POWER BALANCE WITH FRICTION")
+      text = "НАИБ. РАСХОЖДЕНИЕ M1, БАЛАНС МОЩНОСТЕЙ С ТРЕНИЕМ"
+    case ("MAX F_drive MISMATCH, POWER BALANCE WITH FRICTION")
+      text = "НАИБ. РАСХОЖДЕНИЕ F_drive, БАЛАНС МОЩНОСТЕЙ С "// &
+        "ТРЕНИЕМ"
+    case ("J")
+      text = "Дж"
     ! units (ГОСТ symbols, as the 1991 printouts write them)
     case ("m")
       text = "м"

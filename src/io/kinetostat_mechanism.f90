@@ -9,6 +9,7 @@ module kinetostat_mechanism
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_labels, only: lang_ru
   use kinetostat_sketch, only: sketch_t
+  use kinetostat_drawing, only: drawing_t
   implicit none
   private
   public :: mechanism_t
@@ -33,6 +34,8 @@ module kinetostat_mechanism
     !> The topology for a drawing (links and their points, pivots, guides, gravity) after
     !> read_deck; by default not available.
     procedure :: sketch
+    !> The forces of one row added to its drawing (--format svg --at K); by default none.
+    procedure :: force_plan
   end type mechanism_t
 
   abstract interface
@@ -99,5 +102,20 @@ contains
     type(sketch_t), intent(out) :: out
     out%available = .false.
   end subroutine sketch
+
+  !> The forces of row `k` of the results added to its drawing (`--format svg --at K`): pair
+  !> forces at their joints, loads, weights, inertia forces and moments, the driving moment
+  !> (see kinetostat_drawing). By default none: the drawing shows the links only.
+  pure subroutine force_plan(self, table, k, drawing, error)
+    class(mechanism_t), intent(in) :: self
+    !> The results of the run (with the kinematics columns).
+    type(step_table_t), intent(in) :: table
+    !> Row drawn, 1..row_count.
+    integer, intent(in) :: k
+    !> The drawing of the row (points, links, guides) to add the forces to.
+    type(drawing_t), intent(inout) :: drawing
+    !> A force that cannot be placed.
+    type(error_t), allocatable, intent(out) :: error
+  end subroutine force_plan
 
 end module kinetostat_mechanism

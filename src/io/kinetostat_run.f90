@@ -14,6 +14,10 @@ module kinetostat_run
   use kinetostat_table_writer, only: write_table
   use kinetostat_json_writer, only: write_json
   use kinetostat_svg_writer, only: write_svg
+  use kinetostat_svg_mechanism, only: write_svg_mechanism
+  use kinetostat_sketch, only: sketch_t
+  use kinetostat_drawing, only: drawing_t, drawing_from_sketch
+  use kinetostat_error, only: exit_usage
   use kinetostat_labels, only: lang_en
   use kinetostat_override, only: override_t, mark_overrides
   implicit none
@@ -45,6 +49,8 @@ module kinetostat_run
     logical :: kinematics = .false.
     !> SVG: the pair forces to draw, comma-separated ("" for all).
     character(len=:), allocatable :: pairs
+    !> SVG: draw the mechanism at this row (0: the sheet of hodographs and diagrams).
+    integer :: at_step = 0
   end type run_options_t
 
 contains
@@ -105,7 +111,9 @@ contains
     case (format_json)
       call write_json(mech%title(options%lang), table, out, options%kinematics)
     case (format_svg)
-      if (allocated(options%pairs)) then
+      if (options%at_step > 0) then
+        call write_at_step(mech, table, options, out, error)
+      else if (allocated(options%pairs)) then
         call write_svg(mech%title(options%lang), table, options%pairs, out, error)
       else
         call write_svg(mech%title(options%lang), table, "", out, error)
@@ -114,6 +122,35 @@ contains
       call write_table(mech, table, options%lang, out)
     end select
   end subroutine run_mechanism
+
+  !> The mechanism at row options%at_step, drawn from its sketch.
+  subroutine write_at_step(mech, table, options, out, error)
+    class(mechanism_t), intent(in) :: mech
+    type(step_table_t), intent(in) :: table
+    type(run_options_t), intent(in) :: options
+    type(text_buffer_t), intent(inout) :: out
+    type(error_t), allocatable, intent(out) :: error
+    type(sketch_t) :: topo
+    type(drawing_t) :: drawing
+    integer :: k
+    k = options%at_step
+    if (k > table%row_count()) then
+      call fatal_error(error, exit_usage, "--at "//int_str(k)//": "//table%deck//" has "// &
+        int_str(table%row_count())//" "//table%row_name//"s (1.."//int_str(table%row_count())//")")
+      return
+    end if
+    call mech%sketch(topo)
+    if (.not. topo%available) then
+      call fatal_error(error, exit_usage, table%deck//": &"//table%mechanism//": --at: this mechanism is not "// &
+        "drawn (only linkages are); --format svg without --at shows its forces")
+      return
+    end if
+    call drawing_from_sketch(topo, table, k, drawing, error)
+    if (allocated(error)) return
+    call mech%force_plan(table, k, drawing, error)
+    if (allocated(error)) return
+    call write_svg_mechanism(mech%title(options%lang), table, k, drawing, out)
+  end subroutine write_at_step
 
   !> Nothing that is not finite may reach an output: a non-finite result is a geometry
   !> error (exit 3) naming the step, its input angle and the quantity.

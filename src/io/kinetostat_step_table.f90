@@ -139,6 +139,10 @@ module kinetostat_step_table
     type(remark_t), allocatable :: warnings(:)
     !> The run's overrides as given ("l_ab=0.12"), blank-padded; not allocated without any.
     character(len=:), allocatable :: overrides(:)
+    !> Heading of the summary block (results of the whole run, e.g. work and efficiency).
+    character(len=:), allocatable :: summary_heading
+    !> Summary records (real values and lines of text), printed after RESULTS; none by default.
+    type(echo_record_t), allocatable :: summary(:)
   contains
     procedure :: add_column
     procedure :: put_point
@@ -162,6 +166,8 @@ module kinetostat_step_table
     procedure :: echo_text
     procedure :: echo_heading
     procedure :: echo_line
+    procedure :: summary_real
+    procedure :: summary_line
   end type step_table_t
 
 contains
@@ -499,5 +505,27 @@ contains
     character(*), intent(in) :: text
     call push_echo(self, echo_record_t(kind=echo_line_kind, name=text, unit=""))
   end subroutine echo_line
+
+  !> A real value of the summary block (a result of the whole run).
+  pure subroutine summary_real(self, name, value, unit)
+    class(step_table_t), intent(inout) :: self
+    !> Name as printed.
+    character(*), intent(in) :: name
+    !> Value.
+    real(wp), intent(in) :: value
+    !> Unit text.
+    character(*), intent(in) :: unit
+    if (.not. allocated(self%summary)) allocate (self%summary(0))
+    self%summary = [self%summary, echo_record_t(kind=echo_real_kind, name=name, unit=unit, values=[value])]
+  end subroutine summary_real
+
+  !> A line of text of the summary block (translated by the table writer's glossary).
+  pure subroutine summary_line(self, text)
+    class(step_table_t), intent(inout) :: self
+    !> The line (an English glossary key).
+    character(*), intent(in) :: text
+    if (.not. allocated(self%summary)) allocate (self%summary(0))
+    self%summary = [self%summary, echo_record_t(kind=echo_line_kind, name=text, unit="")]
+  end subroutine summary_line
 
 end module kinetostat_step_table

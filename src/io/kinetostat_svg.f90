@@ -22,7 +22,7 @@ module kinetostat_svg
   !> The style sheet of every sheet: sizes in mm (user units).
   character(*), parameter :: style_lines(*) = [character(len=100) :: &
     "text { font-family: sans-serif; fill: #000000; }", &
-    ".title { font-size: 3.6px; font-weight: bold; }", &
+    ".title { font-size: 3.3px; font-weight: bold; }", &
     ".subtitle { font-size: 3px; }", &
     ".heading { font-size: 3.2px; font-weight: bold; }", &
     ".label { font-size: 2.8px; }", &

@@ -19,7 +19,7 @@ module kinetostat_svg_writer
     svg_text, svg_arrow, coord, palette_colour
   implicit none
   private
-  public :: write_svg, pair_force_t, find_pair_forces, select_pair_forces, nice_step, cycle_mean
+  public :: write_svg, pair_force_t, find_pair_forces, select_pair_forces, nice_step, cycle_mean, place_label
 
   !> Sheet width (A4), mm.
   real(wp), parameter :: page_width = 210.0_wp

@@ -5,7 +5,7 @@ module kinetostat_table_writer
   use kinetostat_kinds, only: wp
   use kinetostat_selfcheck, only: selfcheck_tolerance
   use kinetostat_step_table, only: step_table_t, echo_record_t, echo_real_kind, echo_int_kind, &
-    echo_logical_kind, echo_array_kind, echo_text_kind, echo_heading_kind
+    echo_logical_kind, echo_array_kind, echo_text_kind, echo_heading_kind, echo_line_kind
   use kinetostat_format, only: echo_number, echo_array_number, footer_number, limit_number, pad_right, put_fixed
   use kinetostat_labels, only: label, lang_ru
   use kinetostat_mechanism, only: mechanism_t
@@ -50,6 +50,7 @@ contains
     end do
     call put_heading(out, label("RESULTS", lang))
     call mech%write_results(table, lang, out)
+    if (allocated(table%summary)) call put_summary(out, table, lang)
     if (table%has_selfcheck) call put_footer(out, table, lang)
   end subroutine write_table
 
@@ -156,6 +157,23 @@ contains
     verdict = "!!"
     if (x <= selfcheck_tolerance) verdict = "OK"
   end function selfcheck_verdict
+
+  !> The summary block: a heading, then the records (values as INPUT DATA lines, text lines
+  !> through the glossary).
+  pure subroutine put_summary(out, table, lang)
+    type(text_buffer_t), intent(inout) :: out
+    type(step_table_t), intent(in) :: table
+    integer, intent(in) :: lang
+    integer :: i
+    if (allocated(table%summary_heading)) call put_heading(out, label(table%summary_heading, lang))
+    do i = 1, size(table%summary)
+      if (table%summary(i)%kind == echo_line_kind) then
+        call out%put("   "//label(table%summary(i)%name, lang))
+      else
+        call put_echo(out, table%summary(i), lang)
+      end if
+    end do
+  end subroutine put_summary
 
   !> The self-check footer.
   pure subroutine put_footer(out, table, lang)

@@ -4,8 +4,8 @@ module kinetostat_pr3050_deck
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str
   use kinetostat_text_buffer, only: text_buffer_t
-  use kinetostat_deck, only: write_template_lines, deck_array_capacity, deck_context_t, unset_real, max_steps, &
-    deck_source_t, namelist_failure, deck_error, require_set, require_positive, &
+  use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, deck_array_capacities, max_steps, &
+    deck_source_t, namelist_probe_t, require_all_set, deck_error, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values
   use kinetostat_pr3050, only: pr3050_params_t
   implicit none
@@ -113,10 +113,11 @@ contains
     real(wp) :: phi3_start, phi3_end, dphi3
     real(wp), allocatable :: omega3(:), eps3(:)
     integer :: ios, n_omega3, n_eps3, k
+    !> Elements allocated for each per-step array the deck may give (see deck_array_capacities).
+    integer, allocatable :: capacity(:)
     character(len=512) :: msg
     type(deck_context_t) :: ctx
-    !> Elements of each per-step array (deck_array_capacity).
-    integer :: capacity
+    type(namelist_probe_t) :: probe
     namelist /pr3050/ l_ca, l_cb, l_cs3, delta, l_bs2, l_s1a, gamma, g, m1, m2, m3, j1, j2, j3, &
       phi3_start, phi3_end, dphi3, omega3, eps3
 
@@ -127,15 +128,27 @@ contains
     m1 = unset_real; m2 = unset_real; m3 = unset_real
     j1 = unset_real; j2 = unset_real; j3 = unset_real
     phi3_start = unset_real; phi3_end = unset_real; dphi3 = unset_real
-    capacity = deck_array_capacity(source)   ! not max_deck_array: a small deck stays small
-    allocate (omega3(capacity), source=unset_real)
-    allocate (eps3(capacity), source=unset_real)
+    capacity = deck_array_capacities(source, ctx%group, [character(len=6) :: "omega3", "eps3"])
+    allocate (omega3(capacity(1)), source=unset_real)
+    allocate (eps3(capacity(2)), source=unset_real)
 
     read (source%lines, nml=pr3050, iostat=ios, iomsg=msg)
     if (ios /= 0) then
-      call namelist_failure(ctx, ios, msg, error)
+      ! find the line and the assignment that failed (gfortran's message does not say)
+      call probe%start(source, ios, msg)
+      do while (probe%more(source))
+        read (probe%lines, nml=pr3050, iostat=ios, iomsg=msg)
+        call probe%take(ios, msg)
+      end do
+      call probe%report(source, ctx, error)
       return
     end if
+
+    ! every missing required variable in one message
+    call require_all_set(ctx, [character(len=10) :: "l_ca", "l_cb", "l_cs3", "delta", "l_bs2", "l_s1a", "gamma", "m1", &
+      "m2", "m3", "j1", "j2", "j3", "phi3_start", "phi3_end", "dphi3"], &
+      [l_ca, l_cb, l_cs3, delta, l_bs2, l_s1a, gamma, m1, m2, m3, j1, j2, j3, phi3_start, phi3_end, dphi3], error)
+    if (allocated(error)) return
 
     ! lengths and angles of the links
     call require_positive(ctx, "l_ca", l_ca, error); if (allocated(error)) return

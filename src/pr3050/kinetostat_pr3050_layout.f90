@@ -18,6 +18,7 @@ module kinetostat_pr3050_layout
   use kinetostat_pr3050, only: pr3050_params_t, pr3050_position_t, pr3050_step_t, pr3050_step, &
     pr3050_check_position, pr3050_position
   use kinetostat_pr3050_deck, only: pr3050_deck_t, read_pr3050_deck, write_pr3050_template
+  use kinetostat_drawing, only: drawing_t, force_load
   implicit none
   private
   public :: pr3050_mechanism_t, new_pr3050, pr3050_solve, pr3050_csv_columns, pr3050_csv_values
@@ -75,6 +76,7 @@ module kinetostat_pr3050_layout
     procedure :: write_results
     procedure :: write_template
     procedure :: sketch
+    procedure :: force_plan
   end type pr3050_mechanism_t
 
 contains
@@ -336,5 +338,34 @@ contains
     real(wp) :: angle
     angle = real(k - 1, wp) * deck%dphi3
   end function phi3rel
+
+  !> The forces of row `k` on its drawing (--format svg --at K): the pair forces at their
+  !> joints, the driving force F2 on the rod (along A->B, at S2), the weights (angle gamma),
+  !> the inertia forces and moments of links 1, 2 and 3.
+  pure subroutine force_plan(self, table, k, drawing, error)
+    class(pr3050_mechanism_t), intent(in) :: self
+    type(step_table_t), intent(in) :: table
+    integer, intent(in) :: k
+    type(drawing_t), intent(inout) :: drawing
+    type(error_t), allocatable, intent(out) :: error
+    character(len=3), parameter :: pairs(*) = [character(len=3) :: "F14", "F34", "F32"]
+    character(len=1), parameter :: pair_points(*) = ["A", "C", "B"]
+    real(wp) :: gravity(2), a(2), b(2), u(2)
+    integer :: i
+    associate (p => self%deck%p)
+      do i = 1, size(pairs)
+        call drawing%pair_from_table(table, k, trim(pairs(i)), pair_points(i), error)
+        if (allocated(error)) return
+      end do
+      a = drawing%at("A")
+      b = drawing%at("B")
+      u = (b - a) / max(norm2(b - a), tiny(1.0_wp))
+      call drawing%add_force("F2", force_load, drawing%at("S2"), table%rows(table%column_index("F2"), k) * u)
+      gravity = p%g * [cos(p%gamma), sin(p%gamma)]
+      call drawing%add_link_loads(table, k, "1", "S1", "S1", p%m1, p%j1, gravity)
+      call drawing%add_link_loads(table, k, "2", "S2", "S2", p%m2, p%j2, gravity)
+      call drawing%add_link_loads(table, k, "3", "S3", "S3", p%m3, p%j3, gravity)
+    end associate
+  end subroutine force_plan
 
 end module kinetostat_pr3050_layout

@@ -4,8 +4,8 @@ module kinetostat_pr3207_deck
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str
   use kinetostat_text_buffer, only: text_buffer_t
-  use kinetostat_deck, only: write_template_lines, deck_array_capacity, deck_context_t, unset_real, &
-    deck_source_t, namelist_failure, deck_error, is_set, require_set, require_positive, &
+  use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, deck_array_capacities, &
+    deck_source_t, namelist_probe_t, require_all_set, deck_error, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn
   use kinetostat_pr3207, only: pr3207_params_t
   implicit none
@@ -107,11 +107,12 @@ contains
     !> Number of steps as given (an integer deck variable, read as a real: see require_whole).
     real(wp) :: n
     integer :: ios, n_f5c, k
+    !> Elements allocated for each per-step array the deck may give (see deck_array_capacities).
+    integer, allocatable :: capacity(:)
     character(len=512) :: msg
     type(deck_context_t) :: ctx
+    type(namelist_probe_t) :: probe
     logical :: two_value_given
-    !> Elements of each per-step array (deck_array_capacity).
-    integer :: capacity
     namelist /pr3207/ l_ab, l_ac, l_cd, l_cs3, m1, m3, m5, j3, omega1, g, phi_start, dphi, n, &
       f5c, f5c_work, f5c_idle, phi_cut_start, phi_cut_end
 
@@ -122,14 +123,25 @@ contains
     omega1 = unset_real; g = unset_real; phi_start = unset_real; dphi = unset_real
     f5c_work = unset_real; f5c_idle = unset_real; phi_cut_start = unset_real; phi_cut_end = unset_real
     n = unset_real
-    capacity = deck_array_capacity(source)   ! not max_deck_array: a small deck stays small
-    allocate (f5c(capacity), source=unset_real)
+    capacity = deck_array_capacities(source, ctx%group, ["f5c"])
+    allocate (f5c(capacity(1)), source=unset_real)
 
     read (source%lines, nml=pr3207, iostat=ios, iomsg=msg)
     if (ios /= 0) then
-      call namelist_failure(ctx, ios, msg, error)
+      ! find the line and the assignment that failed (gfortran's message does not say)
+      call probe%start(source, ios, msg)
+      do while (probe%more(source))
+        read (probe%lines, nml=pr3207, iostat=ios, iomsg=msg)
+        call probe%take(ios, msg)
+      end do
+      call probe%report(source, ctx, error)
       return
     end if
+
+    ! every missing required variable in one message
+    call require_all_set(ctx, [character(len=6) :: "l_ab", "l_ac", "l_cd", "l_cs3", "m1", "m3", "m5", "j3", "omega1", "dphi"], &
+      [l_ab, l_ac, l_cd, l_cs3, m1, m3, m5, j3, omega1, dphi], error)
+    if (allocated(error)) return
 
     ! lengths, masses, inertia, speed
     call require_positive(ctx, "l_ab", l_ab, error); if (allocated(error)) return

@@ -14,6 +14,7 @@ module kinetostat_pr3207_layout
   use kinetostat_table_writer, only: put_two_line_step
   use kinetostat_pr3207, only: pr3207_params_t, pr3207_position_t, pr3207_step_t, pr3207_step, pr3207_position
   use kinetostat_pr3207_deck, only: pr3207_deck_t, read_pr3207_deck, write_pr3207_template
+  use kinetostat_drawing, only: drawing_t, force_load
   implicit none
   private
   public :: pr3207_mechanism_t, new_pr3207, pr3207_solve, pr3207_csv_columns, pr3207_csv_values
@@ -52,6 +53,7 @@ module kinetostat_pr3207_layout
     procedure :: write_results
     procedure :: write_template
     procedure :: sketch
+    procedure :: force_plan
   end type pr3207_mechanism_t
 
 contains
@@ -238,5 +240,32 @@ contains
                              fixed_field(table%rows(12, k), 12, 3))
     end do
   end subroutine write_results
+
+  !> The forces of row `k` on its drawing (--format svg --at K): the pair forces at their
+  !> joints (F56 at the ram's S5), the cutting force F5c on the ram along y, the weights and
+  !> inertia forces of links 1, 3 and 5, the inertia moment of the lever, and M1.
+  pure subroutine force_plan(self, table, k, drawing, error)
+    class(pr3207_mechanism_t), intent(in) :: self
+    type(step_table_t), intent(in) :: table
+    integer, intent(in) :: k
+    type(drawing_t), intent(inout) :: drawing
+    type(error_t), allocatable, intent(out) :: error
+    character(len=3), parameter :: pairs(*) = [character(len=3) :: "F16", "F21", "F36", "F34", "F56"]
+    character(len=2), parameter :: pair_points(*) = [character(len=2) :: "A", "B", "C", "D", "S5"]
+    real(wp) :: gravity(2)
+    integer :: i
+    associate (p => self%deck%p)
+      do i = 1, size(pairs)
+        call drawing%pair_from_table(table, k, trim(pairs(i)), trim(pair_points(i)), error)
+        if (allocated(error)) return
+      end do
+      call drawing%add_force("F5c", force_load, drawing%at("S5"), [0.0_wp, self%deck%f5c(k)])
+      gravity = [p%g, 0.0_wp]
+      call drawing%add_link_loads(table, k, "1", "S1", "S1", p%m1, 0.0_wp, gravity)
+      call drawing%add_link_loads(table, k, "3", "S3", "S3", p%m3, p%j3, gravity)
+      call drawing%add_link_loads(table, k, "5", "S5", "S5", p%m5, 0.0_wp, gravity)
+      call drawing%add_moment("M1", force_load, drawing%at("A"), table%rows(table%column_index("M1"), k))
+    end associate
+  end subroutine force_plan
 
 end module kinetostat_pr3207_layout

@@ -4,8 +4,8 @@ module kinetostat_sixbar_deck
   use kinetostat_error, only: error_t, fatal_error, exit_geometry
   use kinetostat_text, only: real_str, int_str
   use kinetostat_text_buffer, only: text_buffer_t
-  use kinetostat_deck, only: write_template_lines, deck_array_capacity, deck_context_t, unset_real, &
-    deck_source_t, namelist_failure, deck_error, is_set, require_set, require_positive, &
+  use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, deck_array_capacities, &
+    deck_source_t, namelist_probe_t, require_all_set, deck_error, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn
   use kinetostat_sixbar, only: sixbar_params_t, sixbar_extreme_phi1
   implicit none
@@ -84,10 +84,11 @@ contains
     !> Number of steps as given (an integer deck variable, read as a real: see require_whole).
     real(wp) :: n
     integer :: ios, n_f5, k
+    !> Elements allocated for each per-step array the deck may give (see deck_array_capacities).
+    integer, allocatable :: capacity(:)
     character(len=512) :: msg
     type(deck_context_t) :: ctx
-    !> Elements of each per-step array (deck_array_capacity).
-    integer :: capacity
+    type(namelist_probe_t) :: probe
     namelist /sixbar/ a, b, l1, lam2, lam_s2, lam3, lam_de, lam4, lam_s4, lam_e, &
       m1, m2, m3, m4, m5, j1, j2, j3, j4, omega1, g, dphi, n, phi_start, start_at_extreme, f5, legacy_eq2
 
@@ -102,14 +103,26 @@ contains
     n = unset_real
     start_at_extreme = .false.
     legacy_eq2 = .false.
-    capacity = deck_array_capacity(source)   ! not max_deck_array: a small deck stays small
-    allocate (f5(capacity), source=unset_real)
+    capacity = deck_array_capacities(source, ctx%group, ["f5"])
+    allocate (f5(capacity(1)), source=unset_real)
 
     read (source%lines, nml=sixbar, iostat=ios, iomsg=msg)
     if (ios /= 0) then
-      call namelist_failure(ctx, ios, msg, error)
+      ! find the line and the assignment that failed (gfortran's message does not say)
+      call probe%start(source, ios, msg)
+      do while (probe%more(source))
+        read (probe%lines, nml=sixbar, iostat=ios, iomsg=msg)
+        call probe%take(ios, msg)
+      end do
+      call probe%report(source, ctx, error)
       return
     end if
+
+    ! every missing required variable in one message
+    call require_all_set(ctx, [character(len=6) :: "a", "b", "l1", "lam2", "lam_s2", "lam3", "lam_de", "lam4", "lam_s4", "lam_e", &
+      "m1", "m2", "m3", "m4", "m5", "j1", "j2", "j3", "j4", "omega1"], &
+      [a, b, l1, lam2, lam_s2, lam3, lam_de, lam4, lam_s4, lam_e, m1, m2, m3, m4, m5, j1, j2, j3, j4, omega1], error)
+    if (allocated(error)) return
 
     ! geometry: D, lengths and ratios
     call require_set(ctx, "a", a, error); if (allocated(error)) return

@@ -17,6 +17,7 @@ module kinetostat_sixbar_layout
   use kinetostat_sixbar, only: sixbar_params_t, sixbar_step_t, sixbar_step, sixbar_ok, sixbar_open1, &
     sixbar_dead1, sixbar_open2, sixbar_dead2, sixbar_frame2_to_frame1, sixbar_down1
   use kinetostat_sixbar_deck, only: sixbar_deck_t, read_sixbar_deck, write_sixbar_template
+  use kinetostat_drawing, only: drawing_t, force_load
   implicit none
   private
   public :: sixbar_mechanism_t, new_sixbar, sixbar_solve, sixbar_csv_columns, sixbar_csv_values
@@ -74,6 +75,7 @@ module kinetostat_sixbar_layout
     procedure :: write_results
     procedure :: write_template
     procedure :: sketch
+    procedure :: force_plan
   end type sixbar_mechanism_t
 
 contains
@@ -340,5 +342,36 @@ contains
       call out%put(fixed_field(table%rows(1, k), 9, 2)//fixed_field(table%rows(15, k), 12, 3))
     end do
   end subroutine write_results_ru
+
+  !> The forces of row `k` on its drawing (--format svg --at K): every pair force at its
+  !> joint (F56, the guide's normal force, at H), the load F5 along x2, the weights (-y0),
+  !> inertia forces and moments of links 1..5, and M1.
+  pure subroutine force_plan(self, table, k, drawing, error)
+    class(sixbar_mechanism_t), intent(in) :: self
+    type(step_table_t), intent(in) :: table
+    integer, intent(in) :: k
+    type(drawing_t), intent(inout) :: drawing
+    type(error_t), allocatable, intent(out) :: error
+    character(len=3), parameter :: pairs(*) = [character(len=3) :: "F21", "F32", "F43", "F45", "F36", "F16", "F56"]
+    character(len=1), parameter :: pair_points(*) = ["B", "C", "E", "H", "D", "A", "H"]
+    real(wp) :: x2, gravity(2)
+    integer :: i
+    associate (p => self%deck%p)
+      do i = 1, size(pairs)
+        call drawing%pair_from_table(table, k, trim(pairs(i)), pair_points(i), error)
+        if (allocated(error)) return
+      end do
+      ! x2 in frame 1, rad
+      x2 = atan2(p%a, p%b) - pi
+      call drawing%add_force("F5", force_load, drawing%at("H"), self%deck%f5(k) * [cos(x2), sin(x2)])
+      gravity = p%g * sixbar_down1(p)
+      call drawing%add_link_loads(table, k, "1", "S1", "S1", p%m1, p%j1, gravity)
+      call drawing%add_link_loads(table, k, "2", "S2", "S2", p%m2, p%j2, gravity)
+      call drawing%add_link_loads(table, k, "3", "S3", "S3", p%m3, p%j3, gravity)
+      call drawing%add_link_loads(table, k, "4", "S4", "S4", p%m4, p%j4, gravity)
+      call drawing%add_link_loads(table, k, "5", "S5", "S5", p%m5, 0.0_wp, gravity)
+      call drawing%add_moment("M1", force_load, drawing%at("A"), table%rows(table%column_index("M1"), k))
+    end associate
+  end subroutine force_plan
 
 end module kinetostat_sixbar_layout

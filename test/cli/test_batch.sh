@@ -81,7 +81,7 @@ python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); assert [e["name"] f
 
 # --- bad --set: exit 2, one line, naming --set
 run_ks data/pr3207.nml --set l_abx=1
-expect_one_line_error set-unknown-name 2 "Cannot match namelist object name l_abx.*\(from --set l_abx=1\)$"
+expect_one_line_error set-unknown-name 2 "l_abx = 1: unknown variable .l_abx. in this group.*\(from --set l_abx=1\)$"
 run_ks data/pr3207.nml --set l_ab=abc
 expect_one_line_error set-bad-value 2 "&pr3207: .*\(from --set l_ab=abc\)$"
 run_ks data/pr3207.nml --set l_ab=-1

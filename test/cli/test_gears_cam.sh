@@ -55,7 +55,7 @@ done
 g=data/gears_reducer.nml
 p=data/gears_planetary.nml
 b=data/gears_bevel.nml
-expect_input_error gears-unknown-variable '&gears: namelist error' "$(deck_with g_unknown "$g" 's/m1      = 50/m1 = 50, foo = 1/')"
+expect_input_error gears-unknown-variable "&gears: foo = 1: unknown variable 'foo'" "$(deck_with g_unknown "$g" 's/m1      = 50/m1 = 50, foo = 1/')"
 expect_input_error gears-z1-zero '&gears: z1\(2\): must be >= 1 teeth' "$(deck_with g_z0 "$g" 's/z1      = 20, 18/z1 = 20, 0/')"
 expect_input_error gears-z2-negative '&gears: z2\(1\): must be >= 1 teeth' "$(deck_with g_zneg "$g" 's/z2      = 40, 54/z2 = -40, 54/')"
 expect_input_error gears-z1-missing '&gears: z1\(2\): missing' "$(deck_with g_zmiss "$g" 's/z1      = 20, 18/z1 = 20/')"
@@ -88,7 +88,7 @@ expect_input_error gears-alpha23-range '&gears: alpha_w23\(1\): must be in \(0, 
 # --- input errors, cam
 c=data/cam_translating.nml
 fl=data/cam_flat.nml
-expect_input_error cam-unknown-variable '&cam: namelist error' "$(deck_with c_unknown "$c" 's/f         = 0.3 /f = 0.3, foo = 1 /')"
+expect_input_error cam-unknown-variable "&cam: foo = 1: unknown variable 'foo'" "$(deck_with c_unknown "$c" 's/f         = 0.3 /f = 0.3, foo = 1 /')"
 expect_input_error cam-f-negative '&cam: f: must be >= 0' "$(deck_with c_fneg "$c" 's/f         = 0.3 /f = -0.3 /')"
 expect_input_error cam-f-missing '&cam: f: missing' "$(deck_with c_fmiss "$c" '/f         = 0.3/d')"
 expect_input_error cam-l-zero '&cam: l: must be > 0' "$(deck_with c_l0 "$c" 's/l         = 0.04 /l = 0 /')"

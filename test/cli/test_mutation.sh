@@ -14,7 +14,7 @@ for category in exit-code non-finite error-shape no-leftover warning-shape runti
 $(grep "^FAIL .* $category (" "$mutation_log" | head -100)"
   fi
 done
-grep '^mutation: ' "$mutation_log"
+grep -E '^(mutation|named): ' "$mutation_log"
 
 # The mutation checks can fail: a fake binary that prints a NaN and exits 0, and one that
 # exits 1 with two stderr lines, must be caught.

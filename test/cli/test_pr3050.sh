@@ -50,8 +50,8 @@ else fail pr3050-unloaded-zero "rc=$rc or a nonzero force with no loads: $(head 
 
 # --- input errors: exit 2, one line naming deck, group, variable and reason, no output
 e() { expect_input_error "pr3050-$1" "&pr3050: $2" "$(deck_with "p3050_$1" "$ref3050" "$3")"; }
-e unknown-variable 'namelist error' 's/dphi3 = 5/dphi3 = 5, n = 10/'
-e wrong-type 'namelist error' 's/l_cb = 1.222/l_cb = abc/'
+e unknown-variable "n = 10: unknown variable 'n'" 's/dphi3 = 5/dphi3 = 5, n = 10/'
+e wrong-type "l_cb = abc: 'abc' is not a number" 's/l_cb = 1.222/l_cb = abc/'
 e missing-l_ca 'l_ca: missing' 's/l_ca = 1.667, //'
 e missing-l_cb 'l_cb: missing' 's/, l_cb = 1.222//'
 e missing-l_cs3 'l_cs3: missing' 's/l_cs3 = 2.31, //'

@@ -56,8 +56,8 @@ expect_input_error sixbar-l1-too-long-phi-start '&sixbar: step [0-9]+ \(phi1 = [
   "$(deck_with sx_l1_long2 "$sx_ref" 's/l1 = 0.100/l1 = 0.2/; s/start_at_extreme = .true., /phi_start = 0, /')" 3
 
 # --- input errors: exit 2, one line naming deck, group, variable and reason
-expect_input_error sixbar-unknown-variable '&sixbar: namelist error: .*foo' "$(deck_with sx_unknown "$sx_ref" 's/m1 = 50/m1 = 50, foo = 1/')"
-expect_input_error sixbar-wrong-type '&sixbar: namelist error' "$(deck_with sx_type "$sx_ref" 's/l1 = 0.100/l1 = abc/')"
+expect_input_error sixbar-unknown-variable "&sixbar: foo = 1: unknown variable 'foo'" "$(deck_with sx_unknown "$sx_ref" 's/m1 = 50/m1 = 50, foo = 1/')"
+expect_input_error sixbar-wrong-type "&sixbar: l1 = abc: 'abc' is not a number" "$(deck_with sx_type "$sx_ref" 's/l1 = 0.100/l1 = abc/')"
 expect_input_error sixbar-missing-a '&sixbar: a: missing' "$(deck_with sx_no_a "$sx_ref" 's/a = 0.170, //')"
 expect_input_error sixbar-missing-b '&sixbar: b: missing' "$(deck_with sx_no_b "$sx_ref" 's/b = 0.340, //')"
 expect_input_error sixbar-d-at-a '&sixbar: b: a and b must not both be 0' "$(deck_with sx_d0 "$sx_ref" 's/a = 0.170, b = 0.340/a = 0, b = 0/')"
@@ -84,7 +84,7 @@ expect_input_error sixbar-f5-wrong-length '&sixbar: f5: expected 13 values' "$(d
 expect_input_error sixbar-f5-missing '&sixbar: f5: missing' "$(deck_with sx_f5none "$sx_ref" '/f5 =/d')"
 expect_input_error sixbar-f5-gap '&sixbar: f5: values must be given without gaps' "$(deck_with sx_f5gap "$sx_ref" 's/f5 = 7\*1000, 6\*0/f5(1) = 1, f5(3) = 2/')"
 expect_input_error sixbar-f5-nan '&sixbar: f5\(2\): must be a finite number' "$(deck_with sx_f5nan "$sx_ref" 's/f5 = 7\*1000, 6\*0/f5 = 1, NaN, 11*0/')"
-expect_input_error sixbar-legacy-not-logical '&sixbar: namelist error' "$(deck_with sx_legbad "$sx_ref" 's/^\//  legacy_eq2 = 2.5\n\//')"
+expect_input_error sixbar-legacy-not-logical '&sixbar: legacy_eq2 = 2.5: 2.5 is not a logical value' "$(deck_with sx_legbad "$sx_ref" 's/^\//  legacy_eq2 = 2.5\n\//')"
 expect_input_error sixbar-unterminated '&sixbar: namelist' "$(deck_with sx_unterminated "$sx_ref" '/^\//d')"
 
 # --- the manual's worked example (one position, phi1 = 66.8 deg, g = 10): golden CSV; with

@@ -60,3 +60,49 @@ expect_exit svg-pairs-needs-svg 1 data/pr3207.nml --pairs F16
 # the gear decks: one vector panel per stage, no hodograph
 grep -q '>stage 2</text>' "$cli_tmp/gears_reducer.svg" && ! grep -q 'class="hodograph"' "$cli_tmp/gears_reducer.svg" \
   && pass || fail svg-gears-stages "no stage panels, or a hodograph of stages"
+
+# --at K: every linkage deck drawn at one step (xmllint, self-contained, PNG of A4 size, not
+# blank), and the forces listed on the sheet carry the CSV's magnitudes (to the 3-4 digits
+# shown: relative 0.5 %, or 0.5 N at 100 N and above)
+for spec in pr3207:2 pr3050:4 sixbar:2 sixbar_example:1 assur_pr3207:2 assur_sixbar:2 assur_slider_crank:3 assur_pr3050:3; do
+  name=${spec%%:*}; k=${spec##*:}
+  run_ks "data/$name.nml" --format svg --at "$k"
+  if [ "$rc" -ne 0 ]; then fail "svg-at-runs-$name" "rc=$rc: $(head -c 300 "$err")"; continue; fi
+  cp "$out" "$cli_tmp/${name}_at.svg"
+  xmllint --noout "$cli_tmp/${name}_at.svg" 2>"$cli_tmp/xmllint.err" && pass \
+    || fail "svg-at-xmllint-$name" "$(head -5 "$cli_tmp/xmllint.err")"
+  python3 "$svg_check" self-contained "$cli_tmp/${name}_at.svg" >"$cli_tmp/check.out" 2>&1 \
+    && pass || fail "svg-at-self-contained-$name" "$(cat "$cli_tmp/check.out")"
+  if rsvg-convert -o "$cli_tmp/${name}_at.png" "$cli_tmp/${name}_at.svg" 2>"$cli_tmp/rsvg.err"; then
+    python3 "$svg_check" png "$cli_tmp/${name}_at.png" "$cli_tmp/${name}_at.svg" >"$cli_tmp/check.out" 2>&1 \
+      && pass || fail "svg-at-png-$name" "$(cat "$cli_tmp/check.out")"
+  else
+    fail "svg-at-render-$name" "rsvg-convert failed: $(head -3 "$cli_tmp/rsvg.err")"
+  fi
+  run_ks "data/$name.nml" --format csv; cp "$out" "$cli_tmp/$name.csv"
+  python3 - "$cli_tmp/${name}_at.svg" "$cli_tmp/$name.csv" "$k" <<'PY' >"$cli_tmp/check.out" 2>&1 \
+    && pass || fail "svg-at-forces-$name" "$(cat "$cli_tmp/check.out")"
+import csv, re, sys
+svg, table, k = open(sys.argv[1]).read(), list(csv.DictReader(open(sys.argv[2]))), int(sys.argv[3])
+row = table[k - 1]
+listed = dict(re.findall(r">(F\w+) = (-?[0-9.]+) N(?: at [0-9.]+ deg)?</text>", svg))
+pairs = [c for c in row if c + "G" in row]
+missing = [p for p in pairs if p not in listed]
+assert not missing, f"pair forces not on the sheet: {missing}"
+for p in pairs:
+    expected, shown = abs(float(row[p])), float(listed[p])
+    assert abs(shown - expected) <= max(0.5, 0.005 * expected), f"{p}: sheet {shown} N, CSV {expected} N"
+print(f"{len(pairs)} pair forces as in the CSV")
+PY
+done
+# the drawings' errors: a step out of range, a mechanism that is not drawn, --at without svg
+run_ks data/pr3207.nml --format svg --at 14
+[ "$rc" -eq 1 ] && grep -q '^kinetostat: error: --at 14: data/pr3207.nml has 13 steps (1..13)$' "$err" \
+  && pass || fail svg-at-range "rc=$rc: $(cat "$err")"
+for deck in data/cam_flat.nml data/gears_reducer.nml; do
+  run_ks "$deck" --format svg --at 1
+  [ "$rc" -eq 1 ] && grep -q "^kinetostat: error: $deck: &[a-z]*: --at: this mechanism is not drawn" "$err" && [ ! -s "$out" ] \
+    && pass || fail "svg-at-not-drawn-$(basename "$deck" .nml)" "rc=$rc: $(cat "$err")"
+done
+expect_exit svg-at-needs-svg 1 data/pr3207.nml --at 2
+expect_exit svg-at-zero 1 data/pr3207.nml --format svg --at 0

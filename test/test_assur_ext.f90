@@ -1,8 +1,8 @@
 !> Tests of the generic engine's extensions for other people's mechanisms: a linear actuator
 !> as driver (data/assur_pr3050.nml against the dedicated PR 3050 program, a perturbed deck
 !> rejected by the same comparison; F_drive by the power balance of a slider-crank driven
-!> by its slider).
-module test_assur_drive
+!> by its slider); load tables over a link's position checked by hand.
+module test_assur_ext
   use kinetostat_kinds, only: wp, deg_to_rad
   use kinetostat_error, only: error_t
   use kinetostat_vec2, only: magnitude
@@ -16,15 +16,16 @@ module test_assur_drive
   use test_harness, only: test_counts_t, check_close, check_true
   implicit none
   private
-  public :: run_assur_drive_tests
+  public :: run_assur_ext_tests
 
 contains
 
-  subroutine run_assur_drive_tests(t)
+  subroutine run_assur_ext_tests(t)
     type(test_counts_t), intent(inout) :: t
     call test_pr3050_vs_dedicated(t)
     call test_actuator_slider_crank(t)
-  end subroutine run_assur_drive_tests
+    call test_load_table_by_hand(t)
+  end subroutine run_assur_ext_tests
 
   !> Largest relative difference (to the step's largest force) between the generic PR 3050
   !> deck's F14, F34, F32 = -F23 (vectors) and F_drive and the dedicated program's F14, F34,
@@ -142,4 +143,75 @@ contains
     end do
   end subroutine test_actuator_slider_crank
 
-end module test_assur_drive
+  !> Load tables over the slider's position on data/assur_slider_crank.nml, by hand: the
+  !> slider B = (x, e) with x = r cos(phi) + sqrt(l^2 - (e - r sin(phi))^2) (its stroke from
+  !> the guide point (0, e)); a linear table F = 2000*(x - 0.2) N and a triangle 0 at 0.2 m,
+  !> 300 N at 0.35 m, 0 at 0.5 m; a moment table over the rod's angle (deg, modulo 360).
+  subroutine test_load_table_by_hand(t)
+    type(test_counts_t), intent(inout) :: t
+    real(wp), parameter :: r = 0.1_wp, l = 0.35_wp, e = 0.02_wp
+    character(len=*), parameter :: window = "force(1)%value = 500, force(1)%idle = 100, force(1)%phi_on = 0, "// &
+      "force(1)%phi_off = 180"
+    type(assur_deck_t) :: deck
+    type(error_t), allocatable :: error
+    real(wp) :: phi, x, expected, th
+    character(len=40) :: at
+    integer :: k, variant
+    character(len=:), allocatable :: replacement
+    do variant = 1, 3
+      select case (variant)
+      case (1)
+        replacement = "force(1)%table = 0.2, 0, 0.5, 600"
+      case (2)
+        replacement = "force(1)%table = 0.2, 0, 0.35, 300, 0.5, 0"
+      case default
+        replacement = "force(1)%value = 500, moment(1)%link = 2, moment(1)%over = 2, "// &
+          "moment(1)%table = -90, -9, 90, 9"
+      end select
+      call read_edited("data/assur_slider_crank.nml", window, replacement, deck, error)
+      if (allocated(error)) then
+        call check_true(t, "load table deck "//replacement, .false., error%message)
+        cycle
+      end if
+      do k = 1, deck%n
+        phi = deck%phi1_deg(k) * deg_to_rad
+        x = r * cos(phi) + sqrt(l**2 - (e - r * sin(phi))**2)
+        write (at, '(" at phi1=",f6.1)') deck%phi1_deg(k)
+        select case (variant)
+        case (1)
+          expected = 2000.0_wp * (x - 0.2_wp)
+          call check_close(t, "linear load table"//trim(at), expected, deck%f_mag(1, k), 1.0e-12_wp, 1.0e-12_wp)
+        case (2)
+          expected = 300.0_wp * (1.0_wp - abs(x - 0.35_wp) / 0.15_wp)
+          call check_close(t, "triangle load table"//trim(at), expected, deck%f_mag(1, k), 1.0e-12_wp, 1.0e-12_wp)
+        case default
+          ! rod angle th: sin(th) = (e - r sin(phi))/l, |th| < 90 deg: M = 0.1 N*m per deg
+          th = asin((e - r * sin(phi)) / l) * 180.0_wp / acos(-1.0_wp)
+          call check_close(t, "moment table over the rod's angle"//trim(at), 0.1_wp * th, deck%m_mag(1, k), &
+                           1.0e-12_wp, 1.0e-12_wp)
+        end select
+      end do
+    end do
+  end subroutine test_load_table_by_hand
+
+  !> Read deck `path` with the first `old` replaced by `new`.
+  subroutine read_edited(path, old, new, deck, error)
+    character(*), intent(in) :: path, old, new
+    type(assur_deck_t), intent(out) :: deck
+    type(error_t), allocatable, intent(out) :: error
+    type(deck_source_t) :: source
+    character(len=:), allocatable :: text
+    integer :: i, at
+    call load_deck(path, source, error)
+    if (allocated(error)) return
+    text = ""
+    do i = 1, size(source%lines)
+      text = text//trim(source%lines(i))//new_line("a")
+    end do
+    at = index(text, old)
+    if (at > 0) text = text(:at - 1)//new//text(at + len(old):)
+    call deck_source_from_text(path, text, source)
+    call read_assur_deck(source, deck, error)
+  end subroutine read_edited
+
+end module test_assur_ext

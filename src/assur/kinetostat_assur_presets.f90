@@ -1,0 +1,80 @@
+!> Presets of the generic engine (&assur decks) that `kinetostat template NAME` prints: a
+!> crank-rocker four-bar and an engine slider-crank with a gas force on the piston. They are
+!> the tutorial's decks (docs/examples/, compared byte for byte by test/cli/test_templates.sh).
+module kinetostat_assur_presets
+  use kinetostat_text_buffer, only: text_buffer_t
+  use kinetostat_deck, only: write_template_lines
+  implicit none
+  private
+  public :: assur_preset, preset_names
+
+  !> Names of the presets, for messages and --help.
+  character(*), parameter :: preset_names = "fourbar, engine"
+
+  !> `kinetostat template fourbar`: a crank-rocker four-bar (docs/examples/fourbar.nml).
+  character(*), parameter :: fourbar_lines(*) = [character(len=80) :: &
+    "! A crank-rocker four-bar: frame 0, crank 1 (AB), coupler 2 (BC), rocker 3 (DC).", &
+    "&assur", &
+    "  title = 'crank-rocker four-bar'", &
+    "  frame_id = 0, crank_id = 1", &
+    "  crank_at = 0, 0                ! m, crank pivot A", &
+    "  omega1 = 20                    ! rad/s, counter-clockwise", &
+    "  phi_start = 0, dphi = 15       ! deg", &
+    "  ! dyad 1: RRR. Coupler 2 pinned to the crank pin B = (0.1, 0) of link 1,", &
+    "  ! rocker 3 pivoted on the frame at D = (0.3, 0); BC = 0.35 m, DC = 0.25 m.", &
+    "  dyad(1)%kind = 1, dyad(1)%link2 = 2, dyad(1)%link3 = 3", &
+    "  dyad(1)%on2 = 1, dyad(1)%at2 = 0.1, 0", &
+    "  dyad(1)%on3 = 0, dyad(1)%at3 = 0.3, 0", &
+    "  dyad(1)%l2 = 0.35, dyad(1)%l3 = 0.25, dyad(1)%mode = 1", &
+    "  dyad(1)%m2 = 1.0, dyad(1)%j2 = 0.0102, dyad(1)%s2 = 0.175, 0", &
+    "  dyad(1)%m3 = 0.8, dyad(1)%j3 = 0.0042, dyad(1)%s3 = 0.125, 0", &
+    "  ! a resisting moment of 20 N*m on the rocker (clockwise)", &
+    "  moment(1)%link = 3, moment(1)%value = -20", &
+    "/"]
+
+  !> `kinetostat template engine`: an engine slider-crank with a gas force on the piston
+  !> (docs/examples/engine.nml).
+  character(*), parameter :: engine_lines(*) = [character(len=94) :: &
+    "! An engine slider-crank: frame 0, crank 1 (AB), connecting rod 2 (BC), piston 3 (C).", &
+    "! The gas force on the piston is tabulated per step (from an indicator diagram).", &
+    "&assur", &
+    "  title = 'engine slider-crank with a gas force'", &
+    "  frame_id = 0, crank_id = 1", &
+    "  crank_at = 0, 0", &
+    "  crank_m = 3.0, crank_j = 0.004, crank_s = 0, 0   ! counterweighted: centre on the pivot", &
+    "  omega1 = 300                   ! rad/s (2865 rpm), counter-clockwise", &
+    "  phi_start = 0, dphi = 30       ! deg; 0 = top dead centre (piston at its largest x)", &
+    "  dyad(1)%kind = 2, dyad(1)%link2 = 2, dyad(1)%link3 = 3", &
+    "  dyad(1)%on2 = 1, dyad(1)%at2 = 0.05, 0     ! m, crank pin B (crank radius 50 mm)", &
+    "  dyad(1)%on3 = 0, dyad(1)%at3 = 0, 0        ! the cylinder axis: the x-axis through A", &
+    "  dyad(1)%angle3 = 0", &
+    "  dyad(1)%l2 = 0.2, dyad(1)%mode = 1         ! rod 200 mm; piston at x > 0", &
+    "  dyad(1)%m2 = 1.2, dyad(1)%j2 = 0.005, dyad(1)%s2 = 0.06, 0", &
+    "  dyad(1)%m3 = 0.8", &
+    "  ! gas force on the piston, towards the crank (-x), one value per step (N)", &
+    "  force(1)%link = 3, force(1)%at = 0, 0, force(1)%angle = 180, force(1)%column = 1", &
+    "  step_values = 12000, 9000, 5000, 2800, 1700, 1200, 1000, 1100, 1500, 2400, 4200, 7500, 12000", &
+    "/"]
+
+contains
+
+  !> The preset deck called `name` into `out`; `found` is false for an unknown name.
+  pure subroutine assur_preset(name, out, found)
+    !> Preset name ("fourbar", "engine").
+    character(*), intent(in) :: name
+    !> Where the deck's lines go.
+    type(text_buffer_t), intent(inout) :: out
+    !> Whether `name` is a preset.
+    logical, intent(out) :: found
+    found = .true.
+    select case (name)
+    case ("fourbar")
+      call write_template_lines(out, fourbar_lines)
+    case ("engine")
+      call write_template_lines(out, engine_lines)
+    case default
+      found = .false.
+    end select
+  end subroutine assur_preset
+
+end module kinetostat_assur_presets

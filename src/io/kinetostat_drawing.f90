@@ -1,0 +1,498 @@
+!> The drawing of a mechanism at one step, for `--format svg --at K`: what a course-project
+!> force-plan sheet shows, in a small vocabulary that kinetostat_svg_mechanism draws to scale.
+!> - points (m, the mechanism's position frame): joints, frame pivots, centres of mass;
+!> - bodies: a link as a bar (or plate) through named points, a slider as a block at a
+!>   point, oriented along its sliding direction;
+!> - guides: straight lines fixed on the frame (drawn hatched);
+!> - forces (N, the position frame) applied at a point: pair forces, external loads,
+!>   gravity, inertia forces; moments (N*m, counterclockwise positive) at a point.
+!> `view_angle` turns the whole drawing on the sheet (so that gravity points down).
+!> `drawing_from_sketch` builds the points, bodies and guides from the mechanism's topology
+!> (kinetostat_sketch) and the kinematics columns of one row; the mechanism's `force_plan`
+!> then adds the forces, with the helpers here that read pair forces (<F>_x, <F>_y with their
+!> frame angle) and accelerations from the table.
+module kinetostat_drawing
+  use kinetostat_kinds, only: wp, pi, deg_to_rad
+  use kinetostat_error, only: error_t, fatal_error, exit_usage
+  use kinetostat_step_table, only: step_table_t
+  use kinetostat_sketch, only: sketch_t
+  implicit none
+  private
+  public :: drawing_from_sketch
+  public :: drawing_t, drawing_point_t, drawing_body_t, drawing_guide_t, drawing_force_t, drawing_moment_t
+  public :: point_joint, point_pivot, point_com, point_plain, body_bar, body_block
+  public :: force_pair, force_load, force_gravity, force_inertia, force_kind_names
+
+  !> Point kind: a revolute joint between moving links.
+  integer, parameter :: point_joint = 1
+  !> Point kind: a revolute joint with the frame (drawn with the ground symbol).
+  integer, parameter :: point_pivot = 2
+  !> Point kind: a centre of mass.
+  integer, parameter :: point_com = 3
+  !> Point kind: a construction point (an end of a bar, a slider's reference point): not
+  !> drawn, not named on the sheet.
+  integer, parameter :: point_plain = 4
+  !> Body kind: a bar (two points) or a plate (three or more) through its points.
+  integer, parameter :: body_bar = 1
+  !> Body kind: a slider block at one point, along `angle`.
+  integer, parameter :: body_block = 2
+  !> Force kind: a force in a kinematic pair.
+  integer, parameter :: force_pair = 1
+  !> Force kind: an external load (or the driving force).
+  integer, parameter :: force_load = 2
+  !> Force kind: a weight.
+  integer, parameter :: force_gravity = 3
+  !> Force kind: an inertia force (or the inertia moment).
+  integer, parameter :: force_inertia = 4
+  !> Names of the force kinds, for the legend.
+  character(*), parameter :: force_kind_names(*) = [character(len=16) :: "pair force", "load", "weight", &
+    "inertia"]
+
+  !> A named point.
+  type :: drawing_point_t
+    !> Name ("B", "S3").
+    character(len=16) :: name = ""
+    !> Position, m.
+    real(wp) :: p(2) = 0.0_wp
+    !> point_joint, point_pivot or point_com.
+    integer :: kind = point_joint
+  end type drawing_point_t
+
+  !> A link's body.
+  type :: drawing_body_t
+    !> Link name ("3").
+    character(len=16) :: name = ""
+    !> body_bar or body_block.
+    integer :: kind = body_bar
+    !> Indices of its points in drawing_t%points.
+    integer, allocatable :: points(:)
+    !> Block: sliding direction, rad (position frame).
+    real(wp) :: angle = 0.0_wp
+  end type drawing_body_t
+
+  !> A straight guide on the frame.
+  type :: drawing_guide_t
+    !> Its middle, m.
+    real(wp) :: p(2) = 0.0_wp
+    !> Direction, rad.
+    real(wp) :: angle = 0.0_wp
+    !> Half its length, m.
+    real(wp) :: half_length = 0.0_wp
+  end type drawing_guide_t
+
+  !> A force at a point.
+  type :: drawing_force_t
+    !> Name ("F21", "G3", "Phi3").
+    character(len=16) :: name = ""
+    !> force_pair, force_load, force_gravity or force_inertia.
+    integer :: kind = force_pair
+    !> Point of application, m.
+    real(wp) :: at(2) = 0.0_wp
+    !> The force, N (position frame).
+    real(wp) :: f(2) = 0.0_wp
+  end type drawing_force_t
+
+  !> A moment at a point.
+  type :: drawing_moment_t
+    !> Name ("M1", "MPhi3").
+    character(len=16) :: name = ""
+    !> force_load (driving) or force_inertia.
+    integer :: kind = force_load
+    !> Where it is drawn, m.
+    real(wp) :: at(2) = 0.0_wp
+    !> Value, N*m, counterclockwise positive.
+    real(wp) :: value = 0.0_wp
+  end type drawing_moment_t
+
+  !> The whole sketch.
+  type :: drawing_t
+    !> Turn of the drawing on the sheet, rad (counterclockwise).
+    real(wp) :: view_angle = 0.0_wp
+    !> What the frame's turn means, for the caption ("gravity points down").
+    character(len=:), allocatable :: view_note
+    type(drawing_point_t), allocatable :: points(:)
+    type(drawing_body_t), allocatable :: bodies(:)
+    type(drawing_guide_t), allocatable :: guides(:)
+    type(drawing_force_t), allocatable :: forces(:)
+    type(drawing_moment_t), allocatable :: moments(:)
+  contains
+    procedure :: add_point
+    procedure :: point_index
+    procedure :: at
+    procedure :: add_bar
+    procedure :: add_block
+    procedure :: add_guide
+    procedure :: add_force
+    procedure :: add_moment
+    procedure :: point_from_table
+    procedure :: pair_from_table
+    procedure :: add_link_loads
+    procedure :: add_guide_over_rows
+  end type drawing_t
+
+contains
+
+  !> Add (or move) a point.
+  pure subroutine add_point(self, name, p, kind)
+    class(drawing_t), intent(inout) :: self
+    !> Name.
+    character(*), intent(in) :: name
+    !> Position, m.
+    real(wp), intent(in) :: p(2)
+    !> point_* kind.
+    integer, intent(in) :: kind
+    type(drawing_point_t), allocatable :: grown(:)
+    integer :: i
+    if (.not. allocated(self%points)) allocate (self%points(0))
+    i = self%point_index(name)
+    if (i == 0) then
+      allocate (grown(size(self%points) + 1))
+      grown(1:size(self%points)) = self%points
+      call move_alloc(grown, self%points)
+      i = size(self%points)
+    end if
+    self%points(i)%name = name
+    self%points(i)%p = p
+    self%points(i)%kind = kind
+  end subroutine add_point
+
+  !> Index of the point called `name` (0 if none).
+  pure integer function point_index(self, name)
+    class(drawing_t), intent(in) :: self
+    !> Name.
+    character(*), intent(in) :: name
+    integer :: i
+    point_index = 0
+    if (.not. allocated(self%points)) return
+    do i = 1, size(self%points)
+      if (self%points(i)%name == name) then
+        point_index = i
+        return
+      end if
+    end do
+  end function point_index
+
+  !> Position of the point called `name`, m ((0, 0) if there is none).
+  pure function at(self, name) result(p)
+    class(drawing_t), intent(in) :: self
+    !> Name.
+    character(*), intent(in) :: name
+    real(wp) :: p(2)
+    integer :: i
+    p = 0.0_wp
+    i = self%point_index(name)
+    if (i > 0) p = self%points(i)%p
+  end function at
+
+  pure subroutine push_body(self, body)
+    class(drawing_t), intent(inout) :: self
+    type(drawing_body_t), intent(in) :: body
+    type(drawing_body_t), allocatable :: grown(:)
+    integer :: i
+    if (.not. allocated(self%bodies)) allocate (self%bodies(0))
+    allocate (grown(size(self%bodies) + 1))
+    do i = 1, size(self%bodies)
+      grown(i) = self%bodies(i)
+    end do
+    grown(size(grown)) = body
+    call move_alloc(grown, self%bodies)
+  end subroutine push_body
+
+  !> A link drawn as a bar (plate) through named points (unknown names are left out).
+  pure subroutine add_bar(self, name, points)
+    class(drawing_t), intent(inout) :: self
+    !> Link name.
+    character(*), intent(in) :: name
+    !> Its points, in drawing order.
+    character(*), intent(in) :: points(:)
+    type(drawing_body_t) :: body
+    integer :: i, j
+    body%name = name
+    body%kind = body_bar
+    allocate (body%points(0))
+    do i = 1, size(points)
+      j = self%point_index(trim(points(i)))
+      if (j > 0) body%points = [body%points, j]
+    end do
+    call push_body(self, body)
+  end subroutine add_bar
+
+  !> A slider block at a named point, sliding along `angle` (rad).
+  pure subroutine add_block(self, name, point, angle)
+    class(drawing_t), intent(inout) :: self
+    !> Link name.
+    character(*), intent(in) :: name
+    !> Point name.
+    character(*), intent(in) :: point
+    !> Sliding direction, rad.
+    real(wp), intent(in) :: angle
+    type(drawing_body_t) :: body
+    body%name = name
+    body%kind = body_block
+    body%points = [self%point_index(point)]
+    body%angle = angle
+    if (body%points(1) > 0) call push_body(self, body)
+  end subroutine add_block
+
+  !> A guide on the frame through `p` (m) along `angle` (rad), `half_length` (m) each way.
+  pure subroutine add_guide(self, p, angle, half_length)
+    class(drawing_t), intent(inout) :: self
+    !> Middle, m.
+    real(wp), intent(in) :: p(2)
+    !> Direction, rad.
+    real(wp), intent(in) :: angle
+    !> Half length, m.
+    real(wp), intent(in) :: half_length
+    if (.not. allocated(self%guides)) allocate (self%guides(0))
+    self%guides = [self%guides, drawing_guide_t(p, angle, half_length)]
+  end subroutine add_guide
+
+  !> A force `f` (N) of a kind, applied at `p` (m).
+  pure subroutine add_force(self, name, kind, p, f)
+    class(drawing_t), intent(inout) :: self
+    !> Name.
+    character(*), intent(in) :: name
+    !> force_* kind.
+    integer, intent(in) :: kind
+    !> Point of application, m.
+    real(wp), intent(in) :: p(2)
+    !> Force, N.
+    real(wp), intent(in) :: f(2)
+    type(drawing_force_t) :: force
+    if (.not. allocated(self%forces)) allocate (self%forces(0))
+    force%name = name
+    force%kind = kind
+    force%at = p
+    force%f = f
+    self%forces = [self%forces, force]
+  end subroutine add_force
+
+  !> A moment (N*m, counterclockwise positive) of a kind at `p` (m).
+  pure subroutine add_moment(self, name, kind, p, value)
+    class(drawing_t), intent(inout) :: self
+    !> Name.
+    character(*), intent(in) :: name
+    !> force_load or force_inertia.
+    integer, intent(in) :: kind
+    !> Where, m.
+    real(wp), intent(in) :: p(2)
+    !> Value, N*m.
+    real(wp), intent(in) :: value
+    type(drawing_moment_t) :: moment
+    if (.not. allocated(self%moments)) allocate (self%moments(0))
+    moment%name = name
+    moment%kind = kind
+    moment%at = p
+    moment%value = value
+    self%moments = [self%moments, moment]
+  end subroutine add_moment
+
+  !> Point `name` of kind `kind` at the position the kinematics columns x_<name>, y_<name>
+  !> of row `k` give; an error when the table has no such columns.
+  pure subroutine point_from_table(self, table, k, name, kind, error)
+    class(drawing_t), intent(inout) :: self
+    !> The results with their kinematics columns.
+    type(step_table_t), intent(in) :: table
+    !> Row.
+    integer, intent(in) :: k
+    !> Point name.
+    character(*), intent(in) :: name
+    !> point_* kind.
+    integer, intent(in) :: kind
+    !> No position columns for this point.
+    type(error_t), allocatable, intent(out) :: error
+    integer :: cx, cy
+    cx = table%column_index("x_"//name)
+    cy = table%column_index("y_"//name)
+    if (cx == 0 .or. cy == 0) then
+      call fatal_error(error, exit_usage, table%deck//": &"//table%mechanism//": --at: no position of point "// &
+        name//" in the results (x_"//name//", y_"//name//")")
+      return
+    end if
+    call self%add_point(name, [table%rows(cx, k), table%rows(cy, k)], kind)
+  end subroutine point_from_table
+
+  !> Pair force `name` at the point called `point`, from the component columns <name>_x,
+  !> <name>_y of row `k`, turned from their frame (the column's frame_angle) into the
+  !> position frame; an error when the table has no such columns.
+  pure subroutine pair_from_table(self, table, k, name, point, error)
+    class(drawing_t), intent(inout) :: self
+    !> The results with their kinematics columns.
+    type(step_table_t), intent(in) :: table
+    !> Row.
+    integer, intent(in) :: k
+    !> Force name ("F21").
+    character(*), intent(in) :: name
+    !> Point of application (a point added before).
+    character(*), intent(in) :: point
+    !> No component columns for this force.
+    type(error_t), allocatable, intent(out) :: error
+    integer :: cx, cy
+    real(wp) :: f(2), a
+    cx = table%column_index(name//"_x")
+    cy = table%column_index(name//"_y")
+    if (cx == 0 .or. cy == 0) then
+      call fatal_error(error, exit_usage, table%deck//": &"//table%mechanism//": --at: no components of "// &
+        name//" in the results ("//name//"_x, "//name//"_y)")
+      return
+    end if
+    f = [table%rows(cx, k), table%rows(cy, k)]
+    a = table%columns(cx)%frame_angle * deg_to_rad
+    call self%add_force(name, force_pair, self%at(point), [cos(a) * f(1) - sin(a) * f(2), sin(a) * f(1) + cos(a) * f(2)])
+  end subroutine pair_from_table
+
+  !> The loads of a moving link at row `k`: its weight G<link> = mass * gravity and inertia
+  !> force Phi<link> = -mass * a (from the columns ax_<com>, ay_<com>), both at the point
+  !> `at`, and its inertia moment MPhi<link> = -inertia * eps<link> (column eps<link>).
+  !> Zero masses and moments of inertia add nothing; missing columns count as zero.
+  pure subroutine add_link_loads(self, table, k, link, at, com, mass, inertia, gravity)
+    class(drawing_t), intent(inout) :: self
+    !> The results with their kinematics columns.
+    type(step_table_t), intent(in) :: table
+    !> Row.
+    integer, intent(in) :: k
+    !> Link name ("3").
+    character(*), intent(in) :: link
+    !> Point where the loads are drawn (the centre of mass, or the point it coincides with).
+    character(*), intent(in) :: at
+    !> Name of the centre of mass in the acceleration columns ("S3").
+    character(*), intent(in) :: com
+    !> Mass, kg.
+    real(wp), intent(in) :: mass
+    !> Moment of inertia about the centre of mass, kg*m^2.
+    real(wp), intent(in) :: inertia
+    !> Gravity vector, m/s^2 (position frame).
+    real(wp), intent(in) :: gravity(2)
+    real(wp) :: a(2), eps
+    if (mass > 0.0_wp) then
+      if (any(gravity /= 0.0_wp)) call self%add_force("G"//link, force_gravity, self%at(at), mass * gravity)
+      a = [column_value(table, "ax_"//com, k), column_value(table, "ay_"//com, k)]
+      if (any(a /= 0.0_wp)) call self%add_force("Phi"//link, force_inertia, self%at(at), -mass * a)
+    end if
+    eps = column_value(table, "eps"//link, k)
+    if (inertia > 0.0_wp .and. eps /= 0.0_wp) then
+      call self%add_moment("MPhi"//link, force_inertia, self%at(at), -inertia * eps)
+    end if
+  end subroutine add_link_loads
+
+  !> A guide on the frame along `angle` (rad) through the positions point `name` takes over
+  !> all rows of the table (x_<name>, y_<name>), `margin` (m) longer at each end: the travel
+  !> of a slider, whatever the row drawn.
+  pure subroutine add_guide_over_rows(self, table, name, angle, margin)
+    class(drawing_t), intent(inout) :: self
+    !> The results with their kinematics columns.
+    type(step_table_t), intent(in) :: table
+    !> Point name.
+    character(*), intent(in) :: name
+    !> Direction, rad.
+    real(wp), intent(in) :: angle
+    !> Extra length at each end, m.
+    real(wp), intent(in) :: margin
+    real(wp), allocatable :: s(:)
+    real(wp) :: u(2), p0(2)
+    integer :: cx, cy
+    cx = table%column_index("x_"//name)
+    cy = table%column_index("y_"//name)
+    if (cx == 0 .or. cy == 0 .or. table%row_count() == 0) return
+    allocate (s(0)) ! defined before the assignment (gcc's -Wmaybe-uninitialized on the descriptor)
+    u = [cos(angle), sin(angle)]
+    s = u(1) * table%rows(cx, :) + u(2) * table%rows(cy, :)
+    p0 = [table%rows(cx, 1), table%rows(cy, 1)]
+    p0 = p0 + (0.5_wp * (minval(s) + maxval(s)) - dot_product(u, p0)) * u
+    call self%add_guide(p0, angle, 0.5_wp * (maxval(s) - minval(s)) + margin)
+  end subroutine add_guide_over_rows
+
+  !> The points, bodies and guides of row `k` from the mechanism's topology `topo` and the
+  !> kinematics columns: every point a link, pivot or guide names (x_<P>, y_<P>; pivots with
+  !> the ground symbol), the centre of mass S<i> of every link i the table has; links as bars
+  !> through their points, blocks at their point along angle + phi<along>; guides on the
+  !> frame over the travel of their point (guides on a moving link are its bar); the sheet
+  !> turned so that `topo%down` points down.
+  pure subroutine drawing_from_sketch(topo, table, k, drawing, error)
+    !> The mechanism's topology (available).
+    type(sketch_t), intent(in) :: topo
+    !> The results with their kinematics columns.
+    type(step_table_t), intent(in) :: table
+    !> Row.
+    integer, intent(in) :: k
+    !> The drawing (without forces).
+    type(drawing_t), intent(out) :: drawing
+    !> A named point without position columns.
+    type(error_t), allocatable, intent(out) :: error
+    integer :: i, j, kind
+    real(wp) :: angle, size_scale, lo(2), hi(2)
+    character(len=:), allocatable :: along
+    drawing%view_angle = -0.5_wp * pi - atan2(topo%down(2), topo%down(1))
+    drawing%view_note = "gravity down the sheet"
+    if (allocated(topo%links)) then
+      do i = 1, size(topo%links)
+        do j = 1, size(topo%links(i)%points)
+          kind = point_joint
+          if (allocated(topo%pivots)) then
+            if (any(topo%pivots == topo%links(i)%points(j))) kind = point_pivot
+          end if
+          call drawing%point_from_table(table, k, trim(topo%links(i)%points(j)), kind, error)
+          if (allocated(error)) return
+        end do
+      end do
+      do i = 1, size(topo%links)
+        if (table%column_index("x_S"//topo%links(i)%name) > 0 .and. &
+          drawing%point_index("S"//topo%links(i)%name) == 0) then
+          call drawing%point_from_table(table, k, "S"//topo%links(i)%name, point_com, error)
+          if (allocated(error)) return
+        end if
+      end do
+    end if
+    if (allocated(topo%pivots)) then
+      do i = 1, size(topo%pivots)
+        call drawing%point_from_table(table, k, trim(topo%pivots(i)), point_pivot, error)
+        if (allocated(error)) return
+      end do
+    end if
+    lo = huge(1.0_wp)
+    hi = -huge(1.0_wp)
+    do i = 1, size(drawing%points)
+      lo = min(lo, drawing%points(i)%p)
+      hi = max(hi, drawing%points(i)%p)
+    end do
+    size_scale = max(hi(1) - lo(1), hi(2) - lo(2))
+    if (allocated(topo%links)) then
+      do i = 1, size(topo%links)
+        associate (l => topo%links(i))
+          if (l%block) then
+            along = ""
+            if (allocated(l%along)) along = l%along
+            angle = l%angle * deg_to_rad
+            if (len(along) > 0) angle = angle + column_value(table, "phi"//along, k) * deg_to_rad
+            call drawing%add_block(l%name, trim(l%points(1)), angle)
+            if (size(l%points) > 1) call drawing%add_bar(l%name, l%points)
+          else
+            call drawing%add_bar(l%name, l%points)
+          end if
+        end associate
+      end do
+    end if
+    if (allocated(topo%guides)) then
+      do i = 1, size(topo%guides)
+        associate (g => topo%guides(i))
+          if (allocated(g%on)) then
+            if (len(g%on) > 0) cycle
+          end if
+          call drawing%add_guide_over_rows(table, trim(g%point), g%angle * deg_to_rad, 0.08_wp * size_scale)
+        end associate
+      end do
+    end if
+  end subroutine drawing_from_sketch
+
+  !> Value of column `name` at row `k` (0 when the table has no such column).
+  pure real(wp) function column_value(table, name, k)
+    type(step_table_t), intent(in) :: table
+    character(*), intent(in) :: name
+    integer, intent(in) :: k
+    integer :: c
+    column_value = 0.0_wp
+    c = table%column_index(name)
+    if (c > 0) column_value = table%rows(c, k)
+  end function column_value
+
+end module kinetostat_drawing

@@ -1,0 +1,398 @@
+!> SVG of the mechanism at one step (`--format svg --at K`), drawn to scale like a
+!> course-project force-plan sheet: frame pivots (ground symbol) and guides (hatched),
+!> links as bars or plates, sliders as blocks, joints, centres of mass, and an arrow for
+!> every force of the sketch (pair forces, loads, weights, inertia forces, one force scale),
+!> each labelled with its value ("F21 = 2716 N"), moments as arcs; a length scale bar, a
+!> force scale bar and a list of the forces. The drawing comes from the mechanism's
+!> drawing (kinetostat_drawing: the topology of kinetostat_sketch, positions from the
+!> kinematics columns, forces from the mechanism's force_plan); this module only draws it.
+module kinetostat_svg_mechanism
+  use kinetostat_kinds, only: wp, pi, rad_to_deg, version_string
+  use kinetostat_text, only: int_str
+  use kinetostat_format, only: short_number, fixed_number
+  use kinetostat_step_table, only: step_table_t
+  use kinetostat_text_buffer, only: text_buffer_t
+  use kinetostat_svg, only: svg_open, svg_close, svg_line, svg_path, svg_polyline_d, svg_circle, svg_rect, &
+    svg_text, svg_arrow, svg_polygon, coord
+  use kinetostat_svg_writer, only: nice_step, place_label
+  use kinetostat_drawing, only: drawing_t, point_pivot, point_com, point_plain, body_bar, body_block, force_pair, force_load, &
+    force_gravity, force_inertia, force_kind_names
+  implicit none
+  private
+  public :: write_svg_mechanism
+
+  !> Sheet width (A4), mm.
+  real(wp), parameter :: page_width = 210.0_wp
+  !> Sheet height (A4), mm.
+  real(wp), parameter :: page_height = 297.0_wp
+  !> The drawing's area: left, top, width, height, mm.
+  real(wp), parameter :: area(4) = [12.0_wp, 36.0_wp, 186.0_wp, 175.0_wp]
+  !> Room kept around the mechanism for arrows and labels, mm.
+  real(wp), parameter :: arrow_room = 30.0_wp
+  !> Length of the largest force arrow, mm.
+  real(wp), parameter :: longest_arrow = 28.0_wp
+  !> Colours of the force kinds (pair, load, weight, inertia).
+  character(*), parameter :: kind_colours(*) = [character(len=7) :: "#d62728", "#2ca02c", "#8c564b", "#1f77b4"]
+
+contains
+
+  !> The sheet of the mechanism at row `k` of `table`, drawn from `drawing`.
+  pure subroutine write_svg_mechanism(title, table, k, drawing, out)
+    !> Title of the mechanism.
+    character(*), intent(in) :: title
+    !> The results.
+    type(step_table_t), intent(in) :: table
+    !> Row drawn (1-based).
+    integer, intent(in) :: k
+    !> The mechanism's sketch at that row.
+    type(drawing_t), intent(in) :: drawing
+    !> Where the lines go.
+    type(text_buffer_t), intent(inout) :: out
+    real(wp), allocatable :: px(:), py(:), lx(:), ly(:), lw(:), obst_x(:), obst_y(:)
+    real(wp) :: len_scale, force_scale, ox, oy, cx, cy, xmin, xmax, ymin, ymax, fmax, q(2), tx, ty, t(2)
+    real(wp) :: bar_len, bar_value
+    character(len=:), allocatable :: line, text
+    integer :: i, j, n, nf, nm
+
+    n = 0
+    if (allocated(drawing%points)) n = size(drawing%points)
+    nf = 0
+    if (allocated(drawing%forces)) nf = size(drawing%forces)
+    nm = 0
+    if (allocated(drawing%moments)) nm = size(drawing%moments)
+
+    ! the mechanism turned by view_angle, its box, one length scale for both axes
+    allocate (px(n), py(n))
+    do i = 1, n
+      q = turn(drawing%points(i)%p, drawing%view_angle)
+      px(i) = q(1)
+      py(i) = q(2)
+    end do
+    xmin = huge(1.0_wp)
+    xmax = -huge(1.0_wp)
+    ymin = huge(1.0_wp)
+    ymax = -huge(1.0_wp)
+    if (n > 0) then
+      xmin = minval(px)
+      xmax = maxval(px)
+      ymin = minval(py)
+      ymax = maxval(py)
+    end if
+    if (allocated(drawing%guides)) then
+      do i = 1, size(drawing%guides)
+        associate (g => drawing%guides(i))
+          do j = -1, 1, 2
+            q = turn(g%p + j * g%half_length * [cos(g%angle), sin(g%angle)], drawing%view_angle)
+            xmin = min(xmin, q(1))
+            xmax = max(xmax, q(1))
+            ymin = min(ymin, q(2))
+            ymax = max(ymax, q(2))
+          end do
+        end associate
+      end do
+    end if
+    if (xmax < xmin) then
+      xmin = 0.0_wp
+      xmax = 1.0_wp
+      ymin = 0.0_wp
+      ymax = 1.0_wp
+    end if
+    len_scale = min((area(3) - 2.0_wp * arrow_room) / max(xmax - xmin, 1.0e-9_wp), &
+      (area(4) - 2.0_wp * arrow_room) / max(ymax - ymin, 1.0e-9_wp))
+    cx = area(1) + 0.5_wp * area(3)
+    cy = area(2) + 0.5_wp * area(4)
+    ox = cx - len_scale * 0.5_wp * (xmin + xmax)
+    oy = cy + len_scale * 0.5_wp * (ymin + ymax)
+    px = ox + len_scale * px
+    py = oy - len_scale * py
+    fmax = 0.0_wp
+    do i = 1, nf
+      fmax = max(fmax, hypot(drawing%forces(i)%f(1), drawing%forces(i)%f(2)))
+    end do
+    force_scale = 0.0_wp
+    if (fmax > 0.0_wp) force_scale = longest_arrow / fmax
+
+    call svg_open(out, page_width, page_height, title//" - "//table%deck//" - "//table%row_name//" "//int_str(k), &
+      "kinetostat --format svg --at "//int_str(k)//" sheet of "//table%deck//": the mechanism to scale with "// &
+      "every force of the step as an arrow (one force scale).")
+    call out%put(svg_text(area(1), 15.0_wp, title, 'class="title"'))
+    line = "deck: "//table%deck
+    if (allocated(table%subtitle)) line = line//"   "//table%subtitle
+    call out%put(svg_text(area(1), 20.5_wp, line, 'class="subtitle"'))
+    line = table%row_name//" "//int_str(k)//" of "//int_str(table%row_count())
+    if (table%input_column > 0) line = line//": "//table%columns(table%input_column)%name//" = "// &
+      short_number(table%rows(table%input_column, k))//" "//table%columns(table%input_column)%unit
+    if (allocated(drawing%view_note)) line = line//"; "//drawing%view_note
+    line = line//"; "//version_string
+    call out%put(svg_text(area(1), 25.5_wp, line, 'class="small"'))
+    call out%put(svg_rect(area(1) - 2.0_wp, area(2) - 2.0_wp, area(3) + 4.0_wp, area(4) + 4.0_wp, 'class="panel"'))
+
+    ! obstacles of the labels: the bodies' outlines (as one polyline per body, joined)
+    allocate (obst_x(0), obst_y(0), lx(0), ly(0), lw(0))
+
+    ! guides (hatched on one side)
+    if (allocated(drawing%guides)) then
+      do i = 1, size(drawing%guides)
+        call put_guide(out, drawing, i, ox, oy, len_scale)
+      end do
+    end if
+    ! bodies
+    if (allocated(drawing%bodies)) then
+      do i = 1, size(drawing%bodies)
+        associate (b => drawing%bodies(i))
+          if (b%kind == body_bar .and. size(b%points) >= 2) then
+            if (size(b%points) == 2 .or. polygon_area(px(b%points), py(b%points)) < 1.0_wp) then
+              ! a bar (points on one line): a light band with a dark outline
+              call out%put(svg_path(svg_polyline_d(px(b%points), py(b%points)), 'fill="none" stroke="#000000" '// &
+                'stroke-width="2.2" stroke-linecap="round" stroke-linejoin="round"'))
+              call out%put(svg_path(svg_polyline_d(px(b%points), py(b%points)), 'fill="none" stroke="#e8e8e8" '// &
+                'stroke-width="1.4" stroke-linecap="round" stroke-linejoin="round"'))
+            else
+              call out%put(svg_polygon(px(b%points), py(b%points), 'class="link"'))
+            end if
+            obst_x = [obst_x, px(b%points), px(b%points(1))]
+            obst_y = [obst_y, py(b%points), py(b%points(1))]
+            ! the link's number beside its middle
+            q = [sum(px(b%points)), sum(py(b%points))] / size(b%points)
+            call place_label(len_trim(b%name), q(1), q(2), 0.25_wp * pi, obst_x, obst_y, -1.0e6_wp, -1.0e6_wp, &
+              area(1), area(2), area(3), area(4), lx, ly, lw, tx, ty)
+            call out%put(svg_text(tx, ty + 1.0_wp, trim(b%name), 'class="label" font-style="italic"'// &
+              ' text-anchor="middle"'))
+          end if
+        end associate
+      end do
+      do i = 1, size(drawing%bodies)
+        associate (b => drawing%bodies(i))
+          if (b%kind == body_block) call put_block(out, px(b%points(1)), py(b%points(1)), &
+            b%angle + drawing%view_angle, trim(b%name))
+        end associate
+      end do
+    end if
+    ! joints, pivots, centres of mass
+    do i = 1, n
+      select case (drawing%points(i)%kind)
+      case (point_pivot)
+        call put_pivot(out, px(i), py(i))
+        call out%put(svg_circle(px(i), py(i), 1.1_wp, 'class="joint"'))
+      case (point_com)
+        call out%put(svg_circle(px(i), py(i), 0.9_wp, 'class="com"'))
+      case (point_plain)
+        cycle
+      case default
+        call out%put(svg_circle(px(i), py(i), 1.1_wp, 'class="joint"'))
+      end select
+    end do
+    ! forces: arrows from their points, one scale
+    do i = 1, nf
+      associate (f => drawing%forces(i))
+        if (force_scale <= 0.0_wp .or. hypot(f%f(1), f%f(2)) * force_scale < 0.3_wp) cycle
+        q = turn(f%at, drawing%view_angle)
+        q = [ox + len_scale * q(1), oy - len_scale * q(2)]
+        t = turn(f%f, drawing%view_angle)
+        t = [q(1) + force_scale * t(1), q(2) - force_scale * t(2)]
+        call out%put(svg_arrow(q(1), q(2), t(1), t(2), kind_colours(f%kind), 0.45_wp, 2.4_wp))
+        obst_x = [obst_x, q(1), t(1), q(1)]
+        obst_y = [obst_y, q(2), t(2), q(2)]
+      end associate
+    end do
+    ! moments: arcs around their points
+    do i = 1, nm
+      call put_moment(out, drawing, i, ox, oy, len_scale)
+    end do
+    ! labels: point names, then force values at the arrow tips
+    do i = 1, n
+      if (drawing%points(i)%kind == point_plain) cycle
+      call place_label(len_trim(drawing%points(i)%name), px(i), py(i), 0.75_wp * pi, obst_x, obst_y, &
+        -1.0e6_wp, -1.0e6_wp, area(1), area(2), area(3), area(4), lx, ly, lw, tx, ty)
+      call out%put(svg_text(tx, ty + 0.9_wp, trim(drawing%points(i)%name), 'class="label" text-anchor="middle"'))
+    end do
+    do i = 1, nf
+      associate (f => drawing%forces(i))
+        if (force_scale <= 0.0_wp .or. hypot(f%f(1), f%f(2)) * force_scale < 0.3_wp) cycle
+        q = turn(f%at, drawing%view_angle)
+        q = [ox + len_scale * q(1), oy - len_scale * q(2)]
+        t = turn(f%f, drawing%view_angle)
+        text = trim(f%name)//" = "//short_number(hypot(f%f(1), f%f(2)))//" N"
+        call place_label(len(text), q(1) + force_scale * t(1), q(2) - force_scale * t(2), atan2(-t(2), t(1)), &
+          obst_x, obst_y, -1.0e6_wp, -1.0e6_wp, area(1), area(2), area(3), area(4), lx, ly, lw, tx, ty)
+        call out%put(svg_text(tx, ty + 0.8_wp, text, 'class="num" text-anchor="middle" style="fill: '// &
+          kind_colours(f%kind)//'"'))
+      end associate
+    end do
+
+    ! scales and legend under the drawing
+    ty = area(2) + area(4) + 8.0_wp
+    bar_value = nice_step(40.0_wp / len_scale, 1, .false.)
+    if (bar_value * len_scale > 45.0_wp) bar_value = bar_value / 2.0_wp
+    bar_len = bar_value * len_scale
+    call put_scale(out, area(1), ty, bar_len, "lengths: "//short_number(bar_value)//" m")
+    if (force_scale > 0.0_wp) then
+      bar_value = nice_step(0.8_wp * fmax, 1, .false.)
+      if (bar_value * force_scale > 40.0_wp) bar_value = bar_value / 2.0_wp
+      call put_scale(out, area(1) + 70.0_wp, ty, bar_value * force_scale, "forces: "//short_number(bar_value)//" N")
+    end if
+    do i = 1, size(kind_colours)
+      tx = area(1) + 128.0_wp + 15.0_wp * modulo(i - 1, 2) * 2.0_wp
+      call out%put(svg_line(tx, ty - 3.0_wp + 4.0_wp * ((i - 1) / 2), tx + 5.0_wp, ty - 3.0_wp + 4.0_wp * ((i - 1) / 2), &
+        'stroke="'//kind_colours(i)//'" stroke-width="0.8"'))
+      call out%put(svg_text(tx + 6.5_wp, ty - 2.1_wp + 4.0_wp * ((i - 1) / 2), trim(force_kind_names(i)), 'class="small"'))
+    end do
+    call put_force_list(out, drawing, area(1), ty + 9.0_wp)
+    call svg_close(out)
+  end subroutine write_svg_mechanism
+
+  !> Area of the polygon through the points, mm^2 (shoelace formula).
+  pure real(wp) function polygon_area(x, y)
+    real(wp), intent(in) :: x(:), y(:)
+    integer :: n
+    n = size(x)
+    polygon_area = 0.5_wp * abs(sum(x * cshift(y, 1) - cshift(x, 1) * y))
+    if (n < 3) polygon_area = 0.0_wp
+  end function polygon_area
+
+  !> Vector `v` turned counterclockwise by `angle` (rad).
+  pure function turn(v, angle) result(w)
+    real(wp), intent(in) :: v(2), angle
+    real(wp) :: w(2)
+    w = [cos(angle) * v(1) - sin(angle) * v(2), sin(angle) * v(1) + cos(angle) * v(2)]
+  end function turn
+
+  !> A scale bar of `length` mm at (x, y) with its label.
+  pure subroutine put_scale(out, x, y, length, label)
+    type(text_buffer_t), intent(inout) :: out
+    real(wp), intent(in) :: x, y, length
+    character(*), intent(in) :: label
+    call out%put(svg_line(x, y, x + length, y, 'class="scale"'))
+    call out%put(svg_line(x, y - 1.0_wp, x, y + 1.0_wp, 'class="scale"'))
+    call out%put(svg_line(x + length, y - 1.0_wp, x + length, y + 1.0_wp, 'class="scale"'))
+    call out%put(svg_text(x + length + 1.5_wp, y + 0.9_wp, label, 'class="small"'))
+  end subroutine put_scale
+
+  !> The ground symbol of a frame pivot at (x, y): a triangle below it on a hatched base.
+  pure subroutine put_pivot(out, x, y)
+    type(text_buffer_t), intent(inout) :: out
+    real(wp), intent(in) :: x, y
+    integer :: i
+    call out%put(svg_polygon([x, x - 2.4_wp, x + 2.4_wp], [y, y + 4.0_wp, y + 4.0_wp], 'class="link"'))
+    call out%put(svg_line(x - 4.0_wp, y + 4.0_wp, x + 4.0_wp, y + 4.0_wp, 'class="frame"'))
+    do i = 0, 4
+      call out%put(svg_line(x - 3.5_wp + 1.8_wp * i, y + 4.0_wp, x - 4.7_wp + 1.8_wp * i, y + 5.5_wp, 'class="hatch"'))
+    end do
+  end subroutine put_pivot
+
+  !> Guide `i` of the sketch: a line with hatching on its right side.
+  pure subroutine put_guide(out, drawing, i, ox, oy, len_scale)
+    type(text_buffer_t), intent(inout) :: out
+    type(drawing_t), intent(in) :: drawing
+    integer, intent(in) :: i
+    real(wp), intent(in) :: ox, oy, len_scale
+    real(wp) :: a(2), b(2), u(2), nrm(2), length, s
+    integer :: j, count
+    associate (g => drawing%guides(i))
+      a = turn(g%p - g%half_length * [cos(g%angle), sin(g%angle)], drawing%view_angle)
+      b = turn(g%p + g%half_length * [cos(g%angle), sin(g%angle)], drawing%view_angle)
+    end associate
+    a = [ox + len_scale * a(1), oy - len_scale * a(2)]
+    b = [ox + len_scale * b(1), oy - len_scale * b(2)]
+    length = hypot(b(1) - a(1), b(2) - a(2))
+    if (length <= 0.0_wp) return
+    u = (b - a) / length
+    nrm = [-u(2), u(1)]
+    ! hatch on the side away from the blocks: offset the line by half a block height
+    a = a + 2.6_wp * nrm
+    b = b + 2.6_wp * nrm
+    call out%put(svg_line(a(1), a(2), b(1), b(2), 'class="frame"'))
+    count = int(length / 2.0_wp)
+    do j = 0, count
+      s = 1.0_wp + 2.0_wp * j
+      if (s > length) exit
+      call out%put(svg_line(a(1) + s * u(1), a(2) + s * u(2), a(1) + (s - 1.2_wp) * u(1) + 1.5_wp * nrm(1), &
+        a(2) + (s - 1.2_wp) * u(2) + 1.5_wp * nrm(2), 'class="hatch"'))
+    end do
+  end subroutine put_guide
+
+  !> A slider block (8 x 5 mm on the sheet) at (x, y), its long side along `angle` (rad,
+  !> counterclockwise on the sheet), with its link name.
+  pure subroutine put_block(out, x, y, angle, name)
+    type(text_buffer_t), intent(inout) :: out
+    real(wp), intent(in) :: x, y, angle
+    character(*), intent(in) :: name
+    real(wp) :: u(2), v(2), cx(4), cy(4)
+    u = [cos(angle), -sin(angle)] * 4.0_wp
+    v = [sin(angle), cos(angle)] * 2.5_wp
+    cx = [x - u(1) - v(1), x + u(1) - v(1), x + u(1) + v(1), x - u(1) + v(1)]
+    cy = [y - u(2) - v(2), y + u(2) - v(2), y + u(2) + v(2), y - u(2) + v(2)]
+    call out%put(svg_polygon(cx, cy, 'class="link"'))
+    call out%put(svg_text(x + 1.3_wp * u(1) - 1.6_wp * v(1), y + 1.3_wp * u(2) - 1.6_wp * v(2) + 1.0_wp, name, &
+      'class="label" font-style="italic" text-anchor="middle"'))
+  end subroutine put_block
+
+  !> Moment `i` of the sketch: a 3/4 arc of radius 5 mm about its point, the arrowhead
+  !> showing its sense, labelled with its value.
+  pure subroutine put_moment(out, drawing, i, ox, oy, len_scale)
+    type(text_buffer_t), intent(inout) :: out
+    type(drawing_t), intent(in) :: drawing
+    integer, intent(in) :: i
+    real(wp), intent(in) :: ox, oy, len_scale
+    real(wp), parameter :: r = 5.0_wp
+    real(wp) :: c(2), a0, a1, sense, e(2), tan_dir(2)
+    character(len=7) :: colour
+    associate (m => drawing%moments(i))
+      if (m%value == 0.0_wp) return
+      colour = kind_colours(m%kind)
+      c = turn(m%at, drawing%view_angle)
+      c = [ox + len_scale * c(1), oy - len_scale * c(2)]
+      sense = sign(1.0_wp, m%value)
+      ! from 200 deg, sweeping 270 deg in the moment's sense (counterclockwise on the sheet = +)
+      a0 = 200.0_wp * pi / 180.0_wp
+      a1 = a0 + sense * 1.5_wp * pi
+      e = [c(1) + r * cos(a1), c(2) - r * sin(a1)]
+      call out%put(svg_path("M "//coord(c(1) + r * cos(a0))//" "//coord(c(2) - r * sin(a0))//" A "//coord(r)//" "// &
+        coord(r)//" 0 1 "//merge("0", "1", sense > 0.0_wp)//" "//coord(e(1))//" "//coord(e(2)), &
+        'fill="none" stroke="'//colour//'" stroke-width="0.45"'))
+      tan_dir = sense * [-sin(a1), -cos(a1)]
+      call out%put(svg_arrow(e(1) - 2.2_wp * tan_dir(1), e(2) - 2.2_wp * tan_dir(2), e(1), e(2), colour, 0.45_wp, &
+        2.2_wp))
+      call out%put(svg_text(c(1) + r + 1.0_wp, c(2) + r + 2.5_wp, trim(m%name)//" = "//short_number(abs(m%value))// &
+        " N*m", 'class="num" style="fill: '//colour//'"'))
+    end associate
+  end subroutine put_moment
+
+  !> The forces and moments of the sketch as a list (name, value, direction in the
+  !> position frame) in four columns.
+  pure subroutine put_force_list(out, drawing, x, y)
+    type(text_buffer_t), intent(inout) :: out
+    type(drawing_t), intent(in) :: drawing
+    real(wp), intent(in) :: x, y
+    character(len=:), allocatable :: text
+    real(wp) :: a
+    integer :: i, j
+    call out%put(svg_text(x, y, "Forces of the step (angles counterclockwise from the x axis of the mechanism's frame)", &
+      'class="label" font-weight="bold"'))
+    j = 0
+    if (allocated(drawing%forces)) then
+      do i = 1, size(drawing%forces)
+        associate (f => drawing%forces(i))
+          a = modulo(atan2(f%f(2), f%f(1)) * rad_to_deg, 360.0_wp)
+          if (a >= 359.95_wp) a = 0.0_wp
+          text = trim(f%name)//" = "//short_number(hypot(f%f(1), f%f(2)))//" N"
+          if (hypot(f%f(1), f%f(2)) > 0.0_wp) text = text//" at "//fixed_number(a, 1)//" deg"
+          call out%put(svg_text(x + 47.0_wp * modulo(j, 4), y + 4.5_wp + 3.6_wp * (j / 4), text, 'class="small"'// &
+            ' style="fill: '//kind_colours(f%kind)//'"'))
+          j = j + 1
+        end associate
+      end do
+    end if
+    if (allocated(drawing%moments)) then
+      do i = 1, size(drawing%moments)
+        associate (m => drawing%moments(i))
+          text = trim(m%name)//" = "//short_number(m%value)//" N*m"
+          call out%put(svg_text(x + 47.0_wp * modulo(j, 4), y + 4.5_wp + 3.6_wp * (j / 4), text, 'class="small"'// &
+            ' style="fill: '//kind_colours(m%kind)//'"'))
+          j = j + 1
+        end associate
+      end do
+    end if
+  end subroutine put_force_list
+
+end module kinetostat_svg_mechanism

@@ -1,0 +1,57 @@
+# Errors that point at the mistake (issue 10 item 6): a namelist that does not read names the
+# line, the assignment and the reason; all missing required variables in one message; a
+# generic-engine dyad that cannot be assembled gives the numbers.
+ref="data/pr3207.nml"   # line 3: l_ab ..., line 4: m1 ..., line 6: omega1, line 8: phi_start, dphi
+
+# expect_error_line NAME EXACT_MESSAGE DECK: the one stderr line is exactly
+# "kinetostat: error: EXACT_MESSAGE" (and expect_input_error's other checks hold).
+expect_error_line() {
+  local name="$1" message="$2" deck="$3"
+  expect_input_error "$name" "" "$deck"
+  if [ "$(cat "$err")" != "kinetostat: error: $message" ]; then
+    fail "$name-text" "expected 'kinetostat: error: $message', got '$(cat "$err")'"
+  else pass; fi
+}
+
+d="$(deck_with comma "$ref" 's/l_ab = 0.11/l_ab = 0,11/')"
+expect_error_line err-decimal-comma "$d:3: &pr3207: l_ab = 0,11: decimal comma? write 0.11" "$d"
+d="$(deck_with comma2 "$ref" 's/m3 = 22/m3 = 22,5/')"
+expect_error_line err-decimal-comma-mid-line "$d:4: &pr3207: m3 = 22,5: decimal comma? write 22.5" "$d"
+d="$(deck_with text "$ref" "s/omega1 = 7.5/omega1 = 'abc'/")"
+expect_error_line err-text-for-number "$d:6: &pr3207: omega1 = 'abc': 'abc' is text; a number is expected" "$d"
+d="$(deck_with logical "$ref" 's/j3 = 1.1/j3 = .true./')"
+expect_error_line err-logical-for-number "$d:5: &pr3207: j3 = .true.: .true. is a logical value; a number is expected" "$d"
+d="$(deck_with unknown "$ref" 's/m5 = 60/m_5 = 60/')"
+expect_error_line err-unknown-variable "$d:4: &pr3207: m_5 = 60: unknown variable 'm_5' in this group (a typing error?)" "$d"
+d="$(deck_with toomany "$ref" 's/m1 = 12,/m1 = 12, 13,/')"
+expect_error_line err-too-many-values \
+  "$d:4: &pr3207: m1 = 12, 13: too many values (one value, or an array's size, expected)" "$d"
+# an integer too large for the program: the variable and the range are named
+d="$(deck_with overflow "$ref" 's/dphi = 30 /dphi = 30, n = 2147483648 /')"
+expect_error_line err-integer-overflow "$d: &pr3207: n: must be a whole number from 1 to 1000000 (got 2147483648)" "$d"
+# the first of two broken lines is reported (the bisection finds the first line that fails)
+d="$(deck_with two "$ref" 's/l_ab = 0.11/l_ab = 0,11/; s/omega1 = 7.5/omega1 = abc/')"
+expect_error_line err-first-of-two "$d:3: &pr3207: l_ab = 0,11: decimal comma? write 0.11" "$d"
+# a wrong type on a continuation line of an array names the array
+d="$cli_tmp/cont.nml"
+printf '&pr3207\n  l_ab = 0.11, l_ac = 0.38, l_cd = 0.72, l_cs3 = 0.36\n  m1 = 12, m3 = 22, m5 = 60, j3 = 1.1\n  omega1 = 7.5, dphi = 90\n  f5c = 1, 2,\n        3, .true., 5\n/\n' >"$d"
+expect_error_line err-continuation-line "$d:6: &pr3207: 3, .true., 5: f5c: .true. is a logical value; a number is expected" "$d"
+
+# --- all missing required variables in one message
+d="$(deck_with missing3 "$ref" 's/l_ab = 0.11, //; s/m3 = 22, //; s/omega1 = 7.5//')"
+expect_error_line err-missing-all "$d: &pr3207: missing required variables: l_ab, m3, omega1" "$d"
+d="$(deck_with missing1 "$ref" 's/m3 = 22, //')"
+expect_error_line err-missing-one "$d: &pr3207: m3: missing (required variable)" "$d"
+d="$(deck_with missing_sixbar data/sixbar.nml 's/^ *lam2 *=.*//; s/^ *omega1 *=.*//')"
+expect_input_error err-missing-sixbar 'missing required variables: lam2, lam_s2, lam3, lam_de, omega1$' "$d"
+
+# --- generic engine: a dyad that cannot be assembled gives the numbers
+d="$(deck_with assur_far data/assur_slider_crank.nml 's/dyad(1)%at3 = 0, 0.02 /dyad(1)%at3 = 0, 0.5 /')"
+expect_input_error err-assur-reach 'dyad 1 \(RRP, links 2-3\): cannot be assembled: distance from its joint to the guide 0\.50* m exceeds l2 = 0\.350* m' "$d" 3
+# a derived-type member (line 25 of the generic PR 3207 deck) and a text variable
+d="$(deck_with member data/assur_pr3207.nml "s/dyad(2)%slot_at = 0, 0,/dyad(2)%slot_at = 0, 'abc',/")"
+expect_error_line err-member-text "$d:25: &assur: dyad(2)%slot_at = 0, 'abc': 'abc' is text; a number is expected" "$d"
+d="$(deck_with unquoted data/assur_slider_crank.nml "s/title = 'offset slider-crank'/title = offset/")"
+expect_error_line err-text-unquoted "$d:4: &assur: title = offset: offset is not a text in quotes ('...')" "$d"
+d="$(deck_with twovalues data/assur_slider_crank.nml 's/crank_m = 2.0/crank_m = 2.0, 3.0/')"
+expect_error_line err-member-too-many "$d:7: &assur: crank_m = 2.0, 3.0: too many values (one value, or an array's size, expected)" "$d"

@@ -1,0 +1,71 @@
+# Command-line tests of friction in the pairs of the generic engine (issue 13; sourced by
+# tools/test with test/cli/lib.sh).
+
+fr_deck=data/friction_slider_crank.nml
+
+# --- the friction slider-crank: golden outputs, CSV columns, footer
+run_ks "$fr_deck" --format csv; cp "$out" "$cli_tmp/friction.csv"
+[ "$rc" -eq 0 ] && pass || fail friction-csv-exit "exit $rc: $(cat "$err")"
+expect_same friction-golden-csv data/expected/friction_slider_crank.csv "$cli_tmp/friction.csv"
+header="$(head -1 "$cli_tmp/friction.csv")"
+case ",$header," in
+  *,phi1,*,M1,*,P_loss,*) pass ;;
+  *) fail friction-csv-columns "header lacks phi1, M1, P_loss: $header" ;;
+esac
+if [ "$(wc -l <"$cli_tmp/friction.csv")" -eq 38 ]; then pass; else fail friction-csv-rows "expected 37 steps"; fi
+# P_loss >= 0 and M1 > M1_0 (omega1 > 0) on every row
+awk -F, 'NR==1{for(i=1;i<=NF;i++) c[$i]=i; next}
+  { if ($c["P_loss"] < 0 || !($c["M1"] - $c["M1_0"] > 0)) { print "row " NR ": P_loss " $c["P_loss"] ", M1 " $c["M1"] ", M1_0 " $c["M1_0"]; bad=1 } }
+  END{exit bad}' "$cli_tmp/friction.csv" >"$cli_tmp/friction_rows.log" && pass ||
+  fail friction-csv-ploss-and-m1-sign "$(head -5 "$cli_tmp/friction_rows.log")"
+run_ks "$fr_deck"; cp "$out" "$cli_tmp/friction.table"
+expect_same friction-golden-table data/expected/friction_slider_crank.table "$cli_tmp/friction.table"
+expect_no_nan friction-table-no-nan "$cli_tmp/friction.table"
+grep -q "^   ETA = 1 - A_LOSS/A_DRIVER OVER A WHOLE TURN OF THE INPUT: THE CYCLE EFFICIENCY$" "$cli_tmp/friction.table" && pass ||
+  fail friction-table-cycle-line "no cycle-efficiency line in the footer"
+grep -Eq "^   MAX M1 MISMATCH, POWER BALANCE WITH FRICTION +[0-9.E+-]+  OK$" "$cli_tmp/friction.table" && pass ||
+  fail friction-table-power-balance "no OK power balance line with friction"
+# a partial run says that its efficiency is not the cycle efficiency
+run_ks "$(deck_with fr_half "$fr_deck" 's/phi_start = 0, dphi = 10 /phi_start = 180, dphi = 10, n = 19/')"
+[ "$rc" -eq 0 ] && grep -q "LESS THAN A WHOLE TURN: NOT THE CYCLE EFFICIENCY" "$out" && pass ||
+  fail friction-partial-run-note "exit $rc, or no partial-run note: $(tail -8 "$out")"
+run_ks "$fr_deck" --format json
+python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); s={r.get("name"): r.get("value") for r in d["summary"]};
+assert s["A_DRIVER"] > 0 and abs(s["ETA"]) < 1e-9, s' "$out" 2>"$cli_tmp/json.log" && pass ||
+  fail friction-json-summary "$(tail -3 "$cli_tmp/json.log")"
+
+# --- all coefficients 0: the frictionless outputs, byte for byte (CSV; table but for the deck line)
+zero="$(deck_with fr_zero data/assur_slider_crank.nml 's|^/$|  crank_f = 0, crank_r = 0.01, dyad(1)%f2 = 0, dyad(1)%r2 = 0.01, dyad(1)%f23 = 0\n  dyad(1)%f3 = 0, dyad(1)%guide3 = 0.3, dyad(1)%block3 = 0.05\n/|')"
+grep -q "crank_f = 0" "$zero" && pass || fail friction-zero-deck "sed did not add the variables"
+run_ks "$zero" --format csv
+cmp -s "$out" data/expected/assur_slider_crank.csv && pass || fail friction-zero-csv-identical "CSV differs from the frictionless golden"
+run_ks "$zero"
+sed "s|^ DECK: .*| DECK: data/assur_slider_crank.nml|" "$out" >"$cli_tmp/fr_zero.table"
+cmp -s "$cli_tmp/fr_zero.table" data/expected/assur_slider_crank.table && pass ||
+  fail friction-zero-table-identical "table differs from the frictionless golden: $(diff "$cli_tmp/fr_zero.table" data/expected/assur_slider_crank.table | head -5)"
+for d in pr3207 sixbar; do
+  run_ks "$(deck_with "fr_zero_$d" "data/assur_$d.nml" 's|^/$|  crank_f = 0, dyad(1)%f2 = 0, dyad(2)%f3 = 0\n/|')" --format csv
+  cmp -s "$out" "data/expected/assur_$d.csv" && pass || fail "friction-zero-$d-csv-identical" "CSV differs from the golden"
+done
+
+# --- failures: jamming (no convergence) and self-locking at rest are exit 3 naming step, angle, pair
+expect_input_error friction-jamming-exit3 'step [0-9]+ \(phi1 = [0-9.]+ deg\): friction: .*not converge.* pair F[0-9]+' \
+  "$(deck_with fr_jam "$fr_deck" 's/dyad(1)%f3 = 0.15/dyad(1)%f3 = 20/')" 3
+expect_input_error friction-self-locking-exit3 'step 19 \(phi1 = 180[.0]* deg\): friction: self-locking .* pair F[0-9]+' \
+  "$(deck_with fr_lock "$fr_deck" 's/omega1 = 100 /omega1 = 0 /')" 3
+
+# --- deck errors: exit 2 naming the variable
+expect_input_error friction-negative-f 'crank_f: must be >= 0' "$(deck_with fr_neg_f "$fr_deck" 's/crank_f = 0.1/crank_f = -0.1/')"
+expect_input_error friction-negative-r 'dyad\(1\)%r23: must be >= 0' \
+  "$(deck_with fr_neg_r "$fr_deck" 's/dyad(1)%r23 = 0.01/dyad(1)%r23 = -0.01/')"
+expect_input_error friction-negative-f3 'dyad\(1\)%f3: must be >= 0' "$(deck_with fr_neg_f3 "$fr_deck" 's/dyad(1)%f3 = 0.15/dyad(1)%f3 = -0.15/')"
+expect_input_error friction-negative-block 'dyad\(1\)%block3: must be >= 0' \
+  "$(deck_with fr_neg_b "$fr_deck" 's/dyad(1)%f3 = 0.15/dyad(1)%f3 = 0.15, dyad(1)%block3 = -0.05/')"
+expect_input_error friction-radius-on-slide 'dyad\(1\)%r3: not used by this pair \(a sliding pair' \
+  "$(deck_with fr_r3 "$fr_deck" 's/dyad(1)%f3 = 0.15/dyad(1)%f3 = 0.15, dyad(1)%r3 = 0.01/')"
+expect_input_error friction-guide-on-pin 'dyad\(1\)%guide2: not used by this pair \(a turning pair' \
+  "$(deck_with fr_g2 "$fr_deck" 's/dyad(1)%f2 = 0.1,/dyad(1)%f2 = 0.1, dyad(1)%guide2 = 0.1,/')"
+expect_input_error friction-no-radius 'crank_r: the journal radius must be > 0' \
+  "$(deck_with fr_r0 "$fr_deck" 's/crank_r = 0.01/crank_r = 0/')"
+expect_input_error friction-infinite-f 'dyad\(1\)%f2: must be a finite number' \
+  "$(deck_with fr_inf "$fr_deck" 's/dyad(1)%f2 = 0.1,/dyad(1)%f2 = Inf,/')"

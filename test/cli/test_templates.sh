@@ -1,0 +1,80 @@
+# Templates (every kind and the generic-engine presets fourbar, engine), template -o FILE,
+# --help listing every option, the man page and the bash completion (issue 10 item 7).
+
+# --- every template runs: exit 0, nothing on stderr, self-check OK
+for kind in pr3207 pr3050 sixbar assur gears cam fourbar engine; do
+  run_ks template "$kind"; cp "$out" "$cli_tmp/tpl_$kind.nml"
+  if [ "$rc" -ne 0 ] || [ ! -s "$cli_tmp/tpl_$kind.nml" ]; then fail "template-$kind" "rc=$rc: $(cat "$err")"; continue; fi
+  run_ks "$cli_tmp/tpl_$kind.nml"
+  if [ "$rc" -eq 0 ] && [ ! -s "$err" ] && ! grep -q 'FAILED' "$out"; then pass
+  else fail "template-$kind-runs" "rc=$rc, stderr: $(head -c 300 "$err")"; fi
+done
+# the presets are the tutorial's decks, byte for byte
+cmp -s "$cli_tmp/tpl_fourbar.nml" docs/examples/fourbar.nml && pass || fail template-fourbar-is-tutorial-deck \
+  "$(diff "$cli_tmp/tpl_fourbar.nml" docs/examples/fourbar.nml | head -5)"
+cmp -s "$cli_tmp/tpl_engine.nml" docs/examples/engine.nml && pass || fail template-engine-is-tutorial-deck \
+  "$(diff "$cli_tmp/tpl_engine.nml" docs/examples/engine.nml | head -5)"
+# sane numbers. Four-bar: over a whole turn the moments do no net work (the rocker swings
+# back, gravity and inertia are conservative), so the mean of M1 over the 24 steps of
+# 15 deg is ~0 next to its peak (trapezoid rule; 5 % of the peak allowed).
+run_ks "$cli_tmp/tpl_fourbar.nml" --format csv
+python3 - "$out" <<'PY' && pass || fail template-fourbar-work "mean M1 over a turn not ~0"
+import csv, sys
+m = [float(r["M1"]) for r in csv.DictReader(open(sys.argv[1]))]
+mean = sum(m[:-1]) / (len(m) - 1)
+peak = max(abs(x) for x in m)
+if not (len(m) == 25 and peak > 1.0 and abs(mean) < 0.05 * peak):
+    print(f"steps {len(m)}, mean {mean}, peak {peak}"); sys.exit(1)
+PY
+# Engine: at top dead centre (phi1 = 0) the rod carries the gas force less the piston's
+# inertia force m3*r*omega^2*(1 + r/l): 12000 - 0.8*0.05*300^2*1.25 = 7500 N (rel 1e-3:
+# the rod's own inertia adds a little).
+run_ks "$cli_tmp/tpl_engine.nml" --format csv
+python3 - "$out" <<'PY' && pass || fail template-engine-tdc "F23 at TDC is not ~7500 N"
+import csv, sys
+r = next(csv.DictReader(open(sys.argv[1])))
+if abs(float(r["F23"]) - 7500.0) > 7.5:
+    print(r["F23"]); sys.exit(1)
+PY
+
+# --- template KIND -o FILE: the file holds what stdout would; replaced atomically
+run_ks template fourbar -o "$cli_tmp/tpl_o.nml"
+if [ "$rc" -eq 0 ] && [ ! -s "$out" ] && cmp -s "$cli_tmp/tpl_o.nml" docs/examples/fourbar.nml \
+  && ! ls "$cli_tmp"/tpl_o.nml.tmp.* >/dev/null 2>&1; then pass
+else fail template-o-file "rc=$rc, stdout $(wc -c <"$out") bytes, $(ls "$cli_tmp" | grep tpl_o)"; fi
+echo "old text" >"$cli_tmp/tpl_o.nml"
+run_ks --output="$cli_tmp/tpl_o.nml" template engine
+[ "$rc" -eq 0 ] && cmp -s "$cli_tmp/tpl_o.nml" docs/examples/engine.nml && pass || fail template-output-replaces "rc=$rc"
+run_ks template fourbar -o "$cli_tmp/no_such_dir/x.nml"
+[ "$rc" -eq 2 ] && [ "$(wc -l <"$err")" -eq 1 ] && pass || fail template-o-unwritable "rc=$rc: $(cat "$err")"
+expect_exit template-unknown 1 template nosuch
+grep -q "presets: fourbar, engine" "$err" && pass || fail template-unknown-lists-presets "$(cat "$err")"
+
+# --- --format=csv is --format csv
+run_ks data/pr3207.nml --format=csv; cp "$out" "$cli_tmp/eq.csv"
+run_ks data/pr3207.nml --format csv
+cmp -s "$out" "$cli_tmp/eq.csv" && [ -s "$out" ] && pass || fail format-equals-form "--format=csv differs from --format csv"
+
+# --- --help lists every option and subcommand; the man page and the completion know them too
+run_ks --help
+for word in -o --output --set --format --pairs --at --lang --kinematics -q --quiet --strict -h --help -V \
+  --version template diff --rtol --atol table csv json svg fourbar engine; do
+  if grep -q -- "$word" "$out"; then pass; else fail "help-lists-$word" "--help does not mention $word"; fi
+  if grep -q -- "$(printf '%s' "$word" | sed 's/-/\\\\-/g')" man/kinetostat.1; then pass
+  else fail "man-lists-$word" "man/kinetostat.1 does not mention $word"; fi
+done
+if command -v groff >/dev/null 2>&1; then
+  if groff -man -Tutf8 -ww man/kinetostat.1 2>"$cli_tmp/groff.err" >"$cli_tmp/man.txt" && [ ! -s "$cli_tmp/groff.err" ] \
+    && sed 's/.\x08//g' "$cli_tmp/man.txt" | grep -q 'EXIT STATUS'; then pass
+  else fail man-renders "groff: $(head -5 "$cli_tmp/groff.err")"; fi
+fi
+# bash completion: subcommands, options, kinds, formats, decks
+complete_words() {
+  bash -c 'source completions/kinetostat.bash; COMP_WORDS=("$@"); COMP_CWORD=$(($# - 1)); _kinetostat; echo "${COMPREPLY[*]}"' _ "$@"
+}
+[ "$(complete_words kinetostat --form)" = "--format" ] && pass || fail completion-option "$(complete_words kinetostat --form)"
+[ "$(complete_words kinetostat --format j)" = "json" ] && pass || fail completion-format "$(complete_words kinetostat --format j)"
+[ "$(complete_words kinetostat template four)" = "fourbar" ] && pass || fail completion-kind "$(complete_words kinetostat template four)"
+[ "$(complete_words kinetostat di)" = "diff" ] && pass || fail completion-subcommand "$(complete_words kinetostat di)"
+[ "$(complete_words kinetostat data/pr32)" = "data/pr3207.nml" ] && pass || fail completion-deck "$(complete_words kinetostat data/pr32)"
+[ "$(complete_words kinetostat diff --rt)" = "--rtol" ] && pass || fail completion-diff-option "$(complete_words kinetostat diff --rt)"
