@@ -12,6 +12,7 @@
 !> measure the other processes too). Run from the project root (it reads data/*.nml).
 program bench
   use, intrinsic :: iso_fortran_env, only: int64, output_unit
+  use, intrinsic :: iso_c_binding, only: c_int, c_size_t
   use kinetostat_kinds, only: wp
   use kinetostat_error, only: error_t
   use kinetostat_deck, only: deck_source_t, deck_source_from_text, load_deck, read_group_name
@@ -34,6 +35,16 @@ program bench
   character(*), parameter :: header(*) = [character(len=111) :: &
     "                  steps per CPU second (solve = kernel + table)   peak MiB               ratio to limit", &
     "    kind    steps     solve       csv     table      json     csv   table    json  solve    csv  table   json"]
+
+  interface
+    !> glibc: give the heap's free memory back to the system (so that a peak is the run's own).
+    function malloc_trim(pad) bind(c, name="malloc_trim") result(released)
+      import :: c_int, c_size_t
+      implicit none
+      integer(c_size_t), value :: pad
+      integer(c_int) :: released
+    end function malloc_trim
+  end interface
 
   !> A benchmarked case: the bundled deck and the kind of override its step count needs.
   type :: bench_case_t
@@ -217,9 +228,11 @@ contains
     seconds_since = max(clock() - t0, 1.0e-6_wp)
   end function seconds_since
 
-  !> Reset the peak resident set size of this process (Linux: "5" into /proc/self/clear_refs).
+  !> Reset the peak resident set size of this process: free heap memory back to the system
+  !> (glibc malloc_trim), then "5" into /proc/self/clear_refs (Linux).
   subroutine reset_peak()
     integer :: unit, ios
+    if (malloc_trim(0_c_size_t) < 0) return
     open (newunit=unit, file="/proc/self/clear_refs", action='write', iostat=ios)
     if (ios /= 0) return
     write (unit, '(a)', iostat=ios) "5"
