@@ -7,13 +7,14 @@ _kinetostat() {
   cur="${COMP_WORDS[COMP_CWORD]}"
   prev="${COMP_WORDS[COMP_CWORD-1]}"
   local kinds="pr3207 pr3050 sixbar assur gears cam fourbar engine"
-  local run_opts="-o --output --set --format --pairs --at --lang --kinematics --quiet --strict --help --version"
+  local run_opts="-o --output --set --format --pairs --at --lang --kinematics --frame --quiet --strict --help --version"
   case "$prev" in
-    --format) COMPREPLY=($(compgen -W "table csv json svg" -- "$cur")); return ;;
+    --format) COMPREPLY=($(compgen -W "table csv json svg summary" -- "$cur")); return ;;
+    --frame) COMPREPLY=($(compgen -W "global link" -- "$cur")); return ;;
     --lang) COMPREPLY=($(compgen -W "en ru" -- "$cur")); return ;;
     -o|--output) COMPREPLY=($(compgen -f -- "$cur")); return ;;
     template) COMPREPLY=($(compgen -W "$kinds" -- "$cur")); return ;;
-    --rtol|--atol|--set|--pairs|--at) COMPREPLY=(); return ;;
+    --rtol|--atol|--set|--pairs|--at|--vary|--part) COMPREPLY=(); return ;;
   esac
   case "${COMP_WORDS[1]}" in
     diff)
@@ -25,11 +26,18 @@ _kinetostat() {
       return ;;
     template)
       COMPREPLY=($(compgen -W "-o --output" -- "$cur")); return ;;
+    sweep)
+      if [[ "$cur" == -* ]]; then
+        COMPREPLY=($(compgen -W "--vary --set --part -o --output --quiet --strict --help" -- "$cur"))
+      else
+        COMPREPLY=($(compgen -f -X '!*.nml' -- "$cur") $(compgen -d -- "$cur"))
+      fi
+      return ;;
   esac
   if [[ "$cur" == -* ]]; then
     COMPREPLY=($(compgen -W "$run_opts" -- "$cur"))
   elif [ "$COMP_CWORD" -eq 1 ]; then
-    COMPREPLY=($(compgen -W "template diff -" -- "$cur") $(compgen -f -X '!*.nml' -- "$cur") $(compgen -d -- "$cur"))
+    COMPREPLY=($(compgen -W "template diff sweep -" -- "$cur") $(compgen -f -X '!*.nml' -- "$cur") $(compgen -d -- "$cur"))
   else
     COMPREPLY=($(compgen -f -X '!*.nml' -- "$cur") $(compgen -d -- "$cur"))
   fi

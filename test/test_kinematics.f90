@@ -9,7 +9,7 @@ module test_kinematics
   use kinetostat_kinds, only: wp, deg_to_rad
   use kinetostat_error, only: error_t
   use kinetostat_deck, only: deck_source_t, load_deck, read_group_name
-  use kinetostat_step_table, only: step_table_t
+  use kinetostat_step_table, only: step_table_t, col_force
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_csv_writer, only: write_csv
   use kinetostat_json_writer, only: write_json
@@ -55,6 +55,7 @@ contains
     call test_fd_sixbar(t)
     call test_fd_assur(t)
     call test_components(t)
+    call test_link_axes(t)
     call test_twin_sixbar(t)
     call test_twin_pr3207(t)
     call test_twin_pr3050(t)
@@ -224,6 +225,15 @@ contains
     s = trim(buf)
   end function num
 
+  !> `x` in scientific notation (3 significant digits).
+  pure function sci(x) result(s)
+    real(wp), intent(in) :: x
+    character(len=:), allocatable :: s
+    character(len=24) :: buf
+    write (buf, '(es10.2)') x
+    s = trim(adjustl(buf))
+  end function sci
+
   !> PR 3207: the deck's crank angles (constant omega1).
   subroutine test_fd_pr3207(t)
     type(test_counts_t), intent(inout) :: t
@@ -381,6 +391,64 @@ contains
       call check_true(t, trim(bundled(i))//": force components present", checked > 0, "no <F>_x with <F>, <F>G")
     end do
   end subroutine test_components
+
+  !> --frame link: every pair force of every bundled generic deck (<F>_along, <F>_across in
+  !> the axes of the link it acts on) turned back by that link's angle phi<link> equals its
+  !> global components (<F>_x, <F>_y turned by their frame_angle) at every step, to 1e-12 of
+  !> the step's largest force; and the link frames are not all the global one (the check can
+  !> fail: somewhere the link-axes components differ from the global ones).
+  subroutine test_link_axes(t)
+    type(test_counts_t), intent(inout) :: t
+    !> Generic decks (data/assur_toggle.nml stops at its dead position).
+    character(len=32), parameter :: decks(*) = [character(len=32) :: "data/assur_fourbar.nml", &
+      "data/assur_fourbar_global.nml", "data/assur_pr3050.nml", "data/assur_pr3050_friction.nml", &
+      "data/assur_pr3207.nml", "data/assur_pr3207_friction.nml", "data/assur_sixbar.nml", &
+      "data/assur_sixbar_friction.nml", "data/assur_sixbar_global.nml", "data/assur_slider_crank.nml"]
+    !> Tolerance, relative to the step's largest force.
+    real(wp), parameter :: tol = 1.0e-12_wp
+    type(step_table_t) :: table
+    integer :: i, c, cx, cp, k, j, pairs, forces
+    real(wp) :: fmax, a, b, g(2), l(2), worst, turned
+    character(len=:), allocatable :: name, f
+    logical :: ok
+    turned = 0.0_wp
+    do i = 1, size(decks)
+      call run_deck(t, trim(decks(i)), table, ok)
+      if (.not. ok) cycle
+      pairs = 0
+      forces = count(table%columns%kind == col_force)
+      do c = 1, size(table%columns)
+        if (.not. table%columns(c)%link_axes) cycle
+        name = table%columns(c)%name
+        if (index(name, "_along") /= len(name) - 5) cycle
+        f = name(1:len(name) - 6)
+        pairs = pairs + 1
+        cx = column(t, trim(decks(i)), table, f//"_x")
+        cp = column(t, trim(decks(i)), table, "phi"//table%columns(c)%frame_link)
+        if (cx == 0 .or. cp == 0) cycle
+        worst = 0.0_wp
+        do k = 1, table%row_count()
+          fmax = tiny(1.0_wp)
+          do j = 1, size(table%columns)
+            if (table%columns(j)%kind == col_force) fmax = max(fmax, table%rows(j, k))
+          end do
+          a = table%columns(cx)%frame_angle * deg_to_rad
+          b = table%rows(cp, k) * deg_to_rad
+          g = table%rows(cx, k) * [cos(a), sin(a)] + table%rows(cx + 1, k) * [-sin(a), cos(a)]
+          l = table%rows(c, k) * [cos(b), sin(b)] + table%rows(c + 1, k) * [-sin(b), cos(b)]
+          worst = max(worst, norm2(l - g) / fmax)
+          turned = max(turned, norm2(table%rows(c:c + 1, k) - g) / fmax)
+        end do
+        call check_true(t, trim(decks(i))//": "//f//"_along, "//f//"_across turned by phi"// &
+                        table%columns(c)%frame_link//" = global "//f//"_x, "//f//"_y", worst <= tol, &
+                        "largest difference "//sci(worst)//" of the step's largest force (limit "//sci(tol)//")")
+      end do
+      call check_true(t, trim(decks(i))//": one pair of link-axes columns per pair force", pairs == forces .and. &
+                      pairs > 0, num(real(pairs, wp))//" pairs of columns, "//num(real(forces, wp))//" forces")
+    end do
+    call check_true(t, "link axes differ from the global frame somewhere", turned > 1.0e-3_wp, &
+                    "largest difference "//sci(turned))
+  end subroutine test_link_axes
 
   !> Every kinematics column of the dedicated deck `path_a` against the generic twin `path_b`
   !> (same input angles): names mapped by `from`/`to` (point names of x_/y_ columns, force

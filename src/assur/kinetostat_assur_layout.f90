@@ -37,6 +37,13 @@ module kinetostat_assur_layout
   real(wp), parameter :: eta_roundoff = 1.0e-12_wp
   !> Decimals of the actuator's stroke (m), stroke speed (m/s) and acceleration (m/s^2).
   integer, parameter :: stroke_decimals = 4
+  !> Heading of RESULTS with --frame link.
+  character(*), parameter :: link_axes_heading = "REACTIONS IN THE AXES OF THE LINK EACH ACTS ON "// &
+    "(LINE 1 ALONG ITS X AXIS, LINE 2 ACROSS), N; CRANK PIN IN CRANK AXES (X ALONG PHI1)"
+  !> The same in Russian.
+  character(*), parameter :: link_axes_heading_ru = "РЕАКЦИИ В ОСЯХ ЗВЕНА, НА КОТОРОЕ ОНИ "// &
+    "ДЕЙСТВУЮТ (СТРОКА 1 ВДОЛЬ ОСИ X ЗВЕНА, СТРОКА 2 ПОПЕРЕК), Н; "// &
+    "ШАРНИР КРИВОШИПА В ОСЯХ КРИВОШИПА (X ВДОЛЬ PHI1)"
   !> Dyad line of the INPUT DATA echo.
   character(*), parameter :: dyad_echo_fmt = '(3x,"DYAD ",i0,": ",a," LINKS ",i0,"-",i0,", ON LINKS ",i0," AND ",i0, &
     &", MODE ",i0)'
@@ -243,6 +250,12 @@ contains
     else
       call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "F_drive")
     end if
+    do k = 1, size(self%deck%f_mag, 1)
+      call table%note_load(self%deck%f_mag(k, :))
+    end do
+    do k = 1, size(self%deck%m_mag, 1)
+      call table%note_load(self%deck%m_mag(k, :))
+    end do
     if (len_trim(self%deck%title) > 0) table%subtitle = trim(self%deck%title)
     call echo_deck(self%deck, table)
     if (self%deck%friction_on) then
@@ -548,7 +561,32 @@ contains
       call table%put_components(k, trim(deck%pair_name(ip)), force_components(f, floor), &
                                 deck%pair_frame(ip) * rad_to_deg)
     end do
+    do ip = 1, np
+      i = pair_link(deck, ip)
+      f = rotate(snap_noise(deck%pair_sign(ip) * s%f(:, ip), floor), -states(i)%th)
+      call table%put_link_axes(k, trim(deck%pair_name(ip)), force_components(f, floor), link_label(deck, i))
+    end do
   end subroutine put_kinematics
+
+  !> Internal index of the link the reported force of result pair `ip` acts on: link a for a
+  !> dyad's pair 1 and its inner pair (link b with inner_on = link3), link b for pair 3, the
+  !> crank for the crank pin.
+  pure integer function pair_link(deck, ip)
+    !> Validated deck.
+    type(assur_deck_t), intent(in) :: deck
+    !> Pair result index.
+    integer, intent(in) :: ip
+    integer :: d, j
+    d = (ip - 1) / 3 + 1
+    j = ip - 3 * (d - 1)
+    if (d > size(deck%mech%dyads)) then
+      pair_link = 1
+    else if (j == 1 .or. (j == 2 .and. deck%pair_sign(ip) > 0.0_wp)) then
+      pair_link = 2 * d
+    else
+      pair_link = 2 * d + 1
+    end if
+  end function pair_link
 
   !> The forces of row `k` on its drawing (--format svg --at K): every pair force at its
   !> pair's point J<pair>, the deck's external forces (Q<i>, at their points) and moments
@@ -802,10 +840,23 @@ contains
     character(len=:), allocatable :: deg, newton, newton_m, metre
     real(wp) :: mag, ang, nn, mm
     integer :: k, ip, np, pos
-    logical :: any_p, prismatic, drive
+    integer, allocatable :: along(:)
+    logical :: any_p, prismatic, drive, link_axes
 
     drive = self%deck%mech%drive_dyad > 0
     np = size(self%deck%pair_name)
+    link_axes = table%link_frame
+    allocate (along(np))
+    do ip = 1, np
+      along(ip) = table%column_index(trim(self%deck%pair_name(ip))//"_along")
+    end do
+    if (link_axes) then
+      if (lang == lang_ru) then
+        call out%put(" "//link_axes_heading_ru)
+      else
+        call out%put(" "//link_axes_heading)
+      end if
+    end if
     any_p = .false.
     do ip = 1, np
       any_p = any_p .or. assur_pair_prismatic(self%deck, ip)
@@ -829,8 +880,13 @@ contains
       full_name = self%deck%pair_name(ip)
       name = full_name(1:field_width)
       prismatic = assur_pair_prismatic(self%deck, ip)
-      line1 = line1//adjustr(name)
-      line2 = line2//right(trim(name)//"G", field_width)
+      if (link_axes) then
+        line1 = line1//right(fit(trim(name)//"_ALONG"), field_width)
+        line2 = line2//right(fit(trim(name)//"_ACROSS"), field_width)
+      else
+        line1 = line1//adjustr(name)
+        line2 = line2//right(trim(name)//"G", field_width)
+      end if
       line3 = line3//p_label(name, "N", prismatic)
       line4 = line4//p_label(name, "M", prismatic)
     end do
@@ -852,7 +908,11 @@ contains
     line2 = repeat(" ", phi_width)
     do ip = 1, np
       line1 = line1//right(newton, field_width)
-      line2 = line2//right(deg, field_width)
+      if (link_axes) then
+        line2 = line2//right(newton, field_width)
+      else
+        line2 = line2//right(deg, field_width)
+      end if
     end do
     if (drive) then
       call out%put(trim(line1//right(newton, field_width)))
@@ -871,6 +931,10 @@ contains
         do ip = 1, np
           mag = v(pos + 1)
           ang = v(pos + 2)
+          if (link_axes) then
+            mag = v(along(ip))
+            ang = v(along(ip) + 1)
+          end if
           pos = pos + 2
           if (self%deck%components) pos = pos + 2
           line1 = line1//fixed_field(mag, field_width, 2)
@@ -911,6 +975,13 @@ contains
     character(len=:), allocatable :: field
     field = repeat(" ", max(0, width - display_width(text)))//text
   end function right
+
+  !> `text`, cut to the width of a field.
+  pure function fit(text) result(field)
+    character(*), intent(in) :: text
+    character(len=:), allocatable :: field
+    field = text(1:min(len(text), field_width))
+  end function fit
 
   pure function pad9(text) result(field)
     character(*), intent(in) :: text

@@ -7,6 +7,10 @@ module kinetostat_cli
   use kinetostat_error, only: error_t, fatal_error, exit_success, exit_usage, exit_input, exit_warning
   use kinetostat_deck, only: deck_source_t, load_deck, read_group_name
   use kinetostat_override, only: override_t, parse_override, apply_overrides
+  use kinetostat_sweep, only: vary_t, parse_vary, run_sweep, variant_result_t
+  use kinetostat_posix, only: stderr_is_terminal
+  use kinetostat_text, only: int_str
+  use kinetostat_run, only: format_summary
   use kinetostat_step_table, only: step_table_t
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_output, only: write_output_file, write_output_stdout
@@ -24,7 +28,8 @@ module kinetostat_cli
 
   !> One-line usage, printed with usage errors.
   character(*), parameter :: usage_line = "usage: kinetostat DECK|- [--set NAME=VALUE]... [-o FILE] " // &
-    "[--format table|csv|json|svg] [--pairs LIST] [--at K] [--lang en|ru] [--kinematics] [--quiet] [--strict] | " // &
+    "[--format table|csv|json|svg|summary] [--pairs LIST] [--at K] [--lang en|ru] [--kinematics] " // &
+    "[--frame global|link] [--quiet] [--strict] | kinetostat sweep DECK --vary NAME=FROM:TO:COUNT... [--part K/N] | " // &
     "kinetostat template KIND [-o FILE] | kinetostat diff A B [--rtol R] [--atol A] | --help | --version"
 
   !> Warning line when a run's self-check exceeds its tolerance.
@@ -34,8 +39,10 @@ module kinetostat_cli
   character(*), parameter :: help_lines(*) = [character(len=92) :: &
     "kinetostat - kinetostatic force analysis of planar mechanisms", &
     "", &
-    "  kinetostat DECK [--set NAME=VALUE]... [-o FILE] [--format table|csv|json|svg]", &
+    "  kinetostat DECK [--set NAME=VALUE]... [-o FILE] [--format table|csv|json|svg|summary]", &
     "                  [--pairs LIST] [--at K] [--lang en|ru] [--kinematics] [--quiet] [--strict]", &
+    "  kinetostat sweep DECK --vary NAME=FROM:TO:COUNT... [--set NAME=VALUE]... [--part K/N]", &
+    "                  [-o FILE] [--quiet] [--strict]", &
     "  kinetostat template KIND [-o FILE]   a commented deck to start from (KIND: a mechanism,", &
     "                                       or a preset of the generic engine)", &
     "  kinetostat diff A B [--rtol R] [--atol A] [--quiet]   compare two outputs", &
@@ -46,15 +53,22 @@ module kinetostat_cli
     "--set NAME=VALUE  set a deck variable as if the deck ended with NAME = VALUE", &
     "            (repeatable; l_ab=0.12, f5c(3)=0, 'dyad(2)%l2=0.45'); marked (--set)", &
     "-o FILE, --output FILE  write to FILE (atomically: nothing is left behind on error)", &
-    "--format    table (default, the legacy printout), csv (full precision), json, or svg", &
-    "            (a sheet of force hodographs and diagrams; see docs/pictures.md)", &
+    "--format    table (default, the legacy printout), csv (full precision), json, svg", &
+    "            (a sheet of force hodographs and diagrams; see docs/pictures.md), or summary", &
+    "            (a CSV header and one row: max, min, where, mean per column, work)", &
     "--pairs     with svg: only these pair forces, e.g. --pairs F16,F36", &
     "--at K      with svg: the mechanism drawn at step K with every force of the step", &
     "--lang      language of the table's labels: en (default) or ru (the 1991 printouts)", &
     "--kinematics  csv and json add positions of joints and centres of mass, link angles,", &
     "            angular speeds and accelerations, accelerations of the centres of mass and", &
     "            the x, y components of the pair forces (the table is unchanged)", &
+    "--frame     global (default) or link: &assur decks also report every pair force as", &
+    "            <F>_along, <F>_across in the axes of the link it acts on (the table prints", &
+    "            them instead of magnitudes and angles)", &
     "-q, --quiet no warnings on stderr (errors are still reported); diff: no report", &
+    "sweep       one summary row per variant of the grid of every --vary (COUNT values", &
+    "            from FROM to TO), the first --vary slowest; --part K/N runs block K of N", &
+    "            (the parts' outputs concatenated in order are the whole sweep's)", &
     "--strict    a run that warns (self-check above its limit, a dead position between", &
     "            steps, a jammed cam or lost contact, a coarse step near a load edge)", &
     "            exits 4; the output is still written", &
@@ -85,6 +99,16 @@ module kinetostat_cli
     logical :: quiet = .false.
     !> --strict: a run that warned exits with exit_warning (its output is still written).
     logical :: strict = .false.
+    !> The sweep subcommand was given.
+    logical :: sweep = .false.
+    !> The --vary axes of a sweep.
+    type(vary_t), allocatable :: varies(:)
+    !> --part K/N of a sweep: this process runs block K of N.
+    integer :: part = 1
+    !> N of --part K/N.
+    integer :: parts = 1
+    !> Whether --format was given.
+    logical :: format_given = .false.
     logical :: help = .false.
     logical :: version = .false.
     !> `kinetostat diff A B`: the two files.
@@ -104,9 +128,10 @@ contains
     type(step_table_t) :: table
     type(text_buffer_t) :: out
     integer :: i, warnings
-    logical :: ran
+    logical :: ran, progress
 
     ran = .false.
+    warnings = 0
     call parse_args(args, error)
     if (.not. allocated(error) .and. allocated(args%diff_files) .and. .not. args%help) then
       call run_diff(args, exit_code)
@@ -124,8 +149,13 @@ contains
         call out%put(version_string)
       else if (allocated(args%template_kind)) then
         call write_template(args%template_kind, out, error)
+      else if (args%sweep) then
+        call sweep_deck(args, out, warnings, error)
       else
+        progress = stderr_is_terminal() .and. .not. args%quiet
+        if (progress) call progress_line("kinetostat: "//args%deck//": running ...")
         call run_deck(args%deck, args%options, table, out, error)
+        if (progress) call progress_line("")
         ran = .not. allocated(error)
       end if
     end if
@@ -136,7 +166,6 @@ contains
         call write_output_stdout(out, error)
       end if
     end if
-    warnings = 0
     if (ran .and. .not. allocated(error)) call warn(table, args%quiet, warnings)
 
     if (allocated(error)) then
@@ -182,6 +211,121 @@ contains
       if (error%code == exit_input) call blame_override(source, group, options%overrides, error)
     end if
   end subroutine run_deck
+
+  !> K and N of "--part K/N" (1 <= K <= N).
+  subroutine parse_part(arg, part, parts, error)
+    character(*), intent(in) :: arg
+    integer, intent(out) :: part, parts
+    type(error_t), allocatable, intent(out) :: error
+    integer :: slash, ios
+    part = 1
+    parts = 1
+    slash = index(arg, "/")
+    ios = 1
+    if (slash > 1 .and. verify(arg(1:slash - 1), "0123456789") == 0 .and. verify(arg(slash + 1:), "0123456789") == 0 &
+        .and. len(arg) > slash .and. len(arg) < 16) then
+      read (arg(1:slash - 1), *, iostat=ios) part
+      if (ios == 0) read (arg(slash + 1:), *, iostat=ios) parts
+    end if
+    if (ios /= 0 .or. part < 1 .or. part > parts) then
+      call fatal_error(error, exit_usage, "--part must be K/N with 1 <= K <= N (got '"//arg//"')")
+      part = 1
+      parts = 1
+    end if
+  end subroutine parse_part
+
+  !> The progress line on stderr (a terminal): `text` written over the previous one from
+  !> the start of the line; "" erases it.
+  subroutine progress_line(text)
+    character(*), intent(in) :: text
+    !> Characters erased by "" (the longest line written so far).
+    integer, save :: written = 0
+    if (len(text) == 0) then
+      write (error_unit, '(a)', advance='no') achar(13)//repeat(" ", written)//achar(13)
+      written = 0
+    else
+      write (error_unit, '(a)', advance='no') achar(13)//text
+      written = max(written, len(text))
+    end if
+    flush (error_unit)
+  end subroutine progress_line
+
+  !> Append a --vary axis.
+  subroutine add_vary(varies, arg, error)
+    type(vary_t), allocatable, intent(inout) :: varies(:)
+    character(*), intent(in) :: arg
+    type(error_t), allocatable, intent(out) :: error
+    type(vary_t) :: one
+    call parse_vary(arg, one, error)
+    if (allocated(error)) return
+    if (.not. allocated(varies)) allocate (varies(0))
+    varies = [varies, one]
+  end subroutine add_vary
+
+  !> `kinetostat sweep`: the summary CSV of every variant (one header, one row each, in
+  !> grid order); warnings one line each, prefixed with the variant's overrides. The first
+  !> variant (in grid order) that fails fails the sweep, naming the variant.
+  subroutine sweep_deck(args, out, warnings, error)
+    type(cli_args_t), intent(in) :: args
+    type(text_buffer_t), intent(inout) :: out
+    !> Number of warnings over all variants.
+    integer, intent(out) :: warnings
+    type(error_t), allocatable, intent(out) :: error
+    type(deck_source_t) :: source
+    type(override_t), allocatable :: sets(:)
+    type(variant_result_t), allocatable :: results(:)
+    integer :: v, i, start, first
+    character(len=:), allocatable :: name, prefix
+    warnings = 0
+    call load_deck(args%deck, source, error)
+    if (allocated(error)) return
+    if (allocated(args%options%overrides)) then
+      sets = args%options%overrides
+    else
+      allocate (sets(0))
+    end if
+    call run_sweep(source, sets, args%varies, args%part, args%parts, stderr_is_terminal() .and. .not. args%quiet, &
+      first, results, error)
+    if (allocated(error)) return
+    do v = 1, size(results)
+      name = variant_name(results(v))
+      if (allocated(results(v)%error)) then
+        call move_alloc(results(v)%error, error)
+        error%message = error%message//" (sweep variant "//int_str(first + v - 1)//": "//name//")"
+        return
+      end if
+      if (results(v)%header /= results(1)%header) then
+        call fatal_error(error, exit_input, source%path//": sweep variant "//int_str(first + v - 1)//" ("//name// &
+          ") has other summary columns than variant "//int_str(first))
+        return
+      end if
+    end do
+    if (size(results) == 0) return
+    if (args%part == 1) call out%put(results(1)%header)
+    do v = 1, size(results)
+      call out%put(results(v)%row)
+      warnings = warnings + results(v)%warning_count
+      if (args%quiet .or. results(v)%warnings%length == 0) cycle
+      prefix = "kinetostat: warning: "//source%path//" ("//variant_name(results(v))//"): "
+      start = 1
+      do i = 1, results(v)%warnings%length
+        if (results(v)%warnings%data(i:i) /= achar(10)) cycle
+        write (error_unit, '(a)') prefix//results(v)%warnings%data(start:i - 1)
+        start = i + 1
+      end do
+    end do
+  contains
+    function variant_name(r) result(text)
+      type(variant_result_t), intent(in) :: r
+      character(len=:), allocatable :: text
+      integer :: k
+      text = ""
+      do k = 1, size(r%overrides)
+        if (k > 1) text = text//", "
+        text = text//r%overrides(k)%name//"="//r%overrides(k)%value
+      end do
+    end function variant_name
+  end subroutine sweep_deck
 
   !> Append the override "NAME=VALUE" of a --set.
   subroutine add_override(overrides, arg, error)
@@ -232,10 +376,26 @@ contains
       if (allocated(current)) call move_alloc(current, previous)
     end do
   contains
+    !> The message with the override as its cause. A message that names a line of the deck
+    !> ("deck.nml:11: ...") names the override's own line, which the file does not have:
+    !> "--set NAME=VALUE: ..." replaces "deck.nml:11".
     subroutine name_cause(message)
       character(*), intent(in) :: message
-      error%message = message//" (from --set "//overrides(k)%name//"="//overrides(k)%value//")"
+      character(len=:), allocatable :: given, rest
+      integer :: d
+      given = overrides(k)%name//"="//overrides(k)%value
       error%code = exit_input
+      if (index(message, source%path//":") == 1) then
+        rest = message(len(source%path) + 2:)
+        d = verify(rest, "0123456789")
+        if (d > 1) then
+          if (rest(d:d) == ":") then
+            error%message = "--set "//given//rest(d:)
+            return
+          end if
+        end if
+      end if
+      error%message = message//" (from --set "//given//")"
     end subroutine name_cause
   end subroutine blame_override
 
@@ -308,7 +468,8 @@ contains
         value = arg(eq + 1:)
       else
         name = arg
-        if (any(name == [character(len=8) :: "-o", "--output", "--format", "--lang", "--set", "--pairs", "--at"])) then
+        if (any(name == [character(len=8) :: "-o", "--output", "--format", "--lang", "--set", "--pairs", "--at", &
+                         "--frame", "--vary", "--part"])) then
           if (i == n) then
             call fatal_error(error, exit_usage, name//" needs a value")
             return
@@ -331,6 +492,7 @@ contains
       case ("-o", "--output")
         args%out_file = value
       case ("--format")
+        args%format_given = .true.
         args%options%format = format_from_name(value)
         if (args%options%format == 0) then
           call fatal_error(error, exit_usage, "--format must be one of "//format_names//" (got '"//value//"')")
@@ -338,6 +500,12 @@ contains
         end if
       case ("--pairs")
         args%options%pairs = value
+      case ("--frame")
+        if (value /= "global" .and. value /= "link") then
+          call fatal_error(error, exit_usage, "--frame must be global or link (got '"//value//"')")
+          return
+        end if
+        args%options%link_frame = value == "link"
       case ("--at")
         read (value, *, iostat=ios) args%options%at_step
         if (ios /= 0 .or. args%options%at_step < 1 .or. verify(value, "0123456789 ") /= 0) then
@@ -353,6 +521,18 @@ contains
       case ("--set")
         call add_override(args%options%overrides, value, error)
         if (allocated(error)) return
+      case ("--vary")
+        call add_vary(args%varies, value, error)
+        if (allocated(error)) return
+      case ("--part")
+        call parse_part(value, args%part, args%parts, error)
+        if (allocated(error)) return
+      case ("sweep")
+        if (allocated(args%deck) .or. args%sweep .or. allocated(args%template_kind)) then
+          call fatal_error(error, exit_usage, "sweep must come first: kinetostat sweep DECK --vary NAME=FROM:TO:COUNT")
+          return
+        end if
+        args%sweep = .true.
       case ("diff")
         if (i == 1) then
           call parse_diff_args(args, error)
@@ -382,6 +562,13 @@ contains
     if (args%help .or. args%version .or. allocated(args%template_kind)) return
     if (.not. allocated(args%deck)) then
       call fatal_error(error, exit_usage, "no deck given")
+    else if (args%sweep .and. .not. allocated(args%varies)) then
+      call fatal_error(error, exit_usage, "sweep needs at least one --vary NAME=FROM:TO:COUNT")
+    else if (.not. args%sweep .and. (allocated(args%varies) .or. args%parts > 1)) then
+      call fatal_error(error, exit_usage, "--vary and --part belong to the sweep subcommand: "// &
+        "kinetostat sweep DECK --vary ...")
+    else if (args%sweep .and. args%format_given .and. args%options%format /= format_summary) then
+      call fatal_error(error, exit_usage, "sweep writes the summary format only (--format summary)")
     else if (allocated(args%options%pairs) .and. args%options%format /= format_svg) then
       call fatal_error(error, exit_usage, "--pairs needs --format svg")
     else if (args%options%at_step > 0 .and. args%options%format /= format_svg) then

@@ -14,7 +14,7 @@ module kinetostat_json_writer
 contains
 
   !> The JSON object of a run.
-  pure subroutine write_json(title, table, out, kinematics)
+  pure subroutine write_json(title, table, out, kinematics, link_axes)
     !> Title of the mechanism (as the legacy table prints it).
     character(*), intent(in) :: title
     !> Finite results.
@@ -23,16 +23,20 @@ contains
     type(text_buffer_t), intent(inout) :: out
     !> Whether to add the kinematics columns (--kinematics); default false.
     logical, intent(in), optional :: kinematics
+    !> Whether to add the pair forces in link axes (--frame link); default false.
+    logical, intent(in), optional :: link_axes
     character(len=:), allocatable :: line
     logical, allocatable :: whole(:)
     integer :: i, c, k, last
-    logical :: shown(size(table%columns)), with_kinematics
+    logical :: shown(size(table%columns)), with_kinematics, with_link_axes
     logical :: first
     with_kinematics = .false.
     if (present(kinematics)) with_kinematics = kinematics
+    with_link_axes = .false.
+    if (present(link_axes)) with_link_axes = link_axes
     last = 0
     do c = 1, size(table%columns)
-      shown(c) = table%shows(c, with_kinematics)
+      shown(c) = table%shows(c, with_kinematics, with_link_axes)
       if (shown(c)) last = c
     end do
     call out%put("{")
@@ -71,6 +75,8 @@ contains
         if (table%columns(c)%kind == col_component) line = line//', "frame_angle": '// &
           full_number(table%columns(c)%frame_angle)
       end if
+      if (table%columns(c)%link_axes) line = line//', "frame": "link", "link": '// &
+        json_string(table%columns(c)%frame_link)
       line = line//"}"
       if (c < last) line = line//","
       call out%put(line)

@@ -54,6 +54,18 @@ contains
       text = "НАИБ. НЕВЯЗКА РАВНОВЕСИЯ ТОЛКАТЕЛЯ ПО ВСЕМ ПОЛОЖЕНИЯМ"
     case ("MAX N MISMATCH, CLOSED FORM VS 3X3 LINEAR SOLVE")
       text = "НАИБ. РАСХОЖДЕНИЕ N: ФОРМУЛА И РЕШЕНИЕ СИСТЕМЫ 3X3"
+    case ("SUMMARY")
+      text = "СВОДКА"
+    case ("MAX")
+      text = "НАИБ"
+    case ("MIN")
+      text = "НАИМ"
+    case ("MEAN")
+      text = "СРЕДН"
+    case ("AT ")
+      text = "ПРИ "
+    case ("WORK OF ")
+      text = "РАБОТА "
     ! friction in the pairs of the generic engine (summary block and self-check)
     case ("WORK AND EFFICIENCY WITH FRICTION")
       text = "РАБОТА И КПД С УЧЕТОМ ТРЕНИЯ"
@@ -76,9 +88,9 @@ contains
     case ("MAX F_drive MISMATCH, POWER BALANCE WITH FRICTION")
       text = "НАИБ. РАСХОЖДЕНИЕ F_drive, БАЛАНС МОЩНОСТЕЙ С "// &
         "ТРЕНИЕМ"
+    ! units (ГОСТ symbols, as the 1991 printouts write them)
     case ("J")
       text = "Дж"
-    ! units (ГОСТ symbols, as the 1991 printouts write them)
     case ("m")
       text = "м"
     case ("mm")

@@ -4,7 +4,7 @@
 module kinetostat_run
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use kinetostat_kinds, only: wp
-  use kinetostat_error, only: error_t, fatal_error, exit_geometry
+  use kinetostat_error, only: error_t, fatal_error, exit_geometry, exit_input
   use kinetostat_text, only: int_str
   use kinetostat_step_table, only: step_table_t, echo_real_kind, echo_array_kind
   use kinetostat_deck, only: deck_source_t
@@ -20,10 +20,11 @@ module kinetostat_run
   use kinetostat_error, only: exit_usage
   use kinetostat_labels, only: lang_en
   use kinetostat_override, only: override_t, mark_overrides
+  use kinetostat_summary, only: coarse_step_warning, summary_header, summary_row
   implicit none
   private
   public :: run_options_t, run_mechanism, guard_finite
-  public :: format_table, format_csv, format_json, format_svg, format_from_name, format_names
+  public :: format_table, format_csv, format_json, format_svg, format_summary, format_from_name, format_names
 
   !> Output format: the legacy fixed-format table.
   integer, parameter :: format_table = 1
@@ -33,8 +34,10 @@ module kinetostat_run
   integer, parameter :: format_json = 3
   !> Output format: one SVG sheet (hodographs and diagrams, or the mechanism at a step).
   integer, parameter :: format_svg = 4
+  !> Output format: a CSV header and one summary row (extremes, means, work).
+  integer, parameter :: format_summary = 5
   !> Names of the formats, for messages and --help.
-  character(*), parameter :: format_names = "table, csv, json, svg"
+  character(*), parameter :: format_names = "table, csv, json, svg, summary"
 
   !> How to run and what to write.
   type :: run_options_t
@@ -47,6 +50,8 @@ module kinetostat_run
     !> CSV and JSON add the kinematics columns (positions, link angles and speeds,
     !> accelerations of the centres of mass, force components).
     logical :: kinematics = .false.
+    !> Pair forces also in the moving axes of the link each acts on (--frame link).
+    logical :: link_frame = .false.
     !> SVG: the pair forces to draw, comma-separated ("" for all).
     character(len=:), allocatable :: pairs
     !> SVG: draw the mechanism at this row (0: the sheet of hodographs and diagrams).
@@ -66,6 +71,8 @@ contains
       format_from_name = format_csv
     case ("json")
       format_from_name = format_json
+    case ("summary")
+      format_from_name = format_summary
     case ("svg")
       format_from_name = format_svg
     case default
@@ -90,6 +97,7 @@ contains
     type(text_buffer_t), intent(inout) :: out
     !> Input, geometry or overflow error.
     type(error_t), allocatable, intent(out) :: error
+    character(len=:), allocatable :: warning
 
     call mech%read_deck(source, error)
     if (allocated(error)) return
@@ -102,14 +110,31 @@ contains
     call table%finish_columns()
     call guard_finite(table, error)
     if (allocated(error)) return
+    if (options%link_frame) then
+      if (.not. any(table%columns%link_axes)) then
+        call fatal_error(error, exit_usage, "--frame link: only the generic engine (&assur) reports reactions "// &
+          "in link axes; "//table%deck//" is &"//group)
+        return
+      end if
+      table%link_frame = .true.
+    end if
     if (allocated(options%overrides)) then
       if (size(options%overrides) > 0) call mark_overrides(table, options%overrides)
     end if
+    call coarse_step_warning(table, warning)
+    if (allocated(warning)) call table%add_warning(warning)
     select case (options%format)
     case (format_csv)
-      call write_csv(table, out, options%kinematics)
+      call write_csv(table, out, options%kinematics, options%link_frame)
+    case (format_summary)
+      if (table%row_count() == 0) then
+        call fatal_error(error, exit_input, table%deck//": &"//table%mechanism//": no rows to summarize")
+        return
+      end if
+      call out%put(summary_header(table, options%kinematics))
+      call out%put(summary_row(table, options%kinematics))
     case (format_json)
-      call write_json(mech%title(options%lang), table, out, options%kinematics)
+      call write_json(mech%title(options%lang), table, out, options%kinematics, options%link_frame)
     case (format_svg)
       if (options%at_step > 0) then
         call write_at_step(mech, table, options, out, error)

@@ -68,6 +68,11 @@ module kinetostat_step_table
     !> Force component columns: angle of the x axis of the frame the components are given in,
     !> measured in the mechanism's position frame, deg (0 when they are the same frame).
     real(wp) :: frame_angle = 0.0_wp
+    !> True for a pair force component in the moving axes of the link it acts on (<F>_along,
+    !> <F>_across): always in the table, shown by CSV and JSON only with --frame link.
+    logical :: link_axes = .false.
+    !> Link-axes columns: the label of that link (its angle is the kinematics column phi<label>).
+    character(len=:), allocatable :: frame_link
   end type column_t
 
   !> One remark of a run for the user (a warning on stderr, in JSON).
@@ -137,18 +142,29 @@ module kinetostat_step_table
     character(len=:), allocatable :: mismatch_label
     !> The run's warnings (stderr unless --quiet, exit 4 with --strict), in order.
     type(remark_t), allocatable :: warnings(:)
+    !> load_changes(k): an applied load (a cutting force, a resistance) has another value at
+    !> row k than at row k-1 (row 1: than at the last row, used when the run spans a turn).
+    !> Not allocated when the mechanism reports no switching loads.
+    logical, allocatable :: load_changes(:)
+    !> Index of the column of the coordinate along which the driver does work (a length, m);
+    !> 0: the input angle (deg) when the driver is a moment.
+    integer :: work_column = 0
     !> The run's overrides as given ("l_ab=0.12"), blank-padded; not allocated without any.
     character(len=:), allocatable :: overrides(:)
     !> Heading of the summary block (results of the whole run, e.g. work and efficiency).
     character(len=:), allocatable :: summary_heading
     !> Summary records (real values and lines of text), printed after RESULTS; none by default.
     type(echo_record_t), allocatable :: summary(:)
+    !> The run reports the pair forces in link axes (--frame link; the legacy table prints the
+    !> link-axes columns instead of magnitudes and angles).
+    logical :: link_frame = .false.
   contains
     procedure :: add_column
     procedure :: put_point
     procedure :: put_link
     procedure :: put_acceleration
     procedure :: put_components
+    procedure :: put_link_axes
     procedure :: shows
     procedure :: finish_columns
     procedure :: set_columns
@@ -156,6 +172,7 @@ module kinetostat_step_table
     procedure :: allocate_rows
     procedure :: row_count
     procedure :: add_warning
+    procedure :: note_load
     procedure :: warning_count
     procedure :: is_whole
     procedure :: set_selfcheck
@@ -256,17 +273,35 @@ contains
     call put_kinematic(self, k, force, "_y", "N", col_component, f(2), frame_angle)
   end subroutine put_components
 
+  !> Link axes (--frame link): components <force>_along, <force>_across (N) of a pair force
+  !> in row `k` in the moving axes of the link it acts on (x along the link's x axis).
+  pure subroutine put_link_axes(self, k, force, f, link)
+    class(step_table_t), intent(inout) :: self
+    !> Row.
+    integer, intent(in) :: k
+    !> Force name ("F21").
+    character(*), intent(in) :: force
+    !> Components (along, across), N.
+    real(wp), intent(in) :: f(2)
+    !> Label of the link the force acts on ("2"; its angle column is phi<link>).
+    character(*), intent(in) :: link
+    call put_kinematic(self, k, force, "_along", "N", col_component, f(1), link=link)
+    call put_kinematic(self, k, force, "_across", "N", col_component, f(2), link=link)
+  end subroutine put_link_axes
+
   !> Set the value of kinematics column `prefix//suffix` in row `k`, appending the column
   !> (zero in every row) on first use; a column of that name that is not a kinematics column
-  !> (one the mechanism reports anyway) is left as it is. The name comes in two parts so that
-  !> no string is built per value (only when a column is added).
-  pure subroutine put_kinematic(self, k, prefix, suffix, unit, kind, value, frame_angle)
+  !> (one the mechanism reports anyway) is left as it is. With `link` the column is a
+  !> link-axes column of that link instead. The name comes in two parts so that no string is
+  !> built per value (only when a column is added).
+  pure subroutine put_kinematic(self, k, prefix, suffix, unit, kind, value, frame_angle, link)
     type(step_table_t), intent(inout) :: self
     integer, intent(in) :: k
     character(*), intent(in) :: prefix, suffix, unit
     integer, intent(in) :: kind
     real(wp), intent(in) :: value
     real(wp), intent(in), optional :: frame_angle
+    character(*), intent(in), optional :: link
     type(column_t) :: c
     real(wp), allocatable :: grown(:, :)
     integer :: i
@@ -286,7 +321,9 @@ contains
       c%name = prefix//suffix
       c%unit = unit
       c%kind = kind
-      c%kinematic = .true.
+      c%kinematic = .not. present(link)
+      c%link_axes = present(link)
+      if (present(link)) c%frame_link = link
       if (present(frame_angle)) c%frame_angle = frame_angle
       self%columns = [self%columns, c]
       i = size(self%columns)
@@ -300,7 +337,7 @@ contains
         call move_alloc(grown, self%rows)
       end if
     end if
-    if (self%columns(i)%kinematic) then
+    if (self%columns(i)%kinematic .or. self%columns(i)%link_axes) then
       if (i > size(self%rows, 1)) then
         self%pending(i - size(self%rows, 1)) = value + 0.0_wp
       else
@@ -333,14 +370,22 @@ contains
     deallocate (self%pending)
   end subroutine finish_columns
 
-  !> Whether a writer shows column `c`: kinematics columns only when `kinematics` is true.
-  pure logical function shows(self, c, kinematics)
+  !> Whether a writer shows column `c`: kinematics columns only when `kinematics` is true,
+  !> link-axes columns only when `link_axes` is true (default false).
+  pure logical function shows(self, c, kinematics, link_axes)
     class(step_table_t), intent(in) :: self
     !> Column index.
     integer, intent(in) :: c
     !> Whether the kinematics columns were asked for (--kinematics).
     logical, intent(in) :: kinematics
-    shows = kinematics .or. .not. self%columns(c)%kinematic
+    !> Whether the link-axes columns were asked for (--frame link).
+    logical, intent(in), optional :: link_axes
+    if (self%columns(c)%link_axes) then
+      shows = .false.
+      if (present(link_axes)) shows = link_axes
+    else
+      shows = kinematics .or. .not. self%columns(c)%kinematic
+    end if
   end function shows
 
   !> Set all columns at once from parallel lists of names, units and kinds.
@@ -423,6 +468,25 @@ contains
     if (.not. allocated(self%warnings)) allocate (self%warnings(0))
     self%warnings = [self%warnings, remark_t(text)]
   end subroutine add_warning
+
+  !> Note a load applied per row: when it switches between two values (on and off: a
+  !> working and an idle value), the rows where it changes are marked in `load_changes`
+  !> (for the coarse-step warning of kinetostat_summary). A load with more than two values
+  !> (a curve, such as a gas force) is not a switch and marks nothing.
+  pure subroutine note_load(self, values)
+    class(step_table_t), intent(inout) :: self
+    !> The load's value at every row (any unit).
+    real(wp), intent(in) :: values(:)
+    integer :: n, other
+    n = size(values)
+    if (.not. allocated(self%load_changes)) allocate (self%load_changes(n), source=.false.)
+    if (n < 2 .or. size(self%load_changes) /= n) return
+    other = findloc(values /= values(1), .true., dim=1)
+    if (other == 0) return
+    if (any(values /= values(1) .and. values /= values(other))) return
+    self%load_changes(2:) = self%load_changes(2:) .or. values(2:) /= values(:n - 1)
+    self%load_changes(1) = self%load_changes(1) .or. values(1) /= values(n)
+  end subroutine note_load
 
   !> Number of warnings of the run.
   pure integer function warning_count(self)

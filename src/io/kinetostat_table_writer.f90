@@ -5,9 +5,12 @@ module kinetostat_table_writer
   use kinetostat_kinds, only: wp
   use kinetostat_selfcheck, only: selfcheck_tolerance
   use kinetostat_step_table, only: step_table_t, echo_record_t, echo_real_kind, echo_int_kind, &
-    echo_logical_kind, echo_array_kind, echo_text_kind, echo_heading_kind, echo_line_kind
-  use kinetostat_format, only: echo_number, echo_array_number, footer_number, limit_number, pad_right, put_fixed
+    echo_logical_kind, echo_array_kind, echo_text_kind, echo_heading_kind, echo_line_kind, col_force
+  use kinetostat_format, only: echo_number, echo_array_number, footer_number, limit_number, pad_right, put_fixed, &
+    fixed_field
   use kinetostat_labels, only: label, lang_ru
+  use kinetostat_summary, only: column_stats_t, column_stats, drive_work
+  use kinetostat_text, only: upper
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_text_buffer, only: text_buffer_t
   implicit none
@@ -50,6 +53,7 @@ contains
     end do
     call put_heading(out, label("RESULTS", lang))
     call mech%write_results(table, lang, out)
+    call put_run_summary(out, table, lang)
     if (allocated(table%summary)) call put_summary(out, table, lang)
     if (table%has_selfcheck) call put_footer(out, table, lang)
   end subroutine write_table
@@ -158,6 +162,54 @@ contains
     if (x <= selfcheck_tolerance) verdict = "OK"
   end function selfcheck_verdict
 
+  !> The SUMMARY block of a run over an input angle (none for the gears' stages): per
+  !> force magnitude column its largest value and the input angle where it occurs; the
+  !> driving effort's largest, smallest and mean value (mean over the input angle) and
+  !> its work over the run.
+  pure subroutine put_run_summary(out, table, lang)
+    type(text_buffer_t), intent(inout) :: out
+    type(step_table_t), intent(in) :: table
+    integer, intent(in) :: lang
+    type(column_stats_t) :: s
+    character(len=:), allocatable :: input
+    real(wp) :: work
+    logical :: known
+    integer :: c, d, n
+    n = table%row_count()
+    if (table%input_column == 0 .or. n == 0) return
+    input = upper(table%columns(table%input_column)%name)
+    call put_heading(out, label("SUMMARY", lang)//" ("//input//" "// &
+      trim(adjustl(fixed_field(table%rows(table%input_column, 1), 9, 2)))//" ... "// &
+      trim(adjustl(fixed_field(table%rows(table%input_column, n), 9, 2)))//" "// &
+      label(table%columns(table%input_column)%unit, lang)//")")
+    do c = 1, size(table%columns)
+      if (table%columns(c)%kind /= col_force .or. .not. table%columns(c)%csv) cycle
+      s = column_stats(table, c)
+      call out%put(at_line(table%columns(c)%name, "MAX", s%max, c, s%max_row))
+    end do
+    d = 0
+    if (allocated(table%driver)) d = table%column_index(table%driver)
+    if (d == 0) return
+    s = column_stats(table, d)
+    call out%put(at_line(table%columns(d)%name, "MAX", s%max, d, s%max_row))
+    call out%put(at_line(table%columns(d)%name, "MIN", s%min, d, s%min_row))
+    call out%put(value_line(table%columns(d)%name//" "//label("MEAN", lang), s%mean, &
+      label(table%columns(d)%unit, lang)))
+    call drive_work(table, work, known)
+    if (known) call out%put(value_line(label("WORK OF ", lang)//table%columns(d)%name, work, label("J", lang)))
+  contains
+    !> "   F16 MAX         =   5.342165581E+03  N     AT PHI1 =   120.00 deg".
+    pure function at_line(name, what, x, c, k) result(line)
+      character(*), intent(in) :: name, what
+      real(wp), intent(in) :: x
+      integer, intent(in) :: c, k
+      character(len=:), allocatable :: line
+      line = value_line(name//" "//label(what, lang), x, pad_right(label(table%columns(c)%unit, lang), 5))// &
+        label("AT ", lang)//input//" ="//fixed_field(table%rows(table%input_column, k), 9, 2)//" "// &
+        label(table%columns(table%input_column)%unit, lang)
+    end function at_line
+  end subroutine put_run_summary
+
   !> The summary block: a heading, then the records (values as INPUT DATA lines, text lines
   !> through the glossary).
   pure subroutine put_summary(out, table, lang)
@@ -174,6 +226,7 @@ contains
       end if
     end do
   end subroutine put_summary
+
 
   !> The self-check footer.
   pure subroutine put_footer(out, table, lang)

@@ -182,6 +182,7 @@ contains
     call table%add_column("N21", "N", col_component, csv=.false.)
     call table%add_column("M21", "N*m", col_moment, csv=.false.)
     table%input_column = 1
+    table%work_column = table%column_index("S")
     nc = size(pr3050_csv_columns)
     call table%allocate_rows(size(steps))
     do k = 1, size(steps)

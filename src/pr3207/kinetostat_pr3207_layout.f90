@@ -130,6 +130,7 @@ contains
       call put_kinematics(table, k, self%deck%p, steps(k))
     end do
     call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "M1")
+    call table%note_load(self%deck%f5c)
     call echo_deck(self%deck, table)
   end subroutine solve
 

@@ -204,3 +204,70 @@ expect_input_error assur-title-long '&assur: title: longer than 80 characters' \
   "$(deck_with tl_long data/assur_fourbar.nml "s/title = '[^']*'/title = '$(printf 'x%.0s' {1..81})'/")"
 head -c 286 data/assur_fourbar.nml >"$cli_tmp/tl_cut.nml"
 expect_input_error assur-title-unterminated '&assur: namelist group not terminated' "$cli_tmp/tl_cut.nml"
+
+# --- --frame link: pair forces in the axes of the link each acts on (issue 12, item 5)
+sc=data/assur_slider_crank.nml
+run_ks "$sc" --format csv --frame link; cp "$out" "$cli_tmp/frame_link.csv"
+# (the deck's only remark is the coarse step next to its force window, issue 10)
+[ "$rc" -eq 0 ] && ! grep -qv 'the input step 30 deg is coarser than 5 deg' "$err" && pass \
+  || fail frame-link-csv-exit "exit $rc: $(cat "$err")"
+header="$(head -1 "$cli_tmp/frame_link.csv")"
+case "$header" in *,M1,F21_along,F21_across,F23_along,F23_across,F30_along,F30_across,F10_along,F10_across) pass ;;
+  *) fail frame-link-csv-columns "header is '$header'" ;; esac
+# the default columns unchanged, in front; without --frame link no link-axes columns
+run_ks "$sc" --format csv; cp "$out" "$cli_tmp/frame_global.csv"
+cut -d, -f1-20 "$cli_tmp/frame_link.csv" | cmp -s - "$cli_tmp/frame_global.csv" && pass ||
+  fail frame-link-csv-prefix "the first 20 columns differ from the default CSV"
+run_ks "$sc" --format csv --frame global
+cmp -s "$out" "$cli_tmp/frame_global.csv" && pass || fail frame-global-is-default "--frame global differs from the default"
+# the slider's frame pair F30 (guide along x): along 0, across = F30N; the crank pin F10 at
+# phi1 = 0 in crank axes = its global components; phi1 = 90: along = F10y, across = -F10x
+python3 - "$cli_tmp/frame_link.csv" <<'PY' && pass || fail frame-link-csv-values "link-axes values wrong"
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+bad = []
+for r in rows:
+    f = {k: float(v) for k, v in r.items()}
+    s = max(f[k] for k in ("F21", "F23", "F30", "F10"))
+    checks = [(f["F30_along"], 0.0), (f["F30_across"], f["F30N"])]
+    if abs(f["phi1"]) < 1e-12:
+        checks += [(f["F10_along"], f["F10x"]), (f["F10_across"], f["F10y"])]
+    if abs(f["phi1"] - 90) < 1e-12:
+        checks += [(f["F10_along"], f["F10y"]), (f["F10_across"], -f["F10x"])]
+    bad += [(f["phi1"], a, b) for a, b in checks if abs(a - b) > 1e-12 * s]
+if bad or len(rows) < 2:
+    print(bad[:5], len(rows)); sys.exit(1)
+PY
+# table: a heading naming the frame, ALONG/ACROSS labels, the values of the CSV (2 decimals)
+run_ks "$sc" --frame link; cp "$out" "$cli_tmp/frame_link.table"
+grep -q '^ REACTIONS IN THE AXES OF THE LINK EACH ACTS ON (LINE 1 ALONG ITS X AXIS, LINE 2 ACROSS), N' "$out" && pass ||
+  fail frame-link-table-heading "no link-axes heading"
+grep -Eq '^ +PHI1 +F21_ALONG +F23_ALONG +F30_ALONG +F10_ALONG +M1$' "$out" && pass ||
+  fail frame-link-table-labels "$(grep PHI1 "$out")"
+v="$(awk -F, 'NR==3{printf "%.2f %.2f", $21, $22}' "$cli_tmp/frame_link.csv")"
+line1="$(grep -A1 '^    30\.00 ' "$out" | sed -n 1p)"
+line2="$(grep -A1 '^    30\.00 ' "$out" | sed -n 2p)"
+[ "$(echo "$line1" | awk '{print $2}')" = "${v% *}" ] && [ "$(echo "$line2" | awk '{print $1}')" = "${v#* }" ] && pass ||
+  fail frame-link-table-values "step 2: table '$line1' / '$line2', CSV F21_along, F21_across $v"
+run_ks "$sc" --frame link --lang ru
+grep -q '^ РЕАКЦИИ В ОСЯХ ЗВЕНА' "$out" && pass || fail frame-link-table-ru "no Russian heading"
+# JSON: the link-axes columns carry their frame and link
+run_ks "$sc" --format json --frame link
+python3 - "$out" <<'PY' && pass || fail frame-link-json "link-axes columns without frame/link"
+import json, sys
+d = json.load(open(sys.argv[1]))
+cols = {c["name"]: c for c in d["columns"]}
+ok = cols["F21_along"].get("frame") == "link" and cols["F21_along"].get("link") == "2" \
+    and cols["F30_across"].get("link") == "3" and cols["F10_along"].get("link") == "1" \
+    and all(len(r) == len(d["columns"]) for r in d["rows"])
+sys.exit(0 if ok else 1)
+PY
+run_ks "$sc" --format json
+grep -q '_along' "$out" && fail frame-default-json "link-axes columns without --frame link" || pass
+# other mechanisms: exit 1 naming the option; a bad value: exit 1
+expect_exit frame-link-not-assur 1 data/pr3207.nml --frame link
+grep -q '^kinetostat: error: --frame link: only the generic engine (&assur)' "$err" && pass ||
+  fail frame-link-not-assur-message "$(cat "$err")"
+expect_exit frame-bad-value 1 "$sc" --frame body
+grep -q "^kinetostat: error: --frame must be global or link (got 'body')" "$err" && pass ||
+  fail frame-bad-value-message "$(cat "$err")"

@@ -81,9 +81,14 @@ python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); assert [e["name"] f
 
 # --- bad --set: exit 2, one line, naming --set
 run_ks data/pr3207.nml --set l_abx=1
-expect_one_line_error set-unknown-name 2 "l_abx = 1: unknown variable .l_abx. in this group.*\(from --set l_abx=1\)$"
+expect_one_line_error set-unknown-name 2 "--set l_abx=1: &pr3207: l_abx = 1: unknown variable 'l_abx'"
+run_ks data/pr3207.nml --set 'l_ab=0,11'
+expect_one_line_error set-decimal-comma 2 "--set l_ab=0,11: &pr3207: l_ab = 0,11: decimal comma\? write 0.11$"
 run_ks data/pr3207.nml --set l_ab=abc
-expect_one_line_error set-bad-value 2 "&pr3207: .*\(from --set l_ab=abc\)$"
+expect_one_line_error set-bad-value 2 "--set l_ab=abc: &pr3207: "
+grep -q "^kinetostat: error: --set l_ab=abc: &pr3207: l_ab = abc: " "$err" && pass || fail set-bad-value-start "$(cat "$err")"
+# no line number of the deck is given for an override's own line (the file has no such line)
+grep -q 'pr3207.nml:[0-9]' "$err" && fail set-no-deck-line "$(cat "$err")" || pass
 run_ks data/pr3207.nml --set l_ab=-1
 expect_one_line_error set-invalid-value 2 "&pr3207: l_ab: must be > 0 .*\(from --set l_ab=-1\)$"
 run_ks data/pr3207.nml --set n=2147483648

@@ -1,12 +1,13 @@
 # Templates (every kind and the generic-engine presets fourbar, engine), template -o FILE,
 # --help listing every option, the man page and the bash completion (issue 10 item 7).
 
-# --- every template runs: exit 0, nothing on stderr, self-check OK
+# --- every template runs: exit 0, nothing on stderr (but the coarse-step remark of issue 10:
+# the pr3207 and assur templates switch a load at 30 deg steps), self-check OK
 for kind in pr3207 pr3050 sixbar assur gears cam fourbar engine; do
   run_ks template "$kind"; cp "$out" "$cli_tmp/tpl_$kind.nml"
   if [ "$rc" -ne 0 ] || [ ! -s "$cli_tmp/tpl_$kind.nml" ]; then fail "template-$kind" "rc=$rc: $(cat "$err")"; continue; fi
   run_ks "$cli_tmp/tpl_$kind.nml"
-  if [ "$rc" -eq 0 ] && [ ! -s "$err" ] && ! grep -q 'FAILED' "$out"; then pass
+  if [ "$rc" -eq 0 ] && ! grep -qv 'the input step 30 deg is coarser than 5 deg' "$err" && ! grep -q 'FAILED' "$out"; then pass
   else fail "template-$kind-runs" "rc=$rc, stderr: $(head -c 300 "$err")"; fi
 done
 # the presets are the tutorial's decks, byte for byte
@@ -58,7 +59,7 @@ cmp -s "$out" "$cli_tmp/eq.csv" && [ -s "$out" ] && pass || fail format-equals-f
 # --- --help lists every option and subcommand; the man page and the completion know them too
 run_ks --help
 for word in -o --output --set --format --pairs --at --lang --kinematics -q --quiet --strict -h --help -V \
-  --version template diff --rtol --atol table csv json svg fourbar engine; do
+  --version template diff --rtol --atol table csv json svg fourbar engine sweep --vary --part summary; do
   if grep -q -- "$word" "$out"; then pass; else fail "help-lists-$word" "--help does not mention $word"; fi
   if grep -q -- "$(printf '%s' "$word" | sed 's/-/\\\\-/g')" man/kinetostat.1; then pass
   else fail "man-lists-$word" "man/kinetostat.1 does not mention $word"; fi

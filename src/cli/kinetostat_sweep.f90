@@ -1,0 +1,304 @@
+!> `kinetostat sweep`: one deck run over a grid of overrides (`--vary NAME=FROM:TO:COUNT`,
+!> cartesian product, the first --vary varying slowest), one summary row per variant, in
+!> grid order. The variants run one after the other: threads (OpenMP) are not safe here,
+!> because gfortran's run-time library corrupts concurrent internal READ/WRITE (namelist
+!> reading, number formatting) - measured, see docs/cli.md "Parameter sweeps". Larger
+!> sweeps are split over processes (`--part K/N`, xargs -P, GNU parallel, Slurm arrays).
+module kinetostat_sweep
+  use, intrinsic :: iso_fortran_env, only: error_unit, int64
+  use kinetostat_kinds, only: wp
+  use kinetostat_error, only: error_t, fatal_error, exit_input
+  use kinetostat_text, only: int_str, real_str
+  use kinetostat_table_writer, only: selfcheck_verdict
+  use kinetostat_deck, only: deck_source_t, read_group_name
+  use kinetostat_override, only: override_t, parse_override, apply_overrides
+  use kinetostat_step_table, only: step_table_t
+  use kinetostat_text_buffer, only: text_buffer_t
+  use kinetostat_mechanism, only: mechanism_t
+  use kinetostat_run, only: run_options_t, run_mechanism, format_summary
+  use kinetostat_summary, only: summary_header, summary_row
+  use kinetostat_registry, only: create_mechanism, known_kinds
+  implicit none
+  private
+  public :: vary_t, parse_vary, run_sweep, variant_result_t, variant_count
+
+  !> Largest number of variants a sweep may have.
+  integer, parameter :: max_variants = 1000000
+
+  !> One --vary: NAME from FROM to TO in COUNT equal steps (both ends included).
+  type :: vary_t
+    !> Namelist designator.
+    character(len=:), allocatable :: name
+    !> First value.
+    real(wp) :: from = 0.0_wp
+    !> Last value.
+    real(wp) :: to = 0.0_wp
+    !> Number of values (>= 1; 1 means FROM only).
+    integer :: count = 1
+  end type vary_t
+
+  !> What one variant came to.
+  type :: variant_result_t
+    !> Its overrides ("NAME=VALUE" of every --set, then every --vary).
+    type(override_t), allocatable :: overrides(:)
+    !> Summary CSV header of its run.
+    character(len=:), allocatable :: header
+    !> Its summary CSV row.
+    character(len=:), allocatable :: row
+    !> Its warnings, one line each (without the "kinetostat: warning: " prefix).
+    type(text_buffer_t) :: warnings
+    !> Number of warnings (a failed self-check included).
+    integer :: warning_count = 0
+    !> Its error, if any.
+    type(error_t), allocatable :: error
+  end type variant_result_t
+
+contains
+
+  !> A --vary from "NAME=FROM:TO:COUNT".
+  subroutine parse_vary(arg, vary, error)
+    !> The argument.
+    character(*), intent(in) :: arg
+    !> The parsed --vary.
+    type(vary_t), intent(out) :: vary
+    !> Malformed (exit 2).
+    type(error_t), allocatable, intent(out) :: error
+    type(override_t) :: o
+    integer :: c1, c2, ios
+    real(wp) :: count
+    character(len=:), allocatable :: what
+    what = "--vary '"//arg//"': "
+    call parse_override(arg, "--vary", o, error)
+    if (allocated(error)) then
+      error%message = error%message//" (expected NAME=FROM:TO:COUNT)"
+      return
+    end if
+    vary%name = o%name
+    c1 = index(o%value, ":")
+    c2 = index(o%value, ":", back=.true.)
+    if (c1 == 0 .or. c2 == c1) then
+      call fatal_error(error, exit_input, what//"expected NAME=FROM:TO:COUNT (e.g. --vary l_ab=0.08:0.14:7)")
+      return
+    end if
+    read (o%value(1:c1 - 1), *, iostat=ios) vary%from
+    if (ios == 0) read (o%value(c1 + 1:c2 - 1), *, iostat=ios) vary%to
+    if (ios == 0) read (o%value(c2 + 1:), *, iostat=ios) count
+    if (ios /= 0) then
+      call fatal_error(error, exit_input, what//"FROM, TO and COUNT must be numbers")
+    else if (.not. (abs(vary%from) <= huge(1.0_wp) .and. abs(vary%to) <= huge(1.0_wp))) then
+      call fatal_error(error, exit_input, what//"FROM and TO must be finite")
+    else if (.not. (count >= 1.0_wp .and. count <= real(max_variants, wp) .and. count == aint(count))) then
+      call fatal_error(error, exit_input, what//"COUNT must be a whole number from 1 to "//int_str(max_variants))
+    else
+      vary%count = nint(count)
+    end if
+  end subroutine parse_vary
+
+  !> Number of variants of a grid, or -1 when it exceeds max_variants.
+  pure integer function variant_count(varies)
+    type(vary_t), intent(in) :: varies(:)
+    integer(int64) :: n
+    integer :: i
+    n = 1
+    do i = 1, size(varies)
+      n = n * varies(i)%count
+      if (n > max_variants) then
+        variant_count = -1
+        return
+      end if
+    end do
+    variant_count = int(n)
+  end function variant_count
+
+  !> The value of --vary `vary` at index `i` (1..count) as the shortest text that reads back
+  !> as the grid value to 14 significant digits (so 0.1:0.2:3 gives 0.15, not
+  !> 0.15000000000000002); that text is what the run and the summary use.
+  function vary_value(vary, i) result(text)
+    type(vary_t), intent(in) :: vary
+    integer, intent(in) :: i
+    character(len=:), allocatable :: text
+    real(wp) :: x, back
+    character(len=40) :: buf
+    character(len=16) :: fmt
+    integer :: digits, ios
+    if (vary%count == 1) then
+      x = vary%from
+    else if (i == vary%count) then
+      x = vary%to
+    else
+      x = vary%from + (vary%to - vary%from) * real(i - 1, wp) / real(vary%count - 1, wp)
+    end if
+    do digits = 1, 17
+      write (fmt, '("(es26.",i0,"e3)")') digits - 1
+      write (buf, fmt) x
+      read (buf, *, iostat=ios) back
+      if (ios /= 0) cycle
+      if (abs(back - x) <= 1.0e-14_wp * abs(x) .or. digits == 17) exit
+    end do
+    text = trim(adjustl(buf))
+    call tidy(text)
+  end function vary_value
+
+  !> Exponent form "D.DDDe+XXX" as people write numbers: plain decimals from 1e-4 to below
+  !> 1e15 ("1.50e-001" -> "0.15", "6.e+001" -> "60"), the exponent form otherwise without
+  !> superfluous zeros ("5.e-006" -> "5e-6").
+  pure subroutine tidy(text)
+    character(len=:), allocatable, intent(inout) :: text
+    character(len=:), allocatable :: sign, digits
+    integer :: e, ex, ios, n
+    e = scan(text, "eE")
+    if (e == 0) return
+    read (text(e + 1:), *, iostat=ios) ex
+    if (ios /= 0) return
+    sign = ""
+    if (text(1:1) == "-") sign = "-"
+    digits = text(len(sign) + 1:e - 1)
+    n = index(digits, ".")
+    if (n > 0) digits = digits(1:n - 1)//digits(n + 1:)
+    n = len(digits)
+    do while (n > 1 .and. digits(n:n) == "0")
+      n = n - 1
+    end do
+    digits = digits(1:n)
+    if (digits == "0") then
+      text = "0"
+    else if (ex >= 15 .or. ex < -4) then
+      text = sign//digits(1:1)
+      if (len(digits) > 1) text = text//"."//digits(2:)
+      text = text//"e"//int_str(ex)
+    else if (ex < 0) then
+      text = sign//"0."//repeat("0", -ex - 1)//digits
+    else if (len(digits) <= ex + 1) then
+      text = sign//digits//repeat("0", ex + 1 - len(digits))
+    else
+      text = sign//digits(1:ex + 1)//"."//digits(ex + 2:)
+    end if
+  end subroutine tidy
+
+  !> Run every variant of the grid on the deck. `results(v)` is variant v (the first
+  !> --vary varies slowest). `progress` shows a line on stderr (carriage return,
+  !> overwritten) after the first second.
+  subroutine run_sweep(source, sets, varies, part, parts, progress, first, results, error)
+    !> The deck as read.
+    type(deck_source_t), intent(in) :: source
+    !> The --set overrides (applied before every --vary).
+    type(override_t), intent(in) :: sets(:)
+    !> The --vary grid axes.
+    type(vary_t), intent(in) :: varies(:)
+    !> This process runs part `part` of `parts` equal contiguous blocks of the grid (1, 1:
+    !> all of it); concatenated in part order, the parts' outputs are the whole grid's.
+    integer, intent(in) :: part, parts
+    !> Whether to show a progress line (stderr is a terminal).
+    logical, intent(in) :: progress
+    !> Grid number of results(1) (the variants of this part are first, first+1, ...).
+    integer, intent(out) :: first
+    !> One result per variant of this part.
+    type(variant_result_t), allocatable, intent(out) :: results(:)
+    !> Deck-level error (no group, unknown mechanism, grid too large).
+    type(error_t), allocatable, intent(out) :: error
+    character(len=:), allocatable :: group
+    class(mechanism_t), allocatable :: probe
+    integer :: n, v, done, last
+    integer(int64) :: start, rate
+    logical :: shown
+    call read_group_name(source, group, error)
+    if (allocated(error)) return
+    call create_mechanism(group, probe)
+    if (.not. allocated(probe)) then
+      call fatal_error(error, exit_input, source%path//": &"//group//": unknown mechanism (known: "// &
+        known_kinds()//")")
+      return
+    end if
+    n = variant_count(varies)
+    if (n < 0) then
+      call fatal_error(error, exit_input, "sweep: more than "//int_str(max_variants)//" variants")
+      return
+    end if
+    first = int(int(n, int64) * (part - 1) / parts) + 1
+    last = int(int(n, int64) * part / parts)
+    allocate (results(last - first + 1))
+    do v = first, last
+      results(v - first + 1)%overrides = variant_overrides(sets, varies, v)
+    end do
+    done = 0
+    shown = .false.
+    call system_clock(start, rate)
+    do v = 1, size(results)
+      call run_variant(source, group, results(v))
+      done = done + 1
+      if (progress) call show_progress(done, size(results), start, rate, shown)
+    end do
+    if (shown) write (error_unit, '(a)') ""
+  end subroutine run_sweep
+
+  !> The overrides of variant v: the --set ones, then one per --vary.
+  function variant_overrides(sets, varies, v) result(overrides)
+    type(override_t), intent(in) :: sets(:)
+    type(vary_t), intent(in) :: varies(:)
+    integer, intent(in) :: v
+    type(override_t), allocatable :: overrides(:)
+    integer :: i, k, rest, index_i
+    character(len=:), allocatable :: value
+    allocate (overrides(size(sets) + size(varies)))
+    do k = 1, size(sets)
+      overrides(k) = sets(k)
+    end do
+    rest = v - 1
+    do i = size(varies), 1, -1
+      index_i = mod(rest, varies(i)%count) + 1
+      rest = rest / varies(i)%count
+      value = vary_value(varies(i), index_i)
+      k = size(sets) + i
+      overrides(k)%name = varies(i)%name
+      overrides(k)%value = value
+    end do
+  end function variant_overrides
+
+  !> One variant: the deck with its overrides through the one run pipeline.
+  subroutine run_variant(source, group, result)
+    type(deck_source_t), intent(in) :: source
+    character(*), intent(in) :: group
+    type(variant_result_t), intent(inout) :: result
+    type(deck_source_t) :: patched
+    class(mechanism_t), allocatable :: mech
+    type(run_options_t) :: options
+    type(step_table_t) :: table
+    type(text_buffer_t) :: out
+    integer :: i
+    call apply_overrides(source, result%overrides, patched)
+    call create_mechanism(group, mech)
+    options%format = format_summary
+    options%overrides = result%overrides
+    call run_mechanism(mech, group, patched, options, table, out, result%error)
+    if (allocated(result%error)) return
+    result%header = summary_header(table, .false.)
+    result%row = summary_row(table, .false.)
+    do i = 1, table%warning_count()
+      call result%warnings%put(table%warnings(i)%text)
+    end do
+    result%warning_count = table%warning_count()
+    if (.not. table%has_selfcheck) return
+    if (selfcheck_verdict(table%max_residual) /= "OK" .or. selfcheck_verdict(table%max_mismatch) /= "OK") then
+      call result%warnings%put("self-check failed (a bug; please report): max equilibrium residual "// &
+        real_str(table%max_residual)//", max "//table%driver//" mismatch "//real_str(table%max_mismatch))
+      result%warning_count = result%warning_count + 1
+    end if
+  end subroutine run_variant
+
+  !> "kinetostat: sweep: 37/120 variants, 12 s" on stderr, overwritten in place; only
+  !> after the first second.
+  subroutine show_progress(done, n, start, rate, shown)
+    integer, intent(in) :: done, n
+    integer(int64), intent(in) :: start, rate
+    logical, intent(inout) :: shown
+    integer(int64) :: now
+    call system_clock(now)
+    if (rate <= 0) return
+    if (now - start < rate) return
+    write (error_unit, '(a)', advance='no') achar(13)//"kinetostat: sweep: "//int_str(done)//"/"// &
+      int_str(n)//" variants, "//int_str(int((now - start) / rate))//" s"
+    flush (error_unit)
+    shown = .true.
+  end subroutine show_progress
+
+end module kinetostat_sweep

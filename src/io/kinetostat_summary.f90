@@ -1,0 +1,318 @@
+!> What a run comes to, for parameter studies and the legacy table's footer: per column
+!> the largest and smallest value with the input angle where each occurs and the mean over
+!> the input angle; the work of the driving moment (or force) over the run; and the warning
+!> when the step is too coarse to catch a force peak next to a load that switches on or off.
+module kinetostat_summary
+  use kinetostat_kinds, only: wp, deg_to_rad
+  use kinetostat_text, only: int_str, lower
+  use kinetostat_step_table, only: step_table_t, col_force, col_force_angle, col_moment
+  use kinetostat_format, only: cell_number
+  implicit none
+  private
+  public :: column_stats_t, column_stats, summarized, drive_work, coarse_step_warning
+  public :: summary_header, summary_row, coarse_step_limit
+
+  !> Values closer than this, relative to the column's largest magnitude, are a tie.
+  real(wp), parameter :: tie_rel = 1.0e-12_wp
+  !> Input steps coarser than this (deg) may miss a force peak next to a load edge.
+  real(wp), parameter :: coarse_step_limit = 5.0_wp
+
+  !> Extremes and mean of one column over a run.
+  type :: column_stats_t
+    !> Largest value (unit of the column).
+    real(wp) :: max = 0.0_wp
+    !> Smallest value.
+    real(wp) :: min = 0.0_wp
+    !> Mean over the input angle (trapezoid rule), or over the rows without one.
+    real(wp) :: mean = 0.0_wp
+    !> Row of the largest value (the first one on a tie: within `tie_rel` of the column's
+    !> largest magnitude, so that roundoff between equal positions, such as 0 and 360 deg,
+    !> does not decide).
+    integer :: max_row = 0
+    !> Row of the smallest value (the first one on a tie).
+    integer :: min_row = 0
+  end type column_stats_t
+
+contains
+
+  !> Whether column `c` takes part in a summary: a CSV column other than the input angle
+  !> and other than the angle of a force (a direction modulo 360 deg has no meaningful
+  !> extremes or mean); a kinematics column only when `kinematics` (--kinematics).
+  pure logical function summarized(table, c, kinematics)
+    !> The results.
+    type(step_table_t), intent(in) :: table
+    !> Column index.
+    integer, intent(in) :: c
+    !> Whether the kinematics columns are shown.
+    logical, intent(in) :: kinematics
+    summarized = table%columns(c)%csv .and. c /= table%input_column .and. &
+      table%columns(c)%kind /= col_force_angle .and. (kinematics .or. .not. table%columns(c)%kinematic)
+  end function summarized
+
+  !> Extremes and mean of column `c` (the table has at least one row). The mean is the
+  !> integral over the input angle divided by the angle covered (trapezoid rule; over a
+  !> full turn tabulated at 0 and 360 deg this is the cycle average), or the arithmetic
+  !> mean of the rows when there is no input angle or it does not move.
+  pure function column_stats(table, c) result(s)
+    !> The results.
+    type(step_table_t), intent(in) :: table
+    !> Column index.
+    integer, intent(in) :: c
+    type(column_stats_t) :: s
+    real(wp) :: span, tie
+    integer :: n
+    n = table%row_count()
+    associate (v => table%rows(c, :))
+      tie = tie_rel * maxval(abs(v))
+      s%max_row = findloc(v >= maxval(v) - tie, .true., dim=1)
+      s%min_row = findloc(v <= minval(v) + tie, .true., dim=1)
+      s%max = v(s%max_row)
+      s%min = v(s%min_row)
+      s%mean = sum(v) / real(n, wp)
+      if (table%input_column > 0 .and. n > 1) then
+        associate (x => table%rows(table%input_column, :))
+          span = x(n) - x(1)
+          if (span /= 0.0_wp) s%mean = trapezoid(v, x) / span
+        end associate
+      end if
+    end associate
+  end function column_stats
+
+  !> Integral of y over x by the trapezoid rule (x in the table's order).
+  pure real(wp) function trapezoid(y, x)
+    real(wp), intent(in) :: y(:), x(:)
+    integer :: n
+    n = size(y)
+    trapezoid = 0.0_wp
+    if (n < 2) return
+    trapezoid = 0.5_wp * sum((y(2:) + y(:n - 1)) * (x(2:) - x(:n - 1)))
+  end function trapezoid
+
+  !> Work of the driver over the run, J: the integral of the driving moment over the input
+  !> angle in rad (M1 dphi1), or of the driving force over its coordinate column (F2 ds),
+  !> taken from the first row to the last (trapezoid rule). Over a tabulated full turn this
+  !> is the work per cycle; over a part of a turn, the work of that part only. `known` is
+  !> false when the driver has no such coordinate (gears, cams).
+  pure subroutine drive_work(table, work, known)
+    !> The results.
+    type(step_table_t), intent(in) :: table
+    !> The work, J.
+    real(wp), intent(out) :: work
+    !> Whether the work is defined for this mechanism.
+    logical, intent(out) :: known
+    integer :: d
+    work = 0.0_wp
+    known = .false.
+    if (.not. allocated(table%driver) .or. table%row_count() == 0) return
+    d = table%column_index(table%driver)
+    if (d == 0) return
+    if (table%work_column > 0) then
+      work = trapezoid(table%rows(d, :), table%rows(table%work_column, :))
+      known = .true.
+    else if (table%columns(d)%kind == col_moment .and. table%input_column > 0) then
+      if (table%columns(table%input_column)%unit /= "deg") return
+      work = trapezoid(table%rows(d, :), table%rows(table%input_column, :) * deg_to_rad)
+      known = .true.
+    end if
+  end subroutine drive_work
+
+  !> A warning when the input step exceeds `coarse_step_limit` and the largest value of a
+  !> force column lies within one step of a row where an applied load switches on or off:
+  !> the true peak may lie between the rows and be missed. Unallocated otherwise.
+  pure subroutine coarse_step_warning(table, warning)
+    !> The results.
+    type(step_table_t), intent(in) :: table
+    !> The warning text.
+    character(len=:), allocatable, intent(out) :: warning
+    real(wp) :: step
+    integer :: n, c, k, edge
+    character(len=:), allocatable :: names, first_text
+    n = table%row_count()
+    if (table%input_column == 0 .or. n < 2 .or. .not. allocated(table%load_changes)) return
+    if (size(table%load_changes) /= n) return
+    associate (x => table%rows(table%input_column, :))
+      step = maxval(abs(x(2:) - x(:n - 1)))
+      if (.not. step > coarse_step_limit * (1.0_wp + 1.0e-9_wp)) return
+      names = ""
+      do c = 1, size(table%columns)
+        if (.not. table%columns(c)%csv .or. table%columns(c)%kind /= col_force) cycle
+        k = maxloc(table%rows(c, :), dim=1)
+        if (.not. table%rows(c, k) > 0.0_wp) cycle
+        edge = near_edge(k)
+        if (edge == 0) cycle
+        if (len(names) == 0) then
+          first_text = " (the peak of "//table%columns(c)%name//" = "//brief(table%rows(c, k))// &
+            " "//table%columns(c)%unit//" at "//input_text(k)//", the load switches between "// &
+            input_text(edge - 1)//" and "//input_text(edge)//")"
+          names = table%columns(c)%name
+        else
+          names = names//", "//table%columns(c)%name
+        end if
+      end do
+      if (len(names) == 0) return
+      warning = "the input step "//brief(step)//" deg is coarser than "// &
+        brief(coarse_step_limit)//" deg and a load switches on or off within one step of the peak of "// &
+        names//first_text//": the true peak may be missed; rerun with a finer step (e.g. --set "// &
+        step_variable()//"=0.5) to check"
+    end associate
+  contains
+    !> Row e (2..n, or 1 for the wrap from the last row) with load_changes(e) whose interval
+    !> [e-1, e] touches row k; 0 when none.
+    pure integer function near_edge(k)
+      integer, intent(in) :: k
+      near_edge = 0
+      if (table%load_changes(k) .and. k > 1) then
+        near_edge = k
+      else if (k < n) then
+        if (table%load_changes(k + 1)) near_edge = k + 1
+      end if
+    end function near_edge
+    !> "phi1 = 90 deg" of row j.
+    pure function input_text(j) result(t)
+      integer, intent(in) :: j
+      character(len=:), allocatable :: t
+      t = table%columns(table%input_column)%name//" = "// &
+        brief(table%rows(table%input_column, j))//" "//table%columns(table%input_column)%unit
+    end function input_text
+    !> The deck variable of the step: dphi, or dphi3 for an input phi3...
+    pure function step_variable() result(t)
+      character(len=:), allocatable :: t
+      t = "dphi"
+      if (lower(table%columns(table%input_column)%name) == "phi3rel") t = "dphi3"
+    end function step_variable
+  end subroutine coarse_step_warning
+
+  !> x for a message: two decimals without trailing zeros ("5342.17", "120", "0.5"), or
+  !> exponent form for very large or small magnitudes.
+  pure function brief(x) result(t)
+    real(wp), intent(in) :: x
+    character(len=:), allocatable :: t
+    character(len=32) :: buf
+    integer :: n
+    if (abs(x) >= 1.0e9_wp .or. (abs(x) < 0.01_wp .and. x /= 0.0_wp)) then
+      write (buf, '(es10.3)') x
+      t = trim(adjustl(buf))
+      return
+    end if
+    write (buf, '(f0.2)') x
+    t = trim(adjustl(buf))
+    if (t(1:1) == ".") t = "0"//t
+    if (t(1:min(2, len(t))) == "-.") t = "-0"//t(2:)
+    n = len(t)
+    do while (t(n:n) == "0")
+      n = n - 1
+    end do
+    if (t(n:n) == ".") n = n - 1
+    t = t(1:n)
+  end function brief
+
+  !> Summary CSV header: the override names, then rows and the input range, then per
+  !> summarized column NAME_max, NAME_max_at, NAME_min, NAME_min_at, NAME_mean, then
+  !> work_DRIVER when the work is defined.
+  pure function summary_header(table, kinematics) result(line)
+    !> The results of one run (columns and overrides; the rows are not used).
+    type(step_table_t), intent(in) :: table
+    !> Whether the kinematics columns are summarized too (--kinematics).
+    logical, intent(in) :: kinematics
+    character(len=:), allocatable :: line
+    character(len=:), allocatable :: at
+    real(wp) :: work
+    logical :: known
+    integer :: i, c
+    line = ""
+    if (allocated(table%overrides)) then
+      do i = 1, size(table%overrides)
+        line = line//csv_text(override_part(table%overrides(i), 1))//","
+      end do
+    end if
+    line = line//"rows"
+    at = "row"
+    if (table%input_column > 0) then
+      at = table%columns(table%input_column)%name
+      line = line//","//at//"_first,"//at//"_last"
+    end if
+    do c = 1, size(table%columns)
+      if (.not. summarized(table, c, kinematics)) cycle
+      associate (name => table%columns(c)%name)
+        line = line//","//name//"_max,"//name//"_max_at,"//name//"_min,"//name//"_min_at,"//name//"_mean"
+      end associate
+    end do
+    call drive_work(table, work, known)
+    if (known) line = line//",work_"//table%driver
+  end function summary_header
+
+  !> Summary CSV row of a run (the columns of `summary_header`): override values as given,
+  !> numbers at full precision (as the CSV), "_at" the input angle (or the row number).
+  pure function summary_row(table, kinematics) result(line)
+    !> The results of one run (at least one row).
+    type(step_table_t), intent(in) :: table
+    !> Whether the kinematics columns are summarized too (--kinematics).
+    logical, intent(in) :: kinematics
+    character(len=:), allocatable :: line
+    type(column_stats_t) :: s
+    real(wp) :: work
+    logical :: known, whole
+    integer :: i, c, n
+    line = ""
+    if (allocated(table%overrides)) then
+      do i = 1, size(table%overrides)
+        line = line//csv_text(override_part(table%overrides(i), 2))//","
+      end do
+    end if
+    n = table%row_count()
+    line = line//int_str(n)
+    if (table%input_column > 0) line = line//","//cell_number(table%rows(table%input_column, 1), .false.)// &
+      ","//cell_number(table%rows(table%input_column, n), .false.)
+    do c = 1, size(table%columns)
+      if (.not. summarized(table, c, kinematics)) cycle
+      s = column_stats(table, c)
+      whole = table%is_whole(c)
+      line = line//","//cell_number(s%max, whole)//","//at_text(s%max_row)//","//cell_number(s%min, whole)// &
+        ","//at_text(s%min_row)//","//cell_number(s%mean, .false.)
+    end do
+    call drive_work(table, work, known)
+    if (known) line = line//","//cell_number(work, .false.)
+  contains
+    pure function at_text(k) result(t)
+      integer, intent(in) :: k
+      character(len=:), allocatable :: t
+      if (table%input_column > 0) then
+        t = cell_number(table%rows(table%input_column, k), .false.)
+      else
+        t = int_str(k)
+      end if
+    end function at_text
+  end function summary_row
+
+  !> Part 1 (the name) or 2 (the value) of "NAME=VALUE" (blank padding dropped).
+  pure function override_part(text, part) result(t)
+    character(*), intent(in) :: text
+    integer, intent(in) :: part
+    character(len=:), allocatable :: t
+    integer :: eq
+    eq = index(text, "=")
+    if (part == 1) then
+      t = text(1:eq - 1)
+    else
+      t = trim(text(eq + 1:))
+    end if
+  end function override_part
+
+  !> A CSV field: quoted (quotes doubled) when it holds a comma, a quote or a blank.
+  pure function csv_text(text) result(t)
+    character(*), intent(in) :: text
+    character(len=:), allocatable :: t
+    integer :: i
+    if (scan(text, ',"  ') == 0) then
+      t = text
+      return
+    end if
+    t = '"'
+    do i = 1, len(text)
+      if (text(i:i) == '"') t = t//'"'
+      t = t//text(i:i)
+    end do
+    t = t//'"'
+  end function csv_text
+
+end module kinetostat_summary

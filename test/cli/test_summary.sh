@@ -1,0 +1,180 @@
+# Summaries and sweeps (issue 10 items 2 and 4): --format summary, the legacy table's
+# SUMMARY block, the coarse-step warning, kinetostat sweep.
+
+# --- --format summary: every figure recomputed from the run's own CSV (max, min, the input
+# angle of each, the mean over the input angle, the work of M1 over the input angle in rad)
+for deck in data/pr3207.nml data/assur_slider_crank.nml data/sixbar.nml data/pr3050.nml data/cam_flat.nml \
+            data/gears_reducer.nml; do
+  name=$(basename "$deck" .nml)
+  run_ks "$deck" --format csv --quiet; cp "$out" "$cli_tmp/sum_$name.csv"
+  run_ks "$deck" --format summary --quiet; cp "$out" "$cli_tmp/sum_$name.summary"
+  python3 - "$cli_tmp/sum_$name.csv" "$cli_tmp/sum_$name.summary" "$name" <<'PY' && pass || fail "summary-recomputed-$name" "see above"
+import csv, math, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+summary = list(csv.DictReader(open(sys.argv[2])))
+name = sys.argv[3]
+assert len(summary) == 1, "expected one summary row"
+s = summary[0]
+cols = list(rows[0].keys())
+has_input = name not in ("gears_reducer",)
+x = [float(r[cols[0]]) for r in rows] if has_input else None
+def close(a, b, what):
+    if abs(a - b) > 1e-11 * max(1.0, abs(b)):
+        print(f"{name} {what}: summary {a!r} vs recomputed {b!r}"); sys.exit(1)
+assert int(s["rows"]) == len(rows)
+checked = 0
+for c in cols[1:] if has_input else cols:
+    if c + "_max" not in s:
+        continue
+    v = [float(r[c]) for r in rows]
+    tie = 1e-12 * max(abs(t) for t in v)  # first row within 1e-12 of the largest magnitude
+    kmax = next(k for k in range(len(v)) if v[k] >= max(v) - tie)
+    kmin = next(k for k in range(len(v)) if v[k] <= min(v) + tie)
+    close(float(s[c + "_max"]), v[kmax], c + "_max"); close(float(s[c + "_min"]), v[kmin], c + "_min")
+    at = (lambda k: x[k]) if has_input else (lambda k: k + 1)
+    close(float(s[c + "_max_at"]), at(kmax), c + "_max_at"); close(float(s[c + "_min_at"]), at(kmin), c + "_min_at")
+    if has_input and x[-1] != x[0]:
+        mean = sum((v[k] + v[k + 1]) / 2 * (x[k + 1] - x[k]) for k in range(len(v) - 1)) / (x[-1] - x[0])
+    else:
+        mean = sum(v) / len(v)
+    close(float(s[c + "_mean"]), mean, c + "_mean")
+    checked += 1
+assert checked >= 4, f"only {checked} columns summarized"
+# force angles are not summarized (directions modulo 360 deg)
+assert not any(k.endswith("G_max") for k in s), "a force angle column was summarized"
+if "M1" in cols and has_input:
+    m = [float(r["M1"]) for r in rows]
+    work = sum((m[k] + m[k + 1]) / 2 * math.radians(x[k + 1] - x[k]) for k in range(len(m) - 1))
+    close(float(s["work_M1"]), work, "work_M1")
+    close(float(s["M1_mean"]) * math.radians(x[-1] - x[0]), float(s["work_M1"]), "M1_mean * span = work_M1")
+elif name == "pr3050":
+    assert "work_F2" in s, "pr3050 has no work of F2"
+else:
+    assert not any(k.startswith("work_") for k in s), "work for a mechanism without a driving coordinate"
+PY
+done
+
+# --- the work per cycle is the energy the loads take: offset slider-crank, a force R on the
+# slider along -x, 500 N for crank angles 0..180 deg and 100 N elsewhere. Over a turn at
+# constant speed gravity and inertia give back what they take, so the drive's work W(M1)
+# balances the force's work, integral -R dx: W(M1) = integral R(phi) dx(phi) (geometry from
+# the deck: crank 0.1 m, rod 0.35 m, guide y = 0.02 m). Here W < 0: from 0 to 180 deg the
+# slider moves along -x with the larger force, which then drives. dphi = 0.05 deg: the
+# trapezoid's error at the two load steps is below 1e-3 of W.
+run_ks data/assur_slider_crank.nml --set dphi=0.05 --format summary --quiet
+python3 - "$out" <<'PY' && pass || fail summary-work-energy "work of M1 is not the resistance's energy"
+import csv, math, sys
+s = next(csv.DictReader(open(sys.argv[1])))
+r, l, e = 0.1, 0.35, 0.02
+def x(p):
+    yb = r * math.sin(p)
+    return r * math.cos(p) + math.sqrt(l * l - (e - yb) ** 2)
+n = 720000
+w = 0.0
+for k in range(n):
+    p0, p1 = 2 * math.pi * k / n, 2 * math.pi * (k + 1) / n
+    pm = math.degrees((p0 + p1) / 2)
+    res = 500.0 if pm <= 180.0 else 100.0
+    w += res * (x(p1) - x(p0))
+work = float(s["work_M1"])
+print("work_M1", work, "expected", w)
+assert abs(work - w) <= 1e-3 * abs(w), (work, w)
+PY
+
+# --- overrides come first in the summary, as given (a value with a comma quoted)
+run_ks data/pr3207.nml --set l_ab=0.12 --set 'f5c_work = 2500' --format summary --quiet
+head -1 "$out" | grep -q '^l_ab,f5c_work,rows,phi1_first,phi1_last,F16_max,F16_max_at,F16_min,F16_min_at,F16_mean,' \
+  && sed -n 2p "$out" | grep -q '^0.12,2500,13,' && pass || fail summary-overrides "$(head -c 300 "$out")"
+run_ks data/sixbar.nml --set 'f5=2*900, 5*1000, 6*0' --format summary --quiet
+sed -n 2p "$out" | grep -q '^"2\*900, 5\*1000, 6\*0",13,' && pass || fail summary-csv-quoting "$(sed -n 2p "$out" | head -c 100)"
+
+# --- the legacy table's SUMMARY block carries the same figures
+run_ks data/pr3207.nml --quiet
+grep -q '^ SUMMARY (PHI1 0.00 ... 360.00 deg)$' "$out" \
+  && grep -q '^   F16 MAX         =   5.342165581E+03  N    AT PHI1 =   120.00 deg$' "$out" \
+  && grep -q '^   M1 MIN          =  -2.257429062E+02  N\*m  AT PHI1 =    30.00 deg$' "$out" \
+  && grep -q '^   WORK OF M1      =   1.095725074E+03  J$' "$out" && pass || fail summary-table-block "$(grep -A10 '^ SUMMARY' "$out")"
+run_ks data/pr3207.nml --format summary --quiet
+python3 -c 'import csv,sys; s=next(csv.DictReader(open(sys.argv[1]))); assert "%.9E" % float(s["F16_max"]) == "5.342165581E+03" and float(s["F16_max_at"]) == 120' "$out" \
+  && pass || fail summary-table-equals-csv "the block and the summary disagree"
+# no block without an input angle (the gears' stages)
+run_ks data/gears_reducer.nml
+grep -q 'SUMMARY' "$out" && fail summary-no-block-gears "gears table has a SUMMARY block" || pass
+
+# --- the coarse-step warning: dphi above 5 deg with a load switching next to a force peak
+run_ks data/pr3207.nml --format csv
+grep -q '^kinetostat: warning: data/pr3207.nml: the input step 30 deg is coarser than 5 deg and a load switches on or off within one step of the peak of F16.*(the peak of F16 = 5342.17 N at phi1 = 120 deg, the load switches between phi1 = 90 deg and phi1 = 120 deg).*--set dphi=0.5' "$err" \
+  && pass || fail coarse-warning-text "$(cat "$err")"
+expect_exit coarse-warning-strict 4 data/pr3207.nml --strict
+expect_exit coarse-warning-quiet-strict 4 data/pr3207.nml --strict --quiet
+run_ks data/pr3207.nml --set dphi=5 --strict
+[ "$rc" -eq 0 ] && [ ! -s "$err" ] && pass || fail coarse-warning-5-deg "5 deg is not coarser than 5 deg: rc=$rc $(cat "$err")"
+# no switching load: no warning however coarse (the engine's gas force is a curve)
+run_ks data/pr3207.nml --set f5c_work=0 --strict
+[ "$rc" -eq 0 ] && [ ! -s "$err" ] && pass || fail coarse-warning-no-switch "rc=$rc $(cat "$err")"
+# the 30 deg step misses the peak: F16's true peak (dphi = 0.5) is higher
+run_ks data/pr3207.nml --set dphi=0.5 --format summary --quiet; cp "$out" "$cli_tmp/fine.summary"
+run_ks data/pr3207.nml --format summary --quiet
+python3 - "$out" "$cli_tmp/fine.summary" <<'PY' && pass || fail coarse-peak-missed "the fine run's F16 peak is not above the coarse one"
+import csv, sys
+coarse = float(next(csv.DictReader(open(sys.argv[1])))["F16_max"])
+fine = next(csv.DictReader(open(sys.argv[2])))
+assert float(fine["F16_max"]) > 1.1 * coarse and float(fine["F16_max_at"]) == 95.0, (coarse, fine["F16_max"])
+PY
+
+# --- sweep: one row per variant in grid order, each equal to the single run with --set
+run_ks sweep data/pr3207.nml --vary l_ab=0.08:0.14:4 --vary m5=50:70:3 --quiet
+cp "$out" "$cli_tmp/sweep.csv"
+[ "$rc" -eq 0 ] && [ "$(wc -l <"$cli_tmp/sweep.csv")" -eq 13 ] && pass || fail sweep-rows "rc=$rc, $(wc -l <"$cli_tmp/sweep.csv") lines"
+cut -d, -f1,2 "$cli_tmp/sweep.csv" | tr '\n' ' ' | grep -q '^l_ab,m5 0.08,50 0.08,60 0.08,70 0.1,50 0.1,60 0.1,70 0.12,50 0.12,60 0.12,70 0.14,50 0.14,60 0.14,70 $' \
+  && pass || fail sweep-grid-order "$(cut -d, -f1,2 "$cli_tmp/sweep.csv" | tr '\n' ' ')"
+bad=0
+for line in 2 7 13; do
+  vals=$(sed -n "${line}p" "$cli_tmp/sweep.csv" | cut -d, -f1,2)
+  "$KINETOSTAT" data/pr3207.nml --set "l_ab=${vals%,*}" --set "m5=${vals#*,}" --format summary --quiet >"$cli_tmp/single.csv"
+  { head -1 "$cli_tmp/sweep.csv"; sed -n "${line}p" "$cli_tmp/sweep.csv"; } | cmp -s - "$cli_tmp/single.csv" || bad=1
+done
+[ "$bad" -eq 0 ] && pass || fail sweep-equals-single "a sweep row differs from the single run with --set"
+# --set applies to every variant and comes first
+run_ks sweep data/assur_slider_crank.nml --set dphi=10 --vary 'dyad(1)%l2=0.3:0.4:2' --quiet
+sed -n 1,3p "$out" | cut -d, -f1-3 | tr '\n' ' ' | grep -q '^dphi,dyad(1)%l2,rows 10,0.3,37 10,0.4,37 $' \
+  && pass || fail sweep-set-and-member "$(sed -n 1,3p "$out" | cut -d, -f1-3)"
+# --part K/N: the parts concatenated in order are the whole sweep, byte for byte
+for k in 1 2 3 4 5; do
+  "$KINETOSTAT" sweep data/pr3207.nml --vary l_ab=0.08:0.14:4 --vary m5=50:70:3 --quiet --part "$k/5" -o "$cli_tmp/part$k.csv"
+done
+cat "$cli_tmp"/part{1,2,3,4,5}.csv | cmp -s - "$cli_tmp/sweep.csv" && pass || fail sweep-parts "parts do not concatenate to the sweep"
+# warnings name the variant; --strict exits 4
+run_ks sweep data/pr3207.nml --vary l_ab=0.1:0.12:2
+[ "$rc" -eq 0 ] && [ "$(grep -c '^kinetostat: warning: data/pr3207.nml (l_ab=0.1): the input step 30 deg' "$err")" -eq 1 ] \
+  && pass || fail sweep-warning-names-variant "$(head -c 300 "$err")"
+expect_exit sweep-strict 4 sweep data/pr3207.nml --vary l_ab=0.1:0.12:2 --strict
+run_ks sweep data/pr3207.nml --vary l_ab=0.1:0.12:2 --set dphi=1 --strict
+[ "$rc" -eq 0 ] && [ ! -s "$err" ] && pass || fail sweep-strict-clean "rc=$rc $(cat "$err")"
+# errors
+expect_exit sweep-no-vary 1 sweep data/pr3207.nml
+expect_exit sweep-format-csv 1 sweep data/pr3207.nml --vary l_ab=0.1:0.12:2 --format csv
+expect_exit vary-without-sweep 1 data/pr3207.nml --vary l_ab=0.1:0.12:2
+expect_exit sweep-bad-part 1 sweep data/pr3207.nml --vary l_ab=0.1:0.12:2 --part 3/2
+run_ks sweep data/pr3207.nml --vary l_ab=0.1:0.12
+[ "$rc" -eq 2 ] && grep -q "^kinetostat: error: --vary 'l_ab=0.1:0.12': expected NAME=FROM:TO:COUNT" "$err" && pass \
+  || fail sweep-bad-vary "rc=$rc $(cat "$err")"
+run_ks sweep data/pr3207.nml --vary l_ab=0.1:0.12:2.5
+[ "$rc" -eq 2 ] && grep -q "COUNT must be a whole number" "$err" && pass || fail sweep-bad-count "rc=$rc $(cat "$err")"
+run_ks sweep data/pr3207.nml --vary l_ab=0.3:0.5:3 --quiet
+[ "$rc" -eq 2 ] && [ ! -s "$out" ] && [ "$(wc -l <"$err")" -eq 1 ] \
+  && grep -q "l_ab: .*(sweep variant 2: l_ab=0.4)$" "$err" && pass || fail sweep-variant-error "rc=$rc $(cat "$err")"
+
+# --- progress (issue 10 item 8): only when stderr is a terminal, overwritten in place and
+# erased at the end; never in a pipe or a file, never with --quiet
+if command -v script >/dev/null 2>&1; then
+  script -qec "'$KINETOSTAT' data/pr3050.nml -o '$cli_tmp/progress.table'" /dev/null >"$cli_tmp/pty.txt" 2>&1
+  if grep -q $'\rkinetostat: data/pr3050.nml: running \.\.\.\r' "$cli_tmp/pty.txt" && cmp -s "$cli_tmp/progress.table" data/expected/pr3050.table; then
+    pass; else fail progress-terminal "$(od -c "$cli_tmp/pty.txt" | head -5)"; fi
+  script -qec "'$KINETOSTAT' data/pr3050.nml --quiet -o /dev/null" /dev/null >"$cli_tmp/pty.txt" 2>&1
+  [ ! -s "$cli_tmp/pty.txt" ] && pass || fail progress-quiet "$(od -c "$cli_tmp/pty.txt" | head -3)"
+fi
+run_ks data/pr3050.nml
+[ ! -s "$err" ] && pass || fail progress-not-in-pipes "$(od -c "$err" | head -3)"
+run_ks sweep data/pr3050.nml --vary m3=1000:1100:3
+[ ! -s "$err" ] && pass || fail progress-not-in-pipes-sweep "$(od -c "$err" | head -3)"
