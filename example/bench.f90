@@ -12,6 +12,7 @@
 !> measure the other processes too). Run from the project root (it reads data/*.nml).
 program bench
   use, intrinsic :: iso_fortran_env, only: int64, output_unit
+  use, intrinsic :: iso_c_binding, only: c_int, c_size_t
   use kinetostat_kinds, only: wp
   use kinetostat_error, only: error_t
   use kinetostat_deck, only: deck_source_t, deck_source_from_text, load_deck, read_group_name
@@ -21,6 +22,7 @@ program bench
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_run, only: run_options_t, run_mechanism, format_csv, format_table, format_json
   use kinetostat_output, only: write_output_file
+  use kinetostat_decimal, only: put_es_compact, edit_f
   implicit none
 
   !> Physical-limit estimate of one dedicated step on one core, steps/s: ~300 flops and ~15
@@ -34,6 +36,16 @@ program bench
   character(*), parameter :: header(*) = [character(len=111) :: &
     "                  steps per CPU second (solve = kernel + table)   peak MiB               ratio to limit", &
     "    kind    steps     solve       csv     table      json     csv   table    json  solve    csv  table   json"]
+
+  interface
+    !> glibc: give the heap's free memory back to the system (so that a peak is the run's own).
+    function malloc_trim(pad) bind(c, name="malloc_trim") result(released)
+      import :: c_int, c_size_t
+      implicit none
+      integer(c_size_t), value :: pad
+      integer(c_int) :: released
+    end function malloc_trim
+  end interface
 
   !> A benchmarked case: the bundled deck and the kind of override its step count needs.
   type :: bench_case_t
@@ -72,6 +84,7 @@ program bench
   if (.not. any_kind) wanted = .true.
   out_path = "/tmp/kinetostat-bench.out"
 
+  call bench_writer()
   write (output_unit, '(a,es8.1,a)') "kinetostat bench: physical-limit estimate ", limit_rate, &
     " steps/s (one dedicated step, one core)"
   do i = 1, size(header)
@@ -88,6 +101,55 @@ program bench
   if (j == 0) close (i, status='delete')
 
 contains
+
+  !> The number writer alone: values per CPU second of the compiler's formatted WRITE and of
+  !> kinetostat_decimal, for the CSV cell (ES20.12E3) and a table field (F12.2), on 10^6
+  !> values of magnitudes 1e-3 .. 1e6 (both signs); the texts are compared as they go.
+  subroutine bench_writer()
+    integer, parameter :: value_count = 1000000
+    real(wp), allocatable :: x(:)
+    character(len=32) :: text
+    character(len=12) :: field, field2
+    real(wp) :: t0, t_write, t_own, f_write, f_own
+    integer :: i, pos, differ
+    allocate (x(value_count))
+    call random_number(x)
+    x = 10.0_wp**(9.0_wp * x - 3.0_wp)
+    x(2::2) = -x(2::2)
+    differ = 0
+    t0 = clock()
+    do i = 1, value_count
+      write (text, '(es20.12e3)') x(i)
+    end do
+    t_write = seconds_since(t0)
+    t0 = clock()
+    do i = 1, value_count
+      pos = 0
+      call put_es_compact(x(i), 12, 3, text, pos)
+    end do
+    t_own = seconds_since(t0)
+    t0 = clock()
+    do i = 1, value_count
+      write (field, '(f12.2)') x(i)
+    end do
+    f_write = seconds_since(t0)
+    t0 = clock()
+    do i = 1, value_count
+      call edit_f(x(i), 2, field2)
+    end do
+    f_own = seconds_since(t0)
+    do i = 1, value_count, 97
+      write (field, '(f12.2)') x(i)
+      call edit_f(x(i), 2, field2)
+      if (field /= field2) differ = differ + 1
+    end do
+    write (output_unit, '(a)') "number writer, values per CPU second (10^6 values, 1e-3 .. 1e6):"
+    write (output_unit, '(a,es9.2,a,es9.2,a,f5.1)') "  ES20.12E3  compiler WRITE", value_count / t_write, &
+      "   kinetostat_decimal", value_count / t_own, "   x", t_write / t_own
+    write (output_unit, '(a,es9.2,a,es9.2,a,f5.1)') "  F12.2      compiler WRITE", value_count / f_write, &
+      "   kinetostat_decimal", value_count / f_own, "   x", f_write / f_own
+    if (differ > 0) write (output_unit, '(a,i0)') "  texts that differ (a bug): ", differ
+  end subroutine bench_writer
 
   !> One case at one step count: one row of the table.
   subroutine bench_one(c, n, path)
@@ -217,9 +279,11 @@ contains
     seconds_since = max(clock() - t0, 1.0e-6_wp)
   end function seconds_since
 
-  !> Reset the peak resident set size of this process (Linux: "5" into /proc/self/clear_refs).
+  !> Reset the peak resident set size of this process: free heap memory back to the system
+  !> (glibc malloc_trim), then "5" into /proc/self/clear_refs (Linux).
   subroutine reset_peak()
     integer :: unit, ios
+    if (malloc_trim(0_c_size_t) < 0) return
     open (newunit=unit, file="/proc/self/clear_refs", action='write', iostat=ios)
     if (ios /= 0) return
     write (unit, '(a)', iostat=ios) "5"

@@ -179,15 +179,15 @@ contains
     end select
   end function sample
 
-  !> splitmix64.
+  !> xorshift64 (Marsaglia): shifts and exclusive ors only, so no signed overflow (which an
+  !> optimising build may assume away) and the same sequence in every build.
   function next(state) result(z)
     integer(int64), intent(inout) :: state
     integer(int64) :: z
-    state = state + int(z'9E3779B97F4A7C15', int64)
+    state = ieor(state, shiftl(state, 13))
+    state = ieor(state, shiftr(state, 7))
+    state = ieor(state, shiftl(state, 17))
     z = state
-    z = ieor(z, shiftr(z, 30)) * int(z'BF58476D1CE4E5B9', int64)
-    z = ieor(z, shiftr(z, 27)) * int(z'94D049BB133111EB', int64)
-    z = ieor(z, shiftr(z, 31))
   end function next
 
   !> The bits of x in hex (a failing value can be reproduced exactly).

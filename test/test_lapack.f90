@@ -87,16 +87,14 @@ contains
     end select
   end subroutine random_system
 
-  !> A uniform deviate in [0, 1) (splitmix64).
+  !> A uniform deviate in [0, 1) (xorshift64: shifts and exclusive ors only, no signed
+  !> overflow, the same sequence in every build).
   real(wp) function uniform(state)
     integer(int64), intent(inout) :: state
-    integer(int64) :: z
-    state = state + int(z'9E3779B97F4A7C15', int64)
-    z = state
-    z = ieor(z, shiftr(z, 30)) * int(z'BF58476D1CE4E5B9', int64)
-    z = ieor(z, shiftr(z, 27)) * int(z'94D049BB133111EB', int64)
-    z = ieor(z, shiftr(z, 31))
-    uniform = real(shiftr(z, 11), wp) * 2.0_wp**(-53)
+    state = ieor(state, shiftl(state, 13))
+    state = ieor(state, shiftr(state, 7))
+    state = ieor(state, shiftl(state, 17))
+    uniform = real(shiftr(state, 11), wp) * 2.0_wp**(-53)
   end function uniform
 
 end module test_lapack

@@ -219,8 +219,8 @@ contains
     character(*), intent(in) :: point
     !> Position, m.
     real(wp), intent(in) :: p(2)
-    call put_kinematic(self, k, "x_"//point, "m", col_length, p(1))
-    call put_kinematic(self, k, "y_"//point, "m", col_length, p(2))
+    call put_kinematic(self, k, "x_", point, "m", col_length, p(1))
+    call put_kinematic(self, k, "y_", point, "m", col_length, p(2))
   end subroutine put_point
 
   !> Kinematics: angle phi<link> (deg), angular velocity omega<link> (rad/s) and acceleration
@@ -238,9 +238,9 @@ contains
     real(wp), intent(in) :: omega
     !> Angular acceleration, rad/s^2.
     real(wp), intent(in) :: eps
-    call put_kinematic(self, k, "phi"//link, "deg", col_other, phi * rad_to_deg)
-    call put_kinematic(self, k, "omega"//link, "rad/s", col_other, omega)
-    call put_kinematic(self, k, "eps"//link, "rad/s^2", col_other, eps)
+    call put_kinematic(self, k, "phi", link, "deg", col_other, phi * rad_to_deg)
+    call put_kinematic(self, k, "omega", link, "rad/s", col_other, omega)
+    call put_kinematic(self, k, "eps", link, "rad/s^2", col_other, eps)
   end subroutine put_link
 
   !> Kinematics: acceleration ax_<point>, ay_<point> (m/s^2) of a centre of mass in row `k`.
@@ -252,8 +252,8 @@ contains
     character(*), intent(in) :: point
     !> Acceleration, m/s^2.
     real(wp), intent(in) :: a(2)
-    call put_kinematic(self, k, "ax_"//point, "m/s^2", col_other, a(1))
-    call put_kinematic(self, k, "ay_"//point, "m/s^2", col_other, a(2))
+    call put_kinematic(self, k, "ax_", point, "m/s^2", col_other, a(1))
+    call put_kinematic(self, k, "ay_", point, "m/s^2", col_other, a(2))
   end subroutine put_acceleration
 
   !> Kinematics: components <force>_x, <force>_y (N) of a pair force in row `k`, in the frame
@@ -269,8 +269,8 @@ contains
     real(wp), intent(in) :: f(2)
     !> Angle of the components' frame in the position frame, deg.
     real(wp), intent(in) :: frame_angle
-    call put_kinematic(self, k, force//"_x", "N", col_component, f(1), frame_angle)
-    call put_kinematic(self, k, force//"_y", "N", col_component, f(2), frame_angle)
+    call put_kinematic(self, k, force, "_x", "N", col_component, f(1), frame_angle)
+    call put_kinematic(self, k, force, "_y", "N", col_component, f(2), frame_angle)
   end subroutine put_components
 
   !> Link axes (--frame link): components <force>_along, <force>_across (N) of a pair force
@@ -285,18 +285,19 @@ contains
     real(wp), intent(in) :: f(2)
     !> Label of the link the force acts on ("2"; its angle column is phi<link>).
     character(*), intent(in) :: link
-    call put_kinematic(self, k, force//"_along", "N", col_component, f(1), link=link)
-    call put_kinematic(self, k, force//"_across", "N", col_component, f(2), link=link)
+    call put_kinematic(self, k, force, "_along", "N", col_component, f(1), link=link)
+    call put_kinematic(self, k, force, "_across", "N", col_component, f(2), link=link)
   end subroutine put_link_axes
 
-  !> Set the value of kinematics column `name` in row `k`, appending the column (zero in
-  !> every row) on first use; a column of that name that is not a kinematics column (one the
-  !> mechanism reports anyway) is left as it is. With `link` the column is a link-axes column
-  !> of that link instead.
-  pure subroutine put_kinematic(self, k, name, unit, kind, value, frame_angle, link)
+  !> Set the value of kinematics column `prefix//suffix` in row `k`, appending the column
+  !> (zero in every row) on first use; a column of that name that is not a kinematics column
+  !> (one the mechanism reports anyway) is left as it is. With `link` the column is a
+  !> link-axes column of that link instead. The name comes in two parts so that no string is
+  !> built per value (only when a column is added).
+  pure subroutine put_kinematic(self, k, prefix, suffix, unit, kind, value, frame_angle, link)
     type(step_table_t), intent(inout) :: self
     integer, intent(in) :: k
-    character(*), intent(in) :: name, unit
+    character(*), intent(in) :: prefix, suffix, unit
     integer, intent(in) :: kind
     real(wp), intent(in) :: value
     real(wp), intent(in), optional :: frame_angle
@@ -308,12 +309,16 @@ contains
     i = self%last_kinematic + 1
     if (i > size(self%columns)) then
       i = 0
-    else if (self%columns(i)%name /= name) then
+    else if (.not. named(self%columns(i)%name)) then
       i = 0
     end if
-    if (i == 0) i = self%column_index(name)
     if (i == 0) then
-      c%name = name
+      do i = size(self%columns), 1, -1
+        if (named(self%columns(i)%name)) exit
+      end do
+    end if
+    if (i == 0) then
+      c%name = prefix//suffix
       c%unit = unit
       c%kind = kind
       c%kinematic = .not. present(link)
@@ -340,6 +345,14 @@ contains
       end if
     end if
     self%last_kinematic = i
+  contains
+    !> Whether `name` is prefix//suffix.
+    pure logical function named(name)
+      character(*), intent(in) :: name
+      named = .false.
+      if (len(name) /= len(prefix) + len(suffix)) return
+      named = name(1:len(prefix)) == prefix .and. name(len(prefix) + 1:) == suffix
+    end function named
   end subroutine put_kinematic
 
   !> Give `rows` every column added so far (the pending kinematics columns of row 1, zero in
