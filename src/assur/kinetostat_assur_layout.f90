@@ -245,9 +245,11 @@ contains
       end if
     end do
     !$omp end parallel do
-    do k = 1, size(steps)
-      call put_kinematics(table, k, self%deck, steps(k))
-    end do
+    if (table%kinematics_wanted) then
+      do k = 1, size(steps)
+        call put_kinematics(table, k, self%deck, steps(k))
+      end do
+    end if
     if (self%deck%mech%drive_dyad == 0) then
       call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "M1")
     else

@@ -112,9 +112,11 @@ contains
       table%rows(1:size(cam_csv_columns), k) = cam_csv_values(self%deck, steps(k), k)
     end do
     !$omp end parallel do
-    do k = 1, size(steps)
-      call put_kinematics(table, k, self%deck, steps(k))
-    end do
+    if (table%kinematics_wanted) then
+      do k = 1, size(steps)
+        call put_kinematics(table, k, self%deck, steps(k))
+      end do
+    end if
     call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "N")
     table%residual_label = "MAX EQUILIBRIUM RESIDUAL OF THE FOLLOWER, ALL STEPS"
     table%mismatch_label = "MAX N MISMATCH, CLOSED FORM VS 3X3 LINEAR SOLVE"

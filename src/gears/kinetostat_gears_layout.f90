@@ -115,9 +115,11 @@ contains
     do i = 1, size(res)
       table%rows(:, i) = gears_csv_values(self%deck, res, i)
     end do
-    do i = 1, size(res)
-      call put_kinematics(table, i, res(i))
-    end do
+    if (table%kinematics_wanted) then
+      do i = 1, size(res)
+        call put_kinematics(table, i, res(i))
+      end do
+    end if
     call table%set_selfcheck(maxval(res%residual), maxval(res%mismatch), "M2")
     call echo_deck(self%deck, table)
   end subroutine solve

@@ -105,6 +105,7 @@ contains
     table%deck = source%path
     table%row_name = "step"
     table%driver = "M1"
+    table%kinematics_wanted = options%kinematics .or. options%link_frame .or. options%format == format_svg
     call mech%solve(table, error)
     if (allocated(error)) return
     call table%finish_columns()

@@ -120,6 +120,9 @@ module kinetostat_step_table
     !> rows grows by all of them at once, when row 2 arrives or finish_columns is called,
     !> instead of copying every row once per new column).
     real(wp), allocatable :: pending(:)
+    !> Whether `solve` adds the kinematics and link-axes columns (true by default; the run
+    !> pipeline turns it off when no output of the run shows them).
+    logical :: kinematics_wanted = .true.
     !> The columns.
     type(column_t), allocatable :: columns(:)
     !> Values, rows(column, row).

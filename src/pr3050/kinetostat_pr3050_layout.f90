@@ -209,9 +209,11 @@ contains
       end associate
     end do
     !$omp end parallel do
-    do k = 1, size(steps)
-      call put_kinematics(table, k, self%deck%p, steps(k))
-    end do
+    if (table%kinematics_wanted) then
+      do k = 1, size(steps)
+        call put_kinematics(table, k, self%deck%p, steps(k))
+      end do
+    end if
     call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "F2")
     call dead_position_between_steps(self%deck, warning)
     if (allocated(warning)) call table%add_warning(warning)

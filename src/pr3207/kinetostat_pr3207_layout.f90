@@ -130,9 +130,11 @@ contains
       table%rows(1:size(pr3207_csv_columns), k) = pr3207_csv_values(steps(k), self%deck%p%l_ab)
     end do
     !$omp end parallel do
-    do k = 1, size(steps)
-      call put_kinematics(table, k, self%deck%p, steps(k))
-    end do
+    if (table%kinematics_wanted) then
+      do k = 1, size(steps)
+        call put_kinematics(table, k, self%deck%p, steps(k))
+      end do
+    end if
     call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "M1")
     call table%note_load(self%deck%f5c)
     call echo_deck(self%deck, table)

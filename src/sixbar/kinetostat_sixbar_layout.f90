@@ -193,9 +193,11 @@ contains
       table%rows(1:size(sixbar_csv_columns), k) = sixbar_csv_values(steps(k), self%deck%p%l1)
     end do
     !$omp end parallel do
-    do k = 1, size(steps)
-      call put_kinematics(table, k, self%deck%p, steps(k))
-    end do
+    if (table%kinematics_wanted) then
+      do k = 1, size(steps)
+        call put_kinematics(table, k, self%deck%p, steps(k))
+      end do
+    end if
     call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "M1")
     call table%note_load(self%deck%f5)
     call echo_deck(self%deck, table)
