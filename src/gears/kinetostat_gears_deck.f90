@@ -8,7 +8,7 @@ module kinetostat_gears_deck
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, &
     deck_source_t, namelist_probe_t, deck_error, is_set, require_set, require_positive, require_rule, &
-    require_whole
+    require_whole, require_all_set
   use kinetostat_gears, only: gear_stage_t, gear_spur, gear_helical, gear_bevel, gear_planetary, &
     gear_kind_names
   implicit none
@@ -155,6 +155,11 @@ contains
     call no_extra_real(ctx, "z3", z3, n, error); if (allocated(error)) return
     call no_extra_real(ctx, "k", k, n, error); if (allocated(error)) return
 
+    ! two or more required values missing: name them all in one message (one missing value
+    ! gets its own message from the checks of its stage below)
+    call require_all_stages(ctx, deck%layout == layout_series, stage(1:n), m1, z1, z2, z3, k, m, dw1, error)
+    if (allocated(error)) return
+
     deck%n = n
     allocate (deck%st(n), deck%m1(n), deck%module_mm(n))
     deck%m1 = 0.0_wp
@@ -261,6 +266,45 @@ contains
       end if
     end do
   end subroutine read_gears_deck
+
+  !> The required values of every stage of a known kind (the input torque m1 unless a later
+  !> stage of a series, the teeth z1, z2, the module m unless dw1 is given, and z3, k of a
+  !> planetary stage): when two or more are missing, one error naming them all.
+  subroutine require_all_stages(ctx, series, stage, m1, z1, z2, z3, k, m, dw1, error)
+    type(deck_context_t), intent(in) :: ctx
+    !> Layout 'series': the torque of a later stage comes from the stage before.
+    logical, intent(in) :: series
+    !> Stage kinds as given, one per stage.
+    character(*), intent(in) :: stage(:)
+    !> Deck values per stage (unset_real when not given).
+    real(wp), intent(in) :: m1(:), z1(:), z2(:), z3(:), k(:), m(:), dw1(:)
+    type(error_t), allocatable, intent(out) :: error
+    character(len=16), allocatable :: names(:)
+    real(wp), allocatable :: values(:)
+    character(len=:), allocatable :: at
+    integer :: i, kind
+    allocate (names(0), values(0))
+    do i = 1, size(stage)
+      kind = findloc(gear_kind_names, lower(trim(adjustl(stage(i)))), dim=1)
+      if (kind == 0) cycle
+      at = "("//int_str(i)//")"
+      if (.not. (series .and. i > 1)) then
+        names = [character(len=16) :: names, "m1"//at]
+        values = [values, m1(i)]
+      end if
+      names = [character(len=16) :: names, "z1"//at, "z2"//at]
+      values = [values, z1(i), z2(i)]
+      if (.not. is_set(dw1(i))) then
+        names = [character(len=16) :: names, "m"//at]
+        values = [values, m(i)]
+      end if
+      if (kind == gear_planetary) then
+        names = [character(len=16) :: names, "z3"//at, "k"//at]
+        values = [values, z3(i), k(i)]
+      end if
+    end do
+    if (count(.not. is_set(values)) >= 2) call require_all_set(ctx, names, values, error)
+  end subroutine require_all_stages
 
   !> A pressure angle in deg: optional with `default` (itself possibly unset -> 20 deg),
   !> finite and strictly inside (0, 45) deg; returned in rad.

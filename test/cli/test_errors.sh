@@ -45,6 +45,10 @@ expect_error_line err-missing-one "$d: &pr3207: m3: missing (required variable)"
 d="$(deck_with missing_sixbar data/sixbar.nml 's/^ *lam2 *=.*//; s/^ *omega1 *=.*//')"
 expect_input_error err-missing-sixbar 'missing required variables: lam2, lam_s2, lam3, lam_de, omega1$' "$d"
 
+d="$(deck_with missing_gears data/gears_reducer.nml 's/^  z1 .*//; s/^  m  .*//')"
+expect_input_error err-missing-gears 'missing required variables: z1\(1\), m\(1\), z1\(2\), m\(2\)$' "$d"
+d="$(deck_with missing_gears1 data/gears_reducer.nml 's/^  z1 .*/  z1 = 20/')"
+expect_input_error err-missing-gears-one '&gears: z1\(2\): missing \(number of teeth\)$' "$d"
 # --- generic engine: a dyad that cannot be assembled gives the numbers
 d="$(deck_with assur_far data/assur_slider_crank.nml 's/dyad(1)%at3 = 0, 0.02 /dyad(1)%at3 = 0, 0.5 /')"
 expect_input_error err-assur-reach 'dyad 1 \(RRP, links 2-3\): cannot be assembled: distance from its joint to the guide 0\.50* m exceeds l2 = 0\.350* m' "$d" 3
