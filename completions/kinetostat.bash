@@ -14,7 +14,7 @@ _kinetostat() {
     --lang) COMPREPLY=($(compgen -W "en ru" -- "$cur")); return ;;
     -o|--output) COMPREPLY=($(compgen -f -- "$cur")); return ;;
     template) COMPREPLY=($(compgen -W "$kinds" -- "$cur")); return ;;
-    --rtol|--atol|--set|--pairs|--at|--vary|--part) COMPREPLY=(); return ;;
+    --rtol|--atol|--set|--pairs|--at|--vary|--part|--jobs) COMPREPLY=(); return ;;
   esac
   case "${COMP_WORDS[1]}" in
     diff)
@@ -28,7 +28,7 @@ _kinetostat() {
       COMPREPLY=($(compgen -W "-o --output" -- "$cur")); return ;;
     sweep)
       if [[ "$cur" == -* ]]; then
-        COMPREPLY=($(compgen -W "--vary --set --part -o --output --quiet --strict --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--vary --set --part --jobs -o --output --quiet --strict --help" -- "$cur"))
       else
         COMPREPLY=($(compgen -f -X '!*.nml' -- "$cur") $(compgen -d -- "$cur"))
       fi

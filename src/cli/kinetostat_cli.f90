@@ -8,7 +8,7 @@ module kinetostat_cli
   use kinetostat_deck, only: deck_source_t, load_deck, read_group_name
   use kinetostat_override, only: override_t, parse_override, apply_overrides
   use kinetostat_sweep, only: vary_t, parse_vary, run_sweep, variant_result_t
-  use kinetostat_posix, only: stderr_is_terminal
+  use kinetostat_posix, only: stderr_is_terminal, cpu_count
   use kinetostat_text, only: int_str
   use kinetostat_run, only: format_summary
   use kinetostat_step_table, only: step_table_t
@@ -29,7 +29,8 @@ module kinetostat_cli
   !> One-line usage, printed with usage errors.
   character(*), parameter :: usage_line = "usage: kinetostat DECK|- [--set NAME=VALUE]... [-o FILE] " // &
     "[--format table|csv|json|svg|summary] [--pairs LIST] [--at K] [--lang en|ru] [--kinematics] " // &
-    "[--frame global|link] [--quiet] [--strict] | kinetostat sweep DECK --vary NAME=FROM:TO:COUNT... [--part K/N] | " // &
+    "[--frame global|link] [--quiet] [--strict] | " // &
+    "kinetostat sweep DECK --vary NAME=FROM:TO:COUNT... [--part K/N] [--jobs N] | " // &
     "kinetostat template KIND [-o FILE] | kinetostat diff A B [--rtol R] [--atol A] | --help | --version"
 
   !> Warning line when a run's self-check exceeds its tolerance.
@@ -42,6 +43,7 @@ module kinetostat_cli
     "  kinetostat DECK [--set NAME=VALUE]... [-o FILE] [--format table|csv|json|svg|summary]", &
     "                  [--pairs LIST] [--at K] [--lang en|ru] [--kinematics] [--quiet] [--strict]", &
     "  kinetostat sweep DECK --vary NAME=FROM:TO:COUNT... [--set NAME=VALUE]... [--part K/N]", &
+    "                  [--jobs N]", &
     "                  [-o FILE] [--quiet] [--strict]", &
     "  kinetostat template KIND [-o FILE]   a commented deck to start from (KIND: a mechanism,", &
     "                                       or a preset of the generic engine)", &
@@ -68,7 +70,8 @@ module kinetostat_cli
     "-q, --quiet no warnings on stderr (errors are still reported); diff: no report", &
     "sweep       one summary row per variant of the grid of every --vary (COUNT values", &
     "            from FROM to TO), the first --vary slowest; --part K/N runs block K of N", &
-    "            (the parts' outputs concatenated in order are the whole sweep's)", &
+    "            (the parts' outputs concatenated in order are the whole sweep's); --jobs N", &
+    "            runs its variants in N processes (default: one per processor), same bytes", &
     "--strict    a run that warns (self-check above its limit, a dead position between", &
     "            steps, a jammed cam or lost contact, a coarse step near a load edge)", &
     "            exits 4; the output is still written", &
@@ -107,6 +110,8 @@ module kinetostat_cli
     integer :: part = 1
     !> N of --part K/N.
     integer :: parts = 1
+    !> --jobs N of a sweep: processes to run its variants in (0: one per processor).
+    integer :: jobs = 0
     !> Whether --format was given.
     logical :: format_given = .false.
     logical :: help = .false.
@@ -274,9 +279,11 @@ contains
     type(deck_source_t) :: source
     type(override_t), allocatable :: sets(:)
     type(variant_result_t), allocatable :: results(:)
-    integer :: v, i, start, first
+    integer :: v, i, start, first, jobs
     character(len=:), allocatable :: name, prefix
     warnings = 0
+    jobs = args%jobs
+    if (jobs == 0) jobs = cpu_count()
     call load_deck(args%deck, source, error)
     if (allocated(error)) return
     if (allocated(args%options%overrides)) then
@@ -284,8 +291,8 @@ contains
     else
       allocate (sets(0))
     end if
-    call run_sweep(source, sets, args%varies, args%part, args%parts, stderr_is_terminal() .and. .not. args%quiet, &
-      first, results, error)
+    call run_sweep(source, sets, args%varies, args%part, args%parts, jobs, &
+      stderr_is_terminal() .and. .not. args%quiet, first, results, error)
     if (allocated(error)) return
     do v = 1, size(results)
       name = variant_name(results(v))
@@ -469,7 +476,7 @@ contains
       else
         name = arg
         if (any(name == [character(len=8) :: "-o", "--output", "--format", "--lang", "--set", "--pairs", "--at", &
-                         "--frame", "--vary", "--part"])) then
+                         "--frame", "--vary", "--part", "--jobs"])) then
           if (i == n) then
             call fatal_error(error, exit_usage, name//" needs a value")
             return
@@ -527,6 +534,15 @@ contains
       case ("--part")
         call parse_part(value, args%part, args%parts, error)
         if (allocated(error)) return
+      case ("--jobs")
+        block
+          integer :: ios
+          read (value, *, iostat=ios) args%jobs
+          if (ios /= 0 .or. args%jobs < 1 .or. verify(trim(value), "0123456789") /= 0) then
+            call fatal_error(error, exit_usage, "--jobs must be a whole number >= 1 (got '"//value//"')")
+            return
+          end if
+        end block
       case ("sweep")
         if (allocated(args%deck) .or. args%sweep .or. allocated(args%template_kind)) then
           call fatal_error(error, exit_usage, "sweep must come first: kinetostat sweep DECK --vary NAME=FROM:TO:COUNT")
@@ -564,8 +580,8 @@ contains
       call fatal_error(error, exit_usage, "no deck given")
     else if (args%sweep .and. .not. allocated(args%varies)) then
       call fatal_error(error, exit_usage, "sweep needs at least one --vary NAME=FROM:TO:COUNT")
-    else if (.not. args%sweep .and. (allocated(args%varies) .or. args%parts > 1)) then
-      call fatal_error(error, exit_usage, "--vary and --part belong to the sweep subcommand: "// &
+    else if (.not. args%sweep .and. (allocated(args%varies) .or. args%parts > 1 .or. args%jobs > 0)) then
+      call fatal_error(error, exit_usage, "--vary, --part and --jobs belong to the sweep subcommand: "// &
         "kinetostat sweep DECK --vary ...")
     else if (args%sweep .and. args%format_given .and. args%options%format /= format_summary) then
       call fatal_error(error, exit_usage, "sweep writes the summary format only (--format summary)")

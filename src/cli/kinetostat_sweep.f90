@@ -1,9 +1,12 @@
 !> `kinetostat sweep`: one deck run over a grid of overrides (`--vary NAME=FROM:TO:COUNT`,
 !> cartesian product, the first --vary varying slowest), one summary row per variant, in
-!> grid order. The variants run one after the other: threads (OpenMP) are not safe here,
-!> because gfortran's run-time library corrupts concurrent internal READ/WRITE (namelist
-!> reading, number formatting) - measured, see docs/cli.md "Parameter sweeps". Larger
-!> sweeps are split over processes (`--part K/N`, xargs -P, GNU parallel, Slurm arrays).
+!> grid order. The variants run in parallel in child processes (`--jobs N`, default: every
+!> processor), each child a contiguous block of the grid whose results come back through a
+!> temporary file, put together in grid order: the output is the serial run's, byte for byte.
+!> Threads (OpenMP) are not used here, because gfortran's run-time library corrupts
+!> concurrent internal READ/WRITE (namelist reading, number formatting) - measured, see
+!> docs/cli.md "Parameter sweeps". Beyond one machine, sweeps are split over processes
+!> (`--part K/N`, xargs -P, GNU parallel, Slurm arrays).
 module kinetostat_sweep
   use, intrinsic :: iso_fortran_env, only: error_unit, int64
   use kinetostat_kinds, only: wp
@@ -18,6 +21,9 @@ module kinetostat_sweep
   use kinetostat_run, only: run_options_t, run_mechanism, format_summary
   use kinetostat_summary, only: summary_header, summary_row
   use kinetostat_registry, only: create_mechanism, known_kinds
+  use kinetostat_posix, only: fork_process, wait_process, exit_now, process_id
+  use kinetostat_output, only: remove_file
+  !$ use omp_lib, only: omp_set_num_threads
   implicit none
   private
   public :: vary_t, parse_vary, run_sweep, variant_result_t, variant_count
@@ -178,7 +184,7 @@ contains
   !> Run every variant of the grid on the deck. `results(v)` is variant v (the first
   !> --vary varies slowest). `progress` shows a line on stderr (carriage return,
   !> overwritten) after the first second.
-  subroutine run_sweep(source, sets, varies, part, parts, progress, first, results, error)
+  subroutine run_sweep(source, sets, varies, part, parts, jobs, progress, first, results, error)
     !> The deck as read.
     type(deck_source_t), intent(in) :: source
     !> The --set overrides (applied before every --vary).
@@ -188,6 +194,8 @@ contains
     !> This process runs part `part` of `parts` equal contiguous blocks of the grid (1, 1:
     !> all of it); concatenated in part order, the parts' outputs are the whole grid's.
     integer, intent(in) :: part, parts
+    !> Number of processes to run the variants in (1: this one only).
+    integer, intent(in) :: jobs
     !> Whether to show a progress line (stderr is a terminal).
     logical, intent(in) :: progress
     !> Grid number of results(1) (the variants of this part are first, first+1, ...).
@@ -220,6 +228,10 @@ contains
     do v = first, last
       results(v - first + 1)%overrides = variant_overrides(sets, varies, v)
     end do
+    if (jobs > 1 .and. size(results) > 1) then
+      call run_in_children(source, group, min(jobs, size(results)), results)
+      return
+    end if
     done = 0
     shown = .false.
     call system_clock(start, rate)
@@ -230,6 +242,138 @@ contains
     end do
     if (shown) write (error_unit, '(a)') ""
   end subroutine run_sweep
+
+  !> The variants in `jobs` child processes, each a contiguous block, its results returned
+  !> through a temporary file. A block whose child could not be started or did not return
+  !> its results is run here instead, so the results are always complete and in grid order.
+  subroutine run_in_children(source, group, jobs, results)
+    type(deck_source_t), intent(in) :: source
+    character(*), intent(in) :: group
+    !> Number of child processes (2 .. size(results)).
+    integer, intent(in) :: jobs
+    !> One result per variant (overrides set), filled here.
+    type(variant_result_t), intent(inout) :: results(:)
+    integer :: pids(jobs), j, lo, hi, v, owner, n
+    logical :: ok
+    n = size(results)
+    owner = process_id()
+    do j = 1, jobs
+      lo = block_start(j)
+      hi = block_start(j + 1) - 1
+      pids(j) = fork_process()
+      if (pids(j) == 0) then
+        !$ call omp_set_num_threads(1)
+        do v = lo, hi
+          call run_variant(source, group, results(v))
+        end do
+        call save_block(block_file(owner, j), results(lo:hi), ok)
+        call exit_now(merge(0, 1, ok))
+      end if
+    end do
+    do j = 1, jobs
+      lo = block_start(j)
+      hi = block_start(j + 1) - 1
+      ok = .false.
+      if (pids(j) > 0) then
+        if (wait_process(pids(j)) == 0) call load_block(block_file(owner, j), results(lo:hi), ok)
+      end if
+      call remove_file(block_file(owner, j))
+      if (ok) cycle
+      do v = lo, hi
+        call run_variant(source, group, results(v))
+      end do
+    end do
+  contains
+    !> First variant of block `j` (block jobs + 1 starts after the last variant).
+    integer function block_start(j)
+      integer, intent(in) :: j
+      block_start = int(int(n, int64) * (j - 1) / jobs) + 1
+    end function block_start
+  end subroutine run_in_children
+
+  !> Temporary file of block `j` of the sweep run by process `owner`.
+  function block_file(owner, j) result(path)
+    integer, intent(in) :: owner, j
+    character(len=:), allocatable :: path
+    character(len=4096) :: dir
+    integer :: length, status
+    call get_environment_variable("TMPDIR", dir, length, status)
+    if (status /= 0 .or. length == 0) dir = "/tmp"
+    path = trim(dir)//"/kinetostat-sweep-"//int_str(owner)//"-"//int_str(j)
+  end function block_file
+
+  !> Write the results of a block (stream, unformatted: read back by load_block).
+  subroutine save_block(path, results, ok)
+    character(*), intent(in) :: path
+    type(variant_result_t), intent(in) :: results(:)
+    logical, intent(out) :: ok
+    integer :: u, ios, v
+    ok = .false.
+    open (newunit=u, file=path, access="stream", form="unformatted", status="replace", action="write", &
+      iostat=ios)
+    if (ios /= 0) return
+    do v = 1, size(results)
+      associate (r => results(v))
+        if (allocated(r%error)) then
+          write (u, iostat=ios) .true., r%error%code, len(r%error%message), r%error%message
+        else
+          write (u, iostat=ios) .false., len(r%header), r%header, len(r%row), r%row, r%warning_count, &
+            r%warnings%length
+          if (ios == 0 .and. r%warnings%length > 0) write (u, iostat=ios) r%warnings%data(1:r%warnings%length)
+        end if
+      end associate
+      if (ios /= 0) exit
+    end do
+    if (ios == 0) then
+      close (u, iostat=ios)
+    else
+      close (u)
+    end if
+    ok = ios == 0
+  end subroutine save_block
+
+  !> Read the results of a block written by save_block.
+  subroutine load_block(path, results, ok)
+    character(*), intent(in) :: path
+    type(variant_result_t), intent(inout) :: results(:)
+    logical, intent(out) :: ok
+    integer :: u, ios, v, length, code
+    logical :: failed
+    ok = .false.
+    open (newunit=u, file=path, access="stream", form="unformatted", status="old", action="read", iostat=ios)
+    if (ios /= 0) return
+    do v = 1, size(results)
+      associate (r => results(v))
+        read (u, iostat=ios) failed
+        if (ios /= 0) exit
+        if (failed) then
+          read (u, iostat=ios) code, length
+          if (ios /= 0 .or. length < 0) exit
+          allocate (r%error)
+          r%error%code = code
+          allocate (character(len=length) :: r%error%message)
+          read (u, iostat=ios) r%error%message
+        else
+          read (u, iostat=ios) length
+          if (ios /= 0 .or. length < 0) exit
+          allocate (character(len=length) :: r%header)
+          read (u, iostat=ios) r%header, length
+          if (ios /= 0 .or. length < 0) exit
+          allocate (character(len=length) :: r%row)
+          read (u, iostat=ios) r%row, r%warning_count, length
+          if (ios /= 0 .or. length < 0) exit
+          if (length > 0) then
+            allocate (character(len=length) :: r%warnings%data)
+            read (u, iostat=ios) r%warnings%data
+            r%warnings%length = length
+          end if
+        end if
+      end associate
+      if (ios /= 0) exit
+    end do
+    close (u)
+    ok = ios == 0
+  end subroutine load_block
 
   !> The overrides of variant v: the --set ones, then one per --vary.
   function variant_overrides(sets, varies, v) result(overrides)

@@ -7,6 +7,7 @@ module kinetostat_posix
   private
   public :: path_kind, rename_file, process_id, write_standard_output, read_standard_input
   public :: stderr_is_terminal
+  public :: fork_process, wait_process, exit_now, cpu_count
   public :: path_absent, path_regular, path_directory, path_special
 
   !> Bytes asked for by one read of standard input.
@@ -62,6 +63,27 @@ module kinetostat_posix
       implicit none
       integer(c_int) :: pid
     end function c_getpid
+    function c_fork() bind(c, name="kinetostat_fork") result(pid)
+      import :: c_int
+      implicit none
+      integer(c_int) :: pid
+    end function c_fork
+    function c_wait(pid) bind(c, name="kinetostat_wait") result(status)
+      import :: c_int
+      implicit none
+      integer(c_int), value :: pid
+      integer(c_int) :: status
+    end function c_wait
+    subroutine c_exit_now(code) bind(c, name="kinetostat_exit_now")
+      import :: c_int
+      implicit none
+      integer(c_int), value :: code
+    end subroutine c_exit_now
+    function c_cpu_count() bind(c, name="kinetostat_cpu_count") result(n)
+      import :: c_int
+      implicit none
+      integer(c_int) :: n
+    end function c_cpu_count
   end interface
 
 contains
@@ -86,6 +108,30 @@ contains
   integer function process_id()
     process_id = int(c_getpid())
   end function process_id
+
+  !> A child process (fork): 0 in the child, the child's id in the parent, -1 on failure.
+  integer function fork_process()
+    fork_process = int(c_fork())
+  end function fork_process
+
+  !> Wait for child `pid`: its exit status, or -1 when it did not exit normally.
+  integer function wait_process(pid)
+    !> Child's process id.
+    integer, intent(in) :: pid
+    wait_process = int(c_wait(int(pid, c_int)))
+  end function wait_process
+
+  !> End this (child) process at once with `code`, without flushing inherited buffers.
+  subroutine exit_now(code)
+    !> Exit status.
+    integer, intent(in) :: code
+    call c_exit_now(int(code, c_int))
+  end subroutine exit_now
+
+  !> Number of processors online (at least 1).
+  integer function cpu_count()
+    cpu_count = int(c_cpu_count())
+  end function cpu_count
 
   !> Write `text` to standard output (file descriptor 1) unbuffered, every byte checked;
   !> false when the system refused a write (a full disk, a closed pipe).

@@ -8,7 +8,7 @@ module kinetostat_output
   use kinetostat_text_buffer, only: text_buffer_t
   implicit none
   private
-  public :: write_output_file, write_output_stdout
+  public :: write_output_file, write_output_stdout, remove_file
 
 contains
 

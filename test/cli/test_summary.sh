@@ -178,3 +178,20 @@ run_ks data/pr3050.nml
 [ ! -s "$err" ] && pass || fail progress-not-in-pipes "$(od -c "$err" | head -3)"
 run_ks sweep data/pr3050.nml --vary m3=1000:1100:3
 [ ! -s "$err" ] && pass || fail progress-not-in-pipes-sweep "$(od -c "$err" | head -3)"
+
+# --- sweep --jobs: variants in child processes give the serial run's bytes (stdout, stderr,
+# exit code), also when a variant fails; no temporary file is left behind
+for args in "--vary l_ab=0.08:0.14:7 --vary m5=50:70:3" "--vary l_ab=0.05:0.5:6"; do
+  # shellcheck disable=SC2086
+  "$KINETOSTAT" sweep data/pr3207.nml $args --jobs 1 >"$cli_tmp/j1.out" 2>"$cli_tmp/j1.err"; rc1=$?
+  # shellcheck disable=SC2086
+  TMPDIR="$cli_tmp" "$KINETOSTAT" sweep data/pr3207.nml $args --jobs 3 >"$cli_tmp/j3.out" 2>"$cli_tmp/j3.err"; rc3=$?
+  if [ "$rc1" -eq "$rc3" ] && cmp -s "$cli_tmp/j1.out" "$cli_tmp/j3.out" && cmp -s "$cli_tmp/j1.err" "$cli_tmp/j3.err"; then
+    pass
+  else
+    fail "sweep-jobs ($args)" "exit $rc1 vs $rc3; $(diff "$cli_tmp/j1.out" "$cli_tmp/j3.out" | head -3) $(diff "$cli_tmp/j1.err" "$cli_tmp/j3.err" | head -3)"
+  fi
+  if ls "$cli_tmp"/kinetostat-sweep-* >/dev/null 2>&1; then fail sweep-jobs-tmp "temporary files left: $(ls "$cli_tmp"/kinetostat-sweep-*)"; else pass; fi
+done
+expect_exit sweep-jobs-bad 1 sweep data/pr3207.nml --vary l_ab=0.1:0.12:2 --jobs 0
+expect_exit sweep-jobs-not-sweep 1 data/pr3207.nml --jobs 2
