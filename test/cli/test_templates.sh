@@ -66,7 +66,7 @@ for word in -o --output --set --format --pairs --at --lang --kinematics -q --qui
 done
 if command -v groff >/dev/null 2>&1; then
   if groff -man -Tutf8 -ww man/kinetostat.1 2>"$cli_tmp/groff.err" >"$cli_tmp/man.txt" && [ ! -s "$cli_tmp/groff.err" ] \
-    && sed 's/.\x08//g' "$cli_tmp/man.txt" | grep -q 'EXIT STATUS'; then pass
+    && sed 's/.\x08//g' "$cli_tmp/man.txt" | grep -c 'EXIT STATUS' >/dev/null; then pass
   else fail man-renders "groff: $(head -5 "$cli_tmp/groff.err")"; fi
 fi
 # bash completion: subcommands, options, kinds, formats, decks
