@@ -1,5 +1,13 @@
 !> The one wrapper around LAPACK: dense solve with a condition estimate, `info` turned into `error_t`.
 !>
+!> The factorisation and the solve are LAPACK's dgesv done here, operation for operation:
+!> dgetrf2's recursive partial-pivoting LU (idamax's pivot choice, dscal by the pivot's
+!> reciprocal, dlaswp, dtrsm and dgemm as the reference BLAS write them, down to which
+!> updates dtrsm skips for a zero) and dgetrs' substitutions. The factors, the pivots, the
+!> zero-pivot verdict and the solution are bit for bit those of the system library's dgesv
+!> (the test `lapack` compares them on fuzzed systems), without its call and argument-checking
+!> overhead, which cost more than the arithmetic for the 6x6 and 3x3 systems solved here.
+!>
 !> The singular-position test is dgecon's estimate against rcond_threshold, as it always was;
 !> dgecon is called only when a cheap bound cannot settle it. dgecon's rcond is 1/(anorm*est)
 !> with est <= ||(LU)^-1||_1 (a lower-bound estimator), and ||(LU)^-1||_1 <=
@@ -12,7 +20,7 @@ module kinetostat_lapack
   use kinetostat_error, only: error_t, fatal_error, exit_geometry
   implicit none
   private
-  public :: solve_dense, rcond_threshold, singular_by_estimate
+  public :: solve_dense, rcond_threshold, singular_by_estimate, solve_by_dgesv, solve_by_port
 
   !> Margin of the cheap test: dgecon is skipped only when the bound puts rcond at least this
   !> many times above the threshold.
@@ -61,23 +69,18 @@ contains
     type(error_t), allocatable, intent(out) :: error
     !> Reciprocal condition number estimate (1-norm, dgecon's), if wanted (then always computed).
     real(wp), intent(out), optional :: rcond
-    real(wp) :: lu(size(a, 1), size(a, 1)), rhs(size(a, 1), 1)
+    real(wp) :: lu(size(a, 1), size(a, 1))
     real(wp) :: anorm, rc
-    integer :: ipiv(size(a, 1)), info, n
+    integer :: ipiv(size(a, 1)), info
     logical :: settled
 
-    n = size(a, 1)
     x = 0.0_wp
     if (present(rcond)) rcond = 0.0_wp
     lu = a
-    rhs(:, 1) = b
     anorm = maxval(sum(abs(a), dim=1))
-    call dgesv(n, 1, lu, n, ipiv, rhs, n, info)
+    call lu_factor(lu, ipiv, info)
     if (info > 0) then
       call fatal_error(error, exit_geometry, "singular system (zero pivot)")
-      return
-    else if (info < 0) then
-      call fatal_error(error, exit_geometry, "dgesv: illegal argument")
       return
     end if
     settled = .false.
@@ -90,8 +93,193 @@ contains
         return
       end if
     end if
-    x = rhs(:, 1)
+    x = b
+    call lu_solve(lu, ipiv, x)
   end subroutine solve_dense
+
+  !> dgetrf2: recursive LU factorisation with partial pivoting of the m x n `a` (m >= n here),
+  !> L (unit diagonal) below and U on and above the diagonal; `info` > 0: U(info, info) is
+  !> exactly zero. The reference LAPACK 3.11 code's arithmetic, operation for operation.
+  pure recursive subroutine lu_factor(a, ipiv, info)
+    !> Matrix, overwritten by its factors.
+    real(wp), intent(inout) :: a(:, :)
+    !> Row interchanges: row k was swapped with row ipiv(k).
+    integer, intent(out) :: ipiv(:)
+    !> 0, or the first zero pivot.
+    integer, intent(out) :: info
+    real(wp) :: temp, amax
+    integer :: m, n, n1, n2, i, j, k, iinfo
+    m = size(a, 1)
+    n = size(a, 2)
+    info = 0
+    if (m == 0 .or. n == 0) return
+    if (m == 1) then
+      ipiv(1) = 1
+      if (a(1, 1) == 0.0_wp) info = 1
+    else if (n == 1) then
+      ! idamax: the first entry of largest magnitude
+      k = 1
+      amax = abs(a(1, 1))
+      do i = 2, m
+        if (abs(a(i, 1)) > amax) then
+          k = i
+          amax = abs(a(i, 1))
+        end if
+      end do
+      ipiv(1) = k
+      if (a(k, 1) /= 0.0_wp) then
+        if (k /= 1) then
+          temp = a(1, 1)
+          a(1, 1) = a(k, 1)
+          a(k, 1) = temp
+        end if
+        if (abs(a(1, 1)) >= tiny(1.0_wp)) then
+          temp = 1.0_wp / a(1, 1)
+          do i = 2, m
+            a(i, 1) = temp * a(i, 1)
+          end do
+        else
+          do i = 2, m
+            a(i, 1) = a(i, 1) / a(1, 1)
+          end do
+        end if
+      else
+        info = 1
+      end if
+    else
+      n1 = min(m, n) / 2
+      n2 = n - n1
+      call lu_factor(a(:, 1:n1), ipiv(1:n1), iinfo)
+      if (info == 0 .and. iinfo > 0) info = iinfo
+      call swap_rows(a(:, n1 + 1:n), ipiv, 1, n1)
+      ! dtrsm('L', 'L', 'N', 'U'): A12 = L11^-1 A12, skipping zero multipliers as it does
+      do j = n1 + 1, n
+        do k = 1, n1
+          if (a(k, j) /= 0.0_wp) then
+            do i = k + 1, n1
+              a(i, j) = a(i, j) - a(k, j) * a(i, k)
+            end do
+          end if
+        end do
+      end do
+      ! dgemm('N', 'N', alpha = -1, beta = 1): A22 = A22 - A21 A12 (no zero test)
+      do j = n1 + 1, n
+        do k = 1, n1
+          temp = -a(k, j)
+          do i = n1 + 1, m
+            a(i, j) = a(i, j) + temp * a(i, k)
+          end do
+        end do
+      end do
+      call lu_factor(a(n1 + 1:m, n1 + 1:n), ipiv(n1 + 1:min(m, n)), iinfo)
+      if (info == 0 .and. iinfo > 0) info = iinfo + n1
+      do i = n1 + 1, min(m, n)
+        ipiv(i) = ipiv(i) + n1
+      end do
+      call swap_rows(a(:, 1:n1), ipiv, n1 + 1, min(m, n))
+    end if
+  end subroutine lu_factor
+
+  !> dlaswp: for k = k1 .. k2, swap row k with row ipiv(k).
+  pure subroutine swap_rows(a, ipiv, k1, k2)
+    !> Matrix whose rows are swapped.
+    real(wp), intent(inout) :: a(:, :)
+    !> Row interchanges.
+    integer, intent(in) :: ipiv(:)
+    !> First and last interchange applied.
+    integer, intent(in) :: k1, k2
+    real(wp) :: temp
+    integer :: j, k
+    do k = k1, k2
+      if (ipiv(k) == k) cycle
+      do j = 1, size(a, 2)
+        temp = a(k, j)
+        a(k, j) = a(ipiv(k), j)
+        a(ipiv(k), j) = temp
+      end do
+    end do
+  end subroutine swap_rows
+
+  !> dgetrs for one right-hand side: `x` = (P L U)^-1 `x` from lu_factor's factors (dlaswp,
+  !> then dtrsm's forward and back substitutions, which skip a zero as the reference does).
+  pure subroutine lu_solve(lu, ipiv, x)
+    !> Factors.
+    real(wp), intent(in) :: lu(:, :)
+    !> Row interchanges.
+    integer, intent(in) :: ipiv(:)
+    !> Right-hand side in, solution out.
+    real(wp), intent(inout) :: x(:)
+    real(wp) :: temp
+    integer :: n, i, k
+    n = size(lu, 1)
+    do k = 1, n
+      if (ipiv(k) /= k) then
+        temp = x(k)
+        x(k) = x(ipiv(k))
+        x(ipiv(k)) = temp
+      end if
+    end do
+    do k = 1, n
+      if (x(k) /= 0.0_wp) then
+        do i = k + 1, n
+          x(i) = x(i) - x(k) * lu(i, k)
+        end do
+      end if
+    end do
+    do k = n, 1, -1
+      if (x(k) /= 0.0_wp) then
+        x(k) = x(k) / lu(k, k)
+        do i = 1, k - 1
+          x(i) = x(i) - x(k) * lu(i, k)
+        end do
+      end if
+    end do
+  end subroutine lu_solve
+
+  !> LAPACK's dgesv itself (the reference of the tests): factors `lu`, pivots `ipiv`, solution
+  !> `x` (set only when `info` = 0) and `info`.
+  pure subroutine solve_by_dgesv(a, b, lu, ipiv, x, info)
+    !> Coefficient matrix (n x n).
+    real(wp), intent(in) :: a(:, :)
+    !> Right-hand side (n).
+    real(wp), intent(in) :: b(:)
+    !> dgetrf's factors.
+    real(wp), intent(out) :: lu(:, :)
+    !> dgetrf's row interchanges.
+    integer, intent(out) :: ipiv(:)
+    !> Solution.
+    real(wp), intent(out) :: x(:)
+    !> dgesv's info.
+    integer, intent(out) :: info
+    real(wp) :: rhs(size(a, 1), 1)
+    integer :: n
+    n = size(a, 1)
+    lu = a
+    rhs(:, 1) = b
+    call dgesv(n, 1, lu, n, ipiv, rhs, n, info)
+    x = rhs(:, 1)
+  end subroutine solve_by_dgesv
+
+  !> What solve_dense computes, in solve_by_dgesv's form (the tests compare the two bit for
+  !> bit): factors `lu`, pivots `ipiv`, solution `x` (set only when `info` = 0), `info`.
+  pure subroutine solve_by_port(a, b, lu, ipiv, x, info)
+    !> Coefficient matrix (n x n).
+    real(wp), intent(in) :: a(:, :)
+    !> Right-hand side (n).
+    real(wp), intent(in) :: b(:)
+    !> lu_factor's factors.
+    real(wp), intent(out) :: lu(:, :)
+    !> lu_factor's row interchanges.
+    integer, intent(out) :: ipiv(:)
+    !> Solution.
+    real(wp), intent(out) :: x(:)
+    !> 0, or the first zero pivot.
+    integer, intent(out) :: info
+    lu = a
+    call lu_factor(lu, ipiv, info)
+    x = b
+    if (info == 0) call lu_solve(lu, ipiv, x)
+  end subroutine solve_by_port
 
   !> dgecon's reciprocal condition estimate (1-norm) from the LU factors.
   pure subroutine estimate_rcond(lu, anorm, rc, info)
