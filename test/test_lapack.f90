@@ -27,6 +27,8 @@ contains
     call bitwise(t, 6)
     call bitwise(t, 3)
     call bitwise(t, 2)
+    call bitwise(t, 5) ! other shapes of dgetrf2's recursion (not solved by the product today)
+    call bitwise(t, 8)
   end subroutine run_lapack_tests
 
   !> system_count systems of size n from every family: the port's factors, pivots, info and

@@ -2,8 +2,9 @@
 !>
 !> The factorisation and the solve are LAPACK's dgesv done here, operation for operation:
 !> dgetrf2's recursive partial-pivoting LU (idamax's pivot choice, dscal by the pivot's
-!> reciprocal, dlaswp, dtrsm and dgemm as the reference BLAS write them, down to which
-!> updates dtrsm skips for a zero) and dgetrs' substitutions. The factors, the pivots, the
+!> reciprocal, the updates of dtrsm and dgemm as the reference BLAS write them, down to which
+!> updates dtrsm skips for a zero), unrolled into one loop over the columns, and dgetrs'
+!> substitutions. The factors, the pivots, the
 !> zero-pivot verdict and the solution are bit for bit those of the system library's dgesv
 !> (the test `lapack` compares them on fuzzed systems), without its call and argument-checking
 !> overhead, which cost more than the arithmetic for the 6x6 and 3x3 systems solved here.
@@ -97,108 +98,97 @@ contains
     call lu_solve(lu, ipiv, x)
   end subroutine solve_dense
 
-  !> dgetrf2: recursive LU factorisation with partial pivoting of the m x n `a` (m >= n here),
-  !> L (unit diagonal) below and U on and above the diagonal; `info` > 0: U(info, info) is
-  !> exactly zero. The reference LAPACK 3.11 code's arithmetic, operation for operation.
-  pure recursive subroutine lu_factor(a, ipiv, info)
+  !> dgetrf2's LU factorisation with partial pivoting of the square `a`: L (unit diagonal)
+  !> below and U on and above the diagonal; `info` > 0: U(info, info) is exactly zero. The
+  !> reference LAPACK 3.11 arithmetic, done column by column (left-looking): dgetrf2's
+  !> recursion applies to every entry the same updates in the same order (k = 1, 2, ...), each
+  !> a(i,j) - u(k,j)*l(i,k) rounded once (dgemm's a + (-u)*l is the same number), its row swaps
+  !> only move data, and its pivots are idamax's; what the recursion changes is which updates
+  !> dtrsm makes, and dtrsm skips an update whose u(k,j) is zero (which can turn -0 into +0)
+  !> while dgemm does not: trsm_last gives the rows of dtrsm's updates, counted after the
+  !> pivots of its node's left part (all pivots before column j are, here).
+  pure subroutine lu_factor(a, ipiv, info)
     !> Matrix, overwritten by its factors.
     real(wp), intent(inout) :: a(:, :)
     !> Row interchanges: row k was swapped with row ipiv(k).
     integer, intent(out) :: ipiv(:)
     !> 0, or the first zero pivot.
     integer, intent(out) :: info
-    real(wp) :: temp, amax
-    integer :: m, n, n1, n2, i, j, k, iinfo
-    m = size(a, 1)
-    n = size(a, 2)
+    real(wp) :: temp, amax, u
+    integer :: n, i, j, k, p, last
+    n = size(a, 1)
     info = 0
-    if (m == 0 .or. n == 0) return
-    if (m == 1) then
-      ipiv(1) = 1
-      if (a(1, 1) == 0.0_wp) info = 1
-    else if (n == 1) then
+    do k = 1, n
+      ! column k: the updates from columns 1 .. k-1, in that order, rows in their places
+      ! after the pivots so far (where dtrsm's rows are: it works after its node's pivots)
+      do j = 1, k - 1
+        u = a(j, k)
+        last = j
+        if (u == 0.0_wp) last = trsm_last(n, j, k)
+        do i = last + 1, n
+          a(i, k) = a(i, k) - u * a(i, j)
+        end do
+      end do
       ! idamax: the first entry of largest magnitude
-      k = 1
-      amax = abs(a(1, 1))
-      do i = 2, m
-        if (abs(a(i, 1)) > amax) then
-          k = i
-          amax = abs(a(i, 1))
+      p = k
+      amax = abs(a(k, k))
+      do i = k + 1, n
+        if (abs(a(i, k)) > amax) then
+          p = i
+          amax = abs(a(i, k))
         end if
       end do
-      ipiv(1) = k
-      if (a(k, 1) /= 0.0_wp) then
-        if (k /= 1) then
-          temp = a(1, 1)
-          a(1, 1) = a(k, 1)
-          a(k, 1) = temp
+      ipiv(k) = p
+      if (a(p, k) /= 0.0_wp) then
+        if (p /= k) then
+          do j = 1, n
+            temp = a(k, j)
+            a(k, j) = a(p, j)
+            a(p, j) = temp
+          end do
         end if
-        if (abs(a(1, 1)) >= tiny(1.0_wp)) then
-          temp = 1.0_wp / a(1, 1)
-          do i = 2, m
-            a(i, 1) = temp * a(i, 1)
+        if (abs(a(k, k)) >= tiny(1.0_wp)) then
+          temp = 1.0_wp / a(k, k)
+          do i = k + 1, n
+            a(i, k) = temp * a(i, k)
           end do
         else
-          do i = 2, m
-            a(i, 1) = a(i, 1) / a(1, 1)
+          do i = k + 1, n
+            a(i, k) = a(i, k) / a(k, k)
           end do
         end if
-      else
-        info = 1
+      else if (info == 0) then
+        info = k
       end if
-    else
-      n1 = min(m, n) / 2
-      n2 = n - n1
-      call lu_factor(a(:, 1:n1), ipiv(1:n1), iinfo)
-      if (info == 0 .and. iinfo > 0) info = iinfo
-      call swap_rows(a(:, n1 + 1:n), ipiv, 1, n1)
-      ! dtrsm('L', 'L', 'N', 'U'): A12 = L11^-1 A12, skipping zero multipliers as it does
-      do j = n1 + 1, n
-        do k = 1, n1
-          if (a(k, j) /= 0.0_wp) then
-            do i = k + 1, n1
-              a(i, j) = a(i, j) - a(k, j) * a(i, k)
-            end do
-          end if
-        end do
-      end do
-      ! dgemm('N', 'N', alpha = -1, beta = 1): A22 = A22 - A21 A12 (no zero test)
-      do j = n1 + 1, n
-        do k = 1, n1
-          temp = -a(k, j)
-          do i = n1 + 1, m
-            a(i, j) = a(i, j) + temp * a(i, k)
-          end do
-        end do
-      end do
-      call lu_factor(a(n1 + 1:m, n1 + 1:n), ipiv(n1 + 1:min(m, n)), iinfo)
-      if (info == 0 .and. iinfo > 0) info = iinfo + n1
-      do i = n1 + 1, min(m, n)
-        ipiv(i) = ipiv(i) + n1
-      end do
-      call swap_rows(a(:, 1:n1), ipiv, n1 + 1, min(m, n))
-    end if
+    end do
   end subroutine lu_factor
 
-  !> dlaswp: for k = k1 .. k2, swap row k with row ipiv(k).
-  pure subroutine swap_rows(a, ipiv, k1, k2)
-    !> Matrix whose rows are swapped.
-    real(wp), intent(inout) :: a(:, :)
-    !> Row interchanges.
-    integer, intent(in) :: ipiv(:)
-    !> First and last interchange applied.
-    integer, intent(in) :: k1, k2
-    real(wp) :: temp
-    integer :: j, k
-    do k = k1, k2
-      if (ipiv(k) == k) cycle
-      do j = 1, size(a, 2)
-        temp = a(k, j)
-        a(k, j) = a(ipiv(k), j)
-        a(ipiv(k), j) = temp
-      end do
+  !> The last row updated by dtrsm (not dgemm) with column k in column j (k < j) when dgetrf2
+  !> factors an n x n matrix (k when none): at the node of its recursion that puts k in its
+  !> left part (columns c0 .. c0+n1-1, n1 = half its width) and j in its right part, dtrsm
+  !> updates rows k+1 .. c0+n1-1.
+  pure integer function trsm_last(n, k, j) result(last)
+    !> Order of the matrix.
+    integer, intent(in) :: n
+    !> Pivot column and updated column.
+    integer, intent(in) :: k, j
+    integer :: c0, width, n1
+    c0 = 1
+    width = n
+    last = k
+    do while (width > 1)
+      n1 = min(n - c0 + 1, width) / 2
+      if (k < c0 + n1 .and. j >= c0 + n1) then
+        last = max(k, c0 + n1 - 1)
+        return
+      else if (j < c0 + n1) then
+        width = n1
+      else
+        c0 = c0 + n1
+        width = width - n1
+      end if
     end do
-  end subroutine swap_rows
+  end function trsm_last
 
   !> dgetrs for one right-hand side: `x` = (P L U)^-1 `x` from lu_factor's factors (dlaswp,
   !> then dtrsm's forward and back substitutions, which skip a zero as the reference does).
