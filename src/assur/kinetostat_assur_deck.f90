@@ -12,7 +12,7 @@ module kinetostat_assur_deck
   use kinetostat_text, only: real_str, int_str, number_str, lower
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, unset_bits, max_deck_array, &
-    deck_array_capacities, deck_source_t, namelist_probe_t, deck_error, is_set, require_set, require_positive, &
+    deck_array_capacities, deck_source_t, namelist_probe_t, deck_error, require_all_set, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn, &
     is_whole_in, require_whole
   use kinetostat_vec2, only: unit_at, rotate, magnitude, cross
@@ -333,6 +333,12 @@ contains
       int_str(len(deck%title))//" characters", error)
     if (allocated(error)) return
 
+    ! ---- two or more required variables missing: one message naming them all (a single
+    ! missing variable gets its own message, with its reason, from the checks below)
+    call require_all_given(ctx, coordinates, phi_ref, dphi, phi1, omega1, omega1_step, eps1_step, drive_dyad, &
+                           drive_pair, dyad, force, moment, error)
+    if (allocated(error)) return
+
     ! ---- frame, crank, speed law, gravity, steps
     call require_whole(ctx, "frame_id", frame_id, 0, huge(1), frame_no, error); if (allocated(error)) return
     call require_whole(ctx, "crank_id", crank_id, 0, huge(1), crank_no, error); if (allocated(error)) return
@@ -551,6 +557,144 @@ contains
     deck%frame_id = frame_no
     deck%crank_id = crank_no
   end subroutine read_assur_deck
+
+  !> The required variables the deck lacks, in the order the checks of read_assur_deck meet
+  !> them: phi_ref (global form), dphi (unless a phi1 list), omega1 (or the other of
+  !> omega1_step, eps1_step), the kind of the first missing dyad, each dyad's link2, link3,
+  !> on2, on3, at2, at3 and what its kind needs (angle2, angle3, l2, l3 or in the global form
+  !> b, slot_at, slot_angle), the other of drive_dyad and drive_pair, the link of a force or
+  !> moment given by its other members, a load's angle and value and the other end of its
+  !> window. When two or more are missing, one error names them all ("missing required
+  !> variables: ..."); with one or none, no error: the checks that follow report it with its
+  !> reason. An unknown `coordinates`, or phi_ref in the local form, leaves it to them too.
+  subroutine require_all_given(ctx, coordinates, phi_ref, dphi, phi1, omega1, omega1_step, eps1_step, drive_dyad, &
+                               drive_pair, dyad, force, moment, error)
+    type(deck_context_t), intent(in) :: ctx
+    !> 'local' or 'global' as read.
+    character(*), intent(in) :: coordinates
+    !> Reference crank angle, crank step (deg), speed (rad/s) as read.
+    real(wp), intent(in) :: phi_ref, dphi, omega1
+    !> Crank angle list (deg), per-step speed (rad/s) and acceleration (rad/s^2) as read.
+    real(wp), intent(in) :: phi1(:), omega1_step(:), eps1_step(:)
+    !> Linear actuator: dyad and pair numbers as read.
+    real(wp), intent(in) :: drive_dyad, drive_pair
+    !> Dyads, forces and moments as read.
+    type(dyad_in_t), intent(in) :: dyad(:)
+    type(force_in_t), intent(in) :: force(:)
+    type(moment_in_t), intent(in) :: moment(:)
+    type(error_t), allocatable, intent(out) :: error
+    !> Names of the missing variables.
+    character(len=24), allocatable :: names(:)
+    character(len=:), allocatable :: p
+    logical :: global, steps_given
+    integer :: nd, d, k, kind
+    allocate (names(0))
+    ! what is required depends on the form: an unknown form, or phi_ref without the global
+    ! form, is reported first by the checks that follow
+    if (.not. any(lower(trim(coordinates)) == [character(len=8) :: "local", "global"])) return
+    global = lower(trim(coordinates)) == "global"
+    if (.not. global .and. is_set(phi_ref)) return
+    if (global) call add_missing(names, "phi_ref", .not. is_set(phi_ref))
+    call add_missing(names, "dphi", .not. any(is_set(phi1)) .and. .not. is_set(dphi))
+    steps_given = any(is_set(omega1_step)) .or. any(is_set(eps1_step))
+    call add_missing(names, "omega1", .not. steps_given .and. .not. is_set(omega1))
+    if (steps_given .and. .not. is_set(omega1)) then
+      call add_missing(names, "omega1_step", .not. any(is_set(omega1_step)))
+      call add_missing(names, "eps1_step", .not. any(is_set(eps1_step)))
+    end if
+
+    ! dyads: the leading entries with a kind; a later entry touched means the next kind is missing
+    nd = 0
+    do d = 1, size(dyad)
+      if (.not. is_set(dyad(d)%kind)) exit
+      nd = d
+    end do
+    if (nd < size(dyad)) then
+      call add_missing(names, "dyad("//int_str(nd + 1)//")%kind", nd == 0 .or. any(dyad_touched(dyad(nd + 1:))))
+    end if
+    do d = 1, nd
+      p = "dyad("//int_str(d)//")%"
+      associate (dy => dyad(d))
+        call add_missing(names, p//"link2", .not. is_set(dy%link2))
+        call add_missing(names, p//"link3", .not. is_set(dy%link3))
+        call add_missing(names, p//"on2", .not. is_set(dy%on2))
+        call add_missing(names, p//"on3", .not. is_set(dy%on3))
+        call add_missing(names, p//"at2", .not. any(is_set(dy%at2)))
+        call add_missing(names, p//"at3", .not. any(is_set(dy%at3)))
+        if (.not. is_whole_in(dy%kind, 1, 5)) cycle ! what it needs depends on its kind
+        kind = nint(dy%kind)
+        if (global) then
+          call add_missing(names, p//"b", (kind == kind_rrr .or. kind == kind_rrp) .and. .not. any(is_set(dy%b)))
+          call add_missing(names, p//"slot_at", kind == kind_rpp .and. .not. any(is_set(dy%slot_at)))
+        end if
+        call add_missing(names, p//"angle2", kind == kind_prp .and. .not. is_set(dy%angle2))
+        call add_missing(names, p//"angle3", (kind == kind_rrp .or. kind == kind_prp .or. kind == kind_rpp) .and. &
+                         .not. is_set(dy%angle3))
+        if (.not. global) then
+          call add_missing(names, p//"l2", (kind == kind_rrr .or. kind == kind_rrp) .and. .not. is_set(dy%l2))
+          call add_missing(names, p//"l3", kind == kind_rrr .and. .not. is_set(dy%l3))
+        end if
+        call add_missing(names, p//"slot_angle", kind == kind_rpp .and. .not. is_set(dy%slot_angle))
+      end associate
+    end do
+    call add_missing(names, "drive_pair", is_set(drive_dyad) .and. .not. is_set(drive_pair))
+    call add_missing(names, "drive_dyad", is_set(drive_pair) .and. .not. is_set(drive_dyad))
+
+    ! loads: the leading entries with a link, then the first one touched after a gap
+    do k = 1, size(force)
+      associate (fi => force(k))
+        p = "force("//int_str(k)//")%"
+        if (.not. is_set(fi%link)) then
+          if (.not. any(is_set([fi%value, fi%angle, fi%column, fi%fx, fi%fy, fi%table(1)]))) cycle ! no force
+          call add_missing(names, p//"link", .true.)
+        end if
+        if (any(is_set([fi%fx, fi%fy]))) then
+          call add_window(names, p, fi%phi_on, fi%phi_off)
+          cycle
+        end if
+        call add_missing(names, p//"angle", .not. is_set(fi%angle))
+        if (is_set(fi%table(1)) .or. is_set(fi%column)) cycle
+        call add_missing(names, p//"value", .not. is_set(fi%value))
+        call add_window(names, p, fi%phi_on, fi%phi_off)
+      end associate
+    end do
+    do k = 1, size(moment)
+      associate (mi => moment(k))
+        p = "moment("//int_str(k)//")%"
+        if (.not. is_set(mi%link)) then
+          if (.not. any(is_set([mi%value, mi%column, mi%table(1)]))) cycle ! no moment
+          call add_missing(names, p//"link", .true.)
+        end if
+        if (is_set(mi%table(1)) .or. is_set(mi%column)) cycle
+        call add_missing(names, p//"value", .not. is_set(mi%value))
+        call add_window(names, p, mi%phi_on, mi%phi_off)
+      end associate
+    end do
+    if (size(names) >= 2) call require_all_set(ctx, names, spread(unset_real, 1, size(names)), error)
+  end subroutine require_all_given
+
+  !> Append `name` to `names` when `missing`.
+  pure subroutine add_missing(names, name, missing)
+    !> Names of the missing variables so far.
+    character(len=24), allocatable, intent(inout) :: names(:)
+    !> Variable name.
+    character(*), intent(in) :: name
+    !> Whether it is missing.
+    logical, intent(in) :: missing
+    if (missing) names = [character(len=24) :: names, name]
+  end subroutine add_missing
+
+  !> A load's window: when one end is given, the other is missing if not.
+  pure subroutine add_window(names, prefix, phi_on, phi_off)
+    !> Names of the missing variables so far.
+    character(len=24), allocatable, intent(inout) :: names(:)
+    !> Prefix, e.g. "force(1)%".
+    character(*), intent(in) :: prefix
+    !> Window ends as read, deg.
+    real(wp), intent(in) :: phi_on, phi_off
+    call add_missing(names, prefix//"phi_on", is_set(phi_off) .and. .not. is_set(phi_on))
+    call add_missing(names, prefix//"phi_off", is_set(phi_on) .and. .not. is_set(phi_off))
+  end subroutine add_window
 
   !> Point `p` (global, m) in the coordinates of the link whose frame is `ls` (components
   !> below 1e-13 of its distance from the link's origin are roundoff: 0).
@@ -954,7 +1098,7 @@ contains
   end function pair_stem
 
   !> Whether any component of a dyad entry was set.
-  pure logical function dyad_touched(dy)
+  elemental logical function dyad_touched(dy)
     type(dyad_in_t), intent(in) :: dy
     dyad_touched = any(is_set([dy%link2, dy%link3, dy%on2, dy%on3, dy%at2, dy%at3, dy%angle2, dy%angle3, &
                                dy%l2, dy%l3, dy%e, dy%slot_at, dy%slot_angle, dy%mode, dy%m2, dy%j2, dy%s2, &

@@ -117,7 +117,7 @@ expect_input_error assur-force-window '&assur: force\(1\)%phi_off: must be >= ph
 expect_input_error assur-force-window-half '&assur: force\(1\)%phi_off: missing' "$(deck_with a_fh "$sc" 's/, force(1)%phi_off = 180//')"
 expect_input_error assur-force-column-and-value '&assur: force\(1\)%column: give either column' "$(deck_with a_fc "$sc" 's/force(1)%value = 500/force(1)%column = 1, force(1)%value = 500/')"
 expect_input_error assur-force-column-short '&assur: force\(1\)%column: step_values has 12 values' "$(deck_with a_fs "$sc" 's/force(1)%value = 500, force(1)%idle = 100, force(1)%phi_on = 0, force(1)%phi_off = 180/force(1)%column = 1, step_values = 12*5/')"
-expect_input_error assur-force-gap '&assur: force\(2\)%link: missing' "$(deck_with a_fg "$sc" 's/force(1)%link = 3/force(2)%value = 1, force(1)%link = 3/')"
+expect_input_error assur-force-gap '&assur: force\(2\)%link: missing \(forces must be numbered without gaps\)$' "$(deck_with a_fg "$sc" 's/force(1)%link = 3/force(2)%value = 1, force(2)%angle = 0, force(1)%link = 3/')"
 expect_input_error assur-moment-link '&assur: moment\(1\)%link: link 9 is not a moving link' "$(deck_with a_ml "$sc" 's/force(1)%link = 3/moment(1)%link = 9, moment(1)%value = 1, force(1)%link = 3/')"
 expect_input_error assur-unterminated '&assur: namelist' "$(deck_with a_unt "$sc" '/^\//d')"
 

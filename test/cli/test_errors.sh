@@ -49,6 +49,31 @@ d="$(deck_with missing_gears data/gears_reducer.nml 's/^  z1 .*//; s/^  m  .*//'
 expect_input_error err-missing-gears 'missing required variables: z1\(1\), m\(1\), z1\(2\), m\(2\)$' "$d"
 d="$(deck_with missing_gears1 data/gears_reducer.nml 's/^  z1 .*/  z1 = 20/')"
 expect_input_error err-missing-gears-one '&gears: z1\(2\): missing \(number of teeth\)$' "$d"
+# --- generic engine (&assur): the missing variables of the deck and of its dyads and loads in
+# one line, in the order the checks meet them; one missing variable keeps its own message
+sc=data/assur_slider_crank.nml
+d="$(deck_with assur_missing3 "$sc" 's/omega1 = 50 //; s/dyad(1)%on3 = 0, //; s/dyad(1)%l2 = 0.35, //')"
+expect_error_line err-assur-missing-all "$d: &assur: missing required variables: omega1, dyad(1)%on3, dyad(1)%l2" "$d"
+d="$(deck_with assur_missing1 "$sc" 's/dyad(1)%l2 = 0.35, //')"
+expect_error_line err-assur-missing-one "$d: &assur: dyad(1)%l2: missing (required variable)" "$d"
+# two dyads (RPR, RPP), a load's value and its window's end
+d="$(deck_with assur_missing_pr "data/assur_pr3207.nml" 's/, dyad(2)%slot_angle = -90//; s/dyad(1)%link3 = 3//;
+  s/force(1)%value = 3000, //; s/, force(1)%phi_off = 265//; s/phi_start = 0, dphi = 30/phi_start = 0/')"
+expect_error_line err-assur-missing-dyads \
+  "$d: &assur: missing required variables: dphi, dyad(1)%link3, dyad(2)%slot_angle, force(1)%value, force(1)%phi_off" "$d"
+# a load without its link: the link and the load's other missing members
+d="$(deck_with assur_missing_load "$sc" 's/force(1)%link = 3/moment(1)%value = 1, force(1)%link = 3/; s/, force(1)%angle = 180//')"
+expect_error_line err-assur-missing-load "$d: &assur: missing required variables: force(1)%angle, moment(1)%link" "$d"
+# the global form: phi_ref and the inner joint b are required, the lengths are not
+d="$(deck_with assur_missing_gl data/assur_fourbar_global.nml 's/, phi_ref = 40//; /dyad(1)%b =/d; s/, dyad(1)%link3 = 3//')"
+expect_error_line err-assur-missing-global "$d: &assur: missing required variables: phi_ref, dyad(1)%link3, dyad(1)%b" "$d"
+# without coordinates = 'global' the same deck misses the lengths, but its phi_ref is reported
+# first: an error that is not a missing variable keeps its place
+d="$(deck_with assur_missing_form data/assur_fourbar_global.nml "s/coordinates = 'global', //")"
+expect_error_line err-assur-missing-form "$d: &assur: phi_ref: only used with coordinates = 'global'" "$d"
+d="$(deck_with assur_missing_local data/assur_fourbar_global.nml "s/coordinates = 'global', phi_ref = 40//; /dyad(1)%b =/d")"
+expect_error_line err-assur-missing-local "$d: &assur: missing required variables: dyad(1)%l2, dyad(1)%l3" "$d"
+
 # --- generic engine: a dyad that cannot be assembled gives the numbers
 d="$(deck_with assur_far data/assur_slider_crank.nml 's/dyad(1)%at3 = 0, 0.02 /dyad(1)%at3 = 0, 0.5 /')"
 expect_input_error err-assur-reach 'dyad 1 \(RRP, links 2-3\): cannot be assembled: distance from its joint to the guide 0\.50* m exceeds l2 = 0\.350* m' "$d" 3
