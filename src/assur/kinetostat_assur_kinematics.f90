@@ -142,15 +142,26 @@ contains
     ps%a = ls%ao + ls%eq * perp(w) - ls%u**2 * w
   end function point_on
 
-  !> Solve [c1 c2] x = rhs (2x2); `ok` false when the columns are (nearly) parallel.
+  !> Solve [c1 c2] x = rhs (2x2); `ok` false when the columns are (nearly) parallel:
+  !> |det| <= reach_tol |c1| |c2| (the lengths by hypot). The test is settled first from the
+  !> squared lengths when that is possible with a margin of 2 (far beyond their roundoff), so
+  !> the two hypot calls are made only near the threshold or at extreme magnitudes.
   pure subroutine solve2(c1, c2, rhs, x, ok)
     real(wp), intent(in) :: c1(2), c2(2), rhs(2)
     real(wp), intent(out) :: x(2)
     logical, intent(out) :: ok
-    real(wp) :: det, scale
+    real(wp), parameter :: sq_low = 1.0e-100_wp, sq_high = 1.0e100_wp
+    real(wp) :: det, scale, sq1, sq2
     det = cross(c1, c2)
-    scale = magnitude(c1) * magnitude(c2)
-    ok = abs(det) > reach_tol * scale .and. scale > 0.0_wp
+    sq1 = c1(1)**2 + c1(2)**2
+    sq2 = c2(1)**2 + c2(2)**2
+    if (sq1 >= sq_low .and. sq1 <= sq_high .and. sq2 >= sq_low .and. sq2 <= sq_high .and. &
+        det**2 > 4.0_wp * reach_tol**2 * (sq1 * sq2)) then
+      ok = .true.
+    else
+      scale = magnitude(c1) * magnitude(c2)
+      ok = abs(det) > reach_tol * scale .and. scale > 0.0_wp
+    end if
     if (.not. ok) then
       x = 0.0_wp
       return

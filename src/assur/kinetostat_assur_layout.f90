@@ -482,20 +482,40 @@ contains
     !> One step.
     type(assur_step_t), intent(in) :: s
     real(wp), allocatable :: v(:)
-    real(wp) :: floor, f(2), mfloor, nn, mm
+    real(wp) :: floor, f(2), mfloor, nn, mm, f_mag(size(s%f, 2))
+    logical :: prismatic(size(s%f, 2))
     integer :: ip, np, pos
     np = size(s%f, 2)
-    allocate (v(1 + 6 * np + 4))
+    ! the row's length first: one allocation
+    pos = 1
+    do ip = 1, np
+      prismatic(ip) = assur_pair_prismatic(deck, ip)
+      pos = pos + 2
+      if (deck%components) pos = pos + 2
+      if (prismatic(ip)) pos = pos + 2
+    end do
+    if (deck%mech%drive_dyad == 0) then
+      allocate (v(pos + 1))
+    else
+      allocate (v(pos + 4))
+    end if
     floor = 0.0_wp
     do ip = 1, np
-      floor = max(floor, magnitude(s%f(:, ip)))
+      f_mag(ip) = magnitude(s%f(:, ip))
+      floor = max(floor, f_mag(ip))
     end do
     floor = noise_rel * floor
     mfloor = floor * crank_length(deck)
     v(1) = s%phi1 * rad_to_deg
     pos = 1
     do ip = 1, np
-      f = rotate(snap_noise(deck%pair_sign(ip) * s%f(:, ip), floor), -deck%pair_frame(ip))
+      ! snap_noise(pair_sign * f, floor), its length known (hypot ignores the signs)
+      if (f_mag(ip) <= floor) then
+        f = 0.0_wp
+      else
+        f = deck%pair_sign(ip) * s%f(:, ip)
+      end if
+      f = rotate(f, -deck%pair_frame(ip))
       where (abs(f) <= floor) f = 0.0_wp
       v(pos + 1) = magnitude(f)
       if (deck%angles_signed) then
@@ -508,24 +528,26 @@ contains
         v(pos + 1:pos + 2) = f
         pos = pos + 2
       end if
-      if (assur_pair_prismatic(deck, ip)) then
+      if (prismatic(ip)) then
         nn = deck%pair_sign(ip) * s%n(ip)
         mm = deck%pair_sign(ip) * s%m(ip)
         if (abs(nn) <= floor) nn = 0.0_wp
         if (abs(mm) <= mfloor) mm = 0.0_wp
-        v(pos + 1:pos + 2) = [nn, mm]
+        v(pos + 1) = nn
+        v(pos + 2) = mm
         pos = pos + 2
       end if
     end do
     if (deck%mech%drive_dyad == 0) then
       v(pos + 1) = s%m1
       if (abs(v(pos + 1)) <= mfloor) v(pos + 1) = 0.0_wp
-      v = clean_zero(v(1:pos + 1))
     else
       v(pos + 1:pos + 4) = [s%f_drive, s%stroke, s%stroke_v, s%stroke_a]
       if (abs(v(pos + 1)) <= floor) v(pos + 1) = 0.0_wp
-      v = clean_zero(v(1:pos + 4))
     end if
+    do ip = 1, size(v)
+      v(ip) = clean_zero(v(ip))
+    end do
   end function assur_csv_values
 
   !> The kinematics columns of step `k`, in the deck's global frame: the reference point

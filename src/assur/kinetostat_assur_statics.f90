@@ -79,7 +79,8 @@ contains
 
     scale = 0.0_wp
     do j = 1, 3
-      scale = max(scale, magnitude(p(:, j) - o))
+      ! (o is usually one of the points: its distance 0 needs no hypot)
+      if (any(p(:, j) /= o)) scale = max(scale, magnitude(p(:, j) - o))
     end do
     if (.not. scale > 0.0_wp) scale = 1.0_wp
     a = 0.0_wp

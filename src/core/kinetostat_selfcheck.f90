@@ -46,13 +46,18 @@ contains
     real(wp), intent(in) :: at(2)
     !> Force, N.
     real(wp), intent(in) :: f(2)
-    real(wp) :: m
-    m = cross(at - origin, f)
+    real(wp) :: m, arm(2), f_mag, arm_mag
+    arm = at - origin
+    m = cross(arm, f)
+    f_mag = magnitude(f)
+    ! a force at the origin has no lever arm: hypot(0, 0) = 0 without the call
+    arm_mag = 0.0_wp
+    if (arm(1) /= 0.0_wp .or. arm(2) /= 0.0_wp) arm_mag = magnitude(arm)
     balance%sum_f = balance%sum_f + f
-    balance%scale_f = balance%scale_f + magnitude(f)
+    balance%scale_f = balance%scale_f + f_mag
     balance%sum_m = balance%sum_m + m
     balance%scale_m = balance%scale_m + abs(m)
-    balance%lever_m = balance%lever_m + magnitude(at - origin) * magnitude(f)
+    balance%lever_m = balance%lever_m + arm_mag * f_mag
   end subroutine balance_add_force
 
   !> Adds couple `c` (N*m, CCW positive) to `balance`.
