@@ -4,7 +4,7 @@ module test_foundation
   use, intrinsic :: iso_fortran_env, only: int64
   use kinetostat_kinds, only: wp, pi
   use kinetostat_error, only: error_t, exit_geometry, exit_input
-  use kinetostat_text, only: number_str
+  use kinetostat_text, only: number_str, int_str
   use kinetostat_deck, only: deck_source_t, load_deck, deck_source_from_text, read_group_name, &
     deck_context_t, unset_real, unset_bits, is_set, is_whole_in, require_whole, require_set, &
     steps_over_turn, deck_array_capacities, max_deck_array
@@ -90,12 +90,36 @@ contains
     if (allocated(error)) call check_true(t, "solve_dense singular -> exit 3", error%code == exit_geometry, &
                                           "wrong exit code")
 
+    call test_int_str(t)
     call test_deck_source(t)
     call test_load_deck(t)
     call test_unset_and_whole(t)
     call test_array_capacities(t)
     call test_capacities_read_as_full(t)
   end subroutine run_foundation_tests
+
+  !> int_str (digit by digit) gives the text of the i0 edit descriptor: the extremes, zero,
+  !> every power of ten and its neighbours, both signs.
+  subroutine test_int_str(t)
+    type(test_counts_t), intent(inout) :: t
+    character(len=24) :: buf
+    integer :: values(64), i, p, differ
+    values(1:4) = [0, huge(0), -huge(0), -huge(0) - 1]
+    p = 1
+    do i = 0, 9
+      values(5 + 6 * i:10 + 6 * i) = [p - 1, p, p + 1, -p + 1, -p, -p - 1]
+      if (i < 9) p = p * 10
+    end do
+    differ = 0
+    do i = 1, size(values)
+      write (buf, '(i0)') values(i)
+      if (int_str(values(i)) /= trim(buf) .or. len(int_str(values(i))) /= len_trim(buf)) then
+        differ = differ + 1
+        call check_text(t, "int_str = i0", trim(buf), int_str(values(i)))
+      end if
+    end do
+    call check_true(t, "int_str = i0 on 64 values", differ == 0, "see above")
+  end subroutine test_int_str
 
   !> Pass when two texts are equal; both are printed on failure.
   subroutine check_text(t, name, expected, computed)

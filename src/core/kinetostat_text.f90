@@ -36,14 +36,28 @@ contains
     end if
   end function number_str
 
-  !> An integer as trimmed text.
+  !> An integer as trimmed text (the text of the `i0` edit descriptor), built digit by digit:
+  !> an internal WRITE costs ~0.3 us (locale, locks), and column names are built per step.
   pure function int_str(i) result(s)
     !> Value.
     integer, intent(in) :: i
     character(len=:), allocatable :: s
     character(len=24) :: buf
-    write (buf, '(i0)') i
-    s = trim(buf)
+    integer(int64) :: v
+    integer :: pos
+    v = abs(int(i, int64))
+    pos = len(buf) + 1
+    do
+      pos = pos - 1
+      buf(pos:pos) = achar(iachar('0') + int(mod(v, 10_int64)))
+      v = v / 10_int64
+      if (v == 0_int64) exit
+    end do
+    if (i < 0) then
+      pos = pos - 1
+      buf(pos:pos) = '-'
+    end if
+    s = buf(pos:)
   end function int_str
 
   !> ASCII lower case.
