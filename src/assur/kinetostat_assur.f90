@@ -19,7 +19,7 @@ module kinetostat_assur
     power_mismatch, balance_add_balance
   use kinetostat_text, only: int_str
   use kinetostat_assur_kinematics, only: link_state_t, point_state_t, dyad_geometry_t, dyad_pose_t, &
-    point_on, crank_state, frame_state, dyad_pose, kind_names, pose_ok, pose_no_assembly
+    point_on, crank_state, frame_state, set_dyad_pose, kind_names, pose_ok, pose_no_assembly
   use kinetostat_assur_statics, only: dyad_reactions_t, dyad_reactions, pair_is_prismatic
   implicit none
   private
@@ -180,8 +180,9 @@ contains
     real(wp), intent(in) :: phi1
     !> Frames of links 0..2*nd+1.
     type(link_state_t), intent(out) :: states(0:)
-    !> Pose of each dyad.
-    type(dyad_pose_t), intent(out) :: poses(:)
+    !> Pose of each dyad (each one set here, up to the failing one on an error; inout only to
+    !> spare every step a second initialisation of them).
+    type(dyad_pose_t), intent(inout) :: poses(:)
     !> Geometry error naming the dyad.
     type(error_t), allocatable, intent(out) :: error
     integer :: d
@@ -189,8 +190,8 @@ contains
     states(1) = crank_state(mech%pivot, phi1)
     do d = 1, size(mech%dyads)
       associate (dy => mech%dyads(d))
-        poses(d) = dyad_pose(dy%geom, states(dy%on(1)), dy%at(:, 1), dy%ang(1), &
-                             states(dy%on(2)), dy%at(:, 2), dy%ang(2))
+        call set_dyad_pose(dy%geom, states(dy%on(1)), dy%at(:, 1), dy%ang(1), &
+                           states(dy%on(2)), dy%at(:, 2), dy%ang(2), poses(d))
         if (poses(d)%status /= pose_ok) then
           if (poses(d)%status == pose_no_assembly) then
             if (allocated(poses(d)%detail)) then

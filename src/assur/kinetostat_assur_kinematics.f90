@@ -22,7 +22,7 @@ module kinetostat_assur_kinematics
   implicit none
   private
   public :: link_state_t, point_state_t, dyad_geometry_t, dyad_pose_t
-  public :: point_on, crank_state, frame_state, dyad_pose
+  public :: point_on, crank_state, frame_state, dyad_pose, set_dyad_pose
   public :: kind_rrr, kind_rrp, kind_rpr, kind_prp, kind_rpp, kind_names, kind_has_mode
   public :: pose_ok, pose_no_assembly, pose_dead
 
@@ -189,6 +189,27 @@ contains
     !> Guide direction on it (prismatic pair 3 only), rad.
     real(wp), intent(in) :: ang3
     type(dyad_pose_t) :: pose
+    call set_dyad_pose(g, q1, at1, ang1, q3, at3, ang3, pose)
+  end function dyad_pose
+
+  !> dyad_pose into `pose` in place (the per-step path: no temporary pose copied).
+  pure subroutine set_dyad_pose(g, q1, at1, ang1, q3, at3, ang3, pose)
+    !> Dyad geometry.
+    type(dyad_geometry_t), intent(in) :: g
+    !> Frame of the link pair 1 attaches to.
+    type(link_state_t), intent(in) :: q1
+    !> Attachment point on it (pin, or a point of the guide line), m.
+    real(wp), intent(in) :: at1(2)
+    !> Guide direction on it (prismatic pair 1 only), rad.
+    real(wp), intent(in) :: ang1
+    !> Frame of the link pair 3 attaches to.
+    type(link_state_t), intent(in) :: q3
+    !> Attachment point on it, m.
+    real(wp), intent(in) :: at3(2)
+    !> Guide direction on it (prismatic pair 3 only), rad.
+    real(wp), intent(in) :: ang3
+    !> The pose.
+    type(dyad_pose_t), intent(out) :: pose
     type(point_state_t) :: a, c
     a = point_on(q1, at1)
     c = point_on(q3, at3)
@@ -206,7 +227,7 @@ contains
     case default
       pose%status = pose_no_assembly
     end select
-  end function dyad_pose
+  end subroutine set_dyad_pose
 
   !> RRR: B = A + l2 e(th_a) = C + l3 e(th_b); mode +1 puts B left of A->C.
   pure subroutine pose_rrr(g, a, c, pose)
