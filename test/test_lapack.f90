@@ -1,12 +1,15 @@
 !> The singular-position test of solve_dense (a cheap bound first, dgecon only near the
 !> threshold) against the test as it was (dgesv, then dgecon always): the same verdict on a
 !> fuzzed set of 6x6 and 3x3 systems, well-conditioned, badly scaled and near-singular ones
-!> whose reciprocal condition straddles rcond_threshold (a fixed seed, so a failure repeats).
+!> whose reciprocal condition straddles rcond_threshold (a fixed seed, so a failure repeats);
+!> and solve_dense's own LU (a port of dgesv) against the library's dgesv bit for bit: the
+!> factors, pivots, zero-pivot verdict and solution, on those systems and on sparse ones with
+!> signed zeros, small integers (pivot ties, exact cancellations) and subnormal columns.
 module test_lapack
   use, intrinsic :: iso_fortran_env, only: int64
   use kinetostat_kinds, only: wp
   use kinetostat_error, only: error_t
-  use kinetostat_lapack, only: solve_dense, singular_by_estimate
+  use kinetostat_lapack, only: solve_dense, singular_by_estimate, solve_by_dgesv, solve_by_port
   use test_harness, only: test_counts_t, check_true
   implicit none
   private
@@ -21,7 +24,48 @@ contains
     type(test_counts_t), intent(inout) :: t
     call fuzz(t, 6)
     call fuzz(t, 3)
+    call bitwise(t, 6)
+    call bitwise(t, 3)
+    call bitwise(t, 2)
+    call bitwise(t, 5) ! other shapes of dgetrf2's recursion (not solved by the product today)
+    call bitwise(t, 8)
   end subroutine run_lapack_tests
+
+  !> system_count systems of size n from every family: the port's factors, pivots, info and
+  !> solution must be dgesv's bit for bit (signed zeros included).
+  subroutine bitwise(t, n)
+    type(test_counts_t), intent(inout) :: t
+    integer, intent(in) :: n
+    real(wp) :: a(n, n), b(n), lu_ref(n, n), lu_own(n, n), x_ref(n), x_own(n)
+    integer :: ipiv_ref(n), ipiv_own(n), info_ref, info_own
+    integer(int64) :: state
+    integer :: i, k, differ, zero_pivots, first_bad
+    character(len=200) :: detail
+    state = 2400_int64 + n
+    differ = 0
+    zero_pivots = 0
+    first_bad = 0
+    do i = 1, system_count
+      call random_system(state, mod(i, 8), a)
+      do k = 1, n
+        b(k) = 2.0_wp * uniform(state) - 1.0_wp
+      end do
+      if (mod(i, 3) == 0) b(1) = -0.0_wp
+      call solve_by_dgesv(a, b, lu_ref, ipiv_ref, x_ref, info_ref)
+      call solve_by_port(a, b, lu_own, ipiv_own, x_own, info_own)
+      if (info_ref > 0) zero_pivots = zero_pivots + 1
+      if (info_ref /= info_own .or. any(ipiv_ref /= ipiv_own) .or. &
+          any(transfer(lu_ref, 0_int64, n * n) /= transfer(lu_own, 0_int64, n * n)) .or. &
+          (info_ref == 0 .and. any(transfer(x_ref, 0_int64, n) /= transfer(x_own, 0_int64, n)))) then
+        differ = differ + 1
+        if (first_bad == 0) first_bad = i
+      end if
+    end do
+    write (detail, '(a,i0,a,i0,a,i0,a,i0)') "n = ", n, ": ", differ, " systems differ from dgesv (first: system ", &
+      first_bad, "); zero pivots ", zero_pivots
+    call check_true(t, "lapack: solve_dense's LU = dgesv bit for bit", differ == 0, trim(detail))
+    call check_true(t, "lapack: the bitwise set has zero pivots", zero_pivots > 0, trim(detail))
+  end subroutine bitwise
 
   !> system_count systems of size n: the verdicts must agree; both kinds must occur.
   subroutine fuzz(t, n)
@@ -55,7 +99,8 @@ contains
   end subroutine fuzz
 
   !> A random system of a family: 0 random, 1 badly scaled rows and columns, 2 and 3 a rank
-  !> deficient matrix plus a perturbation of relative size 1e-18 .. 1e-6.
+  !> deficient matrix plus a perturbation of relative size 1e-18 .. 1e-6, 4 and 5 sparse with
+  !> signed zeros, 6 small integers, 7 a subnormal column.
   subroutine random_system(state, family, a)
     integer(int64), intent(inout) :: state
     integer, intent(in) :: family
@@ -83,6 +128,24 @@ contains
       do i = 1, n
         a(i, n) = a(i, n) + eps * (2.0_wp * uniform(state) - 1.0_wp)
       end do
+    case (4, 5)
+      ! sparse, with signed zeros (the dyads' matrices have structural zeros)
+      do j = 1, n
+        do i = 1, n
+          eps = uniform(state)
+          if (eps < 0.25_wp) then
+            a(i, j) = 0.0_wp
+          else if (eps < 0.5_wp) then
+            a(i, j) = -0.0_wp
+          end if
+        end do
+      end do
+    case (6)
+      ! small integers: pivot ties, exact cancellations, exact zero pivots
+      a = real(nint(4.0_wp * a), wp)
+    case (7)
+      ! a subnormal column (pivots below the smallest normal number)
+      a(:, 1 + mod(int(uniform(state) * n), n)) = a(:, 1) * 1.0e-310_wp
     case default ! a plain random matrix
     end select
   end subroutine random_system

@@ -1,9 +1,19 @@
 !> The one wrapper around LAPACK: dense solve with a condition estimate, `info` turned into `error_t`.
 !>
+!> The factorisation and the solve are LAPACK's dgesv done here, operation for operation:
+!> dgetrf2's recursive partial-pivoting LU (idamax's pivot choice, dscal by the pivot's
+!> reciprocal, the updates of dtrsm and dgemm as the reference BLAS write them, down to which
+!> updates dtrsm skips for a zero), unrolled into one loop over the columns, and dgetrs'
+!> substitutions. The factors, the pivots, the
+!> zero-pivot verdict and the solution are bit for bit those of the system library's dgesv
+!> (the test `lapack` compares them on fuzzed systems), without its call and argument-checking
+!> overhead, which cost more than the arithmetic for the 6x6 and 3x3 systems solved here.
+!>
 !> The singular-position test is dgecon's estimate against rcond_threshold, as it always was;
 !> dgecon is called only when a cheap bound cannot settle it. dgecon's rcond is 1/(anorm*est)
 !> with est <= ||(LU)^-1||_1 (a lower-bound estimator), and ||(LU)^-1||_1 <=
-!> ||U^-1||_1 * ||L^-1||_1, which the explicit triangular inverses give in ~n^3/3 flops. When
+!> ||U^-1||_1 * ||L^-1||_1, bounded in turn through the triangles' comparison matrices in ~n^2
+!> flops (inverse_norm_bound). When
 !> 1/(anorm * that bound) is at least screen_factor * rcond_threshold, dgecon's rcond is above
 !> the threshold too (by a margin far beyond the roundoff of either computation), so the
 !> answer is the same without calling it; otherwise dgecon decides exactly as before.
@@ -12,7 +22,7 @@ module kinetostat_lapack
   use kinetostat_error, only: error_t, fatal_error, exit_geometry
   implicit none
   private
-  public :: solve_dense, rcond_threshold, singular_by_estimate
+  public :: solve_dense, rcond_threshold, singular_by_estimate, solve_by_dgesv, solve_by_port
 
   !> Margin of the cheap test: dgecon is skipped only when the bound puts rcond at least this
   !> many times above the threshold.
@@ -61,23 +71,18 @@ contains
     type(error_t), allocatable, intent(out) :: error
     !> Reciprocal condition number estimate (1-norm, dgecon's), if wanted (then always computed).
     real(wp), intent(out), optional :: rcond
-    real(wp) :: lu(size(a, 1), size(a, 1)), rhs(size(a, 1), 1)
+    real(wp) :: lu(size(a, 1), size(a, 1))
     real(wp) :: anorm, rc
-    integer :: ipiv(size(a, 1)), info, n
+    integer :: ipiv(size(a, 1)), info
     logical :: settled
 
-    n = size(a, 1)
     x = 0.0_wp
     if (present(rcond)) rcond = 0.0_wp
     lu = a
-    rhs(:, 1) = b
     anorm = maxval(sum(abs(a), dim=1))
-    call dgesv(n, 1, lu, n, ipiv, rhs, n, info)
+    call lu_factor(lu, ipiv, info)
     if (info > 0) then
       call fatal_error(error, exit_geometry, "singular system (zero pivot)")
-      return
-    else if (info < 0) then
-      call fatal_error(error, exit_geometry, "dgesv: illegal argument")
       return
     end if
     settled = .false.
@@ -90,8 +95,182 @@ contains
         return
       end if
     end if
-    x = rhs(:, 1)
+    x = b
+    call lu_solve(lu, ipiv, x)
   end subroutine solve_dense
+
+  !> dgetrf2's LU factorisation with partial pivoting of the square `a`: L (unit diagonal)
+  !> below and U on and above the diagonal; `info` > 0: U(info, info) is exactly zero. The
+  !> reference LAPACK 3.11 arithmetic, done column by column (left-looking): dgetrf2's
+  !> recursion applies to every entry the same updates in the same order (k = 1, 2, ...), each
+  !> a(i,j) - u(k,j)*l(i,k) rounded once (dgemm's a + (-u)*l is the same number), its row swaps
+  !> only move data, and its pivots are idamax's; what the recursion changes is which updates
+  !> dtrsm makes, and dtrsm skips an update whose u(k,j) is zero (which can turn -0 into +0)
+  !> while dgemm does not: trsm_last gives the rows of dtrsm's updates, counted after the
+  !> pivots of its node's left part (all pivots before column j are, here).
+  pure subroutine lu_factor(a, ipiv, info)
+    !> Matrix, overwritten by its factors.
+    real(wp), intent(inout) :: a(:, :)
+    !> Row interchanges: row k was swapped with row ipiv(k).
+    integer, intent(out) :: ipiv(:)
+    !> 0, or the first zero pivot.
+    integer, intent(out) :: info
+    real(wp) :: temp, amax, u
+    integer :: n, i, j, k, p, last
+    n = size(a, 1)
+    info = 0
+    do k = 1, n
+      ! column k: the updates from columns 1 .. k-1, in that order, rows in their places
+      ! after the pivots so far (where dtrsm's rows are: it works after its node's pivots)
+      do j = 1, k - 1
+        u = a(j, k)
+        last = j
+        if (u == 0.0_wp) last = trsm_last(n, j, k)
+        do i = last + 1, n
+          a(i, k) = a(i, k) - u * a(i, j)
+        end do
+      end do
+      ! idamax: the first entry of largest magnitude
+      p = k
+      amax = abs(a(k, k))
+      do i = k + 1, n
+        if (abs(a(i, k)) > amax) then
+          p = i
+          amax = abs(a(i, k))
+        end if
+      end do
+      ipiv(k) = p
+      if (a(p, k) /= 0.0_wp) then
+        if (p /= k) then
+          do j = 1, n
+            temp = a(k, j)
+            a(k, j) = a(p, j)
+            a(p, j) = temp
+          end do
+        end if
+        if (abs(a(k, k)) >= tiny(1.0_wp)) then
+          temp = 1.0_wp / a(k, k)
+          do i = k + 1, n
+            a(i, k) = temp * a(i, k)
+          end do
+        else
+          do i = k + 1, n
+            a(i, k) = a(i, k) / a(k, k)
+          end do
+        end if
+      else if (info == 0) then
+        info = k
+      end if
+    end do
+  end subroutine lu_factor
+
+  !> The last row updated by dtrsm (not dgemm) with column k in column j (k < j) when dgetrf2
+  !> factors an n x n matrix (k when none): at the node of its recursion that puts k in its
+  !> left part (columns c0 .. c0+n1-1, n1 = half its width) and j in its right part, dtrsm
+  !> updates rows k+1 .. c0+n1-1.
+  pure integer function trsm_last(n, k, j) result(last)
+    !> Order of the matrix.
+    integer, intent(in) :: n
+    !> Pivot column and updated column.
+    integer, intent(in) :: k, j
+    integer :: c0, width, n1
+    c0 = 1
+    width = n
+    last = k
+    do while (width > 1)
+      n1 = min(n - c0 + 1, width) / 2
+      if (k < c0 + n1 .and. j >= c0 + n1) then
+        last = max(k, c0 + n1 - 1)
+        return
+      else if (j < c0 + n1) then
+        width = n1
+      else
+        c0 = c0 + n1
+        width = width - n1
+      end if
+    end do
+  end function trsm_last
+
+  !> dgetrs for one right-hand side: `x` = (P L U)^-1 `x` from lu_factor's factors (dlaswp,
+  !> then dtrsm's forward and back substitutions, which skip a zero as the reference does).
+  pure subroutine lu_solve(lu, ipiv, x)
+    !> Factors.
+    real(wp), intent(in) :: lu(:, :)
+    !> Row interchanges.
+    integer, intent(in) :: ipiv(:)
+    !> Right-hand side in, solution out.
+    real(wp), intent(inout) :: x(:)
+    real(wp) :: temp
+    integer :: n, i, k
+    n = size(lu, 1)
+    do k = 1, n
+      if (ipiv(k) /= k) then
+        temp = x(k)
+        x(k) = x(ipiv(k))
+        x(ipiv(k)) = temp
+      end if
+    end do
+    do k = 1, n
+      if (x(k) /= 0.0_wp) then
+        do i = k + 1, n
+          x(i) = x(i) - x(k) * lu(i, k)
+        end do
+      end if
+    end do
+    do k = n, 1, -1
+      if (x(k) /= 0.0_wp) then
+        x(k) = x(k) / lu(k, k)
+        do i = 1, k - 1
+          x(i) = x(i) - x(k) * lu(i, k)
+        end do
+      end if
+    end do
+  end subroutine lu_solve
+
+  !> LAPACK's dgesv itself (the reference of the tests): factors `lu`, pivots `ipiv`, solution
+  !> `x` (set only when `info` = 0) and `info`.
+  pure subroutine solve_by_dgesv(a, b, lu, ipiv, x, info)
+    !> Coefficient matrix (n x n).
+    real(wp), intent(in) :: a(:, :)
+    !> Right-hand side (n).
+    real(wp), intent(in) :: b(:)
+    !> dgetrf's factors.
+    real(wp), intent(out) :: lu(:, :)
+    !> dgetrf's row interchanges.
+    integer, intent(out) :: ipiv(:)
+    !> Solution.
+    real(wp), intent(out) :: x(:)
+    !> dgesv's info.
+    integer, intent(out) :: info
+    real(wp) :: rhs(size(a, 1), 1)
+    integer :: n
+    n = size(a, 1)
+    lu = a
+    rhs(:, 1) = b
+    call dgesv(n, 1, lu, n, ipiv, rhs, n, info)
+    x = rhs(:, 1)
+  end subroutine solve_by_dgesv
+
+  !> What solve_dense computes, in solve_by_dgesv's form (the tests compare the two bit for
+  !> bit): factors `lu`, pivots `ipiv`, solution `x` (set only when `info` = 0), `info`.
+  pure subroutine solve_by_port(a, b, lu, ipiv, x, info)
+    !> Coefficient matrix (n x n).
+    real(wp), intent(in) :: a(:, :)
+    !> Right-hand side (n).
+    real(wp), intent(in) :: b(:)
+    !> lu_factor's factors.
+    real(wp), intent(out) :: lu(:, :)
+    !> lu_factor's row interchanges.
+    integer, intent(out) :: ipiv(:)
+    !> Solution.
+    real(wp), intent(out) :: x(:)
+    !> 0, or the first zero pivot.
+    integer, intent(out) :: info
+    lu = a
+    call lu_factor(lu, ipiv, info)
+    x = b
+    if (info == 0) call lu_solve(lu, ipiv, x)
+  end subroutine solve_by_port
 
   !> dgecon's reciprocal condition estimate (1-norm) from the LU factors.
   pure subroutine estimate_rcond(lu, anorm, rc, info)
@@ -106,35 +285,36 @@ contains
   end subroutine estimate_rcond
 
   !> An upper bound of ||(L U)^-1||_1 from dgetrf's factors in `lu` (unit lower L below the
-  !> diagonal, U on and above it): ||U^-1||_1 * ||L^-1||_1, from the explicit inverses.
+  !> diagonal, U on and above it): ||U^-1||_1 * ||L^-1||_1, each bounded through its
+  !> comparison matrix M (|diagonal|, -|off-diagonal|): |T^-1| <= M(T)^-1 entrywise for a
+  !> triangular T, and the column sums of M(T)^-1 >= 0 are the solution y of M(T)^T y = e,
+  !> a sum of positive terms (no cancellation: its roundoff is a few ulps): n^2 flops and n
+  !> divisions instead of the explicit inverses' n^3/3 and n(n+1)/2. (A non-finite bound
+  !> settles nothing: the caller then asks dgecon.)
   pure real(wp) function inverse_norm_bound(lu)
     real(wp), intent(in) :: lu(:, :)
-    real(wp) :: col(size(lu, 1)), norm_l, norm_u, s
-    integer :: n, i, j, k
+    real(wp) :: y(size(lu, 1)), norm_l, norm_u, s
+    integer :: n, i, j
     n = size(lu, 1)
+    ! U: y_j = (1 + sum_{i<j} |u_ij| y_i) / |u_jj|
     norm_u = 0.0_wp
-    norm_l = 0.0_wp
     do j = 1, n
-      ! column j of U^-1: U col = e_j (back substitution, rows j..1)
-      col(j) = 1.0_wp / lu(j, j)
-      do i = j - 1, 1, -1
-        s = 0.0_wp
-        do k = i + 1, j
-          s = s + lu(i, k) * col(k)
-        end do
-        col(i) = -s / lu(i, i)
+      s = 1.0_wp
+      do i = 1, j - 1
+        s = s + abs(lu(i, j)) * y(i)
       end do
-      norm_u = max(norm_u, sum(abs(col(1:j))))
-      ! column j of L^-1: L col = e_j (forward substitution, rows j..n, unit diagonal)
-      col(j) = 1.0_wp
+      y(j) = s / abs(lu(j, j))
+      norm_u = max(norm_u, y(j))
+    end do
+    ! L (unit diagonal): y_j = 1 + sum_{i>j} |l_ij| y_i, from the last row up
+    norm_l = 0.0_wp
+    do j = n, 1, -1
+      s = 1.0_wp
       do i = j + 1, n
-        s = 0.0_wp
-        do k = j, i - 1
-          s = s + lu(i, k) * col(k)
-        end do
-        col(i) = -s
+        s = s + abs(lu(i, j)) * y(i)
       end do
-      norm_l = max(norm_l, sum(abs(col(j:n))))
+      y(j) = s
+      norm_l = max(norm_l, s)
     end do
     inverse_norm_bound = norm_u * norm_l
   end function inverse_norm_bound
