@@ -21,7 +21,7 @@ program bench
   use kinetostat_step_table, only: step_table_t
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_run, only: run_options_t, run_mechanism, format_csv, format_table, format_json
-  use kinetostat_output, only: write_output_file
+  use kinetostat_spool, only: spool_t
   use kinetostat_decimal, only: put_es_compact, edit_f
   implicit none
 
@@ -244,6 +244,7 @@ contains
     type(deck_source_t) :: source
     type(step_table_t) :: table
     type(text_buffer_t) :: out
+    type(spool_t) :: spool
     type(run_options_t) :: options
     type(error_t), allocatable :: error
     real(wp) :: t0
@@ -253,9 +254,10 @@ contains
     call read_group_name(source, group, error)
     if (allocated(error)) call fail(error)
     call create_mechanism(group, mech)
-    call run_mechanism(mech, group, source, options, table, out, error)
+    call spool%aim(path)
+    call run_mechanism(mech, group, source, options, table, out, error, spool)
     if (allocated(error)) call fail(error)
-    call write_output_file(path, out, error)
+    call spool%commit(out, error)
     if (allocated(error)) call fail(error)
     end_to_end_seconds = seconds_since(t0)
   end function end_to_end_seconds

@@ -18,12 +18,13 @@ program kinetostat_tests
   use test_svg, only: run_svg_tests
   use test_decimal, only: run_decimal_tests
   use test_lapack, only: run_lapack_tests
+  use test_blocks, only: run_blocks_tests
   use, intrinsic :: iso_fortran_env, only: error_unit
   implicit none
   !> Suite names, in the order they run.
   character(*), parameter :: suite_names(*) = [character(len=11) :: &
     "foundation", "pr3207", "pr3050", "sixbar", "gears", "cam", "assur", "assur_ext", "friction", "io", &
-    "kinematics", "svg", "decimal", "lapack"]
+    "kinematics", "svg", "decimal", "lapack", "blocks"]
   type(test_counts_t) :: t
   logical :: selected(size(suite_names))
   integer :: i
@@ -87,6 +88,7 @@ contains
     case ("svg"); call run_svg_tests(t)
     case ("decimal"); call run_decimal_tests(t)
     case ("lapack"); call run_lapack_tests(t)
+    case ("blocks"); call run_blocks_tests(t)
     case default; error stop "run_suite: no suite '"//name//"'"
     end select
   end subroutine run_suite

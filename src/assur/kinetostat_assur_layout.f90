@@ -188,52 +188,63 @@ contains
     type(assur_step_t), allocatable :: steps(:)
     type(friction_step_t), allocatable :: fsteps(:)
     character(len=24), allocatable :: names(:)
-    integer :: k, c, ip, nc
+    integer :: k, c, ip, nc, first, last
     allocate (steps(0), fsteps(0)) ! defined before the call (gcc's -Wmaybe-uninitialized on the descriptor)
-    call assur_solve(table%deck, self%deck, steps, error, fsteps)
+    call table%block_range(self%deck%n, first, last)
+    call assur_solve(table%deck, self%deck, steps, error, fsteps, first, last)
     if (allocated(error)) return
-    allocate (names(0))
-    names = assur_csv_columns(self%deck)
-    allocate (table%columns(0))
-    call table%add_column("phi1", "deg", col_input_angle)
-    c = 1
-    do ip = 1, size(self%deck%pair_name)
-      call table%add_column(trim(names(c + 1)), "N", col_force)
-      call table%add_column(trim(names(c + 2)), "deg", col_force_angle)
-      c = c + 2
-      if (self%deck%components) then
-        call table%add_column(trim(names(c + 1)), "N", col_component)
-        call table%add_column(trim(names(c + 2)), "N", col_component)
+    if (table%first_block()) then
+      allocate (names(0))
+      names = assur_csv_columns(self%deck)
+      allocate (table%columns(0))
+      call table%add_column("phi1", "deg", col_input_angle)
+      c = 1
+      do ip = 1, size(self%deck%pair_name)
+        call table%add_column(trim(names(c + 1)), "N", col_force)
+        call table%add_column(trim(names(c + 2)), "deg", col_force_angle)
         c = c + 2
-      end if
-      if (assur_pair_prismatic(self%deck, ip)) then
-        call table%add_column(trim(names(c + 1)), "N", col_component)
-        call table%add_column(trim(names(c + 2)), "N*m", col_moment)
-        c = c + 2
-      end if
-    end do
-    if (self%deck%mech%drive_dyad == 0) then
-      call table%add_column("M1", "N*m", col_moment)
-    else
-      call table%add_column("F_drive", "N", col_component)
-      call table%add_column("stroke", "m", col_length)
-      call table%add_column("stroke_v", "m/s", col_other)
-      call table%add_column("stroke_a", "m/s^2", col_other)
-    end if
-    if (self%deck%friction_on) then
-      names = friction_csv_columns(self%deck)
-      if (self%deck%mech%drive_dyad == 0) then
-        call table%add_column(trim(names(1)), "N*m", col_moment)
-      else
-        call table%add_column(trim(names(1)), "N", col_component)
-      end if
-      do c = 2, size(names) - 2
-        call table%add_column(trim(names(c)), "W", col_other)
+        if (self%deck%components) then
+          call table%add_column(trim(names(c + 1)), "N", col_component)
+          call table%add_column(trim(names(c + 2)), "N", col_component)
+          c = c + 2
+        end if
+        if (assur_pair_prismatic(self%deck, ip)) then
+          call table%add_column(trim(names(c + 1)), "N", col_component)
+          call table%add_column(trim(names(c + 2)), "N*m", col_moment)
+          c = c + 2
+        end if
       end do
-      call table%add_column(trim(names(size(names) - 1)), "", col_flag)
-      call table%add_column(trim(names(size(names))), "", col_ratio)
+      if (self%deck%mech%drive_dyad == 0) then
+        call table%add_column("M1", "N*m", col_moment)
+      else
+        call table%add_column("F_drive", "N", col_component)
+        call table%add_column("stroke", "m", col_length)
+        call table%add_column("stroke_v", "m/s", col_other)
+        call table%add_column("stroke_a", "m/s^2", col_other)
+      end if
+      if (self%deck%friction_on) then
+        names = friction_csv_columns(self%deck)
+        if (self%deck%mech%drive_dyad == 0) then
+          call table%add_column(trim(names(1)), "N*m", col_moment)
+        else
+          call table%add_column(trim(names(1)), "N", col_component)
+        end if
+        do c = 2, size(names) - 2
+          call table%add_column(trim(names(c)), "W", col_other)
+        end do
+        call table%add_column(trim(names(size(names) - 1)), "", col_flag)
+        call table%add_column(trim(names(size(names))), "", col_ratio)
+      end if
+      table%input_column = 1
+      do k = 1, size(self%deck%f_mag, 1)
+        call table%note_load(self%deck%f_mag(k, :))
+      end do
+      do k = 1, size(self%deck%m_mag, 1)
+        call table%note_load(self%deck%m_mag(k, :))
+      end do
+      if (len_trim(self%deck%title) > 0) table%subtitle = trim(self%deck%title)
+      call echo_deck(self%deck, table)
     end if
-    table%input_column = 1
     nc = size(table%columns)
     call table%allocate_rows(size(steps))
     !$omp parallel do schedule(static)
@@ -255,18 +266,13 @@ contains
     else
       call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "F_drive")
     end if
-    do k = 1, size(self%deck%f_mag, 1)
-      call table%note_load(self%deck%f_mag(k, :))
-    end do
-    do k = 1, size(self%deck%m_mag, 1)
-      call table%note_load(self%deck%m_mag(k, :))
-    end do
-    if (len_trim(self%deck%title) > 0) table%subtitle = trim(self%deck%title)
-    call echo_deck(self%deck, table)
     if (self%deck%friction_on) then
       table%residual_label = "MAX EQUILIBRIUM RESIDUAL WITH FRICTION LOADS"
       table%mismatch_label = "MAX "//table%driver//" MISMATCH, POWER BALANCE WITH FRICTION"
-      call friction_summary(self%deck, steps, fsteps, table)
+      ! the works over the run are summed block by block; the summary comes with the last
+      if (table%first_block()) table%carry = [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp]
+      call add_friction_work(self%deck, fsteps, first, table%carry)
+      if (last == self%deck%n) call friction_summary(self%deck, table%carry(1), table%carry(2), table)
     end if
   end subroutine solve
 
@@ -341,26 +347,50 @@ contains
     real(wp), intent(out) :: a_driver
     !> Work lost to friction, J.
     real(wp), intent(out) :: a_loss
-    real(wp) :: dphi
-    integer :: k
-    a_driver = 0.0_wp
-    a_loss = 0.0_wp
-    do k = 1, size(steps) - 1
-      dphi = abs(deck%phi1_deg(k + 1) - deck%phi1_deg(k)) * deg_to_rad
-      a_driver = a_driver + 0.5_wp * dphi * (fsteps(k)%driver_rate * fsteps(k)%motion_sign + &
-                                             fsteps(k + 1)%driver_rate * fsteps(k + 1)%motion_sign)
-      a_loss = a_loss + 0.5_wp * dphi * (fsteps(k)%rate_total + fsteps(k + 1)%rate_total)
-    end do
+    real(wp) :: sums(4)
+    sums = 0.0_wp
+    call add_friction_work(deck, fsteps(1:size(steps)), 1, sums)
+    a_driver = sums(1)
+    a_loss = sums(2)
   end subroutine friction_work
 
-  !> The summary block of a run with friction: works, cycle efficiency and what it means.
-  pure subroutine friction_summary(deck, steps, fsteps, table)
+  !> Add steps step1 .. step1 + size(fsteps) - 1 (the next block of the run) to the sums
+  !> of friction_work: sums = [work of the driver, work lost, the last step's driver power
+  !> per radian, its loss per radian] (zeros before the first block).
+  pure subroutine add_friction_work(deck, fsteps, step1, sums)
+    !> Validated deck.
     type(assur_deck_t), intent(in) :: deck
-    type(assur_step_t), intent(in) :: steps(:)
+    !> Friction results of the block's steps.
     type(friction_step_t), intent(in) :: fsteps(:)
+    !> Step number of fsteps(1).
+    integer, intent(in) :: step1
+    !> The running sums (see above).
+    real(wp), intent(inout) :: sums(4)
+    real(wp) :: dphi, drive, loss
+    integer :: i, k
+    do i = 1, size(fsteps)
+      k = step1 - 1 + i
+      drive = fsteps(i)%driver_rate * fsteps(i)%motion_sign
+      loss = fsteps(i)%rate_total
+      if (k > 1) then
+        dphi = abs(deck%phi1_deg(k) - deck%phi1_deg(k - 1)) * deg_to_rad
+        sums(1) = sums(1) + 0.5_wp * dphi * (sums(3) + drive)
+        sums(2) = sums(2) + 0.5_wp * dphi * (sums(4) + loss)
+      end if
+      sums(3) = drive
+      sums(4) = loss
+    end do
+  end subroutine add_friction_work
+
+  !> The summary block of a run with friction: works, cycle efficiency and what it means.
+  pure subroutine friction_summary(deck, a_driver, a_loss, table)
+    type(assur_deck_t), intent(in) :: deck
+    !> Work of the driver over the run, J.
+    real(wp), intent(in) :: a_driver
+    !> Work lost to friction over the run, J.
+    real(wp), intent(in) :: a_loss
     type(step_table_t), intent(inout) :: table
-    real(wp) :: a_driver, a_loss, span, eta
-    call friction_work(deck, steps, fsteps, a_driver, a_loss)
+    real(wp) :: span, eta
     span = abs(deck%phi1_deg(size(deck%phi1_deg)) - deck%phi1_deg(1))
     table%summary_heading = "WORK AND EFFICIENCY WITH FRICTION"
     call table%summary_real("RUN SPAN", span, "deg")
@@ -397,7 +427,7 @@ contains
   end function assur_pair_prismatic
 
   !> All steps of a validated deck; a geometry error names the step and the input angle.
-  subroutine assur_solve(path, deck, steps, error, fsteps)
+  subroutine assur_solve(path, deck, steps, error, fsteps, first, last)
     !> Deck file (for messages).
     character(*), intent(in) :: path
     !> Validated deck.
@@ -408,27 +438,33 @@ contains
     type(error_t), allocatable, intent(out) :: error
     !> Friction results per step (deck%friction_on; else none).
     type(friction_step_t), allocatable, intent(out), optional :: fsteps(:)
+    !> Steps to compute (default: all); steps(1) is step `first`.
+    integer, intent(in), optional :: first, last
     type(error_t), allocatable :: step_error
     type(friction_step_t) :: fs
     character(len=32) :: angle_text
-    integer :: k, first_bad
+    integer :: k, k1, k2, first_bad
     logical :: keep_friction
-    allocate (steps(deck%n))
+    k1 = 1
+    k2 = deck%n
+    if (present(first)) k1 = first
+    if (present(last)) k2 = last
+    allocate (steps(k2 - k1 + 1))
     keep_friction = present(fsteps)
-    if (keep_friction) allocate (fsteps(merge(deck%n, 0, deck%friction_on)))
+    if (keep_friction) allocate (fsteps(merge(k2 - k1 + 1, 0, deck%friction_on)))
     ! steps in parallel with OpenMP threads; the error reported is the first step's in step order
     ! (that step is solved again alone for its message)
-    first_bad = deck%n + 1
+    first_bad = k2 + 1
     !$omp parallel do schedule(dynamic, 64) private(fs, step_error) reduction(min:first_bad)
-    do k = 1, deck%n
-      call one_step(k, steps(k), fs, step_error)
-      if (deck%friction_on .and. keep_friction) fsteps(k) = fs
+    do k = k1, k2
+      call one_step(k, steps(k - k1 + 1), fs, step_error)
+      if (deck%friction_on .and. keep_friction) fsteps(k - k1 + 1) = fs
       if (allocated(step_error)) first_bad = min(first_bad, k)
     end do
     !$omp end parallel do
-    if (first_bad <= deck%n) then
+    if (first_bad <= k2) then
       k = first_bad
-      call one_step(k, steps(k), fs, step_error)
+      call one_step(k, steps(k - k1 + 1), fs, step_error)
       write (angle_text, '(g0.10)') deck%phi1_deg(k)
       call fatal_error(error, exit_geometry, path//": &assur: step "//int_str(k)//" (phi1 = "// &
         trim(adjustl(angle_text))//" deg): "//step_error%message)
@@ -830,33 +866,35 @@ contains
       driver = "M1"
       zero = "M1_0"
     end if
-    call out%put("")
-    if (lang == lang_ru) then
-      call out%put(" ТРЕНИЕ: ПОТЕРИ МОЩНОСТИ В ПАРАХ, "//driver// &
-                   " БЕЗ ТРЕНИЯ, МГНОВЕННЫЙ КПД")
-      watt = "Вт"
-      unit = "Н"
-      if (deck%mech%drive_dyad == 0) unit = "Н*м"
-      deg = "град"
-    else
-      call out%put(" FRICTION: POWER LOSS IN THE PAIRS, "//driver//" WITHOUT FRICTION, INSTANTANEOUS EFFICIENCY")
-      watt = "W"
-      unit = "N"
-      if (deck%mech%drive_dyad == 0) unit = "N*m"
-      deg = "deg"
-    end if
     first = table%column_index(zero)
     last = table%column_index("eta")
-    line1 = adjustr(pad9("PHI1"))
-    line2 = right(deg, phi_width)
-    do c = first + 1, last - 3
-      line1 = line1//right("P_"//table%columns(c)%name(8:), field_width)
-      line2 = line2//right(watt, field_width)
-    end do
-    line1 = line1//right("P_LOSS", field_width)//right(upper(zero), field_width)//right("ETA", field_width)
-    line2 = line2//right(watt, field_width)//right(unit, field_width)
-    call out%put(line1)
-    call out%put(trim(line2))
+    if (table%first_block()) then
+      call out%put("")
+      if (lang == lang_ru) then
+        call out%put(" ТРЕНИЕ: ПОТЕРИ МОЩНОСТИ В ПАРАХ, "//driver// &
+                     " БЕЗ ТРЕНИЯ, МГНОВЕННЫЙ КПД")
+        watt = "Вт"
+        unit = "Н"
+        if (deck%mech%drive_dyad == 0) unit = "Н*м"
+        deg = "град"
+      else
+        call out%put(" FRICTION: POWER LOSS IN THE PAIRS, "//driver//" WITHOUT FRICTION, INSTANTANEOUS EFFICIENCY")
+        watt = "W"
+        unit = "N"
+        if (deck%mech%drive_dyad == 0) unit = "N*m"
+        deg = "deg"
+      end if
+      line1 = adjustr(pad9("PHI1"))
+      line2 = right(deg, phi_width)
+      do c = first + 1, last - 3
+        line1 = line1//right("P_"//table%columns(c)%name(8:), field_width)
+        line2 = line2//right(watt, field_width)
+      end do
+      line1 = line1//right("P_LOSS", field_width)//right(upper(zero), field_width)//right("ETA", field_width)
+      line2 = line2//right(watt, field_width)//right(unit, field_width)
+      call out%put(line1)
+      call out%put(trim(line2))
+    end if
     do k = 1, table%row_count()
       associate (v => table%rows(:, k))
         line1 = fixed_field(v(1), phi_width, 2)
@@ -874,11 +912,12 @@ contains
   !> for prismatic pairs two more lines with the normal force and the reaction moment. With a
   !> linear actuator as driver the last column holds F_drive, stroke, stroke speed and
   !> acceleration (lines 1-4) instead of M1.
-  pure subroutine write_results(self, table, lang, out)
+  pure subroutine write_results(self, table, lang, out, later)
     class(assur_mechanism_t), intent(in) :: self
     type(step_table_t), intent(in) :: table
     integer, intent(in) :: lang
     type(text_buffer_t), intent(inout) :: out
+    type(text_buffer_t), intent(inout) :: later
     character(len=:), allocatable :: line1, line2, line3, line4
     character(len=field_width) :: name
     character(len=len(self%deck%pair_name)) :: full_name
@@ -895,76 +934,78 @@ contains
     do ip = 1, np
       along(ip) = table%column_index(trim(self%deck%pair_name(ip))//"_along")
     end do
-    if (link_axes) then
-      if (lang == lang_ru) then
-        call out%put(" "//link_axes_heading_ru)
-      else
-        call out%put(" "//link_axes_heading)
-      end if
-    end if
     any_p = .false.
     do ip = 1, np
       any_p = any_p .or. assur_pair_prismatic(self%deck, ip)
     end do
-    if (lang == lang_ru) then
-      deg = "град"
-      newton = "Н"
-      newton_m = "Н*м"
-      metre = "м"
-    else
-      deg = "deg"
-      newton = "N"
-      newton_m = "N*m"
-      metre = "m"
-    end if
-    line1 = adjustr(pad9("PHI1"))
-    line2 = repeat(" ", phi_width)
-    line3 = repeat(" ", phi_width)
-    line4 = repeat(" ", phi_width)
-    do ip = 1, np
-      full_name = self%deck%pair_name(ip)
-      name = full_name(1:field_width)
-      prismatic = assur_pair_prismatic(self%deck, ip)
+    if (table%first_block()) then
       if (link_axes) then
-        line1 = line1//right(fit(trim(name)//"_ALONG"), field_width)
-        line2 = line2//right(fit(trim(name)//"_ACROSS"), field_width)
+        if (lang == lang_ru) then
+          call out%put(" "//link_axes_heading_ru)
+        else
+          call out%put(" "//link_axes_heading)
+        end if
+      end if
+      if (lang == lang_ru) then
+        deg = "град"
+        newton = "Н"
+        newton_m = "Н*м"
+        metre = "м"
       else
-        line1 = line1//adjustr(name)
-        line2 = line2//right(trim(name)//"G", field_width)
+        deg = "deg"
+        newton = "N"
+        newton_m = "N*m"
+        metre = "m"
       end if
-      line3 = line3//p_label(name, "N", prismatic)
-      line4 = line4//p_label(name, "M", prismatic)
-    end do
-    if (drive) then
-      ! the actuator's force, stroke, stroke speed and acceleration in the last column
-      call out%put(trim(line1//adjustr(pad12("F_DRIVE"))))
-      call out%put(trim(line2//adjustr(pad12("STROKE"))))
-      call out%put(line3//adjustr(pad12("STROKE_V")))
-      call out%put(line4//adjustr(pad12("STROKE_A")))
-    else
-      call out%put(trim(line1//adjustr(pad12("M1"))))
-      call out%put(trim(line2))
-      if (any_p) then
-        call out%put(line3)
-        call out%put(line4)
-      end if
-    end if
-    line1 = right(deg, phi_width)
-    line2 = repeat(" ", phi_width)
-    do ip = 1, np
-      line1 = line1//right(newton, field_width)
-      if (link_axes) then
-        line2 = line2//right(newton, field_width)
+      line1 = adjustr(pad9("PHI1"))
+      line2 = repeat(" ", phi_width)
+      line3 = repeat(" ", phi_width)
+      line4 = repeat(" ", phi_width)
+      do ip = 1, np
+        full_name = self%deck%pair_name(ip)
+        name = full_name(1:field_width)
+        prismatic = assur_pair_prismatic(self%deck, ip)
+        if (link_axes) then
+          line1 = line1//right(fit(trim(name)//"_ALONG"), field_width)
+          line2 = line2//right(fit(trim(name)//"_ACROSS"), field_width)
+        else
+          line1 = line1//adjustr(name)
+          line2 = line2//right(trim(name)//"G", field_width)
+        end if
+        line3 = line3//p_label(name, "N", prismatic)
+        line4 = line4//p_label(name, "M", prismatic)
+      end do
+      if (drive) then
+        ! the actuator's force, stroke, stroke speed and acceleration in the last column
+        call out%put(trim(line1//adjustr(pad12("F_DRIVE"))))
+        call out%put(trim(line2//adjustr(pad12("STROKE"))))
+        call out%put(line3//adjustr(pad12("STROKE_V")))
+        call out%put(line4//adjustr(pad12("STROKE_A")))
       else
-        line2 = line2//right(deg, field_width)
+        call out%put(trim(line1//adjustr(pad12("M1"))))
+        call out%put(trim(line2))
+        if (any_p) then
+          call out%put(line3)
+          call out%put(line4)
+        end if
       end if
-    end do
-    if (drive) then
-      call out%put(trim(line1//right(newton, field_width)))
-      call out%put(trim(line2//right(metre, field_width)))
-    else
-      call out%put(trim(line1//right(newton_m, field_width)))
-      call out%put(trim(line2))
+      line1 = right(deg, phi_width)
+      line2 = repeat(" ", phi_width)
+      do ip = 1, np
+        line1 = line1//right(newton, field_width)
+        if (link_axes) then
+          line2 = line2//right(newton, field_width)
+        else
+          line2 = line2//right(deg, field_width)
+        end if
+      end do
+      if (drive) then
+        call out%put(trim(line1//right(newton, field_width)))
+        call out%put(trim(line2//right(metre, field_width)))
+      else
+        call out%put(trim(line1//right(newton_m, field_width)))
+        call out%put(trim(line2))
+      end if
     end if
     do k = 1, table%row_count()
       associate (v => table%rows(:, k))
@@ -1010,7 +1051,8 @@ contains
         end if
       end associate
     end do
-    if (self%deck%friction_on) call write_friction_results(self%deck, table, lang, out)
+    ! the friction block follows the last row (in `later`)
+    if (self%deck%friction_on) call write_friction_results(self%deck, table, lang, later)
   end subroutine write_results
 
   !> `text` right-justified in `width` display characters.

@@ -81,16 +81,22 @@ contains
   end subroutine write_template
 
   !> All steps of a validated deck (in parallel with OpenMP threads).
-  subroutine cam_solve(deck, steps)
+  subroutine cam_solve(deck, steps, first, last)
     !> Validated deck.
     type(cam_deck_t), intent(in) :: deck
-    !> One result per cam angle.
+    !> One result per cam angle (of steps first..last).
     type(cam_step_t), allocatable, intent(out) :: steps(:)
-    integer :: k
-    allocate (steps(deck%n))
+    !> Steps to compute (default: all).
+    integer, intent(in), optional :: first, last
+    integer :: k, k1, k2
+    k1 = 1
+    k2 = deck%n
+    if (present(first)) k1 = first
+    if (present(last)) k2 = last
+    allocate (steps(k2 - k1 + 1))
     !$omp parallel do schedule(static)
-    do k = 1, deck%n
-      steps(k) = cam_step(deck%p, deck%theta_deg(k) * deg_to_rad, deck%x_b(k), deck%mu_cam, &
+    do k = k1, k2
+      steps(k - k1 + 1) = cam_step(deck%p, deck%theta_deg(k) * deg_to_rad, deck%x_b(k), deck%mu_cam, &
                           deck%f2(k), deck%vdir(k))
     end do
     !$omp end parallel do
@@ -102,48 +108,65 @@ contains
     type(step_table_t), intent(inout) :: table
     type(error_t), allocatable, intent(out) :: error
     type(cam_step_t), allocatable :: steps(:)
-    integer :: k
-    call cam_solve(self%deck, steps)
-    call table%set_columns(cam_csv_columns, column_units, column_kinds)
-    table%input_column = 1
+    integer :: k, first, last
+    call table%block_range(self%deck%n, first, last)
+    call cam_solve(self%deck, steps, first, last)
+    if (table%first_block()) then
+      call table%set_columns(cam_csv_columns, column_units, column_kinds)
+      table%input_column = 1
+      table%residual_label = "MAX EQUILIBRIUM RESIDUAL OF THE FOLLOWER, ALL STEPS"
+      table%mismatch_label = "MAX N MISMATCH, CLOSED FORM VS 3X3 LINEAR SOLVE"
+      call echo_deck(self%deck, table)
+    end if
     call table%allocate_rows(size(steps))
     !$omp parallel do schedule(static)
     do k = 1, size(steps)
-      table%rows(1:size(cam_csv_columns), k) = cam_csv_values(self%deck, steps(k), k)
+      table%rows(1:size(cam_csv_columns), k) = cam_csv_values(self%deck, steps(k), first - 1 + k)
     end do
     !$omp end parallel do
     if (table%kinematics_wanted) then
       do k = 1, size(steps)
-        call put_kinematics(table, k, self%deck, steps(k))
+        call put_kinematics(table, k, self%deck, steps(k), first - 1 + k)
       end do
     end if
     call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "N")
-    table%residual_label = "MAX EQUILIBRIUM RESIDUAL OF THE FOLLOWER, ALL STEPS"
-    table%mismatch_label = "MAX N MISMATCH, CLOSED FORM VS 3X3 LINEAR SOLVE"
-    call echo_deck(self%deck, table)
-    call flag_warnings(self%deck, steps, table)
+    call flag_warnings(self%deck, steps, first, table)
   end subroutine solve
 
   !> Warnings for the steps whose forces the table shows as 0: a jammed (self-locking)
   !> follower and a lost contact, each with the number of such steps and the first one.
-  pure subroutine flag_warnings(deck, steps, table)
+  !> The counts and first steps are carried from block to block (table%carry: jammed count,
+  !> first jammed step, lost count, first lost step); the warnings come with the last block.
+  pure subroutine flag_warnings(deck, steps, step1, table)
     !> Validated deck.
     type(cam_deck_t), intent(in) :: deck
-    !> The computed steps.
+    !> The computed steps of this block.
     type(cam_step_t), intent(in) :: steps(:)
+    !> Step number of steps(1).
+    integer, intent(in) :: step1
     !> Where the warnings go.
     type(step_table_t), intent(inout) :: table
     integer :: first
-    if (any(steps%jammed)) then
-      first = findloc(steps%jammed, .true., dim=1)
+    if (table%first_block()) table%carry = [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp]
+    if (any(steps%jammed) .and. table%carry(1) == 0.0_wp) then
+      table%carry(2) = real(step1 - 1 + findloc(steps%jammed, .true., dim=1), wp)
+    end if
+    if (any(steps%lost) .and. table%carry(3) == 0.0_wp) then
+      table%carry(4) = real(step1 - 1 + findloc(steps%lost, .true., dim=1), wp)
+    end if
+    table%carry(1) = table%carry(1) + real(count(steps%jammed), wp)
+    table%carry(3) = table%carry(3) + real(count(steps%lost), wp)
+    if (step1 - 1 + size(steps) < deck%n) return
+    if (table%carry(1) > 0.0_wp) then
+      first = nint(table%carry(2))
       call table%add_warning("the follower jams (self-locking: no finite contact force moves it) at "// &
-        steps_text(count(steps%jammed))//", the first at step "//int_str(first)//" (phi = "// &
+        steps_text(nint(table%carry(1)))//", the first at step "//int_str(first)//" (phi = "// &
         number_str(deck%phi_deg(first))//" deg); the table shows 0 forces there")
     end if
-    if (any(steps%lost)) then
-      first = findloc(steps%lost, .true., dim=1)
+    if (table%carry(3) > 0.0_wp) then
+      first = nint(table%carry(4))
       call table%add_warning("contact is lost (F2 <= 0 does not hold the follower on the cam) at "// &
-        steps_text(count(steps%lost))//", the first at step "//int_str(first)//" (phi = "// &
+        steps_text(nint(table%carry(3)))//", the first at step "//int_str(first)//" (phi = "// &
         number_str(deck%phi_deg(first))//" deg); the table shows 0 forces there")
     end if
   contains
@@ -186,7 +209,7 @@ contains
   !> to D): the contact point B and the guide ends C, D, and the components of the forces
   !> F21, F23C, F23D. The deck gives no displacement law of the follower, so its position,
   !> velocity and acceleration are not computed.
-  pure subroutine put_kinematics(table, k, deck, s)
+  pure subroutine put_kinematics(table, k, deck, s, step)
     !> The step table (columns appended on first use).
     type(step_table_t), intent(inout) :: table
     !> Row.
@@ -195,9 +218,11 @@ contains
     type(cam_deck_t), intent(in) :: deck
     !> The computed step.
     type(cam_step_t), intent(in) :: s
+    !> Its step number (index of the deck's per-step values).
+    integer, intent(in) :: step
     real(wp) :: f(2, 3), floor
     integer :: j
-    call table%put_point(k, "B", [deck%x_b(k), -deck%p%a])
+    call table%put_point(k, "B", [deck%x_b(step), -deck%p%a])
     call table%put_point(k, "C", [0.0_wp, 0.0_wp])
     call table%put_point(k, "D", [0.0_wp, deck%p%l])
     f = reshape([s%f21, s%f23c, s%f23d], [2, 3])
@@ -258,18 +283,21 @@ contains
 
   !> RESULTS: one line per cam angle; a jammed or lost-contact step shows its flag instead
   !> of the forces.
-  pure subroutine write_results(self, table, lang, out)
+  pure subroutine write_results(self, table, lang, out, later)
     class(cam_mechanism_t), intent(in) :: self
     type(step_table_t), intent(in) :: table
     integer, intent(in) :: lang
     type(text_buffer_t), intent(inout) :: out
+    type(text_buffer_t), intent(inout) :: later
     integer :: k, i
     character(len=:), allocatable :: line
-    call out%put(trim(header_lines(1)))
-    if (lang == lang_ru) then
-      call out%put(units_ru)
-    else
-      call out%put(trim(header_lines(2)))
+    if (table%first_block()) then
+      call out%put(trim(header_lines(1)))
+      if (lang == lang_ru) then
+        call out%put(units_ru)
+      else
+        call out%put(trim(header_lines(2)))
+      end if
     end if
     do k = 1, table%row_count()
       associate (v => table%rows(:, k))

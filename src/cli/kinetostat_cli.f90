@@ -2,7 +2,7 @@
 !> (stdout or an atomically replaced file), and the only place where an error becomes a
 !> `kinetostat: error: ...` line on stderr and an exit code.
 module kinetostat_cli
-  use, intrinsic :: iso_fortran_env, only: error_unit
+  use, intrinsic :: iso_fortran_env, only: error_unit, int64
   use kinetostat_kinds, only: wp, version_string
   use kinetostat_error, only: error_t, fatal_error, exit_success, exit_usage, exit_input, exit_warning
   use kinetostat_deck, only: deck_source_t, load_deck, read_group_name
@@ -14,6 +14,7 @@ module kinetostat_cli
   use kinetostat_step_table, only: step_table_t
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_output, only: write_output_file, write_output_stdout
+  use kinetostat_spool, only: spool_t
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_labels, only: lang_from_name
   use kinetostat_run, only: run_options_t, run_mechanism, format_from_name, format_names, format_svg
@@ -123,6 +124,18 @@ module kinetostat_cli
     type(diff_options_t) :: diff_options
   end type cli_args_t
 
+
+  !> The progress line of a single run: whether to show it (stderr a terminal, no --quiet).
+  logical :: progress_wanted = .false.
+  !> The deck it names.
+  character(len=:), allocatable :: progress_deck
+  !> When the run started, clock ticks.
+  integer(int64) :: progress_start = 0
+  !> Clock ticks per second.
+  integer(int64) :: progress_rate = 0
+  !> Clock ticks before the line shows.
+  integer(int64) :: progress_delay = 0
+
 contains
 
   !> Run the program for the current command line; returns the exit code.
@@ -133,10 +146,12 @@ contains
     type(error_t), allocatable :: error
     type(step_table_t) :: table
     type(text_buffer_t) :: out
+    type(spool_t) :: spool
     integer :: i, warnings
-    logical :: ran, progress
+    logical :: ran, committed
 
     ran = .false.
+    committed = .false.
     warnings = 0
     call serial_unless_asked()
     call parse_args(args, error)
@@ -159,14 +174,19 @@ contains
       else if (args%sweep) then
         call sweep_deck(args, out, warnings, error)
       else
-        progress = stderr_is_terminal() .and. .not. args%quiet
-        if (progress) call progress_line("kinetostat: "//args%deck//": running ...")
-        call run_deck(args%deck, args%options, table, out, error)
-        if (progress) call progress_line("")
+        progress_wanted = stderr_is_terminal() .and. .not. args%quiet
+        progress_deck = args%deck
+        call system_clock(progress_start, progress_rate)
+        progress_delay = progress_delay_seconds() * progress_rate
+        if (allocated(args%out_file)) call spool%aim(args%out_file)
+        call run_deck(args%deck, args%options, table, out, error, spool)
+        call progress_line("")
         ran = .not. allocated(error)
+        if (ran) call spool%commit(out, error)
+        committed = .true.
       end if
     end if
-    if (.not. allocated(error)) then
+    if (.not. allocated(error) .and. .not. committed) then
       if (allocated(args%out_file)) then
         call write_output_file(args%out_file, out, error)
       else
@@ -196,13 +216,15 @@ contains
     !$ if (status /= 0 .or. length == 0) call omp_set_num_threads(1)
   end subroutine serial_unless_asked
 
-  !> Read the deck's first group, create that mechanism, run it into `out`.
-  subroutine run_deck(path, options, table, out, error)
+  !> Read the deck's first group, create that mechanism, run it into `out` and `spool`.
+  subroutine run_deck(path, options, table, out, error, spool)
     character(*), intent(in) :: path
     type(run_options_t), intent(in) :: options
     type(step_table_t), intent(out) :: table
     type(text_buffer_t), intent(inout) :: out
     type(error_t), allocatable, intent(out) :: error
+    !> Where the output goes beyond the memory bound.
+    type(spool_t), intent(inout) :: spool
     character(len=:), allocatable :: group
     class(mechanism_t), allocatable :: mech
     type(deck_source_t) :: source
@@ -218,11 +240,11 @@ contains
       return
     end if
     if (.not. allocated(options%overrides)) then
-      call run_mechanism(mech, group, source, options, table, out, error)
+      call run_mechanism(mech, group, source, options, table, out, error, spool, show_progress)
       return
     end if
     call apply_overrides(source, options%overrides, patched)
-    call run_mechanism(mech, group, patched, options, table, out, error)
+    call run_mechanism(mech, group, patched, options, table, out, error, spool, show_progress)
     if (allocated(error)) then
       if (error%code == exit_input) call blame_override(source, group, options%overrides, error)
     end if
@@ -250,13 +272,40 @@ contains
     end if
   end subroutine parse_part
 
+  !> After a block of a run: from one second after the start on, the progress line
+  !> "kinetostat: DECK: step K of N" (stderr a terminal and no --quiet only).
+  subroutine show_progress(done, total)
+    !> Rows done.
+    integer, intent(in) :: done
+    !> Rows of the run.
+    integer, intent(in) :: total
+    integer(int64) :: now
+    if (.not. progress_wanted .or. progress_rate <= 0) return
+    call system_clock(now)
+    if (now - progress_start < progress_delay) return
+    call progress_line("kinetostat: "//progress_deck//": step "//int_str(done)//" of "//int_str(total))
+  end subroutine show_progress
+
+  !> Seconds a run goes before it shows the progress line: 1, or KINETOSTAT_PROGRESS_DELAY
+  !> (a whole number >= 0; the tests use 0).
+  integer function progress_delay_seconds() result(seconds)
+    character(len=16) :: text
+    integer :: length, status, ios
+    seconds = 1
+    call get_environment_variable("KINETOSTAT_PROGRESS_DELAY", text, length, status)
+    if (status /= 0 .or. length == 0) return
+    read (text, *, iostat=ios) length
+    if (ios == 0 .and. length >= 0) seconds = length
+  end function progress_delay_seconds
+
   !> The progress line on stderr (a terminal): `text` written over the previous one from
-  !> the start of the line; "" erases it.
+  !> the start of the line; "" erases it (nothing when none was written).
   subroutine progress_line(text)
     character(*), intent(in) :: text
     !> Characters erased by "" (the longest line written so far).
     integer, save :: written = 0
     if (len(text) == 0) then
+      if (written == 0) return
       write (error_unit, '(a)', advance='no') achar(13)//repeat(" ", written)//achar(13)
       written = 0
     else

@@ -239,11 +239,12 @@ contains
   end function vector_line
 
   !> RESULTS: a block per stage (the mesh's named values, force vectors, torques).
-  pure subroutine write_results(self, table, lang, out)
+  pure subroutine write_results(self, table, lang, out, later)
     class(gears_mechanism_t), intent(in) :: self
     type(step_table_t), intent(in) :: table
     integer, intent(in) :: lang
     type(text_buffer_t), intent(inout) :: out
+    type(text_buffer_t), intent(inout) :: later
     integer :: i, kind
     do i = 1, table%row_count()
       associate (v => table%rows(:, i))

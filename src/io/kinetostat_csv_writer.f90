@@ -41,7 +41,7 @@ contains
       if (len(line) > 0) line = line//","
       line = line//table%columns(c)%name
     end do
-    call out%put(line)
+    if (table%first_block()) call out%put(line)
     allocate (columns(0))
     do c = 1, size(table%columns)
       if (shown(c)) columns = [columns, c]

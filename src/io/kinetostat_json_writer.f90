@@ -40,55 +40,58 @@ contains
       shown(c) = table%shows(c, with_kinematics, with_link_axes)
       if (shown(c)) last = c
     end do
-    call out%put("{")
-    call out%put('  "program": '//json_string(version_string)//",")
-    call out%put('  "mechanism": '//json_string(table%mechanism)//",")
-    call out%put('  "title": '//json_string(title)//",")
-    call out%put('  "deck": '//json_string(table%deck)//",")
-    if (allocated(table%subtitle)) call out%put('  "deck_title": '//json_string(table%subtitle)//",")
-    call out%put('  "row_name": '//json_string(table%row_name)//",")
-    if (allocated(table%overrides)) then
-      line = '  "overrides": ['
-      do i = 1, size(table%overrides)
-        if (i > 1) line = line//", "
-        line = line//json_string(trim(table%overrides(i)))
-      end do
-      call out%put(line//"],")
-    end if
-    call out%put('  "input": [')
-    do i = 1, table%echo_count
-      call out%append("    ")
-      call put_echo_object(out, table%echo(i))
-      if (i < table%echo_count) call out%append(",")
-      call out%end_line()
-    end do
-    call out%put("  ],")
-    call out%put('  "columns": [')
-    do c = 1, size(table%columns)
-      if (.not. shown(c)) cycle
-      line = '    {"name": '//json_string(table%columns(c)%name)//', "unit": '// &
-        json_string(table%columns(c)%unit)//', "kind": '// &
-        json_string(trim(column_kind_names(table%columns(c)%kind)))//', "csv": '// &
-        merge("true ", "false", table%columns(c)%csv)
-      line = trim(line)
-      if (table%columns(c)%kinematic) then
-        line = line//', "kinematic": true'
-        if (table%columns(c)%kind == col_component) line = line//', "frame_angle": '// &
-          full_number(table%columns(c)%frame_angle)
+    if (table%first_block()) then
+      call out%put("{")
+      call out%put('  "program": '//json_string(version_string)//",")
+      call out%put('  "mechanism": '//json_string(table%mechanism)//",")
+      call out%put('  "title": '//json_string(title)//",")
+      call out%put('  "deck": '//json_string(table%deck)//",")
+      if (allocated(table%subtitle)) call out%put('  "deck_title": '//json_string(table%subtitle)//",")
+      call out%put('  "row_name": '//json_string(table%row_name)//",")
+      if (allocated(table%overrides)) then
+        line = '  "overrides": ['
+        do i = 1, size(table%overrides)
+          if (i > 1) line = line//", "
+          line = line//json_string(trim(table%overrides(i)))
+        end do
+        call out%put(line//"],")
       end if
-      if (table%columns(c)%link_axes) line = line//', "frame": "link", "link": '// &
-        json_string(table%columns(c)%frame_link)
-      line = line//"}"
-      if (c < last) line = line//","
-      call out%put(line)
-    end do
-    call out%put("  ],")
-    call out%put('  "rows": [')
+      call out%put('  "input": [')
+      do i = 1, table%echo_count
+        call out%append("    ")
+        call put_echo_object(out, table%echo(i))
+        if (i < table%echo_count) call out%append(",")
+        call out%end_line()
+      end do
+      call out%put("  ],")
+      call out%put('  "columns": [')
+      do c = 1, size(table%columns)
+        if (.not. shown(c)) cycle
+        line = '    {"name": '//json_string(table%columns(c)%name)//', "unit": '// &
+          json_string(table%columns(c)%unit)//', "kind": '// &
+          json_string(trim(column_kind_names(table%columns(c)%kind)))//', "csv": '// &
+          merge("true ", "false", table%columns(c)%csv)
+        line = trim(line)
+        if (table%columns(c)%kinematic) then
+          line = line//', "kinematic": true'
+          if (table%columns(c)%kind == col_component) line = line//', "frame_angle": '// &
+            full_number(table%columns(c)%frame_angle)
+        end if
+        if (table%columns(c)%link_axes) line = line//', "frame": "link", "link": '// &
+          json_string(table%columns(c)%frame_link)
+        line = line//"}"
+        if (c < last) line = line//","
+        call out%put(line)
+      end do
+      call out%put("  ],")
+      call out%put('  "rows": [')
+    end if
     allocate (whole(size(table%columns)))
     do c = 1, size(table%columns)
       whole(c) = table%is_whole(c)
     end do
     call put_row_blocks(table%row_count(), size(table%columns) * (cell_room + 2) + 8, put_rows, out)
+    if (.not. table%last_block()) return
     call out%put("  ],")
     if (allocated(table%summary)) then
       call out%put('  "summary": [')
@@ -134,7 +137,7 @@ contains
           first = .false.
           call put_cell(part, table%rows(c, k), whole(c))
         end do
-        if (k < table%row_count()) then
+        if (table%row_offset + k < max(table%total_rows, table%row_count())) then
           call part%append("],")
         else
           call part%append("]")

@@ -53,22 +53,27 @@ module kinetostat_mechanism
       import :: mechanism_t, step_table_t, error_t
       implicit none
       class(mechanism_t), intent(in) :: self
-      !> The results (mechanism and deck already set by the caller).
+      !> The results (mechanism and deck already set by the caller). A mechanism with steps
+      !> computes the block table%block_range gives (all steps when the pipeline asks for no
+      !> block); the first block also sets the columns, the echo and the loads.
       type(step_table_t), intent(inout) :: table
       !> Geometry error naming the step.
       type(error_t), allocatable, intent(out) :: error
     end subroutine solve_i
 
-    pure subroutine results_i(self, table, lang, out)
+    pure subroutine results_i(self, table, lang, out, later)
       import :: mechanism_t, step_table_t, text_buffer_t
       implicit none
       class(mechanism_t), intent(in) :: self
-      !> Finite results.
+      !> Finite results: the rows of one block of the run (headings only with the first).
       type(step_table_t), intent(in) :: table
       !> lang_en or lang_ru.
       integer, intent(in) :: lang
-      !> Where the lines go.
+      !> Where the lines of the RESULTS section go.
       type(text_buffer_t), intent(inout) :: out
+      !> Where a second section over the same rows goes (printed after the last row of the
+      !> first; most layouts have none).
+      type(text_buffer_t), intent(inout) :: later
     end subroutine results_i
 
     pure subroutine template_i(self, out)

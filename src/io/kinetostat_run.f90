@@ -20,10 +20,12 @@ module kinetostat_run
   use kinetostat_error, only: exit_usage
   use kinetostat_labels, only: lang_en
   use kinetostat_override, only: override_t, mark_overrides
-  use kinetostat_summary, only: coarse_step_warning, summary_header, summary_row
+  use kinetostat_summary, only: coarse_step_warning, summary_header, summary_row, tally_rows
+  use kinetostat_table_writer, only: write_table_head, write_table_tail
+  use kinetostat_spool, only: spool_t
   implicit none
   private
-  public :: run_options_t, run_mechanism, guard_finite
+  public :: run_options_t, run_mechanism, guard_finite, progress_i, block_rows
   public :: format_table, format_csv, format_json, format_svg, format_summary, format_from_name, format_names
 
   !> Output format: the legacy fixed-format table.
@@ -38,6 +40,21 @@ module kinetostat_run
   integer, parameter :: format_summary = 5
   !> Names of the formats, for messages and --help.
   character(*), parameter :: format_names = "table, csv, json, svg, summary"
+
+  !> Steps solved and written at a time: a run holds the rows of one block (and at most the
+  !> spool's bound of output text), whatever its number of steps.
+  integer, parameter :: block_rows = 8192
+
+  abstract interface
+    !> Told after every block of a run: rows done so far of the run's total.
+    subroutine progress_i(done, total)
+      implicit none
+      !> Rows done.
+      integer, intent(in) :: done
+      !> Rows of the run.
+      integer, intent(in) :: total
+    end subroutine progress_i
+  end interface
 
   !> How to run and what to write.
   type :: run_options_t
@@ -56,6 +73,8 @@ module kinetostat_run
     character(len=:), allocatable :: pairs
     !> SVG: draw the mechanism at this row (0: the sheet of hodographs and diagrams).
     integer :: at_step = 0
+    !> Rows per block (0: block_rows); the output does not depend on it (tests vary it).
+    integer :: block_rows = 0
   end type run_options_t
 
 contains
@@ -80,9 +99,12 @@ contains
     end select
   end function format_from_name
 
-  !> Run one deck through a mechanism; on success `out` holds the whole output and `table`
-  !> the results (self-check figures, warning) for the caller's remarks.
-  subroutine run_mechanism(mech, group, source, options, table, out, error)
+  !> Run one deck through a mechanism, in blocks of rows: each block is solved, checked,
+  !> tallied (summary and self-check figures) and written after the previous one; with a
+  !> `spool`, text beyond its bound goes to its temporary file as the run goes. On success
+  !> `out` holds the output (all of it, or what the spool did not take: the caller commits
+  !> the spool) and `table` the run's figures (self-check, warnings) with its last block.
+  subroutine run_mechanism(mech, group, source, options, table, out, error, spool, progress)
     !> The mechanism named by the deck's first group.
     class(mechanism_t), intent(inout) :: mech
     !> Namelist group name (mechanism kind).
@@ -97,7 +119,13 @@ contains
     type(text_buffer_t), intent(inout) :: out
     !> Input, geometry or overflow error.
     type(error_t), allocatable, intent(out) :: error
-    character(len=:), allocatable :: warning
+    !> Where text beyond the memory bound goes (discarded on error).
+    type(spool_t), intent(inout), optional :: spool
+    !> Told after every block.
+    procedure(progress_i), optional :: progress
+    type(text_buffer_t) :: later
+    type(spool_t) :: later_spool
+    integer :: first, rows
 
     call mech%read_deck(source, error)
     if (allocated(error)) return
@@ -106,47 +134,99 @@ contains
     table%row_name = "step"
     table%driver = "M1"
     table%kinematics_wanted = options%kinematics .or. options%link_frame .or. options%format == format_svg
-    call mech%solve(table, error)
-    if (allocated(error)) return
-    call table%finish_columns()
-    call guard_finite(table, error)
-    if (allocated(error)) return
-    if (options%link_frame) then
-      if (.not. any(table%columns%link_axes)) then
-        call fatal_error(error, exit_usage, "--frame link: only the generic engine (&assur) reports reactions "// &
-          "in link axes; "//table%deck//" is &"//group)
-        return
+    rows = block_rows
+    if (options%block_rows > 0) rows = options%block_rows
+    first = 1
+    do
+      ! the SVG sheet and drawing need every row at once
+      if (options%format /= format_svg) then
+        table%block_first = first
+        table%block_last = first + rows - 1
       end if
-      table%link_frame = .true.
-    end if
-    if (allocated(options%overrides)) then
-      if (size(options%overrides) > 0) call mark_overrides(table, options%overrides)
-    end if
-    call coarse_step_warning(table, warning)
-    if (allocated(warning)) call table%add_warning(warning)
-    select case (options%format)
-    case (format_csv)
-      call write_csv(table, out, options%kinematics, options%link_frame)
-    case (format_summary)
-      if (table%row_count() == 0) then
-        call fatal_error(error, exit_input, table%deck//": &"//table%mechanism//": no rows to summarize")
-        return
+      call run_block(error)
+      if (allocated(error)) exit
+      if (present(progress)) call progress(table%row_offset + table%row_count(), table%total_rows)
+      if (table%last_block()) exit
+      first = table%row_offset + table%row_count() + 1
+    end do
+    if (allocated(error) .and. present(spool)) call spool%discard()
+    if (allocated(error)) call later_spool%discard()
+  contains
+    !> Solve, check, tally and write the next block.
+    subroutine run_block(error)
+      type(error_t), allocatable, intent(out) :: error
+      character(len=:), allocatable :: warning
+      call mech%solve(table, error)
+      if (allocated(error)) return
+      ! a mechanism without blocks (gears) gives all its rows at once
+      if (table%total_rows == 0) table%total_rows = table%row_count()
+      call table%finish_columns()
+      call guard_rows(table, error)
+      if (allocated(error)) return
+      if (table%first_block()) then
+        call start_output(error)
+        if (allocated(error)) return
       end if
-      call out%put(summary_header(table, options%kinematics))
-      call out%put(summary_row(table, options%kinematics))
-    case (format_json)
-      call write_json(mech%title(options%lang), table, out, options%kinematics, options%link_frame)
-    case (format_svg)
-      if (options%at_step > 0) then
-        call write_at_step(mech, table, options, out, error)
-      else if (allocated(options%pairs)) then
-        call write_svg(mech%title(options%lang), table, options%pairs, out, error)
-      else
-        call write_svg(mech%title(options%lang), table, "", out, error)
+      call tally_rows(table)
+      if (table%last_block()) then
+        call guard_inputs(table, error)
+        if (allocated(error)) return
+        call coarse_step_warning(table, warning)
+        if (allocated(warning)) call table%add_warning(warning)
       end if
-    case default
-      call write_table(mech, table, options%lang, out)
-    end select
+      select case (options%format)
+      case (format_csv)
+        call write_csv(table, out, options%kinematics, options%link_frame)
+      case (format_summary)
+        if (table%last_block()) then
+          call out%put(summary_header(table, options%kinematics))
+          call out%put(summary_row(table, options%kinematics))
+        end if
+      case (format_json)
+        call write_json(mech%title(options%lang), table, out, options%kinematics, options%link_frame)
+      case (format_svg)
+        if (options%at_step > 0) then
+          call write_at_step(mech, table, options, out, error)
+        else if (allocated(options%pairs)) then
+          call write_svg(mech%title(options%lang), table, options%pairs, out, error)
+        else
+          call write_svg(mech%title(options%lang), table, "", out, error)
+        end if
+        if (allocated(error)) return
+      case default
+        call mech%write_results(table, options%lang, out, later)
+        if (table%last_block()) then
+          if (present(spool)) then
+            call spool%absorb(out, later_spool, later, error)
+            if (allocated(error)) return
+          else if (later%length > 0) then
+            call out%append(later%data(1:later%length))
+          end if
+          call write_table_tail(table, options%lang, out)
+        end if
+      end select
+      if (.not. present(spool)) return
+      call spool%drain(out, error)
+      if (allocated(error)) return
+      call later_spool%drain(later, error)
+    end subroutine run_block
+
+    !> Before the first rows: --frame link's check, the --set marks, the table's head.
+    subroutine start_output(error)
+      type(error_t), allocatable, intent(out) :: error
+      if (options%link_frame) then
+        if (.not. any(table%columns%link_axes)) then
+          call fatal_error(error, exit_usage, "--frame link: only the generic engine (&assur) reports reactions "// &
+            "in link axes; "//table%deck//" is &"//group)
+          return
+        end if
+        table%link_frame = .true.
+      end if
+      if (allocated(options%overrides)) then
+        if (size(options%overrides) > 0) call mark_overrides(table, options%overrides)
+      end if
+      if (options%format == format_table) call write_table_head(mech, table, options%lang, out)
+    end subroutine start_output
   end subroutine run_mechanism
 
   !> The mechanism at row options%at_step, drawn from its sketch.
@@ -181,11 +261,22 @@ contains
   !> Nothing that is not finite may reach an output: a non-finite result is a geometry
   !> error (exit 3) naming the step, its input angle and the quantity.
   pure subroutine guard_finite(table, error)
+    !> The results (all rows).
+    type(step_table_t), intent(in) :: table
+    !> The error, if any value is not finite.
+    type(error_t), allocatable, intent(out) :: error
+    call guard_rows(table, error)
+    if (allocated(error)) return
+    call guard_inputs(table, error)
+  end subroutine guard_finite
+
+  !> guard_finite for the rows now in the table (a block of the run).
+  pure subroutine guard_rows(table, error)
     !> The results.
     type(step_table_t), intent(in) :: table
     !> The error, if any value is not finite.
     type(error_t), allocatable, intent(out) :: error
-    integer :: k, c, i
+    integer :: k, c
     do k = 1, table%row_count()
       do c = 1, size(table%columns)
         if (ieee_is_finite(table%rows(c, k))) cycle
@@ -195,6 +286,15 @@ contains
         return
       end do
     end do
+  end subroutine guard_rows
+
+  !> guard_finite for the derived input values of the echo and the self-check figures.
+  pure subroutine guard_inputs(table, error)
+    !> The results.
+    type(step_table_t), intent(in) :: table
+    !> The error, if any value is not finite.
+    type(error_t), allocatable, intent(out) :: error
+    integer :: i
     do i = 1, table%echo_count
       if (table%echo(i)%kind /= echo_real_kind .and. table%echo(i)%kind /= echo_array_kind) cycle
       if (all(ieee_is_finite(table%echo(i)%values))) cycle
@@ -209,7 +309,7 @@ contains
           "representable range)")
       end if
     end if
-  end subroutine guard_finite
+  end subroutine guard_inputs
 
   !> "step k (phi1 = x deg)" or "stage k".
   pure function row_text(table, k) result(text)
@@ -219,7 +319,7 @@ contains
     character(len=32) :: buf
     real(wp) :: x
     integer :: n
-    text = table%row_name//" "//int_str(k)
+    text = table%row_name//" "//int_str(table%row_offset + k)
     if (table%input_column > 0) then
       x = table%rows(table%input_column, k)
       if (ieee_is_finite(x)) then

@@ -3,10 +3,11 @@
 !> stage), the INPUT DATA echo records, the self-check figures and the run's remarks.
 !> Every mechanism fills one; every writer (CSV, legacy table, JSON) reads one.
 module kinetostat_step_table
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
   use kinetostat_kinds, only: wp, rad_to_deg
   implicit none
   private
-  public :: step_table_t, column_t, echo_record_t, remark_t
+  public :: step_table_t, column_t, echo_record_t, remark_t, column_tally_t, edge_point_t
   public :: col_input_angle, col_force, col_force_angle, col_component, col_moment, col_length, &
     col_flag, col_count, col_ratio, col_other, column_kind_names
   public :: echo_real_kind, echo_int_kind, echo_logical_kind, echo_array_kind, echo_text_kind, &
@@ -101,6 +102,47 @@ module kinetostat_step_table
     logical :: overridden = .false.
   end type echo_record_t
 
+  !> What a run has shown so far of one column (its rows are gone once written: a run is
+  !> solved and written in blocks of rows). Kept by kinetostat_summary's tally_rows.
+  type :: column_tally_t
+    !> Largest value so far (a later row replaces it only when larger by more than the
+    !> tie allowance: equal positions such as 0 and 360 deg keep the first).
+    real(wp) :: max = 0.0_wp
+    !> Smallest value so far (the first one on a tie).
+    real(wp) :: min = 0.0_wp
+    !> Row (1..) of `max`.
+    integer :: max_row = 0
+    !> Row of `min`.
+    integer :: min_row = 0
+    !> Input coordinate at `max_row` (unit of the input column; 0 without one).
+    real(wp) :: max_at = 0.0_wp
+    !> Input coordinate at `min_row`.
+    real(wp) :: min_at = 0.0_wp
+    !> Largest value, first row on an exact tie (the coarse-step warning's peak).
+    real(wp) :: peak = 0.0_wp
+    !> Row of `peak`.
+    integer :: peak_row = 0
+    !> Input coordinate at `peak_row`.
+    real(wp) :: peak_at = 0.0_wp
+    !> Largest magnitude so far.
+    real(wp) :: largest = 0.0_wp
+    !> Sum of the values (in row order).
+    real(wp) :: total = 0.0_wp
+    !> Sum of (v(k) + v(k-1)) * (x(k) - x(k-1)) over the rows (twice the trapezoid integral
+    !> over the input coordinate x).
+    real(wp) :: area2 = 0.0_wp
+    !> Value in the last row seen.
+    real(wp) :: last = 0.0_wp
+  end type column_tally_t
+
+  !> The input coordinate at a row next to a load edge (for the coarse-step warning's text).
+  type :: edge_point_t
+    !> Row.
+    integer :: row = 0
+    !> Input coordinate there.
+    real(wp) :: at = 0.0_wp
+  end type edge_point_t
+
   !> All results of a run.
   type :: step_table_t
     !> Mechanism kind: the namelist group name ("pr3207").
@@ -161,7 +203,37 @@ module kinetostat_step_table
     !> The run reports the pair forces in link axes (--frame link; the legacy table prints the
     !> link-axes columns instead of magnitudes and angles).
     logical :: link_frame = .false.
+    !> Block asked of `solve` by the run pipeline: first and last step (0: every step at once).
+    integer :: block_first = 0
+    !> Last step of the block asked (0: every step).
+    integer :: block_last = 0
+    !> `rows` holds the run's rows row_offset+1 .. row_offset+row_count().
+    integer :: row_offset = 0
+    !> Number of rows of the whole run (0 until a mechanism's solve says so).
+    integer :: total_rows = 0
+    !> Values a mechanism keeps from one block to the next (counts, sums, the last step's
+    !> values); its own layout, not allocated before the first block.
+    real(wp), allocatable :: carry(:)
+    !> Rows of the run summarized so far (kinetostat_summary's tally_rows).
+    integer :: tallied_rows = 0
+    !> Per column: what the rows so far showed (extremes, sums).
+    type(column_tally_t), allocatable :: tally(:)
+    !> Input coordinate of the first and of the last row tallied.
+    real(wp) :: first_at = 0.0_wp
+    !> Input coordinate of the last row tallied.
+    real(wp) :: last_at = 0.0_wp
+    !> Largest input step between two rows so far (unit of the input column).
+    real(wp) :: largest_step = 0.0_wp
+    !> Twice the driver's work so far (trapezoid sum over its coordinate), J.
+    real(wp) :: work2 = 0.0_wp
+    !> The driver's coordinate in the last row tallied (m, or rad).
+    real(wp) :: last_coordinate = 0.0_wp
+    !> Input coordinates at the rows next to a load edge (for the coarse-step warning).
+    type(edge_point_t), allocatable :: edge_points(:)
   contains
+    procedure :: block_range
+    procedure :: first_block
+    procedure :: last_block
     procedure :: add_column
     procedure :: put_point
     procedure :: put_link
@@ -191,6 +263,40 @@ module kinetostat_step_table
   end type step_table_t
 
 contains
+
+  !> The steps `solve` computes now, of a run of `n` steps: the block the run pipeline asks
+  !> for (block_first .. block_last, cut at n), or all of them when it asks for none. Sets
+  !> total_rows and row_offset; the rows of the block are then rows 1 .. last - first + 1.
+  pure subroutine block_range(self, n, first, last)
+    class(step_table_t), intent(inout) :: self
+    !> Number of steps of the whole run.
+    integer, intent(in) :: n
+    !> First step to compute now.
+    integer, intent(out) :: first
+    !> Last step to compute now.
+    integer, intent(out) :: last
+    first = 1
+    last = n
+    if (self%block_last > 0) then
+      first = max(1, self%block_first)
+      last = min(n, self%block_last)
+    end if
+    self%total_rows = n
+    self%row_offset = first - 1
+  end subroutine block_range
+
+  !> Whether the rows now in the table are the first of the run (the columns, the INPUT
+  !> DATA echo and the deck's loads are set then, once).
+  pure logical function first_block(self)
+    class(step_table_t), intent(in) :: self
+    first_block = self%row_offset == 0
+  end function first_block
+
+  !> Whether the rows now in the table end the run (the footers are written then).
+  pure logical function last_block(self)
+    class(step_table_t), intent(in) :: self
+    last_block = self%row_offset + self%row_count() >= self%total_rows
+  end function last_block
 
   !> Append one column.
   pure subroutine add_column(self, name, unit, kind, csv)
@@ -451,8 +557,13 @@ contains
     real(wp), intent(in) :: max_mismatch
     !> Name of the driving quantity ("M1", "F2", ...).
     character(*), intent(in) :: driver
-    self%max_residual = max_residual
-    self%max_mismatch = max_mismatch
+    ! a later block of the run keeps the largest over all blocks (a NaN stays, for the guard)
+    if (self%row_offset == 0 .or. max_residual > self%max_residual .or. ieee_is_nan(max_residual)) then
+      self%max_residual = max_residual
+    end if
+    if (self%row_offset == 0 .or. max_mismatch > self%max_mismatch .or. ieee_is_nan(max_mismatch)) then
+      self%max_mismatch = max_mismatch
+    end if
     self%driver = driver
   end subroutine set_selfcheck
 

@@ -5,11 +5,12 @@
 module kinetostat_summary
   use kinetostat_kinds, only: wp, deg_to_rad
   use kinetostat_text, only: int_str, lower
-  use kinetostat_step_table, only: step_table_t, col_force, col_force_angle, col_moment
+  use kinetostat_step_table, only: step_table_t, col_force, col_force_angle, col_moment, column_tally_t, &
+    edge_point_t
   use kinetostat_format, only: cell_number
   implicit none
   private
-  public :: column_stats_t, column_stats, summarized, drive_work, coarse_step_warning
+  public :: column_stats_t, column_stats, summarized, drive_work, coarse_step_warning, tally_rows
   public :: summary_header, summary_row, coarse_step_limit
 
   !> Values closer than this, relative to the column's largest magnitude, are a tie.
@@ -31,6 +32,10 @@ module kinetostat_summary
     integer :: max_row = 0
     !> Row of the smallest value (the first one on a tie).
     integer :: min_row = 0
+    !> Input coordinate at max_row (0 without an input column).
+    real(wp) :: max_at = 0.0_wp
+    !> Input coordinate at min_row.
+    real(wp) :: min_at = 0.0_wp
   end type column_stats_t
 
 contains
@@ -49,7 +54,115 @@ contains
       table%columns(c)%kind /= col_force_angle .and. (kinematics .or. .not. table%columns(c)%kinematic)
   end function summarized
 
-  !> Extremes and mean of column `c` (the table has at least one row). The mean is the
+  !> Add the rows now in the table (the run's rows row_offset+1 .., in order; the run
+  !> pipeline calls this for every block) to the run's tallies: per column its extremes
+  !> and the row and input coordinate of each, its sum and trapezoid sum; the largest
+  !> input step; the driver's work; the input coordinate next to the load edges. The sums
+  !> run in row order, so they are the same whatever the blocks.
+  pure subroutine tally_rows(table)
+    !> The results (the tallies are updated).
+    type(step_table_t), intent(inout) :: table
+    integer :: k, c, row, d, nc
+    real(wp) :: x, v, tie, coordinate
+    logical :: work_known, work_in_rad
+    nc = size(table%columns)
+    if (table%tallied_rows == 0) then
+      if (allocated(table%tally)) deallocate (table%tally)
+      allocate (table%tally(nc))
+      if (allocated(table%edge_points)) deallocate (table%edge_points)
+      allocate (table%edge_points(0))
+    end if
+    d = 0
+    if (allocated(table%driver)) d = table%column_index(table%driver)
+    call work_kind(table, d, work_known, work_in_rad)
+    do k = 1, table%row_count()
+      row = table%row_offset + k
+      x = 0.0_wp
+      if (table%input_column > 0) x = table%rows(table%input_column, k)
+      coordinate = 0.0_wp
+      if (work_known) then
+        if (work_in_rad) then
+          coordinate = x * deg_to_rad
+        else
+          coordinate = table%rows(table%work_column, k)
+        end if
+      end if
+      if (row == 1) then
+        table%first_at = x
+        table%largest_step = 0.0_wp
+        table%work2 = 0.0_wp
+      else
+        table%largest_step = max(table%largest_step, abs(x - table%last_at))
+        if (work_known) table%work2 = table%work2 + (table%rows(d, k) + table%tally(d)%last) * &
+                                      (coordinate - table%last_coordinate)
+      end if
+      do c = 1, nc
+        v = table%rows(c, k)
+        associate (t => table%tally(c))
+          t%largest = max(t%largest, abs(v))
+          if (row == 1) then
+            t = column_tally_t(max=v, min=v, max_row=1, min_row=1, max_at=x, min_at=x, peak=v, peak_row=1, &
+                               peak_at=x, largest=abs(v), total=v, area2=0.0_wp, last=v)
+            cycle
+          end if
+          tie = tie_rel * t%largest
+          if (v > t%max + tie) then
+            t%max = v
+            t%max_row = row
+            t%max_at = x
+          end if
+          if (v < t%min - tie) then
+            t%min = v
+            t%min_row = row
+            t%min_at = x
+          end if
+          if (v > t%peak) then
+            t%peak = v
+            t%peak_row = row
+            t%peak_at = x
+          end if
+          t%total = t%total + v
+          t%area2 = t%area2 + (v + t%last) * (x - table%last_at)
+          t%last = v
+        end associate
+      end do
+      if (near_load_edge(row)) table%edge_points = [table%edge_points, edge_point_t(row, x)]
+      table%last_at = x
+      table%last_coordinate = coordinate
+      table%tallied_rows = row
+    end do
+  contains
+    !> Whether a load switches between this row and the one before or after it.
+    pure logical function near_load_edge(r)
+      integer, intent(in) :: r
+      near_load_edge = .false.
+      if (.not. allocated(table%load_changes)) return
+      if (size(table%load_changes) /= table%total_rows .or. r > size(table%load_changes)) return
+      if (r >= 2) near_load_edge = table%load_changes(r)
+      if (r < size(table%load_changes)) near_load_edge = near_load_edge .or. table%load_changes(r + 1)
+    end function near_load_edge
+  end subroutine tally_rows
+
+  !> Whether the driver's work is defined (a driving moment over the input angle in deg, or a
+  !> driving force over its coordinate column) and whether its coordinate is the input angle.
+  pure subroutine work_kind(table, d, known, in_rad)
+    type(step_table_t), intent(in) :: table
+    !> The driver's column (0: none).
+    integer, intent(in) :: d
+    logical, intent(out) :: known, in_rad
+    known = .false.
+    in_rad = .false.
+    if (d == 0) return
+    if (table%work_column > 0) then
+      known = .true.
+    else if (table%columns(d)%kind == col_moment .and. table%input_column > 0) then
+      if (table%columns(table%input_column)%unit /= "deg") return
+      known = .true.
+      in_rad = .true.
+    end if
+  end subroutine work_kind
+
+  !> Extremes and mean of column `c` over the rows tallied (at least one). The mean is the
   !> integral over the input angle divided by the angle covered (trapezoid rule; over a
   !> full turn tabulated at 0 and 360 deg this is the cycle average), or the arithmetic
   !> mean of the rows when there is no input angle or it does not move.
@@ -59,34 +172,23 @@ contains
     !> Column index.
     integer, intent(in) :: c
     type(column_stats_t) :: s
-    real(wp) :: span, tie
+    real(wp) :: span
     integer :: n
-    n = table%row_count()
-    associate (v => table%rows(c, :))
-      tie = tie_rel * maxval(abs(v))
-      s%max_row = findloc(v >= maxval(v) - tie, .true., dim=1)
-      s%min_row = findloc(v <= minval(v) + tie, .true., dim=1)
-      s%max = v(s%max_row)
-      s%min = v(s%min_row)
-      s%mean = sum(v) / real(n, wp)
+    n = table%tallied_rows
+    associate (t => table%tally(c))
+      s%max = t%max
+      s%min = t%min
+      s%max_row = t%max_row
+      s%min_row = t%min_row
+      s%max_at = t%max_at
+      s%min_at = t%min_at
+      s%mean = t%total / real(n, wp)
       if (table%input_column > 0 .and. n > 1) then
-        associate (x => table%rows(table%input_column, :))
-          span = x(n) - x(1)
-          if (span /= 0.0_wp) s%mean = trapezoid(v, x) / span
-        end associate
+        span = table%last_at - table%first_at
+        if (span /= 0.0_wp) s%mean = 0.5_wp * t%area2 / span
       end if
     end associate
   end function column_stats
-
-  !> Integral of y over x by the trapezoid rule (x in the table's order).
-  pure real(wp) function trapezoid(y, x)
-    real(wp), intent(in) :: y(:), x(:)
-    integer :: n
-    n = size(y)
-    trapezoid = 0.0_wp
-    if (n < 2) return
-    trapezoid = 0.5_wp * sum((y(2:) + y(:n - 1)) * (x(2:) - x(:n - 1)))
-  end function trapezoid
 
   !> Work of the driver over the run, J: the integral of the driving moment over the input
   !> angle in rad (M1 dphi1), or of the driving force over its coordinate column (F2 ds),
@@ -101,19 +203,13 @@ contains
     !> Whether the work is defined for this mechanism.
     logical, intent(out) :: known
     integer :: d
+    logical :: in_rad
     work = 0.0_wp
     known = .false.
-    if (.not. allocated(table%driver) .or. table%row_count() == 0) return
+    if (.not. allocated(table%driver) .or. table%tallied_rows == 0) return
     d = table%column_index(table%driver)
-    if (d == 0) return
-    if (table%work_column > 0) then
-      work = trapezoid(table%rows(d, :), table%rows(table%work_column, :))
-      known = .true.
-    else if (table%columns(d)%kind == col_moment .and. table%input_column > 0) then
-      if (table%columns(table%input_column)%unit /= "deg") return
-      work = trapezoid(table%rows(d, :), table%rows(table%input_column, :) * deg_to_rad)
-      known = .true.
-    end if
+    call work_kind(table, d, known, in_rad)
+    if (known) work = 0.5_wp * table%work2
   end subroutine drive_work
 
   !> A warning when the input step exceeds `coarse_step_limit` and the largest value of a
@@ -127,34 +223,32 @@ contains
     real(wp) :: step
     integer :: n, c, k, edge
     character(len=:), allocatable :: names, first_text
-    n = table%row_count()
+    n = table%tallied_rows
     if (table%input_column == 0 .or. n < 2 .or. .not. allocated(table%load_changes)) return
     if (size(table%load_changes) /= n) return
-    associate (x => table%rows(table%input_column, :))
-      step = maxval(abs(x(2:) - x(:n - 1)))
-      if (.not. step > coarse_step_limit * (1.0_wp + 1.0e-9_wp)) return
-      names = ""
-      do c = 1, size(table%columns)
-        if (.not. table%columns(c)%csv .or. table%columns(c)%kind /= col_force) cycle
-        k = maxloc(table%rows(c, :), dim=1)
-        if (.not. table%rows(c, k) > 0.0_wp) cycle
-        edge = near_edge(k)
-        if (edge == 0) cycle
-        if (len(names) == 0) then
-          first_text = " (the peak of "//table%columns(c)%name//" = "//brief(table%rows(c, k))// &
-            " "//table%columns(c)%unit//" at "//input_text(k)//", the load switches between "// &
-            input_text(edge - 1)//" and "//input_text(edge)//")"
-          names = table%columns(c)%name
-        else
-          names = names//", "//table%columns(c)%name
-        end if
-      end do
-      if (len(names) == 0) return
-      warning = "the input step "//brief(step)//" deg is coarser than "// &
-        brief(coarse_step_limit)//" deg and a load switches on or off within one step of the peak of "// &
-        names//first_text//": the true peak may be missed; rerun with a finer step (e.g. --set "// &
-        step_variable()//"=0.5) to check"
-    end associate
+    step = table%largest_step
+    if (.not. step > coarse_step_limit * (1.0_wp + 1.0e-9_wp)) return
+    names = ""
+    do c = 1, size(table%columns)
+      if (.not. table%columns(c)%csv .or. table%columns(c)%kind /= col_force) cycle
+      k = table%tally(c)%peak_row
+      if (.not. table%tally(c)%peak > 0.0_wp) cycle
+      edge = near_edge(k)
+      if (edge == 0) cycle
+      if (len(names) == 0) then
+        first_text = " (the peak of "//table%columns(c)%name//" = "//brief(table%tally(c)%peak)// &
+          " "//table%columns(c)%unit//" at "//input_text(k)//", the load switches between "// &
+          input_text(edge - 1)//" and "//input_text(edge)//")"
+        names = table%columns(c)%name
+      else
+        names = names//", "//table%columns(c)%name
+      end if
+    end do
+    if (len(names) == 0) return
+    warning = "the input step "//brief(step)//" deg is coarser than "// &
+      brief(coarse_step_limit)//" deg and a load switches on or off within one step of the peak of "// &
+      names//first_text//": the true peak may be missed; rerun with a finer step (e.g. --set "// &
+      step_variable()//"=0.5) to check"
   contains
     !> Row e (2..n, or 1 for the wrap from the last row) with load_changes(e) whose interval
     !> [e-1, e] touches row k; 0 when none.
@@ -167,12 +261,17 @@ contains
         if (table%load_changes(k + 1)) near_edge = k + 1
       end if
     end function near_edge
-    !> "phi1 = 90 deg" of row j.
+    !> "phi1 = 90 deg" of row j (a row next to a load edge: its input coordinate was kept).
     pure function input_text(j) result(t)
       integer, intent(in) :: j
       character(len=:), allocatable :: t
-      t = table%columns(table%input_column)%name//" = "// &
-        brief(table%rows(table%input_column, j))//" "//table%columns(table%input_column)%unit
+      real(wp) :: x
+      integer :: i
+      x = 0.0_wp
+      do i = 1, size(table%edge_points)
+        if (table%edge_points(i)%row == j) x = table%edge_points(i)%at
+      end do
+      t = table%columns(table%input_column)%name//" = "//brief(x)//" "//table%columns(table%input_column)%unit
     end function input_text
     !> The deck variable of the step: dphi, or dphi3 for an input phi3...
     pure function step_variable() result(t)
@@ -244,7 +343,7 @@ contains
   !> Summary CSV row of a run (the columns of `summary_header`): override values as given,
   !> numbers at full precision (as the CSV), "_at" the input angle (or the row number).
   pure function summary_row(table, kinematics) result(line)
-    !> The results of one run (at least one row).
+    !> The results of one run (at least one row tallied).
     type(step_table_t), intent(in) :: table
     !> Whether the kinematics columns are summarized too (--kinematics).
     logical, intent(in) :: kinematics
@@ -259,25 +358,26 @@ contains
         line = line//csv_text(override_part(table%overrides(i), 2))//","
       end do
     end if
-    n = table%row_count()
+    n = table%tallied_rows
     line = line//int_str(n)
-    if (table%input_column > 0) line = line//","//cell_number(table%rows(table%input_column, 1), .false.)// &
-      ","//cell_number(table%rows(table%input_column, n), .false.)
+    if (table%input_column > 0) line = line//","//cell_number(table%first_at, .false.)// &
+      ","//cell_number(table%last_at, .false.)
     do c = 1, size(table%columns)
       if (.not. summarized(table, c, kinematics)) cycle
       s = column_stats(table, c)
       whole = table%is_whole(c)
-      line = line//","//cell_number(s%max, whole)//","//at_text(s%max_row)//","//cell_number(s%min, whole)// &
-        ","//at_text(s%min_row)//","//cell_number(s%mean, .false.)
+      line = line//","//cell_number(s%max, whole)//","//at_text(s%max_row, s%max_at)//","// &
+        cell_number(s%min, whole)//","//at_text(s%min_row, s%min_at)//","//cell_number(s%mean, .false.)
     end do
     call drive_work(table, work, known)
     if (known) line = line//","//cell_number(work, .false.)
   contains
-    pure function at_text(k) result(t)
+    pure function at_text(k, x) result(t)
       integer, intent(in) :: k
+      real(wp), intent(in) :: x
       character(len=:), allocatable :: t
       if (table%input_column > 0) then
-        t = cell_number(table%rows(table%input_column, k), .false.)
+        t = cell_number(x, .false.)
       else
         t = int_str(k)
       end if

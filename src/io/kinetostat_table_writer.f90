@@ -15,7 +15,7 @@ module kinetostat_table_writer
   use kinetostat_text_buffer, only: text_buffer_t
   implicit none
   private
-  public :: write_table, put_heading, selfcheck_verdict, put_two_line_step, value_line
+  public :: write_table, write_table_head, write_table_tail, put_heading, selfcheck_verdict, put_two_line_step, value_line
 
   !> Display width of the name part of an INPUT DATA line ("   NAME ... =" puts "=" in column 20).
   integer, parameter :: echo_name_width = 16
@@ -28,11 +28,28 @@ module kinetostat_table_writer
 
 contains
 
-  !> The whole legacy table of a run.
+  !> The whole legacy table of a run whose rows are all in `table` (one block).
   pure subroutine write_table(mech, table, lang, out)
     !> The mechanism (its title and RESULTS layout).
     class(mechanism_t), intent(in) :: mech
-    !> Finite results.
+    !> Finite results, tallied (kinetostat_summary's tally_rows).
+    type(step_table_t), intent(in) :: table
+    !> lang_en or lang_ru.
+    integer, intent(in) :: lang
+    !> Where the lines go.
+    type(text_buffer_t), intent(inout) :: out
+    type(text_buffer_t) :: later
+    call write_table_head(mech, table, lang, out)
+    call mech%write_results(table, lang, out, later)
+    if (later%length > 0) call out%append(later%data(1:later%length))
+    call write_table_tail(table, lang, out)
+  end subroutine write_table
+
+  !> The legacy table's lines before the rows: title, deck, INPUT DATA, the RESULTS heading.
+  pure subroutine write_table_head(mech, table, lang, out)
+    !> The mechanism (its title).
+    class(mechanism_t), intent(in) :: mech
+    !> The results (the first block: columns and echo).
     type(step_table_t), intent(in) :: table
     !> lang_en or lang_ru.
     integer, intent(in) :: lang
@@ -52,11 +69,21 @@ contains
       call put_echo(out, table%echo(i), lang)
     end do
     call put_heading(out, label("RESULTS", lang))
-    call mech%write_results(table, lang, out)
+  end subroutine write_table_head
+
+  !> The legacy table's lines after the rows: the SUMMARY block, the mechanism's summary
+  !> records and the self-check footer.
+  pure subroutine write_table_tail(table, lang, out)
+    !> The results of the whole run (tallied, self-check figures).
+    type(step_table_t), intent(in) :: table
+    !> lang_en or lang_ru.
+    integer, intent(in) :: lang
+    !> Where the lines go.
+    type(text_buffer_t), intent(inout) :: out
     call put_run_summary(out, table, lang)
     if (allocated(table%summary)) call put_summary(out, table, lang)
     if (table%has_selfcheck) call put_footer(out, table, lang)
-  end subroutine write_table
+  end subroutine write_table_tail
 
   !> A heading: a blank line, then the text after one blank.
   pure subroutine put_heading(out, text)
@@ -175,37 +202,37 @@ contains
     real(wp) :: work
     logical :: known
     integer :: c, d, n
-    n = table%row_count()
+    n = table%tallied_rows
     if (table%input_column == 0 .or. n == 0) return
     input = upper(table%columns(table%input_column)%name)
     call put_heading(out, label("SUMMARY", lang)//" ("//input//" "// &
-      trim(adjustl(fixed_field(table%rows(table%input_column, 1), 9, 2)))//" ... "// &
-      trim(adjustl(fixed_field(table%rows(table%input_column, n), 9, 2)))//" "// &
+      trim(adjustl(fixed_field(table%first_at, 9, 2)))//" ... "// &
+      trim(adjustl(fixed_field(table%last_at, 9, 2)))//" "// &
       label(table%columns(table%input_column)%unit, lang)//")")
     do c = 1, size(table%columns)
       if (table%columns(c)%kind /= col_force .or. .not. table%columns(c)%csv) cycle
       s = column_stats(table, c)
-      call out%put(at_line(table%columns(c)%name, "MAX", s%max, c, s%max_row))
+      call out%put(at_line(table%columns(c)%name, "MAX", s%max, c, s%max_at))
     end do
     d = 0
     if (allocated(table%driver)) d = table%column_index(table%driver)
     if (d == 0) return
     s = column_stats(table, d)
-    call out%put(at_line(table%columns(d)%name, "MAX", s%max, d, s%max_row))
-    call out%put(at_line(table%columns(d)%name, "MIN", s%min, d, s%min_row))
+    call out%put(at_line(table%columns(d)%name, "MAX", s%max, d, s%max_at))
+    call out%put(at_line(table%columns(d)%name, "MIN", s%min, d, s%min_at))
     call out%put(value_line(table%columns(d)%name//" "//label("MEAN", lang), s%mean, &
       label(table%columns(d)%unit, lang)))
     call drive_work(table, work, known)
     if (known) call out%put(value_line(label("WORK OF ", lang)//table%columns(d)%name, work, label("J", lang)))
   contains
     !> "   F16 MAX         =   5.342165581E+03  N     AT PHI1 =   120.00 deg".
-    pure function at_line(name, what, x, c, k) result(line)
+    pure function at_line(name, what, x, c, at) result(line)
       character(*), intent(in) :: name, what
-      real(wp), intent(in) :: x
-      integer, intent(in) :: c, k
+      real(wp), intent(in) :: x, at
+      integer, intent(in) :: c
       character(len=:), allocatable :: line
       line = value_line(name//" "//label(what, lang), x, pad_right(label(table%columns(c)%unit, lang), 5))// &
-        label("AT ", lang)//input//" ="//fixed_field(table%rows(table%input_column, k), 9, 2)//" "// &
+        label("AT ", lang)//input//" ="//fixed_field(at, 9, 2)//" "// &
         label(table%columns(table%input_column)%unit, lang)
     end function at_line
   end subroutine put_run_summary

@@ -120,29 +120,35 @@ contains
   end subroutine sketch
 
   !> All steps of a validated deck; a geometry error (exit 3) names the step and rocker angle.
-  subroutine pr3050_solve(deck, steps, error)
+  subroutine pr3050_solve(deck, steps, error, first, last)
     !> Validated deck.
     type(pr3050_deck_t), intent(in) :: deck
-    !> One result per rocker step.
+    !> One result per rocker step (of steps first..last).
     type(pr3050_step_t), allocatable, intent(out) :: steps(:)
     !> Geometry error: "step k (phi3 = x deg): reason".
     type(error_t), allocatable, intent(out) :: error
+    !> Steps to compute (default: all).
+    integer, intent(in), optional :: first, last
     type(error_t), allocatable :: step_error
-    integer :: k, first_bad
-    allocate (steps(deck%n))
+    integer :: k, k1, k2, first_bad
+    k1 = 1
+    k2 = deck%n
+    if (present(first)) k1 = first
+    if (present(last)) k2 = last
+    allocate (steps(k2 - k1 + 1))
     ! steps in parallel with OpenMP threads; the error reported is the first step's in step order
-    first_bad = deck%n + 1
+    first_bad = k2 + 1
     !$omp parallel do schedule(static) private(step_error) reduction(min:first_bad)
-    do k = 1, deck%n
+    do k = k1, k2
       call pr3050_check_position(deck%p, deck%phi3_deg(k) * deg_to_rad, step_error)
       if (allocated(step_error)) then
         first_bad = min(first_bad, k)
       else
-        steps(k) = pr3050_step(deck%p, deck%phi3_deg(k) * deg_to_rad, deck%omega3(k), deck%eps3(k))
+        steps(k - k1 + 1) = pr3050_step(deck%p, deck%phi3_deg(k) * deg_to_rad, deck%omega3(k), deck%eps3(k))
       end if
     end do
     !$omp end parallel do
-    if (first_bad <= deck%n) then
+    if (first_bad <= k2) then
       k = first_bad
       call pr3050_check_position(deck%p, deck%phi3_deg(k) * deg_to_rad, error)
       error%message = "step "//int_str(k)//" (phi3 = "//real_str(deck%phi3_deg(k))//" deg): "//error%message
@@ -178,27 +184,33 @@ contains
     type(error_t), allocatable, intent(out) :: error
     type(pr3050_step_t), allocatable :: steps(:)
     real(wp) :: floor, n21, m21
-    integer :: k, nc
+    integer :: k, nc, first, last
     character(len=:), allocatable :: warning
-    call pr3050_solve(self%deck, steps, error)
+    call table%block_range(self%deck%n, first, last)
+    call pr3050_solve(self%deck, steps, error, first, last)
     if (allocated(error)) then
       error%message = table%deck//": &pr3050: "//error%message
       return
     end if
-    call table%set_columns(pr3050_csv_columns, column_units, column_kinds)
-    call table%add_column("PHI2", "deg", col_other, csv=.false.)
-    call table%add_column("S", "m", col_length, csv=.false.)
-    call table%add_column("SDOT", "m/s", col_other, csv=.false.)
-    call table%add_column("N21", "N", col_component, csv=.false.)
-    call table%add_column("M21", "N*m", col_moment, csv=.false.)
-    table%input_column = 1
-    table%work_column = table%column_index("S")
+    if (table%first_block()) then
+      call table%set_columns(pr3050_csv_columns, column_units, column_kinds)
+      call table%add_column("PHI2", "deg", col_other, csv=.false.)
+      call table%add_column("S", "m", col_length, csv=.false.)
+      call table%add_column("SDOT", "m/s", col_other, csv=.false.)
+      call table%add_column("N21", "N", col_component, csv=.false.)
+      call table%add_column("M21", "N*m", col_moment, csv=.false.)
+      table%input_column = 1
+      table%work_column = table%column_index("S")
+      call dead_position_between_steps(self%deck, warning)
+      if (allocated(warning)) call table%add_warning(warning)
+      call echo_deck(self%deck, table)
+    end if
     nc = size(pr3050_csv_columns)
     call table%allocate_rows(size(steps))
     !$omp parallel do schedule(static) private(floor, n21, m21)
     do k = 1, size(steps)
       associate (v => table%rows(:, k), s => steps(k))
-        v(1:nc) = pr3050_csv_values(s, phi3rel(self%deck, k))
+        v(1:nc) = pr3050_csv_values(s, phi3rel(self%deck, first - 1 + k))
         floor = noise_rel * maxval(abs(v(2:8:2)))
         n21 = s%n21
         if (abs(n21) <= floor) n21 = 0.0_wp
@@ -215,9 +227,6 @@ contains
       end do
     end if
     call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "F2")
-    call dead_position_between_steps(self%deck, warning)
-    if (allocated(warning)) call table%add_warning(warning)
-    call echo_deck(self%deck, table)
   end subroutine solve
 
   !> The kinematics columns of step `k` (frame: origin C, x from C to A): joints C, A, B and
@@ -301,19 +310,22 @@ contains
 
   !> RESULTS: one line per step (rocker angle, three reactions with angles, F2; E format as
   !> the original), then the prismatic pair 1-2 and the cylinder's motion.
-  pure subroutine write_results(self, table, lang, out)
+  pure subroutine write_results(self, table, lang, out, later)
     class(pr3050_mechanism_t), intent(in) :: self
     type(step_table_t), intent(in) :: table
     integer, intent(in) :: lang
     type(text_buffer_t), intent(inout) :: out
+    type(text_buffer_t), intent(inout) :: later
     integer :: k, i
     character(len=:), allocatable :: line
-    if (lang == lang_ru) then
-      call out%put(header_ru)
-    else
-      do k = 1, size(header_lines)
-        call out%put(trim(header_lines(k)))
-      end do
+    if (table%first_block()) then
+      if (lang == lang_ru) then
+        call out%put(header_ru)
+      else
+        do k = 1, size(header_lines)
+          call out%put(trim(header_lines(k)))
+        end do
+      end if
     end if
     do k = 1, table%row_count()
       associate (v => table%rows(:, k))
@@ -324,23 +336,26 @@ contains
         call out%put(line//exp_field(v(8), 12, 3))
       end associate
     end do
-    if (lang == lang_ru) then
-      do k = 1, size(legend_ru)
-        call out%put(trim(legend_ru(k)))
-      end do
-      call put_heading(out, trim(pair_heading_ru(1)))
-      call out%put(trim(pair_heading_ru(2)))
-      call out%put(trim(pair_header_lines(1)))
-      call out%put(pair_units_ru)
-    else
-      call put_heading(out, pair_heading)
-      do k = 1, size(pair_header_lines)
-        call out%put(trim(pair_header_lines(k)))
-      end do
+    ! the prismatic pair's block follows the last row of the first (in `later`)
+    if (table%first_block()) then
+      if (lang == lang_ru) then
+        do k = 1, size(legend_ru)
+          call later%put(trim(legend_ru(k)))
+        end do
+        call put_heading(later, trim(pair_heading_ru(1)))
+        call later%put(trim(pair_heading_ru(2)))
+        call later%put(trim(pair_header_lines(1)))
+        call later%put(pair_units_ru)
+      else
+        call put_heading(later, pair_heading)
+        do k = 1, size(pair_header_lines)
+          call later%put(trim(pair_header_lines(k)))
+        end do
+      end if
     end if
     do k = 1, table%row_count()
       associate (v => table%rows(:, k))
-        call out%put(fixed_field(v(1), 9, 2)//fixed_field(v(9), 10, 2)//fixed_field(v(10), 10, 4)// &
+        call later%put(fixed_field(v(1), 9, 2)//fixed_field(v(9), 10, 2)//fixed_field(v(10), 10, 4)// &
                      fixed_field(v(11), 10, 4)//exp_field(v(12), 12, 3)//exp_field(v(13), 12, 3))
       end associate
     end do

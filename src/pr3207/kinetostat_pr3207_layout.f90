@@ -100,16 +100,22 @@ contains
   end subroutine sketch
 
   !> All steps of a validated deck (in parallel with OpenMP threads).
-  subroutine pr3207_solve(deck, steps)
+  subroutine pr3207_solve(deck, steps, first, last)
     !> Validated deck.
     type(pr3207_deck_t), intent(in) :: deck
-    !> One result per crank step.
+    !> One result per crank step (of steps first..last).
     type(pr3207_step_t), allocatable, intent(out) :: steps(:)
-    integer :: k
-    allocate (steps(deck%n))
+    !> Steps to compute (default: all).
+    integer, intent(in), optional :: first, last
+    integer :: k, k1, k2
+    k1 = 1
+    k2 = deck%n
+    if (present(first)) k1 = first
+    if (present(last)) k2 = last
+    allocate (steps(k2 - k1 + 1))
     !$omp parallel do schedule(static)
-    do k = 1, deck%n
-      steps(k) = pr3207_step(deck%p, deck%phi1_deg(k) * deg_to_rad, deck%f5c(k))
+    do k = k1, k2
+      steps(k - k1 + 1) = pr3207_step(deck%p, deck%phi1_deg(k) * deg_to_rad, deck%f5c(k))
     end do
     !$omp end parallel do
   end subroutine pr3207_solve
@@ -120,10 +126,15 @@ contains
     type(step_table_t), intent(inout) :: table
     type(error_t), allocatable, intent(out) :: error
     type(pr3207_step_t), allocatable :: steps(:)
-    integer :: k
-    call pr3207_solve(self%deck, steps)
-    call table%set_columns(pr3207_csv_columns, column_units, column_kinds)
-    table%input_column = 1
+    integer :: k, first, last
+    call table%block_range(self%deck%n, first, last)
+    call pr3207_solve(self%deck, steps, first, last)
+    if (table%first_block()) then
+      call table%set_columns(pr3207_csv_columns, column_units, column_kinds)
+      table%input_column = 1
+      call table%note_load(self%deck%f5c)
+      call echo_deck(self%deck, table)
+    end if
     call table%allocate_rows(size(steps))
     !$omp parallel do schedule(static)
     do k = 1, size(steps)
@@ -136,8 +147,6 @@ contains
       end do
     end if
     call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "M1")
-    call table%note_load(self%deck%f5c)
-    call echo_deck(self%deck, table)
   end subroutine solve
 
   !> The row of values of one step. Forces below `noise_rel` times the step's largest
@@ -229,13 +238,15 @@ contains
 
   !> RESULTS: header, then per step the magnitudes (with the crank angle and M1) and under
   !> them the angles, fields 9 and 12 wide as in the original printout.
-  pure subroutine write_results(self, table, lang, out)
+  pure subroutine write_results(self, table, lang, out, later)
     class(pr3207_mechanism_t), intent(in) :: self
     type(step_table_t), intent(in) :: table
     integer, intent(in) :: lang
     type(text_buffer_t), intent(inout) :: out
+    type(text_buffer_t), intent(inout) :: later
     integer :: k
     do k = 1, size(header_lines)
+      if (.not. table%first_block()) exit
       if (lang == lang_ru) then
         call out%put(trim(header_lines_ru(k)))
       else

@@ -124,29 +124,35 @@ contains
 
   !> All steps of a validated deck; a step that cannot be assembled (or is a dead position)
   !> is a geometry error naming the step number and the crank angle.
-  subroutine sixbar_solve(path, deck, steps, error)
+  subroutine sixbar_solve(path, deck, steps, error, first, last)
     !> Deck file, for the message.
     character(*), intent(in) :: path
     !> Validated deck.
     type(sixbar_deck_t), intent(in) :: deck
-    !> One result per crank step.
+    !> One result per crank step (of steps first..last).
     type(sixbar_step_t), allocatable, intent(out) :: steps(:)
     !> Geometry error (exit 3).
     type(error_t), allocatable, intent(out) :: error
-    integer :: k, first_bad
-    allocate (steps(deck%n))
+    !> Steps to compute (default: all).
+    integer, intent(in), optional :: first, last
+    integer :: k, k1, k2, first_bad
+    k1 = 1
+    k2 = deck%n
+    if (present(first)) k1 = first
+    if (present(last)) k2 = last
+    allocate (steps(k2 - k1 + 1))
     ! steps in parallel with OpenMP threads; the error reported is the first step's in step order
-    first_bad = deck%n + 1
+    first_bad = k2 + 1
     !$omp parallel do schedule(static) reduction(min:first_bad)
-    do k = 1, deck%n
-      steps(k) = sixbar_step(deck%p, deck%phi1_deg(k) * deg_to_rad, deck%f5(k))
-      if (steps(k)%status /= sixbar_ok) first_bad = min(first_bad, k)
+    do k = k1, k2
+      steps(k - k1 + 1) = sixbar_step(deck%p, deck%phi1_deg(k) * deg_to_rad, deck%f5(k))
+      if (steps(k - k1 + 1)%status /= sixbar_ok) first_bad = min(first_bad, k)
     end do
     !$omp end parallel do
-    if (first_bad <= deck%n) then
+    if (first_bad <= k2) then
       k = first_bad
       call fatal_error(error, exit_geometry, path//": &sixbar: step "//int_str(k)//" (phi1 = "// &
-        real_str(deck%phi1_deg(k))//" deg): "//failure_text(deck, steps(k)))
+        real_str(deck%phi1_deg(k))//" deg): "//failure_text(deck, steps(k - k1 + 1)))
     end if
   end subroutine sixbar_solve
 
@@ -182,11 +188,16 @@ contains
     type(step_table_t), intent(inout) :: table
     type(error_t), allocatable, intent(out) :: error
     type(sixbar_step_t), allocatable :: steps(:)
-    integer :: k
-    call sixbar_solve(table%deck, self%deck, steps, error)
+    integer :: k, first, last
+    call table%block_range(self%deck%n, first, last)
+    call sixbar_solve(table%deck, self%deck, steps, error, first, last)
     if (allocated(error)) return
-    call table%set_columns(sixbar_csv_columns, column_units, column_kinds)
-    table%input_column = 1
+    if (table%first_block()) then
+      call table%set_columns(sixbar_csv_columns, column_units, column_kinds)
+      table%input_column = 1
+      call table%note_load(self%deck%f5)
+      call echo_deck(self%deck, table)
+    end if
     call table%allocate_rows(size(steps))
     !$omp parallel do schedule(static)
     do k = 1, size(steps)
@@ -199,8 +210,6 @@ contains
       end do
     end if
     call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "M1")
-    call table%note_load(self%deck%f5)
-    call echo_deck(self%deck, table)
   end subroutine solve
 
   !> The row of values of one step. Forces below `noise_rel` times the step's largest
@@ -309,17 +318,19 @@ contains
 
   !> RESULTS as appendix 2: per step the crank angle, six force magnitudes, F56 and M1, and
   !> under them the six force angles; fields 9 and 12 wide.
-  pure subroutine write_results(self, table, lang, out)
+  pure subroutine write_results(self, table, lang, out, later)
     class(sixbar_mechanism_t), intent(in) :: self
     type(step_table_t), intent(in) :: table
     integer, intent(in) :: lang
     type(text_buffer_t), intent(inout) :: out
+    type(text_buffer_t), intent(inout) :: later
     integer :: k
     if (lang == lang_ru) then
-      call write_results_ru(table, out)
+      call write_results_ru(table, out, later)
       return
     end if
     do k = 1, size(header_lines)
+      if (.not. table%first_block()) exit
       call out%put(trim(header_lines(k)))
     end do
     do k = 1, table%row_count()
@@ -330,26 +341,32 @@ contains
 
   !> RESULTS as appendix 2 prints them (--lang ru): the original's header and dotted rules,
   !> the eight columns and six angles per step, a legend with the units, then M1 apart.
-  pure subroutine write_results_ru(table, out)
+  pure subroutine write_results_ru(table, out, later)
     type(step_table_t), intent(in) :: table
     type(text_buffer_t), intent(inout) :: out
+    type(text_buffer_t), intent(inout) :: later
     integer :: k
-    do k = 1, size(header_lines_ru)
-      call out%put(trim(header_lines_ru(k)))
-    end do
-    call out%put(dotted_rule)
+    if (table%first_block()) then
+      do k = 1, size(header_lines_ru)
+        call out%put(trim(header_lines_ru(k)))
+      end do
+      call out%put(dotted_rule)
+    end if
     do k = 1, table%row_count()
       call put_two_line_step(out, table%rows(:, k), magnitude_columns, angle_columns, "")
     end do
-    call out%put(dotted_rule)
-    do k = 1, size(legend_ru)
-      call out%put(trim(legend_ru(k)))
-    end do
-    call put_heading(out, trim(moment_block_ru(1)))
-    call out%put(trim(moment_block_ru(2)))
-    call out%put(trim(moment_block_ru(3)))
+    ! the closing rule, the legend and the moment block follow the last row (in `later`)
+    if (table%first_block()) then
+      call later%put(dotted_rule)
+      do k = 1, size(legend_ru)
+        call later%put(trim(legend_ru(k)))
+      end do
+      call put_heading(later, trim(moment_block_ru(1)))
+      call later%put(trim(moment_block_ru(2)))
+      call later%put(trim(moment_block_ru(3)))
+    end if
     do k = 1, table%row_count()
-      call out%put(fixed_field(table%rows(1, k), 9, 2)//fixed_field(table%rows(15, k), 12, 3))
+      call later%put(fixed_field(table%rows(1, k), 9, 2)//fixed_field(table%rows(15, k), 12, 3))
     end do
   end subroutine write_results_ru
 

@@ -1,0 +1,217 @@
+!> A run solved and written in blocks of rows gives the output of the same run in one block,
+!> byte for byte, with the same warnings, self-check figures and errors (issue 14, item 3):
+!> every bundled deck, every text format, blocks of 1, 2, 5 and 7 rows. The spool: text beyond
+!> its bound goes to a temporary file that becomes the target only when the run succeeded.
+module test_blocks
+  use kinetostat_error, only: error_t
+  use kinetostat_deck, only: deck_source_t, load_deck, read_group_name
+  use kinetostat_mechanism, only: mechanism_t
+  use kinetostat_registry, only: create_mechanism
+  use kinetostat_step_table, only: step_table_t
+  use kinetostat_text_buffer, only: text_buffer_t
+  use kinetostat_run, only: run_options_t, run_mechanism, format_table, format_csv, format_json, format_summary
+  use kinetostat_labels, only: lang_ru
+  use kinetostat_spool, only: spool_t
+  use kinetostat_posix, only: process_id
+  use kinetostat_text, only: int_str
+  use test_harness, only: test_counts_t, check_true
+  implicit none
+  private
+  public :: run_blocks_tests
+
+  !> The bundled decks (every mechanism; warnings, friction, a run that fails at step 2).
+  character(len=*), parameter :: decks(*) = [character(len=36) :: &
+    "data/pr3207.nml", "data/pr3050.nml", "data/sixbar.nml", "data/sixbar_example.nml", &
+    "data/assur_fourbar.nml", "data/assur_fourbar_global.nml", "data/assur_pr3050.nml", &
+    "data/assur_pr3050_friction.nml", "data/assur_pr3207.nml", "data/assur_pr3207_friction.nml", &
+    "data/assur_sixbar.nml", "data/assur_sixbar_friction.nml", "data/assur_sixbar_global.nml", &
+    "data/assur_slider_crank.nml", "data/assur_toggle.nml", "data/cam_flat.nml", "data/cam_translating.nml", &
+    "data/friction_slider_crank.nml", "data/gears_bevel.nml", "data/gears_planetary.nml", &
+    "data/gears_reducer.nml", "docs/examples/engine.nml", "docs/examples/fourbar.nml"]
+  !> Rows per block tried against the whole run.
+  integer, parameter :: block_sizes(*) = [1, 2, 5, 7]
+
+contains
+
+  !> All tests of this suite.
+  subroutine run_blocks_tests(t)
+    type(test_counts_t), intent(inout) :: t
+    call test_blocks_equal_whole(t)
+    call test_spool(t)
+  end subroutine run_blocks_tests
+
+  !> One run of `path` with `options`: its output (what the spool did not take), and its
+  !> report: error text and code, or warnings and self-check figures.
+  subroutine run_one(path, options, text, spool, report)
+    character(*), intent(in) :: path
+    type(run_options_t), intent(in) :: options
+    !> The output, then (without `report`) the report.
+    character(len=:), allocatable, intent(out) :: text
+    type(spool_t), intent(inout), optional :: spool
+    !> The report, when asked for apart.
+    character(len=:), allocatable, intent(out), optional :: report
+    character(len=:), allocatable :: said
+    type(deck_source_t) :: source
+    type(error_t), allocatable :: error
+    class(mechanism_t), allocatable :: mech
+    type(step_table_t) :: table
+    type(text_buffer_t) :: out
+    character(len=:), allocatable :: group
+    character(len=40) :: figures
+    integer :: i
+    call load_deck(path, source, error)
+    if (.not. allocated(error)) call read_group_name(source, group, error)
+    text = ""
+    said = ""
+    if (allocated(error)) then
+      said = "deck error: "//error%message
+    else
+      call create_mechanism(group, mech)
+      call run_mechanism(mech, group, source, options, table, out, error, spool)
+      if (allocated(error)) then
+        said = "error "//int_str(error%code)//": "//error%message
+      else
+        text = out%text()
+        do i = 1, table%warning_count()
+          said = said//"warning: "//table%warnings(i)%text//new_line("a")
+        end do
+        write (figures, '(2es20.12)') table%max_residual, table%max_mismatch
+        said = said//"self-check: "//figures
+      end if
+    end if
+    if (present(report)) then
+      report = said
+    else
+      text = text//said
+    end if
+  end subroutine run_one
+
+  !> Blocks of 1, 2, 5, 7 rows against one block, for every deck in every format.
+  subroutine test_blocks_equal_whole(t)
+    type(test_counts_t), intent(inout) :: t
+    type(run_options_t) :: options
+    character(len=:), allocatable :: whole, blocked
+    integer :: d, f, b
+    do d = 1, size(decks)
+      do f = 1, 8
+        options = run_options_t()
+        select case (f)
+        case (1)
+          options%format = format_table
+        case (2)
+          options%format = format_table
+          options%lang = lang_ru
+        case (3)
+          options%format = format_csv
+        case (4)
+          options%format = format_csv
+          options%kinematics = .true.
+        case (5)
+          options%format = format_json
+        case (6)
+          options%format = format_json
+          options%kinematics = .true.
+        case (7)
+          options%format = format_summary
+        case default
+          options%format = format_table
+          options%link_frame = .true.
+        end select
+        call run_one(trim(decks(d)), options, whole)
+        do b = 1, size(block_sizes)
+          options%block_rows = block_sizes(b)
+          call run_one(trim(decks(d)), options, blocked)
+          call check_true(t, "blocks: "//trim(decks(d))//" format case "//int_str(f)//", blocks of "// &
+            int_str(block_sizes(b))//" rows = one block", blocked == whole, first_difference(whole, blocked))
+        end do
+      end do
+    end do
+  end subroutine test_blocks_equal_whole
+
+  !> The spool with a bound of 100 bytes: the text goes through its file (also the second
+  !> section of a layout, PR 3050's) and the target gets all of it; a run that fails after
+  !> the spool took text leaves no target and no temporary file.
+  subroutine test_spool(t)
+    type(test_counts_t), intent(inout) :: t
+    type(run_options_t) :: options
+    type(spool_t) :: spool
+    type(text_buffer_t) :: rest
+    type(error_t), allocatable :: error
+    character(len=:), allocatable :: whole, whole_report, kept, report, target, text
+    character(len=*), parameter :: spool_decks(*) = [character(len=30) :: "data/pr3207.nml", "data/pr3050.nml", &
+      "data/assur_sixbar_friction.nml"]
+    integer, parameter :: spool_formats(*) = [format_table, format_csv, format_json]
+    integer :: d, f, unit, ios
+    logical :: exists
+    target = "/tmp/kinetostat-test-spool-"//int_str(process_id())//".out"
+    do d = 1, size(spool_decks)
+      do f = 1, size(spool_formats)
+        options = run_options_t()
+        options%format = spool_formats(f)
+        call run_one(trim(spool_decks(d)), options, whole, report=whole_report)
+        options%block_rows = 2
+        spool = spool_t()
+        spool%bound = 100
+        call spool%aim(target)
+        call run_one(trim(spool_decks(d)), options, kept, spool, report)
+        call check_true(t, "spool: "//trim(spool_decks(d))//" went through the file", spool%spilled, "no temporary file was used")
+        call check_true(t, "spool: "//trim(spool_decks(d))//" same report", report == whole_report, report)
+        rest = text_buffer_t()
+        call rest%append(kept)
+        call spool%commit(rest, error)
+        call check_true(t, "spool: "//trim(spool_decks(d))//" committed", .not. allocated(error), "commit failed")
+        text = read_file(target)
+        call check_true(t, "spool: "//trim(spool_decks(d))//" format "//int_str(f)//" target = one-block output", &
+          text == whole, first_difference(whole, text))
+        inquire (file=target//".tmp."//int_str(process_id()), exist=exists)
+        call check_true(t, "spool: no temporary file left beside "//target, .not. exists, "left")
+      end do
+    end do
+    open (newunit=unit, file=target, status="old", iostat=ios)
+    if (ios == 0) close (unit, status="delete", iostat=ios)
+    call check_true(t, "spool: the target can be removed", ios == 0, target)
+    ! a run failing at step 2 after the spool took step 1's text: no target, no temporary file
+    options = run_options_t()
+    options%format = format_csv
+    options%block_rows = 1
+    spool = spool_t()
+    spool%bound = 10
+    call spool%aim(target)
+    call run_one("data/assur_toggle.nml", options, text, spool)
+    call check_true(t, "spool: the failing run fails", index(text, "error 3:") == 1, text)
+    inquire (file=target, exist=exists)
+    call check_true(t, "spool: a failed run leaves no target", .not. exists, target//" exists")
+    inquire (file=target//".tmp."//int_str(process_id()), exist=exists)
+    call check_true(t, "spool: a failed run leaves no temporary file", .not. exists, "left")
+  end subroutine test_spool
+
+  !> The whole content of a file ("" when it cannot be read).
+  function read_file(path) result(text)
+    character(*), intent(in) :: path
+    character(len=:), allocatable :: text
+    integer :: unit, ios, length
+    text = ""
+    open (newunit=unit, file=path, access="stream", form="unformatted", action="read", status="old", iostat=ios)
+    if (ios /= 0) return
+    inquire (unit=unit, size=length)
+    deallocate (text)
+    allocate (character(len=length) :: text)
+    read (unit, iostat=ios) text
+    if (ios /= 0) text = ""
+    close (unit)
+  end function read_file
+
+  !> Where two texts first differ, for a failure message.
+  function first_difference(expected, computed) result(detail)
+    character(*), intent(in) :: expected, computed
+    character(len=:), allocatable :: detail
+    integer :: i
+    do i = 1, min(len(expected), len(computed))
+      if (expected(i:i) /= computed(i:i)) exit
+    end do
+    detail = "first difference at byte "//int_str(i)//" of "//int_str(len(expected))//" (computed "// &
+      int_str(len(computed))//"): expected '"//expected(max(1, i - 40):min(len(expected), i + 40))// &
+      "' computed '"//computed(max(1, i - 40):min(len(computed), i + 40))//"'"
+  end function first_difference
+
+end module test_blocks
