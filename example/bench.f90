@@ -3,7 +3,8 @@
 !>   fpm run --profile release --example bench [-- [MAX_STEPS] [KIND...]]
 !>
 !> For every stepped mechanism (a bundled deck scaled in memory to 10^4, 10^5 and 10^6 steps,
-!> up to MAX_STEPS) it prints the solve rate (kernel and step table, steps/s), the end-to-end
+!> up to MAX_STEPS) it prints the solve rates (kernel and step table, steps/s; "kernel" without
+!> the kinematics columns, as a plain run, "solve" with them), the end-to-end
 !> rate of CSV, the legacy table and JSON written to a file (deck text -> output file, the
 !> pipeline of `kinetostat DECK -o FILE`), the peak resident memory of each end-to-end run
 !> (VmHWM of /proc/self/status after resetting it through /proc/self/clear_refs), and every
@@ -30,12 +31,14 @@ program bench
   real(wp), parameter :: limit_rate = 2.0e6_wp
   !> Step counts of the runs.
   integer, parameter :: step_counts(*) = [10000, 100000, 1000000]
-  !> Row format: kind, steps, solve rate, three end-to-end rates, three peaks, ratios.
-  character(*), parameter :: row_fmt = '(a8,i9,4es10.2,3f8.1,4f7.3)'
+  !> Row format: kind, steps, kernel and solve rates, three end-to-end rates, three peaks, ratios.
+  character(*), parameter :: row_fmt = '(a8,i9,5es10.2,3f8.1,5f7.3)'
   !> Header lines of the table.
-  character(*), parameter :: header(*) = [character(len=111) :: &
-    "                  steps per CPU second (solve = kernel + table)   peak MiB               ratio to limit", &
-    "    kind    steps     solve       csv     table      json     csv   table    json  solve    csv  table   json"]
+  character(*), parameter :: header(*) = [character(len=128) :: &
+    "                  steps per CPU second (kernel, solve: see below)           peak MiB" // &
+    "                     ratio to limit", &
+    "    kind    steps    kernel     solve       csv     table      json     csv   table    json" // &
+    " kernel  solve    csv  table   json"]
 
   interface
     !> glibc: give the heap's free memory back to the system (so that a peak is the run's own).
@@ -159,17 +162,19 @@ contains
     !> Output file of the end-to-end runs.
     character(*), intent(in) :: path
     character(len=:), allocatable :: text
-    real(wp) :: solve_rate, rates(3), peaks(3)
+    real(wp) :: kernel_rate, solve_rate, rates(3), peaks(3)
     integer, parameter :: formats(3) = [format_csv, format_table, format_json]
     integer :: f
     text = scaled_deck(c, n)
-    solve_rate = n / solve_seconds(c, text)
+    kernel_rate = n / solve_seconds(c, text, .false.)
+    solve_rate = n / solve_seconds(c, text, .true.)
     do f = 1, 3
       call reset_peak()
       rates(f) = n / end_to_end_seconds(c, text, formats(f), path)
       peaks(f) = peak_mib()
     end do
-    write (output_unit, row_fmt) c%kind, n, solve_rate, rates, peaks, solve_rate / limit_rate, rates / limit_rate
+    write (output_unit, row_fmt) c%kind, n, kernel_rate, solve_rate, rates, peaks, kernel_rate / limit_rate, &
+      solve_rate / limit_rate, rates / limit_rate
     flush (output_unit)
   end subroutine bench_one
 
@@ -214,10 +219,13 @@ contains
     text = text//"  "//extra//new_line("a")//"/"//new_line("a")
   end function scaled_deck
 
-  !> Seconds of the solve alone (kernel and step table) of a deck read beforehand.
-  real(wp) function solve_seconds(c, text)
+  !> Seconds of the solve alone (kernel and step table) of a deck read beforehand: with the
+  !> kinematics columns (`kinematics`; as --kinematics, --frame link and SVG runs) or without
+  !> them (as a plain run: the kernel and its result columns).
+  real(wp) function solve_seconds(c, text, kinematics)
     type(bench_case_t), intent(in) :: c
     character(*), intent(in) :: text
+    logical, intent(in) :: kinematics
     class(mechanism_t), allocatable :: mech
     type(deck_source_t) :: source
     type(step_table_t) :: table
@@ -227,6 +235,7 @@ contains
     call create_mechanism(trim(c%kind), mech)
     call mech%read_deck(source, error)
     if (allocated(error)) call fail(error)
+    table%kinematics_wanted = kinematics
     t0 = clock()
     call mech%solve(table, error)
     solve_seconds = seconds_since(t0)
