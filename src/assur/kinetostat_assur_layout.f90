@@ -9,6 +9,7 @@ module kinetostat_assur_layout
   use kinetostat_noise, only: noise_rel, force_components
   use kinetostat_vec2, only: magnitude, angle_360_deg, angle_180_deg, rotate, snap_noise, clean_zero
   use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_component, col_length, &
+    step_span, &
     col_moment, col_other, col_flag, col_ratio
   use kinetostat_format, only: fixed_field, display_width
   use kinetostat_labels, only: lang_ru
@@ -445,10 +446,7 @@ contains
     character(len=32) :: angle_text
     integer :: k, k1, k2, first_bad
     logical :: keep_friction
-    k1 = 1
-    k2 = deck%n
-    if (present(first)) k1 = first
-    if (present(last)) k2 = last
+    call step_span(deck%n, k1, k2, first, last)
     allocate (steps(k2 - k1 + 1))
     keep_friction = present(fsteps)
     if (keep_friction) allocate (fsteps(merge(k2 - k1 + 1, 0, deck%friction_on)))

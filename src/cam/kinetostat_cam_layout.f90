@@ -8,6 +8,7 @@ module kinetostat_cam_layout
   use kinetostat_vec2, only: magnitude, angle_360_deg
   use kinetostat_noise, only: noise_floor, force_components
   use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_component, &
+    step_span, &
     col_length, col_flag, col_ratio, col_other
   use kinetostat_format, only: fixed_field, int_field
   use kinetostat_labels, only: lang_ru
@@ -89,10 +90,7 @@ contains
     !> Steps to compute (default: all).
     integer, intent(in), optional :: first, last
     integer :: k, k1, k2
-    k1 = 1
-    k2 = deck%n
-    if (present(first)) k1 = first
-    if (present(last)) k2 = last
+    call step_span(deck%n, k1, k2, first, last)
     allocate (steps(k2 - k1 + 1))
     !$omp parallel do schedule(static)
     do k = k1, k2

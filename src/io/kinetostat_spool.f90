@@ -93,9 +93,7 @@ contains
     type(text_buffer_t), intent(inout) :: other_out
     !> A file cannot be read or written.
     type(error_t), allocatable, intent(out) :: error
-    character(len=:), allocatable :: chunk
-    integer :: in_unit, ios, ios_close
-    integer(int64) :: size_left
+    integer :: ios
     character(len=512) :: msg
     if (other%spilled) then
       call open_file_now(self, out, error)
@@ -103,18 +101,7 @@ contains
       close (other%unit)
       other%unit = 0
       msg = ""
-      open (newunit=in_unit, file=other%file, access="stream", form="unformatted", action="read", status="old", &
-            iostat=ios, iomsg=msg)
-      if (ios == 0) inquire (unit=in_unit, size=size_left, iostat=ios)
-      do while (ios == 0 .and. size_left > 0)
-        allocate (character(len=int(min(int(copy_chunk, int64), size_left))) :: chunk)
-        read (in_unit, iostat=ios, iomsg=msg) chunk
-        if (ios == 0) write (self%unit, iostat=ios, iomsg=msg) chunk
-        size_left = size_left - len(chunk)
-        deallocate (chunk)
-      end do
-      close (in_unit, status="delete", iostat=ios_close)
-      if (ios == 0) ios = ios_close
+      call copy_file(other%file, self%unit, .true., ios, msg)
       other%spilled = .false.
       if (ios /= 0) then
         call fatal_error(error, exit_input, where(self)//": cannot write output: "//trim(msg))
@@ -183,35 +170,16 @@ contains
   subroutine copy_out(self, error)
     type(spool_t), intent(inout) :: self
     type(error_t), allocatable, intent(out) :: error
-    character(len=:), allocatable :: chunk
-    integer :: in_unit, out_unit, ios, ios_close
-    integer(int64) :: size_left
+    integer :: out_unit, ios, ios_close
     character(len=512) :: msg
     msg = ""
     out_unit = 0
-    open (newunit=in_unit, file=self%file, access="stream", form="unformatted", action="read", status="old", &
-          iostat=ios, iomsg=msg)
-    if (ios == 0) inquire (unit=in_unit, size=size_left, iostat=ios)
-    if (ios == 0 .and. allocated(self%target)) then
+    ios = 0
+    if (allocated(self%target)) then
       open (newunit=out_unit, file=self%target, access="stream", form="unformatted", action="write", &
             status="old", iostat=ios, iomsg=msg)
     end if
-    do while (ios == 0 .and. size_left > 0)
-      allocate (character(len=int(min(int(copy_chunk, int64), size_left))) :: chunk)
-      read (in_unit, iostat=ios, iomsg=msg) chunk
-      if (ios == 0) then
-        if (allocated(self%target)) then
-          write (out_unit, iostat=ios, iomsg=msg) chunk
-        else if (.not. write_standard_output(chunk)) then
-          ios = 1
-          msg = "disk full or pipe closed?"
-        end if
-      end if
-      size_left = size_left - len(chunk)
-      deallocate (chunk)
-    end do
-    close (in_unit, iostat=ios_close)
-    if (ios == 0) ios = ios_close
+    if (ios == 0) call copy_file(self%file, out_unit, .false., ios, msg)
     if (out_unit /= 0) then
       close (out_unit, iostat=ios_close)
       if (ios == 0) ios = ios_close
@@ -224,6 +192,48 @@ contains
       end if
     end if
   end subroutine copy_out
+
+  !> Append the file at `path` to the open stream `out_unit` (0: standard output), in chunks
+  !> of copy_chunk bytes; `remove` deletes the file afterwards. ios /= 0 on failure, with `msg`.
+  subroutine copy_file(path, out_unit, remove, ios, msg)
+    !> The file to copy.
+    character(*), intent(in) :: path
+    !> Where to (0: standard output).
+    integer, intent(in) :: out_unit
+    !> Delete the file afterwards.
+    logical, intent(in) :: remove
+    !> 0 on success.
+    integer, intent(out) :: ios
+    !> iomsg of the failure (kept when there is none).
+    character(len=512), intent(inout) :: msg
+    character(len=:), allocatable :: chunk
+    integer :: in_unit, ios_close
+    integer(int64) :: size_left
+    open (newunit=in_unit, file=path, access="stream", form="unformatted", action="read", status="old", &
+          iostat=ios, iomsg=msg)
+    if (ios /= 0) return
+    inquire (unit=in_unit, size=size_left, iostat=ios)
+    do while (ios == 0 .and. size_left > 0)
+      allocate (character(len=int(min(int(copy_chunk, int64), size_left))) :: chunk)
+      read (in_unit, iostat=ios, iomsg=msg) chunk
+      if (ios == 0) then
+        if (out_unit /= 0) then
+          write (out_unit, iostat=ios, iomsg=msg) chunk
+        else if (.not. write_standard_output(chunk)) then
+          ios = 1
+          msg = "disk full or pipe closed?"
+        end if
+      end if
+      size_left = size_left - len(chunk)
+      deallocate (chunk)
+    end do
+    if (remove) then
+      close (in_unit, status="delete", iostat=ios_close)
+    else
+      close (in_unit, iostat=ios_close)
+    end if
+    if (ios == 0) ios = ios_close
+  end subroutine copy_file
 
   !> Whether the temporary file lies beside the target (renamed into place at the end).
   logical function beside_target(self)

@@ -7,7 +7,7 @@ module kinetostat_step_table
   use kinetostat_kinds, only: wp, rad_to_deg
   implicit none
   private
-  public :: step_table_t, column_t, echo_record_t, remark_t, column_tally_t, edge_point_t
+  public :: step_table_t, column_t, echo_record_t, remark_t, column_tally_t, edge_point_t, step_span
   public :: col_input_angle, col_force, col_force_angle, col_component, col_moment, col_length, &
     col_flag, col_count, col_ratio, col_other, column_kind_names
   public :: echo_real_kind, echo_int_kind, echo_logical_kind, echo_array_kind, echo_text_kind, &
@@ -291,6 +291,22 @@ contains
     class(step_table_t), intent(in) :: self
     first_block = self%row_offset == 0
   end function first_block
+
+  !> Steps k1 .. k2 a kernel loop computes: first .. last when given, else 1 .. n.
+  pure subroutine step_span(n, k1, k2, first, last)
+    !> Steps of the whole run.
+    integer, intent(in) :: n
+    !> First step to compute.
+    integer, intent(out) :: k1
+    !> Last step to compute.
+    integer, intent(out) :: k2
+    !> The block's first and last step (table%block_range), if only a block is asked for.
+    integer, intent(in), optional :: first, last
+    k1 = 1
+    k2 = n
+    if (present(first)) k1 = first
+    if (present(last)) k2 = last
+  end subroutine step_span
 
   !> Whether the rows now in the table end the run (the footers are written then).
   pure logical function last_block(self)

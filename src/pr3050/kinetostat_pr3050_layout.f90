@@ -8,6 +8,7 @@ module kinetostat_pr3050_layout
   use kinetostat_vec2, only: angle_360_deg
   use kinetostat_noise, only: noise_rel, noise_floor, force_columns, force_components, angles_0_360
   use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_component, &
+    step_span, &
     col_moment, col_length, col_other
   use kinetostat_format, only: fixed_field, exp_field
   use kinetostat_labels, only: lang_ru
@@ -131,10 +132,7 @@ contains
     integer, intent(in), optional :: first, last
     type(error_t), allocatable :: step_error
     integer :: k, k1, k2, first_bad
-    k1 = 1
-    k2 = deck%n
-    if (present(first)) k1 = first
-    if (present(last)) k2 = last
+    call step_span(deck%n, k1, k2, first, last)
     allocate (steps(k2 - k1 + 1))
     ! steps in parallel with OpenMP threads; the error reported is the first step's in step order
     first_bad = k2 + 1

@@ -5,7 +5,7 @@ module kinetostat_pr3207_layout
   use kinetostat_deck, only: deck_source_t
   use kinetostat_error, only: error_t
   use kinetostat_noise, only: noise_floor, force_columns, force_components, angles_0_360
-  use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_moment
+  use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_moment, step_span
   use kinetostat_format, only: fixed_field
   use kinetostat_labels, only: lang_ru
   use kinetostat_text_buffer, only: text_buffer_t
@@ -108,10 +108,7 @@ contains
     !> Steps to compute (default: all).
     integer, intent(in), optional :: first, last
     integer :: k, k1, k2
-    k1 = 1
-    k2 = deck%n
-    if (present(first)) k1 = first
-    if (present(last)) k2 = last
+    call step_span(deck%n, k1, k2, first, last)
     allocate (steps(k2 - k1 + 1))
     !$omp parallel do schedule(static)
     do k = k1, k2

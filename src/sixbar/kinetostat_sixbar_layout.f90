@@ -7,6 +7,7 @@ module kinetostat_sixbar_layout
   use kinetostat_text, only: real_str, int_str
   use kinetostat_noise, only: noise_floor, force_columns, force_components, angles_pm180
   use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_component, &
+    step_span, &
     col_moment
   use kinetostat_format, only: fixed_field
   use kinetostat_labels, only: lang_ru
@@ -136,10 +137,7 @@ contains
     !> Steps to compute (default: all).
     integer, intent(in), optional :: first, last
     integer :: k, k1, k2, first_bad
-    k1 = 1
-    k2 = deck%n
-    if (present(first)) k1 = first
-    if (present(last)) k2 = last
+    call step_span(deck%n, k1, k2, first, last)
     allocate (steps(k2 - k1 + 1))
     ! steps in parallel with OpenMP threads; the error reported is the first step's in step order
     first_bad = k2 + 1
