@@ -910,10 +910,12 @@ contains
   !> for prismatic pairs two more lines with the normal force and the reaction moment. With a
   !> linear actuator as driver the last column holds F_drive, stroke, stroke speed and
   !> acceleration (lines 1-4) instead of M1.
-  pure subroutine write_results(self, table, lang, out, later)
+  pure subroutine write_results(self, table, lang, first, last, out, later)
     class(assur_mechanism_t), intent(in) :: self
     type(step_table_t), intent(in) :: table
     integer, intent(in) :: lang
+    !> Rows of the block to write (the headings come with row 1 of the run's first block).
+    integer, intent(in) :: first, last
     type(text_buffer_t), intent(inout) :: out
     type(text_buffer_t), intent(inout) :: later
     character(len=:), allocatable :: line1, line2, line3, line4
@@ -936,7 +938,7 @@ contains
     do ip = 1, np
       any_p = any_p .or. assur_pair_prismatic(self%deck, ip)
     end do
-    if (table%first_block()) then
+    if (first == 1 .and. table%first_block()) then
       if (link_axes) then
         if (lang == lang_ru) then
           call out%put(" "//link_axes_heading_ru)
@@ -1005,7 +1007,7 @@ contains
         call out%put(trim(line2))
       end if
     end if
-    do k = 1, table%row_count()
+    do k = first, last
       associate (v => table%rows(:, k))
         line1 = fixed_field(v(1), phi_width, 2)
         line2 = repeat(" ", phi_width)

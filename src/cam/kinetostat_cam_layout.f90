@@ -281,15 +281,17 @@ contains
 
   !> RESULTS: one line per cam angle; a jammed or lost-contact step shows its flag instead
   !> of the forces.
-  pure subroutine write_results(self, table, lang, out, later)
+  pure subroutine write_results(self, table, lang, first, last, out, later)
     class(cam_mechanism_t), intent(in) :: self
     type(step_table_t), intent(in) :: table
     integer, intent(in) :: lang
+    !> Rows of the block to write (the headings come with row 1 of the run's first block).
+    integer, intent(in) :: first, last
     type(text_buffer_t), intent(inout) :: out
     type(text_buffer_t), intent(inout) :: later
     integer :: k, i
     character(len=:), allocatable :: line
-    if (table%first_block()) then
+    if (first == 1 .and. table%first_block()) then
       call out%put(trim(header_lines(1)))
       if (lang == lang_ru) then
         call out%put(units_ru)
@@ -297,7 +299,7 @@ contains
         call out%put(trim(header_lines(2)))
       end if
     end if
-    do k = 1, table%row_count()
+    do k = first, last
       associate (v => table%rows(:, k))
         line = fixed_field(v(1), 8, 2)//fixed_field(v(2), 8, 3)//fixed_field(v(3), 10, 5)// &
           fixed_field(v(4), 11, 2)//int_field(v(5), 3)

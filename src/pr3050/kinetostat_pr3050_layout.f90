@@ -308,15 +308,17 @@ contains
 
   !> RESULTS: one line per step (rocker angle, three reactions with angles, F2; E format as
   !> the original), then the prismatic pair 1-2 and the cylinder's motion.
-  pure subroutine write_results(self, table, lang, out, later)
+  pure subroutine write_results(self, table, lang, first, last, out, later)
     class(pr3050_mechanism_t), intent(in) :: self
     type(step_table_t), intent(in) :: table
     integer, intent(in) :: lang
+    !> Rows of the block to write (the headings come with row 1 of the run's first block).
+    integer, intent(in) :: first, last
     type(text_buffer_t), intent(inout) :: out
     type(text_buffer_t), intent(inout) :: later
     integer :: k, i
     character(len=:), allocatable :: line
-    if (table%first_block()) then
+    if (first == 1 .and. table%first_block()) then
       if (lang == lang_ru) then
         call out%put(header_ru)
       else
@@ -325,7 +327,7 @@ contains
         end do
       end if
     end if
-    do k = 1, table%row_count()
+    do k = first, last
       associate (v => table%rows(:, k))
         line = fixed_field(v(1), 9, 2)
         do i = 2, 6, 2
@@ -335,7 +337,7 @@ contains
       end associate
     end do
     ! the prismatic pair's block follows the last row of the first (in `later`)
-    if (table%first_block()) then
+    if (first == 1 .and. table%first_block()) then
       if (lang == lang_ru) then
         do k = 1, size(legend_ru)
           call later%put(trim(legend_ru(k)))
@@ -351,7 +353,7 @@ contains
         end do
       end if
     end if
-    do k = 1, table%row_count()
+    do k = first, last
       associate (v => table%rows(:, k))
         call later%put(fixed_field(v(1), 9, 2)//fixed_field(v(9), 10, 2)//fixed_field(v(10), 10, 4)// &
                      fixed_field(v(11), 10, 4)//exp_field(v(12), 12, 3)//exp_field(v(13), 12, 3))

@@ -235,22 +235,24 @@ contains
 
   !> RESULTS: header, then per step the magnitudes (with the crank angle and M1) and under
   !> them the angles, fields 9 and 12 wide as in the original printout.
-  pure subroutine write_results(self, table, lang, out, later)
+  pure subroutine write_results(self, table, lang, first, last, out, later)
     class(pr3207_mechanism_t), intent(in) :: self
     type(step_table_t), intent(in) :: table
     integer, intent(in) :: lang
+    !> Rows of the block to write (the headings come with row 1 of the run's first block).
+    integer, intent(in) :: first, last
     type(text_buffer_t), intent(inout) :: out
     type(text_buffer_t), intent(inout) :: later
     integer :: k
     do k = 1, size(header_lines)
-      if (.not. table%first_block()) exit
+      if (.not. (first == 1 .and. table%first_block())) exit
       if (lang == lang_ru) then
         call out%put(trim(header_lines_ru(k)))
       else
         call out%put(trim(header_lines(k)))
       end if
     end do
-    do k = 1, table%row_count()
+    do k = first, last
       call put_two_line_step(out, table%rows(:, k), [2, 4, 6, 8, 10], [3, 5, 7, 9, 11], &
                              fixed_field(table%rows(12, k), 12, 3))
     end do

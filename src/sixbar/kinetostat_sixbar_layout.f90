@@ -316,22 +316,24 @@ contains
 
   !> RESULTS as appendix 2: per step the crank angle, six force magnitudes, F56 and M1, and
   !> under them the six force angles; fields 9 and 12 wide.
-  pure subroutine write_results(self, table, lang, out, later)
+  pure subroutine write_results(self, table, lang, first, last, out, later)
     class(sixbar_mechanism_t), intent(in) :: self
     type(step_table_t), intent(in) :: table
     integer, intent(in) :: lang
+    !> Rows of the block to write (the headings come with row 1 of the run's first block).
+    integer, intent(in) :: first, last
     type(text_buffer_t), intent(inout) :: out
     type(text_buffer_t), intent(inout) :: later
     integer :: k
     if (lang == lang_ru) then
-      call write_results_ru(table, out, later)
+      call write_results_ru(table, first, last, out, later)
       return
     end if
     do k = 1, size(header_lines)
-      if (.not. table%first_block()) exit
+      if (.not. (first == 1 .and. table%first_block())) exit
       call out%put(trim(header_lines(k)))
     end do
-    do k = 1, table%row_count()
+    do k = first, last
       call put_two_line_step(out, table%rows(:, k), magnitude_columns, angle_columns, &
                              fixed_field(table%rows(15, k), 12, 3))
     end do
@@ -339,22 +341,24 @@ contains
 
   !> RESULTS as appendix 2 prints them (--lang ru): the original's header and dotted rules,
   !> the eight columns and six angles per step, a legend with the units, then M1 apart.
-  pure subroutine write_results_ru(table, out, later)
+  pure subroutine write_results_ru(table, first, last, out, later)
     type(step_table_t), intent(in) :: table
+    !> Rows of the block to write (the headings come with row 1 of the run's first block).
+    integer, intent(in) :: first, last
     type(text_buffer_t), intent(inout) :: out
     type(text_buffer_t), intent(inout) :: later
     integer :: k
-    if (table%first_block()) then
+    if (first == 1 .and. table%first_block()) then
       do k = 1, size(header_lines_ru)
         call out%put(trim(header_lines_ru(k)))
       end do
       call out%put(dotted_rule)
     end if
-    do k = 1, table%row_count()
+    do k = first, last
       call put_two_line_step(out, table%rows(:, k), magnitude_columns, angle_columns, "")
     end do
     ! the closing rule, the legend and the moment block follow the last row (in `later`)
-    if (table%first_block()) then
+    if (first == 1 .and. table%first_block()) then
       call later%put(dotted_rule)
       do k = 1, size(legend_ru)
         call later%put(trim(legend_ru(k)))
@@ -363,7 +367,7 @@ contains
       call later%put(trim(moment_block_ru(2)))
       call later%put(trim(moment_block_ru(3)))
     end if
-    do k = 1, table%row_count()
+    do k = first, last
       call later%put(fixed_field(table%rows(1, k), 9, 2)//fixed_field(table%rows(15, k), 12, 3))
     end do
   end subroutine write_results_ru
