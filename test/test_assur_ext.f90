@@ -12,7 +12,7 @@ module test_assur_ext
   use kinetostat_assur_deck, only: assur_deck_t, read_assur_deck
   use kinetostat_assur_layout, only: assur_solve
   use kinetostat_pr3050, only: pr3050_step_t, pr3050_step
-  use kinetostat_pr3050_deck, only: pr3050_deck_t, read_pr3050_deck
+  use kinetostat_pr3050_deck, only: pr3050_deck_t, read_pr3050_deck, pr3050_phi3_deg
   use test_harness, only: test_counts_t, check_close, check_true
   implicit none
   private
@@ -53,7 +53,7 @@ contains
     if (size(steps) /= dedicated%n) return
     worst = 0.0_wp
     do k = 1, dedicated%n
-      ref = pr3050_step(dedicated%p, dedicated%phi3_deg(k) * deg_to_rad, dedicated%omega3(k), dedicated%eps3(k))
+      ref = pr3050_step(dedicated%p, pr3050_phi3_deg(dedicated, k) * deg_to_rad, dedicated%omega3(k), dedicated%eps3(k))
       associate (s => steps(k))
         scale = max(magnitude(ref%f14), magnitude(ref%f34), magnitude(ref%f32), abs(ref%f2))
         diff = max(magnitude(s%f(:, pair_index(1, 1)) - ref%f14), magnitude(s%f(:, crank_pin_index(1)) - ref%f34), &

@@ -73,6 +73,22 @@ contains
     end do
   end function triples
 
+  !> One table whose rows are the rows of three runs in turn (run 1 row k, run 2 row k, run 3
+  !> row k, ...): the triples check_fd reads when the runs' input angles are shifted by
+  !> -h, 0, +h (decks whose input angle is implied by a start and a step).
+  function interleaved(tables) result(table)
+    type(step_table_t), intent(in) :: tables(3)
+    type(step_table_t) :: table
+    integer :: j
+    table = tables(2)
+    if (allocated(table%rows)) deallocate (table%rows)
+    if (any([(tables(j)%row_count() /= tables(2)%row_count(), j=1, 3)])) return
+    allocate (table%rows(size(tables(2)%rows, 1), 3 * tables(2)%row_count()))
+    do j = 1, 3
+      table%rows(:, j::3) = tables(j)%rows
+    end do
+  end function interleaved
+
   !> Load a deck file into memory; a failure is a failed check.
   subroutine load(t, path, source, ok)
     type(test_counts_t), intent(inout) :: t
@@ -257,34 +273,37 @@ contains
   end subroutine test_fd_pr3207
 
   !> PR 3050: the deck's rocker angles, once with a constant speed and no acceleration, once
-  !> at rest with an angular acceleration (the two parts of every eps and a).
+  !> at rest with an angular acceleration (the two parts of every eps and a). The angles are
+  !> implied by phi3_start and dphi3: three runs with phi3_start shifted by -h, 0, +h.
   subroutine test_fd_pr3050(t)
     type(test_counts_t), intent(inout) :: t
-    type(pr3050_mechanism_t) :: mech
+    type(pr3050_mechanism_t) :: mech, shifted
     type(deck_source_t) :: source
-    type(step_table_t) :: table
+    type(step_table_t) :: tables(3), table
     type(error_t), allocatable :: error
-    real(wp), allocatable :: angles(:), w(:), e(:)
+    real(wp), allocatable :: w(:), e(:)
     logical :: ok
-    integer :: run
+    integer :: run, j
     call load(t, "data/pr3050.nml", source, ok)
     if (.not. ok) return
     call mech%read_deck(source, error)
     if (allocated(error)) return
-    angles = triples(mech%deck%phi3_deg)
-    mech%deck%n = size(angles)
-    mech%deck%phi3_deg = angles
     do run = 1, 2
       if (run == 1) then
-        w = spread(0.5_wp, 1, size(angles))
-        e = spread(0.0_wp, 1, size(angles))
+        w = spread(0.5_wp, 1, 3 * mech%deck%n)
+        e = spread(0.0_wp, 1, 3 * mech%deck%n)
       else
-        w = spread(0.0_wp, 1, size(angles))
-        e = spread(0.3_wp, 1, size(angles))
+        w = spread(0.0_wp, 1, 3 * mech%deck%n)
+        e = spread(0.3_wp, 1, 3 * mech%deck%n)
       end if
-      mech%deck%omega3 = w
-      mech%deck%eps3 = e
-      call solve_into(t, "pr3050 fd", mech, "data/pr3050.nml", table)
+      do j = 1, 3
+        shifted = mech
+        shifted%deck%phi3_start = mech%deck%phi3_start + real(j - 2, wp) * h_deg
+        shifted%deck%omega3 = w(1:mech%deck%n)
+        shifted%deck%eps3 = e(1:mech%deck%n)
+        call solve_into(t, "pr3050 fd", shifted, "data/pr3050.nml", tables(j))
+      end do
+      table = interleaved(tables)
       call check_fd(t, "pr3050 run "//achar(iachar("0") + run), table, "phi3", w, e)
     end do
   end subroutine test_fd_pr3050
