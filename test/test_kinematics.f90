@@ -20,6 +20,7 @@ module test_kinematics
   use kinetostat_pr3050_layout, only: pr3050_mechanism_t
   use kinetostat_sixbar_layout, only: sixbar_mechanism_t
   use kinetostat_assur_layout, only: assur_mechanism_t
+  use kinetostat_assur_deck, only: assur_omega1, load_schedule_t, load_constant
   use test_harness, only: test_counts_t, check_close, check_true
   implicit none
   private
@@ -331,18 +332,19 @@ contains
   end subroutine test_fd_sixbar
 
   !> Every bundled generic deck at its own input angles, with a constant crank speed and then
-  !> with the crank at rest and accelerating.
+  !> with the crank at rest and accelerating (the loads off). Three runs with the input
+  !> angles shifted by -h, 0, +h, their rows interleaved.
   subroutine test_fd_assur(t)
     type(test_counts_t), intent(inout) :: t
     character(len=32), parameter :: decks(*) = [character(len=32) :: "data/assur_pr3207.nml", &
       "data/assur_sixbar.nml", "data/assur_slider_crank.nml", "data/assur_pr3050.nml"]
-    type(assur_mechanism_t) :: mech
+    type(assur_mechanism_t) :: mech, shifted
     type(deck_source_t) :: source
-    type(step_table_t) :: table
+    type(step_table_t) :: tables(3), table
     type(error_t), allocatable :: error
-    real(wp), allocatable :: angles(:), w(:), e(:)
+    real(wp), allocatable :: w(:), e(:)
     logical :: ok
-    integer :: i, run
+    integer :: i, run, j, k, n
     do i = 1, size(decks)
       call load(t, trim(decks(i)), source, ok)
       if (.not. ok) cycle
@@ -351,22 +353,30 @@ contains
         call check_true(t, trim(decks(i))//" reads", .false., error%message)
         cycle
       end if
-      angles = triples(mech%deck%phi1_deg)
-      mech%deck%n = size(angles)
-      mech%deck%phi1_deg = angles
-      mech%deck%f_mag = reshape([real(wp) ::], [size(mech%deck%f_mag, 1), size(angles)], pad=[0.0_wp])
-      mech%deck%m_mag = reshape([real(wp) ::], [size(mech%deck%m_mag, 1), size(angles)], pad=[0.0_wp])
+      n = mech%deck%n
       do run = 1, 2
         if (run == 1) then
-          w = spread(mech%deck%omega1(1), 1, size(angles))
-          e = spread(0.0_wp, 1, size(angles))
+          w = spread(assur_omega1(mech%deck, 1), 1, 3 * n)
+          e = spread(0.0_wp, 1, 3 * n)
         else
-          w = spread(0.0_wp, 1, size(angles))
-          e = spread(40.0_wp, 1, size(angles))
+          w = spread(0.0_wp, 1, 3 * n)
+          e = spread(40.0_wp, 1, 3 * n)
         end if
-        mech%deck%omega1 = w
-        mech%deck%eps1 = e
-        call solve_into(t, trim(decks(i))//" fd", mech, trim(decks(i)), table)
+        do j = 1, 3
+          shifted = mech
+          if (allocated(shifted%deck%phi_list)) then
+            shifted%deck%phi_list = mech%deck%phi_list + real(j - 2, wp) * h_deg
+          else
+            shifted%deck%phi_start = mech%deck%phi_start + real(j - 2, wp) * h_deg
+          end if
+          shifted%deck%force_load = [(load_schedule_t(kind=load_constant, value=0.0_wp), k=1, size(mech%deck%force_load))]
+          shifted%deck%moment_load = [(load_schedule_t(kind=load_constant, value=0.0_wp), k=1, size(mech%deck%moment_load))]
+          shifted%deck%prescribed = .true.
+          shifted%deck%omega1_values = w(1:n)
+          shifted%deck%eps1_values = e(1:n)
+          call solve_into(t, trim(decks(i))//" fd", shifted, trim(decks(i)), tables(j))
+        end do
+        table = interleaved(tables)
         call check_fd(t, trim(decks(i))//" run "//achar(iachar("0") + run), table, "phi1", w, e)
       end do
     end do
