@@ -64,16 +64,6 @@ contains
     call test_sketch(t)
   end subroutine run_kinematics_tests
 
-  !> The input angles [b - h, b, b + h] for every base angle b, deg.
-  pure function triples(base) result(angles)
-    real(wp), intent(in) :: base(:)
-    real(wp) :: angles(3 * size(base))
-    integer :: j
-    do j = 1, size(base)
-      angles(3 * j - 2:3 * j) = base(j) + [-h_deg, 0.0_wp, h_deg]
-    end do
-  end function triples
-
   !> One table whose rows are the rows of three runs in turn (run 1 row k, run 2 row k, run 3
   !> row k, ...): the triples check_fd reads when the runs' input angles are shifted by
   !> -h, 0, +h (decks whose input angle is implied by a start and a step).
@@ -251,26 +241,30 @@ contains
     s = trim(adjustl(buf))
   end function sci
 
-  !> PR 3207: the deck's crank angles (constant omega1).
+  !> PR 3207: the deck's crank angles (constant omega1): three runs with phi_start shifted
+  !> by -h, 0, +h, their rows interleaved (cutting force off).
   subroutine test_fd_pr3207(t)
     type(test_counts_t), intent(inout) :: t
-    type(pr3207_mechanism_t) :: mech
+    type(pr3207_mechanism_t) :: mech, shifted
     type(deck_source_t) :: source
-    type(step_table_t) :: table
+    type(step_table_t) :: tables(3), table
     type(error_t), allocatable :: error
-    real(wp), allocatable :: angles(:)
     logical :: ok
+    integer :: j
     call load(t, "data/pr3207.nml", source, ok)
     if (.not. ok) return
     call mech%read_deck(source, error)
     if (allocated(error)) return
-    angles = triples(mech%deck%phi1_deg)
-    mech%deck%n = size(angles)
-    mech%deck%phi1_deg = angles
-    mech%deck%f5c = spread(0.0_wp, 1, size(angles))
-    call solve_into(t, "pr3207 fd", mech, "data/pr3207.nml", table)
-    call check_fd(t, "pr3207", table, "phi1", spread(mech%deck%p%omega1, 1, size(angles)), &
-                  spread(0.0_wp, 1, size(angles)))
+    do j = 1, 3
+      shifted = mech
+      shifted%deck%phi_start = mech%deck%phi_start + real(j - 2, wp) * h_deg
+      shifted%deck%two_value = .false.
+      shifted%deck%f5c_values = spread(0.0_wp, 1, mech%deck%n)
+      call solve_into(t, "pr3207 fd", shifted, "data/pr3207.nml", tables(j))
+    end do
+    table = interleaved(tables)
+    call check_fd(t, "pr3207", table, "phi1", spread(mech%deck%p%omega1, 1, 3 * mech%deck%n), &
+                  spread(0.0_wp, 1, 3 * mech%deck%n))
   end subroutine test_fd_pr3207
 
   !> PR 3050: the deck's rocker angles, once with a constant speed and no acceleration, once
@@ -309,26 +303,29 @@ contains
     end do
   end subroutine test_fd_pr3050
 
-  !> T.FTN: the deck's crank angles from the extreme position (constant omega1).
+  !> T.FTN: the deck's crank angles from the extreme position (constant omega1): three runs
+  !> with phi_start shifted by -h, 0, +h, their rows interleaved (slider load off).
   subroutine test_fd_sixbar(t)
     type(test_counts_t), intent(inout) :: t
-    type(sixbar_mechanism_t) :: mech
+    type(sixbar_mechanism_t) :: mech, shifted
     type(deck_source_t) :: source
-    type(step_table_t) :: table
+    type(step_table_t) :: tables(3), table
     type(error_t), allocatable :: error
-    real(wp), allocatable :: angles(:)
     logical :: ok
+    integer :: j
     call load(t, "data/sixbar.nml", source, ok)
     if (.not. ok) return
     call mech%read_deck(source, error)
     if (allocated(error)) return
-    angles = triples(mech%deck%phi1_deg)
-    mech%deck%n = size(angles)
-    mech%deck%phi1_deg = angles
-    mech%deck%f5 = spread(0.0_wp, 1, size(angles))
-    call solve_into(t, "sixbar fd", mech, "data/sixbar.nml", table)
-    call check_fd(t, "sixbar", table, "phi1", spread(mech%deck%p%omega1, 1, size(angles)), &
-                  spread(0.0_wp, 1, size(angles)))
+    do j = 1, 3
+      shifted = mech
+      shifted%deck%phi_start = mech%deck%phi_start + real(j - 2, wp) * h_deg
+      shifted%deck%f5 = spread(0.0_wp, 1, mech%deck%n)
+      call solve_into(t, "sixbar fd", shifted, "data/sixbar.nml", tables(j))
+    end do
+    table = interleaved(tables)
+    call check_fd(t, "sixbar", table, "phi1", spread(mech%deck%p%omega1, 1, 3 * mech%deck%n), &
+                  spread(0.0_wp, 1, 3 * mech%deck%n))
   end subroutine test_fd_sixbar
 
   !> Every bundled generic deck at its own input angles, with a constant crank speed and then
