@@ -22,7 +22,9 @@ module kinetostat_assur_layout
   use kinetostat_assur, only: assur_step_t, assur_step, assur_kinematics, link_a, link_b, crank_pin_index
   use kinetostat_drawing, only: drawing_t, force_load
   use kinetostat_assur_friction, only: friction_step_t, assur_friction_step
-  use kinetostat_assur_deck, only: assur_deck_t, read_assur_deck, write_assur_template
+  use kinetostat_assur_deck, only: assur_deck_t, read_assur_deck, write_assur_template, load_schedule_t, load_constant, &
+    load_column, assur_phi1_deg, assur_omega1_steps, assur_eps1, assur_motion_sign, assur_load_value, &
+    assur_force_values, assur_moment_values, assur_load_steps
   implicit none
   private
   public :: assur_mechanism_t, new_assur, assur_solve, assur_csv_columns, assur_csv_values, assur_pair_prismatic
@@ -237,11 +239,11 @@ contains
         call table%add_column(trim(names(size(names))), "", col_ratio)
       end if
       table%input_column = 1
-      do k = 1, size(self%deck%f_mag, 1)
-        call table%note_load(self%deck%f_mag(k, :))
+      do k = 1, size(self%deck%force_load)
+        call note_load(self%deck, self%deck%force_load(k), table)
       end do
-      do k = 1, size(self%deck%m_mag, 1)
-        call table%note_load(self%deck%m_mag(k, :))
+      do k = 1, size(self%deck%moment_load)
+        call note_load(self%deck, self%deck%moment_load(k), table)
       end do
       if (len_trim(self%deck%title) > 0) table%subtitle = trim(self%deck%title)
       call echo_deck(self%deck, table)
@@ -374,7 +376,7 @@ contains
       drive = fsteps(i)%driver_rate * fsteps(i)%motion_sign
       loss = fsteps(i)%rate_total
       if (k > 1) then
-        dphi = abs(deck%phi1_deg(k) - deck%phi1_deg(k - 1)) * deg_to_rad
+        dphi = abs(assur_phi1_deg(deck, k) - assur_phi1_deg(deck, k - 1)) * deg_to_rad
         sums(1) = sums(1) + 0.5_wp * dphi * (sums(3) + drive)
         sums(2) = sums(2) + 0.5_wp * dphi * (sums(4) + loss)
       end if
@@ -392,7 +394,7 @@ contains
     real(wp), intent(in) :: a_loss
     type(step_table_t), intent(inout) :: table
     real(wp) :: span, eta
-    span = abs(deck%phi1_deg(size(deck%phi1_deg)) - deck%phi1_deg(1))
+    span = abs(assur_phi1_deg(deck, deck%n) - assur_phi1_deg(deck, 1))
     table%summary_heading = "WORK AND EFFICIENCY WITH FRICTION"
     call table%summary_real("RUN SPAN", span, "deg")
     call table%summary_real("A_DRIVER", clean_zero(a_driver), "J")
@@ -446,8 +448,11 @@ contains
     character(len=32) :: angle_text
     integer :: k, k1, k2, first_bad
     logical :: keep_friction
+    !> Crank speed of steps k1..k2, rad/s (a list's signs carry from step to step).
+    real(wp), allocatable :: omega1(:)
     call step_span(deck%n, k1, k2, first, last)
     allocate (steps(k2 - k1 + 1))
+    omega1 = assur_omega1_steps(deck, k1, k2)
     keep_friction = present(fsteps)
     if (keep_friction) allocate (fsteps(merge(k2 - k1 + 1, 0, deck%friction_on)))
     ! steps in parallel with OpenMP threads; the error reported is the first step's in step order
@@ -463,7 +468,7 @@ contains
     if (first_bad <= k2) then
       k = first_bad
       call one_step(k, steps(k - k1 + 1), fs, step_error)
-      write (angle_text, '(g0.10)') deck%phi1_deg(k)
+      write (angle_text, '(g0.10)') assur_phi1_deg(deck, k)
       call fatal_error(error, exit_geometry, path//": &assur: step "//int_str(k)//" (phi1 = "// &
         trim(adjustl(angle_text))//" deg): "//step_error%message)
     end if
@@ -474,13 +479,16 @@ contains
       type(assur_step_t), intent(out) :: step
       type(friction_step_t), intent(out) :: fstep
       type(error_t), allocatable, intent(out) :: step_error
-      if (deck%friction_on) then
-        call assur_friction_step(deck%mech, deck%friction, deck%phi1_deg(k) * deg_to_rad, deck%omega1(k), &
-          deck%eps1(k), deck%motion_sign(k), deck%f_mag(:, k), deck%m_mag(:, k), step, fstep, step_error)
-      else
-        call assur_step(deck%mech, deck%phi1_deg(k) * deg_to_rad, deck%omega1(k), deck%eps1(k), &
-                        deck%f_mag(:, k), deck%m_mag(:, k), step, step_error)
-      end if
+      associate (w => omega1(k - k1 + 1))
+        if (deck%friction_on) then
+          call assur_friction_step(deck%mech, deck%friction, assur_phi1_deg(deck, k) * deg_to_rad, w, &
+            assur_eps1(deck, k), assur_motion_sign(w), assur_force_values(deck, k), assur_moment_values(deck, k), &
+            step, fstep, step_error)
+        else
+          call assur_step(deck%mech, assur_phi1_deg(deck, k) * deg_to_rad, w, assur_eps1(deck, k), &
+                          assur_force_values(deck, k), assur_moment_values(deck, k), step, step_error)
+        end if
+      end associate
     end subroutine one_step
   end subroutine assur_solve
 
@@ -683,7 +691,7 @@ contains
     real(wp) :: dir
     integer :: ip, i
     associate (mech => self%deck%mech, deck => self%deck)
-      call assur_kinematics(mech, deck%phi1_deg(k) * deg_to_rad, states, poses, error)
+      call assur_kinematics(mech, assur_phi1_deg(deck, k) * deg_to_rad, states, poses, error)
       if (allocated(error)) return
       do ip = 1, size(deck%pair_name)
         call drawing%pair_from_table(table, k, trim(deck%pair_name(ip)), joint_name(deck%pair_name(ip)), error)
@@ -694,12 +702,13 @@ contains
           ps = point_on(states(f%link), f%at)
           dir = f%angle
           if (f%follow) dir = dir + states(f%link)%th
-          call drawing%add_force("Q"//int_str(i), force_load, ps%p, deck%f_mag(i, k) * [cos(dir), sin(dir)])
+          call drawing%add_force("Q"//int_str(i), force_load, ps%p, &
+                                 assur_load_value(deck, deck%force_load(i), k) * [cos(dir), sin(dir)])
         end associate
       end do
       do i = 1, size(mech%moment_link)
         call drawing%add_moment("MQ"//int_str(i), force_load, drawing%at("S"//int_str(mech%links(mech%moment_link(i))%id)), &
-          deck%m_mag(i, k))
+          assur_load_value(deck, deck%moment_load(i), k))
       end do
       do i = 1, ubound(states, 1)
         associate (l => mech%links(i))
@@ -762,17 +771,17 @@ contains
     if (deck%friction_on) call echo_friction(deck, size(deck%friction), "CRANK_", "", table)
     if (allocated(deck%phi_list) .and. .not. deck%prescribed) then
       call table%echo_real("OMEGA1", deck%omega1_const, "rad/s")
-      call table%echo_array("OMEGA1_STEP", deck%omega1, "rad/s")
+      call table%echo_array("OMEGA1_STEP", assur_omega1_steps(deck, 1, deck%n), "rad/s")
     else if (deck%prescribed) then
-      call table%echo_array("OMEGA1_STEP", deck%omega1, "rad/s")
-      call table%echo_array("EPS1_STEP", deck%eps1, "rad/s^2")
+      call table%echo_array("OMEGA1_STEP", deck%omega1_values(1:deck%n), "rad/s")
+      call table%echo_array("EPS1_STEP", deck%eps1_values(1:deck%n), "rad/s^2")
     else
       call table%echo_real("OMEGA1", deck%omega1_const, "rad/s")
     end if
     call table%echo_real("G", deck%mech%g, "m/s^2")
     call table%echo_real("GRAVITY_ANGLE", deck%gravity_angle, "deg")
     if (allocated(deck%phi_list)) then
-      call table%echo_array("PHI1", deck%phi_list, "deg")
+      call table%echo_array("PHI1", deck%phi_list(1:deck%n), "deg")
     else
       if (deck%start_extreme) then
         call table%echo_text("START_AT", "extreme")
@@ -823,14 +832,50 @@ contains
         call table%echo_array("  AT", fo%at, "m")
         call table%echo_real("  ANGLE", fo%angle * rad_to_deg, "deg")
         call table%echo_logical("  FOLLOW", fo%follow, "")
-        call table%echo_array("  VALUE", deck%f_mag(k, :), "N")
+        call echo_load(deck, deck%force_load(k), "N", table)
       end associate
     end do
     do k = 1, size(deck%mech%moment_link)
       call table%echo_int("MOMENT "//int_str(k)//" LINK", deck%mech%links(deck%mech%moment_link(k))%id, "")
-      call table%echo_array("  VALUE", deck%m_mag(k, :), "N*m")
+      call echo_load(deck, deck%moment_load(k), "N*m", table)
     end do
   end subroutine echo_deck
+
+  !> The echo line "  VALUE" of a load: its value at every step (a step_values column as
+  !> given; other schedules computed into a temporary).
+  pure subroutine echo_load(deck, load, unit, table)
+    !> Validated deck.
+    type(assur_deck_t), intent(in) :: deck
+    !> The load's schedule.
+    type(load_schedule_t), intent(in) :: load
+    !> Unit of its values ("N" or "N*m").
+    character(*), intent(in) :: unit
+    type(step_table_t), intent(inout) :: table
+    if (load%kind == load_column) then
+      call table%echo_array("  VALUE", deck%step_values(load%offset + 1:load%offset + deck%n), unit)
+    else
+      call table%echo_array("  VALUE", assur_load_steps(deck, load), unit)
+    end if
+  end subroutine echo_load
+
+  !> The step table's load-edge marks (the coarse-step warning) of one load: a constant
+  !> has none (skipped); a step_values column is passed as given, other schedules computed
+  !> into a temporary.
+  pure subroutine note_load(deck, load, table)
+    !> Validated deck.
+    type(assur_deck_t), intent(in) :: deck
+    !> The load's schedule.
+    type(load_schedule_t), intent(in) :: load
+    type(step_table_t), intent(inout) :: table
+    select case (load%kind)
+    case (load_constant)
+      return
+    case (load_column)
+      call table%note_load(deck%step_values(load%offset + 1:load%offset + deck%n))
+    case default
+      call table%note_load(assur_load_steps(deck, load))
+    end select
+  end subroutine note_load
 
   !> INPUT DATA lines of the friction of result pair `ip`: F, and R (turning pair) or
   !> CONTACT_SPAN (sliding pair; 0: resultant-normal model), named prefix//name//suffix.
