@@ -16,7 +16,7 @@ program bench
   use, intrinsic :: iso_c_binding, only: c_int, c_size_t
   use kinetostat_kinds, only: wp
   use kinetostat_error, only: error_t
-  use kinetostat_deck, only: deck_source_t, deck_source_from_text, load_deck, read_group_name
+  use kinetostat_deck, only: deck_source_t, deck_source_from_text, load_deck, read_group_name, deck_line_count, deck_line
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_registry, only: create_mechanism
   use kinetostat_step_table, only: step_table_t
@@ -205,16 +205,16 @@ contains
     case default
       extra = "dphi = "//trim(dphi)//", n = "//trim(count)//", ds_dphi = "//trim(count)//"*0.01"
     end select
-    last = size(source%lines)
-    do k = size(source%lines), 1, -1
-      if (adjustl(source%lines(k)) == "/") then
+    last = deck_line_count(source)
+    do k = deck_line_count(source), 1, -1
+      if (adjustl(deck_line(source, k)) == "/") then
         last = k
         exit
       end if
     end do
     text = ""
     do k = 1, last - 1
-      text = text//trim(source%lines(k))//new_line("a")
+      text = text//trim(deck_line(source, k))//new_line("a")
     end do
     text = text//"  "//extra//new_line("a")//"/"//new_line("a")
   end function scaled_deck

@@ -7,7 +7,7 @@ module test_assur_ext
   use kinetostat_error, only: error_t
   use kinetostat_vec2, only: magnitude
   use kinetostat_text, only: real_str
-  use kinetostat_deck, only: deck_source_t, load_deck, deck_source_from_text
+  use kinetostat_deck, only: deck_source_t, load_deck, deck_source_from_text, deck_line_count, deck_line
   use kinetostat_assur, only: assur_step_t, pair_index, crank_pin_index
   use kinetostat_assur_deck, only: assur_deck_t, read_assur_deck, assur_phi1_deg, assur_omega1, assur_load_value
   use kinetostat_assur_layout, only: assur_solve
@@ -80,8 +80,8 @@ contains
       return
     end if
     text = ""
-    do i = 1, size(source%lines)
-      text = text//trim(source%lines(i))//new_line("a")
+    do i = 1, deck_line_count(source)
+      text = text//trim(deck_line(source, i))//new_line("a")
     end do
     worst = pr3050_difference(text)
     write (detail, '("largest relative difference ",es10.3)') worst
@@ -208,8 +208,8 @@ contains
     call load_deck(path, source, error)
     if (allocated(error)) return
     text = ""
-    do i = 1, size(source%lines)
-      text = text//trim(source%lines(i))//new_line("a")
+    do i = 1, deck_line_count(source)
+      text = text//trim(deck_line(source, i))//new_line("a")
     end do
     at = index(text, old)
     if (at > 0) text = text(:at - 1)//new//text(at + len(old):)

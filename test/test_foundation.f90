@@ -7,7 +7,7 @@ module test_foundation
   use kinetostat_text, only: number_str, int_str
   use kinetostat_deck, only: deck_source_t, load_deck, deck_source_from_text, read_group_name, &
     deck_context_t, unset_real, unset_bits, is_set, is_whole_in, require_whole, require_set, &
-    steps_over_turn, deck_array_capacities, max_deck_array
+    steps_over_turn, deck_array_capacities, max_deck_array, deck_line_count, deck_line, deck_line_length
   use kinetostat_vec2, only: angle_360_deg, angle_180_deg, cross, perp, rotate, snap_noise
   use kinetostat_selfcheck, only: link_residual, power_mismatch, link_balance_t, balance_add_force, &
     equilibrium_residual
@@ -210,12 +210,12 @@ contains
       text = random_deck()
       call deck_source_from_text("random", text, src)
       allocate (a(full), source=unset_real)
-      read (src%lines, nml=g, iostat=ios_full, iomsg=msg)
+      read (src%records, nml=g, iostat=ios_full, iomsg=msg)
       full_values = a
       deallocate (a)
       capacity = deck_array_capacities(src, "g", ["a"])
       allocate (a(capacity(1)), source=unset_real)
-      read (src%lines, nml=g, iostat=ios_sized, iomsg=msg)
+      read (src%records, nml=g, iostat=ios_sized, iomsg=msg)
       if ((ios_full == 0) .neqv. (ios_sized == 0)) then
         call note_bad()
       else if (ios_full == 0) then
@@ -313,34 +313,36 @@ contains
 
     call deck_source_from_text("<text>", "&grp"//lf//" a = 1.5,"//lf//lf//" b = 2 /", src)
     call check_text(t, "source name", "<text>", src%path)
-    call check_true(t, "4 lines from 3 LFs, no final LF", size(src%lines) == 4, "got "//number_str(real(size(src%lines), wp)))
-    call check_true(t, "line length = longest line (9)", len(src%lines) == 9, "got "//number_str(real(len(src%lines), wp)))
-    if (size(src%lines) == 4) then
-      call check_text(t, "line 1", "&grp", trim(src%lines(1)))
-      call check_text(t, "empty line 3 kept", "", trim(src%lines(3)))
-      call check_text(t, "last line without LF kept", " b = 2 /", trim(src%lines(4)))
+    call check_true(t, "4 lines from 3 LFs, no final LF", deck_line_count(src) == 4 .and. size(src%records) == 4, &
+                    "got "//number_str(real(deck_line_count(src), wp)))
+    call check_true(t, "record length = longest line (9)", len(src%records) == 9, "got "//number_str(real(len(src%records), wp)))
+    if (deck_line_count(src) == 4) then
+      call check_text(t, "line 1", "&grp", deck_line(src, 1))
+      call check_text(t, "empty line 3 kept", "", deck_line(src, 3))
+      call check_text(t, "last line without LF kept", " b = 2 /", deck_line(src, 4))
     end if
     a = -1.0_wp; b = -1.0_wp
-    read (src%lines, nml=grp, iostat=ios, iomsg=msg)
+    read (src%records, nml=grp, iostat=ios, iomsg=msg)
     call check_true(t, "namelist READ from a source without final newline", ios == 0, trim(msg))
     call check_close(t, "namelist READ a", 1.5_wp, a, 0.0_wp, 0.0_wp)
     call check_close(t, "namelist READ b", 2.0_wp, b, 0.0_wp, 0.0_wp)
 
     call deck_source_from_text("crlf", bom//"&Grp, a = 3"//cr//lf//"/"//cr//lf, src)
-    call check_true(t, "CRLF text with final CRLF: 2 lines", size(src%lines) == 2, &
-                    "got "//number_str(real(size(src%lines), wp)))
-    if (size(src%lines) == 2) then
-      call check_text(t, "BOM and CR stripped from line 1", "&Grp, a = 3", trim(src%lines(1)))
-      call check_text(t, "CR stripped from line 2", "/", trim(src%lines(2)))
+    call check_true(t, "CRLF text with final CRLF: 2 lines", deck_line_count(src) == 2, &
+                    "got "//number_str(real(deck_line_count(src), wp)))
+    if (deck_line_count(src) == 2) then
+      call check_text(t, "BOM and CR stripped from line 1", "&Grp, a = 3", deck_line(src, 1))
+      call check_text(t, "CR stripped from line 2", "/", deck_line(src, 2))
     end if
     call read_group_name(src, group, error)
     call check_text(t, "group name after a BOM, lower case", "grp", group)
     a = -1.0_wp
-    read (src%lines, nml=grp, iostat=ios, iomsg=msg)
+    read (src%records, nml=grp, iostat=ios, iomsg=msg)
     call check_true(t, "namelist READ of a CRLF source with BOM", ios == 0 .and. a == 3.0_wp, trim(msg))
 
     call deck_source_from_text("empty", "", src)
-    call check_true(t, "empty text: no lines", size(src%lines) == 0, "got "//number_str(real(size(src%lines), wp)))
+    call check_true(t, "empty text: no lines", deck_line_count(src) == 0 .and. size(src%records) == 0, &
+                    "got "//number_str(real(deck_line_count(src), wp)))
     call read_group_name(src, group, error)
     call check_true(t, "empty text: no group -> input error", allocated(error), "no error")
     if (allocated(error)) then
@@ -366,12 +368,12 @@ contains
     call load_deck(path, src, error)
     call check_true(t, "load_deck reads the file", .not. allocated(error), message_of(error))
     call check_text(t, "load_deck keeps the path for messages", path, src%path)
-    call check_true(t, "load_deck: 3 lines", size(src%lines) == 3, "got "//number_str(real(size(src%lines), wp)))
-    call check_true(t, "load_deck: a 3005-character line is kept whole", len(src%lines) == 3005, &
-                    "line length "//number_str(real(len(src%lines), wp)))
-    if (size(src%lines) == 3) then
-      call check_text(t, "load_deck: BOM and CR stripped", "&g", trim(src%lines(1)))
-      call check_text(t, "load_deck: last line without newline", "/", trim(src%lines(3)))
+    call check_true(t, "load_deck: 3 lines", deck_line_count(src) == 3, "got "//number_str(real(deck_line_count(src), wp)))
+    if (deck_line_count(src) == 3) then
+      call check_true(t, "load_deck: a 3005-character line is kept whole", deck_line(src, 2) == " x = "//long_value, &
+                      "line length "//number_str(real(deck_line_length(src, 2), wp)))
+      call check_text(t, "load_deck: BOM and CR stripped", "&g", deck_line(src, 1))
+      call check_text(t, "load_deck: last line without newline", "/", deck_line(src, 3))
     end if
     open (newunit=unit, file=path, status='old')
     close (unit, status='delete')
@@ -405,7 +407,7 @@ contains
     ! NaN typed in a deck: set (not the sentinel), then rejected as not finite
     typed = unset_real
     call deck_source_from_text("nan", "&nums typed = nan, NaN(0x1), -nan /", src)
-    read (src%lines, nml=nums, iostat=ios, iomsg=msg)
+    read (src%records, nml=nums, iostat=ios, iomsg=msg)
     call check_true(t, "namelist READ of typed NaNs", ios == 0, trim(msg))
     call check_true(t, "typed NaNs are not the sentinel", all(is_set(typed)), "a typed NaN reads as unset_real")
     call require_set(ctx, "typed", typed(2), error)

@@ -297,7 +297,7 @@ contains
     type(error_t), allocatable, intent(out) :: error
     !> As long as the whole deck: an unterminated quote reads the rest of the deck into it
     !> (a shorter variable makes gfortran print a runtime warning); at most 80 are kept.
-    character(len=size(source%lines) * len(source%lines) + 1) :: title
+    character(len=size(source%records) * len(source%records) + 1) :: title
     !> Integer deck variables, read as reals (see require_whole).
     real(wp) :: frame_id, crank_id, n
     !> Linear actuator as driver: dyad number and pair 1..3 (whole numbers, read as reals).
@@ -354,12 +354,12 @@ contains
     allocate (omega1_step(capacity(1)), eps1_step(capacity(2)), step_values(capacity(3)), phi1(capacity(4)), &
               source=unset_real)
 
-    read (source%lines, nml=assur, iostat=ios, iomsg=msg)
+    read (source%records, nml=assur, iostat=ios, iomsg=msg)
     if (ios /= 0) then
       ! find the line and the assignment that failed (gfortran's message does not say)
       call probe%start(source, ios, msg)
       do while (probe%more(source))
-        read (probe%lines, nml=assur, iostat=ios, iomsg=msg)
+        read (probe%records, nml=assur, iostat=ios, iomsg=msg)
         call probe%take(ios, msg)
       end do
       call probe%report(source, ctx, error)

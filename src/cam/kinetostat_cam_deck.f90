@@ -113,12 +113,12 @@ contains
     capacity = deck_array_capacities(source, ctx%group, [character(len=7) :: "theta", "f2", "vdir", "ds_dphi"])
     allocate (theta(capacity(1)), f2(capacity(2)), vdir(capacity(3)), ds_dphi(capacity(4)), source=unset_real)
 
-    read (source%lines, nml=cam, iostat=ios, iomsg=msg)
+    read (source%records, nml=cam, iostat=ios, iomsg=msg)
     if (ios /= 0) then
       ! find the line and the assignment that failed (gfortran's message does not say)
       call probe%start(source, ios, msg)
       do while (probe%more(source))
-        read (probe%lines, nml=cam, iostat=ios, iomsg=msg)
+        read (probe%records, nml=cam, iostat=ios, iomsg=msg)
         call probe%take(ios, msg)
       end do
       call probe%report(source, ctx, error)

@@ -737,7 +737,7 @@ contains
     if (.not. allocated(error)) call read_output_file(trim(args%diff_files(2)), b, error)
     if (.not. allocated(error)) then
       call known_columns(catalog)
-      call diff_outputs(a%path, a%lines, b%path, b%lines, catalog, args%diff_options, report, status, error)
+      call diff_outputs(a%path, a%records, b%path, b%records, catalog, args%diff_options, report, status, error)
     end if
     if (.not. allocated(error) .and. .not. args%quiet) call write_output_stdout(report, error)
     if (allocated(error)) then
@@ -760,7 +760,7 @@ contains
       call fatal_error(error, exit_input, path//": no such file")
       return
     end if
-    call load_deck(path, source, error)
+    call load_deck(path, source, error, whole_lines=.true.)
     if (allocated(error)) error%message = path//": cannot read the file"
   end subroutine read_output_file
 

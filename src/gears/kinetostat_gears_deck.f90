@@ -101,12 +101,12 @@ contains
     alpha_w23 = unset_real; beta = unset_real; gamma = unset_real
     z1 = unset_real; z2 = unset_real; z3 = unset_real; k = unset_real
 
-    read (source%lines, nml=gears, iostat=ios, iomsg=msg)
+    read (source%records, nml=gears, iostat=ios, iomsg=msg)
     if (ios /= 0) then
       ! find the line and the assignment that failed (gfortran's message does not say)
       call probe%start(source, ios, msg)
       do while (probe%more(source))
-        read (probe%lines, nml=gears, iostat=ios, iomsg=msg)
+        read (probe%records, nml=gears, iostat=ios, iomsg=msg)
         call probe%take(ios, msg)
       end do
       call probe%report(source, ctx, error)

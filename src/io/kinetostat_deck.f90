@@ -13,6 +13,7 @@ module kinetostat_deck
   private
   public :: deck_context_t, unset_real, unset_bits, max_deck_array, max_steps
   public :: deck_source_t, load_deck, deck_source_from_text, stdin_deck_path, stdin_deck_name
+  public :: deck_line_count, deck_line, deck_line_length
   public :: read_group_name, namelist_failure, deck_error, namelist_probe_t, require_all_set
   public :: is_set, require_set, require_positive, require_nonnegative, require_rule
   public :: is_whole_in, require_whole
@@ -40,30 +41,45 @@ module kinetostat_deck
   !> Largest number of steps a run may have.
   integer, parameter :: max_steps = 1000000
 
-  !> A deck read into memory: its lines, ready for an internal namelist READ.
+  !> A deck read into memory: its text as the records of an internal file, ready for a
+  !> namelist READ, and which line of the deck each record belongs to.
+  !> A record is a line of the deck, except that a line much longer than the others (10^6
+  !> per-step values on one line) is cut into several records after value separators (see
+  !> `cut_line`), so the records, blank-padded to the longest, do not multiply the longest
+  !> line by the number of lines. The end of a record separates values like a blank, so the
+  !> READ is the same; messages name the deck's lines (`deck_line`, `deck_line_count`).
   type :: deck_source_t
     !> Name of the deck in messages (the file path as given, or e.g. "<stdin>").
     character(len=:), allocatable :: path
-    !> The deck's lines without line terminators (LF, CRLF) and without a leading UTF-8
-    !> byte-order mark, blank-padded to the longest line (length at least 1).
-    character(len=:), allocatable :: lines(:)
+    !> The records: the deck's lines (or pieces of them) without line terminators (LF, CRLF)
+    !> and without a leading UTF-8 byte-order mark, blank-padded to the longest record
+    !> (length at least 1).
+    character(len=:), allocatable :: records(:)
+    !> Records of line k: first_record(k) to first_record(k + 1) - 1 (one at least; size:
+    !> the number of lines + 1).
+    integer, allocatable :: first_record(:)
+    !> Characters of its line that each record holds (the rest is blank padding).
+    integer, allocatable :: record_length(:)
+    !> Lines longer than this many characters were cut (huge(1): no line was cut).
+    integer :: cut_width = huge(1)
   end type deck_source_t
 
   !> Finds where a namelist READ of a deck failed, so that the message can name the line,
   !> the assignment and the variable (gfortran's iomsg names a token or an item number only).
   !> The mechanism READs copies of the deck cut short and closed by '/': first after each
   !> line (bisection: the first line whose copy fails), then after each assignment on that
-  !> line. Use:
+  !> line (a copy's records are the deck's, the line cut short is cut into records as the
+  !> deck's lines are). Use:
   !>     call probe%start(source, ios, msg)
   !>     do while (probe%more(source))
-  !>       read (probe%lines, nml=group, iostat=ios, iomsg=msg)
+  !>       read (probe%records, nml=group, iostat=ios, iomsg=msg)
   !>       call probe%take(ios, msg)
   !>     end do
   !>     call probe%report(source, ctx, error)
   type :: namelist_probe_t
-    !> The copy to READ next.
-    character(len=:), allocatable :: lines(:)
-    !> iostat of the READ of `lines` (see `take`).
+    !> The copy to READ next (records of an internal file).
+    character(len=:), allocatable :: records(:)
+    !> iostat of the READ of `records` (see `take`).
     integer :: ios = 0
     !> iomsg of that READ.
     character(len=512) :: msg = ""
@@ -76,7 +92,7 @@ module kinetostat_deck
     !> 1: looking for the line, 2: for the assignment on it, 3: trying other values in
     !> the assignment (which type the variable has), 4: done.
     integer :: stage = 4
-    !> Line count (stage 1), assignment index (stage 2) or other value (stage 3) in `lines`.
+    !> Line count (stage 1), assignment index (stage 2) or other value (stage 3) in `records`.
     integer :: trying = 0
     !> Stage 3: whether the assignment reads with its first value alone, with 1, with
     !> .true., with 'x' instead of its value.
@@ -118,24 +134,31 @@ contains
   !> without a final newline, optional UTF-8 byte-order mark). The path "-" reads standard
   !> input to its end (the deck is then named "<stdin>"); a pipe given as a path
   !> (/dev/stdin, /dev/fd/N, a FIFO) is read to its end as well: read once, never rewound.
-  subroutine load_deck(path, source, error)
+  subroutine load_deck(path, source, error, whole_lines)
     !> Deck file, or "-" for standard input.
     character(*), intent(in) :: path
-    !> The deck's lines.
+    !> The deck's records.
     type(deck_source_t), intent(out) :: source
     !> Set when the file cannot be opened or read.
     type(error_t), allocatable, intent(out) :: error
+    !> One record per line, however long (for a file read as lines, not as a namelist).
+    logical, intent(in), optional :: whole_lines
+    integer :: cut_width
     character(len=:), allocatable :: text
     character(len=1) :: byte
     integer :: unit, ios, n
     integer(int64) :: file_size
     character(len=512) :: msg
+    cut_width = -1
+    if (present(whole_lines)) then
+      if (whole_lines) cut_width = huge(1)
+    end if
     if (path == stdin_deck_path) then
       if (.not. read_standard_input(text)) then
         call fatal_error(error, exit_input, stdin_deck_name//": cannot read the deck from standard input")
         return
       end if
-      call deck_source_from_text(stdin_deck_name, text, source)
+      call deck_source_from_text(stdin_deck_name, text, source, cut_width)
       return
     end if
     open (newunit=unit, file=path, status='old', action='read', access='stream', form='unformatted', &
@@ -167,42 +190,115 @@ contains
       call fatal_error(error, exit_input, path//": cannot read deck: "//trim(msg))
       return
     end if
-    call deck_source_from_text(path, text, source)
+    call deck_source_from_text(path, text, source, cut_width)
   end subroutine load_deck
 
   !> A deck from text held in memory: lines split at LF, a CR before each LF dropped, a
-  !> leading UTF-8 byte-order mark dropped; a last line without LF is kept.
-  pure subroutine deck_source_from_text(name, text, source)
+  !> leading UTF-8 byte-order mark dropped; a last line without LF is kept. A line is one
+  !> record, unless cutting long lines into records (see `cut_line`) at the width that
+  !> needs the least memory (see `chosen_cut_width`) saves 1 MiB or more.
+  pure subroutine deck_source_from_text(name, text, source, cut_width)
     !> Name of the deck in messages.
     character(*), intent(in) :: name
     !> The deck's text.
     character(*), intent(in) :: text
-    !> The deck's lines.
+    !> The deck's records.
     type(deck_source_t), intent(out) :: source
+    !> Cut the lines longer than this (characters; huge(1): none; default or < 1: chosen
+    !> as above).
+    integer, intent(in), optional :: cut_width
     character(len=*), parameter :: bom = char(239)//char(187)//char(191)
-    character(len=*), parameter :: lf = achar(10), cr = achar(13)
-    integer :: first, n_lines, longest, i, line_start, line_end, k
+    integer :: first
     first = 1
     if (len(text) >= 3) then
       if (text(1:3) == bom) first = 4
     end if
-    ! count lines and the longest one
-    n_lines = 0
-    longest = 1
-    line_start = first
-    do while (line_start <= len(text))
-      call next_line(line_start, line_end, i)
-      n_lines = n_lines + 1
-      longest = max(longest, line_end - line_start + 1)
-      line_start = i
-    end do
     source%path = name
-    allocate (character(len=longest) :: source%lines(n_lines))
-    line_start = first
+    call records_from_text(text(first:), source, cut_width)
+  end subroutine deck_source_from_text
+
+  !> The records of `text` (see deck_source_from_text; no byte-order mark handling).
+  pure subroutine records_from_text(text, source, cut_width)
+    !> The deck's text.
+    character(*), intent(in) :: text
+    !> The deck (its `path` is left as it is).
+    type(deck_source_t), intent(inout) :: source
+    !> Cut the lines longer than this (characters; huge(1): none; default or < 1: chosen).
+    integer, intent(in), optional :: cut_width
+    character(len=*), parameter :: lf = achar(10), cr = achar(13)
+    !> Saving in bytes below which no line is cut (when the width is chosen).
+    integer(int64), parameter :: least_saving = 1048576
+    integer, allocatable :: line_start(:), line_end(:), lengths(:)
+    integer :: n_lines, longest, i, k, s, n_records, width, depth, r, at, group_line
+    character(len=1) :: quote
+    ! where the lines are
+    n_lines = 0
+    s = 1
+    do while (s <= len(text))
+      call next_line(s, k, i)
+      n_lines = n_lines + 1
+      s = i
+    end do
+    allocate (line_start(n_lines), line_end(n_lines))
+    s = 1
     do k = 1, n_lines
-      call next_line(line_start, line_end, i)
-      source%lines(k) = text(line_start:line_end)
-      line_start = i
+      line_start(k) = s
+      call next_line(line_start(k), line_end(k), s)
+    end do
+    longest = 1
+    if (n_lines > 0) longest = max(1, maxval(line_end - line_start + 1))
+    ! the first line opening a group: where the namelist READ starts to read values
+    group_line = n_lines + 1
+    do k = 1, n_lines
+      at = verify(text(line_start(k):line_end(k)), " ")
+      if (at == 0) cycle
+      if (text(line_start(k) + at - 1:line_start(k) + at - 1) == "&") then
+        group_line = k
+        exit
+      end if
+    end do
+    width = -1
+    if (present(cut_width)) width = cut_width
+    if (width < 1) width = chosen_cut_width(line_end - line_start + 1, group_line)
+    n_records = 0
+    if (width < longest) then
+      ! cut the long lines; the quote and parenthesis state carries from line to line
+      allocate (source%first_record(n_lines + 1))
+      allocate (lengths(n_lines + 64))
+      quote = " "
+      depth = 0
+      do k = 1, n_lines
+        source%first_record(k) = n_records + 1
+        call cut_line(text(line_start(k):line_end(k)), width, k >= group_line, quote, depth, lengths, n_records)
+      end do
+      source%first_record(n_lines + 1) = n_records + 1
+      ! a chosen width: cut only when it saves least_saving or more
+      if (.not. present(cut_width)) then
+        if (int(n_records, int64) * record_width(lengths(1:n_records)) + least_saving > int(n_lines, int64) * longest) &
+          width = huge(1)
+      end if
+    end if
+    if (width >= longest) then
+      ! one record per line
+      if (allocated(source%first_record)) deallocate (source%first_record)
+      allocate (character(len=longest) :: source%records(n_lines))
+      do k = 1, n_lines
+        source%records(k) = text(line_start(k):line_end(k))
+      end do
+      source%cut_width = huge(1)
+      return
+    end if
+    source%cut_width = width
+    source%record_length = lengths(1:n_records)
+    deallocate (lengths)
+    width = record_width(source%record_length)
+    allocate (character(len=width) :: source%records(n_records))
+    do k = 1, n_lines
+      at = line_start(k)
+      do r = source%first_record(k), source%first_record(k + 1) - 1
+        call put_record(source%records(r), text(at:), source%record_length(r))
+        at = at + abs(source%record_length(r))
+      end do
     end do
   contains
     !> The line starting at `s`: its last character `e` (without LF or CR LF) and the start
@@ -223,7 +319,348 @@ contains
         if (text(e:e) == cr) e = e - 1
       end if
     end subroutine next_line
-  end subroutine deck_source_from_text
+  end subroutine records_from_text
+
+  !> A record of a piece of a line: the first `abs(length)` characters of `text`, after a
+  !> '!' when `length` < 0 (the piece continues a comment).
+  pure subroutine put_record(record, text, length)
+    !> The record.
+    character(*), intent(out) :: record
+    !> The line from the piece on.
+    character(*), intent(in) :: text
+    !> The piece's length (< 0: a comment's continuation).
+    integer, intent(in) :: length
+    if (length < 0) then
+      record = "!"//text(1:-length)
+    else
+      record = text(1:length)
+    end if
+  end subroutine put_record
+
+  !> Length of the longest record of pieces `lengths` (see put_record), at least 1.
+  pure integer function record_width(lengths)
+    !> Piece lengths.
+    integer, intent(in) :: lengths(:)
+    record_width = max(1, maxval([0, abs(lengths) + merge(1, 0, lengths < 0)]))
+  end function record_width
+
+  !> The width to cut long lines at: the one from 32 up whose records take the least memory
+  !> (a line longer than it taken as ceiling(length / (width - 24)) records: a value list
+  !> has a place to cut every 24 characters at least), huge(1) when that is no less than
+  !> records as long as the longest line. Lines before the first group are not cut (they
+  !> count as as many records as their length needs).
+  pure integer function chosen_cut_width(lengths, group_line) result(width)
+    !> Length of each line.
+    integer, intent(in) :: lengths(:)
+    !> The first line opening a group.
+    integer, intent(in) :: group_line
+    !> Widths tried one by one (beyond: powers of two).
+    integer, parameter :: tried = 4096
+    integer(int64) :: cost, best, line_count(tried)
+    integer :: longest, candidate, k, least, l
+    width = huge(1)
+    if (size(lengths) == 0) return
+    longest = max(1, maxval(lengths))
+    best = int(size(lengths), int64) * longest
+    least = 32
+    ! lines before the group: the records are at least as long
+    if (group_line > 1) least = max(least, maxval(lengths(1:min(group_line - 1, size(lengths)))))
+    ! how many lines of each length up to `tried`
+    line_count = 0
+    do k = 1, size(lengths)
+      if (lengths(k) >= 1 .and. lengths(k) <= tried) line_count(lengths(k)) = line_count(lengths(k)) + 1
+    end do
+    candidate = least
+    do while (candidate < longest)
+      ! lines no longer than the candidate: one record; longer: several
+      cost = int(count(lengths <= candidate), int64)
+      do l = candidate + 1, tried
+        cost = cost + line_count(l) * ((l + candidate - 25) / (candidate - 24))
+      end do
+      do k = 1, size(lengths)
+        if (lengths(k) > tried .and. lengths(k) > candidate) cost = cost + (lengths(k) + candidate - 25) / (candidate - 24)
+      end do
+      cost = cost * candidate
+      if (cost < best) then
+        best = cost
+        width = candidate
+      end if
+      if (candidate < tried) then
+        candidate = candidate + max(1, candidate / 64)
+      else
+        if (candidate > longest / 2) exit
+        candidate = candidate * 2
+      end if
+    end do
+  end function chosen_cut_width
+
+  !> Cut one line into pieces of at most `width` characters where it can be: after a comma
+  !> followed (after blanks and tabs) by something else than a comma or '!', or after a
+  !> blank followed by neither a blank, a tab, ',', ';', '=', '(', '*' nor '!', each outside quotes
+  !> and parentheses and where the piece holds more than blanks, tabs and commas; or
+  !> anywhere in a '!' comment (one after a blank, a tab or a comma, or starting the line),
+  !> the next record then starting with a '!' of its own.
+  !> gfortran's namelist READ takes the end of a record there as it takes the blank or the
+  !> comment's end ("1,<end>2", "1 <end>2", "a = <end>1", "3* <end>0.5", "1, ! c<end>! d<end>2"
+  !> read as on one line). Not so elsewhere: "1<end>, 2" reads a null value between,
+  !> "a = <end>!<end>, 2" reads an element more than "a = !<end>, 2", and a value after a
+  !> record "," or "" beyond an array's end is not named in the message ("Cannot match
+  !> namelist object name"). A piece is longer than
+  !> `width` when the line has no such place within it. A line before the first group
+  !> (`in_group` false), which the READ skips, is cut only when it is a comment. The
+  !> lengths of the pieces are appended to `lengths(n + 1:)` (grown as needed; negative for
+  !> a piece that continues a comment, see put_record) and `n` counts them.
+  pure subroutine cut_line(line, width, in_group, quote, depth, lengths, n)
+    !> The line.
+    character(*), intent(in) :: line
+    !> Longest record wanted (characters).
+    integer, intent(in) :: width
+    !> The line is the first group's line or after it.
+    logical, intent(in) :: in_group
+    !> The quote a text continued from an earlier line is in (" " outside), at the start
+    !> of the line on entry and at its end on return.
+    character(len=1), intent(inout) :: quote
+    !> Depth of parentheses, at the start of the line on entry and at its end on return.
+    integer, intent(inout) :: depth
+    !> Piece lengths of the lines so far.
+    integer, allocatable, intent(inout) :: lengths(:)
+    !> Pieces in `lengths`.
+    integer, intent(inout) :: n
+    character(len=*), parameter :: tab = achar(9)
+    integer :: s, i, cut, comment_at, mark, solid_at, next
+    logical :: comment
+    character(len=1) :: c
+    s = 1
+    cut = 0
+    comment = .false.
+    comment_at = 0
+    mark = 0
+    solid_at = 0
+    i = 1
+    if (len(line) <= width .and. .not. in_group) then
+      ! nothing to cut, no state to follow
+      call append_length(lengths, n, len(line))
+      return
+    end if
+    if (.not. in_group) then
+      i = verify(line, " ")
+      if (i == 0) i = len(line) + 1
+      if (i <= len(line)) then
+        if (line(i:i) /= "!") i = len(line) + 1
+      end if
+      if (i <= len(line)) then
+        comment = .true.
+        comment_at = i
+      end if
+    end if
+    do while (i <= len(line))
+      c = line(i:i)
+      if (index(" ,"//tab, c) == 0) solid_at = i
+      if (comment) then
+        if (i < len(line)) cut = i
+      else if (quote /= " ") then
+        if (c == quote) quote = " "
+      else if (depth > 0) then
+        if (c == "(") depth = depth + 1
+        if (c == ")") depth = depth - 1
+      else if (c == "'" .or. c == '"') then
+        quote = c
+      else if (c == "(") then
+        depth = 1
+      else if (c == "!") then
+        ! a comment after a value with no blank or comma between ("1.5!x"): left whole
+        if (verify(line(1:i - 1), " "//tab) > 0 .and. index(" ,"//tab, line(max(i - 1, 1):max(i - 1, 1))) == 0) exit
+        comment = .true.
+        comment_at = i
+        if (i < len(line)) cut = i
+      else if (i < len(line) .and. c == "," .and. solid_at >= s) then
+        ! not before blanks and a comma or a comment, nor before blanks alone
+        next = verify(line(i + 1:), " "//tab)
+        if (next > 0) then
+          if (index(",!", line(i + next:i + next)) == 0) cut = i
+        end if
+      else if (i < len(line) .and. c == " " .and. solid_at >= s) then
+        if (index(" ,;=(*!"//tab, line(i + 1:i + 1)) == 0) cut = i
+      end if
+      if (len(line) - s + 1 + mark > width .and. i >= s + width - 1 - mark .and. cut >= s) then
+        ! the rest does not fit and the piece cannot grow: it ends at the last place found
+        call append_length(lengths, n, merge(-(cut - s + 1), cut - s + 1, mark == 1))
+        s = cut + 1
+        i = cut
+        if (comment_at > 0 .and. cut >= comment_at) then
+          ! the next piece continues the comment
+          mark = 1
+          comment = .true.
+        else
+          ! a place to cut outside a comment is outside quotes and parentheses
+          quote = " "
+          depth = 0
+          comment = .false.
+          comment_at = 0
+          mark = 0
+        end if
+      end if
+      i = i + 1
+    end do
+    call append_length(lengths, n, merge(-(len(line) - s + 1), len(line) - s + 1, mark == 1))
+  end subroutine cut_line
+
+  !> One more piece length: lengths(n + 1) = length (the array grown as needed).
+  pure subroutine append_length(lengths, n, length)
+    !> Piece lengths.
+    integer, allocatable, intent(inout) :: lengths(:)
+    !> Pieces in `lengths`.
+    integer, intent(inout) :: n
+    !> Length of the new piece.
+    integer, intent(in) :: length
+    integer, allocatable :: grown(:)
+    if (n == size(lengths)) then
+      allocate (grown(2 * size(lengths) + 64))
+      grown(1:n) = lengths(1:n)
+      call move_alloc(grown, lengths)
+    end if
+    n = n + 1
+    lengths(n) = length
+  end subroutine append_length
+
+  !> Number of lines of the deck.
+  pure integer function deck_line_count(source)
+    !> The deck.
+    type(deck_source_t), intent(in) :: source
+    deck_line_count = 0
+    if (allocated(source%first_record)) then
+      deck_line_count = size(source%first_record) - 1
+    else if (allocated(source%records)) then
+      deck_line_count = size(source%records)
+    end if
+  end function deck_line_count
+
+  !> The records of line `k`: first to last.
+  pure subroutine line_records(source, k, first, last)
+    !> The deck.
+    type(deck_source_t), intent(in) :: source
+    !> Line number.
+    integer, intent(in) :: k
+    !> Its first and last record.
+    integer, intent(out) :: first, last
+    if (allocated(source%first_record)) then
+      first = source%first_record(k)
+      last = source%first_record(k + 1) - 1
+    else
+      first = k
+      last = k
+    end if
+  end subroutine line_records
+
+  !> The characters of its line that record `r` holds: columns `from` to `to` of the
+  !> record (the last record of a line without trailing blanks).
+  pure subroutine record_part(source, r, last, from, to)
+    !> The deck.
+    type(deck_source_t), intent(in) :: source
+    !> Record number.
+    integer, intent(in) :: r
+    !> It is the last record of its line.
+    logical, intent(in) :: last
+    !> First and last column of the record that belong to the line.
+    integer, intent(out) :: from, to
+    from = 1
+    if (allocated(source%record_length)) then
+      if (source%record_length(r) < 0) from = 2
+      to = from - 1 + abs(source%record_length(r))
+    else
+      to = len(source%records(r))
+    end if
+    if (last) to = from - 1 + len_trim(source%records(r)(from:to))
+  end subroutine record_part
+
+  !> Length of line `k` of the deck (characters, without its terminator and trailing blanks).
+  pure integer function deck_line_length(source, k)
+    !> The deck.
+    type(deck_source_t), intent(in) :: source
+    !> Line number.
+    integer, intent(in) :: k
+    integer :: r, first, last, from, to
+    call line_records(source, k, first, last)
+    deck_line_length = 0
+    do r = first, last
+      call record_part(source, r, r == last, from, to)
+      deck_line_length = deck_line_length + to - from + 1
+    end do
+  end function deck_line_length
+
+  !> Line `k` of the deck as it was, without its terminator and trailing blanks.
+  pure function deck_line(source, k) result(line)
+    !> The deck.
+    type(deck_source_t), intent(in) :: source
+    !> Line number.
+    integer, intent(in) :: k
+    character(len=:), allocatable :: line
+    line = line_slice(source, k, 1, huge(1))
+  end function deck_line
+
+  !> Columns `from` to `to` of line `k` (cut to the line).
+  pure function line_slice(source, k, from, to) result(text)
+    !> The deck.
+    type(deck_source_t), intent(in) :: source
+    !> Line number.
+    integer, intent(in) :: k
+    !> First and last column wanted.
+    integer, intent(in) :: from, to
+    character(len=:), allocatable :: text
+    integer :: r, col, a, b, at, first, last, part_from, part_to
+    allocate (character(len=max(0, min(to, deck_line_length(source, k)) - max(from, 1) + 1)) :: text)
+    call line_records(source, k, first, last)
+    col = 0
+    at = 0
+    do r = first, last
+      ! columns col + 1 .. col + part_to - part_from + 1 of the line are in record r
+      call record_part(source, r, r == last, part_from, part_to)
+      a = max(from - col, 1)
+      b = min(to - col, part_to - part_from + 1)
+      if (b >= a) then
+        text(at + 1:at + b - a + 1) = source%records(r)(part_from + a - 1:part_from + b - 1)
+        at = at + b - a + 1
+      end if
+      col = col + part_to - part_from + 1
+      if (col >= to) exit
+    end do
+  end function line_slice
+
+  !> The first column from `from` on of line `k` whose character is not in `set` (`in_set`
+  !> false) or is in `set` (`in_set` true); 0 when there is none.
+  pure integer function line_search(source, k, from, set, in_set) result(column)
+    !> The deck.
+    type(deck_source_t), intent(in) :: source
+    !> Line number.
+    integer, intent(in) :: k
+    !> First column looked at.
+    integer, intent(in) :: from
+    !> The characters.
+    character(*), intent(in) :: set
+    !> Look for a character in `set` (else for one not in it).
+    logical, intent(in) :: in_set
+    integer :: r, col, a, at, first, last, part_from, part_to, n
+    call line_records(source, k, first, last)
+    col = 0
+    column = 0
+    do r = first, last
+      call record_part(source, r, r == last, part_from, part_to)
+      n = part_to - part_from + 1
+      a = max(from - col, 1)
+      if (a <= n) then
+        if (in_set) then
+          at = scan(source%records(r)(part_from + a - 1:part_to), set)
+        else
+          at = verify(source%records(r)(part_from + a - 1:part_to), set)
+        end if
+        if (at > 0) then
+          column = col + a - 1 + at
+          return
+        end if
+      end if
+      col = col + n
+    end do
+  end function line_search
 
   !> The name of the first namelist group in the deck (lower case, without '&').
   subroutine read_group_name(source, group, error)
@@ -233,20 +670,15 @@ contains
     character(len=:), allocatable, intent(out) :: group
     !> No group.
     type(error_t), allocatable, intent(out) :: error
-    character(len=:), allocatable :: line
-    integer :: k, i, j
-    do k = 1, size(source%lines)
-      line = trim(adjustl(source%lines(k)))
-      if (len(line) == 0) cycle
-      if (line(1:1) /= '&') cycle
-      j = len(line)
-      do i = 2, len(line)
-        if (index(' /,!', line(i:i)) > 0) then
-          j = i - 1
-          exit
-        end if
-      end do
-      group = lower(line(2:j))
+    integer :: k, at, j
+    do k = 1, deck_line_count(source)
+      at = line_search(source, k, 1, " ", .false.)
+      if (at == 0) cycle
+      if (line_slice(source, k, at, at) /= '&') cycle
+      ! the name ends before a blank, '/', ',' or '!' (or at the end of the line)
+      j = line_search(source, k, at + 1, ' /,!', .true.) - 1
+      if (j < 0) j = deck_line_length(source, k)
+      group = lower(line_slice(source, k, at + 1, j))
       if (len(group) == 0) call fatal_error(error, exit_input, source%path//": empty namelist group name")
       return
     end do
@@ -282,7 +714,7 @@ contains
     integer, intent(in) :: ios
     !> iomsg of the failed READ.
     character(*), intent(in) :: msg
-    integer :: k
+    integer :: k, at
     self%failure = msg
     self%stage = 4
     self%bad = 0
@@ -290,18 +722,20 @@ contains
     self%reads = .false.
     if (ios < 0) return ! end of file: no line to point at
     self%good = 0
-    do k = 1, size(source%lines)
-      if (index(adjustl(source%lines(k)), "&") == 1) then
+    do k = 1, deck_line_count(source)
+      at = line_search(source, k, 1, " ", .false.)
+      if (at == 0) cycle
+      if (line_slice(source, k, at, at) == "&") then
         self%good = k - 1
         exit
       end if
     end do
-    self%bad = size(source%lines)
+    self%bad = deck_line_count(source)
     self%trying = 0
     self%stage = 1
   end subroutine probe_start
 
-  !> The result of the READ of `lines`.
+  !> The result of the READ of `records`.
   pure subroutine probe_take(self, ios, msg)
     class(namelist_probe_t), intent(inout) :: self
     !> iostat of the READ.
@@ -312,7 +746,7 @@ contains
     self%msg = msg
   end subroutine probe_take
 
-  !> Take in the result of the last READ (if any) and prepare the next copy in `lines`;
+  !> Take in the result of the last READ (if any) and prepare the next copy in `records`;
   !> false when the place is found.
   logical function probe_more(self, source)
     class(namelist_probe_t), intent(inout) :: self
@@ -320,10 +754,11 @@ contains
     type(deck_source_t), intent(in) :: source
     character(*), parameter :: other_values(3) = [character(len=6) :: "1", ".true.", "'x'"]
     character(len=:), allocatable :: line, text, value
-    integer :: mid, cut
+    integer :: mid, cut, first, last
     probe_more = .false.
     if (self%stage == 4) return
     probe_more = .true.
+    call clear_read_state()
     select case (self%stage)
     case (1)
       if (self%trying > 0) then
@@ -337,11 +772,12 @@ contains
       if (self%bad - self%good > 1) then
         mid = (self%good + self%bad) / 2
         self%trying = mid
-        self%lines = [character(len=len(source%lines)) :: source%lines(1:mid), "/"]
+        call line_records(source, mid, first, last)
+        self%records = [character(len=len(source%records)) :: source%records(1:last), "/"]
         return
       end if
       self%stage = 2
-      self%starts = assignment_starts(source%lines(self%bad))
+      self%starts = assignment_starts(deck_line(source, self%bad))
       self%trying = 0
       self%piece = size(self%starts)
     case (2)
@@ -356,12 +792,12 @@ contains
     case default
       continue
     end select
-    line = source%lines(self%bad)
+    line = deck_line(source, self%bad)
     if (self%stage == 2) then
       if (self%trying < size(self%starts) - 1) then
         self%trying = self%trying + 1
         cut = self%starts(self%trying + 1) - 1
-        self%lines = [character(len=len(source%lines)) :: source%lines(1:self%bad - 1), line(1:cut), "/"]
+        call copy_through(source, self%bad, line(1:cut), self%records)
         return
       end if
       self%stage = 3
@@ -380,12 +816,76 @@ contains
         value = trim(other_values(self%trying - 1))
       end if
       text = line(1:self%starts(self%piece) - 1)//text(1:index(text, "="))//" "//value
-      self%lines = [character(len=max(len(source%lines), len(text))) :: source%lines(1:self%bad - 1), text, "/"]
+      call copy_through(source, self%bad, text, self%records)
       return
     end if
     self%stage = 4
     probe_more = .false.
   end function probe_more
+
+  !> A READ that succeeds. gfortran 12 carries state from a namelist READ that failed in a
+  !> repeat count ("Repeat count too large", a pending count) into the next READ of an
+  !> internal file, which then reads differently (a copy that fails alone reads, or the other
+  !> way round, depending on where the earlier READ stopped); a successful READ in between
+  !> clears it, so that each copy of the probe reads as it would alone.
+  subroutine clear_read_state()
+    character(len=1) :: one
+    integer :: value, ios
+    one = "1"
+    read (one, *, iostat=ios) value
+  end subroutine clear_read_state
+
+  !> A copy of the deck's records through line `bad` - 1, then `text` in place of line
+  !> `bad` (cut into records as the deck's lines were), then a record "/".
+  pure subroutine copy_through(source, bad, text, records)
+    !> The deck.
+    type(deck_source_t), intent(in) :: source
+    !> The line replaced.
+    integer, intent(in) :: bad
+    !> Its replacement.
+    character(*), intent(in) :: text
+    !> The copy.
+    character(len=:), allocatable, intent(out) :: records(:)
+    integer, allocatable :: lengths(:)
+    integer :: n, k, r, depth, at, kept, last, group_line, width
+    character(len=1) :: quote
+    call line_records(source, bad, kept, last)
+    kept = kept - 1
+    allocate (lengths(1))
+    n = 0
+    if (source%cut_width == huge(1)) then
+      ! no line was cut: one record
+      call append_length(lengths, n, len(text))
+    else
+      ! the quote and parentheses the line starts in (followed from the first group's
+      ! line on, as records_from_text does), then its pieces
+      group_line = bad
+      do k = 1, bad
+        at = line_search(source, k, 1, " ", .false.)
+        if (at == 0) cycle
+        if (line_slice(source, k, at, at) == "&") then
+          group_line = k
+          exit
+        end if
+      end do
+      quote = " "
+      depth = 0
+      do k = group_line, bad - 1
+        call cut_line(deck_line(source, k), huge(1), .true., quote, depth, lengths, n)
+      end do
+      n = 0
+      call cut_line(text, source%cut_width, bad >= group_line, quote, depth, lengths, n)
+    end if
+    width = max(len(source%records), record_width(lengths(1:n)))
+    allocate (character(len=width) :: records(kept + n + 1))
+    records(1:kept) = source%records(1:kept)
+    at = 1
+    do r = 1, n
+      call put_record(records(kept + r), text(at:), lengths(r))
+      at = at + abs(lengths(r))
+    end do
+    records(kept + n + 1) = "/"
+  end subroutine copy_through
 
   !> The input error: "<deck>:<line>: &<group>: <assignment>: <reason>".
   subroutine probe_report(self, source, ctx, error)
@@ -403,7 +903,7 @@ contains
       call namelist_failure(ctx, -1, self%failure, error)
       return
     end if
-    line = trim(source%lines(self%bad))
+    line = trim(deck_line(source, self%bad))
     from = verify(line, " ")
     to = len(line)
     if (self%piece > 0) then
@@ -417,9 +917,10 @@ contains
       name = trim(adjustl(text(1:index(text, "=") - 1)))
     else
       do k = self%bad - 1, 1, -1
-        starts = assignment_starts(source%lines(k))
+        name = deck_line(source, k)
+        starts = assignment_starts(name)
         if (size(starts) == 0) cycle
-        name = source%lines(k)(starts(size(starts)):)
+        name = name(starts(size(starts)):)
         name = trim(adjustl(name(1:index(name, "=") - 1)))
         exit
       end do
@@ -915,7 +1416,8 @@ contains
     character(len=*), parameter :: tab = achar(9)
     integer(int64) :: bound(size(names)), slots, first
     character(len=token_max) :: token, last, before_last
-    integer :: token_len, last_len, before_last_len, depth, line, i, start, target
+    integer :: token_len, last_len, before_last_len, depth, line, i, start, target, col, r
+    integer :: first_piece, last_piece, first_column, last_column
     logical :: truncated, last_truncated, before_last_truncated, value_since_comma
     character(len=1) :: quote, c
 
@@ -931,47 +1433,54 @@ contains
     truncated = .false.; last_truncated = .false.; before_last_truncated = .false.
     depth = 0
     quote = " "
-    scan: do while (line <= size(source%lines))
-      associate (text => source%lines(line))
-        do i = start, len_trim(text)
-          c = text(i:i)
-          if (quote /= " ") then
-            call add_char(c)
-            if (c == quote) quote = " "
-          else if (depth > 0) then
-            call add_char(c)
-            if (c == "(") depth = depth + 1
-            if (c == ")") depth = depth - 1
-          else if (c == "'" .or. c == '"') then
-            quote = c
-            call add_char(c)
-          else if (c == "(") then
-            depth = 1
-            call add_char(c)
-          else if (c == "!") then
-            ! gfortran may take a comment after a separator for a null value: count one
-            call end_token()
-            slots = min(slots + 1, count_cap)
-            exit
-          else if (c == "/") then
-            call end_token()
-            exit scan
-          else if (c == " " .or. c == tab) then
-            call end_token()
-          else if (c == "," .or. c == ";") then
-            call end_token()
-            ! a separator after a separator (or right after '=') is a null value
-            if (.not. value_since_comma) slots = min(slots + 1, count_cap)
-            value_since_comma = .false.
-          else if (c == "=") then
-            call end_token()
-            call close_list()
-            call open_list()
-          else
-            call add_char(c)
-          end if
-        end do
-      end associate
+    scan: do while (line <= deck_line_count(source))
+      ! the line's records in turn, `col` its columns before record r
+      col = 0
+      call line_records(source, line, first_piece, last_piece)
+      pieces: do r = first_piece, last_piece
+        call record_part(source, r, r == last_piece, first_column, last_column)
+        associate (text => source%records(r))
+          do i = max(start - col, 1) + first_column - 1, last_column
+            c = text(i:i)
+            if (quote /= " ") then
+              call add_char(c)
+              if (c == quote) quote = " "
+            else if (depth > 0) then
+              call add_char(c)
+              if (c == "(") depth = depth + 1
+              if (c == ")") depth = depth - 1
+            else if (c == "'" .or. c == '"') then
+              quote = c
+              call add_char(c)
+            else if (c == "(") then
+              depth = 1
+              call add_char(c)
+            else if (c == "!") then
+              ! gfortran may take a comment after a separator for a null value: count one
+              call end_token()
+              slots = min(slots + 1, count_cap)
+              exit pieces
+            else if (c == "/") then
+              call end_token()
+              exit scan
+            else if (c == " " .or. c == tab) then
+              call end_token()
+            else if (c == "," .or. c == ";") then
+              call end_token()
+              ! a separator after a separator (or right after '=') is a null value
+              if (.not. value_since_comma) slots = min(slots + 1, count_cap)
+              value_since_comma = .false.
+            else if (c == "=") then
+              call end_token()
+              call close_list()
+              call open_list()
+            else
+              call add_char(c)
+            end if
+          end do
+        end associate
+        col = col + last_column - first_column + 1
+      end do pieces
       if (quote == " " .and. depth == 0) then
         ! the end of a line separates values like a comma (gfortran: "1<eol>, 2" is 1, null, 2);
         ! counted as a null when no value came since the last separator (may over-count)
@@ -991,21 +1500,16 @@ contains
     subroutine find_group(line, start)
       integer, intent(out) :: line, start
       integer :: k, at, j
-      do k = 1, size(source%lines)
-        associate (text => source%lines(k))
-          at = verify(text, " "//tab)
-          if (at == 0) cycle
-          if (text(at:at) /= "&") cycle
-          j = at + 1
-          do while (j <= len(text))
-            if (index(" /,!"//tab, text(j:j)) > 0) exit
-            j = j + 1
-          end do
-          if (lower(text(at + 1:j - 1)) /= group) cycle
-          line = k
-          start = j
-          return
-        end associate
+      do k = 1, deck_line_count(source)
+        at = line_search(source, k, 1, " "//tab, .false.)
+        if (at == 0) cycle
+        if (line_slice(source, k, at, at) /= "&") cycle
+        j = line_search(source, k, at + 1, " /,!"//tab, .true.)
+        if (j == 0) j = deck_line_length(source, k) + 1
+        if (lower(line_slice(source, k, at + 1, j - 1)) /= group) cycle
+        line = k
+        start = j
+        return
       end do
       line = 0
       start = 1

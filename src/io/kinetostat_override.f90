@@ -7,7 +7,7 @@
 module kinetostat_override
   use kinetostat_error, only: error_t, fatal_error, exit_input
   use kinetostat_text, only: upper
-  use kinetostat_deck, only: deck_source_t, deck_source_from_text
+  use kinetostat_deck, only: deck_source_t, deck_source_from_text, deck_line_count, deck_line, deck_line_length
   use kinetostat_step_table, only: step_table_t, echo_heading_kind, echo_line_kind
   implicit none
   private
@@ -137,25 +137,45 @@ contains
     !> The deck to read.
     type(deck_source_t), intent(out) :: patched
     character(*), parameter :: lf = achar(10)
-    character(len=:), allocatable :: text, added
-    integer :: k, col, i
+    character(len=:), allocatable :: text, added, line
+    integer :: k, col, i, at, size_text
     added = ""
     do i = 1, size(overrides)
       added = added//"  "//overrides(i)%name//" = "//overrides(i)%value//lf
     end do
     call group_end(source, k, col)
-    text = ""
-    do i = 1, size(source%lines)
+    ! the text is built in place: the deck's lines, the added ones, a line break at `col`
+    size_text = len(added) + 1
+    do i = 1, deck_line_count(source)
+      size_text = size_text + deck_line_length(source, i) + 1
+    end do
+    allocate (character(len=size_text) :: text)
+    at = 0
+    do i = 1, deck_line_count(source)
+      line = deck_line(source, i)
       if (i == k) then
-        if (col > 1) text = text//source%lines(i)(1:col - 1)//lf
-        text = text//added//source%lines(i)(col:)//lf
+        if (col > 1) call put(text, at, line(1:col - 1)//lf)
+        call put(text, at, added)
+        call put(text, at, line(col:)//lf)
       else
-        text = text//source%lines(i)//lf
+        call put(text, at, line//lf)
       end if
     end do
-    if (k == 0) text = text//added
-    call deck_source_from_text(source%path, text, patched)
+    if (k == 0) call put(text, at, added)
+    call deck_source_from_text(source%path, text(1:at), patched)
   end subroutine apply_overrides
+
+  !> `piece` into `text` after its first `at` characters (`at` counts them).
+  pure subroutine put(text, at, piece)
+    !> The text being built (long enough).
+    character(len=:), allocatable, intent(inout) :: text
+    !> Characters written so far.
+    integer, intent(inout) :: at
+    !> What comes next.
+    character(*), intent(in) :: piece
+    text(at + 1:at + len(piece)) = piece
+    at = at + len(piece)
+  end subroutine put
 
   !> Line `k` and column `col` of the character that closes the deck's first namelist group:
   !> the first '/', '&' or '$' after the group name outside quotes and '!' comments
@@ -165,29 +185,29 @@ contains
     integer, intent(out) :: k, col
     integer :: line, i, first
     character(len=1) :: quote
+    character(len=:), allocatable :: text
     logical :: started
     k = 0
     col = 0
     started = .false.
     quote = " "
-    do line = 1, size(source%lines)
+    do line = 1, deck_line_count(source)
       first = 1
+      text = deck_line(source, line)
       if (.not. started) then
-        associate (text => source%lines(line))
-          first = index(text, "&")
-          if (first == 0) cycle
-          if (len_trim(text(1:first - 1)) > 0) cycle
-          ! skip the group name
+        first = index(text, "&")
+        if (first == 0) cycle
+        if (len_trim(text(1:first - 1)) > 0) cycle
+        ! skip the group name
+        first = first + 1
+        do while (first <= len(text))
+          if (index(" /,!", text(first:first)) > 0) exit
           first = first + 1
-          do while (first <= len(text))
-            if (index(" /,!", text(first:first)) > 0) exit
-            first = first + 1
-          end do
-        end associate
+        end do
         started = .true.
       end if
-      do i = first, len(source%lines(line))
-        associate (c => source%lines(line)(i:i))
+      do i = first, len(text)
+        associate (c => text(i:i))
           if (quote /= " ") then
             if (c == quote) quote = " "
           else if (c == "'" .or. c == '"') then

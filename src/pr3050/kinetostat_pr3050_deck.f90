@@ -131,12 +131,12 @@ contains
     allocate (omega3(capacity(1)), source=unset_real)
     allocate (eps3(capacity(2)), source=unset_real)
 
-    read (source%lines, nml=pr3050, iostat=ios, iomsg=msg)
+    read (source%records, nml=pr3050, iostat=ios, iomsg=msg)
     if (ios /= 0) then
       ! find the line and the assignment that failed (gfortran's message does not say)
       call probe%start(source, ios, msg)
       do while (probe%more(source))
-        read (probe%lines, nml=pr3050, iostat=ios, iomsg=msg)
+        read (probe%records, nml=pr3050, iostat=ios, iomsg=msg)
         call probe%take(ios, msg)
       end do
       call probe%report(source, ctx, error)

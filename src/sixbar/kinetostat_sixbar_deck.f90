@@ -106,12 +106,12 @@ contains
     capacity = deck_array_capacities(source, ctx%group, ["f5"])
     allocate (f5(capacity(1)), source=unset_real)
 
-    read (source%lines, nml=sixbar, iostat=ios, iomsg=msg)
+    read (source%records, nml=sixbar, iostat=ios, iomsg=msg)
     if (ios /= 0) then
       ! find the line and the assignment that failed (gfortran's message does not say)
       call probe%start(source, ios, msg)
       do while (probe%more(source))
-        read (probe%lines, nml=sixbar, iostat=ios, iomsg=msg)
+        read (probe%records, nml=sixbar, iostat=ios, iomsg=msg)
         call probe%take(ios, msg)
       end do
       call probe%report(source, ctx, error)
