@@ -156,19 +156,16 @@ contains
       if (index(whole, "ios 0 ") == 0) errors = errors + 1
       call apply_overrides(src, over, patched)
       whole = whole//new_line("a")//"patched: "//reading(patched)
-      do w = 0, size(widths)
-        if (w == 0) then
-          call deck_source_from_text("d", text, src)
-        else
-          call deck_source_from_text("d", text, src, cut_width=widths(w))
-        end if
+      do w = 1, size(widths) + 1
+        ! the last: the width chosen (cut_width < 1)
+        call deck_source_from_text("d", text, src, cut_width=merge(-1, widths(min(w, size(widths))), w > size(widths)))
         if (size(src%records) > deck_line_count(src)) cut_decks = cut_decks + 1
         cut = reading(src)
         call apply_overrides(src, over, patched)
         cut = cut//new_line("a")//"patched: "//reading(patched)
         if (cut /= whole) then
           mismatches = mismatches + 1
-          if (.not. allocated(first_bad)) first_bad = "width "//int_str(widths(max(w, 1)))//" deck:"// &
+          if (.not. allocated(first_bad)) first_bad = "width "//int_str(widths(min(w, size(widths))))//" deck:"// &
             new_line("a")//text//new_line("a")//"whole lines:"//new_line("a")//whole//new_line("a")//"records:"// &
             new_line("a")//cut//new_line("a")//"the records:"//new_line("a")//join(src)
         end if
@@ -261,13 +258,15 @@ contains
   end subroutine test_random_decks
 
   !> Every bundled deck, its lines cut at several widths, runs to the same output (table and
-  !> JSON) or error as from whole lines; also with all its lines joined into one.
+  !> JSON) or error as from whole lines; also with an unknown variable and with a value
+  !> that is not a number (the same message, naming the same line and assignment).
   subroutine test_bundled_decks(t)
     type(test_counts_t), intent(inout) :: t
     type(deck_source_t) :: source
     type(error_t), allocatable :: error
-    character(len=:), allocatable :: text, whole, cut, bad
-    integer :: d, k, w, f, runs
+    character(len=:), allocatable :: text, whole, cut, bad, line
+    integer :: d, k, w, f, runs, v
+    logical :: group_seen
     runs = 0
     bad = ""
     do d = 1, size(decks)
@@ -276,16 +275,34 @@ contains
         bad = bad//" "//error%message
         cycle
       end if
-      text = ""
-      do k = 1, deck_line_count(source)
-        text = text//deck_line(source, k)//new_line("a")
-      end do
-      do f = 1, 2
-        whole = run_text(trim(decks(d)), text, huge(1), f)
-        do w = 1, size(widths)
-          cut = run_text(trim(decks(d)), text, widths(w), f)
-          runs = runs + 1
-          if (cut /= whole) bad = bad//" "//trim(decks(d))//" at width "//int_str(widths(w))
+      do v = 1, 3
+        ! the deck; with an unknown variable after the group's line; with a value that is
+        ! not a number in its first assignment
+        text = ""
+        group_seen = .false.
+        do k = 1, deck_line_count(source)
+          line = deck_line(source, k)
+          if (v == 3 .and. group_seen .and. index(line, " = ") > 0 .and. &
+              (index(line, "!") == 0 .or. index(line, "!") > index(line, " = "))) then
+            line = line(1:index(line, " = ") + 2)//"oops, "//line(index(line, " = ") + 3:)
+            group_seen = .false.
+          end if
+          text = text//line//new_line("a")
+          if (.not. group_seen .and. index(adjustl(line), "&") == 1) then
+            if (v == 2) text = text//"  zz_typo = 1, 2, 3 ! not in the group"//new_line("a")
+            if (v == 3) group_seen = .true.
+          end if
+        end do
+        do f = 1, 2
+          whole = run_text(trim(decks(d)), text, huge(1), f)
+          if (v > 1 .and. index(whole, "error 2: ") /= 1) bad = bad//" "//trim(decks(d))//" variant "// &
+            int_str(v)//" gave no input error: "//whole(1:min(len(whole), 200))
+          do w = 1, size(widths)
+            cut = run_text(trim(decks(d)), text, widths(w), f)
+            runs = runs + 1
+            if (cut /= whole) bad = bad//" "//trim(decks(d))//" variant "//int_str(v)//" at width "// &
+              int_str(widths(w))//": "//cut(1:min(len(cut), 200))//" instead of "//whole(1:min(len(whole), 200))
+          end do
         end do
       end do
     end do

@@ -229,7 +229,7 @@ contains
     !> Saving in bytes below which no line is cut (when the width is chosen).
     integer(int64), parameter :: least_saving = 1048576
     integer, allocatable :: line_start(:), line_end(:), lengths(:)
-    integer :: n_lines, longest, i, k, s, n_records, width, depth, r, at, group_line
+    integer :: n_lines, longest, i, k, s, n_records, width, depth, r, at, group_line, fixed
     character(len=1) :: quote
     ! where the lines are
     n_lines = 0
@@ -247,8 +247,10 @@ contains
     end do
     longest = 1
     if (n_lines > 0) longest = max(1, maxval(line_end - line_start + 1))
-    ! the first line opening a group: where the namelist READ starts to read values
+    ! the first line opening a group: where the namelist READ starts to read values; the
+    ! longest line before it that is not a comment (not cut)
     group_line = n_lines + 1
+    fixed = 0
     do k = 1, n_lines
       at = verify(text(line_start(k):line_end(k)), " ")
       if (at == 0) cycle
@@ -256,10 +258,11 @@ contains
         group_line = k
         exit
       end if
+      if (text(line_start(k) + at - 1:line_start(k) + at - 1) /= "!") fixed = max(fixed, line_end(k) - line_start(k) + 1)
     end do
     width = -1
     if (present(cut_width)) width = cut_width
-    if (width < 1) width = chosen_cut_width(line_end - line_start + 1, group_line)
+    if (width < 1) width = chosen_cut_width(line_end - line_start + 1, fixed)
     n_records = 0
     if (width < longest) then
       ! cut the long lines; the quote and parenthesis state carries from line to line
@@ -274,8 +277,9 @@ contains
       source%first_record(n_lines + 1) = n_records + 1
       ! a chosen width: cut only when it saves least_saving or more
       if (.not. present(cut_width)) then
-        if (int(n_records, int64) * record_width(lengths(1:n_records)) + least_saving > int(n_lines, int64) * longest) &
+        if (int(n_records, int64) * record_width(lengths(1:n_records)) + least_saving > int(n_lines, int64) * longest) then
           width = huge(1)
+        end if
       end if
     end if
     if (width >= longest) then
@@ -296,7 +300,7 @@ contains
     do k = 1, n_lines
       at = line_start(k)
       do r = source%first_record(k), source%first_record(k + 1) - 1
-        call put_record(source%records(r), text(at:), source%record_length(r))
+        source%records(r) = record_text(text(at:), source%record_length(r))
         at = at + abs(source%record_length(r))
       end do
     end do
@@ -321,23 +325,22 @@ contains
     end subroutine next_line
   end subroutine records_from_text
 
-  !> A record of a piece of a line: the first `abs(length)` characters of `text`, after a
+  !> The record of a piece of a line: the first `abs(length)` characters of `text`, after a
   !> '!' when `length` < 0 (the piece continues a comment).
-  pure subroutine put_record(record, text, length)
-    !> The record.
-    character(*), intent(out) :: record
+  pure function record_text(text, length) result(record)
     !> The line from the piece on.
     character(*), intent(in) :: text
     !> The piece's length (< 0: a comment's continuation).
     integer, intent(in) :: length
+    character(len=:), allocatable :: record
     if (length < 0) then
       record = "!"//text(1:-length)
     else
       record = text(1:length)
     end if
-  end subroutine put_record
+  end function record_text
 
-  !> Length of the longest record of pieces `lengths` (see put_record), at least 1.
+  !> Length of the longest record of pieces `lengths` (see record_text), at least 1.
   pure integer function record_width(lengths)
     !> Piece lengths.
     integer, intent(in) :: lengths(:)
@@ -347,13 +350,13 @@ contains
   !> The width to cut long lines at: the one from 32 up whose records take the least memory
   !> (a line longer than it taken as ceiling(length / (width - 24)) records: a value list
   !> has a place to cut every 24 characters at least), huge(1) when that is no less than
-  !> records as long as the longest line. Lines before the first group are not cut (they
-  !> count as as many records as their length needs).
-  pure integer function chosen_cut_width(lengths, group_line) result(width)
+  !> records as long as the longest line.
+  pure integer function chosen_cut_width(lengths, fixed) result(width)
     !> Length of each line.
     integer, intent(in) :: lengths(:)
-    !> The first line opening a group.
-    integer, intent(in) :: group_line
+    !> Length of the longest line that cannot be cut (a line before the first group that
+    !> is not a comment).
+    integer, intent(in) :: fixed
     !> Widths tried one by one (beyond: powers of two).
     integer, parameter :: tried = 4096
     integer(int64) :: cost, best, line_count(tried)
@@ -362,9 +365,7 @@ contains
     if (size(lengths) == 0) return
     longest = max(1, maxval(lengths))
     best = int(size(lengths), int64) * longest
-    least = 32
-    ! lines before the group: the records are at least as long
-    if (group_line > 1) least = max(least, maxval(lengths(1:min(group_line - 1, size(lengths)))))
+    least = max(32, fixed)
     ! how many lines of each length up to `tried`
     line_count = 0
     do k = 1, size(lengths)
@@ -409,7 +410,7 @@ contains
   !> `width` when the line has no such place within it. A line before the first group
   !> (`in_group` false), which the READ skips, is cut only when it is a comment. The
   !> lengths of the pieces are appended to `lengths(n + 1:)` (grown as needed; negative for
-  !> a piece that continues a comment, see put_record) and `n` counts them.
+  !> a piece that continues a comment, see record_text) and `n` counts them.
   pure subroutine cut_line(line, width, in_group, quote, depth, lengths, n)
     !> The line.
     character(*), intent(in) :: line
@@ -833,6 +834,7 @@ contains
     integer :: value, ios
     one = "1"
     read (one, *, iostat=ios) value
+    if (ios /= 0) value = 0
   end subroutine clear_read_state
 
   !> A copy of the deck's records through line `bad` - 1, then `text` in place of line
@@ -881,7 +883,7 @@ contains
     records(1:kept) = source%records(1:kept)
     at = 1
     do r = 1, n
-      call put_record(records(kept + r), text(at:), lengths(r))
+      records(kept + r) = record_text(text(at:), lengths(r))
       at = at + abs(lengths(r))
     end do
     records(kept + n + 1) = "/"
@@ -1148,7 +1150,8 @@ contains
   pure function assignment_starts(line) result(starts)
     character(*), intent(in) :: line
     integer, allocatable :: starts(:)
-    character(len=len(line)) :: masked
+    !> Allocated, not automatic: a line of 10^6 values would overflow the stack.
+    character(len=:), allocatable :: masked
     character(len=1) :: quote
     integer :: i, j, k
     ! blank out quoted text and the comment
