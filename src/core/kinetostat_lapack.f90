@@ -31,6 +31,10 @@ module kinetostat_lapack
   !> Reciprocal condition number below which a system counts as singular (dead position).
   real(wp), parameter :: rcond_threshold = 1.0e-12_wp
 
+  !> Orders up to this are factored in fixed local arrays (the generic engine's 6 x 6 and
+  !> 3 x 3, the cam's 3 x 3); larger ones allocate their workspace.
+  integer, parameter :: small_order = 8
+
   ! LAPACK's Fortran 77 interfaces take assumed-size arrays.
   ! allow(assumed-size)
   interface
@@ -71,9 +75,41 @@ contains
     type(error_t), allocatable, intent(out) :: error
     !> Reciprocal condition number estimate (1-norm, dgecon's), if wanted (then always computed).
     real(wp), intent(out), optional :: rcond
-    real(wp) :: lu(size(a, 1), size(a, 1))
-    real(wp) :: anorm, rc
-    integer :: ipiv(size(a, 1)), info
+    ! the workspace of the orders solved per step lives in fixed arrays (no heap per call)
+    real(wp), target :: lu_small(small_order, small_order), y_small(small_order)
+    integer, target :: ipiv_small(small_order)
+    real(wp), allocatable, target :: lu_big(:, :), y_big(:)
+    integer, allocatable, target :: ipiv_big(:)
+    real(wp), pointer :: lu(:, :), y(:)
+    integer, pointer :: ipiv(:)
+    integer :: n
+    n = size(a, 1)
+    if (n <= small_order) then
+      lu => lu_small(1:n, 1:n)
+      ipiv => ipiv_small(1:n)
+      y => y_small(1:n)
+    else
+      allocate (lu_big(n, n), ipiv_big(n), y_big(n))
+      lu => lu_big
+      ipiv => ipiv_big
+      y => y_big
+    end if
+    call solve_in(a, b, x, lu, ipiv, y, error, rcond)
+  end subroutine solve_dense
+
+  !> solve_dense with its workspace: the factors `lu` (n x n), pivots `ipiv` and the bound's
+  !> vector `y` (n).
+  pure subroutine solve_in(a, b, x, lu, ipiv, y, error, rcond)
+    real(wp), intent(in) :: a(:, :)
+    real(wp), intent(in) :: b(:)
+    real(wp), intent(out) :: x(:)
+    real(wp), intent(out) :: lu(:, :)
+    integer, intent(out) :: ipiv(:)
+    real(wp), intent(out) :: y(:)
+    type(error_t), allocatable, intent(out) :: error
+    real(wp), intent(out), optional :: rcond
+    real(wp) :: anorm, rc, bound
+    integer :: info
     logical :: settled
 
     x = 0.0_wp
@@ -86,7 +122,10 @@ contains
       return
     end if
     settled = .false.
-    if (.not. present(rcond)) settled = 1.0_wp / (anorm * inverse_norm_bound(lu)) >= screen_factor * rcond_threshold
+    if (.not. present(rcond)) then
+      call inverse_norm_bound(lu, y, bound)
+      settled = 1.0_wp / (anorm * bound) >= screen_factor * rcond_threshold
+    end if
     if (.not. settled) then
       call estimate_rcond(lu, anorm, rc, info)
       if (present(rcond)) rcond = rc
@@ -97,7 +136,7 @@ contains
     end if
     x = b
     call lu_solve(lu, ipiv, x)
-  end subroutine solve_dense
+  end subroutine solve_in
 
   !> dgetrf2's LU factorisation with partial pivoting of the square `a`: L (unit diagonal)
   !> below and U on and above the diagonal; `info` > 0: U(info, info) is exactly zero. The
@@ -272,16 +311,18 @@ contains
     if (info == 0) call lu_solve(lu, ipiv, x)
   end subroutine solve_by_port
 
-  !> dgecon's reciprocal condition estimate (1-norm) from the LU factors.
+  !> dgecon's reciprocal condition estimate (1-norm) from the LU factors (`lu` may be a
+  !> section of a larger array: dgecon gets a contiguous copy).
   pure subroutine estimate_rcond(lu, anorm, rc, info)
     real(wp), intent(in) :: lu(:, :)
     real(wp), intent(in) :: anorm
     real(wp), intent(out) :: rc
     integer, intent(out) :: info
-    real(wp) :: work(4 * size(lu, 1))
+    real(wp) :: work(4 * size(lu, 1)), factors(size(lu, 1), size(lu, 1))
     integer :: iwork(size(lu, 1)), n
     n = size(lu, 1)
-    call dgecon('1', n, lu, n, anorm, rc, work, iwork, info)
+    factors = lu
+    call dgecon('1', n, factors, n, anorm, rc, work, iwork, info)
   end subroutine estimate_rcond
 
   !> An upper bound of ||(L U)^-1||_1 from dgetrf's factors in `lu` (unit lower L below the
@@ -291,9 +332,14 @@ contains
   !> a sum of positive terms (no cancellation: its roundoff is a few ulps): n^2 flops and n
   !> divisions instead of the explicit inverses' n^3/3 and n(n+1)/2. (A non-finite bound
   !> settles nothing: the caller then asks dgecon.)
-  pure real(wp) function inverse_norm_bound(lu)
+  pure subroutine inverse_norm_bound(lu, y, bound)
+    !> The factors.
     real(wp), intent(in) :: lu(:, :)
-    real(wp) :: y(size(lu, 1)), norm_l, norm_u, s
+    !> Workspace (n).
+    real(wp), intent(out) :: y(:)
+    !> The bound.
+    real(wp), intent(out) :: bound
+    real(wp) :: norm_l, norm_u, s
     integer :: n, i, j
     n = size(lu, 1)
     ! U: y_j = (1 + sum_{i<j} |u_ij| y_i) / |u_jj|
@@ -316,8 +362,8 @@ contains
       y(j) = s
       norm_l = max(norm_l, s)
     end do
-    inverse_norm_bound = norm_u * norm_l
-  end function inverse_norm_bound
+    bound = norm_u * norm_l
+  end subroutine inverse_norm_bound
 
   !> The singular-position test as it was before the cheap bound: dgesv's zero pivot, or
   !> dgecon's estimate below rcond_threshold (the reference of the tests).
