@@ -86,7 +86,8 @@ contains
     end if
   end subroutine run_one
 
-  !> Blocks of 1, 2, 5, 7 rows against one block, for every deck in every format.
+  !> Blocks of 1, 2, 5, 7 rows (and echo chunks of as many values) against one block, for
+  !> every deck in every format.
   subroutine test_blocks_equal_whole(t)
     type(test_counts_t), intent(inout) :: t
     type(run_options_t) :: options
@@ -120,6 +121,8 @@ contains
         call run_one(trim(decks(d)), options, whole)
         do b = 1, size(block_sizes)
           options%block_rows = block_sizes(b)
+          ! and the INPUT DATA echo's arrays in chunks of as many values
+          options%echo_chunk = block_sizes(b)
           call run_one(trim(decks(d)), options, blocked)
           call check_true(t, "blocks: "//trim(decks(d))//" format case "//int_str(f)//", blocks of "// &
             int_str(block_sizes(b))//" rows = one block", blocked == whole, first_difference(whole, blocked))
@@ -150,6 +153,7 @@ contains
         options%format = spool_formats(f)
         call run_one(trim(spool_decks(d)), options, whole, report=whole_report)
         options%block_rows = 2
+        options%echo_chunk = 1
         spool = spool_t()
         spool%bound = 100
         call spool%aim(target)

@@ -3,8 +3,10 @@
 !> finite guard of the run pipeline.
 module test_io
   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_positive_inf
+  use, intrinsic :: iso_fortran_env, only: int64
   use kinetostat_kinds, only: wp
   use kinetostat_error, only: error_t, exit_geometry
+  use kinetostat_text, only: int_str
   use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_flag, col_count
   use kinetostat_format, only: fixed_field, exp_field, int_field, full_number, whole_number, echo_number, &
     display_width, pad_right
@@ -149,7 +151,72 @@ contains
     end do
     call check_true(t, "step table echo grows", table%echo_count == 42 .and. table%echo(42)%values(1) == 40.0_wp, &
                     "42 records, the last 40")
+    call test_echo_runs(t)
   end subroutine test_step_table
+
+  !> An echoed array kept as runs of equal values gives back exactly its values (bits: -0,
+  !> subnormals, NaN), however it is cut into chunks; an array without runs is kept as it is.
+  subroutine test_echo_runs(t)
+    type(test_counts_t), intent(inout) :: t
+    type(step_table_t) :: table
+    real(wp), allocatable :: v(:), got(:)
+    real(wp) :: u
+    integer :: trial, n, i, first, last, bad
+    logical :: kept_as_runs, kept_plain
+    bad = 0
+    kept_as_runs = .false.
+    kept_plain = .false.
+    do trial = 1, 300
+      call random_number(u)
+      n = int(u * 200.0_wp)
+      allocate (v(n))
+      do i = 1, n
+        call random_number(u)
+        if (i > 1 .and. u < 0.8_wp * real(mod(trial, 3), wp) / 2.0_wp) then
+          v(i) = v(i - 1)
+        else
+          call random_number(u)
+          select case (int(u * 5.0_wp))
+          case (0)
+            v(i) = -0.0_wp
+          case (1)
+            v(i) = 0.0_wp
+          case (2)
+            v(i) = tiny(1.0_wp) * u
+          case (3)
+            v(i) = ieee_value(1.0_wp, ieee_quiet_nan)
+          case default
+            v(i) = real(int(u * 10.0_wp), wp)
+          end select
+        end if
+      end do
+      table = step_table_t()
+      call table%echo_array("A", v, "")
+      if (allocated(table%echo(1)%run_end)) kept_as_runs = .true.
+      if (.not. allocated(table%echo(1)%run_end)) kept_plain = .true.
+      if (table%echo(1)%value_count() /= n) bad = bad + 1
+      do i = 1, 5
+        call random_number(u)
+        first = 1 + int(u * n)
+        call random_number(u)
+        last = min(n, first + int(u * n))
+        if (n == 0) cycle
+        allocate (got(last - first + 1))
+        call table%echo(1)%get_values(first, last, got)
+        if (any(transfer(got, 0_int64, size(got)) /= transfer(v(first:last), 0_int64, size(got)))) bad = bad + 1
+        deallocate (got)
+      end do
+      deallocate (v)
+    end do
+    call check_true(t, "echo arrays as runs: values back bit for bit (300 arrays, 5 slices each)", bad == 0, &
+      int_str(bad)//" slices or counts differ")
+    call check_true(t, "echo arrays: both ways of keeping them were tried", kept_as_runs .and. kept_plain, &
+      "runs tried: "//merge("yes", "no ", kept_as_runs)//", plain tried: "//merge("yes", "no ", kept_plain))
+    table = step_table_t()
+    call table%echo_array("F5", [(1000.0_wp, i=1, 100000)], "N")
+    call check_true(t, "echo arrays: 10^5 equal values are one run", size(table%echo(1)%values) == 1, &
+      "kept "//int_str(size(table%echo(1)%values))//" values")
+  end subroutine test_echo_runs
 
   subroutine test_csv(t)
     type(test_counts_t), intent(inout) :: t

@@ -3,8 +3,9 @@
 module kinetostat_json_writer
   use kinetostat_kinds, only: version_string
   use kinetostat_selfcheck, only: selfcheck_tolerance
-  use kinetostat_step_table, only: step_table_t, echo_record_t, column_kind_names, col_component, &
-    echo_real_kind, echo_int_kind, echo_logical_kind, echo_array_kind, echo_text_kind, echo_heading_kind
+  use kinetostat_kinds, only: wp
+  use kinetostat_step_table, only: step_table_t, echo_record_t, echo_cursor_t, echo_chunk_values, column_kind_names, &
+    col_component, echo_real_kind, echo_int_kind, echo_logical_kind, echo_array_kind, echo_text_kind, echo_heading_kind
   use kinetostat_format, only: full_number, put_cell, cell_room
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_row_blocks, only: put_row_blocks
@@ -15,8 +16,11 @@ module kinetostat_json_writer
 contains
 
   !> The JSON object of a run. The rows are formatted in parallel blocks with more than one
-  !> OpenMP thread (same bytes).
-  subroutine write_json(title, table, out, kinematics, link_axes)
+  !> OpenMP thread (same bytes). With `head` (the first block's lines before the rows), a
+  !> part at a time: up to a chunk of an echoed array's values, then it returns with
+  !> head%done false for the caller to drain `out`, and goes on when called again; the rows
+  !> come once head%done.
+  subroutine write_json(title, table, out, kinematics, link_axes, head)
     !> Title of the mechanism (as the legacy table prints it).
     character(*), intent(in) :: title
     !> Finite results.
@@ -27,6 +31,9 @@ contains
     logical, intent(in), optional :: kinematics
     !> Whether to add the pair forces in link axes (--frame link); default false.
     logical, intent(in), optional :: link_axes
+    !> Where the head is (written whole when absent).
+    type(echo_cursor_t), intent(inout), optional :: head
+    type(echo_cursor_t) :: whole_head
     character(len=:), allocatable :: line
     logical, allocatable :: whole(:)
     integer :: i, c, last
@@ -41,50 +48,14 @@ contains
       if (shown(c)) last = c
     end do
     if (table%first_block()) then
-      call out%put("{")
-      call out%put('  "program": '//json_string(version_string)//",")
-      call out%put('  "mechanism": '//json_string(table%mechanism)//",")
-      call out%put('  "title": '//json_string(title)//",")
-      call out%put('  "deck": '//json_string(table%deck)//",")
-      if (allocated(table%subtitle)) call out%put('  "deck_title": '//json_string(table%subtitle)//",")
-      call out%put('  "row_name": '//json_string(table%row_name)//",")
-      if (allocated(table%overrides)) then
-        line = '  "overrides": ['
-        do i = 1, size(table%overrides)
-          if (i > 1) line = line//", "
-          line = line//json_string(trim(table%overrides(i)))
+      if (present(head)) then
+        if (.not. head%done) call head_part(head)
+        if (.not. head%done) return
+      else
+        do while (.not. whole_head%done)
+          call head_part(whole_head)
         end do
-        call out%put(line//"],")
       end if
-      call out%put('  "input": [')
-      do i = 1, table%echo_count
-        call out%append("    ")
-        call put_echo_object(out, table%echo(i))
-        if (i < table%echo_count) call out%append(",")
-        call out%end_line()
-      end do
-      call out%put("  ],")
-      call out%put('  "columns": [')
-      do c = 1, size(table%columns)
-        if (.not. shown(c)) cycle
-        line = '    {"name": '//json_string(table%columns(c)%name)//', "unit": '// &
-          json_string(table%columns(c)%unit)//', "kind": '// &
-          json_string(trim(column_kind_names(table%columns(c)%kind)))//', "csv": '// &
-          merge("true ", "false", table%columns(c)%csv)
-        line = trim(line)
-        if (table%columns(c)%kinematic) then
-          line = line//', "kinematic": true'
-          if (table%columns(c)%kind == col_component) line = line//', "frame_angle": '// &
-            full_number(table%columns(c)%frame_angle)
-        end if
-        if (table%columns(c)%link_axes) line = line//', "frame": "link", "link": '// &
-          json_string(table%columns(c)%frame_link)
-        line = line//"}"
-        if (c < last) line = line//","
-        call out%put(line)
-      end do
-      call out%put("  ],")
-      call out%put('  "rows": [')
     end if
     allocate (whole(size(table%columns)))
     do c = 1, size(table%columns)
@@ -120,6 +91,63 @@ contains
     call out%put(line//"]")
     call out%put("}")
   contains
+    !> The next part of the head (see `head`).
+    subroutine head_part(cur)
+      type(echo_cursor_t), intent(inout) :: cur
+      integer :: i, k
+      if (cur%record == 0) then
+        call out%put("{")
+        call out%put('  "program": '//json_string(version_string)//",")
+        call out%put('  "mechanism": '//json_string(table%mechanism)//",")
+        call out%put('  "title": '//json_string(title)//",")
+        call out%put('  "deck": '//json_string(table%deck)//",")
+        if (allocated(table%subtitle)) call out%put('  "deck_title": '//json_string(table%subtitle)//",")
+        call out%put('  "row_name": '//json_string(table%row_name)//",")
+        if (allocated(table%overrides)) then
+          line = '  "overrides": ['
+          do i = 1, size(table%overrides)
+            if (i > 1) line = line//", "
+            line = line//json_string(trim(table%overrides(i)))
+          end do
+          call out%put(line//"],")
+        end if
+        call out%put('  "input": [')
+        cur%record = 1
+        cur%value = 0
+      end if
+      do while (cur%record <= table%echo_count)
+        if (cur%value == 0) call out%append("    ")
+        call put_echo_object(out, table%echo(cur%record), cur)
+        if (cur%value > 0) return
+        if (cur%record < table%echo_count) call out%append(",")
+        call out%end_line()
+        cur%record = cur%record + 1
+      end do
+      call out%put("  ],")
+      call out%put('  "columns": [')
+      do k = 1, size(table%columns)
+        if (.not. shown(k)) cycle
+        line = '    {"name": '//json_string(table%columns(k)%name)//', "unit": '// &
+          json_string(table%columns(k)%unit)//', "kind": '// &
+          json_string(trim(column_kind_names(table%columns(k)%kind)))//', "csv": '// &
+          merge("true ", "false", table%columns(k)%csv)
+        line = trim(line)
+        if (table%columns(k)%kinematic) then
+          line = line//', "kinematic": true'
+          if (table%columns(k)%kind == col_component) line = line//', "frame_angle": '// &
+            full_number(table%columns(k)%frame_angle)
+        end if
+        if (table%columns(k)%link_axes) line = line//', "frame": "link", "link": '// &
+          json_string(table%columns(k)%frame_link)
+        line = line//"}"
+        if (k < last) line = line//","
+        call out%put(line)
+      end do
+      call out%put("  ],")
+      call out%put('  "rows": [')
+      cur%done = .true.
+    end subroutine head_part
+
     !> Rows `first_row` to `last_row`, one JSON array a line.
     subroutine put_rows(first_row, last_row, part)
       integer, intent(in) :: first_row, last_row
@@ -148,13 +176,17 @@ contains
   end subroutine write_json
 
   !> One INPUT DATA record as a JSON object, appended to the current line (an array of
-  !> per-step values may be long: its numbers go straight into the buffer).
-  pure subroutine put_echo_object(out, e)
+  !> per-step values may be long: its numbers go straight into the buffer). With `cursor`,
+  !> an array's values a chunk at a time: cursor%value is left at the values written when
+  !> some remain (the object goes on in the next call), at 0 when the record is done.
+  pure subroutine put_echo_object(out, e, cursor)
     type(text_buffer_t), intent(inout) :: out
     type(echo_record_t), intent(in) :: e
+    type(echo_cursor_t), intent(inout), optional :: cursor
     character(len=:), allocatable :: text
     character(len=24) :: buf
-    integer :: i
+    real(wp), allocatable :: v(:)
+    integer :: i, n, first, last, chunk
     select case (e%kind)
     case (echo_real_kind)
       text = '{"name": '//json_string(e%name)//', "value": '//full_number(e%values(1))// &
@@ -166,11 +198,25 @@ contains
       text = '{"name": '//json_string(e%name)//', "value": '//trim(merge("true ", "false", e%logical_value))// &
         ', "unit": '//json_string(e%unit)//"}"
     case (echo_array_kind)
-      call out%append('{"name": '//json_string(e%name)//', "value": [')
-      do i = 1, size(e%values)
+      n = e%value_count()
+      first = 1
+      last = n
+      if (present(cursor)) then
+        chunk = cursor%chunk
+        if (chunk <= 0) chunk = echo_chunk_values
+        first = cursor%value + 1
+        last = min(n, cursor%value + chunk)
+        cursor%value = 0
+        if (last < n) cursor%value = last
+      end if
+      if (first == 1) call out%append('{"name": '//json_string(e%name)//', "value": [')
+      allocate (v(max(0, last - first + 1)))
+      if (last >= first) call e%get_values(first, last, v)
+      do i = first, last
         if (i > 1) call out%append(", ")
-        call put_cell(out, e%values(i), .false.)
+        call put_cell(out, v(i - first + 1), .false.)
       end do
+      if (last < n) return
       text = '], "unit": '//json_string(e%unit)//"}"
     case (echo_text_kind)
       text = '{"name": '//json_string(e%name)//', "value": '//json_string(e%text)//"}"

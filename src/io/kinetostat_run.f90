@@ -6,7 +6,7 @@ module kinetostat_run
   use kinetostat_kinds, only: wp
   use kinetostat_error, only: error_t, fatal_error, exit_geometry, exit_input
   use kinetostat_text, only: int_str
-  use kinetostat_step_table, only: step_table_t, echo_real_kind, echo_array_kind
+  use kinetostat_step_table, only: step_table_t, echo_cursor_t, echo_real_kind, echo_array_kind
   use kinetostat_deck, only: deck_source_t
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_text_buffer, only: text_buffer_t
@@ -75,6 +75,9 @@ module kinetostat_run
     integer :: at_step = 0
     !> Rows per block (0: block_rows); the output does not depend on it (tests vary it).
     integer :: block_rows = 0
+    !> Values of an echoed array written between drains of the output (0: the step table's
+    !> echo_chunk_values); the output does not depend on it (tests vary it).
+    integer :: echo_chunk = 0
   end type run_options_t
 
 contains
@@ -125,6 +128,8 @@ contains
     procedure(progress_i), optional :: progress
     type(text_buffer_t) :: later
     type(spool_t) :: later_spool
+    !> Where the writer is in the lines before the rows (the INPUT DATA echo).
+    type(echo_cursor_t) :: head
     integer :: first, rows
 
     call mech%read_deck(source, error)
@@ -136,6 +141,7 @@ contains
     table%kinematics_wanted = options%kinematics .or. options%link_frame .or. options%format == format_svg
     rows = block_rows
     if (options%block_rows > 0) rows = options%block_rows
+    head%chunk = options%echo_chunk
     first = 1
     do
       ! the SVG sheet and drawing need every row at once
@@ -183,7 +189,12 @@ contains
           call out%put(summary_row(table, options%kinematics))
         end if
       case (format_json)
-        call write_json(mech%title(options%lang), table, out, options%kinematics, options%link_frame)
+        do
+          call write_json(mech%title(options%lang), table, out, options%kinematics, options%link_frame, head)
+          if (head%done) exit
+          call drain_head(error)
+          if (allocated(error)) return
+        end do
       case (format_svg)
         if (options%at_step > 0) then
           call write_at_step(mech, table, options, out, error)
@@ -225,8 +236,20 @@ contains
       if (allocated(options%overrides)) then
         if (size(options%overrides) > 0) call mark_overrides(table, options%overrides)
       end if
-      if (options%format == format_table) call write_table_head(mech, table, options%lang, out)
+      if (options%format /= format_table) return
+      do
+        call write_table_head(mech, table, options%lang, out, head)
+        if (head%done) exit
+        call drain_head(error)
+        if (allocated(error)) return
+      end do
     end subroutine start_output
+
+    !> Between parts of the head: the text so far to the spool (when over its bound).
+    subroutine drain_head(error)
+      type(error_t), allocatable, intent(out) :: error
+      if (present(spool)) call spool%drain(out, error)
+    end subroutine drain_head
   end subroutine run_mechanism
 
   !> The mechanism at row options%at_step, drawn from its sketch.

@@ -79,6 +79,8 @@ contains
       return
     end if
     out%length = 0
+    ! a buffer that grew far beyond the bound (a long head) is not kept for the whole run
+    if (len(out%data) > 4 * self%bound) deallocate (out%data)
   end subroutine drain
 
   !> Put the text of `other` (its file, then `other_out`) after the text of this spool (its

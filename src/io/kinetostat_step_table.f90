@@ -4,10 +4,12 @@
 !> Every mechanism fills one; every writer (CSV, legacy table, JSON) reads one.
 module kinetostat_step_table
   use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
+  use, intrinsic :: iso_fortran_env, only: int64
   use kinetostat_kinds, only: wp, rad_to_deg
   implicit none
   private
-  public :: step_table_t, column_t, echo_record_t, remark_t, column_tally_t, edge_point_t, step_span
+  public :: step_table_t, column_t, echo_record_t, echo_cursor_t, remark_t, column_tally_t, edge_point_t, step_span
+  public :: echo_chunk_values
   public :: col_input_angle, col_force, col_force_angle, col_component, col_moment, col_length, &
     col_flag, col_count, col_ratio, col_other, column_kind_names
   public :: echo_real_kind, echo_int_kind, echo_logical_kind, echo_array_kind, echo_text_kind, &
@@ -90,8 +92,12 @@ module kinetostat_step_table
     character(len=:), allocatable :: name
     !> Unit text ("m", "kg", ...).
     character(len=:), allocatable :: unit
-    !> Real value(s): one for echo_real_kind, all for echo_array_kind.
+    !> Real value(s): one for echo_real_kind, all for echo_array_kind; with `run_end`, the
+    !> value of each run of equal values instead (an array of 10^6 equal values is one).
     real(wp), allocatable :: values(:)
+    !> Runs of equal values of an array: run r ends at value run_end(r) and has the value
+    !> values(r). Not allocated when the values are kept one by one.
+    integer, allocatable :: run_end(:)
     !> Integer value (echo_int_kind).
     integer :: int_value = 0
     !> Logical value (echo_logical_kind).
@@ -100,7 +106,27 @@ module kinetostat_step_table
     character(len=:), allocatable :: text
     !> True when the value came from --set (marked in the INPUT DATA echo).
     logical :: overridden = .false.
+  contains
+    procedure :: value_count
+    procedure :: get_values
   end type echo_record_t
+
+  !> Values of an echoed array a writer formats at a time (the output is drained between
+  !> such chunks, so a deck's 10^6 per-step values never become one piece of text).
+  integer, parameter :: echo_chunk_values = 65536
+
+  !> Where a writer is in the INPUT DATA echo: it writes up to a chunk of array values, then
+  !> returns for the output to be drained, and goes on from there when called again.
+  type :: echo_cursor_t
+    !> Record being written (0: the lines before the first record are not written yet).
+    integer :: record = 0
+    !> Values of that record's array already written.
+    integer :: value = 0
+    !> Array values per chunk (0: echo_chunk_values; tests make it small).
+    integer :: chunk = 0
+    !> True when the whole head is written.
+    logical :: done = .false.
+  end type echo_cursor_t
 
   !> What a run has shown so far of one column (its rows are gone once written: a run is
   !> solved and written in blocks of rows). Kept by kinetostat_summary's tally_rows.
@@ -629,15 +655,83 @@ contains
     class(step_table_t), intent(inout) :: self
     type(echo_record_t), intent(in) :: record
     type(echo_record_t), allocatable :: grown(:)
+    integer :: i
     if (.not. allocated(self%echo)) allocate (self%echo(16))
     if (self%echo_count == size(self%echo)) then
       allocate (grown(2 * size(self%echo)))
-      grown(1:self%echo_count) = self%echo(1:self%echo_count)
+      ! moved, not copied: an echoed array is held once
+      do i = 1, self%echo_count
+        call move_record(self%echo(i), grown(i))
+      end do
       call move_alloc(grown, self%echo)
     end if
     self%echo_count = self%echo_count + 1
     self%echo(self%echo_count) = record
   end subroutine push_echo
+
+  !> Move a record's contents to `to` (its arrays change owner, nothing is copied).
+  pure subroutine move_record(from, to)
+    type(echo_record_t), intent(inout) :: from
+    type(echo_record_t), intent(inout) :: to
+    to%kind = from%kind
+    to%int_value = from%int_value
+    to%logical_value = from%logical_value
+    to%overridden = from%overridden
+    if (allocated(from%name)) call move_alloc(from%name, to%name)
+    if (allocated(from%unit)) call move_alloc(from%unit, to%unit)
+    if (allocated(from%values)) call move_alloc(from%values, to%values)
+    if (allocated(from%run_end)) call move_alloc(from%run_end, to%run_end)
+    if (allocated(from%text)) call move_alloc(from%text, to%text)
+  end subroutine move_record
+
+  !> Whether two reals have the same bits (0 and -0 differ; a NaN equals its own bits).
+  elemental logical function same_bits(a, b)
+    real(wp), intent(in) :: a, b
+    same_bits = transfer(a, 0_int64) == transfer(b, 0_int64)
+  end function same_bits
+
+  !> Number of values of the record (of an array: its length, however it is kept).
+  pure integer function value_count(self)
+    class(echo_record_t), intent(in) :: self
+    value_count = 0
+    if (allocated(self%run_end)) then
+      if (size(self%run_end) > 0) value_count = self%run_end(size(self%run_end))
+    else if (allocated(self%values)) then
+      value_count = size(self%values)
+    end if
+  end function value_count
+
+  !> Values first .. last of the record, in order, into `buf(1:last - first + 1)`.
+  pure subroutine get_values(self, first, last, buf)
+    class(echo_record_t), intent(in) :: self
+    !> First value wanted (1-based).
+    integer, intent(in) :: first
+    !> Last value wanted (<= value_count()).
+    integer, intent(in) :: last
+    !> The values.
+    real(wp), intent(out) :: buf(:)
+    integer :: lo, hi, mid, i, r
+    if (.not. allocated(self%run_end)) then
+      buf(1:last - first + 1) = self%values(first:last)
+      return
+    end if
+    ! the run holding `first`: the lowest r with run_end(r) >= first
+    lo = 1
+    hi = size(self%run_end)
+    do while (lo < hi)
+      mid = (lo + hi) / 2
+      if (self%run_end(mid) >= first) then
+        hi = mid
+      else
+        lo = mid + 1
+      end if
+    end do
+    r = lo
+    do i = first, last
+      if (i > self%run_end(r)) r = r + 1
+      buf(i - first + 1) = self%values(r)
+    end do
+  end subroutine get_values
 
   !> Echo a real deck value.
   pure subroutine echo_real(self, name, value, unit)
@@ -684,7 +778,33 @@ contains
     real(wp), intent(in) :: values(:)
     !> Unit text.
     character(*), intent(in) :: unit
-    call push_echo(self, echo_record_t(kind=echo_array_kind, name=name, unit=unit, values=values))
+    integer :: runs, i, r
+    call push_echo(self, echo_record_t(kind=echo_array_kind, name=name, unit=unit))
+    associate (e => self%echo(self%echo_count))
+      ! runs of equal bits (so -0 and 0, and NaNs, stay apart and come back as they were)
+      runs = min(size(values), 1)
+      do i = 2, size(values)
+        if (.not. same_bits(values(i), values(i - 1))) runs = runs + 1
+      end do
+      ! a run costs a value and an index: keep runs only when they save memory
+      if (3 * runs > 2 * size(values)) then
+        e%values = values
+      else
+        allocate (e%values(runs), e%run_end(runs))
+        r = min(size(values), 1)
+        if (r == 1) then
+          e%values(1) = values(1)
+          e%run_end(1) = 1
+        end if
+        do i = 2, size(values)
+          if (.not. same_bits(values(i), values(i - 1))) then
+            r = r + 1
+            e%values(r) = values(i)
+          end if
+          e%run_end(r) = i
+        end do
+      end if
+    end associate
   end subroutine echo_array
 
   !> Echo a text value.

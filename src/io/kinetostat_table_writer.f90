@@ -4,8 +4,8 @@
 module kinetostat_table_writer
   use kinetostat_kinds, only: wp
   use kinetostat_selfcheck, only: selfcheck_tolerance
-  use kinetostat_step_table, only: step_table_t, echo_record_t, echo_real_kind, echo_int_kind, &
-    echo_logical_kind, echo_array_kind, echo_text_kind, echo_heading_kind, echo_line_kind, col_force
+  use kinetostat_step_table, only: step_table_t, echo_record_t, echo_cursor_t, echo_chunk_values, echo_real_kind, &
+    echo_int_kind, echo_logical_kind, echo_array_kind, echo_text_kind, echo_heading_kind, echo_line_kind, col_force
   use kinetostat_format, only: echo_number, echo_array_number, footer_number, limit_number, pad_right, put_fixed, &
     fixed_field
   use kinetostat_labels, only: label, lang_ru
@@ -46,7 +46,9 @@ contains
   end subroutine write_table
 
   !> The legacy table's lines before the rows: title, deck, INPUT DATA, the RESULTS heading.
-  pure subroutine write_table_head(mech, table, lang, out)
+  !> With `cursor`, a part at a time: up to a chunk of an echoed array's values, then it
+  !> returns (cursor%done false) for the caller to drain `out`, and goes on when called again.
+  pure subroutine write_table_head(mech, table, lang, out, cursor)
     !> The mechanism (its title).
     class(mechanism_t), intent(in) :: mech
     !> The results (the first block: columns and echo).
@@ -55,21 +57,47 @@ contains
     integer, intent(in) :: lang
     !> Where the lines go.
     type(text_buffer_t), intent(inout) :: out
-    integer :: i
-    call out%put(" "//mech%title(lang))
-    call out%put(" "//label("DECK: ", lang)//table%deck)
-    if (allocated(table%subtitle)) call out%put(" "//label("TITLE: ", lang)//table%subtitle)
-    call put_heading(out, label("INPUT DATA", lang))
-    if (allocated(table%overrides)) then
-      do i = 1, size(table%overrides)
-        call out%put("   --set "//trim(table%overrides(i)))
+    !> Where the head is (written whole when absent).
+    type(echo_cursor_t), intent(inout), optional :: cursor
+    type(echo_cursor_t) :: whole
+    if (present(cursor)) then
+      call head_part(mech, table, lang, out, cursor)
+    else
+      do while (.not. whole%done)
+        call head_part(mech, table, lang, out, whole)
       end do
     end if
-    do i = 1, table%echo_count
-      call put_echo(out, table%echo(i), lang)
+  end subroutine write_table_head
+
+  !> The next part of the head (see write_table_head).
+  pure subroutine head_part(mech, table, lang, out, cursor)
+    class(mechanism_t), intent(in) :: mech
+    type(step_table_t), intent(in) :: table
+    integer, intent(in) :: lang
+    type(text_buffer_t), intent(inout) :: out
+    type(echo_cursor_t), intent(inout) :: cursor
+    integer :: i
+    if (cursor%record == 0) then
+      call out%put(" "//mech%title(lang))
+      call out%put(" "//label("DECK: ", lang)//table%deck)
+      if (allocated(table%subtitle)) call out%put(" "//label("TITLE: ", lang)//table%subtitle)
+      call put_heading(out, label("INPUT DATA", lang))
+      if (allocated(table%overrides)) then
+        do i = 1, size(table%overrides)
+          call out%put("   --set "//trim(table%overrides(i)))
+        end do
+      end if
+      cursor%record = 1
+      cursor%value = 0
+    end if
+    do while (cursor%record <= table%echo_count)
+      call put_echo(out, table%echo(cursor%record), lang, cursor)
+      if (cursor%value > 0) return
+      cursor%record = cursor%record + 1
     end do
     call put_heading(out, label("RESULTS", lang))
-  end subroutine write_table_head
+    cursor%done = .true.
+  end subroutine head_part
 
   !> The legacy table's lines after the rows: the SUMMARY block, the mechanism's summary
   !> records and the self-check footer.
@@ -122,13 +150,16 @@ contains
   end subroutine put_two_line_step
 
   !> One INPUT DATA record (its first line ends in " (--set)" when --set gave the value).
-  pure subroutine put_echo(out, e, lang)
+  !> With `cursor`, an array's values a chunk at a time: cursor%value is left at the values
+  !> written when some remain, at 0 when the record is done.
+  pure subroutine put_echo(out, e, lang, cursor)
     type(text_buffer_t), intent(inout) :: out
     type(echo_record_t), intent(in) :: e
     integer, intent(in) :: lang
+    type(echo_cursor_t), intent(inout), optional :: cursor
     character(len=18) :: whole
-    character(len=:), allocatable :: line, mark
-    integer :: i
+    character(len=:), allocatable :: mark
+    integer :: n, first, last, chunk
     mark = ""
     if (e%overridden) mark = override_mark
     select case (e%kind)
@@ -143,23 +174,53 @@ contains
     case (echo_text_kind)
       call out%put(name_part(e%name)//"  "//e%text//mark)
     case (echo_array_kind)
-      write (whole, '(i0)') size(e%values)
-      call out%put(name_part(e%name//"("//trim(whole)//")")//"  "//label(e%unit, lang)//mark)
-      line = ""
-      do i = 1, size(e%values)
-        line = line//echo_array_number(e%values(i))
-        if (mod(i, echo_array_per_line) == 0 .or. i == size(e%values)) then
-          call out%put(repeat(" ", 6)//line)
-          line = ""
-        end if
-      end do
-      if (size(e%values) == 0) call out%put("")
+      n = e%value_count()
+      first = 1
+      last = n
+      if (present(cursor)) then
+        ! whole lines per chunk
+        chunk = cursor%chunk
+        if (chunk <= 0) chunk = echo_chunk_values
+        chunk = max(1, chunk / echo_array_per_line) * echo_array_per_line
+        first = cursor%value + 1
+        last = min(n, cursor%value + chunk)
+        cursor%value = 0
+        if (last < n) cursor%value = last
+      end if
+      if (first == 1) then
+        write (whole, '(i0)') n
+        call out%put(name_part(e%name//"("//trim(whole)//")")//"  "//label(e%unit, lang)//mark)
+      end if
+      call put_array_lines(out, e, first, last)
+      if (n == 0) call out%put("")
     case (echo_heading_kind)
       call put_heading(out, e%name)
     case default ! echo_line_kind: a line printed as it is
       call out%put(e%name)
     end select
   end subroutine put_echo
+
+  !> Values first .. last of an echoed array, echo_array_per_line to a line (`first` begins a
+  !> line; the last line may be short).
+  pure subroutine put_array_lines(out, e, first, last)
+    type(text_buffer_t), intent(inout) :: out
+    type(echo_record_t), intent(in) :: e
+    integer, intent(in) :: first, last
+    real(wp), allocatable :: v(:)
+    character(len=:), allocatable :: line
+    integer :: i
+    if (last < first) return
+    allocate (v(last - first + 1))
+    call e%get_values(first, last, v)
+    line = ""
+    do i = first, last
+      line = line//echo_array_number(v(i - first + 1))
+      if (mod(i, echo_array_per_line) == 0 .or. i == last) then
+        call out%put(repeat(" ", 6)//line)
+        line = ""
+      end if
+    end do
+  end subroutine put_array_lines
 
   !> An INPUT DATA style line of a real: "   NAME            =  value  unit".
   pure function value_line(name, x, unit) result(line)
