@@ -192,7 +192,7 @@ contains
     type(error_t), allocatable, intent(out) :: error
     type(friction_step_t), allocatable :: fsteps(:)
     character(len=24), allocatable :: names(:)
-    real(wp), allocatable :: residual(:), mismatch(:), motion(:, :), forces(:, :, :)
+    real(wp), allocatable :: residual(:), mismatch(:), motion(:, :), forces(:, :, :), turn(:, :)
     integer, allocatable :: slots(:)
     real(wp) :: crank
     integer :: k, c, ip, nv, nc, np, first, last, nrow, first_bad
@@ -257,6 +257,7 @@ contains
     if (self%deck%friction_on) nc = nv + friction_row_size(self%deck)
     kinematics = table%kinematics_wanted
     crank = crank_length(self%deck)
+    turn = pair_turns(self%deck)
     call table%allocate_rows(nrow)
     allocate (residual(nrow), mismatch(nrow), fsteps(merge(nrow, 0, self%deck%friction_on)))
     allocate (motion(3, merge(nrow, 0, kinematics)), forces(2, np, merge(nrow, 0, kinematics)))
@@ -277,7 +278,7 @@ contains
           first_bad = min(first_bad, kk)
           cycle
         end if
-        call assur_row(self%deck, step, crank, table%rows(1:nv, i))
+        call assur_row(self%deck, step, crank, turn, table%rows(1:nv, i))
         if (self%deck%friction_on) then
           table%rows(nv + 1:nc, i) = friction_csv_values(self%deck, step, fs)
           fsteps(i) = fs
@@ -594,8 +595,24 @@ contains
     type(assur_step_t), intent(in) :: s
     real(wp), allocatable :: v(:)
     allocate (v(assur_row_size(deck)))
-    call assur_row(deck, s, crank_length(deck), v)
+    call assur_row(deck, s, crank_length(deck), pair_turns(deck), v)
   end function assur_csv_values
+
+  !> cos and sin of the angle each pair's force is turned by into its reporting frame
+  !> (-pair_frame), as rotate computes them: (1, ip) cos, (2, ip) sin. (Not vectorised: the
+  !> vector cos and sin of libmvec may differ from the scalar ones in the last bit.)
+  pure function pair_turns(deck) result(turn)
+    !> Validated deck.
+    type(assur_deck_t), intent(in) :: deck
+    real(wp), allocatable :: turn(:, :)
+    integer :: ip
+    allocate (turn(2, size(deck%pair_frame)))
+    !GCC$ novector
+    do ip = 1, size(deck%pair_frame)
+      turn(1, ip) = cos(-deck%pair_frame(ip))
+      turn(2, ip) = sin(-deck%pair_frame(ip))
+    end do
+  end function pair_turns
 
   !> Number of values of a row of assur_csv_columns.
   pure integer function assur_row_size(deck)
@@ -619,13 +636,15 @@ contains
   !> times the step's largest force (moments below that force times the crank's length
   !> scale) are roundoff: printed as 0 with angle 0; so are single components below that floor
   !> (a force along an axis gets exactly that axis' angle).
-  pure subroutine assur_row(deck, s, crank, v)
+  pure subroutine assur_row(deck, s, crank, turn, v)
     !> Validated deck.
     type(assur_deck_t), intent(in) :: deck
     !> One step.
     type(assur_step_t), intent(in) :: s
     !> The crank's length scale (crank_length), m.
     real(wp), intent(in) :: crank
+    !> The pairs' turns into their frames (pair_turns).
+    real(wp), intent(in) :: turn(:, :)
     !> The row (assur_row_size values).
     real(wp), intent(out) :: v(:)
     real(wp) :: floor, f(2), mfloor, nn, mm, f_mag
@@ -653,7 +672,8 @@ contains
       else
         f = deck%pair_sign(ip) * s%f(:, ip)
       end if
-      f = rotate(f, -deck%pair_frame(ip))
+      ! rotate(f, -deck%pair_frame(ip))
+      f = [turn(1, ip) * f(1) - turn(2, ip) * f(2), turn(2, ip) * f(1) + turn(1, ip) * f(2)]
       where (abs(f) <= floor) f = 0.0_wp
       v(pos + 1) = magnitude(f)
       if (deck%angles_signed) then
