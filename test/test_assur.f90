@@ -11,7 +11,7 @@ module test_assur
   use kinetostat_assur_statics, only: dyad_reactions_t, dyad_reactions, pair_is_prismatic
   use kinetostat_assur, only: assur_mech_t, assur_link_t, assur_dyad_t, assur_step_t, assur_force_t, &
     assur_step, assur_kinematics, pair_index, crank_pin_index, pair_sides
-  use kinetostat_assur_deck, only: assur_deck_t, read_assur_deck, assur_window
+  use kinetostat_assur_deck, only: assur_deck_t, read_assur_deck, assur_window, assur_phi1_deg, assur_omega1
   use kinetostat_deck, only: deck_source_t, load_deck
   use kinetostat_assur_layout, only: assur_solve
   use test_harness, only: test_counts_t, check_close, check_true
@@ -384,8 +384,8 @@ contains
       return
     end if
     do k = 1, size(steps)
-      phi = deck%phi1_deg(k) * deg_to_rad
-      p_val = merge(500.0_wp, 100.0_wp, deck%phi1_deg(k) <= 180.0_wp)
+      phi = assur_phi1_deg(deck, k) * deg_to_rad
+      p_val = merge(500.0_wp, 100.0_wp, assur_phi1_deg(deck, k) <= 180.0_wp)
       sth = (e - r * sin(phi)) / l
       cth = sqrt(1.0_wp - sth**2)
       th = atan2(sth, cth)
@@ -407,7 +407,7 @@ contains
       f10 = -(f12 + [0.0_wp, -m1 * g])
       mm1 = -cross(a, f12)
       scale = max(magnitude(f21), magnitude(f10), 1.0_wp)
-      write (at, '(" at phi1=",f6.1)') deck%phi1_deg(k)
+      write (at, '(" at phi1=",f6.1)') assur_phi1_deg(deck, k)
       associate (s => steps(k))
         call check_close(t, "slider-crank F21x"//trim(at), f21(1), s%f(1, pair_index(1, 1)), rtol, rtol * scale)
         call check_close(t, "slider-crank F21y"//trim(at), f21(2), s%f(2, pair_index(1, 1)), rtol, rtol * scale)
@@ -465,7 +465,7 @@ contains
     call check_close(t, "sixbar eps_q3", 0.30750_wp, st(3)%eq, 0.0_wp, 2.0e-4_wp)
     call check_close(t, "sixbar eps_q4", -0.14116_wp, st(4)%eq, 0.0_wp, 2.0e-4_wp)
     call check_close(t, "sixbar a_qH (along x2)", -0.09657_wp, dot_product(st(5)%ao, x2), 0.0_wp, 2.0e-4_wp)
-    call assur_step(deck%mech, phi1, deck%omega1(1), 0.0_wp, [1000.0_wp], [real(wp) ::], s, error)
+    call assur_step(deck%mech, phi1, assur_omega1(deck, 1), 0.0_wp, [1000.0_wp], [real(wp) ::], s, error)
     if (allocated(error)) then
       call check_true(t, "sixbar step", .false., error%message)
       return
@@ -488,11 +488,11 @@ contains
     ! formula (9) with exact kinematics: loads along x2 (F5 + G5 + Phi5) at H, Phi4 + G4 at S4
     a_s4 = rotate(st(4)%ao, -rot2) + st(4)%eq * perp(0.1_wp * unit_at(st(4)%th - rot2)) &
            - st(4)%u**2 * 0.1_wp * unit_at(st(4)%th - rot2)
-    a_s4 = a_s4 * deck%omega1(1)**2
-    a_h = dot_product(st(5)%ao, x2) * deck%omega1(1)**2
+    a_s4 = a_s4 * assur_omega1(deck, 1)**2
+    a_h = dot_product(st(5)%ao, x2) * assur_omega1(deck, 1)**2
     m54e_formula = -(1000.0_wp + 6.0_wp * 10.0_wp - 6.0_wp * a_h) * l_eh * sin(phi4 * deg_to_rad) &
                    - (-2.0_wp * a_s4(1) + 2.0_wp * 10.0_wp) * 0.1_wp * sin(phi4 * deg_to_rad) &
-                   + (-2.0_wp * a_s4(2)) * 0.1_wp * cos(phi4 * deg_to_rad) - 0.007_wp * st(4)%eq * deck%omega1(1)**2
+                   + (-2.0_wp * a_s4(2)) * 0.1_wp * cos(phi4 * deg_to_rad) - 0.007_wp * st(4)%eq * assur_omega1(deck, 1)**2
     call check_close(t, "sixbar F56 = -M54E/(l_EH cos phi4), manual formula (9), exact", &
                      -m54e_formula / (l_eh * cos(phi4 * deg_to_rad)), s%n(pair_index(2, 3)), 1.0e-9_wp, 1.0e-9_wp)
     call check_true(t, "sixbar worked example self-check", s%residual <= 1.0e-9_wp .and. s%mismatch <= 1.0e-9_wp, &

@@ -9,10 +9,10 @@ module test_assur_ext
   use kinetostat_text, only: real_str
   use kinetostat_deck, only: deck_source_t, load_deck, deck_source_from_text
   use kinetostat_assur, only: assur_step_t, pair_index, crank_pin_index
-  use kinetostat_assur_deck, only: assur_deck_t, read_assur_deck
+  use kinetostat_assur_deck, only: assur_deck_t, read_assur_deck, assur_phi1_deg, assur_omega1, assur_load_value
   use kinetostat_assur_layout, only: assur_solve
   use kinetostat_pr3050, only: pr3050_step_t, pr3050_step
-  use kinetostat_pr3050_deck, only: pr3050_deck_t, read_pr3050_deck
+  use kinetostat_pr3050_deck, only: pr3050_deck_t, read_pr3050_deck, pr3050_phi3_deg
   use test_harness, only: test_counts_t, check_close, check_true
   implicit none
   private
@@ -53,7 +53,7 @@ contains
     if (size(steps) /= dedicated%n) return
     worst = 0.0_wp
     do k = 1, dedicated%n
-      ref = pr3050_step(dedicated%p, dedicated%phi3_deg(k) * deg_to_rad, dedicated%omega3(k), dedicated%eps3(k))
+      ref = pr3050_step(dedicated%p, pr3050_phi3_deg(dedicated, k) * deg_to_rad, dedicated%omega3(k), dedicated%eps3(k))
       associate (s => steps(k))
         scale = max(magnitude(ref%f14), magnitude(ref%f34), magnitude(ref%f32), abs(ref%f2))
         diff = max(magnitude(s%f(:, pair_index(1, 1)) - ref%f14), magnitude(s%f(:, crank_pin_index(1)) - ref%f34), &
@@ -122,13 +122,13 @@ contains
       return
     end if
     do k = 1, size(steps)
-      phi = deck%phi1_deg(k) * deg_to_rad
+      phi = assur_phi1_deg(deck, k) * deg_to_rad
       ! x_B = r cos(phi) + l cos(th), sin(th) = -r sin(phi)/l, th' = -r cos(phi)/(l cos(th))
       sth = -r * sin(phi) / l
       cth = sqrt(1.0_wp - sth**2)
       s = r * cos(phi) + l * cth
       ds = -r * sin(phi) + r * cos(phi) * sth / cth
-      write (at, '(" at phi1=",f6.1)') deck%phi1_deg(k)
+      write (at, '(" at phi1=",f6.1)') assur_phi1_deg(deck, k)
       ! virtual work: M*1 + F_drive*ds = 0 (massless links, no gravity)
       call check_close(t, "actuated slider-crank: F_drive = -M/stroke'"//trim(at), -m_load / ds, steps(k)%f_drive, &
                        1.0e-12_wp, 0.0_wp)
@@ -174,20 +174,23 @@ contains
         cycle
       end if
       do k = 1, deck%n
-        phi = deck%phi1_deg(k) * deg_to_rad
+        phi = assur_phi1_deg(deck, k) * deg_to_rad
         x = r * cos(phi) + sqrt(l**2 - (e - r * sin(phi))**2)
-        write (at, '(" at phi1=",f6.1)') deck%phi1_deg(k)
+        write (at, '(" at phi1=",f6.1)') assur_phi1_deg(deck, k)
         select case (variant)
         case (1)
           expected = 2000.0_wp * (x - 0.2_wp)
-          call check_close(t, "linear load table"//trim(at), expected, deck%f_mag(1, k), 1.0e-12_wp, 1.0e-12_wp)
+          call check_close(t, "linear load table"//trim(at), expected, assur_load_value(deck, deck%force_load(1), k), &
+                           1.0e-12_wp, 1.0e-12_wp)
         case (2)
           expected = 300.0_wp * (1.0_wp - abs(x - 0.35_wp) / 0.15_wp)
-          call check_close(t, "triangle load table"//trim(at), expected, deck%f_mag(1, k), 1.0e-12_wp, 1.0e-12_wp)
+          call check_close(t, "triangle load table"//trim(at), expected, assur_load_value(deck, deck%force_load(1), k), &
+                           1.0e-12_wp, 1.0e-12_wp)
         case default
           ! rod angle th: sin(th) = (e - r sin(phi))/l, |th| < 90 deg: M = 0.1 N*m per deg
           th = asin((e - r * sin(phi)) / l) * 180.0_wp / acos(-1.0_wp)
-          call check_close(t, "moment table over the rod's angle"//trim(at), 0.1_wp * th, deck%m_mag(1, k), &
+          call check_close(t, "moment table over the rod's angle"//trim(at), 0.1_wp * th, &
+                           assur_load_value(deck, deck%moment_load(1), k), &
                            1.0e-12_wp, 1.0e-12_wp)
         end select
       end do

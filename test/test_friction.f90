@@ -9,7 +9,7 @@ module test_friction
   use kinetostat_vec2, only: magnitude
   use kinetostat_assur, only: assur_step_t, pair_index, crank_pin_index
   use kinetostat_assur_friction, only: friction_step_t
-  use kinetostat_assur_deck, only: assur_deck_t, read_assur_deck
+  use kinetostat_assur_deck, only: assur_deck_t, read_assur_deck, assur_phi1_deg, assur_omega1, assur_load_value
   use kinetostat_deck, only: deck_source_t, load_deck, deck_source_from_text
   use kinetostat_assur_layout, only: assur_solve, friction_work
   use test_harness, only: test_counts_t, check_close, check_true
@@ -87,7 +87,7 @@ contains
       if (.not. ok) return
       do k = 1, size(steps)
         phi = steps(k)%phi1
-        write (at, '(" (omega1 = ",f6.1,", phi1 = ",f6.1," deg)")') omega, deck%phi1_deg(k)
+        write (at, '(" (omega1 = ",f6.1,", phi1 = ",f6.1," deg)")') omega, assur_phi1_deg(deck, k)
         fa = sqrt(p**2 + (m * g)**2 - 2.0_wp * p * m * g * cos(phi))
         call check_close(t, "journal |F10| by hand"//trim(at), fa, magnitude(steps(k)%f(:, crank_pin_index(1))), &
                          rtol, 0.0_wp)
@@ -175,7 +175,7 @@ contains
     if (allocated(error)) return
     do k = 1, size(steps)
       write (detail, '("phi1 = ",f6.1," deg: residual ",es9.2,", mismatch ",es9.2,", P_loss ",es10.3, &
-        &", M1 - M1_0 ",es10.3)') deck%phi1_deg(k), steps(k)%residual, steps(k)%mismatch, fsteps(k)%p_loss, &
+        &", M1 - M1_0 ",es10.3)') assur_phi1_deg(deck, k), steps(k)%residual, steps(k)%mismatch, fsteps(k)%p_loss, &
         steps(k)%m1 - fsteps(k)%driver_frictionless
       call check_true(t, "friction slider-crank residual <= 1e-9", steps(k)%residual <= selfcheck_limit, detail)
       call check_true(t, "friction slider-crank power balance <= 1e-9", steps(k)%mismatch <= selfcheck_limit, detail)
@@ -253,14 +253,14 @@ contains
     if (size(steps) /= size(steps0)) return
     do k = 1, size(steps)
       write (detail, '("phi1 = ",f6.2," deg: residual ",es9.2,", mismatch ",es9.2,", F_drive ",es12.5,", F_drive_0 ",&
-        &es12.5,", stroke_v ",es10.3)') deck%phi1_deg(k), steps(k)%residual, steps(k)%mismatch, steps(k)%f_drive, &
+        &es12.5,", stroke_v ",es10.3)') assur_phi1_deg(deck, k), steps(k)%residual, steps(k)%mismatch, steps(k)%f_drive, &
         fsteps(k)%driver_frictionless, steps(k)%stroke_v
       call check_true(t, "actuator friction residual <= 1e-9", steps(k)%residual <= selfcheck_limit, detail)
       call check_true(t, "actuator friction F_drive power balance <= 1e-9", steps(k)%mismatch <= selfcheck_limit, detail)
       call check_true(t, "actuator friction P_loss >= 0", fsteps(k)%p_loss >= 0.0_wp, detail)
       call check_close(t, "actuator F_drive_0 = frictionless deck", steps0(k)%f_drive, fsteps(k)%driver_frictionless, &
                        1.0e-12_wp, 0.0_wp)
-      if (deck%omega1(k) /= 0.0_wp) call check_true(t, "actuator friction raises the driver's power", &
+      if (assur_omega1(deck, k) /= 0.0_wp) call check_true(t, "actuator friction raises the driver's power", &
         (steps(k)%f_drive - fsteps(k)%driver_frictionless) * steps(k)%stroke_v > 0.0_wp, detail)
     end do
   end subroutine test_actuator_friction

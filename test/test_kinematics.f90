@@ -20,6 +20,7 @@ module test_kinematics
   use kinetostat_pr3050_layout, only: pr3050_mechanism_t
   use kinetostat_sixbar_layout, only: sixbar_mechanism_t
   use kinetostat_assur_layout, only: assur_mechanism_t
+  use kinetostat_assur_deck, only: assur_omega1, load_schedule_t, load_constant
   use test_harness, only: test_counts_t, check_close, check_true
   implicit none
   private
@@ -63,15 +64,21 @@ contains
     call test_sketch(t)
   end subroutine run_kinematics_tests
 
-  !> The input angles [b - h, b, b + h] for every base angle b, deg.
-  pure function triples(base) result(angles)
-    real(wp), intent(in) :: base(:)
-    real(wp) :: angles(3 * size(base))
+  !> One table whose rows are the rows of three runs in turn (run 1 row k, run 2 row k, run 3
+  !> row k, ...): the triples check_fd reads when the runs' input angles are shifted by
+  !> -h, 0, +h (decks whose input angle is implied by a start and a step).
+  function interleaved(tables) result(table)
+    type(step_table_t), intent(in) :: tables(3)
+    type(step_table_t) :: table
     integer :: j
-    do j = 1, size(base)
-      angles(3 * j - 2:3 * j) = base(j) + [-h_deg, 0.0_wp, h_deg]
+    table = tables(2)
+    if (allocated(table%rows)) deallocate (table%rows)
+    if (any([(tables(j)%row_count() /= tables(2)%row_count(), j=1, 3)])) return
+    allocate (table%rows(size(tables(2)%rows, 1), 3 * tables(2)%row_count()))
+    do j = 1, 3
+      table%rows(:, j::3) = tables(j)%rows
     end do
-  end function triples
+  end function interleaved
 
   !> Load a deck file into memory; a failure is a failed check.
   subroutine load(t, path, source, ok)
@@ -234,96 +241,107 @@ contains
     s = trim(adjustl(buf))
   end function sci
 
-  !> PR 3207: the deck's crank angles (constant omega1).
+  !> PR 3207: the deck's crank angles (constant omega1): three runs with phi_start shifted
+  !> by -h, 0, +h, their rows interleaved (cutting force off).
   subroutine test_fd_pr3207(t)
     type(test_counts_t), intent(inout) :: t
-    type(pr3207_mechanism_t) :: mech
+    type(pr3207_mechanism_t) :: mech, shifted
     type(deck_source_t) :: source
-    type(step_table_t) :: table
+    type(step_table_t) :: tables(3), table
     type(error_t), allocatable :: error
-    real(wp), allocatable :: angles(:)
     logical :: ok
+    integer :: j
     call load(t, "data/pr3207.nml", source, ok)
     if (.not. ok) return
     call mech%read_deck(source, error)
     if (allocated(error)) return
-    angles = triples(mech%deck%phi1_deg)
-    mech%deck%n = size(angles)
-    mech%deck%phi1_deg = angles
-    mech%deck%f5c = spread(0.0_wp, 1, size(angles))
-    call solve_into(t, "pr3207 fd", mech, "data/pr3207.nml", table)
-    call check_fd(t, "pr3207", table, "phi1", spread(mech%deck%p%omega1, 1, size(angles)), &
-                  spread(0.0_wp, 1, size(angles)))
+    do j = 1, 3
+      shifted = mech
+      shifted%deck%phi_start = mech%deck%phi_start + real(j - 2, wp) * h_deg
+      shifted%deck%two_value = .false.
+      shifted%deck%f5c_values = spread(0.0_wp, 1, mech%deck%n)
+      call solve_into(t, "pr3207 fd", shifted, "data/pr3207.nml", tables(j))
+    end do
+    table = interleaved(tables)
+    call check_fd(t, "pr3207", table, "phi1", spread(mech%deck%p%omega1, 1, 3 * mech%deck%n), &
+                  spread(0.0_wp, 1, 3 * mech%deck%n))
   end subroutine test_fd_pr3207
 
   !> PR 3050: the deck's rocker angles, once with a constant speed and no acceleration, once
-  !> at rest with an angular acceleration (the two parts of every eps and a).
+  !> at rest with an angular acceleration (the two parts of every eps and a). The angles are
+  !> implied by phi3_start and dphi3: three runs with phi3_start shifted by -h, 0, +h.
   subroutine test_fd_pr3050(t)
     type(test_counts_t), intent(inout) :: t
-    type(pr3050_mechanism_t) :: mech
+    type(pr3050_mechanism_t) :: mech, shifted
     type(deck_source_t) :: source
-    type(step_table_t) :: table
+    type(step_table_t) :: tables(3), table
     type(error_t), allocatable :: error
-    real(wp), allocatable :: angles(:), w(:), e(:)
+    real(wp), allocatable :: w(:), e(:)
     logical :: ok
-    integer :: run
+    integer :: run, j
     call load(t, "data/pr3050.nml", source, ok)
     if (.not. ok) return
     call mech%read_deck(source, error)
     if (allocated(error)) return
-    angles = triples(mech%deck%phi3_deg)
-    mech%deck%n = size(angles)
-    mech%deck%phi3_deg = angles
     do run = 1, 2
       if (run == 1) then
-        w = spread(0.5_wp, 1, size(angles))
-        e = spread(0.0_wp, 1, size(angles))
+        w = spread(0.5_wp, 1, 3 * mech%deck%n)
+        e = spread(0.0_wp, 1, 3 * mech%deck%n)
       else
-        w = spread(0.0_wp, 1, size(angles))
-        e = spread(0.3_wp, 1, size(angles))
+        w = spread(0.0_wp, 1, 3 * mech%deck%n)
+        e = spread(0.3_wp, 1, 3 * mech%deck%n)
       end if
-      mech%deck%omega3 = w
-      mech%deck%eps3 = e
-      call solve_into(t, "pr3050 fd", mech, "data/pr3050.nml", table)
+      do j = 1, 3
+        shifted = mech
+        shifted%deck%phi3_start = mech%deck%phi3_start + real(j - 2, wp) * h_deg
+        shifted%deck%omega3 = w(1:mech%deck%n)
+        shifted%deck%eps3 = e(1:mech%deck%n)
+        call solve_into(t, "pr3050 fd", shifted, "data/pr3050.nml", tables(j))
+      end do
+      table = interleaved(tables)
       call check_fd(t, "pr3050 run "//achar(iachar("0") + run), table, "phi3", w, e)
     end do
   end subroutine test_fd_pr3050
 
-  !> T.FTN: the deck's crank angles from the extreme position (constant omega1).
+  !> T.FTN: the deck's crank angles from the extreme position (constant omega1): three runs
+  !> with phi_start shifted by -h, 0, +h, their rows interleaved (slider load off).
   subroutine test_fd_sixbar(t)
     type(test_counts_t), intent(inout) :: t
-    type(sixbar_mechanism_t) :: mech
+    type(sixbar_mechanism_t) :: mech, shifted
     type(deck_source_t) :: source
-    type(step_table_t) :: table
+    type(step_table_t) :: tables(3), table
     type(error_t), allocatable :: error
-    real(wp), allocatable :: angles(:)
     logical :: ok
+    integer :: j
     call load(t, "data/sixbar.nml", source, ok)
     if (.not. ok) return
     call mech%read_deck(source, error)
     if (allocated(error)) return
-    angles = triples(mech%deck%phi1_deg)
-    mech%deck%n = size(angles)
-    mech%deck%phi1_deg = angles
-    mech%deck%f5 = spread(0.0_wp, 1, size(angles))
-    call solve_into(t, "sixbar fd", mech, "data/sixbar.nml", table)
-    call check_fd(t, "sixbar", table, "phi1", spread(mech%deck%p%omega1, 1, size(angles)), &
-                  spread(0.0_wp, 1, size(angles)))
+    do j = 1, 3
+      shifted = mech
+      shifted%deck%phi_start = mech%deck%phi_start + real(j - 2, wp) * h_deg
+      shifted%deck%f5 = spread(0.0_wp, 1, mech%deck%n)
+      call solve_into(t, "sixbar fd", shifted, "data/sixbar.nml", tables(j))
+    end do
+    table = interleaved(tables)
+    call check_fd(t, "sixbar", table, "phi1", spread(mech%deck%p%omega1, 1, 3 * mech%deck%n), &
+                  spread(0.0_wp, 1, 3 * mech%deck%n))
   end subroutine test_fd_sixbar
 
   !> Every bundled generic deck at its own input angles, with a constant crank speed and then
-  !> with the crank at rest and accelerating.
+  !> with the crank at rest and accelerating (the loads off). Three runs with the input
+  !> angles shifted by -h, 0, +h, their rows interleaved.
   subroutine test_fd_assur(t)
     type(test_counts_t), intent(inout) :: t
     character(len=32), parameter :: decks(*) = [character(len=32) :: "data/assur_pr3207.nml", &
       "data/assur_sixbar.nml", "data/assur_slider_crank.nml", "data/assur_pr3050.nml"]
-    type(assur_mechanism_t) :: mech
+    type(assur_mechanism_t) :: mech, shifted
     type(deck_source_t) :: source
-    type(step_table_t) :: table
+    type(step_table_t) :: tables(3), table
     type(error_t), allocatable :: error
-    real(wp), allocatable :: angles(:), w(:), e(:)
+    real(wp), allocatable :: w(:), e(:)
     logical :: ok
-    integer :: i, run
+    integer :: i, run, j, k, n
     do i = 1, size(decks)
       call load(t, trim(decks(i)), source, ok)
       if (.not. ok) cycle
@@ -332,22 +350,30 @@ contains
         call check_true(t, trim(decks(i))//" reads", .false., error%message)
         cycle
       end if
-      angles = triples(mech%deck%phi1_deg)
-      mech%deck%n = size(angles)
-      mech%deck%phi1_deg = angles
-      mech%deck%f_mag = reshape([real(wp) ::], [size(mech%deck%f_mag, 1), size(angles)], pad=[0.0_wp])
-      mech%deck%m_mag = reshape([real(wp) ::], [size(mech%deck%m_mag, 1), size(angles)], pad=[0.0_wp])
+      n = mech%deck%n
       do run = 1, 2
         if (run == 1) then
-          w = spread(mech%deck%omega1(1), 1, size(angles))
-          e = spread(0.0_wp, 1, size(angles))
+          w = spread(assur_omega1(mech%deck, 1), 1, 3 * n)
+          e = spread(0.0_wp, 1, 3 * n)
         else
-          w = spread(0.0_wp, 1, size(angles))
-          e = spread(40.0_wp, 1, size(angles))
+          w = spread(0.0_wp, 1, 3 * n)
+          e = spread(40.0_wp, 1, 3 * n)
         end if
-        mech%deck%omega1 = w
-        mech%deck%eps1 = e
-        call solve_into(t, trim(decks(i))//" fd", mech, trim(decks(i)), table)
+        do j = 1, 3
+          shifted = mech
+          if (allocated(shifted%deck%phi_list)) then
+            shifted%deck%phi_list = mech%deck%phi_list + real(j - 2, wp) * h_deg
+          else
+            shifted%deck%phi_start = mech%deck%phi_start + real(j - 2, wp) * h_deg
+          end if
+          shifted%deck%force_load = [(load_schedule_t(kind=load_constant, value=0.0_wp), k=1, size(mech%deck%force_load))]
+          shifted%deck%moment_load = [(load_schedule_t(kind=load_constant, value=0.0_wp), k=1, size(mech%deck%moment_load))]
+          shifted%deck%prescribed = .true.
+          shifted%deck%omega1_values = w(1:n)
+          shifted%deck%eps1_values = e(1:n)
+          call solve_into(t, trim(decks(i))//" fd", shifted, trim(decks(i)), tables(j))
+        end do
+        table = interleaved(tables)
         call check_fd(t, trim(decks(i))//" run "//achar(iachar("0") + run), table, "phi1", w, e)
       end do
     end do

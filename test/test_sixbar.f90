@@ -397,7 +397,6 @@ contains
     type(sixbar_step_t), allocatable :: steps(:)
     type(error_t), allocatable :: error
     type(deck_source_t) :: source
-    integer :: k
     p = ref
     p%lam2 = 1.6_wp
     q = sixbar_position(p, 180.0_wp * deg_to_rad)
@@ -412,7 +411,8 @@ contains
     if (.not. allocated(error)) call read_sixbar_deck(source, deck, error)
     if (allocated(error)) return
     deck%p%lam2 = 1.6_wp
-    deck%phi1_deg = [(30.0_wp * real(k - 1, wp), k=1, deck%n)]
+    deck%phi_start = 0.0_wp
+    deck%dphi = 30.0_wp
     call sixbar_solve("short.nml", deck, steps, error)
     call check_true(t, "short rod deck: geometry error", allocated(error), "no error")
     if (.not. allocated(error)) return

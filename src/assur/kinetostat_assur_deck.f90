@@ -26,6 +26,9 @@ module kinetostat_assur_deck
   implicit none
   private
   public :: assur_deck_t, read_assur_deck, write_assur_template, assur_window
+  public :: load_schedule_t, load_constant, load_window, load_column, load_table
+  public :: assur_phi1_deg, assur_omega1_steps, assur_omega1, assur_eps1, assur_motion_sign
+  public :: assur_load_value, assur_force_values, assur_moment_values, assur_load_steps
   public :: max_dyads, max_forces, max_moments
 
   !> Capacity of the dyad list.
@@ -136,6 +139,38 @@ module kinetostat_assur_deck
     real(wp) :: over = unset
   end type moment_in_t
 
+  !> Load schedule: the same value at every step.
+  integer, parameter :: load_constant = 1
+  !> Load schedule: `value` inside a window of crank angles, `idle` outside.
+  integer, parameter :: load_window = 2
+  !> Load schedule: a column of the deck's step_values (one value per step).
+  integer, parameter :: load_column = 3
+  !> Load schedule: a table of values over the position of a link.
+  integer, parameter :: load_table = 4
+
+  !> How a validated load (force magnitude or moment) gets its value at a step; the value
+  !> of step k is assur_load_value (no per-step array is stored).
+  type :: load_schedule_t
+    !> load_constant, load_window, load_column or load_table.
+    integer :: kind = load_constant
+    !> Value, N or N*m: constant, or inside the window.
+    real(wp) :: value = 0.0_wp
+    !> Value outside the window, N or N*m.
+    real(wp) :: idle = 0.0_wp
+    !> Window [phi_on, phi_off] of crank angles, deg (absolute, not modulo 360).
+    real(wp) :: phi_on = 0.0_wp, phi_off = 0.0_wp
+    !> Column: step k's value is the deck's step_values(offset + k).
+    integer :: offset = 0
+    !> Table: positions of its points, deg (a link's angle) or m (a slider's stroke).
+    real(wp), allocatable :: x(:)
+    !> Table: values of its points, N or N*m.
+    real(wp), allocatable :: v(:)
+    !> Table: internal index of the link whose position is the abscissa.
+    integer :: link = 0
+    !> Table: the frame pair measuring that link's stroke (0: its angle).
+    integer :: pair = 0
+  end type load_schedule_t
+
   !> A validated `&assur` deck.
   type :: assur_deck_t
     !> Mechanism.
@@ -148,8 +183,12 @@ module kinetostat_assur_deck
     real(wp) :: dphi = 0.0_wp
     !> Number of steps.
     integer :: n = 0
-    !> Crank angles given as a list phi1(:), deg (not allocated: phi_start + k*dphi).
+    !> Crank angles given as a list phi1(:), deg, elements 1..n (the namelist's read buffer,
+    !> kept; not allocated: phi_start + (k - 1)*dphi). Step k's angle: assur_phi1_deg.
     real(wp), allocatable :: phi_list(:)
+    !> Sign of the list's first move (+1 increasing, -1 decreasing; 0: the angles never
+    !> change): the direction of the steps before it (see assur_omega1_steps).
+    real(wp) :: first_move = 0.0_wp
     !> Whether phi_start was computed as the extreme position of the output link.
     logical :: start_extreme = .false.
     !> Whether the deck gave global points at the reference position (coordinates = 'global').
@@ -162,16 +201,17 @@ module kinetostat_assur_deck
     real(wp) :: omega1_const = 0.0_wp
     !> Whether omega1/eps1 were prescribed per step.
     logical :: prescribed = .false.
-    !> Crank angle per step, deg.
-    real(wp), allocatable :: phi1_deg(:)
-    !> Crank speed per step, rad/s.
-    real(wp), allocatable :: omega1(:)
-    !> Crank acceleration per step, rad/s^2.
-    real(wp), allocatable :: eps1(:)
-    !> Force magnitudes (force, step), N.
-    real(wp), allocatable :: f_mag(:, :)
-    !> Moments (moment, step), N*m.
-    real(wp), allocatable :: m_mag(:, :)
+    !> Prescribed crank speed omega1_step, rad/s, elements 1..n (the read buffer, kept;
+    !> allocated only when prescribed). Step k's speed: assur_omega1.
+    real(wp), allocatable :: omega1_values(:)
+    !> Prescribed crank acceleration eps1_step, rad/s^2, elements 1..n (as omega1_values).
+    real(wp), allocatable :: eps1_values(:)
+    !> The deck's step_values (columns of n values each), N or N*m (the read buffer, kept).
+    real(wp), allocatable :: step_values(:)
+    !> How each external force's magnitude (N) is given per step (see assur_force_values).
+    type(load_schedule_t), allocatable :: force_load(:)
+    !> How each external moment (N*m) is given per step (see assur_moment_values).
+    type(load_schedule_t), allocatable :: moment_load(:)
     !> Reporting frame angle of each pair (dyad pairs, then crank pin), rad.
     real(wp), allocatable :: pair_frame(:)
     !> Column name stem of each pair ("F21").
@@ -188,9 +228,6 @@ module kinetostat_assur_deck
     type(pair_friction_t), allocatable :: friction(:)
     !> Whether any pair has friction (otherwise the run is the frictionless one, byte for byte).
     logical :: friction_on = .false.
-    !> Motion sign of the input per step: the sign of omega1, or with the input at rest the
-    !> direction in which the run moves it (+1: phi1 increasing).
-    real(wp), allocatable :: motion_sign(:)
   end type assur_deck_t
 
   !> Template deck: the slider-crank of data/assur_slider_crank.nml.
@@ -382,17 +419,16 @@ contains
         " values (one per step), got "//int_str(n_eps), error)
       if (allocated(error)) return
       deck%prescribed = .true.
-      deck%omega1 = omega1_step(1:deck%n)
-      deck%eps1 = eps1_step(1:deck%n)
+      ! the read buffers are the deck's arrays (no second copy)
+      call move_alloc(omega1_step, deck%omega1_values)
+      call move_alloc(eps1_step, deck%eps1_values)
     else
       call require_set(ctx, "omega1", omega1, error); if (allocated(error)) return
-      allocate (deck%omega1(deck%n), source=omega1)
-      allocate (deck%eps1(deck%n), source=0.0_wp)
       deck%omega1_const = omega1
-      if (allocated(deck%phi_list)) deck%omega1 = signed_speed(deck%phi_list, omega1)
+      deallocate (omega1_step, eps1_step)
     end if
-    deallocate (omega1_step, eps1_step)
     call count_values(ctx, "step_values", step_values, n_values, error); if (allocated(error)) return
+    call move_alloc(step_values, deck%step_values)
 
     ! ---- dyads: the leading set entries, no gaps
     nd = 0
@@ -455,7 +491,7 @@ contains
       nm = k
     end do
     allocate (deck%mech%forces(nf), deck%mech%moment_link(nm))
-    allocate (deck%f_mag(nf, deck%n), deck%m_mag(nm, deck%n))
+    allocate (deck%force_load(nf), deck%moment_load(nm))
     call read_output_link(ctx, output_link, ids, deck%mech, error); if (allocated(error)) return
     call crank_angles(ctx, deck, error); if (allocated(error)) return
     do k = nf + 1, max_forces
@@ -487,12 +523,12 @@ contains
         deck%mech%forces(k) = assur_force_t(link=i, at=fi%at, angle=fi%angle * deg_to_rad, follow=fi%follow)
         if (is_set(fi%table(1))) then
           call read_table(ctx, name, fi%table, fi%over, [fi%value, fi%idle, fi%phi_on, fi%phi_off, fi%column], &
-                          ids, deck, deck%f_mag(k, :), error)
+                          ids, deck, deck%force_load(k), error)
         else
           call require_rule(ctx, name//"over", .not. is_set(fi%over), "only used with table", error)
           if (allocated(error)) return
           sched = schedule_in_t(value=fi%value, idle=fi%idle, phi_on=fi%phi_on, phi_off=fi%phi_off, column=fi%column)
-          call read_schedule(ctx, name, sched, deck%phi1_deg, step_values(1:n_values), deck%f_mag(k, :), error)
+          call read_schedule(ctx, name, sched, deck%n, n_values, deck%force_load(k), error)
         end if
         if (allocated(error)) return
       end associate
@@ -504,12 +540,12 @@ contains
         deck%mech%moment_link(k) = i
         if (is_set(mi%table(1))) then
           call read_table(ctx, name, mi%table, mi%over, [mi%value, mi%idle, mi%phi_on, mi%phi_off, mi%column], &
-                          ids, deck, deck%m_mag(k, :), error)
+                          ids, deck, deck%moment_load(k), error)
         else
           call require_rule(ctx, name//"over", .not. is_set(mi%over), "only used with table", error)
           if (allocated(error)) return
           sched = schedule_in_t(value=mi%value, idle=mi%idle, phi_on=mi%phi_on, phi_off=mi%phi_off, column=mi%column)
-          call read_schedule(ctx, name, sched, deck%phi1_deg, step_values(1:n_values), deck%m_mag(k, :), error)
+          call read_schedule(ctx, name, sched, deck%n, n_values, deck%moment_load(k), error)
         end if
         if (allocated(error)) return
       end associate
@@ -546,7 +582,6 @@ contains
     if (allocated(error)) return
     deck%friction%name = deck%pair_name
     deck%friction_on = friction_active(deck%friction)
-    deck%motion_sign = merge(-1.0_wp, 1.0_wp, deck%omega1 < 0.0_wp)
 
     deck%mech%g = g
     deck%gravity_angle = gravity_angle
@@ -850,15 +885,15 @@ contains
   !> deck%start_extreme.
   subroutine read_steps(ctx, phi1, phi_start, dphi, n, start_at, deck, error)
     type(deck_context_t), intent(in) :: ctx
-    !> The list as read (unset after its values), deg.
-    real(wp), intent(in) :: phi1(:)
+    !> The list as read (unset after its values), deg; moved into deck%phi_list when given.
+    real(wp), allocatable, intent(inout) :: phi1(:)
     !> First angle (deg), step (deg), number of steps as read (or unset).
     real(wp), intent(in) :: phi_start, dphi, n
     !> '' or 'extreme'.
     character(*), intent(in) :: start_at
     type(assur_deck_t), intent(inout) :: deck
     type(error_t), allocatable, intent(out) :: error
-    integer :: n_list
+    integer :: n_list, k
     call require_rule(ctx, "start_at", any(lower(trim(start_at)) == [character(len=8) :: "", "extreme"]), &
       "must be 'extreme' (the first extreme position of the output link at or after phi_start), got '"// &
       trim(start_at)//"'", error)
@@ -869,8 +904,14 @@ contains
       call require_rule(ctx, "phi1", .not. any(is_set([phi_start, dphi, n])) .and. .not. deck%start_extreme, &
         "give either phi1(:) (a list of crank angles) or phi_start [start_at], dphi, n, not both", error)
       if (allocated(error)) return
-      deck%phi_list = phi1(1:n_list)
       deck%n = n_list
+      do k = 2, n_list
+        if (phi1(k) /= phi1(k - 1)) then
+          deck%first_move = sign(1.0_wp, phi1(k) - phi1(k - 1))
+          exit
+        end if
+      end do
+      call move_alloc(phi1, deck%phi_list)
       return
     end if
     deck%phi_start = optional_default(phi_start, 0.0_wp)
@@ -879,34 +920,212 @@ contains
     deck%dphi = dphi
   end subroutine read_steps
 
-  !> Crank speed per step of an angle list at constant |omega1| (rad/s): its sign is that
-  !> of the move that brought the crank to the step's angle, + from a smaller angle, - from
-  !> a larger one (a turning point keeps the sign it was reached with); the first step (and
-  !> repeats) take the first move's sign; without any move omega1 is kept as given. A
-  !> rocking list thus equals its monotonic runs, each turning point ending a run.
-  pure function signed_speed(phi, omega1) result(w)
-    !> Crank angles, deg.
-    real(wp), intent(in) :: phi(:)
-    !> Speed, rad/s.
+  !> Crank angle of step k, deg: the list's k-th angle, or phi_start + (k - 1)*dphi.
+  pure real(wp) function assur_phi1_deg(deck, k) result(phi)
+    !> Validated deck.
+    type(assur_deck_t), intent(in) :: deck
+    !> Step number, 1..n.
+    integer, intent(in) :: k
+    if (allocated(deck%phi_list)) then
+      phi = deck%phi_list(k)
+    else
+      phi = deck%phi_start + real(k - 1, wp) * deck%dphi
+    end if
+  end function assur_phi1_deg
+
+  !> Crank speed of steps k1..k2, rad/s: prescribed per step, or the constant omega1; for
+  !> an angle list at constant |omega1| its sign is that of the move that brought the crank
+  !> to the step's angle, + from a smaller angle, - from a larger one (a turning point keeps
+  !> the sign it was reached with); the steps before the first move (and their repeats)
+  !> take the first move's sign; without any move omega1 is kept as given. A rocking list
+  !> thus equals its monotonic runs, each turning point ending a run. (Computed for a span
+  !> of steps: the sign carries from step to step; the search back for the move before k1
+  !> ends at that move.)
+  pure function assur_omega1_steps(deck, k1, k2) result(w)
+    !> Validated deck.
+    type(assur_deck_t), intent(in) :: deck
+    !> First and last step, 1 <= k1, k2 <= n.
+    integer, intent(in) :: k1, k2
+    !> Speed of steps k1..k2, rad/s.
+    real(wp) :: w(max(0, k2 - k1 + 1))
+    !> Direction of the last move at or before the step (+1, -1; 0: none at all).
+    real(wp) :: dir
+    !> Step number.
+    integer :: k
+    if (deck%prescribed) then
+      w = deck%omega1_values(k1:k2)
+      return
+    end if
+    w = deck%omega1_const
+    if (.not. allocated(deck%phi_list) .or. k2 < k1) return
+    associate (phi => deck%phi_list)
+      dir = deck%first_move
+      do k = k1, 2, -1
+        if (phi(k) /= phi(k - 1)) then
+          dir = sign(1.0_wp, phi(k) - phi(k - 1))
+          exit
+        end if
+      end do
+      do k = k1, k2
+        if (k > k1) then
+          if (phi(k) /= phi(k - 1)) dir = sign(1.0_wp, phi(k) - phi(k - 1))
+        end if
+        if (dir /= 0.0_wp) w(k - k1 + 1) = dir * abs(deck%omega1_const)
+      end do
+    end associate
+  end function assur_omega1_steps
+
+  !> Crank speed of step k, rad/s (see assur_omega1_steps).
+  pure real(wp) function assur_omega1(deck, k) result(omega1)
+    !> Validated deck.
+    type(assur_deck_t), intent(in) :: deck
+    !> Step number, 1..n.
+    integer, intent(in) :: k
+    !> The one-element span k..k, rad/s.
+    real(wp) :: w(1)
+    w = assur_omega1_steps(deck, k, k)
+    omega1 = w(1)
+  end function assur_omega1
+
+  !> Crank acceleration of step k, rad/s^2: prescribed per step, else 0.
+  pure real(wp) function assur_eps1(deck, k) result(eps1)
+    !> Validated deck.
+    type(assur_deck_t), intent(in) :: deck
+    !> Step number, 1..n.
+    integer, intent(in) :: k
+    eps1 = 0.0_wp
+    if (deck%prescribed) eps1 = deck%eps1_values(k)
+  end function assur_eps1
+
+  !> Motion sign of the input at a step of crank speed omega1 (rad/s): -1 when omega1 < 0,
+  !> else +1 (phi1 increasing, also with the input at rest).
+  elemental real(wp) function assur_motion_sign(omega1) result(motion)
+    !> Crank speed of the step, rad/s.
     real(wp), intent(in) :: omega1
-    real(wp) :: w(size(phi))
-    real(wp) :: dir(size(phi))
-    integer :: k, n
-    n = size(phi)
-    dir = 0.0_wp
-    do k = 2, n
-      if (phi(k) /= phi(k - 1)) then
-        dir(k) = sign(1.0_wp, phi(k) - phi(k - 1))
-      else
-        dir(k) = dir(k - 1)
+    motion = merge(-1.0_wp, 1.0_wp, omega1 < 0.0_wp)
+  end function assur_motion_sign
+
+  !> Value of a load at step k, N or N*m (its schedule: constant, window, step_values
+  !> column, or table over a link's position; a table's step whose position fails gives 0,
+  !> the step itself reports the failure).
+  pure real(wp) function assur_load_value(deck, load, k) result(value)
+    !> Validated deck.
+    type(assur_deck_t), intent(in) :: deck
+    !> The load's schedule (deck%force_load(i) or deck%moment_load(i)).
+    type(load_schedule_t), intent(in) :: load
+    !> Step number, 1..n.
+    integer, intent(in) :: k
+    !> Table: the abscissa link's position, deg or m.
+    real(wp) :: q
+    !> Table: whether the step's position was found.
+    logical :: ok
+    select case (load%kind)
+    case (load_window)
+      value = assur_window(assur_phi1_deg(deck, k), load%phi_on, load%phi_off, load%value, load%idle)
+    case (load_column)
+      value = deck%step_values(load%offset + k)
+    case (load_table)
+      call table_position(deck, load, k, q, ok)
+      value = 0.0_wp
+      if (ok) value = table_value(load, q)
+    case default
+      value = load%value
+    end select
+  end function assur_load_value
+
+  !> Force magnitudes of step k, N (one per deck%force_load).
+  pure function assur_force_values(deck, k) result(values)
+    !> Validated deck.
+    type(assur_deck_t), intent(in) :: deck
+    !> Step number, 1..n.
+    integer, intent(in) :: k
+    !> One value per force, N.
+    real(wp) :: values(size(deck%force_load))
+    !> Force number.
+    integer :: i
+    do i = 1, size(values)
+      values(i) = assur_load_value(deck, deck%force_load(i), k)
+    end do
+  end function assur_force_values
+
+  !> Moments of step k, N*m (one per deck%moment_load).
+  pure function assur_moment_values(deck, k) result(values)
+    !> Validated deck.
+    type(assur_deck_t), intent(in) :: deck
+    !> Step number, 1..n.
+    integer, intent(in) :: k
+    !> One value per moment, N*m.
+    real(wp) :: values(size(deck%moment_load))
+    !> Moment number.
+    integer :: i
+    do i = 1, size(values)
+      values(i) = assur_load_value(deck, deck%moment_load(i), k)
+    end do
+  end function assur_moment_values
+
+  !> A load's value at every step, N or N*m (for the echo and the load-edge marks; a
+  !> temporary of n values).
+  pure function assur_load_steps(deck, load) result(values)
+    !> Validated deck.
+    type(assur_deck_t), intent(in) :: deck
+    !> The load's schedule.
+    type(load_schedule_t), intent(in) :: load
+    !> One value per step, N or N*m.
+    real(wp) :: values(deck%n)
+    !> Step number.
+    integer :: k
+    do k = 1, deck%n
+      values(k) = assur_load_value(deck, load, k)
+    end do
+  end function assur_load_steps
+
+  !> Position of a table load's abscissa link at step k: its angle in deg, taken modulo 360
+  !> into [x1, x1 + 360), or a slider's stroke on its frame guide in m; not ok when the
+  !> step's kinematics fails.
+  pure subroutine table_position(deck, load, k, q, ok)
+    !> Validated deck (mechanism and crank angles).
+    type(assur_deck_t), intent(in) :: deck
+    !> A table load.
+    type(load_schedule_t), intent(in) :: load
+    !> Step number, 1..n.
+    integer, intent(in) :: k
+    !> Position, deg or m.
+    real(wp), intent(out) :: q
+    !> Whether the kinematics of the step succeeded.
+    logical, intent(out) :: ok
+    type(link_state_t) :: states(0:2 * size(deck%mech%dyads) + 1)
+    type(dyad_pose_t) :: poses(size(deck%mech%dyads))
+    type(error_t), allocatable :: kin_error
+    !> Speed and acceleration analogues of the position (unused).
+    real(wp) :: dq, ddq
+    q = 0.0_wp
+    call assur_kinematics(deck%mech, assur_phi1_deg(deck, k) * deg_to_rad, states, poses, kin_error)
+    ok = .not. allocated(kin_error)
+    if (.not. ok) return
+    call link_position(states, poses, load%link, load%pair, q, dq, ddq)
+    if (load%pair == 0) q = load%x(1) + modulo(q * rad_to_deg - load%x(1), 360.0_wp)
+  end subroutine table_position
+
+  !> A table load's value at position q (deg or m; inside the table): linear interpolation.
+  pure real(wp) function table_value(load, q) result(value)
+    !> A table load.
+    type(load_schedule_t), intent(in) :: load
+    !> Position, deg or m.
+    real(wp), intent(in) :: q
+    !> Segment of the table holding q.
+    integer :: seg
+    associate (x => load%x, v => load%v, np => size(load%x))
+      if (np == 1) then
+        value = v(1)
+        return
       end if
-    end do
-    do k = n - 1, 1, -1
-      if (dir(k) == 0.0_wp) dir(k) = dir(k + 1)
-    end do
-    w = omega1
-    where (dir /= 0.0_wp) w = dir * abs(omega1)
-  end function signed_speed
+      seg = 1
+      do while (seg < np - 1 .and. q > x(seg + 1))
+        seg = seg + 1
+      end do
+      value = v(seg) + (v(seg + 1) - v(seg)) * (q - x(seg)) / (x(seg + 1) - x(seg))
+    end associate
+  end function table_value
 
   !> A force by components (fx, fy; global, or link axes when follow): becomes its angle and
   !> a constant value (or `value` inside the window phi_on..phi_off, 0 outside).
@@ -932,7 +1151,7 @@ contains
   !> of link `over` (default: the output link): its angle in deg, taken modulo 360 into
   !> [x1, x1 + 360), or a slider's stroke on its frame guide in m; linear interpolation,
   !> positions strictly increasing, every step's position inside the table.
-  subroutine read_table(ctx, name, table, over, others, ids, deck, values, error)
+  subroutine read_table(ctx, name, table, over, others, ids, deck, load, error)
     type(deck_context_t), intent(in) :: ctx
     !> Prefix, e.g. "force(1)%".
     character(*), intent(in) :: name
@@ -946,17 +1165,18 @@ contains
     integer, intent(in) :: ids(0:)
     !> The deck (mechanism and crank angles).
     type(assur_deck_t), intent(in) :: deck
-    !> Value per step.
-    real(wp), intent(out) :: values(:)
+    !> The load's schedule (a table; its values per step by assur_load_value).
+    type(load_schedule_t), intent(out) :: load
     type(error_t), allocatable, intent(out) :: error
-    type(link_state_t) :: states(0:2 * size(deck%mech%dyads) + 1)
-    type(dyad_pose_t) :: poses(size(deck%mech%dyads))
-    type(error_t), allocatable :: kin_error
-    real(wp), allocatable :: x(:), v(:)
-    real(wp) :: q, dq, ddq, tol
-    integer :: n_values, np, i, pair, k, seg
+    !> Abscissa link's position at a step, deg or m.
+    real(wp) :: q
+    !> Tolerance of the range check, deg or m.
+    real(wp) :: tol
+    !> Whether the step's kinematics succeeded.
+    logical :: ok
+    integer :: n_values, np, i, k
     character(len=:), allocatable :: unit
-    values = 0.0_wp
+    load%kind = load_table
     call require_rule(ctx, name//"table", .not. any(is_set(others)), &
       "give either table (values over a link's position) or value [idle, phi_on, phi_off] or column", error)
     if (allocated(error)) return
@@ -965,13 +1185,12 @@ contains
       int_str(n_values)//" numbers", error)
     if (allocated(error)) return
     np = n_values / 2
-    allocate (x(np), v(np))
-    x = table(1:n_values:2)
-    v = table(2:n_values:2)
+    load%x = table(1:n_values:2)
+    load%v = table(2:n_values:2)
     do k = 2, np
-      if (.not. x(k) > x(k - 1)) then
+      if (.not. load%x(k) > load%x(k - 1)) then
         call deck_error(ctx, name//"table", "positions must be strictly increasing: point "//int_str(k)// &
-          " ("//real_str(x(k))//") after "//real_str(x(k - 1)), error)
+          " ("//real_str(load%x(k))//") after "//real_str(load%x(k - 1)), error)
         return
       end if
     end do
@@ -979,31 +1198,23 @@ contains
     if (is_set(over)) then
       call moving_link(ctx, name//"over", over, ids, i, error); if (allocated(error)) return
     end if
-    pair = output_pair_of(deck%mech, i)
+    load%link = i
+    load%pair = output_pair_of(deck%mech, i)
     unit = " deg"
-    if (pair /= 0) unit = " m"
-    tol = 1.0e-9_wp * max(x(np) - x(1), abs(x(1)), abs(x(np)), 1.0e-300_wp)
-    do k = 1, deck%n
-      call assur_kinematics(deck%mech, deck%phi1_deg(k) * deg_to_rad, states, poses, kin_error)
-      if (allocated(kin_error)) cycle ! reported by the solution with the step
-      call link_position(states, poses, i, pair, q, dq, ddq)
-      if (pair == 0) q = x(1) + modulo(q * rad_to_deg - x(1), 360.0_wp)
-      if (q < x(1) - tol .or. q > x(np) + tol) then
-        call deck_error(ctx, name//"table", "at step "//int_str(k)//" (phi1 = "//real_str(deck%phi1_deg(k))// &
-          " deg) link "//int_str(ids(i))//" is at "//real_str(q)//unit//", outside the table ["// &
-          real_str(x(1))//", "//real_str(x(np))//"]"//unit, error)
-        return
-      end if
-      if (np == 1) then
-        values(k) = v(1)
-        cycle
-      end if
-      seg = 1
-      do while (seg < np - 1 .and. q > x(seg + 1))
-        seg = seg + 1
+    if (load%pair /= 0) unit = " m"
+    associate (x => load%x)
+      tol = 1.0e-9_wp * max(x(np) - x(1), abs(x(1)), abs(x(np)), 1.0e-300_wp)
+      do k = 1, deck%n
+        call table_position(deck, load, k, q, ok)
+        if (.not. ok) cycle ! reported by the solution with the step
+        if (q < x(1) - tol .or. q > x(np) + tol) then
+          call deck_error(ctx, name//"table", "at step "//int_str(k)//" (phi1 = "//real_str(assur_phi1_deg(deck, k))// &
+            " deg) link "//int_str(ids(i))//" is at "//real_str(q)//unit//", outside the table ["// &
+            real_str(x(1))//", "//real_str(x(np))//"]"//unit, error)
+          return
+        end if
       end do
-      values(k) = v(seg) + (v(seg + 1) - v(seg)) * (q - x(seg)) / (x(seg + 1) - x(seg))
-    end do
+    end associate
   end subroutine read_table
 
   !> The output link (default: link b of the last dyad) and how its position is measured.
@@ -1031,11 +1242,7 @@ contains
     type(assur_deck_t), intent(inout) :: deck
     type(error_t), allocatable, intent(out) :: error
     real(wp) :: phi
-    integer :: k
-    if (allocated(deck%phi_list)) then
-      deck%phi1_deg = deck%phi_list
-      return
-    end if
+    if (allocated(deck%phi_list)) return
     if (deck%start_extreme) then
       call assur_extreme(deck%mech, deck%phi_start * deg_to_rad, phi, error)
       if (allocated(error)) then
@@ -1044,7 +1251,6 @@ contains
       end if
       deck%phi_start = phi * rad_to_deg
     end if
-    deck%phi1_deg = [(deck%phi_start + real(k - 1, wp) * deck%dphi, k=1, deck%n)]
   end subroutine crank_angles
 
   !> The driving linear actuator, when `drive_dyad` and `drive_pair` name one: a prismatic
@@ -1377,19 +1583,20 @@ contains
       ": remove it", error)
   end subroutine used_only_if
 
-  !> Per-step values of a load from its schedule (constant, window, or a step_values column).
-  subroutine read_schedule(ctx, name, s, phi1_deg, step_values, values, error)
+  !> A load's schedule (constant, window, or a step_values column) from the deck.
+  subroutine read_schedule(ctx, name, s, n, n_values, load, error)
     type(deck_context_t), intent(in) :: ctx
     !> Prefix, e.g. "force(1)%".
     character(*), intent(in) :: name
     type(schedule_in_t), intent(inout) :: s
-    real(wp), intent(in) :: phi1_deg(:)
-    real(wp), intent(in) :: step_values(:)
-    real(wp), intent(out) :: values(:)
+    !> Number of steps.
+    integer, intent(in) :: n
+    !> Number of step_values given.
+    integer, intent(in) :: n_values
+    !> The validated schedule (its value at step k: assur_load_value).
+    type(load_schedule_t), intent(out) :: load
     type(error_t), allocatable, intent(out) :: error
-    integer :: n, column
-    n = size(phi1_deg)
-    values = 0.0_wp
+    integer :: column
     if (is_set(s%column)) then
       call require_rule(ctx, name//"column", .not. any(is_set([s%value, s%idle, s%phi_on, s%phi_off])), &
         "give either column (per-step values) or value [idle, phi_on, phi_off], not both", error)
@@ -1397,11 +1604,12 @@ contains
       call require_whole(ctx, name//"column", s%column, 1, max_deck_array, column, error)
       if (allocated(error)) return
       ! column*n in real arithmetic: both may be up to a million
-      call require_rule(ctx, name//"column", real(column, wp) * real(n, wp) <= real(size(step_values), wp), &
-        "step_values has "//int_str(size(step_values))//" values; column "//int_str(column)//" needs "// &
+      call require_rule(ctx, name//"column", real(column, wp) * real(n, wp) <= real(n_values, wp), &
+        "step_values has "//int_str(n_values)//" values; column "//int_str(column)//" needs "// &
         number_str(real(column, wp) * real(n, wp))//" (n = "//int_str(n)//" per column)", error)
       if (allocated(error)) return
-      values = step_values((column - 1) * n + 1:column * n)
+      load%kind = load_column
+      load%offset = (column - 1) * n
       return
     end if
     call require_set(ctx, name//"value", s%value, error); if (allocated(error)) return
@@ -1413,11 +1621,11 @@ contains
       if (allocated(error)) return
       s%idle = optional_default(s%idle, 0.0_wp)
       call require_set(ctx, name//"idle", s%idle, error); if (allocated(error)) return
-      values = assur_window(phi1_deg, s%phi_on, s%phi_off, s%value, s%idle)
+      load = load_schedule_t(kind=load_window, value=s%value, idle=s%idle, phi_on=s%phi_on, phi_off=s%phi_off)
     else
       call require_rule(ctx, name//"idle", .not. is_set(s%idle), "only used with phi_on, phi_off", error)
       if (allocated(error)) return
-      values = s%value
+      load = load_schedule_t(kind=load_constant, value=s%value)
     end if
   end subroutine read_schedule
 

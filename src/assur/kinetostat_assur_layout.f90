@@ -22,7 +22,9 @@ module kinetostat_assur_layout
   use kinetostat_assur, only: assur_step_t, assur_step, assur_kinematics, link_a, link_b, crank_pin_index
   use kinetostat_drawing, only: drawing_t, force_load
   use kinetostat_assur_friction, only: friction_step_t, assur_friction_step
-  use kinetostat_assur_deck, only: assur_deck_t, read_assur_deck, write_assur_template
+  use kinetostat_assur_deck, only: assur_deck_t, read_assur_deck, write_assur_template, load_schedule_t, load_constant, &
+    load_column, assur_phi1_deg, assur_omega1_steps, assur_eps1, assur_motion_sign, assur_load_value, &
+    assur_load_steps
   implicit none
   private
   public :: assur_mechanism_t, new_assur, assur_solve, assur_csv_columns, assur_csv_values, assur_pair_prismatic
@@ -50,6 +52,14 @@ module kinetostat_assur_layout
   !> Dyad line of the INPUT DATA echo.
   character(*), parameter :: dyad_echo_fmt = '(3x,"DYAD ",i0,": ",a," LINKS ",i0,"-",i0,", ON LINKS ",i0," AND ",i0, &
     &", MODE ",i0)'
+
+  !> The load values of one step (a workspace reused from step to step).
+  type :: step_loads_t
+    !> Magnitude of every external force, N.
+    real(wp), allocatable :: f(:)
+    !> Every external moment, N*m.
+    real(wp), allocatable :: m(:)
+  end type step_loads_t
 
   !> A one-DOF linkage of class-II Assur groups on a crank (generic engine).
   type, extends(mechanism_t) :: assur_mechanism_t
@@ -192,7 +202,7 @@ contains
     type(error_t), allocatable, intent(out) :: error
     type(friction_step_t), allocatable :: fsteps(:)
     character(len=24), allocatable :: names(:)
-    real(wp), allocatable :: residual(:), mismatch(:), motion(:, :), forces(:, :, :), turn(:, :)
+    real(wp), allocatable :: residual(:), mismatch(:), motion(:, :), forces(:, :, :), turn(:, :), omega1(:)
     integer, allocatable :: slots(:)
     real(wp) :: crank
     integer :: k, c, ip, nv, nc, np, first, last, nrow, first_bad
@@ -242,11 +252,11 @@ contains
         call table%add_column(trim(names(size(names))), "", col_ratio)
       end if
       table%input_column = 1
-      do k = 1, size(self%deck%f_mag, 1)
-        call table%note_load(self%deck%f_mag(k, :))
+      do k = 1, size(self%deck%force_load)
+        call note_load(self%deck, self%deck%force_load(k), table)
       end do
-      do k = 1, size(self%deck%m_mag, 1)
-        call table%note_load(self%deck%m_mag(k, :))
+      do k = 1, size(self%deck%moment_load)
+        call note_load(self%deck, self%deck%moment_load(k), table)
       end do
       if (len_trim(self%deck%title) > 0) table%subtitle = trim(self%deck%title)
       call echo_deck(self%deck, table)
@@ -258,6 +268,7 @@ contains
     kinematics = table%kinematics_wanted
     crank = crank_length(self%deck)
     turn = pair_turns(self%deck)
+    omega1 = assur_omega1_steps(self%deck, first, last)
     call table%allocate_rows(nrow)
     allocate (residual(nrow), mismatch(nrow), fsteps(merge(nrow, 0, self%deck%friction_on)))
     allocate (motion(3, merge(nrow, 0, kinematics)), forces(2, np, merge(nrow, 0, kinematics)))
@@ -268,12 +279,13 @@ contains
     block
       type(assur_step_t) :: step
       type(friction_step_t) :: fs
+      type(step_loads_t) :: loads
       type(error_t), allocatable :: step_error
       integer :: kk, i
       !$omp do schedule(dynamic, 64) reduction(min:first_bad)
       do kk = first, last
         i = kk - first + 1
-        call solve_one(self%deck, kk, step, fs, step_error)
+        call solve_one(self%deck, kk, omega1(i), step, fs, step_error, loads)
         if (allocated(step_error)) then
           first_bad = min(first_bad, kk)
           cycle
@@ -294,7 +306,7 @@ contains
     end block
     !$omp end parallel
     if (first_bad <= last) then
-      call step_failure(table%deck, self%deck, first_bad, error)
+      call step_failure(table%deck, self%deck, first_bad, omega1(first_bad - first + 1), error)
       return
     end if
     if (kinematics) then
@@ -435,7 +447,7 @@ contains
       drive = fsteps(i)%driver_rate * fsteps(i)%motion_sign
       loss = fsteps(i)%rate_total
       if (k > 1) then
-        dphi = abs(deck%phi1_deg(k) - deck%phi1_deg(k - 1)) * deg_to_rad
+        dphi = abs(assur_phi1_deg(deck, k) - assur_phi1_deg(deck, k - 1)) * deg_to_rad
         sums(1) = sums(1) + 0.5_wp * dphi * (sums(3) + drive)
         sums(2) = sums(2) + 0.5_wp * dphi * (sums(4) + loss)
       end if
@@ -453,7 +465,7 @@ contains
     real(wp), intent(in) :: a_loss
     type(step_table_t), intent(inout) :: table
     real(wp) :: span, eta
-    span = abs(deck%phi1_deg(size(deck%phi1_deg)) - deck%phi1_deg(1))
+    span = abs(assur_phi1_deg(deck, deck%n) - assur_phi1_deg(deck, 1))
     table%summary_heading = "WORK AND EFFICIENCY WITH FRICTION"
     call table%summary_real("RUN SPAN", span, "deg")
     call table%summary_real("A_DRIVER", clean_zero(a_driver), "J")
@@ -504,63 +516,84 @@ contains
     integer, intent(in), optional :: first, last
     type(error_t), allocatable :: step_error
     type(friction_step_t) :: fs
+    type(step_loads_t) :: loads
     integer :: k, k1, k2, first_bad
     logical :: keep_friction
+    !> Crank speed of steps k1..k2, rad/s (a list's signs carry from step to step).
+    real(wp), allocatable :: omega1(:)
     call step_span(deck%n, k1, k2, first, last)
     allocate (steps(k2 - k1 + 1))
+    omega1 = assur_omega1_steps(deck, k1, k2)
     keep_friction = present(fsteps)
     if (keep_friction) allocate (fsteps(merge(k2 - k1 + 1, 0, deck%friction_on)))
     ! steps in parallel with OpenMP threads; the error reported is the first step's in step order
     ! (that step is solved again alone for its message)
     first_bad = k2 + 1
-    !$omp parallel do schedule(dynamic, 64) private(fs, step_error) reduction(min:first_bad)
+    !$omp parallel do schedule(dynamic, 64) private(fs, step_error, loads) reduction(min:first_bad)
     do k = k1, k2
-      call solve_one(deck, k, steps(k - k1 + 1), fs, step_error)
+      call solve_one(deck, k, omega1(k - k1 + 1), steps(k - k1 + 1), fs, step_error, loads)
       if (deck%friction_on .and. keep_friction) fsteps(k - k1 + 1) = fs
       if (allocated(step_error)) first_bad = min(first_bad, k)
     end do
     !$omp end parallel do
-    if (first_bad <= k2) call step_failure(path, deck, first_bad, error)
+    if (first_bad <= k2) call step_failure(path, deck, first_bad, omega1(first_bad - k1 + 1), error)
   end subroutine assur_solve
 
-  !> Step `k` of the deck: its results, its friction results (deck%friction_on), its error.
-  pure subroutine solve_one(deck, k, step, fstep, step_error)
+  !> Step `k` of the deck at crank speed `w` (rad/s; assur_omega1_steps): its results, its
+  !> friction results (deck%friction_on), its error; `loads` is the caller's workspace for the
+  !> step's load values (sized here on first use).
+  pure subroutine solve_one(deck, k, w, step, fstep, step_error, loads)
     !> Validated deck.
     type(assur_deck_t), intent(in) :: deck
     !> Step number.
     integer, intent(in) :: k
+    !> Crank speed of the step, rad/s.
+    real(wp), intent(in) :: w
     !> Results (its arrays reused).
     type(assur_step_t), intent(inout) :: step
     !> Friction results.
     type(friction_step_t), intent(out) :: fstep
     !> Geometry error.
     type(error_t), allocatable, intent(out) :: step_error
+    !> The force and moment values of the step.
+    type(step_loads_t), intent(inout) :: loads
+    integer :: i
+    if (.not. allocated(loads%f)) allocate (loads%f(size(deck%force_load)), loads%m(size(deck%moment_load)))
+    do i = 1, size(loads%f)
+      loads%f(i) = assur_load_value(deck, deck%force_load(i), k)
+    end do
+    do i = 1, size(loads%m)
+      loads%m(i) = assur_load_value(deck, deck%moment_load(i), k)
+    end do
     if (deck%friction_on) then
-      call assur_friction_step(deck%mech, deck%friction, deck%phi1_deg(k) * deg_to_rad, deck%omega1(k), &
-        deck%eps1(k), deck%motion_sign(k), deck%f_mag(:, k), deck%m_mag(:, k), step, fstep, step_error)
+      call assur_friction_step(deck%mech, deck%friction, assur_phi1_deg(deck, k) * deg_to_rad, w, &
+        assur_eps1(deck, k), assur_motion_sign(w), loads%f, loads%m, step, fstep, step_error)
     else
-      call assur_step(deck%mech, deck%phi1_deg(k) * deg_to_rad, deck%omega1(k), deck%eps1(k), &
-                      deck%f_mag(:, k), deck%m_mag(:, k), step, step_error)
+      call assur_step(deck%mech, assur_phi1_deg(deck, k) * deg_to_rad, w, assur_eps1(deck, k), &
+                      loads%f, loads%m, step, step_error)
     end if
   end subroutine solve_one
 
-  !> The error of a run stopped at step `k` (solved again for its message), naming the step
-  !> and its input angle.
-  pure subroutine step_failure(path, deck, k, error)
+  !> The error of a run stopped at step `k` (crank speed `w`, rad/s; solved again for its
+  !> message), naming the step and its input angle.
+  pure subroutine step_failure(path, deck, k, w, error)
     !> Deck file (for messages).
     character(*), intent(in) :: path
     !> Validated deck.
     type(assur_deck_t), intent(in) :: deck
     !> The first failing step.
     integer, intent(in) :: k
+    !> Its crank speed, rad/s.
+    real(wp), intent(in) :: w
     !> The error.
     type(error_t), allocatable, intent(out) :: error
     type(assur_step_t) :: step
     type(friction_step_t) :: fs
+    type(step_loads_t) :: loads
     type(error_t), allocatable :: step_error
     character(len=32) :: angle_text
-    call solve_one(deck, k, step, fs, step_error)
-    write (angle_text, '(g0.10)') deck%phi1_deg(k)
+    call solve_one(deck, k, w, step, fs, step_error, loads)
+    write (angle_text, '(g0.10)') assur_phi1_deg(deck, k)
     call fatal_error(error, exit_geometry, path//": &assur: step "//int_str(k)//" (phi1 = "// &
       trim(adjustl(angle_text))//" deg): "//step_error%message)
   end subroutine step_failure
@@ -956,7 +989,7 @@ contains
     real(wp) :: dir
     integer :: ip, i
     associate (mech => self%deck%mech, deck => self%deck)
-      call assur_kinematics(mech, deck%phi1_deg(k) * deg_to_rad, states, poses, error)
+      call assur_kinematics(mech, assur_phi1_deg(deck, k) * deg_to_rad, states, poses, error)
       if (allocated(error)) return
       do ip = 1, size(deck%pair_name)
         call drawing%pair_from_table(table, k, trim(deck%pair_name(ip)), joint_name(deck%pair_name(ip)), error)
@@ -967,12 +1000,13 @@ contains
           ps = point_on(states(f%link), f%at)
           dir = f%angle
           if (f%follow) dir = dir + states(f%link)%th
-          call drawing%add_force("Q"//int_str(i), force_load, ps%p, deck%f_mag(i, k) * [cos(dir), sin(dir)])
+          call drawing%add_force("Q"//int_str(i), force_load, ps%p, &
+                                 assur_load_value(deck, deck%force_load(i), k) * [cos(dir), sin(dir)])
         end associate
       end do
       do i = 1, size(mech%moment_link)
         call drawing%add_moment("MQ"//int_str(i), force_load, drawing%at("S"//int_str(mech%links(mech%moment_link(i))%id)), &
-          deck%m_mag(i, k))
+          assur_load_value(deck, deck%moment_load(i), k))
       end do
       do i = 1, ubound(states, 1)
         associate (l => mech%links(i))
@@ -1035,17 +1069,17 @@ contains
     if (deck%friction_on) call echo_friction(deck, size(deck%friction), "CRANK_", "", table)
     if (allocated(deck%phi_list) .and. .not. deck%prescribed) then
       call table%echo_real("OMEGA1", deck%omega1_const, "rad/s")
-      call table%echo_array("OMEGA1_STEP", deck%omega1, "rad/s")
+      call table%echo_array("OMEGA1_STEP", assur_omega1_steps(deck, 1, deck%n), "rad/s")
     else if (deck%prescribed) then
-      call table%echo_array("OMEGA1_STEP", deck%omega1, "rad/s")
-      call table%echo_array("EPS1_STEP", deck%eps1, "rad/s^2")
+      call table%echo_array("OMEGA1_STEP", deck%omega1_values(1:deck%n), "rad/s")
+      call table%echo_array("EPS1_STEP", deck%eps1_values(1:deck%n), "rad/s^2")
     else
       call table%echo_real("OMEGA1", deck%omega1_const, "rad/s")
     end if
     call table%echo_real("G", deck%mech%g, "m/s^2")
     call table%echo_real("GRAVITY_ANGLE", deck%gravity_angle, "deg")
     if (allocated(deck%phi_list)) then
-      call table%echo_array("PHI1", deck%phi_list, "deg")
+      call table%echo_array("PHI1", deck%phi_list(1:deck%n), "deg")
     else
       if (deck%start_extreme) then
         call table%echo_text("START_AT", "extreme")
@@ -1096,14 +1130,50 @@ contains
         call table%echo_array("  AT", fo%at, "m")
         call table%echo_real("  ANGLE", fo%angle * rad_to_deg, "deg")
         call table%echo_logical("  FOLLOW", fo%follow, "")
-        call table%echo_array("  VALUE", deck%f_mag(k, :), "N")
+        call echo_load(deck, deck%force_load(k), "N", table)
       end associate
     end do
     do k = 1, size(deck%mech%moment_link)
       call table%echo_int("MOMENT "//int_str(k)//" LINK", deck%mech%links(deck%mech%moment_link(k))%id, "")
-      call table%echo_array("  VALUE", deck%m_mag(k, :), "N*m")
+      call echo_load(deck, deck%moment_load(k), "N*m", table)
     end do
   end subroutine echo_deck
+
+  !> The echo line "  VALUE" of a load: its value at every step (a step_values column as
+  !> given; other schedules computed into a temporary).
+  pure subroutine echo_load(deck, load, unit, table)
+    !> Validated deck.
+    type(assur_deck_t), intent(in) :: deck
+    !> The load's schedule.
+    type(load_schedule_t), intent(in) :: load
+    !> Unit of its values ("N" or "N*m").
+    character(*), intent(in) :: unit
+    type(step_table_t), intent(inout) :: table
+    if (load%kind == load_column) then
+      call table%echo_array("  VALUE", deck%step_values(load%offset + 1:load%offset + deck%n), unit)
+    else
+      call table%echo_array("  VALUE", assur_load_steps(deck, load), unit)
+    end if
+  end subroutine echo_load
+
+  !> The step table's load-edge marks (the coarse-step warning) of one load: a constant
+  !> has none (skipped); a step_values column is passed as given, other schedules computed
+  !> into a temporary.
+  pure subroutine note_load(deck, load, table)
+    !> Validated deck.
+    type(assur_deck_t), intent(in) :: deck
+    !> The load's schedule.
+    type(load_schedule_t), intent(in) :: load
+    type(step_table_t), intent(inout) :: table
+    select case (load%kind)
+    case (load_constant)
+      return
+    case (load_column)
+      call table%note_load(deck%step_values(load%offset + 1:load%offset + deck%n))
+    case default
+      call table%note_load(assur_load_steps(deck, load))
+    end select
+  end subroutine note_load
 
   !> INPUT DATA lines of the friction of result pair `ip`: F, and R (turning pair) or
   !> CONTACT_SPAN (sliding pair; 0: resultant-normal model), named prefix//name//suffix.
@@ -1183,10 +1253,12 @@ contains
   !> for prismatic pairs two more lines with the normal force and the reaction moment. With a
   !> linear actuator as driver the last column holds F_drive, stroke, stroke speed and
   !> acceleration (lines 1-4) instead of M1.
-  pure subroutine write_results(self, table, lang, out, later)
+  pure subroutine write_results(self, table, lang, first, last, out, later)
     class(assur_mechanism_t), intent(in) :: self
     type(step_table_t), intent(in) :: table
     integer, intent(in) :: lang
+    !> Rows of the block to write (the headings come with row 1 of the run's first block).
+    integer, intent(in) :: first, last
     type(text_buffer_t), intent(inout) :: out
     type(text_buffer_t), intent(inout) :: later
     character(len=:), allocatable :: line1, line2, line3, line4
@@ -1209,7 +1281,7 @@ contains
     do ip = 1, np
       any_p = any_p .or. assur_pair_prismatic(self%deck, ip)
     end do
-    if (table%first_block()) then
+    if (first == 1 .and. table%first_block()) then
       if (link_axes) then
         if (lang == lang_ru) then
           call out%put(" "//link_axes_heading_ru)
@@ -1278,7 +1350,7 @@ contains
         call out%put(trim(line2))
       end if
     end if
-    do k = 1, table%row_count()
+    do k = first, last
       associate (v => table%rows(:, k))
         line1 = fixed_field(v(1), phi_width, 2)
         line2 = repeat(" ", phi_width)

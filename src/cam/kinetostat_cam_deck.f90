@@ -12,6 +12,7 @@ module kinetostat_cam_deck
   implicit none
   private
   public :: cam_deck_t, read_cam_deck, write_cam_template, follower_translating, follower_flat
+  public :: cam_phi_deg, cam_theta_deg, cam_f2, cam_vdir, cam_ds_dphi, cam_x_b
 
   !> Follower: knife-edge or roller, pressure angle from the deck, no friction at the cam.
   integer, parameter :: follower_translating = 1
@@ -34,18 +35,19 @@ module kinetostat_cam_deck
     real(wp) :: dphi = 0.0_wp
     !> Number of steps.
     integer :: n = 0
-    !> Cam angle per step, deg.
-    real(wp), allocatable :: phi_deg(:)
-    !> Pressure angle per step, deg (flat face: 0).
-    real(wp), allocatable :: theta_deg(:)
-    !> Follower load per step, N (> 0 presses it onto the cam).
-    real(wp), allocatable :: f2(:)
-    !> Motion per step: +1 rise, -1 return, 0 at rest.
-    real(wp), allocatable :: vdir(:)
-    !> Flat face: velocity analogue ds/dphi per step, m/rad (translating: 0).
-    real(wp), allocatable :: ds_dphi(:)
-    !> Contact offset x_B per step, m (flat face: omega_dir*ds_dphi; translating: 0).
-    real(wp), allocatable :: x_b(:)
+    !> The per-step arrays below hold the values as given (the namelist's read buffers, kept:
+    !> given(i) values, 1 = the same for every step, spare elements past them unused); the
+    !> value of step k is cam_theta_deg, cam_f2, cam_vdir, cam_ds_dphi (cam_phi_deg and
+    !> cam_x_b are implied), so no per-step array is stored beyond what the deck gives.
+    !> Translating: pressure angle, deg, as given (unused by a flat face: its angle is 0).
+    real(wp), allocatable :: theta_values(:)
+    !> Follower load, N, as given (> 0 presses it onto the cam).
+    real(wp), allocatable :: f2_values(:)
+    !> Translating: motion +1 rise, -1 return, 0 at rest, as given (element 1 holds the
+    !> default +1 when the deck gives none).
+    real(wp), allocatable :: vdir_values(:)
+    !> Flat face: velocity analogue ds/dphi, m/rad, as given (unused by a translating follower).
+    real(wp), allocatable :: ds_dphi_values(:)
     !> Signed friction at the cam along +x on the follower (flat face: -omega_dir*f_cam).
     real(wp) :: mu_cam = 0.0_wp
     !> Count of values given for theta, f2, vdir, ds_dphi (1 = constant).
@@ -150,10 +152,9 @@ contains
     call steps_over_turn(ctx, dphi, n, deck%n, error); if (allocated(error)) return
     deck%phi_start = phi_start
     deck%dphi = dphi
-    deck%phi_deg = [(phi_start + real(k - 1, wp) * dphi, k=1, deck%n)]
 
     ! load, either follower
-    call per_step(ctx, "f2", f2, deck%n, .true., 0.0_wp, deck%f2, deck%given(2), error)
+    call per_step(ctx, "f2", f2, deck%n, .true., 0.0_wp, deck%f2_values, deck%given(2), error)
     if (allocated(error)) return
 
     if (deck%follower == follower_translating) then
@@ -165,25 +166,24 @@ contains
       call require_rule(ctx, "ds_dphi", .not. is_set(ds_dphi(1)), "only for follower = 'flat' "// &
         "(a translating follower takes the pressure angle theta)", error)
       if (allocated(error)) return
-      call per_step(ctx, "theta", theta, deck%n, .true., 0.0_wp, deck%theta_deg, deck%given(1), error)
+      call per_step(ctx, "theta", theta, deck%n, .true., 0.0_wp, deck%theta_values, deck%given(1), error)
       if (allocated(error)) return
       do k = 1, deck%n
-        if (.not. abs(deck%theta_deg(k)) < 90.0_wp) then
+        if (.not. abs(cam_theta_deg(deck, k)) < 90.0_wp) then
           call deck_error(ctx, "theta("//int_str(k)//")", "must be in (-90, 90) deg (got "// &
-            real_str(deck%theta_deg(k))//")", error)
+            real_str(cam_theta_deg(deck, k))//")", error)
           return
         end if
       end do
-      call per_step(ctx, "vdir", vdir, deck%n, .false., 1.0_wp, deck%vdir, deck%given(3), error)
+      call per_step(ctx, "vdir", vdir, deck%n, .false., 1.0_wp, deck%vdir_values, deck%given(3), error)
       if (allocated(error)) return
       do k = 1, deck%n
-        if (deck%vdir(k) /= 1.0_wp .and. deck%vdir(k) /= -1.0_wp .and. deck%vdir(k) /= 0.0_wp) then
+        if (cam_vdir(deck, k) /= 1.0_wp .and. cam_vdir(deck, k) /= -1.0_wp .and. cam_vdir(deck, k) /= 0.0_wp) then
           call deck_error(ctx, "vdir("//int_str(k)//")", "must be +1 (rise), -1 (return) or 0 (at rest) (got "// &
-            real_str(deck%vdir(k))//")", error)
+            real_str(cam_vdir(deck, k))//")", error)
           return
         end if
       end do
-      allocate (deck%ds_dphi(deck%n), deck%x_b(deck%n), source=0.0_wp)
       deck%mu_cam = 0.0_wp
     else
       call require_rule(ctx, "theta", .not. is_set(theta(1)), "not for follower = 'flat' "// &
@@ -199,26 +199,112 @@ contains
       call require_rule(ctx, "omega_dir", omega_dir == 1.0_wp .or. omega_dir == -1.0_wp, &
         "must be +1 (cam turns CCW) or -1 (CW) (got "//real_str(omega_dir)//")", error)
       if (allocated(error)) return
-      call per_step(ctx, "ds_dphi", ds_dphi, deck%n, .true., 0.0_wp, deck%ds_dphi, deck%given(4), error)
+      call per_step(ctx, "ds_dphi", ds_dphi, deck%n, .true., 0.0_wp, deck%ds_dphi_values, deck%given(4), error)
       if (allocated(error)) return
       deck%f_cam = f_cam
       deck%omega_dir = omega_dir
       deck%mu_cam = -omega_dir * f_cam
-      allocate (deck%theta_deg(deck%n), source=0.0_wp)
-      deck%x_b = omega_dir * deck%ds_dphi
-      deck%vdir = sign(1.0_wp, deck%ds_dphi)
-      where (deck%ds_dphi == 0.0_wp) deck%vdir = 0.0_wp
     end if
   end subroutine read_cam_deck
 
-  !> A per-step array: n values, or one value for all steps; `required` or else `default`.
-  subroutine per_step(ctx, name, values, n, required, default, out, given, error)
-    type(deck_context_t), intent(in) :: ctx
-    character(*), intent(in) :: name
+  !> Cam angle of step k, deg: phi_start + (k - 1)*dphi.
+  pure real(wp) function cam_phi_deg(deck, k) result(phi)
+    !> Validated deck.
+    type(cam_deck_t), intent(in) :: deck
+    !> Step number, 1..n.
+    integer, intent(in) :: k
+    phi = deck%phi_start + real(k - 1, wp) * deck%dphi
+  end function cam_phi_deg
+
+  !> Pressure angle of step k, deg (flat face: 0).
+  pure real(wp) function cam_theta_deg(deck, k) result(theta)
+    !> Validated deck.
+    type(cam_deck_t), intent(in) :: deck
+    !> Step number, 1..n.
+    integer, intent(in) :: k
+    theta = 0.0_wp
+    if (deck%follower == follower_translating) theta = given_value(deck%theta_values, deck%given(1), k)
+  end function cam_theta_deg
+
+  !> Follower load of step k, N.
+  pure real(wp) function cam_f2(deck, k) result(f2)
+    !> Validated deck.
+    type(cam_deck_t), intent(in) :: deck
+    !> Step number, 1..n.
+    integer, intent(in) :: k
+    f2 = given_value(deck%f2_values, deck%given(2), k)
+  end function cam_f2
+
+  !> Motion of step k: +1 rise, -1 return, 0 at rest (flat face: the sign of ds/dphi).
+  pure real(wp) function cam_vdir(deck, k) result(vdir)
+    !> Validated deck.
+    type(cam_deck_t), intent(in) :: deck
+    !> Step number, 1..n.
+    integer, intent(in) :: k
+    !> Flat face: velocity analogue of the step, m/rad.
+    real(wp) :: ds_dphi
+    if (deck%follower == follower_translating) then
+      vdir = given_value(deck%vdir_values, deck%given(3), k)
+    else
+      ds_dphi = cam_ds_dphi(deck, k)
+      vdir = sign(1.0_wp, ds_dphi)
+      if (ds_dphi == 0.0_wp) vdir = 0.0_wp
+    end if
+  end function cam_vdir
+
+  !> Flat face: velocity analogue ds/dphi of step k, m/rad (translating: 0).
+  pure real(wp) function cam_ds_dphi(deck, k) result(ds_dphi)
+    !> Validated deck.
+    type(cam_deck_t), intent(in) :: deck
+    !> Step number, 1..n.
+    integer, intent(in) :: k
+    ds_dphi = 0.0_wp
+    if (deck%follower == follower_flat) ds_dphi = given_value(deck%ds_dphi_values, deck%given(4), k)
+  end function cam_ds_dphi
+
+  !> Contact offset x_B of step k, m (flat face: omega_dir*ds_dphi; translating: 0).
+  pure real(wp) function cam_x_b(deck, k) result(x_b)
+    !> Validated deck.
+    type(cam_deck_t), intent(in) :: deck
+    !> Step number, 1..n.
+    integer, intent(in) :: k
+    x_b = 0.0_wp
+    if (deck%follower == follower_flat) x_b = deck%omega_dir * cam_ds_dphi(deck, k)
+  end function cam_x_b
+
+  !> Step k's value of a per-step variable given as `given` values (0 or 1: element 1 for
+  !> every step).
+  pure real(wp) function given_value(values, given, k) result(v)
+    !> The values as given (element 1 the default when none given).
     real(wp), intent(in) :: values(:)
+    !> How many values the deck gave (0, 1 or n).
+    integer, intent(in) :: given
+    !> Step number, 1..n.
+    integer, intent(in) :: k
+    if (given <= 1) then
+      v = values(1)
+    else
+      v = values(k)
+    end if
+  end function given_value
+
+  !> A per-step array: n values, or one value for all steps; `required` or else `default`.
+  !> The read buffer becomes `out` as it is (moved, not copied; element 1 set to `default`
+  !> when none is given): step k's value is given_value(out, given, k).
+  subroutine per_step(ctx, name, values, n, required, default, out, given, error)
+    !> Deck and group, for messages.
+    type(deck_context_t), intent(in) :: ctx
+    !> Variable name.
+    character(*), intent(in) :: name
+    !> The namelist's read buffer (unset_real past the values given); moved into `out`.
+    real(wp), allocatable, intent(inout) :: values(:)
+    !> Number of steps.
     integer, intent(in) :: n
+    !> Whether the deck must give it.
     logical, intent(in) :: required
+    !> Value of every step when not given and not required.
     real(wp), intent(in) :: default
+    !> The values as given (see above).
     real(wp), allocatable, intent(out) :: out(:)
     !> How many values the deck gave (0, 1 or n).
     integer, intent(out) :: given
@@ -230,11 +316,10 @@ contains
         call deck_error(ctx, name, "missing: give one value per step ("//int_str(n)//") or one for all", error)
         return
       end if
-      allocate (out(n), source=default)
-    else if (given == 1) then
-      allocate (out(n), source=values(1))
-    else if (given == n) then
-      out = values(1:n)
+      values(1) = default
+      call move_alloc(values, out)
+    else if (given == 1 .or. given == n) then
+      call move_alloc(values, out)
     else
       call deck_error(ctx, name, "expected "//int_str(n)//" values (one per step) or 1 (the same for all), got "// &
         int_str(given), error)

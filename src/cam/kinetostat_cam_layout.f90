@@ -15,7 +15,8 @@ module kinetostat_cam_layout
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_cam, only: cam_step_t, cam_step, cam_critical_angle, kf_limit
-  use kinetostat_cam_deck, only: cam_deck_t, read_cam_deck, write_cam_template, follower_translating
+  use kinetostat_cam_deck, only: cam_deck_t, read_cam_deck, write_cam_template, follower_translating, &
+    cam_phi_deg, cam_theta_deg, cam_f2, cam_vdir, cam_x_b
   implicit none
   private
   public :: cam_mechanism_t, new_cam, cam_solve, cam_csv_columns, cam_csv_values
@@ -94,8 +95,8 @@ contains
     allocate (steps(k2 - k1 + 1))
     !$omp parallel do schedule(static)
     do k = k1, k2
-      steps(k - k1 + 1) = cam_step(deck%p, deck%theta_deg(k) * deg_to_rad, deck%x_b(k), deck%mu_cam, &
-                          deck%f2(k), deck%vdir(k))
+      steps(k - k1 + 1) = cam_step(deck%p, cam_theta_deg(deck, k) * deg_to_rad, cam_x_b(deck, k), deck%mu_cam, &
+                          cam_f2(deck, k), cam_vdir(deck, k))
     end do
     !$omp end parallel do
   end subroutine cam_solve
@@ -159,13 +160,13 @@ contains
       first = nint(table%carry(2))
       call table%add_warning("the follower jams (self-locking: no finite contact force moves it) at "// &
         steps_text(nint(table%carry(1)))//", the first at step "//int_str(first)//" (phi = "// &
-        number_str(deck%phi_deg(first))//" deg); the table shows 0 forces there")
+        number_str(cam_phi_deg(deck, first))//" deg); the table shows 0 forces there")
     end if
     if (table%carry(3) > 0.0_wp) then
       first = nint(table%carry(4))
       call table%add_warning("contact is lost (F2 <= 0 does not hold the follower on the cam) at "// &
         steps_text(nint(table%carry(3)))//", the first at step "//int_str(first)//" (phi = "// &
-        number_str(deck%phi_deg(first))//" deg); the table shows 0 forces there")
+        number_str(cam_phi_deg(deck, first))//" deg); the table shows 0 forces there")
     end if
   contains
     pure function steps_text(n) result(t)
@@ -185,11 +186,11 @@ contains
     !> Step number.
     integer, intent(in) :: k
     real(wp) :: v(size(cam_csv_columns))
-    v(1) = deck%phi_deg(k)
-    v(2) = deck%theta_deg(k)
-    v(3) = deck%x_b(k)
-    v(4) = deck%f2(k)
-    v(5) = deck%vdir(k)
+    v(1) = cam_phi_deg(deck, k)
+    v(2) = cam_theta_deg(deck, k)
+    v(3) = cam_x_b(deck, k)
+    v(4) = cam_f2(deck, k)
+    v(5) = cam_vdir(deck, k)
     v(6) = s%n
     v(7) = magnitude(s%f21)
     v(8) = angle_360_deg(s%f21)
@@ -220,7 +221,7 @@ contains
     integer, intent(in) :: step
     real(wp) :: f(2, 3), floor
     integer :: j
-    call table%put_point(k, "B", [deck%x_b(step), -deck%p%a])
+    call table%put_point(k, "B", [cam_x_b(deck, step), -deck%p%a])
     call table%put_point(k, "C", [0.0_wp, 0.0_wp])
     call table%put_point(k, "D", [0.0_wp, deck%p%l])
     f = reshape([s%f21, s%f23c, s%f23d], [2, 3])
@@ -250,13 +251,13 @@ contains
     call table%echo_real("DPHI", deck%dphi, "deg")
     call table%echo_int("N", deck%n, "steps")
     if (deck%follower == follower_translating) then
-      call table%echo_array("THETA", deck%theta_deg(1:max(1, min(deck%n, deck%given(1)))), "deg")
+      call table%echo_array("THETA", deck%theta_values(1:max(1, min(deck%n, deck%given(1)))), "deg")
     else
-      call table%echo_array("DS_DPHI", deck%ds_dphi(1:max(1, min(deck%n, deck%given(4)))), "m/rad")
+      call table%echo_array("DS_DPHI", deck%ds_dphi_values(1:max(1, min(deck%n, deck%given(4)))), "m/rad")
     end if
-    call table%echo_array("F2", deck%f2(1:max(1, min(deck%n, deck%given(2)))), "N")
+    call table%echo_array("F2", deck%f2_values(1:max(1, min(deck%n, deck%given(2)))), "N")
     if (deck%follower == follower_translating) then
-      call table%echo_array("VDIR", deck%vdir(1:max(1, min(deck%n, deck%given(3)))), "")
+      call table%echo_array("VDIR", deck%vdir_values(1:max(1, min(deck%n, deck%given(3)))), "")
       call table%echo_real("THETA_CR", cam_critical_angle(deck%p) * rad_to_deg, "deg (rise; derived)")
     end if
     call table%echo_real("KF_LIMIT", kf_limit, "(Reshetov)")
@@ -281,15 +282,17 @@ contains
 
   !> RESULTS: one line per cam angle; a jammed or lost-contact step shows its flag instead
   !> of the forces.
-  pure subroutine write_results(self, table, lang, out, later)
+  pure subroutine write_results(self, table, lang, first, last, out, later)
     class(cam_mechanism_t), intent(in) :: self
     type(step_table_t), intent(in) :: table
     integer, intent(in) :: lang
+    !> Rows of the block to write (the headings come with row 1 of the run's first block).
+    integer, intent(in) :: first, last
     type(text_buffer_t), intent(inout) :: out
     type(text_buffer_t), intent(inout) :: later
     integer :: k, i
     character(len=:), allocatable :: line
-    if (table%first_block()) then
+    if (first == 1 .and. table%first_block()) then
       call out%put(trim(header_lines(1)))
       if (lang == lang_ru) then
         call out%put(units_ru)
@@ -297,7 +300,7 @@ contains
         call out%put(trim(header_lines(2)))
       end if
     end if
-    do k = 1, table%row_count()
+    do k = first, last
       associate (v => table%rows(:, k))
         line = fixed_field(v(1), 8, 2)//fixed_field(v(2), 8, 3)//fixed_field(v(3), 10, 5)// &
           fixed_field(v(4), 11, 2)//int_field(v(5), 3)

@@ -239,14 +239,16 @@ contains
   end function vector_line
 
   !> RESULTS: a block per stage (the mesh's named values, force vectors, torques).
-  pure subroutine write_results(self, table, lang, out, later)
+  pure subroutine write_results(self, table, lang, first, last, out, later)
     class(gears_mechanism_t), intent(in) :: self
     type(step_table_t), intent(in) :: table
     integer, intent(in) :: lang
+    !> Rows of the block to write (the headings come with row 1 of the run's first block).
+    integer, intent(in) :: first, last
     type(text_buffer_t), intent(inout) :: out
     type(text_buffer_t), intent(inout) :: later
     integer :: i, kind
-    do i = 1, table%row_count()
+    do i = first, last
       associate (v => table%rows(:, i))
         kind = nint(v(2))
         call put_heading(out, stage_heading(i, kind))

@@ -61,7 +61,7 @@ module kinetostat_mechanism
       type(error_t), allocatable, intent(out) :: error
     end subroutine solve_i
 
-    pure subroutine results_i(self, table, lang, out, later)
+    pure subroutine results_i(self, table, lang, first, last, out, later)
       import :: mechanism_t, step_table_t, text_buffer_t
       implicit none
       class(mechanism_t), intent(in) :: self
@@ -69,6 +69,9 @@ module kinetostat_mechanism
       type(step_table_t), intent(in) :: table
       !> lang_en or lang_ru.
       integer, intent(in) :: lang
+      !> Rows of the block to write, first .. last (the headings come with row 1 of the
+      !> run's first block; the table writer may call it for parts of the block at once).
+      integer, intent(in) :: first, last
       !> Where the lines of the RESULTS section go.
       type(text_buffer_t), intent(inout) :: out
       !> Where a second section over the same rows goes (printed after the last row of the

@@ -21,7 +21,7 @@ module kinetostat_run
   use kinetostat_labels, only: lang_en
   use kinetostat_override, only: override_t, mark_overrides
   use kinetostat_summary, only: coarse_step_warning, summary_header, summary_row, tally_rows
-  use kinetostat_table_writer, only: write_table_head, write_table_tail
+  use kinetostat_table_writer, only: write_table_head, write_table_rows, write_table_tail
   use kinetostat_spool, only: spool_t
   implicit none
   private
@@ -205,7 +205,7 @@ contains
         end if
         if (allocated(error)) return
       case default
-        call mech%write_results(table, options%lang, out, later)
+        call write_table_rows(mech, table, options%lang, out, later)
         if (table%last_block()) then
           if (present(spool)) then
             call spool%absorb(out, later_spool, later, error)

@@ -13,9 +13,11 @@ module kinetostat_table_writer
   use kinetostat_text, only: upper
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_text_buffer, only: text_buffer_t
+  use kinetostat_row_blocks, only: put_row_blocks_two
   implicit none
   private
-  public :: write_table, write_table_head, write_table_tail, put_heading, selfcheck_verdict, put_two_line_step, value_line
+  public :: write_table, write_table_head, write_table_rows, write_table_tail
+  public :: put_heading, selfcheck_verdict, put_two_line_step, value_line
 
   !> Display width of the name part of an INPUT DATA line ("   NAME ... =" puts "=" in column 20).
   integer, parameter :: echo_name_width = 16
@@ -23,13 +25,16 @@ module kinetostat_table_writer
   integer, parameter :: footer_label_width = 54
   !> Mark after an INPUT DATA record whose value came from --set.
   character(*), parameter :: override_mark = " (--set)"
+  !> Bytes a row of the legacy table takes per column, about (room made for a block's rows).
+  integer, parameter :: table_row_room = 14
+
   !> Values per line of an echoed array.
   integer, parameter :: echo_array_per_line = 5
 
 contains
 
   !> The whole legacy table of a run whose rows are all in `table` (one block).
-  pure subroutine write_table(mech, table, lang, out)
+  subroutine write_table(mech, table, lang, out)
     !> The mechanism (its title and RESULTS layout).
     class(mechanism_t), intent(in) :: mech
     !> Finite results, tallied (kinetostat_summary's tally_rows).
@@ -40,10 +45,34 @@ contains
     type(text_buffer_t), intent(inout) :: out
     type(text_buffer_t) :: later
     call write_table_head(mech, table, lang, out)
-    call mech%write_results(table, lang, out, later)
+    call write_table_rows(mech, table, lang, out, later)
     if (later%length > 0) call out%append(later%data(1:later%length))
     call write_table_tail(table, lang, out)
   end subroutine write_table
+
+  !> The mechanism's RESULTS lines of the rows now in `table` (one block of the run): in
+  !> parallel parts with more than one OpenMP thread (the same bytes as one thread).
+  subroutine write_table_rows(mech, table, lang, out, later)
+    !> The mechanism (its RESULTS layout).
+    class(mechanism_t), intent(in) :: mech
+    !> Finite results: the rows of one block of the run.
+    type(step_table_t), intent(in) :: table
+    !> lang_en or lang_ru.
+    integer, intent(in) :: lang
+    !> Where the RESULTS lines go.
+    type(text_buffer_t), intent(inout) :: out
+    !> Where a layout's second section over the same rows goes (after the last row).
+    type(text_buffer_t), intent(inout) :: later
+    call put_row_blocks_two(table%row_count(), table_row_room * size(table%columns), put_rows, out, later)
+  contains
+    !> Rows first .. last of the layout.
+    subroutine put_rows(first, last, part, later_part)
+      integer, intent(in) :: first, last
+      type(text_buffer_t), intent(inout) :: part
+      type(text_buffer_t), intent(inout) :: later_part
+      call mech%write_results(table, lang, first, last, part, later_part)
+    end subroutine put_rows
+  end subroutine write_table_rows
 
   !> The legacy table's lines before the rows: title, deck, INPUT DATA, the RESULTS heading.
   !> With `cursor`, a part at a time: up to a chunk of an echoed array's values, then it

@@ -10,7 +10,7 @@ module kinetostat_pr3050_deck
   use kinetostat_pr3050, only: pr3050_params_t
   implicit none
   private
-  public :: pr3050_deck_t, read_pr3050_deck, write_pr3050_template, pr3050_step_count
+  public :: pr3050_deck_t, read_pr3050_deck, write_pr3050_template, pr3050_step_count, pr3050_phi3_deg
 
   !> Largest distance of (phi3_end - phi3_start)/dphi3 from a whole number, relative to it
   !> (at least 1), that still counts as whole (decimal angles are not exact in binary).
@@ -32,11 +32,10 @@ module kinetostat_pr3050_deck
     real(wp) :: dphi3 = 0.0_wp
     !> Number of steps N = (phi3_end - phi3_start)/dphi3 + 1.
     integer :: n = 0
-    !> Rocker angle per step, deg.
-    real(wp), allocatable :: phi3_deg(:)
-    !> Rocker angular speed per step, rad/s.
+    !> Rocker angular speed per step, rad/s: elements 1..n (the namelist's read buffer, kept;
+    !> it may hold a spare element past n). The rocker angle is not stored: pr3050_phi3_deg.
     real(wp), allocatable :: omega3(:)
-    !> Rocker angular acceleration per step, rad/s^2.
+    !> Rocker angular acceleration per step, rad/s^2: elements 1..n (as omega3).
     real(wp), allocatable :: eps3(:)
   end type pr3050_deck_t
 
@@ -112,7 +111,7 @@ contains
     real(wp) :: l_ca, l_cb, l_cs3, delta, l_bs2, l_s1a, gamma, g, m1, m2, m3, j1, j2, j3
     real(wp) :: phi3_start, phi3_end, dphi3
     real(wp), allocatable :: omega3(:), eps3(:)
-    integer :: ios, n_omega3, n_eps3, k
+    integer :: ios, n_omega3, n_eps3
     !> Elements allocated for each per-step array the deck may give (see deck_array_capacities).
     integer, allocatable :: capacity(:)
     character(len=512) :: msg
@@ -207,10 +206,18 @@ contains
     deck%phi3_start = phi3_start
     deck%phi3_end = phi3_end
     deck%dphi3 = dphi3
-    allocate (deck%phi3_deg(deck%n))
-    deck%phi3_deg = [(phi3_start + real(k - 1, wp) * dphi3, k=1, deck%n)]
-    deck%omega3 = omega3(1:deck%n)
-    deck%eps3 = eps3(1:deck%n)
+    ! the read buffers are the deck's arrays (no second copy of 10^6 values)
+    call move_alloc(omega3, deck%omega3)
+    call move_alloc(eps3, deck%eps3)
   end subroutine read_pr3050_deck
+
+  !> Rocker angle of step k, deg: phi3_start + (k - 1)*dphi3 (computed, not stored per step).
+  pure real(wp) function pr3050_phi3_deg(deck, k) result(phi3)
+    !> Validated deck.
+    type(pr3050_deck_t), intent(in) :: deck
+    !> Step number, 1..n.
+    integer, intent(in) :: k
+    phi3 = deck%phi3_start + real(k - 1, wp) * deck%dphi3
+  end function pr3050_phi3_deg
 
 end module kinetostat_pr3050_deck

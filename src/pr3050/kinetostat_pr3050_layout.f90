@@ -18,7 +18,7 @@ module kinetostat_pr3050_layout
   use kinetostat_sketch, only: sketch_t
   use kinetostat_pr3050, only: pr3050_params_t, pr3050_position_t, pr3050_step_t, pr3050_step, &
     pr3050_check_position, pr3050_position
-  use kinetostat_pr3050_deck, only: pr3050_deck_t, read_pr3050_deck, write_pr3050_template
+  use kinetostat_pr3050_deck, only: pr3050_deck_t, read_pr3050_deck, write_pr3050_template, pr3050_phi3_deg
   use kinetostat_drawing, only: drawing_t, force_load
   implicit none
   private
@@ -138,18 +138,18 @@ contains
     first_bad = k2 + 1
     !$omp parallel do schedule(static) private(step_error) reduction(min:first_bad)
     do k = k1, k2
-      call pr3050_check_position(deck%p, deck%phi3_deg(k) * deg_to_rad, step_error)
+      call pr3050_check_position(deck%p, pr3050_phi3_deg(deck, k) * deg_to_rad, step_error)
       if (allocated(step_error)) then
         first_bad = min(first_bad, k)
       else
-        steps(k - k1 + 1) = pr3050_step(deck%p, deck%phi3_deg(k) * deg_to_rad, deck%omega3(k), deck%eps3(k))
+        steps(k - k1 + 1) = pr3050_step(deck%p, pr3050_phi3_deg(deck, k) * deg_to_rad, deck%omega3(k), deck%eps3(k))
       end if
     end do
     !$omp end parallel do
     if (first_bad <= k2) then
       k = first_bad
-      call pr3050_check_position(deck%p, deck%phi3_deg(k) * deg_to_rad, error)
-      error%message = "step "//int_str(k)//" (phi3 = "//real_str(deck%phi3_deg(k))//" deg): "//error%message
+      call pr3050_check_position(deck%p, pr3050_phi3_deg(deck, k) * deg_to_rad, error)
+      error%message = "step "//int_str(k)//" (phi3 = "//real_str(pr3050_phi3_deg(deck, k))//" deg): "//error%message
     end if
   end subroutine pr3050_solve
 
@@ -163,11 +163,11 @@ contains
     character(len=:), allocatable, intent(out) :: warning
     integer :: k, half_turns
     do k = 2, deck%n
-      half_turns = floor(deck%phi3_deg(k) / 180.0_wp)
-      if (floor(deck%phi3_deg(k - 1) / 180.0_wp) /= half_turns .and. &
-          modulo(deck%phi3_deg(k), 180.0_wp) /= 0.0_wp) then
-        warning = "between step "//int_str(k - 1)//" (phi3 = "//real_str(deck%phi3_deg(k - 1))// &
-          " deg) and step "//int_str(k)//" (phi3 = "//real_str(deck%phi3_deg(k))// &
+      half_turns = floor(pr3050_phi3_deg(deck, k) / 180.0_wp)
+      if (floor(pr3050_phi3_deg(deck, k - 1) / 180.0_wp) /= half_turns .and. &
+          modulo(pr3050_phi3_deg(deck, k), 180.0_wp) /= 0.0_wp) then
+        warning = "between step "//int_str(k - 1)//" (phi3 = "//real_str(pr3050_phi3_deg(deck, k - 1))// &
+          " deg) and step "//int_str(k)//" (phi3 = "//real_str(pr3050_phi3_deg(deck, k))// &
           " deg) the rocker passes the dead position phi3 = "//real_str(180.0_wp * half_turns)// &
           " deg (C, B, A collinear: F2 is unbounded there)"
         return
@@ -302,21 +302,23 @@ contains
     call table%echo_real("PHI3_END", deck%phi3_end, "deg")
     call table%echo_real("DPHI3", deck%dphi3, "deg")
     call table%echo_int("N", deck%n, "steps")
-    call table%echo_array("OMEGA3", deck%omega3, "rad/s")
-    call table%echo_array("EPS3", deck%eps3, "rad/s^2")
+    call table%echo_array("OMEGA3", deck%omega3(1:deck%n), "rad/s")
+    call table%echo_array("EPS3", deck%eps3(1:deck%n), "rad/s^2")
   end subroutine echo_deck
 
   !> RESULTS: one line per step (rocker angle, three reactions with angles, F2; E format as
   !> the original), then the prismatic pair 1-2 and the cylinder's motion.
-  pure subroutine write_results(self, table, lang, out, later)
+  pure subroutine write_results(self, table, lang, first, last, out, later)
     class(pr3050_mechanism_t), intent(in) :: self
     type(step_table_t), intent(in) :: table
     integer, intent(in) :: lang
+    !> Rows of the block to write (the headings come with row 1 of the run's first block).
+    integer, intent(in) :: first, last
     type(text_buffer_t), intent(inout) :: out
     type(text_buffer_t), intent(inout) :: later
     integer :: k, i
     character(len=:), allocatable :: line
-    if (table%first_block()) then
+    if (first == 1 .and. table%first_block()) then
       if (lang == lang_ru) then
         call out%put(header_ru)
       else
@@ -325,7 +327,7 @@ contains
         end do
       end if
     end if
-    do k = 1, table%row_count()
+    do k = first, last
       associate (v => table%rows(:, k))
         line = fixed_field(v(1), 9, 2)
         do i = 2, 6, 2
@@ -335,7 +337,7 @@ contains
       end associate
     end do
     ! the prismatic pair's block follows the last row of the first (in `later`)
-    if (table%first_block()) then
+    if (first == 1 .and. table%first_block()) then
       if (lang == lang_ru) then
         do k = 1, size(legend_ru)
           call later%put(trim(legend_ru(k)))
@@ -351,7 +353,7 @@ contains
         end do
       end if
     end if
-    do k = 1, table%row_count()
+    do k = first, last
       associate (v => table%rows(:, k))
         call later%put(fixed_field(v(1), 9, 2)//fixed_field(v(9), 10, 2)//fixed_field(v(10), 10, 4)// &
                      fixed_field(v(11), 10, 4)//exp_field(v(12), 12, 3)//exp_field(v(13), 12, 3))

@@ -11,6 +11,7 @@ module kinetostat_pr3207_deck
   implicit none
   private
   public :: pr3207_deck_t, read_pr3207_deck, write_pr3207_template, pr3207_cut_force
+  public :: pr3207_phi1_deg, pr3207_f5c, pr3207_f5c_steps
 
   !> A validated `&pr3207` deck.
   type :: pr3207_deck_t
@@ -32,10 +33,10 @@ module kinetostat_pr3207_deck
     real(wp) :: phi_cut_start = 0.0_wp
     !> Two-value form: crank angle where cutting ends, deg.
     real(wp) :: phi_cut_end = 0.0_wp
-    !> Cutting force per step, N (along +y).
-    real(wp), allocatable :: f5c(:)
-    !> Crank angle per step, deg.
-    real(wp), allocatable :: phi1_deg(:)
+    !> Cutting force per step as given (array form), N (along +y): elements 1..n (the
+    !> namelist's read buffer, kept); not allocated in the two-value form. Step k's force:
+    !> pr3207_f5c; its crank angle: pr3207_phi1_deg (neither stored per step otherwise).
+    real(wp), allocatable :: f5c_values(:)
   end type pr3207_deck_t
 
   !> Template deck (reference data of the spec), one line per entry.
@@ -106,7 +107,7 @@ contains
     real(wp), allocatable :: f5c(:)
     !> Number of steps as given (an integer deck variable, read as a real: see require_whole).
     real(wp) :: n
-    integer :: ios, n_f5c, k
+    integer :: ios, n_f5c
     !> Elements allocated for each per-step array the deck may give (see deck_array_capacities).
     integer, allocatable :: capacity(:)
     character(len=512) :: msg
@@ -178,7 +179,8 @@ contains
       call require_rule(ctx, "f5c", n_f5c == deck%n, "expected "//int_str(deck%n)// &
         " values (one per step), got "//int_str(n_f5c), error)
       if (allocated(error)) return
-      deck%f5c = f5c(1:n_f5c)
+      ! the read buffer is the deck's array (no second copy)
+      call move_alloc(f5c, deck%f5c_values)
     else
       if (.not. two_value_given) then
         call deck_error(ctx, "f5c", "missing: give f5c(:) per step or f5c_work with phi_cut_start, phi_cut_end", error)
@@ -200,14 +202,43 @@ contains
                              j3=j3, omega1=omega1, g=g)
     deck%phi_start = phi_start
     deck%dphi = dphi
-    allocate (deck%phi1_deg(deck%n))
-    deck%phi1_deg = [(phi_start + real(k - 1, wp) * dphi, k=1, deck%n)]
-    if (deck%two_value) then
-      allocate (deck%f5c(deck%n))
-      do k = 1, deck%n
-        deck%f5c(k) = pr3207_cut_force(deck%phi1_deg(k), phi_cut_start, phi_cut_end, f5c_work, f5c_idle)
-      end do
-    end if
   end subroutine read_pr3207_deck
+
+  !> Crank angle of step k, deg: phi_start + (k - 1)*dphi.
+  pure real(wp) function pr3207_phi1_deg(deck, k) result(phi1)
+    !> Validated deck.
+    type(pr3207_deck_t), intent(in) :: deck
+    !> Step number, 1..n.
+    integer, intent(in) :: k
+    phi1 = deck%phi_start + real(k - 1, wp) * deck%dphi
+  end function pr3207_phi1_deg
+
+  !> Cutting force of step k, N (along +y): as given per step, or from the two-value form
+  !> at the step's crank angle (pr3207_cut_force).
+  pure real(wp) function pr3207_f5c(deck, k) result(f)
+    !> Validated deck.
+    type(pr3207_deck_t), intent(in) :: deck
+    !> Step number, 1..n.
+    integer, intent(in) :: k
+    if (deck%two_value) then
+      f = pr3207_cut_force(pr3207_phi1_deg(deck, k), deck%phi_cut_start, deck%phi_cut_end, deck%f5c_work, &
+                           deck%f5c_idle)
+    else
+      f = deck%f5c_values(k)
+    end if
+  end function pr3207_f5c
+
+  !> The cutting force of every step, N (for the load-edge marks: a temporary of n values).
+  pure function pr3207_f5c_steps(deck) result(f)
+    !> Validated deck.
+    type(pr3207_deck_t), intent(in) :: deck
+    !> One value per step, N.
+    real(wp) :: f(deck%n)
+    !> Step number.
+    integer :: k
+    do k = 1, deck%n
+      f(k) = pr3207_f5c(deck, k)
+    end do
+  end function pr3207_f5c_steps
 
 end module kinetostat_pr3207_deck

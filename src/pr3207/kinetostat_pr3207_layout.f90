@@ -13,7 +13,8 @@ module kinetostat_pr3207_layout
   use kinetostat_sketch, only: sketch_t
   use kinetostat_table_writer, only: put_two_line_step
   use kinetostat_pr3207, only: pr3207_params_t, pr3207_position_t, pr3207_step_t, pr3207_step, pr3207_position
-  use kinetostat_pr3207_deck, only: pr3207_deck_t, read_pr3207_deck, write_pr3207_template
+  use kinetostat_pr3207_deck, only: pr3207_deck_t, read_pr3207_deck, write_pr3207_template, pr3207_phi1_deg, &
+    pr3207_f5c, pr3207_f5c_steps
   use kinetostat_drawing, only: drawing_t, force_load
   implicit none
   private
@@ -112,7 +113,7 @@ contains
     allocate (steps(k2 - k1 + 1))
     !$omp parallel do schedule(static)
     do k = k1, k2
-      steps(k - k1 + 1) = pr3207_step(deck%p, deck%phi1_deg(k) * deg_to_rad, deck%f5c(k))
+      steps(k - k1 + 1) = pr3207_step(deck%p, pr3207_phi1_deg(deck, k) * deg_to_rad, pr3207_f5c(deck, k))
     end do
     !$omp end parallel do
   end subroutine pr3207_solve
@@ -129,7 +130,11 @@ contains
     if (table%first_block()) then
       call table%set_columns(pr3207_csv_columns, column_units, column_kinds)
       table%input_column = 1
-      call table%note_load(self%deck%f5c)
+      if (self%deck%two_value) then
+        call table%note_load(pr3207_f5c_steps(self%deck))
+      else
+        call table%note_load(self%deck%f5c_values(1:self%deck%n))
+      end if
       call echo_deck(self%deck, table)
     end if
     call table%allocate_rows(size(steps))
@@ -229,28 +234,30 @@ contains
       call table%echo_real("PHI_CUT_START", deck%phi_cut_start, "deg")
       call table%echo_real("PHI_CUT_END", deck%phi_cut_end, "deg")
     else
-      call table%echo_array("F5C", deck%f5c, "N")
+      call table%echo_array("F5C", deck%f5c_values(1:deck%n), "N")
     end if
   end subroutine echo_deck
 
   !> RESULTS: header, then per step the magnitudes (with the crank angle and M1) and under
   !> them the angles, fields 9 and 12 wide as in the original printout.
-  pure subroutine write_results(self, table, lang, out, later)
+  pure subroutine write_results(self, table, lang, first, last, out, later)
     class(pr3207_mechanism_t), intent(in) :: self
     type(step_table_t), intent(in) :: table
     integer, intent(in) :: lang
+    !> Rows of the block to write (the headings come with row 1 of the run's first block).
+    integer, intent(in) :: first, last
     type(text_buffer_t), intent(inout) :: out
     type(text_buffer_t), intent(inout) :: later
     integer :: k
     do k = 1, size(header_lines)
-      if (.not. table%first_block()) exit
+      if (.not. (first == 1 .and. table%first_block())) exit
       if (lang == lang_ru) then
         call out%put(trim(header_lines_ru(k)))
       else
         call out%put(trim(header_lines(k)))
       end if
     end do
-    do k = 1, table%row_count()
+    do k = first, last
       call put_two_line_step(out, table%rows(:, k), [2, 4, 6, 8, 10], [3, 5, 7, 9, 11], &
                              fixed_field(table%rows(12, k), 12, 3))
     end do
@@ -274,7 +281,7 @@ contains
         call drawing%pair_from_table(table, k, trim(pairs(i)), trim(pair_points(i)), error)
         if (allocated(error)) return
       end do
-      call drawing%add_force("F5c", force_load, drawing%at("S5"), [0.0_wp, self%deck%f5c(k)])
+      call drawing%add_force("F5c", force_load, drawing%at("S5"), [0.0_wp, pr3207_f5c(self%deck, k)])
       gravity = [p%g, 0.0_wp]
       call drawing%add_link_loads(table, k, "1", "S1", "S1", p%m1, 0.0_wp, gravity)
       call drawing%add_link_loads(table, k, "3", "S3", "S3", p%m3, p%j3, gravity)

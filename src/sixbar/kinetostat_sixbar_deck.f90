@@ -10,7 +10,7 @@ module kinetostat_sixbar_deck
   use kinetostat_sixbar, only: sixbar_params_t, sixbar_extreme_phi1
   implicit none
   private
-  public :: sixbar_deck_t, read_sixbar_deck, write_sixbar_template
+  public :: sixbar_deck_t, read_sixbar_deck, write_sixbar_template, sixbar_phi1_deg
 
   !> A validated `&sixbar` deck.
   type :: sixbar_deck_t
@@ -24,10 +24,10 @@ module kinetostat_sixbar_deck
     real(wp) :: dphi = 0.0_wp
     !> Number of steps.
     integer :: n = 0
-    !> Slider load per step, N, signed along +x2.
+    !> Slider load per step, N, signed along +x2: elements 1..n (the namelist's read buffer,
+    !> kept; it may hold a spare element past n). The crank angle is not stored:
+    !> sixbar_phi1_deg.
     real(wp), allocatable :: f5(:)
-    !> Crank angle per step (frame 1), deg.
-    real(wp), allocatable :: phi1_deg(:)
   end type sixbar_deck_t
 
   !> Template deck (the reference deck data/sixbar.nml), one line per entry.
@@ -83,7 +83,7 @@ contains
     logical :: start_at_extreme, legacy_eq2, ok
     !> Number of steps as given (an integer deck variable, read as a real: see require_whole).
     real(wp) :: n
-    integer :: ios, n_f5, k
+    integer :: ios, n_f5
     !> Elements allocated for each per-step array the deck may give (see deck_array_capacities).
     integer, allocatable :: capacity(:)
     character(len=512) :: msg
@@ -187,12 +187,20 @@ contains
       " values (one per step), got "//int_str(n_f5), error)
     if (allocated(error)) return
 
-    deck%f5 = f5(1:n_f5)
+    ! the read buffer is the deck's array (no second copy)
+    call move_alloc(f5, deck%f5)
     deck%phi_start = phi_start
     deck%start_at_extreme = start_at_extreme
     deck%dphi = dphi
-    allocate (deck%phi1_deg(deck%n))
-    deck%phi1_deg = [(phi_start + real(k - 1, wp) * dphi, k=1, deck%n)]
   end subroutine read_sixbar_deck
+
+  !> Crank angle of step k (frame 1), deg: phi_start + (k - 1)*dphi (computed, not stored).
+  pure real(wp) function sixbar_phi1_deg(deck, k) result(phi1)
+    !> Validated deck.
+    type(sixbar_deck_t), intent(in) :: deck
+    !> Step number, 1..n.
+    integer, intent(in) :: k
+    phi1 = deck%phi_start + real(k - 1, wp) * deck%dphi
+  end function sixbar_phi1_deg
 
 end module kinetostat_sixbar_deck

@@ -17,7 +17,7 @@ module kinetostat_sixbar_layout
   use kinetostat_table_writer, only: put_heading, put_two_line_step
   use kinetostat_sixbar, only: sixbar_params_t, sixbar_step_t, sixbar_step, sixbar_ok, sixbar_open1, &
     sixbar_dead1, sixbar_open2, sixbar_dead2, sixbar_frame2_to_frame1, sixbar_down1
-  use kinetostat_sixbar_deck, only: sixbar_deck_t, read_sixbar_deck, write_sixbar_template
+  use kinetostat_sixbar_deck, only: sixbar_deck_t, read_sixbar_deck, write_sixbar_template, sixbar_phi1_deg
   use kinetostat_drawing, only: drawing_t, force_load
   implicit none
   private
@@ -143,14 +143,14 @@ contains
     first_bad = k2 + 1
     !$omp parallel do schedule(static) reduction(min:first_bad)
     do k = k1, k2
-      steps(k - k1 + 1) = sixbar_step(deck%p, deck%phi1_deg(k) * deg_to_rad, deck%f5(k))
+      steps(k - k1 + 1) = sixbar_step(deck%p, sixbar_phi1_deg(deck, k) * deg_to_rad, deck%f5(k))
       if (steps(k - k1 + 1)%status /= sixbar_ok) first_bad = min(first_bad, k)
     end do
     !$omp end parallel do
     if (first_bad <= k2) then
       k = first_bad
       call fatal_error(error, exit_geometry, path//": &sixbar: step "//int_str(k)//" (phi1 = "// &
-        real_str(deck%phi1_deg(k))//" deg): "//failure_text(deck, steps(k - k1 + 1)))
+        real_str(sixbar_phi1_deg(deck, k))//" deg): "//failure_text(deck, steps(k - k1 + 1)))
     end if
   end subroutine sixbar_solve
 
@@ -193,7 +193,7 @@ contains
     if (table%first_block()) then
       call table%set_columns(sixbar_csv_columns, column_units, column_kinds)
       table%input_column = 1
-      call table%note_load(self%deck%f5)
+      call table%note_load(self%deck%f5(1:self%deck%n))
       call echo_deck(self%deck, table)
     end if
     call table%allocate_rows(size(steps))
@@ -310,28 +310,30 @@ contains
     call table%echo_real("PHI_START", deck%phi_start, "deg (frame 1)")
     call table%echo_real("DPHI", deck%dphi, "deg")
     call table%echo_int("N", deck%n, "steps")
-    call table%echo_array("F5", deck%f5, "N (along +x2)")
+    call table%echo_array("F5", deck%f5(1:deck%n), "N (along +x2)")
     call table%echo_logical("LEGACY_EQ2", deck%p%legacy_eq2, "(1991 erratum in eps_q2)")
   end subroutine echo_deck
 
   !> RESULTS as appendix 2: per step the crank angle, six force magnitudes, F56 and M1, and
   !> under them the six force angles; fields 9 and 12 wide.
-  pure subroutine write_results(self, table, lang, out, later)
+  pure subroutine write_results(self, table, lang, first, last, out, later)
     class(sixbar_mechanism_t), intent(in) :: self
     type(step_table_t), intent(in) :: table
     integer, intent(in) :: lang
+    !> Rows of the block to write (the headings come with row 1 of the run's first block).
+    integer, intent(in) :: first, last
     type(text_buffer_t), intent(inout) :: out
     type(text_buffer_t), intent(inout) :: later
     integer :: k
     if (lang == lang_ru) then
-      call write_results_ru(table, out, later)
+      call write_results_ru(table, first, last, out, later)
       return
     end if
     do k = 1, size(header_lines)
-      if (.not. table%first_block()) exit
+      if (.not. (first == 1 .and. table%first_block())) exit
       call out%put(trim(header_lines(k)))
     end do
-    do k = 1, table%row_count()
+    do k = first, last
       call put_two_line_step(out, table%rows(:, k), magnitude_columns, angle_columns, &
                              fixed_field(table%rows(15, k), 12, 3))
     end do
@@ -339,22 +341,24 @@ contains
 
   !> RESULTS as appendix 2 prints them (--lang ru): the original's header and dotted rules,
   !> the eight columns and six angles per step, a legend with the units, then M1 apart.
-  pure subroutine write_results_ru(table, out, later)
+  pure subroutine write_results_ru(table, first, last, out, later)
     type(step_table_t), intent(in) :: table
+    !> Rows of the block to write (the headings come with row 1 of the run's first block).
+    integer, intent(in) :: first, last
     type(text_buffer_t), intent(inout) :: out
     type(text_buffer_t), intent(inout) :: later
     integer :: k
-    if (table%first_block()) then
+    if (first == 1 .and. table%first_block()) then
       do k = 1, size(header_lines_ru)
         call out%put(trim(header_lines_ru(k)))
       end do
       call out%put(dotted_rule)
     end if
-    do k = 1, table%row_count()
+    do k = first, last
       call put_two_line_step(out, table%rows(:, k), magnitude_columns, angle_columns, "")
     end do
     ! the closing rule, the legend and the moment block follow the last row (in `later`)
-    if (table%first_block()) then
+    if (first == 1 .and. table%first_block()) then
       call later%put(dotted_rule)
       do k = 1, size(legend_ru)
         call later%put(trim(legend_ru(k)))
@@ -363,7 +367,7 @@ contains
       call later%put(trim(moment_block_ru(2)))
       call later%put(trim(moment_block_ru(3)))
     end if
-    do k = 1, table%row_count()
+    do k = first, last
       call later%put(fixed_field(table%rows(1, k), 9, 2)//fixed_field(table%rows(15, k), 12, 3))
     end do
   end subroutine write_results_ru

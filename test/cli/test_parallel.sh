@@ -38,6 +38,19 @@ sed 's/dphi = 30, n = 13/dphi = 0.1, n = 3000/; s/step_values = 7\*1000, 6\*0/st
 sed 's/dphi = 30, n = 13/dphi = 0.1, n = 3000/; s/^  theta = .*/  theta = 1000*0, 1000*20, 1000*-15/;
      s/^  vdir  = .*/  vdir = 1000*1, 1000*1, 1000*-1/; s/^  f2    = .*/  f2 = 3000*300/' \
   data/cam_translating.nml >"$cli_tmp/par_cam.nml"
+# PR 3050 (its prismatic pair's second section) and T.FTN in Russian (its moment section):
+# the legacy table's two sections of each block are formatted in parallel parts
+sed 's/dphi3 = 5 /dphi3 = 0.015 /; s/^  omega3 = .*/  omega3 = 1500*0.3, 1501*0.5/; s/^  eps3 = .*/  eps3 = 3001*0.1/' \
+  data/pr3050.nml >"$cli_tmp/par_pr3050.nml"
+expect_same_threads "threads-par_pr3050-table" "$cli_tmp/par_pr3050.nml"
+expect_same_threads "threads-par_pr3050-table-ru" "$cli_tmp/par_pr3050.nml" --lang ru
+expect_same_threads "threads-par_sixbar-table-ru" "$cli_tmp/par_sixbar.nml" --lang ru
+expect_same_threads "threads-par_assur_sixbar-table-link" "$cli_tmp/par_assur_sixbar.nml" --frame link
+OMP_NUM_THREADS=2 run_ks "$cli_tmp/par_pr3050.nml"
+if [ "$rc" -eq 0 ] && [ "$(grep -c '^ *45\.00 ' "$out")" -eq 2 ]; then pass; else
+  fail "threads-par_pr3050-both-sections" "expected exit 0 and the last step (45.00) in both sections, got $rc, \
+$(grep -c '^ *45\.00 ' "$out") lines"
+fi
 # the toggle is singular every 180 deg: steps 2, 8, 14, ... fail (exit 3, step 2 named)
 sed 's/n = 3$/n = 3000/' data/assur_toggle.nml >"$cli_tmp/par_toggle.nml"
 for deck in par_pr3207 par_sixbar par_assur_sixbar par_cam par_toggle; do
