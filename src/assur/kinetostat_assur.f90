@@ -30,6 +30,8 @@ module kinetostat_assur
   !> An actuator whose crank moment per newton |stroke'| is below this times the driving
   !> dyad's size (m) is in a dead position: it cannot move the input link.
   real(wp), parameter :: drive_dead_rel = 1.0e-9_wp
+  !> assur_step keeps the workspace of mechanisms of up to this many dyads in fixed arrays.
+  integer, parameter :: small_dyads = 4
 
   !> Mass data of a moving link.
   type :: assur_link_t
@@ -231,8 +233,8 @@ contains
     real(wp), intent(in) :: f_mag(:)
     !> External moments at this step, N*m.
     real(wp), intent(in) :: m_mag(:)
-    !> Results.
-    type(assur_step_t), intent(out) :: step
+    !> Results (arrays of the right size it has already are reused).
+    type(assur_step_t), intent(inout) :: step
     !> Geometry error (cannot assemble, dead position, undetermined reactions).
     type(error_t), allocatable, intent(out) :: error
     !> Further loads on links 0..2*nd+1 (moments about each link's origin), N and N*m.
@@ -243,19 +245,83 @@ contains
     real(wp), intent(in), optional :: extra_scale
     !> All loads and reactions of links 0..2*nd+1 as summed for the equilibrium residual.
     type(link_balance_t), intent(out), optional :: balances(0:)
-    type(link_state_t) :: states(0:2 * size(mech%dyads) + 1)
-    type(dyad_pose_t) :: poses(size(mech%dyads))
-    type(link_balance_t) :: known(0:2 * size(mech%dyads) + 1)
+    ! the links' frames, the dyads' poses and the links' loads of a mechanism of up to
+    ! small_dyads dyads live in fixed local arrays (no heap per step)
+    type(link_state_t) :: states_small(0:2 * small_dyads + 1)
+    type(dyad_pose_t) :: poses_small(small_dyads)
+    type(link_balance_t) :: known_small(0:2 * small_dyads + 1)
+    type(link_state_t), allocatable :: states_big(:)
+    type(dyad_pose_t), allocatable :: poses_big(:)
+    type(link_balance_t), allocatable :: known_big(:)
+    integer :: nd
+
+    nd = size(mech%dyads)
+    call reset_step(step, 3 * nd + 1)
+    if (nd <= small_dyads) then
+      call step_in(mech, phi1, omega1, eps1, f_mag, m_mag, step, states_small(0:2 * nd + 1), poses_small(1:nd), &
+                   known_small(0:2 * nd + 1), error, extra, extra_power, extra_scale, balances)
+    else
+      allocate (states_big(0:2 * nd + 1), poses_big(nd), known_big(0:2 * nd + 1))
+      call step_in(mech, phi1, omega1, eps1, f_mag, m_mag, step, states_big, poses_big, known_big, error, extra, &
+                   extra_power, extra_scale, balances)
+    end if
+  end subroutine assur_step
+
+  !> `step` as a fresh assur_step_t (every scalar at its default) with its pair arrays for
+  !> `np` pairs at zero, reusing arrays of that size it already has.
+  pure subroutine reset_step(step, np)
+    !> The step.
+    type(assur_step_t), intent(inout) :: step
+    !> Number of result pairs.
+    integer, intent(in) :: np
+    real(wp), allocatable :: f(:, :), n(:), m(:)
+    call move_alloc(step%f, f)
+    call move_alloc(step%n, n)
+    call move_alloc(step%m, m)
+    step = assur_step_t()
+    if (allocated(f)) then
+      if (size(f, 2) /= np) deallocate (f)
+    end if
+    if (allocated(n)) then
+      if (size(n) /= np) deallocate (n)
+    end if
+    if (allocated(m)) then
+      if (size(m) /= np) deallocate (m)
+    end if
+    if (.not. allocated(f)) allocate (f(2, np))
+    if (.not. allocated(n)) allocate (n(np))
+    if (.not. allocated(m)) allocate (m(np))
+    f = 0.0_wp
+    n = 0.0_wp
+    m = 0.0_wp
+    call move_alloc(f, step%f)
+    call move_alloc(n, step%n)
+    call move_alloc(m, step%m)
+  end subroutine reset_step
+
+  !> assur_step with its workspace: the frames `states` (links 0..2*nd+1), the poses `poses`
+  !> (nd) and the loads `known` (links 0..2*nd+1, at their defaults); `step` reset.
+  pure subroutine step_in(mech, phi1, omega1, eps1, f_mag, m_mag, step, states, poses, known, error, extra, &
+                          extra_power, extra_scale, balances)
+    type(assur_mech_t), intent(in) :: mech
+    real(wp), intent(in) :: phi1, omega1, eps1
+    real(wp), intent(in) :: f_mag(:)
+    real(wp), intent(in) :: m_mag(:)
+    type(assur_step_t), intent(inout) :: step
+    type(link_state_t), intent(inout) :: states(0:)
+    type(dyad_pose_t), intent(inout) :: poses(:)
+    type(link_balance_t), intent(inout) :: known(0:)
+    type(error_t), allocatable, intent(out) :: error
+    type(link_balance_t), intent(in), optional :: extra(0:)
+    real(wp), intent(in), optional :: extra_power
+    real(wp), intent(in), optional :: extra_scale
+    type(link_balance_t), intent(out), optional :: balances(0:)
     type(point_state_t) :: ps
     real(wp) :: w2, a_s(2), eps, phi_f(2), gw(2), m_phi, dir(2)
     real(wp) :: power, power_scale, term
     integer :: i, d, nd, k
 
     nd = size(mech%dyads)
-    allocate (step%f(2, 3 * nd + 1), step%n(3 * nd + 1), step%m(3 * nd + 1))
-    step%f = 0.0_wp
-    step%n = 0.0_wp
-    step%m = 0.0_wp
     step%phi1 = phi1
     step%omega1 = omega1
     step%eps1 = eps1
@@ -341,7 +407,7 @@ contains
     end do
     step%residual = equilibrium_residual(known(1:))
     if (present(balances)) balances = known
-  end subroutine assur_step
+  end subroutine step_in
 
   !> The pair whose stroke is the position of link `i` (internal index): the prismatic pair
   !> by which it slides on a frame guide (link a: pair 1, link b: pair 3), else 0 (the

@@ -55,6 +55,10 @@ module kinetostat_assur_kinematics
     real(wp) :: ao(2) = 0.0_wp
     !> eps_q = d2 th / d phi1^2.
     real(wp) :: eq = 0.0_wp
+    !> cos(th) and sin(th), kept with th (link_frame, crank_state) for point_on.
+    real(wp) :: cos_th = 1.0_wp
+    !> See cos_th.
+    real(wp) :: sin_th = 0.0_wp
   end type link_state_t
 
   !> A point with its analogues.
@@ -123,10 +127,34 @@ contains
     !> Crank angle, rad.
     real(wp), intent(in) :: phi1
     type(link_state_t) :: ls
-    ls%o = pivot
-    ls%th = phi1
-    ls%u = 1.0_wp
+    ls = link_frame(o=pivot, th=phi1, vo=[0.0_wp, 0.0_wp], u=1.0_wp, ao=[0.0_wp, 0.0_wp], eq=0.0_wp)
   end function crank_state
+
+  !> A link's frame: origin `o` (m), angle `th` (rad) with its cosine and sine, and their
+  !> analogues.
+  pure function link_frame(o, th, vo, u, ao, eq) result(ls)
+    !> Origin, m.
+    real(wp), intent(in) :: o(2)
+    !> Angle of the x-axis, rad.
+    real(wp), intent(in) :: th
+    !> d o / d phi1, m/rad.
+    real(wp), intent(in) :: vo(2)
+    !> d th / d phi1.
+    real(wp), intent(in) :: u
+    !> d2 o / d phi1^2, m/rad^2.
+    real(wp), intent(in) :: ao(2)
+    !> d2 th / d phi1^2.
+    real(wp), intent(in) :: eq
+    type(link_state_t) :: ls
+    ls%o = o
+    ls%th = th
+    ls%vo = vo
+    ls%u = u
+    ls%ao = ao
+    ls%eq = eq
+    ls%cos_th = cos(th)
+    ls%sin_th = sin(th)
+  end function link_frame
 
   !> A point given in a link's coordinates `r` (m), with its analogues.
   pure function point_on(ls, r) result(ps)
@@ -136,7 +164,8 @@ contains
     real(wp), intent(in) :: r(2)
     type(point_state_t) :: ps
     real(wp) :: w(2)
-    w = rotate(r, ls%th)
+    ! rotate(r, ls%th) with the frame's own cosine and sine
+    w = [ls%cos_th * r(1) - ls%sin_th * r(2), ls%sin_th * r(1) + ls%cos_th * r(2)]
     ps%p = ls%o + w
     ps%v = ls%vo + ls%u * perp(w)
     ps%a = ls%ao + ls%eq * perp(w) - ls%u**2 * w
@@ -265,8 +294,8 @@ contains
     ub = x(2)
     rhs = c%a - a%a + g%l2 * ua**2 * ea - g%l3 * ub**2 * eb
     call solve2(g%l2 * perp(ea), -g%l3 * perp(eb), rhs, x, ok)
-    pose%link(1) = link_state_t(o=a%p, th=tha, vo=a%v, u=ua, ao=a%a, eq=x(1))
-    pose%link(2) = link_state_t(o=c%p, th=thb, vo=c%v, u=ub, ao=c%a, eq=x(2))
+    pose%link(1) = link_frame(o=a%p, th=tha, vo=a%v, u=ua, ao=a%a, eq=x(1))
+    pose%link(2) = link_frame(o=c%p, th=thb, vo=c%v, u=ub, ao=c%a, eq=x(2))
     pose%p(:, 1) = a%p
     pose%p(:, 2) = b
     pose%p(:, 3) = c%p
@@ -308,8 +337,8 @@ contains
     call solve2(g%l2 * perp(ea), -t, rhs, x, ok)
     vb = a%v + g%l2 * ua * perp(ea)
     ab = a%a + g%l2 * x(1) * perp(ea) - g%l2 * ua**2 * ea
-    pose%link(1) = link_state_t(o=a%p, th=tha, vo=a%v, u=ua, ao=a%a, eq=x(1))
-    pose%link(2) = link_state_t(o=b, th=gam, vo=vb, u=gam_u, ao=ab, eq=gam_eq)
+    pose%link(1) = link_frame(o=a%p, th=tha, vo=a%v, u=ua, ao=a%a, eq=x(1))
+    pose%link(2) = link_frame(o=b, th=gam, vo=vb, u=gam_u, ao=ab, eq=gam_eq)
     pose%p(:, 1) = a%p
     pose%p(:, 2) = b
     pose%p(:, 3) = b
@@ -347,8 +376,8 @@ contains
     ds = x(2)
     rhs = a%a - c%a - 2.0_wp * ds * u * n + u**2 * (s * t + g%e * n)
     call solve2(col1, t, rhs, x, ok)
-    pose%link(1) = link_state_t(o=a%p, th=th, vo=a%v, u=u, ao=a%a, eq=x(1))
-    pose%link(2) = link_state_t(o=c%p, th=th, vo=c%v, u=u, ao=c%a, eq=x(1))
+    pose%link(1) = link_frame(o=a%p, th=th, vo=a%v, u=u, ao=a%a, eq=x(1))
+    pose%link(2) = link_frame(o=c%p, th=th, vo=c%v, u=u, ao=c%a, eq=x(1))
     pose%p(:, 1) = a%p
     pose%p(:, 2) = a%p
     pose%p(:, 3) = c%p
@@ -387,8 +416,8 @@ contains
     call solve2(t1, -t2, rhs, x, ok)
     vb = g1%v + ds1 * t1 + s1 * u1 * n1
     ab = g1%a + x(1) * t1 + (2.0_wp * ds1 * u1 + s1 * eq1) * n1 - s1 * u1**2 * t1
-    pose%link(1) = link_state_t(o=b, th=gam1, vo=vb, u=u1, ao=ab, eq=eq1)
-    pose%link(2) = link_state_t(o=b, th=gam2, vo=vb, u=u2, ao=ab, eq=eq2)
+    pose%link(1) = link_frame(o=b, th=gam1, vo=vb, u=u1, ao=ab, eq=eq1)
+    pose%link(2) = link_frame(o=b, th=gam2, vo=vb, u=u2, ao=ab, eq=eq2)
     pose%p(:, 1) = b
     pose%p(:, 2) = b
     pose%p(:, 3) = b
@@ -428,8 +457,8 @@ contains
     ob = gp%p + sb * t
     vb = gp%v + dsb * t + sb * gam_u * n
     ab = gp%a + x(1) * t + (2.0_wp * dsb * gam_u + sb * gam_eq) * n - sb * gam_u**2 * t
-    pose%link(1) = link_state_t(o=a%p, th=gam + g%slot_angle, vo=a%v, u=gam_u, ao=a%a, eq=gam_eq)
-    pose%link(2) = link_state_t(o=ob, th=gam, vo=vb, u=gam_u, ao=ab, eq=gam_eq)
+    pose%link(1) = link_frame(o=a%p, th=gam + g%slot_angle, vo=a%v, u=gam_u, ao=a%a, eq=gam_eq)
+    pose%link(2) = link_frame(o=ob, th=gam, vo=vb, u=gam_u, ao=ab, eq=gam_eq)
     pose%p(:, 1) = a%p
     pose%p(:, 2) = a%p
     pose%p(:, 3) = ob

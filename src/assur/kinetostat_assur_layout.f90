@@ -24,7 +24,7 @@ module kinetostat_assur_layout
   use kinetostat_assur_friction, only: friction_step_t, assur_friction_step
   use kinetostat_assur_deck, only: assur_deck_t, read_assur_deck, write_assur_template, load_schedule_t, load_constant, &
     load_column, assur_phi1_deg, assur_omega1_steps, assur_eps1, assur_motion_sign, assur_load_value, &
-    assur_force_values, assur_moment_values, assur_load_steps
+    assur_load_steps
   implicit none
   private
   public :: assur_mechanism_t, new_assur, assur_solve, assur_csv_columns, assur_csv_values, assur_pair_prismatic
@@ -40,6 +40,8 @@ module kinetostat_assur_layout
   real(wp), parameter :: eta_roundoff = 1.0e-12_wp
   !> Decimals of the actuator's stroke (m), stroke speed (m/s) and acceleration (m/s^2).
   integer, parameter :: stroke_decimals = 4
+  !> put_kinematics' modes: values by name, the columns of the values, values by column.
+  integer, parameter :: kin_by_name = 0, kin_finding = 1, kin_by_slot = 2
   !> Heading of RESULTS with --frame link.
   character(*), parameter :: link_axes_heading = "REACTIONS IN THE AXES OF THE LINK EACH ACTS ON "// &
     "(LINE 1 ALONG ITS X AXIS, LINE 2 ACROSS), N; CRANK PIN IN CRANK AXES (X ALONG PHI1)"
@@ -50,6 +52,14 @@ module kinetostat_assur_layout
   !> Dyad line of the INPUT DATA echo.
   character(*), parameter :: dyad_echo_fmt = '(3x,"DYAD ",i0,": ",a," LINKS ",i0,"-",i0,", ON LINKS ",i0," AND ",i0, &
     &", MODE ",i0)'
+
+  !> The load values of one step (a workspace reused from step to step).
+  type :: step_loads_t
+    !> Magnitude of every external force, N.
+    real(wp), allocatable :: f(:)
+    !> Every external moment, N*m.
+    real(wp), allocatable :: m(:)
+  end type step_loads_t
 
   !> A one-DOF linkage of class-II Assur groups on a crank (generic engine).
   type, extends(mechanism_t) :: assur_mechanism_t
@@ -183,19 +193,22 @@ contains
     if (i > 1 .and. label == "1") label = "L1"
   end function link_label
 
-  !> Every step into the step table, with the INPUT DATA echo and the self-check.
+  !> Every step into the step table, with the INPUT DATA echo and the self-check. Each step
+  !> is solved into a workspace of its thread and its row written at once (no allocation per
+  !> step); with the kinematics columns the block keeps the steps' angles and pair forces.
   subroutine solve(self, table, error)
     class(assur_mechanism_t), intent(in) :: self
     type(step_table_t), intent(inout) :: table
     type(error_t), allocatable, intent(out) :: error
-    type(assur_step_t), allocatable :: steps(:)
     type(friction_step_t), allocatable :: fsteps(:)
     character(len=24), allocatable :: names(:)
-    integer :: k, c, ip, nc, first, last
-    allocate (steps(0), fsteps(0)) ! defined before the call (gcc's -Wmaybe-uninitialized on the descriptor)
+    real(wp), allocatable :: residual(:), mismatch(:), motion(:, :), forces(:, :, :), turn(:, :), omega1(:)
+    integer, allocatable :: slots(:)
+    real(wp) :: crank
+    integer :: k, c, ip, nv, nc, np, first, last, nrow, first_bad
+    logical :: kinematics
     call table%block_range(self%deck%n, first, last)
-    call assur_solve(table%deck, self%deck, steps, error, fsteps, first, last)
-    if (allocated(error)) return
+    nrow = last - first + 1
     if (table%first_block()) then
       allocate (names(0))
       names = assur_csv_columns(self%deck)
@@ -248,26 +261,73 @@ contains
       if (len_trim(self%deck%title) > 0) table%subtitle = trim(self%deck%title)
       call echo_deck(self%deck, table)
     end if
-    nc = size(table%columns)
-    call table%allocate_rows(size(steps))
-    !$omp parallel do schedule(static)
-    do k = 1, size(steps)
-      if (self%deck%friction_on) then
-        table%rows(1:nc, k) = [assur_csv_values(self%deck, steps(k)), friction_csv_values(self%deck, steps(k), fsteps(k))]
-      else
-        table%rows(1:nc, k) = assur_csv_values(self%deck, steps(k))
+    np = size(self%deck%pair_name)
+    nv = assur_row_size(self%deck)
+    nc = nv
+    if (self%deck%friction_on) nc = nv + friction_row_size(self%deck)
+    kinematics = table%kinematics_wanted
+    crank = crank_length(self%deck)
+    turn = pair_turns(self%deck)
+    omega1 = assur_omega1_steps(self%deck, first, last)
+    call table%allocate_rows(nrow)
+    allocate (residual(nrow), mismatch(nrow), fsteps(merge(nrow, 0, self%deck%friction_on)))
+    allocate (motion(3, merge(nrow, 0, kinematics)), forces(2, np, merge(nrow, 0, kinematics)))
+    ! steps in parallel with OpenMP threads; the error reported is the first step's in step order
+    ! (that step is solved again alone for its message)
+    first_bad = last + 1
+    !$omp parallel
+    block
+      type(assur_step_t) :: step
+      type(friction_step_t) :: fs
+      type(step_loads_t) :: loads
+      type(error_t), allocatable :: step_error
+      integer :: kk, i
+      !$omp do schedule(dynamic, 64) reduction(min:first_bad)
+      do kk = first, last
+        i = kk - first + 1
+        call solve_one(self%deck, kk, omega1(i), step, fs, step_error, loads)
+        if (allocated(step_error)) then
+          first_bad = min(first_bad, kk)
+          cycle
+        end if
+        call assur_row(self%deck, step, crank, turn, table%rows(1:nv, i))
+        if (self%deck%friction_on) then
+          table%rows(nv + 1:nc, i) = friction_csv_values(self%deck, step, fs)
+          fsteps(i) = fs
+        end if
+        residual(i) = step%residual
+        mismatch(i) = step%mismatch
+        if (kinematics) then
+          motion(:, i) = [step%phi1, step%omega1, step%eps1]
+          forces(:, :, i) = step%f
+        end if
+      end do
+      !$omp end do
+    end block
+    !$omp end parallel
+    if (first_bad <= last) then
+      call step_failure(table%deck, self%deck, first_bad, omega1(first_bad - first + 1), error)
+      return
+    end if
+    if (kinematics) then
+      ! by name for the first row (the first block creates the columns), then straight into
+      ! the columns those names give
+      allocate (slots(kinematics_value_count(self%deck)))
+      k = 1
+      if (table%first_block()) then
+        call put_kinematics(table, 1, self%deck, motion(:, 1), forces(:, :, 1))
+        call table%finish_columns()
+        k = 2
       end if
-    end do
-    !$omp end parallel do
-    if (table%kinematics_wanted) then
-      do k = 1, size(steps)
-        call put_kinematics(table, k, self%deck, steps(k))
+      call put_kinematics(table, 1, self%deck, motion(:, 1), forces(:, :, 1), slots, find=.true.)
+      do k = k, nrow
+        call put_kinematics(table, k, self%deck, motion(:, k), forces(:, :, k), slots)
       end do
     end if
     if (self%deck%mech%drive_dyad == 0) then
-      call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "M1")
+      call table%set_selfcheck(maxval(residual), maxval(mismatch), "M1")
     else
-      call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "F_drive")
+      call table%set_selfcheck(maxval(residual), maxval(mismatch), "F_drive")
     end if
     if (self%deck%friction_on) then
       table%residual_label = "MAX EQUILIBRIUM RESIDUAL WITH FRICTION LOADS"
@@ -278,6 +338,17 @@ contains
       if (last == self%deck%n) call friction_summary(self%deck, table%carry(1), table%carry(2), table)
     end if
   end subroutine solve
+
+  !> Number of friction values of a row (friction_csv_columns).
+  pure integer function friction_row_size(deck)
+    !> Validated deck.
+    type(assur_deck_t), intent(in) :: deck
+    integer :: ip
+    friction_row_size = 4
+    do ip = 1, size(deck%friction)
+      if (deck%friction(ip)%f > 0.0_wp) friction_row_size = friction_row_size + 1
+    end do
+  end function friction_row_size
 
   !> Friction columns after M1: M1_0 (M1 without friction), P_loss_<pair> for every pair with
   !> friction, P_loss, eta_defined, eta.
@@ -445,7 +516,7 @@ contains
     integer, intent(in), optional :: first, last
     type(error_t), allocatable :: step_error
     type(friction_step_t) :: fs
-    character(len=32) :: angle_text
+    type(step_loads_t) :: loads
     integer :: k, k1, k2, first_bad
     logical :: keep_friction
     !> Crank speed of steps k1..k2, rad/s (a list's signs carry from step to step).
@@ -458,39 +529,74 @@ contains
     ! steps in parallel with OpenMP threads; the error reported is the first step's in step order
     ! (that step is solved again alone for its message)
     first_bad = k2 + 1
-    !$omp parallel do schedule(dynamic, 64) private(fs, step_error) reduction(min:first_bad)
+    !$omp parallel do schedule(dynamic, 64) private(fs, step_error, loads) reduction(min:first_bad)
     do k = k1, k2
-      call one_step(k, steps(k - k1 + 1), fs, step_error)
+      call solve_one(deck, k, omega1(k - k1 + 1), steps(k - k1 + 1), fs, step_error, loads)
       if (deck%friction_on .and. keep_friction) fsteps(k - k1 + 1) = fs
       if (allocated(step_error)) first_bad = min(first_bad, k)
     end do
     !$omp end parallel do
-    if (first_bad <= k2) then
-      k = first_bad
-      call one_step(k, steps(k - k1 + 1), fs, step_error)
-      write (angle_text, '(g0.10)') assur_phi1_deg(deck, k)
-      call fatal_error(error, exit_geometry, path//": &assur: step "//int_str(k)//" (phi1 = "// &
-        trim(adjustl(angle_text))//" deg): "//step_error%message)
-    end if
-  contains
-    !> Step `k`: its results, friction results (deck%friction_on), error.
-    subroutine one_step(k, step, fstep, step_error)
-      integer, intent(in) :: k
-      type(assur_step_t), intent(out) :: step
-      type(friction_step_t), intent(out) :: fstep
-      type(error_t), allocatable, intent(out) :: step_error
-      associate (w => omega1(k - k1 + 1))
-        if (deck%friction_on) then
-          call assur_friction_step(deck%mech, deck%friction, assur_phi1_deg(deck, k) * deg_to_rad, w, &
-            assur_eps1(deck, k), assur_motion_sign(w), assur_force_values(deck, k), assur_moment_values(deck, k), &
-            step, fstep, step_error)
-        else
-          call assur_step(deck%mech, assur_phi1_deg(deck, k) * deg_to_rad, w, assur_eps1(deck, k), &
-                          assur_force_values(deck, k), assur_moment_values(deck, k), step, step_error)
-        end if
-      end associate
-    end subroutine one_step
+    if (first_bad <= k2) call step_failure(path, deck, first_bad, omega1(first_bad - k1 + 1), error)
   end subroutine assur_solve
+
+  !> Step `k` of the deck at crank speed `w` (rad/s; assur_omega1_steps): its results, its
+  !> friction results (deck%friction_on), its error; `loads` is the caller's workspace for the
+  !> step's load values (sized here on first use).
+  pure subroutine solve_one(deck, k, w, step, fstep, step_error, loads)
+    !> Validated deck.
+    type(assur_deck_t), intent(in) :: deck
+    !> Step number.
+    integer, intent(in) :: k
+    !> Crank speed of the step, rad/s.
+    real(wp), intent(in) :: w
+    !> Results (its arrays reused).
+    type(assur_step_t), intent(inout) :: step
+    !> Friction results.
+    type(friction_step_t), intent(out) :: fstep
+    !> Geometry error.
+    type(error_t), allocatable, intent(out) :: step_error
+    !> The force and moment values of the step.
+    type(step_loads_t), intent(inout) :: loads
+    integer :: i
+    if (.not. allocated(loads%f)) allocate (loads%f(size(deck%force_load)), loads%m(size(deck%moment_load)))
+    do i = 1, size(loads%f)
+      loads%f(i) = assur_load_value(deck, deck%force_load(i), k)
+    end do
+    do i = 1, size(loads%m)
+      loads%m(i) = assur_load_value(deck, deck%moment_load(i), k)
+    end do
+    if (deck%friction_on) then
+      call assur_friction_step(deck%mech, deck%friction, assur_phi1_deg(deck, k) * deg_to_rad, w, &
+        assur_eps1(deck, k), assur_motion_sign(w), loads%f, loads%m, step, fstep, step_error)
+    else
+      call assur_step(deck%mech, assur_phi1_deg(deck, k) * deg_to_rad, w, assur_eps1(deck, k), &
+                      loads%f, loads%m, step, step_error)
+    end if
+  end subroutine solve_one
+
+  !> The error of a run stopped at step `k` (crank speed `w`, rad/s; solved again for its
+  !> message), naming the step and its input angle.
+  pure subroutine step_failure(path, deck, k, w, error)
+    !> Deck file (for messages).
+    character(*), intent(in) :: path
+    !> Validated deck.
+    type(assur_deck_t), intent(in) :: deck
+    !> The first failing step.
+    integer, intent(in) :: k
+    !> Its crank speed, rad/s.
+    real(wp), intent(in) :: w
+    !> The error.
+    type(error_t), allocatable, intent(out) :: error
+    type(assur_step_t) :: step
+    type(friction_step_t) :: fs
+    type(step_loads_t) :: loads
+    type(error_t), allocatable :: step_error
+    character(len=32) :: angle_text
+    call solve_one(deck, k, w, step, fs, step_error, loads)
+    write (angle_text, '(g0.10)') assur_phi1_deg(deck, k)
+    call fatal_error(error, exit_geometry, path//": &assur: step "//int_str(k)//" (phi1 = "// &
+      trim(adjustl(angle_text))//" deg): "//step_error%message)
+  end subroutine step_failure
 
   !> CSV column names: phi1; per pair F, FG, [Fx, Fy], [FN, FM for prismatic pairs]; M1, or
   !> with a linear actuator as driver F_drive, stroke, stroke_v, stroke_a.
@@ -514,50 +620,93 @@ contains
     end if
   end function assur_csv_columns
 
-  !> The CSV row of one step, in the order of assur_csv_columns. Forces below `noise_rel`
-  !> times the step's largest force (moments below that force times the crank's length
-  !> scale) are roundoff: printed as 0 with angle 0; so are single components below that floor
-  !> (a force along an axis gets exactly that axis' angle).
+  !> The CSV row of one step, in the order of assur_csv_columns (see assur_row).
   pure function assur_csv_values(deck, s) result(v)
     !> Validated deck.
     type(assur_deck_t), intent(in) :: deck
     !> One step.
     type(assur_step_t), intent(in) :: s
     real(wp), allocatable :: v(:)
-    real(wp) :: floor, f(2), mfloor, nn, mm, f_mag(size(s%f, 2))
-    logical :: prismatic(size(s%f, 2))
-    integer :: ip, np, pos
-    np = size(s%f, 2)
-    ! the row's length first: one allocation
-    pos = 1
-    do ip = 1, np
-      prismatic(ip) = assur_pair_prismatic(deck, ip)
-      pos = pos + 2
-      if (deck%components) pos = pos + 2
-      if (prismatic(ip)) pos = pos + 2
+    allocate (v(assur_row_size(deck)))
+    call assur_row(deck, s, crank_length(deck), pair_turns(deck), v)
+  end function assur_csv_values
+
+  !> cos and sin of the angle each pair's force is turned by into its reporting frame
+  !> (-pair_frame), as rotate computes them: (1, ip) cos, (2, ip) sin. (Not vectorised: the
+  !> vector cos and sin of libmvec may differ from the scalar ones in the last bit.)
+  pure function pair_turns(deck) result(turn)
+    !> Validated deck.
+    type(assur_deck_t), intent(in) :: deck
+    real(wp), allocatable :: turn(:, :)
+    integer :: ip
+    allocate (turn(2, size(deck%pair_frame)))
+    !GCC$ novector
+    do ip = 1, size(deck%pair_frame)
+      turn(1, ip) = cos(-deck%pair_frame(ip))
+      turn(2, ip) = sin(-deck%pair_frame(ip))
+    end do
+  end function pair_turns
+
+  !> Number of values of a row of assur_csv_columns.
+  pure integer function assur_row_size(deck)
+    !> Validated deck.
+    type(assur_deck_t), intent(in) :: deck
+    integer :: ip
+    assur_row_size = 1
+    do ip = 1, size(deck%pair_name)
+      assur_row_size = assur_row_size + 2
+      if (deck%components) assur_row_size = assur_row_size + 2
+      if (assur_pair_prismatic(deck, ip)) assur_row_size = assur_row_size + 2
     end do
     if (deck%mech%drive_dyad == 0) then
-      allocate (v(pos + 1))
+      assur_row_size = assur_row_size + 1
     else
-      allocate (v(pos + 4))
+      assur_row_size = assur_row_size + 4
     end if
+  end function assur_row_size
+
+  !> The CSV row `v` of one step, in the order of assur_csv_columns. Forces below `noise_rel`
+  !> times the step's largest force (moments below that force times the crank's length
+  !> scale) are roundoff: printed as 0 with angle 0; so are single components below that floor
+  !> (a force along an axis gets exactly that axis' angle).
+  pure subroutine assur_row(deck, s, crank, turn, v)
+    !> Validated deck.
+    type(assur_deck_t), intent(in) :: deck
+    !> One step.
+    type(assur_step_t), intent(in) :: s
+    !> The crank's length scale (crank_length), m.
+    real(wp), intent(in) :: crank
+    !> The pairs' turns into their frames (pair_turns).
+    real(wp), intent(in) :: turn(:, :)
+    !> The row (assur_row_size values).
+    real(wp), intent(out) :: v(:)
+    real(wp) :: floor, f(2), mfloor, nn, mm, f_mag
+    integer :: ip, np, pos
+    np = size(s%f, 2)
+    ! every pair's |F| first, kept in its magnitude's place until the pair is written
     floor = 0.0_wp
+    pos = 1
     do ip = 1, np
-      f_mag(ip) = magnitude(s%f(:, ip))
-      floor = max(floor, f_mag(ip))
+      f_mag = magnitude(s%f(:, ip))
+      v(pos + 1) = f_mag
+      floor = max(floor, f_mag)
+      pos = pos + 2
+      if (deck%components) pos = pos + 2
+      if (assur_pair_prismatic(deck, ip)) pos = pos + 2
     end do
     floor = noise_rel * floor
-    mfloor = floor * crank_length(deck)
+    mfloor = floor * crank
     v(1) = s%phi1 * rad_to_deg
     pos = 1
     do ip = 1, np
       ! snap_noise(pair_sign * f, floor), its length known (hypot ignores the signs)
-      if (f_mag(ip) <= floor) then
+      if (v(pos + 1) <= floor) then
         f = 0.0_wp
       else
         f = deck%pair_sign(ip) * s%f(:, ip)
       end if
-      f = rotate(f, -deck%pair_frame(ip))
+      ! rotate(f, -deck%pair_frame(ip))
+      f = [turn(1, ip) * f(1) - turn(2, ip) * f(2), turn(2, ip) * f(1) + turn(1, ip) * f(2)]
       where (abs(f) <= floor) f = 0.0_wp
       v(pos + 1) = magnitude(f)
       if (deck%angles_signed) then
@@ -570,7 +719,7 @@ contains
         v(pos + 1:pos + 2) = f
         pos = pos + 2
       end if
-      if (prismatic(ip)) then
+      if (assur_pair_prismatic(deck, ip)) then
         nn = deck%pair_sign(ip) * s%n(ip)
         mm = deck%pair_sign(ip) * s%m(ip)
         if (abs(nn) <= floor) nn = 0.0_wp
@@ -590,70 +739,219 @@ contains
     do ip = 1, size(v)
       v(ip) = clean_zero(v(ip))
     end do
-  end function assur_csv_values
+  end subroutine assur_row
 
-  !> The kinematics columns of step `k`, in the deck's global frame: the reference point
+  !> The kinematics columns of row `k`, in the deck's global frame: the reference point
   !> J<pair> of every pair (x_J21 for the pair of F21: the pin of a revolute pair, the
   !> slider's reference point of a prismatic pair; the crank's pair with the frame is the
   !> pivot), the centre of mass S<id> of every moving link and its acceleration, the angle
   !> (of the link's x axis), angular velocity and acceleration of every moving link (named
   !> by link_label), and the components of every pair force as the F<pair>x, F<pair>y columns
   !> give them.
-  pure subroutine put_kinematics(table, k, deck, s)
+  !>
+  !> Without `slots` the values go in by name (table%put_point, ...: columns appended on
+  !> first use). With `slots` and `find` they do not: slots(j) is set to the column of the
+  !> j-th value (0: a column that is not a kinematics column keeps its value) by the same
+  !> names; with `slots` alone row `k` gets the values straight into those columns (no name
+  !> is built), as put_kinematic would write them.
+  pure subroutine put_kinematics(table, k, deck, motion, pair_f, slots, find)
     !> The step table (columns appended on first use).
     type(step_table_t), intent(inout) :: table
     !> Row.
     integer, intent(in) :: k
     !> Validated deck.
     type(assur_deck_t), intent(in) :: deck
-    !> The computed step.
-    type(assur_step_t), intent(in) :: s
+    !> The step's crank angle (rad), speed (rad/s) and acceleration (rad/s^2).
+    real(wp), intent(in) :: motion(3)
+    !> The step's pair forces (assur_step_t%f), N.
+    real(wp), intent(in) :: pair_f(:, :)
+    !> Column of every value, in the order they are put (kinematics_value_count).
+    integer, intent(inout), optional :: slots(:)
+    !> Set `slots` (true) instead of writing values.
+    logical, intent(in), optional :: find
     type(link_state_t) :: states(0:2 * size(deck%mech%dyads) + 1)
     type(dyad_pose_t) :: poses(size(deck%mech%dyads))
     type(point_state_t) :: ps
     type(error_t), allocatable :: error
-    real(wp) :: w2, floor, f(2)
-    integer :: i, ip, d, np
-    call assur_kinematics(deck%mech, s%phi1, states, poses, error)
-    if (allocated(error)) return ! cannot happen: the step was solved at this angle
-    w2 = s%omega1**2
-    np = size(s%f, 2)
+    character(len=:), allocatable :: label
+    real(wp) :: w2, floor, f(2), phi1, omega1, eps1
+    integer :: i, ip, d, np, j, mode
+    mode = kin_by_name
+    if (present(slots)) mode = kin_by_slot
+    if (present(find)) then
+      if (find) mode = kin_finding
+    end if
+    phi1 = motion(1)
+    omega1 = motion(2)
+    eps1 = motion(3)
+    j = 0
+    if (mode /= kin_finding) then
+      call assur_kinematics(deck%mech, phi1, states, poses, error)
+      if (allocated(error)) return ! cannot happen: the step was solved at this angle
+    end if
+    w2 = omega1**2
+    np = size(pair_f, 2)
     do ip = 1, np
       d = (ip - 1) / 3 + 1
       if (ip == np) then
-        call table%put_point(k, joint_name(deck%pair_name(ip)), deck%mech%pivot)
+        call put_kin_point(table, k, mode, j, slots, joint_name(deck%pair_name(ip)), deck%mech%pivot)
       else
-        call table%put_point(k, joint_name(deck%pair_name(ip)), poses(d)%p(:, ip - 3 * (d - 1)))
+        call put_kin_point(table, k, mode, j, slots, joint_name(deck%pair_name(ip)), poses(d)%p(:, ip - 3 * (d - 1)))
       end if
     end do
     do i = 1, ubound(states, 1)
       ps = point_on(states(i), deck%mech%links(i)%s)
-      call table%put_point(k, "S"//int_str(deck%mech%links(i)%id), ps%p)
+      call put_kin_point(table, k, mode, j, slots, "S"//int_str(deck%mech%links(i)%id), ps%p)
     end do
     do i = 1, ubound(states, 1)
-      call table%put_link(k, link_label(deck, i), states(i)%th, states(i)%u * s%omega1, &
-                          states(i)%eq * w2 + states(i)%u * s%eps1)
+      select case (mode)
+      case (kin_by_name)
+        call table%put_link(k, link_label(deck, i), states(i)%th, states(i)%u * omega1, &
+                            states(i)%eq * w2 + states(i)%u * eps1)
+      case (kin_finding)
+        label = link_label(deck, i)
+        call find_kin_slot(table, j, slots, "phi", label)
+        call find_kin_slot(table, j, slots, "omega", label)
+        call find_kin_slot(table, j, slots, "eps", label)
+      case default
+        call put_kin_value(table, k, j, slots, states(i)%th * rad_to_deg)
+        call put_kin_value(table, k, j, slots, states(i)%u * omega1)
+        call put_kin_value(table, k, j, slots, states(i)%eq * w2 + states(i)%u * eps1)
+      end select
     end do
     do i = 1, ubound(states, 1)
-      ps = point_on(states(i), deck%mech%links(i)%s)
-      call table%put_acceleration(k, "S"//int_str(deck%mech%links(i)%id), ps%a * w2 + ps%v * s%eps1)
+      select case (mode)
+      case (kin_by_name)
+        ps = point_on(states(i), deck%mech%links(i)%s)
+        call table%put_acceleration(k, "S"//int_str(deck%mech%links(i)%id), ps%a * w2 + ps%v * eps1)
+      case (kin_finding)
+        call find_kin_slot(table, j, slots, "ax_", "S"//int_str(deck%mech%links(i)%id))
+        call find_kin_slot(table, j, slots, "ay_", "S"//int_str(deck%mech%links(i)%id))
+      case default
+        ps = point_on(states(i), deck%mech%links(i)%s)
+        f = ps%a * w2 + ps%v * eps1
+        call put_kin_value(table, k, j, slots, f(1))
+        call put_kin_value(table, k, j, slots, f(2))
+      end select
     end do
     floor = 0.0_wp
-    do ip = 1, np
-      floor = max(floor, magnitude(s%f(:, ip)))
-    end do
+    if (mode /= kin_finding) then
+      do ip = 1, np
+        floor = max(floor, magnitude(pair_f(:, ip)))
+      end do
+    end if
     floor = noise_rel * floor
     do ip = 1, np
-      f = rotate(snap_noise(deck%pair_sign(ip) * s%f(:, ip), floor), -deck%pair_frame(ip))
-      call table%put_components(k, trim(deck%pair_name(ip)), force_components(f, floor), &
-                                deck%pair_frame(ip) * rad_to_deg)
+      select case (mode)
+      case (kin_by_name)
+        f = rotate(snap_noise(deck%pair_sign(ip) * pair_f(:, ip), floor), -deck%pair_frame(ip))
+        call table%put_components(k, trim(deck%pair_name(ip)), force_components(f, floor), &
+                                  deck%pair_frame(ip) * rad_to_deg)
+      case (kin_finding)
+        call find_kin_slot(table, j, slots, trim(deck%pair_name(ip)), "_x")
+        call find_kin_slot(table, j, slots, trim(deck%pair_name(ip)), "_y")
+      case default
+        f = rotate(snap_noise(deck%pair_sign(ip) * pair_f(:, ip), floor), -deck%pair_frame(ip))
+        f = force_components(f, floor)
+        call put_kin_value(table, k, j, slots, f(1))
+        call put_kin_value(table, k, j, slots, f(2))
+      end select
     end do
     do ip = 1, np
       i = pair_link(deck, ip)
-      f = rotate(snap_noise(deck%pair_sign(ip) * s%f(:, ip), floor), -states(i)%th)
-      call table%put_link_axes(k, trim(deck%pair_name(ip)), force_components(f, floor), link_label(deck, i))
+      select case (mode)
+      case (kin_by_name)
+        f = rotate(snap_noise(deck%pair_sign(ip) * pair_f(:, ip), floor), -states(i)%th)
+        call table%put_link_axes(k, trim(deck%pair_name(ip)), force_components(f, floor), link_label(deck, i))
+      case (kin_finding)
+        call find_kin_slot(table, j, slots, trim(deck%pair_name(ip)), "_along")
+        call find_kin_slot(table, j, slots, trim(deck%pair_name(ip)), "_across")
+      case default
+        f = rotate(snap_noise(deck%pair_sign(ip) * pair_f(:, ip), floor), -states(i)%th)
+        f = force_components(f, floor)
+        call put_kin_value(table, k, j, slots, f(1))
+        call put_kin_value(table, k, j, slots, f(2))
+      end select
     end do
   end subroutine put_kinematics
+
+  !> put_kinematics' position of point `name` (x_<name>, y_<name>) in row `k` by `mode`.
+  pure subroutine put_kin_point(table, k, mode, j, slots, name, p)
+    !> The step table.
+    type(step_table_t), intent(inout) :: table
+    !> Row.
+    integer, intent(in) :: k
+    !> kin_by_name, kin_finding or kin_by_slot.
+    integer, intent(in) :: mode
+    !> Values put so far in the row.
+    integer, intent(inout) :: j
+    !> Column of every value.
+    integer, intent(inout), optional :: slots(:)
+    !> Point name.
+    character(*), intent(in) :: name
+    !> Position, m.
+    real(wp), intent(in) :: p(2)
+    select case (mode)
+    case (kin_by_name)
+      call table%put_point(k, name, p)
+    case (kin_finding)
+      call find_kin_slot(table, j, slots, "x_", name)
+      call find_kin_slot(table, j, slots, "y_", name)
+    case default
+      call put_kin_value(table, k, j, slots, p(1))
+      call put_kin_value(table, k, j, slots, p(2))
+    end select
+  end subroutine put_kin_point
+
+  !> put_kinematics' next value into its column of row `k` (as put_kinematic writes it: -0
+  !> as +0).
+  pure subroutine put_kin_value(table, k, j, slots, value)
+    !> The step table.
+    type(step_table_t), intent(inout) :: table
+    !> Row.
+    integer, intent(in) :: k
+    !> Values put so far in the row.
+    integer, intent(inout) :: j
+    !> Column of every value.
+    integer, intent(in) :: slots(:)
+    !> The value.
+    real(wp), intent(in) :: value
+    j = j + 1
+    if (slots(j) > 0) table%rows(slots(j), k) = value + 0.0_wp
+  end subroutine put_kin_value
+
+  !> The column of put_kinematics' next value: the last column named prefix//suffix (as
+  !> put_kinematic finds it), 0 when it is not a kinematics or link-axes column.
+  pure subroutine find_kin_slot(table, j, slots, prefix, suffix)
+    !> The step table.
+    type(step_table_t), intent(in) :: table
+    !> Values put so far in the row.
+    integer, intent(inout) :: j
+    !> Column of every value.
+    integer, intent(inout) :: slots(:)
+    !> The two parts of the column's name.
+    character(*), intent(in) :: prefix, suffix
+    integer :: c
+    j = j + 1
+    slots(j) = 0
+    do c = size(table%columns), 1, -1
+      if (len(table%columns(c)%name) /= len(prefix) + len(suffix)) cycle
+      if (table%columns(c)%name == prefix//suffix) then
+        if (table%columns(c)%kinematic .or. table%columns(c)%link_axes) slots(j) = c
+        return
+      end if
+    end do
+  end subroutine find_kin_slot
+
+  !> Number of values put_kinematics puts in a row.
+  pure integer function kinematics_value_count(deck)
+    !> Validated deck.
+    type(assur_deck_t), intent(in) :: deck
+    integer :: np, nl
+    np = size(deck%pair_name)
+    nl = 2 * size(deck%mech%dyads) + 1
+    kinematics_value_count = 2 * np + 2 * nl + 3 * nl + 2 * nl + 2 * np + 2 * np
+  end function kinematics_value_count
 
   !> Internal index of the link the reported force of result pair `ip` acts on: link a for a
   !> dyad's pair 1 and its inner pair (link b with inner_on = link3), link b for pair 3, the

@@ -22,7 +22,7 @@ module kinetostat_lapack
   use kinetostat_error, only: error_t, fatal_error, exit_geometry
   implicit none
   private
-  public :: solve_dense, rcond_threshold, singular_by_estimate, solve_by_dgesv, solve_by_port
+  public :: solve_dense, rcond_threshold, singular_by_estimate, solve_by_dgesv, solve_by_port, inverse_norm_bound
 
   !> Margin of the cheap test: dgecon is skipped only when the bound puts rcond at least this
   !> many times above the threshold.
@@ -30,6 +30,10 @@ module kinetostat_lapack
 
   !> Reciprocal condition number below which a system counts as singular (dead position).
   real(wp), parameter :: rcond_threshold = 1.0e-12_wp
+
+  !> Orders up to this are factored in fixed local arrays (the generic engine's 6 x 6 and
+  !> 3 x 3, the cam's 3 x 3); larger ones allocate their workspace.
+  integer, parameter :: small_order = 8
 
   ! LAPACK's Fortran 77 interfaces take assumed-size arrays.
   ! allow(assumed-size)
@@ -71,10 +75,38 @@ contains
     type(error_t), allocatable, intent(out) :: error
     !> Reciprocal condition number estimate (1-norm, dgecon's), if wanted (then always computed).
     real(wp), intent(out), optional :: rcond
-    real(wp) :: lu(size(a, 1), size(a, 1))
-    real(wp) :: anorm, rc
-    integer :: ipiv(size(a, 1)), info
-    logical :: settled
+    ! the workspace of the orders solved per step lives in fixed arrays (no heap per call)
+    real(wp), target :: lu_small(small_order, small_order)
+    integer, target :: ipiv_small(small_order)
+    real(wp), allocatable, target :: lu_big(:, :)
+    integer, allocatable, target :: ipiv_big(:)
+    real(wp), pointer :: lu(:, :)
+    integer, pointer :: ipiv(:)
+    integer :: n
+    n = size(a, 1)
+    if (n <= small_order) then
+      lu => lu_small(1:n, 1:n)
+      ipiv => ipiv_small(1:n)
+    else
+      allocate (lu_big(n, n), ipiv_big(n))
+      lu => lu_big
+      ipiv => ipiv_big
+    end if
+    call solve_in(a, b, x, lu, ipiv, error, rcond)
+  end subroutine solve_dense
+
+  !> solve_dense with its workspace: the factors `lu` (n x n) and pivots `ipiv`.
+  pure subroutine solve_in(a, b, x, lu, ipiv, error, rcond)
+    real(wp), intent(in) :: a(:, :)
+    real(wp), intent(in) :: b(:)
+    real(wp), intent(out) :: x(:)
+    real(wp), intent(out) :: lu(:, :)
+    integer, intent(out) :: ipiv(:)
+    type(error_t), allocatable, intent(out) :: error
+    real(wp), intent(out), optional :: rcond
+    real(wp) :: anorm, rc, bound
+    integer :: info
+    logical :: settled, finite
 
     x = 0.0_wp
     if (present(rcond)) rcond = 0.0_wp
@@ -86,7 +118,10 @@ contains
       return
     end if
     settled = .false.
-    if (.not. present(rcond)) settled = 1.0_wp / (anorm * inverse_norm_bound(lu)) >= screen_factor * rcond_threshold
+    if (.not. present(rcond)) then
+      call inverse_norm_bound(lu, bound, finite)
+      if (finite) settled = 1.0_wp / (anorm * bound) >= screen_factor * rcond_threshold
+    end if
     if (.not. settled) then
       call estimate_rcond(lu, anorm, rc, info)
       if (present(rcond)) rcond = rc
@@ -97,7 +132,7 @@ contains
     end if
     x = b
     call lu_solve(lu, ipiv, x)
-  end subroutine solve_dense
+  end subroutine solve_in
 
   !> dgetrf2's LU factorisation with partial pivoting of the square `a`: L (unit diagonal)
   !> below and U on and above the diagonal; `info` > 0: U(info, info) is exactly zero. The
@@ -272,52 +307,61 @@ contains
     if (info == 0) call lu_solve(lu, ipiv, x)
   end subroutine solve_by_port
 
-  !> dgecon's reciprocal condition estimate (1-norm) from the LU factors.
+  !> dgecon's reciprocal condition estimate (1-norm) from the LU factors (`lu` may be a
+  !> section of a larger array: dgecon gets a contiguous copy).
   pure subroutine estimate_rcond(lu, anorm, rc, info)
     real(wp), intent(in) :: lu(:, :)
     real(wp), intent(in) :: anorm
     real(wp), intent(out) :: rc
     integer, intent(out) :: info
-    real(wp) :: work(4 * size(lu, 1))
+    real(wp) :: work(4 * size(lu, 1)), factors(size(lu, 1), size(lu, 1))
     integer :: iwork(size(lu, 1)), n
     n = size(lu, 1)
-    call dgecon('1', n, lu, n, anorm, rc, work, iwork, info)
+    factors = lu
+    call dgecon('1', n, factors, n, anorm, rc, work, iwork, info)
   end subroutine estimate_rcond
 
   !> An upper bound of ||(L U)^-1||_1 from dgetrf's factors in `lu` (unit lower L below the
   !> diagonal, U on and above it): ||U^-1||_1 * ||L^-1||_1, each bounded through its
-  !> comparison matrix M (|diagonal|, -|off-diagonal|): |T^-1| <= M(T)^-1 entrywise for a
-  !> triangular T, and the column sums of M(T)^-1 >= 0 are the solution y of M(T)^T y = e,
-  !> a sum of positive terms (no cancellation: its roundoff is a few ulps): n^2 flops and n
-  !> divisions instead of the explicit inverses' n^3/3 and n(n+1)/2. (A non-finite bound
-  !> settles nothing: the caller then asks dgecon.)
-  pure real(wp) function inverse_norm_bound(lu)
+  !> comparison matrix M(T) (|diagonal|, -|off-diagonal|): |T^-1| <= M(T)^-1 entrywise for a
+  !> triangular T. M(U) = (I - N) D with D = |diag U| and N >= 0 strictly upper, whose
+  !> column j is U's off-diagonal column j in magnitude over |u_jj|, of 1-norm c_j; a unit
+  !> triangular I - N is the product of the elementary I - n_j e_j^T (cross terms vanish in
+  !> the right order), whose inverses I + n_j e_j^T have 1-norm 1 + c_j. Hence
+  !> ||U^-1||_1 <= prod(1 + c_j) / min|u_jj|, and ||L^-1||_1 <= prod(1 + l_j) with l_j the
+  !> 1-norm of L's column j below the diagonal: column sums and n independent divisions
+  !> (no chain of dependent divisions as in solving with M(U)). Looser than that solve; a
+  !> loose bound only leaves more systems to dgecon.
+  pure subroutine inverse_norm_bound(lu, bound, finite)
+    !> The factors.
     real(wp), intent(in) :: lu(:, :)
-    real(wp) :: y(size(lu, 1)), norm_l, norm_u, s
+    !> The bound.
+    real(wp), intent(out) :: bound
+    !> False when the bound is not a finite positive number (it then settles nothing).
+    logical, intent(out) :: finite
+    real(wp) :: col_u, col_l, d_min, prod_u, prod_l
     integer :: n, i, j
     n = size(lu, 1)
-    ! U: y_j = (1 + sum_{i<j} |u_ij| y_i) / |u_jj|
-    norm_u = 0.0_wp
+    prod_u = 1.0_wp
+    prod_l = 1.0_wp
+    d_min = huge(1.0_wp)
     do j = 1, n
-      s = 1.0_wp
+      col_u = 0.0_wp
       do i = 1, j - 1
-        s = s + abs(lu(i, j)) * y(i)
+        col_u = col_u + abs(lu(i, j))
       end do
-      y(j) = s / abs(lu(j, j))
-      norm_u = max(norm_u, y(j))
-    end do
-    ! L (unit diagonal): y_j = 1 + sum_{i>j} |l_ij| y_i, from the last row up
-    norm_l = 0.0_wp
-    do j = n, 1, -1
-      s = 1.0_wp
+      col_l = 0.0_wp
       do i = j + 1, n
-        s = s + abs(lu(i, j)) * y(i)
+        col_l = col_l + abs(lu(i, j))
       end do
-      y(j) = s
-      norm_l = max(norm_l, s)
+      prod_u = prod_u * (1.0_wp + col_u / abs(lu(j, j)))
+      prod_l = prod_l * (1.0_wp + col_l)
+      d_min = min(d_min, abs(lu(j, j)))
     end do
-    inverse_norm_bound = norm_u * norm_l
-  end function inverse_norm_bound
+    bound = prod_u * prod_l / d_min
+    ! (NaN or infinity anywhere: no bound)
+    finite = bound <= huge(1.0_wp) .and. d_min > 0.0_wp
+  end subroutine inverse_norm_bound
 
   !> The singular-position test as it was before the cheap bound: dgesv's zero pivot, or
   !> dgecon's estimate below rcond_threshold (the reference of the tests).

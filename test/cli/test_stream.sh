@@ -48,4 +48,38 @@ for format in csv table; do
     pass
   fi
 done
+# the INPUT DATA echo of 2*10^5 different omega3 values (tools/scale-decks --distinct, five
+# to a line): table and JSON heads of ~3-5 MB written a chunk at a time through the spool;
+# -o and stdout the same, every value echoed once and in order
+tools/scale-decks 200000 "$stream_tmp" --distinct
+for format in table json; do
+  TMPDIR="$stream_tmp/tmpdir" "$KINETOSTAT" "$stream_tmp/pr3050_lines.nml" --format $format \
+    -o "$stream_tmp/out/lines.$format" 2>"$stream_tmp/err"; rc1=$?
+  TMPDIR="$stream_tmp/tmpdir" "$KINETOSTAT" "$stream_tmp/pr3050_lines.nml" --format $format \
+    >"$stream_tmp/lines.stdout.$format" 2>>"$stream_tmp/err"; rc2=$?
+  if [ "$format" = table ]; then
+    # the OMEGA3 echo: 40000 lines of five values, the first 3.000000E-01, the last 4.999990E-01
+    echoed=$(awk '/OMEGA3\(200000\)/{on=1; next} on && /^      /{n++; last=$NF; if (n==1) first=$1; next} on{exit}
+      END{print n, first, last}' "$stream_tmp/out/lines.table")
+    expected="40000 3.000000E-01 4.999990E-01"
+  else
+    echoed=$(grep -o '"name": "OMEGA3", "value": \[[^]]*\]' "$stream_tmp/out/lines.json" | sed 's/.*\[//' |
+      tr ',' '\n' | wc -l)
+    expected=200000
+  fi
+  if [ "$rc1" -ne 0 ] || [ "$rc2" -ne 0 ]; then
+    fail "stream-echo-$format" "exit codes $rc1 (-o) and $rc2 (stdout); stderr: $(head -c 300 "$stream_tmp/err")"
+  elif ! cmp -s "$stream_tmp/out/lines.$format" "$stream_tmp/lines.stdout.$format"; then
+    fail "stream-echo-$format" "-o and stdout differ: $(cmp "$stream_tmp/out/lines.$format" "$stream_tmp/lines.stdout.$format")"
+  elif [ "$echoed" != "$expected" ]; then
+    fail "stream-echo-$format" "echo of OMEGA3: expected $expected, got $echoed"
+  else
+    pass
+  fi
+done
+# every deck tools/scale-decks writes runs (the decks of the benchmark and of docs/performance.md)
+tools/scale-decks 20 "$stream_tmp" --distinct
+for deck in pr3207 pr3050 sixbar assur cam pr3050_distinct pr3050_lines; do
+  expect_exit "scale-decks-$deck" 0 "$stream_tmp/$deck.nml" --format summary
+done
 rm -rf "$stream_tmp"
