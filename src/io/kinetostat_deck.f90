@@ -359,27 +359,32 @@ contains
     integer, intent(in) :: fixed
     !> Widths tried one by one (beyond: powers of two).
     integer, parameter :: tried = 4096
-    integer(int64) :: cost, best, line_count(tried)
+    !> Lines of each length up to `tried` (the lines of length 0 counted with 1).
+    integer(int64) :: line_count(tried)
+    integer(int64) :: cost, best, up_to
+    integer, allocatable :: long_lines(:)
     integer :: longest, candidate, k, least, l
     width = huge(1)
     if (size(lengths) == 0) return
     longest = max(1, maxval(lengths))
     best = int(size(lengths), int64) * longest
     least = max(32, fixed)
-    ! how many lines of each length up to `tried`
     line_count = 0
     do k = 1, size(lengths)
-      if (lengths(k) >= 1 .and. lengths(k) <= tried) line_count(lengths(k)) = line_count(lengths(k)) + 1
+      l = max(lengths(k), 1)
+      if (l <= tried) line_count(l) = line_count(l) + 1
     end do
+    long_lines = pack(lengths, lengths > tried)
     candidate = least
     do while (candidate < longest)
       ! lines no longer than the candidate: one record; longer: several
-      cost = int(count(lengths <= candidate), int64)
+      up_to = sum(line_count(1:min(candidate, tried)))
+      cost = up_to + count(long_lines <= candidate)
       do l = candidate + 1, tried
         cost = cost + line_count(l) * ((l + candidate - 25) / (candidate - 24))
       end do
-      do k = 1, size(lengths)
-        if (lengths(k) > tried .and. lengths(k) > candidate) cost = cost + (lengths(k) + candidate - 25) / (candidate - 24)
+      do k = 1, size(long_lines)
+        if (long_lines(k) > candidate) cost = cost + (long_lines(k) + candidate - 25) / (candidate - 24)
       end do
       cost = cost * candidate
       if (cost < best) then
