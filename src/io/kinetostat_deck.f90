@@ -13,7 +13,7 @@ module kinetostat_deck
   private
   public :: deck_context_t, unset_real, unset_bits, max_deck_array, max_steps
   public :: deck_source_t, load_deck, deck_source_from_text, stdin_deck_path, stdin_deck_name
-  public :: deck_line_count, deck_line, deck_line_length
+  public :: deck_line_count, deck_line, deck_line_length, release_deck_text
   public :: read_group_name, namelist_failure, deck_error, namelist_probe_t, require_all_set
   public :: is_set, require_set, require_positive, require_nonnegative, require_rule
   public :: is_whole_in, require_whole
@@ -528,6 +528,16 @@ contains
     n = n + 1
     lengths(n) = length
   end subroutine append_length
+
+  !> Free the deck's text once it is read (its path stays, for messages): a deck giving
+  !> 10^6 values on its lines holds ~10 MB of text that a run needs no more.
+  pure subroutine release_deck_text(source)
+    !> The deck.
+    type(deck_source_t), intent(inout) :: source
+    if (allocated(source%records)) deallocate (source%records)
+    if (allocated(source%first_record)) deallocate (source%first_record)
+    if (allocated(source%record_length)) deallocate (source%record_length)
+  end subroutine release_deck_text
 
   !> Number of lines of the deck.
   pure integer function deck_line_count(source)

@@ -7,7 +7,7 @@ module kinetostat_run
   use kinetostat_error, only: error_t, fatal_error, exit_geometry, exit_input
   use kinetostat_text, only: int_str
   use kinetostat_step_table, only: step_table_t, echo_cursor_t, echo_real_kind, echo_array_kind
-  use kinetostat_deck, only: deck_source_t
+  use kinetostat_deck, only: deck_source_t, release_deck_text
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_csv_writer, only: write_csv
@@ -112,8 +112,8 @@ contains
     class(mechanism_t), intent(inout) :: mech
     !> Namelist group name (mechanism kind).
     character(*), intent(in) :: group
-    !> The deck, read into memory.
-    type(deck_source_t), intent(in) :: source
+    !> The deck, read into memory; its text is released once read (the path stays).
+    type(deck_source_t), intent(inout) :: source
     !> Format and language.
     type(run_options_t), intent(in) :: options
     !> The results.
@@ -134,6 +134,7 @@ contains
 
     call mech%read_deck(source, error)
     if (allocated(error)) return
+    call release_deck_text(source)
     table%mechanism = group
     table%deck = source%path
     table%row_name = "step"
