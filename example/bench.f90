@@ -10,8 +10,13 @@
 !> (VmHWM of /proc/self/status after resetting it through /proc/self/clear_refs), and every
 !> rate as a fraction of the physical-limit estimate of one dedicated step on one core.
 !> Rates are steps per second of processor time (the machine may be shared: wall time would
-!> measure the other processes too). Run from the project root (it reads data/*.nml).
+!> measure the other processes too), with one thread as the program runs by default. Then,
+!> with OpenMP and more than one processor, the parallel steps: wall time of the end-to-end
+!> CSV and table runs at the largest step count with one thread and with every processor,
+!> the speed-up, and what Amdahl's law makes of it for 4 and 8 cores and for any number.
+!> Run from the project root (it reads data/*.nml).
 program bench
+  !$ use omp_lib, only: omp_set_num_threads, omp_get_num_procs
   use, intrinsic :: iso_fortran_env, only: int64, output_unit
   use, intrinsic :: iso_c_binding, only: c_int, c_size_t
   use kinetostat_kinds, only: wp
@@ -87,6 +92,8 @@ program bench
   if (.not. any_kind) wanted = .true.
   out_path = "/tmp/kinetostat-bench.out"
 
+  ! one thread, as `kinetostat` runs without OMP_NUM_THREADS
+  !$ call omp_set_num_threads(1)
   call bench_writer()
   write (output_unit, '(a,es8.1,a)') "kinetostat bench: physical-limit estimate ", limit_rate, &
     " steps/s (one dedicated step, one core)"
@@ -100,6 +107,7 @@ program bench
       call bench_one(cases(i), step_counts(j), out_path)
     end do
   end do
+  call bench_threads(out_path)
   open (newunit=i, file=out_path, status='old', iostat=j)
   if (j == 0) close (i, status='delete')
 
@@ -178,6 +186,57 @@ contains
     flush (output_unit)
   end subroutine bench_one
 
+  !> Parallel steps: for every wanted kind at the largest step count, the wall time of the
+  !> end-to-end CSV and table runs with one thread and with every processor (p), the
+  !> speed-up S = t1/tp, and Amdahl's law's projection from the serial fraction it implies,
+  !> f = (p/S - 1)/(p - 1): S(k) = 1/(f + (1 - f)/k) for k = 4 and 8 cores, 1/f for any.
+  subroutine bench_threads(path)
+    !> Output file of the end-to-end runs.
+    character(*), intent(in) :: path
+    character(*), parameter :: thread_fmt = '(a8,i9,a7,2f9.3,f8.2,f8.3,3f8.2)'
+    integer, parameter :: formats(2) = [format_csv, format_table]
+    character(len=5), parameter :: format_names(2) = [character(len=5) :: "csv", "table"]
+    character(len=:), allocatable :: text
+    real(wp) :: t1, tp, speedup, serial
+    integer :: processors, i, n, f
+    processors = 1
+    !$ processors = omp_get_num_procs()
+    if (processors < 2) then
+      write (output_unit, '(a)') "parallel steps: one processor (or a build without OpenMP): nothing to compare"
+      return
+    end if
+    n = min(max_steps, step_counts(size(step_counts)))
+    write (output_unit, '(a,i0,a)') "parallel steps, wall seconds with 1 and ", processors, &
+      " threads (the machine's processors; shared machines add the other jobs' time):"
+    write (output_unit, '(a)') "    kind    steps format  1 thread  threads speed-up serial  " // &
+      "Amdahl: 4 cores 8 cores    any"
+    do i = 1, size(cases)
+      if (.not. wanted(i)) cycle
+      text = scaled_deck(cases(i), n)
+      do f = 1, size(formats)
+        !$ call omp_set_num_threads(1)
+        t1 = end_to_end_seconds(cases(i), text, formats(f), path, wall=.true.)
+        !$ call omp_set_num_threads(processors)
+        tp = end_to_end_seconds(cases(i), text, formats(f), path, wall=.true.)
+        !$ call omp_set_num_threads(1)
+        speedup = t1 / tp
+        serial = min(1.0_wp, max(1.0e-3_wp, (processors / speedup - 1.0_wp) / (processors - 1)))
+        write (output_unit, thread_fmt) cases(i)%kind, n, format_names(f), t1, tp, speedup, serial, &
+          amdahl(serial, 4), amdahl(serial, 8), 1.0_wp / serial
+        flush (output_unit)
+      end do
+    end do
+  end subroutine bench_threads
+
+  !> Amdahl's law: the speed-up on `cores` cores of a run whose serial fraction is `serial`.
+  pure real(wp) function amdahl(serial, cores)
+    !> Serial fraction of the one-thread time, 0..1.
+    real(wp), intent(in) :: serial
+    !> Cores.
+    integer, intent(in) :: cores
+    amdahl = 1.0_wp / (serial + (1.0_wp - serial) / cores)
+  end function amdahl
+
   !> The bundled deck with its step count set to `n` (namelist: the last value given wins).
   function scaled_deck(c, n) result(text)
     type(bench_case_t), intent(in) :: c
@@ -252,12 +311,16 @@ contains
     solve_seconds = seconds_since(t0)
   end function solve_seconds
 
-  !> Seconds from the deck's text to the closed output file, as `kinetostat DECK -o FILE`.
-  real(wp) function end_to_end_seconds(c, text, format, path)
+  !> Seconds from the deck's text to the closed output file, as `kinetostat DECK -o FILE`:
+  !> processor seconds, or wall seconds with `wall`.
+  real(wp) function end_to_end_seconds(c, text, format, path, wall)
     type(bench_case_t), intent(in) :: c
     character(*), intent(in) :: text
     integer, intent(in) :: format
     character(*), intent(in) :: path
+    !> Wall-clock seconds instead of processor seconds.
+    logical, intent(in), optional :: wall
+    logical :: by_wall
     class(mechanism_t), allocatable :: mech
     character(len=:), allocatable :: group
     type(deck_source_t) :: source
@@ -268,7 +331,13 @@ contains
     type(error_t), allocatable :: error
     real(wp) :: t0
     options%format = format
-    t0 = clock()
+    by_wall = .false.
+    if (present(wall)) by_wall = wall
+    if (by_wall) then
+      t0 = wall_clock()
+    else
+      t0 = clock()
+    end if
     call deck_source_from_text(trim(c%deck), text, source)
     call read_group_name(source, group, error)
     if (allocated(error)) call fail(error)
@@ -278,8 +347,19 @@ contains
     if (allocated(error)) call fail(error)
     call spool%commit(out, error)
     if (allocated(error)) call fail(error)
-    end_to_end_seconds = seconds_since(t0)
+    if (by_wall) then
+      end_to_end_seconds = max(wall_clock() - t0, 1.0e-6_wp)
+    else
+      end_to_end_seconds = seconds_since(t0)
+    end if
   end function end_to_end_seconds
+
+  !> Wall-clock time, s (from an arbitrary origin).
+  real(wp) function wall_clock()
+    integer(int64) :: count, rate
+    call system_clock(count, rate)
+    wall_clock = real(count, wp) / real(rate, wp)
+  end function wall_clock
 
   subroutine fail(error)
     type(error_t), intent(in) :: error
