@@ -4,6 +4,7 @@
 !> the T.FTN worked example (manual section 2); toggle positions; prescribed crank speed law.
 module test_assur
   use kinetostat_kinds, only: wp, pi, deg_to_rad, rad_to_deg
+  use kinetostat_text, only: int_str
   use kinetostat_error, only: error_t, exit_geometry
   use kinetostat_vec2, only: perp, cross, unit_at, rotate, magnitude
   use kinetostat_assur_kinematics, only: link_state_t, dyad_pose_t, dyad_geometry_t, &
@@ -33,6 +34,7 @@ contains
     call test_sixbar_worked_example(t)
     call test_toggle(t)
     call test_parallel_groups(t)
+    call test_many_groups(t)
     call test_prescribed_speed_law(t)
     call test_window(t)
   end subroutine run_assur_tests
@@ -587,6 +589,64 @@ contains
                       "residual or power mismatch above 1e-12")
     end do
   end subroutine test_parallel_groups
+
+  ! ----------------------------------------------------------------------------------------
+  !> A mechanism of more dyads than assur_step keeps in fixed arrays (4): six sliders on the
+  !> crank, each on a guide of its own. Its first four groups' reactions are the same bits as
+  !> in the mechanism of those four alone (the later groups hang on the crank and the frame
+  !> only, and dyads are solved last to first), and one result reused over the steps (its
+  !> workspace kept, as the layout's threads do) gives the same bits as a fresh one per step,
+  !> also when it goes from 5 to 6 dyads and back.
+  subroutine test_many_groups(t)
+    type(test_counts_t), intent(inout) :: t
+    real(wp), parameter :: z2(2) = 0.0_wp
+    real(wp), parameter :: guides(6) = [0.0_wp, 90.0_wp, 45.0_wp, 135.0_wp, 30.0_wp, 150.0_wp]
+    type(assur_dyad_t) :: groups(6)
+    type(assur_mech_t) :: four, many(5:6)
+    type(assur_step_t) :: s4, reused, fresh
+    type(error_t), allocatable :: e4, er, ef
+    real(wp) :: phi
+    integer :: k, g, nd, bad_four, bad_reuse
+    do g = 1, 6
+      groups(g) = dyad(kind_rrp, [1, 0], reshape([0.1_wp, 0.0_wp, 0.0_wp, 0.0_wp], [2, 2]), [0.0_wp, guides(g)], &
+                       0.4_wp, 0.0_wp, 0.0_wp, 1, z2, 0.0_wp)
+    end do
+    four = make_mech(groups(1:4))
+    do nd = 5, 6
+      many(nd) = make_mech(groups(1:nd))
+      do g = 2, 2 * nd + 1
+        many(nd)%links(g) = assur_link_t(id=g, m=1.0_wp + 0.1_wp * g, j=0.01_wp * g, s=[0.05_wp * mod(g, 3), 0.01_wp])
+      end do
+      many(nd)%g = 9.81_wp
+    end do
+    four%links(2:9) = many(5)%links(2:9)
+    four%g = 9.81_wp
+    bad_four = 0
+    bad_reuse = 0
+    do k = 0, 23
+      phi = (10.0_wp + 15.0_wp * k) * deg_to_rad
+      nd = 5 + mod(k / 4, 2)
+      call assur_step(four, phi, 30.0_wp, 5.0_wp, [real(wp) ::], [real(wp) ::], s4, e4)
+      call assur_step(many(nd), phi, 30.0_wp, 5.0_wp, [real(wp) ::], [real(wp) ::], reused, er)
+      fresh = assur_step_t()
+      call assur_step(many(nd), phi, 30.0_wp, 5.0_wp, [real(wp) ::], [real(wp) ::], fresh, ef)
+      if (allocated(e4) .or. allocated(er) .or. allocated(ef)) then
+        call check_true(t, "many groups solvable at step "//int_str(k), .false., "geometry error")
+        cycle
+      end if
+      ! pairs 1..12 are the four groups' (3 each)
+      if (any(transfer(s4%f(:, 1:12), 0_i8, 24) /= transfer(reused%f(:, 1:12), 0_i8, 24))) bad_four = bad_four + 1
+      if (any(transfer(reused%f, 0_i8, size(reused%f)) /= transfer(fresh%f, 0_i8, size(fresh%f))) .or. &
+          reused%m1 /= fresh%m1 .or. reused%m1_power /= fresh%m1_power .or. &
+          reused%residual /= fresh%residual .or. reused%mismatch /= fresh%mismatch) bad_reuse = bad_reuse + 1
+    end do
+    call check_true(t, "more than 4 dyads: the first four groups as in the 4-dyad mechanism (bits, 24 steps)", &
+                    bad_four == 0, int_str(bad_four)//" steps differ")
+    call check_true(t, "more than 4 dyads: a reused result as a fresh one (bits, 24 steps, 5 and 6 dyads)", &
+                    bad_reuse == 0, int_str(bad_reuse)//" steps differ")
+    call check_true(t, "more than 4 dyads: the self-check of the last step", &
+                    reused%residual <= 1.0e-12_wp .and. reused%mismatch <= 1.0e-12_wp, "residual or mismatch above 1e-12")
+  end subroutine test_many_groups
 
   ! ----------------------------------------------------------------------------------------
   !> Prescribed omega(k), eps(k): a crank with J about its pivot and massless, unloaded dyad

@@ -131,6 +131,14 @@ module kinetostat_assur
     real(wp) :: stroke_v = 0.0_wp
     !> Stroke acceleration, m/s^2.
     real(wp) :: stroke_a = 0.0_wp
+    !> Workspace of a mechanism of more than small_dyads dyads, kept between the steps a
+    !> caller solves into this result (no heap per step): the links' frames (0..2*nd+1),
+    !> the dyads' poses (nd) and the links' loads (0..2*nd+1).
+    type(link_state_t), allocatable :: work_states(:)
+    !> See work_states.
+    type(dyad_pose_t), allocatable :: work_poses(:)
+    !> See work_states.
+    type(link_balance_t), allocatable :: work_known(:)
   end type assur_step_t
 
 contains
@@ -256,14 +264,30 @@ contains
     integer :: nd
 
     nd = size(mech%dyads)
+    if (nd > small_dyads) then
+      call move_alloc(step%work_states, states_big)
+      call move_alloc(step%work_poses, poses_big)
+      call move_alloc(step%work_known, known_big)
+    end if
     call reset_step(step, 3 * nd + 1)
     if (nd <= small_dyads) then
       call step_in(mech, phi1, omega1, eps1, f_mag, m_mag, step, states_small(0:2 * nd + 1), poses_small(1:nd), &
                    known_small(0:2 * nd + 1), error, extra, extra_power, extra_scale, balances)
     else
-      allocate (states_big(0:2 * nd + 1), poses_big(nd), known_big(0:2 * nd + 1))
+      ! the workspace of the previous step solved into `step` (allocated once for a mechanism),
+      ! set to the defaults of fresh arrays
+      if (allocated(states_big)) then
+        if (size(states_big) /= 2 * nd + 2 .or. size(poses_big) /= nd) deallocate (states_big, poses_big, known_big)
+      end if
+      if (.not. allocated(states_big)) allocate (states_big(0:2 * nd + 1), poses_big(nd), known_big(0:2 * nd + 1))
+      states_big = link_state_t()
+      poses_big = dyad_pose_t()
+      known_big = link_balance_t()
       call step_in(mech, phi1, omega1, eps1, f_mag, m_mag, step, states_big, poses_big, known_big, error, extra, &
                    extra_power, extra_scale, balances)
+      call move_alloc(states_big, step%work_states)
+      call move_alloc(poses_big, step%work_poses)
+      call move_alloc(known_big, step%work_known)
     end if
   end subroutine assur_step
 
