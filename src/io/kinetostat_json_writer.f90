@@ -4,7 +4,7 @@ module kinetostat_json_writer
   use kinetostat_kinds, only: version_string
   use kinetostat_selfcheck, only: selfcheck_tolerance
   use kinetostat_kinds, only: wp
-  use kinetostat_step_table, only: step_table_t, echo_record_t, echo_cursor_t, echo_chunk_values, column_kind_names, &
+  use kinetostat_step_table, only: step_table_t, echo_record_t, echo_cursor_t, column_kind_names, &
     col_component, echo_real_kind, echo_int_kind, echo_logical_kind, echo_array_kind, echo_text_kind, echo_heading_kind
   use kinetostat_format, only: full_number, put_cell, cell_room
   use kinetostat_text_buffer, only: text_buffer_t
@@ -186,7 +186,7 @@ contains
     character(len=:), allocatable :: text
     character(len=24) :: buf
     real(wp), allocatable :: v(:)
-    integer :: i, n, first, last, chunk
+    integer :: i, n, first, last
     select case (e%kind)
     case (echo_real_kind)
       text = '{"name": '//json_string(e%name)//', "value": '//full_number(e%values(1))// &
@@ -201,14 +201,7 @@ contains
       n = e%value_count()
       first = 1
       last = n
-      if (present(cursor)) then
-        chunk = cursor%chunk
-        if (chunk <= 0) chunk = echo_chunk_values
-        first = cursor%value + 1
-        last = min(n, cursor%value + chunk)
-        cursor%value = 0
-        if (last < n) cursor%value = last
-      end if
+      if (present(cursor)) call cursor%take(n, 1, first, last)
       if (first == 1) call out%append('{"name": '//json_string(e%name)//', "value": [')
       allocate (v(max(0, last - first + 1)))
       if (last >= first) call e%get_values(first, last, v)

@@ -9,7 +9,6 @@ module kinetostat_step_table
   implicit none
   private
   public :: step_table_t, column_t, echo_record_t, echo_cursor_t, remark_t, column_tally_t, edge_point_t, step_span
-  public :: echo_chunk_values
   public :: col_input_angle, col_force, col_force_angle, col_component, col_moment, col_length, &
     col_flag, col_count, col_ratio, col_other, column_kind_names
   public :: echo_real_kind, echo_int_kind, echo_logical_kind, echo_array_kind, echo_text_kind, &
@@ -126,6 +125,8 @@ module kinetostat_step_table
     integer :: chunk = 0
     !> True when the whole head is written.
     logical :: done = .false.
+  contains
+    procedure :: take
   end type echo_cursor_t
 
   !> What a run has shown so far of one column (its rows are gone once written: a run is
@@ -668,6 +669,27 @@ contains
     self%echo_count = self%echo_count + 1
     self%echo(self%echo_count) = record
   end subroutine push_echo
+
+  !> The next chunk of an echoed array of `n` values: values first .. last, a multiple of
+  !> `whole` values long (a writer's values per line) unless it is the last; the cursor is
+  !> left at `last` when values remain, at 0 when the array is done.
+  pure subroutine take(self, n, whole, first, last)
+    class(echo_cursor_t), intent(inout) :: self
+    !> Values of the array.
+    integer, intent(in) :: n
+    !> The chunk is a multiple of this many values.
+    integer, intent(in) :: whole
+    !> First and last value of the chunk.
+    integer, intent(out) :: first, last
+    integer :: chunk
+    chunk = self%chunk
+    if (chunk <= 0) chunk = echo_chunk_values
+    chunk = max(1, chunk / whole) * whole
+    first = self%value + 1
+    last = min(n, self%value + chunk)
+    self%value = 0
+    if (last < n) self%value = last
+  end subroutine take
 
   !> Move a record's contents to `to` (its arrays change owner, nothing is copied).
   pure subroutine move_record(from, to)

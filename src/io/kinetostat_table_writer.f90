@@ -4,7 +4,7 @@
 module kinetostat_table_writer
   use kinetostat_kinds, only: wp
   use kinetostat_selfcheck, only: selfcheck_tolerance
-  use kinetostat_step_table, only: step_table_t, echo_record_t, echo_cursor_t, echo_chunk_values, echo_real_kind, &
+  use kinetostat_step_table, only: step_table_t, echo_record_t, echo_cursor_t, echo_real_kind, &
     echo_int_kind, echo_logical_kind, echo_array_kind, echo_text_kind, echo_heading_kind, echo_line_kind, col_force
   use kinetostat_format, only: echo_number, echo_array_number, footer_number, limit_number, pad_right, put_fixed, &
     fixed_field
@@ -188,7 +188,7 @@ contains
     type(echo_cursor_t), intent(inout), optional :: cursor
     character(len=18) :: whole
     character(len=:), allocatable :: mark
-    integer :: n, first, last, chunk
+    integer :: n, first, last
     mark = ""
     if (e%overridden) mark = override_mark
     select case (e%kind)
@@ -206,16 +206,8 @@ contains
       n = e%value_count()
       first = 1
       last = n
-      if (present(cursor)) then
-        ! whole lines per chunk
-        chunk = cursor%chunk
-        if (chunk <= 0) chunk = echo_chunk_values
-        chunk = max(1, chunk / echo_array_per_line) * echo_array_per_line
-        first = cursor%value + 1
-        last = min(n, cursor%value + chunk)
-        cursor%value = 0
-        if (last < n) cursor%value = last
-      end if
+      ! whole lines per chunk
+      if (present(cursor)) call cursor%take(n, echo_array_per_line, first, last)
       if (first == 1) then
         write (whole, '(i0)') n
         call out%put(name_part(e%name//"("//trim(whole)//")")//"  "//label(e%unit, lang)//mark)
