@@ -11,7 +11,6 @@ module kinetostat_run
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_csv_writer, only: write_csv
-  use kinetostat_table_writer, only: write_table
   use kinetostat_json_writer, only: write_json
   use kinetostat_svg_writer, only: write_svg
   use kinetostat_svg_mechanism, only: write_svg_mechanism

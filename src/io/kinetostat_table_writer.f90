@@ -16,7 +16,7 @@ module kinetostat_table_writer
   use kinetostat_row_blocks, only: put_row_blocks_two
   implicit none
   private
-  public :: write_table, write_table_head, write_table_rows, write_table_tail
+  public :: write_table_head, write_table_rows, write_table_tail
   public :: put_heading, selfcheck_verdict, put_two_line_step, value_line
 
   !> Display width of the name part of an INPUT DATA line ("   NAME ... =" puts "=" in column 20).
@@ -32,23 +32,6 @@ module kinetostat_table_writer
   integer, parameter :: echo_array_per_line = 5
 
 contains
-
-  !> The whole legacy table of a run whose rows are all in `table` (one block).
-  subroutine write_table(mech, table, lang, out)
-    !> The mechanism (its title and RESULTS layout).
-    class(mechanism_t), intent(in) :: mech
-    !> Finite results, tallied (kinetostat_summary's tally_rows).
-    type(step_table_t), intent(in) :: table
-    !> lang_en or lang_ru.
-    integer, intent(in) :: lang
-    !> Where the lines go.
-    type(text_buffer_t), intent(inout) :: out
-    type(text_buffer_t) :: later
-    call write_table_head(mech, table, lang, out)
-    call write_table_rows(mech, table, lang, out, later)
-    if (later%length > 0) call out%append(later%data(1:later%length))
-    call write_table_tail(table, lang, out)
-  end subroutine write_table
 
   !> The mechanism's RESULTS lines of the rows now in `table` (one block of the run): in
   !> parallel parts with more than one OpenMP thread (the same bytes as one thread).
