@@ -73,6 +73,9 @@ for format in table json; do
     fail "stream-echo-$format" "-o and stdout differ: $(cmp "$stream_tmp/out/lines.$format" "$stream_tmp/lines.stdout.$format")"
   elif [ "$echoed" != "$expected" ]; then
     fail "stream-echo-$format" "echo of OMEGA3: expected $expected, got $echoed"
+  elif [ "$format" = json ] && ! python3 -c 'import json, sys; json.load(open(sys.argv[1]))' \
+      "$stream_tmp/out/lines.json" 2>"$stream_tmp/json.err"; then
+    fail "stream-echo-$format" "not valid JSON: $(tail -1 "$stream_tmp/json.err")"
   else
     pass
   fi
