@@ -327,7 +327,8 @@ contains
     type(dyad_in_t) :: dyad(max_dyads)
     type(force_in_t) :: force(max_forces)
     type(moment_in_t) :: moment(max_moments)
-    type(schedule_in_t) :: sched
+    !> One force's or moment's schedule as read (then copied into the deck).
+    type(load_schedule_t) :: load
     character(len=512) :: msg
     type(deck_context_t) :: ctx
     type(namelist_probe_t) :: probe
@@ -521,16 +522,10 @@ contains
           if (fi%follow) fi%angle = fi%angle - ref(i)%th * rad_to_deg
         end if
         deck%mech%forces(k) = assur_force_t(link=i, at=fi%at, angle=fi%angle * deg_to_rad, follow=fi%follow)
-        if (is_set(fi%table(1))) then
-          call read_table(ctx, name, fi%table, fi%over, [fi%value, fi%idle, fi%phi_on, fi%phi_off, fi%column], &
-                          ids, deck, deck%force_load(k), error)
-        else
-          call require_rule(ctx, name//"over", .not. is_set(fi%over), "only used with table", error)
-          if (allocated(error)) return
-          sched = schedule_in_t(value=fi%value, idle=fi%idle, phi_on=fi%phi_on, phi_off=fi%phi_off, column=fi%column)
-          call read_schedule(ctx, name, sched, deck%n, n_values, deck%force_load(k), error)
-        end if
+        call read_load(ctx, name, fi%table, fi%over, schedule_in_t(value=fi%value, idle=fi%idle, phi_on=fi%phi_on, &
+                       phi_off=fi%phi_off, column=fi%column), ids, deck, n_values, load, error)
         if (allocated(error)) return
+        deck%force_load(k) = load
       end associate
     end do
     do k = 1, nm
@@ -538,16 +533,10 @@ contains
       associate (mi => moment(k))
         call moving_link(ctx, name//"link", mi%link, ids, i, error); if (allocated(error)) return
         deck%mech%moment_link(k) = i
-        if (is_set(mi%table(1))) then
-          call read_table(ctx, name, mi%table, mi%over, [mi%value, mi%idle, mi%phi_on, mi%phi_off, mi%column], &
-                          ids, deck, deck%moment_load(k), error)
-        else
-          call require_rule(ctx, name//"over", .not. is_set(mi%over), "only used with table", error)
-          if (allocated(error)) return
-          sched = schedule_in_t(value=mi%value, idle=mi%idle, phi_on=mi%phi_on, phi_off=mi%phi_off, column=mi%column)
-          call read_schedule(ctx, name, sched, deck%n, n_values, deck%moment_load(k), error)
-        end if
+        call read_load(ctx, name, mi%table, mi%over, schedule_in_t(value=mi%value, idle=mi%idle, phi_on=mi%phi_on, &
+                       phi_off=mi%phi_off, column=mi%column), ids, deck, n_values, load, error)
         if (allocated(error)) return
+        deck%moment_load(k) = load
       end associate
     end do
 
@@ -1146,6 +1135,39 @@ contains
     fi%angle = atan2(fi%fy, fi%fx) * rad_to_deg
     fi%value = hypot(fi%fx, fi%fy)
   end subroutine force_components
+
+  !> The schedule of force or moment `name`: a table over a link's position (read_table), or
+  !> a constant, window or step_values column (read_schedule; `over` only goes with a table).
+  subroutine read_load(ctx, name, table, over, sched, ids, deck, n_values, load, error)
+    type(deck_context_t), intent(in) :: ctx
+    !> Prefix, e.g. "force(1)%".
+    character(*), intent(in) :: name
+    !> The table as read.
+    real(wp), intent(in) :: table(:)
+    !> Link id of the table's abscissa, or unset.
+    real(wp), intent(in) :: over
+    !> value, idle, phi_on, phi_off, column as read.
+    type(schedule_in_t), intent(in) :: sched
+    !> Link ids by internal index.
+    integer, intent(in) :: ids(0:)
+    !> The deck (mechanism and crank angles).
+    type(assur_deck_t), intent(in) :: deck
+    !> Number of step_values given.
+    integer, intent(in) :: n_values
+    !> The load's schedule.
+    type(load_schedule_t), intent(out) :: load
+    type(error_t), allocatable, intent(out) :: error
+    type(schedule_in_t) :: s
+    if (is_set(table(1))) then
+      call read_table(ctx, name, table, over, [sched%value, sched%idle, sched%phi_on, sched%phi_off, sched%column], &
+                      ids, deck, load, error)
+    else
+      call require_rule(ctx, name//"over", .not. is_set(over), "only used with table", error)
+      if (allocated(error)) return
+      s = sched
+      call read_schedule(ctx, name, s, deck%n, n_values, load, error)
+    end if
+  end subroutine read_load
 
   !> Per-step values of a load given as a table of (position, value) pairs over the position
   !> of link `over` (default: the output link): its angle in deg, taken modulo 360 into
