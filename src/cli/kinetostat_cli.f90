@@ -8,7 +8,7 @@ module kinetostat_cli
   use kinetostat_deck, only: deck_source_t, load_deck, read_group_name
   use kinetostat_override, only: override_t, parse_override, apply_overrides
   use kinetostat_sweep, only: vary_t, parse_vary, run_sweep, variant_result_t
-  use kinetostat_posix, only: stderr_is_terminal, cpu_count
+  use kinetostat_posix, only: stderr_is_terminal, cpu_count, guard_signals
   use kinetostat_text, only: int_str
   use kinetostat_run, only: format_summary
   use kinetostat_step_table, only: step_table_t
@@ -153,6 +153,7 @@ contains
     ran = .false.
     committed = .false.
     warnings = 0
+    call guard_signals()
     call serial_unless_asked()
     call parse_args(args, error)
     if (.not. allocated(error) .and. allocated(args%diff_files) .and. .not. args%help) then

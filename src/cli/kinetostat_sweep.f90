@@ -21,8 +21,7 @@ module kinetostat_sweep
   use kinetostat_run, only: run_options_t, run_mechanism, format_summary
   use kinetostat_summary, only: summary_header, summary_row
   use kinetostat_registry, only: create_mechanism, known_kinds
-  use kinetostat_posix, only: fork_process, wait_process, exit_now, process_id
-  use kinetostat_output, only: remove_file
+  use kinetostat_posix, only: fork_process, wait_process, exit_now, temp_anonymous, write_fd, read_fd_at, close_fd
   !$ use omp_lib, only: omp_set_num_threads
   implicit none
   private
@@ -30,6 +29,8 @@ module kinetostat_sweep
 
   !> Largest number of variants a sweep may have.
   integer, parameter :: max_variants = 1000000
+  !> Width of a number in the block files of child processes (save_block, load_block).
+  integer, parameter :: field_width = 20
 
   !> One --vary: NAME from FROM to TO in COUNT equal steps (both ends included).
   type :: vary_t
@@ -244,7 +245,9 @@ contains
   end subroutine run_sweep
 
   !> The variants in `jobs` child processes, each a contiguous block, its results returned
-  !> through a temporary file. A block whose child could not be started or did not return
+  !> through an anonymous temporary file (made in $TMPDIR before the fork and unlinked at
+  !> once, so nothing is left whatever ends the processes; a fatal signal to this process
+  !> ends the children too). A block whose child could not be started or did not return
   !> its results is run here instead, so the results are always complete and in grid order.
   subroutine run_in_children(source, group, jobs, results)
     type(deck_source_t), intent(in) :: source
@@ -253,20 +256,22 @@ contains
     integer, intent(in) :: jobs
     !> One result per variant (overrides set), filled here.
     type(variant_result_t), intent(inout) :: results(:)
-    integer :: pids(jobs), j, lo, hi, v, owner, n
+    integer :: pids(jobs), files(jobs), j, lo, hi, v, n, err
     logical :: ok
     n = size(results)
-    owner = process_id()
     do j = 1, jobs
       lo = block_start(j)
       hi = block_start(j + 1) - 1
+      pids(j) = -1
+      files(j) = temp_anonymous()
+      if (files(j) < 0) cycle
       pids(j) = fork_process()
       if (pids(j) == 0) then
         !$ call omp_set_num_threads(1)
         do v = lo, hi
           call run_variant(source, group, results(v))
         end do
-        call save_block(block_file(owner, j), results(lo:hi), ok)
+        call save_block(files(j), results(lo:hi), ok)
         call exit_now(merge(0, 1, ok))
       end if
     end do
@@ -275,9 +280,9 @@ contains
       hi = block_start(j + 1) - 1
       ok = .false.
       if (pids(j) > 0) then
-        if (wait_process(pids(j)) == 0) call load_block(block_file(owner, j), results(lo:hi), ok)
+        if (wait_process(pids(j)) == 0) call load_block(files(j), results(lo:hi), ok)
       end if
-      call remove_file(block_file(owner, j))
+      if (files(j) >= 0) err = close_fd(files(j))
       if (ok) cycle
       do v = lo, hi
         call run_variant(source, group, results(v))
@@ -291,88 +296,104 @@ contains
     end function block_start
   end subroutine run_in_children
 
-  !> Temporary file of block `j` of the sweep run by process `owner`.
-  function block_file(owner, j) result(path)
-    integer, intent(in) :: owner, j
-    character(len=:), allocatable :: path
-    character(len=4096) :: dir
-    integer :: length, status
-    call get_environment_variable("TMPDIR", dir, length, status)
-    if (status /= 0 .or. length == 0) dir = "/tmp"
-    path = trim(dir)//"/kinetostat-sweep-"//int_str(owner)//"-"//int_str(j)
-  end function block_file
-
-  !> Write the results of a block (stream, unformatted: read back by load_block).
-  subroutine save_block(path, results, ok)
-    character(*), intent(in) :: path
+  !> Write the results of a block to descriptor `fd` (read back by load_block): per variant
+  !> "E" code, message or "R" header, row, warning count, warnings; each text after its
+  !> length (field_width digits).
+  subroutine save_block(fd, results, ok)
+    integer, intent(in) :: fd
     type(variant_result_t), intent(in) :: results(:)
     logical, intent(out) :: ok
-    integer :: u, ios, v
-    ok = .false.
-    open (newunit=u, file=path, access="stream", form="unformatted", status="replace", action="write", &
-      iostat=ios)
-    if (ios /= 0) return
+    type(text_buffer_t) :: buf
+    integer :: v
     do v = 1, size(results)
       associate (r => results(v))
         if (allocated(r%error)) then
-          write (u, iostat=ios) .true., r%error%code, len(r%error%message), r%error%message
+          call buf%append("E"//field(r%error%code)//field(len(r%error%message))//r%error%message)
         else
-          write (u, iostat=ios) .false., len(r%header), r%header, len(r%row), r%row, r%warning_count, &
-            r%warnings%length
-          if (ios == 0 .and. r%warnings%length > 0) write (u, iostat=ios) r%warnings%data(1:r%warnings%length)
+          call buf%append("R"//field(len(r%header))//r%header//field(len(r%row))//r%row// &
+            field(r%warning_count)//field(r%warnings%length))
+          if (r%warnings%length > 0) call buf%append(r%warnings%data(1:r%warnings%length))
         end if
       end associate
-      if (ios /= 0) exit
     end do
-    if (ios == 0) then
-      close (u, iostat=ios)
-    else
-      close (u)
-    end if
-    ok = ios == 0
+    ok = .true.
+    if (buf%length > 0) ok = write_fd(fd, buf%data(1:buf%length)) == 0
   end subroutine save_block
 
-  !> Read the results of a block written by save_block.
-  subroutine load_block(path, results, ok)
-    character(*), intent(in) :: path
+  !> A number as a field of save_block.
+  function field(n) result(text)
+    integer, intent(in) :: n
+    character(len=field_width) :: text
+    write (text, '(i20)') n
+  end function field
+
+  !> Read the results of a block written by save_block to descriptor `fd`.
+  subroutine load_block(fd, results, ok)
+    integer, intent(in) :: fd
     type(variant_result_t), intent(inout) :: results(:)
     logical, intent(out) :: ok
-    integer :: u, ios, v, length, code
-    logical :: failed
+    character(len=:), allocatable :: text, chunk
+    integer(int64) :: got, offset
+    integer :: v, p, length, code
     ok = .false.
-    open (newunit=u, file=path, access="stream", form="unformatted", status="old", action="read", iostat=ios)
-    if (ios /= 0) return
+    text = ""
+    offset = 0
+    allocate (character(len=65536) :: chunk)
+    do
+      got = read_fd_at(fd, chunk, offset)
+      if (got < 0) return
+      if (got == 0) exit
+      text = text//chunk(1:int(got))
+      offset = offset + got
+    end do
+    p = 1
     do v = 1, size(results)
       associate (r => results(v))
-        read (u, iostat=ios) failed
-        if (ios /= 0) exit
-        if (failed) then
-          read (u, iostat=ios) code, length
-          if (ios /= 0 .or. length < 0) exit
+        if (p > len(text)) return
+        if (text(p:p) == "E") then
+          p = p + 1
+          if (.not. (number(code) .and. number(length))) return
+          if (p + length - 1 > len(text)) return
           allocate (r%error)
           r%error%code = code
-          allocate (character(len=length) :: r%error%message)
-          read (u, iostat=ios) r%error%message
-        else
-          read (u, iostat=ios) length
-          if (ios /= 0 .or. length < 0) exit
-          allocate (character(len=length) :: r%header)
-          read (u, iostat=ios) r%header, length
-          if (ios /= 0 .or. length < 0) exit
-          allocate (character(len=length) :: r%row)
-          read (u, iostat=ios) r%row, r%warning_count, length
-          if (ios /= 0 .or. length < 0) exit
+          r%error%message = text(p:p + length - 1)
+          p = p + length
+        else if (text(p:p) == "R") then
+          p = p + 1
+          if (.not. number(length)) return
+          if (p + length - 1 > len(text)) return
+          r%header = text(p:p + length - 1)
+          p = p + length
+          if (.not. number(length)) return
+          if (p + length - 1 > len(text)) return
+          r%row = text(p:p + length - 1)
+          p = p + length
+          if (.not. (number(r%warning_count) .and. number(length))) return
+          if (p + length - 1 > len(text)) return
           if (length > 0) then
-            allocate (character(len=length) :: r%warnings%data)
-            read (u, iostat=ios) r%warnings%data
+            r%warnings%data = text(p:p + length - 1)
             r%warnings%length = length
           end if
+          p = p + length
+        else
+          return
         end if
       end associate
-      if (ios /= 0) exit
     end do
-    close (u)
-    ok = ios == 0
+    ok = p == len(text) + 1
+  contains
+    !> The next field as a number (false when malformed or past the end).
+    logical function number(n)
+      integer, intent(out) :: n
+      integer :: ios
+      number = .false.
+      n = 0
+      if (p + field_width - 1 > len(text)) return
+      read (text(p:p + field_width - 1), '(i20)', iostat=ios) n
+      if (ios /= 0 .or. n < 0) return
+      p = p + field_width
+      number = .true.
+    end function number
   end subroutine load_block
 
   !> The overrides of variant v: the --set ones, then one per --vary.

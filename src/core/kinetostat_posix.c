@@ -1,32 +1,439 @@
-/* The one POSIX call kinetostat needs that Fortran has no intrinsic for (as fpm's
- * filesystem_utilities.c): what kind of file a path names, so that `-o` onto a device or
- * a FIFO writes to it directly instead of renaming a temporary file over it. */
+/* The POSIX calls kinetostat needs that Fortran has no intrinsic for (as fpm's
+ * filesystem_utilities.c): checked writes to file descriptors, output files replaced
+ * atomically through temporaries that cannot be hijacked, temporaries and sweep children
+ * removed when a signal ends the process, child processes, the number of processors. */
+#define _GNU_SOURCE
+#include <errno.h>
+#include <fcntl.h>
+#include <limits.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/random.h>
 #include <sys/stat.h>
-
-/* 0: no such file; 1: regular file; 2: directory; 3: anything else (device, FIFO, socket). */
-int kinetostat_path_kind(const char *path) {
-  struct stat st;
-  if (stat(path, &st) != 0) return 0;
-  if (S_ISREG(st.st_mode)) return 1;
-  if (S_ISDIR(st.st_mode)) return 2;
-  return 3;
-}
-
-/* Parallel sweeps run blocks of variants in child processes (gfortran's run-time library
- * is not safe for concurrent internal I/O in threads, processes are). */
+#include <sys/statfs.h>
 #include <sys/types.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
-/* fork(2): 0 in the child, the child's id in the parent, -1 on failure. */
-int kinetostat_fork(void) { return (int) fork(); }
+#ifndef PROC_SUPER_MAGIC
+#define PROC_SUPER_MAGIC 0x9fa0
+#endif
+
+/* ---------------------------------------------------------------------------------------
+ * Registered temporaries and children: what a fatal signal must clean up. */
+
+#define KS_MAX_TEMPS 64
+#define KS_MAX_CHILDREN 4096
+#define KS_PATH 4096
+
+static char ks_temp_path[KS_MAX_TEMPS][KS_PATH];
+static volatile sig_atomic_t ks_temp_used[KS_MAX_TEMPS];
+static volatile sig_atomic_t ks_child[KS_MAX_CHILDREN];
+
+/* The signals that end the process and must clean up first. */
+static const int ks_fatal_signals[] = {SIGINT, SIGTERM, SIGHUP, SIGPIPE};
+#define KS_FATAL_COUNT ((int) (sizeof ks_fatal_signals / sizeof ks_fatal_signals[0]))
+
+/* Block the fatal signals while the registries change (restored by ks_unblock). */
+static void ks_block(sigset_t *old) {
+  sigset_t set;
+  sigemptyset(&set);
+  for (int i = 0; i < KS_FATAL_COUNT; i++) sigaddset(&set, ks_fatal_signals[i]);
+  sigprocmask(SIG_BLOCK, &set, old);
+}
+
+static void ks_unblock(const sigset_t *old) { sigprocmask(SIG_SETMASK, old, NULL); }
+
+/* Remove every registered temporary, kill and reap every registered child: only
+ * async-signal-safe calls (unlink, kill, waitpid). */
+static void ks_clean_up(void) {
+  for (int i = 0; i < KS_MAX_CHILDREN; i++) {
+    pid_t pid = (pid_t) ks_child[i];
+    if (pid > 0) kill(pid, SIGKILL);
+  }
+  for (int i = 0; i < KS_MAX_CHILDREN; i++) {
+    pid_t pid = (pid_t) ks_child[i];
+    if (pid > 0) {
+      while (waitpid(pid, NULL, 0) < 0 && errno == EINTR) {
+      }
+      ks_child[i] = 0;
+    }
+  }
+  for (int i = 0; i < KS_MAX_TEMPS; i++) {
+    if (ks_temp_used[i]) {
+      unlink(ks_temp_path[i]);
+      ks_temp_used[i] = 0;
+    }
+  }
+}
+
+/* A fatal signal: clean up, then die of the same signal with its default action (so the
+ * exit status is the conventional 128 + signal number). */
+static void ks_on_signal(int sig) {
+  int saved = errno;
+  sigset_t set;
+  ks_clean_up();
+  signal(sig, SIG_DFL);
+  sigemptyset(&set);
+  sigaddset(&set, sig);
+  sigprocmask(SIG_UNBLOCK, &set, NULL);
+  raise(sig);
+  errno = saved;
+}
+
+/* Install the clean-up handler for SIGINT, SIGTERM, SIGHUP and SIGPIPE, except where the
+ * signal is ignored already (nohup, a shell that ignores SIGPIPE: then a write to a closed
+ * pipe fails with EPIPE and is reported). SIGXFSZ is ignored, so that a file-size limit
+ * makes write(2) fail with EFBIG (reported, temporaries removed) instead of killing us. */
+void kinetostat_guard_signals(void) {
+  for (int i = 0; i < KS_FATAL_COUNT; i++) {
+    struct sigaction now, mine;
+    if (sigaction(ks_fatal_signals[i], NULL, &now) != 0) continue;
+    if (now.sa_handler == SIG_IGN) continue;
+    memset(&mine, 0, sizeof mine);
+    mine.sa_handler = ks_on_signal;
+    sigfillset(&mine.sa_mask);
+    sigaction(ks_fatal_signals[i], &mine, NULL);
+  }
+  signal(SIGXFSZ, SIG_IGN);
+}
+
+static int ks_register_temp(const char *path) {
+  for (int i = 0; i < KS_MAX_TEMPS; i++) {
+    if (!ks_temp_used[i]) {
+      strncpy(ks_temp_path[i], path, KS_PATH - 1);
+      ks_temp_path[i][KS_PATH - 1] = '\0';
+      ks_temp_used[i] = 1;
+      return 0;
+    }
+  }
+  return -1;
+}
+
+static void ks_forget_temp(const char *path) {
+  sigset_t old;
+  ks_block(&old);
+  for (int i = 0; i < KS_MAX_TEMPS; i++) {
+    if (ks_temp_used[i] && strcmp(ks_temp_path[i], path) == 0) {
+      ks_temp_used[i] = 0;
+      break;
+    }
+  }
+  ks_unblock(&old);
+}
+
+/* ---------------------------------------------------------------------------------------
+ * Temporaries: O_CREAT|O_EXCL|O_NOFOLLOW, mode 600, unpredictable names. */
+
+/* `count` random letters and digits (getrandom, else /dev/urandom); 0 on success. */
+static int ks_random_name(char *out, int count) {
+  static const char alphabet[] = "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789";
+  unsigned char bytes[64];
+  int got = 0;
+  if (count > (int) sizeof bytes) return -1;
+  while (got < count) {
+    ssize_t n = getrandom(bytes + got, (size_t) (count - got), 0);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      break;
+    }
+    got += (int) n;
+  }
+  if (got < count) {
+    int fd = open("/dev/urandom", O_RDONLY | O_CLOEXEC);
+    if (fd < 0) return -1;
+    while (got < count) {
+      ssize_t n = read(fd, bytes + got, (size_t) (count - got));
+      if (n <= 0) {
+        if (n < 0 && errno == EINTR) continue;
+        close(fd);
+        return -1;
+      }
+      got += (int) n;
+    }
+    close(fd);
+  }
+  for (int i = 0; i < count; i++) out[i] = alphabet[bytes[i] % (sizeof alphabet - 1)];
+  out[count] = '\0';
+  return 0;
+}
+
+/* Create a new temporary `prefix` + 12 random characters (O_EXCL|O_NOFOLLOW, mode 600),
+ * its name in `name` (capacity `cap`), registered for removal by a fatal signal. The file
+ * descriptor, or -errno. */
+static int ks_temp_create(const char *prefix, char *name, int cap) {
+  char tail[16];
+  for (int attempt = 0; attempt < 100; attempt++) {
+    sigset_t old;
+    int fd, err;
+    if (ks_random_name(tail, 12) != 0) return -EIO;
+    if (snprintf(name, (size_t) cap, "%s%s", prefix, tail) >= cap) return -ENAMETOOLONG;
+    ks_block(&old);
+    fd = open(name, O_RDWR | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC | O_NOCTTY, 0600);
+    err = errno;
+    if (fd >= 0 && ks_register_temp(name) != 0) {
+      unlink(name);
+      close(fd);
+      fd = -1;
+      err = EMFILE;
+    }
+    ks_unblock(&old);
+    if (fd >= 0) return fd;
+    if (err != EEXIST) return -err;
+  }
+  return -EEXIST;
+}
+
+/* A temporary beside `final` (same directory, so that rename(2) replaces it atomically):
+ * "FINAL.tmp.XXXXXXXXXXXX". Its name in `name`; the descriptor, or -errno. */
+int kinetostat_temp_beside(const char *final, char *name, int cap) {
+  char prefix[KS_PATH];
+  if (snprintf(prefix, sizeof prefix, "%s.tmp.", final) >= (int) sizeof prefix) return -ENAMETOOLONG;
+  return ks_temp_create(prefix, name, cap);
+}
+
+/* An anonymous temporary in $TMPDIR (default /tmp): created as
+ * "kinetostat-XXXXXXXXXXXX" and unlinked at once, so that nothing is left whatever ends
+ * the process. The descriptor, or -errno. */
+int kinetostat_temp_anonymous(void) {
+  char prefix[KS_PATH], name[KS_PATH];
+  const char *dir = getenv("TMPDIR");
+  int fd;
+  if (dir == NULL || dir[0] == '\0') dir = "/tmp";
+  if (snprintf(prefix, sizeof prefix, "%s/kinetostat-", dir) >= (int) sizeof prefix) return -ENAMETOOLONG;
+  fd = ks_temp_create(prefix, name, (int) sizeof name);
+  if (fd < 0) return fd;
+  unlink(name);
+  ks_forget_temp(name);
+  return fd;
+}
+
+/* Remove a registered temporary (after a failure). */
+void kinetostat_temp_remove(const char *name) {
+  unlink(name);
+  ks_forget_temp(name);
+}
+
+/* ---------------------------------------------------------------------------------------
+ * Where `-o PATH` goes. */
+
+/* Whether the symbolic link `link` lies on procfs (/proc/self/fd/N, /dev/stdout's
+ * target...): such a link names an open file, not a path to follow. */
+static int ks_on_procfs(const char *link) {
+  char dir[KS_PATH];
+  const char *slash = strrchr(link, '/');
+  struct statfs fs;
+  if (slash == NULL) {
+    strcpy(dir, ".");
+  } else if (slash == link) {
+    strcpy(dir, "/");
+  } else {
+    size_t n = (size_t) (slash - link);
+    if (n >= sizeof dir) return 0;
+    memcpy(dir, link, n);
+    dir[n] = '\0';
+  }
+  if (statfs(dir, &fs) != 0) return 0;
+  return fs.f_type == PROC_SUPER_MAGIC;
+}
+
+/* The descriptor number N of a procfs link naming one of this process' descriptors
+ * (/proc/self/fd/N, /proc/thread-self/fd/N, /proc/PID/fd/N), else -1. */
+static int ks_own_descriptor(const char *link) {
+  const char *fd_part = strstr(link, "/fd/");
+  char own[64];
+  char *end;
+  long n;
+  if (fd_part == NULL) return -1;
+  snprintf(own, sizeof own, "/proc/%ld/fd/", (long) getpid());
+  if (strncmp(link, "/proc/self/fd/", 14) != 0 && strncmp(link, "/proc/thread-self/fd/", 21) != 0 &&
+      strncmp(link, own, strlen(own)) != 0)
+    return -1;
+  errno = 0;
+  n = strtol(fd_part + 4, &end, 10);
+  if (errno != 0 || *end != '\0' || end == fd_part + 4 || n < 0 || n > INT_MAX) return -1;
+  if (fcntl((int) n, F_GETFD) < 0) return -1;
+  return (int) n;
+}
+
+/* What `-o path` means, following symbolic links one by one:
+ *  1  replace: a regular file or a new one, its final path (links followed) in `final`;
+ *  2  direct: not a regular file (device, FIFO, socket, a link on procfs to another
+ *     process' descriptor): opened and written as it is, its path in `final`;
+ *  3  descriptor: a procfs link to this process' descriptor (/dev/stdout,
+ *     /proc/self/fd/1): written to descriptor `*fd` at its current offset;
+ * -errno on failure (EISDIR: a directory; ELOOP: too many links). */
+int kinetostat_output_plan(const char *path, char *final, int cap, int *fd) {
+  char cur[KS_PATH], target[KS_PATH];
+  struct stat st;
+  *fd = -1;
+  if (snprintf(cur, sizeof cur, "%s", path) >= (int) sizeof cur) return -ENAMETOOLONG;
+  for (int hops = 0; hops <= 40; hops++) {
+    if (lstat(cur, &st) != 0) {
+      if (errno != ENOENT) return -errno;
+      if (snprintf(final, (size_t) cap, "%s", cur) >= cap) return -ENAMETOOLONG;
+      return 1;
+    }
+    if (S_ISLNK(st.st_mode)) {
+      ssize_t n;
+      if (ks_on_procfs(cur)) {
+        int own = ks_own_descriptor(cur);
+        if (own >= 0) {
+          *fd = own;
+          return 3;
+        }
+        if (stat(cur, &st) != 0) return -errno;
+        if (S_ISDIR(st.st_mode)) return -EISDIR;
+        if (snprintf(final, (size_t) cap, "%s", cur) >= cap) return -ENAMETOOLONG;
+        return 2;
+      }
+      n = readlink(cur, target, sizeof target - 1);
+      if (n < 0) return -errno;
+      target[n] = '\0';
+      if (target[0] == '/') {
+        memcpy(cur, target, (size_t) n + 1);
+      } else {
+        char *slash = strrchr(cur, '/');
+        char joined[KS_PATH];
+        if (slash == NULL) {
+          if (snprintf(joined, sizeof joined, "%s", target) >= (int) sizeof joined) return -ENAMETOOLONG;
+        } else {
+          slash[1] = '\0';
+          if (snprintf(joined, sizeof joined, "%s%s", cur, target) >= (int) sizeof joined) return -ENAMETOOLONG;
+        }
+        memcpy(cur, joined, strlen(joined) + 1);
+      }
+      continue;
+    }
+    if (S_ISDIR(st.st_mode)) return -EISDIR;
+    if (snprintf(final, (size_t) cap, "%s", cur) >= cap) return -ENAMETOOLONG;
+    return S_ISREG(st.st_mode) ? 1 : 2;
+  }
+  return -ELOOP;
+}
+
+/* Open a non-regular target (plan 2) for writing as it is: the descriptor, or -errno. A
+ * FIFO blocks here until a reader opens it. */
+int kinetostat_open_direct(const char *path) {
+  int fd = open(path, O_WRONLY | O_NOCTTY | O_CLOEXEC);
+  return fd < 0 ? -errno : fd;
+}
+
+/* The finished temporary `name` (open as `fd`) replaces `final`: the mode and (as root)
+ * owner of an existing `final` kept (a new file: 666 less the umask), synced, closed,
+ * renamed. 0, or errno after removing the temporary; `fd` is closed either way. */
+int kinetostat_replace(int fd, const char *name, const char *final) {
+  struct stat st;
+  int err = 0;
+  if (stat(final, &st) == 0 && S_ISREG(st.st_mode)) {
+    if (geteuid() == 0 && fchown(fd, st.st_uid, st.st_gid) != 0) err = errno;
+    if (err == 0 && fchmod(fd, st.st_mode & 07777) != 0) err = errno;
+  } else {
+    mode_t mask = umask(022);
+    umask(mask);
+    if (fchmod(fd, 0666 & ~mask) != 0) err = errno;
+  }
+  if (err == 0 && fsync(fd) != 0) err = errno;
+  if (close(fd) != 0 && err == 0) err = errno;
+  if (err == 0 && rename(name, final) != 0) err = errno;
+  if (err != 0) {
+    unlink(name);
+  }
+  ks_forget_temp(name);
+  return err;
+}
+
+/* ---------------------------------------------------------------------------------------
+ * Checked descriptor I/O. */
+
+/* Write all `count` bytes of `buf` to `fd`: 0, or errno (ENOSPC, EFBIG, EIO, EPIPE...). */
+int kinetostat_write_all(int fd, const char *buf, long long count) {
+  long long done = 0;
+  while (done < count) {
+    long long chunk = count - done;
+    ssize_t n;
+    if (chunk > (1LL << 30)) chunk = 1LL << 30;
+    n = write(fd, buf + done, (size_t) chunk);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      return errno;
+    }
+    if (n == 0) return EIO;
+    done += n;
+  }
+  return 0;
+}
+
+/* Read up to `count` bytes of `fd` at `offset`: the number read (0 at its end), or -errno. */
+long long kinetostat_read_at(int fd, char *buf, long long count, long long offset) {
+  for (;;) {
+    ssize_t n = pread(fd, buf, (size_t) count, (off_t) offset);
+    if (n >= 0) return n;
+    if (errno != EINTR) return -errno;
+  }
+}
+
+/* close(2): 0, or errno (a deferred write error of some file systems). */
+int kinetostat_close(int fd) { return close(fd) == 0 ? 0 : errno; }
+
+/* The system's text for errno `err`, into `text` (capacity `cap`, NUL-terminated). */
+void kinetostat_error_text(int err, char *text, int cap) {
+  snprintf(text, (size_t) cap, "%s", strerror(err));
+}
+
+/* ---------------------------------------------------------------------------------------
+ * Parallel sweeps run blocks of variants in child processes (gfortran's run-time library
+ * is not safe for concurrent internal I/O in threads, processes are). */
+
+/* fork(2): 0 in the child, the child's id in the parent, -1 on failure. The child is
+ * registered, so that a fatal signal to the parent ends it too; the child starts with
+ * empty registries (its parent's temporaries and siblings are not its own). */
+int kinetostat_fork(void) {
+  sigset_t old;
+  pid_t pid;
+  ks_block(&old);
+  pid = fork();
+  if (pid == 0) {
+    for (int i = 0; i < KS_MAX_TEMPS; i++) ks_temp_used[i] = 0;
+    for (int i = 0; i < KS_MAX_CHILDREN; i++) ks_child[i] = 0;
+  } else if (pid > 0) {
+    int slot = -1;
+    for (int i = 0; i < KS_MAX_CHILDREN; i++) {
+      if (ks_child[i] == 0) {
+        slot = i;
+        break;
+      }
+    }
+    if (slot >= 0) {
+      ks_child[slot] = (sig_atomic_t) pid;
+    } else {
+      kill(pid, SIGKILL);
+      waitpid(pid, NULL, 0);
+      pid = -1;
+    }
+  }
+  ks_unblock(&old);
+  return (int) pid;
+}
 
 /* Wait for child `pid`; its exit status, or -1 when it did not exit normally. */
 int kinetostat_wait(int pid) {
-  int status;
-  if (waitpid((pid_t) pid, &status, 0) < 0) return -1;
-  if (WIFEXITED(status)) return WEXITSTATUS(status);
-  return -1;
+  int status, result;
+  sigset_t old;
+  pid_t got;
+  do {
+    got = waitpid((pid_t) pid, &status, 0);
+  } while (got < 0 && errno == EINTR);
+  ks_block(&old);
+  for (int i = 0; i < KS_MAX_CHILDREN; i++) {
+    if (ks_child[i] == pid) ks_child[i] = 0;
+  }
+  ks_unblock(&old);
+  if (got < 0) return -1;
+  result = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return result;
 }
 
 /* _exit(2): end a child at once, without running the parent's exit handlers or flushing

@@ -1,49 +1,51 @@
-!> The operating-system calls the program needs beyond Fortran's intrinsics: the kind of
-!> file a path names, renaming a file, the process id, reading standard input as bytes,
-!> whether standard error is a terminal.
+!> The operating-system calls the program needs beyond Fortran's intrinsics (C in
+!> kinetostat_posix.c): checked writes to file descriptors, where `-o PATH` goes (links
+!> followed one by one), temporaries that cannot be hijacked (O_EXCL|O_NOFOLLOW, mode 600,
+!> random names) removed when a signal ends the process, atomic replacement of a file, the
+!> process id, reading standard input as bytes, whether standard error is a terminal, child
+!> processes.
 module kinetostat_posix
-  use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_size_t, c_long
+  use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_size_t, c_long, c_long_long
+  use, intrinsic :: iso_fortran_env, only: int64
   implicit none
   private
-  public :: path_kind, rename_file, process_id, write_standard_output, read_standard_input
+  public :: process_id, write_standard_output, read_standard_input
   public :: stderr_is_terminal
   public :: fork_process, wait_process, exit_now, cpu_count
-  public :: path_absent, path_regular, path_directory, path_special
+  public :: guard_signals, output_plan, temp_beside, temp_anonymous, temp_remove, open_direct
+  public :: replace_file, write_fd, read_fd_at, close_fd, system_error_text
+  public :: plan_replace, plan_direct, plan_descriptor
 
   !> Bytes asked for by one read of standard input.
   integer, parameter :: read_chunk = 65536
+  !> Longest path handled (bytes).
+  integer, parameter :: path_capacity = 4096
 
-  !> path_kind: no such file.
-  integer, parameter :: path_absent = 0
-  !> path_kind: a regular file.
-  integer, parameter :: path_regular = 1
-  !> path_kind: a directory.
-  integer, parameter :: path_directory = 2
-  !> path_kind: a device, FIFO or socket.
-  integer, parameter :: path_special = 3
+  !> output_plan: a regular (or new) file, replaced atomically through a temporary.
+  integer, parameter :: plan_replace = 1
+  !> output_plan: not a regular file (device, FIFO, socket): written directly.
+  integer, parameter :: plan_direct = 2
+  !> output_plan: a link to one of this process' descriptors (/dev/stdout): written to it.
+  integer, parameter :: plan_descriptor = 3
 
   ! allow(assumed-size)
   interface
-    function c_path_kind(path) bind(c, name="kinetostat_path_kind") result(kind)
-      import :: c_int, c_char
-      implicit none
-      character(kind=c_char), intent(in) :: path(*)
-      integer(c_int) :: kind
-    end function c_path_kind
-    function c_rename(old, new) bind(c, name="rename") result(status)
-      import :: c_int, c_char
-      implicit none
-      character(kind=c_char), intent(in) :: old(*), new(*)
-      integer(c_int) :: status
-    end function c_rename
-    function c_write(fd, buf, count) bind(c, name="write") result(written)
-      import :: c_int, c_char, c_size_t, c_long
+    function c_write_all(fd, buf, count) bind(c, name="kinetostat_write_all") result(err)
+      import :: c_int, c_char, c_long_long
       implicit none
       integer(c_int), value :: fd
       character(kind=c_char), intent(in) :: buf(*)
-      integer(c_size_t), value :: count
-      integer(c_long) :: written
-    end function c_write
+      integer(c_long_long), value :: count
+      integer(c_int) :: err
+    end function c_write_all
+    function c_read_at(fd, buf, count, offset) bind(c, name="kinetostat_read_at") result(got)
+      import :: c_int, c_char, c_long_long
+      implicit none
+      integer(c_int), value :: fd
+      character(kind=c_char), intent(inout) :: buf(*)
+      integer(c_long_long), value :: count, offset
+      integer(c_long_long) :: got
+    end function c_read_at
     function c_read(fd, buf, count) bind(c, name="read") result(got)
       import :: c_int, c_char, c_size_t, c_long, read_chunk
       implicit none
@@ -52,6 +54,61 @@ module kinetostat_posix
       integer(c_size_t), value :: count
       integer(c_long) :: got
     end function c_read
+    function c_close(fd) bind(c, name="kinetostat_close") result(err)
+      import :: c_int
+      implicit none
+      integer(c_int), value :: fd
+      integer(c_int) :: err
+    end function c_close
+    subroutine c_error_text(err, text, cap) bind(c, name="kinetostat_error_text")
+      import :: c_int, c_char
+      implicit none
+      integer(c_int), value :: err
+      character(kind=c_char), intent(out) :: text(*)
+      integer(c_int), value :: cap
+    end subroutine c_error_text
+    subroutine c_guard_signals() bind(c, name="kinetostat_guard_signals")
+    end subroutine c_guard_signals
+    function c_output_plan(path, final, cap, fd) bind(c, name="kinetostat_output_plan") result(plan)
+      import :: c_int, c_char
+      implicit none
+      character(kind=c_char), intent(in) :: path(*)
+      character(kind=c_char), intent(out) :: final(*)
+      integer(c_int), value :: cap
+      integer(c_int), intent(out) :: fd
+      integer(c_int) :: plan
+    end function c_output_plan
+    function c_temp_beside(final, name, cap) bind(c, name="kinetostat_temp_beside") result(fd)
+      import :: c_int, c_char
+      implicit none
+      character(kind=c_char), intent(in) :: final(*)
+      character(kind=c_char), intent(out) :: name(*)
+      integer(c_int), value :: cap
+      integer(c_int) :: fd
+    end function c_temp_beside
+    function c_temp_anonymous() bind(c, name="kinetostat_temp_anonymous") result(fd)
+      import :: c_int
+      implicit none
+      integer(c_int) :: fd
+    end function c_temp_anonymous
+    subroutine c_temp_remove(name) bind(c, name="kinetostat_temp_remove")
+      import :: c_char
+      implicit none
+      character(kind=c_char), intent(in) :: name(*)
+    end subroutine c_temp_remove
+    function c_open_direct(path) bind(c, name="kinetostat_open_direct") result(fd)
+      import :: c_int, c_char
+      implicit none
+      character(kind=c_char), intent(in) :: path(*)
+      integer(c_int) :: fd
+    end function c_open_direct
+    function c_replace(fd, name, final) bind(c, name="kinetostat_replace") result(err)
+      import :: c_int, c_char
+      implicit none
+      integer(c_int), value :: fd
+      character(kind=c_char), intent(in) :: name(*), final(*)
+      integer(c_int) :: err
+    end function c_replace
     function c_isatty(fd) bind(c, name="isatty") result(yes)
       import :: c_int
       implicit none
@@ -88,21 +145,120 @@ module kinetostat_posix
 
 contains
 
-  !> What `path` names: path_absent, path_regular, path_directory or path_special.
-  integer function path_kind(path)
-    !> File path.
-    character(*), intent(in) :: path
-    path_kind = int(c_path_kind(path//c_null_char))
-  end function path_kind
+  !> Install the clean-up of temporaries and sweep children for SIGINT, SIGTERM, SIGHUP and
+  !> SIGPIPE (those not ignored already; the process then dies of the signal as before, exit
+  !> status 128 + its number), and ignore SIGXFSZ (a file-size limit is a failed write).
+  subroutine guard_signals()
+    call c_guard_signals()
+  end subroutine guard_signals
 
-  !> Rename `old` to `new` (atomic on one file system); true on success.
-  logical function rename_file(old, new)
-    !> Existing file.
-    character(*), intent(in) :: old
-    !> New name (replaced if it exists).
-    character(*), intent(in) :: new
-    rename_file = c_rename(old//c_null_char, new//c_null_char) == 0
-  end function rename_file
+  !> Where `-o path` goes, links followed one by one: plan_replace (`final` the regular or
+  !> new file at the end of the links), plan_direct (`final` a device, FIFO or socket) or
+  !> plan_descriptor (`fd` this process' descriptor, e.g. for /dev/stdout); a negative errno
+  !> when it cannot be written (EISDIR, ELOOP, EACCES...).
+  integer function output_plan(path, final, fd)
+    !> The path as given.
+    character(*), intent(in) :: path
+    !> The path written (plan_replace, plan_direct).
+    character(len=:), allocatable, intent(out) :: final
+    !> The descriptor written (plan_descriptor).
+    integer, intent(out) :: fd
+    character(kind=c_char, len=path_capacity) :: buf
+    integer(c_int) :: c_fd
+    buf = ""
+    output_plan = int(c_output_plan(path//c_null_char, buf, int(path_capacity, c_int), c_fd))
+    fd = int(c_fd)
+    final = c_string(buf)
+  end function output_plan
+
+  !> A new temporary beside `final` ("FINAL.tmp." and 12 random characters; O_EXCL,
+  !> O_NOFOLLOW, mode 600), removed if a signal ends the process: its descriptor (its name in
+  !> `name`), or a negative errno.
+  integer function temp_beside(final, name)
+    !> The file it will replace.
+    character(*), intent(in) :: final
+    !> Its name.
+    character(len=:), allocatable, intent(out) :: name
+    character(kind=c_char, len=path_capacity) :: buf
+    buf = ""
+    temp_beside = int(c_temp_beside(final//c_null_char, buf, int(path_capacity, c_int)))
+    name = c_string(buf)
+  end function temp_beside
+
+  !> A new temporary in $TMPDIR (default /tmp), unlinked at once (nothing is left whatever
+  !> ends the process): its descriptor, or a negative errno.
+  integer function temp_anonymous()
+    temp_anonymous = int(c_temp_anonymous())
+  end function temp_anonymous
+
+  !> Remove the temporary `name` (after a failure).
+  subroutine temp_remove(name)
+    !> Its name.
+    character(*), intent(in) :: name
+    call c_temp_remove(name//c_null_char)
+  end subroutine temp_remove
+
+  !> Open a device, FIFO or socket for writing as it is: its descriptor, or a negative errno.
+  integer function open_direct(path)
+    !> Its path.
+    character(*), intent(in) :: path
+    open_direct = int(c_open_direct(path//c_null_char))
+  end function open_direct
+
+  !> The finished temporary `name` (descriptor `fd`, closed here) replaces `final`
+  !> atomically: mode and (as root) owner of an existing `final` kept, synced, renamed. 0,
+  !> or the errno of the failure (the temporary is then removed and `final` is as it was).
+  integer function replace_file(fd, name, final)
+    !> The temporary's descriptor.
+    integer, intent(in) :: fd
+    !> The temporary's name.
+    character(*), intent(in) :: name
+    !> The file replaced.
+    character(*), intent(in) :: final
+    replace_file = int(c_replace(int(fd, c_int), name//c_null_char, final//c_null_char))
+  end function replace_file
+
+  !> Write every byte of `text` to descriptor `fd`: 0, or the errno of the failed write
+  !> (ENOSPC, EFBIG, EIO, EPIPE...).
+  integer function write_fd(fd, text)
+    !> The descriptor.
+    integer, intent(in) :: fd
+    !> The bytes.
+    character(*), intent(in) :: text
+    write_fd = 0
+    if (len(text) == 0) return
+    write_fd = int(c_write_all(int(fd, c_int), text, int(len(text), c_long_long)))
+  end function write_fd
+
+  !> Read up to len(buf) bytes of descriptor `fd` from byte `offset` (0: the first): the
+  !> number read (0 at its end), or a negative errno.
+  integer(int64) function read_fd_at(fd, buf, offset)
+    !> The descriptor.
+    integer, intent(in) :: fd
+    !> Where to.
+    character(*), intent(inout) :: buf
+    !> Offset, bytes.
+    integer(int64), intent(in) :: offset
+    read_fd_at = int(c_read_at(int(fd, c_int), buf, int(len(buf), c_long_long), int(offset, c_long_long)), int64)
+  end function read_fd_at
+
+  !> Close descriptor `fd`: 0, or the errno of a deferred write error.
+  integer function close_fd(fd)
+    !> The descriptor.
+    integer, intent(in) :: fd
+    close_fd = int(c_close(int(fd, c_int)))
+  end function close_fd
+
+  !> The system's text for errno `err` ("No space left on device").
+  function system_error_text(err) result(text)
+    !> An errno (its sign ignored).
+    integer, intent(in) :: err
+    character(len=:), allocatable :: text
+    character(kind=c_char, len=256) :: buf
+    buf = ""
+    call c_error_text(int(abs(err), c_int), buf, int(len(buf), c_int))
+    text = c_string(buf)
+  end function system_error_text
 
   !> This process' id.
   integer function process_id()
@@ -110,6 +266,7 @@ contains
   end function process_id
 
   !> A child process (fork): 0 in the child, the child's id in the parent, -1 on failure.
+  !> A fatal signal to this process ends its children too.
   integer function fork_process()
     fork_process = int(c_fork())
   end function fork_process
@@ -133,23 +290,12 @@ contains
     cpu_count = int(c_cpu_count())
   end function cpu_count
 
-  !> Write `text` to standard output (file descriptor 1) unbuffered, every byte checked;
-  !> false when the system refused a write (a full disk, a closed pipe).
-  logical function write_standard_output(text)
+  !> Write `text` to standard output (file descriptor 1) unbuffered, every byte checked:
+  !> 0, or the errno of the failed write (a full disk, a closed pipe).
+  integer function write_standard_output(text)
     !> The bytes.
     character(*), intent(in) :: text
-    integer(c_long) :: written
-    integer :: done
-    done = 0
-    write_standard_output = .true.
-    do while (done < len(text))
-      written = c_write(1_c_int, text(done + 1:), int(len(text) - done, c_size_t))
-      if (written <= 0) then
-        write_standard_output = .false.
-        return
-      end if
-      done = done + int(written)
-    end do
+    write_standard_output = write_fd(1, text)
   end function write_standard_output
 
   !> All of standard input (file descriptor 0) as bytes, read to its end: a pipe, a
@@ -188,5 +334,18 @@ contains
   logical function stderr_is_terminal()
     stderr_is_terminal = c_isatty(2_c_int) == 1
   end function stderr_is_terminal
+
+  !> The text of a NUL-terminated C string in `buf`.
+  function c_string(buf) result(text)
+    character(*), intent(in) :: buf
+    character(len=:), allocatable :: text
+    integer :: n
+    n = index(buf, c_null_char)
+    if (n == 0) then
+      text = buf
+    else
+      text = buf(1:n - 1)
+    end if
+  end function c_string
 
 end module kinetostat_posix

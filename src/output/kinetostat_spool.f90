@@ -2,13 +2,16 @@
 !> a temporary file; only when the whole run succeeded does the text reach its target (the
 !> file of `-o`, renamed into place, or standard output, copied out), so that no output is
 !> ever partial. A run of any length thus holds at most `spool_bound` bytes of text.
+!> The temporary of a regular `-o` target lies beside it (kinetostat_output: O_EXCL,
+!> O_NOFOLLOW, mode 600, a random name, removed on failure and by a fatal signal); any other
+!> run spools into an anonymous file in $TMPDIR (unlinked as soon as it is created, so that
+!> nothing is left whatever ends the process).
 module kinetostat_spool
-  use, intrinsic :: iso_fortran_env, only: int64
+  use, intrinsic :: iso_fortran_env, only: int64, output_unit
   use kinetostat_error, only: error_t, fatal_error, exit_input
-  use kinetostat_text, only: int_str
-  use kinetostat_posix, only: path_kind, path_special, rename_file, process_id, write_standard_output
+  use kinetostat_posix, only: temp_anonymous, write_fd, read_fd_at, close_fd, system_error_text, plan_replace
   use kinetostat_text_buffer, only: text_buffer_t
-  use kinetostat_output, only: write_output_file, write_output_stdout, remove_file
+  use kinetostat_output, only: output_sink_t, write_output_file, write_output_stdout
   implicit none
   private
   public :: spool_t, spool_bound
@@ -22,10 +25,14 @@ module kinetostat_spool
   type :: spool_t
     !> The target file (`-o`); not allocated: standard output.
     character(len=:), allocatable :: target
-    !> The temporary file, once the text outgrew memory.
+    !> The name of the temporary beside the target, once made (an anonymous one has none).
     character(len=:), allocatable :: file
-    !> Its unit while open.
-    integer :: unit = 0
+    !> Where the text goes at the end.
+    type(output_sink_t) :: sink
+    !> The temporary file's descriptor while open; -1: none.
+    integer :: fd = -1
+    !> Bytes in the temporary file.
+    integer(int64) :: size = 0
     !> Whether the text went to the temporary file.
     logical :: spilled = .false.
     !> Bytes kept in memory before they go to the file (tests make it small).
@@ -37,9 +44,6 @@ module kinetostat_spool
     procedure :: commit
     procedure :: discard
   end type spool_t
-
-  !> Temporary files made by this process so far (for unique names).
-  integer :: spool_count = 0
 
 contains
 
@@ -61,8 +65,6 @@ contains
     type(error_t), allocatable, intent(out) :: error
     !> Move the text even below the bound, if the spool has a file.
     logical, intent(in), optional :: force
-    integer :: ios
-    character(len=512) :: msg
     logical :: now
     now = out%length > self%bound
     if (present(force)) now = now .or. (force .and. self%spilled)
@@ -71,13 +73,8 @@ contains
       call open_file(self, error)
       if (allocated(error)) return
     end if
-    msg = ""
-    write (self%unit, iostat=ios, iomsg=msg) out%data(1:out%length)
-    if (ios /= 0) then
-      call fatal_error(error, exit_input, where(self)//": cannot write output: "//trim(msg))
-      call self%discard()
-      return
-    end if
+    call put(self, out%data(1:out%length), error)
+    if (allocated(error)) return
     out%length = 0
     ! a buffer that grew far beyond the bound (a long head) is not kept for the whole run
     if (len(out%data) > 4 * self%bound) deallocate (out%data)
@@ -95,18 +92,18 @@ contains
     type(text_buffer_t), intent(inout) :: other_out
     !> A file cannot be read or written.
     type(error_t), allocatable, intent(out) :: error
-    integer :: ios
-    character(len=512) :: msg
+    integer :: err
     if (other%spilled) then
       call open_file_now(self, out, error)
-      if (allocated(error)) return
-      close (other%unit)
-      other%unit = 0
-      msg = ""
-      call copy_file(other%file, self%unit, .true., ios, msg)
-      other%spilled = .false.
-      if (ios /= 0) then
-        call fatal_error(error, exit_input, where(self)//": cannot write output: "//trim(msg))
+      if (allocated(error)) then
+        call other%discard()
+        return
+      end if
+      call copy_file(other%fd, other%size, self%fd, err)
+      if (err == 0) self%size = self%size + other%size
+      call other%discard()
+      if (err /= 0) then
+        call fatal_error(error, exit_input, where(self)//": cannot write output: "//system_error_text(err))
         call self%discard()
         return
       end if
@@ -123,7 +120,7 @@ contains
     type(text_buffer_t), intent(inout) :: out
     !> The target cannot be written.
     type(error_t), allocatable, intent(out) :: error
-    integer :: ios
+    integer :: err
     if (.not. self%spilled) then
       if (allocated(self%target)) then
         call write_output_file(self%target, out, error)
@@ -134,115 +131,88 @@ contains
     end if
     call self%drain(out, error, force=.true.)
     if (allocated(error)) return
-    close (self%unit, iostat=ios)
-    self%unit = 0
-    if (ios /= 0) then
-      call fatal_error(error, exit_input, where(self)//": cannot write output: the file cannot be closed")
+    if (self%sink%plan == plan_replace) then
+      ! the file is the temporary beside the target: renamed into place
+      self%spilled = .false.
+      self%fd = -1
+      call self%sink%finish(error)
+      return
+    end if
+    ! a device, FIFO or standard output: copied out of the anonymous file
+    call self%sink%start(error)
+    if (allocated(error)) then
       call self%discard()
       return
     end if
-    if (beside_target(self)) then
-      if (.not. rename_file(self%file, self%target)) then
-        call fatal_error(error, exit_input, self%target//": cannot write output: cannot rename the finished "// &
-          "output into place")
-        call self%discard()
-        return
-      end if
-      self%spilled = .false.
-      return
+    if (self%sink%fd == 1) flush (output_unit)
+    call copy_file(self%fd, self%size, self%sink%fd, err)
+    if (err /= 0) then
+      call fatal_error(error, exit_input, where(self)//": cannot write output: "//system_error_text(err))
+      call self%sink%abandon()
+    else
+      call self%sink%finish(error)
     end if
-    call copy_out(self, error)
     call self%discard()
   end subroutine commit
 
-  !> The run failed: remove the temporary file, if any.
+  !> The run failed (or the text was copied out): close and remove the temporary file, if any.
   subroutine discard(self)
     class(spool_t), intent(inout) :: self
-    integer :: ios
+    integer :: err
     if (.not. self%spilled) return
-    ios = 1
-    if (self%unit /= 0) close (self%unit, status="delete", iostat=ios)
-    self%unit = 0
-    ! not deleted on closing (or already closed): remove it by name
-    if (ios /= 0) call remove_file(self%file)
+    if (self%sink%plan == plan_replace .and. allocated(self%sink%temp)) then
+      call self%sink%abandon()
+    else if (self%fd >= 0) then
+      err = close_fd(self%fd)
+    end if
+    self%fd = -1
+    self%size = 0
     self%spilled = .false.
   end subroutine discard
 
-  !> Copy the temporary file to standard output or to a special target (a pipe, a device).
-  subroutine copy_out(self, error)
+  !> Append `text` to the temporary file.
+  subroutine put(self, text, error)
     type(spool_t), intent(inout) :: self
+    character(*), intent(in) :: text
     type(error_t), allocatable, intent(out) :: error
-    integer :: out_unit, ios, ios_close
-    character(len=512) :: msg
-    msg = ""
-    out_unit = 0
-    ios = 0
-    if (allocated(self%target)) then
-      open (newunit=out_unit, file=self%target, access="stream", form="unformatted", action="write", &
-            status="old", iostat=ios, iomsg=msg)
+    integer :: err
+    err = write_fd(self%fd, text)
+    if (err /= 0) then
+      call fatal_error(error, exit_input, where(self)//": cannot write output: "//system_error_text(err))
+      call self%discard()
+      return
     end if
-    if (ios == 0) call copy_file(self%file, out_unit, .false., ios, msg)
-    if (out_unit /= 0) then
-      close (out_unit, iostat=ios_close)
-      if (ios == 0) ios = ios_close
-    end if
-    if (ios /= 0) then
-      if (allocated(self%target)) then
-        call fatal_error(error, exit_input, self%target//": cannot write output: "//trim(msg))
-      else
-        call fatal_error(error, exit_input, "standard output: cannot write the output ("//trim(msg)//")")
-      end if
-    end if
-  end subroutine copy_out
+    self%size = self%size + len(text, int64)
+  end subroutine put
 
-  !> Append the file at `path` to the open stream `out_unit` (0: standard output), in chunks
-  !> of copy_chunk bytes; `remove` deletes the file afterwards. ios /= 0 on failure, with `msg`.
-  subroutine copy_file(path, out_unit, remove, ios, msg)
-    !> The file to copy.
-    character(*), intent(in) :: path
-    !> Where to (0: standard output).
-    integer, intent(in) :: out_unit
-    !> Delete the file afterwards.
-    logical, intent(in) :: remove
+  !> Copy the first `size` bytes of descriptor `from` to descriptor `to`, copy_chunk bytes at
+  !> a time; `err` is 0, or the errno of the failed read or write.
+  subroutine copy_file(from, size, to, err)
+    !> The temporary file's descriptor.
+    integer, intent(in) :: from
+    !> Its bytes.
+    integer(int64), intent(in) :: size
+    !> Where to.
+    integer, intent(in) :: to
     !> 0 on success.
-    integer, intent(out) :: ios
-    !> iomsg of the failure (kept when there is none).
-    character(len=512), intent(inout) :: msg
+    integer, intent(out) :: err
     character(len=:), allocatable :: chunk
-    integer :: in_unit, ios_close
-    integer(int64) :: size_left
-    open (newunit=in_unit, file=path, access="stream", form="unformatted", action="read", status="old", &
-          iostat=ios, iomsg=msg)
-    if (ios /= 0) return
-    inquire (unit=in_unit, size=size_left, iostat=ios)
-    do while (ios == 0 .and. size_left > 0)
-      allocate (character(len=int(min(int(copy_chunk, int64), size_left))) :: chunk)
-      read (in_unit, iostat=ios, iomsg=msg) chunk
-      if (ios == 0) then
-        if (out_unit /= 0) then
-          write (out_unit, iostat=ios, iomsg=msg) chunk
-        else if (.not. write_standard_output(chunk)) then
-          ios = 1
-          msg = "disk full or pipe closed?"
-        end if
+    integer(int64) :: offset, got
+    err = 0
+    offset = 0
+    allocate (character(len=int(min(int(copy_chunk, int64), max(size, 1_int64)))) :: chunk)
+    do while (offset < size)
+      got = read_fd_at(from, chunk(1:int(min(int(len(chunk), int64), size - offset))), offset)
+      if (got <= 0) then
+        err = int(-got)
+        if (got == 0) err = 5 ! EIO: the file is shorter than what was written to it
+        return
       end if
-      size_left = size_left - len(chunk)
-      deallocate (chunk)
+      err = write_fd(to, chunk(1:int(got)))
+      if (err /= 0) return
+      offset = offset + got
     end do
-    if (remove) then
-      close (in_unit, status="delete", iostat=ios_close)
-    else
-      close (in_unit, iostat=ios_close)
-    end if
-    if (ios == 0) ios = ios_close
   end subroutine copy_file
-
-  !> Whether the temporary file lies beside the target (renamed into place at the end).
-  logical function beside_target(self)
-    type(spool_t), intent(in) :: self
-    beside_target = .false.
-    if (allocated(self%target)) beside_target = path_kind(self%target) /= path_special
-  end function beside_target
 
   !> Move everything so far to the file, opening it first if needed.
   subroutine open_file_now(self, out, error)
@@ -256,31 +226,36 @@ contains
     call self%drain(out, error, force=.true.)
   end subroutine open_file_now
 
-  !> Create the temporary file: beside a regular target (renamed at the end), else in
-  !> $TMPDIR (or /tmp).
+  !> Create the temporary file: beside a regular target (renamed at the end), else an
+  !> anonymous one in $TMPDIR (or /tmp).
   subroutine open_file(self, error)
     type(spool_t), intent(inout) :: self
     type(error_t), allocatable, intent(out) :: error
     character(len=4096) :: dir
-    character(len=512) :: msg
-    integer :: length, status, ios
-    spool_count = spool_count + 1
-    if (beside_target(self)) then
-      self%file = self%target//".tmp."//int_str(process_id())
-      if (spool_count > 1) self%file = self%file//"."//int_str(spool_count)
+    integer :: length, status, fd
+    if (allocated(self%target)) then
+      call self%sink%aim(error, self%target)
     else
-      call get_environment_variable("TMPDIR", dir, length, status)
-      if (status /= 0 .or. length == 0) dir = "/tmp"
-      self%file = trim(dir)//"/kinetostat-"//int_str(process_id())//"-"//int_str(spool_count)//".out"
+      call self%sink%aim(error)
     end if
-    msg = ""
-    open (newunit=self%unit, file=self%file, access="stream", form="unformatted", action="readwrite", &
-          status="replace", iostat=ios, iomsg=msg)
-    if (ios /= 0) then
-      self%unit = 0
-      call fatal_error(error, exit_input, where(self)//": cannot write output: "//self%file//": "//trim(msg))
-      return
+    if (allocated(error)) return
+    if (self%sink%plan == plan_replace) then
+      call self%sink%start(error)
+      if (allocated(error)) return
+      self%fd = self%sink%fd
+      self%file = self%sink%temp
+    else
+      fd = temp_anonymous()
+      if (fd < 0) then
+        call get_environment_variable("TMPDIR", dir, length, status)
+        if (status /= 0 .or. length == 0) dir = "/tmp"
+        call fatal_error(error, exit_input, where(self)//": cannot write output: a temporary file in "// &
+          trim(dir)//": "//system_error_text(fd))
+        return
+      end if
+      self%fd = fd
     end if
+    self%size = 0
     self%spilled = .true.
   end subroutine open_file
 
