@@ -338,12 +338,11 @@ contains
     ok = .false.
     text = ""
     offset = 0
-    allocate (character(len=65536) :: chunk)
     do
-      got = read_fd_at(fd, chunk, offset)
+      got = read_fd_at(fd, 65536, offset, chunk)
       if (got < 0) return
       if (got == 0) exit
-      text = text//chunk(1:int(got))
+      text = text//chunk
       offset = offset + got
     end do
     p = 1

@@ -42,8 +42,8 @@ module kinetostat_posix
       import :: c_int, c_char, c_long_long
       implicit none
       integer(c_int), value :: fd
-      character(kind=c_char), intent(inout) :: buf(*)
       integer(c_long_long), value :: count, offset
+      character(kind=c_char), intent(out) :: buf(count)
       integer(c_long_long) :: got
     end function c_read_at
     function c_read(fd, buf, count) bind(c, name="read") result(got)
@@ -64,17 +64,18 @@ module kinetostat_posix
       import :: c_int, c_char
       implicit none
       integer(c_int), value :: err
-      character(kind=c_char), intent(out) :: text(*)
       integer(c_int), value :: cap
+      character(kind=c_char), intent(out) :: text(cap)
     end subroutine c_error_text
     subroutine c_guard_signals() bind(c, name="kinetostat_guard_signals")
+      implicit none
     end subroutine c_guard_signals
     function c_output_plan(path, final, cap, fd) bind(c, name="kinetostat_output_plan") result(plan)
       import :: c_int, c_char
       implicit none
       character(kind=c_char), intent(in) :: path(*)
-      character(kind=c_char), intent(out) :: final(*)
       integer(c_int), value :: cap
+      character(kind=c_char), intent(out) :: final(cap)
       integer(c_int), intent(out) :: fd
       integer(c_int) :: plan
     end function c_output_plan
@@ -82,8 +83,8 @@ module kinetostat_posix
       import :: c_int, c_char
       implicit none
       character(kind=c_char), intent(in) :: final(*)
-      character(kind=c_char), intent(out) :: name(*)
       integer(c_int), value :: cap
+      character(kind=c_char), intent(out) :: name(cap)
       integer(c_int) :: fd
     end function c_temp_beside
     function c_temp_anonymous() bind(c, name="kinetostat_temp_anonymous") result(fd)
@@ -230,16 +231,24 @@ contains
     write_fd = int(c_write_all(int(fd, c_int), text, int(len(text), c_long_long)))
   end function write_fd
 
-  !> Read up to len(buf) bytes of descriptor `fd` from byte `offset` (0: the first): the
-  !> number read (0 at its end), or a negative errno.
-  integer(int64) function read_fd_at(fd, buf, offset)
+  !> Read up to `count` bytes of descriptor `fd` from byte `offset` (0: the first) into
+  !> `text`: the number read (0 at its end), or a negative errno (`text` then empty).
+  integer(int64) function read_fd_at(fd, count, offset, text)
     !> The descriptor.
     integer, intent(in) :: fd
-    !> Where to.
-    character(*), intent(inout) :: buf
+    !> Bytes wanted (>= 1).
+    integer, intent(in) :: count
     !> Offset, bytes.
     integer(int64), intent(in) :: offset
-    read_fd_at = int(c_read_at(int(fd, c_int), buf, int(len(buf), c_long_long), int(offset, c_long_long)), int64)
+    !> The bytes read.
+    character(len=:), allocatable, intent(out) :: text
+    character(kind=c_char, len=count) :: buf
+    read_fd_at = int(c_read_at(int(fd, c_int), buf, int(count, c_long_long), int(offset, c_long_long)), int64)
+    if (read_fd_at > 0) then
+      text = buf(1:int(read_fd_at))
+    else
+      text = ""
+    end if
   end function read_fd_at
 
   !> Close descriptor `fd`: 0, or the errno of a deferred write error.

@@ -145,7 +145,7 @@ contains
     if (allocated(self%path)) then
       text = self%path//": cannot write output: "
     else
-      text = "standard output: cannot write the output: "
+      text = "standard output: cannot write output: "
     end if
   end function where
 
@@ -160,7 +160,7 @@ contains
     flush (output_unit)
     err = write_standard_output(out%data(1:out%length))
     if (err /= 0) then
-      call fatal_error(error, exit_input, "standard output: cannot write the output: "//system_error_text(err))
+      call fatal_error(error, exit_input, "standard output: cannot write output: "//system_error_text(err))
     end if
   end subroutine write_output_stdout
 

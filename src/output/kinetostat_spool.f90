@@ -20,6 +20,8 @@ module kinetostat_spool
   integer, parameter :: spool_bound = 4 * 1024 * 1024
   !> Bytes copied at a time from the temporary file to the target.
   integer, parameter :: copy_chunk = 1024 * 1024
+  !> errno EIO: the temporary file is shorter than what was written to it.
+  integer, parameter :: eio = 5
 
   !> The output of one run on its way to its target.
   type :: spool_t
@@ -200,15 +202,14 @@ contains
     integer(int64) :: offset, got
     err = 0
     offset = 0
-    allocate (character(len=int(min(int(copy_chunk, int64), max(size, 1_int64)))) :: chunk)
     do while (offset < size)
-      got = read_fd_at(from, chunk(1:int(min(int(len(chunk), int64), size - offset))), offset)
+      got = read_fd_at(from, int(min(int(copy_chunk, int64), size - offset)), offset, chunk)
       if (got <= 0) then
         err = int(-got)
-        if (got == 0) err = 5 ! EIO: the file is shorter than what was written to it
+        if (got == 0) err = eio
         return
       end if
-      err = write_fd(to, chunk(1:int(got)))
+      err = write_fd(to, chunk)
       if (err /= 0) return
       offset = offset + got
     end do
