@@ -240,20 +240,25 @@ static int ks_on_procfs(const char *link) {
 }
 
 /* The descriptor number N of a procfs link naming one of this process' descriptors
- * (/proc/self/fd/N, /proc/thread-self/fd/N, /proc/PID/fd/N), else -1. */
+ * (/proc/self/fd/N, /dev/fd/N, /proc/thread-self/fd/N, /proc/PID/fd/N), else -1. */
 static int ks_own_descriptor(const char *link) {
-  const char *fd_part = strstr(link, "/fd/");
-  char own[64];
+  const char *slash = strrchr(link, '/');
+  char dir[KS_PATH], own[64];
+  struct stat here, self;
   char *end;
   long n;
-  if (fd_part == NULL) return -1;
-  snprintf(own, sizeof own, "/proc/%ld/fd/", (long) getpid());
-  if (strncmp(link, "/proc/self/fd/", 14) != 0 && strncmp(link, "/proc/thread-self/fd/", 21) != 0 &&
-      strncmp(link, own, strlen(own)) != 0)
-    return -1;
+  if (slash == NULL || slash == link || (size_t) (slash - link) >= sizeof dir) return -1;
   errno = 0;
-  n = strtol(fd_part + 4, &end, 10);
-  if (errno != 0 || *end != '\0' || end == fd_part + 4 || n < 0 || n > INT_MAX) return -1;
+  n = strtol(slash + 1, &end, 10);
+  if (errno != 0 || *end != '\0' || end == slash + 1 || n < 0 || n > INT_MAX) return -1;
+  memcpy(dir, link, (size_t) (slash - link));
+  dir[slash - link] = '\0';
+  snprintf(own, sizeof own, "/proc/%ld/fd", (long) getpid());
+  if (strcmp(dir, "/proc/self/fd") != 0 && strcmp(dir, "/proc/thread-self/fd") != 0 && strcmp(dir, own) != 0) {
+    /* another name of the same directory (/dev/fd) */
+    if (stat(dir, &here) != 0 || stat("/proc/self/fd", &self) != 0) return -1;
+    if (here.st_dev != self.st_dev || here.st_ino != self.st_ino) return -1;
+  }
   if (fcntl((int) n, F_GETFD) < 0) return -1;
   return (int) n;
 }
@@ -317,8 +322,16 @@ int kinetostat_output_plan(const char *path, char *final, int cap, int *fd) {
 /* Open a non-regular target (plan 2) for writing as it is: the descriptor, or -errno. A
  * FIFO blocks here until a reader opens it. */
 int kinetostat_open_direct(const char *path) {
+  struct stat st;
   int fd = open(path, O_WRONLY | O_NOCTTY | O_CLOEXEC);
-  return fd < 0 ? -errno : fd;
+  if (fd < 0) return -errno;
+  /* a regular file reached through another process' descriptor: its contents are ours */
+  if (fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && ftruncate(fd, 0) != 0) {
+    int err = errno;
+    close(fd);
+    return -err;
+  }
+  return fd;
 }
 
 /* The finished temporary `name` (open as `fd`) replaces `final`: the mode and (as root)

@@ -117,6 +117,10 @@ ln -sf /proc/self/fd/1 "$ft_dir/fd1"
 { echo header; cat data/expected/pr3207.table; } >"$ft_dir/via_fd1.expected"
 [ "$rc" -eq 0 ] && [ -L "$ft_dir/fd1" ] && cmp -s "$ft_dir/via_fd1" "$ft_dir/via_fd1.expected" && pass \
   || fail faults-o-fd-link "rc=$rc; $(ls -l "$ft_dir/fd1"); $(cmp "$ft_dir/via_fd1" "$ft_dir/via_fd1.expected" 2>&1)"
+ln -sf /dev/fd/1 "$ft_dir/devfd1"
+{ echo header; "$KINETOSTAT" data/pr3207.nml -o "$ft_dir/devfd1" 2>/dev/null; } >"$ft_dir/via_devfd1"; rc=$?
+[ "$rc" -eq 0 ] && [ -L "$ft_dir/devfd1" ] && cmp -s "$ft_dir/via_devfd1" "$ft_dir/via_fd1.expected" && pass \
+  || fail faults-o-devfd-link "rc=$rc; $(ls -l "$ft_dir/devfd1"); $(cmp "$ft_dir/via_devfd1" "$ft_dir/via_fd1.expected" 2>&1)"
 # a link to a FIFO: written into the FIFO, never replaced
 mkfifo "$ft_dir/fifo"; ln -sf fifo "$ft_dir/fifolink"
 cat "$ft_dir/fifo" >"$ft_dir/fifo.out" & ft_reader=$!
