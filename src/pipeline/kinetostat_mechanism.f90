@@ -10,6 +10,7 @@ module kinetostat_mechanism
   use kinetostat_labels, only: lang_ru
   use kinetostat_sketch, only: sketch_t
   use kinetostat_drawing, only: drawing_t
+  use kinetostat_bodies, only: mass_model_t
   implicit none
   private
   public :: mechanism_t
@@ -36,6 +37,9 @@ module kinetostat_mechanism
     procedure :: sketch
     !> The forces of one row added to its drawing (--format svg --at K); by default none.
     procedure :: force_plan
+    !> The moving links' masses, inertias and centres of mass, and gravity, named as in the
+    !> kinematics columns (after read_deck); by default not available.
+    procedure :: mass_model
   end type mechanism_t
 
   abstract interface
@@ -125,5 +129,13 @@ contains
     !> A force that cannot be placed.
     type(error_t), allocatable, intent(out) :: error
   end subroutine force_plan
+
+  !> The mass model (moving links and gravity): by default none (`model%available` false).
+  pure subroutine mass_model(self, model)
+    class(mechanism_t), intent(in) :: self
+    !> The moving links and gravity, after read_deck.
+    type(mass_model_t), intent(out) :: model
+    model%available = .false.
+  end subroutine mass_model
 
 end module kinetostat_mechanism
