@@ -162,6 +162,8 @@ for sig in INT TERM HUP; do
   if ft_wait_for "$ft_dir/sigfile.tmp.*"; then
     mode=$(stat -c '%a' "$ft_dir"/sigfile.tmp.* 2>/dev/null)
     [ "$mode" = 600 ] && pass || fail "faults-temp-mode-600" "the temporary has mode $mode"
+  else
+    fail "faults-temp-beside" "no $ft_dir/sigfile.tmp.* seen within 10 s of the start of a 10^6-step run"
   fi
   kill -"$sig" "$ft_pid"; wait "$ft_pid" 2>/dev/null; rc=$?
   [ "$rc" -eq $((128 + num)) ] && [ "$(cat "$ft_dir/sigfile")" = old ] && ! ls "$ft_dir"/sigfile.tmp.* >/dev/null 2>&1 \
