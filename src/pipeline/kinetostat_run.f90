@@ -20,7 +20,7 @@ module kinetostat_run
   use kinetostat_labels, only: lang_en
   use kinetostat_override, only: override_t, mark_overrides
   use kinetostat_summary, only: coarse_step_warning, summary_header, summary_row, tally_rows
-  use kinetostat_table_writer, only: write_table_head, write_table_rows, write_table_tail
+  use kinetostat_table_writer, only: write_table_head, write_table_rows, write_table_tail, write_shaking_rows
   use kinetostat_spool, only: spool_t
   use kinetostat_bodies, only: mass_model_t
   use kinetostat_shaking, only: add_shaking
@@ -132,6 +132,9 @@ contains
     procedure(progress_i), optional :: progress
     type(text_buffer_t) :: later
     type(spool_t) :: later_spool
+    !> The legacy table's shaking block (--shaking), printed after the layout's sections.
+    type(text_buffer_t) :: shaking
+    type(spool_t) :: shaking_spool
     !> Where the writer is in the lines before the rows (the INPUT DATA echo).
     type(echo_cursor_t) :: head
     !> The moving links and frame pairs (--shaking).
@@ -173,6 +176,7 @@ contains
     end do
     if (allocated(error) .and. present(spool)) call spool%discard()
     if (allocated(error)) call later_spool%discard()
+    if (allocated(error)) call shaking_spool%discard()
   contains
     !> Solve, check, tally and write the next block.
     subroutine run_block(error)
@@ -226,12 +230,16 @@ contains
         if (allocated(error)) return
       case default
         call write_table_rows(mech, table, options%lang, out, later)
+        if (options%shaking) call write_shaking_rows(table, options%lang, shaking)
         if (table%last_block()) then
           if (present(spool)) then
             call spool%absorb(out, later_spool, later, error)
             if (allocated(error)) return
-          else if (later%length > 0) then
-            call out%append(later%data(1:later%length))
+            call spool%absorb(out, shaking_spool, shaking, error)
+            if (allocated(error)) return
+          else
+            if (later%length > 0) call out%append(later%data(1:later%length))
+            if (shaking%length > 0) call out%append(shaking%data(1:shaking%length))
           end if
           call write_table_tail(table, options%lang, out)
         end if
@@ -240,6 +248,8 @@ contains
       call spool%drain(out, error)
       if (allocated(error)) return
       call later_spool%drain(later, error)
+      if (allocated(error)) return
+      call shaking_spool%drain(shaking, error)
     end subroutine run_block
 
     !> Before the first rows: --frame link's check, the --set marks, the table's head.

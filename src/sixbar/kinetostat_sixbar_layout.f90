@@ -374,7 +374,8 @@ contains
     end do
   end subroutine write_results_ru
 
-  !> The moving links: crank 1, connecting rod 2, rocker 3, link 4 and slider 5 (translating), each at its centre of mass; gravity in frame 1.
+  !> The moving links: crank 1, connecting rod 2, rocker 3, link 4 and slider 5 (translating),
+  !> each at its centre of mass; gravity in frame 1.
   pure subroutine mass_model(self, model)
     class(sixbar_mechanism_t), intent(in) :: self
     type(mass_model_t), intent(out) :: model
