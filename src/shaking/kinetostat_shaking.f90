@@ -9,23 +9,24 @@
 !> driving moment (its reaction on the motor's housing). By d'Alembert it equals the shaking
 !> force and moment plus the weights and the external loads.
 module kinetostat_shaking
-  use kinetostat_kinds, only: wp, deg_to_rad
+  use kinetostat_kinds, only: wp, deg_to_rad, rad_to_deg
   use kinetostat_error, only: error_t, fatal_error, exit_usage
   use kinetostat_bodies, only: mass_model_t
-  use kinetostat_step_table, only: step_table_t, col_component, col_force, col_moment
+  use kinetostat_step_table, only: step_table_t, col_component, col_force, col_force_angle, col_moment
   implicit none
   private
   public :: add_shaking, shaking_column_names
 
   !> The columns add_shaking appends, in order (M_frame only where the frame's moment is known;
   !> the F_frame columns only where the mechanism lists its frame pairs).
-  character(*), parameter :: shaking_column_names(*) = [character(len=9) :: "F_shake", "F_shake_x", &
+  character(*), parameter :: shaking_column_names(*) = [character(len=9) :: "F_shake", "F_shakeG", "F_shake_x", &
     "F_shake_y", "M_shake", "F_frame_x", "F_frame_y", "M_frame"]
 
 contains
 
   !> Append (with a run's first block) and fill for the rows of the block the columns
-  !> F_shake (N, magnitude), F_shake_x, F_shake_y (N), M_shake (N*m, about the origin),
+  !> F_shake (N, magnitude), F_shakeG (deg, its angle in [0, 360), as a pair force's; so the
+  !> SVG sheet draws its hodograph), F_shake_x, F_shake_y (N), M_shake (N*m, about the origin),
   !> F_frame_x, F_frame_y (N) and M_frame (N*m, about the origin) of the force and moment on
   !> the frame. The table must hold the kinematics columns the model names.
   pure subroutine add_shaking(table, model, error)
@@ -93,6 +94,7 @@ contains
     if (c0 == 0) then
       c0 = size(table%columns) + 1
       call table%add_column("F_shake", "N", col_force)
+      call table%add_column("F_shakeG", "deg", col_force_angle)
       call table%add_column("F_shake_x", "N", col_component)
       call table%add_column("F_shake_y", "N", col_component)
       call table%add_column("M_shake", "N*m", col_moment)
@@ -117,9 +119,11 @@ contains
         end associate
       end do
       table%rows(c0, k) = hypot(f(1), f(2))
-      table%rows(c0 + 1, k) = f(1)
-      table%rows(c0 + 2, k) = f(2)
-      table%rows(c0 + 3, k) = m
+      table%rows(c0 + 1, k) = 0.0_wp
+      if (table%rows(c0, k) > 0.0_wp) table%rows(c0 + 1, k) = modulo(atan2(f(2), f(1)) * rad_to_deg, 360.0_wp)
+      table%rows(c0 + 2, k) = f(1)
+      table%rows(c0 + 3, k) = f(2)
+      table%rows(c0 + 4, k) = m
       if (.not. frame) cycle
       g = 0.0_wp
       mf = 0.0_wp
@@ -132,9 +136,9 @@ contains
         if (pm(i) > 0) mf = mf - table%rows(pm(i), k)
       end do
       if (drive > 0) mf = mf - table%rows(drive, k)
-      table%rows(c0 + 4, k) = g(1)
-      table%rows(c0 + 5, k) = g(2)
-      if (frame_moment) table%rows(c0 + 6, k) = mf
+      table%rows(c0 + 5, k) = g(1)
+      table%rows(c0 + 6, k) = g(2)
+      if (frame_moment) table%rows(c0 + 7, k) = mf
     end do
 
   contains
