@@ -485,7 +485,7 @@ contains
       allocate (sets(0))
     end if
     call run_sweep(source, sets, args%varies, args%part, args%parts, jobs, &
-      stderr_is_terminal() .and. .not. args%quiet, first, results, error)
+      stderr_is_terminal() .and. .not. args%quiet, first, results, error, args%options%shaking)
     if (allocated(error)) return
     do v = 1, size(results)
       name = variant_name(results(v))

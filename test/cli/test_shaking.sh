@@ -39,3 +39,10 @@ balance_error "balance-full-impossible" 3 "full balance is impossible.*--method 
 balance_error "balance-partial-not-slider-crank" 1 "--method partial balances a slider-crank" balance "$root/data/assur_fourbar.nml" --method partial
 balance_error "shaking-gears" 1 "--shaking: only linkage mechanisms" "$root/data/gears_reducer.nml" --shaking
 balance_error "method-without-balance" 1 "belong to the balance subcommand" "$root/data/assur_fourbar.nml" --method crank
+
+# a sweep with --shaking: the summary columns of the shaking force, the same in 1 and 2 processes
+run_ks sweep "$root/data/assur_fourbar.nml" --vary crank_m=0.5:1.5:3 --shaking --jobs 1
+cp "$out" "$cli_tmp/sweep_one"
+run_ks sweep "$root/data/assur_fourbar.nml" --vary crank_m=0.5:1.5:3 --shaking --jobs 2
+if [ "$rc" -eq 0 ] && head -1 "$out" | grep -q 'F_shake_max' && cmp -s "$out" "$cli_tmp/sweep_one"; then pass
+else fail "shaking-sweep" "exit $rc; header $(head -c 200 "$out")"; fi
