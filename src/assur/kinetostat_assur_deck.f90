@@ -11,7 +11,8 @@ module kinetostat_assur_deck
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str, number_str, lower
   use kinetostat_text_buffer, only: text_buffer_t
-  use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, unset_bits, max_deck_array, &
+  use kinetostat_deck, only: longest_quoted, &
+    check_namelist_syntax, write_template_lines, deck_context_t, unset_real, unset_bits, max_deck_array, &
     deck_array_capacities, deck_source_t, namelist_probe_t, deck_error, require_all_set, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn, &
     is_whole_in, require_whole
@@ -295,9 +296,24 @@ contains
     type(assur_deck_t), intent(out) :: deck
     !> Input error naming file, group, variable and reason.
     type(error_t), allocatable, intent(out) :: error
-    !> As long as the whole deck: an unterminated quote reads the rest of the deck into it
-    !> (a shorter variable makes gfortran print a runtime warning); at most 80 are kept.
-    character(len=size(source%records) * len(source%records) + 1) :: title
+    call read_assur_group(source, longest_quoted(source), deck, error)
+  end subroutine read_assur_deck
+
+  !> Read and validate an `&assur` deck whose longest quoted text has `title_length`
+  !> characters (the length of the title read).
+  subroutine read_assur_group(source, title_length, deck, error)
+    !> The deck, read into memory (see load_deck).
+    type(deck_source_t), intent(in) :: source
+    !> Length of the title variable read (characters, >= 1).
+    integer, intent(in) :: title_length
+    !> The validated deck.
+    type(assur_deck_t), intent(out) :: deck
+    !> Input error naming file, group, variable and reason.
+    type(error_t), allocatable, intent(out) :: error
+    !> As long as the longest quoted text of the deck (an unclosed quote is refused before
+    !> the READ); at most 80 are kept. Allocated, not automatic: a text of 10^5 characters
+    !> and more would overflow the stack.
+    character(len=title_length), allocatable :: title
     !> Integer deck variables, read as reals (see require_whole).
     real(wp) :: frame_id, crank_id, n
     !> Linear actuator as driver: dyad number and pair 1..3 (whole numbers, read as reals).
@@ -341,6 +357,7 @@ contains
 
     ctx%path = source%path
     ctx%group = group_name
+    allocate (title)
     title = ""
     frame_id = 0.0_wp; crank_id = 1.0_wp; n = unset_real
     drive_dyad = unset_real; drive_pair = unset_real
@@ -355,6 +372,8 @@ contains
     allocate (omega1_step(capacity(1)), eps1_step(capacity(2)), step_values(capacity(3)), phi1(capacity(4)), &
               source=unset_real)
 
+    call check_namelist_syntax(source, ctx%group, error)
+    if (allocated(error)) return
     read (source%records, nml=assur, iostat=ios, iomsg=msg)
     if (ios /= 0) then
       ! find the line and the assignment that failed (gfortran's message does not say)
@@ -580,7 +599,7 @@ contains
     deck%components = components
     deck%frame_id = frame_no
     deck%crank_id = crank_no
-  end subroutine read_assur_deck
+  end subroutine read_assur_group
 
   !> The required variables the deck lacks, in the order the checks of read_assur_deck meet
   !> them: phi_ref (global form), dphi (unless a phi1 list), omega1 (or the other of

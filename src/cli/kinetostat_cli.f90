@@ -5,11 +5,11 @@ module kinetostat_cli
   use, intrinsic :: iso_fortran_env, only: error_unit, int64
   use kinetostat_kinds, only: wp, version_string
   use kinetostat_error, only: error_t, fatal_error, exit_success, exit_usage, exit_input, exit_warning
-  use kinetostat_deck, only: deck_source_t, load_deck, read_group_name
+  use kinetostat_deck, only: deck_source_t, load_deck, read_group_name, set_max_deck_size
   use kinetostat_override, only: override_t, parse_override, apply_overrides
   use kinetostat_sweep, only: vary_t, parse_vary, run_sweep, variant_result_t
   use kinetostat_posix, only: stderr_is_terminal, cpu_count
-  use kinetostat_text, only: int_str
+  use kinetostat_text, only: int_str, printable
   use kinetostat_run, only: format_summary
   use kinetostat_step_table, only: step_table_t
   use kinetostat_text_buffer, only: text_buffer_t
@@ -74,6 +74,8 @@ module kinetostat_cli
     "            from FROM to TO), the first --vary slowest; --part K/N runs block K of N", &
     "            (the parts' outputs concatenated in order are the whole sweep's); --jobs N", &
     "            runs its variants in N processes (default: one per processor), same bytes", &
+    "--max-deck-size BYTES  the largest deck read (default 268435456, 256 MiB); a longer", &
+    "            file, or endless input such as /dev/zero, is an input error", &
     "--strict    a run that warns (self-check above its limit, a dead position between", &
     "            steps, a jammed cam or lost contact, a coarse step near a load edge)", &
     "            exits 4; the output is still written", &
@@ -196,7 +198,7 @@ contains
     if (ran .and. .not. allocated(error)) call warn(table, args%quiet, warnings)
 
     if (allocated(error)) then
-      write (error_unit, '(a)') "kinetostat: error: "//error%message
+      write (error_unit, '(a)') "kinetostat: error: "//printable(error%message)
       if (error%code == exit_usage) write (error_unit, '(a)') usage_line
       exit_code = error%code
     else if (args%strict .and. warnings > 0) then
@@ -249,6 +251,27 @@ contains
       if (error%code == exit_input) call blame_override(source, group, options%overrides, error)
     end if
   end subroutine run_deck
+
+  !> The limit of --max-deck-size BYTES (a whole number from 1 to huge(1), the largest deck
+  !> a build with default integers can hold): set for every deck read.
+  subroutine parse_deck_size(arg, error)
+    !> The option's value.
+    character(*), intent(in) :: arg
+    type(error_t), allocatable, intent(out) :: error
+    integer(int64) :: bytes
+    integer :: ios
+    ios = 1
+    if (len(arg) > 0 .and. len(arg) < 19 .and. verify(arg, "0123456789") == 0) read (arg, *, iostat=ios) bytes
+    if (ios == 0) then
+      if (bytes < 1 .or. bytes > huge(1)) ios = 1
+    end if
+    if (ios /= 0) then
+      call fatal_error(error, exit_usage, "--max-deck-size must be a whole number of bytes from 1 to "// &
+        int_str(huge(1))//" (got '"//printable(arg)//"')")
+      return
+    end if
+    call set_max_deck_size(bytes)
+  end subroutine parse_deck_size
 
   !> K and N of "--part K/N" (1 <= K <= N).
   subroutine parse_part(arg, part, parts, error)
@@ -377,7 +400,7 @@ contains
       start = 1
       do i = 1, results(v)%warnings%length
         if (results(v)%warnings%data(i:i) /= achar(10)) cycle
-        write (error_unit, '(a)') prefix//results(v)%warnings%data(start:i - 1)
+        write (error_unit, '(a)') printable(prefix//results(v)%warnings%data(start:i - 1))
         start = i + 1
       end do
     end do
@@ -496,11 +519,11 @@ contains
     integer, intent(out) :: count
     integer :: i
     character(len=:), allocatable :: prefix
-    prefix = "kinetostat: warning: "//table%deck//": "
+    prefix = "kinetostat: warning: "//printable(table%deck)//": "
     count = table%warning_count()
     if (.not. quiet) then
       do i = 1, table%warning_count()
-        write (error_unit, '(a)') prefix//table%warnings(i)%text
+        write (error_unit, '(a)') printable(prefix//table%warnings(i)%text)
       end do
     end if
     if (.not. table%has_selfcheck .or. table%row_count() == 0) return
@@ -536,7 +559,7 @@ contains
       else
         name = arg
         if (any(name == [character(len=8) :: "-o", "--output", "--format", "--lang", "--set", "--pairs", "--at", &
-                         "--frame", "--vary", "--part", "--jobs"])) then
+                         "--frame", "--vary", "--part", "--jobs"]) .or. name == "--max-deck-size") then
           if (i == n) then
             call fatal_error(error, exit_usage, name//" needs a value")
             return
@@ -603,6 +626,9 @@ contains
             return
           end if
         end block
+      case ("--max-deck-size")
+        call parse_deck_size(value, error)
+        if (allocated(error)) return
       case ("sweep")
         if (allocated(args%deck) .or. args%sweep .or. allocated(args%template_kind)) then
           call fatal_error(error, exit_usage, "sweep must come first: kinetostat sweep DECK --vary NAME=FROM:TO:COUNT")
@@ -741,7 +767,7 @@ contains
     end if
     if (.not. allocated(error) .and. .not. args%quiet) call write_output_stdout(report, error)
     if (allocated(error)) then
-      write (error_unit, '(a)') "kinetostat: error: "//error%message
+      write (error_unit, '(a)') "kinetostat: error: "//printable(error%message)
       exit_code = exit_input
     else
       exit_code = status
