@@ -459,7 +459,7 @@ contains
     call require_rule(ctx, "dyad", nd >= 1, "at least one dyad is required (dyad(1)%kind missing)", error)
     if (allocated(error)) return
     do d = nd + 1, max_dyads
-      if (dyad_touched(dyad(d))) then
+      if (dyad_touched(dyad(d)) .or. is_set(dyad(d)%kind)) then
         call deck_error(ctx, "dyad("//int_str(d)//")", "dyads must be numbered 1.."//int_str(nd + 1)// &
           " without gaps (dyad("//int_str(nd + 1)//")%kind is missing)", error)
         return
@@ -515,13 +515,22 @@ contains
     call read_output_link(ctx, output_link, ids, deck%mech, error); if (allocated(error)) return
     call crank_angles(ctx, deck, error); if (allocated(error)) return
     do k = nf + 1, max_forces
-      if (any(is_set([force(k)%value, force(k)%angle, force(k)%column, force(k)%fx, force(k)%fy, force(k)%table(1)]))) then
+      if (is_set(force(k)%link) .and. k > nf + 1) then
+        call deck_error(ctx, "force("//int_str(nf + 1)//")", "missing: force("//int_str(k)// &
+          ") is given, and forces must be numbered 1, 2, ... without gaps", error)
+        return
+      else if (any(is_set([force(k)%value, force(k)%angle, force(k)%column, force(k)%fx, force(k)%fy, &
+                           force(k)%table(1)]))) then
         call deck_error(ctx, "force("//int_str(k)//")%link", "missing (forces must be numbered without gaps)", error)
         return
       end if
     end do
     do k = nm + 1, max_moments
-      if (any(is_set([moment(k)%value, moment(k)%column, moment(k)%table(1)]))) then
+      if (is_set(moment(k)%link) .and. k > nm + 1) then
+        call deck_error(ctx, "moment("//int_str(nm + 1)//")", "missing: moment("//int_str(k)// &
+          ") is given, and moments must be numbered 1, 2, ... without gaps", error)
+        return
+      else if (any(is_set([moment(k)%value, moment(k)%column, moment(k)%table(1)]))) then
         call deck_error(ctx, "moment("//int_str(k)//")%link", "missing (moments must be numbered without gaps)", error)
         return
       end if
@@ -653,7 +662,8 @@ contains
       nd = d
     end do
     if (nd < size(dyad)) then
-      call add_missing(names, "dyad("//int_str(nd + 1)//")%kind", nd == 0 .or. any(dyad_touched(dyad(nd + 1:))))
+      call add_missing(names, "dyad("//int_str(nd + 1)//")%kind", nd == 0 .or. any(dyad_touched(dyad(nd + 1:))) &
+                       .or. any(is_set(dyad(nd + 1:)%kind)))
     end if
     do d = 1, nd
       p = "dyad("//int_str(d)//")%"

@@ -4,7 +4,7 @@ module kinetostat_text
   use kinetostat_kinds, only: wp
   implicit none
   private
-  public :: real_str, int_str, int64_str, number_str, lower, upper, printable
+  public :: real_str, int_str, int64_str, number_str, lower, upper, printable, utf8_length
 
   !> Format of a real in a message: shortest general form with 10 significant digits.
   character(*), parameter :: real_msg_fmt = '(g0.10)'
@@ -78,8 +78,7 @@ contains
     character(*), intent(in) :: text
     character(len=:), allocatable :: safe
     character(len=*), parameter :: hex = "0123456789ABCDEF"
-    integer :: i, c, n, k, at
-    logical :: valid
+    integer :: i, c, n, at
     if (verify(text, " !""#$%&'()*+,-./0123456789:;<=>?@ABCDEFGHIJKLMNOPQRSTUVWXYZ[\]^_`"// &
         "abcdefghijklmnopqrstuvwxyz{|}~") == 0) then
       safe = text
@@ -90,24 +89,11 @@ contains
     i = 1
     do while (i <= len(text))
       c = iachar(text(i:i))
-      n = 0
-      if (c >= 194 .and. c <= 223) then
-        n = 1
-      else if (c >= 224 .and. c <= 239) then
-        n = 2
-      else if (c >= 240 .and. c <= 244) then
-        n = 3
-      end if
-      valid = n > 0 .and. i + n <= len(text)
-      if (valid) then
-        do k = 1, n
-          if (iachar(text(i + k:i + k)) < 128 .or. iachar(text(i + k:i + k)) > 191) valid = .false.
-        end do
-      end if
-      if (valid) then
-        safe(at + 1:at + n + 1) = text(i:i + n)
-        at = at + n + 1
-        i = i + n + 1
+      n = utf8_length(text, i)
+      if (n > 1) then
+        safe(at + 1:at + n) = text(i:i + n - 1)
+        at = at + n
+        i = i + n
         cycle
       end if
       if (c == 10) then
@@ -130,6 +116,41 @@ contains
     end do
     safe = safe(1:at)
   end function printable
+
+  !> Bytes of the valid UTF-8 character at `text(i:)` (1 for ASCII, 2 to 4 for a multi-byte
+  !> sequence), 0 when the byte at `i` does not start a valid one (a CP1251 or Latin-1
+  !> byte, a stray continuation byte, a sequence cut short).
+  pure integer function utf8_length(text, i) result(n)
+    !> Any bytes.
+    character(*), intent(in) :: text
+    !> Position looked at.
+    integer, intent(in) :: i
+    integer :: c, k
+    c = iachar(text(i:i))
+    if (c < 128) then
+      n = 1
+      return
+    else if (c >= 194 .and. c <= 223) then
+      n = 2
+    else if (c >= 224 .and. c <= 239) then
+      n = 3
+    else if (c >= 240 .and. c <= 244) then
+      n = 4
+    else
+      n = 0
+      return
+    end if
+    if (i + n - 1 > len(text)) then
+      n = 0
+      return
+    end if
+    do k = 1, n - 1
+      if (iachar(text(i + k:i + k)) < 128 .or. iachar(text(i + k:i + k)) > 191) then
+        n = 0
+        return
+      end if
+    end do
+  end function utf8_length
 
   !> ASCII lower case.
   pure function lower(s) result(t)

@@ -95,9 +95,15 @@ module kinetostat_deck
     integer :: good = 0
     !> First line whose copy fails (when `stage` > 1).
     integer :: bad = 0
-    !> 1: looking for the line, 2: for the assignment on it, 3: trying other values in
-    !> the assignment (which type the variable has), 4: done.
+    !> 1: looking for the line, 2: for the assignment on it, 5: reading that assignment
+    !> alone (when it reads, the text before it is at fault: "l_over = F" makes gfortran
+    !> fail at the next name), 3: trying other values in the assignment (which type the
+    !> variable has), 4: done.
     integer :: stage = 4
+    !> The group's opening ("&cam"), for the assignment read alone.
+    character(len=:), allocatable :: header
+    !> The line opening the group.
+    integer :: group_line = 0
     !> Line count (stage 1), assignment index (stage 2) or other value (stage 3) in `records`.
     integer :: trying = 0
     !> Stage 3: whether the assignment reads with its first value alone, with 1, with
@@ -816,6 +822,9 @@ contains
       if (at == 0) cycle
       if (line_slice(source, k, at, at) == "&") then
         self%good = k - 1
+        self%group_line = k
+        self%header = line_slice(source, k, at, max(at, line_search(source, k, at + 1, " /,!"//achar(9), .true.) - 1))
+        if (line_search(source, k, at + 1, " /,!"//achar(9), .true.) == 0) self%header = line_slice(source, k, at, huge(1))
         exit
       end if
     end do
@@ -873,9 +882,14 @@ contains
       if (self%ios /= 0) then
         self%piece = self%trying
         self%failure = self%msg
-        self%stage = 3
+        self%stage = 5
         self%trying = 0
       end if
+    case (5)
+      ! the assignment read alone: when it reads, the fault is in the text before it
+      if (self%ios == 0) call blame_previous(self, source)
+      self%stage = 3
+      self%trying = 0
     case (3)
       self%reads(self%trying) = self%ios == 0
     case default
@@ -887,6 +901,20 @@ contains
         self%trying = self%trying + 1
         cut = self%starts(self%trying + 1) - 1
         call copy_through(source, self%bad, line(1:cut), self%records)
+        return
+      end if
+      self%stage = 5
+      self%trying = 0
+    end if
+    if (self%stage == 5) then
+      if (self%piece > 0 .and. allocated(self%header)) then
+        if (self%piece < size(self%starts)) then
+          text = strip_comment(line(self%starts(self%piece):self%starts(self%piece + 1) - 1))
+        else
+          text = strip_comment(line(self%starts(self%piece):))
+        end if
+        self%records = [character(len=max(len(text), len(self%header), 1)) :: self%header, text, "/"]
+        self%trying = 1
         return
       end if
       self%stage = 3
@@ -911,6 +939,27 @@ contains
     self%stage = 4
     probe_more = .false.
   end function probe_more
+
+  !> The failing assignment reads alone, so the text before it is at fault: the assignment
+  !> before it on its line, or else the last line above with text (its last assignment, or
+  !> the whole line when it only continues a list of values).
+  subroutine blame_previous(self, source)
+    type(namelist_probe_t), intent(inout) :: self
+    !> The deck.
+    type(deck_source_t), intent(in) :: source
+    integer :: k
+    if (self%piece > 1) then
+      self%piece = self%piece - 1
+      return
+    end if
+    do k = self%bad - 1, self%group_line + 1, -1
+      if (len(strip_comment(deck_line(source, k))) == 0) cycle
+      self%bad = k
+      self%starts = assignment_starts(deck_line(source, k))
+      self%piece = size(self%starts)
+      return
+    end do
+  end subroutine blame_previous
 
   !> A READ that succeeds. gfortran 12 carries state from a namelist READ that failed in a
   !> repeat count ("Repeat count too large", a pending count) into the next READ of an
