@@ -160,6 +160,13 @@ module kinetostat_step_table
     real(wp) :: area2 = 0.0_wp
     !> Value in the last row seen.
     real(wp) :: last = 0.0_wp
+    !> `total` of the values scaled by kinetostat_summary's value_scale (2**-512), and
+    !> `area2` of the values and input steps scaled by value_scale and step_scale
+    !> (2**-560): the same sums in a range where they cannot overflow (|v| < 1.8e308),
+    !> used when the plain ones did.
+    real(wp) :: total_scaled = 0.0_wp
+    !> See `total_scaled`.
+    real(wp) :: area2_scaled = 0.0_wp
   end type column_tally_t
 
   !> The input coordinate at a row next to a load edge (for the coarse-step warning's text).
@@ -253,6 +260,9 @@ module kinetostat_step_table
     real(wp) :: largest_step = 0.0_wp
     !> Twice the driver's work so far (trapezoid sum over its coordinate), J.
     real(wp) :: work2 = 0.0_wp
+    !> `work2` of the driver's values and coordinate steps scaled (see column_tally_t's
+    !> `area2_scaled`), used when `work2` overflowed.
+    real(wp) :: work2_scaled = 0.0_wp
     !> The driver's coordinate in the last row tallied (m, or rad).
     real(wp) :: last_coordinate = 0.0_wp
     !> Input coordinates at the rows next to a load edge (for the coarse-step warning).

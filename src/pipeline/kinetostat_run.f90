@@ -19,7 +19,8 @@ module kinetostat_run
   use kinetostat_error, only: exit_usage
   use kinetostat_labels, only: lang_en
   use kinetostat_override, only: override_t, mark_overrides
-  use kinetostat_summary, only: coarse_step_warning, summary_header, summary_row, tally_rows
+  use kinetostat_summary, only: coarse_step_warning, summary_header, summary_row, tally_rows, column_stats_t, &
+    column_stats, drive_work, summarized
   use kinetostat_table_writer, only: write_table_head, write_table_rows, write_table_tail
   use kinetostat_spool, only: spool_t
   implicit none
@@ -177,6 +178,8 @@ contains
       if (table%last_block()) then
         call guard_inputs(table, error)
         if (allocated(error)) return
+        call guard_summary(table, options%kinematics, error)
+        if (allocated(error)) return
         call coarse_step_warning(table, warning)
         if (allocated(warning)) call table%add_warning(warning)
       end if
@@ -196,6 +199,8 @@ contains
           if (allocated(error)) return
         end do
       case (format_svg)
+        call guard_drawable(table, error)
+        if (allocated(error)) return
         if (options%at_step > 0) then
           call write_at_step(mech, table, options, out, error)
         else if (allocated(options%pairs)) then
@@ -333,6 +338,60 @@ contains
       end if
     end if
   end subroutine guard_inputs
+
+  !> guard_finite for the figures of the run's summary (the SUMMARY block of the table,
+  !> --format summary, a sweep's rows): each summarized column's mean and the driver's
+  !> work. The means are averages of finite values and kept in range (see column_stats);
+  !> only a work beyond the largest real is left, an error (exit 3) naming it.
+  pure subroutine guard_summary(table, kinematics, error)
+    !> The results (all rows tallied).
+    type(step_table_t), intent(in) :: table
+    !> Whether the kinematics columns are summarized too.
+    logical, intent(in) :: kinematics
+    !> The error, if a figure is not finite.
+    type(error_t), allocatable, intent(out) :: error
+    type(column_stats_t) :: s
+    real(wp) :: work
+    logical :: known
+    integer :: c
+    if (table%tallied_rows == 0) return
+    do c = 1, size(table%columns)
+      if (.not. summarized(table, c, kinematics)) cycle
+      s = column_stats(table, c)
+      if (ieee_is_finite(s%mean)) cycle
+      call fatal_error(error, exit_geometry, table%deck//": &"//table%mechanism//": the mean of "// &
+        table%columns(c)%name//" over the run is not finite (overflow: the deck's magnitudes are out of the "// &
+        "representable range)")
+      return
+    end do
+    call drive_work(table, work, known)
+    if (known .and. .not. ieee_is_finite(work)) then
+      call fatal_error(error, exit_geometry, table%deck//": &"//table%mechanism//": the work of "// &
+        table%driver//" over the run is not finite (overflow: the deck's magnitudes are out of the "// &
+        "representable range)")
+    end if
+  end subroutine guard_summary
+
+  !> The SVG maps every value to the page through ranges, tick steps and means (sums of
+  !> products of two values); a value beyond `drawable_limit` in magnitude would overflow
+  !> them: a geometry error (exit 3) naming the step and the column, before anything is drawn.
+  pure subroutine guard_drawable(table, error)
+    !> The results.
+    type(step_table_t), intent(in) :: table
+    !> The error, if a value cannot be drawn.
+    type(error_t), allocatable, intent(out) :: error
+    !> Largest magnitude drawn (its products and sums over 10^6 rows stay finite).
+    real(wp), parameter :: drawable_limit = 1.0e150_wp
+    integer :: k, c
+    do k = 1, table%row_count()
+      do c = 1, size(table%columns)
+        if (abs(table%rows(c, k)) <= drawable_limit) cycle
+        call fatal_error(error, exit_geometry, table%deck//": &"//table%mechanism//": "// &
+          row_text(table, k)//": "//table%columns(c)%name//" is too large to draw (magnitude above 1e150)")
+        return
+      end do
+    end do
+  end subroutine guard_drawable
 
   !> "step k (phi1 = x deg)" or "stage k".
   pure function row_text(table, k) result(text)
