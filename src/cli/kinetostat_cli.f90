@@ -7,7 +7,7 @@ module kinetostat_cli
   use kinetostat_error, only: error_t, fatal_error, exit_success, exit_usage, exit_input, exit_warning
   use kinetostat_deck, only: deck_source_t, load_deck, read_group_name, set_max_deck_size
   use kinetostat_override, only: override_t, parse_override, apply_overrides
-  use kinetostat_sweep, only: vary_t, parse_vary, run_sweep, variant_result_t
+  use kinetostat_sweep, only: vary_t, parse_vary, run_sweep, variant_result_t, allow_selfcheck_failure_in_sweep
   use kinetostat_posix, only: stderr_is_terminal, cpu_count
   use kinetostat_text, only: int_str, printable
   use kinetostat_run, only: format_summary
@@ -18,7 +18,6 @@ module kinetostat_cli
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_labels, only: lang_from_name
   use kinetostat_run, only: run_options_t, run_mechanism, format_from_name, format_names, format_svg
-  use kinetostat_table_writer, only: selfcheck_verdict
   use kinetostat_registry, only: create_mechanism, known_kinds, known_columns
   use kinetostat_step_table, only: column_t
   use kinetostat_diff, only: diff_options_t, diff_outputs
@@ -31,12 +30,9 @@ module kinetostat_cli
   !> One-line usage, printed with usage errors.
   character(*), parameter :: usage_line = "usage: kinetostat DECK|- [--set NAME=VALUE]... [-o FILE] " // &
     "[--format table|csv|json|svg|summary] [--pairs LIST] [--at K] [--lang en|ru] [--kinematics] " // &
-    "[--frame global|link] [--quiet] [--strict] | " // &
+    "[--frame global|link] [--max-deck-size BYTES] [--allow-selfcheck-failure] [--quiet] [--strict] | " // &
     "kinetostat sweep DECK --vary NAME=FROM:TO:COUNT... [--part K/N] [--jobs N] | " // &
     "kinetostat template KIND [-o FILE] | kinetostat diff A B [--rtol R] [--atol A] | --help | --version"
-
-  !> Warning line when a run's self-check exceeds its tolerance.
-  character(*), parameter :: selfcheck_warning_fmt = '(a,es9.2,a,es9.2)'
 
   !> Help text (the kinds are appended from the registry).
   character(*), parameter :: help_lines(*) = [character(len=92) :: &
@@ -76,7 +72,9 @@ module kinetostat_cli
     "            runs its variants in N processes (default: one per processor), same bytes", &
     "--max-deck-size BYTES  the largest deck read (default 268435456, 256 MiB); a longer", &
     "            file, or endless input such as /dev/zero, is an input error", &
-    "--strict    a run that warns (self-check above its limit, a dead position between", &
+    "--allow-selfcheck-failure  a self-check above its limit is a warning and the output is", &
+    "            written (by default it is an error, exit 3, and nothing is written)", &
+    "--strict    a run that warns (a self-check failure allowed, a dead position between", &
     "            steps, a jammed cam or lost contact, a coarse step near a load edge)", &
     "            exits 4; the output is still written", &
     "-h, --help  this text;  -V, --version  the version", &
@@ -91,8 +89,9 @@ module kinetostat_cli
     "  Prints the first differences ('step 2, column F16: 2741.19 vs 2741.25 (rel 2.2e-05)')", &
     "  and exits 0 same, 1 different, 2 unreadable or not the same mechanism/columns.", &
     "", &
-    "Exit codes: 0 ok, 1 usage, 2 input or output error, 3 geometry error or a result", &
-    "that is not finite (the step is named), 4 warnings with --strict (output written)."]
+    "Exit codes: 0 ok, 1 usage, 2 input or output error, 3 geometry error, a result that", &
+    "is not finite or a failed self-check (the step is named), 4 warnings with --strict", &
+    "(output written)."]
 
   !> Usage of the diff subcommand (its errors exit 2: exit 1 means "different").
   character(*), parameter :: diff_usage = "usage: kinetostat diff A B [--rtol R] [--atol A] [--quiet]"
@@ -369,6 +368,7 @@ contains
     if (jobs == 0) jobs = cpu_count()
     call load_deck(args%deck, source, error)
     if (allocated(error)) return
+    call allow_selfcheck_failure_in_sweep(args%options%allow_selfcheck_failure)
     if (allocated(args%options%overrides)) then
       sets = args%options%overrides
     else
@@ -509,7 +509,7 @@ contains
   end subroutine write_template
 
   !> Warnings of a successful run, one stderr line each unless `quiet`: the mechanism's
-  !> remarks, a failed self-check.
+  !> remarks, a failed self-check allowed by --allow-selfcheck-failure.
   subroutine warn(table, quiet, count)
     !> The run's results.
     type(step_table_t), intent(in) :: table
@@ -525,14 +525,6 @@ contains
       do i = 1, table%warning_count()
         write (error_unit, '(a)') printable(prefix//table%warnings(i)%text)
       end do
-    end if
-    if (.not. table%has_selfcheck .or. table%row_count() == 0) return
-    if (selfcheck_verdict(table%max_residual) /= "OK" .or. selfcheck_verdict(table%max_mismatch) /= "OK") then
-      count = count + 1
-      if (quiet) return
-      write (error_unit, selfcheck_warning_fmt) prefix// &
-        "self-check failed (a bug; please report): max equilibrium residual", table%max_residual, &
-        ", max "//table%driver//" mismatch", table%max_mismatch
     end if
   end subroutine warn
 
@@ -577,6 +569,8 @@ contains
         args%quiet = .true.
       case ("--strict")
         args%strict = .true.
+      case ("--allow-selfcheck-failure")
+        args%options%allow_selfcheck_failure = .true.
       case ("--kinematics")
         args%options%kinematics = .true.
       case ("-o", "--output")
