@@ -386,7 +386,16 @@ contains
         "the driving effort ("//driver_text(actuator, fs%driver_frictionless)//" without friction, "// &
         driver_text(actuator, driver_of(step))//" with it; largest friction load in "// &
         pair_text(friction, maxloc(rate, 1))//")")
+      return
     end if
+
+    ! a sliding pair's reported reaction is the whole reaction: its normal force (kept in
+    ! step%n, the <F>N column) plus the friction force along the sliding line, which the
+    ! solve carried as a load of its own (the load on "this" link: -Q * sense * t)
+    do i = 1, np
+      if (.not. pg(i)%prismatic .or. .not. friction(i)%f > 0.0_wp) cycle
+      step%f(:, i) = step%f(:, i) - effort(i) * pg(i)%sense * pg(i)%t
+    end do
 
   contains
 
