@@ -29,9 +29,9 @@ module kinetostat_deck_reader
       type(c_ptr) :: stream
     end function c_fopen
     function c_fread(buf, size, count, stream) bind(c, name="fread") result(got)
-      import :: c_ptr, c_char, c_size_t
+      import :: c_ptr, c_char, c_size_t, chunk
       implicit none
-      character(kind=c_char), intent(inout) :: buf(*)
+      character(kind=c_char), intent(out) :: buf(chunk)
       integer(c_size_t), value :: size, count
       type(c_ptr), value :: stream
       integer(c_size_t) :: got
@@ -49,10 +49,10 @@ module kinetostat_deck_reader
       integer(c_int) :: status
     end function c_fclose
     function c_read(fd, buf, count) bind(c, name="read") result(got)
-      import :: c_int, c_char, c_size_t, c_long
+      import :: c_int, c_char, c_size_t, c_long, chunk
       implicit none
       integer(c_int), value :: fd
-      character(kind=c_char), intent(inout) :: buf(*)
+      character(kind=c_char), intent(out) :: buf(chunk)
       integer(c_size_t), value :: count
       integer(c_long) :: got
     end function c_read
