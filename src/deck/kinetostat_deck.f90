@@ -248,7 +248,7 @@ contains
       if (text(1:3) == bom) first = 4
     end if
     source%path = name
-    if (index(text, achar(255)) > 0) then
+    if (index(text, char(255)) > 0) then
       call records_from_text(without_comment_ff(text(first:)), source, cut_width)
     else
       call records_from_text(text(first:), source, cut_width)
@@ -281,14 +281,14 @@ contains
       if (.not. in_group) then
         if (line_start .and. text(i:i) == "&") then
           in_group = .true.
-        else if (text(i:i) == achar(255)) then
+        else if (text(i:i) == char(255)) then
           clean(i:i) = " "
         end if
         if (text(i:i) /= " " .and. text(i:i) /= achar(9)) line_start = .false.
         cycle
       end if
       if (comment) then
-        if (text(i:i) == achar(255)) clean(i:i) = " "
+        if (text(i:i) == char(255)) clean(i:i) = " "
       else if (quote /= " ") then
         if (text(i:i) == quote) quote = " "
       else if (text(i:i) == "'" .or. text(i:i) == '"') then
@@ -1386,7 +1386,7 @@ contains
       "0123456789abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ_+-.,:* "//tab
     character(len=:), allocatable :: line, name
     character(len=1) :: quote, c
-    integer :: k, i, start, open_at, quote_line, j, e
+    integer :: k, i, start, open_at, quote_line
     logical :: started
     quote = " "
     quote_line = 0
@@ -1412,8 +1412,9 @@ contains
       do while (i <= len(line))
         c = line(i:i)
         if (quote /= " ") then
-          if (c == achar(255)) then
-            call syntax_error(k, "byte \xFF in a text in quotes cannot be read (save the deck as UTF-8)")
+          if (c == char(255)) then
+            call syntax_failure(source, group, k, line, open_at, name, &
+              "byte \xFF in a text in quotes cannot be read (save the deck as UTF-8)", error)
             return
           end if
           if (c == quote) then
@@ -1430,8 +1431,9 @@ contains
           if (c == ")") then
             open_at = 0
           else if (index(in_parentheses, c) == 0) then
-            call syntax_error(k, "'"//printable(c)//"' inside parentheses (a subscript like dyad(2) "// &
-              "or a value like (1.0, 2.0) holds numbers only)")
+            call syntax_failure(source, group, k, line, open_at, name, &
+              "'"//printable(c)//"' inside parentheses (a subscript like dyad(2) "// &
+              "or a value like (1.0, 2.0) holds numbers only)", error)
             return
           end if
         else if (c == "'" .or. c == '"') then
@@ -1442,12 +1444,12 @@ contains
         else if (c == "(") then
           open_at = i
         else if (c == ")") then
-          call syntax_error(k, "')' without '('")
+          call syntax_failure(source, group, k, line, open_at, name, "')' without '('", error)
           return
         else if (c == "=") then
           name = designator_before(line(1:i - 1))
           if (len(name) == 0) then
-            call syntax_error(k, "'=' without a variable name before it")
+            call syntax_failure(source, group, k, line, open_at, name, "'=' without a variable name before it", error)
             return
           end if
         else if (c == "/" .or. c == "$" .or. c == "&") then
@@ -1456,44 +1458,61 @@ contains
         i = i + 1
       end do
       if (open_at > 0) then
-        call syntax_error(k, "unclosed '(' (a subscript like dyad(2) or a value like (1.0, 2.0) "// &
-          "must close on its line)")
+        call syntax_failure(source, group, k, line, open_at, name, &
+          "unclosed '(' (a subscript like dyad(2) or a value like (1.0, 2.0) must close on its line)", error)
         return
       end if
     end do
     if (quote /= " ") then
-      call syntax_error(quote_line, "unclosed quote "//quote//" (a text must end with the quote it starts with)")
+      call syntax_failure(source, group, quote_line, "", 0, name, &
+        "unclosed quote "//quote//" (a text must end with the quote it starts with)", error)
     end if
-  contains
-    !> The error at line `at`.
-    subroutine syntax_error(at, reason)
-      integer, intent(in) :: at
-      character(*), intent(in) :: reason
-      character(len=:), allocatable :: who
-      who = name
-      if (at == k .and. open_at > 0) then
-        ! the name written just before the '(' (a designator, or a value's text)
-        j = open_at - 1
-        do while (j >= 1)
-          if (index(" "//tab, line(j:j)) == 0) exit
-          j = j - 1
-        end do
-        e = j
-        do while (j >= 1)
-          if (index("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_%()", line(j:j)) == 0) exit
-          j = j - 1
-        end do
-        if (e > j .and. e >= 1) then
-          if (len(who) == 0 .or. index(line(open_at:), "=") > 0 .or. e == open_at - 1) then
-            who = line(j + 1:open_at)
-          end if
-        end if
-      end if
-      if (len(who) == 0) who = "(no variable yet)"
-      call fatal_error(error, exit_input, source%path//":"//int_str(at)//": &"//group//": "// &
-        clipped(printable(who))//": "//reason)
-    end subroutine syntax_error
   end subroutine check_namelist_syntax
+
+  !> The pre-check's error at line `at`: "<deck>:<at>: &<group>: <variable>: <reason>"; the
+  !> variable is the name written just before an unclosed '(' (at `open_at` of `line`, 0:
+  !> none) when there is one, else `name` (the last assigned).
+  pure subroutine syntax_failure(source, group, at, line, open_at, name, reason, error)
+    !> The deck.
+    type(deck_source_t), intent(in) :: source
+    !> Group name.
+    character(*), intent(in) :: group
+    !> Line of the fault.
+    integer, intent(in) :: at
+    !> Its text ("" when not needed).
+    character(*), intent(in) :: line
+    !> Column of an unclosed '(' on it (0: none).
+    integer, intent(in) :: open_at
+    !> The variable of the last '=' ("" when none yet).
+    character(*), intent(in) :: name
+    !> Why.
+    character(*), intent(in) :: reason
+    !> The input error.
+    type(error_t), allocatable, intent(out) :: error
+    character(len=*), parameter :: tab = achar(9)
+    character(len=:), allocatable :: who
+    integer :: j, e
+    who = name
+    if (open_at > 0) then
+      ! the name written just before the '(' (a designator, or a value's text)
+      j = open_at - 1
+      do while (j >= 1)
+        if (index(" "//tab, line(j:j)) == 0) exit
+        j = j - 1
+      end do
+      e = j
+      do while (j >= 1)
+        if (index("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_%()", line(j:j)) == 0) exit
+        j = j - 1
+      end do
+      if (e > j .and. e >= 1) then
+        if (len(who) == 0 .or. index(line(open_at:), "=") > 0 .or. e == open_at - 1) who = line(j + 1:open_at)
+      end if
+    end if
+    if (len(who) == 0) who = "(no variable yet)"
+    call fatal_error(error, exit_input, source%path//":"//int_str(at)//": &"//group//": "// &
+      clipped(printable(who))//": "//reason)
+  end subroutine syntax_failure
 
   !> The variable name written just before a '=' ("dyad(2)%l2" of "  dyad(2)%l2 "), "" when
   !> the text before the '=' does not end with one.
