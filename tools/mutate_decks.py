@@ -51,6 +51,11 @@ import time
 SEED = 20261121
 #: Seconds per run of the binary (a healthy run takes milliseconds).
 TIMEOUT = 10
+#: Seconds per run of a deck with a text or comment of 10^5 characters or more: its failing
+#: READ is repeated ~15 times by the probe that finds the line, each over records as long as
+#: that line (1.2 s of processor time for 400 000 characters; on a loaded machine more than
+#: TIMEOUT of wall time). Still a hang detector.
+LONG_TIMEOUT = 60
 #: Every how-many-th deck also gets the -o FILE run (all of them: 1).
 OUTFILE_EVERY = 1
 CHECKS = ["exit-code", "non-finite", "error-shape", "no-leftover", "warning-shape", "runtime-text"]
@@ -292,19 +297,19 @@ def derive_decks(data_dir, seed=None, scale=1):
     return decks
 
 
-def run(binary, args, cwd, endless_stdin=False):
+def run(binary, args, cwd, endless_stdin=False, timeout=TIMEOUT):
     try:
         if endless_stdin:
             # `yes | kinetostat -`: an endless pipe, closed when the program exits
             yes = subprocess.Popen(["yes"], stdout=subprocess.PIPE)
             try:
-                p = subprocess.run([binary] + args, cwd=cwd, stdin=yes.stdout, capture_output=True, timeout=TIMEOUT)
+                p = subprocess.run([binary] + args, cwd=cwd, stdin=yes.stdout, capture_output=True, timeout=timeout)
             finally:
                 yes.stdout.close()
                 yes.kill()
                 yes.wait()
         else:
-            p = subprocess.run([binary] + args, cwd=cwd, capture_output=True, timeout=TIMEOUT,
+            p = subprocess.run([binary] + args, cwd=cwd, capture_output=True, timeout=timeout,
                                stdin=subprocess.DEVNULL)
         return p.returncode, p.stdout.decode("utf-8", "replace"), p.stderr.decode("utf-8", "replace")
     except subprocess.TimeoutExpired as exc:
@@ -352,7 +357,7 @@ def check_deck(job):
             if with_file:
                 modes.append(("-o", ["deck.nml", "--format", "csv", "-o", "out.csv"] + extra))
         for mode, args in modes:
-            rc, out, err = run(binary, args, work, stdin_endless)
+            rc, out, err = run(binary, args, work, stdin_endless, LONG_TIMEOUT if "_long_" in name else TIMEOUT)
             if extra is None and rc != 2:
                 failures.append(("exit-code", mode, "endless input: exit %s, expected 2 (the deck limit)" % rc))
             if mode == "table":
@@ -372,7 +377,7 @@ def check_deck(job):
                     if os.path.exists(p):
                         os.remove(p)
             if rc == "timeout" or not isinstance(rc, int) or rc not in (0, 2, 3):
-                what = "timeout after %d s" % TIMEOUT if rc == "timeout" else (
+                what = "timeout after %d s" % (LONG_TIMEOUT if "_long_" in name else TIMEOUT) if rc == "timeout" else (
                     "killed by signal %d" % -rc if rc < 0 else "exit %d" % rc)
                 failures.append(("exit-code", mode, "%s; stderr: %s" % (what, err.strip()[:200])))
             for label, text in (("stdout", out), ("file", file_text)):
