@@ -427,7 +427,7 @@ contains
       integer :: it
       w_best = -sense * huge(1.0_wp)
       p_best = cycle%node(k)
-      inset = 1.0e-9_wp * (cycle%node(k + 1) - cycle%node(k))
+      inset = 1.0e-6_wp * (cycle%node(k + 1) - cycle%node(k))
       a = cycle%node(k) + inset
       b = cycle%node(k + 1) - inset
       if (.not. (sense * g_of(a) > 0.0_wp .and. sense * g_of(b) < 0.0_wp)) return
