@@ -12,6 +12,9 @@ module test_dynamics
   use kinetostat_pr3207_layout, only: pr3207_solve
   use kinetostat_pr3207_dynamics, only: pr3207_source_t, pr3207_cycle
   use kinetostat_dynamics, only: reduced_t, cycle_t, motion_t, motion_at, dynamics_given
+  use kinetostat_assur, only: assur_step_t, assur_step
+  use kinetostat_assur_deck, only: assur_deck_t, read_assur_deck
+  use kinetostat_assur_dynamics, only: assur_reduced_at
   use test_harness, only: test_counts_t, check_close, check_true
   implicit none
   private
@@ -27,7 +30,40 @@ contains
     type(test_counts_t), intent(inout) :: t
     call test_pr3207_reduced(t)
     call test_pr3207_cycle(t)
+    call test_assur_reduced(t)
   end subroutine run_dynamics_tests
+
+  !> The generic engine's reduced quantities on the twin deck data/assur_pr3207.nml: equal to
+  !> PR 3207's (an independent derivation) and M_red = -M1 of its force analysis at rest.
+  subroutine test_assur_reduced(t)
+    type(test_counts_t), intent(inout) :: t
+    real(wp), parameter :: angles_deg(*) = [0.0_wp, 33.0_wp, 95.0_wp, 140.0_wp, 200.0_wp, 264.0_wp, 300.0_wp]
+    type(assur_deck_t) :: deck
+    type(error_t), allocatable :: error
+    type(deck_source_t) :: source
+    type(reduced_t) :: red
+    type(assur_step_t) :: step
+    real(wp) :: r(3), phi, f5c
+    character(len=32) :: at
+    integer :: i
+    call load_deck("data/assur_pr3207.nml", source, error)
+    if (.not. allocated(error)) call read_assur_deck(source, deck, error)
+    call check_true(t, "read data/assur_pr3207.nml", .not. allocated(error), "deck rejected")
+    if (allocated(error)) return
+    do i = 1, size(angles_deg)
+      write (at, '(" at phi1=",f7.2)') angles_deg(i)
+      phi = angles_deg(i) * deg_to_rad
+      f5c = merge(3000.0_wp, 0.0_wp, angles_deg(i) >= 95.0_wp .and. angles_deg(i) <= 265.0_wp)
+      red = assur_reduced_at(deck, phi)
+      r = pr3207_reduced(ref, phi, f5c)
+      call check_close(t, "assur J_red = pr3207 J_red"//trim(at), r(1), red%j, 1.0e-12_wp, 1.0e-14_wp)
+      call check_close(t, "assur dJ_red = pr3207 dJ_red"//trim(at), r(2), red%dj, 1.0e-11_wp, 1.0e-12_wp)
+      call check_close(t, "assur M_red = pr3207 M_red"//trim(at), r(3), red%m, 1.0e-12_wp, 1.0e-10_wp)
+      call assur_step(deck%mech, phi, 0.0_wp, 0.0_wp, [f5c], [real(wp) ::], step, error)
+      call check_true(t, "assur step at rest"//trim(at), .not. allocated(error), "error")
+      call check_close(t, "assur M_red vs -M1 (inertia off)"//trim(at), -step%m1, red%m, 1.0e-11_wp, 1.0e-9_wp)
+    end do
+  end subroutine test_assur_reduced
 
   !> Kinetic energy of PR 3207's links at crank angle phi (rad) and omega1 = 1, from the
   !> positions alone (central differences, step h).

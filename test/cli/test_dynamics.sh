@@ -59,3 +59,23 @@ expect_input_error dynamics-omega-positive "omega1: must be > 0" "$(deck_with dy
 expect_input_error dynamics-per-step-load "two-value form" "$(deck_with dyn_array data/pr3207.nml "s/f5c_work = 3000, f5c_idle = 0/f5c = 13*100, dynamics = 'steady', delta = 0.1/; /phi_cut_/d")"
 expect_input_error dynamics-delta-without "need dynamics" "$(deck_with dyn_stray data/pr3207.nml "s/dphi = 30/dphi = 30, delta = 0.1/")"
 expect_input_error dynamics-given-delta "is found with dynamics = 'given'" "$(deck_with dyn_gd "$fw" "s/dynamics = 'steady'/dynamics = 'given', j_flywheel = 300/")"
+
+# --- the generic twin gives the same numbers (relative 1e-9)
+run_ks "$fw" --format json; cp "$out" "$cli_tmp/twin_a.json"
+run_ks data/assur_pr3207_flywheel.nml --format json; cp "$out" "$cli_tmp/twin_b.json"
+if python3 - "$cli_tmp/twin_a.json" "$cli_tmp/twin_b.json" <<'PY'
+import json, sys
+a, b = (json.load(open(f)) for f in sys.argv[1:3])
+def close(x, y, scale): return abs(x - y) <= 1e-9 * max(abs(x), abs(y), scale)
+for k, v in a["dynamics"].items():
+    assert close(v, b["dynamics"][k], 1e-12), (k, v, b["dynamics"][k])
+ca, cb = [c["name"] for c in a["columns"]], [c["name"] for c in b["columns"]]
+for name in ["phi1", "M1", "J_red", "dJ_red", "M_red", "dT", "omega1", "eps1", "t"]:
+    i, j = ca.index(name), cb.index(name)
+    scale = max(abs(r[i]) for r in a["rows"])
+    for ra, rb in zip(a["rows"], b["rows"]):
+        assert close(ra[i], rb[j], scale), (name, ra[i], rb[j])
+PY
+then pass; else fail dynamics-generic-twin "data/assur_pr3207_flywheel.nml differs from data/pr3207_flywheel.nml"; fi
+expect_input_error dynamics-assur-actuator "not with a linear actuator" "$(deck_with dyn_act data/assur_pr3050.nml "s/^\/$/  dynamics = 'steady', delta = 0.05\n\//")"
+expect_input_error dynamics-assur-friction "friction in the pairs" "$(deck_with dyn_fr data/assur_pr3207_flywheel.nml "s/crank_s = 0, 0 /crank_s = 0, 0, crank_f = 0.1, crank_r = 0.02 /")"
