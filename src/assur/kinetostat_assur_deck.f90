@@ -364,16 +364,10 @@ contains
               source=unset_real)
 
     read (source%records, nml=assur, iostat=ios, iomsg=msg)
-    if (ios /= 0) then
-      ! find the line and the assignment that failed (gfortran's message does not say)
-      call probe%start(source, ios, msg)
-      do while (probe%more(source))
-        read (probe%records, nml=assur, iostat=ios, iomsg=msg)
-        call probe%take(ios, msg)
-      end do
-      call probe%report(source, ctx, error)
-      return
-    end if
+    do while (probe%retry(source, ios, msg)) ! on failure: find the line and the assignment
+      read (probe%records, nml=assur, iostat=ios, iomsg=msg)
+    end do
+    if (probe%failed(source, ctx, error)) return
 
     call require_rule(ctx, "title", len_trim(title) <= len(deck%title), "longer than "// &
       int_str(len(deck%title))//" characters", error)

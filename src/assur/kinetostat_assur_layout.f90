@@ -79,7 +79,6 @@ module kinetostat_assur_layout
     procedure :: read_deck
     procedure :: solve
     procedure :: write_results
-    procedure :: write_template
     procedure :: sketch
     procedure :: force_plan
     procedure :: mass_model
@@ -92,6 +91,7 @@ contains
     !> The mechanism.
     class(mechanism_t), allocatable, intent(out) :: mech
     allocate (assur_mechanism_t :: mech)
+    mech%template_writer => write_assur_template
     mech%title_en = "KINETOSTAT  ASSUR  FORCE ANALYSIS OF A LINKAGE OF CLASS-II ASSUR GROUPS"
     mech%title_ru = "KINETOSTAT  ASSUR  СИЛОВОЙ РАСЧЕТ МЕХАНИЗМА ИЗ ГРУПП АССУРА II" // &
       " КЛАССА"
@@ -106,12 +106,6 @@ contains
     self%source%deck = self%deck
     if (self%deck%dyn%mode >= dynamics_steady) call assur_cycle(self%deck, source%path, self%cycle, error)
   end subroutine read_deck
-
-  pure subroutine write_template(self, out)
-    class(assur_mechanism_t), intent(in) :: self
-    type(text_buffer_t), intent(inout) :: out
-    call write_assur_template(out)
-  end subroutine write_template
 
   !> The topology for a drawing: every moving link joins the joints J<pair> of its pairs (a
   !> dyad's link a: pairs 1, 2; link b: pairs 2, 3; the crank: its pivot; each link also the

@@ -114,16 +114,10 @@ contains
     allocate (theta(capacity(1)), f2(capacity(2)), vdir(capacity(3)), ds_dphi(capacity(4)), source=unset_real)
 
     read (source%records, nml=cam, iostat=ios, iomsg=msg)
-    if (ios /= 0) then
-      ! find the line and the assignment that failed (gfortran's message does not say)
-      call probe%start(source, ios, msg)
-      do while (probe%more(source))
-        read (probe%records, nml=cam, iostat=ios, iomsg=msg)
-        call probe%take(ios, msg)
-      end do
-      call probe%report(source, ctx, error)
-      return
-    end if
+    do while (probe%retry(source, ios, msg)) ! on failure: find the line and the assignment
+      read (probe%records, nml=cam, iostat=ios, iomsg=msg)
+    end do
+    if (probe%failed(source, ctx, error)) return
 
     select case (lower(trim(adjustl(follower))))
     case ("", "translating")

@@ -70,12 +70,11 @@ module kinetostat_deck
   !> line (bisection: the first line whose copy fails), then after each assignment on that
   !> line (a copy's records are the deck's, the line cut short is cut into records as the
   !> deck's lines are). Use:
-  !>     call probe%start(source, ios, msg)
-  !>     do while (probe%more(source))
+  !>     read (source%records, nml=group, iostat=ios, iomsg=msg)
+  !>     do while (probe%retry(source, ios, msg))
   !>       read (probe%records, nml=group, iostat=ios, iomsg=msg)
-  !>       call probe%take(ios, msg)
   !>     end do
-  !>     call probe%report(source, ctx, error)
+  !>     if (probe%failed(source, ctx, error)) return
   type :: namelist_probe_t
     !> The copy to READ next (records of an internal file).
     character(len=:), allocatable :: records(:)
@@ -101,7 +100,11 @@ module kinetostat_deck
     integer, allocatable :: starts(:)
     !> The failing assignment on that line (0: not known).
     integer :: piece = 0
+    !> Whether the READ of the whole deck failed and the probe has started (see retry).
+    logical :: started = .false.
   contains
+    procedure :: retry => probe_retry
+    procedure :: failed => probe_failed
     procedure :: start => probe_start
     procedure :: more => probe_more
     procedure :: take => probe_take
@@ -720,6 +723,42 @@ contains
         trim(msg)//" (unknown variable, wrong type, or too many array values)")
     end if
   end subroutine namelist_failure
+
+  !> After the READ of the whole deck (iostat `ios`, iomsg `msg`): false when it read;
+  !> otherwise the probe starts, and each call takes the result of the READ of the last copy
+  !> and prepares the next one in `records` (start, take, more); false when the place is found.
+  logical function probe_retry(self, source, ios, msg)
+    class(namelist_probe_t), intent(inout) :: self
+    !> The deck.
+    type(deck_source_t), intent(in) :: source
+    !> iostat of the last READ (of the whole deck, then of `records`).
+    integer, intent(in) :: ios
+    !> iomsg of that READ.
+    character(*), intent(in) :: msg
+    probe_retry = .false.
+    if (self%started) then
+      call self%take(ios, msg)
+    else
+      if (ios == 0) return
+      call self%start(source, ios, msg)
+      self%started = .true.
+    end if
+    probe_retry = self%more(source)
+  end function probe_retry
+
+  !> Whether the READ of the deck failed (after retry): then `error` names the line, the
+  !> assignment and the variable.
+  logical function probe_failed(self, source, ctx, error)
+    class(namelist_probe_t), intent(in) :: self
+    !> The deck.
+    type(deck_source_t), intent(in) :: source
+    !> Deck and group names for the message.
+    type(deck_context_t), intent(in) :: ctx
+    !> The error, when the READ failed.
+    type(error_t), allocatable, intent(out) :: error
+    probe_failed = self%started
+    if (probe_failed) call self%report(source, ctx, error)
+  end function probe_failed
 
   !> Start looking for the place of a failed READ of the whole deck (iostat `ios`, iomsg `msg`).
   subroutine probe_start(self, source, ios, msg)

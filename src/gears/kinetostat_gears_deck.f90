@@ -102,16 +102,10 @@ contains
     z1 = unset_real; z2 = unset_real; z3 = unset_real; k = unset_real
 
     read (source%records, nml=gears, iostat=ios, iomsg=msg)
-    if (ios /= 0) then
-      ! find the line and the assignment that failed (gfortran's message does not say)
-      call probe%start(source, ios, msg)
-      do while (probe%more(source))
-        read (probe%records, nml=gears, iostat=ios, iomsg=msg)
-        call probe%take(ios, msg)
-      end do
-      call probe%report(source, ctx, error)
-      return
-    end if
+    do while (probe%retry(source, ios, msg)) ! on failure: find the line and the assignment
+      read (probe%records, nml=gears, iostat=ios, iomsg=msg)
+    end do
+    if (probe%failed(source, ctx, error)) return
 
     ! layout
     select case (lower(trim(adjustl(layout))))

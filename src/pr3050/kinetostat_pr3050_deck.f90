@@ -132,16 +132,10 @@ contains
     allocate (eps3(capacity(2)), source=unset_real)
 
     read (source%records, nml=pr3050, iostat=ios, iomsg=msg)
-    if (ios /= 0) then
-      ! find the line and the assignment that failed (gfortran's message does not say)
-      call probe%start(source, ios, msg)
-      do while (probe%more(source))
-        read (probe%records, nml=pr3050, iostat=ios, iomsg=msg)
-        call probe%take(ios, msg)
-      end do
-      call probe%report(source, ctx, error)
-      return
-    end if
+    do while (probe%retry(source, ios, msg)) ! on failure: find the line and the assignment
+      read (probe%records, nml=pr3050, iostat=ios, iomsg=msg)
+    end do
+    if (probe%failed(source, ctx, error)) return
 
     ! every missing required variable in one message
     call require_all_set(ctx, [character(len=10) :: "l_ca", "l_cb", "l_cs3", "delta", "l_bs2", "l_s1a", "gamma", "m1", &

@@ -76,7 +76,6 @@ module kinetostat_pr3050_layout
     procedure :: read_deck
     procedure :: solve
     procedure :: write_results
-    procedure :: write_template
     procedure :: sketch
     procedure :: force_plan
     procedure :: mass_model
@@ -89,6 +88,7 @@ contains
     !> The mechanism.
     class(mechanism_t), allocatable, intent(out) :: mech
     allocate (pr3050_mechanism_t :: mech)
+    mech%template_writer => write_pr3050_template
     mech%title_en = "KINETOSTAT  PR 3050  FORCE ANALYSIS OF THE FOUR-BAR WITH AN OSCILLATING HYDRAULIC CYLINDER"
     mech%title_ru = "KINETOSTAT  PR 3050  СИЛОВОЙ РАСЧЕТ ЧЕТЫРЕХЗВЕННОГО" // &
       " МЕХАНИЗМА С КАЧАЮЩИМСЯ ГИДРОЦИЛИНДРОМ"
@@ -100,12 +100,6 @@ contains
     type(error_t), allocatable, intent(out) :: error
     call read_pr3050_deck(source, self%deck, error)
   end subroutine read_deck
-
-  pure subroutine write_template(self, out)
-    class(pr3050_mechanism_t), intent(in) :: self
-    type(text_buffer_t), intent(inout) :: out
-    call write_pr3050_template(out)
-  end subroutine write_template
 
   !> The topology for a drawing: cylinder 1 from A along the axis (through S1), rod 2 from B
   !> (through S2) sliding in it, rocker 3 C-B with its centre of mass S3; pivots C, A; the

@@ -137,16 +137,10 @@ contains
     allocate (f5c(capacity(1)), source=unset_real)
 
     read (source%records, nml=pr3207, iostat=ios, iomsg=msg)
-    if (ios /= 0) then
-      ! find the line and the assignment that failed (gfortran's message does not say)
-      call probe%start(source, ios, msg)
-      do while (probe%more(source))
-        read (probe%records, nml=pr3207, iostat=ios, iomsg=msg)
-        call probe%take(ios, msg)
-      end do
-      call probe%report(source, ctx, error)
-      return
-    end if
+    do while (probe%retry(source, ios, msg)) ! on failure: find the line and the assignment
+      read (probe%records, nml=pr3207, iostat=ios, iomsg=msg)
+    end do
+    if (probe%failed(source, ctx, error)) return
 
     ! every missing required variable in one message
     call require_all_set(ctx, [character(len=6) :: "l_ab", "l_ac", "l_cd", "l_cs3", "m1", "m3", "m5", "j3", "omega1", "dphi"], &

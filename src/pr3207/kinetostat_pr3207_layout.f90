@@ -59,7 +59,6 @@ module kinetostat_pr3207_layout
     procedure :: read_deck
     procedure :: solve
     procedure :: write_results
-    procedure :: write_template
     procedure :: sketch
     procedure :: force_plan
     procedure :: mass_model
@@ -72,6 +71,7 @@ contains
     !> The mechanism.
     class(mechanism_t), allocatable, intent(out) :: mech
     allocate (pr3207_mechanism_t :: mech)
+    mech%template_writer => write_pr3207_template
     mech%title_en = "KINETOSTAT  PR 3207  FORCE ANALYSIS OF THE SIX-BAR SLOTTED-LINK (SHAPER) MECHANISM"
     mech%title_ru = "KINETOSTAT  PR 3207  СИЛОВОЙ РАСЧЕТ ШЕСТИЗВЕННОГО" // &
       " КУЛИСНОГО МЕХАНИЗМА (ПОПЕРЕЧНО-СТРОГАЛЬНОГО)"
@@ -85,12 +85,6 @@ contains
     if (allocated(error)) return
     if (self%deck%dyn%mode >= dynamics_steady) call pr3207_cycle(self%deck, source%path, self%cycle, error)
   end subroutine read_deck
-
-  pure subroutine write_template(self, out)
-    class(pr3207_mechanism_t), intent(in) :: self
-    type(text_buffer_t), intent(inout) :: out
-    call write_pr3207_template(out)
-  end subroutine write_template
 
   !> The topology for a drawing: crank A-B, block 2 at B sliding along the lever C-D, block 4
   !> at D sliding along x in the ram's slot, the ram from its guide (x = 0, along y) to D;

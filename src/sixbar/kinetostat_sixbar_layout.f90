@@ -75,7 +75,6 @@ module kinetostat_sixbar_layout
     procedure :: read_deck
     procedure :: solve
     procedure :: write_results
-    procedure :: write_template
     procedure :: sketch
     procedure :: force_plan
     procedure :: mass_model
@@ -88,6 +87,7 @@ contains
     !> The mechanism.
     class(mechanism_t), allocatable, intent(out) :: mech
     allocate (sixbar_mechanism_t :: mech)
+    mech%template_writer => write_sixbar_template
     mech%title_en = "KINETOSTAT  T.FTN  FORCE ANALYSIS OF THE SIX-BAR CRANK-ROCKER-SLIDER MECHANISM"
     mech%title_ru = "KINETOSTAT  T.FTN  КПФ И УСИЛИЯ" // &
       " КРИВОШИПНО-КОРОМЫСЛОВО-ПОЛЗУННОГО" // &
@@ -100,12 +100,6 @@ contains
     type(error_t), allocatable, intent(out) :: error
     call read_sixbar_deck(source, self%deck, error)
   end subroutine read_deck
-
-  pure subroutine write_template(self, out)
-    class(sixbar_mechanism_t), intent(in) :: self
-    type(text_buffer_t), intent(inout) :: out
-    call write_sixbar_template(out)
-  end subroutine write_template
 
   !> The topology for a drawing (frame 1): crank A-B, rod B-C, rocker C-D-E, rod E-H, slider 5
   !> at H on the guide along x2 (at beta - 180 deg); pivots A, D; gravity -y0.
@@ -374,7 +368,8 @@ contains
     end do
   end subroutine write_results_ru
 
-  !> The moving links: crank 1, connecting rod 2, rocker 3, link 4 and slider 5 (translating), each at its centre of mass; gravity in frame 1.
+  !> The moving links: crank 1, connecting rod 2, rocker 3, link 4 and slider 5 (translating),
+  !> each at its centre of mass; gravity in frame 1.
   pure subroutine mass_model(self, model)
     class(sixbar_mechanism_t), intent(in) :: self
     type(mass_model_t), intent(out) :: model
