@@ -25,7 +25,7 @@ module kinetostat_assur_layout
   use kinetostat_selfcheck, only: link_balance_t, balance_add_couple
   use kinetostat_dynamics, only: cycle_t, motion_t, dynamics_none, dynamics_steady
   use kinetostat_dynamics_table, only: echo_dynamics, add_dynamics_columns, put_dynamics_values, &
-    put_dynamics_figures, note_drive_deviation
+    put_dynamics_figures, note_drive_deviation, note_constant_speed_cost
   use kinetostat_assur_dynamics, only: assur_source_t, assur_cycle, assur_motion
   use kinetostat_assur_friction, only: friction_step_t, assur_friction_step
   use kinetostat_assur_deck, only: assur_deck_t, read_assur_deck, write_assur_template, load_schedule_t, load_constant, &
@@ -349,6 +349,7 @@ contains
       do k = 1, nrow
         call put_dynamics_values(table, k, self%deck%dyn%mode, motions(k))
       end do
+      if (self%deck%dyn%mode >= dynamics_steady) call constant_speed_cost(self%deck, first, last, omega1, table)
       if (self%deck%dyn%mode >= dynamics_steady) call note_drive_deviation(table, maxval(abs(m1 - self%cycle%m_d)), &
         max(abs(self%cycle%m_d), maxval(abs(motions%m)), maxval(abs((self%cycle%j_flywheel + motions%j) * motions%eps))))
     end if
@@ -366,6 +367,34 @@ contains
       if (last == self%deck%n) call friction_summary(self%deck, table%carry(1), table%carry(2), table)
     end if
   end subroutine solve
+
+  !> The peaks of the pair forces with the true motion (the table's magnitude columns) against
+  !> those at the constant mean speed (the block's steps solved again at omega1, eps1 = 0).
+  subroutine constant_speed_cost(deck, first, last, omega1, table)
+    type(assur_deck_t), intent(in) :: deck
+    integer, intent(in) :: first, last
+    !> The deck's constant speed per step, rad/s.
+    real(wp), intent(in) :: omega1(:)
+    type(step_table_t), intent(inout) :: table
+    type(assur_step_t) :: step
+    type(friction_step_t) :: fs
+    type(step_loads_t) :: loads
+    type(error_t), allocatable :: step_error
+    real(wp) :: peak_const(size(deck%pair_name))
+    integer :: kk, ip, c
+    peak_const = 0.0_wp
+    do kk = first, last
+      call solve_one(deck, kk, omega1(kk - first + 1), step, fs, step_error, loads)
+      if (allocated(step_error)) return
+      do ip = 1, size(deck%pair_name)
+        peak_const(ip) = max(peak_const(ip), magnitude(step%f(:, ip)))
+      end do
+    end do
+    do ip = 1, size(deck%pair_name)
+      c = table%column_index(trim(deck%pair_name(ip)))
+      call note_constant_speed_cost(table, trim(deck%pair_name(ip)), maxval(table%rows(c, :)), peak_const(ip))
+    end do
+  end subroutine constant_speed_cost
 
   !> Number of friction values of a row (friction_csv_columns).
   pure integer function friction_row_size(deck)

@@ -8,7 +8,8 @@ module kinetostat_dynamics_table
   use kinetostat_dynamics_deck, only: dynamics_deck_t, dynamics_mode_name
   implicit none
   private
-  public :: echo_dynamics, add_dynamics_columns, put_dynamics_values, put_dynamics_figures, note_drive_deviation
+  public :: note_constant_speed_cost, echo_dynamics, add_dynamics_columns, put_dynamics_values, put_dynamics_figures, &
+    note_drive_deviation
 
 contains
 
@@ -91,5 +92,48 @@ contains
     if (table%first_block()) table%max_drive_deviation = 0.0_wp
     if (scale > 0.0_wp) table%max_drive_deviation = max(table%max_drive_deviation, worst / scale)
   end subroutine note_drive_deviation
+
+  !> What the constant-speed assumption costs for one force column: its peak over the run with
+  !> the true motion and with omega1 = omega_m constant (the largest over the blocks so far),
+  !> and their difference in percent of the constant-speed peak (DYNAMICS block records
+  !> <name>_peak, <name>_peak_constant_speed, <name>_peak_difference).
+  pure subroutine note_constant_speed_cost(table, name, peak_true, peak_const)
+    type(step_table_t), intent(inout) :: table
+    !> Force column ("F16").
+    character(*), intent(in) :: name
+    !> Largest magnitude of the block with the true motion, N.
+    real(wp), intent(in) :: peak_true
+    !> The same at constant speed, N.
+    real(wp), intent(in) :: peak_const
+    integer :: i
+    real(wp) :: t, c
+    i = record_index(name//"_peak")
+    if (i == 0) then
+      call table%dynamics_real(name//"_peak", peak_true, "N")
+      call table%dynamics_real(name//"_peak_constant_speed", peak_const, "N")
+      call table%dynamics_real(name//"_peak_difference", 0.0_wp, "%")
+      i = size(table%dynamics) - 2
+    else
+      table%dynamics(i)%values(1) = max(table%dynamics(i)%values(1), peak_true)
+      table%dynamics(i + 1)%values(1) = max(table%dynamics(i + 1)%values(1), peak_const)
+    end if
+    t = table%dynamics(i)%values(1)
+    c = table%dynamics(i + 1)%values(1)
+    table%dynamics(i + 2)%values(1) = 0.0_wp
+    if (c > 0.0_wp) table%dynamics(i + 2)%values(1) = 100.0_wp * (t - c) / c
+  contains
+    pure integer function record_index(key)
+      character(*), intent(in) :: key
+      integer :: j
+      record_index = 0
+      if (.not. allocated(table%dynamics)) return
+      do j = 1, size(table%dynamics)
+        if (table%dynamics(j)%name == key) then
+          record_index = j
+          return
+        end if
+      end do
+    end function record_index
+  end subroutine note_constant_speed_cost
 
 end module kinetostat_dynamics_table

@@ -18,7 +18,8 @@ module kinetostat_pr3207_layout
   use kinetostat_drawing, only: drawing_t, force_load
   use kinetostat_bodies, only: mass_model_t
   use kinetostat_dynamics, only: cycle_t, motion_t, dynamics_steady
-  use kinetostat_dynamics_table, only: echo_dynamics, add_dynamics_columns, put_dynamics_values, put_dynamics_figures, &
+  use kinetostat_dynamics_table, only: note_constant_speed_cost, echo_dynamics, add_dynamics_columns, &
+    put_dynamics_values, put_dynamics_figures, &
     note_drive_deviation
   use kinetostat_pr3207_dynamics, only: pr3207_cycle, pr3207_motion
   implicit none
@@ -180,6 +181,7 @@ contains
       do k = 1, size(steps)
         call put_dynamics_values(table, k, self%deck%dyn%mode, motions(k))
       end do
+      if (self%deck%dyn%mode >= dynamics_steady) call constant_speed_cost(self%deck, steps, first, last, table)
       if (self%deck%dyn%mode >= dynamics_steady) call note_drive_deviation(table, &
         maxval(abs(steps%m1 - self%cycle%m_d)), max(abs(self%cycle%m_d), maxval(abs(motions%m)), &
         maxval(abs((self%cycle%j_flywheel + motions%j) * motions%eps))))
@@ -191,6 +193,37 @@ contains
     end if
     call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "M1")
   end subroutine solve
+
+  !> The peaks of the pair forces with the true motion against those at omega1 = omega_m.
+  subroutine constant_speed_cost(deck, steps, first, last, table)
+    type(pr3207_deck_t), intent(in) :: deck
+    !> The steps of the block with the true motion.
+    type(pr3207_step_t), intent(in) :: steps(:)
+    integer, intent(in) :: first, last
+    type(step_table_t), intent(inout) :: table
+    type(pr3207_step_t), allocatable :: const(:)
+    integer :: i
+    call pr3207_solve(deck, const, first, last)
+    do i = 1, size(force_names)
+      call note_constant_speed_cost(table, trim(force_names(i)), peak(steps, i), peak(const, i))
+    end do
+  contains
+    pure real(wp) function peak(s, i)
+      type(pr3207_step_t), intent(in) :: s(:)
+      integer, intent(in) :: i
+      integer :: k
+      peak = 0.0_wp
+      do k = 1, size(s)
+        select case (i)
+        case (1); peak = max(peak, norm2(s(k)%f16))
+        case (2); peak = max(peak, norm2(s(k)%f21))
+        case (3); peak = max(peak, norm2(s(k)%f36))
+        case (4); peak = max(peak, norm2(s(k)%f34))
+        case default; peak = max(peak, norm2(s(k)%f56))
+        end select
+      end do
+    end function peak
+  end subroutine constant_speed_cost
 
   !> The row of values of one step. Forces below `noise_rel` times the step's largest
   !> force (and M1 below that force times l_AB) are roundoff: printed as 0 with angle 0.
