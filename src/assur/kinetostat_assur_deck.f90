@@ -320,7 +320,7 @@ contains
     real(wp) :: glob(2, 3)
     logical :: global, s_given(2), crank_s_given, at_given
     !> frame_id and crank_id as integers.
-    integer :: frame_no, crank_no, nd, nf, nm, n_omega, n_eps, n_values, ios, k, d, i
+    integer :: frame_no, crank_no, nd, nf, nm, n_omega, n_eps, n_values, k, d, i
     real(wp) :: crank_at(2), crank_m, crank_j, crank_s(2), omega1, g, gravity_angle, phi_start, dphi
     !> Machine dynamics variables (see kinetostat_dynamics_deck).
     real(wp) :: delta, j_rotor, j_flywheel
@@ -336,7 +336,6 @@ contains
     type(moment_in_t) :: moment(max_moments)
     !> One force's or moment's schedule as read (then copied into the deck).
     type(load_schedule_t) :: load
-    character(len=512) :: msg
     type(deck_context_t) :: ctx
     type(namelist_probe_t) :: probe
     integer, allocatable :: ids(:)
@@ -363,9 +362,9 @@ contains
     allocate (omega1_step(capacity(1)), eps1_step(capacity(2)), step_values(capacity(3)), phi1(capacity(4)), &
               source=unset_real)
 
-    read (source%records, nml=assur, iostat=ios, iomsg=msg)
-    do while (probe%retry(source, ios, msg)) ! on failure: find the line and the assignment
-      read (probe%records, nml=assur, iostat=ios, iomsg=msg)
+    read (source%records, nml=assur, iostat=probe%ios, iomsg=probe%msg)
+    do while (probe%retry(source)) ! on failure: find the line and the assignment
+      read (probe%records, nml=assur, iostat=probe%ios, iomsg=probe%msg)
     end do
     if (probe%failed(source, ctx, error)) return
 

@@ -70,15 +70,15 @@ module kinetostat_deck
   !> line (bisection: the first line whose copy fails), then after each assignment on that
   !> line (a copy's records are the deck's, the line cut short is cut into records as the
   !> deck's lines are). Use:
-  !>     read (source%records, nml=group, iostat=ios, iomsg=msg)
-  !>     do while (probe%retry(source, ios, msg))
-  !>       read (probe%records, nml=group, iostat=ios, iomsg=msg)
+  !>     read (source%records, nml=group, iostat=probe%ios, iomsg=probe%msg)
+  !>     do while (probe%retry(source))
+  !>       read (probe%records, nml=group, iostat=probe%ios, iomsg=probe%msg)
   !>     end do
   !>     if (probe%failed(source, ctx, error)) return
   type :: namelist_probe_t
     !> The copy to READ next (records of an internal file).
     character(len=:), allocatable :: records(:)
-    !> iostat of the READ of `records` (see `take`).
+    !> iostat of the last READ (of the whole deck, then of `records`).
     integer :: ios = 0
     !> iomsg of that READ.
     character(len=512) :: msg = ""
@@ -724,23 +724,22 @@ contains
     end if
   end subroutine namelist_failure
 
-  !> After the READ of the whole deck (iostat `ios`, iomsg `msg`): false when it read;
-  !> otherwise the probe starts, and each call takes the result of the READ of the last copy
-  !> and prepares the next one in `records` (start, take, more); false when the place is found.
-  logical function probe_retry(self, source, ios, msg)
+  !> After the READ of the whole deck into `ios` and `msg`: false when it read; otherwise the
+  !> probe starts, and each call takes the result of the READ of the last copy (in `ios`,
+  !> `msg`) and prepares the next one in `records` (see start, more); false when the place is
+  !> found.
+  logical function probe_retry(self, source)
     class(namelist_probe_t), intent(inout) :: self
     !> The deck.
     type(deck_source_t), intent(in) :: source
-    !> iostat of the last READ (of the whole deck, then of `records`).
-    integer, intent(in) :: ios
-    !> iomsg of that READ.
-    character(*), intent(in) :: msg
+    integer :: whole_ios
+    character(len=len(self%msg)) :: whole_msg
     probe_retry = .false.
-    if (self%started) then
-      call self%take(ios, msg)
-    else
-      if (ios == 0) return
-      call self%start(source, ios, msg)
+    if (.not. self%started) then
+      if (self%ios == 0) return
+      whole_ios = self%ios
+      whole_msg = self%msg
+      call self%start(source, whole_ios, whole_msg)
       self%started = .true.
     end if
     probe_retry = self%more(source)

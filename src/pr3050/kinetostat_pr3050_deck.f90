@@ -111,10 +111,9 @@ contains
     real(wp) :: l_ca, l_cb, l_cs3, delta, l_bs2, l_s1a, gamma, g, m1, m2, m3, j1, j2, j3
     real(wp) :: phi3_start, phi3_end, dphi3
     real(wp), allocatable :: omega3(:), eps3(:)
-    integer :: ios, n_omega3, n_eps3
+    integer :: n_omega3, n_eps3
     !> Elements allocated for each per-step array the deck may give (see deck_array_capacities).
     integer, allocatable :: capacity(:)
-    character(len=512) :: msg
     type(deck_context_t) :: ctx
     type(namelist_probe_t) :: probe
     namelist /pr3050/ l_ca, l_cb, l_cs3, delta, l_bs2, l_s1a, gamma, g, m1, m2, m3, j1, j2, j3, &
@@ -131,9 +130,9 @@ contains
     allocate (omega3(capacity(1)), source=unset_real)
     allocate (eps3(capacity(2)), source=unset_real)
 
-    read (source%records, nml=pr3050, iostat=ios, iomsg=msg)
-    do while (probe%retry(source, ios, msg)) ! on failure: find the line and the assignment
-      read (probe%records, nml=pr3050, iostat=ios, iomsg=msg)
+    read (source%records, nml=pr3050, iostat=probe%ios, iomsg=probe%msg)
+    do while (probe%retry(source)) ! on failure: find the line and the assignment
+      read (probe%records, nml=pr3050, iostat=probe%ios, iomsg=probe%msg)
     end do
     if (probe%failed(source, ctx, error)) return
 
