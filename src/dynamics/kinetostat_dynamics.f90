@@ -142,7 +142,7 @@ contains
     type(cycle_t), intent(out) :: cycle
     type(error_t), allocatable, intent(out) :: error
     real(wp), allocatable :: bounds(:)
-    real(wp) :: b, w, span, scale
+    real(wp) :: b, w, span
     type(reduced_t) :: red
     integer :: i, k, np, pieces, q
     logical :: ok
@@ -199,18 +199,14 @@ contains
       cycle%j(k) = red%j + j_rotor
     end do
     cycle%load_work = cycle%dt(np)
-    scale = max(maxval(abs(cycle%dt)), tiny(1.0_wp))
     cycle%m_d = -cycle%dt(np) / (2.0_wp * pi)
     do k = 0, np
       cycle%dt(k) = cycle%dt(k) + cycle%m_d * (cycle%node(k) - phi0)
     end do
     cycle%dt(np) = 0.0_wp
-    if (cycle%m_d * 2.0_wp * pi < -1.0e-12_wp * scale) then
-      call fatal_error(error, exit_input, where//": dynamics: the loads do net positive work over the cycle ("// &
-        real_str(cycle%load_work)//" J per turn), so the driving moment M_d = "//real_str(cycle%m_d)// &
-        " N*m would brake the machine, not turn it: no steady motion driven at the input")
-      return
-    end if
+    ! M_d < 0 is an engine's case (the loads drive: M_d is the consumer's constant moment);
+    ! a machine that M_d cannot carry through the cycle stops: cycle_given's and
+    ! cycle_steady's errors
   end subroutine cycle_setup
 
   !> The steady cycle with the flywheel that gives the coefficient of speed fluctuation
