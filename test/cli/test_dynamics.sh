@@ -84,3 +84,14 @@ PY
 then pass; else fail dynamics-generic-twin "data/assur_pr3207_flywheel.nml differs from data/pr3207_flywheel.nml"; fi
 expect_input_error dynamics-assur-actuator "not with a linear actuator" "$(deck_with dyn_act data/assur_pr3050.nml "s/^\/$/  dynamics = 'steady', delta = 0.05\n\//")"
 expect_input_error dynamics-assur-friction "friction in the pairs" "$(deck_with dyn_fr data/assur_pr3207_flywheel.nml "s/crank_s = 0, 0 /crank_s = 0, 0, crank_f = 0.1, crank_r = 0.02 /")"
+
+# --- --format summary carries the figures of the DYNAMICS block
+run_ks "$fw" --format summary
+if python3 - "$out" "$cli_tmp/fw.json" <<'PY'
+import csv, json, sys
+h, v = list(csv.reader(open(sys.argv[1])))
+d = json.load(open(sys.argv[2]))["dynamics"]
+for k in ["M_d", "J_flywheel", "J_flywheel_textbook", "omega_max", "omega_min", "delta", "F16_peak_difference"]:
+    assert abs(float(v[h.index(k)]) - d[k]) <= 1e-12 * abs(d[k]), k
+PY
+then pass; else fail dynamics-summary "--format summary lacks the dynamics figures: $(head -c 300 "$out")"; fi
