@@ -38,6 +38,10 @@ module kinetostat_dynamics
   !> Gauss-Legendre weights (8 points, positive half).
   real(wp), parameter :: gl_w(4) = [0.3626837833783620_wp, 0.3137066458778873_wp, &
     0.2223810344533745_wp, 0.1012285362903763_wp]
+  !> The 8 Gauss-Legendre abscissae in increasing order.
+  real(wp), parameter :: gl_xi(8) = [-gl_x(4), -gl_x(3), -gl_x(2), -gl_x(1), gl_x(1), gl_x(2), gl_x(3), gl_x(4)]
+  !> Their weights.
+  real(wp), parameter :: gl_wi(8) = [gl_w(4), gl_w(3), gl_w(2), gl_w(1), gl_w(1), gl_w(2), gl_w(3), gl_w(4)]
 
   !> Reduced quantities at one input angle (to the input link, per unit input speed).
   type :: reduced_t
@@ -81,6 +85,14 @@ module kinetostat_dynamics
     real(wp), allocatable :: j(:)
     !> Time at the panel bounds, s.
     real(wp), allocatable :: time(:)
+    !> M_red at the 8 Gauss-Legendre points of each panel (8, np), N*m.
+    real(wp), allocatable :: m_gl(:, :)
+    !> 1/omega at the 8 Gauss-Legendre points of each panel (8, np), s/rad.
+    real(wp), allocatable :: r_gl(:, :)
+    !> The Lagrange polynomials through the 8 points on [-1, 1], coefficients of xi^0..xi^7:
+    !> an integral from a panel's start to any angle inside it is that of the interpolant
+    !> through the panel's samples (exact for the whole panel: the Gauss-Legendre sum).
+    real(wp) :: basis(8, 8) = 0.0_wp
     !> Constant moment of inertia of the rotor and gear train reduced to the input, kg*m^2.
     real(wp) :: j_rotor = 0.0_wp
     !> Mean speed (omega_max + omega_min)/2, rad/s.
@@ -142,10 +154,9 @@ contains
     type(cycle_t), intent(out) :: cycle
     type(error_t), allocatable, intent(out) :: error
     real(wp), allocatable :: bounds(:)
-    real(wp) :: b, w, span
+    real(wp) :: b, w, span, c, h
     type(reduced_t) :: red
     integer :: i, k, np, pieces, q
-    logical :: ok
 
     cycle%phi0 = phi0
     cycle%j_rotor = j_rotor
@@ -180,14 +191,23 @@ contains
       cycle%node(k) = bounds(i + 1)
     end do
     np = k
-    ! work of M_red at the bounds (stored in dt until M_d is known)
+    ! M_red at each panel's Gauss-Legendre points; its work at the bounds (stored in dt until
+    ! M_d is known)
+    cycle%basis = lagrange_basis()
+    allocate (cycle%m_gl(8, np), cycle%r_gl(8, np))
     cycle%dt(0) = 0.0_wp
     do k = 1, np
-      call integral_m(source, cycle%node(k - 1), cycle%node(k), w, ok)
-      if (.not. ok) then
-        call dead_error(cycle%node(k - 1), where, error)
-        return
-      end if
+      c = 0.5_wp * (cycle%node(k - 1) + cycle%node(k))
+      h = 0.5_wp * (cycle%node(k) - cycle%node(k - 1))
+      do q = 1, 8
+        red = source%at(c + h * gl_xi(q))
+        if (.not. red%ok) then
+          call dead_error(c + h * gl_xi(q), where, error)
+          return
+        end if
+        cycle%m_gl(q, k) = red%m
+      end do
+      w = h * sum(gl_wi * cycle%m_gl(:, k))
       cycle%dt(k) = cycle%dt(k - 1) + w
     end do
     do k = 0, np
@@ -452,7 +472,7 @@ contains
     pure real(wp) function omega_of(phi)
       real(wp), intent(in) :: phi
       real(wp) :: e
-      e = e0 + cycle_dT(source, cycle, phi)
+      e = e0 + cycle_dT(cycle, phi)
       omega_of = sqrt(2.0_wp * max(e, 0.0_wp) / (j_fw + j_at(source, cycle, phi)))
     end function omega_of
   end subroutine extremes
@@ -467,19 +487,55 @@ contains
     j_at = red%j + cycle%j_rotor
   end function j_at
 
-  !> dT at phi (rad, taken into the cycle), J: the panel bound's value and the Gauss-Legendre
-  !> integral from there.
-  pure real(wp) function cycle_dT(source, cycle, phi) result(dt)
-    class(reduced_source_t), intent(in) :: source
+  !> dT at phi (rad, taken into the cycle), J: the panel bound's value and the integral of the
+  !> interpolant through the panel's samples of M_red from there.
+  pure real(wp) function cycle_dT(cycle, phi) result(dt)
     type(cycle_t), intent(in) :: cycle
     real(wp), intent(in) :: phi
-    real(wp) :: x, w
+    real(wp) :: x, h
     integer :: k
-    logical :: ok
     call locate(cycle, phi, x, k)
-    call integral_m(source, cycle%node(k), x, w, ok)
-    dt = cycle%dt(k) + w + cycle%m_d * (x - cycle%node(k))
+    h = 0.5_wp * (cycle%node(k + 1) - cycle%node(k))
+    dt = cycle%dt(k) + h * sum(cycle%m_gl(:, k + 1) * partial_weights(cycle, (x - cycle%node(k)) / h - 1.0_wp)) + &
+         cycle%m_d * (x - cycle%node(k))
   end function cycle_dT
+
+  !> The weights of the samples for the integral from -1 to s (-1 <= s <= 1) of the
+  !> interpolant through the 8 Gauss-Legendre points.
+  pure function partial_weights(cycle, s) result(wt)
+    type(cycle_t), intent(in) :: cycle
+    real(wp), intent(in) :: s
+    real(wp) :: wt(8), moments(8), sp, sm
+    integer :: j
+    sp = s
+    sm = -1.0_wp
+    do j = 1, 8
+      moments(j) = (sp - sm) / real(j, wp)
+      sp = sp * s
+      sm = -sm
+    end do
+    wt = matmul(cycle%basis, moments)
+  end function partial_weights
+
+  !> Coefficients of xi^0 .. xi^7 of the 8 Lagrange polynomials through gl_xi (row i: L_i).
+  pure function lagrange_basis() result(basis)
+    real(wp) :: basis(8, 8), poly(8)
+    integer :: i, j, k, deg
+    do i = 1, 8
+      poly = 0.0_wp
+      poly(1) = 1.0_wp
+      deg = 0
+      do j = 1, 8
+        if (j == i) cycle
+        deg = deg + 1
+        do k = deg + 1, 2, -1
+          poly(k) = (poly(k - 1) - gl_xi(j) * poly(k)) / (gl_xi(i) - gl_xi(j))
+        end do
+        poly(1) = -gl_xi(j) * poly(1) / (gl_xi(i) - gl_xi(j))
+      end do
+      basis(i, :) = poly
+    end do
+  end function lagrange_basis
 
   !> The panel k (node k <= x <= node k+1) of phi taken into the cycle as x.
   pure subroutine locate(cycle, phi, x, k)
@@ -504,63 +560,26 @@ contains
     k = lo
   end subroutine locate
 
-  !> The integral of M_red from a to b (one panel or less), 8-point Gauss-Legendre.
-  pure subroutine integral_m(source, a, b, w, ok)
-    class(reduced_source_t), intent(in) :: source
-    real(wp), intent(in) :: a, b
-    real(wp), intent(out) :: w
-    logical, intent(out) :: ok
-    type(reduced_t) :: r1, r2
-    real(wp) :: c, h
-    integer :: i
-    w = 0.0_wp
-    ok = .true.
-    if (b == a) return
-    c = 0.5_wp * (a + b)
-    h = 0.5_wp * (b - a)
-    do i = 1, 4
-      r1 = source%at(c - h * gl_x(i))
-      r2 = source%at(c + h * gl_x(i))
-      ok = ok .and. r1%ok .and. r2%ok
-      w = w + gl_w(i) * (r1%m + r2%m)
-    end do
-    w = w * h
-  end subroutine integral_m
-
-  !> The time at the panel bounds: t = int dphi/omega, 8-point Gauss-Legendre per panel.
+  !> 1/omega at each panel's Gauss-Legendre points and the time at the panel bounds,
+  !> t = int dphi/omega (8-point Gauss-Legendre per panel).
   pure subroutine finish_time(source, cycle)
     class(reduced_source_t), intent(in) :: source
     type(cycle_t), intent(inout) :: cycle
-    integer :: k
+    real(wp) :: c, h, x
+    integer :: k, q
     cycle%time(0) = 0.0_wp
     do k = 1, size(cycle%node) - 1
-      cycle%time(k) = cycle%time(k - 1) + time_over(source, cycle, cycle%node(k - 1), cycle%node(k))
+      c = 0.5_wp * (cycle%node(k - 1) + cycle%node(k))
+      h = 0.5_wp * (cycle%node(k) - cycle%node(k - 1))
+      do q = 1, 8
+        x = c + h * gl_xi(q)
+        cycle%r_gl(q, k) = 1.0_wp / sqrt(2.0_wp * (cycle%e0 + cycle_dT(cycle, x)) / &
+                                          (cycle%j_flywheel + j_at(source, cycle, x)))
+      end do
+      cycle%time(k) = cycle%time(k - 1) + h * sum(gl_wi * cycle%r_gl(:, k))
     end do
     cycle%period = cycle%time(size(cycle%node) - 1)
   end subroutine finish_time
-
-  !> int_a^b dphi/omega (a, b in one panel), 8-point Gauss-Legendre, s.
-  pure real(wp) function time_over(source, cycle, a, b) result(t)
-    class(reduced_source_t), intent(in) :: source
-    type(cycle_t), intent(in) :: cycle
-    real(wp), intent(in) :: a, b
-    real(wp) :: c, h
-    integer :: i
-    t = 0.0_wp
-    if (b == a) return
-    c = 0.5_wp * (a + b)
-    h = 0.5_wp * (b - a)
-    do i = 1, 4
-      t = t + gl_w(i) * (1.0_wp / speed(c - h * gl_x(i)) + 1.0_wp / speed(c + h * gl_x(i)))
-    end do
-    t = t * h
-  contains
-    pure real(wp) function speed(phi)
-      real(wp), intent(in) :: phi
-      speed = sqrt(2.0_wp * (cycle%e0 + cycle_dT(source, cycle, phi)) / &
-                   (cycle%j_flywheel + j_at(source, cycle, phi)))
-    end function speed
-  end function time_over
 
   !> The motion at input angle phi (rad) of a solved cycle.
   pure function motion_at(source, cycle, phi) result(mo)
@@ -569,17 +588,18 @@ contains
     real(wp), intent(in) :: phi
     type(motion_t) :: mo
     type(reduced_t) :: red
-    real(wp) :: x
+    real(wp) :: x, h
     integer :: k
     red = source%at(phi)
     mo%j = red%j + cycle%j_rotor
     mo%dj = red%dj
     mo%m = red%m
-    mo%dt = cycle_dT(source, cycle, phi)
+    mo%dt = cycle_dT(cycle, phi)
     mo%omega = sqrt(2.0_wp * max(cycle%e0 + mo%dt, 0.0_wp) / (cycle%j_flywheel + mo%j))
     mo%eps = (cycle%m_d + mo%m - 0.5_wp * mo%dj * mo%omega**2) / (cycle%j_flywheel + mo%j)
     call locate(cycle, phi, x, k)
-    mo%t = cycle%time(k) + time_over(source, cycle, cycle%node(k), x)
+    h = 0.5_wp * (cycle%node(k + 1) - cycle%node(k))
+    mo%t = cycle%time(k) + h * sum(cycle%r_gl(:, k + 1) * partial_weights(cycle, (x - cycle%node(k)) / h - 1.0_wp))
   end function motion_at
 
   !> The error of a dead position met in the cycle.
