@@ -607,8 +607,9 @@ contains
     real(wp), intent(in) :: phi
     character(*), intent(in) :: where
     type(error_t), allocatable, intent(out) :: error
-    call fatal_error(error, exit_geometry, where//": dynamics: the cycle passes through a dead position near "// &
-      "the input angle "//real_str(phi * rad_to_deg)//" deg: the reduced quantities are undefined there")
+    call fatal_error(error, exit_geometry, where//": dynamics: the cycle passes through a dead position (or one "// &
+      "that cannot be assembled) near the input angle "//real_str(phi * rad_to_deg)// &
+      " deg: the reduced quantities are undefined there")
   end subroutine dead_error
 
   !> Sort ascending (insertion; few values).

@@ -83,6 +83,7 @@ for name in ["phi1", "M1", "J_red", "dJ_red", "M_red", "dT", "omega1", "eps1", "
 PY
 then pass; else fail dynamics-generic-twin "data/assur_pr3207_flywheel.nml differs from data/pr3207_flywheel.nml"; fi
 expect_input_error dynamics-assur-actuator "not with a linear actuator" "$(deck_with dyn_act data/assur_pr3050.nml "s/^\/$/  dynamics = 'steady', delta = 0.05\n\//")"
+expect_input_error dynamics-dead-position "the cycle passes through a dead position" "$(deck_with dyn_dead data/assur_toggle.nml "s/, n = 3//; s/^\/$/  dynamics = 'steady', delta = 0.05\n\//")" 3
 expect_input_error dynamics-assur-friction "friction in the pairs" "$(deck_with dyn_fr data/assur_pr3207_flywheel.nml "s/crank_s = 0, 0 /crank_s = 0, 0, crank_f = 0.1, crank_r = 0.02 /")"
 
 # --- --format summary carries the figures of the DYNAMICS block
