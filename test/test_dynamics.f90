@@ -15,6 +15,9 @@ module test_dynamics
   use kinetostat_assur, only: assur_step_t, assur_step
   use kinetostat_assur_deck, only: assur_deck_t, read_assur_deck
   use kinetostat_assur_dynamics, only: assur_reduced_at
+  use kinetostat_sixbar, only: sixbar_params_t, sixbar_position_t, sixbar_step_t, sixbar_position, sixbar_step, &
+    sixbar_reduced
+  use kinetostat_sixbar_deck, only: sixbar_deck_t, read_sixbar_deck, sixbar_phi1_deg
   use test_harness, only: test_counts_t, check_close, check_true
   implicit none
   private
@@ -31,7 +34,48 @@ contains
     call test_pr3207_reduced(t)
     call test_pr3207_cycle(t)
     call test_assur_reduced(t)
+    call test_sixbar_reduced(t)
   end subroutine run_dynamics_tests
+
+  !> The T.FTN six-bar (data/sixbar.nml): J_red = 2T at omega1 = 1 from finite differences of
+  !> the positions, dJ_red against differences of J_red, M_red = -M1 at rest.
+  subroutine test_sixbar_reduced(t)
+    type(test_counts_t), intent(inout) :: t
+    real(wp), parameter :: h = 1.0e-5_wp
+    type(sixbar_deck_t) :: deck
+    type(sixbar_params_t) :: still
+    type(error_t), allocatable :: error
+    type(deck_source_t) :: source
+    type(sixbar_position_t) :: pm, pp
+    type(sixbar_step_t) :: s
+    real(wp) :: red(3), rp(3), rm(3), phi, t2
+    character(len=32) :: at
+    integer :: k
+    call load_deck("data/sixbar.nml", source, error)
+    if (.not. allocated(error)) call read_sixbar_deck(source, deck, error)
+    call check_true(t, "read data/sixbar.nml", .not. allocated(error), "deck rejected")
+    if (allocated(error)) return
+    still = deck%p
+    still%omega1 = 0.0_wp
+    do k = 2, deck%n - 1, 3
+      phi = sixbar_phi1_deg(deck, k) * deg_to_rad
+      write (at, '(" at phi1=",f8.2)') phi / deg_to_rad
+      pm = sixbar_position(deck%p, phi - h)
+      pp = sixbar_position(deck%p, phi + h)
+      associate (p => deck%p)
+        t2 = p%j1 + p%m2 * sum(((pp%s2 - pm%s2) / (2 * h))**2) + p%j2 * ((pp%phi2 - pm%phi2) / (2 * h))**2 + &
+             p%j3 * ((pp%phi3 - pm%phi3) / (2 * h))**2 + p%m4 * sum(((pp%s4 - pm%s4) / (2 * h))**2) + &
+             p%j4 * ((pp%phi4 - pm%phi4) / (2 * h))**2 + p%m5 * ((pp%h(1) - pm%h(1)) / (2 * h))**2
+      end associate
+      red = sixbar_reduced(deck%p, phi, 1000.0_wp)
+      call check_close(t, "sixbar J_red vs 2T(FD)"//trim(at), t2, red(1), 1.0e-8_wp, 1.0e-10_wp)
+      rp = sixbar_reduced(deck%p, phi + h, 1000.0_wp)
+      rm = sixbar_reduced(deck%p, phi - h, 1000.0_wp)
+      call check_close(t, "sixbar dJ_red vs FD of J_red"//trim(at), (rp(1) - rm(1)) / (2 * h), red(2), 1.0e-6_wp, 1.0e-9_wp)
+      s = sixbar_step(still, phi, 1000.0_wp)
+      call check_close(t, "sixbar M_red vs -M1 (inertia off)"//trim(at), -s%m1, red(3), 1.0e-11_wp, 1.0e-9_wp)
+    end do
+  end subroutine test_sixbar_reduced
 
   !> The generic engine's reduced quantities on the twin deck data/assur_pr3207.nml: equal to
   !> PR 3207's (an independent derivation) and M_red = -M1 of its force analysis at rest.

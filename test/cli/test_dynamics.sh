@@ -96,3 +96,10 @@ for k in ["M_d", "J_flywheel", "J_flywheel_textbook", "omega_max", "omega_min", 
     assert abs(float(v[h.index(k)]) - d[k]) <= 1e-12 * abs(d[k]), k
 PY
 then pass; else fail dynamics-summary "--format summary lacks the dynamics figures: $(head -c 300 "$out")"; fi
+
+# --- the T.FTN six-bar: the reduced quantities (its load is per step: no steady cycle)
+run_ks "$(deck_with six_red data/sixbar.nml "s/^\/$/  dynamics = 'reduced', j_rotor = 0.5\n\//")" --format csv
+if [ "$rc" -eq 0 ] && head -1 "$out" | grep -q ",M1,J_red,dJ_red,M_red$" && \
+   cmp -s <(cut -d, -f1-15 "$out") data/expected/sixbar.csv; then pass
+else fail dynamics-sixbar-reduced "exit $rc, header '$(head -1 "$out")' or the forces changed"; fi
+expect_input_error dynamics-sixbar-steady "the six-bar has the reduced quantities only" "$(deck_with six_st data/sixbar.nml "s/^\/$/  dynamics = 'steady', delta = 0.05\n\//")"
