@@ -21,12 +21,14 @@ program kinetostat_tests
   use test_blocks, only: run_blocks_tests
   use test_records, only: run_records_tests
   use test_hostile, only: run_hostile_tests
+  use test_dynamics, only: run_dynamics_tests
+  use test_shaking, only: run_shaking_tests
   use, intrinsic :: iso_fortran_env, only: error_unit
   implicit none
   !> Suite names, in the order they run.
   character(*), parameter :: suite_names(*) = [character(len=11) :: &
     "foundation", "pr3207", "pr3050", "sixbar", "gears", "cam", "assur", "assur_ext", "friction", "io", &
-    "kinematics", "svg", "decimal", "lapack", "blocks", "records", "hostile"]
+    "kinematics", "svg", "decimal", "lapack", "blocks", "records", "shaking", "dynamics", "hostile"]
   type(test_counts_t) :: t
   logical :: selected(size(suite_names))
   integer :: i
@@ -79,6 +81,7 @@ contains
     case ("foundation"); call run_foundation_tests(t)
     case ("hostile"); call run_hostile_tests(t)
     case ("pr3207"); call run_pr3207_tests(t)
+    case ("dynamics"); call run_dynamics_tests(t)
     case ("pr3050"); call run_pr3050_tests(t)
     case ("sixbar"); call run_sixbar_tests(t)
     case ("gears"); call run_gears_tests(t)
@@ -93,6 +96,7 @@ contains
     case ("lapack"); call run_lapack_tests(t)
     case ("blocks"); call run_blocks_tests(t)
     case ("records"); call run_records_tests(t)
+    case ("shaking"); call run_shaking_tests(t)
     case default; error stop "run_suite: no suite '"//name//"'"
     end select
   end subroutine run_suite
