@@ -49,7 +49,7 @@ module kinetostat_cli
     "", &
     "  kinetostat DECK [--set NAME=VALUE]... [-o FILE] [--format table|csv|json|svg|summary]", &
     "                  [--pairs LIST] [--at K] [--lang en|ru] [--kinematics] [--shaking]", &
-    "                  [--quiet] [--strict]", &
+    "                  [--max-deck-size BYTES] [--allow-selfcheck-failure] [--quiet] [--strict]", &
     "  kinetostat sweep DECK --vary NAME=FROM:TO:COUNT... [--set NAME=VALUE]... [--part K/N]", &
     "                  [--jobs N]", &
     "                  [-o FILE] [--quiet] [--strict]", &
