@@ -465,9 +465,9 @@ contains
             angle = l%angle * deg_to_rad
             if (len(along) > 0) angle = angle + column_value(table, "phi"//along, k) * deg_to_rad
             call drawing%add_block(l%name, trim(l%points(1)), angle)
-            if (size(l%points) > 1) call drawing%add_bar(l%name, l%points)
+            if (size(l%points) > 1) call drawing%add_bar(l%name, body_points(l%points, l%name))
           else
-            call drawing%add_bar(l%name, l%points)
+            call drawing%add_bar(l%name, body_points(l%points, l%name))
           end if
         end associate
       end do
@@ -482,6 +482,15 @@ contains
         end associate
       end do
     end if
+  contains
+    !> The points a link's body reaches: its own, and its centre of mass S<link> when the
+    !> drawing shows it (a body must reach every point of it the sheet shows).
+    pure function body_points(points, link) result(all)
+      character(*), intent(in) :: points(:), link
+      character(len=16), allocatable :: all(:)
+      all = [character(len=16) :: points]
+      if (drawing%point_index("S"//link) > 0 .and. .not. any(all == "S"//link)) all = [character(len=16) :: all, "S"//link]
+    end function body_points
   end subroutine drawing_from_sketch
 
   !> Value of column `name` at row `k` (0 when the table has no such column).

@@ -199,9 +199,9 @@ contains
         if (options%at_step > 0) then
           call write_at_step(mech, table, options, out, error)
         else if (allocated(options%pairs)) then
-          call write_svg(mech%title(options%lang), table, options%pairs, out, error)
+          call write_svg(mech%title(options%lang), table, options%pairs, options%lang, out, error)
         else
-          call write_svg(mech%title(options%lang), table, "", out, error)
+          call write_svg(mech%title(options%lang), table, "", options%lang, out, error)
         end if
         if (allocated(error)) return
       case default
@@ -278,7 +278,7 @@ contains
     if (allocated(error)) return
     call mech%force_plan(table, k, drawing, error)
     if (allocated(error)) return
-    call write_svg_mechanism(mech%title(options%lang), table, k, drawing, out)
+    call write_svg_mechanism(mech%title(options%lang), table, k, drawing, options%lang, out)
   end subroutine write_at_step
 
   !> Nothing that is not finite may reach an output: a non-finite result is a geometry

@@ -8,7 +8,7 @@ module kinetostat_table_writer
     echo_int_kind, echo_logical_kind, echo_array_kind, echo_text_kind, echo_heading_kind, echo_line_kind, col_force
   use kinetostat_format, only: echo_number, echo_array_number, footer_number, limit_number, pad_right, put_fixed, &
     fixed_field
-  use kinetostat_labels, only: label, lang_ru
+  use kinetostat_labels, only: label, lang_ru, phrase, echo_name
   use kinetostat_summary, only: column_stats_t, column_stats, drive_work
   use kinetostat_text, only: upper
   use kinetostat_mechanism, only: mechanism_t
@@ -176,15 +176,15 @@ contains
     if (e%overridden) mark = override_mark
     select case (e%kind)
     case (echo_real_kind)
-      call out%put(value_line(e%name, e%values(1), label(e%unit, lang))//mark)
+      call out%put(value_line(echo_name(e%name, lang), e%values(1), phrase(e%unit, lang))//mark)
     case (echo_int_kind)
       write (whole, '(i18)') e%int_value
-      call out%put(name_part(e%name)//whole//"  "//label(e%unit, lang)//mark)
+      call out%put(name_part(echo_name(e%name, lang))//whole//"  "//phrase(e%unit, lang)//mark)
     case (echo_logical_kind)
       write (whole, '(l18)') e%logical_value
-      call out%put(name_part(e%name)//whole//"  "//label(e%unit, lang)//mark)
+      call out%put(name_part(echo_name(e%name, lang))//whole//"  "//phrase(e%unit, lang)//mark)
     case (echo_text_kind)
-      call out%put(name_part(e%name)//"  "//e%text//mark)
+      call out%put(name_part(e%name)//"  "//phrase(e%text, lang)//mark)
     case (echo_array_kind)
       n = e%value_count()
       first = 1
@@ -193,14 +193,14 @@ contains
       if (present(cursor)) call cursor%take(n, echo_array_per_line, first, last)
       if (first == 1) then
         write (whole, '(i0)') n
-        call out%put(name_part(e%name//"("//trim(whole)//")")//"  "//label(e%unit, lang)//mark)
+        call out%put(name_part(e%name//"("//trim(whole)//")")//"  "//phrase(e%unit, lang)//mark)
       end if
       call put_array_lines(out, e, first, last)
       if (n == 0) call out%put("")
     case (echo_heading_kind)
-      call put_heading(out, e%name)
-    case default ! echo_line_kind: a line printed as it is
-      call out%put(e%name)
+      call put_heading(out, echo_name(e%name, lang))
+    case default ! echo_line_kind: a line printed as it is (its words translated)
+      call out%put(echo_name(e%name, lang))
     end select
   end subroutine put_echo
 

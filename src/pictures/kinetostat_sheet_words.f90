@@ -1,0 +1,141 @@
+!> The words of the SVG sheets in English and Russian. English is the key and the English
+!> text; Russian follows the course's wording (план скоростей, план сил, рычаг Жуковского)
+!> and the ГОСТ unit symbols (Н, Н·м, град). A phrase not in the list is returned as it is.
+module kinetostat_sheet_words
+  use kinetostat_labels, only: lang_ru
+  implicit none
+  private
+  public :: word, unit_word
+
+contains
+
+  !> The phrase `english` in language `lang`.
+  pure function word(english, lang) result(text)
+    !> The English phrase (key).
+    character(*), intent(in) :: english
+    !> lang_en or lang_ru.
+    integer, intent(in) :: lang
+    character(len=:), allocatable :: text
+    text = english
+    if (lang /= lang_ru) return
+    select case (english)
+    case ("deck")
+      text = "файл данных"
+    case ("step")
+      text = "положение"
+    case ("steps")
+      text = "положений"
+    case ("stage")
+      text = "ступень"
+    case ("stages")
+      text = "ступеней"
+    case ("of")
+      text = "из"
+    case ("at")
+      text = "под углом"
+    case ("gravity down the sheet")
+      text = "сила тяжести вниз по листу"
+    case ("lengths")
+      text = "длины"
+    case ("forces")
+      text = "силы"
+    case ("pair force")
+      text = "реакция"
+    case ("load")
+      text = "нагрузка"
+    case ("weight")
+      text = "вес"
+    case ("inertia")
+      text = "инерция"
+    case ("Forces of the step (angles counterclockwise from the x axis of the mechanism's frame)")
+      text = "Силы положения (углы против часовой "// &
+        "стрелки от оси x системы координат "// &
+        "механизма)"
+    case ("Hodographs of the pair forces")
+      text = "Годографы реакций в кинематических парах"
+    case ("Tip of each force vector over the cycle, in the frame of the tables (x right, y up); point k = step k; "// &
+      "O = zero force.")
+      text = "Конец вектора каждой силы за цикл в системе координат "// &
+        "таблиц (x вправо, y вверх); точка k = положение k; "// &
+        "O = нулевая сила."
+    case ("Pair forces of every stage as vectors")
+      text = "Реакции каждой ступени как векторы"
+    case ("The rows of this table are stages, not steps of a cycle: no hodographs and no diagrams against an "// &
+      "input angle.")
+      text = "Строки этой таблицы - ступени, а не положения цикла: "// &
+        "ни годографов, ни диаграмм по углу входного звена."
+    case ("This table has no pair force with an angle column: no hodographs.")
+      text = "В таблице нет реакций со столбцом угла: годографов нет."
+    case ("max")
+      text = "наиб."
+    case ("mean")
+      text = "среднее"
+    case ("Driving effort")
+      text = "Движущее усилие"
+    case ("This table has no driving moment or force column.")
+      text = "В таблице нет столбца движущего момента или силы."
+    case ("Driving force")
+      text = "Движущая сила"
+    case ("Driving moment")
+      text = "Движущий момент"
+    case ("against")
+      text = "по"
+    case ("Magnitudes of the pair forces against")
+      text = "Модули реакций по"
+    case ("No pair forces to show.")
+      text = "Реакций для показа нет."
+    case ("force")
+      text = "сила"
+    case ("no pair force")
+      text = "нет реакций"
+    case ("at every step")
+      text = "во всех положениях"
+    case default
+      text = english
+    end select
+  end function word
+
+  !> A unit symbol in language `lang` (Н, Н·м, град, м, ...); unknown units as they are.
+  pure function unit_word(unit, lang) result(text)
+    !> The unit as the tables write it ("N", "N*m", "deg").
+    character(*), intent(in) :: unit
+    !> lang_en or lang_ru.
+    integer, intent(in) :: lang
+    character(len=:), allocatable :: text
+    text = unit
+    if (lang /= lang_ru) return
+    select case (unit)
+    case ("N")
+      text = "Н"
+    case ("N*m")
+      text = "Н·м"
+    case ("deg")
+      text = "град"
+    case ("m")
+      text = "м"
+    case ("mm")
+      text = "мм"
+    case ("s")
+      text = "с"
+    case ("rad")
+      text = "рад"
+    case ("rad/s")
+      text = "рад/с"
+    case ("rad/s^2")
+      text = "рад/с²"
+    case ("m/s")
+      text = "м/с"
+    case ("m/s^2")
+      text = "м/с²"
+    case ("kg")
+      text = "кг"
+    case ("W")
+      text = "Вт"
+    case ("J")
+      text = "Дж"
+    case default
+      text = unit
+    end select
+  end function unit_word
+
+end module kinetostat_sheet_words
