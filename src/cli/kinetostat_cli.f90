@@ -17,7 +17,7 @@ module kinetostat_cli
   use kinetostat_spool, only: spool_t
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_labels, only: lang_from_name
-  use kinetostat_run, only: run_options_t, run_mechanism, format_from_name, format_names, format_svg
+  use kinetostat_run, only: run_options_t, run_mechanism, format_from_name, format_names, format_svg, format_json
   use kinetostat_table_writer, only: selfcheck_verdict
   use kinetostat_registry, only: create_mechanism, known_kinds, known_columns
   use kinetostat_step_table, only: column_t
@@ -30,7 +30,7 @@ module kinetostat_cli
 
   !> One-line usage, printed with usage errors.
   character(*), parameter :: usage_line = "usage: kinetostat DECK|- [--set NAME=VALUE]... [-o FILE] " // &
-    "[--format table|csv|json|svg|summary] [--pairs LIST] [--at K] [--lang en|ru] [--kinematics] " // &
+    "[--format table|csv|json|svg|summary] [--pairs LIST] [--at K] [--plans] [--lang en|ru] [--kinematics] " // &
     "[--frame global|link] [--quiet] [--strict] | " // &
     "kinetostat sweep DECK --vary NAME=FROM:TO:COUNT... [--part K/N] [--jobs N] | " // &
     "kinetostat template KIND [-o FILE] | kinetostat diff A B [--rtol R] [--atol A] | --help | --version"
@@ -62,6 +62,8 @@ module kinetostat_cli
     "            (a CSV header and one row: max, min, where, mean per column, work)", &
     "--pairs     with svg: only these pair forces, e.g. --pairs F16,F36", &
     "--at K      with svg: the mechanism drawn at step K with every force of the step", &
+    "--plans     with json and --at K: the graphical method at step K (plans of velocities and", &
+    "            accelerations, force polygons, Zhukovsky's lever) as numbers", &
     "--lang      language of the table's labels: en (default) or ru (the 1991 printouts)", &
     "--kinematics  csv and json add positions of joints and centres of mass, link angles,", &
     "            angular speeds and accelerations, accelerations of the centres of mass and", &
@@ -556,6 +558,8 @@ contains
         args%strict = .true.
       case ("--kinematics")
         args%options%kinematics = .true.
+      case ("--plans")
+        args%options%plans = .true.
       case ("-o", "--output")
         args%out_file = value
       case ("--format")
@@ -647,8 +651,10 @@ contains
       call fatal_error(error, exit_usage, "sweep writes the summary format only (--format summary)")
     else if (allocated(args%options%pairs) .and. args%options%format /= format_svg) then
       call fatal_error(error, exit_usage, "--pairs needs --format svg")
-    else if (args%options%at_step > 0 .and. args%options%format /= format_svg) then
-      call fatal_error(error, exit_usage, "--at needs --format svg")
+    else if (args%options%plans .and. (args%options%format /= format_json .or. args%options%at_step == 0)) then
+      call fatal_error(error, exit_usage, "--plans needs --format json and --at K")
+    else if (args%options%at_step > 0 .and. args%options%format /= format_svg .and. .not. args%options%plans) then
+      call fatal_error(error, exit_usage, "--at needs --format svg (or --format json --plans)")
     end if
   end subroutine parse_args
 

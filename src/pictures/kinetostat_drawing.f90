@@ -90,6 +90,8 @@ module kinetostat_drawing
     real(wp) :: at(2) = 0.0_wp
     !> The force, N (position frame).
     real(wp) :: f(2) = 0.0_wp
+    !> The link it acts on ("" when its name says: G3, Phi3, F21).
+    character(len=16) :: on_link = ""
   end type drawing_force_t
 
   !> A moment at a point.
@@ -102,6 +104,8 @@ module kinetostat_drawing
     real(wp) :: at(2) = 0.0_wp
     !> Value, N*m, counterclockwise positive.
     real(wp) :: value = 0.0_wp
+    !> The link it acts on ("" when its name says: MPhi3, M1).
+    character(len=16) :: on_link = ""
   end type drawing_moment_t
 
   !> The whole sketch.
@@ -248,7 +252,7 @@ contains
   end subroutine add_guide
 
   !> A force `f` (N) of a kind, applied at `p` (m).
-  pure subroutine add_force(self, name, kind, p, f)
+  pure subroutine add_force(self, name, kind, p, f, link)
     class(drawing_t), intent(inout) :: self
     !> Name.
     character(*), intent(in) :: name
@@ -258,17 +262,20 @@ contains
     real(wp), intent(in) :: p(2)
     !> Force, N.
     real(wp), intent(in) :: f(2)
+    !> The link it acts on (for the plans; omitted when the name says it).
+    character(*), intent(in), optional :: link
     type(drawing_force_t) :: force
     if (.not. allocated(self%forces)) allocate (self%forces(0))
     force%name = name
     force%kind = kind
     force%at = p
     force%f = f
+    if (present(link)) force%on_link = link
     self%forces = [self%forces, force]
   end subroutine add_force
 
   !> A moment (N*m, counterclockwise positive) of a kind at `p` (m).
-  pure subroutine add_moment(self, name, kind, p, value)
+  pure subroutine add_moment(self, name, kind, p, value, link)
     class(drawing_t), intent(inout) :: self
     !> Name.
     character(*), intent(in) :: name
@@ -278,12 +285,15 @@ contains
     real(wp), intent(in) :: p(2)
     !> Value, N*m.
     real(wp), intent(in) :: value
+    !> The link it acts on (for the plans; omitted when the name says it).
+    character(*), intent(in), optional :: link
     type(drawing_moment_t) :: moment
     if (.not. allocated(self%moments)) allocate (self%moments(0))
     moment%name = name
     moment%kind = kind
     moment%at = p
     moment%value = value
+    if (present(link)) moment%on_link = link
     self%moments = [self%moments, moment]
   end subroutine add_moment
 
@@ -365,13 +375,13 @@ contains
     real(wp), intent(in) :: gravity(2)
     real(wp) :: a(2), eps
     if (mass > 0.0_wp) then
-      if (any(gravity /= 0.0_wp)) call self%add_force("G"//link, force_gravity, self%at(at), mass * gravity)
+      if (any(gravity /= 0.0_wp)) call self%add_force("G"//link, force_gravity, self%at(at), mass * gravity, link)
       a = [column_value(table, "ax_"//com, k), column_value(table, "ay_"//com, k)]
-      if (any(a /= 0.0_wp)) call self%add_force("Phi"//link, force_inertia, self%at(at), -mass * a)
+      if (any(a /= 0.0_wp)) call self%add_force("Phi"//link, force_inertia, self%at(at), -mass * a, link)
     end if
     eps = column_value(table, "eps"//link, k)
     if (inertia > 0.0_wp .and. eps /= 0.0_wp) then
-      call self%add_moment("MPhi"//link, force_inertia, self%at(at), -inertia * eps)
+      call self%add_moment("MPhi"//link, force_inertia, self%at(at), -inertia * eps, link)
     end if
   end subroutine add_link_loads
 

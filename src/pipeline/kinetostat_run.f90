@@ -16,6 +16,7 @@ module kinetostat_run
   use kinetostat_svg_mechanism, only: write_svg_mechanism
   use kinetostat_sketch, only: sketch_t
   use kinetostat_drawing, only: drawing_t, drawing_from_sketch
+  use kinetostat_plans, only: plans_t, build_plans, write_plans_json
   use kinetostat_error, only: exit_usage
   use kinetostat_labels, only: lang_en
   use kinetostat_override, only: override_t, mark_overrides
@@ -72,6 +73,8 @@ module kinetostat_run
     character(len=:), allocatable :: pairs
     !> SVG: draw the mechanism at this row (0: the sheet of hodographs and diagrams).
     integer :: at_step = 0
+    !> JSON with --at: the graphical method's plans of that row instead of the rows.
+    logical :: plans = .false.
     !> Rows per block (0: block_rows); the output does not depend on it (tests vary it).
     integer :: block_rows = 0
     !> Values of an echoed array written between drains of the output (0: the step table's
@@ -138,14 +141,15 @@ contains
     table%deck = source%path
     table%row_name = "step"
     table%driver = "M1"
-    table%kinematics_wanted = options%kinematics .or. options%link_frame .or. options%format == format_svg
+    table%kinematics_wanted = options%kinematics .or. options%link_frame .or. options%format == format_svg .or. &
+      options%plans
     rows = block_rows
     if (options%block_rows > 0) rows = options%block_rows
     head%chunk = options%echo_chunk
     first = 1
     do
       ! the SVG sheet and drawing need every row at once
-      if (options%format /= format_svg) then
+      if (options%format /= format_svg .and. .not. options%plans) then
         table%block_first = first
         table%block_last = first + rows - 1
       end if
@@ -189,12 +193,17 @@ contains
           call out%put(summary_row(table, options%kinematics))
         end if
       case (format_json)
-        do
-          call write_json(mech%title(options%lang), table, out, options%kinematics, options%link_frame, head)
-          if (head%done) exit
-          call drain_head(error)
+        if (options%plans) then
+          if (table%last_block()) call write_at_step(mech, table, options, out, error)
           if (allocated(error)) return
-        end do
+        else
+          do
+            call write_json(mech%title(options%lang), table, out, options%kinematics, options%link_frame, head)
+            if (head%done) exit
+            call drain_head(error)
+            if (allocated(error)) return
+          end do
+        end if
       case (format_svg)
         if (options%at_step > 0) then
           call write_at_step(mech, table, options, out, error)
@@ -261,6 +270,7 @@ contains
     type(error_t), allocatable, intent(out) :: error
     type(sketch_t) :: topo
     type(drawing_t) :: drawing
+    type(plans_t) :: plans
     integer :: k
     k = options%at_step
     if (k > table%row_count()) then
@@ -278,7 +288,12 @@ contains
     if (allocated(error)) return
     call mech%force_plan(table, k, drawing, error)
     if (allocated(error)) return
-    call write_svg_mechanism(mech%title(options%lang), table, k, drawing, options%lang, out)
+    if (options%plans) then
+      call build_plans(topo, drawing, table, k, plans)
+      call write_plans_json(plans, table, k, out)
+    else
+      call write_svg_mechanism(mech%title(options%lang), table, k, drawing, options%lang, out)
+    end if
   end subroutine write_at_step
 
   !> Nothing that is not finite may reach an output: a non-finite result is a geometry

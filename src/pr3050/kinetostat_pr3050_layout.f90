@@ -390,7 +390,7 @@ contains
       a = drawing%at("A")
       b = drawing%at("B")
       u = (b - a) / max(norm2(b - a), tiny(1.0_wp))
-      call drawing%add_force("F2", force_load, drawing%at("S2"), table%rows(table%column_index("F2"), k) * u)
+      call drawing%add_force("F2", force_load, drawing%at("S2"), table%rows(table%column_index("F2"), k) * u, "2")
       gravity = p%g * [cos(p%gamma), sin(p%gamma)]
       call drawing%add_link_loads(table, k, "1", "S1", "S1", p%m1, p%j1, gravity)
       call drawing%add_link_loads(table, k, "2", "S2", "S2", p%m2, p%j2, gravity)

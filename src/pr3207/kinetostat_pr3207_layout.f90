@@ -281,7 +281,7 @@ contains
         call drawing%pair_from_table(table, k, trim(pairs(i)), trim(pair_points(i)), error)
         if (allocated(error)) return
       end do
-      call drawing%add_force("F5c", force_load, drawing%at("S5"), [0.0_wp, pr3207_f5c(self%deck, k)])
+      call drawing%add_force("F5c", force_load, drawing%at("S5"), [0.0_wp, pr3207_f5c(self%deck, k)], "5")
       gravity = [p%g, 0.0_wp]
       call drawing%add_link_loads(table, k, "1", "S1", "S1", p%m1, 0.0_wp, gravity)
       call drawing%add_link_loads(table, k, "3", "S3", "S3", p%m3, p%j3, gravity)

@@ -392,7 +392,7 @@ contains
       end do
       ! x2 in frame 1, rad
       x2 = atan2(p%a, p%b) - pi
-      call drawing%add_force("F5", force_load, drawing%at("H"), self%deck%f5(k) * [cos(x2), sin(x2)])
+      call drawing%add_force("F5", force_load, drawing%at("H"), self%deck%f5(k) * [cos(x2), sin(x2)], "5")
       gravity = p%g * sixbar_down1(p)
       call drawing%add_link_loads(table, k, "1", "S1", "S1", p%m1, p%j1, gravity)
       call drawing%add_link_loads(table, k, "2", "S2", "S2", p%m2, p%j2, gravity)
