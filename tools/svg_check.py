@@ -26,8 +26,9 @@
       the element's class in the sheet's style sheet, or its own font-size); horizontally
       placed by its text-anchor (start: from x; middle: centred on x; end: ending at x);
       a rotate(a cx cy) transform turns the box (its bounding box is taken).
-      Two boxes overlap when their intersection is wider and taller than 0.01 mm. Every
-      overlapping pair is printed with both texts and positions.
+      Two boxes overlap when their intersection is wider and taller than 0.01 mm; a box
+      must lie on the sheet (its viewBox). Every overlapping pair and every label off the
+      sheet is printed with its text and position.
 
   svg_check.py english SHEET...
       No English word in a --lang ru sheet or table: a word of three or more Latin letters
@@ -257,6 +258,12 @@ def check_labels(paths):
     bad = []
     for path in paths:
         boxes = text_boxes(path)
+        view = [float(v) for v in ET.parse(path).getroot().get("viewBox").split()]
+        for (b, text) in boxes:
+            if b[0] < view[0] - 0.01 or b[2] > view[0] + view[2] + 0.01 or b[1] < view[1] - 0.01 or \
+                    b[3] > view[1] + view[3] + 0.01:
+                bad.append(f"{path}: {text!r} at ({b[0]:.2f}, {b[3]:.2f}) leaves the sheet "
+                           f"(its box ends at x = {b[2]:.2f} mm of {view[2]:.2f})")
         for i in range(len(boxes)):
             (a, ta) = boxes[i]
             for j in range(i + 1, len(boxes)):

@@ -17,7 +17,7 @@ module kinetostat_cli
   use kinetostat_spool, only: spool_t
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_labels, only: lang_from_name
-  use kinetostat_run, only: run_options_t, run_mechanism, format_from_name, format_names, format_svg, format_json
+  use kinetostat_run, only: run_options_t, run_mechanism, format_from_name, format_names, format_svg, format_json, format_plans
   use kinetostat_table_writer, only: selfcheck_verdict
   use kinetostat_registry, only: create_mechanism, known_kinds, known_columns
   use kinetostat_step_table, only: column_t
@@ -30,7 +30,7 @@ module kinetostat_cli
 
   !> One-line usage, printed with usage errors.
   character(*), parameter :: usage_line = "usage: kinetostat DECK|- [--set NAME=VALUE]... [-o FILE] " // &
-    "[--format table|csv|json|svg|summary] [--pairs LIST] [--at K] [--plans] [--lang en|ru] [--kinematics] " // &
+    "[--format table|csv|json|svg|summary|plans] [--pairs LIST] [--at K] [--plans] [--lang en|ru] [--kinematics] " // &
     "[--frame global|link] [--quiet] [--strict] | " // &
     "kinetostat sweep DECK --vary NAME=FROM:TO:COUNT... [--part K/N] [--jobs N] | " // &
     "kinetostat template KIND [-o FILE] | kinetostat diff A B [--rtol R] [--atol A] | --help | --version"
@@ -42,8 +42,9 @@ module kinetostat_cli
   character(*), parameter :: help_lines(*) = [character(len=92) :: &
     "kinetostat - kinetostatic force analysis of planar mechanisms", &
     "", &
-    "  kinetostat DECK [--set NAME=VALUE]... [-o FILE] [--format table|csv|json|svg|summary]", &
-    "                  [--pairs LIST] [--at K] [--lang en|ru] [--kinematics] [--quiet] [--strict]", &
+    "  kinetostat DECK [--set NAME=VALUE]... [-o FILE]", &
+    "                  [--format table|csv|json|svg|summary|plans] [--pairs LIST] [--at K]", &
+    "                  [--plans] [--lang en|ru] [--kinematics] [--quiet] [--strict]", &
     "  kinetostat sweep DECK --vary NAME=FROM:TO:COUNT... [--set NAME=VALUE]... [--part K/N]", &
     "                  [--jobs N]", &
     "                  [-o FILE] [--quiet] [--strict]", &
@@ -62,6 +63,8 @@ module kinetostat_cli
     "            (a CSV header and one row: max, min, where, mean per column, work)", &
     "--pairs     with svg: only these pair forces, e.g. --pairs F16,F36", &
     "--at K      with svg: the mechanism drawn at step K with every force of the step", &
+    "--at K      with plans: the graphical method's sheet of step K (plans of velocities and", &
+    "            accelerations, force polygons, Zhukovsky's lever)", &
     "--plans     with json and --at K: the graphical method at step K (plans of velocities and", &
     "            accelerations, force polygons, Zhukovsky's lever) as numbers", &
     "--lang      language of the table's labels: en (default) or ru (the 1991 printouts)", &
@@ -653,8 +656,11 @@ contains
       call fatal_error(error, exit_usage, "--pairs needs --format svg")
     else if (args%options%plans .and. (args%options%format /= format_json .or. args%options%at_step == 0)) then
       call fatal_error(error, exit_usage, "--plans needs --format json and --at K")
-    else if (args%options%at_step > 0 .and. args%options%format /= format_svg .and. .not. args%options%plans) then
-      call fatal_error(error, exit_usage, "--at needs --format svg (or --format json --plans)")
+    else if (args%options%format == format_plans .and. args%options%at_step == 0) then
+      call fatal_error(error, exit_usage, "--format plans needs --at K (the step whose plans are drawn)")
+    else if (args%options%at_step > 0 .and. args%options%format /= format_svg .and. args%options%format /= format_plans &
+      .and. .not. args%options%plans) then
+      call fatal_error(error, exit_usage, "--at needs --format svg or plans (or --format json --plans)")
     end if
   end subroutine parse_args
 

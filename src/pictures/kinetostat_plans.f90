@@ -60,6 +60,10 @@ module kinetostat_plans
     real(wp) :: effort = 0.0_wp, run = 0.0_wp
     !> Why the lever is not known (when it is not).
     character(len=:), allocatable :: lever_note
+    !> The loads on the lever: each force (N) and the velocity image of its point (m/s).
+    type(plan_vector_t), allocatable :: lever_forces(:), lever_images(:)
+    !> Scale of the lever's arms: the driving link's rate (rad/s, or m/s for an actuator).
+    real(wp) :: lever_rate = 0.0_wp
   end type plans_t
 
   !> A pair equation between the fields of two links at a point: kind and data.
@@ -527,6 +531,8 @@ contains
       return
     end if
     power = 0.0_wp
+    allocate (plans%lever_forces(0), plans%lever_images(0))
+    plans%lever_rate = rate
     if (allocated(drawing%forces)) then
       do j = 1, size(drawing%forces)
         associate (f => drawing%forces(j))
@@ -537,6 +543,9 @@ contains
             return
           end if
           power = power + dot_product(f%f, field(v0(:, l), omega(l), 0.0_wp, f%at, .false.))
+          plans%lever_forces = [plans%lever_forces, plan_vector_t(f%name, f%f)]
+          plans%lever_images = [plans%lever_images, plan_vector_t(f%name, field(v0(:, l), omega(l), 0.0_wp, f%at, &
+            .false.))]
         end associate
       end do
     end if

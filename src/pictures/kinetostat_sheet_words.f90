@@ -90,6 +90,40 @@ contains
       text = "нет реакций"
     case ("at every step")
       text = "во всех положениях"
+    case ("Plan of velocities")
+      text = "План скоростей"
+    case ("Plan of accelerations")
+      text = "План ускорений"
+    case ("Zhukovsky's lever")
+      text = "Рычаг Жуковского"
+    case ("plan of velocities turned by 90 deg")
+      text = "план скоростей, повернутый на 90 град"
+    case ("Force polygons of the links")
+      text = "Планы сил звеньев"
+    case ("link")
+      text = "звено"
+    case ("Force polygons")
+      text = "Планы сил"
+    case ("balancing effort from the lever")
+      text = "уравновешивающее усилие по рычагу"
+    case ("analytic value of the step")
+      text = "аналитическое значение в положении"
+    case ("relative difference")
+      text = "относительное расхождение"
+    case ("not drawn")
+      text = "не построен"
+    case ("arrows: directions of the loads")
+      text = "стрелки: направления нагрузок"
+    case ("known forces first, then the pair forces")
+      text = "сначала известные силы, затем реакции"
+    case ("no driver column")
+      text = "нет столбца движущего усилия"
+    case ("the driving link is at rest")
+      text = "ведущее звено неподвижно"
+    case ("the driver is not a moment on a link of the drawing")
+      text = "движущее усилие - не момент на звене чертежа"
+    case ("the driver is neither a moment on a link nor a force on a slider of the drawing")
+      text = "движущее усилие - ни момент на звене, ни сила на ползуне чертежа"
     case default
       text = english
     end select

@@ -135,7 +135,7 @@ contains
     call out%put(svg_text(area(1), 15.0_wp, title, title_attributes(title, "title", 3.3_wp, 188.0_wp)))
     line = word("deck", lang)//": "//table%deck
     if (allocated(table%subtitle)) line = line//"   "//table%subtitle
-    call out%put(svg_text(area(1), 20.5_wp, line, 'class="subtitle"'))
+    call out%put(svg_text(area(1), 20.5_wp, line, title_attributes(line, "subtitle", 3.0_wp, 188.0_wp)))
     line = word(table%row_name, lang)//" "//int_str(k)//" "//word("of", lang)//" "//int_str(table%row_count())
     if (table%input_column > 0) line = line//": "//table%columns(table%input_column)%name//" = "// &
       short_number(table%rows(table%input_column, k))//" "//unit_word(table%columns(table%input_column)%unit, lang)

@@ -161,7 +161,7 @@ contains
     call out%put(svg_text(margin, 15.0_wp, title, title_attributes(title, "title", 3.3_wp, 188.0_wp)))
     line = word("deck", lang)//": "//table%deck
     if (allocated(table%subtitle)) line = line//"   "//table%subtitle
-    call out%put(svg_text(margin, 20.5_wp, line, 'class="subtitle"'))
+    call out%put(svg_text(margin, 20.5_wp, line, title_attributes(line, "subtitle", 3.0_wp, 188.0_wp)))
     n = table%row_count()
     if (n /= 1) then
       line = int_str(n)//" "//word(table%row_name//"s", lang)

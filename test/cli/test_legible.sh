@@ -1,5 +1,6 @@
-# Legible sheets: on every bundled deck's --format svg sheet and its --format svg --at K
-# sheets at three steps (first, middle, last), in English and Russian, no two text labels
+# Legible sheets: on every bundled deck's --format svg sheet and its --format svg --at K and
+# --format plans --at K sheets at three steps (first, middle, last), in English and Russian,
+# no text label leaves the sheet and no two
 # overlap (tools/svg_check.py labels: box width = 0.6 x font size x characters, height = font
 # size, placed by text-anchor); no English word on a --lang ru sheet or in a --lang ru table
 # (tools/svg_check.py english: a word list); both checks can fail.
@@ -22,6 +23,9 @@ for deck in data/*.nml; do
         run_ks "$deck" --format svg --at "$k" --lang "$lang"
         if [ "$rc" -ne 0 ]; then fail "legible-at-runs-$name-$k-$lang" "rc=$rc: $(head -c 300 "$err")"; continue; fi
         cp "$out" "$legible_dir/$name.at$k.$lang.svg"; sheets+=("$legible_dir/$name.at$k.$lang.svg")
+        run_ks "$deck" --format plans --at "$k" --lang "$lang"
+        if [ "$rc" -ne 0 ]; then fail "legible-plans-runs-$name-$k-$lang" "rc=$rc: $(head -c 300 "$err")"; continue; fi
+        cp "$out" "$legible_dir/$name.plans$k.$lang.svg"; sheets+=("$legible_dir/$name.plans$k.$lang.svg")
       done ;;
     esac
     python3 "$svg_check" labels "${sheets[@]}" >"$cli_tmp/check.out" 2>&1 \

@@ -56,3 +56,19 @@ expect_exit plans-needs-at 1 data/sixbar.nml --format json --plans
 expect_exit plans-needs-json 1 data/sixbar.nml --format svg --at 1 --plans
 expect_exit plans-at-needs-plans 1 data/sixbar.nml --format json --at 1
 expect_exit plans-not-gears 1 data/gears_reducer.nml --format json --at 1 --plans
+expect_exit plans-sheet-needs-at 1 data/sixbar.nml --format plans
+
+# the plans sheet: well-formed, self-contained, renders; its lever line is the JSON's
+run_ks data/sixbar_example.nml --format plans --at 1
+cp "$out" "$plans_dir/sixbar_example.plans.svg"
+xmllint --noout "$plans_dir/sixbar_example.plans.svg" 2>"$cli_tmp/xmllint.err" && pass \
+  || fail plans-sheet-xmllint "$(head -5 "$cli_tmp/xmllint.err")"
+python3 "$root/tools/svg_check.py" self-contained "$plans_dir/sixbar_example.plans.svg" >"$cli_tmp/check.out" 2>&1 \
+  && pass || fail plans-sheet-self-contained "$(cat "$cli_tmp/check.out")"
+if rsvg-convert -o "$plans_dir/plans.png" "$plans_dir/sixbar_example.plans.svg" 2>/dev/null; then
+  python3 "$root/tools/svg_check.py" png "$plans_dir/plans.png" "$plans_dir/sixbar_example.plans.svg" \
+    >"$cli_tmp/check.out" 2>&1 && pass || fail plans-sheet-png "$(cat "$cli_tmp/check.out")"
+else fail plans-sheet-render "rsvg-convert failed"; fi
+grep -q '>balancing effort from the lever: M1 = 902 N\*m<' "$plans_dir/sixbar_example.plans.svg" \
+  && grep -q '>analytic value of the step: M1 = 902 N\*m<' "$plans_dir/sixbar_example.plans.svg" \
+  && pass || fail plans-sheet-lever "$(grep -o '>[^<]*M1 = [^<]*<' "$plans_dir/sixbar_example.plans.svg")"
