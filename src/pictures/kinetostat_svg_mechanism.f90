@@ -17,7 +17,8 @@ module kinetostat_svg_mechanism
   use kinetostat_svg_writer, only: nice_step
   use kinetostat_label_place, only: label_boxes_t, title_attributes, text_chars
   use kinetostat_sheet_words, only: word, unit_word
-  use kinetostat_drawing, only: drawing_t, point_pivot, point_com, point_plain, body_bar, body_block, force_pair, force_load, &
+  use kinetostat_drawing, only: drawing_t, drawing_body_t, point_pivot, point_com, point_plain, body_bar, body_block, &
+    body_cylinder, body_rod, force_pair, force_load, &
     force_gravity, force_inertia, force_kind_names
   implicit none
   private
@@ -63,7 +64,7 @@ contains
     type(text_buffer_t), intent(inout) :: out
     real(wp), allocatable :: px(:), py(:), obst_x(:), obst_y(:), hx(:), hy(:)
     real(wp) :: len_scale, force_scale, ox, oy, cx, cy, xmin, xmax, ymin, ymax, fmax, q(2), tx, ty, t(2)
-    real(wp) :: bar_len, bar_value, bounds(4), origin(2), axis_tip(2, 2)
+    real(wp) :: bar_len, bar_value, bounds(4), origin(2), axis_tip(2, 2), u2(2)
     character(len=:), allocatable :: line, text
     type(label_boxes_t) :: boxes
     logical :: leader
@@ -183,6 +184,31 @@ contains
             do j = 1, size(hx)
               call add_segment(obst_x, obst_y, [hx(j), hy(j)], [hx(modulo(j, size(hx)) + 1), hy(modulo(j, size(hx)) + 1)])
             end do
+          end if
+        end associate
+      end do
+      ! hydraulic cylinders over their rods: a tube from the pivot along the axis
+      do i = 1, size(drawing%bodies)
+        associate (b => drawing%bodies(i))
+          if (b%kind == body_rod) then
+            call axis_ends(b, b%reach(1), b%reach(2), q, t)
+            call out%put(svg_line(q(1), q(2), t(1), t(2), 'stroke="#000000" stroke-width="1.5" stroke-linecap="round"'))
+            call out%put(svg_line(q(1), q(2), t(1), t(2), 'stroke="#e8e8e8" stroke-width="0.8" stroke-linecap="round"'))
+            call add_segment(obst_x, obst_y, q, t)
+          end if
+        end associate
+      end do
+      do i = 1, size(drawing%bodies)
+        associate (b => drawing%bodies(i))
+          if (b%kind == body_cylinder) then
+            call axis_ends(b, 0.0_wp, b%length, q, t)
+            call put_tube(out, q, t, 2.3_wp)
+            call add_segment(obst_x, obst_y, q, t)
+            if (hypot(t(1) - q(1), t(2) - q(2)) > 0.0_wp) then
+              u2 = [q(2) - t(2), t(1) - q(1)] * 2.3_wp / hypot(t(1) - q(1), t(2) - q(2))
+              call add_segment(obst_x, obst_y, q + u2, t + u2)
+              call add_segment(obst_x, obst_y, q - u2, t - u2)
+            end if
           end if
         end associate
       end do
@@ -313,6 +339,17 @@ contains
     call put_force_list(out, drawing, area(1), ty + 9.0_wp, lang)
     call svg_close(out)
   contains
+    !> Page points (mm) of the axis of a cylinder or rod `b` at s0 and s1 m from its anchor.
+    pure subroutine axis_ends(b, s0, s1, e0, e1)
+      type(drawing_body_t), intent(in) :: b
+      real(wp), intent(in) :: s0, s1
+      real(wp), intent(out) :: e0(2), e1(2)
+      real(wp) :: w(2)
+      w = turn(b%anchor + s0 * [cos(b%angle), sin(b%angle)], drawing%view_angle)
+      e0 = [ox + len_scale * w(1), oy - len_scale * w(2)]
+      w = turn(b%anchor + s1 * [cos(b%angle), sin(b%angle)], drawing%view_angle)
+      e1 = [ox + len_scale * w(1), oy - len_scale * w(2)]
+    end subroutine axis_ends
     !> Tail and tip (page, mm) of the arrow of force `f` (N) at `at` (m).
     pure subroutine force_ends(at, f, tail, tip)
       real(wp), intent(in) :: at(2), f(2)
@@ -341,6 +378,22 @@ contains
     end if
     call out%put(svg_text(tx, ty, text, attributes//' text-anchor="middle"'))
   end subroutine put_label
+
+  !> A hydraulic cylinder's tube from a to b (page, mm), `half` mm each side of its axis,
+  !> closed at a (the pivot's end), open at b where the rod leaves it.
+  pure subroutine put_tube(out, a, b, half)
+    type(text_buffer_t), intent(inout) :: out
+    real(wp), intent(in) :: a(2), b(2), half
+    real(wp) :: u(2), n(2), length
+    length = hypot(b(1) - a(1), b(2) - a(2))
+    if (length <= 0.0_wp) return
+    u = (b - a) / length
+    n = [-u(2), u(1)] * half
+    call out%put(svg_polygon([a(1) + n(1), b(1) + n(1), b(1) - n(1), a(1) - n(1)], &
+      [a(2) + n(2), b(2) + n(2), b(2) - n(2), a(2) - n(2)], 'class="link"'))
+    call out%put(svg_line(b(1) + 0.6_wp * n(1), b(2) + 0.6_wp * n(2), b(1) - 0.6_wp * n(1), b(2) - 0.6_wp * n(2), &
+      'class="frame"'))
+  end subroutine put_tube
 
   !> Append the segment a-b (page, mm) to the obstacles of the labels.
   pure subroutine add_segment(obst_x, obst_y, a, b)
