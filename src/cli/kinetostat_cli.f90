@@ -65,6 +65,8 @@ module kinetostat_cli
     "--at K      with svg: the mechanism drawn at step K with every force of the step", &
     "--at K      with plans: the graphical method's sheet of step K (plans of velocities and", &
     "            accelerations, force polygons, Zhukovsky's lever)", &
+    "--student NAME --group G --variant N   the header line of the 1991 programs (date, time,", &
+    "            surname, group, variant) on the legacy table and a title block on the sheets", &
     "--plans     with json and --at K: the graphical method at step K (plans of velocities and", &
     "            accelerations, force polygons, Zhukovsky's lever) as numbers", &
     "--lang      language of the table's labels: en (default) or ru (the 1991 printouts)", &
@@ -540,8 +542,8 @@ contains
         value = arg(eq + 1:)
       else
         name = arg
-        if (any(name == [character(len=8) :: "-o", "--output", "--format", "--lang", "--set", "--pairs", "--at", &
-                         "--frame", "--vary", "--part", "--jobs"])) then
+        if (any(name == [character(len=10) :: "-o", "--output", "--format", "--lang", "--set", "--pairs", "--at", &
+                         "--frame", "--vary", "--part", "--jobs", "--student", "--group", "--variant"])) then
           if (i == n) then
             call fatal_error(error, exit_usage, name//" needs a value")
             return
@@ -563,6 +565,12 @@ contains
         args%options%kinematics = .true.
       case ("--plans")
         args%options%plans = .true.
+      case ("--student")
+        args%options%student_name = value
+      case ("--group")
+        args%options%student_group = value
+      case ("--variant")
+        args%options%student_variant = value
       case ("-o", "--output")
         args%out_file = value
       case ("--format")
@@ -662,7 +670,30 @@ contains
       .and. .not. args%options%plans) then
       call fatal_error(error, exit_usage, "--at needs --format svg or plans (or --format json --plans)")
     end if
+    if (allocated(error)) return
+    if (allocated(args%options%student_name) .or. allocated(args%options%student_group) .or. &
+      allocated(args%options%student_variant)) then
+      if (.not. allocated(args%options%student_name)) args%options%student_name = "-"
+      if (.not. allocated(args%options%student_group)) args%options%student_group = "-"
+      if (.not. allocated(args%options%student_variant)) args%options%student_variant = "-"
+      args%options%student_stamp = run_stamp()
+    end if
   end subroutine parse_args
+
+  !> Date and time of the run as the 1991 header printed them: "25.11.2026 18:31".
+  function run_stamp() result(stamp)
+    character(len=:), allocatable :: stamp
+    integer :: v(8)
+    call date_and_time(values=v)
+    stamp = two(v(3))//"."//two(v(2))//"."//int_str(v(1))//" "//two(v(5))//":"//two(v(6))
+  contains
+    pure function two(i) result(t)
+      integer, intent(in) :: i
+      character(len=:), allocatable :: t
+      t = int_str(i)
+      if (i < 10) t = "0"//t
+    end function two
+  end function run_stamp
 
   !> The arguments of `kinetostat diff A B [--rtol R] [--atol A] [--quiet]` (errors: exit 2).
   subroutine parse_diff_args(args, error)

@@ -17,6 +17,7 @@ module kinetostat_svg_mechanism
   use kinetostat_svg_writer, only: nice_step
   use kinetostat_label_place, only: label_boxes_t, title_attributes, text_chars
   use kinetostat_sheet_words, only: word, unit_word
+  use kinetostat_title_block, only: put_title_block, title_block_height
   use kinetostat_drawing, only: drawing_t, drawing_body_t, point_pivot, point_com, point_plain, body_bar, body_block, &
     body_cylinder, body_rod, force_pair, force_load, &
     force_gravity, force_inertia, force_kind_names
@@ -337,6 +338,7 @@ contains
         'class="small"'))
     end do
     call put_force_list(out, drawing, area(1), ty + 9.0_wp, lang)
+    call put_title_block(out, table, lang, page_width, page_height)
     call svg_close(out)
   contains
     !> Page points (mm) of the axis of a cylinder or rod `b` at s0 and s1 m from its anchor.

@@ -20,6 +20,7 @@ module kinetostat_svg_plans
   use kinetostat_svg_writer, only: nice_step
   use kinetostat_label_place, only: label_boxes_t, title_attributes, anchor_start
   use kinetostat_sheet_words, only: word, unit_word
+  use kinetostat_title_block, only: put_title_block, title_block_height
   use kinetostat_plans, only: plans_t, plan_vector_t
   implicit none
   private
@@ -97,6 +98,7 @@ contains
       call out%put(svg_text(12.0_wp, y + 6.0_wp, word("not drawn", lang)//": "//word(plans%lever_note, lang), &
         'class="label"'))
     end if
+    call put_title_block(out, table, lang, page_width, page_height)
     call svg_close(out)
   end subroutine write_svg_plans
 

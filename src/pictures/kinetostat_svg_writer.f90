@@ -19,6 +19,7 @@ module kinetostat_svg_writer
     svg_text, svg_arrow, coord, palette_colour
   use kinetostat_label_place, only: label_boxes_t, title_attributes, anchor_start, anchor_end
   use kinetostat_sheet_words, only: word, unit_word
+  use kinetostat_title_block, only: put_title_block, title_block_height
   implicit none
   private
   public :: write_svg, pair_force_t, find_pair_forces, select_pair_forces, nice_step, cycle_mean
@@ -92,6 +93,7 @@ contains
     chart_h = min(chart_max_height, max(chart_height, page_height - margin - y - 2.0_wp))
     if (table%input_column > 0) y = y + 2.0_wp + chart_h
     height = max(page_height, y + margin)
+    if (allocated(table%student_stamp)) height = height + title_block_height + 4.0_wp
 
     call svg_open(out, page_width, height, title//" - "//table%deck, &
       "kinetostat --format svg sheet of "//table%deck//". Hodograph paths (class hodograph, data-force = the "// &
@@ -123,6 +125,7 @@ contains
         call put_vector_panel(out, table, chosen, i, x0, y0, panel_w, panel_h, lang)
       end do
     end if
+    call put_title_block(out, table, lang, page_width, height)
     call svg_close(out)
   end subroutine write_svg
 

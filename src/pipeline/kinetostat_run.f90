@@ -79,6 +79,9 @@ module kinetostat_run
     integer :: at_step = 0
     !> JSON with --at: the graphical method's plans of that row instead of the rows.
     logical :: plans = .false.
+    !> The student's header (legacy table and sheets): date and time of the run, surname,
+    !> group, variant (all allocated, or none).
+    character(len=:), allocatable :: student_stamp, student_name, student_group, student_variant
     !> Rows per block (0: block_rows); the output does not depend on it (tests vary it).
     integer :: block_rows = 0
     !> Values of an echoed array written between drains of the output (0: the step table's
@@ -145,6 +148,12 @@ contains
     call release_deck_text(source)
     table%mechanism = group
     table%deck = source%path
+    if (allocated(options%student_stamp)) then
+      table%student_stamp = options%student_stamp
+      table%student_name = options%student_name
+      table%student_group = options%student_group
+      table%student_variant = options%student_variant
+    end if
     table%row_name = "step"
     table%driver = "M1"
     table%kinematics_wanted = options%kinematics .or. options%link_frame .or. options%format == format_svg .or. &

@@ -81,6 +81,23 @@ contains
     end if
   end subroutine write_table_head
 
+  !> The header line of the 1991 programs (T.FTN's "ДАТА ... ВРЕМЯ ... ФАМИЛИЯ"): date, time,
+  !> surname, group and variant of the student who ran the deck.
+  pure function student_line(table, lang) result(line)
+    type(step_table_t), intent(in) :: table
+    integer, intent(in) :: lang
+    character(len=:), allocatable :: line
+    integer :: blank
+    blank = index(table%student_stamp, " ")
+    if (lang == lang_ru) then
+      line = "ДАТА "//table%student_stamp(:blank - 1)//"  ВРЕМЯ "//table%student_stamp(blank + 1:)//"  ФАМИЛИЯ "// &
+        table%student_name//"  ГРУППА "//table%student_group//"  ВАРИАНТ "//table%student_variant
+    else
+      line = "DATE "//table%student_stamp(:blank - 1)//"  TIME "//table%student_stamp(blank + 1:)//"  NAME "// &
+        table%student_name//"  GROUP "//table%student_group//"  VARIANT "//table%student_variant
+    end if
+  end function student_line
+
   !> The next part of the head (see write_table_head).
   pure subroutine head_part(mech, table, lang, out, cursor)
     class(mechanism_t), intent(in) :: mech
@@ -90,6 +107,7 @@ contains
     type(echo_cursor_t), intent(inout) :: cursor
     integer :: i
     if (cursor%record == 0) then
+      if (allocated(table%student_stamp)) call out%put(" "//student_line(table, lang))
       call out%put(" "//mech%title(lang))
       call out%put(" "//label("DECK: ", lang)//table%deck)
       if (allocated(table%subtitle)) call out%put(" "//label("TITLE: ", lang)//table%subtitle)

@@ -58,3 +58,22 @@ grep -q ' Н под углом [0-9.]* град<' "$legible_dir/pr3207.at1.ru.sv
 grep -q 'font-style="italic" text-anchor="middle">x</text>' "$legible_dir/sixbar.at1.en.svg" \
   && grep -q 'font-style="italic" text-anchor="middle">y</text>' "$legible_dir/sixbar.at1.en.svg" \
   && pass || fail legible-axes "no x and y axis labels on the --at sheet"
+
+# the student's header: the 1991 line on the legacy table (date, time, surname, group,
+# variant) and a title block on every sheet, in the sheet's language, overlapping nothing
+run_ks data/sixbar.nml --lang ru --student "Иванов И.И." --group "МТ-301" --variant 7
+head -1 "$out" | grep -Eq '^ ДАТА [0-9]{2}\.[0-9]{2}\.[0-9]{4}  ВРЕМЯ [0-9]{2}:[0-9]{2}  ФАМИЛИЯ Иванов И\.И\.  ГРУППА МТ-301  ВАРИАНТ 7$' \
+  && sed -n 2p "$out" | grep -q '^ KINETOSTAT  T.FTN' && pass || fail legible-student-table "$(head -2 "$out")"
+run_ks data/sixbar.nml --student Ivanov --group MT-301 --variant 7
+head -1 "$out" | grep -Eq '^ DATE [0-9.]{10}  TIME [0-9:]{5}  NAME Ivanov  GROUP MT-301  VARIANT 7$' \
+  && pass || fail legible-student-table-en "$(head -1 "$out")"
+for args in "--format svg" "--format svg --at 2" "--format plans --at 2"; do
+  # shellcheck disable=SC2086  # args is a word list
+  run_ks data/sixbar.nml $args --lang ru --student "Иванов И.И." --group "МТ-301" --variant 7
+  cp "$out" "$cli_tmp/student.svg"
+  grep -q '>Студент: Иванов И.И. · Группа: МТ-301 · Вариант: 7<' "$cli_tmp/student.svg" \
+    && python3 "$svg_check" labels "$cli_tmp/student.svg" >"$cli_tmp/check.out" 2>&1 \
+    && python3 "$svg_check" english "$cli_tmp/student.svg" >>"$cli_tmp/check.out" 2>&1 \
+    && pass || fail "legible-student-sheet-$args" "$(head -5 "$cli_tmp/check.out")"
+done
+# without the options nothing changes: the goldens hold (tools/test compares them)
