@@ -17,7 +17,8 @@ module kinetostat_cli
   use kinetostat_spool, only: spool_t
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_labels, only: lang_from_name
-  use kinetostat_run, only: run_options_t, run_mechanism, format_from_name, format_names, format_svg, format_json, format_plans
+  use kinetostat_run, only: run_options_t, run_mechanism, format_from_name, format_names, format_svg, format_json, &
+    format_plans, format_dxf
   use kinetostat_table_writer, only: selfcheck_verdict
   use kinetostat_registry, only: create_mechanism, known_kinds, known_columns
   use kinetostat_step_table, only: column_t
@@ -30,7 +31,7 @@ module kinetostat_cli
 
   !> One-line usage, printed with usage errors.
   character(*), parameter :: usage_line = "usage: kinetostat DECK|- [--set NAME=VALUE]... [-o FILE] " // &
-    "[--format table|csv|json|svg|summary|plans] [--pairs LIST] [--at K] [--plans] [--lang en|ru] [--kinematics] " // &
+    "[--format table|csv|json|svg|summary|plans|dxf] [--pairs LIST] [--at K] [--plans] [--lang en|ru] [--kinematics] " // &
     "[--frame global|link] [--quiet] [--strict] | " // &
     "kinetostat sweep DECK --vary NAME=FROM:TO:COUNT... [--part K/N] [--jobs N] | " // &
     "kinetostat template KIND [-o FILE] | kinetostat diff A B [--rtol R] [--atol A] | --help | --version"
@@ -43,7 +44,7 @@ module kinetostat_cli
     "kinetostat - kinetostatic force analysis of planar mechanisms", &
     "", &
     "  kinetostat DECK [--set NAME=VALUE]... [-o FILE]", &
-    "                  [--format table|csv|json|svg|summary|plans] [--pairs LIST] [--at K]", &
+    "                  [--format table|csv|json|svg|summary|plans|dxf] [--pairs LIST] [--at K]", &
     "                  [--plans] [--lang en|ru] [--kinematics] [--quiet] [--strict]", &
     "  kinetostat sweep DECK --vary NAME=FROM:TO:COUNT... [--set NAME=VALUE]... [--part K/N]", &
     "                  [--jobs N]", &
@@ -67,6 +68,7 @@ module kinetostat_cli
     "            accelerations, force polygons, Zhukovsky's lever)", &
     "--student NAME --group G --variant N   the header line of the 1991 programs (date, time,", &
     "            surname, group, variant) on the legacy table and a title block on the sheets", &
+    "--at K      with dxf: the mechanism at step K as an ASCII DXF drawing for CAD programs", &
     "--plans     with json and --at K: the graphical method at step K (plans of velocities and", &
     "            accelerations, force polygons, Zhukovsky's lever) as numbers", &
     "--lang      language of the table's labels: en (default) or ru (the 1991 printouts)", &
@@ -666,9 +668,11 @@ contains
       call fatal_error(error, exit_usage, "--plans needs --format json and --at K")
     else if (args%options%format == format_plans .and. args%options%at_step == 0) then
       call fatal_error(error, exit_usage, "--format plans needs --at K (the step whose plans are drawn)")
-    else if (args%options%at_step > 0 .and. args%options%format /= format_svg .and. args%options%format /= format_plans &
+    else if (args%options%format == format_dxf .and. args%options%at_step == 0) then
+      call fatal_error(error, exit_usage, "--format dxf needs --at K (the step drawn)")
+    else if (args%options%at_step > 0 .and. all(args%options%format /= [format_svg, format_plans, format_dxf]) &
       .and. .not. args%options%plans) then
-      call fatal_error(error, exit_usage, "--at needs --format svg or plans (or --format json --plans)")
+      call fatal_error(error, exit_usage, "--at needs --format svg, plans or dxf (or --format json --plans)")
     end if
     if (allocated(error)) return
     if (allocated(args%options%student_name) .or. allocated(args%options%student_group) .or. &

@@ -18,6 +18,7 @@ module kinetostat_run
   use kinetostat_drawing, only: drawing_t, drawing_from_sketch
   use kinetostat_plans, only: plans_t, build_plans, write_plans_json
   use kinetostat_svg_plans, only: write_svg_plans
+  use kinetostat_dxf, only: write_dxf
   use kinetostat_error, only: exit_usage
   use kinetostat_labels, only: lang_en
   use kinetostat_override, only: override_t, mark_overrides
@@ -27,8 +28,8 @@ module kinetostat_run
   implicit none
   private
   public :: run_options_t, run_mechanism, guard_finite, progress_i, block_rows
-  public :: format_table, format_csv, format_json, format_svg, format_summary, format_plans, format_from_name, &
-    format_names
+  public :: format_table, format_csv, format_json, format_svg, format_summary, format_plans, format_dxf, &
+    format_from_name, format_names
 
   !> Output format: the legacy fixed-format table.
   integer, parameter :: format_table = 1
@@ -42,8 +43,10 @@ module kinetostat_run
   integer, parameter :: format_summary = 5
   !> Output format: the graphical method's plans of step --at K (an SVG sheet).
   integer, parameter :: format_plans = 6
+  !> Output format: the mechanism of step --at K as an ASCII DXF drawing.
+  integer, parameter :: format_dxf = 7
   !> Names of the formats, for messages and --help.
-  character(*), parameter :: format_names = "table, csv, json, svg, summary, plans"
+  character(*), parameter :: format_names = "table, csv, json, svg, summary, plans, dxf"
 
   !> Steps solved and written at a time: a run holds the rows of one block (and at most the
   !> spool's bound of output text), whatever its number of steps.
@@ -106,6 +109,8 @@ contains
       format_from_name = format_summary
     case ("plans")
       format_from_name = format_plans
+    case ("dxf")
+      format_from_name = format_dxf
     case ("svg")
       format_from_name = format_svg
     case default
@@ -157,14 +162,14 @@ contains
     table%row_name = "step"
     table%driver = "M1"
     table%kinematics_wanted = options%kinematics .or. options%link_frame .or. options%format == format_svg .or. &
-      options%plans .or. options%format == format_plans
+      options%plans .or. options%format == format_plans .or. options%format == format_dxf
     rows = block_rows
     if (options%block_rows > 0) rows = options%block_rows
     head%chunk = options%echo_chunk
     first = 1
     do
       ! the SVG sheet and drawing need every row at once
-      if (options%format /= format_svg .and. options%format /= format_plans .and. .not. options%plans) then
+      if (all(options%format /= [format_svg, format_plans, format_dxf]) .and. .not. options%plans) then
         table%block_first = first
         table%block_last = first + rows - 1
       end if
@@ -219,7 +224,7 @@ contains
             if (allocated(error)) return
           end do
         end if
-      case (format_plans)
+      case (format_plans, format_dxf)
         call write_at_step(mech, table, options, out, error)
         if (allocated(error)) return
       case (format_svg)
@@ -309,6 +314,8 @@ contains
     if (options%plans) then
       call build_plans(topo, drawing, table, k, plans)
       call write_plans_json(plans, table, k, out)
+    else if (options%format == format_dxf) then
+      call write_dxf(mech%title(lang_en)//" - "//table%deck//" - "//table%row_name//" "//int_str(k), drawing, out)
     else if (options%format == format_plans) then
       call build_plans(topo, drawing, table, k, plans)
       call write_svg_plans(mech%title(options%lang), table, k, plans, options%lang, out)
