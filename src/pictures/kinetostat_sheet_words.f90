@@ -102,6 +102,24 @@ contains
       text = "Планы сил звеньев"
     case ("link")
       text = "звено"
+    case ("Machine dynamics (reduced to the input link)")
+      text = "Динамика машины (приведение к входному звену)"
+    case ("Steady cycle")
+      text = "Установившийся режим"
+    case ("flywheel")
+      text = "маховик"
+    case ("textbook")
+      text = "по учебнику"
+    case ("Reduced moment of inertia J_red")
+      text = "Приведенный момент инерции J_red"
+    case ("Reduced moment M_red and M_d (dashed)")
+      text = "Приведенный момент M_red и M_d (штрих)"
+    case ("Change of kinetic energy dT")
+      text = "Изменение кинетической энергии dT"
+    case ("Speed omega1 (dashed: mean, max, min)")
+      text = "Скорость omega1 (штрих: средн., наиб., наим.)"
+    case ("Wittenbauer's curve: dT against J_red")
+      text = "Кривая Виттенбауэра: dT по J_red"
     case ("Force polygons")
       text = "Планы сил"
     case ("balancing effort from the lever")
@@ -163,6 +181,8 @@ contains
       text = "м/с²"
     case ("kg")
       text = "кг"
+    case ("kg*m^2")
+      text = "кг·м²"
     case ("W")
       text = "Вт"
     case ("J")

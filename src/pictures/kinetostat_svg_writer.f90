@@ -120,7 +120,7 @@ contains
       call put_driver_chart(out, table, margin, y, driver_chart_width, chart_h, lang)
       call put_magnitude_chart(out, table, chosen, margin + driver_chart_width + gap, y, &
         page_width - 2.0_wp * margin - driver_chart_width - gap, chart_h, lang)
-      if (table%column_index("dT") > 0) call put_dynamics_charts(out, table, y + chart_h + gap)
+      if (table%column_index("dT") > 0) call put_dynamics_charts(out, table, y + chart_h + gap, lang)
     else
       call out%put(svg_text(margin, 32.0_wp, word("Pair forces of every " // table%row_name // " as vectors", lang), &
         'class="heading"'))
@@ -506,6 +506,9 @@ contains
       if (owner(k) /= k) cycle
       members = pack([(j, j=1, n)], owner == k)
       text = run_list(members)
+      ! many coinciding steps: the first two and the last ("1,17..361")
+      if (len(text) > 16 .and. size(members) > 3) text = int_str(members(1))//","//int_str(members(2))//".."// &
+        int_str(members(size(members)))
       call boxes%place(text, num_size, px(k), py(k), atan2(py(k) - cy, px(k) - cx), seg_x, seg_y, &
         [bx, by, bx + bw, by + bh], tx, ty, leader)
       if (leader) then
@@ -664,33 +667,42 @@ contains
   !> The machine dynamics of a steady cycle (the course's dynamics drawing): J_red, M_red with
   !> M_d, dT, omega1 with omega_m and the delta band against the input angle, and
   !> Wittenbauer's curve dT against J_red.
-  pure subroutine put_dynamics_charts(out, table, y0)
+  pure subroutine put_dynamics_charts(out, table, y0, lang)
     type(text_buffer_t), intent(inout) :: out
     type(step_table_t), intent(in) :: table
     !> Top of the block, mm.
     real(wp), intent(in) :: y0
+    !> lang_en or lang_ru.
+    integer, intent(in) :: lang
     real(wp) :: w, top
     integer :: ci
+    character(len=:), allocatable :: deg, nm, kgm2, input
     ci = table%input_column
     w = 0.5_wp * (page_width - 2.0_wp * margin - gap)
-    call out%put(svg_text(margin, y0 + 4.0_wp, "Machine dynamics (reduced to the input link)", 'class="heading"'))
-    call out%put(svg_text(margin, y0 + 8.0_wp, "Steady cycle: M_d = "//short_number(figure("M_d"))// &
-      " N*m, flywheel J_fw = "//short_number(figure("J_flywheel"))//" kg*m^2 (textbook "// &
-      short_number(figure("J_flywheel_textbook"))//"), delta = "//short_number(figure("delta")), 'class="small"'))
+    deg = unit_word("deg", lang)
+    nm = unit_word("N*m", lang)
+    kgm2 = unit_word("kg*m^2", lang)
+    input = table%columns(ci)%name//", "//deg
+    call out%put(svg_text(margin, y0 + 4.0_wp, word("Machine dynamics (reduced to the input link)", lang), &
+      'class="heading"'))
+    call out%put(svg_text(margin, y0 + 8.0_wp, word("Steady cycle", lang)//": M_d = "//short_number(figure("M_d"))// &
+      " "//nm//", "//word("flywheel", lang)//" J_fw = "//short_number(figure("J_flywheel"))//" "//kgm2//" ("// &
+      word("textbook", lang)//" "//short_number(figure("J_flywheel_textbook"))//"), delta = "// &
+      short_number(figure("delta")), 'class="small"'))
     top = y0 + 10.0_wp
     call chart(out, table%rows(ci, :), table%rows(table%column_index("J_red"), :), margin, top, &
-      "Reduced moment of inertia J_red", table%columns(ci)%name//", deg", "J_red, kg*m^2", [real(wp) ::])
+      word("Reduced moment of inertia J_red", lang), input, "J_red, "//kgm2, [real(wp) ::])
     call chart(out, table%rows(ci, :), table%rows(table%column_index("M_red"), :), margin + w + gap, top, &
-      "Reduced moment M_red and M_d (dashed)", table%columns(ci)%name//", deg", "M_red, N*m", [figure("M_d")])
+      word("Reduced moment M_red and M_d (dashed)", lang), input, "M_red, "//nm, [figure("M_d")])
     top = top + dynamics_chart_height + gap
     call chart(out, table%rows(ci, :), table%rows(table%column_index("dT"), :), margin, top, &
-      "Change of kinetic energy dT", table%columns(ci)%name//", deg", "dT, J", [real(wp) ::])
+      word("Change of kinetic energy dT", lang), input, "dT, "//unit_word("J", lang), [real(wp) ::])
     call chart(out, table%rows(ci, :), table%rows(table%column_index("omega1"), :), margin + w + gap, top, &
-      "Speed omega1 (dashed: mean, max, min)", table%columns(ci)%name//", deg", "omega1, rad/s", &
+      word("Speed omega1 (dashed: mean, max, min)", lang), input, "omega1, "//unit_word("rad/s", lang), &
       [figure("omega_mean"), figure("omega_max"), figure("omega_min")])
     top = top + dynamics_chart_height + gap
     call chart(out, table%rows(table%column_index("J_red"), :), table%rows(table%column_index("dT"), :), margin, top, &
-      "Wittenbauer's curve: dT against J_red", "J_red, kg*m^2", "dT, J", [real(wp) ::])
+      word("Wittenbauer's curve: dT against J_red", lang), "J_red, "//kgm2, "dT, "//unit_word("J", lang), [real(wp) ::])
   contains
     !> A figure of the DYNAMICS records (0 when absent).
     pure real(wp) function figure(name)
@@ -717,7 +729,7 @@ contains
       pt = y0 + 9.0_wp
       pw = w - 21.0_wp
       ph = dynamics_chart_height - 22.0_wp
-      call x_range(xv, index(xlabel, "deg") > 0, xlo, xhi, xstep)
+      call x_range(xv, index(xlabel, ", "//deg) > 0, xlo, xhi, xstep)
       if (size(levels) > 0) then
         ! a speed band: the range of the data and the levels, zero not forced in
         vmin = min(minval(yv), minval(levels))
