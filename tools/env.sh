@@ -4,8 +4,8 @@
 # refreshed or pip used --user).
 env_root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 py_scripts="$(python3 -c 'import sysconfig; print(sysconfig.get_path("scripts"))' 2>/dev/null || true)"
-py_user_bin="$(python3 -m site --user-base 2>/dev/null || true)/bin"
-export PATH="$env_root/.local/venv/bin:$py_scripts:$py_user_bin:$PATH:$HOME/.local/bin"
+py_user_base="$(python3 -m site --user-base 2>/dev/null || true)"
+export PATH="$env_root/.local/venv/bin${py_scripts:+:$py_scripts}${py_user_base:+:$py_user_base/bin}:$PATH:$HOME/.local/bin"
 
 # LAPACK outside the linker's default directories: Homebrew's keg-only lapack (Apple silicon,
 # Intel), an active conda environment. Found there, it is given to the linker (LIBRARY_PATH)

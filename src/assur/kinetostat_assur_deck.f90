@@ -16,7 +16,8 @@ module kinetostat_assur_deck
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn, &
     is_whole_in, require_whole
   use kinetostat_vec2, only: unit_at, rotate, magnitude, cross
-  use kinetostat_assur_kinematics, only: link_state_t, dyad_pose_t, dyad_geometry_t, kind_names, kind_has_mode, &
+  use kinetostat_assur_kinematics, only: link_state_t, point_state_t, point_on, dyad_pose_t, dyad_geometry_t, kind_names, &
+    kind_has_mode, &
     frame_state, crank_state, dyad_pose, pose_ok, &
     kind_rrr, kind_rrp, kind_rpr, kind_prp, kind_rpp
   use kinetostat_assur_statics, only: pair_is_prismatic
@@ -27,6 +28,7 @@ module kinetostat_assur_deck
   private
   public :: assur_deck_t, read_assur_deck, write_assur_template, assur_window
   public :: load_schedule_t, load_constant, load_window, load_column, load_table
+  public :: resist_none, resist_moment, resist_force
   public :: assur_phi1_deg, assur_omega1_steps, assur_omega1, assur_eps1, assur_motion_sign
   public :: assur_load_value, assur_force_values, assur_moment_values, assur_load_steps
   public :: max_dyads, max_forces, max_moments
@@ -123,6 +125,9 @@ module kinetostat_assur_deck
     real(wp) :: table(2 * max_table_points) = unset
     !> Id of the link whose position is the table's abscissa (default: output_link).
     real(wp) :: over = unset
+    !> Technological resistance: the value's size, always against the velocity of the
+    !> point `at` along the force's line (zero where that velocity is zero).
+    logical :: resist = .false.
   end type force_in_t
 
   !> An external moment as written in the deck.
@@ -137,6 +142,9 @@ module kinetostat_assur_deck
     real(wp) :: table(2 * max_table_points) = unset
     !> Id of the link whose position is the table's abscissa (default: output_link).
     real(wp) :: over = unset
+    !> Technological resistance: the value's size, always against the link's rotation
+    !> (zero where the link stops).
+    logical :: resist = .false.
   end type moment_in_t
 
   !> Load schedule: the same value at every step.
@@ -147,6 +155,15 @@ module kinetostat_assur_deck
   integer, parameter :: load_column = 3
   !> Load schedule: a table of values over the position of a link.
   integer, parameter :: load_table = 4
+  !> Not a technological resistance: the value is applied as given.
+  integer, parameter :: resist_none = 0
+  !> A moment resisting its link's rotation.
+  integer, parameter :: resist_moment = 1
+  !> A force resisting its point's motion along the force's line.
+  integer, parameter :: resist_force = 2
+  !> A rate (rad/rad, or m/rad relative to the mechanism's size) at or below this counts as
+  !> zero: the link stops, the resistance is zero at that step.
+  real(wp), parameter :: resist_zero_rel = 1.0e-10_wp
 
   !> How a validated load (force magnitude or moment) gets its value at a step; the value
   !> of step k is assur_load_value (no per-step array is stored).
@@ -169,6 +186,17 @@ module kinetostat_assur_deck
     integer :: link = 0
     !> Table: the frame pair measuring that link's stroke (0: its angle).
     integer :: pair = 0
+    !> Technological resistance: resist_none, resist_moment or resist_force (then the
+    !> schedule gives the size and the motion of the loaded link the sign).
+    integer :: resist = resist_none
+    !> Resistance: internal index of the loaded link.
+    integer :: resist_link = 0
+    !> Resisting force: point of application in the link's coordinates, m.
+    real(wp) :: resist_at(2) = 0.0_wp
+    !> Resisting force: direction, rad (global, or relative to the link when follow).
+    real(wp) :: resist_angle = 0.0_wp
+    !> Resisting force: direction turns with the link.
+    logical :: resist_follow = .false.
   end type load_schedule_t
 
   !> A validated `&assur` deck.
@@ -525,6 +553,14 @@ contains
         call read_load(ctx, name, fi%table, fi%over, schedule_in_t(value=fi%value, idle=fi%idle, phi_on=fi%phi_on, &
                        phi_off=fi%phi_off, column=fi%column), ids, deck, n_values, load, error)
         if (allocated(error)) return
+        if (fi%resist) then
+          call resist_size(ctx, name, fi%value, fi%idle, error); if (allocated(error)) return
+          load%resist = resist_force
+          load%resist_link = i
+          load%resist_at = deck%mech%forces(k)%at
+          load%resist_angle = deck%mech%forces(k)%angle
+          load%resist_follow = fi%follow
+        end if
         deck%force_load(k) = load
       end associate
     end do
@@ -536,6 +572,11 @@ contains
         call read_load(ctx, name, mi%table, mi%over, schedule_in_t(value=mi%value, idle=mi%idle, phi_on=mi%phi_on, &
                        phi_off=mi%phi_off, column=mi%column), ids, deck, n_values, load, error)
         if (allocated(error)) return
+        if (mi%resist) then
+          call resist_size(ctx, name, mi%value, mi%idle, error); if (allocated(error)) return
+          load%resist = resist_moment
+          load%resist_link = i
+        end if
         deck%moment_load(k) = load
       end associate
     end do
@@ -1020,7 +1061,51 @@ contains
     case default
       value = load%value
     end select
+    if (load%resist /= resist_none) value = -abs(value) * resist_sense(deck, load, k)
   end function assur_load_value
+
+  !> Motion sense of a technological resistance's link at step k: +1 or -1 as the motion
+  !> analogue (moment: the link's angular rate u; force: the velocity of its point along
+  !> the force's line) times the input's motion sign s, 0 where that analogue is zero
+  !> within roundoff (the link stops) or the step's kinematics fails.
+  pure real(wp) function resist_sense(deck, load, k) result(sense)
+    !> Validated deck.
+    type(assur_deck_t), intent(in) :: deck
+    !> A resisting load.
+    type(load_schedule_t), intent(in) :: load
+    !> Step number, 1..n.
+    integer, intent(in) :: k
+    type(link_state_t) :: states(0:2 * size(deck%mech%dyads) + 1)
+    type(dyad_pose_t) :: poses(size(deck%mech%dyads))
+    type(error_t), allocatable :: kin_error
+    type(point_state_t) :: ps
+    !> Motion analogue (rad/rad or m/rad), its zero tolerance, the force's direction (rad)
+    !> and the mechanism's size (m).
+    real(wp) :: rate, tol, dir, size_m
+    integer :: i
+    sense = 0.0_wp
+    call assur_kinematics(deck%mech, assur_phi1_deg(deck, k) * deg_to_rad, states, poses, kin_error)
+    if (allocated(kin_error)) return
+    associate (st => states(load%resist_link))
+      if (load%resist == resist_moment) then
+        rate = st%u
+        tol = resist_zero_rel
+      else
+        ps = point_on(st, load%resist_at)
+        dir = load%resist_angle
+        if (load%resist_follow) dir = dir + st%th
+        rate = dot_product(ps%v, [cos(dir), sin(dir)])
+        size_m = magnitude(ps%p - deck%mech%pivot)
+        do i = 1, ubound(states, 1)
+          size_m = max(size_m, magnitude(states(i)%o - deck%mech%pivot))
+        end do
+        if (.not. size_m > 0.0_wp) size_m = 1.0_wp
+        tol = resist_zero_rel * size_m
+      end if
+    end associate
+    if (abs(rate) <= tol) return
+    sense = sign(1.0_wp, rate) * assur_motion_sign(assur_omega1(deck, k))
+  end function resist_sense
 
   !> Force magnitudes of step k, N (one per deck%force_load).
   pure function assur_force_values(deck, k) result(values)
@@ -1238,6 +1323,22 @@ contains
       end do
     end associate
   end subroutine read_table
+
+  !> A technological resistance's constant size: `value` and `idle` (when given) >= 0 (its
+  !> sign comes from the motion; a table's or column's values are taken by magnitude).
+  subroutine resist_size(ctx, name, value, idle, error)
+    type(deck_context_t), intent(in) :: ctx
+    !> Prefix, e.g. "moment(1)%".
+    character(*), intent(in) :: name
+    !> value and idle as read (or unset).
+    real(wp), intent(in) :: value, idle
+    type(error_t), allocatable, intent(out) :: error
+    call require_rule(ctx, name//"value", .not. (is_set(value) .and. value < 0.0_wp), &
+      "must be >= 0 with resist = .true. (the size of the resistance; the motion gives its sign)", error)
+    if (allocated(error)) return
+    call require_rule(ctx, name//"idle", .not. (is_set(idle) .and. idle < 0.0_wp), &
+      "must be >= 0 with resist = .true. (the size of the resistance; the motion gives its sign)", error)
+  end subroutine resist_size
 
   !> The output link (default: link b of the last dyad) and how its position is measured.
   subroutine read_output_link(ctx, output_link, ids, mech, error)

@@ -24,7 +24,7 @@ module kinetostat_assur_layout
   use kinetostat_assur_friction, only: friction_step_t, assur_friction_step
   use kinetostat_assur_deck, only: assur_deck_t, read_assur_deck, write_assur_template, load_schedule_t, load_constant, &
     load_column, assur_phi1_deg, assur_omega1_steps, assur_eps1, assur_motion_sign, assur_load_value, &
-    assur_load_steps
+    assur_load_steps, resist_none
   implicit none
   private
   public :: assur_mechanism_t, new_assur, assur_solve, assur_csv_columns, assur_csv_values, assur_pair_prismatic
@@ -1149,7 +1149,8 @@ contains
     !> Unit of its values ("N" or "N*m").
     character(*), intent(in) :: unit
     type(step_table_t), intent(inout) :: table
-    if (load%kind == load_column) then
+    if (load%resist /= resist_none) call table%echo_logical("  RESIST", .true., "")
+    if (load%kind == load_column .and. load%resist == resist_none) then
       call table%echo_array("  VALUE", deck%step_values(load%offset + 1:load%offset + deck%n), unit)
     else
       call table%echo_array("  VALUE", assur_load_steps(deck, load), unit)
@@ -1167,8 +1168,13 @@ contains
     type(step_table_t), intent(inout) :: table
     select case (load%kind)
     case (load_constant)
-      return
+      if (load%resist == resist_none) return
+      call table%note_load(assur_load_steps(deck, load))
     case (load_column)
+      if (load%resist /= resist_none) then
+        call table%note_load(assur_load_steps(deck, load))
+        return
+      end if
       call table%note_load(deck%step_values(load%offset + 1:load%offset + deck%n))
     case default
       call table%note_load(assur_load_steps(deck, load))
