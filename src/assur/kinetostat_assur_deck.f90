@@ -155,6 +155,8 @@ module kinetostat_assur_deck
   integer, parameter :: load_column = 3
   !> Load schedule: a table of values over the position of a link.
   integer, parameter :: load_table = 4
+  !> Internal index of the crank (links: 0 frame, 1 crank, then the dyads' links).
+  integer, parameter :: crank_index = 1
   !> Not a technological resistance: the value is applied as given.
   integer, parameter :: resist_none = 0
   !> A moment resisting its link's rotation.
@@ -1154,8 +1156,9 @@ contains
   end function assur_load_steps
 
   !> Position of a table load's abscissa link at step k: its angle in deg, taken modulo 360
-  !> into [x1, x1 + 360), or a slider's stroke on its frame guide in m; not ok when the
-  !> step's kinematics fails.
+  !> into [x1, x1 + 360) (the crank's angle modulo 720 into [x1, x1 + 720) when the table
+  !> spans more than 360 deg: a four-stroke cycle), or a slider's stroke on its frame guide
+  !> in m; not ok when the step's kinematics fails.
   pure subroutine table_position(deck, load, k, q, ok)
     !> Validated deck (mechanism and crank angles).
     type(assur_deck_t), intent(in) :: deck
@@ -1177,7 +1180,15 @@ contains
     ok = .not. allocated(kin_error)
     if (.not. ok) return
     call link_position(states, poses, load%link, load%pair, q, dq, ddq)
-    if (load%pair == 0) q = load%x(1) + modulo(q * rad_to_deg - load%x(1), 360.0_wp)
+    if (load%pair /= 0) return
+    associate (x1 => load%x(1), span => load%x(size(load%x)) - load%x(1))
+      if (load%link == crank_index .and. span > 360.0_wp) then
+        ! over the crank's angle, a table longer than a turn: a four-stroke cycle, period 720 deg
+        q = x1 + modulo(assur_phi1_deg(deck, k) - x1, 720.0_wp)
+      else
+        q = x1 + modulo(q * rad_to_deg - x1, 360.0_wp)
+      end if
+    end associate
   end subroutine table_position
 
   !> A table load's value at position q (deg or m; inside the table): linear interpolation.
