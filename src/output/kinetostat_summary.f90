@@ -71,6 +71,7 @@ contains
       allocate (table%tally(nc))
       if (allocated(table%edge_points)) deallocate (table%edge_points)
       allocate (table%edge_points(0))
+      table%void_rows = 0
     end if
     d = 0
     if (allocated(table%driver)) d = table%column_index(table%driver)
@@ -96,13 +97,20 @@ contains
         if (work_known) table%work2 = table%work2 + (table%rows(d, k) + table%tally(d)%last) * &
                                       (coordinate - table%last_coordinate)
       end if
+      if (table%is_void(k)) table%void_rows = table%void_rows + 1
       do c = 1, nc
         v = table%rows(c, k)
         associate (t => table%tally(c))
+          ! a cell without a value (void row) is left out of the extremes, sums and means
+          if (table%void_cell(c, k)) then
+            t%last_counted = .false.
+            cycle
+          end if
           t%largest = max(t%largest, abs(v))
-          if (row == 1) then
-            t = column_tally_t(max=v, min=v, max_row=1, min_row=1, max_at=x, min_at=x, peak=v, peak_row=1, &
-                               peak_at=x, largest=abs(v), total=v, area2=0.0_wp, last=v)
+          if (t%count == 0) then
+            t = column_tally_t(max=v, min=v, max_row=row, min_row=row, max_at=x, min_at=x, peak=v, peak_row=row, &
+                               peak_at=x, largest=abs(v), total=v, area2=0.0_wp, last=v, count=1, span=0.0_wp, &
+                               last_counted=.true.)
             cycle
           end if
           tie = tie_rel * t%largest
@@ -122,8 +130,13 @@ contains
             t%peak_at = x
           end if
           t%total = t%total + v
-          t%area2 = t%area2 + (v + t%last) * (x - table%last_at)
+          t%count = t%count + 1
+          if (t%last_counted) then
+            t%area2 = t%area2 + (v + t%last) * (x - table%last_at)
+            t%span = t%span + (x - table%last_at)
+          end if
           t%last = v
+          t%last_counted = .true.
         end associate
       end do
       if (near_load_edge(row)) table%edge_points = [table%edge_points, edge_point_t(row, x)]
@@ -182,9 +195,11 @@ contains
       s%min_row = t%min_row
       s%max_at = t%max_at
       s%min_at = t%min_at
-      s%mean = t%total / real(n, wp)
+      s%mean = t%total / real(max(1, t%count), wp)
       if (table%input_column > 0 .and. n > 1) then
         span = table%last_at - table%first_at
+        ! rows left out (void): over the stretches between rows counted
+        if (t%count < n) span = t%span
         if (span /= 0.0_wp) s%mean = 0.5_wp * t%area2 / span
       end if
     end associate
@@ -325,6 +340,7 @@ contains
       end do
     end if
     line = line//"rows"
+    if (allocated(table%void_flags)) line = line//",rows_left_out"
     at = "row"
     if (table%input_column > 0) then
       at = table%columns(table%input_column)%name
@@ -360,6 +376,7 @@ contains
     end if
     n = table%tallied_rows
     line = line//int_str(n)
+    if (allocated(table%void_flags)) line = line//","//int_str(table%void_rows)
     if (table%input_column > 0) line = line//","//cell_number(table%first_at, .false.)// &
       ","//cell_number(table%last_at, .false.)
     do c = 1, size(table%columns)
