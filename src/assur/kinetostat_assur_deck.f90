@@ -9,7 +9,7 @@ module kinetostat_assur_deck
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use kinetostat_kinds, only: wp, g_default, deg_to_rad, rad_to_deg
   use kinetostat_error, only: error_t
-  use kinetostat_text, only: real_str, int_str, number_str, lower
+  use kinetostat_text, only: real_str, int_str, number_str, lower, upper
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, unset_bits, max_deck_array, &
     deck_array_capacities, deck_source_t, namelist_probe_t, deck_error, require_all_set, is_set, require_set, require_positive, &
@@ -299,6 +299,58 @@ contains
     call write_template_lines(out, template_lines)
   end subroutine write_assur_template
 
+  !> The dyads' kinds by name, as the docs name them: `dyad(i)%kind = RRR` or `'RRR'` (any
+  !> case; RRR RRP RPR PRP RPP) becomes the code 1..5, blank-padded to the same length (the
+  !> columns of every message stay those of the deck). Other text is left as it is.
+  pure subroutine kind_names_as_codes(records)
+    !> The deck's records, changed in place.
+    character(*), intent(inout) :: records(:)
+    integer :: r, at, from, i, j, code, n
+    character(len=:), allocatable :: low
+    do r = 1, size(records)
+      low = lower(records(r))
+      from = 1
+      do
+        at = index(low(from:), "%kind")
+        if (at == 0) exit
+        i = from + at - 1 + len("%kind")
+        from = i
+        i = skip_blanks(low, i)
+        if (i > len(low)) exit
+        if (low(i:i) /= "=") cycle
+        i = skip_blanks(low, i + 1)
+        if (i + 2 > len(low)) exit
+        j = i
+        if (low(i:i) == "'" .or. low(i:i) == '"') j = i + 1
+        if (j + 2 > len(low)) exit
+        code = findloc(kind_names, upper(low(j:j + 2)), dim=1)
+        if (code == 0) cycle
+        n = j + 3 ! just after the name
+        if (j > i) then
+          if (n > len(low)) cycle
+          if (low(n:n) /= low(i:i)) cycle ! the closing quote
+          n = n + 1
+        end if
+        if (n <= len(low)) then
+          if (index(" ,/!"//achar(9), low(n:n)) == 0) cycle ! a longer word
+        end if
+        records(r)(i:n - 1) = repeat(" ", n - i)
+        records(r)(i:i) = achar(iachar("0") + code)
+      end do
+    end do
+  contains
+    !> The first non-blank position at or after i (len + 1 when none).
+    pure integer function skip_blanks(text, i) result(k)
+      character(*), intent(in) :: text
+      integer, intent(in) :: i
+      k = i
+      do while (k <= len(text))
+        if (text(k:k) /= " " .and. text(k:k) /= achar(9)) exit
+        k = k + 1
+      end do
+    end function skip_blanks
+  end subroutine kind_names_as_codes
+
   !> Windowed value at crank angle `phi_deg`: `value` for phi_on <= phi <= phi_off
   !> (absolute degrees, 1e-9 deg tolerance), `idle` elsewhere.
   elemental function assur_window(phi_deg, phi_on, phi_off, value, idle) result(v)
@@ -328,6 +380,8 @@ contains
     !> As long as the whole deck: an unterminated quote reads the rest of the deck into it
     !> (a shorter variable makes gfortran print a runtime warning); at most 80 are kept.
     character(len=size(source%records) * len(source%records) + 1) :: title
+    !> The deck with the dyads' kind names (RRR, 'RRP', ...) replaced by their codes.
+    type(deck_source_t) :: coded
     !> Integer deck variables, read as reals (see require_whole).
     real(wp) :: frame_id, crank_id, n
     !> Linear actuator as driver: dyad number and pair 1..3 (whole numbers, read as reals).
@@ -385,15 +439,22 @@ contains
     allocate (omega1_step(capacity(1)), eps1_step(capacity(2)), step_values(capacity(3)), phi1(capacity(4)), &
               source=unset_real)
 
-    read (source%records, nml=assur, iostat=ios, iomsg=msg)
+    coded%path = source%path
+    allocate (character(len=len(source%records)) :: coded%records(size(source%records)))
+    coded%records(:) = source%records(:)
+    if (allocated(source%first_record)) coded%first_record = source%first_record
+    if (allocated(source%record_length)) coded%record_length = source%record_length
+    coded%cut_width = source%cut_width
+    call kind_names_as_codes(coded%records)
+    read (coded%records, nml=assur, iostat=ios, iomsg=msg)
     if (ios /= 0) then
       ! find the line and the assignment that failed (gfortran's message does not say)
-      call probe%start(source, ios, msg)
-      do while (probe%more(source))
+      call probe%start(coded, ios, msg)
+      do while (probe%more(coded))
         read (probe%records, nml=assur, iostat=ios, iomsg=msg)
         call probe%take(ios, msg)
       end do
-      call probe%report(source, ctx, error)
+      call probe%report(coded, ctx, error)
       return
     end if
 
