@@ -17,7 +17,7 @@ module kinetostat_assur_layout
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_sketch, only: sketch_t
   use kinetostat_assur_kinematics, only: kind_names, link_state_t, dyad_pose_t, point_state_t, point_on, &
-    kind_rrp, kind_rpr, kind_prp, kind_rpp
+    kind_rrr, kind_rrp, kind_rpr, kind_prp, kind_rpp
   use kinetostat_assur_statics, only: pair_is_prismatic
   use kinetostat_assur, only: assur_step_t, assur_step, assur_kinematics, link_a, link_b, crank_pin_index
   use kinetostat_drawing, only: drawing_t, force_load
@@ -1102,13 +1102,18 @@ contains
         call table%echo_line(trim(line))
         call table%echo_array("AT2", dy%at(:, 1), "m")
         call table%echo_array("AT3", dy%at(:, 2), "m")
-        call table%echo_real("ANGLE2", dy%ang(1) * rad_to_deg, "deg")
-        call table%echo_real("ANGLE3", dy%ang(2) * rad_to_deg, "deg")
-        call table%echo_real("L2", dy%geom%l2, "m")
-        call table%echo_real("L3", dy%geom%l3, "m")
-        call table%echo_real("E", dy%geom%e, "m")
-        call table%echo_array("SLOT_AT", dy%geom%slot_at, "m")
-        call table%echo_real("SLOT_ANGLE", dy%geom%slot_angle * rad_to_deg, "deg")
+        ! only what the dyad's kind uses (an RRP has no L3: a 0 there would look like a mistake)
+        associate (kind => dy%geom%kind)
+          if (kind == kind_prp) call table%echo_real("ANGLE2", dy%ang(1) * rad_to_deg, "deg")
+          if (any(kind == [kind_rrp, kind_prp, kind_rpp])) call table%echo_real("ANGLE3", dy%ang(2) * rad_to_deg, "deg")
+          if (any(kind == [kind_rrr, kind_rrp])) call table%echo_real("L2", dy%geom%l2, "m")
+          if (kind == kind_rrr) call table%echo_real("L3", dy%geom%l3, "m")
+          if (kind == kind_rpr) call table%echo_real("E", dy%geom%e, "m")
+          if (kind == kind_rpp) then
+            call table%echo_array("SLOT_AT", dy%geom%slot_at, "m")
+            call table%echo_real("SLOT_ANGLE", dy%geom%slot_angle * rad_to_deg, "deg")
+          end if
+        end associate
         call table%echo_real("M2", lk(2 * d)%m, "kg")
         call table%echo_real("J2", lk(2 * d)%j, "kg*m^2")
         call table%echo_array("S2", lk(2 * d)%s, "m")
@@ -1153,9 +1158,20 @@ contains
     if (load%kind == load_column .and. load%resist == resist_none) then
       call table%echo_array("  VALUE", deck%step_values(load%offset + 1:load%offset + deck%n), unit)
     else
-      call table%echo_array("  VALUE", assur_load_steps(deck, load), unit)
+      call table%echo_array("  VALUE", roundoff_to_zero(assur_load_steps(deck, load)), unit)
     end if
   end subroutine echo_load
+
+  !> Computed values (a table's interpolation) with roundoff around zero set to 0: |v| <=
+  !> 1e-12 of the largest (an interpolated zero is 0, not 5.684342E-14).
+  pure function roundoff_to_zero(values) result(v)
+    !> The values.
+    real(wp), intent(in) :: values(:)
+    real(wp) :: v(size(values))
+    v = values
+    if (size(v) == 0) return
+    where (abs(v) <= 1.0e-12_wp * maxval(abs(v))) v = 0.0_wp
+  end function roundoff_to_zero
 
   !> The step table's load-edge marks (the coarse-step warning) of one load: a constant
   !> has none (skipped); a step_values column is passed as given, other schedules computed

@@ -670,6 +670,8 @@ contains
     ph = h - 22.0_wp
     call x_range(table%rows(ci, :), table%columns(ci)%unit == "deg", xlo, xhi, xstep)
     mean = cycle_mean(table%rows(ci, :), table%rows(c, :))
+    ! roundoff of a mean that is zero (a conservative cycle): printed as 0, not -5.53E-16
+    if (abs(mean) <= 1.0e-12_wp * maxval(abs(table%rows(c, :)))) mean = 0.0_wp
     call y_range([table%rows(c, :), mean], ylo, yhi, ystep)
     call put_axes(out, left, top, pw, ph, xlo, xhi, xstep, ylo, yhi, ystep, &
       table%columns(ci)%name//", "//table%columns(ci)%unit, table%columns(c)%name//", "//table%columns(c)%unit)
