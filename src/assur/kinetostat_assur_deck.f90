@@ -302,42 +302,44 @@ contains
   !> The dyads' kinds by name, as the docs name them: `dyad(i)%kind = RRR` or `'RRR'` (any
   !> case; RRR RRP RPR PRP RPP) becomes the code 1..5, blank-padded to the same length (the
   !> columns of every message stay those of the deck). Other text is left as it is.
-  pure subroutine kind_names_as_codes(records)
-    !> The deck's records, changed in place.
-    character(*), intent(inout) :: records(:)
+  pure subroutine kind_names_as_codes(deck_text)
+    !> The deck (a copy), its records changed in place.
+    type(deck_source_t), intent(inout) :: deck_text
     integer :: r, at, from, i, j, code, n
     character(len=:), allocatable :: low
-    do r = 1, size(records)
-      low = lower(records(r))
-      from = 1
-      do
-        at = index(low(from:), "%kind")
-        if (at == 0) exit
-        i = from + at - 1 + len("%kind")
-        from = i
-        i = skip_blanks(low, i)
-        if (i > len(low)) exit
-        if (low(i:i) /= "=") cycle
-        i = skip_blanks(low, i + 1)
-        if (i + 2 > len(low)) exit
-        j = i
-        if (low(i:i) == "'" .or. low(i:i) == '"') j = i + 1
-        if (j + 2 > len(low)) exit
-        code = findloc(kind_names, upper(low(j:j + 2)), dim=1)
-        if (code == 0) cycle
-        n = j + 3 ! just after the name
-        if (j > i) then
-          if (n > len(low)) cycle
-          if (low(n:n) /= low(i:i)) cycle ! the closing quote
-          n = n + 1
-        end if
-        if (n <= len(low)) then
-          if (index(" ,/!"//achar(9), low(n:n)) == 0) cycle ! a longer word
-        end if
-        records(r)(i:n - 1) = repeat(" ", n - i)
-        records(r)(i:i) = achar(iachar("0") + code)
+    associate (records => deck_text%records)
+      do r = 1, size(records)
+        low = lower(records(r))
+        from = 1
+        do
+          at = index(low(from:), "%kind")
+          if (at == 0) exit
+          i = from + at - 1 + len("%kind")
+          from = i
+          i = skip_blanks(low, i)
+          if (i > len(low)) exit
+          if (low(i:i) /= "=") cycle
+          i = skip_blanks(low, i + 1)
+          if (i + 2 > len(low)) exit
+          j = i
+          if (low(i:i) == "'" .or. low(i:i) == '"') j = i + 1
+          if (j + 2 > len(low)) exit
+          code = findloc(kind_names, upper(low(j:j + 2)), dim=1)
+          if (code == 0) cycle
+          n = j + 3 ! just after the name
+          if (j > i) then
+            if (n > len(low)) cycle
+            if (low(n:n) /= low(i:i)) cycle ! the closing quote
+            n = n + 1
+          end if
+          if (n <= len(low)) then
+            if (index(" ,/!"//achar(9), low(n:n)) == 0) cycle ! a longer word
+          end if
+          records(r)(i:n - 1) = repeat(" ", n - i)
+          records(r)(i:i) = achar(iachar("0") + code)
+        end do
       end do
-    end do
+    end associate
   contains
     !> The first non-blank position at or after i (len + 1 when none).
     pure integer function skip_blanks(text, i) result(k)
@@ -444,7 +446,7 @@ contains
     if (allocated(source%first_record)) coded%first_record = source%first_record
     if (allocated(source%record_length)) coded%record_length = source%record_length
     coded%cut_width = source%cut_width
-    call kind_names_as_codes(coded%records)
+    call kind_names_as_codes(coded)
     read (coded%records, nml=assur, iostat=probe%ios, iomsg=probe%msg)
     do while (probe%retry(coded)) ! on failure: find the line and the assignment
       read (probe%records, nml=assur, iostat=probe%ios, iomsg=probe%msg)

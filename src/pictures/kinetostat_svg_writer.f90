@@ -375,12 +375,13 @@ contains
   !> cut into equal stretches, of each its first and last row and the rows of the smallest
   !> and largest value of every column of `values` (so the curve keeps its extremes and its
   !> bounding box). All rows when there are no more than `limit`.
-  pure function thin_indices(values, limit) result(keep)
+  pure subroutine thin_indices(values, limit, keep)
     !> One column per drawn coordinate, one row per step.
     real(wp), intent(in) :: values(:, :)
     !> Most rows kept (>= 2 + 2 * columns).
     integer, intent(in) :: limit
-    integer, allocatable :: keep(:)
+    !> The rows kept, increasing.
+    integer, allocatable, intent(out) :: keep(:)
     logical, allocatable :: taken(:)
     integer :: n, stretches, s, first, last, c
     n = size(values, 1)
@@ -402,7 +403,7 @@ contains
       end do
     end if
     keep = pack([(s, s=1, n)], taken)
-  end function thin_indices
+  end subroutine thin_indices
 
   !> The origin of a force diagram: light axes across the plot area, a small circle and "O".
   !> Returns the boxes of its three labels (centres and half-widths, mm) for the placement
@@ -438,7 +439,7 @@ contains
     ! a long run: the curve through its extremes, without rays, dots and step numbers
     thinned = n > max_drawn_points
     if (thinned) then
-      keep = thin_indices(reshape([fx, fy], [n, 2]), max_drawn_points)
+      call thin_indices(reshape([fx, fy], [n, 2]), max_drawn_points, keep)
       fx = fx(keep)
       fy = fy(keep)
     end if
@@ -693,7 +694,7 @@ contains
     if (len(dash) > 0) style = style//' stroke-dasharray="'//dash//'"'
     if (size(x) > max_drawn_points) then
       ! a long run: the line through its extremes, no dots (they would merge into the line)
-      keep = thin_indices(reshape(y, [size(y), 1]), max_drawn_points)
+      call thin_indices(reshape(y, [size(y), 1]), max_drawn_points, keep)
       call out%put(svg_path(svg_polyline_d(x(keep), y(keep)), style))
       return
     end if
