@@ -231,7 +231,8 @@ contains
     type(deck_source_t) :: source
     type(deck_source_t) :: patched
     !> Warnings for variables given more than once.
-    character(len=:), allocatable :: repeats(:)
+    character(len=512), allocatable :: repeats(:)
+    allocate (repeats(0))
     call load_deck(path, source, error)
     if (allocated(error)) return
     call read_group_name(source, group, error)
