@@ -23,7 +23,9 @@ module kinetostat_deck_repeats
 contains
 
   !> One remark per variable assigned more than once: "omega1 is given twice (lines 6 and
-  !> 9); the last value counts" (more: "3 times (lines 6, 9, 12)"). Empty when none.
+  !> 9); the last value counts" (more: "3 times (lines 6, 9, 12)"). Empty when none. The
+  !> lines `kinetostat balance` appends (from its first line whose comment names it) replace
+  !> values on purpose and are not counted.
   pure function deck_repeats(source) result(remarks)
     !> The deck.
     type(deck_source_t), intent(in) :: source
@@ -37,6 +39,7 @@ contains
     do k = 1, deck_line_count(source)
       line = deck_line(source, k)
       if (len(line) > scan_width) line = line(1:scan_width)
+      if (index(lower(line), "; kinetostat balance") > 0) exit
       starts = assignment_starts(line)
       do i = 1, size(starts)
         eq = index(line(starts(i):), "=")
