@@ -11,7 +11,8 @@ module kinetostat_assur_deck
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str, number_str, lower, upper
   use kinetostat_text_buffer, only: text_buffer_t
-  use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, unset_bits, max_deck_array, &
+  use kinetostat_deck, only: longest_quoted, &
+    check_namelist_syntax, write_template_lines, deck_context_t, unset_real, unset_bits, max_deck_array, &
     deck_array_capacities, deck_source_t, namelist_probe_t, deck_error, require_all_set, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn, &
     is_whole_in, require_whole
@@ -24,13 +25,15 @@ module kinetostat_assur_deck
   use kinetostat_assur, only: assur_mech_t, assur_link_t, assur_dyad_t, assur_force_t, link_a, link_b, &
     output_pair_of, assur_extreme, assur_kinematics, link_position
   use kinetostat_assur_friction, only: pair_friction_t, friction_active
+  use kinetostat_dynamics, only: dynamics_steady
+  use kinetostat_dynamics_deck, only: dynamics_deck_t, read_dynamics_settings, require_one_turn
   implicit none
   private
   public :: assur_deck_t, read_assur_deck, write_assur_template, assur_window
   public :: load_schedule_t, load_constant, load_window, load_column, load_table
   public :: resist_none, resist_moment, resist_force
   public :: assur_phi1_deg, assur_omega1_steps, assur_omega1, assur_eps1, assur_motion_sign
-  public :: assur_load_value, assur_force_values, assur_moment_values, assur_load_steps
+  public :: assur_load_value, assur_force_values, assur_moment_values, assur_load_steps, table_value
   public :: max_dyads, max_forces, max_moments
 
   !> Capacity of the dyad list.
@@ -242,6 +245,8 @@ module kinetostat_assur_deck
     type(load_schedule_t), allocatable :: force_load(:)
     !> How each external moment (N*m) is given per step (see assur_moment_values).
     type(load_schedule_t), allocatable :: moment_load(:)
+    !> Machine dynamics settings (dynamics, delta, j_rotor, j_flywheel).
+    type(dynamics_deck_t) :: dyn
     !> Reporting frame angle of each pair (dyad pairs, then crank pin), rad.
     real(wp), allocatable :: pair_frame(:)
     !> Column name stem of each pair ("F21").
@@ -379,9 +384,24 @@ contains
     type(assur_deck_t), intent(out) :: deck
     !> Input error naming file, group, variable and reason.
     type(error_t), allocatable, intent(out) :: error
-    !> As long as the whole deck: an unterminated quote reads the rest of the deck into it
-    !> (a shorter variable makes gfortran print a runtime warning); at most 80 are kept.
-    character(len=size(source%records) * len(source%records) + 1) :: title
+    call read_assur_group(source, longest_quoted(source), deck, error)
+  end subroutine read_assur_deck
+
+  !> Read and validate an `&assur` deck whose longest quoted text has `title_length`
+  !> characters (the length of the title read).
+  subroutine read_assur_group(source, title_length, deck, error)
+    !> The deck, read into memory (see load_deck).
+    type(deck_source_t), intent(in) :: source
+    !> Length of the title variable read (characters, >= 1).
+    integer, intent(in) :: title_length
+    !> The validated deck.
+    type(assur_deck_t), intent(out) :: deck
+    !> Input error naming file, group, variable and reason.
+    type(error_t), allocatable, intent(out) :: error
+    !> As long as the longest quoted text of the deck (an unclosed quote is refused before
+    !> the READ); at most 80 are kept. Allocated, not automatic: a text of 10^5 characters
+    !> and more would overflow the stack.
+    character(len=title_length), allocatable :: title
     !> The deck with the dyads' kind names (RRR, 'RRP', ...) replaced by their codes.
     type(deck_source_t) :: coded
     !> Integer deck variables, read as reals (see require_whole).
@@ -404,6 +424,9 @@ contains
     !> frame_id and crank_id as integers.
     integer :: frame_no, crank_no, nd, nf, nm, n_omega, n_eps, n_values, k, d, i
     real(wp) :: crank_at(2), crank_m, crank_j, crank_s(2), omega1, g, gravity_angle, phi_start, dphi
+    !> Machine dynamics variables (see kinetostat_dynamics_deck).
+    real(wp) :: delta, j_rotor, j_flywheel
+    character(len=32) :: dynamics
     !> Friction coefficient and journal radius (m) of the crank's pivot A.
     real(wp) :: crank_f, crank_r
     real(wp), allocatable :: omega1_step(:), eps1_step(:), step_values(:)
@@ -422,10 +445,12 @@ contains
     namelist /assur/ title, frame_id, crank_id, crank_at, crank_m, crank_j, crank_s, omega1, &
       omega1_step, eps1_step, g, gravity_angle, phi_start, dphi, n, dyad, force, moment, &
       step_values, angles_signed, components, drive_dyad, drive_pair, output_link, phi1, start_at, crank_f, crank_r, &
-      coordinates, phi_ref
+      coordinates, phi_ref, dynamics, delta, j_rotor, j_flywheel
 
     ctx%path = source%path
     ctx%group = group_name
+    allocate (title)
+    dynamics = ""; delta = unset_real; j_rotor = unset_real; j_flywheel = unset_real
     title = ""
     frame_id = 0.0_wp; crank_id = 1.0_wp; n = unset_real
     drive_dyad = unset_real; drive_pair = unset_real
@@ -440,6 +465,8 @@ contains
     allocate (omega1_step(capacity(1)), eps1_step(capacity(2)), step_values(capacity(3)), phi1(capacity(4)), &
               source=unset_real)
 
+    call check_namelist_syntax(source, ctx%group, error)
+    if (allocated(error)) return
     coded%path = source%path
     allocate (character(len=len(source%records)) :: coded%records(size(source%records)))
     coded%records(:) = source%records(:)
@@ -526,7 +553,7 @@ contains
     call require_rule(ctx, "dyad", nd >= 1, "at least one dyad is required (dyad(1)%kind missing)", error)
     if (allocated(error)) return
     do d = nd + 1, max_dyads
-      if (dyad_touched(dyad(d))) then
+      if (dyad_touched(dyad(d)) .or. is_set(dyad(d)%kind)) then
         call deck_error(ctx, "dyad("//int_str(d)//")", "dyads must be numbered 1.."//int_str(nd + 1)// &
           " without gaps (dyad("//int_str(nd + 1)//")%kind is missing)", error)
         return
@@ -582,13 +609,22 @@ contains
     call read_output_link(ctx, output_link, ids, deck%mech, error); if (allocated(error)) return
     call crank_angles(ctx, deck, error); if (allocated(error)) return
     do k = nf + 1, max_forces
-      if (any(is_set([force(k)%value, force(k)%angle, force(k)%column, force(k)%fx, force(k)%fy, force(k)%table(1)]))) then
+      if (is_set(force(k)%link) .and. k > nf + 1) then
+        call deck_error(ctx, "force("//int_str(nf + 1)//")", "missing: force("//int_str(k)// &
+          ") is given, and forces must be numbered 1, 2, ... without gaps", error)
+        return
+      else if (any(is_set([force(k)%value, force(k)%angle, force(k)%column, force(k)%fx, force(k)%fy, &
+                           force(k)%table(1)]))) then
         call deck_error(ctx, "force("//int_str(k)//")%link", "missing (forces must be numbered without gaps)", error)
         return
       end if
     end do
     do k = nm + 1, max_moments
-      if (any(is_set([moment(k)%value, moment(k)%column, moment(k)%table(1)]))) then
+      if (is_set(moment(k)%link) .and. k > nm + 1) then
+        call deck_error(ctx, "moment("//int_str(nm + 1)//")", "missing: moment("//int_str(k)// &
+          ") is given, and moments must be numbered 1, 2, ... without gaps", error)
+        return
+      else if (any(is_set([moment(k)%value, moment(k)%column, moment(k)%table(1)]))) then
         call deck_error(ctx, "moment("//int_str(k)//")%link", "missing (moments must be numbered without gaps)", error)
         return
       end if
@@ -679,7 +715,32 @@ contains
     deck%components = components
     deck%frame_id = frame_no
     deck%crank_id = crank_no
-  end subroutine read_assur_deck
+
+    ! ---- machine dynamics: reduced to the crank; a steady cycle over one turn, loads at any angle
+    if (len_trim(dynamics) > 0 .and. trim(adjustl(dynamics)) /= "none") then
+      call require_rule(ctx, "dynamics", deck%mech%drive_dyad == 0, "the dynamics stage reduces to a crank "// &
+        "input: not with a linear actuator (drive_dyad)", error)
+      if (allocated(error)) return
+      call require_rule(ctx, "dynamics", .not. deck%prescribed, "omega1_step/eps1_step prescribe the motion; "// &
+        "the dynamics stage needs omega1 (the mean speed)", error)
+      if (allocated(error)) return
+    end if
+    call read_dynamics_settings(ctx, dynamics, delta, j_rotor, j_flywheel, omega1, deck%dyn, error)
+    if (allocated(error)) return
+    if (deck%dyn%mode >= dynamics_steady) then
+      call require_rule(ctx, "dynamics", .not. deck%friction_on, "a steady cycle with friction in the pairs is "// &
+        "not supported (M_red would depend on the reactions): set the friction coefficients to 0", error)
+      if (allocated(error)) return
+      call require_rule(ctx, "phi1", .not. allocated(deck%phi_list), "a steady cycle needs phi_start and dphi "// &
+        "over one turn, not a list of angles", error)
+      if (allocated(error)) return
+      call require_one_turn(ctx, deck%dphi, deck%n, error); if (allocated(error)) return
+      call require_rule(ctx, "step_values", .not. (any(deck%force_load%kind == load_column) .or. &
+        any(deck%moment_load%kind == load_column)), "a steady cycle needs every load at any crank angle: "// &
+        "give it as a constant, a window or a table, not per step", error)
+      if (allocated(error)) return
+    end if
+  end subroutine read_assur_group
 
   !> The required variables the deck lacks, in the order the checks of read_assur_deck meet
   !> them: phi_ref (global form), dphi (unless a phi1 list), omega1 (or the other of
@@ -733,7 +794,8 @@ contains
       nd = d
     end do
     if (nd < size(dyad)) then
-      call add_missing(names, "dyad("//int_str(nd + 1)//")%kind", nd == 0 .or. any(dyad_touched(dyad(nd + 1:))))
+      call add_missing(names, "dyad("//int_str(nd + 1)//")%kind", nd == 0 .or. any(dyad_touched(dyad(nd + 1:))) &
+                       .or. any(is_set(dyad(nd + 1:)%kind)))
     end if
     do d = 1, nd
       p = "dyad("//int_str(d)//")%"

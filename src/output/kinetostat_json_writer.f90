@@ -8,6 +8,7 @@ module kinetostat_json_writer
     col_component, echo_real_kind, echo_int_kind, echo_logical_kind, echo_array_kind, echo_text_kind, echo_heading_kind
   use kinetostat_format, only: full_number, put_cell, cell_room
   use kinetostat_text_buffer, only: text_buffer_t
+  use kinetostat_text, only: utf8_length
   use kinetostat_row_blocks, only: put_row_blocks
   implicit none
   private
@@ -74,7 +75,23 @@ contains
       end do
       call out%put("  ],")
     end if
-    if (table%has_selfcheck) then
+    if (allocated(table%dynamics)) then
+      line = '  "dynamics": {'
+      do i = 1, size(table%dynamics)
+        if (i > 1) line = line//", "
+        line = line//json_string(table%dynamics(i)%name)//": "//full_number(table%dynamics(i)%values(1))
+      end do
+      call out%put(line//"},")
+    end if
+    if (table%has_selfcheck .and. table%max_drive_deviation >= 0.0_wp) then
+      call out%put('  "selfcheck": {"max_residual": '//full_number(table%max_residual)// &
+        ', "max_mismatch": '//full_number(table%max_mismatch)//', "driver": '//json_string(table%driver)// &
+        ', "max_drive_deviation": '//full_number(table%max_drive_deviation)// &
+        ', "limit": '//full_number(selfcheck_tolerance)//', "ok": '// &
+        trim(merge("true ", "false", table%max_residual <= selfcheck_tolerance .and. &
+                   table%max_mismatch <= selfcheck_tolerance .and. &
+                   table%max_drive_deviation <= selfcheck_tolerance))//"},")
+    else if (table%has_selfcheck) then
       call out%put('  "selfcheck": {"max_residual": '//full_number(table%max_residual)// &
         ', "max_mismatch": '//full_number(table%max_mismatch)//', "driver": '//json_string(table%driver)// &
         ', "limit": '//full_number(selfcheck_tolerance)//', "ok": '// &
@@ -226,24 +243,32 @@ contains
     call out%append(text)
   end subroutine put_echo_object
 
-  !> A JSON string literal: quotes, backslashes and control characters escaped; UTF-8 kept.
+  !> A JSON string literal: quotes, backslashes, control characters and bytes that are not
+  !> valid UTF-8 escaped (\u00XX); valid UTF-8 kept.
   pure function json_string(s) result(text)
     !> Text.
     character(*), intent(in) :: s
     character(len=:), allocatable :: text
     character(len=6) :: esc
-    integer :: i, c
+    integer :: i, c, n
     text = '"'
-    do i = 1, len(s)
+    i = 1
+    do while (i <= len(s))
       c = iachar(s(i:i))
+      n = utf8_length(s, i)
       if (s(i:i) == '"' .or. s(i:i) == '\') then
         text = text//'\'//s(i:i)
-      else if (c < 32 .or. c == 127) then
+      else if (c < 32 .or. c == 127 .or. n == 0) then
+        ! a control character, or a byte that is not part of valid UTF-8 (as its Latin-1
+        ! character, so that the file stays valid UTF-8 and valid JSON)
         write (esc, '("\u",z4.4)') c
         text = text//esc
       else
-        text = text//s(i:i)
+        text = text//s(i:i + n - 1)
+        i = i + n
+        cycle
       end if
+      i = i + 1
     end do
     text = text//'"'
   end function json_string

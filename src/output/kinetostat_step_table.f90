@@ -8,7 +8,7 @@ module kinetostat_step_table
   use kinetostat_kinds, only: wp, rad_to_deg
   implicit none
   private
-  public :: step_table_t, column_t, echo_record_t, echo_cursor_t, remark_t, column_tally_t, edge_point_t, step_span
+  public :: step_table_t, column_t, echo_record_t, echo_cursor_t, remark_t, column_tally_t, edge_point_t, step_span, worst_row
   public :: col_input_angle, col_force, col_force_angle, col_component, col_moment, col_length, &
     col_flag, col_count, col_ratio, col_other, column_kind_names
   public :: echo_real_kind, echo_int_kind, echo_logical_kind, echo_array_kind, echo_text_kind, &
@@ -169,6 +169,13 @@ module kinetostat_step_table
     real(wp) :: span = 0.0_wp
     !> Whether the last row seen was counted.
     logical :: last_counted = .false.
+    !> `total` of the values scaled by kinetostat_summary's value_scale (2**-512), and
+    !> `area2` of the values and input steps scaled by value_scale and step_scale
+    !> (2**-560): the same sums in a range where they cannot overflow (|v| < 1.8e308),
+    !> used when the plain ones did.
+    real(wp) :: total_scaled = 0.0_wp
+    !> See `total_scaled`.
+    real(wp) :: area2_scaled = 0.0_wp
   end type column_tally_t
 
   !> The input coordinate at a row next to a load edge (for the coarse-step warning's text).
@@ -215,6 +222,10 @@ module kinetostat_step_table
     real(wp) :: max_residual = 0.0_wp
     !> Largest relative mismatch of the driving effort against its independent value.
     real(wp) :: max_mismatch = 0.0_wp
+    !> Row of the run (1..) with the largest residual (0: not known).
+    integer :: residual_row = 0
+    !> Row of the run with the largest mismatch (0: not known).
+    integer :: mismatch_row = 0
     !> Name of the driving quantity ("M1", "F2", ...).
     character(len=:), allocatable :: driver
     !> Footer label of the residual line (default: all links and steps).
@@ -236,6 +247,12 @@ module kinetostat_step_table
     character(len=:), allocatable :: summary_heading
     !> Summary records (real values and lines of text), printed after RESULTS; none by default.
     type(echo_record_t), allocatable :: summary(:)
+    !> The machine dynamics figures of the run (the DYNAMICS block, JSON "dynamics": M_d, the
+    !> flywheel, the speed's extremes, delta); not allocated without a dynamics stage.
+    type(echo_record_t), allocatable :: dynamics(:)
+    !> Largest |M1 - M_d| / |M_d| over the rows with the true motion (negative: no steady
+    !> cycle in the run).
+    real(wp) :: max_drive_deviation = -1.0_wp
     !> The run reports the pair forces in link axes (--frame link; the legacy table prints the
     !> link-axes columns instead of magnitudes and angles).
     logical :: link_frame = .false.
@@ -262,6 +279,9 @@ module kinetostat_step_table
     real(wp) :: largest_step = 0.0_wp
     !> Twice the driver's work so far (trapezoid sum over its coordinate), J.
     real(wp) :: work2 = 0.0_wp
+    !> `work2` of the driver's values and coordinate steps scaled (see column_tally_t's
+    !> `area2_scaled`), used when `work2` overflowed.
+    real(wp) :: work2_scaled = 0.0_wp
     !> The driver's coordinate in the last row tallied (m, or rad).
     real(wp) :: last_coordinate = 0.0_wp
     !> Input coordinates at the rows next to a load edge (for the coarse-step warning).
@@ -305,6 +325,7 @@ module kinetostat_step_table
     procedure :: echo_line
     procedure :: summary_real
     procedure :: summary_line
+    procedure :: dynamics_real
   end type step_table_t
 
 contains
@@ -631,7 +652,7 @@ contains
   end function void_cell
 
   !> The self-check figures of the run.
-  pure subroutine set_selfcheck(self, max_residual, max_mismatch, driver)
+  pure subroutine set_selfcheck(self, max_residual, max_mismatch, driver, residual_row, mismatch_row)
     class(step_table_t), intent(inout) :: self
     !> Largest relative equilibrium residual over all links and rows.
     real(wp), intent(in) :: max_residual
@@ -639,15 +660,38 @@ contains
     real(wp), intent(in) :: max_mismatch
     !> Name of the driving quantity ("M1", "F2", ...).
     character(*), intent(in) :: driver
+    !> Row of this block (1..) with the largest residual, and with the largest mismatch.
+    integer, intent(in), optional :: residual_row, mismatch_row
     ! a later block of the run keeps the largest over all blocks (a NaN stays, for the guard)
     if (self%row_offset == 0 .or. max_residual > self%max_residual .or. ieee_is_nan(max_residual)) then
       self%max_residual = max_residual
+      self%residual_row = 0
+      if (present(residual_row)) self%residual_row = self%row_offset + residual_row
     end if
     if (self%row_offset == 0 .or. max_mismatch > self%max_mismatch .or. ieee_is_nan(max_mismatch)) then
       self%max_mismatch = max_mismatch
+      self%mismatch_row = 0
+      if (present(mismatch_row)) self%mismatch_row = self%row_offset + mismatch_row
     end if
     self%driver = driver
   end subroutine set_selfcheck
+
+  !> Index of the worst self-check figure of a block: the first NaN, else the largest (1
+  !> for an empty array).
+  pure integer function worst_row(figures)
+    !> Self-check figures of the block's rows.
+    real(wp), intent(in) :: figures(:)
+    integer :: k
+    worst_row = 1
+    if (size(figures) == 0) return
+    do k = 1, size(figures)
+      if (ieee_is_nan(figures(k))) then
+        worst_row = k
+        return
+      end if
+    end do
+    worst_row = maxloc(figures, 1)
+  end function worst_row
 
   !> Number of rows.
   pure integer function row_count(self)
@@ -915,5 +959,18 @@ contains
     if (.not. allocated(self%summary)) allocate (self%summary(0))
     self%summary = [self%summary, echo_record_t(kind=echo_line_kind, name=text, unit="")]
   end subroutine summary_line
+
+  !> A figure of the machine dynamics (the DYNAMICS block, JSON "dynamics").
+  pure subroutine dynamics_real(self, name, value, unit)
+    class(step_table_t), intent(inout) :: self
+    !> Name as printed and as the JSON key ("M_d").
+    character(*), intent(in) :: name
+    !> Value.
+    real(wp), intent(in) :: value
+    !> Unit text.
+    character(*), intent(in) :: unit
+    if (.not. allocated(self%dynamics)) allocate (self%dynamics(0))
+    self%dynamics = [self%dynamics, echo_record_t(kind=echo_real_kind, name=name, unit=unit, values=[value])]
+  end subroutine dynamics_real
 
 end module kinetostat_step_table

@@ -59,6 +59,7 @@ cmp -s "$out" "$cli_tmp/eq.csv" && [ -s "$out" ] && pass || fail format-equals-f
 # --- --help lists every option and subcommand; the man page and the completion know them too
 run_ks --help
 for word in -o --output --set --format --pairs --at --lang --kinematics -q --quiet --strict -h --help -V \
+  --max-deck-size --allow-selfcheck-failure \
   --version template diff --rtol --atol table csv json svg fourbar engine sweep --vary --part summary; do
   if grep -q -- "$word" "$out"; then pass; else fail "help-lists-$word" "--help does not mention $word"; fi
   if grep -q -- "$(printf '%s' "$word" | sed 's/-/\\\\-/g')" man/kinetostat.1; then pass
@@ -77,5 +78,5 @@ complete_words() {
 [ "$(complete_words kinetostat --format j)" = "json" ] && pass || fail completion-format "$(complete_words kinetostat --format j)"
 [ "$(complete_words kinetostat template four)" = "fourbar" ] && pass || fail completion-kind "$(complete_words kinetostat template four)"
 [ "$(complete_words kinetostat di)" = "diff" ] && pass || fail completion-subcommand "$(complete_words kinetostat di)"
-[ "$(complete_words kinetostat data/pr32)" = "data/pr3207.nml" ] && pass || fail completion-deck "$(complete_words kinetostat data/pr32)"
+[ "$(complete_words kinetostat data/pr3207.)" = "data/pr3207.nml" ] && pass || fail completion-deck "$(complete_words kinetostat data/pr3207.)"
 [ "$(complete_words kinetostat diff --rt)" = "--rtol" ] && pass || fail completion-diff-option "$(complete_words kinetostat diff --rt)"
