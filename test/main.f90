@@ -20,12 +20,13 @@ program kinetostat_tests
   use test_lapack, only: run_lapack_tests
   use test_blocks, only: run_blocks_tests
   use test_records, only: run_records_tests
+  use test_linkage, only: run_linkage_tests
   use, intrinsic :: iso_fortran_env, only: error_unit
   implicit none
   !> Suite names, in the order they run.
   character(*), parameter :: suite_names(*) = [character(len=11) :: &
     "foundation", "pr3207", "pr3050", "sixbar", "gears", "cam", "assur", "assur_ext", "friction", "io", &
-    "kinematics", "svg", "decimal", "lapack", "blocks", "records"]
+    "kinematics", "svg", "decimal", "lapack", "blocks", "records", "linkage"]
   type(test_counts_t) :: t
   logical :: selected(size(suite_names))
   integer :: i
@@ -77,6 +78,7 @@ contains
     select case (name)
     case ("foundation"); call run_foundation_tests(t)
     case ("pr3207"); call run_pr3207_tests(t)
+    case ("linkage"); call run_linkage_tests(t)
     case ("pr3050"); call run_pr3050_tests(t)
     case ("sixbar"); call run_sixbar_tests(t)
     case ("gears"); call run_gears_tests(t)

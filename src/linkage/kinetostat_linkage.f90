@@ -391,6 +391,7 @@ contains
     real(wp), allocatable :: phi(:), jac(:, :), dx(:), v(:, :), target(:), from(:), q_good(:)
     real(wp) :: span
     integer :: m, s, it, nr, d
+    logical :: converged
     nr = linkage_rows(mech)
     allocate (phi(nr), jac(nr, nr), dx(nr), v(nr, size(dq)), target(size(dq)))
     span = 0.0_wp
@@ -413,9 +414,11 @@ contains
         return
       end if
       q = q + matmul(v, target - from)
+      converged = .false.
       do it = 1, max_newton
         call constraints(mech, q, target, phi, jac)
-        if (maxval(abs(phi)) <= newton_tol * mech%size) exit
+        converged = maxval(abs(phi)) <= newton_tol * mech%size
+        if (converged) exit
         call solve_dense(jac, -phi, dx, error)
         if (allocated(error)) then
           call fatal_error(error, exit_geometry, fail_text("the Jacobian is singular (a dead position)"))
@@ -423,7 +426,7 @@ contains
         end if
         q = q + dx
       end do
-      if (maxval(abs(phi)) > newton_tol * mech%size) then
+      if (.not. converged) then
         call fatal_error(error, exit_geometry, fail_text("Newton's method does not converge (the linkage cannot be assembled)"))
         return
       end if

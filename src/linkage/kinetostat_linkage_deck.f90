@@ -27,6 +27,9 @@ module kinetostat_linkage_deck
   integer, parameter :: max_links = 24, max_pairs = 36, max_drives = 4, max_forces = 16, max_moments = 16
   !> Capacity of a drive's list of values.
   integer, parameter :: max_list = 3601
+  !> A load window's ends are taken this much wider (the drive's unit: deg or m), so that a
+  !> step landing on an end by roundoff of start + (k-1)*step counts as inside.
+  real(wp), parameter :: window_tol = 1.0e-9_wp
   !> Largest number of steps.
   integer, parameter :: max_steps = 1000000
   character(*), parameter :: group_name = "linkage"
@@ -529,7 +532,7 @@ contains
       else
         x = deck%start(1) + real(k - 1, wp) * deck%step(1)
       end if
-      linkage_load_value = merge(sched%value, sched%idle, x >= sched%phi_on .and. x <= sched%phi_off)
+      linkage_load_value = merge(sched%value, sched%idle, x >= sched%phi_on - window_tol .and. x <= sched%phi_off + window_tol)
     else
       linkage_load_value = sched%value
     end if

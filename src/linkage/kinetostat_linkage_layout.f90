@@ -6,7 +6,7 @@ module kinetostat_linkage_layout
   use kinetostat_kinds, only: wp, rad_to_deg
   use kinetostat_deck, only: deck_source_t
   use kinetostat_error, only: error_t
-  use kinetostat_text, only: int_str
+  use kinetostat_text, only: int_str, real_str
   use kinetostat_noise, only: noise_rel
   use kinetostat_vec2, only: magnitude, angle_360_deg, clean_zero
   use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_component, &
@@ -200,9 +200,9 @@ contains
       call drive_names(deck%mech, d, input, effort)
       if (d > 1) text = text//", "
       if (deck%mech%pairs(deck%mech%drives(d)%pair)%kind == pair_r) then
-        text = text//input//" = "//trim(fixed_field(dq(d) * rad_to_deg, 1, 4))//" deg"
+        text = text//input//" = "//trim(adjustl(fixed_field(dq(d) * rad_to_deg, 16, 4)))//" deg"
       else
-        text = text//input//" = "//trim(fixed_field(dq(d), 1, 6))//" m"
+        text = text//input//" = "//trim(adjustl(fixed_field(dq(d), 16, 6)))//" m"
       end if
     end do
   end function drive_text
@@ -286,7 +286,7 @@ contains
       table%mismatch_label = "MAX MISMATCH OF THE DRIVES' EFFORTS, POWER BALANCE"
       if (gap > gap_tolerance) then
         call table%add_warning("the group-by-group reactions differ from the global solve by "// &
-          trim(fixed_field(gap, 1, 3))//" of the largest reaction")
+          real_str(gap)//" of the largest reaction")
       end if
     end associate
   end subroutine solve
