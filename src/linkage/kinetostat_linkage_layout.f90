@@ -164,7 +164,7 @@ contains
     allocate (dq(nd), dv(nd), da(nd), fval(size(deck%force_load)), mval(size(deck%moment_load)))
     do k = first, last
       call linkage_drive_values(deck, k, dq, dv, da)
-      where = path//": step "//int_str(k)//" ("//drive_text(deck, dq)//")"
+      where = path//": &linkage: step "//int_str(k)//" ("//drive_text(deck, dq)//")"
       call linkage_assemble(deck%mech, dq_from, dq, q, where, error)
       if (allocated(error)) return
       dq_from = dq
@@ -194,15 +194,18 @@ contains
     type(linkage_deck_t), intent(in) :: deck
     real(wp), intent(in) :: dq(:)
     character(len=:), allocatable :: text, input, effort
+    character(len=32) :: buf
     integer :: d
     text = ""
     do d = 1, size(dq)
       call drive_names(deck%mech, d, input, effort)
       if (d > 1) text = text//", "
       if (deck%mech%pairs(deck%mech%drives(d)%pair)%kind == pair_r) then
-        text = text//input//" = "//trim(adjustl(fixed_field(dq(d) * rad_to_deg, 16, 4)))//" deg"
+        write (buf, '(g0.10)') dq(d) * rad_to_deg
+        text = text//input//" = "//trim(adjustl(buf))//" deg"
       else
-        text = text//input//" = "//trim(adjustl(fixed_field(dq(d), 16, 6)))//" m"
+        write (buf, '(g0.10)') dq(d)
+        text = text//input//" = "//trim(adjustl(buf))//" m"
       end if
     end do
   end function drive_text
