@@ -216,7 +216,8 @@ contains
       call check_true(t, "linkage-full-turn", .false., error%message)
       return
     end if
-    d = steps(deck%n)%q - steps(1)%q
+    allocate (d(size(q)))
+    d(:) = steps(deck%n)%q - steps(1)%q
     d(3::3) = modulo(d(3::3) + 3.0_wp, 6.283185307179586_wp) - 3.0_wp
     call check_true(t, "linkage-full-turn-poses", maxval(abs(d)) <= 1.0e-9_wp, "max pose change "//real_str(maxval(abs(d))))
     call check_close(t, "linkage-full-turn-F54", norm2(steps(1)%f(:, 7)), norm2(steps(deck%n)%f(:, 7)), 1.0e-9_wp, 1.0e-9_wp)

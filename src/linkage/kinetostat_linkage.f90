@@ -403,8 +403,9 @@ contains
       end if
     end do
     m = max(1, ceiling(span))
-    from = dq_from
-    q_good = q
+    allocate (from(size(dq)), q_good(size(q)))
+    from(:) = dq_from
+    q_good(:) = q
     do s = 1, m
       target = dq_from + (dq - dq_from) * (real(s, wp) / real(m, wp))
       ! predictor: the velocity analogues of the drives at the last assembled pose
@@ -574,7 +575,8 @@ contains
     n = size(mech%links)
     allocate (phi(nr), jac(nr, nr), v(nr, size(mech%drives)))
     call constraints(mech, step%q, [(0.0_wp, d=1, size(mech%drives))], phi, jac)
-    gen = generalised_loads(mech, step%q, step%qd, step%qdd, fval, mval)
+    allocate (gen(size(step%q)))
+    gen(:) = generalised_loads(mech, step%q, step%qd, step%qdd, fval, mval)
     allocate (lam(nr))
     call solve_dense(transpose(jac), -gen, lam, error)
     if (allocated(error)) return

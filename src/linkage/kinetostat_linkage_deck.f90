@@ -365,10 +365,17 @@ contains
         deck%values(:, k) = drive(k)%values(1:nsteps)
       end if
     end do
-    ! a turning pair's drive angles: the driven link's axis is the drive's angle
+    ! a turning pair's drive angles: the driven link's axis is the drive's angle (a drive
+    ! between two moving links: the angle of a's axis from b's)
     do k = 1, nd
       associate (pr => deck%mech%pairs(deck%mech%drives(k)%pair))
         if (pr%kind == pair_r .and. pr%b == 0) deck%mech%links(pr%a)%angle0 = deck%mech%drives(k)%q_ref
+      end associate
+    end do
+    do k = 1, nd
+      associate (pr => deck%mech%pairs(deck%mech%drives(k)%pair))
+        if (pr%kind == pair_r .and. pr%b /= 0) deck%mech%drives(k)%q_ref = deck%mech%drives(k)%q_ref - &
+          deck%mech%links(pr%b)%angle0
       end associate
     end do
 

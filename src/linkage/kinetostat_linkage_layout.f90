@@ -3,12 +3,12 @@
 !> input, every pair's force, each drive's effort), its INPUT DATA echo with the structural
 !> analysis, and the legacy table layout.
 module kinetostat_linkage_layout
-  use kinetostat_kinds, only: wp, rad_to_deg
+  use kinetostat_kinds, only: wp, rad_to_deg, deg_to_rad
   use kinetostat_deck, only: deck_source_t
   use kinetostat_error, only: error_t
   use kinetostat_text, only: int_str, real_str
   use kinetostat_noise, only: noise_rel
-  use kinetostat_vec2, only: magnitude, angle_360_deg, clean_zero
+  use kinetostat_vec2, only: magnitude, angle_360_deg, clean_zero, rotate
   use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_component, &
     col_moment, col_length, col_other
   use kinetostat_format, only: fixed_field, display_width
@@ -16,6 +16,7 @@ module kinetostat_linkage_layout
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_sketch, only: sketch_t
+  use kinetostat_drawing, only: drawing_t, force_load
   use kinetostat_linkage, only: linkage_t, linkage_step_t, pair_r, pair_p, linkage_reference_pose, linkage_assemble, &
     linkage_motion, linkage_statics, link_point_state, point_position
   use kinetostat_linkage_structure, only: structure_lines
@@ -42,6 +43,7 @@ module kinetostat_linkage_layout
     procedure :: write_results
     procedure :: write_template
     procedure :: sketch
+    procedure :: force_plan
   end type linkage_mechanism_t
 
 contains
@@ -91,13 +93,111 @@ contains
     end do
   end subroutine linkage_structure_text
 
-  !> The topology for a drawing: each moving link joins its joints; pivots are the frame's
-  !> turning pairs; guides the sliding pairs on the frame.
+  !> The topology for a drawing: each moving link joins its joints (a block, drawn at its
+  !> sliding pair's joint, when it slides on another link's guide); pivots are the turning
+  !> pairs with the frame, guides the sliding pairs' lines.
   pure subroutine sketch(self, out)
     class(linkage_mechanism_t), intent(in) :: self
     type(sketch_t), intent(out) :: out
-    out%available = .false.
+    character(len=16), allocatable :: joints(:)
+    integer :: i, k, slide
+    associate (mech => self%deck%mech)
+      do i = 1, size(mech%links)
+        allocate (joints(0))
+        slide = 0
+        do k = 1, size(mech%pairs)
+          associate (pr => mech%pairs(k))
+            if (pr%a /= i .and. pr%b /= i) cycle
+            if (pr%kind == pair_p .and. pr%guide /= i .and. slide == 0) then
+              slide = k
+              joints = [character(len=16) :: pr%name, joints]
+            else
+              joints = [character(len=16) :: joints, pr%name]
+            end if
+          end associate
+        end do
+        if (slide > 0) then
+          associate (pr => mech%pairs(slide))
+            call out%add_link(link_name(mech, i), joints, guide_angle(mech, slide), axis_link(mech, pr%guide))
+          end associate
+        else
+          call out%add_link(link_name(mech, i), joints)
+        end if
+        deallocate (joints)
+      end do
+      do k = 1, size(mech%pairs)
+        associate (pr => mech%pairs(k))
+          if (pr%kind == pair_r .and. (pr%a == 0 .or. pr%b == 0)) call out%add_pivot(trim(pr%name))
+          if (pr%kind == pair_p) call out%add_guide(trim(pr%name), guide_angle(mech, k), axis_link(mech, pr%guide))
+        end associate
+      end do
+      if (self%deck%g > 0.0_wp) out%down = mech%gravity / self%deck%g
+    end associate
   end subroutine sketch
+
+  !> A sliding pair's guide direction relative to the x axis of its guide link (the frame:
+  !> absolute), deg.
+  pure real(wp) function guide_angle(mech, k)
+    type(linkage_t), intent(in) :: mech
+    integer, intent(in) :: k
+    guide_angle = atan2(mech%pairs(k)%u(2), mech%pairs(k)%u(1))
+    if (mech%pairs(k)%guide > 0) guide_angle = guide_angle - mech%links(mech%pairs(k)%guide)%angle0
+    guide_angle = guide_angle * rad_to_deg
+  end function guide_angle
+
+  !> The label whose phi<label> column gives link i's axis ("" for the frame).
+  pure function axis_link(mech, i) result(text)
+    type(linkage_t), intent(in) :: mech
+    integer, intent(in) :: i
+    character(len=:), allocatable :: text
+    text = ""
+    if (i > 0) text = link_name(mech, i)
+  end function axis_link
+
+  !> The forces of row `k` on its drawing (--format svg --at K): every pair force at its
+  !> joint, the deck's forces (Q<i>) and moments (MQ<i>, at the link's centre of mass), the
+  !> weights, inertia forces and moments, and each drive's effort at its joint.
+  pure subroutine force_plan(self, table, k, drawing, error)
+    class(linkage_mechanism_t), intent(in) :: self
+    type(step_table_t), intent(in) :: table
+    integer, intent(in) :: k
+    type(drawing_t), intent(inout) :: drawing
+    type(error_t), allocatable, intent(out) :: error
+    character(len=:), allocatable :: input, effort
+    real(wp) :: th, p(2), w(2)
+    integer :: i, c
+    associate (mech => self%deck%mech, deck => self%deck)
+      do i = 1, size(mech%pairs)
+        call drawing%pair_from_table(table, k, force_name(mech, i), trim(mech%pairs(i)%name), error)
+        if (allocated(error)) return
+      end do
+      do i = 1, size(mech%forces)
+        associate (f => mech%forces(i), lk => mech%links(mech%forces(i)%link))
+          th = table%rows(table%column_index("phi"//link_name(mech, f%link)), k) * deg_to_rad - lk%angle0
+          p = drawing%at("S"//link_name(mech, f%link)) + rotate(f%at - lk%s, th)
+          w = f%dir
+          if (f%follow) w = rotate(w, th)
+          call drawing%add_force("Q"//int_str(i), force_load, p, linkage_load_value(deck, deck%force_load(i), k) * w)
+        end associate
+      end do
+      do i = 1, size(mech%moment_link)
+        call drawing%add_moment("MQ"//int_str(i), force_load, drawing%at("S"//link_name(mech, mech%moment_link(i))), &
+          linkage_load_value(deck, deck%moment_load(i), k))
+      end do
+      do i = 1, size(mech%links)
+        call drawing%add_link_loads(table, k, link_name(mech, i), "S"//link_name(mech, i), "S"//link_name(mech, i), &
+          mech%links(i)%m, mech%links(i)%j, mech%gravity)
+      end do
+      do i = 1, size(mech%drives)
+        call drive_names(mech, i, input, effort)
+        c = table%column_index(effort)
+        if (c > 0 .and. mech%pairs(mech%drives(i)%pair)%kind == pair_r) then
+          call drawing%add_moment(effort, force_load, drawing%at(trim(mech%pairs(mech%drives(i)%pair)%name)), &
+            table%rows(c, k))
+        end if
+      end do
+    end associate
+  end subroutine force_plan
 
   !> Name of link i (0: the frame): its deck number.
   pure function link_name(mech, i) result(text)
@@ -126,7 +226,9 @@ contains
     character(len=:), allocatable, intent(out) :: input, effort
     associate (pr => mech%pairs(mech%drives(d)%pair))
       if (pr%kind == pair_r) then
+        ! a drive between two moving links: its input is the relative angle phi<a><b>
         input = "phi"//link_name(mech, pr%a)
+        if (pr%b /= 0) input = input//link_name(mech, pr%b)
         effort = "M"//link_name(mech, pr%a)
       else
         input = "s"//link_name(mech, pr%a)

@@ -130,7 +130,8 @@ contains
       integer, allocatable :: internal(:), ext(:), inner(:)
       integer :: kk, dd, j
       logical :: has_drive
-      unit%links = set
+      allocate (unit%links(size(set)))
+      unit%links(:) = set
       allocate (unit%rows(0), ext(0), inner(0))
       has_drive = .false.
       do kk = 1, p5
@@ -207,9 +208,12 @@ contains
       integer, intent(in), optional :: second(:)
       character(len=:), allocatable :: text
       integer, allocatable :: all(:)
-      integer :: kk
-      all = first
-      if (present(second)) all = [first, second]
+      integer :: kk, m
+      m = size(first)
+      if (present(second)) m = m + size(second)
+      allocate (all(m))
+      all(1:size(first)) = first
+      if (present(second)) all(size(first) + 1:) = second
       text = ""
       do kk = 1, size(all)
         if (kk > 1) text = text//","
