@@ -87,9 +87,9 @@ contains
     type(test_counts_t), intent(inout) :: t
     call expect_error("linkage-w-missing", "link(4)%id = 4"//achar(10)// &
       "pair(5)%name = 'E', pair(5)%kind = 'R', pair(5)%links = 4, 3, pair(5)%at = 0.5, 0.3", &
-      "W = 3n - 2p5 = 3*4 - 2*5 = 2 but 1 drive(s): 1 constraint(s) missing")
+      "W = 3n - 2p5 = 3 x 4 - 2 x 5 = 2 but 1 drive(s): 1 constraint(s) missing")
     call expect_error("linkage-w-surplus", "drive(2)%pair = 'D', drive(2)%start = 0, drive(2)%step = 1, "// &
-      "drive(2)%omega = 1", "W = 3n - 2p5 = 3*3 - 2*4 = 1 but 2 drive(s): 1 surplus constraint(s)")
+      "drive(2)%omega = 1", "W = 3n - 2p5 = 3 x 3 - 2 x 4 = 1 but 2 drive(s): 1 surplus constraint(s)")
     call expect_error("linkage-not-a-group", "link(4)%id = 4, link(5)%id = 5"//achar(10)// &
       "pair(5)%name = 'E', pair(5)%kind = 'R', pair(5)%links = 4, 0, pair(5)%at = 0.5, 0.5"//achar(10)// &
       "pair(6)%name = 'F', pair(6)%kind = 'R', pair(6)%links = 4, 3, pair(6)%at = 0.35, 0.1"//achar(10)// &

@@ -48,10 +48,11 @@ module kinetostat_linkage_deck
 
   !> A pair as written.
   type :: pair_in_t
-    !> Joint name ("A"; default J<k>).
-    character(len=8) :: name = ""
+    !> Joint name ("A"; default J<k>; at most 8 characters: the variable is longer so that a
+    !> longer text is reported, not cut by the namelist read).
+    character(len=64) :: name = ""
     !> 'R' (turning) or 'P' (sliding).
-    character(len=1) :: kind = " "
+    character(len=64) :: kind = ""
     !> The two links: F<links(1)><links(2)> is the force on the first from the second.
     real(wp) :: links(2) = unset
     !> The joint at the reference position (P: a point of the guide where the block is), m.
@@ -67,7 +68,7 @@ module kinetostat_linkage_deck
   !> A drive as written.
   type :: drive_in_t
     !> The driven pair's name: R turns links(1) against links(2), P slides the block.
-    character(len=8) :: pair = ""
+    character(len=64) :: pair = ""
     !> Law start + (k-1)*step (deg for R, m for P, stroke from the reference position) ...
     real(wp) :: start = unset, step = unset
     !> ... or a list of values, one per step.
@@ -216,7 +217,7 @@ contains
     end do
 
     ! ---- pairs
-    np = leading(pair%kind /= " ")
+    np = leading(pair%kind /= "")
     call require_rule(ctx, "pair", np >= 1, "at least one pair is required (pair(1)%kind missing)", error)
     if (allocated(error)) return
     do k = np + 1, max_pairs
@@ -230,15 +231,22 @@ contains
     do k = 1, np
       p = "pair("//int_str(k)//")%"
       associate (pr => deck%mech%pairs(k))
-        call require_rule(ctx, p//"kind", any(lower(pair(k)%kind) == ["r", "p"]), &
-          "must be 'R' (turning) or 'P' (sliding), got '"//pair(k)%kind//"'", error)
+        call require_rule(ctx, p//"kind", any(lower(trim(pair(k)%kind)) == ["r", "p"]), &
+          "must be 'R' (turning) or 'P' (sliding), got '"//trim(pair(k)%kind)//"'", error)
         if (allocated(error)) return
-        pr%kind = merge(pair_r, pair_p, lower(pair(k)%kind) == "r")
+        pr%kind = merge(pair_r, pair_p, lower(trim(pair(k)%kind)) == "r")
         if (is_set(pair(k)%f) .or. is_set(pair(k)%r)) then
           call deck_error(ctx, p//merge("f", "r", is_set(pair(k)%f)), &
             "friction is not yet supported in &linkage decks (use an &assur deck for friction)", error)
           return
         end if
+        call require_rule(ctx, p//"name", len_trim(pair(k)%name) <= len(pr%name), "longer than "// &
+          int_str(len(pr%name))//" characters", error)
+        if (allocated(error)) return
+        call require_rule(ctx, p//"name", verify(trim(pair(k)%name), &
+          "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_") == 0, &
+          "letters, digits and _ only (it names the columns x_<name>), got '"//trim(pair(k)%name)//"'", error)
+        if (allocated(error)) return
         pr%name = pair(k)%name
         if (len_trim(pr%name) == 0) pr%name = "J"//int_str(k)
         do i = 1, k - 1
@@ -318,7 +326,7 @@ contains
       p = "drive("//int_str(k)//")%"
       i = 0
       do a = 1, np
-        if (deck%mech%pairs(a)%name == drive(k)%pair) i = a
+        if (deck%mech%pairs(a)%name == trim(drive(k)%pair)) i = a
       end do
       call require_rule(ctx, p//"pair", i > 0, "no pair is named '"//trim(drive(k)%pair)//"'", error)
       if (allocated(error)) return
@@ -326,7 +334,7 @@ contains
         "pair '"//trim(drive(k)%pair)//"' is driven already", error)
       if (allocated(error)) return
       deck%mech%drives(k)%pair = i
-      deck%drive_pair(k) = drive(k)%pair
+      deck%drive_pair(k) = drive(k)%pair(1:len(deck%drive_pair))
       call count_values(ctx, p//"values", drive(k)%values, count, error); if (allocated(error)) return
       deck%listed(k) = count > 0
       if (count > 0) then

@@ -52,11 +52,11 @@ contains
     w = 3 * n - 2 * p5
     if (w /= nd) then
       if (w > nd) then
-        call fatal_error(error, exit_input, ctx//": W = 3n - 2p5 = 3*"//int_str(n)//" - 2*"//int_str(p5)//" = "// &
+        call fatal_error(error, exit_input, ctx//": W = 3n - 2p5 = 3 x "//int_str(n)//" - 2 x "//int_str(p5)//" = "// &
           int_str(w)//" but "//int_str(nd)//" drive(s): "//int_str(w - nd)// &
           " constraint(s) missing (add a pair or a drive)")
       else
-        call fatal_error(error, exit_input, ctx//": W = 3n - 2p5 = 3*"//int_str(n)//" - 2*"//int_str(p5)//" = "// &
+        call fatal_error(error, exit_input, ctx//": W = 3n - 2p5 = 3 x "//int_str(n)//" - 2 x "//int_str(p5)//" = "// &
           int_str(w)//" but "//int_str(nd)//" drive(s): "//int_str(nd - w)// &
           " surplus constraint(s) (remove a pair or a drive)")
       end if
@@ -283,12 +283,12 @@ contains
       call push(lines, "СТРУКТУРНЫЙ АНАЛИЗ")
       call push(lines, "ПОДВИЖНЫХ ЗВЕНЬЕВ n = "//int_str(n)//", НИЗШИХ ПАР p5 = "//int_str(p5)// &
         ", ВЫСШИХ ПАР p4 = 0")
-      call push(lines, "W = 3n - 2p5 - p4 = 3*"//int_str(n)//" - 2*"//int_str(p5)//" - 0 = "//int_str(3 * n - 2 * p5)// &
+      call push(lines, "W = 3n - 2p5 - p4 = 3 x "//int_str(n)//" - 2 x "//int_str(p5)//" - 0 = "//int_str(3 * n - 2 * p5)// &
                " = ЧИСЛО ПРИВОДОВ")
     else
       call push(lines, "STRUCTURAL ANALYSIS")
       call push(lines, "MOVING LINKS n = "//int_str(n)//", LOWER PAIRS p5 = "//int_str(p5)//", HIGHER PAIRS p4 = 0")
-      call push(lines, "W = 3n - 2p5 - p4 = 3*"//int_str(n)//" - 2*"//int_str(p5)//" - 0 = "//int_str(3 * n - 2 * p5)// &
+      call push(lines, "W = 3n - 2p5 - p4 = 3 x "//int_str(n)//" - 2 x "//int_str(p5)//" - 0 = "//int_str(3 * n - 2 * p5)// &
                " = NUMBER OF DRIVES")
     end if
     top = 1

@@ -15,7 +15,7 @@ lk_structure() {  # NAME DECK LANG EXPECTED-LINE...
   pass
 }
 lk_structure linkage-structure-class3 data/class3.nml en "STRUCTURE FORMULA: I(0,1) -> III(2,3,4,5)" \
-  "CLASS OF THE MECHANISM: III" "W = 3n - 2p5 - p4 = 3*5 - 2*7 - 0 = 1 = NUMBER OF DRIVES"
+  "CLASS OF THE MECHANISM: III" "W = 3n - 2p5 - p4 = 3 x 5 - 2 x 7 - 0 = 1 = NUMBER OF DRIVES"
 lk_structure linkage-structure-fivebar data/fivebar.nml en "STRUCTURE FORMULA: I(0,1) -> I(0,4) -> II(2,3)" \
   "CLASS OF THE MECHANISM: II" "II(2,3)  DYAD (GROUP OF CLASS II, ORDER 2), KIND RRR"
 lk_structure linkage-structure-slider data/linkage_slider_crank.nml en "II(2,3)  DYAD (GROUP OF CLASS II, ORDER 2), KIND RRP"
@@ -57,10 +57,14 @@ done
 
 # wrong decks: one line, exit 2
 lk_deck() { deck_with "$@"; }
-expect_input_error linkage-w-missing "W = 3n - 2p5 = 3\*5 - 2\*7 = 1 but 0 drive|drive: at least one drive" \
+expect_input_error linkage-no-drive "W = 3n - 2p5 = 3 x 5 - 2 x 7 = 1 but 0 drive|drive: at least one drive" \
   "$(deck_with lk_nodrive data/class3.nml 's/^  drive(1).*$//')"
-expect_input_error linkage-w-surplus "W = 3n - 2p5 = 3\*4 - 2\*5 = 2 but 1 drive\(s\): 1 constraint\(s\) missing" \
+expect_input_error linkage-w-missing "W = 3n - 2p5 = 3 x 4 - 2 x 5 = 2 but 1 drive\(s\): 1 constraint\(s\) missing" \
   "$(deck_with lk_onedrive data/fivebar.nml 's/^  drive(2).*$//')"
+expect_input_error linkage-w-surplus "W = 3n - 2p5 = 3 x 5 - 2 x 7 = 1 but 2 drive\(s\): 1 surplus constraint\(s\)" \
+  "$(deck_with lk_twodrives data/class3.nml "s/^  drive(1)%pair = 'O'.*$/&\n  drive(2)%pair = 'B', drive(2)%start = 0, drive(2)%step = 1, drive(2)%omega = 1/")"
+expect_input_error linkage-pair-kind "pair\(2\)%kind: must be 'R' \(turning\) or 'P' \(sliding\), got 'abc'" \
+  "$(deck_with lk_kind data/fivebar.nml "s/pair(2)%kind = 'R'/pair(2)%kind = 'abc'/")"
 expect_input_error linkage-friction "pair\(2\)%f: friction is not yet supported" \
   "$(deck_with lk_friction data/fivebar.nml "s/pair(2)%at = 0.1, 0/pair(2)%at = 0.1, 0, pair(2)%f = 0.1/")"
 expect_input_error linkage-unknown-pair "drive\(1\)%pair: no pair is named 'Q'" \
