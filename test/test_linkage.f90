@@ -1,6 +1,7 @@
 !> Tests of `&linkage` decks (any planar linkage of lower pairs): the structural analysis of the
 !> bundled decks and of wrong decks; velocities and accelerations (class-III group, two
-!> drives, a sliding pair) against central finite differences of the positions; the
+!> drives, sliding pairs on the frame and on moving links, stroke drives) against central
+!> finite differences of the positions; the
 !> reactions' self-checks (every link's equilibrium, the power balance of every drive, the
 !> global against the group-by-group solve); the branch kept through a full turn; a dead
 !> position of the class-III group found (exit 3 naming the group).
@@ -122,6 +123,7 @@ contains
     call fd_deck("data/class3.nml", [10, 14, 25])
     call fd_deck("data/fivebar.nml", [3, 20, 33])
     call fd_deck("data/linkage_slider_crank.nml", [2, 6, 11])
+    call fd_deck("docs/examples/excavator.nml", [1, 9, 20])
   contains
     subroutine fd_deck(path, ks)
       character(*), intent(in) :: path
@@ -174,8 +176,8 @@ contains
   !> largest reaction.
   subroutine test_reactions(t)
     type(test_counts_t), intent(inout) :: t
-    character(len=*), parameter :: paths(4) = [character(len=32) :: "data/class3.nml", "data/fivebar.nml", &
-      "data/linkage_fourbar.nml", "data/linkage_slider_crank.nml"]
+    character(len=*), parameter :: paths(5) = [character(len=32) :: "data/class3.nml", "data/fivebar.nml", &
+      "data/linkage_fourbar.nml", "data/linkage_slider_crank.nml", "docs/examples/excavator.nml"]
     type(linkage_deck_t) :: deck
     type(linkage_step_t), allocatable :: steps(:)
     type(error_t), allocatable :: error

@@ -247,7 +247,7 @@ contains
           "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_") == 0, &
           "letters, digits and _ only (it names the columns x_<name>), got '"//trim(pair(k)%name)//"'", error)
         if (allocated(error)) return
-        pr%name = pair(k)%name
+        pr%name = pair(k)%name(1:len(pr%name))
         if (len_trim(pr%name) == 0) pr%name = "J"//int_str(k)
         do i = 1, k - 1
           call require_rule(ctx, p//"name", deck%mech%pairs(i)%name /= pr%name, "'"//trim(pr%name)// &

@@ -19,6 +19,8 @@ lk_structure linkage-structure-class3 data/class3.nml en "STRUCTURE FORMULA: I(0
 lk_structure linkage-structure-fivebar data/fivebar.nml en "STRUCTURE FORMULA: I(0,1) -> I(0,4) -> II(2,3)" \
   "CLASS OF THE MECHANISM: II" "II(2,3)  DYAD (GROUP OF CLASS II, ORDER 2), KIND RRR"
 lk_structure linkage-structure-slider data/linkage_slider_crank.nml en "II(2,3)  DYAD (GROUP OF CLASS II, ORDER 2), KIND RRP"
+lk_structure linkage-structure-excavator docs/examples/excavator.nml en "STRUCTURE FORMULA: I(0,1,2,3) -> I(1,4,5,6)" \
+  "W = 3n - 2p5 - p4 = 3 x 6 - 2 x 8 - 0 = 2 = NUMBER OF DRIVES"
 lk_structure linkage-structure-ru data/class3.nml ru "ФОРМУЛА СТРОЕНИЯ: I(0,1) -> III(2,3,4,5)" "КЛАСС МЕХАНИЗМА: III"
 
 # every run's INPUT DATA echoes the structure
