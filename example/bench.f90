@@ -32,7 +32,7 @@ program bench
   implicit none
 
   !> Physical-limit estimate of one dedicated step on one core, steps/s: ~300 flops and ~15
-  !> sin/atan2 calls of 10-11 ns each (issue 14).
+  !> sin/atan2 calls of 10-11 ns each.
   real(wp), parameter :: limit_rate = 2.0e6_wp
   !> Step counts of the runs.
   integer, parameter :: step_counts(*) = [10000, 100000, 1000000]

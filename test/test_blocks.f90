@@ -1,5 +1,5 @@
 !> A run solved and written in blocks of rows gives the output of the same run in one block,
-!> byte for byte, with the same warnings, self-check figures and errors (issue 14, item 3):
+!> byte for byte, with the same warnings, self-check figures and errors:
 !> every bundled deck, every text format, blocks of 1, 2, 5 and 7 rows. The spool: text beyond
 !> its bound goes to a temporary file that becomes the target only when the run succeeded.
 module test_blocks

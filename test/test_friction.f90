@@ -1,4 +1,4 @@
-!> Tests of friction in the pairs of the generic engine (issue 13): a crank with only a journal
+!> Tests of friction in the pairs of the generic engine: a crank with only a journal
 !> (M1 = M_load + f*r*|F| by hand), a slider pushed along its guide in statics (f*N, and the
 !> two-contact model f*(|N1| + |N2|) by hand), the friction slider-crank deck (self-check at
 !> every step, P_loss >= 0, M1 - M1_0 with the sign of the motion, efficiency of the working

@@ -1,4 +1,4 @@
-!> A deck's lines cut into records (issue 14, item 3: a deck with 10^6 values on one line
+!> A deck's lines cut into records (a deck with 10^6 values on one line
 !> must not cost the longest line times the number of lines): a deck read from records cut
 !> at any width reads exactly as from whole lines — same values, same errors naming the same
 !> line and assignment, same capacities, same group, same lines, same overrides — for random

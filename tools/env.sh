@@ -5,6 +5,6 @@ py_user_bin="$(python3 -m site --user-base 2>/dev/null || true)/bin"
 export PATH="$py_scripts:$py_user_bin:$PATH"
 
 # The build users run (tools/kinetostat): fpm's release profile with link-time optimisation
-# (kernels ~15 % faster; issue 14), the same flags for every object and for the link.
+# (kernels ~15 % faster), the same flags for every object and for the link.
 # tools/test checks that this build writes the golden files byte for byte too.
 release_build=(--profile release --flag "-flto=auto" --c-flag "-flto=auto" --link-flag "-flto=auto")

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Deterministic mutation test of the bundled decks (issue 9).
+"""Deterministic mutation test of the bundled decks.
 
 Derives a fixed set of broken or extreme decks from data/*.nml (same seed, same decks every
 run), runs the kinetostat binary on each (table, CSV, and for a subset `-o FILE`) and checks

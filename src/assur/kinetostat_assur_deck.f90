@@ -316,7 +316,7 @@ contains
     real(wp) :: glob(2, 3)
     logical :: global, s_given(2), crank_s_given, at_given
     !> frame_id and crank_id as integers.
-    integer :: frame_no, crank_no, nd, nf, nm, n_omega, n_eps, n_values, ios, k, d, i
+    integer :: frame_no, crank_no, nd, nf, nm, n_omega, n_eps, n_values, k, d, i
     real(wp) :: crank_at(2), crank_m, crank_j, crank_s(2), omega1, g, gravity_angle, phi_start, dphi
     !> Friction coefficient and journal radius (m) of the crank's pivot A.
     real(wp) :: crank_f, crank_r
@@ -329,7 +329,6 @@ contains
     type(moment_in_t) :: moment(max_moments)
     !> One force's or moment's schedule as read (then copied into the deck).
     type(load_schedule_t) :: load
-    character(len=512) :: msg
     type(deck_context_t) :: ctx
     type(namelist_probe_t) :: probe
     integer, allocatable :: ids(:)
@@ -355,17 +354,11 @@ contains
     allocate (omega1_step(capacity(1)), eps1_step(capacity(2)), step_values(capacity(3)), phi1(capacity(4)), &
               source=unset_real)
 
-    read (source%records, nml=assur, iostat=ios, iomsg=msg)
-    if (ios /= 0) then
-      ! find the line and the assignment that failed (gfortran's message does not say)
-      call probe%start(source, ios, msg)
-      do while (probe%more(source))
-        read (probe%records, nml=assur, iostat=ios, iomsg=msg)
-        call probe%take(ios, msg)
-      end do
-      call probe%report(source, ctx, error)
-      return
-    end if
+    read (source%records, nml=assur, iostat=probe%ios, iomsg=probe%msg)
+    do while (probe%retry(source)) ! on failure: find the line and the assignment
+      read (probe%records, nml=assur, iostat=probe%ios, iomsg=probe%msg)
+    end do
+    if (probe%failed(source, ctx, error)) return
 
     call require_rule(ctx, "title", len_trim(title) <= len(deck%title), "longer than "// &
       int_str(len(deck%title))//" characters", error)

@@ -21,6 +21,7 @@ module kinetostat_assur_layout
   use kinetostat_assur_statics, only: pair_is_prismatic
   use kinetostat_assur, only: assur_step_t, assur_step, assur_kinematics, link_a, link_b, crank_pin_index
   use kinetostat_drawing, only: drawing_t, force_load
+  use kinetostat_bodies, only: mass_model_t
   use kinetostat_assur_friction, only: friction_step_t, assur_friction_step
   use kinetostat_assur_deck, only: assur_deck_t, read_assur_deck, write_assur_template, load_schedule_t, load_constant, &
     load_column, assur_phi1_deg, assur_omega1_steps, assur_eps1, assur_motion_sign, assur_load_value, &
@@ -69,9 +70,9 @@ module kinetostat_assur_layout
     procedure :: read_deck
     procedure :: solve
     procedure :: write_results
-    procedure :: write_template
     procedure :: sketch
     procedure :: force_plan
+    procedure :: mass_model
   end type assur_mechanism_t
 
 contains
@@ -81,6 +82,7 @@ contains
     !> The mechanism.
     class(mechanism_t), allocatable, intent(out) :: mech
     allocate (assur_mechanism_t :: mech)
+    mech%template_writer => write_assur_template
     mech%title_en = "KINETOSTAT  ASSUR  FORCE ANALYSIS OF A LINKAGE OF CLASS-II ASSUR GROUPS"
     mech%title_ru = "KINETOSTAT  ASSUR  СИЛОВОЙ РАСЧЕТ МЕХАНИЗМА ИЗ ГРУПП АССУРА II" // &
       " КЛАССА"
@@ -92,12 +94,6 @@ contains
     type(error_t), allocatable, intent(out) :: error
     call read_assur_deck(source, self%deck, error)
   end subroutine read_deck
-
-  pure subroutine write_template(self, out)
-    class(assur_mechanism_t), intent(in) :: self
-    type(text_buffer_t), intent(inout) :: out
-    call write_assur_template(out)
-  end subroutine write_template
 
   !> The topology for a drawing: every moving link joins the joints J<pair> of its pairs (a
   !> dyad's link a: pairs 1, 2; link b: pairs 2, 3; the crank: its pivot; each link also the
@@ -973,6 +969,22 @@ contains
     end if
   end function pair_link
 
+  !> The moving links: the input link and the two links of every dyad, each at its centre of
+  !> mass S<id> (link names are the deck's link ids); gravity g along the deck's `down`.
+  pure subroutine mass_model(self, model)
+    class(assur_mechanism_t), intent(in) :: self
+    type(mass_model_t), intent(out) :: model
+    integer :: i
+    associate (mech => self%deck%mech)
+      do i = 1, 2 * size(mech%dyads) + 1
+        associate (l => mech%links(i))
+          call model%add(int_str(l%id), "S"//int_str(l%id), l%m, l%j)
+        end associate
+      end do
+      model%gravity = mech%g * mech%down
+    end associate
+  end subroutine mass_model
+
   !> The forces of row `k` on its drawing (--format svg --at K): every pair force at its
   !> pair's point J<pair>, the deck's external forces (Q<i>, at their points) and moments
   !> (MQ<i>, at the link's centre of mass), the weights, inertia forces and moments of the
@@ -986,6 +998,7 @@ contains
     type(link_state_t) :: states(0:2 * size(self%deck%mech%dyads) + 1)
     type(dyad_pose_t) :: poses(size(self%deck%mech%dyads))
     type(point_state_t) :: ps
+    type(mass_model_t) :: model
     real(wp) :: dir
     integer :: ip, i
     associate (mech => self%deck%mech, deck => self%deck)
@@ -1008,12 +1021,8 @@ contains
         call drawing%add_moment("MQ"//int_str(i), force_load, drawing%at("S"//int_str(mech%links(mech%moment_link(i))%id)), &
           assur_load_value(deck, deck%moment_load(i), k))
       end do
-      do i = 1, ubound(states, 1)
-        associate (l => mech%links(i))
-          call drawing%add_link_loads(table, k, int_str(l%id), "S"//int_str(l%id), "S"//int_str(l%id), l%m, l%j, &
-            mech%g * mech%down)
-        end associate
-      end do
+      call self%mass_model(model)
+      call drawing%add_body_loads(table, k, model)
       ! the balancing moment on the crank (a deck driven otherwise has no M1 column)
       i = table%column_index("M1")
       if (i > 0) call drawing%add_moment("M1", force_load, &

@@ -96,10 +96,9 @@ contains
     real(wp), allocatable :: theta(:), f2(:), vdir(:), ds_dphi(:)
     !> Number of steps as given (an integer deck variable, read as a real: see require_whole).
     real(wp) :: n
-    integer :: ios, k
+    integer :: k
     !> Elements allocated for each per-step array the deck may give (see deck_array_capacities).
     integer, allocatable :: capacity(:)
-    character(len=512) :: msg
     type(deck_context_t) :: ctx
     type(namelist_probe_t) :: probe
     namelist /cam/ follower, l, l_over, f, f_cam, omega_dir, phi_start, dphi, n, theta, f2, vdir, ds_dphi
@@ -113,17 +112,11 @@ contains
     capacity = deck_array_capacities(source, ctx%group, [character(len=7) :: "theta", "f2", "vdir", "ds_dphi"])
     allocate (theta(capacity(1)), f2(capacity(2)), vdir(capacity(3)), ds_dphi(capacity(4)), source=unset_real)
 
-    read (source%records, nml=cam, iostat=ios, iomsg=msg)
-    if (ios /= 0) then
-      ! find the line and the assignment that failed (gfortran's message does not say)
-      call probe%start(source, ios, msg)
-      do while (probe%more(source))
-        read (probe%records, nml=cam, iostat=ios, iomsg=msg)
-        call probe%take(ios, msg)
-      end do
-      call probe%report(source, ctx, error)
-      return
-    end if
+    read (source%records, nml=cam, iostat=probe%ios, iomsg=probe%msg)
+    do while (probe%retry(source)) ! on failure: find the line and the assignment
+      read (probe%records, nml=cam, iostat=probe%ios, iomsg=probe%msg)
+    end do
+    if (probe%failed(source, ctx, error)) return
 
     select case (lower(trim(adjustl(follower))))
     case ("", "translating")

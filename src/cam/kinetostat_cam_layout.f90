@@ -54,7 +54,6 @@ module kinetostat_cam_layout
     procedure :: read_deck
     procedure :: solve
     procedure :: write_results
-    procedure :: write_template
   end type cam_mechanism_t
 
 contains
@@ -64,6 +63,7 @@ contains
     !> The mechanism.
     class(mechanism_t), allocatable, intent(out) :: mech
     allocate (cam_mechanism_t :: mech)
+    mech%template_writer => write_cam_template
     mech%title_en = "KINETOSTAT  CAM  FORCES ON A TRANSLATING FOLLOWER IN A GUIDE (MANUAL SECTION 7)"
     mech%title_ru = "KINETOSTAT  CAM  СИЛЫ В КУЛАЧКОВОМ МЕХАНИЗМЕ С" // &
       " ПОСТУПАТЕЛЬНО ДВИЖУЩИМСЯ ТОЛКАТЕЛЕМ (РАЗДЕЛ 7)"
@@ -75,12 +75,6 @@ contains
     type(error_t), allocatable, intent(out) :: error
     call read_cam_deck(source, self%deck, error)
   end subroutine read_deck
-
-  pure subroutine write_template(self, out)
-    class(cam_mechanism_t), intent(in) :: self
-    type(text_buffer_t), intent(inout) :: out
-    call write_cam_template(out)
-  end subroutine write_template
 
   !> All steps of a validated deck (in parallel with OpenMP threads).
   subroutine cam_solve(deck, steps, first, last)

@@ -214,7 +214,7 @@ contains
     flush (error_unit)
   end subroutine run_cli
 
-  !> Steps run in parallel only when OMP_NUM_THREADS asks for it (issue 14: "when
+  !> Steps run in parallel only when OMP_NUM_THREADS asks for it ("when
   !> OMP_NUM_THREADS > 1"); unset, a run uses one thread (OpenMP's own default would take
   !> every processor, doubling the CPU time of a run for little gain in its wall time).
   subroutine serial_unless_asked()

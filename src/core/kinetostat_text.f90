@@ -65,12 +65,7 @@ contains
     !> Any text.
     character(*), intent(in) :: s
     character(len=len(s)) :: t
-    integer :: i, c
-    t = s
-    do i = 1, len(s)
-      c = iachar(s(i:i))
-      if (c >= iachar('A') .and. c <= iachar('Z')) t(i:i) = achar(c + 32)
-    end do
+    t = shift_letters(s, 'A', 'Z', 32)
   end function lower
 
   !> ASCII upper case.
@@ -78,12 +73,23 @@ contains
     !> Any text.
     character(*), intent(in) :: s
     character(len=len(s)) :: t
+    t = shift_letters(s, 'a', 'z', -32)
+  end function upper
+
+  !> s with every character in first..last moved by `offset` places in the ASCII table.
+  pure function shift_letters(s, first, last, offset) result(t)
+    character(*), intent(in) :: s
+    !> The range of characters moved.
+    character, intent(in) :: first, last
+    !> Places moved (+32: to lower case, -32: to upper case).
+    integer, intent(in) :: offset
+    character(len=len(s)) :: t
     integer :: i, c
     t = s
     do i = 1, len(s)
       c = iachar(s(i:i))
-      if (c >= iachar('a') .and. c <= iachar('z')) t(i:i) = achar(c - 32)
+      if (c >= iachar(first) .and. c <= iachar(last)) t(i:i) = achar(c + offset)
     end do
-  end function upper
+  end function shift_letters
 
 end module kinetostat_text

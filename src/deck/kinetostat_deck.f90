@@ -70,16 +70,15 @@ module kinetostat_deck
   !> line (bisection: the first line whose copy fails), then after each assignment on that
   !> line (a copy's records are the deck's, the line cut short is cut into records as the
   !> deck's lines are). Use:
-  !>     call probe%start(source, ios, msg)
-  !>     do while (probe%more(source))
-  !>       read (probe%records, nml=group, iostat=ios, iomsg=msg)
-  !>       call probe%take(ios, msg)
+  !>     read (source%records, nml=group, iostat=probe%ios, iomsg=probe%msg)
+  !>     do while (probe%retry(source))
+  !>       read (probe%records, nml=group, iostat=probe%ios, iomsg=probe%msg)
   !>     end do
-  !>     call probe%report(source, ctx, error)
+  !>     if (probe%failed(source, ctx, error)) return
   type :: namelist_probe_t
     !> The copy to READ next (records of an internal file).
     character(len=:), allocatable :: records(:)
-    !> iostat of the READ of `records` (see `take`).
+    !> iostat of the last READ (of the whole deck, then of `records`).
     integer :: ios = 0
     !> iomsg of that READ.
     character(len=512) :: msg = ""
@@ -101,7 +100,11 @@ module kinetostat_deck
     integer, allocatable :: starts(:)
     !> The failing assignment on that line (0: not known).
     integer :: piece = 0
+    !> Whether the READ of the whole deck failed and the probe has started (see retry).
+    logical :: started = .false.
   contains
+    procedure :: retry => probe_retry
+    procedure :: failed => probe_failed
     procedure :: start => probe_start
     procedure :: more => probe_more
     procedure :: take => probe_take
@@ -720,6 +723,41 @@ contains
         trim(msg)//" (unknown variable, wrong type, or too many array values)")
     end if
   end subroutine namelist_failure
+
+  !> After the READ of the whole deck into `ios` and `msg`: false when it read; otherwise the
+  !> probe starts, and each call takes the result of the READ of the last copy (in `ios`,
+  !> `msg`) and prepares the next one in `records` (see start, more); false when the place is
+  !> found.
+  logical function probe_retry(self, source)
+    class(namelist_probe_t), intent(inout) :: self
+    !> The deck.
+    type(deck_source_t), intent(in) :: source
+    integer :: whole_ios
+    character(len=len(self%msg)) :: whole_msg
+    probe_retry = .false.
+    if (.not. self%started) then
+      if (self%ios == 0) return
+      whole_ios = self%ios
+      whole_msg = self%msg
+      call self%start(source, whole_ios, whole_msg)
+      self%started = .true.
+    end if
+    probe_retry = self%more(source)
+  end function probe_retry
+
+  !> Whether the READ of the deck failed (after retry): then `error` names the line, the
+  !> assignment and the variable.
+  logical function probe_failed(self, source, ctx, error)
+    class(namelist_probe_t), intent(in) :: self
+    !> The deck.
+    type(deck_source_t), intent(in) :: source
+    !> Deck and group names for the message.
+    type(deck_context_t), intent(in) :: ctx
+    !> The error, when the READ failed.
+    type(error_t), allocatable, intent(out) :: error
+    probe_failed = self%started
+    if (probe_failed) call self%report(source, ctx, error)
+  end function probe_failed
 
   !> Start looking for the place of a failed READ of the whole deck (iostat `ios`, iomsg `msg`).
   subroutine probe_start(self, source, ios, msg)

@@ -86,8 +86,7 @@ contains
     real(wp), dimension(max_stages) :: m1, m, dw1, alpha_w, alpha_w23, beta, gamma
     !> Teeth and satellite counts: integer deck variables, read as reals (see require_whole).
     real(wp), dimension(max_stages) :: z1, z2, z3, k
-    integer :: ios, i, n, kind, iz1, iz2, iz3, ik
-    character(len=512) :: msg
+    integer :: i, n, kind, iz1, iz2, iz3, ik
     character(len=:), allocatable :: at
     type(deck_context_t) :: ctx
     type(namelist_probe_t) :: probe
@@ -101,17 +100,11 @@ contains
     alpha_w23 = unset_real; beta = unset_real; gamma = unset_real
     z1 = unset_real; z2 = unset_real; z3 = unset_real; k = unset_real
 
-    read (source%records, nml=gears, iostat=ios, iomsg=msg)
-    if (ios /= 0) then
-      ! find the line and the assignment that failed (gfortran's message does not say)
-      call probe%start(source, ios, msg)
-      do while (probe%more(source))
-        read (probe%records, nml=gears, iostat=ios, iomsg=msg)
-        call probe%take(ios, msg)
-      end do
-      call probe%report(source, ctx, error)
-      return
-    end if
+    read (source%records, nml=gears, iostat=probe%ios, iomsg=probe%msg)
+    do while (probe%retry(source)) ! on failure: find the line and the assignment
+      read (probe%records, nml=gears, iostat=probe%ios, iomsg=probe%msg)
+    end do
+    if (probe%failed(source, ctx, error)) return
 
     ! layout
     select case (lower(trim(adjustl(layout))))

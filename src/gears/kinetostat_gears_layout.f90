@@ -52,7 +52,6 @@ module kinetostat_gears_layout
     procedure :: read_deck
     procedure :: solve
     procedure :: write_results
-    procedure :: write_template
   end type gears_mechanism_t
 
 contains
@@ -62,6 +61,7 @@ contains
     !> The mechanism.
     class(mechanism_t), allocatable, intent(out) :: mech
     allocate (gears_mechanism_t :: mech)
+    mech%template_writer => write_gears_template
     mech%title_en = "KINETOSTAT  GEARS  FORCES IN GEAR MESHES (MANUAL SECTION 6, FRICTION-FREE)"
     mech%title_ru = "KINETOSTAT  GEARS  СИЛЫ В ЗАЦЕПЛЕНИЯХ ЗУБЧАТЫХ" // &
       " КОЛЕС (РАЗДЕЛ 6, БЕЗ УЧЕТА ТРЕНИЯ)"
@@ -73,12 +73,6 @@ contains
     type(error_t), allocatable, intent(out) :: error
     call read_gears_deck(source, self%deck, error)
   end subroutine read_deck
-
-  pure subroutine write_template(self, out)
-    class(gears_mechanism_t), intent(in) :: self
-    type(text_buffer_t), intent(inout) :: out
-    call write_gears_template(out)
-  end subroutine write_template
 
   !> All stages of a validated deck.
   pure subroutine gears_solve(deck, res)

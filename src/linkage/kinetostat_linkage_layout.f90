@@ -17,6 +17,7 @@ module kinetostat_linkage_layout
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_sketch, only: sketch_t
   use kinetostat_drawing, only: drawing_t, force_load
+  use kinetostat_bodies, only: mass_model_t
   use kinetostat_linkage, only: linkage_t, linkage_step_t, pair_r, pair_p, linkage_reference_pose, linkage_assemble, &
     linkage_motion, linkage_statics, link_point_state, point_position
   use kinetostat_linkage_structure, only: structure_lines
@@ -41,9 +42,9 @@ module kinetostat_linkage_layout
     procedure :: read_deck
     procedure :: solve
     procedure :: write_results
-    procedure :: write_template
     procedure :: sketch
     procedure :: force_plan
+    procedure :: mass_model
   end type linkage_mechanism_t
 
 contains
@@ -53,6 +54,7 @@ contains
     !> The mechanism.
     class(mechanism_t), allocatable, intent(out) :: mech
     allocate (linkage_mechanism_t :: mech)
+    mech%template_writer => write_linkage_template
     mech%title_en = "KINETOSTAT  LINKAGE  FORCE ANALYSIS OF A PLANAR LINKAGE OF LOWER PAIRS"
     mech%title_ru = "KINETOSTAT  LINKAGE  СИЛОВОЙ РАСЧЕТ ПЛОСКОГО "// &
       "МЕХАНИЗМА С НИЗШИМИ ПАРАМИ"
@@ -64,12 +66,6 @@ contains
     type(error_t), allocatable, intent(out) :: error
     call read_linkage_deck(source, self%deck, error)
   end subroutine read_deck
-
-  pure subroutine write_template(self, out)
-    class(linkage_mechanism_t), intent(in) :: self
-    type(text_buffer_t), intent(inout) :: out
-    call write_linkage_template(out)
-  end subroutine write_template
 
   !> `kinetostat structure DECK`: the structural analysis of a `&linkage` deck as text.
   subroutine linkage_structure_text(source, lang, out, error)
@@ -164,6 +160,7 @@ contains
     type(drawing_t), intent(inout) :: drawing
     type(error_t), allocatable, intent(out) :: error
     character(len=:), allocatable :: input, effort
+    type(mass_model_t) :: model
     real(wp) :: th, p(2), w(2)
     integer :: i, c
     associate (mech => self%deck%mech, deck => self%deck)
@@ -184,10 +181,8 @@ contains
         call drawing%add_moment("MQ"//int_str(i), force_load, drawing%at("S"//link_name(mech, mech%moment_link(i))), &
           linkage_load_value(deck, deck%moment_load(i), k))
       end do
-      do i = 1, size(mech%links)
-        call drawing%add_link_loads(table, k, link_name(mech, i), "S"//link_name(mech, i), "S"//link_name(mech, i), &
-          mech%links(i)%m, mech%links(i)%j, mech%gravity)
-      end do
+      call self%mass_model(model)
+      call drawing%add_body_loads(table, k, model)
       do i = 1, size(mech%drives)
         call drive_names(mech, i, input, effort)
         c = table%column_index(effort)
@@ -198,6 +193,19 @@ contains
       end do
     end associate
   end subroutine force_plan
+
+  !> The moving links' masses, inertias and centres of mass (S<i>), and gravity.
+  pure subroutine mass_model(self, model)
+    class(linkage_mechanism_t), intent(in) :: self
+    type(mass_model_t), intent(out) :: model
+    integer :: i
+    associate (mech => self%deck%mech)
+      do i = 1, size(mech%links)
+        call model%add(link_name(mech, i), "S"//link_name(mech, i), mech%links(i)%m, mech%links(i)%j)
+      end do
+      model%gravity = mech%gravity
+    end associate
+  end subroutine mass_model
 
   !> Name of link i (0: the frame): its deck number.
   pure function link_name(mech, i) result(text)

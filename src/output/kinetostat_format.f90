@@ -65,15 +65,30 @@ contains
     if (.not. fits) call exponent_text(x, text)
   end subroutine fixed_text
 
+  !> x in ES form right-justified in `len(text)` characters: `decimals` digits after the point
+  !> with a two-digit exponent, or `decimals_e3` digits and a three-digit exponent when the
+  !> exponent needs three digits (see needs_e3).
+  pure subroutine es_text(x, decimals, decimals_e3, text)
+    !> Finite value.
+    real(wp), intent(in) :: x
+    !> Digits after the point with a two-digit exponent.
+    integer, intent(in) :: decimals
+    !> Digits after the point with a three-digit exponent.
+    integer, intent(in) :: decimals_e3
+    !> The field.
+    character(*), intent(out) :: text
+    if (needs_e3(x)) then
+      call edit_es(x + 0.0_wp, decimals_e3, 3, text)
+    else
+      call edit_es(x + 0.0_wp, decimals, 0, text)
+    end if
+  end subroutine es_text
+
   !> Exponent form in `len(text)` characters with one blank in front (ES, digits as fit).
   pure subroutine exponent_text(x, text)
     real(wp), intent(in) :: x
     character(*), intent(out) :: text
-    if (needs_e3(x)) then
-      call edit_es(x + 0.0_wp, max(0, len(text) - 9), 3, text)
-    else
-      call edit_es(x + 0.0_wp, max(0, len(text) - 8), 0, text)
-    end if
+    call es_text(x, max(0, len(text) - 8), max(0, len(text) - 9), text)
   end subroutine exponent_text
 
   !> A field in the legacy E form (`Ew.d`, e.g. 0.123E+04), with an `E` kept for
@@ -210,11 +225,7 @@ contains
     !> Finite value.
     real(wp), intent(in) :: x
     character(len=18) :: text
-    if (needs_e3(x)) then
-      call edit_es(x + 0.0_wp, 9, 3, text)
-    else
-      call edit_es(x + 0.0_wp, 9, 0, text)
-    end if
+    call es_text(x, 9, 9, text)
   end function echo_number
 
   !> One value of an echoed array (14 characters).
@@ -222,11 +233,7 @@ contains
     !> Finite value.
     real(wp), intent(in) :: x
     character(len=14) :: text
-    if (needs_e3(x)) then
-      call edit_es(x + 0.0_wp, 5, 3, text)
-    else
-      call edit_es(x + 0.0_wp, 6, 0, text)
-    end if
+    call es_text(x, 6, 5, text)
   end function echo_array_number
 
   !> A self-check figure in the footer (10 characters).
@@ -234,11 +241,7 @@ contains
     !> Finite value.
     real(wp), intent(in) :: x
     character(len=10) :: text
-    if (needs_e3(x)) then
-      call edit_es(x + 0.0_wp, 1, 3, text)
-    else
-      call edit_es(x + 0.0_wp, 2, 0, text)
-    end if
+    call es_text(x, 2, 1, text)
   end function footer_number
 
   !> A self-check limit in the footer heading, without blanks (ES8.1, e.g. 1.0E-09).

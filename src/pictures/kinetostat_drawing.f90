@@ -16,6 +16,7 @@ module kinetostat_drawing
   use kinetostat_error, only: error_t, fatal_error, exit_usage
   use kinetostat_step_table, only: step_table_t
   use kinetostat_sketch, only: sketch_t
+  use kinetostat_bodies, only: mass_model_t
   implicit none
   private
   public :: drawing_from_sketch
@@ -127,6 +128,8 @@ module kinetostat_drawing
     procedure :: point_from_table
     procedure :: pair_from_table
     procedure :: add_link_loads
+    !> The weight and inertia loads of every moving link of a mass model.
+    procedure :: add_body_loads
     procedure :: add_guide_over_rows
   end type drawing_t
 
@@ -340,6 +343,25 @@ contains
     a = table%columns(cx)%frame_angle * deg_to_rad
     call self%add_force(name, force_pair, self%at(point), [cos(a) * f(1) - sin(a) * f(2), sin(a) * f(1) + cos(a) * f(2)])
   end subroutine pair_from_table
+
+  !> The weight, inertia force and inertia moment of every moving link of the mass model at
+  !> row `k`, each at its centre of mass (see add_link_loads).
+  pure subroutine add_body_loads(self, table, k, model)
+    class(drawing_t), intent(inout) :: self
+    !> The results with their kinematics columns.
+    type(step_table_t), intent(in) :: table
+    !> Row.
+    integer, intent(in) :: k
+    !> The mechanism's moving links and gravity.
+    type(mass_model_t), intent(in) :: model
+    integer :: i
+    if (.not. model%available) return
+    do i = 1, size(model%bodies)
+      associate (b => model%bodies(i))
+        call self%add_link_loads(table, k, b%link, b%centre, b%centre, b%mass, b%inertia, model%gravity)
+      end associate
+    end do
+  end subroutine add_body_loads
 
   !> The loads of a moving link at row `k`: its weight G<link> = mass * gravity and inertia
   !> force Phi<link> = -mass * a (from the columns ax_<com>, ay_<com>), both at the point

@@ -10,6 +10,7 @@ module kinetostat_mechanism
   use kinetostat_labels, only: lang_ru
   use kinetostat_sketch, only: sketch_t
   use kinetostat_drawing, only: drawing_t
+  use kinetostat_bodies, only: mass_model_t
   implicit none
   private
   public :: mechanism_t
@@ -20,6 +21,8 @@ module kinetostat_mechanism
     character(len=:), allocatable :: title_en
     !> Title line of the legacy table, Russian (the 1991 printout's wording where known).
     character(len=:), allocatable :: title_ru
+    !> Writes the kind's commented template deck (set by the constructor, as the titles).
+    procedure(template_writer_i), pointer, nopass :: template_writer => null()
   contains
     !> Read and validate the deck.
     procedure(read_deck_i), deferred :: read_deck
@@ -29,13 +32,16 @@ module kinetostat_mechanism
     procedure :: title
     !> The RESULTS block of the legacy table: header lines and the rows as the original laid them out.
     procedure(results_i), deferred :: write_results
-    !> The commented template deck.
-    procedure(template_i), deferred :: write_template
+    !> The commented template deck (through template_writer).
+    procedure :: write_template
     !> The topology for a drawing (links and their points, pivots, guides, gravity) after
     !> read_deck; by default not available.
     procedure :: sketch
     !> The forces of one row added to its drawing (--format svg --at K); by default none.
     procedure :: force_plan
+    !> The moving links' masses, inertias and centres of mass, and gravity, named as in the
+    !> kinematics columns (after read_deck); by default not available.
+    procedure :: mass_model
   end type mechanism_t
 
   abstract interface
@@ -79,13 +85,12 @@ module kinetostat_mechanism
       type(text_buffer_t), intent(inout) :: later
     end subroutine results_i
 
-    pure subroutine template_i(self, out)
-      import :: mechanism_t, text_buffer_t
+    pure subroutine template_writer_i(out)
+      import :: text_buffer_t
       implicit none
-      class(mechanism_t), intent(in) :: self
       !> Where the lines go.
       type(text_buffer_t), intent(inout) :: out
-    end subroutine template_i
+    end subroutine template_writer_i
   end interface
 
 contains
@@ -102,6 +107,14 @@ contains
       text = self%title_en
     end if
   end function title
+
+  !> The commented template deck of the kind (nothing when the constructor set no writer).
+  pure subroutine write_template(self, out)
+    class(mechanism_t), intent(in) :: self
+    !> Where the lines go.
+    type(text_buffer_t), intent(inout) :: out
+    if (associated(self%template_writer)) call self%template_writer(out)
+  end subroutine write_template
 
   !> The topology for a drawing: by default none (`sketch%available` false).
   pure subroutine sketch(self, out)
@@ -125,5 +138,13 @@ contains
     !> A force that cannot be placed.
     type(error_t), allocatable, intent(out) :: error
   end subroutine force_plan
+
+  !> The mass model (moving links and gravity): by default none (`model%available` false).
+  pure subroutine mass_model(self, model)
+    class(mechanism_t), intent(in) :: self
+    !> The moving links and gravity, after read_deck.
+    type(mass_model_t), intent(out) :: model
+    model%available = .false.
+  end subroutine mass_model
 
 end module kinetostat_mechanism

@@ -20,6 +20,7 @@ module kinetostat_pr3050_layout
     pr3050_check_position, pr3050_position
   use kinetostat_pr3050_deck, only: pr3050_deck_t, read_pr3050_deck, write_pr3050_template, pr3050_phi3_deg
   use kinetostat_drawing, only: drawing_t, force_load
+  use kinetostat_bodies, only: mass_model_t
   implicit none
   private
   public :: pr3050_mechanism_t, new_pr3050, pr3050_solve, pr3050_csv_columns, pr3050_csv_values
@@ -75,9 +76,9 @@ module kinetostat_pr3050_layout
     procedure :: read_deck
     procedure :: solve
     procedure :: write_results
-    procedure :: write_template
     procedure :: sketch
     procedure :: force_plan
+    procedure :: mass_model
   end type pr3050_mechanism_t
 
 contains
@@ -87,6 +88,7 @@ contains
     !> The mechanism.
     class(mechanism_t), allocatable, intent(out) :: mech
     allocate (pr3050_mechanism_t :: mech)
+    mech%template_writer => write_pr3050_template
     mech%title_en = "KINETOSTAT  PR 3050  FORCE ANALYSIS OF THE FOUR-BAR WITH AN OSCILLATING HYDRAULIC CYLINDER"
     mech%title_ru = "KINETOSTAT  PR 3050  СИЛОВОЙ РАСЧЕТ ЧЕТЫРЕХЗВЕННОГО" // &
       " МЕХАНИЗМА С КАЧАЮЩИМСЯ ГИДРОЦИЛИНДРОМ"
@@ -98,12 +100,6 @@ contains
     type(error_t), allocatable, intent(out) :: error
     call read_pr3050_deck(source, self%deck, error)
   end subroutine read_deck
-
-  pure subroutine write_template(self, out)
-    class(pr3050_mechanism_t), intent(in) :: self
-    type(text_buffer_t), intent(inout) :: out
-    call write_pr3050_template(out)
-  end subroutine write_template
 
   !> The topology for a drawing: cylinder 1 from A along the axis (through S1), rod 2 from B
   !> (through S2) sliding in it, rocker 3 C-B with its centre of mass S3; pivots C, A; the
@@ -369,6 +365,18 @@ contains
     angle = real(k - 1, wp) * deck%dphi3
   end function phi3rel
 
+  !> The moving links: cylinder 1, rod 2 and boom 3, each at its centre of mass; gravity at gamma from x.
+  pure subroutine mass_model(self, model)
+    class(pr3050_mechanism_t), intent(in) :: self
+    type(mass_model_t), intent(out) :: model
+    associate (p => self%deck%p)
+      call model%add("1", "S1", p%m1, p%j1)
+      call model%add("2", "S2", p%m2, p%j2)
+      call model%add("3", "S3", p%m3, p%j3)
+      model%gravity = p%g * [cos(p%gamma), sin(p%gamma)]
+    end associate
+  end subroutine mass_model
+
   !> The forces of row `k` on its drawing (--format svg --at K): the pair forces at their
   !> joints, the driving force F2 on the rod (along A->B, at S2), the weights (angle gamma),
   !> the inertia forces and moments of links 1, 2 and 3.
@@ -380,8 +388,9 @@ contains
     type(error_t), allocatable, intent(out) :: error
     character(len=3), parameter :: pairs(*) = [character(len=3) :: "F14", "F34", "F32"]
     character(len=1), parameter :: pair_points(*) = ["A", "C", "B"]
-    real(wp) :: gravity(2), a(2), b(2), u(2)
+    real(wp) :: a(2), b(2), u(2)
     integer :: i
+    type(mass_model_t) :: model
     associate (p => self%deck%p)
       do i = 1, size(pairs)
         call drawing%pair_from_table(table, k, trim(pairs(i)), pair_points(i), error)
@@ -391,10 +400,8 @@ contains
       b = drawing%at("B")
       u = (b - a) / max(norm2(b - a), tiny(1.0_wp))
       call drawing%add_force("F2", force_load, drawing%at("S2"), table%rows(table%column_index("F2"), k) * u)
-      gravity = p%g * [cos(p%gamma), sin(p%gamma)]
-      call drawing%add_link_loads(table, k, "1", "S1", "S1", p%m1, p%j1, gravity)
-      call drawing%add_link_loads(table, k, "2", "S2", "S2", p%m2, p%j2, gravity)
-      call drawing%add_link_loads(table, k, "3", "S3", "S3", p%m3, p%j3, gravity)
+      call self%mass_model(model)
+      call drawing%add_body_loads(table, k, model)
     end associate
   end subroutine force_plan
 

@@ -16,6 +16,7 @@ module kinetostat_pr3207_layout
   use kinetostat_pr3207_deck, only: pr3207_deck_t, read_pr3207_deck, write_pr3207_template, pr3207_phi1_deg, &
     pr3207_f5c, pr3207_f5c_steps
   use kinetostat_drawing, only: drawing_t, force_load
+  use kinetostat_bodies, only: mass_model_t
   implicit none
   private
   public :: pr3207_mechanism_t, new_pr3207, pr3207_solve, pr3207_csv_columns, pr3207_csv_values
@@ -52,9 +53,9 @@ module kinetostat_pr3207_layout
     procedure :: read_deck
     procedure :: solve
     procedure :: write_results
-    procedure :: write_template
     procedure :: sketch
     procedure :: force_plan
+    procedure :: mass_model
   end type pr3207_mechanism_t
 
 contains
@@ -64,6 +65,7 @@ contains
     !> The mechanism.
     class(mechanism_t), allocatable, intent(out) :: mech
     allocate (pr3207_mechanism_t :: mech)
+    mech%template_writer => write_pr3207_template
     mech%title_en = "KINETOSTAT  PR 3207  FORCE ANALYSIS OF THE SIX-BAR SLOTTED-LINK (SHAPER) MECHANISM"
     mech%title_ru = "KINETOSTAT  PR 3207  СИЛОВОЙ РАСЧЕТ ШЕСТИЗВЕННОГО" // &
       " КУЛИСНОГО МЕХАНИЗМА (ПОПЕРЕЧНО-СТРОГАЛЬНОГО)"
@@ -75,12 +77,6 @@ contains
     type(error_t), allocatable, intent(out) :: error
     call read_pr3207_deck(source, self%deck, error)
   end subroutine read_deck
-
-  pure subroutine write_template(self, out)
-    class(pr3207_mechanism_t), intent(in) :: self
-    type(text_buffer_t), intent(inout) :: out
-    call write_pr3207_template(out)
-  end subroutine write_template
 
   !> The topology for a drawing: crank A-B, block 2 at B sliding along the lever C-D, block 4
   !> at D sliding along x in the ram's slot, the ram from its guide (x = 0, along y) to D;
@@ -263,6 +259,17 @@ contains
     end do
   end subroutine write_results
 
+  !> The moving links: crank 1 (its mass at the pivot A, no inertia given), lever 3 at S3,
+  !> ram 5 at S5 (translating); the blocks 2 and 4 are massless. Gravity along +x.
+  pure subroutine mass_model(self, model)
+    class(pr3207_mechanism_t), intent(in) :: self
+    type(mass_model_t), intent(out) :: model
+    call model%add("1", "S1", self%deck%p%m1, 0.0_wp)
+    call model%add("3", "S3", self%deck%p%m3, self%deck%p%j3)
+    call model%add("5", "S5", self%deck%p%m5, 0.0_wp)
+    model%gravity = [self%deck%p%g, 0.0_wp]
+  end subroutine mass_model
+
   !> The forces of row `k` on its drawing (--format svg --at K): the pair forces at their
   !> joints (F56 at the ram's S5), the cutting force F5c on the ram along y, the weights and
   !> inertia forces of links 1, 3 and 5, the inertia moment of the lever, and M1.
@@ -274,7 +281,7 @@ contains
     type(error_t), allocatable, intent(out) :: error
     character(len=3), parameter :: pairs(*) = [character(len=3) :: "F16", "F21", "F36", "F34", "F56"]
     character(len=2), parameter :: pair_points(*) = [character(len=2) :: "A", "B", "C", "D", "S5"]
-    real(wp) :: gravity(2)
+    type(mass_model_t) :: model
     integer :: i
     associate (p => self%deck%p)
       do i = 1, size(pairs)
@@ -282,10 +289,8 @@ contains
         if (allocated(error)) return
       end do
       call drawing%add_force("F5c", force_load, drawing%at("S5"), [0.0_wp, pr3207_f5c(self%deck, k)])
-      gravity = [p%g, 0.0_wp]
-      call drawing%add_link_loads(table, k, "1", "S1", "S1", p%m1, 0.0_wp, gravity)
-      call drawing%add_link_loads(table, k, "3", "S3", "S3", p%m3, p%j3, gravity)
-      call drawing%add_link_loads(table, k, "5", "S5", "S5", p%m5, 0.0_wp, gravity)
+      call self%mass_model(model)
+      call drawing%add_body_loads(table, k, model)
       call drawing%add_moment("M1", force_load, drawing%at("A"), table%rows(table%column_index("M1"), k))
     end associate
   end subroutine force_plan

@@ -83,10 +83,9 @@ contains
     logical :: start_at_extreme, legacy_eq2, ok
     !> Number of steps as given (an integer deck variable, read as a real: see require_whole).
     real(wp) :: n
-    integer :: ios, n_f5
+    integer :: n_f5
     !> Elements allocated for each per-step array the deck may give (see deck_array_capacities).
     integer, allocatable :: capacity(:)
-    character(len=512) :: msg
     type(deck_context_t) :: ctx
     type(namelist_probe_t) :: probe
     namelist /sixbar/ a, b, l1, lam2, lam_s2, lam3, lam_de, lam4, lam_s4, lam_e, &
@@ -106,17 +105,11 @@ contains
     capacity = deck_array_capacities(source, ctx%group, ["f5"])
     allocate (f5(capacity(1)), source=unset_real)
 
-    read (source%records, nml=sixbar, iostat=ios, iomsg=msg)
-    if (ios /= 0) then
-      ! find the line and the assignment that failed (gfortran's message does not say)
-      call probe%start(source, ios, msg)
-      do while (probe%more(source))
-        read (probe%records, nml=sixbar, iostat=ios, iomsg=msg)
-        call probe%take(ios, msg)
-      end do
-      call probe%report(source, ctx, error)
-      return
-    end if
+    read (source%records, nml=sixbar, iostat=probe%ios, iomsg=probe%msg)
+    do while (probe%retry(source)) ! on failure: find the line and the assignment
+      read (probe%records, nml=sixbar, iostat=probe%ios, iomsg=probe%msg)
+    end do
+    if (probe%failed(source, ctx, error)) return
 
     ! every missing required variable in one message
     call require_all_set(ctx, [character(len=6) :: "a", "b", "l1", "lam2", "lam_s2", "lam3", "lam_de", "lam4", "lam_s4", "lam_e", &

@@ -19,6 +19,7 @@ module kinetostat_sixbar_layout
     sixbar_dead1, sixbar_open2, sixbar_dead2, sixbar_frame2_to_frame1, sixbar_down1
   use kinetostat_sixbar_deck, only: sixbar_deck_t, read_sixbar_deck, write_sixbar_template, sixbar_phi1_deg
   use kinetostat_drawing, only: drawing_t, force_load
+  use kinetostat_bodies, only: mass_model_t
   implicit none
   private
   public :: sixbar_mechanism_t, new_sixbar, sixbar_solve, sixbar_csv_columns, sixbar_csv_values
@@ -74,9 +75,9 @@ module kinetostat_sixbar_layout
     procedure :: read_deck
     procedure :: solve
     procedure :: write_results
-    procedure :: write_template
     procedure :: sketch
     procedure :: force_plan
+    procedure :: mass_model
   end type sixbar_mechanism_t
 
 contains
@@ -86,6 +87,7 @@ contains
     !> The mechanism.
     class(mechanism_t), allocatable, intent(out) :: mech
     allocate (sixbar_mechanism_t :: mech)
+    mech%template_writer => write_sixbar_template
     mech%title_en = "KINETOSTAT  T.FTN  FORCE ANALYSIS OF THE SIX-BAR CRANK-ROCKER-SLIDER MECHANISM"
     mech%title_ru = "KINETOSTAT  T.FTN  КПФ И УСИЛИЯ" // &
       " КРИВОШИПНО-КОРОМЫСЛОВО-ПОЛЗУННОГО" // &
@@ -98,12 +100,6 @@ contains
     type(error_t), allocatable, intent(out) :: error
     call read_sixbar_deck(source, self%deck, error)
   end subroutine read_deck
-
-  pure subroutine write_template(self, out)
-    class(sixbar_mechanism_t), intent(in) :: self
-    type(text_buffer_t), intent(inout) :: out
-    call write_sixbar_template(out)
-  end subroutine write_template
 
   !> The topology for a drawing (frame 1): crank A-B, rod B-C, rocker C-D-E, rod E-H, slider 5
   !> at H on the guide along x2 (at beta - 180 deg); pivots A, D; gravity -y0.
@@ -372,6 +368,21 @@ contains
     end do
   end subroutine write_results_ru
 
+  !> The moving links: crank 1, connecting rod 2, rocker 3, link 4 and slider 5 (translating),
+  !> each at its centre of mass; gravity in frame 1.
+  pure subroutine mass_model(self, model)
+    class(sixbar_mechanism_t), intent(in) :: self
+    type(mass_model_t), intent(out) :: model
+    associate (p => self%deck%p)
+      call model%add("1", "S1", p%m1, p%j1)
+      call model%add("2", "S2", p%m2, p%j2)
+      call model%add("3", "S3", p%m3, p%j3)
+      call model%add("4", "S4", p%m4, p%j4)
+      call model%add("5", "S5", p%m5, 0.0_wp)
+      model%gravity = p%g * sixbar_down1(p)
+    end associate
+  end subroutine mass_model
+
   !> The forces of row `k` on its drawing (--format svg --at K): every pair force at its
   !> joint (F56, the guide's normal force, at H), the load F5 along x2, the weights (-y0),
   !> inertia forces and moments of links 1..5, and M1.
@@ -383,8 +394,9 @@ contains
     type(error_t), allocatable, intent(out) :: error
     character(len=3), parameter :: pairs(*) = [character(len=3) :: "F21", "F32", "F43", "F45", "F36", "F16", "F56"]
     character(len=1), parameter :: pair_points(*) = ["B", "C", "E", "H", "D", "A", "H"]
-    real(wp) :: x2, gravity(2)
+    real(wp) :: x2
     integer :: i
+    type(mass_model_t) :: model
     associate (p => self%deck%p)
       do i = 1, size(pairs)
         call drawing%pair_from_table(table, k, trim(pairs(i)), pair_points(i), error)
@@ -393,12 +405,8 @@ contains
       ! x2 in frame 1, rad
       x2 = atan2(p%a, p%b) - pi
       call drawing%add_force("F5", force_load, drawing%at("H"), self%deck%f5(k) * [cos(x2), sin(x2)])
-      gravity = p%g * sixbar_down1(p)
-      call drawing%add_link_loads(table, k, "1", "S1", "S1", p%m1, p%j1, gravity)
-      call drawing%add_link_loads(table, k, "2", "S2", "S2", p%m2, p%j2, gravity)
-      call drawing%add_link_loads(table, k, "3", "S3", "S3", p%m3, p%j3, gravity)
-      call drawing%add_link_loads(table, k, "4", "S4", "S4", p%m4, p%j4, gravity)
-      call drawing%add_link_loads(table, k, "5", "S5", "S5", p%m5, 0.0_wp, gravity)
+      call self%mass_model(model)
+      call drawing%add_body_loads(table, k, model)
       call drawing%add_moment("M1", force_load, drawing%at("A"), table%rows(table%column_index("M1"), k))
     end associate
   end subroutine force_plan

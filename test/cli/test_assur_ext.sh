@@ -205,10 +205,10 @@ expect_input_error assur-title-long '&assur: title: longer than 80 characters' \
 head -c 286 data/assur_fourbar.nml >"$cli_tmp/tl_cut.nml"
 expect_input_error assur-title-unterminated '&assur: namelist group not terminated' "$cli_tmp/tl_cut.nml"
 
-# --- --frame link: pair forces in the axes of the link each acts on (issue 12, item 5)
+# --- --frame link: pair forces in the axes of the link each acts on
 sc=data/assur_slider_crank.nml
 run_ks "$sc" --format csv --frame link; cp "$out" "$cli_tmp/frame_link.csv"
-# (the deck's only remark is the coarse step next to its force window, issue 10)
+# (the deck's only remark is the coarse step next to its force window)
 [ "$rc" -eq 0 ] && ! grep -qv 'the input step 30 deg is coarser than 5 deg' "$err" && pass \
   || fail frame-link-csv-exit "exit $rc: $(cat "$err")"
 header="$(head -1 "$cli_tmp/frame_link.csv")"

@@ -1,4 +1,4 @@
-# Batch use (issue 10): decks from standard input and pipes, --set overrides.
+# Batch use: decks from standard input and pipes, --set overrides.
 
 # expect_bytes NAME EXPECTED ACTUAL: the two files are identical byte for byte.
 expect_bytes() {

@@ -1,4 +1,4 @@
-# `kinetostat diff A B` (issue 10 item 3): exit 0 same, 1 different, 2 unreadable or not
+# `kinetostat diff A B`: exit 0 same, 1 different, 2 unreadable or not
 # comparable; angles modulo 360, angles of vanishing forces ignored, deck lines ignored.
 dexp=data/expected
 

@@ -1,4 +1,4 @@
-# Errors that point at the mistake (issue 10 item 6): a namelist that does not read names the
+# Errors that point at the mistake: a namelist that does not read names the
 # line, the assignment and the reason; all missing required variables in one message; a
 # generic-engine dyad that cannot be assembled gives the numbers.
 ref="data/pr3207.nml"   # line 3: l_ab ..., line 4: m1 ..., line 6: omega1, line 8: phi_start, dphi

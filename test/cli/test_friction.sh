@@ -1,4 +1,4 @@
-# Command-line tests of friction in the pairs of the generic engine (issue 13; sourced by
+# Command-line tests of friction in the pairs of the generic engine (sourced by
 # tools/test with test/cli/lib.sh).
 
 fr_deck=data/friction_slider_crank.nml

@@ -1,4 +1,4 @@
-# --kinematics (issue 11): the kinematics columns come only when asked, after the ordinary
+# --kinematics: the kinematics columns come only when asked, after the ordinary
 # columns (so every default row is a prefix of the kinematics row); the legacy table ignores
 # the option; the JSON with them loads and names them with their units and frames.
 

@@ -1,4 +1,4 @@
-# Deterministic mutation test (issue 9), sourced by tools/test with test/cli/lib.sh.
+# Deterministic mutation test, sourced by tools/test with test/cli/lib.sh.
 # tools/mutate_decks.py derives >= 500 broken or extreme decks from data/*.nml (fixed seed) and
 # runs $KINETOSTAT on each (table, CSV, -o FILE). It reports one verdict per assertion category
 # ("check NAME: ok" / "check NAME: FAIL (n decks)"); each category counts as ONE check here, so

@@ -1,4 +1,4 @@
-# Parallel steps (issue 14, item 5): with OMP_NUM_THREADS=2 every output is byte for byte the
+# Parallel steps: with OMP_NUM_THREADS=2 every output is byte for byte the
 # one of OMP_NUM_THREADS=1 (stdout, stderr and exit code), for every bundled deck in every
 # format, for decks scaled to thousands of steps (the writers then format rows in parallel
 # blocks) and for a deck failing at many steps (the first failing step in step order is the

@@ -1,4 +1,4 @@
-# The one run pipeline (issue 9): JSON and --lang ru for every deck, output that can never lie
+# The one run pipeline: JSON and --lang ru for every deck, output that can never lie
 # (no NaN, no '*', checked writes, -o onto devices and FIFOs), option forms.
 
 # --- JSON loads for every bundled deck, and carries the CSV's values

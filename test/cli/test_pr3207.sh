@@ -77,7 +77,7 @@ expect_input_error f5c-cut-missing '&pr3207: phi_cut_end: missing' "$(deck_with 
 expect_input_error unterminated '&pr3207: namelist' "$(deck_with unterminated "$ref" '/^\//d')"
 
 # --- success prints no self-check warning on the reference deck; its only remark is the
-# coarse step (30 deg) next to the cutting force's switch (issue 10), gone at dphi = 1
+# coarse step (30 deg) next to the cutting force's switch, gone at dphi = 1
 run_ks "$ref"
 if [ "$rc" -eq 0 ] && [ "$(wc -l <"$err")" -eq 1 ] && grep -q 'input step 30 deg is coarser than 5 deg' "$err"; then pass
 else fail pr3207-quiet-success "rc=$rc stderr: $(head -c 200 "$err")"; fi

@@ -1,4 +1,4 @@
-# Streaming (issue 14, item 3): a run is solved and written in blocks of rows, and text beyond
+# Streaming: a run is solved and written in blocks of rows, and text beyond
 # the spool's memory bound (4 MiB) goes to a temporary file that becomes the output only when
 # the run succeeded. Checked on runs big enough to spill (2*10^5 steps, ~50 MB of CSV): -o and
 # stdout give the same bytes, nothing is left in $TMPDIR or beside the target, and a run that

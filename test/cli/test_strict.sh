@@ -1,4 +1,4 @@
-# --strict (issue 10 item 5): a run that warns exits 4 with its output written; cam jamming
+# --strict: a run that warns exits 4 with its output written; cam jamming
 # and lost contact are warnings (stderr, silenced by --quiet).
 
 # strict_case NAME DECK PATTERN...: DECK warns: without --strict exit 0 and one stderr

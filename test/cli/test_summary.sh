@@ -1,4 +1,4 @@
-# Summaries and sweeps (issue 10 items 2 and 4): --format summary, the legacy table's
+# Summaries and sweeps: --format summary, the legacy table's
 # SUMMARY block, the coarse-step warning, kinetostat sweep.
 
 # --- --format summary: every figure recomputed from the run's own CSV (max, min, the input
@@ -165,7 +165,7 @@ run_ks sweep data/pr3207.nml --vary l_ab=0.3:0.5:3 --quiet
 [ "$rc" -eq 2 ] && [ ! -s "$out" ] && [ "$(wc -l <"$err")" -eq 1 ] \
   && grep -q "l_ab: .*(sweep variant 2: l_ab=0.4)$" "$err" && pass || fail sweep-variant-error "rc=$rc $(cat "$err")"
 
-# --- progress (issue 10 item 8): only when stderr is a terminal and the run has gone on for a
+# --- progress: only when stderr is a terminal and the run has gone on for a
 # second (KINETOSTAT_PROGRESS_DELAY=0: from the first block on, so that the test does not
 # depend on the machine's speed), overwritten in place and erased at the end; never in a pipe
 # or a file, never with --quiet

@@ -1,4 +1,4 @@
-# --format svg (issue 11): every bundled deck's sheet parses as XML, needs no other file,
+# --format svg: every bundled deck's sheet parses as XML, needs no other file,
 # renders to a PNG of the sheet's size that is not blank, and its hodographs read back into
 # the CSV's force components; --pairs selects and rejects; the checks can fail.
 svg_check="$root/tools/svg_check.py"

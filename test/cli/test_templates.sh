@@ -1,7 +1,7 @@
 # Templates (every kind and the generic-engine presets fourbar, engine), template -o FILE,
-# --help listing every option, the man page and the bash completion (issue 10 item 7).
+# --help listing every option, the man page and the bash completion.
 
-# --- every template runs: exit 0, nothing on stderr (but the coarse-step remark of issue 10:
+# --- every template runs: exit 0, nothing on stderr (but the coarse-step remark:
 # the pr3207 and assur templates switch a load at 30 deg steps), self-check OK
 for kind in pr3207 pr3050 sixbar assur gears cam fourbar engine; do
   run_ks template "$kind"; cp "$out" "$cli_tmp/tpl_$kind.nml"

@@ -1,0 +1,62 @@
+!> The mass model of a linkage mechanism: every moving link's mass, moment of inertia and
+!> centre of mass, named as in the step table's kinematics columns, and the gravity vector.
+!> The stages that sum over the links (drawing the weights and inertia loads, reduced
+!> inertia, shaking force and moment) read it from `mechanism_t%mass_model` instead of each
+!> mechanism listing its links again.
+module kinetostat_bodies
+  use kinetostat_kinds, only: wp
+  implicit none
+  private
+  public :: body_t, mass_model_t
+
+  !> One moving link.
+  type :: body_t
+    !> Link name as in the columns phi<link>, omega<link>, eps<link> ("3"); a link that only
+    !> translates has no such columns (their values read as 0).
+    character(len=:), allocatable :: link
+    !> Its centre of mass as in the columns x_<centre>, y_<centre>, ax_<centre>, ay_<centre> ("S3").
+    character(len=:), allocatable :: centre
+    !> Mass, kg.
+    real(wp) :: mass = 0.0_wp
+    !> Moment of inertia about the centre of mass, kg*m^2.
+    real(wp) :: inertia = 0.0_wp
+  end type body_t
+
+  !> The moving links of a mechanism and the gravity acting on them.
+  type :: mass_model_t
+    !> Whether the mechanism has one (linkages do; gears and cams do not).
+    logical :: available = .false.
+    !> The moving links, in the mechanism's link order.
+    type(body_t), allocatable :: bodies(:)
+    !> Gravity vector in the frame of the kinematics columns, m/s^2.
+    real(wp) :: gravity(2) = 0.0_wp
+  contains
+    !> Append a link.
+    procedure :: add
+  end type mass_model_t
+
+contains
+
+  !> Append a moving link to the model (and mark the model available).
+  pure subroutine add(self, link, centre, mass, inertia)
+    class(mass_model_t), intent(inout) :: self
+    !> Link name ("3").
+    character(*), intent(in) :: link
+    !> Centre of mass ("S3").
+    character(*), intent(in) :: centre
+    !> Mass, kg.
+    real(wp), intent(in) :: mass
+    !> Moment of inertia about the centre of mass, kg*m^2.
+    real(wp), intent(in) :: inertia
+    type(body_t), allocatable :: grown(:)
+    integer :: n
+    if (.not. allocated(self%bodies)) allocate (self%bodies(0))
+    n = size(self%bodies)
+    allocate (grown(n + 1))
+    grown(1:n) = self%bodies
+    grown(n + 1) = body_t(link, centre, mass, inertia)
+    call move_alloc(grown, self%bodies)
+    self%available = .true.
+  end subroutine add
+
+end module kinetostat_bodies
