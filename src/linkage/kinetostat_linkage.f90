@@ -7,6 +7,9 @@
 !> the same Jacobian J; the reactions solve J^T lambda = -Q (Q: the applied, gravity and
 !> inertia loads as generalised forces), once as one global system and once unit by unit in
 !> the order of the structural analysis (the course's group method), as the second opinion.
+!> Every loop is kept scalar (`!GCC$ novector`): the vector cos, sin and hypot of libmvec may
+!> differ from the scalar ones in the last bit, and the self-check figures (roundoff) are
+!> printed.
 module kinetostat_linkage
   use kinetostat_kinds, only: wp, pi
   use kinetostat_error, only: error_t, fatal_error, exit_geometry
@@ -183,6 +186,7 @@ contains
     real(wp), allocatable :: q(:)
     integer :: i
     allocate (q(3 * size(mech%links)))
+    !GCC$ novector
     do i = 1, size(mech%links)
       q(3 * i - 2:3 * i) = [mech%links(i)%c(1), mech%links(i)%c(2), 0.0_wp]
     end do
@@ -257,6 +261,7 @@ contains
     integer :: k, r, a, b, blk, gd, d
     phi = 0.0_wp
     jac = 0.0_wp
+    !GCC$ novector
     do k = 1, size(mech%pairs)
       associate (pr => mech%pairs(k))
         r = pair_row(k)
@@ -283,6 +288,7 @@ contains
         end if
       end associate
     end do
+    !GCC$ novector
     do d = 1, size(mech%drives)
       associate (pr => mech%pairs(mech%drives(d)%pair))
         r = drive_row(mech, d)
@@ -331,6 +337,7 @@ contains
     real(wp) :: ra(2), rb(2), u(2)
     integer :: k, r, d
     allocate (h(linkage_rows(mech)), source=0.0_wp)
+    !GCC$ novector
     do k = 1, size(mech%pairs)
       associate (pr => mech%pairs(k))
         r = pair_row(k)
@@ -344,6 +351,7 @@ contains
         end if
       end associate
     end do
+    !GCC$ novector
     do d = 1, size(mech%drives)
       associate (pr => mech%pairs(mech%drives(d)%pair))
         if (pr%kind == pair_p) then
@@ -395,6 +403,7 @@ contains
     nr = linkage_rows(mech)
     allocate (phi(nr), jac(nr, nr), dx(nr), v(nr, size(dq)), target(size(dq)))
     span = 0.0_wp
+    !GCC$ novector
     do d = 1, size(dq)
       if (mech%pairs(mech%drives(d)%pair)%kind == pair_r) then
         span = max(span, abs(dq(d) - dq_from(d)) / max_substep_angle)
@@ -406,6 +415,7 @@ contains
     allocate (from(size(dq)), q_good(size(q)))
     from(:) = dq_from
     q_good(:) = q
+    !GCC$ novector
     do s = 1, m
       target = dq_from + (dq - dq_from) * (real(s, wp) / real(m, wp))
       ! predictor: the velocity analogues of the drives at the last assembled pose
@@ -416,6 +426,7 @@ contains
       end if
       q = q + matmul(v, target - from)
       converged = .false.
+      !GCC$ novector
       do it = 1, max_newton
         call constraints(mech, q, target, phi, jac)
         converged = maxval(abs(phi)) <= newton_tol * mech%size
@@ -470,6 +481,7 @@ contains
     integer :: u, i, nr
     nr = linkage_rows(mech)
     allocate (phi(nr), jac(nr, nr), dq(size(mech%drives)))
+    !GCC$ novector
     do i = 1, size(mech%drives)
       dq(i) = mech%drives(i)%q_ref
     end do
@@ -477,6 +489,7 @@ contains
     linkage_worst_unit = 0
     if (.not. allocated(mech%units)) return
     worst = huge(1.0_wp)
+    !GCC$ novector
     do u = 1, size(mech%units)
       cols = unit_columns(mech%units(u))
       allocate (x(size(cols)))
@@ -496,6 +509,7 @@ contains
     integer, allocatable :: cols(:)
     integer :: i
     allocate (cols(3 * size(unit%links)))
+    !GCC$ novector
     do i = 1, size(unit%links)
       cols(3 * i - 2:3 * i) = [3 * unit%links(i) - 2, 3 * unit%links(i) - 1, 3 * unit%links(i)]
     end do
@@ -515,6 +529,7 @@ contains
     nr = linkage_rows(mech)
     allocate (phi(nr), jac(nr, nr), e(nr))
     call constraints(mech, q, [(0.0_wp, d=1, size(mech%drives))], phi, jac)
+    !GCC$ novector
     do d = 1, size(mech%drives)
       e = 0.0_wp
       e(drive_row(mech, d)) = 1.0_wp
@@ -541,12 +556,14 @@ contains
     allocate (phi(nr), jac(nr, nr), rhs(nr))
     call constraints(mech, q, [(0.0_wp, d=1, size(mech%drives))], phi, jac)
     rhs = 0.0_wp
+    !GCC$ novector
     do d = 1, size(mech%drives)
       rhs(drive_row(mech, d)) = dv(d)
     end do
     call solve_dense(jac, rhs, qd, error)
     if (allocated(error)) return
     rhs = -quadratic_terms(mech, q, qd)
+    !GCC$ novector
     do d = 1, size(mech%drives)
       rhs(drive_row(mech, d)) = rhs(drive_row(mech, d)) + da(d)
     end do
@@ -584,6 +601,7 @@ contains
     ! the second opinion: unit by unit, the last found first (the course's order)
     allocate (lam2(nr), source=0.0_wp)
     allocate (later(0))
+    !GCC$ novector
     do u = size(mech%units), 1, -1
       cols = unit_columns(mech%units(u))
       rows = mech%units(u)%rows
@@ -604,6 +622,7 @@ contains
     ! physical forces
     allocate (step%f(2, size(mech%pairs)), step%normal(size(mech%pairs)), step%couple(size(mech%pairs)))
     allocate (step%effort(size(mech%drives)))
+    !GCC$ novector
     do k = 1, size(mech%pairs)
       associate (pr => mech%pairs(k))
         r = pair_row(k)
@@ -625,6 +644,7 @@ contains
         end if
       end associate
     end do
+    !GCC$ novector
     do d = 1, size(mech%drives)
       associate (pr => mech%pairs(mech%drives(d)%pair))
         step%effort(d) = lam(drive_row(mech, d))
@@ -634,6 +654,7 @@ contains
 
     ! self-check 1: every link's equilibrium with the physical forces at their points
     allocate (bal(n))
+    !GCC$ novector
     do i = 1, n
       ref = step%q(3 * i - 2:3 * i - 1)
       associate (lk => mech%links(i))
@@ -643,15 +664,18 @@ contains
         call balance_add_couple(bal(i), -lk%j * step%qdd(3 * i))
       end associate
     end do
+    !GCC$ novector
     do k = 1, size(mech%forces)
       associate (fc => mech%forces(k))
         s = point_position(mech, step%q, fc%link, fc%at)
         call balance_add_force(bal(fc%link), step%q(3 * fc%link - 2:3 * fc%link - 1), s, fval(k) * force_dir(fc))
       end associate
     end do
+    !GCC$ novector
     do k = 1, size(mech%moment_link)
       call balance_add_couple(bal(mech%moment_link(k)), mval(k))
     end do
+    !GCC$ novector
     do k = 1, size(mech%pairs)
       associate (pr => mech%pairs(k))
         if (pr%kind == pair_r) then
@@ -663,6 +687,7 @@ contains
         call add_on(bal, pr%b, s, -step%f(:, k), -step%couple(k))
       end associate
     end do
+    !GCC$ novector
     do d = 1, size(mech%drives)
       associate (pr => mech%pairs(mech%drives(d)%pair))
         if (pr%kind == pair_r) then
@@ -682,6 +707,7 @@ contains
     call linkage_velocity_analogues(mech, step%q, v, error)
     if (allocated(error)) return
     step%mismatch = 0.0_wp
+    !GCC$ novector
     do d = 1, size(mech%drives)
       power = -dot_product(gen, v(:, d))
       terms = sum(abs(gen * v(:, d)))
@@ -720,6 +746,7 @@ contains
     real(wp) :: s(2), vs(2), as(2), f(2), w(2)
     integer :: i, k
     allocate (gen(size(q)), source=0.0_wp)
+    !GCC$ novector
     do i = 1, size(mech%links)
       associate (lk => mech%links(i))
         call link_point_state(mech, q, qd, qdd, i, lk%s, s, vs, as)
@@ -728,6 +755,7 @@ contains
         gen(3 * i) = gen(3 * i) - lk%j * qdd(3 * i)
       end associate
     end do
+    !GCC$ novector
     do k = 1, size(mech%forces)
       associate (fc => mech%forces(k))
         w = fc%dir
@@ -735,6 +763,7 @@ contains
         call add_gen(fc%link, point_position(mech, q, fc%link, fc%at), fval(k) * w)
       end associate
     end do
+    !GCC$ novector
     do k = 1, size(mech%moment_link)
       gen(3 * mech%moment_link(k)) = gen(3 * mech%moment_link(k)) + mval(k)
     end do

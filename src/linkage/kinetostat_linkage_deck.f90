@@ -194,6 +194,7 @@ contains
     nl = leading(is_set(link%id))
     call require_rule(ctx, "link", nl >= 1, "at least one moving link is required (link(1)%id missing)", error)
     if (allocated(error)) return
+    !GCC$ novector
     do k = nl + 1, max_links
       if (is_set(link(k)%m) .or. is_set(link(k)%j) .or. any(is_set(link(k)%s))) then
         call deck_error(ctx, "link("//int_str(k)//")", "links must be numbered 1.."//int_str(nl + 1)// &
@@ -202,6 +203,7 @@ contains
       end if
     end do
     allocate (deck%mech%links(nl), ids(nl))
+    !GCC$ novector
     do k = 1, nl
       p = "link("//int_str(k)//")%"
       call require_whole(ctx, p//"id", link(k)%id, 0, huge(1), id, error); if (allocated(error)) return
@@ -220,6 +222,7 @@ contains
     np = leading(pair%kind /= "")
     call require_rule(ctx, "pair", np >= 1, "at least one pair is required (pair(1)%kind missing)", error)
     if (allocated(error)) return
+    !GCC$ novector
     do k = np + 1, max_pairs
       if (any(is_set(pair(k)%links)) .or. any(is_set(pair(k)%at)) .or. len_trim(pair(k)%name) > 0) then
         call deck_error(ctx, "pair("//int_str(k)//")", "pairs must be numbered 1.."//int_str(np + 1)// &
@@ -228,6 +231,7 @@ contains
       end if
     end do
     allocate (deck%mech%pairs(np))
+    !GCC$ novector
     do k = 1, np
       p = "pair("//int_str(k)//")%"
       associate (pr => deck%mech%pairs(k))
@@ -249,6 +253,7 @@ contains
         if (allocated(error)) return
         pr%name = pair(k)%name(1:len(pr%name))
         if (len_trim(pr%name) == 0) pr%name = "J"//int_str(k)
+        !GCC$ novector
         do i = 1, k - 1
           call require_rule(ctx, p//"name", deck%mech%pairs(i)%name /= pr%name, "'"//trim(pr%name)// &
             "' names pair "//int_str(i)//" already", error)
@@ -281,14 +286,18 @@ contains
     end do
     ! every link's reference point: its first pair's joint; the size of the linkage
     deck%mech%size = 0.0_wp
+    !GCC$ novector
     do k = 1, np
+      !GCC$ novector
       do i = 1, np
         deck%mech%size = max(deck%mech%size, magnitude(deck%mech%pairs(k)%at - deck%mech%pairs(i)%at))
       end do
     end do
     if (deck%mech%size <= 0.0_wp) deck%mech%size = 1.0_wp
+    !GCC$ novector
     do k = 1, nl
       count = 0
+      !GCC$ novector
       do i = 1, np
         if (deck%mech%pairs(i)%a /= k .and. deck%mech%pairs(i)%b /= k) cycle
         count = count + 1
@@ -322,9 +331,11 @@ contains
     if (is_set(n)) then
       call require_whole(ctx, "n", n, 1, max_steps, nsteps, error); if (allocated(error)) return
     end if
+    !GCC$ novector
     do k = 1, nd
       p = "drive("//int_str(k)//")%"
       i = 0
+      !GCC$ novector
       do a = 1, np
         if (deck%mech%pairs(a)%name == trim(drive(k)%pair)) i = a
       end do
@@ -357,6 +368,7 @@ contains
       call require_set(ctx, p//"eps", deck%eps(k), error); if (allocated(error)) return
       deck%mech%drives(k)%q_ref = reference_value(deck%mech, i)
     end do
+    !GCC$ novector
     do k = nd + 1, max_drives
       if (is_set(drive(k)%start) .or. is_set(drive(k)%omega) .or. is_set(drive(k)%values(1))) then
         call deck_error(ctx, "drive("//int_str(k)//")", "drives must be numbered 1.."//int_str(nd + 1)// &
@@ -368,6 +380,7 @@ contains
     if (allocated(error)) return
     deck%n = nsteps
     allocate (deck%values(nsteps, nd), source=0.0_wp)
+    !GCC$ novector
     do k = 1, nd
       if (deck%listed(k)) then
         deck%values(:, k) = drive(k)%values(1:nsteps)
@@ -375,11 +388,13 @@ contains
     end do
     ! a turning pair's drive angles: the driven link's axis is the drive's angle (a drive
     ! between two moving links: the angle of a's axis from b's)
+    !GCC$ novector
     do k = 1, nd
       associate (pr => deck%mech%pairs(deck%mech%drives(k)%pair))
         if (pr%kind == pair_r .and. pr%b == 0) deck%mech%links(pr%a)%angle0 = deck%mech%drives(k)%q_ref
       end associate
     end do
+    !GCC$ novector
     do k = 1, nd
       associate (pr => deck%mech%pairs(deck%mech%drives(k)%pair))
         if (pr%kind == pair_r .and. pr%b /= 0) deck%mech%drives(k)%q_ref = deck%mech%drives(k)%q_ref - &
@@ -397,6 +412,7 @@ contains
     nf = leading(is_set(force%link))
     nm = leading(is_set(moment%link))
     allocate (deck%mech%forces(nf), deck%force_load(nf), deck%mech%moment_link(nm), deck%moment_load(nm))
+    !GCC$ novector
     do k = 1, nf
       p = "force("//int_str(k)//")%"
       call link_index(p//"link", force(k)%link, i, error); if (allocated(error)) return
@@ -412,6 +428,7 @@ contains
                          deck%force_load(k), error)
       if (allocated(error)) return
     end do
+    !GCC$ novector
     do k = 1, nm
       p = "moment("//int_str(k)//")%"
       call link_index(p//"link", moment(k)%link, i, error); if (allocated(error)) return
@@ -429,6 +446,7 @@ contains
       logical, intent(in) :: given(:)
       integer :: kk
       leading = 0
+      !GCC$ novector
       do kk = 1, size(given)
         if (.not. given(kk)) exit
         leading = kk
@@ -447,6 +465,7 @@ contains
         idx = 0
         return
       end if
+      !GCC$ novector
       do kk = 1, nl
         if (ids(kk) == v) idx = kk
       end do
@@ -494,6 +513,7 @@ contains
     if (mech%pairs(k)%kind == pair_p) return
     a = mech%pairs(k)%a
     to = mech%links(a)%s
+    !GCC$ novector
     do i = size(mech%pairs), 1, -1
       if (i == k) cycle
       if (mech%pairs(i)%a /= a .and. mech%pairs(i)%b /= a) cycle
@@ -514,6 +534,7 @@ contains
     real(wp), intent(out) :: q(:), v(:), a(:)
     integer :: d
     real(wp) :: x
+    !GCC$ novector
     do d = 1, size(deck%mech%drives)
       if (deck%listed(d)) then
         x = deck%values(k, d)

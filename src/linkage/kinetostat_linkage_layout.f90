@@ -31,6 +31,12 @@ module kinetostat_linkage_layout
   integer, parameter :: first_width = 9
   !> Width of every other field.
   integer, parameter :: field_width = 12
+  !> Heading of RESULTS with --frame link.
+  character(*), parameter :: link_axes_heading = "REACTIONS IN THE AXES OF THE LINK EACH ACTS ON "// &
+    "(LINE 1 ALONG ITS X AXIS, LINE 2 ACROSS), N"
+  !> The same in Russian.
+  character(*), parameter :: link_axes_heading_ru = "РЕАКЦИИ В ОСЯХ ЗВЕНА, НА КОТОРОЕ ОНИ "// &
+    "ДЕЙСТВУЮТ (СТРОКА 1 ВДОЛЬ ОСИ X ЗВЕНА, СТРОКА 2 ПОПЕРЕК), Н"
   !> A gap of the global and group-by-group reactions above this (relative) is a warning.
   real(wp), parameter :: gap_tolerance = 1.0e-9_wp
 
@@ -84,6 +90,7 @@ contains
     call structure_lines(deck%mech, lang, lines)
     call out%put(" DECK: "//source%path)
     if (len_trim(deck%title) > 0) call out%put(" TITLE: "//trim(deck%title))
+    !GCC$ novector
     do i = 1, size(lines)
       call out%put(" "//trim(lines(i)))
     end do
@@ -98,9 +105,11 @@ contains
     character(len=16), allocatable :: joints(:)
     integer :: i, k, slide
     associate (mech => self%deck%mech)
+      !GCC$ novector
       do i = 1, size(mech%links)
         allocate (joints(0))
         slide = 0
+        !GCC$ novector
         do k = 1, size(mech%pairs)
           associate (pr => mech%pairs(k))
             if (pr%a /= i .and. pr%b /= i) cycle
@@ -121,6 +130,7 @@ contains
         end if
         deallocate (joints)
       end do
+      !GCC$ novector
       do k = 1, size(mech%pairs)
         associate (pr => mech%pairs(k))
           if (pr%kind == pair_r .and. (pr%a == 0 .or. pr%b == 0)) call out%add_pivot(trim(pr%name))
@@ -164,10 +174,12 @@ contains
     real(wp) :: th, p(2), w(2)
     integer :: i, c
     associate (mech => self%deck%mech, deck => self%deck)
+      !GCC$ novector
       do i = 1, size(mech%pairs)
         call drawing%pair_from_table(table, k, force_name(mech, i), trim(mech%pairs(i)%name), error)
         if (allocated(error)) return
       end do
+      !GCC$ novector
       do i = 1, size(mech%forces)
         associate (f => mech%forces(i), lk => mech%links(mech%forces(i)%link))
           th = table%rows(table%column_index("phi"//link_name(mech, f%link)), k) * deg_to_rad - lk%angle0
@@ -177,12 +189,14 @@ contains
           call drawing%add_force("Q"//int_str(i), force_load, p, linkage_load_value(deck, deck%force_load(i), k) * w)
         end associate
       end do
+      !GCC$ novector
       do i = 1, size(mech%moment_link)
         call drawing%add_moment("MQ"//int_str(i), force_load, drawing%at("S"//link_name(mech, mech%moment_link(i))), &
           linkage_load_value(deck, deck%moment_load(i), k))
       end do
       call self%mass_model(model)
       call drawing%add_body_loads(table, k, model)
+      !GCC$ novector
       do i = 1, size(mech%drives)
         call drive_names(mech, i, input, effort)
         c = table%column_index(effort)
@@ -200,6 +214,7 @@ contains
     type(mass_model_t), intent(out) :: model
     integer :: i
     associate (mech => self%deck%mech)
+      !GCC$ novector
       do i = 1, size(mech%links)
         call model%add(link_name(mech, i), "S"//link_name(mech, i), mech%links(i)%m, mech%links(i)%j)
       end do
@@ -272,6 +287,7 @@ contains
     character(len=:), allocatable :: where
     nd = size(deck%mech%drives)
     allocate (dq(nd), dv(nd), da(nd), fval(size(deck%force_load)), mval(size(deck%moment_load)))
+    !GCC$ novector
     do k = first, last
       call linkage_drive_values(deck, k, dq, dv, da)
       where = path//": &linkage: step "//int_str(k)//" ("//drive_text(deck, dq)//")"
@@ -285,9 +301,11 @@ contains
         error%message = where//": the velocities are undetermined (a dead position)"
         return
       end if
+      !GCC$ novector
       do i = 1, size(fval)
         fval(i) = linkage_load_value(deck, deck%force_load(i), k)
       end do
+      !GCC$ novector
       do i = 1, size(mval)
         mval(i) = linkage_load_value(deck, deck%moment_load(i), k)
       end do
@@ -307,6 +325,7 @@ contains
     character(len=32) :: buf
     integer :: d
     text = ""
+    !GCC$ novector
     do d = 1, size(dq)
       call drive_names(deck%mech, d, input, effort)
       if (d > 1) text = text//", "
@@ -337,6 +356,7 @@ contains
       call table%block_range(self%deck%n, first, last)
       if (table%first_block()) then
         allocate (table%columns(0))
+        !GCC$ novector
         do d = 1, nd
           call drive_names(mech, d, input, effort)
           if (mech%pairs(mech%drives(d)%pair)%kind == pair_r) then
@@ -345,6 +365,7 @@ contains
             call table%add_column(input, "m", col_length)
           end if
         end do
+        !GCC$ novector
         do k = 1, np
           call table%add_column(force_name(mech, k), "N", col_force)
           call table%add_column(force_name(mech, k)//"G", "deg", col_force_angle)
@@ -355,6 +376,7 @@ contains
             call table%add_column(force_name(mech, k)//"M", "N*m", col_moment)
           end if
         end do
+        !GCC$ novector
         do d = 1, nd
           call drive_names(mech, d, input, effort)
           if (mech%pairs(mech%drives(d)%pair)%kind == pair_r) then
@@ -368,6 +390,7 @@ contains
         call echo_deck(self%deck, table)
         ! the continuation starts at the reference position
         allocate (dq(nd))
+        !GCC$ novector
         do d = 1, nd
           dq(d) = mech%drives(d)%q_ref
         end do
@@ -382,6 +405,7 @@ contains
       call table%allocate_rows(last - first + 1)
       allocate (residual(first:last), mismatch(first:last))
       gap = 0.0_wp
+      !GCC$ novector
       do k = first, last
         call fill_row(self%deck, k, steps(k), table%rows(:, k - first + 1))
         residual(k) = steps(k)%residual
@@ -389,6 +413,7 @@ contains
         gap = max(gap, steps(k)%solver_gap)
       end do
       if (table%kinematics_wanted) then
+        !GCC$ novector
         do k = first, last
           call put_kinematics(mech, table, k - first + 1, steps(k))
         end do
@@ -417,12 +442,14 @@ contains
     allocate (dq(nd), dv(nd), da(nd))
     call linkage_drive_values(deck, k, dq, dv, da)
     floor = 0.0_wp
+    !GCC$ novector
     do ip = 1, size(deck%mech%pairs)
       floor = max(floor, magnitude(s%f(:, ip)))
     end do
     floor = noise_rel * floor
     lever = floor * deck%mech%size
     pos = 0
+    !GCC$ novector
     do d = 1, nd
       pos = pos + 1
       if (deck%mech%pairs(deck%mech%drives(d)%pair)%kind == pair_r) then
@@ -431,6 +458,7 @@ contains
         v(pos) = dq(d)
       end if
     end do
+    !GCC$ novector
     do ip = 1, size(deck%mech%pairs)
       f = s%f(:, ip)
       if (magnitude(f) <= floor) f = 0.0_wp
@@ -445,6 +473,7 @@ contains
         pos = pos + 2
       end if
     end do
+    !GCC$ novector
     do d = 1, nd
       pos = pos + 1
       if (deck%mech%pairs(deck%mech%drives(d)%pair)%kind == pair_r) then
@@ -453,6 +482,7 @@ contains
         v(pos) = merge(0.0_wp, s%effort(d), abs(s%effort(d)) <= floor)
       end if
     end do
+    !GCC$ novector
     do d = 1, size(v)
       v(d) = clean_zero(v(d))
     end do
@@ -467,6 +497,7 @@ contains
     type(linkage_step_t), intent(in) :: s
     real(wp) :: x(2), vs(2), as(2), floor, f(2)
     integer :: k, i
+    !GCC$ novector
     do k = 1, size(mech%pairs)
       associate (pr => mech%pairs(k))
         if (pr%kind == pair_r) then
@@ -478,23 +509,37 @@ contains
         call table%put_point(r, trim(pr%name), point_position(mech, s%q, i, pr%at))
       end associate
     end do
+    !GCC$ novector
     do i = 1, size(mech%links)
       call table%put_link(r, link_name(mech, i), mech%links(i)%angle0 + s%q(3 * i), s%qd(3 * i), s%qdd(3 * i))
     end do
+    !GCC$ novector
     do i = 1, size(mech%links)
       call link_point_state(mech, s%q, s%qd, s%qdd, i, mech%links(i)%s, x, vs, as)
       call table%put_point(r, "S"//link_name(mech, i), x)
       call table%put_acceleration(r, "S"//link_name(mech, i), as)
     end do
     floor = 0.0_wp
+    !GCC$ novector
     do k = 1, size(mech%pairs)
       floor = max(floor, magnitude(s%f(:, k)))
     end do
     floor = noise_rel * floor
+    !GCC$ novector
     do k = 1, size(mech%pairs)
       f = s%f(:, k)
       where (abs(f) <= floor) f = 0.0_wp
       call table%put_components(r, force_name(mech, k), f, 0.0_wp)
+    end do
+    ! --frame link: each pair force in the axes of the link it acts on (the frame: global)
+    !GCC$ novector
+    do k = 1, size(mech%pairs)
+      i = mech%pairs(k)%a
+      f = s%f(:, k)
+      if (magnitude(f) <= floor) f = 0.0_wp
+      if (i > 0) f = rotate(f, -(mech%links(i)%angle0 + s%q(3 * i)))
+      where (abs(f) <= floor) f = 0.0_wp
+      call table%put_link_axes(r, force_name(mech, k), f, link_name(mech, i))
     end do
   end subroutine put_kinematics
 
@@ -510,12 +555,14 @@ contains
       call table%echo_real("G", deck%g, "m/s^2")
       call table%echo_real("GRAVITY_ANGLE", deck%gravity_angle, "deg")
       call table%echo_int("N", deck%n, "steps")
+      !GCC$ novector
       do i = 1, size(mech%links)
         call table%echo_line("   LINK "//link_name(mech, i))
         call table%echo_real("  M", mech%links(i)%m, "kg")
         call table%echo_real("  J", mech%links(i)%j, "kg*m^2")
         call table%echo_array("  S", mech%links(i)%s, "m")
       end do
+      !GCC$ novector
       do k = 1, size(mech%pairs)
         associate (pr => mech%pairs(k))
           if (pr%kind == pair_r) then
@@ -529,6 +576,7 @@ contains
           call table%echo_array("  AT", pr%at, "m")
         end associate
       end do
+      !GCC$ novector
       do k = 1, size(mech%drives)
         call drive_names(mech, k, input, effort)
         call table%echo_line("   DRIVE "//int_str(k)//": PAIR "//trim(deck%drive_pair(k))//", INPUT "//input// &
@@ -554,6 +602,7 @@ contains
           call table%echo_real("  EPS", deck%eps(k), "m/s^2")
         end if
       end do
+      !GCC$ novector
       do k = 1, size(mech%forces)
         call table%echo_line("   FORCE "//int_str(k)//": LINK "//link_name(mech, mech%forces(k)%link)// &
                              trim(merge(", FOLLOWS THE LINK", "                  ", mech%forces(k)%follow)))
@@ -561,12 +610,14 @@ contains
         call table%echo_real("  ANGLE", angle_360_deg(mech%forces(k)%dir), "deg")
         call echo_schedule(table, deck%force_load(k)%value, deck%force_load(k)%column, "N")
       end do
+      !GCC$ novector
       do k = 1, size(mech%moment_link)
         call table%echo_line("   MOMENT "//int_str(k)//": LINK "//link_name(mech, mech%moment_link(k)))
         call echo_schedule(table, deck%moment_load(k)%value, deck%moment_load(k)%column, "N*m")
       end do
       call structure_lines(mech, lang_en, lines)
       call table%echo_heading(trim(lines(1)))
+      !GCC$ novector
       do i = 2, size(lines)
         call table%echo_line("   "//trim(lines(i)))
       end do
@@ -595,11 +646,26 @@ contains
     type(text_buffer_t), intent(inout) :: out
     type(text_buffer_t), intent(inout) :: later
     character(len=:), allocatable :: line1, line2, input, effort, deg, newton, newton_m, metre
+    integer, allocatable :: along(:)
     integer :: k, ip, d, nd, np, pos
     nd = size(self%deck%mech%drives)
     np = size(self%deck%mech%pairs)
+    allocate (along(np), source=0)
     associate (mech => self%deck%mech)
+      if (table%link_frame) then
+        !GCC$ novector
+        do ip = 1, np
+          along(ip) = table%column_index(force_name(mech, ip)//"_along")
+        end do
+      end if
       if (first == 1 .and. table%first_block()) then
+        if (table%link_frame) then
+          if (lang == lang_ru) then
+            call out%put(" "//link_axes_heading_ru)
+          else
+            call out%put(" "//link_axes_heading)
+          end if
+        end if
         if (lang == lang_ru) then
           deg = "град"; newton = "Н"; newton_m = "Н*м"; metre = "м"
         else
@@ -607,15 +673,23 @@ contains
         end if
         line1 = ""
         line2 = ""
+        !GCC$ novector
         do d = 1, nd
           call drive_names(mech, d, input, effort)
           line1 = line1//right(upper_ascii(input), merge(first_width, field_width, d == 1))
           line2 = line2//repeat(" ", merge(first_width, field_width, d == 1))
         end do
+        !GCC$ novector
         do ip = 1, np
-          line1 = line1//right(force_name(mech, ip), field_width)
-          line2 = line2//right(force_name(mech, ip)//"G", field_width)
+          if (table%link_frame) then
+            line1 = line1//right(force_name(mech, ip)//"_ALONG", field_width)
+            line2 = line2//right(force_name(mech, ip)//"_ACROSS", field_width)
+          else
+            line1 = line1//right(force_name(mech, ip), field_width)
+            line2 = line2//right(force_name(mech, ip)//"G", field_width)
+          end if
         end do
+        !GCC$ novector
         do d = 1, nd
           call drive_names(mech, d, input, effort)
           line1 = line1//right(upper_ascii(effort), field_width)
@@ -624,6 +698,7 @@ contains
         call out%put(trim(line2))
         line1 = ""
         line2 = ""
+        !GCC$ novector
         do d = 1, nd
           if (mech%pairs(mech%drives(d)%pair)%kind == pair_r) then
             line1 = line1//right(deg, merge(first_width, field_width, d == 1))
@@ -632,10 +707,16 @@ contains
           end if
           line2 = line2//repeat(" ", merge(first_width, field_width, d == 1))
         end do
+        !GCC$ novector
         do ip = 1, np
           line1 = line1//right(newton, field_width)
-          line2 = line2//right(deg, field_width)
+          if (table%link_frame) then
+            line2 = line2//right(newton, field_width)
+          else
+            line2 = line2//right(deg, field_width)
+          end if
         end do
+        !GCC$ novector
         do d = 1, nd
           if (mech%pairs(mech%drives(d)%pair)%kind == pair_r) then
             line1 = line1//right(newton_m, field_width)
@@ -646,22 +727,31 @@ contains
         call out%put(trim(line1))
         call out%put(trim(line2))
       end if
+      !GCC$ novector
       do k = first, last
         associate (v => table%rows(:, k))
           line1 = ""
           line2 = ""
+          !GCC$ novector
           do d = 1, nd
             line1 = line1//fixed_field(v(d), merge(first_width, field_width, d == 1), &
                                        merge(2, 4, mech%pairs(mech%drives(d)%pair)%kind == pair_r))
             line2 = line2//repeat(" ", merge(first_width, field_width, d == 1))
           end do
           pos = nd
+          !GCC$ novector
           do ip = 1, np
-            line1 = line1//fixed_field(v(pos + 1), field_width, 2)
-            line2 = line2//fixed_field(v(pos + 2), field_width, 2)
+            if (table%link_frame) then
+              line1 = line1//fixed_field(v(along(ip)), field_width, 2)
+              line2 = line2//fixed_field(v(along(ip) + 1), field_width, 2)
+            else
+              line1 = line1//fixed_field(v(pos + 1), field_width, 2)
+              line2 = line2//fixed_field(v(pos + 2), field_width, 2)
+            end if
             pos = pos + 4
             if (mech%pairs(ip)%kind == pair_p) pos = pos + 2
           end do
+          !GCC$ novector
           do d = 1, nd
             line1 = line1//fixed_field(v(pos + d), field_width, 2)
           end do
@@ -687,6 +777,7 @@ contains
     character(len=len(text)) :: up
     integer :: i
     up = text
+    !GCC$ novector
     do i = 1, len(text)
       if (text(i:i) >= "a" .and. text(i:i) <= "z") up(i:i) = achar(iachar(text(i:i)) - 32)
     end do

@@ -65,6 +65,7 @@ contains
     allocate (known(0:n), source=.false.)
     known(0) = .true.
     allocate (driven(p5), source=.false.)
+    !GCC$ novector
     do k = 1, nd
       driven(mech%drives(k)%pair) = .true.
     end do
@@ -72,6 +73,7 @@ contains
     do while (.not. all(known))
       rest = pack([(i, i=1, n)], .not. known(1:n))
       found = .false.
+      !GCC$ novector
       do s = 1, min(size(rest), max_unit_links)
         ! combinations of s of the remaining links, in lexicographic order
         pick = [(i, i=1, s)]
@@ -108,6 +110,7 @@ contains
       integer, intent(in) :: set(:)
       integer :: kk
       equations = 0
+      !GCC$ novector
       do kk = 1, p5
         if (counts(kk, set)) then
           equations = equations + 2
@@ -134,6 +137,7 @@ contains
       unit%links(:) = set
       allocate (unit%rows(0), ext(0), inner(0))
       has_drive = .false.
+      !GCC$ novector
       do kk = 1, p5
         if (.not. counts(kk, set)) cycle
         unit%rows = [unit%rows, pair_row(kk), pair_row(kk) + 1]
@@ -143,6 +147,7 @@ contains
           ext = [ext, kk]
         end if
       end do
+      !GCC$ novector
       do dd = 1, nd
         if (counts(mech%drives(dd)%pair, set)) then
           unit%rows = [unit%rows, drive_row(mech, dd)]
@@ -156,6 +161,7 @@ contains
         return
       end if
       allocate (internal(size(set)), source=0)
+      !GCC$ novector
       do j = 1, size(set)
         internal(j) = count(mech%pairs(inner)%a == set(j) .or. mech%pairs(inner)%b == set(j))
       end do
@@ -175,6 +181,7 @@ contains
       integer, allocatable :: ends(:)
       integer :: kk, e
       allocate (ends(0))
+      !GCC$ novector
       do kk = 1, size(ext)
         e = mech%pairs(ext(kk))%a
         if (.not. known(e)) e = mech%pairs(ext(kk))%b
@@ -215,6 +222,7 @@ contains
       all(1:size(first)) = first
       if (present(second)) all(size(first) + 1:) = second
       text = ""
+      !GCC$ novector
       do kk = 1, size(all)
         if (kk > 1) text = text//","
         text = text//int_str(id_of(all(kk)))
@@ -239,9 +247,11 @@ contains
     integer :: i, s, j
     s = size(pick)
     more = .false.
+    !GCC$ novector
     do i = s, 1, -1
       if (pick(i) < m - s + i) then
         pick(i) = pick(i) + 1
+        !GCC$ novector
         do j = i + 1, s
           pick(j) = pick(j - 1) + 1
         end do
@@ -258,6 +268,7 @@ contains
     character(len=:), allocatable :: text
     integer :: u
     text = ""
+    !GCC$ novector
     do u = 1, size(mech%units)
       if (u > 1) text = text//" -> "
       text = text//mech%units(u)%label
@@ -292,6 +303,7 @@ contains
                " = NUMBER OF DRIVES")
     end if
     top = 1
+    !GCC$ novector
     do u = 1, size(mech%units)
       associate (un => mech%units(u))
         top = max(top, un%class)

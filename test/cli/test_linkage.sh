@@ -78,3 +78,14 @@ expect_input_error linkage-unknown-link "pair\(3\)%links\(1\): no link 9" \
 run_ks data/class3.nml --set 'pair(6)%at=0.641,-0.35'
 if [ "$rc" -eq 3 ] && grep -q "step [0-9]* (phi1 = [0-9.]* deg): .* in group III(2,3,4,5)" "$err" && [ ! -s "$out" ]; then pass
 else fail linkage-dead-position "exit $rc: $(cat "$err")"; fi
+
+# --frame link: each pair force in the axes of the link it acts on; at phi1 = 0 the crank's
+# axis is +x, so F10_along = F10x and F10_across = F10y
+run_ks data/class3.nml --format csv --frame link
+python3 - "$out" <<'PY' && pass || fail linkage-frame-link "F10 in the crank's axes differs from its global components at phi1 = 0"
+import csv, sys
+row = next(csv.DictReader(open(sys.argv[1])))
+assert float(row["phi1"]) == 0.0
+for a, b in (("F10_along", "F10x"), ("F10_across", "F10y")):
+    assert abs(float(row[a]) - float(row[b])) <= 1e-9 * abs(float(row["F10"])), (a, row[a], row[b])
+PY
