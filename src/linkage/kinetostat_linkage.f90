@@ -424,7 +424,11 @@ contains
         call fatal_error(error, exit_geometry, fail_text("the Jacobian is singular (a dead position)"))
         return
       end if
-      q = q + matmul(v, target - from)
+      ! (explicit loops, not matmul: its library and inlined forms sum in different orders)
+      !GCC$ novector
+      do d = 1, size(dq)
+        q = q + v(:, d) * (target(d) - from(d))
+      end do
       converged = .false.
       !GCC$ novector
       do it = 1, max_newton
@@ -607,7 +611,10 @@ contains
       rows = mech%units(u)%rows
       a = transpose(jac(rows, cols))
       b = -gen(cols)
-      if (size(later) > 0) b = b - matmul(transpose(jac(later, cols)), lam2(later))
+      !GCC$ novector
+      do i = 1, size(later)
+        b = b - jac(later(i), cols) * lam2(later(i))
+      end do
       allocate (x(size(rows)))
       call solve_dense(a, b, x, error)
       if (allocated(error)) return
@@ -709,8 +716,13 @@ contains
     step%mismatch = 0.0_wp
     !GCC$ novector
     do d = 1, size(mech%drives)
-      power = -dot_product(gen, v(:, d))
-      terms = sum(abs(gen * v(:, d)))
+      power = 0.0_wp
+      terms = 0.0_wp
+      !GCC$ novector
+      do i = 1, size(gen)
+        power = power - gen(i) * v(i, d)
+        terms = terms + abs(gen(i) * v(i, d))
+      end do
       associate (pr => mech%pairs(mech%drives(d)%pair))
         ! the effort acts on link a; for a stroke whose guide is on a, the stroke grows as a
         ! moves against u
