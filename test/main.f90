@@ -21,12 +21,13 @@ program kinetostat_tests
   use test_blocks, only: run_blocks_tests
   use test_records, only: run_records_tests
   use test_linkage, only: run_linkage_tests
+  use test_shaking, only: run_shaking_tests
   use, intrinsic :: iso_fortran_env, only: error_unit
   implicit none
   !> Suite names, in the order they run.
   character(*), parameter :: suite_names(*) = [character(len=11) :: &
     "foundation", "pr3207", "pr3050", "sixbar", "gears", "cam", "assur", "assur_ext", "friction", "io", &
-    "kinematics", "svg", "decimal", "lapack", "blocks", "records", "linkage"]
+    "kinematics", "svg", "decimal", "lapack", "blocks", "records", "shaking", "linkage"]
   type(test_counts_t) :: t
   logical :: selected(size(suite_names))
   integer :: i
@@ -93,6 +94,7 @@ contains
     case ("lapack"); call run_lapack_tests(t)
     case ("blocks"); call run_blocks_tests(t)
     case ("records"); call run_records_tests(t)
+    case ("shaking"); call run_shaking_tests(t)
     case default; error stop "run_suite: no suite '"//name//"'"
     end select
   end subroutine run_suite

@@ -94,7 +94,7 @@ contains
     character(len=:), allocatable :: whole, blocked
     integer :: d, f, b
     do d = 1, size(decks)
-      do f = 1, 8
+      do f = 1, 10
         options = run_options_t()
         select case (f)
         case (1)
@@ -114,9 +114,16 @@ contains
           options%kinematics = .true.
         case (7)
           options%format = format_summary
-        case default
+        case (8)
           options%format = format_table
           options%link_frame = .true.
+        case (9)
+          ! the shaking block after the layout's sections (PR 3050's second one)
+          options%format = format_table
+          options%shaking = .true.
+        case default
+          options%format = format_csv
+          options%shaking = .true.
         end select
         call run_one(trim(decks(d)), options, whole)
         do b = 1, size(block_sizes)

@@ -19,7 +19,7 @@ module kinetostat_assur_layout
   use kinetostat_assur_kinematics, only: kind_names, link_state_t, dyad_pose_t, point_state_t, point_on, &
     kind_rrp, kind_rpr, kind_prp, kind_rpp
   use kinetostat_assur_statics, only: pair_is_prismatic
-  use kinetostat_assur, only: assur_step_t, assur_step, assur_kinematics, link_a, link_b, crank_pin_index
+  use kinetostat_assur, only: assur_step_t, assur_step, assur_kinematics, link_a, link_b, crank_pin_index, pair_index
   use kinetostat_drawing, only: drawing_t, force_load
   use kinetostat_bodies, only: mass_model_t
   use kinetostat_assur_friction, only: friction_step_t, assur_friction_step
@@ -974,14 +974,36 @@ contains
   pure subroutine mass_model(self, model)
     class(assur_mechanism_t), intent(in) :: self
     type(mass_model_t), intent(out) :: model
-    integer :: i
+    integer :: i, d, q
+    integer, allocatable :: frame_pairs(:)
+    character(len=:), allocatable :: name, moment
     associate (mech => self%deck%mech)
       do i = 1, 2 * size(mech%dyads) + 1
         associate (l => mech%links(i))
-          call model%add(int_str(l%id), "S"//int_str(l%id), l%m, l%j)
+          call model%add(link_label(self%deck, i), "S"//int_str(l%id), l%m, l%j)
         end associate
       end do
       model%gravity = mech%g * mech%down
+      ! the pairs with the frame (an actuator's pair with the frame would also pass its drive
+      ! force to the frame: such a deck reports no frame total)
+      if (mech%drive_dyad > 0) then
+        if (mech%dyads(mech%drive_dyad)%on(1 + (mech%drive_pair - 1) / 2) == 0 .and. mech%drive_pair /= 2) return
+      end if
+      allocate (frame_pairs(0))
+      do d = 1, size(mech%dyads)
+        do q = 1, 2
+          if (mech%dyads(d)%on(q) == 0) frame_pairs = [frame_pairs, pair_index(d, 2 * q - 1)]
+        end do
+      end do
+      frame_pairs = [frame_pairs, crank_pin_index(size(mech%dyads))]
+      do i = 1, size(frame_pairs)
+        name = trim(self%deck%pair_name(frame_pairs(i)))
+        moment = ""
+        if (assur_pair_prismatic(self%deck, frame_pairs(i))) moment = name//"M"
+        call model%add_frame_pair(name, joint_name(name), moment)
+      end do
+      model%drive = ""
+      if (mech%drive_dyad == 0) model%drive = "M1"
     end associate
   end subroutine mass_model
 

@@ -24,6 +24,13 @@ module kinetostat_cli
   use kinetostat_diff, only: diff_options_t, diff_outputs
   use kinetostat_linkage_layout, only: linkage_structure_text
   use kinetostat_assur_presets, only: assur_preset, preset_names
+  use kinetostat_assur_layout, only: assur_mechanism_t
+  use kinetostat_assur_balance, only: assur_balance, balance_method_names, balance_full
+  use kinetostat_deck, only: deck_line_count, deck_line
+  use kinetostat_step_table, only: column_tally_t
+  use kinetostat_kinds, only: wp
+  use kinetostat_error, only: exit_geometry
+  use kinetostat_format, only: short_number
   !$ use omp_lib, only: omp_set_num_threads
   implicit none
   private
@@ -32,9 +39,10 @@ module kinetostat_cli
   !> One-line usage, printed with usage errors.
   character(*), parameter :: usage_line = "usage: kinetostat DECK|- [--set NAME=VALUE]... [-o FILE] " // &
     "[--format table|csv|json|svg|summary] [--pairs LIST] [--at K] [--lang en|ru] [--kinematics] " // &
-    "[--frame global|link] [--quiet] [--strict] | " // &
+    "[--frame global|link] [--shaking] [--quiet] [--strict] | " // &
     "kinetostat sweep DECK --vary NAME=FROM:TO:COUNT... [--part K/N] [--jobs N] | " // &
-    "kinetostat template KIND [-o FILE] | kinetostat diff A B [--rtol R] [--atol A] | "// &
+    "kinetostat template KIND [-o FILE] | kinetostat diff A B [--rtol R] [--atol A] | " // &
+    "kinetostat balance DECK [-o FILE] [--method full|crank|partial] [--fraction F] | "// &
     "kinetostat structure DECK [--lang ru] | --help | --version"
 
   !> Warning line when a run's self-check exceeds its tolerance.
@@ -45,13 +53,17 @@ module kinetostat_cli
     "kinetostat - kinetostatic force analysis of planar mechanisms", &
     "", &
     "  kinetostat DECK [--set NAME=VALUE]... [-o FILE] [--format table|csv|json|svg|summary]", &
-    "                  [--pairs LIST] [--at K] [--lang en|ru] [--kinematics] [--quiet] [--strict]", &
+    "                  [--pairs LIST] [--at K] [--lang en|ru] [--kinematics] [--shaking]", &
+    "                  [--quiet] [--strict]", &
     "  kinetostat sweep DECK --vary NAME=FROM:TO:COUNT... [--set NAME=VALUE]... [--part K/N]", &
     "                  [--jobs N]", &
     "                  [-o FILE] [--quiet] [--strict]", &
     "  kinetostat template KIND [-o FILE]   a commented deck to start from (KIND: a mechanism,", &
     "                                       or a preset of the generic engine)", &
     "  kinetostat diff A B [--rtol R] [--atol A] [--quiet]   compare two outputs", &
+    "  kinetostat balance DECK [-o FILE] [--method full|crank|partial] [--fraction F]", &
+    "                  an &assur deck with counterweights added (docs/shaking.md); before/", &
+    "                  after figures on stderr; --fraction: partial, default 0.5", &
     "  kinetostat structure DECK [--lang ru] [-o FILE]   structural analysis of a &linkage deck", &
     "  kinetostat --help | --version", &
     "", &
@@ -69,6 +81,9 @@ module kinetostat_cli
     "--kinematics  csv and json add positions of joints and centres of mass, link angles,", &
     "            angular speeds and accelerations, accelerations of the centres of mass and", &
     "            the x, y components of the pair forces (the table is unchanged)", &
+    "--shaking   linkages: add the shaking force F_shake (magnitude, x, y) and moment M_shake", &
+    "            and the total force and moment on the frame F_frame_x, F_frame_y, M_frame", &
+    "            (docs/shaking.md)", &
     "--frame     global (default) or link: &assur decks also report every pair force as", &
     "            <F>_along, <F>_across in the axes of the link it acts on (the table prints", &
     "            them instead of magnitudes and angles)", &
@@ -127,6 +142,14 @@ module kinetostat_cli
     character(len=:), allocatable :: diff_files(:)
     !> Tolerances of `diff`.
     type(diff_options_t) :: diff_options
+    !> The balance subcommand was given.
+    logical :: balance = .false.
+    !> balance --method (balance_full, ...).
+    integer :: balance_method = balance_full
+    !> balance --fraction (partial method), 0..1.
+    real(wp) :: fraction = 0.5_wp
+    !> Whether --fraction was given.
+    logical :: fraction_given = .false.
   end type cli_args_t
 
 
@@ -180,6 +203,8 @@ contains
         call sweep_deck(args, out, warnings, error)
       else if (args%structure) then
         call structure_of_deck(args%deck, args%options%lang, out, error)
+      else if (args%balance) then
+        call balance_deck(args, out, error)
       else
         progress_wanted = stderr_is_terminal() .and. .not. args%quiet
         progress_deck = args%deck
@@ -334,6 +359,114 @@ contains
     varies = [varies, one]
   end subroutine add_vary
 
+  !> `kinetostat balance`: the &assur deck with counterweights added into `out`; the report
+  !> (the counterweights, max |F_shake|, max |M_shake| and max |M1| before and after, the
+  !> balanced deck's self-check) on stderr unless --quiet.
+  subroutine balance_deck(args, out, error)
+    type(cli_args_t), intent(in) :: args
+    type(text_buffer_t), intent(inout) :: out
+    type(error_t), allocatable, intent(out) :: error
+    type(deck_source_t) :: source, balanced
+    character(len=:), allocatable :: group
+    type(assur_mechanism_t) :: mech
+    type(override_t), allocatable :: overrides(:)
+    type(text_buffer_t) :: report
+    type(step_table_t) :: before, after
+    integer :: i
+    call load_deck(args%deck, source, error)
+    if (allocated(error)) return
+    call read_group_name(source, group, error)
+    if (allocated(error)) return
+    if (group /= "assur") then
+      call fatal_error(error, exit_input, source%path//": &"//group//": balance works on &assur decks (the generic "// &
+        "engine, a crank and its dyads); model the mechanism as one (e.g. data/assur_pr3207.nml for &pr3207)")
+      return
+    end if
+    call mech%read_deck(source, error)
+    if (allocated(error)) return
+    if (mech%deck%mech%drive_dyad > 0 .and. args%balance_method /= balance_full) then
+      call fatal_error(error, exit_usage, source%path//": &assur: balance --method "// &
+        trim(balance_method_names(args%balance_method))//" needs a crank that turns the mechanism; this deck is "// &
+        "driven by an actuator (drive_dyad)")
+      return
+    end if
+    call assur_balance(mech%deck, args%balance_method, args%fraction, overrides, report, error)
+    if (allocated(error)) then
+      error%message = source%path//": &assur: "//error%message
+      return
+    end if
+    call apply_overrides(source, overrides, balanced)
+    do i = 1, deck_line_count(balanced)
+      call out%put(deck_line(balanced, i))
+    end do
+    ! (each run releases its deck's text)
+    call summary_run(source, before, error)
+    if (allocated(error)) return
+    call summary_run(balanced, after, error)
+    if (allocated(error)) then
+      error%message = "the balanced deck: "//error%message
+      return
+    end if
+    if (args%quiet) return
+    call say(report%data(1:report%length))
+    call compare("max |F_shake|", "F_shake", "N")
+    call compare("max |M_shake|", "M_shake", "N*m")
+    call compare("max |M1|     ", "M1", "N*m")
+    call say("balanced deck's self-check: max residual "//short_number(after%max_residual)//", "// &
+      "M1 against the power balance "//short_number(after%max_mismatch))
+  contains
+    !> The deck run with the shaking columns into a summary (its tallies).
+    subroutine summary_run(deck_source, table, error)
+      type(deck_source_t), intent(inout) :: deck_source
+      type(step_table_t), intent(out) :: table
+      type(error_t), allocatable, intent(out) :: error
+      class(mechanism_t), allocatable :: run_mech
+      type(run_options_t) :: options
+      type(text_buffer_t) :: text
+      call create_mechanism("assur", run_mech)
+      options%format = format_summary
+      options%shaking = .true.
+      call run_mechanism(run_mech, "assur", deck_source, options, table, text, error)
+    end subroutine summary_run
+
+    !> The largest magnitude of column `name` before and after.
+    subroutine compare(label, name, unit)
+      character(*), intent(in) :: label, name, unit
+      real(wp) :: a, b
+      integer :: ca, cb
+      ca = before%column_index(name)
+      cb = after%column_index(name)
+      if (ca == 0 .or. cb == 0) return
+      a = largest(before%tally(ca))
+      b = largest(after%tally(cb))
+      if (a > 0.0_wp) then
+        call say(label//": before "//short_number(a)//" "//unit//", after "//short_number(b)//" "//unit// &
+          " ("//short_number(b / a)//" of before)")
+      else
+        call say(label//": before 0 "//unit//", after "//short_number(b)//" "//unit)
+      end if
+    end subroutine compare
+
+    !> Largest magnitude of a tallied column.
+    real(wp) function largest(tally)
+      type(column_tally_t), intent(in) :: tally
+      largest = max(abs(tally%max), abs(tally%min))
+    end function largest
+
+    !> Lines of `text` on stderr, each prefixed "kinetostat: balance: ".
+    subroutine say(text)
+      character(*), intent(in) :: text
+      integer :: start, k
+      start = 1
+      do k = 1, len(text)
+        if (text(k:k) /= achar(10)) cycle
+        write (error_unit, '(a)') "kinetostat: balance: "//text(start:k - 1)
+        start = k + 1
+      end do
+      if (start <= len(text)) write (error_unit, '(a)') "kinetostat: balance: "//text(start:)
+    end subroutine say
+  end subroutine balance_deck
+
   !> `kinetostat sweep`: the summary CSV of every variant (one header, one row each, in
   !> grid order); warnings one line each, prefixed with the variant's overrides. The first
   !> variant (in grid order) that fails fails the sweep, naming the variant.
@@ -359,7 +492,7 @@ contains
       allocate (sets(0))
     end if
     call run_sweep(source, sets, args%varies, args%part, args%parts, jobs, &
-      stderr_is_terminal() .and. .not. args%quiet, first, results, error)
+      stderr_is_terminal() .and. .not. args%quiet, first, results, error, args%options%shaking)
     if (allocated(error)) return
     do v = 1, size(results)
       name = variant_name(results(v))
@@ -565,8 +698,8 @@ contains
         value = arg(eq + 1:)
       else
         name = arg
-        if (any(name == [character(len=8) :: "-o", "--output", "--format", "--lang", "--set", "--pairs", "--at", &
-                         "--frame", "--vary", "--part", "--jobs"])) then
+        if (any(name == [character(len=10) :: "-o", "--output", "--format", "--lang", "--set", "--pairs", "--at", &
+                         "--frame", "--vary", "--part", "--jobs", "--method", "--fraction"])) then
           if (i == n) then
             call fatal_error(error, exit_usage, name//" needs a value")
             return
@@ -586,6 +719,37 @@ contains
         args%strict = .true.
       case ("--kinematics")
         args%options%kinematics = .true.
+      case ("--shaking")
+        args%options%shaking = .true.
+      case ("--method")
+        args%balance_method = 0
+        do eq = 1, size(balance_method_names)
+          if (value == trim(balance_method_names(eq))) args%balance_method = eq
+        end do
+        if (args%balance_method == 0) then
+          call fatal_error(error, exit_usage, "--method must be full, crank or partial (got '"//value//"')")
+          return
+        end if
+      case ("--fraction")
+        block
+          integer :: ios
+          read (value, *, iostat=ios) args%fraction
+          if (ios /= 0 .or. verify(trim(value), "0123456789.eE+-") /= 0 .or. len_trim(value) == 0) then
+            call fatal_error(error, exit_usage, "--fraction needs a number in [0, 1] (got '"//value//"')")
+            return
+          end if
+          if (.not. (args%fraction >= 0.0_wp .and. args%fraction <= 1.0_wp)) then
+            call fatal_error(error, exit_usage, "--fraction must lie in [0, 1] (got '"//value//"')")
+            return
+          end if
+        end block
+        args%fraction_given = .true.
+      case ("balance")
+        if (i /= 1) then
+          call fatal_error(error, exit_usage, "balance must come first: kinetostat balance DECK [-o FILE] [--method M]")
+          return
+        end if
+        args%balance = .true.
       case ("-o", "--output")
         args%out_file = value
       case ("--format")
@@ -682,6 +846,14 @@ contains
     else if (.not. args%sweep .and. (allocated(args%varies) .or. args%parts > 1 .or. args%jobs > 0)) then
       call fatal_error(error, exit_usage, "--vary, --part and --jobs belong to the sweep subcommand: "// &
         "kinetostat sweep DECK --vary ...")
+    else if (args%balance .and. (args%format_given .or. args%options%shaking .or. args%options%kinematics .or. &
+             allocated(args%options%overrides))) then
+      call fatal_error(error, exit_usage, "balance takes a deck, -o FILE, --method and --fraction only")
+    else if (.not. args%balance .and. (args%fraction_given .or. args%balance_method /= balance_full)) then
+      call fatal_error(error, exit_usage, "--method and --fraction belong to the balance subcommand: "// &
+        "kinetostat balance DECK ...")
+    else if (args%balance .and. args%fraction_given .and. args%balance_method /= 3) then
+      call fatal_error(error, exit_usage, "--fraction belongs to --method partial")
     else if (args%sweep .and. args%format_given .and. args%options%format /= format_summary) then
       call fatal_error(error, exit_usage, "sweep writes the summary format only (--format summary)")
     else if (allocated(args%options%pairs) .and. args%options%format /= format_svg) then

@@ -184,7 +184,7 @@ contains
   !> Run every variant of the grid on the deck. `results(v)` is variant v (the first
   !> --vary varies slowest). `progress` shows a line on stderr (carriage return,
   !> overwritten) after the first second.
-  subroutine run_sweep(source, sets, varies, part, parts, jobs, progress, first, results, error)
+  subroutine run_sweep(source, sets, varies, part, parts, jobs, progress, first, results, error, shaking)
     !> The deck as read.
     type(deck_source_t), intent(in) :: source
     !> The --set overrides (applied before every --vary).
@@ -204,11 +204,16 @@ contains
     type(variant_result_t), allocatable, intent(out) :: results(:)
     !> Deck-level error (no group, unknown mechanism, grid too large).
     type(error_t), allocatable, intent(out) :: error
+    !> Whether each variant adds the shaking columns (--shaking) to its summary.
+    logical, intent(in), optional :: shaking
     character(len=:), allocatable :: group
     class(mechanism_t), allocatable :: probe
+    logical :: with_shaking
     integer :: n, v, done, last
     integer(int64) :: start, rate
     logical :: shown
+    with_shaking = .false.
+    if (present(shaking)) with_shaking = shaking
     call read_group_name(source, group, error)
     if (allocated(error)) return
     call create_mechanism(group, probe)
@@ -229,14 +234,14 @@ contains
       results(v - first + 1)%overrides = variant_overrides(sets, varies, v)
     end do
     if (jobs > 1 .and. size(results) > 1) then
-      call run_in_children(source, group, min(jobs, size(results)), results)
+      call run_in_children(source, group, min(jobs, size(results)), results, with_shaking)
       return
     end if
     done = 0
     shown = .false.
     call system_clock(start, rate)
     do v = 1, size(results)
-      call run_variant(source, group, results(v))
+      call run_variant(source, group, results(v), with_shaking)
       done = done + 1
       if (progress) call show_progress(done, size(results), start, rate, shown)
     end do
@@ -246,13 +251,15 @@ contains
   !> The variants in `jobs` child processes, each a contiguous block, its results returned
   !> through a temporary file. A block whose child could not be started or did not return
   !> its results is run here instead, so the results are always complete and in grid order.
-  subroutine run_in_children(source, group, jobs, results)
+  subroutine run_in_children(source, group, jobs, results, shaking)
     type(deck_source_t), intent(in) :: source
     character(*), intent(in) :: group
     !> Number of child processes (2 .. size(results)).
     integer, intent(in) :: jobs
     !> One result per variant (overrides set), filled here.
     type(variant_result_t), intent(inout) :: results(:)
+    !> Whether the variants add the shaking columns.
+    logical, intent(in) :: shaking
     integer :: pids(jobs), j, lo, hi, v, owner, n
     logical :: ok
     n = size(results)
@@ -264,7 +271,7 @@ contains
       if (pids(j) == 0) then
         !$ call omp_set_num_threads(1)
         do v = lo, hi
-          call run_variant(source, group, results(v))
+          call run_variant(source, group, results(v), shaking)
         end do
         call save_block(block_file(owner, j), results(lo:hi), ok)
         call exit_now(merge(0, 1, ok))
@@ -280,7 +287,7 @@ contains
       call remove_file(block_file(owner, j))
       if (ok) cycle
       do v = lo, hi
-        call run_variant(source, group, results(v))
+        call run_variant(source, group, results(v), shaking)
       end do
     end do
   contains
@@ -399,10 +406,12 @@ contains
   end function variant_overrides
 
   !> One variant: the deck with its overrides through the one run pipeline.
-  subroutine run_variant(source, group, result)
+  subroutine run_variant(source, group, result, shaking)
     type(deck_source_t), intent(in) :: source
     character(*), intent(in) :: group
     type(variant_result_t), intent(inout) :: result
+    !> Whether to add the shaking columns (--shaking).
+    logical, intent(in) :: shaking
     type(deck_source_t) :: patched
     class(mechanism_t), allocatable :: mech
     type(run_options_t) :: options
@@ -412,6 +421,7 @@ contains
     call apply_overrides(source, result%overrides, patched)
     call create_mechanism(group, mech)
     options%format = format_summary
+    options%shaking = shaking
     options%overrides = result%overrides
     call run_mechanism(mech, group, patched, options, table, out, result%error)
     if (allocated(result%error)) return

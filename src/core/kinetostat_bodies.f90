@@ -7,7 +7,7 @@ module kinetostat_bodies
   use kinetostat_kinds, only: wp
   implicit none
   private
-  public :: body_t, mass_model_t
+  public :: body_t, mass_model_t, frame_pair_t
 
   !> One moving link.
   type :: body_t
@@ -22,6 +22,20 @@ module kinetostat_bodies
     real(wp) :: inertia = 0.0_wp
   end type body_t
 
+  !> A pair of a moving link with the frame: the force the frame exerts on the link, where it
+  !> acts and the pair's reaction moment (the frame takes the opposite of both).
+  type :: frame_pair_t
+    !> Force name as in the component columns <force>_x, <force>_y ("F16"): the force on the
+    !> moving link from the frame.
+    character(len=:), allocatable :: force
+    !> Point it acts at, as in the columns x_<point>, y_<point> ("A"); "" when the table does
+    !> not give its line of action (the frame's moment is then not reported).
+    character(len=:), allocatable :: point
+    !> Column of the pair's reaction moment on the link about that point (a prismatic pair's
+    !> "F30M"); "" when the pair transmits none.
+    character(len=:), allocatable :: moment
+  end type frame_pair_t
+
   !> The moving links of a mechanism and the gravity acting on them.
   type :: mass_model_t
     !> Whether the mechanism has one (linkages do; gears and cams do not).
@@ -30,9 +44,17 @@ module kinetostat_bodies
     type(body_t), allocatable :: bodies(:)
     !> Gravity vector in the frame of the kinematics columns, m/s^2.
     real(wp) :: gravity(2) = 0.0_wp
+    !> The pairs with the frame (for the total force and moment on the frame); none listed:
+    !> the frame's total is not reported.
+    type(frame_pair_t), allocatable :: frame_pairs(:)
+    !> Column of the driving moment on the crank ("M1"), whose reaction acts on the motor's
+    !> housing on the frame; "" when the drive is internal (an actuator between two links).
+    character(len=:), allocatable :: drive
   contains
     !> Append a link.
     procedure :: add
+    !> Append a pair with the frame.
+    procedure :: add_frame_pair
   end type mass_model_t
 
 contains
@@ -58,5 +80,24 @@ contains
     call move_alloc(grown, self%bodies)
     self%available = .true.
   end subroutine add
+
+  !> Append a pair with the frame (see frame_pair_t).
+  pure subroutine add_frame_pair(self, force, point, moment)
+    class(mass_model_t), intent(inout) :: self
+    !> Force name ("F16"): columns <force>_x, <force>_y, the force on the link from the frame.
+    character(*), intent(in) :: force
+    !> Point of action ("A"; "" when unknown).
+    character(*), intent(in) :: point
+    !> Column of the pair's reaction moment about the point ("" for none).
+    character(*), intent(in) :: moment
+    type(frame_pair_t), allocatable :: grown(:)
+    integer :: n
+    if (.not. allocated(self%frame_pairs)) allocate (self%frame_pairs(0))
+    n = size(self%frame_pairs)
+    allocate (grown(n + 1))
+    grown(1:n) = self%frame_pairs
+    grown(n + 1) = frame_pair_t(force, point, moment)
+    call move_alloc(grown, self%frame_pairs)
+  end subroutine add_frame_pair
 
 end module kinetostat_bodies

@@ -56,6 +56,10 @@ contains
       text = "НАИБ. РАСХОЖДЕНИЕ N: ФОРМУЛА И РЕШЕНИЕ СИСТЕМЫ 3X3"
     case ("SUMMARY")
       text = "СВОДКА"
+    case ("SHAKING FORCE AND MOMENT, FORCE AND MOMENT ON THE FRAME (MOMENTS ABOUT THE ORIGIN)")
+      text = "ГЛАВНЫЙ ВЕКТОР И ГЛАВНЫЙ МОМЕНТ СИЛ "// &
+        "ИНЕРЦИИ, СИЛА И МОМЕНТ НА СТОЙКУ "// &
+        "(МОМЕНТЫ ОТНОСИТЕЛЬНО НАЧАЛА КООРДИНАТ)"
     case ("MAX")
       text = "НАИБ"
     case ("MIN")

@@ -20,8 +20,10 @@ module kinetostat_run
   use kinetostat_labels, only: lang_en
   use kinetostat_override, only: override_t, mark_overrides
   use kinetostat_summary, only: coarse_step_warning, summary_header, summary_row, tally_rows
-  use kinetostat_table_writer, only: write_table_head, write_table_rows, write_table_tail
+  use kinetostat_table_writer, only: write_table_head, write_table_rows, write_table_tail, write_shaking_rows
   use kinetostat_spool, only: spool_t
+  use kinetostat_bodies, only: mass_model_t
+  use kinetostat_shaking, only: add_shaking
   implicit none
   private
   public :: run_options_t, run_mechanism, guard_finite, progress_i, block_rows
@@ -68,6 +70,9 @@ module kinetostat_run
     logical :: kinematics = .false.
     !> Pair forces also in the moving axes of the link each acts on (--frame link).
     logical :: link_frame = .false.
+    !> Add the shaking force and moment and the total force and moment on the frame
+    !> (--shaking; kinetostat_shaking).
+    logical :: shaking = .false.
     !> SVG: the pair forces to draw, comma-separated ("" for all).
     character(len=:), allocatable :: pairs
     !> SVG: draw the mechanism at this row (0: the sheet of hodographs and diagrams).
@@ -127,18 +132,32 @@ contains
     procedure(progress_i), optional :: progress
     type(text_buffer_t) :: later
     type(spool_t) :: later_spool
+    !> The legacy table's shaking block (--shaking), printed after the layout's sections.
+    type(text_buffer_t) :: shaking
+    type(spool_t) :: shaking_spool
     !> Where the writer is in the lines before the rows (the INPUT DATA echo).
     type(echo_cursor_t) :: head
+    !> The moving links and frame pairs (--shaking).
+    type(mass_model_t) :: model
     integer :: first, rows
 
     call mech%read_deck(source, error)
     if (allocated(error)) return
+    if (options%shaking) then
+      call mech%mass_model(model)
+      if (.not. model%available) then
+        call fatal_error(error, exit_usage, "--shaking: only linkage mechanisms (pr3207, pr3050, sixbar, assur) "// &
+          "report the shaking force; "//source%path//" is &"//group)
+        return
+      end if
+    end if
     call release_deck_text(source)
     table%mechanism = group
     table%deck = source%path
     table%row_name = "step"
     table%driver = "M1"
-    table%kinematics_wanted = options%kinematics .or. options%link_frame .or. options%format == format_svg
+    table%kinematics_wanted = options%kinematics .or. options%link_frame .or. options%format == format_svg &
+                              .or. options%shaking
     rows = block_rows
     if (options%block_rows > 0) rows = options%block_rows
     head%chunk = options%echo_chunk
@@ -157,6 +176,7 @@ contains
     end do
     if (allocated(error) .and. present(spool)) call spool%discard()
     if (allocated(error)) call later_spool%discard()
+    if (allocated(error)) call shaking_spool%discard()
   contains
     !> Solve, check, tally and write the next block.
     subroutine run_block(error)
@@ -167,6 +187,10 @@ contains
       ! a mechanism without blocks (gears) gives all its rows at once
       if (table%total_rows == 0) table%total_rows = table%row_count()
       call table%finish_columns()
+      if (options%shaking) then
+        call add_shaking(table, model, error)
+        if (allocated(error)) return
+      end if
       call guard_rows(table, error)
       if (allocated(error)) return
       if (table%first_block()) then
@@ -206,12 +230,16 @@ contains
         if (allocated(error)) return
       case default
         call write_table_rows(mech, table, options%lang, out, later)
+        if (options%shaking) call write_shaking_rows(table, options%lang, shaking)
         if (table%last_block()) then
           if (present(spool)) then
             call spool%absorb(out, later_spool, later, error)
             if (allocated(error)) return
-          else if (later%length > 0) then
-            call out%append(later%data(1:later%length))
+            call spool%absorb(out, shaking_spool, shaking, error)
+            if (allocated(error)) return
+          else
+            if (later%length > 0) call out%append(later%data(1:later%length))
+            if (shaking%length > 0) call out%append(shaking%data(1:shaking%length))
           end if
           call write_table_tail(table, options%lang, out)
         end if
@@ -220,6 +248,8 @@ contains
       call spool%drain(out, error)
       if (allocated(error)) return
       call later_spool%drain(later, error)
+      if (allocated(error)) return
+      call shaking_spool%drain(shaking, error)
     end subroutine run_block
 
     !> Before the first rows: --frame link's check, the --set marks, the table's head.

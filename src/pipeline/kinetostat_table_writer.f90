@@ -7,16 +7,17 @@ module kinetostat_table_writer
   use kinetostat_step_table, only: step_table_t, echo_record_t, echo_cursor_t, echo_real_kind, &
     echo_int_kind, echo_logical_kind, echo_array_kind, echo_text_kind, echo_heading_kind, echo_line_kind, col_force
   use kinetostat_format, only: echo_number, echo_array_number, footer_number, limit_number, pad_right, put_fixed, &
-    fixed_field
+    fixed_field, display_width
   use kinetostat_labels, only: label, lang_ru
   use kinetostat_summary, only: column_stats_t, column_stats, drive_work
   use kinetostat_text, only: upper
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_row_blocks, only: put_row_blocks_two
+  use kinetostat_shaking, only: shaking_column_names
   implicit none
   private
-  public :: write_table_head, write_table_rows, write_table_tail
+  public :: write_table_head, write_table_rows, write_table_tail, write_shaking_rows
   public :: put_heading, selfcheck_verdict, put_two_line_step, value_line
 
   !> Display width of the name part of an INPUT DATA line ("   NAME ... =" puts "=" in column 20).
@@ -56,6 +57,56 @@ contains
       call mech%write_results(table, lang, first, last, part, later_part)
     end subroutine put_rows
   end subroutine write_table_rows
+
+  !> The shaking block of the legacy table (--shaking), the rows now in `table`: with the
+  !> run's first block its heading and the column and unit lines; per step the input
+  !> coordinate and the shaking and frame columns the table has (12 wide, 2 decimals).
+  pure subroutine write_shaking_rows(table, lang, out)
+    !> Finite results: the rows of one block of the run, with the shaking columns.
+    type(step_table_t), intent(in) :: table
+    !> lang_en or lang_ru.
+    integer, intent(in) :: lang
+    !> Where the lines go.
+    type(text_buffer_t), intent(inout) :: out
+    integer, allocatable :: cols(:)
+    integer :: i, c, k
+    allocate (cols(0))
+    do i = 1, size(shaking_column_names)
+      c = table%column_index(trim(shaking_column_names(i)))
+      if (c > 0) cols = [cols, c]
+    end do
+    if (size(cols) == 0 .or. table%input_column == 0) return
+    if (table%first_block()) then
+      call put_heading(out, label("SHAKING FORCE AND MOMENT, FORCE AND MOMENT ON THE FRAME (MOMENTS ABOUT THE ORIGIN)", &
+        lang))
+      call out%put("")
+      call out%append(adjustr(pad_right(upper(table%columns(table%input_column)%name), 9)))
+      do i = 1, size(cols)
+        call out%append(adjustr(pad_right(upper(table%columns(cols(i))%name), 12)))
+      end do
+      call out%end_line()
+      call out%append(right_text(label(table%columns(table%input_column)%unit, lang), 9))
+      do i = 1, size(cols)
+        call out%append(right_text(label(table%columns(cols(i))%unit, lang), 12))
+      end do
+      call out%end_line()
+    end if
+    do k = 1, table%row_count()
+      call put_fixed(out, table%rows(table%input_column, k), 9, 2)
+      do i = 1, size(cols)
+        call put_fixed(out, table%rows(cols(i), k), 12, 2)
+      end do
+      call out%end_line()
+    end do
+  contains
+    !> `text` right-adjusted in `width` screen columns (UTF-8 units take fewer columns than bytes).
+    pure function right_text(text, width) result(field)
+      character(*), intent(in) :: text
+      integer, intent(in) :: width
+      character(len=:), allocatable :: field
+      field = repeat(" ", max(0, width - display_width(text)))//text
+    end function right_text
+  end subroutine write_shaking_rows
 
   !> The legacy table's lines before the rows: title, deck, INPUT DATA, the RESULTS heading.
   !> With `cursor`, a part at a time: up to a chunk of an echoed array's values, then it
@@ -278,6 +329,13 @@ contains
       if (table%columns(c)%kind /= col_force .or. .not. table%columns(c)%csv) cycle
       s = column_stats(table, c)
       call out%put(at_line(table%columns(c)%name, "MAX", s%max, c, s%max_at))
+    end do
+    ! the shaking and frame moments (--shaking)
+    do c = 1, size(table%columns)
+      if (table%columns(c)%name /= "M_shake" .and. table%columns(c)%name /= "M_frame") cycle
+      s = column_stats(table, c)
+      call out%put(at_line(table%columns(c)%name, "MAX", s%max, c, s%max_at))
+      call out%put(at_line(table%columns(c)%name, "MIN", s%min, c, s%min_at))
     end do
     d = 0
     if (allocated(table%driver)) d = table%column_index(table%driver)

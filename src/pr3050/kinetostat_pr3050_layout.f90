@@ -374,6 +374,10 @@ contains
       call model%add("2", "S2", p%m2, p%j2)
       call model%add("3", "S3", p%m3, p%j3)
       model%gravity = p%g * [cos(p%gamma), sin(p%gamma)]
+      ! the oil force drives between cylinder and rod: no reaction on the frame
+      call model%add_frame_pair("F14", "A", "")
+      call model%add_frame_pair("F34", "C", "")
+      model%drive = ""
     end associate
   end subroutine mass_model
 

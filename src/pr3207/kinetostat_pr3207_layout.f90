@@ -268,6 +268,11 @@ contains
     call model%add("3", "S3", self%deck%p%m3, self%deck%p%j3)
     call model%add("5", "S5", self%deck%p%m5, 0.0_wp)
     model%gravity = [self%deck%p%g, 0.0_wp]
+    ! the ram's guide gives no line of action (PR 3207 computes no guide moment)
+    call model%add_frame_pair("F16", "A", "")
+    call model%add_frame_pair("F36", "C", "")
+    call model%add_frame_pair("F56", "", "")
+    model%drive = "M1"
   end subroutine mass_model
 
   !> The forces of row `k` on its drawing (--format svg --at K): the pair forces at their

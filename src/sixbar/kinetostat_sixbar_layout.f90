@@ -380,6 +380,11 @@ contains
       call model%add("4", "S4", p%m4, p%j4)
       call model%add("5", "S5", p%m5, 0.0_wp)
       model%gravity = p%g * sixbar_down1(p)
+      ! the slider's guide force passes through H (every other force on it does)
+      call model%add_frame_pair("F16", "A", "")
+      call model%add_frame_pair("F36", "D", "")
+      call model%add_frame_pair("F56", "H", "")
+      model%drive = "M1"
     end associate
   end subroutine mass_model
 

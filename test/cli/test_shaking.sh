@@ -1,0 +1,48 @@
+# Shaking force and moment (--shaking) and counterweight balancing (kinetostat balance):
+# tools/shaking_check.py re-computes them (differences of the centre of mass and of the
+# angular momentum, the frame reactions, d'Alembert, the balanced decks); then the errors.
+while IFS= read -r line; do
+  case "$line" in
+    "ok "*) pass ;;
+    "FAIL "*) fail "shaking" "${line#FAIL }" ;;
+    *) fail "shaking" "unexpected line from tools/shaking_check.py: $line" ;;
+  esac
+done < <(python3 "$root/tools/shaking_check.py" "$KINETOSTAT" 2>&1)
+
+# the option leaves the default outputs alone and adds its columns at the end
+run_ks "$root/data/assur_fourbar.nml" --format csv --shaking
+if head -1 "$out" | grep -q ',M1,F_shake,F_shakeG,F_shake_x,F_shake_y,M_shake,F_frame_x,F_frame_y,M_frame$'; then pass
+else fail "shaking-columns" "header: $(head -1 "$out")"; fi
+run_ks "$root/data/assur_fourbar.nml" --format summary --shaking
+if head -1 "$out" | grep -q 'F_shake_max'; then pass; else fail "shaking-summary" "header: $(head -c 300 "$out")"; fi
+
+# usage and input errors: one line, the right exit code, no output file
+balance_error() {
+  local name="$1" code="$2" pattern="$3"; shift 3
+  local target="$cli_tmp/balanced.nml"
+  rm -f "$target" "$target".tmp.*
+  run_ks "$@" -o "$target"
+  if [ "$rc" -ne "$code" ]; then fail "$name" "exit $rc, expected $code: $(head -c 300 "$err")"; return; fi
+  if ! head -1 "$err" | grep -Eq "^kinetostat: error: .*$pattern"; then fail "$name" "stderr: $(head -c 300 "$err")"; return; fi
+  if ls "$target"* >/dev/null 2>&1; then fail "$name" "output file left behind"; return; fi
+  pass
+}
+balance_error "balance-fraction-range" 1 "--fraction must lie in \[0, 1\]" balance "$root/data/assur_slider_crank.nml" --method partial --fraction 1.5
+balance_error "balance-fraction-negative" 1 "--fraction must lie in \[0, 1\]" balance "$root/data/assur_slider_crank.nml" --method partial --fraction=-0.1
+balance_error "balance-fraction-text" 1 "--fraction needs a number" balance "$root/data/assur_slider_crank.nml" --method partial --fraction half
+balance_error "balance-fraction-without-partial" 1 "--fraction belongs to --method partial" balance "$root/data/assur_slider_crank.nml" --fraction 0.5
+balance_error "balance-method" 1 "--method must be full, crank or partial" balance "$root/data/assur_fourbar.nml" --method total
+balance_error "balance-no-crank" 1 "needs a crank that turns the mechanism" balance "$root/data/assur_pr3050.nml" --method crank
+balance_error "balance-not-assur" 2 "balance works on &assur decks" balance "$root/data/pr3207.nml"
+balance_error "balance-gears" 2 "balance works on &assur decks" balance "$root/data/gears_reducer.nml"
+balance_error "balance-full-impossible" 3 "full balance is impossible.*--method partial" balance "$root/data/assur_slider_crank.nml"
+balance_error "balance-partial-not-slider-crank" 1 "--method partial balances a slider-crank" balance "$root/data/assur_fourbar.nml" --method partial
+balance_error "shaking-gears" 1 "--shaking: only linkage mechanisms" "$root/data/gears_reducer.nml" --shaking
+balance_error "method-without-balance" 1 "belong to the balance subcommand" "$root/data/assur_fourbar.nml" --method crank
+
+# a sweep with --shaking: the summary columns of the shaking force, the same in 1 and 2 processes
+run_ks sweep "$root/data/assur_fourbar.nml" --vary crank_m=0.5:1.5:3 --shaking --jobs 1
+cp "$out" "$cli_tmp/sweep_one"
+run_ks sweep "$root/data/assur_fourbar.nml" --vary crank_m=0.5:1.5:3 --shaking --jobs 2
+if [ "$rc" -eq 0 ] && head -1 "$out" | grep -q 'F_shake_max' && cmp -s "$out" "$cli_tmp/sweep_one"; then pass
+else fail "shaking-sweep" "exit $rc; header $(head -c 200 "$out")"; fi
