@@ -21,13 +21,14 @@ program kinetostat_tests
   use test_blocks, only: run_blocks_tests
   use test_records, only: run_records_tests
   use test_linkage, only: run_linkage_tests
+  use test_dynamics, only: run_dynamics_tests
   use test_shaking, only: run_shaking_tests
   use, intrinsic :: iso_fortran_env, only: error_unit
   implicit none
   !> Suite names, in the order they run.
   character(*), parameter :: suite_names(*) = [character(len=11) :: &
     "foundation", "pr3207", "pr3050", "sixbar", "gears", "cam", "assur", "assur_ext", "friction", "io", &
-    "kinematics", "svg", "decimal", "lapack", "blocks", "records", "shaking", "linkage"]
+    "kinematics", "svg", "decimal", "lapack", "blocks", "records", "shaking", "dynamics", "linkage"]
   type(test_counts_t) :: t
   logical :: selected(size(suite_names))
   integer :: i
@@ -80,6 +81,7 @@ contains
     case ("foundation"); call run_foundation_tests(t)
     case ("pr3207"); call run_pr3207_tests(t)
     case ("linkage"); call run_linkage_tests(t)
+    case ("dynamics"); call run_dynamics_tests(t)
     case ("pr3050"); call run_pr3050_tests(t)
     case ("sixbar"); call run_sixbar_tests(t)
     case ("gears"); call run_gears_tests(t)

@@ -23,12 +23,14 @@ module kinetostat_assur_deck
   use kinetostat_assur, only: assur_mech_t, assur_link_t, assur_dyad_t, assur_force_t, link_a, link_b, &
     output_pair_of, assur_extreme, assur_kinematics, link_position
   use kinetostat_assur_friction, only: pair_friction_t, friction_active
+  use kinetostat_dynamics, only: dynamics_steady
+  use kinetostat_dynamics_deck, only: dynamics_deck_t, read_dynamics_settings, require_one_turn
   implicit none
   private
   public :: assur_deck_t, read_assur_deck, write_assur_template, assur_window
   public :: load_schedule_t, load_constant, load_window, load_column, load_table
   public :: assur_phi1_deg, assur_omega1_steps, assur_omega1, assur_eps1, assur_motion_sign
-  public :: assur_load_value, assur_force_values, assur_moment_values, assur_load_steps
+  public :: assur_load_value, assur_force_values, assur_moment_values, assur_load_steps, table_value
   public :: max_dyads, max_forces, max_moments
 
   !> Capacity of the dyad list.
@@ -212,6 +214,8 @@ module kinetostat_assur_deck
     type(load_schedule_t), allocatable :: force_load(:)
     !> How each external moment (N*m) is given per step (see assur_moment_values).
     type(load_schedule_t), allocatable :: moment_load(:)
+    !> Machine dynamics settings (dynamics, delta, j_rotor, j_flywheel).
+    type(dynamics_deck_t) :: dyn
     !> Reporting frame angle of each pair (dyad pairs, then crank pin), rad.
     real(wp), allocatable :: pair_frame(:)
     !> Column name stem of each pair ("F21").
@@ -318,6 +322,9 @@ contains
     !> frame_id and crank_id as integers.
     integer :: frame_no, crank_no, nd, nf, nm, n_omega, n_eps, n_values, k, d, i
     real(wp) :: crank_at(2), crank_m, crank_j, crank_s(2), omega1, g, gravity_angle, phi_start, dphi
+    !> Machine dynamics variables (see kinetostat_dynamics_deck).
+    real(wp) :: delta, j_rotor, j_flywheel
+    character(len=32) :: dynamics
     !> Friction coefficient and journal radius (m) of the crank's pivot A.
     real(wp) :: crank_f, crank_r
     real(wp), allocatable :: omega1_step(:), eps1_step(:), step_values(:)
@@ -336,10 +343,11 @@ contains
     namelist /assur/ title, frame_id, crank_id, crank_at, crank_m, crank_j, crank_s, omega1, &
       omega1_step, eps1_step, g, gravity_angle, phi_start, dphi, n, dyad, force, moment, &
       step_values, angles_signed, components, drive_dyad, drive_pair, output_link, phi1, start_at, crank_f, crank_r, &
-      coordinates, phi_ref
+      coordinates, phi_ref, dynamics, delta, j_rotor, j_flywheel
 
     ctx%path = source%path
     ctx%group = group_name
+    dynamics = ""; delta = unset_real; j_rotor = unset_real; j_flywheel = unset_real
     title = ""
     frame_id = 0.0_wp; crank_id = 1.0_wp; n = unset_real
     drive_dyad = unset_real; drive_pair = unset_real
@@ -573,6 +581,31 @@ contains
     deck%components = components
     deck%frame_id = frame_no
     deck%crank_id = crank_no
+
+    ! ---- machine dynamics: reduced to the crank; a steady cycle over one turn, loads at any angle
+    if (len_trim(dynamics) > 0 .and. trim(adjustl(dynamics)) /= "none") then
+      call require_rule(ctx, "dynamics", deck%mech%drive_dyad == 0, "the dynamics stage reduces to a crank "// &
+        "input: not with a linear actuator (drive_dyad)", error)
+      if (allocated(error)) return
+      call require_rule(ctx, "dynamics", .not. deck%prescribed, "omega1_step/eps1_step prescribe the motion; "// &
+        "the dynamics stage needs omega1 (the mean speed)", error)
+      if (allocated(error)) return
+    end if
+    call read_dynamics_settings(ctx, dynamics, delta, j_rotor, j_flywheel, omega1, deck%dyn, error)
+    if (allocated(error)) return
+    if (deck%dyn%mode >= dynamics_steady) then
+      call require_rule(ctx, "dynamics", .not. deck%friction_on, "a steady cycle with friction in the pairs is "// &
+        "not supported (M_red would depend on the reactions): set the friction coefficients to 0", error)
+      if (allocated(error)) return
+      call require_rule(ctx, "phi1", .not. allocated(deck%phi_list), "a steady cycle needs phi_start and dphi "// &
+        "over one turn, not a list of angles", error)
+      if (allocated(error)) return
+      call require_one_turn(ctx, deck%dphi, deck%n, error); if (allocated(error)) return
+      call require_rule(ctx, "step_values", .not. (any(deck%force_load%kind == load_column) .or. &
+        any(deck%moment_load%kind == load_column)), "a steady cycle needs every load at any crank angle: "// &
+        "give it as a constant, a window or a table, not per step", error)
+      if (allocated(error)) return
+    end if
   end subroutine read_assur_deck
 
   !> The required variables the deck lacks, in the order the checks of read_assur_deck meet

@@ -22,6 +22,11 @@ module kinetostat_assur_layout
   use kinetostat_assur, only: assur_step_t, assur_step, assur_kinematics, link_a, link_b, crank_pin_index, pair_index
   use kinetostat_drawing, only: drawing_t, force_load
   use kinetostat_bodies, only: mass_model_t
+  use kinetostat_selfcheck, only: link_balance_t, balance_add_couple
+  use kinetostat_dynamics, only: cycle_t, motion_t, dynamics_none, dynamics_steady
+  use kinetostat_dynamics_table, only: echo_dynamics, add_dynamics_columns, put_dynamics_values, &
+    put_dynamics_figures, note_drive_deviation, note_constant_speed_cost
+  use kinetostat_assur_dynamics, only: assur_source_t, assur_cycle, assur_motion
   use kinetostat_assur_friction, only: friction_step_t, assur_friction_step
   use kinetostat_assur_deck, only: assur_deck_t, read_assur_deck, write_assur_template, load_schedule_t, load_constant, &
     load_column, assur_phi1_deg, assur_omega1_steps, assur_eps1, assur_motion_sign, assur_load_value, &
@@ -66,6 +71,10 @@ module kinetostat_assur_layout
   type, extends(mechanism_t) :: assur_mechanism_t
     !> The validated deck.
     type(assur_deck_t) :: deck
+    !> The deck as the source of the reduced quantities (with a dynamics stage).
+    type(assur_source_t) :: source
+    !> The steady cycle (dynamics = 'steady' or 'given').
+    type(cycle_t) :: cycle
   contains
     procedure :: read_deck
     procedure :: solve
@@ -93,6 +102,9 @@ contains
     type(deck_source_t), intent(in) :: source
     type(error_t), allocatable, intent(out) :: error
     call read_assur_deck(source, self%deck, error)
+    if (allocated(error) .or. self%deck%dyn%mode == dynamics_none) return
+    self%source%deck = self%deck
+    if (self%deck%dyn%mode >= dynamics_steady) call assur_cycle(self%deck, source%path, self%cycle, error)
   end subroutine read_deck
 
   !> The topology for a drawing: every moving link joins the joints J<pair> of its pairs (a
@@ -198,7 +210,8 @@ contains
     type(error_t), allocatable, intent(out) :: error
     type(friction_step_t), allocatable :: fsteps(:)
     character(len=24), allocatable :: names(:)
-    real(wp), allocatable :: residual(:), mismatch(:), motion(:, :), forces(:, :, :), turn(:, :), omega1(:)
+    real(wp), allocatable :: residual(:), mismatch(:), motion(:, :), forces(:, :, :), turn(:, :), omega1(:), m1(:)
+    type(motion_t), allocatable :: motions(:)
     integer, allocatable :: slots(:)
     real(wp) :: crank
     integer :: k, c, ip, nv, nc, np, first, last, nrow, first_bad
@@ -247,6 +260,8 @@ contains
         call table%add_column(trim(names(size(names) - 1)), "", col_flag)
         call table%add_column(trim(names(size(names))), "", col_ratio)
       end if
+      call add_dynamics_columns(table, self%deck%dyn%mode)
+      call put_dynamics_figures(table, self%deck%dyn%mode, self%cycle, self%deck%dyn%delta)
       table%input_column = 1
       do k = 1, size(self%deck%force_load)
         call note_load(self%deck, self%deck%force_load(k), table)
@@ -266,7 +281,8 @@ contains
     turn = pair_turns(self%deck)
     omega1 = assur_omega1_steps(self%deck, first, last)
     call table%allocate_rows(nrow)
-    allocate (residual(nrow), mismatch(nrow), fsteps(merge(nrow, 0, self%deck%friction_on)))
+    allocate (residual(nrow), mismatch(nrow), fsteps(merge(nrow, 0, self%deck%friction_on)), m1(nrow))
+    allocate (motions(merge(nrow, 0, self%deck%dyn%mode /= dynamics_none)))
     allocate (motion(3, merge(nrow, 0, kinematics)), forces(2, np, merge(nrow, 0, kinematics)))
     ! steps in parallel with OpenMP threads; the error reported is the first step's in step order
     ! (that step is solved again alone for its message)
@@ -281,7 +297,16 @@ contains
       !$omp do schedule(dynamic, 64) reduction(min:first_bad)
       do kk = first, last
         i = kk - first + 1
-        call solve_one(self%deck, kk, omega1(i), step, fs, step_error, loads)
+        if (self%deck%dyn%mode >= dynamics_steady) then
+          ! the true motion, the flywheel's and the rotor's inertia moment on the crank
+          motions(i) = assur_motion(self%source, self%cycle, kk)
+          call solve_one(self%deck, kk, motions(i)%omega, step, fs, step_error, loads, motions(i)%eps, &
+                         -(self%cycle%j_flywheel + self%cycle%j_rotor) * motions(i)%eps)
+        else
+          if (self%deck%dyn%mode /= dynamics_none) motions(i) = assur_motion(self%source, self%cycle, kk)
+          call solve_one(self%deck, kk, omega1(i), step, fs, step_error, loads)
+        end if
+        m1(i) = step%m1
         if (allocated(step_error)) then
           first_bad = min(first_bad, kk)
           cycle
@@ -320,6 +345,14 @@ contains
         call put_kinematics(table, k, self%deck, motion(:, k), forces(:, :, k), slots)
       end do
     end if
+    if (self%deck%dyn%mode /= dynamics_none) then
+      do k = 1, nrow
+        call put_dynamics_values(table, k, self%deck%dyn%mode, motions(k))
+      end do
+      if (self%deck%dyn%mode >= dynamics_steady) call constant_speed_cost(self%deck, first, last, omega1, table)
+      if (self%deck%dyn%mode >= dynamics_steady) call note_drive_deviation(table, maxval(abs(m1 - self%cycle%m_d)), &
+        max(abs(self%cycle%m_d), maxval(abs(motions%m)), maxval(abs((self%cycle%j_flywheel + motions%j) * motions%eps))))
+    end if
     if (self%deck%mech%drive_dyad == 0) then
       call table%set_selfcheck(maxval(residual), maxval(mismatch), "M1")
     else
@@ -334,6 +367,34 @@ contains
       if (last == self%deck%n) call friction_summary(self%deck, table%carry(1), table%carry(2), table)
     end if
   end subroutine solve
+
+  !> The peaks of the pair forces with the true motion (the table's magnitude columns) against
+  !> those at the constant mean speed (the block's steps solved again at omega1, eps1 = 0).
+  subroutine constant_speed_cost(deck, first, last, omega1, table)
+    type(assur_deck_t), intent(in) :: deck
+    integer, intent(in) :: first, last
+    !> The deck's constant speed per step, rad/s.
+    real(wp), intent(in) :: omega1(:)
+    type(step_table_t), intent(inout) :: table
+    type(assur_step_t) :: step
+    type(friction_step_t) :: fs
+    type(step_loads_t) :: loads
+    type(error_t), allocatable :: step_error
+    real(wp) :: peak_const(size(deck%pair_name))
+    integer :: kk, ip, c
+    peak_const = 0.0_wp
+    do kk = first, last
+      call solve_one(deck, kk, omega1(kk - first + 1), step, fs, step_error, loads)
+      if (allocated(step_error)) return
+      do ip = 1, size(deck%pair_name)
+        peak_const(ip) = max(peak_const(ip), magnitude(step%f(:, ip)))
+      end do
+    end do
+    do ip = 1, size(deck%pair_name)
+      c = table%column_index(trim(deck%pair_name(ip)))
+      call note_constant_speed_cost(table, trim(deck%pair_name(ip)), maxval(table%rows(c, :)), peak_const(ip))
+    end do
+  end subroutine constant_speed_cost
 
   !> Number of friction values of a row (friction_csv_columns).
   pure integer function friction_row_size(deck)
@@ -538,7 +599,7 @@ contains
   !> Step `k` of the deck at crank speed `w` (rad/s; assur_omega1_steps): its results, its
   !> friction results (deck%friction_on), its error; `loads` is the caller's workspace for the
   !> step's load values (sized here on first use).
-  pure subroutine solve_one(deck, k, w, step, fstep, step_error, loads)
+  pure subroutine solve_one(deck, k, w, step, fstep, step_error, loads, eps1, m_input)
     !> Validated deck.
     type(assur_deck_t), intent(in) :: deck
     !> Step number.
@@ -553,6 +614,11 @@ contains
     type(error_t), allocatable, intent(out) :: step_error
     !> The force and moment values of the step.
     type(step_loads_t), intent(inout) :: loads
+    !> Crank acceleration of the true motion, rad/s^2 (default: the deck's).
+    real(wp), intent(in), optional :: eps1
+    !> Inertia moment of the flywheel and rotor on the crank, N*m (with eps1).
+    real(wp), intent(in), optional :: m_input
+    type(link_balance_t), allocatable :: extra(:)
     integer :: i
     if (.not. allocated(loads%f)) allocate (loads%f(size(deck%force_load)), loads%m(size(deck%moment_load)))
     do i = 1, size(loads%f)
@@ -561,7 +627,12 @@ contains
     do i = 1, size(loads%m)
       loads%m(i) = assur_load_value(deck, deck%moment_load(i), k)
     end do
-    if (deck%friction_on) then
+    if (present(eps1) .and. present(m_input)) then
+      allocate (extra(0:2 * size(deck%mech%dyads) + 1))
+      call balance_add_couple(extra(1), m_input)
+      call assur_step(deck%mech, assur_phi1_deg(deck, k) * deg_to_rad, w, eps1, loads%f, loads%m, step, step_error, &
+                      extra, m_input, abs(m_input))
+    else if (deck%friction_on) then
       call assur_friction_step(deck%mech, deck%friction, assur_phi1_deg(deck, k) * deg_to_rad, w, &
         assur_eps1(deck, k), assur_motion_sign(w), loads%f, loads%m, step, fstep, step_error)
     else
@@ -1168,6 +1239,7 @@ contains
       call table%echo_int("MOMENT "//int_str(k)//" LINK", deck%mech%links(deck%mech%moment_link(k))%id, "")
       call echo_load(deck, deck%moment_load(k), "N*m", table)
     end do
+    call echo_dynamics(table, deck%dyn)
   end subroutine echo_deck
 
   !> The echo line "  VALUE" of a load: its value at every step (a step_values column as

@@ -74,7 +74,23 @@ contains
       end do
       call out%put("  ],")
     end if
-    if (table%has_selfcheck) then
+    if (allocated(table%dynamics)) then
+      line = '  "dynamics": {'
+      do i = 1, size(table%dynamics)
+        if (i > 1) line = line//", "
+        line = line//json_string(table%dynamics(i)%name)//": "//full_number(table%dynamics(i)%values(1))
+      end do
+      call out%put(line//"},")
+    end if
+    if (table%has_selfcheck .and. table%max_drive_deviation >= 0.0_wp) then
+      call out%put('  "selfcheck": {"max_residual": '//full_number(table%max_residual)// &
+        ', "max_mismatch": '//full_number(table%max_mismatch)//', "driver": '//json_string(table%driver)// &
+        ', "max_drive_deviation": '//full_number(table%max_drive_deviation)// &
+        ', "limit": '//full_number(selfcheck_tolerance)//', "ok": '// &
+        trim(merge("true ", "false", table%max_residual <= selfcheck_tolerance .and. &
+                   table%max_mismatch <= selfcheck_tolerance .and. &
+                   table%max_drive_deviation <= selfcheck_tolerance))//"},")
+    else if (table%has_selfcheck) then
       call out%put('  "selfcheck": {"max_residual": '//full_number(table%max_residual)// &
         ', "max_mismatch": '//full_number(table%max_mismatch)//', "driver": '//json_string(table%driver)// &
         ', "limit": '//full_number(selfcheck_tolerance)//', "ok": '// &

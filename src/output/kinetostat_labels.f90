@@ -92,6 +92,45 @@ contains
     case ("MAX F_drive MISMATCH, POWER BALANCE WITH FRICTION")
       text = "НАИБ. РАСХОЖДЕНИЕ F_drive, БАЛАНС МОЩНОСТЕЙ С "// &
         "ТРЕНИЕМ"
+    ! machine dynamics (the DYNAMICS block and its self-check line)
+    case ("DYNAMICS (REDUCED TO THE INPUT LINK)")
+      text = "ДИНАМИЧЕСКИЙ РАСЧЕТ (ПРИВЕДЕНИЕ К ВХОДНОМУ ЗВЕНУ)"
+    case ("MAX |M1 - M_d|/|M_d| WITH THE TRUE MOTION")
+      text = "НАИБ. |M1 - M_d|/|M_d| ПРИ ИСТИННОМ ДВИЖЕНИИ"
+    case ("M_d")
+      text = "M_d (ДВИЖУЩИЙ МОМЕНТ)"
+    case ("J_flywheel")
+      text = "МАХОВИК J_flywheel"
+    case ("J_flywheel_textbook")
+      text = "МАХОВИК ПО МЕРЦАЛОВУ"
+    case ("textbook_difference")
+      text = "РАЗНИЦА С МЕРЦАЛОВЫМ"
+    case ("J_rotor")
+      text = "J_rotor (РОТОР)"
+    case ("J_red_min")
+      text = "ПРИВЕДЕННЫЙ МОМЕНТ ИНЕРЦИИ НАИМ"
+    case ("J_red_max")
+      text = "ПРИВЕДЕННЫЙ МОМЕНТ ИНЕРЦИИ НАИБ"
+    case ("omega_mean")
+      text = "omega СРЕДНЯЯ"
+    case ("omega_max")
+      text = "omega НАИБ"
+    case ("phi_omega_max")
+      text = "phi ПРИ omega НАИБ"
+    case ("omega_min")
+      text = "omega НАИМ"
+    case ("phi_omega_min")
+      text = "phi ПРИ omega НАИМ"
+    case ("delta")
+      text = "КОЭФФ. НЕРАВНОМЕРНОСТИ delta"
+    case ("delta_asked")
+      text = "delta ЗАДАННЫЙ"
+    case ("period")
+      text = "ПЕРИОД ЦИКЛА"
+    case ("%")
+      text = "%"
+    case ("s")
+      text = "с"
     ! units (ГОСТ symbols, as the 1991 printouts write them)
     case ("J")
       text = "Дж"

@@ -227,6 +227,12 @@ module kinetostat_step_table
     character(len=:), allocatable :: summary_heading
     !> Summary records (real values and lines of text), printed after RESULTS; none by default.
     type(echo_record_t), allocatable :: summary(:)
+    !> The machine dynamics figures of the run (the DYNAMICS block, JSON "dynamics": M_d, the
+    !> flywheel, the speed's extremes, delta); not allocated without a dynamics stage.
+    type(echo_record_t), allocatable :: dynamics(:)
+    !> Largest |M1 - M_d| / |M_d| over the rows with the true motion (negative: no steady
+    !> cycle in the run).
+    real(wp) :: max_drive_deviation = -1.0_wp
     !> The run reports the pair forces in link axes (--frame link; the legacy table prints the
     !> link-axes columns instead of magnitudes and angles).
     logical :: link_frame = .false.
@@ -287,6 +293,7 @@ module kinetostat_step_table
     procedure :: echo_line
     procedure :: summary_real
     procedure :: summary_line
+    procedure :: dynamics_real
   end type step_table_t
 
 contains
@@ -876,5 +883,18 @@ contains
     if (.not. allocated(self%summary)) allocate (self%summary(0))
     self%summary = [self%summary, echo_record_t(kind=echo_line_kind, name=text, unit="")]
   end subroutine summary_line
+
+  !> A figure of the machine dynamics (the DYNAMICS block, JSON "dynamics").
+  pure subroutine dynamics_real(self, name, value, unit)
+    class(step_table_t), intent(inout) :: self
+    !> Name as printed and as the JSON key ("M_d").
+    character(*), intent(in) :: name
+    !> Value.
+    real(wp), intent(in) :: value
+    !> Unit text.
+    character(*), intent(in) :: unit
+    if (.not. allocated(self%dynamics)) allocate (self%dynamics(0))
+    self%dynamics = [self%dynamics, echo_record_t(kind=echo_real_kind, name=name, unit=unit, values=[value])]
+  end subroutine dynamics_real
 
 end module kinetostat_step_table

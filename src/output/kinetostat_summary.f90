@@ -338,6 +338,11 @@ contains
     end do
     call drive_work(table, work, known)
     if (known) line = line//",work_"//table%driver
+    if (allocated(table%dynamics)) then
+      do i = 1, size(table%dynamics)
+        line = line//","//table%dynamics(i)%name
+      end do
+    end if
   end function summary_header
 
   !> Summary CSV row of a run (the columns of `summary_header`): override values as given,
@@ -371,6 +376,11 @@ contains
     end do
     call drive_work(table, work, known)
     if (known) line = line//","//cell_number(work, .false.)
+    if (allocated(table%dynamics)) then
+      do i = 1, size(table%dynamics)
+        line = line//","//cell_number(table%dynamics(i)%values(1), .false.)
+      end do
+    end if
   contains
     pure function at_text(k, x) result(t)
       integer, intent(in) :: k

@@ -35,6 +35,10 @@ module kinetostat_svg_writer
   real(wp), parameter :: chart_max_height = 100.0_wp
   !> Width of the driving-effort chart (the magnitudes chart takes the rest), mm.
   real(wp), parameter :: driver_chart_width = 82.0_wp
+  !> Height of a chart of the machine dynamics, mm.
+  real(wp), parameter :: dynamics_chart_height = 62.0_wp
+  !> Height of the machine dynamics block: its heading and three rows of charts, mm.
+  real(wp), parameter :: dynamics_block_height = 10.0_wp + 3.0_wp * (dynamics_chart_height + gap)
   !> Most numbered points in one hodograph (beyond it every m-th step is numbered).
   integer, parameter :: max_point_labels = 24
   !> Two points nearer than this share one number label ("1,13"), mm.
@@ -83,6 +87,7 @@ contains
     y = 39.0_wp + rows * (panel_h + gap)
     chart_h = min(chart_max_height, max(chart_height, page_height - margin - y - 2.0_wp))
     if (table%input_column > 0) y = y + 2.0_wp + chart_h
+    if (table%column_index("dT") > 0) y = y + dynamics_block_height
     height = max(page_height, y + margin)
 
     call svg_open(out, page_width, height, title//" - "//table%deck, &
@@ -105,6 +110,7 @@ contains
       call put_driver_chart(out, table, margin, y, driver_chart_width, chart_h)
       call put_magnitude_chart(out, table, chosen, margin + driver_chart_width + gap, y, &
         page_width - 2.0_wp * margin - driver_chart_width - gap, chart_h)
+      if (table%column_index("dT") > 0) call put_dynamics_charts(out, table, y + chart_h + gap)
     else
       call out%put(svg_text(margin, 32.0_wp, "Pair forces of every " // table%row_name // " as vectors", &
         'class="heading"'))
@@ -682,6 +688,87 @@ contains
     call out%put(svg_text(x0 + w - 23.0_wp, y0 + h - 2.2_wp, "mean "//short_number(mean)//" "// &
       table%columns(c)%unit, 'class="small"'))
   end subroutine put_driver_chart
+
+  !> The machine dynamics of a steady cycle (the course's dynamics drawing): J_red, M_red with
+  !> M_d, dT, omega1 with omega_m and the delta band against the input angle, and
+  !> Wittenbauer's curve dT against J_red.
+  pure subroutine put_dynamics_charts(out, table, y0)
+    type(text_buffer_t), intent(inout) :: out
+    type(step_table_t), intent(in) :: table
+    !> Top of the block, mm.
+    real(wp), intent(in) :: y0
+    real(wp) :: w, top
+    integer :: ci
+    ci = table%input_column
+    w = 0.5_wp * (page_width - 2.0_wp * margin - gap)
+    call out%put(svg_text(margin, y0 + 4.0_wp, "Machine dynamics (reduced to the input link)", 'class="heading"'))
+    call out%put(svg_text(margin, y0 + 8.0_wp, "Steady cycle: M_d = "//short_number(figure("M_d"))// &
+      " N*m, flywheel J_fw = "//short_number(figure("J_flywheel"))//" kg*m^2 (textbook "// &
+      short_number(figure("J_flywheel_textbook"))//"), delta = "//short_number(figure("delta")), 'class="small"'))
+    top = y0 + 10.0_wp
+    call chart(out, table%rows(ci, :), table%rows(table%column_index("J_red"), :), margin, top, &
+      "Reduced moment of inertia J_red", table%columns(ci)%name//", deg", "J_red, kg*m^2", [real(wp) ::])
+    call chart(out, table%rows(ci, :), table%rows(table%column_index("M_red"), :), margin + w + gap, top, &
+      "Reduced moment M_red and M_d (dashed)", table%columns(ci)%name//", deg", "M_red, N*m", [figure("M_d")])
+    top = top + dynamics_chart_height + gap
+    call chart(out, table%rows(ci, :), table%rows(table%column_index("dT"), :), margin, top, &
+      "Change of kinetic energy dT", table%columns(ci)%name//", deg", "dT, J", [real(wp) ::])
+    call chart(out, table%rows(ci, :), table%rows(table%column_index("omega1"), :), margin + w + gap, top, &
+      "Speed omega1 (dashed: mean, max, min)", table%columns(ci)%name//", deg", "omega1, rad/s", &
+      [figure("omega_mean"), figure("omega_max"), figure("omega_min")])
+    top = top + dynamics_chart_height + gap
+    call chart(out, table%rows(table%column_index("J_red"), :), table%rows(table%column_index("dT"), :), margin, top, &
+      "Wittenbauer's curve: dT against J_red", "J_red, kg*m^2", "dT, J", [real(wp) ::])
+  contains
+    !> A figure of the DYNAMICS records (0 when absent).
+    pure real(wp) function figure(name)
+      character(*), intent(in) :: name
+      integer :: i
+      figure = 0.0_wp
+      if (.not. allocated(table%dynamics)) return
+      do i = 1, size(table%dynamics)
+        if (table%dynamics(i)%name == name) figure = table%dynamics(i)%values(1)
+      end do
+    end function figure
+
+    !> One chart of y against x with dashed horizontal lines at `levels` (the y range holds them).
+    pure subroutine chart(o, xv, yv, x0, y0, heading, xlabel, ylabel, levels)
+      type(text_buffer_t), intent(inout) :: o
+      real(wp), intent(in) :: xv(:), yv(:), x0, y0
+      character(*), intent(in) :: heading, xlabel, ylabel
+      real(wp), intent(in) :: levels(:)
+      real(wp) :: left, pt, pw, ph, xlo, xhi, xstep, ylo, yhi, ystep, t, vmin, vmax
+      integer :: i
+      call o%put(svg_rect(x0, y0, w, dynamics_chart_height, 'class="panel"'))
+      call o%put(svg_text(x0 + 2.0_wp, y0 + 5.0_wp, heading, 'class="heading"'))
+      left = x0 + 17.0_wp
+      pt = y0 + 9.0_wp
+      pw = w - 21.0_wp
+      ph = dynamics_chart_height - 22.0_wp
+      call x_range(xv, index(xlabel, "deg") > 0, xlo, xhi, xstep)
+      if (size(levels) > 0) then
+        ! a speed band: the range of the data and the levels, zero not forced in
+        vmin = min(minval(yv), minval(levels))
+        vmax = max(maxval(yv), maxval(levels))
+        call x_range([vmin, vmax], .false., ylo, yhi, ystep)
+        if (vmin > 0.0_wp .and. vmax > 0.0_wp .and. figure("M_d") /= levels(1)) then
+          ylo = ystep * floor(vmin / ystep + 1.0e-9_wp)
+          yhi = ystep * ceiling(vmax / ystep - 1.0e-9_wp)
+        else
+          call y_range([yv, levels], ylo, yhi, ystep)
+        end if
+      else
+        call y_range(yv, ylo, yhi, ystep)
+      end if
+      call put_axes(o, left, pt, pw, ph, xlo, xhi, xstep, ylo, yhi, ystep, xlabel, ylabel)
+      call put_series(o, left + pw * (xv - xlo) / (xhi - xlo), pt + ph - ph * (yv - ylo) / (yhi - ylo), &
+        "#1f77b4", "")
+      do i = 1, size(levels)
+        t = pt + ph - ph * (levels(i) - ylo) / (yhi - ylo)
+        call o%put(svg_line(left, t, left + pw, t, 'class="mean"'))
+      end do
+    end subroutine chart
+  end subroutine put_dynamics_charts
 
   !> The magnitudes of the chosen pair forces against the input coordinate, with a legend.
   pure subroutine put_magnitude_chart(out, table, pairs, x0, y0, w, h)

@@ -29,6 +29,8 @@ module kinetostat_table_writer
   !> Bytes a row of the legacy table takes per column, about (room made for a block's rows).
   integer, parameter :: table_row_room = 14
 
+  !> Display width of the name part of a DYNAMICS line.
+  integer, parameter :: dynamics_name_width = 34
   !> Values per line of an echoed array.
   integer, parameter :: echo_array_per_line = 5
 
@@ -173,6 +175,7 @@ contains
     type(text_buffer_t), intent(inout) :: out
     call put_run_summary(out, table, lang)
     if (allocated(table%summary)) call put_summary(out, table, lang)
+    if (allocated(table%dynamics)) call put_dynamics(out, table, lang)
     if (table%has_selfcheck) call put_footer(out, table, lang)
   end subroutine write_table_tail
 
@@ -378,6 +381,19 @@ contains
   end subroutine put_summary
 
 
+  !> The DYNAMICS block: the figures of the machine's steady cycle as INPUT DATA lines.
+  pure subroutine put_dynamics(out, table, lang)
+    type(text_buffer_t), intent(inout) :: out
+    type(step_table_t), intent(in) :: table
+    integer, intent(in) :: lang
+    integer :: i
+    call put_heading(out, label("DYNAMICS (REDUCED TO THE INPUT LINK)", lang))
+    do i = 1, size(table%dynamics)
+      call out%put("   "//pad_right(label(table%dynamics(i)%name, lang), dynamics_name_width)//"="// &
+                   echo_number(table%dynamics(i)%values(1))//"  "//label(table%dynamics(i)%unit, lang))
+    end do
+  end subroutine put_dynamics
+
   !> The self-check footer.
   pure subroutine put_footer(out, table, lang)
     type(text_buffer_t), intent(inout) :: out
@@ -403,6 +419,10 @@ contains
                  "  "//selfcheck_verdict(table%max_residual))
     call out%put("   "//pad_right(mismatch_label, footer_label_width)//footer_number(table%max_mismatch)// &
                  "  "//selfcheck_verdict(table%max_mismatch))
+    if (table%max_drive_deviation >= 0.0_wp) then
+      call out%put("   "//pad_right(label("MAX |M1 - M_d|/|M_d| WITH THE TRUE MOTION", lang), footer_label_width)// &
+                   footer_number(table%max_drive_deviation)//"  "//selfcheck_verdict(table%max_drive_deviation))
+    end if
   end subroutine put_footer
 
 end module kinetostat_table_writer

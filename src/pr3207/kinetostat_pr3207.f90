@@ -12,7 +12,7 @@ module kinetostat_pr3207
   implicit none
   private
   public :: pr3207_params_t, pr3207_position_t, pr3207_step_t
-  public :: pr3207_position, pr3207_step
+  public :: pr3207_position, pr3207_step, pr3207_reduced
 
   !> Unit vector of gravity in the PR 3207 frame (x points down).
   real(wp), parameter :: down(2) = [1.0_wp, 0.0_wp]
@@ -81,6 +81,10 @@ module kinetostat_pr3207
     real(wp) :: phi1 = 0.0_wp
     !> Cutting force on the ram, N, signed along +y.
     real(wp) :: f5c = 0.0_wp
+    !> Crank speed, rad/s.
+    real(wp) :: omega1 = 0.0_wp
+    !> Crank angular acceleration, rad/s^2.
+    real(wp) :: eps1 = 0.0_wp
     !> Lever angular acceleration, rad/s^2.
     real(wp) :: eps3 = 0.0_wp
     !> Ram acceleration, m/s^2.
@@ -138,33 +142,47 @@ contains
     pos%a5q = p%l_cd * (pos%eps31 * e3(1) - pos%u31**2 * e3(2))
   end function pr3207_position
 
-  !> Kinetostatic analysis at crank angle `phi1` (rad) with cutting force `f5c` (N, along +y).
-  pure function pr3207_step(p, phi1, f5c) result(step)
+  !> Kinetostatic analysis at crank angle `phi1` (rad) with cutting force `f5c` (N, along +y),
+  !> at the deck's constant crank speed, or at the crank speed `omega1` and acceleration
+  !> `eps1` of the true motion with the inertia `j_input` (kg*m^2: flywheel and rotor) turning
+  !> with the crank, whose inertia moment -j_input*eps1 acts on it.
+  pure function pr3207_step(p, phi1, f5c, omega1, eps1, j_input) result(step)
     !> Mechanism data.
     type(pr3207_params_t), intent(in) :: p
     !> Crank angle, rad.
     real(wp), intent(in) :: phi1
     !> Cutting force on the ram, N, signed along +y.
     real(wp), intent(in) :: f5c
+    !> Crank speed, rad/s (default p%omega1).
+    real(wp), intent(in), optional :: omega1
+    !> Crank acceleration, rad/s^2 (default 0).
+    real(wp), intent(in), optional :: eps1
+    !> Moment of inertia turning with the crank besides its links, kg*m^2 (default 0).
+    real(wp), intent(in), optional :: j_input
     type(pr3207_step_t) :: step
     type(pr3207_position_t) :: pos
     real(wp) :: w2, a_s3(2), g1(2), g3(2), g5(2), phi3_f(2), phi5_f(2), m_phi3, f_cut(2)
-    real(wp) :: a(2), c(2), e3(2), n32, f32(2), f12(2)
+    real(wp) :: a(2), c(2), e3(2), n32, f32(2), f12(2), m_input
     type(link_balance_t) :: links(5)
-    real(wp) :: terms(4)
+    real(wp) :: terms(5)
 
     pos = pr3207_position(p, phi1)
-    w2 = p%omega1**2
+    step%omega1 = p%omega1
+    if (present(omega1)) step%omega1 = omega1
+    if (present(eps1)) step%eps1 = eps1
+    m_input = 0.0_wp
+    if (present(j_input)) m_input = inertia_moment(j_input, step%eps1)
+    w2 = step%omega1**2
     a = 0.0_wp
     c = [p%l_ac, 0.0_wp]
     e3 = unit_at(pos%phi3)
     step%phi1 = phi1
     step%f5c = f5c
 
-    ! loads: gravity along +x, d'Alembert inertia (crank's centre of mass at A, omega1 const)
-    step%eps3 = pos%eps31 * w2
-    step%a5 = pos%a5q * w2
-    a_s3 = pos%a_s3q * w2
+    ! loads: gravity along +x, d'Alembert inertia (crank's centre of mass at A)
+    step%eps3 = pos%eps31 * w2 + pos%u31 * step%eps1
+    step%a5 = pos%a5q * w2 + pos%v5q * step%eps1
+    a_s3 = pos%a_s3q * w2 + pos%v_s3q * step%eps1
     g1 = gravity_force(p%m1, p%g, down)
     g3 = gravity_force(p%m3, p%g, down)
     g5 = gravity_force(p%m5, p%g, down)
@@ -186,11 +204,11 @@ contains
     ! crank 1
     f12 = -step%f21
     step%f16 = -(f12 + g1)
-    step%m1 = -cross(pos%b - a, f12)
+    step%m1 = -cross(pos%b - a, f12) - m_input
 
     ! self-check 1: equilibrium residual of every link with the computed reactions
     links(1) = link_balance(reshape([a, pos%b, a], [2, 3]), &
-                            reshape([step%f16, f12, g1], [2, 3]), [step%m1])
+                            reshape([step%f16, f12, g1], [2, 3]), [step%m1, m_input])
     links(2) = link_balance(reshape([pos%b, pos%b], [2, 2]), &
                             reshape([step%f21, -f32], [2, 2]), [real(wp) ::])
     links(3) = link_balance(reshape([c, pos%b, pos%d, pos%s3, pos%s3], [2, 5]), &
@@ -207,8 +225,31 @@ contains
     terms(2) = m_phi3 * pos%u31
     terms(3) = dot_product(f_cut + phi5_f + g5, pos%v5q * ram_axis)
     terms(4) = dot_product(g1, [0.0_wp, 0.0_wp])
+    terms(5) = m_input
     step%m1_power = -sum(terms)
     step%mismatch = power_mismatch(step%m1, step%m1_power, sum(abs(terms)))
   end function pr3207_step
+
+  !> The reduced quantities at crank angle `phi1` (rad) with cutting force `f5c` (N, along
+  !> +y), from the transfer functions: J_red = m3 |v_S3q|^2 + j3 u31^2 + m5 v5q^2 (the crank's
+  !> centre of mass is at its pivot; the blocks are massless), dJ_red = its derivative
+  !> (2 m v_q . a_q + 2 j u eps_q), M_red = gravity and the cutting force times their
+  !> velocity analogues (result: [J_red kg*m^2, dJ_red kg*m^2/rad, M_red N*m]).
+  pure function pr3207_reduced(p, phi1, f5c) result(red)
+    !> Mechanism data.
+    type(pr3207_params_t), intent(in) :: p
+    !> Crank angle, rad.
+    real(wp), intent(in) :: phi1
+    !> Cutting force on the ram, N, along +y.
+    real(wp), intent(in) :: f5c
+    real(wp) :: red(3)
+    type(pr3207_position_t) :: pos
+    pos = pr3207_position(p, phi1)
+    red(1) = p%m3 * dot_product(pos%v_s3q, pos%v_s3q) + p%j3 * pos%u31**2 + p%m5 * pos%v5q**2
+    red(2) = 2.0_wp * (p%m3 * dot_product(pos%v_s3q, pos%a_s3q) + p%j3 * pos%u31 * pos%eps31 + &
+                       p%m5 * pos%v5q * pos%a5q)
+    red(3) = dot_product(gravity_force(p%m3, p%g, down), pos%v_s3q) + &
+             dot_product(gravity_force(p%m5, p%g, down) + f5c * ram_axis, pos%v5q * ram_axis)
+  end function pr3207_reduced
 
 end module kinetostat_pr3207

@@ -8,6 +8,8 @@ module kinetostat_pr3207_deck
     deck_source_t, namelist_probe_t, require_all_set, deck_error, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn
   use kinetostat_pr3207, only: pr3207_params_t
+  use kinetostat_dynamics, only: dynamics_steady
+  use kinetostat_dynamics_deck, only: dynamics_deck_t, read_dynamics_settings, require_one_turn
   implicit none
   private
   public :: pr3207_deck_t, read_pr3207_deck, write_pr3207_template, pr3207_cut_force
@@ -37,6 +39,8 @@ module kinetostat_pr3207_deck
     !> namelist's read buffer, kept); not allocated in the two-value form. Step k's force:
     !> pr3207_f5c; its crank angle: pr3207_phi1_deg (neither stored per step otherwise).
     real(wp), allocatable :: f5c_values(:)
+    !> Machine dynamics settings (dynamics, delta, j_rotor, j_flywheel).
+    type(dynamics_deck_t) :: dyn
   end type pr3207_deck_t
 
   !> Template deck (reference data of the spec), one line per entry.
@@ -65,6 +69,9 @@ module kinetostat_pr3207_deck
     "  f5c_idle = 0     ! N, elsewhere", &
     "  phi_cut_start = 95   ! deg", &
     "  phi_cut_end   = 265  ! deg", &
+    "  ! machine dynamics (optional): dynamics = 'none' (default), 'reduced' (J_red, M_red", &
+    "  ! columns), 'steady' (flywheel for delta; omega1 = mean speed) or 'given' (j_flywheel)", &
+    "  ! dynamics = 'steady', delta = 0.04, j_rotor = 0.6   ! -, kg*m^2", &
     "/"]
 
 contains
@@ -103,7 +110,8 @@ contains
     !> Input error naming file, group, variable and reason.
     type(error_t), allocatable, intent(out) :: error
     real(wp) :: l_ab, l_ac, l_cd, l_cs3, m1, m3, m5, j3, omega1, g, phi_start, dphi
-    real(wp) :: f5c_work, f5c_idle, phi_cut_start, phi_cut_end
+    real(wp) :: f5c_work, f5c_idle, phi_cut_start, phi_cut_end, delta, j_rotor, j_flywheel
+    character(len=32) :: dynamics
     real(wp), allocatable :: f5c(:)
     !> Number of steps as given (an integer deck variable, read as a real: see require_whole).
     real(wp) :: n
@@ -114,7 +122,7 @@ contains
     type(namelist_probe_t) :: probe
     logical :: two_value_given
     namelist /pr3207/ l_ab, l_ac, l_cd, l_cs3, m1, m3, m5, j3, omega1, g, phi_start, dphi, n, &
-      f5c, f5c_work, f5c_idle, phi_cut_start, phi_cut_end
+      f5c, f5c_work, f5c_idle, phi_cut_start, phi_cut_end, dynamics, delta, j_rotor, j_flywheel
 
     ctx%path = source%path
     ctx%group = "pr3207"
@@ -123,6 +131,7 @@ contains
     omega1 = unset_real; g = unset_real; phi_start = unset_real; dphi = unset_real
     f5c_work = unset_real; f5c_idle = unset_real; phi_cut_start = unset_real; phi_cut_end = unset_real
     n = unset_real
+    dynamics = ""; delta = unset_real; j_rotor = unset_real; j_flywheel = unset_real
     capacity = deck_array_capacities(source, ctx%group, ["f5c"])
     allocate (f5c(capacity(1)), source=unset_real)
 
@@ -189,6 +198,16 @@ contains
       deck%f5c_idle = f5c_idle
       deck%phi_cut_start = phi_cut_start
       deck%phi_cut_end = phi_cut_end
+    end if
+
+    ! machine dynamics: a steady cycle needs one whole turn and the load at any crank angle
+    call read_dynamics_settings(ctx, dynamics, delta, j_rotor, j_flywheel, omega1, deck%dyn, error)
+    if (allocated(error)) return
+    if (deck%dyn%mode >= dynamics_steady) then
+      call require_one_turn(ctx, dphi, deck%n, error); if (allocated(error)) return
+      call require_rule(ctx, "f5c", deck%two_value, "a steady cycle needs the cutting force at every crank "// &
+        "angle: give it in the two-value form (f5c_work, phi_cut_start, phi_cut_end), not per step", error)
+      if (allocated(error)) return
     end if
 
     deck%p = pr3207_params_t(l_ab=l_ab, l_ac=l_ac, l_cd=l_cd, l_cs3=l_cs3, m1=m1, m3=m3, m5=m5, &

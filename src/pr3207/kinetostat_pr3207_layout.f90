@@ -17,6 +17,11 @@ module kinetostat_pr3207_layout
     pr3207_f5c, pr3207_f5c_steps
   use kinetostat_drawing, only: drawing_t, force_load
   use kinetostat_bodies, only: mass_model_t
+  use kinetostat_dynamics, only: cycle_t, motion_t, dynamics_steady
+  use kinetostat_dynamics_table, only: note_constant_speed_cost, echo_dynamics, add_dynamics_columns, &
+    put_dynamics_values, put_dynamics_figures, &
+    note_drive_deviation
+  use kinetostat_pr3207_dynamics, only: pr3207_cycle, pr3207_motion
   implicit none
   private
   public :: pr3207_mechanism_t, new_pr3207, pr3207_solve, pr3207_csv_columns, pr3207_csv_values
@@ -49,6 +54,8 @@ module kinetostat_pr3207_layout
   type, extends(mechanism_t) :: pr3207_mechanism_t
     !> The validated deck.
     type(pr3207_deck_t) :: deck
+    !> The steady cycle (dynamics = 'steady' or 'given').
+    type(cycle_t) :: cycle
   contains
     procedure :: read_deck
     procedure :: solve
@@ -76,6 +83,8 @@ contains
     type(deck_source_t), intent(in) :: source
     type(error_t), allocatable, intent(out) :: error
     call read_pr3207_deck(source, self%deck, error)
+    if (allocated(error)) return
+    if (self%deck%dyn%mode >= dynamics_steady) call pr3207_cycle(self%deck, source%path, self%cycle, error)
   end subroutine read_deck
 
   !> The topology for a drawing: crank A-B, block 2 at B sliding along the lever C-D, block 4
@@ -96,20 +105,42 @@ contains
     out%down = [1.0_wp, 0.0_wp]
   end subroutine sketch
 
-  !> All steps of a validated deck (in parallel with OpenMP threads).
-  subroutine pr3207_solve(deck, steps, first, last)
+  !> All steps of a validated deck (in parallel with OpenMP threads); with a steady `cycle`,
+  !> at the true crank speed and acceleration, with the flywheel and rotor on the crank.
+  subroutine pr3207_solve(deck, steps, first, last, cycle, motions)
     !> Validated deck.
     type(pr3207_deck_t), intent(in) :: deck
     !> One result per crank step (of steps first..last).
     type(pr3207_step_t), allocatable, intent(out) :: steps(:)
     !> Steps to compute (default: all).
     integer, intent(in), optional :: first, last
+    !> The deck's steady cycle (dynamics = 'steady' or 'given').
+    type(cycle_t), intent(in), optional :: cycle
+    !> The motion and reduced quantities of each step (with `cycle`).
+    type(motion_t), allocatable, intent(out), optional :: motions(:)
+    type(motion_t) :: mo
     integer :: k, k1, k2
     call step_span(deck%n, k1, k2, first, last)
     allocate (steps(k2 - k1 + 1))
-    !$omp parallel do schedule(static)
+    if (present(motions)) allocate (motions(k2 - k1 + 1))
+    if (.not. present(cycle)) then
+      !$omp parallel do schedule(static)
+      do k = k1, k2
+        steps(k - k1 + 1) = pr3207_step(deck%p, pr3207_phi1_deg(deck, k) * deg_to_rad, pr3207_f5c(deck, k))
+      end do
+      !$omp end parallel do
+      return
+    end if
+    !$omp parallel do schedule(static) private(mo)
     do k = k1, k2
-      steps(k - k1 + 1) = pr3207_step(deck%p, pr3207_phi1_deg(deck, k) * deg_to_rad, pr3207_f5c(deck, k))
+      mo = pr3207_motion(deck, cycle, k)
+      if (present(motions)) motions(k - k1 + 1) = mo
+      if (deck%dyn%mode >= dynamics_steady) then
+        steps(k - k1 + 1) = pr3207_step(deck%p, pr3207_phi1_deg(deck, k) * deg_to_rad, pr3207_f5c(deck, k), &
+                                        mo%omega, mo%eps, cycle%j_flywheel + cycle%j_rotor)
+      else
+        steps(k - k1 + 1) = pr3207_step(deck%p, pr3207_phi1_deg(deck, k) * deg_to_rad, pr3207_f5c(deck, k))
+      end if
     end do
     !$omp end parallel do
   end subroutine pr3207_solve
@@ -120,11 +151,18 @@ contains
     type(step_table_t), intent(inout) :: table
     type(error_t), allocatable, intent(out) :: error
     type(pr3207_step_t), allocatable :: steps(:)
+    type(motion_t), allocatable :: motions(:)
     integer :: k, first, last
     call table%block_range(self%deck%n, first, last)
-    call pr3207_solve(self%deck, steps, first, last)
+    if (self%deck%dyn%mode > 0) then
+      call pr3207_solve(self%deck, steps, first, last, self%cycle, motions)
+    else
+      call pr3207_solve(self%deck, steps, first, last)
+    end if
     if (table%first_block()) then
       call table%set_columns(pr3207_csv_columns, column_units, column_kinds)
+      call add_dynamics_columns(table, self%deck%dyn%mode)
+      call put_dynamics_figures(table, self%deck%dyn%mode, self%cycle, self%deck%dyn%delta)
       table%input_column = 1
       if (self%deck%two_value) then
         call table%note_load(pr3207_f5c_steps(self%deck))
@@ -139,6 +177,15 @@ contains
       table%rows(1:size(pr3207_csv_columns), k) = pr3207_csv_values(steps(k), self%deck%p%l_ab)
     end do
     !$omp end parallel do
+    if (allocated(motions)) then
+      do k = 1, size(steps)
+        call put_dynamics_values(table, k, self%deck%dyn%mode, motions(k))
+      end do
+      if (self%deck%dyn%mode >= dynamics_steady) call constant_speed_cost(self%deck, steps, first, last, table)
+      if (self%deck%dyn%mode >= dynamics_steady) call note_drive_deviation(table, &
+        maxval(abs(steps%m1 - self%cycle%m_d)), max(abs(self%cycle%m_d), maxval(abs(motions%m)), &
+        maxval(abs((self%cycle%j_flywheel + motions%j) * motions%eps))))
+    end if
     if (table%kinematics_wanted) then
       do k = 1, size(steps)
         call put_kinematics(table, k, self%deck%p, steps(k))
@@ -146,6 +193,37 @@ contains
     end if
     call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "M1")
   end subroutine solve
+
+  !> The peaks of the pair forces with the true motion against those at omega1 = omega_m.
+  subroutine constant_speed_cost(deck, steps, first, last, table)
+    type(pr3207_deck_t), intent(in) :: deck
+    !> The steps of the block with the true motion.
+    type(pr3207_step_t), intent(in) :: steps(:)
+    integer, intent(in) :: first, last
+    type(step_table_t), intent(inout) :: table
+    type(pr3207_step_t), allocatable :: const(:)
+    integer :: i
+    call pr3207_solve(deck, const, first, last)
+    do i = 1, size(force_names)
+      call note_constant_speed_cost(table, trim(force_names(i)), peak(steps, i), peak(const, i))
+    end do
+  contains
+    pure real(wp) function peak(s, i)
+      type(pr3207_step_t), intent(in) :: s(:)
+      integer, intent(in) :: i
+      integer :: k
+      peak = 0.0_wp
+      do k = 1, size(s)
+        select case (i)
+        case (1); peak = max(peak, norm2(s(k)%f16))
+        case (2); peak = max(peak, norm2(s(k)%f21))
+        case (3); peak = max(peak, norm2(s(k)%f36))
+        case (4); peak = max(peak, norm2(s(k)%f34))
+        case default; peak = max(peak, norm2(s(k)%f56))
+        end select
+      end do
+    end function peak
+  end subroutine constant_speed_cost
 
   !> The row of values of one step. Forces below `noise_rel` times the step's largest
   !> force (and M1 below that force times l_AB) are roundoff: printed as 0 with angle 0.
@@ -186,7 +264,7 @@ contains
     real(wp) :: w2, f(2, 5), floor
     integer :: i
     pos = pr3207_position(p, s%phi1)
-    w2 = p%omega1**2
+    w2 = s%omega1**2
     call table%put_point(k, "A", [0.0_wp, 0.0_wp])
     call table%put_point(k, "B", pos%b)
     call table%put_point(k, "C", [p%l_ac, 0.0_wp])
@@ -194,12 +272,12 @@ contains
     call table%put_point(k, "S1", [0.0_wp, 0.0_wp])
     call table%put_point(k, "S3", pos%s3)
     call table%put_point(k, "S5", [0.0_wp, pos%y5])
-    call table%put_link(k, "1", s%phi1, p%omega1, 0.0_wp)
-    call table%put_link(k, "2", pos%phi3, pos%u31 * p%omega1, pos%eps31 * w2)
-    call table%put_link(k, "3", pos%phi3, pos%u31 * p%omega1, pos%eps31 * w2)
+    call table%put_link(k, "1", s%phi1, s%omega1, s%eps1)
+    call table%put_link(k, "2", pos%phi3, pos%u31 * s%omega1, s%eps3)
+    call table%put_link(k, "3", pos%phi3, pos%u31 * s%omega1, s%eps3)
     call table%put_acceleration(k, "S1", [0.0_wp, 0.0_wp])
-    call table%put_acceleration(k, "S3", pos%a_s3q * w2)
-    call table%put_acceleration(k, "S5", [0.0_wp, pos%a5q * w2])
+    call table%put_acceleration(k, "S3", pos%a_s3q * w2 + pos%v_s3q * s%eps1)
+    call table%put_acceleration(k, "S5", [0.0_wp, s%a5])
     f = reshape([s%f16, s%f21, s%f36, s%f34, s%f56], [2, 5])
     floor = noise_floor(f, [real(wp) ::])
     do i = 1, size(force_names)
@@ -232,6 +310,7 @@ contains
     else
       call table%echo_array("F5C", deck%f5c_values(1:deck%n), "N")
     end if
+    call echo_dynamics(table, deck%dyn)
   end subroutine echo_deck
 
   !> RESULTS: header, then per step the magnitudes (with the crank angle and M1) and under

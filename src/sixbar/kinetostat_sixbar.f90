@@ -15,7 +15,7 @@ module kinetostat_sixbar
   implicit none
   private
   public :: sixbar_params_t, sixbar_position_t, sixbar_step_t
-  public :: sixbar_position, sixbar_step, sixbar_extreme_phi1
+  public :: sixbar_position, sixbar_step, sixbar_extreme_phi1, sixbar_reduced
   public :: sixbar_frame2_to_frame1, sixbar_frame1_to_frame2, sixbar_down1, sixbar_down2
   public :: sixbar_ok, sixbar_open1, sixbar_dead1, sixbar_open2, sixbar_dead2, sixbar_dead_tol
 
@@ -445,5 +445,32 @@ contains
     step%m1_power = -sum(terms)
     step%mismatch = power_mismatch(step%m1, step%m1_power, sum(abs(terms)))
   end function sixbar_step
+
+  !> The reduced quantities at crank angle `phi1` (rad) with the slider's load `f5` (N, along
+  !> +x2), from the transfer functions (each in its own frame): J_red = j1 + m2 |v_S2q|^2 +
+  !> j2 u21^2 + j3 u31^2 + m4 |v_S4q|^2 + j4 u41^2 + m5 v_Hq,x^2, dJ_red its derivative, M_red =
+  !> gravity and f5 times their velocity analogues (result: [J_red kg*m^2, dJ_red kg*m^2/rad,
+  !> M_red N*m]; zeros where the position fails, which the step reports).
+  pure function sixbar_reduced(p, phi1, f5) result(red)
+    !> Mechanism data.
+    type(sixbar_params_t), intent(in) :: p
+    !> Crank angle, rad.
+    real(wp), intent(in) :: phi1
+    !> Load on the slider, N, along +x2.
+    real(wp), intent(in) :: f5
+    real(wp) :: red(3)
+    type(sixbar_position_t) :: pos
+    red = 0.0_wp
+    pos = sixbar_position(p, phi1)
+    if (pos%status /= sixbar_ok) return
+    red(1) = p%j1 + p%m2 * dot_product(pos%v_s2q, pos%v_s2q) + p%j2 * pos%u21**2 + p%j3 * pos%u31**2 + &
+             p%m4 * dot_product(pos%v_s4q, pos%v_s4q) + p%j4 * pos%u41**2 + p%m5 * pos%v_hq(1)**2
+    red(2) = 2.0_wp * (p%m2 * dot_product(pos%v_s2q, pos%a_s2q) + p%j2 * pos%u21 * pos%eps_q2 + &
+                       p%j3 * pos%u31 * pos%eps_q3 + p%m4 * dot_product(pos%v_s4q, pos%a_s4q) + &
+                       p%j4 * pos%u41 * pos%eps_q4 + p%m5 * pos%v_hq(1) * pos%a_hq(1))
+    red(3) = dot_product(gravity_force(p%m2, p%g, sixbar_down1(p)), pos%v_s2q) + &
+             dot_product(gravity_force(p%m4, p%g, sixbar_down2(p)), pos%v_s4q) + &
+             dot_product([f5, 0.0_wp] + gravity_force(p%m5, p%g, sixbar_down2(p)), pos%v_hq)
+  end function sixbar_reduced
 
 end module kinetostat_sixbar

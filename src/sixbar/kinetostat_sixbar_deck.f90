@@ -8,6 +8,8 @@ module kinetostat_sixbar_deck
     deck_source_t, namelist_probe_t, require_all_set, deck_error, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn
   use kinetostat_sixbar, only: sixbar_params_t, sixbar_extreme_phi1
+  use kinetostat_dynamics, only: dynamics_reduced
+  use kinetostat_dynamics_deck, only: dynamics_deck_t, read_dynamics_settings
   implicit none
   private
   public :: sixbar_deck_t, read_sixbar_deck, write_sixbar_template, sixbar_phi1_deg
@@ -28,6 +30,8 @@ module kinetostat_sixbar_deck
     !> kept; it may hold a spare element past n). The crank angle is not stored:
     !> sixbar_phi1_deg.
     real(wp), allocatable :: f5(:)
+    !> Machine dynamics settings (dynamics = 'reduced' and j_rotor only).
+    type(dynamics_deck_t) :: dyn
   end type sixbar_deck_t
 
   !> Template deck (the reference deck data/sixbar.nml), one line per entry.
@@ -79,6 +83,9 @@ contains
     type(error_t), allocatable, intent(out) :: error
     real(wp) :: a, b, l1, lam2, lam_s2, lam3, lam_de, lam4, lam_s4, lam_e
     real(wp) :: m1, m2, m3, m4, m5, j1, j2, j3, j4, omega1, g, dphi, phi_start, phi_ext
+    !> Machine dynamics variables (see kinetostat_dynamics_deck).
+    real(wp) :: delta, j_rotor, j_flywheel
+    character(len=32) :: dynamics
     real(wp), allocatable :: f5(:)
     logical :: start_at_extreme, legacy_eq2, ok
     !> Number of steps as given (an integer deck variable, read as a real: see require_whole).
@@ -89,10 +96,12 @@ contains
     type(deck_context_t) :: ctx
     type(namelist_probe_t) :: probe
     namelist /sixbar/ a, b, l1, lam2, lam_s2, lam3, lam_de, lam4, lam_s4, lam_e, &
-      m1, m2, m3, m4, m5, j1, j2, j3, j4, omega1, g, dphi, n, phi_start, start_at_extreme, f5, legacy_eq2
+      m1, m2, m3, m4, m5, j1, j2, j3, j4, omega1, g, dphi, n, phi_start, start_at_extreme, f5, legacy_eq2, &
+      dynamics, delta, j_rotor, j_flywheel
 
     ctx%path = source%path
     ctx%group = "sixbar"
+    dynamics = ""; delta = unset_real; j_rotor = unset_real; j_flywheel = unset_real
     a = unset_real; b = unset_real; l1 = unset_real
     lam2 = unset_real; lam_s2 = unset_real; lam3 = unset_real; lam_de = unset_real
     lam4 = unset_real; lam_s4 = unset_real; lam_e = unset_real
@@ -144,6 +153,14 @@ contains
     call require_set(ctx, "omega1", omega1, error); if (allocated(error)) return
     g = optional_default(g, g_default)
     call require_nonnegative(ctx, "g", g, error); if (allocated(error)) return
+
+    ! machine dynamics: the reduced quantities only (f5 is given per step, not over the angle)
+    call read_dynamics_settings(ctx, dynamics, delta, j_rotor, j_flywheel, omega1, deck%dyn, error)
+    if (allocated(error)) return
+    call require_rule(ctx, "dynamics", deck%dyn%mode <= dynamics_reduced, "the six-bar has the reduced "// &
+      "quantities only (dynamics = 'reduced'): its load f5 is given per step, a steady cycle needs it at any "// &
+      "crank angle (use the generic engine, &assur)", error)
+    if (allocated(error)) return
 
     deck%p = sixbar_params_t(a=a, b=b, l1=l1, lam2=lam2, lam_s2=lam_s2, lam3=lam3, lam_de=lam_de, &
       lam4=lam4, lam_s4=lam_s4, lam_e=lam_e, m1=m1, m2=m2, m3=m3, m4=m4, m5=m5, j1=j1, j2=j2, j3=j3, &

@@ -16,10 +16,12 @@ module kinetostat_sixbar_layout
   use kinetostat_sketch, only: sketch_t
   use kinetostat_table_writer, only: put_heading, put_two_line_step
   use kinetostat_sixbar, only: sixbar_params_t, sixbar_step_t, sixbar_step, sixbar_ok, sixbar_open1, &
-    sixbar_dead1, sixbar_open2, sixbar_dead2, sixbar_frame2_to_frame1, sixbar_down1
+    sixbar_dead1, sixbar_open2, sixbar_dead2, sixbar_frame2_to_frame1, sixbar_down1, sixbar_reduced
   use kinetostat_sixbar_deck, only: sixbar_deck_t, read_sixbar_deck, write_sixbar_template, sixbar_phi1_deg
   use kinetostat_drawing, only: drawing_t, force_load
   use kinetostat_bodies, only: mass_model_t
+  use kinetostat_dynamics, only: motion_t
+  use kinetostat_dynamics_table, only: echo_dynamics, add_dynamics_columns, put_dynamics_values
   implicit none
   private
   public :: sixbar_mechanism_t, new_sixbar, sixbar_solve, sixbar_csv_columns, sixbar_csv_values
@@ -188,6 +190,7 @@ contains
     if (allocated(error)) return
     if (table%first_block()) then
       call table%set_columns(sixbar_csv_columns, column_units, column_kinds)
+      call add_dynamics_columns(table, self%deck%dyn%mode)
       table%input_column = 1
       call table%note_load(self%deck%f5(1:self%deck%n))
       call echo_deck(self%deck, table)
@@ -198,6 +201,9 @@ contains
       table%rows(1:size(sixbar_csv_columns), k) = sixbar_csv_values(steps(k), self%deck%p%l1)
     end do
     !$omp end parallel do
+    do k = 1, merge(size(steps), 0, self%deck%dyn%mode > 0)
+      call put_dynamics_values(table, k, self%deck%dyn%mode, reduced_motion(self%deck, steps(k)))
+    end do
     if (table%kinematics_wanted) then
       do k = 1, size(steps)
         call put_kinematics(table, k, self%deck%p, steps(k))
@@ -205,6 +211,19 @@ contains
     end if
     call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "M1")
   end subroutine solve
+
+  !> The reduced quantities of a computed step (dynamics = 'reduced': the deck's speed).
+  pure function reduced_motion(deck, s) result(mo)
+    type(sixbar_deck_t), intent(in) :: deck
+    type(sixbar_step_t), intent(in) :: s
+    type(motion_t) :: mo
+    real(wp) :: r(3)
+    r = sixbar_reduced(deck%p, s%pos%phi1, s%f5)
+    mo%omega = deck%p%omega1
+    mo%j = r(1) + deck%dyn%j_rotor
+    mo%dj = r(2)
+    mo%m = r(3)
+  end function reduced_motion
 
   !> The row of values of one step. Forces below `noise_rel` times the step's largest
   !> force (and M1 below that force times l1) are roundoff: printed as 0 with angle 0.
@@ -308,6 +327,7 @@ contains
     call table%echo_int("N", deck%n, "steps")
     call table%echo_array("F5", deck%f5(1:deck%n), "N (along +x2)")
     call table%echo_logical("LEGACY_EQ2", deck%p%legacy_eq2, "(1991 erratum in eps_q2)")
+    call echo_dynamics(table, deck%dyn)
   end subroutine echo_deck
 
   !> RESULTS as appendix 2: per step the crank angle, six force magnitudes, F56 and M1, and

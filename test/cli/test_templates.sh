@@ -77,5 +77,5 @@ complete_words() {
 [ "$(complete_words kinetostat --format j)" = "json" ] && pass || fail completion-format "$(complete_words kinetostat --format j)"
 [ "$(complete_words kinetostat template four)" = "fourbar" ] && pass || fail completion-kind "$(complete_words kinetostat template four)"
 [ "$(complete_words kinetostat di)" = "diff" ] && pass || fail completion-subcommand "$(complete_words kinetostat di)"
-[ "$(complete_words kinetostat data/pr32)" = "data/pr3207.nml" ] && pass || fail completion-deck "$(complete_words kinetostat data/pr32)"
+[ "$(complete_words kinetostat data/pr3207.)" = "data/pr3207.nml" ] && pass || fail completion-deck "$(complete_words kinetostat data/pr3207.)"
 [ "$(complete_words kinetostat diff --rt)" = "--rtol" ] && pass || fail completion-diff-option "$(complete_words kinetostat diff --rt)"

@@ -1,0 +1,632 @@
+!> Machine dynamics over one cycle of the input link (pure kernel, no I/O): from the reduced
+!> moment of inertia J_red(phi), its derivative dJ_red/dphi and the reduced moment of the
+!> external loads M_red(phi) (given by a mechanism at any input angle through a
+!> `reduced_source_t`), the steady cycle: the constant driving moment M_d of zero net work,
+!> the change of kinetic energy dT(phi), the flywheel J_fw for a coefficient of speed
+!> fluctuation delta (exact, and Merzalov's textbook estimate), and the true law of motion
+!> omega1(phi), eps1(phi), t(phi) from the energy equation
+!>   1/2 (J_fw + J_red(phi)) omega^2 = E0 + dT(phi),   dT(phi) = int_phi0^phi (M_d + M_red) dphi,
+!>   eps = (M_d + M_red - 1/2 dJ_red omega^2) / (J_fw + J_red).
+!> dT is integrated by 8-point Gauss-Legendre on panels of at most `panel_max` with every load
+!> switch a panel bound, so it does not depend on the output step; omega's extremes are found
+!> between the panel bounds (where eps = 0, by bisection in the panels next to the extreme
+!> bound) and at the bounds themselves (a load switch, where omega has a kink).
+module kinetostat_dynamics
+  use kinetostat_kinds, only: wp, pi, rad_to_deg
+  use kinetostat_error, only: error_t, fatal_error, exit_input, exit_geometry
+  use kinetostat_text, only: real_str
+  implicit none
+  private
+  public :: reduced_t, reduced_source_t, cycle_t, motion_t
+  public :: dynamics_none, dynamics_reduced, dynamics_steady, dynamics_given
+  public :: cycle_setup, cycle_steady, cycle_given, motion_at, cycle_dT
+
+  !> Dynamics mode: none (the input's motion as the deck gives it).
+  integer, parameter :: dynamics_none = 0
+  !> Dynamics mode: only the reduced quantities, motion as given.
+  integer, parameter :: dynamics_reduced = 1
+  !> Dynamics mode: steady cycle, the flywheel found for the deck's delta.
+  integer, parameter :: dynamics_steady = 2
+  !> Dynamics mode: steady cycle with the deck's flywheel; delta found.
+  integer, parameter :: dynamics_given = 3
+
+  !> Largest quadrature panel, rad (1 deg).
+  real(wp), parameter :: panel_max = pi / 180.0_wp
+  !> Gauss-Legendre abscissae on [-1, 1] (8 points, positive half).
+  real(wp), parameter :: gl_x(4) = [0.1834346424956498_wp, 0.5255324099163290_wp, &
+    0.7966664774136267_wp, 0.9602898564975363_wp]
+  !> Gauss-Legendre weights (8 points, positive half).
+  real(wp), parameter :: gl_w(4) = [0.3626837833783620_wp, 0.3137066458778873_wp, &
+    0.2223810344533745_wp, 0.1012285362903763_wp]
+  !> The 8 Gauss-Legendre abscissae in increasing order.
+  real(wp), parameter :: gl_xi(8) = [-gl_x(4), -gl_x(3), -gl_x(2), -gl_x(1), gl_x(1), gl_x(2), gl_x(3), gl_x(4)]
+  !> Their weights.
+  real(wp), parameter :: gl_wi(8) = [gl_w(4), gl_w(3), gl_w(2), gl_w(1), gl_w(1), gl_w(2), gl_w(3), gl_w(4)]
+
+  !> Reduced quantities at one input angle (to the input link, per unit input speed).
+  type :: reduced_t
+    !> J_red of the moving links, kg*m^2 (without j_rotor).
+    real(wp) :: j = 0.0_wp
+    !> dJ_red / dphi, kg*m^2/rad.
+    real(wp) :: dj = 0.0_wp
+    !> M_red of the external loads and gravity, N*m.
+    real(wp) :: m = 0.0_wp
+    !> False at a dead position (transfer functions undetermined).
+    logical :: ok = .true.
+  end type reduced_t
+
+  !> What a mechanism gives: the reduced quantities at any input angle.
+  type, abstract :: reduced_source_t
+  contains
+    !> Reduced quantities at input angle phi (rad).
+    procedure(reduced_at_i), deferred :: at
+  end type reduced_source_t
+
+  abstract interface
+    pure function reduced_at_i(self, phi) result(red)
+      import :: reduced_source_t, reduced_t, wp
+      implicit none
+      class(reduced_source_t), intent(in) :: self
+      !> Input angle, rad.
+      real(wp), intent(in) :: phi
+      type(reduced_t) :: red
+    end function reduced_at_i
+  end interface
+
+  !> The steady cycle of a machine.
+  type :: cycle_t
+    !> First input angle of the cycle, rad; the cycle is phi0 .. phi0 + 2 pi.
+    real(wp) :: phi0 = 0.0_wp
+    !> Panel bounds, rad (0 .. np).
+    real(wp), allocatable :: node(:)
+    !> dT at the panel bounds, J.
+    real(wp), allocatable :: dt(:)
+    !> J_red (with j_rotor) at the panel bounds, kg*m^2.
+    real(wp), allocatable :: j(:)
+    !> Time at the panel bounds, s.
+    real(wp), allocatable :: time(:)
+    !> M_red at the 8 Gauss-Legendre points of each panel (8, np), N*m.
+    real(wp), allocatable :: m_gl(:, :)
+    !> 1/omega at the 8 Gauss-Legendre points of each panel (8, np), s/rad.
+    real(wp), allocatable :: r_gl(:, :)
+    !> The Lagrange polynomials through the 8 points on [-1, 1], coefficients of xi^0..xi^7:
+    !> an integral from a panel's start to any angle inside it is that of the interpolant
+    !> through the panel's samples (exact for the whole panel: the Gauss-Legendre sum).
+    real(wp) :: basis(8, 8) = 0.0_wp
+    !> Constant moment of inertia of the rotor and gear train reduced to the input, kg*m^2.
+    real(wp) :: j_rotor = 0.0_wp
+    !> Mean speed (omega_max + omega_min)/2, rad/s.
+    real(wp) :: omega_mean = 0.0_wp
+    !> Driving moment, N*m (constant, zero net work over the cycle).
+    real(wp) :: m_d = 0.0_wp
+    !> Flywheel, kg*m^2.
+    real(wp) :: j_flywheel = 0.0_wp
+    !> Merzalov's estimate of the flywheel, kg*m^2.
+    real(wp) :: j_flywheel_textbook = 0.0_wp
+    !> Kinetic energy at phi0, J.
+    real(wp) :: e0 = 0.0_wp
+    !> Coefficient of speed fluctuation reached.
+    real(wp) :: delta = 0.0_wp
+    !> Largest and smallest speed, rad/s, and their angles, rad.
+    real(wp) :: omega_max = 0.0_wp, phi_max = 0.0_wp, omega_min = 0.0_wp, phi_min = 0.0_wp
+    !> Period of the cycle, s.
+    real(wp) :: period = 0.0_wp
+    !> Work of the loads over the cycle per turn (= -2 pi M_d), J.
+    real(wp) :: load_work = 0.0_wp
+  end type cycle_t
+
+  !> The motion and the reduced quantities at one input angle.
+  type :: motion_t
+    !> Input speed, rad/s.
+    real(wp) :: omega = 0.0_wp
+    !> Input acceleration, rad/s^2.
+    real(wp) :: eps = 0.0_wp
+    !> Time from phi0, s.
+    real(wp) :: t = 0.0_wp
+    !> Change of kinetic energy from phi0, J.
+    real(wp) :: dt = 0.0_wp
+    !> J_red with j_rotor, kg*m^2.
+    real(wp) :: j = 0.0_wp
+    !> dJ_red/dphi, kg*m^2/rad.
+    real(wp) :: dj = 0.0_wp
+    !> M_red, N*m.
+    real(wp) :: m = 0.0_wp
+  end type motion_t
+
+contains
+
+  !> The panels of the cycle phi0 .. phi0 + 2 pi (load switches `breaks`, rad, as bounds),
+  !> J_red and the work of M_red at their bounds, and M_d of zero net work; `where` names the
+  !> deck in messages.
+  pure subroutine cycle_setup(source, phi0, breaks, j_rotor, omega_mean, where, cycle, error)
+    !> The mechanism's reduced quantities.
+    class(reduced_source_t), intent(in) :: source
+    !> First input angle, rad.
+    real(wp), intent(in) :: phi0
+    !> Input angles where a load switches, rad (any turn; taken modulo 2 pi).
+    real(wp), intent(in) :: breaks(:)
+    !> Rotor's moment of inertia reduced to the input, kg*m^2.
+    real(wp), intent(in) :: j_rotor
+    !> Mean speed, rad/s (> 0).
+    real(wp), intent(in) :: omega_mean
+    !> "deck.nml: &group" for messages.
+    character(*), intent(in) :: where
+    type(cycle_t), intent(out) :: cycle
+    type(error_t), allocatable, intent(out) :: error
+    real(wp), allocatable :: bounds(:)
+    real(wp) :: b, w, span, c, h
+    type(reduced_t) :: red
+    integer :: i, k, np, pieces, q
+
+    cycle%phi0 = phi0
+    cycle%j_rotor = j_rotor
+    cycle%omega_mean = omega_mean
+    ! piece bounds: phi0, the switches inside the turn (sorted, distinct), phi0 + 2 pi
+    allocate (bounds(0))
+    bounds = [phi0]
+    do i = 1, size(breaks)
+      b = phi0 + modulo(breaks(i) - phi0, 2.0_wp * pi)
+      if (b - phi0 <= 1.0e-12_wp .or. phi0 + 2.0_wp * pi - b <= 1.0e-12_wp) cycle
+      if (any(abs(bounds - b) <= 1.0e-12_wp)) cycle
+      bounds = [bounds, b]
+    end do
+    bounds = [bounds, phi0 + 2.0_wp * pi]
+    call sort(bounds)
+    ! panels
+    np = 0
+    do i = 1, size(bounds) - 1
+      np = np + max(1, ceiling((bounds(i + 1) - bounds(i)) / panel_max - 1.0e-9_wp))
+    end do
+    allocate (cycle%node(0:np), cycle%dt(0:np), cycle%j(0:np), cycle%time(0:np))
+    k = 0
+    cycle%node(0) = phi0
+    do i = 1, size(bounds) - 1
+      span = bounds(i + 1) - bounds(i)
+      pieces = max(1, ceiling(span / panel_max - 1.0e-9_wp))
+      do q = 1, pieces - 1
+        k = k + 1
+        cycle%node(k) = bounds(i) + span * real(q, wp) / real(pieces, wp)
+      end do
+      k = k + 1
+      cycle%node(k) = bounds(i + 1)
+    end do
+    np = k
+    ! M_red at each panel's Gauss-Legendre points; its work at the bounds (stored in dt until
+    ! M_d is known)
+    cycle%basis = lagrange_basis()
+    allocate (cycle%m_gl(8, np), cycle%r_gl(8, np))
+    cycle%dt(0) = 0.0_wp
+    do k = 1, np
+      c = 0.5_wp * (cycle%node(k - 1) + cycle%node(k))
+      h = 0.5_wp * (cycle%node(k) - cycle%node(k - 1))
+      do q = 1, 8
+        red = source%at(c + h * gl_xi(q))
+        if (.not. red%ok) then
+          call dead_error(c + h * gl_xi(q), where, error)
+          return
+        end if
+        cycle%m_gl(q, k) = red%m
+      end do
+      w = h * sum(gl_wi * cycle%m_gl(:, k))
+      cycle%dt(k) = cycle%dt(k - 1) + w
+    end do
+    do k = 0, np
+      red = source%at(cycle%node(k))
+      if (.not. red%ok) then
+        call dead_error(cycle%node(k), where, error)
+        return
+      end if
+      cycle%j(k) = red%j + j_rotor
+    end do
+    cycle%load_work = cycle%dt(np)
+    cycle%m_d = -cycle%dt(np) / (2.0_wp * pi)
+    do k = 0, np
+      cycle%dt(k) = cycle%dt(k) + cycle%m_d * (cycle%node(k) - phi0)
+    end do
+    cycle%dt(np) = 0.0_wp
+    ! M_d < 0 is an engine's case (the loads drive: M_d is the consumer's constant moment);
+    ! a machine that M_d cannot carry through the cycle stops: cycle_given's and
+    ! cycle_steady's errors
+  end subroutine cycle_setup
+
+  !> The steady cycle with the flywheel that gives the coefficient of speed fluctuation
+  !> `delta` (after cycle_setup): J_fw by a root find on delta(J_fw), each value from the
+  !> speed law whose (omega_max + omega_min)/2 is the mean speed.
+  pure subroutine cycle_steady(source, delta, where, cycle, error)
+    class(reduced_source_t), intent(in) :: source
+    !> Coefficient of speed fluctuation asked for (> 0).
+    real(wp), intent(in) :: delta
+    character(*), intent(in) :: where
+    type(cycle_t), intent(inout) :: cycle
+    type(error_t), allocatable, intent(out) :: error
+    real(wp) :: x_lo, x_hi, d_lo, d_hi, x, d, j_ref, j_tb
+    integer :: it, side
+    logical :: ok
+
+    call textbook(cycle, delta, j_tb)
+    cycle%j_flywheel_textbook = j_tb
+    ! the bare machine (no flywheel)
+    call speed_law(source, cycle, 0.0_wp, d, ok)
+    if (ok) then
+      if (d <= delta) then
+        call fatal_error(error, exit_input, where//": delta: the machine without a flywheel already runs with "// &
+          "delta = "//real_str(d)//" <= "//real_str(delta)//" (j_rotor and the links suffice): no flywheel is "// &
+          "needed; give a smaller delta or dynamics = 'given' with j_flywheel = 0")
+        return
+      end if
+    end if
+    ! root find in x = 1/(J_fw + J_ref), where delta is nearly linear
+    j_ref = maxval(cycle%j)
+    x_lo = 1.0_wp / j_ref
+    ! upper end: a flywheel large enough that delta is below the asked one
+    x_hi = x_lo
+    do it = 1, 200
+      x_hi = x_hi * 0.25_wp
+      call speed_law(source, cycle, 1.0_wp / x_hi - j_ref, d_hi, ok)
+      if (ok .and. d_hi < delta) exit
+    end do
+    if (.not. (ok .and. d_hi < delta)) then
+      call fatal_error(error, exit_geometry, where//": dynamics: no flywheel gives delta = "//real_str(delta))
+      return
+    end if
+    x_lo = x_hi * 4.0_wp
+    call speed_law(source, cycle, 1.0_wp / x_lo - j_ref, d_lo, ok)
+    if (.not. ok) d_lo = 2.0_wp
+    ! Illinois regula falsi on d(x) - delta over [x_hi, x_lo]
+    side = 0
+    do it = 1, 200
+      x = x_hi + (delta - d_hi) * (x_lo - x_hi) / (d_lo - d_hi)
+      if (.not. (x > min(x_hi, x_lo) .and. x < max(x_hi, x_lo))) x = 0.5_wp * (x_hi + x_lo)
+      call speed_law(source, cycle, 1.0_wp / x - j_ref, d, ok)
+      if (.not. ok) d = 2.0_wp
+      if (abs(d - delta) <= 1.0e-14_wp * delta .or. abs(x_lo - x_hi) <= 1.0e-15_wp * x) exit
+      if (d > delta) then
+        x_lo = x
+        d_lo = d
+        if (side == -1) d_hi = delta + 0.5_wp * (d_hi - delta)
+        side = -1
+      else
+        x_hi = x
+        d_hi = d
+        if (side == 1) d_lo = delta + 0.5_wp * (d_lo - delta)
+        side = 1
+      end if
+    end do
+    call speed_law(source, cycle, 1.0_wp / x - j_ref, d, ok)
+    if (.not. ok) then
+      call fatal_error(error, exit_geometry, where//": dynamics: the speed law failed near the flywheel found")
+      return
+    end if
+    call finish_time(source, cycle)
+  end subroutine cycle_steady
+
+  !> The steady cycle with the flywheel `j_flywheel` (after cycle_setup): the speed law of
+  !> mean speed omega_mean and the delta it gives.
+  pure subroutine cycle_given(source, j_flywheel, where, cycle, error)
+    class(reduced_source_t), intent(in) :: source
+    !> Flywheel, kg*m^2 (>= 0).
+    real(wp), intent(in) :: j_flywheel
+    character(*), intent(in) :: where
+    type(cycle_t), intent(inout) :: cycle
+    type(error_t), allocatable, intent(out) :: error
+    real(wp) :: d, j_tb
+    logical :: ok
+    call speed_law(source, cycle, j_flywheel, d, ok)
+    if (.not. ok) then
+      call fatal_error(error, exit_input, where//": j_flywheel: with j_flywheel = "//real_str(j_flywheel)// &
+        " kg*m^2 the speed would fall to zero within the cycle at the mean speed omega1 = "// &
+        real_str(cycle%omega_mean)//" rad/s: M_d cannot carry the machine through; give a larger flywheel")
+      return
+    end if
+    if (d > 0.0_wp) then
+      call textbook(cycle, d, j_tb)
+      cycle%j_flywheel_textbook = j_tb
+    end if
+    call finish_time(source, cycle)
+  end subroutine cycle_given
+
+  !> Merzalov's estimate for `delta`: T_I = dT - (J_red - j_rotor) omega_m^2/2 over the panel
+  !> bounds, J_I = (max T_I - min T_I)/(delta omega_m^2), J_fw = J_I - j_rotor.
+  pure subroutine textbook(cycle, delta, j_fw)
+    type(cycle_t), intent(in) :: cycle
+    real(wp), intent(in) :: delta
+    real(wp), intent(out) :: j_fw
+    real(wp) :: t1(size(cycle%dt))
+    t1 = cycle%dt - (cycle%j - cycle%j_rotor) * cycle%omega_mean**2 / 2.0_wp
+    j_fw = (maxval(t1) - minval(t1)) / (delta * cycle%omega_mean**2) - cycle%j_rotor
+  end subroutine textbook
+
+  !> The speed law with flywheel `j_fw`: E0 such that (omega_max + omega_min)/2 = omega_mean
+  !> (Newton from above: omega is concave and increasing in E0), the extremes and `delta`;
+  !> `ok` false when no such law keeps omega > 0.
+  pure subroutine speed_law(source, cycle, j_fw, delta, ok)
+    class(reduced_source_t), intent(in) :: source
+    type(cycle_t), intent(inout) :: cycle
+    !> Flywheel, kg*m^2.
+    real(wp), intent(in) :: j_fw
+    real(wp), intent(out) :: delta
+    logical, intent(out) :: ok
+    real(wp) :: e0, f, df, w_max, w_min, p_max, p_min, step, wm
+    integer :: it
+    wm = cycle%omega_mean
+    e0 = 0.5_wp * (j_fw + maxval(cycle%j)) * wm**2 - minval(cycle%dt)
+    ok = .false.
+    delta = 0.0_wp
+    do it = 1, 100
+      if (.not. all(e0 + cycle%dt > 0.0_wp)) then
+        ok = .false.
+        return
+      end if
+      call extremes(source, cycle, j_fw, e0, w_max, p_max, w_min, p_min, ok)
+      if (.not. ok) return
+      f = 0.5_wp * (w_max + w_min) - wm
+      df = 0.5_wp * (1.0_wp / ((j_fw + j_at(source, cycle, p_max)) * w_max) + &
+                     1.0_wp / ((j_fw + j_at(source, cycle, p_min)) * w_min))
+      step = f / df
+      e0 = e0 - step
+      if (abs(step) <= 1.0e-15_wp * abs(e0) .or. abs(f) <= 1.0e-15_wp * wm) exit
+    end do
+    if (.not. all(e0 + cycle%dt > 0.0_wp)) then
+      ok = .false.
+      return
+    end if
+    call extremes(source, cycle, j_fw, e0, w_max, p_max, w_min, p_min, ok)
+    if (.not. ok) return
+    if (.not. w_min > 0.0_wp) then
+      ok = .false.
+      return
+    end if
+    cycle%j_flywheel = j_fw
+    cycle%e0 = e0
+    cycle%omega_max = w_max
+    cycle%phi_max = p_max
+    cycle%omega_min = w_min
+    cycle%phi_min = p_min
+    delta = (w_max - w_min) / wm
+    cycle%delta = delta
+  end subroutine speed_law
+
+  !> omega's largest and smallest value over the cycle and their angles: the extreme panel
+  !> bound, then the stationary point (eps = 0) in the two panels next to it.
+  pure subroutine extremes(source, cycle, j_fw, e0, w_max, p_max, w_min, p_min, ok)
+    class(reduced_source_t), intent(in) :: source
+    type(cycle_t), intent(in) :: cycle
+    real(wp), intent(in) :: j_fw, e0
+    real(wp), intent(out) :: w_max, p_max, w_min, p_min
+    logical, intent(out) :: ok
+    real(wp) :: w(0:size(cycle%node) - 1)
+    integer :: np, i
+    np = size(cycle%node) - 1
+    w = sqrt(2.0_wp * (e0 + cycle%dt) / (j_fw + cycle%j))
+    ok = all(w > 0.0_wp)
+    i = maxloc(w, 1) - 1
+    call refine(i, 1.0_wp, w_max, p_max)
+    i = minloc(w, 1) - 1
+    call refine(i, -1.0_wp, w_min, p_min)
+  contains
+    !> Best of node i and the stationary points in its two panels (sense +1: max).
+    pure subroutine refine(i, sense, w_best, p_best)
+      integer, intent(in) :: i
+      real(wp), intent(in) :: sense
+      real(wp), intent(out) :: w_best, p_best
+      real(wp) :: wx, px
+      integer :: lo, hi
+      w_best = w(i)
+      p_best = cycle%node(i)
+      ! panels next to node i (node 0 and node np are the same angle)
+      lo = i - 1
+      hi = i + 1
+      if (i == 0) lo = np - 1
+      if (i == np) hi = 1
+      call stationary(lo, sense, wx, px)
+      if (sense * (wx - w_best) > 0.0_wp) then
+        w_best = wx
+        p_best = px
+      end if
+      call stationary(hi - 1, sense, wx, px)
+      if (sense * (wx - w_best) > 0.0_wp) then
+        w_best = wx
+        p_best = px
+      end if
+      if (p_best >= cycle%node(np)) p_best = p_best - 2.0_wp * pi
+    end subroutine refine
+
+    !> The extreme of omega inside panel k (node k .. k+1), where eps = 0: bisection on the
+    !> sign of g = (J_fw + J_red) eps = M_d + M_red - dJ_red omega^2/2, which falls through 0 at
+    !> a largest omega (sense +1) and rises through 0 at a smallest (sense -1). Without such a
+    !> sign change in the panel, w_best = -sense*huge (the extreme is at a bound).
+    pure subroutine stationary(k, sense, w_best, p_best)
+      integer, intent(in) :: k
+      real(wp), intent(in) :: sense
+      real(wp), intent(out) :: w_best, p_best
+      real(wp) :: a, b, c, inset
+      integer :: it
+      w_best = -sense * huge(1.0_wp)
+      p_best = cycle%node(k)
+      inset = 1.0e-6_wp * (cycle%node(k + 1) - cycle%node(k))
+      a = cycle%node(k) + inset
+      b = cycle%node(k + 1) - inset
+      if (.not. (sense * g_of(a) > 0.0_wp .and. sense * g_of(b) < 0.0_wp)) return
+      do it = 1, 200
+        c = 0.5_wp * (a + b)
+        if (c <= a .or. c >= b) exit
+        if (sense * g_of(c) > 0.0_wp) then
+          a = c
+        else
+          b = c
+        end if
+      end do
+      p_best = 0.5_wp * (a + b)
+      w_best = omega_of(p_best)
+    end subroutine stationary
+
+    !> g = M_d + M_red - dJ_red omega^2/2 at phi.
+    pure real(wp) function g_of(phi)
+      real(wp), intent(in) :: phi
+      type(reduced_t) :: red
+      red = source%at(phi)
+      g_of = cycle%m_d + red%m - 0.5_wp * red%dj * omega_of(phi)**2
+    end function g_of
+
+    !> omega at phi inside the cycle.
+    pure real(wp) function omega_of(phi)
+      real(wp), intent(in) :: phi
+      real(wp) :: e
+      e = e0 + cycle_dT(cycle, phi)
+      omega_of = sqrt(2.0_wp * max(e, 0.0_wp) / (j_fw + j_at(source, cycle, phi)))
+    end function omega_of
+  end subroutine extremes
+
+  !> J_red with j_rotor at phi, kg*m^2.
+  pure real(wp) function j_at(source, cycle, phi)
+    class(reduced_source_t), intent(in) :: source
+    type(cycle_t), intent(in) :: cycle
+    real(wp), intent(in) :: phi
+    type(reduced_t) :: red
+    red = source%at(phi)
+    j_at = red%j + cycle%j_rotor
+  end function j_at
+
+  !> dT at phi (rad, taken into the cycle), J: the panel bound's value and the integral of the
+  !> interpolant through the panel's samples of M_red from there.
+  pure real(wp) function cycle_dT(cycle, phi) result(dt)
+    type(cycle_t), intent(in) :: cycle
+    real(wp), intent(in) :: phi
+    real(wp) :: x, h
+    integer :: k
+    call locate(cycle, phi, x, k)
+    h = 0.5_wp * (cycle%node(k + 1) - cycle%node(k))
+    dt = cycle%dt(k) + h * sum(cycle%m_gl(:, k + 1) * partial_weights(cycle, (x - cycle%node(k)) / h - 1.0_wp)) + &
+         cycle%m_d * (x - cycle%node(k))
+  end function cycle_dT
+
+  !> The weights of the samples for the integral from -1 to s (-1 <= s <= 1) of the
+  !> interpolant through the 8 Gauss-Legendre points.
+  pure function partial_weights(cycle, s) result(wt)
+    type(cycle_t), intent(in) :: cycle
+    real(wp), intent(in) :: s
+    real(wp) :: wt(8), moments(8), sp, sm
+    integer :: j
+    sp = s
+    sm = -1.0_wp
+    do j = 1, 8
+      moments(j) = (sp - sm) / real(j, wp)
+      sp = sp * s
+      sm = -sm
+    end do
+    wt = matmul(cycle%basis, moments)
+  end function partial_weights
+
+  !> Coefficients of xi^0 .. xi^7 of the 8 Lagrange polynomials through gl_xi (row i: L_i).
+  pure function lagrange_basis() result(basis)
+    real(wp) :: basis(8, 8), poly(8)
+    integer :: i, j, k, deg
+    do i = 1, 8
+      poly = 0.0_wp
+      poly(1) = 1.0_wp
+      deg = 0
+      do j = 1, 8
+        if (j == i) cycle
+        deg = deg + 1
+        do k = deg + 1, 2, -1
+          poly(k) = (poly(k - 1) - gl_xi(j) * poly(k)) / (gl_xi(i) - gl_xi(j))
+        end do
+        poly(1) = -gl_xi(j) * poly(1) / (gl_xi(i) - gl_xi(j))
+      end do
+      basis(i, :) = poly
+    end do
+  end function lagrange_basis
+
+  !> The panel k (node k <= x <= node k+1) of phi taken into the cycle as x.
+  pure subroutine locate(cycle, phi, x, k)
+    type(cycle_t), intent(in) :: cycle
+    real(wp), intent(in) :: phi
+    real(wp), intent(out) :: x
+    integer, intent(out) :: k
+    integer :: lo, hi, mid, np
+    np = size(cycle%node) - 1
+    x = phi
+    if (x < cycle%node(0) .or. x > cycle%node(np)) x = cycle%node(0) + modulo(x - cycle%node(0), 2.0_wp * pi)
+    lo = 0
+    hi = np
+    do while (hi - lo > 1)
+      mid = (lo + hi) / 2
+      if (cycle%node(mid) <= x) then
+        lo = mid
+      else
+        hi = mid
+      end if
+    end do
+    k = lo
+  end subroutine locate
+
+  !> 1/omega at each panel's Gauss-Legendre points and the time at the panel bounds,
+  !> t = int dphi/omega (8-point Gauss-Legendre per panel).
+  pure subroutine finish_time(source, cycle)
+    class(reduced_source_t), intent(in) :: source
+    type(cycle_t), intent(inout) :: cycle
+    real(wp) :: c, h, x
+    integer :: k, q
+    cycle%time(0) = 0.0_wp
+    do k = 1, size(cycle%node) - 1
+      c = 0.5_wp * (cycle%node(k - 1) + cycle%node(k))
+      h = 0.5_wp * (cycle%node(k) - cycle%node(k - 1))
+      do q = 1, 8
+        x = c + h * gl_xi(q)
+        cycle%r_gl(q, k) = 1.0_wp / sqrt(2.0_wp * (cycle%e0 + cycle_dT(cycle, x)) / &
+                                          (cycle%j_flywheel + j_at(source, cycle, x)))
+      end do
+      cycle%time(k) = cycle%time(k - 1) + h * sum(gl_wi * cycle%r_gl(:, k))
+    end do
+    cycle%period = cycle%time(size(cycle%node) - 1)
+  end subroutine finish_time
+
+  !> The motion at input angle phi (rad) of a solved cycle.
+  pure function motion_at(source, cycle, phi) result(mo)
+    class(reduced_source_t), intent(in) :: source
+    type(cycle_t), intent(in) :: cycle
+    real(wp), intent(in) :: phi
+    type(motion_t) :: mo
+    type(reduced_t) :: red
+    real(wp) :: x, h
+    integer :: k
+    red = source%at(phi)
+    mo%j = red%j + cycle%j_rotor
+    mo%dj = red%dj
+    mo%m = red%m
+    mo%dt = cycle_dT(cycle, phi)
+    mo%omega = sqrt(2.0_wp * max(cycle%e0 + mo%dt, 0.0_wp) / (cycle%j_flywheel + mo%j))
+    mo%eps = (cycle%m_d + mo%m - 0.5_wp * mo%dj * mo%omega**2) / (cycle%j_flywheel + mo%j)
+    call locate(cycle, phi, x, k)
+    h = 0.5_wp * (cycle%node(k + 1) - cycle%node(k))
+    mo%t = cycle%time(k) + h * sum(cycle%r_gl(:, k + 1) * partial_weights(cycle, (x - cycle%node(k)) / h - 1.0_wp))
+  end function motion_at
+
+  !> The error of a dead position met in the cycle.
+  pure subroutine dead_error(phi, where, error)
+    real(wp), intent(in) :: phi
+    character(*), intent(in) :: where
+    type(error_t), allocatable, intent(out) :: error
+    call fatal_error(error, exit_geometry, where//": dynamics: the cycle passes through a dead position (or one "// &
+      "that cannot be assembled) near the input angle "//real_str(phi * rad_to_deg)// &
+      " deg: the reduced quantities are undefined there")
+  end subroutine dead_error
+
+  !> Sort ascending (insertion; few values).
+  pure subroutine sort(x)
+    real(wp), intent(inout) :: x(:)
+    real(wp) :: t
+    integer :: i, j
+    do i = 2, size(x)
+      t = x(i)
+      j = i - 1
+      do while (j >= 1)
+        if (x(j) <= t) exit
+        x(j + 1) = x(j)
+        j = j - 1
+      end do
+      x(j + 1) = t
+    end do
+  end subroutine sort
+
+end module kinetostat_dynamics

@@ -1,0 +1,122 @@
+!> The dynamics variables a linkage deck may give (`dynamics`, `delta`, `j_rotor`,
+!> `j_flywheel`), validated alike for every mechanism, and the rule that a steady cycle
+!> covers exactly one turn of the input.
+module kinetostat_dynamics_deck
+  use kinetostat_kinds, only: wp
+  use kinetostat_error, only: error_t
+  use kinetostat_text, only: real_str
+  use kinetostat_deck, only: deck_context_t, deck_error, is_set, require_rule, optional_default, require_nonnegative
+  use kinetostat_dynamics, only: dynamics_none, dynamics_reduced, dynamics_steady, dynamics_given
+  implicit none
+  private
+  public :: dynamics_deck_t, read_dynamics_settings, require_one_turn, dynamics_mode_name
+
+  !> Validated dynamics settings of a deck.
+  type :: dynamics_deck_t
+    !> dynamics_none, dynamics_reduced, dynamics_steady or dynamics_given.
+    integer :: mode = dynamics_none
+    !> Coefficient of speed fluctuation asked for ('steady').
+    real(wp) :: delta = 0.0_wp
+    !> Rotor and gear train reduced to the input link, kg*m^2.
+    real(wp) :: j_rotor = 0.0_wp
+    !> Flywheel ('given'), kg*m^2.
+    real(wp) :: j_flywheel = 0.0_wp
+  end type dynamics_deck_t
+
+contains
+
+  !> The name of a mode as the deck writes it.
+  pure function dynamics_mode_name(mode) result(name)
+    integer, intent(in) :: mode
+    character(len=:), allocatable :: name
+    select case (mode)
+    case (dynamics_reduced)
+      name = "reduced"
+    case (dynamics_steady)
+      name = "steady"
+    case (dynamics_given)
+      name = "given"
+    case default
+      name = "none"
+    end select
+  end function dynamics_mode_name
+
+  !> Validate the dynamics variables as read (reals unset_real when not given; `mode_text`
+  !> blank when not given). `omega1` is the deck's crank speed (the mean speed with 'steady'
+  !> and 'given').
+  subroutine read_dynamics_settings(ctx, mode_text, delta, j_rotor, j_flywheel, omega1, dyn, error)
+    type(deck_context_t), intent(in) :: ctx
+    !> Value of `dynamics` ('none', 'reduced', 'steady', 'given'; blank: none).
+    character(*), intent(in) :: mode_text
+    !> Deck values (unset_real when not given).
+    real(wp), intent(in) :: delta, j_rotor, j_flywheel, omega1
+    type(dynamics_deck_t), intent(out) :: dyn
+    type(error_t), allocatable, intent(out) :: error
+    select case (trim(adjustl(mode_text)))
+    case ("", "none")
+      dyn%mode = dynamics_none
+    case ("reduced")
+      dyn%mode = dynamics_reduced
+    case ("steady")
+      dyn%mode = dynamics_steady
+    case ("given")
+      dyn%mode = dynamics_given
+    case default
+      call deck_error(ctx, "dynamics", "unknown value '"//trim(adjustl(mode_text))// &
+        "' (expected 'none', 'reduced', 'steady' or 'given')", error)
+      return
+    end select
+    if (dyn%mode == dynamics_none) then
+      call require_rule(ctx, "delta", .not. any(is_set([delta, j_rotor, j_flywheel])), &
+        "delta, j_rotor and j_flywheel need dynamics = 'steady' or 'given'", error)
+      return
+    end if
+    dyn%j_rotor = optional_default(j_rotor, 0.0_wp)
+    call require_nonnegative(ctx, "j_rotor", dyn%j_rotor, error); if (allocated(error)) return
+    if (dyn%mode == dynamics_reduced) then
+      call require_rule(ctx, "delta", .not. any(is_set([delta, j_flywheel])), &
+        "delta and j_flywheel need dynamics = 'steady' or 'given'", error)
+      return
+    end if
+    call require_rule(ctx, "omega1", omega1 > 0.0_wp, "must be > 0 with dynamics = '"// &
+      trim(adjustl(mode_text))//"' (the mean speed; got "//real_str(omega1)//")", error)
+    if (allocated(error)) return
+    if (dyn%mode == dynamics_steady) then
+      call require_rule(ctx, "j_flywheel", .not. is_set(j_flywheel), &
+        "is found with dynamics = 'steady' (give it with dynamics = 'given')", error)
+      if (allocated(error)) return
+      call require_rule(ctx, "delta", is_set(delta), "missing: dynamics = 'steady' needs the coefficient "// &
+        "of speed fluctuation delta", error)
+      if (allocated(error)) return
+      call require_rule(ctx, "delta", delta > 0.0_wp .and. delta < 2.0_wp, &
+        "must be > 0 and < 2 (got "//real_str(delta)//")", error)
+      if (allocated(error)) return
+      dyn%delta = delta
+    else
+      call require_rule(ctx, "delta", .not. is_set(delta), "is found with dynamics = 'given' (give it with "// &
+        "dynamics = 'steady')", error)
+      if (allocated(error)) return
+      call require_rule(ctx, "j_flywheel", is_set(j_flywheel), "missing: dynamics = 'given' needs j_flywheel", error)
+      if (allocated(error)) return
+      call require_nonnegative(ctx, "j_flywheel", j_flywheel, error); if (allocated(error)) return
+      dyn%j_flywheel = j_flywheel
+    end if
+  end subroutine read_dynamics_settings
+
+  !> A steady cycle covers exactly one turn: the steps phi_start + (k-1) dphi, k = 1..n, end
+  !> at phi_start + 360 deg.
+  pure subroutine require_one_turn(ctx, dphi, n, error)
+    type(deck_context_t), intent(in) :: ctx
+    !> Crank step, deg.
+    real(wp), intent(in) :: dphi
+    !> Number of steps.
+    integer, intent(in) :: n
+    type(error_t), allocatable, intent(out) :: error
+    real(wp) :: span
+    span = real(n - 1, wp) * dphi
+    call require_rule(ctx, "dphi", abs(span - 360.0_wp) <= 1.0e-9_wp * 360.0_wp, &
+      "the steps must cover exactly one turn of the crank with a steady cycle: (n - 1)*dphi = "// &
+      real_str(span)//" deg, not 360", error)
+  end subroutine require_one_turn
+
+end module kinetostat_dynamics_deck

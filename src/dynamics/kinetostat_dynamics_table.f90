@@ -1,0 +1,139 @@
+!> The machine dynamics in the step table, alike for every mechanism: the per-step columns
+!> (J_red, dJ_red, M_red; with a steady cycle also dT, omega1, eps1, t), the figures of the
+!> cycle (the DYNAMICS block and JSON "dynamics") and the self-check M1 = M_d.
+module kinetostat_dynamics_table
+  use kinetostat_kinds, only: wp, rad_to_deg
+  use kinetostat_step_table, only: step_table_t, col_moment, col_other
+  use kinetostat_dynamics, only: cycle_t, motion_t, dynamics_none, dynamics_reduced, dynamics_steady, dynamics_given
+  use kinetostat_dynamics_deck, only: dynamics_deck_t, dynamics_mode_name
+  implicit none
+  private
+  public :: note_constant_speed_cost, echo_dynamics, add_dynamics_columns, put_dynamics_values, put_dynamics_figures, &
+    note_drive_deviation
+
+contains
+
+  !> The INPUT DATA echo of the dynamics settings (nothing for dynamics = 'none').
+  pure subroutine echo_dynamics(table, dyn)
+    type(step_table_t), intent(inout) :: table
+    type(dynamics_deck_t), intent(in) :: dyn
+    if (dyn%mode == dynamics_none) return
+    call table%echo_text("DYNAMICS", dynamics_mode_name(dyn%mode))
+    if (dyn%mode == dynamics_steady) call table%echo_real("DELTA", dyn%delta, "")
+    call table%echo_real("J_ROTOR", dyn%j_rotor, "kg*m^2")
+    if (dyn%mode == dynamics_given) call table%echo_real("J_FLYWHEEL", dyn%j_flywheel, "kg*m^2")
+  end subroutine echo_dynamics
+
+  !> Append the dynamics columns of `mode` (nothing for dynamics_none).
+  pure subroutine add_dynamics_columns(table, mode)
+    type(step_table_t), intent(inout) :: table
+    !> dynamics_* mode.
+    integer, intent(in) :: mode
+    if (mode == dynamics_none) return
+    call table%add_column("J_red", "kg*m^2", col_other)
+    call table%add_column("dJ_red", "kg*m^2/rad", col_other)
+    call table%add_column("M_red", "N*m", col_moment)
+    if (mode == dynamics_reduced) return
+    call table%add_column("dT", "J", col_other)
+    call table%add_column("omega1", "rad/s", col_other)
+    call table%add_column("eps1", "rad/s^2", col_other)
+    call table%add_column("t", "s", col_other)
+  end subroutine add_dynamics_columns
+
+  !> The dynamics values of row `k` (the columns add_dynamics_columns made).
+  pure subroutine put_dynamics_values(table, k, mode, motion)
+    type(step_table_t), intent(inout) :: table
+    integer, intent(in) :: k
+    integer, intent(in) :: mode
+    !> The motion and the reduced quantities at the row's input angle.
+    type(motion_t), intent(in) :: motion
+    integer :: c
+    if (mode == dynamics_none) return
+    c = table%column_index("J_red")
+    table%rows(c:c + 2, k) = [motion%j, motion%dj, motion%m]
+    if (mode == dynamics_reduced) return
+    table%rows(c + 3:c + 6, k) = [motion%dt, motion%omega, motion%eps, motion%t]
+  end subroutine put_dynamics_values
+
+  !> The figures of a solved cycle (first block only); `delta_asked` > 0 with 'steady'.
+  pure subroutine put_dynamics_figures(table, mode, cycle, delta_asked)
+    type(step_table_t), intent(inout) :: table
+    integer, intent(in) :: mode
+    type(cycle_t), intent(in) :: cycle
+    real(wp), intent(in) :: delta_asked
+    if (mode < dynamics_steady .or. .not. table%first_block()) return
+    call table%dynamics_real("M_d", cycle%m_d, "N*m")
+    call table%dynamics_real("J_rotor", cycle%j_rotor, "kg*m^2")
+    call table%dynamics_real("J_red_min", minval(cycle%j), "kg*m^2")
+    call table%dynamics_real("J_red_max", maxval(cycle%j), "kg*m^2")
+    call table%dynamics_real("J_flywheel", cycle%j_flywheel, "kg*m^2")
+    if (cycle%delta > 0.0_wp) then
+      call table%dynamics_real("J_flywheel_textbook", cycle%j_flywheel_textbook, "kg*m^2")
+      if (cycle%j_flywheel > 0.0_wp) call table%dynamics_real("textbook_difference", &
+        100.0_wp * (cycle%j_flywheel_textbook - cycle%j_flywheel) / cycle%j_flywheel, "%")
+    end if
+    call table%dynamics_real("omega_mean", cycle%omega_mean, "rad/s")
+    call table%dynamics_real("omega_max", cycle%omega_max, "rad/s")
+    call table%dynamics_real("phi_omega_max", cycle%phi_max * rad_to_deg, "deg")
+    call table%dynamics_real("omega_min", cycle%omega_min, "rad/s")
+    call table%dynamics_real("phi_omega_min", cycle%phi_min * rad_to_deg, "deg")
+    if (delta_asked > 0.0_wp) call table%dynamics_real("delta_asked", delta_asked, "")
+    call table%dynamics_real("delta", cycle%delta, "")
+    call table%dynamics_real("period", cycle%period, "s")
+  end subroutine put_dynamics_figures
+
+  !> The self-check of the true motion: the largest |M1 - M_d| / scale over the blocks so far.
+  pure subroutine note_drive_deviation(table, worst, scale)
+    type(step_table_t), intent(inout) :: table
+    !> Largest |M1 - M_d| of the rows of the block, N*m.
+    real(wp), intent(in) :: worst
+    !> Moment scale: |M_d|, or the loads' and inertia's moments when M_d = 0, N*m.
+    real(wp), intent(in) :: scale
+    if (table%first_block()) table%max_drive_deviation = 0.0_wp
+    if (scale > 0.0_wp) table%max_drive_deviation = max(table%max_drive_deviation, worst / scale)
+  end subroutine note_drive_deviation
+
+  !> What the constant-speed assumption costs for one force column: its peak over the run with
+  !> the true motion and with omega1 = omega_m constant (the largest over the blocks so far),
+  !> and their difference in percent of the constant-speed peak (DYNAMICS block records
+  !> <name>_peak, <name>_peak_constant_speed, <name>_peak_difference).
+  pure subroutine note_constant_speed_cost(table, name, peak_true, peak_const)
+    type(step_table_t), intent(inout) :: table
+    !> Force column ("F16").
+    character(*), intent(in) :: name
+    !> Largest magnitude of the block with the true motion, N.
+    real(wp), intent(in) :: peak_true
+    !> The same at constant speed, N.
+    real(wp), intent(in) :: peak_const
+    integer :: i
+    real(wp) :: t, c
+    i = record_index(name//"_peak")
+    if (i == 0) then
+      call table%dynamics_real(name//"_peak", peak_true, "N")
+      call table%dynamics_real(name//"_peak_constant_speed", peak_const, "N")
+      call table%dynamics_real(name//"_peak_difference", 0.0_wp, "%")
+      i = size(table%dynamics) - 2
+    else
+      table%dynamics(i)%values(1) = max(table%dynamics(i)%values(1), peak_true)
+      table%dynamics(i + 1)%values(1) = max(table%dynamics(i + 1)%values(1), peak_const)
+    end if
+    t = table%dynamics(i)%values(1)
+    c = table%dynamics(i + 1)%values(1)
+    table%dynamics(i + 2)%values(1) = 0.0_wp
+    if (c > 0.0_wp) table%dynamics(i + 2)%values(1) = 100.0_wp * (t - c) / c
+  contains
+    pure integer function record_index(key)
+      character(*), intent(in) :: key
+      integer :: j
+      record_index = 0
+      if (.not. allocated(table%dynamics)) return
+      do j = 1, size(table%dynamics)
+        if (table%dynamics(j)%name == key) then
+          record_index = j
+          return
+        end if
+      end do
+    end function record_index
+  end subroutine note_constant_speed_cost
+
+end module kinetostat_dynamics_table

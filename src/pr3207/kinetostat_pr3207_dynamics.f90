@@ -1,0 +1,89 @@
+!> PR 3207's machine dynamics: its reduced quantities at any crank angle (the kernel's
+!> transfer functions and the two-value cutting force), the steady cycle of a deck, and the
+!> motion per step.
+module kinetostat_pr3207_dynamics
+  use kinetostat_kinds, only: wp, deg_to_rad
+  use kinetostat_error, only: error_t
+  use kinetostat_dynamics, only: reduced_t, reduced_source_t, cycle_t, motion_t, cycle_setup, cycle_steady, &
+    cycle_given, motion_at, dynamics_none, dynamics_reduced, dynamics_steady
+  use kinetostat_pr3207, only: pr3207_reduced
+  use kinetostat_pr3207_deck, only: pr3207_deck_t, pr3207_cut_force, pr3207_f5c, pr3207_phi1_deg
+  implicit none
+  private
+  public :: pr3207_source_t, pr3207_cycle, pr3207_motion
+
+  !> The reduced quantities of a PR 3207 deck at any crank angle.
+  type, extends(reduced_source_t) :: pr3207_source_t
+    !> The validated deck (two-value cutting force).
+    type(pr3207_deck_t) :: deck
+  contains
+    procedure :: at
+  end type pr3207_source_t
+
+contains
+
+  !> J_red (links only), dJ_red, M_red at crank angle phi (rad).
+  pure function at(self, phi) result(red)
+    class(pr3207_source_t), intent(in) :: self
+    real(wp), intent(in) :: phi
+    type(reduced_t) :: red
+    real(wp) :: f5c, r(3)
+    associate (d => self%deck)
+      f5c = pr3207_cut_force(phi / deg_to_rad, d%phi_cut_start, d%phi_cut_end, d%f5c_work, d%f5c_idle)
+      r = pr3207_reduced(d%p, phi, f5c)
+    end associate
+    red%j = r(1)
+    red%dj = r(2)
+    red%m = r(3)
+  end function at
+
+  !> The steady cycle of a deck with dynamics = 'steady' or 'given' (the cutting force's
+  !> switches are the quadrature's breakpoints).
+  pure subroutine pr3207_cycle(deck, path, cycle, error)
+    type(pr3207_deck_t), intent(in) :: deck
+    !> Deck path, for messages.
+    character(*), intent(in) :: path
+    type(cycle_t), intent(out) :: cycle
+    type(error_t), allocatable, intent(out) :: error
+    type(pr3207_source_t) :: source
+    character(len=:), allocatable :: where
+    source%deck = deck
+    where = path//": &pr3207"
+    call cycle_setup(source, deck%phi_start * deg_to_rad, [deck%phi_cut_start, deck%phi_cut_end] * deg_to_rad, &
+                     deck%dyn%j_rotor, deck%p%omega1, where, cycle, error)
+    if (allocated(error)) return
+    if (deck%dyn%mode == dynamics_steady) then
+      call cycle_steady(source, deck%dyn%delta, where, cycle, error)
+    else
+      call cycle_given(source, deck%dyn%j_flywheel, where, cycle, error)
+    end if
+  end subroutine pr3207_cycle
+
+  !> The motion at step k: of the cycle with a steady cycle, else the deck's constant speed
+  !> with the reduced quantities (dynamics = 'reduced').
+  pure function pr3207_motion(deck, cycle, k) result(mo)
+    type(pr3207_deck_t), intent(in) :: deck
+    type(cycle_t), intent(in) :: cycle
+    integer, intent(in) :: k
+    type(motion_t) :: mo
+    type(pr3207_source_t) :: source
+    real(wp) :: phi, r(3)
+    phi = pr3207_phi1_deg(deck, k) * deg_to_rad
+    if (deck%dyn%mode == dynamics_none) then
+      mo%omega = deck%p%omega1
+    else if (deck%dyn%mode == dynamics_reduced) then
+      r = pr3207_reduced(deck%p, phi, pr3207_f5c(deck, k))
+      mo%omega = deck%p%omega1
+      mo%j = r(1) + deck%dyn%j_rotor
+      mo%dj = r(2)
+      mo%m = r(3)
+    else
+      source%deck = deck
+      mo = motion_at(source, cycle, phi)
+      ! the step's own load at a switch angle (the cycle integrates over it)
+      r = pr3207_reduced(deck%p, phi, pr3207_f5c(deck, k))
+      mo%m = r(3)
+    end if
+  end function pr3207_motion
+
+end module kinetostat_pr3207_dynamics

@@ -1,0 +1,105 @@
+# Command-line tests of the machine dynamics stage (sourced by tools/test with test/cli/lib.sh).
+fw=data/pr3207_flywheel.nml
+
+# --- the bundled deck: delta reached, M1 = M_d in the footer, the columns, ru labels
+run_ks "$fw" --format json; cp "$out" "$cli_tmp/fw.json"
+[ "$rc" -eq 0 ] && pass || fail dynamics-json-exit "exit $rc: $(cat "$err")"
+if python3 - "$cli_tmp/fw.json" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))
+dy, cols = d["dynamics"], [c["name"] for c in d["columns"]]
+assert abs(dy["delta"] - 0.04) <= 1e-9 * 0.04, dy["delta"]
+assert abs((dy["omega_max"] + dy["omega_min"]) / 2 - 7.5) <= 1e-12 * 7.5
+assert d["selfcheck"]["max_drive_deviation"] <= 1e-9 and d["selfcheck"]["ok"]
+for c in ["J_red", "dJ_red", "M_red", "dT", "omega1", "eps1", "t"]:
+    assert c in cols, c
+i, m = cols.index("omega1"), cols.index("M1")
+rows = d["rows"]
+assert abs(rows[0][i] - rows[-1][i]) <= 1e-12 * 7.5          # periodic
+assert all(abs(r[m] - dy["M_d"]) <= 1e-9 * dy["M_d"] for r in rows)
+assert max(r[i] for r in rows) <= dy["omega_max"] * (1 + 1e-14)
+PY
+then pass; else fail dynamics-json-laws "delta, periodicity or M1 = M_d do not hold in $cli_tmp/fw.json"; fi
+run_ks "$fw" --lang ru
+if grep -q "ДИНАМИЧЕСКИЙ РАСЧЕТ" "$out" && grep -q "ПРИВЕДЕННЫЙ МОМЕНТ ИНЕРЦИИ" "$out" && grep -q "МАХОВИК" "$out"; then pass
+else fail dynamics-ru-labels "Russian DYNAMICS block missing"; fi
+run_ks "$fw"
+if grep -Eq "MAX \|M1 - M_d\|/\|M_d\| WITH THE TRUE MOTION +[0-9.E+-]+  OK" "$out"; then pass
+else fail dynamics-footer "no M1 = M_d footer line: $(tail -4 "$out")"; fi
+
+# --- 'given' with the flywheel found gives back delta; a huge flywheel gives the constant-speed
+# force magnitudes (angles of forces near zero are undefined)
+jfw=$(python3 -c "import json; print(repr(json.load(open('$cli_tmp/fw.json'))['dynamics']['J_flywheel']))")
+given=$(deck_with fw_given "$fw" "s/dynamics = 'steady', delta = 0.04/dynamics = 'given', j_flywheel = $jfw/")
+run_ks "$given" --format json
+if python3 -c "import json,sys; d=json.load(open(sys.argv[1])); sys.exit(0 if abs(d['dynamics']['delta']-0.04) <= 4e-11 else 1)" /dev/stdin <"$out"
+then pass; else fail dynamics-given-delta "delta with the found flywheel: $(grep -o '"delta": [^,]*' "$out")"; fi
+huge=$(deck_with fw_huge data/pr3207.nml "s/phi_start = 0, dphi = 30/phi_start = 0, dphi = 30, dynamics = 'given', j_flywheel = 1e12/")
+run_ks "$huge" --format csv
+cut -d, -f1,2,4,6,8,10 "$out" >"$cli_tmp/huge_forces.csv"
+cut -d, -f1,2,4,6,8,10 data/expected/pr3207.csv >"$cli_tmp/golden_forces.csv"
+if numdiff -q -s ' \t\n,' -r 1e-6 -a 1e-6 "$cli_tmp/golden_forces.csv" "$cli_tmp/huge_forces.csv" >/dev/null 2>&1; then pass
+else fail dynamics-huge-flywheel "forces with j_flywheel = 1e12 differ from the constant-speed golden"; fi
+red=$(deck_with fw_reduced data/pr3207.nml "s/phi_start = 0, dphi = 30/phi_start = 0, dphi = 30, dynamics = 'reduced'/")
+run_ks "$red" --format csv
+if [ "$(head -1 "$out")" = "phi1,F16,F16G,F21,F21G,F36,F36G,F34,F34G,F56,F56G,M1,J_red,dJ_red,M_red" ] && \
+   cmp -s <(cut -d, -f1-12 "$out") data/expected/pr3207.csv; then pass
+else fail dynamics-reduced-columns "dynamics = 'reduced': header '$(head -1 "$out")' or forces changed"; fi
+
+# --- every error of the stage, from a deck
+expect_input_error dynamics-unknown "dynamics: unknown value 'wobbly'" "$(deck_with dyn_unknown "$fw" "s/'steady'/'wobbly'/")"
+expect_input_error dynamics-delta-zero "delta: must be > 0 and < 2" "$(deck_with dyn_d0 "$fw" "s/delta = 0.04/delta = 0/")"
+expect_input_error dynamics-delta-negative "delta: must be > 0 and < 2" "$(deck_with dyn_dneg "$fw" "s/delta = 0.04/delta = -0.1/")"
+expect_input_error dynamics-delta-missing "delta: missing" "$(deck_with dyn_dmiss "$fw" "s/, delta = 0.04//")"
+expect_input_error dynamics-no-flywheel-needed "no flywheel is needed" "$(deck_with dyn_big_rotor "$fw" "s/j_rotor = 0.6/j_rotor = 5000/")"
+expect_input_error dynamics-not-one-turn "exactly one turn" "$(deck_with dyn_turn "$fw" "s/dphi = 1 /dphi = 1, n = 181 /")"
+# loads that do net positive work (an engine's case): M_d < 0 is the consumer's moment, M1 = M_d
+run_ks "$(deck_with dyn_engine "$fw" "s/f5c_work = 3000/f5c_work = -3000/")" --format json
+if [ "$rc" -eq 0 ] && python3 -c "import json,sys; d=json.load(open(sys.argv[1])); sys.exit(0 if d['dynamics']['M_d'] < 0 and d['selfcheck']['ok'] else 1)" "$out"
+then pass; else fail dynamics-negative-md "loads driving the machine: exit $rc, $(head -c 300 "$err")"; fi
+expect_input_error dynamics-machine-stops "the speed would fall to zero" "$(deck_with dyn_stop "$fw" "s/dynamics = 'steady', delta = 0.04/dynamics = 'given', j_flywheel = 0/")"
+expect_input_error dynamics-omega-positive "omega1: must be > 0" "$(deck_with dyn_w0 "$fw" "s/omega1 = 7.5 /omega1 = -7.5 /")"
+expect_input_error dynamics-per-step-load "two-value form" "$(deck_with dyn_array data/pr3207.nml "s/f5c_work = 3000, f5c_idle = 0/f5c = 13*100, dynamics = 'steady', delta = 0.1/; /phi_cut_/d")"
+expect_input_error dynamics-delta-without "need dynamics" "$(deck_with dyn_stray data/pr3207.nml "s/dphi = 30/dphi = 30, delta = 0.1/")"
+expect_input_error dynamics-given-delta "is found with dynamics = 'given'" "$(deck_with dyn_gd "$fw" "s/dynamics = 'steady'/dynamics = 'given', j_flywheel = 300/")"
+
+# --- the generic twin gives the same numbers (relative 1e-9)
+run_ks "$fw" --format json; cp "$out" "$cli_tmp/twin_a.json"
+run_ks data/assur_pr3207_flywheel.nml --format json; cp "$out" "$cli_tmp/twin_b.json"
+if python3 - "$cli_tmp/twin_a.json" "$cli_tmp/twin_b.json" <<'PY'
+import json, sys
+a, b = (json.load(open(f)) for f in sys.argv[1:3])
+def close(x, y, scale): return abs(x - y) <= 1e-9 * max(abs(x), abs(y), scale)
+for k, v in a["dynamics"].items():        # the peaks are named by each deck's pairs
+    if k in b["dynamics"]:
+        assert close(v, b["dynamics"][k], 1e-12), (k, v, b["dynamics"][k])
+assert close(a["dynamics"]["F21_peak"], b["dynamics"]["F21_peak"], 1e-12)
+ca, cb = [c["name"] for c in a["columns"]], [c["name"] for c in b["columns"]]
+for name in ["phi1", "M1", "J_red", "dJ_red", "M_red", "dT", "omega1", "eps1", "t"]:
+    i, j = ca.index(name), cb.index(name)
+    scale = max(abs(r[i]) for r in a["rows"])
+    for ra, rb in zip(a["rows"], b["rows"]):
+        assert close(ra[i], rb[j], scale), (name, ra[i], rb[j])
+PY
+then pass; else fail dynamics-generic-twin "data/assur_pr3207_flywheel.nml differs from data/pr3207_flywheel.nml"; fi
+expect_input_error dynamics-assur-actuator "not with a linear actuator" "$(deck_with dyn_act data/assur_pr3050.nml "s/^\/$/  dynamics = 'steady', delta = 0.05\n\//")"
+expect_input_error dynamics-dead-position "the cycle passes through a dead position" "$(deck_with dyn_dead data/assur_toggle.nml "s/, n = 3//; s/^\/$/  dynamics = 'steady', delta = 0.05\n\//")" 3
+expect_input_error dynamics-assur-friction "friction in the pairs" "$(deck_with dyn_fr data/assur_pr3207_flywheel.nml "s/crank_s = 0, 0 /crank_s = 0, 0, crank_f = 0.1, crank_r = 0.02 /")"
+
+# --- --format summary carries the figures of the DYNAMICS block
+run_ks "$fw" --format summary
+if python3 - "$out" "$cli_tmp/fw.json" <<'PY'
+import csv, json, sys
+h, v = list(csv.reader(open(sys.argv[1])))
+d = json.load(open(sys.argv[2]))["dynamics"]
+for k in ["M_d", "J_flywheel", "J_flywheel_textbook", "omega_max", "omega_min", "delta", "F16_peak_difference"]:
+    assert abs(float(v[h.index(k)]) - d[k]) <= 1e-12 * abs(d[k]), k
+PY
+then pass; else fail dynamics-summary "--format summary lacks the dynamics figures: $(head -c 300 "$out")"; fi
+
+# --- the T.FTN six-bar: the reduced quantities (its load is per step: no steady cycle)
+run_ks "$(deck_with six_red data/sixbar.nml "s/^\/$/  dynamics = 'reduced', j_rotor = 0.5\n\//")" --format csv
+if [ "$rc" -eq 0 ] && head -1 "$out" | grep -q ",M1,J_red,dJ_red,M_red$" && \
+   cmp -s <(cut -d, -f1-15 "$out") data/expected/sixbar.csv; then pass
+else fail dynamics-sixbar-reduced "exit $rc, header '$(head -1 "$out")' or the forces changed"; fi
+expect_input_error dynamics-sixbar-steady "the six-bar has the reduced quantities only" "$(deck_with six_st data/sixbar.nml "s/^\/$/  dynamics = 'steady', delta = 0.05\n\//")"

@@ -1,0 +1,336 @@
+!> Machine dynamics tests: the reduced quantities against finite differences of the kinetic
+!> energy and against the static balancing moment; the steady cycle's own laws (delta reached,
+!> periodicity, energy balance, M1 = M_d at every step, 'given' gives back delta, a very large
+!> flywheel gives the constant-speed forces, a free machine keeps its energy).
+module test_dynamics
+  use kinetostat_kinds, only: wp, deg_to_rad, pi
+  use kinetostat_error, only: error_t
+  use kinetostat_deck, only: deck_source_t, load_deck
+  use kinetostat_pr3207, only: pr3207_params_t, pr3207_position_t, pr3207_position, pr3207_reduced, &
+    pr3207_step, pr3207_step_t
+  use kinetostat_pr3207_deck, only: pr3207_deck_t, read_pr3207_deck, pr3207_phi1_deg
+  use kinetostat_pr3207_layout, only: pr3207_solve
+  use kinetostat_pr3207_dynamics, only: pr3207_source_t, pr3207_cycle
+  use kinetostat_dynamics, only: reduced_t, cycle_t, motion_t, motion_at, dynamics_given
+  use kinetostat_assur, only: assur_step_t, assur_step
+  use kinetostat_assur_deck, only: assur_deck_t, read_assur_deck
+  use kinetostat_assur_dynamics, only: assur_reduced_at
+  use kinetostat_sixbar, only: sixbar_params_t, sixbar_position_t, sixbar_step_t, sixbar_position, sixbar_step, &
+    sixbar_reduced
+  use kinetostat_sixbar_deck, only: sixbar_deck_t, read_sixbar_deck, sixbar_phi1_deg
+  use test_harness, only: test_counts_t, check_close, check_true
+  implicit none
+  private
+  public :: run_dynamics_tests
+
+  !> The spec's reference data.
+  type(pr3207_params_t), parameter :: ref = pr3207_params_t(l_ab=0.11_wp, l_ac=0.38_wp, l_cd=0.72_wp, &
+    l_cs3=0.36_wp, m1=12.0_wp, m3=22.0_wp, m5=60.0_wp, j3=1.1_wp, omega1=7.5_wp, g=9.81_wp)
+
+contains
+
+  subroutine run_dynamics_tests(t)
+    type(test_counts_t), intent(inout) :: t
+    call test_pr3207_reduced(t)
+    call test_pr3207_cycle(t)
+    call test_assur_reduced(t)
+    call test_sixbar_reduced(t)
+  end subroutine run_dynamics_tests
+
+  !> The T.FTN six-bar (data/sixbar.nml): J_red = 2T at omega1 = 1 from finite differences of
+  !> the positions, dJ_red against differences of J_red, M_red = -M1 at rest.
+  subroutine test_sixbar_reduced(t)
+    type(test_counts_t), intent(inout) :: t
+    real(wp), parameter :: h = 1.0e-5_wp
+    type(sixbar_deck_t) :: deck
+    type(sixbar_params_t) :: still
+    type(error_t), allocatable :: error
+    type(deck_source_t) :: source
+    type(sixbar_position_t) :: pm, pp
+    type(sixbar_step_t) :: s
+    real(wp) :: red(3), rp(3), rm(3), phi, t2
+    character(len=32) :: at
+    integer :: k
+    call load_deck("data/sixbar.nml", source, error)
+    if (.not. allocated(error)) call read_sixbar_deck(source, deck, error)
+    call check_true(t, "read data/sixbar.nml", .not. allocated(error), "deck rejected")
+    if (allocated(error)) return
+    still = deck%p
+    still%omega1 = 0.0_wp
+    do k = 2, deck%n - 1, 3
+      phi = sixbar_phi1_deg(deck, k) * deg_to_rad
+      write (at, '(" at phi1=",f8.2)') phi / deg_to_rad
+      pm = sixbar_position(deck%p, phi - h)
+      pp = sixbar_position(deck%p, phi + h)
+      associate (p => deck%p)
+        t2 = p%j1 + p%m2 * sum(((pp%s2 - pm%s2) / (2 * h))**2) + p%j2 * ((pp%phi2 - pm%phi2) / (2 * h))**2 + &
+             p%j3 * ((pp%phi3 - pm%phi3) / (2 * h))**2 + p%m4 * sum(((pp%s4 - pm%s4) / (2 * h))**2) + &
+             p%j4 * ((pp%phi4 - pm%phi4) / (2 * h))**2 + p%m5 * ((pp%h(1) - pm%h(1)) / (2 * h))**2
+      end associate
+      red = sixbar_reduced(deck%p, phi, 1000.0_wp)
+      call check_close(t, "sixbar J_red vs 2T(FD)"//trim(at), t2, red(1), 1.0e-8_wp, 1.0e-10_wp)
+      rp = sixbar_reduced(deck%p, phi + h, 1000.0_wp)
+      rm = sixbar_reduced(deck%p, phi - h, 1000.0_wp)
+      call check_close(t, "sixbar dJ_red vs FD of J_red"//trim(at), (rp(1) - rm(1)) / (2 * h), red(2), 1.0e-6_wp, 1.0e-9_wp)
+      s = sixbar_step(still, phi, 1000.0_wp)
+      call check_close(t, "sixbar M_red vs -M1 (inertia off)"//trim(at), -s%m1, red(3), 1.0e-11_wp, 1.0e-9_wp)
+    end do
+  end subroutine test_sixbar_reduced
+
+  !> The generic engine's reduced quantities on the twin deck data/assur_pr3207.nml: equal to
+  !> PR 3207's (an independent derivation) and M_red = -M1 of its force analysis at rest.
+  subroutine test_assur_reduced(t)
+    type(test_counts_t), intent(inout) :: t
+    real(wp), parameter :: angles_deg(*) = [0.0_wp, 33.0_wp, 95.0_wp, 140.0_wp, 200.0_wp, 264.0_wp, 300.0_wp]
+    type(assur_deck_t) :: deck
+    type(error_t), allocatable :: error
+    type(deck_source_t) :: source
+    type(reduced_t) :: red
+    type(assur_step_t) :: step
+    real(wp) :: r(3), phi, f5c
+    character(len=32) :: at
+    integer :: i
+    call load_deck("data/assur_pr3207.nml", source, error)
+    if (.not. allocated(error)) call read_assur_deck(source, deck, error)
+    call check_true(t, "read data/assur_pr3207.nml", .not. allocated(error), "deck rejected")
+    if (allocated(error)) return
+    do i = 1, size(angles_deg)
+      write (at, '(" at phi1=",f7.2)') angles_deg(i)
+      phi = angles_deg(i) * deg_to_rad
+      f5c = merge(3000.0_wp, 0.0_wp, angles_deg(i) >= 95.0_wp .and. angles_deg(i) <= 265.0_wp)
+      red = assur_reduced_at(deck, phi)
+      r = pr3207_reduced(ref, phi, f5c)
+      call check_close(t, "assur J_red = pr3207 J_red"//trim(at), r(1), red%j, 1.0e-12_wp, 1.0e-14_wp)
+      call check_close(t, "assur dJ_red = pr3207 dJ_red"//trim(at), r(2), red%dj, 1.0e-11_wp, 1.0e-12_wp)
+      call check_close(t, "assur M_red = pr3207 M_red"//trim(at), r(3), red%m, 1.0e-12_wp, 1.0e-10_wp)
+      call assur_step(deck%mech, phi, 0.0_wp, 0.0_wp, [f5c], [real(wp) ::], step, error)
+      call check_true(t, "assur step at rest"//trim(at), .not. allocated(error), "error")
+      call check_close(t, "assur M_red vs -M1 (inertia off)"//trim(at), -step%m1, red%m, 1.0e-11_wp, 1.0e-9_wp)
+    end do
+  end subroutine test_assur_reduced
+
+  !> Kinetic energy of PR 3207's links at crank angle phi (rad) and omega1 = 1, from the
+  !> positions alone (central differences, step h).
+  pure real(wp) function kinetic_fd(p, phi, h) result(t2)
+    type(pr3207_params_t), intent(in) :: p
+    real(wp), intent(in) :: phi, h
+    type(pr3207_position_t) :: pm, pp
+    real(wp) :: v_s3(2), w3, v5
+    pm = pr3207_position(p, phi - h)
+    pp = pr3207_position(p, phi + h)
+    v_s3 = (pp%s3 - pm%s3) / (2 * h)
+    w3 = (modulo(pp%phi3 - pm%phi3 + pi, 2 * pi) - pi) / (2 * h)
+    v5 = (pp%y5 - pm%y5) / (2 * h)
+    t2 = 0.5_wp * (p%m3 * dot_product(v_s3, v_s3) + p%j3 * w3**2 + p%m5 * v5**2)
+  end function kinetic_fd
+
+  !> J_red = 2 T at omega1 = 1 (T from finite differences of the positions); dJ_red against
+  !> central differences of J_red; M_red against -M1 of a run with inertia off (omega1 = 0).
+  subroutine test_pr3207_reduced(t)
+    type(test_counts_t), intent(inout) :: t
+    !> FD step, rad; truncation ~h^2 ~ 1e-10 relative.
+    real(wp), parameter :: h = 1.0e-5_wp
+    real(wp), parameter :: angles_deg(*) = [0.0_wp, 5.0_wp, 47.0_wp, 95.0_wp, 181.0_wp, 250.0_wp, 333.0_wp]
+    type(pr3207_params_t) :: still
+    type(pr3207_step_t) :: s
+    real(wp) :: red(3), rp(3), rm(3), phi
+    character(len=32) :: at
+    integer :: i
+    still = ref
+    still%omega1 = 0.0_wp
+    do i = 1, size(angles_deg)
+      write (at, '(" at phi1=",f7.2)') angles_deg(i)
+      phi = angles_deg(i) * deg_to_rad
+      red = pr3207_reduced(ref, phi, 3000.0_wp)
+      call check_close(t, "pr3207 J_red vs 2T(FD)"//trim(at), 2 * kinetic_fd(ref, phi, h), red(1), 1.0e-8_wp, 1.0e-10_wp)
+      rp = pr3207_reduced(ref, phi + h, 3000.0_wp)
+      rm = pr3207_reduced(ref, phi - h, 3000.0_wp)
+      call check_close(t, "pr3207 dJ_red vs FD of J_red"//trim(at), (rp(1) - rm(1)) / (2 * h), red(2), &
+                       1.0e-7_wp, 1.0e-9_wp)
+      s = pr3207_step(still, phi, 3000.0_wp)
+      call check_close(t, "pr3207 M_red vs -M1 (inertia off)"//trim(at), -s%m1, red(3), 1.0e-11_wp, 1.0e-9_wp)
+    end do
+  end subroutine test_pr3207_reduced
+
+  !> The steady cycle of data/pr3207_flywheel.nml and its laws.
+  subroutine test_pr3207_cycle(t)
+    type(test_counts_t), intent(inout) :: t
+    type(pr3207_deck_t) :: deck, free
+    type(error_t), allocatable :: error
+    type(deck_source_t) :: source
+    type(cycle_t) :: cycle, given, big
+    call load_deck("data/pr3207_flywheel.nml", source, error)
+    if (.not. allocated(error)) call read_pr3207_deck(source, deck, error)
+    call check_true(t, "read data/pr3207_flywheel.nml", .not. allocated(error), "deck rejected")
+    if (allocated(error)) return
+    call pr3207_cycle(deck, "data/pr3207_flywheel.nml", cycle, error)
+    call check_true(t, "pr3207 steady cycle solved", .not. allocated(error), "error")
+    if (allocated(error)) return
+    call check_close(t, "pr3207 delta reached = delta asked", 0.04_wp, cycle%delta, 1.0e-9_wp, 0.0_wp)
+    call check_close(t, "pr3207 (omega_max + omega_min)/2 = omega1", 7.5_wp, &
+                     0.5_wp * (cycle%omega_max + cycle%omega_min), 1.0e-12_wp, 0.0_wp)
+    call check_close(t, "pr3207 delta from the extremes", 0.04_wp, (cycle%omega_max - cycle%omega_min) / 7.5_wp, &
+                     1.0e-9_wp, 0.0_wp)
+    call check_cycle_laws(t, "pr3207 steady", deck, cycle)
+    ! 'given' with the steady flywheel gives back delta
+    free = deck
+    free%dyn%mode = dynamics_given
+    free%dyn%j_flywheel = cycle%j_flywheel
+    call pr3207_cycle(free, "given", given, error)
+    call check_true(t, "pr3207 given cycle solved", .not. allocated(error), "error")
+    if (allocated(error)) return
+    call check_close(t, "pr3207 given J_fw gives back delta", 0.04_wp, given%delta, 1.0e-9_wp, 0.0_wp)
+    ! a very large flywheel: constant speed, the constant-speed reactions
+    free%dyn%j_flywheel = 1.0e9_wp
+    call pr3207_cycle(free, "big", big, error)
+    call check_true(t, "pr3207 huge flywheel cycle solved", .not. allocated(error), "error")
+    if (allocated(error)) return
+    call check_close(t, "pr3207 huge flywheel: omega_max = omega1", 7.5_wp, big%omega_max, 1.0e-8_wp, 0.0_wp)
+    call check_close(t, "pr3207 huge flywheel: omega_min = omega1", 7.5_wp, big%omega_min, 1.0e-8_wp, 0.0_wp)
+    call check_constant_speed_forces(t, free, big)
+    ! a free machine: no loads, no gravity
+    free%p%g = 0.0_wp
+    free%f5c_work = 0.0_wp
+    free%dyn%j_flywheel = 2.0_wp
+    call pr3207_cycle(free, "free", given, error)
+    call check_true(t, "pr3207 free machine cycle solved", .not. allocated(error), "error")
+    if (allocated(error)) return
+    call check_close(t, "pr3207 free machine: M_d = 0", 0.0_wp, given%m_d, 0.0_wp, 1.0e-12_wp)
+    call check_cycle_laws(t, "pr3207 free", free, given)
+    call check_free_energy(t, free, given)
+  end subroutine test_pr3207_cycle
+
+  !> Laws of a solved cycle: periodicity, dT against an independent composite Simpson
+  !> integral of M_d + M_red on 0.01 deg steps, the energy equation, eps = omega domega/dphi
+  !> (central differences), the extremes bound omega on a 0.01 deg grid, t(360) = period, and
+  !> M1 = M_d at every step of the force analysis with the true motion.
+  subroutine check_cycle_laws(t, name, deck, cycle)
+    type(test_counts_t), intent(inout) :: t
+    character(*), intent(in) :: name
+    type(pr3207_deck_t), intent(in) :: deck
+    type(cycle_t), intent(in) :: cycle
+    type(pr3207_source_t) :: source
+    type(motion_t) :: m0, m1, mp, mm
+    type(pr3207_step_t), allocatable :: steps(:)
+    real(wp), parameter :: h = 1.0e-5_wp
+    real(wp) :: phi, simpson, e_scale, w_hi, w_lo, worst
+    integer :: i, n
+    character(len=40) :: at
+    source%deck = deck
+    m0 = motion_at(source, cycle, 0.0_wp)
+    m1 = motion_at(source, cycle, 2 * pi)
+    call check_close(t, name//": omega(0) = omega(360)", m0%omega, m1%omega, 1.0e-12_wp, 0.0_wp)
+    call check_close(t, name//": t(360) = period", cycle%period, m1%t, 1.0e-12_wp, 0.0_wp)
+    e_scale = max(maxval(abs(cycle%dt)), 0.5_wp * (cycle%j_flywheel + maxval(cycle%j)) * cycle%omega_mean**2 * 1.0e-6_wp)
+    ! Simpson on 36000 intervals, with the switches of the cutting force (95, 265 deg) on its grid
+    n = 36000
+    simpson = 0.0_wp
+    w_hi = -huge(1.0_wp)
+    w_lo = huge(1.0_wp)
+    do i = 0, n
+      phi = 2 * pi * real(i, wp) / real(n, wp)
+      mp = motion_at(source, cycle, phi)
+      w_hi = max(w_hi, mp%omega)
+      w_lo = min(w_lo, mp%omega)
+      if (mod(i, 3000) == 0 .and. i > 0) then
+        write (at, '(" at ",f7.2," deg")') phi / deg_to_rad
+        call check_close(t, name//": dT vs Simpson"//trim(at), simpson_to(i), mp%dt, 0.0_wp, 1.0e-9_wp * e_scale)
+        call check_close(t, name//": energy equation"//trim(at), &
+          0.5_wp * (cycle%j_flywheel + m0%j) * m0%omega**2 + mp%dt, &
+          0.5_wp * (cycle%j_flywheel + mp%j) * mp%omega**2, 1.0e-12_wp, 0.0_wp)
+        if (abs(phi / deg_to_rad - 95.0_wp) > 0.1_wp .and. abs(phi / deg_to_rad - 265.0_wp) > 0.1_wp) then
+          mm = motion_at(source, cycle, phi - h)
+          m1 = motion_at(source, cycle, phi + h)
+          call check_close(t, name//": eps = d(omega^2/2)/dphi"//trim(at), &
+            (m1%omega**2 - mm%omega**2) / (4 * h), mp%eps, 1.0e-6_wp, 1.0e-9_wp)
+        end if
+      end if
+    end do
+    call check_true(t, name//": omega_max bounds omega on a 0.01 deg grid", w_hi <= cycle%omega_max * (1 + 1.0e-14_wp), &
+                    "grid max above omega_max")
+    call check_true(t, name//": omega_min bounds omega on a 0.01 deg grid", w_lo >= cycle%omega_min * (1 - 1.0e-14_wp), &
+                    "grid min below omega_min")
+    mp = motion_at(source, cycle, cycle%phi_max)
+    call check_close(t, name//": omega at phi_max", cycle%omega_max, mp%omega, 1.0e-12_wp, 0.0_wp)
+    mp = motion_at(source, cycle, cycle%phi_min)
+    call check_close(t, name//": omega at phi_min", cycle%omega_min, mp%omega, 1.0e-12_wp, 0.0_wp)
+    ! the force analysis with the true motion: M1 = M_d at every step
+    call pr3207_solve(deck, steps, cycle=cycle)
+    worst = maxval(abs(steps%m1 - cycle%m_d))
+    call check_true(t, name//": M1 = M_d at every step (1e-9 of the moment scale)", &
+      worst <= 1.0e-9_wp * max(abs(cycle%m_d), maxval(abs(steps%m1_power)), 1.0_wp), "worst |M1 - M_d| too large")
+    call check_true(t, name//": equilibrium and power balance with the true motion", &
+      maxval(steps%residual) <= 1.0e-9_wp .and. maxval(steps%mismatch) <= 1.0e-9_wp, "self-check above 1e-9")
+  contains
+    !> Composite Simpson integral of M_d + M_red over grid intervals 0 .. i (i even), pair by
+    !> pair with the one-sided values at the pair's ends (a load switches on a grid point).
+    real(wp) function simpson_to(i) result(w)
+      integer, intent(in) :: i
+      real(wp), parameter :: inset = 1.0e-9_wp
+      real(wp) :: x0, step
+      integer :: j
+      step = 2 * pi / real(n, wp)
+      w = 0.0_wp
+      do j = 0, i - 2, 2
+        x0 = step * real(j, wp)
+        w = w + f(x0 + inset) + 4 * f(x0 + step) + f(x0 + 2 * step - inset)
+      end do
+      w = w * step / 3
+    end function simpson_to
+
+    !> M_d + M_red at x (rad).
+    real(wp) function f(x)
+      real(wp), intent(in) :: x
+      type(reduced_t) :: red
+      red = source%at(x)
+      f = cycle%m_d + red%m
+    end function f
+  end subroutine check_cycle_laws
+
+  !> A very large flywheel: the reactions of the constant-speed run (relative 1e-6 of the
+  !> step's largest force).
+  subroutine check_constant_speed_forces(t, deck, cycle)
+    type(test_counts_t), intent(inout) :: t
+    type(pr3207_deck_t), intent(in) :: deck
+    type(cycle_t), intent(in) :: cycle
+    type(pr3207_step_t), allocatable :: true_steps(:), const_steps(:)
+    real(wp) :: worst, scale
+    integer :: k
+    call pr3207_solve(deck, true_steps, cycle=cycle)
+    call pr3207_solve(deck, const_steps)
+    worst = 0.0_wp
+    do k = 1, size(true_steps)
+      scale = max(norm2(const_steps(k)%f16), norm2(const_steps(k)%f21), norm2(const_steps(k)%f36), 1.0_wp)
+      worst = max(worst, norm2(true_steps(k)%f16 - const_steps(k)%f16) / scale, &
+                  norm2(true_steps(k)%f21 - const_steps(k)%f21) / scale, &
+                  norm2(true_steps(k)%f36 - const_steps(k)%f36) / scale, &
+                  norm2(true_steps(k)%f34 - const_steps(k)%f34) / scale)
+    end do
+    call check_close(t, "pr3207 huge flywheel: reactions of the constant-speed run", 0.0_wp, worst, 0.0_wp, 1.0e-6_wp)
+  end subroutine check_constant_speed_forces
+
+  !> A free machine (no loads, no gravity): 1/2 (J_fw + J_red) omega^2 constant, M1 = 0.
+  subroutine check_free_energy(t, deck, cycle)
+    type(test_counts_t), intent(inout) :: t
+    type(pr3207_deck_t), intent(in) :: deck
+    type(cycle_t), intent(in) :: cycle
+    type(pr3207_source_t) :: source
+    type(pr3207_step_t), allocatable :: steps(:)
+    type(motion_t) :: mo
+    real(wp) :: e0, e, scale
+    integer :: k
+    source%deck = deck
+    mo = motion_at(source, cycle, 0.0_wp)
+    e0 = 0.5_wp * (cycle%j_flywheel + mo%j) * mo%omega**2
+    do k = 1, deck%n, 30
+      mo = motion_at(source, cycle, pr3207_phi1_deg(deck, k) * deg_to_rad)
+      e = 0.5_wp * (cycle%j_flywheel + mo%j) * mo%omega**2
+      call check_close(t, "pr3207 free machine: kinetic energy constant", e0, e, 1.0e-13_wp, 0.0_wp)
+    end do
+    call pr3207_solve(deck, steps, cycle=cycle)
+    scale = (cycle%j_flywheel + maxval(cycle%j)) * cycle%omega_mean**2
+    call check_close(t, "pr3207 free machine: M1 = 0 at every step", 0.0_wp, maxval(abs(steps%m1)), 0.0_wp, &
+                     1.0e-12_wp * scale)
+  end subroutine check_free_energy
+
+end module test_dynamics
