@@ -7,14 +7,14 @@ _kinetostat() {
   cur="${COMP_WORDS[COMP_CWORD]}"
   prev="${COMP_WORDS[COMP_CWORD-1]}"
   local kinds="pr3207 pr3050 sixbar assur gears cam fourbar engine"
-  local run_opts="-o --output --set --format --pairs --at --lang --kinematics --frame --quiet --strict --help --version"
+  local run_opts="-o --output --set --format --pairs --at --lang --kinematics --frame --max-deck-size --allow-selfcheck-failure --quiet --strict --help --version"
   case "$prev" in
     --format) COMPREPLY=($(compgen -W "table csv json svg summary" -- "$cur")); return ;;
     --frame) COMPREPLY=($(compgen -W "global link" -- "$cur")); return ;;
     --lang) COMPREPLY=($(compgen -W "en ru" -- "$cur")); return ;;
     -o|--output) COMPREPLY=($(compgen -f -- "$cur")); return ;;
     template) COMPREPLY=($(compgen -W "$kinds" -- "$cur")); return ;;
-    --rtol|--atol|--set|--pairs|--at|--vary|--part|--jobs) COMPREPLY=(); return ;;
+    --rtol|--atol|--set|--pairs|--at|--vary|--part|--jobs|--max-deck-size) COMPREPLY=(); return ;;
   esac
   case "${COMP_WORDS[1]}" in
     diff)
@@ -28,7 +28,7 @@ _kinetostat() {
       COMPREPLY=($(compgen -W "-o --output" -- "$cur")); return ;;
     sweep)
       if [[ "$cur" == -* ]]; then
-        COMPREPLY=($(compgen -W "--vary --set --part --jobs -o --output --quiet --strict --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--vary --set --part --jobs -o --output --max-deck-size --allow-selfcheck-failure --quiet --strict --help" -- "$cur"))
       else
         COMPREPLY=($(compgen -f -X '!*.nml' -- "$cur") $(compgen -d -- "$cur"))
       fi

@@ -21,6 +21,7 @@ program kinetostat_tests
   use test_blocks, only: run_blocks_tests
   use test_records, only: run_records_tests
   use test_linkage, only: run_linkage_tests
+  use test_hostile, only: run_hostile_tests
   use test_dynamics, only: run_dynamics_tests
   use test_shaking, only: run_shaking_tests
   use, intrinsic :: iso_fortran_env, only: error_unit
@@ -28,7 +29,7 @@ program kinetostat_tests
   !> Suite names, in the order they run.
   character(*), parameter :: suite_names(*) = [character(len=11) :: &
     "foundation", "pr3207", "pr3050", "sixbar", "gears", "cam", "assur", "assur_ext", "friction", "io", &
-    "kinematics", "svg", "decimal", "lapack", "blocks", "records", "shaking", "dynamics", "linkage"]
+    "kinematics", "svg", "decimal", "lapack", "blocks", "records", "shaking", "dynamics", "hostile", "linkage"]
   type(test_counts_t) :: t
   logical :: selected(size(suite_names))
   integer :: i
@@ -79,6 +80,7 @@ contains
     type(test_counts_t), intent(inout) :: t
     select case (name)
     case ("foundation"); call run_foundation_tests(t)
+    case ("hostile"); call run_hostile_tests(t)
     case ("pr3207"); call run_pr3207_tests(t)
     case ("linkage"); call run_linkage_tests(t)
     case ("dynamics"); call run_dynamics_tests(t)

@@ -18,6 +18,18 @@ that the program either works or fails cleanly:
   runtime-text  no Fortran runtime text ("Fortran runtime error", "Error termination",
                 "Backtrace", "Program received signal") in stdout, stderr or the file
 
+Besides the value mutations and truncations, the classes of hostile input: a deck cut just
+after the '(' of an array or type name, or with such a '(' left open in mid-deck; very long
+quoted texts (100 000 to 400 000 characters); comments in 8-bit encodings (CP1251 with the
+byte 0xFF, Latin-1) in and before the group, and 0xFF inside a text; a --set value with a
+newline or an unclosed '('; and endless input (/dev/zero, `yes | kinetostat -`), which must
+stop with exit 2 within the timeout.
+
+--seed N changes the random choices (tools/test runs the fixed set, then a second run with
+a seed from the date, printed, so that a failure can be reproduced); --scale K draws K times
+as many mutations per deck (--scale 14: about 12 000 decks); --budget S stops starting new
+decks after S seconds (the decks not run are counted as skipped, never as failed).
+
 Prints one line per failed (deck, check) with the mutation, the failed check and a
 reproducer (the deck is written to OUT/NAME.nml), then per check "check NAME: ok" or
 "check NAME: FAIL (n decks)", then one summary line. Exit status 0 only if nothing failed.
@@ -34,10 +46,16 @@ import shutil
 import subprocess
 import sys
 import tempfile
+import time
 
 SEED = 20261121
 #: Seconds per run of the binary (a healthy run takes milliseconds).
 TIMEOUT = 10
+#: Seconds per run of a deck with a text or comment of 10^5 characters or more: its failing
+#: READ is repeated ~15 times by the probe that finds the line, each over records as long as
+#: that line (1.2 s of processor time for 400 000 characters; on a loaded machine more than
+#: TIMEOUT of wall time). Still a hang detector.
+LONG_TIMEOUT = 60
 #: Every how-many-th deck also gets the -o FILE run (all of them: 1).
 OUTFILE_EVERY = 1
 CHECKS = ["exit-code", "non-finite", "error-shape", "no-leftover", "warning-shape", "runtime-text"]
@@ -174,19 +192,88 @@ def value_mutation(text, kind, rng):
     return "%s[%d]: %s -> %s" % (name, idx + 1, tok, new), text[:s] + new + text[e:]
 
 
-def derive_decks(data_dir):
-    """The fixed list of (name, description, deck bytes)."""
+#: An array or derived-type designator followed by '(' (outside comments and quotes).
+PAREN_RE = re.compile(r"[A-Za-z_]\w*\(")
+CP1251_COMMENT = "! \u0434\u0430\u043d\u043d\u044b\u0435 \u0434\u043b\u044f \u0440\u0430\u0441\u0447\u0451\u0442\u0430, \u044f".encode("cp1251")
+LATIN1_COMMENT = "! donn\u00e9es \u00e0 v\u00e9rifier, \u00ff".encode("latin-1")
+
+
+def hostile_mutations(text, raw, rng, scale):
+    """[(kind, description, bytes)] of the hostile-input classes for one deck."""
+    made = []
+    m = masked(text)
+    group = m.find("&")
+    parens = [hit.end() for hit in PAREN_RE.finditer(m) if group >= 0 and hit.start() > group]
+    for _ in range(2 * scale):
+        if not parens:
+            break
+        cut = rng.choice(parens)
+        made.append(("paren_cut", "cut after the '(' at byte %d" % cut, text[:cut].encode("utf-8")))
+        # the same '(' left open: the rest of its line dropped, the deck goes on
+        eol = text.find("\n", cut)
+        eol = len(text) if eol < 0 else eol
+        made.append(("paren_open", "'(' at byte %d left open, rest of its line dropped" % cut,
+                     (text[:cut] + text[eol:]).encode("utf-8")))
+    lines = text.split("\n")
+    group_line = next((i for i, l in enumerate(lines) if l.lstrip().startswith("&")), None)
+    if group_line is not None:
+        for _ in range(scale):
+            n = rng.choice([100000, 250000, 400000])
+            title = re.search(r"title\s*=\s*'[^']*'", text)
+            if title:
+                new = text[:title.start()] + "title = '" + "x" * n + "'" + text[title.end():]
+                made.append(("long_string", "title of %d characters" % n, new.encode("utf-8")))
+            at = rng.randrange(group_line + 1, len(lines) + 1)
+            new = "\n".join(lines[:at] + ["  " + rng.choice(["l", "f", "x", "phi_start"]) + " = '" + "y" * n + "'"] + lines[at:])
+            made.append(("long_string", "a text of %d characters for a variable at line %d" % (n, at + 1), new.encode("utf-8")))
+            at = rng.randrange(group_line + 1, len(lines) + 1)
+            new = "\n".join(lines[:at] + ["  ! " + "z" * n] + lines[at:])
+            made.append(("long_comment", "a comment of %d characters at line %d" % (n, at + 1), new.encode("utf-8")))
+        blines = raw.split(b"\n")
+        for _ in range(scale):
+            comment = rng.choice([CP1251_COMMENT, LATIN1_COMMENT])
+            at = rng.randrange(group_line + 1, len(blines))
+            where = rng.choice(["line", "after"])
+            if where == "line" or not blines[at].strip() or b"!" in blines[at] or b"'" in blines[at]:
+                new = blines[:at] + [b"  " + comment] + blines[at:]
+                desc = "8-bit comment line inserted at line %d" % (at + 1)
+            else:
+                new = blines[:at] + [blines[at] + b"  " + comment] + blines[at + 1:]
+                desc = "8-bit comment after line %d" % (at + 1)
+            made.append(("comment_8bit", desc, b"\n".join(new)))
+        made.append(("comment_8bit", "8-bit comment before the group", CP1251_COMMENT + b"\n" + raw))
+        title = re.search(rb"title\s*=\s*'", raw)
+        if title:
+            made.append(("ff_in_text", "byte 0xFF in the title", raw[:title.end()] + b"\xff" + raw[title.end():]))
+    return made
+
+
+#: Runs that are not a deck file: (name, description, how) with `how` one of these.
+SPECIAL_RUNS = [
+    ("endless_dev_zero", "kinetostat /dev/zero", "dev_zero"),
+    ("endless_dev_zero_small", "kinetostat /dev/zero --max-deck-size 100000", "dev_zero_small"),
+    ("endless_yes", "yes | kinetostat -", "yes"),
+    ("endless_yes_small", "yes | kinetostat - --max-deck-size 100000", "yes_small"),
+]
+#: --set values that must be one-line exit 2 errors (never a crash, never two lines).
+BAD_SETS = [b"title=dyad(", b"l_ab=dyad(", b"x=1\n2", b"name\nwith=1", b"dyad(1)%l2=(1", b"force(1)%value=f(",
+            b"l=\xff", b"title='\xff'"]
+
+
+def derive_decks(data_dir, seed=None, scale=1):
+    """The list of (name, description, deck bytes, extra arguments): fixed for a seed."""
     decks = []
+    seed = SEED if seed is None else seed
     for path in sorted(glob.glob(os.path.join(data_dir, "*.nml"))):
         base = os.path.splitext(os.path.basename(path))[0]
         with open(path, encoding="utf-8") as f:
             text = f.read()
         raw = text.encode("utf-8")
-        rng = random.Random("%d:%s" % (SEED, base))
+        rng = random.Random("%d:%s" % (seed, base))
         made = []
         seen = {raw}
         for kind, _ in VALUE_KINDS:
-            for _ in range(PICKS_PER_KIND):
+            for _ in range(PICKS_PER_KIND * scale):
                 for _attempt in range(5):  # a few draws for a deck not made yet
                     mut = value_mutation(text, kind, rng)
                     if mut is None or mut[1].encode("utf-8") not in seen:
@@ -194,19 +281,36 @@ def derive_decks(data_dir):
                 if mut is not None and mut[1].encode("utf-8") not in seen:
                     seen.add(mut[1].encode("utf-8"))
                     made.append((kind, mut[0], mut[1].encode("utf-8")))
-        for _ in range(TRUNCATIONS):
+        for _ in range(TRUNCATIONS * scale):
             cut = rng.randrange(1, len(raw))
             made.append(("truncate", "truncated at byte %d of %d" % (cut, len(raw)), raw[:cut]))
         made.append(("no_newline", "final newline removed", raw.rstrip(b"\n")))
         made.append(("bom", "UTF-8 byte order mark prepended", b"\xef\xbb\xbf" + raw))
+        made.extend(hostile_mutations(text, raw, rng, scale))
         for i, (kind, desc, data) in enumerate(made):
-            decks.append(("%s_%03d_%s" % (base, i + 1, kind), "%s: %s" % (base, desc), data))
+            decks.append(("%s_%03d_%s" % (base, i + 1, kind), "%s: %s" % (base, desc), data, []))
+        for j, value in enumerate(BAD_SETS):
+            decks.append(("%s_set%02d_bad_set" % (base, j + 1), "%s: --set %r" % (base, value), raw,
+                          ["--set", value]))
+    for name, desc, how in SPECIAL_RUNS:
+        decks.append((name, desc, how, None))
     return decks
 
 
-def run(binary, args, cwd):
+def run(binary, args, cwd, endless_stdin=False, timeout=TIMEOUT):
     try:
-        p = subprocess.run([binary] + args, cwd=cwd, capture_output=True, timeout=TIMEOUT)
+        if endless_stdin:
+            # `yes | kinetostat -`: an endless pipe, closed when the program exits
+            yes = subprocess.Popen(["yes"], stdout=subprocess.PIPE)
+            try:
+                p = subprocess.run([binary] + args, cwd=cwd, stdin=yes.stdout, capture_output=True, timeout=timeout)
+            finally:
+                yes.stdout.close()
+                yes.kill()
+                yes.wait()
+        else:
+            p = subprocess.run([binary] + args, cwd=cwd, capture_output=True, timeout=timeout,
+                               stdin=subprocess.DEVNULL)
         return p.returncode, p.stdout.decode("utf-8", "replace"), p.stderr.decode("utf-8", "replace")
     except subprocess.TimeoutExpired as exc:
         return "timeout", (exc.stdout or b"").decode("utf-8", "replace"), (exc.stderr or b"").decode("utf-8", "replace")
@@ -228,20 +332,34 @@ def bad_text(text):
 
 def check_deck(job):
     """Runs one deck; returns (name, description, [(check, mode, detail)], selfcheck_warning)."""
-    binary, name, desc, data, with_file = job
+    binary, name, desc, data, extra, with_file, deadline = job
     failures = []
     selfcheck = False
     table_run = None
+    if deadline is not None and time.time() > deadline:
+        return name, desc, None, False, None
     work = tempfile.mkdtemp(prefix="ks_mut_")
     try:
-        deck = os.path.join(work, "deck.nml")
-        with open(deck, "wb") as f:
-            f.write(data)
-        modes = [("table", ["deck.nml"]), ("csv", ["deck.nml", "--format", "csv"])]
-        if with_file:
-            modes.append(("-o", ["deck.nml", "--format", "csv", "-o", "out.csv"]))
+        stdin_endless = False
+        if extra is None:
+            # a special run: endless input
+            source = {"dev_zero": "/dev/zero", "dev_zero_small": "/dev/zero"}.get(data, "-")
+            limit = ["--max-deck-size", "100000"] if data.endswith("_small") else []
+            stdin_endless = data.startswith("yes")
+            modes = [("table", [source] + limit)]
+            if with_file:
+                modes.append(("-o", [source, "--format", "csv", "-o", "out.csv"] + limit))
+        else:
+            deck = os.path.join(work, "deck.nml")
+            with open(deck, "wb") as f:
+                f.write(data)
+            modes = [("table", ["deck.nml"] + extra), ("csv", ["deck.nml", "--format", "csv"] + extra)]
+            if with_file:
+                modes.append(("-o", ["deck.nml", "--format", "csv", "-o", "out.csv"] + extra))
         for mode, args in modes:
-            rc, out, err = run(binary, args, work)
+            rc, out, err = run(binary, args, work, stdin_endless, LONG_TIMEOUT if "_long_" in name else TIMEOUT)
+            if extra is None and rc != 2:
+                failures.append(("exit-code", mode, "endless input: exit %s, expected 2 (the deck limit)" % rc))
             if mode == "table":
                 table_run = (rc, err)
             file_text = ""
@@ -259,7 +377,7 @@ def check_deck(job):
                     if os.path.exists(p):
                         os.remove(p)
             if rc == "timeout" or not isinstance(rc, int) or rc not in (0, 2, 3):
-                what = "timeout after %d s" % TIMEOUT if rc == "timeout" else (
+                what = "timeout after %d s" % (LONG_TIMEOUT if "_long_" in name else TIMEOUT) if rc == "timeout" else (
                     "killed by signal %d" % -rc if rc < 0 else "exit %d" % rc)
                 failures.append(("exit-code", mode, "%s; stderr: %s" % (what, err.strip()[:200])))
             for label, text in (("stdout", out), ("file", file_text)):
@@ -315,14 +433,21 @@ def main():
     ap.add_argument("--jobs", type=int, default=2, help="worker processes (2)")
     ap.add_argument("--unnamed", action="store_true",
                     help="list the input errors of single-variable mutations that do not name the variable")
+    ap.add_argument("--seed", type=int, default=None, help="seed of the random choices (default: the fixed %d)" % SEED)
+    ap.add_argument("--scale", type=int, default=1, help="draw K times as many mutations per deck (1)")
+    ap.add_argument("--budget", type=float, default=0.0,
+                    help="seconds after which no new deck is started (0: no limit); decks not run are skipped")
     args = ap.parse_args()
 
-    decks = derive_decks(args.data)
+    if args.seed is not None:
+        print("mutation: seed %d (reproduce: python3 tools/mutate_decks.py --seed %d%s)" % (
+            args.seed, args.seed, " --scale %d" % args.scale if args.scale != 1 else ""))
+    decks = derive_decks(args.data, args.seed, max(1, args.scale))
     if len(decks) < 500:
         print("mutation: only %d decks derived (at least 500 expected)" % len(decks))
         return 1
     if args.list:
-        for name, desc, _ in decks:
+        for name, desc, _, _ in decks:
             print("%s  %s" % (name, desc))
         print("%d decks" % len(decks))
         return 0
@@ -330,11 +455,19 @@ def main():
         print("mutation: no kinetostat binary (use --bin or $KINETOSTAT)")
         return 1
     binary = os.path.abspath(args.bin)
-    jobs = [(binary, name, desc, data, i % OUTFILE_EVERY == 0)
-            for i, (name, desc, data) in enumerate(decks) if args.only in name]
-    data_of = {name: data for name, _, data in decks}
+    deadline = time.time() + args.budget if args.budget > 0 else None
+    jobs = [(binary, name, desc, data, extra, i % OUTFILE_EVERY == 0, deadline)
+            for i, (name, desc, data, extra) in enumerate(decks) if args.only in name]
+    if args.seed is not None:
+        # a randomized run under a time budget runs the decks in a random order, so that
+        # every class has its chance before the budget ends
+        random.Random(args.seed).shuffle(jobs)
+    data_of = {name: (data if extra is not None else b"") for name, _, data, extra in decks}
+    extra_of = {name: extra for name, _, _, extra in decks}
     with multiprocessing.Pool(args.jobs) as pool:
         results = pool.map(check_deck, jobs, chunksize=8)
+    skipped = sum(1 for r in results if r[2] is None)
+    results = [r for r in results if r[2] is not None]
 
     failed_by_check = {c: 0 for c in CHECKS}
     failed_decks = 0
@@ -345,6 +478,8 @@ def main():
     named = unnamed = 0
     for name, desc, failures, selfcheck, table_run in results:
         kind = next((k for k in SINGLE_VARIABLE_KINDS if name.endswith("_" + k)), None)
+        if extra_of[name] != []:
+            kind = None  # a special run or a --set: not a deck's single-variable mutation
         if kind and table_run and table_run[0] == 2:
             if names_variable(desc, table_run[1]):
                 named += 1
@@ -368,6 +503,10 @@ def main():
                 failed_by_check[check] += 1
                 seen.add(check)
             opts = {"table": "", "csv": " --format csv", "-o": " --format csv -o /tmp/ks_mut.csv"}[mode]
+            if extra_of[name]:
+                opts += " " + " ".join(repr(a) for a in extra_of[name])
+            if extra_of[name] is None:
+                rel = desc
             print("FAIL %s [%s] %s (%s): %s; reproduce: %s %s%s" % (name, desc, check, mode, detail, "$KINETOSTAT", rel, opts))
     if args.selfcheck:
         for name, desc in selfcheck_decks:
@@ -378,10 +517,11 @@ def main():
     if named + unnamed:
         print("named: %d of %d input errors (exit 2) of single-variable mutations name the variable (%.0f %%)" % (
             named, named + unnamed, 100.0 * named / (named + unnamed)))
-    runs = sum(3 if j[4] else 2 for j in jobs)
-    print("mutation: %d decks, %d runs, %d decks failed (%s); %d self-check warnings (not counted)" % (
-        len(jobs), runs, failed_decks,
-        ", ".join("%s %d" % (c, failed_by_check[c]) for c in CHECKS), len(selfcheck_decks)))
+    runs = sum(3 if j[5] else 2 for j in jobs) - 3 * skipped
+    print("mutation: %d decks, %d runs, %d decks failed (%s); %d self-check warnings (not counted)%s" % (
+        len(jobs) - skipped, runs, failed_decks,
+        ", ".join("%s %d" % (c, failed_by_check[c]) for c in CHECKS), len(selfcheck_decks),
+        "; %d decks skipped (time budget)" % skipped if skipped else ""))
     return 0 if failed_decks == 0 else 1
 
 

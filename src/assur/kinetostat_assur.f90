@@ -16,7 +16,7 @@ module kinetostat_assur
   use kinetostat_vec2, only: unit_at, cross, magnitude
   use kinetostat_loads, only: inertia_force, inertia_moment, gravity_force
   use kinetostat_selfcheck, only: link_balance_t, balance_add_force, balance_add_couple, equilibrium_residual, &
-    power_mismatch, balance_add_balance
+    power_mismatch, balance_add_balance, load_moment_scale
   use kinetostat_text, only: int_str
   use kinetostat_assur_kinematics, only: link_state_t, point_state_t, dyad_geometry_t, dyad_pose_t, &
     point_on, crank_state, frame_state, set_dyad_pose, kind_names, pose_ok, pose_no_assembly
@@ -121,6 +121,11 @@ module kinetostat_assur
     real(wp) :: mismatch = 0.0_wp
     !> Scale of the power balance: sum of the magnitudes of its terms (per unit crank speed), N*m.
     real(wp) :: power_scale = 0.0_wp
+    !> Size of the driving effort the step's applied loads make (weights, inertia, external
+    !> and friction loads): N*m for the crank (load_moment_scale with the mechanism's size),
+    !> N for an actuator (the largest force sum of a link). Never 0 while a load acts,
+    !> unlike `power_scale` (a load doing no work).
+    real(wp) :: load_scale = 0.0_wp
     !> Actuator (driving prismatic pair) only: axial force, N, positive extending it.
     real(wp) :: f_drive = 0.0_wp
     !> The same from the power balance, N.
@@ -399,6 +404,12 @@ contains
     end if
     if (present(extra_power)) power = power + extra_power
     if (present(extra_scale)) power_scale = power_scale + extra_scale
+    ! the size of a driving effort these loads make
+    if (mech%drive_dyad == 0) then
+      step%load_scale = load_moment_scale(known(1:), mechanism_size(mech, poses))
+    else
+      step%load_scale = maxval(known(1:)%scale_f)
+    end if
 
     if (mech%drive_dyad == 0) then
       ! dyads from the last to the first; each passes its outer reactions to the links it hangs on
@@ -407,7 +418,7 @@ contains
       ! crank: pin reaction from the frame and balancing moment about the pivot
       step%m1 = -known(1)%sum_m
       step%m1_power = -power
-      step%mismatch = power_mismatch(step%m1, step%m1_power, power_scale)
+      step%mismatch = power_mismatch(step%m1, step%m1_power, power_scale, step%load_scale)
     else
       call drive_by_actuator(mech, states, poses, known, power, power_scale, step, error)
       if (allocated(error)) return
@@ -432,6 +443,22 @@ contains
     step%residual = equilibrium_residual(known(1:))
     if (present(balances)) balances = known
   end subroutine step_in
+
+  !> Size of the mechanism at this position: the largest distance of a dyad's joint from
+  !> the crank pivot, m (a lever arm of the driving moment).
+  pure real(wp) function mechanism_size(mech, poses) result(length)
+    !> Mechanism.
+    type(assur_mech_t), intent(in) :: mech
+    !> Pose of each dyad.
+    type(dyad_pose_t), intent(in) :: poses(:)
+    integer :: d, j
+    length = 0.0_wp
+    do d = 1, size(poses)
+      do j = 1, size(poses(d)%p, 2)
+        length = max(length, magnitude(poses(d)%p(:, j) - mech%pivot))
+      end do
+    end do
+  end function mechanism_size
 
   !> The pair whose stroke is the position of link `i` (internal index): the prismatic pair
   !> by which it slides on a frame guide (link a: pair 1, link b: pair 3), else 0 (the
@@ -735,7 +762,7 @@ contains
     step%stroke_v = ds * step%omega1
     step%stroke_a = poses(dd)%stroke_a(jd) * step%omega1**2 + ds * step%eps1
     step%f_drive_power = -power / ds
-    step%mismatch = power_mismatch(step%f_drive, step%f_drive_power, power_scale / abs(ds))
+    step%mismatch = power_mismatch(step%f_drive, step%f_drive_power, power_scale / abs(ds), step%load_scale)
     ! every link's loads with the final reactions, for the equilibrium residual
     known = applied
     call balance_add_force(known(sides(1)), states(sides(1))%o, at, step%f_drive * extend)

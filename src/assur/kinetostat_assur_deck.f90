@@ -11,7 +11,8 @@ module kinetostat_assur_deck
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str, number_str, lower
   use kinetostat_text_buffer, only: text_buffer_t
-  use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, unset_bits, max_deck_array, &
+  use kinetostat_deck, only: longest_quoted, &
+    check_namelist_syntax, write_template_lines, deck_context_t, unset_real, unset_bits, max_deck_array, &
     deck_array_capacities, deck_source_t, namelist_probe_t, deck_error, require_all_set, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn, &
     is_whole_in, require_whole
@@ -299,9 +300,24 @@ contains
     type(assur_deck_t), intent(out) :: deck
     !> Input error naming file, group, variable and reason.
     type(error_t), allocatable, intent(out) :: error
-    !> As long as the whole deck: an unterminated quote reads the rest of the deck into it
-    !> (a shorter variable makes gfortran print a runtime warning); at most 80 are kept.
-    character(len=size(source%records) * len(source%records) + 1) :: title
+    call read_assur_group(source, longest_quoted(source), deck, error)
+  end subroutine read_assur_deck
+
+  !> Read and validate an `&assur` deck whose longest quoted text has `title_length`
+  !> characters (the length of the title read).
+  subroutine read_assur_group(source, title_length, deck, error)
+    !> The deck, read into memory (see load_deck).
+    type(deck_source_t), intent(in) :: source
+    !> Length of the title variable read (characters, >= 1).
+    integer, intent(in) :: title_length
+    !> The validated deck.
+    type(assur_deck_t), intent(out) :: deck
+    !> Input error naming file, group, variable and reason.
+    type(error_t), allocatable, intent(out) :: error
+    !> As long as the longest quoted text of the deck (an unclosed quote is refused before
+    !> the READ); at most 80 are kept. Allocated, not automatic: a text of 10^5 characters
+    !> and more would overflow the stack.
+    character(len=title_length), allocatable :: title
     !> Integer deck variables, read as reals (see require_whole).
     real(wp) :: frame_id, crank_id, n
     !> Linear actuator as driver: dyad number and pair 1..3 (whole numbers, read as reals).
@@ -347,6 +363,7 @@ contains
 
     ctx%path = source%path
     ctx%group = group_name
+    allocate (title)
     dynamics = ""; delta = unset_real; j_rotor = unset_real; j_flywheel = unset_real
     title = ""
     frame_id = 0.0_wp; crank_id = 1.0_wp; n = unset_real
@@ -362,6 +379,8 @@ contains
     allocate (omega1_step(capacity(1)), eps1_step(capacity(2)), step_values(capacity(3)), phi1(capacity(4)), &
               source=unset_real)
 
+    call check_namelist_syntax(source, ctx%group, error)
+    if (allocated(error)) return
     read (source%records, nml=assur, iostat=probe%ios, iomsg=probe%msg)
     do while (probe%retry(source)) ! on failure: find the line and the assignment
       read (probe%records, nml=assur, iostat=probe%ios, iomsg=probe%msg)
@@ -441,7 +460,7 @@ contains
     call require_rule(ctx, "dyad", nd >= 1, "at least one dyad is required (dyad(1)%kind missing)", error)
     if (allocated(error)) return
     do d = nd + 1, max_dyads
-      if (dyad_touched(dyad(d))) then
+      if (dyad_touched(dyad(d)) .or. is_set(dyad(d)%kind)) then
         call deck_error(ctx, "dyad("//int_str(d)//")", "dyads must be numbered 1.."//int_str(nd + 1)// &
           " without gaps (dyad("//int_str(nd + 1)//")%kind is missing)", error)
         return
@@ -497,13 +516,22 @@ contains
     call read_output_link(ctx, output_link, ids, deck%mech, error); if (allocated(error)) return
     call crank_angles(ctx, deck, error); if (allocated(error)) return
     do k = nf + 1, max_forces
-      if (any(is_set([force(k)%value, force(k)%angle, force(k)%column, force(k)%fx, force(k)%fy, force(k)%table(1)]))) then
+      if (is_set(force(k)%link) .and. k > nf + 1) then
+        call deck_error(ctx, "force("//int_str(nf + 1)//")", "missing: force("//int_str(k)// &
+          ") is given, and forces must be numbered 1, 2, ... without gaps", error)
+        return
+      else if (any(is_set([force(k)%value, force(k)%angle, force(k)%column, force(k)%fx, force(k)%fy, &
+                           force(k)%table(1)]))) then
         call deck_error(ctx, "force("//int_str(k)//")%link", "missing (forces must be numbered without gaps)", error)
         return
       end if
     end do
     do k = nm + 1, max_moments
-      if (any(is_set([moment(k)%value, moment(k)%column, moment(k)%table(1)]))) then
+      if (is_set(moment(k)%link) .and. k > nm + 1) then
+        call deck_error(ctx, "moment("//int_str(nm + 1)//")", "missing: moment("//int_str(k)// &
+          ") is given, and moments must be numbered 1, 2, ... without gaps", error)
+        return
+      else if (any(is_set([moment(k)%value, moment(k)%column, moment(k)%table(1)]))) then
         call deck_error(ctx, "moment("//int_str(k)//")%link", "missing (moments must be numbered without gaps)", error)
         return
       end if
@@ -606,7 +634,7 @@ contains
         "give it as a constant, a window or a table, not per step", error)
       if (allocated(error)) return
     end if
-  end subroutine read_assur_deck
+  end subroutine read_assur_group
 
   !> The required variables the deck lacks, in the order the checks of read_assur_deck meet
   !> them: phi_ref (global form), dphi (unless a phi1 list), omega1 (or the other of
@@ -660,7 +688,8 @@ contains
       nd = d
     end do
     if (nd < size(dyad)) then
-      call add_missing(names, "dyad("//int_str(nd + 1)//")%kind", nd == 0 .or. any(dyad_touched(dyad(nd + 1:))))
+      call add_missing(names, "dyad("//int_str(nd + 1)//")%kind", nd == 0 .or. any(dyad_touched(dyad(nd + 1:))) &
+                       .or. any(is_set(dyad(nd + 1:)%kind)))
     end if
     do d = 1, nd
       p = "dyad("//int_str(d)//")%"

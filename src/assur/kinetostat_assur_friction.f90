@@ -47,6 +47,10 @@ module kinetostat_assur_friction
   integer, parameter :: diverging_after = 20
   !> Roundoff floor of a reaction's change, relative to the step's largest reaction.
   real(wp), parameter :: roundoff_rel = 1.0e-14_wp
+  !> A frictionless driving effort below this, relative to the size of the effort the
+  !> step's loads make (assur_step_t's load_scale), has no sign in the self-locking test:
+  !> roundoff (M1 = -8.9e-15 N*m under loads of 100 N) is zero, not a reversal.
+  real(wp), parameter :: sign_floor_rel = 1.0e-12_wp
   !> A change at or below this is roundoff: the iteration has reached its fixed point.
   real(wp), parameter :: roundoff_change = 4.0_wp * epsilon(1.0_wp)
 
@@ -319,7 +323,7 @@ contains
     if (actuator) ds = poses(mech%drive_dyad)%stroke_v(mech%drive_pair)
     fs%driver_frictionless = driver_of(step)
     ! a frictionless driving effort at roundoff level has no sign (self-locking test below)
-    roundoff_driver = roundoff_rel * step%power_scale / abs(ds)
+    roundoff_driver = max(roundoff_rel * step%power_scale / abs(ds), sign_floor_rel * step%load_scale)
     fs%motion_sign = s
     previous = 0.0_wp
     q = 0.0_wp
@@ -363,10 +367,10 @@ contains
     step%power_scale = step%power_scale - scale_used + scale_final
     if (actuator) then
       step%f_drive_power = step%f_drive_power + (power_used - power_final) / ds
-      step%mismatch = power_mismatch(step%f_drive, step%f_drive_power, step%power_scale / abs(ds))
+      step%mismatch = power_mismatch(step%f_drive, step%f_drive_power, step%power_scale / abs(ds), step%load_scale)
     else
       step%m1_power = step%m1_power + power_used - power_final
-      step%mismatch = power_mismatch(step%m1, step%m1_power, step%power_scale)
+      step%mismatch = power_mismatch(step%m1, step%m1_power, step%power_scale, step%load_scale)
     end if
     fs%driver_rate = driver_of(step) * ds
     fs%effort = effort
@@ -382,7 +386,16 @@ contains
         "the driving effort ("//driver_text(actuator, fs%driver_frictionless)//" without friction, "// &
         driver_text(actuator, driver_of(step))//" with it; largest friction load in "// &
         pair_text(friction, maxloc(rate, 1))//")")
+      return
     end if
+
+    ! a sliding pair's reported reaction is the whole reaction: its normal force (kept in
+    ! step%n, the <F>N column) plus the friction force along the sliding line, which the
+    ! solve carried as a load of its own (the load on "this" link: -Q * sense * t)
+    do i = 1, np
+      if (.not. pg(i)%prismatic .or. .not. friction(i)%f > 0.0_wp) cycle
+      step%f(:, i) = step%f(:, i) - effort(i) * pg(i)%sense * pg(i)%t
+    end do
 
   contains
 

@@ -8,6 +8,7 @@ module kinetostat_assur_layout
   use kinetostat_text, only: int_str, upper
   use kinetostat_noise, only: noise_rel, force_components
   use kinetostat_vec2, only: magnitude, angle_360_deg, angle_180_deg, rotate, snap_noise, clean_zero
+  use kinetostat_step_table, only: worst_row
   use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_component, col_length, &
     step_span, &
     col_moment, col_other, col_flag, col_ratio
@@ -354,9 +355,11 @@ contains
         max(abs(self%cycle%m_d), maxval(abs(motions%m)), maxval(abs((self%cycle%j_flywheel + motions%j) * motions%eps))))
     end if
     if (self%deck%mech%drive_dyad == 0) then
-      call table%set_selfcheck(maxval(residual), maxval(mismatch), "M1")
+      call table%set_selfcheck(maxval(residual), maxval(mismatch), "M1", &
+      worst_row(residual), worst_row(mismatch))
     else
-      call table%set_selfcheck(maxval(residual), maxval(mismatch), "F_drive")
+      call table%set_selfcheck(maxval(residual), maxval(mismatch), "F_drive", &
+      worst_row(residual), worst_row(mismatch))
     end if
     if (self%deck%friction_on) then
       table%residual_label = "MAX EQUILIBRIUM RESIDUAL WITH FRICTION LOADS"

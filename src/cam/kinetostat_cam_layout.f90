@@ -7,6 +7,7 @@ module kinetostat_cam_layout
   use kinetostat_text, only: int_str, number_str
   use kinetostat_vec2, only: magnitude, angle_360_deg
   use kinetostat_noise, only: noise_floor, force_components
+  use kinetostat_step_table, only: worst_row
   use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_component, &
     step_span, &
     col_length, col_flag, col_ratio, col_other
@@ -122,7 +123,8 @@ contains
         call put_kinematics(table, k, self%deck, steps(k), first - 1 + k)
       end do
     end if
-    call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "N")
+    call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "N", &
+      worst_row([steps%residual]), worst_row([steps%mismatch]))
     call flag_warnings(self%deck, steps, first, table)
   end subroutine solve
 

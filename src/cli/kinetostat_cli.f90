@@ -5,11 +5,11 @@ module kinetostat_cli
   use, intrinsic :: iso_fortran_env, only: error_unit, int64
   use kinetostat_kinds, only: wp, version_string
   use kinetostat_error, only: error_t, fatal_error, exit_success, exit_usage, exit_input, exit_warning
-  use kinetostat_deck, only: deck_source_t, load_deck, read_group_name
+  use kinetostat_deck, only: deck_source_t, load_deck, read_group_name, set_max_deck_size
   use kinetostat_override, only: override_t, parse_override, apply_overrides
-  use kinetostat_sweep, only: vary_t, parse_vary, run_sweep, variant_result_t
+  use kinetostat_sweep, only: vary_t, parse_vary, run_sweep, variant_result_t, allow_selfcheck_failure_in_sweep
   use kinetostat_posix, only: stderr_is_terminal, cpu_count
-  use kinetostat_text, only: int_str
+  use kinetostat_text, only: int_str, printable
   use kinetostat_run, only: format_summary
   use kinetostat_step_table, only: step_table_t
   use kinetostat_text_buffer, only: text_buffer_t
@@ -18,7 +18,6 @@ module kinetostat_cli
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_labels, only: lang_from_name
   use kinetostat_run, only: run_options_t, run_mechanism, format_from_name, format_names, format_svg
-  use kinetostat_table_writer, only: selfcheck_verdict
   use kinetostat_registry, only: create_mechanism, known_kinds, known_columns
   use kinetostat_step_table, only: column_t
   use kinetostat_diff, only: diff_options_t, diff_outputs
@@ -39,14 +38,12 @@ module kinetostat_cli
   !> One-line usage, printed with usage errors.
   character(*), parameter :: usage_line = "usage: kinetostat DECK|- [--set NAME=VALUE]... [-o FILE] " // &
     "[--format table|csv|json|svg|summary] [--pairs LIST] [--at K] [--lang en|ru] [--kinematics] " // &
-    "[--frame global|link] [--shaking] [--quiet] [--strict] | " // &
+    "[--frame global|link] [--shaking] [--max-deck-size BYTES] [--allow-selfcheck-failure] [--quiet] " // &
+    "[--strict] | " // &
     "kinetostat sweep DECK --vary NAME=FROM:TO:COUNT... [--part K/N] [--jobs N] | " // &
     "kinetostat template KIND [-o FILE] | kinetostat diff A B [--rtol R] [--atol A] | " // &
     "kinetostat balance DECK [-o FILE] [--method full|crank|partial] [--fraction F] | "// &
     "kinetostat structure DECK [--lang ru] | --help | --version"
-
-  !> Warning line when a run's self-check exceeds its tolerance.
-  character(*), parameter :: selfcheck_warning_fmt = '(a,es9.2,a,es9.2)'
 
   !> Help text (the kinds are appended from the registry).
   character(*), parameter :: help_lines(*) = [character(len=92) :: &
@@ -54,7 +51,7 @@ module kinetostat_cli
     "", &
     "  kinetostat DECK [--set NAME=VALUE]... [-o FILE] [--format table|csv|json|svg|summary]", &
     "                  [--pairs LIST] [--at K] [--lang en|ru] [--kinematics] [--shaking]", &
-    "                  [--quiet] [--strict]", &
+    "                  [--max-deck-size BYTES] [--allow-selfcheck-failure] [--quiet] [--strict]", &
     "  kinetostat sweep DECK --vary NAME=FROM:TO:COUNT... [--set NAME=VALUE]... [--part K/N]", &
     "                  [--jobs N]", &
     "                  [-o FILE] [--quiet] [--strict]", &
@@ -92,7 +89,11 @@ module kinetostat_cli
     "            from FROM to TO), the first --vary slowest; --part K/N runs block K of N", &
     "            (the parts' outputs concatenated in order are the whole sweep's); --jobs N", &
     "            runs its variants in N processes (default: one per processor), same bytes", &
-    "--strict    a run that warns (self-check above its limit, a dead position between", &
+    "--max-deck-size BYTES  the largest deck read (default 268435456, 256 MiB); a longer", &
+    "            file, or endless input such as /dev/zero, is an input error", &
+    "--allow-selfcheck-failure  a self-check above its limit is a warning and the output is", &
+    "            written (by default it is an error, exit 3, and nothing is written)", &
+    "--strict    a run that warns (a self-check failure allowed, a dead position between", &
     "            steps, a jammed cam or lost contact, a coarse step near a load edge)", &
     "            exits 4; the output is still written", &
     "-h, --help  this text;  -V, --version  the version", &
@@ -107,8 +108,9 @@ module kinetostat_cli
     "  Prints the first differences ('step 2, column F16: 2741.19 vs 2741.25 (rel 2.2e-05)')", &
     "  and exits 0 same, 1 different, 2 unreadable or not the same mechanism/columns.", &
     "", &
-    "Exit codes: 0 ok, 1 usage, 2 input or output error, 3 geometry error or a result", &
-    "that is not finite (the step is named), 4 warnings with --strict (output written)."]
+    "Exit codes: 0 ok, 1 usage, 2 input or output error, 3 geometry error, a result that", &
+    "is not finite or a failed self-check (the step is named), 4 warnings with --strict", &
+    "(output written)."]
 
   !> Usage of the diff subcommand (its errors exit 2: exit 1 means "different").
   character(*), parameter :: diff_usage = "usage: kinetostat diff A B [--rtol R] [--atol A] [--quiet]"
@@ -228,7 +230,7 @@ contains
     if (ran .and. .not. allocated(error)) call warn(table, args%quiet, warnings)
 
     if (allocated(error)) then
-      write (error_unit, '(a)') "kinetostat: error: "//error%message
+      write (error_unit, '(a)') "kinetostat: error: "//printable(error%message)
       if (error%code == exit_usage) write (error_unit, '(a)') usage_line
       exit_code = error%code
     else if (args%strict .and. warnings > 0) then
@@ -281,6 +283,27 @@ contains
       if (error%code == exit_input) call blame_override(source, group, options%overrides, error)
     end if
   end subroutine run_deck
+
+  !> The limit of --max-deck-size BYTES (a whole number from 1 to huge(1), the largest deck
+  !> a build with default integers can hold): set for every deck read.
+  subroutine parse_deck_size(arg, error)
+    !> The option's value.
+    character(*), intent(in) :: arg
+    type(error_t), allocatable, intent(out) :: error
+    integer(int64) :: bytes
+    integer :: ios
+    ios = 1
+    if (len(arg) > 0 .and. len(arg) < 19 .and. verify(arg, "0123456789") == 0) read (arg, *, iostat=ios) bytes
+    if (ios == 0) then
+      if (bytes < 1 .or. bytes > huge(1)) ios = 1
+    end if
+    if (ios /= 0) then
+      call fatal_error(error, exit_usage, "--max-deck-size must be a whole number of bytes from 1 to "// &
+        int_str(huge(1))//" (got '"//printable(arg)//"')")
+      return
+    end if
+    call set_max_deck_size(bytes)
+  end subroutine parse_deck_size
 
   !> K and N of "--part K/N" (1 <= K <= N).
   subroutine parse_part(arg, part, parts, error)
@@ -486,6 +509,7 @@ contains
     if (jobs == 0) jobs = cpu_count()
     call load_deck(args%deck, source, error)
     if (allocated(error)) return
+    call allow_selfcheck_failure_in_sweep(args%options%allow_selfcheck_failure)
     if (allocated(args%options%overrides)) then
       sets = args%options%overrides
     else
@@ -517,7 +541,7 @@ contains
       start = 1
       do i = 1, results(v)%warnings%length
         if (results(v)%warnings%data(i:i) /= achar(10)) cycle
-        write (error_unit, '(a)') prefix//results(v)%warnings%data(start:i - 1)
+        write (error_unit, '(a)') printable(prefix//results(v)%warnings%data(start:i - 1))
         start = i + 1
       end do
     end do
@@ -649,7 +673,7 @@ contains
   end subroutine write_template
 
   !> Warnings of a successful run, one stderr line each unless `quiet`: the mechanism's
-  !> remarks, a failed self-check.
+  !> remarks, a failed self-check allowed by --allow-selfcheck-failure.
   subroutine warn(table, quiet, count)
     !> The run's results.
     type(step_table_t), intent(in) :: table
@@ -659,20 +683,12 @@ contains
     integer, intent(out) :: count
     integer :: i
     character(len=:), allocatable :: prefix
-    prefix = "kinetostat: warning: "//table%deck//": "
+    prefix = "kinetostat: warning: "//printable(table%deck)//": "
     count = table%warning_count()
     if (.not. quiet) then
       do i = 1, table%warning_count()
-        write (error_unit, '(a)') prefix//table%warnings(i)%text
+        write (error_unit, '(a)') printable(prefix//table%warnings(i)%text)
       end do
-    end if
-    if (.not. table%has_selfcheck .or. table%row_count() == 0) return
-    if (selfcheck_verdict(table%max_residual) /= "OK" .or. selfcheck_verdict(table%max_mismatch) /= "OK") then
-      count = count + 1
-      if (quiet) return
-      write (error_unit, selfcheck_warning_fmt) prefix// &
-        "self-check failed (a bug; please report): max equilibrium residual", table%max_residual, &
-        ", max "//table%driver//" mismatch", table%max_mismatch
     end if
   end subroutine warn
 
@@ -698,8 +714,8 @@ contains
         value = arg(eq + 1:)
       else
         name = arg
-        if (any(name == [character(len=10) :: "-o", "--output", "--format", "--lang", "--set", "--pairs", "--at", &
-                         "--frame", "--vary", "--part", "--jobs", "--method", "--fraction"])) then
+        if (any(name == [character(len=15) :: "-o", "--output", "--format", "--lang", "--set", "--pairs", "--at", &
+                         "--frame", "--vary", "--part", "--jobs", "--method", "--fraction", "--max-deck-size"])) then
           if (i == n) then
             call fatal_error(error, exit_usage, name//" needs a value")
             return
@@ -717,6 +733,8 @@ contains
         args%quiet = .true.
       case ("--strict")
         args%strict = .true.
+      case ("--allow-selfcheck-failure")
+        args%options%allow_selfcheck_failure = .true.
       case ("--kinematics")
         args%options%kinematics = .true.
       case ("--shaking")
@@ -797,6 +815,9 @@ contains
             return
           end if
         end block
+      case ("--max-deck-size")
+        call parse_deck_size(value, error)
+        if (allocated(error)) return
       case ("sweep")
         if (allocated(args%deck) .or. args%sweep .or. allocated(args%template_kind)) then
           call fatal_error(error, exit_usage, "sweep must come first: kinetostat sweep DECK --vary NAME=FROM:TO:COUNT")
@@ -952,7 +973,7 @@ contains
     end if
     if (.not. allocated(error) .and. .not. args%quiet) call write_output_stdout(report, error)
     if (allocated(error)) then
-      write (error_unit, '(a)') "kinetostat: error: "//error%message
+      write (error_unit, '(a)') "kinetostat: error: "//printable(error%message)
       exit_code = exit_input
     else
       exit_code = status

@@ -7,7 +7,7 @@ module kinetostat_selfcheck
   private
   public :: link_balance_t, link_balance, balance_add_force, balance_add_couple, balance_add_balance
   public :: equilibrium_residual, link_residual, power_mismatch
-  public :: selfcheck_tolerance, residual_floor_rel
+  public :: selfcheck_tolerance, residual_floor_rel, load_moment_scale
 
   !> A self-check worse than this (relative) is a bug: the CLI warns and the tests fail.
   real(wp), parameter :: selfcheck_tolerance = 1.0e-6_wp
@@ -32,6 +32,10 @@ module kinetostat_selfcheck
     real(wp) :: scale_m = 0.0_wp
     !> Sum of |lever arm| * |force| and of the couples' magnitudes, N*m (>= scale_m).
     real(wp) :: lever_m = 0.0_wp
+    !> Longest lever arm of a force added, whatever its magnitude (a force at roundoff level
+    !> included), m: the link's size, so that a link whose forces all sit on one line
+    !> through its origin still has a moment scale.
+    real(wp) :: arm_max = 0.0_wp
   end type link_balance_t
 
 contains
@@ -58,6 +62,7 @@ contains
     balance%sum_m = balance%sum_m + m
     balance%scale_m = balance%scale_m + abs(m)
     balance%lever_m = balance%lever_m + arm_mag * f_mag
+    balance%arm_max = max(balance%arm_max, arm_mag)
   end subroutine balance_add_force
 
   !> Adds couple `c` (N*m, CCW positive) to `balance`.
@@ -82,6 +87,7 @@ contains
     balance%scale_f = balance%scale_f + other%scale_f
     balance%scale_m = balance%scale_m + other%scale_m
     balance%lever_m = balance%lever_m + other%lever_m
+    balance%arm_max = max(balance%arm_max, other%arm_max)
   end subroutine balance_add_balance
 
   !> The loads of one link: forces `f(:,i)` applied at `at(:,i)` and couples `c(:)`,
@@ -106,8 +112,10 @@ contains
   !> Largest relative equilibrium residual of the links of one step (the shared rule of every
   !> mechanism): per link max(|sum F| / S_F, |sum M| / S_M) with S_F = max(sum |F_i|,
   !> residual_floor_rel * the step's largest sum |F_i|) and S_M = max(sum |M_i|,
-  !> residual_floor_rel * the step's largest sum |r_i|*|F_i| + sum |C_j|); a ratio is 0 when
-  !> its scale is 0 (nothing acts anywhere in the step).
+  !> residual_floor_rel * load_moment_scale(links)); a ratio is 0 when its scale is 0
+  !> (nothing acts anywhere in the step). The moment floor cannot vanish while a force acts:
+  !> a mechanism whose loads all pass through the links' origins (a transverse load on a
+  !> slider) has no lever products, but its links have a size.
   pure function equilibrium_residual(links) result(residual)
     !> The loads of every link of the step.
     type(link_balance_t), intent(in) :: links(:)
@@ -117,12 +125,31 @@ contains
     residual = 0.0_wp
     if (size(links) == 0) return
     floor_f = residual_floor_rel * maxval(links%scale_f)
-    floor_m = residual_floor_rel * maxval(links%lever_m)
+    floor_m = residual_floor_rel * load_moment_scale(links)
     do i = 1, size(links)
       residual = max(residual, ratio(magnitude(links(i)%sum_f), max(links(i)%scale_f, floor_f)), &
                      ratio(abs(links(i)%sum_m), max(links(i)%scale_m, floor_m)))
     end do
   end function equilibrium_residual
+
+  !> A moment scale of a step's loads that cannot vanish while any force acts, N*m: the
+  !> largest sum |r_i|*|F_i| + sum |C_j| of a link, or the largest force sum of a link
+  !> times the longest lever arm of any link (or `length`, a size of the mechanism, when
+  !> longer), whichever is larger.
+  pure function load_moment_scale(links, length) result(scale)
+    !> The loads of every link of the step.
+    type(link_balance_t), intent(in) :: links(:)
+    !> A length of the mechanism, m (e.g. the largest distance of a joint from the input
+    !> pivot; 0 when not known).
+    real(wp), intent(in), optional :: length
+    real(wp) :: scale
+    real(wp) :: arm
+    scale = 0.0_wp
+    if (size(links) == 0) return
+    arm = maxval(links%arm_max)
+    if (present(length)) arm = max(arm, length)
+    scale = max(maxval(links%lever_m), maxval(links%scale_f) * arm)
+  end function load_moment_scale
 
   !> Relative equilibrium residual of a single link (forces `f(:,i)` at `at(:,i)`, couples
   !> `c`): equilibrium_residual of that link alone.
@@ -138,16 +165,25 @@ contains
   end function link_residual
 
   !> Relative mismatch of a driving moment (or force) `q` against its power-balance value
-  !> `q_power`, scaled by `scale` = sum of the magnitudes of the power terms (>= |q_power|).
-  pure function power_mismatch(q, q_power, scale) result(mismatch)
+  !> `q_power`, scaled by `scale` = sum of the magnitudes of the power terms (>= |q_power|),
+  !> and at least residual_floor_rel * `load_scale`: the power terms vanish when no load
+  !> does work (a transverse load on a massless slider), the loads do not, so a driving
+  !> effort at roundoff level is not judged against itself.
+  pure function power_mismatch(q, q_power, scale, load_scale) result(mismatch)
     !> Driving moment/force from the reaction chain.
     real(wp), intent(in) :: q
     !> The same from the virtual-work balance.
     real(wp), intent(in) :: q_power
     !> Sum of |terms| of the balance, same unit as q.
     real(wp), intent(in) :: scale
+    !> The size of a driving effort the step's loads make, same unit as q (for a moment:
+    !> load_moment_scale; for a force: the largest force sum of a link).
+    real(wp), intent(in), optional :: load_scale
     real(wp) :: mismatch
-    mismatch = ratio(abs(q - q_power), max(scale, abs(q), abs(q_power)))
+    real(wp) :: floor
+    floor = 0.0_wp
+    if (present(load_scale)) floor = residual_floor_rel * load_scale
+    mismatch = ratio(abs(q - q_power), max(scale, abs(q), abs(q_power), floor))
   end function power_mismatch
 
   pure function ratio(num, den) result(r)

@@ -4,7 +4,7 @@ module kinetostat_text
   use kinetostat_kinds, only: wp
   implicit none
   private
-  public :: real_str, int_str, number_str, lower, upper
+  public :: real_str, int_str, int64_str, number_str, lower, upper, printable, utf8_length
 
   !> Format of a real in a message: shortest general form with 10 significant digits.
   character(*), parameter :: real_msg_fmt = '(g0.10)'
@@ -59,6 +59,98 @@ contains
     end if
     s = buf(pos:)
   end function int_str
+
+  !> A 64-bit integer as trimmed text.
+  pure function int64_str(i) result(s)
+    !> Value.
+    integer(int64), intent(in) :: i
+    character(len=:), allocatable :: s
+    character(len=24) :: buf
+    write (buf, '(i0)') i
+    s = trim(buf)
+  end function int64_str
+
+  !> Text made safe for a one-line message or a JSON string: valid UTF-8 is kept, a control
+  !> character becomes \n, \r, \t or \xNN, and a byte that is not part of valid UTF-8
+  !> (CP1251, Latin-1, 0xFF) becomes \xNN, so a message stays one line of valid UTF-8.
+  pure function printable(text) result(safe)
+    !> Any bytes.
+    character(*), intent(in) :: text
+    character(len=:), allocatable :: safe
+    character(len=*), parameter :: hex = "0123456789ABCDEF"
+    integer :: i, c, n, at
+    if (verify(text, " !""#$%&'()*+,-./0123456789:;<=>?@ABCDEFGHIJKLMNOPQRSTUVWXYZ[\]^_`"// &
+        "abcdefghijklmnopqrstuvwxyz{|}~") == 0) then
+      safe = text
+      return
+    end if
+    allocate (character(len=4 * len(text)) :: safe)
+    at = 0
+    i = 1
+    do while (i <= len(text))
+      c = iachar(text(i:i))
+      n = utf8_length(text, i)
+      if (n > 1) then
+        safe(at + 1:at + n) = text(i:i + n - 1)
+        at = at + n
+        i = i + n
+        cycle
+      end if
+      if (c == 10) then
+        safe(at + 1:at + 2) = "\n"
+        at = at + 2
+      else if (c == 13) then
+        safe(at + 1:at + 2) = "\r"
+        at = at + 2
+      else if (c == 9) then
+        safe(at + 1:at + 2) = "\t"
+        at = at + 2
+      else if (c < 32 .or. c >= 127) then
+        safe(at + 1:at + 4) = "\x"//hex(c / 16 + 1:c / 16 + 1)//hex(mod(c, 16) + 1:mod(c, 16) + 1)
+        at = at + 4
+      else
+        safe(at + 1:at + 1) = text(i:i)
+        at = at + 1
+      end if
+      i = i + 1
+    end do
+    safe = safe(1:at)
+  end function printable
+
+  !> Bytes of the valid UTF-8 character at `text(i:)` (1 for ASCII, 2 to 4 for a multi-byte
+  !> sequence), 0 when the byte at `i` does not start a valid one (a CP1251 or Latin-1
+  !> byte, a stray continuation byte, a sequence cut short).
+  pure integer function utf8_length(text, i) result(n)
+    !> Any bytes.
+    character(*), intent(in) :: text
+    !> Position looked at.
+    integer, intent(in) :: i
+    integer :: c, k
+    c = iachar(text(i:i))
+    if (c < 128) then
+      n = 1
+      return
+    else if (c >= 194 .and. c <= 223) then
+      n = 2
+    else if (c >= 224 .and. c <= 239) then
+      n = 3
+    else if (c >= 240 .and. c <= 244) then
+      n = 4
+    else
+      n = 0
+      return
+    end if
+    if (i + n - 1 > len(text)) then
+      n = 0
+      return
+    end if
+    do k = 1, n - 1
+      if (iachar(text(i + k:i + k)) < 128 .or. iachar(text(i + k:i + k)) > 191) then
+        n = 0
+        return
+      end if
+    end do
+  end function utf8_length
 
   !> ASCII lower case.
   pure function lower(s) result(t)

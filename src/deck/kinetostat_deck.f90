@@ -7,8 +7,8 @@ module kinetostat_deck
   use kinetostat_kinds, only: wp
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_error, only: error_t, fatal_error, exit_input
-  use kinetostat_text, only: real_str, int_str, number_str, lower
-  use kinetostat_posix, only: read_standard_input
+  use kinetostat_text, only: real_str, int_str, int64_str, number_str, lower, printable
+  use kinetostat_deck_reader, only: read_bytes_limited, read_ok, read_too_long
   implicit none
   private
   public :: deck_context_t, unset_real, unset_bits, max_deck_array, max_steps
@@ -18,7 +18,8 @@ module kinetostat_deck
   public :: is_set, require_set, require_positive, require_nonnegative, require_rule
   public :: is_whole_in, require_whole
   public :: optional_default, count_values, steps_over_turn, write_template_lines
-  public :: deck_array_capacities
+  public :: check_namelist_syntax, longest_quoted
+  public :: deck_array_capacities, max_deck_size, set_max_deck_size, default_max_deck_size
 
   !> Bit pattern of `unset_real`: a quiet NaN with a payload. A NaN typed in a deck
   !> ("nan", "NaN(0x1)") reads as the plain quiet NaN 7FF8000000000000, so no deck can
@@ -40,6 +41,11 @@ module kinetostat_deck
   integer, parameter :: max_deck_array = 1000000
   !> Largest number of steps a run may have.
   integer, parameter :: max_steps = 1000000
+  !> Default of the largest deck read, bytes (256 MiB; --max-deck-size).
+  integer(int64), parameter :: default_max_deck_size = 268435456_int64
+  !> Largest deck read, bytes: a longer file, or standard input or a device that gives
+  !> more, is an input error (set with `set_max_deck_size`).
+  integer(int64), protected :: max_deck_size = default_max_deck_size
 
   !> A deck read into memory: its text as the records of an internal file, ready for a
   !> namelist READ, and which line of the deck each record belongs to.
@@ -88,9 +94,15 @@ module kinetostat_deck
     integer :: good = 0
     !> First line whose copy fails (when `stage` > 1).
     integer :: bad = 0
-    !> 1: looking for the line, 2: for the assignment on it, 3: trying other values in
-    !> the assignment (which type the variable has), 4: done.
+    !> 1: looking for the line, 2: for the assignment on it, 5: reading that assignment
+    !> alone (when it reads, the text before it is at fault: "l_over = F" makes gfortran
+    !> fail at the next name), 3: trying other values in the assignment (which type the
+    !> variable has), 4: done.
     integer :: stage = 4
+    !> The group's opening ("&cam"), for the assignment read alone.
+    character(len=:), allocatable :: header
+    !> The line opening the group.
+    integer :: group_line = 0
     !> Line count (stage 1), assignment index (stage 2) or other value (stage 3) in `records`.
     integer :: trying = 0
     !> Stage 3: whether the assignment reads with its first value alone, with 1, with
@@ -142,14 +154,13 @@ contains
     character(*), intent(in) :: path
     !> The deck's records.
     type(deck_source_t), intent(out) :: source
-    !> Set when the file cannot be opened or read.
+    !> Set when the file cannot be opened or read, or is longer than `max_deck_size`.
     type(error_t), allocatable, intent(out) :: error
     !> One record per line, however long (for a file read as lines, not as a namelist).
     logical, intent(in), optional :: whole_lines
     integer :: cut_width
-    character(len=:), allocatable :: text
-    character(len=1) :: byte
-    integer :: unit, ios, n
+    character(len=:), allocatable :: text, name
+    integer :: unit, ios, status
     integer(int64) :: file_size
     character(len=512) :: msg
     cut_width = -1
@@ -157,44 +168,64 @@ contains
       if (whole_lines) cut_width = huge(1)
     end if
     if (path == stdin_deck_path) then
-      if (.not. read_standard_input(text)) then
-        call fatal_error(error, exit_input, stdin_deck_name//": cannot read the deck from standard input")
-        return
-      end if
+      call read_bytes_limited("", max_deck_size, text, status)
+      call check_read(stdin_deck_name, "cannot read the deck from standard input")
+      if (allocated(error)) return
       call deck_source_from_text(stdin_deck_name, text, source, cut_width)
       return
     end if
+    name = printable(path)
     open (newunit=unit, file=path, status='old', action='read', access='stream', form='unformatted', &
           iostat=ios, iomsg=msg)
     if (ios /= 0) then
-      call fatal_error(error, exit_input, path//": cannot open deck: "//trim(msg))
+      call fatal_error(error, exit_input, name//": cannot open deck: "//printable(trim(msg)))
       return
     end if
     inquire (unit=unit, size=file_size)
-    if (file_size > 0) then
+    if (file_size > max_deck_size) then
+      close (unit)
+      call fatal_error(error, exit_input, name//": the deck is "//int64_str(file_size)// &
+        " bytes, more than the limit of "//int64_str(max_deck_size)//" bytes (raise it with --max-deck-size)")
+      return
+    else if (file_size > 0) then
       allocate (character(len=file_size) :: text)
       read (unit, iostat=ios, iomsg=msg) text
+      close (unit)
+      if (ios /= 0) then
+        call fatal_error(error, exit_input, name//": cannot read deck: "//printable(trim(msg)))
+        return
+      end if
     else
-      ! size unknown (pipe, device) or reported as 0: read byte by byte until the end
-      allocate (character(len=4096) :: text)
-      n = 0
-      do
-        read (unit, iostat=ios, iomsg=msg) byte
-        if (ios /= 0) exit
-        n = n + 1
-        if (n > len(text)) text = text//repeat(' ', len(text))
-        text(n:n) = byte
-      end do
-      if (is_iostat_end(ios)) ios = 0
-      text = text(1:n)
-    end if
-    close (unit)
-    if (ios /= 0) then
-      call fatal_error(error, exit_input, path//": cannot read deck: "//trim(msg))
-      return
+      ! size unknown (pipe, device) or reported as 0: read in chunks to its end or the limit
+      ! (the unit stays open meanwhile, so that a FIFO's writer still has a reader)
+      call read_bytes_limited(path, max_deck_size, text, status)
+      close (unit)
+      call check_read(name, "cannot read deck")
+      if (allocated(error)) return
     end if
     call deck_source_from_text(path, text, source, cut_width)
+  contains
+    !> The error of a read in chunks (none when all was read).
+    subroutine check_read(deck_name, failure)
+      character(*), intent(in) :: deck_name, failure
+      select case (status)
+      case (read_ok)
+        continue
+      case (read_too_long)
+        call fatal_error(error, exit_input, deck_name//": the deck is longer than the limit of "// &
+          int64_str(max_deck_size)//" bytes (endless input? raise the limit with --max-deck-size)")
+      case default
+        call fatal_error(error, exit_input, deck_name//": "//failure)
+      end select
+    end subroutine check_read
   end subroutine load_deck
+
+  !> Set the largest deck read (bytes, 0 to huge(1): a deck's positions are default integers).
+  subroutine set_max_deck_size(bytes)
+    !> The limit, bytes.
+    integer(int64), intent(in) :: bytes
+    max_deck_size = max(0_int64, min(bytes, int(huge(1), int64)))
+  end subroutine set_max_deck_size
 
   !> A deck from text held in memory: lines split at LF, a CR before each LF dropped, a
   !> leading UTF-8 byte-order mark dropped; a last line without LF is kept. A line is one
@@ -217,8 +248,56 @@ contains
       if (text(1:3) == bom) first = 4
     end if
     source%path = name
-    call records_from_text(text(first:), source, cut_width)
+    if (index(text, char(255)) > 0) then
+      call records_from_text(without_comment_ff(text(first:)), source, cut_width)
+    else
+      call records_from_text(text(first:), source, cut_width)
+    end if
   end subroutine deck_source_from_text
+
+  !> The text with each byte 0xFF of a comment made a blank: in a line before the first
+  !> group, and after a '!' outside quotes from the group on. gfortran's namelist READ takes
+  !> that byte (CP1251's 'я', Latin-1's 'ÿ') for the end of the file, so a comment in an
+  !> 8-bit encoding would end the comment early and its rest would be read as names.
+  pure function without_comment_ff(text) result(clean)
+    !> The deck's text.
+    character(*), intent(in) :: text
+    !> Allocated, not automatic: a deck of 10^8 bytes would overflow the stack.
+    character(len=:), allocatable :: clean
+    character(len=1) :: quote
+    logical :: in_group, comment, line_start
+    integer :: i
+    clean = text
+    in_group = .false.
+    comment = .false.
+    line_start = .true.
+    quote = " "
+    do i = 1, len(text)
+      if (text(i:i) == achar(10)) then
+        comment = .false.
+        line_start = .true.
+        cycle
+      end if
+      if (.not. in_group) then
+        if (line_start .and. text(i:i) == "&") then
+          in_group = .true.
+        else if (text(i:i) == char(255)) then
+          clean(i:i) = " "
+        end if
+        if (text(i:i) /= " " .and. text(i:i) /= achar(9)) line_start = .false.
+        cycle
+      end if
+      if (comment) then
+        if (text(i:i) == char(255)) clean(i:i) = " "
+      else if (quote /= " ") then
+        if (text(i:i) == quote) quote = " "
+      else if (text(i:i) == "'" .or. text(i:i) == '"') then
+        quote = text(i:i)
+      else if (text(i:i) == "!") then
+        comment = .true.
+      end if
+    end do
+  end function without_comment_ff
 
   !> The records of `text` (see deck_source_from_text; no byte-order mark handling).
   pure subroutine records_from_text(text, source, cut_width)
@@ -781,6 +860,9 @@ contains
       if (at == 0) cycle
       if (line_slice(source, k, at, at) == "&") then
         self%good = k - 1
+        self%group_line = k
+        self%header = line_slice(source, k, at, max(at, line_search(source, k, at + 1, " /,!"//achar(9), .true.) - 1))
+        if (line_search(source, k, at + 1, " /,!"//achar(9), .true.) == 0) self%header = line_slice(source, k, at, huge(1))
         exit
       end if
     end do
@@ -838,9 +920,14 @@ contains
       if (self%ios /= 0) then
         self%piece = self%trying
         self%failure = self%msg
-        self%stage = 3
+        self%stage = 5
         self%trying = 0
       end if
+    case (5)
+      ! the assignment read alone: when it reads, the fault is in the text before it
+      if (self%ios == 0) call blame_previous(self, source)
+      self%stage = 3
+      self%trying = 0
     case (3)
       self%reads(self%trying) = self%ios == 0
     case default
@@ -852,6 +939,20 @@ contains
         self%trying = self%trying + 1
         cut = self%starts(self%trying + 1) - 1
         call copy_through(source, self%bad, line(1:cut), self%records)
+        return
+      end if
+      self%stage = 5
+      self%trying = 0
+    end if
+    if (self%stage == 5) then
+      if (self%piece > 0 .and. allocated(self%header)) then
+        if (self%piece < size(self%starts)) then
+          text = strip_comment(line(self%starts(self%piece):self%starts(self%piece + 1) - 1))
+        else
+          text = strip_comment(line(self%starts(self%piece):))
+        end if
+        self%records = [character(len=max(len(text), len(self%header), 1)) :: self%header, text, "/"]
+        self%trying = 1
         return
       end if
       self%stage = 3
@@ -876,6 +977,27 @@ contains
     self%stage = 4
     probe_more = .false.
   end function probe_more
+
+  !> The failing assignment reads alone, so the text before it is at fault: the assignment
+  !> before it on its line, or else the last line above with text (its last assignment, or
+  !> the whole line when it only continues a list of values).
+  subroutine blame_previous(self, source)
+    type(namelist_probe_t), intent(inout) :: self
+    !> The deck.
+    type(deck_source_t), intent(in) :: source
+    integer :: k
+    if (self%piece > 1) then
+      self%piece = self%piece - 1
+      return
+    end if
+    do k = self%bad - 1, self%group_line + 1, -1
+      if (len(strip_comment(deck_line(source, k))) == 0) cycle
+      self%bad = k
+      self%starts = assignment_starts(deck_line(source, k))
+      self%piece = size(self%starts)
+      return
+    end do
+  end subroutine blame_previous
 
   !> A READ that succeeds. gfortran 12 carries state from a namelist READ that failed in a
   !> repeat count ("Repeat count too large", a pending count) into the next READ of an
@@ -1243,6 +1365,237 @@ contains
       starts = [starts, k]
     end do
   end function assignment_starts
+
+  !> A syntax pre-check of the deck's group `group`, before gfortran's namelist READ sees
+  !> it (which crashes on some malformed text, e.g. an array or type name followed by an
+  !> unclosed '(' : "&assur dyad("). From the line opening the group to its closing '/'
+  !> (or '&end', '$'), outside quotes and '!' comments: every '(' closes on its line, holds
+  !> only subscript or number characters and does not nest; no ')' without '('; a '='
+  !> follows a variable name ("name", "name(2)", "a(1)%b"); a quote opened is closed.
+  !> The error names the deck, the line, the group, the variable (the name before the
+  !> last '=', or the one at fault) and the reason.
+  subroutine check_namelist_syntax(source, group, error)
+    !> The deck.
+    type(deck_source_t), intent(in) :: source
+    !> Group name, lower case, without '&'.
+    character(*), intent(in) :: group
+    !> The syntax error (none when the text passes).
+    type(error_t), allocatable, intent(out) :: error
+    character(len=*), parameter :: tab = achar(9)
+    character(len=*), parameter :: in_parentheses = &
+      "0123456789abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ_+-.,:* "//tab
+    character(len=:), allocatable :: line, name
+    character(len=1) :: quote, c
+    integer :: k, i, start, open_at, quote_line
+    logical :: started
+    quote = " "
+    quote_line = 0
+    started = .false.
+    name = ""
+    do k = 1, deck_line_count(source)
+      line = deck_line(source, k)
+      start = 1
+      if (.not. started) then
+        start = verify(line, " "//tab)
+        if (start == 0) cycle
+        if (line(start:start) /= "&") cycle
+        ! the group name ends before a blank, '/', ',' or '!'
+        start = start + 1
+        do while (start <= len(line))
+          if (index(" /,!"//tab, line(start:start)) > 0) exit
+          start = start + 1
+        end do
+        started = .true.
+      end if
+      open_at = 0
+      i = start
+      do while (i <= len(line))
+        c = line(i:i)
+        if (quote /= " ") then
+          if (c == char(255)) then
+            call syntax_failure(source, group, k, line, open_at, name, &
+              "byte \xFF in a text in quotes cannot be read (save the deck as UTF-8)", error)
+            return
+          end if
+          if (c == quote) then
+            ! a doubled quote stands for one quote character inside the text
+            if (i < len(line)) then
+              if (line(i + 1:i + 1) == quote) then
+                i = i + 2
+                cycle
+              end if
+            end if
+            quote = " "
+          end if
+        else if (open_at > 0) then
+          if (c == ")") then
+            open_at = 0
+          else if (index(in_parentheses, c) == 0) then
+            call syntax_failure(source, group, k, line, open_at, name, &
+              "'"//printable(c)//"' inside parentheses (a subscript like dyad(2) "// &
+              "or a value like (1.0, 2.0) holds numbers only)", error)
+            return
+          end if
+        else if (c == "'" .or. c == '"') then
+          quote = c
+          quote_line = k
+        else if (c == "!") then
+          exit
+        else if (c == "(") then
+          open_at = i
+        else if (c == ")") then
+          call syntax_failure(source, group, k, line, open_at, name, "')' without '('", error)
+          return
+        else if (c == "=") then
+          name = designator_before(line(1:i - 1))
+          if (len(name) == 0) then
+            call syntax_failure(source, group, k, line, open_at, name, "'=' without a variable name before it", error)
+            return
+          end if
+        else if (c == "/" .or. c == "$" .or. c == "&") then
+          return
+        end if
+        i = i + 1
+      end do
+      if (open_at > 0) then
+        call syntax_failure(source, group, k, line, open_at, name, &
+          "unclosed '(' (a subscript like dyad(2) or a value like (1.0, 2.0) must close on its line)", error)
+        return
+      end if
+    end do
+    if (quote /= " ") then
+      call syntax_failure(source, group, quote_line, "", 0, name, &
+        "unclosed quote "//quote//" (a text must end with the quote it starts with)", error)
+    end if
+  end subroutine check_namelist_syntax
+
+  !> The pre-check's error at line `at`: "<deck>:<at>: &<group>: <variable>: <reason>"; the
+  !> variable is the name written just before an unclosed '(' (at `open_at` of `line`, 0:
+  !> none) when there is one, else `name` (the last assigned).
+  pure subroutine syntax_failure(source, group, at, line, open_at, name, reason, error)
+    !> The deck.
+    type(deck_source_t), intent(in) :: source
+    !> Group name.
+    character(*), intent(in) :: group
+    !> Line of the fault.
+    integer, intent(in) :: at
+    !> Its text ("" when not needed).
+    character(*), intent(in) :: line
+    !> Column of an unclosed '(' on it (0: none).
+    integer, intent(in) :: open_at
+    !> The variable of the last '=' ("" when none yet).
+    character(*), intent(in) :: name
+    !> Why.
+    character(*), intent(in) :: reason
+    !> The input error.
+    type(error_t), allocatable, intent(out) :: error
+    character(len=*), parameter :: tab = achar(9)
+    character(len=:), allocatable :: who
+    integer :: j, e
+    who = name
+    if (open_at > 0) then
+      ! the name written just before the '(' (a designator, or a value's text)
+      j = open_at - 1
+      do while (j >= 1)
+        if (index(" "//tab, line(j:j)) == 0) exit
+        j = j - 1
+      end do
+      e = j
+      do while (j >= 1)
+        if (index("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_%()", line(j:j)) == 0) exit
+        j = j - 1
+      end do
+      if (e > j .and. e >= 1) then
+        if (len(who) == 0 .or. index(line(open_at:), "=") > 0 .or. e == open_at - 1) who = line(j + 1:open_at)
+      end if
+    end if
+    if (len(who) == 0) who = "(no variable yet)"
+    call fatal_error(error, exit_input, source%path//":"//int_str(at)//": &"//group//": "// &
+      clipped(printable(who))//": "//reason)
+  end subroutine syntax_failure
+
+  !> The variable name written just before a '=' ("dyad(2)%l2" of "  dyad(2)%l2 "), "" when
+  !> the text before the '=' does not end with one.
+  pure function designator_before(text) result(name)
+    !> The line up to the '='.
+    character(*), intent(in) :: text
+    character(len=:), allocatable :: name
+    character(len=*), parameter :: tab = achar(9)
+    integer :: e, j
+    name = ""
+    e = len(text)
+    do while (e >= 1)
+      if (index(" "//tab, text(e:e)) == 0) exit
+      e = e - 1
+    end do
+    j = e
+    do while (j >= 1)
+      if (index("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_%(),:+- ", text(j:j)) == 0) exit
+      if (text(j:j) == " ") then
+        ! a blank inside a subscript ("a( 1 )") or before one ("f5c (3)") only
+        if (count_char(text(j + 1:e), ")") <= count_char(text(j + 1:e), "(") .and. text(j + 1:j + 1) /= "(") exit
+      end if
+      j = j - 1
+    end do
+    do while (j < e)
+      if (index("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ", text(j + 1:j + 1)) > 0) exit
+      j = j + 1
+    end do
+    if (j < e) name = text(j + 1:e)
+  contains
+    pure integer function count_char(t, ch)
+      character(*), intent(in) :: t
+      character(len=1), intent(in) :: ch
+      integer :: m
+      count_char = 0
+      do m = 1, len(t)
+        if (t(m:m) == ch) count_char = count_char + 1
+      end do
+    end function count_char
+  end function designator_before
+
+  !> Length of the longest quoted text in the deck (quotes excluded, a doubled quote
+  !> counted once; at least 1): a character variable of this length holds any text the
+  !> deck gives, without a stack-sized buffer.
+  pure integer function longest_quoted(source) result(longest)
+    !> The deck.
+    type(deck_source_t), intent(in) :: source
+    character(len=:), allocatable :: line
+    character(len=1) :: quote
+    integer :: k, i, length
+    longest = 1
+    quote = " "
+    length = 0
+    do k = 1, deck_line_count(source)
+      line = deck_line(source, k)
+      i = 1
+      do while (i <= len(line))
+        if (quote /= " ") then
+          if (line(i:i) == quote) then
+            if (i < len(line)) then
+              if (line(i + 1:i + 1) == quote) then
+                length = length + 1
+                i = i + 2
+                cycle
+              end if
+            end if
+            quote = " "
+            longest = max(longest, length)
+          else
+            length = length + 1
+          end if
+        else if (line(i:i) == "'" .or. line(i:i) == '"') then
+          quote = line(i:i)
+          length = 0
+        else if (line(i:i) == "!") then
+          exit
+        end if
+        i = i + 1
+      end do
+      if (quote /= " ") length = length + 1
+    end do
+    longest = max(longest, length)
+  end function longest_quoted
 
   !> All required real variables that the deck did not set, in one message:
   !> "<deck>: &<group>: missing required variables: a, b, c".

@@ -6,7 +6,8 @@ module kinetostat_gears_deck
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str, number_str, lower
   use kinetostat_text_buffer, only: text_buffer_t
-  use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, &
+  use kinetostat_deck, only: &
+    check_namelist_syntax, write_template_lines, deck_context_t, unset_real, &
     deck_source_t, namelist_probe_t, deck_error, is_set, require_set, require_positive, require_rule, &
     require_whole, require_all_set
   use kinetostat_gears, only: gear_stage_t, gear_spur, gear_helical, gear_bevel, gear_planetary, &
@@ -100,6 +101,8 @@ contains
     alpha_w23 = unset_real; beta = unset_real; gamma = unset_real
     z1 = unset_real; z2 = unset_real; z3 = unset_real; k = unset_real
 
+    call check_namelist_syntax(source, ctx%group, error)
+    if (allocated(error)) return
     read (source%records, nml=gears, iostat=probe%ios, iomsg=probe%msg)
     do while (probe%retry(source)) ! on failure: find the line and the assignment
       read (probe%records, nml=gears, iostat=probe%ios, iomsg=probe%msg)

@@ -686,12 +686,15 @@ contains
     do k = 1, size(mech%pairs)
       associate (pr => mech%pairs(k))
         if (pr%kind == pair_r) then
-          s = point_position(mech, step%q, pr%a, pr%at)
+          ! each link's own coordinates of the joint (they differ by Newton's residual, whose
+          ! lever would otherwise show in the moments of a link whose loads all act there)
+          call add_on(bal, pr%a, point_position(mech, step%q, pr%a, pr%at), step%f(:, k), 0.0_wp)
+          call add_on(bal, pr%b, point_position(mech, step%q, pr%b, pr%at), -step%f(:, k), 0.0_wp)
         else
           s = point_position(mech, step%q, pr%a + pr%b - pr%guide, pr%at)
+          call add_on(bal, pr%a, s, step%f(:, k), step%couple(k))
+          call add_on(bal, pr%b, s, -step%f(:, k), -step%couple(k))
         end if
-        call add_on(bal, pr%a, s, step%f(:, k), step%couple(k))
-        call add_on(bal, pr%b, s, -step%f(:, k), -step%couple(k))
       end associate
     end do
     !GCC$ novector

@@ -8,7 +8,7 @@ module kinetostat_step_table
   use kinetostat_kinds, only: wp, rad_to_deg
   implicit none
   private
-  public :: step_table_t, column_t, echo_record_t, echo_cursor_t, remark_t, column_tally_t, edge_point_t, step_span
+  public :: step_table_t, column_t, echo_record_t, echo_cursor_t, remark_t, column_tally_t, edge_point_t, step_span, worst_row
   public :: col_input_angle, col_force, col_force_angle, col_component, col_moment, col_length, &
     col_flag, col_count, col_ratio, col_other, column_kind_names
   public :: echo_real_kind, echo_int_kind, echo_logical_kind, echo_array_kind, echo_text_kind, &
@@ -160,6 +160,13 @@ module kinetostat_step_table
     real(wp) :: area2 = 0.0_wp
     !> Value in the last row seen.
     real(wp) :: last = 0.0_wp
+    !> `total` of the values scaled by kinetostat_summary's value_scale (2**-512), and
+    !> `area2` of the values and input steps scaled by value_scale and step_scale
+    !> (2**-560): the same sums in a range where they cannot overflow (|v| < 1.8e308),
+    !> used when the plain ones did.
+    real(wp) :: total_scaled = 0.0_wp
+    !> See `total_scaled`.
+    real(wp) :: area2_scaled = 0.0_wp
   end type column_tally_t
 
   !> The input coordinate at a row next to a load edge (for the coarse-step warning's text).
@@ -206,6 +213,10 @@ module kinetostat_step_table
     real(wp) :: max_residual = 0.0_wp
     !> Largest relative mismatch of the driving effort against its independent value.
     real(wp) :: max_mismatch = 0.0_wp
+    !> Row of the run (1..) with the largest residual (0: not known).
+    integer :: residual_row = 0
+    !> Row of the run with the largest mismatch (0: not known).
+    integer :: mismatch_row = 0
     !> Name of the driving quantity ("M1", "F2", ...).
     character(len=:), allocatable :: driver
     !> Footer label of the residual line (default: all links and steps).
@@ -259,6 +270,9 @@ module kinetostat_step_table
     real(wp) :: largest_step = 0.0_wp
     !> Twice the driver's work so far (trapezoid sum over its coordinate), J.
     real(wp) :: work2 = 0.0_wp
+    !> `work2` of the driver's values and coordinate steps scaled (see column_tally_t's
+    !> `area2_scaled`), used when `work2` overflowed.
+    real(wp) :: work2_scaled = 0.0_wp
     !> The driver's coordinate in the last row tallied (m, or rad).
     real(wp) :: last_coordinate = 0.0_wp
     !> Input coordinates at the rows next to a load edge (for the coarse-step warning).
@@ -599,7 +613,7 @@ contains
   end function is_whole
 
   !> The self-check figures of the run.
-  pure subroutine set_selfcheck(self, max_residual, max_mismatch, driver)
+  pure subroutine set_selfcheck(self, max_residual, max_mismatch, driver, residual_row, mismatch_row)
     class(step_table_t), intent(inout) :: self
     !> Largest relative equilibrium residual over all links and rows.
     real(wp), intent(in) :: max_residual
@@ -607,15 +621,38 @@ contains
     real(wp), intent(in) :: max_mismatch
     !> Name of the driving quantity ("M1", "F2", ...).
     character(*), intent(in) :: driver
+    !> Row of this block (1..) with the largest residual, and with the largest mismatch.
+    integer, intent(in), optional :: residual_row, mismatch_row
     ! a later block of the run keeps the largest over all blocks (a NaN stays, for the guard)
     if (self%row_offset == 0 .or. max_residual > self%max_residual .or. ieee_is_nan(max_residual)) then
       self%max_residual = max_residual
+      self%residual_row = 0
+      if (present(residual_row)) self%residual_row = self%row_offset + residual_row
     end if
     if (self%row_offset == 0 .or. max_mismatch > self%max_mismatch .or. ieee_is_nan(max_mismatch)) then
       self%max_mismatch = max_mismatch
+      self%mismatch_row = 0
+      if (present(mismatch_row)) self%mismatch_row = self%row_offset + mismatch_row
     end if
     self%driver = driver
   end subroutine set_selfcheck
+
+  !> Index of the worst self-check figure of a block: the first NaN, else the largest (1
+  !> for an empty array).
+  pure integer function worst_row(figures)
+    !> Self-check figures of the block's rows.
+    real(wp), intent(in) :: figures(:)
+    integer :: k
+    worst_row = 1
+    if (size(figures) == 0) return
+    do k = 1, size(figures)
+      if (ieee_is_nan(figures(k))) then
+        worst_row = k
+        return
+      end if
+    end do
+    worst_row = maxloc(figures, 1)
+  end function worst_row
 
   !> Number of rows.
   pure integer function row_count(self)

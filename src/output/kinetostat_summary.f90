@@ -3,6 +3,7 @@
 !> the input angle; the work of the driving moment (or force) over the run; and the warning
 !> when the step is too coarse to catch a force peak next to a load that switches on or off.
 module kinetostat_summary
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use kinetostat_kinds, only: wp, deg_to_rad
   use kinetostat_text, only: int_str, lower
   use kinetostat_step_table, only: step_table_t, col_force, col_force_angle, col_moment, column_tally_t, &
@@ -17,6 +18,12 @@ module kinetostat_summary
   real(wp), parameter :: tie_rel = 1.0e-12_wp
   !> Input steps coarser than this (deg) may miss a force peak next to a load edge.
   real(wp), parameter :: coarse_step_limit = 5.0_wp
+  !> Scale of the values in the sums kept for overflow (a power of two: exact): a value
+  !> below 1.8e308 becomes one below 1.4e154, so sums of 10^6 of them stay finite.
+  real(wp), parameter :: value_scale = scale(1.0_wp, -512)
+  !> Scale of the input (or driver coordinate) steps in those sums: a step below 3.6e308
+  !> becomes one below 1e140, so a product with a scaled value stays below 1.4e294.
+  real(wp), parameter :: step_scale = scale(1.0_wp, -560)
 
   !> Extremes and mean of one column over a run.
   type :: column_stats_t
@@ -91,10 +98,15 @@ contains
         table%first_at = x
         table%largest_step = 0.0_wp
         table%work2 = 0.0_wp
+        table%work2_scaled = 0.0_wp
       else
         table%largest_step = max(table%largest_step, abs(x - table%last_at))
-        if (work_known) table%work2 = table%work2 + (table%rows(d, k) + table%tally(d)%last) * &
-                                      (coordinate - table%last_coordinate)
+        if (work_known) then
+          table%work2 = table%work2 + (table%rows(d, k) + table%tally(d)%last) * &
+                        (coordinate - table%last_coordinate)
+          table%work2_scaled = table%work2_scaled + (table%rows(d, k) * value_scale + &
+            table%tally(d)%last * value_scale) * (coordinate * step_scale - table%last_coordinate * step_scale)
+        end if
       end if
       do c = 1, nc
         v = table%rows(c, k)
@@ -102,7 +114,8 @@ contains
           t%largest = max(t%largest, abs(v))
           if (row == 1) then
             t = column_tally_t(max=v, min=v, max_row=1, min_row=1, max_at=x, min_at=x, peak=v, peak_row=1, &
-                               peak_at=x, largest=abs(v), total=v, area2=0.0_wp, last=v)
+                               peak_at=x, largest=abs(v), total=v, area2=0.0_wp, last=v, &
+                               total_scaled=v * value_scale, area2_scaled=0.0_wp)
             cycle
           end if
           tie = tie_rel * t%largest
@@ -123,6 +136,9 @@ contains
           end if
           t%total = t%total + v
           t%area2 = t%area2 + (v + t%last) * (x - table%last_at)
+          t%total_scaled = t%total_scaled + v * value_scale
+          t%area2_scaled = t%area2_scaled + (v * value_scale + t%last * value_scale) * &
+                           (x * step_scale - table%last_at * step_scale)
           t%last = v
         end associate
       end do
@@ -183,9 +199,17 @@ contains
       s%max_at = t%max_at
       s%min_at = t%min_at
       s%mean = t%total / real(n, wp)
+      if (.not. ieee_is_finite(s%mean)) s%mean = t%total_scaled / real(n, wp) / value_scale
       if (table%input_column > 0 .and. n > 1) then
         span = table%last_at - table%first_at
-        if (span /= 0.0_wp) s%mean = 0.5_wp * t%area2 / span
+        if (span /= 0.0_wp) then
+          s%mean = 0.5_wp * t%area2 / span
+          if (.not. ieee_is_finite(s%mean)) then
+            ! the sums overflowed (values near the largest real): the scaled ones
+            span = table%last_at * step_scale - table%first_at * step_scale
+            if (span /= 0.0_wp) s%mean = 0.5_wp * (t%area2_scaled / span) / value_scale
+          end if
+        end if
       end if
     end associate
   end function column_stats
@@ -210,6 +234,10 @@ contains
     d = table%column_index(table%driver)
     call work_kind(table, d, known, in_rad)
     if (known) work = 0.5_wp * table%work2
+    if (known .and. .not. ieee_is_finite(work)) then
+      ! the sum overflowed: the scaled one (still not finite when the work itself is not)
+      work = 0.5_wp * table%work2_scaled / value_scale / step_scale
+    end if
   end subroutine drive_work
 
   !> A warning when the input step exceeds `coarse_step_limit` and the largest value of a

@@ -4,6 +4,7 @@
 module kinetostat_run
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use kinetostat_kinds, only: wp
+  use kinetostat_selfcheck, only: selfcheck_tolerance
   use kinetostat_error, only: error_t, fatal_error, exit_geometry, exit_input
   use kinetostat_text, only: int_str
   use kinetostat_step_table, only: step_table_t, echo_cursor_t, echo_real_kind, echo_array_kind
@@ -19,7 +20,8 @@ module kinetostat_run
   use kinetostat_error, only: exit_usage
   use kinetostat_labels, only: lang_en
   use kinetostat_override, only: override_t, mark_overrides
-  use kinetostat_summary, only: coarse_step_warning, summary_header, summary_row, tally_rows
+  use kinetostat_summary, only: coarse_step_warning, summary_header, summary_row, tally_rows, column_stats_t, &
+    column_stats, drive_work, summarized
   use kinetostat_table_writer, only: write_table_head, write_table_rows, write_table_tail, write_shaking_rows
   use kinetostat_spool, only: spool_t
   use kinetostat_bodies, only: mass_model_t
@@ -82,6 +84,9 @@ module kinetostat_run
     !> Values of an echoed array written between drains of the output (0: the step table's
     !> echo_chunk_values); the output does not depend on it (tests vary it).
     integer :: echo_chunk = 0
+    !> --allow-selfcheck-failure: a failed self-check is a warning and the output is
+    !> written (by default it is a computation error, exit 3, and nothing is written).
+    logical :: allow_selfcheck_failure = .false.
   end type run_options_t
 
 contains
@@ -201,6 +206,10 @@ contains
       if (table%last_block()) then
         call guard_inputs(table, error)
         if (allocated(error)) return
+        call guard_summary(table, options%kinematics, error)
+        if (allocated(error)) return
+        call judge_selfcheck(table, options%allow_selfcheck_failure, error)
+        if (allocated(error)) return
         call coarse_step_warning(table, warning)
         if (allocated(warning)) call table%add_warning(warning)
       end if
@@ -220,6 +229,8 @@ contains
           if (allocated(error)) return
         end do
       case (format_svg)
+        call guard_drawable(table, error)
+        if (allocated(error)) return
         if (options%at_step > 0) then
           call write_at_step(mech, table, options, out, error)
         else if (allocated(options%pairs)) then
@@ -356,13 +367,119 @@ contains
       return
     end do
     if (table%has_selfcheck) then
-      if (.not. (ieee_is_finite(table%max_residual) .and. ieee_is_finite(table%max_mismatch))) then
-        call fatal_error(error, exit_geometry, table%deck//": &"//table%mechanism// &
-          ": the self-check figures are not finite (overflow: the deck's magnitudes are out of the "// &
-          "representable range)")
+      if (.not. ieee_is_finite(table%max_residual)) then
+        call fatal_error(error, exit_geometry, table%deck//": &"//table%mechanism//": "// &
+          selfcheck_where(table, table%residual_row)//"the self-check's equilibrium residual is not finite "// &
+          "(overflow: the deck's magnitudes are out of the representable range)")
+      else if (.not. ieee_is_finite(table%max_mismatch)) then
+        call fatal_error(error, exit_geometry, table%deck//": &"//table%mechanism//": "// &
+          selfcheck_where(table, table%mismatch_row)//"the self-check's "//table%driver//" mismatch is not "// &
+          "finite (overflow: the deck's magnitudes are out of the representable range)")
       end if
     end if
   end subroutine guard_inputs
+
+  !> "step 12: " (the row of a self-check figure; "" when not known).
+  pure function selfcheck_where(table, row) result(text)
+    !> The results.
+    type(step_table_t), intent(in) :: table
+    !> Row of the run (0: not known).
+    integer, intent(in) :: row
+    character(len=:), allocatable :: text
+    text = ""
+    if (row > 0) text = table%row_name//" "//int_str(row)//": "
+  end function selfcheck_where
+
+  !> A self-check above selfcheck_tolerance means the numbers are wrong (a bug, or input
+  !> beyond the precision of the arithmetic, such as an angle of 1e20 deg): a computation
+  !> error (exit 3) naming the figure and the step, so that nothing is written; with
+  !> `allowed` (--allow-selfcheck-failure) a warning of the run instead (in the JSON's
+  !> warnings too) and the output is written.
+  pure subroutine judge_selfcheck(table, allowed, error)
+    !> The results (all rows).
+    type(step_table_t), intent(inout) :: table
+    !> Whether a failed self-check is only a warning.
+    logical, intent(in) :: allowed
+    !> The error, when the self-check failed and that is not allowed.
+    type(error_t), allocatable, intent(out) :: error
+    character(len=:), allocatable :: what
+    character(len=16) :: residual_text, mismatch_text, limit_text
+    if (.not. table%has_selfcheck .or. table%tallied_rows == 0) return
+    if (table%max_residual <= selfcheck_tolerance .and. table%max_mismatch <= selfcheck_tolerance) return
+    write (residual_text, '(es9.2)') table%max_residual
+    write (mismatch_text, '(es9.2)') table%max_mismatch
+    write (limit_text, '(es9.1)') selfcheck_tolerance
+    if (table%max_residual > selfcheck_tolerance) then
+      what = selfcheck_where(table, table%residual_row)//"equilibrium residual "//trim(adjustl(residual_text))
+    else
+      what = selfcheck_where(table, table%mismatch_row)//table%driver//" mismatch vs the power balance "// &
+        trim(adjustl(mismatch_text))
+    end if
+    what = "self-check failed at "//what//" (limit "//trim(adjustl(limit_text))//"; max equilibrium residual "// &
+      trim(adjustl(residual_text))//", max "//table%driver//" mismatch "//trim(adjustl(mismatch_text))//")"
+    if (allowed) then
+      call table%add_warning(what//": the results are not trustworthy (written because of "// &
+        "--allow-selfcheck-failure)")
+    else
+      call fatal_error(error, exit_geometry, table%deck//": &"//table%mechanism//": "//what// &
+        ": the results are wrong (a bug, or input beyond the precision of the arithmetic, e.g. a huge "// &
+        "angle); nothing written (--allow-selfcheck-failure writes them with a warning)")
+    end if
+  end subroutine judge_selfcheck
+
+  !> guard_finite for the figures of the run's summary (the SUMMARY block of the table,
+  !> --format summary, a sweep's rows): each summarized column's mean and the driver's
+  !> work. The means are averages of finite values and kept in range (see column_stats);
+  !> only a work beyond the largest real is left, an error (exit 3) naming it.
+  pure subroutine guard_summary(table, kinematics, error)
+    !> The results (all rows tallied).
+    type(step_table_t), intent(in) :: table
+    !> Whether the kinematics columns are summarized too.
+    logical, intent(in) :: kinematics
+    !> The error, if a figure is not finite.
+    type(error_t), allocatable, intent(out) :: error
+    type(column_stats_t) :: s
+    real(wp) :: work
+    logical :: known
+    integer :: c
+    if (table%tallied_rows == 0) return
+    do c = 1, size(table%columns)
+      if (.not. summarized(table, c, kinematics)) cycle
+      s = column_stats(table, c)
+      if (ieee_is_finite(s%mean)) cycle
+      call fatal_error(error, exit_geometry, table%deck//": &"//table%mechanism//": the mean of "// &
+        table%columns(c)%name//" over the run is not finite (overflow: the deck's magnitudes are out of the "// &
+        "representable range)")
+      return
+    end do
+    call drive_work(table, work, known)
+    if (known .and. .not. ieee_is_finite(work)) then
+      call fatal_error(error, exit_geometry, table%deck//": &"//table%mechanism//": the work of "// &
+        table%driver//" over the run is not finite (overflow: the deck's magnitudes are out of the "// &
+        "representable range)")
+    end if
+  end subroutine guard_summary
+
+  !> The SVG maps every value to the page through ranges, tick steps and means (sums of
+  !> products of two values); a value beyond `drawable_limit` in magnitude would overflow
+  !> them: a geometry error (exit 3) naming the step and the column, before anything is drawn.
+  pure subroutine guard_drawable(table, error)
+    !> The results.
+    type(step_table_t), intent(in) :: table
+    !> The error, if a value cannot be drawn.
+    type(error_t), allocatable, intent(out) :: error
+    !> Largest magnitude drawn (its products and sums over 10^6 rows stay finite).
+    real(wp), parameter :: drawable_limit = 1.0e150_wp
+    integer :: k, c
+    do k = 1, table%row_count()
+      do c = 1, size(table%columns)
+        if (abs(table%rows(c, k)) <= drawable_limit) cycle
+        call fatal_error(error, exit_geometry, table%deck//": &"//table%mechanism//": "// &
+          row_text(table, k)//": "//table%columns(c)%name//" is too large to draw (magnitude above 1e150)")
+        return
+      end do
+    end do
+  end subroutine guard_drawable
 
   !> "step k (phi1 = x deg)" or "stage k".
   pure function row_text(table, k) result(text)

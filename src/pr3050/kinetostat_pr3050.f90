@@ -285,7 +285,8 @@ contains
     terms(5) = m_phi2 * pos%u23
     terms(6) = m_phi3
     step%f2_power = -sum(terms) / pos%ds
-    step%mismatch = power_mismatch(step%f2, step%f2_power, sum(abs(terms)) / abs(pos%ds))
+    step%mismatch = power_mismatch(step%f2, step%f2_power, sum(abs(terms)) / abs(pos%ds), &
+      maxval(links%scale_f))
   end function pr3050_step
 
 end module kinetostat_pr3050

@@ -7,6 +7,7 @@ module kinetostat_pr3050_layout
   use kinetostat_text, only: int_str, real_str
   use kinetostat_vec2, only: angle_360_deg
   use kinetostat_noise, only: noise_rel, noise_floor, force_columns, force_components, angles_0_360
+  use kinetostat_step_table, only: worst_row
   use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_component, &
     step_span, &
     col_moment, col_length, col_other
@@ -220,7 +221,8 @@ contains
         call put_kinematics(table, k, self%deck%p, steps(k))
       end do
     end if
-    call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "F2")
+    call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "F2", &
+      worst_row([steps%residual]), worst_row([steps%mismatch]))
   end subroutine solve
 
   !> The kinematics columns of step `k` (frame: origin C, x from C to A): joints C, A, B and

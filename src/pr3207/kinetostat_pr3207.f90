@@ -8,7 +8,8 @@ module kinetostat_pr3207
   use kinetostat_kinds, only: wp
   use kinetostat_vec2, only: unit_at, perp, cross, polar
   use kinetostat_loads, only: inertia_force, inertia_moment, gravity_force
-  use kinetostat_selfcheck, only: link_balance_t, link_balance, equilibrium_residual, power_mismatch
+  use kinetostat_selfcheck, only: link_balance_t, link_balance, equilibrium_residual, power_mismatch, &
+    load_moment_scale
   implicit none
   private
   public :: pr3207_params_t, pr3207_position_t, pr3207_step_t
@@ -227,7 +228,7 @@ contains
     terms(4) = dot_product(g1, [0.0_wp, 0.0_wp])
     terms(5) = m_input
     step%m1_power = -sum(terms)
-    step%mismatch = power_mismatch(step%m1, step%m1_power, sum(abs(terms)))
+    step%mismatch = power_mismatch(step%m1, step%m1_power, sum(abs(terms)), load_moment_scale(links))
   end function pr3207_step
 
   !> The reduced quantities at crank angle `phi1` (rad) with cutting force `f5c` (N, along

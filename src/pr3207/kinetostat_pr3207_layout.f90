@@ -5,6 +5,7 @@ module kinetostat_pr3207_layout
   use kinetostat_deck, only: deck_source_t
   use kinetostat_error, only: error_t
   use kinetostat_noise, only: noise_floor, force_columns, force_components, angles_0_360
+  use kinetostat_step_table, only: worst_row
   use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_moment, step_span
   use kinetostat_format, only: fixed_field
   use kinetostat_labels, only: lang_ru
@@ -191,7 +192,8 @@ contains
         call put_kinematics(table, k, self%deck%p, steps(k))
       end do
     end if
-    call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "M1")
+    call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "M1", &
+      worst_row([steps%residual]), worst_row([steps%mismatch]))
   end subroutine solve
 
   !> The peaks of the pair forces with the true motion against those at omega1 = omega_m.

@@ -11,7 +11,8 @@ module kinetostat_sixbar
   use kinetostat_kinds, only: wp, pi
   use kinetostat_vec2, only: unit_at, perp, cross
   use kinetostat_loads, only: inertia_force, inertia_moment, gravity_force
-  use kinetostat_selfcheck, only: link_balance_t, link_balance, equilibrium_residual, power_mismatch
+  use kinetostat_selfcheck, only: link_balance_t, link_balance, equilibrium_residual, power_mismatch, &
+    load_moment_scale
   implicit none
   private
   public :: sixbar_params_t, sixbar_position_t, sixbar_step_t
@@ -443,7 +444,7 @@ contains
     terms(6) = dot_product(load5, pos%v_hq)
     terms(7) = dot_product(g1 + g3, zero2)
     step%m1_power = -sum(terms)
-    step%mismatch = power_mismatch(step%m1, step%m1_power, sum(abs(terms)))
+    step%mismatch = power_mismatch(step%m1, step%m1_power, sum(abs(terms)), load_moment_scale(links))
   end function sixbar_step
 
   !> The reduced quantities at crank angle `phi1` (rad) with the slider's load `f5` (N, along

@@ -4,7 +4,8 @@ module kinetostat_sixbar_deck
   use kinetostat_error, only: error_t, fatal_error, exit_geometry
   use kinetostat_text, only: real_str, int_str
   use kinetostat_text_buffer, only: text_buffer_t
-  use kinetostat_deck, only: write_template_lines, deck_context_t, unset_real, deck_array_capacities, &
+  use kinetostat_deck, only: &
+    check_namelist_syntax, write_template_lines, deck_context_t, unset_real, deck_array_capacities, &
     deck_source_t, namelist_probe_t, require_all_set, deck_error, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn
   use kinetostat_sixbar, only: sixbar_params_t, sixbar_extreme_phi1
@@ -114,6 +115,8 @@ contains
     capacity = deck_array_capacities(source, ctx%group, ["f5"])
     allocate (f5(capacity(1)), source=unset_real)
 
+    call check_namelist_syntax(source, ctx%group, error)
+    if (allocated(error)) return
     read (source%records, nml=sixbar, iostat=probe%ios, iomsg=probe%msg)
     do while (probe%retry(source)) ! on failure: find the line and the assignment
       read (probe%records, nml=sixbar, iostat=probe%ios, iomsg=probe%msg)

@@ -6,6 +6,7 @@ module kinetostat_sixbar_layout
   use kinetostat_error, only: error_t, fatal_error, exit_geometry
   use kinetostat_text, only: real_str, int_str
   use kinetostat_noise, only: noise_floor, force_columns, force_components, angles_pm180
+  use kinetostat_step_table, only: worst_row
   use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_component, &
     step_span, &
     col_moment
@@ -209,7 +210,8 @@ contains
         call put_kinematics(table, k, self%deck%p, steps(k))
       end do
     end if
-    call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "M1")
+    call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "M1", &
+      worst_row([steps%residual]), worst_row([steps%mismatch]))
   end subroutine solve
 
   !> The reduced quantities of a computed step (dynamics = 'reduced': the deck's speed).

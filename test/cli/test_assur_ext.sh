@@ -199,11 +199,12 @@ expect_input_error assur-global-l2 '&assur: dyad\(1\)%l2: derived from at2 and b
 expect_input_error assur-global-b-rpr '&assur: dyad\(1\)%b: not used by this dyad \(kind RPR\)' "$(deck_with gl_br data/assur_pr3050.nml "s/dyad(1)%e = 0/dyad(1)%e = 0, dyad(1)%b = 1, 1/; s/frame_id = 4/coordinates = 'global', phi_ref = 0, frame_id = 4/")"
 
 # --- a title longer than 80 characters is an input error; an unterminated quote (a truncated
-# deck) is a namelist error on one line, without gfortran's runtime warning
+# deck) is a syntax error on one line naming the line and the variable, without gfortran's
+# runtime warning
 expect_input_error assur-title-long '&assur: title: longer than 80 characters' \
   "$(deck_with tl_long data/assur_fourbar.nml "s/title = '[^']*'/title = '$(printf 'x%.0s' {1..81})'/")"
 head -c 286 data/assur_fourbar.nml >"$cli_tmp/tl_cut.nml"
-expect_input_error assur-title-unterminated '&assur: namelist group not terminated' "$cli_tmp/tl_cut.nml"
+expect_input_error assur-title-unterminated "tl_cut.nml:5: &assur: title: unclosed quote '" "$cli_tmp/tl_cut.nml"
 
 # --- --frame link: pair forces in the axes of the link each acts on
 sc=data/assur_slider_crank.nml

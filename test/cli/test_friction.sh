@@ -69,3 +69,32 @@ expect_input_error friction-no-radius 'crank_r: the journal radius must be > 0' 
   "$(deck_with fr_r0 "$fr_deck" 's/crank_r = 0.01/crank_r = 0/')"
 expect_input_error friction-infinite-f 'dyad\(1\)%f2: must be a finite number' \
   "$(deck_with fr_inf "$fr_deck" 's/dyad(1)%f2 = 0.1,/dyad(1)%f2 = Inf,/')"
+
+# --- a sliding pair's reported reaction is the whole reaction (normal + friction force), its
+# normal part the F30N column: on every step of the friction slider-crank (--kinematics CSV)
+# the slider's force balance closes with F30 (F30 - F23 + 500 N along -x + G3 - m3*a_S3 = 0,
+# relative to the 500 N load, limit 1e-9), |F30| = |F30N|*sqrt(1 + f^2) (f = 0.15, limit
+# 1e-12 relative) and the friction part F30x opposes the slider's motion (the sign of
+# dx_S3/dphi1 from the neighbouring steps). With the normal force alone the balance misses
+# f*|N| (up to 19 N).
+run_ks "$fr_deck" --format csv --kinematics
+python3 - "$out" >"$cli_tmp/fr_whole.log" 2>&1 <<'PY' && pass || fail friction-whole-reaction "$(head -5 "$cli_tmp/fr_whole.log")"
+import csv, math, sys
+rows = [{k: float(v) for k, v in r.items()} for r in csv.DictReader(open(sys.argv[1]))]
+m3, g, f, load = 1.5, 9.81, 0.15, 500.0
+bad = []
+for k, r in enumerate(rows):
+    rx = r["F30_x"] - r["F23_x"] - load - m3 * r["ax_S3"]
+    ry = r["F30_y"] - r["F23_y"] - m3 * g - m3 * r["ay_S3"]
+    if math.hypot(rx, ry) > 1e-9 * load:
+        bad.append("step %d: slider balance off by %.3e N" % (k + 1, math.hypot(rx, ry)))
+    whole = abs(r["F30N"]) * math.sqrt(1 + f * f)
+    if 0 < k < len(rows) - 1:
+        dx = rows[k + 1]["x_S3"] - rows[k - 1]["x_S3"]
+        if abs(dx) > 1e-9 and abs(r["F30"] - whole) > 1e-12 * whole:
+            bad.append("step %d: |F30| %.12g vs |F30N|*sqrt(1+f^2) %.12g" % (k + 1, r["F30"], whole))
+        if abs(dx) > 1e-9 and r["F30_x"] * dx > 0:
+            bad.append("step %d: F30x %.6g does not oppose the sliding (dx %.3g)" % (k + 1, r["F30_x"], dx))
+print("\n".join(bad) or "ok")
+sys.exit(1 if bad else 0)
+PY
