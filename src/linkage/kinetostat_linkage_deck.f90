@@ -11,7 +11,8 @@ module kinetostat_linkage_deck
   use kinetostat_error, only: error_t
   use kinetostat_text, only: int_str, lower, real_str
   use kinetostat_text_buffer, only: text_buffer_t
-  use kinetostat_deck, only: write_template_lines, deck_context_t, unset_bits, deck_source_t, namelist_probe_t, &
+  use kinetostat_deck, only: longest_quoted, check_namelist_syntax, &
+    write_template_lines, deck_context_t, unset_bits, deck_source_t, namelist_probe_t, &
     deck_error, is_set, require_set, require_nonnegative, require_rule, optional_default, count_values, &
     require_whole, deck_array_capacities
   use kinetostat_vec2, only: unit_at, magnitude
@@ -30,6 +31,8 @@ module kinetostat_linkage_deck
   !> A load window's ends are taken this much wider (the drive's unit: deg or m), so that a
   !> step landing on an end by roundoff of start + (k-1)*step counts as inside.
   real(wp), parameter :: window_tol = 1.0e-9_wp
+  !> Longest quoted text but the title (the length of the text variables of the deck types).
+  integer, parameter :: text_limit = 64
   !> Largest number of steps.
   integer, parameter :: max_steps = 1000000
   character(*), parameter :: group_name = "linkage"
@@ -144,7 +147,21 @@ contains
     !> The validated deck.
     type(linkage_deck_t), intent(out) :: deck
     type(error_t), allocatable, intent(out) :: error
-    character(len=size(source%records) * len(source%records) + 1) :: title
+    call read_linkage_group(source, longest_quoted(source), deck, error)
+  end subroutine read_linkage_deck
+
+  !> Read and validate a `&linkage` deck whose longest quoted text has `text_length`
+  !> characters (the length of the texts read: a longer text is reported, not cut).
+  subroutine read_linkage_group(source, text_length, deck, error)
+    !> The deck, read into memory.
+    type(deck_source_t), intent(in) :: source
+    !> Length of the texts read (characters, >= 1).
+    integer, intent(in) :: text_length
+    !> The validated deck.
+    type(linkage_deck_t), intent(out) :: deck
+    type(error_t), allocatable, intent(out) :: error
+    !> Allocated, not automatic: a text of 10^5 characters and more would overflow the stack.
+    character(len=text_length), allocatable :: title
     real(wp) :: frame, g, gravity_angle, n
     real(wp), allocatable :: step_values(:)
     type(link_in_t) :: link(max_links)
@@ -153,31 +170,30 @@ contains
     type(force_in_t) :: force(max_forces)
     type(moment_in_t) :: moment(max_moments)
     integer, allocatable :: capacity(:), ids(:)
-    character(len=512) :: msg
     type(deck_context_t) :: ctx
     type(namelist_probe_t) :: probe
     character(len=:), allocatable :: p
-    integer :: ios, nl, np, nd, nf, nm, k, i, id, a, b, count, nsteps, n_values, frame_no, cols
+    integer :: nl, np, nd, nf, nm, k, i, id, a, b, count, nsteps, n_values, frame_no, cols
     real(wp) :: d
     namelist /linkage/ title, frame, g, gravity_angle, n, link, pair, drive, force, moment, step_values
 
     ctx%path = source%path
     ctx%group = group_name
+    allocate (title)
     title = ""
     frame = 0.0_wp; g = unset; gravity_angle = unset; n = unset
     allocate (drive(max_drives))
     capacity = deck_array_capacities(source, ctx%group, [character(len=11) :: "step_values"])
     allocate (step_values(capacity(1)), source=unset)
-    read (source%records, nml=linkage, iostat=ios, iomsg=msg)
-    if (ios /= 0) then
-      call probe%start(source, ios, msg)
-      do while (probe%more(source))
-        read (probe%records, nml=linkage, iostat=ios, iomsg=msg)
-        call probe%take(ios, msg)
-      end do
-      call probe%report(source, ctx, error)
-      return
-    end if
+    call check_namelist_syntax(source, ctx%group, error)
+    if (allocated(error)) return
+    call check_text_lengths(source, ctx, error)
+    if (allocated(error)) return
+    read (source%records, nml=linkage, iostat=probe%ios, iomsg=probe%msg)
+    do while (probe%retry(source)) ! on failure: find the line and the assignment
+      read (probe%records, nml=linkage, iostat=probe%ios, iomsg=probe%msg)
+    end do
+    if (probe%failed(source, ctx, error)) return
     call require_rule(ctx, "title", len_trim(title) <= len(deck%title), "longer than "// &
       int_str(len(deck%title))//" characters", error)
     if (allocated(error)) return
@@ -499,7 +515,66 @@ contains
         call require_rule(ctx, pfx//"idle", .not. is_set(idle), "only with phi_on and phi_off", err)
       end if
     end subroutine read_schedule
-  end subroutine read_linkage_deck
+  end subroutine read_linkage_group
+
+  !> Every quoted text but the title fits its variable (64 characters: a pair's name and kind,
+  !> a drive's pair), so that the namelist READ never cuts one (gfortran warns on stderr
+  !> when it does). Records are scanned as the one stream they form (a cut line's pieces in
+  !> order, lines apart); '!' outside quotes starts a comment.
+  subroutine check_text_lengths(source, ctx, error)
+    type(deck_source_t), intent(in) :: source
+    type(deck_context_t), intent(in) :: ctx
+    type(error_t), allocatable, intent(out) :: error
+    integer :: r, j, length, first
+    character :: quote, c
+    logical :: inside, comment
+    character(len=24) :: before
+    inside = .false.
+    quote = " "
+    length = 0
+    first = 0
+    before = ""
+    do r = 1, size(source%records)
+      comment = .false.
+      do j = 1, source%record_length(r)
+        c = source%records(r)(j:j)
+        if (inside) then
+          if (c == quote) then
+            inside = .false.
+            call judge()
+            if (allocated(error)) return
+          else
+            length = length + 1
+          end if
+        else if (.not. comment) then
+          if (c == "!") then
+            comment = .true.
+          else if (c == "'" .or. c == '"') then
+            inside = .true.
+            quote = c
+            length = 0
+            first = r
+          else
+            before = before(2:)//lower(c)
+          end if
+        end if
+      end do
+    end do
+    if (inside) call judge()
+  contains
+    subroutine judge()
+      integer :: line
+      if (length > text_limit .and. index(before, "title") == 0) then
+        line = 1
+        do while (line + 1 < size(source%first_record))
+          if (source%first_record(line + 1) > first) exit
+          line = line + 1
+        end do
+        call deck_error(ctx, "text on line "//int_str(line), "a quoted text of "//int_str(length)// &
+          " characters: only title may be longer than "//int_str(text_limit), error)
+      end if
+    end subroutine judge
+  end subroutine check_text_lengths
 
   !> A drive's value at the reference position: a turning pair's angle of the driven link's
   !> axis (from the joint to the first other joint of that link at another point, else its
