@@ -197,7 +197,7 @@ contains
     call require_rule(ctx, "title", len_trim(title) <= len(deck%title), "longer than "// &
       int_str(len(deck%title))//" characters", error)
     if (allocated(error)) return
-    deck%title = title(1:len(deck%title))
+    deck%title = title
     call require_whole(ctx, "frame", frame, 0, huge(1), frame_no, error); if (allocated(error)) return
     deck%mech%frame_id = frame_no
     deck%g = optional_default(g, g_default)
@@ -520,7 +520,8 @@ contains
   !> Every quoted text but the title fits its variable (64 characters: a pair's name and kind,
   !> a drive's pair), so that the namelist READ never cuts one (gfortran warns on stderr
   !> when it does). Records are scanned as the one stream they form (a cut line's pieces in
-  !> order, lines apart); '!' outside quotes starts a comment.
+  !> order, lines apart; a record's trailing blanks are padding); '!' outside quotes starts a
+  !> comment.
   subroutine check_text_lengths(source, ctx, error)
     type(deck_source_t), intent(in) :: source
     type(deck_context_t), intent(in) :: ctx
@@ -536,7 +537,7 @@ contains
     before = ""
     do r = 1, size(source%records)
       comment = .false.
-      do j = 1, source%record_length(r)
+      do j = 1, len_trim(source%records(r))
         c = source%records(r)(j:j)
         if (inside) then
           if (c == quote) then
@@ -565,11 +566,14 @@ contains
     subroutine judge()
       integer :: line
       if (length > text_limit .and. index(before, "title") == 0) then
-        line = 1
-        do while (line + 1 < size(source%first_record))
-          if (source%first_record(line + 1) > first) exit
-          line = line + 1
-        end do
+        line = first
+        if (allocated(source%first_record)) then
+          line = 1
+          do while (line + 1 < size(source%first_record))
+            if (source%first_record(line + 1) > first) exit
+            line = line + 1
+          end do
+        end if
         call deck_error(ctx, "text on line "//int_str(line), "a quoted text of "//int_str(length)// &
           " characters: only title may be longer than "//int_str(text_limit), error)
       end if
