@@ -7,6 +7,7 @@ module test_svg
   use kinetostat_format, only: fixed_number, short_number
   use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_moment
   use kinetostat_text_buffer, only: text_buffer_t
+  use kinetostat_labels, only: lang_en
   use kinetostat_svg, only: xml_escape, svg_line, svg_arrow
   use kinetostat_svg_writer, only: write_svg, pair_force_t, find_pair_forces, select_pair_forces, nice_step, &
     cycle_mean
@@ -125,7 +126,7 @@ contains
     ox = 0.0_wp
     oy = 0.0_wp
     call small_table(table)
-    call write_svg("TEST", table, "", out, error)
+    call write_svg("TEST", table, "", lang_en, out, error)
     call check_true(t, "write_svg runs", .not. allocated(error), "no error expected")
     s = out%text()
     call check_true(t, "sheet escapes the deck name", index(s, "small&lt;&amp;&gt;.nml") > 0 .and. &

@@ -19,6 +19,25 @@
       No reference to anything outside the file: no href, no url(), no @import, no script,
       no font other than the generic families.
 
+  svg_check.py labels SHEET.svg...
+      No two text labels of a sheet overlap. A label's box: width = 0.6 x font size x
+      characters (UTF-8 characters, so a Cyrillic letter counts once), height = font size,
+      from 0.8 x font size above the baseline to 0.2 x font size below it (the font size of
+      the element's class in the sheet's style sheet, or its own font-size); horizontally
+      placed by its text-anchor (start: from x; middle: centred on x; end: ending at x);
+      a rotate(a cx cy) transform turns the box (its bounding box is taken).
+      Two boxes overlap when their intersection is wider and taller than 0.01 mm; a box
+      must lie on the sheet (its viewBox). Every overlapping pair and every label off the
+      sheet is printed with its text and position.
+
+  svg_check.py english SHEET...
+      No English word in a --lang ru sheet or table: a word of three or more Latin letters
+      that is in the list ENGLISH_WORDS fails (symbols such as F21, MPhi3 are not words of
+      the list; file paths and the program's name "KINETOSTAT <KIND>" are skipped; in a
+      sheet only <text> is read, not its <title>/<desc> metadata, and of the subtitle
+      "deck: PATH   TITLE" only its first word: the deck's title is the user's words).
+      Prints every hit.
+
 Exit status 0 when the check passes, 1 with a message when it fails.
 """
 import csv
@@ -190,11 +209,126 @@ def check_self_contained(svg_path):
             fail(f"{svg_path}: font-family {family!r} is not a generic family")
 
 
+def text_boxes(svg_path):
+    """(box, text) of every <text>: box = (x0, y0, x1, y1) in mm as the docstring says."""
+    source = open(svg_path, encoding="utf-8").read()
+    sizes = {}
+    for cls, body in re.findall(r"\.([A-Za-z_-]+)\s*\{([^}]*)\}", source):
+        m = re.search(r"font-size:\s*([0-9.]+)px", body)
+        if m:
+            sizes[cls] = float(m.group(1))
+    root = ET.fromstring(source)
+    boxes = []
+    for el in root.iter(SVG_NS + "text"):
+        text = "".join(el.itertext())
+        if not text.strip():
+            continue
+        size = None
+        if el.get("font-size"):
+            size = float(el.get("font-size").replace("px", ""))
+        style = el.get("style") or ""
+        m = re.search(r"font-size:\s*([0-9.]+)", style)
+        if m:
+            size = float(m.group(1))
+        if size is None:
+            for cls in (el.get("class") or "").split():
+                if cls in sizes:
+                    size = sizes[cls]
+        if size is None:
+            size = 16.0  # the SVG default: a label without a size is a bug the test shows
+        x = float(el.get("x", "0"))
+        y = float(el.get("y", "0"))
+        width = 0.6 * size * len(text)
+        anchor = el.get("text-anchor", "start")
+        x0 = {"start": x, "middle": x - width / 2, "end": x - width}[anchor]
+        box = (x0, y - 0.8 * size, x0 + width, y + 0.2 * size)
+        m = re.search(r"rotate\(\s*([-0-9.]+)[ ,]+([-0-9.]+)[ ,]+([-0-9.]+)\s*\)", el.get("transform") or "")
+        if m:  # the box's corners turned about the centre of rotation, then their bounding box
+            a, cx, cy = (float(v) for v in m.groups())
+            c, s_ = math.cos(math.radians(a)), math.sin(math.radians(a))
+            corners = [(cx + c * (px - cx) - s_ * (py - cy), cy + s_ * (px - cx) + c * (py - cy))
+                       for px in (box[0], box[2]) for py in (box[1], box[3])]
+            box = (min(p[0] for p in corners), min(p[1] for p in corners),
+                   max(p[0] for p in corners), max(p[1] for p in corners))
+        boxes.append((box, text))
+    return boxes
+
+
+def check_labels(paths):
+    bad = []
+    for path in paths:
+        boxes = text_boxes(path)
+        view = [float(v) for v in ET.parse(path).getroot().get("viewBox").split()]
+        for (b, text) in boxes:
+            if b[0] < view[0] - 0.01 or b[2] > view[0] + view[2] + 0.01 or b[1] < view[1] - 0.01 or \
+                    b[3] > view[1] + view[3] + 0.01:
+                bad.append(f"{path}: {text!r} at ({b[0]:.2f}, {b[3]:.2f}) leaves the sheet "
+                           f"(its box ends at x = {b[2]:.2f} mm of {view[2]:.2f})")
+        for i in range(len(boxes)):
+            (a, ta) = boxes[i]
+            for j in range(i + 1, len(boxes)):
+                (b, tb) = boxes[j]
+                w = min(a[2], b[2]) - max(a[0], b[0])
+                h = min(a[3], b[3]) - max(a[1], b[1])
+                if w > 0.01 and h > 0.01:
+                    bad.append(f"{path}: {ta!r} at ({a[0]:.2f}, {a[3]:.2f}) overlaps {tb!r} at "
+                               f"({b[0]:.2f}, {b[3]:.2f}) by {w:.2f} x {h:.2f} mm")
+    if bad:
+        print("\n".join(bad[:40]))
+        fail(f"{len(bad)} overlapping label pairs")
+
+
+ENGLISH_WORDS = set("""
+spur helical bevel planetary worm series parallel balance contact mesh carrier sun ring teeth
+dyad dyads mode driver driven output echoed below derived global coordinates coordinate base
+radius pitch pressure follower profile lift rise return dwell flat translating roller
+the of and for from with at to in on by per step steps forces force pair weight inertia load loads
+lengths length angle angles deg counterclockwise axis frame mechanism deck gravity down sheet
+hodographs hodograph tip each vector over cycle point zero driving moment mean magnitudes
+magnitude stage stages plan plans velocities velocity accelerations acceleration polygon lever
+balancing scale pole normal tangential coriolis relative group groups input link links crank
+rocker slider guide results result note notes total gear gears ratio efficiency torque power
+speed teeth module wheel pinion cam follower echo data summary warning error residual check
+self max min largest smallest value values of tables right up origin input work per cycle
+""".split())
+
+
+def check_english(paths):
+    hits = []
+    for path in paths:
+        for n, line in enumerate(open(path, encoding="utf-8"), 1):
+            if path.endswith(".svg"):
+                if line.startswith("<desc>") or line.startswith("<title>") or "<text" not in line:
+                    continue
+                if 'class="subtitle"' in line:  # "deck: PATH   TITLE": the title is the deck's own words
+                    line = line.split(":")[0] + "<"
+                line = "".join(re.findall(r">([^<]*)</text>", line))
+            # not words: file paths, the program's name with its kind ("KINETOSTAT GEARS")
+            line = re.sub(r"\S*/\S*|\S+\.nml\b|KINETOSTAT\s+[A-Z]+", " ", line)
+            # deck variable names echoed as the 1991 printouts did ("CRANK_M   =", "VALUE(25) =")
+            line = re.sub(r"^\s+[A-Z][A-Z0-9_]*(\([0-9]+\))?\s*=", "= ", line)
+            line = re.sub(r"^\s*НАЗВАНИЕ:.*", " ", line)  # the deck's title: the user's words
+            line = re.sub(r"\b\w*_\w*\b", " ", line)
+            line = re.sub(r"=\s+[a-z]+\b", "= ", line)  # a keyword the deck gave ("LAYOUT = series")
+            for unit in re.findall(r"[0-9]\s+(N\*m|N|deg|kg)(?![\w*])", line):
+                hits.append(f"{path}:{n}: unit {unit!r} in {line.strip()[:120]!r}")
+            for word in re.findall(r"[A-Za-z]{3,}", line):
+                if word.lower() in ENGLISH_WORDS:
+                    hits.append(f"{path}:{n}: {word!r} in {line.strip()[:120]!r}")
+    if hits:
+        print("\n".join(hits[:400]))
+        fail(f"{len(hits)} English words")
+
+
 def main():
     if len(sys.argv) == 4 and sys.argv[1] == "hodographs":
         check_hodographs(sys.argv[2], sys.argv[3])
     elif len(sys.argv) == 4 and sys.argv[1] == "png":
         check_png(sys.argv[2], sys.argv[3])
+    elif len(sys.argv) >= 3 and sys.argv[1] == "labels":
+        check_labels(sys.argv[2:])
+    elif len(sys.argv) >= 3 and sys.argv[1] == "english":
+        check_english(sys.argv[2:])
     elif len(sys.argv) == 3 and sys.argv[1] == "self-contained":
         check_self_contained(sys.argv[2])
     else:

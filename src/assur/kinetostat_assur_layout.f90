@@ -1110,12 +1110,13 @@ contains
           dir = f%angle
           if (f%follow) dir = dir + states(f%link)%th
           call drawing%add_force("Q"//int_str(i), force_load, ps%p, &
-                                 assur_load_value(deck, deck%force_load(i), k) * [cos(dir), sin(dir)])
+                                 assur_load_value(deck, deck%force_load(i), k) * [cos(dir), sin(dir)], &
+                                 int_str(mech%links(f%link)%id))
         end associate
       end do
       do i = 1, size(mech%moment_link)
         call drawing%add_moment("MQ"//int_str(i), force_load, drawing%at("S"//int_str(mech%links(mech%moment_link(i))%id)), &
-          assur_load_value(deck, deck%moment_load(i), k))
+          assur_load_value(deck, deck%moment_load(i), k), int_str(mech%links(mech%moment_link(i))%id))
       end do
       call self%mass_model(model)
       call drawing%add_body_loads(table, k, model)

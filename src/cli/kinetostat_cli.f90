@@ -17,7 +17,8 @@ module kinetostat_cli
   use kinetostat_spool, only: spool_t
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_labels, only: lang_from_name
-  use kinetostat_run, only: run_options_t, run_mechanism, format_from_name, format_names, format_svg
+  use kinetostat_run, only: run_options_t, run_mechanism, format_from_name, format_names, format_svg, format_json, &
+    format_plans, format_dxf
   use kinetostat_registry, only: create_mechanism, known_kinds, known_columns
   use kinetostat_step_table, only: column_t
   use kinetostat_diff, only: diff_options_t, diff_outputs
@@ -37,8 +38,9 @@ module kinetostat_cli
 
   !> One-line usage, printed with usage errors.
   character(*), parameter :: usage_line = "usage: kinetostat DECK|- [--set NAME=VALUE]... [-o FILE] " // &
-    "[--format table|csv|json|svg|summary] [--pairs LIST] [--at K] [--lang en|ru] [--kinematics] " // &
-    "[--frame global|link] [--shaking] [--max-deck-size BYTES] [--allow-selfcheck-failure] [--quiet] " // &
+    "[--format table|csv|json|svg|summary|plans|dxf] [--pairs LIST] [--at K] [--plans] [--lang en|ru] " // &
+    "[--kinematics] [--frame global|link] [--shaking] [--student NAME] [--group G] [--variant N] " // &
+    "[--max-deck-size BYTES] [--allow-selfcheck-failure] [--quiet] " // &
     "[--strict] | " // &
     "kinetostat sweep DECK --vary NAME=FROM:TO:COUNT... [--part K/N] [--jobs N] | " // &
     "kinetostat template KIND [-o FILE] | kinetostat diff A B [--rtol R] [--atol A] | " // &
@@ -49,8 +51,9 @@ module kinetostat_cli
   character(*), parameter :: help_lines(*) = [character(len=92) :: &
     "kinetostat - kinetostatic force analysis of planar mechanisms", &
     "", &
-    "  kinetostat DECK [--set NAME=VALUE]... [-o FILE] [--format table|csv|json|svg|summary]", &
-    "                  [--pairs LIST] [--at K] [--lang en|ru] [--kinematics] [--shaking]", &
+    "  kinetostat DECK [--set NAME=VALUE]... [-o FILE]", &
+    "                  [--format table|csv|json|svg|summary|plans|dxf] [--pairs LIST] [--at K]", &
+    "                  [--plans] [--lang en|ru] [--kinematics] [--shaking]", &
     "                  [--max-deck-size BYTES] [--allow-selfcheck-failure] [--quiet] [--strict]", &
     "  kinetostat sweep DECK --vary NAME=FROM:TO:COUNT... [--set NAME=VALUE]... [--part K/N]", &
     "                  [--jobs N]", &
@@ -74,6 +77,13 @@ module kinetostat_cli
     "            (a CSV header and one row: max, min, where, mean per column, work)", &
     "--pairs     with svg: only these pair forces, e.g. --pairs F16,F36", &
     "--at K      with svg: the mechanism drawn at step K with every force of the step", &
+    "--at K      with plans: the graphical method's sheet of step K (plans of velocities and", &
+    "            accelerations, force polygons, Zhukovsky's lever)", &
+    "--student NAME --group G --variant N   the header line of the 1991 programs (date, time,", &
+    "            surname, group, variant) on the legacy table and a title block on the sheets", &
+    "--at K      with dxf: the mechanism at step K as an ASCII DXF drawing for CAD programs", &
+    "--plans     with json and --at K: the graphical method at step K (plans of velocities and", &
+    "            accelerations, force polygons, Zhukovsky's lever) as numbers", &
     "--lang      language of the table's labels: en (default) or ru (the 1991 printouts)", &
     "--kinematics  csv and json add positions of joints and centres of mass, link angles,", &
     "            angular speeds and accelerations, accelerations of the centres of mass and", &
@@ -715,7 +725,8 @@ contains
       else
         name = arg
         if (any(name == [character(len=15) :: "-o", "--output", "--format", "--lang", "--set", "--pairs", "--at", &
-                         "--frame", "--vary", "--part", "--jobs", "--method", "--fraction", "--max-deck-size"])) then
+                         "--frame", "--vary", "--part", "--jobs", "--method", "--fraction", "--max-deck-size", &
+                         "--student", "--group", "--variant"])) then
           if (i == n) then
             call fatal_error(error, exit_usage, name//" needs a value")
             return
@@ -737,6 +748,14 @@ contains
         args%options%allow_selfcheck_failure = .true.
       case ("--kinematics")
         args%options%kinematics = .true.
+      case ("--plans")
+        args%options%plans = .true.
+      case ("--student")
+        args%options%student_name = value
+      case ("--group")
+        args%options%student_group = value
+      case ("--variant")
+        args%options%student_variant = value
       case ("--shaking")
         args%options%shaking = .true.
       case ("--method")
@@ -879,10 +898,40 @@ contains
       call fatal_error(error, exit_usage, "sweep writes the summary format only (--format summary)")
     else if (allocated(args%options%pairs) .and. args%options%format /= format_svg) then
       call fatal_error(error, exit_usage, "--pairs needs --format svg")
-    else if (args%options%at_step > 0 .and. args%options%format /= format_svg) then
-      call fatal_error(error, exit_usage, "--at needs --format svg")
+    else if (args%options%plans .and. (args%options%format /= format_json .or. args%options%at_step == 0)) then
+      call fatal_error(error, exit_usage, "--plans needs --format json and --at K")
+    else if (args%options%format == format_plans .and. args%options%at_step == 0) then
+      call fatal_error(error, exit_usage, "--format plans needs --at K (the step whose plans are drawn)")
+    else if (args%options%format == format_dxf .and. args%options%at_step == 0) then
+      call fatal_error(error, exit_usage, "--format dxf needs --at K (the step drawn)")
+    else if (args%options%at_step > 0 .and. all(args%options%format /= [format_svg, format_plans, format_dxf]) &
+      .and. .not. args%options%plans) then
+      call fatal_error(error, exit_usage, "--at needs --format svg, plans or dxf (or --format json --plans)")
+    end if
+    if (allocated(error)) return
+    if (allocated(args%options%student_name) .or. allocated(args%options%student_group) .or. &
+      allocated(args%options%student_variant)) then
+      if (.not. allocated(args%options%student_name)) args%options%student_name = "-"
+      if (.not. allocated(args%options%student_group)) args%options%student_group = "-"
+      if (.not. allocated(args%options%student_variant)) args%options%student_variant = "-"
+      args%options%student_stamp = run_stamp()
     end if
   end subroutine parse_args
+
+  !> Date and time of the run as the 1991 header printed them: "25.11.2026 18:31".
+  function run_stamp() result(stamp)
+    character(len=:), allocatable :: stamp
+    integer :: v(8)
+    call date_and_time(values=v)
+    stamp = two(v(3))//"."//two(v(2))//"."//int_str(v(1))//" "//two(v(5))//":"//two(v(6))
+  contains
+    pure function two(i) result(t)
+      integer, intent(in) :: i
+      character(len=:), allocatable :: t
+      t = int_str(i)
+      if (i < 10) t = "0"//t
+    end function two
+  end function run_stamp
 
   !> The arguments of `kinetostat diff A B [--rtol R] [--atol A] [--quiet]` (errors: exit 2).
   subroutine parse_diff_args(args, error)

@@ -13,6 +13,7 @@ module kinetostat_gears_layout
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_table_writer, only: put_heading, value_line
   use kinetostat_format, only: fixed_field
+  use kinetostat_labels, only: label, phrase, echo_name, lang_ru
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_gears, only: gear_stage_t, gear_result_t, gear_pair, gear_series, gear_planetary_step, &
     gear_planetary, gear_bevel, gear_kind_names
@@ -225,13 +226,18 @@ contains
   end subroutine echo_deck
 
   !> A RESULTS line of a force: magnitude and angle.
-  pure function vector_line(name, magnitude_n, angle_deg) result(line)
+  pure function vector_line(name, magnitude_n, angle_deg, lang) result(line)
     character(*), intent(in) :: name
     real(wp), intent(in) :: magnitude_n, angle_deg
+    integer, intent(in) :: lang
     character(len=:), allocatable :: line
     character(len=angle_width) :: angle_text
     angle_text = fixed_field(angle_deg, angle_width, angle_decimals)
-    line = value_line(name, magnitude_n, "N")//"   ANGLE ="//angle_text//"  deg"
+    if (lang == lang_ru) then
+      line = value_line(name, magnitude_n, label("N", lang))//"   УГОЛ  ="//angle_text//"  "//label("deg", lang)
+    else
+      line = value_line(name, magnitude_n, "N")//"   ANGLE ="//angle_text//"  deg"
+    end if
   end function vector_line
 
   !> RESULTS: a block per stage (the mesh's named values, force vectors, torques).
@@ -247,29 +253,29 @@ contains
     do i = first, last
       associate (v => table%rows(:, i))
         kind = nint(v(2))
-        call put_heading(out, stage_heading(i, kind))
-        call out%put(value_line("DW2", v(8), "mm"))
+        call put_heading(out, echo_name(stage_heading(i, kind), lang))
+        call out%put(value_line("DW2", v(8), phrase("mm", lang)))
         call out%put(value_line("U", v(9), ""))
-        call out%put(value_line("M1", v(10), "N*m"))
-        call out%put(value_line("FT", v(13), "N"))
-        call out%put(value_line("FR1", v(14), "N"))
-        call out%put(value_line("FA1", v(15), "N"))
-        call out%put(value_line("FR2", v(16), "N"))
-        call out%put(value_line("FA2", v(17), "N"))
-        call out%put(value_line("FN", v(18), "N"))
-        call out%put(vector_line("F12", v(19), v(20)))
-        call out%put(vector_line("FS1", v(21), v(22)))
-        if (kind /= gear_bevel) call out%put(vector_line("FS2", v(23), v(24)))
+        call out%put(value_line("M1", v(10), phrase("N*m", lang)))
+        call out%put(value_line("FT", v(13), phrase("N", lang)))
+        call out%put(value_line("FR1", v(14), phrase("N", lang)))
+        call out%put(value_line("FA1", v(15), phrase("N", lang)))
+        call out%put(value_line("FR2", v(16), phrase("N", lang)))
+        call out%put(value_line("FA2", v(17), phrase("N", lang)))
+        call out%put(value_line("FN", v(18), phrase("N", lang)))
+        call out%put(vector_line("F12", v(19), v(20), lang))
+        call out%put(vector_line("FS1", v(21), v(22), lang))
+        if (kind /= gear_bevel) call out%put(vector_line("FS2", v(23), v(24), lang))
         if (kind == gear_planetary) then
-          call out%put(vector_line("F23", v(25), v(26)))
-          call out%put(vector_line("F2H", v(27), v(28)))
-          call out%put(value_line("M_H", v(11), "N*m (carrier, from forces)"))
-          call out%put(value_line("M_H POWER", v(12), "N*m (M1*u_1H)"))
-          call out%put(value_line("M3 HOUSING", v(29), "N*m (on the ring, from forces)"))
-          call out%put(value_line("M3 BALANCE", v(30), "N*m (M1 - M_H)"))
+          call out%put(vector_line("F23", v(25), v(26), lang))
+          call out%put(vector_line("F2H", v(27), v(28), lang))
+          call out%put(value_line("M_H", v(11), phrase("N*m (carrier, from forces)", lang)))
+          call out%put(value_line(echo_name("M_H POWER", lang), v(12), phrase("N*m (M1*u_1H)", lang)))
+          call out%put(value_line(echo_name("M3 HOUSING", lang), v(29), phrase("N*m (on the ring, from forces)", lang)))
+          call out%put(value_line(echo_name("M3 BALANCE", lang), v(30), phrase("N*m (M1 - M_H)", lang)))
         else
-          call out%put(value_line("M2", v(11), "N*m (from forces)"))
-          call out%put(value_line("M2 POWER", v(12), "N*m (power balance)"))
+          call out%put(value_line("M2", v(11), phrase("N*m (from forces)", lang)))
+          call out%put(value_line(echo_name("M2 POWER", lang), v(12), phrase("N*m (power balance)", lang)))
         end if
       end associate
     end do

@@ -5,7 +5,7 @@
 module kinetostat_labels
   implicit none
   private
-  public :: lang_en, lang_ru, lang_from_name, label
+  public :: lang_en, lang_ru, lang_from_name, label, phrase, echo_name
 
   !> Language: English (default).
   integer, parameter :: lang_en = 1
@@ -158,9 +158,114 @@ contains
       text = "м/рад"
     case ("steps")
       text = "положений"
+    case ("satellites")
+      text = "сателлитов"
     case default
       text = english
     end select
   end function label
+
+  !> A phrase of the legacy table in language `lang`: a shared label; a unit with a note
+  !> ("deg (frame 1)"); the echo's composite names and headings ("FORCE 2 LINK",
+  !> "STAGE 1: SPUR", "DYAD 1: RRR LINKS 2-3, ON LINKS 1 AND 0, MODE 1"). Symbols and
+  !> deck values stay as they are; anything else is returned unchanged.
+  pure function phrase(english, lang) result(text)
+    !> The English phrase.
+    character(*), intent(in) :: english
+    !> lang_en or lang_ru.
+    integer, intent(in) :: lang
+    character(len=:), allocatable :: text
+    integer :: open_paren
+    text = english
+    if (lang /= lang_ru) return
+    text = label(english, lang)
+    if (text /= english) return
+    open_paren = index(english, " (")
+    if (open_paren > 0 .and. len(english) > open_paren + 2) then
+      if (english(len(english):) == ")") then
+        text = phrase(english(:open_paren - 1), lang)//" ("//note(english(open_paren + 2:len(english) - 1))//")"
+        return
+      end if
+    end if
+    text = echo_name(english, lang)
+  end function phrase
+
+  !> The name of an INPUT DATA record or an echo heading in language `lang`: the composite
+  !> names ("FORCE 2 LINK", "STAGE 1: SPUR", "DYAD 1: RRR LINKS 2-3, ON LINKS 1 AND 0, MODE 1")
+  !> translated; a deck variable's name ("PHI_START", "N") stays as it is.
+  pure function echo_name(english, lang) result(text)
+    !> The English name.
+    character(*), intent(in) :: english
+    !> lang_en or lang_ru.
+    integer, intent(in) :: lang
+    character(len=:), allocatable :: text
+    text = english
+    if (lang /= lang_ru) return
+    if (index(english, "STAGE ") == 1 .or. index(adjustl(english), "DYAD ") == 1 .or. &
+      (index(english, "FORCE ") == 1 .or. index(english, "MOMENT ") == 1) .and. index(english, " LINK") > 0) then
+      text = swap(text, "STAGE ", "СТУПЕНЬ ")
+      text = swap(text, ": SPUR", ": ПРЯМОЗУБАЯ")
+      text = swap(text, ": HELICAL", ": КОСОЗУБАЯ")
+      text = swap(text, ": BEVEL", ": КОНИЧЕСКАЯ")
+      text = swap(text, ": PLANETARY", ": ПЛАНЕТАРНАЯ")
+      text = swap(text, "DYAD ", "ДИАДА ")
+      text = swap(text, " ON LINKS ", " НА ЗВЕНЬЯХ ")
+      text = swap(text, " LINKS ", " ЗВЕНЬЯ ")
+      text = swap(text, " AND ", " И ")
+      text = swap(text, ", MODE ", ", СБОРКА ")
+      text = swap(text, "FORCE ", "СИЛА ")
+      text = swap(text, "MOMENT ", "МОМЕНТ ")
+      text = swap(text, " LINK", " ЗВЕНО")
+    else if (index(english, "M") == 1 .and. (index(english, " POWER") > 0 .or. index(english, " HOUSING") > 0 .or. &
+      index(english, " BALANCE") > 0)) then
+      ! a gear stage's torques: from the power balance, on the housing, from the torque balance
+      text = swap(text, " POWER", " МОЩН.")
+      text = swap(text, " HOUSING", " КОРПУСА")
+      text = swap(text, " BALANCE", " БАЛАНС")
+    end if
+  end function echo_name
+
+  !> A note in parentheses after a unit or a value, in Russian (unknown notes unchanged).
+  pure function note(english) result(text)
+    character(*), intent(in) :: english
+    character(len=:), allocatable :: text
+    select case (english)
+    case ("frame 1")
+      text = "система 1"
+    case ("frame 2")
+      text = "система 2"
+    case ("rise; derived")
+      text = "подъем; вычислено"
+    case ("along +x2")
+      text = "вдоль +x2"
+    case ("from forces")
+      text = "из сил"
+    case ("power balance")
+      text = "баланс мощностей"
+    case ("carrier, from forces")
+      text = "водило, из сил"
+    case ("on the ring, from forces")
+      text = "на коронном колесе, из сил"
+    case ("echoed below as derived link coordinates")
+      text = "ниже - пересчитанные координаты звеньев"
+    case ("derived")
+      text = "вычислено"
+    case default
+      text = english
+    end select
+  end function note
+
+  !> `text` with every `old` replaced by `new`.
+  pure recursive function swap(text, old, new) result(out)
+    character(*), intent(in) :: text, old, new
+    character(len=:), allocatable :: out
+    integer :: i
+    i = index(text, old)
+    if (i == 0) then
+      out = text
+    else
+      out = text(:i - 1)//new//swap(text(i + len(old):), old, new)
+    end if
+  end function swap
 
 end module kinetostat_labels

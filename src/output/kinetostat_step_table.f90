@@ -185,6 +185,9 @@ module kinetostat_step_table
     character(len=:), allocatable :: deck
     !> A line printed under the deck line of the legacy table (the deck's own title), if any.
     character(len=:), allocatable :: subtitle
+    !> The student's header (--student, --group, --variant): date and time of the run
+    !> ("25.11.2026 18:31"), surname, group, variant; unallocated when not asked for.
+    character(len=:), allocatable :: student_stamp, student_name, student_group, student_variant
     !> What one row is, for messages ("step", "stage").
     character(len=:), allocatable :: row_name
     !> Index of the column holding the input coordinate (0 when there is none).

@@ -21,7 +21,7 @@ module kinetostat_drawing
   private
   public :: drawing_from_sketch
   public :: drawing_t, drawing_point_t, drawing_body_t, drawing_guide_t, drawing_force_t, drawing_moment_t
-  public :: point_joint, point_pivot, point_com, point_plain, body_bar, body_block
+  public :: point_joint, point_pivot, point_com, point_plain, body_bar, body_block, body_cylinder, body_rod
   public :: force_pair, force_load, force_gravity, force_inertia, force_kind_names
 
   !> Point kind: a revolute joint between moving links.
@@ -37,6 +37,11 @@ module kinetostat_drawing
   integer, parameter :: body_bar = 1
   !> Body kind: a slider block at one point, along `angle`.
   integer, parameter :: body_block = 2
+  !> Body kind: a hydraulic cylinder: a tube from `anchor` along `angle`, `length` long.
+  integer, parameter :: body_cylinder = 3
+  !> Body kind: the rod of a cylinder: a bar on the axis through `anchor` along `angle`, from
+  !> `reach(1)` to `reach(2)` (m from the anchor).
+  integer, parameter :: body_rod = 4
   !> Force kind: a force in a kinematic pair.
   integer, parameter :: force_pair = 1
   !> Force kind: an external load (or the driving force).
@@ -67,8 +72,14 @@ module kinetostat_drawing
     integer :: kind = body_bar
     !> Indices of its points in drawing_t%points.
     integer, allocatable :: points(:)
-    !> Block: sliding direction, rad (position frame).
+    !> Block, cylinder, rod: sliding direction, rad (position frame).
     real(wp) :: angle = 0.0_wp
+    !> Cylinder, rod: the point of the axis on the cylinder's pivot, m.
+    real(wp) :: anchor(2) = 0.0_wp
+    !> Cylinder: its length, m.
+    real(wp) :: length = 0.0_wp
+    !> Rod: its ends along the axis, m from the anchor.
+    real(wp) :: reach(2) = 0.0_wp
   end type drawing_body_t
 
   !> A straight guide on the frame.
@@ -91,6 +102,8 @@ module kinetostat_drawing
     real(wp) :: at(2) = 0.0_wp
     !> The force, N (position frame).
     real(wp) :: f(2) = 0.0_wp
+    !> The link it acts on ("" when its name says: G3, Phi3, F21).
+    character(len=16) :: on_link = ""
   end type drawing_force_t
 
   !> A moment at a point.
@@ -103,6 +116,8 @@ module kinetostat_drawing
     real(wp) :: at(2) = 0.0_wp
     !> Value, N*m, counterclockwise positive.
     real(wp) :: value = 0.0_wp
+    !> The link it acts on ("" when its name says: MPhi3, M1).
+    character(len=16) :: on_link = ""
   end type drawing_moment_t
 
   !> The whole sketch.
@@ -251,7 +266,7 @@ contains
   end subroutine add_guide
 
   !> A force `f` (N) of a kind, applied at `p` (m).
-  pure subroutine add_force(self, name, kind, p, f)
+  pure subroutine add_force(self, name, kind, p, f, link)
     class(drawing_t), intent(inout) :: self
     !> Name.
     character(*), intent(in) :: name
@@ -261,17 +276,20 @@ contains
     real(wp), intent(in) :: p(2)
     !> Force, N.
     real(wp), intent(in) :: f(2)
+    !> The link it acts on (for the plans; omitted when the name says it).
+    character(*), intent(in), optional :: link
     type(drawing_force_t) :: force
     if (.not. allocated(self%forces)) allocate (self%forces(0))
     force%name = name
     force%kind = kind
     force%at = p
     force%f = f
+    if (present(link)) force%on_link = link
     self%forces = [self%forces, force]
   end subroutine add_force
 
   !> A moment (N*m, counterclockwise positive) of a kind at `p` (m).
-  pure subroutine add_moment(self, name, kind, p, value)
+  pure subroutine add_moment(self, name, kind, p, value, link)
     class(drawing_t), intent(inout) :: self
     !> Name.
     character(*), intent(in) :: name
@@ -281,12 +299,15 @@ contains
     real(wp), intent(in) :: p(2)
     !> Value, N*m.
     real(wp), intent(in) :: value
+    !> The link it acts on (for the plans; omitted when the name says it).
+    character(*), intent(in), optional :: link
     type(drawing_moment_t) :: moment
     if (.not. allocated(self%moments)) allocate (self%moments(0))
     moment%name = name
     moment%kind = kind
     moment%at = p
     moment%value = value
+    if (present(link)) moment%on_link = link
     self%moments = [self%moments, moment]
   end subroutine add_moment
 
@@ -387,13 +408,13 @@ contains
     real(wp), intent(in) :: gravity(2)
     real(wp) :: a(2), eps
     if (mass > 0.0_wp) then
-      if (any(gravity /= 0.0_wp)) call self%add_force("G"//link, force_gravity, self%at(at), mass * gravity)
+      if (any(gravity /= 0.0_wp)) call self%add_force("G"//link, force_gravity, self%at(at), mass * gravity, link)
       a = [column_value(table, "ax_"//com, k), column_value(table, "ay_"//com, k)]
-      if (any(a /= 0.0_wp)) call self%add_force("Phi"//link, force_inertia, self%at(at), -mass * a)
+      if (any(a /= 0.0_wp)) call self%add_force("Phi"//link, force_inertia, self%at(at), -mass * a, link)
     end if
     eps = column_value(table, "eps"//link, k)
     if (inertia > 0.0_wp .and. eps /= 0.0_wp) then
-      call self%add_moment("MPhi"//link, force_inertia, self%at(at), -inertia * eps)
+      call self%add_moment("MPhi"//link, force_inertia, self%at(at), -inertia * eps, link)
     end if
   end subroutine add_link_loads
 
@@ -487,9 +508,9 @@ contains
             angle = l%angle * deg_to_rad
             if (len(along) > 0) angle = angle + column_value(table, "phi"//along, k) * deg_to_rad
             call drawing%add_block(l%name, trim(l%points(1)), angle)
-            if (size(l%points) > 1) call drawing%add_bar(l%name, l%points)
+            if (size(l%points) > 1) call drawing%add_bar(l%name, body_points(l%points, l%name))
           else
-            call drawing%add_bar(l%name, l%points)
+            call drawing%add_bar(l%name, body_points(l%points, l%name))
           end if
         end associate
       end do
@@ -503,8 +524,98 @@ contains
           call drawing%add_guide_over_rows(table, trim(g%point), g%angle * deg_to_rad, 0.08_wp * size_scale)
         end associate
       end do
+      call find_cylinders(topo, table, k, size_scale, drawing)
     end if
+  contains
+    !> The points a link's body reaches: its own, and its centre of mass S<link> when the
+    !> drawing shows it (a body must reach every point of it the sheet shows).
+    pure function body_points(points, link) result(all)
+      character(*), intent(in) :: points(:), link
+      character(len=16), allocatable :: all(:)
+      all = [character(len=16) :: points]
+      if (drawing%point_index("S"//link) > 0 .and. .not. any(all == "S"//link)) all = [character(len=16) :: all, "S"//link]
+    end function body_points
   end subroutine drawing_from_sketch
+
+  !> A guide on a moving link G through a point only G lists (its pivot) is a cylinder's axis:
+  !> G is drawn as the tube (twice as long as from the pivot to its centre of mass), the
+  !> link that slides along that axis (a point on it, turning with G) as its rod, from inside
+  !> the tube to its farthest point.
+  pure subroutine find_cylinders(topo, table, k, size_scale, drawing)
+    type(sketch_t), intent(in) :: topo
+    type(step_table_t), intent(in) :: table
+    integer, intent(in) :: k
+    !> Size of the mechanism, m.
+    real(wp), intent(in) :: size_scale
+    type(drawing_t), intent(inout) :: drawing
+    integer :: gi, li, ri, bi, j, q
+    real(wp) :: u(2), p0(2), t, tube, far, angle
+    do gi = 1, size(topo%guides)
+      associate (g => topo%guides(gi))
+        if (.not. allocated(g%on)) cycle
+        if (len(g%on) == 0) cycle
+        li = 0
+        do j = 1, size(topo%links)
+          if (topo%links(j)%name == g%on) li = j
+        end do
+        if (li == 0) cycle
+        if (any([(j /= li .and. any(topo%links(j)%points == g%point), j=1, size(topo%links))])) cycle
+        if (drawing%point_index(trim(g%point)) == 0) cycle
+        p0 = drawing%at(trim(g%point))
+        angle = (g%angle + column_value(table, "phi"//g%on, k)) * deg_to_rad
+        u = [cos(angle), sin(angle)]
+        ! the rod: another link with a point on the axis (not the anchor)
+        ri = 0
+        far = 0.0_wp
+        do j = 1, size(topo%links)
+          if (j == li) cycle
+          do q = 1, size(topo%links(j)%points)
+            if (drawing%point_index(trim(topo%links(j)%points(q))) == 0) cycle
+            associate (x => drawing%at(trim(topo%links(j)%points(q))) - p0)
+              if (abs(x(1) * u(2) - x(2) * u(1)) <= 1.0e-6_wp * (size_scale + norm2(x)) .and. &
+                norm2(x) > 1.0e-9_wp * size_scale) then
+                ri = j
+                far = dot_product(x, u)
+              end if
+            end associate
+          end do
+          if (ri > 0) exit
+        end do
+        if (ri == 0) cycle
+        if (far < 0.0_wp) then
+          u = -u
+          angle = angle + pi
+          far = -far
+        end if
+        tube = 0.0_wp
+        do q = 1, size(topo%links(li)%points)
+          t = dot_product(drawing%at(trim(topo%links(li)%points(q))) - p0, u)
+          tube = max(tube, 2.0_wp * t)
+        end do
+        if (drawing%point_index("S"//g%on) > 0) tube = max(tube, 2.0_wp * dot_product(drawing%at("S"//g%on) - p0, u))
+        if (tube <= 0.0_wp .or. tube >= far) tube = 0.6_wp * far
+        do bi = 1, size(drawing%bodies)
+          if (drawing%bodies(bi)%kind /= body_bar) cycle
+          if (drawing%bodies(bi)%name == g%on) then
+            drawing%bodies(bi)%kind = body_cylinder
+            drawing%bodies(bi)%angle = angle
+            drawing%bodies(bi)%anchor = p0
+            drawing%bodies(bi)%length = tube
+          else if (drawing%bodies(bi)%name == topo%links(ri)%name) then
+            drawing%bodies(bi)%kind = body_rod
+            drawing%bodies(bi)%angle = angle
+            drawing%bodies(bi)%anchor = p0
+            drawing%bodies(bi)%reach = [0.5_wp * tube, far]
+            do q = 1, size(topo%links(ri)%points)
+              if (drawing%point_index(trim(topo%links(ri)%points(q))) == 0) cycle
+              drawing%bodies(bi)%reach(2) = max(drawing%bodies(bi)%reach(2), &
+                dot_product(drawing%at(trim(topo%links(ri)%points(q))) - p0, u))
+            end do
+          end if
+        end do
+      end associate
+    end do
+  end subroutine find_cylinders
 
   !> Value of column `name` at row `k` (0 when the table has no such column).
   pure real(wp) function column_value(table, name, k)

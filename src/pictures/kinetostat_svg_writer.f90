@@ -17,9 +17,12 @@ module kinetostat_svg_writer
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_svg, only: svg_open, svg_close, svg_line, svg_path, svg_polyline_d, svg_circle, svg_rect, &
     svg_text, svg_arrow, coord, palette_colour
+  use kinetostat_label_place, only: label_boxes_t, title_attributes, anchor_start, anchor_end
+  use kinetostat_sheet_words, only: word, unit_word
+  use kinetostat_title_block, only: put_title_block, title_block_height
   implicit none
   private
-  public :: write_svg, pair_force_t, find_pair_forces, select_pair_forces, nice_step, cycle_mean, place_label
+  public :: write_svg, pair_force_t, find_pair_forces, select_pair_forces, nice_step, cycle_mean
 
   !> Sheet width (A4), mm.
   real(wp), parameter :: page_width = 210.0_wp
@@ -41,6 +44,10 @@ module kinetostat_svg_writer
   real(wp), parameter :: dynamics_block_height = 10.0_wp + 3.0_wp * (dynamics_chart_height + gap)
   !> Most numbered points in one hodograph (beyond it every m-th step is numbered).
   integer, parameter :: max_point_labels = 24
+  !> Font size of the class "num", mm (kinetostat_svg's style sheet).
+  real(wp), parameter :: num_size = 2.2_wp
+  !> Font size of the class "small", mm.
+  real(wp), parameter :: small_size = 2.4_wp
   !> Two points nearer than this share one number label ("1,13"), mm.
   real(wp), parameter :: label_merge_distance = 1.0_wp
 
@@ -57,13 +64,15 @@ module kinetostat_svg_writer
 contains
 
   !> The sheet of a run. `pairs` is the --pairs list ("F16,F36"; "" for every pair force).
-  pure subroutine write_svg(title, table, pairs, out, error)
+  pure subroutine write_svg(title, table, pairs, lang, out, error)
     !> Title of the mechanism.
     character(*), intent(in) :: title
     !> Finite results.
     type(step_table_t), intent(in) :: table
     !> Comma-separated pair names, or "".
     character(*), intent(in) :: pairs
+    !> lang_en or lang_ru.
+    integer, intent(in) :: lang
     !> Where the lines go.
     type(text_buffer_t), intent(inout) :: out
     !> Usage error: a name in `pairs` that is no pair force of the table.
@@ -89,38 +98,40 @@ contains
     if (table%input_column > 0) y = y + 2.0_wp + chart_h
     if (table%column_index("dT") > 0) y = y + dynamics_block_height
     height = max(page_height, y + margin)
+    if (allocated(table%student_stamp)) height = height + title_block_height + 4.0_wp
 
     call svg_open(out, page_width, height, title//" - "//table%deck, &
       "kinetostat --format svg sheet of "//table%deck//". Hodograph paths (class hodograph, data-force = the "// &
       "pair): page point = data-origin + data-scale * (Fx, -Fy), in mm, data-scale in mm per N; point k of a "// &
       "path is step k of the CSV.")
-    call put_header(out, title, table)
+    call put_header(out, title, table, lang)
 
     if (table%input_column > 0) then
-      call out%put(svg_text(margin, 32.0_wp, "Hodographs of the pair forces", 'class="heading"'))
-      call out%put(svg_text(margin, 36.0_wp, "Tip of each force vector over the cycle, in the frame of the " // &
-        "tables (x right, y up); point k = step k; O = zero force.", 'class="small"'))
+      call out%put(svg_text(margin, 32.0_wp, word("Hodographs of the pair forces", lang), 'class="heading"'))
+      call out%put(svg_text(margin, 36.0_wp, word("Tip of each force vector over the cycle, in the frame of the "// &
+        "tables (x right, y up); point k = step k; O = zero force.", lang), 'class="small"'))
       do i = 1, size(chosen)
         call panel_origin(i, columns, panel_w, panel_h, x0, y0)
-        call put_hodograph(out, table, chosen(i), x0, y0, panel_w, panel_h)
+        call put_hodograph(out, table, chosen(i), x0, y0, panel_w, panel_h, lang)
       end do
       if (size(chosen) == 0) call out%put(svg_text(margin, 44.0_wp, &
-        "This table has no pair force with an angle column: no hodographs.", 'class="note"'))
+        word("This table has no pair force with an angle column: no hodographs.", lang), 'class="note"'))
       y = 39.0_wp + rows * (panel_h + gap) + 2.0_wp
-      call put_driver_chart(out, table, margin, y, driver_chart_width, chart_h)
+      call put_driver_chart(out, table, margin, y, driver_chart_width, chart_h, lang)
       call put_magnitude_chart(out, table, chosen, margin + driver_chart_width + gap, y, &
-        page_width - 2.0_wp * margin - driver_chart_width - gap, chart_h)
-      if (table%column_index("dT") > 0) call put_dynamics_charts(out, table, y + chart_h + gap)
+        page_width - 2.0_wp * margin - driver_chart_width - gap, chart_h, lang)
+      if (table%column_index("dT") > 0) call put_dynamics_charts(out, table, y + chart_h + gap, lang)
     else
-      call out%put(svg_text(margin, 32.0_wp, "Pair forces of every " // table%row_name // " as vectors", &
+      call out%put(svg_text(margin, 32.0_wp, word("Pair forces of every " // table%row_name // " as vectors", lang), &
         'class="heading"'))
-      call out%put(svg_text(margin, 36.0_wp, "The rows of this table are " // table%row_name // &
-        "s, not steps of a cycle: no hodographs and no diagrams against an input angle.", 'class="small"'))
+      call out%put(svg_text(margin, 36.0_wp, word("The rows of this table are " // table%row_name // &
+        "s, not steps of a cycle: no hodographs and no diagrams against an input angle.", lang), 'class="small"'))
       do i = 1, table%row_count()
         call panel_origin(i, columns, panel_w, panel_h, x0, y0)
-        call put_vector_panel(out, table, chosen, i, x0, y0, panel_w, panel_h)
+        call put_vector_panel(out, table, chosen, i, x0, y0, panel_w, panel_h, lang)
       end do
     end if
+    call put_title_block(out, table, lang, page_width, height)
     call svg_close(out)
   end subroutine write_svg
 
@@ -149,24 +160,28 @@ contains
   end subroutine panel_origin
 
   !> Title, deck, row range and program lines at the top of the sheet.
-  pure subroutine put_header(out, title, table)
+  pure subroutine put_header(out, title, table, lang)
     type(text_buffer_t), intent(inout) :: out
     character(*), intent(in) :: title
     type(step_table_t), intent(in) :: table
+    integer, intent(in) :: lang
     character(len=:), allocatable :: line
     integer :: n
-    call out%put(svg_text(margin, 15.0_wp, title, 'class="title"'))
-    line = "deck: "//table%deck
+    call out%put(svg_text(margin, 15.0_wp, title, title_attributes(title, "title", 3.3_wp, 188.0_wp)))
+    line = word("deck", lang)//": "//table%deck
     if (allocated(table%subtitle)) line = line//"   "//table%subtitle
-    call out%put(svg_text(margin, 20.5_wp, line, 'class="subtitle"'))
+    call out%put(svg_text(margin, 20.5_wp, line, title_attributes(line, "subtitle", 3.0_wp, 188.0_wp)))
     n = table%row_count()
-    line = int_str(n)//" "//table%row_name
-    if (n /= 1) line = line//"s"
+    if (n /= 1) then
+      line = int_str(n)//" "//word(table%row_name//"s", lang)
+    else
+      line = int_str(n)//" "//word(table%row_name, lang)
+    end if
     if (table%input_column > 0 .and. n > 0) then
       associate (c => table%columns(table%input_column))
         line = line//", "//c%name//" = "//short_number(table%rows(table%input_column, 1))
         if (n > 1) line = line//" ... "//short_number(table%rows(table%input_column, n))
-        line = line//" "//c%unit
+        line = line//" "//unit_word(c%unit, lang)
       end associate
     end if
     line = line//"; "//version_string
@@ -331,9 +346,10 @@ contains
 
   !> A scale bar: a nice force near a quarter of `extent` (N), drawn `scale` mm per N at
   !> (x, y) with end ticks and its value.
-  pure subroutine put_scale_bar(out, x, y, extent, scale)
+  pure subroutine put_scale_bar(out, x, y, extent, scale, lang)
     type(text_buffer_t), intent(inout) :: out
     real(wp), intent(in) :: x, y, extent, scale
+    integer, intent(in) :: lang
     real(wp) :: value, length
     value = nice_step(extent, 4, .false.)
     if (value * scale > 40.0_wp) value = value / 2.0_wp
@@ -341,7 +357,8 @@ contains
     call out%put(svg_line(x, y, x + length, y, 'class="scale"'))
     call out%put(svg_line(x, y - 1.0_wp, x, y + 1.0_wp, 'class="scale"'))
     call out%put(svg_line(x + length, y - 1.0_wp, x + length, y + 1.0_wp, 'class="scale"'))
-    call out%put(svg_text(x + length + 1.5_wp, y + 0.9_wp, short_number(value)//" N", 'class="small"'))
+    call out%put(svg_text(x + length + 1.5_wp, y + 0.9_wp, short_number(value)//" "//unit_word("N", lang), &
+      'class="small"'))
   end subroutine put_scale_bar
 
   !> Map data points (N) into the rectangle (ax, ay, aw, ah) at one scale for both axes,
@@ -374,46 +391,55 @@ contains
   end subroutine fit_points
 
   !> The origin of a force diagram: light axes across the plot area, a small circle and "O".
-  !> Returns the boxes of its three labels (centres and half-widths, mm) for the placement
-  !> of the point numbers.
-  pure subroutine put_origin(out, ox, oy, ax, ay, aw, ah, lx, ly, lw)
+  !> The boxes of its three labels are taken in `boxes` (the point numbers go elsewhere);
+  !> "y" moves to the left of its axis when "x" has its place.
+  pure subroutine put_origin(out, ox, oy, ax, ay, aw, ah, boxes)
     type(text_buffer_t), intent(inout) :: out
     real(wp), intent(in) :: ox, oy, ax, ay, aw, ah
-    real(wp), allocatable, intent(out) :: lx(:), ly(:), lw(:)
+    type(label_boxes_t), intent(out) :: boxes
+    type(label_boxes_t) :: y_right
     call out%put(svg_line(ax, oy, ax + aw, oy, 'class="faint"'))
     call out%put(svg_line(ox, ay, ox, ay + ah, 'class="faint"'))
     call out%put(svg_text(ax + aw - 0.3_wp, oy - 0.8_wp, "x", 'class="small" text-anchor="end"'))
-    call out%put(svg_text(ox + 0.8_wp, ay + 2.0_wp, "y", 'class="small"'))
+    call boxes%reserve(ax + aw - 0.3_wp, oy - 0.8_wp, "x", small_size, anchor_end)
+    call y_right%reserve(ox + 0.8_wp, ay + 2.0_wp, "y", small_size, anchor_start)
+    if (boxes%is_free(y_right%box(:, 1))) then
+      call out%put(svg_text(ox + 0.8_wp, ay + 2.0_wp, "y", 'class="small"'))
+      call boxes%reserve(ox + 0.8_wp, ay + 2.0_wp, "y", small_size, anchor_start)
+    else
+      call out%put(svg_text(ox - 0.8_wp, ay + 2.0_wp, "y", 'class="small" text-anchor="end"'))
+      call boxes%reserve(ox - 0.8_wp, ay + 2.0_wp, "y", small_size, anchor_end)
+    end if
     call out%put(svg_circle(ox, oy, 0.7_wp, 'class="origin"'))
     call out%put(svg_text(ox - 1.0_wp, oy + 2.6_wp, "O", 'class="small" text-anchor="end"'))
-    lx = [ax + aw - 1.0_wp, ox + 1.5_wp, ox - 1.8_wp]
-    ly = [oy - 1.6_wp, ay + 1.2_wp, oy + 1.8_wp]
-    lw = [0.8_wp, 0.8_wp, 1.0_wp]
+    call boxes%reserve(ox - 1.0_wp, oy + 2.6_wp, "O", small_size, anchor_end)
   end subroutine put_origin
 
   !> One hodograph panel with its top-left corner at (x0, y0).
-  pure subroutine put_hodograph(out, table, p, x0, y0, w, h)
+  pure subroutine put_hodograph(out, table, p, x0, y0, w, h, lang)
     type(text_buffer_t), intent(inout) :: out
     type(step_table_t), intent(in) :: table
     type(pair_force_t), intent(in) :: p
     real(wp), intent(in) :: x0, y0, w, h
-    real(wp), allocatable :: fx(:), fy(:), px(:), py(:), lx(:), ly(:), lw(:)
+    integer, intent(in) :: lang
+    type(label_boxes_t) :: boxes
+    real(wp), allocatable :: fx(:), fy(:), px(:), py(:)
     real(wp) :: ax, ay, aw, ah, ox, oy, scale, extent
     integer :: k, n
     n = table%row_count()
     call pair_components(table, p, fx, fy)
     call out%put(svg_rect(x0, y0, w, h, 'class="panel"'))
     call out%put(svg_text(x0 + 2.0_wp, y0 + 4.5_wp, p%name, 'class="label" font-weight="bold"'))
-    call out%put(svg_text(x0 + w - 2.0_wp, y0 + 4.5_wp, "max "//short_number(maxval(table%rows(p%magnitude, :)))// &
-      " N", 'class="small" text-anchor="end"'))
+    call out%put(svg_text(x0 + w - 2.0_wp, y0 + 4.5_wp, word("max", lang)//" "// &
+      short_number(maxval(table%rows(p%magnitude, :)))//" "//unit_word("N", lang), 'class="small" text-anchor="end"'))
     ax = x0 + 5.0_wp
     ay = y0 + 9.0_wp
     aw = w - 10.0_wp
     ah = h - 19.0_wp
     call fit_points(fx, fy, ax, ay, aw, ah, ox, oy, scale, extent)
-    call put_origin(out, ox, oy, ax - 3.0_wp, ay - 3.0_wp, aw + 6.0_wp, ah + 6.0_wp, lx, ly, lw)
+    call put_origin(out, ox, oy, ax - 3.0_wp, ay - 3.0_wp, aw + 6.0_wp, ah + 6.0_wp, boxes)
     if (scale <= 0.0_wp) then
-      call out%put(svg_text(x0 + 0.5_wp * w, y0 + h - 4.0_wp, p%name//" = 0 at every step", &
+      call out%put(svg_text(x0 + 0.5_wp * w, y0 + h - 4.0_wp, p%name//" = 0 "//word("at every step", lang), &
         'class="note" text-anchor="middle"'))
       return
     end if
@@ -427,22 +453,24 @@ contains
     do k = 1, n
       call out%put(svg_circle(px(k), py(k), 0.45_wp, 'class="point"'))
     end do
-    call put_point_numbers(out, px, py, ox, oy, x0 + 1.0_wp, y0 + 6.0_wp, w - 2.0_wp, h - 13.0_wp, lx, ly, lw)
-    call put_scale_bar(out, x0 + 3.0_wp, y0 + h - 4.0_wp, extent, scale)
+    call put_point_numbers(out, px, py, ox, oy, x0 + 1.0_wp, y0 + 6.0_wp, w - 2.0_wp, h - 13.0_wp, boxes)
+    call put_scale_bar(out, x0 + 3.0_wp, y0 + h - 4.0_wp, extent, scale, lang)
   end subroutine put_hodograph
 
   !> Step numbers beside the points: points closer than label_merge_distance share one
   !> label ("1,13", "1-13" for a run); with many steps only every m-th step is numbered.
-  !> Each label goes to the place around its point (8 directions, near or far) that keeps
-  !> it farthest from the curve, the origin and the labels placed before it, inside the
-  !> box (bx, by, bw, bh).
-  pure subroutine put_point_numbers(out, px, py, ox, oy, bx, by, bw, bh, lx, ly, lw)
+  !> Each label goes to a free place near its point (kinetostat_label_place) away from the
+  !> curve and the origin, inside the box (bx, by, bw, bh); one placed away from its point
+  !> gets a leader line.
+  pure subroutine put_point_numbers(out, px, py, ox, oy, bx, by, bw, bh, boxes)
     type(text_buffer_t), intent(inout) :: out
     real(wp), intent(in) :: px(:), py(:), ox, oy, bx, by, bw, bh
-    !> Boxes already taken (centres, half-widths), mm; the new labels are appended.
-    real(wp), allocatable, intent(inout) :: lx(:), ly(:), lw(:)
+    !> Boxes already taken; the new labels' are added.
+    type(label_boxes_t), intent(inout) :: boxes
     integer, allocatable :: owner(:), members(:)
-    real(wp) :: cx, cy, tx, ty
+    real(wp), allocatable :: seg_x(:), seg_y(:)
+    real(wp) :: cx, cy, tx, ty, hw, e(2)
+    logical :: leader
     character(len=:), allocatable :: text
     integer :: n, k, j, every
     n = size(px)
@@ -463,52 +491,34 @@ contains
     end do
     cx = sum(px) / n
     cy = sum(py) / n
+    ! obstacles: the curve's segments and the origin
+    seg_x = [ox, ox]
+    seg_y = [oy, oy]
+    if (n == 1) then
+      seg_x = [seg_x, px(1), px(1)]
+      seg_y = [seg_y, py(1), py(1)]
+    end if
+    do k = 1, n - 1
+      seg_x = [seg_x, px(k), px(k + 1)]
+      seg_y = [seg_y, py(k), py(k + 1)]
+    end do
     do k = 1, n
       if (owner(k) /= k) cycle
       members = pack([(j, j=1, n)], owner == k)
       text = run_list(members)
-      call place_label(len(text), px(k), py(k), atan2(py(k) - cy, px(k) - cx), px, py, ox, oy, &
-        bx, by, bw, bh, lx, ly, lw, tx, ty)
-      call out%put(svg_text(tx, ty + 0.8_wp, text, 'class="num" text-anchor="middle"'))
+      ! many coinciding steps: the first two and the last ("1,17..361")
+      if (len(text) > 16 .and. size(members) > 3) text = int_str(members(1))//","//int_str(members(2))//".."// &
+        int_str(members(size(members)))
+      call boxes%place(text, num_size, px(k), py(k), atan2(py(k) - cy, px(k) - cx), seg_x, seg_y, &
+        [bx, by, bx + bw, by + bh], tx, ty, leader)
+      if (leader) then
+        hw = 0.3_wp * num_size * len(text)
+        e = [max(tx - hw, min(tx + hw, px(k))), max(ty - 0.8_wp * num_size, min(ty + 0.2_wp * num_size, py(k)))]
+        call out%put(svg_line(px(k), py(k), e(1), e(2), 'stroke="#777777" stroke-width="0.12"'))
+      end if
+      call out%put(svg_text(tx, ty, text, 'class="num" text-anchor="middle"'))
     end do
   end subroutine put_point_numbers
-
-  !> Place a label of `chars` characters (class num) beside the point (px0, py0): of 16
-  !> places around it (8 directions from `base`, rad, on; near, then far) the one with the
-  !> most clearance from the polyline (cx, cy), the origin and the boxes taken (lx, ly, lw),
-  !> inside the box (bx, by, bw, bh). Its box is appended to the boxes taken; (tx, ty) is
-  !> its centre, mm.
-  pure subroutine place_label(chars, px0, py0, base, cx, cy, ox, oy, bx, by, bw, bh, lx, ly, lw, tx, ty)
-    integer, intent(in) :: chars
-    real(wp), intent(in) :: px0, py0, base, cx(:), cy(:), ox, oy, bx, by, bw, bh
-    real(wp), allocatable, intent(inout) :: lx(:), ly(:), lw(:)
-    real(wp), intent(out) :: tx, ty
-    real(wp) :: hw, best, score, d, qx, qy
-    integer :: i, m
-    hw = 0.62_wp * chars + 0.2_wp
-    best = -huge(1.0_wp)
-    tx = px0
-    ty = py0
-    do i = 0, 15
-      d = base + modulo(i, 8) * 0.25_wp * pi
-      m = 1 + i / 8
-      qx = px0 + m * cos(d) * (hw + 0.7_wp)
-      qy = py0 + m * sin(d) * 1.9_wp
-      score = label_clearance(qx, qy, hw, cx, cy, ox, oy, lx, ly, lw)
-      if (m > 1) score = score - 0.6_wp
-      if (qx - hw < bx .or. qx + hw > bx + bw .or. qy - 1.0_wp < by .or. qy + 1.0_wp > by + bh) then
-        score = score - 100.0_wp
-      end if
-      if (score > best + 1.0e-9_wp) then
-        best = score
-        tx = qx
-        ty = qy
-      end if
-    end do
-    lx = [lx, tx]
-    ly = [ly, ty]
-    lw = [lw, hw]
-  end subroutine place_label
 
   !> "1,13", "1-13", "2,5-7": sorted step numbers, runs of three or more as a range.
   pure function run_list(members) result(text)
@@ -533,43 +543,6 @@ contains
       end if
     end do
   end function run_list
-
-  !> Clearance of a label box (centre (cx, cy), half-width hw, half-height 1 mm) from the
-  !> curve through the points, the origin and the labels already placed, mm.
-  pure real(wp) function label_clearance(cx, cy, hw, px, py, ox, oy, lx, ly, lw)
-    real(wp), intent(in) :: cx, cy, hw, px(:), py(:), ox, oy, lx(:), ly(:), lw(:)
-    real(wp), parameter :: hh = 1.0_wp
-    real(wp) :: sx, sy
-    integer :: k, i, j, nx
-    label_clearance = huge(1.0_wp)
-    ! sample the box every ~1.5 mm along its width, at its top, middle and bottom
-    nx = 1 + ceiling(2.0_wp * hw / 1.5_wp)
-    do i = 0, nx
-      sx = cx - hw + 2.0_wp * hw * i / nx
-      do j = -1, 1
-        sy = cy + j * hh
-        label_clearance = min(label_clearance, hypot(sx - ox, sy - oy))
-        if (size(px) == 1) label_clearance = min(label_clearance, hypot(sx - px(1), sy - py(1)))
-        do k = 1, size(px) - 1
-          label_clearance = min(label_clearance, segment_distance(sx, sy, px(k), py(k), px(k + 1), py(k + 1)))
-        end do
-      end do
-    end do
-    do k = 1, size(lx)
-      label_clearance = min(label_clearance, max(abs(cx - lx(k)) - hw - lw(k), abs(cy - ly(k)) - 2.0_wp * hh))
-    end do
-  end function label_clearance
-
-  !> Distance from (x, y) to the segment (x1, y1)-(x2, y2), mm.
-  pure real(wp) function segment_distance(x, y, x1, y1, x2, y2)
-    real(wp), intent(in) :: x, y, x1, y1, x2, y2
-    real(wp) :: dx, dy, t
-    dx = x2 - x1
-    dy = y2 - y1
-    t = 0.0_wp
-    if (dx * dx + dy * dy > 0.0_wp) t = max(0.0_wp, min(1.0_wp, ((x - x1) * dx + (y - y1) * dy) / (dx * dx + dy * dy)))
-    segment_distance = hypot(x - x1 - t * dx, y - y1 - t * dy)
-  end function segment_distance
 
   !> Axes of a chart: the plot rectangle, grid and tick labels for x in [xlo, xhi] and y in
   !> [ylo, yhi], and the axis labels. Returns nothing: the caller maps with chart_x/chart_y.
@@ -648,10 +621,11 @@ contains
   end subroutine put_series
 
   !> The driving moment (or force) of the table against its input coordinate, with its mean.
-  pure subroutine put_driver_chart(out, table, x0, y0, w, h)
+  pure subroutine put_driver_chart(out, table, x0, y0, w, h, lang)
     type(text_buffer_t), intent(inout) :: out
     type(step_table_t), intent(in) :: table
     real(wp), intent(in) :: x0, y0, w, h
+    integer, intent(in) :: lang
     real(wp), allocatable :: x(:), y(:)
     real(wp) :: left, top, pw, ph, xlo, xhi, xstep, ylo, yhi, ystep, mean, t
     character(len=:), allocatable :: what
@@ -661,15 +635,15 @@ contains
     if (allocated(table%driver)) c = table%column_index(table%driver)
     call out%put(svg_rect(x0, y0, w, h, 'class="panel"'))
     if (c == 0 .or. table%row_count() == 0) then
-      call out%put(svg_text(x0 + 2.0_wp, y0 + 5.0_wp, "Driving effort", 'class="heading"'))
-      call out%put(svg_text(x0 + 2.0_wp, y0 + 12.0_wp, "This table has no driving moment or force column.", &
+      call out%put(svg_text(x0 + 2.0_wp, y0 + 5.0_wp, word("Driving effort", lang), 'class="heading"'))
+      call out%put(svg_text(x0 + 2.0_wp, y0 + 12.0_wp, word("This table has no driving moment or force column.", lang), &
         'class="note"'))
       return
     end if
-    what = "Driving force "
-    if (table%columns(c)%kind == col_moment) what = "Driving moment "
-    call out%put(svg_text(x0 + 2.0_wp, y0 + 5.0_wp, what//table%columns(c)%name//" against "// &
-      table%columns(ci)%name, 'class="heading"'))
+    what = word("Driving force", lang)
+    if (table%columns(c)%kind == col_moment) what = word("Driving moment", lang)
+    call out%put(svg_text(x0 + 2.0_wp, y0 + 5.0_wp, what//" "//table%columns(c)%name//" "//word("against", lang)// &
+      " "//table%columns(ci)%name, 'class="heading"'))
     left = x0 + 17.0_wp
     top = y0 + 9.0_wp
     pw = w - 21.0_wp
@@ -678,47 +652,57 @@ contains
     mean = cycle_mean(table%rows(ci, :), table%rows(c, :))
     call y_range([table%rows(c, :), mean], ylo, yhi, ystep)
     call put_axes(out, left, top, pw, ph, xlo, xhi, xstep, ylo, yhi, ystep, &
-      table%columns(ci)%name//", "//table%columns(ci)%unit, table%columns(c)%name//", "//table%columns(c)%unit)
+      table%columns(ci)%name//", "//unit_word(table%columns(ci)%unit, lang), &
+      table%columns(c)%name//", "//unit_word(table%columns(c)%unit, lang))
     x = left + pw * (table%rows(ci, :) - xlo) / (xhi - xlo)
     y = top + ph - ph * (table%rows(c, :) - ylo) / (yhi - ylo)
     call put_series(out, x, y, "#1f77b4", "")
     t = top + ph - ph * (mean - ylo) / (yhi - ylo)
     call out%put(svg_line(left, t, left + pw, t, 'class="mean"'))
     call out%put(svg_line(x0 + w - 30.0_wp, y0 + h - 3.0_wp, x0 + w - 24.0_wp, y0 + h - 3.0_wp, 'class="mean"'))
-    call out%put(svg_text(x0 + w - 23.0_wp, y0 + h - 2.2_wp, "mean "//short_number(mean)//" "// &
-      table%columns(c)%unit, 'class="small"'))
+    call out%put(svg_text(x0 + w - 23.0_wp, y0 + h - 2.2_wp, word("mean", lang)//" "//short_number(mean)//" "// &
+      unit_word(table%columns(c)%unit, lang), 'class="small"'))
   end subroutine put_driver_chart
 
   !> The machine dynamics of a steady cycle (the course's dynamics drawing): J_red, M_red with
   !> M_d, dT, omega1 with omega_m and the delta band against the input angle, and
   !> Wittenbauer's curve dT against J_red.
-  pure subroutine put_dynamics_charts(out, table, y0)
+  pure subroutine put_dynamics_charts(out, table, y0, lang)
     type(text_buffer_t), intent(inout) :: out
     type(step_table_t), intent(in) :: table
     !> Top of the block, mm.
     real(wp), intent(in) :: y0
+    !> lang_en or lang_ru.
+    integer, intent(in) :: lang
     real(wp) :: w, top
     integer :: ci
+    character(len=:), allocatable :: deg, nm, kgm2, input
     ci = table%input_column
     w = 0.5_wp * (page_width - 2.0_wp * margin - gap)
-    call out%put(svg_text(margin, y0 + 4.0_wp, "Machine dynamics (reduced to the input link)", 'class="heading"'))
-    call out%put(svg_text(margin, y0 + 8.0_wp, "Steady cycle: M_d = "//short_number(figure("M_d"))// &
-      " N*m, flywheel J_fw = "//short_number(figure("J_flywheel"))//" kg*m^2 (textbook "// &
-      short_number(figure("J_flywheel_textbook"))//"), delta = "//short_number(figure("delta")), 'class="small"'))
+    deg = unit_word("deg", lang)
+    nm = unit_word("N*m", lang)
+    kgm2 = unit_word("kg*m^2", lang)
+    input = table%columns(ci)%name//", "//deg
+    call out%put(svg_text(margin, y0 + 4.0_wp, word("Machine dynamics (reduced to the input link)", lang), &
+      'class="heading"'))
+    call out%put(svg_text(margin, y0 + 8.0_wp, word("Steady cycle", lang)//": M_d = "//short_number(figure("M_d"))// &
+      " "//nm//", "//word("flywheel", lang)//" J_fw = "//short_number(figure("J_flywheel"))//" "//kgm2//" ("// &
+      word("textbook", lang)//" "//short_number(figure("J_flywheel_textbook"))//"), delta = "// &
+      short_number(figure("delta")), 'class="small"'))
     top = y0 + 10.0_wp
     call chart(out, table%rows(ci, :), table%rows(table%column_index("J_red"), :), margin, top, &
-      "Reduced moment of inertia J_red", table%columns(ci)%name//", deg", "J_red, kg*m^2", [real(wp) ::])
+      word("Reduced moment of inertia J_red", lang), input, "J_red, "//kgm2, [real(wp) ::])
     call chart(out, table%rows(ci, :), table%rows(table%column_index("M_red"), :), margin + w + gap, top, &
-      "Reduced moment M_red and M_d (dashed)", table%columns(ci)%name//", deg", "M_red, N*m", [figure("M_d")])
+      word("Reduced moment M_red and M_d (dashed)", lang), input, "M_red, "//nm, [figure("M_d")])
     top = top + dynamics_chart_height + gap
     call chart(out, table%rows(ci, :), table%rows(table%column_index("dT"), :), margin, top, &
-      "Change of kinetic energy dT", table%columns(ci)%name//", deg", "dT, J", [real(wp) ::])
+      word("Change of kinetic energy dT", lang), input, "dT, "//unit_word("J", lang), [real(wp) ::])
     call chart(out, table%rows(ci, :), table%rows(table%column_index("omega1"), :), margin + w + gap, top, &
-      "Speed omega1 (dashed: mean, max, min)", table%columns(ci)%name//", deg", "omega1, rad/s", &
+      word("Speed omega1 (dashed: mean, max, min)", lang), input, "omega1, "//unit_word("rad/s", lang), &
       [figure("omega_mean"), figure("omega_max"), figure("omega_min")])
     top = top + dynamics_chart_height + gap
     call chart(out, table%rows(table%column_index("J_red"), :), table%rows(table%column_index("dT"), :), margin, top, &
-      "Wittenbauer's curve: dT against J_red", "J_red, kg*m^2", "dT, J", [real(wp) ::])
+      word("Wittenbauer's curve: dT against J_red", lang), "J_red, "//kgm2, "dT, "//unit_word("J", lang), [real(wp) ::])
   contains
     !> A figure of the DYNAMICS records (0 when absent).
     pure real(wp) function figure(name)
@@ -745,7 +729,7 @@ contains
       pt = y0 + 9.0_wp
       pw = w - 21.0_wp
       ph = dynamics_chart_height - 22.0_wp
-      call x_range(xv, index(xlabel, "deg") > 0, xlo, xhi, xstep)
+      call x_range(xv, index(xlabel, ", "//deg) > 0, xlo, xhi, xstep)
       if (size(levels) > 0) then
         ! a speed band: the range of the data and the levels, zero not forced in
         vmin = min(minval(yv), minval(levels))
@@ -771,11 +755,12 @@ contains
   end subroutine put_dynamics_charts
 
   !> The magnitudes of the chosen pair forces against the input coordinate, with a legend.
-  pure subroutine put_magnitude_chart(out, table, pairs, x0, y0, w, h)
+  pure subroutine put_magnitude_chart(out, table, pairs, x0, y0, w, h, lang)
     type(text_buffer_t), intent(inout) :: out
     type(step_table_t), intent(in) :: table
     type(pair_force_t), intent(in) :: pairs(:)
     real(wp), intent(in) :: x0, y0, w, h
+    integer, intent(in) :: lang
     real(wp), allocatable :: x(:), y(:), magnitudes(:)
     real(wp) :: left, top, pw, ph, xlo, xhi, xstep, ylo, yhi, ystep, legend_x, row, dy
     character(len=7) :: colour
@@ -783,10 +768,10 @@ contains
     integer :: ci, i
     ci = table%input_column
     call out%put(svg_rect(x0, y0, w, h, 'class="panel"'))
-    call out%put(svg_text(x0 + 2.0_wp, y0 + 5.0_wp, "Magnitudes of the pair forces against "// &
+    call out%put(svg_text(x0 + 2.0_wp, y0 + 5.0_wp, word("Magnitudes of the pair forces against", lang)//" "// &
       table%columns(ci)%name, 'class="heading"'))
     if (size(pairs) == 0 .or. table%row_count() == 0) then
-      call out%put(svg_text(x0 + 2.0_wp, y0 + 12.0_wp, "No pair forces to show.", 'class="note"'))
+      call out%put(svg_text(x0 + 2.0_wp, y0 + 12.0_wp, word("No pair forces to show.", lang), 'class="note"'))
       return
     end if
     left = x0 + 17.0_wp
@@ -800,7 +785,8 @@ contains
     end do
     call y_range(magnitudes, ylo, yhi, ystep)
     call put_axes(out, left, top, pw, ph, xlo, xhi, xstep, ylo, yhi, ystep, &
-      table%columns(ci)%name//", "//table%columns(ci)%unit, "force, N")
+      table%columns(ci)%name//", "//unit_word(table%columns(ci)%unit, lang), word("force", lang)//", "// &
+      unit_word("N", lang))
     x = left + pw * (table%rows(ci, :) - xlo) / (xhi - xlo)
     legend_x = left + pw + 3.0_wp
     dy = min(4.0_wp, ph / size(pairs))
@@ -825,19 +811,22 @@ contains
 
   !> One row (gear stage) as a vector diagram: every non-zero pair force as an arrow from
   !> the origin, at one scale, named at its tip, with a scale bar.
-  pure subroutine put_vector_panel(out, table, pairs, k, x0, y0, w, h)
+  pure subroutine put_vector_panel(out, table, pairs, k, x0, y0, w, h, lang)
     type(text_buffer_t), intent(inout) :: out
     type(step_table_t), intent(in) :: table
     type(pair_force_t), intent(in) :: pairs(:)
     integer, intent(in) :: k
     real(wp), intent(in) :: x0, y0, w, h
-    real(wp), allocatable :: fx(:), fy(:), lx(:), ly(:), lw(:), star_x(:), star_y(:)
+    integer, intent(in) :: lang
+    type(label_boxes_t) :: boxes
+    real(wp), allocatable :: fx(:), fy(:), star_x(:), star_y(:)
     real(wp) :: ax, ay, aw, ah, ox, oy, scale, extent, tx, ty, d, qx, qy
+    logical :: leader
     character(len=7) :: colour
     character(len=:), allocatable :: dash, text
     integer :: i, j, n
     call out%put(svg_rect(x0, y0, w, h, 'class="panel"'))
-    call out%put(svg_text(x0 + 2.0_wp, y0 + 4.5_wp, table%row_name//" "//int_str(k), &
+    call out%put(svg_text(x0 + 2.0_wp, y0 + 4.5_wp, word(table%row_name, lang)//" "//int_str(k), &
       'class="label" font-weight="bold"'))
     allocate (fx(0), fy(0))
     do i = 1, size(pairs)
@@ -855,11 +844,12 @@ contains
       call fit_points(fx, fy, ax, ay, aw, ah, ox, oy, scale, extent)
     end if
     if (scale <= 0.0_wp) then
-      call out%put(svg_text(x0 + 0.5_wp * w, y0 + 0.5_wp * h, "no pair force", 'class="note" text-anchor="middle"'))
+      call out%put(svg_text(x0 + 0.5_wp * w, y0 + 0.5_wp * h, word("no pair force", lang), &
+        'class="note" text-anchor="middle"'))
       return
     end if
-    call put_origin(out, ox, oy, ax - 4.0_wp, ay - 4.0_wp, aw + 8.0_wp, ah + 8.0_wp, lx, ly, lw)
-    ! the arrows as one polyline origin -> tip -> origin -> ... (the obstacles of the labels)
+    call put_origin(out, ox, oy, ax - 4.0_wp, ay - 4.0_wp, aw + 8.0_wp, ah + 8.0_wp, boxes)
+    ! the arrows as segments origin -> tip (the obstacles of the labels)
     allocate (star_x(0), star_y(0))
     do i = 1, n
       star_x = [star_x, ox, ox + scale * fx(i)]
@@ -879,12 +869,13 @@ contains
       do j = i, n
         if (hypot(fx(j) - fx(i), fy(j) - fy(i)) * scale < 0.5_wp) text = text//pairs(j)%name//" = "
       end do
-      text = text//short_number(table%rows(pairs(i)%magnitude, k))//" N"
-      call place_label(len(text), tx, ty, atan2(-fy(i), fx(i)), star_x, star_y, ox, oy, &
-        x0 + 1.0_wp, y0 + 6.0_wp, w - 2.0_wp, h - 13.0_wp, lx, ly, lw, qx, qy)
-      call out%put(svg_text(qx, qy + 0.8_wp, text, 'class="num" text-anchor="middle" style="fill: '//colour//'"'))
+      text = text//short_number(table%rows(pairs(i)%magnitude, k))//" "//unit_word("N", lang)
+      call boxes%place(text, num_size, tx, ty, atan2(-fy(i), fx(i)), star_x, star_y, &
+        [x0 + 1.0_wp, y0 + 6.0_wp, x0 + w - 1.0_wp, y0 + h - 7.0_wp], qx, qy, leader, tail=[ox, oy])
+      if (leader) call out%put(svg_line(tx, ty, qx, qy - 0.3_wp * num_size, 'stroke="#777777" stroke-width="0.12"'))
+      call out%put(svg_text(qx, qy, text, 'class="num" text-anchor="middle" style="fill: '//colour//'"'))
     end do
-    call put_scale_bar(out, x0 + 3.0_wp, y0 + h - 4.0_wp, extent, scale)
+    call put_scale_bar(out, x0 + 3.0_wp, y0 + h - 4.0_wp, extent, scale, lang)
   end subroutine put_vector_panel
 
 end module kinetostat_svg_writer

@@ -17,6 +17,9 @@ module kinetostat_run
   use kinetostat_svg_mechanism, only: write_svg_mechanism
   use kinetostat_sketch, only: sketch_t
   use kinetostat_drawing, only: drawing_t, drawing_from_sketch
+  use kinetostat_plans, only: plans_t, build_plans, write_plans_json
+  use kinetostat_svg_plans, only: write_svg_plans
+  use kinetostat_dxf, only: write_dxf
   use kinetostat_error, only: exit_usage
   use kinetostat_labels, only: lang_en
   use kinetostat_override, only: override_t, mark_overrides
@@ -29,7 +32,8 @@ module kinetostat_run
   implicit none
   private
   public :: run_options_t, run_mechanism, guard_finite, progress_i, block_rows
-  public :: format_table, format_csv, format_json, format_svg, format_summary, format_from_name, format_names
+  public :: format_table, format_csv, format_json, format_svg, format_summary, format_plans, format_dxf, &
+    format_from_name, format_names
 
   !> Output format: the legacy fixed-format table.
   integer, parameter :: format_table = 1
@@ -41,8 +45,12 @@ module kinetostat_run
   integer, parameter :: format_svg = 4
   !> Output format: a CSV header and one summary row (extremes, means, work).
   integer, parameter :: format_summary = 5
+  !> Output format: the graphical method's plans of step --at K (an SVG sheet).
+  integer, parameter :: format_plans = 6
+  !> Output format: the mechanism of step --at K as an ASCII DXF drawing.
+  integer, parameter :: format_dxf = 7
   !> Names of the formats, for messages and --help.
-  character(*), parameter :: format_names = "table, csv, json, svg, summary"
+  character(*), parameter :: format_names = "table, csv, json, svg, summary, plans, dxf"
 
   !> Steps solved and written at a time: a run holds the rows of one block (and at most the
   !> spool's bound of output text), whatever its number of steps.
@@ -79,6 +87,11 @@ module kinetostat_run
     character(len=:), allocatable :: pairs
     !> SVG: draw the mechanism at this row (0: the sheet of hodographs and diagrams).
     integer :: at_step = 0
+    !> JSON with --at: the graphical method's plans of that row instead of the rows.
+    logical :: plans = .false.
+    !> The student's header (legacy table and sheets): date and time of the run, surname,
+    !> group, variant (all allocated, or none).
+    character(len=:), allocatable :: student_stamp, student_name, student_group, student_variant
     !> Rows per block (0: block_rows); the output does not depend on it (tests vary it).
     integer :: block_rows = 0
     !> Values of an echoed array written between drains of the output (0: the step table's
@@ -104,6 +117,10 @@ contains
       format_from_name = format_json
     case ("summary")
       format_from_name = format_summary
+    case ("plans")
+      format_from_name = format_plans
+    case ("dxf")
+      format_from_name = format_dxf
     case ("svg")
       format_from_name = format_svg
     case default
@@ -159,17 +176,23 @@ contains
     call release_deck_text(source)
     table%mechanism = group
     table%deck = source%path
+    if (allocated(options%student_stamp)) then
+      table%student_stamp = options%student_stamp
+      table%student_name = options%student_name
+      table%student_group = options%student_group
+      table%student_variant = options%student_variant
+    end if
     table%row_name = "step"
     table%driver = "M1"
-    table%kinematics_wanted = options%kinematics .or. options%link_frame .or. options%format == format_svg &
-                              .or. options%shaking
+    table%kinematics_wanted = options%kinematics .or. options%link_frame .or. options%format == format_svg .or. &
+      options%plans .or. options%format == format_plans .or. options%format == format_dxf .or. options%shaking
     rows = block_rows
     if (options%block_rows > 0) rows = options%block_rows
     head%chunk = options%echo_chunk
     first = 1
     do
       ! the SVG sheet and drawing need every row at once
-      if (options%format /= format_svg) then
+      if (all(options%format /= [format_svg, format_plans, format_dxf]) .and. .not. options%plans) then
         table%block_first = first
         table%block_last = first + rows - 1
       end if
@@ -222,21 +245,29 @@ contains
           call out%put(summary_row(table, options%kinematics))
         end if
       case (format_json)
-        do
-          call write_json(mech%title(options%lang), table, out, options%kinematics, options%link_frame, head)
-          if (head%done) exit
-          call drain_head(error)
+        if (options%plans) then
+          if (table%last_block()) call write_at_step(mech, table, options, out, error)
           if (allocated(error)) return
-        end do
+        else
+          do
+            call write_json(mech%title(options%lang), table, out, options%kinematics, options%link_frame, head)
+            if (head%done) exit
+            call drain_head(error)
+            if (allocated(error)) return
+          end do
+        end if
+      case (format_plans, format_dxf)
+        call write_at_step(mech, table, options, out, error)
+        if (allocated(error)) return
       case (format_svg)
         call guard_drawable(table, error)
         if (allocated(error)) return
         if (options%at_step > 0) then
           call write_at_step(mech, table, options, out, error)
         else if (allocated(options%pairs)) then
-          call write_svg(mech%title(options%lang), table, options%pairs, out, error)
+          call write_svg(mech%title(options%lang), table, options%pairs, options%lang, out, error)
         else
-          call write_svg(mech%title(options%lang), table, "", out, error)
+          call write_svg(mech%title(options%lang), table, "", options%lang, out, error)
         end if
         if (allocated(error)) return
       case default
@@ -302,6 +333,7 @@ contains
     type(error_t), allocatable, intent(out) :: error
     type(sketch_t) :: topo
     type(drawing_t) :: drawing
+    type(plans_t) :: plans
     integer :: k
     k = options%at_step
     if (k > table%row_count()) then
@@ -319,7 +351,17 @@ contains
     if (allocated(error)) return
     call mech%force_plan(table, k, drawing, error)
     if (allocated(error)) return
-    call write_svg_mechanism(mech%title(options%lang), table, k, drawing, out)
+    if (options%plans) then
+      call build_plans(topo, drawing, table, k, plans)
+      call write_plans_json(plans, table, k, out)
+    else if (options%format == format_dxf) then
+      call write_dxf(mech%title(lang_en)//" - "//table%deck//" - "//table%row_name//" "//int_str(k), drawing, out)
+    else if (options%format == format_plans) then
+      call build_plans(topo, drawing, table, k, plans)
+      call write_svg_plans(mech%title(options%lang), table, k, plans, options%lang, out)
+    else
+      call write_svg_mechanism(mech%title(options%lang), table, k, drawing, options%lang, out)
+    end if
   end subroutine write_at_step
 
   !> Nothing that is not finite may reach an output: a non-finite result is a geometry

@@ -8,7 +8,7 @@ module kinetostat_table_writer
     echo_int_kind, echo_logical_kind, echo_array_kind, echo_text_kind, echo_heading_kind, echo_line_kind, col_force
   use kinetostat_format, only: echo_number, echo_array_number, footer_number, limit_number, pad_right, put_fixed, &
     fixed_field, display_width
-  use kinetostat_labels, only: label, lang_ru
+  use kinetostat_labels, only: label, lang_ru, phrase, echo_name
   use kinetostat_summary, only: column_stats_t, column_stats, drive_work
   use kinetostat_text, only: upper
   use kinetostat_mechanism, only: mechanism_t
@@ -134,6 +134,23 @@ contains
     end if
   end subroutine write_table_head
 
+  !> The header line of the 1991 programs (T.FTN's "ДАТА ... ВРЕМЯ ... ФАМИЛИЯ"): date, time,
+  !> surname, group and variant of the student who ran the deck.
+  pure function student_line(table, lang) result(line)
+    type(step_table_t), intent(in) :: table
+    integer, intent(in) :: lang
+    character(len=:), allocatable :: line
+    integer :: blank
+    blank = index(table%student_stamp, " ")
+    if (lang == lang_ru) then
+      line = "ДАТА "//table%student_stamp(:blank - 1)//"  ВРЕМЯ "//table%student_stamp(blank + 1:)//"  ФАМИЛИЯ "// &
+        table%student_name//"  ГРУППА "//table%student_group//"  ВАРИАНТ "//table%student_variant
+    else
+      line = "DATE "//table%student_stamp(:blank - 1)//"  TIME "//table%student_stamp(blank + 1:)//"  NAME "// &
+        table%student_name//"  GROUP "//table%student_group//"  VARIANT "//table%student_variant
+    end if
+  end function student_line
+
   !> The next part of the head (see write_table_head).
   pure subroutine head_part(mech, table, lang, out, cursor)
     class(mechanism_t), intent(in) :: mech
@@ -143,6 +160,7 @@ contains
     type(echo_cursor_t), intent(inout) :: cursor
     integer :: i
     if (cursor%record == 0) then
+      if (allocated(table%student_stamp)) call out%put(" "//student_line(table, lang))
       call out%put(" "//mech%title(lang))
       call out%put(" "//label("DECK: ", lang)//table%deck)
       if (allocated(table%subtitle)) call out%put(" "//label("TITLE: ", lang)//table%subtitle)
@@ -230,15 +248,15 @@ contains
     if (e%overridden) mark = override_mark
     select case (e%kind)
     case (echo_real_kind)
-      call out%put(value_line(e%name, e%values(1), label(e%unit, lang))//mark)
+      call out%put(value_line(echo_name(e%name, lang), e%values(1), phrase(e%unit, lang))//mark)
     case (echo_int_kind)
       write (whole, '(i18)') e%int_value
-      call out%put(name_part(e%name)//whole//"  "//label(e%unit, lang)//mark)
+      call out%put(name_part(echo_name(e%name, lang))//whole//"  "//phrase(e%unit, lang)//mark)
     case (echo_logical_kind)
       write (whole, '(l18)') e%logical_value
-      call out%put(name_part(e%name)//whole//"  "//label(e%unit, lang)//mark)
+      call out%put(name_part(echo_name(e%name, lang))//whole//"  "//phrase(e%unit, lang)//mark)
     case (echo_text_kind)
-      call out%put(name_part(e%name)//"  "//e%text//mark)
+      call out%put(name_part(e%name)//"  "//phrase(e%text, lang)//mark)
     case (echo_array_kind)
       n = e%value_count()
       first = 1
@@ -247,14 +265,14 @@ contains
       if (present(cursor)) call cursor%take(n, echo_array_per_line, first, last)
       if (first == 1) then
         write (whole, '(i0)') n
-        call out%put(name_part(e%name//"("//trim(whole)//")")//"  "//label(e%unit, lang)//mark)
+        call out%put(name_part(e%name//"("//trim(whole)//")")//"  "//phrase(e%unit, lang)//mark)
       end if
       call put_array_lines(out, e, first, last)
       if (n == 0) call out%put("")
     case (echo_heading_kind)
-      call put_heading(out, e%name)
-    case default ! echo_line_kind: a line printed as it is
-      call out%put(e%name)
+      call put_heading(out, echo_name(e%name, lang))
+    case default ! echo_line_kind: a line printed as it is (its words translated)
+      call out%put(echo_name(e%name, lang))
     end select
   end subroutine put_echo
 

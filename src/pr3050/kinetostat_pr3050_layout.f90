@@ -405,7 +405,7 @@ contains
       a = drawing%at("A")
       b = drawing%at("B")
       u = (b - a) / max(norm2(b - a), tiny(1.0_wp))
-      call drawing%add_force("F2", force_load, drawing%at("S2"), table%rows(table%column_index("F2"), k) * u)
+      call drawing%add_force("F2", force_load, drawing%at("S2"), table%rows(table%column_index("F2"), k) * u, "2")
       call self%mass_model(model)
       call drawing%add_body_loads(table, k, model)
     end associate

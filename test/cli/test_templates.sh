@@ -59,7 +59,7 @@ cmp -s "$out" "$cli_tmp/eq.csv" && [ -s "$out" ] && pass || fail format-equals-f
 # --- --help lists every option and subcommand; the man page and the completion know them too
 run_ks --help
 for word in -o --output --set --format --pairs --at --lang --kinematics -q --quiet --strict -h --help -V \
-  --max-deck-size --allow-selfcheck-failure \
+  --max-deck-size --allow-selfcheck-failure --plans --student --group --variant plans dxf \
   --version template diff --rtol --atol table csv json svg fourbar engine sweep --vary --part summary; do
   if grep -q -- "$word" "$out"; then pass; else fail "help-lists-$word" "--help does not mention $word"; fi
   if grep -q -- "$(printf '%s' "$word" | sed 's/-/\\\\-/g')" man/kinetostat.1; then pass

@@ -1,0 +1,648 @@
+!> The graphical method's plans at one step, computed from the drawing of that step (points,
+!> forces, moments: kinetostat_drawing), the mechanism's topology (kinetostat_sketch) and the
+!> kinematics columns (link angular velocities omega<i> and accelerations eps<i>,
+!> accelerations of the centres of mass ax_S<i>, ay_S<i>):
+!> - the plan of velocities: the image of every named point (v = v0_L + omega_L x r on each
+!>   link L; the link's v0_L from the pairs: a pivot is at rest, a revolute joint has one
+!>   velocity on both its links, a slider moves along its guide relative to the guide's
+!>   link), solved in the least-squares sense, every equation's residual reported;
+!> - the plan of accelerations: the same with a = a0_L + eps_L x r - omega_L^2 r, the centres
+!>   of mass given by the table, the Coriolis term 2 omega_G x v_rel in the sliders;
+!> - the force polygon of every link whose forces are known (its loads in a fixed order:
+!>   weight, inertia force, external loads; then the pair forces on it): a closed polygon
+!>   when the link is in (d'Alembert) equilibrium;
+!> - Zhukovsky's lever: the balancing moment from the power of every force and moment but
+!>   the driving one, -(sum F . v + sum M omega) / omega_driver, against the table's value.
+module kinetostat_plans
+  use kinetostat_kinds, only: wp, deg_to_rad
+  use kinetostat_step_table, only: step_table_t
+  use kinetostat_sketch, only: sketch_t
+  use kinetostat_drawing, only: drawing_t, force_pair
+  use kinetostat_format, only: full_number
+  use kinetostat_text_buffer, only: text_buffer_t
+  use kinetostat_text, only: int_str
+  implicit none
+  private
+  public :: plans_t, plan_vector_t, force_polygon_t, build_plans, write_plans_json
+
+  !> A named vector (a point's image on a plan, a force of a polygon).
+  type :: plan_vector_t
+    !> Name ("B", "G2", "F21").
+    character(len=16) :: name = ""
+    !> Components (position frame): m/s, m/s^2 or N.
+    real(wp) :: v(2) = 0.0_wp
+  end type plan_vector_t
+
+  !> The force polygon of one link.
+  type :: force_polygon_t
+    !> Link name.
+    character(len=16) :: link = ""
+    !> The vectors in drawing order.
+    type(plan_vector_t), allocatable :: vectors(:)
+    !> |sum of the vectors| / largest vector (0 for a closed polygon).
+    real(wp) :: closure = 0.0_wp
+  end type force_polygon_t
+
+  !> The plans of one step.
+  type :: plans_t
+    !> Velocity images of the named points, m/s.
+    type(plan_vector_t), allocatable :: velocities(:)
+    !> Acceleration images of the named points, m/s^2.
+    type(plan_vector_t), allocatable :: accelerations(:)
+    !> Largest residual of the velocity equations, m/s, and of the acceleration equations, m/s^2.
+    real(wp) :: velocity_residual = 0.0_wp, acceleration_residual = 0.0_wp
+    !> Force polygons, one per link with known forces.
+    type(force_polygon_t), allocatable :: polygons(:)
+    !> Zhukovsky's lever: the driver's name, whether it could be computed, the effort from the
+    !> lever and the table's value (N*m or N).
+    character(len=:), allocatable :: driver
+    logical :: lever_known = .false.
+    real(wp) :: effort = 0.0_wp, run = 0.0_wp
+    !> Why the lever is not known (when it is not).
+    character(len=:), allocatable :: lever_note
+    !> The loads on the lever: each force (N) and the velocity image of its point (m/s).
+    type(plan_vector_t), allocatable :: lever_forces(:), lever_images(:)
+    !> Scale of the lever's arms: the driving link's rate (rad/s, or m/s for an actuator).
+    real(wp) :: lever_rate = 0.0_wp
+  end type plans_t
+
+  !> A pair equation between the fields of two links at a point: kind and data.
+  integer, parameter :: eq_rest = 1, eq_joint = 2, eq_slide = 3
+
+contains
+
+  !> The plans of row `k` from the topology, the drawing (with its forces) and the table.
+  pure subroutine build_plans(topo, drawing, table, k, plans)
+    type(sketch_t), intent(in) :: topo
+    type(drawing_t), intent(in) :: drawing
+    type(step_table_t), intent(in) :: table
+    integer, intent(in) :: k
+    type(plans_t), intent(out) :: plans
+    real(wp), allocatable :: omega(:), eps(:), v0(:, :), a0(:, :), none(:, :)
+    integer :: nl, i
+    nl = size(topo%links)
+    allocate (omega(nl), eps(nl))
+    do i = 1, nl
+      omega(i) = column_value(table, "omega"//topo%links(i)%name, k)
+      eps(i) = column_value(table, "eps"//topo%links(i)%name, k)
+    end do
+    allocate (none(2, nl))
+    none = 0.0_wp
+    call solve_fields(topo, drawing, table, k, omega, eps, .false., none, v0, plans%velocity_residual)
+    call solve_fields(topo, drawing, table, k, omega, eps, .true., v0, a0, plans%acceleration_residual)
+    call point_images(topo, drawing, omega, eps, v0, .false., plans%velocities)
+    call point_images(topo, drawing, omega, eps, a0, .true., plans%accelerations)
+    block
+      character(len=:), allocatable :: driver
+      driver = ""
+      if (allocated(table%driver)) driver = table%driver
+      call polygons_of(topo, drawing, driver, plans%polygons)
+    end block
+    call lever_of(topo, drawing, table, k, omega, v0, plans)
+  end subroutine build_plans
+
+  !> Field of link `i` at point p: velocity v0 + omega x p, or acceleration
+  !> a0 + eps x p - omega^2 p.
+  pure function field(c, om, ep, p, accel) result(f)
+    real(wp), intent(in) :: c(2), om, ep, p(2)
+    logical, intent(in) :: accel
+    real(wp) :: f(2)
+    if (accel) then
+      f = c + ep * [-p(2), p(1)] - om**2 * p
+    else
+      f = c + om * [-p(2), p(1)]
+    end if
+  end function field
+
+  !> Index of the link named `name` in the topology (0 if none).
+  pure integer function link_index(topo, name)
+    type(sketch_t), intent(in) :: topo
+    character(*), intent(in) :: name
+    integer :: i
+    link_index = 0
+    do i = 1, size(topo%links)
+      if (topo%links(i)%name == name) link_index = i
+    end do
+  end function link_index
+
+  !> Whether link i lists point `p` (its own points, and its centre of mass S<name>).
+  pure logical function lists(topo, i, p)
+    type(sketch_t), intent(in) :: topo
+    integer, intent(in) :: i
+    character(*), intent(in) :: p
+    lists = any(topo%links(i)%points == p) .or. p == "S"//topo%links(i)%name
+  end function lists
+
+  !> Whether point `p` of link i is a sliding contact (a guide of link i passes through p and
+  !> another link lists p: the block sliding there) rather than a point of the link.
+  pure logical function sliding_on(topo, i, p)
+    type(sketch_t), intent(in) :: topo
+    integer, intent(in) :: i
+    character(*), intent(in) :: p
+    integer :: j
+    sliding_on = .false.
+    if (.not. any([(j /= i .and. lists(topo, j, p), j=1, size(topo%links))])) return
+    if (allocated(topo%guides)) then
+      do j = 1, size(topo%guides)
+        if (topo%guides(j)%point == p .and. allocated(topo%guides(j)%on)) then
+          if (topo%guides(j)%on == topo%links(i)%name) sliding_on = .true.
+        end if
+      end do
+    end if
+  end function sliding_on
+
+  !> The link carrying the guide link `m` slides on (0 if none): a guide through one of m's
+  !> points, or through a point on the line of which m turns with the guide's link.
+  pure integer function guide_link(topo, m)
+    type(sketch_t), intent(in) :: topo
+    integer, intent(in) :: m
+    integer :: j, g
+    guide_link = 0
+    if (m == 0 .or. .not. allocated(topo%guides)) return
+    do j = 1, size(topo%guides)
+      if (.not. allocated(topo%guides(j)%on)) cycle
+      g = link_index(topo, topo%guides(j)%on)
+      if (g == 0 .or. g == m) cycle
+      guide_link = g
+      if (lists(topo, m, trim(topo%guides(j)%point))) return
+    end do
+  end function guide_link
+
+  !> Solve the links' unknown terms (v0 or a0) from the pair equations, least squares.
+  pure subroutine solve_fields(topo, drawing, table, k, omega, eps, accel, v0, c, residual)
+    type(sketch_t), intent(in) :: topo
+    type(drawing_t), intent(in) :: drawing
+    type(step_table_t), intent(in) :: table
+    integer, intent(in) :: k
+    real(wp), intent(in) :: omega(:), eps(:)
+    logical, intent(in) :: accel
+    !> The velocity solution (used for the Coriolis terms when accel).
+    real(wp), intent(in) :: v0(:, :)
+    real(wp), allocatable, intent(out) :: c(:, :)
+    real(wp), intent(out) :: residual
+    real(wp), allocatable :: a(:, :), b(:), x(:)
+    integer :: nl, i, j, m, g, ip
+    real(wp) :: p(2), u(2), ang
+    character(len=16) :: pname
+    nl = size(topo%links)
+    allocate (a(0, 2 * nl), b(0))
+    do ip = 1, size(drawing%points)
+      pname = drawing%points(ip)%name
+      p = drawing%points(ip)%p
+      do i = 1, nl
+        if (.not. lists(topo, i, trim(pname))) cycle
+        if (sliding_on(topo, i, trim(pname))) cycle
+        ! a pivot: at rest
+        if (allocated(topo%pivots)) then
+          if (any(topo%pivots == pname)) call append_rows(a, b, joint_rows(i, 0, [1.0_wp, 0.0_wp, 0.0_wp, 1.0_wp]), -own(i, p))
+        end if
+        ! a joint with every later link listing the point
+        do j = i + 1, nl
+          if (.not. lists(topo, j, trim(pname))) cycle
+          if (sliding_on(topo, j, trim(pname))) cycle
+          call append_rows(a, b, joint_rows(i, j, [1.0_wp, 0.0_wp, 0.0_wp, 1.0_wp]), own(j, p) - own(i, p))
+        end do
+      end do
+      ! centres of mass with given accelerations
+      if (accel .and. pname(1:1) == "S") then
+        i = link_index(topo, trim(pname(2:)))
+        if (i > 0 .and. table%column_index("ax_"//trim(pname)) > 0) then
+          call append_rows(a, b, joint_rows(i, 0, [1.0_wp, 0.0_wp, 0.0_wp, 1.0_wp]), [column_value(table, "ax_"//trim(pname), k), &
+            column_value(table, "ay_"//trim(pname), k)] - own(i, p))
+        end if
+      end if
+    end do
+    ! sliders: guides (on a link, or on the frame) and blocks sliding along a link
+    if (allocated(topo%guides)) then
+      do j = 1, size(topo%guides)
+        associate (gd => topo%guides(j))
+          ip = drawing%point_index(trim(gd%point))
+          if (ip == 0) cycle
+          p = drawing%points(ip)%p
+          g = 0
+          if (allocated(gd%on)) g = link_index(topo, gd%on)
+          ang = gd%angle * deg_to_rad
+          if (g > 0) ang = ang + column_value(table, "phi"//topo%links(g)%name, k) * deg_to_rad
+          u = [cos(ang), sin(ang)]
+          do m = 1, nl
+            if (m == g) cycle
+            if (lists(topo, m, trim(gd%point))) then
+              call append_slide(a, b, slide_row(m, g, p, u))
+            else if (g > 0 .and. .not. listed_by_any(trim(gd%point), g)) then
+              ! a rod in a cylinder: the link turning with the guide's link that has a point on its line
+              if (omega(m) /= omega(g)) cycle
+              do i = 1, size(topo%links(m)%points)
+                if (drawing%point_index(trim(topo%links(m)%points(i))) == 0) cycle
+                if (abs(cross(drawing%at(trim(topo%links(m)%points(i))) - p, u)) <= 1.0e-9_wp * (1.0_wp + &
+                  norm2(drawing%at(trim(topo%links(m)%points(i))) - p))) then
+                  call append_slide(a, b, slide_row(m, g, drawing%at(trim(topo%links(m)%points(i))), u))
+                  exit
+                end if
+              end do
+            end if
+          end do
+        end associate
+      end do
+    end if
+    do m = 1, nl
+      associate (l => topo%links(m))
+        if (.not. l%block .or. .not. allocated(l%along)) cycle
+        g = link_index(topo, l%along)
+        if (g == 0) cycle
+        ip = drawing%point_index(trim(l%points(1)))
+        if (ip == 0) cycle
+        ang = (l%angle + column_value(table, "phi"//l%along, k)) * deg_to_rad
+        call append_slide(a, b, slide_row(m, g, drawing%points(ip)%p, [cos(ang), sin(ang)]))
+      end associate
+    end do
+    ! least squares: the normal equations, a link without an equation stays at rest
+    call least_squares(a, b, x)
+    allocate (c(2, nl))
+    c = reshape(x, [2, nl])
+    residual = 0.0_wp
+    if (size(b) > 0) residual = maxval(abs(matmul(a, x) - b))
+  contains
+    !> The link's own part of its field at p (without the unknown term).
+    pure function own(i, p) result(f)
+      integer, intent(in) :: i
+      real(wp), intent(in) :: p(2)
+      real(wp) :: f(2)
+      f = field([0.0_wp, 0.0_wp], omega(i), eps(i), p, accel)
+    end function own
+    !> Whether some link other than g lists the point.
+    pure logical function listed_by_any(name, g)
+      character(*), intent(in) :: name
+      integer, intent(in) :: g
+      integer :: q
+      listed_by_any = .false.
+      do q = 1, nl
+        if (q /= g .and. lists(topo, q, name)) listed_by_any = .true.
+      end do
+    end function listed_by_any
+    !> Rows c_i - c_j = rhs (j = 0: c_i = rhs) with the 2x2 coefficient block `blk` (column-major).
+    pure function joint_rows(i, j, blk) result(rows)
+      integer, intent(in) :: i, j
+      real(wp), intent(in) :: blk(4)
+      real(wp) :: rows(2, 2 * nl)
+      rows = 0.0_wp
+      rows(:, 2 * i - 1:2 * i) = reshape(blk, [2, 2])
+      if (j > 0) rows(:, 2 * j - 1:2 * j) = -reshape(blk, [2, 2])
+    end function joint_rows
+    !> Link m slides along u on link g (0: the frame) at p: (f_m(p) - f_g(p) - cor) x u = 0,
+    !> cor = 2 omega_g x v_rel the Coriolis acceleration (0 on the velocity plan), so
+    !> c_m x u - c_g x u = (own_g - own_m + cor) x u: the row and its right-hand side.
+    pure function slide_row(m, g, p, u) result(row_rhs)
+      integer, intent(in) :: m, g
+      real(wp), intent(in) :: p(2), u(2)
+      real(wp) :: row_rhs(2 * nl + 1), vrel(2), cor(2)
+      row_rhs = 0.0_wp
+      row_rhs(2 * m - 1:2 * m) = [u(2), -u(1)]
+      cor = 0.0_wp
+      if (g > 0) then
+        row_rhs(2 * g - 1:2 * g) = [-u(2), u(1)]
+        if (accel) then
+          vrel = field(v0(:, m), omega(m), 0.0_wp, p, .false.) - field(v0(:, g), omega(g), 0.0_wp, p, .false.)
+          cor = 2.0_wp * omega(g) * [-vrel(2), vrel(1)]
+        end if
+        row_rhs(2 * nl + 1) = cross(own(g, p) - own(m, p) + cor, u)
+      else
+        row_rhs(2 * nl + 1) = cross(-own(m, p), u)
+      end if
+    end function slide_row
+  end subroutine solve_fields
+
+  !> Append one slider's row (coefficients, then the right-hand side) to a x = b.
+  pure subroutine append_slide(a, b, row_rhs)
+    real(wp), allocatable, intent(inout) :: a(:, :), b(:)
+    real(wp), intent(in) :: row_rhs(:)
+    call append_rows(a, b, reshape(row_rhs(1:size(row_rhs) - 1), [1, size(row_rhs) - 1]), row_rhs(size(row_rhs):))
+  end subroutine append_slide
+
+  !> Append the rows (and their right-hand sides) to the system a x = b.
+  pure subroutine append_rows(a, b, rows, rhs)
+    real(wp), allocatable, intent(inout) :: a(:, :), b(:)
+    real(wp), intent(in) :: rows(:, :), rhs(:)
+    real(wp), allocatable :: grown(:, :)
+    allocate (grown(size(a, 1) + size(rows, 1), size(a, 2)))
+    grown(1:size(a, 1), :) = a
+    grown(size(a, 1) + 1:, :) = rows
+    call move_alloc(grown, a)
+    b = [b, rhs]
+  end subroutine append_rows
+
+  !> z component of a x b.
+  pure real(wp) function cross(a, b)
+    real(wp), intent(in) :: a(2), b(2)
+    cross = a(1) * b(2) - a(2) * b(1)
+  end function cross
+
+  !> Least-squares solution of a x = b through the normal equations (Gauss-Jordan with
+  !> partial pivoting); an unknown without an equation is 0.
+  pure subroutine least_squares(a, b, x)
+    real(wp), intent(in) :: a(:, :), b(:)
+    real(wp), allocatable, intent(out) :: x(:)
+    real(wp), allocatable :: n(:, :), r(:), row(:)
+    real(wp) :: t, scale
+    integer :: i, j, p, m
+    m = size(a, 2)
+    n = matmul(transpose(a), a)
+    r = matmul(transpose(a), b)
+    scale = max(1.0_wp, maxval(abs(n)))
+    allocate (x(m))
+    x = 0.0_wp
+    do i = 1, m
+      p = i - 1 + maxloc(abs(n(i:, i)), 1)
+      if (abs(n(p, i)) <= 1.0e-12_wp * scale) cycle
+      if (p /= i) then
+        row = n(i, :)
+        n(i, :) = n(p, :)
+        n(p, :) = row
+        t = r(i)
+        r(i) = r(p)
+        r(p) = t
+      end if
+      t = n(i, i)
+      n(i, :) = n(i, :) / t
+      r(i) = r(i) / t
+      do j = 1, m
+        if (j == i .or. n(j, i) == 0.0_wp) cycle
+        t = n(j, i)
+        n(j, :) = n(j, :) - t * n(i, :)
+        r(j) = r(j) - t * r(i)
+      end do
+    end do
+    do i = 1, m
+      if (abs(n(i, i) - 1.0_wp) <= 1.0e-9_wp) x(i) = r(i)
+    end do
+  end subroutine least_squares
+
+  !> The image of every named point on a plan: the field of a link listing it (not as a
+  !> sliding contact); points no link lists are left out.
+  pure subroutine point_images(topo, drawing, omega, eps, c, accel, images)
+    type(sketch_t), intent(in) :: topo
+    type(drawing_t), intent(in) :: drawing
+    real(wp), intent(in) :: omega(:), eps(:), c(:, :)
+    logical, intent(in) :: accel
+    type(plan_vector_t), allocatable, intent(out) :: images(:)
+    integer :: ip, i
+    allocate (images(0))
+    do ip = 1, size(drawing%points)
+      do i = 1, size(topo%links)
+        if (.not. lists(topo, i, trim(drawing%points(ip)%name))) cycle
+        if (sliding_on(topo, i, trim(drawing%points(ip)%name))) cycle
+        images = [images, plan_vector_t(drawing%points(ip)%name, &
+          field(c(:, i), omega(i), eps(i), drawing%points(ip)%p, accel))]
+        exit
+      end do
+    end do
+  end subroutine point_images
+
+  !> The link a force or moment belongs to: its own `link`, or the number in its name
+  !> (G3, Phi3, MPhi3: link 3; F21: link 2, the pair force on 2 from 1).
+  pure function owner(name, link) result(l)
+    character(*), intent(in) :: name, link
+    character(len=:), allocatable :: l
+    l = trim(link)
+    if (len(l) > 0) return
+    if (name(1:1) == "G" .and. len_trim(name) > 1) then
+      l = trim(name(2:))
+    else if (index(name, "MPhi") == 1) then
+      l = trim(name(5:))
+    else if (index(name, "Phi") == 1) then
+      l = trim(name(4:))
+    else if (name(1:1) == "F" .and. len_trim(name) == 3 .and. verify(name(2:3), "0123456789") == 0) then
+      l = name(2:2)
+    end if
+  end function owner
+
+  !> The force polygon of every link: its loads (weight, inertia force, external loads), then
+  !> the pair forces on it (F<L><j> as written, F<j><L> reversed).
+  pure subroutine polygons_of(topo, drawing, driver, polygons)
+    type(sketch_t), intent(in) :: topo
+    type(drawing_t), intent(in) :: drawing
+    !> The table's driving effort (a force whose reaction acts on the guide's link).
+    character(*), intent(in) :: driver
+    type(force_polygon_t), allocatable, intent(out) :: polygons(:)
+    type(force_polygon_t) :: poly
+    integer :: i, j, pass
+    real(wp) :: largest
+    logical :: mine, take
+    allocate (polygons(0))
+    if (.not. allocated(drawing%forces)) return
+    do i = 1, size(topo%links)
+      poly%link = topo%links(i)%name
+      allocate (poly%vectors(0))
+      do pass = 1, 4
+        do j = 1, size(drawing%forces)
+          associate (f => drawing%forces(j))
+            mine = owner(f%name, f%on_link) == poly%link
+            select case (pass)
+            case (1)
+              take = f%name(1:1) == "G" .and. mine
+            case (2)
+              take = f%name(1:3) == "Phi" .and. mine
+            case (3)
+              take = f%kind /= force_pair .and. f%name(1:1) /= "G" .and. f%name(1:3) /= "Phi" .and. mine
+            case default
+              take = .false.
+            end select
+            if (take) poly%vectors = [poly%vectors, plan_vector_t(f%name, f%f)]
+            ! a load between a slider and its guide's link (an actuator): its reaction on the guide's link
+            if (pass == 3 .and. f%kind /= force_pair .and. len_trim(f%on_link) > 0) then
+              if (guide_link(topo, link_index(topo, trim(f%on_link))) == i .and. trim(f%name) == trim(driver)) then
+                poly%vectors = [poly%vectors, plan_vector_t("-"//f%name, -f%f)]
+              end if
+            end if
+            if (pass == 4 .and. f%kind == force_pair) then
+              if (owner(f%name, f%on_link) == poly%link) then
+                poly%vectors = [poly%vectors, plan_vector_t(f%name, f%f)]
+              else if (len_trim(f%name) == 3 .and. f%name(3:3) == trim(poly%link)) then
+                poly%vectors = [poly%vectors, plan_vector_t("F"//f%name(3:3)//f%name(2:2), -f%f)]
+              end if
+            end if
+          end associate
+        end do
+      end do
+      if (size(poly%vectors) > 0) then
+        largest = 0.0_wp
+        do j = 1, size(poly%vectors)
+          largest = max(largest, norm2(poly%vectors(j)%v))
+        end do
+        poly%closure = 0.0_wp
+        if (largest > 0.0_wp) poly%closure = norm2([sum(poly%vectors%v(1)), sum(poly%vectors%v(2))]) / largest
+        polygons = [polygons, poly]
+      end if
+      deallocate (poly%vectors)
+    end do
+  end subroutine polygons_of
+
+  !> Zhukovsky's lever: the power of every load but the driving moment, over the driver's
+  !> angular velocity (the balancing moment); pair forces do no work without friction.
+  pure subroutine lever_of(topo, drawing, table, k, omega, v0, plans)
+    type(sketch_t), intent(in) :: topo
+    type(drawing_t), intent(in) :: drawing
+    type(step_table_t), intent(in) :: table
+    integer, intent(in) :: k
+    real(wp), intent(in) :: omega(:), v0(:, :)
+    type(plans_t), intent(inout) :: plans
+    real(wp) :: power, rate
+    integer :: j, l, d, g
+    plans%driver = ""
+    if (allocated(table%driver)) plans%driver = table%driver
+    plans%lever_known = .false.
+    plans%lever_note = ""
+    if (table%column_index(plans%driver) == 0) then
+      plans%lever_note = "no driver column"
+      return
+    end if
+    plans%run = column_value(table, plans%driver, k)
+    d = 0
+    if (allocated(drawing%moments)) then
+      do j = 1, size(drawing%moments)
+        if (drawing%moments(j)%name == plans%driver) d = link_index(topo, owner_of_moment(j))
+      end do
+    end if
+    ! or a force between a slider and its guide's link (a hydraulic cylinder): its power is
+    ! F . (v_slider - v_guide), the same at every point of the slider
+    rate = 0.0_wp
+    if (d == 0 .and. allocated(drawing%forces)) then
+      do j = 1, size(drawing%forces)
+        associate (f => drawing%forces(j))
+          if (f%name /= plans%driver .or. plans%run == 0.0_wp) cycle
+          l = link_index(topo, owner(f%name, f%on_link))
+          g = guide_link(topo, l)
+          if (l == 0 .or. g == 0) cycle
+          rate = dot_product(f%f / plans%run, field(v0(:, l), omega(l), 0.0_wp, f%at, .false.) - &
+            field(v0(:, g), omega(g), 0.0_wp, f%at, .false.))
+        end associate
+      end do
+      if (rate == 0.0_wp) then
+        plans%lever_note = "the driver is neither a moment on a link nor a force on a slider of the drawing"
+        return
+      end if
+    else if (d == 0) then
+      plans%lever_note = "the driver is not a moment on a link of the drawing"
+      return
+    else
+      rate = omega(d)
+    end if
+    if (rate == 0.0_wp) then
+      plans%lever_note = "the driving link is at rest"
+      return
+    end if
+    power = 0.0_wp
+    allocate (plans%lever_forces(0), plans%lever_images(0))
+    plans%lever_rate = rate
+    if (allocated(drawing%forces)) then
+      do j = 1, size(drawing%forces)
+        associate (f => drawing%forces(j))
+          if (f%kind == force_pair .or. f%name == plans%driver) cycle
+          l = link_index(topo, owner(f%name, f%on_link))
+          if (l == 0) then
+            plans%lever_note = "force "//trim(f%name)//" belongs to no known link"
+            return
+          end if
+          power = power + dot_product(f%f, field(v0(:, l), omega(l), 0.0_wp, f%at, .false.))
+          plans%lever_forces = [plans%lever_forces, plan_vector_t(f%name, f%f)]
+          plans%lever_images = [plans%lever_images, plan_vector_t(f%name, field(v0(:, l), omega(l), 0.0_wp, f%at, &
+            .false.))]
+        end associate
+      end do
+    end if
+    do j = 1, size(drawing%moments)
+      if (drawing%moments(j)%name == plans%driver) cycle
+      l = link_index(topo, owner_of_moment(j))
+      if (l == 0) then
+        plans%lever_note = "moment "//trim(drawing%moments(j)%name)//" belongs to no known link"
+        return
+      end if
+      power = power + drawing%moments(j)%value * omega(l)
+    end do
+    plans%effort = -power / rate
+    plans%lever_known = .true.
+  contains
+    pure function owner_of_moment(j) result(o)
+      integer, intent(in) :: j
+      character(len=:), allocatable :: o
+      o = owner(drawing%moments(j)%name, drawing%moments(j)%on_link)
+      if (len(o) == 0 .and. drawing%moments(j)%name(1:1) == "M" .and. &
+        verify(trim(drawing%moments(j)%name(2:)), "0123456789") == 0) o = trim(drawing%moments(j)%name(2:))
+    end function owner_of_moment
+  end subroutine lever_of
+
+  !> The plans as one JSON object (`--format json --at K --plans`).
+  pure subroutine write_plans_json(plans, table, k, out)
+    type(plans_t), intent(in) :: plans
+    type(step_table_t), intent(in) :: table
+    integer, intent(in) :: k
+    type(text_buffer_t), intent(inout) :: out
+    integer :: i, j
+    character(len=:), allocatable :: line
+    call out%put("{")
+    call out%put('  "deck": "'//table%deck//'",')
+    call out%put('  "step": '//int_str(k)//',')
+    if (table%input_column > 0) call out%put('  "'//table%columns(table%input_column)%name//'": '// &
+      full_number(table%rows(table%input_column, k))//',')
+    call put_vectors(out, "velocity_plan", plans%velocities, "m/s")
+    call out%put('  "velocity_residual": '//full_number(plans%velocity_residual)//',')
+    call put_vectors(out, "acceleration_plan", plans%accelerations, "m/s^2")
+    call out%put('  "acceleration_residual": '//full_number(plans%acceleration_residual)//',')
+    call out%put('  "force_plans": [')
+    do i = 1, size(plans%polygons)
+      line = '    {"link": "'//trim(plans%polygons(i)%link)//'", "closure": '//full_number(plans%polygons(i)%closure)// &
+        ', "vectors": ['
+      do j = 1, size(plans%polygons(i)%vectors)
+        if (j > 1) line = line//", "
+        line = line//vector_json(plans%polygons(i)%vectors(j))
+      end do
+      line = line//"]}"
+      if (i < size(plans%polygons)) line = line//","
+      call out%put(line)
+    end do
+    call out%put("  ],")
+    if (plans%lever_known) then
+      call out%put('  "zhukovsky": {"driver": "'//plans%driver//'", "effort": '//full_number(plans%effort)// &
+        ', "run": '//full_number(plans%run)//'}')
+    else
+      call out%put('  "zhukovsky": {"driver": "'//plans%driver//'", "effort": null, "run": '//full_number(plans%run)// &
+        ', "note": "'//plans%lever_note//'"}')
+    end if
+    call out%put("}")
+  end subroutine write_plans_json
+
+  !> "key": {"unit": ..., "points": [vectors]}, as one member of the plans object.
+  pure subroutine put_vectors(out, key, vectors, unit)
+    type(text_buffer_t), intent(inout) :: out
+    character(*), intent(in) :: key, unit
+    type(plan_vector_t), intent(in) :: vectors(:)
+    integer :: q
+    call out%put('  "'//key//'": {"unit": "'//unit//'", "points": [')
+    do q = 1, size(vectors)
+      if (q < size(vectors)) then
+        call out%put("    "//vector_json(vectors(q))//",")
+      else
+        call out%put("    "//vector_json(vectors(q)))
+      end if
+    end do
+    call out%put("  ]},")
+  end subroutine put_vectors
+
+  !> {"name": ..., "x": ..., "y": ...}.
+  pure function vector_json(v) result(text)
+    type(plan_vector_t), intent(in) :: v
+    character(len=:), allocatable :: text
+    text = '{"name": "'//trim(v%name)//'", "x": '//full_number(v%v(1))//', "y": '//full_number(v%v(2))//"}"
+  end function vector_json
+
+  !> Value of column `name` at row `k` (0 when the table has no such column).
+  pure real(wp) function column_value(table, name, k)
+    type(step_table_t), intent(in) :: table
+    character(*), intent(in) :: name
+    integer, intent(in) :: k
+    integer :: c
+    column_value = 0.0_wp
+    c = table%column_index(name)
+    if (c > 0) column_value = table%rows(c, k)
+  end function column_value
+
+end module kinetostat_plans

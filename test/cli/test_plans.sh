@@ -1,0 +1,74 @@
+# The graphical method as numbers (--format json --at K --plans): on every bundled linkage deck
+# at three steps, the plans' equations hold, the acceleration images of the centres of mass
+# equal the kinematics columns, every force polygon closes (<= 1e-9 of its largest vector)
+# with the CSV's pair forces in it, and Zhukovsky's lever equals the run's driving effort
+# (relative 1e-9) - tools/plans_check.py; the checks can fail; usage errors.
+plans_check="$root/tools/plans_check.py"
+plans_dir="$cli_tmp/plans"
+mkdir -p "$plans_dir"
+
+# DECK:CHECKS - lever and polygons where the table lists every pair force; the legacy PR 3207
+# and PR 3050 tables leave out their massless blocks' and the rod-in-cylinder reactions (no
+# closed polygon to draw), the generic PR 3050 deck draws no driving force, and friction
+# does work in the pairs (the lever of the loads alone is not the driving moment there).
+for spec in assur_fourbar:lever,polygons assur_fourbar_global:lever,polygons assur_sixbar:lever,polygons \
+  assur_sixbar_global:lever,polygons assur_slider_crank:lever,polygons assur_pr3207:lever,polygons \
+  sixbar:lever,polygons sixbar_example:lever,polygons pr3207:lever pr3050:lever assur_pr3050: \
+  assur_pr3050_friction: assur_pr3207_friction: assur_sixbar_friction: friction_slider_crank:; do
+  name=${spec%%:*}; checks=${spec#*:}
+  flags=""
+  case ",$checks," in *,lever,*) flags="$flags --lever" ;; esac
+  case ",$checks," in *,polygons,*) flags="$flags --polygons" ;; esac
+  run_ks "data/$name.nml" --format csv --kinematics
+  cp "$out" "$plans_dir/$name.csv"
+  steps=$(($(wc -l <"$out") - 1))
+  ks="1 $(((steps + 1) / 2)) $steps"
+  # PR 3050 starts and stops at rest: no velocity plan there (the lever needs one)
+  case "$name" in pr3050|assur_pr3050*) ks="2 $(((steps + 1) / 2)) $((steps - 1))" ;; esac
+  for k in $ks; do
+    run_ks "data/$name.nml" --format json --at "$k" --plans
+    if [ "$rc" -ne 0 ]; then fail "plans-runs-$name-$k" "rc=$rc: $(head -c 300 "$err")"; continue; fi
+    cp "$out" "$plans_dir/$name.$k.json"
+    # shellcheck disable=SC2086  # flags is a word list
+    python3 "$plans_check" "$plans_dir/$name.$k.json" "$plans_dir/$name.csv" $flags >"$cli_tmp/check.out" 2>&1 \
+      && pass || fail "plans-$name-$k" "$(head -20 "$cli_tmp/check.out")"
+  done
+done
+
+# the checks can fail: a lever off by one part in 1e6, a polygon vector moved
+python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); d["zhukovsky"]["effort"] *= 1 + 1e-6; print(json.dumps(d))' \
+  "$plans_dir/sixbar.1.json" >"$cli_tmp/bad_lever.json"
+python3 "$plans_check" "$cli_tmp/bad_lever.json" "$plans_dir/sixbar.csv" --lever >/dev/null 2>&1 \
+  && fail plans-lever-can-fail "a wrong lever was accepted" || pass
+sed -E 's/("name": "F21", "x": )-?([0-9])/\1\21/' "$plans_dir/sixbar.1.json" >"$cli_tmp/bad_polygon.json"
+if cmp -s "$cli_tmp/bad_polygon.json" "$plans_dir/sixbar.1.json"; then
+  fail plans-polygon-can-fail "the perturbation did not change the plans"
+elif python3 "$plans_check" "$cli_tmp/bad_polygon.json" "$plans_dir/sixbar.csv" --polygons >/dev/null 2>&1; then
+  fail plans-polygon-can-fail "a changed pair force was accepted"
+else pass; fi
+
+# the manual's worked example (T.FTN, phi1 = 66.8 deg): the lever gives M1 = 902.0 N*m
+grep -q '"zhukovsky": {"driver": "M1", "effort": 9.0203548' "$plans_dir/sixbar_example.1.json" \
+  && pass || fail plans-worked-example "$(grep zhukovsky "$plans_dir/sixbar_example.1.json")"
+
+# usage: --plans needs --format json and --at; not for gears or cams
+expect_exit plans-needs-at 1 data/sixbar.nml --format json --plans
+expect_exit plans-needs-json 1 data/sixbar.nml --format svg --at 1 --plans
+expect_exit plans-at-needs-plans 1 data/sixbar.nml --format json --at 1
+expect_exit plans-not-gears 1 data/gears_reducer.nml --format json --at 1 --plans
+expect_exit plans-sheet-needs-at 1 data/sixbar.nml --format plans
+
+# the plans sheet: well-formed, self-contained, renders; its lever line is the JSON's
+run_ks data/sixbar_example.nml --format plans --at 1
+cp "$out" "$plans_dir/sixbar_example.plans.svg"
+xmllint --noout "$plans_dir/sixbar_example.plans.svg" 2>"$cli_tmp/xmllint.err" && pass \
+  || fail plans-sheet-xmllint "$(head -5 "$cli_tmp/xmllint.err")"
+python3 "$root/tools/svg_check.py" self-contained "$plans_dir/sixbar_example.plans.svg" >"$cli_tmp/check.out" 2>&1 \
+  && pass || fail plans-sheet-self-contained "$(cat "$cli_tmp/check.out")"
+if rsvg-convert -o "$plans_dir/plans.png" "$plans_dir/sixbar_example.plans.svg" 2>/dev/null; then
+  python3 "$root/tools/svg_check.py" png "$plans_dir/plans.png" "$plans_dir/sixbar_example.plans.svg" \
+    >"$cli_tmp/check.out" 2>&1 && pass || fail plans-sheet-png "$(cat "$cli_tmp/check.out")"
+else fail plans-sheet-render "rsvg-convert failed"; fi
+grep -q '>balancing effort from the lever: M1 = 902 N\*m<' "$plans_dir/sixbar_example.plans.svg" \
+  && grep -q '>analytic value of the step: M1 = 902 N\*m<' "$plans_dir/sixbar_example.plans.svg" \
+  && pass || fail plans-sheet-lever "$(grep -o '>[^<]*M1 = [^<]*<' "$plans_dir/sixbar_example.plans.svg")"

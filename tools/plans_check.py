@@ -1,0 +1,82 @@
+#!/usr/bin/env python3
+"""Checks of kinetostat's plans (--format json --at K --plans; standard library only).
+
+  plans_check.py PLANS.json RUN.csv [--lever] [--polygons]
+      RUN.csv is the same deck's `--format csv --kinematics`. Checks, each printing expected
+      vs computed on failure:
+      - the plans' equations hold: velocity_residual <= 1e-9 x (1 + largest velocity image),
+        acceleration_residual <= 1e-9 x (1 + largest acceleration image);
+      - every centre of mass S<i> on the acceleration plan equals the CSV's ax_S<i>, ay_S<i>
+        at that step (relative 1e-9 of the largest image, absolute 1e-9 m/s^2);
+      - with --polygons: every force polygon closes (closure <= 1e-9 of its largest vector),
+        and every pair force in a polygon (or its reaction F<j><i>) has the magnitude of the
+        CSV's <F>_x, <F>_y components (relative 1e-9 of the polygon's largest vector);
+      - with --lever: Zhukovsky's lever equals the run's driving moment (relative 1e-9,
+        absolute 1e-9 N*m).
+Exit status 0 when every check passes, 1 otherwise.
+"""
+import csv
+import json
+import math
+import sys
+
+
+def main():
+    args = [a for a in sys.argv[1:] if not a.startswith("--")]
+    flags = {a for a in sys.argv[1:] if a.startswith("--")}
+    if len(args) != 2:
+        print(__doc__)
+        sys.exit(1)
+    plans = json.load(open(args[0]))
+    rows = list(csv.reader(open(args[1], newline="")))
+    header, row = rows[0], rows[plans["step"]]
+    col = {name: float(row[i]) for i, name in enumerate(header)}
+    bad = []
+
+    def largest(plan):
+        return max([math.hypot(p["x"], p["y"]) for p in plan["points"]] or [0.0])
+
+    vmax, amax = largest(plans["velocity_plan"]), largest(plans["acceleration_plan"])
+    if plans["velocity_residual"] > 1e-9 * (1 + vmax):
+        bad.append(f"velocity equations: residual {plans['velocity_residual']:.3e} m/s (largest image {vmax:.3e})")
+    if plans["acceleration_residual"] > 1e-9 * (1 + amax):
+        bad.append(f"acceleration equations: residual {plans['acceleration_residual']:.3e} m/s^2 "
+                   f"(largest image {amax:.3e})")
+    for p in plans["acceleration_plan"]["points"]:
+        name = p["name"]
+        if "ax_" + name in col:
+            expected = (col["ax_" + name], col["ay_" + name])
+            if math.hypot(p["x"] - expected[0], p["y"] - expected[1]) > 1e-9 * amax + 1e-9:
+                bad.append(f"acceleration of {name}: expected {expected}, plan ({p['x']}, {p['y']})")
+    if "--polygons" in flags:
+        for poly in plans["force_plans"]:
+            if poly["closure"] > 1e-9:
+                bad.append(f"force polygon of link {poly['link']} does not close: {poly['closure']:.3e} of its "
+                           f"largest vector ({[v['name'] for v in poly['vectors']]})")
+            big = max([math.hypot(v["x"], v["y"]) for v in poly["vectors"]] or [0.0])
+            for v in poly["vectors"]:
+                name = v["name"]
+                if name + "_x" not in col and len(name) == 3 and name[0] == "F":
+                    name = "F" + name[2] + name[1]
+                if name + "_x" not in col:
+                    continue
+                # the components' frame (the angle column's) may differ from the position
+                # frame: compare magnitudes
+                f = math.hypot(col[name + "_x"], col[name + "_y"])
+                mag = math.hypot(v["x"], v["y"])
+                if abs(mag - f) > 1e-9 * max(big, 1.0):
+                    bad.append(f"{v['name']} of link {poly['link']}: |F| expected {f!r}, plan {mag!r}")
+    if "--lever" in flags:
+        z = plans["zhukovsky"]
+        if z["effort"] is None:
+            bad.append(f"no lever: {z.get('note', '')}")
+        elif abs(z["effort"] - z["run"]) > 1e-9 * abs(z["run"]) + 1e-9:
+            bad.append(f"Zhukovsky's lever: expected {z['driver']} = {z['run']!r}, lever {z['effort']!r}")
+    if bad:
+        print(f"{args[0]} (step {plans['step']}):")
+        print("\n".join(bad))
+        sys.exit(1)
+
+
+if __name__ == "__main__":
+    main()
