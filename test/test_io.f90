@@ -85,7 +85,11 @@ contains
     ! 123456789.00 takes all 12 characters: it would run into the previous field
     call check_text(t, "fixed_field too wide -> exponent", "  1.2346E+08", fixed_field(123456789.0_wp, 12, 2))
     call check_text(t, "fixed_field 1e300", "  1.00E+300", fixed_field(1.0e300_wp, 11, 2))
-    call check_text(t, "fixed_field -1e-300 rounds", "      -0.00", fixed_field(-1.0e-300_wp, 11, 2))
+    ! a value that rounds to zero prints as 0.00, never -0.00
+    call check_text(t, "fixed_field -1e-300 rounds to 0.00", "       0.00", fixed_field(-1.0e-300_wp, 11, 2))
+    call check_text(t, "fixed_field -0.0049 rounds to 0.00", "       0.00", fixed_field(-0.0049_wp, 11, 2))
+    call check_text(t, "fixed_field -0.0051 is -0.01", "      -0.01", fixed_field(-0.0051_wp, 11, 2))
+    call check_text(t, "fixed_field -4e-14 with 3 decimals", "      0.000", fixed_field(-4.0e-14_wp, 11, 3))
     call check_text(t, "fixed_field -1e300", " -1.00E+300", fixed_field(-1.0e300_wp, 11, 2))
     call check_text(t, "exp_field legacy E", "   0.274E+04", exp_field(2741.19_wp, 12, 3))
     call check_text(t, "exp_field keeps E for 3-digit exponents", "  0.100E+301", exp_field(1.0e300_wp, 12, 3))

@@ -60,7 +60,8 @@ def read_csv(path):
     with open(path, newline="") as f:
         rows = list(csv.reader(f))
     header = rows[0]
-    return {name: [float(r[i]) for r in rows[1:]] for i, name in enumerate(header)}
+    # an empty field is a step without a value (a jammed cam follower), drawn at 0
+    return {name: [float(r[i]) if r[i] != "" else 0.0 for r in rows[1:]] for i, name in enumerate(header)}
 
 
 def path_points(d):
@@ -92,6 +93,9 @@ def check_hodographs(svg_path, csv_path):
         if name not in columns or name + "G" not in columns:
             fail(f"{svg_path}: hodograph {name} has no {name}/{name}G columns in {csv_path}")
         magnitude, angle = columns[name], columns[name + "G"]
+        if p.get("data-thinned") is not None:
+            compared += check_thinned(svg_path, p, name, points, ox, oy, scale, magnitude, angle)
+            continue
         if len(points) != len(magnitude):
             fail(f"{svg_path}: hodograph {name} has {len(points)} points, the CSV {len(magnitude)} steps")
         references = [("magnitude/angle",
@@ -111,6 +115,33 @@ def check_hodographs(svg_path, csv_path):
                     fail(f"{svg_path}: {name} step {k + 1}: expected ({ex[k]:.6g}, {ey[k]:.6g}) N from the CSV's "
                          f"{label}, the path gives ({fx:.6g}, {fy:.6g}) N; error {err:.3g} N > tolerance {tol:.3g} N")
     print(f"{len(paths)} hodographs, {compared} point comparisons, largest error {worst:.4f} mm on the sheet")
+
+
+def check_thinned(svg_path, p, name, points, ox, oy, scale, magnitude, angle):
+    """A long run's hodograph drawn through some of its steps: at most 2000 points, each the
+    force of a step (in step order, within the drawing's rounding), and the largest and
+    smallest x and y components of the whole run among them (the curve keeps its extremes)."""
+    steps, drawn = int(p.get("data-steps")), int(p.get("data-thinned"))
+    if steps != len(magnitude) or drawn != len(points) or drawn > 2000:
+        fail(f"{svg_path}: {name}: {drawn} points drawn ({len(points)} in the path, at most 2000) "
+             f"of {steps} steps ({len(magnitude)} in the CSV)")
+    ex = [m * math.cos(math.radians(a)) for m, a in zip(magnitude, angle)]
+    ey = [m * math.sin(math.radians(a)) for m, a in zip(magnitude, angle)]
+    tol = 0.0051 / scale + 1e-9 * max(map(abs, magnitude))
+    k = 0
+    drawn_f = []
+    for x, y in points:
+        fx, fy = (x - ox) / scale, (oy - y) / scale
+        while k < steps and max(abs(fx - ex[k]), abs(fy - ey[k])) > tol:
+            k += 1
+        if k == steps:
+            fail(f"{svg_path}: {name}: drawn point ({fx:.6g}, {fy:.6g}) N is no step's force (in step order)")
+        drawn_f.append((fx, fy))
+    for label, values, got in (("x", ex, [f[0] for f in drawn_f]), ("y", ey, [f[1] for f in drawn_f])):
+        for what, want, have in (("largest", max(values), max(got)), ("smallest", min(values), min(got))):
+            if abs(want - have) > tol:
+                fail(f"{svg_path}: {name}: {what} {label} component {want:.6g} N of the run, drawn {have:.6g} N")
+    return len(points)
 
 
 def png_pixels(path):

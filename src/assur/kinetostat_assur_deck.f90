@@ -9,7 +9,7 @@ module kinetostat_assur_deck
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use kinetostat_kinds, only: wp, g_default, deg_to_rad, rad_to_deg
   use kinetostat_error, only: error_t
-  use kinetostat_text, only: real_str, int_str, number_str, lower
+  use kinetostat_text, only: real_str, int_str, number_str, lower, upper
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_deck, only: longest_quoted, &
     check_namelist_syntax, write_template_lines, deck_context_t, unset_real, unset_bits, max_deck_array, &
@@ -17,7 +17,8 @@ module kinetostat_assur_deck
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn, &
     is_whole_in, require_whole
   use kinetostat_vec2, only: unit_at, rotate, magnitude, cross
-  use kinetostat_assur_kinematics, only: link_state_t, dyad_pose_t, dyad_geometry_t, kind_names, kind_has_mode, &
+  use kinetostat_assur_kinematics, only: link_state_t, point_state_t, point_on, dyad_pose_t, dyad_geometry_t, kind_names, &
+    kind_has_mode, &
     frame_state, crank_state, dyad_pose, pose_ok, &
     kind_rrr, kind_rrp, kind_rpr, kind_prp, kind_rpp
   use kinetostat_assur_statics, only: pair_is_prismatic
@@ -30,6 +31,7 @@ module kinetostat_assur_deck
   private
   public :: assur_deck_t, read_assur_deck, write_assur_template, assur_window
   public :: load_schedule_t, load_constant, load_window, load_column, load_table
+  public :: resist_none, resist_moment, resist_force
   public :: assur_phi1_deg, assur_omega1_steps, assur_omega1, assur_eps1, assur_motion_sign
   public :: assur_load_value, assur_force_values, assur_moment_values, assur_load_steps, table_value
   public :: max_dyads, max_forces, max_moments
@@ -126,6 +128,9 @@ module kinetostat_assur_deck
     real(wp) :: table(2 * max_table_points) = unset
     !> Id of the link whose position is the table's abscissa (default: output_link).
     real(wp) :: over = unset
+    !> Technological resistance: the value's size, always against the velocity of the
+    !> point `at` along the force's line (zero where that velocity is zero).
+    logical :: resist = .false.
   end type force_in_t
 
   !> An external moment as written in the deck.
@@ -140,6 +145,9 @@ module kinetostat_assur_deck
     real(wp) :: table(2 * max_table_points) = unset
     !> Id of the link whose position is the table's abscissa (default: output_link).
     real(wp) :: over = unset
+    !> Technological resistance: the value's size, always against the link's rotation
+    !> (zero where the link stops).
+    logical :: resist = .false.
   end type moment_in_t
 
   !> Load schedule: the same value at every step.
@@ -150,6 +158,17 @@ module kinetostat_assur_deck
   integer, parameter :: load_column = 3
   !> Load schedule: a table of values over the position of a link.
   integer, parameter :: load_table = 4
+  !> Internal index of the crank (links: 0 frame, 1 crank, then the dyads' links).
+  integer, parameter :: crank_index = 1
+  !> Not a technological resistance: the value is applied as given.
+  integer, parameter :: resist_none = 0
+  !> A moment resisting its link's rotation.
+  integer, parameter :: resist_moment = 1
+  !> A force resisting its point's motion along the force's line.
+  integer, parameter :: resist_force = 2
+  !> A rate (rad/rad, or m/rad relative to the mechanism's size) at or below this counts as
+  !> zero: the link stops, the resistance is zero at that step.
+  real(wp), parameter :: resist_zero_rel = 1.0e-10_wp
 
   !> How a validated load (force magnitude or moment) gets its value at a step; the value
   !> of step k is assur_load_value (no per-step array is stored).
@@ -172,6 +191,17 @@ module kinetostat_assur_deck
     integer :: link = 0
     !> Table: the frame pair measuring that link's stroke (0: its angle).
     integer :: pair = 0
+    !> Technological resistance: resist_none, resist_moment or resist_force (then the
+    !> schedule gives the size and the motion of the loaded link the sign).
+    integer :: resist = resist_none
+    !> Resistance: internal index of the loaded link.
+    integer :: resist_link = 0
+    !> Resisting force: point of application in the link's coordinates, m.
+    real(wp) :: resist_at(2) = 0.0_wp
+    !> Resisting force: direction, rad (global, or relative to the link when follow).
+    real(wp) :: resist_angle = 0.0_wp
+    !> Resisting force: direction turns with the link.
+    logical :: resist_follow = .false.
   end type load_schedule_t
 
   !> A validated `&assur` deck.
@@ -274,6 +304,60 @@ contains
     call write_template_lines(out, template_lines)
   end subroutine write_assur_template
 
+  !> The dyads' kinds by name, as the docs name them: `dyad(i)%kind = RRR` or `'RRR'` (any
+  !> case; RRR RRP RPR PRP RPP) becomes the code 1..5, blank-padded to the same length (the
+  !> columns of every message stay those of the deck). Other text is left as it is.
+  pure subroutine kind_names_as_codes(deck_text)
+    !> The deck (a copy), its records changed in place.
+    type(deck_source_t), intent(inout) :: deck_text
+    integer :: r, at, from, i, j, code, n
+    character(len=:), allocatable :: low
+    associate (records => deck_text%records)
+      do r = 1, size(records)
+        low = lower(records(r))
+        from = 1
+        do
+          at = index(low(from:), "%kind")
+          if (at == 0) exit
+          i = from + at - 1 + len("%kind")
+          from = i
+          i = skip_blanks(low, i)
+          if (i > len(low)) exit
+          if (low(i:i) /= "=") cycle
+          i = skip_blanks(low, i + 1)
+          if (i + 2 > len(low)) exit
+          j = i
+          if (low(i:i) == "'" .or. low(i:i) == '"') j = i + 1
+          if (j + 2 > len(low)) exit
+          code = findloc(kind_names, upper(low(j:j + 2)), dim=1)
+          if (code == 0) cycle
+          n = j + 3 ! just after the name
+          if (j > i) then
+            if (n > len(low)) cycle
+            if (low(n:n) /= low(i:i)) cycle ! the closing quote
+            n = n + 1
+          end if
+          if (n <= len(low)) then
+            if (index(" ,/!"//achar(9), low(n:n)) == 0) cycle ! a longer word
+          end if
+          records(r)(i:n - 1) = repeat(" ", n - i)
+          records(r)(i:i) = achar(iachar("0") + code)
+        end do
+      end do
+    end associate
+  contains
+    !> The first non-blank position at or after i (len + 1 when none).
+    pure integer function skip_blanks(text, i) result(k)
+      character(*), intent(in) :: text
+      integer, intent(in) :: i
+      k = i
+      do while (k <= len(text))
+        if (text(k:k) /= " " .and. text(k:k) /= achar(9)) exit
+        k = k + 1
+      end do
+    end function skip_blanks
+  end subroutine kind_names_as_codes
+
   !> Windowed value at crank angle `phi_deg`: `value` for phi_on <= phi <= phi_off
   !> (absolute degrees, 1e-9 deg tolerance), `idle` elsewhere.
   elemental function assur_window(phi_deg, phi_on, phi_off, value, idle) result(v)
@@ -318,6 +402,8 @@ contains
     !> the READ); at most 80 are kept. Allocated, not automatic: a text of 10^5 characters
     !> and more would overflow the stack.
     character(len=title_length), allocatable :: title
+    !> The deck with the dyads' kind names (RRR, 'RRP', ...) replaced by their codes.
+    type(deck_source_t) :: coded
     !> Integer deck variables, read as reals (see require_whole).
     real(wp) :: frame_id, crank_id, n
     !> Linear actuator as driver: dyad number and pair 1..3 (whole numbers, read as reals).
@@ -381,11 +467,18 @@ contains
 
     call check_namelist_syntax(source, ctx%group, error)
     if (allocated(error)) return
-    read (source%records, nml=assur, iostat=probe%ios, iomsg=probe%msg)
-    do while (probe%retry(source)) ! on failure: find the line and the assignment
+    coded%path = source%path
+    allocate (character(len=len(source%records)) :: coded%records(size(source%records)))
+    coded%records(:) = source%records(:)
+    if (allocated(source%first_record)) coded%first_record = source%first_record
+    if (allocated(source%record_length)) coded%record_length = source%record_length
+    coded%cut_width = source%cut_width
+    call kind_names_as_codes(coded)
+    read (coded%records, nml=assur, iostat=probe%ios, iomsg=probe%msg)
+    do while (probe%retry(coded)) ! on failure: find the line and the assignment
       read (probe%records, nml=assur, iostat=probe%ios, iomsg=probe%msg)
     end do
-    if (probe%failed(source, ctx, error)) return
+    if (probe%failed(coded, ctx, error)) return
 
     call require_rule(ctx, "title", len_trim(title) <= len(deck%title), "longer than "// &
       int_str(len(deck%title))//" characters", error)
@@ -554,6 +647,14 @@ contains
         call read_load(ctx, name, fi%table, fi%over, schedule_in_t(value=fi%value, idle=fi%idle, phi_on=fi%phi_on, &
                        phi_off=fi%phi_off, column=fi%column), ids, deck, n_values, load, error)
         if (allocated(error)) return
+        if (fi%resist) then
+          call resist_size(ctx, name, fi%value, fi%idle, error); if (allocated(error)) return
+          load%resist = resist_force
+          load%resist_link = i
+          load%resist_at = deck%mech%forces(k)%at
+          load%resist_angle = deck%mech%forces(k)%angle
+          load%resist_follow = fi%follow
+        end if
         deck%force_load(k) = load
       end associate
     end do
@@ -565,6 +666,11 @@ contains
         call read_load(ctx, name, mi%table, mi%over, schedule_in_t(value=mi%value, idle=mi%idle, phi_on=mi%phi_on, &
                        phi_off=mi%phi_off, column=mi%column), ids, deck, n_values, load, error)
         if (allocated(error)) return
+        if (mi%resist) then
+          call resist_size(ctx, name, mi%value, mi%idle, error); if (allocated(error)) return
+          load%resist = resist_moment
+          load%resist_link = i
+        end if
         deck%moment_load(k) = load
       end associate
     end do
@@ -1075,7 +1181,51 @@ contains
     case default
       value = load%value
     end select
+    if (load%resist /= resist_none) value = -abs(value) * resist_sense(deck, load, k)
   end function assur_load_value
+
+  !> Motion sense of a technological resistance's link at step k: +1 or -1 as the motion
+  !> analogue (moment: the link's angular rate u; force: the velocity of its point along
+  !> the force's line) times the input's motion sign s, 0 where that analogue is zero
+  !> within roundoff (the link stops) or the step's kinematics fails.
+  pure real(wp) function resist_sense(deck, load, k) result(sense)
+    !> Validated deck.
+    type(assur_deck_t), intent(in) :: deck
+    !> A resisting load.
+    type(load_schedule_t), intent(in) :: load
+    !> Step number, 1..n.
+    integer, intent(in) :: k
+    type(link_state_t) :: states(0:2 * size(deck%mech%dyads) + 1)
+    type(dyad_pose_t) :: poses(size(deck%mech%dyads))
+    type(error_t), allocatable :: kin_error
+    type(point_state_t) :: ps
+    !> Motion analogue (rad/rad or m/rad), its zero tolerance, the force's direction (rad)
+    !> and the mechanism's size (m).
+    real(wp) :: rate, tol, dir, size_m
+    integer :: i
+    sense = 0.0_wp
+    call assur_kinematics(deck%mech, assur_phi1_deg(deck, k) * deg_to_rad, states, poses, kin_error)
+    if (allocated(kin_error)) return
+    associate (st => states(load%resist_link))
+      if (load%resist == resist_moment) then
+        rate = st%u
+        tol = resist_zero_rel
+      else
+        ps = point_on(st, load%resist_at)
+        dir = load%resist_angle
+        if (load%resist_follow) dir = dir + st%th
+        rate = dot_product(ps%v, [cos(dir), sin(dir)])
+        size_m = magnitude(ps%p - deck%mech%pivot)
+        do i = 1, ubound(states, 1)
+          size_m = max(size_m, magnitude(states(i)%o - deck%mech%pivot))
+        end do
+        if (.not. size_m > 0.0_wp) size_m = 1.0_wp
+        tol = resist_zero_rel * size_m
+      end if
+    end associate
+    if (abs(rate) <= tol) return
+    sense = sign(1.0_wp, rate) * assur_motion_sign(assur_omega1(deck, k))
+  end function resist_sense
 
   !> Force magnitudes of step k, N (one per deck%force_load).
   pure function assur_force_values(deck, k) result(values)
@@ -1124,8 +1274,9 @@ contains
   end function assur_load_steps
 
   !> Position of a table load's abscissa link at step k: its angle in deg, taken modulo 360
-  !> into [x1, x1 + 360), or a slider's stroke on its frame guide in m; not ok when the
-  !> step's kinematics fails.
+  !> into [x1, x1 + 360) (the crank's angle modulo 720 into [x1, x1 + 720) when the table
+  !> spans more than 360 deg: a four-stroke cycle), or a slider's stroke on its frame guide
+  !> in m; not ok when the step's kinematics fails.
   pure subroutine table_position(deck, load, k, q, ok)
     !> Validated deck (mechanism and crank angles).
     type(assur_deck_t), intent(in) :: deck
@@ -1147,7 +1298,15 @@ contains
     ok = .not. allocated(kin_error)
     if (.not. ok) return
     call link_position(states, poses, load%link, load%pair, q, dq, ddq)
-    if (load%pair == 0) q = load%x(1) + modulo(q * rad_to_deg - load%x(1), 360.0_wp)
+    if (load%pair /= 0) return
+    associate (x1 => load%x(1), span => load%x(size(load%x)) - load%x(1))
+      if (load%link == crank_index .and. span > 360.0_wp) then
+        ! over the crank's angle, a table longer than a turn: a four-stroke cycle, period 720 deg
+        q = x1 + modulo(assur_phi1_deg(deck, k) - x1, 720.0_wp)
+      else
+        q = x1 + modulo(q * rad_to_deg - x1, 360.0_wp)
+      end if
+    end associate
   end subroutine table_position
 
   !> A table load's value at position q (deg or m; inside the table): linear interpolation.
@@ -1293,6 +1452,22 @@ contains
       end do
     end associate
   end subroutine read_table
+
+  !> A technological resistance's constant size: `value` and `idle` (when given) >= 0 (its
+  !> sign comes from the motion; a table's or column's values are taken by magnitude).
+  subroutine resist_size(ctx, name, value, idle, error)
+    type(deck_context_t), intent(in) :: ctx
+    !> Prefix, e.g. "moment(1)%".
+    character(*), intent(in) :: name
+    !> value and idle as read (or unset).
+    real(wp), intent(in) :: value, idle
+    type(error_t), allocatable, intent(out) :: error
+    call require_rule(ctx, name//"value", .not. (is_set(value) .and. value < 0.0_wp), &
+      "must be >= 0 with resist = .true. (the size of the resistance; the motion gives its sign)", error)
+    if (allocated(error)) return
+    call require_rule(ctx, name//"idle", .not. (is_set(idle) .and. idle < 0.0_wp), &
+      "must be >= 0 with resist = .true. (the size of the resistance; the motion gives its sign)", error)
+  end subroutine resist_size
 
   !> The output link (default: link b of the last dyad) and how its position is measured.
   subroutine read_output_link(ctx, output_link, ids, mech, error)

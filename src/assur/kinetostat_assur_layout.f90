@@ -18,7 +18,7 @@ module kinetostat_assur_layout
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_sketch, only: sketch_t
   use kinetostat_assur_kinematics, only: kind_names, link_state_t, dyad_pose_t, point_state_t, point_on, &
-    kind_rrp, kind_rpr, kind_prp, kind_rpp
+    kind_rrr, kind_rrp, kind_rpr, kind_prp, kind_rpp
   use kinetostat_assur_statics, only: pair_is_prismatic
   use kinetostat_assur, only: assur_step_t, assur_step, assur_kinematics, link_a, link_b, crank_pin_index, pair_index
   use kinetostat_drawing, only: drawing_t, force_load
@@ -31,7 +31,7 @@ module kinetostat_assur_layout
   use kinetostat_assur_friction, only: friction_step_t, assur_friction_step
   use kinetostat_assur_deck, only: assur_deck_t, read_assur_deck, write_assur_template, load_schedule_t, load_constant, &
     load_column, assur_phi1_deg, assur_omega1_steps, assur_eps1, assur_motion_sign, assur_load_value, &
-    assur_load_steps
+    assur_load_steps, resist_none
   implicit none
   private
   public :: assur_mechanism_t, new_assur, assur_solve, assur_csv_columns, assur_csv_values, assur_pair_prismatic
@@ -1208,13 +1208,18 @@ contains
         call table%echo_line(trim(line))
         call table%echo_array("AT2", dy%at(:, 1), "m")
         call table%echo_array("AT3", dy%at(:, 2), "m")
-        call table%echo_real("ANGLE2", dy%ang(1) * rad_to_deg, "deg")
-        call table%echo_real("ANGLE3", dy%ang(2) * rad_to_deg, "deg")
-        call table%echo_real("L2", dy%geom%l2, "m")
-        call table%echo_real("L3", dy%geom%l3, "m")
-        call table%echo_real("E", dy%geom%e, "m")
-        call table%echo_array("SLOT_AT", dy%geom%slot_at, "m")
-        call table%echo_real("SLOT_ANGLE", dy%geom%slot_angle * rad_to_deg, "deg")
+        ! only what the dyad's kind uses (an RRP has no L3: a 0 there would look like a mistake)
+        associate (kind => dy%geom%kind)
+          if (kind == kind_prp) call table%echo_real("ANGLE2", dy%ang(1) * rad_to_deg, "deg")
+          if (any(kind == [kind_rrp, kind_prp, kind_rpp])) call table%echo_real("ANGLE3", dy%ang(2) * rad_to_deg, "deg")
+          if (any(kind == [kind_rrr, kind_rrp])) call table%echo_real("L2", dy%geom%l2, "m")
+          if (kind == kind_rrr) call table%echo_real("L3", dy%geom%l3, "m")
+          if (kind == kind_rpr) call table%echo_real("E", dy%geom%e, "m")
+          if (kind == kind_rpp) then
+            call table%echo_array("SLOT_AT", dy%geom%slot_at, "m")
+            call table%echo_real("SLOT_ANGLE", dy%geom%slot_angle * rad_to_deg, "deg")
+          end if
+        end associate
         call table%echo_real("M2", lk(2 * d)%m, "kg")
         call table%echo_real("J2", lk(2 * d)%j, "kg*m^2")
         call table%echo_array("S2", lk(2 * d)%s, "m")
@@ -1256,12 +1261,24 @@ contains
     !> Unit of its values ("N" or "N*m").
     character(*), intent(in) :: unit
     type(step_table_t), intent(inout) :: table
-    if (load%kind == load_column) then
+    if (load%resist /= resist_none) call table%echo_logical("  RESIST", .true., "")
+    if (load%kind == load_column .and. load%resist == resist_none) then
       call table%echo_array("  VALUE", deck%step_values(load%offset + 1:load%offset + deck%n), unit)
     else
-      call table%echo_array("  VALUE", assur_load_steps(deck, load), unit)
+      call table%echo_array("  VALUE", roundoff_to_zero(assur_load_steps(deck, load)), unit)
     end if
   end subroutine echo_load
+
+  !> Computed values (a table's interpolation) with roundoff around zero set to 0: |v| <=
+  !> 1e-12 of the largest (an interpolated zero is 0, not 5.684342E-14).
+  pure function roundoff_to_zero(values) result(v)
+    !> The values.
+    real(wp), intent(in) :: values(:)
+    real(wp) :: v(size(values))
+    v = values
+    if (size(v) == 0) return
+    where (abs(v) <= 1.0e-12_wp * maxval(abs(v))) v = 0.0_wp
+  end function roundoff_to_zero
 
   !> The step table's load-edge marks (the coarse-step warning) of one load: a constant
   !> has none (skipped); a step_values column is passed as given, other schedules computed
@@ -1274,8 +1291,13 @@ contains
     type(step_table_t), intent(inout) :: table
     select case (load%kind)
     case (load_constant)
-      return
+      if (load%resist == resist_none) return
+      call table%note_load(assur_load_steps(deck, load))
     case (load_column)
+      if (load%resist /= resist_none) then
+        call table%note_load(assur_load_steps(deck, load))
+        return
+      end if
       call table%note_load(deck%step_values(load%offset + 1:load%offset + deck%n))
     case default
       call table%note_load(assur_load_steps(deck, load))

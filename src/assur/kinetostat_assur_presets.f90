@@ -32,18 +32,19 @@ module kinetostat_assur_presets
     "  moment(1)%link = 3, moment(1)%value = -20", &
     "/"]
 
-  !> `kinetostat template engine`: an engine slider-crank with a gas force on the piston
-  !> (docs/examples/engine.nml).
-  character(*), parameter :: engine_lines(*) = [character(len=94) :: &
-    "! An engine slider-crank: frame 0, crank 1 (AB), connecting rod 2 (BC), piston 3 (C).", &
-    "! The gas force on the piston is tabulated per step (from an indicator diagram).", &
+  !> `kinetostat template engine`: a four-stroke engine slider-crank with the gas force of
+  !> its working cycle over the crank angle 0..720 deg (docs/examples/engine.nml).
+  character(*), parameter :: engine_lines(*) = [character(len=96) :: &
+    "! A four-stroke engine slider-crank: frame 0, crank 1 (AB), connecting rod 2 (BC), piston 3 (C).", &
+    "! The gas force on the piston over the crank angle 0..720 deg (one working cycle), from", &
+    "! the indicator diagram of a bore of 80 mm, compression ratio 9, peak 55 bar at 375 deg.", &
     "&assur", &
-    "  title = 'engine slider-crank with a gas force'", &
+    "  title = 'four-stroke engine slider-crank with its gas force'", &
     "  frame_id = 0, crank_id = 1", &
     "  crank_at = 0, 0", &
     "  crank_m = 3.0, crank_j = 0.004, crank_s = 0, 0   ! counterweighted: centre on the pivot", &
     "  omega1 = 300                   ! rad/s (2865 rpm), counter-clockwise", &
-    "  phi_start = 0, dphi = 30       ! deg; 0 = top dead centre (piston at its largest x)", &
+    "  phi_start = 0, dphi = 15, n = 49   ! deg, two turns; 0 = top dead centre, start of intake", &
     "  dyad(1)%kind = 2, dyad(1)%link2 = 2, dyad(1)%link3 = 3", &
     "  dyad(1)%on2 = 1, dyad(1)%at2 = 0.05, 0     ! m, crank pin B (crank radius 50 mm)", &
     "  dyad(1)%on3 = 0, dyad(1)%at3 = 0, 0        ! the cylinder axis: the x-axis through A", &
@@ -51,9 +52,13 @@ module kinetostat_assur_presets
     "  dyad(1)%l2 = 0.2, dyad(1)%mode = 1         ! rod 200 mm; piston at x > 0", &
     "  dyad(1)%m2 = 1.2, dyad(1)%j2 = 0.005, dyad(1)%s2 = 0.06, 0", &
     "  dyad(1)%m3 = 0.8", &
-    "  ! gas force on the piston, towards the crank (-x), one value per step (N)", &
-    "  force(1)%link = 3, force(1)%at = 0, 0, force(1)%angle = 180, force(1)%column = 1", &
-    "  step_values = 12000, 9000, 5000, 2800, 1700, 1200, 1000, 1100, 1500, 2400, 4200, 7500, 12000", &
+    "  ! gas force on the piston, towards the crank (-x), N, over the crank angle (deg):", &
+    "  ! intake 0..180, compression 180..360, combustion and expansion 360..540, exhaust 540..720", &
+    "  force(1)%link = 3, force(1)%at = 0, 0, force(1)%angle = 180, force(1)%over = 1", &
+    "  force(1)%table = 0, -50, 30, -50, 60, -50, 90, -50, 120, -50, 150, -50, 180, -50,", &
+    "    210, -21, 240, 89, 270, 375, 300, 1195, 330, 3924, 345, 6606, 360, 8282,", &
+    "    365, 14569, 370, 20856, 375, 27143, 380, 23604, 390, 17019, 405, 10222, 420, 6459,", &
+    "    450, 3186, 480, 2019, 510, 1568, 540, 1446, 560, 75, 600, 75, 660, 75, 720, -50", &
     "/"]
 
 contains

@@ -108,6 +108,11 @@ contains
     if (table%first_block()) then
       call table%set_columns(cam_csv_columns, column_units, column_kinds)
       table%input_column = 1
+      ! a jammed or lost-contact step has no forces: empty in CSV, null in JSON, left out of
+      ! the summary (docs/gears-cams.md)
+      table%columns(6:13)%voidable = .true.
+      table%void_flags = [15, 16]
+      table%void_reason = "jammed or lost contact"
       table%residual_label = "MAX EQUILIBRIUM RESIDUAL OF THE FOLLOWER, ALL STEPS"
       table%mismatch_label = "MAX N MISMATCH, CLOSED FORM VS 3X3 LINEAR SOLVE"
       call echo_deck(self%deck, table)
@@ -121,6 +126,10 @@ contains
     if (table%kinematics_wanted) then
       do k = 1, size(steps)
         call put_kinematics(table, k, self%deck, steps(k), first - 1 + k)
+      end do
+      ! the force components have no value at a void step either
+      do k = size(cam_csv_columns) + 1, size(table%columns)
+        if (index(table%columns(k)%name, "F2") == 1) table%columns(k)%voidable = .true.
       end do
     end if
     call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "N", &
@@ -156,13 +165,13 @@ contains
       first = nint(table%carry(2))
       call table%add_warning("the follower jams (self-locking: no finite contact force moves it) at "// &
         steps_text(nint(table%carry(1)))//", the first at step "//int_str(first)//" (phi = "// &
-        number_str(cam_phi_deg(deck, first))//" deg); the table shows 0 forces there")
+        number_str(cam_phi_deg(deck, first))//" deg); no forces there (empty in CSV, null in JSON, left out of the summary)")
     end if
     if (table%carry(3) > 0.0_wp) then
       first = nint(table%carry(4))
       call table%add_warning("contact is lost (F2 <= 0 does not hold the follower on the cam) at "// &
         steps_text(nint(table%carry(3)))//", the first at step "//int_str(first)//" (phi = "// &
-        number_str(cam_phi_deg(deck, first))//" deg); the table shows 0 forces there")
+        number_str(cam_phi_deg(deck, first))//" deg); no forces there (empty in CSV, null in JSON, left out of the summary)")
     end if
   contains
     pure function steps_text(n) result(t)

@@ -5,6 +5,7 @@ module kinetostat_cli
   use, intrinsic :: iso_fortran_env, only: error_unit, int64
   use kinetostat_kinds, only: wp, version_string
   use kinetostat_error, only: error_t, fatal_error, exit_success, exit_usage, exit_input, exit_warning
+  use kinetostat_deck_repeats, only: deck_repeats
   use kinetostat_deck, only: deck_source_t, load_deck, read_group_name, set_max_deck_size
   use kinetostat_override, only: override_t, parse_override, apply_overrides
   use kinetostat_sweep, only: vary_t, parse_vary, run_sweep, variant_result_t, allow_selfcheck_failure_in_sweep
@@ -273,10 +274,16 @@ contains
     class(mechanism_t), allocatable :: mech
     type(deck_source_t) :: source
     type(deck_source_t) :: patched
+    !> Warnings for variables given more than once.
+    character(len=512), allocatable :: repeats(:)
+    allocate (repeats(0))
     call load_deck(path, source, error)
     if (allocated(error)) return
     call read_group_name(source, group, error)
     if (allocated(error)) return
+    ! variables the deck as written assigns twice (--set replaces a value on purpose); found
+    ! before the run, which may release the deck's text
+    repeats = deck_repeats(source)
     call create_mechanism(group, mech)
     if (.not. allocated(mech)) then
       call fatal_error(error, exit_input, source%path//": &"//group//": unknown mechanism (known: "// &
@@ -285,14 +292,29 @@ contains
     end if
     if (.not. allocated(options%overrides)) then
       call run_mechanism(mech, group, source, options, table, out, error, spool, show_progress)
+      if (.not. allocated(error)) call add_warnings(repeats, table)
       return
     end if
     call apply_overrides(source, options%overrides, patched)
     call run_mechanism(mech, group, patched, options, table, out, error, spool, show_progress)
     if (allocated(error)) then
       if (error%code == exit_input) call blame_override(source, group, options%overrides, error)
+    else
+      call add_warnings(repeats, table)
     end if
   end subroutine run_deck
+
+  !> The remarks into the run's warnings.
+  pure subroutine add_warnings(remarks, table)
+    !> One warning a line (blank-padded).
+    character(*), intent(in) :: remarks(:)
+    !> The run's results (the warnings are added).
+    type(step_table_t), intent(inout) :: table
+    integer :: i
+    do i = 1, size(remarks)
+      call table%add_warning(trim(remarks(i)))
+    end do
+  end subroutine add_warnings
 
   !> The limit of --max-deck-size BYTES (a whole number from 1 to huge(1), the largest deck
   !> a build with default integers can hold): set for every deck read.

@@ -457,6 +457,14 @@ contains
       doc%groups = doc%groups + 1
       base = doc%n
       do c = 1, size(fields)
+        if (len_trim(fields(c)%s) == 0) then
+          ! an empty field: no value (a jammed cam follower's forces), compared as text
+          cell = cell_t(key=int_str(doc%steps)//"|"//names(c)%s, &
+            where=row_word//" "//int_str(doc%steps)//", column "//names(c)%s, text="", &
+            unit=trim(units(c)), is_number=.false., group=doc%groups)
+          call push_cell(doc, cell)
+          cycle
+        end if
         call read_number(fields(c)%s, value, ok)
         if (.not. ok) then
           call fatal_error(error, exit_input, doc%path//":"//int_str(k)//": column "//names(c)%s// &

@@ -19,7 +19,7 @@ module kinetostat_deck
   public :: is_whole_in, require_whole
   public :: optional_default, count_values, steps_over_turn, write_template_lines
   public :: check_namelist_syntax, longest_quoted
-  public :: deck_array_capacities, max_deck_size, set_max_deck_size, default_max_deck_size
+  public :: deck_array_capacities, max_deck_size, set_max_deck_size, default_max_deck_size, assignment_starts
 
   !> Bit pattern of `unset_real`: a quiet NaN with a payload. A NaN typed in a deck
   !> ("nan", "NaN(0x1)") reads as the plain quiet NaN 7FF8000000000000, so no deck can
@@ -1073,7 +1073,7 @@ contains
     type(deck_context_t), intent(in) :: ctx
     !> The input error.
     type(error_t), allocatable, intent(out) :: error
-    character(len=:), allocatable :: line, text, name, reason
+    character(len=:), allocatable :: line, text, name, reason, bare
     integer :: from, to, k
     integer, allocatable :: starts(:)
     if (self%bad == 0) then
@@ -1108,9 +1108,63 @@ contains
       reason = namelist_reason(name, text, self%failure, [.false., .false., .false., .false.])
     end if
     if (index(text, "=") == 0 .and. len(name) > 0) reason = name//": "//reason
+    ! "omega1 15": a variable's name and a value without '=' (not more values of the array above)
+    if (index(text, "=") == 0) then
+      call missing_equals(text, bare)
+      if (len(bare) > 0) then
+        line = trim(adjustl(text))
+        reason = "missing '=' after "//bare//" (write "//bare//" = "//trim(adjustl(line(len(bare) + 1:)))//")"
+      end if
+    end if
     call fatal_error(error, exit_input, ctx%path//":"//int_str(self%bad)//": &"//ctx%group//": "// &
       clipped(text)//": "//reason)
   end subroutine probe_report
+
+  !> Whether an assignment's text without '=' starts with a variable's name followed by a
+  !> blank and a value ("omega1 15", "dyad(1)%l2  0.35"): a name of two or more characters
+  !> (letters, digits, '_', '%', subscripts; not T or F, the logical values) and a first
+  !> value that is not a name. `name` receives that name ("" when not so).
+  pure subroutine missing_equals(text, name)
+    !> The assignment as written (no comment).
+    character(*), intent(in) :: text
+    !> The name (when true).
+    character(len=:), allocatable, intent(out) :: name
+    character(len=:), allocatable :: t, rest
+    integer :: blank, depth, i
+    name = ""
+    t = trim(adjustl(text))
+    if (len(t) < 3) return
+    if (.not. is_letter(t(1:1))) return
+    depth = 0
+    blank = 0
+    do i = 1, len(t)
+      select case (t(i:i))
+      case ("(")
+        depth = depth + 1
+      case (")")
+        depth = depth - 1
+      case (" ", achar(9))
+        if (depth == 0) then
+          blank = i
+          exit
+        end if
+      case ("%", "_", ",", ":")
+      case default
+        if (.not. (is_letter(t(i:i)) .or. (t(i:i) >= "0" .and. t(i:i) <= "9"))) return
+      end select
+      if (t(i:i) == "," .and. depth == 0) return ! a list of values, not a name
+    end do
+    if (blank < 3) return
+    rest = trim(adjustl(t(blank:)))
+    if (len(rest) == 0) return
+    if (is_letter(rest(1:1)) .and. .not. is_logical_text(first_item(rest))) return
+    name = t(1:blank - 1)
+  contains
+    pure logical function is_letter(c)
+      character, intent(in) :: c
+      is_letter = (c >= "a" .and. c <= "z") .or. (c >= "A" .and. c <= "Z")
+    end function is_letter
+  end subroutine missing_equals
 
   !> The first item of a value list (quotes respected).
   pure function first_item(value) result(item)

@@ -62,6 +62,8 @@ contains
       do k = first, last
         do c = 1, size(columns)
           if (c > 1) call part%append(",")
+          ! no value (a jammed cam follower's forces): an empty field, never a 0
+          if (table%void_cell(columns(c), k)) cycle
           call put_cell(part, table%rows(columns(c), k), whole(c))
         end do
         call part%end_line()

@@ -60,8 +60,12 @@ contains
     integer, intent(in) :: decimals
     character(*), intent(out) :: text
     logical :: fits
+    real(wp) :: y
     fits = .false.
-    if (abs(x) < 1.0e30_wp) call edit_f_with_blank(x + 0.0_wp, decimals, text, fits)
+    ! a value that rounds to zero at these decimals is printed as 0.00, never -0.00
+    y = x + 0.0_wp
+    if (abs(x) < 0.5_wp * 10.0_wp**(-decimals)) y = 0.0_wp
+    if (abs(x) < 1.0e30_wp) call edit_f_with_blank(y, decimals, text, fits)
     if (.not. fits) call exponent_text(x, text)
   end subroutine fixed_text
 

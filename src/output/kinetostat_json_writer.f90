@@ -180,6 +180,10 @@ contains
           if (.not. shown(c)) cycle
           if (.not. first) call part%append(", ")
           first = .false.
+          if (table%void_cell(c, k)) then
+            call part%append("null") ! no value (a jammed cam follower's forces)
+            cycle
+          end if
           call put_cell(part, table%rows(c, k), whole(c))
         end do
         if (table%row_offset + k < max(table%total_rows, table%row_count())) then

@@ -64,6 +64,10 @@ contains
       text = "НАИБ"
     case ("MIN")
       text = "НАИМ"
+    case ("STEPS LEFT OUT")
+      text = "ПОЛОЖЕНИЙ ИСКЛ."
+    case ("JAMMED OR LOST CONTACT: NO FORCES, NOT IN MAX, MIN, MEAN")
+      text = "ЗАКЛИНИВАНИЕ ИЛИ ПОТЕРЯ КОНТАКТА: СИЛ НЕТ, НЕ В МАКС., МИН., СРЕДН."
     case ("MEAN")
       text = "СРЕДН"
     case ("AT ")

@@ -75,6 +75,9 @@ module kinetostat_step_table
     logical :: link_axes = .false.
     !> Link-axes columns: the label of that link (its angle is the kinematics column phi<label>).
     character(len=:), allocatable :: frame_link
+    !> True for a column with no value at a void row (see step_table_t%void_flags): CSV
+    !> writes an empty field there, JSON null, and the summary leaves the row out.
+    logical :: voidable = .false.
   end type column_t
 
   !> One remark of a run for the user (a warning on stderr, in JSON).
@@ -160,6 +163,12 @@ module kinetostat_step_table
     real(wp) :: area2 = 0.0_wp
     !> Value in the last row seen.
     real(wp) :: last = 0.0_wp
+    !> Rows counted (a voidable column's void rows are not).
+    integer :: count = 0
+    !> Input coordinate covered by the trapezoids counted (both ends counted rows).
+    real(wp) :: span = 0.0_wp
+    !> Whether the last row seen was counted.
+    logical :: last_counted = .false.
     !> `total` of the values scaled by kinetostat_summary's value_scale (2**-512), and
     !> `area2` of the values and input steps scaled by value_scale and step_scale
     !> (2**-560): the same sums in a range where they cannot overflow (|v| < 1.8e308),
@@ -280,6 +289,13 @@ module kinetostat_step_table
     real(wp) :: last_coordinate = 0.0_wp
     !> Input coordinates at the rows next to a load edge (for the coarse-step warning).
     type(edge_point_t), allocatable :: edge_points(:)
+    !> Flag columns (0/1) that make a row void where one is nonzero: the voidable columns
+    !> have no value there (a cam follower jammed or off the cam). Unallocated: none.
+    integer, allocatable :: void_flags(:)
+    !> Why a row is void, for the summary ("jammed or lost contact").
+    character(len=:), allocatable :: void_reason
+    !> Void rows tallied so far.
+    integer :: void_rows = 0
   contains
     procedure :: block_range
     procedure :: first_block
@@ -300,6 +316,8 @@ module kinetostat_step_table
     procedure :: note_load
     procedure :: warning_count
     procedure :: is_whole
+    procedure :: is_void
+    procedure :: void_cell
     procedure :: set_selfcheck
     procedure :: echo_real
     procedure :: echo_int
@@ -614,6 +632,27 @@ contains
     integer, intent(in) :: c
     is_whole = self%columns(c)%kind == col_flag .or. self%columns(c)%kind == col_count
   end function is_whole
+
+  !> Whether row k (of the rows now in the table) is void: one of the void_flags columns
+  !> is nonzero there.
+  pure logical function is_void(self, k)
+    class(step_table_t), intent(in) :: self
+    !> Row (1 .. row_count()).
+    integer, intent(in) :: k
+    is_void = .false.
+    if (allocated(self%void_flags)) is_void = any(self%rows(self%void_flags, k) /= 0.0_wp)
+  end function is_void
+
+  !> Whether the cell of column c in row k has no value: a voidable column in a void row.
+  pure logical function void_cell(self, c, k)
+    class(step_table_t), intent(in) :: self
+    !> Column index.
+    integer, intent(in) :: c
+    !> Row (1 .. row_count()).
+    integer, intent(in) :: k
+    void_cell = .false.
+    if (self%columns(c)%voidable) void_cell = self%is_void(k)
+  end function void_cell
 
   !> The self-check figures of the run.
   pure subroutine set_selfcheck(self, max_residual, max_mismatch, driver, residual_row, mismatch_row)

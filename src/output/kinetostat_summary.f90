@@ -78,6 +78,7 @@ contains
       allocate (table%tally(nc))
       if (allocated(table%edge_points)) deallocate (table%edge_points)
       allocate (table%edge_points(0))
+      table%void_rows = 0
     end if
     d = 0
     if (allocated(table%driver)) d = table%column_index(table%driver)
@@ -108,14 +109,20 @@ contains
             table%tally(d)%last * value_scale) * (coordinate * step_scale - table%last_coordinate * step_scale)
         end if
       end if
+      if (table%is_void(k)) table%void_rows = table%void_rows + 1
       do c = 1, nc
         v = table%rows(c, k)
         associate (t => table%tally(c))
+          ! a cell without a value (void row) is left out of the extremes, sums and means
+          if (table%void_cell(c, k)) then
+            t%last_counted = .false.
+            cycle
+          end if
           t%largest = max(t%largest, abs(v))
-          if (row == 1) then
-            t = column_tally_t(max=v, min=v, max_row=1, min_row=1, max_at=x, min_at=x, peak=v, peak_row=1, &
-                               peak_at=x, largest=abs(v), total=v, area2=0.0_wp, last=v, &
-                               total_scaled=v * value_scale, area2_scaled=0.0_wp)
+          if (t%count == 0) then
+            t = column_tally_t(max=v, min=v, max_row=row, min_row=row, max_at=x, min_at=x, peak=v, peak_row=row, &
+                               peak_at=x, largest=abs(v), total=v, area2=0.0_wp, last=v, count=1, span=0.0_wp, &
+                               last_counted=.true., total_scaled=v * value_scale, area2_scaled=0.0_wp)
             cycle
           end if
           tie = tie_rel * t%largest
@@ -135,11 +142,16 @@ contains
             t%peak_at = x
           end if
           t%total = t%total + v
-          t%area2 = t%area2 + (v + t%last) * (x - table%last_at)
+          t%count = t%count + 1
+          if (t%last_counted) then
+            t%area2 = t%area2 + (v + t%last) * (x - table%last_at)
+            t%area2_scaled = t%area2_scaled + (v * value_scale + t%last * value_scale) * &
+                             (x * step_scale - table%last_at * step_scale)
+            t%span = t%span + (x - table%last_at)
+          end if
           t%total_scaled = t%total_scaled + v * value_scale
-          t%area2_scaled = t%area2_scaled + (v * value_scale + t%last * value_scale) * &
-                           (x * step_scale - table%last_at * step_scale)
           t%last = v
+          t%last_counted = .true.
         end associate
       end do
       if (near_load_edge(row)) table%edge_points = [table%edge_points, edge_point_t(row, x)]
@@ -198,15 +210,18 @@ contains
       s%min_row = t%min_row
       s%max_at = t%max_at
       s%min_at = t%min_at
-      s%mean = t%total / real(n, wp)
-      if (.not. ieee_is_finite(s%mean)) s%mean = t%total_scaled / real(n, wp) / value_scale
+      s%mean = t%total / real(max(1, t%count), wp)
+      if (.not. ieee_is_finite(s%mean)) s%mean = t%total_scaled / real(max(1, t%count), wp) / value_scale
       if (table%input_column > 0 .and. n > 1) then
         span = table%last_at - table%first_at
+        ! rows left out (void): over the stretches between rows counted
+        if (t%count < n) span = t%span
         if (span /= 0.0_wp) then
           s%mean = 0.5_wp * t%area2 / span
           if (.not. ieee_is_finite(s%mean)) then
             ! the sums overflowed (values near the largest real): the scaled ones
             span = table%last_at * step_scale - table%first_at * step_scale
+            if (t%count < n) span = t%span * step_scale
             if (span /= 0.0_wp) s%mean = 0.5_wp * (t%area2_scaled / span) / value_scale
           end if
         end if
@@ -353,6 +368,7 @@ contains
       end do
     end if
     line = line//"rows"
+    if (allocated(table%void_flags)) line = line//",rows_left_out"
     at = "row"
     if (table%input_column > 0) then
       at = table%columns(table%input_column)%name
@@ -393,6 +409,7 @@ contains
     end if
     n = table%tallied_rows
     line = line//int_str(n)
+    if (allocated(table%void_flags)) line = line//","//int_str(table%void_rows)
     if (table%input_column > 0) line = line//","//cell_number(table%first_at, .false.)// &
       ","//cell_number(table%last_at, .false.)
     do c = 1, size(table%columns)

@@ -174,15 +174,22 @@ contains
     !> Ordinates, mm (same size).
     real(wp), intent(in) :: y(:)
     character(len=:), allocatable :: d
-    integer :: k
-    d = ""
+    character(len=:), allocatable :: piece
+    integer :: k, n
+    ! filled in place (a growing concatenation would copy the path once per point)
+    allocate (character(len=64 * size(x) + 1) :: d)
+    n = 0
     do k = 1, size(x)
       if (k == 1) then
-        d = "M "//coord(x(k))//" "//coord(y(k))
+        piece = "M "//coord(x(k))//" "//coord(y(k))
       else
-        d = d//" L "//coord(x(k))//" "//coord(y(k))
+        piece = " L "//coord(x(k))//" "//coord(y(k))
       end if
+      if (n + len(piece) > len(d)) d = d//repeat(" ", len(d))
+      d(n + 1:n + len(piece)) = piece
+      n = n + len(piece)
     end do
+    d = d(1:n)
   end function svg_polyline_d
 
   !> A path with data `d`.

@@ -9,6 +9,7 @@
 !> A table without an input angle (gear stages) gets one panel per row with the pair forces
 !> drawn as vectors from the origin instead. Same table -> same bytes.
 module kinetostat_svg_writer
+  use, intrinsic :: iso_fortran_env, only: int64
   use kinetostat_kinds, only: wp, pi, deg_to_rad, version_string
   use kinetostat_error, only: error_t, fatal_error, exit_usage
   use kinetostat_text, only: int_str, upper
@@ -44,6 +45,9 @@ module kinetostat_svg_writer
   real(wp), parameter :: dynamics_block_height = 10.0_wp + 3.0_wp * (dynamics_chart_height + gap)
   !> Most numbered points in one hodograph (beyond it every m-th step is numbered).
   integer, parameter :: max_point_labels = 24
+  !> Points a curve is drawn through at most: a longer run is thinned to what the sheet can
+  !> show (thin_indices keeps every stretch's extremes); the numbers are not changed.
+  integer, parameter :: max_drawn_points = 2000
   !> Font size of the class "num", mm (kinetostat_svg's style sheet).
   real(wp), parameter :: num_size = 2.2_wp
   !> Font size of the class "small", mm.
@@ -390,6 +394,40 @@ contains
     oy = anint((ay + 0.5_wp * ah + scale * 0.5_wp * (ymin + ymax)) * 100.0_wp) / 100.0_wp
   end subroutine fit_points
 
+  !> Rows of a long run that a curve is drawn through, in order, at most `limit`: the run
+  !> cut into equal stretches, of each its first and last row and the rows of the smallest
+  !> and largest value of every column of `values` (so the curve keeps its extremes and its
+  !> bounding box). All rows when there are no more than `limit`.
+  pure subroutine thin_indices(values, limit, keep)
+    !> One column per drawn coordinate, one row per step.
+    real(wp), intent(in) :: values(:, :)
+    !> Most rows kept (>= 2 + 2 * columns).
+    integer, intent(in) :: limit
+    !> The rows kept, increasing.
+    integer, allocatable, intent(out) :: keep(:)
+    logical, allocatable :: taken(:)
+    integer :: n, stretches, s, first, last, c
+    n = size(values, 1)
+    allocate (taken(n), source=.false.)
+    if (n <= limit) then
+      taken = .true.
+    else
+      stretches = max(1, limit / (2 + 2 * size(values, 2)))
+      do s = 1, stretches
+        first = 1 + int((int(s - 1, int64) * n) / stretches)
+        last = int((int(s, int64) * n) / stretches)
+        if (last < first) cycle
+        taken(first) = .true.
+        taken(last) = .true.
+        do c = 1, size(values, 2)
+          taken(first - 1 + minloc(values(first:last, c), dim=1)) = .true.
+          taken(first - 1 + maxloc(values(first:last, c), dim=1)) = .true.
+        end do
+      end do
+    end if
+    keep = pack([(s, s=1, n)], taken)
+  end subroutine thin_indices
+
   !> The origin of a force diagram: light axes across the plot area, a small circle and "O".
   !> The boxes of its three labels are taken in `boxes` (the point numbers go elsewhere);
   !> "y" moves to the left of its axis when "x" has its place.
@@ -426,8 +464,17 @@ contains
     real(wp), allocatable :: fx(:), fy(:), px(:), py(:)
     real(wp) :: ax, ay, aw, ah, ox, oy, scale, extent
     integer :: k, n
+    integer, allocatable :: keep(:)
+    logical :: thinned
     n = table%row_count()
     call pair_components(table, p, fx, fy)
+    ! a long run: the curve through its extremes, without rays, dots and step numbers
+    thinned = n > max_drawn_points
+    if (thinned) then
+      call thin_indices(reshape([fx, fy], [n, 2]), max_drawn_points, keep)
+      fx = fx(keep)
+      fy = fy(keep)
+    end if
     call out%put(svg_rect(x0, y0, w, h, 'class="panel"'))
     call out%put(svg_text(x0 + 2.0_wp, y0 + 4.5_wp, p%name, 'class="label" font-weight="bold"'))
     call out%put(svg_text(x0 + w - 2.0_wp, y0 + 4.5_wp, word("max", lang)//" "// &
@@ -445,6 +492,15 @@ contains
     end if
     px = ox + scale * fx
     py = oy - scale * fy
+    if (thinned) then
+      call out%put(svg_path(svg_polyline_d(px, py), 'class="hodograph" data-force="'//p%name// &
+        '" data-origin="'//coord(ox)//" "//coord(oy)//'" data-scale="'//full_number(scale)// &
+        '" data-steps="'//int_str(n)//'" data-thinned="'//int_str(size(keep))//'"'))
+      call out%put(svg_text(x0 + w - 2.0_wp, y0 + h - 8.0_wp, int_str(size(keep))//" of "//int_str(n)// &
+        " points drawn", 'class="small" text-anchor="end"'))
+      call put_scale_bar(out, x0 + 3.0_wp, y0 + h - 4.0_wp, extent, scale, lang)
+      return
+    end if
     do k = 1, n
       call out%put(svg_line(ox, oy, px(k), py(k), 'class="ray"'))
     end do
@@ -612,8 +668,15 @@ contains
     character(*), intent(in) :: colour, dash
     character(len=:), allocatable :: style
     integer :: k
+    integer, allocatable :: keep(:)
     style = 'fill="none" stroke="'//colour//'" stroke-width="0.4"'
     if (len(dash) > 0) style = style//' stroke-dasharray="'//dash//'"'
+    if (size(x) > max_drawn_points) then
+      ! a long run: the line through its extremes, no dots (they would merge into the line)
+      call thin_indices(reshape(y, [size(y), 1]), max_drawn_points, keep)
+      call out%put(svg_path(svg_polyline_d(x(keep), y(keep)), style))
+      return
+    end if
     call out%put(svg_path(svg_polyline_d(x, y), style))
     do k = 1, size(x)
       call out%put(svg_circle(x(k), y(k), 0.45_wp, 'fill="'//colour//'"'))
@@ -650,6 +713,8 @@ contains
     ph = h - 22.0_wp
     call x_range(table%rows(ci, :), table%columns(ci)%unit == "deg", xlo, xhi, xstep)
     mean = cycle_mean(table%rows(ci, :), table%rows(c, :))
+    ! roundoff of a mean that is zero (a conservative cycle): printed as 0, not -5.53E-16
+    if (abs(mean) <= 1.0e-12_wp * maxval(abs(table%rows(c, :)))) mean = 0.0_wp
     call y_range([table%rows(c, :), mean], ylo, yhi, ystep)
     call put_axes(out, left, top, pw, ph, xlo, xhi, xstep, ylo, yhi, ystep, &
       table%columns(ci)%name//", "//unit_word(table%columns(ci)%unit, lang), &

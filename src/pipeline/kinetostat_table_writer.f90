@@ -346,6 +346,7 @@ contains
       trim(adjustl(fixed_field(table%first_at, 9, 2)))//" ... "// &
       trim(adjustl(fixed_field(table%last_at, 9, 2)))//" "// &
       label(table%columns(table%input_column)%unit, lang)//")")
+    if (table%void_rows > 0) call out%put(left_out_line())
     do c = 1, size(table%columns)
       if (table%columns(c)%kind /= col_force .or. .not. table%columns(c)%csv) cycle
       s = column_stats(table, c)
@@ -369,6 +370,15 @@ contains
     call drive_work(table, work, known)
     if (known) call out%put(value_line(label("WORK OF ", lang)//table%columns(d)%name, work, label("J", lang)))
   contains
+    !> "   STEPS LEFT OUT  =                 2  (JAMMED OR LOST CONTACT: NO FORCES, NOT IN
+    !> MAX, MIN, MEAN)": the void rows, which the extremes and means below leave out.
+    pure function left_out_line() result(line)
+      character(len=:), allocatable :: line
+      character(len=18) :: whole
+      write (whole, '(i18)') table%void_rows
+      line = name_part(label("STEPS LEFT OUT", lang))//whole//"  ("// &
+        label(upper(table%void_reason)//": NO FORCES, NOT IN MAX, MIN, MEAN", lang)//")"
+    end function left_out_line
     !> "   F16 MAX         =   5.342165581E+03  N     AT PHI1 =   120.00 deg".
     pure function at_line(name, what, x, c, at) result(line)
       character(*), intent(in) :: name, what
