@@ -20,6 +20,7 @@ program kinetostat_tests
   use test_lapack, only: run_lapack_tests
   use test_blocks, only: run_blocks_tests
   use test_records, only: run_records_tests
+  use test_linkage, only: run_linkage_tests
   use test_hostile, only: run_hostile_tests
   use test_dynamics, only: run_dynamics_tests
   use test_shaking, only: run_shaking_tests
@@ -28,7 +29,7 @@ program kinetostat_tests
   !> Suite names, in the order they run.
   character(*), parameter :: suite_names(*) = [character(len=11) :: &
     "foundation", "pr3207", "pr3050", "sixbar", "gears", "cam", "assur", "assur_ext", "friction", "io", &
-    "kinematics", "svg", "decimal", "lapack", "blocks", "records", "shaking", "dynamics", "hostile"]
+    "kinematics", "svg", "decimal", "lapack", "blocks", "records", "shaking", "dynamics", "hostile", "linkage"]
   type(test_counts_t) :: t
   logical :: selected(size(suite_names))
   integer :: i
@@ -81,6 +82,7 @@ contains
     case ("foundation"); call run_foundation_tests(t)
     case ("hostile"); call run_hostile_tests(t)
     case ("pr3207"); call run_pr3207_tests(t)
+    case ("linkage"); call run_linkage_tests(t)
     case ("dynamics"); call run_dynamics_tests(t)
     case ("pr3050"); call run_pr3050_tests(t)
     case ("sixbar"); call run_sixbar_tests(t)

@@ -23,6 +23,7 @@ module kinetostat_cli
   use kinetostat_registry, only: create_mechanism, known_kinds, known_columns
   use kinetostat_step_table, only: column_t
   use kinetostat_diff, only: diff_options_t, diff_outputs
+  use kinetostat_linkage_layout, only: linkage_structure_text
   use kinetostat_assur_presets, only: assur_preset, preset_names
   use kinetostat_assur_layout, only: assur_mechanism_t
   use kinetostat_assur_balance, only: assur_balance, balance_method_names, balance_full
@@ -44,7 +45,8 @@ module kinetostat_cli
     "[--strict] | " // &
     "kinetostat sweep DECK --vary NAME=FROM:TO:COUNT... [--part K/N] [--jobs N] | " // &
     "kinetostat template KIND [-o FILE] | kinetostat diff A B [--rtol R] [--atol A] | " // &
-    "kinetostat balance DECK [-o FILE] [--method full|crank|partial] [--fraction F] | --help | --version"
+    "kinetostat balance DECK [-o FILE] [--method full|crank|partial] [--fraction F] | "// &
+    "kinetostat structure DECK [--lang ru] | --help | --version"
 
   !> Help text (the kinds are appended from the registry).
   character(*), parameter :: help_lines(*) = [character(len=92) :: &
@@ -63,6 +65,7 @@ module kinetostat_cli
     "  kinetostat balance DECK [-o FILE] [--method full|crank|partial] [--fraction F]", &
     "                  an &assur deck with counterweights added (docs/shaking.md); before/", &
     "                  after figures on stderr; --fraction: partial, default 0.5", &
+    "  kinetostat structure DECK [--lang ru] [-o FILE]   structural analysis of a &linkage deck", &
     "  kinetostat --help | --version", &
     "", &
     "DECK is a Fortran namelist file; its first group names the mechanism; - reads it", &
@@ -134,6 +137,8 @@ module kinetostat_cli
     logical :: strict = .false.
     !> The sweep subcommand was given.
     logical :: sweep = .false.
+    !> The structure subcommand was given (`kinetostat structure DECK`).
+    logical :: structure = .false.
     !> The --vary axes of a sweep.
     type(vary_t), allocatable :: varies(:)
     !> --part K/N of a sweep: this process runs block K of N.
@@ -210,6 +215,8 @@ contains
         call write_template(args%template_kind, out, error)
       else if (args%sweep) then
         call sweep_deck(args, out, warnings, error)
+      else if (args%structure) then
+        call structure_of_deck(args%deck, args%options%lang, out, error)
       else if (args%balance) then
         call balance_deck(args, out, error)
       else
@@ -656,6 +663,29 @@ contains
     end subroutine name_cause
   end subroutine blame_override
 
+  !> `kinetostat structure DECK`: the structural analysis of a `&linkage` deck.
+  subroutine structure_of_deck(path, lang, out, error)
+    !> Deck path.
+    character(*), intent(in) :: path
+    !> lang_en or lang_ru.
+    integer, intent(in) :: lang
+    !> Where the text goes.
+    type(text_buffer_t), intent(inout) :: out
+    type(error_t), allocatable, intent(out) :: error
+    type(deck_source_t) :: source
+    character(len=:), allocatable :: group
+    call load_deck(path, source, error)
+    if (allocated(error)) return
+    call read_group_name(source, group, error)
+    if (allocated(error)) return
+    if (group /= "linkage") then
+      call fatal_error(error, exit_input, source%path//": &"//group//": structure: only &linkage decks have a "// &
+        "structural analysis (the others are fixed mechanisms or hand-decomposed dyads)")
+      return
+    end if
+    call linkage_structure_text(source, lang, out, error)
+  end subroutine structure_of_deck
+
   !> The commented template deck of a kind, or a preset of the generic engine.
   subroutine write_template(kind, out, error)
     character(*), intent(in) :: kind
@@ -836,6 +866,12 @@ contains
           return
         end if
         args%sweep = .true.
+      case ("structure")
+        if (i /= 1) then
+          call fatal_error(error, exit_usage, "structure must come first: kinetostat structure DECK [--lang ru]")
+          return
+        end if
+        args%structure = .true.
       case ("diff")
         if (i == 1) then
           call parse_diff_args(args, error)
@@ -865,6 +901,9 @@ contains
     if (args%help .or. args%version .or. allocated(args%template_kind)) return
     if (.not. allocated(args%deck)) then
       call fatal_error(error, exit_usage, "no deck given")
+    else if (args%structure .and. (args%format_given .or. allocated(args%options%overrides) .or. &
+             args%options%at_step > 0)) then
+      call fatal_error(error, exit_usage, "structure takes a deck, --lang and -o only")
     else if (args%sweep .and. .not. allocated(args%varies)) then
       call fatal_error(error, exit_usage, "sweep needs at least one --vary NAME=FROM:TO:COUNT")
     else if (.not. args%sweep .and. (allocated(args%varies) .or. args%parts > 1 .or. args%jobs > 0)) then

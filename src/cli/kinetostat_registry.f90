@@ -13,6 +13,7 @@ module kinetostat_registry
   use kinetostat_assur_layout, only: new_assur
   use kinetostat_gears_layout, only: new_gears
   use kinetostat_cam_layout, only: new_cam
+  use kinetostat_linkage_layout, only: new_linkage
   implicit none
   private
   public :: create_mechanism, known_kinds, known_columns
@@ -46,7 +47,8 @@ contains
       registry_entry_t("sixbar", new_sixbar), &
       registry_entry_t("assur", new_assur), &
       registry_entry_t("gears", new_gears), &
-      registry_entry_t("cam", new_cam)]
+      registry_entry_t("cam", new_cam), &
+      registry_entry_t("linkage", new_linkage)]
   end function registry_entries
 
   !> The kinds as a comma-separated list, for messages and --help.

@@ -1,0 +1,794 @@
+!> Any planar linkage of lower pairs (`&linkage` decks): the kernel. Every moving link's pose
+!> (x, y, theta of its reference point) is an unknown; each turning pair R gives two
+!> constraint equations, each sliding pair P two (no relative turn, no motion across the
+!> guide), each drive one (the relative angle of a turning pair, the stroke of a sliding
+!> pair). With W = 3n - 2p5 equal to the number of drives the system is square: positions by
+!> Newton's method from the previous step, velocities and accelerations by linear solves with
+!> the same Jacobian J; the reactions solve J^T lambda = -Q (Q: the applied, gravity and
+!> inertia loads as generalised forces), once as one global system and once unit by unit in
+!> the order of the structural analysis (the course's group method), as the second opinion.
+!> Every loop is kept scalar (`!GCC$ novector`): the vector cos, sin and hypot of libmvec may
+!> differ from the scalar ones in the last bit, and the self-check figures (roundoff) are
+!> printed.
+module kinetostat_linkage
+  use kinetostat_kinds, only: wp, pi
+  use kinetostat_error, only: error_t, fatal_error, exit_geometry
+  use kinetostat_text, only: int_str
+  use kinetostat_lapack, only: solve_dense
+  use kinetostat_vec2, only: rotate, perp, cross, magnitude
+  use kinetostat_selfcheck, only: link_balance_t, balance_add_force, balance_add_couple, equilibrium_residual, &
+    power_mismatch
+  implicit none
+  private
+  public :: linkage_t, linkage_link_t, linkage_pair_t, linkage_drive_t, linkage_force_t, linkage_unit_t
+  public :: linkage_step_t, pair_r, pair_p
+  public :: linkage_rows, pair_row, drive_row, point_position, link_point_state
+  public :: linkage_assemble, linkage_motion, linkage_statics, linkage_reference_pose, linkage_worst_unit
+  public :: linkage_velocity_analogues
+
+  !> Pair kind: turning (revolute) pair.
+  integer, parameter :: pair_r = 1
+  !> Pair kind: sliding (prismatic) pair.
+  integer, parameter :: pair_p = 2
+  !> Newton's method: largest number of iterations of one (sub)step.
+  integer, parameter :: max_newton = 40
+  !> Newton's method: converged when every constraint is below this times the linkage's size.
+  real(wp), parameter :: newton_tol = 1.0e-12_wp
+  !> Continuation: largest turn of a drive in one substep, rad (about 5 deg).
+  real(wp), parameter :: max_substep_angle = 5.0_wp * pi / 180.0_wp
+  !> Continuation: largest stroke of a drive in one substep, relative to the linkage's size.
+  real(wp), parameter :: max_substep_stroke = 0.05_wp
+
+  !> A moving link: its reference point and mass data (global coordinates at the reference
+  !> position).
+  type :: linkage_link_t
+    !> The deck's link number.
+    integer :: id = 0
+    !> Reference point (its first pair's point at the reference position), m.
+    real(wp) :: c(2) = 0.0_wp
+    !> Angle of the link's axis at the reference position (from its first pair's point to its
+    !> second's), rad.
+    real(wp) :: angle0 = 0.0_wp
+    !> Mass, kg; moment of inertia about the centre of mass, kg*m^2.
+    real(wp) :: m = 0.0_wp, j = 0.0_wp
+    !> Centre of mass at the reference position, m.
+    real(wp) :: s(2) = 0.0_wp
+  end type linkage_link_t
+
+  !> A lower pair between links a and b (0: the frame); F<a><b> is the force on a from b.
+  type :: linkage_pair_t
+    !> Name of the joint ("A", "T1").
+    character(len=8) :: name = ""
+    !> pair_r or pair_p.
+    integer :: kind = pair_r
+    !> Link indices (0 = frame, 1.. = moving links in deck order).
+    integer :: a = 0, b = 0
+    !> Sliding pair: the link that carries the guide (a or b); the other is the block.
+    integer :: guide = 0
+    !> The joint at the reference position (for P: a point of the guide line where the block
+    !> is at the reference position), m.
+    real(wp) :: at(2) = 0.0_wp
+    !> Sliding pair: unit vector of the guide at the reference position.
+    real(wp) :: u(2) = [1.0_wp, 0.0_wp]
+  end type linkage_pair_t
+
+  !> A drive on a pair: the relative angle of link a to link b of a turning pair, or the
+  !> stroke of the block along the guide of a sliding pair.
+  type :: linkage_drive_t
+    !> The driven pair.
+    integer :: pair = 0
+    !> Value at the reference position: angle, rad (R), or stroke 0 m (P).
+    real(wp) :: q_ref = 0.0_wp
+  end type linkage_drive_t
+
+  !> An external force of constant direction (global, or turning with its link).
+  type :: linkage_force_t
+    !> Loaded link index (1..n).
+    integer :: link = 1
+    !> Point of application at the reference position, m.
+    real(wp) :: at(2) = 0.0_wp
+    !> Unit vector of its direction at the reference position.
+    real(wp) :: dir(2) = [1.0_wp, 0.0_wp]
+    !> The direction turns with the link.
+    logical :: follow = .false.
+  end type linkage_force_t
+
+  !> One unit of the structural analysis: an input unit (links moved by drives) or an Assur
+  !> group, in the order the analysis found them.
+  type :: linkage_unit_t
+    !> Its link indices (1..n).
+    integer, allocatable :: links(:)
+    !> Its constraint rows (of J): the pairs among its links and between them and the links
+    !> found before, with the drives on them.
+    integer, allocatable :: rows(:)
+    !> Class: 1 input unit, 2 dyad, 3 class-III group, 4 class-IV group, 0 not classified.
+    integer :: class = 0
+    !> Order (number of external pairs).
+    integer :: order = 0
+    !> Dyad kind (RRR, RRP, RPR, PRP, RPP), blank otherwise.
+    character(len=3) :: kind = ""
+    !> Text as the structure formula writes it ("II(2,3)").
+    character(len=:), allocatable :: label
+  end type linkage_unit_t
+
+  !> A validated linkage.
+  type :: linkage_t
+    !> Moving links 1..n.
+    type(linkage_link_t), allocatable :: links(:)
+    !> Pairs in deck order.
+    type(linkage_pair_t), allocatable :: pairs(:)
+    !> Drives in deck order.
+    type(linkage_drive_t), allocatable :: drives(:)
+    !> External forces (magnitudes per step come from the deck).
+    type(linkage_force_t), allocatable :: forces(:)
+    !> Links of the external moments.
+    integer, allocatable :: moment_link(:)
+    !> Gravity acceleration vector, m/s^2.
+    real(wp) :: gravity(2) = 0.0_wp
+    !> Size of the linkage (largest distance between two of its pair points), m.
+    real(wp) :: size = 1.0_wp
+    !> Units of the structural analysis in the order found (inputs and groups).
+    type(linkage_unit_t), allocatable :: units(:)
+    !> The deck's frame number.
+    integer :: frame_id = 0
+  end type linkage_t
+
+  !> The results of one step.
+  type :: linkage_step_t
+    !> Poses (x, y, theta) of the links' reference points, their first and second time
+    !> derivatives (3n each).
+    real(wp), allocatable :: q(:), qd(:), qdd(:)
+    !> Force on link a from link b of every pair (global), N.
+    real(wp), allocatable :: f(:, :)
+    !> Sliding pairs: normal force on a along the guide's normal (signed), N, and the couple
+    !> on a, N*m (0 for turning pairs).
+    real(wp), allocatable :: normal(:), couple(:)
+    !> Effort of every drive on link a from b: moment (N*m) or force along the guide (N).
+    real(wp), allocatable :: effort(:)
+    !> Largest equilibrium residual of the links (kinetostat_selfcheck's rule).
+    real(wp) :: residual = 0.0_wp
+    !> Largest power-balance mismatch of the drives' efforts.
+    real(wp) :: mismatch = 0.0_wp
+    !> Largest difference of the global and the group-by-group reactions, relative to the
+    !> step's largest reaction.
+    real(wp) :: solver_gap = 0.0_wp
+  end type linkage_step_t
+
+contains
+
+  !> Number of constraint rows (2 per pair, 1 per drive).
+  pure integer function linkage_rows(mech)
+    !> The linkage.
+    type(linkage_t), intent(in) :: mech
+    linkage_rows = 2 * size(mech%pairs) + size(mech%drives)
+  end function linkage_rows
+
+  !> First row of pair `k`.
+  pure integer function pair_row(k)
+    !> Pair number.
+    integer, intent(in) :: k
+    pair_row = 2 * k - 1
+  end function pair_row
+
+  !> Row of drive `d`.
+  pure integer function drive_row(mech, d)
+    !> The linkage.
+    type(linkage_t), intent(in) :: mech
+    !> Drive number.
+    integer, intent(in) :: d
+    drive_row = 2 * size(mech%pairs) + d
+  end function drive_row
+
+  !> The poses of the reference position (every link at its reference point, turned by 0).
+  pure function linkage_reference_pose(mech) result(q)
+    !> The linkage.
+    type(linkage_t), intent(in) :: mech
+    real(wp), allocatable :: q(:)
+    integer :: i
+    allocate (q(3 * size(mech%links)))
+    !GCC$ novector
+    do i = 1, size(mech%links)
+      q(3 * i - 2:3 * i) = [mech%links(i)%c(1), mech%links(i)%c(2), 0.0_wp]
+    end do
+  end function linkage_reference_pose
+
+  !> Position of point `p` (given at the reference position) of link `i` (0: frame) in pose q.
+  pure function point_position(mech, q, i, p) result(x)
+    !> The linkage.
+    type(linkage_t), intent(in) :: mech
+    !> Poses.
+    real(wp), intent(in) :: q(:)
+    !> Link index.
+    integer, intent(in) :: i
+    !> The point at the reference position, m.
+    real(wp), intent(in) :: p(2)
+    real(wp) :: x(2)
+    if (i == 0) then
+      x = p
+    else
+      x = q(3 * i - 2:3 * i - 1) + rotate(p - mech%links(i)%c, q(3 * i))
+    end if
+  end function point_position
+
+  !> Position, velocity and acceleration of point `p` (reference position) of link `i`.
+  pure subroutine link_point_state(mech, q, qd, qdd, i, p, x, v, a)
+    !> The linkage.
+    type(linkage_t), intent(in) :: mech
+    !> Poses and their derivatives.
+    real(wp), intent(in) :: q(:), qd(:), qdd(:)
+    !> Link index (0: frame).
+    integer, intent(in) :: i
+    !> The point at the reference position, m.
+    real(wp), intent(in) :: p(2)
+    !> Position (m), velocity (m/s), acceleration (m/s^2).
+    real(wp), intent(out) :: x(2), v(2), a(2)
+    real(wp) :: r(2)
+    if (i == 0) then
+      x = p; v = 0.0_wp; a = 0.0_wp
+      return
+    end if
+    r = rotate(p - mech%links(i)%c, q(3 * i))
+    x = q(3 * i - 2:3 * i - 1) + r
+    v = qd(3 * i - 2:3 * i - 1) + qd(3 * i) * perp(r)
+    a = qdd(3 * i - 2:3 * i - 1) + qdd(3 * i) * perp(r) - qd(3 * i)**2 * r
+  end subroutine link_point_state
+
+  !> Angle of link i (0: frame) in pose q, rad.
+  pure real(wp) function turn_of(q, i)
+    real(wp), intent(in) :: q(:)
+    integer, intent(in) :: i
+    turn_of = 0.0_wp
+    if (i > 0) turn_of = q(3 * i)
+  end function turn_of
+
+  !> Adds `v` to the columns of link i (0: frame, no columns) in row r of J.
+  pure subroutine put_j(jac, r, i, v)
+    real(wp), intent(inout) :: jac(:, :)
+    integer, intent(in) :: r, i
+    real(wp), intent(in) :: v(3)
+    if (i > 0) jac(r, 3 * i - 2:3 * i) = jac(r, 3 * i - 2:3 * i) + v
+  end subroutine put_j
+
+  !> Constraints phi(q) for drive values `dq` and their Jacobian J (rows x 3n).
+  pure subroutine constraints(mech, q, dq, phi, jac)
+    type(linkage_t), intent(in) :: mech
+    real(wp), intent(in) :: q(:)
+    !> Drive values, rad or m.
+    real(wp), intent(in) :: dq(:)
+    real(wp), intent(out) :: phi(:)
+    real(wp), intent(out) :: jac(:, :)
+    real(wp) :: ra(2), rb(2), delta(2), n(2), u(2)
+    integer :: k, r, a, b, blk, gd, d
+    phi = 0.0_wp
+    jac = 0.0_wp
+    !GCC$ novector
+    do k = 1, size(mech%pairs)
+      associate (pr => mech%pairs(k))
+        r = pair_row(k)
+        if (pr%kind == pair_r) then
+          a = pr%a; b = pr%b
+          ra = lever(mech, q, a, pr%at)
+          rb = lever(mech, q, b, pr%at)
+          phi(r:r + 1) = point_position(mech, q, a, pr%at) - point_position(mech, q, b, pr%at)
+          call put_j(jac, r, a, [1.0_wp, 0.0_wp, -ra(2)])
+          call put_j(jac, r + 1, a, [0.0_wp, 1.0_wp, ra(1)])
+          call put_j(jac, r, b, [-1.0_wp, 0.0_wp, rb(2)])
+          call put_j(jac, r + 1, b, [0.0_wp, -1.0_wp, -rb(1)])
+        else
+          gd = pr%guide
+          blk = pr%a + pr%b - gd
+          phi(r) = turn_of(q, blk) - turn_of(q, gd)
+          call put_j(jac, r, blk, [0.0_wp, 0.0_wp, 1.0_wp])
+          call put_j(jac, r, gd, [0.0_wp, 0.0_wp, -1.0_wp])
+          u = rotate(pr%u, turn_of(q, gd))
+          n = perp(u)
+          delta = point_position(mech, q, blk, pr%at) - point_position(mech, q, gd, pr%at)
+          phi(r + 1) = dot_product(n, delta)
+          call slide_row(jac, r + 1, n, blk, gd, lever(mech, q, blk, pr%at), lever(mech, q, gd, pr%at), delta)
+        end if
+      end associate
+    end do
+    !GCC$ novector
+    do d = 1, size(mech%drives)
+      associate (pr => mech%pairs(mech%drives(d)%pair))
+        r = drive_row(mech, d)
+        if (pr%kind == pair_r) then
+          phi(r) = turn_of(q, pr%a) - turn_of(q, pr%b) - (dq(d) - mech%drives(d)%q_ref)
+          call put_j(jac, r, pr%a, [0.0_wp, 0.0_wp, 1.0_wp])
+          call put_j(jac, r, pr%b, [0.0_wp, 0.0_wp, -1.0_wp])
+        else
+          gd = pr%guide
+          blk = pr%a + pr%b - gd
+          u = rotate(pr%u, turn_of(q, gd))
+          delta = point_position(mech, q, blk, pr%at) - point_position(mech, q, gd, pr%at)
+          phi(r) = dot_product(u, delta) - (dq(d) - mech%drives(d)%q_ref)
+          call slide_row(jac, r, u, blk, gd, lever(mech, q, blk, pr%at), lever(mech, q, gd, pr%at), delta)
+        end if
+      end associate
+    end do
+  end subroutine constraints
+
+  !> Row r of J for w . (p_blk - p_gd), w turning with the guide link gd.
+  pure subroutine slide_row(jac, r, w, blk, gd, rblk, rgd, delta)
+    real(wp), intent(inout) :: jac(:, :)
+    integer, intent(in) :: r, blk, gd
+    real(wp), intent(in) :: w(2), rblk(2), rgd(2), delta(2)
+    call put_j(jac, r, blk, [w(1), w(2), dot_product(w, perp(rblk))])
+    call put_j(jac, r, gd, [-w(1), -w(2), dot_product(perp(w), delta) - dot_product(w, perp(rgd))])
+  end subroutine slide_row
+
+  !> Lever of point p of link i from its reference point in pose q (0 for the frame), m.
+  pure function lever(mech, q, i, p) result(r)
+    type(linkage_t), intent(in) :: mech
+    real(wp), intent(in) :: q(:)
+    integer, intent(in) :: i
+    real(wp), intent(in) :: p(2)
+    real(wp) :: r(2)
+    r = 0.0_wp
+    if (i > 0) r = rotate(p - mech%links(i)%c, q(3 * i))
+  end function lever
+
+  !> The velocity-dependent part h of the constraints' second derivative (J qdd + h = drive
+  !> accelerations).
+  pure function quadratic_terms(mech, q, qd) result(h)
+    type(linkage_t), intent(in) :: mech
+    real(wp), intent(in) :: q(:), qd(:)
+    real(wp), allocatable :: h(:)
+    real(wp) :: ra(2), rb(2), u(2)
+    integer :: k, r, d
+    allocate (h(linkage_rows(mech)), source=0.0_wp)
+    !GCC$ novector
+    do k = 1, size(mech%pairs)
+      associate (pr => mech%pairs(k))
+        r = pair_row(k)
+        if (pr%kind == pair_r) then
+          ra = lever(mech, q, pr%a, pr%at)
+          rb = lever(mech, q, pr%b, pr%at)
+          h(r:r + 1) = -turn_of(qd, pr%a)**2 * ra + turn_of(qd, pr%b)**2 * rb
+        else
+          u = rotate(pr%u, turn_of(q, pr%guide))
+          h(r + 1) = slide_h(mech, q, qd, pr, perp(u))
+        end if
+      end associate
+    end do
+    !GCC$ novector
+    do d = 1, size(mech%drives)
+      associate (pr => mech%pairs(mech%drives(d)%pair))
+        if (pr%kind == pair_p) then
+          u = rotate(pr%u, turn_of(q, pr%guide))
+          h(drive_row(mech, d)) = slide_h(mech, q, qd, pr, u)
+        end if
+      end associate
+    end do
+  end function quadratic_terms
+
+  !> h of a sliding row w . delta (delta: the block's point minus the guide's, w turning with
+  !> the guide link g): -wg^2 w.delta + 2 wg perp(w).d(delta)/dt + w.(centripetal
+  !> accelerations of the block's point minus the guide's).
+  pure real(wp) function slide_h(mech, q, qd, pr, w)
+    type(linkage_t), intent(in) :: mech
+    real(wp), intent(in) :: q(:), qd(:)
+    type(linkage_pair_t), intent(in) :: pr
+    real(wp), intent(in) :: w(2)
+    real(wp) :: x1(2), v1(2), a1(2), x2(2), v2(2), a2(2), wg
+    real(wp), allocatable :: zero(:)
+    integer :: blk
+    allocate (zero(size(q)), source=0.0_wp)
+    blk = pr%a + pr%b - pr%guide
+    call link_point_state(mech, q, qd, zero, blk, pr%at, x1, v1, a1)
+    call link_point_state(mech, q, qd, zero, pr%guide, pr%at, x2, v2, a2)
+    wg = turn_of(qd, pr%guide)
+    slide_h = -wg**2 * dot_product(w, x1 - x2) + 2.0_wp * wg * dot_product(perp(w), v1 - v2) + &
+              dot_product(w, a1 - a2)
+  end function slide_h
+
+  !> Assembles the linkage for drive values `dq` by Newton's method from the poses `q`
+  !> (updated), walking there in substeps from the drive values `dq_from` of `q` with a
+  !> first-order predictor. `error` names the step (`where`) and the unit whose Jacobian is
+  !> the worst conditioned.
+  pure subroutine linkage_assemble(mech, dq_from, dq, q, where, error)
+    !> The linkage.
+    type(linkage_t), intent(in) :: mech
+    !> Drive values of the poses q and the wanted ones, rad or m.
+    real(wp), intent(in) :: dq_from(:), dq(:)
+    !> Poses: in, assembled at dq_from; out, at dq.
+    real(wp), intent(inout) :: q(:)
+    !> Text naming the step, for messages.
+    character(*), intent(in) :: where
+    type(error_t), allocatable, intent(out) :: error
+    real(wp), allocatable :: phi(:), jac(:, :), dx(:), v(:, :), target(:), from(:), q_good(:)
+    real(wp) :: span
+    integer :: m, s, it, nr, d
+    logical :: converged
+    nr = linkage_rows(mech)
+    allocate (phi(nr), jac(nr, nr), dx(nr), v(nr, size(dq)), target(size(dq)))
+    span = 0.0_wp
+    !GCC$ novector
+    do d = 1, size(dq)
+      if (mech%pairs(mech%drives(d)%pair)%kind == pair_r) then
+        span = max(span, abs(dq(d) - dq_from(d)) / max_substep_angle)
+      else
+        span = max(span, abs(dq(d) - dq_from(d)) / (max_substep_stroke * mech%size))
+      end if
+    end do
+    m = max(1, ceiling(span))
+    allocate (from(size(dq)), q_good(size(q)))
+    from(:) = dq_from
+    q_good(:) = q
+    !GCC$ novector
+    do s = 1, m
+      target = dq_from + (dq - dq_from) * (real(s, wp) / real(m, wp))
+      ! predictor: the velocity analogues of the drives at the last assembled pose
+      call linkage_velocity_analogues(mech, q, v, error)
+      if (allocated(error)) then
+        call fatal_error(error, exit_geometry, fail_text("the Jacobian is singular (a dead position)"))
+        return
+      end if
+      ! (explicit loops, not matmul: its library and inlined forms sum in different orders)
+      !GCC$ novector
+      do d = 1, size(dq)
+        q = q + v(:, d) * (target(d) - from(d))
+      end do
+      converged = .false.
+      !GCC$ novector
+      do it = 1, max_newton
+        call constraints(mech, q, target, phi, jac)
+        converged = maxval(abs(phi)) <= newton_tol * mech%size
+        if (converged) exit
+        call solve_dense(jac, -phi, dx, error)
+        if (allocated(error)) then
+          call fatal_error(error, exit_geometry, fail_text("the Jacobian is singular (a dead position)"))
+          return
+        end if
+        q = q + dx
+      end do
+      if (.not. converged) then
+        call fatal_error(error, exit_geometry, fail_text("Newton's method does not converge (the linkage cannot be assembled)"))
+        return
+      end if
+      from = target
+      q_good = q
+    end do
+  contains
+    pure function fail_text(reason) result(text)
+      character(*), intent(in) :: reason
+      character(len=:), allocatable :: text
+      text = where//": "//reason//" in "//unit_name(mech, linkage_worst_unit(mech, q_good))
+    end function fail_text
+  end subroutine linkage_assemble
+
+  !> The unit ("group III(2,3,4,5)") by name for messages.
+  pure function unit_name(mech, u) result(text)
+    type(linkage_t), intent(in) :: mech
+    integer, intent(in) :: u
+    character(len=:), allocatable :: text
+    if (u < 1) then
+      text = "the linkage"
+    else if (mech%units(u)%class == 1) then
+      text = "input unit "//mech%units(u)%label
+    else
+      text = "group "//mech%units(u)%label
+    end if
+  end function unit_name
+
+  !> The unit whose diagonal block of J (its rows, its links' columns) is the worst
+  !> conditioned in pose q: the block-triangular J is singular where one of them is.
+  pure integer function linkage_worst_unit(mech, q)
+    !> The linkage.
+    type(linkage_t), intent(in) :: mech
+    !> Poses.
+    real(wp), intent(in) :: q(:)
+    real(wp), allocatable :: phi(:), jac(:, :), x(:), dq(:)
+    real(wp) :: rc, worst
+    type(error_t), allocatable :: err
+    integer, allocatable :: cols(:)
+    integer :: u, i, nr
+    nr = linkage_rows(mech)
+    allocate (phi(nr), jac(nr, nr), dq(size(mech%drives)))
+    !GCC$ novector
+    do i = 1, size(mech%drives)
+      dq(i) = mech%drives(i)%q_ref
+    end do
+    call constraints(mech, q, dq, phi, jac)
+    linkage_worst_unit = 0
+    if (.not. allocated(mech%units)) return
+    worst = huge(1.0_wp)
+    !GCC$ novector
+    do u = 1, size(mech%units)
+      cols = unit_columns(mech%units(u))
+      allocate (x(size(cols)))
+      call solve_dense(jac(mech%units(u)%rows, cols), [(1.0_wp, i=1, size(cols))], x, err, rc)
+      if (allocated(err)) rc = 0.0_wp
+      deallocate (x)
+      if (rc < worst) then
+        worst = rc
+        linkage_worst_unit = u
+      end if
+    end do
+  end function linkage_worst_unit
+
+  !> Columns of J of a unit's links.
+  pure function unit_columns(unit) result(cols)
+    type(linkage_unit_t), intent(in) :: unit
+    integer, allocatable :: cols(:)
+    integer :: i
+    allocate (cols(3 * size(unit%links)))
+    !GCC$ novector
+    do i = 1, size(unit%links)
+      cols(3 * i - 2:3 * i) = [3 * unit%links(i) - 2, 3 * unit%links(i) - 1, 3 * unit%links(i)]
+    end do
+  end function unit_columns
+
+  !> Velocity analogues: column d is dq/d(drive d) with the other drives held (3n x drives).
+  pure subroutine linkage_velocity_analogues(mech, q, v, error)
+    !> The linkage.
+    type(linkage_t), intent(in) :: mech
+    !> Poses.
+    real(wp), intent(in) :: q(:)
+    !> The analogues.
+    real(wp), intent(out) :: v(:, :)
+    type(error_t), allocatable, intent(out) :: error
+    real(wp), allocatable :: phi(:), jac(:, :), e(:)
+    integer :: d, nr
+    nr = linkage_rows(mech)
+    allocate (phi(nr), jac(nr, nr), e(nr))
+    call constraints(mech, q, [(0.0_wp, d=1, size(mech%drives))], phi, jac)
+    !GCC$ novector
+    do d = 1, size(mech%drives)
+      e = 0.0_wp
+      e(drive_row(mech, d)) = 1.0_wp
+      call solve_dense(jac, e, v(:, d), error)
+      if (allocated(error)) return
+    end do
+  end subroutine linkage_velocity_analogues
+
+  !> Velocities and accelerations of assembled poses q for the drives' rates `dv` and
+  !> accelerations `da` (rad/s, rad/s^2 or m/s, m/s^2).
+  pure subroutine linkage_motion(mech, q, dv, da, qd, qdd, error)
+    !> The linkage.
+    type(linkage_t), intent(in) :: mech
+    !> Poses.
+    real(wp), intent(in) :: q(:)
+    !> Drive rates and accelerations.
+    real(wp), intent(in) :: dv(:), da(:)
+    !> Velocities and accelerations of the poses.
+    real(wp), intent(out) :: qd(:), qdd(:)
+    type(error_t), allocatable, intent(out) :: error
+    real(wp), allocatable :: phi(:), jac(:, :), rhs(:)
+    integer :: d, nr
+    nr = linkage_rows(mech)
+    allocate (phi(nr), jac(nr, nr), rhs(nr))
+    call constraints(mech, q, [(0.0_wp, d=1, size(mech%drives))], phi, jac)
+    rhs = 0.0_wp
+    !GCC$ novector
+    do d = 1, size(mech%drives)
+      rhs(drive_row(mech, d)) = dv(d)
+    end do
+    call solve_dense(jac, rhs, qd, error)
+    if (allocated(error)) return
+    rhs = -quadratic_terms(mech, q, qd)
+    !GCC$ novector
+    do d = 1, size(mech%drives)
+      rhs(drive_row(mech, d)) = rhs(drive_row(mech, d)) + da(d)
+    end do
+    call solve_dense(jac, rhs, qdd, error)
+  end subroutine linkage_motion
+
+  !> Reactions of an assembled, moving step: applied forces `fval` (N, along each force's
+  !> direction) and moments `mval` (N*m), gravity and inertia; the global system J^T lambda =
+  !> -Q, the group-by-group solve in reverse order of the units, and the self-check
+  !> (equilibrium of every link with the physical forces, power balance of every drive with
+  !> the velocity analogues).
+  pure subroutine linkage_statics(mech, fval, mval, step, error)
+    !> The linkage.
+    type(linkage_t), intent(in) :: mech
+    !> Force magnitudes (N) and moments (N*m) of the step.
+    real(wp), intent(in) :: fval(:), mval(:)
+    !> In: q, qd, qdd; out: forces, efforts and the self-check.
+    type(linkage_step_t), intent(inout) :: step
+    type(error_t), allocatable, intent(out) :: error
+    real(wp), allocatable :: phi(:), jac(:, :), gen(:), lam(:), lam2(:), v(:, :), a(:, :), b(:), x(:)
+    integer, allocatable :: cols(:), later(:), rows(:)
+    type(link_balance_t), allocatable :: bal(:)
+    real(wp) :: terms, power, big, s(2), vs(2), as(2), ref(2)
+    integer :: nr, n, k, u, d, i, r
+    nr = linkage_rows(mech)
+    n = size(mech%links)
+    allocate (phi(nr), jac(nr, nr), v(nr, size(mech%drives)))
+    call constraints(mech, step%q, [(0.0_wp, d=1, size(mech%drives))], phi, jac)
+    allocate (gen(size(step%q)))
+    gen(:) = generalised_loads(mech, step%q, step%qd, step%qdd, fval, mval)
+    allocate (lam(nr))
+    call solve_dense(transpose(jac), -gen, lam, error)
+    if (allocated(error)) return
+
+    ! the second opinion: unit by unit, the last found first (the course's order)
+    allocate (lam2(nr), source=0.0_wp)
+    allocate (later(0))
+    !GCC$ novector
+    do u = size(mech%units), 1, -1
+      cols = unit_columns(mech%units(u))
+      rows = mech%units(u)%rows
+      a = transpose(jac(rows, cols))
+      b = -gen(cols)
+      !GCC$ novector
+      do i = 1, size(later)
+        b = b - jac(later(i), cols) * lam2(later(i))
+      end do
+      allocate (x(size(rows)))
+      call solve_dense(a, b, x, error)
+      if (allocated(error)) return
+      lam2(rows) = x
+      deallocate (x)
+      later = [later, rows]
+    end do
+    big = maxval(abs(lam))
+    step%solver_gap = 0.0_wp
+    if (big > 0.0_wp) step%solver_gap = maxval(abs(lam - lam2)) / big
+
+    ! physical forces
+    allocate (step%f(2, size(mech%pairs)), step%normal(size(mech%pairs)), step%couple(size(mech%pairs)))
+    allocate (step%effort(size(mech%drives)))
+    !GCC$ novector
+    do k = 1, size(mech%pairs)
+      associate (pr => mech%pairs(k))
+        r = pair_row(k)
+        if (pr%kind == pair_r) then
+          step%f(:, k) = lam(r:r + 1)
+          step%normal(k) = 0.0_wp
+          step%couple(k) = 0.0_wp
+        else
+          ! rows: couple lam(r) and normal force lam(r+1)*n on the block
+          s = perp(rotate(pr%u, turn_of(step%q, pr%guide)))
+          if (pr%guide == pr%b) then
+            step%normal(k) = lam(r + 1)
+            step%couple(k) = lam(r)
+          else
+            step%normal(k) = -lam(r + 1)
+            step%couple(k) = -lam(r)
+          end if
+          step%f(:, k) = step%normal(k) * s
+        end if
+      end associate
+    end do
+    !GCC$ novector
+    do d = 1, size(mech%drives)
+      associate (pr => mech%pairs(mech%drives(d)%pair))
+        step%effort(d) = lam(drive_row(mech, d))
+        if (pr%kind == pair_p .and. pr%guide == pr%a) step%effort(d) = -step%effort(d)
+      end associate
+    end do
+
+    ! self-check 1: every link's equilibrium with the physical forces at their points
+    allocate (bal(n))
+    !GCC$ novector
+    do i = 1, n
+      ref = step%q(3 * i - 2:3 * i - 1)
+      associate (lk => mech%links(i))
+        call link_point_state(mech, step%q, step%qd, step%qdd, i, lk%s, s, vs, as)
+        call balance_add_force(bal(i), ref, s, lk%m * mech%gravity)
+        call balance_add_force(bal(i), ref, s, -lk%m * as)
+        call balance_add_couple(bal(i), -lk%j * step%qdd(3 * i))
+      end associate
+    end do
+    !GCC$ novector
+    do k = 1, size(mech%forces)
+      associate (fc => mech%forces(k))
+        s = point_position(mech, step%q, fc%link, fc%at)
+        call balance_add_force(bal(fc%link), step%q(3 * fc%link - 2:3 * fc%link - 1), s, fval(k) * force_dir(fc))
+      end associate
+    end do
+    !GCC$ novector
+    do k = 1, size(mech%moment_link)
+      call balance_add_couple(bal(mech%moment_link(k)), mval(k))
+    end do
+    !GCC$ novector
+    do k = 1, size(mech%pairs)
+      associate (pr => mech%pairs(k))
+        if (pr%kind == pair_r) then
+          ! each link's own coordinates of the joint (they differ by Newton's residual, whose
+          ! lever would otherwise show in the moments of a link whose loads all act there)
+          call add_on(bal, pr%a, point_position(mech, step%q, pr%a, pr%at), step%f(:, k), 0.0_wp)
+          call add_on(bal, pr%b, point_position(mech, step%q, pr%b, pr%at), -step%f(:, k), 0.0_wp)
+        else
+          s = point_position(mech, step%q, pr%a + pr%b - pr%guide, pr%at)
+          call add_on(bal, pr%a, s, step%f(:, k), step%couple(k))
+          call add_on(bal, pr%b, s, -step%f(:, k), -step%couple(k))
+        end if
+      end associate
+    end do
+    !GCC$ novector
+    do d = 1, size(mech%drives)
+      associate (pr => mech%pairs(mech%drives(d)%pair))
+        if (pr%kind == pair_r) then
+          call add_on(bal, pr%a, [0.0_wp, 0.0_wp], [0.0_wp, 0.0_wp], step%effort(d))
+          call add_on(bal, pr%b, [0.0_wp, 0.0_wp], [0.0_wp, 0.0_wp], -step%effort(d))
+        else
+          s = point_position(mech, step%q, pr%a + pr%b - pr%guide, pr%at)
+          vs = rotate(pr%u, turn_of(step%q, pr%guide)) * step%effort(d)
+          call add_on(bal, pr%a, s, vs, 0.0_wp)
+          call add_on(bal, pr%b, s, -vs, 0.0_wp)
+        end if
+      end associate
+    end do
+    step%residual = equilibrium_residual(bal)
+
+    ! self-check 2: each drive's effort by virtual work (the velocity analogue of that drive)
+    call linkage_velocity_analogues(mech, step%q, v, error)
+    if (allocated(error)) return
+    step%mismatch = 0.0_wp
+    !GCC$ novector
+    do d = 1, size(mech%drives)
+      power = 0.0_wp
+      terms = 0.0_wp
+      !GCC$ novector
+      do i = 1, size(gen)
+        power = power - gen(i) * v(i, d)
+        terms = terms + abs(gen(i) * v(i, d))
+      end do
+      associate (pr => mech%pairs(mech%drives(d)%pair))
+        ! the effort acts on link a; for a stroke whose guide is on a, the stroke grows as a
+        ! moves against u
+        if (pr%kind == pair_p .and. pr%guide == pr%a) power = -power
+      end associate
+      step%mismatch = max(step%mismatch, power_mismatch(step%effort(d), power, terms))
+    end do
+  contains
+    !> Adds force f at point p and couple c to link i's balance (nothing for the frame).
+    pure subroutine add_on(bal, i, p, f, c)
+      type(link_balance_t), intent(inout) :: bal(:)
+      integer, intent(in) :: i
+      real(wp), intent(in) :: p(2), f(2), c
+      if (i == 0) return
+      if (f(1) /= 0.0_wp .or. f(2) /= 0.0_wp) call balance_add_force(bal(i), step%q(3 * i - 2:3 * i - 1), p, f)
+      if (c /= 0.0_wp) call balance_add_couple(bal(i), c)
+    end subroutine add_on
+    !> Direction of force fc in the step's pose.
+    pure function force_dir(fc) result(w)
+      type(linkage_force_t), intent(in) :: fc
+      real(wp) :: w(2)
+      w = fc%dir
+      if (fc%follow) w = rotate(fc%dir, step%q(3 * fc%link))
+    end function force_dir
+  end subroutine linkage_statics
+
+  !> Generalised applied loads Q (3 per link: force, moment about the reference point):
+  !> external forces and moments, gravity, d'Alembert's inertia force and moment.
+  pure function generalised_loads(mech, q, qd, qdd, fval, mval) result(gen)
+    type(linkage_t), intent(in) :: mech
+    real(wp), intent(in) :: q(:), qd(:), qdd(:), fval(:), mval(:)
+    real(wp), allocatable :: gen(:)
+    real(wp) :: s(2), vs(2), as(2), f(2), w(2)
+    integer :: i, k
+    allocate (gen(size(q)), source=0.0_wp)
+    !GCC$ novector
+    do i = 1, size(mech%links)
+      associate (lk => mech%links(i))
+        call link_point_state(mech, q, qd, qdd, i, lk%s, s, vs, as)
+        f = lk%m * (mech%gravity - as)
+        call add_gen(i, s, f)
+        gen(3 * i) = gen(3 * i) - lk%j * qdd(3 * i)
+      end associate
+    end do
+    !GCC$ novector
+    do k = 1, size(mech%forces)
+      associate (fc => mech%forces(k))
+        w = fc%dir
+        if (fc%follow) w = rotate(fc%dir, q(3 * fc%link))
+        call add_gen(fc%link, point_position(mech, q, fc%link, fc%at), fval(k) * w)
+      end associate
+    end do
+    !GCC$ novector
+    do k = 1, size(mech%moment_link)
+      gen(3 * mech%moment_link(k)) = gen(3 * mech%moment_link(k)) + mval(k)
+    end do
+  contains
+    pure subroutine add_gen(i, p, f)
+      integer, intent(in) :: i
+      real(wp), intent(in) :: p(2), f(2)
+      gen(3 * i - 2:3 * i - 1) = gen(3 * i - 2:3 * i - 1) + f
+      gen(3 * i) = gen(3 * i) + cross(p - q(3 * i - 2:3 * i - 1), f)
+    end subroutine add_gen
+  end function generalised_loads
+
+end module kinetostat_linkage

@@ -1,0 +1,683 @@
+!> `&linkage` decks (any planar linkage of lower pairs): reading, validation, template.
+!>
+!> Links by their numbers with masses; pairs R/P between two links (0 = the frame) at a
+!> joint given in global coordinates at the reference position (the position the deck's
+!> points describe, which also fixes the assembly branch); drives on pairs with an angle or
+!> stroke law; forces, moments, gravity. Integer variables are read as reals and must be
+!> whole numbers.
+module kinetostat_linkage_deck
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+  use kinetostat_kinds, only: wp, g_default, deg_to_rad
+  use kinetostat_error, only: error_t
+  use kinetostat_text, only: int_str, lower, real_str
+  use kinetostat_text_buffer, only: text_buffer_t
+  use kinetostat_deck, only: longest_quoted, check_namelist_syntax, &
+    write_template_lines, deck_context_t, unset_bits, deck_source_t, namelist_probe_t, &
+    deck_error, is_set, require_set, require_nonnegative, require_rule, optional_default, count_values, &
+    require_whole, deck_array_capacities
+  use kinetostat_vec2, only: unit_at, magnitude
+  use kinetostat_linkage, only: linkage_t, linkage_link_t, linkage_pair_t, linkage_drive_t, linkage_force_t, &
+    pair_r, pair_p
+  use kinetostat_linkage_structure, only: analyse_structure
+  implicit none
+  private
+  public :: linkage_deck_t, linkage_schedule_t, read_linkage_deck, write_linkage_template
+  public :: linkage_drive_values, linkage_load_value
+
+  !> Capacities of the lists.
+  integer, parameter :: max_links = 24, max_pairs = 36, max_drives = 4, max_forces = 16, max_moments = 16
+  !> Capacity of a drive's list of values.
+  integer, parameter :: max_list = 3601
+  !> A load window's ends are taken this much wider (the drive's unit: deg or m), so that a
+  !> step landing on an end by roundoff of start + (k-1)*step counts as inside.
+  real(wp), parameter :: window_tol = 1.0e-9_wp
+  !> Longest quoted text but the title (the length of the text variables of the deck types).
+  integer, parameter :: text_limit = 64
+  !> Largest number of steps.
+  integer, parameter :: max_steps = 1000000
+  character(*), parameter :: group_name = "linkage"
+  !> `unset_real` for the deck types' default initialisation (declared here: a NaN constant
+  !> loses its payload in .mod files).
+  real(wp), parameter :: unset = transfer(unset_bits, 1.0_wp)
+
+  !> A link as written.
+  type :: link_in_t
+    !> Link number (whole).
+    real(wp) :: id = unset
+    !> Mass (kg), moment of inertia about S (kg*m^2), centre of mass (global at the reference
+    !> position, m; default the link's first joint).
+    real(wp) :: m = unset, j = unset, s(2) = unset
+  end type link_in_t
+
+  !> A pair as written.
+  type :: pair_in_t
+    !> Joint name ("A"; default J<k>; at most 8 characters: the variable is longer so that a
+    !> longer text is reported, not cut by the namelist read).
+    character(len=64) :: name = ""
+    !> 'R' (turning) or 'P' (sliding).
+    character(len=64) :: kind = ""
+    !> The two links: F<links(1)><links(2)> is the force on the first from the second.
+    real(wp) :: links(2) = unset
+    !> The joint at the reference position (P: a point of the guide where the block is), m.
+    real(wp) :: at(2) = unset
+    !> P: direction of the guide at the reference position, deg.
+    real(wp) :: angle = unset
+    !> P: the link carrying the guide (default links(2)).
+    real(wp) :: guide = unset
+    !> Friction (not yet supported): coefficient and journal radius.
+    real(wp) :: f = unset, r = unset
+  end type pair_in_t
+
+  !> A drive as written.
+  type :: drive_in_t
+    !> The driven pair's name: R turns links(1) against links(2), P slides the block.
+    character(len=64) :: pair = ""
+    !> Law start + (k-1)*step (deg for R, m for P, stroke from the reference position) ...
+    real(wp) :: start = unset, step = unset
+    !> ... or a list of values, one per step.
+    real(wp) :: values(max_list) = unset
+    !> Constant speed (rad/s or m/s) and acceleration (rad/s^2 or m/s^2, default 0).
+    real(wp) :: omega = unset, eps = unset
+  end type drive_in_t
+
+  !> A force as written.
+  type :: force_in_t
+    !> Loaded link, point (global at the reference position, m), direction (deg, global at
+    !> the reference position), value (N).
+    real(wp) :: link = unset, at(2) = unset, angle = unset, value = unset
+    !> Value outside the window [phi_on, phi_off] of the first drive (its unit), default 0.
+    real(wp) :: idle = unset, phi_on = unset, phi_off = unset
+    !> Column of step_values holding the value of each step instead.
+    real(wp) :: column = unset
+    !> The direction turns with the link.
+    logical :: follow = .false.
+  end type force_in_t
+
+  !> A moment as written.
+  type :: moment_in_t
+    !> Loaded link, value (N*m, counter-clockwise), window and column as for forces.
+    real(wp) :: link = unset, value = unset, idle = unset, phi_on = unset, phi_off = unset, column = unset
+  end type moment_in_t
+
+  !> How a load gets its value at a step.
+  type :: linkage_schedule_t
+    !> Value (inside the window), N or N*m.
+    real(wp) :: value = 0.0_wp
+    !> Value outside the window.
+    real(wp) :: idle = 0.0_wp
+    !> Window of the first drive's value (deck units); inactive when on > off.
+    real(wp) :: phi_on = 1.0_wp, phi_off = 0.0_wp
+    !> Whether a window is given.
+    logical :: window = .false.
+    !> Column of step_values (0: none).
+    integer :: column = 0
+  end type linkage_schedule_t
+
+  !> A validated `&linkage` deck.
+  type :: linkage_deck_t
+    !> The linkage (with its structural analysis).
+    type(linkage_t) :: mech
+    !> Title.
+    character(len=80) :: title = ""
+    !> Number of steps.
+    integer :: n = 0
+    !> Gravity, m/s^2, and its direction, deg.
+    real(wp) :: g = g_default, gravity_angle = -90.0_wp
+    !> Drives: start, step (deck units: deg or m), constant speed and acceleration (rad/s,
+    !> rad/s^2 or m/s, m/s^2).
+    real(wp), allocatable :: start(:), step(:), omega(:), eps(:)
+    !> Drives given as lists: values(k, d), deck units.
+    real(wp), allocatable :: values(:, :)
+    !> Whether drive d is a list.
+    logical, allocatable :: listed(:)
+    !> Loads' schedules.
+    type(linkage_schedule_t), allocatable :: force_load(:), moment_load(:)
+    !> The per-step load columns (n x columns).
+    real(wp), allocatable :: step_values(:)
+    !> The deck's link numbers of the forces' and moments' links, pair names of the drives.
+    character(len=8), allocatable :: drive_pair(:)
+  end type linkage_deck_t
+
+contains
+
+  !> Read and validate a `&linkage` deck, with its structural analysis.
+  subroutine read_linkage_deck(source, deck, error)
+    !> The deck, read into memory.
+    type(deck_source_t), intent(in) :: source
+    !> The validated deck.
+    type(linkage_deck_t), intent(out) :: deck
+    type(error_t), allocatable, intent(out) :: error
+    call read_linkage_group(source, longest_quoted(source), deck, error)
+  end subroutine read_linkage_deck
+
+  !> Read and validate a `&linkage` deck whose longest quoted text has `text_length`
+  !> characters (the length of the texts read: a longer text is reported, not cut).
+  subroutine read_linkage_group(source, text_length, deck, error)
+    !> The deck, read into memory.
+    type(deck_source_t), intent(in) :: source
+    !> Length of the texts read (characters, >= 1).
+    integer, intent(in) :: text_length
+    !> The validated deck.
+    type(linkage_deck_t), intent(out) :: deck
+    type(error_t), allocatable, intent(out) :: error
+    !> Allocated, not automatic: a text of 10^5 characters and more would overflow the stack.
+    character(len=text_length), allocatable :: title
+    real(wp) :: frame, g, gravity_angle, n
+    real(wp), allocatable :: step_values(:)
+    type(link_in_t) :: link(max_links)
+    type(pair_in_t) :: pair(max_pairs)
+    type(drive_in_t), allocatable :: drive(:)
+    type(force_in_t) :: force(max_forces)
+    type(moment_in_t) :: moment(max_moments)
+    integer, allocatable :: capacity(:), ids(:)
+    type(deck_context_t) :: ctx
+    type(namelist_probe_t) :: probe
+    character(len=:), allocatable :: p
+    integer :: nl, np, nd, nf, nm, k, i, id, a, b, count, nsteps, n_values, frame_no, cols
+    real(wp) :: d
+    namelist /linkage/ title, frame, g, gravity_angle, n, link, pair, drive, force, moment, step_values
+
+    ctx%path = source%path
+    ctx%group = group_name
+    allocate (title)
+    title = ""
+    frame = 0.0_wp; g = unset; gravity_angle = unset; n = unset
+    allocate (drive(max_drives))
+    capacity = deck_array_capacities(source, ctx%group, [character(len=11) :: "step_values"])
+    allocate (step_values(capacity(1)), source=unset)
+    call check_namelist_syntax(source, ctx%group, error)
+    if (allocated(error)) return
+    call check_text_lengths(source, ctx, error)
+    if (allocated(error)) return
+    read (source%records, nml=linkage, iostat=probe%ios, iomsg=probe%msg)
+    do while (probe%retry(source)) ! on failure: find the line and the assignment
+      read (probe%records, nml=linkage, iostat=probe%ios, iomsg=probe%msg)
+    end do
+    if (probe%failed(source, ctx, error)) return
+    call require_rule(ctx, "title", len_trim(title) <= len(deck%title), "longer than "// &
+      int_str(len(deck%title))//" characters", error)
+    if (allocated(error)) return
+    deck%title = title
+    call require_whole(ctx, "frame", frame, 0, huge(1), frame_no, error); if (allocated(error)) return
+    deck%mech%frame_id = frame_no
+    deck%g = optional_default(g, g_default)
+    call require_nonnegative(ctx, "g", deck%g, error); if (allocated(error)) return
+    deck%gravity_angle = optional_default(gravity_angle, -90.0_wp)
+    call require_set(ctx, "gravity_angle", deck%gravity_angle, error); if (allocated(error)) return
+    deck%mech%gravity = deck%g * unit_at(deck%gravity_angle * deg_to_rad)
+
+    ! ---- links
+    nl = leading(is_set(link%id))
+    call require_rule(ctx, "link", nl >= 1, "at least one moving link is required (link(1)%id missing)", error)
+    if (allocated(error)) return
+    !GCC$ novector
+    do k = nl + 1, max_links
+      if (is_set(link(k)%m) .or. is_set(link(k)%j) .or. any(is_set(link(k)%s))) then
+        call deck_error(ctx, "link("//int_str(k)//")", "links must be numbered 1.."//int_str(nl + 1)// &
+          " without gaps (link("//int_str(nl + 1)//")%id is missing)", error)
+        return
+      end if
+    end do
+    allocate (deck%mech%links(nl), ids(nl))
+    !GCC$ novector
+    do k = 1, nl
+      p = "link("//int_str(k)//")%"
+      call require_whole(ctx, p//"id", link(k)%id, 0, huge(1), id, error); if (allocated(error)) return
+      call require_rule(ctx, p//"id", id /= frame_no .and. .not. any(ids(1:k - 1) == id), &
+        "must differ from frame and from the other links (got "//int_str(id)//")", error)
+      if (allocated(error)) return
+      ids(k) = id
+      deck%mech%links(k)%id = id
+      deck%mech%links(k)%m = optional_default(link(k)%m, 0.0_wp)
+      call require_nonnegative(ctx, p//"m", deck%mech%links(k)%m, error); if (allocated(error)) return
+      deck%mech%links(k)%j = optional_default(link(k)%j, 0.0_wp)
+      call require_nonnegative(ctx, p//"j", deck%mech%links(k)%j, error); if (allocated(error)) return
+    end do
+
+    ! ---- pairs
+    np = leading(pair%kind /= "")
+    call require_rule(ctx, "pair", np >= 1, "at least one pair is required (pair(1)%kind missing)", error)
+    if (allocated(error)) return
+    !GCC$ novector
+    do k = np + 1, max_pairs
+      if (any(is_set(pair(k)%links)) .or. any(is_set(pair(k)%at)) .or. len_trim(pair(k)%name) > 0) then
+        call deck_error(ctx, "pair("//int_str(k)//")", "pairs must be numbered 1.."//int_str(np + 1)// &
+          " without gaps (pair("//int_str(np + 1)//")%kind is missing)", error)
+        return
+      end if
+    end do
+    allocate (deck%mech%pairs(np))
+    !GCC$ novector
+    do k = 1, np
+      p = "pair("//int_str(k)//")%"
+      associate (pr => deck%mech%pairs(k))
+        call require_rule(ctx, p//"kind", any(lower(trim(pair(k)%kind)) == ["r", "p"]), &
+          "must be 'R' (turning) or 'P' (sliding), got '"//trim(pair(k)%kind)//"'", error)
+        if (allocated(error)) return
+        pr%kind = merge(pair_r, pair_p, lower(trim(pair(k)%kind)) == "r")
+        if (is_set(pair(k)%f) .or. is_set(pair(k)%r)) then
+          call deck_error(ctx, p//merge("f", "r", is_set(pair(k)%f)), &
+            "friction is not yet supported in &linkage decks (use an &assur deck for friction)", error)
+          return
+        end if
+        call require_rule(ctx, p//"name", len_trim(pair(k)%name) <= len(pr%name), "longer than "// &
+          int_str(len(pr%name))//" characters", error)
+        if (allocated(error)) return
+        call require_rule(ctx, p//"name", verify(trim(pair(k)%name), &
+          "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_") == 0, &
+          "letters, digits and _ only (it names the columns x_<name>), got '"//trim(pair(k)%name)//"'", error)
+        if (allocated(error)) return
+        pr%name = pair(k)%name(1:len(pr%name))
+        if (len_trim(pr%name) == 0) pr%name = "J"//int_str(k)
+        !GCC$ novector
+        do i = 1, k - 1
+          call require_rule(ctx, p//"name", deck%mech%pairs(i)%name /= pr%name, "'"//trim(pr%name)// &
+            "' names pair "//int_str(i)//" already", error)
+          if (allocated(error)) return
+        end do
+        call link_index(p//"links(1)", pair(k)%links(1), a, error); if (allocated(error)) return
+        call link_index(p//"links(2)", pair(k)%links(2), b, error); if (allocated(error)) return
+        call require_rule(ctx, p//"links", a /= b, "the two links must differ", error)
+        if (allocated(error)) return
+        pr%a = a; pr%b = b
+        call require_set(ctx, p//"at(1)", pair(k)%at(1), error); if (allocated(error)) return
+        call require_set(ctx, p//"at(2)", pair(k)%at(2), error); if (allocated(error)) return
+        pr%at = pair(k)%at
+        if (pr%kind == pair_p) then
+          call require_set(ctx, p//"angle", pair(k)%angle, error); if (allocated(error)) return
+          pr%u = unit_at(pair(k)%angle * deg_to_rad)
+          pr%guide = b
+          if (is_set(pair(k)%guide)) then
+            call link_index(p//"guide", pair(k)%guide, i, error); if (allocated(error)) return
+            call require_rule(ctx, p//"guide", i == a .or. i == b, "must be one of the pair's links", error)
+            if (allocated(error)) return
+            pr%guide = i
+          end if
+        else
+          call require_rule(ctx, p//"angle", .not. is_set(pair(k)%angle) .and. .not. is_set(pair(k)%guide), &
+            "only for sliding pairs (kind = 'P')", error)
+          if (allocated(error)) return
+        end if
+      end associate
+    end do
+    ! every link's reference point: its first pair's joint; the size of the linkage
+    deck%mech%size = 0.0_wp
+    !GCC$ novector
+    do k = 1, np
+      !GCC$ novector
+      do i = 1, np
+        deck%mech%size = max(deck%mech%size, magnitude(deck%mech%pairs(k)%at - deck%mech%pairs(i)%at))
+      end do
+    end do
+    if (deck%mech%size <= 0.0_wp) deck%mech%size = 1.0_wp
+    !GCC$ novector
+    do k = 1, nl
+      count = 0
+      !GCC$ novector
+      do i = 1, np
+        if (deck%mech%pairs(i)%a /= k .and. deck%mech%pairs(i)%b /= k) cycle
+        count = count + 1
+        if (count == 1) then
+          deck%mech%links(k)%c = deck%mech%pairs(i)%at
+        else if (count >= 2 .and. deck%mech%links(k)%angle0 == 0.0_wp) then
+          d = magnitude(deck%mech%pairs(i)%at - deck%mech%links(k)%c)
+          if (d > 0.0_wp) deck%mech%links(k)%angle0 = atan2(deck%mech%pairs(i)%at(2) - deck%mech%links(k)%c(2), &
+                                                           deck%mech%pairs(i)%at(1) - deck%mech%links(k)%c(1))
+        end if
+      end do
+      call require_rule(ctx, "link("//int_str(k)//")%id", count >= 1, "link "//int_str(ids(k))// &
+        " is in no pair", error)
+      if (allocated(error)) return
+      if (any(is_set(link(k)%s))) then
+        call require_set(ctx, "link("//int_str(k)//")%s(1)", link(k)%s(1), error); if (allocated(error)) return
+        call require_set(ctx, "link("//int_str(k)//")%s(2)", link(k)%s(2), error); if (allocated(error)) return
+        deck%mech%links(k)%s = link(k)%s
+      else
+        deck%mech%links(k)%s = deck%mech%links(k)%c
+      end if
+    end do
+
+    ! ---- steps and drives
+    nd = leading(len_trim(drive%pair) > 0)
+    call require_rule(ctx, "drive", nd >= 1, "at least one drive is required (drive(1)%pair missing)", error)
+    if (allocated(error)) return
+    allocate (deck%mech%drives(nd), deck%start(nd), deck%step(nd), deck%omega(nd), deck%eps(nd), deck%listed(nd))
+    allocate (deck%drive_pair(nd))
+    nsteps = 0
+    if (is_set(n)) then
+      call require_whole(ctx, "n", n, 1, max_steps, nsteps, error); if (allocated(error)) return
+    end if
+    !GCC$ novector
+    do k = 1, nd
+      p = "drive("//int_str(k)//")%"
+      i = 0
+      !GCC$ novector
+      do a = 1, np
+        if (deck%mech%pairs(a)%name == trim(drive(k)%pair)) i = a
+      end do
+      call require_rule(ctx, p//"pair", i > 0, "no pair is named '"//trim(drive(k)%pair)//"'", error)
+      if (allocated(error)) return
+      call require_rule(ctx, p//"pair", .not. any(deck%mech%drives(1:k - 1)%pair == i), &
+        "pair '"//trim(drive(k)%pair)//"' is driven already", error)
+      if (allocated(error)) return
+      deck%mech%drives(k)%pair = i
+      deck%drive_pair(k) = drive(k)%pair(1:len(deck%drive_pair))
+      call count_values(ctx, p//"values", drive(k)%values, count, error); if (allocated(error)) return
+      deck%listed(k) = count > 0
+      if (count > 0) then
+        call require_rule(ctx, p//"start", .not. is_set(drive(k)%start) .and. .not. is_set(drive(k)%step), &
+          "give either values(:) or start and step, not both", error)
+        if (allocated(error)) return
+        if (nsteps == 0) nsteps = count
+        call require_rule(ctx, p//"values", count == nsteps, "expected "//int_str(nsteps)//" values (one per step), got "// &
+          int_str(count), error)
+        if (allocated(error)) return
+      else
+        call require_set(ctx, p//"start", drive(k)%start, error); if (allocated(error)) return
+        call require_set(ctx, p//"step", drive(k)%step, error); if (allocated(error)) return
+        deck%start(k) = drive(k)%start
+        deck%step(k) = drive(k)%step
+      end if
+      call require_set(ctx, p//"omega", drive(k)%omega, error); if (allocated(error)) return
+      deck%omega(k) = drive(k)%omega
+      deck%eps(k) = optional_default(drive(k)%eps, 0.0_wp)
+      call require_set(ctx, p//"eps", deck%eps(k), error); if (allocated(error)) return
+      deck%mech%drives(k)%q_ref = reference_value(deck%mech, i)
+    end do
+    !GCC$ novector
+    do k = nd + 1, max_drives
+      if (is_set(drive(k)%start) .or. is_set(drive(k)%omega) .or. is_set(drive(k)%values(1))) then
+        call deck_error(ctx, "drive("//int_str(k)//")", "drives must be numbered 1.."//int_str(nd + 1)// &
+          " without gaps (drive("//int_str(nd + 1)//")%pair is missing)", error)
+        return
+      end if
+    end do
+    call require_rule(ctx, "n", nsteps > 0, "missing (required when no drive gives a list of values)", error)
+    if (allocated(error)) return
+    deck%n = nsteps
+    allocate (deck%values(nsteps, nd), source=0.0_wp)
+    !GCC$ novector
+    do k = 1, nd
+      if (deck%listed(k)) then
+        deck%values(:, k) = drive(k)%values(1:nsteps)
+      end if
+    end do
+    ! a turning pair's drive angles: the driven link's axis is the drive's angle (a drive
+    ! between two moving links: the angle of a's axis from b's)
+    !GCC$ novector
+    do k = 1, nd
+      associate (pr => deck%mech%pairs(deck%mech%drives(k)%pair))
+        if (pr%kind == pair_r .and. pr%b == 0) deck%mech%links(pr%a)%angle0 = deck%mech%drives(k)%q_ref
+      end associate
+    end do
+    !GCC$ novector
+    do k = 1, nd
+      associate (pr => deck%mech%pairs(deck%mech%drives(k)%pair))
+        if (pr%kind == pair_r .and. pr%b /= 0) deck%mech%drives(k)%q_ref = deck%mech%drives(k)%q_ref - &
+          deck%mech%links(pr%b)%angle0
+      end associate
+    end do
+
+    ! ---- loads
+    call count_values(ctx, "step_values", step_values, n_values, error); if (allocated(error)) return
+    cols = n_values / nsteps
+    call require_rule(ctx, "step_values", n_values == cols * nsteps, "expected a multiple of "//int_str(nsteps)// &
+      " values (n per column), got "//int_str(n_values), error)
+    if (allocated(error)) return
+    deck%step_values = step_values(1:n_values)
+    nf = leading(is_set(force%link))
+    nm = leading(is_set(moment%link))
+    allocate (deck%mech%forces(nf), deck%force_load(nf), deck%mech%moment_link(nm), deck%moment_load(nm))
+    !GCC$ novector
+    do k = 1, nf
+      p = "force("//int_str(k)//")%"
+      call link_index(p//"link", force(k)%link, i, error); if (allocated(error)) return
+      call require_rule(ctx, p//"link", i > 0, "must be a moving link", error); if (allocated(error)) return
+      deck%mech%forces(k)%link = i
+      call require_set(ctx, p//"at(1)", force(k)%at(1), error); if (allocated(error)) return
+      call require_set(ctx, p//"at(2)", force(k)%at(2), error); if (allocated(error)) return
+      deck%mech%forces(k)%at = force(k)%at
+      call require_set(ctx, p//"angle", force(k)%angle, error); if (allocated(error)) return
+      deck%mech%forces(k)%dir = unit_at(force(k)%angle * deg_to_rad)
+      deck%mech%forces(k)%follow = force(k)%follow
+      call read_schedule(p, force(k)%value, force(k)%idle, force(k)%phi_on, force(k)%phi_off, force(k)%column, &
+                         deck%force_load(k), error)
+      if (allocated(error)) return
+    end do
+    !GCC$ novector
+    do k = 1, nm
+      p = "moment("//int_str(k)//")%"
+      call link_index(p//"link", moment(k)%link, i, error); if (allocated(error)) return
+      call require_rule(ctx, p//"link", i > 0, "must be a moving link", error); if (allocated(error)) return
+      deck%mech%moment_link(k) = i
+      call read_schedule(p, moment(k)%value, moment(k)%idle, moment(k)%phi_on, moment(k)%phi_off, moment(k)%column, &
+                         deck%moment_load(k), error)
+      if (allocated(error)) return
+    end do
+
+    call analyse_structure(deck%mech, ctx%path//": &"//ctx%group, error)
+  contains
+    !> Number of leading true entries.
+    pure integer function leading(given)
+      logical, intent(in) :: given(:)
+      integer :: kk
+      leading = 0
+      !GCC$ novector
+      do kk = 1, size(given)
+        if (.not. given(kk)) exit
+        leading = kk
+      end do
+    end function leading
+    !> Internal index (0 frame, 1.. moving) of a link number given as a real.
+    subroutine link_index(name, x, idx, err)
+      character(*), intent(in) :: name
+      real(wp), intent(in) :: x
+      integer, intent(out) :: idx
+      type(error_t), allocatable, intent(out) :: err
+      integer :: v, kk
+      idx = -1
+      call require_whole(ctx, name, x, 0, huge(1), v, err); if (allocated(err)) return
+      if (v == frame_no) then
+        idx = 0
+        return
+      end if
+      !GCC$ novector
+      do kk = 1, nl
+        if (ids(kk) == v) idx = kk
+      end do
+      call require_rule(ctx, name, idx >= 0, "no link "//int_str(v)//" (links: the frame "//int_str(frame_no)// &
+        " and link(:)%id)", err)
+    end subroutine link_index
+    !> A load's schedule: constant value, window, or column.
+    subroutine read_schedule(pfx, value, idle, on, off, column, sched, err)
+      character(*), intent(in) :: pfx
+      real(wp), intent(in) :: value, idle, on, off, column
+      type(linkage_schedule_t), intent(out) :: sched
+      type(error_t), allocatable, intent(out) :: err
+      if (is_set(column)) then
+        call require_whole(ctx, pfx//"column", column, 1, max(1, cols), sched%column, err); if (allocated(err)) return
+        call require_rule(ctx, pfx//"column", cols >= 1, "step_values holds no column", err)
+        if (allocated(err)) return
+        call require_rule(ctx, pfx//"value", .not. is_set(value), "give either value or column, not both", err)
+        return
+      end if
+      call require_set(ctx, pfx//"value", value, err); if (allocated(err)) return
+      sched%value = value
+      if (is_set(on) .or. is_set(off)) then
+        call require_set(ctx, pfx//"phi_on", on, err); if (allocated(err)) return
+        call require_set(ctx, pfx//"phi_off", off, err); if (allocated(err)) return
+        sched%window = .true.
+        sched%phi_on = on
+        sched%phi_off = off
+        sched%idle = optional_default(idle, 0.0_wp)
+        call require_set(ctx, pfx//"idle", sched%idle, err); if (allocated(err)) return
+      else
+        call require_rule(ctx, pfx//"idle", .not. is_set(idle), "only with phi_on and phi_off", err)
+      end if
+    end subroutine read_schedule
+  end subroutine read_linkage_group
+
+  !> Every quoted text but the title fits its variable (64 characters: a pair's name and kind,
+  !> a drive's pair), so that the namelist READ never cuts one (gfortran warns on stderr
+  !> when it does). Records are scanned as the one stream they form (a cut line's pieces in
+  !> order, lines apart; a record's trailing blanks are padding); '!' outside quotes starts a
+  !> comment.
+  subroutine check_text_lengths(source, ctx, error)
+    type(deck_source_t), intent(in) :: source
+    type(deck_context_t), intent(in) :: ctx
+    type(error_t), allocatable, intent(out) :: error
+    integer :: r, j, length, first
+    character :: quote, c
+    logical :: inside, comment
+    character(len=24) :: before
+    inside = .false.
+    quote = " "
+    length = 0
+    first = 0
+    before = ""
+    do r = 1, size(source%records)
+      comment = .false.
+      do j = 1, len_trim(source%records(r))
+        c = source%records(r)(j:j)
+        if (inside) then
+          if (c == quote) then
+            inside = .false.
+            call judge()
+            if (allocated(error)) return
+          else
+            length = length + 1
+          end if
+        else if (.not. comment) then
+          if (c == "!") then
+            comment = .true.
+          else if (c == "'" .or. c == '"') then
+            inside = .true.
+            quote = c
+            length = 0
+            first = r
+          else
+            before = before(2:)//lower(c)
+          end if
+        end if
+      end do
+    end do
+    if (inside) call judge()
+  contains
+    subroutine judge()
+      integer :: line
+      if (length > text_limit .and. index(before, "title") == 0) then
+        line = first
+        if (allocated(source%first_record)) then
+          line = 1
+          do while (line + 1 < size(source%first_record))
+            if (source%first_record(line + 1) > first) exit
+            line = line + 1
+          end do
+        end if
+        call deck_error(ctx, "text on line "//int_str(line), "a quoted text of "//int_str(length)// &
+          " characters: only title may be longer than "//int_str(text_limit), error)
+      end if
+    end subroutine judge
+  end subroutine check_text_lengths
+
+  !> A drive's value at the reference position: a turning pair's angle of the driven link's
+  !> axis (from the joint to the first other joint of that link at another point, else its
+  !> centre of mass), rad; a sliding pair's stroke, 0 m.
+  pure real(wp) function reference_value(mech, k)
+    type(linkage_t), intent(in) :: mech
+    integer, intent(in) :: k
+    real(wp) :: to(2)
+    integer :: i, a
+    reference_value = 0.0_wp
+    if (mech%pairs(k)%kind == pair_p) return
+    a = mech%pairs(k)%a
+    to = mech%links(a)%s
+    !GCC$ novector
+    do i = size(mech%pairs), 1, -1
+      if (i == k) cycle
+      if (mech%pairs(i)%a /= a .and. mech%pairs(i)%b /= a) cycle
+      if (magnitude(mech%pairs(i)%at - mech%pairs(k)%at) > 0.0_wp) to = mech%pairs(i)%at
+    end do
+    if (magnitude(to - mech%pairs(k)%at) > 0.0_wp) then
+      reference_value = atan2(to(2) - mech%pairs(k)%at(2), to(1) - mech%pairs(k)%at(1))
+    end if
+  end function reference_value
+
+  !> The drives' values (rad or m), rates and accelerations at step k.
+  pure subroutine linkage_drive_values(deck, k, q, v, a)
+    !> Validated deck.
+    type(linkage_deck_t), intent(in) :: deck
+    !> Step 1..n.
+    integer, intent(in) :: k
+    !> Values, rates, accelerations (internal units: rad, m).
+    real(wp), intent(out) :: q(:), v(:), a(:)
+    integer :: d
+    real(wp) :: x
+    !GCC$ novector
+    do d = 1, size(deck%mech%drives)
+      if (deck%listed(d)) then
+        x = deck%values(k, d)
+      else
+        x = deck%start(d) + real(k - 1, wp) * deck%step(d)
+      end if
+      if (deck%mech%pairs(deck%mech%drives(d)%pair)%kind == pair_r) then
+        q(d) = x * deg_to_rad
+      else
+        q(d) = x
+      end if
+      v(d) = deck%omega(d)
+      a(d) = deck%eps(d)
+    end do
+  end subroutine linkage_drive_values
+
+  !> A load's value at step k (N or N*m).
+  pure real(wp) function linkage_load_value(deck, sched, k)
+    !> Validated deck.
+    type(linkage_deck_t), intent(in) :: deck
+    !> The load's schedule.
+    type(linkage_schedule_t), intent(in) :: sched
+    !> Step.
+    integer, intent(in) :: k
+    real(wp) :: x
+    if (sched%column > 0) then
+      linkage_load_value = deck%step_values((sched%column - 1) * deck%n + k)
+    else if (sched%window) then
+      if (deck%listed(1)) then
+        x = deck%values(k, 1)
+      else
+        x = deck%start(1) + real(k - 1, wp) * deck%step(1)
+      end if
+      linkage_load_value = merge(sched%value, sched%idle, x >= sched%phi_on - window_tol .and. x <= sched%phi_off + window_tol)
+    else
+      linkage_load_value = sched%value
+    end if
+  end function linkage_load_value
+
+  !> The commented template deck (a crank-rocker four-bar).
+  pure subroutine write_linkage_template(out)
+    !> Where the lines go.
+    type(text_buffer_t), intent(inout) :: out
+    call write_template_lines(out, [character(len=100) :: &
+      "! Any planar linkage of lower pairs (docs/linkage.md). Points are global (x, y) at the", &
+      "! reference position, which also fixes the assembly branch. F<i><j>: force on link i from j.", &
+      "&linkage", &
+      "  title = 'crank-rocker four-bar'", &
+      "  frame = 0                          ! link number of the frame", &
+      "  g = 9.81, gravity_angle = -90      ! m/s^2, deg", &
+      "  n = 25                             ! steps", &
+      "  link(1)%id = 1, link(1)%m = 0.5, link(1)%j = 0.002, link(1)%s = 0.05, 0", &
+      "  link(2)%id = 2, link(2)%m = 1.0, link(2)%j = 0.0102, link(2)%s = 0.27, 0.1", &
+      "  link(3)%id = 3, link(3)%m = 0.8, link(3)%j = 0.0042, link(3)%s = 0.35, 0.1", &
+      "  ! pairs: name, kind 'R' or 'P' (then angle = guide direction, deg), links (on, from), joint", &
+      "  pair(1)%name = 'A', pair(1)%kind = 'R', pair(1)%links = 1, 0, pair(1)%at = 0, 0", &
+      "  pair(2)%name = 'B', pair(2)%kind = 'R', pair(2)%links = 2, 1, pair(2)%at = 0.1, 0", &
+      "  pair(3)%name = 'C', pair(3)%kind = 'R', pair(3)%links = 3, 2, pair(3)%at = 0.4, 0.2", &
+      "  pair(4)%name = 'D', pair(4)%kind = 'R', pair(4)%links = 3, 0, pair(4)%at = 0.3, 0", &
+      "  ! drives: angle law (deg) start + (k-1)*step or values(:); omega rad/s, eps rad/s^2", &
+      "  drive(1)%pair = 'A', drive(1)%start = 0, drive(1)%step = 15, drive(1)%omega = 20", &
+      "  force(1)%link = 2, force(1)%at = 0.25, 0.1, force(1)%angle = -90, force(1)%value = 50", &
+      "  moment(1)%link = 3, moment(1)%value = -20", &
+      "/"])
+  end subroutine write_linkage_template
+
+end module kinetostat_linkage_deck

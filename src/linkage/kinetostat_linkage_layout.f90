@@ -1,0 +1,787 @@
+!> Any planar linkage of lower pairs as a mechanism of the run pipeline: `&linkage` deck ->
+!> every step (continuation from the previous step's poses) -> step table (each drive's
+!> input, every pair's force, each drive's effort), its INPUT DATA echo with the structural
+!> analysis, and the legacy table layout.
+module kinetostat_linkage_layout
+  use kinetostat_kinds, only: wp, rad_to_deg, deg_to_rad
+  use kinetostat_deck, only: deck_source_t
+  use kinetostat_error, only: error_t
+  use kinetostat_text, only: int_str, real_str
+  use kinetostat_noise, only: noise_rel
+  use kinetostat_vec2, only: magnitude, angle_360_deg, clean_zero, rotate
+  use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_component, &
+    col_moment, col_length, col_other
+  use kinetostat_format, only: fixed_field, display_width
+  use kinetostat_labels, only: lang_ru, lang_en
+  use kinetostat_text_buffer, only: text_buffer_t
+  use kinetostat_mechanism, only: mechanism_t
+  use kinetostat_sketch, only: sketch_t
+  use kinetostat_drawing, only: drawing_t, force_load
+  use kinetostat_bodies, only: mass_model_t
+  use kinetostat_linkage, only: linkage_t, linkage_step_t, pair_r, pair_p, linkage_reference_pose, linkage_assemble, &
+    linkage_motion, linkage_statics, link_point_state, point_position
+  use kinetostat_linkage_structure, only: structure_lines
+  use kinetostat_linkage_deck, only: linkage_deck_t, read_linkage_deck, write_linkage_template, linkage_drive_values, &
+    linkage_load_value
+  implicit none
+  private
+  public :: linkage_mechanism_t, new_linkage, linkage_structure_text, linkage_solve_steps
+
+  !> Width of the first field of the RESULTS block.
+  integer, parameter :: first_width = 9
+  !> Width of every other field.
+  integer, parameter :: field_width = 12
+  !> Heading of RESULTS with --frame link.
+  character(*), parameter :: link_axes_heading = "REACTIONS IN THE AXES OF THE LINK EACH ACTS ON "// &
+    "(LINE 1 ALONG ITS X AXIS, LINE 2 ACROSS), N"
+  !> The same in Russian.
+  character(*), parameter :: link_axes_heading_ru = "РЕАКЦИИ В ОСЯХ ЗВЕНА, НА КОТОРОЕ ОНИ "// &
+    "ДЕЙСТВУЮТ (СТРОКА 1 ВДОЛЬ ОСИ X ЗВЕНА, СТРОКА 2 ПОПЕРЕК), Н"
+  !> A gap of the global and group-by-group reactions above this (relative) is a warning.
+  real(wp), parameter :: gap_tolerance = 1.0e-9_wp
+
+  !> A planar linkage of lower pairs with any number of drives.
+  type, extends(mechanism_t) :: linkage_mechanism_t
+    !> The validated deck.
+    type(linkage_deck_t) :: deck
+  contains
+    procedure :: read_deck
+    procedure :: solve
+    procedure :: write_results
+    procedure :: sketch
+    procedure :: force_plan
+    procedure :: mass_model
+  end type linkage_mechanism_t
+
+contains
+
+  !> A new linkage mechanism (the registry's constructor).
+  subroutine new_linkage(mech)
+    !> The mechanism.
+    class(mechanism_t), allocatable, intent(out) :: mech
+    allocate (linkage_mechanism_t :: mech)
+    mech%template_writer => write_linkage_template
+    mech%title_en = "KINETOSTAT  LINKAGE  FORCE ANALYSIS OF A PLANAR LINKAGE OF LOWER PAIRS"
+    mech%title_ru = "KINETOSTAT  LINKAGE  СИЛОВОЙ РАСЧЕТ ПЛОСКОГО "// &
+      "МЕХАНИЗМА С НИЗШИМИ ПАРАМИ"
+  end subroutine new_linkage
+
+  subroutine read_deck(self, source, error)
+    class(linkage_mechanism_t), intent(inout) :: self
+    type(deck_source_t), intent(in) :: source
+    type(error_t), allocatable, intent(out) :: error
+    call read_linkage_deck(source, self%deck, error)
+  end subroutine read_deck
+
+  !> `kinetostat structure DECK`: the structural analysis of a `&linkage` deck as text.
+  subroutine linkage_structure_text(source, lang, out, error)
+    !> The deck.
+    type(deck_source_t), intent(in) :: source
+    !> lang_en or lang_ru.
+    integer, intent(in) :: lang
+    !> Where the lines go.
+    type(text_buffer_t), intent(inout) :: out
+    type(error_t), allocatable, intent(out) :: error
+    type(linkage_deck_t) :: deck
+    character(len=160), allocatable :: lines(:)
+    integer :: i
+    call read_linkage_deck(source, deck, error)
+    if (allocated(error)) return
+    call structure_lines(deck%mech, lang, lines)
+    call out%put(" DECK: "//source%path)
+    if (len_trim(deck%title) > 0) call out%put(" TITLE: "//trim(deck%title))
+    !GCC$ novector
+    do i = 1, size(lines)
+      call out%put(" "//trim(lines(i)))
+    end do
+  end subroutine linkage_structure_text
+
+  !> The topology for a drawing: each moving link joins its joints (a block, drawn at its
+  !> sliding pair's joint, when it slides on another link's guide); pivots are the turning
+  !> pairs with the frame, guides the sliding pairs' lines.
+  pure subroutine sketch(self, out)
+    class(linkage_mechanism_t), intent(in) :: self
+    type(sketch_t), intent(out) :: out
+    character(len=16), allocatable :: joints(:)
+    integer :: i, k, slide
+    associate (mech => self%deck%mech)
+      !GCC$ novector
+      do i = 1, size(mech%links)
+        allocate (joints(0))
+        slide = 0
+        !GCC$ novector
+        do k = 1, size(mech%pairs)
+          associate (pr => mech%pairs(k))
+            if (pr%a /= i .and. pr%b /= i) cycle
+            if (pr%kind == pair_p .and. pr%guide /= i .and. slide == 0) then
+              slide = k
+              joints = [character(len=16) :: pr%name, joints]
+            else
+              joints = [character(len=16) :: joints, pr%name]
+            end if
+          end associate
+        end do
+        if (slide > 0) then
+          associate (pr => mech%pairs(slide))
+            call out%add_link(link_name(mech, i), joints, guide_angle(mech, slide), axis_link(mech, pr%guide))
+          end associate
+        else
+          call out%add_link(link_name(mech, i), joints)
+        end if
+        deallocate (joints)
+      end do
+      !GCC$ novector
+      do k = 1, size(mech%pairs)
+        associate (pr => mech%pairs(k))
+          if (pr%kind == pair_r .and. (pr%a == 0 .or. pr%b == 0)) call out%add_pivot(trim(pr%name))
+          if (pr%kind == pair_p) call out%add_guide(trim(pr%name), guide_angle(mech, k), axis_link(mech, pr%guide))
+        end associate
+      end do
+      if (self%deck%g > 0.0_wp) out%down = mech%gravity / self%deck%g
+    end associate
+  end subroutine sketch
+
+  !> A sliding pair's guide direction relative to the x axis of its guide link (the frame:
+  !> absolute), deg.
+  pure real(wp) function guide_angle(mech, k)
+    type(linkage_t), intent(in) :: mech
+    integer, intent(in) :: k
+    guide_angle = atan2(mech%pairs(k)%u(2), mech%pairs(k)%u(1))
+    if (mech%pairs(k)%guide > 0) guide_angle = guide_angle - mech%links(mech%pairs(k)%guide)%angle0
+    guide_angle = guide_angle * rad_to_deg
+  end function guide_angle
+
+  !> The label whose phi<label> column gives link i's axis ("" for the frame).
+  pure function axis_link(mech, i) result(text)
+    type(linkage_t), intent(in) :: mech
+    integer, intent(in) :: i
+    character(len=:), allocatable :: text
+    text = ""
+    if (i > 0) text = link_name(mech, i)
+  end function axis_link
+
+  !> The forces of row `k` on its drawing (--format svg --at K): every pair force at its
+  !> joint, the deck's forces (Q<i>) and moments (MQ<i>, at the link's centre of mass), the
+  !> weights, inertia forces and moments, and each drive's effort at its joint.
+  pure subroutine force_plan(self, table, k, drawing, error)
+    class(linkage_mechanism_t), intent(in) :: self
+    type(step_table_t), intent(in) :: table
+    integer, intent(in) :: k
+    type(drawing_t), intent(inout) :: drawing
+    type(error_t), allocatable, intent(out) :: error
+    character(len=:), allocatable :: input, effort
+    type(mass_model_t) :: model
+    real(wp) :: th, p(2), w(2)
+    integer :: i, c
+    associate (mech => self%deck%mech, deck => self%deck)
+      !GCC$ novector
+      do i = 1, size(mech%pairs)
+        call drawing%pair_from_table(table, k, force_name(mech, i), trim(mech%pairs(i)%name), error)
+        if (allocated(error)) return
+      end do
+      !GCC$ novector
+      do i = 1, size(mech%forces)
+        associate (f => mech%forces(i), lk => mech%links(mech%forces(i)%link))
+          th = table%rows(table%column_index("phi"//link_name(mech, f%link)), k) * deg_to_rad - lk%angle0
+          p = drawing%at("S"//link_name(mech, f%link)) + rotate(f%at - lk%s, th)
+          w = f%dir
+          if (f%follow) w = rotate(w, th)
+          call drawing%add_force("Q"//int_str(i), force_load, p, linkage_load_value(deck, deck%force_load(i), k) * w, &
+                                 link_name(mech, f%link))
+        end associate
+      end do
+      !GCC$ novector
+      do i = 1, size(mech%moment_link)
+        call drawing%add_moment("MQ"//int_str(i), force_load, drawing%at("S"//link_name(mech, mech%moment_link(i))), &
+          linkage_load_value(deck, deck%moment_load(i), k), link_name(mech, mech%moment_link(i)))
+      end do
+      call self%mass_model(model)
+      call drawing%add_body_loads(table, k, model)
+      !GCC$ novector
+      do i = 1, size(mech%drives)
+        call drive_names(mech, i, input, effort)
+        c = table%column_index(effort)
+        if (c > 0 .and. mech%pairs(mech%drives(i)%pair)%kind == pair_r) then
+          call drawing%add_moment(effort, force_load, drawing%at(trim(mech%pairs(mech%drives(i)%pair)%name)), &
+            table%rows(c, k))
+        end if
+      end do
+    end associate
+  end subroutine force_plan
+
+  !> The moving links' masses, inertias and centres of mass (S<i>), and gravity.
+  pure subroutine mass_model(self, model)
+    class(linkage_mechanism_t), intent(in) :: self
+    type(mass_model_t), intent(out) :: model
+    integer :: i
+    associate (mech => self%deck%mech)
+      !GCC$ novector
+      do i = 1, size(mech%links)
+        call model%add(link_name(mech, i), "S"//link_name(mech, i), mech%links(i)%m, mech%links(i)%j)
+      end do
+      model%gravity = mech%gravity
+    end associate
+  end subroutine mass_model
+
+  !> Name of link i (0: the frame): its deck number.
+  pure function link_name(mech, i) result(text)
+    type(linkage_t), intent(in) :: mech
+    integer, intent(in) :: i
+    character(len=:), allocatable :: text
+    if (i == 0) then
+      text = int_str(mech%frame_id)
+    else
+      text = int_str(mech%links(i)%id)
+    end if
+  end function link_name
+
+  !> Column name of pair k's force, F<a><b>.
+  pure function force_name(mech, k) result(text)
+    type(linkage_t), intent(in) :: mech
+    integer, intent(in) :: k
+    character(len=:), allocatable :: text
+    text = "F"//link_name(mech, mech%pairs(k)%a)//link_name(mech, mech%pairs(k)%b)
+  end function force_name
+
+  !> Column name of drive d's input (phi<a> or s<a>) and of its effort (M<a> or F_drive<a>).
+  pure subroutine drive_names(mech, d, input, effort)
+    type(linkage_t), intent(in) :: mech
+    integer, intent(in) :: d
+    character(len=:), allocatable, intent(out) :: input, effort
+    associate (pr => mech%pairs(mech%drives(d)%pair))
+      if (pr%kind == pair_r) then
+        ! a drive between two moving links: its input is the relative angle phi<a><b>
+        input = "phi"//link_name(mech, pr%a)
+        if (pr%b /= 0) input = input//link_name(mech, pr%b)
+        effort = "M"//link_name(mech, pr%a)
+      else
+        input = "s"//link_name(mech, pr%a)
+        effort = "F_drive"//link_name(mech, pr%a)
+      end if
+    end associate
+  end subroutine drive_names
+
+  !> Values of a row: the drives' inputs, per pair |F|, angle, x, y (and N, M of a sliding
+  !> pair), the drives' efforts.
+  pure integer function row_size(mech)
+    type(linkage_t), intent(in) :: mech
+    row_size = 2 * size(mech%drives) + 4 * size(mech%pairs) + 2 * count(mech%pairs%kind == pair_p)
+  end function row_size
+
+  !> Every step of rows first..last: poses by continuation from `q` (at drive values
+  !> `dq_from`; both updated to the last step), then motion and reactions. Used by `solve`
+  !> and the tests.
+  pure subroutine linkage_solve_steps(deck, path, first, last, q, dq_from, steps, error)
+    !> Validated deck.
+    type(linkage_deck_t), intent(in) :: deck
+    !> Deck path for messages.
+    character(*), intent(in) :: path
+    !> Steps.
+    integer, intent(in) :: first, last
+    !> Poses and the drive values they are assembled at (in: before `first`; out: at `last`).
+    real(wp), intent(inout) :: q(:), dq_from(:)
+    !> The steps' results.
+    type(linkage_step_t), intent(out) :: steps(first:last)
+    type(error_t), allocatable, intent(out) :: error
+    real(wp), allocatable :: dq(:), dv(:), da(:), fval(:), mval(:)
+    integer :: k, i, nd
+    character(len=:), allocatable :: where
+    nd = size(deck%mech%drives)
+    allocate (dq(nd), dv(nd), da(nd), fval(size(deck%force_load)), mval(size(deck%moment_load)))
+    !GCC$ novector
+    do k = first, last
+      call linkage_drive_values(deck, k, dq, dv, da)
+      where = path//": &linkage: step "//int_str(k)//" ("//drive_text(deck, dq)//")"
+      call linkage_assemble(deck%mech, dq_from, dq, q, where, error)
+      if (allocated(error)) return
+      dq_from = dq
+      steps(k)%q = q
+      allocate (steps(k)%qd(size(q)), steps(k)%qdd(size(q)))
+      call linkage_motion(deck%mech, q, dv, da, steps(k)%qd, steps(k)%qdd, error)
+      if (allocated(error)) then
+        error%message = where//": the velocities are undetermined (a dead position)"
+        return
+      end if
+      !GCC$ novector
+      do i = 1, size(fval)
+        fval(i) = linkage_load_value(deck, deck%force_load(i), k)
+      end do
+      !GCC$ novector
+      do i = 1, size(mval)
+        mval(i) = linkage_load_value(deck, deck%moment_load(i), k)
+      end do
+      call linkage_statics(deck%mech, fval, mval, steps(k), error)
+      if (allocated(error)) then
+        error%message = where//": the reactions are undetermined (a dead position)"
+        return
+      end if
+    end do
+  end subroutine linkage_solve_steps
+
+  !> "phi1 = 30 deg, phi4 = 162 deg" for messages.
+  pure function drive_text(deck, dq) result(text)
+    type(linkage_deck_t), intent(in) :: deck
+    real(wp), intent(in) :: dq(:)
+    character(len=:), allocatable :: text, input, effort
+    character(len=32) :: buf
+    integer :: d
+    text = ""
+    !GCC$ novector
+    do d = 1, size(dq)
+      call drive_names(deck%mech, d, input, effort)
+      if (d > 1) text = text//", "
+      if (deck%mech%pairs(deck%mech%drives(d)%pair)%kind == pair_r) then
+        write (buf, '(g0.10)') dq(d) * rad_to_deg
+        text = text//input//" = "//trim(adjustl(buf))//" deg"
+      else
+        write (buf, '(g0.10)') dq(d)
+        text = text//input//" = "//trim(adjustl(buf))//" m"
+      end if
+    end do
+  end function drive_text
+
+  !> The block's steps into the step table, with the echo (first block) and the self-check.
+  subroutine solve(self, table, error)
+    class(linkage_mechanism_t), intent(in) :: self
+    type(step_table_t), intent(inout) :: table
+    type(error_t), allocatable, intent(out) :: error
+    type(linkage_step_t), allocatable :: steps(:)
+    real(wp), allocatable :: q(:), dq(:), residual(:), mismatch(:)
+    character(len=:), allocatable :: input, effort
+    integer :: first, last, k, d, nd, np, nq
+    real(wp) :: gap
+    associate (mech => self%deck%mech)
+      nd = size(mech%drives)
+      np = size(mech%pairs)
+      nq = 3 * size(mech%links)
+      call table%block_range(self%deck%n, first, last)
+      if (table%first_block()) then
+        allocate (table%columns(0))
+        !GCC$ novector
+        do d = 1, nd
+          call drive_names(mech, d, input, effort)
+          if (mech%pairs(mech%drives(d)%pair)%kind == pair_r) then
+            call table%add_column(input, "deg", merge(col_input_angle, col_other, d == 1))
+          else
+            call table%add_column(input, "m", col_length)
+          end if
+        end do
+        !GCC$ novector
+        do k = 1, np
+          call table%add_column(force_name(mech, k), "N", col_force)
+          call table%add_column(force_name(mech, k)//"G", "deg", col_force_angle)
+          call table%add_column(force_name(mech, k)//"x", "N", col_component)
+          call table%add_column(force_name(mech, k)//"y", "N", col_component)
+          if (mech%pairs(k)%kind == pair_p) then
+            call table%add_column(force_name(mech, k)//"N", "N", col_component)
+            call table%add_column(force_name(mech, k)//"M", "N*m", col_moment)
+          end if
+        end do
+        !GCC$ novector
+        do d = 1, nd
+          call drive_names(mech, d, input, effort)
+          if (mech%pairs(mech%drives(d)%pair)%kind == pair_r) then
+            call table%add_column(effort, "N*m", col_moment)
+          else
+            call table%add_column(effort, "N", col_component)
+          end if
+        end do
+        table%input_column = 1
+        if (len_trim(self%deck%title) > 0) table%subtitle = trim(self%deck%title)
+        call echo_deck(self%deck, table)
+        ! the continuation starts at the reference position
+        allocate (dq(nd))
+        !GCC$ novector
+        do d = 1, nd
+          dq(d) = mech%drives(d)%q_ref
+        end do
+        table%carry = [linkage_reference_pose(mech), dq]
+      end if
+      q = table%carry(1:nq)
+      dq = table%carry(nq + 1:nq + nd)
+      allocate (steps(first:last))
+      call linkage_solve_steps(self%deck, table%deck, first, last, q, dq, steps, error)
+      if (allocated(error)) return
+      table%carry = [q, dq]
+      call table%allocate_rows(last - first + 1)
+      allocate (residual(first:last), mismatch(first:last))
+      gap = 0.0_wp
+      !GCC$ novector
+      do k = first, last
+        call fill_row(self%deck, k, steps(k), table%rows(:, k - first + 1))
+        residual(k) = steps(k)%residual
+        mismatch(k) = steps(k)%mismatch
+        gap = max(gap, steps(k)%solver_gap)
+      end do
+      if (table%kinematics_wanted) then
+        !GCC$ novector
+        do k = first, last
+          call put_kinematics(mech, table, k - first + 1, steps(k))
+        end do
+        if (table%first_block()) call table%finish_columns()
+      end if
+      call drive_names(mech, 1, input, effort)
+      call table%set_selfcheck(maxval(residual), maxval(mismatch), effort)
+      table%mismatch_label = "MAX MISMATCH OF THE DRIVES' EFFORTS, POWER BALANCE"
+      if (gap > gap_tolerance) then
+        call table%add_warning("the group-by-group reactions differ from the global solve by "// &
+          real_str(gap)//" of the largest reaction")
+      end if
+    end associate
+  end subroutine solve
+
+  !> One row of the step table.
+  pure subroutine fill_row(deck, k, s, v)
+    type(linkage_deck_t), intent(in) :: deck
+    integer, intent(in) :: k
+    type(linkage_step_t), intent(in) :: s
+    real(wp), intent(out) :: v(:)
+    real(wp), allocatable :: dq(:), dv(:), da(:)
+    real(wp) :: floor, f(2), lever
+    integer :: d, ip, pos, nd
+    nd = size(deck%mech%drives)
+    allocate (dq(nd), dv(nd), da(nd))
+    call linkage_drive_values(deck, k, dq, dv, da)
+    floor = 0.0_wp
+    !GCC$ novector
+    do ip = 1, size(deck%mech%pairs)
+      floor = max(floor, magnitude(s%f(:, ip)))
+    end do
+    floor = noise_rel * floor
+    lever = floor * deck%mech%size
+    pos = 0
+    !GCC$ novector
+    do d = 1, nd
+      pos = pos + 1
+      if (deck%mech%pairs(deck%mech%drives(d)%pair)%kind == pair_r) then
+        v(pos) = dq(d) * rad_to_deg
+      else
+        v(pos) = dq(d)
+      end if
+    end do
+    !GCC$ novector
+    do ip = 1, size(deck%mech%pairs)
+      f = s%f(:, ip)
+      if (magnitude(f) <= floor) f = 0.0_wp
+      where (abs(f) <= floor) f = 0.0_wp
+      v(pos + 1) = magnitude(f)
+      v(pos + 2) = angle_360_deg(f)
+      v(pos + 3:pos + 4) = f
+      pos = pos + 4
+      if (deck%mech%pairs(ip)%kind == pair_p) then
+        v(pos + 1) = merge(0.0_wp, s%normal(ip), abs(s%normal(ip)) <= floor)
+        v(pos + 2) = merge(0.0_wp, s%couple(ip), abs(s%couple(ip)) <= lever)
+        pos = pos + 2
+      end if
+    end do
+    !GCC$ novector
+    do d = 1, nd
+      pos = pos + 1
+      if (deck%mech%pairs(deck%mech%drives(d)%pair)%kind == pair_r) then
+        v(pos) = merge(0.0_wp, s%effort(d), abs(s%effort(d)) <= lever)
+      else
+        v(pos) = merge(0.0_wp, s%effort(d), abs(s%effort(d)) <= floor)
+      end if
+    end do
+    !GCC$ novector
+    do d = 1, size(v)
+      v(d) = clean_zero(v(d))
+    end do
+  end subroutine fill_row
+
+  !> The kinematics columns of row `r`: joints, links' angles and speeds, centres of mass and
+  !> their accelerations, pair force components.
+  pure subroutine put_kinematics(mech, table, r, s)
+    type(linkage_t), intent(in) :: mech
+    type(step_table_t), intent(inout) :: table
+    integer, intent(in) :: r
+    type(linkage_step_t), intent(in) :: s
+    real(wp) :: x(2), vs(2), as(2), floor, f(2)
+    integer :: k, i
+    !GCC$ novector
+    do k = 1, size(mech%pairs)
+      associate (pr => mech%pairs(k))
+        if (pr%kind == pair_r) then
+          i = pr%a
+          if (i == 0) i = pr%b
+        else
+          i = pr%a + pr%b - pr%guide
+        end if
+        call table%put_point(r, trim(pr%name), point_position(mech, s%q, i, pr%at))
+      end associate
+    end do
+    !GCC$ novector
+    do i = 1, size(mech%links)
+      call table%put_link(r, link_name(mech, i), mech%links(i)%angle0 + s%q(3 * i), s%qd(3 * i), s%qdd(3 * i))
+    end do
+    !GCC$ novector
+    do i = 1, size(mech%links)
+      call link_point_state(mech, s%q, s%qd, s%qdd, i, mech%links(i)%s, x, vs, as)
+      call table%put_point(r, "S"//link_name(mech, i), x)
+      call table%put_acceleration(r, "S"//link_name(mech, i), as)
+    end do
+    floor = 0.0_wp
+    !GCC$ novector
+    do k = 1, size(mech%pairs)
+      floor = max(floor, magnitude(s%f(:, k)))
+    end do
+    floor = noise_rel * floor
+    !GCC$ novector
+    do k = 1, size(mech%pairs)
+      f = s%f(:, k)
+      where (abs(f) <= floor) f = 0.0_wp
+      call table%put_components(r, force_name(mech, k), f, 0.0_wp)
+    end do
+    ! --frame link: each pair force in the axes of the link it acts on (the frame: global)
+    !GCC$ novector
+    do k = 1, size(mech%pairs)
+      i = mech%pairs(k)%a
+      f = s%f(:, k)
+      if (magnitude(f) <= floor) f = 0.0_wp
+      if (i > 0) f = rotate(f, -(mech%links(i)%angle0 + s%q(3 * i)))
+      where (abs(f) <= floor) f = 0.0_wp
+      call table%put_link_axes(r, force_name(mech, k), f, link_name(mech, i))
+    end do
+  end subroutine put_kinematics
+
+  !> The INPUT DATA echo: title data, links, pairs, drives, loads and the structural analysis.
+  pure subroutine echo_deck(deck, table)
+    type(linkage_deck_t), intent(in) :: deck
+    type(step_table_t), intent(inout) :: table
+    character(len=160), allocatable :: lines(:)
+    character(len=:), allocatable :: input, effort
+    integer :: i, k
+    associate (mech => deck%mech)
+      call table%echo_int("FRAME", mech%frame_id, "")
+      call table%echo_real("G", deck%g, "m/s^2")
+      call table%echo_real("GRAVITY_ANGLE", deck%gravity_angle, "deg")
+      call table%echo_int("N", deck%n, "steps")
+      !GCC$ novector
+      do i = 1, size(mech%links)
+        call table%echo_line("   LINK "//link_name(mech, i))
+        call table%echo_real("  M", mech%links(i)%m, "kg")
+        call table%echo_real("  J", mech%links(i)%j, "kg*m^2")
+        call table%echo_array("  S", mech%links(i)%s, "m")
+      end do
+      !GCC$ novector
+      do k = 1, size(mech%pairs)
+        associate (pr => mech%pairs(k))
+          if (pr%kind == pair_r) then
+            call table%echo_line("   PAIR "//trim(pr%name)//": R, LINKS "//link_name(mech, pr%a)//" AND "// &
+                                 link_name(mech, pr%b))
+          else
+            call table%echo_line("   PAIR "//trim(pr%name)//": P, LINKS "//link_name(mech, pr%a)//" AND "// &
+                                 link_name(mech, pr%b)//", GUIDE ON "//link_name(mech, pr%guide))
+            call table%echo_real("  ANGLE", angle_360_deg(pr%u), "deg")
+          end if
+          call table%echo_array("  AT", pr%at, "m")
+        end associate
+      end do
+      !GCC$ novector
+      do k = 1, size(mech%drives)
+        call drive_names(mech, k, input, effort)
+        call table%echo_line("   DRIVE "//int_str(k)//": PAIR "//trim(deck%drive_pair(k))//", INPUT "//input// &
+                             ", EFFORT "//effort)
+        if (mech%pairs(mech%drives(k)%pair)%kind == pair_r) then
+          call table%echo_real("  REFERENCE", mech%drives(k)%q_ref * rad_to_deg, "deg")
+          if (deck%listed(k)) then
+            call table%echo_array("  VALUES", deck%values(:, k), "deg")
+          else
+            call table%echo_real("  START", deck%start(k), "deg")
+            call table%echo_real("  STEP", deck%step(k), "deg")
+          end if
+          call table%echo_real("  OMEGA", deck%omega(k), "rad/s")
+          call table%echo_real("  EPS", deck%eps(k), "rad/s^2")
+        else
+          if (deck%listed(k)) then
+            call table%echo_array("  VALUES", deck%values(:, k), "m")
+          else
+            call table%echo_real("  START", deck%start(k), "m")
+            call table%echo_real("  STEP", deck%step(k), "m")
+          end if
+          call table%echo_real("  OMEGA", deck%omega(k), "m/s")
+          call table%echo_real("  EPS", deck%eps(k), "m/s^2")
+        end if
+      end do
+      !GCC$ novector
+      do k = 1, size(mech%forces)
+        call table%echo_line("   FORCE "//int_str(k)//": LINK "//link_name(mech, mech%forces(k)%link)// &
+                             trim(merge(", FOLLOWS THE LINK", "                  ", mech%forces(k)%follow)))
+        call table%echo_array("  AT", mech%forces(k)%at, "m")
+        call table%echo_real("  ANGLE", angle_360_deg(mech%forces(k)%dir), "deg")
+        call echo_schedule(table, deck%force_load(k)%value, deck%force_load(k)%column, "N")
+      end do
+      !GCC$ novector
+      do k = 1, size(mech%moment_link)
+        call table%echo_line("   MOMENT "//int_str(k)//": LINK "//link_name(mech, mech%moment_link(k)))
+        call echo_schedule(table, deck%moment_load(k)%value, deck%moment_load(k)%column, "N*m")
+      end do
+      call structure_lines(mech, lang_en, lines)
+      call table%echo_heading(trim(lines(1)))
+      !GCC$ novector
+      do i = 2, size(lines)
+        call table%echo_line("   "//trim(lines(i)))
+      end do
+    end associate
+  contains
+    pure subroutine echo_schedule(table, value, column, unit)
+      type(step_table_t), intent(inout) :: table
+      real(wp), intent(in) :: value
+      integer, intent(in) :: column
+      character(*), intent(in) :: unit
+      if (column > 0) then
+        call table%echo_int("  COLUMN", column, "")
+      else
+        call table%echo_real("  VALUE", value, unit)
+      end if
+    end subroutine echo_schedule
+  end subroutine echo_deck
+
+  !> The RESULTS block: per step a line of the inputs, the pairs' magnitudes and the efforts,
+  !> a line of the pairs' angles.
+  pure subroutine write_results(self, table, lang, first, last, out, later)
+    class(linkage_mechanism_t), intent(in) :: self
+    type(step_table_t), intent(in) :: table
+    integer, intent(in) :: lang
+    integer, intent(in) :: first, last
+    type(text_buffer_t), intent(inout) :: out
+    type(text_buffer_t), intent(inout) :: later
+    character(len=:), allocatable :: line1, line2, input, effort, deg, newton, newton_m, metre
+    integer, allocatable :: along(:)
+    integer :: k, ip, d, nd, np, pos
+    nd = size(self%deck%mech%drives)
+    np = size(self%deck%mech%pairs)
+    allocate (along(np), source=0)
+    associate (mech => self%deck%mech)
+      if (table%link_frame) then
+        !GCC$ novector
+        do ip = 1, np
+          along(ip) = table%column_index(force_name(mech, ip)//"_along")
+        end do
+      end if
+      if (first == 1 .and. table%first_block()) then
+        if (table%link_frame) then
+          if (lang == lang_ru) then
+            call out%put(" "//link_axes_heading_ru)
+          else
+            call out%put(" "//link_axes_heading)
+          end if
+        end if
+        if (lang == lang_ru) then
+          deg = "град"; newton = "Н"; newton_m = "Н*м"; metre = "м"
+        else
+          deg = "deg"; newton = "N"; newton_m = "N*m"; metre = "m"
+        end if
+        line1 = ""
+        line2 = ""
+        !GCC$ novector
+        do d = 1, nd
+          call drive_names(mech, d, input, effort)
+          line1 = line1//right(upper_ascii(input), merge(first_width, field_width, d == 1))
+          line2 = line2//repeat(" ", merge(first_width, field_width, d == 1))
+        end do
+        !GCC$ novector
+        do ip = 1, np
+          if (table%link_frame) then
+            line1 = line1//right(force_name(mech, ip)//"_ALONG", field_width)
+            line2 = line2//right(force_name(mech, ip)//"_ACROSS", field_width)
+          else
+            line1 = line1//right(force_name(mech, ip), field_width)
+            line2 = line2//right(force_name(mech, ip)//"G", field_width)
+          end if
+        end do
+        !GCC$ novector
+        do d = 1, nd
+          call drive_names(mech, d, input, effort)
+          line1 = line1//right(upper_ascii(effort), field_width)
+        end do
+        call out%put(trim(line1))
+        call out%put(trim(line2))
+        line1 = ""
+        line2 = ""
+        !GCC$ novector
+        do d = 1, nd
+          if (mech%pairs(mech%drives(d)%pair)%kind == pair_r) then
+            line1 = line1//right(deg, merge(first_width, field_width, d == 1))
+          else
+            line1 = line1//right(metre, merge(first_width, field_width, d == 1))
+          end if
+          line2 = line2//repeat(" ", merge(first_width, field_width, d == 1))
+        end do
+        !GCC$ novector
+        do ip = 1, np
+          line1 = line1//right(newton, field_width)
+          if (table%link_frame) then
+            line2 = line2//right(newton, field_width)
+          else
+            line2 = line2//right(deg, field_width)
+          end if
+        end do
+        !GCC$ novector
+        do d = 1, nd
+          if (mech%pairs(mech%drives(d)%pair)%kind == pair_r) then
+            line1 = line1//right(newton_m, field_width)
+          else
+            line1 = line1//right(newton, field_width)
+          end if
+        end do
+        call out%put(trim(line1))
+        call out%put(trim(line2))
+      end if
+      !GCC$ novector
+      do k = first, last
+        associate (v => table%rows(:, k))
+          line1 = ""
+          line2 = ""
+          !GCC$ novector
+          do d = 1, nd
+            line1 = line1//fixed_field(v(d), merge(first_width, field_width, d == 1), &
+                                       merge(2, 4, mech%pairs(mech%drives(d)%pair)%kind == pair_r))
+            line2 = line2//repeat(" ", merge(first_width, field_width, d == 1))
+          end do
+          pos = nd
+          !GCC$ novector
+          do ip = 1, np
+            if (table%link_frame) then
+              line1 = line1//fixed_field(v(along(ip)), field_width, 2)
+              line2 = line2//fixed_field(v(along(ip) + 1), field_width, 2)
+            else
+              line1 = line1//fixed_field(v(pos + 1), field_width, 2)
+              line2 = line2//fixed_field(v(pos + 2), field_width, 2)
+            end if
+            pos = pos + 4
+            if (mech%pairs(ip)%kind == pair_p) pos = pos + 2
+          end do
+          !GCC$ novector
+          do d = 1, nd
+            line1 = line1//fixed_field(v(pos + d), field_width, 2)
+          end do
+          call out%put(line1)
+          call out%put(trim(line2))
+        end associate
+      end do
+    end associate
+    if (.false.) call later%put("")
+  end subroutine write_results
+
+  !> `text` right-justified in `width` display characters.
+  pure function right(text, width) result(field)
+    character(*), intent(in) :: text
+    integer, intent(in) :: width
+    character(len=:), allocatable :: field
+    field = repeat(" ", max(0, width - display_width(text)))//text
+  end function right
+
+  !> Upper case of the ASCII letters ("phi1" -> "PHI1").
+  pure function upper_ascii(text) result(up)
+    character(*), intent(in) :: text
+    character(len=len(text)) :: up
+    integer :: i
+    up = text
+    !GCC$ novector
+    do i = 1, len(text)
+      if (text(i:i) >= "a" .and. text(i:i) <= "z") up(i:i) = achar(iachar(text(i:i)) - 32)
+    end do
+  end function upper_ascii
+
+end module kinetostat_linkage_layout

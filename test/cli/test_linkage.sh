@@ -1,0 +1,91 @@
+# &linkage decks (docs/linkage.md): the structural analysis printed by `kinetostat structure`
+# (English and Russian) and echoed in INPUT DATA; the &assur twins give the same forces (every
+# common column but the angles, whose printed digits are absolute: <= 1e-12 of the step's
+# largest pair force, the CSV's 13 significant digits); wrong decks exit 2 with one line; a
+# dead position of the class-III group exits 3 naming the step and the group.
+
+lk_structure() {  # NAME DECK LANG EXPECTED-LINE...
+  local name="$1" deck="$2" lang="$3"; shift 3
+  run_ks structure "$deck" --lang "$lang"
+  if [ "$rc" -ne 0 ]; then fail "$name" "exit $rc: $(head -c 300 "$err")"; return; fi
+  local line
+  for line in "$@"; do
+    if ! grep -qxF " $line" "$out"; then fail "$name" "no line ' $line' in: $(cat "$out")"; return; fi
+  done
+  pass
+}
+lk_structure linkage-structure-class3 data/class3.nml en "STRUCTURE FORMULA: I(0,1) -> III(2,3,4,5)" \
+  "CLASS OF THE MECHANISM: III" "W = 3n - 2p5 - p4 = 3 x 5 - 2 x 7 - 0 = 1 = NUMBER OF DRIVES"
+lk_structure linkage-structure-fivebar data/fivebar.nml en "STRUCTURE FORMULA: I(0,1) -> I(0,4) -> II(2,3)" \
+  "CLASS OF THE MECHANISM: II" "II(2,3)  DYAD (GROUP OF CLASS II, ORDER 2), KIND RRR"
+lk_structure linkage-structure-slider data/linkage_slider_crank.nml en "II(2,3)  DYAD (GROUP OF CLASS II, ORDER 2), KIND RRP"
+lk_structure linkage-structure-excavator docs/examples/excavator.nml en "STRUCTURE FORMULA: I(0,1,2,3) -> I(1,4,5,6)" \
+  "W = 3n - 2p5 - p4 = 3 x 6 - 2 x 8 - 0 = 2 = NUMBER OF DRIVES"
+lk_structure linkage-structure-ru data/class3.nml ru "ФОРМУЛА СТРОЕНИЯ: I(0,1) -> III(2,3,4,5)" "КЛАСС МЕХАНИЗМА: III"
+
+# every run's INPUT DATA echoes the structure
+run_ks data/class3.nml
+if [ "$rc" -eq 0 ] && grep -qF "STRUCTURE FORMULA: I(0,1) -> III(2,3,4,5)" "$out"; then pass
+else fail linkage-echo-structure "INPUT DATA does not echo the structure formula"; fi
+
+# structure of another kind: exit 2, one line
+run_ks structure data/assur_fourbar.nml
+if [ "$rc" -eq 2 ] && [ "$(wc -l <"$err")" -eq 1 ] && grep -q "only &linkage decks" "$err"; then pass
+else fail linkage-structure-other-kind "exit $rc: $(cat "$err")"; fi
+
+# the &assur twins: same forces
+for pair in "linkage_fourbar assur_fourbar" "linkage_slider_crank assur_slider_crank"; do
+  set -- $pair
+  run_ks "data/$1.nml" --format csv; cp "$out" "$cli_tmp/lk_new.csv"
+  run_ks "data/$2.nml" --format csv --quiet; cp "$out" "$cli_tmp/lk_old.csv"
+  python3 - "$cli_tmp/lk_new.csv" "$cli_tmp/lk_old.csv" <<'PY' && pass || fail "linkage-equals-$2" "forces differ (see above)"
+import csv, sys
+new = list(csv.DictReader(open(sys.argv[1])))
+old = list(csv.DictReader(open(sys.argv[2])))
+assert len(new) == len(old) and len(new) > 1, (len(new), len(old))
+common = [c for c in old[0] if c in new[0] and c != "phi1" and not c.endswith("G")]
+assert len(common) >= 13, common
+worst = 0.0
+for a, b in zip(new, old):
+    assert float(a["phi1"]) == float(b["phi1"])
+    big = max(abs(float(b[c])) for c in b if c.startswith("F") and c[1:].isdigit())
+    for c in common:
+        d = abs(float(a[c]) - float(b[c])) / big
+        if d > worst: worst, where = d, (b["phi1"], c, a[c], b[c])
+if worst > 1e-12:
+    print("worst", worst, where); sys.exit(1)
+PY
+done
+
+# wrong decks: one line, exit 2
+lk_deck() { deck_with "$@"; }
+expect_input_error linkage-no-drive "W = 3n - 2p5 = 3 x 5 - 2 x 7 = 1 but 0 drive|drive: at least one drive" \
+  "$(deck_with lk_nodrive data/class3.nml 's/^  drive(1).*$//')"
+expect_input_error linkage-w-missing "W = 3n - 2p5 = 3 x 4 - 2 x 5 = 2 but 1 drive\(s\): 1 constraint\(s\) missing" \
+  "$(deck_with lk_onedrive data/fivebar.nml 's/^  drive(2).*$//')"
+expect_input_error linkage-w-surplus "W = 3n - 2p5 = 3 x 5 - 2 x 7 = 1 but 2 drive\(s\): 1 surplus constraint\(s\)" \
+  "$(deck_with lk_twodrives data/class3.nml "s/^  drive(1)%pair = 'O'.*$/&\n  drive(2)%pair = 'B', drive(2)%start = 0, drive(2)%step = 1, drive(2)%omega = 1/")"
+expect_input_error linkage-pair-kind "pair\(2\)%kind: must be 'R' \(turning\) or 'P' \(sliding\), got 'abc'" \
+  "$(deck_with lk_kind data/fivebar.nml "s/pair(2)%kind = 'R'/pair(2)%kind = 'abc'/")"
+expect_input_error linkage-friction "pair\(2\)%f: friction is not yet supported" \
+  "$(deck_with lk_friction data/fivebar.nml "s/pair(2)%at = 0.1, 0/pair(2)%at = 0.1, 0, pair(2)%f = 0.1/")"
+expect_input_error linkage-unknown-pair "drive\(1\)%pair: no pair is named 'Q'" \
+  "$(deck_with lk_badpair data/class3.nml "s/drive(1)%pair = 'O'/drive(1)%pair = 'Q'/")"
+expect_input_error linkage-unknown-link "pair\(3\)%links\(1\): no link 9" \
+  "$(deck_with lk_badlink data/class3.nml "s/pair(3)%links = 5, 2/pair(3)%links = 9, 2/")"
+
+# a dead position of the class-III group: exit 3 naming the step and the group
+run_ks data/class3.nml --set 'pair(6)%at=0.641,-0.35'
+if [ "$rc" -eq 3 ] && grep -q "step [0-9]* (phi1 = [0-9.]* deg): .* in group III(2,3,4,5)" "$err" && [ ! -s "$out" ]; then pass
+else fail linkage-dead-position "exit $rc: $(cat "$err")"; fi
+
+# --frame link: each pair force in the axes of the link it acts on; at phi1 = 0 the crank's
+# axis is +x, so F10_along = F10x and F10_across = F10y
+run_ks data/class3.nml --format csv --frame link
+python3 - "$out" <<'PY' && pass || fail linkage-frame-link "F10 in the crank's axes differs from its global components at phi1 = 0"
+import csv, sys
+row = next(csv.DictReader(open(sys.argv[1])))
+assert float(row["phi1"]) == 0.0
+for a, b in (("F10_along", "F10x"), ("F10_across", "F10y")):
+    assert abs(float(row[a]) - float(row[b])) <= 1e-9 * abs(float(row["F10"])), (a, row[a], row[b])
+PY

@@ -1,0 +1,262 @@
+!> Tests of `&linkage` decks (any planar linkage of lower pairs): the structural analysis of the
+!> bundled decks and of wrong decks; velocities and accelerations (class-III group, two
+!> drives, sliding pairs on the frame and on moving links, stroke drives) against central
+!> finite differences of the positions; the
+!> reactions' self-checks (every link's equilibrium, the power balance of every drive, the
+!> global against the group-by-group solve); the branch kept through a full turn; a dead
+!> position of the class-III group found (exit 3 naming the group).
+module test_linkage
+  use kinetostat_kinds, only: wp
+  use kinetostat_text, only: int_str, real_str
+  use kinetostat_error, only: error_t, exit_geometry, exit_input
+  use kinetostat_deck, only: deck_source_t, load_deck, deck_source_from_text
+  use kinetostat_linkage, only: linkage_step_t, linkage_reference_pose, linkage_assemble, linkage_motion
+  use kinetostat_linkage_structure, only: structure_formula
+  use kinetostat_linkage_deck, only: linkage_deck_t, read_linkage_deck, linkage_drive_values
+  use kinetostat_linkage_layout, only: linkage_solve_steps
+  use test_harness, only: test_counts_t, check_close, check_true
+  implicit none
+  private
+  public :: run_linkage_tests
+
+contains
+
+  subroutine run_linkage_tests(t)
+    type(test_counts_t), intent(inout) :: t
+    call test_structure(t)
+    call test_wrong_structures(t)
+    call test_finite_differences(t)
+    call test_reactions(t)
+    call test_full_turn(t)
+    call test_dead_position(t)
+  end subroutine run_linkage_tests
+
+  !> A bundled deck, read and validated.
+  subroutine bundled(path, deck, t)
+    character(*), intent(in) :: path
+    type(linkage_deck_t), intent(out) :: deck
+    type(test_counts_t), intent(inout) :: t
+    type(deck_source_t) :: source
+    type(error_t), allocatable :: error
+    call load_deck(path, source, error)
+    if (.not. allocated(error)) call read_linkage_deck(source, deck, error)
+    call check_true(t, "linkage-read-"//path, .not. allocated(error), "deck error")
+    if (allocated(error)) write (*, '(a)') "  "//error%message
+  end subroutine bundled
+
+  !> Known structure formulas and classes of the bundled decks.
+  subroutine test_structure(t)
+    type(test_counts_t), intent(inout) :: t
+    type(linkage_deck_t) :: deck
+    character(len=*), parameter :: paths(4) = [character(len=32) :: "data/class3.nml", "data/fivebar.nml", &
+      "data/linkage_fourbar.nml", "data/linkage_slider_crank.nml"]
+    character(len=*), parameter :: formulas(4) = [character(len=40) :: "I(0,1) -> III(2,3,4,5)", &
+      "I(0,1) -> I(0,4) -> II(2,3)", "I(0,1) -> II(2,3)", "I(0,1) -> II(2,3)"]
+    character(len=3), parameter :: kinds(4) = ["   ", "RRR", "RRR", "RRP"]
+    integer :: i, last
+    do i = 1, size(paths)
+      call bundled(trim(paths(i)), deck, t)
+      call check_true(t, "linkage-structure-"//trim(paths(i)), structure_formula(deck%mech) == trim(formulas(i)), &
+        "expected '"//trim(formulas(i))//"', got '"//structure_formula(deck%mech)//"'")
+      last = size(deck%mech%units)
+      call check_true(t, "linkage-group-kind-"//trim(paths(i)), deck%mech%units(last)%kind == kinds(i), &
+        "expected kind '"//kinds(i)//"', got '"//deck%mech%units(last)%kind//"'")
+    end do
+    call bundled("data/class3.nml", deck, t)
+    call check_true(t, "linkage-class3-order", deck%mech%units(2)%class == 3 .and. deck%mech%units(2)%order == 3, &
+      "expected class 3, order 3; got class "//int_str(deck%mech%units(2)%class)//", order "// &
+      int_str(deck%mech%units(2)%order))
+  end subroutine test_structure
+
+  !> The four-bar deck text with extra lines (links, pairs, drives) appended before the end.
+  function fourbar_text(extra) result(text)
+    character(*), intent(in) :: extra
+    character(len=:), allocatable :: text
+    character(len=*), parameter :: nl = achar(10)
+    text = "&linkage"//nl//"n = 3"//nl// &
+      "link(1)%id = 1, link(2)%id = 2, link(3)%id = 3"//nl// &
+      "pair(1)%name = 'A', pair(1)%kind = 'R', pair(1)%links = 1, 0, pair(1)%at = 0, 0"//nl// &
+      "pair(2)%name = 'B', pair(2)%kind = 'R', pair(2)%links = 2, 1, pair(2)%at = 0.1, 0"//nl// &
+      "pair(3)%name = 'C', pair(3)%kind = 'R', pair(3)%links = 3, 2, pair(3)%at = 0.4, 0.2"//nl// &
+      "pair(4)%name = 'D', pair(4)%kind = 'R', pair(4)%links = 3, 0, pair(4)%at = 0.3, 0"//nl// &
+      "drive(1)%pair = 'A', drive(1)%start = 0, drive(1)%step = 10, drive(1)%omega = 1"//nl//extra//nl//"/"//nl
+  end function fourbar_text
+
+  !> Wrong decks: W /= drives (missing and surplus constraints), a set of links that is no
+  !> group (a link over-constrained while another is free).
+  subroutine test_wrong_structures(t)
+    type(test_counts_t), intent(inout) :: t
+    call expect_error("linkage-w-missing", "link(4)%id = 4"//achar(10)// &
+      "pair(5)%name = 'E', pair(5)%kind = 'R', pair(5)%links = 4, 3, pair(5)%at = 0.5, 0.3", &
+      "W = 3n - 2p5 = 3 x 4 - 2 x 5 = 2 but 1 drive(s): 1 constraint(s) missing")
+    call expect_error("linkage-w-surplus", "drive(2)%pair = 'D', drive(2)%start = 0, drive(2)%step = 1, "// &
+      "drive(2)%omega = 1", "W = 3n - 2p5 = 3 x 3 - 2 x 4 = 1 but 2 drive(s): 1 surplus constraint(s)")
+    call expect_error("linkage-not-a-group", "link(4)%id = 4, link(5)%id = 5"//achar(10)// &
+      "pair(5)%name = 'E', pair(5)%kind = 'R', pair(5)%links = 4, 0, pair(5)%at = 0.5, 0.5"//achar(10)// &
+      "pair(6)%name = 'F', pair(6)%kind = 'R', pair(6)%links = 4, 3, pair(6)%at = 0.35, 0.1"//achar(10)// &
+      "pair(7)%name = 'G', pair(7)%kind = 'R', pair(7)%links = 5, 0, pair(7)%at = 0.9, 0.9", &
+      "links 4 have 1 surplus constraint(s)")
+  contains
+    subroutine expect_error(name, extra, expected)
+      character(*), intent(in) :: name, extra, expected
+      type(deck_source_t) :: source
+      type(linkage_deck_t) :: deck
+      type(error_t), allocatable :: error
+      call deck_source_from_text("wrong.nml", fourbar_text(extra), source)
+      call read_linkage_deck(source, deck, error)
+      if (.not. allocated(error)) then
+        call check_true(t, name, .false., "no error; expected '"//expected//"'")
+        return
+      end if
+      call check_true(t, name, error%code == exit_input .and. index(error%message, expected) > 0, &
+        "expected exit 2 with '"//expected//"', got exit "//int_str(error%code)//": "//error%message)
+    end subroutine expect_error
+  end subroutine test_wrong_structures
+
+  !> Velocities and accelerations against central differences of the positions along the
+  !> drives' motion q(t) with drive(t) = q0 + v t + a t^2 / 2 (each drive with its own speed
+  !> and a non-zero acceleration): dq/dt and d2q/dt2 at t = 0. Half step: the fastest drive moves
+  !> 2e-4 (rad or m); tolerance 1e-6 of the largest |qd| (velocities) and 1e-5 of the largest |qdd|
+  !> (accelerations) plus the differences' roundoff.
+  subroutine test_finite_differences(t)
+    type(test_counts_t), intent(inout) :: t
+    call fd_deck("data/class3.nml", [10, 14, 25])
+    call fd_deck("data/fivebar.nml", [3, 20, 33])
+    call fd_deck("data/linkage_slider_crank.nml", [2, 6, 11])
+    call fd_deck("docs/examples/excavator.nml", [1, 9, 20])
+  contains
+    subroutine fd_deck(path, ks)
+      character(*), intent(in) :: path
+      integer, intent(in) :: ks(:)
+      type(linkage_deck_t) :: deck
+      type(linkage_step_t), allocatable :: steps(:)
+      type(error_t), allocatable :: error
+      real(wp), allocatable :: q(:), dq(:), dv(:), da(:), qp(:), qm(:), qd(:), qdd(:), fd1(:), fd2(:), from(:)
+      real(wp) :: h, tol1, tol2
+      integer :: i, j, k, nd
+      call bundled(path, deck, t)
+      nd = size(deck%mech%drives)
+      allocate (dq(nd), dv(nd), da(nd))
+      q = linkage_reference_pose(deck%mech)
+      from = deck%mech%drives%q_ref
+      allocate (steps(1:maxval(ks)))
+      call linkage_solve_steps(deck, path, 1, maxval(ks), q, from, steps, error)
+      call check_true(t, "linkage-fd-solve-"//path, .not. allocated(error), "solve failed")
+      if (allocated(error)) return
+      do i = 1, size(ks)
+        k = ks(i)
+        call linkage_drive_values(deck, k, dq, dv, da)
+        do j = 1, nd
+          da(j) = 0.7_wp * real((-1)**j, wp) * maxval(abs(dv))
+        end do
+        allocate (qd(size(q)), qdd(size(q)))
+        call linkage_motion(deck%mech, steps(k)%q, dv, da, qd, qdd, error)
+        h = 2.0e-4_wp / maxval(abs(dv))
+        qp = steps(k)%q
+        qm = steps(k)%q
+        call linkage_assemble(deck%mech, dq, dq + dv * h + 0.5_wp * da * h**2, qp, "fd+", error)
+        if (.not. allocated(error)) call linkage_assemble(deck%mech, dq, dq - dv * h + 0.5_wp * da * h**2, qm, "fd-", error)
+        call check_true(t, "linkage-fd-assemble-"//path, .not. allocated(error), "assembly failed")
+        if (allocated(error)) return
+        fd1 = (qp - qm) / (2.0_wp * h)
+        fd2 = (qp - 2.0_wp * steps(k)%q + qm) / h**2
+        tol1 = 1.0e-6_wp * maxval(abs(qd))
+        tol2 = 1.0e-5_wp * maxval(abs(qdd)) + 1.0e-12_wp / h**2
+        call check_true(t, "linkage-fd-velocity-"//path//"-step"//int_str(k), maxval(abs(fd1 - qd)) <= tol1, &
+          "max |FD - qd| = "//real_str(maxval(abs(fd1 - qd)))//" > "//real_str(tol1))
+        call check_true(t, "linkage-fd-acceleration-"//path//"-step"//int_str(k), maxval(abs(fd2 - qdd)) <= tol2, &
+          "max |FD - qdd| = "//real_str(maxval(abs(fd2 - qdd)))//" > "//real_str(tol2))
+        deallocate (qd, qdd)
+      end do
+    end subroutine fd_deck
+  end subroutine test_finite_differences
+
+  !> Every step of every bundled &linkage deck: equilibrium residual and power mismatch of
+  !> every drive <= 1e-9, the global and group-by-group reactions within 1e-12 of the step's
+  !> largest reaction.
+  subroutine test_reactions(t)
+    type(test_counts_t), intent(inout) :: t
+    character(len=*), parameter :: paths(5) = [character(len=32) :: "data/class3.nml", "data/fivebar.nml", &
+      "data/linkage_fourbar.nml", "data/linkage_slider_crank.nml", "docs/examples/excavator.nml"]
+    type(linkage_deck_t) :: deck
+    type(linkage_step_t), allocatable :: steps(:)
+    type(error_t), allocatable :: error
+    real(wp), allocatable :: q(:), from(:)
+    integer :: i
+    do i = 1, size(paths)
+      call bundled(trim(paths(i)), deck, t)
+      q = linkage_reference_pose(deck%mech)
+      from = deck%mech%drives%q_ref
+      if (allocated(steps)) deallocate (steps)
+      allocate (steps(deck%n))
+      call linkage_solve_steps(deck, trim(paths(i)), 1, deck%n, q, from, steps, error)
+      call check_true(t, "linkage-solve-"//trim(paths(i)), .not. allocated(error), "solve failed")
+      if (allocated(error)) cycle
+      call check_true(t, "linkage-residual-"//trim(paths(i)), maxval(steps%residual) <= 1.0e-9_wp, &
+        "max residual "//real_str(maxval(steps%residual)))
+      call check_true(t, "linkage-power-"//trim(paths(i)), maxval(steps%mismatch) <= 1.0e-9_wp, &
+        "max power mismatch "//real_str(maxval(steps%mismatch)))
+      call check_true(t, "linkage-two-solvers-"//trim(paths(i)), maxval(steps%solver_gap) <= 1.0e-12_wp, &
+        "max gap of global and group-by-group reactions "//real_str(maxval(steps%solver_gap)))
+    end do
+  end subroutine test_reactions
+
+  !> The class-III deck turns its crank once (37 steps of 10 deg): the last step's poses and
+  !> forces equal the first's (the branch of the reference position is kept), 1e-9.
+  subroutine test_full_turn(t)
+    type(test_counts_t), intent(inout) :: t
+    type(linkage_deck_t) :: deck
+    type(linkage_step_t), allocatable :: steps(:)
+    type(error_t), allocatable :: error
+    real(wp), allocatable :: q(:), from(:), d(:)
+    call bundled("data/class3.nml", deck, t)
+    q = linkage_reference_pose(deck%mech)
+    from = deck%mech%drives%q_ref
+    allocate (steps(deck%n))
+    call linkage_solve_steps(deck, "class3", 1, deck%n, q, from, steps, error)
+    if (allocated(error)) then
+      call check_true(t, "linkage-full-turn", .false., error%message)
+      return
+    end if
+    allocate (d(size(q)))
+    d(:) = steps(deck%n)%q - steps(1)%q
+    d(3::3) = modulo(d(3::3) + 3.0_wp, 6.283185307179586_wp) - 3.0_wp
+    call check_true(t, "linkage-full-turn-poses", maxval(abs(d)) <= 1.0e-9_wp, "max pose change "//real_str(maxval(abs(d))))
+    call check_close(t, "linkage-full-turn-F54", norm2(steps(1)%f(:, 7)), norm2(steps(deck%n)%f(:, 7)), 1.0e-9_wp, 1.0e-9_wp)
+    call check_close(t, "linkage-full-turn-M1", steps(1)%effort(1), steps(deck%n)%effort(1), 1.0e-9_wp, 1.0e-9_wp)
+  end subroutine test_full_turn
+
+  !> The class-III deck with its pivot C moved up to (0.641, -0.35): link 4 is shorter and the
+  !> group cannot follow the crank through a whole turn; the run stops with exit 3 naming the
+  !> step and the group III(2,3,4,5).
+  subroutine test_dead_position(t)
+    type(test_counts_t), intent(inout) :: t
+    type(deck_source_t) :: source
+    type(linkage_deck_t) :: deck
+    type(linkage_step_t), allocatable :: steps(:)
+    type(error_t), allocatable :: error
+    real(wp), allocatable :: q(:), from(:)
+    call load_deck("data/class3.nml", source, error)
+    if (.not. allocated(error)) then
+      source%records(size(source%records)) = " pair(6)%at = 0.641, -0.35 /"
+      call read_linkage_deck(source, deck, error)
+    end if
+    call check_true(t, "linkage-dead-deck", .not. allocated(error), "deck error")
+    if (allocated(error)) then
+      write (*, '(a)') "  "//error%message
+      return
+    end if
+    q = linkage_reference_pose(deck%mech)
+    from = deck%mech%drives%q_ref
+    allocate (steps(deck%n))
+    call linkage_solve_steps(deck, "dead", 1, deck%n, q, from, steps, error)
+    if (.not. allocated(error)) then
+      call check_true(t, "linkage-dead-position", .false., "no error")
+      return
+    end if
+    call check_true(t, "linkage-dead-position", error%code == exit_geometry .and. &
+      index(error%message, "group III(2,3,4,5)") > 0 .and. index(error%message, "step ") > 0, &
+      "expected exit 3 naming the step and group III(2,3,4,5), got exit "//int_str(error%code)//": "//error%message)
+  end subroutine test_dead_position
+
+end module test_linkage
