@@ -99,6 +99,8 @@ contains
     ! machine dynamics (the DYNAMICS block and its self-check line)
     case ("DYNAMICS (REDUCED TO THE INPUT LINK)")
       text = "ДИНАМИЧЕСКИЙ РАСЧЕТ (ПРИВЕДЕНИЕ К ВХОДНОМУ ЗВЕНУ)"
+    case ("MAX MISMATCH OF THE DRIVES' EFFORTS, POWER BALANCE")
+      text = "НАИБ. РАСХОЖДЕНИЕ УСИЛИЙ ПРИВОДОВ С БАЛАНСОМ МОЩНОСТЕЙ"
     case ("MAX |M1 - M_d|/|M_d| WITH THE TRUE MOTION")
       text = "НАИБ. |M1 - M_d|/|M_d| ПРИ ИСТИННОМ ДВИЖЕНИИ"
     case ("M_d")
@@ -220,6 +222,8 @@ contains
       text = swap(text, "FORCE ", "СИЛА ")
       text = swap(text, "MOMENT ", "МОМЕНТ ")
       text = swap(text, " LINK", " ЗВЕНО")
+    else if (is_linkage_echo(adjustl(english))) then
+      text = linkage_echo_ru(english)
     else if (index(english, "M") == 1 .and. (index(english, " POWER") > 0 .or. index(english, " HOUSING") > 0 .or. &
       index(english, " BALANCE") > 0)) then
       ! a gear stage's torques: from the power balance, on the housing, from the torque balance
@@ -228,6 +232,69 @@ contains
       text = swap(text, " BALANCE", " БАЛАНС")
     end if
   end function echo_name
+
+  !> Whether an echo line is one of a general linkage's (&linkage): its links, pairs, drives,
+  !> loads and the structural analysis.
+  pure logical function is_linkage_echo(text)
+    !> The line without leading blanks.
+    character(*), intent(in) :: text
+    is_linkage_echo = starts_with(text, "LINK ") .or. starts_with(text, "PAIR ") .or. &
+      starts_with(text, "DRIVE ") .or. starts_with(text, "FORCE ") .or. starts_with(text, "MOMENT ") .or. &
+      starts_with(text, "STRUCTURAL ANALYSIS") .or. starts_with(text, "MOVING LINKS n =") .or. &
+      starts_with(text, "W = 3n") .or. starts_with(text, "STRUCTURE FORMULA:") .or. &
+      starts_with(text, "CLASS OF THE MECHANISM:")
+    ! a structural unit: "II(2,3)  DYAD (GROUP OF CLASS II, ORDER 2), KIND RRR"
+    if (index(text, "  INPUT LINK(S)") > 0 .or. index(text, "  DYAD (GROUP") > 0 .or. &
+        index(text, "  GROUP OF ") > 0) is_linkage_echo = .true.
+  contains
+    pure logical function starts_with(line, start)
+      character(*), intent(in) :: line, start
+      starts_with = .false.
+      if (len(line) >= len(start)) starts_with = line(1:len(start)) == start
+    end function starts_with
+  end function is_linkage_echo
+
+  !> A general linkage's echo line in Russian, in the words of kinetostat structure --lang ru.
+  pure function linkage_echo_ru(english) result(text)
+    !> The English line.
+    character(*), intent(in) :: english
+    character(len=:), allocatable :: text
+    text = english
+    text = swap(text, "STRUCTURAL ANALYSIS", "СТРУКТУРНЫЙ АНАЛИЗ")
+    text = swap(text, "MOVING LINKS n", "ПОДВИЖНЫХ ЗВЕНЬЕВ n")
+    text = swap(text, "LOWER PAIRS p5", "НИЗШИХ ПАР p5")
+    text = swap(text, "HIGHER PAIRS p4", "ВЫСШИХ ПАР p4")
+    text = swap(text, "NUMBER OF DRIVES", "ЧИСЛО ПРИВОДОВ")
+    text = swap(text, "STRUCTURE FORMULA:", "ФОРМУЛА СТРОЕНИЯ:")
+    text = swap(text, "CLASS OF THE MECHANISM:", "КЛАСС МЕХАНИЗМА:")
+    text = swap(text, "INPUT LINK(S) (MECHANISM OF CLASS I)", &
+      "ВХОДНОЕ ЗВЕНО (МЕХАНИЗМ I КЛАССА)")
+    text = swap(text, "DYAD (GROUP OF CLASS II, ORDER 2), KIND", &
+      "ДИАДА (ГРУППА II КЛАССА 2-ГО ПОРЯДКА), ВИД")
+    text = swap(text, "GROUP OF CLASS III, ORDER 3", &
+      "ГРУППА III КЛАССА 3-ГО ПОРЯДКА")
+    text = swap(text, "(A TERNARY BASE LINK AND THREE BINARY LINKS)", &
+      "(БАЗОВОЕ ЗВЕНО С ТРЕМЯ ПАРАМИ)")
+    text = swap(text, "GROUP OF CLASS IV, ORDER 2", &
+      "ГРУППА IV КЛАССА 2-ГО ПОРЯДКА")
+    text = swap(text, "(A CLOSED FOUR-LINK CONTOUR)", &
+      "(ЗАМКНУТЫЙ ЧЕТЫРЕХЗВЕННЫЙ КОНТУР)")
+    text = swap(text, "(CLASS NOT DETERMINED)", "(КЛАСС НЕ ОПРЕДЕЛЕН)")
+    text = swap(text, "GROUP OF ", "ГРУППА ИЗ ")
+    text = swap(text, ", FOLLOWS THE LINK", ", ПОВОРАЧИВАЕТСЯ СО ЗВЕНОМ")
+    text = swap(text, ", GUIDE ON ", ", НАПРАВЛЯЮЩАЯ НА ЗВЕНЕ ")
+    text = swap(text, ", INPUT ", ", ВХОД ")
+    text = swap(text, ", EFFORT ", ", УСИЛИЕ ")
+    text = swap(text, "DRIVE ", "ПРИВОД ")
+    text = swap(text, "PAIR ", "ПАРА ")
+    text = swap(text, "FORCE ", "СИЛА ")
+    text = swap(text, "MOMENT ", "МОМЕНТ ")
+    text = swap(text, " LINKS (", " ЗВЕНЬЕВ (")
+    text = swap(text, " LINKS ", " ЗВЕНЬЯ ")
+    text = swap(text, " LINKS", " ЗВЕНЬЕВ")
+    text = swap(text, " AND ", " И ")
+    text = swap(text, "LINK ", "ЗВЕНО ")
+  end function linkage_echo_ru
 
   !> A note in parentheses after a unit or a value, in Russian (unknown notes unchanged).
   pure function note(english) result(text)
