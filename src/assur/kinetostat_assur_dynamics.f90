@@ -6,8 +6,9 @@ module kinetostat_assur_dynamics
   use kinetostat_error, only: error_t
   use kinetostat_vec2, only: unit_at
   use kinetostat_loads, only: gravity_force
-  use kinetostat_dynamics, only: reduced_t, reduced_source_t, cycle_t, motion_t, cycle_setup, cycle_steady, &
-    cycle_given, motion_at, dynamics_none, dynamics_reduced, dynamics_steady
+  use kinetostat_dynamics, only: reduced_t, reduced_source_t, cycle_t, motion_t, motion_at, dynamics_none, &
+    dynamics_reduced
+  use kinetostat_dynamics_deck, only: deck_cycle
   use kinetostat_assur_kinematics, only: link_state_t, dyad_pose_t, point_state_t, point_on
   use kinetostat_assur, only: assur_kinematics, link_position
   use kinetostat_assur_deck, only: assur_deck_t, load_schedule_t, load_window, load_table, assur_window, &
@@ -134,17 +135,9 @@ contains
     type(cycle_t), intent(out) :: cycle
     type(error_t), allocatable, intent(out) :: error
     type(assur_source_t) :: source
-    character(len=:), allocatable :: where
     source%deck = deck
-    where = path//": &assur"
-    call cycle_setup(source, deck%phi_start * deg_to_rad, load_breaks(deck), deck%dyn%j_rotor, deck%omega1_const, &
-                     where, cycle, error)
-    if (allocated(error)) return
-    if (deck%dyn%mode == dynamics_steady) then
-      call cycle_steady(source, deck%dyn%delta, where, cycle, error)
-    else
-      call cycle_given(source, deck%dyn%j_flywheel, where, cycle, error)
-    end if
+    call deck_cycle(source, deck%dyn, deck%phi_start * deg_to_rad, load_breaks(deck), deck%omega1_const, &
+                    path//": &assur", cycle, error)
   end subroutine assur_cycle
 
   !> The motion at step k: of the cycle with a steady cycle, else the deck's constant speed

@@ -6,10 +6,11 @@ module kinetostat_dynamics_deck
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str
   use kinetostat_deck, only: deck_context_t, deck_error, is_set, require_rule, optional_default, require_nonnegative
-  use kinetostat_dynamics, only: dynamics_none, dynamics_reduced, dynamics_steady, dynamics_given
+  use kinetostat_dynamics, only: dynamics_none, dynamics_reduced, dynamics_steady, dynamics_given, &
+    reduced_source_t, cycle_t, cycle_setup, cycle_steady, cycle_given
   implicit none
   private
-  public :: dynamics_deck_t, read_dynamics_settings, require_one_turn, dynamics_mode_name
+  public :: dynamics_deck_t, read_dynamics_settings, require_one_turn, dynamics_mode_name, deck_cycle
 
   !> Validated dynamics settings of a deck.
   type :: dynamics_deck_t
@@ -118,5 +119,31 @@ contains
       "the steps must cover exactly one turn of the crank with a steady cycle: (n - 1)*dphi = "// &
       real_str(span)//" deg, not 360", error)
   end subroutine require_one_turn
+
+  !> The steady cycle a deck's settings ask for (dynamics = 'steady': the flywheel for delta;
+  !> 'given': the speed law with j_flywheel), from the mechanism's reduced quantities.
+  pure subroutine deck_cycle(source, dyn, phi0, breaks, omega_mean, where, cycle, error)
+    !> The mechanism's reduced quantities at any input angle.
+    class(reduced_source_t), intent(in) :: source
+    !> The deck's settings (mode 'steady' or 'given').
+    type(dynamics_deck_t), intent(in) :: dyn
+    !> Input angle where the cycle starts, rad.
+    real(wp), intent(in) :: phi0
+    !> Angles where a load switches (the quadrature's breakpoints), rad.
+    real(wp), intent(in) :: breaks(:)
+    !> Mean speed of the input link, rad/s.
+    real(wp), intent(in) :: omega_mean
+    !> "DECK: &group", for messages.
+    character(*), intent(in) :: where
+    type(cycle_t), intent(out) :: cycle
+    type(error_t), allocatable, intent(out) :: error
+    call cycle_setup(source, phi0, breaks, dyn%j_rotor, omega_mean, where, cycle, error)
+    if (allocated(error)) return
+    if (dyn%mode == dynamics_steady) then
+      call cycle_steady(source, dyn%delta, where, cycle, error)
+    else
+      call cycle_given(source, dyn%j_flywheel, where, cycle, error)
+    end if
+  end subroutine deck_cycle
 
 end module kinetostat_dynamics_deck

@@ -4,8 +4,9 @@
 module kinetostat_pr3207_dynamics
   use kinetostat_kinds, only: wp, deg_to_rad
   use kinetostat_error, only: error_t
-  use kinetostat_dynamics, only: reduced_t, reduced_source_t, cycle_t, motion_t, cycle_setup, cycle_steady, &
-    cycle_given, motion_at, dynamics_none, dynamics_reduced, dynamics_steady
+  use kinetostat_dynamics, only: reduced_t, reduced_source_t, cycle_t, motion_t, motion_at, dynamics_none, &
+    dynamics_reduced
+  use kinetostat_dynamics_deck, only: deck_cycle
   use kinetostat_pr3207, only: pr3207_reduced
   use kinetostat_pr3207_deck, only: pr3207_deck_t, pr3207_cut_force, pr3207_f5c, pr3207_phi1_deg
   implicit none
@@ -46,17 +47,9 @@ contains
     type(cycle_t), intent(out) :: cycle
     type(error_t), allocatable, intent(out) :: error
     type(pr3207_source_t) :: source
-    character(len=:), allocatable :: where
     source%deck = deck
-    where = path//": &pr3207"
-    call cycle_setup(source, deck%phi_start * deg_to_rad, [deck%phi_cut_start, deck%phi_cut_end] * deg_to_rad, &
-                     deck%dyn%j_rotor, deck%p%omega1, where, cycle, error)
-    if (allocated(error)) return
-    if (deck%dyn%mode == dynamics_steady) then
-      call cycle_steady(source, deck%dyn%delta, where, cycle, error)
-    else
-      call cycle_given(source, deck%dyn%j_flywheel, where, cycle, error)
-    end if
+    call deck_cycle(source, deck%dyn, deck%phi_start * deg_to_rad, [deck%phi_cut_start, deck%phi_cut_end] * deg_to_rad, &
+                    deck%p%omega1, path//": &pr3207", cycle, error)
   end subroutine pr3207_cycle
 
   !> The motion at step k: of the cycle with a steady cycle, else the deck's constant speed
