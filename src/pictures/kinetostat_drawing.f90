@@ -23,6 +23,7 @@ module kinetostat_drawing
   public :: drawing_t, drawing_point_t, drawing_body_t, drawing_guide_t, drawing_force_t, drawing_moment_t
   public :: point_joint, point_pivot, point_com, point_plain, body_bar, body_block, body_cylinder, body_rod
   public :: force_pair, force_load, force_gravity, force_inertia, force_kind_names
+  public :: column_value
 
   !> Point kind: a revolute joint between moving links.
   integer, parameter :: point_joint = 1

@@ -17,7 +17,7 @@ module kinetostat_plans
   use kinetostat_kinds, only: wp, deg_to_rad
   use kinetostat_step_table, only: step_table_t
   use kinetostat_sketch, only: sketch_t
-  use kinetostat_drawing, only: drawing_t, force_pair
+  use kinetostat_drawing, only: drawing_t, force_pair, column_value
   use kinetostat_format, only: full_number
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_text, only: int_str
@@ -633,16 +633,5 @@ contains
     character(len=:), allocatable :: text
     text = '{"name": "'//trim(v%name)//'", "x": '//full_number(v%v(1))//', "y": '//full_number(v%v(2))//"}"
   end function vector_json
-
-  !> Value of column `name` at row `k` (0 when the table has no such column).
-  pure real(wp) function column_value(table, name, k)
-    type(step_table_t), intent(in) :: table
-    character(*), intent(in) :: name
-    integer, intent(in) :: k
-    integer :: c
-    column_value = 0.0_wp
-    c = table%column_index(name)
-    if (c > 0) column_value = table%rows(c, k)
-  end function column_value
 
 end module kinetostat_plans
