@@ -18,6 +18,9 @@ module test_dynamics
   use kinetostat_sixbar, only: sixbar_params_t, sixbar_position_t, sixbar_step_t, sixbar_position, sixbar_step, &
     sixbar_reduced
   use kinetostat_sixbar_deck, only: sixbar_deck_t, read_sixbar_deck, sixbar_phi1_deg
+  use kinetostat_pr3050, only: pr3050_params_t, pr3050_position_t, pr3050_position, pr3050_step, pr3050_step_t, &
+    pr3050_reduced
+  use kinetostat_pr3050_deck, only: pr3050_deck_t, read_pr3050_deck, pr3050_phi3_deg
   use test_harness, only: test_counts_t, check_close, check_true
   implicit none
   private
@@ -35,7 +38,55 @@ contains
     call test_pr3207_cycle(t)
     call test_assur_reduced(t)
     call test_sixbar_reduced(t)
+    call test_pr3050_reduced(t)
   end subroutine run_dynamics_tests
+
+  !> PR 3050 (data/pr3050.nml), reduced to the cylinder's stroke s: J_red = 2T at ds/dt = 1
+  !> (T from central differences of the positions, divided by (ds/dphi3)^2 also from
+  !> differences), dJ_red against differences of J_red over differences of s, M_red = -F2 at
+  !> rest, and Lagrange's equation in s, F2 = J_red s'' + dJ_red s'^2/2 - M_red, against the
+  !> force analysis with the deck's omega3, eps3 (the inertia's part too).
+  subroutine test_pr3050_reduced(t)
+    type(test_counts_t), intent(inout) :: t
+    real(wp), parameter :: h = 1.0e-5_wp
+    type(pr3050_deck_t) :: deck
+    type(error_t), allocatable :: error
+    type(deck_source_t) :: source
+    type(pr3050_position_t) :: pm, pp, p0
+    type(pr3050_step_t) :: s
+    real(wp) :: red(3), rp(3), rm(3), phi, t2, ds, sdot, sddot
+    character(len=32) :: at
+    integer :: k
+    call load_deck("data/pr3050.nml", source, error)
+    if (.not. allocated(error)) call read_pr3050_deck(source, deck, error)
+    call check_true(t, "read data/pr3050.nml", .not. allocated(error), "deck rejected")
+    if (allocated(error)) return
+    do k = 1, deck%n
+      phi = pr3050_phi3_deg(deck, k) * deg_to_rad
+      write (at, '(" at phi3=",f8.2)') phi / deg_to_rad
+      pm = pr3050_position(deck%p, phi - h)
+      pp = pr3050_position(deck%p, phi + h)
+      ds = (pp%s - pm%s) / (2 * h)
+      associate (p => deck%p)
+        t2 = p%m1 * sum(((pp%s1 - pm%s1) / (2 * h))**2) + p%m2 * sum(((pp%s2 - pm%s2) / (2 * h))**2) + &
+             p%m3 * sum(((pp%s3 - pm%s3) / (2 * h))**2) + (p%j1 + p%j2) * ((pp%phi2 - pm%phi2) / (2 * h))**2 + p%j3
+      end associate
+      red = pr3050_reduced(deck%p, phi)
+      call check_close(t, "pr3050 J_red (kg) vs 2T(FD) at ds/dt = 1"//trim(at), t2 / ds**2, red(1), 1.0e-8_wp, 1.0e-10_wp)
+      rp = pr3050_reduced(deck%p, phi + h)
+      rm = pr3050_reduced(deck%p, phi - h)
+      call check_close(t, "pr3050 dJ_red (kg/m) vs FD of J_red over s"//trim(at), (rp(1) - rm(1)) / (pp%s - pm%s), &
+                       red(2), 1.0e-6_wp, 1.0e-6_wp)
+      s = pr3050_step(deck%p, phi, 0.0_wp, 0.0_wp)
+      call check_close(t, "pr3050 M_red (N) vs -F2 (inertia off)"//trim(at), -s%f2, red(3), 1.0e-11_wp, 1.0e-9_wp)
+      s = pr3050_step(deck%p, phi, deck%omega3(k), deck%eps3(k))
+      p0 = pr3050_position(deck%p, phi)
+      sdot = p0%ds * deck%omega3(k)
+      sddot = p0%dds * deck%omega3(k)**2 + p0%ds * deck%eps3(k)
+      call check_close(t, "pr3050 Lagrange in s: F2 = J_red s'' + dJ_red s'^2/2 - M_red"//trim(at), s%f2, &
+                       red(1) * sddot + 0.5_wp * red(2) * sdot**2 - red(3), 1.0e-11_wp, 1.0e-9_wp)
+    end do
+  end subroutine test_pr3050_reduced
 
   !> The T.FTN six-bar (data/sixbar.nml): J_red = 2T at omega1 = 1 from finite differences of
   !> the positions, dJ_red against differences of J_red, M_red = -M1 at rest.

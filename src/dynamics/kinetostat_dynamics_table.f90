@@ -3,7 +3,7 @@
 !> cycle (the DYNAMICS block and JSON "dynamics") and the self-check M1 = M_d.
 module kinetostat_dynamics_table
   use kinetostat_kinds, only: wp, rad_to_deg
-  use kinetostat_step_table, only: step_table_t, col_moment, col_other
+  use kinetostat_step_table, only: step_table_t, col_moment, col_component, col_other
   use kinetostat_dynamics, only: cycle_t, motion_t, dynamics_none, dynamics_reduced, dynamics_steady, dynamics_given
   use kinetostat_dynamics_deck, only: dynamics_deck_t, dynamics_mode_name
   implicit none
@@ -13,23 +13,42 @@ module kinetostat_dynamics_table
 
 contains
 
-  !> The INPUT DATA echo of the dynamics settings (nothing for dynamics = 'none').
-  pure subroutine echo_dynamics(table, dyn)
+  !> The INPUT DATA echo of the dynamics settings (nothing for dynamics = 'none'); with
+  !> `translating` the input is a stroke (j_rotor a mass, kg) and the echo says so.
+  pure subroutine echo_dynamics(table, dyn, translating)
     type(step_table_t), intent(inout) :: table
     type(dynamics_deck_t), intent(in) :: dyn
+    !> The input translates (reduced to a stroke: mass, force); default false.
+    logical, intent(in), optional :: translating
     if (dyn%mode == dynamics_none) return
+    if (optional_true(translating)) then
+      call table%echo_text("DYNAMICS", dynamics_mode_name(dyn%mode))
+      call table%echo_text("REDUCED_TO", "the input stroke s: J_red in kg, dJ_red in kg/m, M_red in N")
+      call table%echo_real("J_ROTOR", dyn%j_rotor, "kg (drive's mass reduced to the stroke)")
+      return
+    end if
     call table%echo_text("DYNAMICS", dynamics_mode_name(dyn%mode))
     if (dyn%mode == dynamics_steady) call table%echo_real("DELTA", dyn%delta, "")
     call table%echo_real("J_ROTOR", dyn%j_rotor, "kg*m^2")
     if (dyn%mode == dynamics_given) call table%echo_real("J_FLYWHEEL", dyn%j_flywheel, "kg*m^2")
   end subroutine echo_dynamics
 
-  !> Append the dynamics columns of `mode` (nothing for dynamics_none).
-  pure subroutine add_dynamics_columns(table, mode)
+  !> Append the dynamics columns of `mode` (nothing for dynamics_none); with `translating`
+  !> (a stroke as the input, 'reduced' only) J_red is a mass (kg), dJ_red in kg/m, M_red a
+  !> force (N).
+  pure subroutine add_dynamics_columns(table, mode, translating)
     type(step_table_t), intent(inout) :: table
     !> dynamics_* mode.
     integer, intent(in) :: mode
+    !> The input translates; default false.
+    logical, intent(in), optional :: translating
     if (mode == dynamics_none) return
+    if (optional_true(translating)) then
+      call table%add_column("J_red", "kg", col_other)
+      call table%add_column("dJ_red", "kg/m", col_other)
+      call table%add_column("M_red", "N", col_component)
+      return
+    end if
     call table%add_column("J_red", "kg*m^2", col_other)
     call table%add_column("dJ_red", "kg*m^2/rad", col_other)
     call table%add_column("M_red", "N*m", col_moment)
@@ -135,5 +154,12 @@ contains
       end do
     end function record_index
   end subroutine note_constant_speed_cost
+
+  !> An optional logical's value, false when absent.
+  pure logical function optional_true(flag)
+    logical, intent(in), optional :: flag
+    optional_true = .false.
+    if (present(flag)) optional_true = flag
+  end function optional_true
 
 end module kinetostat_dynamics_table

@@ -16,7 +16,7 @@ module kinetostat_pr3050
   implicit none
   private
   public :: pr3050_params_t, pr3050_position_t, pr3050_step_t
-  public :: pr3050_position, pr3050_check_position, pr3050_step
+  public :: pr3050_position, pr3050_check_position, pr3050_step, pr3050_reduced
   public :: pr3050_min_length_rel, pr3050_dead_sin
 
   !> Smallest cylinder length s, relative to l_CA + l_CB, that counts as assembled.
@@ -288,5 +288,36 @@ contains
     step%mismatch = power_mismatch(step%f2, step%f2_power, sum(abs(terms)) / abs(pos%ds), &
       maxval(links%scale_f))
   end function pr3050_step
+
+  !> The reduced quantities at rocker angle `phi3` (rad), reduced to the translating input, the
+  !> cylinder's stroke s (the oil force F2 works on ds), from the transfer functions w.r.t.
+  !> phi3 and q = dphi3/ds = 1/s':
+  !>   J_red  = [m1 |v_S1q|^2 + m2 |v_S2q|^2 + m3 |v_S3q|^2 + (j1 + j2) u23^2 + j3] q^2   (kg),
+  !>   dJ_red = dJ_red/ds = q^3 (dJ_3 - 2 J_3 s'' q),  dJ_3 = dJ_3/dphi3                    (kg/m),
+  !>   M_red  = q sum G_i . v_Siq   (gravity, the only load besides the oil force)          (N);
+  !> result [J_red, dJ_red, M_red]. With inertia off the oil force is F2 = -M_red. The
+  !> position must pass pr3050_check_position (s' /= 0).
+  pure function pr3050_reduced(p, phi3) result(red)
+    !> Mechanism data.
+    type(pr3050_params_t), intent(in) :: p
+    !> Rocker angle, rad.
+    real(wp), intent(in) :: phi3
+    real(wp) :: red(3)
+    type(pr3050_position_t) :: pos
+    real(wp) :: down(2), j3q, dj3q, m3q, q
+    pos = pr3050_position(p, phi3)
+    down = unit_at(p%gamma)
+    j3q = p%m1 * dot_product(pos%v_s1q, pos%v_s1q) + p%m2 * dot_product(pos%v_s2q, pos%v_s2q) + &
+          p%m3 * dot_product(pos%v_s3q, pos%v_s3q) + (p%j1 + p%j2) * pos%u23**2 + p%j3
+    dj3q = 2.0_wp * (p%m1 * dot_product(pos%v_s1q, pos%a_s1q) + p%m2 * dot_product(pos%v_s2q, pos%a_s2q) + &
+                     p%m3 * dot_product(pos%v_s3q, pos%a_s3q) + (p%j1 + p%j2) * pos%u23 * pos%eps23)
+    m3q = dot_product(gravity_force(p%m1, p%g, down), pos%v_s1q) + &
+          dot_product(gravity_force(p%m2, p%g, down), pos%v_s2q) + &
+          dot_product(gravity_force(p%m3, p%g, down), pos%v_s3q)
+    q = 1.0_wp / pos%ds
+    red(1) = j3q * q**2
+    red(2) = q**3 * (dj3q - 2.0_wp * j3q * pos%dds * q)
+    red(3) = m3q * q
+  end function pr3050_reduced
 
 end module kinetostat_pr3050

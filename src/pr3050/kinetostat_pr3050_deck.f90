@@ -9,6 +9,7 @@ module kinetostat_pr3050_deck
     deck_source_t, namelist_probe_t, require_all_set, deck_error, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values
   use kinetostat_pr3050, only: pr3050_params_t
+  use kinetostat_dynamics_deck, only: dynamics_deck_t, read_dynamics_settings
   implicit none
   private
   public :: pr3050_deck_t, read_pr3050_deck, write_pr3050_template, pr3050_step_count, pr3050_phi3_deg
@@ -38,6 +39,8 @@ module kinetostat_pr3050_deck
     real(wp), allocatable :: omega3(:)
     !> Rocker angular acceleration per step, rad/s^2: elements 1..n (as omega3).
     real(wp), allocatable :: eps3(:)
+    !> Machine dynamics settings (dynamics = 'reduced', reduced to the stroke; j_rotor in kg).
+    type(dynamics_deck_t) :: dyn
   end type pr3050_deck_t
 
   !> Template deck (the spec's reference data), one line per entry.
@@ -113,12 +116,15 @@ contains
     real(wp) :: phi3_start, phi3_end, dphi3
     real(wp), allocatable :: omega3(:), eps3(:)
     integer :: n_omega3, n_eps3
+    !> Machine dynamics variables: mode and the drive's mass reduced to the stroke, kg.
+    character(len=32) :: dynamics
+    real(wp) :: j_rotor
     !> Elements allocated for each per-step array the deck may give (see deck_array_capacities).
     integer, allocatable :: capacity(:)
     type(deck_context_t) :: ctx
     type(namelist_probe_t) :: probe
     namelist /pr3050/ l_ca, l_cb, l_cs3, delta, l_bs2, l_s1a, gamma, g, m1, m2, m3, j1, j2, j3, &
-      phi3_start, phi3_end, dphi3, omega3, eps3
+      phi3_start, phi3_end, dphi3, omega3, eps3, dynamics, j_rotor
 
     ctx%path = source%path
     ctx%group = "pr3050"
@@ -127,6 +133,7 @@ contains
     m1 = unset_real; m2 = unset_real; m3 = unset_real
     j1 = unset_real; j2 = unset_real; j3 = unset_real
     phi3_start = unset_real; phi3_end = unset_real; dphi3 = unset_real
+    dynamics = ""; j_rotor = unset_real
     capacity = deck_array_capacities(source, ctx%group, [character(len=6) :: "omega3", "eps3"])
     allocate (omega3(capacity(1)), source=unset_real)
     allocate (eps3(capacity(2)), source=unset_real)
@@ -192,6 +199,17 @@ contains
     if (allocated(error)) return
     call require_rule(ctx, "eps3", n_eps3 == deck%n, "expected "//int_str(deck%n)// &
       " values (one per step), got "//int_str(n_eps3), error)
+    if (allocated(error)) return
+
+    ! machine dynamics: the reduced quantities only, reduced to the stroke (the input translates)
+    select case (trim(adjustl(dynamics)))
+    case ("steady", "given")
+      call deck_error(ctx, "dynamics", "'"//trim(adjustl(dynamics))//"' needs a crank: PR 3050's input is the "// &
+        "cylinder's stroke, which goes out and back over a rocker range, not one turn, so there is no cycle of a "// &
+        "constant driving moment; use dynamics = 'reduced' (J_red, M_red reduced to the stroke)", error)
+      return
+    end select
+    call read_dynamics_settings(ctx, dynamics, unset_real, j_rotor, unset_real, 1.0_wp, deck%dyn, error)
     if (allocated(error)) return
 
     deck%p = pr3050_params_t(l_ca=l_ca, l_cb=l_cb, l_cs3=l_cs3, delta=delta * deg_to_rad, l_bs2=l_bs2, &

@@ -18,10 +18,12 @@ module kinetostat_pr3050_layout
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_sketch, only: sketch_t
   use kinetostat_pr3050, only: pr3050_params_t, pr3050_position_t, pr3050_step_t, pr3050_step, &
-    pr3050_check_position, pr3050_position
+    pr3050_check_position, pr3050_position, pr3050_reduced
   use kinetostat_pr3050_deck, only: pr3050_deck_t, read_pr3050_deck, write_pr3050_template, pr3050_phi3_deg
   use kinetostat_drawing, only: drawing_t, force_load
   use kinetostat_bodies, only: mass_model_t
+  use kinetostat_dynamics, only: motion_t, dynamics_none
+  use kinetostat_dynamics_table, only: echo_dynamics, add_dynamics_columns, put_dynamics_values
   implicit none
   private
   public :: pr3050_mechanism_t, new_pr3050, pr3050_solve, pr3050_csv_columns, pr3050_csv_values
@@ -194,6 +196,7 @@ contains
       call table%add_column("SDOT", "m/s", col_other, csv=.false.)
       call table%add_column("N21", "N", col_component, csv=.false.)
       call table%add_column("M21", "N*m", col_moment, csv=.false.)
+      call add_dynamics_columns(table, self%deck%dyn%mode, translating=.true.)
       table%input_column = 1
       table%work_column = table%column_index("S")
       call dead_position_between_steps(self%deck, warning)
@@ -216,6 +219,9 @@ contains
       end associate
     end do
     !$omp end parallel do
+    do k = 1, merge(size(steps), 0, self%deck%dyn%mode /= dynamics_none)
+      call put_dynamics_values(table, k, self%deck%dyn%mode, reduced_motion(self%deck, steps(k)))
+    end do
     if (table%kinematics_wanted) then
       do k = 1, size(steps)
         call put_kinematics(table, k, self%deck%p, steps(k))
@@ -224,6 +230,21 @@ contains
     call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "F2", &
       worst_row([steps%residual]), worst_row([steps%mismatch]))
   end subroutine solve
+
+  !> The reduced quantities of a computed step, reduced to the stroke s (dynamics = 'reduced';
+  !> J_red with the drive's mass j_rotor, kg; dJ_red kg/m; M_red N); omega is the stroke's
+  !> speed ds/dt of the step.
+  pure function reduced_motion(deck, s) result(mo)
+    type(pr3050_deck_t), intent(in) :: deck
+    type(pr3050_step_t), intent(in) :: s
+    type(motion_t) :: mo
+    real(wp) :: r(3)
+    r = pr3050_reduced(deck%p, s%phi3)
+    mo%omega = s%s_dot
+    mo%j = r(1) + deck%dyn%j_rotor
+    mo%dj = r(2)
+    mo%m = r(3)
+  end function reduced_motion
 
   !> The kinematics columns of step `k` (frame: origin C, x from C to A): joints C, A, B and
   !> centres of mass S1, S2, S3; links 1 (cylinder) and 2 (rod), which turn together, and 3
@@ -302,6 +323,7 @@ contains
     call table%echo_int("N", deck%n, "steps")
     call table%echo_array("OMEGA3", deck%omega3(1:deck%n), "rad/s")
     call table%echo_array("EPS3", deck%eps3(1:deck%n), "rad/s^2")
+    call echo_dynamics(table, deck%dyn, translating=.true.)
   end subroutine echo_deck
 
   !> RESULTS: one line per step (rocker angle, three reactions with angles, F2; E format as

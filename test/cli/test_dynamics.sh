@@ -103,3 +103,20 @@ if [ "$rc" -eq 0 ] && head -1 "$out" | grep -q ",M1,J_red,dJ_red,M_red$" && \
    cmp -s <(cut -d, -f1-15 "$out") data/expected/sixbar.csv; then pass
 else fail dynamics-sixbar-reduced "exit $rc, header '$(head -1 "$out")' or the forces changed"; fi
 expect_input_error dynamics-sixbar-steady "the six-bar has the reduced quantities only" "$(deck_with six_st data/sixbar.nml "s/^\/$/  dynamics = 'steady', delta = 0.05\n\//")"
+
+# --- PR 3050: the reduced quantities reduced to the cylinder's stroke (mass kg, force N)
+run_ks "$(deck_with p50_red data/pr3050.nml "s/^\/$/  dynamics = 'reduced'\n\//")" --format json
+if [ "$rc" -eq 0 ] && python3 - "$out" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))
+units = {c["name"]: c["unit"] for c in d["columns"]}
+assert units["J_red"] == "kg" and units["dJ_red"] == "kg/m" and units["M_red"] == "N", units
+assert any(r["name"] == "REDUCED_TO" and "stroke" in r["value"] for r in d["input"]), "no REDUCED_TO echo"
+PY
+then pass; else fail dynamics-pr3050-units "exit $rc: the stroke's units or the REDUCED_TO echo missing"; fi
+run_ks "$(deck_with p50_csv data/pr3050.nml "s/^\/$/  dynamics = 'reduced'\n\//")" --format csv
+if [ "$(head -1 "$out")" = "phi3rel,F14,F14G,F34,F34G,F32,F32G,F2,J_red,dJ_red,M_red" ] && \
+   cmp -s <(cut -d, -f1-8 "$out") data/expected/pr3050.csv; then pass
+else fail dynamics-pr3050-columns "header '$(head -1 "$out")' or the forces changed"; fi
+expect_input_error dynamics-pr3050-steady "PR 3050's input is the cylinder's stroke" "$(deck_with p50_st data/pr3050.nml "s/^\/$/  dynamics = 'steady'\n\//")"
+expect_input_error dynamics-pr3050-given "needs a crank" "$(deck_with p50_gv data/pr3050.nml "s/^\/$/  dynamics = 'given'\n\//")"
