@@ -202,13 +202,12 @@ contains
     if (allocated(error)) return
 
     ! machine dynamics: the reduced quantities only, reduced to the stroke (the input translates)
-    select case (trim(adjustl(dynamics)))
-    case ("steady", "given")
+    if (trim(adjustl(dynamics)) == "steady" .or. trim(adjustl(dynamics)) == "given") then
       call deck_error(ctx, "dynamics", "'"//trim(adjustl(dynamics))//"' needs a crank: PR 3050's input is the "// &
         "cylinder's stroke, which goes out and back over a rocker range, not one turn, so there is no cycle of a "// &
         "constant driving moment; use dynamics = 'reduced' (J_red, M_red reduced to the stroke)", error)
       return
-    end select
+    end if
     call read_dynamics_settings(ctx, dynamics, unset_real, j_rotor, unset_real, 1.0_wp, deck%dyn, error)
     if (allocated(error)) return
 
