@@ -18,6 +18,9 @@ module test_dynamics
   use kinetostat_sixbar, only: sixbar_params_t, sixbar_position_t, sixbar_step_t, sixbar_position, sixbar_step, &
     sixbar_reduced
   use kinetostat_sixbar_deck, only: sixbar_deck_t, read_sixbar_deck, sixbar_phi1_deg
+  use kinetostat_sixbar_layout, only: sixbar_solve
+  use kinetostat_sixbar_dynamics, only: sixbar_source_t, sixbar_source, sixbar_cycle, sixbar_load_at
+  use kinetostat_dynamics, only: dynamics_steady
   use kinetostat_pr3050, only: pr3050_params_t, pr3050_position_t, pr3050_position, pr3050_step, pr3050_step_t, &
     pr3050_reduced
   use kinetostat_pr3050_deck, only: pr3050_deck_t, read_pr3050_deck, pr3050_phi3_deg
@@ -39,7 +42,104 @@ contains
     call test_assur_reduced(t)
     call test_sixbar_reduced(t)
     call test_pr3050_reduced(t)
+    call test_sixbar_cycle(t)
   end subroutine run_dynamics_tests
+
+  !> The T.FTN six-bar's steady cycle (data/sixbar_flywheel.nml, f5 a load table over the crank
+  !> angle): delta reached = delta asked, periodicity, dT against an independent Simpson
+  !> integral on 0.01 deg steps, the energy equation, M1 = M_d at every step of the force
+  !> analysis with the true motion, 'given' with the flywheel found gives back delta, and a
+  !> huge flywheel gives the constant-speed reactions.
+  subroutine test_sixbar_cycle(t)
+    type(test_counts_t), intent(inout) :: t
+    type(sixbar_deck_t) :: deck, given, big
+    type(sixbar_source_t) :: source
+    type(cycle_t) :: cycle, cycle_given, cycle_big
+    type(error_t), allocatable :: error
+    type(deck_source_t) :: text
+    type(motion_t) :: m0, m1, mp
+    type(sixbar_step_t), allocatable :: steps(:), const(:)
+    real(wp) :: phi0, phi, simpson, e_scale, worst, scale
+    integer :: i, k, n
+    character(len=40) :: at
+    call load_deck("data/sixbar_flywheel.nml", text, error)
+    if (.not. allocated(error)) call read_sixbar_deck(text, deck, error)
+    call check_true(t, "read data/sixbar_flywheel.nml", .not. allocated(error), "deck rejected")
+    if (allocated(error)) return
+    source = sixbar_source(deck)
+    call check_close(t, "sixbar load table at a step = the step's load", deck%f5(181), &
+                     sixbar_load_at(source, sixbar_phi1_deg(deck, 181) * deg_to_rad), 1.0e-12_wp, 0.0_wp)
+    call check_close(t, "sixbar load table halfway between steps 181 and 182", 500.0_wp, &
+                     sixbar_load_at(source, (sixbar_phi1_deg(deck, 181) + 0.5_wp) * deg_to_rad), 1.0e-9_wp, 0.0_wp)
+    call sixbar_cycle(deck, source, "data/sixbar_flywheel.nml", cycle, error)
+    call check_true(t, "sixbar steady cycle solved", .not. allocated(error), "error")
+    if (allocated(error)) return
+    call check_close(t, "sixbar delta reached = delta asked", 0.002_wp, cycle%delta, 1.0e-9_wp, 0.0_wp)
+    call check_close(t, "sixbar (omega_max + omega_min)/2 = omega1", 100.0_wp, &
+                     0.5_wp * (cycle%omega_max + cycle%omega_min), 1.0e-12_wp, 0.0_wp)
+    phi0 = deck%phi_start * deg_to_rad
+    m0 = motion_at(source, cycle, phi0)
+    m1 = motion_at(source, cycle, phi0 + 2 * pi)
+    call check_close(t, "sixbar omega(phi0) = omega(phi0 + 360)", m0%omega, m1%omega, 1.0e-12_wp, 0.0_wp)
+    ! dT against composite Simpson on 0.01 deg (the table's bends at +180 and +181 deg on the grid)
+    e_scale = maxval(abs(cycle%dt))
+    n = 36000
+    simpson = 0.0_wp
+    do i = 2, n, 2
+      phi = phi0 + 2 * pi * real(i, wp) / real(n, wp)
+      simpson = simpson + (f(phi - 4 * pi / n) + 4 * f(phi - 2 * pi / n) + f(phi)) * (2 * pi / n) / 3
+      if (mod(i, 3000) == 0) then
+        write (at, '(" at +",f7.2," deg")') real(i, wp) / 100
+        mp = motion_at(source, cycle, phi)
+        call check_close(t, "sixbar dT vs Simpson"//trim(at), simpson, mp%dt, 0.0_wp, 1.0e-9_wp * e_scale)
+        call check_close(t, "sixbar energy equation"//trim(at), 0.5_wp * (cycle%j_flywheel + m0%j) * m0%omega**2 + mp%dt, &
+                         0.5_wp * (cycle%j_flywheel + mp%j) * mp%omega**2, 1.0e-12_wp, 0.0_wp)
+      end if
+    end do
+    ! the force analysis with the true motion: M1 = M_d at every step
+    call sixbar_solve("data/sixbar_flywheel.nml", deck, steps, error, source=source, cycle=cycle)
+    call check_true(t, "sixbar steps with the true motion", .not. allocated(error), "error")
+    if (allocated(error)) return
+    worst = maxval(abs(steps%m1 - cycle%m_d))
+    call check_close(t, "sixbar M1 = M_d at every step", 0.0_wp, worst, 0.0_wp, &
+                     1.0e-9_wp * max(abs(cycle%m_d), maxval(abs(steps%m1_power)), 1.0_wp))
+    call check_true(t, "sixbar equilibrium and power balance with the true motion", &
+      maxval(steps%residual) <= 1.0e-9_wp .and. maxval(steps%mismatch) <= 1.0e-9_wp, "self-check above 1e-9")
+    ! 'given' with the flywheel found gives back delta
+    given = deck
+    given%dyn%mode = dynamics_given
+    given%dyn%j_flywheel = cycle%j_flywheel
+    call sixbar_cycle(given, source, "given", cycle_given, error)
+    call check_true(t, "sixbar given cycle solved", .not. allocated(error), "error")
+    if (allocated(error)) return
+    call check_close(t, "sixbar given J_fw gives back delta", 0.002_wp, cycle_given%delta, 1.0e-9_wp, 0.0_wp)
+    ! a huge flywheel: the constant-speed reactions
+    big = deck
+    big%dyn%mode = dynamics_given
+    big%dyn%j_flywheel = 1.0e12_wp
+    call sixbar_cycle(big, source, "big", cycle_big, error)
+    call check_true(t, "sixbar huge flywheel cycle solved", .not. allocated(error), "error")
+    if (allocated(error)) return
+    call sixbar_solve("big", big, steps, error, source=source, cycle=cycle_big)
+    call sixbar_solve("big", deck, const, error)
+    worst = 0.0_wp
+    do k = 1, size(steps)
+      scale = max(norm2(const(k)%f21), norm2(const(k)%f36), norm2(const(k)%f16), 1.0_wp)
+      worst = max(worst, norm2(steps(k)%f21 - const(k)%f21) / scale, norm2(steps(k)%f32 - const(k)%f32) / scale, &
+                  norm2(steps(k)%f43 - const(k)%f43) / scale, norm2(steps(k)%f36 - const(k)%f36) / scale, &
+                  norm2(steps(k)%f16 - const(k)%f16) / scale, abs(steps(k)%f56 - const(k)%f56) / scale)
+    end do
+    call check_close(t, "sixbar huge flywheel: reactions of the constant-speed run", 0.0_wp, worst, 0.0_wp, 1.0e-6_wp)
+    if (dynamics_steady < 0) return
+  contains
+    !> M_d + M_red at x (rad).
+    real(wp) function f(x)
+      real(wp), intent(in) :: x
+      type(reduced_t) :: red
+      red = source%at(x)
+      f = cycle%m_d + red%m
+    end function f
+  end subroutine test_sixbar_cycle
 
   !> PR 3050 (data/pr3050.nml), reduced to the cylinder's stroke s: J_red = 2T at ds/dt = 1
   !> (T from central differences of the positions, divided by (ds/dphi3)^2 also from

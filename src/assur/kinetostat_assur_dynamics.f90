@@ -135,9 +135,21 @@ contains
     type(cycle_t), intent(out) :: cycle
     type(error_t), allocatable, intent(out) :: error
     type(assur_source_t) :: source
+    type(link_state_t) :: states(0:2 * size(deck%mech%dyads) + 1)
+    type(dyad_pose_t) :: poses(size(deck%mech%dyads))
+    type(error_t), allocatable :: kin_error
+    type(point_state_t) :: ps
+    real(wp) :: j_crank
     source%deck = deck
+    ! the crank's own J_red (m |v_S1q|^2 + j1, constant): Merzalov's first group
+    j_crank = 0.0_wp
+    call assur_kinematics(deck%mech, deck%phi_start * deg_to_rad, states, poses, kin_error)
+    if (.not. allocated(kin_error)) then
+      ps = point_on(states(1), deck%mech%links(1)%s)
+      j_crank = deck%mech%links(1)%m * dot_product(ps%v, ps%v) + deck%mech%links(1)%j
+    end if
     call deck_cycle(source, deck%dyn, deck%phi_start * deg_to_rad, load_breaks(deck), deck%omega1_const, &
-                    path//": &assur", cycle, error)
+                    path//": &assur", cycle, error, j_links_constant=j_crank)
   end subroutine assur_cycle
 
   !> The motion at step k: of the cycle with a steady cycle, else the deck's constant speed

@@ -95,6 +95,9 @@ module kinetostat_dynamics
     real(wp) :: basis(8, 8) = 0.0_wp
     !> Constant moment of inertia of the rotor and gear train reduced to the input, kg*m^2.
     real(wp) :: j_rotor = 0.0_wp
+    !> The constant part of the links' J_red (the input link's own inertia about its pivot),
+    !> kg*m^2: with j_rotor and the flywheel Merzalov's first group.
+    real(wp) :: j_links_constant = 0.0_wp
     !> Mean speed (omega_max + omega_min)/2, rad/s.
     real(wp) :: omega_mean = 0.0_wp
     !> Driving moment, N*m (constant, zero net work over the cycle).
@@ -325,15 +328,17 @@ contains
     call finish_time(source, cycle)
   end subroutine cycle_given
 
-  !> Merzalov's estimate for `delta`: T_I = dT - (J_red - j_rotor) omega_m^2/2 over the panel
-  !> bounds, J_I = (max T_I - min T_I)/(delta omega_m^2), J_fw = J_I - j_rotor.
+  !> Merzalov's estimate for `delta`: with J_c = j_rotor + the links' constant part (the first
+  !> group besides the flywheel), T_I = dT - (J_red - J_c) omega_m^2/2 over the panel bounds,
+  !> J_I = (max T_I - min T_I)/(delta omega_m^2), J_fw = J_I - J_c.
   pure subroutine textbook(cycle, delta, j_fw)
     type(cycle_t), intent(in) :: cycle
     real(wp), intent(in) :: delta
     real(wp), intent(out) :: j_fw
-    real(wp) :: t1(size(cycle%dt))
-    t1 = cycle%dt - (cycle%j - cycle%j_rotor) * cycle%omega_mean**2 / 2.0_wp
-    j_fw = (maxval(t1) - minval(t1)) / (delta * cycle%omega_mean**2) - cycle%j_rotor
+    real(wp) :: t1(size(cycle%dt)), j_c
+    j_c = cycle%j_rotor + cycle%j_links_constant
+    t1 = cycle%dt - (cycle%j - j_c) * cycle%omega_mean**2 / 2.0_wp
+    j_fw = (maxval(t1) - minval(t1)) / (delta * cycle%omega_mean**2) - j_c
   end subroutine textbook
 
   !> The speed law with flywheel `j_fw`: E0 such that (omega_max + omega_min)/2 = omega_mean

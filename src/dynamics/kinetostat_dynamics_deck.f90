@@ -122,7 +122,7 @@ contains
 
   !> The steady cycle a deck's settings ask for (dynamics = 'steady': the flywheel for delta;
   !> 'given': the speed law with j_flywheel), from the mechanism's reduced quantities.
-  pure subroutine deck_cycle(source, dyn, phi0, breaks, omega_mean, where, cycle, error)
+  pure subroutine deck_cycle(source, dyn, phi0, breaks, omega_mean, where, cycle, error, j_links_constant)
     !> The mechanism's reduced quantities at any input angle.
     class(reduced_source_t), intent(in) :: source
     !> The deck's settings (mode 'steady' or 'given').
@@ -137,8 +137,12 @@ contains
     character(*), intent(in) :: where
     type(cycle_t), intent(out) :: cycle
     type(error_t), allocatable, intent(out) :: error
+    !> The constant part of the links' J_red (the input link's own inertia), kg*m^2, for
+    !> Merzalov's estimate (default 0).
+    real(wp), intent(in), optional :: j_links_constant
     call cycle_setup(source, phi0, breaks, dyn%j_rotor, omega_mean, where, cycle, error)
     if (allocated(error)) return
+    if (present(j_links_constant)) cycle%j_links_constant = j_links_constant
     if (dyn%mode == dynamics_steady) then
       call cycle_steady(source, dyn%delta, where, cycle, error)
     else

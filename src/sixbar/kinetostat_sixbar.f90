@@ -16,7 +16,7 @@ module kinetostat_sixbar
   implicit none
   private
   public :: sixbar_params_t, sixbar_position_t, sixbar_step_t
-  public :: sixbar_position, sixbar_step, sixbar_extreme_phi1, sixbar_reduced
+  public :: sixbar_position, sixbar_step, sixbar_extreme_phi1, sixbar_reduced, sixbar_reduced_at
   public :: sixbar_frame2_to_frame1, sixbar_frame1_to_frame2, sixbar_down1, sixbar_down2
   public :: sixbar_ok, sixbar_open1, sixbar_dead1, sixbar_open2, sixbar_dead2, sixbar_dead_tol
 
@@ -149,6 +149,10 @@ module kinetostat_sixbar
     real(wp) :: f5 = 0.0_wp
     !> Angular accelerations of links 2, 3, 4, rad/s^2.
     real(wp) :: eps(2:4) = 0.0_wp
+    !> Crank speed of the step, rad/s.
+    real(wp) :: omega1 = 0.0_wp
+    !> Crank acceleration of the step, rad/s^2 (0 at constant speed).
+    real(wp) :: eps1 = 0.0_wp
     !> Moment about E of all loads on links 4 and 5 except the pair forces (frame 2), N*m.
     real(wp) :: m54e = 0.0_wp
     !> Guide on slider: signed y2 component, N.
@@ -351,20 +355,29 @@ contains
   end function sixbar_position
 
   !> Kinetostatic analysis at crank angle `phi1` (rad, frame 1) with slider load `f5`
-  !> (N, along +x2). A position failure is returned in `status` with nothing computed.
-  pure function sixbar_step(p, phi1, f5) result(step)
+  !> (N, along +x2), at the deck's constant crank speed or at a given `omega1`, `eps1` (the true
+  !> motion: then the crank's inertia moment -(j1 + j_input) eps1 acts on it). A position
+  !> failure is returned in `status` with nothing computed.
+  pure function sixbar_step(p, phi1, f5, omega1, eps1, j_input) result(step)
     !> Mechanism data.
     type(sixbar_params_t), intent(in) :: p
     !> Crank angle, rad.
     real(wp), intent(in) :: phi1
     !> Slider load, N, signed along +x2.
     real(wp), intent(in) :: f5
+    !> Crank speed, rad/s (default p%omega1).
+    real(wp), intent(in), optional :: omega1
+    !> Crank acceleration, rad/s^2 (default 0).
+    real(wp), intent(in), optional :: eps1
+    !> Moment of inertia turning with the crank besides the crank's own j1 (flywheel, rotor),
+    !> kg*m^2 (default 0).
+    real(wp), intent(in), optional :: j_input
     type(sixbar_step_t) :: step
     type(sixbar_position_t) :: pos
     real(wp) :: w2, down1(2), down2(2), zero2(2)
     real(wp) :: g1(2), g2(2), g3(2), g4(2), g5(2), phi2_f(2), phi4_f(2), phi5_f(2), f_load(2)
     real(wp) :: m_phi2, m_phi3, m_phi4, load5(2), f56v(2), f34(2), r1(2), r2(2), det, m3c, m23b
-    real(wp) :: f12(2), terms(7)
+    real(wp) :: f12(2), terms(8), m_input
     type(link_balance_t) :: links(5)
 
     pos = sixbar_position(p, phi1)
@@ -372,7 +385,12 @@ contains
     step%pos = pos
     step%f5 = f5
     if (pos%status /= sixbar_ok) return
-    w2 = p%omega1**2
+    step%omega1 = p%omega1
+    if (present(omega1)) step%omega1 = omega1
+    if (present(eps1)) step%eps1 = eps1
+    m_input = 0.0_wp
+    if (present(eps1)) m_input = inertia_moment(p%j1 + merge_or_zero(j_input), step%eps1)
+    w2 = step%omega1**2
     down1 = sixbar_down1(p)
     down2 = sixbar_down2(p)
     zero2 = 0.0_wp
@@ -380,14 +398,15 @@ contains
     ! loads: gravity carried into frames 1 and 2, d'Alembert inertia (omega1 const, eps1 = 0;
     ! S1 = A and S3 = D are fixed, so links 1 and 3 have no inertia force)
     step%eps = [pos%eps_q2, pos%eps_q3, pos%eps_q4] * w2
+    if (present(eps1)) step%eps = step%eps + [pos%u21, pos%u31, pos%u41] * step%eps1
     g1 = gravity_force(p%m1, p%g, down1)
     g2 = gravity_force(p%m2, p%g, down1)
     g3 = gravity_force(p%m3, p%g, down1)
     g4 = gravity_force(p%m4, p%g, down2)
     g5 = gravity_force(p%m5, p%g, down2)
-    phi2_f = inertia_force(p%m2, pos%a_s2q * w2)
-    phi4_f = inertia_force(p%m4, pos%a_s4q * w2)
-    phi5_f = inertia_force(p%m5, [pos%a_hq(1) * w2, 0.0_wp])
+    phi2_f = inertia_force(p%m2, accel(pos%a_s2q, pos%v_s2q))
+    phi4_f = inertia_force(p%m4, accel(pos%a_s4q, pos%v_s4q))
+    phi5_f = inertia_force(p%m5, [accel1(pos%a_hq(1), pos%v_hq(1)), 0.0_wp])
     m_phi2 = inertia_moment(p%j2, step%eps(2))
     m_phi3 = inertia_moment(p%j3, step%eps(3))
     m_phi4 = inertia_moment(p%j4, step%eps(4))
@@ -419,11 +438,11 @@ contains
     ! crank 1: F16 and the driving moment M1 (moments about A)
     f12 = -step%f21
     step%f16 = -(f12 + g1)
-    step%m1 = -cross(pos%b, f12)
+    step%m1 = -cross(pos%b, f12) - m_input
 
     ! self-check 1: equilibrium residual of every link with the computed reactions
     links(1) = link_balance(reshape([zero2, pos%b, zero2], [2, 3]), &
-                            reshape([step%f16, f12, g1], [2, 3]), [step%m1])
+                            reshape([step%f16, f12, g1], [2, 3]), [step%m1, m_input])
     links(2) = link_balance(reshape([pos%b, pos%c, pos%s2, pos%s2], [2, 4]), &
                             reshape([step%f21, -step%f32, g2, phi2_f], [2, 4]), [m_phi2])
     links(3) = link_balance(reshape([pos%d, pos%c, pos%e1, pos%d], [2, 4]), &
@@ -443,8 +462,31 @@ contains
     terms(5) = m_phi4 * pos%u41
     terms(6) = dot_product(load5, pos%v_hq)
     terms(7) = dot_product(g1 + g3, zero2)
+    terms(8) = m_input
     step%m1_power = -sum(terms)
     step%mismatch = power_mismatch(step%m1, step%m1_power, sum(abs(terms)), load_moment_scale(links))
+  contains
+    !> An acceleration a_q omega1^2 + v_q eps1 (a_q omega1^2 alone at constant speed).
+    pure function accel(a_q, v_q) result(acc)
+      real(wp), intent(in) :: a_q(2), v_q(2)
+      real(wp) :: acc(2)
+      acc = a_q * w2
+      if (present(eps1)) acc = acc + v_q * step%eps1
+    end function accel
+
+    !> The same for one component.
+    pure real(wp) function accel1(a_q, v_q) result(acc)
+      real(wp), intent(in) :: a_q, v_q
+      acc = a_q * w2
+      if (present(eps1)) acc = acc + v_q * step%eps1
+    end function accel1
+
+    !> j_input, or 0 when absent.
+    pure real(wp) function merge_or_zero(x)
+      real(wp), intent(in), optional :: x
+      merge_or_zero = 0.0_wp
+      if (present(x)) merge_or_zero = x
+    end function merge_or_zero
   end function sixbar_step
 
   !> The reduced quantities at crank angle `phi1` (rad) with the slider's load `f5` (N, along
@@ -460,9 +502,19 @@ contains
     !> Load on the slider, N, along +x2.
     real(wp), intent(in) :: f5
     real(wp) :: red(3)
-    type(sixbar_position_t) :: pos
+    red = sixbar_reduced_at(p, sixbar_position(p, phi1), f5)
+  end function sixbar_reduced
+
+  !> sixbar_reduced at a computed position `pos` (zeros where its status is not sixbar_ok).
+  pure function sixbar_reduced_at(p, pos, f5) result(red)
+    !> Mechanism data.
+    type(sixbar_params_t), intent(in) :: p
+    !> Positions and transfer functions at the crank angle.
+    type(sixbar_position_t), intent(in) :: pos
+    !> Load on the slider, N, along +x2.
+    real(wp), intent(in) :: f5
+    real(wp) :: red(3)
     red = 0.0_wp
-    pos = sixbar_position(p, phi1)
     if (pos%status /= sixbar_ok) return
     red(1) = p%j1 + p%m2 * dot_product(pos%v_s2q, pos%v_s2q) + p%j2 * pos%u21**2 + p%j3 * pos%u31**2 + &
              p%m4 * dot_product(pos%v_s4q, pos%v_s4q) + p%j4 * pos%u41**2 + p%m5 * pos%v_hq(1)**2
@@ -472,6 +524,6 @@ contains
     red(3) = dot_product(gravity_force(p%m2, p%g, sixbar_down1(p)), pos%v_s2q) + &
              dot_product(gravity_force(p%m4, p%g, sixbar_down2(p)), pos%v_s4q) + &
              dot_product([f5, 0.0_wp] + gravity_force(p%m5, p%g, sixbar_down2(p)), pos%v_hq)
-  end function sixbar_reduced
+  end function sixbar_reduced_at
 
 end module kinetostat_sixbar

@@ -9,8 +9,8 @@ module kinetostat_sixbar_deck
     deck_source_t, namelist_probe_t, require_all_set, deck_error, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn
   use kinetostat_sixbar, only: sixbar_params_t, sixbar_extreme_phi1
-  use kinetostat_dynamics, only: dynamics_reduced
-  use kinetostat_dynamics_deck, only: dynamics_deck_t, read_dynamics_settings
+  use kinetostat_dynamics, only: dynamics_steady
+  use kinetostat_dynamics_deck, only: dynamics_deck_t, read_dynamics_settings, require_one_turn
   implicit none
   private
   public :: sixbar_deck_t, read_sixbar_deck, write_sixbar_template, sixbar_phi1_deg
@@ -31,7 +31,8 @@ module kinetostat_sixbar_deck
     !> kept; it may hold a spare element past n). The crank angle is not stored:
     !> sixbar_phi1_deg.
     real(wp), allocatable :: f5(:)
-    !> Machine dynamics settings (dynamics = 'reduced' and j_rotor only).
+    !> Machine dynamics settings (dynamics, delta, j_rotor, j_flywheel); with a steady cycle
+    !> the per-step f5 is a load table over the crank angle (linear between the steps).
     type(dynamics_deck_t) :: dyn
   end type sixbar_deck_t
 
@@ -157,12 +158,8 @@ contains
     g = optional_default(g, g_default)
     call require_nonnegative(ctx, "g", g, error); if (allocated(error)) return
 
-    ! machine dynamics: the reduced quantities only (f5 is given per step, not over the angle)
+    ! machine dynamics (a steady cycle takes f5 as a table over the crank angle: below)
     call read_dynamics_settings(ctx, dynamics, delta, j_rotor, j_flywheel, omega1, deck%dyn, error)
-    if (allocated(error)) return
-    call require_rule(ctx, "dynamics", deck%dyn%mode <= dynamics_reduced, "the six-bar has the reduced "// &
-      "quantities only (dynamics = 'reduced'): its load f5 is given per step, a steady cycle needs it at any "// &
-      "crank angle (use the generic engine, &assur)", error)
     if (allocated(error)) return
 
     deck%p = sixbar_params_t(a=a, b=b, l1=l1, lam2=lam2, lam_s2=lam_s2, lam3=lam3, lam_de=lam_de, &
@@ -189,6 +186,10 @@ contains
       call require_set(ctx, "phi_start", phi_start, error); if (allocated(error)) return
     end if
     call steps_over_turn(ctx, dphi, n, deck%n, error); if (allocated(error)) return
+    ! a steady cycle: the steps are the breakpoints of the load table f5 over one turn
+    if (deck%dyn%mode >= dynamics_steady) then
+      call require_one_turn(ctx, dphi, deck%n, error); if (allocated(error)) return
+    end if
 
     ! slider load: one value per step
     call count_values(ctx, "f5", f5, n_f5, error); if (allocated(error)) return

@@ -21,8 +21,10 @@ module kinetostat_sixbar_layout
   use kinetostat_sixbar_deck, only: sixbar_deck_t, read_sixbar_deck, write_sixbar_template, sixbar_phi1_deg
   use kinetostat_drawing, only: drawing_t, force_load
   use kinetostat_bodies, only: mass_model_t
-  use kinetostat_dynamics, only: motion_t
-  use kinetostat_dynamics_table, only: echo_dynamics, add_dynamics_columns, put_dynamics_values
+  use kinetostat_dynamics, only: motion_t, cycle_t, dynamics_steady
+  use kinetostat_dynamics_table, only: echo_dynamics, add_dynamics_columns, put_dynamics_values, &
+    put_dynamics_figures, note_drive_deviation, note_constant_speed_cost
+  use kinetostat_sixbar_dynamics, only: sixbar_source_t, sixbar_source, sixbar_cycle, sixbar_motion
   implicit none
   private
   public :: sixbar_mechanism_t, new_sixbar, sixbar_solve, sixbar_csv_columns, sixbar_csv_values
@@ -74,6 +76,10 @@ module kinetostat_sixbar_layout
   type, extends(mechanism_t) :: sixbar_mechanism_t
     !> The validated deck.
     type(sixbar_deck_t) :: deck
+    !> The reduced quantities at any crank angle (dynamics = 'steady' or 'given').
+    type(sixbar_source_t) :: source
+    !> The steady cycle (dynamics = 'steady' or 'given').
+    type(cycle_t) :: cycle
   contains
     procedure :: read_deck
     procedure :: solve
@@ -102,6 +108,11 @@ contains
     type(deck_source_t), intent(in) :: source
     type(error_t), allocatable, intent(out) :: error
     call read_sixbar_deck(source, self%deck, error)
+    if (allocated(error)) return
+    if (self%deck%dyn%mode >= dynamics_steady) then
+      self%source = sixbar_source(self%deck)
+      call sixbar_cycle(self%deck, self%source, source%path, self%cycle, error)
+    end if
   end subroutine read_deck
 
   !> The topology for a drawing (frame 1): crank A-B, rod B-C, rocker C-D-E, rod E-H, slider 5
@@ -124,7 +135,7 @@ contains
 
   !> All steps of a validated deck; a step that cannot be assembled (or is a dead position)
   !> is a geometry error naming the step number and the crank angle.
-  subroutine sixbar_solve(path, deck, steps, error, first, last)
+  subroutine sixbar_solve(path, deck, steps, error, first, last, source, cycle, motions)
     !> Deck file, for the message.
     character(*), intent(in) :: path
     !> Validated deck.
@@ -135,17 +146,37 @@ contains
     type(error_t), allocatable, intent(out) :: error
     !> Steps to compute (default: all).
     integer, intent(in), optional :: first, last
+    !> The deck's reduced quantities and steady cycle (dynamics = 'steady' or 'given'): the
+    !> steps at the true crank speed and acceleration, with the flywheel and rotor on the crank.
+    type(sixbar_source_t), intent(in), optional :: source
+    type(cycle_t), intent(in), optional :: cycle
+    !> The motion and reduced quantities of each step (with `cycle`).
+    type(motion_t), allocatable, intent(out), optional :: motions(:)
+    type(motion_t) :: mo
     integer :: k, k1, k2, first_bad
     call step_span(deck%n, k1, k2, first, last)
     allocate (steps(k2 - k1 + 1))
+    if (present(motions)) allocate (motions(k2 - k1 + 1))
     ! steps in parallel with OpenMP threads; the error reported is the first step's in step order
     first_bad = k2 + 1
-    !$omp parallel do schedule(static) reduction(min:first_bad)
-    do k = k1, k2
-      steps(k - k1 + 1) = sixbar_step(deck%p, sixbar_phi1_deg(deck, k) * deg_to_rad, deck%f5(k))
-      if (steps(k - k1 + 1)%status /= sixbar_ok) first_bad = min(first_bad, k)
-    end do
-    !$omp end parallel do
+    if (present(cycle) .and. present(source)) then
+      !$omp parallel do schedule(static) private(mo) reduction(min:first_bad)
+      do k = k1, k2
+        mo = sixbar_motion(deck, source, cycle, k)
+        if (present(motions)) motions(k - k1 + 1) = mo
+        steps(k - k1 + 1) = sixbar_step(deck%p, sixbar_phi1_deg(deck, k) * deg_to_rad, deck%f5(k), mo%omega, mo%eps, &
+                                        cycle%j_flywheel + cycle%j_rotor)
+        if (steps(k - k1 + 1)%status /= sixbar_ok) first_bad = min(first_bad, k)
+      end do
+      !$omp end parallel do
+    else
+      !$omp parallel do schedule(static) reduction(min:first_bad)
+      do k = k1, k2
+        steps(k - k1 + 1) = sixbar_step(deck%p, sixbar_phi1_deg(deck, k) * deg_to_rad, deck%f5(k))
+        if (steps(k - k1 + 1)%status /= sixbar_ok) first_bad = min(first_bad, k)
+      end do
+      !$omp end parallel do
+    end if
     if (first_bad <= k2) then
       k = first_bad
       call fatal_error(error, exit_geometry, path//": &sixbar: step "//int_str(k)//" (phi1 = "// &
@@ -185,13 +216,19 @@ contains
     type(step_table_t), intent(inout) :: table
     type(error_t), allocatable, intent(out) :: error
     type(sixbar_step_t), allocatable :: steps(:)
+    type(motion_t), allocatable :: motions(:)
     integer :: k, first, last
     call table%block_range(self%deck%n, first, last)
-    call sixbar_solve(table%deck, self%deck, steps, error, first, last)
+    if (self%deck%dyn%mode >= dynamics_steady) then
+      call sixbar_solve(table%deck, self%deck, steps, error, first, last, self%source, self%cycle, motions)
+    else
+      call sixbar_solve(table%deck, self%deck, steps, error, first, last)
+    end if
     if (allocated(error)) return
     if (table%first_block()) then
       call table%set_columns(sixbar_csv_columns, column_units, column_kinds)
       call add_dynamics_columns(table, self%deck%dyn%mode)
+      call put_dynamics_figures(table, self%deck%dyn%mode, self%cycle, self%deck%dyn%delta)
       table%input_column = 1
       call table%note_load(self%deck%f5(1:self%deck%n))
       call echo_deck(self%deck, table)
@@ -202,9 +239,18 @@ contains
       table%rows(1:size(sixbar_csv_columns), k) = sixbar_csv_values(steps(k), self%deck%p%l1)
     end do
     !$omp end parallel do
-    do k = 1, merge(size(steps), 0, self%deck%dyn%mode > 0)
-      call put_dynamics_values(table, k, self%deck%dyn%mode, reduced_motion(self%deck, steps(k)))
-    end do
+    if (allocated(motions)) then
+      do k = 1, size(steps)
+        call put_dynamics_values(table, k, self%deck%dyn%mode, motions(k))
+      end do
+      call constant_speed_cost(table%deck, self%deck, steps, first, last, table)
+      call note_drive_deviation(table, maxval(abs(steps%m1 - self%cycle%m_d)), max(abs(self%cycle%m_d), &
+        maxval(abs(motions%m)), maxval(abs((self%cycle%j_flywheel + motions%j) * motions%eps))))
+    else
+      do k = 1, merge(size(steps), 0, self%deck%dyn%mode > 0)
+        call put_dynamics_values(table, k, self%deck%dyn%mode, reduced_motion(self%deck, steps(k)))
+      end do
+    end if
     if (table%kinematics_wanted) then
       do k = 1, size(steps)
         call put_kinematics(table, k, self%deck%p, steps(k))
@@ -213,6 +259,42 @@ contains
     call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "M1", &
       worst_row([steps%residual]), worst_row([steps%mismatch]))
   end subroutine solve
+
+  !> The peaks of the pair forces with the true motion against those at omega1 = omega_m.
+  subroutine constant_speed_cost(path, deck, steps, first, last, table)
+    character(*), intent(in) :: path
+    type(sixbar_deck_t), intent(in) :: deck
+    !> The steps of the block with the true motion.
+    type(sixbar_step_t), intent(in) :: steps(:)
+    integer, intent(in) :: first, last
+    type(step_table_t), intent(inout) :: table
+    type(sixbar_step_t), allocatable :: const(:)
+    type(error_t), allocatable :: error
+    integer :: i
+    call sixbar_solve(path, deck, const, error, first, last)
+    if (allocated(error)) return
+    do i = 1, size(force_names)
+      call note_constant_speed_cost(table, trim(force_names(i)), peak(steps, i), peak(const, i))
+    end do
+  contains
+    pure real(wp) function peak(s, i)
+      type(sixbar_step_t), intent(in) :: s(:)
+      integer, intent(in) :: i
+      integer :: k
+      peak = 0.0_wp
+      do k = 1, size(s)
+        select case (i)
+        case (1); peak = max(peak, norm2(s(k)%f21))
+        case (2); peak = max(peak, norm2(s(k)%f32))
+        case (3); peak = max(peak, norm2(s(k)%f43))
+        case (4); peak = max(peak, norm2(s(k)%f45))
+        case (5); peak = max(peak, norm2(s(k)%f36))
+        case (6); peak = max(peak, norm2(s(k)%f16))
+        case default; peak = max(peak, abs(s(k)%f56))
+        end select
+      end do
+    end function peak
+  end subroutine constant_speed_cost
 
   !> The reduced quantities of a computed step (dynamics = 'reduced': the deck's speed).
   pure function reduced_motion(deck, s) result(mo)
@@ -263,7 +345,7 @@ contains
     type(sixbar_step_t), intent(in) :: s
     real(wp) :: w, w2, frame2, f(2, 7), floor, zero(2)
     integer :: i
-    w = p%omega1
+    w = s%omega1
     w2 = w**2
     zero = 0.0_wp
     ! angle of x2 in frame 1, rad: beta - pi
@@ -280,15 +362,15 @@ contains
       call table%put_point(k, "S3", pos%d)
       call table%put_point(k, "S4", pos%d + sixbar_frame2_to_frame1(p, pos%s4))
       call table%put_point(k, "S5", pos%d + sixbar_frame2_to_frame1(p, pos%h))
-      call table%put_link(k, "1", pos%phi1, w, 0.0_wp)
+      call table%put_link(k, "1", pos%phi1, w, s%eps1)
       call table%put_link(k, "2", pos%phi2, pos%u21 * w, s%eps(2))
       call table%put_link(k, "3", pos%phi3, pos%u31 * w, s%eps(3))
       call table%put_link(k, "4", modulo(pos%phi4 + frame2 + pi, 2.0_wp * pi) - pi, pos%u41 * w, s%eps(4))
       call table%put_acceleration(k, "S1", zero)
-      call table%put_acceleration(k, "S2", pos%a_s2q * w2)
+      call table%put_acceleration(k, "S2", accel(pos%a_s2q, pos%v_s2q))
       call table%put_acceleration(k, "S3", zero)
-      call table%put_acceleration(k, "S4", sixbar_frame2_to_frame1(p, pos%a_s4q * w2))
-      call table%put_acceleration(k, "S5", sixbar_frame2_to_frame1(p, [pos%a_hq(1) * w2, 0.0_wp]))
+      call table%put_acceleration(k, "S4", sixbar_frame2_to_frame1(p, accel(pos%a_s4q, pos%v_s4q)))
+      call table%put_acceleration(k, "S5", sixbar_frame2_to_frame1(p, [accel1(pos%a_hq(1), pos%v_hq(1)), 0.0_wp]))
     end associate
     f = reshape([s%f21, s%f32, s%f43, s%f45, s%f36, s%f16, [0.0_wp, s%f56]], [2, 7])
     floor = noise_floor(f(:, 1:6), [s%f56])
@@ -296,6 +378,21 @@ contains
       call table%put_components(k, trim(force_names(i)), force_components(f(:, i), floor), &
                                 merge(frame2 * rad_to_deg, 0.0_wp, force_in_frame2(i)))
     end do
+  contains
+    !> An acceleration a_q omega1^2 + v_q eps1 (a_q omega1^2 alone at constant speed).
+    pure function accel(a_q, v_q) result(acc)
+      real(wp), intent(in) :: a_q(2), v_q(2)
+      real(wp) :: acc(2)
+      acc = a_q * w2
+      if (s%eps1 /= 0.0_wp) acc = acc + v_q * s%eps1
+    end function accel
+
+    !> The same for one component.
+    pure real(wp) function accel1(a_q, v_q) result(acc)
+      real(wp), intent(in) :: a_q, v_q
+      acc = a_q * w2
+      if (s%eps1 /= 0.0_wp) acc = acc + v_q * s%eps1
+    end function accel1
   end subroutine put_kinematics
 
   !> The INPUT DATA echo of the deck.

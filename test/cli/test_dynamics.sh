@@ -97,12 +97,35 @@ for k in ["M_d", "J_flywheel", "J_flywheel_textbook", "omega_max", "omega_min", 
 PY
 then pass; else fail dynamics-summary "--format summary lacks the dynamics figures: $(head -c 300 "$out")"; fi
 
-# --- the T.FTN six-bar: the reduced quantities (its load is per step: no steady cycle)
+# --- the T.FTN six-bar: the reduced quantities; its steady cycle with f5 as a load table
 run_ks "$(deck_with six_red data/sixbar.nml "s/^\/$/  dynamics = 'reduced', j_rotor = 0.5\n\//")" --format csv
 if [ "$rc" -eq 0 ] && head -1 "$out" | grep -q ",M1,J_red,dJ_red,M_red$" && \
    cmp -s <(cut -d, -f1-15 "$out") data/expected/sixbar.csv; then pass
 else fail dynamics-sixbar-reduced "exit $rc, header '$(head -1 "$out")' or the forces changed"; fi
-expect_input_error dynamics-sixbar-steady "the six-bar has the reduced quantities only" "$(deck_with six_st data/sixbar.nml "s/^\/$/  dynamics = 'steady', delta = 0.05\n\//")"
+expect_input_error dynamics-sixbar-not-one-turn "exactly one turn" "$(deck_with six_turn data/sixbar_flywheel.nml "s/dphi = 1 /dphi = 1, n = 300 /; s/f5 = 181\*1000, 180\*0/f5 = 150*1000, 150*0/")"
+expect_input_error dynamics-sixbar-no-flywheel-needed "no flywheel is needed" "$(deck_with six_nofw data/sixbar_flywheel.nml "s/delta = 0.002/delta = 0.05/")"
+run_ks data/sixbar_flywheel.nml --format json; cp "$out" "$cli_tmp/six_a.json"
+run_ks data/assur_sixbar_flywheel.nml --format json; cp "$out" "$cli_tmp/six_b.json"
+if python3 - "$cli_tmp/six_a.json" "$cli_tmp/six_b.json" <<'PY'
+import json, sys
+a, b = (json.load(open(f)) for f in sys.argv[1:3])
+def close(x, y, scale): return abs(x - y) <= 1e-9 * max(abs(x), abs(y), scale)
+dy = a["dynamics"]
+assert abs(dy["delta"] - 0.002) <= 1e-9 * 0.002 and a["selfcheck"]["max_drive_deviation"] <= 1e-9
+for k in ["M_d", "J_red_min", "J_red_max", "J_flywheel", "J_flywheel_textbook", "omega_max", "phi_omega_max",
+          "omega_min", "phi_omega_min", "delta", "period"]:
+    assert close(dy[k], b["dynamics"][k], 1e-12), (k, dy[k], b["dynamics"][k])
+ca, cb = [c["name"] for c in a["columns"]], [c["name"] for c in b["columns"]]
+for name in ["M1", "J_red", "dJ_red", "M_red", "dT", "omega1", "eps1", "t"]:
+    i, j = ca.index(name), cb.index(name)
+    scale = max(abs(r[i]) for r in a["rows"])
+    for ra, rb in zip(a["rows"], b["rows"]):
+        assert close(ra[i], rb[j], scale), (name, ra[i], rb[j])
+m, w = ca.index("M1"), ca.index("omega1")
+assert all(abs(r[m] - dy["M_d"]) <= 1e-9 * dy["M_d"] for r in a["rows"])
+assert abs(a["rows"][0][w] - a["rows"][-1][w]) <= 1e-12 * 100
+PY
+then pass; else fail dynamics-sixbar-twin "data/sixbar_flywheel.nml: delta, M1 = M_d or the generic twin data/assur_sixbar_flywheel.nml differ"; fi
 
 # --- PR 3050: the reduced quantities reduced to the cylinder's stroke (mass kg, force N)
 run_ks "$(deck_with p50_red data/pr3050.nml "s/^\/$/  dynamics = 'reduced'\n\//")" --format json
