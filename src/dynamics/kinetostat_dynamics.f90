@@ -165,16 +165,25 @@ contains
     cycle%j_rotor = j_rotor
     cycle%omega_mean = omega_mean
     ! piece bounds: phi0, the switches inside the turn (sorted, distinct), phi0 + 2 pi
-    allocate (bounds(0))
-    bounds = [phi0]
+    allocate (bounds(size(breaks) + 2))
+    bounds(1) = phi0
+    k = 1
     do i = 1, size(breaks)
       b = phi0 + modulo(breaks(i) - phi0, 2.0_wp * pi)
       if (b - phi0 <= 1.0e-12_wp .or. phi0 + 2.0_wp * pi - b <= 1.0e-12_wp) cycle
-      if (any(abs(bounds - b) <= 1.0e-12_wp)) cycle
-      bounds = [bounds, b]
+      k = k + 1
+      bounds(k) = b
     end do
-    bounds = [bounds, phi0 + 2.0_wp * pi]
-    call sort(bounds)
+    call sort(bounds(2:k))
+    np = 1
+    do i = 2, k
+      if (bounds(i) - bounds(np) <= 1.0e-12_wp) cycle
+      np = np + 1
+      bounds(np) = bounds(i)
+    end do
+    np = np + 1
+    bounds(np) = phi0 + 2.0_wp * pi
+    bounds = bounds(1:np)
     ! panels
     np = 0
     do i = 1, size(bounds) - 1
@@ -617,21 +626,42 @@ contains
       " deg: the reduced quantities are undefined there")
   end subroutine dead_error
 
-  !> Sort ascending (insertion; few values).
+  !> Sort ascending (heapsort: a load table may give one switch per step).
   pure subroutine sort(x)
     real(wp), intent(inout) :: x(:)
     real(wp) :: t
-    integer :: i, j
-    do i = 2, size(x)
-      t = x(i)
-      j = i - 1
-      do while (j >= 1)
-        if (x(j) <= t) exit
-        x(j + 1) = x(j)
-        j = j - 1
-      end do
-      x(j + 1) = t
+    integer :: n, i
+    n = size(x)
+    do i = n / 2, 1, -1
+      call sift(x, i, n)
+    end do
+    do i = n, 2, -1
+      t = x(1)
+      x(1) = x(i)
+      x(i) = t
+      call sift(x, 1, i - 1)
     end do
   end subroutine sort
+
+  !> Restore the heap below node `root` within x(1:last) (heapsort's step).
+  pure subroutine sift(x, root, last)
+    real(wp), intent(inout) :: x(:)
+    integer, intent(in) :: root, last
+    integer :: parent, child
+    real(wp) :: v
+    parent = root
+    v = x(parent)
+    do
+      child = 2 * parent
+      if (child > last) exit
+      if (child < last) then
+        if (x(child + 1) > x(child)) child = child + 1
+      end if
+      if (.not. x(child) > v) exit
+      x(parent) = x(child)
+      parent = child
+    end do
+    x(parent) = v
+  end subroutine sift
 
 end module kinetostat_dynamics
