@@ -26,7 +26,7 @@ module kinetostat_assur_deck
     output_pair_of, assur_extreme, assur_kinematics, link_position
   use kinetostat_assur_friction, only: pair_friction_t, friction_active
   use kinetostat_dynamics, only: dynamics_steady
-  use kinetostat_dynamics_deck, only: dynamics_deck_t, read_dynamics_settings, require_one_turn
+  use kinetostat_dynamics_deck, only: dynamics_deck_t, read_dynamics_settings, require_one_turn, md_table_capacity
   implicit none
   private
   public :: assur_deck_t, read_assur_deck, write_assur_template, assur_window
@@ -426,6 +426,8 @@ contains
     real(wp) :: crank_at(2), crank_m, crank_j, crank_s(2), omega1, g, gravity_angle, phi_start, dphi
     !> Machine dynamics variables (see kinetostat_dynamics_deck).
     real(wp) :: delta, j_rotor, j_flywheel
+    !> The driving-moment table (pairs phi deg, M_d; see kinetostat_dynamics_deck).
+    real(wp) :: md_table(md_table_capacity)
     character(len=32) :: dynamics
     !> Friction coefficient and journal radius (m) of the crank's pivot A.
     real(wp) :: crank_f, crank_r
@@ -445,12 +447,13 @@ contains
     namelist /assur/ title, frame_id, crank_id, crank_at, crank_m, crank_j, crank_s, omega1, &
       omega1_step, eps1_step, g, gravity_angle, phi_start, dphi, n, dyad, force, moment, &
       step_values, angles_signed, components, drive_dyad, drive_pair, output_link, phi1, start_at, crank_f, crank_r, &
-      coordinates, phi_ref, dynamics, delta, j_rotor, j_flywheel
+      coordinates, phi_ref, dynamics, delta, j_rotor, j_flywheel, md_table
 
     ctx%path = source%path
     ctx%group = group_name
     allocate (title)
     dynamics = ""; delta = unset_real; j_rotor = unset_real; j_flywheel = unset_real
+    md_table = unset_real
     title = ""
     frame_id = 0.0_wp; crank_id = 1.0_wp; n = unset_real
     drive_dyad = unset_real; drive_pair = unset_real
@@ -725,7 +728,8 @@ contains
         "the dynamics stage needs omega1 (the mean speed)", error)
       if (allocated(error)) return
     end if
-    call read_dynamics_settings(ctx, dynamics, delta, j_rotor, j_flywheel, omega1, deck%dyn, error)
+    call read_dynamics_settings(ctx, dynamics, delta, j_rotor, j_flywheel, omega1, deck%dyn, error, &
+      md_table)
     if (allocated(error)) return
     if (deck%dyn%mode >= dynamics_steady) then
       call require_rule(ctx, "dynamics", .not. deck%friction_on, "a steady cycle with friction in the pairs is "// &

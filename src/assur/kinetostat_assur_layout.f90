@@ -351,8 +351,8 @@ contains
         call put_dynamics_values(table, k, self%deck%dyn%mode, motions(k))
       end do
       if (self%deck%dyn%mode >= dynamics_steady) call constant_speed_cost(self%deck, first, last, omega1, table)
-      if (self%deck%dyn%mode >= dynamics_steady) call note_drive_deviation(table, maxval(abs(m1 - self%cycle%m_d)), &
-        max(abs(self%cycle%m_d), maxval(abs(motions%m)), maxval(abs((self%cycle%j_flywheel + motions%j) * motions%eps))))
+      if (self%deck%dyn%mode >= dynamics_steady) call note_drive_deviation(table, maxval(abs(m1 - motions%md)), &
+        max(maxval(abs(motions%md)), maxval(abs(motions%m)), maxval(abs((self%cycle%j_flywheel + motions%j) * motions%eps))))
     end if
     if (self%deck%mech%drive_dyad == 0) then
       call table%set_selfcheck(maxval(residual), maxval(mismatch), "M1", &

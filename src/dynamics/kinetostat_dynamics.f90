@@ -19,7 +19,7 @@ module kinetostat_dynamics
   private
   public :: reduced_t, reduced_source_t, cycle_t, motion_t
   public :: dynamics_none, dynamics_reduced, dynamics_steady, dynamics_given
-  public :: cycle_setup, cycle_steady, cycle_given, motion_at, cycle_dT
+  public :: cycle_setup, cycle_steady, cycle_given, motion_at, cycle_dT, drive_at
 
   !> Dynamics mode: none (the input's motion as the deck gives it).
   integer, parameter :: dynamics_none = 0
@@ -100,8 +100,14 @@ module kinetostat_dynamics
     real(wp) :: j_links_constant = 0.0_wp
     !> Mean speed (omega_max + omega_min)/2, rad/s.
     real(wp) :: omega_mean = 0.0_wp
-    !> Driving moment, N*m (constant, zero net work over the cycle).
+    !> Driving moment, N*m (constant, zero net work over the cycle; 0 with a driving-moment
+    !> table: drive_at; its mean is then -load_work/(2 pi)).
     real(wp) :: m_d = 0.0_wp
+    !> A driving-moment table: its angles, rad (increasing, within one turn from the first),
+    !> and its moments scaled to zero net work, N*m (not allocated: M_d constant).
+    real(wp), allocatable :: drive_phi(:), drive_m(:)
+    !> The factor the table's values were scaled by.
+    real(wp) :: drive_scale = 1.0_wp
     !> Flywheel, kg*m^2.
     real(wp) :: j_flywheel = 0.0_wp
     !> Merzalov's estimate of the flywheel, kg*m^2.
@@ -134,6 +140,8 @@ module kinetostat_dynamics
     real(wp) :: dj = 0.0_wp
     !> M_red, N*m.
     real(wp) :: m = 0.0_wp
+    !> The driving moment M_d at the angle, N*m.
+    real(wp) :: md = 0.0_wp
   end type motion_t
 
 contains
@@ -141,7 +149,7 @@ contains
   !> The panels of the cycle phi0 .. phi0 + 2 pi (load switches `breaks`, rad, as bounds),
   !> J_red and the work of M_red at their bounds, and M_d of zero net work; `where` names the
   !> deck in messages.
-  pure subroutine cycle_setup(source, phi0, breaks, j_rotor, omega_mean, where, cycle, error)
+  pure subroutine cycle_setup(source, phi0, breaks, j_rotor, omega_mean, where, cycle, error, drive_phi, drive_value)
     !> The mechanism's reduced quantities.
     class(reduced_source_t), intent(in) :: source
     !> First input angle, rad.
@@ -156,7 +164,11 @@ contains
     character(*), intent(in) :: where
     type(cycle_t), intent(out) :: cycle
     type(error_t), allocatable, intent(out) :: error
-    real(wp), allocatable :: bounds(:)
+    !> A driving-moment table (optional, both or neither): angles, rad (strictly increasing,
+    !> last - first < 2 pi; periodic, linear between the points), and the moments in any
+    !> scale: they are scaled so that the cycle does zero net work.
+    real(wp), intent(in), optional :: drive_phi(:), drive_value(:)
+    real(wp), allocatable :: bounds(:), all_breaks(:)
     real(wp) :: b, w, span, c, h
     type(reduced_t) :: red
     integer :: i, k, np, pieces, q
@@ -165,11 +177,17 @@ contains
     cycle%j_rotor = j_rotor
     cycle%omega_mean = omega_mean
     ! piece bounds: phi0, the switches inside the turn (sorted, distinct), phi0 + 2 pi
-    allocate (bounds(size(breaks) + 2))
+    all_breaks = breaks
+    if (present(drive_phi) .and. present(drive_value)) then
+      cycle%drive_phi = drive_phi
+      cycle%drive_m = drive_value
+      all_breaks = [breaks, drive_phi]
+    end if
+    allocate (bounds(size(all_breaks) + 2))
     bounds(1) = phi0
     k = 1
-    do i = 1, size(breaks)
-      b = phi0 + modulo(breaks(i) - phi0, 2.0_wp * pi)
+    do i = 1, size(all_breaks)
+      b = phi0 + modulo(all_breaks(i) - phi0, 2.0_wp * pi)
       if (b - phi0 <= 1.0e-12_wp .or. phi0 + 2.0_wp * pi - b <= 1.0e-12_wp) cycle
       k = k + 1
       bounds(k) = b
@@ -232,6 +250,40 @@ contains
     end do
     cycle%load_work = cycle%dt(np)
     cycle%m_d = -cycle%dt(np) / (2.0_wp * pi)
+    if (allocated(cycle%drive_m)) then
+      ! the table's shape, scaled to zero net work: its work over the panels (linear in each)
+      w = 0.0_wp
+      c = 0.0_wp
+      do k = 1, np
+        w = w + 0.5_wp * (cycle%node(k) - cycle%node(k - 1)) * &
+            (drive_at(cycle, cycle%node(k - 1)) + drive_at(cycle, cycle%node(k)))
+        c = c + 0.5_wp * (cycle%node(k) - cycle%node(k - 1)) * &
+            (abs(drive_at(cycle, cycle%node(k - 1))) + abs(drive_at(cycle, cycle%node(k))))
+      end do
+      if (abs(w) <= 1.0e-12_wp * c) then
+        call fatal_error(error, exit_input, where//": md_table: the driving-moment table does no net work "// &
+          "over the cycle: it cannot be scaled to balance the loads' work "//real_str(cycle%load_work)//" J")
+        return
+      end if
+      if (.not. -cycle%load_work / w > 0.0_wp) then
+        call fatal_error(error, exit_input, where//": md_table: the table's work over the cycle ("// &
+          real_str(w)//" J as given) has the sign of the loads' ("//real_str(cycle%load_work)// &
+          " J): no positive scale makes the net work zero (a motor's table drives where the loads consume)")
+        return
+      end if
+      cycle%drive_scale = -cycle%load_work / w
+      cycle%drive_m = cycle%drive_m * cycle%drive_scale
+      ! dT = work of M_red (so far) + the table's, cumulated over the panels; M_d constant = 0
+      c = 0.0_wp
+      do k = 1, np
+        c = c + 0.5_wp * (cycle%node(k) - cycle%node(k - 1)) * &
+            (drive_at(cycle, cycle%node(k - 1)) + drive_at(cycle, cycle%node(k)))
+        cycle%dt(k) = cycle%dt(k) + c
+      end do
+      cycle%m_d = 0.0_wp
+      cycle%dt(np) = 0.0_wp
+      return
+    end if
     do k = 0, np
       cycle%dt(k) = cycle%dt(k) + cycle%m_d * (cycle%node(k) - phi0)
     end do
@@ -479,7 +531,7 @@ contains
       real(wp), intent(in) :: phi
       type(reduced_t) :: red
       red = source%at(phi)
-      g_of = cycle%m_d + red%m - 0.5_wp * red%dj * omega_of(phi)**2
+      g_of = drive_at(cycle, phi) + red%m - 0.5_wp * red%dj * omega_of(phi)**2
     end function g_of
 
     !> omega at phi inside the cycle.
@@ -512,7 +564,43 @@ contains
     h = 0.5_wp * (cycle%node(k + 1) - cycle%node(k))
     dt = cycle%dt(k) + h * sum(cycle%m_gl(:, k + 1) * partial_weights(cycle, (x - cycle%node(k)) / h - 1.0_wp)) + &
          cycle%m_d * (x - cycle%node(k))
+    ! a driving-moment table is linear inside a panel (its points are panel bounds)
+    if (allocated(cycle%drive_m)) dt = dt + 0.5_wp * (x - cycle%node(k)) * &
+      (drive_at(cycle, cycle%node(k)) + drive_at(cycle, x))
   end function cycle_dT
+
+  !> The driving moment at phi (rad), N*m: the constant M_d, or the scaled table, linear
+  !> between its points and periodic over the turn (continuous).
+  pure real(wp) function drive_at(cycle, phi) result(md)
+    type(cycle_t), intent(in) :: cycle
+    real(wp), intent(in) :: phi
+    real(wp) :: x, x0, x1, m0, m1
+    integer :: n, i
+    md = cycle%m_d
+    if (.not. allocated(cycle%drive_m)) return
+    n = size(cycle%drive_phi)
+    if (n == 1) then
+      md = cycle%drive_m(1)
+      return
+    end if
+    x = cycle%drive_phi(1) + modulo(phi - cycle%drive_phi(1), 2.0_wp * pi)
+    ! the segment [phi_i, phi_i+1] holding x; past the last point, the wrap to the first + 2 pi
+    i = n
+    do while (i > 1)
+      if (cycle%drive_phi(i) <= x) exit
+      i = i - 1
+    end do
+    x0 = cycle%drive_phi(i)
+    m0 = cycle%drive_m(i)
+    if (i < n) then
+      x1 = cycle%drive_phi(i + 1)
+      m1 = cycle%drive_m(i + 1)
+    else
+      x1 = cycle%drive_phi(1) + 2.0_wp * pi
+      m1 = cycle%drive_m(1)
+    end if
+    md = m0 + (m1 - m0) * (x - x0) / (x1 - x0)
+  end function drive_at
 
   !> The weights of the samples for the integral from -1 to s (-1 <= s <= 1) of the
   !> interpolant through the 8 Gauss-Legendre points.
@@ -610,7 +698,8 @@ contains
     mo%m = red%m
     mo%dt = cycle_dT(cycle, phi)
     mo%omega = sqrt(2.0_wp * max(cycle%e0 + mo%dt, 0.0_wp) / (cycle%j_flywheel + mo%j))
-    mo%eps = (cycle%m_d + mo%m - 0.5_wp * mo%dj * mo%omega**2) / (cycle%j_flywheel + mo%j)
+    mo%md = drive_at(cycle, phi)
+    mo%eps = (mo%md + mo%m - 0.5_wp * mo%dj * mo%omega**2) / (cycle%j_flywheel + mo%j)
     call locate(cycle, phi, x, k)
     h = 0.5_wp * (cycle%node(k + 1) - cycle%node(k))
     mo%t = cycle%time(k) + h * sum(cycle%r_gl(:, k + 1) * partial_weights(cycle, (x - cycle%node(k)) / h - 1.0_wp))

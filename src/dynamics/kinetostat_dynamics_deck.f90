@@ -2,15 +2,20 @@
 !> `j_flywheel`), validated alike for every mechanism, and the rule that a steady cycle
 !> covers exactly one turn of the input.
 module kinetostat_dynamics_deck
-  use kinetostat_kinds, only: wp
+  use kinetostat_kinds, only: wp, deg_to_rad
   use kinetostat_error, only: error_t
-  use kinetostat_text, only: real_str
-  use kinetostat_deck, only: deck_context_t, deck_error, is_set, require_rule, optional_default, require_nonnegative
+  use kinetostat_text, only: real_str, int_str
+  use kinetostat_deck, only: deck_context_t, deck_error, is_set, require_rule, optional_default, require_nonnegative, &
+    count_values
   use kinetostat_dynamics, only: dynamics_none, dynamics_reduced, dynamics_steady, dynamics_given, &
     reduced_source_t, cycle_t, cycle_setup, cycle_steady, cycle_given
   implicit none
   private
   public :: dynamics_deck_t, read_dynamics_settings, require_one_turn, dynamics_mode_name, deck_cycle
+  public :: md_table_capacity
+
+  !> Values a deck's `md_table` may hold (pairs of angle and moment).
+  integer, parameter :: md_table_capacity = 2 * 360
 
   !> Validated dynamics settings of a deck.
   type :: dynamics_deck_t
@@ -22,6 +27,10 @@ module kinetostat_dynamics_deck
     real(wp) :: j_rotor = 0.0_wp
     !> Flywheel ('given'), kg*m^2.
     real(wp) :: j_flywheel = 0.0_wp
+    !> The driving-moment table's angles as given, deg (not allocated: M_d constant).
+    real(wp), allocatable :: md_phi(:)
+    !> Its moments as given (any scale: scaled to zero net work over the cycle), N*m.
+    real(wp), allocatable :: md_value(:)
   end type dynamics_deck_t
 
 contains
@@ -45,7 +54,7 @@ contains
   !> Validate the dynamics variables as read (reals unset_real when not given; `mode_text`
   !> blank when not given). `omega1` is the deck's crank speed (the mean speed with 'steady'
   !> and 'given').
-  subroutine read_dynamics_settings(ctx, mode_text, delta, j_rotor, j_flywheel, omega1, dyn, error)
+  subroutine read_dynamics_settings(ctx, mode_text, delta, j_rotor, j_flywheel, omega1, dyn, error, md_table)
     type(deck_context_t), intent(in) :: ctx
     !> Value of `dynamics` ('none', 'reduced', 'steady', 'given'; blank: none).
     character(*), intent(in) :: mode_text
@@ -53,6 +62,15 @@ contains
     real(wp), intent(in) :: delta, j_rotor, j_flywheel, omega1
     type(dynamics_deck_t), intent(out) :: dyn
     type(error_t), allocatable, intent(out) :: error
+    !> The deck's `md_table` (pairs phi deg, M_d; unset_real past the values given), when the
+    !> mechanism offers it.
+    real(wp), intent(in), optional :: md_table(:)
+    integer :: n_md, i
+    n_md = 0
+    if (present(md_table)) then
+      call count_values(ctx, "md_table", md_table, n_md, error)
+      if (allocated(error)) return
+    end if
     select case (trim(adjustl(mode_text)))
     case ("", "none")
       dyn%mode = dynamics_none
@@ -67,10 +85,29 @@ contains
         "' (expected 'none', 'reduced', 'steady' or 'given')", error)
       return
     end select
+    call require_rule(ctx, "md_table", n_md == 0 .or. dyn%mode >= dynamics_steady, &
+      "a driving-moment table needs dynamics = 'steady' or 'given'", error)
+    if (allocated(error)) return
     if (dyn%mode == dynamics_none) then
       call require_rule(ctx, "delta", .not. any(is_set([delta, j_rotor, j_flywheel])), &
         "delta, j_rotor and j_flywheel need dynamics = 'steady' or 'given'", error)
       return
+    end if
+    if (n_md > 0) then
+      call require_rule(ctx, "md_table", mod(n_md, 2) == 0 .and. n_md >= 4, "give pairs of crank angle (deg) "// &
+        "and driving moment, at least two (got "//int_str(n_md)//" values)", error)
+      if (allocated(error)) return
+      dyn%md_phi = md_table(1:n_md:2)
+      dyn%md_value = md_table(2:n_md:2)
+      do i = 2, size(dyn%md_phi)
+        call require_rule(ctx, "md_table", dyn%md_phi(i) > dyn%md_phi(i - 1), "the angles must increase (point "// &
+          int_str(i)//": "//real_str(dyn%md_phi(i))//" deg after "//real_str(dyn%md_phi(i - 1))//" deg)", error)
+        if (allocated(error)) return
+      end do
+      call require_rule(ctx, "md_table", dyn%md_phi(size(dyn%md_phi)) - dyn%md_phi(1) < 360.0_wp, &
+        "the angles must lie within one turn (last - first < 360 deg; the table repeats every turn), got "// &
+        real_str(dyn%md_phi(size(dyn%md_phi)) - dyn%md_phi(1))//" deg", error)
+      if (allocated(error)) return
     end if
     dyn%j_rotor = optional_default(j_rotor, 0.0_wp)
     call require_nonnegative(ctx, "j_rotor", dyn%j_rotor, error); if (allocated(error)) return
@@ -140,7 +177,12 @@ contains
     !> The constant part of the links' J_red (the input link's own inertia), kg*m^2, for
     !> Merzalov's estimate (default 0).
     real(wp), intent(in), optional :: j_links_constant
-    call cycle_setup(source, phi0, breaks, dyn%j_rotor, omega_mean, where, cycle, error)
+    if (allocated(dyn%md_phi)) then
+      call cycle_setup(source, phi0, breaks, dyn%j_rotor, omega_mean, where, cycle, error, &
+                       dyn%md_phi * deg_to_rad, dyn%md_value)
+    else
+      call cycle_setup(source, phi0, breaks, dyn%j_rotor, omega_mean, where, cycle, error)
+    end if
     if (allocated(error)) return
     if (present(j_links_constant)) cycle%j_links_constant = j_links_constant
     if (dyn%mode == dynamics_steady) then

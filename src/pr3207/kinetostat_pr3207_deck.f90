@@ -10,7 +10,7 @@ module kinetostat_pr3207_deck
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn
   use kinetostat_pr3207, only: pr3207_params_t
   use kinetostat_dynamics, only: dynamics_steady
-  use kinetostat_dynamics_deck, only: dynamics_deck_t, read_dynamics_settings, require_one_turn
+  use kinetostat_dynamics_deck, only: dynamics_deck_t, read_dynamics_settings, require_one_turn, md_table_capacity
   implicit none
   private
   public :: pr3207_deck_t, read_pr3207_deck, write_pr3207_template, pr3207_cut_force
@@ -112,6 +112,8 @@ contains
     type(error_t), allocatable, intent(out) :: error
     real(wp) :: l_ab, l_ac, l_cd, l_cs3, m1, m3, m5, j3, omega1, g, phi_start, dphi
     real(wp) :: f5c_work, f5c_idle, phi_cut_start, phi_cut_end, delta, j_rotor, j_flywheel
+    !> The driving-moment table (pairs phi deg, M_d; see kinetostat_dynamics_deck).
+    real(wp) :: md_table(md_table_capacity)
     character(len=32) :: dynamics
     real(wp), allocatable :: f5c(:)
     !> Number of steps as given (an integer deck variable, read as a real: see require_whole).
@@ -123,7 +125,7 @@ contains
     type(namelist_probe_t) :: probe
     logical :: two_value_given
     namelist /pr3207/ l_ab, l_ac, l_cd, l_cs3, m1, m3, m5, j3, omega1, g, phi_start, dphi, n, &
-      f5c, f5c_work, f5c_idle, phi_cut_start, phi_cut_end, dynamics, delta, j_rotor, j_flywheel
+      f5c, f5c_work, f5c_idle, phi_cut_start, phi_cut_end, dynamics, delta, j_rotor, j_flywheel, md_table
 
     ctx%path = source%path
     ctx%group = "pr3207"
@@ -133,6 +135,7 @@ contains
     f5c_work = unset_real; f5c_idle = unset_real; phi_cut_start = unset_real; phi_cut_end = unset_real
     n = unset_real
     dynamics = ""; delta = unset_real; j_rotor = unset_real; j_flywheel = unset_real
+    md_table = unset_real
     capacity = deck_array_capacities(source, ctx%group, ["f5c"])
     allocate (f5c(capacity(1)), source=unset_real)
 
@@ -204,7 +207,8 @@ contains
     end if
 
     ! machine dynamics: a steady cycle needs one whole turn and the load at any crank angle
-    call read_dynamics_settings(ctx, dynamics, delta, j_rotor, j_flywheel, omega1, deck%dyn, error)
+    call read_dynamics_settings(ctx, dynamics, delta, j_rotor, j_flywheel, omega1, deck%dyn, error, &
+      md_table)
     if (allocated(error)) return
     if (deck%dyn%mode >= dynamics_steady) then
       call require_one_turn(ctx, dphi, deck%n, error); if (allocated(error)) return

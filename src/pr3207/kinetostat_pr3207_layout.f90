@@ -184,7 +184,7 @@ contains
       end do
       if (self%deck%dyn%mode >= dynamics_steady) call constant_speed_cost(self%deck, steps, first, last, table)
       if (self%deck%dyn%mode >= dynamics_steady) call note_drive_deviation(table, &
-        maxval(abs(steps%m1 - self%cycle%m_d)), max(abs(self%cycle%m_d), maxval(abs(motions%m)), &
+        maxval(abs(steps%m1 - motions%md)), max(maxval(abs(motions%md)), maxval(abs(motions%m)), &
         maxval(abs((self%cycle%j_flywheel + motions%j) * motions%eps))))
     end if
     if (table%kinematics_wanted) then

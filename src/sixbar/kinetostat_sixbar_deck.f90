@@ -10,7 +10,7 @@ module kinetostat_sixbar_deck
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn
   use kinetostat_sixbar, only: sixbar_params_t, sixbar_extreme_phi1
   use kinetostat_dynamics, only: dynamics_steady
-  use kinetostat_dynamics_deck, only: dynamics_deck_t, read_dynamics_settings, require_one_turn
+  use kinetostat_dynamics_deck, only: dynamics_deck_t, read_dynamics_settings, require_one_turn, md_table_capacity
   implicit none
   private
   public :: sixbar_deck_t, read_sixbar_deck, write_sixbar_template, sixbar_phi1_deg
@@ -87,6 +87,8 @@ contains
     real(wp) :: m1, m2, m3, m4, m5, j1, j2, j3, j4, omega1, g, dphi, phi_start, phi_ext
     !> Machine dynamics variables (see kinetostat_dynamics_deck).
     real(wp) :: delta, j_rotor, j_flywheel
+    !> The driving-moment table (pairs phi deg, M_d; see kinetostat_dynamics_deck).
+    real(wp) :: md_table(md_table_capacity)
     character(len=32) :: dynamics
     real(wp), allocatable :: f5(:)
     logical :: start_at_extreme, legacy_eq2, ok
@@ -99,11 +101,12 @@ contains
     type(namelist_probe_t) :: probe
     namelist /sixbar/ a, b, l1, lam2, lam_s2, lam3, lam_de, lam4, lam_s4, lam_e, &
       m1, m2, m3, m4, m5, j1, j2, j3, j4, omega1, g, dphi, n, phi_start, start_at_extreme, f5, legacy_eq2, &
-      dynamics, delta, j_rotor, j_flywheel
+      dynamics, delta, j_rotor, j_flywheel, md_table
 
     ctx%path = source%path
     ctx%group = "sixbar"
     dynamics = ""; delta = unset_real; j_rotor = unset_real; j_flywheel = unset_real
+    md_table = unset_real
     a = unset_real; b = unset_real; l1 = unset_real
     lam2 = unset_real; lam_s2 = unset_real; lam3 = unset_real; lam_de = unset_real
     lam4 = unset_real; lam_s4 = unset_real; lam_e = unset_real
@@ -159,7 +162,8 @@ contains
     call require_nonnegative(ctx, "g", g, error); if (allocated(error)) return
 
     ! machine dynamics (a steady cycle takes f5 as a table over the crank angle: below)
-    call read_dynamics_settings(ctx, dynamics, delta, j_rotor, j_flywheel, omega1, deck%dyn, error)
+    call read_dynamics_settings(ctx, dynamics, delta, j_rotor, j_flywheel, omega1, deck%dyn, error, &
+      md_table)
     if (allocated(error)) return
 
     deck%p = sixbar_params_t(a=a, b=b, l1=l1, lam2=lam2, lam_s2=lam_s2, lam3=lam3, lam_de=lam_de, &

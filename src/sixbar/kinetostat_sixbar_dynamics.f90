@@ -121,7 +121,7 @@ contains
     else
       mo = motion_at(source, cycle, phi)
       mo%m = r(3)
-      mo%eps = (cycle%m_d + mo%m - 0.5_wp * mo%dj * mo%omega**2) / (cycle%j_flywheel + mo%j)
+      mo%eps = (mo%md + mo%m - 0.5_wp * mo%dj * mo%omega**2) / (cycle%j_flywheel + mo%j)
     end if
   end function sixbar_motion
 

@@ -143,3 +143,34 @@ if [ "$(head -1 "$out")" = "phi3rel,F14,F14G,F34,F34G,F32,F32G,F2,J_red,dJ_red,M
 else fail dynamics-pr3050-columns "header '$(head -1 "$out")' or the forces changed"; fi
 expect_input_error dynamics-pr3050-steady "PR 3050's input is the cylinder's stroke" "$(deck_with p50_st data/pr3050.nml "s/^\/$/  dynamics = 'steady'\n\//")"
 expect_input_error dynamics-pr3050-given "needs a crank" "$(deck_with p50_gv data/pr3050.nml "s/^\/$/  dynamics = 'given'\n\//")"
+
+# --- a driving-moment table (a motor characteristic over the crank angle), scaled to zero net
+# work: the dedicated and the generic deck give the same cycle; M1 follows the table
+mdt="md_table = 0, 1, 90, 1.5, 180, 1, 270, 0.5"
+run_ks "$(deck_with md_a "$fw" "s/j_rotor = 0.6 /j_rotor = 0.6, $mdt /")" --format json; cp "$out" "$cli_tmp/md_a.json"
+run_ks "$(deck_with md_b data/assur_pr3207_flywheel.nml "s/j_rotor = 0.6 /j_rotor = 0.6, $mdt /")" --format json; cp "$out" "$cli_tmp/md_b.json"
+if python3 - "$cli_tmp/md_a.json" "$cli_tmp/md_b.json" "$cli_tmp/fw.json" <<'PY'
+import json, math, sys
+a, b, c = (json.load(open(f)) for f in sys.argv[1:4])
+def close(x, y, scale): return abs(x - y) <= 1e-9 * max(abs(x), abs(y), scale)
+da = a["dynamics"]
+assert close(da["M_d"], c["dynamics"]["M_d"], 1e-12), "mean differs from the constant M_d"
+assert close(da["M_d_max"], 1.5 * da["M_d_scale"], 1) and close(da["M_d_min"], 0.5 * da["M_d_scale"], 1)
+assert abs(da["delta"] - 0.04) <= 4e-11 and a["selfcheck"]["max_drive_deviation"] <= 1e-9
+for k in ["M_d", "M_d_scale", "J_flywheel", "omega_max", "omega_min", "phi_omega_min", "period"]:
+    assert close(da[k], b["dynamics"][k], 1e-12), (k, da[k], b["dynamics"][k])
+cols = [x["name"] for x in a["columns"]]
+p, m = cols.index("phi1"), cols.index("M1")
+for r in a["rows"]:
+    phi = r[p] % 360
+    i = min(int(phi // 90), 3)
+    shape = [1, 1.5, 1, 0.5, 1][i] + ([1, 1.5, 1, 0.5, 1][i + 1] - [1, 1.5, 1, 0.5, 1][i]) * (phi - 90 * i) / 90
+    assert close(r[m], shape * da["M_d_scale"], 1), (phi, r[m])
+PY
+then pass; else fail dynamics-md-table "the driving-moment table: mean, shape, M1 = M_d(phi) or the generic twin differ"; fi
+expect_input_error dynamics-md-table-sign "md_table: the table's work" "$(deck_with md_neg "$fw" "s/j_rotor = 0.6 /j_rotor = 0.6, md_table = 0, -1, 180, -2 /")"
+expect_input_error dynamics-md-table-zero "md_table: the driving-moment table does no net work" "$(deck_with md_zero "$fw" "s/j_rotor = 0.6 /j_rotor = 0.6, md_table = 0, 1, 180, -1 /")"
+expect_input_error dynamics-md-table-pairs "md_table: give pairs" "$(deck_with md_odd "$fw" "s/j_rotor = 0.6 /j_rotor = 0.6, md_table = 0, 1, 180 /")"
+expect_input_error dynamics-md-table-order "md_table: the angles must increase" "$(deck_with md_ord "$fw" "s/j_rotor = 0.6 /j_rotor = 0.6, md_table = 90, 1, 0, 2 /")"
+expect_input_error dynamics-md-table-turn "md_table: the angles must lie within one turn" "$(deck_with md_turn "$fw" "s/j_rotor = 0.6 /j_rotor = 0.6, md_table = 0, 1, 360, 2 /")"
+expect_input_error dynamics-md-table-mode "md_table: a driving-moment table needs" "$(deck_with md_mode data/pr3207.nml "s/dphi = 30/dphi = 30, md_table = 0, 1, 180, 2/")"
