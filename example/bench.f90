@@ -14,6 +14,10 @@
 !> with OpenMP and more than one processor, the parallel steps: wall time of the end-to-end
 !> CSV and table runs at the largest step count with one thread and with every processor,
 !> the speed-up, and what Amdahl's law makes of it for 4 and 8 cores and for any number.
+!> With pr3207 or assur wanted, the cost of the machine dynamics stage: a 10^5-step run (or
+!> MAX_STEPS if smaller) over one turn of the deck with its flywheel (data/pr3207_flywheel.nml,
+!> data/assur_pr3207_flywheel.nml) against the same steps of the plain deck, solve alone and
+!> CSV end to end, and their ratio.
 !> Run from the project root (it reads data/*.nml).
 program bench
   !$ use omp_lib, only: omp_set_num_threads, omp_get_num_procs
@@ -107,6 +111,7 @@ program bench
       call bench_one(cases(i), step_counts(j), out_path)
     end do
   end do
+  call bench_dynamics(out_path)
   call bench_threads(out_path)
   open (newunit=i, file=out_path, status='old', iostat=j)
   if (j == 0) close (i, status='delete')
@@ -227,6 +232,69 @@ contains
       end do
     end do
   end subroutine bench_threads
+
+  !> The machine dynamics stage's cost, processor seconds: for PR 3207 and the generic engine
+  !> (when wanted), the deck with its flywheel and the plain deck at the same N steps over one
+  !> turn (N = 10^5, or MAX_STEPS if smaller): the solve alone (the steps' kernel with the true
+  !> motion and the constant-speed comparison; the cycle itself is solved with the deck) and
+  !> the CSV run end to end (deck text to file: the cycle, the steps, 7 more columns), and the
+  !> ratio dynamics / plain of each.
+  subroutine bench_dynamics(path)
+    !> Output file of the end-to-end runs.
+    character(*), intent(in) :: path
+    character(*), parameter :: dyn_fmt = '(a8,i9,2f9.3,f7.2,2f9.3,f7.2)'
+    type(bench_case_t), parameter :: plain(2) = [bench_case_t("pr3207", "data/pr3207.nml"), &
+      bench_case_t("assur", "data/assur_pr3207.nml")]
+    type(bench_case_t), parameter :: flywheel(2) = [bench_case_t("pr3207", "data/pr3207_flywheel.nml"), &
+      bench_case_t("assur", "data/assur_pr3207_flywheel.nml")]
+    character(len=:), allocatable :: text_plain, text_dyn
+    real(wp) :: s_plain, s_dyn, c_plain, c_dyn
+    integer :: i, n
+    if (.not. any(wanted .and. (cases%kind == "pr3207" .or. cases%kind == "assur"))) return
+    n = min(max_steps, 100000)
+    write (output_unit, '(a)') "machine dynamics (steady cycle with its flywheel) against the plain deck, one turn, " // &
+      "CPU seconds:"
+    write (output_unit, '(a)') "    kind    steps    solve  +dynamics ratio      csv +dynamics ratio"
+    do i = 1, size(plain)
+      if (.not. any(wanted .and. cases%kind == plain(i)%kind)) cycle
+      text_plain = one_turn_deck(plain(i), n)
+      text_dyn = one_turn_deck(flywheel(i), n)
+      s_plain = solve_seconds(plain(i), text_plain, .false.)
+      s_dyn = solve_seconds(flywheel(i), text_dyn, .false.)
+      c_plain = end_to_end_seconds(plain(i), text_plain, format_csv, path)
+      c_dyn = end_to_end_seconds(flywheel(i), text_dyn, format_csv, path)
+      write (output_unit, dyn_fmt) plain(i)%kind, n, s_plain, s_dyn, s_dyn / s_plain, c_plain, c_dyn, c_dyn / c_plain
+      flush (output_unit)
+    end do
+  end subroutine bench_dynamics
+
+  !> A bundled deck at `n` steps over exactly one turn (dphi = 360/(n - 1); a steady cycle
+  !> needs it), as the text of a deck.
+  function one_turn_deck(c, n) result(text)
+    type(bench_case_t), intent(in) :: c
+    integer, intent(in) :: n
+    character(len=:), allocatable :: text
+    type(deck_source_t) :: source
+    type(error_t), allocatable :: error
+    character(len=32) :: dphi, count
+    integer :: k, last
+    call load_deck(trim(c%deck), source, error)
+    if (allocated(error)) error stop "bench: run from the project root (cannot read the bundled decks)"
+    write (dphi, '(es24.17)') 360.0_wp / (n - 1)
+    write (count, '(i0)') n
+    last = deck_line_count(source)
+    do k = deck_line_count(source), 1, -1
+      if (adjustl(deck_line(source, k)) == "/") then
+        last = k
+        exit
+      end if
+    end do
+    text = ""
+    do k = 1, last - 1
+      text = text//trim(deck_line(source, k))//new_line("a")
+    end do
+    text = text//"  dphi = "//trim(dphi)//", n = "//trim(count)//new_line("a")//"/"//new_line("a")
+  end function one_turn_deck
 
   !> Amdahl's law: the speed-up on `cores` cores of a run whose serial fraction is `serial`.
   pure real(wp) function amdahl(serial, cores)

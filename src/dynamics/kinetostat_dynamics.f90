@@ -19,7 +19,7 @@ module kinetostat_dynamics
   private
   public :: reduced_t, reduced_source_t, cycle_t, motion_t
   public :: dynamics_none, dynamics_reduced, dynamics_steady, dynamics_given
-  public :: cycle_setup, cycle_steady, cycle_given, motion_at, cycle_dT, drive_at
+  public :: cycle_setup, cycle_steady, cycle_given, motion_at, motion_from, cycle_dT, drive_at
 
   !> Dynamics mode: none (the input's motion as the deck gives it).
   integer, parameter :: dynamics_none = 0
@@ -558,16 +558,26 @@ contains
   pure real(wp) function cycle_dT(cycle, phi) result(dt)
     type(cycle_t), intent(in) :: cycle
     real(wp), intent(in) :: phi
-    real(wp) :: x, h
+    real(wp) :: x, h, wt(8)
     integer :: k
     call locate(cycle, phi, x, k)
     h = 0.5_wp * (cycle%node(k + 1) - cycle%node(k))
-    dt = cycle%dt(k) + h * sum(cycle%m_gl(:, k + 1) * partial_weights(cycle, (x - cycle%node(k)) / h - 1.0_wp)) + &
+    wt = partial_weights(cycle, (x - cycle%node(k)) / h - 1.0_wp)
+    dt = dt_inside(cycle, x, k, h, wt)
+  end function cycle_dT
+
+  !> dT at x inside panel k (node k <= x <= node k+1, half-width h) from the partial weights
+  !> `wt` of the panel's samples, J.
+  pure real(wp) function dt_inside(cycle, x, k, h, wt) result(dt)
+    type(cycle_t), intent(in) :: cycle
+    real(wp), intent(in) :: x, h, wt(8)
+    integer, intent(in) :: k
+    dt = cycle%dt(k) + h * sum(cycle%m_gl(:, k + 1) * wt) + &
          cycle%m_d * (x - cycle%node(k))
     ! a driving-moment table is linear inside a panel (its points are panel bounds)
     if (allocated(cycle%drive_m)) dt = dt + 0.5_wp * (x - cycle%node(k)) * &
       (drive_at(cycle, cycle%node(k)) + drive_at(cycle, x))
-  end function cycle_dT
+  end function dt_inside
 
   !> The driving moment at phi (rad), N*m: the constant M_d, or the scaled table, linear
   !> between its points and periodic over the turn (continuous).
@@ -689,21 +699,31 @@ contains
     type(cycle_t), intent(in) :: cycle
     real(wp), intent(in) :: phi
     type(motion_t) :: mo
-    type(reduced_t) :: red
-    real(wp) :: x, h
+    mo = motion_from(cycle, phi, source%at(phi))
+  end function motion_at
+
+  !> The motion at input angle phi (rad) of a solved cycle, with the reduced quantities `red`
+  !> at phi already computed (source%at(phi)).
+  pure function motion_from(cycle, phi, red) result(mo)
+    type(cycle_t), intent(in) :: cycle
+    real(wp), intent(in) :: phi
+    type(reduced_t), intent(in) :: red
+    type(motion_t) :: mo
+    real(wp) :: x, h, wt(8)
     integer :: k
-    red = source%at(phi)
     mo%j = red%j + cycle%j_rotor
     mo%dj = red%dj
     mo%m = red%m
-    mo%dt = cycle_dT(cycle, phi)
+    ! one panel and one set of partial weights for dT and t (the same interpolation)
+    call locate(cycle, phi, x, k)
+    h = 0.5_wp * (cycle%node(k + 1) - cycle%node(k))
+    wt = partial_weights(cycle, (x - cycle%node(k)) / h - 1.0_wp)
+    mo%dt = dt_inside(cycle, x, k, h, wt)
     mo%omega = sqrt(2.0_wp * max(cycle%e0 + mo%dt, 0.0_wp) / (cycle%j_flywheel + mo%j))
     mo%md = drive_at(cycle, phi)
     mo%eps = (mo%md + mo%m - 0.5_wp * mo%dj * mo%omega**2) / (cycle%j_flywheel + mo%j)
-    call locate(cycle, phi, x, k)
-    h = 0.5_wp * (cycle%node(k + 1) - cycle%node(k))
-    mo%t = cycle%time(k) + h * sum(cycle%r_gl(:, k + 1) * partial_weights(cycle, (x - cycle%node(k)) / h - 1.0_wp))
-  end function motion_at
+    mo%t = cycle%time(k) + h * sum(cycle%r_gl(:, k + 1) * wt)
+  end function motion_from
 
   !> The error of a dead position met in the cycle.
   pure subroutine dead_error(phi, where, error)

@@ -13,7 +13,7 @@ module kinetostat_pr3207
   implicit none
   private
   public :: pr3207_params_t, pr3207_position_t, pr3207_step_t
-  public :: pr3207_position, pr3207_step, pr3207_reduced
+  public :: pr3207_position, pr3207_step, pr3207_reduced, pr3207_step_at, pr3207_reduced_at
 
   !> Unit vector of gravity in the PR 3207 frame (x points down).
   real(wp), parameter :: down(2) = [1.0_wp, 0.0_wp]
@@ -161,13 +161,30 @@ contains
     !> Moment of inertia turning with the crank besides its links, kg*m^2 (default 0).
     real(wp), intent(in), optional :: j_input
     type(pr3207_step_t) :: step
-    type(pr3207_position_t) :: pos
+    step = pr3207_step_at(p, pr3207_position(p, phi1), f5c, omega1, eps1, j_input)
+  end function pr3207_step
+
+  !> pr3207_step at a computed position `pos` (of crank angle pos%phi1): a run that needs the
+  !> position for more than one analysis of a step computes it once.
+  pure function pr3207_step_at(p, pos, f5c, omega1, eps1, j_input) result(step)
+    !> Mechanism data.
+    type(pr3207_params_t), intent(in) :: p
+    !> Positions and transfer functions at the crank angle.
+    type(pr3207_position_t), intent(in) :: pos
+    !> Cutting force on the ram, N, signed along +y.
+    real(wp), intent(in) :: f5c
+    !> Crank speed, rad/s (default p%omega1).
+    real(wp), intent(in), optional :: omega1
+    !> Crank acceleration, rad/s^2 (default 0).
+    real(wp), intent(in), optional :: eps1
+    !> Moment of inertia turning with the crank besides its links, kg*m^2 (default 0).
+    real(wp), intent(in), optional :: j_input
+    type(pr3207_step_t) :: step
     real(wp) :: w2, a_s3(2), g1(2), g3(2), g5(2), phi3_f(2), phi5_f(2), m_phi3, f_cut(2)
     real(wp) :: a(2), c(2), e3(2), n32, f32(2), f12(2), m_input
     type(link_balance_t) :: links(5)
     real(wp) :: terms(5)
 
-    pos = pr3207_position(p, phi1)
     step%omega1 = p%omega1
     if (present(omega1)) step%omega1 = omega1
     if (present(eps1)) step%eps1 = eps1
@@ -177,7 +194,7 @@ contains
     a = 0.0_wp
     c = [p%l_ac, 0.0_wp]
     e3 = unit_at(pos%phi3)
-    step%phi1 = phi1
+    step%phi1 = pos%phi1
     step%f5c = f5c
 
     ! loads: gravity along +x, d'Alembert inertia (crank's centre of mass at A)
@@ -229,7 +246,7 @@ contains
     terms(5) = m_input
     step%m1_power = -sum(terms)
     step%mismatch = power_mismatch(step%m1, step%m1_power, sum(abs(terms)), load_moment_scale(links))
-  end function pr3207_step
+  end function pr3207_step_at
 
   !> The reduced quantities at crank angle `phi1` (rad) with cutting force `f5c` (N, along
   !> +y), from the transfer functions: J_red = m3 |v_S3q|^2 + j3 u31^2 + m5 v5q^2 (the crank's
@@ -244,13 +261,23 @@ contains
     !> Cutting force on the ram, N, along +y.
     real(wp), intent(in) :: f5c
     real(wp) :: red(3)
-    type(pr3207_position_t) :: pos
-    pos = pr3207_position(p, phi1)
+    red = pr3207_reduced_at(p, pr3207_position(p, phi1), f5c)
+  end function pr3207_reduced
+
+  !> pr3207_reduced at a computed position `pos`.
+  pure function pr3207_reduced_at(p, pos, f5c) result(red)
+    !> Mechanism data.
+    type(pr3207_params_t), intent(in) :: p
+    !> Positions and transfer functions at the crank angle.
+    type(pr3207_position_t), intent(in) :: pos
+    !> Cutting force on the ram, N, along +y.
+    real(wp), intent(in) :: f5c
+    real(wp) :: red(3)
     red(1) = p%m3 * dot_product(pos%v_s3q, pos%v_s3q) + p%j3 * pos%u31**2 + p%m5 * pos%v5q**2
     red(2) = 2.0_wp * (p%m3 * dot_product(pos%v_s3q, pos%a_s3q) + p%j3 * pos%u31 * pos%eps31 + &
                        p%m5 * pos%v5q * pos%a5q)
     red(3) = dot_product(gravity_force(p%m3, p%g, down), pos%v_s3q) + &
              dot_product(gravity_force(p%m5, p%g, down) + f5c * ram_axis, pos%v5q * ram_axis)
-  end function pr3207_reduced
+  end function pr3207_reduced_at
 
 end module kinetostat_pr3207

@@ -4,10 +4,10 @@
 module kinetostat_pr3207_dynamics
   use kinetostat_kinds, only: wp, deg_to_rad
   use kinetostat_error, only: error_t
-  use kinetostat_dynamics, only: reduced_t, reduced_source_t, cycle_t, motion_t, motion_at, dynamics_none, &
+  use kinetostat_dynamics, only: reduced_t, reduced_source_t, cycle_t, motion_t, motion_from, dynamics_none, &
     dynamics_reduced
   use kinetostat_dynamics_deck, only: deck_cycle
-  use kinetostat_pr3207, only: pr3207_reduced
+  use kinetostat_pr3207, only: pr3207_reduced, pr3207_reduced_at, pr3207_position_t, pr3207_position
   use kinetostat_pr3207_deck, only: pr3207_deck_t, pr3207_cut_force, pr3207_f5c, pr3207_phi1_deg
   implicit none
   private
@@ -28,15 +28,22 @@ contains
     class(pr3207_source_t), intent(in) :: self
     real(wp), intent(in) :: phi
     type(reduced_t) :: red
+    red = reduced_at_position(self%deck, phi, pr3207_position(self%deck%p, phi))
+  end function at
+
+  !> The same at a computed position `pos` of crank angle phi (rad).
+  pure function reduced_at_position(deck, phi, pos) result(red)
+    type(pr3207_deck_t), intent(in) :: deck
+    real(wp), intent(in) :: phi
+    type(pr3207_position_t), intent(in) :: pos
+    type(reduced_t) :: red
     real(wp) :: f5c, r(3)
-    associate (d => self%deck)
-      f5c = pr3207_cut_force(phi / deg_to_rad, d%phi_cut_start, d%phi_cut_end, d%f5c_work, d%f5c_idle)
-      r = pr3207_reduced(d%p, phi, f5c)
-    end associate
+    f5c = pr3207_cut_force(phi / deg_to_rad, deck%phi_cut_start, deck%phi_cut_end, deck%f5c_work, deck%f5c_idle)
+    r = pr3207_reduced_at(deck%p, pos, f5c)
     red%j = r(1)
     red%dj = r(2)
     red%m = r(3)
-  end function at
+  end function reduced_at_position
 
   !> The steady cycle of a deck with dynamics = 'steady' or 'given' (the cutting force's
   !> switches are the quadrature's breakpoints).
@@ -52,30 +59,34 @@ contains
                     deck%p%omega1, path//": &pr3207", cycle, error)
   end subroutine pr3207_cycle
 
-  !> The motion at step k: of the cycle with a steady cycle, else the deck's constant speed
-  !> with the reduced quantities (dynamics = 'reduced').
-  pure function pr3207_motion(deck, cycle, k) result(mo)
+  !> The motion at step k of `source`'s deck: of the cycle with a steady cycle, else the deck's
+  !> constant speed with the reduced quantities (dynamics = 'reduced').
+  pure function pr3207_motion(deck, cycle, k, pos) result(mo)
     type(pr3207_deck_t), intent(in) :: deck
     type(cycle_t), intent(in) :: cycle
     integer, intent(in) :: k
+    !> Positions and transfer functions at the step's crank angle (computed once per step).
+    type(pr3207_position_t), intent(in) :: pos
     type(motion_t) :: mo
-    type(pr3207_source_t) :: source
-    real(wp) :: phi, r(3)
+    real(wp) :: phi, r(3), f5c
     phi = pr3207_phi1_deg(deck, k) * deg_to_rad
     if (deck%dyn%mode == dynamics_none) then
       mo%omega = deck%p%omega1
     else if (deck%dyn%mode == dynamics_reduced) then
-      r = pr3207_reduced(deck%p, phi, pr3207_f5c(deck, k))
+      r = pr3207_reduced_at(deck%p, pos, pr3207_f5c(deck, k))
       mo%omega = deck%p%omega1
       mo%j = r(1) + deck%dyn%j_rotor
       mo%dj = r(2)
       mo%m = r(3)
     else
-      source%deck = deck
-      mo = motion_at(source, cycle, phi)
+      mo = motion_from(cycle, phi, reduced_at_position(deck, phi, pos))
       ! the step's own load at a switch angle (the cycle integrates over it)
-      r = pr3207_reduced(deck%p, phi, pr3207_f5c(deck, k))
-      mo%m = r(3)
+      f5c = pr3207_f5c(deck, k)
+      if (f5c /= pr3207_cut_force(phi / deg_to_rad, deck%phi_cut_start, deck%phi_cut_end, deck%f5c_work, &
+                                  deck%f5c_idle)) then
+        r = pr3207_reduced_at(deck%p, pos, f5c)
+        mo%m = r(3)
+      end if
     end if
   end function pr3207_motion
 

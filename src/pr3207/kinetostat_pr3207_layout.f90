@@ -13,7 +13,8 @@ module kinetostat_pr3207_layout
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_sketch, only: sketch_t
   use kinetostat_table_writer, only: put_two_line_step
-  use kinetostat_pr3207, only: pr3207_params_t, pr3207_position_t, pr3207_step_t, pr3207_step, pr3207_position
+  use kinetostat_pr3207, only: pr3207_params_t, pr3207_position_t, pr3207_step_t, pr3207_step, pr3207_position, &
+    pr3207_step_at
   use kinetostat_pr3207_deck, only: pr3207_deck_t, read_pr3207_deck, write_pr3207_template, pr3207_phi1_deg, &
     pr3207_f5c, pr3207_f5c_steps
   use kinetostat_drawing, only: drawing_t, force_load
@@ -108,7 +109,7 @@ contains
 
   !> All steps of a validated deck (in parallel with OpenMP threads); with a steady `cycle`,
   !> at the true crank speed and acceleration, with the flywheel and rotor on the crank.
-  subroutine pr3207_solve(deck, steps, first, last, cycle, motions)
+  subroutine pr3207_solve(deck, steps, first, last, cycle, motions, const)
     !> Validated deck.
     type(pr3207_deck_t), intent(in) :: deck
     !> One result per crank step (of steps first..last).
@@ -119,11 +120,16 @@ contains
     type(cycle_t), intent(in), optional :: cycle
     !> The motion and reduced quantities of each step (with `cycle`).
     type(motion_t), allocatable, intent(out), optional :: motions(:)
+    !> With a steady cycle, the same steps at the constant speed omega1 = omega_m (as without
+    !> `cycle`), from the same positions.
+    type(pr3207_step_t), allocatable, intent(out), optional :: const(:)
     type(motion_t) :: mo
+    type(pr3207_position_t) :: pos
     integer :: k, k1, k2
     call step_span(deck%n, k1, k2, first, last)
     allocate (steps(k2 - k1 + 1))
     if (present(motions)) allocate (motions(k2 - k1 + 1))
+    if (present(const)) allocate (const(k2 - k1 + 1))
     if (.not. present(cycle)) then
       !$omp parallel do schedule(static)
       do k = k1, k2
@@ -132,15 +138,17 @@ contains
       !$omp end parallel do
       return
     end if
-    !$omp parallel do schedule(static) private(mo)
+    !$omp parallel do schedule(static) private(mo, pos)
     do k = k1, k2
-      mo = pr3207_motion(deck, cycle, k)
+      pos = pr3207_position(deck%p, pr3207_phi1_deg(deck, k) * deg_to_rad)
+      mo = pr3207_motion(deck, cycle, k, pos)
       if (present(motions)) motions(k - k1 + 1) = mo
       if (deck%dyn%mode >= dynamics_steady) then
-        steps(k - k1 + 1) = pr3207_step(deck%p, pr3207_phi1_deg(deck, k) * deg_to_rad, pr3207_f5c(deck, k), &
-                                        mo%omega, mo%eps, cycle%j_flywheel + cycle%j_rotor)
+        steps(k - k1 + 1) = pr3207_step_at(deck%p, pos, pr3207_f5c(deck, k), mo%omega, mo%eps, &
+                                           cycle%j_flywheel + cycle%j_rotor)
+        if (present(const)) const(k - k1 + 1) = pr3207_step_at(deck%p, pos, pr3207_f5c(deck, k))
       else
-        steps(k - k1 + 1) = pr3207_step(deck%p, pr3207_phi1_deg(deck, k) * deg_to_rad, pr3207_f5c(deck, k))
+        steps(k - k1 + 1) = pr3207_step_at(deck%p, pos, pr3207_f5c(deck, k))
       end if
     end do
     !$omp end parallel do
@@ -151,12 +159,12 @@ contains
     class(pr3207_mechanism_t), intent(in) :: self
     type(step_table_t), intent(inout) :: table
     type(error_t), allocatable, intent(out) :: error
-    type(pr3207_step_t), allocatable :: steps(:)
+    type(pr3207_step_t), allocatable :: steps(:), const(:)
     type(motion_t), allocatable :: motions(:)
     integer :: k, first, last
     call table%block_range(self%deck%n, first, last)
     if (self%deck%dyn%mode > 0) then
-      call pr3207_solve(self%deck, steps, first, last, self%cycle, motions)
+      call pr3207_solve(self%deck, steps, first, last, self%cycle, motions, const)
     else
       call pr3207_solve(self%deck, steps, first, last)
     end if
@@ -182,7 +190,7 @@ contains
       do k = 1, size(steps)
         call put_dynamics_values(table, k, self%deck%dyn%mode, motions(k))
       end do
-      if (self%deck%dyn%mode >= dynamics_steady) call constant_speed_cost(self%deck, steps, first, last, table)
+      if (self%deck%dyn%mode >= dynamics_steady) call constant_speed_cost(steps, const, table)
       if (self%deck%dyn%mode >= dynamics_steady) call note_drive_deviation(table, &
         maxval(abs(steps%m1 - motions%md)), max(maxval(abs(motions%md)), maxval(abs(motions%m)), &
         maxval(abs((self%cycle%j_flywheel + motions%j) * motions%eps))))
@@ -197,15 +205,13 @@ contains
   end subroutine solve
 
   !> The peaks of the pair forces with the true motion against those at omega1 = omega_m.
-  subroutine constant_speed_cost(deck, steps, first, last, table)
-    type(pr3207_deck_t), intent(in) :: deck
+  subroutine constant_speed_cost(steps, const, table)
     !> The steps of the block with the true motion.
     type(pr3207_step_t), intent(in) :: steps(:)
-    integer, intent(in) :: first, last
+    !> The same steps at constant speed.
+    type(pr3207_step_t), intent(in) :: const(:)
     type(step_table_t), intent(inout) :: table
-    type(pr3207_step_t), allocatable :: const(:)
     integer :: i
-    call pr3207_solve(deck, const, first, last)
     do i = 1, size(force_names)
       call note_constant_speed_cost(table, trim(force_names(i)), peak(steps, i), peak(const, i))
     end do
