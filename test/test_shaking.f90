@@ -52,6 +52,16 @@ contains
       end do
     end do
     call check_true(t, "shaking: a later block adds no columns", size(table%columns) == columns, "columns grew")
+    ! a steady cycle's flywheel and rotor on the input shaft: their couple -(J_fw + j_rotor) eps1
+    ! = -(3 + 1)*5 joins M_shake (M_frame comes from the reactions)
+    call hand_table(table)
+    call table%dynamics_real("J_flywheel", 3.0_wp, "kg*m^2")
+    call table%dynamics_real("J_rotor", 1.0_wp, "kg*m^2")
+    call add_shaking(table, model, error)
+    call check_true(t, "shaking: hand table with a flywheel runs", .not. allocated(error), "unexpected error")
+    if (allocated(error)) return
+    call check_close(t, "shaking: M_shake with the flywheel and rotor couple", -24.5_wp, &
+      table%rows(table%column_index("M_shake"), 1), 1.0e-14_wp, 1.0e-14_wp)
   end subroutine test_by_hand
 
   !> A model naming a centre of mass the table lacks: an error naming the column.

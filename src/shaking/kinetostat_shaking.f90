@@ -3,7 +3,9 @@
 !> (one stage for every linkage: the mechanisms only list their links and frame pairs).
 !>
 !> Shaking force F_shake = -sum m_i a_Si, the resultant of the inertia forces; shaking moment
-!> about the origin of the mechanism's frame M_shake = -sum (r_Si x m_i a_Si) - sum J_Si eps_i.
+!> about the origin of the mechanism's frame M_shake = -sum (r_Si x m_i a_Si) - sum J_Si eps_i,
+!> and with a steady cycle (machine dynamics) the couple -(J_fw + j_rotor) eps1 of the flywheel
+!> and the rotor turning with the input link (their centres on its axis: no force).
 !> The frame's total (force and moment the mechanism exerts on the frame): minus every frame
 !> pair's reaction (force at its point, and a prismatic pair's reaction moment) minus the
 !> driving moment (its reaction on the motor's housing). By d'Alembert it equals the shaking
@@ -38,9 +40,9 @@ contains
     type(error_t), allocatable, intent(out) :: error
     integer, allocatable :: sx(:), sy(:), ax(:), ay(:), eps(:), fx(:), fy(:), px(:), py(:), pm(:)
     real(wp), allocatable :: turn(:)
-    integer :: nb, np, i, k, c0, drive
+    integer :: nb, np, i, k, c0, drive, eps_in
     logical :: frame, frame_moment
-    real(wp) :: f(2), m, g(2), mf, r(2), a(2)
+    real(wp) :: f(2), m, g(2), mf, r(2), a(2), j_input
 
     nb = size(model%bodies)
     allocate (sx(nb), sy(nb), ax(nb), ay(nb), eps(nb))
@@ -90,6 +92,14 @@ contains
       end if
     end if
 
+    ! a steady cycle: the flywheel and the rotor on the input shaft, with the input's eps1
+    j_input = 0.0_wp
+    eps_in = 0
+    if (has_figure("J_flywheel")) then
+      j_input = figure("J_flywheel") + figure("J_rotor")
+      eps_in = table%column_index("eps1")
+    end if
+
     c0 = table%column_index(shaking_column_names(1))
     if (c0 == 0) then
       c0 = size(table%columns) + 1
@@ -118,6 +128,7 @@ contains
           if (eps(i) > 0) m = m - b%inertia * table%rows(eps(i), k)
         end associate
       end do
+      if (eps_in > 0) m = m - j_input * table%rows(eps_in, k)
       table%rows(c0, k) = hypot(f(1), f(2))
       table%rows(c0 + 1, k) = 0.0_wp
       if (table%rows(c0, k) > 0.0_wp) table%rows(c0 + 1, k) = modulo(atan2(f(2), f(1)) * rad_to_deg, 360.0_wp)
@@ -142,6 +153,28 @@ contains
     end do
 
   contains
+
+    !> Whether the table's DYNAMICS records hold `name`.
+    pure logical function has_figure(name)
+      character(*), intent(in) :: name
+      integer :: j
+      has_figure = .false.
+      if (.not. allocated(table%dynamics)) return
+      do j = 1, size(table%dynamics)
+        if (table%dynamics(j)%name == name) has_figure = .true.
+      end do
+    end function has_figure
+
+    !> The value of the DYNAMICS record `name` (0 when absent).
+    pure real(wp) function figure(name)
+      character(*), intent(in) :: name
+      integer :: j
+      figure = 0.0_wp
+      if (.not. allocated(table%dynamics)) return
+      do j = 1, size(table%dynamics)
+        if (table%dynamics(j)%name == name) figure = table%dynamics(j)%values(1)
+      end do
+    end function figure
 
     !> Index of column `name` into `c`; an error when the table lacks it.
     pure subroutine need(name, c, error)

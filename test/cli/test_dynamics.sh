@@ -174,3 +174,16 @@ expect_input_error dynamics-md-table-pairs "md_table: give pairs" "$(deck_with m
 expect_input_error dynamics-md-table-order "md_table: the angles must increase" "$(deck_with md_ord "$fw" "s/j_rotor = 0.6 /j_rotor = 0.6, md_table = 90, 1, 0, 2 /")"
 expect_input_error dynamics-md-table-turn "md_table: the angles must lie within one turn" "$(deck_with md_turn "$fw" "s/j_rotor = 0.6 /j_rotor = 0.6, md_table = 0, 1, 360, 2 /")"
 expect_input_error dynamics-md-table-mode "md_table: a driving-moment table needs" "$(deck_with md_mode data/pr3207.nml "s/dphi = 30/dphi = 30, md_table = 0, 1, 180, 2/")"
+
+# --- --shaking with a steady cycle: the flywheel's and rotor's couple -(J_fw + j_rotor) eps1 is
+# part of M_shake, so d'Alembert's M_frame = M_shake holds for a free machine (no loads, g = 0)
+run_ks "$(deck_with sh_free data/assur_pr3207_flywheel.nml "s/g = 9.81, /g = 0, /; s/force(1)%value = 3000/force(1)%value = 0/; s/dynamics = 'steady', delta = 0.04/dynamics = 'given', j_flywheel = 2/")" --shaking --format csv
+if [ "$rc" -eq 0 ] && python3 - "$out" <<'PY'
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+scale = max(abs(float(r["M_shake"])) for r in rows)
+assert scale > 10, scale
+worst = max(abs(float(r["M_frame"]) - float(r["M_shake"])) for r in rows)
+assert worst <= 1e-9 * scale, (worst, scale)
+PY
+then pass; else fail dynamics-shaking-flywheel "free machine with a flywheel: M_frame differs from M_shake (exit $rc)"; fi
