@@ -177,12 +177,15 @@ contains
     cycle%j_rotor = j_rotor
     cycle%omega_mean = omega_mean
     ! piece bounds: phi0, the switches inside the turn (sorted, distinct), phi0 + 2 pi
-    all_breaks = breaks
     if (present(drive_phi) .and. present(drive_value)) then
-      cycle%drive_phi = drive_phi
-      cycle%drive_m = drive_value
-      all_breaks = [breaks, drive_phi]
+      allocate (cycle%drive_phi, source=drive_phi)
+      allocate (cycle%drive_m, source=drive_value)
+      allocate (all_breaks(size(breaks) + size(drive_phi)))
+      all_breaks(size(breaks) + 1:) = drive_phi
+    else
+      allocate (all_breaks(size(breaks)))
     end if
+    all_breaks(1:size(breaks)) = breaks
     allocate (bounds(size(all_breaks) + 2))
     bounds(1) = phi0
     k = 1

@@ -37,7 +37,7 @@ contains
     source%p = deck%p
     source%phi_start = deck%phi_start
     source%dphi = deck%dphi
-    source%f5 = deck%f5(1:deck%n)
+    allocate (source%f5, source=deck%f5(1:deck%n))
   end function sixbar_source
 
   !> The slider load at crank angle phi (rad) from the table of the steps: linear between
