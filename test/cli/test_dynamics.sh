@@ -103,7 +103,7 @@ if [ "$rc" -eq 0 ] && head -1 "$out" | grep -q ",M1,J_red,dJ_red,M_red$" && \
    cmp -s <(cut -d, -f1-15 "$out") data/expected/sixbar.csv; then pass
 else fail dynamics-sixbar-reduced "exit $rc, header '$(head -1 "$out")' or the forces changed"; fi
 expect_input_error dynamics-sixbar-not-one-turn "exactly one turn" "$(deck_with six_turn data/sixbar_flywheel.nml "s/dphi = 1 /dphi = 1, n = 300 /; s/f5 = 181\*1000, 180\*0/f5 = 150*1000, 150*0/")"
-expect_input_error dynamics-sixbar-no-flywheel-needed "no flywheel is needed" "$(deck_with six_nofw data/sixbar_flywheel.nml "s/delta = 0.002/delta = 0.05/")"
+expect_input_error dynamics-sixbar-no-flywheel-needed "no flywheel is needed" "$(deck_with six_nofw data/sixbar_flywheel.nml "s/delta = 0.001/delta = 0.05/")"
 run_ks data/sixbar_flywheel.nml --format json; cp "$out" "$cli_tmp/six_a.json"
 run_ks data/assur_sixbar_flywheel.nml --format json; cp "$out" "$cli_tmp/six_b.json"
 if python3 - "$cli_tmp/six_a.json" "$cli_tmp/six_b.json" <<'PY'
@@ -111,7 +111,7 @@ import json, sys
 a, b = (json.load(open(f)) for f in sys.argv[1:3])
 def close(x, y, scale): return abs(x - y) <= 1e-9 * max(abs(x), abs(y), scale)
 dy = a["dynamics"]
-assert abs(dy["delta"] - 0.002) <= 1e-9 * 0.002 and a["selfcheck"]["max_drive_deviation"] <= 1e-9
+assert abs(dy["delta"] - 0.001) <= 1e-9 * 0.001 and a["selfcheck"]["max_drive_deviation"] <= 1e-9
 for k in ["M_d", "J_red_min", "J_red_max", "J_flywheel", "J_flywheel_textbook", "omega_max", "phi_omega_max",
           "omega_min", "phi_omega_min", "delta", "period"]:
     assert close(dy[k], b["dynamics"][k], 1e-12), (k, dy[k], b["dynamics"][k])
