@@ -12,7 +12,7 @@ module kinetostat_assur_deck
   use kinetostat_text, only: real_str, int_str, number_str, lower, upper
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_deck, only: longest_quoted, &
-    check_namelist_syntax, write_template_lines, deck_context_t, unset_real, unset_bits, max_deck_array, &
+    begin_group, write_template_lines, deck_context_t, unset_real, unset_bits, max_deck_array, &
     deck_array_capacities, deck_source_t, namelist_probe_t, deck_error, require_all_set, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn, &
     is_whole_in, require_whole
@@ -447,8 +447,8 @@ contains
       step_values, angles_signed, components, drive_dyad, drive_pair, output_link, phi1, start_at, crank_f, crank_r, &
       coordinates, phi_ref, dynamics, delta, j_rotor, j_flywheel
 
-    ctx%path = source%path
-    ctx%group = group_name
+    call begin_group(source, group_name, ctx, error)
+    if (allocated(error)) return
     allocate (title)
     dynamics = ""; delta = unset_real; j_rotor = unset_real; j_flywheel = unset_real
     title = ""
@@ -465,8 +465,6 @@ contains
     allocate (omega1_step(capacity(1)), eps1_step(capacity(2)), step_values(capacity(3)), phi1(capacity(4)), &
               source=unset_real)
 
-    call check_namelist_syntax(source, ctx%group, error)
-    if (allocated(error)) return
     coded%path = source%path
     allocate (character(len=len(source%records)) :: coded%records(size(source%records)))
     coded%records(:) = source%records(:)

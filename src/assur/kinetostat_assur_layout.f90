@@ -77,12 +77,7 @@ module kinetostat_assur_layout
     !> The steady cycle (dynamics = 'steady' or 'given').
     type(cycle_t) :: cycle
   contains
-    procedure :: read_deck
-    procedure :: solve
-    procedure :: write_results
-    procedure :: sketch
-    procedure :: force_plan
-    procedure :: mass_model
+    procedure :: read_deck, solve, write_results, sketch, force_plan, mass_model
   end type assur_mechanism_t
 
 contains

@@ -6,7 +6,7 @@ module kinetostat_cam_deck
   use kinetostat_text, only: real_str, int_str, lower
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_deck, only: &
-    check_namelist_syntax, write_template_lines, deck_context_t, unset_real, deck_array_capacities, &
+    begin_group, write_template_lines, deck_context_t, unset_real, deck_array_capacities, &
     deck_source_t, namelist_probe_t, require_all_set, deck_error, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn
   use kinetostat_cam, only: cam_params_t
@@ -104,8 +104,8 @@ contains
     type(namelist_probe_t) :: probe
     namelist /cam/ follower, l, l_over, f, f_cam, omega_dir, phi_start, dphi, n, theta, f2, vdir, ds_dphi
 
-    ctx%path = source%path
-    ctx%group = "cam"
+    call begin_group(source, "cam", ctx, error)
+    if (allocated(error)) return
     follower = " "
     l = unset_real; l_over = unset_real; f = unset_real; f_cam = unset_real
     omega_dir = unset_real; phi_start = unset_real; dphi = unset_real
@@ -113,8 +113,6 @@ contains
     capacity = deck_array_capacities(source, ctx%group, [character(len=7) :: "theta", "f2", "vdir", "ds_dphi"])
     allocate (theta(capacity(1)), f2(capacity(2)), vdir(capacity(3)), ds_dphi(capacity(4)), source=unset_real)
 
-    call check_namelist_syntax(source, ctx%group, error)
-    if (allocated(error)) return
     read (source%records, nml=cam, iostat=probe%ios, iomsg=probe%msg)
     do while (probe%retry(source)) ! on failure: find the line and the assignment
       read (probe%records, nml=cam, iostat=probe%ios, iomsg=probe%msg)

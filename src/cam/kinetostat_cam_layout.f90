@@ -52,9 +52,7 @@ module kinetostat_cam_layout
     !> The validated deck.
     type(cam_deck_t) :: deck
   contains
-    procedure :: read_deck
-    procedure :: solve
-    procedure :: write_results
+    procedure :: read_deck, solve, write_results
   end type cam_mechanism_t
 
 contains

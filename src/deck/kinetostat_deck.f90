@@ -18,7 +18,7 @@ module kinetostat_deck
   public :: is_set, require_set, require_positive, require_nonnegative, require_rule
   public :: is_whole_in, require_whole
   public :: optional_default, count_values, steps_over_turn, write_template_lines
-  public :: check_namelist_syntax, longest_quoted
+  public :: check_namelist_syntax, longest_quoted, begin_group
   public :: deck_array_capacities, max_deck_size, set_max_deck_size, default_max_deck_size, assignment_starts
 
   !> Bit pattern of `unset_real`: a quiet NaN with a payload. A NaN typed in a deck
@@ -1419,6 +1419,22 @@ contains
       starts = [starts, k]
     end do
   end function assignment_starts
+
+  !> The start of every deck reader: the context its messages name (deck path and group)
+  !> and the syntax pre-check of the group's text (check_namelist_syntax) before the READ.
+  subroutine begin_group(source, group, ctx, error)
+    !> The deck.
+    type(deck_source_t), intent(in) :: source
+    !> Group name, lower case, without '&'.
+    character(*), intent(in) :: group
+    !> The reader's context.
+    type(deck_context_t), intent(out) :: ctx
+    !> The syntax error (none when the text passes).
+    type(error_t), allocatable, intent(out) :: error
+    ctx%path = source%path
+    ctx%group = group
+    call check_namelist_syntax(source, group, error)
+  end subroutine begin_group
 
   !> A syntax pre-check of the deck's group `group`, before gfortran's namelist READ sees
   !> it (which crashes on some malformed text, e.g. an array or type name followed by an

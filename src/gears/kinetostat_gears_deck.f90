@@ -7,7 +7,7 @@ module kinetostat_gears_deck
   use kinetostat_text, only: real_str, int_str, number_str, lower
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_deck, only: &
-    check_namelist_syntax, write_template_lines, deck_context_t, unset_real, &
+    begin_group, write_template_lines, deck_context_t, unset_real, &
     deck_source_t, namelist_probe_t, deck_error, is_set, require_set, require_positive, require_rule, &
     require_whole, require_all_set
   use kinetostat_gears, only: gear_stage_t, gear_spur, gear_helical, gear_bevel, gear_planetary, &
@@ -93,16 +93,14 @@ contains
     type(namelist_probe_t) :: probe
     namelist /gears/ layout, stage, m1, z1, z2, m, dw1, alpha_w, beta, gamma, z3, k, alpha_w23
 
-    ctx%path = source%path
-    ctx%group = "gears"
+    call begin_group(source, "gears", ctx, error)
+    if (allocated(error)) return
     layout = " "
     stage = " "
     m1 = unset_real; m = unset_real; dw1 = unset_real; alpha_w = unset_real
     alpha_w23 = unset_real; beta = unset_real; gamma = unset_real
     z1 = unset_real; z2 = unset_real; z3 = unset_real; k = unset_real
 
-    call check_namelist_syntax(source, ctx%group, error)
-    if (allocated(error)) return
     read (source%records, nml=gears, iostat=probe%ios, iomsg=probe%msg)
     do while (probe%retry(source)) ! on failure: find the line and the assignment
       read (probe%records, nml=gears, iostat=probe%ios, iomsg=probe%msg)

@@ -51,9 +51,7 @@ module kinetostat_gears_layout
     !> The validated deck.
     type(gears_deck_t) :: deck
   contains
-    procedure :: read_deck
-    procedure :: solve
-    procedure :: write_results
+    procedure :: read_deck, solve, write_results
   end type gears_mechanism_t
 
 contains

@@ -11,7 +11,7 @@ module kinetostat_linkage_deck
   use kinetostat_error, only: error_t
   use kinetostat_text, only: int_str, lower, real_str
   use kinetostat_text_buffer, only: text_buffer_t
-  use kinetostat_deck, only: longest_quoted, check_namelist_syntax, &
+  use kinetostat_deck, only: longest_quoted, begin_group, &
     write_template_lines, deck_context_t, unset_bits, deck_source_t, namelist_probe_t, &
     deck_error, is_set, require_set, require_nonnegative, require_rule, optional_default, count_values, &
     require_whole, deck_array_capacities
@@ -177,16 +177,14 @@ contains
     real(wp) :: d
     namelist /linkage/ title, frame, g, gravity_angle, n, link, pair, drive, force, moment, step_values
 
-    ctx%path = source%path
-    ctx%group = group_name
+    call begin_group(source, group_name, ctx, error)
+    if (allocated(error)) return
     allocate (title)
     title = ""
     frame = 0.0_wp; g = unset; gravity_angle = unset; n = unset
     allocate (drive(max_drives))
     capacity = deck_array_capacities(source, ctx%group, [character(len=11) :: "step_values"])
     allocate (step_values(capacity(1)), source=unset)
-    call check_namelist_syntax(source, ctx%group, error)
-    if (allocated(error)) return
     call check_text_lengths(source, ctx, error)
     if (allocated(error)) return
     read (source%records, nml=linkage, iostat=probe%ios, iomsg=probe%msg)

@@ -45,12 +45,7 @@ module kinetostat_linkage_layout
     !> The validated deck.
     type(linkage_deck_t) :: deck
   contains
-    procedure :: read_deck
-    procedure :: solve
-    procedure :: write_results
-    procedure :: sketch
-    procedure :: force_plan
-    procedure :: mass_model
+    procedure :: read_deck, solve, write_results, sketch, force_plan, mass_model
   end type linkage_mechanism_t
 
 contains

@@ -16,7 +16,7 @@ module kinetostat_svg_mechanism
     svg_text, svg_arrow, svg_polygon, coord
   use kinetostat_svg_writer, only: nice_step
   use kinetostat_label_place, only: label_boxes_t, title_attributes, text_chars
-  use kinetostat_sheet_words, only: word, unit_word
+  use kinetostat_labels, only: word => label, unit_word => unit_symbol
   use kinetostat_title_block, only: put_title_block, title_block_height
   use kinetostat_drawing, only: drawing_t, drawing_body_t, point_pivot, point_com, point_plain, body_bar, body_block, &
     body_cylinder, body_rod, force_pair, force_load, &

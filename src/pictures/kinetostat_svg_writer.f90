@@ -19,7 +19,7 @@ module kinetostat_svg_writer
   use kinetostat_svg, only: svg_open, svg_close, svg_line, svg_path, svg_polyline_d, svg_circle, svg_rect, &
     svg_text, svg_arrow, coord, palette_colour
   use kinetostat_label_place, only: label_boxes_t, title_attributes, anchor_start, anchor_end
-  use kinetostat_sheet_words, only: word, unit_word
+  use kinetostat_labels, only: word => label, unit_word => unit_symbol
   use kinetostat_title_block, only: put_title_block, title_block_height
   implicit none
   private

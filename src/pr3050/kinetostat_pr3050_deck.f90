@@ -5,7 +5,7 @@ module kinetostat_pr3050_deck
   use kinetostat_text, only: real_str, int_str
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_deck, only: &
-    check_namelist_syntax, write_template_lines, deck_context_t, unset_real, deck_array_capacities, max_steps, &
+    begin_group, write_template_lines, deck_context_t, unset_real, deck_array_capacities, max_steps, &
     deck_source_t, namelist_probe_t, require_all_set, deck_error, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values
   use kinetostat_pr3050, only: pr3050_params_t
@@ -120,8 +120,8 @@ contains
     namelist /pr3050/ l_ca, l_cb, l_cs3, delta, l_bs2, l_s1a, gamma, g, m1, m2, m3, j1, j2, j3, &
       phi3_start, phi3_end, dphi3, omega3, eps3
 
-    ctx%path = source%path
-    ctx%group = "pr3050"
+    call begin_group(source, "pr3050", ctx, error)
+    if (allocated(error)) return
     l_ca = unset_real; l_cb = unset_real; l_cs3 = unset_real; delta = unset_real
     l_bs2 = unset_real; l_s1a = unset_real; gamma = unset_real; g = unset_real
     m1 = unset_real; m2 = unset_real; m3 = unset_real
@@ -131,8 +131,6 @@ contains
     allocate (omega3(capacity(1)), source=unset_real)
     allocate (eps3(capacity(2)), source=unset_real)
 
-    call check_namelist_syntax(source, ctx%group, error)
-    if (allocated(error)) return
     read (source%records, nml=pr3050, iostat=probe%ios, iomsg=probe%msg)
     do while (probe%retry(source)) ! on failure: find the line and the assignment
       read (probe%records, nml=pr3050, iostat=probe%ios, iomsg=probe%msg)

@@ -74,12 +74,7 @@ module kinetostat_pr3050_layout
     !> The validated deck.
     type(pr3050_deck_t) :: deck
   contains
-    procedure :: read_deck
-    procedure :: solve
-    procedure :: write_results
-    procedure :: sketch
-    procedure :: force_plan
-    procedure :: mass_model
+    procedure :: read_deck, solve, write_results, sketch, force_plan, mass_model
   end type pr3050_mechanism_t
 
 contains

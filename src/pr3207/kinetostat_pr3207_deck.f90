@@ -5,7 +5,7 @@ module kinetostat_pr3207_deck
   use kinetostat_text, only: real_str, int_str
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_deck, only: &
-    check_namelist_syntax, write_template_lines, deck_context_t, unset_real, deck_array_capacities, &
+    begin_group, write_template_lines, deck_context_t, unset_real, deck_array_capacities, &
     deck_source_t, namelist_probe_t, require_all_set, deck_error, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn
   use kinetostat_pr3207, only: pr3207_params_t
@@ -125,8 +125,8 @@ contains
     namelist /pr3207/ l_ab, l_ac, l_cd, l_cs3, m1, m3, m5, j3, omega1, g, phi_start, dphi, n, &
       f5c, f5c_work, f5c_idle, phi_cut_start, phi_cut_end, dynamics, delta, j_rotor, j_flywheel
 
-    ctx%path = source%path
-    ctx%group = "pr3207"
+    call begin_group(source, "pr3207", ctx, error)
+    if (allocated(error)) return
     l_ab = unset_real; l_ac = unset_real; l_cd = unset_real; l_cs3 = unset_real
     m1 = unset_real; m3 = unset_real; m5 = unset_real; j3 = unset_real
     omega1 = unset_real; g = unset_real; phi_start = unset_real; dphi = unset_real
@@ -136,8 +136,6 @@ contains
     capacity = deck_array_capacities(source, ctx%group, ["f5c"])
     allocate (f5c(capacity(1)), source=unset_real)
 
-    call check_namelist_syntax(source, ctx%group, error)
-    if (allocated(error)) return
     read (source%records, nml=pr3207, iostat=probe%ios, iomsg=probe%msg)
     do while (probe%retry(source)) ! on failure: find the line and the assignment
       read (probe%records, nml=pr3207, iostat=probe%ios, iomsg=probe%msg)

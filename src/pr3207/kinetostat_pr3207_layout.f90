@@ -58,12 +58,7 @@ module kinetostat_pr3207_layout
     !> The steady cycle (dynamics = 'steady' or 'given').
     type(cycle_t) :: cycle
   contains
-    procedure :: read_deck
-    procedure :: solve
-    procedure :: write_results
-    procedure :: sketch
-    procedure :: force_plan
-    procedure :: mass_model
+    procedure :: read_deck, solve, write_results, sketch, force_plan, mass_model
   end type pr3207_mechanism_t
 
 contains

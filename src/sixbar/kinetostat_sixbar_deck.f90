@@ -5,7 +5,7 @@ module kinetostat_sixbar_deck
   use kinetostat_text, only: real_str, int_str
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_deck, only: &
-    check_namelist_syntax, write_template_lines, deck_context_t, unset_real, deck_array_capacities, &
+    begin_group, write_template_lines, deck_context_t, unset_real, deck_array_capacities, &
     deck_source_t, namelist_probe_t, require_all_set, deck_error, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn
   use kinetostat_sixbar, only: sixbar_params_t, sixbar_extreme_phi1
@@ -100,8 +100,8 @@ contains
       m1, m2, m3, m4, m5, j1, j2, j3, j4, omega1, g, dphi, n, phi_start, start_at_extreme, f5, legacy_eq2, &
       dynamics, delta, j_rotor, j_flywheel
 
-    ctx%path = source%path
-    ctx%group = "sixbar"
+    call begin_group(source, "sixbar", ctx, error)
+    if (allocated(error)) return
     dynamics = ""; delta = unset_real; j_rotor = unset_real; j_flywheel = unset_real
     a = unset_real; b = unset_real; l1 = unset_real
     lam2 = unset_real; lam_s2 = unset_real; lam3 = unset_real; lam_de = unset_real
@@ -115,8 +115,6 @@ contains
     capacity = deck_array_capacities(source, ctx%group, ["f5"])
     allocate (f5(capacity(1)), source=unset_real)
 
-    call check_namelist_syntax(source, ctx%group, error)
-    if (allocated(error)) return
     read (source%records, nml=sixbar, iostat=probe%ios, iomsg=probe%msg)
     do while (probe%retry(source)) ! on failure: find the line and the assignment
       read (probe%records, nml=sixbar, iostat=probe%ios, iomsg=probe%msg)

@@ -75,12 +75,7 @@ module kinetostat_sixbar_layout
     !> The validated deck.
     type(sixbar_deck_t) :: deck
   contains
-    procedure :: read_deck
-    procedure :: solve
-    procedure :: write_results
-    procedure :: sketch
-    procedure :: force_plan
-    procedure :: mass_model
+    procedure :: read_deck, solve, write_results, sketch, force_plan, mass_model
   end type sixbar_mechanism_t
 
 contains
