@@ -19,7 +19,7 @@ module kinetostat_assur_deck
   use kinetostat_vec2, only: unit_at, rotate, magnitude, cross
   use kinetostat_assur_kinematics, only: link_state_t, point_state_t, point_on, dyad_pose_t, dyad_geometry_t, kind_names, &
     kind_has_mode, &
-    frame_state, crank_state, dyad_pose, pose_ok, &
+    frame_state, crank_state, set_dyad_pose, pose_ok, &
     kind_rrr, kind_rrp, kind_rpr, kind_prp, kind_rpp
   use kinetostat_assur_statics, only: pair_is_prismatic
   use kinetostat_assur, only: assur_mech_t, assur_link_t, assur_dyad_t, assur_force_t, link_a, link_b, &
@@ -996,7 +996,7 @@ contains
     at_ref = " at the reference position (phi_ref = "//real_str(phi_ref)//" deg)"
     associate (dy => mech%dyads(d))
       kind = dy%geom%kind
-      pose = dyad_pose(dy%geom, ref(dy%on(1)), dy%at(:, 1), dy%ang(1), ref(dy%on(2)), dy%at(:, 2), dy%ang(2))
+      call set_dyad_pose(dy%geom, ref(dy%on(1)), dy%at(:, 1), dy%ang(1), ref(dy%on(2)), dy%at(:, 2), dy%ang(2), pose)
     end associate
     if (pose%status /= pose_ok) then
       call deck_error(ctx, "dyad("//int_str(d)//")", "cannot be assembled"//at_ref, error)
