@@ -12,7 +12,7 @@ module kinetostat_assur_deck
   use kinetostat_text, only: real_str, int_str, number_str, lower, upper
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_deck, only: longest_quoted, &
-    begin_group, write_template_lines, deck_context_t, unset_real, unset_bits, max_deck_array, &
+    begin_group, deck_context_t, unset_real, unset_bits, max_deck_array, &
     deck_array_capacities, deck_source_t, namelist_probe_t, deck_error, require_all_set, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn, &
     is_whole_in, require_whole
@@ -29,7 +29,7 @@ module kinetostat_assur_deck
   use kinetostat_dynamics_deck, only: dynamics_deck_t, read_dynamics_settings, require_one_turn
   implicit none
   private
-  public :: assur_deck_t, read_assur_deck, write_assur_template, assur_window
+  public :: assur_deck_t, read_assur_deck, assur_template, assur_window
   public :: load_schedule_t, load_constant, load_window, load_column, load_table
   public :: resist_none, resist_moment, resist_force
   public :: assur_phi1_deg, assur_omega1_steps, assur_omega1, assur_eps1, assur_motion_sign
@@ -266,7 +266,7 @@ module kinetostat_assur_deck
   end type assur_deck_t
 
   !> Template deck: the slider-crank of data/assur_slider_crank.nml.
-  character(*), parameter :: template_lines(*) = [character(len=100) :: &
+  character(*), parameter :: assur_template(*) = [character(len=100) :: &
     "! kinetostat deck: generic one-DOF linkage from class-II Assur groups (dyads).", &
     "! Offset slider-crank = frame 0 + crank 1 + dyad RRP (rod 2, slider 3).", &
     "! Global frame: origin anywhere, angles CCW from +x; gravity along gravity_angle.", &
@@ -296,13 +296,6 @@ module kinetostat_assur_deck
     "/"]
 
 contains
-
-  !> The commented template deck.
-  pure subroutine write_assur_template(out)
-    !> Where the lines go.
-    type(text_buffer_t), intent(inout) :: out
-    call write_template_lines(out, template_lines)
-  end subroutine write_assur_template
 
   !> The dyads' kinds by name, as the docs name them: `dyad(i)%kind = RRR` or `'RRR'` (any
   !> case; RRR RRP RPR PRP RPP) becomes the code 1..5, blank-padded to the same length (the

@@ -6,13 +6,13 @@ module kinetostat_cam_deck
   use kinetostat_text, only: real_str, int_str, lower
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_deck, only: &
-    begin_group, write_template_lines, deck_context_t, unset_real, deck_array_capacities, &
+    begin_group, deck_context_t, unset_real, deck_array_capacities, &
     deck_source_t, namelist_probe_t, require_all_set, deck_error, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn
   use kinetostat_cam, only: cam_params_t
   implicit none
   private
-  public :: cam_deck_t, read_cam_deck, write_cam_template, follower_translating, follower_flat
+  public :: cam_deck_t, read_cam_deck, cam_template, follower_translating, follower_flat
   public :: cam_phi_deg, cam_theta_deg, cam_f2, cam_vdir, cam_ds_dphi, cam_x_b
 
   !> Follower: knife-edge or roller, pressure angle from the deck, no friction at the cam.
@@ -56,7 +56,7 @@ module kinetostat_cam_deck
   end type cam_deck_t
 
   !> Template deck, one line per entry.
-  character(*), parameter :: template_lines(*) = [character(len=100) :: &
+  character(*), parameter :: cam_template(*) = [character(len=100) :: &
     "! kinetostat deck: cam with a translating follower in a guide (manual section 7).", &
     "! Guide ends C (near the cam) and D; contact point B an overhang l_over before C.", &
     "! Per-step values: one per cam angle (n values) or one value for every step.", &
@@ -76,13 +76,6 @@ module kinetostat_cam_deck
     "/"]
 
 contains
-
-  !> The commented template deck.
-  pure subroutine write_cam_template(out)
-    !> Where the lines go.
-    type(text_buffer_t), intent(inout) :: out
-    call write_template_lines(out, template_lines)
-  end subroutine write_cam_template
 
   !> Read and validate a `&cam` deck.
   subroutine read_cam_deck(source, deck, error)

@@ -5,7 +5,7 @@ module kinetostat_sixbar_deck
   use kinetostat_text, only: real_str, int_str
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_deck, only: &
-    begin_group, write_template_lines, deck_context_t, unset_real, deck_array_capacities, &
+    begin_group, deck_context_t, unset_real, deck_array_capacities, &
     deck_source_t, namelist_probe_t, require_all_set, deck_error, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn
   use kinetostat_sixbar, only: sixbar_params_t, sixbar_extreme_phi1
@@ -13,7 +13,7 @@ module kinetostat_sixbar_deck
   use kinetostat_dynamics_deck, only: dynamics_deck_t, read_dynamics_settings
   implicit none
   private
-  public :: sixbar_deck_t, read_sixbar_deck, write_sixbar_template, sixbar_phi1_deg
+  public :: sixbar_deck_t, read_sixbar_deck, sixbar_template, sixbar_phi1_deg
 
   !> A validated `&sixbar` deck.
   type :: sixbar_deck_t
@@ -36,7 +36,7 @@ module kinetostat_sixbar_deck
   end type sixbar_deck_t
 
   !> Template deck (the reference deck data/sixbar.nml), one line per entry.
-  character(*), parameter :: template_lines(*) = [character(len=92) :: &
+  character(*), parameter :: sixbar_template(*) = [character(len=92) :: &
     "! kinetostat deck: T.FTN, six-bar crank-rocker-slider mechanism (manual section 2).", &
     "! Links: 1 crank AB, 2 rod BC, 3 rocker C-D-E (pivot D, C and E opposite), 4 rod EH,", &
     "! 5 slider at H, 6 frame. Global frame: origin A, y0 up (gravity -y0), D = A + (a, b).", &
@@ -65,13 +65,6 @@ module kinetostat_sixbar_deck
     "/"]
 
 contains
-
-  !> The commented template deck.
-  pure subroutine write_sixbar_template(out)
-    !> Where the lines go.
-    type(text_buffer_t), intent(inout) :: out
-    call write_template_lines(out, template_lines)
-  end subroutine write_sixbar_template
 
   !> Read and validate a `&sixbar` deck. Input errors have exit code 2; a requested
   !> extreme position that does not exist is a geometry error (exit 3).
