@@ -10,17 +10,15 @@ module kinetostat_assur_deck
   use kinetostat_kinds, only: wp, g_default, deg_to_rad, rad_to_deg
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str, number_str, lower, upper
-  use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_deck, only: longest_quoted, &
     begin_group, deck_context_t, unset_real, unset_bits, max_deck_array, &
     deck_array_capacities, deck_source_t, namelist_probe_t, deck_error, require_all_set, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn, &
     is_whole_in, require_whole
   use kinetostat_vec2, only: unit_at, rotate, magnitude, cross
-  use kinetostat_assur_kinematics, only: link_state_t, point_state_t, point_on, dyad_pose_t, dyad_geometry_t, kind_names, &
-    kind_has_mode, &
-    frame_state, crank_state, set_dyad_pose, pose_ok, &
-    kind_rrr, kind_rrp, kind_rpr, kind_prp, kind_rpp
+  use kinetostat_assur_kinematics, only: link_state_t, point_state_t, point_on, dyad_pose_t, kind_names, &
+    kind_has_mode, frame_state, crank_state, set_dyad_pose, pose_ok, kind_rrr, kind_rrp, kind_rpr, &
+    kind_prp, kind_rpp
   use kinetostat_assur_statics, only: pair_is_prismatic
   use kinetostat_assur, only: assur_mech_t, assur_link_t, assur_dyad_t, assur_force_t, link_a, link_b, &
     output_pair_of, assur_extreme, assur_kinematics, link_position

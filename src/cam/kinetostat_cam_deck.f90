@@ -1,10 +1,9 @@
 !> `&cam` decks: reading, validation, and the commented template. Per-step data (theta, f2,
 !> vdir, ds_dphi) are arrays with one value per cam angle, or a single value for all steps.
 module kinetostat_cam_deck
-  use kinetostat_kinds, only: wp, deg_to_rad
+  use kinetostat_kinds, only: wp
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str, lower
-  use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_deck, only: &
     begin_group, deck_context_t, unset_real, deck_array_capacities, &
     deck_source_t, namelist_probe_t, require_all_set, deck_error, is_set, require_set, require_positive, &

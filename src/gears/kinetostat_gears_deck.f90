@@ -5,13 +5,11 @@ module kinetostat_gears_deck
   use kinetostat_kinds, only: wp, deg_to_rad, pi
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str, number_str, lower
-  use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_deck, only: &
     begin_group, deck_context_t, unset_real, &
     deck_source_t, namelist_probe_t, deck_error, is_set, require_set, require_positive, require_rule, &
     require_whole, require_all_set
-  use kinetostat_gears, only: gear_stage_t, gear_spur, gear_helical, gear_bevel, gear_planetary, &
-    gear_kind_names
+  use kinetostat_gears, only: gear_stage_t, gear_helical, gear_bevel, gear_planetary, gear_kind_names
   implicit none
   private
   public :: gears_deck_t, read_gears_deck, gears_template, max_stages

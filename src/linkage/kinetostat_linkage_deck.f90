@@ -10,7 +10,6 @@ module kinetostat_linkage_deck
   use kinetostat_kinds, only: wp, g_default, deg_to_rad
   use kinetostat_error, only: error_t
   use kinetostat_text, only: int_str, lower, real_str
-  use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_deck, only: longest_quoted, begin_group, &
     deck_context_t, unset_bits, deck_source_t, namelist_probe_t, &
     deck_error, is_set, require_set, require_nonnegative, require_rule, optional_default, count_values, &

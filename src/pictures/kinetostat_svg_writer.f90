@@ -10,7 +10,7 @@
 !> drawn as vectors from the origin instead. Same table -> same bytes.
 module kinetostat_svg_writer
   use, intrinsic :: iso_fortran_env, only: int64
-  use kinetostat_kinds, only: wp, pi, deg_to_rad, version_string
+  use kinetostat_kinds, only: wp, deg_to_rad, version_string
   use kinetostat_error, only: error_t, fatal_error, exit_usage
   use kinetostat_text, only: int_str, upper
   use kinetostat_format, only: fixed_number, short_number, full_number

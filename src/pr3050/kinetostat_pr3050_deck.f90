@@ -3,10 +3,8 @@ module kinetostat_pr3050_deck
   use kinetostat_kinds, only: wp, g_default, deg_to_rad
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str
-  use kinetostat_text_buffer, only: text_buffer_t
-  use kinetostat_deck, only: &
-    begin_group, deck_context_t, unset_real, deck_array_capacities, max_steps, &
-    deck_source_t, namelist_probe_t, require_all_set, deck_error, require_set, require_positive, &
+  use kinetostat_deck, only: begin_group, deck_context_t, unset_real, deck_array_capacities, max_steps, &
+    deck_source_t, namelist_probe_t, require_all_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values
   use kinetostat_pr3050, only: pr3050_params_t
   implicit none
