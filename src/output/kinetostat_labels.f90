@@ -3,6 +3,7 @@
 !> (ИСХОДНЫЕ ДАННЫЕ, РЕЗУЛЬТАТЫ РАСЧЕТА, ...). Mechanism-specific headings live in each
 !> mechanism's layout module.
 module kinetostat_labels
+  use kinetostat_text, only: starts_with
   implicit none
   private
   public :: lang_en, lang_ru, lang_from_name, label, phrase, echo_name, unit_symbol
@@ -387,12 +388,6 @@ contains
     ! a structural unit: "II(2,3)  DYAD (GROUP OF CLASS II, ORDER 2), KIND RRR"
     if (index(text, "  INPUT LINK(S)") > 0 .or. index(text, "  DYAD (GROUP") > 0 .or. &
         index(text, "  GROUP OF ") > 0) is_linkage_echo = .true.
-  contains
-    pure logical function starts_with(line, start)
-      character(*), intent(in) :: line, start
-      starts_with = .false.
-      if (len(line) >= len(start)) starts_with = line(1:len(start)) == start
-    end function starts_with
   end function is_linkage_echo
 
   !> A general linkage's echo line in Russian, in the words of kinetostat structure --lang ru.
