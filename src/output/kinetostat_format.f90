@@ -13,7 +13,7 @@ module kinetostat_format
   implicit none
   private
   public :: fixed_field, exp_field, int_field, full_number, whole_number, cell_number
-  public :: echo_number, echo_array_number, footer_number, limit_number, pad_right, display_width
+  public :: echo_number, echo_array_number, footer_number, limit_number, pad_right, pad_left, display_width
   public :: put_cell, put_fixed, cell_room, fixed_number, short_number
 
   ! The edit descriptors of the policy (kinetostat_decimal writes them exactly as the
@@ -320,7 +320,6 @@ contains
     text = trim(adjustl(field))
   end function short_exponent
 
-
   !> Characters a UTF-8 text takes on screen (continuation bytes 0x80-0xBF not counted), so
   !> that Cyrillic labels (two bytes a letter) keep columns aligned.
   pure integer function display_width(s)
@@ -333,6 +332,16 @@ contains
       if (c < 128 .or. c >= 192) display_width = display_width + 1
     end do
   end function display_width
+
+  !> `text` right-justified in `width` display characters (see display_width).
+  pure function pad_left(text, width) result(field)
+    !> UTF-8 text.
+    character(*), intent(in) :: text
+    !> Display characters of the field.
+    integer, intent(in) :: width
+    character(len=:), allocatable :: field
+    field = repeat(" ", max(0, width - display_width(text)))//text
+  end function pad_left
 
   !> `s` followed by blanks up to `width` display characters (unchanged when wider).
   pure function pad_right(s, width) result(t)
