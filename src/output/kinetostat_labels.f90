@@ -12,6 +12,8 @@ module kinetostat_labels
   integer, parameter :: lang_en = 1
   !> Language: Russian (UTF-8).
   integer, parameter :: lang_ru = 2
+  !> The languages' names as --lang takes them, in the order of their codes.
+  character(*), parameter :: lang_names(*) = [character(len=2) :: "en", "ru"]
 
 contains
 
@@ -19,14 +21,7 @@ contains
   pure integer function lang_from_name(name)
     !> Name given with --lang.
     character(*), intent(in) :: name
-    select case (name)
-    case ("en")
-      lang_from_name = lang_en
-    case ("ru")
-      lang_from_name = lang_ru
-    case default
-      lang_from_name = 0
-    end select
+    lang_from_name = findloc(lang_names, name, dim=1)
   end function lang_from_name
 
   !> A shared label in language `lang`; `english` is both the key and the English text.
