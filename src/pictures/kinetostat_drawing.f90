@@ -199,15 +199,8 @@ contains
   pure subroutine push_body(self, body)
     class(drawing_t), intent(inout) :: self
     type(drawing_body_t), intent(in) :: body
-    type(drawing_body_t), allocatable :: grown(:)
-    integer :: i
     if (.not. allocated(self%bodies)) allocate (self%bodies(0))
-    allocate (grown(size(self%bodies) + 1))
-    do i = 1, size(self%bodies)
-      grown(i) = self%bodies(i)
-    end do
-    grown(size(grown)) = body
-    call move_alloc(grown, self%bodies)
+    self%bodies = [self%bodies, body]
   end subroutine push_body
 
   !> A link drawn as a bar (plate) through named points (unknown names are left out).
