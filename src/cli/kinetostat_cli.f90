@@ -216,7 +216,7 @@ contains
       else if (args%sweep) then
         call sweep_deck(args, out, warnings, error)
       else if (args%structure) then
-        call structure_of_deck(args%deck, args%options%lang, out, error)
+        call structure_of_deck(args, out, error)
       else if (args%balance) then
         call balance_deck(args, out, error)
       else
@@ -657,19 +657,15 @@ contains
   end subroutine blame_override
 
   !> `kinetostat structure DECK`: the structural analysis of a `&linkage` deck.
-  subroutine structure_of_deck(path, lang, out, error)
-    !> Deck path.
-    character(*), intent(in) :: path
-    !> lang_en or lang_ru.
-    integer, intent(in) :: lang
-    !> Where the text goes.
+  subroutine structure_of_deck(args, out, error)
+    type(cli_args_t), intent(in) :: args
     type(text_buffer_t), intent(inout) :: out
     type(error_t), allocatable, intent(out) :: error
     type(deck_source_t) :: source
-    call load_group_deck(path, "linkage", "structure: only &linkage decks have a structural analysis (the "// &
+    call load_group_deck(args%deck, "linkage", "structure: only &linkage decks have a structural analysis (the "// &
       "others are fixed mechanisms or hand-decomposed dyads)", source, error)
     if (allocated(error)) return
-    call linkage_structure_text(source, lang, out, error)
+    call linkage_structure_text(source, args%options%lang, out, error)
   end subroutine structure_of_deck
 
   !> The deck at `path`, which must be of group `wanted`; otherwise an input error naming the
