@@ -253,9 +253,7 @@ contains
     !> Finite value.
     real(wp), intent(in) :: x
     character(len=:), allocatable :: text
-    character(len=8) :: field
-    call edit_es(x, 1, 0, field)
-    text = trim(adjustl(field))
+    text = trimmed_es(x, 1)
   end function limit_number
   !> A number in fixed point with `decimals` decimals and no blanks (drawing coordinates and
   !> labels of the SVG sheets): a leading zero is always written ("0.50", "-0.25"), a value
@@ -295,7 +293,7 @@ contains
     real(wp) :: a
     a = abs(x)
     if (a >= 1.0e7_wp) then
-      text = short_exponent(x)
+      text = trimmed_es(x, 2)
     else if (a >= 100.0_wp) then
       text = fixed_number(x, 0)
     else if (a >= 10.0_wp) then
@@ -307,18 +305,21 @@ contains
     else if (a == 0.0_wp) then
       text = "0"
     else
-      text = short_exponent(x)
+      text = trimmed_es(x, 2)
     end if
   end function short_number
 
-  !> ES10.2 without blanks.
-  pure function short_exponent(x) result(text)
+  !> ES(2d+6).d without blanks: ES8.1 (1.0E-09), ES10.2 (2.50E+03).
+  pure function trimmed_es(x, d) result(text)
+    !> Finite value.
     real(wp), intent(in) :: x
+    !> Digits after the point.
+    integer, intent(in) :: d
     character(len=:), allocatable :: text
-    character(len=10) :: field
-    call edit_es(x, 2, 0, field)
+    character(len=2 * d + 6) :: field
+    call edit_es(x, d, 0, field)
     text = trim(adjustl(field))
-  end function short_exponent
+  end function trimmed_es
 
   !> Characters a UTF-8 text takes on screen (continuation bytes 0x80-0xBF not counted), so
   !> that Cyrillic labels (two bytes a letter) keep columns aligned.
