@@ -757,8 +757,15 @@ contains
     top = y0 + 10.0_wp
     call chart(out, table%rows(ci, :), table%rows(table%column_index("J_red"), :), margin, top, &
       word("Reduced moment of inertia J_red", lang), input, "J_red, "//kgm2, [real(wp) ::])
-    call chart(out, table%rows(ci, :), table%rows(table%column_index("M_red"), :), margin + w + gap, top, &
-      word("Reduced moment M_red and M_d (dashed)", lang), input, "M_red, "//nm, [figure("M_d")])
+    if (has_figure("M_d_scale") .and. allocated(table%driver)) then
+      ! a driving-moment table: M_d(phi) = the balancing moment's column, dashed
+      call chart(out, table%rows(ci, :), table%rows(table%column_index("M_red"), :), margin + w + gap, top, &
+        word("Reduced moment M_red and M_d (dashed)", lang), input, "M_red, "//nm, [real(wp) ::], &
+        table%rows(table%column_index(table%driver), :))
+    else
+      call chart(out, table%rows(ci, :), table%rows(table%column_index("M_red"), :), margin + w + gap, top, &
+        word("Reduced moment M_red and M_d (dashed)", lang), input, "M_red, "//nm, [figure("M_d")])
+    end if
     top = top + dynamics_chart_height + gap
     call chart(out, table%rows(ci, :), table%rows(table%column_index("dT"), :), margin, top, &
       word("Change of kinetic energy dT", lang), input, "dT, "//unit_word("J", lang), [real(wp) ::])
@@ -769,6 +776,17 @@ contains
     call chart(out, table%rows(table%column_index("J_red"), :), table%rows(table%column_index("dT"), :), margin, top, &
       word("Wittenbauer's curve: dT against J_red", lang), "J_red, "//kgm2, "dT, "//unit_word("J", lang), [real(wp) ::])
   contains
+    !> Whether the DYNAMICS records hold `name`.
+    pure logical function has_figure(name)
+      character(*), intent(in) :: name
+      integer :: i
+      has_figure = .false.
+      if (.not. allocated(table%dynamics)) return
+      do i = 1, size(table%dynamics)
+        if (table%dynamics(i)%name == name) has_figure = .true.
+      end do
+    end function has_figure
+
     !> A figure of the DYNAMICS records (0 when absent).
     pure real(wp) function figure(name)
       character(*), intent(in) :: name
@@ -780,14 +798,17 @@ contains
       end do
     end function figure
 
-    !> One chart of y against x with dashed horizontal lines at `levels` (the y range holds them).
-    pure subroutine chart(o, xv, yv, x0, y0, heading, xlabel, ylabel, levels)
+    !> One chart of y against x with dashed horizontal lines at `levels` (the y range holds them)
+    !> or a dashed second curve `dashed` over the same x.
+    pure subroutine chart(o, xv, yv, x0, y0, heading, xlabel, ylabel, levels, dashed)
       type(text_buffer_t), intent(inout) :: o
       real(wp), intent(in) :: xv(:), yv(:), x0, y0
       character(*), intent(in) :: heading, xlabel, ylabel
       real(wp), intent(in) :: levels(:)
+      real(wp), intent(in), optional :: dashed(:)
       real(wp) :: left, pt, pw, ph, xlo, xhi, xstep, ylo, yhi, ystep, t, vmin, vmax
       integer :: i
+      integer, allocatable :: keep(:)
       call o%put(svg_rect(x0, y0, w, dynamics_chart_height, 'class="panel"'))
       call o%put(svg_text(x0 + 2.0_wp, y0 + 5.0_wp, heading, 'class="heading"'))
       left = x0 + 17.0_wp
@@ -806,12 +827,25 @@ contains
         else
           call y_range([yv, levels], ylo, yhi, ystep)
         end if
+      else if (present(dashed)) then
+        call y_range([yv, dashed], ylo, yhi, ystep)
       else
         call y_range(yv, ylo, yhi, ystep)
       end if
       call put_axes(o, left, pt, pw, ph, xlo, xhi, xstep, ylo, yhi, ystep, xlabel, ylabel)
       call put_series(o, left + pw * (xv - xlo) / (xhi - xlo), pt + ph - ph * (yv - ylo) / (yhi - ylo), &
         "#1f77b4", "")
+      if (present(dashed)) then
+        ! a dashed line without the dots of the data series (thinned as they are for long runs)
+        if (size(xv) > max_drawn_points) then
+          call thin_indices(reshape(dashed, [size(dashed), 1]), max_drawn_points, keep)
+        else
+          keep = [(i, i = 1, size(xv))]
+        end if
+        call o%put(svg_path(svg_polyline_d(left + pw * (xv(keep) - xlo) / (xhi - xlo), &
+          pt + ph - ph * (dashed(keep) - ylo) / (yhi - ylo)), &
+          'fill="none" stroke="#333333" stroke-width="0.4" stroke-dasharray="2,1"'))
+      end if
       do i = 1, size(levels)
         t = pt + ph - ph * (levels(i) - ylo) / (yhi - ylo)
         call o%put(svg_line(left, t, left + pw, t, 'class="mean"'))
