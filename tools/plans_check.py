@@ -8,6 +8,11 @@
         acceleration_residual <= 1e-9 x (1 + largest acceleration image);
       - every centre of mass S<i> on the acceleration plan equals the CSV's ax_S<i>, ay_S<i>
         at that step (relative 1e-9 of the largest image, absolute 1e-9 m/s^2);
+      - every vector equation of the acceleration plan (acceleration_equations): its normal
+        component is -omega^2 (P - Q), its tangential eps x (P - Q) (omega, eps of its link,
+        P, Q the point and the known point it starts from, all from the CSV), its Coriolis
+        component 2 omega x v_rel (v_rel from the velocity plan), and the image of Q plus
+        its components is the image of P (relative 1e-9 of the largest vector involved);
       - with --polygons: every force polygon closes (closure <= 1e-9 of its largest vector),
         and every pair force in a polygon (or its reaction F<j><i>) has the magnitude of the
         CSV's <F>_x, <F>_y components (relative 1e-9 of the polygon's largest vector);
@@ -48,6 +53,52 @@ def main():
             expected = (col["ax_" + name], col["ay_" + name])
             if math.hypot(p["x"] - expected[0], p["y"] - expected[1]) > 1e-9 * amax + 1e-9:
                 bad.append(f"acceleration of {name}: expected {expected}, plan ({p['x']}, {p['y']})")
+    vimg = {p["name"]: (p["x"], p["y"]) for p in plans["velocity_plan"]["points"]}
+    aimg = {p["name"]: (p["x"], p["y"]) for p in plans["acceleration_plan"]["points"]}
+
+    def pos(name):
+        return (col["x_" + name], col["y_" + name])
+
+    def close(got, want, scale):
+        return math.hypot(got[0] - want[0], got[1] - want[1]) <= 1e-9 * max(scale, 1.0)
+
+    for eq in plans.get("acceleration_equations", []):
+        point, link, start = eq["point"], eq["link"], eq["from"]
+        where = f"equation of {point} (link {link or 'frame'}, from {start or 'the pole'})"
+        if point not in aimg or (start and start not in aimg):
+            bad.append(f"{where}: a point without an image")
+            continue
+        base = aimg[start] if start else (0.0, 0.0)
+        total = list(base)
+        scale = max([math.hypot(*aimg[point]), math.hypot(*base)]
+                    + [math.hypot(v["x"], v["y"]) for v in eq["vectors"]])
+        for v in eq["vectors"]:
+            total[0] += v["x"]
+            total[1] += v["y"]
+            got = (v["x"], v["y"])
+            if v["kind"] in "ntk":
+                try:
+                    r = (pos(point)[0] - pos(start)[0], pos(point)[1] - pos(start)[1])
+                    if "phi" + link in col or "omega" + link in col:
+                        om, ep = col["omega" + link], col["eps" + link]
+                    else:  # a translating link (a slider on the frame): no angle columns
+                        om, ep = 0.0, 0.0
+                except KeyError as missing:
+                    bad.append(f"{where}: no CSV column {missing}")
+                    continue
+                if v["kind"] == "n":
+                    want = (-om * om * r[0], -om * om * r[1])
+                elif v["kind"] == "t":
+                    want = (-ep * r[1], ep * r[0])
+                else:
+                    vg = (vimg[start][0] - om * r[1], vimg[start][1] + om * r[0])
+                    vrel = (vimg[point][0] - vg[0], vimg[point][1] - vg[1])
+                    want = (-2 * om * vrel[1], 2 * om * vrel[0])
+                if not close(got, want, scale):
+                    bad.append(f"{where}: {v['name']} expected {want}, plan {got}")
+        if not close(total, aimg[point], scale):
+            bad.append(f"{where}: image of {start or 'the pole'} + components = {tuple(total)}, "
+                       f"image of {point} {aimg[point]}")
     if "--polygons" in flags:
         for poly in plans["force_plans"]:
             if poly["closure"] > 1e-9:

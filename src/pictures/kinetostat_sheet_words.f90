@@ -142,6 +142,16 @@ contains
       text = "движущее усилие - не момент на звене чертежа"
     case ("the driver is neither a moment on a link nor a force on a slider of the drawing")
       text = "движущее усилие - ни момент на звене, ни сила на ползуне чертежа"
+    case ("components")
+      text = "составляющие"
+    case ("normal")
+      text = "норм."
+    case ("tangential")
+      text = "касат."
+    case ("Coriolis")
+      text = "кориол."
+    case ("relative")
+      text = "относит."
     case default
       text = english
     end select

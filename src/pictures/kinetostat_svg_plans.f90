@@ -21,7 +21,8 @@ module kinetostat_svg_plans
   use kinetostat_label_place, only: label_boxes_t, title_attributes, anchor_start
   use kinetostat_sheet_words, only: word, unit_word
   use kinetostat_title_block, only: put_title_block, title_block_height
-  use kinetostat_plans, only: plans_t, plan_vector_t
+  use kinetostat_plans, only: plans_t, plan_vector_t, plan_equation_t, component_normal, component_tangential, &
+    component_coriolis
   implicit none
   private
   public :: write_svg_plans
@@ -68,7 +69,7 @@ contains
     call put_plan(out, boxes, plans%velocities, [12.0_wp, 32.0_wp, 91.0_wp, 88.0_wp], &
       word("Plan of velocities", lang), "p", "μv", unit_word("m/s", lang), lang)
     call put_plan(out, boxes, plans%accelerations, [107.0_wp, 32.0_wp, 91.0_wp, 88.0_wp], &
-      word("Plan of accelerations", lang), "π", "μa", unit_word("m/s^2", lang), lang)
+      word("Plan of accelerations", lang), "π", "μa", unit_word("m/s^2", lang), lang, plans%equations)
     ! the lever: the velocity plan turned by 90 deg, the loads at their images
     allocate (turned(size(plans%velocities)))
     do i = 1, size(plans%velocities)
@@ -147,24 +148,52 @@ contains
   end subroutine fit
 
   !> A plan: the pole, a ray to the image of every point (its name in lower case), the scale.
-  pure subroutine put_plan(out, boxes, images, box, heading, pole_name, mu_name, unit, lang)
+  pure subroutine put_plan(out, boxes, images, box, heading, pole_name, mu_name, unit, lang, equations)
     type(text_buffer_t), intent(inout) :: out
     type(label_boxes_t), intent(inout) :: boxes
     type(plan_vector_t), intent(in) :: images(:)
     real(wp), intent(in) :: box(4)
     character(*), intent(in) :: heading, pole_name, mu_name, unit
     integer, intent(in) :: lang
+    !> The plan's vector equations (the acceleration plan's components), drawn head to tail
+    !> from the image they start from.
+    type(plan_equation_t), intent(in), optional :: equations(:)
     real(wp) :: inner(4), mu, pole(2), q(2), tx, ty
-    real(wp), allocatable :: seg_x(:), seg_y(:), v(:, :)
+    real(wp), allocatable :: seg_x(:), seg_y(:), v(:, :), tips(:, :)
+    character(len=:), allocatable :: legend
     logical :: leader
-    integer :: i
+    integer :: i, j, e
     call put_panel(out, boxes, box, heading, inner)
     allocate (v(2, size(images)))
     do i = 1, size(images)
       v(:, i) = images(i)%v
     end do
+    if (present(equations)) then
+      ! the chains' corners must fit too
+      do e = 1, size(equations)
+        call chain_tips(equations(e), images, tips)
+        v = reshape([v, tips], [2, size(v, 2) + size(tips, 2)])
+      end do
+      legend = word("components", lang)//": n "//word("normal", lang)//", τ "//word("tangential", lang)// &
+        ", k "//word("Coriolis", lang)//", r "//word("relative", lang)
+      inner(4) = inner(4) - 3.0_wp
+    end if
     call fit(v, inner, mu, pole)
     allocate (seg_x(0), seg_y(0))
+    if (present(equations)) then
+      do e = 1, size(equations)
+        call chain_tips(equations(e), images, tips)
+        do j = 1, size(equations(e)%vectors)
+          associate (p => pole + [tips(1, j), -tips(2, j)] / mu, t => pole + [tips(1, j + 1), -tips(2, j + 1)] / mu)
+            if (hypot(t(1) - p(1), t(2) - p(2)) < 0.3_wp) cycle
+            call out%put(svg_arrow(p(1), p(2), t(1), t(2), component_colour(equations(e)%vectors(j)%kind), 0.25_wp, &
+              1.5_wp))
+            seg_x = [seg_x, p(1), t(1)]
+            seg_y = [seg_y, p(2), t(2)]
+          end associate
+        end do
+      end do
+    end if
     do i = 1, size(images)
       q = pole + [v(1, i), -v(2, i)] / mu
       if (hypot(q(1) - pole(1), q(2) - pole(2)) > 0.3_wp) then
@@ -186,11 +215,63 @@ contains
       if (leader) call out%put(svg_line(q(1), q(2), tx, ty - 0.3_wp * label_size, 'stroke="#777777" stroke-width="0.15"'))
       call out%put(svg_text(tx, ty, lower(trim(images(i)%name)), 'class="label" font-style="italic" text-anchor="middle"'))
     end do
+    if (present(equations)) then
+      ! the components' names at the middle of their arrows
+      do e = 1, size(equations)
+        call chain_tips(equations(e), images, tips)
+        do j = 1, size(equations(e)%vectors)
+          associate (p => pole + [tips(1, j), -tips(2, j)] / mu, t => pole + [tips(1, j + 1), -tips(2, j + 1)] / mu)
+            if (hypot(t(1) - p(1), t(2) - p(2)) < 0.3_wp) cycle
+            call boxes%place(trim(equations(e)%vectors(j)%name), num_size, 0.5_wp * (p(1) + t(1)), 0.5_wp * (p(2) + &
+              t(2)), atan2(t(2) - p(2), t(1) - p(1)) - 0.5_wp * pi, seg_x, seg_y, inner, tx, ty, leader)
+            if (leader) call out%put(svg_line(0.5_wp * (p(1) + t(1)), 0.5_wp * (p(2) + t(2)), tx, &
+              ty - 0.3_wp * num_size, 'stroke="#777777" stroke-width="0.15"'))
+            call out%put(svg_text(tx, ty, trim(equations(e)%vectors(j)%name), 'class="num" text-anchor="middle" '// &
+              'style="fill: '//component_colour(equations(e)%vectors(j)%kind)//'"'))
+          end associate
+        end do
+      end do
+      call out%put(svg_text(box(1) + 2.0_wp, box(2) + box(4) - 6.0_wp, legend, 'class="small"'))
+      call boxes%reserve(box(1) + 2.0_wp, box(2) + box(4) - 6.0_wp, legend, 2.4_wp, anchor_start)
+    end if
     call out%put(svg_text(box(1) + 2.0_wp, box(2) + box(4) - 2.5_wp, mu_name//" = "//short_number(mu)//" ("// &
       unit//")/"//unit_word("mm", lang), 'class="small"'))
     call boxes%reserve(box(1) + 2.0_wp, box(2) + box(4) - 2.5_wp, mu_name//" = "//short_number(mu)//" ("// &
       unit//")/"//unit_word("mm", lang), 2.4_wp, anchor_start)
   end subroutine put_plan
+
+  !> Colour of an acceleration component: normal, tangential, Coriolis, relative.
+  pure function component_colour(kind) result(colour)
+    character(*), intent(in) :: kind
+    character(len=7) :: colour
+    select case (kind)
+    case (component_normal)
+      colour = "#2ca02c"
+    case (component_tangential)
+      colour = "#d62728"
+    case (component_coriolis)
+      colour = "#9467bd"
+    case default
+      colour = "#ff7f0e"
+    end select
+  end function component_colour
+
+  !> The corners of an equation's chain on the plan: the image it starts from (the pole when
+  !> it starts there), then the running sums of its components.
+  pure subroutine chain_tips(eq, images, tips)
+    type(plan_equation_t), intent(in) :: eq
+    type(plan_vector_t), intent(in) :: images(:)
+    real(wp), allocatable, intent(out) :: tips(:, :)
+    integer :: j
+    allocate (tips(2, size(eq%vectors) + 1))
+    tips(:, 1) = 0.0_wp
+    do j = 1, size(images)
+      if (len_trim(eq%from) > 0 .and. images(j)%name == eq%from) tips(:, 1) = images(j)%v
+    end do
+    do j = 1, size(eq%vectors)
+      tips(:, j + 1) = tips(:, j) + eq%vectors(j)%v
+    end do
+  end subroutine chain_tips
 
   !> Zhukovsky's lever: the turned velocity plan (thin rays), every load as an arrow at its
   !> point's turned image.

@@ -2,7 +2,9 @@
 # at three steps, the plans' equations hold, the acceleration images of the centres of mass
 # equal the kinematics columns, every force polygon closes (<= 1e-9 of its largest vector)
 # with the CSV's pair forces in it, and Zhukovsky's lever equals the run's driving effort
-# (relative 1e-9) - tools/plans_check.py; the checks can fail; usage errors.
+# (relative 1e-9); every acceleration component (normal, tangential, Coriolis) against the
+# kinematics columns and every vector equation summing to its image - tools/plans_check.py;
+# the checks can fail; usage errors.
 plans_check="$root/tools/plans_check.py"
 plans_dir="$cli_tmp/plans"
 mkdir -p "$plans_dir"
@@ -46,6 +48,14 @@ if cmp -s "$cli_tmp/bad_polygon.json" "$plans_dir/sixbar.1.json"; then
 elif python3 "$plans_check" "$cli_tmp/bad_polygon.json" "$plans_dir/sixbar.csv" --polygons >/dev/null 2>&1; then
   fail plans-polygon-can-fail "a changed pair force was accepted"
 else pass; fi
+
+# ... and an acceleration component off by one part in 1e6 (the first equation's normal one)
+python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); v = d["acceleration_equations"][0]["vectors"][0]
+v["x"] += 1e-6 * abs(v["x"]) + 1e-6; print(json.dumps(d))' "$plans_dir/sixbar.1.json" >"$cli_tmp/bad_component.json"
+python3 "$plans_check" "$cli_tmp/bad_component.json" "$plans_dir/sixbar.csv" >/dev/null 2>&1 \
+  && fail plans-component-can-fail "a wrong acceleration component was accepted" || pass
+# every deck's equations name the components in the course's notation, a_B^n ... a_B^r
+cat "$plans_dir"/pr3207.*.json | grep -q '"name": "a_B^k", "kind": "k"' && pass || fail plans-coriolis "no Coriolis component in PR 3207's plans"
 
 # the manual's worked example (T.FTN, phi1 = 66.8 deg): the lever gives M1 = 902.0 N*m
 grep -q '"zhukovsky": {"driver": "M1", "effort": 9.0203548' "$plans_dir/sixbar_example.1.json" \
