@@ -24,7 +24,7 @@ module kinetostat_plans
   implicit none
   private
   public :: plans_t, plan_vector_t, force_polygon_t, plan_equation_t, build_plans, write_plans_json
-  public :: component_normal, component_tangential, component_coriolis, component_relative
+  public :: component_normal, component_tangential, component_coriolis, component_relative, component_reaction
 
   !> A named vector (a point's image on a plan, a force of a polygon).
   type :: plan_vector_t
@@ -40,6 +40,8 @@ module kinetostat_plans
   !> tangential (eps x l), Coriolis (2 omega x v_rel), relative (sliding, along the guide).
   character(len=1), parameter :: component_normal = "n", component_tangential = "t", &
     component_coriolis = "k", component_relative = "r"
+  !> Kind of a whole (unsplit) reaction in a group's force polygon.
+  character(len=1), parameter :: component_reaction = "f"
 
   !> One vector equation of the acceleration plan, as the graphical method adds it: the
   !> image of `point` = the image of `from` (the pole when blank) + the components in order.
@@ -80,6 +82,9 @@ module kinetostat_plans
     type(plan_vector_t), allocatable :: vectors(:)
     !> |sum of the vectors| / largest vector (0 for a closed polygon).
     real(wp) :: closure = 0.0_wp
+    !> The input link's polygon: the balancing moment's name ("" for none) and value, N*m.
+    character(len=:), allocatable :: moment
+    real(wp) :: moment_value = 0.0_wp
   end type force_polygon_t
 
   !> The plans of one step.
@@ -96,6 +101,8 @@ module kinetostat_plans
     real(wp) :: velocity_residual = 0.0_wp, acceleration_residual = 0.0_wp
     !> Force polygons, one per link with known forces.
     type(force_polygon_t), allocatable :: polygons(:)
+    !> Force polygons of the input link and of every Assur group, in the order solved.
+    type(force_polygon_t), allocatable :: group_polygons(:)
     !> Zhukovsky's lever: the driver's name, whether it could be computed, the effort from the
     !> lever and the table's value (N*m or N).
     character(len=:), allocatable :: driver
@@ -147,6 +154,8 @@ contains
       driver = ""
       if (allocated(table%driver)) driver = table%driver
       call polygons_of(topo, drawing, driver, plans%polygons)
+      call group_polygons_of(topo, drawing, table, k, slides_of(topo, drawing, table, k, omega), driver, plans%groups, &
+        plans%group_polygons)
     end block
     call lever_of(topo, drawing, table, k, omega, v0, plans)
   end subroutine build_plans
@@ -570,7 +579,7 @@ contains
         do s = 1, size(slides)
           if (written(s) .or. slides(s)%g == 0) cycle
           if (.not. (member(slides(s)%m) .or. member(slides(s)%g))) cycle
-          ip = image_index(slides(s)%name)
+          ip = plan_point_index(slides(s)%name)
           if (ip == 0) cycle
           if (.not. known(ip)) cycle
           q = known_point(slides(s)%g, ip)
@@ -595,14 +604,14 @@ contains
     end do
   contains
     !> Index of the image called `name` (0: none).
-    pure integer function image_index(name)
+    pure integer function plan_point_index(name)
       character(*), intent(in) :: name
       integer :: t
-      image_index = 0
+      plan_point_index = 0
       do t = 1, n
-        if (plans%accelerations(t)%name == name) image_index = t
+        if (plans%accelerations(t)%name == name) plan_point_index = t
       end do
-    end function image_index
+    end function plan_point_index
     !> Whether a link of the group lists the point (not as a sliding contact).
     pure logical function of_group(ip)
       integer, intent(in) :: ip
@@ -905,6 +914,165 @@ contains
     end do
   end subroutine polygons_of
 
+  !> The force polygon of every Assur group as the graphical method closes it, from the last
+  !> group attached to the first and then the input link: the known forces of its links link
+  !> by link (weight, inertia force, external loads), the reactions of the groups solved
+  !> before it (known now), then the unknown reactions of the frame and of the links it is
+  !> attached to - a revolute pair's
+  !> reaction on a link with another joint in the group split into its tangential part
+  !> (perpendicular to the line to that joint, found from the link's moments) and its normal
+  !> part (along it) - the tangential parts first, then the normal parts and the unsplit
+  !> reactions, which close the polygon. The input link's polygon carries the balancing
+  !> moment's name and value.
+  pure subroutine group_polygons_of(topo, drawing, table, k, slides, driver, groups, polygons)
+    type(sketch_t), intent(in) :: topo
+    type(drawing_t), intent(in) :: drawing
+    type(step_table_t), intent(in) :: table
+    integer, intent(in) :: k
+    type(slide_t), intent(in) :: slides(:)
+    character(*), intent(in) :: driver
+    type(plan_group_t), intent(in) :: groups(:)
+    type(force_polygon_t), allocatable, intent(out) :: polygons(:)
+    type(force_polygon_t) :: poly
+    type(plan_vector_t), allocatable :: tangential(:), closing(:)
+    logical, allocatable :: member(:), before(:)
+    integer :: gr, q, i, j, a, b, pass
+    real(wp) :: largest
+    logical :: take
+    allocate (polygons(0), member(size(topo%links)), before(0:size(topo%links)))
+    if (.not. allocated(drawing%forces)) return
+    before = .false.
+    do gr = size(groups), 1, -1
+      member = .false.
+      member(groups(gr)%links) = .true.
+      poly%link = ""
+      do q = 1, size(groups(gr)%links)
+        if (q > 1) poly%link = trim(poly%link)//","
+        poly%link = trim(poly%link)//topo%links(groups(gr)%links(q))%name
+      end do
+      allocate (poly%vectors(0), tangential(0), closing(0))
+      do q = 1, size(groups(gr)%links)
+        i = groups(gr)%links(q)
+        do pass = 1, 3
+          do j = 1, size(drawing%forces)
+            associate (f => drawing%forces(j))
+              if (f%kind == force_pair) cycle
+              take = owner(f%name, f%on_link) == topo%links(i)%name
+              select case (pass)
+              case (1)
+                take = take .and. f%name(1:1) == "G"
+              case (2)
+                take = take .and. f%name(1:3) == "Phi"
+              case default
+                take = take .and. f%name(1:1) /= "G" .and. f%name(1:3) /= "Phi"
+              end select
+              if (take) poly%vectors = [poly%vectors, plan_vector_t(f%name, f%f)]
+              ! an actuator's force: its reaction on the guide's link
+              if (pass == 3 .and. len_trim(f%on_link) > 0 .and. trim(f%name) == trim(driver)) then
+                if (guide_link(topo, link_index(topo, trim(f%on_link))) == i) poly%vectors = [poly%vectors, &
+                  plan_vector_t("-"//f%name, -f%f)]
+              end if
+            end associate
+          end do
+        end do
+      end do
+      ! the reactions on the group from the links outside it
+      do j = 1, size(drawing%forces)
+        associate (f => drawing%forces(j))
+          if (f%kind /= force_pair .or. len_trim(f%name) /= 3 .or. f%name(1:1) /= "F") cycle
+          a = link_index(topo, f%name(2:2))
+          b = link_index(topo, f%name(3:3))
+          if (a > 0 .and. member(max(a, 1)) .and. .not. (b > 0 .and. member(max(b, 1)))) then
+            call add_reaction(trim(f%name), f%f, a, b, f%at, poly, tangential, closing)
+          else if (b > 0 .and. member(max(b, 1)) .and. .not. (a > 0 .and. member(max(a, 1)))) then
+            call add_reaction("F"//f%name(3:3)//f%name(2:2), -f%f, b, a, f%at, poly, tangential, closing)
+          end if
+        end associate
+      end do
+      ! the frame's reactions close the polygon
+      poly%vectors = [poly%vectors, tangential, pack(closing, .not. from_frame(closing)), pack(closing, &
+        from_frame(closing))]
+      before(groups(gr)%links) = .true.
+      poly%moment = ""
+      poly%moment_value = 0.0_wp
+      if (groups(gr)%input .and. table%column_index(driver) > 0) then
+        poly%moment = driver
+        poly%moment_value = column_value(table, driver, k)
+      end if
+      largest = 0.0_wp
+      do j = 1, size(poly%vectors)
+        largest = max(largest, norm2(poly%vectors(j)%v))
+      end do
+      poly%closure = 0.0_wp
+      if (largest > 0.0_wp) poly%closure = norm2([sum(poly%vectors%v(1)), sum(poly%vectors%v(2))]) / largest
+      polygons = [polygons, poly]
+      deallocate (poly%vectors, tangential, closing)
+    end do
+  contains
+    !> Whether each reaction F<l><o> is from the frame (o no moving link).
+    pure function from_frame(vectors) result(mask)
+      type(plan_vector_t), intent(in) :: vectors(:)
+      logical :: mask(size(vectors))
+      integer :: t
+      do t = 1, size(vectors)
+        mask(t) = link_index(topo, vectors(t)%name(3:3)) == 0
+      end do
+    end function from_frame
+    !> The reaction `f` (N) on link l of the group from link o (0: the frame) at `at`: split
+    !> when the pair is revolute and l has another joint with a link of the group.
+    pure subroutine add_reaction(name, f, l, o, at, poly, tangential, closing)
+      character(*), intent(in) :: name
+      real(wp), intent(in) :: f(2), at(2)
+      integer, intent(in) :: l, o
+      type(force_polygon_t), intent(inout) :: poly
+      type(plan_vector_t), allocatable, intent(inout) :: tangential(:), closing(:)
+      integer :: s
+      real(wp) :: e(2), inner(2)
+      logical :: split
+      if (before(o)) then
+        ! from a group solved before: a known force
+        poly%vectors = [poly%vectors, plan_vector_t(name, f)]
+        return
+      end if
+      call inner_joint(l, at, split, inner)
+      do s = 1, size(slides)
+        if ((slides(s)%m == l .and. slides(s)%g == o) .or. (slides(s)%m == o .and. slides(s)%g == l)) split = .false.
+      end do
+      if (topo%links(l)%block) split = .false.
+      if (split) then
+        e = (inner - at) / norm2(inner - at)
+        tangential = [tangential, plan_vector_t(name//"^τ", f - dot_product(f, e) * e, component_tangential)]
+        closing = [closing, plan_vector_t(name//"^n", dot_product(f, e) * e, component_normal)]
+      else
+        closing = [closing, plan_vector_t(name, f, component_reaction)]
+      end if
+    end subroutine add_reaction
+    !> Whether link l has a joint (not at `at`) with another link of the group (`found`); its position.
+    pure subroutine inner_joint(l, at, found, p)
+      integer, intent(in) :: l
+      real(wp), intent(in) :: at(2)
+      logical, intent(out) :: found
+      real(wp), intent(out) :: p(2)
+      integer :: t, o
+      found = .false.
+      p = 0.0_wp
+      do t = 1, size(topo%links(l)%points)
+        associate (pname => topo%links(l)%points(t))
+          if (drawing%point_index(trim(pname)) == 0 .or. sliding_on(topo, l, trim(pname))) cycle
+          if (norm2(drawing%at(trim(pname)) - at) <= 1.0e-9_wp * (1.0_wp + norm2(at))) cycle
+          do o = 1, size(topo%links)
+            if (o == l .or. .not. member(o)) cycle
+            if (lists(topo, o, trim(pname)) .and. .not. sliding_on(topo, o, trim(pname))) then
+              found = .true.
+              p = drawing%at(trim(pname))
+              return
+            end if
+          end do
+        end associate
+      end do
+    end subroutine inner_joint
+  end subroutine group_polygons_of
+
   !> Zhukovsky's lever: the power of every load but the driving moment, over the driver's
   !> angular velocity (the balancing moment); pair forces do no work without friction.
   pure subroutine lever_of(topo, drawing, table, k, omega, v0, plans)
@@ -1032,6 +1200,23 @@ contains
     end do
     call out%put("  ],")
     call out%put('  "force_plans": [')
+    do i = 1, size(plans%group_polygons)
+      associate (poly => plans%group_polygons(i))
+        line = '    {"group": "'//trim(poly%link)//'", "closure": '//full_number(poly%closure)
+        if (len(poly%moment) > 0) line = line//', "moment": {"name": "'//poly%moment//'", "value": '// &
+          full_number(poly%moment_value)//'}'
+        line = line//', "vectors": ['
+        do j = 1, size(poly%vectors)
+          if (j > 1) line = line//", "
+          line = line//vector_json(poly%vectors(j))
+        end do
+      end associate
+      line = line//"]}"
+      if (i < size(plans%group_polygons)) line = line//","
+      call out%put(line)
+    end do
+    call out%put("  ],")
+    call out%put('  "link_force_plans": [')
     do i = 1, size(plans%polygons)
       line = '    {"link": "'//trim(plans%polygons(i)%link)//'", "closure": '//full_number(plans%polygons(i)%closure)// &
         ', "vectors": ['

@@ -142,6 +142,14 @@ contains
       text = "движущее усилие - не момент на звене чертежа"
     case ("the driver is neither a moment on a link nor a force on a slider of the drawing")
       text = "движущее усилие - ни момент на звене, ни сила на ползуне чертежа"
+    case ("Force polygons of the groups")
+      text = "Планы сил групп"
+    case ("group")
+      text = "группа"
+    case ("input link")
+      text = "входное звено"
+    case ("known forces first, then the unknown reactions")
+      text = "сначала известные силы, затем искомые реакции"
     case ("components")
       text = "составляющие"
     case ("normal")

@@ -6,8 +6,9 @@
 !> - Zhukovsky's lever: the velocity plan turned 90 deg counterclockwise, every load drawn at
 !>   its point's image, the balancing effort from the lever's moment equation beside the
 !>   analytic value of the step;
-!> - the force polygon of every link: its loads, then the pair forces on it, head to tail at
-!>   one scale mu_F in N/mm.
+!> - the force polygon of every Assur group (the last attached first) and of the input link:
+!>   the known forces, then the unknown reactions (tangential parts, then normal parts), head
+!>   to tail at one scale mu_F in N/mm; the input link's with its balancing moment.
 !> The numbers come from kinetostat_plans; labels are placed by kinetostat_label_place (no
 !> two overlap); words from kinetostat_sheet_words.
 module kinetostat_svg_plans
@@ -82,7 +83,7 @@ contains
     ! the lever's result against the analytic one
     y = 236.0_wp
     call out%put(svg_text(107.0_wp, y - 7.5_wp, word("Force polygons", lang)//":", 'class="small"'))
-    call out%put(svg_text(107.0_wp, y - 4.5_wp, word("known forces first, then the pair forces", lang)//".", &
+    call out%put(svg_text(107.0_wp, y - 4.5_wp, word("known forces first, then the unknown reactions", lang)//".", &
       'class="small"'))
     call out%put(svg_text(12.0_wp, y - 7.5_wp, word("plan of velocities turned by 90 deg", lang)//";", 'class="small"'))
     call out%put(svg_text(12.0_wp, y - 4.5_wp, word("arrows: directions of the loads", lang)//".", 'class="small"'))
@@ -351,35 +352,40 @@ contains
     real(wp) :: inner(4), cell(4), mu, pole(2), p(2), q(2), tx, ty, cw, ch, largest
     real(wp), allocatable :: seg_x(:), seg_y(:), tips(:, :)
     character(len=7) :: colour
-    character(len=:), allocatable :: dash
+    character(len=:), allocatable :: dash, caption
     logical :: leader
     integer :: n, i, j, columns, rows
-    call put_panel(out, boxes, box, word("Force polygons of the links", lang), inner)
+    call put_panel(out, boxes, box, word("Force polygons of the groups", lang), inner)
     n = 0
-    if (allocated(plans%polygons)) n = size(plans%polygons)
+    if (allocated(plans%group_polygons)) n = size(plans%group_polygons)
     if (n == 0) return
     columns = min(n, 2)
     rows = (n + columns - 1) / columns
     cw = (inner(3) - inner(1)) / columns
     ch = (inner(4) - inner(2)) / rows
-    ! one scale: the largest polygon's extent fits a cell
-    largest = 0.0_wp
     do i = 1, n
-      call polygon_tips(plans%polygons(i)%vectors, tips)
-      largest = max(largest, maxval(tips(1, :)) - minval(tips(1, :)), maxval(tips(2, :)) - minval(tips(2, :)))
-    end do
-    mu = 1.0_wp
-    if (largest > 0.0_wp) mu = nice_step(largest / (min(cw, ch) - 9.0_wp), 1, .false.)
-    do i = 1, n
-      associate (poly => plans%polygons(i))
+      associate (poly => plans%group_polygons(i))
         cell = [inner(1) + cw * modulo(i - 1, columns), inner(2) + ch * ((i - 1) / columns), 0.0_wp, 0.0_wp]
         cell(3:4) = cell(1:2) + [cw, ch]
-        call out%put(svg_text(cell(1) + 1.0_wp, cell(2) + 3.0_wp, word("link", lang)//" "//trim(poly%link), &
-          'class="small"'))
-        call boxes%reserve(cell(1) + 1.0_wp, cell(2) + 3.0_wp, word("link", lang)//" "//trim(poly%link), 2.4_wp, anchor_start)
+        if (index(poly%link, ",") > 0) then
+          caption = word("group", lang)//" "//trim(poly%link)
+        else
+          caption = word("input link", lang)//" "//trim(poly%link)
+        end if
+        if (len(poly%moment) > 0) caption = caption//": "//poly%moment//" = "//short_number(poly%moment_value)//" "// &
+          unit_word("N*m", lang)
+        call out%put(svg_text(cell(1) + 1.0_wp, cell(2) + 3.0_wp, caption, 'class="small"'))
+        call boxes%reserve(cell(1) + 1.0_wp, cell(2) + 3.0_wp, caption, 2.4_wp, anchor_start)
+        ! its own scale: the polygon fits its cell
         call polygon_tips(poly%vectors, tips)
+        largest = max(maxval(tips(1, :)) - minval(tips(1, :)), maxval(tips(2, :)) - minval(tips(2, :)))
+        mu = 1.0_wp
+        if (largest > 0.0_wp) mu = nice_step(largest / (min(cw, ch) - 12.0_wp), 1, .false.)
+        caption = "μF = "//short_number(mu)//" "//unit_word("N", lang)//"/"//unit_word("mm", lang)
+        call out%put(svg_text(cell(1) + 1.0_wp, cell(4) - 1.0_wp, caption, 'class="small"'))
+        call boxes%reserve(cell(1) + 1.0_wp, cell(4) - 1.0_wp, caption, 2.4_wp, anchor_start)
         pole(1) = 0.5_wp * (cell(1) + cell(3)) - 0.5_wp * (minval(tips(1, :)) + maxval(tips(1, :))) / mu
-        pole(2) = 0.5_wp * (cell(2) + 3.0_wp + cell(4)) + 0.5_wp * (minval(tips(2, :)) + maxval(tips(2, :))) / mu
+        pole(2) = 0.5_wp * (cell(2) + cell(4)) + 0.5_wp * (minval(tips(2, :)) + maxval(tips(2, :))) / mu
         allocate (seg_x(0), seg_y(0))
         do j = 1, size(poly%vectors)
           p = pole + [tips(1, j), -tips(2, j)] / mu
@@ -405,9 +411,6 @@ contains
         deallocate (seg_x, seg_y)
       end associate
     end do
-    call out%put(svg_text(box(1) + 2.0_wp, box(2) + box(4) - 2.5_wp, "μF = "//short_number(mu)//" "// &
-      unit_word("N", lang)//"/"//unit_word("mm", lang), &
-      'class="small"'))
   end subroutine put_polygons
 
   !> The running sums of the vectors (tips(:, 1) = 0, tips(:, j + 1) = sum of the first j).
