@@ -150,6 +150,12 @@ contains
       text = "входное звено"
     case ("known forces first, then the unknown reactions")
       text = "сначала известные силы, затем искомые реакции"
+    case ("Plans of velocities, accelerations, forces")
+      text = "Планы скоростей, ускорений, сил"
+    case ("Mechanism with its forces")
+      text = "Механизм с силами"
+    case ("Hodographs and diagrams")
+      text = "Годографы и диаграммы"
     case ("components")
       text = "составляющие"
     case ("normal")

@@ -18,7 +18,6 @@ module kinetostat_svg_plans
   use kinetostat_step_table, only: step_table_t
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_svg, only: svg_open, svg_close, svg_line, svg_rect, svg_text, svg_arrow, svg_circle, palette_colour
-  use kinetostat_svg_writer, only: nice_step
   use kinetostat_label_place, only: label_boxes_t, title_attributes, anchor_start
   use kinetostat_sheet_words, only: word, unit_word
   use kinetostat_title_block, only: put_title_block, title_block_height
@@ -52,10 +51,12 @@ contains
     type(label_boxes_t) :: boxes
     type(plan_vector_t), allocatable :: turned(:)
     character(len=:), allocatable :: line
-    real(wp) :: y
+    real(wp) :: y, sheet_height
     integer :: i
 
-    call svg_open(out, page_width, page_height, title//" - "//table%deck//" - plans, "//table%row_name//" "// &
+    sheet_height = page_height
+    if (allocated(table%student_stamp)) sheet_height = page_height + title_block_height
+    call svg_open(out, page_width, sheet_height, title//" - "//table%deck//" - plans, "//table%row_name//" "// &
       int_str(k), "kinetostat --format plans --at "//int_str(k)//" sheet of "//table%deck// &
       ": plans of velocities and accelerations, force polygons, Zhukovsky's lever.")
     call out%put(svg_text(12.0_wp, 15.0_wp, title, title_attributes(title, "title", 3.3_wp, 186.0_wp)))
@@ -100,7 +101,8 @@ contains
       call out%put(svg_text(12.0_wp, y + 6.0_wp, word("not drawn", lang)//": "//word(plans%lever_note, lang), &
         'class="label"'))
     end if
-    call put_title_block(out, table, lang, page_width, page_height)
+    call put_title_block(out, table, lang, page_width, sheet_height, word("Plans of velocities, accelerations, forces", &
+      lang))
     call svg_close(out)
   end subroutine write_svg_plans
 
@@ -143,7 +145,7 @@ contains
     end if
     span = max((hi(1) - lo(1)) / (inner(3) - inner(1)), (hi(2) - lo(2)) / (inner(4) - inner(2)))
     mu = 1.0_wp
-    if (span > 0.0_wp) mu = nice_step(span, 1, .false.)
+    if (span > 0.0_wp) mu = plan_scale(span)
     pole(1) = 0.5_wp * (inner(1) + inner(3)) - 0.5_wp * (lo(1) + hi(1)) / mu
     pole(2) = 0.5_wp * (inner(2) + inner(4)) + 0.5_wp * (lo(2) + hi(2)) / mu
   end subroutine fit
@@ -380,7 +382,7 @@ contains
         call polygon_tips(poly%vectors, tips)
         largest = max(maxval(tips(1, :)) - minval(tips(1, :)), maxval(tips(2, :)) - minval(tips(2, :)))
         mu = 1.0_wp
-        if (largest > 0.0_wp) mu = nice_step(largest / (min(cw, ch) - 12.0_wp), 1, .false.)
+        if (largest > 0.0_wp) mu = plan_scale(largest / (min(cw, ch) - 12.0_wp))
         caption = "μF = "//short_number(mu)//" "//unit_word("N", lang)//"/"//unit_word("mm", lang)
         call out%put(svg_text(cell(1) + 1.0_wp, cell(4) - 1.0_wp, caption, 'class="small"'))
         call boxes%reserve(cell(1) + 1.0_wp, cell(4) - 1.0_wp, caption, 2.4_wp, anchor_start)
@@ -412,6 +414,21 @@ contains
       end associate
     end do
   end subroutine put_polygons
+
+  !> A drawing scale (units per mm) at least `span`: the smallest of 1, 1.2, 1.5, 2, 2.5, 3,
+  !> 4, 5, 6, 8 times a power of ten (the scales a drawing is made at).
+  pure real(wp) function plan_scale(span)
+    real(wp), intent(in) :: span
+    real(wp), parameter :: steps(*) = [1.0_wp, 1.2_wp, 1.5_wp, 2.0_wp, 2.5_wp, 3.0_wp, 4.0_wp, 5.0_wp, 6.0_wp, &
+      8.0_wp, 10.0_wp]
+    real(wp) :: decade
+    integer :: i
+    decade = 10.0_wp**floor(log10(span))
+    plan_scale = 10.0_wp * decade
+    do i = size(steps), 1, -1
+      if (steps(i) * decade >= span * (1.0_wp - 1.0e-12_wp)) plan_scale = steps(i) * decade
+    end do
+  end function plan_scale
 
   !> The running sums of the vectors (tips(:, 1) = 0, tips(:, j + 1) = sum of the first j).
   pure subroutine polygon_tips(vectors, tips)
