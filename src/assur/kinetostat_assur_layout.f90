@@ -29,7 +29,7 @@ module kinetostat_assur_layout
     put_dynamics_figures, note_drive_deviation, note_constant_speed_cost
   use kinetostat_assur_dynamics, only: assur_source_t, assur_cycle, assur_motion
   use kinetostat_assur_friction, only: friction_step_t, assur_friction_step
-  use kinetostat_assur_deck, only: assur_deck_t, read_assur_deck, write_assur_template, load_schedule_t, load_constant, &
+  use kinetostat_assur_deck, only: assur_deck_t, read_assur_deck, assur_template, load_schedule_t, load_constant, &
     load_column, assur_phi1_deg, assur_omega1_steps, assur_eps1, assur_motion_sign, assur_load_value, &
     assur_load_steps, resist_none
   implicit none
@@ -77,12 +77,7 @@ module kinetostat_assur_layout
     !> The steady cycle (dynamics = 'steady' or 'given').
     type(cycle_t) :: cycle
   contains
-    procedure :: read_deck
-    procedure :: solve
-    procedure :: write_results
-    procedure :: sketch
-    procedure :: force_plan
-    procedure :: mass_model
+    procedure :: read_deck, solve, write_results, sketch, force_plan, mass_model
   end type assur_mechanism_t
 
 contains
@@ -92,7 +87,7 @@ contains
     !> The mechanism.
     class(mechanism_t), allocatable, intent(out) :: mech
     allocate (assur_mechanism_t :: mech)
-    mech%template_writer => write_assur_template
+    mech%template = assur_template
     mech%title_en = "KINETOSTAT  ASSUR  FORCE ANALYSIS OF A LINKAGE OF CLASS-II ASSUR GROUPS"
     mech%title_ru = "KINETOSTAT  ASSUR  СИЛОВОЙ РАСЧЕТ МЕХАНИЗМА ИЗ ГРУПП АССУРА II" // &
       " КЛАССА"

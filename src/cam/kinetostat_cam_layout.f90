@@ -16,7 +16,7 @@ module kinetostat_cam_layout
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_cam, only: cam_step_t, cam_step, cam_critical_angle, kf_limit
-  use kinetostat_cam_deck, only: cam_deck_t, read_cam_deck, write_cam_template, follower_translating, &
+  use kinetostat_cam_deck, only: cam_deck_t, read_cam_deck, cam_template, follower_translating, &
     cam_phi_deg, cam_theta_deg, cam_f2, cam_vdir, cam_x_b
   implicit none
   private
@@ -52,9 +52,7 @@ module kinetostat_cam_layout
     !> The validated deck.
     type(cam_deck_t) :: deck
   contains
-    procedure :: read_deck
-    procedure :: solve
-    procedure :: write_results
+    procedure :: read_deck, solve, write_results
   end type cam_mechanism_t
 
 contains
@@ -64,7 +62,7 @@ contains
     !> The mechanism.
     class(mechanism_t), allocatable, intent(out) :: mech
     allocate (cam_mechanism_t :: mech)
-    mech%template_writer => write_cam_template
+    mech%template = cam_template
     mech%title_en = "KINETOSTAT  CAM  FORCES ON A TRANSLATING FOLLOWER IN A GUIDE (MANUAL SECTION 7)"
     mech%title_ru = "KINETOSTAT  CAM  СИЛЫ В КУЛАЧКОВОМ МЕХАНИЗМЕ С" // &
       " ПОСТУПАТЕЛЬНО ДВИЖУЩИМСЯ ТОЛКАТЕЛЕМ (РАЗДЕЛ 7)"

@@ -18,7 +18,7 @@ module kinetostat_deck
   public :: is_set, require_set, require_positive, require_nonnegative, require_rule
   public :: is_whole_in, require_whole
   public :: optional_default, count_values, steps_over_turn, write_template_lines
-  public :: check_namelist_syntax, longest_quoted
+  public :: check_namelist_syntax, longest_quoted, begin_group
   public :: deck_array_capacities, max_deck_size, set_max_deck_size, default_max_deck_size, assignment_starts
 
   !> Bit pattern of `unset_real`: a quiet NaN with a payload. A NaN typed in a deck
@@ -1403,22 +1403,27 @@ contains
     allocate (starts(0))
     do i = 1, len_trim(masked)
       if (masked(i:i) /= "=") cycle
-      ! walk back over blanks, then over the name with its subscripts and components
-      j = i - 1
-      do while (j >= 1)
-        if (masked(j:j) /= " ") exit
-        j = j - 1
-      end do
-      k = j
-      do while (k >= 1)
-        if (index("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_%()", masked(k:k)) == 0) exit
-        k = k - 1
-      end do
-      k = k + 1
+      call name_span(masked(1:i - 1), k, j)
       if (k > j) cycle
       starts = [starts, k]
     end do
   end function assignment_starts
+
+  !> The start of every deck reader: the context its messages name (deck path and group)
+  !> and the syntax pre-check of the group's text (check_namelist_syntax) before the READ.
+  subroutine begin_group(source, group, ctx, error)
+    !> The deck.
+    type(deck_source_t), intent(in) :: source
+    !> Group name, lower case, without '&'.
+    character(*), intent(in) :: group
+    !> The reader's context.
+    type(deck_context_t), intent(out) :: ctx
+    !> The syntax error (none when the text passes).
+    type(error_t), allocatable, intent(out) :: error
+    ctx%path = source%path
+    ctx%group = group
+    call check_namelist_syntax(source, group, error)
+  end subroutine begin_group
 
   !> A syntax pre-check of the deck's group `group`, before gfortran's namelist READ sees
   !> it (which crashes on some malformed text, e.g. an array or type name followed by an
@@ -1543,30 +1548,40 @@ contains
     character(*), intent(in) :: reason
     !> The input error.
     type(error_t), allocatable, intent(out) :: error
-    character(len=*), parameter :: tab = achar(9)
     character(len=:), allocatable :: who
     integer :: j, e
     who = name
     if (open_at > 0) then
       ! the name written just before the '(' (a designator, or a value's text)
-      j = open_at - 1
-      do while (j >= 1)
-        if (index(" "//tab, line(j:j)) == 0) exit
-        j = j - 1
-      end do
-      e = j
-      do while (j >= 1)
-        if (index("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_%()", line(j:j)) == 0) exit
-        j = j - 1
-      end do
-      if (e > j .and. e >= 1) then
-        if (len(who) == 0 .or. index(line(open_at:), "=") > 0 .or. e == open_at - 1) who = line(j + 1:open_at)
+      call name_span(line(1:open_at - 1), j, e)
+      if (e >= j) then
+        if (len(who) == 0 .or. index(line(open_at:), "=") > 0 .or. e == open_at - 1) who = line(j:open_at)
       end if
     end if
     if (len(who) == 0) who = "(no variable yet)"
     call fatal_error(error, exit_input, source%path//":"//int_str(at)//": &"//group//": "// &
       clipped(printable(who))//": "//reason)
   end subroutine syntax_failure
+
+  !> The name with its subscripts and components at the end of `text` (trailing blanks and
+  !> tabs skipped): text(first:last), empty (first > last) when `text` does not end with one.
+  pure subroutine name_span(text, first, last)
+    !> The text before a '=' or a '('.
+    character(*), intent(in) :: text
+    !> First and last character of the name.
+    integer, intent(out) :: first, last
+    last = len(text)
+    do while (last >= 1)
+      if (index(" "//achar(9), text(last:last)) == 0) exit
+      last = last - 1
+    end do
+    first = last
+    do while (first >= 1)
+      if (index("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_%()", text(first:first)) == 0) exit
+      first = first - 1
+    end do
+    first = first + 1
+  end subroutine name_span
 
   !> The variable name written just before a '=' ("dyad(2)%l2" of "  dyad(2)%l2 "), "" when
   !> the text before the '=' does not end with one.

@@ -21,7 +21,7 @@ module kinetostat_linkage_layout
   use kinetostat_linkage, only: linkage_t, linkage_step_t, pair_r, pair_p, linkage_reference_pose, linkage_assemble, &
     linkage_motion, linkage_statics, link_point_state, point_position
   use kinetostat_linkage_structure, only: structure_lines
-  use kinetostat_linkage_deck, only: linkage_deck_t, read_linkage_deck, write_linkage_template, linkage_drive_values, &
+  use kinetostat_linkage_deck, only: linkage_deck_t, read_linkage_deck, linkage_template, linkage_drive_values, &
     linkage_load_value
   implicit none
   private
@@ -45,12 +45,7 @@ module kinetostat_linkage_layout
     !> The validated deck.
     type(linkage_deck_t) :: deck
   contains
-    procedure :: read_deck
-    procedure :: solve
-    procedure :: write_results
-    procedure :: sketch
-    procedure :: force_plan
-    procedure :: mass_model
+    procedure :: read_deck, solve, write_results, sketch, force_plan, mass_model
   end type linkage_mechanism_t
 
 contains
@@ -60,7 +55,7 @@ contains
     !> The mechanism.
     class(mechanism_t), allocatable, intent(out) :: mech
     allocate (linkage_mechanism_t :: mech)
-    mech%template_writer => write_linkage_template
+    mech%template = linkage_template
     mech%title_en = "KINETOSTAT  LINKAGE  FORCE ANALYSIS OF A PLANAR LINKAGE OF LOWER PAIRS"
     mech%title_ru = "KINETOSTAT  LINKAGE  СИЛОВОЙ РАСЧЕТ ПЛОСКОГО "// &
       "МЕХАНИЗМА С НИЗШИМИ ПАРАМИ"

@@ -468,6 +468,8 @@ contains
     character(len=:), allocatable :: along
     drawing%view_angle = -0.5_wp * pi - atan2(topo%down(2), topo%down(1))
     drawing%view_note = "gravity down the sheet"
+    ! every list allocated (empty): the writers loop over them without asking
+    allocate (drawing%points(0), drawing%bodies(0), drawing%guides(0), drawing%forces(0), drawing%moments(0))
     if (allocated(topo%links)) then
       do i = 1, size(topo%links)
         do j = 1, size(topo%links(i)%points)

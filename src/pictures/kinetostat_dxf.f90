@@ -45,11 +45,9 @@ contains
     size_mm = max(maxval(hi - lo), 1.0_wp)
     h = 0.02_wp * size_mm
     fmax = 0.0_wp
-    if (allocated(drawing%forces)) then
-      do i = 1, size(drawing%forces)
-        fmax = max(fmax, norm2(drawing%forces(i)%f))
-      end do
-    end if
+    do i = 1, size(drawing%forces)
+      fmax = max(fmax, norm2(drawing%forces(i)%f))
+    end do
     fscale = 0.0_wp
     if (fmax > 0.0_wp) fscale = 0.25_wp * size_mm / fmax
 
@@ -77,50 +75,46 @@ contains
     call pair(out, 0, "SECTION")
     call pair(out, 2, "ENTITIES")
     ! bodies
-    if (allocated(drawing%bodies)) then
-      do i = 1, size(drawing%bodies)
-        associate (bd => drawing%bodies(i))
-          select case (bd%kind)
-          case (body_bar)
-            do j = 1, size(bd%points) - 1
-              call line(out, "LINKS", mm(drawing%points(bd%points(j))%p), mm(drawing%points(bd%points(j + 1))%p))
-            end do
-            if (size(bd%points) > 2) call line(out, "LINKS", mm(drawing%points(bd%points(size(bd%points)))%p), &
-              mm(drawing%points(bd%points(1))%p))
-          case (body_block)
-            p = mm(drawing%points(bd%points(1))%p)
-            u = [cos(bd%angle), sin(bd%angle)] * 1.5_wp * h
-            n = [-u(2), u(1)] * 0.6_wp
-            call line(out, "LINKS", p - u - n, p + u - n)
-            call line(out, "LINKS", p + u - n, p + u + n)
-            call line(out, "LINKS", p + u + n, p - u + n)
-            call line(out, "LINKS", p - u + n, p - u - n)
-          case (body_cylinder)
-            u = [cos(bd%angle), sin(bd%angle)]
-            n = [-u(2), u(1)] * 0.6_wp * h
-            a = mm(bd%anchor)
-            b = mm(bd%anchor + bd%length * u)
-            call line(out, "LINKS", a + n, b + n)
-            call line(out, "LINKS", a - n, b - n)
-            call line(out, "LINKS", a + n, a - n)
-          case (body_rod)
-            u = [cos(bd%angle), sin(bd%angle)]
-            call line(out, "LINKS", mm(bd%anchor + bd%reach(1) * u), mm(bd%anchor + bd%reach(2) * u))
-          case default
-            continue
-          end select
-        end associate
-      end do
-    end if
+    do i = 1, size(drawing%bodies)
+      associate (bd => drawing%bodies(i))
+        select case (bd%kind)
+        case (body_bar)
+          do j = 1, size(bd%points) - 1
+            call line(out, "LINKS", mm(drawing%points(bd%points(j))%p), mm(drawing%points(bd%points(j + 1))%p))
+          end do
+          if (size(bd%points) > 2) call line(out, "LINKS", mm(drawing%points(bd%points(size(bd%points)))%p), &
+            mm(drawing%points(bd%points(1))%p))
+        case (body_block)
+          p = mm(drawing%points(bd%points(1))%p)
+          u = [cos(bd%angle), sin(bd%angle)] * 1.5_wp * h
+          n = [-u(2), u(1)] * 0.6_wp
+          call line(out, "LINKS", p - u - n, p + u - n)
+          call line(out, "LINKS", p + u - n, p + u + n)
+          call line(out, "LINKS", p + u + n, p - u + n)
+          call line(out, "LINKS", p - u + n, p - u - n)
+        case (body_cylinder)
+          u = [cos(bd%angle), sin(bd%angle)]
+          n = [-u(2), u(1)] * 0.6_wp * h
+          a = mm(bd%anchor)
+          b = mm(bd%anchor + bd%length * u)
+          call line(out, "LINKS", a + n, b + n)
+          call line(out, "LINKS", a - n, b - n)
+          call line(out, "LINKS", a + n, a - n)
+        case (body_rod)
+          u = [cos(bd%angle), sin(bd%angle)]
+          call line(out, "LINKS", mm(bd%anchor + bd%reach(1) * u), mm(bd%anchor + bd%reach(2) * u))
+        case default
+          continue
+        end select
+      end associate
+    end do
     ! guides on the frame
-    if (allocated(drawing%guides)) then
-      do i = 1, size(drawing%guides)
-        associate (g => drawing%guides(i))
-          u = [cos(g%angle), sin(g%angle)] * g%half_length
-          call line(out, "GUIDES", mm(g%p - u), mm(g%p + u))
-        end associate
-      end do
-    end if
+    do i = 1, size(drawing%guides)
+      associate (g => drawing%guides(i))
+        u = [cos(g%angle), sin(g%angle)] * g%half_length
+        call line(out, "GUIDES", mm(g%p - u), mm(g%p + u))
+      end associate
+    end do
     ! joints, pivots, centres of mass, with their names
     do i = 1, size(drawing%points)
       associate (pt => drawing%points(i))
@@ -155,14 +149,12 @@ contains
         end associate
       end do
     end if
-    if (allocated(drawing%moments)) then
-      do i = 1, size(drawing%moments)
-        associate (m => drawing%moments(i))
-          call text(out, "FORCES", mm(m%at) + [0.7_wp * h, -1.5_wp * h], 0.8_wp * h, trim(m%name)//" = "// &
-            short_number(m%value)//" N*m")
-        end associate
-      end do
-    end if
+    do i = 1, size(drawing%moments)
+      associate (m => drawing%moments(i))
+        call text(out, "FORCES", mm(m%at) + [0.7_wp * h, -1.5_wp * h], 0.8_wp * h, trim(m%name)//" = "// &
+          short_number(m%value)//" N*m")
+      end associate
+    end do
     call text(out, "TEXT", [lo(1), lo(2) - 4.0_wp * h], h, title)
     call pair(out, 0, "ENDSEC")
     call pair(out, 0, "EOF")

@@ -16,7 +16,7 @@ module kinetostat_svg_mechanism
     svg_text, svg_arrow, svg_polygon, coord
   use kinetostat_svg_writer, only: nice_step
   use kinetostat_label_place, only: label_boxes_t, title_attributes, text_chars
-  use kinetostat_sheet_words, only: word, unit_word
+  use kinetostat_labels, only: word => label, unit_word => unit_symbol
   use kinetostat_title_block, only: put_title_block, title_block_height
   use kinetostat_drawing, only: drawing_t, drawing_body_t, point_pivot, point_com, point_plain, body_bar, body_block, &
     body_cylinder, body_rod, force_pair, force_load, &
@@ -96,19 +96,17 @@ contains
       ymin = min(ymin, minval(py))
       ymax = max(ymax, maxval(py))
     end if
-    if (allocated(drawing%guides)) then
-      do i = 1, size(drawing%guides)
-        associate (g => drawing%guides(i))
-          do j = -1, 1, 2
-            q = turn(g%p + j * g%half_length * [cos(g%angle), sin(g%angle)], drawing%view_angle)
-            xmin = min(xmin, q(1))
-            xmax = max(xmax, q(1))
-            ymin = min(ymin, q(2))
-            ymax = max(ymax, q(2))
-          end do
-        end associate
-      end do
-    end if
+    do i = 1, size(drawing%guides)
+      associate (g => drawing%guides(i))
+        do j = -1, 1, 2
+          q = turn(g%p + j * g%half_length * [cos(g%angle), sin(g%angle)], drawing%view_angle)
+          xmin = min(xmin, q(1))
+          xmax = max(xmax, q(1))
+          ymin = min(ymin, q(2))
+          ymax = max(ymax, q(2))
+        end do
+      end associate
+    end do
     if (xmax - xmin <= 0.0_wp .and. ymax - ymin <= 0.0_wp) then
       xmin = 0.0_wp
       xmax = 1.0_wp
@@ -152,11 +150,9 @@ contains
     allocate (obst_x(0), obst_y(0))
 
     ! guides (hatched on one side)
-    if (allocated(drawing%guides)) then
-      do i = 1, size(drawing%guides)
-        call put_guide(out, drawing, i, ox, oy, len_scale, obst_x, obst_y)
-      end do
-    end if
+    do i = 1, size(drawing%guides)
+      call put_guide(out, drawing, i, ox, oy, len_scale, obst_x, obst_y)
+    end do
     ! the axes of the mechanism's frame at its origin
     origin = [ox, oy]
     do j = 1, 2
@@ -169,62 +165,60 @@ contains
     end do
     ! bodies: bars through their points (the centre of mass included), plates as the convex
     ! hull of their points
-    if (allocated(drawing%bodies)) then
-      do i = 1, size(drawing%bodies)
-        associate (b => drawing%bodies(i))
-          if (b%kind == body_bar .and. size(b%points) >= 2) then
-            call convex_hull(px(b%points), py(b%points), hx, hy)
-            if (size(hx) <= 2 .or. polygon_area(hx, hy) < 1.0_wp) then
-              ! a bar (points on one line): a light band with a dark outline between its ends
-              call line_ends(px(b%points), py(b%points), hx, hy)
-              call out%put(svg_path(svg_polyline_d(hx, hy), 'fill="none" stroke="#000000" '// &
-                'stroke-width="2.2" stroke-linecap="round" stroke-linejoin="round"'))
-              call out%put(svg_path(svg_polyline_d(hx, hy), 'fill="none" stroke="#e8e8e8" '// &
-                'stroke-width="1.4" stroke-linecap="round" stroke-linejoin="round"'))
-            else
-              call out%put(svg_polygon(hx, hy, 'class="link"'))
-            end if
-            do j = 1, size(hx)
-              call add_segment(obst_x, obst_y, [hx(j), hy(j)], [hx(modulo(j, size(hx)) + 1), hy(modulo(j, size(hx)) + 1)])
-            end do
+    do i = 1, size(drawing%bodies)
+      associate (b => drawing%bodies(i))
+        if (b%kind == body_bar .and. size(b%points) >= 2) then
+          call convex_hull(px(b%points), py(b%points), hx, hy)
+          if (size(hx) <= 2 .or. polygon_area(hx, hy) < 1.0_wp) then
+            ! a bar (points on one line): a light band with a dark outline between its ends
+            call line_ends(px(b%points), py(b%points), hx, hy)
+            call out%put(svg_path(svg_polyline_d(hx, hy), 'fill="none" stroke="#000000" '// &
+              'stroke-width="2.2" stroke-linecap="round" stroke-linejoin="round"'))
+            call out%put(svg_path(svg_polyline_d(hx, hy), 'fill="none" stroke="#e8e8e8" '// &
+              'stroke-width="1.4" stroke-linecap="round" stroke-linejoin="round"'))
+          else
+            call out%put(svg_polygon(hx, hy, 'class="link"'))
           end if
-        end associate
-      end do
-      ! hydraulic cylinders over their rods: a tube from the pivot along the axis
-      do i = 1, size(drawing%bodies)
-        associate (b => drawing%bodies(i))
-          if (b%kind == body_rod) then
-            call axis_ends(b, b%reach(1), b%reach(2), q, t)
-            call out%put(svg_line(q(1), q(2), t(1), t(2), 'stroke="#000000" stroke-width="1.5" stroke-linecap="round"'))
-            call out%put(svg_line(q(1), q(2), t(1), t(2), 'stroke="#e8e8e8" stroke-width="0.8" stroke-linecap="round"'))
-            call add_segment(obst_x, obst_y, q, t)
+          do j = 1, size(hx)
+            call add_segment(obst_x, obst_y, [hx(j), hy(j)], [hx(modulo(j, size(hx)) + 1), hy(modulo(j, size(hx)) + 1)])
+          end do
+        end if
+      end associate
+    end do
+    ! hydraulic cylinders over their rods: a tube from the pivot along the axis
+    do i = 1, size(drawing%bodies)
+      associate (b => drawing%bodies(i))
+        if (b%kind == body_rod) then
+          call axis_ends(b, b%reach(1), b%reach(2), q, t)
+          call out%put(svg_line(q(1), q(2), t(1), t(2), 'stroke="#000000" stroke-width="1.5" stroke-linecap="round"'))
+          call out%put(svg_line(q(1), q(2), t(1), t(2), 'stroke="#e8e8e8" stroke-width="0.8" stroke-linecap="round"'))
+          call add_segment(obst_x, obst_y, q, t)
+        end if
+      end associate
+    end do
+    do i = 1, size(drawing%bodies)
+      associate (b => drawing%bodies(i))
+        if (b%kind == body_cylinder) then
+          call axis_ends(b, 0.0_wp, b%length, q, t)
+          call put_tube(out, q, t, 2.3_wp)
+          call add_segment(obst_x, obst_y, q, t)
+          if (hypot(t(1) - q(1), t(2) - q(2)) > 0.0_wp) then
+            u2 = [q(2) - t(2), t(1) - q(1)] * 2.3_wp / hypot(t(1) - q(1), t(2) - q(2))
+            call add_segment(obst_x, obst_y, q + u2, t + u2)
+            call add_segment(obst_x, obst_y, q - u2, t - u2)
           end if
-        end associate
-      end do
-      do i = 1, size(drawing%bodies)
-        associate (b => drawing%bodies(i))
-          if (b%kind == body_cylinder) then
-            call axis_ends(b, 0.0_wp, b%length, q, t)
-            call put_tube(out, q, t, 2.3_wp)
-            call add_segment(obst_x, obst_y, q, t)
-            if (hypot(t(1) - q(1), t(2) - q(2)) > 0.0_wp) then
-              u2 = [q(2) - t(2), t(1) - q(1)] * 2.3_wp / hypot(t(1) - q(1), t(2) - q(2))
-              call add_segment(obst_x, obst_y, q + u2, t + u2)
-              call add_segment(obst_x, obst_y, q - u2, t - u2)
-            end if
-          end if
-        end associate
-      end do
-      do i = 1, size(drawing%bodies)
-        associate (b => drawing%bodies(i))
-          if (b%kind == body_block) then
-            call put_block(out, px(b%points(1)), py(b%points(1)), b%angle + drawing%view_angle)
-            call add_segment(obst_x, obst_y, [px(b%points(1)) - 4.0_wp, py(b%points(1))], &
-              [px(b%points(1)) + 4.0_wp, py(b%points(1))])
-          end if
-        end associate
-      end do
-    end if
+        end if
+      end associate
+    end do
+    do i = 1, size(drawing%bodies)
+      associate (b => drawing%bodies(i))
+        if (b%kind == body_block) then
+          call put_block(out, px(b%points(1)), py(b%points(1)), b%angle + drawing%view_angle)
+          call add_segment(obst_x, obst_y, [px(b%points(1)) - 4.0_wp, py(b%points(1))], &
+            [px(b%points(1)) + 4.0_wp, py(b%points(1))])
+        end if
+      end associate
+    end do
     ! joints, pivots, centres of mass
     do i = 1, n
       select case (drawing%points(i)%kind)
@@ -271,23 +265,21 @@ contains
       call boxes%place(text, label_size, px(i), py(i), 0.75_wp * pi, obst_x, obst_y, bounds, tx, ty, leader)
       call put_label(out, text, tx, ty, px(i), py(i), leader, 'class="label"', label_size)
     end do
-    if (allocated(drawing%bodies)) then
-      do i = 1, size(drawing%bodies)
-        associate (b => drawing%bodies(i))
-          if (size(b%points) == 0) cycle
-          text = trim(b%name)
-          if (b%kind == body_block) then
-            q = [px(b%points(1)), py(b%points(1))]
-          else if (size(b%points) >= 2) then
-            q = [sum(px(b%points)), sum(py(b%points))] / size(b%points)
-          else
-            cycle
-          end if
-          call boxes%place(text, label_size, q(1), q(2), 0.25_wp * pi, obst_x, obst_y, bounds, tx, ty, leader)
-          call put_label(out, text, tx, ty, q(1), q(2), leader, 'class="label" font-style="italic"', label_size)
-        end associate
-      end do
-    end if
+    do i = 1, size(drawing%bodies)
+      associate (b => drawing%bodies(i))
+        if (size(b%points) == 0) cycle
+        text = trim(b%name)
+        if (b%kind == body_block) then
+          q = [px(b%points(1)), py(b%points(1))]
+        else if (size(b%points) >= 2) then
+          q = [sum(px(b%points)), sum(py(b%points))] / size(b%points)
+        else
+          cycle
+        end if
+        call boxes%place(text, label_size, q(1), q(2), 0.25_wp * pi, obst_x, obst_y, bounds, tx, ty, leader)
+        call put_label(out, text, tx, ty, q(1), q(2), leader, 'class="label" font-style="italic"', label_size)
+      end associate
+    end do
     do j = 1, 2
       text = merge("x", "y", j == 1)
       call boxes%place(text, label_size, axis_tip(1, j), axis_tip(2, j), atan2(axis_tip(2, j) - origin(2), &
@@ -615,28 +607,24 @@ contains
       "mechanism's frame)", lang), &
       'class="label" font-weight="bold"'))
     allocate (texts(0), colours(0))
-    if (allocated(drawing%forces)) then
-      do i = 1, size(drawing%forces)
-        associate (f => drawing%forces(i))
-          a = modulo(atan2(f%f(2), f%f(1)) * rad_to_deg, 360.0_wp)
-          if (a >= 359.95_wp) a = 0.0_wp
-          text = trim(f%name)//" = "//short_number(hypot(f%f(1), f%f(2)))//" "//unit_word("N", lang)
-          if (hypot(f%f(1), f%f(2)) > 0.0_wp) text = text//" "//word("at", lang)//" "//fixed_number(a, 1)//" "// &
-            unit_word("deg", lang)
-          texts = [character(len=96) :: texts, text]
-          colours = [character(len=7) :: colours, kind_colours(f%kind)]
-        end associate
-      end do
-    end if
-    if (allocated(drawing%moments)) then
-      do i = 1, size(drawing%moments)
-        associate (m => drawing%moments(i))
-          text = trim(m%name)//" = "//short_number(m%value)//" "//unit_word("N*m", lang)
-          texts = [character(len=96) :: texts, text]
-          colours = [character(len=7) :: colours, kind_colours(m%kind)]
-        end associate
-      end do
-    end if
+    do i = 1, size(drawing%forces)
+      associate (f => drawing%forces(i))
+        a = modulo(atan2(f%f(2), f%f(1)) * rad_to_deg, 360.0_wp)
+        if (a >= 359.95_wp) a = 0.0_wp
+        text = trim(f%name)//" = "//short_number(hypot(f%f(1), f%f(2)))//" "//unit_word("N", lang)
+        if (hypot(f%f(1), f%f(2)) > 0.0_wp) text = text//" "//word("at", lang)//" "//fixed_number(a, 1)//" "// &
+          unit_word("deg", lang)
+        texts = [character(len=96) :: texts, text]
+        colours = [character(len=7) :: colours, kind_colours(f%kind)]
+      end associate
+    end do
+    do i = 1, size(drawing%moments)
+      associate (m => drawing%moments(i))
+        text = trim(m%name)//" = "//short_number(m%value)//" "//unit_word("N*m", lang)
+        texts = [character(len=96) :: texts, text]
+        colours = [character(len=7) :: colours, kind_colours(m%kind)]
+      end associate
+    end do
     ! as many columns (up to four) as the widest entry allows
     widest = 1
     do i = 1, size(texts)

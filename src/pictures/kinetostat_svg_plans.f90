@@ -10,7 +10,7 @@
 !>   the known forces, then the unknown reactions (tangential parts, then normal parts), head
 !>   to tail at one scale mu_F in N/mm; the input link's with its balancing moment.
 !> The numbers come from kinetostat_plans; labels are placed by kinetostat_label_place (no
-!> two overlap); words from kinetostat_sheet_words.
+!> two overlap); words from kinetostat_labels.
 module kinetostat_svg_plans
   use kinetostat_kinds, only: wp, pi, version_string
   use kinetostat_text, only: int_str, lower
@@ -19,7 +19,7 @@ module kinetostat_svg_plans
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_svg, only: svg_open, svg_close, svg_line, svg_rect, svg_text, svg_arrow, svg_circle, palette_colour
   use kinetostat_label_place, only: label_boxes_t, title_attributes, anchor_start
-  use kinetostat_sheet_words, only: word, unit_word
+  use kinetostat_labels, only: word => label, unit_word => unit_symbol
   use kinetostat_title_block, only: put_title_block, title_block_height
   use kinetostat_plans, only: plans_t, plan_vector_t, plan_equation_t, component_normal, component_tangential, &
     component_coriolis
@@ -177,8 +177,7 @@ contains
         call chain_tips(equations(e), images, tips)
         v = reshape([v, tips], [2, size(v, 2) + size(tips, 2)])
       end do
-      legend = word("components", lang)//": n "//word("normal", lang)//", τ "//word("tangential", lang)// &
-        ", k "//word("Coriolis", lang)//", r "//word("relative", lang)
+      legend = word("components: n normal, τ tangential, k Coriolis, r relative", lang)
       inner(4) = inner(4) - 3.0_wp
     end if
     call fit(v, inner, mu, pole)
@@ -370,7 +369,7 @@ contains
         cell = [inner(1) + cw * modulo(i - 1, columns), inner(2) + ch * ((i - 1) / columns), 0.0_wp, 0.0_wp]
         cell(3:4) = cell(1:2) + [cw, ch]
         if (index(poly%link, ",") > 0) then
-          caption = word("group", lang)//" "//trim(poly%link)
+          caption = word("Assur group", lang)//" "//trim(poly%link)
         else
           caption = word("input link", lang)//" "//trim(poly%link)
         end if

@@ -5,7 +5,7 @@ module kinetostat_run
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use kinetostat_kinds, only: wp
   use kinetostat_selfcheck, only: selfcheck_tolerance
-  use kinetostat_error, only: error_t, fatal_error, exit_geometry, exit_input
+  use kinetostat_error, only: error_t, fatal_error, exit_geometry
   use kinetostat_text, only: int_str
   use kinetostat_step_table, only: step_table_t, echo_cursor_t, echo_real_kind, echo_array_kind
   use kinetostat_deck, only: deck_source_t, release_deck_text
