@@ -319,44 +319,47 @@ contains
     type(assur_deck_t), intent(inout) :: deck
     type(error_t), allocatable, intent(out) :: error
     character(len=joint_text_length) :: given(3 * size(dyads) + 1)
-    character(len=:), allocatable :: where(:), text
+    character(len=24) :: variable(3 * size(dyads) + 1)
+    character(len=:), allocatable :: text
     character(*), parameter :: letters = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
     type(deck_context_t) :: at_line
     integer :: d, ip, other
-    allocate (character(len=24) :: where(size(given)))
     do d = 1, size(dyads)
       given(3 * d - 2:3 * d) = dyads(d)%joints
-      where(3 * d - 2:3 * d) = "dyad("//int_str(d)//")%joints"
+      variable(3 * d - 2:3 * d) = "dyad("//int_str(d)//")%joints"
     end do
     given(size(given)) = crank_joint
-    where(size(given)) = "crank_joint"
+    variable(size(given)) = "crank_joint"
     allocate (deck%joint_name(size(given)))
     do ip = 1, size(given)
-      at_line = line_context(trim(where(ip)))
+      at_line = line_context(trim(variable(ip)))
       text = trim(adjustl(given(ip)))
       if (len(text) == 0) then
         deck%joint_name(ip) = "J"//trim(deck%pair_name(ip)(2:))
         cycle
       end if
-      call require_rule(at_line, trim(where(ip)), len(text) <= joint_name_length, "longer than "// &
-        int_str(joint_name_length)//" characters", error); if (allocated(error)) return
-      call require_rule(at_line, trim(where(ip)), index(letters, text(1:1)) > 0 .and. &
+      call require_rule(at_line, trim(variable(ip)), len(text) <= joint_name_length, "longer than "// &
+        int_str(joint_name_length)//" characters", error)
+      if (allocated(error)) return
+      call require_rule(at_line, trim(variable(ip)), index(letters, text(1:1)) > 0 .and. &
         verify(text, letters//"0123456789_") == 0, "a joint's name is a letter followed by letters, digits or _", &
-        error); if (allocated(error)) return
-      call require_rule(at_line, trim(where(ip)), .not. ((text(1:1) == "S" .or. text(1:1) == "s") .and. &
+        error)
+      if (allocated(error)) return
+      call require_rule(at_line, trim(variable(ip)), .not. ((text(1:1) == "S" .or. text(1:1) == "s") .and. &
         len(text) > 1 .and. verify(text(2:), "0123456789") == 0), "'"//text//"' is the name of a centre "// &
-        "of mass", error); if (allocated(error)) return
+        "of mass", error)
+      if (allocated(error)) return
       deck%joint_name(ip) = text
     end do
     do ip = 2, size(given)
       do other = 1, ip - 1
-        call require_rule(at_line, trim(where(ip)), lower(trim(deck%joint_name(ip))) /= lower(trim(deck%joint_name(other))), &
-          "'"//trim(deck%joint_name(ip))//"' names two joints (also "//trim(where(other))//")", error)
+        call require_rule(at_line, trim(variable(ip)), lower(trim(deck%joint_name(ip))) /= lower(trim(deck%joint_name(other))), &
+          "'"//trim(deck%joint_name(ip))//"' names two joints (also "//trim(variable(other))//")", error)
         if (allocated(error)) return
       end do
     end do
   contains
-    !> The context with the line where `name` is first assigned (as "deck.nml:17"), if found.
+    !> The context with the line variable `name` is first assigned (as "deck.nml:17"), if found.
     pure function line_context(name) result(c)
       character(*), intent(in) :: name
       type(deck_context_t) :: c

@@ -129,6 +129,8 @@ contains
     integer, intent(in) :: k
     type(plans_t), intent(out) :: plans
     real(wp), allocatable :: omega(:), eps(:), v0(:, :), a0(:, :), none(:, :)
+    type(slide_t), allocatable :: slides(:)
+    character(len=:), allocatable :: driver
     integer :: nl, i
     nl = size(topo%links)
     allocate (omega(nl), eps(nl))
@@ -142,21 +144,13 @@ contains
     call solve_fields(topo, drawing, table, k, omega, eps, .true., v0, a0, plans%acceleration_residual)
     call point_images(topo, drawing, omega, eps, v0, .false., plans%velocities)
     call point_images(topo, drawing, omega, eps, a0, .true., plans%accelerations)
-    block
-      character(len=:), allocatable :: driver
-      driver = ""
-      if (allocated(table%driver)) driver = table%driver
-      call groups_of(topo, drawing, slides_of(topo, drawing, table, k, omega), driver, plans%groups)
-    end block
+    driver = ""
+    if (allocated(table%driver)) driver = table%driver
+    call slides_of(topo, drawing, table, k, omega, slides)
+    call groups_of(topo, drawing, slides, driver, plans%groups)
     call equations_of(topo, drawing, table, k, omega, eps, v0, plans)
-    block
-      character(len=:), allocatable :: driver
-      driver = ""
-      if (allocated(table%driver)) driver = table%driver
-      call polygons_of(topo, drawing, driver, plans%polygons)
-      call group_polygons_of(topo, drawing, table, k, slides_of(topo, drawing, table, k, omega), driver, plans%groups, &
-        plans%group_polygons)
-    end block
+    call polygons_of(topo, drawing, driver, plans%polygons)
+    call group_polygons_of(topo, drawing, table, k, slides, driver, plans%groups, plans%group_polygons)
     call lever_of(topo, drawing, table, k, omega, v0, plans)
   end subroutine build_plans
 
@@ -273,7 +267,7 @@ contains
       end if
     end do
     ! sliders: guides (on a link, or on the frame) and blocks sliding along a link
-    slides = slides_of(topo, drawing, table, k, omega)
+    call slides_of(topo, drawing, table, k, omega, slides)
     do j = 1, size(slides)
       call append_slide(a, b, slide_row(slides(j)%m, slides(j)%g, slides(j)%p, slides(j)%u))
     end do
@@ -326,13 +320,13 @@ contains
   !> The sliders of the step, in the order of the equations: guides (on a link, or on the
   !> frame) with the links listing their point, a rod turning with a cylinder's link along
   !> its guide, and blocks sliding along a link.
-  pure function slides_of(topo, drawing, table, k, omega) result(slides)
+  pure subroutine slides_of(topo, drawing, table, k, omega, slides)
     type(sketch_t), intent(in) :: topo
     type(drawing_t), intent(in) :: drawing
     type(step_table_t), intent(in) :: table
     integer, intent(in) :: k
     real(wp), intent(in) :: omega(:)
-    type(slide_t), allocatable :: slides(:)
+    type(slide_t), allocatable, intent(out) :: slides(:)
     integer :: nl, i, j, m, g, ip
     real(wp) :: p(2), u(2), ang, q(2)
     character(len=16) :: qname
@@ -392,7 +386,7 @@ contains
         if (q /= g .and. lists(topo, q, name)) listed_by_any = .true.
       end do
     end function listed_by_any
-  end function slides_of
+  end subroutine slides_of
 
   !> Whether slide s is a pair of its own: a guide of the frame or of a link whose point
   !> several links list belongs to the block among them (a bar through the block's joint
@@ -492,16 +486,16 @@ contains
     do
       found = .false.
       outer: do i = 1, nl
-        if (solved(i)) cycle
-        do j = i + 1, nl
-          if (solved(j)) cycle
-          if (count(pair_of(i, j)) == 0) cycle
-          if (to_solved(i) /= 1 .or. to_solved(j) /= 1) cycle
+        if (solved(i)) cycle outer
+        inner: do j = i + 1, nl
+          if (solved(j)) cycle inner
+          if (count(pair_of(i, j)) == 0) cycle inner
+          if (to_solved(i) /= 1 .or. to_solved(j) /= 1) cycle inner
           groups = [groups, plan_group_t([i, j], .false.)]
           solved([i, j]) = .true.
           found = .true.
           exit outer
-        end do
+        end do inner
       end do outer
       if (.not. found) exit
     end do
@@ -544,7 +538,7 @@ contains
     type(plans_t), intent(inout) :: plans
     type(slide_t), allocatable :: slides(:)
     logical, allocatable :: known(:), fresh(:), written(:), member(:)
-    integer :: n, ip, i, s, q, gr
+    integer :: n, ip, s, q, gr
     logical :: any_ready, relaxed
     n = size(plans%accelerations)
     allocate (plans%equations(0), known(n), fresh(n))
@@ -554,7 +548,7 @@ contains
         known(ip) = any(topo%pivots == plans%accelerations(ip)%name)
       end do
     end if
-    slides = slides_of(topo, drawing, table, k, omega)
+    call slides_of(topo, drawing, table, k, omega, slides)
     allocate (written(size(slides)), member(size(topo%links)))
     written = .false.
     do s = 1, size(slides)
