@@ -11,7 +11,8 @@
       - every vector equation of the acceleration plan (acceleration_equations): its normal
         component is -omega^2 (P - Q), its tangential eps x (P - Q) (omega, eps of its link,
         P, Q the point and the known point it starts from, all from the CSV), its Coriolis
-        component 2 omega x v_rel (v_rel from the velocity plan), and the image of Q plus
+        component 2 omega x v_rel (v_rel from the velocity plan; "reverse" equations: a point
+        of the guide's link from the slider's, 2 omega_slider x v_rel), and the image of Q plus
         its components is the image of P (relative 1e-9 of the largest vector involved);
       - with --polygons: every force polygon (of the links, link_force_plans, and of the
         groups, force_plans) closes (closure and the vectors' sum <= 1e-9 of its largest
@@ -93,6 +94,13 @@ def main():
                     want = (-om * om * r[0], -om * om * r[1])
                 elif v["kind"] == "t":
                     want = (-ep * r[1], ep * r[0])
+                elif eq.get("reverse"):
+                    # the guide's point relative to the slider (at `from`), in the slider's turning frame
+                    slider = eq["slider"]
+                    om_m = col["omega" + slider] if "omega" + slider in col else 0.0
+                    vg = (vimg[point][0] + om * r[1], vimg[point][1] - om * r[0])
+                    vrel = (vg[0] - vimg[start][0], vg[1] - vimg[start][1])
+                    want = (-2 * om_m * vrel[1], 2 * om_m * vrel[0])
                 else:
                     vg = (vimg[start][0] - om * r[1], vimg[start][1] + om * r[0])
                     vrel = (vimg[point][0] - vg[0], vimg[point][1] - vg[1])

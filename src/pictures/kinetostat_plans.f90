@@ -57,6 +57,10 @@ module kinetostat_plans
     character(len=16) :: slider = ""
     !> The components in drawing order, m/s^2.
     type(plan_vector_t), allocatable :: vectors(:)
+    !> A slider's equation the other way round: `point` is a point of the guide's link
+    !> `link`, `from` the slider's point; the Coriolis term is the guide's point's relative
+    !> to the slider, 2 omega_slider x (v_link - v_slider) at `from`.
+    logical :: reverse = .false.
   end type plan_equation_t
 
   !> An Assur group (or the input link): its links (indices in the topology).
@@ -538,7 +542,7 @@ contains
     type(plans_t), intent(inout) :: plans
     type(slide_t), allocatable :: slides(:)
     logical, allocatable :: known(:), fresh(:), written(:), member(:)
-    integer :: n, ip, s, q, gr
+    integer :: n, ip, s, q, gr, t
     logical :: any_ready, relaxed
     n = size(plans%accelerations)
     allocate (plans%equations(0), known(n), fresh(n))
@@ -577,8 +581,23 @@ contains
           if (ip == 0) cycle
           if (.not. known(ip)) cycle
           q = known_point(slides(s)%g, ip)
-          if (q == 0) cycle
-          plans%equations = [plans%equations, sliding(s, q, ip)]
+          if (q == 0) then
+            ! the guide's link has no known point yet: its point from the slider's, the other
+            ! way round (a point of the guide's link = the slider's point + Coriolis + relative
+            ! + its rotation about the slider's point)
+            q = unknown_point(slides(s)%g)
+            if (q == 0) cycle
+            plans%equations = [plans%equations, reversed(s, ip, q)]
+            fresh(q) = .true.
+            do t = 1, size(slides)
+              if (written(t) .or. slides(t)%g /= 0 .or. slides(t)%name /= plans%accelerations(q)%name) cycle
+              plans%equations = [plans%equations, sliding(t, 0, q)]
+              written(t) = .true.
+              exit
+            end do
+          else
+            plans%equations = [plans%equations, sliding(s, q, ip)]
+          end if
           written(s) = .true.
           any_ready = .true.
         end do
@@ -687,13 +706,66 @@ contains
         return
       end do
     end function known_point
+    !> Index of the first image that is a point of link i (not a sliding contact) and not
+    !> known (0: none).
+    pure integer function unknown_point(i)
+      integer, intent(in) :: i
+      integer :: t
+      unknown_point = 0
+      do t = 1, n
+        if (known(t)) cycle
+        associate (tname => plans%accelerations(t)%name)
+          if (.not. lists(topo, i, trim(tname)) .or. sliding_on(topo, i, trim(tname))) cycle
+        end associate
+        unknown_point = t
+        return
+      end do
+    end function unknown_point
+    !> The name of the point of link `link` at point `point` ("B3"; "J21_3" when the point's
+    !> name ends in a digit).
+    pure function coincident(point, link) result(text)
+      character(*), intent(in) :: point, link
+      character(len=:), allocatable :: text
+      text = point
+      if (verify(point(len(point):), "0123456789") == 0) text = text//"_"
+      text = text//link
+    end function coincident
+    !> Slider s the other way round: point t of its guide's link g from the slider's known
+    !> point ip, a_t = a_P + a_P<g>^k + a_P<g>^r + a_tP<g>^n + a_tP<g>^tau, with the Coriolis
+    !> term 2 omega_m x (v_g(P) - v_m(P)) of g's point relative to the slider m.
+    pure function reversed(s, ip, t) result(eq)
+      integer, intent(in) :: s, ip, t
+      type(plan_equation_t) :: eq
+      real(wp) :: vrel(2), cor(2), r(2), nrm(2), tng(2)
+      integer :: m, g
+      character(len=:), allocatable :: pg
+      m = slides(s)%m
+      g = slides(s)%g
+      pg = coincident(trim(plans%accelerations(ip)%name), trim(topo%links(g)%name))
+      vrel = field(v0(:, g), omega(g), 0.0_wp, slides(s)%p, .false.) - field(v0(:, m), omega(m), 0.0_wp, &
+        slides(s)%p, .false.)
+      cor = 2.0_wp * omega(m) * [-vrel(2), vrel(1)]
+      r = drawing%at(trim(plans%accelerations(t)%name)) - drawing%at(trim(plans%accelerations(ip)%name))
+      nrm = -omega(g)**2 * r
+      tng = eps(g) * [-r(2), r(1)]
+      eq%point = plans%accelerations(t)%name
+      eq%link = topo%links(g)%name
+      eq%from = plans%accelerations(ip)%name
+      eq%slider = topo%links(m)%name
+      eq%reverse = .true.
+      eq%vectors = [plan_vector_t("a_"//pg//"^k", cor, component_coriolis), plan_vector_t("a_"//pg//"^r", &
+        plans%accelerations(t)%v - plans%accelerations(ip)%v - cor - nrm - tng, component_relative), &
+        plan_vector_t("a_"//trim(plans%accelerations(t)%name)//pg//"^n", nrm, component_normal), &
+        plan_vector_t("a_"//trim(plans%accelerations(t)%name)//pg//"^τ", tng, component_tangential)]
+    end function reversed
     !> Names of the normal and tangential components of P about Q on link i (`mid` the
     !> coincident point's link for a slider): a_PQ^n, or a_P^n when Q is a pivot.
     pure function relative_name(ip, q, mid) result(text)
       integer, intent(in) :: ip, q
       character(*), intent(in) :: mid
       character(len=:), allocatable :: text
-      text = "a_"//trim(plans%accelerations(ip)%name)//mid
+      text = "a_"//mid
+      if (len(mid) == 0) text = "a_"//trim(plans%accelerations(ip)%name)
       if (allocated(topo%pivots)) then
         if (any(topo%pivots == plans%accelerations(q)%name)) return
       end if
@@ -723,7 +795,7 @@ contains
       g = slides(s)%g
       rest = 0.0_wp
       if (g > 0) then
-        eq = rotation(g, q, ip, trim(topo%links(g)%name))
+        eq = rotation(g, q, ip, coincident(trim(plans%accelerations(ip)%name), trim(topo%links(g)%name)))
         eq%link = topo%links(g)%name
         vrel = field(v0(:, m), omega(m), 0.0_wp, slides(s)%p, .false.) - field(v0(:, g), omega(g), 0.0_wp, &
           slides(s)%p, .false.)
@@ -1182,7 +1254,9 @@ contains
     do i = 1, size(plans%equations)
       associate (eq => plans%equations(i))
         line = '    {"point": "'//trim(eq%point)//'", "link": "'//trim(eq%link)//'", "from": "'//trim(eq%from)// &
-          '", "slider": "'//trim(eq%slider)//'", "vectors": ['
+          '", "slider": "'//trim(eq%slider)//'", '
+        if (eq%reverse) line = line//'"reverse": true, '
+        line = line//'"vectors": ['
         do j = 1, size(eq%vectors)
           if (j > 1) line = line//", "
           line = line//vector_json(eq%vectors(j))
