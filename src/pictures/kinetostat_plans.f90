@@ -1002,10 +1002,15 @@ contains
     type(force_polygon_t) :: poly
     type(plan_vector_t), allocatable :: tangential(:), closing(:)
     logical, allocatable :: member(:), before(:)
-    integer :: gr, q, i, j, a, b, pass
+    integer :: gr, q, i, j, a, b, pass, crank, actuator, cylinder
     real(wp) :: largest
     logical :: take
     allocate (polygons(0), member(size(topo%links)), before(0:size(topo%links)))
+    ! a cylinder drive: the cylinder and its rod are one body of the group (their pair is
+    ! the input)
+    call driver_links(topo, drawing, driver, crank, actuator)
+    cylinder = 0
+    if (actuator > 0) cylinder = guide_link(topo, actuator)
     if (.not. allocated(drawing%forces)) return
     before = .false.
     do gr = size(groups), 1, -1
@@ -1119,22 +1124,33 @@ contains
       real(wp), intent(in) :: at(2)
       logical, intent(out) :: found
       real(wp), intent(out) :: p(2)
-      integer :: t, o
+      integer :: t, o, body, own
       found = .false.
       p = 0.0_wp
-      do t = 1, size(topo%links(l)%points)
-        associate (pname => topo%links(l)%points(t))
-          if (drawing%point_index(trim(pname)) == 0 .or. sliding_on(topo, l, trim(pname))) cycle
-          if (norm2(drawing%at(trim(pname)) - at) <= 1.0e-9_wp * (1.0_wp + norm2(at))) cycle
-          do o = 1, size(topo%links)
-            if (o == l .or. .not. member(o)) cycle
-            if (lists(topo, o, trim(pname)) .and. .not. sliding_on(topo, o, trim(pname))) then
-              found = .true.
-              p = drawing%at(trim(pname))
-              return
-            end if
-          end do
-        end associate
+      ! the link, and the other half of a cylinder drive (one body with it)
+      do own = 1, 2
+        body = l
+        if (own == 2) then
+          body = 0
+          if (l == actuator .and. cylinder > 0) body = cylinder
+          if (l == cylinder .and. actuator > 0) body = actuator
+          if (body == 0) return
+          if (.not. member(body)) return
+        end if
+        do t = 1, size(topo%links(body)%points)
+          associate (pname => topo%links(body)%points(t))
+            if (drawing%point_index(trim(pname)) == 0 .or. sliding_on(topo, body, trim(pname))) cycle
+            if (norm2(drawing%at(trim(pname)) - at) <= 1.0e-9_wp * (1.0_wp + norm2(at))) cycle
+            do o = 1, size(topo%links)
+              if (o == l .or. o == body .or. .not. member(o)) cycle
+              if (lists(topo, o, trim(pname)) .and. .not. sliding_on(topo, o, trim(pname))) then
+                found = .true.
+                p = drawing%at(trim(pname))
+                return
+              end if
+            end do
+          end associate
+        end do
       end do
     end subroutine inner_joint
   end subroutine group_polygons_of
