@@ -146,14 +146,7 @@ contains
     !> d2 th / d phi1^2.
     real(wp), intent(in) :: eq
     type(link_state_t) :: ls
-    ls%o = o
-    ls%th = th
-    ls%vo = vo
-    ls%u = u
-    ls%ao = ao
-    ls%eq = eq
-    ls%cos_th = cos(th)
-    ls%sin_th = sin(th)
+    ls = link_state_t(o=o, th=th, vo=vo, u=u, ao=ao, eq=eq, cos_th=cos(th), sin_th=sin(th))
   end function link_frame
 
   !> A point given in a link's coordinates `r` (m), with its analogues.

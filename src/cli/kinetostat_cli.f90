@@ -216,7 +216,7 @@ contains
       else if (args%sweep) then
         call sweep_deck(args, out, warnings, error)
       else if (args%structure) then
-        call structure_of_deck(args%deck, args%options%lang, out, error)
+        call structure_of_deck(args, out, error)
       else if (args%balance) then
         call balance_deck(args, out, error)
       else
@@ -423,21 +423,14 @@ contains
     type(text_buffer_t), intent(inout) :: out
     type(error_t), allocatable, intent(out) :: error
     type(deck_source_t) :: source, balanced
-    character(len=:), allocatable :: group
     type(assur_mechanism_t) :: mech
     type(override_t), allocatable :: overrides(:)
     type(text_buffer_t) :: report
     type(step_table_t) :: before, after
     integer :: i
-    call load_deck(args%deck, source, error)
+    call load_group_deck(args%deck, "assur", "balance works on &assur decks (the generic engine, a crank and its "// &
+      "dyads); model the mechanism as one (e.g. data/assur_pr3207.nml for &pr3207)", source, error)
     if (allocated(error)) return
-    call read_group_name(source, group, error)
-    if (allocated(error)) return
-    if (group /= "assur") then
-      call fatal_error(error, exit_input, source%path//": &"//group//": balance works on &assur decks (the generic "// &
-        "engine, a crank and its dyads); model the mechanism as one (e.g. data/assur_pr3207.nml for &pr3207)")
-      return
-    end if
     call mech%read_deck(source, error)
     if (allocated(error)) return
     if (mech%deck%mech%drive_dyad > 0 .and. args%balance_method /= balance_full) then
@@ -664,27 +657,36 @@ contains
   end subroutine blame_override
 
   !> `kinetostat structure DECK`: the structural analysis of a `&linkage` deck.
-  subroutine structure_of_deck(path, lang, out, error)
-    !> Deck path.
-    character(*), intent(in) :: path
-    !> lang_en or lang_ru.
-    integer, intent(in) :: lang
-    !> Where the text goes.
+  subroutine structure_of_deck(args, out, error)
+    type(cli_args_t), intent(in) :: args
     type(text_buffer_t), intent(inout) :: out
     type(error_t), allocatable, intent(out) :: error
     type(deck_source_t) :: source
+    call load_group_deck(args%deck, "linkage", "structure: only &linkage decks have a structural analysis (the "// &
+      "others are fixed mechanisms or hand-decomposed dyads)", source, error)
+    if (allocated(error)) return
+    call linkage_structure_text(source, args%options%lang, out, error)
+  end subroutine structure_of_deck
+
+  !> The deck at `path`, which must be of group `wanted`; otherwise an input error naming the
+  !> deck and its group with `why`.
+  subroutine load_group_deck(path, wanted, why, source, error)
+    !> Deck path.
+    character(*), intent(in) :: path
+    !> The group the command works on.
+    character(*), intent(in) :: wanted
+    !> What the command takes, for the message.
+    character(*), intent(in) :: why
+    !> The deck.
+    type(deck_source_t), intent(out) :: source
+    type(error_t), allocatable, intent(out) :: error
     character(len=:), allocatable :: group
     call load_deck(path, source, error)
     if (allocated(error)) return
     call read_group_name(source, group, error)
     if (allocated(error)) return
-    if (group /= "linkage") then
-      call fatal_error(error, exit_input, source%path//": &"//group//": structure: only &linkage decks have a "// &
-        "structural analysis (the others are fixed mechanisms or hand-decomposed dyads)")
-      return
-    end if
-    call linkage_structure_text(source, lang, out, error)
-  end subroutine structure_of_deck
+    if (group /= wanted) call fatal_error(error, exit_input, source%path//": &"//group//": "//why)
+  end subroutine load_group_deck
 
   !> The commented template deck of a kind, or a preset of the generic engine.
   subroutine write_template(kind, out, error)

@@ -7,7 +7,7 @@ module kinetostat_deck
   use kinetostat_kinds, only: wp
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_error, only: error_t, fatal_error, exit_input
-  use kinetostat_text, only: real_str, int_str, int64_str, number_str, lower, printable
+  use kinetostat_text, only: real_str, int_str, int64_str, number_str, lower, printable, clipped
   use kinetostat_deck_reader, only: read_bytes_limited, read_ok, read_too_long
   implicit none
   private
@@ -1117,7 +1117,7 @@ contains
       end if
     end if
     call fatal_error(error, exit_input, ctx%path//":"//int_str(self%bad)//": &"//ctx%group//": "// &
-      clipped(text)//": "//reason)
+      clipped(text, 60)//": "//reason)
   end subroutine probe_report
 
   !> Whether an assignment's text without '=' starts with a variable's name followed by a
@@ -1363,17 +1363,6 @@ contains
     end if
   end function strip_comment
 
-  !> At most 60 characters of a text ("..." when cut).
-  pure function clipped(text) result(short)
-    character(*), intent(in) :: text
-    character(len=:), allocatable :: short
-    if (len(text) > 60) then
-      short = text(1:57)//"..."
-    else
-      short = text
-    end if
-  end function clipped
-
   !> Start columns of the assignments on a deck line ("name =", "name(2) =", "a(1)%b ="),
   !> outside quotes and comments; a group line's '&name' is not one.
   pure function assignment_starts(line) result(starts)
@@ -1560,7 +1549,7 @@ contains
     end if
     if (len(who) == 0) who = "(no variable yet)"
     call fatal_error(error, exit_input, source%path//":"//int_str(at)//": &"//group//": "// &
-      clipped(printable(who))//": "//reason)
+      clipped(printable(who), 60)//": "//reason)
   end subroutine syntax_failure
 
   !> The name with its subscripts and components at the end of `text` (trailing blanks and

@@ -3,6 +3,7 @@
 !> (ИСХОДНЫЕ ДАННЫЕ, РЕЗУЛЬТАТЫ РАСЧЕТА, ...). Mechanism-specific headings live in each
 !> mechanism's layout module.
 module kinetostat_labels
+  use kinetostat_text, only: starts_with
   implicit none
   private
   public :: lang_en, lang_ru, lang_from_name, label, phrase, echo_name, unit_symbol
@@ -11,6 +12,8 @@ module kinetostat_labels
   integer, parameter :: lang_en = 1
   !> Language: Russian (UTF-8).
   integer, parameter :: lang_ru = 2
+  !> The languages' names as --lang takes them, in the order of their codes.
+  character(*), parameter :: lang_names(*) = [character(len=2) :: "en", "ru"]
 
 contains
 
@@ -18,14 +21,7 @@ contains
   pure integer function lang_from_name(name)
     !> Name given with --lang.
     character(*), intent(in) :: name
-    select case (name)
-    case ("en")
-      lang_from_name = lang_en
-    case ("ru")
-      lang_from_name = lang_ru
-    case default
-      lang_from_name = 0
-    end select
+    lang_from_name = findloc(lang_names, name, dim=1)
   end function lang_from_name
 
   !> A shared label in language `lang`; `english` is both the key and the English text.
@@ -403,12 +399,6 @@ contains
     ! a structural unit: "II(2,3)  DYAD (GROUP OF CLASS II, ORDER 2), KIND RRR"
     if (index(text, "  INPUT LINK(S)") > 0 .or. index(text, "  DYAD (GROUP") > 0 .or. &
         index(text, "  GROUP OF ") > 0) is_linkage_echo = .true.
-  contains
-    pure logical function starts_with(line, start)
-      character(*), intent(in) :: line, start
-      starts_with = .false.
-      if (len(line) >= len(start)) starts_with = line(1:len(start)) == start
-    end function starts_with
   end function is_linkage_echo
 
   !> A general linkage's echo line in Russian, in the words of kinetostat structure --lang ru.

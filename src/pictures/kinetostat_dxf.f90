@@ -19,6 +19,13 @@ module kinetostat_dxf
   !> The layers and their colours (AutoCAD colour index).
   character(*), parameter :: layer_names(*) = [character(len=6) :: "LINKS", "JOINTS", "GUIDES", "FORCES", "TEXT"]
   integer, parameter :: layer_colours(*) = [7, 5, 8, 1, 3]
+  !> The file's head up to the layer table: group codes and their values (R12, units mm).
+  integer, parameter :: head_codes(*) = [0, 2, 9, 1, 9, 70, 0, 0, 2, 0, 2, 70]
+  character(*), parameter :: head_values(*) = [character(len=9) :: "SECTION", "HEADER", "$ACADVER", "AC1009", &
+    "$INSUNITS", "4", "ENDSEC", "SECTION", "TABLES", "TABLE", "LAYER", "5"]
+  !> After the layer table, the start of the entities.
+  integer, parameter :: entities_codes(*) = [0, 0, 0, 2]
+  character(*), parameter :: entities_values(*) = [character(len=8) :: "ENDTAB", "ENDSEC", "SECTION", "ENTITIES"]
 
 contains
 
@@ -51,18 +58,9 @@ contains
     fscale = 0.0_wp
     if (fmax > 0.0_wp) fscale = 0.25_wp * size_mm / fmax
 
-    call pair(out, 0, "SECTION")
-    call pair(out, 2, "HEADER")
-    call pair(out, 9, "$ACADVER")
-    call pair(out, 1, "AC1009")
-    call pair(out, 9, "$INSUNITS")
-    call pair(out, 70, "4")
-    call pair(out, 0, "ENDSEC")
-    call pair(out, 0, "SECTION")
-    call pair(out, 2, "TABLES")
-    call pair(out, 0, "TABLE")
-    call pair(out, 2, "LAYER")
-    call pair(out, 70, "5")
+    do i = 1, size(head_codes)
+      call pair(out, head_codes(i), trim(head_values(i)))
+    end do
     do i = 1, size(layer_names)
       call pair(out, 0, "LAYER")
       call pair(out, 2, trim(layer_names(i)))
@@ -70,10 +68,9 @@ contains
       call pair(out, 62, short_int(layer_colours(i)))
       call pair(out, 6, "CONTINUOUS")
     end do
-    call pair(out, 0, "ENDTAB")
-    call pair(out, 0, "ENDSEC")
-    call pair(out, 0, "SECTION")
-    call pair(out, 2, "ENTITIES")
+    do i = 1, size(entities_codes)
+      call pair(out, entities_codes(i), trim(entities_values(i)))
+    end do
     ! bodies
     do i = 1, size(drawing%bodies)
       associate (bd => drawing%bodies(i))
@@ -190,16 +187,24 @@ contains
     t = fixed_number(x, 6)
   end function num
 
+  !> The head of an entity: its kind, layer and first point (z = 0).
+  pure subroutine entity(out, kind, layer, p)
+    type(text_buffer_t), intent(inout) :: out
+    character(*), intent(in) :: kind, layer
+    real(wp), intent(in) :: p(2)
+    call pair(out, 0, kind)
+    call pair(out, 8, layer)
+    call pair(out, 10, num(p(1)))
+    call pair(out, 20, num(p(2)))
+    call pair(out, 30, "0.0")
+  end subroutine entity
+
   !> LINE from a to b on `layer`.
   pure subroutine line(out, layer, a, b)
     type(text_buffer_t), intent(inout) :: out
     character(*), intent(in) :: layer
     real(wp), intent(in) :: a(2), b(2)
-    call pair(out, 0, "LINE")
-    call pair(out, 8, layer)
-    call pair(out, 10, num(a(1)))
-    call pair(out, 20, num(a(2)))
-    call pair(out, 30, "0.0")
+    call entity(out, "LINE", layer, a)
     call pair(out, 11, num(b(1)))
     call pair(out, 21, num(b(2)))
     call pair(out, 31, "0.0")
@@ -210,11 +215,7 @@ contains
     type(text_buffer_t), intent(inout) :: out
     character(*), intent(in) :: layer
     real(wp), intent(in) :: c(2), r
-    call pair(out, 0, "CIRCLE")
-    call pair(out, 8, layer)
-    call pair(out, 10, num(c(1)))
-    call pair(out, 20, num(c(2)))
-    call pair(out, 30, "0.0")
+    call entity(out, "CIRCLE", layer, c)
     call pair(out, 40, num(r))
   end subroutine circle
 
@@ -223,11 +224,7 @@ contains
     type(text_buffer_t), intent(inout) :: out
     character(*), intent(in) :: layer, value
     real(wp), intent(in) :: p(2), h
-    call pair(out, 0, "TEXT")
-    call pair(out, 8, layer)
-    call pair(out, 10, num(p(1)))
-    call pair(out, 20, num(p(2)))
-    call pair(out, 30, "0.0")
+    call entity(out, "TEXT", layer, p)
     call pair(out, 40, num(h))
     call pair(out, 1, value)
   end subroutine text

@@ -46,6 +46,9 @@ module kinetostat_svg_mechanism
   !> Colours of the force kinds (pair, load, weight, inertia).
   character(*), parameter :: kind_colours(*) = [character(len=7) :: "#d62728", "#2ca02c", "#8c564b", "#1f77b4"]
 
+  !> The order the bodies are drawn in (later ones over earlier ones).
+  integer, parameter :: body_order(*) = [body_bar, body_rod, body_cylinder, body_block]
+
 contains
 
   !> The sheet of the mechanism at row `k` of `table`, drawn from `drawing`, its words in
@@ -69,7 +72,7 @@ contains
     character(len=:), allocatable :: line, text
     type(label_boxes_t) :: boxes
     logical :: leader
-    integer :: i, j, n, nf, nm
+    integer :: i, j, n, nf, nm, pass
 
     n = 0
     if (allocated(drawing%points)) n = size(drawing%points)
@@ -163,61 +166,51 @@ contains
         axis_tip(2, j), "#555555", 0.2_wp, 2.0_wp))
       call add_segment(obst_x, obst_y, origin, axis_tip(:, j))
     end do
-    ! bodies: bars through their points (the centre of mass included), plates as the convex
-    ! hull of their points
-    do i = 1, size(drawing%bodies)
-      associate (b => drawing%bodies(i))
-        if (b%kind == body_bar .and. size(b%points) >= 2) then
-          call convex_hull(px(b%points), py(b%points), hx, hy)
-          if (size(hx) <= 2 .or. polygon_area(hx, hy) < 1.0_wp) then
-            ! a bar (points on one line): a light band with a dark outline between its ends
-            call line_ends(px(b%points), py(b%points), hx, hy)
-            call out%put(svg_path(svg_polyline_d(hx, hy), 'fill="none" stroke="#000000" '// &
-              'stroke-width="2.2" stroke-linecap="round" stroke-linejoin="round"'))
-            call out%put(svg_path(svg_polyline_d(hx, hy), 'fill="none" stroke="#e8e8e8" '// &
-              'stroke-width="1.4" stroke-linecap="round" stroke-linejoin="round"'))
-          else
-            call out%put(svg_polygon(hx, hy, 'class="link"'))
-          end if
-          do j = 1, size(hx)
-            call add_segment(obst_x, obst_y, [hx(j), hy(j)], [hx(modulo(j, size(hx)) + 1), hy(modulo(j, size(hx)) + 1)])
-          end do
-        end if
-      end associate
-    end do
-    ! hydraulic cylinders over their rods: a tube from the pivot along the axis
-    do i = 1, size(drawing%bodies)
-      associate (b => drawing%bodies(i))
-        if (b%kind == body_rod) then
-          call axis_ends(b, b%reach(1), b%reach(2), q, t)
-          call out%put(svg_line(q(1), q(2), t(1), t(2), 'stroke="#000000" stroke-width="1.5" stroke-linecap="round"'))
-          call out%put(svg_line(q(1), q(2), t(1), t(2), 'stroke="#e8e8e8" stroke-width="0.8" stroke-linecap="round"'))
-          call add_segment(obst_x, obst_y, q, t)
-        end if
-      end associate
-    end do
-    do i = 1, size(drawing%bodies)
-      associate (b => drawing%bodies(i))
-        if (b%kind == body_cylinder) then
-          call axis_ends(b, 0.0_wp, b%length, q, t)
-          call put_tube(out, q, t, 2.3_wp)
-          call add_segment(obst_x, obst_y, q, t)
-          if (hypot(t(1) - q(1), t(2) - q(2)) > 0.0_wp) then
-            u2 = [q(2) - t(2), t(1) - q(1)] * 2.3_wp / hypot(t(1) - q(1), t(2) - q(2))
-            call add_segment(obst_x, obst_y, q + u2, t + u2)
-            call add_segment(obst_x, obst_y, q - u2, t - u2)
-          end if
-        end if
-      end associate
-    end do
-    do i = 1, size(drawing%bodies)
-      associate (b => drawing%bodies(i))
-        if (b%kind == body_block) then
-          call put_block(out, px(b%points(1)), py(b%points(1)), b%angle + drawing%view_angle)
-          call add_segment(obst_x, obst_y, [px(b%points(1)) - 4.0_wp, py(b%points(1))], &
-            [px(b%points(1)) + 4.0_wp, py(b%points(1))])
-        end if
-      end associate
+    ! bodies in drawing order: bars through their points (the centre of mass included) and
+    ! plates as the convex hull of their points; rods, and the hydraulic cylinders over them
+    ! (a tube from the pivot along the axis); blocks
+    do pass = 1, size(body_order)
+      do i = 1, size(drawing%bodies)
+        associate (b => drawing%bodies(i))
+          if (b%kind /= body_order(pass)) cycle
+          select case (b%kind)
+          case (body_bar)
+            if (size(b%points) < 2) cycle
+            call convex_hull(px(b%points), py(b%points), hx, hy)
+            if (size(hx) <= 2 .or. polygon_area(hx, hy) < 1.0_wp) then
+              ! a bar (points on one line): a light band with a dark outline between its ends
+              call line_ends(px(b%points), py(b%points), hx, hy)
+              call out%put(svg_path(svg_polyline_d(hx, hy), 'fill="none" stroke="#000000" '// &
+                'stroke-width="2.2" stroke-linecap="round" stroke-linejoin="round"'))
+              call out%put(svg_path(svg_polyline_d(hx, hy), 'fill="none" stroke="#e8e8e8" '// &
+                'stroke-width="1.4" stroke-linecap="round" stroke-linejoin="round"'))
+            else
+              call out%put(svg_polygon(hx, hy, 'class="link"'))
+            end if
+            do j = 1, size(hx)
+              call add_segment(obst_x, obst_y, [hx(j), hy(j)], [hx(modulo(j, size(hx)) + 1), hy(modulo(j, size(hx)) + 1)])
+            end do
+          case (body_rod)
+            call axis_ends(b, b%reach(1), b%reach(2), q, t)
+            call out%put(svg_line(q(1), q(2), t(1), t(2), 'stroke="#000000" stroke-width="1.5" stroke-linecap="round"'))
+            call out%put(svg_line(q(1), q(2), t(1), t(2), 'stroke="#e8e8e8" stroke-width="0.8" stroke-linecap="round"'))
+            call add_segment(obst_x, obst_y, q, t)
+          case (body_cylinder)
+            call axis_ends(b, 0.0_wp, b%length, q, t)
+            call put_tube(out, q, t, 2.3_wp)
+            call add_segment(obst_x, obst_y, q, t)
+            if (hypot(t(1) - q(1), t(2) - q(2)) > 0.0_wp) then
+              u2 = [q(2) - t(2), t(1) - q(1)] * 2.3_wp / hypot(t(1) - q(1), t(2) - q(2))
+              call add_segment(obst_x, obst_y, q + u2, t + u2)
+              call add_segment(obst_x, obst_y, q - u2, t - u2)
+            end if
+          case (body_block)
+            call put_block(out, px(b%points(1)), py(b%points(1)), b%angle + drawing%view_angle)
+            call add_segment(obst_x, obst_y, [px(b%points(1)) - 4.0_wp, py(b%points(1))], &
+              [px(b%points(1)) + 4.0_wp, py(b%points(1))])
+          end select
+        end associate
+      end do
     end do
     ! joints, pivots, centres of mass
     do i = 1, n
@@ -426,26 +419,28 @@ contains
     allocate (hull(2 * n))
     m = 0
     do i = 1, n
-      do while (m >= 2)
-        if (cross(hull(m - 1), hull(m), order(i)) > 0.0_wp) exit
-        m = m - 1
-      end do
-      m = m + 1
-      hull(m) = order(i)
+      call push(hull, m, order(i), 2)
     end do
     lower_size = m + 1
     do i = n - 1, 1, -1
-      do while (m >= lower_size)
-        if (cross(hull(m - 1), hull(m), order(i)) > 0.0_wp) exit
-        m = m - 1
-      end do
-      m = m + 1
-      hull(m) = order(i)
+      call push(hull, m, order(i), lower_size)
     end do
     m = m - 1
     hx = x(hull(1:m))
     hy = y(hull(1:m))
   contains
+    !> Point p onto hull(1:m), after dropping the points (above the first `keep` - 1) that
+    !> would not make a left turn.
+    pure subroutine push(hull, m, p, keep)
+      integer, intent(inout) :: hull(:), m
+      integer, intent(in) :: p, keep
+      do while (m >= keep)
+        if (cross(hull(m - 1), hull(m), p) > 0.0_wp) exit
+        m = m - 1
+      end do
+      m = m + 1
+      hull(m) = p
+    end subroutine push
     pure real(wp) function cross(a, b, c)
       integer, intent(in) :: a, b, c
       cross = (x(b) - x(a)) * (y(c) - y(a)) - (y(b) - y(a)) * (x(c) - x(a))
