@@ -106,21 +106,21 @@ contains
     call out%put(heading(x0 + 170.0_wp, y0 + 39.0_wp, words("Sheets 1", "Листов 1")))
 
     ! the entries
-    call out%put(svg_text(x0 + 18.0_wp, y0 + 29.0_wp, clipped(table%student_name, 22.0_wp, entry_size), &
+    call out%put(svg_text(x0 + 18.0_wp, y0 + 29.0_wp, fitted_text(table%student_name, 22.0_wp, entry_size), &
       'font-size="2.4"'))
     call out%put(svg_text(x0 + 60.0_wp, y0 + 29.0_wp, date, 'font-size="1.9" text-anchor="middle"'))
     call out%put(svg_text(x0 + 137.5_wp, y0 + 29.0_wp, words("S", "У"), 'font-size="3.0" text-anchor="middle"'))
-    call out%put(svg_text(x0 + 125.0_wp, y0 + 9.5_wp, clipped(table%student_group//"."//table%student_variant// &
+    call out%put(svg_text(x0 + 125.0_wp, y0 + 9.5_wp, fitted_text(table%student_group//"."//table%student_variant// &
       "   "//table%deck, 116.0_wp, 3.5_wp), 'font-size="3.5" text-anchor="middle"'))
-    call out%put(svg_text(x0 + 100.0_wp, y0 + 29.0_wp, clipped(name, 66.0_wp, 3.0_wp), &
+    call out%put(svg_text(x0 + 100.0_wp, y0 + 29.0_wp, fitted_text(name, 66.0_wp, 3.0_wp), &
       'font-size="3.0" text-anchor="middle"'))
-    call out%put(svg_text(x0 + 100.0_wp, y0 + 46.5_wp, clipped(version_string, 66.0_wp, entry_size), &
+    call out%put(svg_text(x0 + 100.0_wp, y0 + 46.5_wp, fitted_text(version_string, 66.0_wp, entry_size), &
       'font-size="2.4" text-anchor="middle"'))
     call out%put(svg_text(x0 + 100.0_wp, y0 + 51.5_wp, words("run ", "расчет ")//table%student_stamp, &
       'font-size="2.4" text-anchor="middle"'))
-    call out%put(svg_text(x0 + 160.0_wp, y0 + 46.5_wp, clipped(words("group ", "группа ")//table%student_group, 46.0_wp, &
+    call out%put(svg_text(x0 + 160.0_wp, y0 + 46.5_wp, fitted_text(words("group ", "группа ")//table%student_group, 46.0_wp, &
       entry_size), 'font-size="2.4" text-anchor="middle"'))
-    call out%put(svg_text(x0 + 160.0_wp, y0 + 51.5_wp, clipped(words("variant ", "вариант ")//table%student_variant, &
+    call out%put(svg_text(x0 + 160.0_wp, y0 + 51.5_wp, fitted_text(words("variant ", "вариант ")//table%student_variant, &
       46.0_wp, entry_size), 'font-size="2.4" text-anchor="middle"'))
   contains
     !> The English or the Russian word, by the sheet's language.
@@ -149,8 +149,9 @@ contains
     end function role
   end subroutine put_title_block
 
-  !> `text` cut (with "...") to fit `room` mm at font size `size` mm (0.6 x size per character).
-  pure function clipped(text, room, size) result(fitted)
+  !> `text` cut (with "...") to fit `room` mm at font size `size` mm (0.6 x size per character),
+  !> counting UTF-8 characters, not bytes (a Cyrillic name is never cut inside a letter).
+  pure function fitted_text(text, room, size) result(fitted)
     character(*), intent(in) :: text
     real(wp), intent(in) :: room, size
     character(len=:), allocatable :: fitted
@@ -171,6 +172,6 @@ contains
     else
       fitted = text(:kept)//"..."
     end if
-  end function clipped
+  end function fitted_text
 
 end module kinetostat_title_block
