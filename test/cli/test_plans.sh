@@ -73,6 +73,13 @@ python3 "$plans_check" "$cli_tmp/bad_group.json" "$plans_dir/sixbar.csv" --group
 grep -o '"group": "[0-9,]*"' "$plans_dir/sixbar.1.json" | tr '\n' ' ' | grep -qx '"group": "4,5" "group": "2,3" "group": "1" ' \
   && pass || fail plans-sixbar-groups "$(grep -o '"group": "[0-9,]*"' "$plans_dir/sixbar.1.json")"
 
+# PR 3207's ram from the block's point the other way round; PR 3050's cylinder and rod one body
+# of their group (the frame's reaction on the cylinder split along the line to the rod's joint B)
+cat "$plans_dir"/pr3207.*.json | grep -q '"point": "S5", "link": "5", "from": "D", "slider": "4", "reverse": true' \
+  && pass || fail plans-pr3207-ram "$(cat "$plans_dir"/pr3207.*.json | grep -o '"point": "S5"[^[]*' | head -3)"
+cat "$plans_dir"/pr3050.*.json | grep -q '"group": "1,2,3".*"name": "F14^τ"' \
+  && pass || fail plans-pr3050-group "$(cat "$plans_dir"/pr3050.*.json | grep -o '"group": "[^]]*' | head -1)"
+
 # the manual's worked example (T.FTN, phi1 = 66.8 deg): the lever gives M1 = 902.0 N*m
 grep -q '"zhukovsky": {"driver": "M1", "effort": 9.0203548' "$plans_dir/sixbar_example.1.json" \
   && pass || fail plans-worked-example "$(grep zhukovsky "$plans_dir/sixbar_example.1.json")"
