@@ -10,7 +10,7 @@ module test_linkage
   use kinetostat_text, only: int_str, real_str
   use kinetostat_error, only: error_t, exit_geometry, exit_input
   use kinetostat_deck, only: deck_source_t, load_deck, deck_source_from_text
-  use kinetostat_linkage, only: linkage_step_t, linkage_reference_pose, linkage_assemble, linkage_motion
+  use kinetostat_linkage, only: linkage_step_t, linkage_reference_pose, linkage_assemble, linkage_motion, linkage_work_t
   use kinetostat_linkage_structure, only: structure_formula
   use kinetostat_linkage_deck, only: linkage_deck_t, read_linkage_deck, linkage_drive_values
   use kinetostat_linkage_layout, only: linkage_solve_steps
@@ -132,6 +132,7 @@ contains
       type(linkage_step_t), allocatable :: steps(:)
       type(error_t), allocatable :: error
       real(wp), allocatable :: q(:), dq(:), dv(:), da(:), qp(:), qm(:), qd(:), qdd(:), fd1(:), fd2(:), from(:)
+      type(linkage_work_t) :: work
       real(wp) :: h, tol1, tol2
       integer :: i, j, k, nd
       call bundled(path, deck, t)
@@ -150,12 +151,12 @@ contains
           da(j) = 0.7_wp * real((-1)**j, wp) * maxval(abs(dv))
         end do
         allocate (qd(size(q)), qdd(size(q)))
-        call linkage_motion(deck%mech, steps(k)%q, dv, da, qd, qdd, error)
+        call linkage_motion(deck%mech, steps(k)%q, dv, da, qd, qdd, work, error)
         h = 2.0e-4_wp / maxval(abs(dv))
         qp = steps(k)%q
         qm = steps(k)%q
-        call linkage_assemble(deck%mech, dq, dq + dv * h + 0.5_wp * da * h**2, qp, "fd+", error)
-        if (.not. allocated(error)) call linkage_assemble(deck%mech, dq, dq - dv * h + 0.5_wp * da * h**2, qm, "fd-", error)
+        call linkage_assemble(deck%mech, dq, dq + dv * h + 0.5_wp * da * h**2, qp, work, error)
+        if (.not. allocated(error)) call linkage_assemble(deck%mech, dq, dq - dv * h + 0.5_wp * da * h**2, qm, work, error)
         call check_true(t, "linkage-fd-assemble-"//path, .not. allocated(error), "assembly failed")
         if (allocated(error)) return
         fd1 = (qp - qm) / (2.0_wp * h)

@@ -22,7 +22,8 @@ module kinetostat_lapack
   use kinetostat_error, only: error_t, fatal_error, exit_geometry
   implicit none
   private
-  public :: solve_dense, rcond_threshold, singular_by_estimate, solve_by_dgesv, solve_by_port, inverse_norm_bound
+  public :: solve_dense, factor_dense, solve_factored
+  public :: rcond_threshold, singular_by_estimate, solve_by_dgesv, solve_by_port, inverse_norm_bound
 
   !> Margin of the cheap test: dgecon is skipped only when the bound puts rcond at least this
   !> many times above the threshold.
@@ -104,11 +105,51 @@ contains
     integer, intent(out) :: ipiv(:)
     type(error_t), allocatable, intent(out) :: error
     real(wp), intent(out), optional :: rcond
+    x = 0.0_wp
+    call factor_in(a, lu, ipiv, error, rcond)
+    if (allocated(error)) return
+    x = b
+    call lu_solve(lu, ipiv, x)
+  end subroutine solve_in
+
+  !> solve_dense's factorisation alone, for several right-hand sides of one matrix: the
+  !> factors `lu` and pivots `ipiv` of `a` (caller's workspace, n x n and n), with the same
+  !> singular-position verdict; then solve_factored for each right-hand side gives bit for bit
+  !> what solve_dense gives.
+  pure subroutine factor_dense(a, lu, ipiv, error)
+    !> Coefficient matrix (n x n), unchanged.
+    real(wp), intent(in) :: a(:, :)
+    !> Its LU factors (n x n).
+    real(wp), intent(out) :: lu(:, :)
+    !> Row interchanges (n).
+    integer, intent(out) :: ipiv(:)
+    !> Set when the matrix is singular or its reciprocal condition is below `rcond_threshold`.
+    type(error_t), allocatable, intent(out) :: error
+    call factor_in(a, lu, ipiv, error)
+  end subroutine factor_dense
+
+  !> Solves with factor_dense's factors: `x` (the right-hand side) becomes the solution.
+  pure subroutine solve_factored(lu, ipiv, x)
+    !> Factors from factor_dense.
+    real(wp), intent(in) :: lu(:, :)
+    !> Row interchanges from factor_dense.
+    integer, intent(in) :: ipiv(:)
+    !> Right-hand side in, solution out.
+    real(wp), intent(inout) :: x(:)
+    call lu_solve(lu, ipiv, x)
+  end subroutine solve_factored
+
+  !> The factorisation and the singular-position test of solve_in.
+  pure subroutine factor_in(a, lu, ipiv, error, rcond)
+    real(wp), intent(in) :: a(:, :)
+    real(wp), intent(out) :: lu(:, :)
+    integer, intent(out) :: ipiv(:)
+    type(error_t), allocatable, intent(out) :: error
+    real(wp), intent(out), optional :: rcond
     real(wp) :: anorm, rc, bound
     integer :: info
     logical :: settled, finite
 
-    x = 0.0_wp
     if (present(rcond)) rcond = 0.0_wp
     lu = a
     anorm = maxval(sum(abs(a), dim=1))
@@ -130,9 +171,7 @@ contains
         return
       end if
     end if
-    x = b
-    call lu_solve(lu, ipiv, x)
-  end subroutine solve_in
+  end subroutine factor_in
 
   !> dgetrf2's LU factorisation with partial pivoting of the square `a`: L (unit diagonal)
   !> below and U on and above the diagonal; `info` > 0: U(info, info) is exactly zero. The

@@ -4,7 +4,9 @@
 !> guide), each drive one (the relative angle of a turning pair, the stroke of a sliding
 !> pair). With W = 3n - 2p5 equal to the number of drives the system is square: positions by
 !> Newton's method from the previous step, velocities and accelerations by linear solves with
-!> the same Jacobian J; the reactions solve J^T lambda = -Q (Q: the applied, gravity and
+!> the same Jacobian J (factored once per pose: its factors serve the velocities, the
+!> accelerations, the velocity analogues of the self-check and the next step's predictor,
+!> kept with the poses they belong to in a `linkage_work_t`); the reactions solve J^T lambda = -Q (Q: the applied, gravity and
 !> inertia loads as generalised forces), once as one global system and once unit by unit in
 !> the order of the structural analysis (the course's group method), as the second opinion.
 !> Every loop is kept scalar (`!GCC$ novector`): the vector cos, sin and hypot of libmvec may
@@ -14,14 +16,14 @@ module kinetostat_linkage
   use kinetostat_kinds, only: wp, pi
   use kinetostat_error, only: error_t, fatal_error, exit_geometry
   use kinetostat_text, only: int_str
-  use kinetostat_lapack, only: solve_dense
+  use kinetostat_lapack, only: solve_dense, factor_dense, solve_factored
   use kinetostat_vec2, only: rotate, perp, cross, magnitude
   use kinetostat_selfcheck, only: link_balance_t, balance_add_force, balance_add_couple, equilibrium_residual, &
     power_mismatch
   implicit none
   private
   public :: linkage_t, linkage_link_t, linkage_pair_t, linkage_drive_t, linkage_force_t, linkage_unit_t
-  public :: linkage_step_t, pair_r, pair_p
+  public :: linkage_step_t, linkage_work_t, pair_r, pair_p
   public :: linkage_rows, pair_row, drive_row, point_position, link_point_state
   public :: linkage_assemble, linkage_motion, linkage_statics, linkage_reference_pose, linkage_worst_unit
   public :: linkage_velocity_analogues
@@ -154,7 +156,80 @@ module kinetostat_linkage
     real(wp) :: solver_gap = 0.0_wp
   end type linkage_step_t
 
+  !> The workspace of a run of steps (no allocation per step): the Jacobian J of the last
+  !> poses it was evaluated at, its LU factors and the velocity analogues from them.
+  type :: linkage_work_t
+    !> Constraints (rows) and the Jacobian (rows x 3n) at the poses q_jac.
+    real(wp), allocatable :: phi(:), jac(:, :)
+    !> The poses of jac.
+    real(wp), allocatable :: q_jac(:)
+    !> LU factors of jac and their row interchanges (valid when `factored`).
+    real(wp), allocatable :: lu(:, :)
+    integer, allocatable :: ipiv(:)
+    !> Velocity analogues at q_jac (3n x drives; valid when `factored`).
+    real(wp), allocatable :: v(:, :)
+    !> J^T, its factors and row interchanges (the reactions).
+    real(wp), allocatable :: jt(:, :), lut(:, :)
+    integer, allocatable :: ipivt(:)
+    !> A Newton correction or right-hand side (rows).
+    real(wp), allocatable :: dx(:)
+    !> Drive values 0 (J does not depend on them); zeros of the poses' size.
+    real(wp), allocatable :: dq0(:), zero_q(:)
+    !> jac holds J(q_jac); lu and v hold its factors and analogues.
+    logical :: has_jac = .false., factored = .false.
+  end type linkage_work_t
+
 contains
+
+  !> Allocates the workspace for `mech` (once).
+  pure subroutine work_ready(mech, work)
+    type(linkage_t), intent(in) :: mech
+    type(linkage_work_t), intent(inout) :: work
+    integer :: nr
+    nr = linkage_rows(mech)
+    if (allocated(work%jac)) then
+      if (size(work%jac, 1) == nr .and. size(work%v, 2) == size(mech%drives)) return
+      deallocate (work%phi, work%jac, work%q_jac, work%lu, work%ipiv, work%v, work%jt, work%lut, work%ipivt, work%dx, &
+                  work%dq0, work%zero_q)
+    end if
+    allocate (work%phi(nr), work%jac(nr, nr), work%q_jac(nr), work%lu(nr, nr), work%ipiv(nr), &
+              work%v(nr, size(mech%drives)), work%jt(nr, nr), work%lut(nr, nr), work%ipivt(nr), work%dx(nr))
+    allocate (work%dq0(size(mech%drives)), work%zero_q(nr), source=0.0_wp)
+    work%has_jac = .false.
+    work%factored = .false.
+  end subroutine work_ready
+
+  !> J at poses q in `work` (evaluated unless it holds them), factored, with the velocity
+  !> analogues (column d: dq/d(drive d), the other drives held). An error: J is singular.
+  pure subroutine work_factored(mech, q, work, error)
+    type(linkage_t), intent(in) :: mech
+    real(wp), intent(in) :: q(:)
+    type(linkage_work_t), intent(inout) :: work
+    type(error_t), allocatable, intent(out) :: error
+    integer :: d
+    call work_ready(mech, work)
+    if (work%has_jac) then
+      ! (bits, not values: the factors of the same poses are reused)
+      if (any(work%q_jac /= q)) work%has_jac = .false.
+    end if
+    if (.not. work%has_jac) then
+      ! J does not depend on the drive values (they enter the constraints only)
+      call constraints(mech, q, work%dq0, work%phi, work%jac)
+      work%q_jac(:) = q
+      work%has_jac = .true.
+      work%factored = .false.
+    end if
+    if (work%factored) return
+    call factor_dense(work%jac, work%lu, work%ipiv, error)
+    if (allocated(error)) return
+    !GCC$ novector
+    do d = 1, size(mech%drives)
+      work%v(:, d) = 0.0_wp
+      work%v(drive_row(mech, d), d) = 1.0_wp
+      call solve_factored(work%lu, work%ipiv, work%v(:, d))
+    end do
+    work%factored = .true.
+  end subroutine work_factored
 
   !> Number of constraint rows (2 per pair, 1 per drive).
   pure integer function linkage_rows(mech)
@@ -330,13 +405,16 @@ contains
 
   !> The velocity-dependent part h of the constraints' second derivative (J qdd + h = drive
   !> accelerations).
-  pure function quadratic_terms(mech, q, qd) result(h)
+  pure subroutine quadratic_terms(mech, q, qd, zero, h)
     type(linkage_t), intent(in) :: mech
     real(wp), intent(in) :: q(:), qd(:)
-    real(wp), allocatable :: h(:)
+    !> Zeros (3n).
+    real(wp), intent(in) :: zero(:)
+    !> h (rows).
+    real(wp), intent(out) :: h(:)
     real(wp) :: ra(2), rb(2), u(2)
     integer :: k, r, d
-    allocate (h(linkage_rows(mech)), source=0.0_wp)
+    h = 0.0_wp
     !GCC$ novector
     do k = 1, size(mech%pairs)
       associate (pr => mech%pairs(k))
@@ -347,7 +425,7 @@ contains
           h(r:r + 1) = -turn_of(qd, pr%a)**2 * ra + turn_of(qd, pr%b)**2 * rb
         else
           u = rotate(pr%u, turn_of(q, pr%guide))
-          h(r + 1) = slide_h(mech, q, qd, pr, perp(u))
+          h(r + 1) = slide_h(mech, q, qd, zero, pr, perp(u))
         end if
       end associate
     end do
@@ -356,24 +434,22 @@ contains
       associate (pr => mech%pairs(mech%drives(d)%pair))
         if (pr%kind == pair_p) then
           u = rotate(pr%u, turn_of(q, pr%guide))
-          h(drive_row(mech, d)) = slide_h(mech, q, qd, pr, u)
+          h(drive_row(mech, d)) = slide_h(mech, q, qd, zero, pr, u)
         end if
       end associate
     end do
-  end function quadratic_terms
+  end subroutine quadratic_terms
 
   !> h of a sliding row w . delta (delta: the block's point minus the guide's, w turning with
   !> the guide link g): -wg^2 w.delta + 2 wg perp(w).d(delta)/dt + w.(centripetal
   !> accelerations of the block's point minus the guide's).
-  pure real(wp) function slide_h(mech, q, qd, pr, w)
+  pure real(wp) function slide_h(mech, q, qd, zero, pr, w)
     type(linkage_t), intent(in) :: mech
-    real(wp), intent(in) :: q(:), qd(:)
+    real(wp), intent(in) :: q(:), qd(:), zero(:)
     type(linkage_pair_t), intent(in) :: pr
     real(wp), intent(in) :: w(2)
     real(wp) :: x1(2), v1(2), a1(2), x2(2), v2(2), a2(2), wg
-    real(wp), allocatable :: zero(:)
     integer :: blk
-    allocate (zero(size(q)), source=0.0_wp)
     blk = pr%a + pr%b - pr%guide
     call link_point_state(mech, q, qd, zero, blk, pr%at, x1, v1, a1)
     call link_point_state(mech, q, qd, zero, pr%guide, pr%at, x2, v2, a2)
@@ -384,24 +460,23 @@ contains
 
   !> Assembles the linkage for drive values `dq` by Newton's method from the poses `q`
   !> (updated), walking there in substeps from the drive values `dq_from` of `q` with a
-  !> first-order predictor. `error` names the step (`where`) and the unit whose Jacobian is
-  !> the worst conditioned.
-  pure subroutine linkage_assemble(mech, dq_from, dq, q, where, error)
+  !> first-order predictor. `error` gives the reason and the unit whose Jacobian is the worst
+  !> conditioned ("... in group III(2,3,4,5)"; the caller names the step). `work` keeps J at
+  !> the assembled poses (for linkage_motion and linkage_statics).
+  pure subroutine linkage_assemble(mech, dq_from, dq, q, work, error)
     !> The linkage.
     type(linkage_t), intent(in) :: mech
     !> Drive values of the poses q and the wanted ones, rad or m.
     real(wp), intent(in) :: dq_from(:), dq(:)
     !> Poses: in, assembled at dq_from; out, at dq.
     real(wp), intent(inout) :: q(:)
-    !> Text naming the step, for messages.
-    character(*), intent(in) :: where
+    !> Workspace (J and its factors at the last poses).
+    type(linkage_work_t), intent(inout) :: work
     type(error_t), allocatable, intent(out) :: error
-    real(wp), allocatable :: phi(:), jac(:, :), dx(:), v(:, :), target(:), from(:), q_good(:)
-    real(wp) :: span
-    integer :: m, s, it, nr, d
+    real(wp) :: span, target(size(dq)), from(size(dq)), q_good(size(q))
+    integer :: m, s, it, d
     logical :: converged
-    nr = linkage_rows(mech)
-    allocate (phi(nr), jac(nr, nr), dx(nr), v(nr, size(dq)), target(size(dq)))
+    call work_ready(mech, work)
     span = 0.0_wp
     !GCC$ novector
     do d = 1, size(dq)
@@ -412,14 +487,13 @@ contains
       end if
     end do
     m = max(1, ceiling(span))
-    allocate (from(size(dq)), q_good(size(q)))
     from(:) = dq_from
     q_good(:) = q
     !GCC$ novector
     do s = 1, m
       target = dq_from + (dq - dq_from) * (real(s, wp) / real(m, wp))
       ! predictor: the velocity analogues of the drives at the last assembled pose
-      call linkage_velocity_analogues(mech, q, v, error)
+      call work_factored(mech, q, work, error)
       if (allocated(error)) then
         call fatal_error(error, exit_geometry, fail_text("the Jacobian is singular (a dead position)"))
         return
@@ -427,20 +501,25 @@ contains
       ! (explicit loops, not matmul: its library and inlined forms sum in different orders)
       !GCC$ novector
       do d = 1, size(dq)
-        q = q + v(:, d) * (target(d) - from(d))
+        q = q + work%v(:, d) * (target(d) - from(d))
       end do
       converged = .false.
       !GCC$ novector
       do it = 1, max_newton
-        call constraints(mech, q, target, phi, jac)
-        converged = maxval(abs(phi)) <= newton_tol * mech%size
+        call constraints(mech, q, target, work%phi, work%jac)
+        work%q_jac(:) = q
+        work%has_jac = .true.
+        work%factored = .false.
+        converged = maxval(abs(work%phi)) <= newton_tol * mech%size
         if (converged) exit
-        call solve_dense(jac, -phi, dx, error)
+        call factor_dense(work%jac, work%lu, work%ipiv, error)
         if (allocated(error)) then
           call fatal_error(error, exit_geometry, fail_text("the Jacobian is singular (a dead position)"))
           return
         end if
-        q = q + dx
+        work%dx(:) = -work%phi
+        call solve_factored(work%lu, work%ipiv, work%dx)
+        q = q + work%dx
       end do
       if (.not. converged) then
         call fatal_error(error, exit_geometry, fail_text("Newton's method does not converge (the linkage cannot be assembled)"))
@@ -453,7 +532,7 @@ contains
     pure function fail_text(reason) result(text)
       character(*), intent(in) :: reason
       character(len=:), allocatable :: text
-      text = where//": "//reason//" in "//unit_name(mech, linkage_worst_unit(mech, q_good))
+      text = reason//" in "//unit_name(mech, linkage_worst_unit(mech, q_good))
     end function fail_text
   end subroutine linkage_assemble
 
@@ -528,23 +607,17 @@ contains
     !> The analogues.
     real(wp), intent(out) :: v(:, :)
     type(error_t), allocatable, intent(out) :: error
-    real(wp), allocatable :: phi(:), jac(:, :), e(:)
-    integer :: d, nr
-    nr = linkage_rows(mech)
-    allocate (phi(nr), jac(nr, nr), e(nr))
-    call constraints(mech, q, [(0.0_wp, d=1, size(mech%drives))], phi, jac)
-    !GCC$ novector
-    do d = 1, size(mech%drives)
-      e = 0.0_wp
-      e(drive_row(mech, d)) = 1.0_wp
-      call solve_dense(jac, e, v(:, d), error)
-      if (allocated(error)) return
-    end do
+    type(linkage_work_t) :: work
+    v = 0.0_wp
+    call work_factored(mech, q, work, error)
+    if (allocated(error)) return
+    v = work%v
   end subroutine linkage_velocity_analogues
 
   !> Velocities and accelerations of assembled poses q for the drives' rates `dv` and
-  !> accelerations `da` (rad/s, rad/s^2 or m/s, m/s^2).
-  pure subroutine linkage_motion(mech, q, dv, da, qd, qdd, error)
+  !> accelerations `da` (rad/s, rad/s^2 or m/s, m/s^2), with J's factors from `work` (of
+  !> linkage_assemble) when they are those of q.
+  pure subroutine linkage_motion(mech, q, dv, da, qd, qdd, work, error)
     !> The linkage.
     type(linkage_t), intent(in) :: mech
     !> Poses.
@@ -553,25 +626,27 @@ contains
     real(wp), intent(in) :: dv(:), da(:)
     !> Velocities and accelerations of the poses.
     real(wp), intent(out) :: qd(:), qdd(:)
+    !> Workspace (J and its factors at the last poses).
+    type(linkage_work_t), intent(inout) :: work
     type(error_t), allocatable, intent(out) :: error
-    real(wp), allocatable :: phi(:), jac(:, :), rhs(:)
-    integer :: d, nr
-    nr = linkage_rows(mech)
-    allocate (phi(nr), jac(nr, nr), rhs(nr))
-    call constraints(mech, q, [(0.0_wp, d=1, size(mech%drives))], phi, jac)
-    rhs = 0.0_wp
-    !GCC$ novector
-    do d = 1, size(mech%drives)
-      rhs(drive_row(mech, d)) = dv(d)
-    end do
-    call solve_dense(jac, rhs, qd, error)
+    integer :: d
+    qd = 0.0_wp
+    qdd = 0.0_wp
+    call work_factored(mech, q, work, error)
     if (allocated(error)) return
-    rhs = -quadratic_terms(mech, q, qd)
+    qd = 0.0_wp
     !GCC$ novector
     do d = 1, size(mech%drives)
-      rhs(drive_row(mech, d)) = rhs(drive_row(mech, d)) + da(d)
+      qd(drive_row(mech, d)) = dv(d)
     end do
-    call solve_dense(jac, rhs, qdd, error)
+    call solve_factored(work%lu, work%ipiv, qd)
+    call quadratic_terms(mech, q, qd, work%zero_q, qdd)
+    qdd = -qdd
+    !GCC$ novector
+    do d = 1, size(mech%drives)
+      qdd(drive_row(mech, d)) = qdd(drive_row(mech, d)) + da(d)
+    end do
+    call solve_factored(work%lu, work%ipiv, qdd)
   end subroutine linkage_motion
 
   !> Reactions of an assembled, moving step: applied forces `fval` (N, along each force's
@@ -579,28 +654,33 @@ contains
   !> -Q, the group-by-group solve in reverse order of the units, and the self-check
   !> (equilibrium of every link with the physical forces, power balance of every drive with
   !> the velocity analogues).
-  pure subroutine linkage_statics(mech, fval, mval, step, error)
+  pure subroutine linkage_statics(mech, fval, mval, step, work, error)
     !> The linkage.
     type(linkage_t), intent(in) :: mech
     !> Force magnitudes (N) and moments (N*m) of the step.
     real(wp), intent(in) :: fval(:), mval(:)
     !> In: q, qd, qdd; out: forces, efforts and the self-check.
     type(linkage_step_t), intent(inout) :: step
+    !> Workspace (J and its factors at the last poses).
+    type(linkage_work_t), intent(inout) :: work
     type(error_t), allocatable, intent(out) :: error
-    real(wp), allocatable :: phi(:), jac(:, :), gen(:), lam(:), lam2(:), v(:, :), a(:, :), b(:), x(:)
+    real(wp), allocatable :: gen(:), lam(:), lam2(:), a(:, :), b(:), x(:)
     integer, allocatable :: cols(:), later(:), rows(:)
     type(link_balance_t), allocatable :: bal(:)
     real(wp) :: terms, power, big, s(2), vs(2), as(2), ref(2)
     integer :: nr, n, k, u, d, i, r
     nr = linkage_rows(mech)
     n = size(mech%links)
-    allocate (phi(nr), jac(nr, nr), v(nr, size(mech%drives)))
-    call constraints(mech, step%q, [(0.0_wp, d=1, size(mech%drives))], phi, jac)
+    call work_factored(mech, step%q, work, error)
+    if (allocated(error)) return
     allocate (gen(size(step%q)))
     gen(:) = generalised_loads(mech, step%q, step%qd, step%qdd, fval, mval)
-    allocate (lam(nr))
-    call solve_dense(transpose(jac), -gen, lam, error)
+    work%jt(:, :) = transpose(work%jac)
+    call factor_dense(work%jt, work%lut, work%ipivt, error)
     if (allocated(error)) return
+    allocate (lam(nr))
+    lam(:) = -gen
+    call solve_factored(work%lut, work%ipivt, lam)
 
     ! the second opinion: unit by unit, the last found first (the course's order)
     allocate (lam2(nr), source=0.0_wp)
@@ -609,11 +689,11 @@ contains
     do u = size(mech%units), 1, -1
       cols = unit_columns(mech%units(u))
       rows = mech%units(u)%rows
-      a = transpose(jac(rows, cols))
+      a = transpose(work%jac(rows, cols))
       b = -gen(cols)
       !GCC$ novector
       do i = 1, size(later)
-        b = b - jac(later(i), cols) * lam2(later(i))
+        b = b - work%jac(later(i), cols) * lam2(later(i))
       end do
       allocate (x(size(rows)))
       call solve_dense(a, b, x, error)
@@ -714,8 +794,6 @@ contains
     step%residual = equilibrium_residual(bal)
 
     ! self-check 2: each drive's effort by virtual work (the velocity analogue of that drive)
-    call linkage_velocity_analogues(mech, step%q, v, error)
-    if (allocated(error)) return
     step%mismatch = 0.0_wp
     !GCC$ novector
     do d = 1, size(mech%drives)
@@ -723,8 +801,8 @@ contains
       terms = 0.0_wp
       !GCC$ novector
       do i = 1, size(gen)
-        power = power - gen(i) * v(i, d)
-        terms = terms + abs(gen(i) * v(i, d))
+        power = power - gen(i) * work%v(i, d)
+        terms = terms + abs(gen(i) * work%v(i, d))
       end do
       associate (pr => mech%pairs(mech%drives(d)%pair))
         ! the effort acts on link a; for a stroke whose guide is on a, the stroke grows as a

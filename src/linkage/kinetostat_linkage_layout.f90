@@ -19,7 +19,7 @@ module kinetostat_linkage_layout
   use kinetostat_drawing, only: drawing_t, force_load
   use kinetostat_bodies, only: mass_model_t
   use kinetostat_linkage, only: linkage_t, linkage_step_t, pair_r, pair_p, linkage_reference_pose, linkage_assemble, &
-    linkage_motion, linkage_statics, link_point_state, point_position
+    linkage_motion, linkage_statics, link_point_state, point_position, linkage_work_t
   use kinetostat_linkage_structure, only: structure_lines
   use kinetostat_linkage_deck, only: linkage_deck_t, read_linkage_deck, write_linkage_template, linkage_drive_values, &
     linkage_load_value
@@ -284,22 +284,24 @@ contains
     type(linkage_step_t), intent(out) :: steps(first:last)
     type(error_t), allocatable, intent(out) :: error
     real(wp), allocatable :: dq(:), dv(:), da(:), fval(:), mval(:)
+    type(linkage_work_t) :: work
     integer :: k, i, nd
-    character(len=:), allocatable :: where
     nd = size(deck%mech%drives)
     allocate (dq(nd), dv(nd), da(nd), fval(size(deck%force_load)), mval(size(deck%moment_load)))
     !GCC$ novector
     do k = first, last
       call linkage_drive_values(deck, k, dq, dv, da)
-      where = path//": &linkage: step "//int_str(k)//" ("//drive_text(deck, dq)//")"
-      call linkage_assemble(deck%mech, dq_from, dq, q, where, error)
-      if (allocated(error)) return
+      call linkage_assemble(deck%mech, dq_from, dq, q, work, error)
+      if (allocated(error)) then
+        error%message = where()//": "//error%message
+        return
+      end if
       dq_from = dq
       steps(k)%q = q
       allocate (steps(k)%qd(size(q)), steps(k)%qdd(size(q)))
-      call linkage_motion(deck%mech, q, dv, da, steps(k)%qd, steps(k)%qdd, error)
+      call linkage_motion(deck%mech, q, dv, da, steps(k)%qd, steps(k)%qdd, work, error)
       if (allocated(error)) then
-        error%message = where//": the velocities are undetermined (a dead position)"
+        error%message = where()//": the velocities are undetermined (a dead position)"
         return
       end if
       !GCC$ novector
@@ -310,12 +312,18 @@ contains
       do i = 1, size(mval)
         mval(i) = linkage_load_value(deck, deck%moment_load(i), k)
       end do
-      call linkage_statics(deck%mech, fval, mval, steps(k), error)
+      call linkage_statics(deck%mech, fval, mval, steps(k), work, error)
       if (allocated(error)) then
-        error%message = where//": the reactions are undetermined (a dead position)"
+        error%message = where()//": the reactions are undetermined (a dead position)"
         return
       end if
     end do
+  contains
+    !> The step for messages (written only for one).
+    pure function where() result(text)
+      character(len=:), allocatable :: text
+      text = path//": &linkage: step "//int_str(k)//" ("//drive_text(deck, dq)//")"
+    end function where
   end subroutine linkage_solve_steps
 
   !> "phi1 = 30 deg, phi4 = 162 deg" for messages.
