@@ -6,9 +6,13 @@
 !> Newton's method from the previous step, velocities and accelerations by linear solves with
 !> the same Jacobian J (factored once per pose: its factors serve the velocities, the
 !> accelerations, the velocity analogues of the self-check and the next step's predictor,
-!> kept with the poses they belong to in a `linkage_work_t`); the reactions solve J^T lambda = -Q (Q: the applied, gravity and
-!> inertia loads as generalised forces), once as one global system and once unit by unit in
-!> the order of the structural analysis (the course's group method), as the second opinion.
+!> kept with the poses they belong to in a `linkage_work_t`). The reactions twice, by two
+!> formulations that share no equation: the Lagrange multipliers of the constraints, J^T
+!> lambda = -Q (Q: the applied, gravity and inertia loads as generalised forces about each
+!> link's reference point), one global system; and, as the self-check's second opinion, the
+!> course's group method: each unit's links as free bodies (the pair forces at the joints as
+!> unknowns, Newton-Euler about each centre of mass), the last group first, the input units
+!> last, each with the forces of the groups solved before.
 !> Every loop is kept scalar (`!GCC$ novector`): the vector cos, sin and hypot of libmvec may
 !> differ from the scalar ones in the last bit, and the self-check figures (roundoff) are
 !> printed.
@@ -26,7 +30,7 @@ module kinetostat_linkage
   public :: linkage_step_t, linkage_work_t, pair_r, pair_p
   public :: linkage_rows, pair_row, drive_row, point_position, link_point_state
   public :: linkage_assemble, linkage_motion, linkage_statics, linkage_reference_pose, linkage_worst_unit
-  public :: linkage_velocity_analogues
+  public :: linkage_velocity_analogues, linkage_free_body, linkage_reaction_gap
 
   !> Pair kind: turning (revolute) pair.
   integer, parameter :: pair_r = 1
@@ -151,7 +155,7 @@ module kinetostat_linkage
     real(wp) :: residual = 0.0_wp
     !> Largest power-balance mismatch of the drives' efforts.
     real(wp) :: mismatch = 0.0_wp
-    !> Largest difference of the global and the group-by-group reactions, relative to the
+    !> Largest difference of the Lagrange and the group method's reactions, relative to the
     !> step's largest reaction.
     real(wp) :: solver_gap = 0.0_wp
   end type linkage_step_t
@@ -175,6 +179,23 @@ module kinetostat_linkage
     real(wp), allocatable :: dx(:)
     !> Drive values 0 (J does not depend on them); zeros of the poses' size.
     real(wp), allocatable :: dq0(:), zero_q(:)
+    !> The group method: its system (at most 3n x 3n), factors, row interchanges and
+    !> right-hand side.
+    real(wp), allocatable :: fa(:, :), flu(:, :), fb(:)
+    integer, allocatable :: fipiv(:)
+    !> The group method: each link's own loads (force, moment about its centre of mass: 3 x
+    !> n) and centre of mass (2 x n).
+    real(wp), allocatable :: load(:, :), cm(:, :)
+    !> The group method: each link's place in the unit being solved (0: not in it).
+    integer, allocatable :: local(:)
+    !> The group method: the pairs and drives whose reactions are known.
+    logical, allocatable :: pair_known(:), drive_known(:)
+    !> The group method's reactions (as linkage_step_t's f, normal, couple, effort).
+    real(wp), allocatable :: f2(:, :), normal2(:), couple2(:), effort2(:)
+    !> The generalised loads and the multipliers (rows).
+    real(wp), allocatable :: gen(:), lam(:)
+    !> Each link's balance (the self-check).
+    type(link_balance_t), allocatable :: bal(:)
     !> jac holds J(q_jac); lu and v hold its factors and analogues.
     logical :: has_jac = .false., factored = .false.
   end type linkage_work_t
@@ -188,10 +209,18 @@ contains
     integer :: nr
     nr = linkage_rows(mech)
     if (allocated(work%jac)) then
-      if (size(work%jac, 1) == nr .and. size(work%v, 2) == size(mech%drives)) return
+      if (size(work%jac, 1) == nr .and. size(work%v, 2) == size(mech%drives) .and. &
+          size(work%f2, 2) == size(mech%pairs)) return
       deallocate (work%phi, work%jac, work%q_jac, work%lu, work%ipiv, work%v, work%jt, work%lut, work%ipivt, work%dx, &
                   work%dq0, work%zero_q)
+      deallocate (work%fa, work%flu, work%fb, work%fipiv, work%load, work%cm, work%local, work%pair_known, &
+                  work%drive_known, work%f2, work%normal2, work%couple2, work%effort2, work%gen, work%lam, work%bal)
     end if
+    allocate (work%fa(nr, nr), work%flu(nr, nr), work%fb(nr), work%fipiv(nr), work%load(3, size(mech%links)), &
+              work%cm(2, size(mech%links)), work%local(size(mech%links)), work%pair_known(size(mech%pairs)), &
+              work%drive_known(size(mech%drives)), work%f2(2, size(mech%pairs)), work%normal2(size(mech%pairs)), &
+              work%couple2(size(mech%pairs)), work%effort2(size(mech%drives)), work%gen(nr), work%lam(nr), &
+              work%bal(size(mech%links)))
     allocate (work%phi(nr), work%jac(nr, nr), work%q_jac(nr), work%lu(nr, nr), work%ipiv(nr), &
               work%v(nr, size(mech%drives)), work%jt(nr, nr), work%lut(nr, nr), work%ipivt(nr), work%dx(nr))
     allocate (work%dq0(size(mech%drives)), work%zero_q(nr), source=0.0_wp)
@@ -651,9 +680,9 @@ contains
 
   !> Reactions of an assembled, moving step: applied forces `fval` (N, along each force's
   !> direction) and moments `mval` (N*m), gravity and inertia; the global system J^T lambda =
-  !> -Q, the group-by-group solve in reverse order of the units, and the self-check
-  !> (equilibrium of every link with the physical forces, power balance of every drive with
-  !> the velocity analogues).
+  !> -Q, and the self-check: the group method's free bodies as the second opinion
+  !> (linkage_free_body, step%solver_gap), the equilibrium of every link with the physical
+  !> forces, the power balance of every drive with the velocity analogues.
   pure subroutine linkage_statics(mech, fval, mval, step, work, error)
     !> The linkage.
     type(linkage_t), intent(in) :: mech
@@ -664,47 +693,17 @@ contains
     !> Workspace (J and its factors at the last poses).
     type(linkage_work_t), intent(inout) :: work
     type(error_t), allocatable, intent(out) :: error
-    real(wp), allocatable :: gen(:), lam(:), lam2(:), a(:, :), b(:), x(:)
-    integer, allocatable :: cols(:), later(:), rows(:)
-    type(link_balance_t), allocatable :: bal(:)
-    real(wp) :: terms, power, big, s(2), vs(2), as(2), ref(2)
-    integer :: nr, n, k, u, d, i, r
-    nr = linkage_rows(mech)
+    real(wp) :: terms, power, s(2), vs(2), as(2), ref(2)
+    integer :: n, k, d, i, r
     n = size(mech%links)
     call work_factored(mech, step%q, work, error)
     if (allocated(error)) return
-    allocate (gen(size(step%q)))
-    gen(:) = generalised_loads(mech, step%q, step%qd, step%qdd, fval, mval)
+    call generalised_loads(mech, step%q, step%qd, step%qdd, fval, mval, work%gen)
     work%jt(:, :) = transpose(work%jac)
     call factor_dense(work%jt, work%lut, work%ipivt, error)
     if (allocated(error)) return
-    allocate (lam(nr))
-    lam(:) = -gen
-    call solve_factored(work%lut, work%ipivt, lam)
-
-    ! the second opinion: unit by unit, the last found first (the course's order)
-    allocate (lam2(nr), source=0.0_wp)
-    allocate (later(0))
-    !GCC$ novector
-    do u = size(mech%units), 1, -1
-      cols = unit_columns(mech%units(u))
-      rows = mech%units(u)%rows
-      a = transpose(work%jac(rows, cols))
-      b = -gen(cols)
-      !GCC$ novector
-      do i = 1, size(later)
-        b = b - work%jac(later(i), cols) * lam2(later(i))
-      end do
-      allocate (x(size(rows)))
-      call solve_dense(a, b, x, error)
-      if (allocated(error)) return
-      lam2(rows) = x
-      deallocate (x)
-      later = [later, rows]
-    end do
-    big = maxval(abs(lam))
-    step%solver_gap = 0.0_wp
-    if (big > 0.0_wp) step%solver_gap = maxval(abs(lam - lam2)) / big
+    work%lam(:) = -work%gen
+    call solve_factored(work%lut, work%ipivt, work%lam)
 
     ! physical forces
     allocate (step%f(2, size(mech%pairs)), step%normal(size(mech%pairs)), step%couple(size(mech%pairs)))
@@ -714,18 +713,18 @@ contains
       associate (pr => mech%pairs(k))
         r = pair_row(k)
         if (pr%kind == pair_r) then
-          step%f(:, k) = lam(r:r + 1)
+          step%f(:, k) = work%lam(r:r + 1)
           step%normal(k) = 0.0_wp
           step%couple(k) = 0.0_wp
         else
-          ! rows: couple lam(r) and normal force lam(r+1)*n on the block
+          ! rows: couple lambda(r) and normal force lambda(r+1)*n on the block
           s = perp(rotate(pr%u, turn_of(step%q, pr%guide)))
           if (pr%guide == pr%b) then
-            step%normal(k) = lam(r + 1)
-            step%couple(k) = lam(r)
+            step%normal(k) = work%lam(r + 1)
+            step%couple(k) = work%lam(r)
           else
-            step%normal(k) = -lam(r + 1)
-            step%couple(k) = -lam(r)
+            step%normal(k) = -work%lam(r + 1)
+            step%couple(k) = -work%lam(r)
           end if
           step%f(:, k) = step%normal(k) * s
         end if
@@ -734,33 +733,38 @@ contains
     !GCC$ novector
     do d = 1, size(mech%drives)
       associate (pr => mech%pairs(mech%drives(d)%pair))
-        step%effort(d) = lam(drive_row(mech, d))
+        step%effort(d) = work%lam(drive_row(mech, d))
         if (pr%kind == pair_p .and. pr%guide == pr%a) step%effort(d) = -step%effort(d)
       end associate
     end do
 
+    ! the second opinion: the course's group method, which shares no equation with the above
+    call linkage_free_body(mech, fval, mval, step, work, work%f2, work%normal2, work%couple2, work%effort2, error)
+    if (allocated(error)) return
+    step%solver_gap = linkage_reaction_gap(mech, step, work%f2, work%normal2, work%couple2, work%effort2)
+
     ! self-check 1: every link's equilibrium with the physical forces at their points
-    allocate (bal(n))
+    work%bal(:) = link_balance_t()
     !GCC$ novector
     do i = 1, n
       ref = step%q(3 * i - 2:3 * i - 1)
       associate (lk => mech%links(i))
         call link_point_state(mech, step%q, step%qd, step%qdd, i, lk%s, s, vs, as)
-        call balance_add_force(bal(i), ref, s, lk%m * mech%gravity)
-        call balance_add_force(bal(i), ref, s, -lk%m * as)
-        call balance_add_couple(bal(i), -lk%j * step%qdd(3 * i))
+        call balance_add_force(work%bal(i), ref, s, lk%m * mech%gravity)
+        call balance_add_force(work%bal(i), ref, s, -lk%m * as)
+        call balance_add_couple(work%bal(i), -lk%j * step%qdd(3 * i))
       end associate
     end do
     !GCC$ novector
     do k = 1, size(mech%forces)
       associate (fc => mech%forces(k))
         s = point_position(mech, step%q, fc%link, fc%at)
-        call balance_add_force(bal(fc%link), step%q(3 * fc%link - 2:3 * fc%link - 1), s, fval(k) * force_dir(fc))
+        call balance_add_force(work%bal(fc%link), step%q(3 * fc%link - 2:3 * fc%link - 1), s, fval(k) * force_dir(fc))
       end associate
     end do
     !GCC$ novector
     do k = 1, size(mech%moment_link)
-      call balance_add_couple(bal(mech%moment_link(k)), mval(k))
+      call balance_add_couple(work%bal(mech%moment_link(k)), mval(k))
     end do
     !GCC$ novector
     do k = 1, size(mech%pairs)
@@ -768,12 +772,12 @@ contains
         if (pr%kind == pair_r) then
           ! each link's own coordinates of the joint (they differ by Newton's residual, whose
           ! lever would otherwise show in the moments of a link whose loads all act there)
-          call add_on(bal, pr%a, point_position(mech, step%q, pr%a, pr%at), step%f(:, k), 0.0_wp)
-          call add_on(bal, pr%b, point_position(mech, step%q, pr%b, pr%at), -step%f(:, k), 0.0_wp)
+          call add_on(work%bal, pr%a, point_position(mech, step%q, pr%a, pr%at), step%f(:, k), 0.0_wp)
+          call add_on(work%bal, pr%b, point_position(mech, step%q, pr%b, pr%at), -step%f(:, k), 0.0_wp)
         else
           s = point_position(mech, step%q, pr%a + pr%b - pr%guide, pr%at)
-          call add_on(bal, pr%a, s, step%f(:, k), step%couple(k))
-          call add_on(bal, pr%b, s, -step%f(:, k), -step%couple(k))
+          call add_on(work%bal, pr%a, s, step%f(:, k), step%couple(k))
+          call add_on(work%bal, pr%b, s, -step%f(:, k), -step%couple(k))
         end if
       end associate
     end do
@@ -781,17 +785,17 @@ contains
     do d = 1, size(mech%drives)
       associate (pr => mech%pairs(mech%drives(d)%pair))
         if (pr%kind == pair_r) then
-          call add_on(bal, pr%a, [0.0_wp, 0.0_wp], [0.0_wp, 0.0_wp], step%effort(d))
-          call add_on(bal, pr%b, [0.0_wp, 0.0_wp], [0.0_wp, 0.0_wp], -step%effort(d))
+          call add_on(work%bal, pr%a, [0.0_wp, 0.0_wp], [0.0_wp, 0.0_wp], step%effort(d))
+          call add_on(work%bal, pr%b, [0.0_wp, 0.0_wp], [0.0_wp, 0.0_wp], -step%effort(d))
         else
           s = point_position(mech, step%q, pr%a + pr%b - pr%guide, pr%at)
           vs = rotate(pr%u, turn_of(step%q, pr%guide)) * step%effort(d)
-          call add_on(bal, pr%a, s, vs, 0.0_wp)
-          call add_on(bal, pr%b, s, -vs, 0.0_wp)
+          call add_on(work%bal, pr%a, s, vs, 0.0_wp)
+          call add_on(work%bal, pr%b, s, -vs, 0.0_wp)
         end if
       end associate
     end do
-    step%residual = equilibrium_residual(bal)
+    step%residual = equilibrium_residual(work%bal)
 
     ! self-check 2: each drive's effort by virtual work (the velocity analogue of that drive)
     step%mismatch = 0.0_wp
@@ -800,9 +804,9 @@ contains
       power = 0.0_wp
       terms = 0.0_wp
       !GCC$ novector
-      do i = 1, size(gen)
-        power = power - gen(i) * work%v(i, d)
-        terms = terms + abs(gen(i) * work%v(i, d))
+      do i = 1, size(work%gen)
+        power = power - work%gen(i) * work%v(i, d)
+        terms = terms + abs(work%gen(i) * work%v(i, d))
       end do
       associate (pr => mech%pairs(mech%drives(d)%pair))
         ! the effort acts on link a; for a stroke whose guide is on a, the stroke grows as a
@@ -830,21 +834,265 @@ contains
     end function force_dir
   end subroutine linkage_statics
 
+  !> The reactions by the course's group method, independently of the Lagrange form: every
+  !> link a free body (its own loads: gravity, d'Alembert's force -m a_S and moment -J_S eps,
+  !> the external forces and moments; the pair forces at the joints), three equations per
+  !> link (the forces' sum, the moments about its centre of mass), the units of the
+  !> structural analysis solved one by one from the last group to the input units, each with
+  !> the forces of the groups solved before it. The unknowns of a unit: the force of each of
+  !> its turning pairs (on link a from b, 2 components), the normal force and couple of each
+  !> sliding pair (on a: the force along the guide's normal at the block's point), the effort
+  !> of each drive (on a). Results as linkage_step_t's f, normal, couple, effort.
+  pure subroutine linkage_free_body(mech, fval, mval, step, work, f, normal, couple, effort, error)
+    !> The linkage.
+    type(linkage_t), intent(in) :: mech
+    !> Force magnitudes (N) and moments (N*m) of the step.
+    real(wp), intent(in) :: fval(:), mval(:)
+    !> The step's poses q, velocities qd and accelerations qdd.
+    type(linkage_step_t), intent(in) :: step
+    !> Workspace.
+    type(linkage_work_t), intent(inout) :: work
+    !> Force on link a from b of every pair, N (2 x pairs).
+    real(wp), intent(out) :: f(:, :)
+    !> Sliding pairs: the normal force on a (N) and the couple on a (N*m); 0 for turning pairs.
+    real(wp), intent(out) :: normal(:), couple(:)
+    !> Effort of every drive on link a: moment (N*m) or force along the guide (N).
+    real(wp), intent(out) :: effort(:)
+    type(error_t), allocatable, intent(out) :: error
+    real(wp) :: sv(2), vs(2), as(2), w(2), g(2, 2), h(2), pa(2), pb(2)
+    integer :: i, j, k, d, c, r, u, nu, np
+    f = 0.0_wp
+    normal = 0.0_wp
+    couple = 0.0_wp
+    effort = 0.0_wp
+    call work_ready(mech, work)
+    np = size(mech%pairs)
+    ! each link's own loads: the force and its moment about the centre of mass
+    !GCC$ novector
+    do i = 1, size(mech%links)
+      associate (lk => mech%links(i))
+        call link_point_state(mech, step%q, step%qd, step%qdd, i, lk%s, sv, vs, as)
+        work%cm(:, i) = sv
+        work%load(1:2, i) = lk%m * mech%gravity - lk%m * as
+        work%load(3, i) = -lk%j * step%qdd(3 * i)
+      end associate
+    end do
+    !GCC$ novector
+    do k = 1, size(mech%forces)
+      associate (fc => mech%forces(k))
+        w = fc%dir
+        if (fc%follow) w = rotate(fc%dir, step%q(3 * fc%link))
+        w = fval(k) * w
+        pa = point_position(mech, step%q, fc%link, fc%at)
+        work%load(1:2, fc%link) = work%load(1:2, fc%link) + w
+        work%load(3, fc%link) = work%load(3, fc%link) + cross(pa - work%cm(:, fc%link), w)
+      end associate
+    end do
+    !GCC$ novector
+    do k = 1, size(mech%moment_link)
+      work%load(3, mech%moment_link(k)) = work%load(3, mech%moment_link(k)) + mval(k)
+    end do
+    work%pair_known(:) = .false.
+    work%drive_known(:) = .false.
+    work%local(:) = 0
+    !GCC$ novector
+    do u = size(mech%units), 1, -1
+      associate (unit => mech%units(u))
+        nu = size(unit%rows)
+        !GCC$ novector
+        do j = 1, size(unit%links)
+          work%local(unit%links(j)) = j
+          work%fb(3 * j - 2:3 * j) = -work%load(:, unit%links(j))
+        end do
+        work%fa(1:nu, 1:nu) = 0.0_wp
+        ! the forces known from the groups solved before
+        !GCC$ novector
+        do k = 1, np
+          if (.not. work%pair_known(k)) cycle
+          call pair_effect(k, g, h, pa, pb)
+          call add_known(work, mech%pairs(k)%a, pa, g(:, 1) * f(1, k) + g(:, 2) * f(2, k), 0.0_wp)
+          call add_known(work, mech%pairs(k)%b, pb, -(g(:, 1) * f(1, k) + g(:, 2) * f(2, k)), 0.0_wp)
+          if (mech%pairs(k)%kind == pair_p) then
+            call add_known(work, mech%pairs(k)%a, pa, [0.0_wp, 0.0_wp], couple(k))
+            call add_known(work, mech%pairs(k)%b, pb, [0.0_wp, 0.0_wp], -couple(k))
+          end if
+        end do
+        !GCC$ novector
+        do d = 1, size(mech%drives)
+          if (.not. work%drive_known(d)) cycle
+          call drive_effect(d, w, h(1), pa)
+          call add_known(work, mech%pairs(mech%drives(d)%pair)%a, pa, w * effort(d), h(1) * effort(d))
+          call add_known(work, mech%pairs(mech%drives(d)%pair)%b, pa, -w * effort(d), -h(1) * effort(d))
+        end do
+        ! the unit's unknowns: a column per constraint row of the unit
+        !GCC$ novector
+        do c = 1, nu
+          r = unit%rows(c)
+          if (r <= 2 * np) then
+            if (mod(r, 2) == 0) cycle
+            k = (r + 1) / 2
+            call pair_effect(k, g, h, pa, pb)
+            call add_column(work, c, mech%pairs(k)%a, pa, g(:, 1), h(1))
+            call add_column(work, c, mech%pairs(k)%b, pb, -g(:, 1), -h(1))
+            call add_column(work, c + 1, mech%pairs(k)%a, pa, g(:, 2), h(2))
+            call add_column(work, c + 1, mech%pairs(k)%b, pb, -g(:, 2), -h(2))
+          else
+            d = r - 2 * np
+            call drive_effect(d, w, h(1), pa)
+            call add_column(work, c, mech%pairs(mech%drives(d)%pair)%a, pa, w, h(1))
+            call add_column(work, c, mech%pairs(mech%drives(d)%pair)%b, pa, -w, -h(1))
+          end if
+        end do
+        call factor_dense(work%fa(1:nu, 1:nu), work%flu(1:nu, 1:nu), work%fipiv(1:nu), error)
+        if (allocated(error)) return
+        call solve_factored(work%flu(1:nu, 1:nu), work%fipiv(1:nu), work%fb(1:nu))
+        !GCC$ novector
+        do c = 1, nu
+          r = unit%rows(c)
+          if (r <= 2 * np) then
+            if (mod(r, 2) == 0) cycle
+            k = (r + 1) / 2
+            if (mech%pairs(k)%kind == pair_r) then
+              f(:, k) = work%fb(c:c + 1)
+            else
+              ! column c: the couple, c + 1: the normal force
+              call pair_effect(k, g, h, pa, pb)
+              couple(k) = work%fb(c)
+              normal(k) = work%fb(c + 1)
+              f(:, k) = normal(k) * g(:, 2)
+            end if
+            work%pair_known(k) = .true.
+          else
+            d = r - 2 * np
+            effort(d) = work%fb(c)
+            work%drive_known(d) = .true.
+          end if
+        end do
+        !GCC$ novector
+        do j = 1, size(unit%links)
+          work%local(unit%links(j)) = 0
+        end do
+      end associate
+    end do
+  contains
+    !> A pair's two unknowns as loads on link a: the forces g(:, 1), g(:, 2) and couples h(1),
+    !> h(2) per unit of each; their points on a (pa) and on b (pb). Turning pair: the force's
+    !> components at the joint of each link. Sliding pair: the couple, then the normal force
+    !> at the block's point (for R and P alike: a force in a column times its unknown).
+    pure subroutine pair_effect(k, g, h, pa, pb)
+      integer, intent(in) :: k
+      real(wp), intent(out) :: g(2, 2), h(2), pa(2), pb(2)
+      associate (pr => mech%pairs(k))
+        if (pr%kind == pair_r) then
+          g(:, 1) = [1.0_wp, 0.0_wp]
+          g(:, 2) = [0.0_wp, 1.0_wp]
+          h = 0.0_wp
+          pa = point_position(mech, step%q, pr%a, pr%at)
+          pb = point_position(mech, step%q, pr%b, pr%at)
+        else
+          g(:, 1) = 0.0_wp
+          g(:, 2) = perp(rotate(pr%u, turn_of(step%q, pr%guide)))
+          h = [1.0_wp, 0.0_wp]
+          pa = point_position(mech, step%q, pr%a + pr%b - pr%guide, pr%at)
+          pb = pa
+        end if
+      end associate
+    end subroutine pair_effect
+    !> A drive's effort as a load on link a per unit: the force w at point p and the couple h.
+    pure subroutine drive_effect(d, w, h, p)
+      integer, intent(in) :: d
+      real(wp), intent(out) :: w(2), h, p(2)
+      associate (pr => mech%pairs(mech%drives(d)%pair))
+        if (pr%kind == pair_r) then
+          w = 0.0_wp
+          h = 1.0_wp
+          p = 0.0_wp
+        else
+          w = rotate(pr%u, turn_of(step%q, pr%guide))
+          h = 0.0_wp
+          p = point_position(mech, step%q, pr%a + pr%b - pr%guide, pr%at)
+        end if
+      end associate
+    end subroutine drive_effect
+    !> Force fo at point p and couple co on link i (if it is in the unit): column c of the
+    !> unit's system.
+    pure subroutine add_column(work, c, i, p, fo, co)
+      type(linkage_work_t), intent(inout) :: work
+      integer, intent(in) :: c, i
+      real(wp), intent(in) :: p(2), fo(2), co
+      integer :: e
+      if (i == 0) return
+      e = work%local(i)
+      if (e == 0) return
+      work%fa(3 * e - 2, c) = work%fa(3 * e - 2, c) + fo(1)
+      work%fa(3 * e - 1, c) = work%fa(3 * e - 1, c) + fo(2)
+      work%fa(3 * e, c) = work%fa(3 * e, c) + cross(p - work%cm(:, i), fo) + co
+    end subroutine add_column
+    !> A known force fo at point p and couple co on link i (if it is in the unit): to the
+    !> right-hand side.
+    pure subroutine add_known(work, i, p, fo, co)
+      type(linkage_work_t), intent(inout) :: work
+      integer, intent(in) :: i
+      real(wp), intent(in) :: p(2), fo(2), co
+      integer :: e
+      if (i == 0) return
+      e = work%local(i)
+      if (e == 0) return
+      work%fb(3 * e - 2) = work%fb(3 * e - 2) - fo(1)
+      work%fb(3 * e - 1) = work%fb(3 * e - 1) - fo(2)
+      work%fb(3 * e) = work%fb(3 * e) - cross(p - work%cm(:, i), fo) - co
+    end subroutine add_known
+  end subroutine linkage_free_body
+
+  !> Largest difference of two sets of reactions (the step's and another's: f, normal,
+  !> couple, effort), relative to the step's largest reaction (force components of the
+  !> turning pairs, normal forces and couples of the sliding pairs, efforts).
+  pure real(wp) function linkage_reaction_gap(mech, step, f, normal, couple, effort) result(gap)
+    !> The linkage.
+    type(linkage_t), intent(in) :: mech
+    !> The step's reactions.
+    type(linkage_step_t), intent(in) :: step
+    !> The other reactions.
+    real(wp), intent(in) :: f(:, :), normal(:), couple(:), effort(:)
+    real(wp) :: big, diff
+    integer :: k
+    big = 0.0_wp
+    diff = 0.0_wp
+    !GCC$ novector
+    do k = 1, size(mech%pairs)
+      if (mech%pairs(k)%kind == pair_r) then
+        big = max(big, abs(step%f(1, k)), abs(step%f(2, k)))
+        diff = max(diff, abs(step%f(1, k) - f(1, k)), abs(step%f(2, k) - f(2, k)))
+      else
+        big = max(big, abs(step%normal(k)), abs(step%couple(k)))
+        diff = max(diff, abs(step%normal(k) - normal(k)), abs(step%couple(k) - couple(k)))
+      end if
+    end do
+    !GCC$ novector
+    do k = 1, size(mech%drives)
+      big = max(big, abs(step%effort(k)))
+      diff = max(diff, abs(step%effort(k) - effort(k)))
+    end do
+    gap = 0.0_wp
+    if (big > 0.0_wp) gap = diff / big
+  end function linkage_reaction_gap
+
   !> Generalised applied loads Q (3 per link: force, moment about the reference point):
   !> external forces and moments, gravity, d'Alembert's inertia force and moment.
-  pure function generalised_loads(mech, q, qd, qdd, fval, mval) result(gen)
+  pure subroutine generalised_loads(mech, q, qd, qdd, fval, mval, gen)
     type(linkage_t), intent(in) :: mech
     real(wp), intent(in) :: q(:), qd(:), qdd(:), fval(:), mval(:)
-    real(wp), allocatable :: gen(:)
+    !> Q (3n).
+    real(wp), intent(out) :: gen(:)
     real(wp) :: s(2), vs(2), as(2), f(2), w(2)
     integer :: i, k
-    allocate (gen(size(q)), source=0.0_wp)
+    gen = 0.0_wp
     !GCC$ novector
     do i = 1, size(mech%links)
       associate (lk => mech%links(i))
         call link_point_state(mech, q, qd, qdd, i, lk%s, s, vs, as)
         f = lk%m * (mech%gravity - as)
-        call add_gen(i, s, f)
+        call add_gen(gen, i, s, f)
         gen(3 * i) = gen(3 * i) - lk%j * qdd(3 * i)
       end associate
     end do
@@ -853,7 +1101,7 @@ contains
       associate (fc => mech%forces(k))
         w = fc%dir
         if (fc%follow) w = rotate(fc%dir, q(3 * fc%link))
-        call add_gen(fc%link, point_position(mech, q, fc%link, fc%at), fval(k) * w)
+        call add_gen(gen, fc%link, point_position(mech, q, fc%link, fc%at), fval(k) * w)
       end associate
     end do
     !GCC$ novector
@@ -861,12 +1109,13 @@ contains
       gen(3 * mech%moment_link(k)) = gen(3 * mech%moment_link(k)) + mval(k)
     end do
   contains
-    pure subroutine add_gen(i, p, f)
+    pure subroutine add_gen(gen, i, p, f)
+      real(wp), intent(inout) :: gen(:)
       integer, intent(in) :: i
       real(wp), intent(in) :: p(2), f(2)
       gen(3 * i - 2:3 * i - 1) = gen(3 * i - 2:3 * i - 1) + f
       gen(3 * i) = gen(3 * i) + cross(p - q(3 * i - 2:3 * i - 1), f)
     end subroutine add_gen
-  end function generalised_loads
+  end subroutine generalised_loads
 
 end module kinetostat_linkage

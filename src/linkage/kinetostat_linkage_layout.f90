@@ -37,7 +37,7 @@ module kinetostat_linkage_layout
   !> The same in Russian.
   character(*), parameter :: link_axes_heading_ru = "РЕАКЦИИ В ОСЯХ ЗВЕНА, НА КОТОРОЕ ОНИ "// &
     "ДЕЙСТВУЮТ (СТРОКА 1 ВДОЛЬ ОСИ X ЗВЕНА, СТРОКА 2 ПОПЕРЕК), Н"
-  !> A gap of the global and group-by-group reactions above this (relative) is a warning.
+  !> A gap of the Lagrange and the group method's reactions above this (relative) is a warning.
   real(wp), parameter :: gap_tolerance = 1.0e-9_wp
 
   !> A planar linkage of lower pairs with any number of drives.
@@ -432,7 +432,7 @@ contains
       call table%set_selfcheck(maxval(residual), maxval(mismatch), effort)
       table%mismatch_label = "MAX MISMATCH OF THE DRIVES' EFFORTS, POWER BALANCE"
       if (gap > gap_tolerance) then
-        call table%add_warning("the group-by-group reactions differ from the global solve by "// &
+        call table%add_warning("the group method's reactions differ from the Lagrange multipliers' by "// &
           real_str(gap)//" of the largest reaction")
       end if
     end associate
