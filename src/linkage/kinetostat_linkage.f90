@@ -196,6 +196,9 @@ module kinetostat_linkage
     real(wp), allocatable :: gen(:), lam(:)
     !> Each link's balance (the self-check).
     type(link_balance_t), allocatable :: bal(:)
+    !> cos and sin of each link's turn (2 x 0:n, column 0 the frame's) in the poses of the
+    !> routine that set them last.
+    real(wp), allocatable :: cs(:, :)
     !> jac holds J(q_jac); lu and v hold its factors and analogues.
     logical :: has_jac = .false., factored = .false.
   end type linkage_work_t
@@ -214,13 +217,13 @@ contains
       deallocate (work%phi, work%jac, work%q_jac, work%lu, work%ipiv, work%v, work%jt, work%lut, work%ipivt, work%dx, &
                   work%dq0, work%zero_q)
       deallocate (work%fa, work%flu, work%fb, work%fipiv, work%load, work%cm, work%local, work%pair_known, &
-                  work%drive_known, work%f2, work%normal2, work%couple2, work%effort2, work%gen, work%lam, work%bal)
+                  work%drive_known, work%f2, work%normal2, work%couple2, work%effort2, work%gen, work%lam, work%bal, work%cs)
     end if
     allocate (work%fa(nr, nr), work%flu(nr, nr), work%fb(nr), work%fipiv(nr), work%load(3, size(mech%links)), &
               work%cm(2, size(mech%links)), work%local(size(mech%links)), work%pair_known(size(mech%pairs)), &
               work%drive_known(size(mech%drives)), work%f2(2, size(mech%pairs)), work%normal2(size(mech%pairs)), &
               work%couple2(size(mech%pairs)), work%effort2(size(mech%drives)), work%gen(nr), work%lam(nr), &
-              work%bal(size(mech%links)))
+              work%bal(size(mech%links)), work%cs(2, 0:size(mech%links)))
     allocate (work%phi(nr), work%jac(nr, nr), work%q_jac(nr), work%lu(nr, nr), work%ipiv(nr), &
               work%v(nr, size(mech%drives)), work%jt(nr, nr), work%lut(nr, nr), work%ipivt(nr), work%dx(nr))
     allocate (work%dq0(size(mech%drives)), work%zero_q(nr), source=0.0_wp)
@@ -243,7 +246,7 @@ contains
     end if
     if (.not. work%has_jac) then
       ! J does not depend on the drive values (they enter the constraints only)
-      call constraints(mech, q, work%dq0, work%phi, work%jac)
+      call constraints(mech, q, work%dq0, work%phi, work%jac, work%cs)
       work%q_jac(:) = q
       work%has_jac = .true.
       work%factored = .false.
@@ -337,6 +340,74 @@ contains
     a = qdd(3 * i - 2:3 * i - 1) + qdd(3 * i) * perp(r) - qd(3 * i)**2 * r
   end subroutine link_point_state
 
+  !> cos and sin of every link's turn in poses q (column 0: the frame's, of a turn 0): with
+  !> `turned`, rotate's arithmetic without a cos and a sin per call.
+  pure subroutine set_turns(q, cs)
+    real(wp), intent(in) :: q(:)
+    real(wp), intent(out) :: cs(:, 0:)
+    integer :: i
+    cs(1, 0) = cos(0.0_wp)
+    cs(2, 0) = sin(0.0_wp)
+    !GCC$ novector
+    do i = 1, size(q) / 3
+      cs(1, i) = cos(q(3 * i))
+      cs(2, i) = sin(q(3 * i))
+    end do
+  end subroutine set_turns
+
+  !> `v` turned by link i's turn (0: the frame) from set_turns: rotate(v, turn) bit for bit.
+  pure function turned(cs, i, v) result(w)
+    real(wp), intent(in) :: cs(:, 0:)
+    integer, intent(in) :: i
+    real(wp), intent(in) :: v(2)
+    real(wp) :: w(2)
+    w = [cs(1, i) * v(1) - cs(2, i) * v(2), cs(2, i) * v(1) + cs(1, i) * v(2)]
+  end function turned
+
+  !> point_position with the turns of set_turns.
+  pure function position_cs(mech, q, cs, i, p) result(x)
+    type(linkage_t), intent(in) :: mech
+    real(wp), intent(in) :: q(:), cs(:, 0:)
+    integer, intent(in) :: i
+    real(wp), intent(in) :: p(2)
+    real(wp) :: x(2)
+    if (i == 0) then
+      x = p
+    else
+      x = q(3 * i - 2:3 * i - 1) + turned(cs, i, p - mech%links(i)%c)
+    end if
+  end function position_cs
+
+  !> Lever of point p of link i from its reference point (0 for the frame), m, with the turns
+  !> of set_turns.
+  pure function lever_cs(mech, cs, i, p) result(r)
+    type(linkage_t), intent(in) :: mech
+    real(wp), intent(in) :: cs(:, 0:)
+    integer, intent(in) :: i
+    real(wp), intent(in) :: p(2)
+    real(wp) :: r(2)
+    r = 0.0_wp
+    if (i > 0) r = turned(cs, i, p - mech%links(i)%c)
+  end function lever_cs
+
+  !> link_point_state with the turns of set_turns.
+  pure subroutine state_cs(mech, q, qd, qdd, cs, i, p, x, v, a)
+    type(linkage_t), intent(in) :: mech
+    real(wp), intent(in) :: q(:), qd(:), qdd(:), cs(:, 0:)
+    integer, intent(in) :: i
+    real(wp), intent(in) :: p(2)
+    real(wp), intent(out) :: x(2), v(2), a(2)
+    real(wp) :: r(2)
+    if (i == 0) then
+      x = p; v = 0.0_wp; a = 0.0_wp
+      return
+    end if
+    r = turned(cs, i, p - mech%links(i)%c)
+    x = q(3 * i - 2:3 * i - 1) + r
+    v = qd(3 * i - 2:3 * i - 1) + qd(3 * i) * perp(r)
+    a = qdd(3 * i - 2:3 * i - 1) + qdd(3 * i) * perp(r) - qd(3 * i)**2 * r
+  end subroutine state_cs
+
   !> Angle of link i (0: frame) in pose q, rad.
   pure real(wp) function turn_of(q, i)
     real(wp), intent(in) :: q(:)
@@ -354,26 +425,29 @@ contains
   end subroutine put_j
 
   !> Constraints phi(q) for drive values `dq` and their Jacobian J (rows x 3n).
-  pure subroutine constraints(mech, q, dq, phi, jac)
+  pure subroutine constraints(mech, q, dq, phi, jac, cs)
     type(linkage_t), intent(in) :: mech
     real(wp), intent(in) :: q(:)
     !> Drive values, rad or m.
     real(wp), intent(in) :: dq(:)
     real(wp), intent(out) :: phi(:)
     real(wp), intent(out) :: jac(:, :)
+    !> Scratch: the turns of q (set_turns).
+    real(wp), intent(out) :: cs(:, 0:)
     real(wp) :: ra(2), rb(2), delta(2), n(2), u(2)
     integer :: k, r, a, b, blk, gd, d
     phi = 0.0_wp
     jac = 0.0_wp
+    call set_turns(q, cs)
     !GCC$ novector
     do k = 1, size(mech%pairs)
       associate (pr => mech%pairs(k))
         r = pair_row(k)
         if (pr%kind == pair_r) then
           a = pr%a; b = pr%b
-          ra = lever(mech, q, a, pr%at)
-          rb = lever(mech, q, b, pr%at)
-          phi(r:r + 1) = point_position(mech, q, a, pr%at) - point_position(mech, q, b, pr%at)
+          ra = lever_cs(mech, cs, a, pr%at)
+          rb = lever_cs(mech, cs, b, pr%at)
+          phi(r:r + 1) = position_cs(mech, q, cs, a, pr%at) - position_cs(mech, q, cs, b, pr%at)
           call put_j(jac, r, a, [1.0_wp, 0.0_wp, -ra(2)])
           call put_j(jac, r + 1, a, [0.0_wp, 1.0_wp, ra(1)])
           call put_j(jac, r, b, [-1.0_wp, 0.0_wp, rb(2)])
@@ -384,11 +458,11 @@ contains
           phi(r) = turn_of(q, blk) - turn_of(q, gd)
           call put_j(jac, r, blk, [0.0_wp, 0.0_wp, 1.0_wp])
           call put_j(jac, r, gd, [0.0_wp, 0.0_wp, -1.0_wp])
-          u = rotate(pr%u, turn_of(q, gd))
+          u = turned(cs, gd, pr%u)
           n = perp(u)
-          delta = point_position(mech, q, blk, pr%at) - point_position(mech, q, gd, pr%at)
+          delta = position_cs(mech, q, cs, blk, pr%at) - position_cs(mech, q, cs, gd, pr%at)
           phi(r + 1) = dot_product(n, delta)
-          call slide_row(jac, r + 1, n, blk, gd, lever(mech, q, blk, pr%at), lever(mech, q, gd, pr%at), delta)
+          call slide_row(jac, r + 1, n, blk, gd, lever_cs(mech, cs, blk, pr%at), lever_cs(mech, cs, gd, pr%at), delta)
         end if
       end associate
     end do
@@ -403,10 +477,10 @@ contains
         else
           gd = pr%guide
           blk = pr%a + pr%b - gd
-          u = rotate(pr%u, turn_of(q, gd))
-          delta = point_position(mech, q, blk, pr%at) - point_position(mech, q, gd, pr%at)
+          u = turned(cs, gd, pr%u)
+          delta = position_cs(mech, q, cs, blk, pr%at) - position_cs(mech, q, cs, gd, pr%at)
           phi(r) = dot_product(u, delta) - (dq(d) - mech%drives(d)%q_ref)
-          call slide_row(jac, r, u, blk, gd, lever(mech, q, blk, pr%at), lever(mech, q, gd, pr%at), delta)
+          call slide_row(jac, r, u, blk, gd, lever_cs(mech, cs, blk, pr%at), lever_cs(mech, cs, gd, pr%at), delta)
         end if
       end associate
     end do
@@ -421,40 +495,32 @@ contains
     call put_j(jac, r, gd, [-w(1), -w(2), dot_product(perp(w), delta) - dot_product(w, perp(rgd))])
   end subroutine slide_row
 
-  !> Lever of point p of link i from its reference point in pose q (0 for the frame), m.
-  pure function lever(mech, q, i, p) result(r)
-    type(linkage_t), intent(in) :: mech
-    real(wp), intent(in) :: q(:)
-    integer, intent(in) :: i
-    real(wp), intent(in) :: p(2)
-    real(wp) :: r(2)
-    r = 0.0_wp
-    if (i > 0) r = rotate(p - mech%links(i)%c, q(3 * i))
-  end function lever
-
   !> The velocity-dependent part h of the constraints' second derivative (J qdd + h = drive
   !> accelerations).
-  pure subroutine quadratic_terms(mech, q, qd, zero, h)
+  pure subroutine quadratic_terms(mech, q, qd, zero, h, cs)
     type(linkage_t), intent(in) :: mech
     real(wp), intent(in) :: q(:), qd(:)
     !> Zeros (3n).
     real(wp), intent(in) :: zero(:)
     !> h (rows).
     real(wp), intent(out) :: h(:)
+    !> Scratch: the turns of q (set_turns).
+    real(wp), intent(out) :: cs(:, 0:)
     real(wp) :: ra(2), rb(2), u(2)
     integer :: k, r, d
     h = 0.0_wp
+    call set_turns(q, cs)
     !GCC$ novector
     do k = 1, size(mech%pairs)
       associate (pr => mech%pairs(k))
         r = pair_row(k)
         if (pr%kind == pair_r) then
-          ra = lever(mech, q, pr%a, pr%at)
-          rb = lever(mech, q, pr%b, pr%at)
+          ra = lever_cs(mech, cs, pr%a, pr%at)
+          rb = lever_cs(mech, cs, pr%b, pr%at)
           h(r:r + 1) = -turn_of(qd, pr%a)**2 * ra + turn_of(qd, pr%b)**2 * rb
         else
-          u = rotate(pr%u, turn_of(q, pr%guide))
-          h(r + 1) = slide_h(mech, q, qd, zero, pr, perp(u))
+          u = turned(cs, pr%guide, pr%u)
+          h(r + 1) = slide_h(mech, q, qd, zero, cs, pr, perp(u))
         end if
       end associate
     end do
@@ -462,8 +528,8 @@ contains
     do d = 1, size(mech%drives)
       associate (pr => mech%pairs(mech%drives(d)%pair))
         if (pr%kind == pair_p) then
-          u = rotate(pr%u, turn_of(q, pr%guide))
-          h(drive_row(mech, d)) = slide_h(mech, q, qd, zero, pr, u)
+          u = turned(cs, pr%guide, pr%u)
+          h(drive_row(mech, d)) = slide_h(mech, q, qd, zero, cs, pr, u)
         end if
       end associate
     end do
@@ -472,16 +538,16 @@ contains
   !> h of a sliding row w . delta (delta: the block's point minus the guide's, w turning with
   !> the guide link g): -wg^2 w.delta + 2 wg perp(w).d(delta)/dt + w.(centripetal
   !> accelerations of the block's point minus the guide's).
-  pure real(wp) function slide_h(mech, q, qd, zero, pr, w)
+  pure real(wp) function slide_h(mech, q, qd, zero, cs, pr, w)
     type(linkage_t), intent(in) :: mech
-    real(wp), intent(in) :: q(:), qd(:), zero(:)
+    real(wp), intent(in) :: q(:), qd(:), zero(:), cs(:, 0:)
     type(linkage_pair_t), intent(in) :: pr
     real(wp), intent(in) :: w(2)
     real(wp) :: x1(2), v1(2), a1(2), x2(2), v2(2), a2(2), wg
     integer :: blk
     blk = pr%a + pr%b - pr%guide
-    call link_point_state(mech, q, qd, zero, blk, pr%at, x1, v1, a1)
-    call link_point_state(mech, q, qd, zero, pr%guide, pr%at, x2, v2, a2)
+    call state_cs(mech, q, qd, zero, cs, blk, pr%at, x1, v1, a1)
+    call state_cs(mech, q, qd, zero, cs, pr%guide, pr%at, x2, v2, a2)
     wg = turn_of(qd, pr%guide)
     slide_h = -wg**2 * dot_product(w, x1 - x2) + 2.0_wp * wg * dot_product(perp(w), v1 - v2) + &
               dot_product(w, a1 - a2)
@@ -535,7 +601,7 @@ contains
       converged = .false.
       !GCC$ novector
       do it = 1, max_newton
-        call constraints(mech, q, target, work%phi, work%jac)
+        call constraints(mech, q, target, work%phi, work%jac, work%cs)
         work%q_jac(:) = q
         work%has_jac = .true.
         work%factored = .false.
@@ -586,18 +652,18 @@ contains
     type(linkage_t), intent(in) :: mech
     !> Poses.
     real(wp), intent(in) :: q(:)
-    real(wp), allocatable :: phi(:), jac(:, :), x(:), dq(:)
+    real(wp), allocatable :: phi(:), jac(:, :), x(:), dq(:), cs(:, :)
     real(wp) :: rc, worst
     type(error_t), allocatable :: err
     integer, allocatable :: cols(:)
     integer :: u, i, nr
     nr = linkage_rows(mech)
-    allocate (phi(nr), jac(nr, nr), dq(size(mech%drives)))
+    allocate (phi(nr), jac(nr, nr), dq(size(mech%drives)), cs(2, 0:size(mech%links)))
     !GCC$ novector
     do i = 1, size(mech%drives)
       dq(i) = mech%drives(i)%q_ref
     end do
-    call constraints(mech, q, dq, phi, jac)
+    call constraints(mech, q, dq, phi, jac, cs)
     linkage_worst_unit = 0
     if (.not. allocated(mech%units)) return
     worst = huge(1.0_wp)
@@ -669,7 +735,7 @@ contains
       qd(drive_row(mech, d)) = dv(d)
     end do
     call solve_factored(work%lu, work%ipiv, qd)
-    call quadratic_terms(mech, q, qd, work%zero_q, qdd)
+    call quadratic_terms(mech, q, qd, work%zero_q, qdd, work%cs)
     qdd = -qdd
     !GCC$ novector
     do d = 1, size(mech%drives)
@@ -698,14 +764,14 @@ contains
     n = size(mech%links)
     call work_factored(mech, step%q, work, error)
     if (allocated(error)) return
-    call generalised_loads(mech, step%q, step%qd, step%qdd, fval, mval, work%gen)
+    call generalised_loads(mech, step%q, step%qd, step%qdd, fval, mval, work%gen, work%cs)
     work%jt(:, :) = transpose(work%jac)
     call factor_dense(work%jt, work%lut, work%ipivt, error)
     if (allocated(error)) return
     work%lam(:) = -work%gen
     call solve_factored(work%lut, work%ipivt, work%lam)
 
-    ! physical forces
+    ! physical forces (work%cs: the turns of step%q, from generalised_loads)
     allocate (step%f(2, size(mech%pairs)), step%normal(size(mech%pairs)), step%couple(size(mech%pairs)))
     allocate (step%effort(size(mech%drives)))
     !GCC$ novector
@@ -718,7 +784,7 @@ contains
           step%couple(k) = 0.0_wp
         else
           ! rows: couple lambda(r) and normal force lambda(r+1)*n on the block
-          s = perp(rotate(pr%u, turn_of(step%q, pr%guide)))
+          s = perp(turned(work%cs, pr%guide, pr%u))
           if (pr%guide == pr%b) then
             step%normal(k) = work%lam(r + 1)
             step%couple(k) = work%lam(r)
@@ -744,12 +810,13 @@ contains
     step%solver_gap = linkage_reaction_gap(mech, step, work%f2, work%normal2, work%couple2, work%effort2)
 
     ! self-check 1: every link's equilibrium with the physical forces at their points
+    call set_turns(step%q, work%cs)
     work%bal(:) = link_balance_t()
     !GCC$ novector
     do i = 1, n
       ref = step%q(3 * i - 2:3 * i - 1)
       associate (lk => mech%links(i))
-        call link_point_state(mech, step%q, step%qd, step%qdd, i, lk%s, s, vs, as)
+        call state_cs(mech, step%q, step%qd, step%qdd, work%cs, i, lk%s, s, vs, as)
         call balance_add_force(work%bal(i), ref, s, lk%m * mech%gravity)
         call balance_add_force(work%bal(i), ref, s, -lk%m * as)
         call balance_add_couple(work%bal(i), -lk%j * step%qdd(3 * i))
@@ -758,7 +825,7 @@ contains
     !GCC$ novector
     do k = 1, size(mech%forces)
       associate (fc => mech%forces(k))
-        s = point_position(mech, step%q, fc%link, fc%at)
+        s = position_cs(mech, step%q, work%cs, fc%link, fc%at)
         call balance_add_force(work%bal(fc%link), step%q(3 * fc%link - 2:3 * fc%link - 1), s, fval(k) * force_dir(fc))
       end associate
     end do
@@ -772,10 +839,10 @@ contains
         if (pr%kind == pair_r) then
           ! each link's own coordinates of the joint (they differ by Newton's residual, whose
           ! lever would otherwise show in the moments of a link whose loads all act there)
-          call add_on(work%bal, pr%a, point_position(mech, step%q, pr%a, pr%at), step%f(:, k), 0.0_wp)
-          call add_on(work%bal, pr%b, point_position(mech, step%q, pr%b, pr%at), -step%f(:, k), 0.0_wp)
+          call add_on(work%bal, pr%a, position_cs(mech, step%q, work%cs, pr%a, pr%at), step%f(:, k), 0.0_wp)
+          call add_on(work%bal, pr%b, position_cs(mech, step%q, work%cs, pr%b, pr%at), -step%f(:, k), 0.0_wp)
         else
-          s = point_position(mech, step%q, pr%a + pr%b - pr%guide, pr%at)
+          s = position_cs(mech, step%q, work%cs, pr%a + pr%b - pr%guide, pr%at)
           call add_on(work%bal, pr%a, s, step%f(:, k), step%couple(k))
           call add_on(work%bal, pr%b, s, -step%f(:, k), -step%couple(k))
         end if
@@ -788,8 +855,8 @@ contains
           call add_on(work%bal, pr%a, [0.0_wp, 0.0_wp], [0.0_wp, 0.0_wp], step%effort(d))
           call add_on(work%bal, pr%b, [0.0_wp, 0.0_wp], [0.0_wp, 0.0_wp], -step%effort(d))
         else
-          s = point_position(mech, step%q, pr%a + pr%b - pr%guide, pr%at)
-          vs = rotate(pr%u, turn_of(step%q, pr%guide)) * step%effort(d)
+          s = position_cs(mech, step%q, work%cs, pr%a + pr%b - pr%guide, pr%at)
+          vs = turned(work%cs, pr%guide, pr%u) * step%effort(d)
           call add_on(work%bal, pr%a, s, vs, 0.0_wp)
           call add_on(work%bal, pr%b, s, -vs, 0.0_wp)
         end if
@@ -830,7 +897,7 @@ contains
       type(linkage_force_t), intent(in) :: fc
       real(wp) :: w(2)
       w = fc%dir
-      if (fc%follow) w = rotate(fc%dir, step%q(3 * fc%link))
+      if (fc%follow) w = turned(work%cs, fc%link, fc%dir)
     end function force_dir
   end subroutine linkage_statics
 
@@ -866,12 +933,13 @@ contains
     couple = 0.0_wp
     effort = 0.0_wp
     call work_ready(mech, work)
+    call set_turns(step%q, work%cs)
     np = size(mech%pairs)
     ! each link's own loads: the force and its moment about the centre of mass
     !GCC$ novector
     do i = 1, size(mech%links)
       associate (lk => mech%links(i))
-        call link_point_state(mech, step%q, step%qd, step%qdd, i, lk%s, sv, vs, as)
+        call state_cs(mech, step%q, step%qd, step%qdd, work%cs, i, lk%s, sv, vs, as)
         work%cm(:, i) = sv
         work%load(1:2, i) = lk%m * mech%gravity - lk%m * as
         work%load(3, i) = -lk%j * step%qdd(3 * i)
@@ -881,9 +949,9 @@ contains
     do k = 1, size(mech%forces)
       associate (fc => mech%forces(k))
         w = fc%dir
-        if (fc%follow) w = rotate(fc%dir, step%q(3 * fc%link))
+        if (fc%follow) w = turned(work%cs, fc%link, fc%dir)
         w = fval(k) * w
-        pa = point_position(mech, step%q, fc%link, fc%at)
+        pa = position_cs(mech, step%q, work%cs, fc%link, fc%at)
         work%load(1:2, fc%link) = work%load(1:2, fc%link) + w
         work%load(3, fc%link) = work%load(3, fc%link) + cross(pa - work%cm(:, fc%link), w)
       end associate
@@ -909,7 +977,7 @@ contains
         !GCC$ novector
         do k = 1, np
           if (.not. work%pair_known(k)) cycle
-          call pair_effect(k, g, h, pa, pb)
+          call pair_effect(work%cs, k, g, h, pa, pb)
           call add_known(work, mech%pairs(k)%a, pa, g(:, 1) * f(1, k) + g(:, 2) * f(2, k), 0.0_wp)
           call add_known(work, mech%pairs(k)%b, pb, -(g(:, 1) * f(1, k) + g(:, 2) * f(2, k)), 0.0_wp)
           if (mech%pairs(k)%kind == pair_p) then
@@ -920,7 +988,7 @@ contains
         !GCC$ novector
         do d = 1, size(mech%drives)
           if (.not. work%drive_known(d)) cycle
-          call drive_effect(d, w, h(1), pa)
+          call drive_effect(work%cs, d, w, h(1), pa)
           call add_known(work, mech%pairs(mech%drives(d)%pair)%a, pa, w * effort(d), h(1) * effort(d))
           call add_known(work, mech%pairs(mech%drives(d)%pair)%b, pa, -w * effort(d), -h(1) * effort(d))
         end do
@@ -931,14 +999,14 @@ contains
           if (r <= 2 * np) then
             if (mod(r, 2) == 0) cycle
             k = (r + 1) / 2
-            call pair_effect(k, g, h, pa, pb)
+            call pair_effect(work%cs, k, g, h, pa, pb)
             call add_column(work, c, mech%pairs(k)%a, pa, g(:, 1), h(1))
             call add_column(work, c, mech%pairs(k)%b, pb, -g(:, 1), -h(1))
             call add_column(work, c + 1, mech%pairs(k)%a, pa, g(:, 2), h(2))
             call add_column(work, c + 1, mech%pairs(k)%b, pb, -g(:, 2), -h(2))
           else
             d = r - 2 * np
-            call drive_effect(d, w, h(1), pa)
+            call drive_effect(work%cs, d, w, h(1), pa)
             call add_column(work, c, mech%pairs(mech%drives(d)%pair)%a, pa, w, h(1))
             call add_column(work, c, mech%pairs(mech%drives(d)%pair)%b, pa, -w, -h(1))
           end if
@@ -956,7 +1024,7 @@ contains
               f(:, k) = work%fb(c:c + 1)
             else
               ! column c: the couple, c + 1: the normal force
-              call pair_effect(k, g, h, pa, pb)
+              call pair_effect(work%cs, k, g, h, pa, pb)
               couple(k) = work%fb(c)
               normal(k) = work%fb(c + 1)
               f(:, k) = normal(k) * g(:, 2)
@@ -979,7 +1047,8 @@ contains
     !> h(2) per unit of each; their points on a (pa) and on b (pb). Turning pair: the force's
     !> components at the joint of each link. Sliding pair: the couple, then the normal force
     !> at the block's point (for R and P alike: a force in a column times its unknown).
-    pure subroutine pair_effect(k, g, h, pa, pb)
+    pure subroutine pair_effect(cs, k, g, h, pa, pb)
+      real(wp), intent(in) :: cs(:, 0:)
       integer, intent(in) :: k
       real(wp), intent(out) :: g(2, 2), h(2), pa(2), pb(2)
       associate (pr => mech%pairs(k))
@@ -987,19 +1056,20 @@ contains
           g(:, 1) = [1.0_wp, 0.0_wp]
           g(:, 2) = [0.0_wp, 1.0_wp]
           h = 0.0_wp
-          pa = point_position(mech, step%q, pr%a, pr%at)
-          pb = point_position(mech, step%q, pr%b, pr%at)
+          pa = position_cs(mech, step%q, cs, pr%a, pr%at)
+          pb = position_cs(mech, step%q, cs, pr%b, pr%at)
         else
           g(:, 1) = 0.0_wp
-          g(:, 2) = perp(rotate(pr%u, turn_of(step%q, pr%guide)))
+          g(:, 2) = perp(turned(cs, pr%guide, pr%u))
           h = [1.0_wp, 0.0_wp]
-          pa = point_position(mech, step%q, pr%a + pr%b - pr%guide, pr%at)
+          pa = position_cs(mech, step%q, cs, pr%a + pr%b - pr%guide, pr%at)
           pb = pa
         end if
       end associate
     end subroutine pair_effect
     !> A drive's effort as a load on link a per unit: the force w at point p and the couple h.
-    pure subroutine drive_effect(d, w, h, p)
+    pure subroutine drive_effect(cs, d, w, h, p)
+      real(wp), intent(in) :: cs(:, 0:)
       integer, intent(in) :: d
       real(wp), intent(out) :: w(2), h, p(2)
       associate (pr => mech%pairs(mech%drives(d)%pair))
@@ -1008,9 +1078,9 @@ contains
           h = 1.0_wp
           p = 0.0_wp
         else
-          w = rotate(pr%u, turn_of(step%q, pr%guide))
+          w = turned(cs, pr%guide, pr%u)
           h = 0.0_wp
-          p = point_position(mech, step%q, pr%a + pr%b - pr%guide, pr%at)
+          p = position_cs(mech, step%q, cs, pr%a + pr%b - pr%guide, pr%at)
         end if
       end associate
     end subroutine drive_effect
@@ -1079,18 +1149,21 @@ contains
 
   !> Generalised applied loads Q (3 per link: force, moment about the reference point):
   !> external forces and moments, gravity, d'Alembert's inertia force and moment.
-  pure subroutine generalised_loads(mech, q, qd, qdd, fval, mval, gen)
+  pure subroutine generalised_loads(mech, q, qd, qdd, fval, mval, gen, cs)
     type(linkage_t), intent(in) :: mech
     real(wp), intent(in) :: q(:), qd(:), qdd(:), fval(:), mval(:)
     !> Q (3n).
     real(wp), intent(out) :: gen(:)
+    !> Scratch: the turns of q (set_turns).
+    real(wp), intent(out) :: cs(:, 0:)
     real(wp) :: s(2), vs(2), as(2), f(2), w(2)
     integer :: i, k
     gen = 0.0_wp
+    call set_turns(q, cs)
     !GCC$ novector
     do i = 1, size(mech%links)
       associate (lk => mech%links(i))
-        call link_point_state(mech, q, qd, qdd, i, lk%s, s, vs, as)
+        call state_cs(mech, q, qd, qdd, cs, i, lk%s, s, vs, as)
         f = lk%m * (mech%gravity - as)
         call add_gen(gen, i, s, f)
         gen(3 * i) = gen(3 * i) - lk%j * qdd(3 * i)
@@ -1100,8 +1173,8 @@ contains
     do k = 1, size(mech%forces)
       associate (fc => mech%forces(k))
         w = fc%dir
-        if (fc%follow) w = rotate(fc%dir, q(3 * fc%link))
-        call add_gen(gen, fc%link, point_position(mech, q, fc%link, fc%at), fval(k) * w)
+        if (fc%follow) w = turned(cs, fc%link, fc%dir)
+        call add_gen(gen, fc%link, position_cs(mech, q, cs, fc%link, fc%at), fval(k) * w)
       end associate
     end do
     !GCC$ novector
