@@ -598,8 +598,8 @@ contains
             call table%echo_real("  START", deck%start(k), "deg")
             call table%echo_real("  STEP", deck%step(k), "deg")
           end if
-          call table%echo_real("  OMEGA", deck%omega(k), "rad/s")
-          call table%echo_real("  EPS", deck%eps(k), "rad/s^2")
+          call echo_rate(table, "  OMEGA", deck%omega(k), deck%omega_column(k), "rad/s")
+          call echo_rate(table, "  EPS", deck%eps(k), deck%eps_column(k), "rad/s^2")
         else
           if (deck%listed(k)) then
             call table%echo_array("  VALUES", deck%values(:, k), "m")
@@ -607,8 +607,8 @@ contains
             call table%echo_real("  START", deck%start(k), "m")
             call table%echo_real("  STEP", deck%step(k), "m")
           end if
-          call table%echo_real("  OMEGA", deck%omega(k), "m/s")
-          call table%echo_real("  EPS", deck%eps(k), "m/s^2")
+          call echo_rate(table, "  OMEGA", deck%omega(k), deck%omega_column(k), "m/s")
+          call echo_rate(table, "  EPS", deck%eps(k), deck%eps_column(k), "m/s^2")
         end if
       end do
       !GCC$ novector
@@ -643,6 +643,18 @@ contains
         call table%echo_real("  VALUE", value, unit)
       end if
     end subroutine echo_schedule
+    !> A drive's speed or acceleration: the constant, or its column of step_values.
+    pure subroutine echo_rate(table, name, value, column, unit)
+      type(step_table_t), intent(inout) :: table
+      character(*), intent(in) :: name, unit
+      real(wp), intent(in) :: value
+      integer, intent(in) :: column
+      if (column > 0) then
+        call table%echo_int(name//"_COLUMN", column, "")
+      else
+        call table%echo_real(name, value, unit)
+      end if
+    end subroutine echo_rate
   end subroutine echo_deck
 
   !> The RESULTS block: per step a line of the inputs, the pairs' magnitudes and the efforts,
