@@ -9,7 +9,7 @@ module test_foundation
     deck_context_t, unset_real, unset_bits, is_set, is_whole_in, require_whole, require_set, &
     steps_over_turn, deck_array_capacities, max_deck_array, deck_line_count, deck_line, deck_line_length
   use kinetostat_vec2, only: angle_360_deg, angle_180_deg, cross, perp, rotate, snap_noise
-  use kinetostat_selfcheck, only: link_residual, power_mismatch, link_balance_t, balance_add_force, &
+  use kinetostat_selfcheck, only: link_balance, power_mismatch, link_balance_t, balance_add_force, &
     equilibrium_residual
   use kinetostat_lapack, only: solve_dense
   use test_harness, only: test_counts_t, check_close, check_true, operator(.dot.)
@@ -41,12 +41,12 @@ contains
     call check_close(t, "snap_noise zeroes", 0.0_wp, sum(abs(snap_noise([1.0e-13_wp, 0.0_wp], 1.0e-12_wp))), 0.0_wp, 0.0_wp)
 
     ! residual of a balanced lever: 2 N at x=1 up, 1 N at x=2 down, 1 N at 0 down
-    r = link_residual(reshape([0.0_wp, 0.0_wp, 1.0_wp, 0.0_wp, 2.0_wp, 0.0_wp], [2, 3]), &
-                      reshape([0.0_wp, -1.0_wp, 0.0_wp, 2.0_wp, 0.0_wp, -1.0_wp], [2, 3]), [real(wp) ::])
+    r = equilibrium_residual([link_balance(reshape([0.0_wp, 0.0_wp, 1.0_wp, 0.0_wp, 2.0_wp, 0.0_wp], [2, 3]), &
+                      reshape([0.0_wp, -1.0_wp, 0.0_wp, 2.0_wp, 0.0_wp, -1.0_wp], [2, 3]), [real(wp) ::])])
     call check_close(t, "balanced lever residual", 0.0_wp, r, 0.0_wp, tol)
     ! the same with a missing 1 N*m couple: moment residual 1 / (2 + 2) = 0.25
-    r = link_residual(reshape([0.0_wp, 0.0_wp, 1.0_wp, 0.0_wp, 2.0_wp, 0.0_wp], [2, 3]), &
-                      reshape([0.0_wp, -1.0_wp, 0.0_wp, 2.0_wp, 0.0_wp, -1.0_wp], [2, 3]), [1.0_wp])
+    r = equilibrium_residual([link_balance(reshape([0.0_wp, 0.0_wp, 1.0_wp, 0.0_wp, 2.0_wp, 0.0_wp], [2, 3]), &
+                      reshape([0.0_wp, -1.0_wp, 0.0_wp, 2.0_wp, 0.0_wp, -1.0_wp], [2, 3]), [1.0_wp])])
     call check_close(t, "unbalanced lever residual", 1.0_wp / 5.0_wp, r, tol, tol)
     call check_close(t, "power mismatch scaled by max(|q|,scale)", 0.01_wp / 1.01_wp, &
                      power_mismatch(1.01_wp, 1.0_wp, 1.0_wp), 1.0e-12_wp, 0.0_wp)

@@ -10,17 +10,15 @@ module kinetostat_assur_deck
   use kinetostat_kinds, only: wp, g_default, deg_to_rad, rad_to_deg
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str, number_str, lower, upper
-  use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_deck, only: longest_quoted, &
-    check_namelist_syntax, write_template_lines, deck_context_t, unset_real, unset_bits, max_deck_array, &
+    begin_group, deck_context_t, unset_real, unset_bits, max_deck_array, &
     deck_array_capacities, deck_source_t, namelist_probe_t, deck_error, require_all_set, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn, &
     is_whole_in, require_whole
   use kinetostat_vec2, only: unit_at, rotate, magnitude, cross
-  use kinetostat_assur_kinematics, only: link_state_t, point_state_t, point_on, dyad_pose_t, dyad_geometry_t, kind_names, &
-    kind_has_mode, &
-    frame_state, crank_state, dyad_pose, pose_ok, &
-    kind_rrr, kind_rrp, kind_rpr, kind_prp, kind_rpp
+  use kinetostat_assur_kinematics, only: link_state_t, point_state_t, point_on, dyad_pose_t, kind_names, &
+    kind_has_mode, frame_state, crank_state, set_dyad_pose, pose_ok, kind_rrr, kind_rrp, kind_rpr, &
+    kind_prp, kind_rpp
   use kinetostat_assur_statics, only: pair_is_prismatic
   use kinetostat_assur, only: assur_mech_t, assur_link_t, assur_dyad_t, assur_force_t, link_a, link_b, &
     output_pair_of, assur_extreme, assur_kinematics, link_position
@@ -29,7 +27,7 @@ module kinetostat_assur_deck
   use kinetostat_dynamics_deck, only: dynamics_deck_t, read_dynamics_settings, require_one_turn
   implicit none
   private
-  public :: assur_deck_t, read_assur_deck, write_assur_template, assur_window
+  public :: assur_deck_t, read_assur_deck, assur_template, assur_window
   public :: load_schedule_t, load_constant, load_window, load_column, load_table
   public :: resist_none, resist_moment, resist_force
   public :: assur_phi1_deg, assur_omega1_steps, assur_omega1, assur_eps1, assur_motion_sign
@@ -266,7 +264,7 @@ module kinetostat_assur_deck
   end type assur_deck_t
 
   !> Template deck: the slider-crank of data/assur_slider_crank.nml.
-  character(*), parameter :: template_lines(*) = [character(len=100) :: &
+  character(*), parameter :: assur_template(*) = [character(len=100) :: &
     "! kinetostat deck: generic one-DOF linkage from class-II Assur groups (dyads).", &
     "! Offset slider-crank = frame 0 + crank 1 + dyad RRP (rod 2, slider 3).", &
     "! Global frame: origin anywhere, angles CCW from +x; gravity along gravity_angle.", &
@@ -296,13 +294,6 @@ module kinetostat_assur_deck
     "/"]
 
 contains
-
-  !> The commented template deck.
-  pure subroutine write_assur_template(out)
-    !> Where the lines go.
-    type(text_buffer_t), intent(inout) :: out
-    call write_template_lines(out, template_lines)
-  end subroutine write_assur_template
 
   !> The dyads' kinds by name, as the docs name them: `dyad(i)%kind = RRR` or `'RRR'` (any
   !> case; RRR RRP RPR PRP RPP) becomes the code 1..5, blank-padded to the same length (the
@@ -447,8 +438,8 @@ contains
       step_values, angles_signed, components, drive_dyad, drive_pair, output_link, phi1, start_at, crank_f, crank_r, &
       coordinates, phi_ref, dynamics, delta, j_rotor, j_flywheel
 
-    ctx%path = source%path
-    ctx%group = group_name
+    call begin_group(source, group_name, ctx, error)
+    if (allocated(error)) return
     allocate (title)
     dynamics = ""; delta = unset_real; j_rotor = unset_real; j_flywheel = unset_real
     title = ""
@@ -465,8 +456,6 @@ contains
     allocate (omega1_step(capacity(1)), eps1_step(capacity(2)), step_values(capacity(3)), phi1(capacity(4)), &
               source=unset_real)
 
-    call check_namelist_syntax(source, ctx%group, error)
-    if (allocated(error)) return
     coded%path = source%path
     allocate (character(len=len(source%records)) :: coded%records(size(source%records)))
     coded%records(:) = source%records(:)
@@ -998,7 +987,7 @@ contains
     at_ref = " at the reference position (phi_ref = "//real_str(phi_ref)//" deg)"
     associate (dy => mech%dyads(d))
       kind = dy%geom%kind
-      pose = dyad_pose(dy%geom, ref(dy%on(1)), dy%at(:, 1), dy%ang(1), ref(dy%on(2)), dy%at(:, 2), dy%ang(2))
+      call set_dyad_pose(dy%geom, ref(dy%on(1)), dy%at(:, 1), dy%ang(1), ref(dy%on(2)), dy%at(:, 2), dy%ang(2), pose)
     end associate
     if (pose%status /= pose_ok) then
       call deck_error(ctx, "dyad("//int_str(d)//")", "cannot be assembled"//at_ref, error)

@@ -22,7 +22,7 @@ module kinetostat_assur_kinematics
   implicit none
   private
   public :: link_state_t, point_state_t, dyad_geometry_t, dyad_pose_t
-  public :: point_on, crank_state, frame_state, dyad_pose, set_dyad_pose
+  public :: point_on, crank_state, frame_state, set_dyad_pose
   public :: kind_rrr, kind_rrp, kind_rpr, kind_prp, kind_rpp, kind_names, kind_has_mode
   public :: pose_ok, pose_no_assembly, pose_dead
 
@@ -146,14 +146,7 @@ contains
     !> d2 th / d phi1^2.
     real(wp), intent(in) :: eq
     type(link_state_t) :: ls
-    ls%o = o
-    ls%th = th
-    ls%vo = vo
-    ls%u = u
-    ls%ao = ao
-    ls%eq = eq
-    ls%cos_th = cos(th)
-    ls%sin_th = sin(th)
+    ls = link_state_t(o=o, th=th, vo=vo, u=u, ao=ao, eq=eq, cos_th=cos(th), sin_th=sin(th))
   end function link_frame
 
   !> A point given in a link's coordinates `r` (m), with its analogues.
@@ -202,26 +195,6 @@ contains
   !> Position analysis of a dyad: `q1` and `q3` are the frames of the links its outer pairs
   !> attach to, `at1`/`at3` the attachment points in those links' coordinates (m) and
   !> `ang1`/`ang3` the guide directions relative to those links (rad, prismatic outer pairs).
-  pure function dyad_pose(g, q1, at1, ang1, q3, at3, ang3) result(pose)
-    !> Dyad geometry.
-    type(dyad_geometry_t), intent(in) :: g
-    !> Frame of the link pair 1 attaches to.
-    type(link_state_t), intent(in) :: q1
-    !> Attachment point on it (pin, or a point of the guide line), m.
-    real(wp), intent(in) :: at1(2)
-    !> Guide direction on it (prismatic pair 1 only), rad.
-    real(wp), intent(in) :: ang1
-    !> Frame of the link pair 3 attaches to.
-    type(link_state_t), intent(in) :: q3
-    !> Attachment point on it, m.
-    real(wp), intent(in) :: at3(2)
-    !> Guide direction on it (prismatic pair 3 only), rad.
-    real(wp), intent(in) :: ang3
-    type(dyad_pose_t) :: pose
-    call set_dyad_pose(g, q1, at1, ang1, q3, at3, ang3, pose)
-  end function dyad_pose
-
-  !> dyad_pose into `pose` in place (the per-step path: no temporary pose copied).
   pure subroutine set_dyad_pose(g, q1, at1, ang1, q3, at3, ang3, pose)
     !> Dyad geometry.
     type(dyad_geometry_t), intent(in) :: g

@@ -12,7 +12,7 @@ module kinetostat_assur_layout
   use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_component, col_length, &
     step_span, &
     col_moment, col_other, col_flag, col_ratio
-  use kinetostat_format, only: fixed_field, display_width
+  use kinetostat_format, only: pad_left, fixed_field, display_width
   use kinetostat_labels, only: lang_ru
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_mechanism, only: mechanism_t
@@ -29,7 +29,7 @@ module kinetostat_assur_layout
     put_dynamics_figures, note_drive_deviation, note_constant_speed_cost
   use kinetostat_assur_dynamics, only: assur_source_t, assur_cycle, assur_motion
   use kinetostat_assur_friction, only: friction_step_t, assur_friction_step
-  use kinetostat_assur_deck, only: assur_deck_t, read_assur_deck, write_assur_template, load_schedule_t, load_constant, &
+  use kinetostat_assur_deck, only: assur_deck_t, read_assur_deck, assur_template, load_schedule_t, load_constant, &
     load_column, assur_phi1_deg, assur_omega1_steps, assur_eps1, assur_motion_sign, assur_load_value, &
     assur_load_steps, resist_none
   implicit none
@@ -77,12 +77,7 @@ module kinetostat_assur_layout
     !> The steady cycle (dynamics = 'steady' or 'given').
     type(cycle_t) :: cycle
   contains
-    procedure :: read_deck
-    procedure :: solve
-    procedure :: write_results
-    procedure :: sketch
-    procedure :: force_plan
-    procedure :: mass_model
+    procedure :: read_deck, solve, write_results, sketch, force_plan, mass_model
   end type assur_mechanism_t
 
 contains
@@ -92,7 +87,7 @@ contains
     !> The mechanism.
     class(mechanism_t), allocatable, intent(out) :: mech
     allocate (assur_mechanism_t :: mech)
-    mech%template_writer => write_assur_template
+    mech%template = assur_template
     mech%title_en = "KINETOSTAT  ASSUR  FORCE ANALYSIS OF A LINKAGE OF CLASS-II ASSUR GROUPS"
     mech%title_ru = "KINETOSTAT  ASSUR  СИЛОВОЙ РАСЧЕТ МЕХАНИЗМА ИЗ ГРУПП АССУРА II" // &
       " КЛАССА"
@@ -1355,13 +1350,13 @@ contains
         deg = "deg"
       end if
       line1 = adjustr(pad9("PHI1"))
-      line2 = right(deg, phi_width)
+      line2 = pad_left(deg, phi_width)
       do c = first + 1, last - 3
-        line1 = line1//right("P_"//table%columns(c)%name(8:), field_width)
-        line2 = line2//right(watt, field_width)
+        line1 = line1//pad_left("P_"//table%columns(c)%name(8:), field_width)
+        line2 = line2//pad_left(watt, field_width)
       end do
-      line1 = line1//right("P_LOSS", field_width)//right(upper(zero), field_width)//right("ETA", field_width)
-      line2 = line2//right(watt, field_width)//right(unit, field_width)
+      line1 = line1//pad_left("P_LOSS", field_width)//pad_left(upper(zero), field_width)//pad_left("ETA", field_width)
+      line2 = line2//pad_left(watt, field_width)//pad_left(unit, field_width)
       call out%put(line1)
       call out%put(trim(line2))
     end if
@@ -1438,11 +1433,11 @@ contains
         name = full_name(1:field_width)
         prismatic = assur_pair_prismatic(self%deck, ip)
         if (link_axes) then
-          line1 = line1//right(fit(trim(name)//"_ALONG"), field_width)
-          line2 = line2//right(fit(trim(name)//"_ACROSS"), field_width)
+          line1 = line1//pad_left(fit(trim(name)//"_ALONG"), field_width)
+          line2 = line2//pad_left(fit(trim(name)//"_ACROSS"), field_width)
         else
           line1 = line1//adjustr(name)
-          line2 = line2//right(trim(name)//"G", field_width)
+          line2 = line2//pad_left(trim(name)//"G", field_width)
         end if
         line3 = line3//p_label(name, "N", prismatic)
         line4 = line4//p_label(name, "M", prismatic)
@@ -1461,21 +1456,21 @@ contains
           call out%put(line4)
         end if
       end if
-      line1 = right(deg, phi_width)
+      line1 = pad_left(deg, phi_width)
       line2 = repeat(" ", phi_width)
       do ip = 1, np
-        line1 = line1//right(newton, field_width)
+        line1 = line1//pad_left(newton, field_width)
         if (link_axes) then
-          line2 = line2//right(newton, field_width)
+          line2 = line2//pad_left(newton, field_width)
         else
-          line2 = line2//right(deg, field_width)
+          line2 = line2//pad_left(deg, field_width)
         end if
       end do
       if (drive) then
-        call out%put(trim(line1//right(newton, field_width)))
-        call out%put(trim(line2//right(metre, field_width)))
+        call out%put(trim(line1//pad_left(newton, field_width)))
+        call out%put(trim(line2//pad_left(metre, field_width)))
       else
-        call out%put(trim(line1//right(newton_m, field_width)))
+        call out%put(trim(line1//pad_left(newton_m, field_width)))
         call out%put(trim(line2))
       end if
     end if
@@ -1527,13 +1522,6 @@ contains
     if (self%deck%friction_on) call write_friction_results(self%deck, table, lang, later)
   end subroutine write_results
 
-  !> `text` right-justified in `width` display characters.
-  pure function right(text, width) result(field)
-    character(*), intent(in) :: text
-    integer, intent(in) :: width
-    character(len=:), allocatable :: field
-    field = repeat(" ", max(0, width - display_width(text)))//text
-  end function right
 
   !> `text`, cut to the width of a field.
   pure function fit(text) result(field)

@@ -9,7 +9,7 @@ module kinetostat_cam
   use kinetostat_kinds, only: wp
   use kinetostat_error, only: error_t
   use kinetostat_vec2, only: cross
-  use kinetostat_selfcheck, only: link_residual
+  use kinetostat_selfcheck, only: equilibrium_residual, link_balance
   use kinetostat_lapack, only: solve_dense
   implicit none
   private
@@ -110,8 +110,8 @@ contains
     s%f23d = s%n * [rd, -vdir * p%f * abs(rd)]
     s%kf = hypot(c(1), c(2)) / s%denom
     s%kf_over = s%kf > kf_limit
-    s%residual = link_residual(reshape([0.0_wp, 0.0_wp, b, d, d], [2, 4]), &
-                               reshape([s%f23c, s%f21, s%f23d, 0.0_wp, -f2], [2, 4]), [real(wp) ::])
+    s%residual = equilibrium_residual([link_balance(reshape([0.0_wp, 0.0_wp, b, d, d], [2, 4]), &
+                                      reshape([s%f23c, s%f21, s%f23d, 0.0_wp, -f2], [2, 4]), [real(wp) ::])])
 
     ! independent check: the same equilibrium as a 3x3 linear system in (N, R_C, R_D) with the
     ! friction senses of the closed form: x-forces, y-forces, moments about C

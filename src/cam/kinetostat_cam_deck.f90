@@ -1,18 +1,17 @@
 !> `&cam` decks: reading, validation, and the commented template. Per-step data (theta, f2,
 !> vdir, ds_dphi) are arrays with one value per cam angle, or a single value for all steps.
 module kinetostat_cam_deck
-  use kinetostat_kinds, only: wp, deg_to_rad
+  use kinetostat_kinds, only: wp
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str, lower
-  use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_deck, only: &
-    check_namelist_syntax, write_template_lines, deck_context_t, unset_real, deck_array_capacities, &
+    begin_group, deck_context_t, unset_real, deck_array_capacities, &
     deck_source_t, namelist_probe_t, require_all_set, deck_error, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn
   use kinetostat_cam, only: cam_params_t
   implicit none
   private
-  public :: cam_deck_t, read_cam_deck, write_cam_template, follower_translating, follower_flat
+  public :: cam_deck_t, read_cam_deck, cam_template, follower_translating, follower_flat
   public :: cam_phi_deg, cam_theta_deg, cam_f2, cam_vdir, cam_ds_dphi, cam_x_b
 
   !> Follower: knife-edge or roller, pressure angle from the deck, no friction at the cam.
@@ -56,7 +55,7 @@ module kinetostat_cam_deck
   end type cam_deck_t
 
   !> Template deck, one line per entry.
-  character(*), parameter :: template_lines(*) = [character(len=100) :: &
+  character(*), parameter :: cam_template(*) = [character(len=100) :: &
     "! kinetostat deck: cam with a translating follower in a guide (manual section 7).", &
     "! Guide ends C (near the cam) and D; contact point B an overhang l_over before C.", &
     "! Per-step values: one per cam angle (n values) or one value for every step.", &
@@ -76,13 +75,6 @@ module kinetostat_cam_deck
     "/"]
 
 contains
-
-  !> The commented template deck.
-  pure subroutine write_cam_template(out)
-    !> Where the lines go.
-    type(text_buffer_t), intent(inout) :: out
-    call write_template_lines(out, template_lines)
-  end subroutine write_cam_template
 
   !> Read and validate a `&cam` deck.
   subroutine read_cam_deck(source, deck, error)
@@ -104,8 +96,8 @@ contains
     type(namelist_probe_t) :: probe
     namelist /cam/ follower, l, l_over, f, f_cam, omega_dir, phi_start, dphi, n, theta, f2, vdir, ds_dphi
 
-    ctx%path = source%path
-    ctx%group = "cam"
+    call begin_group(source, "cam", ctx, error)
+    if (allocated(error)) return
     follower = " "
     l = unset_real; l_over = unset_real; f = unset_real; f_cam = unset_real
     omega_dir = unset_real; phi_start = unset_real; dphi = unset_real
@@ -113,8 +105,6 @@ contains
     capacity = deck_array_capacities(source, ctx%group, [character(len=7) :: "theta", "f2", "vdir", "ds_dphi"])
     allocate (theta(capacity(1)), f2(capacity(2)), vdir(capacity(3)), ds_dphi(capacity(4)), source=unset_real)
 
-    call check_namelist_syntax(source, ctx%group, error)
-    if (allocated(error)) return
     read (source%records, nml=cam, iostat=probe%ios, iomsg=probe%msg)
     do while (probe%retry(source)) ! on failure: find the line and the assignment
       read (probe%records, nml=cam, iostat=probe%ios, iomsg=probe%msg)

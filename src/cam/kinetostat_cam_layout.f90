@@ -4,7 +4,7 @@ module kinetostat_cam_layout
   use kinetostat_kinds, only: wp, deg_to_rad, rad_to_deg
   use kinetostat_deck, only: deck_source_t
   use kinetostat_error, only: error_t
-  use kinetostat_text, only: int_str, number_str
+  use kinetostat_text, only: int_str, number_str, counted
   use kinetostat_vec2, only: magnitude, angle_360_deg
   use kinetostat_noise, only: noise_floor, force_components
   use kinetostat_step_table, only: worst_row
@@ -16,7 +16,7 @@ module kinetostat_cam_layout
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_cam, only: cam_step_t, cam_step, cam_critical_angle, kf_limit
-  use kinetostat_cam_deck, only: cam_deck_t, read_cam_deck, write_cam_template, follower_translating, &
+  use kinetostat_cam_deck, only: cam_deck_t, read_cam_deck, cam_template, follower_translating, &
     cam_phi_deg, cam_theta_deg, cam_f2, cam_vdir, cam_x_b
   implicit none
   private
@@ -52,9 +52,7 @@ module kinetostat_cam_layout
     !> The validated deck.
     type(cam_deck_t) :: deck
   contains
-    procedure :: read_deck
-    procedure :: solve
-    procedure :: write_results
+    procedure :: read_deck, solve, write_results
   end type cam_mechanism_t
 
 contains
@@ -64,7 +62,7 @@ contains
     !> The mechanism.
     class(mechanism_t), allocatable, intent(out) :: mech
     allocate (cam_mechanism_t :: mech)
-    mech%template_writer => write_cam_template
+    mech%template = cam_template
     mech%title_en = "KINETOSTAT  CAM  FORCES ON A TRANSLATING FOLLOWER IN A GUIDE (MANUAL SECTION 7)"
     mech%title_ru = "KINETOSTAT  CAM  СИЛЫ В КУЛАЧКОВОМ МЕХАНИЗМЕ С" // &
       " ПОСТУПАТЕЛЬНО ДВИЖУЩИМСЯ ТОЛКАТЕЛЕМ (РАЗДЕЛ 7)"
@@ -164,22 +162,15 @@ contains
     if (table%carry(1) > 0.0_wp) then
       first = nint(table%carry(2))
       call table%add_warning("the follower jams (self-locking: no finite contact force moves it) at "// &
-        steps_text(nint(table%carry(1)))//", the first at step "//int_str(first)//" (phi = "// &
+        counted(nint(table%carry(1)), "step")//", the first at step "//int_str(first)//" (phi = "// &
         number_str(cam_phi_deg(deck, first))//" deg); no forces there (empty in CSV, null in JSON, left out of the summary)")
     end if
     if (table%carry(3) > 0.0_wp) then
       first = nint(table%carry(4))
       call table%add_warning("contact is lost (F2 <= 0 does not hold the follower on the cam) at "// &
-        steps_text(nint(table%carry(3)))//", the first at step "//int_str(first)//" (phi = "// &
+        counted(nint(table%carry(3)), "step")//", the first at step "//int_str(first)//" (phi = "// &
         number_str(cam_phi_deg(deck, first))//" deg); no forces there (empty in CSV, null in JSON, left out of the summary)")
     end if
-  contains
-    pure function steps_text(n) result(t)
-      integer, intent(in) :: n
-      character(len=:), allocatable :: t
-      t = int_str(n)//" step"
-      if (n /= 1) t = t//"s"
-    end function steps_text
   end subroutine flag_warnings
 
   !> The CSV row of step k (flags as 0/1; forces 0 when jammed or contact lost).

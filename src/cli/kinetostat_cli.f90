@@ -216,7 +216,7 @@ contains
       else if (args%sweep) then
         call sweep_deck(args, out, warnings, error)
       else if (args%structure) then
-        call structure_of_deck(args%deck, args%options%lang, out, error)
+        call structure_of_deck(args, out, error)
       else if (args%balance) then
         call balance_deck(args, out, error)
       else
@@ -423,21 +423,14 @@ contains
     type(text_buffer_t), intent(inout) :: out
     type(error_t), allocatable, intent(out) :: error
     type(deck_source_t) :: source, balanced
-    character(len=:), allocatable :: group
     type(assur_mechanism_t) :: mech
     type(override_t), allocatable :: overrides(:)
     type(text_buffer_t) :: report
     type(step_table_t) :: before, after
     integer :: i
-    call load_deck(args%deck, source, error)
+    call load_group_deck(args%deck, "assur", "balance works on &assur decks (the generic engine, a crank and its "// &
+      "dyads); model the mechanism as one (e.g. data/assur_pr3207.nml for &pr3207)", source, error)
     if (allocated(error)) return
-    call read_group_name(source, group, error)
-    if (allocated(error)) return
-    if (group /= "assur") then
-      call fatal_error(error, exit_input, source%path//": &"//group//": balance works on &assur decks (the generic "// &
-        "engine, a crank and its dyads); model the mechanism as one (e.g. data/assur_pr3207.nml for &pr3207)")
-      return
-    end if
     call mech%read_deck(source, error)
     if (allocated(error)) return
     if (mech%deck%mech%drive_dyad > 0 .and. args%balance_method /= balance_full) then
@@ -664,27 +657,36 @@ contains
   end subroutine blame_override
 
   !> `kinetostat structure DECK`: the structural analysis of a `&linkage` deck.
-  subroutine structure_of_deck(path, lang, out, error)
-    !> Deck path.
-    character(*), intent(in) :: path
-    !> lang_en or lang_ru.
-    integer, intent(in) :: lang
-    !> Where the text goes.
+  subroutine structure_of_deck(args, out, error)
+    type(cli_args_t), intent(in) :: args
     type(text_buffer_t), intent(inout) :: out
     type(error_t), allocatable, intent(out) :: error
     type(deck_source_t) :: source
+    call load_group_deck(args%deck, "linkage", "structure: only &linkage decks have a structural analysis (the "// &
+      "others are fixed mechanisms or hand-decomposed dyads)", source, error)
+    if (allocated(error)) return
+    call linkage_structure_text(source, args%options%lang, out, error)
+  end subroutine structure_of_deck
+
+  !> The deck at `path`, which must be of group `wanted`; otherwise an input error naming the
+  !> deck and its group with `why`.
+  subroutine load_group_deck(path, wanted, why, source, error)
+    !> Deck path.
+    character(*), intent(in) :: path
+    !> The group the command works on.
+    character(*), intent(in) :: wanted
+    !> What the command takes, for the message.
+    character(*), intent(in) :: why
+    !> The deck.
+    type(deck_source_t), intent(out) :: source
+    type(error_t), allocatable, intent(out) :: error
     character(len=:), allocatable :: group
     call load_deck(path, source, error)
     if (allocated(error)) return
     call read_group_name(source, group, error)
     if (allocated(error)) return
-    if (group /= "linkage") then
-      call fatal_error(error, exit_input, source%path//": &"//group//": structure: only &linkage decks have a "// &
-        "structural analysis (the others are fixed mechanisms or hand-decomposed dyads)")
-      return
-    end if
-    call linkage_structure_text(source, lang, out, error)
-  end subroutine structure_of_deck
+    if (group /= wanted) call fatal_error(error, exit_input, source%path//": &"//group//": "//why)
+  end subroutine load_group_deck
 
   !> The commented template deck of a kind, or a preset of the generic engine.
   subroutine write_template(kind, out, error)
@@ -728,7 +730,7 @@ contains
   subroutine parse_args(args, error)
     type(cli_args_t), intent(out) :: args
     type(error_t), allocatable, intent(out) :: error
-    integer :: i, n, eq, ios
+    integer :: i, k, n, ios
     character(len=:), allocatable :: arg, name, value
 
     n = command_argument_count()
@@ -738,25 +740,12 @@ contains
     end if
     i = 0
     do while (i < n)
-      i = i + 1
-      arg = argument(i)
-      ! --name=value is the same as --name value
-      eq = index(arg, "=")
-      if (len(arg) > 2 .and. arg(1:min(2, len(arg))) == "--" .and. eq > 0) then
-        name = arg(1:eq - 1)
-        value = arg(eq + 1:)
-      else
-        name = arg
-        if (any(name == [character(len=15) :: "-o", "--output", "--format", "--lang", "--set", "--pairs", "--at", &
-                         "--frame", "--vary", "--part", "--jobs", "--method", "--fraction", "--max-deck-size", &
-                         "--student", "--group", "--variant"])) then
-          if (i == n) then
-            call fatal_error(error, exit_usage, name//" needs a value")
-            return
-          end if
-          i = i + 1
-          value = argument(i)
-        end if
+      call next_option(i, n, [character(len=15) :: "-o", "--output", "--format", "--lang", "--set", "--pairs", &
+                       "--at", "--frame", "--vary", "--part", "--jobs", "--method", "--fraction", &
+                       "--max-deck-size", "--student", "--group", "--variant"], name, value)
+      if (.not. allocated(value)) then
+        call fatal_error(error, exit_usage, name//" needs a value")
+        return
       end if
       select case (name)
       case ("-h", "--help")
@@ -783,8 +772,8 @@ contains
         args%options%shaking = .true.
       case ("--method")
         args%balance_method = 0
-        do eq = 1, size(balance_method_names)
-          if (value == trim(balance_method_names(eq))) args%balance_method = eq
+        do k = 1, size(balance_method_names)
+          if (value == trim(balance_method_names(k))) args%balance_method = k
         end do
         if (args%balance_method == 0) then
           call fatal_error(error, exit_usage, "--method must be full, crank or partial (got '"//value//"')")
@@ -887,6 +876,7 @@ contains
         i = i + 1
         args%template_kind = argument(i)
       case default
+        arg = argument(i)
         if (len(arg) > 1 .and. arg(1:1) == "-") then
           call fatal_error(error, exit_usage, "unknown option '"//arg//"'")
           return
@@ -960,7 +950,7 @@ contains
   subroutine parse_diff_args(args, error)
     type(cli_args_t), intent(inout) :: args
     type(error_t), allocatable, intent(out) :: error
-    integer :: i, n, eq, ios
+    integer :: i, n, ios
     character(len=:), allocatable :: arg, name, value
     character(len=4096) :: files(2)
     integer :: n_files
@@ -969,23 +959,10 @@ contains
     n_files = 0
     i = 1
     do while (i < n)
-      i = i + 1
-      arg = argument(i)
-      eq = index(arg, "=")
-      if (len(arg) > 2 .and. arg(1:min(2, len(arg))) == "--" .and. eq > 0) then
-        name = arg(1:eq - 1)
-        value = arg(eq + 1:)
-      else
-        name = arg
-        value = ""
-        if (name == "--rtol" .or. name == "--atol") then
-          if (i == n) then
-            call fatal_error(error, exit_input, "diff: "//name//" needs a value; "//diff_usage)
-            return
-          end if
-          i = i + 1
-          value = argument(i)
-        end if
+      call next_option(i, n, [character(len=6) :: "--rtol", "--atol"], name, value)
+      if (.not. allocated(value)) then
+        call fatal_error(error, exit_input, "diff: "//name//" needs a value; "//diff_usage)
+        return
       end if
       select case (name)
       case ("-h", "--help")
@@ -1004,6 +981,7 @@ contains
           args%diff_options%atol = x
         end if
       case default
+        arg = argument(i)
         if (len(arg) > 1 .and. arg(1:1) == "-") then
           call fatal_error(error, exit_input, "diff: unknown option '"//arg//"'; "//diff_usage)
           return
@@ -1067,6 +1045,39 @@ contains
     call load_deck(path, source, error, whole_lines=.true.)
     if (allocated(error)) error%message = path//": cannot read the file"
   end subroutine read_output_file
+
+  !> The option at argument i+1 (i is advanced): its name and value, where `--name=value` is
+  !> the same as `--name value` for the options in `takes_value`; another argument has the
+  !> value "". The value is not allocated when an option of `takes_value` is the last argument.
+  subroutine next_option(i, n, takes_value, name, value)
+    !> The argument before the option; on return, the option's last argument.
+    integer, intent(inout) :: i
+    !> The number of arguments.
+    integer, intent(in) :: n
+    !> The options that take a value.
+    character(*), intent(in) :: takes_value(:)
+    !> The option's name (or the argument).
+    character(len=:), allocatable, intent(out) :: name
+    !> The option's value.
+    character(len=:), allocatable, intent(out) :: value
+    character(len=:), allocatable :: arg
+    integer :: eq
+    i = i + 1
+    arg = argument(i)
+    eq = index(arg, "=")
+    if (len(arg) > 2 .and. arg(1:min(2, len(arg))) == "--" .and. eq > 0) then
+      name = arg(1:eq - 1)
+      value = arg(eq + 1:)
+    else if (any(arg == takes_value)) then
+      name = arg
+      if (i == n) return
+      i = i + 1
+      value = argument(i)
+    else
+      name = arg
+      value = ""
+    end if
+  end subroutine next_option
 
   function argument(i) result(arg)
     integer, intent(in) :: i

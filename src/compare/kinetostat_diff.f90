@@ -9,7 +9,7 @@
 module kinetostat_diff
   use kinetostat_kinds, only: wp, rad_to_deg
   use kinetostat_error, only: error_t, fatal_error, exit_input
-  use kinetostat_text, only: int_str, lower
+  use kinetostat_text, only: int_str, lower, clipped, starts_with
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_step_table, only: column_t, col_input_angle, col_force_angle
   use kinetostat_noise, only: noise_rel
@@ -209,21 +209,10 @@ contains
       call fatal_error(error, exit_input, "not the same mechanism: "//a%path//": '"//a%identity//"', "// &
         b%path//": '"//b%identity//"'")
     else if (a%columns /= b%columns) then
-      call fatal_error(error, exit_input, "not the same columns: "//a%path//": "//clip(a%columns)//"; "// &
-        b%path//": "//clip(b%columns))
+      call fatal_error(error, exit_input, "not the same columns: "//a%path//": "//clipped(a%columns, 100)//"; "// &
+        b%path//": "//clipped(b%columns, 100))
     end if
   end subroutine check_comparable
-
-  !> At most 100 characters of a text, with "..." when cut.
-  pure function clip(text) result(short)
-    character(*), intent(in) :: text
-    character(len=:), allocatable :: short
-    if (len(text) > 100) then
-      short = text(1:97)//"..."
-    else
-      short = text
-    end if
-  end function clip
 
   !> Walk both outputs in step, compare matched values, report the differences.
   pure subroutine compare(a, b, options, report, status)
@@ -246,18 +235,18 @@ contains
         end if
       end do
       if (.not. found) then
-        call note_missing(tally, report, a%cells(i)%where//": "//a%cells(i)%text//" vs (nothing)")
+        call note(tally, report, a%cells(i)%where//": "//a%cells(i)%text//" vs (nothing)", one_side=.true.)
         cycle
       end if
       do while (j < m)
-        call note_missing(tally, report, b%cells(j)%where//": (nothing) vs "//b%cells(j)%text)
+        call note(tally, report, b%cells(j)%where//": (nothing) vs "//b%cells(j)%text, one_side=.true.)
         j = j + 1
       end do
       call compare_cell(a, b, i, m, options, tally, report)
       j = m + 1
     end do
     do while (j <= b%n)
-      call note_missing(tally, report, b%cells(j)%where//": (nothing) vs "//b%cells(j)%text)
+      call note(tally, report, b%cells(j)%where//": (nothing) vs "//b%cells(j)%text, one_side=.true.)
       j = j + 1
     end do
     if (tally%differing > tally%max_report) then
@@ -274,25 +263,21 @@ contains
     end if
   end subroutine compare
 
-  !> One difference: reported while under the limit, always counted.
-  pure subroutine note(tally, report, line)
+  !> One difference: reported while under the limit, always counted; a value on one side
+  !> only (`one_side`) is also counted as compared.
+  pure subroutine note(tally, report, line, one_side)
     type(tally_t), intent(inout) :: tally
     type(text_buffer_t), intent(inout) :: report
     !> The report line.
     character(*), intent(in) :: line
+    !> Whether the value is on one side only (default false).
+    logical, intent(in), optional :: one_side
+    if (present(one_side)) then
+      if (one_side) tally%compared = tally%compared + 1
+    end if
     tally%differing = tally%differing + 1
     if (tally%differing <= tally%max_report) call report%put(line)
   end subroutine note
-
-  !> A value on one side only: compared and different.
-  pure subroutine note_missing(tally, report, line)
-    type(tally_t), intent(inout) :: tally
-    type(text_buffer_t), intent(inout) :: report
-    !> The report line.
-    character(*), intent(in) :: line
-    tally%compared = tally%compared + 1
-    call note(tally, report, line)
-  end subroutine note_missing
 
   !> Compare cell ia of A with cell ib of B (the same key).
   pure subroutine compare_cell(a, b, ia, ib, options, tally, report)
@@ -993,12 +978,5 @@ contains
     read (word, *, iostat=ios) value
     ok = ios == 0
   end subroutine read_number
-
-  !> Whether `text` starts with `prefix`.
-  pure logical function starts_with(text, prefix)
-    character(*), intent(in) :: text, prefix
-    starts_with = .false.
-    if (len(text) >= len(prefix)) starts_with = text(1:len(prefix)) == prefix
-  end function starts_with
 
 end module kinetostat_diff

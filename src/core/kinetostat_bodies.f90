@@ -70,14 +70,8 @@ contains
     real(wp), intent(in) :: mass
     !> Moment of inertia about the centre of mass, kg*m^2.
     real(wp), intent(in) :: inertia
-    type(body_t), allocatable :: grown(:)
-    integer :: n
     if (.not. allocated(self%bodies)) allocate (self%bodies(0))
-    n = size(self%bodies)
-    allocate (grown(n + 1))
-    grown(1:n) = self%bodies
-    grown(n + 1) = body_t(link, centre, mass, inertia)
-    call move_alloc(grown, self%bodies)
+    self%bodies = [self%bodies, body_t(link, centre, mass, inertia)]
     self%available = .true.
   end subroutine add
 
@@ -90,14 +84,8 @@ contains
     character(*), intent(in) :: point
     !> Column of the pair's reaction moment about the point ("" for none).
     character(*), intent(in) :: moment
-    type(frame_pair_t), allocatable :: grown(:)
-    integer :: n
     if (.not. allocated(self%frame_pairs)) allocate (self%frame_pairs(0))
-    n = size(self%frame_pairs)
-    allocate (grown(n + 1))
-    grown(1:n) = self%frame_pairs
-    grown(n + 1) = frame_pair_t(force, point, moment)
-    call move_alloc(grown, self%frame_pairs)
+    self%frame_pairs = [self%frame_pairs, frame_pair_t(force, point, moment)]
   end subroutine add_frame_pair
 
 end module kinetostat_bodies

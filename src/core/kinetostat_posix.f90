@@ -350,11 +350,8 @@ contains
     character(len=:), allocatable :: text
     integer :: n
     n = index(buf, c_null_char)
-    if (n == 0) then
-      text = buf
-    else
-      text = buf(1:n - 1)
-    end if
+    if (n == 0) n = len(buf) + 1
+    text = buf(1:n - 1)
   end function c_string
 
 end module kinetostat_posix

@@ -6,7 +6,7 @@ module kinetostat_selfcheck
   implicit none
   private
   public :: link_balance_t, link_balance, balance_add_force, balance_add_couple, balance_add_balance
-  public :: equilibrium_residual, link_residual, power_mismatch
+  public :: equilibrium_residual, power_mismatch
   public :: selfcheck_tolerance, residual_floor_rel, load_moment_scale
 
   !> A self-check worse than this (relative) is a bug: the CLI warns and the tests fail.
@@ -150,19 +150,6 @@ contains
     if (present(length)) arm = max(arm, length)
     scale = max(maxval(links%lever_m), maxval(links%scale_f) * arm)
   end function load_moment_scale
-
-  !> Relative equilibrium residual of a single link (forces `f(:,i)` at `at(:,i)`, couples
-  !> `c`): equilibrium_residual of that link alone.
-  pure function link_residual(at, f, c) result(residual)
-    !> Points of application, m (2 x n).
-    real(wp), intent(in) :: at(:, :)
-    !> Forces, N (2 x n).
-    real(wp), intent(in) :: f(:, :)
-    !> Couples, N*m (may be empty).
-    real(wp), intent(in) :: c(:)
-    real(wp) :: residual
-    residual = equilibrium_residual([link_balance(at, f, c)])
-  end function link_residual
 
   !> Relative mismatch of a driving moment (or force) `q` against its power-balance value
   !> `q_power`, scaled by `scale` = sum of the magnitudes of the power terms (>= |q_power|),

@@ -4,7 +4,7 @@ module kinetostat_text
   use kinetostat_kinds, only: wp
   implicit none
   private
-  public :: real_str, int_str, int64_str, number_str, lower, upper, printable, utf8_length
+  public :: real_str, int_str, int64_str, number_str, lower, upper, printable, utf8_length, counted, clipped, starts_with
 
   !> Format of a real in a message: shortest general form with 10 significant digits.
   character(*), parameter :: real_msg_fmt = '(g0.10)'
@@ -35,6 +35,38 @@ contains
       s = real_str(x)
     end if
   end function number_str
+
+  !> At most `width` characters of a text, ending in "..." when cut.
+  pure function clipped(text, width) result(short)
+    !> Any text.
+    character(*), intent(in) :: text
+    !> The most characters kept (> 3).
+    integer, intent(in) :: width
+    character(len=:), allocatable :: short
+    short = text
+    if (len(text) > width) short = text(1:width - 3)//"..."
+  end function clipped
+
+  !> Whether `text` starts with `prefix`.
+  pure logical function starts_with(text, prefix)
+    !> Any text.
+    character(*), intent(in) :: text
+    !> The start looked for.
+    character(*), intent(in) :: prefix
+    starts_with = .false.
+    if (len(text) >= len(prefix)) starts_with = text(1:len(prefix)) == prefix
+  end function starts_with
+
+  !> A count with its noun: "1 step", "3 steps".
+  pure function counted(n, noun) result(text)
+    !> How many.
+    integer, intent(in) :: n
+    !> The noun, singular.
+    character(*), intent(in) :: noun
+    character(len=:), allocatable :: text
+    text = int_str(n)//" "//noun
+    if (n /= 1) text = text//"s"
+  end function counted
 
   !> An integer as trimmed text (the text of the `i0` edit descriptor), built digit by digit:
   !> an internal WRITE costs ~0.3 us (locale, locks), and column names are built per step.

@@ -7,7 +7,7 @@ module kinetostat_deck
   use kinetostat_kinds, only: wp
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_error, only: error_t, fatal_error, exit_input
-  use kinetostat_text, only: real_str, int_str, int64_str, number_str, lower, printable
+  use kinetostat_text, only: real_str, int_str, int64_str, number_str, lower, printable, clipped
   use kinetostat_deck_reader, only: read_bytes_limited, read_ok, read_too_long
   implicit none
   private
@@ -18,7 +18,7 @@ module kinetostat_deck
   public :: is_set, require_set, require_positive, require_nonnegative, require_rule
   public :: is_whole_in, require_whole
   public :: optional_default, count_values, steps_over_turn, write_template_lines
-  public :: check_namelist_syntax, longest_quoted
+  public :: check_namelist_syntax, longest_quoted, begin_group
   public :: deck_array_capacities, max_deck_size, set_max_deck_size, default_max_deck_size, assignment_starts
 
   !> Bit pattern of `unset_real`: a quiet NaN with a payload. A NaN typed in a deck
@@ -1117,7 +1117,7 @@ contains
       end if
     end if
     call fatal_error(error, exit_input, ctx%path//":"//int_str(self%bad)//": &"//ctx%group//": "// &
-      clipped(text)//": "//reason)
+      clipped(text, 60)//": "//reason)
   end subroutine probe_report
 
   !> Whether an assignment's text without '=' starts with a variable's name followed by a
@@ -1363,17 +1363,6 @@ contains
     end if
   end function strip_comment
 
-  !> At most 60 characters of a text ("..." when cut).
-  pure function clipped(text) result(short)
-    character(*), intent(in) :: text
-    character(len=:), allocatable :: short
-    if (len(text) > 60) then
-      short = text(1:57)//"..."
-    else
-      short = text
-    end if
-  end function clipped
-
   !> Start columns of the assignments on a deck line ("name =", "name(2) =", "a(1)%b ="),
   !> outside quotes and comments; a group line's '&name' is not one.
   pure function assignment_starts(line) result(starts)
@@ -1403,22 +1392,27 @@ contains
     allocate (starts(0))
     do i = 1, len_trim(masked)
       if (masked(i:i) /= "=") cycle
-      ! walk back over blanks, then over the name with its subscripts and components
-      j = i - 1
-      do while (j >= 1)
-        if (masked(j:j) /= " ") exit
-        j = j - 1
-      end do
-      k = j
-      do while (k >= 1)
-        if (index("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_%()", masked(k:k)) == 0) exit
-        k = k - 1
-      end do
-      k = k + 1
+      call name_span(masked(1:i - 1), k, j)
       if (k > j) cycle
       starts = [starts, k]
     end do
   end function assignment_starts
+
+  !> The start of every deck reader: the context its messages name (deck path and group)
+  !> and the syntax pre-check of the group's text (check_namelist_syntax) before the READ.
+  subroutine begin_group(source, group, ctx, error)
+    !> The deck.
+    type(deck_source_t), intent(in) :: source
+    !> Group name, lower case, without '&'.
+    character(*), intent(in) :: group
+    !> The reader's context.
+    type(deck_context_t), intent(out) :: ctx
+    !> The syntax error (none when the text passes).
+    type(error_t), allocatable, intent(out) :: error
+    ctx%path = source%path
+    ctx%group = group
+    call check_namelist_syntax(source, group, error)
+  end subroutine begin_group
 
   !> A syntax pre-check of the deck's group `group`, before gfortran's namelist READ sees
   !> it (which crashes on some malformed text, e.g. an array or type name followed by an
@@ -1543,30 +1537,40 @@ contains
     character(*), intent(in) :: reason
     !> The input error.
     type(error_t), allocatable, intent(out) :: error
-    character(len=*), parameter :: tab = achar(9)
     character(len=:), allocatable :: who
     integer :: j, e
     who = name
     if (open_at > 0) then
       ! the name written just before the '(' (a designator, or a value's text)
-      j = open_at - 1
-      do while (j >= 1)
-        if (index(" "//tab, line(j:j)) == 0) exit
-        j = j - 1
-      end do
-      e = j
-      do while (j >= 1)
-        if (index("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_%()", line(j:j)) == 0) exit
-        j = j - 1
-      end do
-      if (e > j .and. e >= 1) then
-        if (len(who) == 0 .or. index(line(open_at:), "=") > 0 .or. e == open_at - 1) who = line(j + 1:open_at)
+      call name_span(line(1:open_at - 1), j, e)
+      if (e >= j) then
+        if (len(who) == 0 .or. index(line(open_at:), "=") > 0 .or. e == open_at - 1) who = line(j:open_at)
       end if
     end if
     if (len(who) == 0) who = "(no variable yet)"
     call fatal_error(error, exit_input, source%path//":"//int_str(at)//": &"//group//": "// &
-      clipped(printable(who))//": "//reason)
+      clipped(printable(who), 60)//": "//reason)
   end subroutine syntax_failure
+
+  !> The name with its subscripts and components at the end of `text` (trailing blanks and
+  !> tabs skipped): text(first:last), empty (first > last) when `text` does not end with one.
+  pure subroutine name_span(text, first, last)
+    !> The text before a '=' or a '('.
+    character(*), intent(in) :: text
+    !> First and last character of the name.
+    integer, intent(out) :: first, last
+    last = len(text)
+    do while (last >= 1)
+      if (index(" "//achar(9), text(last:last)) == 0) exit
+      last = last - 1
+    end do
+    first = last
+    do while (first >= 1)
+      if (index("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_%()", text(first:first)) == 0) exit
+      first = first - 1
+    end do
+    first = first + 1
+  end subroutine name_span
 
   !> The variable name written just before a '=' ("dyad(2)%l2" of "  dyad(2)%l2 "), "" when
   !> the text before the '=' does not end with one.

@@ -2,7 +2,7 @@
 !> another): the namelist READ keeps the last value silently, which is rarely what was
 !> meant; the CLI warns about each such variable.
 module kinetostat_deck_repeats
-  use kinetostat_text, only: int_str, lower
+  use kinetostat_text, only: int_str, lower, counted
   use kinetostat_deck, only: deck_source_t, deck_line_count, deck_line, assignment_starts
   implicit none
   private
@@ -71,8 +71,11 @@ contains
     pure function times(n) result(t)
       integer, intent(in) :: n
       character(len=:), allocatable :: t
-      t = int_str(n)//" times"
-      if (n == 2) t = "twice"
+      if (n == 2) then
+        t = "twice"
+      else
+        t = counted(n, "time")
+      end if
     end function times
     pure function line_list(ls) result(t)
       integer, intent(in) :: ls(:)

@@ -7,7 +7,7 @@
 module kinetostat_gears
   use kinetostat_kinds, only: wp, pi
   use kinetostat_vec2, only: unit_at, perp, cross
-  use kinetostat_selfcheck, only: link_balance_t, link_balance, equilibrium_residual, link_residual, &
+  use kinetostat_selfcheck, only: link_balance_t, link_balance, equilibrium_residual, &
     power_mismatch
   implicit none
   private
@@ -246,8 +246,8 @@ contains
       res(i)%fs2 = -f_on_shaft
       res(i + 1)%fs1 = -f_on_shaft
       res(i)%residual = max(res(i)%residual, &
-        link_residual(reshape([res(i)%p, res(i + 1)%p, res(i)%o2], [2, 3]), &
-                      reshape([-res(i)%f12, res(i + 1)%f12, res(i)%fs2], [2, 3]), [real(wp) ::]))
+        equilibrium_residual([link_balance(reshape([res(i)%p, res(i + 1)%p, res(i)%o2], [2, 3]), &
+                      reshape([-res(i)%f12, res(i + 1)%f12, res(i)%fs2], [2, 3]), [real(wp) ::])]))
     end do
   end subroutine gear_series
 

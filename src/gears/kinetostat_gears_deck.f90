@@ -5,16 +5,14 @@ module kinetostat_gears_deck
   use kinetostat_kinds, only: wp, deg_to_rad, pi
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str, number_str, lower
-  use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_deck, only: &
-    check_namelist_syntax, write_template_lines, deck_context_t, unset_real, &
+    begin_group, deck_context_t, unset_real, &
     deck_source_t, namelist_probe_t, deck_error, is_set, require_set, require_positive, require_rule, &
     require_whole, require_all_set
-  use kinetostat_gears, only: gear_stage_t, gear_spur, gear_helical, gear_bevel, gear_planetary, &
-    gear_kind_names
+  use kinetostat_gears, only: gear_stage_t, gear_helical, gear_bevel, gear_planetary, gear_kind_names
   implicit none
   private
-  public :: gears_deck_t, read_gears_deck, write_gears_template, max_stages
+  public :: gears_deck_t, read_gears_deck, gears_template, max_stages
   public :: layout_separate, layout_series, layout_names
 
   !> Largest number of stages in one deck.
@@ -45,7 +43,7 @@ module kinetostat_gears_deck
   end type gears_deck_t
 
   !> Template deck, one line per entry.
-  character(*), parameter :: template_lines(*) = [character(len=100) :: &
+  character(*), parameter :: gears_template(*) = [character(len=100) :: &
     "! kinetostat deck: gear meshes (manual section 6). One &gears group; every per-stage", &
     "! variable is an array indexed by stage: stage(1), stage(2), ... (no gaps).", &
     "! Friction-free, uniform rotation. Torques N*m (CCW +), module/diameters mm, angles deg.", &
@@ -68,13 +66,6 @@ module kinetostat_gears_deck
 
 contains
 
-  !> The commented template deck.
-  pure subroutine write_gears_template(out)
-    !> Where the lines go.
-    type(text_buffer_t), intent(inout) :: out
-    call write_template_lines(out, template_lines)
-  end subroutine write_gears_template
-
   !> Read and validate a `&gears` deck.
   subroutine read_gears_deck(source, deck, error)
     !> The deck, read into memory (see load_deck).
@@ -93,16 +84,14 @@ contains
     type(namelist_probe_t) :: probe
     namelist /gears/ layout, stage, m1, z1, z2, m, dw1, alpha_w, beta, gamma, z3, k, alpha_w23
 
-    ctx%path = source%path
-    ctx%group = "gears"
+    call begin_group(source, "gears", ctx, error)
+    if (allocated(error)) return
     layout = " "
     stage = " "
     m1 = unset_real; m = unset_real; dw1 = unset_real; alpha_w = unset_real
     alpha_w23 = unset_real; beta = unset_real; gamma = unset_real
     z1 = unset_real; z2 = unset_real; z3 = unset_real; k = unset_real
 
-    call check_namelist_syntax(source, ctx%group, error)
-    if (allocated(error)) return
     read (source%records, nml=gears, iostat=probe%ios, iomsg=probe%msg)
     do while (probe%retry(source)) ! on failure: find the line and the assignment
       read (probe%records, nml=gears, iostat=probe%ios, iomsg=probe%msg)

@@ -17,7 +17,7 @@ module kinetostat_gears_layout
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_gears, only: gear_stage_t, gear_result_t, gear_pair, gear_series, gear_planetary_step, &
     gear_planetary, gear_bevel, gear_kind_names
-  use kinetostat_gears_deck, only: gears_deck_t, read_gears_deck, write_gears_template, layout_series, layout_names
+  use kinetostat_gears_deck, only: gears_deck_t, read_gears_deck, gears_template, layout_series, layout_names
   implicit none
   private
   public :: gears_mechanism_t, new_gears, gears_solve, gears_csv_columns, gears_csv_values
@@ -51,9 +51,7 @@ module kinetostat_gears_layout
     !> The validated deck.
     type(gears_deck_t) :: deck
   contains
-    procedure :: read_deck
-    procedure :: solve
-    procedure :: write_results
+    procedure :: read_deck, solve, write_results
   end type gears_mechanism_t
 
 contains
@@ -63,7 +61,7 @@ contains
     !> The mechanism.
     class(mechanism_t), allocatable, intent(out) :: mech
     allocate (gears_mechanism_t :: mech)
-    mech%template_writer => write_gears_template
+    mech%template = gears_template
     mech%title_en = "KINETOSTAT  GEARS  FORCES IN GEAR MESHES (MANUAL SECTION 6, FRICTION-FREE)"
     mech%title_ru = "KINETOSTAT  GEARS  СИЛЫ В ЗАЦЕПЛЕНИЯХ ЗУБЧАТЫХ" // &
       " КОЛЕС (РАЗДЕЛ 6, БЕЗ УЧЕТА ТРЕНИЯ)"

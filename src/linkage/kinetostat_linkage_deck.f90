@@ -10,9 +10,8 @@ module kinetostat_linkage_deck
   use kinetostat_kinds, only: wp, g_default, deg_to_rad
   use kinetostat_error, only: error_t
   use kinetostat_text, only: int_str, lower, real_str
-  use kinetostat_text_buffer, only: text_buffer_t
-  use kinetostat_deck, only: longest_quoted, check_namelist_syntax, &
-    write_template_lines, deck_context_t, unset_bits, deck_source_t, namelist_probe_t, &
+  use kinetostat_deck, only: longest_quoted, begin_group, &
+    deck_context_t, unset_bits, deck_source_t, namelist_probe_t, &
     deck_error, is_set, require_set, require_nonnegative, require_rule, optional_default, count_values, &
     require_whole, deck_array_capacities
   use kinetostat_vec2, only: unit_at, magnitude
@@ -21,7 +20,7 @@ module kinetostat_linkage_deck
   use kinetostat_linkage_structure, only: analyse_structure
   implicit none
   private
-  public :: linkage_deck_t, linkage_schedule_t, read_linkage_deck, write_linkage_template
+  public :: linkage_deck_t, linkage_schedule_t, read_linkage_deck, linkage_template
   public :: linkage_drive_values, linkage_load_value
 
   !> Capacities of the lists.
@@ -143,6 +142,29 @@ module kinetostat_linkage_deck
     character(len=8), allocatable :: drive_pair(:)
   end type linkage_deck_t
 
+  !> The commented template deck (a crank-rocker four-bar).
+  character(*), parameter :: linkage_template(*) = [character(len=100) :: &
+    "! Any planar linkage of lower pairs (docs/linkage.md). Points are global (x, y) at the", &
+    "! reference position, which also fixes the assembly branch. F<i><j>: force on link i from j.", &
+    "&linkage", &
+    "  title = 'crank-rocker four-bar'", &
+    "  frame = 0                          ! link number of the frame", &
+    "  g = 9.81, gravity_angle = -90      ! m/s^2, deg", &
+    "  n = 25                             ! steps", &
+    "  link(1)%id = 1, link(1)%m = 0.5, link(1)%j = 0.002, link(1)%s = 0.05, 0", &
+    "  link(2)%id = 2, link(2)%m = 1.0, link(2)%j = 0.0102, link(2)%s = 0.27, 0.1", &
+    "  link(3)%id = 3, link(3)%m = 0.8, link(3)%j = 0.0042, link(3)%s = 0.35, 0.1", &
+    "  ! pairs: name, kind 'R' or 'P' (then angle = guide direction, deg), links (on, from), joint", &
+    "  pair(1)%name = 'A', pair(1)%kind = 'R', pair(1)%links = 1, 0, pair(1)%at = 0, 0", &
+    "  pair(2)%name = 'B', pair(2)%kind = 'R', pair(2)%links = 2, 1, pair(2)%at = 0.1, 0", &
+    "  pair(3)%name = 'C', pair(3)%kind = 'R', pair(3)%links = 3, 2, pair(3)%at = 0.4, 0.2", &
+    "  pair(4)%name = 'D', pair(4)%kind = 'R', pair(4)%links = 3, 0, pair(4)%at = 0.3, 0", &
+    "  ! drives: angle law (deg) start + (k-1)*step or values(:); omega rad/s, eps rad/s^2", &
+    "  drive(1)%pair = 'A', drive(1)%start = 0, drive(1)%step = 15, drive(1)%omega = 20", &
+    "  force(1)%link = 2, force(1)%at = 0.25, 0.1, force(1)%angle = -90, force(1)%value = 50", &
+    "  moment(1)%link = 3, moment(1)%value = -20", &
+        "/"]
+
 contains
 
   !> Read and validate a `&linkage` deck, with its structural analysis.
@@ -182,16 +204,14 @@ contains
     real(wp) :: d
     namelist /linkage/ title, frame, g, gravity_angle, n, link, pair, drive, force, moment, step_values
 
-    ctx%path = source%path
-    ctx%group = group_name
+    call begin_group(source, group_name, ctx, error)
+    if (allocated(error)) return
     allocate (title)
     title = ""
     frame = 0.0_wp; g = unset; gravity_angle = unset; n = unset
     allocate (drive(max_drives))
     capacity = deck_array_capacities(source, ctx%group, [character(len=11) :: "step_values"])
     allocate (step_values(capacity(1)), source=unset)
-    call check_namelist_syntax(source, ctx%group, error)
-    if (allocated(error)) return
     call check_text_lengths(source, ctx, error)
     if (allocated(error)) return
     read (source%records, nml=linkage, iostat=probe%ios, iomsg=probe%msg)
@@ -693,32 +713,5 @@ contains
       linkage_load_value = sched%value
     end if
   end function linkage_load_value
-
-  !> The commented template deck (a crank-rocker four-bar).
-  pure subroutine write_linkage_template(out)
-    !> Where the lines go.
-    type(text_buffer_t), intent(inout) :: out
-    call write_template_lines(out, [character(len=100) :: &
-      "! Any planar linkage of lower pairs (docs/linkage.md). Points are global (x, y) at the", &
-      "! reference position, which also fixes the assembly branch. F<i><j>: force on link i from j.", &
-      "&linkage", &
-      "  title = 'crank-rocker four-bar'", &
-      "  frame = 0                          ! link number of the frame", &
-      "  g = 9.81, gravity_angle = -90      ! m/s^2, deg", &
-      "  n = 25                             ! steps", &
-      "  link(1)%id = 1, link(1)%m = 0.5, link(1)%j = 0.002, link(1)%s = 0.05, 0", &
-      "  link(2)%id = 2, link(2)%m = 1.0, link(2)%j = 0.0102, link(2)%s = 0.27, 0.1", &
-      "  link(3)%id = 3, link(3)%m = 0.8, link(3)%j = 0.0042, link(3)%s = 0.35, 0.1", &
-      "  ! pairs: name, kind 'R' or 'P' (then angle = guide direction, deg), links (on, from), joint", &
-      "  pair(1)%name = 'A', pair(1)%kind = 'R', pair(1)%links = 1, 0, pair(1)%at = 0, 0", &
-      "  pair(2)%name = 'B', pair(2)%kind = 'R', pair(2)%links = 2, 1, pair(2)%at = 0.1, 0", &
-      "  pair(3)%name = 'C', pair(3)%kind = 'R', pair(3)%links = 3, 2, pair(3)%at = 0.4, 0.2", &
-      "  pair(4)%name = 'D', pair(4)%kind = 'R', pair(4)%links = 3, 0, pair(4)%at = 0.3, 0", &
-      "  ! drives: angle law (deg) start + (k-1)*step or values(:); omega rad/s, eps rad/s^2", &
-      "  drive(1)%pair = 'A', drive(1)%start = 0, drive(1)%step = 15, drive(1)%omega = 20", &
-      "  force(1)%link = 2, force(1)%at = 0.25, 0.1, force(1)%angle = -90, force(1)%value = 50", &
-      "  moment(1)%link = 3, moment(1)%value = -20", &
-      "/"])
-  end subroutine write_linkage_template
 
 end module kinetostat_linkage_deck

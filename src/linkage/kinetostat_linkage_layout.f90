@@ -11,7 +11,7 @@ module kinetostat_linkage_layout
   use kinetostat_vec2, only: magnitude, angle_360_deg, clean_zero, rotate
   use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_component, &
     col_moment, col_length, col_other
-  use kinetostat_format, only: fixed_field, display_width
+  use kinetostat_format, only: pad_left, fixed_field, display_width
   use kinetostat_labels, only: lang_ru, lang_en
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_mechanism, only: mechanism_t
@@ -21,7 +21,7 @@ module kinetostat_linkage_layout
   use kinetostat_linkage, only: linkage_t, linkage_step_t, pair_r, pair_p, linkage_reference_pose, linkage_assemble, &
     linkage_motion, linkage_statics, link_point_state, point_position, linkage_work_t
   use kinetostat_linkage_structure, only: structure_lines
-  use kinetostat_linkage_deck, only: linkage_deck_t, read_linkage_deck, write_linkage_template, linkage_drive_values, &
+  use kinetostat_linkage_deck, only: linkage_deck_t, read_linkage_deck, linkage_template, linkage_drive_values, &
     linkage_load_value
   implicit none
   private
@@ -45,12 +45,7 @@ module kinetostat_linkage_layout
     !> The validated deck.
     type(linkage_deck_t) :: deck
   contains
-    procedure :: read_deck
-    procedure :: solve
-    procedure :: write_results
-    procedure :: sketch
-    procedure :: force_plan
-    procedure :: mass_model
+    procedure :: read_deck, solve, write_results, sketch, force_plan, mass_model
   end type linkage_mechanism_t
 
 contains
@@ -60,7 +55,7 @@ contains
     !> The mechanism.
     class(mechanism_t), allocatable, intent(out) :: mech
     allocate (linkage_mechanism_t :: mech)
-    mech%template_writer => write_linkage_template
+    mech%template = linkage_template
     mech%title_en = "KINETOSTAT  LINKAGE  FORCE ANALYSIS OF A PLANAR LINKAGE OF LOWER PAIRS"
     mech%title_ru = "KINETOSTAT  LINKAGE  СИЛОВОЙ РАСЧЕТ ПЛОСКОГО "// &
       "МЕХАНИЗМА С НИЗШИМИ ПАРАМИ"
@@ -697,23 +692,23 @@ contains
         !GCC$ novector
         do d = 1, nd
           call drive_names(mech, d, input, effort)
-          line1 = line1//right(upper_ascii(input), merge(first_width, field_width, d == 1))
+          line1 = line1//pad_left(upper_ascii(input), merge(first_width, field_width, d == 1))
           line2 = line2//repeat(" ", merge(first_width, field_width, d == 1))
         end do
         !GCC$ novector
         do ip = 1, np
           if (table%link_frame) then
-            line1 = line1//right(force_name(mech, ip)//"_ALONG", field_width)
-            line2 = line2//right(force_name(mech, ip)//"_ACROSS", field_width)
+            line1 = line1//pad_left(force_name(mech, ip)//"_ALONG", field_width)
+            line2 = line2//pad_left(force_name(mech, ip)//"_ACROSS", field_width)
           else
-            line1 = line1//right(force_name(mech, ip), field_width)
-            line2 = line2//right(force_name(mech, ip)//"G", field_width)
+            line1 = line1//pad_left(force_name(mech, ip), field_width)
+            line2 = line2//pad_left(force_name(mech, ip)//"G", field_width)
           end if
         end do
         !GCC$ novector
         do d = 1, nd
           call drive_names(mech, d, input, effort)
-          line1 = line1//right(upper_ascii(effort), field_width)
+          line1 = line1//pad_left(upper_ascii(effort), field_width)
         end do
         call out%put(trim(line1))
         call out%put(trim(line2))
@@ -722,27 +717,27 @@ contains
         !GCC$ novector
         do d = 1, nd
           if (mech%pairs(mech%drives(d)%pair)%kind == pair_r) then
-            line1 = line1//right(deg, merge(first_width, field_width, d == 1))
+            line1 = line1//pad_left(deg, merge(first_width, field_width, d == 1))
           else
-            line1 = line1//right(metre, merge(first_width, field_width, d == 1))
+            line1 = line1//pad_left(metre, merge(first_width, field_width, d == 1))
           end if
           line2 = line2//repeat(" ", merge(first_width, field_width, d == 1))
         end do
         !GCC$ novector
         do ip = 1, np
-          line1 = line1//right(newton, field_width)
+          line1 = line1//pad_left(newton, field_width)
           if (table%link_frame) then
-            line2 = line2//right(newton, field_width)
+            line2 = line2//pad_left(newton, field_width)
           else
-            line2 = line2//right(deg, field_width)
+            line2 = line2//pad_left(deg, field_width)
           end if
         end do
         !GCC$ novector
         do d = 1, nd
           if (mech%pairs(mech%drives(d)%pair)%kind == pair_r) then
-            line1 = line1//right(newton_m, field_width)
+            line1 = line1//pad_left(newton_m, field_width)
           else
-            line1 = line1//right(newton, field_width)
+            line1 = line1//pad_left(newton, field_width)
           end if
         end do
         call out%put(trim(line1))
@@ -784,13 +779,6 @@ contains
     if (.false.) call later%put("")
   end subroutine write_results
 
-  !> `text` right-justified in `width` display characters.
-  pure function right(text, width) result(field)
-    character(*), intent(in) :: text
-    integer, intent(in) :: width
-    character(len=:), allocatable :: field
-    field = repeat(" ", max(0, width - display_width(text)))//text
-  end function right
 
   !> Upper case of the ASCII letters ("phi1" -> "PHI1").
   pure function upper_ascii(text) result(up)

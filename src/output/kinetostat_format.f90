@@ -13,7 +13,7 @@ module kinetostat_format
   implicit none
   private
   public :: fixed_field, exp_field, int_field, full_number, whole_number, cell_number
-  public :: echo_number, echo_array_number, footer_number, limit_number, pad_right, display_width
+  public :: echo_number, echo_array_number, footer_number, limit_number, pad_right, pad_left, display_width
   public :: put_cell, put_fixed, cell_room, fixed_number, short_number
 
   ! The edit descriptors of the policy (kinetostat_decimal writes them exactly as the
@@ -253,9 +253,7 @@ contains
     !> Finite value.
     real(wp), intent(in) :: x
     character(len=:), allocatable :: text
-    character(len=8) :: field
-    call edit_es(x, 1, 0, field)
-    text = trim(adjustl(field))
+    text = trimmed_es(x, 1)
   end function limit_number
   !> A number in fixed point with `decimals` decimals and no blanks (drawing coordinates and
   !> labels of the SVG sheets): a leading zero is always written ("0.50", "-0.25"), a value
@@ -295,7 +293,7 @@ contains
     real(wp) :: a
     a = abs(x)
     if (a >= 1.0e7_wp) then
-      text = short_exponent(x)
+      text = trimmed_es(x, 2)
     else if (a >= 100.0_wp) then
       text = fixed_number(x, 0)
     else if (a >= 10.0_wp) then
@@ -307,19 +305,21 @@ contains
     else if (a == 0.0_wp) then
       text = "0"
     else
-      text = short_exponent(x)
+      text = trimmed_es(x, 2)
     end if
   end function short_number
 
-  !> ES10.2 without blanks.
-  pure function short_exponent(x) result(text)
+  !> ES(2d+6).d without blanks: ES8.1 (1.0E-09), ES10.2 (2.50E+03).
+  pure function trimmed_es(x, d) result(text)
+    !> Finite value.
     real(wp), intent(in) :: x
+    !> Digits after the point.
+    integer, intent(in) :: d
     character(len=:), allocatable :: text
-    character(len=10) :: field
-    call edit_es(x, 2, 0, field)
+    character(len=2 * d + 6) :: field
+    call edit_es(x, d, 0, field)
     text = trim(adjustl(field))
-  end function short_exponent
-
+  end function trimmed_es
 
   !> Characters a UTF-8 text takes on screen (continuation bytes 0x80-0xBF not counted), so
   !> that Cyrillic labels (two bytes a letter) keep columns aligned.
@@ -333,6 +333,16 @@ contains
       if (c < 128 .or. c >= 192) display_width = display_width + 1
     end do
   end function display_width
+
+  !> `text` right-justified in `width` display characters (see display_width).
+  pure function pad_left(text, width) result(field)
+    !> UTF-8 text.
+    character(*), intent(in) :: text
+    !> Display characters of the field.
+    integer, intent(in) :: width
+    character(len=:), allocatable :: field
+    field = repeat(" ", max(0, width - display_width(text)))//text
+  end function pad_left
 
   !> `s` followed by blanks up to `width` display characters (unchanged when wider).
   pure function pad_right(s, width) result(t)

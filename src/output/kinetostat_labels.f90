@@ -3,14 +3,17 @@
 !> (ИСХОДНЫЕ ДАННЫЕ, РЕЗУЛЬТАТЫ РАСЧЕТА, ...). Mechanism-specific headings live in each
 !> mechanism's layout module.
 module kinetostat_labels
+  use kinetostat_text, only: starts_with
   implicit none
   private
-  public :: lang_en, lang_ru, lang_from_name, label, phrase, echo_name
+  public :: lang_en, lang_ru, lang_from_name, label, phrase, echo_name, unit_symbol
 
   !> Language: English (default).
   integer, parameter :: lang_en = 1
   !> Language: Russian (UTF-8).
   integer, parameter :: lang_ru = 2
+  !> The languages' names as --lang takes them, in the order of their codes.
+  character(*), parameter :: lang_names(*) = [character(len=2) :: "en", "ru"]
 
 contains
 
@@ -18,14 +21,7 @@ contains
   pure integer function lang_from_name(name)
     !> Name given with --lang.
     character(*), intent(in) :: name
-    select case (name)
-    case ("en")
-      lang_from_name = lang_en
-    case ("ru")
-      lang_from_name = lang_ru
-    case default
-      lang_from_name = 0
-    end select
+    lang_from_name = findloc(lang_names, name, dim=1)
   end function lang_from_name
 
   !> A shared label in language `lang`; `english` is both the key and the English text.
@@ -166,10 +162,151 @@ contains
       text = "положений"
     case ("satellites")
       text = "сателлитов"
+    case ("rad")
+      text = "рад"
+    case ("m/s")
+      text = "м/с"
+    case ("W")
+      text = "Вт"
+    ! the words of the SVG sheets (the course's wording: план скоростей, план сил, рычаг Жуковского)
+    case ("deck")
+      text = "файл данных"
+    case ("step")
+      text = "положение"
+    case ("stage")
+      text = "ступень"
+    case ("stages")
+      text = "ступеней"
+    case ("of")
+      text = "из"
+    case ("at")
+      text = "под углом"
+    case ("gravity down the sheet")
+      text = "сила тяжести вниз по листу"
+    case ("lengths")
+      text = "длины"
+    case ("forces")
+      text = "силы"
+    case ("pair force")
+      text = "реакция"
+    case ("load")
+      text = "нагрузка"
+    case ("weight")
+      text = "вес"
+    case ("inertia")
+      text = "инерция"
+    case ("Forces of the step (angles counterclockwise from the x axis of the mechanism's frame)")
+      text = "Силы положения (углы против часовой "// &
+        "стрелки от оси x системы координат "// &
+        "механизма)"
+    case ("Hodographs of the pair forces")
+      text = "Годографы реакций в кинематических парах"
+    case ("Tip of each force vector over the cycle, in the frame of the tables (x right, y up); point k = step k; "// &
+      "O = zero force.")
+      text = "Конец вектора каждой силы за цикл в системе координат "// &
+        "таблиц (x вправо, y вверх); точка k = положение k; "// &
+        "O = нулевая сила."
+    case ("Pair forces of every stage as vectors")
+      text = "Реакции каждой ступени как векторы"
+    case ("The rows of this table are stages, not steps of a cycle: no hodographs and no diagrams against an "// &
+      "input angle.")
+      text = "Строки этой таблицы - ступени, а не положения цикла: "// &
+        "ни годографов, ни диаграмм по углу входного звена."
+    case ("This table has no pair force with an angle column: no hodographs.")
+      text = "В таблице нет реакций со столбцом угла: годографов нет."
+    case ("max")
+      text = "наиб."
+    case ("mean")
+      text = "среднее"
+    case ("Driving effort")
+      text = "Движущее усилие"
+    case ("This table has no driving moment or force column.")
+      text = "В таблице нет столбца движущего момента или силы."
+    case ("Driving force")
+      text = "Движущая сила"
+    case ("Driving moment")
+      text = "Движущий момент"
+    case ("against")
+      text = "по"
+    case ("Magnitudes of the pair forces against")
+      text = "Модули реакций по"
+    case ("No pair forces to show.")
+      text = "Реакций для показа нет."
+    case ("force")
+      text = "сила"
+    case ("no pair force")
+      text = "нет реакций"
+    case ("at every step")
+      text = "во всех положениях"
+    case ("Plan of velocities")
+      text = "План скоростей"
+    case ("Plan of accelerations")
+      text = "План ускорений"
+    case ("Zhukovsky's lever")
+      text = "Рычаг Жуковского"
+    case ("plan of velocities turned by 90 deg")
+      text = "план скоростей, повернутый на 90 град"
+    case ("Force polygons of the links")
+      text = "Планы сил звеньев"
+    case ("link")
+      text = "звено"
+    case ("Machine dynamics (reduced to the input link)")
+      text = "Динамика машины (приведение к входному звену)"
+    case ("Steady cycle")
+      text = "Установившийся режим"
+    case ("flywheel")
+      text = "маховик"
+    case ("textbook")
+      text = "по учебнику"
+    case ("Reduced moment of inertia J_red")
+      text = "Приведенный момент инерции J_red"
+    case ("Reduced moment M_red and M_d (dashed)")
+      text = "Приведенный момент M_red и M_d (штрих)"
+    case ("Change of kinetic energy dT")
+      text = "Изменение кинетической энергии dT"
+    case ("Speed omega1 (dashed: mean, max, min)")
+      text = "Скорость omega1 (штрих: средн., наиб., наим.)"
+    case ("Wittenbauer's curve: dT against J_red")
+      text = "Кривая Виттенбауэра: dT по J_red"
+    case ("Force polygons")
+      text = "Планы сил"
+    case ("balancing effort from the lever")
+      text = "уравновешивающее усилие по рычагу"
+    case ("analytic value of the step")
+      text = "аналитическое значение в положении"
+    case ("relative difference")
+      text = "относительное расхождение"
+    case ("not drawn")
+      text = "не построен"
+    case ("arrows: directions of the loads")
+      text = "стрелки: направления нагрузок"
+    case ("known forces first, then the pair forces")
+      text = "сначала известные силы, затем реакции"
+    case ("no driver column")
+      text = "нет столбца движущего усилия"
+    case ("the driving link is at rest")
+      text = "ведущее звено неподвижно"
+    case ("the driver is not a moment on a link of the drawing")
+      text = "движущее усилие - не момент на звене чертежа"
+    case ("the driver is neither a moment on a link nor a force on a slider of the drawing")
+      text = "движущее усилие - ни момент на звене, ни сила на ползуне чертежа"
     case default
       text = english
     end select
   end function label
+
+  !> A unit symbol for a drawing in language `lang`: the table's symbol (Н*м, кг*м^2) with the
+  !> typographic dot and superscript (Н·м, кг·м²); unknown units as they are.
+  pure function unit_symbol(unit, lang) result(text)
+    !> The unit as the tables write it ("N", "N*m", "deg").
+    character(*), intent(in) :: unit
+    !> lang_en or lang_ru.
+    integer, intent(in) :: lang
+    character(len=:), allocatable :: text
+    text = unit
+    if (lang /= lang_ru) return
+    text = swap(swap(label(unit, lang), "*", "·"), "^2", "²")
+  end function unit_symbol
 
   !> A phrase of the legacy table in language `lang`: a shared label; a unit with a note
   !> ("deg (frame 1)"); the echo's composite names and headings ("FORCE 2 LINK",
@@ -246,12 +383,6 @@ contains
     ! a structural unit: "II(2,3)  DYAD (GROUP OF CLASS II, ORDER 2), KIND RRR"
     if (index(text, "  INPUT LINK(S)") > 0 .or. index(text, "  DYAD (GROUP") > 0 .or. &
         index(text, "  GROUP OF ") > 0) is_linkage_echo = .true.
-  contains
-    pure logical function starts_with(line, start)
-      character(*), intent(in) :: line, start
-      starts_with = .false.
-      if (len(line) >= len(start)) starts_with = line(1:len(start)) == start
-    end function starts_with
   end function is_linkage_echo
 
   !> A general linkage's echo line in Russian, in the words of kinetostat structure --lang ru.

@@ -319,9 +319,9 @@ module kinetostat_step_table
     procedure :: is_void
     procedure :: void_cell
     procedure :: set_selfcheck
-    procedure :: echo_real
-    procedure :: echo_int
-    procedure :: echo_logical
+    procedure :: echo_real => echo_value
+    procedure :: echo_int => echo_value
+    procedure :: echo_logical => echo_value
     procedure :: echo_array
     procedure :: echo_text
     procedure :: echo_heading
@@ -841,41 +841,24 @@ contains
     end do
   end subroutine get_values
 
-  !> Echo a real deck value.
-  pure subroutine echo_real(self, name, value, unit)
+  !> Echo a deck value: a real, an integer or a logical (echo_real, echo_int, echo_logical).
+  pure subroutine echo_value(self, name, value, unit)
     class(step_table_t), intent(inout) :: self
     !> Name as printed.
     character(*), intent(in) :: name
-    !> Value.
-    real(wp), intent(in) :: value
-    !> Unit text.
-    character(*), intent(in) :: unit
-    call push_echo(self, echo_record_t(kind=echo_real_kind, name=name, unit=unit, values=[value]))
-  end subroutine echo_real
-
-  !> Echo an integer deck value.
-  pure subroutine echo_int(self, name, value, unit)
-    class(step_table_t), intent(inout) :: self
-    !> Name as printed.
-    character(*), intent(in) :: name
-    !> Value.
-    integer, intent(in) :: value
-    !> Unit text.
-    character(*), intent(in) :: unit
-    call push_echo(self, echo_record_t(kind=echo_int_kind, name=name, unit=unit, int_value=value))
-  end subroutine echo_int
-
-  !> Echo a logical deck value.
-  pure subroutine echo_logical(self, name, value, unit)
-    class(step_table_t), intent(inout) :: self
-    !> Name as printed.
-    character(*), intent(in) :: name
-    !> Value.
-    logical, intent(in) :: value
+    !> Value: real(wp), integer or logical.
+    class(*), intent(in) :: value
     !> Unit text (or a remark).
     character(*), intent(in) :: unit
-    call push_echo(self, echo_record_t(kind=echo_logical_kind, name=name, unit=unit, logical_value=value))
-  end subroutine echo_logical
+    select type (value)
+    type is (real(wp))
+      call push_echo(self, echo_record_t(kind=echo_real_kind, name=name, unit=unit, values=[value]))
+    type is (integer)
+      call push_echo(self, echo_record_t(kind=echo_int_kind, name=name, unit=unit, int_value=value))
+    type is (logical)
+      call push_echo(self, echo_record_t(kind=echo_logical_kind, name=name, unit=unit, logical_value=value))
+    end select
+  end subroutine echo_value
 
   !> Echo an array of reals.
   pure subroutine echo_array(self, name, values, unit)
@@ -950,8 +933,7 @@ contains
     real(wp), intent(in) :: value
     !> Unit text.
     character(*), intent(in) :: unit
-    if (.not. allocated(self%summary)) allocate (self%summary(0))
-    self%summary = [self%summary, echo_record_t(kind=echo_real_kind, name=name, unit=unit, values=[value])]
+    call append_record(self%summary, echo_record_t(kind=echo_real_kind, name=name, unit=unit, values=[value]))
   end subroutine summary_real
 
   !> A line of text of the summary block (translated by the table writer's glossary).
@@ -959,8 +941,7 @@ contains
     class(step_table_t), intent(inout) :: self
     !> The line (an English glossary key).
     character(*), intent(in) :: text
-    if (.not. allocated(self%summary)) allocate (self%summary(0))
-    self%summary = [self%summary, echo_record_t(kind=echo_line_kind, name=text, unit="")]
+    call append_record(self%summary, echo_record_t(kind=echo_line_kind, name=text, unit=""))
   end subroutine summary_line
 
   !> A figure of the machine dynamics (the DYNAMICS block, JSON "dynamics").
@@ -972,8 +953,17 @@ contains
     real(wp), intent(in) :: value
     !> Unit text.
     character(*), intent(in) :: unit
-    if (.not. allocated(self%dynamics)) allocate (self%dynamics(0))
-    self%dynamics = [self%dynamics, echo_record_t(kind=echo_real_kind, name=name, unit=unit, values=[value])]
+    call append_record(self%dynamics, echo_record_t(kind=echo_real_kind, name=name, unit=unit, values=[value]))
   end subroutine dynamics_real
+
+  !> `record` appended to `list` (allocated when it is not).
+  pure subroutine append_record(list, record)
+    !> The records.
+    type(echo_record_t), allocatable, intent(inout) :: list(:)
+    !> The record to append.
+    type(echo_record_t), intent(in) :: record
+    if (.not. allocated(list)) allocate (list(0))
+    list = [list, record]
+  end subroutine append_record
 
 end module kinetostat_step_table

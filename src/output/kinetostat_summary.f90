@@ -361,12 +361,7 @@ contains
     real(wp) :: work
     logical :: known
     integer :: i, c
-    line = ""
-    if (allocated(table%overrides)) then
-      do i = 1, size(table%overrides)
-        line = line//csv_text(override_part(table%overrides(i), 1))//","
-      end do
-    end if
+    line = override_cells(table, 1)
     line = line//"rows"
     if (allocated(table%void_flags)) line = line//",rows_left_out"
     at = "row"
@@ -401,12 +396,7 @@ contains
     real(wp) :: work
     logical :: known, whole
     integer :: i, c, n
-    line = ""
-    if (allocated(table%overrides)) then
-      do i = 1, size(table%overrides)
-        line = line//csv_text(override_part(table%overrides(i), 2))//","
-      end do
-    end if
+    line = override_cells(table, 2)
     n = table%tallied_rows
     line = line//int_str(n)
     if (allocated(table%void_flags)) line = line//","//int_str(table%void_rows)
@@ -438,6 +428,22 @@ contains
       end if
     end function at_text
   end function summary_row
+
+  !> The CSV cells of the run's overrides (NAME=VALUE), each followed by a comma: their
+  !> names (part 1, the header) or their values (part 2, the row).
+  pure function override_cells(table, part) result(line)
+    !> The results of one run.
+    type(step_table_t), intent(in) :: table
+    !> 1: names, 2: values.
+    integer, intent(in) :: part
+    character(len=:), allocatable :: line
+    integer :: i
+    line = ""
+    if (.not. allocated(table%overrides)) return
+    do i = 1, size(table%overrides)
+      line = line//csv_text(override_part(table%overrides(i), part))//","
+    end do
+  end function override_cells
 
   !> Part 1 (the name) or 2 (the value) of "NAME=VALUE" (blank padding dropped).
   pure function override_part(text, part) result(t)

@@ -180,15 +180,8 @@ contains
     class(drawing_t), intent(in) :: self
     !> Name.
     character(*), intent(in) :: name
-    integer :: i
     point_index = 0
-    if (.not. allocated(self%points)) return
-    do i = 1, size(self%points)
-      if (self%points(i)%name == name) then
-        point_index = i
-        return
-      end if
-    end do
+    if (allocated(self%points)) point_index = findloc(self%points%name, name, dim=1)
   end function point_index
 
   !> Position of the point called `name`, m ((0, 0) if there is none).
@@ -206,15 +199,8 @@ contains
   pure subroutine push_body(self, body)
     class(drawing_t), intent(inout) :: self
     type(drawing_body_t), intent(in) :: body
-    type(drawing_body_t), allocatable :: grown(:)
-    integer :: i
     if (.not. allocated(self%bodies)) allocate (self%bodies(0))
-    allocate (grown(size(self%bodies) + 1))
-    do i = 1, size(self%bodies)
-      grown(i) = self%bodies(i)
-    end do
-    grown(size(grown)) = body
-    call move_alloc(grown, self%bodies)
+    self%bodies = [self%bodies, body]
   end subroutine push_body
 
   !> A link drawn as a bar (plate) through named points (unknown names are left out).
@@ -279,14 +265,8 @@ contains
     real(wp), intent(in) :: f(2)
     !> The link it acts on (for the plans; omitted when the name says it).
     character(*), intent(in), optional :: link
-    type(drawing_force_t) :: force
     if (.not. allocated(self%forces)) allocate (self%forces(0))
-    force%name = name
-    force%kind = kind
-    force%at = p
-    force%f = f
-    if (present(link)) force%on_link = link
-    self%forces = [self%forces, force]
+    self%forces = [self%forces, drawing_force_t(name, kind, p, f, given_link(link))]
   end subroutine add_force
 
   !> A moment (N*m, counterclockwise positive) of a kind at `p` (m).
@@ -302,15 +282,18 @@ contains
     real(wp), intent(in) :: value
     !> The link it acts on (for the plans; omitted when the name says it).
     character(*), intent(in), optional :: link
-    type(drawing_moment_t) :: moment
     if (.not. allocated(self%moments)) allocate (self%moments(0))
-    moment%name = name
-    moment%kind = kind
-    moment%at = p
-    moment%value = value
-    if (present(link)) moment%on_link = link
-    self%moments = [self%moments, moment]
+    self%moments = [self%moments, drawing_moment_t(name, kind, p, value, given_link(link))]
   end subroutine add_moment
+
+  !> The link a load acts on, "" when not given.
+  pure function given_link(link) result(text)
+    !> The link's name (optional).
+    character(*), intent(in), optional :: link
+    character(len=16) :: text
+    text = ""
+    if (present(link)) text = link
+  end function given_link
 
   !> Point `name` of kind `kind` at the position the kinematics columns x_<name>, y_<name>
   !> of row `k` give; an error when the table has no such columns.
@@ -326,16 +309,41 @@ contains
     integer, intent(in) :: kind
     !> No position columns for this point.
     type(error_t), allocatable, intent(out) :: error
-    integer :: cx, cy
-    cx = table%column_index("x_"//name)
-    cy = table%column_index("y_"//name)
+    real(wp) :: p(2)
+    integer :: cx
+    call column_pair(table, k, "x_"//name, "y_"//name, "position of point "//name, p, cx, error)
+    if (allocated(error)) return
+    call self%add_point(name, p, kind)
+  end subroutine point_from_table
+
+  !> The values of columns `x_name` and `y_name` at row `k` (and the first column's index);
+  !> an error naming `what` when the table has no such columns.
+  pure subroutine column_pair(table, k, x_name, y_name, what, v, cx, error)
+    !> The results.
+    type(step_table_t), intent(in) :: table
+    !> Row.
+    integer, intent(in) :: k
+    !> Column names.
+    character(*), intent(in) :: x_name, y_name
+    !> What the two columns give ("position of point B"), for the message.
+    character(*), intent(in) :: what
+    !> The two values.
+    real(wp), intent(out) :: v(2)
+    !> Index of column `x_name`.
+    integer, intent(out) :: cx
+    !> No such columns.
+    type(error_t), allocatable, intent(out) :: error
+    integer :: cy
+    v = 0.0_wp
+    cx = table%column_index(x_name)
+    cy = table%column_index(y_name)
     if (cx == 0 .or. cy == 0) then
-      call fatal_error(error, exit_usage, table%deck//": &"//table%mechanism//": --at: no position of point "// &
-        name//" in the results (x_"//name//", y_"//name//")")
+      call fatal_error(error, exit_usage, table%deck//": &"//table%mechanism//": --at: no "//what// &
+        " in the results ("//x_name//", "//y_name//")")
       return
     end if
-    call self%add_point(name, [table%rows(cx, k), table%rows(cy, k)], kind)
-  end subroutine point_from_table
+    v = [table%rows(cx, k), table%rows(cy, k)]
+  end subroutine column_pair
 
   !> Pair force `name` at the point called `point`, from the component columns <name>_x,
   !> <name>_y of row `k`, turned from their frame (the column's frame_angle) into the
@@ -352,16 +360,10 @@ contains
     character(*), intent(in) :: point
     !> No component columns for this force.
     type(error_t), allocatable, intent(out) :: error
-    integer :: cx, cy
+    integer :: cx
     real(wp) :: f(2), a
-    cx = table%column_index(name//"_x")
-    cy = table%column_index(name//"_y")
-    if (cx == 0 .or. cy == 0) then
-      call fatal_error(error, exit_usage, table%deck//": &"//table%mechanism//": --at: no components of "// &
-        name//" in the results ("//name//"_x, "//name//"_y)")
-      return
-    end if
-    f = [table%rows(cx, k), table%rows(cy, k)]
+    call column_pair(table, k, name//"_x", name//"_y", "components of "//name, f, cx, error)
+    if (allocated(error)) return
     a = table%columns(cx)%frame_angle * deg_to_rad
     call self%add_force(name, force_pair, self%at(point), [cos(a) * f(1) - sin(a) * f(2), sin(a) * f(1) + cos(a) * f(2)])
   end subroutine pair_from_table
@@ -468,6 +470,8 @@ contains
     character(len=:), allocatable :: along
     drawing%view_angle = -0.5_wp * pi - atan2(topo%down(2), topo%down(1))
     drawing%view_note = "gravity down the sheet"
+    ! every list allocated (empty): the writers loop over them without asking
+    allocate (drawing%points(0), drawing%bodies(0), drawing%guides(0), drawing%forces(0), drawing%moments(0))
     if (allocated(topo%links)) then
       do i = 1, size(topo%links)
         do j = 1, size(topo%links(i)%points)

@@ -19,6 +19,13 @@ module kinetostat_dxf
   !> The layers and their colours (AutoCAD colour index).
   character(*), parameter :: layer_names(*) = [character(len=6) :: "LINKS", "JOINTS", "GUIDES", "FORCES", "TEXT"]
   integer, parameter :: layer_colours(*) = [7, 5, 8, 1, 3]
+  !> The file's head up to the layer table: group codes and their values (R12, units mm).
+  integer, parameter :: head_codes(*) = [0, 2, 9, 1, 9, 70, 0, 0, 2, 0, 2, 70]
+  character(*), parameter :: head_values(*) = [character(len=9) :: "SECTION", "HEADER", "$ACADVER", "AC1009", &
+    "$INSUNITS", "4", "ENDSEC", "SECTION", "TABLES", "TABLE", "LAYER", "5"]
+  !> After the layer table, the start of the entities.
+  integer, parameter :: entities_codes(*) = [0, 0, 0, 2]
+  character(*), parameter :: entities_values(*) = [character(len=8) :: "ENDTAB", "ENDSEC", "SECTION", "ENTITIES"]
 
 contains
 
@@ -45,26 +52,15 @@ contains
     size_mm = max(maxval(hi - lo), 1.0_wp)
     h = 0.02_wp * size_mm
     fmax = 0.0_wp
-    if (allocated(drawing%forces)) then
-      do i = 1, size(drawing%forces)
-        fmax = max(fmax, norm2(drawing%forces(i)%f))
-      end do
-    end if
+    do i = 1, size(drawing%forces)
+      fmax = max(fmax, norm2(drawing%forces(i)%f))
+    end do
     fscale = 0.0_wp
     if (fmax > 0.0_wp) fscale = 0.25_wp * size_mm / fmax
 
-    call pair(out, 0, "SECTION")
-    call pair(out, 2, "HEADER")
-    call pair(out, 9, "$ACADVER")
-    call pair(out, 1, "AC1009")
-    call pair(out, 9, "$INSUNITS")
-    call pair(out, 70, "4")
-    call pair(out, 0, "ENDSEC")
-    call pair(out, 0, "SECTION")
-    call pair(out, 2, "TABLES")
-    call pair(out, 0, "TABLE")
-    call pair(out, 2, "LAYER")
-    call pair(out, 70, "5")
+    do i = 1, size(head_codes)
+      call pair(out, head_codes(i), trim(head_values(i)))
+    end do
     do i = 1, size(layer_names)
       call pair(out, 0, "LAYER")
       call pair(out, 2, trim(layer_names(i)))
@@ -72,55 +68,50 @@ contains
       call pair(out, 62, short_int(layer_colours(i)))
       call pair(out, 6, "CONTINUOUS")
     end do
-    call pair(out, 0, "ENDTAB")
-    call pair(out, 0, "ENDSEC")
-    call pair(out, 0, "SECTION")
-    call pair(out, 2, "ENTITIES")
+    do i = 1, size(entities_codes)
+      call pair(out, entities_codes(i), trim(entities_values(i)))
+    end do
     ! bodies
-    if (allocated(drawing%bodies)) then
-      do i = 1, size(drawing%bodies)
-        associate (bd => drawing%bodies(i))
-          select case (bd%kind)
-          case (body_bar)
-            do j = 1, size(bd%points) - 1
-              call line(out, "LINKS", mm(drawing%points(bd%points(j))%p), mm(drawing%points(bd%points(j + 1))%p))
-            end do
-            if (size(bd%points) > 2) call line(out, "LINKS", mm(drawing%points(bd%points(size(bd%points)))%p), &
-              mm(drawing%points(bd%points(1))%p))
-          case (body_block)
-            p = mm(drawing%points(bd%points(1))%p)
-            u = [cos(bd%angle), sin(bd%angle)] * 1.5_wp * h
-            n = [-u(2), u(1)] * 0.6_wp
-            call line(out, "LINKS", p - u - n, p + u - n)
-            call line(out, "LINKS", p + u - n, p + u + n)
-            call line(out, "LINKS", p + u + n, p - u + n)
-            call line(out, "LINKS", p - u + n, p - u - n)
-          case (body_cylinder)
-            u = [cos(bd%angle), sin(bd%angle)]
-            n = [-u(2), u(1)] * 0.6_wp * h
-            a = mm(bd%anchor)
-            b = mm(bd%anchor + bd%length * u)
-            call line(out, "LINKS", a + n, b + n)
-            call line(out, "LINKS", a - n, b - n)
-            call line(out, "LINKS", a + n, a - n)
-          case (body_rod)
-            u = [cos(bd%angle), sin(bd%angle)]
-            call line(out, "LINKS", mm(bd%anchor + bd%reach(1) * u), mm(bd%anchor + bd%reach(2) * u))
-          case default
-            continue
-          end select
-        end associate
-      end do
-    end if
+    do i = 1, size(drawing%bodies)
+      associate (bd => drawing%bodies(i))
+        select case (bd%kind)
+        case (body_bar)
+          do j = 1, size(bd%points) - 1
+            call line(out, "LINKS", mm(drawing%points(bd%points(j))%p), mm(drawing%points(bd%points(j + 1))%p))
+          end do
+          if (size(bd%points) > 2) call line(out, "LINKS", mm(drawing%points(bd%points(size(bd%points)))%p), &
+            mm(drawing%points(bd%points(1))%p))
+        case (body_block)
+          p = mm(drawing%points(bd%points(1))%p)
+          u = [cos(bd%angle), sin(bd%angle)] * 1.5_wp * h
+          n = [-u(2), u(1)] * 0.6_wp
+          call line(out, "LINKS", p - u - n, p + u - n)
+          call line(out, "LINKS", p + u - n, p + u + n)
+          call line(out, "LINKS", p + u + n, p - u + n)
+          call line(out, "LINKS", p - u + n, p - u - n)
+        case (body_cylinder)
+          u = [cos(bd%angle), sin(bd%angle)]
+          n = [-u(2), u(1)] * 0.6_wp * h
+          a = mm(bd%anchor)
+          b = mm(bd%anchor + bd%length * u)
+          call line(out, "LINKS", a + n, b + n)
+          call line(out, "LINKS", a - n, b - n)
+          call line(out, "LINKS", a + n, a - n)
+        case (body_rod)
+          u = [cos(bd%angle), sin(bd%angle)]
+          call line(out, "LINKS", mm(bd%anchor + bd%reach(1) * u), mm(bd%anchor + bd%reach(2) * u))
+        case default
+          continue
+        end select
+      end associate
+    end do
     ! guides on the frame
-    if (allocated(drawing%guides)) then
-      do i = 1, size(drawing%guides)
-        associate (g => drawing%guides(i))
-          u = [cos(g%angle), sin(g%angle)] * g%half_length
-          call line(out, "GUIDES", mm(g%p - u), mm(g%p + u))
-        end associate
-      end do
-    end if
+    do i = 1, size(drawing%guides)
+      associate (g => drawing%guides(i))
+        u = [cos(g%angle), sin(g%angle)] * g%half_length
+        call line(out, "GUIDES", mm(g%p - u), mm(g%p + u))
+      end associate
+    end do
     ! joints, pivots, centres of mass, with their names
     do i = 1, size(drawing%points)
       associate (pt => drawing%points(i))
@@ -155,14 +146,12 @@ contains
         end associate
       end do
     end if
-    if (allocated(drawing%moments)) then
-      do i = 1, size(drawing%moments)
-        associate (m => drawing%moments(i))
-          call text(out, "FORCES", mm(m%at) + [0.7_wp * h, -1.5_wp * h], 0.8_wp * h, trim(m%name)//" = "// &
-            short_number(m%value)//" N*m")
-        end associate
-      end do
-    end if
+    do i = 1, size(drawing%moments)
+      associate (m => drawing%moments(i))
+        call text(out, "FORCES", mm(m%at) + [0.7_wp * h, -1.5_wp * h], 0.8_wp * h, trim(m%name)//" = "// &
+          short_number(m%value)//" N*m")
+      end associate
+    end do
     call text(out, "TEXT", [lo(1), lo(2) - 4.0_wp * h], h, title)
     call pair(out, 0, "ENDSEC")
     call pair(out, 0, "EOF")
@@ -198,16 +187,24 @@ contains
     t = fixed_number(x, 6)
   end function num
 
+  !> The head of an entity: its kind, layer and first point (z = 0).
+  pure subroutine entity(out, kind, layer, p)
+    type(text_buffer_t), intent(inout) :: out
+    character(*), intent(in) :: kind, layer
+    real(wp), intent(in) :: p(2)
+    call pair(out, 0, kind)
+    call pair(out, 8, layer)
+    call pair(out, 10, num(p(1)))
+    call pair(out, 20, num(p(2)))
+    call pair(out, 30, "0.0")
+  end subroutine entity
+
   !> LINE from a to b on `layer`.
   pure subroutine line(out, layer, a, b)
     type(text_buffer_t), intent(inout) :: out
     character(*), intent(in) :: layer
     real(wp), intent(in) :: a(2), b(2)
-    call pair(out, 0, "LINE")
-    call pair(out, 8, layer)
-    call pair(out, 10, num(a(1)))
-    call pair(out, 20, num(a(2)))
-    call pair(out, 30, "0.0")
+    call entity(out, "LINE", layer, a)
     call pair(out, 11, num(b(1)))
     call pair(out, 21, num(b(2)))
     call pair(out, 31, "0.0")
@@ -218,11 +215,7 @@ contains
     type(text_buffer_t), intent(inout) :: out
     character(*), intent(in) :: layer
     real(wp), intent(in) :: c(2), r
-    call pair(out, 0, "CIRCLE")
-    call pair(out, 8, layer)
-    call pair(out, 10, num(c(1)))
-    call pair(out, 20, num(c(2)))
-    call pair(out, 30, "0.0")
+    call entity(out, "CIRCLE", layer, c)
     call pair(out, 40, num(r))
   end subroutine circle
 
@@ -231,11 +224,7 @@ contains
     type(text_buffer_t), intent(inout) :: out
     character(*), intent(in) :: layer, value
     real(wp), intent(in) :: p(2), h
-    call pair(out, 0, "TEXT")
-    call pair(out, 8, layer)
-    call pair(out, 10, num(p(1)))
-    call pair(out, 20, num(p(2)))
-    call pair(out, 30, "0.0")
+    call entity(out, "TEXT", layer, p)
     call pair(out, 40, num(h))
     call pair(out, 1, value)
   end subroutine text

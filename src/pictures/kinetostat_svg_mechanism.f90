@@ -16,7 +16,7 @@ module kinetostat_svg_mechanism
     svg_text, svg_arrow, svg_polygon, coord
   use kinetostat_svg_writer, only: nice_step
   use kinetostat_label_place, only: label_boxes_t, title_attributes, text_chars
-  use kinetostat_sheet_words, only: word, unit_word
+  use kinetostat_labels, only: word => label, unit_word => unit_symbol
   use kinetostat_title_block, only: put_title_block, title_block_height
   use kinetostat_drawing, only: drawing_t, drawing_body_t, point_pivot, point_com, point_plain, body_bar, body_block, &
     body_cylinder, body_rod, force_pair, force_load, &
@@ -46,6 +46,9 @@ module kinetostat_svg_mechanism
   !> Colours of the force kinds (pair, load, weight, inertia).
   character(*), parameter :: kind_colours(*) = [character(len=7) :: "#d62728", "#2ca02c", "#8c564b", "#1f77b4"]
 
+  !> The order the bodies are drawn in (later ones over earlier ones).
+  integer, parameter :: body_order(*) = [body_bar, body_rod, body_cylinder, body_block]
+
 contains
 
   !> The sheet of the mechanism at row `k` of `table`, drawn from `drawing`, its words in
@@ -69,7 +72,7 @@ contains
     character(len=:), allocatable :: line, text
     type(label_boxes_t) :: boxes
     logical :: leader
-    integer :: i, j, n, nf, nm
+    integer :: i, j, n, nf, nm, pass
 
     n = 0
     if (allocated(drawing%points)) n = size(drawing%points)
@@ -96,19 +99,17 @@ contains
       ymin = min(ymin, minval(py))
       ymax = max(ymax, maxval(py))
     end if
-    if (allocated(drawing%guides)) then
-      do i = 1, size(drawing%guides)
-        associate (g => drawing%guides(i))
-          do j = -1, 1, 2
-            q = turn(g%p + j * g%half_length * [cos(g%angle), sin(g%angle)], drawing%view_angle)
-            xmin = min(xmin, q(1))
-            xmax = max(xmax, q(1))
-            ymin = min(ymin, q(2))
-            ymax = max(ymax, q(2))
-          end do
-        end associate
-      end do
-    end if
+    do i = 1, size(drawing%guides)
+      associate (g => drawing%guides(i))
+        do j = -1, 1, 2
+          q = turn(g%p + j * g%half_length * [cos(g%angle), sin(g%angle)], drawing%view_angle)
+          xmin = min(xmin, q(1))
+          xmax = max(xmax, q(1))
+          ymin = min(ymin, q(2))
+          ymax = max(ymax, q(2))
+        end do
+      end associate
+    end do
     if (xmax - xmin <= 0.0_wp .and. ymax - ymin <= 0.0_wp) then
       xmin = 0.0_wp
       xmax = 1.0_wp
@@ -150,11 +151,9 @@ contains
     allocate (obst_x(0), obst_y(0))
 
     ! guides (hatched on one side)
-    if (allocated(drawing%guides)) then
-      do i = 1, size(drawing%guides)
-        call put_guide(out, drawing, i, ox, oy, len_scale, obst_x, obst_y)
-      end do
-    end if
+    do i = 1, size(drawing%guides)
+      call put_guide(out, drawing, i, ox, oy, len_scale, obst_x, obst_y)
+    end do
     ! the axes of the mechanism's frame at its origin
     origin = [ox, oy]
     do j = 1, 2
@@ -165,12 +164,16 @@ contains
         axis_tip(2, j), "#555555", 0.2_wp, 2.0_wp))
       call add_segment(obst_x, obst_y, origin, axis_tip(:, j))
     end do
-    ! bodies: bars through their points (the centre of mass included), plates as the convex
-    ! hull of their points
-    if (allocated(drawing%bodies)) then
+    ! bodies in drawing order: bars through their points (the centre of mass included) and
+    ! plates as the convex hull of their points; rods, and the hydraulic cylinders over them
+    ! (a tube from the pivot along the axis); blocks
+    do pass = 1, size(body_order)
       do i = 1, size(drawing%bodies)
         associate (b => drawing%bodies(i))
-          if (b%kind == body_bar .and. size(b%points) >= 2) then
+          if (b%kind /= body_order(pass)) cycle
+          select case (b%kind)
+          case (body_bar)
+            if (size(b%points) < 2) cycle
             call convex_hull(px(b%points), py(b%points), hx, hy)
             if (size(hx) <= 2 .or. polygon_area(hx, hy) < 1.0_wp) then
               ! a bar (points on one line): a light band with a dark outline between its ends
@@ -185,23 +188,12 @@ contains
             do j = 1, size(hx)
               call add_segment(obst_x, obst_y, [hx(j), hy(j)], [hx(modulo(j, size(hx)) + 1), hy(modulo(j, size(hx)) + 1)])
             end do
-          end if
-        end associate
-      end do
-      ! hydraulic cylinders over their rods: a tube from the pivot along the axis
-      do i = 1, size(drawing%bodies)
-        associate (b => drawing%bodies(i))
-          if (b%kind == body_rod) then
+          case (body_rod)
             call axis_ends(b, b%reach(1), b%reach(2), q, t)
             call out%put(svg_line(q(1), q(2), t(1), t(2), 'stroke="#000000" stroke-width="1.5" stroke-linecap="round"'))
             call out%put(svg_line(q(1), q(2), t(1), t(2), 'stroke="#e8e8e8" stroke-width="0.8" stroke-linecap="round"'))
             call add_segment(obst_x, obst_y, q, t)
-          end if
-        end associate
-      end do
-      do i = 1, size(drawing%bodies)
-        associate (b => drawing%bodies(i))
-          if (b%kind == body_cylinder) then
+          case (body_cylinder)
             call axis_ends(b, 0.0_wp, b%length, q, t)
             call put_tube(out, q, t, 2.3_wp)
             call add_segment(obst_x, obst_y, q, t)
@@ -210,19 +202,14 @@ contains
               call add_segment(obst_x, obst_y, q + u2, t + u2)
               call add_segment(obst_x, obst_y, q - u2, t - u2)
             end if
-          end if
-        end associate
-      end do
-      do i = 1, size(drawing%bodies)
-        associate (b => drawing%bodies(i))
-          if (b%kind == body_block) then
+          case (body_block)
             call put_block(out, px(b%points(1)), py(b%points(1)), b%angle + drawing%view_angle)
             call add_segment(obst_x, obst_y, [px(b%points(1)) - 4.0_wp, py(b%points(1))], &
               [px(b%points(1)) + 4.0_wp, py(b%points(1))])
-          end if
+          end select
         end associate
       end do
-    end if
+    end do
     ! joints, pivots, centres of mass
     do i = 1, n
       select case (drawing%points(i)%kind)
@@ -269,23 +256,21 @@ contains
       call boxes%place(text, label_size, px(i), py(i), 0.75_wp * pi, obst_x, obst_y, bounds, tx, ty, leader)
       call put_label(out, text, tx, ty, px(i), py(i), leader, 'class="label"', label_size)
     end do
-    if (allocated(drawing%bodies)) then
-      do i = 1, size(drawing%bodies)
-        associate (b => drawing%bodies(i))
-          if (size(b%points) == 0) cycle
-          text = trim(b%name)
-          if (b%kind == body_block) then
-            q = [px(b%points(1)), py(b%points(1))]
-          else if (size(b%points) >= 2) then
-            q = [sum(px(b%points)), sum(py(b%points))] / size(b%points)
-          else
-            cycle
-          end if
-          call boxes%place(text, label_size, q(1), q(2), 0.25_wp * pi, obst_x, obst_y, bounds, tx, ty, leader)
-          call put_label(out, text, tx, ty, q(1), q(2), leader, 'class="label" font-style="italic"', label_size)
-        end associate
-      end do
-    end if
+    do i = 1, size(drawing%bodies)
+      associate (b => drawing%bodies(i))
+        if (size(b%points) == 0) cycle
+        text = trim(b%name)
+        if (b%kind == body_block) then
+          q = [px(b%points(1)), py(b%points(1))]
+        else if (size(b%points) >= 2) then
+          q = [sum(px(b%points)), sum(py(b%points))] / size(b%points)
+        else
+          cycle
+        end if
+        call boxes%place(text, label_size, q(1), q(2), 0.25_wp * pi, obst_x, obst_y, bounds, tx, ty, leader)
+        call put_label(out, text, tx, ty, q(1), q(2), leader, 'class="label" font-style="italic"', label_size)
+      end associate
+    end do
     do j = 1, 2
       text = merge("x", "y", j == 1)
       call boxes%place(text, label_size, axis_tip(1, j), axis_tip(2, j), atan2(axis_tip(2, j) - origin(2), &
@@ -431,26 +416,28 @@ contains
     allocate (hull(2 * n))
     m = 0
     do i = 1, n
-      do while (m >= 2)
-        if (cross(hull(m - 1), hull(m), order(i)) > 0.0_wp) exit
-        m = m - 1
-      end do
-      m = m + 1
-      hull(m) = order(i)
+      call push(hull, m, order(i), 2)
     end do
     lower_size = m + 1
     do i = n - 1, 1, -1
-      do while (m >= lower_size)
-        if (cross(hull(m - 1), hull(m), order(i)) > 0.0_wp) exit
-        m = m - 1
-      end do
-      m = m + 1
-      hull(m) = order(i)
+      call push(hull, m, order(i), lower_size)
     end do
     m = m - 1
     hx = x(hull(1:m))
     hy = y(hull(1:m))
   contains
+    !> Point p onto hull(1:m), after dropping the points (above the first `keep` - 1) that
+    !> would not make a left turn.
+    pure subroutine push(hull, m, p, keep)
+      integer, intent(inout) :: hull(:), m
+      integer, intent(in) :: p, keep
+      do while (m >= keep)
+        if (cross(hull(m - 1), hull(m), p) > 0.0_wp) exit
+        m = m - 1
+      end do
+      m = m + 1
+      hull(m) = p
+    end subroutine push
     pure real(wp) function cross(a, b, c)
       integer, intent(in) :: a, b, c
       cross = (x(b) - x(a)) * (y(c) - y(a)) - (y(b) - y(a)) * (x(c) - x(a))
@@ -612,28 +599,24 @@ contains
       "mechanism's frame)", lang), &
       'class="label" font-weight="bold"'))
     allocate (texts(0), colours(0))
-    if (allocated(drawing%forces)) then
-      do i = 1, size(drawing%forces)
-        associate (f => drawing%forces(i))
-          a = modulo(atan2(f%f(2), f%f(1)) * rad_to_deg, 360.0_wp)
-          if (a >= 359.95_wp) a = 0.0_wp
-          text = trim(f%name)//" = "//short_number(hypot(f%f(1), f%f(2)))//" "//unit_word("N", lang)
-          if (hypot(f%f(1), f%f(2)) > 0.0_wp) text = text//" "//word("at", lang)//" "//fixed_number(a, 1)//" "// &
-            unit_word("deg", lang)
-          texts = [character(len=96) :: texts, text]
-          colours = [character(len=7) :: colours, kind_colours(f%kind)]
-        end associate
-      end do
-    end if
-    if (allocated(drawing%moments)) then
-      do i = 1, size(drawing%moments)
-        associate (m => drawing%moments(i))
-          text = trim(m%name)//" = "//short_number(m%value)//" "//unit_word("N*m", lang)
-          texts = [character(len=96) :: texts, text]
-          colours = [character(len=7) :: colours, kind_colours(m%kind)]
-        end associate
-      end do
-    end if
+    do i = 1, size(drawing%forces)
+      associate (f => drawing%forces(i))
+        a = modulo(atan2(f%f(2), f%f(1)) * rad_to_deg, 360.0_wp)
+        if (a >= 359.95_wp) a = 0.0_wp
+        text = trim(f%name)//" = "//short_number(hypot(f%f(1), f%f(2)))//" "//unit_word("N", lang)
+        if (hypot(f%f(1), f%f(2)) > 0.0_wp) text = text//" "//word("at", lang)//" "//fixed_number(a, 1)//" "// &
+          unit_word("deg", lang)
+        texts = [character(len=96) :: texts, text]
+        colours = [character(len=7) :: colours, kind_colours(f%kind)]
+      end associate
+    end do
+    do i = 1, size(drawing%moments)
+      associate (m => drawing%moments(i))
+        text = trim(m%name)//" = "//short_number(m%value)//" "//unit_word("N*m", lang)
+        texts = [character(len=96) :: texts, text]
+        colours = [character(len=7) :: colours, kind_colours(m%kind)]
+      end associate
+    end do
     ! as many columns (up to four) as the widest entry allows
     widest = 1
     do i = 1, size(texts)

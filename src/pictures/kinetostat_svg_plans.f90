@@ -9,7 +9,7 @@
 !> - the force polygon of every link: its loads, then the pair forces on it, head to tail at
 !>   one scale mu_F in N/mm.
 !> The numbers come from kinetostat_plans; labels are placed by kinetostat_label_place (no
-!> two overlap); words from kinetostat_sheet_words.
+!> two overlap); words from kinetostat_labels.
 module kinetostat_svg_plans
   use kinetostat_kinds, only: wp, pi, version_string
   use kinetostat_text, only: int_str, lower
@@ -19,7 +19,7 @@ module kinetostat_svg_plans
   use kinetostat_svg, only: svg_open, svg_close, svg_line, svg_rect, svg_text, svg_arrow, svg_circle, palette_colour
   use kinetostat_svg_writer, only: nice_step
   use kinetostat_label_place, only: label_boxes_t, title_attributes, anchor_start
-  use kinetostat_sheet_words, only: word, unit_word
+  use kinetostat_labels, only: word => label, unit_word => unit_symbol
   use kinetostat_title_block, only: put_title_block, title_block_height
   use kinetostat_plans, only: plans_t, plan_vector_t
   implicit none

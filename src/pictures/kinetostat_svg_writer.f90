@@ -10,7 +10,7 @@
 !> drawn as vectors from the origin instead. Same table -> same bytes.
 module kinetostat_svg_writer
   use, intrinsic :: iso_fortran_env, only: int64
-  use kinetostat_kinds, only: wp, pi, deg_to_rad, version_string
+  use kinetostat_kinds, only: wp, deg_to_rad, version_string
   use kinetostat_error, only: error_t, fatal_error, exit_usage
   use kinetostat_text, only: int_str, upper
   use kinetostat_format, only: fixed_number, short_number, full_number
@@ -19,7 +19,7 @@ module kinetostat_svg_writer
   use kinetostat_svg, only: svg_open, svg_close, svg_line, svg_path, svg_polyline_d, svg_circle, svg_rect, &
     svg_text, svg_arrow, coord, palette_colour
   use kinetostat_label_place, only: label_boxes_t, title_attributes, anchor_start, anchor_end
-  use kinetostat_sheet_words, only: word, unit_word
+  use kinetostat_labels, only: word => label, unit_word => unit_symbol
   use kinetostat_title_block, only: put_title_block, title_block_height
   implicit none
   private

@@ -4,7 +4,7 @@
 !> only through this type.
 module kinetostat_mechanism
   use kinetostat_error, only: error_t
-  use kinetostat_deck, only: deck_source_t
+  use kinetostat_deck, only: deck_source_t, write_template_lines
   use kinetostat_step_table, only: step_table_t
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_labels, only: lang_ru
@@ -21,8 +21,8 @@ module kinetostat_mechanism
     character(len=:), allocatable :: title_en
     !> Title line of the legacy table, Russian (the 1991 printout's wording where known).
     character(len=:), allocatable :: title_ru
-    !> Writes the kind's commented template deck (set by the constructor, as the titles).
-    procedure(template_writer_i), pointer, nopass :: template_writer => null()
+    !> The kind's commented template deck, as lines (set by the constructor, as the titles).
+    character(len=:), allocatable :: template(:)
   contains
     !> Read and validate the deck.
     procedure(read_deck_i), deferred :: read_deck
@@ -32,7 +32,7 @@ module kinetostat_mechanism
     procedure :: title
     !> The RESULTS block of the legacy table: header lines and the rows as the original laid them out.
     procedure(results_i), deferred :: write_results
-    !> The commented template deck (through template_writer).
+    !> The commented template deck.
     procedure :: write_template
     !> The topology for a drawing (links and their points, pivots, guides, gravity) after
     !> read_deck; by default not available.
@@ -84,13 +84,6 @@ module kinetostat_mechanism
       !> first; most layouts have none).
       type(text_buffer_t), intent(inout) :: later
     end subroutine results_i
-
-    pure subroutine template_writer_i(out)
-      import :: text_buffer_t
-      implicit none
-      !> Where the lines go.
-      type(text_buffer_t), intent(inout) :: out
-    end subroutine template_writer_i
   end interface
 
 contains
@@ -108,12 +101,12 @@ contains
     end if
   end function title
 
-  !> The commented template deck of the kind (nothing when the constructor set no writer).
+  !> The commented template deck of the kind (nothing when the constructor set none).
   pure subroutine write_template(self, out)
     class(mechanism_t), intent(in) :: self
     !> Where the lines go.
     type(text_buffer_t), intent(inout) :: out
-    if (associated(self%template_writer)) call self%template_writer(out)
+    if (allocated(self%template)) call write_template_lines(out, self%template)
   end subroutine write_template
 
   !> The topology for a drawing: by default none (`sketch%available` false).

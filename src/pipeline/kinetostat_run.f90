@@ -5,7 +5,7 @@ module kinetostat_run
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use kinetostat_kinds, only: wp
   use kinetostat_selfcheck, only: selfcheck_tolerance
-  use kinetostat_error, only: error_t, fatal_error, exit_geometry, exit_input
+  use kinetostat_error, only: error_t, fatal_error, exit_geometry
   use kinetostat_text, only: int_str
   use kinetostat_step_table, only: step_table_t, echo_cursor_t, echo_real_kind, echo_array_kind
   use kinetostat_deck, only: deck_source_t, release_deck_text
@@ -49,6 +49,9 @@ module kinetostat_run
   integer, parameter :: format_plans = 6
   !> Output format: the mechanism of step --at K as an ASCII DXF drawing.
   integer, parameter :: format_dxf = 7
+  !> The formats' names as --format takes them, in the order of their codes.
+  character(*), parameter :: format_keys(*) = [character(len=7) :: "table", "csv", "json", "svg", "summary", &
+    "plans", "dxf"]
   !> Names of the formats, for messages and --help.
   character(*), parameter :: format_names = "table, csv, json, svg, summary, plans, dxf"
 
@@ -108,24 +111,7 @@ contains
   pure integer function format_from_name(name)
     !> Name given with --format.
     character(*), intent(in) :: name
-    select case (name)
-    case ("table")
-      format_from_name = format_table
-    case ("csv")
-      format_from_name = format_csv
-    case ("json")
-      format_from_name = format_json
-    case ("summary")
-      format_from_name = format_summary
-    case ("plans")
-      format_from_name = format_plans
-    case ("dxf")
-      format_from_name = format_dxf
-    case ("svg")
-      format_from_name = format_svg
-    case default
-      format_from_name = 0
-    end select
+    format_from_name = findloc(format_keys, name, dim=1)
   end function format_from_name
 
   !> Run one deck through a mechanism, in blocks of rows: each block is solved, checked,

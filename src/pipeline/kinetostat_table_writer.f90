@@ -6,7 +6,7 @@ module kinetostat_table_writer
   use kinetostat_selfcheck, only: selfcheck_tolerance
   use kinetostat_step_table, only: step_table_t, echo_record_t, echo_cursor_t, echo_real_kind, &
     echo_int_kind, echo_logical_kind, echo_array_kind, echo_text_kind, echo_heading_kind, echo_line_kind, col_force
-  use kinetostat_format, only: echo_number, echo_array_number, footer_number, limit_number, pad_right, put_fixed, &
+  use kinetostat_format, only: pad_left, echo_number, echo_array_number, footer_number, limit_number, pad_right, put_fixed, &
     fixed_field, display_width
   use kinetostat_labels, only: label, lang_ru, phrase, echo_name
   use kinetostat_summary, only: column_stats_t, column_stats, drive_work
@@ -87,9 +87,9 @@ contains
         call out%append(adjustr(pad_right(upper(table%columns(cols(i))%name), 12)))
       end do
       call out%end_line()
-      call out%append(right_text(label(table%columns(table%input_column)%unit, lang), 9))
+      call out%append(pad_left(label(table%columns(table%input_column)%unit, lang), 9))
       do i = 1, size(cols)
-        call out%append(right_text(label(table%columns(cols(i))%unit, lang), 12))
+        call out%append(pad_left(label(table%columns(cols(i))%unit, lang), 12))
       end do
       call out%end_line()
     end if
@@ -100,14 +100,6 @@ contains
       end do
       call out%end_line()
     end do
-  contains
-    !> `text` right-adjusted in `width` screen columns (UTF-8 units take fewer columns than bytes).
-    pure function right_text(text, width) result(field)
-      character(*), intent(in) :: text
-      integer, intent(in) :: width
-      character(len=:), allocatable :: field
-      field = repeat(" ", max(0, width - display_width(text)))//text
-    end function right_text
   end subroutine write_shaking_rows
 
   !> The legacy table's lines before the rows: title, deck, INPUT DATA, the RESULTS heading.

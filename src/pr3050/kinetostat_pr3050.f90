@@ -9,7 +9,6 @@
 module kinetostat_pr3050
   use kinetostat_kinds, only: wp
   use kinetostat_error, only: error_t, fatal_error, exit_geometry
-  use kinetostat_text, only: real_str
   use kinetostat_vec2, only: unit_at, perp, cross, polar
   use kinetostat_loads, only: inertia_force, inertia_moment, gravity_force
   use kinetostat_selfcheck, only: link_balance_t, link_balance, equilibrium_residual, power_mismatch

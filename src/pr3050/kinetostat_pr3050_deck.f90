@@ -3,15 +3,13 @@ module kinetostat_pr3050_deck
   use kinetostat_kinds, only: wp, g_default, deg_to_rad
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str
-  use kinetostat_text_buffer, only: text_buffer_t
-  use kinetostat_deck, only: &
-    check_namelist_syntax, write_template_lines, deck_context_t, unset_real, deck_array_capacities, max_steps, &
-    deck_source_t, namelist_probe_t, require_all_set, deck_error, require_set, require_positive, &
+  use kinetostat_deck, only: begin_group, deck_context_t, unset_real, deck_array_capacities, max_steps, &
+    deck_source_t, namelist_probe_t, require_all_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values
   use kinetostat_pr3050, only: pr3050_params_t
   implicit none
   private
-  public :: pr3050_deck_t, read_pr3050_deck, write_pr3050_template, pr3050_step_count, pr3050_phi3_deg
+  public :: pr3050_deck_t, read_pr3050_deck, pr3050_template, pr3050_step_count, pr3050_phi3_deg
 
   !> Largest distance of (phi3_end - phi3_start)/dphi3 from a whole number, relative to it
   !> (at least 1), that still counts as whole (decimal angles are not exact in binary).
@@ -41,7 +39,7 @@ module kinetostat_pr3050_deck
   end type pr3050_deck_t
 
   !> Template deck (the spec's reference data), one line per entry.
-  character(*), parameter :: template_lines(*) = [character(len=100) :: &
+  character(*), parameter :: pr3050_template(*) = [character(len=100) :: &
     "! kinetostat deck: PR 3050, four-bar with an oscillating hydraulic cylinder.", &
     "! Links: 1 cylinder pivoted on the frame at A, 2 piston with rod pinned at B to 3,", &
     "! 3 rocker (turning platform) pivoted at C, 4 frame. Frame: origin C, x from C to A,", &
@@ -71,13 +69,6 @@ module kinetostat_pr3050_deck
     "/"]
 
 contains
-
-  !> The commented template deck.
-  pure subroutine write_pr3050_template(out)
-    !> Where the lines go.
-    type(text_buffer_t), intent(inout) :: out
-    call write_template_lines(out, template_lines)
-  end subroutine write_pr3050_template
 
   !> Number of steps N = (phi3_end - phi3_start)/dphi3 + 1 of a rocker range (deg), or 0
   !> when the range is not a whole number of steps, or -1 when it exceeds max_steps.
@@ -120,8 +111,8 @@ contains
     namelist /pr3050/ l_ca, l_cb, l_cs3, delta, l_bs2, l_s1a, gamma, g, m1, m2, m3, j1, j2, j3, &
       phi3_start, phi3_end, dphi3, omega3, eps3
 
-    ctx%path = source%path
-    ctx%group = "pr3050"
+    call begin_group(source, "pr3050", ctx, error)
+    if (allocated(error)) return
     l_ca = unset_real; l_cb = unset_real; l_cs3 = unset_real; delta = unset_real
     l_bs2 = unset_real; l_s1a = unset_real; gamma = unset_real; g = unset_real
     m1 = unset_real; m2 = unset_real; m3 = unset_real
@@ -131,8 +122,6 @@ contains
     allocate (omega3(capacity(1)), source=unset_real)
     allocate (eps3(capacity(2)), source=unset_real)
 
-    call check_namelist_syntax(source, ctx%group, error)
-    if (allocated(error)) return
     read (source%records, nml=pr3050, iostat=probe%ios, iomsg=probe%msg)
     do while (probe%retry(source)) ! on failure: find the line and the assignment
       read (probe%records, nml=pr3050, iostat=probe%ios, iomsg=probe%msg)

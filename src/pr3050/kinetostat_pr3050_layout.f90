@@ -19,7 +19,7 @@ module kinetostat_pr3050_layout
   use kinetostat_sketch, only: sketch_t
   use kinetostat_pr3050, only: pr3050_params_t, pr3050_position_t, pr3050_step_t, pr3050_step, &
     pr3050_check_position, pr3050_position
-  use kinetostat_pr3050_deck, only: pr3050_deck_t, read_pr3050_deck, write_pr3050_template, pr3050_phi3_deg
+  use kinetostat_pr3050_deck, only: pr3050_deck_t, read_pr3050_deck, pr3050_template, pr3050_phi3_deg
   use kinetostat_drawing, only: drawing_t, force_load
   use kinetostat_bodies, only: mass_model_t
   implicit none
@@ -74,12 +74,7 @@ module kinetostat_pr3050_layout
     !> The validated deck.
     type(pr3050_deck_t) :: deck
   contains
-    procedure :: read_deck
-    procedure :: solve
-    procedure :: write_results
-    procedure :: sketch
-    procedure :: force_plan
-    procedure :: mass_model
+    procedure :: read_deck, solve, write_results, sketch, force_plan, mass_model
   end type pr3050_mechanism_t
 
 contains
@@ -89,7 +84,7 @@ contains
     !> The mechanism.
     class(mechanism_t), allocatable, intent(out) :: mech
     allocate (pr3050_mechanism_t :: mech)
-    mech%template_writer => write_pr3050_template
+    mech%template = pr3050_template
     mech%title_en = "KINETOSTAT  PR 3050  FORCE ANALYSIS OF THE FOUR-BAR WITH AN OSCILLATING HYDRAULIC CYLINDER"
     mech%title_ru = "KINETOSTAT  PR 3050  СИЛОВОЙ РАСЧЕТ ЧЕТЫРЕХЗВЕННОГО" // &
       " МЕХАНИЗМА С КАЧАЮЩИМСЯ ГИДРОЦИЛИНДРОМ"

@@ -14,7 +14,7 @@ module kinetostat_pr3207_layout
   use kinetostat_sketch, only: sketch_t
   use kinetostat_table_writer, only: put_two_line_step
   use kinetostat_pr3207, only: pr3207_params_t, pr3207_position_t, pr3207_step_t, pr3207_step, pr3207_position
-  use kinetostat_pr3207_deck, only: pr3207_deck_t, read_pr3207_deck, write_pr3207_template, pr3207_phi1_deg, &
+  use kinetostat_pr3207_deck, only: pr3207_deck_t, read_pr3207_deck, pr3207_template, pr3207_phi1_deg, &
     pr3207_f5c, pr3207_f5c_steps
   use kinetostat_drawing, only: drawing_t, force_load
   use kinetostat_bodies, only: mass_model_t
@@ -58,12 +58,7 @@ module kinetostat_pr3207_layout
     !> The steady cycle (dynamics = 'steady' or 'given').
     type(cycle_t) :: cycle
   contains
-    procedure :: read_deck
-    procedure :: solve
-    procedure :: write_results
-    procedure :: sketch
-    procedure :: force_plan
-    procedure :: mass_model
+    procedure :: read_deck, solve, write_results, sketch, force_plan, mass_model
   end type pr3207_mechanism_t
 
 contains
@@ -73,7 +68,7 @@ contains
     !> The mechanism.
     class(mechanism_t), allocatable, intent(out) :: mech
     allocate (pr3207_mechanism_t :: mech)
-    mech%template_writer => write_pr3207_template
+    mech%template = pr3207_template
     mech%title_en = "KINETOSTAT  PR 3207  FORCE ANALYSIS OF THE SIX-BAR SLOTTED-LINK (SHAPER) MECHANISM"
     mech%title_ru = "KINETOSTAT  PR 3207  СИЛОВОЙ РАСЧЕТ ШЕСТИЗВЕННОГО" // &
       " КУЛИСНОГО МЕХАНИЗМА (ПОПЕРЕЧНО-СТРОГАЛЬНОГО)"

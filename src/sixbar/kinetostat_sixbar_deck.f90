@@ -3,9 +3,8 @@ module kinetostat_sixbar_deck
   use kinetostat_kinds, only: wp, g_default, rad_to_deg
   use kinetostat_error, only: error_t, fatal_error, exit_geometry
   use kinetostat_text, only: real_str, int_str
-  use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_deck, only: &
-    check_namelist_syntax, write_template_lines, deck_context_t, unset_real, deck_array_capacities, &
+    begin_group, deck_context_t, unset_real, deck_array_capacities, &
     deck_source_t, namelist_probe_t, require_all_set, deck_error, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn
   use kinetostat_sixbar, only: sixbar_params_t, sixbar_extreme_phi1
@@ -13,7 +12,7 @@ module kinetostat_sixbar_deck
   use kinetostat_dynamics_deck, only: dynamics_deck_t, read_dynamics_settings
   implicit none
   private
-  public :: sixbar_deck_t, read_sixbar_deck, write_sixbar_template, sixbar_phi1_deg
+  public :: sixbar_deck_t, read_sixbar_deck, sixbar_template, sixbar_phi1_deg
 
   !> A validated `&sixbar` deck.
   type :: sixbar_deck_t
@@ -36,7 +35,7 @@ module kinetostat_sixbar_deck
   end type sixbar_deck_t
 
   !> Template deck (the reference deck data/sixbar.nml), one line per entry.
-  character(*), parameter :: template_lines(*) = [character(len=92) :: &
+  character(*), parameter :: sixbar_template(*) = [character(len=92) :: &
     "! kinetostat deck: T.FTN, six-bar crank-rocker-slider mechanism (manual section 2).", &
     "! Links: 1 crank AB, 2 rod BC, 3 rocker C-D-E (pivot D, C and E opposite), 4 rod EH,", &
     "! 5 slider at H, 6 frame. Global frame: origin A, y0 up (gravity -y0), D = A + (a, b).", &
@@ -66,13 +65,6 @@ module kinetostat_sixbar_deck
 
 contains
 
-  !> The commented template deck.
-  pure subroutine write_sixbar_template(out)
-    !> Where the lines go.
-    type(text_buffer_t), intent(inout) :: out
-    call write_template_lines(out, template_lines)
-  end subroutine write_sixbar_template
-
   !> Read and validate a `&sixbar` deck. Input errors have exit code 2; a requested
   !> extreme position that does not exist is a geometry error (exit 3).
   subroutine read_sixbar_deck(source, deck, error)
@@ -100,8 +92,8 @@ contains
       m1, m2, m3, m4, m5, j1, j2, j3, j4, omega1, g, dphi, n, phi_start, start_at_extreme, f5, legacy_eq2, &
       dynamics, delta, j_rotor, j_flywheel
 
-    ctx%path = source%path
-    ctx%group = "sixbar"
+    call begin_group(source, "sixbar", ctx, error)
+    if (allocated(error)) return
     dynamics = ""; delta = unset_real; j_rotor = unset_real; j_flywheel = unset_real
     a = unset_real; b = unset_real; l1 = unset_real
     lam2 = unset_real; lam_s2 = unset_real; lam3 = unset_real; lam_de = unset_real
@@ -115,8 +107,6 @@ contains
     capacity = deck_array_capacities(source, ctx%group, ["f5"])
     allocate (f5(capacity(1)), source=unset_real)
 
-    call check_namelist_syntax(source, ctx%group, error)
-    if (allocated(error)) return
     read (source%records, nml=sixbar, iostat=probe%ios, iomsg=probe%msg)
     do while (probe%retry(source)) ! on failure: find the line and the assignment
       read (probe%records, nml=sixbar, iostat=probe%ios, iomsg=probe%msg)

@@ -18,7 +18,7 @@ module kinetostat_sixbar_layout
   use kinetostat_table_writer, only: put_heading, put_two_line_step
   use kinetostat_sixbar, only: sixbar_params_t, sixbar_step_t, sixbar_step, sixbar_ok, sixbar_open1, &
     sixbar_dead1, sixbar_open2, sixbar_dead2, sixbar_frame2_to_frame1, sixbar_down1, sixbar_reduced
-  use kinetostat_sixbar_deck, only: sixbar_deck_t, read_sixbar_deck, write_sixbar_template, sixbar_phi1_deg
+  use kinetostat_sixbar_deck, only: sixbar_deck_t, read_sixbar_deck, sixbar_template, sixbar_phi1_deg
   use kinetostat_drawing, only: drawing_t, force_load
   use kinetostat_bodies, only: mass_model_t
   use kinetostat_dynamics, only: motion_t
@@ -75,12 +75,7 @@ module kinetostat_sixbar_layout
     !> The validated deck.
     type(sixbar_deck_t) :: deck
   contains
-    procedure :: read_deck
-    procedure :: solve
-    procedure :: write_results
-    procedure :: sketch
-    procedure :: force_plan
-    procedure :: mass_model
+    procedure :: read_deck, solve, write_results, sketch, force_plan, mass_model
   end type sixbar_mechanism_t
 
 contains
@@ -90,7 +85,7 @@ contains
     !> The mechanism.
     class(mechanism_t), allocatable, intent(out) :: mech
     allocate (sixbar_mechanism_t :: mech)
-    mech%template_writer => write_sixbar_template
+    mech%template = sixbar_template
     mech%title_en = "KINETOSTAT  T.FTN  FORCE ANALYSIS OF THE SIX-BAR CRANK-ROCKER-SLIDER MECHANISM"
     mech%title_ru = "KINETOSTAT  T.FTN  КПФ И УСИЛИЯ" // &
       " КРИВОШИПНО-КОРОМЫСЛОВО-ПОЛЗУННОГО" // &
