@@ -161,7 +161,8 @@ module kinetostat_linkage
   end type linkage_step_t
 
   !> The workspace of a run of steps (no allocation per step): the Jacobian J of the last
-  !> poses it was evaluated at, its LU factors and the velocity analogues from them.
+  !> poses it was evaluated at, its LU factors and the velocity analogues from them. One
+  !> workspace per linkage: J is kept by the poses it belongs to, not by the linkage.
   type :: linkage_work_t
     !> Constraints (rows) and the Jacobian (rows x 3n) at the poses q_jac.
     real(wp), allocatable :: phi(:), jac(:, :)
@@ -207,7 +208,9 @@ contains
 
   !> Allocates the workspace for `mech` (once).
   pure subroutine work_ready(mech, work)
+    !> The linkage.
     type(linkage_t), intent(in) :: mech
+    !> The workspace, allocated for it.
     type(linkage_work_t), intent(inout) :: work
     integer :: nr
     nr = linkage_rows(mech)
@@ -234,14 +237,18 @@ contains
   !> J at poses q in `work` (evaluated unless it holds them), factored, with the velocity
   !> analogues (column d: dq/d(drive d), the other drives held). An error: J is singular.
   pure subroutine work_factored(mech, q, work, error)
+    !> The linkage.
     type(linkage_t), intent(in) :: mech
+    !> Poses.
     real(wp), intent(in) :: q(:)
+    !> The workspace: J, its factors and analogues at q.
     type(linkage_work_t), intent(inout) :: work
+    !> Set when J is singular or ill-conditioned (factor_dense's verdict).
     type(error_t), allocatable, intent(out) :: error
     integer :: d
     call work_ready(mech, work)
     if (work%has_jac) then
-      ! (bits, not values: the factors of the same poses are reused)
+      ! (the factors of the same poses are reused)
       if (any(work%q_jac /= q)) work%has_jac = .false.
     end if
     if (.not. work%has_jac) then
@@ -343,7 +350,9 @@ contains
   !> cos and sin of every link's turn in poses q (column 0: the frame's, of a turn 0): with
   !> `turned`, rotate's arithmetic without a cos and a sin per call.
   pure subroutine set_turns(q, cs)
+    !> Poses (3n).
     real(wp), intent(in) :: q(:)
+    !> cos and sin of each link's turn (2 x 0:n).
     real(wp), intent(out) :: cs(:, 0:)
     integer :: i
     cs(1, 0) = cos(0.0_wp)
@@ -357,8 +366,11 @@ contains
 
   !> `v` turned by link i's turn (0: the frame) from set_turns: rotate(v, turn) bit for bit.
   pure function turned(cs, i, v) result(w)
+    !> Turns from set_turns.
     real(wp), intent(in) :: cs(:, 0:)
+    !> Link index (0: frame).
     integer, intent(in) :: i
+    !> Vector to turn.
     real(wp), intent(in) :: v(2)
     real(wp) :: w(2)
     w = [cs(1, i) * v(1) - cs(2, i) * v(2), cs(2, i) * v(1) + cs(1, i) * v(2)]
@@ -366,9 +378,13 @@ contains
 
   !> point_position with the turns of set_turns.
   pure function position_cs(mech, q, cs, i, p) result(x)
+    !> The linkage.
     type(linkage_t), intent(in) :: mech
+    !> Poses and their turns (set_turns).
     real(wp), intent(in) :: q(:), cs(:, 0:)
+    !> Link index (0: frame).
     integer, intent(in) :: i
+    !> The point at the reference position, m.
     real(wp), intent(in) :: p(2)
     real(wp) :: x(2)
     if (i == 0) then
@@ -381,9 +397,13 @@ contains
   !> Lever of point p of link i from its reference point (0 for the frame), m, with the turns
   !> of set_turns.
   pure function lever_cs(mech, cs, i, p) result(r)
+    !> The linkage.
     type(linkage_t), intent(in) :: mech
+    !> Turns (set_turns).
     real(wp), intent(in) :: cs(:, 0:)
+    !> Link index (0: frame).
     integer, intent(in) :: i
+    !> The point at the reference position, m.
     real(wp), intent(in) :: p(2)
     real(wp) :: r(2)
     r = 0.0_wp
@@ -392,10 +412,15 @@ contains
 
   !> link_point_state with the turns of set_turns.
   pure subroutine state_cs(mech, q, qd, qdd, cs, i, p, x, v, a)
+    !> The linkage.
     type(linkage_t), intent(in) :: mech
+    !> Poses, their derivatives and turns (set_turns).
     real(wp), intent(in) :: q(:), qd(:), qdd(:), cs(:, 0:)
+    !> Link index (0: frame).
     integer, intent(in) :: i
+    !> The point at the reference position, m.
     real(wp), intent(in) :: p(2)
+    !> Position (m), velocity (m/s), acceleration (m/s^2).
     real(wp), intent(out) :: x(2), v(2), a(2)
     real(wp) :: r(2)
     if (i == 0) then
