@@ -69,6 +69,11 @@ contains
     call check_true(t, "linkage-class3-order", deck%mech%units(2)%class == 3 .and. deck%mech%units(2)%order == 3, &
       "expected class 3, order 3; got class "//int_str(deck%mech%units(2)%class)//", order "// &
       int_str(deck%mech%units(2)%order))
+    call bundled("docs/examples/class3_order4.nml", deck, t)
+    call check_true(t, "linkage-class3-order4", structure_formula(deck%mech) == "I(0,1) -> III(2,3,4,5,6,7)" .and. &
+      deck%mech%units(2)%class == 3 .and. deck%mech%units(2)%order == 4, &
+      "expected I(0,1) -> III(2,3,4,5,6,7), class 3, order 4; got "//structure_formula(deck%mech)//", class "// &
+      int_str(deck%mech%units(2)%class)//", order "//int_str(deck%mech%units(2)%order))
   end subroutine test_structure
 
   !> The four-bar deck text with extra lines (links, pairs, drives) appended before the end.
@@ -180,8 +185,9 @@ contains
   !> largest reaction.
   subroutine test_reactions(t)
     type(test_counts_t), intent(inout) :: t
-    character(len=*), parameter :: paths(5) = [character(len=32) :: "data/class3.nml", "data/fivebar.nml", &
-      "data/linkage_fourbar.nml", "data/linkage_slider_crank.nml", "docs/examples/excavator.nml"]
+    character(len=*), parameter :: paths(6) = [character(len=32) :: "data/class3.nml", "data/fivebar.nml", &
+      "data/linkage_fourbar.nml", "data/linkage_slider_crank.nml", "docs/examples/excavator.nml", &
+      "docs/examples/class3_order4.nml"]
     type(linkage_deck_t) :: deck
     type(linkage_step_t), allocatable :: steps(:)
     type(error_t), allocatable :: error
@@ -212,8 +218,9 @@ contains
   !> gap exceeds 1e-9 at some step.
   subroutine test_second_opinion(t)
     type(test_counts_t), intent(inout) :: t
-    character(len=*), parameter :: paths(5) = [character(len=32) :: "data/class3.nml", "data/fivebar.nml", &
-      "data/linkage_fourbar.nml", "data/linkage_slider_crank.nml", "docs/examples/excavator.nml"]
+    character(len=*), parameter :: paths(6) = [character(len=32) :: "data/class3.nml", "data/fivebar.nml", &
+      "data/linkage_fourbar.nml", "data/linkage_slider_crank.nml", "docs/examples/excavator.nml", &
+      "docs/examples/class3_order4.nml"]
     type(linkage_deck_t) :: deck
     type(linkage_t) :: wrong
     type(linkage_step_t), allocatable :: steps(:)

@@ -115,3 +115,10 @@ expect_input_error linkage-omega-both "drive\(1\)%omega: give either omega or om
   "$(deck_with lk_omega_both "$lk_omega" "s/drive(1)%omega_column = 1/&, drive(1)%omega = 3/")"
 expect_input_error linkage-omega-column-range "drive\(1\)%eps_column: must be a whole number from 1 to 2" \
   "$(deck_with lk_eps_col "$lk_omega" "s/drive(1)%eps_column = 2/drive(1)%eps_column = 3/")"
+
+# a class-III group of order 4 (two ternary base links joined, four binary links)
+lk_structure linkage-structure-order4 docs/examples/class3_order4.nml en \
+  "III(2,3,4,5,6,7)  GROUP OF CLASS III, ORDER 4 (TWO TERNARY BASE LINKS AND FOUR BINARY LINKS)" \
+  "STRUCTURE FORMULA: I(0,1) -> III(2,3,4,5,6,7)" "CLASS OF THE MECHANISM: III"
+lk_structure linkage-structure-order4-ru docs/examples/class3_order4.nml ru \
+  "III(2,3,4,5,6,7)  ГРУППА III КЛАССА 4-ГО ПОРЯДКА (ДВА БАЗОВЫХ ЗВЕНА С ТРЕМЯ ПАРАМИ)"
