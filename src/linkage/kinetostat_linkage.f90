@@ -20,7 +20,7 @@ module kinetostat_linkage
   use kinetostat_kinds, only: wp, pi
   use kinetostat_error, only: error_t, fatal_error, exit_geometry
   use kinetostat_text, only: int_str
-  use kinetostat_lapack, only: solve_dense, factor_dense, solve_factored
+  use kinetostat_lapack, only: solve_dense, factor_dense, solve_factored, trsm_table
   use kinetostat_vec2, only: rotate, perp, cross, magnitude
   use kinetostat_selfcheck, only: link_balance_t, balance_add_force, balance_add_couple, equilibrium_residual, &
     power_mismatch
@@ -178,6 +178,8 @@ module kinetostat_linkage
     integer, allocatable :: ipivt(:)
     !> A Newton correction or right-hand side (rows).
     real(wp), allocatable :: dx(:)
+    !> dtrsm's rows of a factorisation of order 3n (kinetostat_lapack's trsm_table).
+    integer, allocatable :: trsm(:, :)
     !> Drive values 0 (J does not depend on them); zeros of the poses' size.
     real(wp), allocatable :: dq0(:), zero_q(:)
     !> The group method: its system (at most 3n x 3n), factors, row interchanges and
@@ -218,7 +220,7 @@ contains
       if (size(work%jac, 1) == nr .and. size(work%v, 2) == size(mech%drives) .and. &
           size(work%f2, 2) == size(mech%pairs)) return
       deallocate (work%phi, work%jac, work%q_jac, work%lu, work%ipiv, work%v, work%jt, work%lut, work%ipivt, work%dx, &
-                  work%dq0, work%zero_q)
+                  work%dq0, work%zero_q, work%trsm)
       deallocate (work%fa, work%flu, work%fb, work%fipiv, work%load, work%cm, work%local, work%pair_known, &
                   work%drive_known, work%f2, work%normal2, work%couple2, work%effort2, work%gen, work%lam, work%bal, work%cs)
     end if
@@ -230,6 +232,7 @@ contains
     allocate (work%phi(nr), work%jac(nr, nr), work%q_jac(nr), work%lu(nr, nr), work%ipiv(nr), &
               work%v(nr, size(mech%drives)), work%jt(nr, nr), work%lut(nr, nr), work%ipivt(nr), work%dx(nr))
     allocate (work%dq0(size(mech%drives)), work%zero_q(nr), source=0.0_wp)
+    work%trsm = trsm_table(nr)
     work%has_jac = .false.
     work%factored = .false.
   end subroutine work_ready
@@ -259,7 +262,7 @@ contains
       work%factored = .false.
     end if
     if (work%factored) return
-    call factor_dense(work%jac, work%lu, work%ipiv, error)
+    call factor_dense(work%jac, work%lu, work%ipiv, error, work%trsm)
     if (allocated(error)) return
     !GCC$ novector
     do d = 1, size(mech%drives)
@@ -632,7 +635,7 @@ contains
         work%factored = .false.
         converged = maxval(abs(work%phi)) <= newton_tol * mech%size
         if (converged) exit
-        call factor_dense(work%jac, work%lu, work%ipiv, error)
+        call factor_dense(work%jac, work%lu, work%ipiv, error, work%trsm)
         if (allocated(error)) then
           call fatal_error(error, exit_geometry, fail_text("the Jacobian is singular (a dead position)"))
           return
@@ -791,7 +794,7 @@ contains
     if (allocated(error)) return
     call generalised_loads(mech, step%q, step%qd, step%qdd, fval, mval, work%gen, work%cs)
     work%jt(:, :) = transpose(work%jac)
-    call factor_dense(work%jt, work%lut, work%ipivt, error)
+    call factor_dense(work%jt, work%lut, work%ipivt, error, work%trsm)
     if (allocated(error)) return
     work%lam(:) = -work%gen
     call solve_factored(work%lut, work%ipivt, work%lam)
