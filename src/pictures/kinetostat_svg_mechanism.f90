@@ -206,6 +206,8 @@ contains
             call put_block(out, px(b%points(1)), py(b%points(1)), b%angle + drawing%view_angle)
             call add_segment(obst_x, obst_y, [px(b%points(1)) - 4.0_wp, py(b%points(1))], &
               [px(b%points(1)) + 4.0_wp, py(b%points(1))])
+          case default
+            continue
           end select
         end associate
       end do
