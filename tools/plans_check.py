@@ -8,9 +8,18 @@
         acceleration_residual <= 1e-9 x (1 + largest acceleration image);
       - every centre of mass S<i> on the acceleration plan equals the CSV's ax_S<i>, ay_S<i>
         at that step (relative 1e-9 of the largest image, absolute 1e-9 m/s^2);
-      - with --polygons: every force polygon closes (closure <= 1e-9 of its largest vector),
-        and every pair force in a polygon (or its reaction F<j><i>) has the magnitude of the
+      - every vector equation of the acceleration plan (acceleration_equations): its normal
+        component is -omega^2 (P - Q), its tangential eps x (P - Q) (omega, eps of its link,
+        P, Q the point and the known point it starts from, all from the CSV), its Coriolis
+        component 2 omega x v_rel (v_rel from the velocity plan; "reverse" equations: a point
+        of the guide's link from the slider's, 2 omega_slider x v_rel), and the image of Q plus
+        its components is the image of P (relative 1e-9 of the largest vector involved);
+      - with --polygons: every force polygon (of the links, link_force_plans, and of the
+        groups, force_plans) closes (closure and the vectors' sum <= 1e-9 of its largest
+        vector), and every pair force in a polygon (or its reaction F<j><i>; the sum of its
+        tangential and normal parts, which must be perpendicular) has the magnitude of the
         CSV's <F>_x, <F>_y components (relative 1e-9 of the polygon's largest vector);
+      - with --groups: the same for the groups' polygons only;
       - with --lever: Zhukovsky's lever equals the run's driving moment (relative 1e-9,
         absolute 1e-9 N*m).
 Exit status 0 when every check passes, 1 otherwise.
@@ -48,24 +57,100 @@ def main():
             expected = (col["ax_" + name], col["ay_" + name])
             if math.hypot(p["x"] - expected[0], p["y"] - expected[1]) > 1e-9 * amax + 1e-9:
                 bad.append(f"acceleration of {name}: expected {expected}, plan ({p['x']}, {p['y']})")
+    vimg = {p["name"]: (p["x"], p["y"]) for p in plans["velocity_plan"]["points"]}
+    aimg = {p["name"]: (p["x"], p["y"]) for p in plans["acceleration_plan"]["points"]}
+
+    def pos(name):
+        return (col["x_" + name], col["y_" + name])
+
+    def close(got, want, scale):
+        return math.hypot(got[0] - want[0], got[1] - want[1]) <= 1e-9 * max(scale, 1.0)
+
+    for eq in plans.get("acceleration_equations", []):
+        point, link, start = eq["point"], eq["link"], eq["from"]
+        where = f"equation of {point} (link {link or 'frame'}, from {start or 'the pole'})"
+        if point not in aimg or (start and start not in aimg):
+            bad.append(f"{where}: a point without an image")
+            continue
+        base = aimg[start] if start else (0.0, 0.0)
+        total = list(base)
+        scale = max([math.hypot(*aimg[point]), math.hypot(*base)]
+                    + [math.hypot(v["x"], v["y"]) for v in eq["vectors"]])
+        for v in eq["vectors"]:
+            total[0] += v["x"]
+            total[1] += v["y"]
+            got = (v["x"], v["y"])
+            if v["kind"] in "ntk":
+                try:
+                    r = (pos(point)[0] - pos(start)[0], pos(point)[1] - pos(start)[1])
+                    if "phi" + link in col or "omega" + link in col:
+                        om, ep = col["omega" + link], col["eps" + link]
+                    else:  # a translating link (a slider on the frame): no angle columns
+                        om, ep = 0.0, 0.0
+                except KeyError as missing:
+                    bad.append(f"{where}: no CSV column {missing}")
+                    continue
+                if v["kind"] == "n":
+                    want = (-om * om * r[0], -om * om * r[1])
+                elif v["kind"] == "t":
+                    want = (-ep * r[1], ep * r[0])
+                elif eq.get("reverse"):
+                    # the guide's point relative to the slider (at `from`), in the slider's turning frame
+                    slider = eq["slider"]
+                    om_m = col["omega" + slider] if "omega" + slider in col else 0.0
+                    vg = (vimg[point][0] + om * r[1], vimg[point][1] - om * r[0])
+                    vrel = (vg[0] - vimg[start][0], vg[1] - vimg[start][1])
+                    want = (-2 * om_m * vrel[1], 2 * om_m * vrel[0])
+                else:
+                    vg = (vimg[start][0] - om * r[1], vimg[start][1] + om * r[0])
+                    vrel = (vimg[point][0] - vg[0], vimg[point][1] - vg[1])
+                    want = (-2 * om * vrel[1], 2 * om * vrel[0])
+                if not close(got, want, scale):
+                    bad.append(f"{where}: {v['name']} expected {want}, plan {got}")
+        if not close(total, aimg[point], scale):
+            bad.append(f"{where}: image of {start or 'the pole'} + components = {tuple(total)}, "
+                       f"image of {point} {aimg[point]}")
+    polygon_sets = []
     if "--polygons" in flags:
-        for poly in plans["force_plans"]:
+        polygon_sets = [("link", plans["link_force_plans"]), ("group", plans["force_plans"])]
+    elif "--groups" in flags:
+        polygon_sets = [("group", plans["force_plans"])]
+    for key, polygons in polygon_sets:
+        for poly in polygons:
+            what = f"force polygon of {key} {poly[key]}"
             if poly["closure"] > 1e-9:
-                bad.append(f"force polygon of link {poly['link']} does not close: {poly['closure']:.3e} of its "
+                bad.append(f"{what} does not close: {poly['closure']:.3e} of its "
                            f"largest vector ({[v['name'] for v in poly['vectors']]})")
             big = max([math.hypot(v["x"], v["y"]) for v in poly["vectors"]] or [0.0])
+            gap = (sum(v["x"] for v in poly["vectors"]), sum(v["y"] for v in poly["vectors"]))
+            if math.hypot(*gap) > 1e-9 * max(big, 1.0):
+                bad.append(f"{what}: the vectors sum to {gap}, largest vector {big}")
+            # a reaction split into its tangential and normal parts: perpendicular parts, summed
+            reactions = {}
             for v in poly["vectors"]:
-                name = v["name"]
-                if name + "_x" not in col and len(name) == 3 and name[0] == "F":
-                    name = "F" + name[2] + name[1]
-                if name + "_x" not in col:
+                name = v["name"].split("^")[0]
+                if v.get("kind") in ("n", "t", "f"):
+                    reactions.setdefault(name, []).append(v)
+                elif name + "_x" in col or (len(name) == 3 and "F" + name[2] + name[1] + "_x" in col):
+                    reactions.setdefault(name, []).append(v)
+            for name, parts in reactions.items():
+                if len(parts) == 2:
+                    dot = parts[0]["x"] * parts[1]["x"] + parts[0]["y"] * parts[1]["y"]
+                    if abs(dot) > 1e-9 * max(big, 1.0) ** 2:
+                        bad.append(f"{what}: the parts of {name} are not perpendicular (dot {dot!r})")
+                vx, vy = sum(p["x"] for p in parts), sum(p["y"] for p in parts)
+                csv_name = name
+                if csv_name + "_x" not in col and len(name) == 3 and name[0] == "F":
+                    csv_name = "F" + name[2] + name[1]
+                if csv_name + "_x" not in col:
+                    bad.append(f"{what}: reaction {name} is no pair force of the CSV")
                     continue
                 # the components' frame (the angle column's) may differ from the position
                 # frame: compare magnitudes
-                f = math.hypot(col[name + "_x"], col[name + "_y"])
-                mag = math.hypot(v["x"], v["y"])
+                f = math.hypot(col[csv_name + "_x"], col[csv_name + "_y"])
+                mag = math.hypot(vx, vy)
                 if abs(mag - f) > 1e-9 * max(big, 1.0):
-                    bad.append(f"{v['name']} of link {poly['link']}: |F| expected {f!r}, plan {mag!r}")
+                    bad.append(f"{name} in the {what}: |F| expected {f!r}, plan {mag!r}")
     if "--lever" in flags:
         z = plans["zhukovsky"]
         if z["effort"] is None:

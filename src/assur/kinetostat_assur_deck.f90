@@ -10,7 +10,7 @@ module kinetostat_assur_deck
   use kinetostat_kinds, only: wp, g_default, deg_to_rad, rad_to_deg
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str, number_str, lower, upper
-  use kinetostat_deck, only: longest_quoted, &
+  use kinetostat_deck, only: longest_quoted, deck_line_count, deck_line, &
     begin_group, deck_context_t, unset_real, unset_bits, max_deck_array, &
     deck_array_capacities, deck_source_t, namelist_probe_t, deck_error, require_all_set, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn, &
@@ -46,6 +46,8 @@ module kinetostat_assur_deck
   integer, parameter :: max_table_points = 64
   !> Unset logical marker is not available in namelists: logicals have plain defaults.
   character(*), parameter :: group_name = "assur"
+  !> Longest joint name (characters) and the length read (longer names are an error).
+  integer, parameter :: joint_name_length = 8, joint_text_length = 32
 
   !> `unset_real` for the default initialisation of the deck types below. Their variables
   !> must be declared in this module only: a NaN constant loses its payload in .mod files.
@@ -91,6 +93,9 @@ module kinetostat_assur_deck
     !> Global form only: the inner joint B at the reference position (RRR, RRP; PRP: a
     !> check), m.
     real(wp) :: b(2) = unset
+    !> Names of the dyad's joints on the sheets (A, B, C ... as the course draws them): the
+    !> outer pair of link2, the inner pair, the outer pair of link3; blank: J<pair>.
+    character(len=joint_text_length) :: joints(3) = ""
   end type dyad_in_t
 
   !> A per-step value: constant, angle window, or a column of `step_values`.
@@ -249,6 +254,10 @@ module kinetostat_assur_deck
     real(wp), allocatable :: pair_frame(:)
     !> Column name stem of each pair ("F21").
     character(len=16), allocatable :: pair_name(:)
+    !> The name of every pair's joint on the sheets and in the kinematics columns (x_<name>),
+    !> in the order of pair_name: the deck's `dyad(i)%joints` and `crank_joint`, J<pair>
+    !> (J21 for F21) where not given.
+    character(len=joint_name_length), allocatable :: joint_name(:)
     !> +1, or -1 where the report shows the reaction's opposite (inner pair on link b).
     real(wp), allocatable :: pair_sign(:)
     !> Angles in (-180, 180] instead of [0, 360).
@@ -288,12 +297,86 @@ module kinetostat_assur_deck
     "  dyad(1)%l2 = 0.35, dyad(1)%mode = 1", &
     "  dyad(1)%m2 = 1.5, dyad(1)%j2 = 0.02, dyad(1)%s2 = 0.12, 0.01", &
     "  dyad(1)%m3 = 3.0, dyad(1)%j3 = 0, dyad(1)%s3 = 0, 0", &
+    "  ! names of the joints on the sheets (default J10, J21, J23, J30): pivot, pin, slider", &
+    "  crank_joint = 'O', dyad(1)%joints = 'A', 'B', 'B0'", &
     "  ! resistance on the slider: -x, 500 N for crank angles in [0, 180] deg, 100 N elsewhere", &
     "  force(1)%link = 3, force(1)%at = 0, 0, force(1)%angle = 180", &
     "  force(1)%value = 500, force(1)%idle = 100, force(1)%phi_on = 0, force(1)%phi_off = 180", &
     "/"]
 
 contains
+
+  !> The joints' names (`dyad(i)%joints`, `crank_joint`) into deck%joint_name, J<pair> where
+  !> blank: each at most joint_name_length characters, a letter then letters, digits or _,
+  !> not S<n> (a centre of mass), and no two alike (in any case: the plans write them in
+  !> lower case).
+  pure subroutine read_joint_names(ctx, source, dyads, crank_joint, deck, error)
+    type(deck_context_t), intent(in) :: ctx
+    !> The deck's lines (the message names the line of the variable).
+    type(deck_source_t), intent(in) :: source
+    type(dyad_in_t), intent(in) :: dyads(:)
+    character(*), intent(in) :: crank_joint
+    type(assur_deck_t), intent(inout) :: deck
+    type(error_t), allocatable, intent(out) :: error
+    character(len=joint_text_length) :: given(3 * size(dyads) + 1)
+    character(len=24) :: variable(3 * size(dyads) + 1)
+    character(len=:), allocatable :: text
+    character(*), parameter :: letters = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
+    type(deck_context_t) :: at_line
+    integer :: d, ip, other
+    do d = 1, size(dyads)
+      given(3 * d - 2:3 * d) = dyads(d)%joints
+      variable(3 * d - 2:3 * d) = "dyad("//int_str(d)//")%joints"
+    end do
+    given(size(given)) = crank_joint
+    variable(size(given)) = "crank_joint"
+    allocate (deck%joint_name(size(given)))
+    do ip = 1, size(given)
+      at_line = line_context(trim(variable(ip)))
+      text = trim(adjustl(given(ip)))
+      if (len(text) == 0) then
+        deck%joint_name(ip) = "J"//trim(deck%pair_name(ip)(2:))
+        cycle
+      end if
+      call require_rule(at_line, trim(variable(ip)), len(text) <= joint_name_length, "longer than "// &
+        int_str(joint_name_length)//" characters", error)
+      if (allocated(error)) return
+      call require_rule(at_line, trim(variable(ip)), index(letters, text(1:1)) > 0 .and. &
+        verify(text, letters//"0123456789_") == 0, "a joint's name is a letter followed by letters, digits or _", &
+        error)
+      if (allocated(error)) return
+      call require_rule(at_line, trim(variable(ip)), .not. ((text(1:1) == "S" .or. text(1:1) == "s") .and. &
+        len(text) > 1 .and. verify(text(2:), "0123456789") == 0), "'"//text//"' is the name of a centre "// &
+        "of mass", error)
+      if (allocated(error)) return
+      deck%joint_name(ip) = text
+    end do
+    do ip = 2, size(given)
+      do other = 1, ip - 1
+        call require_rule(at_line, trim(variable(ip)), lower(trim(deck%joint_name(ip))) /= lower(trim(deck%joint_name(other))), &
+          "'"//trim(deck%joint_name(ip))//"' names two joints (also "//trim(variable(other))//")", error)
+        if (allocated(error)) return
+      end do
+    end do
+  contains
+    !> The context with the line variable `name` is first assigned (as "deck.nml:17"), if found.
+    pure function line_context(name) result(c)
+      character(*), intent(in) :: name
+      type(deck_context_t) :: c
+      character(len=:), allocatable :: line
+      integer :: k, bang
+      c = ctx
+      do k = 1, deck_line_count(source)
+        line = lower(deck_line(source, k))
+        bang = index(line, "!")
+        if (bang > 0) line = line(:bang - 1)
+        if (index(line, lower(name)) > 0) then
+          c%path = ctx%path//":"//int_str(k)
+          return
+        end if
+      end do
+    end function line_context
+  end subroutine read_joint_names
 
   !> The dyads' kinds by name, as the docs name them: `dyad(i)%kind = RRR` or `'RRR'` (any
   !> case; RRR RRP RPR PRP RPP) becomes the code 1..5, blank-padded to the same length (the
@@ -418,6 +501,8 @@ contains
     !> Machine dynamics variables (see kinetostat_dynamics_deck).
     real(wp) :: delta, j_rotor, j_flywheel
     character(len=32) :: dynamics
+    !> Name of the crank's pivot on the sheets (blank: J<pair>).
+    character(len=joint_text_length) :: crank_joint
     !> Friction coefficient and journal radius (m) of the crank's pivot A.
     real(wp) :: crank_f, crank_r
     real(wp), allocatable :: omega1_step(:), eps1_step(:), step_values(:)
@@ -436,7 +521,7 @@ contains
     namelist /assur/ title, frame_id, crank_id, crank_at, crank_m, crank_j, crank_s, omega1, &
       omega1_step, eps1_step, g, gravity_angle, phi_start, dphi, n, dyad, force, moment, &
       step_values, angles_signed, components, drive_dyad, drive_pair, output_link, phi1, start_at, crank_f, crank_r, &
-      coordinates, phi_ref, dynamics, delta, j_rotor, j_flywheel
+      coordinates, phi_ref, dynamics, delta, j_rotor, j_flywheel, crank_joint
 
     call begin_group(source, group_name, ctx, error)
     if (allocated(error)) return
@@ -446,7 +531,7 @@ contains
     frame_id = 0.0_wp; crank_id = 1.0_wp; n = unset_real
     drive_dyad = unset_real; drive_pair = unset_real
     output_link = unset_real; start_at = ""; crank_f = unset_real; crank_r = unset_real
-    coordinates = "local"; phi_ref = unset_real
+    coordinates = "local"; phi_ref = unset_real; crank_joint = ""
     crank_at = unset_real; crank_m = unset_real; crank_j = unset_real; crank_s = unset_real
     omega1 = unset_real; g = unset_real; gravity_angle = unset_real
     phi_start = unset_real; dphi = unset_real
@@ -683,6 +768,8 @@ contains
     end do
     deck%pair_name(3 * nd + 1) = pair_stem(crank_no, frame_no)
     deck%pair_frame(3 * nd + 1) = 0.0_wp
+    call read_joint_names(ctx, source, dyad(1:nd), crank_joint, deck, error)
+    if (allocated(error)) return
 
     ! ---- friction in the pairs (all 0 by default)
     allocate (deck%friction(3 * nd + 1))

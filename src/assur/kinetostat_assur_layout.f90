@@ -120,33 +120,33 @@ contains
       do i = 1, 2 * nd + 1
         ! the link's own pairs, then the outer pairs of later dyads attached to it
         if (i == 1) then
-          joints = [character(len=16) :: joint_name(names(3 * nd + 1))]
+          joints = [character(len=16) :: joint_name(self%deck, names(3 * nd + 1))]
         else
           d = i / 2
           q = i - 2 * d + 1
-          joints = [character(len=16) :: joint_name(names(3 * d - 3 + q)), joint_name(names(3 * d - 2 + q))]
+          joints = [character(len=16) :: joint_name(self%deck, names(3 * d - 3 + q)), joint_name(self%deck, names(3 * d - 2 + q))]
         end if
         do e = 1, nd
-          if (mech%dyads(e)%on(1) == i) joints = [character(len=16) :: joints, joint_name(names(3 * e - 2))]
-          if (mech%dyads(e)%on(2) == i) joints = [character(len=16) :: joints, joint_name(names(3 * e))]
+          if (mech%dyads(e)%on(1) == i) joints = [character(len=16) :: joints, joint_name(self%deck, names(3 * e - 2))]
+          if (mech%dyads(e)%on(2) == i) joints = [character(len=16) :: joints, joint_name(self%deck, names(3 * e))]
         end do
         call add_sketch_link(out, self%deck, i, joints)
       end do
-      call out%add_pivot(joint_name(names(3 * nd + 1)))
+      call out%add_pivot(joint_name(self%deck, names(3 * nd + 1)))
       do d = 1, nd
         associate (dy => mech%dyads(d))
           do q = 1, 2
             e = 3 * d - 2 + 2 * (q - 1)
             if (assur_pair_prismatic(self%deck, e)) then
-              call out%add_guide(joint_name(names(e)), dy%ang(q) * rad_to_deg, link_label(self%deck, dy%on(q)))
+              call out%add_guide(joint_name(self%deck, names(e)), dy%ang(q) * rad_to_deg, link_label(self%deck, dy%on(q)))
             else if (dy%on(q) == 0) then
-              call out%add_pivot(joint_name(names(e)))
+              call out%add_pivot(joint_name(self%deck, names(e)))
             end if
           end do
           if (assur_pair_prismatic(self%deck, 3 * d - 1)) then
             slot_deg = 0.0_wp
             if (dy%geom%kind == kind_rpp) slot_deg = dy%geom%slot_angle * rad_to_deg
-            call out%add_guide(joint_name(names(3 * d - 1)), slot_deg, link_label(self%deck, link_b(d)))
+            call out%add_guide(joint_name(self%deck, names(3 * d - 1)), slot_deg, link_label(self%deck, link_b(d)))
           end if
         end associate
       end do
@@ -859,9 +859,9 @@ contains
     do ip = 1, np
       d = (ip - 1) / 3 + 1
       if (ip == np) then
-        call put_kin_point(table, k, mode, j, slots, joint_name(deck%pair_name(ip)), deck%mech%pivot)
+        call put_kin_point(table, k, mode, j, slots, joint_name(deck, deck%pair_name(ip)), deck%mech%pivot)
       else
-        call put_kin_point(table, k, mode, j, slots, joint_name(deck%pair_name(ip)), poses(d)%p(:, ip - 3 * (d - 1)))
+        call put_kin_point(table, k, mode, j, slots, joint_name(deck, deck%pair_name(ip)), poses(d)%p(:, ip - 3 * (d - 1)))
       end if
     end do
     do i = 1, ubound(states, 1)
@@ -1069,7 +1069,7 @@ contains
         name = trim(self%deck%pair_name(frame_pairs(i)))
         moment = ""
         if (assur_pair_prismatic(self%deck, frame_pairs(i))) moment = name//"M"
-        call model%add_frame_pair(name, joint_name(name), moment)
+        call model%add_frame_pair(name, joint_name(self%deck, name), moment)
       end do
       model%drive = ""
       if (mech%drive_dyad == 0) model%drive = "M1"
@@ -1096,7 +1096,7 @@ contains
       call assur_kinematics(mech, assur_phi1_deg(deck, k) * deg_to_rad, states, poses, error)
       if (allocated(error)) return
       do ip = 1, size(deck%pair_name)
-        call drawing%pair_from_table(table, k, trim(deck%pair_name(ip)), joint_name(deck%pair_name(ip)), error)
+        call drawing%pair_from_table(table, k, trim(deck%pair_name(ip)), joint_name(deck, deck%pair_name(ip)), error)
         if (allocated(error)) return
       end do
       do i = 1, size(mech%forces)
@@ -1118,15 +1118,46 @@ contains
       ! the balancing moment on the crank (a deck driven otherwise has no M1 column)
       i = table%column_index("M1")
       if (i > 0) call drawing%add_moment("M1", force_load, &
-        drawing%at(joint_name(deck%pair_name(crank_pin_index(size(mech%dyads))))), table%rows(i, k))
+        drawing%at(joint_name(deck, deck%pair_name(crank_pin_index(size(mech%dyads))))), table%rows(i, k))
     end associate
   end subroutine force_plan
 
-  !> The joint of a pair: "J21" for the pair of F21.
-  pure function joint_name(pair_name) result(name)
+  !> The default name of every pair's joint, J<pair> (J21 for F21).
+  pure function joint_default_names(deck) result(names)
+    type(assur_deck_t), intent(in) :: deck
+    character(len=len(deck%joint_name)) :: names(size(deck%pair_name))
+    integer :: ip
+    do ip = 1, size(names)
+      names(ip) = "J"//trim(deck%pair_name(ip)(2:))
+    end do
+  end function joint_default_names
+
+  !> The joints' names for the INPUT DATA echo: "B (F21), C (F23), ...", pairs in the deck's order.
+  pure function joint_list(deck) result(text)
+    type(assur_deck_t), intent(in) :: deck
+    character(len=:), allocatable :: text
+    integer :: ip
+    text = ""
+    do ip = 1, size(deck%joint_name)
+      if (ip > 1) text = text//", "
+      text = text//trim(deck%joint_name(ip))//" ("//trim(deck%pair_name(ip))//")"
+    end do
+  end function joint_list
+
+  !> The joint of a pair: the deck's name for it (`dyad(i)%joints`, `crank_joint`), else
+  !> "J21" for the pair of F21.
+  pure function joint_name(deck, pair_name) result(name)
+    type(assur_deck_t), intent(in) :: deck
     character(*), intent(in) :: pair_name
     character(len=:), allocatable :: name
+    integer :: ip
     name = "J"//trim(pair_name(2:))
+    do ip = 1, size(deck%pair_name)
+      if (deck%pair_name(ip) == pair_name) then
+        name = trim(deck%joint_name(ip))
+        return
+      end if
+    end do
   end function joint_name
 
   !> Length scale of the crank: its farthest attachment point from the pivot (1 m if none).
@@ -1192,6 +1223,7 @@ contains
     call table%echo_int("N", deck%n, "steps")
     call table%echo_logical("ANGLES_SIGNED", deck%angles_signed, "")
     call table%echo_logical("COMPONENTS", deck%components, "")
+    if (any(deck%joint_name /= joint_default_names(deck))) call table%echo_text("JOINTS", joint_list(deck))
     if (deck%mech%drive_dyad > 0) then
       call table%echo_int("DRIVE_DYAD", deck%mech%drive_dyad, "")
       call table%echo_int("DRIVE_PAIR", deck%mech%drive_pair, "")

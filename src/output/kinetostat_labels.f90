@@ -290,6 +290,22 @@ contains
       text = "движущее усилие - не момент на звене чертежа"
     case ("the driver is neither a moment on a link nor a force on a slider of the drawing")
       text = "движущее усилие - ни момент на звене, ни сила на ползуне чертежа"
+    case ("Force polygons of the groups")
+      text = "Планы сил групп"
+    case ("Assur group")
+      text = "группа"
+    case ("input link")
+      text = "входное звено"
+    case ("known forces first, then the unknown reactions")
+      text = "сначала известные силы, затем искомые реакции"
+    case ("components: n normal, τ tangential, k Coriolis, r relative")
+      text = "составляющие: n норм., τ касат., k кориол., r относит."
+    case ("Plans of velocities, accelerations, forces")
+      text = "Планы скоростей, ускорений, сил"
+    case ("Mechanism with its forces")
+      text = "Механизм с силами"
+    case ("Hodographs and diagrams")
+      text = "Годографы и диаграммы"
     case default
       text = english
     end select

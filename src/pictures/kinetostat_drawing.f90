@@ -180,8 +180,13 @@ contains
     class(drawing_t), intent(in) :: self
     !> Name.
     character(*), intent(in) :: name
+    integer :: i
     point_index = 0
-    if (allocated(self%points)) point_index = findloc(self%points%name, name, dim=1)
+    if (.not. allocated(self%points)) return
+    do i = 1, size(self%points)
+      if (self%points(i)%name == name) exit
+    end do
+    if (i <= size(self%points)) point_index = i
   end function point_index
 
   !> Position of the point called `name`, m ((0, 0) if there is none).

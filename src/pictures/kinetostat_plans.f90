@@ -23,7 +23,8 @@ module kinetostat_plans
   use kinetostat_text, only: int_str
   implicit none
   private
-  public :: plans_t, plan_vector_t, force_polygon_t, build_plans, write_plans_json
+  public :: plans_t, plan_vector_t, force_polygon_t, plan_equation_t, build_plans, write_plans_json
+  public :: component_normal, component_tangential, component_coriolis, component_relative, component_reaction
 
   !> A named vector (a point's image on a plan, a force of a polygon).
   type :: plan_vector_t
@@ -31,7 +32,51 @@ module kinetostat_plans
     character(len=16) :: name = ""
     !> Components (position frame): m/s, m/s^2 or N.
     real(wp) :: v(2) = 0.0_wp
+    !> A component's kind (component_normal ... on the acceleration plan; "" otherwise).
+    character(len=1) :: kind = ""
   end type plan_vector_t
+
+  !> Kinds of the acceleration components: normal (centripetal, omega^2 l toward the centre),
+  !> tangential (eps x l), Coriolis (2 omega x v_rel), relative (sliding, along the guide).
+  character(len=1), parameter :: component_normal = "n", component_tangential = "t", &
+    component_coriolis = "k", component_relative = "r"
+  !> Kind of a whole (unsplit) reaction in a group's force polygon.
+  character(len=1), parameter :: component_reaction = "f"
+
+  !> One vector equation of the acceleration plan, as the graphical method adds it: the
+  !> image of `point` = the image of `from` (the pole when blank) + the components in order.
+  type :: plan_equation_t
+    !> The point whose image the equation gives ("B").
+    character(len=16) :: point = ""
+    !> The link whose omega and eps the normal and tangential components use ("2").
+    character(len=16) :: link = ""
+    !> The known point the chain starts from ("A"; blank: the pole).
+    character(len=16) :: from = ""
+    !> A slider's equation: the sliding link (the relative components are its motion
+    !> along the guide of `link`, or of the frame when `link` is blank); blank otherwise.
+    character(len=16) :: slider = ""
+    !> The components in drawing order, m/s^2.
+    type(plan_vector_t), allocatable :: vectors(:)
+    !> A slider's equation the other way round: `point` is a point of the guide's link
+    !> `link`, `from` the slider's point; the Coriolis term is the guide's point's relative
+    !> to the slider, 2 omega_slider x (v_link - v_slider) at `from`.
+    logical :: reverse = .false.
+  end type plan_equation_t
+
+  !> An Assur group (or the input link): its links (indices in the topology).
+  type :: plan_group_t
+    integer, allocatable :: links(:)
+    !> Whether it is the input link.
+    logical :: input = .false.
+  end type plan_group_t
+
+  !> A slider: link m moves along u (a unit vector) relative to link g (0: the frame) at the
+  !> point p of m, called `name`.
+  type :: slide_t
+    integer :: m = 0, g = 0
+    real(wp) :: p(2) = 0.0_wp, u(2) = 0.0_wp
+    character(len=16) :: name = ""
+  end type slide_t
 
   !> The force polygon of one link.
   type :: force_polygon_t
@@ -41,6 +86,9 @@ module kinetostat_plans
     type(plan_vector_t), allocatable :: vectors(:)
     !> |sum of the vectors| / largest vector (0 for a closed polygon).
     real(wp) :: closure = 0.0_wp
+    !> The input link's polygon: the balancing moment's name ("" for none) and value, N*m.
+    character(len=:), allocatable :: moment
+    real(wp) :: moment_value = 0.0_wp
   end type force_polygon_t
 
   !> The plans of one step.
@@ -49,10 +97,16 @@ module kinetostat_plans
     type(plan_vector_t), allocatable :: velocities(:)
     !> Acceleration images of the named points, m/s^2.
     type(plan_vector_t), allocatable :: accelerations(:)
+    !> The vector equations of the acceleration plan, in drawing order.
+    type(plan_equation_t), allocatable :: equations(:)
+    !> The Assur groups, in the order they are solved.
+    type(plan_group_t), allocatable :: groups(:)
     !> Largest residual of the velocity equations, m/s, and of the acceleration equations, m/s^2.
     real(wp) :: velocity_residual = 0.0_wp, acceleration_residual = 0.0_wp
     !> Force polygons, one per link with known forces.
     type(force_polygon_t), allocatable :: polygons(:)
+    !> Force polygons of the input link and of every Assur group, in the order solved.
+    type(force_polygon_t), allocatable :: group_polygons(:)
     !> Zhukovsky's lever: the driver's name, whether it could be computed, the effort from the
     !> lever and the table's value (N*m or N).
     character(len=:), allocatable :: driver
@@ -79,6 +133,8 @@ contains
     integer, intent(in) :: k
     type(plans_t), intent(out) :: plans
     real(wp), allocatable :: omega(:), eps(:), v0(:, :), a0(:, :), none(:, :)
+    type(slide_t), allocatable :: slides(:)
+    character(len=:), allocatable :: driver
     integer :: nl, i
     nl = size(topo%links)
     allocate (omega(nl), eps(nl))
@@ -92,12 +148,13 @@ contains
     call solve_fields(topo, drawing, table, k, omega, eps, .true., v0, a0, plans%acceleration_residual)
     call point_images(topo, drawing, omega, eps, v0, .false., plans%velocities)
     call point_images(topo, drawing, omega, eps, a0, .true., plans%accelerations)
-    block
-      character(len=:), allocatable :: driver
-      driver = ""
-      if (allocated(table%driver)) driver = table%driver
-      call polygons_of(topo, drawing, driver, plans%polygons)
-    end block
+    driver = ""
+    if (allocated(table%driver)) driver = table%driver
+    call slides_of(topo, drawing, table, k, omega, slides)
+    call groups_of(topo, drawing, slides, driver, plans%groups)
+    call equations_of(topo, drawing, table, k, omega, eps, v0, plans)
+    call polygons_of(topo, drawing, driver, plans%polygons)
+    call group_polygons_of(topo, drawing, table, k, slides, driver, plans%groups, plans%group_polygons)
     call lever_of(topo, drawing, table, k, omega, v0, plans)
   end subroutine build_plans
 
@@ -181,8 +238,9 @@ contains
     real(wp), allocatable, intent(out) :: c(:, :)
     real(wp), intent(out) :: residual
     real(wp), allocatable :: a(:, :), b(:), x(:)
-    integer :: nl, i, j, m, g, ip
-    real(wp) :: p(2), u(2), ang
+    type(slide_t), allocatable :: slides(:)
+    integer :: nl, i, j, ip
+    real(wp) :: p(2)
     character(len=16) :: pname
     nl = size(topo%links)
     allocate (a(0, 2 * nl), b(0))
@@ -213,47 +271,9 @@ contains
       end if
     end do
     ! sliders: guides (on a link, or on the frame) and blocks sliding along a link
-    if (allocated(topo%guides)) then
-      do j = 1, size(topo%guides)
-        associate (gd => topo%guides(j))
-          ip = drawing%point_index(trim(gd%point))
-          if (ip == 0) cycle
-          p = drawing%points(ip)%p
-          g = 0
-          if (allocated(gd%on)) g = link_index(topo, gd%on)
-          ang = gd%angle * deg_to_rad
-          if (g > 0) ang = ang + column_value(table, "phi"//topo%links(g)%name, k) * deg_to_rad
-          u = [cos(ang), sin(ang)]
-          do m = 1, nl
-            if (m == g) cycle
-            if (lists(topo, m, trim(gd%point))) then
-              call append_slide(a, b, slide_row(m, g, p, u))
-            else if (g > 0 .and. .not. listed_by_any(trim(gd%point), g)) then
-              ! a rod in a cylinder: the link turning with the guide's link that has a point on its line
-              if (omega(m) /= omega(g)) cycle
-              do i = 1, size(topo%links(m)%points)
-                if (drawing%point_index(trim(topo%links(m)%points(i))) == 0) cycle
-                if (abs(cross(drawing%at(trim(topo%links(m)%points(i))) - p, u)) <= 1.0e-9_wp * (1.0_wp + &
-                  norm2(drawing%at(trim(topo%links(m)%points(i))) - p))) then
-                  call append_slide(a, b, slide_row(m, g, drawing%at(trim(topo%links(m)%points(i))), u))
-                  exit
-                end if
-              end do
-            end if
-          end do
-        end associate
-      end do
-    end if
-    do m = 1, nl
-      associate (l => topo%links(m))
-        if (.not. l%block .or. .not. allocated(l%along)) cycle
-        g = link_index(topo, l%along)
-        if (g == 0) cycle
-        ip = drawing%point_index(trim(l%points(1)))
-        if (ip == 0) cycle
-        ang = (l%angle + column_value(table, "phi"//l%along, k)) * deg_to_rad
-        call append_slide(a, b, slide_row(m, g, drawing%points(ip)%p, [cos(ang), sin(ang)]))
-      end associate
+    call slides_of(topo, drawing, table, k, omega, slides)
+    do j = 1, size(slides)
+      call append_slide(a, b, slide_row(slides(j)%m, slides(j)%g, slides(j)%p, slides(j)%u))
     end do
     ! least squares: the normal equations, a link without an equation stays at rest
     call least_squares(a, b, x)
@@ -269,16 +289,6 @@ contains
       real(wp) :: f(2)
       f = field([0.0_wp, 0.0_wp], omega(i), eps(i), p, accel)
     end function own
-    !> Whether some link other than g lists the point.
-    pure logical function listed_by_any(name, g)
-      character(*), intent(in) :: name
-      integer, intent(in) :: g
-      integer :: q
-      listed_by_any = .false.
-      do q = 1, nl
-        if (q /= g .and. lists(topo, q, name)) listed_by_any = .true.
-      end do
-    end function listed_by_any
     !> Rows c_i - c_j = rhs (j = 0: c_i = rhs) with the 2x2 coefficient block `blk` (column-major).
     pure function joint_rows(i, j, blk) result(rows)
       integer, intent(in) :: i, j
@@ -310,6 +320,498 @@ contains
       end if
     end function slide_row
   end subroutine solve_fields
+
+  !> The sliders of the step, in the order of the equations: guides (on a link, or on the
+  !> frame) with the links listing their point, a rod turning with a cylinder's link along
+  !> its guide, and blocks sliding along a link.
+  pure subroutine slides_of(topo, drawing, table, k, omega, slides)
+    type(sketch_t), intent(in) :: topo
+    type(drawing_t), intent(in) :: drawing
+    type(step_table_t), intent(in) :: table
+    integer, intent(in) :: k
+    real(wp), intent(in) :: omega(:)
+    type(slide_t), allocatable, intent(out) :: slides(:)
+    integer :: nl, i, j, m, g, ip
+    real(wp) :: p(2), u(2), ang, q(2)
+    character(len=16) :: qname
+    nl = size(topo%links)
+    allocate (slides(0))
+    if (allocated(topo%guides)) then
+      do j = 1, size(topo%guides)
+        associate (gd => topo%guides(j))
+          ip = drawing%point_index(trim(gd%point))
+          if (ip == 0) cycle
+          p = drawing%points(ip)%p
+          g = 0
+          if (allocated(gd%on)) g = link_index(topo, gd%on)
+          ang = gd%angle * deg_to_rad
+          if (g > 0) ang = ang + column_value(table, "phi"//topo%links(g)%name, k) * deg_to_rad
+          u = [cos(ang), sin(ang)]
+          do m = 1, nl
+            if (m == g) cycle
+            if (lists(topo, m, trim(gd%point))) then
+              slides = [slides, slide_t(m, g, p, u, gd%point)]
+            else if (g > 0 .and. .not. listed_by_any(trim(gd%point), g)) then
+              ! a rod in a cylinder: the link turning with the guide's link that has a point on its line
+              if (omega(m) /= omega(g)) cycle
+              do i = 1, size(topo%links(m)%points)
+                qname = topo%links(m)%points(i)
+                if (drawing%point_index(trim(qname)) == 0) cycle
+                q = drawing%at(trim(qname))
+                if (abs(cross(q - p, u)) <= 1.0e-9_wp * (1.0_wp + norm2(q - p))) then
+                  slides = [slides, slide_t(m, g, q, u, qname)]
+                  exit
+                end if
+              end do
+            end if
+          end do
+        end associate
+      end do
+    end if
+    do m = 1, nl
+      associate (l => topo%links(m))
+        if (.not. l%block .or. .not. allocated(l%along)) cycle
+        g = link_index(topo, l%along)
+        if (g == 0) cycle
+        ip = drawing%point_index(trim(l%points(1)))
+        if (ip == 0) cycle
+        ang = (l%angle + column_value(table, "phi"//l%along, k)) * deg_to_rad
+        slides = [slides, slide_t(m, g, drawing%points(ip)%p, [cos(ang), sin(ang)], l%points(1))]
+      end associate
+    end do
+  contains
+    !> Whether some link other than g lists the point.
+    pure logical function listed_by_any(name, g)
+      character(*), intent(in) :: name
+      integer, intent(in) :: g
+      integer :: q
+      listed_by_any = .false.
+      do q = 1, nl
+        if (q /= g .and. lists(topo, q, name)) listed_by_any = .true.
+      end do
+    end function listed_by_any
+  end subroutine slides_of
+
+  !> Whether slide s is a pair of its own: a guide of the frame or of a link whose point
+  !> several links list belongs to the block among them (a bar through the block's joint
+  !> does not slide).
+  pure logical function slide_is_pair(topo, slides, s)
+    type(sketch_t), intent(in) :: topo
+    type(slide_t), intent(in) :: slides(:)
+    integer, intent(in) :: s
+    integer :: t
+    slide_is_pair = .true.
+    if (topo%links(slides(s)%m)%block) return
+    do t = 1, size(slides)
+      if (t /= s .and. slides(t)%name == slides(s)%name .and. slides(t)%g == slides(s)%g) then
+        if (topo%links(slides(t)%m)%block) slide_is_pair = .false.
+      end if
+    end do
+  end function slide_is_pair
+
+  !> The link of the driving moment (0: none) and the slider of a driving force between a
+  !> slider and its guide's link (0: none).
+  pure subroutine driver_links(topo, drawing, driver, crank, actuator)
+    type(sketch_t), intent(in) :: topo
+    type(drawing_t), intent(in) :: drawing
+    character(*), intent(in) :: driver
+    integer, intent(out) :: crank, actuator
+    integer :: j
+    character(len=:), allocatable :: o
+    crank = 0
+    actuator = 0
+    if (len_trim(driver) == 0) return
+    if (allocated(drawing%moments)) then
+      do j = 1, size(drawing%moments)
+        if (drawing%moments(j)%name /= driver) cycle
+        o = owner(drawing%moments(j)%name, drawing%moments(j)%on_link)
+        if (len(o) == 0 .and. driver(1:1) == "M" .and. verify(trim(driver(2:)), "0123456789") == 0) o = trim(driver(2:))
+        crank = link_index(topo, o)
+      end do
+    end if
+    if (crank == 0 .and. allocated(drawing%forces)) then
+      do j = 1, size(drawing%forces)
+        if (drawing%forces(j)%name == driver .and. drawing%forces(j)%kind /= force_pair) then
+          actuator = link_index(topo, owner(drawing%forces(j)%name, drawing%forces(j)%on_link))
+        end if
+      end do
+    end if
+  end subroutine driver_links
+
+  !> The Assur groups in the order the graphical method solves them: the input link (the
+  !> driving moment's link; none for a driving force in a cylinder, whose pair is then left
+  !> out of the structure), then every dyad - two links sharing a pair, each with exactly one
+  !> pair to the frame or to the links already solved - in link order; links left over (a
+  !> group of a higher class) form the last group.
+  pure subroutine groups_of(topo, drawing, slides, driver, groups)
+    type(sketch_t), intent(in) :: topo
+    type(drawing_t), intent(in) :: drawing
+    type(slide_t), intent(in) :: slides(:)
+    character(*), intent(in) :: driver
+    type(plan_group_t), allocatable, intent(out) :: groups(:)
+    integer, allocatable :: pa(:), pb(:)
+    logical, allocatable :: solved(:)
+    integer :: nl, i, j, ip, s, crank, actuator, g
+    logical :: found
+    nl = size(topo%links)
+    allocate (pa(0), pb(0), groups(0), solved(0:nl))
+    ! the pairs: revolute (a point two links list, a pivot), prismatic (the slides)
+    do ip = 1, size(drawing%points)
+      associate (pname => drawing%points(ip)%name)
+        do i = 1, nl
+          if (.not. lists(topo, i, trim(pname)) .or. sliding_on(topo, i, trim(pname))) cycle
+          if (allocated(topo%pivots)) then
+            if (any(topo%pivots == pname)) pb = [pb, 0]
+            if (any(topo%pivots == pname)) pa = [pa, i]
+          end if
+          do j = i + 1, nl
+            if (.not. lists(topo, j, trim(pname)) .or. sliding_on(topo, j, trim(pname))) cycle
+            pa = [pa, i]
+            pb = [pb, j]
+          end do
+        end do
+      end associate
+    end do
+    call driver_links(topo, drawing, driver, crank, actuator)
+    do s = 1, size(slides)
+      if (.not. slide_is_pair(topo, slides, s)) cycle
+      if (actuator > 0) then
+        if (slides(s)%m == actuator .and. slides(s)%g == guide_link(topo, actuator)) cycle
+      end if
+      pa = [pa, slides(s)%m]
+      pb = [pb, slides(s)%g]
+    end do
+    solved = .false.
+    solved(0) = .true.
+    if (crank > 0) then
+      solved(crank) = .true.
+      groups = [groups, plan_group_t([crank], .true.)]
+    end if
+    do
+      found = .false.
+      outer: do i = 1, nl
+        if (solved(i)) cycle outer
+        inner: do j = i + 1, nl
+          if (solved(j)) cycle inner
+          if (count(pair_of(i, j)) == 0) cycle inner
+          if (to_solved(i) /= 1 .or. to_solved(j) /= 1) cycle inner
+          groups = [groups, plan_group_t([i, j], .false.)]
+          solved([i, j]) = .true.
+          found = .true.
+          exit outer
+        end do inner
+      end do outer
+      if (.not. found) exit
+    end do
+    if (.not. all(solved)) then
+      g = count(.not. solved(1:))
+      groups = [groups, plan_group_t(pack([(i, i=1, nl)], .not. solved(1:)), .false.)]
+    end if
+  contains
+    pure function pair_of(a, b) result(mask)
+      integer, intent(in) :: a, b
+      logical :: mask(size(pa))
+      mask = (pa == a .and. pb == b) .or. (pa == b .and. pb == a)
+    end function pair_of
+    !> Number of pairs of link a with solved links (the frame included).
+    pure integer function to_solved(a)
+      integer, intent(in) :: a
+      integer :: q
+      to_solved = 0
+      do q = 1, size(pa)
+        if (pa(q) == a .and. solved(pb(q))) to_solved = to_solved + 1
+        if (pb(q) == a .and. solved(pa(q))) to_solved = to_solved + 1
+      end do
+    end function to_solved
+  end subroutine groups_of
+
+  !> The vector equations of the acceleration plan in the order the graphical method draws
+  !> them, group by group (groups_of): a point of the group's links is drawn when every link
+  !> of the group through it has a known point (a dyad's inner joint from both its outer
+  !> joints), each link giving a_P = a_Q + a_PQ^n + a_PQ^tau (a_PQ^n = -omega^2 (P - Q), a_PQ^tau
+  !> = eps x (P - Q); a_P^n, a_P^tau about a pivot); a slider on a moving guide of link g,
+  !> a_P = a_Q(g) + a_P<g>Q^n + a_P<g>Q^tau + a_P^k + a_P^r (a_P^k = 2 omega_g x v_rel, a_P^r
+  !> along the guide), also when P is known already (its other side); on a guide of the
+  !> frame, a_P = a_P^r from the pole beside its other equations.
+  pure subroutine equations_of(topo, drawing, table, k, omega, eps, v0, plans)
+    type(sketch_t), intent(in) :: topo
+    type(drawing_t), intent(in) :: drawing
+    type(step_table_t), intent(in) :: table
+    integer, intent(in) :: k
+    real(wp), intent(in) :: omega(:), eps(:), v0(:, :)
+    type(plans_t), intent(inout) :: plans
+    type(slide_t), allocatable :: slides(:)
+    logical, allocatable :: known(:), fresh(:), written(:), member(:)
+    integer :: n, ip, s, q, gr, t
+    logical :: any_ready, relaxed
+    n = size(plans%accelerations)
+    allocate (plans%equations(0), known(n), fresh(n))
+    known = .false.
+    if (allocated(topo%pivots)) then
+      do ip = 1, n
+        known(ip) = any(topo%pivots == plans%accelerations(ip)%name)
+      end do
+    end if
+    call slides_of(topo, drawing, table, k, omega, slides)
+    allocate (written(size(slides)), member(size(topo%links)))
+    written = .false.
+    do s = 1, size(slides)
+      written(s) = .not. slide_is_pair(topo, slides, s)
+    end do
+    do gr = 1, size(plans%groups)
+      member = .false.
+      member(plans%groups(gr)%links) = .true.
+      relaxed = .false.
+      do
+        fresh = .false.
+        any_ready = .false.
+        do ip = 1, n
+          if (known(ip) .or. .not. of_group(ip)) cycle
+          if (.not. ready(ip, relaxed)) cycle
+          any_ready = .true.
+          fresh(ip) = .true.
+          call write_point(ip, plans%equations, written)
+          if (relaxed) exit
+        end do
+        ! the other side of sliders at known points
+        do s = 1, size(slides)
+          if (written(s) .or. slides(s)%g == 0) cycle
+          if (.not. (member(slides(s)%m) .or. member(slides(s)%g))) cycle
+          ip = plan_point_index(slides(s)%name)
+          if (ip == 0) cycle
+          if (.not. known(ip)) cycle
+          q = known_point(slides(s)%g, ip)
+          if (q == 0) then
+            ! the guide's link has no known point yet: its point from the slider's, the other
+            ! way round (a point of the guide's link = the slider's point + Coriolis + relative
+            ! + its rotation about the slider's point)
+            q = unknown_point(slides(s)%g)
+            if (q == 0) cycle
+            plans%equations = [plans%equations, reversed(s, ip, q)]
+            fresh(q) = .true.
+            do t = 1, size(slides)
+              if (written(t) .or. slides(t)%g /= 0 .or. slides(t)%name /= plans%accelerations(q)%name) cycle
+              plans%equations = [plans%equations, sliding(t, 0, q)]
+              written(t) = .true.
+              exit
+            end do
+          else
+            plans%equations = [plans%equations, sliding(s, q, ip)]
+          end if
+          written(s) = .true.
+          any_ready = .true.
+        end do
+        known = known .or. fresh
+        if (any_ready) then
+          relaxed = .false.
+        else if (.not. relaxed) then
+          relaxed = .true.
+        else
+          exit
+        end if
+      end do
+    end do
+    ! points of no group (a construction point), and sliders never written
+    do ip = 1, n
+      if (.not. known(ip) .and. ready(ip, .true.)) call write_point(ip, plans%equations, written)
+    end do
+  contains
+    !> Index of the image called `name` (0: none).
+    pure integer function plan_point_index(name)
+      character(*), intent(in) :: name
+      integer :: t
+      plan_point_index = 0
+      do t = 1, n
+        if (plans%accelerations(t)%name == name) plan_point_index = t
+      end do
+    end function plan_point_index
+    !> Whether a link of the group lists the point (not as a sliding contact).
+    pure logical function of_group(ip)
+      integer, intent(in) :: ip
+      integer :: t
+      of_group = .false.
+      do t = 1, size(topo%links)
+        if (.not. member(t)) cycle
+        if (lists(topo, t, trim(plans%accelerations(ip)%name)) .and. .not. &
+          sliding_on(topo, t, trim(plans%accelerations(ip)%name))) of_group = .true.
+      end do
+    end function of_group
+    !> Whether point ip can be drawn: every group link through it (and the guide's link of
+    !> every slider there) has a known point; relaxed: at least one has.
+    pure logical function ready(ip, relaxed)
+      integer, intent(in) :: ip
+      logical, intent(in) :: relaxed
+      integer :: t, sides, open
+      sides = 0
+      open = 0
+      do t = 1, size(topo%links)
+        if (.not. lists(topo, t, trim(plans%accelerations(ip)%name)) .or. &
+          sliding_on(topo, t, trim(plans%accelerations(ip)%name))) cycle
+        if (known_point(t, ip) > 0) then
+          sides = sides + 1
+        else if (member(t)) then
+          open = open + 1
+        end if
+      end do
+      do t = 1, size(slides)
+        if (written(t) .or. slides(t)%name /= plans%accelerations(ip)%name .or. slides(t)%g == 0) cycle
+        if (known_point(slides(t)%g, ip) > 0) then
+          sides = sides + 1
+        else
+          open = open + 1
+        end if
+      end do
+      ready = sides > 0 .and. (open == 0 .or. relaxed)
+    end function ready
+    !> Every equation of point ip that its known points allow.
+    pure subroutine write_point(ip, equations, written)
+      integer, intent(in) :: ip
+      type(plan_equation_t), allocatable, intent(inout) :: equations(:)
+      logical, intent(inout) :: written(:)
+      integer :: t, q, frame_slide
+      do t = 1, size(topo%links)
+        if (.not. lists(topo, t, trim(plans%accelerations(ip)%name)) .or. &
+          sliding_on(topo, t, trim(plans%accelerations(ip)%name))) cycle
+        q = known_point(t, ip)
+        if (q > 0) equations = [equations, rotation(t, q, ip, "")]
+      end do
+      frame_slide = 0
+      do t = 1, size(slides)
+        if (written(t) .or. slides(t)%name /= plans%accelerations(ip)%name) cycle
+        if (slides(t)%g == 0) then
+          frame_slide = t
+          cycle
+        end if
+        q = known_point(slides(t)%g, ip)
+        if (q == 0) cycle
+        equations = [equations, sliding(t, q, ip)]
+        written(t) = .true.
+      end do
+      if (frame_slide > 0) then
+        equations = [equations, sliding(frame_slide, 0, ip)]
+        written(frame_slide) = .true.
+      end if
+    end subroutine write_point
+    !> Index (on the plan) of the first known point of link i other than image `not` (0: none).
+    pure integer function known_point(i, not)
+      integer, intent(in) :: i, not
+      known_point = first_point(i, .true., not)
+    end function known_point
+    !> Index of the first image that is a point of link i (not a sliding contact) and not
+    !> known (0: none).
+    pure integer function unknown_point(i)
+      integer, intent(in) :: i
+      unknown_point = first_point(i, .false., 0)
+    end function unknown_point
+    !> Index of the first image other than `not` that is a point of link i (not a sliding
+    !> contact), known or not as `want_known` says (0: none).
+    pure integer function first_point(i, want_known, not)
+      integer, intent(in) :: i, not
+      logical, intent(in) :: want_known
+      integer :: t
+      first_point = 0
+      do t = 1, n
+        if (t == not .or. (known(t) .neqv. want_known)) cycle
+        associate (tname => plans%accelerations(t)%name)
+          if (.not. lists(topo, i, trim(tname)) .or. sliding_on(topo, i, trim(tname))) cycle
+        end associate
+        first_point = t
+        return
+      end do
+    end function first_point
+    !> The name of the point of link `link` at point `point` ("B3"; "J21_3" when the point's
+    !> name ends in a digit).
+    pure function coincident(point, link) result(text)
+      character(*), intent(in) :: point, link
+      character(len=:), allocatable :: text
+      text = point
+      if (verify(point(len(point):), "0123456789") == 0) text = text//"_"
+      text = text//link
+    end function coincident
+    !> Slider s the other way round: point t of its guide's link g from the slider's known
+    !> point ip, a_t = a_P + a_P<g>^k + a_P<g>^r + a_tP<g>^n + a_tP<g>^tau, with the Coriolis
+    !> term 2 omega_m x (v_g(P) - v_m(P)) of g's point relative to the slider m.
+    pure function reversed(s, ip, t) result(eq)
+      integer, intent(in) :: s, ip, t
+      type(plan_equation_t) :: eq
+      real(wp) :: vrel(2), cor(2), r(2), nrm(2), tng(2)
+      integer :: m, g
+      character(len=:), allocatable :: pg
+      m = slides(s)%m
+      g = slides(s)%g
+      pg = coincident(trim(plans%accelerations(ip)%name), trim(topo%links(g)%name))
+      vrel = field(v0(:, g), omega(g), 0.0_wp, slides(s)%p, .false.) - field(v0(:, m), omega(m), 0.0_wp, &
+        slides(s)%p, .false.)
+      cor = 2.0_wp * omega(m) * [-vrel(2), vrel(1)]
+      r = drawing%at(trim(plans%accelerations(t)%name)) - drawing%at(trim(plans%accelerations(ip)%name))
+      nrm = -omega(g)**2 * r
+      tng = eps(g) * [-r(2), r(1)]
+      eq%point = plans%accelerations(t)%name
+      eq%link = topo%links(g)%name
+      eq%from = plans%accelerations(ip)%name
+      eq%slider = topo%links(m)%name
+      eq%reverse = .true.
+      eq%vectors = [plan_vector_t("a_"//pg//"^k", cor, component_coriolis), plan_vector_t("a_"//pg//"^r", &
+        plans%accelerations(t)%v - plans%accelerations(ip)%v - cor - nrm - tng, component_relative), &
+        plan_vector_t("a_"//trim(plans%accelerations(t)%name)//pg//"^n", nrm, component_normal), &
+        plan_vector_t("a_"//trim(plans%accelerations(t)%name)//pg//"^τ", tng, component_tangential)]
+    end function reversed
+    !> Names of the normal and tangential components of P about Q on link i (`mid` the
+    !> coincident point's link for a slider): a_PQ^n, or a_P^n when Q is a pivot.
+    pure function relative_name(ip, q, mid) result(text)
+      integer, intent(in) :: ip, q
+      character(*), intent(in) :: mid
+      character(len=:), allocatable :: text
+      text = "a_"//mid
+      if (len(mid) == 0) text = "a_"//trim(plans%accelerations(ip)%name)
+      if (allocated(topo%pivots)) then
+        if (any(topo%pivots == plans%accelerations(q)%name)) return
+      end if
+      text = text//trim(plans%accelerations(q)%name)
+    end function relative_name
+    !> a_P = a_Q + a_PQ^n + a_PQ^tau on link i.
+    pure function rotation(i, q, ip, mid) result(eq)
+      integer, intent(in) :: i, q, ip
+      character(*), intent(in) :: mid
+      type(plan_equation_t) :: eq
+      real(wp) :: r(2)
+      r = drawing%at(trim(plans%accelerations(ip)%name)) - drawing%at(trim(plans%accelerations(q)%name))
+      eq%point = plans%accelerations(ip)%name
+      eq%link = topo%links(i)%name
+      eq%from = plans%accelerations(q)%name
+      eq%vectors = [plan_vector_t(relative_name(ip, q, mid)//"^n", -omega(i)**2 * r, component_normal), &
+        plan_vector_t(relative_name(ip, q, mid)//"^τ", eps(i) * [-r(2), r(1)], component_tangential)]
+    end function rotation
+    !> The slider s's equation from the known point q of its guide's link (q = 0: the frame's
+    !> guide, from the pole): normal, tangential, Coriolis and relative components.
+    pure function sliding(s, q, ip) result(eq)
+      integer, intent(in) :: s, q, ip
+      type(plan_equation_t) :: eq
+      real(wp) :: vrel(2), cor(2), rest(2)
+      integer :: m, g
+      m = slides(s)%m
+      g = slides(s)%g
+      rest = 0.0_wp
+      if (g > 0) then
+        eq = rotation(g, q, ip, coincident(trim(plans%accelerations(ip)%name), trim(topo%links(g)%name)))
+        eq%link = topo%links(g)%name
+        vrel = field(v0(:, m), omega(m), 0.0_wp, slides(s)%p, .false.) - field(v0(:, g), omega(g), 0.0_wp, &
+          slides(s)%p, .false.)
+        cor = 2.0_wp * omega(g) * [-vrel(2), vrel(1)]
+        rest = plans%accelerations(q)%v + eq%vectors(1)%v + eq%vectors(2)%v
+        eq%vectors = [eq%vectors, plan_vector_t("a_"//trim(plans%accelerations(ip)%name)//"^k", cor, component_coriolis)]
+        rest = rest + cor
+      else
+        eq%point = plans%accelerations(ip)%name
+        eq%link = ""
+        eq%from = ""
+        allocate (eq%vectors(0))
+      end if
+      eq%slider = topo%links(m)%name
+      eq%vectors = [eq%vectors, plan_vector_t("a_"//trim(plans%accelerations(ip)%name)//"^r", &
+        plans%accelerations(ip)%v - rest, component_relative)]
+    end function sliding
+  end subroutine equations_of
 
   !> Append one slider's row (coefficients, then the right-hand side) to a x = b.
   pure subroutine append_slide(a, b, row_rhs)
@@ -425,7 +927,6 @@ contains
     type(force_polygon_t), allocatable, intent(out) :: polygons(:)
     type(force_polygon_t) :: poly
     integer :: i, j, pass
-    real(wp) :: largest
     logical :: mine, take
     allocate (polygons(0))
     if (.not. allocated(drawing%forces)) return
@@ -464,17 +965,181 @@ contains
         end do
       end do
       if (size(poly%vectors) > 0) then
-        largest = 0.0_wp
-        do j = 1, size(poly%vectors)
-          largest = max(largest, norm2(poly%vectors(j)%v))
-        end do
-        poly%closure = 0.0_wp
-        if (largest > 0.0_wp) poly%closure = norm2([sum(poly%vectors%v(1)), sum(poly%vectors%v(2))]) / largest
+        poly%closure = closure_of(poly%vectors)
         polygons = [polygons, poly]
       end if
       deallocate (poly%vectors)
     end do
   end subroutine polygons_of
+
+  !> The force polygon of every Assur group as the graphical method closes it, from the last
+  !> group attached to the first and then the input link: the known forces of its links link
+  !> by link (weight, inertia force, external loads), the reactions of the groups solved
+  !> before it (known now), then the unknown reactions of the frame and of the links it is
+  !> attached to - a revolute pair's
+  !> reaction on a link with another joint in the group split into its tangential part
+  !> (perpendicular to the line to that joint, found from the link's moments) and its normal
+  !> part (along it) - the tangential parts first, then the normal parts and the unsplit
+  !> reactions, which close the polygon. The input link's polygon carries the balancing
+  !> moment's name and value.
+  pure subroutine group_polygons_of(topo, drawing, table, k, slides, driver, groups, polygons)
+    type(sketch_t), intent(in) :: topo
+    type(drawing_t), intent(in) :: drawing
+    type(step_table_t), intent(in) :: table
+    integer, intent(in) :: k
+    type(slide_t), intent(in) :: slides(:)
+    character(*), intent(in) :: driver
+    type(plan_group_t), intent(in) :: groups(:)
+    type(force_polygon_t), allocatable, intent(out) :: polygons(:)
+    type(force_polygon_t) :: poly
+    type(plan_vector_t), allocatable :: tangential(:), closing(:)
+    logical, allocatable :: member(:), before(:)
+    integer :: gr, q, i, j, a, b, pass, crank, actuator, cylinder
+    logical :: take
+    allocate (polygons(0), member(size(topo%links)), before(0:size(topo%links)))
+    ! a cylinder drive: the cylinder and its rod are one body of the group (their pair is
+    ! the input)
+    call driver_links(topo, drawing, driver, crank, actuator)
+    cylinder = 0
+    if (actuator > 0) cylinder = guide_link(topo, actuator)
+    if (.not. allocated(drawing%forces)) return
+    before = .false.
+    do gr = size(groups), 1, -1
+      member = .false.
+      member(groups(gr)%links) = .true.
+      poly%link = ""
+      do q = 1, size(groups(gr)%links)
+        if (q > 1) poly%link = trim(poly%link)//","
+        poly%link = trim(poly%link)//topo%links(groups(gr)%links(q))%name
+      end do
+      allocate (poly%vectors(0), tangential(0), closing(0))
+      do q = 1, size(groups(gr)%links)
+        i = groups(gr)%links(q)
+        do pass = 1, 3
+          do j = 1, size(drawing%forces)
+            associate (f => drawing%forces(j))
+              if (f%kind == force_pair) cycle
+              take = owner(f%name, f%on_link) == topo%links(i)%name
+              select case (pass)
+              case (1)
+                take = take .and. f%name(1:1) == "G"
+              case (2)
+                take = take .and. f%name(1:3) == "Phi"
+              case default
+                take = take .and. f%name(1:1) /= "G" .and. f%name(1:3) /= "Phi"
+              end select
+              if (take) poly%vectors = [poly%vectors, plan_vector_t(f%name, f%f)]
+              ! an actuator's force: its reaction on the guide's link
+              if (pass == 3 .and. len_trim(f%on_link) > 0 .and. trim(f%name) == trim(driver)) then
+                if (guide_link(topo, link_index(topo, trim(f%on_link))) == i) poly%vectors = [poly%vectors, &
+                  plan_vector_t("-"//f%name, -f%f)]
+              end if
+            end associate
+          end do
+        end do
+      end do
+      ! the reactions on the group from the links outside it
+      do j = 1, size(drawing%forces)
+        associate (f => drawing%forces(j))
+          if (f%kind /= force_pair .or. len_trim(f%name) /= 3 .or. f%name(1:1) /= "F") cycle
+          a = link_index(topo, f%name(2:2))
+          b = link_index(topo, f%name(3:3))
+          if (a > 0 .and. member(max(a, 1)) .and. .not. (b > 0 .and. member(max(b, 1)))) then
+            call add_reaction(trim(f%name), f%f, a, b, f%at, poly, tangential, closing)
+          else if (b > 0 .and. member(max(b, 1)) .and. .not. (a > 0 .and. member(max(a, 1)))) then
+            call add_reaction("F"//f%name(3:3)//f%name(2:2), -f%f, b, a, f%at, poly, tangential, closing)
+          end if
+        end associate
+      end do
+      ! the frame's reactions close the polygon
+      poly%vectors = [poly%vectors, tangential, pack(closing, .not. from_frame(closing)), pack(closing, &
+        from_frame(closing))]
+      before(groups(gr)%links) = .true.
+      poly%moment = ""
+      poly%moment_value = 0.0_wp
+      if (groups(gr)%input .and. table%column_index(driver) > 0) then
+        poly%moment = driver
+        poly%moment_value = column_value(table, driver, k)
+      end if
+      poly%closure = closure_of(poly%vectors)
+      polygons = [polygons, poly]
+      deallocate (poly%vectors, tangential, closing)
+    end do
+  contains
+    !> Whether each reaction F<l><o> is from the frame (o no moving link).
+    pure function from_frame(vectors) result(mask)
+      type(plan_vector_t), intent(in) :: vectors(:)
+      logical :: mask(size(vectors))
+      integer :: t
+      do t = 1, size(vectors)
+        mask(t) = link_index(topo, vectors(t)%name(3:3)) == 0
+      end do
+    end function from_frame
+    !> The reaction `f` (N) on link l of the group from link o (0: the frame) at `at`: split
+    !> when the pair is revolute and l has another joint with a link of the group.
+    pure subroutine add_reaction(name, f, l, o, at, poly, tangential, closing)
+      character(*), intent(in) :: name
+      real(wp), intent(in) :: f(2), at(2)
+      integer, intent(in) :: l, o
+      type(force_polygon_t), intent(inout) :: poly
+      type(plan_vector_t), allocatable, intent(inout) :: tangential(:), closing(:)
+      integer :: s
+      real(wp) :: e(2), inner(2)
+      logical :: split
+      if (before(o)) then
+        ! from a group solved before: a known force
+        poly%vectors = [poly%vectors, plan_vector_t(name, f)]
+        return
+      end if
+      call inner_joint(l, at, split, inner)
+      do s = 1, size(slides)
+        if ((slides(s)%m == l .and. slides(s)%g == o) .or. (slides(s)%m == o .and. slides(s)%g == l)) split = .false.
+      end do
+      if (topo%links(l)%block) split = .false.
+      if (split) then
+        e = (inner - at) / norm2(inner - at)
+        tangential = [tangential, plan_vector_t(name//"^τ", f - dot_product(f, e) * e, component_tangential)]
+        closing = [closing, plan_vector_t(name//"^n", dot_product(f, e) * e, component_normal)]
+      else
+        closing = [closing, plan_vector_t(name, f, component_reaction)]
+      end if
+    end subroutine add_reaction
+    !> Whether link l has a joint (not at `at`) with another link of the group (`found`); its position.
+    pure subroutine inner_joint(l, at, found, p)
+      integer, intent(in) :: l
+      real(wp), intent(in) :: at(2)
+      logical, intent(out) :: found
+      real(wp), intent(out) :: p(2)
+      integer :: t, o, body, own
+      found = .false.
+      p = 0.0_wp
+      ! the link, and the other half of a cylinder drive (one body with it)
+      do own = 1, 2
+        body = l
+        if (own == 2) then
+          body = 0
+          if (l == actuator .and. cylinder > 0) body = cylinder
+          if (l == cylinder .and. actuator > 0) body = actuator
+          if (body == 0) return
+          if (.not. member(body)) return
+        end if
+        do t = 1, size(topo%links(body)%points)
+          associate (pname => topo%links(body)%points(t))
+            if (drawing%point_index(trim(pname)) == 0 .or. sliding_on(topo, body, trim(pname))) cycle
+            if (norm2(drawing%at(trim(pname)) - at) <= 1.0e-9_wp * (1.0_wp + norm2(at))) cycle
+            do o = 1, size(topo%links)
+              if (o == l .or. o == body .or. .not. member(o)) cycle
+              if (lists(topo, o, trim(pname)) .and. .not. sliding_on(topo, o, trim(pname))) then
+                found = .true.
+                p = drawing%at(trim(pname))
+                return
+              end if
+            end do
+          end associate
+        end do
+      end do
+    end subroutine inner_joint
+  end subroutine group_polygons_of
 
   !> Zhukovsky's lever: the power of every load but the driving moment, over the driver's
   !> angular velocity (the balancing moment); pair forces do no work without friction.
@@ -576,7 +1241,7 @@ contains
     type(step_table_t), intent(in) :: table
     integer, intent(in) :: k
     type(text_buffer_t), intent(inout) :: out
-    integer :: i, j
+    integer :: i
     character(len=:), allocatable :: line
     call out%put("{")
     call out%put('  "deck": "'//table%deck//'",')
@@ -587,17 +1252,33 @@ contains
     call out%put('  "velocity_residual": '//full_number(plans%velocity_residual)//',')
     call put_vectors(out, "acceleration_plan", plans%accelerations, "m/s^2")
     call out%put('  "acceleration_residual": '//full_number(plans%acceleration_residual)//',')
+    call out%put('  "acceleration_equations": [')
+    do i = 1, size(plans%equations)
+      associate (eq => plans%equations(i))
+        line = '    {"point": "'//trim(eq%point)//'", "link": "'//trim(eq%link)//'", "from": "'//trim(eq%from)// &
+          '", "slider": "'//trim(eq%slider)//'", '
+        if (eq%reverse) line = line//'"reverse": true, '
+        line = line//'"vectors": ['//vectors_json(eq%vectors)//"]}"
+      end associate
+      call put_item(out, line, i < size(plans%equations))
+    end do
+    call out%put("  ],")
     call out%put('  "force_plans": [')
+    do i = 1, size(plans%group_polygons)
+      associate (poly => plans%group_polygons(i))
+        line = '    {"group": "'//trim(poly%link)//'", "closure": '//full_number(poly%closure)
+        if (len(poly%moment) > 0) line = line//', "moment": {"name": "'//poly%moment//'", "value": '// &
+          full_number(poly%moment_value)//'}'
+        line = line//', "vectors": ['//vectors_json(poly%vectors)//"]}"
+      end associate
+      call put_item(out, line, i < size(plans%group_polygons))
+    end do
+    call out%put("  ],")
+    call out%put('  "link_force_plans": [')
     do i = 1, size(plans%polygons)
       line = '    {"link": "'//trim(plans%polygons(i)%link)//'", "closure": '//full_number(plans%polygons(i)%closure)// &
-        ', "vectors": ['
-      do j = 1, size(plans%polygons(i)%vectors)
-        if (j > 1) line = line//", "
-        line = line//vector_json(plans%polygons(i)%vectors(j))
-      end do
-      line = line//"]}"
-      if (i < size(plans%polygons)) line = line//","
-      call out%put(line)
+        ', "vectors": ['//vectors_json(plans%polygons(i)%vectors)//"]}"
+      call put_item(out, line, i < size(plans%polygons))
     end do
     call out%put("  ],")
     if (plans%lever_known) then
@@ -631,7 +1312,49 @@ contains
   pure function vector_json(v) result(text)
     type(plan_vector_t), intent(in) :: v
     character(len=:), allocatable :: text
-    text = '{"name": "'//trim(v%name)//'", "x": '//full_number(v%v(1))//', "y": '//full_number(v%v(2))//"}"
+    text = '{"name": "'//trim(v%name)//'", '
+    if (len_trim(v%kind) > 0) text = text//'"kind": "'//v%kind//'", '
+    text = text//'"x": '//full_number(v%v(1))//', "y": '//full_number(v%v(2))//"}"
   end function vector_json
+
+  !> How far a polygon is from closing: |sum of its vectors| / its largest vector (0 when
+  !> every vector is zero).
+  pure real(wp) function closure_of(vectors)
+    type(plan_vector_t), intent(in) :: vectors(:)
+    real(wp) :: largest
+    integer :: j
+    largest = 0.0_wp
+    do j = 1, size(vectors)
+      largest = max(largest, norm2(vectors(j)%v))
+    end do
+    closure_of = 0.0_wp
+    if (largest > 0.0_wp) closure_of = norm2([sum(vectors%v(1)), sum(vectors%v(2))]) / largest
+  end function closure_of
+
+  !> Vectors as JSON objects separated by commas.
+  pure function vectors_json(vectors) result(text)
+    type(plan_vector_t), intent(in) :: vectors(:)
+    character(len=:), allocatable :: text
+    integer :: j
+    text = ""
+    do j = 1, size(vectors)
+      text = text//vector_json(vectors(j))
+      if (j < size(vectors)) text = text//", "
+    end do
+  end function vectors_json
+
+  !> One line of a JSON array, with a comma when more follow.
+  pure subroutine put_item(out, line, more)
+    type(text_buffer_t), intent(inout) :: out
+    !> The item.
+    character(*), intent(in) :: line
+    !> Whether more items follow.
+    logical, intent(in) :: more
+    if (more) then
+      call out%put(line//",")
+    else
+      call out%put(line)
+    end if
+  end subroutine put_item
 
 end module kinetostat_plans

@@ -68,7 +68,7 @@ contains
     type(text_buffer_t), intent(inout) :: out
     real(wp), allocatable :: px(:), py(:), obst_x(:), obst_y(:), hx(:), hy(:)
     real(wp) :: len_scale, force_scale, ox, oy, cx, cy, xmin, xmax, ymin, ymax, fmax, q(2), tx, ty, t(2)
-    real(wp) :: bar_len, bar_value, bounds(4), origin(2), axis_tip(2, 2), u2(2)
+    real(wp) :: bar_len, bar_value, bounds(4), origin(2), axis_tip(2, 2), u2(2), sheet_height
     character(len=:), allocatable :: line, text
     type(label_boxes_t) :: boxes
     logical :: leader
@@ -132,7 +132,9 @@ contains
     if (fmax > 0.0_wp) force_scale = longest_arrow / fmax
     bounds = [area(1), area(2), area(1) + area(3), area(2) + area(4)]
 
-    call svg_open(out, page_width, page_height, title//" - "//table%deck//" - "//table%row_name//" "//int_str(k), &
+    sheet_height = page_height
+    if (allocated(table%student_stamp)) sheet_height = page_height + title_block_height
+    call svg_open(out, page_width, sheet_height, title//" - "//table%deck//" - "//table%row_name//" "//int_str(k), &
       "kinetostat --format svg --at "//int_str(k)//" sheet of "//table%deck//": the mechanism to scale with "// &
       "every force of the step as an arrow (one force scale).")
     call out%put(svg_text(area(1), 15.0_wp, title, title_attributes(title, "title", 3.3_wp, 188.0_wp)))
@@ -325,7 +327,8 @@ contains
         'class="small"'))
     end do
     call put_force_list(out, drawing, area(1), ty + 9.0_wp, lang)
-    call put_title_block(out, table, lang, page_width, page_height)
+    call put_title_block(out, table, lang, page_width, sheet_height, word("Mechanism with its forces", lang)// &
+      ", "//word(table%row_name, lang)//" "//int_str(k))
     call svg_close(out)
   contains
     !> Page points (mm) of the axis of a cylinder or rod `b` at s0 and s1 m from its anchor.

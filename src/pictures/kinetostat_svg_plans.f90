@@ -6,8 +6,9 @@
 !> - Zhukovsky's lever: the velocity plan turned 90 deg counterclockwise, every load drawn at
 !>   its point's image, the balancing effort from the lever's moment equation beside the
 !>   analytic value of the step;
-!> - the force polygon of every link: its loads, then the pair forces on it, head to tail at
-!>   one scale mu_F in N/mm.
+!> - the force polygon of every Assur group (the last attached first) and of the input link:
+!>   the known forces, then the unknown reactions (tangential parts, then normal parts), head
+!>   to tail at one scale mu_F in N/mm; the input link's with its balancing moment.
 !> The numbers come from kinetostat_plans; labels are placed by kinetostat_label_place (no
 !> two overlap); words from kinetostat_labels.
 module kinetostat_svg_plans
@@ -17,11 +18,11 @@ module kinetostat_svg_plans
   use kinetostat_step_table, only: step_table_t
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_svg, only: svg_open, svg_close, svg_line, svg_rect, svg_text, svg_arrow, svg_circle, palette_colour
-  use kinetostat_svg_writer, only: nice_step
   use kinetostat_label_place, only: label_boxes_t, title_attributes, anchor_start
   use kinetostat_labels, only: word => label, unit_word => unit_symbol
   use kinetostat_title_block, only: put_title_block, title_block_height
-  use kinetostat_plans, only: plans_t, plan_vector_t
+  use kinetostat_plans, only: plans_t, plan_vector_t, plan_equation_t, component_normal, component_tangential, &
+    component_coriolis
   implicit none
   private
   public :: write_svg_plans
@@ -50,10 +51,12 @@ contains
     type(label_boxes_t) :: boxes
     type(plan_vector_t), allocatable :: turned(:)
     character(len=:), allocatable :: line
-    real(wp) :: y
+    real(wp) :: y, sheet_height
     integer :: i
 
-    call svg_open(out, page_width, page_height, title//" - "//table%deck//" - plans, "//table%row_name//" "// &
+    sheet_height = page_height
+    if (allocated(table%student_stamp)) sheet_height = page_height + title_block_height
+    call svg_open(out, page_width, sheet_height, title//" - "//table%deck//" - plans, "//table%row_name//" "// &
       int_str(k), "kinetostat --format plans --at "//int_str(k)//" sheet of "//table%deck// &
       ": plans of velocities and accelerations, force polygons, Zhukovsky's lever.")
     call out%put(svg_text(12.0_wp, 15.0_wp, title, title_attributes(title, "title", 3.3_wp, 186.0_wp)))
@@ -68,7 +71,7 @@ contains
     call put_plan(out, boxes, plans%velocities, [12.0_wp, 32.0_wp, 91.0_wp, 88.0_wp], &
       word("Plan of velocities", lang), "p", "μv", unit_word("m/s", lang), lang)
     call put_plan(out, boxes, plans%accelerations, [107.0_wp, 32.0_wp, 91.0_wp, 88.0_wp], &
-      word("Plan of accelerations", lang), "π", "μa", unit_word("m/s^2", lang), lang)
+      word("Plan of accelerations", lang), "π", "μa", unit_word("m/s^2", lang), lang, plans%equations)
     ! the lever: the velocity plan turned by 90 deg, the loads at their images
     allocate (turned(size(plans%velocities)))
     do i = 1, size(plans%velocities)
@@ -81,7 +84,7 @@ contains
     ! the lever's result against the analytic one
     y = 236.0_wp
     call out%put(svg_text(107.0_wp, y - 7.5_wp, word("Force polygons", lang)//":", 'class="small"'))
-    call out%put(svg_text(107.0_wp, y - 4.5_wp, word("known forces first, then the pair forces", lang)//".", &
+    call out%put(svg_text(107.0_wp, y - 4.5_wp, word("known forces first, then the unknown reactions", lang)//".", &
       'class="small"'))
     call out%put(svg_text(12.0_wp, y - 7.5_wp, word("plan of velocities turned by 90 deg", lang)//";", 'class="small"'))
     call out%put(svg_text(12.0_wp, y - 4.5_wp, word("arrows: directions of the loads", lang)//".", 'class="small"'))
@@ -98,7 +101,8 @@ contains
       call out%put(svg_text(12.0_wp, y + 6.0_wp, word("not drawn", lang)//": "//word(plans%lever_note, lang), &
         'class="label"'))
     end if
-    call put_title_block(out, table, lang, page_width, page_height)
+    call put_title_block(out, table, lang, page_width, sheet_height, word("Plans of velocities, accelerations, forces", &
+      lang))
     call svg_close(out)
   end subroutine write_svg_plans
 
@@ -141,30 +145,57 @@ contains
     end if
     span = max((hi(1) - lo(1)) / (inner(3) - inner(1)), (hi(2) - lo(2)) / (inner(4) - inner(2)))
     mu = 1.0_wp
-    if (span > 0.0_wp) mu = nice_step(span, 1, .false.)
+    if (span > 0.0_wp) mu = plan_scale(span)
     pole(1) = 0.5_wp * (inner(1) + inner(3)) - 0.5_wp * (lo(1) + hi(1)) / mu
     pole(2) = 0.5_wp * (inner(2) + inner(4)) + 0.5_wp * (lo(2) + hi(2)) / mu
   end subroutine fit
 
   !> A plan: the pole, a ray to the image of every point (its name in lower case), the scale.
-  pure subroutine put_plan(out, boxes, images, box, heading, pole_name, mu_name, unit, lang)
+  pure subroutine put_plan(out, boxes, images, box, heading, pole_name, mu_name, unit, lang, equations)
     type(text_buffer_t), intent(inout) :: out
     type(label_boxes_t), intent(inout) :: boxes
     type(plan_vector_t), intent(in) :: images(:)
     real(wp), intent(in) :: box(4)
     character(*), intent(in) :: heading, pole_name, mu_name, unit
     integer, intent(in) :: lang
+    !> The plan's vector equations (the acceleration plan's components), drawn head to tail
+    !> from the image they start from.
+    type(plan_equation_t), intent(in), optional :: equations(:)
     real(wp) :: inner(4), mu, pole(2), q(2), tx, ty
-    real(wp), allocatable :: seg_x(:), seg_y(:), v(:, :)
+    real(wp), allocatable :: seg_x(:), seg_y(:), v(:, :), tips(:, :)
+    character(len=:), allocatable :: legend
     logical :: leader
-    integer :: i
+    integer :: i, j, e
     call put_panel(out, boxes, box, heading, inner)
     allocate (v(2, size(images)))
     do i = 1, size(images)
       v(:, i) = images(i)%v
     end do
+    if (present(equations)) then
+      ! the chains' corners must fit too
+      do e = 1, size(equations)
+        call chain_tips(equations(e), images, tips)
+        v = reshape([v, tips], [2, size(v, 2) + size(tips, 2)])
+      end do
+      legend = word("components: n normal, τ tangential, k Coriolis, r relative", lang)
+      inner(4) = inner(4) - 3.0_wp
+    end if
     call fit(v, inner, mu, pole)
     allocate (seg_x(0), seg_y(0))
+    if (present(equations)) then
+      do e = 1, size(equations)
+        call chain_tips(equations(e), images, tips)
+        do j = 1, size(equations(e)%vectors)
+          associate (p => pole + [tips(1, j), -tips(2, j)] / mu, t => pole + [tips(1, j + 1), -tips(2, j + 1)] / mu)
+            if (hypot(t(1) - p(1), t(2) - p(2)) < 0.3_wp) cycle
+            call out%put(svg_arrow(p(1), p(2), t(1), t(2), component_colour(equations(e)%vectors(j)%kind), 0.25_wp, &
+              1.5_wp))
+            seg_x = [seg_x, p(1), t(1)]
+            seg_y = [seg_y, p(2), t(2)]
+          end associate
+        end do
+      end do
+    end if
     do i = 1, size(images)
       q = pole + [v(1, i), -v(2, i)] / mu
       if (hypot(q(1) - pole(1), q(2) - pole(2)) > 0.3_wp) then
@@ -186,11 +217,63 @@ contains
       if (leader) call out%put(svg_line(q(1), q(2), tx, ty - 0.3_wp * label_size, 'stroke="#777777" stroke-width="0.15"'))
       call out%put(svg_text(tx, ty, lower(trim(images(i)%name)), 'class="label" font-style="italic" text-anchor="middle"'))
     end do
+    if (present(equations)) then
+      ! the components' names at the middle of their arrows
+      do e = 1, size(equations)
+        call chain_tips(equations(e), images, tips)
+        do j = 1, size(equations(e)%vectors)
+          associate (p => pole + [tips(1, j), -tips(2, j)] / mu, t => pole + [tips(1, j + 1), -tips(2, j + 1)] / mu)
+            if (hypot(t(1) - p(1), t(2) - p(2)) < 0.3_wp) cycle
+            call boxes%place(trim(equations(e)%vectors(j)%name), num_size, 0.5_wp * (p(1) + t(1)), 0.5_wp * (p(2) + &
+              t(2)), atan2(t(2) - p(2), t(1) - p(1)) - 0.5_wp * pi, seg_x, seg_y, inner, tx, ty, leader)
+            if (leader) call out%put(svg_line(0.5_wp * (p(1) + t(1)), 0.5_wp * (p(2) + t(2)), tx, &
+              ty - 0.3_wp * num_size, 'stroke="#777777" stroke-width="0.15"'))
+            call out%put(svg_text(tx, ty, trim(equations(e)%vectors(j)%name), 'class="num" text-anchor="middle" '// &
+              'style="fill: '//component_colour(equations(e)%vectors(j)%kind)//'"'))
+          end associate
+        end do
+      end do
+      call out%put(svg_text(box(1) + 2.0_wp, box(2) + box(4) - 6.0_wp, legend, 'class="small"'))
+      call boxes%reserve(box(1) + 2.0_wp, box(2) + box(4) - 6.0_wp, legend, 2.4_wp, anchor_start)
+    end if
     call out%put(svg_text(box(1) + 2.0_wp, box(2) + box(4) - 2.5_wp, mu_name//" = "//short_number(mu)//" ("// &
       unit//")/"//unit_word("mm", lang), 'class="small"'))
     call boxes%reserve(box(1) + 2.0_wp, box(2) + box(4) - 2.5_wp, mu_name//" = "//short_number(mu)//" ("// &
       unit//")/"//unit_word("mm", lang), 2.4_wp, anchor_start)
   end subroutine put_plan
+
+  !> Colour of an acceleration component: normal, tangential, Coriolis, relative.
+  pure function component_colour(kind) result(colour)
+    character(*), intent(in) :: kind
+    character(len=7) :: colour
+    select case (kind)
+    case (component_normal)
+      colour = "#2ca02c"
+    case (component_tangential)
+      colour = "#d62728"
+    case (component_coriolis)
+      colour = "#9467bd"
+    case default
+      colour = "#ff7f0e"
+    end select
+  end function component_colour
+
+  !> The corners of an equation's chain on the plan: the image it starts from (the pole when
+  !> it starts there), then the running sums of its components.
+  pure subroutine chain_tips(eq, images, tips)
+    type(plan_equation_t), intent(in) :: eq
+    type(plan_vector_t), intent(in) :: images(:)
+    real(wp), allocatable, intent(out) :: tips(:, :)
+    integer :: j
+    allocate (tips(2, size(eq%vectors) + 1))
+    tips(:, 1) = 0.0_wp
+    do j = 1, size(images)
+      if (len_trim(eq%from) > 0 .and. images(j)%name == eq%from) tips(:, 1) = images(j)%v
+    end do
+    do j = 1, size(eq%vectors)
+      tips(:, j + 1) = tips(:, j) + eq%vectors(j)%v
+    end do
+  end subroutine chain_tips
 
   !> Zhukovsky's lever: the turned velocity plan (thin rays), every load as an arrow at its
   !> point's turned image.
@@ -270,35 +353,40 @@ contains
     real(wp) :: inner(4), cell(4), mu, pole(2), p(2), q(2), tx, ty, cw, ch, largest
     real(wp), allocatable :: seg_x(:), seg_y(:), tips(:, :)
     character(len=7) :: colour
-    character(len=:), allocatable :: dash
+    character(len=:), allocatable :: dash, caption
     logical :: leader
     integer :: n, i, j, columns, rows
-    call put_panel(out, boxes, box, word("Force polygons of the links", lang), inner)
+    call put_panel(out, boxes, box, word("Force polygons of the groups", lang), inner)
     n = 0
-    if (allocated(plans%polygons)) n = size(plans%polygons)
+    if (allocated(plans%group_polygons)) n = size(plans%group_polygons)
     if (n == 0) return
     columns = min(n, 2)
     rows = (n + columns - 1) / columns
     cw = (inner(3) - inner(1)) / columns
     ch = (inner(4) - inner(2)) / rows
-    ! one scale: the largest polygon's extent fits a cell
-    largest = 0.0_wp
     do i = 1, n
-      call polygon_tips(plans%polygons(i)%vectors, tips)
-      largest = max(largest, maxval(tips(1, :)) - minval(tips(1, :)), maxval(tips(2, :)) - minval(tips(2, :)))
-    end do
-    mu = 1.0_wp
-    if (largest > 0.0_wp) mu = nice_step(largest / (min(cw, ch) - 9.0_wp), 1, .false.)
-    do i = 1, n
-      associate (poly => plans%polygons(i))
+      associate (poly => plans%group_polygons(i))
         cell = [inner(1) + cw * modulo(i - 1, columns), inner(2) + ch * ((i - 1) / columns), 0.0_wp, 0.0_wp]
         cell(3:4) = cell(1:2) + [cw, ch]
-        call out%put(svg_text(cell(1) + 1.0_wp, cell(2) + 3.0_wp, word("link", lang)//" "//trim(poly%link), &
-          'class="small"'))
-        call boxes%reserve(cell(1) + 1.0_wp, cell(2) + 3.0_wp, word("link", lang)//" "//trim(poly%link), 2.4_wp, anchor_start)
+        if (index(poly%link, ",") > 0) then
+          caption = word("Assur group", lang)//" "//trim(poly%link)
+        else
+          caption = word("input link", lang)//" "//trim(poly%link)
+        end if
+        if (len(poly%moment) > 0) caption = caption//": "//poly%moment//" = "//short_number(poly%moment_value)//" "// &
+          unit_word("N*m", lang)
+        call out%put(svg_text(cell(1) + 1.0_wp, cell(2) + 3.0_wp, caption, 'class="small"'))
+        call boxes%reserve(cell(1) + 1.0_wp, cell(2) + 3.0_wp, caption, 2.4_wp, anchor_start)
+        ! its own scale: the polygon fits its cell
         call polygon_tips(poly%vectors, tips)
+        largest = max(maxval(tips(1, :)) - minval(tips(1, :)), maxval(tips(2, :)) - minval(tips(2, :)))
+        mu = 1.0_wp
+        if (largest > 0.0_wp) mu = plan_scale(largest / (min(cw, ch) - 12.0_wp))
+        caption = "μF = "//short_number(mu)//" "//unit_word("N", lang)//"/"//unit_word("mm", lang)
+        call out%put(svg_text(cell(1) + 1.0_wp, cell(4) - 1.0_wp, caption, 'class="small"'))
+        call boxes%reserve(cell(1) + 1.0_wp, cell(4) - 1.0_wp, caption, 2.4_wp, anchor_start)
         pole(1) = 0.5_wp * (cell(1) + cell(3)) - 0.5_wp * (minval(tips(1, :)) + maxval(tips(1, :))) / mu
-        pole(2) = 0.5_wp * (cell(2) + 3.0_wp + cell(4)) + 0.5_wp * (minval(tips(2, :)) + maxval(tips(2, :))) / mu
+        pole(2) = 0.5_wp * (cell(2) + cell(4)) + 0.5_wp * (minval(tips(2, :)) + maxval(tips(2, :))) / mu
         allocate (seg_x(0), seg_y(0))
         do j = 1, size(poly%vectors)
           p = pole + [tips(1, j), -tips(2, j)] / mu
@@ -324,10 +412,22 @@ contains
         deallocate (seg_x, seg_y)
       end associate
     end do
-    call out%put(svg_text(box(1) + 2.0_wp, box(2) + box(4) - 2.5_wp, "μF = "//short_number(mu)//" "// &
-      unit_word("N", lang)//"/"//unit_word("mm", lang), &
-      'class="small"'))
   end subroutine put_polygons
+
+  !> A drawing scale (units per mm) at least `span`: the smallest of 1, 1.2, 1.5, 2, 2.5, 3,
+  !> 4, 5, 6, 8 times a power of ten (the scales a drawing is made at).
+  pure real(wp) function plan_scale(span)
+    real(wp), intent(in) :: span
+    real(wp), parameter :: steps(*) = [1.0_wp, 1.2_wp, 1.5_wp, 2.0_wp, 2.5_wp, 3.0_wp, 4.0_wp, 5.0_wp, 6.0_wp, &
+      8.0_wp, 10.0_wp]
+    real(wp) :: decade
+    integer :: i
+    decade = 10.0_wp**floor(log10(span))
+    plan_scale = 10.0_wp * decade
+    do i = size(steps), 1, -1
+      if (steps(i) * decade >= span * (1.0_wp - 1.0e-12_wp)) plan_scale = steps(i) * decade
+    end do
+  end function plan_scale
 
   !> The running sums of the vectors (tips(:, 1) = 0, tips(:, j + 1) = sum of the first j).
   pure subroutine polygon_tips(vectors, tips)

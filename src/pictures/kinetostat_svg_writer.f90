@@ -102,7 +102,7 @@ contains
     if (table%input_column > 0) y = y + 2.0_wp + chart_h
     if (table%column_index("dT") > 0) y = y + dynamics_block_height
     height = max(page_height, y + margin)
-    if (allocated(table%student_stamp)) height = height + title_block_height + 4.0_wp
+    if (allocated(table%student_stamp)) height = height + title_block_height
 
     call svg_open(out, page_width, height, title//" - "//table%deck, &
       "kinetostat --format svg sheet of "//table%deck//". Hodograph paths (class hodograph, data-force = the "// &
@@ -135,7 +135,7 @@ contains
         call put_vector_panel(out, table, chosen, i, x0, y0, panel_w, panel_h, lang)
       end do
     end if
-    call put_title_block(out, table, lang, page_width, height)
+    call put_title_block(out, table, lang, page_width, height, word("Hodographs and diagrams", lang))
     call svg_close(out)
   end subroutine write_svg
 

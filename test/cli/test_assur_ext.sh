@@ -272,3 +272,24 @@ grep -q '^kinetostat: error: --frame link: only the generic engine (&assur)' "$e
 expect_exit frame-bad-value 1 "$sc" --frame body
 grep -q "^kinetostat: error: --frame must be global or link (got 'body')" "$err" && pass ||
   fail frame-bad-value-message "$(cat "$err")"
+
+# --- joint names (crank_joint, dyad(i)%joints): the sheets' letters and the kinematics columns;
+# a bad name is one line naming deck, line, group and variable
+fb=data/assur_fourbar.nml
+run_ks "$fb" --format csv --kinematics
+head -1 "$out" | grep -q ',x_B,y_B,x_C,y_C,x_D,y_D,x_A,y_A,' && pass || fail joint-names-columns "$(head -1 "$out")"
+run_ks "$fb"
+grep -q '^   JOINTS          =  B (F21), C (F23), D (F30), A (F10)$' "$out" && pass || fail joint-names-echo "$(grep JOINTS "$out")"
+run_ks "$fb" --format plans --at 4
+grep -q '>c</text>' "$out" && pass || fail joint-names-plans "no image c on the plans sheet"
+run_ks "$(deck_with jn_blank "$fb" "s/dyad(1)%joints = 'B', 'C', 'D'/dyad(1)%joints = 'B', '', 'D'/")" --format csv --kinematics
+head -1 "$out" | grep -q ',x_B,y_B,x_J23,y_J23,x_D,' && pass || fail joint-names-blank-default "$(head -1 "$out")"
+expect_input_error joint-names-duplicate \
+  ":1[0-9]: &assur: crank_joint: 'A' names two joints \(also dyad\(1\)%joints\)" \
+  "$(deck_with jn_dup "$fb" "s/dyad(1)%joints = 'B', 'C', 'D'/dyad(1)%joints = 'B', 'C', 'a'/")"
+expect_input_error joint-names-long ':1[0-9]: &assur: crank_joint: longer than 8 characters' \
+  "$(deck_with jn_long "$fb" "s/crank_joint = 'A'/crank_joint = 'ABCDEFGHI'/")"
+expect_input_error joint-names-chars "&assur: dyad\(1\)%joints: a joint's name is a letter followed by letters" \
+  "$(deck_with jn_chars "$fb" "s/dyad(1)%joints = 'B', 'C', 'D'/dyad(1)%joints = 'B', '2C', 'D'/")"
+expect_input_error joint-names-com "&assur: dyad\(1\)%joints: 'S2' is the name of a centre of mass" \
+  "$(deck_with jn_com "$fb" "s/dyad(1)%joints = 'B', 'C', 'D'/dyad(1)%joints = 'B', 'S2', 'D'/")"

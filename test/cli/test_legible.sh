@@ -67,13 +67,31 @@ head -1 "$out" | grep -Eq '^ ДАТА [0-9]{2}\.[0-9]{2}\.[0-9]{4}  ВРЕМЯ [
 run_ks data/sixbar.nml --student Ivanov --group MT-301 --variant 7
 head -1 "$out" | grep -Eq '^ DATE [0-9.]{10}  TIME [0-9:]{5}  NAME Ivanov  GROUP MT-301  VARIANT 7$' \
   && pass || fail legible-student-table-en "$(head -1 "$out")"
+# the title block is ГОСТ 2.104's form 1 (185 x 55 mm): its grid's words in the sheet's
+# language, the student in Разраб./Drawn, group and variant in the organisation field
 for args in "--format svg" "--format svg --at 2" "--format plans --at 2"; do
   # shellcheck disable=SC2086  # args is a word list
   run_ks data/sixbar.nml $args --lang ru --student "Иванов И.И." --group "МТ-301" --variant 7
   cp "$out" "$cli_tmp/student.svg"
-  grep -q '>Студент: Иванов И.И. · Группа: МТ-301 · Вариант: 7<' "$cli_tmp/student.svg" \
+  missing=""
+  for w in Изм. Лист '№ докум.' Подп. Дата Разраб. Пров. Т.контр. Н.контр. Утв. Лит. Масса Масштаб \
+    'Лист 1' 'Листов 1' 'Иванов И.И.' 'группа МТ-301' 'вариант 7'; do
+    grep -q ">$w<" "$cli_tmp/student.svg" || missing="$missing '$w'"
+  done
+  grep -q '<rect x="20.00" y="[0-9.]*" width="185.00" height="55.00"' "$cli_tmp/student.svg" || missing="$missing 185x55-frame"
+  [ -z "$missing" ] \
     && python3 "$svg_check" labels "$cli_tmp/student.svg" >"$cli_tmp/check.out" 2>&1 \
     && python3 "$svg_check" english "$cli_tmp/student.svg" >>"$cli_tmp/check.out" 2>&1 \
-    && pass || fail "legible-student-sheet-$args" "$(head -5 "$cli_tmp/check.out")"
+    && pass || fail "legible-student-sheet-$args" "missing:$missing $(head -5 "$cli_tmp/check.out")"
+  # shellcheck disable=SC2086  # args is a word list
+  run_ks data/sixbar.nml $args --student Ivanov --group MT-301 --variant 7
+  missing=""
+  for w in Rev. Sheet 'Doc. No.' Sign. Date Drawn Checked 'Tech. ctrl' 'Std. ctrl' Approved Lit. Mass Scale \
+    'Sheets 1' Ivanov 'group MT-301' 'variant 7'; do
+    grep -q ">$w<" "$out" || missing="$missing '$w'"
+  done
+  cp "$out" "$cli_tmp/student_en.svg"
+  [ -z "$missing" ] && python3 "$svg_check" labels "$cli_tmp/student_en.svg" >"$cli_tmp/check.out" 2>&1 \
+    && pass || fail "legible-student-sheet-en-$args" "missing:$missing $(head -5 "$cli_tmp/check.out")"
 done
 # without the options nothing changes: the goldens hold (tools/test compares them)

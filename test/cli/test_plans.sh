@@ -2,23 +2,31 @@
 # at three steps, the plans' equations hold, the acceleration images of the centres of mass
 # equal the kinematics columns, every force polygon closes (<= 1e-9 of its largest vector)
 # with the CSV's pair forces in it, and Zhukovsky's lever equals the run's driving effort
-# (relative 1e-9) - tools/plans_check.py; the checks can fail; usage errors.
+# (relative 1e-9); every acceleration component (normal, tangential, Coriolis) against the
+# kinematics columns and every vector equation summing to its image - tools/plans_check.py;
+# the checks can fail; usage errors.
 plans_check="$root/tools/plans_check.py"
 plans_dir="$cli_tmp/plans"
 mkdir -p "$plans_dir"
 
-# DECK:CHECKS - lever and polygons where the table lists every pair force; the legacy PR 3207
-# and PR 3050 tables leave out their massless blocks' and the rod-in-cylinder reactions (no
-# closed polygon to draw), the generic PR 3050 deck draws no driving force, and friction
-# does work in the pairs (the lever of the loads alone is not the driving moment there).
+# DECK:CHECKS - lever, polygons (of the links and of the groups) or groups (the groups' only).
+# The legacy PR 3207 and PR 3050 tables leave out their massless blocks' and the
+# rod-in-cylinder reactions: their links' polygons do not close, their groups' do (those
+# reactions are inside a group). The generic PR 3050 deck draws no driving force (nothing
+# closes, no lever); friction does work in the pairs (the lever of the loads alone is not the
+# driving moment there); the flywheel decks' speed varies over the cycle.
 for spec in assur_fourbar:lever,polygons assur_fourbar_global:lever,polygons assur_sixbar:lever,polygons \
   assur_sixbar_global:lever,polygons assur_slider_crank:lever,polygons assur_pr3207:lever,polygons \
-  sixbar:lever,polygons sixbar_example:lever,polygons pr3207:lever pr3050:lever assur_pr3050: \
-  assur_pr3050_friction: assur_pr3207_friction: assur_sixbar_friction: friction_slider_crank:; do
+  sixbar:lever,polygons sixbar_example:lever,polygons class3:lever,polygons fivebar:lever,polygons \
+  linkage_fourbar:lever,polygons linkage_slider_crank:lever,polygons pr3207:lever,groups pr3050:lever,groups \
+  pr3207_flywheel:groups assur_pr3207_flywheel:polygons friction_fourbar_resist:polygons assur_pr3050: \
+  assur_pr3050_friction: assur_pr3207_friction:polygons assur_sixbar_friction:polygons \
+  friction_slider_crank:polygons; do
   name=${spec%%:*}; checks=${spec#*:}
   flags=""
   case ",$checks," in *,lever,*) flags="$flags --lever" ;; esac
   case ",$checks," in *,polygons,*) flags="$flags --polygons" ;; esac
+  case ",$checks," in *,groups,*) flags="$flags --groups" ;; esac
   run_ks "data/$name.nml" --format csv --kinematics
   cp "$out" "$plans_dir/$name.csv"
   steps=$(($(wc -l <"$out") - 1))
@@ -46,6 +54,31 @@ if cmp -s "$cli_tmp/bad_polygon.json" "$plans_dir/sixbar.1.json"; then
 elif python3 "$plans_check" "$cli_tmp/bad_polygon.json" "$plans_dir/sixbar.csv" --polygons >/dev/null 2>&1; then
   fail plans-polygon-can-fail "a changed pair force was accepted"
 else pass; fi
+
+# ... and an acceleration component off by one part in 1e6 (the first equation's normal one)
+python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); v = d["acceleration_equations"][0]["vectors"][0]
+v["x"] += 1e-6 * abs(v["x"]) + 1e-6; print(json.dumps(d))' "$plans_dir/sixbar.1.json" >"$cli_tmp/bad_component.json"
+python3 "$plans_check" "$cli_tmp/bad_component.json" "$plans_dir/sixbar.csv" >/dev/null 2>&1 \
+  && fail plans-component-can-fail "a wrong acceleration component was accepted" || pass
+# every deck's equations name the components in the course's notation, a_B^n ... a_B^r
+grep -q '"name": "a_B^k", "kind": "k"' "$plans_dir"/pr3207.*.json && pass || fail plans-coriolis "no Coriolis component in PR 3207's plans"
+
+# ... and a group's reaction part moved (F43's tangential part in the six-bar's group 4,5)
+python3 -c 'import json, sys; d = json.load(open(sys.argv[1]))
+v = [v for p in d["force_plans"] for v in p["vectors"] if v["name"] == "F43^τ"][0]
+v["x"] += 1e-6 * abs(v["x"]) + 1e-6; print(json.dumps(d))' "$plans_dir/sixbar.1.json" >"$cli_tmp/bad_group.json"
+python3 "$plans_check" "$cli_tmp/bad_group.json" "$plans_dir/sixbar.csv" --groups >/dev/null 2>&1 \
+  && fail plans-group-can-fail "a moved reaction part was accepted" || pass
+# the six-bar's groups as kinetostatics solves them: the dyads 4,5 and 2,3, then the crank
+grep -o '"group": "[0-9,]*"' "$plans_dir/sixbar.1.json" | tr '\n' ' ' | grep -qx '"group": "4,5" "group": "2,3" "group": "1" ' \
+  && pass || fail plans-sixbar-groups "$(grep -o '"group": "[0-9,]*"' "$plans_dir/sixbar.1.json")"
+
+# PR 3207's ram from the block's point the other way round; PR 3050's cylinder and rod one body
+# of their group (the frame's reaction on the cylinder split along the line to the rod's joint B)
+grep -q '"point": "S5", "link": "5", "from": "D", "slider": "4", "reverse": true' "$plans_dir"/pr3207.*.json \
+  && pass || fail plans-pr3207-ram "$(cat "$plans_dir"/pr3207.*.json | grep -o '"point": "S5"[^[]*' | head -3)"
+grep -q '"group": "1,2,3".*"name": "F14^τ"' "$plans_dir"/pr3050.*.json \
+  && pass || fail plans-pr3050-group "$(cat "$plans_dir"/pr3050.*.json | grep -o '"group": "[^]]*' | head -1)"
 
 # the manual's worked example (T.FTN, phi1 = 66.8 deg): the lever gives M1 = 902.0 N*m
 grep -q '"zhukovsky": {"driver": "M1", "effort": 9.0203548' "$plans_dir/sixbar_example.1.json" \
