@@ -18,6 +18,8 @@
 !> MAX_STEPS if smaller) over one turn of the deck with its flywheel (data/pr3207_flywheel.nml,
 !> data/assur_pr3207_flywheel.nml) against the same steps of the plain deck, solve alone and
 !> CSV end to end, and their ratio.
+!> Last (kind `linkage`, or no kind), the general linkage engine's solve per step against the
+!> dyad engine's (bench_linkage).
 !> Run from the project root (it reads data/*.nml).
 program bench
   !$ use omp_lib, only: omp_set_num_threads, omp_get_num_procs
@@ -113,6 +115,7 @@ program bench
   end do
   call bench_dynamics(out_path)
   call bench_threads(out_path)
+  call bench_linkage(max_steps)
   open (newunit=i, file=out_path, status='old', iostat=j)
   if (j == 0) close (i, status='delete')
 
@@ -282,6 +285,67 @@ contains
     if (allocated(error)) error stop "bench: run from the project root (cannot read the bundled decks)"
     write (dphi, '(es24.17)') 360.0_wp / (n - 1)
     write (count, '(i0)') n
+  !> The general linkage engine against the dyad engine (when no kind or `linkage` is asked
+  !> for): the solve alone (as "kernel") per step, processor microseconds, at min(MAX_STEPS,
+  !> 10^5) steps, of a class-III &linkage deck against a dyad &assur deck of the same size
+  !> (data/class3.nml and data/assur_sixbar.nml: 5 moving links, 7 pairs each), and of the
+  !> &linkage twin of the four-bar against the &assur four-bar (3 links); the ratios (the
+  !> class-III one's goal: at most 5).
+  subroutine bench_linkage(max_steps)
+    !> Largest step count asked for.
+    integer, intent(in) :: max_steps
+    character(*), parameter :: line_fmt = '(2x,a,t54,f9.2,a,f6.2)'
+    character(len=:), allocatable :: arg
+    character(len=32) :: count, dphi
+    real(wp) :: t_class3, t_sixbar, t_twin, t_fourbar
+    logical :: asked
+    integer :: i, length, n
+    asked = .true.
+    do i = 1, command_argument_count()
+      call get_command_argument(i, length=length)
+      allocate (character(len=length) :: arg)
+      call get_command_argument(i, arg)
+      if (verify(arg, "0123456789") /= 0 .or. length == 0) asked = .false.
+      deallocate (arg)
+    end do
+    do i = 1, command_argument_count()
+      call get_command_argument(i, length=length)
+      allocate (character(len=length) :: arg)
+      call get_command_argument(i, arg)
+      if (arg == "linkage") asked = .true.
+      deallocate (arg)
+    end do
+    if (.not. asked) return
+    n = min(max_steps, 100000)
+    write (count, '(i0)') n
+    write (dphi, '(es24.17)') 360.0_wp / n
+    t_class3 = per_step("data/class3.nml", "linkage", "n = "//trim(count)//", drive(1)%step = "//trim(dphi), n)
+    t_sixbar = per_step("data/assur_sixbar.nml", "assur", "dphi = "//trim(dphi)//", n = "//trim(count)// &
+      ", step_values = "//trim(count)//"*1000", n)
+    t_twin = per_step("data/linkage_fourbar.nml", "linkage", "n = "//trim(count)//", drive(1)%step = "//trim(dphi), n)
+    t_fourbar = per_step("data/assur_fourbar.nml", "assur", "dphi = "//trim(dphi)//", n = "//trim(count), n)
+    write (output_unit, '(a,i0,a)') "general linkages against dyads: CPU microseconds per step of the solve (", n, &
+      " steps, as kernel above), ratio:"
+    write (output_unit, line_fmt) "class3.nml (&linkage, III(2,3,4,5), 5 links)", t_class3
+    write (output_unit, line_fmt) "assur_sixbar.nml (&assur, two dyads, 5 links)", t_sixbar, &
+      "   class-III / dyads", t_class3 / t_sixbar
+    write (output_unit, line_fmt) "linkage_fourbar.nml (&linkage, II(2,3), 3 links)", t_twin
+    write (output_unit, line_fmt) "assur_fourbar.nml (&assur, one dyad, 3 links)", t_fourbar, &
+      "   &linkage / &assur", t_twin / t_fourbar
+    flush (output_unit)
+  end subroutine bench_linkage
+
+  !> Microseconds per step of the solve of `deck` (kind `kind`) with `extra` appended to its
+  !> group, which sets its step count to `n`.
+  real(wp) function per_step(deck, kind, extra, n)
+    character(*), intent(in) :: deck, kind, extra
+    integer, intent(in) :: n
+    type(deck_source_t) :: source
+    type(error_t), allocatable :: error
+    character(len=:), allocatable :: text
+    integer :: k, last
+    call load_deck(deck, source, error)
+    if (allocated(error)) error stop "bench: run from the project root (cannot read the bundled decks)"
     last = deck_line_count(source)
     do k = deck_line_count(source), 1, -1
       if (adjustl(deck_line(source, k)) == "/") then
@@ -295,6 +359,9 @@ contains
     end do
     text = text//"  dphi = "//trim(dphi)//", n = "//trim(count)//new_line("a")//"/"//new_line("a")
   end function one_turn_deck
+    text = text//"  "//extra//new_line("a")//"/"//new_line("a")
+    per_step = 1.0e6_wp * solve_seconds(bench_case_t(kind, deck), text, .false.) / n
+  end function per_step
 
   !> Amdahl's law: the speed-up on `cores` cores of a run whose serial fraction is `serial`.
   pure real(wp) function amdahl(serial, cores)

@@ -9,7 +9,8 @@ module test_lapack
   use, intrinsic :: iso_fortran_env, only: int64
   use kinetostat_kinds, only: wp
   use kinetostat_error, only: error_t
-  use kinetostat_lapack, only: solve_dense, singular_by_estimate, solve_by_dgesv, solve_by_port, inverse_norm_bound
+  use kinetostat_lapack, only: solve_dense, singular_by_estimate, solve_by_dgesv, solve_by_port, inverse_norm_bound, &
+    factor_dense, solve_factored, trsm_table
   use test_harness, only: test_counts_t, check_true
   implicit none
   private
@@ -31,7 +32,48 @@ contains
     call bitwise(t, 2)
     call bitwise(t, 5) ! other shapes of dgetrf2's recursion (not solved by the product today)
     call bitwise(t, 8)
+    call with_table(t, 15)
+    call with_table(t, 12)
+    call with_table(t, 6)
   end subroutine run_lapack_tests
+
+  !> factor_dense with trsm_table(n) (as the general linkage factors its Jacobians of order
+  !> 3n) gives solve_dense's verdict and dgesv's factors, pivots and solutions bit for bit.
+  subroutine with_table(t, n)
+    type(test_counts_t), intent(inout) :: t
+    integer, intent(in) :: n
+    real(wp) :: a(n, n), b(n), lu_ref(n, n), lu_own(n, n), x_ref(n), x_own(n), x_dense(n)
+    integer :: ipiv_ref(n), ipiv_own(n), info_ref, table(n, n)
+    type(error_t), allocatable :: err_own, err_dense
+    integer(int64) :: state
+    integer :: i, k, differ, first_bad
+    character(len=200) :: detail
+    state = 3100_int64 + n
+    table = trsm_table(n)
+    differ = 0
+    first_bad = 0
+    do i = 1, system_count
+      call random_system(state, mod(i, 8), a)
+      do k = 1, n
+        b(k) = 2.0_wp * uniform(state) - 1.0_wp
+      end do
+      call solve_by_dgesv(a, b, lu_ref, ipiv_ref, x_ref, info_ref)
+      call factor_dense(a, lu_own, ipiv_own, err_own, table)
+      x_own = b
+      if (.not. allocated(err_own)) call solve_factored(lu_own, ipiv_own, x_own)
+      call solve_dense(a, b, x_dense, err_dense)
+      if (allocated(err_own) .neqv. allocated(err_dense)) then
+        differ = differ + 1
+      else if (info_ref == 0) then
+        if (any(ipiv_ref /= ipiv_own) .or. any(transfer(lu_ref, 0_int64, n * n) /= transfer(lu_own, 0_int64, n * n)) .or. &
+            (.not. allocated(err_own) .and. (any(transfer(x_ref, 0_int64, n) /= transfer(x_own, 0_int64, n)) .or. &
+            any(transfer(x_dense, 0_int64, n) /= transfer(x_own, 0_int64, n))))) differ = differ + 1
+      end if
+      if (differ > 0 .and. first_bad == 0) first_bad = i
+    end do
+    write (detail, '(a,i0,a,i0,a,i0,a)') "n = ", n, ": ", differ, " systems differ (first: system ", first_bad, ")"
+    call check_true(t, "lapack: factor_dense with trsm_table = dgesv and solve_dense bit for bit", differ == 0, trim(detail))
+  end subroutine with_table
 
   !> system_count systems of size n from every family: the port's factors, pivots, info and
   !> solution must be dgesv's bit for bit (signed zeros included).

@@ -3,16 +3,18 @@
 !> drives, sliding pairs on the frame and on moving links, stroke drives) against central
 !> finite differences of the positions; the
 !> reactions' self-checks (every link's equilibrium, the power balance of every drive, the
-!> global against the group-by-group solve); the branch kept through a full turn; a dead
+!> Lagrange multipliers against the group method's free bodies, and a wrong mass in either
+!> caught); the branch kept through a full turn; a dead
 !> position of the class-III group found (exit 3 naming the group).
 module test_linkage
   use kinetostat_kinds, only: wp
   use kinetostat_text, only: int_str, real_str
   use kinetostat_error, only: error_t, exit_geometry, exit_input
   use kinetostat_deck, only: deck_source_t, load_deck, deck_source_from_text
-  use kinetostat_linkage, only: linkage_step_t, linkage_reference_pose, linkage_assemble, linkage_motion
+  use kinetostat_linkage, only: linkage_t, linkage_step_t, linkage_reference_pose, linkage_assemble, linkage_motion, &
+    linkage_work_t, linkage_free_body, linkage_reaction_gap, linkage_statics
   use kinetostat_linkage_structure, only: structure_formula
-  use kinetostat_linkage_deck, only: linkage_deck_t, read_linkage_deck, linkage_drive_values
+  use kinetostat_linkage_deck, only: linkage_deck_t, read_linkage_deck, linkage_drive_values, linkage_load_value
   use kinetostat_linkage_layout, only: linkage_solve_steps
   use test_harness, only: test_counts_t, check_close, check_true
   implicit none
@@ -27,6 +29,7 @@ contains
     call test_wrong_structures(t)
     call test_finite_differences(t)
     call test_reactions(t)
+    call test_second_opinion(t)
     call test_full_turn(t)
     call test_dead_position(t)
   end subroutine run_linkage_tests
@@ -66,6 +69,11 @@ contains
     call check_true(t, "linkage-class3-order", deck%mech%units(2)%class == 3 .and. deck%mech%units(2)%order == 3, &
       "expected class 3, order 3; got class "//int_str(deck%mech%units(2)%class)//", order "// &
       int_str(deck%mech%units(2)%order))
+    call bundled("docs/examples/class3_order4.nml", deck, t)
+    call check_true(t, "linkage-class3-order4", structure_formula(deck%mech) == "I(0,1) -> III(2,3,4,5,6,7)" .and. &
+      deck%mech%units(2)%class == 3 .and. deck%mech%units(2)%order == 4, &
+      "expected I(0,1) -> III(2,3,4,5,6,7), class 3, order 4; got "//structure_formula(deck%mech)//", class "// &
+      int_str(deck%mech%units(2)%class)//", order "//int_str(deck%mech%units(2)%order))
   end subroutine test_structure
 
   !> The four-bar deck text with extra lines (links, pairs, drives) appended before the end.
@@ -132,6 +140,7 @@ contains
       type(linkage_step_t), allocatable :: steps(:)
       type(error_t), allocatable :: error
       real(wp), allocatable :: q(:), dq(:), dv(:), da(:), qp(:), qm(:), qd(:), qdd(:), fd1(:), fd2(:), from(:)
+      type(linkage_work_t) :: work
       real(wp) :: h, tol1, tol2
       integer :: i, j, k, nd
       call bundled(path, deck, t)
@@ -150,12 +159,12 @@ contains
           da(j) = 0.7_wp * real((-1)**j, wp) * maxval(abs(dv))
         end do
         allocate (qd(size(q)), qdd(size(q)))
-        call linkage_motion(deck%mech, steps(k)%q, dv, da, qd, qdd, error)
+        call linkage_motion(deck%mech, steps(k)%q, dv, da, qd, qdd, work, error)
         h = 2.0e-4_wp / maxval(abs(dv))
         qp = steps(k)%q
         qm = steps(k)%q
-        call linkage_assemble(deck%mech, dq, dq + dv * h + 0.5_wp * da * h**2, qp, "fd+", error)
-        if (.not. allocated(error)) call linkage_assemble(deck%mech, dq, dq - dv * h + 0.5_wp * da * h**2, qm, "fd-", error)
+        call linkage_assemble(deck%mech, dq, dq + dv * h + 0.5_wp * da * h**2, qp, work, error)
+        if (.not. allocated(error)) call linkage_assemble(deck%mech, dq, dq - dv * h + 0.5_wp * da * h**2, qm, work, error)
         call check_true(t, "linkage-fd-assemble-"//path, .not. allocated(error), "assembly failed")
         if (allocated(error)) return
         fd1 = (qp - qm) / (2.0_wp * h)
@@ -172,12 +181,13 @@ contains
   end subroutine test_finite_differences
 
   !> Every step of every bundled &linkage deck: equilibrium residual and power mismatch of
-  !> every drive <= 1e-9, the global and group-by-group reactions within 1e-12 of the step's
+  !> every drive <= 1e-9, the Lagrange and the group method's reactions within 1e-12 of the step's
   !> largest reaction.
   subroutine test_reactions(t)
     type(test_counts_t), intent(inout) :: t
-    character(len=*), parameter :: paths(5) = [character(len=32) :: "data/class3.nml", "data/fivebar.nml", &
-      "data/linkage_fourbar.nml", "data/linkage_slider_crank.nml", "docs/examples/excavator.nml"]
+    character(len=*), parameter :: paths(6) = [character(len=32) :: "data/class3.nml", "data/fivebar.nml", &
+      "data/linkage_fourbar.nml", "data/linkage_slider_crank.nml", "docs/examples/excavator.nml", &
+      "docs/examples/class3_order4.nml"]
     type(linkage_deck_t) :: deck
     type(linkage_step_t), allocatable :: steps(:)
     type(error_t), allocatable :: error
@@ -197,9 +207,113 @@ contains
       call check_true(t, "linkage-power-"//trim(paths(i)), maxval(steps%mismatch) <= 1.0e-9_wp, &
         "max power mismatch "//real_str(maxval(steps%mismatch)))
       call check_true(t, "linkage-two-solvers-"//trim(paths(i)), maxval(steps%solver_gap) <= 1.0e-12_wp, &
-        "max gap of global and group-by-group reactions "//real_str(maxval(steps%solver_gap)))
+        "max gap of the Lagrange and the group method's reactions "//real_str(maxval(steps%solver_gap))//" > 1e-12")
     end do
   end subroutine test_reactions
+
+  !> The second opinion is independent and can fail: on every bundled &linkage deck at every
+  !> step the group method's free bodies give the Lagrange form's reactions within 1e-9 of
+  !> the step's largest reaction; with one link's mass 1 % wrong in the group method only
+  !> (each link with a mass in turn), or in the Lagrange form only (the heaviest link), the
+  !> gap exceeds 1e-9 at some step.
+  subroutine test_second_opinion(t)
+    type(test_counts_t), intent(inout) :: t
+    character(len=*), parameter :: paths(6) = [character(len=32) :: "data/class3.nml", "data/fivebar.nml", &
+      "data/linkage_fourbar.nml", "data/linkage_slider_crank.nml", "docs/examples/excavator.nml", &
+      "docs/examples/class3_order4.nml"]
+    type(linkage_deck_t) :: deck
+    type(linkage_t) :: wrong
+    type(linkage_step_t), allocatable :: steps(:)
+    type(error_t), allocatable :: error
+    real(wp), allocatable :: q(:), from(:)
+    real(wp) :: gap
+    integer :: i, j, heavy
+    do i = 1, size(paths)
+      call bundled(trim(paths(i)), deck, t)
+      q = linkage_reference_pose(deck%mech)
+      from = deck%mech%drives%q_ref
+      if (allocated(steps)) deallocate (steps)
+      allocate (steps(deck%n))
+      call linkage_solve_steps(deck, trim(paths(i)), 1, deck%n, q, from, steps, error)
+      if (allocated(error)) then
+        call check_true(t, "linkage-second-opinion-solve-"//trim(paths(i)), .false., error%message)
+        cycle
+      end if
+      gap = max_gap(deck, deck%mech, steps)
+      call check_true(t, "linkage-second-opinion-"//trim(paths(i)), gap <= 1.0e-9_wp, &
+        "max gap of the two formulations "//real_str(gap)//" > 1e-9")
+      ! a wrong mass in the group method
+      do j = 1, size(deck%mech%links)
+        if (deck%mech%links(j)%m <= 0.0_wp) cycle
+        wrong = deck%mech
+        wrong%links(j)%m = 1.01_wp * wrong%links(j)%m
+        gap = max_gap(deck, wrong, steps)
+        call check_true(t, "linkage-second-opinion-catches-mass-"//trim(paths(i))//"-link"//int_str(deck%mech%links(j)%id), &
+          gap > 1.0e-9_wp, "a 1 % wrong mass in the group method gives a gap of only "//real_str(gap))
+      end do
+      ! a wrong mass in the Lagrange form: its steps again, the group method with the right one
+      heavy = maxloc(deck%mech%links%m, 1)
+      wrong = deck%mech
+      wrong%links(heavy)%m = 1.01_wp * wrong%links(heavy)%m
+      call restatics(deck, wrong, steps)
+      gap = max_gap(deck, deck%mech, steps)
+      call check_true(t, "linkage-second-opinion-catches-lagrange-mass-"//trim(paths(i)), gap > 1.0e-9_wp, &
+        "a 1 % wrong mass in the Lagrange form gives a gap of only "//real_str(gap))
+    end do
+  contains
+    !> Largest gap over the steps of their reactions and the group method's with linkage `mech`.
+    real(wp) function max_gap(deck, mech, steps) result(gap)
+      type(linkage_deck_t), intent(in) :: deck
+      type(linkage_t), intent(in) :: mech
+      type(linkage_step_t), intent(in) :: steps(:)
+      type(linkage_work_t) :: work
+      type(error_t), allocatable :: error
+      real(wp), allocatable :: fval(:), mval(:), f(:, :), normal(:), couple(:), effort(:)
+      integer :: k
+      allocate (f(2, size(mech%pairs)), normal(size(mech%pairs)), couple(size(mech%pairs)), &
+                effort(size(mech%drives)))
+      gap = 0.0_wp
+      do k = 1, size(steps)
+        call load_values(deck, k, fval, mval)
+        call linkage_free_body(mech, fval, mval, steps(k), work, f, normal, couple, effort, error)
+        if (allocated(error)) then
+          gap = huge(1.0_wp)
+          return
+        end if
+        gap = max(gap, linkage_reaction_gap(mech, steps(k), f, normal, couple, effort))
+      end do
+    end function max_gap
+    !> The steps' reactions again (the Lagrange form) with linkage `mech`.
+    subroutine restatics(deck, mech, steps)
+      type(linkage_deck_t), intent(in) :: deck
+      type(linkage_t), intent(in) :: mech
+      type(linkage_step_t), intent(inout) :: steps(:)
+      type(linkage_work_t) :: work
+      type(error_t), allocatable :: error
+      real(wp), allocatable :: fval(:), mval(:)
+      integer :: k
+      do k = 1, size(steps)
+        call load_values(deck, k, fval, mval)
+        deallocate (steps(k)%f, steps(k)%normal, steps(k)%couple, steps(k)%effort)
+        call linkage_statics(mech, fval, mval, steps(k), work, error)
+        if (allocated(error)) return
+      end do
+    end subroutine restatics
+    !> The force magnitudes and moments of step k.
+    subroutine load_values(deck, k, fval, mval)
+      type(linkage_deck_t), intent(in) :: deck
+      integer, intent(in) :: k
+      real(wp), allocatable, intent(out) :: fval(:), mval(:)
+      integer :: m
+      allocate (fval(size(deck%force_load)), mval(size(deck%moment_load)))
+      do m = 1, size(fval)
+        fval(m) = linkage_load_value(deck, deck%force_load(m), k)
+      end do
+      do m = 1, size(mval)
+        mval(m) = linkage_load_value(deck, deck%moment_load(m), k)
+      end do
+    end subroutine load_values
+  end subroutine test_second_opinion
 
   !> The class-III deck turns its crank once (37 steps of 10 deg): the last step's poses and
   !> forces equal the first's (the branch of the reference position is kept), 1e-9.

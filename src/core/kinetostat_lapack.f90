@@ -22,7 +22,8 @@ module kinetostat_lapack
   use kinetostat_error, only: error_t, fatal_error, exit_geometry
   implicit none
   private
-  public :: solve_dense, rcond_threshold, singular_by_estimate, solve_by_dgesv, solve_by_port, inverse_norm_bound
+  public :: solve_dense, factor_dense, solve_factored, trsm_table
+  public :: rcond_threshold, singular_by_estimate, solve_by_dgesv, solve_by_port, inverse_norm_bound
 
   !> Margin of the cheap test: dgecon is skipped only when the bound puts rcond at least this
   !> many times above the threshold.
@@ -104,15 +105,74 @@ contains
     integer, intent(out) :: ipiv(:)
     type(error_t), allocatable, intent(out) :: error
     real(wp), intent(out), optional :: rcond
+    x = 0.0_wp
+    call factor_in(a, lu, ipiv, error, rcond)
+    if (allocated(error)) return
+    x = b
+    call lu_solve(lu, ipiv, x)
+  end subroutine solve_in
+
+  !> solve_dense's factorisation alone, for several right-hand sides of one matrix: the
+  !> factors `lu` and pivots `ipiv` of `a` (caller's workspace, n x n and n), with the same
+  !> singular-position verdict; then solve_factored for each right-hand side gives bit for bit
+  !> what solve_dense gives.
+  pure subroutine factor_dense(a, lu, ipiv, error, trsm)
+    !> Coefficient matrix (n x n), unchanged.
+    real(wp), intent(in) :: a(:, :)
+    !> Its LU factors (n x n).
+    real(wp), intent(out) :: lu(:, :)
+    !> Row interchanges (n).
+    integer, intent(out) :: ipiv(:)
+    !> Set when the matrix is singular or its reciprocal condition is below `rcond_threshold`.
+    type(error_t), allocatable, intent(out) :: error
+    !> trsm_table(n), for a caller that factors many matrices of order n (the same factors,
+    !> without working out dtrsm's rows at every zero).
+    integer, intent(in), optional :: trsm(:, :)
+    call factor_in(a, lu, ipiv, error, trsm=trsm)
+  end subroutine factor_dense
+
+  !> trsm_last(n, j, k) of every pair of columns j < k of an n x n factorisation (entry (j, k);
+  !> the rest 0): factor_dense's optional table.
+  pure function trsm_table(n) result(table)
+    !> Order of the matrices.
+    integer, intent(in) :: n
+    integer :: table(n, n)
+    integer :: j, k
+    table = 0
+    do k = 2, n
+      do j = 1, k - 1
+        table(j, k) = trsm_last(n, j, k)
+      end do
+    end do
+  end function trsm_table
+
+  !> Solves with factor_dense's factors: `x` (the right-hand side) becomes the solution.
+  pure subroutine solve_factored(lu, ipiv, x)
+    !> Factors from factor_dense.
+    real(wp), intent(in) :: lu(:, :)
+    !> Row interchanges from factor_dense.
+    integer, intent(in) :: ipiv(:)
+    !> Right-hand side in, solution out.
+    real(wp), intent(inout) :: x(:)
+    call lu_solve(lu, ipiv, x)
+  end subroutine solve_factored
+
+  !> The factorisation and the singular-position test of solve_in.
+  pure subroutine factor_in(a, lu, ipiv, error, rcond, trsm)
+    real(wp), intent(in) :: a(:, :)
+    real(wp), intent(out) :: lu(:, :)
+    integer, intent(out) :: ipiv(:)
+    type(error_t), allocatable, intent(out) :: error
+    real(wp), intent(out), optional :: rcond
+    integer, intent(in), optional :: trsm(:, :)
     real(wp) :: anorm, rc, bound
     integer :: info
     logical :: settled, finite
 
-    x = 0.0_wp
     if (present(rcond)) rcond = 0.0_wp
     lu = a
     anorm = maxval(sum(abs(a), dim=1))
-    call lu_factor(lu, ipiv, info)
+    call lu_factor(lu, ipiv, info, trsm)
     if (info > 0) then
       call fatal_error(error, exit_geometry, "singular system (zero pivot)")
       return
@@ -130,9 +190,7 @@ contains
         return
       end if
     end if
-    x = b
-    call lu_solve(lu, ipiv, x)
-  end subroutine solve_in
+  end subroutine factor_in
 
   !> dgetrf2's LU factorisation with partial pivoting of the square `a`: L (unit diagonal)
   !> below and U on and above the diagonal; `info` > 0: U(info, info) is exactly zero. The
@@ -143,13 +201,15 @@ contains
   !> dtrsm makes, and dtrsm skips an update whose u(k,j) is zero (which can turn -0 into +0)
   !> while dgemm does not: trsm_last gives the rows of dtrsm's updates, counted after the
   !> pivots of its node's left part (all pivots before column j are, here).
-  pure subroutine lu_factor(a, ipiv, info)
+  pure subroutine lu_factor(a, ipiv, info, trsm)
     !> Matrix, overwritten by its factors.
     real(wp), intent(inout) :: a(:, :)
     !> Row interchanges: row k was swapped with row ipiv(k).
     integer, intent(out) :: ipiv(:)
     !> 0, or the first zero pivot.
     integer, intent(out) :: info
+    !> trsm_table(n), if the caller keeps it.
+    integer, intent(in), optional :: trsm(:, :)
     real(wp) :: temp, amax, u
     integer :: n, i, j, k, p, last
     n = size(a, 1)
@@ -160,7 +220,13 @@ contains
       do j = 1, k - 1
         u = a(j, k)
         last = j
-        if (u == 0.0_wp) last = trsm_last(n, j, k)
+        if (u == 0.0_wp) then
+          if (present(trsm)) then
+            last = trsm(j, k)
+          else
+            last = trsm_last(n, j, k)
+          end if
+        end if
         do i = last + 1, n
           a(i, k) = a(i, k) - u * a(i, j)
         end do

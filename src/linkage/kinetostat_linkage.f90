@@ -4,9 +4,15 @@
 !> guide), each drive one (the relative angle of a turning pair, the stroke of a sliding
 !> pair). With W = 3n - 2p5 equal to the number of drives the system is square: positions by
 !> Newton's method from the previous step, velocities and accelerations by linear solves with
-!> the same Jacobian J; the reactions solve J^T lambda = -Q (Q: the applied, gravity and
-!> inertia loads as generalised forces), once as one global system and once unit by unit in
-!> the order of the structural analysis (the course's group method), as the second opinion.
+!> the same Jacobian J (factored once per pose: its factors serve the velocities, the
+!> accelerations, the velocity analogues of the self-check and the next step's predictor,
+!> kept with the poses they belong to in a `linkage_work_t`). The reactions twice, by two
+!> formulations that share no equation: the Lagrange multipliers of the constraints, J^T
+!> lambda = -Q (Q: the applied, gravity and inertia loads as generalised forces about each
+!> link's reference point), one global system; and, as the self-check's second opinion, the
+!> course's group method: each unit's links as free bodies (the pair forces at the joints as
+!> unknowns, Newton-Euler about each centre of mass), the last group first, the input units
+!> last, each with the forces of the groups solved before.
 !> Every loop is kept scalar (`!GCC$ novector`): the vector cos, sin and hypot of libmvec may
 !> differ from the scalar ones in the last bit, and the self-check figures (roundoff) are
 !> printed.
@@ -14,17 +20,17 @@ module kinetostat_linkage
   use kinetostat_kinds, only: wp, pi
   use kinetostat_error, only: error_t, fatal_error, exit_geometry
   use kinetostat_text, only: int_str
-  use kinetostat_lapack, only: solve_dense
+  use kinetostat_lapack, only: solve_dense, factor_dense, solve_factored, trsm_table
   use kinetostat_vec2, only: rotate, perp, cross, magnitude
   use kinetostat_selfcheck, only: link_balance_t, balance_add_force, balance_add_couple, equilibrium_residual, &
     power_mismatch
   implicit none
   private
   public :: linkage_t, linkage_link_t, linkage_pair_t, linkage_drive_t, linkage_force_t, linkage_unit_t
-  public :: linkage_step_t, pair_r, pair_p
+  public :: linkage_step_t, linkage_work_t, pair_r, pair_p
   public :: linkage_rows, pair_row, drive_row, point_position, link_point_state
   public :: linkage_assemble, linkage_motion, linkage_statics, linkage_reference_pose, linkage_worst_unit
-  public :: linkage_velocity_analogues
+  public :: linkage_velocity_analogues, linkage_free_body, linkage_reaction_gap
 
   !> Pair kind: turning (revolute) pair.
   integer, parameter :: pair_r = 1
@@ -149,12 +155,123 @@ module kinetostat_linkage
     real(wp) :: residual = 0.0_wp
     !> Largest power-balance mismatch of the drives' efforts.
     real(wp) :: mismatch = 0.0_wp
-    !> Largest difference of the global and the group-by-group reactions, relative to the
+    !> Largest difference of the Lagrange and the group method's reactions, relative to the
     !> step's largest reaction.
     real(wp) :: solver_gap = 0.0_wp
   end type linkage_step_t
 
+  !> The workspace of a run of steps (no allocation per step): the Jacobian J of the last
+  !> poses it was evaluated at, its LU factors and the velocity analogues from them. One
+  !> workspace per linkage: J is kept by the poses it belongs to, not by the linkage.
+  type :: linkage_work_t
+    !> Constraints (rows) and the Jacobian (rows x 3n) at the poses q_jac.
+    real(wp), allocatable :: phi(:), jac(:, :)
+    !> The poses of jac.
+    real(wp), allocatable :: q_jac(:)
+    !> LU factors of jac and their row interchanges (valid when `factored`).
+    real(wp), allocatable :: lu(:, :)
+    integer, allocatable :: ipiv(:)
+    !> Velocity analogues at q_jac (3n x drives; valid when `factored`).
+    real(wp), allocatable :: v(:, :)
+    !> J^T, its factors and row interchanges (the reactions).
+    real(wp), allocatable :: jt(:, :), lut(:, :)
+    integer, allocatable :: ipivt(:)
+    !> A Newton correction or right-hand side (rows).
+    real(wp), allocatable :: dx(:)
+    !> dtrsm's rows of a factorisation of order 3n (kinetostat_lapack's trsm_table).
+    integer, allocatable :: trsm(:, :)
+    !> Drive values 0 (J does not depend on them); zeros of the poses' size.
+    real(wp), allocatable :: dq0(:), zero_q(:)
+    !> The group method: its system (at most 3n x 3n), factors, row interchanges and
+    !> right-hand side.
+    real(wp), allocatable :: fa(:, :), flu(:, :), fb(:)
+    integer, allocatable :: fipiv(:)
+    !> The group method: each link's own loads (force, moment about its centre of mass: 3 x
+    !> n) and centre of mass (2 x n).
+    real(wp), allocatable :: load(:, :), cm(:, :)
+    !> The group method: each link's place in the unit being solved (0: not in it).
+    integer, allocatable :: local(:)
+    !> The group method: the pairs and drives whose reactions are known.
+    logical, allocatable :: pair_known(:), drive_known(:)
+    !> The group method's reactions (as linkage_step_t's f, normal, couple, effort).
+    real(wp), allocatable :: f2(:, :), normal2(:), couple2(:), effort2(:)
+    !> The generalised loads and the multipliers (rows).
+    real(wp), allocatable :: gen(:), lam(:)
+    !> Each link's balance (the self-check).
+    type(link_balance_t), allocatable :: bal(:)
+    !> cos and sin of each link's turn (2 x 0:n, column 0 the frame's) in the poses of the
+    !> routine that set them last.
+    real(wp), allocatable :: cs(:, :)
+    !> jac holds J(q_jac); lu and v hold its factors and analogues.
+    logical :: has_jac = .false., factored = .false.
+  end type linkage_work_t
+
 contains
+
+  !> Allocates the workspace for `mech` (once).
+  pure subroutine work_ready(mech, work)
+    !> The linkage.
+    type(linkage_t), intent(in) :: mech
+    !> The workspace, allocated for it.
+    type(linkage_work_t), intent(inout) :: work
+    integer :: nr
+    nr = linkage_rows(mech)
+    if (allocated(work%jac)) then
+      if (size(work%jac, 1) == nr .and. size(work%v, 2) == size(mech%drives) .and. &
+          size(work%f2, 2) == size(mech%pairs)) return
+      deallocate (work%phi, work%jac, work%q_jac, work%lu, work%ipiv, work%v, work%jt, work%lut, work%ipivt, work%dx, &
+                  work%dq0, work%zero_q, work%trsm)
+      deallocate (work%fa, work%flu, work%fb, work%fipiv, work%load, work%cm, work%local, work%pair_known, &
+                  work%drive_known, work%f2, work%normal2, work%couple2, work%effort2, work%gen, work%lam, work%bal, work%cs)
+    end if
+    allocate (work%fa(nr, nr), work%flu(nr, nr), work%fb(nr), work%fipiv(nr), work%load(3, size(mech%links)), &
+              work%cm(2, size(mech%links)), work%local(size(mech%links)), work%pair_known(size(mech%pairs)), &
+              work%drive_known(size(mech%drives)), work%f2(2, size(mech%pairs)), work%normal2(size(mech%pairs)), &
+              work%couple2(size(mech%pairs)), work%effort2(size(mech%drives)), work%gen(nr), work%lam(nr), &
+              work%bal(size(mech%links)), work%cs(2, 0:size(mech%links)))
+    allocate (work%phi(nr), work%jac(nr, nr), work%q_jac(nr), work%lu(nr, nr), work%ipiv(nr), &
+              work%v(nr, size(mech%drives)), work%jt(nr, nr), work%lut(nr, nr), work%ipivt(nr), work%dx(nr))
+    allocate (work%dq0(size(mech%drives)), work%zero_q(nr), source=0.0_wp)
+    work%trsm = trsm_table(nr)
+    work%has_jac = .false.
+    work%factored = .false.
+  end subroutine work_ready
+
+  !> J at poses q in `work` (evaluated unless it holds them), factored, with the velocity
+  !> analogues (column d: dq/d(drive d), the other drives held). An error: J is singular.
+  pure subroutine work_factored(mech, q, work, error)
+    !> The linkage.
+    type(linkage_t), intent(in) :: mech
+    !> Poses.
+    real(wp), intent(in) :: q(:)
+    !> The workspace: J, its factors and analogues at q.
+    type(linkage_work_t), intent(inout) :: work
+    !> Set when J is singular or ill-conditioned (factor_dense's verdict).
+    type(error_t), allocatable, intent(out) :: error
+    integer :: d
+    call work_ready(mech, work)
+    if (work%has_jac) then
+      ! (the factors of the same poses are reused)
+      if (any(work%q_jac /= q)) work%has_jac = .false.
+    end if
+    if (.not. work%has_jac) then
+      ! J does not depend on the drive values (they enter the constraints only)
+      call constraints(mech, q, work%dq0, work%phi, work%jac, work%cs)
+      work%q_jac(:) = q
+      work%has_jac = .true.
+      work%factored = .false.
+    end if
+    if (work%factored) return
+    call factor_dense(work%jac, work%lu, work%ipiv, error, work%trsm)
+    if (allocated(error)) return
+    !GCC$ novector
+    do d = 1, size(mech%drives)
+      work%v(:, d) = 0.0_wp
+      work%v(drive_row(mech, d), d) = 1.0_wp
+      call solve_factored(work%lu, work%ipiv, work%v(:, d))
+    end do
+    work%factored = .true.
+  end subroutine work_factored
 
   !> Number of constraint rows (2 per pair, 1 per drive).
   pure integer function linkage_rows(mech)
@@ -233,6 +350,92 @@ contains
     a = qdd(3 * i - 2:3 * i - 1) + qdd(3 * i) * perp(r) - qd(3 * i)**2 * r
   end subroutine link_point_state
 
+  !> cos and sin of every link's turn in poses q (column 0: the frame's, of a turn 0): with
+  !> `turned`, rotate's arithmetic without a cos and a sin per call.
+  pure subroutine set_turns(q, cs)
+    !> Poses (3n).
+    real(wp), intent(in) :: q(:)
+    !> cos and sin of each link's turn (2 x 0:n).
+    real(wp), intent(out) :: cs(:, 0:)
+    integer :: i
+    cs(1, 0) = cos(0.0_wp)
+    cs(2, 0) = sin(0.0_wp)
+    !GCC$ novector
+    do i = 1, size(q) / 3
+      cs(1, i) = cos(q(3 * i))
+      cs(2, i) = sin(q(3 * i))
+    end do
+  end subroutine set_turns
+
+  !> `v` turned by link i's turn (0: the frame) from set_turns: rotate(v, turn) bit for bit.
+  pure function turned(cs, i, v) result(w)
+    !> Turns from set_turns.
+    real(wp), intent(in) :: cs(:, 0:)
+    !> Link index (0: frame).
+    integer, intent(in) :: i
+    !> Vector to turn.
+    real(wp), intent(in) :: v(2)
+    real(wp) :: w(2)
+    w = [cs(1, i) * v(1) - cs(2, i) * v(2), cs(2, i) * v(1) + cs(1, i) * v(2)]
+  end function turned
+
+  !> point_position with the turns of set_turns.
+  pure function position_cs(mech, q, cs, i, p) result(x)
+    !> The linkage.
+    type(linkage_t), intent(in) :: mech
+    !> Poses and their turns (set_turns).
+    real(wp), intent(in) :: q(:), cs(:, 0:)
+    !> Link index (0: frame).
+    integer, intent(in) :: i
+    !> The point at the reference position, m.
+    real(wp), intent(in) :: p(2)
+    real(wp) :: x(2)
+    if (i == 0) then
+      x = p
+    else
+      x = q(3 * i - 2:3 * i - 1) + turned(cs, i, p - mech%links(i)%c)
+    end if
+  end function position_cs
+
+  !> Lever of point p of link i from its reference point (0 for the frame), m, with the turns
+  !> of set_turns.
+  pure function lever_cs(mech, cs, i, p) result(r)
+    !> The linkage.
+    type(linkage_t), intent(in) :: mech
+    !> Turns (set_turns).
+    real(wp), intent(in) :: cs(:, 0:)
+    !> Link index (0: frame).
+    integer, intent(in) :: i
+    !> The point at the reference position, m.
+    real(wp), intent(in) :: p(2)
+    real(wp) :: r(2)
+    r = 0.0_wp
+    if (i > 0) r = turned(cs, i, p - mech%links(i)%c)
+  end function lever_cs
+
+  !> link_point_state with the turns of set_turns.
+  pure subroutine state_cs(mech, q, qd, qdd, cs, i, p, x, v, a)
+    !> The linkage.
+    type(linkage_t), intent(in) :: mech
+    !> Poses, their derivatives and turns (set_turns).
+    real(wp), intent(in) :: q(:), qd(:), qdd(:), cs(:, 0:)
+    !> Link index (0: frame).
+    integer, intent(in) :: i
+    !> The point at the reference position, m.
+    real(wp), intent(in) :: p(2)
+    !> Position (m), velocity (m/s), acceleration (m/s^2).
+    real(wp), intent(out) :: x(2), v(2), a(2)
+    real(wp) :: r(2)
+    if (i == 0) then
+      x = p; v = 0.0_wp; a = 0.0_wp
+      return
+    end if
+    r = turned(cs, i, p - mech%links(i)%c)
+    x = q(3 * i - 2:3 * i - 1) + r
+    v = qd(3 * i - 2:3 * i - 1) + qd(3 * i) * perp(r)
+    a = qdd(3 * i - 2:3 * i - 1) + qdd(3 * i) * perp(r) - qd(3 * i)**2 * r
+  end subroutine state_cs
+
   !> Angle of link i (0: frame) in pose q, rad.
   pure real(wp) function turn_of(q, i)
     real(wp), intent(in) :: q(:)
@@ -250,26 +453,29 @@ contains
   end subroutine put_j
 
   !> Constraints phi(q) for drive values `dq` and their Jacobian J (rows x 3n).
-  pure subroutine constraints(mech, q, dq, phi, jac)
+  pure subroutine constraints(mech, q, dq, phi, jac, cs)
     type(linkage_t), intent(in) :: mech
     real(wp), intent(in) :: q(:)
     !> Drive values, rad or m.
     real(wp), intent(in) :: dq(:)
     real(wp), intent(out) :: phi(:)
     real(wp), intent(out) :: jac(:, :)
+    !> Scratch: the turns of q (set_turns).
+    real(wp), intent(out) :: cs(:, 0:)
     real(wp) :: ra(2), rb(2), delta(2), n(2), u(2)
     integer :: k, r, a, b, blk, gd, d
     phi = 0.0_wp
     jac = 0.0_wp
+    call set_turns(q, cs)
     !GCC$ novector
     do k = 1, size(mech%pairs)
       associate (pr => mech%pairs(k))
         r = pair_row(k)
         if (pr%kind == pair_r) then
           a = pr%a; b = pr%b
-          ra = lever(mech, q, a, pr%at)
-          rb = lever(mech, q, b, pr%at)
-          phi(r:r + 1) = point_position(mech, q, a, pr%at) - point_position(mech, q, b, pr%at)
+          ra = lever_cs(mech, cs, a, pr%at)
+          rb = lever_cs(mech, cs, b, pr%at)
+          phi(r:r + 1) = position_cs(mech, q, cs, a, pr%at) - position_cs(mech, q, cs, b, pr%at)
           call put_j(jac, r, a, [1.0_wp, 0.0_wp, -ra(2)])
           call put_j(jac, r + 1, a, [0.0_wp, 1.0_wp, ra(1)])
           call put_j(jac, r, b, [-1.0_wp, 0.0_wp, rb(2)])
@@ -280,11 +486,11 @@ contains
           phi(r) = turn_of(q, blk) - turn_of(q, gd)
           call put_j(jac, r, blk, [0.0_wp, 0.0_wp, 1.0_wp])
           call put_j(jac, r, gd, [0.0_wp, 0.0_wp, -1.0_wp])
-          u = rotate(pr%u, turn_of(q, gd))
+          u = turned(cs, gd, pr%u)
           n = perp(u)
-          delta = point_position(mech, q, blk, pr%at) - point_position(mech, q, gd, pr%at)
+          delta = position_cs(mech, q, cs, blk, pr%at) - position_cs(mech, q, cs, gd, pr%at)
           phi(r + 1) = dot_product(n, delta)
-          call slide_row(jac, r + 1, n, blk, gd, lever(mech, q, blk, pr%at), lever(mech, q, gd, pr%at), delta)
+          call slide_row(jac, r + 1, n, blk, gd, lever_cs(mech, cs, blk, pr%at), lever_cs(mech, cs, gd, pr%at), delta)
         end if
       end associate
     end do
@@ -299,10 +505,10 @@ contains
         else
           gd = pr%guide
           blk = pr%a + pr%b - gd
-          u = rotate(pr%u, turn_of(q, gd))
-          delta = point_position(mech, q, blk, pr%at) - point_position(mech, q, gd, pr%at)
+          u = turned(cs, gd, pr%u)
+          delta = position_cs(mech, q, cs, blk, pr%at) - position_cs(mech, q, cs, gd, pr%at)
           phi(r) = dot_product(u, delta) - (dq(d) - mech%drives(d)%q_ref)
-          call slide_row(jac, r, u, blk, gd, lever(mech, q, blk, pr%at), lever(mech, q, gd, pr%at), delta)
+          call slide_row(jac, r, u, blk, gd, lever_cs(mech, cs, blk, pr%at), lever_cs(mech, cs, gd, pr%at), delta)
         end if
       end associate
     end do
@@ -317,37 +523,32 @@ contains
     call put_j(jac, r, gd, [-w(1), -w(2), dot_product(perp(w), delta) - dot_product(w, perp(rgd))])
   end subroutine slide_row
 
-  !> Lever of point p of link i from its reference point in pose q (0 for the frame), m.
-  pure function lever(mech, q, i, p) result(r)
-    type(linkage_t), intent(in) :: mech
-    real(wp), intent(in) :: q(:)
-    integer, intent(in) :: i
-    real(wp), intent(in) :: p(2)
-    real(wp) :: r(2)
-    r = 0.0_wp
-    if (i > 0) r = rotate(p - mech%links(i)%c, q(3 * i))
-  end function lever
-
   !> The velocity-dependent part h of the constraints' second derivative (J qdd + h = drive
   !> accelerations).
-  pure function quadratic_terms(mech, q, qd) result(h)
+  pure subroutine quadratic_terms(mech, q, qd, zero, h, cs)
     type(linkage_t), intent(in) :: mech
     real(wp), intent(in) :: q(:), qd(:)
-    real(wp), allocatable :: h(:)
+    !> Zeros (3n).
+    real(wp), intent(in) :: zero(:)
+    !> h (rows).
+    real(wp), intent(out) :: h(:)
+    !> Scratch: the turns of q (set_turns).
+    real(wp), intent(out) :: cs(:, 0:)
     real(wp) :: ra(2), rb(2), u(2)
     integer :: k, r, d
-    allocate (h(linkage_rows(mech)), source=0.0_wp)
+    h = 0.0_wp
+    call set_turns(q, cs)
     !GCC$ novector
     do k = 1, size(mech%pairs)
       associate (pr => mech%pairs(k))
         r = pair_row(k)
         if (pr%kind == pair_r) then
-          ra = lever(mech, q, pr%a, pr%at)
-          rb = lever(mech, q, pr%b, pr%at)
+          ra = lever_cs(mech, cs, pr%a, pr%at)
+          rb = lever_cs(mech, cs, pr%b, pr%at)
           h(r:r + 1) = -turn_of(qd, pr%a)**2 * ra + turn_of(qd, pr%b)**2 * rb
         else
-          u = rotate(pr%u, turn_of(q, pr%guide))
-          h(r + 1) = slide_h(mech, q, qd, pr, perp(u))
+          u = turned(cs, pr%guide, pr%u)
+          h(r + 1) = slide_h(mech, q, qd, zero, cs, pr, perp(u))
         end if
       end associate
     end do
@@ -355,28 +556,26 @@ contains
     do d = 1, size(mech%drives)
       associate (pr => mech%pairs(mech%drives(d)%pair))
         if (pr%kind == pair_p) then
-          u = rotate(pr%u, turn_of(q, pr%guide))
-          h(drive_row(mech, d)) = slide_h(mech, q, qd, pr, u)
+          u = turned(cs, pr%guide, pr%u)
+          h(drive_row(mech, d)) = slide_h(mech, q, qd, zero, cs, pr, u)
         end if
       end associate
     end do
-  end function quadratic_terms
+  end subroutine quadratic_terms
 
   !> h of a sliding row w . delta (delta: the block's point minus the guide's, w turning with
   !> the guide link g): -wg^2 w.delta + 2 wg perp(w).d(delta)/dt + w.(centripetal
   !> accelerations of the block's point minus the guide's).
-  pure real(wp) function slide_h(mech, q, qd, pr, w)
+  pure real(wp) function slide_h(mech, q, qd, zero, cs, pr, w)
     type(linkage_t), intent(in) :: mech
-    real(wp), intent(in) :: q(:), qd(:)
+    real(wp), intent(in) :: q(:), qd(:), zero(:), cs(:, 0:)
     type(linkage_pair_t), intent(in) :: pr
     real(wp), intent(in) :: w(2)
     real(wp) :: x1(2), v1(2), a1(2), x2(2), v2(2), a2(2), wg
-    real(wp), allocatable :: zero(:)
     integer :: blk
-    allocate (zero(size(q)), source=0.0_wp)
     blk = pr%a + pr%b - pr%guide
-    call link_point_state(mech, q, qd, zero, blk, pr%at, x1, v1, a1)
-    call link_point_state(mech, q, qd, zero, pr%guide, pr%at, x2, v2, a2)
+    call state_cs(mech, q, qd, zero, cs, blk, pr%at, x1, v1, a1)
+    call state_cs(mech, q, qd, zero, cs, pr%guide, pr%at, x2, v2, a2)
     wg = turn_of(qd, pr%guide)
     slide_h = -wg**2 * dot_product(w, x1 - x2) + 2.0_wp * wg * dot_product(perp(w), v1 - v2) + &
               dot_product(w, a1 - a2)
@@ -384,24 +583,23 @@ contains
 
   !> Assembles the linkage for drive values `dq` by Newton's method from the poses `q`
   !> (updated), walking there in substeps from the drive values `dq_from` of `q` with a
-  !> first-order predictor. `error` names the step (`where`) and the unit whose Jacobian is
-  !> the worst conditioned.
-  pure subroutine linkage_assemble(mech, dq_from, dq, q, where, error)
+  !> first-order predictor. `error` gives the reason and the unit whose Jacobian is the worst
+  !> conditioned ("... in group III(2,3,4,5)"; the caller names the step). `work` keeps J at
+  !> the assembled poses (for linkage_motion and linkage_statics).
+  pure subroutine linkage_assemble(mech, dq_from, dq, q, work, error)
     !> The linkage.
     type(linkage_t), intent(in) :: mech
     !> Drive values of the poses q and the wanted ones, rad or m.
     real(wp), intent(in) :: dq_from(:), dq(:)
     !> Poses: in, assembled at dq_from; out, at dq.
     real(wp), intent(inout) :: q(:)
-    !> Text naming the step, for messages.
-    character(*), intent(in) :: where
+    !> Workspace (J and its factors at the last poses).
+    type(linkage_work_t), intent(inout) :: work
     type(error_t), allocatable, intent(out) :: error
-    real(wp), allocatable :: phi(:), jac(:, :), dx(:), v(:, :), target(:), from(:), q_good(:)
-    real(wp) :: span
-    integer :: m, s, it, nr, d
+    real(wp) :: span, target(size(dq)), from(size(dq)), q_good(size(q))
+    integer :: m, s, it, d
     logical :: converged
-    nr = linkage_rows(mech)
-    allocate (phi(nr), jac(nr, nr), dx(nr), v(nr, size(dq)), target(size(dq)))
+    call work_ready(mech, work)
     span = 0.0_wp
     !GCC$ novector
     do d = 1, size(dq)
@@ -412,14 +610,13 @@ contains
       end if
     end do
     m = max(1, ceiling(span))
-    allocate (from(size(dq)), q_good(size(q)))
     from(:) = dq_from
     q_good(:) = q
     !GCC$ novector
     do s = 1, m
       target = dq_from + (dq - dq_from) * (real(s, wp) / real(m, wp))
       ! predictor: the velocity analogues of the drives at the last assembled pose
-      call linkage_velocity_analogues(mech, q, v, error)
+      call work_factored(mech, q, work, error)
       if (allocated(error)) then
         call fatal_error(error, exit_geometry, fail_text("the Jacobian is singular (a dead position)"))
         return
@@ -427,20 +624,25 @@ contains
       ! (explicit loops, not matmul: its library and inlined forms sum in different orders)
       !GCC$ novector
       do d = 1, size(dq)
-        q = q + v(:, d) * (target(d) - from(d))
+        q = q + work%v(:, d) * (target(d) - from(d))
       end do
       converged = .false.
       !GCC$ novector
       do it = 1, max_newton
-        call constraints(mech, q, target, phi, jac)
-        converged = maxval(abs(phi)) <= newton_tol * mech%size
+        call constraints(mech, q, target, work%phi, work%jac, work%cs)
+        work%q_jac(:) = q
+        work%has_jac = .true.
+        work%factored = .false.
+        converged = maxval(abs(work%phi)) <= newton_tol * mech%size
         if (converged) exit
-        call solve_dense(jac, -phi, dx, error)
+        call factor_dense(work%jac, work%lu, work%ipiv, error, work%trsm)
         if (allocated(error)) then
           call fatal_error(error, exit_geometry, fail_text("the Jacobian is singular (a dead position)"))
           return
         end if
-        q = q + dx
+        work%dx(:) = -work%phi
+        call solve_factored(work%lu, work%ipiv, work%dx)
+        q = q + work%dx
       end do
       if (.not. converged) then
         call fatal_error(error, exit_geometry, fail_text("Newton's method does not converge (the linkage cannot be assembled)"))
@@ -453,7 +655,7 @@ contains
     pure function fail_text(reason) result(text)
       character(*), intent(in) :: reason
       character(len=:), allocatable :: text
-      text = where//": "//reason//" in "//unit_name(mech, linkage_worst_unit(mech, q_good))
+      text = reason//" in "//unit_name(mech, linkage_worst_unit(mech, q_good))
     end function fail_text
   end subroutine linkage_assemble
 
@@ -478,18 +680,18 @@ contains
     type(linkage_t), intent(in) :: mech
     !> Poses.
     real(wp), intent(in) :: q(:)
-    real(wp), allocatable :: phi(:), jac(:, :), x(:), dq(:)
+    real(wp), allocatable :: phi(:), jac(:, :), x(:), dq(:), cs(:, :)
     real(wp) :: rc, worst
     type(error_t), allocatable :: err
     integer, allocatable :: cols(:)
     integer :: u, i, nr
     nr = linkage_rows(mech)
-    allocate (phi(nr), jac(nr, nr), dq(size(mech%drives)))
+    allocate (phi(nr), jac(nr, nr), dq(size(mech%drives)), cs(2, 0:size(mech%links)))
     !GCC$ novector
     do i = 1, size(mech%drives)
       dq(i) = mech%drives(i)%q_ref
     end do
-    call constraints(mech, q, dq, phi, jac)
+    call constraints(mech, q, dq, phi, jac, cs)
     linkage_worst_unit = 0
     if (.not. allocated(mech%units)) return
     worst = huge(1.0_wp)
@@ -528,23 +730,17 @@ contains
     !> The analogues.
     real(wp), intent(out) :: v(:, :)
     type(error_t), allocatable, intent(out) :: error
-    real(wp), allocatable :: phi(:), jac(:, :), e(:)
-    integer :: d, nr
-    nr = linkage_rows(mech)
-    allocate (phi(nr), jac(nr, nr), e(nr))
-    call constraints(mech, q, [(0.0_wp, d=1, size(mech%drives))], phi, jac)
-    !GCC$ novector
-    do d = 1, size(mech%drives)
-      e = 0.0_wp
-      e(drive_row(mech, d)) = 1.0_wp
-      call solve_dense(jac, e, v(:, d), error)
-      if (allocated(error)) return
-    end do
+    type(linkage_work_t) :: work
+    v = 0.0_wp
+    call work_factored(mech, q, work, error)
+    if (allocated(error)) return
+    v = work%v
   end subroutine linkage_velocity_analogues
 
   !> Velocities and accelerations of assembled poses q for the drives' rates `dv` and
-  !> accelerations `da` (rad/s, rad/s^2 or m/s, m/s^2).
-  pure subroutine linkage_motion(mech, q, dv, da, qd, qdd, error)
+  !> accelerations `da` (rad/s, rad/s^2 or m/s, m/s^2), with J's factors from `work` (of
+  !> linkage_assemble) when they are those of q.
+  pure subroutine linkage_motion(mech, q, dv, da, qd, qdd, work, error)
     !> The linkage.
     type(linkage_t), intent(in) :: mech
     !> Poses.
@@ -553,80 +749,57 @@ contains
     real(wp), intent(in) :: dv(:), da(:)
     !> Velocities and accelerations of the poses.
     real(wp), intent(out) :: qd(:), qdd(:)
+    !> Workspace (J and its factors at the last poses).
+    type(linkage_work_t), intent(inout) :: work
     type(error_t), allocatable, intent(out) :: error
-    real(wp), allocatable :: phi(:), jac(:, :), rhs(:)
-    integer :: d, nr
-    nr = linkage_rows(mech)
-    allocate (phi(nr), jac(nr, nr), rhs(nr))
-    call constraints(mech, q, [(0.0_wp, d=1, size(mech%drives))], phi, jac)
-    rhs = 0.0_wp
-    !GCC$ novector
-    do d = 1, size(mech%drives)
-      rhs(drive_row(mech, d)) = dv(d)
-    end do
-    call solve_dense(jac, rhs, qd, error)
+    integer :: d
+    qd = 0.0_wp
+    qdd = 0.0_wp
+    call work_factored(mech, q, work, error)
     if (allocated(error)) return
-    rhs = -quadratic_terms(mech, q, qd)
+    qd = 0.0_wp
     !GCC$ novector
     do d = 1, size(mech%drives)
-      rhs(drive_row(mech, d)) = rhs(drive_row(mech, d)) + da(d)
+      qd(drive_row(mech, d)) = dv(d)
     end do
-    call solve_dense(jac, rhs, qdd, error)
+    call solve_factored(work%lu, work%ipiv, qd)
+    call quadratic_terms(mech, q, qd, work%zero_q, qdd, work%cs)
+    qdd = -qdd
+    !GCC$ novector
+    do d = 1, size(mech%drives)
+      qdd(drive_row(mech, d)) = qdd(drive_row(mech, d)) + da(d)
+    end do
+    call solve_factored(work%lu, work%ipiv, qdd)
   end subroutine linkage_motion
 
   !> Reactions of an assembled, moving step: applied forces `fval` (N, along each force's
   !> direction) and moments `mval` (N*m), gravity and inertia; the global system J^T lambda =
-  !> -Q, the group-by-group solve in reverse order of the units, and the self-check
-  !> (equilibrium of every link with the physical forces, power balance of every drive with
-  !> the velocity analogues).
-  pure subroutine linkage_statics(mech, fval, mval, step, error)
+  !> -Q, and the self-check: the group method's free bodies as the second opinion
+  !> (linkage_free_body, step%solver_gap), the equilibrium of every link with the physical
+  !> forces, the power balance of every drive with the velocity analogues.
+  pure subroutine linkage_statics(mech, fval, mval, step, work, error)
     !> The linkage.
     type(linkage_t), intent(in) :: mech
     !> Force magnitudes (N) and moments (N*m) of the step.
     real(wp), intent(in) :: fval(:), mval(:)
     !> In: q, qd, qdd; out: forces, efforts and the self-check.
     type(linkage_step_t), intent(inout) :: step
+    !> Workspace (J and its factors at the last poses).
+    type(linkage_work_t), intent(inout) :: work
     type(error_t), allocatable, intent(out) :: error
-    real(wp), allocatable :: phi(:), jac(:, :), gen(:), lam(:), lam2(:), v(:, :), a(:, :), b(:), x(:)
-    integer, allocatable :: cols(:), later(:), rows(:)
-    type(link_balance_t), allocatable :: bal(:)
-    real(wp) :: terms, power, big, s(2), vs(2), as(2), ref(2)
-    integer :: nr, n, k, u, d, i, r
-    nr = linkage_rows(mech)
+    real(wp) :: terms, power, s(2), vs(2), as(2), ref(2)
+    integer :: n, k, d, i, r
     n = size(mech%links)
-    allocate (phi(nr), jac(nr, nr), v(nr, size(mech%drives)))
-    call constraints(mech, step%q, [(0.0_wp, d=1, size(mech%drives))], phi, jac)
-    allocate (gen(size(step%q)))
-    gen(:) = generalised_loads(mech, step%q, step%qd, step%qdd, fval, mval)
-    allocate (lam(nr))
-    call solve_dense(transpose(jac), -gen, lam, error)
+    call work_factored(mech, step%q, work, error)
     if (allocated(error)) return
+    call generalised_loads(mech, step%q, step%qd, step%qdd, fval, mval, work%gen, work%cs)
+    work%jt(:, :) = transpose(work%jac)
+    call factor_dense(work%jt, work%lut, work%ipivt, error, work%trsm)
+    if (allocated(error)) return
+    work%lam(:) = -work%gen
+    call solve_factored(work%lut, work%ipivt, work%lam)
 
-    ! the second opinion: unit by unit, the last found first (the course's order)
-    allocate (lam2(nr), source=0.0_wp)
-    allocate (later(0))
-    !GCC$ novector
-    do u = size(mech%units), 1, -1
-      cols = unit_columns(mech%units(u))
-      rows = mech%units(u)%rows
-      a = transpose(jac(rows, cols))
-      b = -gen(cols)
-      !GCC$ novector
-      do i = 1, size(later)
-        b = b - jac(later(i), cols) * lam2(later(i))
-      end do
-      allocate (x(size(rows)))
-      call solve_dense(a, b, x, error)
-      if (allocated(error)) return
-      lam2(rows) = x
-      deallocate (x)
-      later = [later, rows]
-    end do
-    big = maxval(abs(lam))
-    step%solver_gap = 0.0_wp
-    if (big > 0.0_wp) step%solver_gap = maxval(abs(lam - lam2)) / big
-
-    ! physical forces
+    ! physical forces (work%cs: the turns of step%q, from generalised_loads)
     allocate (step%f(2, size(mech%pairs)), step%normal(size(mech%pairs)), step%couple(size(mech%pairs)))
     allocate (step%effort(size(mech%drives)))
     !GCC$ novector
@@ -634,18 +807,18 @@ contains
       associate (pr => mech%pairs(k))
         r = pair_row(k)
         if (pr%kind == pair_r) then
-          step%f(:, k) = lam(r:r + 1)
+          step%f(:, k) = work%lam(r:r + 1)
           step%normal(k) = 0.0_wp
           step%couple(k) = 0.0_wp
         else
-          ! rows: couple lam(r) and normal force lam(r+1)*n on the block
-          s = perp(rotate(pr%u, turn_of(step%q, pr%guide)))
+          ! rows: couple lambda(r) and normal force lambda(r+1)*n on the block
+          s = perp(turned(work%cs, pr%guide, pr%u))
           if (pr%guide == pr%b) then
-            step%normal(k) = lam(r + 1)
-            step%couple(k) = lam(r)
+            step%normal(k) = work%lam(r + 1)
+            step%couple(k) = work%lam(r)
           else
-            step%normal(k) = -lam(r + 1)
-            step%couple(k) = -lam(r)
+            step%normal(k) = -work%lam(r + 1)
+            step%couple(k) = -work%lam(r)
           end if
           step%f(:, k) = step%normal(k) * s
         end if
@@ -654,33 +827,39 @@ contains
     !GCC$ novector
     do d = 1, size(mech%drives)
       associate (pr => mech%pairs(mech%drives(d)%pair))
-        step%effort(d) = lam(drive_row(mech, d))
+        step%effort(d) = work%lam(drive_row(mech, d))
         if (pr%kind == pair_p .and. pr%guide == pr%a) step%effort(d) = -step%effort(d)
       end associate
     end do
 
+    ! the second opinion: the course's group method, which shares no equation with the above
+    call linkage_free_body(mech, fval, mval, step, work, work%f2, work%normal2, work%couple2, work%effort2, error)
+    if (allocated(error)) return
+    step%solver_gap = linkage_reaction_gap(mech, step, work%f2, work%normal2, work%couple2, work%effort2)
+
     ! self-check 1: every link's equilibrium with the physical forces at their points
-    allocate (bal(n))
+    call set_turns(step%q, work%cs)
+    work%bal(:) = link_balance_t()
     !GCC$ novector
     do i = 1, n
       ref = step%q(3 * i - 2:3 * i - 1)
       associate (lk => mech%links(i))
-        call link_point_state(mech, step%q, step%qd, step%qdd, i, lk%s, s, vs, as)
-        call balance_add_force(bal(i), ref, s, lk%m * mech%gravity)
-        call balance_add_force(bal(i), ref, s, -lk%m * as)
-        call balance_add_couple(bal(i), -lk%j * step%qdd(3 * i))
+        call state_cs(mech, step%q, step%qd, step%qdd, work%cs, i, lk%s, s, vs, as)
+        call balance_add_force(work%bal(i), ref, s, lk%m * mech%gravity)
+        call balance_add_force(work%bal(i), ref, s, -lk%m * as)
+        call balance_add_couple(work%bal(i), -lk%j * step%qdd(3 * i))
       end associate
     end do
     !GCC$ novector
     do k = 1, size(mech%forces)
       associate (fc => mech%forces(k))
-        s = point_position(mech, step%q, fc%link, fc%at)
-        call balance_add_force(bal(fc%link), step%q(3 * fc%link - 2:3 * fc%link - 1), s, fval(k) * force_dir(fc))
+        s = position_cs(mech, step%q, work%cs, fc%link, fc%at)
+        call balance_add_force(work%bal(fc%link), step%q(3 * fc%link - 2:3 * fc%link - 1), s, fval(k) * force_dir(fc))
       end associate
     end do
     !GCC$ novector
     do k = 1, size(mech%moment_link)
-      call balance_add_couple(bal(mech%moment_link(k)), mval(k))
+      call balance_add_couple(work%bal(mech%moment_link(k)), mval(k))
     end do
     !GCC$ novector
     do k = 1, size(mech%pairs)
@@ -688,12 +867,12 @@ contains
         if (pr%kind == pair_r) then
           ! each link's own coordinates of the joint (they differ by Newton's residual, whose
           ! lever would otherwise show in the moments of a link whose loads all act there)
-          call add_on(bal, pr%a, point_position(mech, step%q, pr%a, pr%at), step%f(:, k), 0.0_wp)
-          call add_on(bal, pr%b, point_position(mech, step%q, pr%b, pr%at), -step%f(:, k), 0.0_wp)
+          call add_on(work%bal, pr%a, position_cs(mech, step%q, work%cs, pr%a, pr%at), step%f(:, k), 0.0_wp)
+          call add_on(work%bal, pr%b, position_cs(mech, step%q, work%cs, pr%b, pr%at), -step%f(:, k), 0.0_wp)
         else
-          s = point_position(mech, step%q, pr%a + pr%b - pr%guide, pr%at)
-          call add_on(bal, pr%a, s, step%f(:, k), step%couple(k))
-          call add_on(bal, pr%b, s, -step%f(:, k), -step%couple(k))
+          s = position_cs(mech, step%q, work%cs, pr%a + pr%b - pr%guide, pr%at)
+          call add_on(work%bal, pr%a, s, step%f(:, k), step%couple(k))
+          call add_on(work%bal, pr%b, s, -step%f(:, k), -step%couple(k))
         end if
       end associate
     end do
@@ -701,30 +880,28 @@ contains
     do d = 1, size(mech%drives)
       associate (pr => mech%pairs(mech%drives(d)%pair))
         if (pr%kind == pair_r) then
-          call add_on(bal, pr%a, [0.0_wp, 0.0_wp], [0.0_wp, 0.0_wp], step%effort(d))
-          call add_on(bal, pr%b, [0.0_wp, 0.0_wp], [0.0_wp, 0.0_wp], -step%effort(d))
+          call add_on(work%bal, pr%a, [0.0_wp, 0.0_wp], [0.0_wp, 0.0_wp], step%effort(d))
+          call add_on(work%bal, pr%b, [0.0_wp, 0.0_wp], [0.0_wp, 0.0_wp], -step%effort(d))
         else
-          s = point_position(mech, step%q, pr%a + pr%b - pr%guide, pr%at)
-          vs = rotate(pr%u, turn_of(step%q, pr%guide)) * step%effort(d)
-          call add_on(bal, pr%a, s, vs, 0.0_wp)
-          call add_on(bal, pr%b, s, -vs, 0.0_wp)
+          s = position_cs(mech, step%q, work%cs, pr%a + pr%b - pr%guide, pr%at)
+          vs = turned(work%cs, pr%guide, pr%u) * step%effort(d)
+          call add_on(work%bal, pr%a, s, vs, 0.0_wp)
+          call add_on(work%bal, pr%b, s, -vs, 0.0_wp)
         end if
       end associate
     end do
-    step%residual = equilibrium_residual(bal)
+    step%residual = equilibrium_residual(work%bal)
 
     ! self-check 2: each drive's effort by virtual work (the velocity analogue of that drive)
-    call linkage_velocity_analogues(mech, step%q, v, error)
-    if (allocated(error)) return
     step%mismatch = 0.0_wp
     !GCC$ novector
     do d = 1, size(mech%drives)
       power = 0.0_wp
       terms = 0.0_wp
       !GCC$ novector
-      do i = 1, size(gen)
-        power = power - gen(i) * v(i, d)
-        terms = terms + abs(gen(i) * v(i, d))
+      do i = 1, size(work%gen)
+        power = power - work%gen(i) * work%v(i, d)
+        terms = terms + abs(work%gen(i) * work%v(i, d))
       end do
       associate (pr => mech%pairs(mech%drives(d)%pair))
         ! the effort acts on link a; for a stroke whose guide is on a, the stroke grows as a
@@ -748,25 +925,275 @@ contains
       type(linkage_force_t), intent(in) :: fc
       real(wp) :: w(2)
       w = fc%dir
-      if (fc%follow) w = rotate(fc%dir, step%q(3 * fc%link))
+      if (fc%follow) w = turned(work%cs, fc%link, fc%dir)
     end function force_dir
   end subroutine linkage_statics
 
-  !> Generalised applied loads Q (3 per link: force, moment about the reference point):
-  !> external forces and moments, gravity, d'Alembert's inertia force and moment.
-  pure function generalised_loads(mech, q, qd, qdd, fval, mval) result(gen)
+  !> The reactions by the course's group method, independently of the Lagrange form: every
+  !> link a free body (its own loads: gravity, d'Alembert's force -m a_S and moment -J_S eps,
+  !> the external forces and moments; the pair forces at the joints), three equations per
+  !> link (the forces' sum, the moments about its centre of mass), the units of the
+  !> structural analysis solved one by one from the last group to the input units, each with
+  !> the forces of the groups solved before it. The unknowns of a unit: the force of each of
+  !> its turning pairs (on link a from b, 2 components), the normal force and couple of each
+  !> sliding pair (on a: the force along the guide's normal at the block's point), the effort
+  !> of each drive (on a). Results as linkage_step_t's f, normal, couple, effort.
+  pure subroutine linkage_free_body(mech, fval, mval, step, work, f, normal, couple, effort, error)
+    !> The linkage.
     type(linkage_t), intent(in) :: mech
-    real(wp), intent(in) :: q(:), qd(:), qdd(:), fval(:), mval(:)
-    real(wp), allocatable :: gen(:)
-    real(wp) :: s(2), vs(2), as(2), f(2), w(2)
-    integer :: i, k
-    allocate (gen(size(q)), source=0.0_wp)
+    !> Force magnitudes (N) and moments (N*m) of the step.
+    real(wp), intent(in) :: fval(:), mval(:)
+    !> The step's poses q, velocities qd and accelerations qdd.
+    type(linkage_step_t), intent(in) :: step
+    !> Workspace.
+    type(linkage_work_t), intent(inout) :: work
+    !> Force on link a from b of every pair, N (2 x pairs).
+    real(wp), intent(out) :: f(:, :)
+    !> Sliding pairs: the normal force on a (N) and the couple on a (N*m); 0 for turning pairs.
+    real(wp), intent(out) :: normal(:), couple(:)
+    !> Effort of every drive on link a: moment (N*m) or force along the guide (N).
+    real(wp), intent(out) :: effort(:)
+    type(error_t), allocatable, intent(out) :: error
+    real(wp) :: sv(2), vs(2), as(2), w(2), g(2, 2), h(2), pa(2), pb(2)
+    integer :: i, j, k, d, c, r, u, nu, np
+    f = 0.0_wp
+    normal = 0.0_wp
+    couple = 0.0_wp
+    effort = 0.0_wp
+    call work_ready(mech, work)
+    call set_turns(step%q, work%cs)
+    np = size(mech%pairs)
+    ! each link's own loads: the force and its moment about the centre of mass
     !GCC$ novector
     do i = 1, size(mech%links)
       associate (lk => mech%links(i))
-        call link_point_state(mech, q, qd, qdd, i, lk%s, s, vs, as)
+        call state_cs(mech, step%q, step%qd, step%qdd, work%cs, i, lk%s, sv, vs, as)
+        work%cm(:, i) = sv
+        work%load(1:2, i) = lk%m * mech%gravity - lk%m * as
+        work%load(3, i) = -lk%j * step%qdd(3 * i)
+      end associate
+    end do
+    !GCC$ novector
+    do k = 1, size(mech%forces)
+      associate (fc => mech%forces(k))
+        w = fc%dir
+        if (fc%follow) w = turned(work%cs, fc%link, fc%dir)
+        w = fval(k) * w
+        pa = position_cs(mech, step%q, work%cs, fc%link, fc%at)
+        work%load(1:2, fc%link) = work%load(1:2, fc%link) + w
+        work%load(3, fc%link) = work%load(3, fc%link) + cross(pa - work%cm(:, fc%link), w)
+      end associate
+    end do
+    !GCC$ novector
+    do k = 1, size(mech%moment_link)
+      work%load(3, mech%moment_link(k)) = work%load(3, mech%moment_link(k)) + mval(k)
+    end do
+    work%pair_known(:) = .false.
+    work%drive_known(:) = .false.
+    work%local(:) = 0
+    !GCC$ novector
+    do u = size(mech%units), 1, -1
+      associate (unit => mech%units(u))
+        nu = size(unit%rows)
+        !GCC$ novector
+        do j = 1, size(unit%links)
+          work%local(unit%links(j)) = j
+          work%fb(3 * j - 2:3 * j) = -work%load(:, unit%links(j))
+        end do
+        work%fa(1:nu, 1:nu) = 0.0_wp
+        ! the forces known from the groups solved before
+        !GCC$ novector
+        do k = 1, np
+          if (.not. work%pair_known(k)) cycle
+          call pair_effect(work%cs, k, g, h, pa, pb)
+          call add_known(work, mech%pairs(k)%a, pa, g(:, 1) * f(1, k) + g(:, 2) * f(2, k), 0.0_wp)
+          call add_known(work, mech%pairs(k)%b, pb, -(g(:, 1) * f(1, k) + g(:, 2) * f(2, k)), 0.0_wp)
+          if (mech%pairs(k)%kind == pair_p) then
+            call add_known(work, mech%pairs(k)%a, pa, [0.0_wp, 0.0_wp], couple(k))
+            call add_known(work, mech%pairs(k)%b, pb, [0.0_wp, 0.0_wp], -couple(k))
+          end if
+        end do
+        !GCC$ novector
+        do d = 1, size(mech%drives)
+          if (.not. work%drive_known(d)) cycle
+          call drive_effect(work%cs, d, w, h(1), pa)
+          call add_known(work, mech%pairs(mech%drives(d)%pair)%a, pa, w * effort(d), h(1) * effort(d))
+          call add_known(work, mech%pairs(mech%drives(d)%pair)%b, pa, -w * effort(d), -h(1) * effort(d))
+        end do
+        ! the unit's unknowns: a column per constraint row of the unit
+        !GCC$ novector
+        do c = 1, nu
+          r = unit%rows(c)
+          if (r <= 2 * np) then
+            if (mod(r, 2) == 0) cycle
+            k = (r + 1) / 2
+            call pair_effect(work%cs, k, g, h, pa, pb)
+            call add_column(work, c, mech%pairs(k)%a, pa, g(:, 1), h(1))
+            call add_column(work, c, mech%pairs(k)%b, pb, -g(:, 1), -h(1))
+            call add_column(work, c + 1, mech%pairs(k)%a, pa, g(:, 2), h(2))
+            call add_column(work, c + 1, mech%pairs(k)%b, pb, -g(:, 2), -h(2))
+          else
+            d = r - 2 * np
+            call drive_effect(work%cs, d, w, h(1), pa)
+            call add_column(work, c, mech%pairs(mech%drives(d)%pair)%a, pa, w, h(1))
+            call add_column(work, c, mech%pairs(mech%drives(d)%pair)%b, pa, -w, -h(1))
+          end if
+        end do
+        call factor_dense(work%fa(1:nu, 1:nu), work%flu(1:nu, 1:nu), work%fipiv(1:nu), error)
+        if (allocated(error)) return
+        call solve_factored(work%flu(1:nu, 1:nu), work%fipiv(1:nu), work%fb(1:nu))
+        !GCC$ novector
+        do c = 1, nu
+          r = unit%rows(c)
+          if (r <= 2 * np) then
+            if (mod(r, 2) == 0) cycle
+            k = (r + 1) / 2
+            if (mech%pairs(k)%kind == pair_r) then
+              f(:, k) = work%fb(c:c + 1)
+            else
+              ! column c: the couple, c + 1: the normal force
+              call pair_effect(work%cs, k, g, h, pa, pb)
+              couple(k) = work%fb(c)
+              normal(k) = work%fb(c + 1)
+              f(:, k) = normal(k) * g(:, 2)
+            end if
+            work%pair_known(k) = .true.
+          else
+            d = r - 2 * np
+            effort(d) = work%fb(c)
+            work%drive_known(d) = .true.
+          end if
+        end do
+        !GCC$ novector
+        do j = 1, size(unit%links)
+          work%local(unit%links(j)) = 0
+        end do
+      end associate
+    end do
+  contains
+    !> A pair's two unknowns as loads on link a: the forces g(:, 1), g(:, 2) and couples h(1),
+    !> h(2) per unit of each; their points on a (pa) and on b (pb). Turning pair: the force's
+    !> components at the joint of each link. Sliding pair: the couple, then the normal force
+    !> at the block's point (for R and P alike: a force in a column times its unknown).
+    pure subroutine pair_effect(cs, k, g, h, pa, pb)
+      real(wp), intent(in) :: cs(:, 0:)
+      integer, intent(in) :: k
+      real(wp), intent(out) :: g(2, 2), h(2), pa(2), pb(2)
+      associate (pr => mech%pairs(k))
+        if (pr%kind == pair_r) then
+          g(:, 1) = [1.0_wp, 0.0_wp]
+          g(:, 2) = [0.0_wp, 1.0_wp]
+          h = 0.0_wp
+          pa = position_cs(mech, step%q, cs, pr%a, pr%at)
+          pb = position_cs(mech, step%q, cs, pr%b, pr%at)
+        else
+          g(:, 1) = 0.0_wp
+          g(:, 2) = perp(turned(cs, pr%guide, pr%u))
+          h = [1.0_wp, 0.0_wp]
+          pa = position_cs(mech, step%q, cs, pr%a + pr%b - pr%guide, pr%at)
+          pb = pa
+        end if
+      end associate
+    end subroutine pair_effect
+    !> A drive's effort as a load on link a per unit: the force w at point p and the couple h.
+    pure subroutine drive_effect(cs, d, w, h, p)
+      real(wp), intent(in) :: cs(:, 0:)
+      integer, intent(in) :: d
+      real(wp), intent(out) :: w(2), h, p(2)
+      associate (pr => mech%pairs(mech%drives(d)%pair))
+        if (pr%kind == pair_r) then
+          w = 0.0_wp
+          h = 1.0_wp
+          p = 0.0_wp
+        else
+          w = turned(cs, pr%guide, pr%u)
+          h = 0.0_wp
+          p = position_cs(mech, step%q, cs, pr%a + pr%b - pr%guide, pr%at)
+        end if
+      end associate
+    end subroutine drive_effect
+    !> Force fo at point p and couple co on link i (if it is in the unit): column c of the
+    !> unit's system.
+    pure subroutine add_column(work, c, i, p, fo, co)
+      type(linkage_work_t), intent(inout) :: work
+      integer, intent(in) :: c, i
+      real(wp), intent(in) :: p(2), fo(2), co
+      integer :: e
+      if (i == 0) return
+      e = work%local(i)
+      if (e == 0) return
+      work%fa(3 * e - 2, c) = work%fa(3 * e - 2, c) + fo(1)
+      work%fa(3 * e - 1, c) = work%fa(3 * e - 1, c) + fo(2)
+      work%fa(3 * e, c) = work%fa(3 * e, c) + cross(p - work%cm(:, i), fo) + co
+    end subroutine add_column
+    !> A known force fo at point p and couple co on link i (if it is in the unit): to the
+    !> right-hand side.
+    pure subroutine add_known(work, i, p, fo, co)
+      type(linkage_work_t), intent(inout) :: work
+      integer, intent(in) :: i
+      real(wp), intent(in) :: p(2), fo(2), co
+      integer :: e
+      if (i == 0) return
+      e = work%local(i)
+      if (e == 0) return
+      work%fb(3 * e - 2) = work%fb(3 * e - 2) - fo(1)
+      work%fb(3 * e - 1) = work%fb(3 * e - 1) - fo(2)
+      work%fb(3 * e) = work%fb(3 * e) - cross(p - work%cm(:, i), fo) - co
+    end subroutine add_known
+  end subroutine linkage_free_body
+
+  !> Largest difference of two sets of reactions (the step's and another's: f, normal,
+  !> couple, effort), relative to the step's largest reaction (force components of the
+  !> turning pairs, normal forces and couples of the sliding pairs, efforts).
+  pure real(wp) function linkage_reaction_gap(mech, step, f, normal, couple, effort) result(gap)
+    !> The linkage.
+    type(linkage_t), intent(in) :: mech
+    !> The step's reactions.
+    type(linkage_step_t), intent(in) :: step
+    !> The other reactions.
+    real(wp), intent(in) :: f(:, :), normal(:), couple(:), effort(:)
+    real(wp) :: big, diff
+    integer :: k
+    big = 0.0_wp
+    diff = 0.0_wp
+    !GCC$ novector
+    do k = 1, size(mech%pairs)
+      if (mech%pairs(k)%kind == pair_r) then
+        big = max(big, abs(step%f(1, k)), abs(step%f(2, k)))
+        diff = max(diff, abs(step%f(1, k) - f(1, k)), abs(step%f(2, k) - f(2, k)))
+      else
+        big = max(big, abs(step%normal(k)), abs(step%couple(k)))
+        diff = max(diff, abs(step%normal(k) - normal(k)), abs(step%couple(k) - couple(k)))
+      end if
+    end do
+    !GCC$ novector
+    do k = 1, size(mech%drives)
+      big = max(big, abs(step%effort(k)))
+      diff = max(diff, abs(step%effort(k) - effort(k)))
+    end do
+    gap = 0.0_wp
+    if (big > 0.0_wp) gap = diff / big
+  end function linkage_reaction_gap
+
+  !> Generalised applied loads Q (3 per link: force, moment about the reference point):
+  !> external forces and moments, gravity, d'Alembert's inertia force and moment.
+  pure subroutine generalised_loads(mech, q, qd, qdd, fval, mval, gen, cs)
+    type(linkage_t), intent(in) :: mech
+    real(wp), intent(in) :: q(:), qd(:), qdd(:), fval(:), mval(:)
+    !> Q (3n).
+    real(wp), intent(out) :: gen(:)
+    !> Scratch: the turns of q (set_turns).
+    real(wp), intent(out) :: cs(:, 0:)
+    real(wp) :: s(2), vs(2), as(2), f(2), w(2)
+    integer :: i, k
+    gen = 0.0_wp
+    call set_turns(q, cs)
+    !GCC$ novector
+    do i = 1, size(mech%links)
+      associate (lk => mech%links(i))
+        call state_cs(mech, q, qd, qdd, cs, i, lk%s, s, vs, as)
         f = lk%m * (mech%gravity - as)
-        call add_gen(i, s, f)
+        call add_gen(gen, i, s, f)
         gen(3 * i) = gen(3 * i) - lk%j * qdd(3 * i)
       end associate
     end do
@@ -774,8 +1201,8 @@ contains
     do k = 1, size(mech%forces)
       associate (fc => mech%forces(k))
         w = fc%dir
-        if (fc%follow) w = rotate(fc%dir, q(3 * fc%link))
-        call add_gen(fc%link, point_position(mech, q, fc%link, fc%at), fval(k) * w)
+        if (fc%follow) w = turned(cs, fc%link, fc%dir)
+        call add_gen(gen, fc%link, position_cs(mech, q, cs, fc%link, fc%at), fval(k) * w)
       end associate
     end do
     !GCC$ novector
@@ -783,12 +1210,13 @@ contains
       gen(3 * mech%moment_link(k)) = gen(3 * mech%moment_link(k)) + mval(k)
     end do
   contains
-    pure subroutine add_gen(i, p, f)
+    pure subroutine add_gen(gen, i, p, f)
+      real(wp), intent(inout) :: gen(:)
       integer, intent(in) :: i
       real(wp), intent(in) :: p(2), f(2)
       gen(3 * i - 2:3 * i - 1) = gen(3 * i - 2:3 * i - 1) + f
       gen(3 * i) = gen(3 * i) + cross(p - q(3 * i - 2:3 * i - 1), f)
     end subroutine add_gen
-  end function generalised_loads
+  end subroutine generalised_loads
 
 end module kinetostat_linkage

@@ -75,8 +75,10 @@ module kinetostat_linkage_deck
     real(wp) :: start = unset, step = unset
     !> ... or a list of values, one per step.
     real(wp) :: values(max_list) = unset
-    !> Constant speed (rad/s or m/s) and acceleration (rad/s^2 or m/s^2, default 0).
+    !> Constant speed (rad/s or m/s) and acceleration (rad/s^2 or m/s^2, default 0) ...
     real(wp) :: omega = unset, eps = unset
+    !> ... or the columns of step_values holding them step by step.
+    real(wp) :: omega_column = unset, eps_column = unset
   end type drive_in_t
 
   !> A force as written.
@@ -129,6 +131,9 @@ module kinetostat_linkage_deck
     real(wp), allocatable :: values(:, :)
     !> Whether drive d is a list.
     logical, allocatable :: listed(:)
+    !> Columns of step_values with each step's speed and acceleration of drive d (0: the
+    !> constant omega, eps).
+    integer, allocatable :: omega_column(:), eps_column(:)
     !> Loads' schedules.
     type(linkage_schedule_t), allocatable :: force_load(:), moment_load(:)
     !> The per-step load columns (n x columns).
@@ -398,15 +403,29 @@ contains
         deck%start(k) = drive(k)%start
         deck%step(k) = drive(k)%step
       end if
-      call require_set(ctx, p//"omega", drive(k)%omega, error); if (allocated(error)) return
-      deck%omega(k) = drive(k)%omega
-      deck%eps(k) = optional_default(drive(k)%eps, 0.0_wp)
-      call require_set(ctx, p//"eps", deck%eps(k), error); if (allocated(error)) return
+      if (is_set(drive(k)%omega_column)) then
+        call require_rule(ctx, p//"omega", .not. is_set(drive(k)%omega), "give either omega or omega_column, not both", &
+          error)
+        if (allocated(error)) return
+        deck%omega(k) = 0.0_wp
+      else
+        call require_set(ctx, p//"omega", drive(k)%omega, error); if (allocated(error)) return
+        deck%omega(k) = drive(k)%omega
+      end if
+      if (is_set(drive(k)%eps_column)) then
+        call require_rule(ctx, p//"eps", .not. is_set(drive(k)%eps), "give either eps or eps_column, not both", error)
+        if (allocated(error)) return
+        deck%eps(k) = 0.0_wp
+      else
+        deck%eps(k) = optional_default(drive(k)%eps, 0.0_wp)
+        call require_set(ctx, p//"eps", deck%eps(k), error); if (allocated(error)) return
+      end if
       deck%mech%drives(k)%q_ref = reference_value(deck%mech, i)
     end do
     !GCC$ novector
     do k = nd + 1, max_drives
-      if (is_set(drive(k)%start) .or. is_set(drive(k)%omega) .or. is_set(drive(k)%values(1))) then
+      if (is_set(drive(k)%start) .or. is_set(drive(k)%omega) .or. is_set(drive(k)%values(1)) .or. &
+          is_set(drive(k)%omega_column)) then
         call deck_error(ctx, "drive("//int_str(k)//")", "drives must be numbered 1.."//int_str(nd + 1)// &
           " without gaps (drive("//int_str(nd + 1)//")%pair is missing)", error)
         return
@@ -445,6 +464,15 @@ contains
       " values (n per column), got "//int_str(n_values), error)
     if (allocated(error)) return
     deck%step_values = step_values(1:n_values)
+    allocate (deck%omega_column(nd), deck%eps_column(nd), source=0)
+    !GCC$ novector
+    do k = 1, nd
+      p = "drive("//int_str(k)//")%"
+      call drive_column(p//"omega_column", drive(k)%omega_column, deck%omega_column(k), error)
+      if (allocated(error)) return
+      call drive_column(p//"eps_column", drive(k)%eps_column, deck%eps_column(k), error)
+      if (allocated(error)) return
+    end do
     nf = leading(is_set(force%link))
     nm = leading(is_set(moment%link))
     allocate (deck%mech%forces(nf), deck%force_load(nf), deck%mech%moment_link(nm), deck%moment_load(nm))
@@ -508,6 +536,17 @@ contains
       call require_rule(ctx, name, idx >= 0, "no link "//int_str(v)//" (links: the frame "//int_str(frame_no)// &
         " and link(:)%id)", err)
     end subroutine link_index
+    !> A drive's column of speeds or accelerations, if given (else 0).
+    subroutine drive_column(name, x, column, err)
+      character(*), intent(in) :: name
+      real(wp), intent(in) :: x
+      integer, intent(out) :: column
+      type(error_t), allocatable, intent(out) :: err
+      column = 0
+      if (.not. is_set(x)) return
+      call require_whole(ctx, name, x, 1, max(1, cols), column, err); if (allocated(err)) return
+      call require_rule(ctx, name, cols >= 1, "step_values holds no column", err)
+    end subroutine drive_column
     !> A load's schedule: constant value, window, or column.
     subroutine read_schedule(pfx, value, idle, on, off, column, sched, err)
       character(*), intent(in) :: pfx
@@ -646,7 +685,9 @@ contains
         q(d) = x
       end if
       v(d) = deck%omega(d)
+      if (deck%omega_column(d) > 0) v(d) = deck%step_values((deck%omega_column(d) - 1) * deck%n + k)
       a(d) = deck%eps(d)
+      if (deck%eps_column(d) > 0) a(d) = deck%step_values((deck%eps_column(d) - 1) * deck%n + k)
     end do
   end subroutine linkage_drive_values
 

@@ -19,7 +19,7 @@ module kinetostat_linkage_layout
   use kinetostat_drawing, only: drawing_t, force_load
   use kinetostat_bodies, only: mass_model_t
   use kinetostat_linkage, only: linkage_t, linkage_step_t, pair_r, pair_p, linkage_reference_pose, linkage_assemble, &
-    linkage_motion, linkage_statics, link_point_state, point_position
+    linkage_motion, linkage_statics, link_point_state, point_position, linkage_work_t
   use kinetostat_linkage_structure, only: structure_lines
   use kinetostat_linkage_deck, only: linkage_deck_t, read_linkage_deck, linkage_template, linkage_drive_values, &
     linkage_load_value
@@ -37,7 +37,7 @@ module kinetostat_linkage_layout
   !> The same in Russian.
   character(*), parameter :: link_axes_heading_ru = "РЕАКЦИИ В ОСЯХ ЗВЕНА, НА КОТОРОЕ ОНИ "// &
     "ДЕЙСТВУЮТ (СТРОКА 1 ВДОЛЬ ОСИ X ЗВЕНА, СТРОКА 2 ПОПЕРЕК), Н"
-  !> A gap of the global and group-by-group reactions above this (relative) is a warning.
+  !> A gap of the Lagrange and the group method's reactions above this (relative) is a warning.
   real(wp), parameter :: gap_tolerance = 1.0e-9_wp
 
   !> A planar linkage of lower pairs with any number of drives.
@@ -279,22 +279,24 @@ contains
     type(linkage_step_t), intent(out) :: steps(first:last)
     type(error_t), allocatable, intent(out) :: error
     real(wp), allocatable :: dq(:), dv(:), da(:), fval(:), mval(:)
+    type(linkage_work_t) :: work
     integer :: k, i, nd
-    character(len=:), allocatable :: where
     nd = size(deck%mech%drives)
     allocate (dq(nd), dv(nd), da(nd), fval(size(deck%force_load)), mval(size(deck%moment_load)))
     !GCC$ novector
     do k = first, last
       call linkage_drive_values(deck, k, dq, dv, da)
-      where = path//": &linkage: step "//int_str(k)//" ("//drive_text(deck, dq)//")"
-      call linkage_assemble(deck%mech, dq_from, dq, q, where, error)
-      if (allocated(error)) return
+      call linkage_assemble(deck%mech, dq_from, dq, q, work, error)
+      if (allocated(error)) then
+        error%message = where()//": "//error%message
+        return
+      end if
       dq_from = dq
       steps(k)%q = q
       allocate (steps(k)%qd(size(q)), steps(k)%qdd(size(q)))
-      call linkage_motion(deck%mech, q, dv, da, steps(k)%qd, steps(k)%qdd, error)
+      call linkage_motion(deck%mech, q, dv, da, steps(k)%qd, steps(k)%qdd, work, error)
       if (allocated(error)) then
-        error%message = where//": the velocities are undetermined (a dead position)"
+        error%message = where()//": the velocities are undetermined (a dead position)"
         return
       end if
       !GCC$ novector
@@ -305,12 +307,18 @@ contains
       do i = 1, size(mval)
         mval(i) = linkage_load_value(deck, deck%moment_load(i), k)
       end do
-      call linkage_statics(deck%mech, fval, mval, steps(k), error)
+      call linkage_statics(deck%mech, fval, mval, steps(k), work, error)
       if (allocated(error)) then
-        error%message = where//": the reactions are undetermined (a dead position)"
+        error%message = where()//": the reactions are undetermined (a dead position)"
         return
       end if
     end do
+  contains
+    !> The step for messages (written only for one).
+    pure function where() result(text)
+      character(len=:), allocatable :: text
+      text = path//": &linkage: step "//int_str(k)//" ("//drive_text(deck, dq)//")"
+    end function where
   end subroutine linkage_solve_steps
 
   !> "phi1 = 30 deg, phi4 = 162 deg" for messages.
@@ -419,7 +427,7 @@ contains
       call table%set_selfcheck(maxval(residual), maxval(mismatch), effort)
       table%mismatch_label = "MAX MISMATCH OF THE DRIVES' EFFORTS, POWER BALANCE"
       if (gap > gap_tolerance) then
-        call table%add_warning("the group-by-group reactions differ from the global solve by "// &
+        call table%add_warning("the group method's reactions differ from the Lagrange multipliers' by "// &
           real_str(gap)//" of the largest reaction")
       end if
     end associate
@@ -585,8 +593,8 @@ contains
             call table%echo_real("  START", deck%start(k), "deg")
             call table%echo_real("  STEP", deck%step(k), "deg")
           end if
-          call table%echo_real("  OMEGA", deck%omega(k), "rad/s")
-          call table%echo_real("  EPS", deck%eps(k), "rad/s^2")
+          call echo_rate(table, "  OMEGA", deck%omega(k), deck%omega_column(k), "rad/s")
+          call echo_rate(table, "  EPS", deck%eps(k), deck%eps_column(k), "rad/s^2")
         else
           if (deck%listed(k)) then
             call table%echo_array("  VALUES", deck%values(:, k), "m")
@@ -594,8 +602,8 @@ contains
             call table%echo_real("  START", deck%start(k), "m")
             call table%echo_real("  STEP", deck%step(k), "m")
           end if
-          call table%echo_real("  OMEGA", deck%omega(k), "m/s")
-          call table%echo_real("  EPS", deck%eps(k), "m/s^2")
+          call echo_rate(table, "  OMEGA", deck%omega(k), deck%omega_column(k), "m/s")
+          call echo_rate(table, "  EPS", deck%eps(k), deck%eps_column(k), "m/s^2")
         end if
       end do
       !GCC$ novector
@@ -630,6 +638,18 @@ contains
         call table%echo_real("  VALUE", value, unit)
       end if
     end subroutine echo_schedule
+    !> A drive's speed or acceleration: the constant, or its column of step_values.
+    pure subroutine echo_rate(table, name, value, column, unit)
+      type(step_table_t), intent(inout) :: table
+      character(*), intent(in) :: name, unit
+      real(wp), intent(in) :: value
+      integer, intent(in) :: column
+      if (column > 0) then
+        call table%echo_int(name//"_COLUMN", column, "")
+      else
+        call table%echo_real(name, value, unit)
+      end if
+    end subroutine echo_rate
   end subroutine echo_deck
 
   !> The RESULTS block: per step a line of the inputs, the pairs' magnitudes and the efforts,

@@ -5,7 +5,10 @@
 !> per link against 2 per pair and 1 per drive on those pairs. A set with a drive is an input
 !> unit (class I); without, an Assur group: two links and three pairs a class-II dyad (RRR,
 !> RRP, RPR, PRP, RPP), four links and six pairs with a link of three pairs in the group a
-!> class-III group of order 3, four links in one closed contour a class-IV group of order 2.
+!> class-III group of order 3 (a ternary base link and three binary links), six links and
+!> nine pairs whose five inner pairs join two ternary base links to each other and to two
+!> binary links each a class-III group of order 4 (four external pairs), four links in one
+!> closed contour a class-IV group of order 2.
 module kinetostat_linkage_structure
   use kinetostat_error, only: error_t, fatal_error, exit_input
   use kinetostat_text, only: int_str
@@ -170,6 +173,10 @@ contains
         unit%kind = dyad_kind(set, inner(1), ext)
       else if (size(set) == 4 .and. size(inner) == 3 .and. any(internal == 3)) then
         unit%class = 3
+      else if (size(set) == 6 .and. size(inner) == 5 .and. size(ext) == 4 .and. count(internal == 3) == 2 .and. &
+               count(internal == 1) == 4) then
+        ! (five inner pairs of six links: no closed contour; the two ternary links are joined)
+        unit%class = 3
       else if (size(set) == 4 .and. size(inner) == 4 .and. all(internal == 2)) then
         unit%class = 4
       end if
@@ -322,7 +329,14 @@ contains
             line = un%label//"  DYAD (GROUP OF CLASS II, ORDER 2), KIND "//un%kind
           end if
         case (3)
-          if (ru) then
+          if (un%order == 4) then
+            if (ru) then
+              line = un%label//"  ГРУППА III КЛАССА 4-ГО ПОРЯДКА"// &
+                " (ДВА БАЗОВЫХ ЗВЕНА С ТРЕМЯ ПАРАМИ)"
+            else
+              line = un%label//"  GROUP OF CLASS III, ORDER 4 (TWO TERNARY BASE LINKS AND FOUR BINARY LINKS)"
+            end if
+          else if (ru) then
             line = un%label// &
               "  ГРУППА III КЛАССА 3-ГО ПОРЯДКА (БАЗОВОЕ ЗВЕНО С ТРЕМЯ ПАРАМИ)"
           else

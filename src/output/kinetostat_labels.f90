@@ -420,6 +420,10 @@ contains
       "ДИАДА (ГРУППА II КЛАССА 2-ГО ПОРЯДКА), ВИД")
     text = swap(text, "GROUP OF CLASS III, ORDER 3", &
       "ГРУППА III КЛАССА 3-ГО ПОРЯДКА")
+    text = swap(text, "GROUP OF CLASS III, ORDER 4", &
+      "ГРУППА III КЛАССА 4-ГО ПОРЯДКА")
+    text = swap(text, "(TWO TERNARY BASE LINKS AND FOUR BINARY LINKS)", &
+      "(ДВА БАЗОВЫХ ЗВЕНА С ТРЕМЯ ПАРАМИ)")
     text = swap(text, "(A TERNARY BASE LINK AND THREE BINARY LINKS)", &
       "(БАЗОВОЕ ЗВЕНО С ТРЕМЯ ПАРАМИ)")
     text = swap(text, "GROUP OF CLASS IV, ORDER 2", &

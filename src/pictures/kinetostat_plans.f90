@@ -695,32 +695,30 @@ contains
     !> Index (on the plan) of the first known point of link i other than image `not` (0: none).
     pure integer function known_point(i, not)
       integer, intent(in) :: i, not
-      integer :: t
-      known_point = 0
-      do t = 1, n
-        if (t == not .or. .not. known(t)) cycle
-        associate (tname => plans%accelerations(t)%name)
-          if (.not. lists(topo, i, trim(tname)) .or. sliding_on(topo, i, trim(tname))) cycle
-        end associate
-        known_point = t
-        return
-      end do
+      known_point = first_point(i, .true., not)
     end function known_point
     !> Index of the first image that is a point of link i (not a sliding contact) and not
     !> known (0: none).
     pure integer function unknown_point(i)
       integer, intent(in) :: i
+      unknown_point = first_point(i, .false., 0)
+    end function unknown_point
+    !> Index of the first image other than `not` that is a point of link i (not a sliding
+    !> contact), known or not as `want_known` says (0: none).
+    pure integer function first_point(i, want_known, not)
+      integer, intent(in) :: i, not
+      logical, intent(in) :: want_known
       integer :: t
-      unknown_point = 0
+      first_point = 0
       do t = 1, n
-        if (known(t)) cycle
+        if (t == not .or. (known(t) .neqv. want_known)) cycle
         associate (tname => plans%accelerations(t)%name)
           if (.not. lists(topo, i, trim(tname)) .or. sliding_on(topo, i, trim(tname))) cycle
         end associate
-        unknown_point = t
+        first_point = t
         return
       end do
-    end function unknown_point
+    end function first_point
     !> The name of the point of link `link` at point `point` ("B3"; "J21_3" when the point's
     !> name ends in a digit).
     pure function coincident(point, link) result(text)
@@ -929,7 +927,6 @@ contains
     type(force_polygon_t), allocatable, intent(out) :: polygons(:)
     type(force_polygon_t) :: poly
     integer :: i, j, pass
-    real(wp) :: largest
     logical :: mine, take
     allocate (polygons(0))
     if (.not. allocated(drawing%forces)) return
@@ -968,12 +965,7 @@ contains
         end do
       end do
       if (size(poly%vectors) > 0) then
-        largest = 0.0_wp
-        do j = 1, size(poly%vectors)
-          largest = max(largest, norm2(poly%vectors(j)%v))
-        end do
-        poly%closure = 0.0_wp
-        if (largest > 0.0_wp) poly%closure = norm2([sum(poly%vectors%v(1)), sum(poly%vectors%v(2))]) / largest
+        poly%closure = closure_of(poly%vectors)
         polygons = [polygons, poly]
       end if
       deallocate (poly%vectors)
@@ -1003,7 +995,6 @@ contains
     type(plan_vector_t), allocatable :: tangential(:), closing(:)
     logical, allocatable :: member(:), before(:)
     integer :: gr, q, i, j, a, b, pass, crank, actuator, cylinder
-    real(wp) :: largest
     logical :: take
     allocate (polygons(0), member(size(topo%links)), before(0:size(topo%links)))
     ! a cylinder drive: the cylinder and its rod are one body of the group (their pair is
@@ -1070,12 +1061,7 @@ contains
         poly%moment = driver
         poly%moment_value = column_value(table, driver, k)
       end if
-      largest = 0.0_wp
-      do j = 1, size(poly%vectors)
-        largest = max(largest, norm2(poly%vectors(j)%v))
-      end do
-      poly%closure = 0.0_wp
-      if (largest > 0.0_wp) poly%closure = norm2([sum(poly%vectors%v(1)), sum(poly%vectors%v(2))]) / largest
+      poly%closure = closure_of(poly%vectors)
       polygons = [polygons, poly]
       deallocate (poly%vectors, tangential, closing)
     end do
@@ -1255,7 +1241,7 @@ contains
     type(step_table_t), intent(in) :: table
     integer, intent(in) :: k
     type(text_buffer_t), intent(inout) :: out
-    integer :: i, j
+    integer :: i
     character(len=:), allocatable :: line
     call out%put("{")
     call out%put('  "deck": "'//table%deck//'",')
@@ -1272,15 +1258,9 @@ contains
         line = '    {"point": "'//trim(eq%point)//'", "link": "'//trim(eq%link)//'", "from": "'//trim(eq%from)// &
           '", "slider": "'//trim(eq%slider)//'", '
         if (eq%reverse) line = line//'"reverse": true, '
-        line = line//'"vectors": ['
-        do j = 1, size(eq%vectors)
-          if (j > 1) line = line//", "
-          line = line//vector_json(eq%vectors(j))
-        end do
+        line = line//'"vectors": ['//vectors_json(eq%vectors)//"]}"
       end associate
-      line = line//"]}"
-      if (i < size(plans%equations)) line = line//","
-      call out%put(line)
+      call put_item(out, line, i < size(plans%equations))
     end do
     call out%put("  ],")
     call out%put('  "force_plans": [')
@@ -1289,28 +1269,16 @@ contains
         line = '    {"group": "'//trim(poly%link)//'", "closure": '//full_number(poly%closure)
         if (len(poly%moment) > 0) line = line//', "moment": {"name": "'//poly%moment//'", "value": '// &
           full_number(poly%moment_value)//'}'
-        line = line//', "vectors": ['
-        do j = 1, size(poly%vectors)
-          if (j > 1) line = line//", "
-          line = line//vector_json(poly%vectors(j))
-        end do
+        line = line//', "vectors": ['//vectors_json(poly%vectors)//"]}"
       end associate
-      line = line//"]}"
-      if (i < size(plans%group_polygons)) line = line//","
-      call out%put(line)
+      call put_item(out, line, i < size(plans%group_polygons))
     end do
     call out%put("  ],")
     call out%put('  "link_force_plans": [')
     do i = 1, size(plans%polygons)
       line = '    {"link": "'//trim(plans%polygons(i)%link)//'", "closure": '//full_number(plans%polygons(i)%closure)// &
-        ', "vectors": ['
-      do j = 1, size(plans%polygons(i)%vectors)
-        if (j > 1) line = line//", "
-        line = line//vector_json(plans%polygons(i)%vectors(j))
-      end do
-      line = line//"]}"
-      if (i < size(plans%polygons)) line = line//","
-      call out%put(line)
+        ', "vectors": ['//vectors_json(plans%polygons(i)%vectors)//"]}"
+      call put_item(out, line, i < size(plans%polygons))
     end do
     call out%put("  ],")
     if (plans%lever_known) then
@@ -1348,5 +1316,45 @@ contains
     if (len_trim(v%kind) > 0) text = text//'"kind": "'//v%kind//'", '
     text = text//'"x": '//full_number(v%v(1))//', "y": '//full_number(v%v(2))//"}"
   end function vector_json
+
+  !> How far a polygon is from closing: |sum of its vectors| / its largest vector (0 when
+  !> every vector is zero).
+  pure real(wp) function closure_of(vectors)
+    type(plan_vector_t), intent(in) :: vectors(:)
+    real(wp) :: largest
+    integer :: j
+    largest = 0.0_wp
+    do j = 1, size(vectors)
+      largest = max(largest, norm2(vectors(j)%v))
+    end do
+    closure_of = 0.0_wp
+    if (largest > 0.0_wp) closure_of = norm2([sum(vectors%v(1)), sum(vectors%v(2))]) / largest
+  end function closure_of
+
+  !> Vectors as JSON objects separated by commas.
+  pure function vectors_json(vectors) result(text)
+    type(plan_vector_t), intent(in) :: vectors(:)
+    character(len=:), allocatable :: text
+    integer :: j
+    text = ""
+    do j = 1, size(vectors)
+      text = text//vector_json(vectors(j))
+      if (j < size(vectors)) text = text//", "
+    end do
+  end function vectors_json
+
+  !> One line of a JSON array, with a comma when more follow.
+  pure subroutine put_item(out, line, more)
+    type(text_buffer_t), intent(inout) :: out
+    !> The item.
+    character(*), intent(in) :: line
+    !> Whether more items follow.
+    logical, intent(in) :: more
+    if (more) then
+      call out%put(line//",")
+    else
+      call out%put(line)
+    end if
+  end subroutine put_item
 
 end module kinetostat_plans

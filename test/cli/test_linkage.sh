@@ -89,3 +89,36 @@ assert float(row["phi1"]) == 0.0
 for a, b in (("F10_along", "F10x"), ("F10_across", "F10y")):
     assert abs(float(row[a]) - float(row[b])) <= 1e-9 * abs(float(row["F10"])), (a, row[a], row[b])
 PY
+
+# per-step drive speeds and accelerations (drive(d)%omega_column, eps_column of step_values):
+# each step equals a run with that step's omega and eps as constants (the kinematics of a step
+# depend on its angle, speed and acceleration only), and the INPUT DATA echo names the columns
+lk_omega=$(deck_with lk_omega data/class3.nml "s/drive(1)%omega = 10, drive(1)%eps = 0/drive(1)%omega_column = 1, drive(1)%eps_column = 2/; s/^  n = 37/  n = 3, step_values = 5, 10, -7.5, 100, 0, -40/")
+run_ks "$lk_omega" --format csv
+cp "$out" "$cli_tmp/lk_omega.csv"
+if [ "$rc" -ne 0 ]; then fail linkage-omega-column "exit $rc: $(cat "$err")"
+else
+  ok=1
+  for k in "1 5 100" "2 10 0" "3 -7.5 -40"; do
+    set -- $k
+    run_ks data/class3.nml --format csv --set n=3 --set "drive(1)%omega=$2" --set "drive(1)%eps=$3"
+    if [ "$rc" -ne 0 ] || [ "$(sed -n "$(($1 + 1))p" "$out")" != "$(sed -n "$(($1 + 1))p" "$cli_tmp/lk_omega.csv")" ]; then
+      ok=0; fail linkage-omega-column "step $1 differs from the run with omega = $2, eps = $3: $(sed -n "$(($1 + 1))p" "$out" | cut -c1-120)"
+    fi
+  done
+  [ "$ok" -eq 1 ] && pass
+fi
+run_ks "$lk_omega"
+if [ "$rc" -eq 0 ] && grep -q "OMEGA_COLUMN *= *1 *$" "$out" && grep -q "EPS_COLUMN *= *2 *$" "$out"; then pass
+else fail linkage-omega-column-echo "exit $rc; no OMEGA_COLUMN 1 / EPS_COLUMN 2 in INPUT DATA"; fi
+expect_input_error linkage-omega-both "drive\(1\)%omega: give either omega or omega_column, not both" \
+  "$(deck_with lk_omega_both "$lk_omega" "s/drive(1)%omega_column = 1/&, drive(1)%omega = 3/")"
+expect_input_error linkage-omega-column-range "drive\(1\)%eps_column: must be a whole number from 1 to 2" \
+  "$(deck_with lk_eps_col "$lk_omega" "s/drive(1)%eps_column = 2/drive(1)%eps_column = 3/")"
+
+# a class-III group of order 4 (two ternary base links joined, four binary links)
+lk_structure linkage-structure-order4 docs/examples/class3_order4.nml en \
+  "III(2,3,4,5,6,7)  GROUP OF CLASS III, ORDER 4 (TWO TERNARY BASE LINKS AND FOUR BINARY LINKS)" \
+  "STRUCTURE FORMULA: I(0,1) -> III(2,3,4,5,6,7)" "CLASS OF THE MECHANISM: III"
+lk_structure linkage-structure-order4-ru docs/examples/class3_order4.nml ru \
+  "III(2,3,4,5,6,7)  ГРУППА III КЛАССА 4-ГО ПОРЯДКА (ДВА БАЗОВЫХ ЗВЕНА С ТРЕМЯ ПАРАМИ)"
