@@ -236,55 +236,6 @@ contains
     end do
   end subroutine bench_threads
 
-  !> The machine dynamics stage's cost, processor seconds: for PR 3207 and the generic engine
-  !> (when wanted), the deck with its flywheel and the plain deck at the same N steps over one
-  !> turn (N = 10^5, or MAX_STEPS if smaller): the solve alone (the steps' kernel with the true
-  !> motion and the constant-speed comparison; the cycle itself is solved with the deck) and
-  !> the CSV run end to end (deck text to file: the cycle, the steps, 7 more columns), and the
-  !> ratio dynamics / plain of each.
-  subroutine bench_dynamics(path)
-    !> Output file of the end-to-end runs.
-    character(*), intent(in) :: path
-    character(*), parameter :: dyn_fmt = '(a8,i9,2f9.3,f7.2,2f9.3,f7.2)'
-    type(bench_case_t), parameter :: plain(2) = [bench_case_t("pr3207", "data/pr3207.nml"), &
-      bench_case_t("assur", "data/assur_pr3207.nml")]
-    type(bench_case_t), parameter :: flywheel(2) = [bench_case_t("pr3207", "data/pr3207_flywheel.nml"), &
-      bench_case_t("assur", "data/assur_pr3207_flywheel.nml")]
-    character(len=:), allocatable :: text_plain, text_dyn
-    real(wp) :: s_plain, s_dyn, c_plain, c_dyn
-    integer :: i, n
-    if (.not. any(wanted .and. (cases%kind == "pr3207" .or. cases%kind == "assur"))) return
-    n = min(max_steps, 100000)
-    write (output_unit, '(a)') "machine dynamics (steady cycle with its flywheel) against the plain deck, one turn, " // &
-      "CPU seconds:"
-    write (output_unit, '(a)') "    kind    steps    solve  +dynamics ratio      csv +dynamics ratio"
-    do i = 1, size(plain)
-      if (.not. any(wanted .and. cases%kind == plain(i)%kind)) cycle
-      text_plain = one_turn_deck(plain(i), n)
-      text_dyn = one_turn_deck(flywheel(i), n)
-      s_plain = solve_seconds(plain(i), text_plain, .false.)
-      s_dyn = solve_seconds(flywheel(i), text_dyn, .false.)
-      c_plain = end_to_end_seconds(plain(i), text_plain, format_csv, path)
-      c_dyn = end_to_end_seconds(flywheel(i), text_dyn, format_csv, path)
-      write (output_unit, dyn_fmt) plain(i)%kind, n, s_plain, s_dyn, s_dyn / s_plain, c_plain, c_dyn, c_dyn / c_plain
-      flush (output_unit)
-    end do
-  end subroutine bench_dynamics
-
-  !> A bundled deck at `n` steps over exactly one turn (dphi = 360/(n - 1); a steady cycle
-  !> needs it), as the text of a deck.
-  function one_turn_deck(c, n) result(text)
-    type(bench_case_t), intent(in) :: c
-    integer, intent(in) :: n
-    character(len=:), allocatable :: text
-    type(deck_source_t) :: source
-    type(error_t), allocatable :: error
-    character(len=32) :: dphi, count
-    integer :: k, last
-    call load_deck(trim(c%deck), source, error)
-    if (allocated(error)) error stop "bench: run from the project root (cannot read the bundled decks)"
-    write (dphi, '(es24.17)') 360.0_wp / (n - 1)
-    write (count, '(i0)') n
   !> The general linkage engine against the dyad engine (when no kind or `linkage` is asked
   !> for): the solve alone (as "kernel") per step, processor microseconds, at min(MAX_STEPS,
   !> 10^5) steps, of a class-III &linkage deck against a dyad &assur deck of the same size
@@ -357,11 +308,72 @@ contains
     do k = 1, last - 1
       text = text//trim(deck_line(source, k))//new_line("a")
     end do
-    text = text//"  dphi = "//trim(dphi)//", n = "//trim(count)//new_line("a")//"/"//new_line("a")
-  end function one_turn_deck
     text = text//"  "//extra//new_line("a")//"/"//new_line("a")
     per_step = 1.0e6_wp * solve_seconds(bench_case_t(kind, deck), text, .false.) / n
   end function per_step
+
+  !> The machine dynamics stage's cost, processor seconds: for PR 3207 and the generic engine
+  !> (when wanted), the deck with its flywheel and the plain deck at the same N steps over one
+  !> turn (N = 10^5, or MAX_STEPS if smaller): the solve alone (the steps' kernel with the true
+  !> motion and the constant-speed comparison; the cycle itself is solved with the deck) and
+  !> the CSV run end to end (deck text to file: the cycle, the steps, 7 more columns), and the
+  !> ratio dynamics / plain of each.
+  subroutine bench_dynamics(path)
+    !> Output file of the end-to-end runs.
+    character(*), intent(in) :: path
+    character(*), parameter :: dyn_fmt = '(a8,i9,2f9.3,f7.2,2f9.3,f7.2)'
+    type(bench_case_t), parameter :: plain(2) = [bench_case_t("pr3207", "data/pr3207.nml"), &
+      bench_case_t("assur", "data/assur_pr3207.nml")]
+    type(bench_case_t), parameter :: flywheel(2) = [bench_case_t("pr3207", "data/pr3207_flywheel.nml"), &
+      bench_case_t("assur", "data/assur_pr3207_flywheel.nml")]
+    character(len=:), allocatable :: text_plain, text_dyn
+    real(wp) :: s_plain, s_dyn, c_plain, c_dyn
+    integer :: i, n
+    if (.not. any(wanted .and. (cases%kind == "pr3207" .or. cases%kind == "assur"))) return
+    n = min(max_steps, 100000)
+    write (output_unit, '(a)') "machine dynamics (steady cycle with its flywheel) against the plain deck, one turn, " // &
+      "CPU seconds:"
+    write (output_unit, '(a)') "    kind    steps    solve  +dynamics ratio      csv +dynamics ratio"
+    do i = 1, size(plain)
+      if (.not. any(wanted .and. cases%kind == plain(i)%kind)) cycle
+      text_plain = one_turn_deck(plain(i), n)
+      text_dyn = one_turn_deck(flywheel(i), n)
+      s_plain = solve_seconds(plain(i), text_plain, .false.)
+      s_dyn = solve_seconds(flywheel(i), text_dyn, .false.)
+      c_plain = end_to_end_seconds(plain(i), text_plain, format_csv, path)
+      c_dyn = end_to_end_seconds(flywheel(i), text_dyn, format_csv, path)
+      write (output_unit, dyn_fmt) plain(i)%kind, n, s_plain, s_dyn, s_dyn / s_plain, c_plain, c_dyn, c_dyn / c_plain
+      flush (output_unit)
+    end do
+  end subroutine bench_dynamics
+
+  !> A bundled deck at `n` steps over exactly one turn (dphi = 360/(n - 1); a steady cycle
+  !> needs it), as the text of a deck.
+  function one_turn_deck(c, n) result(text)
+    type(bench_case_t), intent(in) :: c
+    integer, intent(in) :: n
+    character(len=:), allocatable :: text
+    type(deck_source_t) :: source
+    type(error_t), allocatable :: error
+    character(len=32) :: dphi, count
+    integer :: k, last
+    call load_deck(trim(c%deck), source, error)
+    if (allocated(error)) error stop "bench: run from the project root (cannot read the bundled decks)"
+    write (dphi, '(es24.17)') 360.0_wp / (n - 1)
+    write (count, '(i0)') n
+    last = deck_line_count(source)
+    do k = deck_line_count(source), 1, -1
+      if (adjustl(deck_line(source, k)) == "/") then
+        last = k
+        exit
+      end if
+    end do
+    text = ""
+    do k = 1, last - 1
+      text = text//trim(deck_line(source, k))//new_line("a")
+    end do
+    text = text//"  dphi = "//trim(dphi)//", n = "//trim(count)//new_line("a")//"/"//new_line("a")
+  end function one_turn_deck
 
   !> Amdahl's law: the speed-up on `cores` cores of a run whose serial fraction is `serial`.
   pure real(wp) function amdahl(serial, cores)
