@@ -797,11 +797,12 @@ contains
 
     ! ---- machine dynamics: reduced to the crank; a steady cycle over one turn, loads at any angle
     if (len_trim(dynamics) > 0 .and. trim(adjustl(dynamics)) /= "none") then
-      call require_rule(ctx, "dynamics", deck%mech%drive_dyad == 0, "the dynamics stage reduces to a crank "// &
-        "input: not with a linear actuator (drive_dyad)", error)
+      call require_rule(ctx, "dynamics", deck%mech%drive_dyad == 0 .or. trim(adjustl(dynamics)) == "reduced", &
+        "a linear actuator's stroke (drive_dyad) goes out and back with no turn to make a cycle of: only "// &
+        "dynamics = 'reduced' (reduced to the stroke)", error)
       if (allocated(error)) return
-      call require_rule(ctx, "dynamics", .not. deck%prescribed, "omega1_step/eps1_step prescribe the motion; "// &
-        "the dynamics stage needs omega1 (the mean speed)", error)
+      call require_rule(ctx, "dynamics", .not. deck%prescribed .or. trim(adjustl(dynamics)) == "reduced", &
+        "omega1_step/eps1_step prescribe the motion; a steady cycle needs omega1 (the mean speed)", error)
       if (allocated(error)) return
     end if
     call read_dynamics_settings(ctx, dynamics, delta, j_rotor, j_flywheel, omega1, deck%dyn, error, &

@@ -88,6 +88,7 @@ contains
       end if
       red%m = red%m + value * states(deck%mech%moment_link(k))%u
     end do
+    if (deck%mech%drive_dyad > 0) call to_stroke(poses(deck%mech%drive_dyad), deck%mech%drive_pair, red)
   contains
     !> A load's value at phi: constant, window, or table over a link's position.
     pure real(wp) function load_at(load)
@@ -151,6 +152,30 @@ contains
     call deck_cycle(source, deck%dyn, deck%phi_start * deg_to_rad, load_breaks(deck), deck%omega1_const, &
                     path//": &assur", cycle, error, j_links_constant=j_crank)
   end subroutine assur_cycle
+
+  !> Reduced quantities per radian of the input link turned into those of a linear
+  !> actuator's stroke s (pair `pair` of the driving dyad): with s' = ds/dphi1 and
+  !> s'' = d2s/dphi1^2, J_s = J / s'^2 (kg), dJ_s/ds = (dJ - 2 J s''/s') / s'^3 (kg/m),
+  !> M_s = M / s' (N: the force along the stroke that does the loads' work, so the
+  !> actuator's force at rest is -M_s). Not ok where s' = 0 (a dead position of the actuator).
+  pure subroutine to_stroke(pose, pair, red)
+    !> Pose of the driving dyad.
+    type(dyad_pose_t), intent(in) :: pose
+    !> The driving prismatic pair of that dyad.
+    integer, intent(in) :: pair
+    !> Per radian of phi1 on entry, per metre of stroke on return.
+    type(reduced_t), intent(inout) :: red
+    real(wp) :: ds, dds
+    ds = pose%stroke_v(pair)
+    dds = pose%stroke_a(pair)
+    if (.not. abs(ds) > 0.0_wp) then
+      red%ok = .false.
+      return
+    end if
+    red%dj = (red%dj - 2.0_wp * red%j * dds / ds) / ds**3
+    red%j = red%j / ds**2
+    red%m = red%m / ds
+  end subroutine to_stroke
 
   !> The motion at step k: of the cycle with a steady cycle, else the deck's constant speed
   !> with the reduced quantities (dynamics = 'reduced').

@@ -256,7 +256,7 @@ contains
         call table%add_column(trim(names(size(names) - 1)), "", col_flag)
         call table%add_column(trim(names(size(names))), "", col_ratio)
       end if
-      call add_dynamics_columns(table, self%deck%dyn%mode)
+      call add_dynamics_columns(table, self%deck%dyn%mode, self%deck%mech%drive_dyad > 0)
       call put_dynamics_figures(table, self%deck%dyn%mode, self%cycle, self%deck%dyn%delta)
       table%input_column = 1
       do k = 1, size(self%deck%force_load)
@@ -1275,7 +1275,7 @@ contains
       call table%echo_int("MOMENT "//int_str(k)//" LINK", deck%mech%links(deck%mech%moment_link(k))%id, "")
       call echo_load(deck, deck%moment_load(k), "N*m", table)
     end do
-    call echo_dynamics(table, deck%dyn)
+    call echo_dynamics(table, deck%dyn, deck%mech%drive_dyad > 0)
   end subroutine echo_deck
 
   !> The echo line "  VALUE" of a load: its value at every step (a step_values column as

@@ -82,7 +82,7 @@ for name in ["phi1", "M1", "J_red", "dJ_red", "M_red", "dT", "omega1", "eps1", "
         assert close(ra[i], rb[j], scale), (name, ra[i], rb[j])
 PY
 then pass; else fail dynamics-generic-twin "data/assur_pr3207_flywheel.nml differs from data/pr3207_flywheel.nml"; fi
-expect_input_error dynamics-assur-actuator "not with a linear actuator" "$(deck_with dyn_act data/assur_pr3050.nml "s/^\/$/  dynamics = 'steady', delta = 0.05\n\//")"
+expect_input_error dynamics-assur-actuator "no turn to make a cycle of" "$(deck_with dyn_act data/assur_pr3050.nml "s/^\/$/  dynamics = 'steady', delta = 0.05\n\//")"
 expect_input_error dynamics-dead-position "the cycle passes through a dead position" "$(deck_with dyn_dead data/assur_toggle.nml "s/, n = 3//; s/^\/$/  dynamics = 'steady', delta = 0.05\n\//")" 3
 expect_input_error dynamics-assur-friction "friction in the pairs" "$(deck_with dyn_fr data/assur_pr3207_flywheel.nml "s/crank_s = 0, 0 /crank_s = 0, 0, crank_f = 0.1, crank_r = 0.02 /")"
 
@@ -194,3 +194,24 @@ then pass; else fail dynamics-shaking-flywheel "free machine with a flywheel: M_
 run_ks "$(deck_with md_svg "$fw" "s/j_rotor = 0.6 /j_rotor = 0.6, $mdt /")" --format svg
 if [ "$rc" -eq 0 ] && grep -q 'stroke="#333333" stroke-width="0.4" stroke-dasharray="2,1"' "$out"; then pass
 else fail dynamics-md-table-svg "exit $rc; no dashed M_d(phi) curve on the SVG sheet"; fi
+
+# --- a linear actuator's generic deck reduced to its stroke equals the dedicated PR 3050
+run_ks data/assur_pr3050.nml --set "dynamics='reduced'" --format csv; cp "$out" "$cli_tmp/act_generic.csv"
+run_ks data/pr3050.nml --set "dynamics='reduced'" --format csv; cp "$out" "$cli_tmp/act_pr3050.csv"
+if python3 - "$cli_tmp/act_generic.csv" "$cli_tmp/act_pr3050.csv" <<'PY'
+import csv, sys
+a = list(csv.DictReader(open(sys.argv[1]))); d = list(csv.DictReader(open(sys.argv[2])))
+assert len(a) == len(d) > 0, (len(a), len(d))
+for k, (ra, rd) in enumerate(zip(a, d)):
+    for c in ("J_red", "dJ_red", "M_red"):
+        x, y = float(ra[c]), float(rd[c])
+        if abs(x - y) > 1e-9 * max(abs(y), 1.0):
+            sys.exit(f"row {k + 1} {c}: generic {x!r} vs PR 3050 {y!r} (rel 1e-9)")
+PY
+then pass; else fail dynamics-actuator-stroke "the generic actuator deck's J_red, dJ_red, M_red differ from PR 3050's"; fi
+grep -q "REDUCED_TO" <("$KINETOSTAT" data/assur_pr3050.nml --set "dynamics='reduced'" 2>&1) && pass \
+  || fail dynamics-actuator-echo "no REDUCED_TO line in the actuator deck's INPUT DATA"
+"$KINETOSTAT" data/assur_pr3050.nml --set "dynamics='steady'" --set delta=0.05 >"$cli_tmp/act.out" 2>"$cli_tmp/act.err"
+rc=$?
+[ "$rc" -eq 2 ] && grep -q "dynamics.*no turn to make a cycle of" "$cli_tmp/act.err" && [ ! -s "$cli_tmp/act.out" ] && pass \
+  || fail dynamics-actuator-steady "exit $rc: $(cat "$cli_tmp/act.err")"
