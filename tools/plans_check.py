@@ -8,6 +8,8 @@
         acceleration_residual <= 1e-9 x (1 + largest acceleration image);
       - every centre of mass S<i> on the acceleration plan equals the CSV's ax_S<i>, ay_S<i>
         at that step (relative 1e-9 of the largest image, absolute 1e-9 m/s^2);
+      - every vector equation of the velocity plan (velocity_equations): its relative
+        velocities omega x (P - Q) and its chain from the image of Q to the image of P;
       - every vector equation of the acceleration plan (acceleration_equations): its normal
         component is -omega^2 (P - Q), its tangential eps x (P - Q) (omega, eps of its link,
         P, Q the point and the known point it starts from, all from the CSV), its Coriolis
@@ -110,6 +112,36 @@ def main():
         if not close(total, aimg[point], scale):
             bad.append(f"{where}: image of {start or 'the pole'} + components = {tuple(total)}, "
                        f"image of {point} {aimg[point]}")
+    # the velocity plan's equations: each relative velocity v_PQ = omega_L x (P - Q), and the
+    # chain from the image of Q (or the pole) ends at the image of P
+    for eq in plans.get("velocity_equations", []):
+        point, link, start = eq["point"], eq["link"], eq["from"]
+        where = f"velocity equation of {point} (link {link or 'frame'}, from {start or 'the pole'})"
+        if point not in vimg or (start and start not in vimg):
+            bad.append(f"{where}: a point without an image")
+            continue
+        base = vimg[start] if start else (0.0, 0.0)
+        total = list(base)
+        scale = max([math.hypot(*vimg[point]), math.hypot(*base)]
+                    + [math.hypot(v["x"], v["y"]) for v in eq["vectors"]])
+        for v in eq["vectors"]:
+            total[0] += v["x"]
+            total[1] += v["y"]
+            if v["kind"] == "t":
+                try:
+                    r = (pos(point)[0] - pos(start)[0], pos(point)[1] - pos(start)[1])
+                    om = col["omega" + link] if "omega" + link in col else 0.0
+                except KeyError as missing:
+                    bad.append(f"{where}: no CSV column {missing}")
+                    continue
+                want = (-om * r[1], om * r[0])
+                if not close((v["x"], v["y"]), want, scale):
+                    bad.append(f"{where}: {v['name']} expected {want}, plan {(v['x'], v['y'])}")
+        if not close(total, vimg[point], scale):
+            bad.append(f"{where}: image of {start or 'the pole'} + relative velocities = {tuple(total)}, "
+                       f"image of {point} {vimg[point]}")
+    if "velocity_equations" in plans and len(plans["velocity_equations"]) != len(plans.get("acceleration_equations", [])):
+        bad.append("the velocity plan has not one equation per equation of the acceleration plan")
     polygon_sets = []
     if "--polygons" in flags:
         polygon_sets = [("link", plans["link_force_plans"]), ("group", plans["force_plans"])]

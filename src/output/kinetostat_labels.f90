@@ -298,6 +298,8 @@ contains
       text = "входное звено"
     case ("known forces first, then the unknown reactions")
       text = "сначала известные силы, затем искомые реакции"
+    case ("relative velocities: v_PQ of a link's points, r along a guide")
+      text = "относительные скорости: v_PQ точек звена, r вдоль направляющей"
     case ("components: n normal, τ tangential, k Coriolis, r relative")
       text = "составляющие: n норм., τ касат., k кориол., r относит."
     case ("Plans of velocities, accelerations, forces")

@@ -99,6 +99,9 @@ module kinetostat_plans
     type(plan_vector_t), allocatable :: accelerations(:)
     !> The vector equations of the acceleration plan, in drawing order.
     type(plan_equation_t), allocatable :: equations(:)
+    !> The same equations on the plan of velocities: the relative velocities (v_CB = omega x
+    !> (C - B), a slider's v_B^r along its guide), in drawing order.
+    type(plan_equation_t), allocatable :: velocity_equations(:)
     !> The Assur groups, in the order they are solved.
     type(plan_group_t), allocatable :: groups(:)
     !> Largest residual of the velocity equations, m/s, and of the acceleration equations, m/s^2.
@@ -153,6 +156,7 @@ contains
     call slides_of(topo, drawing, table, k, omega, slides)
     call groups_of(topo, drawing, slides, driver, plans%groups)
     call equations_of(topo, drawing, table, k, omega, eps, v0, plans)
+    call velocity_equations_of(topo, drawing, omega, plans)
     call polygons_of(topo, drawing, driver, plans%polygons)
     call group_polygons_of(topo, drawing, table, k, slides, driver, plans%groups, plans%group_polygons)
     call lever_of(topo, drawing, table, k, omega, v0, plans)
@@ -524,6 +528,81 @@ contains
       end do
     end function to_solved
   end subroutine groups_of
+
+  !> The velocity plan's equations from the acceleration plan's, term by term: a pair of
+  !> normal and tangential components about a point Q of link L becomes the relative
+  !> velocity v_PQ = omega_L x (P - Q); a Coriolis component has no velocity term; a
+  !> relative (sliding) component becomes the slider's velocity along its guide, v_P^r, the
+  !> rest of the equation (image of P - image of Q - the other terms).
+  pure subroutine velocity_equations_of(topo, drawing, omega, plans)
+    type(sketch_t), intent(in) :: topo
+    type(drawing_t), intent(in) :: drawing
+    !> Angular velocities of the topology's links, rad/s.
+    real(wp), intent(in) :: omega(:)
+    type(plans_t), intent(inout) :: plans
+    type(plan_equation_t) :: veq
+    real(wp) :: r(2), w, rest(2)
+    integer :: e, j, i, relative_at
+    allocate (plans%velocity_equations(size(plans%equations)))
+    do e = 1, size(plans%equations)
+      associate (eq => plans%equations(e))
+        veq = eq
+        w = 0.0_wp
+        do i = 1, size(topo%links)
+          if (topo%links(i)%name == eq%link) w = omega(i)
+        end do
+        r = drawing%at(trim(eq%point)) - drawing%at(trim(eq%from))
+        deallocate (veq%vectors)
+        allocate (veq%vectors(0))
+        relative_at = 0
+        do j = 1, size(eq%vectors)
+          associate (v => eq%vectors(j))
+            select case (v%kind)
+            case (component_normal)
+              veq%vectors = [veq%vectors, plan_vector_t(velocity_name(v%name), w * [-r(2), r(1)], &
+                component_tangential)]
+            case (component_relative)
+              veq%vectors = [veq%vectors, plan_vector_t(velocity_name(v%name), [0.0_wp, 0.0_wp], component_relative)]
+              relative_at = size(veq%vectors)
+            case default
+              continue
+            end select
+          end associate
+        end do
+        if (relative_at > 0) then
+          rest = image_of(plans%velocities, eq%point) - image_of(plans%velocities, eq%from)
+          do j = 1, size(veq%vectors)
+            if (j /= relative_at) rest = rest - veq%vectors(j)%v
+          end do
+          veq%vectors(relative_at)%v = rest
+        end if
+        plans%velocity_equations(e) = veq
+      end associate
+    end do
+  contains
+    !> "a_CB^n" -> "v_CB", "a_B^r" -> "v_B^r".
+    pure function velocity_name(name) result(text)
+      character(*), intent(in) :: name
+      character(len=:), allocatable :: text
+      integer :: hat
+      hat = index(name, "^")
+      text = "v"//name(2:)
+      if (hat > 0 .and. name(hat + 1:) /= "r") text = "v"//name(2:hat - 1)
+    end function velocity_name
+  end subroutine velocity_equations_of
+
+  !> The image of the point called `name` on a plan ((0, 0), the pole, for a blank name).
+  pure function image_of(images, name) result(v)
+    type(plan_vector_t), intent(in) :: images(:)
+    character(*), intent(in) :: name
+    real(wp) :: v(2)
+    integer :: j
+    v = 0.0_wp
+    if (len_trim(name) == 0) return
+    do j = 1, size(images)
+      if (images(j)%name == name) v = images(j)%v
+    end do
+  end function image_of
 
   !> The vector equations of the acceleration plan in the order the graphical method draws
   !> them, group by group (groups_of): a point of the group's links is drawn when every link
@@ -1252,6 +1331,15 @@ contains
     call out%put('  "velocity_residual": '//full_number(plans%velocity_residual)//',')
     call put_vectors(out, "acceleration_plan", plans%accelerations, "m/s^2")
     call out%put('  "acceleration_residual": '//full_number(plans%acceleration_residual)//',')
+    call out%put('  "velocity_equations": [')
+    do i = 1, size(plans%velocity_equations)
+      associate (eq => plans%velocity_equations(i))
+        line = '    {"point": "'//trim(eq%point)//'", "link": "'//trim(eq%link)//'", "from": "'//trim(eq%from)// &
+          '", "slider": "'//trim(eq%slider)//'", "vectors": ['//vectors_json(eq%vectors)//"]}"
+      end associate
+      call put_item(out, line, i < size(plans%velocity_equations))
+    end do
+    call out%put("  ],")
     call out%put('  "acceleration_equations": [')
     do i = 1, size(plans%equations)
       associate (eq => plans%equations(i))

@@ -69,7 +69,7 @@ contains
     call out%put(svg_text(12.0_wp, 25.5_wp, line, 'class="small"'))
 
     call put_plan(out, boxes, plans%velocities, [12.0_wp, 32.0_wp, 91.0_wp, 88.0_wp], &
-      word("Plan of velocities", lang), "p", "μv", unit_word("m/s", lang), lang)
+      word("Plan of velocities", lang), "p", "μv", unit_word("m/s", lang), lang, plans%velocity_equations)
     call put_plan(out, boxes, plans%accelerations, [107.0_wp, 32.0_wp, 91.0_wp, 88.0_wp], &
       word("Plan of accelerations", lang), "π", "μa", unit_word("m/s^2", lang), lang, plans%equations)
     ! the lever: the velocity plan turned by 90 deg, the loads at their images
@@ -177,7 +177,11 @@ contains
         call chain_tips(equations(e), images, tips)
         v = reshape([v, tips], [2, size(v, 2) + size(tips, 2)])
       end do
-      legend = word("components: n normal, τ tangential, k Coriolis, r relative", lang)
+      if (unit == unit_word("m/s", lang)) then
+        legend = word("relative velocities: v_PQ of a link's points, r along a guide", lang)
+      else
+        legend = word("components: n normal, τ tangential, k Coriolis, r relative", lang)
+      end if
       inner(4) = inner(4) - 3.0_wp
     end if
     call fit(v, inner, mu, pole)
