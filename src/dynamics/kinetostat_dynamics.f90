@@ -417,30 +417,28 @@ contains
     logical, intent(out) :: ok
     real(wp) :: e0, f, df, w_max, w_min, p_max, p_min, step, wm
     integer :: it
+    logical :: converged
     wm = cycle%omega_mean
     e0 = 0.5_wp * (j_fw + maxval(cycle%j)) * wm**2 - minval(cycle%dt)
     ok = .false.
     delta = 0.0_wp
-    do it = 1, 100
+    converged = .false.
+    ! at most 100 Newton steps on e0; the extremes are evaluated once more after the last one
+    do it = 1, 101
       if (.not. all(e0 + cycle%dt > 0.0_wp)) then
         ok = .false.
         return
       end if
       call extremes(source, cycle, j_fw, e0, w_max, p_max, w_min, p_min, ok)
       if (.not. ok) return
+      if (converged .or. it == 101) exit
       f = 0.5_wp * (w_max + w_min) - wm
       df = 0.5_wp * (1.0_wp / ((j_fw + j_at(source, cycle, p_max)) * w_max) + &
                      1.0_wp / ((j_fw + j_at(source, cycle, p_min)) * w_min))
       step = f / df
       e0 = e0 - step
-      if (abs(step) <= 1.0e-15_wp * abs(e0) .or. abs(f) <= 1.0e-15_wp * wm) exit
+      converged = abs(step) <= 1.0e-15_wp * abs(e0) .or. abs(f) <= 1.0e-15_wp * wm
     end do
-    if (.not. all(e0 + cycle%dt > 0.0_wp)) then
-      ok = .false.
-      return
-    end if
-    call extremes(source, cycle, j_fw, e0, w_max, p_max, w_min, p_min, ok)
-    if (.not. ok) return
     if (.not. w_min > 0.0_wp) then
       ok = .false.
       return
