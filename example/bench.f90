@@ -294,21 +294,9 @@ contains
     type(deck_source_t) :: source
     type(error_t), allocatable :: error
     character(len=:), allocatable :: text
-    integer :: k, last
     call load_deck(deck, source, error)
     if (allocated(error)) error stop "bench: run from the project root (cannot read the bundled decks)"
-    last = deck_line_count(source)
-    do k = deck_line_count(source), 1, -1
-      if (adjustl(deck_line(source, k)) == "/") then
-        last = k
-        exit
-      end if
-    end do
-    text = ""
-    do k = 1, last - 1
-      text = text//trim(deck_line(source, k))//new_line("a")
-    end do
-    text = text//"  "//extra//new_line("a")//"/"//new_line("a")
+    text = with_assignments(source, extra)
     per_step = 1.0e6_wp * solve_seconds(bench_case_t(kind, deck), text, .false.) / n
   end function per_step
 
@@ -356,11 +344,20 @@ contains
     type(deck_source_t) :: source
     type(error_t), allocatable :: error
     character(len=32) :: dphi, count
-    integer :: k, last
     call load_deck(trim(c%deck), source, error)
     if (allocated(error)) error stop "bench: run from the project root (cannot read the bundled decks)"
     write (dphi, '(es24.17)') 360.0_wp / (n - 1)
     write (count, '(i0)') n
+    text = with_assignments(source, "dphi = "//trim(dphi)//", n = "//trim(count))
+  end function one_turn_deck
+
+  !> The text of a deck with `extra` assignments added to its group, before the closing '/'
+  !> (namelist: the last value given wins).
+  function with_assignments(source, extra) result(text)
+    type(deck_source_t), intent(in) :: source
+    character(*), intent(in) :: extra
+    character(len=:), allocatable :: text
+    integer :: k, last
     last = deck_line_count(source)
     do k = deck_line_count(source), 1, -1
       if (adjustl(deck_line(source, k)) == "/") then
@@ -372,8 +369,8 @@ contains
     do k = 1, last - 1
       text = text//trim(deck_line(source, k))//new_line("a")
     end do
-    text = text//"  dphi = "//trim(dphi)//", n = "//trim(count)//new_line("a")//"/"//new_line("a")
-  end function one_turn_deck
+    text = text//"  "//extra//new_line("a")//"/"//new_line("a")
+  end function with_assignments
 
   !> Amdahl's law: the speed-up on `cores` cores of a run whose serial fraction is `serial`.
   pure real(wp) function amdahl(serial, cores)
@@ -393,7 +390,6 @@ contains
     type(error_t), allocatable :: error
     character(len=:), allocatable :: extra
     character(len=32) :: dphi, count
-    integer :: k, last
     call load_deck(trim(c%deck), source, error)
     if (allocated(error)) error stop "bench: run from the project root (cannot read the bundled decks)"
     write (dphi, '(es24.17)') 360.0_wp / n
@@ -411,18 +407,7 @@ contains
     case default
       extra = "dphi = "//trim(dphi)//", n = "//trim(count)//", ds_dphi = "//trim(count)//"*0.01"
     end select
-    last = deck_line_count(source)
-    do k = deck_line_count(source), 1, -1
-      if (adjustl(deck_line(source, k)) == "/") then
-        last = k
-        exit
-      end if
-    end do
-    text = ""
-    do k = 1, last - 1
-      text = text//trim(deck_line(source, k))//new_line("a")
-    end do
-    text = text//"  "//extra//new_line("a")//"/"//new_line("a")
+    text = with_assignments(source, extra)
   end function scaled_deck
 
   !> Seconds of the solve alone (kernel and step table, in the run's blocks of steps) of a
