@@ -339,16 +339,28 @@ contains
     real(wp), intent(in) :: p(2)
     !> Position (m), velocity (m/s), acceleration (m/s^2).
     real(wp), intent(out) :: x(2), v(2), a(2)
-    real(wp) :: r(2)
     if (i == 0) then
       x = p; v = 0.0_wp; a = 0.0_wp
       return
     end if
-    r = rotate(p - mech%links(i)%c, q(3 * i))
+    call state_at(q, qd, qdd, i, rotate(p - mech%links(i)%c, q(3 * i)), x, v, a)
+  end subroutine link_point_state
+
+  !> Position, velocity and acceleration of the point of moving link `i` at `r` (m) from its
+  !> origin, turned with the link.
+  pure subroutine state_at(q, qd, qdd, i, r, x, v, a)
+    !> Poses and their derivatives.
+    real(wp), intent(in) :: q(:), qd(:), qdd(:)
+    !> Link index (> 0).
+    integer, intent(in) :: i
+    !> The point from the link's origin in the global frame, m.
+    real(wp), intent(in) :: r(2)
+    !> Position (m), velocity (m/s), acceleration (m/s^2).
+    real(wp), intent(out) :: x(2), v(2), a(2)
     x = q(3 * i - 2:3 * i - 1) + r
     v = qd(3 * i - 2:3 * i - 1) + qd(3 * i) * perp(r)
     a = qdd(3 * i - 2:3 * i - 1) + qdd(3 * i) * perp(r) - qd(3 * i)**2 * r
-  end subroutine link_point_state
+  end subroutine state_at
 
   !> cos and sin of every link's turn in poses q (column 0: the frame's, of a turn 0): with
   !> `turned`, rotate's arithmetic without a cos and a sin per call.
@@ -425,15 +437,11 @@ contains
     real(wp), intent(in) :: p(2)
     !> Position (m), velocity (m/s), acceleration (m/s^2).
     real(wp), intent(out) :: x(2), v(2), a(2)
-    real(wp) :: r(2)
     if (i == 0) then
       x = p; v = 0.0_wp; a = 0.0_wp
       return
     end if
-    r = turned(cs, i, p - mech%links(i)%c)
-    x = q(3 * i - 2:3 * i - 1) + r
-    v = qd(3 * i - 2:3 * i - 1) + qd(3 * i) * perp(r)
-    a = qdd(3 * i - 2:3 * i - 1) + qdd(3 * i) * perp(r) - qd(3 * i)**2 * r
+    call state_at(q, qd, qdd, i, turned(cs, i, p - mech%links(i)%c), x, v, a)
   end subroutine state_cs
 
   !> Angle of link i (0: frame) in pose q, rad.
