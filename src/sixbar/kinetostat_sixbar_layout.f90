@@ -459,9 +459,7 @@ contains
     type(text_buffer_t), intent(inout) :: later
     integer :: k
     if (first == 1 .and. table%first_block()) then
-      do k = 1, size(header_lines_ru)
-        call out%put(trim(header_lines_ru(k)))
-      end do
+      call out%put_lines(header_lines_ru)
       call out%put(dotted_rule)
     end if
     do k = first, last
@@ -470,9 +468,7 @@ contains
     ! the closing rule, the legend and the moment block follow the last row (in `later`)
     if (first == 1 .and. table%first_block()) then
       call later%put(dotted_rule)
-      do k = 1, size(legend_ru)
-        call later%put(trim(legend_ru(k)))
-      end do
+      call later%put_lines(legend_ru)
       call put_heading(later, trim(moment_block_ru(1)))
       call later%put(trim(moment_block_ru(2)))
       call later%put(trim(moment_block_ru(3)))
