@@ -149,11 +149,7 @@ contains
     !> Finite value.
     real(wp), intent(in) :: x
     character(len=:), allocatable :: text
-    character(len=scratch_len) :: buf
-    integer :: n
-    n = 0
-    call put_es_compact(x + 0.0_wp, full_digits, full_exponent_digits, buf, n)
-    text = buf(1:n)
+    text = cell_number(x, .false.)
   end function full_number
 
   !> A whole number without blanks (flags and counts); full_number when beyond 1e15.
@@ -161,11 +157,7 @@ contains
     !> Finite value.
     real(wp), intent(in) :: x
     character(len=:), allocatable :: text
-    character(len=scratch_len) :: buf
-    integer :: n
-    n = 0
-    call put_cell_text(x, .true., buf, n)
-    text = buf(1:n)
+    text = cell_number(x, .true.)
   end function whole_number
 
   !> A CSV cell or JSON number: whole_number for flags and counts, full_number otherwise.
