@@ -625,8 +625,8 @@ contains
     character(*), intent(in) :: name
     integer :: i
     dynamics_index = 0
-    if (allocated(self%dynamics)) &
-      dynamics_index = findloc([(self%dynamics(i)%name == name, i = 1, size(self%dynamics))], .true., dim=1)
+    if (.not. allocated(self%dynamics)) return
+    dynamics_index = findloc([(self%dynamics(i)%name == name, i = 1, size(self%dynamics))], .true., dim=1)
   end function dynamics_index
 
   !> The value of the DYNAMICS record called `name` (0 when there is none).
