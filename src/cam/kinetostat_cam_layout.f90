@@ -150,8 +150,9 @@ contains
     type(step_table_t), intent(inout) :: table
     real(wp) :: carry(4)
     if (table%first_block()) table%carry = [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp]
-    call tally(steps%jammed, step1, table%carry(1:2))
-    call tally(steps%lost, step1, table%carry(3:4))
+    ! counts and first steps taken here: a flag array passed as an argument would be copied
+    call tally(count(steps%jammed), findloc(steps%jammed, .true., dim=1), step1, table%carry(1:2))
+    call tally(count(steps%lost), findloc(steps%lost, .true., dim=1), step1, table%carry(3:4))
     if (step1 - 1 + size(steps) < deck%n) return
     carry = table%carry
     call warn_flagged(deck, carry(1:2), "the follower jams (self-locking: no finite contact force moves it)", table)
@@ -159,15 +160,17 @@ contains
   end subroutine flag_warnings
 
   !> Adds a block's flagged steps to `carry` (count, first flagged step).
-  pure subroutine tally(flags, step1, carry)
-    !> The flag of each step of the block.
-    logical, intent(in) :: flags(:)
-    !> Step number of flags(1).
+  pure subroutine tally(flagged, first, step1, carry)
+    !> How many steps of the block are flagged.
+    integer, intent(in) :: flagged
+    !> The first flagged step of the block (0: none).
+    integer, intent(in) :: first
+    !> Step number of the block's first step.
     integer, intent(in) :: step1
     !> Count so far and the first flagged step (0 while none).
     real(wp), intent(inout) :: carry(2)
-    if (any(flags) .and. carry(1) == 0.0_wp) carry(2) = real(step1 - 1 + findloc(flags, .true., dim=1), wp)
-    carry(1) = carry(1) + real(count(flags), wp)
+    if (flagged > 0 .and. carry(1) == 0.0_wp) carry(2) = real(step1 - 1 + first, wp)
+    carry(1) = carry(1) + real(flagged, wp)
   end subroutine tally
 
   !> The warning for the steps a flag counted (`carry`: count, first step), when there are any.
