@@ -8,7 +8,7 @@ module test_decimal
   use, intrinsic :: iso_fortran_env, only: int64
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use kinetostat_kinds, only: wp
-  use kinetostat_decimal, only: edit_f, edit_e, edit_es, put_es_compact, put_whole
+  use kinetostat_decimal, only: edit_f, edit_exponent, put_es_compact, put_whole
   use test_harness, only: test_counts_t, check_true
   implicit none
   private
@@ -79,7 +79,7 @@ contains
     k = 0
     do i = 1, sample_count
       x = sample(state, i)
-      call edit_es(x, 12, 3, mine)
+      call edit_exponent(x, 12, 3, scientific=.true., text=mine)
       write (theirs, '(es20.12e3)') x
       pos = 0
       call put_es_compact(x, 12, 3, compact, pos)
@@ -125,11 +125,11 @@ contains
       call edit_f(x, dsc%d, mine)
       write (fmt, '("(f",i0,".",i0,")")') dsc%w, dsc%d
     case ("E")
-      call edit_e(x, dsc%d, dsc%e, mine)
+      call edit_exponent(x, dsc%d, dsc%e, scientific=.false., text=mine)
       write (fmt, '("(e",i0,".",i0,"e",i0,")")') dsc%w, dsc%d, dsc%e
       if (dsc%e == 0) write (fmt, '("(e",i0,".",i0,")")') dsc%w, dsc%d
     case default
-      call edit_es(x, dsc%d, dsc%e, mine)
+      call edit_exponent(x, dsc%d, dsc%e, scientific=.true., text=mine)
       write (fmt, '("(es",i0,".",i0,"e",i0,")")') dsc%w, dsc%d, dsc%e
       if (dsc%e == 0) write (fmt, '("(es",i0,".",i0,")")') dsc%w, dsc%d
     end select

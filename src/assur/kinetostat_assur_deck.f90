@@ -13,7 +13,7 @@ module kinetostat_assur_deck
   use kinetostat_deck, only: longest_quoted, deck_line_count, deck_line, &
     begin_group, deck_context_t, unset_real, unset_bits, max_deck_array, &
     deck_array_capacities, deck_source_t, namelist_probe_t, deck_error, require_all_set, is_set, require_set, require_positive, &
-    require_nonnegative, require_rule, optional_default, count_values, steps_over_turn, &
+    require_nonnegative, require_rule, require_per_step, optional_default, count_values, steps_over_turn, &
     is_whole_in, require_whole
   use kinetostat_vec2, only: unit_at, rotate, magnitude, cross
   use kinetostat_assur_kinematics, only: link_state_t, point_state_t, point_on, dyad_pose_t, kind_names, &
@@ -603,11 +603,9 @@ contains
       call require_rule(ctx, "omega1", .not. is_set(omega1), &
         "give either omega1 (constant) or omega1_step(:) with eps1_step(:), not both", error)
       if (allocated(error)) return
-      call require_rule(ctx, "omega1_step", n_omega == deck%n, "expected "//int_str(deck%n)// &
-        " values (one per step), got "//int_str(n_omega), error)
+      call require_per_step(ctx, "omega1_step", n_omega, deck%n, error)
       if (allocated(error)) return
-      call require_rule(ctx, "eps1_step", n_eps == deck%n, "expected "//int_str(deck%n)// &
-        " values (one per step), got "//int_str(n_eps), error)
+      call require_per_step(ctx, "eps1_step", n_eps, deck%n, error)
       if (allocated(error)) return
       deck%prescribed = .true.
       ! the read buffers are the deck's arrays (no second copy)

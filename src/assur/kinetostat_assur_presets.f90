@@ -3,7 +3,6 @@
 !> the tutorial's decks (docs/examples/, compared byte for byte by test/cli/test_templates.sh).
 module kinetostat_assur_presets
   use kinetostat_text_buffer, only: text_buffer_t
-  use kinetostat_deck, only: write_template_lines
   implicit none
   private
   public :: assur_preset, preset_names
@@ -74,9 +73,9 @@ contains
     found = .true.
     select case (name)
     case ("fourbar")
-      call write_template_lines(out, fourbar_lines)
+      call out%put_lines(fourbar_lines)
     case ("engine")
-      call write_template_lines(out, engine_lines)
+      call out%put_lines(engine_lines)
     case default
       found = .false.
     end select

@@ -148,30 +148,48 @@ contains
     integer, intent(in) :: step1
     !> Where the warnings go.
     type(step_table_t), intent(inout) :: table
-    integer :: first
+    real(wp) :: carry(4)
     if (table%first_block()) table%carry = [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp]
-    if (any(steps%jammed) .and. table%carry(1) == 0.0_wp) then
-      table%carry(2) = real(step1 - 1 + findloc(steps%jammed, .true., dim=1), wp)
-    end if
-    if (any(steps%lost) .and. table%carry(3) == 0.0_wp) then
-      table%carry(4) = real(step1 - 1 + findloc(steps%lost, .true., dim=1), wp)
-    end if
-    table%carry(1) = table%carry(1) + real(count(steps%jammed), wp)
-    table%carry(3) = table%carry(3) + real(count(steps%lost), wp)
+    ! counts and first steps taken here: a flag array passed as an argument would be copied
+    call tally(count(steps%jammed), findloc(steps%jammed, .true., dim=1), step1, table%carry(1:2))
+    call tally(count(steps%lost), findloc(steps%lost, .true., dim=1), step1, table%carry(3:4))
     if (step1 - 1 + size(steps) < deck%n) return
-    if (table%carry(1) > 0.0_wp) then
-      first = nint(table%carry(2))
-      call table%add_warning("the follower jams (self-locking: no finite contact force moves it) at "// &
-        counted(nint(table%carry(1)), "step")//", the first at step "//int_str(first)//" (phi = "// &
-        number_str(cam_phi_deg(deck, first))//" deg); no forces there (empty in CSV, null in JSON, left out of the summary)")
-    end if
-    if (table%carry(3) > 0.0_wp) then
-      first = nint(table%carry(4))
-      call table%add_warning("contact is lost (F2 <= 0 does not hold the follower on the cam) at "// &
-        counted(nint(table%carry(3)), "step")//", the first at step "//int_str(first)//" (phi = "// &
-        number_str(cam_phi_deg(deck, first))//" deg); no forces there (empty in CSV, null in JSON, left out of the summary)")
-    end if
+    carry = table%carry
+    call warn_flagged(deck, carry(1:2), "the follower jams (self-locking: no finite contact force moves it)", table)
+    call warn_flagged(deck, carry(3:4), "contact is lost (F2 <= 0 does not hold the follower on the cam)", table)
   end subroutine flag_warnings
+
+  !> Adds a block's flagged steps to `carry` (count, first flagged step).
+  pure subroutine tally(flagged, first, step1, carry)
+    !> How many steps of the block are flagged.
+    integer, intent(in) :: flagged
+    !> The first flagged step of the block (0: none).
+    integer, intent(in) :: first
+    !> Step number of the block's first step.
+    integer, intent(in) :: step1
+    !> Count so far and the first flagged step (0 while none).
+    real(wp), intent(inout) :: carry(2)
+    if (flagged > 0 .and. carry(1) == 0.0_wp) carry(2) = real(step1 - 1 + first, wp)
+    carry(1) = carry(1) + real(flagged, wp)
+  end subroutine tally
+
+  !> The warning for the steps a flag counted (`carry`: count, first step), when there are any.
+  pure subroutine warn_flagged(deck, carry, what, table)
+    !> Validated deck.
+    type(cam_deck_t), intent(in) :: deck
+    !> Count and first flagged step.
+    real(wp), intent(in) :: carry(2)
+    !> What happens at those steps.
+    character(*), intent(in) :: what
+    !> Where the warning goes.
+    type(step_table_t), intent(inout) :: table
+    integer :: first
+    if (.not. carry(1) > 0.0_wp) return
+    first = nint(carry(2))
+    call table%add_warning(what//" at "//counted(nint(carry(1)), "step")//", the first at step "//int_str(first)// &
+      " (phi = "//number_str(cam_phi_deg(deck, first))//" deg); no forces there (empty in CSV, null in JSON, left out of"// &
+      " the summary)")
+  end subroutine warn_flagged
 
   !> The CSV row of step k (flags as 0/1; forces 0 when jammed or contact lost).
   pure function cam_csv_values(deck, s, k) result(v)

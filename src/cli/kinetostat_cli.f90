@@ -188,7 +188,7 @@ contains
     type(step_table_t) :: table
     type(text_buffer_t) :: out
     type(spool_t) :: spool
-    integer :: i, warnings
+    integer :: warnings
     logical :: ran, committed
 
     ran = .false.
@@ -203,9 +203,7 @@ contains
     end if
     if (.not. allocated(error)) then
       if (args%help) then
-        do i = 1, size(help_lines)
-          call out%put(trim(help_lines(i)))
-        end do
+        call out%put_lines(help_lines)
         call out%put("Kinds: "//known_kinds())
         call out%put("Presets (template): "//preset_names)
         call out%put("Formats: "//format_names)

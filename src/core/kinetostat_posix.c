@@ -319,6 +319,15 @@ int kinetostat_output_plan(const char *path, char *final, int cap, int *fd) {
   return -ELOOP;
 }
 
+/* Open `path` for reading: the descriptor, or -errno. */
+int kinetostat_open_read(const char *path) {
+  for (;;) {
+    int fd = open(path, O_RDONLY | O_NOCTTY | O_CLOEXEC);
+    if (fd >= 0) return fd;
+    if (errno != EINTR) return -errno;
+  }
+}
+
 /* Open a non-regular target (plan 2) for writing as it is: the descriptor, or -errno. A
  * FIFO blocks here until a reader opens it. */
 int kinetostat_open_direct(const char *path) {
@@ -379,10 +388,11 @@ int kinetostat_write_all(int fd, const char *buf, long long count) {
   return 0;
 }
 
-/* Read up to `count` bytes of `fd` at `offset`: the number read (0 at its end), or -errno. */
+/* Read up to `count` bytes of `fd` at `offset` (offset < 0: from where it stands, as a pipe
+ * or a terminal is read): the number read (0 at its end), or -errno. */
 long long kinetostat_read_at(int fd, char *buf, long long count, long long offset) {
   for (;;) {
-    ssize_t n = pread(fd, buf, (size_t) count, (off_t) offset);
+    ssize_t n = offset < 0 ? read(fd, buf, (size_t) count) : pread(fd, buf, (size_t) count, (off_t) offset);
     if (n >= 0) return n;
     if (errno != EINTR) return -errno;
   }

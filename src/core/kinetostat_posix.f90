@@ -2,22 +2,20 @@
 !> kinetostat_posix.c): checked writes to file descriptors, where `-o PATH` goes (links
 !> followed one by one), temporaries that cannot be hijacked (O_EXCL|O_NOFOLLOW, mode 600,
 !> random names) removed when a signal ends the process, atomic replacement of a file, the
-!> process id, reading standard input as bytes, whether standard error is a terminal, child
-!> processes.
+!> process id, whether standard error is a terminal, child processes (a deck's bytes are
+!> read by kinetostat_deck_reader).
 module kinetostat_posix
   use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_size_t, c_long, c_long_long
   use, intrinsic :: iso_fortran_env, only: int64
   implicit none
   private
-  public :: process_id, write_standard_output, read_standard_input
+  public :: process_id, write_standard_output
   public :: stderr_is_terminal
   public :: fork_process, wait_process, exit_now, cpu_count
   public :: guard_signals, output_plan, temp_beside, temp_anonymous, temp_remove, open_direct
-  public :: replace_file, write_fd, read_fd_at, close_fd, system_error_text
+  public :: replace_file, write_fd, read_fd_at, read_fd, open_read, close_fd, system_error_text
   public :: plan_replace, plan_direct, plan_descriptor
 
-  !> Bytes asked for by one read of standard input.
-  integer, parameter :: read_chunk = 65536
   !> Longest path handled (bytes).
   integer, parameter :: path_capacity = 4096
 
@@ -46,14 +44,6 @@ module kinetostat_posix
       character(kind=c_char), intent(out) :: buf(count)
       integer(c_long_long) :: got
     end function c_read_at
-    function c_read(fd, buf, count) bind(c, name="read") result(got)
-      import :: c_int, c_char, c_size_t, c_long, read_chunk
-      implicit none
-      integer(c_int), value :: fd
-      character(kind=c_char), intent(out) :: buf(read_chunk)
-      integer(c_size_t), value :: count
-      integer(c_long) :: got
-    end function c_read
     function c_close(fd) bind(c, name="kinetostat_close") result(err)
       import :: c_int
       implicit none
@@ -97,6 +87,12 @@ module kinetostat_posix
       implicit none
       character(kind=c_char), intent(in) :: name(*)
     end subroutine c_temp_remove
+    function c_open_read(path) bind(c, name="kinetostat_open_read") result(fd)
+      import :: c_int, c_char
+      implicit none
+      character(kind=c_char), intent(in) :: path(*)
+      integer(c_int) :: fd
+    end function c_open_read
     function c_open_direct(path) bind(c, name="kinetostat_open_direct") result(fd)
       import :: c_int, c_char
       implicit none
@@ -251,6 +247,25 @@ contains
     end if
   end function read_fd_at
 
+  !> The next bytes of `fd` as it is read in sequence (a pipe, a terminal, standard input, a
+  !> file opened by open_read): the number read (0 at its end, -errno when refused).
+  integer(int64) function read_fd(fd, count, text)
+    !> The descriptor.
+    integer, intent(in) :: fd
+    !> Bytes wanted (>= 1).
+    integer, intent(in) :: count
+    !> The bytes read.
+    character(len=:), allocatable, intent(out) :: text
+    read_fd = read_fd_at(fd, count, -1_int64, text)
+  end function read_fd
+
+  !> Open `path` for reading: its descriptor, or -errno when it cannot be opened.
+  integer function open_read(path)
+    !> The file.
+    character(*), intent(in) :: path
+    open_read = int(c_open_read(path//c_null_char))
+  end function open_read
+
   !> Close descriptor `fd`: 0, or the errno of a deferred write error.
   integer function close_fd(fd)
     !> The descriptor.
@@ -306,38 +321,6 @@ contains
     character(*), intent(in) :: text
     write_standard_output = write_fd(1, text)
   end function write_standard_output
-
-  !> All of standard input (file descriptor 0) as bytes, read to its end: a pipe, a
-  !> terminal or a redirected file alike (read once; nothing is rewound). False when the
-  !> system refused a read.
-  logical function read_standard_input(text)
-    !> The bytes read (empty on failure).
-    character(len=:), allocatable, intent(out) :: text
-    character(len=read_chunk) :: buf
-    character(len=:), allocatable :: grown
-    integer(c_long) :: got
-    integer :: n
-    allocate (character(len=read_chunk) :: text)
-    n = 0
-    read_standard_input = .true.
-    do
-      got = c_read(0_c_int, buf, int(read_chunk, c_size_t))
-      if (got == 0) exit
-      if (got < 0) then
-        read_standard_input = .false.
-        text = ""
-        return
-      end if
-      if (n + int(got) > len(text)) then
-        allocate (character(len=2 * len(text) + int(got)) :: grown)
-        grown(1:n) = text(1:n)
-        call move_alloc(grown, text)
-      end if
-      text(n + 1:n + int(got)) = buf(1:int(got))
-      n = n + int(got)
-    end do
-    text = text(1:n)
-  end function read_standard_input
 
   !> Whether standard error (file descriptor 2) is a terminal (progress lines go there only then).
   logical function stderr_is_terminal()

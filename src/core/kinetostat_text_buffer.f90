@@ -16,6 +16,7 @@ module kinetostat_text_buffer
     integer :: length = 0
   contains
     procedure :: put
+    procedure :: put_lines
     procedure :: append
     procedure :: end_line
     procedure :: reserve
@@ -36,6 +37,18 @@ contains
     self%data(need:need) = new_line("a")
     self%length = need
   end subroutine put
+
+  !> Append lines, each without its trailing blanks.
+  pure subroutine put_lines(self, lines)
+    class(text_buffer_t), intent(inout) :: self
+    !> The lines (of one length, blank-padded).
+    character(*), intent(in) :: lines(:)
+    integer :: i
+    !GCC$ novector
+    do i = 1, size(lines)
+      call self%put(trim(lines(i)))
+    end do
+  end subroutine put_lines
 
   !> Append text to the current line (no newline).
   pure subroutine append(self, s)

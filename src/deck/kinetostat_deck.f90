@@ -5,7 +5,6 @@ module kinetostat_deck
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use, intrinsic :: iso_fortran_env, only: int64
   use kinetostat_kinds, only: wp
-  use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_error, only: error_t, fatal_error, exit_input
   use kinetostat_text, only: real_str, int_str, int64_str, number_str, lower, printable, clipped
   use kinetostat_deck_reader, only: read_bytes_limited, read_ok, read_too_long
@@ -15,9 +14,9 @@ module kinetostat_deck
   public :: deck_source_t, load_deck, deck_source_from_text, stdin_deck_path, stdin_deck_name
   public :: deck_line_count, deck_line, deck_line_length, release_deck_text
   public :: read_group_name, namelist_failure, deck_error, namelist_probe_t, require_all_set
-  public :: is_set, require_set, require_positive, require_nonnegative, require_rule
+  public :: is_set, require_set, require_positive, require_nonnegative, require_rule, require_per_step
   public :: is_whole_in, require_whole
-  public :: optional_default, count_values, steps_over_turn, write_template_lines
+  public :: optional_default, count_values, steps_over_turn
   public :: check_namelist_syntax, longest_quoted, begin_group
   public :: deck_array_capacities, max_deck_size, set_max_deck_size, default_max_deck_size, assignment_starts
 
@@ -132,18 +131,6 @@ module kinetostat_deck
   end type deck_context_t
 
 contains
-
-  !> A template deck held as lines (trailing blanks dropped).
-  pure subroutine write_template_lines(out, lines)
-    !> Where the lines go.
-    type(text_buffer_t), intent(inout) :: out
-    !> The deck's lines.
-    character(*), intent(in) :: lines(:)
-    integer :: i
-    do i = 1, size(lines)
-      call out%put(trim(lines(i)))
-    end do
-  end subroutine write_template_lines
 
   !> Read a whole deck file into memory (any line length, LF or CRLF line ends, with or
   !> without a final newline, optional UTF-8 byte-order mark). The path "-" reads standard
@@ -1783,6 +1770,20 @@ contains
     type(error_t), allocatable, intent(out) :: error
     if (.not. ok) call deck_error(ctx, name, reason, error)
   end subroutine require_rule
+
+  !> A per-step list `name` of `count` values must have one value per step (`n`).
+  pure subroutine require_per_step(ctx, name, count, n, error)
+    type(deck_context_t), intent(in) :: ctx
+    !> The list's variable name.
+    character(*), intent(in) :: name
+    !> How many values the deck gave.
+    integer, intent(in) :: count
+    !> Number of steps.
+    integer, intent(in) :: n
+    type(error_t), allocatable, intent(out) :: error
+    if (count /= n) call deck_error(ctx, name, "expected "//int_str(n)//" values (one per step), got "// &
+                                    int_str(count), error)
+  end subroutine require_per_step
 
   !> An optional real: its default when unset (validity is checked by the caller).
   elemental function optional_default(x, default) result(y)

@@ -2,9 +2,8 @@
 !> device such as /dev/zero, a file the system reports as empty) in chunks, never more than
 !> a limit: endless input stops at the limit with an error instead of growing without end.
 module kinetostat_deck_reader
-  use, intrinsic :: iso_c_binding, only: c_ptr, c_null_ptr, c_associated, c_char, c_int, c_long, &
-    c_size_t, c_null_char
   use, intrinsic :: iso_fortran_env, only: int64
+  use kinetostat_posix, only: open_read, read_fd, close_fd
   implicit none
   private
   public :: read_bytes_limited, read_ok, read_too_long, read_failed, read_not_opened
@@ -19,44 +18,6 @@ module kinetostat_deck_reader
   integer, parameter :: read_failed = 2
   !> Status: the path could not be opened.
   integer, parameter :: read_not_opened = 3
-
-  ! allow(assumed-size)
-  interface
-    function c_fopen(path, mode) bind(c, name="fopen") result(stream)
-      import :: c_ptr, c_char
-      implicit none
-      character(kind=c_char), intent(in) :: path(*), mode(*)
-      type(c_ptr) :: stream
-    end function c_fopen
-    function c_fread(buf, size, count, stream) bind(c, name="fread") result(got)
-      import :: c_ptr, c_char, c_size_t, chunk
-      implicit none
-      character(kind=c_char), intent(out) :: buf(chunk)
-      integer(c_size_t), value :: size, count
-      type(c_ptr), value :: stream
-      integer(c_size_t) :: got
-    end function c_fread
-    function c_ferror(stream) bind(c, name="ferror") result(status)
-      import :: c_ptr, c_int
-      implicit none
-      type(c_ptr), value :: stream
-      integer(c_int) :: status
-    end function c_ferror
-    function c_fclose(stream) bind(c, name="fclose") result(status)
-      import :: c_ptr, c_int
-      implicit none
-      type(c_ptr), value :: stream
-      integer(c_int) :: status
-    end function c_fclose
-    function c_read(fd, buf, count) bind(c, name="read") result(got)
-      import :: c_int, c_char, c_size_t, c_long, chunk
-      implicit none
-      integer(c_int), value :: fd
-      character(kind=c_char), intent(out) :: buf(chunk)
-      integer(c_size_t), value :: count
-      integer(c_long) :: got
-    end function c_read
-  end interface
 
 contains
 
@@ -73,14 +34,13 @@ contains
     character(len=:), allocatable, intent(out) :: text
     !> read_ok, read_too_long, read_failed or read_not_opened.
     integer, intent(out) :: status
-    character(len=chunk) :: buf
-    character(len=:), allocatable :: grown
-    type(c_ptr) :: stream
+    character(len=:), allocatable :: piece, grown
     integer(int64) :: n, got
-    stream = c_null_ptr
+    integer :: fd
+    fd = 0
     if (len(path) > 0) then
-      stream = c_fopen(path//c_null_char, "rb"//c_null_char)
-      if (.not. c_associated(stream)) then
+      fd = open_read(path)
+      if (fd < 0) then
         status = read_not_opened
         text = ""
         return
@@ -90,20 +50,15 @@ contains
     allocate (character(len=chunk) :: text)
     n = 0
     do
-      if (c_associated(stream)) then
-        got = int(c_fread(buf, 1_c_size_t, int(chunk, c_size_t), stream), int64)
-        if (got == 0 .and. c_ferror(stream) /= 0) status = read_failed
-      else
-        got = int(c_read(0_c_int, buf, int(chunk, c_size_t)), int64)
-        if (got < 0) status = read_failed
-      end if
+      got = read_fd(fd, chunk, piece)
+      if (got < 0) status = read_failed
       if (got <= 0) exit
       if (n + got > len(text, int64)) then
         allocate (character(len=min(2 * len(text, int64), limit + chunk)) :: grown)
         grown(1:n) = text(1:n)
         call move_alloc(grown, text)
       end if
-      text(n + 1:n + got) = buf(1:got)
+      text(n + 1:n + got) = piece(1:got)
       n = n + got
       if (n > limit) then
         status = read_too_long
@@ -111,8 +66,8 @@ contains
         exit
       end if
     end do
-    if (c_associated(stream)) then
-      if (c_fclose(stream) /= 0 .and. status == read_ok) status = read_failed
+    if (len(path) > 0) then
+      if (close_fd(fd) /= 0 .and. status == read_ok) status = read_failed
     end if
     if (status == read_failed) n = 0
     text = text(1:n)

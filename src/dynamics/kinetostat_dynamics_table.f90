@@ -134,7 +134,7 @@ contains
     real(wp), intent(in) :: peak_const
     integer :: i
     real(wp) :: t, c
-    i = record_index(name//"_peak")
+    i = table%dynamics_index(name//"_peak")
     if (i == 0) then
       call table%dynamics_real(name//"_peak", peak_true, "N")
       call table%dynamics_real(name//"_peak_constant_speed", peak_const, "N")
@@ -148,19 +148,6 @@ contains
     c = table%dynamics(i + 1)%values(1)
     table%dynamics(i + 2)%values(1) = 0.0_wp
     if (c > 0.0_wp) table%dynamics(i + 2)%values(1) = 100.0_wp * (t - c) / c
-  contains
-    pure integer function record_index(key)
-      character(*), intent(in) :: key
-      integer :: j
-      record_index = 0
-      if (.not. allocated(table%dynamics)) return
-      do j = 1, size(table%dynamics)
-        if (table%dynamics(j)%name == key) then
-          record_index = j
-          return
-        end if
-      end do
-    end function record_index
   end subroutine note_constant_speed_cost
 
   !> An optional logical's value, false when absent.

@@ -12,7 +12,7 @@ module kinetostat_linkage_deck
   use kinetostat_text, only: int_str, lower, real_str
   use kinetostat_deck, only: longest_quoted, begin_group, &
     deck_context_t, unset_bits, deck_source_t, namelist_probe_t, &
-    deck_error, is_set, require_set, require_nonnegative, require_rule, optional_default, count_values, &
+    deck_error, is_set, require_set, require_nonnegative, require_rule, require_per_step, optional_default, count_values, &
     require_whole, deck_array_capacities
   use kinetostat_vec2, only: unit_at, magnitude
   use kinetostat_linkage, only: linkage_t, linkage_link_t, linkage_pair_t, linkage_drive_t, linkage_force_t, &
@@ -394,8 +394,7 @@ contains
           "give either values(:) or start and step, not both", error)
         if (allocated(error)) return
         if (nsteps == 0) nsteps = count
-        call require_rule(ctx, p//"values", count == nsteps, "expected "//int_str(nsteps)//" values (one per step), got "// &
-          int_str(count), error)
+        call require_per_step(ctx, p//"values", count, nsteps, error)
         if (allocated(error)) return
       else
         call require_set(ctx, p//"start", drive(k)%start, error); if (allocated(error)) return

@@ -552,7 +552,7 @@ contains
     type(linkage_deck_t), intent(in) :: deck
     type(step_table_t), intent(inout) :: table
     character(len=160), allocatable :: lines(:)
-    character(len=:), allocatable :: input, effort
+    character(len=:), allocatable :: input, effort, unit, rate_unit
     integer :: i, k
     associate (mech => deck%mech)
       call table%echo_int("FRAME", mech%frame_id, "")
@@ -586,25 +586,21 @@ contains
         call table%echo_line("   DRIVE "//int_str(k)//": PAIR "//trim(deck%drive_pair(k))//", INPUT "//input// &
                              ", EFFORT "//effort)
         if (mech%pairs(mech%drives(k)%pair)%kind == pair_r) then
-          call table%echo_real("  REFERENCE", mech%drives(k)%q_ref * rad_to_deg, "deg")
-          if (deck%listed(k)) then
-            call table%echo_array("  VALUES", deck%values(:, k), "deg")
-          else
-            call table%echo_real("  START", deck%start(k), "deg")
-            call table%echo_real("  STEP", deck%step(k), "deg")
-          end if
-          call echo_rate(table, "  OMEGA", deck%omega(k), deck%omega_column(k), "rad/s")
-          call echo_rate(table, "  EPS", deck%eps(k), deck%eps_column(k), "rad/s^2")
+          unit = "deg"
+          rate_unit = "rad/s"
+          call table%echo_real("  REFERENCE", mech%drives(k)%q_ref * rad_to_deg, unit)
         else
-          if (deck%listed(k)) then
-            call table%echo_array("  VALUES", deck%values(:, k), "m")
-          else
-            call table%echo_real("  START", deck%start(k), "m")
-            call table%echo_real("  STEP", deck%step(k), "m")
-          end if
-          call echo_rate(table, "  OMEGA", deck%omega(k), deck%omega_column(k), "m/s")
-          call echo_rate(table, "  EPS", deck%eps(k), deck%eps_column(k), "m/s^2")
+          unit = "m"
+          rate_unit = "m/s"
         end if
+        if (deck%listed(k)) then
+          call table%echo_array("  VALUES", deck%values(:, k), unit)
+        else
+          call table%echo_real("  START", deck%start(k), unit)
+          call table%echo_real("  STEP", deck%step(k), unit)
+        end if
+        call echo_rate(table, "  OMEGA", deck%omega(k), deck%omega_column(k), rate_unit)
+        call echo_rate(table, "  EPS", deck%eps(k), deck%eps_column(k), rate_unit//"^2")
       end do
       !GCC$ novector
       do k = 1, size(mech%forces)

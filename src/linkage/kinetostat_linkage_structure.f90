@@ -297,18 +297,12 @@ contains
     n = size(mech%links)
     p5 = size(mech%pairs)
     allocate (lines(0))
-    if (ru) then
-      call push(lines, "СТРУКТУРНЫЙ АНАЛИЗ")
-      call push(lines, "ПОДВИЖНЫХ ЗВЕНЬЕВ n = "//int_str(n)//", НИЗШИХ ПАР p5 = "//int_str(p5)// &
-        ", ВЫСШИХ ПАР p4 = 0")
-      call push(lines, "W = 3n - 2p5 - p4 = 3 x "//int_str(n)//" - 2 x "//int_str(p5)//" - 0 = "//int_str(3 * n - 2 * p5)// &
-               " = ЧИСЛО ПРИВОДОВ")
-    else
-      call push(lines, "STRUCTURAL ANALYSIS")
-      call push(lines, "MOVING LINKS n = "//int_str(n)//", LOWER PAIRS p5 = "//int_str(p5)//", HIGHER PAIRS p4 = 0")
-      call push(lines, "W = 3n - 2p5 - p4 = 3 x "//int_str(n)//" - 2 x "//int_str(p5)//" - 0 = "//int_str(3 * n - 2 * p5)// &
-               " = NUMBER OF DRIVES")
-    end if
+    call push(lines, either(ru, "STRUCTURAL ANALYSIS", "СТРУКТУРНЫЙ АНАЛИЗ"))
+    call push(lines, either(ru, "MOVING LINKS n = "//int_str(n)//", LOWER PAIRS p5 = "//int_str(p5)//", HIGHER PAIRS p4 = 0", &
+                            "ПОДВИЖНЫХ ЗВЕНЬЕВ n = "//int_str(n)//", НИЗШИХ ПАР p5 = "//int_str(p5)// &
+                            ", ВЫСШИХ ПАР p4 = 0"))
+    call push(lines, "W = 3n - 2p5 - p4 = 3 x "//int_str(n)//" - 2 x "//int_str(p5)//" - 0 = "//int_str(3 * n - 2 * p5)// &
+              either(ru, " = NUMBER OF DRIVES", " = ЧИСЛО ПРИВОДОВ"))
     top = 1
     !GCC$ novector
     do u = 1, size(mech%units)
@@ -317,56 +311,50 @@ contains
         if (un%class == 0) top = 99
         select case (un%class)
         case (1)
-          if (ru) then
-            line = un%label//"  ВХОДНОЕ ЗВЕНО (МЕХАНИЗМ I КЛАССА)"
-          else
-            line = un%label//"  INPUT LINK(S) (MECHANISM OF CLASS I)"
-          end if
+          line = either(ru, "INPUT LINK(S) (MECHANISM OF CLASS I)", &
+                        "ВХОДНОЕ ЗВЕНО (МЕХАНИЗМ I КЛАССА)")
         case (2)
-          if (ru) then
-            line = un%label//"  ДИАДА (ГРУППА II КЛАССА 2-ГО ПОРЯДКА), ВИД "//un%kind
-          else
-            line = un%label//"  DYAD (GROUP OF CLASS II, ORDER 2), KIND "//un%kind
-          end if
+          line = either(ru, "DYAD (GROUP OF CLASS II, ORDER 2), KIND ", &
+                        "ДИАДА (ГРУППА II КЛАССА 2-ГО ПОРЯДКА), ВИД ")//un%kind
         case (3)
           if (un%order == 4) then
-            if (ru) then
-              line = un%label//"  ГРУППА III КЛАССА 4-ГО ПОРЯДКА"// &
-                " (ДВА БАЗОВЫХ ЗВЕНА С ТРЕМЯ ПАРАМИ)"
-            else
-              line = un%label//"  GROUP OF CLASS III, ORDER 4 (TWO TERNARY BASE LINKS AND FOUR BINARY LINKS)"
-            end if
-          else if (ru) then
-            line = un%label// &
-              "  ГРУППА III КЛАССА 3-ГО ПОРЯДКА (БАЗОВОЕ ЗВЕНО С ТРЕМЯ ПАРАМИ)"
+            line = either(ru, "GROUP OF CLASS III, ORDER 4 (TWO TERNARY BASE LINKS AND FOUR BINARY LINKS)", &
+                          "ГРУППА III КЛАССА 4-ГО ПОРЯДКА"// &
+                          " (ДВА БАЗОВЫХ ЗВЕНА С ТРЕМЯ ПАРАМИ)")
           else
-            line = un%label//"  GROUP OF CLASS III, ORDER 3 (A TERNARY BASE LINK AND THREE BINARY LINKS)"
+            line = either(ru, "GROUP OF CLASS III, ORDER 3 (A TERNARY BASE LINK AND THREE BINARY LINKS)", &
+                          "ГРУППА III КЛАССА 3-ГО ПОРЯДКА"// &
+                          " (БАЗОВОЕ ЗВЕНО С ТРЕМЯ ПАРАМИ)")
           end if
         case (4)
-          if (ru) then
-            line = un%label//"  ГРУППА IV КЛАССА 2-ГО ПОРЯДКА"
-          else
-            line = un%label//"  GROUP OF CLASS IV, ORDER 2 (A CLOSED FOUR-LINK CONTOUR)"
-          end if
+          line = either(ru, "GROUP OF CLASS IV, ORDER 2 (A CLOSED FOUR-LINK CONTOUR)", &
+                        "ГРУППА IV КЛАССА 2-ГО ПОРЯДКА")
         case default
-          if (ru) then
-            line = un%label//"  ГРУППА ИЗ "//int_str(size(un%links))// &
-              " ЗВЕНЬЕВ (КЛАСС НЕ ОПРЕДЕЛЕН)"
-          else
-            line = un%label//"  GROUP OF "//int_str(size(un%links))//" LINKS (CLASS NOT DETERMINED)"
-          end if
+          line = either(ru, "GROUP OF "//int_str(size(un%links))//" LINKS (CLASS NOT DETERMINED)", &
+                        "ГРУППА ИЗ "//int_str(size(un%links))//" ЗВЕНЬЕВ (КЛАСС НЕ ОПРЕДЕЛЕН)")
         end select
-        call push(lines, line)
+        call push(lines, un%label//"  "//line)
       end associate
     end do
-    if (ru) then
-      call push(lines, "ФОРМУЛА СТРОЕНИЯ: "//structure_formula(mech))
-      call push(lines, "КЛАСС МЕХАНИЗМА: "//roman(merge(top, 0, top < 99)))
-    else
-      call push(lines, "STRUCTURE FORMULA: "//structure_formula(mech))
-      call push(lines, "CLASS OF THE MECHANISM: "//roman(merge(top, 0, top < 99)))
-    end if
+    call push(lines, either(ru, "STRUCTURE FORMULA: ", "ФОРМУЛА СТРОЕНИЯ: ")//structure_formula(mech))
+    call push(lines, either(ru, "CLASS OF THE MECHANISM: ", "КЛАСС МЕХАНИЗМА: ")//roman(merge(top, 0, top < 99)))
   end subroutine structure_lines
+
+  !> The Russian text when `ru`, else the English.
+  pure function either(ru, english, russian) result(text)
+    !> Whether the table is in Russian.
+    logical, intent(in) :: ru
+    !> English text.
+    character(*), intent(in) :: english
+    !> Russian text.
+    character(*), intent(in) :: russian
+    character(len=:), allocatable :: text
+    if (ru) then
+      text = russian
+    else
+      text = english
+    end if
+  end function either
 
   !> Appends a line to `lines`.
   pure subroutine push(lines, text)

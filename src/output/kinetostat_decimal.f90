@@ -17,7 +17,7 @@ module kinetostat_decimal
   use kinetostat_kinds, only: wp
   implicit none
   private
-  public :: edit_f, edit_e, edit_es, edit_f_with_blank, put_es_compact, put_whole, i16
+  public :: edit_f, edit_exponent, edit_f_with_blank, put_es_compact, put_whole, i16
 
   !> Integer kind of the exact products (128 bits).
   integer, parameter :: i16 = selected_int_kind(38)
@@ -216,37 +216,18 @@ contains
     end if
   end subroutine exponent_part
 
-  !> text = x written with ESw.d (e = 0) or ESw.dEe, right-justified in len(text) = w.
-  pure subroutine edit_es(x, d, e, text)
+  !> text = x written with ESw.d (scientific) or Ew.d (0.ddd form), or with ESw.dEe / Ew.dEe
+  !> when e > 0, right-justified in len(text) = w.
+  pure subroutine edit_exponent(x, d, e, scientific, text)
     !> Finite value.
     real(wp), intent(in) :: x
     !> Digits after the point.
     integer, intent(in) :: d
     !> Exponent digits (0: the default form).
     integer, intent(in) :: e
-    !> The field (its length is the width w).
-    character(*), intent(out) :: text
-    call edit_exponent(x, d, e, .true., text)
-  end subroutine edit_es
-
-  !> text = x written with Ew.d (e = 0) or Ew.dEe, right-justified in len(text) = w.
-  pure subroutine edit_e(x, d, e, text)
-    !> Finite value.
-    real(wp), intent(in) :: x
-    !> Significant digits (after the point).
-    integer, intent(in) :: d
-    !> Exponent digits (0: the default form).
-    integer, intent(in) :: e
-    !> The field (its length is the width w).
-    character(*), intent(out) :: text
-    call edit_exponent(x, d, e, .false., text)
-  end subroutine edit_e
-
-  !> ES (scientific) or E (0.ddd) form, right-justified in text.
-  pure subroutine edit_exponent(x, d, e, scientific, text)
-    real(wp), intent(in) :: x
-    integer, intent(in) :: d, e
+    !> ES form (one digit before the point) rather than E (0.ddd).
     logical, intent(in) :: scientific
+    !> The field (its length is the width w).
     character(*), intent(out) :: text
     character(len=scratch_len) :: body
     integer :: n, status, w
@@ -449,7 +430,7 @@ contains
     w = d + e + 6
     call exponent_body(x, d, e, .true., w, body, n, status)
     if (status /= body_ok) then
-      call edit_es(x, d, e, body(1:w))
+      call edit_exponent(x, d, e, scientific=.true., text=body(1:w))
       first = verify(body(1:w), " ")
       n = w - first + 1
       body(1:n) = body(first:w)

@@ -8,7 +8,7 @@
 module kinetostat_format
   use, intrinsic :: iso_fortran_env, only: int64
   use kinetostat_kinds, only: wp
-  use kinetostat_decimal, only: edit_f_with_blank, edit_e, edit_es, put_es_compact, put_whole
+  use kinetostat_decimal, only: edit_f_with_blank, edit_exponent, put_es_compact, put_whole
   use kinetostat_text_buffer, only: text_buffer_t
   implicit none
   private
@@ -82,9 +82,9 @@ contains
     !> The field.
     character(*), intent(out) :: text
     if (needs_e3(x)) then
-      call edit_es(x + 0.0_wp, decimals_e3, 3, text)
+      call edit_exponent(x + 0.0_wp, decimals_e3, 3, scientific=.true., text=text)
     else
-      call edit_es(x + 0.0_wp, decimals, 0, text)
+      call edit_exponent(x + 0.0_wp, decimals, 0, scientific=.true., text=text)
     end if
   end subroutine es_text
 
@@ -106,9 +106,9 @@ contains
     integer, intent(in) :: decimals
     character(len=width) :: text
     if (needs_e3(x)) then
-      call edit_e(x + 0.0_wp, max(0, min(decimals, width - 9)), 3, text)
+      call edit_exponent(x + 0.0_wp, max(0, min(decimals, width - 9)), 3, scientific=.false., text=text)
     else
-      call edit_e(x + 0.0_wp, decimals, 0, text)
+      call edit_exponent(x + 0.0_wp, decimals, 0, scientific=.false., text=text)
     end if
   end function exp_field
 
@@ -149,11 +149,7 @@ contains
     !> Finite value.
     real(wp), intent(in) :: x
     character(len=:), allocatable :: text
-    character(len=scratch_len) :: buf
-    integer :: n
-    n = 0
-    call put_es_compact(x + 0.0_wp, full_digits, full_exponent_digits, buf, n)
-    text = buf(1:n)
+    text = cell_number(x, .false.)
   end function full_number
 
   !> A whole number without blanks (flags and counts); full_number when beyond 1e15.
@@ -161,11 +157,7 @@ contains
     !> Finite value.
     real(wp), intent(in) :: x
     character(len=:), allocatable :: text
-    character(len=scratch_len) :: buf
-    integer :: n
-    n = 0
-    call put_cell_text(x, .true., buf, n)
-    text = buf(1:n)
+    text = cell_number(x, .true.)
   end function whole_number
 
   !> A CSV cell or JSON number: whole_number for flags and counts, full_number otherwise.
@@ -317,7 +309,7 @@ contains
     integer, intent(in) :: d
     character(len=:), allocatable :: text
     character(len=2 * d + 6) :: field
-    call edit_es(x, d, 0, field)
+    call edit_exponent(x, d, 0, scientific=.true., text=field)
     text = trim(adjustl(field))
   end function trimmed_es
 

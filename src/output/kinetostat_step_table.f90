@@ -310,6 +310,8 @@ module kinetostat_step_table
     procedure :: finish_columns
     procedure :: set_columns
     procedure :: column_index
+    procedure :: dynamics_index
+    procedure :: dynamics_value
     procedure :: allocate_rows
     procedure :: row_count
     procedure :: add_warning
@@ -615,6 +617,28 @@ contains
       end if
     end do
   end function column_index
+
+  !> Index of the DYNAMICS record called `name` (0 when there is none).
+  pure integer function dynamics_index(self, name)
+    class(step_table_t), intent(in) :: self
+    !> Record name (the JSON key, e.g. "M_d").
+    character(*), intent(in) :: name
+    integer :: i
+    dynamics_index = 0
+    if (.not. allocated(self%dynamics)) return
+    dynamics_index = findloc([(self%dynamics(i)%name == name, i = 1, size(self%dynamics))], .true., dim=1)
+  end function dynamics_index
+
+  !> The value of the DYNAMICS record called `name` (0 when there is none).
+  pure real(wp) function dynamics_value(self, name)
+    class(step_table_t), intent(in) :: self
+    !> Record name (the JSON key, e.g. "M_d").
+    character(*), intent(in) :: name
+    integer :: i
+    i = self%dynamics_index(name)
+    dynamics_value = 0.0_wp
+    if (i > 0) dynamics_value = self%dynamics(i)%values(1)
+  end function dynamics_value
 
   !> Allocate `n` rows of zeros for the columns defined so far.
   pure subroutine allocate_rows(self, n)

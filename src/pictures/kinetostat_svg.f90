@@ -115,16 +115,13 @@ contains
     character(*), intent(in) :: title
     !> Description (plain text): what the sheet shows and how to read its data back.
     character(*), intent(in) :: description
-    integer :: i
     call out%put('<?xml version="1.0" encoding="UTF-8"?>')
     call out%put('<svg xmlns="http://www.w3.org/2000/svg" version="1.1" width="'//coord(width)//'mm" height="'// &
       coord(height)//'mm" viewBox="0 0 '//coord(width)//" "//coord(height)//'">')
     call out%put("<title>"//xml_escape(title)//"</title>")
     call out%put("<desc>"//xml_escape(description)//"</desc>")
     call out%put("<style>")
-    do i = 1, size(style_lines)
-      call out%put(trim(style_lines(i)))
-    end do
+    call out%put_lines(style_lines)
     call out%put("</style>")
     call out%put('<rect x="0" y="0" width="'//coord(width)//'" height="'//coord(height)//'" fill="#ffffff"/>')
   end subroutine svg_open

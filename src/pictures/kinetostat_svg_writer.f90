@@ -750,54 +750,32 @@ contains
     input = table%columns(ci)%name//", "//deg
     call out%put(svg_text(margin, y0 + 4.0_wp, word("Machine dynamics (reduced to the input link)", lang), &
       'class="heading"'))
-    call out%put(svg_text(margin, y0 + 8.0_wp, word("Steady cycle", lang)//": M_d = "//short_number(figure("M_d"))// &
-      " "//nm//", "//word("flywheel", lang)//" J_fw = "//short_number(figure("J_flywheel"))//" "//kgm2//" ("// &
-      word("textbook", lang)//" "//short_number(figure("J_flywheel_textbook"))//"), delta = "// &
-      short_number(figure("delta")), 'class="small"'))
+    call out%put(svg_text(margin, y0 + 8.0_wp, word("Steady cycle", lang)//": M_d = "//short_number(table%dynamics_value("M_d"))// &
+      " "//nm//", "//word("flywheel", lang)//" J_fw = "//short_number(table%dynamics_value("J_flywheel"))//" "//kgm2//" ("// &
+      word("textbook", lang)//" "//short_number(table%dynamics_value("J_flywheel_textbook"))//"), delta = "// &
+      short_number(table%dynamics_value("delta")), 'class="small"'))
     top = y0 + 10.0_wp
     call chart(out, table%rows(ci, :), table%rows(table%column_index("J_red"), :), margin, top, &
       word("Reduced moment of inertia J_red", lang), input, "J_red, "//kgm2, [real(wp) ::])
-    if (has_figure("M_d_scale") .and. allocated(table%driver)) then
+    if (table%dynamics_index("M_d_scale") > 0 .and. allocated(table%driver)) then
       ! a driving-moment table: M_d(phi) = the balancing moment's column, dashed
       call chart(out, table%rows(ci, :), table%rows(table%column_index("M_red"), :), margin + w + gap, top, &
         word("Reduced moment M_red and M_d (dashed)", lang), input, "M_red, "//nm, [real(wp) ::], &
         table%rows(table%column_index(table%driver), :))
     else
       call chart(out, table%rows(ci, :), table%rows(table%column_index("M_red"), :), margin + w + gap, top, &
-        word("Reduced moment M_red and M_d (dashed)", lang), input, "M_red, "//nm, [figure("M_d")])
+        word("Reduced moment M_red and M_d (dashed)", lang), input, "M_red, "//nm, [table%dynamics_value("M_d")])
     end if
     top = top + dynamics_chart_height + gap
     call chart(out, table%rows(ci, :), table%rows(table%column_index("dT"), :), margin, top, &
       word("Change of kinetic energy dT", lang), input, "dT, "//unit_word("J", lang), [real(wp) ::])
     call chart(out, table%rows(ci, :), table%rows(table%column_index("omega1"), :), margin + w + gap, top, &
       word("Speed omega1 (dashed: mean, max, min)", lang), input, "omega1, "//unit_word("rad/s", lang), &
-      [figure("omega_mean"), figure("omega_max"), figure("omega_min")])
+      [table%dynamics_value("omega_mean"), table%dynamics_value("omega_max"), table%dynamics_value("omega_min")])
     top = top + dynamics_chart_height + gap
     call chart(out, table%rows(table%column_index("J_red"), :), table%rows(table%column_index("dT"), :), margin, top, &
       word("Wittenbauer's curve: dT against J_red", lang), "J_red, "//kgm2, "dT, "//unit_word("J", lang), [real(wp) ::])
   contains
-    !> Whether the DYNAMICS records hold `name`.
-    pure logical function has_figure(name)
-      character(*), intent(in) :: name
-      integer :: i
-      has_figure = .false.
-      if (.not. allocated(table%dynamics)) return
-      do i = 1, size(table%dynamics)
-        if (table%dynamics(i)%name == name) has_figure = .true.
-      end do
-    end function has_figure
-
-    !> A figure of the DYNAMICS records (0 when absent).
-    pure real(wp) function figure(name)
-      character(*), intent(in) :: name
-      integer :: i
-      figure = 0.0_wp
-      if (.not. allocated(table%dynamics)) return
-      do i = 1, size(table%dynamics)
-        if (table%dynamics(i)%name == name) figure = table%dynamics(i)%values(1)
-      end do
-    end function figure
-
     !> One chart of y against x with dashed horizontal lines at `levels` (the y range holds them)
     !> or a dashed second curve `dashed` over the same x.
     pure subroutine chart(o, xv, yv, x0, y0, heading, xlabel, ylabel, levels, dashed)
@@ -821,7 +799,7 @@ contains
         vmin = min(minval(yv), minval(levels))
         vmax = max(maxval(yv), maxval(levels))
         call x_range([vmin, vmax], .false., ylo, yhi, ystep)
-        if (vmin > 0.0_wp .and. vmax > 0.0_wp .and. figure("M_d") /= levels(1)) then
+        if (vmin > 0.0_wp .and. vmax > 0.0_wp .and. table%dynamics_value("M_d") /= levels(1)) then
           ylo = ystep * floor(vmin / ystep + 1.0e-9_wp)
           yhi = ystep * ceiling(vmax / ystep - 1.0e-9_wp)
         else

@@ -4,7 +4,7 @@
 !> only through this type.
 module kinetostat_mechanism
   use kinetostat_error, only: error_t
-  use kinetostat_deck, only: deck_source_t, write_template_lines
+  use kinetostat_deck, only: deck_source_t
   use kinetostat_step_table, only: step_table_t
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_labels, only: lang_ru
@@ -106,7 +106,7 @@ contains
     class(mechanism_t), intent(in) :: self
     !> Where the lines go.
     type(text_buffer_t), intent(inout) :: out
-    if (allocated(self%template)) call write_template_lines(out, self%template)
+    if (allocated(self%template)) call out%put_lines(self%template)
   end subroutine write_template
 
   !> The topology for a drawing: by default none (`sketch%available` false).

@@ -5,7 +5,7 @@ module kinetostat_pr3050_deck
   use kinetostat_text, only: real_str, int_str
   use kinetostat_deck, only: begin_group, deck_context_t, unset_real, deck_array_capacities, max_steps, &
     deck_source_t, namelist_probe_t, require_all_set, require_set, require_positive, &
-    require_nonnegative, require_rule, optional_default, count_values
+    require_nonnegative, require_rule, require_per_step, optional_default, count_values
   use kinetostat_pr3050, only: pr3050_params_t
   use kinetostat_dynamics_deck, only: dynamics_deck_t, read_dynamics_settings
   implicit none
@@ -106,7 +106,6 @@ contains
     real(wp) :: l_ca, l_cb, l_cs3, delta, l_bs2, l_s1a, gamma, g, m1, m2, m3, j1, j2, j3
     real(wp) :: phi3_start, phi3_end, dphi3
     real(wp), allocatable :: omega3(:), eps3(:)
-    integer :: n_omega3, n_eps3
     !> Machine dynamics variables: mode and the drive's mass reduced to the stroke, kg.
     character(len=32) :: dynamics
     real(wp) :: j_rotor
@@ -175,20 +174,8 @@ contains
     if (allocated(error)) return
 
     ! speed law: exactly N values each
-    call count_values(ctx, "omega3", omega3, n_omega3, error); if (allocated(error)) return
-    call require_rule(ctx, "omega3", n_omega3 > 0, "missing: give N = "//int_str(deck%n)// &
-      " values (one per step)", error)
-    if (allocated(error)) return
-    call require_rule(ctx, "omega3", n_omega3 == deck%n, "expected "//int_str(deck%n)// &
-      " values (one per step), got "//int_str(n_omega3), error)
-    if (allocated(error)) return
-    call count_values(ctx, "eps3", eps3, n_eps3, error); if (allocated(error)) return
-    call require_rule(ctx, "eps3", n_eps3 > 0, "missing: give N = "//int_str(deck%n)// &
-      " values (one per step)", error)
-    if (allocated(error)) return
-    call require_rule(ctx, "eps3", n_eps3 == deck%n, "expected "//int_str(deck%n)// &
-      " values (one per step), got "//int_str(n_eps3), error)
-    if (allocated(error)) return
+    call speed_law_values(ctx, "omega3", omega3, deck%n, error); if (allocated(error)) return
+    call speed_law_values(ctx, "eps3", eps3, deck%n, error); if (allocated(error)) return
 
     ! machine dynamics: the reduced quantities only, reduced to the stroke (the input translates)
     call require_rule(ctx, "dynamics", trim(adjustl(dynamics)) /= "steady" .and. trim(adjustl(dynamics)) /= "given", &
@@ -211,6 +198,23 @@ contains
     call move_alloc(omega3, deck%omega3)
     call move_alloc(eps3, deck%eps3)
   end subroutine read_pr3050_deck
+
+  !> A speed-law list (omega3 or eps3): given, finite and with exactly one value per step.
+  subroutine speed_law_values(ctx, name, values, n, error)
+    type(deck_context_t), intent(in) :: ctx
+    !> The list's variable name.
+    character(*), intent(in) :: name
+    !> The list as read.
+    real(wp), intent(in) :: values(:)
+    !> Number of steps.
+    integer, intent(in) :: n
+    type(error_t), allocatable, intent(out) :: error
+    integer :: count
+    call count_values(ctx, name, values, count, error); if (allocated(error)) return
+    call require_rule(ctx, name, count > 0, "missing: give N = "//int_str(n)//" values (one per step)", error)
+    if (allocated(error)) return
+    call require_per_step(ctx, name, count, n, error)
+  end subroutine speed_law_values
 
   !> Rocker angle of step k, deg: phi3_start + (k - 1)*dphi3 (computed, not stored per step).
   pure real(wp) function pr3050_phi3_deg(deck, k) result(phi3)

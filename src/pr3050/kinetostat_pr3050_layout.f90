@@ -337,9 +337,7 @@ contains
       if (lang == lang_ru) then
         call out%put(header_ru)
       else
-        do k = 1, size(header_lines)
-          call out%put(trim(header_lines(k)))
-        end do
+        call out%put_lines(header_lines)
       end if
     end if
     do k = first, last
@@ -354,18 +352,14 @@ contains
     ! the prismatic pair's block follows the last row of the first (in `later`)
     if (first == 1 .and. table%first_block()) then
       if (lang == lang_ru) then
-        do k = 1, size(legend_ru)
-          call later%put(trim(legend_ru(k)))
-        end do
+        call later%put_lines(legend_ru)
         call put_heading(later, trim(pair_heading_ru(1)))
         call later%put(trim(pair_heading_ru(2)))
         call later%put(trim(pair_header_lines(1)))
         call later%put(pair_units_ru)
       else
         call put_heading(later, pair_heading)
-        do k = 1, size(pair_header_lines)
-          call later%put(trim(pair_header_lines(k)))
-        end do
+        call later%put_lines(pair_header_lines)
       end if
     end if
     do k = first, last

@@ -143,29 +143,23 @@ contains
     pos%a5q = p%l_cd * (pos%eps31 * e3(1) - pos%u31**2 * e3(2))
   end function pr3207_position
 
-  !> Kinetostatic analysis at crank angle `phi1` (rad) with cutting force `f5c` (N, along +y),
-  !> at the deck's constant crank speed, or at the crank speed `omega1` and acceleration
-  !> `eps1` of the true motion with the inertia `j_input` (kg*m^2: flywheel and rotor) turning
-  !> with the crank, whose inertia moment -j_input*eps1 acts on it.
-  pure function pr3207_step(p, phi1, f5c, omega1, eps1, j_input) result(step)
+  !> Kinetostatic analysis at crank angle `phi1` (rad) with cutting force `f5c` (N, along +y)
+  !> at the deck's constant crank speed (pr3207_step_at takes the true motion's speed).
+  pure function pr3207_step(p, phi1, f5c) result(step)
     !> Mechanism data.
     type(pr3207_params_t), intent(in) :: p
     !> Crank angle, rad.
     real(wp), intent(in) :: phi1
     !> Cutting force on the ram, N, signed along +y.
     real(wp), intent(in) :: f5c
-    !> Crank speed, rad/s (default p%omega1).
-    real(wp), intent(in), optional :: omega1
-    !> Crank acceleration, rad/s^2 (default 0).
-    real(wp), intent(in), optional :: eps1
-    !> Moment of inertia turning with the crank besides its links, kg*m^2 (default 0).
-    real(wp), intent(in), optional :: j_input
     type(pr3207_step_t) :: step
-    step = pr3207_step_at(p, pr3207_position(p, phi1), f5c, omega1, eps1, j_input)
+    step = pr3207_step_at(p, pr3207_position(p, phi1), f5c)
   end function pr3207_step
 
   !> pr3207_step at a computed position `pos` (of crank angle pos%phi1): a run that needs the
-  !> position for more than one analysis of a step computes it once.
+  !> position for more than one analysis of a step computes it once. With `omega1` and `eps1`
+  !> of the true motion, the inertia `j_input` (kg*m^2: flywheel and rotor) turning with the
+  !> crank adds its inertia moment -j_input*eps1.
   pure function pr3207_step_at(p, pos, f5c, omega1, eps1, j_input) result(step)
     !> Mechanism data.
     type(pr3207_params_t), intent(in) :: p

@@ -6,7 +6,7 @@ module kinetostat_pr3207_deck
   use kinetostat_deck, only: &
     begin_group, deck_context_t, unset_real, deck_array_capacities, &
     deck_source_t, namelist_probe_t, require_all_set, deck_error, is_set, require_set, require_positive, &
-    require_nonnegative, require_rule, optional_default, count_values, steps_over_turn
+    require_nonnegative, require_rule, require_per_step, optional_default, count_values, steps_over_turn
   use kinetostat_pr3207, only: pr3207_params_t
   use kinetostat_dynamics, only: dynamics_steady
   use kinetostat_dynamics_deck, only: dynamics_deck_t, read_dynamics_settings, require_one_turn, md_table_capacity
@@ -174,8 +174,7 @@ contains
       return
     end if
     if (n_f5c > 0) then
-      call require_rule(ctx, "f5c", n_f5c == deck%n, "expected "//int_str(deck%n)// &
-        " values (one per step), got "//int_str(n_f5c), error)
+      call require_per_step(ctx, "f5c", n_f5c, deck%n, error)
       if (allocated(error)) return
       ! the read buffer is the deck's array (no second copy)
       call move_alloc(f5c, deck%f5c_values)

@@ -95,8 +95,8 @@ contains
     ! a steady cycle: the flywheel and the rotor on the input shaft, with the input's eps1
     j_input = 0.0_wp
     eps_in = 0
-    if (has_figure("J_flywheel")) then
-      j_input = figure("J_flywheel") + figure("J_rotor")
+    if (table%dynamics_index("J_flywheel") > 0) then
+      j_input = table%dynamics_value("J_flywheel") + table%dynamics_value("J_rotor")
       eps_in = table%column_index("eps1")
     end if
 
@@ -153,28 +153,6 @@ contains
     end do
 
   contains
-
-    !> Whether the table's DYNAMICS records hold `name`.
-    pure logical function has_figure(name)
-      character(*), intent(in) :: name
-      integer :: j
-      has_figure = .false.
-      if (.not. allocated(table%dynamics)) return
-      do j = 1, size(table%dynamics)
-        if (table%dynamics(j)%name == name) has_figure = .true.
-      end do
-    end function has_figure
-
-    !> The value of the DYNAMICS record `name` (0 when absent).
-    pure real(wp) function figure(name)
-      character(*), intent(in) :: name
-      integer :: j
-      figure = 0.0_wp
-      if (.not. allocated(table%dynamics)) return
-      do j = 1, size(table%dynamics)
-        if (table%dynamics(j)%name == name) figure = table%dynamics(j)%values(1)
-      end do
-    end function figure
 
     !> Index of column `name` into `c`; an error when the table lacks it.
     pure subroutine need(name, c, error)

@@ -17,7 +17,7 @@ module kinetostat_sixbar
   private
   public :: sixbar_params_t, sixbar_position_t, sixbar_step_t
   public :: sixbar_position, sixbar_step, sixbar_extreme_phi1, sixbar_reduced, sixbar_reduced_at
-  public :: sixbar_frame2_to_frame1, sixbar_frame1_to_frame2, sixbar_down1, sixbar_down2
+  public :: sixbar_accel, sixbar_frame2_to_frame1, sixbar_frame1_to_frame2, sixbar_down1, sixbar_down2
   public :: sixbar_ok, sixbar_open1, sixbar_dead1, sixbar_open2, sixbar_dead2, sixbar_dead_tol
 
   !> Status: the mechanism is assembled and regular.
@@ -182,6 +182,23 @@ module kinetostat_sixbar
   end type sixbar_step_t
 
 contains
+
+  !> The acceleration a_q omega1^2 + v_q eps1 of a coordinate (a point's x or y, an angle)
+  !> whose velocity and acceleration transfer functions are v_q and a_q (a_q omega1^2 alone
+  !> at constant speed), m/s^2 or rad/s^2.
+  elemental function sixbar_accel(a_q, v_q, omega1, eps1) result(acc)
+    !> Acceleration transfer function (d2/dphi1^2 of the coordinate), m or rad.
+    real(wp), intent(in) :: a_q
+    !> Velocity transfer function (d/dphi1 of the coordinate), m or rad.
+    real(wp), intent(in) :: v_q
+    !> Crank speed, rad/s.
+    real(wp), intent(in) :: omega1
+    !> Crank angular acceleration, rad/s^2.
+    real(wp), intent(in) :: eps1
+    real(wp) :: acc
+    acc = a_q * omega1**2
+    if (eps1 /= 0.0_wp) acc = acc + v_q * eps1
+  end function sixbar_accel
 
   !> A vector given in frame 2 expressed in frame 1 (turned by beta - 180 deg).
   pure function sixbar_frame2_to_frame1(p, v2) result(v1)
@@ -404,9 +421,9 @@ contains
     g3 = gravity_force(p%m3, p%g, down1)
     g4 = gravity_force(p%m4, p%g, down2)
     g5 = gravity_force(p%m5, p%g, down2)
-    phi2_f = inertia_force(p%m2, accel(pos%a_s2q, pos%v_s2q))
-    phi4_f = inertia_force(p%m4, accel(pos%a_s4q, pos%v_s4q))
-    phi5_f = inertia_force(p%m5, [accel1(pos%a_hq(1), pos%v_hq(1)), 0.0_wp])
+    phi2_f = inertia_force(p%m2, sixbar_accel(pos%a_s2q, pos%v_s2q, step%omega1, step%eps1))
+    phi4_f = inertia_force(p%m4, sixbar_accel(pos%a_s4q, pos%v_s4q, step%omega1, step%eps1))
+    phi5_f = inertia_force(p%m5, [sixbar_accel(pos%a_hq(1), pos%v_hq(1), step%omega1, step%eps1), 0.0_wp])
     m_phi2 = inertia_moment(p%j2, step%eps(2))
     m_phi3 = inertia_moment(p%j3, step%eps(3))
     m_phi4 = inertia_moment(p%j4, step%eps(4))
@@ -466,20 +483,6 @@ contains
     step%m1_power = -sum(terms)
     step%mismatch = power_mismatch(step%m1, step%m1_power, sum(abs(terms)), load_moment_scale(links))
   contains
-    !> An acceleration a_q omega1^2 + v_q eps1 (a_q omega1^2 alone at constant speed).
-    pure function accel(a_q, v_q) result(acc)
-      real(wp), intent(in) :: a_q(2), v_q(2)
-      real(wp) :: acc(2)
-      acc = a_q * w2
-      if (present(eps1)) acc = acc + v_q * step%eps1
-    end function accel
-
-    !> The same for one component.
-    pure real(wp) function accel1(a_q, v_q) result(acc)
-      real(wp), intent(in) :: a_q, v_q
-      acc = a_q * w2
-      if (present(eps1)) acc = acc + v_q * step%eps1
-    end function accel1
 
     !> j_input, or 0 when absent.
     pure real(wp) function merge_or_zero(x)

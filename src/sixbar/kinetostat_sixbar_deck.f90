@@ -6,7 +6,7 @@ module kinetostat_sixbar_deck
   use kinetostat_deck, only: &
     begin_group, deck_context_t, unset_real, deck_array_capacities, &
     deck_source_t, namelist_probe_t, require_all_set, deck_error, is_set, require_set, require_positive, &
-    require_nonnegative, require_rule, optional_default, count_values, steps_over_turn
+    require_nonnegative, require_rule, require_per_step, optional_default, count_values, steps_over_turn
   use kinetostat_sixbar, only: sixbar_params_t, sixbar_extreme_phi1
   use kinetostat_dynamics, only: dynamics_steady
   use kinetostat_dynamics_deck, only: dynamics_deck_t, read_dynamics_settings, require_one_turn, md_table_capacity
@@ -191,8 +191,7 @@ contains
       call deck_error(ctx, "f5", "missing: give f5 = v1, v2, ... (one value per step, N along +x2)", error)
       return
     end if
-    call require_rule(ctx, "f5", n_f5 == deck%n, "expected "//int_str(deck%n)// &
-      " values (one per step), got "//int_str(n_f5), error)
+    call require_per_step(ctx, "f5", n_f5, deck%n, error)
     if (allocated(error)) return
 
     ! the read buffer is the deck's array (no second copy)

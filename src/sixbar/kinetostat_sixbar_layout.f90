@@ -16,7 +16,7 @@ module kinetostat_sixbar_layout
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_sketch, only: sketch_t
   use kinetostat_table_writer, only: put_heading, put_two_line_step
-  use kinetostat_sixbar, only: sixbar_params_t, sixbar_step_t, sixbar_step, sixbar_ok, sixbar_open1, &
+  use kinetostat_sixbar, only: sixbar_accel, sixbar_params_t, sixbar_step_t, sixbar_step, sixbar_ok, sixbar_open1, &
     sixbar_dead1, sixbar_open2, sixbar_dead2, sixbar_frame2_to_frame1, sixbar_down1, sixbar_reduced
   use kinetostat_sixbar_deck, only: sixbar_deck_t, read_sixbar_deck, sixbar_template, sixbar_phi1_deg
   use kinetostat_drawing, only: drawing_t, force_load
@@ -338,10 +338,9 @@ contains
     type(sixbar_params_t), intent(in) :: p
     !> The computed step.
     type(sixbar_step_t), intent(in) :: s
-    real(wp) :: w, w2, frame2, f(2, 7), floor, zero(2)
+    real(wp) :: w, frame2, f(2, 7), floor, zero(2)
     integer :: i
     w = s%omega1
-    w2 = w**2
     zero = 0.0_wp
     ! angle of x2 in frame 1, rad: beta - pi
     frame2 = atan2(p%a, p%b) - pi
@@ -362,10 +361,11 @@ contains
       call table%put_link(k, "3", pos%phi3, pos%u31 * w, s%eps(3))
       call table%put_link(k, "4", modulo(pos%phi4 + frame2 + pi, 2.0_wp * pi) - pi, pos%u41 * w, s%eps(4))
       call table%put_acceleration(k, "S1", zero)
-      call table%put_acceleration(k, "S2", accel(pos%a_s2q, pos%v_s2q))
+      call table%put_acceleration(k, "S2", sixbar_accel(pos%a_s2q, pos%v_s2q, w, s%eps1))
       call table%put_acceleration(k, "S3", zero)
-      call table%put_acceleration(k, "S4", sixbar_frame2_to_frame1(p, accel(pos%a_s4q, pos%v_s4q)))
-      call table%put_acceleration(k, "S5", sixbar_frame2_to_frame1(p, [accel1(pos%a_hq(1), pos%v_hq(1)), 0.0_wp]))
+      call table%put_acceleration(k, "S4", sixbar_frame2_to_frame1(p, sixbar_accel(pos%a_s4q, pos%v_s4q, w, s%eps1)))
+      call table%put_acceleration(k, "S5", sixbar_frame2_to_frame1(p, [sixbar_accel(pos%a_hq(1), pos%v_hq(1), w, s%eps1), &
+                                                                      0.0_wp]))
     end associate
     f = reshape([s%f21, s%f32, s%f43, s%f45, s%f36, s%f16, [0.0_wp, s%f56]], [2, 7])
     floor = noise_floor(f(:, 1:6), [s%f56])
@@ -373,21 +373,6 @@ contains
       call table%put_components(k, trim(force_names(i)), force_components(f(:, i), floor), &
                                 merge(frame2 * rad_to_deg, 0.0_wp, force_in_frame2(i)))
     end do
-  contains
-    !> An acceleration a_q omega1^2 + v_q eps1 (a_q omega1^2 alone at constant speed).
-    pure function accel(a_q, v_q) result(acc)
-      real(wp), intent(in) :: a_q(2), v_q(2)
-      real(wp) :: acc(2)
-      acc = a_q * w2
-      if (s%eps1 /= 0.0_wp) acc = acc + v_q * s%eps1
-    end function accel
-
-    !> The same for one component.
-    pure real(wp) function accel1(a_q, v_q) result(acc)
-      real(wp), intent(in) :: a_q, v_q
-      acc = a_q * w2
-      if (s%eps1 /= 0.0_wp) acc = acc + v_q * s%eps1
-    end function accel1
   end subroutine put_kinematics
 
   !> The INPUT DATA echo of the deck.
@@ -459,9 +444,7 @@ contains
     type(text_buffer_t), intent(inout) :: later
     integer :: k
     if (first == 1 .and. table%first_block()) then
-      do k = 1, size(header_lines_ru)
-        call out%put(trim(header_lines_ru(k)))
-      end do
+      call out%put_lines(header_lines_ru)
       call out%put(dotted_rule)
     end if
     do k = first, last
@@ -470,9 +453,7 @@ contains
     ! the closing rule, the legend and the moment block follow the last row (in `later`)
     if (first == 1 .and. table%first_block()) then
       call later%put(dotted_rule)
-      do k = 1, size(legend_ru)
-        call later%put(trim(legend_ru(k)))
-      end do
+      call later%put_lines(legend_ru)
       call put_heading(later, trim(moment_block_ru(1)))
       call later%put(trim(moment_block_ru(2)))
       call later%put(trim(moment_block_ru(3)))
