@@ -20,8 +20,9 @@ module kinetostat_assur_layout
   use kinetostat_assur_kinematics, only: kind_names, link_state_t, dyad_pose_t, point_state_t, point_on, &
     kind_rrr, kind_rrp, kind_rpr, kind_prp, kind_rpp
   use kinetostat_assur_statics, only: pair_is_prismatic
-  use kinetostat_assur, only: assur_step_t, assur_step, assur_kinematics, link_a, link_b, crank_pin_index, pair_index
-  use kinetostat_drawing, only: drawing_t, force_load
+  use kinetostat_assur, only: assur_step_t, assur_step, assur_kinematics, link_a, link_b, crank_pin_index, pair_index, &
+    pair_sides
+  use kinetostat_drawing, only: drawing_t, force_load, point_com
   use kinetostat_bodies, only: mass_model_t
   use kinetostat_selfcheck, only: link_balance_t, balance_add_couple
   use kinetostat_dynamics, only: cycle_t, motion_t, dynamics_none, dynamics_steady
@@ -1079,7 +1080,7 @@ contains
   !> The forces of row `k` on its drawing (--format svg --at K): every pair force at its
   !> pair's point J<pair>, the deck's external forces (Q<i>, at their points) and moments
   !> (MQ<i>, at the link's centre of mass), the weights, inertia forces and moments of the
-  !> moving links, and M1 at the crank's pivot.
+  !> moving links, and M1 at the crank's pivot or a linear actuator's F_drive at its pair.
   pure subroutine force_plan(self, table, k, drawing, error)
     class(assur_mechanism_t), intent(in) :: self
     type(step_table_t), intent(in) :: table
@@ -1091,7 +1092,7 @@ contains
     type(point_state_t) :: ps
     type(mass_model_t) :: model
     real(wp) :: dir
-    integer :: ip, i
+    integer :: ip, i, sides(2)
     associate (mech => self%deck%mech, deck => self%deck)
       call assur_kinematics(mech, assur_phi1_deg(deck, k) * deg_to_rad, states, poses, error)
       if (allocated(error)) return
@@ -1113,12 +1114,30 @@ contains
         call drawing%add_moment("MQ"//int_str(i), force_load, drawing%at("S"//int_str(mech%links(mech%moment_link(i))%id)), &
           assur_load_value(deck, deck%moment_load(i), k), int_str(mech%links(mech%moment_link(i))%id))
       end do
+      ! the centre of mass of a link not named by its number (link 1 not the crank, "L1": S1)
+      do i = 2, 2 * size(mech%dyads) + 1
+        if (link_label(deck, i) == int_str(mech%links(i)%id)) cycle
+        if (drawing%point_index("S"//int_str(mech%links(i)%id)) > 0 .or. &
+          table%column_index("x_S"//int_str(mech%links(i)%id)) == 0) cycle
+        call drawing%point_from_table(table, k, "S"//int_str(mech%links(i)%id), point_com, error)
+        if (allocated(error)) return
+      end do
       call self%mass_model(model)
       call drawing%add_body_loads(table, k, model)
       ! the balancing moment on the crank (a deck driven otherwise has no M1 column)
       i = table%column_index("M1")
       if (i > 0) call drawing%add_moment("M1", force_load, &
         drawing%at(joint_name(deck, deck%pair_name(crank_pin_index(size(mech%dyads))))), table%rows(i, k))
+      ! a linear actuator's force F_drive on the sliding side of its pair, along `extend` (the
+      ! plans add its reaction on the other side)
+      i = table%column_index("F_drive")
+      if (i > 0 .and. mech%drive_dyad > 0) then
+        associate (dd => mech%drive_dyad, jd => mech%drive_pair)
+          sides = pair_sides(mech, dd, jd)
+          call drawing%add_force("F_drive", force_load, drawing%at(joint_name(deck, deck%pair_name(pair_index(dd, jd)))), &
+            table%rows(i, k) * poses(dd)%extend(:, jd), link_label(deck, sides(1)))
+        end associate
+      end if
     end associate
   end subroutine force_plan
 

@@ -175,7 +175,9 @@ contains
     end if
   end function field
 
-  !> Index of the link named `name` in the topology (0 if none).
+  !> Index of the link named `name` in the topology (0 if none); a number no link is named
+  !> after is the link "L<number>" when there is one (an &assur deck's link 1 that is not the
+  !> crank, whose pair forces are still F14, F21).
   pure integer function link_index(topo, name)
     type(sketch_t), intent(in) :: topo
     character(*), intent(in) :: name
@@ -184,14 +186,20 @@ contains
     do i = 1, size(topo%links)
       if (topo%links(i)%name == name) link_index = i
     end do
+    if (link_index > 0 .or. len_trim(name) == 0) return
+    do i = 1, size(topo%links)
+      if (topo%links(i)%name == "L"//trim(name)) link_index = i
+    end do
   end function link_index
 
-  !> Whether link i lists point `p` (its own points, and its centre of mass S<name>).
+  !> Whether link i lists point `p` (its own points, and its centre of mass S<name>; S1 for
+  !> the link "L1").
   pure logical function lists(topo, i, p)
     type(sketch_t), intent(in) :: topo
     integer, intent(in) :: i
     character(*), intent(in) :: p
     lists = any(topo%links(i)%points == p) .or. p == "S"//topo%links(i)%name
+    if (p(1:min(1, len(p))) == "S" .and. len(p) > 1) lists = lists .or. link_index(topo, p(2:)) == i
   end function lists
 
   !> Whether point `p` of link i is a sliding contact (a guide of link i passes through p and
@@ -1015,7 +1023,7 @@ contains
       do pass = 1, 4
         do j = 1, size(drawing%forces)
           associate (f => drawing%forces(j))
-            mine = owner(f%name, f%on_link) == poly%link
+            mine = link_index(topo, owner(f%name, f%on_link)) == i
             select case (pass)
             case (1)
               take = f%name(1:1) == "G" .and. mine
@@ -1034,9 +1042,9 @@ contains
               end if
             end if
             if (pass == 4 .and. f%kind == force_pair) then
-              if (owner(f%name, f%on_link) == poly%link) then
+              if (link_index(topo, owner(f%name, f%on_link)) == i) then
                 poly%vectors = [poly%vectors, plan_vector_t(f%name, f%f)]
-              else if (len_trim(f%name) == 3 .and. f%name(3:3) == trim(poly%link)) then
+              else if (len_trim(f%name) == 3 .and. link_index(topo, f%name(3:3)) == i) then
                 poly%vectors = [poly%vectors, plan_vector_t("F"//f%name(3:3)//f%name(2:2), -f%f)]
               end if
             end if
@@ -1098,7 +1106,7 @@ contains
           do j = 1, size(drawing%forces)
             associate (f => drawing%forces(j))
               if (f%kind == force_pair) cycle
-              take = owner(f%name, f%on_link) == topo%links(i)%name
+              take = link_index(topo, owner(f%name, f%on_link)) == i
               select case (pass)
               case (1)
                 take = take .and. f%name(1:1) == "G"
@@ -1174,7 +1182,8 @@ contains
       do s = 1, size(slides)
         if ((slides(s)%m == l .and. slides(s)%g == o) .or. (slides(s)%m == o .and. slides(s)%g == l)) split = .false.
       end do
-      if (topo%links(l)%block) split = .false.
+      ! a block's pin is its only joint, unless it is one body with the other half of a cylinder drive
+      if (topo%links(l)%block .and. l /= actuator .and. l /= cylinder) split = .false.
       if (split) then
         e = (inner - at) / norm2(inner - at)
         tangential = [tangential, plan_vector_t(name//"^τ", f - dot_product(f, e) * e, component_tangential)]
@@ -1221,7 +1230,9 @@ contains
   end subroutine group_polygons_of
 
   !> Zhukovsky's lever: the power of every load but the driving moment, over the driver's
-  !> angular velocity (the balancing moment); pair forces do no work without friction.
+  !> angular velocity (the balancing moment); for a driving force between a slider and its
+  !> guide's link (a cylinder: F on one, -F on the other) over their relative velocity along
+  !> it (the balancing force). Pair forces do no work without friction.
   pure subroutine lever_of(topo, drawing, table, k, omega, v0, plans)
     type(sketch_t), intent(in) :: topo
     type(drawing_t), intent(in) :: drawing
@@ -1231,6 +1242,7 @@ contains
     type(plans_t), intent(inout) :: plans
     real(wp) :: power, rate
     integer :: j, l, d, g
+    logical :: actuator
     plans%driver = ""
     if (allocated(table%driver)) plans%driver = table%driver
     plans%lever_known = .false.
@@ -1249,6 +1261,7 @@ contains
     ! or a force between a slider and its guide's link (a hydraulic cylinder): its power is
     ! F . (v_slider - v_guide), the same at every point of the slider
     rate = 0.0_wp
+    actuator = .false.
     if (d == 0 .and. allocated(drawing%forces)) then
       do j = 1, size(drawing%forces)
         associate (f => drawing%forces(j))
@@ -1256,11 +1269,12 @@ contains
           l = link_index(topo, owner(f%name, f%on_link))
           g = guide_link(topo, l)
           if (l == 0 .or. g == 0) cycle
+          actuator = .true.
           rate = dot_product(f%f / plans%run, field(v0(:, l), omega(l), 0.0_wp, f%at, .false.) - &
             field(v0(:, g), omega(g), 0.0_wp, f%at, .false.))
         end associate
       end do
-      if (rate == 0.0_wp) then
+      if (.not. actuator) then
         plans%lever_note = "the driver is neither a moment on a link nor a force on a slider of the drawing"
         return
       end if

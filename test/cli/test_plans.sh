@@ -12,15 +12,14 @@ mkdir -p "$plans_dir"
 # DECK:CHECKS - lever, polygons (of the links and of the groups) or groups (the groups' only).
 # The legacy PR 3207 and PR 3050 tables leave out their massless blocks' and the
 # rod-in-cylinder reactions: their links' polygons do not close, their groups' do (those
-# reactions are inside a group). The generic PR 3050 deck draws no driving force (nothing
-# closes, no lever); friction does work in the pairs (the lever of the loads alone is not the
-# driving moment there); the flywheel decks' speed varies over the cycle.
+# reactions are inside a group). Friction does work in the pairs (the lever of the loads alone
+# is not the driving effort there); the flywheel decks' speed varies over the cycle.
 for spec in assur_fourbar:lever,polygons assur_fourbar_global:lever,polygons assur_sixbar:lever,polygons \
   assur_sixbar_global:lever,polygons assur_slider_crank:lever,polygons assur_pr3207:lever,polygons \
   sixbar:lever,polygons sixbar_example:lever,polygons class3:lever,polygons fivebar:lever,polygons \
   linkage_fourbar:lever,polygons linkage_slider_crank:lever,polygons pr3207:lever,groups pr3050:lever,groups \
-  pr3207_flywheel:groups assur_pr3207_flywheel:polygons friction_fourbar_resist:polygons assur_pr3050: \
-  assur_pr3050_friction: assur_pr3207_friction:polygons assur_sixbar_friction:polygons \
+  pr3207_flywheel:groups assur_pr3207_flywheel:polygons friction_fourbar_resist:polygons \
+  assur_pr3050:lever,polygons assur_pr3050_friction:polygons assur_pr3207_friction:polygons assur_sixbar_friction:polygons \
   friction_slider_crank:polygons; do
   name=${spec%%:*}; checks=${spec#*:}
   flags=""
@@ -79,6 +78,35 @@ grep -q '"point": "S5", "link": "5", "from": "D", "slider": "4", "reverse": true
   && pass || fail plans-pr3207-ram "$(cat "$plans_dir"/pr3207.*.json | grep -o '"point": "S5"[^[]*' | head -3)"
 grep -q '"group": "1,2,3".*"name": "F14^τ"' "$plans_dir"/pr3050.*.json \
   && pass || fail plans-pr3050-group "$(cat "$plans_dir"/pr3050.*.json | grep -o '"group": "[^]]*' | head -1)"
+
+# the generic PR 3050 deck (its cylinder's F_drive on the cylinder L1, -F_drive on the rod 2)
+# against the dedicated program at the same steps: the lever's effort, and the frame's reaction
+# on the cylinder split along A-B the same way (relative 1e-9 of the polygon's largest vector)
+for k in 2 5 9; do
+  python3 -c 'import json, math, sys
+g, d = (json.load(open(f)) for f in sys.argv[1:3])
+zg, zd = g["zhukovsky"], d["zhukovsky"]
+assert abs(zg["effort"] - zd["effort"]) <= 1e-9 * abs(zd["effort"]), (zg, zd)
+part = lambda p, n: [(v["x"], v["y"]) for q in p["force_plans"] for v in q["vectors"] if v["name"] == n][0]
+big = max(math.hypot(v["x"], v["y"]) for q in d["force_plans"] for v in q["vectors"])
+for n in ("F14^τ", "F14^n", "F34^τ", "F34^n"):
+    a, b = part(g, n), part(d, n)
+    assert math.hypot(a[0] - b[0], a[1] - b[1]) <= 1e-9 * big, (n, a, b)' \
+    "$plans_dir/assur_pr3050.$k.json" "$plans_dir/pr3050.$k.json" >"$cli_tmp/check.out" 2>&1 \
+    && pass || fail "plans-assur-pr3050-as-dedicated-$k" "$(tail -3 "$cli_tmp/check.out")"
+done
+grep -q '"link": "L1", "closure": [^,]*, "vectors": \[{"name": "GL1".*{"name": "F_drive"' "$plans_dir/assur_pr3050.5.json" \
+  && grep -q '"link": "2", "closure": [^,]*, "vectors": \[.*{"name": "-F_drive"' "$plans_dir/assur_pr3050.5.json" \
+  && pass || fail plans-assur-pr3050-drive "$(grep -o '"link": "[L0-9]*", "closure": [^,]*' "$plans_dir/assur_pr3050.5.json")"
+# ... and its sheet prints the lever's F_drive beside the run's, in English and in Russian
+for lang in en ru; do
+  run_ks data/assur_pr3050.nml --format plans --at 3 --lang "$lang"
+  case $lang in
+    en) want='>balancing effort from the lever: F_drive = 21395 N<' ;;
+    ru) want='>уравновешивающее усилие по рычагу: F_drive = 21395 Н<' ;;
+  esac
+  grep -q "$want" "$out" && pass || fail "plans-assur-pr3050-sheet-$lang" "$(grep -o '>[^<]*F_drive = [^<]*<' "$out")"
+done
 
 # the manual's worked example (T.FTN, phi1 = 66.8 deg): the lever gives M1 = 902.0 N*m
 grep -q '"zhukovsky": {"driver": "M1", "effort": 9.0203548' "$plans_dir/sixbar_example.1.json" \
