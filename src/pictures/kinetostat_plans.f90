@@ -1345,26 +1345,8 @@ contains
     call out%put('  "velocity_residual": '//full_number(plans%velocity_residual)//',')
     call put_vectors(out, "acceleration_plan", plans%accelerations, "m/s^2")
     call out%put('  "acceleration_residual": '//full_number(plans%acceleration_residual)//',')
-    call out%put('  "velocity_equations": [')
-    do i = 1, size(plans%velocity_equations)
-      associate (eq => plans%velocity_equations(i))
-        line = '    {"point": "'//trim(eq%point)//'", "link": "'//trim(eq%link)//'", "from": "'//trim(eq%from)// &
-          '", "slider": "'//trim(eq%slider)//'", "vectors": ['//vectors_json(eq%vectors)//"]}"
-      end associate
-      call put_item(out, line, i < size(plans%velocity_equations))
-    end do
-    call out%put("  ],")
-    call out%put('  "acceleration_equations": [')
-    do i = 1, size(plans%equations)
-      associate (eq => plans%equations(i))
-        line = '    {"point": "'//trim(eq%point)//'", "link": "'//trim(eq%link)//'", "from": "'//trim(eq%from)// &
-          '", "slider": "'//trim(eq%slider)//'", '
-        if (eq%reverse) line = line//'"reverse": true, '
-        line = line//'"vectors": ['//vectors_json(eq%vectors)//"]}"
-      end associate
-      call put_item(out, line, i < size(plans%equations))
-    end do
-    call out%put("  ],")
+    call put_equations(out, "velocity_equations", plans%velocity_equations, .false.)
+    call put_equations(out, "acceleration_equations", plans%equations, .true.)
     call out%put('  "force_plans": [')
     do i = 1, size(plans%group_polygons)
       associate (poly => plans%group_polygons(i))
@@ -1401,14 +1383,35 @@ contains
     integer :: q
     call out%put('  "'//key//'": {"unit": "'//unit//'", "points": [')
     do q = 1, size(vectors)
-      if (q < size(vectors)) then
-        call out%put("    "//vector_json(vectors(q))//",")
-      else
-        call out%put("    "//vector_json(vectors(q)))
-      end if
+      call put_item(out, "    "//vector_json(vectors(q)), q < size(vectors))
     end do
     call out%put("  ]},")
   end subroutine put_vectors
+
+  !> The vector equations of a plan as a JSON array under `key`, each with its components in
+  !> drawing order; `mark_reverse`: the reversed slider equations carry "reverse": true.
+  pure subroutine put_equations(out, key, equations, mark_reverse)
+    type(text_buffer_t), intent(inout) :: out
+    !> The array's name.
+    character(*), intent(in) :: key
+    !> The equations.
+    type(plan_equation_t), intent(in) :: equations(:)
+    !> Whether to mark the reversed equations.
+    logical, intent(in) :: mark_reverse
+    character(len=:), allocatable :: line
+    integer :: i
+    call out%put('  "'//key//'": [')
+    do i = 1, size(equations)
+      associate (eq => equations(i))
+        line = '    {"point": "'//trim(eq%point)//'", "link": "'//trim(eq%link)//'", "from": "'//trim(eq%from)// &
+          '", "slider": "'//trim(eq%slider)//'", '
+        if (mark_reverse .and. eq%reverse) line = line//'"reverse": true, '
+        line = line//'"vectors": ['//vectors_json(eq%vectors)//"]}"
+      end associate
+      call put_item(out, line, i < size(equations))
+    end do
+    call out%put("  ],")
+  end subroutine put_equations
 
   !> {"name": ..., "x": ..., "y": ...}.
   pure function vector_json(v) result(text)
