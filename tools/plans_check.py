@@ -23,7 +23,12 @@
         CSV's <F>_x, <F>_y components (relative 1e-9 of the polygon's largest vector);
       - with --groups: the same for the groups' polygons only;
       - with --lever: Zhukovsky's lever equals the run's driving moment (relative 1e-9,
-        absolute 1e-9 N*m).
+        absolute 1e-9 N*m); when the CSV has friction (P_loss_<pair> columns) the lever
+        lists every such pair (zhukovsky.friction.pairs): a revolute pair's relative rate is
+        the CSV's omega<on> - omega<from> (the frame at rest), its couple opposes it, a
+        prismatic pair's force opposes its relative velocity, each pair's power on the lever
+        (couple x relative rate, force . relative velocity) is minus its P_loss_<pair>, and
+        the friction's total power is minus P_loss (relative 1e-9 of P_loss, absolute 1e-9 W).
 Exit status 0 when every check passes, 1 otherwise.
 """
 import csv
@@ -189,10 +194,53 @@ def main():
             bad.append(f"no lever: {z.get('note', '')}")
         elif abs(z["effort"] - z["run"]) > 1e-9 * abs(z["run"]) + 1e-9:
             bad.append(f"Zhukovsky's lever: expected {z['driver']} = {z['run']!r}, lever {z['effort']!r}")
+        losses = {name[len("P_loss_"):]: v for name, v in col.items() if name.startswith("P_loss_")}
+        if losses and z["effort"] is not None:
+            check_friction(z, losses, col, bad)
     if bad:
         print(f"{args[0]} (step {plans['step']}):")
         print("\n".join(bad))
         sys.exit(1)
+
+
+def check_friction(z, losses, col, bad):
+    """The pairs' friction on the lever against the CSV's P_loss_<pair> and omega columns."""
+    if "friction" not in z:
+        bad.append(f"Zhukovsky's lever: the CSV has friction in {sorted(losses)}, the lever none")
+        return
+    tol = 1e-9 * max(col.get("P_loss", 0.0), 1.0)
+    pairs = {p["pair"]: p for p in z["friction"]["pairs"]}
+    if sorted(pairs) != sorted(losses):
+        bad.append(f"lever friction: pairs expected {sorted(losses)}, lever {sorted(pairs)}")
+
+    def omega(link):
+        return col.get("omega" + link, col.get("omegaL" + link, 0.0))
+
+    total = 0.0
+    for name, loss in losses.items():
+        if name not in pairs:
+            continue
+        p = pairs[name]
+        if "moment" in p:
+            rel = omega(p["on"]) - omega(p["from"])
+            if abs(p["relative"] - rel) > 1e-9 * (abs(omega(p["on"])) + abs(omega(p["from"]))) + 1e-12:
+                bad.append(f"lever friction {name}: relative rate expected {rel!r}, lever {p['relative']!r}")
+            if p["moment"] * p["relative"] > 0:
+                bad.append(f"lever friction {name}: couple {p['moment']!r} turns with the relative rate {p['relative']!r}")
+            power = p["moment"] * p["relative"]
+        else:
+            f, v = p["force"], p["relative"]
+            power = f["x"] * v["x"] + f["y"] * v["y"]
+            if abs(f["x"] * v["y"] - f["y"] * v["x"]) > 1e-9 * math.hypot(f["x"], f["y"]) * math.hypot(v["x"], v["y"]) \
+                    or power > 0:
+                bad.append(f"lever friction {name}: force {f} does not oppose the relative velocity {v}")
+        for what, value in (("power (moment x rate)", power), ("power", p["power"])):
+            if abs(value + loss) > tol:
+                bad.append(f"lever friction {name}: {what} expected -P_loss_{name} = {-loss!r}, lever {value!r}")
+        total += p["power"]
+    if abs(z["friction"]["power"] + col["P_loss"]) > tol or abs(total - z["friction"]["power"]) > tol:
+        bad.append(f"lever friction: total power expected -P_loss = {-col['P_loss']!r}, lever "
+                   f"{z['friction']['power']!r} (pairs' sum {total!r})")
 
 
 if __name__ == "__main__":

@@ -276,6 +276,8 @@ contains
       text = "аналитическое значение в положении"
     case ("relative difference")
       text = "относительное расхождение"
+    case ("pair friction included")
+      text = "трение в парах учтено"
     case ("not drawn")
       text = "не построен"
     case ("arrows: directions of the loads")

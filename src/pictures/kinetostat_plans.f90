@@ -23,7 +23,7 @@ module kinetostat_plans
   use kinetostat_text, only: int_str
   implicit none
   private
-  public :: plans_t, plan_vector_t, force_polygon_t, plan_equation_t, build_plans, write_plans_json
+  public :: plans_t, plan_vector_t, force_polygon_t, plan_equation_t, lever_friction_t, build_plans, write_plans_json
   public :: component_normal, component_tangential, component_coriolis, component_relative, component_reaction
 
   !> A named vector (a point's image on a plan, a force of a polygon).
@@ -91,6 +91,28 @@ module kinetostat_plans
     real(wp) :: moment_value = 0.0_wp
   end type force_polygon_t
 
+  !> The friction of one pair on Zhukovsky's lever: equal and opposite actions on the pair's
+  !> two links, opposing their relative motion - at a revolute pair a couple (moment on `on`,
+  !> -moment on `from`), at a prismatic pair a force along the relative sliding (force on
+  !> `on` at `at`, -force on `from` at the same point).
+  type :: lever_friction_t
+    !> The pair's reaction name ("F21": on link 2 from link 1).
+    character(len=16) :: pair = ""
+    !> The two links ("2", "1"; the frame's number for the frame).
+    character(len=16) :: on = "", from = ""
+    !> Whether the pair is prismatic (the table has its normal force <pair>N).
+    logical :: prismatic = .false.
+    !> Revolute pair: the friction couple on `on`, N*m (counterclockwise positive).
+    real(wp) :: moment = 0.0_wp
+    !> Prismatic pair: the friction force on `on`, N (position frame), and its point, m.
+    real(wp) :: force(2) = 0.0_wp, at(2) = 0.0_wp
+    !> Relative motion from the plan: omega_on - omega_from (rad/s, first component) at a
+    !> revolute pair; v_on - v_from at `at` (m/s) at a prismatic one.
+    real(wp) :: relative(2) = 0.0_wp
+    !> Power of the two actions on the lever, W (minus the pair's loss).
+    real(wp) :: power = 0.0_wp
+  end type lever_friction_t
+
   !> The plans of one step.
   type :: plans_t
     !> Velocity images of the named points, m/s.
@@ -121,6 +143,13 @@ module kinetostat_plans
     type(plan_vector_t), allocatable :: lever_forces(:), lever_images(:)
     !> Scale of the lever's arms: the driving link's rate (rad/s, or m/s for an actuator).
     real(wp) :: lever_rate = 0.0_wp
+    !> Its symbol: omega<link> for a driving moment, v_rel for an actuator.
+    character(len=:), allocatable :: lever_rate_name
+    !> Friction in the pairs on the lever (the table has P_loss_<pair> columns): every pair's
+    !> actions, their total power (W) and its share of the effort, -power/lever_rate.
+    logical :: lever_friction = .false.
+    type(lever_friction_t), allocatable :: friction(:)
+    real(wp) :: friction_power = 0.0_wp, friction_share = 0.0_wp
   end type plans_t
 
   !> A pair equation between the fields of two links at a point: kind and data.
@@ -1232,7 +1261,8 @@ contains
   !> Zhukovsky's lever: the power of every load but the driving moment, over the driver's
   !> angular velocity (the balancing moment); for a driving force between a slider and its
   !> guide's link (a cylinder: F on one, -F on the other) over their relative velocity along
-  !> it (the balancing force). Pair forces do no work without friction.
+  !> it (the balancing force). The reactions of frictionless pairs do no work; friction in a
+  !> pair (pair_friction_of) adds its two actions' power.
   pure subroutine lever_of(topo, drawing, table, k, omega, v0, plans)
     type(sketch_t), intent(in) :: topo
     type(drawing_t), intent(in) :: drawing
@@ -1284,6 +1314,8 @@ contains
     else
       rate = omega(d)
     end if
+    plans%lever_rate_name = "v_rel"
+    if (d > 0) plans%lever_rate_name = "omega"//trim(topo%links(d)%name)
     if (rate == 0.0_wp) then
       plans%lever_note = "the driving link is at rest"
       return
@@ -1316,7 +1348,10 @@ contains
       end if
       power = power + drawing%moments(j)%value * omega(l)
     end do
-    plans%effort = -power / rate
+    call pair_friction_of(topo, drawing, table, k, omega, v0, plans)
+    if (len(plans%lever_note) > 0) return
+    plans%friction_share = -plans%friction_power / rate
+    plans%effort = -(power + plans%friction_power) / rate
     plans%lever_known = .true.
   contains
     pure function owner_of_moment(j) result(o)
@@ -1327,6 +1362,87 @@ contains
         verify(trim(drawing%moments(j)%name(2:)), "0123456789") == 0) o = trim(drawing%moments(j)%name(2:))
     end function owner_of_moment
   end subroutine lever_of
+
+  !> Friction in the pairs on Zhukovsky's lever. For every pair with a P_loss_<pair> column
+  !> (the run's power lost in it, W): the equal and opposite actions on its two links (F21: on
+  !> link 2 and on link 1; a link the topology does not have is the frame, at rest), opposing
+  !> their relative motion on the plan - at a revolute pair a couple M_f, of size P_loss over
+  !> |omega_2 - omega_1|, whose power on the lever is M_f omega_2 - M_f omega_1; at a prismatic
+  !> pair (a <pair>N column) a force F_f along the relative sliding v_2 - v_1 (the same at
+  !> every point: the links turn together), of size P_loss over |v_2 - v_1|, acting at the
+  !> images of the pair's point on the two links, power F_f.v_2 - F_f.v_1. A pair at relative
+  !> rest on the plan (within 1e-10 of its links' rates) contributes nothing. Sets
+  !> plans%lever_note when a pair's links are not known.
+  pure subroutine pair_friction_of(topo, drawing, table, k, omega, v0, plans)
+    type(sketch_t), intent(in) :: topo
+    type(drawing_t), intent(in) :: drawing
+    type(step_table_t), intent(in) :: table
+    integer, intent(in) :: k
+    real(wp), intent(in) :: omega(:), v0(:, :)
+    type(plans_t), intent(inout) :: plans
+    !> A relative rate at or below this fraction of the links' rates is rest.
+    real(wp), parameter :: rest_rel = 1.0e-10_wp
+    character(*), parameter :: loss_prefix = "P_loss_"
+    type(lever_friction_t) :: pf
+    character(len=:), allocatable :: pair
+    real(wp) :: loss, size_rel, scale
+    integer :: c, a, b, j
+    allocate (plans%friction(0))
+    plans%friction_power = 0.0_wp
+    do c = 1, size(table%columns)
+      if (index(table%columns(c)%name, loss_prefix) /= 1) cycle
+      plans%lever_friction = .true.
+      pair = trim(table%columns(c)%name(len(loss_prefix) + 1:))
+      if (len(pair) /= 3 .or. pair(1:1) /= "F" .or. verify(pair(2:3), "0123456789") /= 0) then
+        plans%lever_note = "friction of pair "//pair//": its links are not known"
+        return
+      end if
+      pf = lever_friction_t(pair=pair, on=pair(2:2), from=pair(3:3))
+      a = link_index(topo, pair(2:2))
+      b = link_index(topo, pair(3:3))
+      if (a == 0 .and. b == 0) then
+        plans%lever_note = "friction of pair "//pair//": its links are not known"
+        return
+      end if
+      loss = table%rows(c, k)
+      pf%prismatic = table%column_index(pair//"N") > 0
+      if (pf%prismatic) then
+        if (allocated(drawing%forces)) then
+          do j = 1, size(drawing%forces)
+            if (drawing%forces(j)%name == pair) pf%at = drawing%forces(j)%at
+          end do
+        end if
+        pf%relative = velocity(a, pf%at) - velocity(b, pf%at)
+        size_rel = norm2(pf%relative)
+        scale = norm2(velocity(a, pf%at)) + norm2(velocity(b, pf%at))
+        if (size_rel > rest_rel * scale) pf%force = -loss / size_rel * pf%relative / size_rel
+        pf%power = dot_product(pf%force, velocity(a, pf%at)) + dot_product(-pf%force, velocity(b, pf%at))
+      else
+        pf%relative = [rate_of(a) - rate_of(b), 0.0_wp]
+        size_rel = abs(pf%relative(1))
+        scale = abs(rate_of(a)) + abs(rate_of(b))
+        if (size_rel > rest_rel * scale) pf%moment = -sign(loss / size_rel, pf%relative(1))
+        pf%power = pf%moment * rate_of(a) + (-pf%moment) * rate_of(b)
+      end if
+      plans%friction = [plans%friction, pf]
+      plans%friction_power = plans%friction_power + pf%power
+    end do
+  contains
+    !> Angular velocity of link l (0: the frame), rad/s.
+    pure real(wp) function rate_of(l)
+      integer, intent(in) :: l
+      rate_of = 0.0_wp
+      if (l > 0) rate_of = omega(l)
+    end function rate_of
+    !> Velocity of the point p carried by link l (0: the frame), m/s.
+    pure function velocity(l, p) result(v)
+      integer, intent(in) :: l
+      real(wp), intent(in) :: p(2)
+      real(wp) :: v(2)
+      v = 0.0_wp
+      if (l > 0) v = field(v0(:, l), omega(l), 0.0_wp, p, .false.)
+    end function velocity
+  end subroutine pair_friction_of
 
   !> The plans as one JSON object (`--format json --at K --plans`).
   pure subroutine write_plans_json(plans, table, k, out)
@@ -1366,14 +1482,45 @@ contains
     end do
     call out%put("  ],")
     if (plans%lever_known) then
-      call out%put('  "zhukovsky": {"driver": "'//plans%driver//'", "effort": '//full_number(plans%effort)// &
-        ', "run": '//full_number(plans%run)//'}')
+      line = '  "zhukovsky": {"driver": "'//plans%driver//'", "effort": '//full_number(plans%effort)// &
+        ', "run": '//full_number(plans%run)
+      if (plans%lever_friction) then
+        line = line//', "friction": {"power": '//full_number(plans%friction_power)//', "rate": "'// &
+          plans%lever_rate_name//'", "share": '//full_number(plans%friction_share)//', "pairs": ['
+        do i = 1, size(plans%friction)
+          if (i > 1) line = line//', '
+          line = line//friction_json(plans%friction(i))
+        end do
+        line = line//']}'
+      end if
+      call out%put(line//'}')
     else
       call out%put('  "zhukovsky": {"driver": "'//plans%driver//'", "effort": null, "run": '//full_number(plans%run)// &
         ', "note": "'//plans%lever_note//'"}')
     end if
     call out%put("}")
   end subroutine write_plans_json
+
+  !> One pair's friction on the lever as a JSON object: {"pair", "on", "from", "moment" and
+  !> "relative" (rad/s) at a revolute pair, "force", "at" and "relative" (m/s) as {x, y} at a
+  !> prismatic one, "power" (W)}.
+  pure function friction_json(pf) result(text)
+    type(lever_friction_t), intent(in) :: pf
+    character(len=:), allocatable :: text
+    text = '{"pair": "'//trim(pf%pair)//'", "on": "'//trim(pf%on)//'", "from": "'//trim(pf%from)//'", '
+    if (pf%prismatic) then
+      text = text//'"force": '//xy(pf%force)//', "at": '//xy(pf%at)//', "relative": '//xy(pf%relative)
+    else
+      text = text//'"moment": '//full_number(pf%moment)//', "relative": '//full_number(pf%relative(1))
+    end if
+    text = text//', "power": '//full_number(pf%power)//'}'
+  contains
+    pure function xy(v) result(t)
+      real(wp), intent(in) :: v(2)
+      character(len=:), allocatable :: t
+      t = '{"x": '//full_number(v(1))//', "y": '//full_number(v(2))//'}'
+    end function xy
+  end function friction_json
 
   !> "key": {"unit": ..., "points": [vectors]}, as one member of the plans object.
   pure subroutine put_vectors(out, key, vectors, unit)

@@ -93,6 +93,13 @@ contains
     if (plans%lever_known) then
       call out%put(svg_text(12.0_wp, y + 6.0_wp, word("balancing effort from the lever", lang)//": "// &
         plans%driver//" = "//short_number(plans%effort)//" "//effort_unit(plans%driver, lang), 'class="label"'))
+      if (plans%lever_friction) then
+        ! the pairs' friction on the lever: its share of the effort, -P_loss over the driver's rate
+        call out%put(svg_text(12.0_wp, y + 11.0_wp, word("pair friction included", lang)//": -P_loss/"// &
+          rate_symbol(plans%lever_rate_name)//" = "//short_number(plans%friction_share)//" "// &
+          effort_unit(plans%driver, lang), 'class="label"'))
+        y = y + 5.0_wp
+      end if
       call out%put(svg_text(12.0_wp, y + 11.0_wp, word("analytic value of the step", lang)//": "// &
         plans%driver//" = "//short_number(plans%run)//" "//effort_unit(plans%driver, lang), 'class="label"'))
       call out%put(svg_text(12.0_wp, y + 16.0_wp, word("relative difference", lang)//": "// &
@@ -105,6 +112,17 @@ contains
       lang))
     call svg_close(out)
   end subroutine write_svg_plans
+
+  !> The lever's rate as the sheet writes it: omega1 as ω1, v_rel as it is.
+  pure function rate_symbol(name) result(symbol)
+    character(*), intent(in) :: name
+    character(len=:), allocatable :: symbol
+    if (index(name, "omega") == 1) then
+      symbol = "ω"//name(6:)
+    else
+      symbol = name
+    end if
+  end function rate_symbol
 
   !> N*m for a moment (M...), N for a force.
   pure function effort_unit(name, lang) result(unit)

@@ -12,15 +12,16 @@ mkdir -p "$plans_dir"
 # DECK:CHECKS - lever, polygons (of the links and of the groups) or groups (the groups' only).
 # The legacy PR 3207 and PR 3050 tables leave out their massless blocks' and the
 # rod-in-cylinder reactions: their links' polygons do not close, their groups' do (those
-# reactions are inside a group). Friction does work in the pairs (the lever of the loads alone
-# is not the driving effort there); the flywheel decks' speed varies over the cycle.
+# reactions are inside a group). On the friction decks the lever adds every pair's friction
+# (its power against the CSV's P_loss_<pair>); the flywheel decks' speed varies over the cycle.
 for spec in assur_fourbar:lever,polygons assur_fourbar_global:lever,polygons assur_sixbar:lever,polygons \
   assur_sixbar_global:lever,polygons assur_slider_crank:lever,polygons assur_pr3207:lever,polygons \
   sixbar:lever,polygons sixbar_example:lever,polygons class3:lever,polygons fivebar:lever,polygons \
   linkage_fourbar:lever,polygons linkage_slider_crank:lever,polygons pr3207:lever,groups pr3050:lever,groups \
-  pr3207_flywheel:groups assur_pr3207_flywheel:polygons friction_fourbar_resist:polygons \
-  assur_pr3050:lever,polygons assur_pr3050_friction:polygons assur_pr3207_friction:polygons assur_sixbar_friction:polygons \
-  friction_slider_crank:polygons; do
+  pr3207_flywheel:groups assur_pr3207_flywheel:polygons friction_fourbar_resist:lever,polygons \
+  assur_pr3050:lever,polygons assur_pr3050_friction:lever,polygons assur_pr3207_friction:lever,polygons \
+  assur_sixbar_friction:lever,polygons \
+  friction_slider_crank:lever,polygons; do
   name=${spec%%:*}; checks=${spec#*:}
   flags=""
   case ",$checks," in *,lever,*) flags="$flags --lever" ;; esac
@@ -47,6 +48,31 @@ python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); d["zhukovsky"]["
   "$plans_dir/sixbar.1.json" >"$cli_tmp/bad_lever.json"
 python3 "$plans_check" "$cli_tmp/bad_lever.json" "$plans_dir/sixbar.csv" --lever >/dev/null 2>&1 \
   && fail plans-lever-can-fail "a wrong lever was accepted" || pass
+# ... and so can the friction on the lever: left out (the effort of the loads alone, what the
+# lever gave before it counted the pairs' friction), one pair dropped, a couple turned round
+python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); z = d["zhukovsky"]
+z["effort"] -= z.pop("friction")["share"]; print(json.dumps(d))' \
+  "$plans_dir/friction_slider_crank.19.json" >"$cli_tmp/no_friction.json"
+python3 "$plans_check" "$cli_tmp/no_friction.json" "$plans_dir/friction_slider_crank.csv" --lever >"$cli_tmp/check.out" 2>&1 \
+  && fail plans-lever-friction-can-fail "a lever without the pairs' friction was accepted" || pass
+python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); z = d["zhukovsky"]
+z["friction"]["pairs"].pop(); print(json.dumps(d))' \
+  "$plans_dir/assur_sixbar_friction.19.json" >"$cli_tmp/pair_dropped.json"
+python3 "$plans_check" "$cli_tmp/pair_dropped.json" "$plans_dir/assur_sixbar_friction.csv" --lever >/dev/null 2>&1 \
+  && fail plans-lever-friction-pair-can-fail "a lever missing a pair's friction was accepted" || pass
+python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); p = d["zhukovsky"]["friction"]["pairs"][0]
+p["moment"] = -p["moment"]; print(json.dumps(d))' \
+  "$plans_dir/friction_fourbar_resist.91.json" >"$cli_tmp/couple_turned.json"
+python3 "$plans_check" "$cli_tmp/couple_turned.json" "$plans_dir/friction_fourbar_resist.csv" --lever >/dev/null 2>&1 \
+  && fail plans-lever-friction-sense-can-fail "a friction couple turning with the relative rotation was accepted" || pass
+# the friction's share on the sheet, in both languages
+run_ks data/friction_slider_crank.nml --format plans --at 3
+grep -q 'pair friction included: -P_loss/ω1 = 2.26 N\*m<' "$out" && pass \
+  || fail plans-friction-sheet "no friction line: $(grep -o 'class="label">[^<]*' "$out" | tail -4)"
+run_ks data/assur_pr3050_friction.nml --format plans --at 2 --lang ru
+grep -q 'трение в парах учтено: -P_loss/v_rel = 172 Н<' "$out" && pass \
+  || fail plans-friction-sheet-ru "no friction line: $(grep -o 'class="label">[^<]*' "$out" | tail -4)"
+
 sed -E 's/("name": "F21", "x": )-?([0-9])/\1\21/' "$plans_dir/sixbar.1.json" >"$cli_tmp/bad_polygon.json"
 if cmp -s "$cli_tmp/bad_polygon.json" "$plans_dir/sixbar.1.json"; then
   fail plans-polygon-can-fail "the perturbation did not change the plans"
