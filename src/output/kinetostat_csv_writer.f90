@@ -11,29 +11,21 @@ module kinetostat_csv_writer
 
 contains
 
-  !> The CSV of a step table (columns marked csv only; kinematics and link-axes columns when
-  !> asked). The rows are formatted in parallel blocks with more than one OpenMP thread
-  !> (same bytes).
-  subroutine write_csv(table, out, kinematics, link_axes)
+  !> The CSV of a step table (columns marked csv only; the kinematics and link-axes columns
+  !> when the table shows them: table%shows). The rows are formatted in parallel blocks with
+  !> more than one OpenMP thread (same bytes).
+  subroutine write_csv(table, out)
     !> Finite results.
     type(step_table_t), intent(in) :: table
     !> Where the lines go.
     type(text_buffer_t), intent(inout) :: out
-    !> Whether to add the kinematics columns (--kinematics); default false.
-    logical, intent(in), optional :: kinematics
-    !> Whether to add the pair forces in link axes (--frame link); default false.
-    logical, intent(in), optional :: link_axes
     character(len=:), allocatable :: line
     logical, allocatable :: whole(:)
     integer, allocatable :: columns(:)
     integer :: c
-    logical :: shown(size(table%columns)), with_kinematics, with_link_axes
-    with_kinematics = .false.
-    if (present(kinematics)) with_kinematics = kinematics
-    with_link_axes = .false.
-    if (present(link_axes)) with_link_axes = link_axes
+    logical :: shown(size(table%columns))
     do c = 1, size(table%columns)
-      shown(c) = table%columns(c)%csv .and. table%shows(c, with_kinematics, with_link_axes)
+      shown(c) = table%columns(c)%csv .and. table%shows(c)
     end do
     line = ""
     do c = 1, size(table%columns)

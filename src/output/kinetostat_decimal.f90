@@ -17,7 +17,7 @@ module kinetostat_decimal
   use kinetostat_kinds, only: wp
   implicit none
   private
-  public :: edit_f, edit_exponent, edit_f_with_blank, put_es_compact, put_whole, i16
+  public :: edit_f, edit_exponent, put_es_compact, put_whole, i16
 
   !> Integer kind of the exact products (128 bits).
   integer, parameter :: i16 = selected_int_kind(38)
@@ -326,17 +326,32 @@ contains
     write (text, fmt) x
   end subroutine fallback_exponent
 
-  !> text = x written with Fw.d, right-justified in len(text) = w.
-  pure subroutine edit_f(x, d, text)
+  !> text = x written with Fw.d, right-justified in len(text) = w. With `fits`: written only
+  !> when the field leaves at least one blank in front, as `fits` says; otherwise nothing is
+  !> written and `fits` is false (the caller chooses another form).
+  pure subroutine edit_f(x, d, text, fits)
     !> Finite value.
     real(wp), intent(in) :: x
     !> Digits after the point.
     integer, intent(in) :: d
     !> The field (its length is the width w).
     character(*), intent(out) :: text
-    character(len=scratch_len) :: body
-    character(len=32) :: fmt
-    integer :: n, status
+    !> Whether the fixed form was written with a blank in front (asked for when present).
+    logical, intent(out), optional :: fits
+    character(len=scratch_len) :: body, wide
+    integer :: n, status, first
+    if (present(fits)) then
+      call fixed_body(x, d, scratch_len, body, n, status)
+      if (status == body_fallback) then
+        call write_f(x, d, wide)
+        first = verify(wide, " ")
+        n = scratch_len - first + 1
+        body(1:n) = wide(first:)
+      end if
+      fits = n < len(text) .and. status /= body_stars
+      if (fits) call right_justify(body(1:n), text)
+      return
+    end if
     call fixed_body(x, d, len(text), body, n, status)
     select case (status)
     case (body_ok)
@@ -344,10 +359,19 @@ contains
     case (body_stars)
       text = repeat("*", len(text))
     case default
-      write (fmt, '("(f",i0,".",i0,")")') len(text), d
-      write (text, fmt) x
+      call write_f(x, d, text)
     end select
   end subroutine edit_f
+
+  !> text = x written by the compiler's WRITE with Fw.d, w = len(text) (outside the fast path).
+  pure subroutine write_f(x, d, text)
+    real(wp), intent(in) :: x
+    integer, intent(in) :: d
+    character(*), intent(out) :: text
+    character(len=32) :: fmt
+    write (fmt, '("(f",i0,".",i0,")")') len(text), d
+    write (text, fmt) x
+  end subroutine write_f
 
   !> The characters of an Fw.d field without the blanks in front: body(1:n), with status
   !> as exponent_body's.
@@ -387,30 +411,6 @@ contains
     status = body_stars
     if (n <= w) status = body_ok
   end subroutine fixed_body
-
-  !> Fw.d when the field leaves at least one blank in front, as `fits`; otherwise nothing
-  !> is written and `fits` is false (the caller chooses another form).
-  pure subroutine edit_f_with_blank(x, d, text, fits)
-    !> Finite value.
-    real(wp), intent(in) :: x
-    !> Digits after the point.
-    integer, intent(in) :: d
-    !> The field (its length is the width w).
-    character(*), intent(out) :: text
-    !> Whether the fixed form was written.
-    logical, intent(out) :: fits
-    character(len=scratch_len) :: body, wide
-    integer :: n, status, first
-    call fixed_body(x, d, scratch_len, body, n, status)
-    if (status == body_fallback) then
-      call edit_f(x, d, wide)
-      first = verify(wide, " ")
-      n = scratch_len - first + 1
-      body(1:n) = wide(first:)
-    end if
-    fits = n < len(text) .and. status /= body_stars
-    if (fits) call right_justify(body(1:n), text)
-  end subroutine edit_f_with_blank
 
   !> Append x in ESw.dEe form without leading blanks to buf at pos+1.. (pos advanced):
   !> the text of adjustl(ES(d+e+6).dEe) for a CSV cell or a JSON number.

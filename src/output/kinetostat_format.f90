@@ -8,7 +8,7 @@
 module kinetostat_format
   use, intrinsic :: iso_fortran_env, only: int64
   use kinetostat_kinds, only: wp
-  use kinetostat_decimal, only: edit_f_with_blank, edit_exponent, put_es_compact, put_whole
+  use kinetostat_decimal, only: edit_f, edit_exponent, put_es_compact, put_whole
   use kinetostat_text_buffer, only: text_buffer_t
   implicit none
   private
@@ -65,7 +65,7 @@ contains
     ! a value that rounds to zero at these decimals is printed as 0.00, never -0.00
     y = x + 0.0_wp
     if (abs(x) < 0.5_wp * 10.0_wp**(-decimals)) y = 0.0_wp
-    if (abs(x) < 1.0e30_wp) call edit_f_with_blank(y, decimals, text, fits)
+    if (abs(x) < 1.0e30_wp) call edit_f(y, decimals, text, fits)
     if (.not. fits) call exponent_text(x, text)
   end subroutine fixed_text
 
@@ -270,7 +270,7 @@ contains
       text = trim(buf)
       return
     end if
-    call edit_f_with_blank(x, decimals, buf, fits)   ! F0.d with its leading zero
+    call edit_f(x, decimals, buf, fits)   ! F0.d with its leading zero
     text = trim(adjustl(buf))
     if (decimals == 0 .and. text(len(text):len(text)) == ".") text = text(1:len(text) - 1)
   end function fixed_number

@@ -21,31 +21,23 @@ contains
   !> part at a time: up to a chunk of an echoed array's values, then it returns with
   !> head%done false for the caller to drain `out`, and goes on when called again; the rows
   !> come once head%done.
-  subroutine write_json(title, table, out, kinematics, link_axes, head)
+  subroutine write_json(title, table, out, head)
     !> Title of the mechanism (as the legacy table prints it).
     character(*), intent(in) :: title
     !> Finite results.
     type(step_table_t), intent(in) :: table
     !> Where the lines go.
     type(text_buffer_t), intent(inout) :: out
-    !> Whether to add the kinematics columns (--kinematics); default false.
-    logical, intent(in), optional :: kinematics
-    !> Whether to add the pair forces in link axes (--frame link); default false.
-    logical, intent(in), optional :: link_axes
     !> Where the head is (written whole when absent).
     type(echo_cursor_t), intent(inout), optional :: head
     type(echo_cursor_t) :: whole_head
     character(len=:), allocatable :: line
     logical, allocatable :: whole(:)
     integer :: i, c, last
-    logical :: shown(size(table%columns)), with_kinematics, with_link_axes
-    with_kinematics = .false.
-    if (present(kinematics)) with_kinematics = kinematics
-    with_link_axes = .false.
-    if (present(link_axes)) with_link_axes = link_axes
+    logical :: shown(size(table%columns))
     last = 0
     do c = 1, size(table%columns)
-      shown(c) = table%shows(c, with_kinematics, with_link_axes)
+      shown(c) = table%shows(c)
       if (shown(c)) last = c
     end do
     if (table%first_block()) then

@@ -257,8 +257,10 @@ module kinetostat_step_table
     !> cycle in the run).
     real(wp) :: max_drive_deviation = -1.0_wp
     !> The run reports the pair forces in link axes (--frame link; the legacy table prints the
-    !> link-axes columns instead of magnitudes and angles).
+    !> link-axes columns instead of magnitudes and angles, CSV and JSON add them).
     logical :: link_frame = .false.
+    !> CSV and JSON show the kinematics columns (--kinematics).
+    logical :: kinematics_shown = .false.
     !> Block asked of `solve` by the run pipeline: first and last step (0: every step at once).
     integer :: block_first = 0
     !> Last step of the block asked (0: every step).
@@ -566,21 +568,16 @@ contains
     deallocate (self%pending)
   end subroutine finish_columns
 
-  !> Whether a writer shows column `c`: kinematics columns only when `kinematics` is true,
-  !> link-axes columns only when `link_axes` is true (default false).
-  pure logical function shows(self, c, kinematics, link_axes)
+  !> Whether CSV and JSON show column `c`: kinematics columns only with kinematics_shown,
+  !> link-axes columns only with link_frame.
+  pure logical function shows(self, c)
     class(step_table_t), intent(in) :: self
     !> Column index.
     integer, intent(in) :: c
-    !> Whether the kinematics columns were asked for (--kinematics).
-    logical, intent(in) :: kinematics
-    !> Whether the link-axes columns were asked for (--frame link).
-    logical, intent(in), optional :: link_axes
     if (self%columns(c)%link_axes) then
-      shows = .false.
-      if (present(link_axes)) shows = link_axes
+      shows = self%link_frame
     else
-      shows = kinematics .or. .not. self%columns(c)%kinematic
+      shows = self%kinematics_shown .or. .not. self%columns(c)%kinematic
     end if
   end function shows
 

@@ -170,6 +170,7 @@ contains
     end if
     table%row_name = "step"
     table%driver = "M1"
+    table%kinematics_shown = options%kinematics
     table%kinematics_wanted = options%kinematics .or. options%link_frame .or. options%format == format_svg .or. &
       options%plans .or. options%format == format_plans .or. options%format == format_dxf .or. options%shaking
     rows = block_rows
@@ -224,7 +225,7 @@ contains
       end if
       select case (options%format)
       case (format_csv)
-        call write_csv(table, out, options%kinematics, options%link_frame)
+        call write_csv(table, out)
       case (format_summary)
         if (table%last_block()) then
           call out%put(summary_header(table, options%kinematics))
@@ -236,7 +237,7 @@ contains
           if (allocated(error)) return
         else
           do
-            call write_json(mech%title(options%lang), table, out, options%kinematics, options%link_frame, head)
+            call write_json(mech%title(options%lang), table, out, head)
             if (head%done) exit
             call drain_head(error)
             if (allocated(error)) return
