@@ -28,7 +28,9 @@
         the CSV's omega<on> - omega<from> (the frame at rest), its couple opposes it, a
         prismatic pair's force opposes its relative velocity, each pair's power on the lever
         (couple x relative rate, force . relative velocity) is minus its P_loss_<pair>, and
-        the friction's total power is minus P_loss (relative 1e-9 of P_loss, absolute 1e-9 W).
+        the friction's total power is minus P_loss (relative 1e-9 of P_loss, absolute 1e-9 W);
+        on a steady cycle's true motion (zhukovsky.flywheel) the flywheel's and the rotor's
+        moment is -J times the driving link's eps column (relative 1e-9, absolute 1e-9 N*m).
 Exit status 0 when every check passes, 1 otherwise.
 """
 import csv
@@ -197,6 +199,12 @@ def main():
         losses = {name[len("P_loss_"):]: v for name, v in col.items() if name.startswith("P_loss_")}
         if losses and z["effort"] is not None:
             check_friction(z, losses, col, bad)
+        if "flywheel" in z:
+            eps = col.get("eps" + z["driver"][1:])
+            expected = None if eps is None else -z["flywheel"]["J"] * eps
+            if expected is None or abs(z["flywheel"]["moment"] - expected) > 1e-9 * abs(expected) + 1e-9:
+                bad.append(f"lever flywheel: moment expected -J*eps{z['driver'][1:]} = {expected!r}, "
+                           f"lever {z['flywheel']['moment']!r}")
     if bad:
         print(f"{args[0]} (step {plans['step']}):")
         print("\n".join(bad))

@@ -276,6 +276,8 @@ contains
       text = "аналитическое значение в положении"
     case ("relative difference")
       text = "относительное расхождение"
+    case ("flywheel and rotor included")
+      text = "маховик и ротор учтены"
     case ("pair friction included")
       text = "трение в парах учтено"
     case ("not drawn")

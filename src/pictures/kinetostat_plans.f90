@@ -150,6 +150,11 @@ module kinetostat_plans
     logical :: lever_friction = .false.
     type(lever_friction_t), allocatable :: friction(:)
     real(wp) :: friction_power = 0.0_wp, friction_share = 0.0_wp
+    !> The true motion of a steady cycle (a DYNAMICS block with J_flywheel): the flywheel and
+    !> the rotor turn with the driving link, their inertia J (kg*m^2) and inertia moment
+    !> -J*eps on it (N*m) are on the lever.
+    logical :: lever_flywheel = .false.
+    real(wp) :: flywheel_inertia = 0.0_wp, flywheel_moment = 0.0_wp
   end type plans_t
 
   !> A pair equation between the fields of two links at a point: kind and data.
@@ -1271,7 +1276,7 @@ contains
     real(wp), intent(in) :: omega(:), v0(:, :)
     type(plans_t), intent(inout) :: plans
     real(wp) :: power, rate
-    integer :: j, l, d, g
+    integer :: j, l, d, g, c
     logical :: actuator
     plans%driver = ""
     if (allocated(table%driver)) plans%driver = table%driver
@@ -1348,6 +1353,16 @@ contains
       end if
       power = power + drawing%moments(j)%value * omega(l)
     end do
+    ! the true motion: the flywheel and the rotor on the driving link's shaft, -J eps on it
+    if (d > 0 .and. table%dynamics_index("J_flywheel") > 0) then
+      c = table%column_index("eps"//trim(topo%links(d)%name))
+      if (c > 0) then
+        plans%lever_flywheel = .true.
+        plans%flywheel_inertia = table%dynamics_value("J_flywheel") + table%dynamics_value("J_rotor")
+        plans%flywheel_moment = -plans%flywheel_inertia * table%rows(c, k)
+        power = power + plans%flywheel_moment * omega(d)
+      end if
+    end if
     call pair_friction_of(topo, drawing, table, k, omega, v0, plans)
     if (len(plans%lever_note) > 0) return
     plans%friction_share = -plans%friction_power / rate
@@ -1484,6 +1499,8 @@ contains
     if (plans%lever_known) then
       line = '  "zhukovsky": {"driver": "'//plans%driver//'", "effort": '//full_number(plans%effort)// &
         ', "run": '//full_number(plans%run)
+      if (plans%lever_flywheel) line = line//', "flywheel": {"J": '//full_number(plans%flywheel_inertia)// &
+        ', "moment": '//full_number(plans%flywheel_moment)//'}'
       if (plans%lever_friction) then
         line = line//', "friction": {"power": '//full_number(plans%friction_power)//', "rate": "'// &
           plans%lever_rate_name//'", "share": '//full_number(plans%friction_share)//', "pairs": ['

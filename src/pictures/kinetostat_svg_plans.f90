@@ -93,6 +93,13 @@ contains
     if (plans%lever_known) then
       call out%put(svg_text(12.0_wp, y + 6.0_wp, word("balancing effort from the lever", lang)//": "// &
         plans%driver//" = "//short_number(plans%effort)//" "//effort_unit(plans%driver, lang), 'class="label"'))
+      if (plans%lever_flywheel) then
+        ! the flywheel and the rotor of the true motion: their inertia moment on the driving link
+        call out%put(svg_text(12.0_wp, y + 11.0_wp, word("flywheel and rotor included", lang)//": J = "// &
+          short_number(plans%flywheel_inertia)//" "//unit_word("kg*m^2", lang)//", -J·ε = "// &
+          short_number(plans%flywheel_moment)//" "//unit_word("N*m", lang), 'class="label"'))
+        y = y + 5.0_wp
+      end if
       if (plans%lever_friction) then
         ! the pairs' friction on the lever: its share of the effort, -P_loss over the driver's rate
         call out%put(svg_text(12.0_wp, y + 11.0_wp, word("pair friction included", lang)//": -P_loss/"// &

@@ -13,12 +13,14 @@ mkdir -p "$plans_dir"
 # The legacy PR 3207 and PR 3050 tables leave out their massless blocks' and the
 # rod-in-cylinder reactions: their links' polygons do not close, their groups' do (those
 # reactions are inside a group). On the friction decks the lever adds every pair's friction
-# (its power against the CSV's P_loss_<pair>); the flywheel decks' speed varies over the cycle.
+# (its power against the CSV's P_loss_<pair>); on the flywheel decks (the true motion of a
+# steady cycle) the flywheel's and the rotor's inertia moment -J eps1 acts on the crank.
 for spec in assur_fourbar:lever,polygons assur_fourbar_global:lever,polygons assur_sixbar:lever,polygons \
   assur_sixbar_global:lever,polygons assur_slider_crank:lever,polygons assur_pr3207:lever,polygons \
   sixbar:lever,polygons sixbar_example:lever,polygons class3:lever,polygons fivebar:lever,polygons \
   linkage_fourbar:lever,polygons linkage_slider_crank:lever,polygons pr3207:lever,groups pr3050:lever,groups \
-  pr3207_flywheel:groups assur_pr3207_flywheel:polygons friction_fourbar_resist:lever,polygons \
+  pr3207_flywheel:lever,groups assur_pr3207_flywheel:lever,polygons sixbar_flywheel:lever,polygons \
+  friction_fourbar_resist:lever,polygons \
   assur_pr3050:lever,polygons assur_pr3050_friction:lever,polygons assur_pr3207_friction:lever,polygons \
   assur_sixbar_friction:lever,polygons \
   friction_slider_crank:lever,polygons; do
@@ -65,6 +67,18 @@ p["moment"] = -p["moment"]; print(json.dumps(d))' \
   "$plans_dir/friction_fourbar_resist.91.json" >"$cli_tmp/couple_turned.json"
 python3 "$plans_check" "$cli_tmp/couple_turned.json" "$plans_dir/friction_fourbar_resist.csv" --lever >/dev/null 2>&1 \
   && fail plans-lever-friction-sense-can-fail "a friction couple turning with the relative rotation was accepted" || pass
+# ... and so can the flywheel on the lever: left out (the effort of the links' loads alone)
+python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); z = d["zhukovsky"]
+z["effort"] += z.pop("flywheel")["moment"]; print(json.dumps(d))' \
+  "$plans_dir/pr3207_flywheel.181.json" >"$cli_tmp/no_flywheel.json"
+python3 "$plans_check" "$cli_tmp/no_flywheel.json" "$plans_dir/pr3207_flywheel.csv" --lever >/dev/null 2>&1 \
+  && fail plans-lever-flywheel-can-fail "a lever without the flywheel's inertia moment was accepted" || pass
+run_ks data/sixbar_flywheel.nml --format plans --at 5
+grep -q 'flywheel and rotor included: J = 104 kg\*m^2, -J·ε = 243 N\*m<' "$out" && pass \
+  || fail plans-flywheel-sheet "no flywheel line: $(grep -o 'class="label">[^<]*' "$out" | tail -5)"
+run_ks data/pr3207_flywheel.nml --format plans --at 5 --lang ru
+grep -q 'маховик и ротор учтены: J = 274 кг·м², -J·ε = -242 Н·м<' "$out" && pass \
+  || fail plans-flywheel-sheet-ru "no flywheel line: $(grep -o 'class="label">[^<]*' "$out" | tail -5)"
 # the friction's share on the sheet, in both languages
 run_ks data/friction_slider_crank.nml --format plans --at 3
 grep -q 'pair friction included: -P_loss/ω1 = 2.26 N\*m<' "$out" && pass \
