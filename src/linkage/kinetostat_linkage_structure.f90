@@ -12,7 +12,7 @@
 module kinetostat_linkage_structure
   use kinetostat_error, only: error_t, fatal_error, exit_input
   use kinetostat_text, only: int_str
-  use kinetostat_labels, only: lang_ru
+  use kinetostat_labels, only: lang_ru, echo_name
   use kinetostat_linkage, only: linkage_t, linkage_unit_t, pair_r, pair_row, drive_row
   implicit none
   private
@@ -282,7 +282,8 @@ contains
     end do
   end function structure_formula
 
-  !> The printed structural analysis, one line per element (lang_en or lang_ru).
+  !> The printed structural analysis, one line per element (lang_en or lang_ru: the English
+  !> lines in the words the Russian table's echo uses, labels' echo_name).
   pure subroutine structure_lines(mech, lang, lines)
     !> The analysed linkage.
     type(linkage_t), intent(in) :: mech
@@ -290,19 +291,15 @@ contains
     integer, intent(in) :: lang
     !> The lines (without the leading indentation).
     character(len=160), allocatable, intent(out) :: lines(:)
-    character(len=160) :: line
-    integer :: n, p5, u, top
-    logical :: ru
-    ru = lang == lang_ru
+    character(len=:), allocatable :: line
+    integer :: n, p5, u, top, i
     n = size(mech%links)
     p5 = size(mech%pairs)
     allocate (lines(0))
-    call push(lines, either(ru, "STRUCTURAL ANALYSIS", "СТРУКТУРНЫЙ АНАЛИЗ"))
-    call push(lines, either(ru, "MOVING LINKS n = "//int_str(n)//", LOWER PAIRS p5 = "//int_str(p5)//", HIGHER PAIRS p4 = 0", &
-                            "ПОДВИЖНЫХ ЗВЕНЬЕВ n = "//int_str(n)//", НИЗШИХ ПАР p5 = "//int_str(p5)// &
-                            ", ВЫСШИХ ПАР p4 = 0"))
+    call push(lines, "STRUCTURAL ANALYSIS")
+    call push(lines, "MOVING LINKS n = "//int_str(n)//", LOWER PAIRS p5 = "//int_str(p5)//", HIGHER PAIRS p4 = 0")
     call push(lines, "W = 3n - 2p5 - p4 = 3 x "//int_str(n)//" - 2 x "//int_str(p5)//" - 0 = "//int_str(3 * n - 2 * p5)// &
-              either(ru, " = NUMBER OF DRIVES", " = ЧИСЛО ПРИВОДОВ"))
+              " = NUMBER OF DRIVES")
     top = 1
     !GCC$ novector
     do u = 1, size(mech%units)
@@ -311,50 +308,31 @@ contains
         if (un%class == 0) top = 99
         select case (un%class)
         case (1)
-          line = either(ru, "INPUT LINK(S) (MECHANISM OF CLASS I)", &
-                        "ВХОДНОЕ ЗВЕНО (МЕХАНИЗМ I КЛАССА)")
+          line = "INPUT LINK(S) (MECHANISM OF CLASS I)"
         case (2)
-          line = either(ru, "DYAD (GROUP OF CLASS II, ORDER 2), KIND ", &
-                        "ДИАДА (ГРУППА II КЛАССА 2-ГО ПОРЯДКА), ВИД ")//un%kind
+          line = "DYAD (GROUP OF CLASS II, ORDER 2), KIND "//un%kind
         case (3)
           if (un%order == 4) then
-            line = either(ru, "GROUP OF CLASS III, ORDER 4 (TWO TERNARY BASE LINKS AND FOUR BINARY LINKS)", &
-                          "ГРУППА III КЛАССА 4-ГО ПОРЯДКА"// &
-                          " (ДВА БАЗОВЫХ ЗВЕНА С ТРЕМЯ ПАРАМИ)")
+            line = "GROUP OF CLASS III, ORDER 4 (TWO TERNARY BASE LINKS AND FOUR BINARY LINKS)"
           else
-            line = either(ru, "GROUP OF CLASS III, ORDER 3 (A TERNARY BASE LINK AND THREE BINARY LINKS)", &
-                          "ГРУППА III КЛАССА 3-ГО ПОРЯДКА"// &
-                          " (БАЗОВОЕ ЗВЕНО С ТРЕМЯ ПАРАМИ)")
+            line = "GROUP OF CLASS III, ORDER 3 (A TERNARY BASE LINK AND THREE BINARY LINKS)"
           end if
         case (4)
-          line = either(ru, "GROUP OF CLASS IV, ORDER 2 (A CLOSED FOUR-LINK CONTOUR)", &
-                        "ГРУППА IV КЛАССА 2-ГО ПОРЯДКА")
+          line = "GROUP OF CLASS IV, ORDER 2 (A CLOSED FOUR-LINK CONTOUR)"
         case default
-          line = either(ru, "GROUP OF "//int_str(size(un%links))//" LINKS (CLASS NOT DETERMINED)", &
-                        "ГРУППА ИЗ "//int_str(size(un%links))//" ЗВЕНЬЕВ (КЛАСС НЕ ОПРЕДЕЛЕН)")
+          line = "GROUP OF "//int_str(size(un%links))//" LINKS (CLASS NOT DETERMINED)"
         end select
         call push(lines, un%label//"  "//line)
       end associate
     end do
-    call push(lines, either(ru, "STRUCTURE FORMULA: ", "ФОРМУЛА СТРОЕНИЯ: ")//structure_formula(mech))
-    call push(lines, either(ru, "CLASS OF THE MECHANISM: ", "КЛАСС МЕХАНИЗМА: ")//roman(merge(top, 0, top < 99)))
+    call push(lines, "STRUCTURE FORMULA: "//structure_formula(mech))
+    call push(lines, "CLASS OF THE MECHANISM: "//roman(merge(top, 0, top < 99)))
+    if (lang /= lang_ru) return
+    !GCC$ novector
+    do i = 1, size(lines)
+      lines(i) = echo_name(trim(lines(i)), lang_ru)
+    end do
   end subroutine structure_lines
-
-  !> The Russian text when `ru`, else the English.
-  pure function either(ru, english, russian) result(text)
-    !> Whether the table is in Russian.
-    logical, intent(in) :: ru
-    !> English text.
-    character(*), intent(in) :: english
-    !> Russian text.
-    character(*), intent(in) :: russian
-    character(len=:), allocatable :: text
-    if (ru) then
-      text = russian
-    else
-      text = english
-    end if
-  end function either
 
   !> Appends a line to `lines`.
   pure subroutine push(lines, text)
