@@ -314,6 +314,7 @@ module kinetostat_step_table
     procedure :: column_index
     procedure :: dynamics_index
     procedure :: dynamics_value
+    procedure :: shaft_inertia
     procedure :: allocate_rows
     procedure :: row_count
     procedure :: add_warning
@@ -636,6 +637,14 @@ contains
     dynamics_value = 0.0_wp
     if (i > 0) dynamics_value = self%dynamics(i)%values(1)
   end function dynamics_value
+
+  !> Moment of inertia turning with the input link besides the mechanism's links: the
+  !> flywheel and the rotor of a steady cycle's DYNAMICS block (J_flywheel + J_rotor),
+  !> kg*m^2; 0 without them.
+  pure real(wp) function shaft_inertia(self)
+    class(step_table_t), intent(in) :: self
+    shaft_inertia = self%dynamics_value("J_flywheel") + self%dynamics_value("J_rotor")
+  end function shaft_inertia
 
   !> Allocate `n` rows of zeros for the columns defined so far.
   pure subroutine allocate_rows(self, n)

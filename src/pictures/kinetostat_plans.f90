@@ -1275,7 +1275,7 @@ contains
     integer, intent(in) :: k
     real(wp), intent(in) :: omega(:), v0(:, :)
     type(plans_t), intent(inout) :: plans
-    real(wp) :: power, rate
+    real(wp) :: power, rate, image(2)
     integer :: j, l, d, g, c
     logical :: actuator
     plans%driver = ""
@@ -1337,10 +1337,10 @@ contains
             plans%lever_note = "force "//trim(f%name)//" belongs to no known link"
             return
           end if
-          power = power + dot_product(f%f, field(v0(:, l), omega(l), 0.0_wp, f%at, .false.))
+          image = field(v0(:, l), omega(l), 0.0_wp, f%at, .false.)
+          power = power + dot_product(f%f, image)
           plans%lever_forces = [plans%lever_forces, plan_vector_t(f%name, f%f)]
-          plans%lever_images = [plans%lever_images, plan_vector_t(f%name, field(v0(:, l), omega(l), 0.0_wp, f%at, &
-            .false.))]
+          plans%lever_images = [plans%lever_images, plan_vector_t(f%name, image)]
         end associate
       end do
     end if
@@ -1358,7 +1358,7 @@ contains
       c = table%column_index("eps"//trim(topo%links(d)%name))
       if (c > 0) then
         plans%lever_flywheel = .true.
-        plans%flywheel_inertia = table%dynamics_value("J_flywheel") + table%dynamics_value("J_rotor")
+        plans%flywheel_inertia = table%shaft_inertia()
         plans%flywheel_moment = -plans%flywheel_inertia * table%rows(c, k)
         power = power + plans%flywheel_moment * omega(d)
       end if

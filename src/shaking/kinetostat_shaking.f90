@@ -96,7 +96,7 @@ contains
     j_input = 0.0_wp
     eps_in = 0
     if (table%dynamics_index("J_flywheel") > 0) then
-      j_input = table%dynamics_value("J_flywheel") + table%dynamics_value("J_rotor")
+      j_input = table%shaft_inertia()
       eps_in = table%column_index("eps1")
     end if
 
