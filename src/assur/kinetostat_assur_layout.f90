@@ -12,7 +12,7 @@ module kinetostat_assur_layout
   use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_component, col_length, &
     step_span, &
     col_moment, col_other, col_flag, col_ratio
-  use kinetostat_format, only: pad_left, fixed_field, display_width
+  use kinetostat_format, only: pad_left, fixed_field
   use kinetostat_labels, only: lang_ru
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_mechanism, only: mechanism_t

@@ -30,7 +30,6 @@ module kinetostat_cli
   use kinetostat_deck, only: deck_line_count, deck_line
   use kinetostat_step_table, only: column_tally_t
   use kinetostat_kinds, only: wp
-  use kinetostat_error, only: exit_geometry
   use kinetostat_format, only: short_number
   !$ use omp_lib, only: omp_set_num_threads
   implicit none

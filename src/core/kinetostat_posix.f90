@@ -5,7 +5,7 @@
 !> process id, whether standard error is a terminal, child processes (a deck's bytes are
 !> read by kinetostat_deck_reader).
 module kinetostat_posix
-  use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_size_t, c_long, c_long_long
+  use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_long_long
   use, intrinsic :: iso_fortran_env, only: int64
   implicit none
   private

@@ -6,17 +6,15 @@
 !> stroke law; forces, moments, gravity. Integer variables are read as reals and must be
 !> whole numbers.
 module kinetostat_linkage_deck
-  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use kinetostat_kinds, only: wp, g_default, deg_to_rad
   use kinetostat_error, only: error_t
-  use kinetostat_text, only: int_str, lower, real_str
+  use kinetostat_text, only: int_str, lower
   use kinetostat_deck, only: longest_quoted, begin_group, &
     deck_context_t, unset_bits, deck_source_t, namelist_probe_t, &
     deck_error, is_set, require_set, require_nonnegative, require_rule, require_per_step, optional_default, count_values, &
     require_whole, deck_array_capacities
   use kinetostat_vec2, only: unit_at, magnitude
-  use kinetostat_linkage, only: linkage_t, linkage_link_t, linkage_pair_t, linkage_drive_t, linkage_force_t, &
-    pair_r, pair_p
+  use kinetostat_linkage, only: linkage_t, pair_r, pair_p
   use kinetostat_linkage_structure, only: analyse_structure
   implicit none
   private

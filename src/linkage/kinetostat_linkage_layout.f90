@@ -11,7 +11,7 @@ module kinetostat_linkage_layout
   use kinetostat_vec2, only: magnitude, angle_360_deg, clean_zero, rotate
   use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_component, &
     col_moment, col_length, col_other
-  use kinetostat_format, only: pad_left, fixed_field, display_width
+  use kinetostat_format, only: pad_left, fixed_field
   use kinetostat_labels, only: lang_ru, lang_en
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_mechanism, only: mechanism_t

@@ -2,7 +2,7 @@
 module kinetostat_pr3207_deck
   use kinetostat_kinds, only: wp, g_default
   use kinetostat_error, only: error_t
-  use kinetostat_text, only: real_str, int_str
+  use kinetostat_text, only: real_str
   use kinetostat_deck, only: &
     begin_group, deck_context_t, unset_real, deck_array_capacities, &
     deck_source_t, namelist_probe_t, require_all_set, deck_error, is_set, require_set, require_positive, &
