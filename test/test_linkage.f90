@@ -21,6 +21,11 @@ module test_linkage
   private
   public :: run_linkage_tests
 
+  !> Every bundled &linkage deck (data/ and the examples of docs/linkage.md).
+  character(len=*), parameter :: linkage_decks(6) = [character(len=32) :: "data/class3.nml", "data/fivebar.nml", &
+    "data/linkage_fourbar.nml", "data/linkage_slider_crank.nml", "docs/examples/excavator.nml", &
+    "docs/examples/class3_order4.nml"]
+
 contains
 
   subroutine run_linkage_tests(t)
@@ -46,6 +51,23 @@ contains
     call check_true(t, "linkage-read-"//path, .not. allocated(error), "deck error")
     if (allocated(error)) write (*, '(a)') "  "//error%message
   end subroutine bundled
+
+  !> Steps 1..last of a deck solved from its reference pose, as a run's first block starts.
+  subroutine solve_from_reference(deck, name, last, steps, error)
+    type(linkage_deck_t), intent(in) :: deck
+    !> The deck's name in messages.
+    character(*), intent(in) :: name
+    !> Last step solved.
+    integer, intent(in) :: last
+    type(linkage_step_t), allocatable, intent(out) :: steps(:)
+    type(error_t), allocatable, intent(out) :: error
+    real(wp), allocatable :: q(:), from(:)
+    allocate (q, source=linkage_reference_pose(deck%mech))
+    allocate (from(size(deck%mech%drives)))
+    from(:) = deck%mech%drives%q_ref
+    allocate (steps(last))
+    call linkage_solve_steps(deck, name, 1, last, q, from, steps, error)
+  end subroutine solve_from_reference
 
   !> Known structure formulas and classes of the bundled decks.
   subroutine test_structure(t)
@@ -139,17 +161,14 @@ contains
       type(linkage_deck_t) :: deck
       type(linkage_step_t), allocatable :: steps(:)
       type(error_t), allocatable :: error
-      real(wp), allocatable :: q(:), dq(:), dv(:), da(:), qp(:), qm(:), qd(:), qdd(:), fd1(:), fd2(:), from(:)
+      real(wp), allocatable :: dq(:), dv(:), da(:), qp(:), qm(:), qd(:), qdd(:), fd1(:), fd2(:)
       type(linkage_work_t) :: work
       real(wp) :: h, tol1, tol2
       integer :: i, j, k, nd
       call bundled(path, deck, t)
       nd = size(deck%mech%drives)
       allocate (dq(nd), dv(nd), da(nd))
-      q = linkage_reference_pose(deck%mech)
-      from = deck%mech%drives%q_ref
-      allocate (steps(1:maxval(ks)))
-      call linkage_solve_steps(deck, path, 1, maxval(ks), q, from, steps, error)
+      call solve_from_reference(deck, path, maxval(ks), steps, error)
       call check_true(t, "linkage-fd-solve-"//path, .not. allocated(error), "solve failed")
       if (allocated(error)) return
       do i = 1, size(ks)
@@ -158,7 +177,7 @@ contains
         do j = 1, nd
           da(j) = 0.7_wp * real((-1)**j, wp) * maxval(abs(dv))
         end do
-        allocate (qd(size(q)), qdd(size(q)))
+        allocate (qd(size(steps(k)%q)), qdd(size(steps(k)%q)))
         call linkage_motion(deck%mech, steps(k)%q, dv, da, qd, qdd, work, error)
         h = 2.0e-4_wp / maxval(abs(dv))
         qp = steps(k)%q
@@ -185,28 +204,20 @@ contains
   !> largest reaction.
   subroutine test_reactions(t)
     type(test_counts_t), intent(inout) :: t
-    character(len=*), parameter :: paths(6) = [character(len=32) :: "data/class3.nml", "data/fivebar.nml", &
-      "data/linkage_fourbar.nml", "data/linkage_slider_crank.nml", "docs/examples/excavator.nml", &
-      "docs/examples/class3_order4.nml"]
     type(linkage_deck_t) :: deck
     type(linkage_step_t), allocatable :: steps(:)
     type(error_t), allocatable :: error
-    real(wp), allocatable :: q(:), from(:)
     integer :: i
-    do i = 1, size(paths)
-      call bundled(trim(paths(i)), deck, t)
-      q = linkage_reference_pose(deck%mech)
-      from = deck%mech%drives%q_ref
-      if (allocated(steps)) deallocate (steps)
-      allocate (steps(deck%n))
-      call linkage_solve_steps(deck, trim(paths(i)), 1, deck%n, q, from, steps, error)
-      call check_true(t, "linkage-solve-"//trim(paths(i)), .not. allocated(error), "solve failed")
+    do i = 1, size(linkage_decks)
+      call bundled(trim(linkage_decks(i)), deck, t)
+      call solve_from_reference(deck, trim(linkage_decks(i)), deck%n, steps, error)
+      call check_true(t, "linkage-solve-"//trim(linkage_decks(i)), .not. allocated(error), "solve failed")
       if (allocated(error)) cycle
-      call check_true(t, "linkage-residual-"//trim(paths(i)), maxval(steps%residual) <= 1.0e-9_wp, &
+      call check_true(t, "linkage-residual-"//trim(linkage_decks(i)), maxval(steps%residual) <= 1.0e-9_wp, &
         "max residual "//real_str(maxval(steps%residual)))
-      call check_true(t, "linkage-power-"//trim(paths(i)), maxval(steps%mismatch) <= 1.0e-9_wp, &
+      call check_true(t, "linkage-power-"//trim(linkage_decks(i)), maxval(steps%mismatch) <= 1.0e-9_wp, &
         "max power mismatch "//real_str(maxval(steps%mismatch)))
-      call check_true(t, "linkage-two-solvers-"//trim(paths(i)), maxval(steps%solver_gap) <= 1.0e-12_wp, &
+      call check_true(t, "linkage-two-solvers-"//trim(linkage_decks(i)), maxval(steps%solver_gap) <= 1.0e-12_wp, &
         "max gap of the Lagrange and the group method's reactions "//real_str(maxval(steps%solver_gap))//" > 1e-12")
     end do
   end subroutine test_reactions
@@ -218,29 +229,21 @@ contains
   !> gap exceeds 1e-9 at some step.
   subroutine test_second_opinion(t)
     type(test_counts_t), intent(inout) :: t
-    character(len=*), parameter :: paths(6) = [character(len=32) :: "data/class3.nml", "data/fivebar.nml", &
-      "data/linkage_fourbar.nml", "data/linkage_slider_crank.nml", "docs/examples/excavator.nml", &
-      "docs/examples/class3_order4.nml"]
     type(linkage_deck_t) :: deck
     type(linkage_t) :: wrong
     type(linkage_step_t), allocatable :: steps(:)
     type(error_t), allocatable :: error
-    real(wp), allocatable :: q(:), from(:)
     real(wp) :: gap
     integer :: i, j, heavy
-    do i = 1, size(paths)
-      call bundled(trim(paths(i)), deck, t)
-      q = linkage_reference_pose(deck%mech)
-      from = deck%mech%drives%q_ref
-      if (allocated(steps)) deallocate (steps)
-      allocate (steps(deck%n))
-      call linkage_solve_steps(deck, trim(paths(i)), 1, deck%n, q, from, steps, error)
+    do i = 1, size(linkage_decks)
+      call bundled(trim(linkage_decks(i)), deck, t)
+      call solve_from_reference(deck, trim(linkage_decks(i)), deck%n, steps, error)
       if (allocated(error)) then
-        call check_true(t, "linkage-second-opinion-solve-"//trim(paths(i)), .false., error%message)
+        call check_true(t, "linkage-second-opinion-solve-"//trim(linkage_decks(i)), .false., error%message)
         cycle
       end if
       gap = max_gap(deck, deck%mech, steps)
-      call check_true(t, "linkage-second-opinion-"//trim(paths(i)), gap <= 1.0e-9_wp, &
+      call check_true(t, "linkage-second-opinion-"//trim(linkage_decks(i)), gap <= 1.0e-9_wp, &
         "max gap of the two formulations "//real_str(gap)//" > 1e-9")
       ! a wrong mass in the group method
       do j = 1, size(deck%mech%links)
@@ -248,7 +251,8 @@ contains
         wrong = deck%mech
         wrong%links(j)%m = 1.01_wp * wrong%links(j)%m
         gap = max_gap(deck, wrong, steps)
-        call check_true(t, "linkage-second-opinion-catches-mass-"//trim(paths(i))//"-link"//int_str(deck%mech%links(j)%id), &
+        call check_true(t, "linkage-second-opinion-catches-mass-"//trim(linkage_decks(i))//"-link"// &
+          int_str(deck%mech%links(j)%id), &
           gap > 1.0e-9_wp, "a 1 % wrong mass in the group method gives a gap of only "//real_str(gap))
       end do
       ! a wrong mass in the Lagrange form: its steps again, the group method with the right one
@@ -257,7 +261,7 @@ contains
       wrong%links(heavy)%m = 1.01_wp * wrong%links(heavy)%m
       call restatics(deck, wrong, steps)
       gap = max_gap(deck, deck%mech, steps)
-      call check_true(t, "linkage-second-opinion-catches-lagrange-mass-"//trim(paths(i)), gap > 1.0e-9_wp, &
+      call check_true(t, "linkage-second-opinion-catches-lagrange-mass-"//trim(linkage_decks(i)), gap > 1.0e-9_wp, &
         "a 1 % wrong mass in the Lagrange form gives a gap of only "//real_str(gap))
     end do
   contains
@@ -322,17 +326,14 @@ contains
     type(linkage_deck_t) :: deck
     type(linkage_step_t), allocatable :: steps(:)
     type(error_t), allocatable :: error
-    real(wp), allocatable :: q(:), from(:), d(:)
+    real(wp), allocatable :: d(:)
     call bundled("data/class3.nml", deck, t)
-    q = linkage_reference_pose(deck%mech)
-    from = deck%mech%drives%q_ref
-    allocate (steps(deck%n))
-    call linkage_solve_steps(deck, "class3", 1, deck%n, q, from, steps, error)
+    call solve_from_reference(deck, "class3", deck%n, steps, error)
     if (allocated(error)) then
       call check_true(t, "linkage-full-turn", .false., error%message)
       return
     end if
-    allocate (d(size(q)))
+    allocate (d(size(steps(1)%q)))
     d(:) = steps(deck%n)%q - steps(1)%q
     d(3::3) = modulo(d(3::3) + 3.0_wp, 6.283185307179586_wp) - 3.0_wp
     call check_true(t, "linkage-full-turn-poses", maxval(abs(d)) <= 1.0e-9_wp, "max pose change "//real_str(maxval(abs(d))))
@@ -349,7 +350,6 @@ contains
     type(linkage_deck_t) :: deck
     type(linkage_step_t), allocatable :: steps(:)
     type(error_t), allocatable :: error
-    real(wp), allocatable :: q(:), from(:)
     call load_deck("data/class3.nml", source, error)
     if (.not. allocated(error)) then
       source%records(size(source%records)) = " pair(6)%at = 0.641, -0.35 /"
@@ -360,10 +360,7 @@ contains
       write (*, '(a)') "  "//error%message
       return
     end if
-    q = linkage_reference_pose(deck%mech)
-    from = deck%mech%drives%q_ref
-    allocate (steps(deck%n))
-    call linkage_solve_steps(deck, "dead", 1, deck%n, q, from, steps, error)
+    call solve_from_reference(deck, "dead", deck%n, steps, error)
     if (.not. allocated(error)) then
       call check_true(t, "linkage-dead-position", .false., "no error")
       return
