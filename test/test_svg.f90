@@ -46,6 +46,10 @@ contains
     call check_text(t, "short_number small", "0.457", short_number(0.4567_wp))
     call check_text(t, "short_number zero", "0", short_number(0.0_wp))
     call check_text(t, "short_number 1e8", "1.23E+08", short_number(1.234e8_wp))
+    ! a three-digit exponent keeps its E (not "1.00-300")
+    call check_text(t, "short_number 1e-300 keeps its E", "1.00E-300", short_number(1.0e-300_wp))
+    call check_text(t, "short_number -2.5e150 keeps its E", "-2.50E+150", short_number(-2.5e150_wp))
+    call check_text(t, "short_number 1e-99 keeps its E", "1.00E-99", short_number(1.0e-99_wp))
   end subroutine test_numbers
 
   subroutine test_primitives(t)

@@ -18,6 +18,7 @@ module kinetostat_assur
   use kinetostat_selfcheck, only: link_balance_t, balance_add_force, balance_add_couple, equilibrium_residual, &
     power_mismatch, balance_add_balance, load_moment_scale
   use kinetostat_text, only: int_str
+  use kinetostat_format, only: trimmed_es
   use kinetostat_assur_kinematics, only: link_state_t, point_state_t, dyad_geometry_t, dyad_pose_t, &
     point_on, crank_state, frame_state, set_dyad_pose, kind_names, pose_ok, pose_no_assembly
   use kinetostat_assur_statics, only: dyad_reactions_t, dyad_reactions, pair_is_prismatic
@@ -723,7 +724,6 @@ contains
     real(wp) :: fu(2, size(step%f, 2)), nu(size(step%n)), mu(size(step%m)), extend(2), at(2)
     real(wp) :: m1_loads, m1_unit, lever, ds
     integer :: sides(2), dd, jd, d, nd
-    character(len=32) :: text
     nd = size(mech%dyads)
     dd = mech%drive_dyad
     jd = mech%drive_pair
@@ -747,9 +747,8 @@ contains
       lever = max(lever, magnitude(poses(dd)%p(:, d) - mech%pivot))
     end do
     if (.not. abs(m1_unit) > drive_dead_rel * lever) then
-      write (text, '(es10.3)') abs(m1_unit)
       call fatal_error(error, exit_geometry, dyad_label(mech, dd)//": the actuator (pair "//int_str(jd)// &
-        ") cannot move the input link here (dead position: |stroke'| = "//trim(adjustl(text))//" m/rad)")
+        ") cannot move the input link here (dead position: |stroke'| = "//trimmed_es(abs(m1_unit), 3)//" m/rad)")
       return
     end if
     step%f_drive = -m1_loads / m1_unit

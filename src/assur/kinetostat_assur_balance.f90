@@ -3,7 +3,9 @@
 !> Berkof-Lowen), that put the crank's own centre of mass on its pivot, or that balance a
 !> slider-crank's rotating mass and a fraction of its reciprocating mass. The result is a
 !> list of deck assignments (the changed masses, moments of inertia and centres of mass of
-!> the links that carry counterweights) and the lines of a report.
+!> the links that carry counterweights) and the lines of a report, in English or in Russian
+!> (`--lang ru`: the course's words, противовес, уравновешивание, главный вектор сил
+!> инерции).
 !>
 !> Full balance: the total first moment of mass sum m_i r_Si(phi1) must not change with the
 !> crank angle. A link pivoted on the frame (its origin fixed) adds R(theta_i) w_i to it,
@@ -18,6 +20,7 @@ module kinetostat_assur_balance
   use kinetostat_error, only: error_t, fatal_error, exit_usage, exit_geometry
   use kinetostat_text, only: int_str
   use kinetostat_format, only: full_number, short_number
+  use kinetostat_labels, only: lang_ru, unit_symbol
   use kinetostat_override, only: override_t
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_assur_kinematics, only: link_state_t, dyad_pose_t, kind_rrr, kind_rrp
@@ -25,7 +28,7 @@ module kinetostat_assur_balance
   use kinetostat_assur_deck, only: assur_deck_t, assur_phi1_deg
   implicit none
   private
-  public :: assur_balance, balance_full, balance_crank, balance_partial, balance_method_names
+  public :: assur_balance, balance_full, balance_crank, balance_partial, balance_method_names, balance_words
 
   !> --method full: the shaking force vanishes (Berkof-Lowen).
   integer, parameter :: balance_full = 1
@@ -50,13 +53,15 @@ contains
   !> that add them (each mass assignment carries the counterweight in a comment) and the
   !> report's lines (what each counterweight is; for the partial method the primary and
   !> secondary components of the shaking force before and after).
-  pure subroutine assur_balance(deck, method, fraction, overrides, report, error)
+  pure subroutine assur_balance(deck, method, fraction, lang, overrides, report, error)
     !> The validated deck.
     type(assur_deck_t), intent(in) :: deck
     !> balance_full, balance_crank or balance_partial.
     integer, intent(in) :: method
     !> Partial method: the fraction of the reciprocating mass balanced, 0..1.
     real(wp), intent(in) :: fraction
+    !> Language of the report and of the comments in the deck (lang_en, lang_ru).
+    integer, intent(in) :: lang
     !> The assignments (name, value in namelist syntax with the comment).
     type(override_t), allocatable, intent(out) :: overrides(:)
     !> The report's lines.
@@ -68,7 +73,12 @@ contains
     real(wp), allocatable :: w_new(:, :)
     logical, allocatable :: carries(:)
     real(wp) :: pin(2), m_rec, m_rot, share, omega
+    !> Units of the report.
+    character(len=:), allocatable :: kg, m, n_unit
 
+    kg = unit_symbol("kg", lang)
+    m = unit_symbol("m", lang)
+    n_unit = unit_symbol("N", lang)
     allocate (overrides(0))
     nl = 2 * size(deck%mech%dyads) + 1
     allocate (w_new(2, nl), source=0.0_wp)
@@ -76,7 +86,9 @@ contains
     select case (method)
     case (balance_crank)
       carries(1) = .true.
-      call report%put("crank balance: the crank's own centre of mass onto its pivot")
+      call report%put(balance_words("crank balance: the crank's own centre of mass onto its pivot", &
+        "уравновешивание кривошипа: центр масс кривошипа переносится на "// &
+          "ось его вращения", lang))
     case (balance_partial)
       call slider_crank(deck, d, error)
       if (allocated(error)) return
@@ -90,33 +102,73 @@ contains
         carries(1) = .true.
         omega = abs(deck%omega1_const)
         if (deck%prescribed) omega = abs(deck%omega1_values(1))
-        call report%put("partial balance of the slider-crank (dyad "//int_str(d)//"): the crank's own mass, the "// &
-          "rotating mass "//short_number(m_rot)//" kg and "//short_number(fraction)//" of the reciprocating mass "// &
-          short_number(m_rec)//" kg at the crank radius "//short_number(norm2(pin))//" m")
-        call report%put("  (rod as two masses: "//short_number(share)//" of it at the slider's pin)")
-        call report%put("  primary component (first harmonic, m_rec*r*omega1^2 = "// &
-          short_number(m_rec * norm2(pin) * omega**2)//" N at omega1 = "//short_number(omega)//" rad/s): along the guide "// &
-          short_number(m_rec * norm2(pin) * omega**2)//" N before, "// &
-          short_number((1.0_wp - fraction) * m_rec * norm2(pin) * omega**2)//" N after; across the guide 0 before, "// &
-          short_number(fraction * m_rec * norm2(pin) * omega**2)//" N after")
-        call report%put("  secondary component (second harmonic, m_rec*r*omega1^2*r/l): "// &
-          short_number(m_rec * norm2(pin) * omega**2 * norm2(pin) / deck%mech%dyads(d)%geom%l2)// &
-          " N along the guide, unchanged (a crank counterweight turns at omega1 only)")
+        if (lang == lang_ru) then
+          call report%put("частичное уравновешивание кривошипно-ползунного "// &
+            "механизма (диада "//int_str(d)// &
+            "): масса кривошипа, вращающаяся масса "//short_number(m_rot)//" "//kg//" и "// &
+              "доля "// &
+            short_number(fraction)//" возвратно-поступательно движущейся "// &
+              "массы "//short_number(m_rec)//" "//kg// &
+            " на радиусе кривошипа "//short_number(norm2(pin))//" "//m)
+          call report%put("  (масса шатуна разнесена в две точки: доля "//short_number(share)// &
+            " в шарнире ползуна)")
+          call report%put("  сила инерции первого порядка (первая гармоника, "// &
+            "m_rec*r*omega1^2 = "// &
+            short_number(m_rec * norm2(pin) * omega**2)//" "//n_unit//" при omega1 = "//short_number(omega)//" "// &
+            unit_symbol("rad/s", lang)//"): вдоль направляющей "//short_number(m_rec * norm2(pin) * omega**2)// &
+            " "//n_unit//" до "// &
+              "уравновешивания, "//short_number((1.0_wp - fraction) * m_rec * norm2(pin) * omega**2)// &
+            " "//n_unit//" после; поперек направляющей 0 до, "// &
+            short_number(fraction * m_rec * norm2(pin) * omega**2)//" "//n_unit//" после")
+          call report%put("  сила инерции второго порядка (вторая гармоника, "// &
+            "m_rec*r*omega1^2*r/l): "// &
+            short_number(m_rec * norm2(pin) * omega**2 * norm2(pin) / deck%mech%dyads(d)%geom%l2)//" "//n_unit// &
+            " вдоль направляющей, не меняется (противовес на кривошипе "// &
+              "вращается с угловой скоростью omega1)")
+        else
+          call report%put("partial balance of the slider-crank (dyad "//int_str(d)//"): the crank's own mass, the "// &
+            "rotating mass "//short_number(m_rot)//" kg and "//short_number(fraction)//" of the reciprocating mass "// &
+            short_number(m_rec)//" kg at the crank radius "//short_number(norm2(pin))//" m")
+          call report%put("  (rod as two masses: "//short_number(share)//" of it at the slider's pin)")
+          call report%put("  primary component (first harmonic, m_rec*r*omega1^2 = "// &
+            short_number(m_rec * norm2(pin) * omega**2)//" N at omega1 = "//short_number(omega)//" rad/s): along the "// &
+            "guide "//short_number(m_rec * norm2(pin) * omega**2)//" N before, "// &
+            short_number((1.0_wp - fraction) * m_rec * norm2(pin) * omega**2)//" N after; across the guide 0 before, "// &
+            short_number(fraction * m_rec * norm2(pin) * omega**2)//" N after")
+          call report%put("  secondary component (second harmonic, m_rec*r*omega1^2*r/l): "// &
+            short_number(m_rec * norm2(pin) * omega**2 * norm2(pin) / deck%mech%dyads(d)%geom%l2)// &
+            " N along the guide, unchanged (a crank counterweight turns at omega1 only)")
+        end if
       end associate
     case default
-      call full_balance(deck, w_new, carries, report, error)
+      call full_balance(deck, lang, w_new, carries, report, error)
       if (allocated(error)) return
     end select
     do i = 1, nl
-      if (carries(i)) call add_counterweight(deck, i, w_new(:, i), method, overrides, report, error)
+      if (carries(i)) call add_counterweight(deck, i, w_new(:, i), method, lang, overrides, report, error)
       if (allocated(error)) return
     end do
-    if (size(overrides) == 0) call report%put("no counterweight needed: the deck is balanced already")
+    if (size(overrides) == 0) call report%put(balance_words("no counterweight needed: the deck is balanced already", &
+      "противовесы не нужны: механизм уже уравновешен", lang))
   end subroutine assur_balance
 
+  !> `english` or, with lang_ru, `russian`: the report's two wordings side by side.
+  pure function balance_words(english, russian, lang) result(text)
+    character(*), intent(in) :: english, russian
+    integer, intent(in) :: lang
+    character(len=:), allocatable :: text
+    if (lang == lang_ru) then
+      text = russian
+    else
+      text = english
+    end if
+  end function balance_words
+
   !> Full static balance: the first moments of the links pivoted on the frame.
-  pure subroutine full_balance(deck, w_new, carries, report, error)
+  pure subroutine full_balance(deck, lang, w_new, carries, report, error)
     type(assur_deck_t), intent(in) :: deck
+    !> Language of the report.
+    integer, intent(in) :: lang
     !> New first moments (link axes), kg*m, of the links that carry counterweights.
     real(wp), intent(inout) :: w_new(:, :)
     !> Which links carry one.
@@ -159,7 +211,9 @@ contains
       pivoted = [pivoted, i]
     end do
     if (.not. unbalanced > 0.0_wp) then
-      call report%put("full balance: the total centre of mass does not move (nothing to balance)")
+      call report%put(balance_words("full balance: the total centre of mass does not move (nothing to balance)", &
+        "полное статическое уравновешивание: общий центр масс "// &
+          "неподвижен (уравновешивать нечего)", lang))
       return
     end if
     ! unknowns: w of each pivoted link (x, y), then the constant C (x, y)
@@ -205,9 +259,14 @@ contains
       w_new(:, pivoted(j)) = x(2 * j - 1:2 * j)
       carries(pivoted(j)) = .true.
     end do
-    call report%put("full balance (linearly independent vectors): counterweights on the "// &
-      int_str(size(pivoted))//" links pivoted on the frame; the total centre of mass stays at ("// &
-      short_number(x(nu - 1) / total_mass()) //", "//short_number(x(nu) / total_mass())//") m")
+    call report%put(balance_words("full balance (linearly independent vectors): counterweights on the "// &
+      int_str(size(pivoted))//" links pivoted on the frame; the total centre of mass stays at (", &
+      "полное статическое уравновешивание (метод линейно независимых "// &
+        "векторов): противовесы на "// &
+      int_str(size(pivoted))//" звеньях, вращающихся вокруг неподвижных осей; "// &
+        "общий центр масс неподвижен в точке (", &
+      lang)//short_number(x(nu - 1) / total_mass()) //", "//short_number(x(nu) / total_mass())//") "// &
+      unit_symbol("m", lang))
   contains
     !> The mass of the moving links after balancing: the centre of mass C / M needs it.
     pure real(wp) function total_mass()
@@ -272,11 +331,13 @@ contains
 
   !> The assignments of link `i`'s counterweight, for the new first moment `w` (link axes):
   !> a point mass at the link's radius on the side w - m*s points to.
-  pure subroutine add_counterweight(deck, i, w, method, overrides, report, error)
+  pure subroutine add_counterweight(deck, i, w, method, lang, overrides, report, error)
     type(assur_deck_t), intent(in) :: deck
     integer, intent(in) :: i
     real(wp), intent(in) :: w(2)
     integer, intent(in) :: method
+    !> Language of the report and the deck's comment.
+    integer, intent(in) :: lang
     type(override_t), allocatable, intent(inout) :: overrides(:)
     type(text_buffer_t), intent(inout) :: report
     type(error_t), allocatable, intent(out) :: error
@@ -313,16 +374,26 @@ contains
         jname = prefix//merge("j2", "j3", mod(i, 2) == 0)
         sname = prefix//merge("s2", "s3", mod(i, 2) == 0)
       end if
-      note = "counterweight on link "//int_str(l%id)//": "//short_number(mc)//" kg at r = "//short_number(radius)// &
-        " m, "//short_number(angle)//" deg in the link's axes (m*r = "//short_number(mc * radius)//" kg*m)"
+      if (lang == lang_ru) then
+        note = "противовес на звене "//int_str(l%id)//": "//short_number(mc)//" "//unit_symbol("kg", lang)// &
+          " на радиусе r = "//short_number(radius)//" "//unit_symbol("m", lang)//", "//short_number(angle)//" "// &
+          unit_symbol("deg", lang)//" в осях звена (m*r = "//short_number(mc * radius)//" "// &
+          unit_symbol("kg", lang)//"·"//unit_symbol("m", lang)//")"
+      else
+        note = "counterweight on link "//int_str(l%id)//": "//short_number(mc)//" kg at r = "// &
+          short_number(radius)//" m, "//short_number(angle)//" deg in the link's axes (m*r = "// &
+          short_number(mc * radius)//" kg*m)"
+      end if
       call append(overrides, mname, full_number(m_new)//"   ! "//note//"; kinetostat balance --method "// &
         trim(balance_method_names(method)))
       call append(overrides, jname, full_number(j_new))
       call append(overrides, sname, full_number(s_deck(1))//", "//full_number(s_deck(2)))
       call report%put(note)
-      call report%put("  "//mname//" "//short_number(l%m)//" -> "//short_number(m_new)//" kg, "//jname//" "// &
-        short_number(l%j)//" -> "//short_number(j_new)//" kg*m^2, centre of mass ("//short_number(l%s(1))//", "// &
-        short_number(l%s(2))//") -> ("//short_number(s_new(1))//", "//short_number(s_new(2))//") m in the link's axes")
+      call report%put("  "//mname//" "//short_number(l%m)//" -> "//short_number(m_new)//" "// &
+        unit_symbol("kg", lang)//", "//jname//" "//short_number(l%j)//" -> "//short_number(j_new)//" "// &
+        unit_symbol("kg*m^2", lang)//balance_words(", centre of mass (", ", центр масс (", lang)// &
+        short_number(l%s(1))//", "//short_number(l%s(2))//") -> ("//short_number(s_new(1))//", "// &
+        short_number(s_new(2))//") "//unit_symbol("m", lang)//balance_words(" in the link's axes", " в осях звена", lang))
     end associate
   end subroutine add_counterweight
 

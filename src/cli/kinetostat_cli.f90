@@ -17,7 +17,7 @@ module kinetostat_cli
   use kinetostat_output, only: write_output_file, write_output_stdout
   use kinetostat_spool, only: spool_t
   use kinetostat_mechanism, only: mechanism_t
-  use kinetostat_labels, only: lang_from_name
+  use kinetostat_labels, only: lang_from_name, unit_symbol
   use kinetostat_run, only: run_options_t, run_mechanism, format_from_name, format_names, format_svg, format_json, &
     format_plans, format_dxf
   use kinetostat_registry, only: create_mechanism, known_kinds, known_columns
@@ -26,7 +26,7 @@ module kinetostat_cli
   use kinetostat_linkage_layout, only: linkage_structure_text
   use kinetostat_assur_presets, only: assur_preset, preset_names
   use kinetostat_assur_layout, only: assur_mechanism_t
-  use kinetostat_assur_balance, only: assur_balance, balance_method_names, balance_full
+  use kinetostat_assur_balance, only: assur_balance, balance_method_names, balance_full, balance_words
   use kinetostat_deck, only: deck_line_count, deck_line
   use kinetostat_step_table, only: column_tally_t
   use kinetostat_kinds, only: wp
@@ -44,7 +44,7 @@ module kinetostat_cli
     "[--strict] | " // &
     "kinetostat sweep DECK --vary NAME=FROM:TO:COUNT... [--part K/N] [--jobs N] | " // &
     "kinetostat template KIND [-o FILE] | kinetostat diff A B [--rtol R] [--atol A] | " // &
-    "kinetostat balance DECK [-o FILE] [--method full|crank|partial] [--fraction F] | "// &
+    "kinetostat balance DECK [-o FILE] [--method full|crank|partial] [--fraction F] [--lang en|ru] | "// &
     "kinetostat structure DECK [--lang ru] | --help | --version"
 
   !> Help text (the kinds are appended from the registry).
@@ -63,7 +63,8 @@ module kinetostat_cli
     "  kinetostat diff A B [--rtol R] [--atol A] [--quiet]   compare two outputs", &
     "  kinetostat balance DECK [-o FILE] [--method full|crank|partial] [--fraction F]", &
     "                  an &assur deck with counterweights added (docs/shaking.md); before/", &
-    "                  after figures on stderr; --fraction: partial, default 0.5", &
+    "                  after figures on stderr; --fraction: partial, default 0.5; --lang ru:", &
+    "                  the report in Russian", &
     "  kinetostat structure DECK [--lang ru] [-o FILE]   structural analysis of a &linkage deck", &
     "  kinetostat --help | --version", &
     "", &
@@ -436,7 +437,7 @@ contains
         "driven by an actuator (drive_dyad)")
       return
     end if
-    call assur_balance(mech%deck, args%balance_method, args%fraction, overrides, report, error)
+    call assur_balance(mech%deck, args%balance_method, args%fraction, args%options%lang, overrides, report, error)
     if (allocated(error)) then
       error%message = source%path//": &assur: "//error%message
       return
@@ -455,11 +456,16 @@ contains
     end if
     if (args%quiet) return
     call say(report%data(1:report%length))
-    call compare("max |F_shake|", "F_shake", "N")
-    call compare("max |M_shake|", "M_shake", "N*m")
-    call compare("max |M1|     ", "M1", "N*m")
-    call say("balanced deck's self-check: max residual "//short_number(after%max_residual)//", "// &
-      "M1 against the power balance "//short_number(after%max_mismatch))
+    call compare(words("max |F_shake|", "наибольший |F_shake| (главный вектор сил "// &
+      "инерции)"), "F_shake", "N")
+    call compare(words("max |M_shake|", "наибольший |M_shake| (главный момент сил "// &
+      "инерции)"), "M_shake", "N*m")
+    call compare(words("max |M1|     ", "наибольший |M1| (уравновешивающий момент)"), "M1", "N*m")
+    call say(words("balanced deck's self-check: max residual ", "самоконтроль уравновешенного "// &
+      "механизма: "// &
+      "наибольшая невязка равновесия ")//short_number(after%max_residual)//", "// &
+      words("M1 against the power balance ", "M1 по сравнению с балансом "// &
+        "мощностей ")//short_number(after%max_mismatch))
   contains
     !> The deck run with the shaking columns into a summary (its tallies).
     subroutine summary_run(deck_source, table, error)
@@ -480,18 +486,29 @@ contains
       character(*), intent(in) :: label, name, unit
       real(wp) :: a, b
       integer :: ca, cb
+      character(len=:), allocatable :: u
       ca = before%column_index(name)
       cb = after%column_index(name)
       if (ca == 0 .or. cb == 0) return
       a = largest(before%tally(ca))
       b = largest(after%tally(cb))
+      u = unit_symbol(unit, args%options%lang)
       if (a > 0.0_wp) then
-        call say(label//": before "//short_number(a)//" "//unit//", after "//short_number(b)//" "//unit// &
-          " ("//short_number(b / a)//" of before)")
+        call say(label//words(": before ", ": до уравновешивания ")//short_number(a)//" "//u// &
+          words(", after ", ", после ")//short_number(b)//" "//u//" ("//short_number(b / a)// &
+          words(" of before)", " от прежнего)"))
       else
-        call say(label//": before 0 "//unit//", after "//short_number(b)//" "//unit)
+        call say(label//words(": before 0 ", ": до уравновешивания 0 ")//u// &
+          words(", after ", ", после ")//short_number(b)//" "//u)
       end if
     end subroutine compare
+
+    !> The report's wording in the language of --lang.
+    pure function words(english, russian) result(text)
+      character(*), intent(in) :: english, russian
+      character(len=:), allocatable :: text
+      text = balance_words(english, russian, args%options%lang)
+    end function words
 
     !> Largest magnitude of a tallied column.
     real(wp) function largest(tally)

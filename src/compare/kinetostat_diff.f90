@@ -11,6 +11,7 @@ module kinetostat_diff
   use kinetostat_error, only: error_t, fatal_error, exit_input
   use kinetostat_text, only: int_str, lower, clipped, starts_with
   use kinetostat_text_buffer, only: text_buffer_t
+  use kinetostat_format, only: trimmed_es
   use kinetostat_step_table, only: column_t, col_input_angle, col_force_angle
   use kinetostat_noise, only: noise_rel
   use kinetostat_labels, only: label, lang_en, lang_ru
@@ -33,8 +34,6 @@ module kinetostat_diff
   real(wp), parameter :: atol_other = 1.0e-9_wp
   !> One radian in degrees: the scale of the relative tolerance of an angle, deg.
   real(wp), parameter :: radian_deg = rad_to_deg
-  !> Format of a relative difference or an angle difference in a report line.
-  character(*), parameter :: rel_fmt = '(es8.1)'
   !> How far ahead (in values) a value of A is looked for in B when the two are out of step.
   integer, parameter :: search_window = 20000
   !> Characters of a column name in a CSV header.
@@ -288,7 +287,6 @@ contains
     type(tally_t), intent(inout) :: tally
     type(text_buffer_t), intent(inout) :: report
     real(wp) :: x, y, d, tol, floor
-    character(len=16) :: buf
     type(cell_t) :: ca, cb
     ca = a%cells(ia)
     cb = b%cells(ib)
@@ -311,16 +309,15 @@ contains
       d = abs(modulo(x - y + 180.0_wp, 360.0_wp) - 180.0_wp)
       tol = atol_of("deg", options) + options%rtol * radian_deg
       if (d > tol) then
-        write (buf, rel_fmt) d
-        call note(tally, report, ca%where//": "//ca%text//" vs "//cb%text//" (diff "//trim(adjustl(lower(buf)))//" deg)")
+        call note(tally, report, ca%where//": "//ca%text//" vs "//cb%text//" (diff "//lower(trimmed_es(d, 1))//" deg)")
       end if
     else
       tally%compared = tally%compared + 1
       d = abs(x - y)
       tol = atol_of(ca%unit, options) + options%rtol * max(abs(x), abs(y))
       if (d > tol) then
-        write (buf, rel_fmt) d / max(abs(x), abs(y))
-        call note(tally, report, ca%where//": "//ca%text//" vs "//cb%text//" (rel "//trim(adjustl(lower(buf)))//")")
+        call note(tally, report, ca%where//": "//ca%text//" vs "//cb%text//" (rel "// &
+          lower(trimmed_es(d / max(abs(x), abs(y)), 1))//")")
       end if
     end if
   end subroutine compare_cell
@@ -329,12 +326,9 @@ contains
   pure function tolerance_text(options) result(text)
     type(diff_options_t), intent(in) :: options
     character(len=:), allocatable :: text
-    character(len=16) :: buf
-    write (buf, rel_fmt) options%rtol
-    text = "rtol "//trim(adjustl(lower(buf)))
+    text = "rtol "//lower(trimmed_es(options%rtol, 1))
     if (options%atol >= 0.0_wp) then
-      write (buf, rel_fmt) options%atol
-      text = text//", atol "//trim(adjustl(lower(buf)))
+      text = text//", atol "//lower(trimmed_es(options%atol, 1))
     else
       text = text//", default atol per unit"
     end if

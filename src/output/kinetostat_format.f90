@@ -14,7 +14,7 @@ module kinetostat_format
   private
   public :: fixed_field, exp_field, int_field, full_number, whole_number, cell_number
   public :: echo_number, echo_array_number, footer_number, limit_number, pad_right, pad_left, display_width
-  public :: put_cell, put_fixed, cell_room, fixed_number, short_number
+  public :: put_cell, put_fixed, cell_room, fixed_number, short_number, trimmed_es
 
   ! The edit descriptors of the policy (kinetostat_decimal writes them exactly as the
   ! compiler's formatted WRITE would, only faster):
@@ -301,15 +301,17 @@ contains
     end if
   end function short_number
 
-  !> ES(2d+6).d without blanks: ES8.1 (1.0E-09), ES10.2 (2.50E+03).
+  !> ES(2d+6).d without blanks: ES8.1 (1.0E-09), ES10.2 (2.50E+03); a three-digit exponent
+  !> keeps its E (1.00E-300, where ESw.d alone would write 1.00-300).
   pure function trimmed_es(x, d) result(text)
     !> Finite value.
     real(wp), intent(in) :: x
     !> Digits after the point.
     integer, intent(in) :: d
     character(len=:), allocatable :: text
-    character(len=2 * d + 6) :: field
+    character(len=2 * d + 8) :: field
     call edit_exponent(x, d, 0, scientific=.true., text=field)
+    if (scan(field, "E") == 0) call edit_exponent(x, d, 3, scientific=.true., text=field)
     text = trim(adjustl(field))
   end function trimmed_es
 

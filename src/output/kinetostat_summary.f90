@@ -8,7 +8,7 @@ module kinetostat_summary
   use kinetostat_text, only: int_str, lower
   use kinetostat_step_table, only: step_table_t, col_force, col_force_angle, col_moment, column_tally_t, &
     edge_point_t
-  use kinetostat_format, only: cell_number
+  use kinetostat_format, only: cell_number, trimmed_es
   implicit none
   private
   public :: column_stats_t, column_stats, summarized, drive_work, coarse_step_warning, tally_rows
@@ -332,8 +332,7 @@ contains
     character(len=32) :: buf
     integer :: n
     if (abs(x) >= 1.0e9_wp .or. (abs(x) < 0.01_wp .and. x /= 0.0_wp)) then
-      write (buf, '(es10.3)') x
-      t = trim(adjustl(buf))
+      t = trimmed_es(x, 3)
       return
     end if
     write (buf, '(f0.2)') x

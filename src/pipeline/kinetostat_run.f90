@@ -7,6 +7,7 @@ module kinetostat_run
   use kinetostat_selfcheck, only: selfcheck_tolerance
   use kinetostat_error, only: error_t, fatal_error, exit_geometry
   use kinetostat_text, only: int_str
+  use kinetostat_format, only: trimmed_es
   use kinetostat_step_table, only: step_table_t, echo_cursor_t, echo_real_kind, echo_array_kind
   use kinetostat_deck, only: deck_source_t, release_deck_text
   use kinetostat_mechanism, only: mechanism_t
@@ -432,20 +433,20 @@ contains
     !> The error, when the self-check failed and that is not allowed.
     type(error_t), allocatable, intent(out) :: error
     character(len=:), allocatable :: what
-    character(len=16) :: residual_text, mismatch_text, limit_text
+    character(len=:), allocatable :: residual_text, mismatch_text, limit_text
     if (.not. table%has_selfcheck .or. table%tallied_rows == 0) return
     if (table%max_residual <= selfcheck_tolerance .and. table%max_mismatch <= selfcheck_tolerance) return
-    write (residual_text, '(es9.2)') table%max_residual
-    write (mismatch_text, '(es9.2)') table%max_mismatch
-    write (limit_text, '(es9.1)') selfcheck_tolerance
+    residual_text = trimmed_es(table%max_residual, 2)
+    mismatch_text = trimmed_es(table%max_mismatch, 2)
+    limit_text = trimmed_es(selfcheck_tolerance, 1)
     if (table%max_residual > selfcheck_tolerance) then
-      what = selfcheck_where(table, table%residual_row)//"equilibrium residual "//trim(adjustl(residual_text))
+      what = selfcheck_where(table, table%residual_row)//"equilibrium residual "//residual_text
     else
       what = selfcheck_where(table, table%mismatch_row)//table%driver//" mismatch vs the power balance "// &
-        trim(adjustl(mismatch_text))
+        mismatch_text
     end if
-    what = "self-check failed at "//what//" (limit "//trim(adjustl(limit_text))//"; max equilibrium residual "// &
-      trim(adjustl(residual_text))//", max "//table%driver//" mismatch "//trim(adjustl(mismatch_text))//")"
+    what = "self-check failed at "//what//" (limit "//limit_text//"; max equilibrium residual "// &
+      residual_text//", max "//table%driver//" mismatch "//mismatch_text//")"
     if (allowed) then
       call table%add_warning(what//": the results are not trustworthy (written because of "// &
         "--allow-selfcheck-failure)")

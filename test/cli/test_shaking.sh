@@ -46,3 +46,25 @@ cp "$out" "$cli_tmp/sweep_one"
 run_ks sweep "$root/data/assur_fourbar.nml" --vary crank_m=0.5:1.5:3 --shaking --jobs 2
 if [ "$rc" -eq 0 ] && head -1 "$out" | grep -q 'F_shake_max' && cmp -s "$out" "$cli_tmp/sweep_one"; then pass
 else fail "shaking-sweep" "exit $rc; header $(head -c 200 "$out")"; fi
+
+# balance --lang ru: the report in Russian, the course's words (противовес, уравновешивание,
+# главный вектор сил инерции), no English word left (tools/svg_check.py english); the balanced
+# deck, with its Russian comments, runs. The deck variables (crank_m, dyad(1)%m3) stay.
+for args in "assur_fourbar.nml" "assur_fourbar.nml --method crank" "assur_slider_crank.nml --method partial"; do
+  # shellcheck disable=SC2086
+  run_ks balance "$root/data/"$args --lang ru
+  sed -e 's/^kinetostat: balance: //' -e 's/[A-Za-z0-9_]*([0-9]*)%[A-Za-z0-9_]*//g' "$err" >"$cli_tmp/balance_ru.txt"
+  if [ "$rc" -ne 0 ] || ! grep -q 'противовес' "$cli_tmp/balance_ru.txt" || ! grep -q 'уравновешивани' "$cli_tmp/balance_ru.txt"; then
+    fail "balance-ru ($args)" "exit $rc; report: $(head -c 400 "$err")"
+  elif ! python3 "$root/tools/svg_check.py" english "$cli_tmp/balance_ru.txt" >"$cli_tmp/balance_ru.check" 2>&1; then
+    fail "balance-ru ($args)" "English words in the Russian report: $(head -5 "$cli_tmp/balance_ru.check")"
+  else
+    cp "$out" "$cli_tmp/balanced_ru.nml"
+    run_ks "$cli_tmp/balanced_ru.nml" --format summary
+    if [ "$rc" -eq 0 ]; then pass; else fail "balance-ru ($args)" "the balanced deck does not run: exit $rc: $(head -c 300 "$err")"; fi
+  fi
+done
+# three-digit exponents keep their E: --fraction 1e-300 is "1.00E-300", never "1.00-300"
+run_ks balance "$root/data/assur_slider_crank.nml" --method partial --fraction 1e-300
+if [ "$rc" -eq 0 ] && grep -q ' 1.00E-300 of the reciprocating mass' "$err" && ! grep -Eq '[0-9][+-][0-9]{3}' "$err"; then pass
+else fail "balance-exponent-e" "exit $rc; report: $(grep -E 'reciprocating|[0-9][+-][0-9]{3}' "$err" | head -3)"; fi
