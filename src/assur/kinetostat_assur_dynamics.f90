@@ -22,7 +22,7 @@ module kinetostat_assur_dynamics
     !> The validated deck.
     type(assur_deck_t) :: deck
   contains
-    procedure :: at
+    procedure :: at, failure
   end type assur_source_t
 
 contains
@@ -34,6 +34,20 @@ contains
     type(reduced_t) :: red
     red = assur_reduced_at(self%deck, phi)
   end function at
+
+  !> Why the mechanism has no reduced quantities at crank angle phi (rad): the position
+  !> analysis's own message (the dyad that cannot be assembled, its lengths; a dead position).
+  pure function failure(self, phi) result(text)
+    class(assur_source_t), intent(in) :: self
+    real(wp), intent(in) :: phi
+    character(len=:), allocatable :: text
+    type(link_state_t) :: states(0:2 * size(self%deck%mech%dyads) + 1)
+    type(dyad_pose_t) :: poses(size(self%deck%mech%dyads))
+    type(error_t), allocatable :: kin_error
+    text = ""
+    call assur_kinematics(self%deck%mech, phi, states, poses, kin_error)
+    if (allocated(kin_error)) text = kin_error%message
+  end function failure
 
   !> The reduced quantities at crank angle phi (rad), loads from their schedules at that angle
   !> (`step`: the step's own values instead, for a row of the run): J_red = sum m |v_Sq|^2 +

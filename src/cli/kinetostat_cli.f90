@@ -7,7 +7,7 @@ module kinetostat_cli
   use kinetostat_error, only: error_t, fatal_error, exit_success, exit_usage, exit_input, exit_warning
   use kinetostat_deck_repeats, only: deck_repeats
   use kinetostat_deck, only: deck_source_t, load_deck, read_group_name, set_max_deck_size
-  use kinetostat_override, only: override_t, parse_override, apply_overrides
+  use kinetostat_override, only: first_override_line, override_t, parse_override, apply_overrides
   use kinetostat_sweep, only: vary_t, parse_vary, run_sweep, variant_result_t, allow_selfcheck_failure_in_sweep
   use kinetostat_posix, only: stderr_is_terminal, cpu_count, guard_signals
   use kinetostat_text, only: int_str, printable
@@ -613,9 +613,11 @@ contains
     overrides = [overrides, one]
   end subroutine add_override
 
-  !> An input error of a run with overrides: when the first k overrides give an error the
-  !> first k-1 do not (or a different one), override k is named in the message as its cause;
-  !> an error of the deck itself stays as it is.
+  !> An input error of a run with overrides keeps the full run's own message; it is blamed on
+  !> override k ("(from --set NAME=VALUE)", or "--set NAME=VALUE: ..." in place of the deck
+  !> line of a value that does not read) only when the deck with that override alone gives
+  !> the same error and the deck without overrides does not: a mistake of the deck itself, or
+  !> one that only several overrides together make, is reported as it is.
   subroutine blame_override(source, group, overrides, error)
     !> The deck as read (without overrides).
     type(deck_source_t), intent(in) :: source
@@ -623,50 +625,71 @@ contains
     character(*), intent(in) :: group
     !> The overrides.
     type(override_t), intent(in) :: overrides(:)
-    !> The run's error; its message is replaced when an override is found to be the cause.
+    !> The run's error; its message names the override found to be the cause.
     type(error_t), intent(inout) :: error
-    type(error_t), allocatable :: previous, current
-    type(deck_source_t) :: patched
-    class(mechanism_t), allocatable :: mech
-    integer :: k
-    do k = 0, size(overrides)
-      call apply_overrides(source, overrides(1:k), patched)
-      if (allocated(mech)) deallocate (mech)
-      call create_mechanism(group, mech)
-      call mech%read_deck(patched, current)
-      if (k > 0 .and. allocated(current)) then
-        if (.not. allocated(previous)) then
-          call name_cause(current%message)
-          return
-        else if (current%message /= previous%message) then
-          call name_cause(current%message)
-          return
-        end if
+    character(len=:), allocatable :: message
+    integer :: k, first_line
+    first_line = first_override_line(source)
+    message = without_line(error%message)
+    if (same_error(overrides(1:0))) return
+    do k = 1, size(overrides)
+      if (size(overrides) > 1) then
+        if (.not. same_error(overrides(k:k))) cycle
       end if
-      if (allocated(previous)) deallocate (previous)
-      if (allocated(current)) call move_alloc(current, previous)
+      call name_cause()
+      return
     end do
   contains
-    !> The message with the override as its cause. A message that names a line of the deck
-    !> ("deck.nml:11: ...") names the override's own line, which the file does not have:
-    !> "--set NAME=VALUE: ..." replaces "deck.nml:11".
-    subroutine name_cause(message)
-      character(*), intent(in) :: message
-      character(len=:), allocatable :: given, rest
-      integer :: d
+    !> Whether the deck with `some` overrides fails its reading with the run's message.
+    logical function same_error(some)
+      type(override_t), intent(in) :: some(:)
+      type(deck_source_t) :: patched
+      class(mechanism_t), allocatable :: mech
+      type(error_t), allocatable :: current
+      call apply_overrides(source, some, patched)
+      call create_mechanism(group, mech)
+      call mech%read_deck(patched, current)
+      same_error = .false.
+      if (allocated(current)) same_error = without_line(current%message) == message
+    end function same_error
+
+    !> The line number of a message ("deck.nml:21: ..." -> 21), 0 when it names none.
+    pure integer function line_of(text) result(line)
+      character(*), intent(in) :: text
+      integer :: d, ios
+      line = 0
+      if (index(text, source%path//":") /= 1) return
+      d = len(source%path) + 2
+      if (d > len(text)) return
+      d = d - 1 + verify(text(d:), "0123456789")
+      if (d <= len(source%path) + 2 .or. text(d:d) /= ":") return
+      read (text(len(source%path) + 2:d - 1), *, iostat=ios) line
+      if (ios /= 0) line = 0
+    end function line_of
+
+    !> A message without the number of a line from the first override's on ("deck.nml:21:
+    !> ..." -> "deck.nml: ..."): those lines move with the number of overrides.
+    pure function without_line(text) result(plain)
+      character(*), intent(in) :: text
+      character(len=:), allocatable :: plain
+      integer :: line
+      plain = text
+      line = line_of(text)
+      if (line >= first_line) plain = source%path//text(len(source%path) + 2 + len(int_str(line)):)
+    end function without_line
+
+    !> The message with override k as its cause. A message that names the override's own
+    !> line ("deck.nml:21: ...", a line the file does not have) names the override instead:
+    !> "--set NAME=VALUE: ..." replaces "deck.nml:21".
+    subroutine name_cause()
+      character(len=:), allocatable :: given
       given = overrides(k)%name//"="//overrides(k)%value
       error%code = exit_input
-      if (index(message, source%path//":") == 1) then
-        rest = message(len(source%path) + 2:)
-        d = verify(rest, "0123456789")
-        if (d > 1) then
-          if (rest(d:d) == ":") then
-            error%message = "--set "//given//rest(d:)
-            return
-          end if
-        end if
+      if (line_of(error%message) == first_line + k - 1) then
+        error%message = "--set "//given//message(len(source%path) + 1:)
+      else
+        error%message = error%message//" (from --set "//given//")"
       end if
-      error%message = message//" (from --set "//given//")"
     end subroutine name_cause
   end subroutine blame_override
 

@@ -30,6 +30,13 @@ module kinetostat_dynamics
   !> Dynamics mode: steady cycle with the deck's flywheel; delta found.
   integer, parameter :: dynamics_given = 3
 
+  !> Largest kinetic energy of the cycle, (J_red + j_flywheel) omega^2 / 2, J: beyond it the
+  !> squares and sums of the speed law leave the range of the arithmetic.
+  real(wp), parameter :: energy_limit = 1.0e300_wp
+  !> The flywheel found must give back the delta asked to this relative accuracy (beyond it,
+  !> delta is below what the speed's arithmetic resolves).
+  real(wp), parameter :: delta_accuracy = 1.0e-6_wp
+
   !> Largest quadrature panel, rad (1 deg).
   real(wp), parameter :: panel_max = pi / 180.0_wp
   !> Gauss-Legendre abscissae on [-1, 1] (8 points, positive half).
@@ -60,6 +67,9 @@ module kinetostat_dynamics
   contains
     !> Reduced quantities at input angle phi (rad).
     procedure(reduced_at_i), deferred :: at
+    !> Why the reduced quantities are undefined at phi (the mechanism's own message: the
+    !> group that cannot be assembled, its lengths), "" when the mechanism gives none.
+    procedure :: failure => no_failure_detail
   end type reduced_source_t
 
   abstract interface
@@ -235,7 +245,7 @@ contains
       do q = 1, 8
         red = source%at(c + h * gl_xi(q))
         if (.not. red%ok) then
-          call dead_error(c + h * gl_xi(q), where, error)
+          call dead_error(source, c + h * gl_xi(q), where, error)
           return
         end if
         cycle%m_gl(q, k) = red%m
@@ -246,7 +256,7 @@ contains
     do k = 0, np
       red = source%at(cycle%node(k))
       if (.not. red%ok) then
-        call dead_error(cycle%node(k), where, error)
+        call dead_error(source, cycle%node(k), where, error)
         return
       end if
       cycle%j(k) = red%j + j_rotor
@@ -298,27 +308,38 @@ contains
 
   !> The steady cycle with the flywheel that gives the coefficient of speed fluctuation
   !> `delta` (after cycle_setup): J_fw by a root find on delta(J_fw), each value from the
-  !> speed law whose (omega_max + omega_min)/2 is the mean speed.
+  !> speed law whose (omega_max + omega_min)/2 is the mean speed. A machine whose J_red does
+  !> not change (every link massless, or only the input link's own inertia) has the flywheel
+  !> in closed form: J_fw = dE_max / (delta omega_m^2) - J_red.
   pure subroutine cycle_steady(source, delta, where, cycle, error)
     class(reduced_source_t), intent(in) :: source
-    !> Coefficient of speed fluctuation asked for (> 0).
+    !> Coefficient of speed fluctuation asked for (0 < delta < 1).
     real(wp), intent(in) :: delta
     character(*), intent(in) :: where
     type(cycle_t), intent(inout) :: cycle
     type(error_t), allocatable, intent(out) :: error
-    real(wp) :: x_lo, x_hi, d_lo, d_hi, x, d, j_ref, j_tb
+    real(wp) :: x_lo, x_hi, d_lo, d_hi, x, d, j_ref, j_tb, j_fw
     integer :: it, side
     logical :: ok
 
+    call energy_in_range(cycle, 0.0_wp, where, error)
+    if (allocated(error)) return
     call textbook(cycle, delta, j_tb)
     cycle%j_flywheel_textbook = j_tb
+    if (maxval(cycle%j) == minval(cycle%j)) then
+      call constant_inertia_flywheel(j_fw, error)
+      if (allocated(error)) return
+      call speed_law(source, cycle, j_fw, d, ok)
+      call check_found(ok, d, error)
+      if (allocated(error)) return
+      call finish_time(source, cycle)
+      return
+    end if
     ! the bare machine (no flywheel)
     call speed_law(source, cycle, 0.0_wp, d, ok)
     if (ok) then
       if (d <= delta) then
-        call fatal_error(error, exit_input, where//": delta: the machine without a flywheel already runs with "// &
-          "delta = "//real_str(d)//" <= "//real_str(delta)//" (j_rotor and the links suffice): no flywheel is "// &
-          "needed; give a smaller delta or dynamics = 'given' with j_flywheel = 0")
+        call no_flywheel_needed(d, error)
         return
       end if
     end if
@@ -333,7 +354,9 @@ contains
       if (ok .and. d_hi < delta) exit
     end do
     if (.not. (ok .and. d_hi < delta)) then
-      call fatal_error(error, exit_geometry, where//": dynamics: no flywheel gives delta = "//real_str(delta))
+      call fatal_error(error, exit_input, where//": delta: no flywheel up to "//real_str(1.0_wp / x_hi)// &
+        " kg*m^2 brings the speed's fluctuation down to delta = "//real_str(delta)// &
+        " (below what the arithmetic of the speed resolves); give a larger delta")
       return
     end if
     x_lo = x_hi * 4.0_wp
@@ -360,12 +383,100 @@ contains
       end if
     end do
     call speed_law(source, cycle, 1.0_wp / x - j_ref, d, ok)
-    if (.not. ok) then
-      call fatal_error(error, exit_geometry, where//": dynamics: the speed law failed near the flywheel found")
-      return
-    end if
+    call check_found(ok, d, error)
+    if (allocated(error)) return
     call finish_time(source, cycle)
+  contains
+    !> The speed law with the flywheel found must exist and give back delta.
+    pure subroutine check_found(ok, d, error)
+      logical, intent(in) :: ok
+      real(wp), intent(in) :: d
+      type(error_t), allocatable, intent(out) :: error
+      if (.not. ok) then
+        call fatal_error(error, exit_input, where//": delta: no speed law of mean speed omega1 = "// &
+          real_str(cycle%omega_mean)//" rad/s gives delta = "//real_str(delta)//" (the root find ended "// &
+          "where the speed would fall to zero); give a smaller delta")
+      else if (.not. abs(d - delta) <= delta_accuracy * delta) then
+        call fatal_error(error, exit_input, where//": delta: "//real_str(delta)//" is below what the "// &
+          "arithmetic of the speed resolves (the flywheel found, "//real_str(cycle%j_flywheel)// &
+          " kg*m^2, gives delta = "//real_str(d)//"); give a larger delta")
+      end if
+    end subroutine check_found
+
+    !> The machine without a flywheel already runs with delta_bare <= delta.
+    pure subroutine no_flywheel_needed(delta_bare, error)
+      real(wp), intent(in) :: delta_bare
+      type(error_t), allocatable, intent(out) :: error
+      call fatal_error(error, exit_input, where//": delta: the machine without a flywheel already runs with "// &
+        "delta = "//real_str(delta_bare)//" <= "//real_str(delta)//" (j_rotor and the links suffice): no flywheel "// &
+        "is needed; give a smaller delta or dynamics = 'given' with j_flywheel = 0")
+    end subroutine no_flywheel_needed
+
+    !> J_red constant (J_c): with the largest change of kinetic energy over the cycle dE,
+    !> (omega_max^2 - omega_min^2) (J_fw + J_c)/2 = dE and omega_max + omega_min = 2 omega_m
+    !> give J_fw + J_c = dE / (delta omega_m^2) exactly.
+    pure subroutine constant_inertia_flywheel(j_fw, error)
+      !> The flywheel, kg*m^2.
+      real(wp), intent(out) :: j_fw
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: de, j_c
+      j_c = cycle%j(0)
+      de = energy_swing(source, cycle)
+      j_fw = de / (delta * cycle%omega_mean**2) - j_c
+      if (.not. de > 0.0_wp) then
+        call fatal_error(error, exit_input, where//": delta: the kinetic energy does not change over the cycle "// &
+          "(the loads' work and M_d balance at every angle): any flywheel gives delta = 0, none is needed; "// &
+          "give dynamics = 'given' with j_flywheel")
+      else if (j_fw <= 0.0_wp) then
+        call no_flywheel_needed(de / (j_c * cycle%omega_mean**2), error)
+      end if
+    end subroutine constant_inertia_flywheel
   end subroutine cycle_steady
+
+  !> The largest change of kinetic energy over the cycle, max dT - min dT, J (the extremes
+  !> between the panel bounds included): from the speed law's extremes with a constant
+  !> J_red, where omega^2 (J_fw + J_red)/2 - dT is the same at every angle.
+  pure real(wp) function energy_swing(source, cycle) result(de)
+    class(reduced_source_t), intent(in) :: source
+    type(cycle_t), intent(in) :: cycle
+    real(wp) :: e0, j_total, w_max, p_max, w_min, p_min
+    logical :: ok
+    de = maxval(cycle%dt) - minval(cycle%dt)
+    if (.not. de > 0.0_wp) return
+    j_total = 1.0_wp + cycle%j(0)
+    e0 = -minval(cycle%dt) + 2.0_wp * de
+    call extremes(source, cycle, 1.0_wp, e0, w_max, p_max, w_min, p_min, ok)
+    if (ok) de = 0.5_wp * j_total * (w_max - w_min) * (w_max + w_min)
+  end function energy_swing
+
+  !> The kinetic energy of the cycle, (J_red,max + j_flywheel) omega_m^2 / 2, must stay within
+  !> energy_limit; beyond it, the value that puts it there is named: the mean speed, the
+  !> flywheel, the rotor, or the links' inertia (J_red).
+  pure subroutine energy_in_range(cycle, j_flywheel, where, error)
+    type(cycle_t), intent(in) :: cycle
+    !> Flywheel, kg*m^2 (0 with dynamics = 'steady': found later).
+    real(wp), intent(in) :: j_flywheel
+    character(*), intent(in) :: where
+    type(error_t), allocatable, intent(out) :: error
+    real(wp) :: j_total, j_links, w2
+    character(len=:), allocatable :: why
+    j_total = maxval(cycle%j) + j_flywheel
+    j_links = maxval(cycle%j) - cycle%j_rotor
+    w2 = cycle%omega_mean**2
+    if (0.5_wp * j_total * w2 <= energy_limit) return
+    why = ": the kinetic energy (J_red + j_rotor + j_flywheel)*omega1^2/2 at the mean speed omega1 = "// &
+      real_str(cycle%omega_mean)//" rad/s with J_red + j_rotor + j_flywheel up to "//real_str(j_total)// &
+      " kg*m^2 is out of the range of the arithmetic (above 1e300 J)"
+    if (.not. w2 <= energy_limit .or. log10(max(w2, tiny(1.0_wp))) >= log10(max(j_total, tiny(1.0_wp)))) then
+      call fatal_error(error, exit_input, where//": omega1"//why)
+    else if (j_flywheel >= cycle%j_rotor .and. j_flywheel >= j_links) then
+      call fatal_error(error, exit_input, where//": j_flywheel"//why)
+    else if (cycle%j_rotor >= j_links) then
+      call fatal_error(error, exit_input, where//": j_rotor"//why)
+    else
+      call fatal_error(error, exit_input, where//": J_red (the links' masses and moments of inertia)"//why)
+    end if
+  end subroutine energy_in_range
 
   !> The steady cycle with the flywheel `j_flywheel` (after cycle_setup): the speed law of
   !> mean speed omega_mean and the delta it gives.
@@ -378,6 +489,13 @@ contains
     type(error_t), allocatable, intent(out) :: error
     real(wp) :: d, j_tb
     logical :: ok
+    call energy_in_range(cycle, j_flywheel, where, error)
+    if (allocated(error)) return
+    if (.not. j_flywheel + maxval(cycle%j) > 0.0_wp) then
+      call fatal_error(error, exit_input, where//": j_flywheel: the machine has no inertia (every link massless, "// &
+        "j_rotor = 0) and j_flywheel = 0: its speed is undefined; give a flywheel")
+      return
+    end if
     call speed_law(source, cycle, j_flywheel, d, ok)
     if (.not. ok) then
       call fatal_error(error, exit_input, where//": j_flywheel: with j_flywheel = "//real_str(j_flywheel)// &
@@ -405,9 +523,12 @@ contains
     j_fw = (maxval(t1) - minval(t1)) / (delta * cycle%omega_mean**2) - j_c
   end subroutine textbook
 
-  !> The speed law with flywheel `j_fw`: E0 such that (omega_max + omega_min)/2 = omega_mean
-  !> (Newton from above: omega is concave and increasing in E0), the extremes and `delta`;
-  !> `ok` false when no such law keeps omega > 0.
+  !> The speed law with flywheel `j_fw`: E0 such that (omega_max + omega_min)/2 = omega_mean,
+  !> the extremes and `delta`; `ok` false when no such law keeps omega > 0. (omega_max +
+  !> omega_min)/2 is concave and increasing in E0: Newton's method from the bracket's upper
+  !> end (where omega >= omega_m everywhere) overshoots once, then climbs to the root from
+  !> below; a step that leaves the bracket [E0 where the speed reaches zero, upper end], or an
+  !> E0 where it does, is replaced by bisection.
   pure subroutine speed_law(source, cycle, j_fw, delta, ok)
     class(reduced_source_t), intent(in) :: source
     type(cycle_t), intent(inout) :: cycle
@@ -415,34 +536,47 @@ contains
     real(wp), intent(in) :: j_fw
     real(wp), intent(out) :: delta
     logical, intent(out) :: ok
-    real(wp) :: e0, f, df, w_max, w_min, p_max, p_min, step, wm
+    real(wp) :: e0, e_lo, e_hi, e_new, f, df, w_max, w_min, p_max, p_min, wm
     integer :: it
     logical :: converged
     wm = cycle%omega_mean
-    e0 = 0.5_wp * (j_fw + maxval(cycle%j)) * wm**2 - minval(cycle%dt)
+    e_hi = 0.5_wp * (j_fw + maxval(cycle%j)) * wm**2 - minval(cycle%dt)
+    e_lo = -minval(cycle%dt)
+    e0 = e_hi
     ok = .false.
     delta = 0.0_wp
     converged = .false.
-    ! at most 100 Newton steps on e0; the extremes are evaluated once more after the last one
-    do it = 1, 101
-      if (.not. all(e0 + cycle%dt > 0.0_wp)) then
-        ok = .false.
-        return
+    ! at most 200 steps on e0; the extremes are evaluated once more after the last one
+    do it = 1, 201
+      ok = all(e0 + cycle%dt > 0.0_wp)
+      if (ok) call extremes(source, cycle, j_fw, e0, w_max, p_max, w_min, p_min, ok)
+      if (ok) ok = w_min > 0.0_wp
+      if (.not. ok) then
+        ! the speed reaches zero: E0 is too low (at the upper end there is no law at all)
+        if (it == 1 .or. it == 201) return
+        e_lo = e0
+        e0 = 0.5_wp * (e_lo + e_hi)
+        converged = .false.
+        cycle
       end if
-      call extremes(source, cycle, j_fw, e0, w_max, p_max, w_min, p_min, ok)
-      if (.not. ok) return
-      if (converged .or. it == 101) exit
+      if (converged .or. it == 201) exit
       f = 0.5_wp * (w_max + w_min) - wm
+      if (f > 0.0_wp) then
+        e_hi = e0
+      else
+        e_lo = e0
+      end if
       df = 0.5_wp * (1.0_wp / ((j_fw + j_at(source, cycle, p_max)) * w_max) + &
                      1.0_wp / ((j_fw + j_at(source, cycle, p_min)) * w_min))
-      step = f / df
-      e0 = e0 - step
-      converged = abs(step) <= 1.0e-15_wp * abs(e0) .or. abs(f) <= 1.0e-15_wp * wm
+      e_new = e0 - f / df
+      if (.not. (e_new >= e_lo .and. e_new <= e_hi)) e_new = 0.5_wp * (e_lo + e_hi)
+      converged = abs(e_new - e0) <= 1.0e-15_wp * abs(e_new) .or. abs(f) <= 1.0e-15_wp * wm .or. &
+        e_hi - e_lo <= 1.0e-15_wp * abs(e_new)
+      e0 = e_new
     end do
-    if (.not. w_min > 0.0_wp) then
-      ok = .false.
-      return
-    end if
+    ! a law whose mean is not omega_m (the bracket closed on the speed's zero) is none
+    ok = abs(0.5_wp * (w_max + w_min) - wm) <= 1.0e-10_wp * wm
+    if (.not. ok) return
     cycle%j_flywheel = j_fw
     cycle%e0 = e0
     cycle%omega_max = w_max
@@ -726,15 +860,33 @@ contains
     mo%t = cycle%time(k) + h * sum(cycle%r_gl(:, k + 1) * wt)
   end function motion_from
 
-  !> The error of a dead position met in the cycle.
-  pure subroutine dead_error(phi, where, error)
+  !> The error of a dead position met in the cycle: the mechanism's own message (the group,
+  !> its lengths) at that input angle, as a plain run names it at a step.
+  pure subroutine dead_error(source, phi, where, error)
+    class(reduced_source_t), intent(in) :: source
     real(wp), intent(in) :: phi
     character(*), intent(in) :: where
     type(error_t), allocatable, intent(out) :: error
+    character(len=:), allocatable :: detail
+    detail = source%failure(phi)
+    if (len(detail) > 0) then
+      call fatal_error(error, exit_geometry, where//": dynamics: the cycle at phi1 = "// &
+        real_str(phi * rad_to_deg)//" deg: "//detail)
+      return
+    end if
     call fatal_error(error, exit_geometry, where//": dynamics: the cycle passes through a dead position (or one "// &
       "that cannot be assembled) near the input angle "//real_str(phi * rad_to_deg)// &
       " deg: the reduced quantities are undefined there")
   end subroutine dead_error
+
+  !> No detail of a failure (a mechanism that does not say why).
+  pure function no_failure_detail(self, phi) result(text)
+    class(reduced_source_t), intent(in) :: self
+    !> Input angle, rad.
+    real(wp), intent(in) :: phi
+    character(len=:), allocatable :: text
+    text = ""
+  end function no_failure_detail
 
   !> Sort ascending (heapsort: a load table may give one switch per step).
   pure subroutine sort(x)

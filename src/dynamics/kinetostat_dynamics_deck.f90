@@ -126,8 +126,10 @@ contains
       call require_rule(ctx, "delta", is_set(delta), "missing: dynamics = 'steady' needs the coefficient "// &
         "of speed fluctuation delta", error)
       if (allocated(error)) return
-      call require_rule(ctx, "delta", delta > 0.0_wp .and. delta < 2.0_wp, &
-        "must be > 0 and < 2 (got "//real_str(delta)//")", error)
+      call require_rule(ctx, "delta", delta > 0.0_wp .and. delta < 1.0_wp, &
+        "must be > 0 and < 1 (got "//real_str(delta)//"): the coefficient of speed fluctuation "// &
+        "(omega_max - omega_min)/omega1 of a machine is a small fraction (about 1/300 to 1/5); at 1 the speed "// &
+        "would already swing from omega1/2 to 3*omega1/2", error)
       if (allocated(error)) return
       dyn%delta = delta
     else

@@ -11,7 +11,7 @@ module kinetostat_override
   use kinetostat_step_table, only: step_table_t, echo_heading_kind, echo_line_kind
   implicit none
   private
-  public :: override_t, parse_override, apply_overrides, mark_overrides
+  public :: override_t, parse_override, apply_overrides, mark_overrides, first_override_line
 
   !> One override.
   type :: override_t
@@ -164,6 +164,24 @@ contains
     if (k == 0) call put(text, at, added)
     call deck_source_from_text(source%path, text(1:at), patched)
   end subroutine apply_overrides
+
+  !> The line of the first override in the deck apply_overrides writes (override i is on
+  !> the line after override i - 1): the line of the group's closing '/', or the line after
+  !> it when text stands before the '/' on its line, or after the deck's last line when the
+  !> group is not closed.
+  pure integer function first_override_line(source) result(line)
+    !> The deck as read.
+    type(deck_source_t), intent(in) :: source
+    integer :: k, col
+    call group_end(source, k, col)
+    if (k == 0) then
+      line = deck_line_count(source) + 1
+    else if (col > 1) then
+      line = k + 1
+    else
+      line = k
+    end if
+  end function first_override_line
 
   !> `piece` into `text` after its first `at` characters (`at` counts them).
   pure subroutine put(text, at, piece)

@@ -111,3 +111,18 @@ expect_one_line_error set-deck-own-error 2 "&pr3207: m1: must be >= 0 \(got -12[
 # ... and a --set may repair it
 run_ks "$(deck_with set_deck_bad2 data/pr3207.nml 's/m1 = 12/m1 = -12/')" --set m1=12 --format csv
 expect_bytes set-repairs-deck data/expected/pr3207.csv "$out"
+
+# --- the true error: with several --set the message is the full run's own; "(from --set ...)"
+# only when that override alone gives the same error
+run_ks data/pr3207.nml --set "dynamics='steady'" --set delta=5
+expect_one_line_error set-true-error-delta 2 "data/pr3207.nml: &pr3207: delta: must be > 0 and < 1 \(got 5[.0]*\): "
+grep -q "from --set" "$err" && fail set-true-error-delta-blame "blamed on one --set: $(cat "$err")" || pass
+run_ks docs/examples/engine.nml --set "dynamics='steady'" --set delta=0.02
+expect_one_line_error set-true-error-cycle 2 "docs/examples/engine.nml: &assur: dphi: the steps must cover exactly one turn"
+grep -q "from --set\|missing" "$err" && fail set-true-error-cycle-blame "blamed or 'missing': $(cat "$err")" || pass
+run_ks data/pr3207_flywheel.nml --set m5=70 --set delta=5
+expect_one_line_error set-true-error-alone 2 "&pr3207: delta: must be > 0 and < 1 \(got 5[.0]*\): .* \(from --set delta=5\)$"
+run_ks data/pr3207.nml --set m5=70 --set l_ab=-1 --set m3=30
+expect_one_line_error set-true-error-middle 2 "&pr3207: l_ab: must be > 0 .*\(from --set l_ab=-1\)$"
+run_ks data/pr3207.nml --set m5=70 --set 'l_ab=0,11'
+expect_one_line_error set-true-error-line 2 "--set l_ab=0,11: &pr3207: l_ab = 0,11: decimal comma\? write 0.11$"

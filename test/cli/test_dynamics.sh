@@ -48,8 +48,8 @@ else fail dynamics-reduced-columns "dynamics = 'reduced': header '$(head -1 "$ou
 
 # --- every error of the stage, from a deck
 expect_input_error dynamics-unknown "dynamics: unknown value 'wobbly'" "$(deck_with dyn_unknown "$fw" "s/'steady'/'wobbly'/")"
-expect_input_error dynamics-delta-zero "delta: must be > 0 and < 2" "$(deck_with dyn_d0 "$fw" "s/delta = 0.04/delta = 0/")"
-expect_input_error dynamics-delta-negative "delta: must be > 0 and < 2" "$(deck_with dyn_dneg "$fw" "s/delta = 0.04/delta = -0.1/")"
+expect_input_error dynamics-delta-zero "delta: must be > 0 and < 1" "$(deck_with dyn_d0 "$fw" "s/delta = 0.04/delta = 0/")"
+expect_input_error dynamics-delta-negative "delta: must be > 0 and < 1" "$(deck_with dyn_dneg "$fw" "s/delta = 0.04/delta = -0.1/")"
 expect_input_error dynamics-delta-missing "delta: missing" "$(deck_with dyn_dmiss "$fw" "s/, delta = 0.04//")"
 expect_input_error dynamics-no-flywheel-needed "no flywheel is needed" "$(deck_with dyn_big_rotor "$fw" "s/j_rotor = 0.6/j_rotor = 5000/")"
 expect_input_error dynamics-not-one-turn "exactly one turn" "$(deck_with dyn_turn "$fw" "s/dphi = 1 /dphi = 1, n = 181 /")"
@@ -83,7 +83,7 @@ for name in ["phi1", "M1", "J_red", "dJ_red", "M_red", "dT", "omega1", "eps1", "
 PY
 then pass; else fail dynamics-generic-twin "data/assur_pr3207_flywheel.nml differs from data/pr3207_flywheel.nml"; fi
 expect_input_error dynamics-assur-actuator "no turn to make a cycle of" "$(deck_with dyn_act data/assur_pr3050.nml "s/^\/$/  dynamics = 'steady', delta = 0.05\n\//")"
-expect_input_error dynamics-dead-position "the cycle passes through a dead position" "$(deck_with dyn_dead data/assur_toggle.nml "s/, n = 3//; s/^\/$/  dynamics = 'steady', delta = 0.05\n\//")" 3
+expect_input_error dynamics-dead-position "dynamics: the cycle at phi1 = 0.000000000 deg: dyad 1 \(RRR, links 2-3\): dead \(toggle\) position" "$(deck_with dyn_dead data/assur_toggle.nml "s/, n = 3//; s/^\/$/  dynamics = 'steady', delta = 0.05\n\//")" 3
 expect_input_error dynamics-assur-friction "friction in the pairs" "$(deck_with dyn_fr data/assur_pr3207_flywheel.nml "s/crank_s = 0, 0 /crank_s = 0, 0, crank_f = 0.1, crank_r = 0.02 /")"
 
 # --- --format summary carries the figures of the DYNAMICS block
@@ -215,3 +215,75 @@ grep -q "REDUCED_TO" <("$KINETOSTAT" data/assur_pr3050.nml --set "dynamics='redu
 rc=$?
 [ "$rc" -eq 2 ] && grep -q "dynamics.*no turn to make a cycle of" "$cli_tmp/act.err" && [ ! -s "$cli_tmp/act.out" ] && pass \
   || fail dynamics-actuator-steady "exit $rc: $(cat "$cli_tmp/act.err")"
+
+# --- delta in (0, 1) is solved on every deck kind (the flywheel found gives back the delta
+# asked, the dedicated deck and its generic twin agree), delta >= 1 is refused with one reason
+# everywhere (before, delta near 1 or 2 failed erratically or came back as 0.89)
+for d in 0.5 0.9 0.99; do
+  run_ks "$fw" --set delta=$d --format json; cp "$out" "$cli_tmp/fw_d.json"; rc_a=$rc
+  run_ks data/assur_pr3207_flywheel.nml --set delta=$d --format json; cp "$out" "$cli_tmp/twin_d.json"; rc_b=$rc
+  # the engine alone runs with delta = 0.285: a quarter of d needs a flywheel
+  run_ks docs/examples/engine.nml --set "dynamics='steady'" --set n=25 --set delta="$(python3 -c "print($d / 4)")" --format json
+  rc_c=$rc
+  if [ "$rc_a$rc_b$rc_c" = 000 ] && python3 - "$cli_tmp/fw_d.json" "$cli_tmp/twin_d.json" "$out" "$d" <<'PY'
+import json, sys
+a, b, c = (json.load(open(f)) for f in sys.argv[1:4])
+for x, d in ((a, float(sys.argv[4])), (b, float(sys.argv[4])), (c, float(sys.argv[4]) / 4)):
+    dy = x["dynamics"]
+    assert abs(dy["delta"] - d) <= 1e-9 * d, (dy["delta"], d)
+    assert abs((dy["omega_max"] - dy["omega_min"]) / dy["omega_mean"] - d) <= 1e-9 * d
+    assert x["selfcheck"]["ok"], x["selfcheck"]
+fa, fb = a["dynamics"]["J_flywheel"], b["dynamics"]["J_flywheel"]
+assert abs(fa - fb) <= 1e-9 * fa, (fa, fb)
+PY
+  then pass; else fail "dynamics-delta-$d" "exit $rc_a $rc_b $rc_c, or delta not reached: $(head -c 300 "$err")"; fi
+done
+for d in 1 1.5 1.99 5; do
+  for deck in "$fw" data/assur_pr3207_flywheel.nml data/sixbar_flywheel.nml; do
+    run_ks "$deck" --set delta=$d
+    if [ "$rc" -eq 2 ] && grep -q "^kinetostat: error: $deck: &[a-z0-9]*: delta: must be > 0 and < 1 (got " "$err" && \
+       grep -q "(from --set delta=$d)$" "$err"; then pass
+    else fail "dynamics-delta-refused-$d" "$deck: exit $rc: $(head -c 300 "$err")"; fi
+  done
+done
+# --- every refusal names the variable and the reason: a kinetic energy beyond the arithmetic's
+# range is blamed on the value that makes it so (not "no flywheel gives delta" or "the speed
+# would fall to zero")
+expect_input_error dynamics-omega-huge "&pr3207: omega1: .*kinetic energy.*out of the range" "$(deck_with dyn_whuge "$fw" "s/omega1 = 7.5 /omega1 = 1e300 /")"
+expect_input_error dynamics-rotor-huge "&pr3207: j_rotor: .*kinetic energy.*out of the range" "$(deck_with dyn_rhuge "$fw" "s/j_rotor = 0.6/j_rotor = 1e308/")"
+expect_input_error dynamics-flywheel-huge "&pr3207: j_flywheel: .*kinetic energy.*out of the range" "$(deck_with dyn_fhuge "$fw" "s/dynamics = 'steady', delta = 0.04/dynamics = 'given', j_flywheel = 1e308/")"
+expect_input_error dynamics-assur-omega-huge "&assur: omega1: .*kinetic energy.*out of the range" "$(deck_with dyn_awhuge data/assur_pr3207_flywheel.nml "s/omega1 = 7.5 /omega1 = 1e300 /")"
+expect_input_error dynamics-delta-tiny "&pr3207: delta: 0.1000000000E-299 is below what the arithmetic of the speed resolves" "$(deck_with dyn_dtiny "$fw" "s/delta = 0.04/delta = 1e-300/")"
+# a geometry error met by the cycle names the dyad, its lengths and the angle, as the plain run
+# does (a rod shorter than the crank)
+expect_input_error dynamics-cycle-geometry "&assur: dynamics: the cycle at phi1 = [0-9.]+ deg: dyad 1 \(RRP, links 2-3\): cannot be assembled: distance from its joint to the guide [0-9.E-]+ m exceeds l2 = 0.2000000000E-1 m" \
+  "$(deck_with dyn_short docs/examples/engine.nml "s/dyad(1)%l2 = 0.2,/dyad(1)%l2 = 0.02,/; s/phi_start = 0, dphi = 15, n = 49/phi_start = 0, dphi = 15, n = 25, dynamics = 'steady', delta = 0.05/")" 3
+
+# --- a machine whose only inertia is its flywheel (every link massless, j_rotor = 0, J_red = 0):
+# J_fw = dE_max / (delta omega_m^2) exactly, checked by its own law: the true motion's delta is
+# the delta asked, 1/2 J_fw omega^2 - dT is the same at every step, and J_fw from the largest
+# change of kinetic energy (a fine step's dT) over delta omega_m^2
+massless=$(deck_with dyn_massless "$fw" "s/m1 = 12, m3 = 22, m5 = 60/m1 = 0, m3 = 0, m5 = 0/; s/j3 = 1.1/j3 = 0/; s/j_rotor = 0.6/j_rotor = 0/")
+for d in 0.04 0.5; do
+  run_ks "$massless" --set delta=$d --set dphi=0.1 --set n=3601 --format json
+  if [ "$rc" -eq 0 ] && python3 - "$out" "$d" <<'PY'
+import json, sys
+x = json.load(open(sys.argv[1])); d = float(sys.argv[2]); dy = x["dynamics"]
+cols = [c["name"] for c in x["columns"]]; rows = x["rows"]
+w, dt, jr = cols.index("omega1"), cols.index("dT"), cols.index("J_red")
+assert all(r[jr] == 0 for r in rows), "J_red is not 0"
+jfw, wm = dy["J_flywheel"], dy["omega_mean"]
+# the law of motion with J = J_fw: 1/2 J_fw omega^2 - dT constant (the energy E0)
+e = [0.5 * jfw * r[w] ** 2 - r[dt] for r in rows]
+assert max(e) - min(e) <= 1e-9 * max(abs(v) for v in e), (min(e), max(e))
+# the true motion's delta: from its extremes, and from the steps' omega (0.1 deg apart)
+assert abs((dy["omega_max"] - dy["omega_min"]) / wm - d) <= 1e-12 * d, dy
+ws = [r[w] for r in rows]
+assert abs((max(ws) - min(ws)) / wm - d) <= 1e-5 * d, ((max(ws) - min(ws)) / wm, d)
+# J_fw = dE_max / (delta omega_m^2), dE_max from the steps' dT
+de = max(r[dt] for r in rows) - min(r[dt] for r in rows)
+assert abs(de / (d * wm ** 2) - jfw) <= 1e-5 * jfw, (de / (d * wm ** 2), jfw)
+assert x["selfcheck"]["ok"]
+PY
+  then pass; else fail "dynamics-massless-$d" "exit $rc: $(head -c 300 "$err")"; fi
+done
