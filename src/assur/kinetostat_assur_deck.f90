@@ -432,6 +432,92 @@ contains
     end function skip_blanks
   end subroutine kind_names_as_codes
 
+  !> A READ that failed on a line with a dyad's kind given as a name that is none of the
+  !> kinds (`dyad(1)%kind = 'RRS'`): the message says so and lists the names, instead of
+  !> "a number is expected" (names are accepted).
+  pure subroutine name_unknown_kind(source, ctx, error)
+    type(deck_source_t), intent(in) :: source
+    type(deck_context_t), intent(in) :: ctx
+    !> The READ's error ("deck.nml:11: &assur: ..."), replaced when its line has such a name.
+    type(error_t), intent(inout) :: error
+    character(len=:), allocatable :: text, low, designator, value
+    integer :: line, d, ios, at, i, j, start
+    character(len=1) :: quote
+    if (index(error%message, ctx%path//":") /= 1) return
+    d = len(ctx%path) + 2
+    if (d > len(error%message)) return
+    d = d - 1 + verify(error%message(d:), "0123456789")
+    if (d <= len(ctx%path) + 2) return
+    read (error%message(len(ctx%path) + 2:d - 1), *, iostat=ios) line
+    if (ios /= 0 .or. line < 1 .or. line > deck_line_count(source)) return
+    text = deck_line(source, line)
+    low = lower(text)
+    ! the comment, if any, is not looked at
+    quote = " "
+    do i = 1, len(low)
+      if (quote /= " ") then
+        if (low(i:i) == quote) quote = " "
+      else if (low(i:i) == "'" .or. low(i:i) == '"') then
+        quote = low(i:i)
+      else if (low(i:i) == "!") then
+        low = low(1:i - 1)
+        exit
+      end if
+    end do
+    start = 1
+    do
+      at = index(low(start:), "%kind")
+      if (at == 0) return
+      at = start + at - 1
+      start = at + 5
+      i = at + 5
+      do while (i <= len(low))
+        if (low(i:i) /= " ") exit
+        i = i + 1
+      end do
+      if (i > len(low)) return
+      if (low(i:i) /= "=") cycle
+      i = i + 1
+      do while (i <= len(low))
+        if (low(i:i) /= " ") exit
+        i = i + 1
+      end do
+      if (i > len(low)) return
+      ! a text: quoted, or a word
+      if (low(i:i) == "'" .or. low(i:i) == '"') then
+        j = index(low(i + 1:), low(i:i))
+        if (j == 0) return
+        value = text(i + 1:i + j - 1)
+        j = i + j
+      else if (low(i:i) >= "a" .and. low(i:i) <= "z") then
+        j = i
+        do while (j < len(low))
+          if (index(" ,/", low(j + 1:j + 1)) > 0) exit
+          j = j + 1
+        end do
+        value = text(i:j)
+      else
+        cycle
+      end if
+      if (any(kind_names == upper(trim(adjustl(value))))) cycle
+      ! the designator before %kind: dyad(k)
+      j = max(j, i)
+      d = at - 1
+      do while (d >= 1)
+        if (index("abcdefghijklmnopqrstuvwxyz0123456789_() ", low(d:d)) == 0) exit
+        if (low(d:d) == " " .and. d < at - 1) then
+          if (low(d + 1:d + 1) /= " " .and. low(d + 1:d + 1) /= "(") exit
+        end if
+        d = d - 1
+      end do
+      designator = trim(adjustl(text(d + 1:at + 4)))
+      error%message = ctx%path//":"//int_str(line)//": &"//ctx%group//": "//designator//" = "// &
+        trim(text(i:j))//": unknown kind '"//trim(adjustl(value))//"' (a dyad's kind is RRR, RRP, RPR, PRP or "// &
+        "RPP, or its number 1 to 5)"
+      return
+    end do
+  end subroutine name_unknown_kind
+
   !> Windowed value at crank angle `phi_deg`: `value` for phi_on <= phi <= phi_off
   !> (absolute degrees, 1e-9 deg tolerance), `idle` elsewhere.
   elemental function assur_window(phi_deg, phi_on, phi_off, value, idle) result(v)
@@ -555,7 +641,10 @@ contains
     do while (probe%retry(coded)) ! on failure: find the line and the assignment
       read (probe%records, nml=assur, iostat=probe%ios, iomsg=probe%msg)
     end do
-    if (probe%failed(coded, ctx, error)) return
+    if (probe%failed(coded, ctx, error)) then
+      call name_unknown_kind(source, ctx, error)
+      return
+    end if
 
     call require_rule(ctx, "title", len_trim(title) <= len(deck%title), "longer than "// &
       int_str(len(deck%title))//" characters", error)
@@ -635,6 +724,7 @@ contains
       end if
     end do
 
+    call blame_frame_or_crank(ctx, dyad(1:nd), frame_no, crank_no, error); if (allocated(error)) return
     allocate (deck%mech%links(0:2 * nd + 1), deck%mech%dyads(nd))
     deck%mech%links(0) = assur_link_t(id=frame_no)
     deck%mech%links(1) = assur_link_t(id=crank_no, m=crank_m, j=crank_j, s=crank_s)
@@ -1673,6 +1763,55 @@ contains
     end if
     if (.not. all(ieee_is_finite(x))) call deck_error(ctx, name, "must be finite numbers", error)
   end subroutine require_pair
+
+  !> A dyad that hangs on a link no one defines, in a deck where no dyad hangs on the crank
+  !> (or on the frame): the mistake is crank_id's (frame_id's), not the dyad's
+  !> (`crank_id = 1000` in a deck whose dyads hang on link 1). Only when exactly one of the
+  !> two carries no dyad; otherwise find_link names the dyad.
+  subroutine blame_frame_or_crank(ctx, dyads, frame_no, crank_no, error)
+    type(deck_context_t), intent(in) :: ctx
+    !> The dyads as read.
+    type(dyad_in_t), intent(in) :: dyads(:)
+    !> frame_id and crank_id.
+    integer, intent(in) :: frame_no, crank_no
+    type(error_t), allocatable, intent(out) :: error
+    integer, allocatable :: defined(:)
+    integer :: d, q, id, unknown
+    real(wp) :: on(2)
+    character(len=:), allocatable :: culprit
+    logical :: frame_used, crank_used
+    defined = [frame_no, crank_no]
+    do d = 1, size(dyads)
+      if (.not. (is_whole_in(dyads(d)%link2, 0, huge(1)) .and. is_whole_in(dyads(d)%link3, 0, huge(1)))) return
+      defined = [defined, nint(dyads(d)%link2), nint(dyads(d)%link3)]
+    end do
+    frame_used = .false.
+    crank_used = .false.
+    unknown = -1
+    do d = 1, size(dyads)
+      on = [dyads(d)%on2, dyads(d)%on3]
+      do q = 1, 2
+        if (.not. is_whole_in(on(q), 0, huge(1))) cycle
+        id = nint(on(q))
+        frame_used = frame_used .or. id == frame_no
+        crank_used = crank_used .or. id == crank_no
+        if (unknown < 0 .and. all(defined /= id)) then
+          unknown = id
+          culprit = "dyad("//int_str(d)//")%on"//int_str(q + 1)
+        end if
+      end do
+    end do
+    if (unknown < 0 .or. (frame_used .eqv. crank_used)) return
+    if (.not. crank_used) then
+      call deck_error(ctx, "crank_id", "no dyad hangs on link "//int_str(crank_no)//" (the crank), and "// &
+        culprit//" names link "//int_str(unknown)//", which no one defines: is the crank link "// &
+        int_str(unknown)//"? (got crank_id = "//int_str(crank_no)//")", error)
+    else
+      call deck_error(ctx, "frame_id", "no dyad hangs on link "//int_str(frame_no)//" (the frame), and "// &
+        culprit//" names link "//int_str(unknown)//", which no one defines: is the frame link "// &
+        int_str(unknown)//"? (got frame_id = "//int_str(frame_no)//")", error)
+    end if
+  end subroutine blame_frame_or_crank
 
   !> The internal index of a link id among `ids(0:)` (frame allowed when `allow_frame`).
   subroutine find_link(ctx, name, id_in, ids, allow_frame, index, error)

@@ -87,6 +87,15 @@ expect_input_error assur-unknown-variable "&assur: dyad\(1\)%foo = 1: unknown va
 expect_input_error assur-wrong-type "&assur: dyad\(1\)%l2 = abc: 'abc' is not a number" "$(deck_with a_type "$sc" 's/dyad(1)%l2 = 0.35/dyad(1)%l2 = abc/')"
 expect_input_error assur-too-many-dyads '&assur: dyad\(17\)%kind = 1: subscript out of range' "$(deck_with a_many "$sc" 's/dyad(1)%mode = 1/dyad(1)%mode = 1, dyad(17)%kind = 1/')"
 expect_input_error assur-kind '&assur: dyad\(1\)%kind: must be 1\.\.5' "$(deck_with a_kind "$sc" 's/dyad(1)%kind = 2/dyad(1)%kind = 7/')"
+# a kind given by a name that is none of the kinds: the names are listed (not "a number is expected")
+expect_input_error assur-kind-name-unknown "^kinetostat: error: [^ ]*:[0-9]+: &assur: dyad\(1\)%kind = 'RRS': unknown kind 'RRS' \(a dyad's kind is RRR, RRP, RPR, PRP or RPP, or its number 1 to 5\)$" "$(deck_with a_rrs "$sc" "s/dyad(1)%kind = 2/dyad(1)%kind = 'RRS'/")"
+expect_input_error assur-kind-word-unknown "&assur: dyad\(1\)%kind = rrx: unknown kind 'rrx' \(a dyad's kind is RRR" "$(deck_with a_rrx "$sc" "s/dyad(1)%kind = 2/dyad(1)%kind = rrx/")"
+run_ks "$sc" --set "dyad(1)%kind='RRS'"
+if [ "$rc" -eq 2 ] && grep -q "^kinetostat: error: --set dyad(1)%kind='RRS': &assur: dyad(1)%kind = 'RRS': unknown kind 'RRS' (a dyad's kind is RRR, RRP, RPR, PRP or RPP" "$err"; then pass
+else fail assur-kind-name-set "exit $rc: $(cat "$err")"; fi
+# a crank_id or frame_id that no dyad hangs on is blamed on crank_id / frame_id, not on the dyad
+expect_input_error assur-crank-id-unused "&assur: crank_id: no dyad hangs on link 1000 \(the crank\), and dyad\(1\)%on2 names link 1, which no one defines: is the crank link 1\?" "$(deck_with a_c1000 "$sc" "s/crank_id = 1 /crank_id = 1000 /")"
+expect_input_error assur-frame-id-unused "&assur: frame_id: no dyad hangs on link 7 \(the frame\), and dyad\(1\)%on3 names link 6, which no one defines" "$(deck_with a_f7 data/assur_pr3207.nml "s/frame_id = 6,/frame_id = 7,/")"
 expect_input_error assur-no-dyad '&assur: dyad: at least one dyad' "$(deck_with a_nod "$sc" 's/dyad(1)%kind = 2, //')"
 expect_input_error assur-dyad-gap '&assur: dyad\(3\): dyads must be numbered' "$(deck_with a_gap "$sc" 's/dyad(1)%mode = 1/dyad(1)%mode = 1, dyad(3)%l2 = 1/')"
 expect_input_error assur-missing-l2 '&assur: dyad\(1\)%l2: missing' "$(deck_with a_l2 "$sc" 's/dyad(1)%l2 = 0.35, //')"
