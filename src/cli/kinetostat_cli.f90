@@ -43,7 +43,7 @@ module kinetostat_cli
     "[--max-deck-size BYTES] [--allow-selfcheck-failure] [--quiet] " // &
     "[--strict] | " // &
     "kinetostat sweep DECK --vary NAME=FROM:TO:COUNT... [--part K/N] [--jobs N] | " // &
-    "kinetostat template KIND [-o FILE] | kinetostat diff A B [--rtol R] [--atol A] | " // &
+    "kinetostat template KIND [-o FILE] | kinetostat diff A B [--rtol R] [--atol A] [--common] | " // &
     "kinetostat balance DECK [-o FILE] [--method full|crank|partial] [--fraction F] [--lang en|ru] | "// &
     "kinetostat structure DECK [--lang ru] | --help | --version"
 
@@ -60,7 +60,7 @@ module kinetostat_cli
     "                  [-o FILE] [--quiet] [--strict]", &
     "  kinetostat template KIND [-o FILE]   a commented deck to start from (KIND: a mechanism,", &
     "                                       or a preset of the generic engine)", &
-    "  kinetostat diff A B [--rtol R] [--atol A] [--quiet]   compare two outputs", &
+    "  kinetostat diff A B [--rtol R] [--atol A] [--common] [--quiet]   compare two outputs", &
     "  kinetostat balance DECK [-o FILE] [--method full|crank|partial] [--fraction F]", &
     "                  an &assur deck with counterweights added (docs/shaking.md); before/", &
     "                  after figures on stderr; --fraction: partial, default 0.5; --lang ru:", &
@@ -118,13 +118,15 @@ module kinetostat_cli
     "  --atol per unit: 1e-6 N, N*m, deg and mm, 1e-9 m and everything else.", &
     "  Prints the first differences ('step 2, column F16: 2741.19 vs 2741.25 (rel 2.2e-05)')", &
     "  and exits 0 same, 1 different, 2 unreadable or not the same mechanism/columns.", &
+    "  CSV columns are matched by name in any order; a column on one side only is listed and", &
+    "  is a difference (exit 1); --common compares the shared columns only.", &
     "", &
     "Exit codes: 0 ok, 1 usage, 2 input or output error, 3 geometry error, a result that", &
     "is not finite or a failed self-check (the step is named), 4 warnings with --strict", &
     "(output written)."]
 
   !> Usage of the diff subcommand (its errors exit 2: exit 1 means "different").
-  character(*), parameter :: diff_usage = "usage: kinetostat diff A B [--rtol R] [--atol A] [--quiet]"
+  character(*), parameter :: diff_usage = "usage: kinetostat diff A B [--rtol R] [--atol A] [--common] [--quiet]"
 
   !> Parsed command line.
   type :: cli_args_t
@@ -983,7 +985,7 @@ contains
     end function two
   end function run_stamp
 
-  !> The arguments of `kinetostat diff A B [--rtol R] [--atol A] [--quiet]` (errors: exit 2).
+  !> The arguments of `kinetostat diff A B [--rtol R] [--atol A] [--common] [--quiet]` (errors: exit 2).
   subroutine parse_diff_args(args, error)
     type(cli_args_t), intent(inout) :: args
     type(error_t), allocatable, intent(out) :: error
@@ -1006,6 +1008,8 @@ contains
         args%help = .true.
       case ("-q", "--quiet")
         args%quiet = .true.
+      case ("--common")
+        args%diff_options%common = .true.
       case ("--rtol", "--atol")
         read (value, *, iostat=ios) x
         if (ios /= 0 .or. .not. (x >= 0.0_wp .and. x < huge(x))) then

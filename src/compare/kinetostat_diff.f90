@@ -53,6 +53,9 @@ module kinetostat_diff
     real(wp) :: atol = -1.0_wp
     !> Differences reported one by one (the rest are counted).
     integer :: max_report = 10
+    !> CSV files: compare the columns both have (a column on one side only is left out
+    !> instead of being a difference).
+    logical :: common = .false.
   end type diff_options_t
 
   !> One word of a line and the character (not byte) position of its last character.
@@ -182,6 +185,8 @@ contains
     !> Unreadable or not comparable (code exit_input).
     type(error_t), allocatable, intent(out) :: error
     type(output_t) :: a, b
+    character(len=:), allocatable :: left_out
+    logical :: columns_differ
     status = diff_different
     call parse_output(path_a, lines_a, catalog, a, error)
     if (allocated(error)) return
@@ -189,8 +194,138 @@ contains
     if (allocated(error)) return
     call check_comparable(a, b, error)
     if (allocated(error)) return
-    call compare(a, b, options, report, status)
+    left_out = ""
+    columns_differ = .false.
+    if (a%form == form_csv) then
+      call match_columns(a, b, options%common, report, left_out, columns_differ, error)
+      if (allocated(error)) return
+    end if
+    call compare(a, b, options, report, status, left_out, columns_differ)
   end subroutine diff_outputs
+
+  !> Two CSV files' columns matched by name, in any order: both keep only the columns they
+  !> share, in A's order. A column on one side only is listed in the report and makes the
+  !> files differ (`columns_differ`), or with `common` is left out (`left_out` says so in
+  !> the summary). No column in common is an error.
+  pure subroutine match_columns(a, b, common, report, left_out, columns_differ, error)
+    type(output_t), intent(inout) :: a, b
+    logical, intent(in) :: common
+    type(text_buffer_t), intent(inout) :: report
+    !> "; K columns only in A and M only in B not compared" (with `common`), or "".
+    character(len=:), allocatable, intent(out) :: left_out
+    logical, intent(out) :: columns_differ
+    type(error_t), allocatable, intent(out) :: error
+    type(word_t), allocatable :: names_a(:), names_b(:)
+    character(len=:), allocatable :: only_a, only_b, shared
+    integer :: i, count_a, count_b, count_shared
+    call split_csv(a%columns, names_a)
+    call split_csv(b%columns, names_b)
+    only_a = ""
+    only_b = ""
+    shared = ""
+    count_a = 0
+    count_b = 0
+    count_shared = 0
+    do i = 1, size(names_a)
+      if (column_at(names_b, names_a(i)%s) > 0) then
+        call add(shared, names_a(i)%s, ",")
+        count_shared = count_shared + 1
+      else
+        call add(only_a, names_a(i)%s, ", ")
+        count_a = count_a + 1
+      end if
+    end do
+    do i = 1, size(names_b)
+      if (column_at(names_a, names_b(i)%s) == 0) then
+        call add(only_b, names_b(i)%s, ", ")
+        count_b = count_b + 1
+      end if
+    end do
+    left_out = ""
+    columns_differ = .false.
+    if (count_shared == 0) then
+      call fatal_error(error, exit_input, "no column in common: "//a%path//": "//clipped(a%columns, 100)//"; "// &
+        b%path//": "//clipped(b%columns, 100))
+      return
+    end if
+    if (count_a + count_b == 0) then
+      if (a%columns == b%columns) return
+    else if (common) then
+      if (count_a > 0) left_out = int_str(count_a)//" "//columns_word(count_a)//" only in "//a%path
+      if (count_a > 0 .and. count_b > 0) left_out = left_out//" and "
+      if (count_b > 0) left_out = left_out//int_str(count_b)//" "//columns_word(count_b)//" only in "//b%path
+      left_out = "; "//left_out//" not compared"
+    else
+      if (count_a > 0) call report%put("columns only in "//a%path//": "//only_a)
+      if (count_b > 0) call report%put("columns only in "//b%path//": "//only_b)
+      columns_differ = .true.
+    end if
+    call keep_columns(a, shared)
+    call keep_columns(b, shared)
+  contains
+    pure subroutine add(list, name, separator)
+      character(len=:), allocatable, intent(inout) :: list
+      character(*), intent(in) :: name, separator
+      if (len(list) > 0) list = list//separator
+      list = list//name
+    end subroutine add
+
+    pure function columns_word(n) result(word)
+      integer, intent(in) :: n
+      character(len=:), allocatable :: word
+      word = "columns"
+      if (n == 1) word = "column"
+    end function columns_word
+  end subroutine match_columns
+
+  !> The position of column `name` among `names` (0: none).
+  pure integer function column_at(names, name)
+    type(word_t), intent(in) :: names(:)
+    character(*), intent(in) :: name
+    integer :: i
+    column_at = 0
+    do i = 1, size(names)
+      if (names(i)%s == name) then
+        column_at = i
+        return
+      end if
+    end do
+  end function column_at
+
+  !> A CSV file's cells reduced to the columns `header` names (comma-separated, each a
+  !> column of the file), in that order; a force angle keeps its magnitude's cell when that
+  !> column is kept.
+  pure subroutine keep_columns(doc, header)
+    type(output_t), intent(inout) :: doc
+    character(*), intent(in) :: header
+    type(word_t), allocatable :: names(:), kept(:)
+    type(cell_t), allocatable :: cells(:)
+    integer, allocatable :: from(:)
+    integer :: nc, nk, r, i, old, partner
+    call split_csv(doc%columns, names)
+    call split_csv(header, kept)
+    nc = size(names)
+    nk = size(kept)
+    allocate (from(nk))
+    do i = 1, nk
+      from(i) = column_at(names, kept(i)%s)
+    end do
+    allocate (cells(doc%steps * nk))
+    do r = 1, doc%steps
+      do i = 1, nk
+        old = (r - 1) * nc + from(i)
+        cells((r - 1) * nk + i) = doc%cells(old)
+        if (doc%cells(old)%magnitude > 0) then
+          partner = findloc(from, doc%cells(old)%magnitude - (r - 1) * nc, dim=1)
+          cells((r - 1) * nk + i)%magnitude = 0
+          if (partner > 0) cells((r - 1) * nk + i)%magnitude = (r - 1) * nk + partner
+        end if
+      end do
+    end do
+    call move_alloc(cells, doc%cells)
+    doc%n = doc%steps * nk
+    doc%columns = header
+  end subroutine keep_columns
 
   !> Same form, language, mechanism and columns, or an error saying which differs.
   pure subroutine check_comparable(a, b, error)
@@ -207,18 +342,22 @@ contains
     else if (a%form == form_table .and. a%identity /= b%identity) then
       call fatal_error(error, exit_input, "not the same mechanism: "//a%path//": '"//a%identity//"', "// &
         b%path//": '"//b%identity//"'")
-    else if (a%columns /= b%columns) then
+    else if (a%form == form_table .and. a%columns /= b%columns) then
       call fatal_error(error, exit_input, "not the same columns: "//a%path//": "//clipped(a%columns, 100)//"; "// &
         b%path//": "//clipped(b%columns, 100))
     end if
   end subroutine check_comparable
 
   !> Walk both outputs in step, compare matched values, report the differences.
-  pure subroutine compare(a, b, options, report, status)
+  pure subroutine compare(a, b, options, report, status, left_out, columns_differ)
     type(output_t), intent(in) :: a, b
     type(diff_options_t), intent(in) :: options
     type(text_buffer_t), intent(inout) :: report
     integer, intent(out) :: status
+    !> "; ... not compared" for the summary line, or "".
+    character(*), intent(in) :: left_out
+    !> Whether the files have other columns (listed already): they differ.
+    logical, intent(in) :: columns_differ
     type(tally_t) :: tally
     integer :: i, j, m
     logical :: found
@@ -251,14 +390,19 @@ contains
     if (tally%differing > tally%max_report) then
       call report%put("... and "//int_str(tally%differing - tally%max_report)//" more")
     end if
-    if (tally%differing == 0) then
+    if (tally%differing == 0 .and. .not. columns_differ) then
       status = diff_same
       call report%put("same: "//int_str(tally%compared)//" values agree ("//tolerance_text(options)// &
+        ignored_text(tally%ignored)//left_out//")")
+    else if (columns_differ) then
+      status = diff_different
+      call report%put("different: other columns (above); "//int_str(tally%differing)//" of "// &
+        int_str(tally%compared)//" values of the shared columns differ ("//tolerance_text(options)// &
         ignored_text(tally%ignored)//")")
     else
       status = diff_different
       call report%put("different: "//int_str(tally%differing)//" of "//int_str(tally%compared)// &
-        " values differ ("//tolerance_text(options)//ignored_text(tally%ignored)//")")
+        " values differ ("//tolerance_text(options)//ignored_text(tally%ignored)//left_out//")")
     end if
   end subroutine compare
 

@@ -106,7 +106,8 @@ expect_diff diff-garbage 2 'not an output of kinetostat' "$dexp/pr3207.csv" "$cl
 expect_diff diff-empty 2 'empty file' "$cli_tmp/empty.txt" "$dexp/pr3207.csv"
 expect_diff diff-missing 2 'no-such.csv: no such file' "$dexp/pr3207.csv" "$cli_tmp/no-such.csv"
 expect_diff diff-other-mechanism-table 2 'not the same mechanism' "$dexp/pr3207.table" "$dexp/sixbar.table"
-expect_diff diff-other-mechanism-csv 2 'not the same columns' "$dexp/pr3207.csv" "$dexp/sixbar.csv"
+# two CSV files share only some columns (phi1, M1): the others are listed, exit 1
+expect_diff diff-other-mechanism-csv 1 '^columns only in data/expected/sixbar.csv: F32, F32G, F43, F43G, F45, F45G$' "$dexp/pr3207.csv" "$dexp/sixbar.csv"
 expect_diff diff-other-assur-columns 2 'not the same columns' "$dexp/assur_pr3207.table" "$dexp/assur_sixbar.table"
 expect_diff diff-table-vs-csv 2 'not comparable \(compare outputs of the same --format\)' "$dexp/pr3207.table" "$dexp/pr3207.csv"
 expect_diff diff-en-vs-ru 2 'same --lang' "$dexp/pr3207.table" "$dexp/pr3207.ru.table"
@@ -118,3 +119,28 @@ expect_diff diff-csv-word 2 "word.csv:3: column phi1: 'abc' is not a number" "$d
 expect_diff diff-one-file 2 'needs two files' "$dexp/pr3207.csv"
 expect_diff diff-bad-rtol 2 'rtol must be a number >= 0' --rtol -1 "$dexp/pr3207.csv" "$dexp/pr3207.csv"
 expect_diff diff-unknown-option 2 "unknown option '--frob'" --frob "$dexp/pr3207.csv" "$dexp/pr3207.csv"
+
+# --- CSV columns are matched by name: another order is the same file; a column on one side
+# only is a difference (exit 1, listed); --common compares the shared columns only
+python3 - "$dexp/assur_fourbar.csv" "$cli_tmp/reordered.csv" <<'PY'
+import csv, sys
+rows = list(csv.reader(open(sys.argv[1])))
+order = list(range(len(rows[0])))[::-1]
+with open(sys.argv[2], "w", newline="") as f:
+    w = csv.writer(f, lineterminator="\n")
+    for r in rows:
+        w.writerow([r[i] for i in order])
+PY
+expect_diff diff-csv-reordered 0 '^same: [0-9]+ values agree' "$dexp/assur_fourbar.csv" "$cli_tmp/reordered.csv"
+sed '4s/^\([^,]*\),[^,]*/\1,9.99E+02/' "$cli_tmp/reordered.csv" >"$cli_tmp/reordered_changed.csv"
+expect_diff diff-csv-reordered-changed 1 '^step 3, column ' "$dexp/assur_fourbar.csv" "$cli_tmp/reordered_changed.csv"
+run_ks data/assur_fourbar.nml --format csv --shaking; cp "$out" "$cli_tmp/fourbar_shaking.csv"
+expect_diff diff-csv-extra-columns 1 '^columns only in .*fourbar_shaking.csv: F_shake, F_shakeG, F_shake_x, F_shake_y, M_shake, F_frame_x, F_frame_y, M_frame$' \
+  "$dexp/assur_fourbar.csv" "$cli_tmp/fourbar_shaking.csv"
+expect_diff diff-csv-missing-columns 1 '^columns only in .*fourbar_shaking.csv: F_shake' "$cli_tmp/fourbar_shaking.csv" "$dexp/assur_fourbar.csv"
+expect_diff diff-csv-common 0 '^same: [0-9]+ values agree .*8 columns only in .*fourbar_shaking.csv not compared' \
+  --common "$dexp/assur_fourbar.csv" "$cli_tmp/fourbar_shaking.csv"
+sed '3s/^\([^,]*\),[^,]*/\1,1.5E+02/' "$cli_tmp/fourbar_shaking.csv" >"$cli_tmp/fourbar_shaking_changed.csv"
+expect_diff diff-csv-common-differs 1 '^step 2, column ' --common "$dexp/assur_fourbar.csv" "$cli_tmp/fourbar_shaking_changed.csv"
+printf 'a_col,b_col\n1,2\n' >"$cli_tmp/nothing_shared.csv"
+expect_diff diff-csv-nothing-shared 2 'no column in common' "$dexp/assur_fourbar.csv" "$cli_tmp/nothing_shared.csv"
