@@ -19,7 +19,7 @@ _kinetostat() {
   case "${COMP_WORDS[1]}" in
     diff)
       if [[ "$cur" == -* ]]; then
-        COMPREPLY=($(compgen -W "--rtol --atol --quiet --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--rtol --atol --common --quiet --help" -- "$cur"))
       else
         COMPREPLY=($(compgen -f -X '!*.@(table|csv|txt|out)' -- "$cur") $(compgen -d -- "$cur"))
       fi
@@ -28,7 +28,7 @@ _kinetostat() {
       COMPREPLY=($(compgen -W "-o --output" -- "$cur")); return ;;
     sweep)
       if [[ "$cur" == -* ]]; then
-        COMPREPLY=($(compgen -W "--vary --set --part --jobs -o --output --max-deck-size --allow-selfcheck-failure --quiet --strict --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--vary --set --part --jobs --keep-going -o --output --max-deck-size --allow-selfcheck-failure --quiet --strict --help" -- "$cur"))
       else
         COMPREPLY=($(compgen -f -X '!*.nml' -- "$cur") $(compgen -d -- "$cur"))
       fi

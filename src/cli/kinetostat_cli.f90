@@ -8,7 +8,9 @@ module kinetostat_cli
   use kinetostat_deck_repeats, only: deck_repeats
   use kinetostat_deck, only: deck_source_t, load_deck, read_group_name, set_max_deck_size
   use kinetostat_override, only: first_override_line, override_t, parse_override, apply_overrides
-  use kinetostat_sweep, only: vary_t, parse_vary, run_sweep, variant_result_t, allow_selfcheck_failure_in_sweep
+  use kinetostat_sweep, only: vary_t, parse_vary, run_sweep, variant_result_t, allow_selfcheck_failure_in_sweep, &
+    sweep_header
+  use kinetostat_summary, only: override_fields, csv_text
   use kinetostat_posix, only: stderr_is_terminal, cpu_count, guard_signals
   use kinetostat_text, only: int_str, printable
   use kinetostat_run, only: format_summary
@@ -42,7 +44,7 @@ module kinetostat_cli
     "[--kinematics] [--frame global|link] [--shaking] [--student NAME] [--group G] [--variant N] " // &
     "[--max-deck-size BYTES] [--allow-selfcheck-failure] [--quiet] " // &
     "[--strict] | " // &
-    "kinetostat sweep DECK --vary NAME=FROM:TO:COUNT... [--part K/N] [--jobs N] | " // &
+    "kinetostat sweep DECK --vary NAME=FROM:TO:COUNT... [--part K/N] [--jobs N] [--keep-going] | " // &
     "kinetostat template KIND [-o FILE] | kinetostat diff A B [--rtol R] [--atol A] [--common] | " // &
     "kinetostat balance DECK [-o FILE] [--method full|crank|partial] [--fraction F] [--lang en|ru] | "// &
     "kinetostat structure DECK [--lang ru] | --help | --version"
@@ -56,7 +58,7 @@ module kinetostat_cli
     "                  [--plans] [--lang en|ru] [--kinematics] [--shaking]", &
     "                  [--max-deck-size BYTES] [--allow-selfcheck-failure] [--quiet] [--strict]", &
     "  kinetostat sweep DECK --vary NAME=FROM:TO:COUNT... [--set NAME=VALUE]... [--part K/N]", &
-    "                  [--jobs N]", &
+    "                  [--jobs N] [--keep-going]", &
     "                  [-o FILE] [--quiet] [--strict]", &
     "  kinetostat template KIND [-o FILE]   a commented deck to start from (KIND: a mechanism,", &
     "                                       or a preset of the generic engine)", &
@@ -99,7 +101,9 @@ module kinetostat_cli
     "sweep       one summary row per variant of the grid of every --vary (COUNT values", &
     "            from FROM to TO), the first --vary slowest; --part K/N runs block K of N", &
     "            (the parts' outputs concatenated in order are the whole sweep's); --jobs N", &
-    "            runs its variants in N processes (default: one per processor), same bytes", &
+    "            runs its variants in N processes (default: one per processor), same bytes;", &
+    "            --keep-going writes every variant, a failed one with its message in the", &
+    "            last column error, and exits 2 when any failed", &
     "--max-deck-size BYTES  the largest deck read (default 268435456, 256 MiB); a longer", &
     "            file, or endless input such as /dev/zero, is an input error", &
     "--allow-selfcheck-failure  a self-check above its limit is a warning and the output is", &
@@ -137,6 +141,9 @@ module kinetostat_cli
     logical :: quiet = .false.
     !> --strict: a run that warned exits with exit_warning (its output is still written).
     logical :: strict = .false.
+    !> sweep --keep-going: a failing variant gets a row with its error instead of failing the
+    !> sweep.
+    logical :: keep_going = .false.
     !> The sweep subcommand was given.
     logical :: sweep = .false.
     !> The structure subcommand was given (`kinetostat structure DECK`).
@@ -190,12 +197,13 @@ contains
     type(step_table_t) :: table
     type(text_buffer_t) :: out
     type(spool_t) :: spool
-    integer :: warnings
+    integer :: warnings, failed_variants
     logical :: ran, committed
 
     ran = .false.
     committed = .false.
     warnings = 0
+    failed_variants = 0
     call guard_signals()
     call serial_unless_asked()
     call parse_args(args, error)
@@ -214,7 +222,7 @@ contains
       else if (allocated(args%template_kind)) then
         call write_template(args%template_kind, out, error)
       else if (args%sweep) then
-        call sweep_deck(args, out, warnings, error)
+        call sweep_deck(args, out, warnings, failed_variants, error)
       else if (args%structure) then
         call structure_of_deck(args, out, error)
       else if (args%balance) then
@@ -245,6 +253,8 @@ contains
       write (error_unit, '(a)') "kinetostat: error: "//printable(error%message)
       if (error%code == exit_usage) write (error_unit, '(a)') usage_line
       exit_code = error%code
+    else if (failed_variants > 0) then
+      exit_code = exit_input
     else if (args%strict .and. warnings > 0) then
       exit_code = exit_warning
     else
@@ -534,19 +544,25 @@ contains
 
   !> `kinetostat sweep`: the summary CSV of every variant (one header, one row each, in
   !> grid order); warnings one line each, prefixed with the variant's overrides. The first
-  !> variant (in grid order) that fails fails the sweep, naming the variant.
-  subroutine sweep_deck(args, out, warnings, error)
+  !> variant (in grid order) that fails fails the sweep, naming the variant; with
+  !> --keep-going every variant gets its row, a failed one its override values, empty figures
+  !> and its error in the last column `error` (empty on good rows), the error on stderr too,
+  !> and `failed` counts them (exit 2 after the output is written).
+  subroutine sweep_deck(args, out, warnings, failed, error)
     type(cli_args_t), intent(in) :: args
     type(text_buffer_t), intent(inout) :: out
     !> Number of warnings over all variants.
     integer, intent(out) :: warnings
+    !> Number of variants that failed (--keep-going).
+    integer, intent(out) :: failed
     type(error_t), allocatable, intent(out) :: error
     type(deck_source_t) :: source
     type(override_t), allocatable :: sets(:)
     type(variant_result_t), allocatable :: results(:)
-    integer :: v, i, start, first, jobs
-    character(len=:), allocatable :: name, prefix
+    integer :: v, i, start, first, jobs, fields
+    character(len=:), allocatable :: name, prefix, header, message
     warnings = 0
+    failed = 0
     jobs = args%jobs
     if (jobs == 0) jobs = cpu_count()
     call load_deck(args%deck, source, error)
@@ -560,25 +576,49 @@ contains
     call run_sweep(source, sets, args%varies, args%part, args%parts, jobs, &
       stderr_is_terminal() .and. .not. args%quiet, first, results, error, args%options%shaking)
     if (allocated(error)) return
+    if (size(results) == 0) return
+    call sweep_header(source, sets, args%varies, first, results, args%options%shaking, header)
+    if (len(header) == 0) header = override_fields(override_texts(results(1)), 1)
+    ! a header of override names only (no variant ran): no comma after the last
+    if (len(header) > 0) then
+      if (header(len(header):len(header)) == ",") header = header(:len(header) - 1)
+    end if
+    fields = csv_field_count(header)
     do v = 1, size(results)
       name = variant_name(results(v))
-      if (allocated(results(v)%error)) then
+      if (.not. allocated(results(v)%error)) then
+        if (results(v)%header /= header) call fatal_error(results(v)%error, exit_input, source%path// &
+          ": its summary has other columns than the sweep's header (the first variant of the grid that runs)")
+      end if
+      if (.not. allocated(results(v)%error)) cycle
+      message = results(v)%error%message//" (sweep variant "//int_str(first + v - 1)//": "//name//")"
+      if (.not. args%keep_going) then
         call move_alloc(results(v)%error, error)
-        error%message = error%message//" (sweep variant "//int_str(first + v - 1)//": "//name//")"
+        error%message = message
         return
       end if
-      if (results(v)%header /= results(1)%header) then
-        call fatal_error(error, exit_input, source%path//": sweep variant "//int_str(first + v - 1)//" ("//name// &
-          ") has other summary columns than variant "//int_str(first))
-        return
-      end if
+      failed = failed + 1
+      write (error_unit, '(a)') "kinetostat: error: "//printable(message)
+      results(v)%row = override_fields(override_texts(results(v)), 2)
+      results(v)%row = results(v)%row//repeat(",", max(0, fields - csv_field_count(results(v)%row) + 1))
+      results(v)%row = results(v)%row//csv_text(printable(results(v)%error%message))
+      results(v)%warning_count = 0
     end do
-    if (size(results) == 0) return
-    if (args%part == 1) call out%put(results(1)%header)
+    if (args%part == 1) then
+      if (args%keep_going) then
+        call out%put(header//",error")
+      else
+        call out%put(header)
+      end if
+    end if
     do v = 1, size(results)
-      call out%put(results(v)%row)
+      if (args%keep_going .and. .not. allocated(results(v)%error)) then
+        call out%put(results(v)%row//",")
+      else
+        call out%put(results(v)%row)
+      end if
       warnings = warnings + results(v)%warning_count
-      if (args%quiet .or. results(v)%warnings%length == 0) cycle
+      if (args%quiet .or. results(v)%warnings%length == 0 .or. allocated(results(v)%error)) cycle
       prefix = "kinetostat: warning: "//source%path//" ("//variant_name(results(v))//"): "
       start = 1
       do i = 1, results(v)%warnings%length
@@ -598,6 +638,36 @@ contains
         text = text//r%overrides(k)%name//"="//r%overrides(k)%value
       end do
     end function variant_name
+
+    !> The variant's overrides as "NAME=VALUE" texts (the summary's form).
+    function override_texts(r) result(texts)
+      type(variant_result_t), intent(in) :: r
+      character(len=:), allocatable :: texts(:)
+      integer :: k, longest
+      longest = 1
+      do k = 1, size(r%overrides)
+        longest = max(longest, len(r%overrides(k)%name) + 1 + len(r%overrides(k)%value))
+      end do
+      allocate (character(len=longest) :: texts(size(r%overrides)))
+      do k = 1, size(r%overrides)
+        texts(k) = r%overrides(k)%name//"="//r%overrides(k)%value
+      end do
+    end function override_texts
+
+    !> The number of fields of a CSV line (commas outside double quotes, plus one; 0 for "").
+    pure integer function csv_field_count(line) result(n)
+      character(*), intent(in) :: line
+      integer :: k
+      logical :: quoted
+      n = 0
+      if (len(line) == 0) return
+      n = 1
+      quoted = .false.
+      do k = 1, len(line)
+        if (line(k:k) == '"') quoted = .not. quoted
+        if (line(k:k) == "," .and. .not. quoted) n = n + 1
+      end do
+    end function csv_field_count
   end subroutine sweep_deck
 
   !> Append the override "NAME=VALUE" of a --set.
@@ -795,6 +865,8 @@ contains
         args%quiet = .true.
       case ("--strict")
         args%strict = .true.
+      case ("--keep-going")
+        args%keep_going = .true.
       case ("--allow-selfcheck-failure")
         args%options%allow_selfcheck_failure = .true.
       case ("--kinematics")
@@ -935,8 +1007,9 @@ contains
       call fatal_error(error, exit_usage, "structure takes a deck, --lang and -o only")
     else if (args%sweep .and. .not. allocated(args%varies)) then
       call fatal_error(error, exit_usage, "sweep needs at least one --vary NAME=FROM:TO:COUNT")
-    else if (.not. args%sweep .and. (allocated(args%varies) .or. args%parts > 1 .or. args%jobs > 0)) then
-      call fatal_error(error, exit_usage, "--vary, --part and --jobs belong to the sweep subcommand: "// &
+    else if (.not. args%sweep .and. (allocated(args%varies) .or. args%parts > 1 .or. args%jobs > 0 .or. &
+             args%keep_going)) then
+      call fatal_error(error, exit_usage, "--vary, --part, --jobs and --keep-going belong to the sweep subcommand: "// &
         "kinetostat sweep DECK --vary ...")
     else if (args%balance .and. (args%format_given .or. args%options%shaking .or. args%options%kinematics .or. &
              allocated(args%options%overrides))) then

@@ -25,6 +25,7 @@ module kinetostat_sweep
   implicit none
   private
   public :: vary_t, parse_vary, run_sweep, variant_result_t, variant_count, allow_selfcheck_failure_in_sweep
+  public :: sweep_header
 
   !> --allow-selfcheck-failure of the sweep: a variant whose self-check fails warns (else
   !> it fails the sweep, exit 3). Set with allow_selfcheck_failure_in_sweep.
@@ -435,20 +436,69 @@ contains
     sweep_allows_selfcheck_failure = allowed
   end subroutine allow_selfcheck_failure_in_sweep
 
+  !> The sweep's summary header: that of the first variant of the grid that runs, the same in
+  !> every --part (a variant outside this part's `results` is run here to find it), so that
+  !> it does not depend on which of this part's variants succeed; when no variant of the grid
+  !> runs, the header of the deck with the --set overrides only, under the variants' column
+  !> names; "" when that fails too.
+  subroutine sweep_header(source, sets, varies, first, results, shaking, header)
+    type(deck_source_t), intent(in) :: source
+    type(override_t), intent(in) :: sets(:)
+    type(vary_t), intent(in) :: varies(:)
+    !> Grid number of results(1).
+    integer, intent(in) :: first
+    !> This part's results.
+    type(variant_result_t), intent(in) :: results(:)
+    !> Whether the variants add the shaking columns.
+    logical, intent(in) :: shaking
+    character(len=:), allocatable, intent(out) :: header
+    type(variant_result_t) :: probe
+    type(error_t), allocatable :: error
+    character(len=:), allocatable :: group
+    integer :: v
+    header = ""
+    call read_group_name(source, group, error)
+    if (allocated(error)) return
+    do v = 1, variant_count(varies)
+      if (v >= first .and. v < first + size(results)) then
+        if (allocated(results(v - first + 1)%error)) cycle
+        header = results(v - first + 1)%header
+        return
+      end if
+      probe = variant_result_t()
+      probe%overrides = variant_overrides(sets, varies, v)
+      call run_variant(source, group, probe, shaking)
+      if (allocated(probe%error)) cycle
+      header = probe%header
+      return
+    end do
+    probe = variant_result_t()
+    probe%overrides = variant_overrides(sets, varies, 1)
+    call run_variant(source, group, probe, shaking, sets)
+    if (.not. allocated(probe%error)) header = probe%header
+  end subroutine sweep_header
+
   !> One variant: the deck with its overrides through the one run pipeline.
-  subroutine run_variant(source, group, result, shaking)
+  subroutine run_variant(source, group, result, shaking, deck_overrides)
     type(deck_source_t), intent(in) :: source
     character(*), intent(in) :: group
     type(variant_result_t), intent(inout) :: result
     !> Whether to add the shaking columns (--shaking).
     logical, intent(in) :: shaking
+    !> The overrides written into the deck, when not all of result%overrides (which still
+    !> name the summary's columns).
+    type(override_t), intent(in), optional :: deck_overrides(:)
     type(deck_source_t) :: patched
     class(mechanism_t), allocatable :: mech
     type(run_options_t) :: options
     type(step_table_t) :: table
     type(text_buffer_t) :: out
     integer :: i
-    call apply_overrides(source, result%overrides, patched)
+    if (present(deck_overrides)) then
+      call apply_overrides(source, deck_overrides, patched)
+    else
+      call apply_overrides(source, result%overrides, patched)
+    end if
     call create_mechanism(group, mech)
     options%format = format_summary
     options%shaking = shaking

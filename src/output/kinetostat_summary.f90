@@ -12,7 +12,11 @@ module kinetostat_summary
   implicit none
   private
   public :: column_stats_t, column_stats, summarized, drive_work, coarse_step_warning, tally_rows
-  public :: summary_header, summary_row, coarse_step_limit
+  public :: summary_header, summary_row, coarse_step_limit, dynamics_prefix, override_fields, csv_text
+
+  !> Prefix of the dynamics figures' columns in a summary (dyn_delta, dyn_M_d): their names
+  !> are also deck variables (delta, a --vary column) and column summaries (J_red_max).
+  character(*), parameter :: dynamics_prefix = "dyn_"
 
   !> Values closer than this, relative to the column's largest magnitude, are a tie.
   real(wp), parameter :: tie_rel = 1.0e-12_wp
@@ -378,7 +382,7 @@ contains
     if (known) line = line//",work_"//table%driver
     if (allocated(table%dynamics)) then
       do i = 1, size(table%dynamics)
-        line = line//","//table%dynamics(i)%name
+        line = line//","//dynamics_prefix//table%dynamics(i)%name
       end do
     end if
   end function summary_header
@@ -436,13 +440,56 @@ contains
     !> 1: names, 2: values.
     integer, intent(in) :: part
     character(len=:), allocatable :: line
-    integer :: i
     line = ""
     if (.not. allocated(table%overrides)) return
-    do i = 1, size(table%overrides)
-      line = line//csv_text(override_part(table%overrides(i), part))//","
-    end do
+    line = override_fields(table%overrides, part)
   end function override_cells
+
+  !> The summary's cells of overrides "NAME=VALUE" (as given; blank padding dropped), each
+  !> followed by a comma: the names (part 1) or the values (part 2). A variable set again by
+  !> a later override has one column, the later one's (it wins in the deck too).
+  pure function override_fields(overrides, part) result(line)
+    !> The overrides, in command-line order.
+    character(*), intent(in) :: overrides(:)
+    !> 1: names, 2: values.
+    integer, intent(in) :: part
+    character(len=:), allocatable :: line
+    integer :: i
+    line = ""
+    do i = 1, size(overrides)
+      if (given_later(i)) cycle
+      line = line//csv_text(override_part(overrides(i), part))//","
+    end do
+  contains
+    !> Whether a later override sets the same variable (it wins, and names the column).
+    pure logical function given_later(i)
+      integer, intent(in) :: i
+      integer :: j
+      given_later = .false.
+      do j = i + 1, size(overrides)
+        if (same_name(override_part(overrides(i), 1), override_part(overrides(j), 1))) then
+          given_later = .true.
+          return
+        end if
+      end do
+    end function given_later
+
+    !> Namelist designators compared as the READ does: case and blanks do not count.
+    pure logical function same_name(a, b)
+      character(*), intent(in) :: a, b
+      same_name = squeezed(lower(a)) == squeezed(lower(b))
+    end function same_name
+
+    pure function squeezed(text) result(t)
+      character(*), intent(in) :: text
+      character(len=:), allocatable :: t
+      integer :: k
+      t = ""
+      do k = 1, len(text)
+        if (text(k:k) /= " ") t = t//text(k:k)
+      end do
+    end function squeezed
+  end function override_fields
 
   !> Part 1 (the name) or 2 (the value) of "NAME=VALUE" (blank padding dropped).
   pure function override_part(text, part) result(t)

@@ -93,7 +93,7 @@ import csv, json, sys
 h, v = list(csv.reader(open(sys.argv[1])))
 d = json.load(open(sys.argv[2]))["dynamics"]
 for k in ["M_d", "J_flywheel", "J_flywheel_textbook", "omega_max", "omega_min", "delta", "F16_peak_difference"]:
-    assert abs(float(v[h.index(k)]) - d[k]) <= 1e-12 * abs(d[k]), k
+    assert abs(float(v[h.index("dyn_" + k)]) - d[k]) <= 1e-12 * abs(d[k]), k
 PY
 then pass; else fail dynamics-summary "--format summary lacks the dynamics figures: $(head -c 300 "$out")"; fi
 

@@ -204,3 +204,81 @@ for args in "--vary l_ab=0.08:0.14:7 --vary m5=50:70:3" "--vary l_ab=0.05:0.5:6"
 done
 expect_exit sweep-jobs-bad 1 sweep data/pr3207.nml --vary l_ab=0.1:0.12:2 --jobs 0
 expect_exit sweep-jobs-not-sweep 1 data/pr3207.nml --jobs 2
+
+# --- summary and sweep headers: every name once; the --vary/--set columns keep their names
+# and the dynamics figures carry the prefix dyn_ (a sweep of delta had delta, J_red_max and
+# J_red_min twice)
+run_ks sweep data/pr3207_flywheel.nml --vary delta=0.03:0.05:2 --set j_rotor=0.6 --set j_rotor=0.7 --quiet
+cp "$out" "$cli_tmp/sweep_delta.csv"
+if [ "$rc" -eq 0 ] && python3 - "$cli_tmp/sweep_delta.csv" <<'PY'
+import csv, sys
+rows = list(csv.reader(open(sys.argv[1])))
+h = rows[0]
+dup = sorted({n for n in h if h.count(n) > 1})
+assert not dup, f"names twice: {dup}"
+assert h[:2] == ["j_rotor", "delta"], h[:3]
+for n in ["dyn_M_d", "dyn_J_flywheel", "dyn_delta", "dyn_delta_asked", "dyn_J_red_max", "J_red_max", "delta"]:
+    assert n in h, n
+r = dict(zip(h, rows[1]))
+assert r["j_rotor"] == "0.7" and r["delta"] == "0.03" and abs(float(r["dyn_delta"]) - 0.03) < 1e-9, r
+PY
+then pass; else fail sweep-header-unique "exit $rc: $(head -1 "$cli_tmp/sweep_delta.csv" | head -c 300)"; fi
+# every bundled deck's --format summary (with --kinematics, and --shaking where a linkage)
+bad=""
+for deck in data/*.nml; do
+  case "$deck" in data/assur_toggle.nml) continue ;; esac
+  for opts in "" "--kinematics" "--shaking --kinematics"; do
+    # shellcheck disable=SC2086
+    "$KINETOSTAT" "$deck" --format summary --quiet $opts >"$cli_tmp/hdr.csv" 2>/dev/null || continue
+    d=$(head -1 "$cli_tmp/hdr.csv" | tr ',' '\n' | sort | uniq -d | head -3 | tr '\n' ' ')
+    [ -n "$d" ] && bad="$bad $deck $opts: $d;"
+  done
+done
+[ -z "$bad" ] && pass || fail summary-header-unique "names twice:$bad"
+
+# --- sweep --keep-going: every variant written, an error column last (empty on good rows),
+# exit 2 when any failed; the header does not depend on a variant succeeding, and --part
+# parts agree (concatenated, the whole sweep, byte for byte)
+run_ks sweep data/pr3207.nml --vary l_ab=0.3:0.5:3 --vary m5=50:60:2 --keep-going --quiet
+cp "$out" "$cli_tmp/keep.csv"
+if [ "$rc" -eq 2 ] && python3 - "$cli_tmp/keep.csv" "$err" <<'PY'
+import csv, sys
+rows = list(csv.reader(open(sys.argv[1])))
+h = rows[0]
+assert h[-1] == "error" and h[:2] == ["l_ab", "m5"], h
+assert len(rows) == 7 and all(len(r) == len(h) for r in rows), [len(r) for r in rows]
+good = [r for r in rows[1:] if r[-1] == ""]
+failed = [r for r in rows[1:] if r[-1] != ""]
+assert [r[:2] for r in good] == [["0.3", "50"], ["0.3", "60"]], good
+assert all(r[0] in ("0.4", "0.5") for r in failed) and len(failed) == 4, failed
+assert all("l_ab" in r[-1] for r in failed), failed
+assert all(all(v == "" for v in r[2:-1]) for r in failed), "a failed variant has figures"
+assert all(all(v != "" for v in r[2:-1]) for r in good), "a good variant has empty figures"
+err = open(sys.argv[2]).read().splitlines()
+assert len(err) == 4 and all(l.startswith("kinetostat: error: ") and "(sweep variant " in l for l in err), err
+PY
+then pass; else fail sweep-keep-going "exit $rc: $(head -3 "$cli_tmp/keep.csv" | cut -c1-200) / $(head -c 300 "$err")"; fi
+# the same figures as a sweep without --keep-going, where that one succeeds
+run_ks sweep data/pr3207.nml --vary l_ab=0.3:0.3:1 --vary m5=50:60:2 --quiet
+if cmp -s <(cut -d, -f1-$(($(head -1 "$out" | tr ',' '\n' | wc -l))) "$cli_tmp/keep.csv" | head -3) "$out"; then pass
+else fail sweep-keep-going-rows "the good rows differ from the plain sweep's"; fi
+# every variant fails (the first too): the header is still the full one
+run_ks sweep data/pr3207.nml --vary l_ab=0.3:0.3:1 --keep-going --quiet; head -1 "$out" >"$cli_tmp/keep_header"
+run_ks sweep data/pr3207.nml --vary l_ab=0.4:0.5:2 --keep-going --quiet
+if [ "$rc" -eq 2 ] && [ "$(head -1 "$out")" = "$(cat "$cli_tmp/keep_header")" ] && [ "$(wc -l <"$out")" -eq 3 ] && \
+   grep -q ',error$' "$cli_tmp/keep_header"; then pass
+else fail sweep-keep-going-all-fail "exit $rc, header: $(head -1 "$out" | cut -c1-200)"; fi
+# --part: every part the same header (part 1 writes it), the parts concatenated are the sweep,
+# also when part 1's variants all fail
+for n in 2 3; do
+  for k in $(seq 1 $n); do
+    "$KINETOSTAT" sweep data/pr3207.nml --vary l_ab=0.5:0.3:3 --vary m5=50:60:2 --keep-going --quiet --part "$k/$n" \
+      -o "$cli_tmp/kpart$k.csv" 2>/dev/null
+  done
+  run_ks sweep data/pr3207.nml --vary l_ab=0.5:0.3:3 --vary m5=50:60:2 --keep-going --quiet
+  if cat $(seq -f "$cli_tmp/kpart%g.csv" 1 $n) | cmp -s - "$out" && head -1 "$cli_tmp/kpart1.csv" | grep -q ',error$'; then pass
+  else fail "sweep-keep-going-parts-$n" "the $n parts do not make the sweep: $(cat $(seq -f "$cli_tmp/kpart%g.csv" 1 $n) | cut -c1-60)"; fi
+done
+# --jobs: the children's rows, the same bytes
+run_ks sweep data/pr3207.nml --vary l_ab=0.3:0.5:3 --vary m5=50:60:2 --keep-going --quiet --jobs 3
+cmp -s "$out" "$cli_tmp/keep.csv" && [ "$rc" -eq 2 ] && pass || fail sweep-keep-going-jobs "exit $rc; $(diff "$out" "$cli_tmp/keep.csv" | head -3)"
