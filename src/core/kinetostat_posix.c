@@ -13,6 +13,7 @@
 #include <sys/random.h>
 #include <sys/stat.h>
 #include <sys/statfs.h>
+#include <sys/time.h>
 #include <sys/types.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -410,17 +411,65 @@ void kinetostat_error_text(int err, char *text, int cap) {
  * Parallel sweeps run blocks of variants in child processes (gfortran's run-time library
  * is not safe for concurrent internal I/O in threads, processes are). */
 
+/* A child ends with its parent, however the parent ends (SIGKILL runs no handler): the
+ * parent holds the only write end of a pipe that every child watches. The child reads the
+ * pipe's read end (non-blocking) from a SIGALRM every KS_WATCH_MS; the read returns 0, end
+ * of file, once the write end is closed, i.e. once the parent is gone, and the child then
+ * leaves at once. Portable POSIX (pipe, setitimer, sigaction); no thread. */
+#define KS_WATCH_MS 100
+/* Exit status of a child that found its parent gone. */
+#define KS_ORPHAN_EXIT 70
+static int ks_watch_pipe[2] = {-1, -1};
+static volatile sig_atomic_t ks_watch_fd = -1;
+
+/* SIGALRM in a child: end when the parent's end of the pipe is closed. */
+static void ks_on_watch(int sig) {
+  char c;
+  int saved = errno;
+  (void) sig;
+  if (ks_watch_fd >= 0 && read((int) ks_watch_fd, &c, 1) == 0) _exit(KS_ORPHAN_EXIT);
+  errno = saved;
+}
+
+/* In a new child: keep the read end only, and look at it every KS_WATCH_MS. */
+static void ks_watch_parent(void) {
+  struct sigaction act;
+  struct itimerval every;
+  int flags;
+  if (ks_watch_pipe[0] < 0) return;
+  close(ks_watch_pipe[1]);
+  ks_watch_pipe[1] = -1;
+  flags = fcntl(ks_watch_pipe[0], F_GETFL);
+  if (flags < 0 || fcntl(ks_watch_pipe[0], F_SETFL, flags | O_NONBLOCK) != 0) return;
+  ks_watch_fd = ks_watch_pipe[0];
+  memset(&act, 0, sizeof act);
+  act.sa_handler = ks_on_watch;
+  sigemptyset(&act.sa_mask);
+  act.sa_flags = SA_RESTART;
+  if (sigaction(SIGALRM, &act, NULL) != 0) return;
+  every.it_interval.tv_sec = 0;
+  every.it_interval.tv_usec = KS_WATCH_MS * 1000;
+  every.it_value = every.it_interval;
+  setitimer(ITIMER_REAL, &every, NULL);
+}
+
 /* fork(2): 0 in the child, the child's id in the parent, -1 on failure. The child is
- * registered, so that a fatal signal to the parent ends it too; the child starts with
- * empty registries (its parent's temporaries and siblings are not its own). */
+ * registered, so that a fatal signal to the parent ends it too, and watches a pipe to the
+ * parent, so that it ends when the parent is killed outright; the child starts with empty
+ * registries (its parent's temporaries and siblings are not its own). */
 int kinetostat_fork(void) {
   sigset_t old;
   pid_t pid;
   ks_block(&old);
+  if (ks_watch_pipe[0] < 0 && pipe(ks_watch_pipe) != 0) {
+    ks_watch_pipe[0] = -1;
+    ks_watch_pipe[1] = -1;
+  }
   pid = fork();
   if (pid == 0) {
     for (int i = 0; i < KS_MAX_TEMPS; i++) ks_temp_used[i] = 0;
     for (int i = 0; i < KS_MAX_CHILDREN; i++) ks_child[i] = 0;
+    ks_watch_parent();
   } else if (pid > 0) {
     int slot = -1;
     for (int i = 0; i < KS_MAX_CHILDREN; i++) {

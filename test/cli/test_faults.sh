@@ -207,3 +207,23 @@ for c in $ft_children; do kill -0 "$c" 2>/dev/null && ft_alive="$ft_alive $c"; d
   || fail faults-sweep-sigterm "exit $rc, children '$ft_children', still alive '$ft_alive'"
 ft_no_temps faults-sweep-sigterm-temps
 for c in $ft_alive; do kill -KILL "$c" 2>/dev/null; done
+
+# --- SIGKILL of a sweep (no handler runs): its children watch a pipe to it and end within
+# 1 s when it closes (an orphan reaped by init, or a zombie, is not computing)
+ft_running() { local st; st=$(ps -o stat= -p "$1" 2>/dev/null); [ -n "$st" ] && [ "${st#Z}" = "$st" ]; }
+ft_background sweep data/pr3207.nml --vary dphi=0.0004:0.0005:2 --jobs 2 -o "$ft_dir/sweepfile"
+ft_children=""
+for i in $(seq 1 50); do
+  ft_children=$(pgrep -P "$ft_pid" | tr '\n' ' ')
+  [ -n "$ft_children" ] && break
+  sleep 0.1
+done
+sleep 0.3
+kill -KILL "$ft_pid"; wait "$ft_pid" 2>/dev/null; rc=$?
+sleep 1
+ft_alive=""
+for c in $ft_children; do ft_running "$c" && ft_alive="$ft_alive $c"; done
+[ -n "$ft_children" ] && [ "$rc" -eq 137 ] && [ -z "$ft_alive" ] && pass \
+  || fail faults-sweep-sigkill "exit $rc, children '$ft_children', still computing 1 s later '$ft_alive'"
+for c in $ft_alive; do kill -KILL "$c" 2>/dev/null; done
+rm -f "$ft_dir"/sweepfile.tmp.*
