@@ -9,7 +9,8 @@ module test_blocks
   use kinetostat_registry, only: create_mechanism
   use kinetostat_step_table, only: step_table_t
   use kinetostat_text_buffer, only: text_buffer_t
-  use kinetostat_run, only: run_options_t, run_mechanism, format_table, format_csv, format_json, format_summary
+  use kinetostat_run, only: run_options_t, run_mechanism, format_table, format_csv, format_json, format_summary, &
+    format_svg, format_plans, format_dxf
   use kinetostat_labels, only: lang_ru
   use kinetostat_spool, only: spool_t
   use kinetostat_posix, only: process_id
@@ -37,6 +38,7 @@ contains
   subroutine run_blocks_tests(t)
     type(test_counts_t), intent(inout) :: t
     call test_blocks_equal_whole(t)
+    call test_drawings_in_blocks(t)
     call test_spool(t)
   end subroutine run_blocks_tests
 
@@ -137,6 +139,72 @@ contains
       end do
     end do
   end subroutine test_blocks_equal_whole
+
+  !> The drawings keep only the rows they draw, block by block (kinetostat_row_keeper): the
+  !> SVG sheet, --at K (the mechanism, its plans, DXF, JSON --plans) at the first, a middle
+  !> and the last step, in blocks of 1, 5 and 7 rows, equal the one-block run byte for byte;
+  !> and a long run's sheet (5001 steps: the extremes per bucket) in blocks of 777 and 4000.
+  subroutine test_drawings_in_blocks(t)
+    type(test_counts_t), intent(inout) :: t
+    character(len=*), parameter :: drawn(*) = [character(len=30) :: "data/pr3207.nml", "data/assur_pr3050.nml", &
+      "data/linkage_slider_crank.nml", "data/class3.nml"]
+    integer, parameter :: sizes(*) = [1, 7]
+    !> The drawings tried: format and --at K (0: the sheet of the whole run).
+    integer, parameter :: formats(*) = [format_svg, format_svg, format_plans, format_dxf, format_json]
+    integer, parameter :: steps_drawn(*) = [0, 7, 13, 1, 7]
+    !> Blocks of the long run.
+    integer, parameter :: long_blocks(2) = [777, 4000]
+    type(run_options_t) :: options
+    character(len=:), allocatable :: whole, blocked, long_deck
+    integer :: d, f, b
+    do d = 1, size(drawn)
+      do f = 1, size(formats)
+        options = run_options_t()
+        options%format = formats(f)
+        options%plans = formats(f) == format_json
+        options%at_step = steps_drawn(f)
+        call run_one(trim(drawn(d)), options, whole)
+        do b = 1, size(sizes)
+          options%block_rows = sizes(b)
+          call run_one(trim(drawn(d)), options, blocked)
+          call check_true(t, "blocks: "//trim(drawn(d))//" drawing case "//int_str(f)//" (--at "// &
+            int_str(steps_drawn(f))//"), blocks of "//int_str(sizes(b))//" rows = one block", blocked == whole, &
+            first_difference(whole, blocked))
+        end do
+      end do
+    end do
+    ! a long run (5001 steps > 4096): the sheet through each bucket's extremes
+    long_deck = "/tmp/kinetostat-test-long-"//int_str(process_id())//".nml"
+    call write_long_deck(long_deck)
+    options = run_options_t()
+    options%format = format_svg
+    call run_one(long_deck, options, whole)
+    call check_true(t, "blocks: a 5001-step sheet is drawn", index(whole, 'data-steps="5001"') > 0, &
+      whole(1:min(300, len(whole))))
+    do b = 1, 2
+      options%block_rows = long_blocks(b)
+      call run_one(long_deck, options, blocked)
+      call check_true(t, "blocks: the 5001-step sheet in blocks of "//int_str(options%block_rows)//" = one block", &
+        blocked == whole, first_difference(whole, blocked))
+    end do
+    open (newunit=d, file=long_deck, status="old")
+    close (d, status="delete")
+  contains
+    !> data/pr3207.nml at 5001 steps.
+    subroutine write_long_deck(path)
+      character(*), intent(in) :: path
+      type(deck_source_t) :: source
+      type(error_t), allocatable :: error
+      integer :: unit, i
+      call load_deck("data/pr3207.nml", source, error)
+      open (newunit=unit, file=path, status="replace", action="write")
+      do i = 1, size(source%records)
+        if (trim(source%records(i)) == "/") write (unit, '(a)') "  dphi = 0.072, n = 5001"
+        write (unit, '(a)') trim(source%records(i))
+      end do
+      close (unit)
+    end subroutine write_long_deck
+  end subroutine test_drawings_in_blocks
 
   !> The spool with a bound of 100 bytes: the text goes through its file (also the second
   !> section of a layout, PR 3050's) and the target gets all of it; a run that fails after

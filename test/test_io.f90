@@ -61,8 +61,20 @@ contains
     call check_true(t, "diff: a real difference is named", status == diff_different .and. &
       index(report%text(), "step 1, column M1: 5.0 vs 5.1 (rel 2.0e-02)") == 1, report%text())
     b(1) = "phi1,F21,F21G,M1"
+    report = text_buffer_t()
     call diff_outputs("a", a, "b", b, catalog, options, report, status, error)
-    call check_true(t, "diff: other columns are an error", allocated(error), "no error")
+    call check_true(t, "diff: other columns are listed and differ", .not. allocated(error) .and. &
+      status == diff_different .and. index(report%text(), "columns only in a: F16, F16G") == 1 .and. &
+      index(report%text(), "columns only in b: F21, F21G") > 0, report%text())
+    ! the same columns in another order are the same file
+    b = [character(len=60) :: "M1,F16G,phi1,F16", "5.0,3.59999E+2,0,1.0E+2", "1.0,0.0E+0,30,0.0E+0"]
+    report = text_buffer_t()
+    call diff_outputs("a", a, "b", b, catalog, options, report, status, error)
+    call check_true(t, "diff: columns in another order are matched by name", .not. allocated(error) .and. &
+      status == diff_same, report%text())
+    b(1) = "x,y,z,w"
+    call diff_outputs("a", a, "b", b, catalog, options, report, status, error)
+    call check_true(t, "diff: no column in common is an error", allocated(error), "no error")
     a(1) = " KINETOSTAT  X"
     call diff_outputs("a", a, "b", b, catalog, options, report, status, error)
     call check_true(t, "diff: a table and a CSV file are not comparable", allocated(error), "no error")

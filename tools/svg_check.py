@@ -117,13 +117,21 @@ def check_hodographs(svg_path, csv_path):
     print(f"{len(paths)} hodographs, {compared} point comparisons, largest error {worst:.4f} mm on the sheet")
 
 
+# A long run's curves (kinetostat_row_keeper): every step up to ALL_ROWS steps; beyond, per
+# bucket of the run's steps (SHEET_BUCKETS of them, halved for a curve of two coordinates)
+# the smallest and the largest value of each coordinate.
+ALL_ROWS = 4096
+SHEET_BUCKETS = 2048
+
+
 def check_thinned(svg_path, p, name, points, ox, oy, scale, magnitude, angle):
-    """A long run's hodograph drawn through some of its steps: at most 2000 points, each the
-    force of a step (in step order, within the drawing's rounding), and the largest and
-    smallest x and y components of the whole run among them (the curve keeps its extremes)."""
+    """A long run's hodograph drawn through some of its steps: at most 4096 points, each the
+    force of a step (in step order, within the drawing's rounding), and in every one of the
+    1024 buckets of steps (bucket b: the steps k with floor((k - 1) 1024 / n) = b - 1) the
+    largest and smallest x and y components of the bucket among them: every peak survives."""
     steps, drawn = int(p.get("data-steps")), int(p.get("data-thinned"))
-    if steps != len(magnitude) or drawn != len(points) or drawn > 2000:
-        fail(f"{svg_path}: {name}: {drawn} points drawn ({len(points)} in the path, at most 2000) "
+    if steps != len(magnitude) or drawn != len(points) or drawn > ALL_ROWS:
+        fail(f"{svg_path}: {name}: {drawn} points drawn ({len(points)} in the path, at most {ALL_ROWS}) "
              f"of {steps} steps ({len(magnitude)} in the CSV)")
     ex = [m * math.cos(math.radians(a)) for m, a in zip(magnitude, angle)]
     ey = [m * math.sin(math.radians(a)) for m, a in zip(magnitude, angle)]
@@ -141,6 +149,26 @@ def check_thinned(svg_path, p, name, points, ox, oy, scale, magnitude, angle):
         for what, want, have in (("largest", max(values), max(got)), ("smallest", min(values), min(got))):
             if abs(want - have) > tol:
                 fail(f"{svg_path}: {name}: {what} {label} component {want:.6g} N of the run, drawn {have:.6g} N")
+    # every bucket's extremes are drawn
+    buckets = SHEET_BUCKETS // 2
+    members = [[] for _ in range(buckets)]
+    for j in range(steps):
+        members[(j * buckets) // steps].append(j)
+    # drawn points near each step (the drawing's rounding), found through a grid of cells
+    cells = {}
+    for d in drawn_f:
+        cells.setdefault((round(d[0] / tol), round(d[1] / tol)), []).append(d)
+
+    def is_drawn(j):
+        cx, cy = round(ex[j] / tol), round(ey[j] / tol)
+        return any(abs(d[0] - ex[j]) <= tol and abs(d[1] - ey[j]) <= tol
+                   for i in (-1, 0, 1) for m in (-1, 0, 1) for d in cells.get((cx + i, cy + m), ()))
+    for b, ks in enumerate(members):
+        for values, coordinate in ((ex, 0), (ey, 1)):
+            for j in (max(ks, key=lambda i: values[i]), min(ks, key=lambda i: values[i])):
+                if not is_drawn(j):
+                    fail(f"{svg_path}: {name}: bucket {b + 1} of {buckets}: the extreme "
+                         f"{'xy'[coordinate]} component at step {j + 1} ({ex[j]:.6g}, {ey[j]:.6g}) N is not drawn")
     return len(points)
 
 

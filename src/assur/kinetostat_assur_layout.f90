@@ -1094,7 +1094,7 @@ contains
     real(wp) :: dir
     integer :: ip, i, sides(2)
     associate (mech => self%deck%mech, deck => self%deck)
-      call assur_kinematics(mech, assur_phi1_deg(deck, k) * deg_to_rad, states, poses, error)
+      call assur_kinematics(mech, assur_phi1_deg(deck, table%run_row(k)) * deg_to_rad, states, poses, error)
       if (allocated(error)) return
       do ip = 1, size(deck%pair_name)
         call drawing%pair_from_table(table, k, trim(deck%pair_name(ip)), joint_name(deck, deck%pair_name(ip)), error)
@@ -1106,13 +1106,13 @@ contains
           dir = f%angle
           if (f%follow) dir = dir + states(f%link)%th
           call drawing%add_force("Q"//int_str(i), force_load, ps%p, &
-                                 assur_load_value(deck, deck%force_load(i), k) * [cos(dir), sin(dir)], &
+                                 assur_load_value(deck, deck%force_load(i), table%run_row(k)) * [cos(dir), sin(dir)], &
                                  int_str(mech%links(f%link)%id))
         end associate
       end do
       do i = 1, size(mech%moment_link)
         call drawing%add_moment("MQ"//int_str(i), force_load, drawing%at("S"//int_str(mech%links(mech%moment_link(i))%id)), &
-          assur_load_value(deck, deck%moment_load(i), k), int_str(mech%links(mech%moment_link(i))%id))
+          assur_load_value(deck, deck%moment_load(i), table%run_row(k)), int_str(mech%links(mech%moment_link(i))%id))
       end do
       ! the centre of mass of a link not named by its number (link 1 not the crank, "L1": S1)
       do i = 2, 2 * size(mech%dyads) + 1

@@ -181,14 +181,14 @@ contains
           p = drawing%at("S"//link_name(mech, f%link)) + rotate(f%at - lk%s, th)
           w = f%dir
           if (f%follow) w = rotate(w, th)
-          call drawing%add_force("Q"//int_str(i), force_load, p, linkage_load_value(deck, deck%force_load(i), k) * w, &
-                                 link_name(mech, f%link))
+          call drawing%add_force("Q"//int_str(i), force_load, p, &
+            linkage_load_value(deck, deck%force_load(i), table%run_row(k)) * w, link_name(mech, f%link))
         end associate
       end do
       !GCC$ novector
       do i = 1, size(mech%moment_link)
         call drawing%add_moment("MQ"//int_str(i), force_load, drawing%at("S"//link_name(mech, mech%moment_link(i))), &
-          linkage_load_value(deck, deck%moment_load(i), k), link_name(mech, mech%moment_link(i)))
+          linkage_load_value(deck, deck%moment_load(i), table%run_row(k)), link_name(mech, mech%moment_link(i)))
       end do
       call self%mass_model(model)
       call drawing%add_body_loads(table, k, model)

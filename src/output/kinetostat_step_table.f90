@@ -269,6 +269,10 @@ module kinetostat_step_table
     integer :: row_offset = 0
     !> Number of rows of the whole run (0 until a mechanism's solve says so).
     integer :: total_rows = 0
+    !> The run's row numbers of the rows held, when they are a selection of the run's rows
+    !> (kinetostat_row_keeper: the row of --at K, a long run's extremes for the SVG sheet);
+    !> not allocated: the rows are row_offset+1 .. row_offset+row_count().
+    integer, allocatable :: row_numbers(:)
     !> Values a mechanism keeps from one block to the next (counts, sums, the last step's
     !> values); its own layout, not allocated before the first block.
     real(wp), allocatable :: carry(:)
@@ -317,6 +321,8 @@ module kinetostat_step_table
     procedure :: shaft_inertia
     procedure :: allocate_rows
     procedure :: row_count
+    procedure :: run_row
+    procedure :: run_rows
     procedure :: add_warning
     procedure :: note_load
     procedure :: warning_count
@@ -732,6 +738,25 @@ contains
     row_count = 0
     if (allocated(self%rows)) row_count = size(self%rows, 2)
   end function row_count
+
+  !> The run's row number of row k of the rows held (the step of a drawing, of a deck's
+  !> per-step values).
+  pure integer function run_row(self, k)
+    class(step_table_t), intent(in) :: self
+    !> Row, 1 .. row_count().
+    integer, intent(in) :: k
+    if (allocated(self%row_numbers)) then
+      run_row = self%row_numbers(k)
+    else
+      run_row = self%row_offset + k
+    end if
+  end function run_row
+
+  !> The number of rows of the whole run (of the rows held when nothing says more).
+  pure integer function run_rows(self)
+    class(step_table_t), intent(in) :: self
+    run_rows = max(self%total_rows, self%row_offset + self%row_count())
+  end function run_rows
 
   !> Append a warning.
   pure subroutine add_warning(self, text)

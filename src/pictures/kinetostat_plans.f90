@@ -1469,7 +1469,7 @@ contains
     character(len=:), allocatable :: line
     call out%put("{")
     call out%put('  "deck": "'//table%deck//'",')
-    call out%put('  "step": '//int_str(k)//',')
+    call out%put('  "step": '//int_str(table%run_row(k))//',')
     if (table%input_column > 0) call out%put('  "'//table%columns(table%input_column)%name//'": '// &
       full_number(table%rows(table%input_column, k))//',')
     call put_vectors(out, "velocity_plan", plans%velocities, "m/s")

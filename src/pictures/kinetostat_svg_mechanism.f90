@@ -134,14 +134,15 @@ contains
 
     sheet_height = page_height
     if (allocated(table%student_stamp)) sheet_height = page_height + title_block_height
-    call svg_open(out, page_width, sheet_height, title//" - "//table%deck//" - "//table%row_name//" "//int_str(k), &
-      "kinetostat --format svg --at "//int_str(k)//" sheet of "//table%deck//": the mechanism to scale with "// &
-      "every force of the step as an arrow (one force scale).")
+    call svg_open(out, page_width, sheet_height, title//" - "//table%deck//" - "//table%row_name//" "// &
+      int_str(table%run_row(k)), "kinetostat --format svg --at "//int_str(table%run_row(k))//" sheet of "// &
+      table%deck//": the mechanism to scale with every force of the step as an arrow (one force scale).")
     call out%put(svg_text(area(1), 15.0_wp, title, title_attributes(title, "title", 3.3_wp, 188.0_wp)))
     line = word("deck", lang)//": "//table%deck
     if (allocated(table%subtitle)) line = line//"   "//table%subtitle
     call out%put(svg_text(area(1), 20.5_wp, line, title_attributes(line, "subtitle", 3.0_wp, 188.0_wp)))
-    line = word(table%row_name, lang)//" "//int_str(k)//" "//word("of", lang)//" "//int_str(table%row_count())
+    line = word(table%row_name, lang)//" "//int_str(table%run_row(k))//" "//word("of", lang)//" "// &
+      int_str(table%run_rows())
     if (table%input_column > 0) line = line//": "//table%columns(table%input_column)%name//" = "// &
       short_number(table%rows(table%input_column, k))//" "//unit_word(table%columns(table%input_column)%unit, lang)
     if (allocated(drawing%view_note)) line = line//"; "//word(drawing%view_note, lang)
@@ -328,7 +329,7 @@ contains
     end do
     call put_force_list(out, drawing, area(1), ty + 9.0_wp, lang)
     call put_title_block(out, table, lang, page_width, sheet_height, word("Mechanism with its forces", lang)// &
-      ", "//word(table%row_name, lang)//" "//int_str(k))
+      ", "//word(table%row_name, lang)//" "//int_str(table%run_row(k)))
     call svg_close(out)
   contains
     !> Page points (mm) of the axis of a cylinder or rod `b` at s0 and s1 m from its anchor.

@@ -57,12 +57,13 @@ contains
     sheet_height = page_height
     if (allocated(table%student_stamp)) sheet_height = page_height + title_block_height
     call svg_open(out, page_width, sheet_height, title//" - "//table%deck//" - plans, "//table%row_name//" "// &
-      int_str(k), "kinetostat --format plans --at "//int_str(k)//" sheet of "//table%deck// &
+      int_str(table%run_row(k)), "kinetostat --format plans --at "//int_str(table%run_row(k))//" sheet of "//table%deck// &
       ": plans of velocities and accelerations, force polygons, Zhukovsky's lever.")
     call out%put(svg_text(12.0_wp, 15.0_wp, title, title_attributes(title, "title", 3.3_wp, 186.0_wp)))
     line = word("deck", lang)//": "//table%deck
     call out%put(svg_text(12.0_wp, 20.5_wp, line, title_attributes(line, "subtitle", 3.0_wp, 186.0_wp)))
-    line = word(table%row_name, lang)//" "//int_str(k)//" "//word("of", lang)//" "//int_str(table%row_count())
+    line = word(table%row_name, lang)//" "//int_str(table%run_row(k))//" "//word("of", lang)//" "// &
+      int_str(table%run_rows())
     if (table%input_column > 0) line = line//": "//table%columns(table%input_column)%name//" = "// &
       short_number(table%rows(table%input_column, k))//" "//unit_word(table%columns(table%input_column)%unit, lang)
     line = line//"; "//version_string

@@ -21,6 +21,8 @@ module kinetostat_svg_writer
   use kinetostat_label_place, only: label_boxes_t, title_attributes, anchor_start, anchor_end
   use kinetostat_labels, only: word => label, unit_word => unit_symbol
   use kinetostat_title_block, only: put_title_block, title_block_height
+  use kinetostat_row_keeper, only: bucket_extremes, all_rows_limit, sheet_buckets
+  use kinetostat_summary, only: column_stats, column_stats_t
   implicit none
   private
   public :: write_svg, pair_force_t, find_pair_forces, select_pair_forces, nice_step, cycle_mean
@@ -45,9 +47,6 @@ module kinetostat_svg_writer
   real(wp), parameter :: dynamics_block_height = 10.0_wp + 3.0_wp * (dynamics_chart_height + gap)
   !> Most numbered points in one hodograph (beyond it every m-th step is numbered).
   integer, parameter :: max_point_labels = 24
-  !> Points a curve is drawn through at most: a longer run is thinned to what the sheet can
-  !> show (thin_indices keeps every stretch's extremes); the numbers are not changed.
-  integer, parameter :: max_drawn_points = 2000
   !> Font size of the class "num", mm (kinetostat_svg's style sheet).
   real(wp), parameter :: num_size = 2.2_wp
   !> Font size of the class "small", mm.
@@ -175,7 +174,7 @@ contains
     line = word("deck", lang)//": "//table%deck
     if (allocated(table%subtitle)) line = line//"   "//table%subtitle
     call out%put(svg_text(margin, 20.5_wp, line, title_attributes(line, "subtitle", 3.0_wp, 188.0_wp)))
-    n = table%row_count()
+    n = table%run_rows()
     if (n /= 1) then
       line = int_str(n)//" "//word(table%row_name//"s", lang)
     else
@@ -184,7 +183,7 @@ contains
     if (table%input_column > 0 .and. n > 0) then
       associate (c => table%columns(table%input_column))
         line = line//", "//c%name//" = "//short_number(table%rows(table%input_column, 1))
-        if (n > 1) line = line//" ... "//short_number(table%rows(table%input_column, n))
+        if (n > 1) line = line//" ... "//short_number(table%rows(table%input_column, table%row_count()))
         line = line//" "//unit_word(c%unit, lang)
       end associate
     end if
@@ -394,39 +393,28 @@ contains
     oy = anint((ay + 0.5_wp * ah + scale * 0.5_wp * (ymin + ymax)) * 100.0_wp) / 100.0_wp
   end subroutine fit_points
 
-  !> Rows of a long run that a curve is drawn through, in order, at most `limit`: the run
-  !> cut into equal stretches, of each its first and last row and the rows of the smallest
-  !> and largest value of every column of `values` (so the curve keeps its extremes and its
-  !> bounding box). All rows when there are no more than `limit`.
-  pure subroutine thin_indices(values, limit, keep)
-    !> One column per drawn coordinate, one row per step.
+  !> The rows a curve through `values` (one column per drawn coordinate, one row per row
+  !> of the table) is drawn through: every row of a run of up to all_rows_limit rows; of a
+  !> longer one the smallest and largest value of each coordinate per bucket of the run's
+  !> rows (kinetostat_row_keeper: the peaks survive), at most all_rows_limit.
+  pure function drawn_rows(table, values) result(keep)
+    type(step_table_t), intent(in) :: table
     real(wp), intent(in) :: values(:, :)
-    !> Most rows kept (>= 2 + 2 * columns).
-    integer, intent(in) :: limit
-    !> The rows kept, increasing.
-    integer, allocatable, intent(out) :: keep(:)
-    logical, allocatable :: taken(:)
-    integer :: n, stretches, s, first, last, c
-    n = size(values, 1)
-    allocate (taken(n), source=.false.)
-    if (n <= limit) then
-      taken = .true.
+    integer, allocatable :: keep(:)
+    integer :: k
+    if (table%run_rows() <= all_rows_limit) then
+      keep = [(k, k=1, size(values, 1))]
     else
-      stretches = max(1, limit / (2 + 2 * size(values, 2)))
-      do s = 1, stretches
-        first = 1 + int((int(s - 1, int64) * n) / stretches)
-        last = int((int(s, int64) * n) / stretches)
-        if (last < first) cycle
-        taken(first) = .true.
-        taken(last) = .true.
-        do c = 1, size(values, 2)
-          taken(first - 1 + minloc(values(first:last, c), dim=1)) = .true.
-          taken(first - 1 + maxloc(values(first:last, c), dim=1)) = .true.
-        end do
-      end do
+      call bucket_extremes(values, [(table%run_row(k), k=1, size(values, 1))], table%run_rows(), &
+        sheet_buckets / size(values, 2), keep)
     end if
-    keep = pack([(s, s=1, n)], taken)
-  end subroutine thin_indices
+  end function drawn_rows
+
+  !> Whether the table's curves are drawn through a part of its run's rows (drawn_rows).
+  pure logical function thinned_run(table)
+    type(step_table_t), intent(in) :: table
+    thinned_run = table%run_rows() > all_rows_limit
+  end function thinned_run
 
   !> The origin of a force diagram: light axes across the plot area, a small circle and "O".
   !> The boxes of its three labels are taken in `boxes` (the point numbers go elsewhere);
@@ -469,9 +457,9 @@ contains
     n = table%row_count()
     call pair_components(table, p, fx, fy)
     ! a long run: the curve through its extremes, without rays, dots and step numbers
-    thinned = n > max_drawn_points
+    thinned = thinned_run(table)
     if (thinned) then
-      call thin_indices(reshape([fx, fy], [n, 2]), max_drawn_points, keep)
+      keep = drawn_rows(table, reshape([fx, fy], [n, 2]))
       fx = fx(keep)
       fy = fy(keep)
     end if
@@ -495,8 +483,8 @@ contains
     if (thinned) then
       call out%put(svg_path(svg_polyline_d(px, py), 'class="hodograph" data-force="'//p%name// &
         '" data-origin="'//coord(ox)//" "//coord(oy)//'" data-scale="'//full_number(scale)// &
-        '" data-steps="'//int_str(n)//'" data-thinned="'//int_str(size(keep))//'"'))
-      call out%put(svg_text(x0 + w - 2.0_wp, y0 + h - 8.0_wp, int_str(size(keep))//" of "//int_str(n)// &
+        '" data-steps="'//int_str(table%run_rows())//'" data-thinned="'//int_str(size(keep))//'"'))
+      call out%put(svg_text(x0 + w - 2.0_wp, y0 + h - 8.0_wp, int_str(size(keep))//" of "//int_str(table%run_rows())// &
         " points drawn", 'class="small" text-anchor="end"'))
       call put_scale_bar(out, x0 + 3.0_wp, y0 + h - 4.0_wp, extent, scale, lang)
       return
@@ -662,8 +650,10 @@ contains
   end subroutine x_range
 
   !> One data series of a chart: a line and a dot at every row.
-  pure subroutine put_series(out, x, y, colour, dash)
+  pure subroutine put_series(out, table, x, y, colour, dash)
     type(text_buffer_t), intent(inout) :: out
+    !> The table the series comes from (one point per row).
+    type(step_table_t), intent(in) :: table
     real(wp), intent(in) :: x(:), y(:)
     character(*), intent(in) :: colour, dash
     character(len=:), allocatable :: style
@@ -671,9 +661,9 @@ contains
     integer, allocatable :: keep(:)
     style = 'fill="none" stroke="'//colour//'" stroke-width="0.4"'
     if (len(dash) > 0) style = style//' stroke-dasharray="'//dash//'"'
-    if (size(x) > max_drawn_points) then
+    if (thinned_run(table)) then
       ! a long run: the line through its extremes, no dots (they would merge into the line)
-      call thin_indices(reshape(y, [size(y), 1]), max_drawn_points, keep)
+      keep = drawn_rows(table, reshape(y, [size(y), 1]))
       call out%put(svg_path(svg_polyline_d(x(keep), y(keep)), style))
       return
     end if
@@ -691,6 +681,7 @@ contains
     integer, intent(in) :: lang
     real(wp), allocatable :: x(:), y(:)
     real(wp) :: left, top, pw, ph, xlo, xhi, xstep, ylo, yhi, ystep, mean, t
+    type(column_stats_t) :: stats
     character(len=:), allocatable :: what
     integer :: c, ci
     ci = table%input_column
@@ -712,7 +703,13 @@ contains
     pw = w - 21.0_wp
     ph = h - 22.0_wp
     call x_range(table%rows(ci, :), table%columns(ci)%unit == "deg", xlo, xhi, xstep)
-    mean = cycle_mean(table%rows(ci, :), table%rows(c, :))
+    if (table%row_count() < table%run_rows()) then
+      ! the rows held are a selection of a long run's: its mean as the run's summary has it
+      stats = column_stats(table, c)
+      mean = stats%mean
+    else
+      mean = cycle_mean(table%rows(ci, :), table%rows(c, :))
+    end if
     ! roundoff of a mean that is zero (a conservative cycle): printed as 0, not -5.53E-16
     if (abs(mean) <= 1.0e-12_wp * maxval(abs(table%rows(c, :)))) mean = 0.0_wp
     call y_range([table%rows(c, :), mean], ylo, yhi, ystep)
@@ -721,7 +718,7 @@ contains
       table%columns(c)%name//", "//unit_word(table%columns(c)%unit, lang))
     x = left + pw * (table%rows(ci, :) - xlo) / (xhi - xlo)
     y = top + ph - ph * (table%rows(c, :) - ylo) / (yhi - ylo)
-    call put_series(out, x, y, "#1f77b4", "")
+    call put_series(out, table, x, y, "#1f77b4", "")
     t = top + ph - ph * (mean - ylo) / (yhi - ylo)
     call out%put(svg_line(left, t, left + pw, t, 'class="mean"'))
     call out%put(svg_line(x0 + w - 30.0_wp, y0 + h - 3.0_wp, x0 + w - 24.0_wp, y0 + h - 3.0_wp, 'class="mean"'))
@@ -811,15 +808,11 @@ contains
         call y_range(yv, ylo, yhi, ystep)
       end if
       call put_axes(o, left, pt, pw, ph, xlo, xhi, xstep, ylo, yhi, ystep, xlabel, ylabel)
-      call put_series(o, left + pw * (xv - xlo) / (xhi - xlo), pt + ph - ph * (yv - ylo) / (yhi - ylo), &
+      call put_series(o, table, left + pw * (xv - xlo) / (xhi - xlo), pt + ph - ph * (yv - ylo) / (yhi - ylo), &
         "#1f77b4", "")
       if (present(dashed)) then
         ! a dashed line without the dots of the data series (thinned as they are for long runs)
-        if (size(xv) > max_drawn_points) then
-          call thin_indices(reshape(dashed, [size(dashed), 1]), max_drawn_points, keep)
-        else
-          keep = [(i, i = 1, size(xv))]
-        end if
+        keep = drawn_rows(table, reshape(dashed, [size(dashed), 1]))
         call o%put(svg_path(svg_polyline_d(left + pw * (xv(keep) - xlo) / (xhi - xlo), &
           pt + ph - ph * (dashed(keep) - ylo) / (yhi - ylo)), &
           'fill="none" stroke="#333333" stroke-width="0.4" stroke-dasharray="2,1"'))
@@ -870,7 +863,7 @@ contains
     do i = 1, size(pairs)
       call palette_colour(i, colour, dash)
       y = top + ph - ph * (table%rows(pairs(i)%magnitude, :) - ylo) / (yhi - ylo)
-      call put_series(out, x, y, colour, dash)
+      call put_series(out, table, x, y, colour, dash)
       row = top + 1.5_wp + (i - 1) * dy
       call out%put(svg_line(legend_x, row, legend_x + 5.0_wp, row, 'stroke="'//colour//'" stroke-width="0.6"'// &
         merge_dash(dash)))

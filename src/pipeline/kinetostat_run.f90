@@ -30,6 +30,8 @@ module kinetostat_run
   use kinetostat_spool, only: spool_t
   use kinetostat_bodies, only: mass_model_t
   use kinetostat_shaking, only: add_shaking
+  use kinetostat_row_keeper, only: row_keeper_t
+  use kinetostat_kinds, only: deg_to_rad
   implicit none
   private
   public :: run_options_t, run_mechanism, guard_finite, progress_i, block_rows
@@ -148,6 +150,9 @@ contains
     type(echo_cursor_t) :: head
     !> The moving links and frame pairs (--shaking).
     type(mass_model_t) :: model
+    !> The rows a drawing needs (--at K, the SVG sheet), kept as the blocks go.
+    type(row_keeper_t) :: keeper
+    logical :: drawn
     integer :: first, rows
 
     call mech%read_deck(source, error)
@@ -177,13 +182,12 @@ contains
     rows = block_rows
     if (options%block_rows > 0) rows = options%block_rows
     head%chunk = options%echo_chunk
+    ! a drawing (the SVG sheet, --at K) keeps only the rows it draws, block by block
+    drawn = any(options%format == [format_svg, format_plans, format_dxf]) .or. options%plans
     first = 1
     do
-      ! the SVG sheet and drawing need every row at once
-      if (all(options%format /= [format_svg, format_plans, format_dxf]) .and. .not. options%plans) then
-        table%block_first = first
-        table%block_last = first + rows - 1
-      end if
+      table%block_first = first
+      table%block_last = first + rows - 1
       call run_block(error)
       if (allocated(error)) exit
       if (present(progress)) call progress(table%row_offset + table%row_count(), table%total_rows)
@@ -234,6 +238,8 @@ contains
         end if
       case (format_json)
         if (options%plans) then
+          call keep_drawn_rows(error)
+          if (allocated(error)) return
           if (table%last_block()) call write_at_step(mech, table, options, out, error)
           if (allocated(error)) return
         else
@@ -245,12 +251,18 @@ contains
           end do
         end if
       case (format_plans, format_dxf)
-        call write_at_step(mech, table, options, out, error)
+        call keep_drawn_rows(error)
+        if (allocated(error)) return
+        if (table%last_block()) call write_at_step(mech, table, options, out, error)
         if (allocated(error)) return
       case (format_svg)
         call guard_drawable(table, error)
         if (allocated(error)) return
-        if (options%at_step > 0) then
+        call keep_drawn_rows(error)
+        if (allocated(error)) return
+        if (.not. table%last_block()) then
+          continue
+        else if (options%at_step > 0) then
           call write_at_step(mech, table, options, out, error)
         else if (allocated(options%pairs)) then
           call write_svg(mech%title(options%lang), table, options%pairs, options%lang, out, error)
@@ -281,6 +293,51 @@ contains
       if (allocated(error)) return
       call shaking_spool%drain(shaking, error)
     end subroutine run_block
+
+    !> A drawing's rows: after the first block, what to keep (--at K: the row, and the
+    !> travel of the points on guides; the SVG sheet: the extremes of long runs); after every
+    !> block, the rows kept; after the last, the kept rows become the table's.
+    subroutine keep_drawn_rows(error)
+      type(error_t), allocatable, intent(out) :: error
+      if (.not. drawn) return
+      if (table%first_block()) then
+        if (options%at_step > 0) then
+          call aim_at_step(error)
+          if (allocated(error)) return
+        else
+          call keeper%keep_buckets()
+        end if
+      end if
+      call keeper%add(table, error)
+      if (.not. allocated(error) .and. table%last_block()) call keeper%take(table, error)
+      if (allocated(error)) error%message = table%deck//": &"//table%mechanism//": "//error%message
+    end subroutine keep_drawn_rows
+
+    !> --at K: K must be a row of the run; the rows kept are K's and those of the extreme
+    !> positions of every point on a guide of the mechanism's sketch (its travel).
+    subroutine aim_at_step(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(sketch_t) :: topo
+      integer, allocatable :: cx(:), cy(:)
+      real(wp), allocatable :: u(:, :)
+      integer :: i, n
+      n = table%run_rows()
+      if (options%at_step > n) then
+        call fatal_error(error, exit_usage, "--at "//int_str(options%at_step)//": "//table%deck//" has "// &
+          int_str(n)//" "//table%row_name//"s (1.."//int_str(n)//")")
+        return
+      end if
+      call mech%sketch(topo)
+      n = 0
+      if (topo%available .and. allocated(topo%guides)) n = size(topo%guides)
+      allocate (cx(n), cy(n), u(2, n))
+      do i = 1, n
+        cx(i) = table%column_index("x_"//trim(topo%guides(i)%point))
+        cy(i) = table%column_index("y_"//trim(topo%guides(i)%point))
+        u(:, i) = [cos(topo%guides(i)%angle * deg_to_rad), sin(topo%guides(i)%angle * deg_to_rad)]
+      end do
+      call keeper%keep_at(options%at_step, cx, cy, u)
+    end subroutine aim_at_step
 
     !> Before the first rows: --frame link's check, the --set marks, the table's head.
     subroutine start_output(error)
@@ -323,10 +380,11 @@ contains
     type(drawing_t) :: drawing
     type(plans_t) :: plans
     integer :: k
-    k = options%at_step
-    if (k > table%row_count()) then
-      call fatal_error(error, exit_usage, "--at "//int_str(k)//": "//table%deck//" has "// &
-        int_str(table%row_count())//" "//table%row_name//"s (1.."//int_str(table%row_count())//")")
+    ! the table holds the rows the drawing needs (kinetostat_row_keeper): find row --at K
+    k = findloc(table%row_numbers, options%at_step, dim=1)
+    if (k == 0) then
+      call fatal_error(error, exit_usage, "--at "//int_str(options%at_step)//": "//table%deck//" has "// &
+        int_str(table%run_rows())//" "//table%row_name//"s (1.."//int_str(table%run_rows())//")")
       return
     end if
     call mech%sketch(topo)

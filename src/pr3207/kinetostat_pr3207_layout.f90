@@ -375,7 +375,7 @@ contains
         call drawing%pair_from_table(table, k, trim(pairs(i)), trim(pair_points(i)), error)
         if (allocated(error)) return
       end do
-      call drawing%add_force("F5c", force_load, drawing%at("S5"), [0.0_wp, pr3207_f5c(self%deck, k)], "5")
+      call drawing%add_force("F5c", force_load, drawing%at("S5"), [0.0_wp, pr3207_f5c(self%deck, table%run_row(k))], "5")
       call self%mass_model(model)
       call drawing%add_body_loads(table, k, model)
       call drawing%add_moment("M1", force_load, drawing%at("A"), table%rows(table%column_index("M1"), k))

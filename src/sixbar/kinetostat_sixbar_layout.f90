@@ -504,7 +504,7 @@ contains
       end do
       ! x2 in frame 1, rad
       x2 = atan2(p%a, p%b) - pi
-      call drawing%add_force("F5", force_load, drawing%at("H"), self%deck%f5(k) * [cos(x2), sin(x2)], "5")
+      call drawing%add_force("F5", force_load, drawing%at("H"), self%deck%f5(table%run_row(k)) * [cos(x2), sin(x2)], "5")
       call self%mass_model(model)
       call drawing%add_body_loads(table, k, model)
       call drawing%add_moment("M1", force_load, drawing%at("A"), table%rows(table%column_index("M1"), k))

@@ -85,4 +85,50 @@ tools/scale-decks 20 "$stream_tmp" --distinct
 for deck in pr3207 pr3050 sixbar assur cam pr3050_distinct pr3050_lines; do
   expect_exit "scale-decks-$deck" 0 "$stream_tmp/$deck.nml" --format summary
 done
+
+# --- bounded memory of a drawing (tools/test --long: 10^6 steps): --at 2 of a 10^6-step
+# &linkage run solves every block but keeps only the rows it draws (below 300 MiB; every step
+# kept took 1.58 GB), and its numbers are those of a 3-step run of the same steps; the SVG sheet
+# keeps each bucket's extremes. Run with the release build (tools/kinetostat's), as a user
+# would; the debug build takes ten times as long.
+if [ "${KINETOSTAT_LONG:-0}" = 1 ]; then
+  mem_bin="$KINETOSTAT"
+  if declare -p release_build >/dev/null 2>&1 && fpm build "${release_build[@]}" >"$stream_tmp/release.log" 2>&1; then
+    mem_bin="$(pwd)/$(fpm run "${release_build[@]}" --runner echo 2>/dev/null | tail -1)"
+  fi
+  mkdir -p "$stream_tmp/big" "$stream_tmp/small"
+  sed 's/  n = 13/  n = 1000000/; s/drive(1)%step = 30/drive(1)%step = 0.00036/' data/linkage_slider_crank.nml \
+    >"$stream_tmp/big/deck.nml"
+  sed 's/  n = 13/  n = 3/; s/drive(1)%step = 30/drive(1)%step = 0.00036/' data/linkage_slider_crank.nml \
+    >"$stream_tmp/small/deck.nml"
+  for args in "--format json --at 2 --plans" "--format plans --at 2" "--format dxf --at 2" "--format svg"; do
+    # shellcheck disable=SC2086
+    peak=$(cd "$stream_tmp/big" && python3 - "$mem_bin" deck.nml $args <<'PY'
+import resource, subprocess, sys
+with open("out", "wb") as out:
+    rc = subprocess.call(sys.argv[1:], stdout=out, stderr=subprocess.DEVNULL)
+peak = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss
+if sys.platform == "darwin":
+    peak //= 1024
+print(rc, peak)
+PY
+)
+    rc=${peak% *}; kib=${peak#* }
+    if [ "$rc" -ne 0 ] || [ "$kib" -ge $((300 * 1024)) ]; then
+      fail "stream-at-memory ($args)" "exit $rc, peak $((kib / 1024)) MiB of memory (limit 300 MiB)"
+      continue
+    fi
+    case "$args" in
+      *--plans*)
+        # shellcheck disable=SC2086
+        (cd "$stream_tmp/small" && "$mem_bin" deck.nml $args >out)
+        if cmp -s "$stream_tmp/big/out" "$stream_tmp/small/out"; then pass
+        else fail "stream-at-memory-numbers" "--at 2 of 10^6 steps differs from that of 3 steps: $(diff "$stream_tmp/big/out" "$stream_tmp/small/out" | head -4)"; fi ;;
+      "--format svg")
+        grep -q 'data-steps="1000000"' "$stream_tmp/big/out" && pass \
+          || fail "stream-svg-memory" "the sheet does not say 1000000 steps" ;;
+      *) pass ;;
+    esac
+  done
+fi
 rm -rf "$stream_tmp"
