@@ -7,10 +7,11 @@
 !> are read as reals and converted by `require_whole` or an equivalent whole-number check.
 module kinetostat_assur_deck
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+  use, intrinsic :: iso_fortran_env, only: int64
   use kinetostat_kinds, only: wp, g_default, deg_to_rad, rad_to_deg
-  use kinetostat_error, only: error_t
+  use kinetostat_error, only: error_t, out_of_memory
   use kinetostat_text, only: real_str, int_str, number_str, lower, upper
-  use kinetostat_deck, only: longest_quoted, deck_line_count, deck_line, &
+  use kinetostat_deck, only: values_out_of_memory, longest_quoted, deck_line_count, deck_line, &
     begin_group, deck_context_t, unset_real, unset_bits, max_deck_array, &
     deck_array_capacities, deck_source_t, namelist_probe_t, deck_error, require_all_set, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, require_per_step, optional_default, count_values, steps_over_turn, &
@@ -596,6 +597,7 @@ contains
     real(wp), allocatable :: omega1_step(:), eps1_step(:), step_values(:)
     !> Elements allocated for each per-step array the deck may give (see deck_array_capacities).
     integer, allocatable :: capacity(:)
+    integer :: stat
     logical :: angles_signed, components
     type(dyad_in_t) :: dyad(max_dyads)
     type(force_in_t) :: force(max_forces)
@@ -627,11 +629,22 @@ contains
     angles_signed = .false.; components = .true.
     capacity = deck_array_capacities(source, ctx%group, [character(len=11) :: "omega1_step", "eps1_step", &
       "step_values", "phi1"])
-    allocate (omega1_step(capacity(1)), eps1_step(capacity(2)), step_values(capacity(3)), phi1(capacity(4)), &
-              source=unset_real)
+    allocate (omega1_step(capacity(1)), source=unset_real, stat=stat)
+    if (stat == 0) allocate (eps1_step(capacity(2)), source=unset_real, stat=stat)
+    if (stat == 0) allocate (step_values(capacity(3)), source=unset_real, stat=stat)
+    if (stat == 0) allocate (phi1(capacity(4)), source=unset_real, stat=stat)
+    if (stat /= 0) then
+      call values_out_of_memory(ctx, "omega1_step, eps1_step, step_values, phi1", capacity, error)
+      return
+    end if
 
     coded%path = source%path
-    allocate (character(len=len(source%records)) :: coded%records(size(source%records)))
+    allocate (character(len=len(source%records)) :: coded%records(size(source%records)), stat=stat)
+    if (stat /= 0) then
+      call out_of_memory(error, "a copy of the deck's records", int(len(source%records), int64) * size(source%records))
+      error%message = ctx%path//": &"//ctx%group//": "//error%message
+      return
+    end if
     coded%records(:) = source%records(:)
     if (allocated(source%first_record)) coded%first_record = source%first_record
     if (allocated(source%record_length)) coded%record_length = source%record_length

@@ -2,9 +2,10 @@
 !> step table (`phi1`, every pair, crank pin, `M1`), and its table layout (magnitudes /
 !> angles / normal forces / reaction moments per step).
 module kinetostat_assur_layout
+  use, intrinsic :: iso_fortran_env, only: int64
   use kinetostat_kinds, only: wp, deg_to_rad, rad_to_deg
   use kinetostat_deck, only: deck_source_t
-  use kinetostat_error, only: error_t, fatal_error, exit_geometry
+  use kinetostat_error, only: error_t, fatal_error, exit_geometry, out_of_memory
   use kinetostat_text, only: int_str, upper
   use kinetostat_noise, only: noise_rel, force_components
   use kinetostat_vec2, only: magnitude, angle_360_deg, angle_180_deg, rotate, snap_noise, clean_zero
@@ -211,7 +212,7 @@ contains
     type(motion_t), allocatable :: motions(:)
     integer, allocatable :: slots(:)
     real(wp) :: crank
-    integer :: k, c, ip, nv, nc, np, first, last, nrow, first_bad
+    integer :: k, c, ip, nv, nc, np, first, last, nrow, first_bad, stat
     logical :: kinematics
     call table%block_range(self%deck%n, first, last)
     nrow = last - first + 1
@@ -277,10 +278,20 @@ contains
     crank = crank_length(self%deck)
     turn = pair_turns(self%deck)
     omega1 = assur_omega1_steps(self%deck, first, last)
-    call table%allocate_rows(nrow)
-    allocate (residual(nrow), mismatch(nrow), fsteps(merge(nrow, 0, self%deck%friction_on)), m1(nrow))
-    allocate (motions(merge(nrow, 0, self%deck%dyn%mode /= dynamics_none)))
-    allocate (motion(3, merge(nrow, 0, kinematics)), forces(2, np, merge(nrow, 0, kinematics)))
+    call table%allocate_rows(nrow, error)
+    if (allocated(error)) return
+    allocate (residual(nrow), stat=stat)
+    if (stat == 0) allocate (mismatch(nrow), stat=stat)
+    if (stat == 0) allocate (fsteps(merge(nrow, 0, self%deck%friction_on)), stat=stat)
+    if (stat == 0) allocate (m1(nrow), stat=stat)
+    if (stat == 0) allocate (motions(merge(nrow, 0, self%deck%dyn%mode /= dynamics_none)), stat=stat)
+    if (stat == 0) allocate (motion(3, merge(nrow, 0, kinematics)), stat=stat)
+    if (stat == 0) allocate (forces(2, np, merge(nrow, 0, kinematics)), stat=stat)
+    if (stat /= 0) then
+      call out_of_memory(error, "the results of a block of "//int_str(nrow)//" steps", &
+        int(nrow, int64) * (24 + 8 * (3 + 2 * np)))
+      return
+    end if
     ! steps in parallel with OpenMP threads; the error reported is the first step's in step order
     ! (that step is solved again alone for its message)
     first_bad = last + 1
@@ -573,15 +584,20 @@ contains
     type(error_t), allocatable :: step_error
     type(friction_step_t) :: fs
     type(step_loads_t) :: loads
-    integer :: k, k1, k2, first_bad
+    integer :: k, k1, k2, first_bad, stat
     logical :: keep_friction
     !> Crank speed of steps k1..k2, rad/s (a list's signs carry from step to step).
     real(wp), allocatable :: omega1(:)
     call step_span(deck%n, k1, k2, first, last)
-    allocate (steps(k2 - k1 + 1))
-    omega1 = assur_omega1_steps(deck, k1, k2)
+    allocate (steps(k2 - k1 + 1), stat=stat)
     keep_friction = present(fsteps)
-    if (keep_friction) allocate (fsteps(merge(k2 - k1 + 1, 0, deck%friction_on)))
+    if (stat == 0 .and. keep_friction) allocate (fsteps(merge(k2 - k1 + 1, 0, deck%friction_on)), stat=stat)
+    if (stat /= 0) then
+      call out_of_memory(error, "the results of a block of "//int_str(k2 - k1 + 1)//" steps", &
+        int(k2 - k1 + 1, int64) * (storage_size(steps) + storage_size(fs)) / 8)
+      return
+    end if
+    omega1 = assur_omega1_steps(deck, k1, k2)
     ! steps in parallel with OpenMP threads; the error reported is the first step's in step order
     ! (that step is solved again alone for its message)
     first_bad = k2 + 1

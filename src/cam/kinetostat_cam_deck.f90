@@ -4,7 +4,7 @@ module kinetostat_cam_deck
   use kinetostat_kinds, only: wp
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str, lower
-  use kinetostat_deck, only: &
+  use kinetostat_deck, only: values_out_of_memory, &
     begin_group, deck_context_t, unset_real, deck_array_capacities, &
     deck_source_t, namelist_probe_t, require_all_set, deck_error, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn
@@ -92,6 +92,7 @@ contains
     integer :: k
     !> Elements allocated for each per-step array the deck may give (see deck_array_capacities).
     integer, allocatable :: capacity(:)
+    integer :: stat
     type(deck_context_t) :: ctx
     type(namelist_probe_t) :: probe
     namelist /cam/ follower, l, l_over, f, f_cam, omega_dir, phi_start, dphi, n, theta, f2, vdir, ds_dphi
@@ -103,7 +104,14 @@ contains
     omega_dir = unset_real; phi_start = unset_real; dphi = unset_real
     n = unset_real
     capacity = deck_array_capacities(source, ctx%group, [character(len=7) :: "theta", "f2", "vdir", "ds_dphi"])
-    allocate (theta(capacity(1)), f2(capacity(2)), vdir(capacity(3)), ds_dphi(capacity(4)), source=unset_real)
+    allocate (theta(capacity(1)), source=unset_real, stat=stat)
+    if (stat == 0) allocate (f2(capacity(2)), source=unset_real, stat=stat)
+    if (stat == 0) allocate (vdir(capacity(3)), source=unset_real, stat=stat)
+    if (stat == 0) allocate (ds_dphi(capacity(4)), source=unset_real, stat=stat)
+    if (stat /= 0) then
+      call values_out_of_memory(ctx, "theta, f2, vdir, ds_dphi", capacity, error)
+      return
+    end if
 
     read (source%records, nml=cam, iostat=probe%ios, iomsg=probe%msg)
     do while (probe%retry(source)) ! on failure: find the line and the assignment

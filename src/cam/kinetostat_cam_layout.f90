@@ -1,9 +1,10 @@
 !> Cam follower as a mechanism of the run pipeline: deck -> every cam angle -> step table,
 !> and its table layout (one line per step; flags in words).
 module kinetostat_cam_layout
+  use, intrinsic :: iso_fortran_env, only: int64
   use kinetostat_kinds, only: wp, deg_to_rad, rad_to_deg
   use kinetostat_deck, only: deck_source_t
-  use kinetostat_error, only: error_t
+  use kinetostat_error, only: error_t, out_of_memory
   use kinetostat_text, only: int_str, number_str, counted
   use kinetostat_vec2, only: magnitude, angle_360_deg
   use kinetostat_noise, only: noise_floor, force_components
@@ -76,16 +77,23 @@ contains
   end subroutine read_deck
 
   !> All steps of a validated deck (in parallel with OpenMP threads).
-  subroutine cam_solve(deck, steps, first, last)
+  subroutine cam_solve(deck, steps, first, last, error)
     !> Validated deck.
     type(cam_deck_t), intent(in) :: deck
     !> One result per cam angle (of steps first..last).
     type(cam_step_t), allocatable, intent(out) :: steps(:)
     !> Steps to compute (default: all).
     integer, intent(in), optional :: first, last
-    integer :: k, k1, k2
+    !> The block's results do not fit in memory (exit 2).
+    type(error_t), allocatable, intent(out), optional :: error
+    integer :: k, k1, k2, stat
     call step_span(deck%n, k1, k2, first, last)
-    allocate (steps(k2 - k1 + 1))
+    allocate (steps(k2 - k1 + 1), stat=stat)
+    if (stat /= 0) then
+      if (present(error)) call out_of_memory(error, "the results of a block of "//int_str(k2 - k1 + 1)//" steps", &
+        int(k2 - k1 + 1, int64) * storage_size(steps) / 8)
+      return
+    end if
     !$omp parallel do schedule(static)
     do k = k1, k2
       steps(k - k1 + 1) = cam_step(deck%p, cam_theta_deg(deck, k) * deg_to_rad, cam_x_b(deck, k), deck%mu_cam, &
@@ -102,7 +110,8 @@ contains
     type(cam_step_t), allocatable :: steps(:)
     integer :: k, first, last
     call table%block_range(self%deck%n, first, last)
-    call cam_solve(self%deck, steps, first, last)
+    call cam_solve(self%deck, steps, first, last, error)
+    if (allocated(error)) return
     if (table%first_block()) then
       call table%set_columns(cam_csv_columns, column_units, column_kinds)
       table%input_column = 1
@@ -115,7 +124,8 @@ contains
       table%mismatch_label = "MAX N MISMATCH, CLOSED FORM VS 3X3 LINEAR SOLVE"
       call echo_deck(self%deck, table)
     end if
-    call table%allocate_rows(size(steps))
+    call table%allocate_rows(size(steps), error)
+    if (allocated(error)) return
     !$omp parallel do schedule(static)
     do k = 1, size(steps)
       table%rows(1:size(cam_csv_columns), k) = cam_csv_values(self%deck, steps(k), first - 1 + k)

@@ -306,7 +306,8 @@ contains
       if (.not. allocated(error)) call add_warnings(repeats, table)
       return
     end if
-    call apply_overrides(source, options%overrides, patched)
+    call apply_overrides(source, options%overrides, patched, error)
+    if (allocated(error)) return
     call run_mechanism(mech, group, patched, options, table, out, error, spool, show_progress)
     if (allocated(error)) then
       if (error%code == exit_input) call blame_override(source, group, options%overrides, error)
@@ -454,7 +455,8 @@ contains
       error%message = source%path//": &assur: "//error%message
       return
     end if
-    call apply_overrides(source, overrides, balanced)
+    call apply_overrides(source, overrides, balanced, error)
+    if (allocated(error)) return
     do i = 1, deck_line_count(balanced)
       call out%put(deck_line(balanced, i))
     end do
@@ -1013,7 +1015,7 @@ contains
         "kinetostat sweep DECK --vary ...")
     else if (args%balance .and. (args%format_given .or. args%options%shaking .or. args%options%kinematics .or. &
              allocated(args%options%overrides))) then
-      call fatal_error(error, exit_usage, "balance takes a deck, -o FILE, --method and --fraction only")
+      call fatal_error(error, exit_usage, "balance takes a deck, -o FILE, --method, --fraction and --lang only")
     else if (.not. args%balance .and. (args%fraction_given .or. args%balance_method /= balance_full)) then
       call fatal_error(error, exit_usage, "--method and --fraction belong to the balance subcommand: "// &
         "kinetostat balance DECK ...")

@@ -10,7 +10,7 @@
 module kinetostat_sweep
   use, intrinsic :: iso_fortran_env, only: error_unit, int64
   use kinetostat_kinds, only: wp
-  use kinetostat_error, only: error_t, fatal_error, exit_input
+  use kinetostat_error, only: error_t, fatal_error, exit_input, out_of_memory
   use kinetostat_text, only: int_str
   use kinetostat_deck, only: deck_source_t, read_group_name
   use kinetostat_override, only: override_t, parse_override, apply_overrides
@@ -214,7 +214,7 @@ contains
     character(len=:), allocatable :: group
     class(mechanism_t), allocatable :: probe
     logical :: with_shaking
-    integer :: n, v, done, last
+    integer :: n, v, done, last, stat
     integer(int64) :: start, rate
     logical :: shown
     with_shaking = .false.
@@ -234,7 +234,12 @@ contains
     end if
     first = int(int(n, int64) * (part - 1) / parts) + 1
     last = int(int(n, int64) * part / parts)
-    allocate (results(last - first + 1))
+    allocate (results(last - first + 1), stat=stat)
+    if (stat /= 0) then
+      call out_of_memory(error, "the results of "//int_str(last - first + 1)//" sweep variants", &
+        int(last - first + 1, int64) * storage_size(results) / 8)
+      return
+    end if
     do v = first, last
       results(v - first + 1)%overrides = variant_overrides(sets, varies, v)
     end do
@@ -495,10 +500,11 @@ contains
     type(text_buffer_t) :: out
     integer :: i
     if (present(deck_overrides)) then
-      call apply_overrides(source, deck_overrides, patched)
+      call apply_overrides(source, deck_overrides, patched, result%error)
     else
-      call apply_overrides(source, result%overrides, patched)
+      call apply_overrides(source, result%overrides, patched, result%error)
     end if
+    if (allocated(result%error)) return
     call create_mechanism(group, mech)
     options%format = format_summary
     options%shaking = shaking

@@ -8,7 +8,8 @@
 !> Title, deck path and deck title lines are ignored. Pure: the caller reads the files.
 module kinetostat_diff
   use kinetostat_kinds, only: wp, rad_to_deg
-  use kinetostat_error, only: error_t, fatal_error, exit_input
+  use, intrinsic :: iso_fortran_env, only: int64
+  use kinetostat_error, only: error_t, fatal_error, exit_input, out_of_memory
   use kinetostat_text, only: int_str, lower, clipped, starts_with
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_format, only: trimmed_es
@@ -118,6 +119,8 @@ module kinetostat_diff
     integer :: groups = 0
     !> Largest magnitude of a value in N in each group, N.
     real(wp), allocatable :: group_max(:)
+    !> Values read when the cells could not grow (out of memory); 0: none.
+    integer :: no_room = 0
   end type output_t
 
   !> Counts of a comparison.
@@ -526,6 +529,11 @@ contains
       if (allocated(error)) return
     else
       call fatal_error(error, exit_input, path//": not an output of kinetostat (neither a table nor a CSV file)")
+      return
+    end if
+    if (doc%no_room > 0) then
+      call out_of_memory(error, "the values of "//path//" (more than "//int_str(doc%no_room)//")", &
+        int(doc%no_room, int64) * storage_size(doc%cells) / 8)
       return
     end if
     call find_group_max(doc)
@@ -1009,8 +1017,15 @@ contains
     type(output_t), intent(inout) :: doc
     type(cell_t), intent(in) :: cell
     type(cell_t), allocatable :: grown(:)
+    integer :: stat
+    if (doc%no_room > 0) return
     if (doc%n == size(doc%cells)) then
-      allocate (grown(2 * size(doc%cells)))
+      allocate (grown(2 * size(doc%cells)), stat=stat)
+      if (stat /= 0) then
+        ! out of memory: parse_output reports it (the values read so far)
+        doc%no_room = doc%n
+        return
+      end if
       grown(1:doc%n) = doc%cells(1:doc%n)
       call move_alloc(grown, doc%cells)
     end if

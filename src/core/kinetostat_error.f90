@@ -1,8 +1,10 @@
 !> Error type carried out of fallible routines (fpm's pattern) and the exit codes of the spec.
 module kinetostat_error
+  use, intrinsic :: iso_fortran_env, only: int64
+  use kinetostat_text, only: int64_str
   implicit none
   private
-  public :: error_t, fatal_error
+  public :: error_t, fatal_error, out_of_memory
   public :: exit_success, exit_usage, exit_input, exit_geometry, exit_warning
 
   !> Exit code: success.
@@ -39,5 +41,17 @@ contains
     error%code = code
     error%message = message
   end subroutine fatal_error
+
+  !> The error of an allocation that failed (stat /= 0): exit 2, one line naming what did not
+  !> fit ("out of memory: no room for the deck's text (268435456 bytes)").
+  pure subroutine out_of_memory(error, what, bytes)
+    !> The error to create.
+    type(error_t), allocatable, intent(out) :: error
+    !> What was to be held ("the deck's text"), with the deck's name in front where known.
+    character(*), intent(in) :: what
+    !> Its size, bytes.
+    integer(int64), intent(in) :: bytes
+    call fatal_error(error, exit_input, "out of memory: no room for "//what//" ("//int64_str(bytes)//" bytes)")
+  end subroutine out_of_memory
 
 end module kinetostat_error

@@ -14,6 +14,9 @@ module kinetostat_text_buffer
     character(len=:), allocatable :: data
     !> Bytes in use.
     integer :: length = 0
+    !> Bytes the text would have held when it could not grow (out of memory): the text is
+    !> lost (emptied, so that writers go on without harm) and the run must stop; 0: none.
+    integer :: lost = 0
   contains
     procedure :: put
     procedure :: put_lines
@@ -74,15 +77,26 @@ contains
     !> Bytes needed, beyond the length in use.
     integer, intent(in) :: extra
     character(len=:), allocatable :: grown
-    integer :: need
+    integer :: need, stat
     need = self%length + extra
+    stat = 0
     if (.not. allocated(self%data)) then
-      allocate (character(len=max(initial_capacity, need)) :: self%data)
+      allocate (character(len=max(initial_capacity, need)) :: self%data, stat=stat)
     else if (need > len(self%data)) then
-      allocate (character(len=max(need, 2 * len(self%data))) :: grown)
-      grown(1:self%length) = self%data(1:self%length)
-      call move_alloc(grown, self%data)
+      allocate (character(len=max(need, 2 * len(self%data))) :: grown, stat=stat)
+      if (stat /= 0) allocate (character(len=need) :: grown, stat=stat)
+      if (stat == 0) then
+        grown(1:self%length) = self%data(1:self%length)
+        call move_alloc(grown, self%data)
+      end if
     end if
+    if (stat == 0) return
+    ! out of memory: the text is dropped (the run stops on `lost`); what is appended next goes
+    ! to a buffer just large enough, so that writers filling data directly go on unharmed
+    self%lost = max(self%lost, need)
+    self%length = 0
+    if (allocated(self%data)) deallocate (self%data)
+    allocate (character(len=max(1, extra)) :: self%data)
   end subroutine reserve
 
   !> The text so far.

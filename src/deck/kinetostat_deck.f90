@@ -5,9 +5,9 @@ module kinetostat_deck
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use, intrinsic :: iso_fortran_env, only: int64
   use kinetostat_kinds, only: wp
-  use kinetostat_error, only: error_t, fatal_error, exit_input
+  use kinetostat_error, only: error_t, fatal_error, exit_input, out_of_memory
   use kinetostat_text, only: real_str, int_str, int64_str, number_str, lower, printable, clipped
-  use kinetostat_deck_reader, only: read_bytes_limited, read_ok, read_too_long
+  use kinetostat_deck_reader, only: read_bytes_limited, read_ok, read_too_long, read_no_memory
   implicit none
   private
   public :: deck_context_t, unset_real, unset_bits, max_deck_array, max_steps
@@ -19,6 +19,7 @@ module kinetostat_deck
   public :: optional_default, count_values, steps_over_turn
   public :: check_namelist_syntax, longest_quoted, begin_group
   public :: deck_array_capacities, max_deck_size, set_max_deck_size, default_max_deck_size, assignment_starts
+  public :: values_out_of_memory
 
   !> Bit pattern of `unset_real`: a quiet NaN with a payload. A NaN typed in a deck
   !> ("nan", "NaN(0x1)") reads as the plain quiet NaN 7FF8000000000000, so no deck can
@@ -158,7 +159,8 @@ contains
       call read_bytes_limited("", max_deck_size, text, status)
       call check_read(stdin_deck_name, "cannot read the deck from standard input")
       if (allocated(error)) return
-      call deck_source_from_text(stdin_deck_name, text, source, cut_width)
+      call deck_source_from_text(stdin_deck_name, text, source, cut_width, error)
+      if (allocated(error)) error%message = stdin_deck_name//": "//error%message
       return
     end if
     name = printable(path)
@@ -175,7 +177,13 @@ contains
         " bytes, more than the limit of "//int64_str(max_deck_size)//" bytes (raise it with --max-deck-size)")
       return
     else if (file_size > 0) then
-      allocate (character(len=file_size) :: text)
+      allocate (character(len=file_size) :: text, stat=status)
+      if (status /= 0) then
+        close (unit)
+        call out_of_memory(error, "the deck's text", file_size)
+        error%message = name//": "//error%message
+        return
+      end if
       read (unit, iostat=ios, iomsg=msg) text
       close (unit)
       if (ios /= 0) then
@@ -190,7 +198,8 @@ contains
       call check_read(name, "cannot read deck")
       if (allocated(error)) return
     end if
-    call deck_source_from_text(path, text, source, cut_width)
+    call deck_source_from_text(path, text, source, cut_width, error)
+    if (allocated(error)) error%message = name//": "//error%message
   contains
     !> The error of a read in chunks (none when all was read).
     subroutine check_read(deck_name, failure)
@@ -201,6 +210,9 @@ contains
       case (read_too_long)
         call fatal_error(error, exit_input, deck_name//": the deck is longer than the limit of "// &
           int64_str(max_deck_size)//" bytes (endless input? raise the limit with --max-deck-size)")
+      case (read_no_memory)
+        call fatal_error(error, exit_input, deck_name//": out of memory: no room for the deck's text (more than "// &
+          int64_str(int(len(text), int64))//" bytes read)")
       case default
         call fatal_error(error, exit_input, deck_name//": "//failure)
       end select
@@ -218,7 +230,7 @@ contains
   !> leading UTF-8 byte-order mark dropped; a last line without LF is kept. A line is one
   !> record, unless cutting long lines into records (see `cut_line`) at the width that
   !> needs the least memory (see `chosen_cut_width`) saves 1 MiB or more.
-  pure subroutine deck_source_from_text(name, text, source, cut_width)
+  pure subroutine deck_source_from_text(name, text, source, cut_width, error)
     !> Name of the deck in messages.
     character(*), intent(in) :: name
     !> The deck's text.
@@ -228,6 +240,9 @@ contains
     !> Cut the lines longer than this (characters; huge(1): none; default or < 1: chosen
     !> as above).
     integer, intent(in), optional :: cut_width
+    !> The records do not fit in memory ("out of memory: ...", exit 2); when not given, the
+    !> allocation's own failure ends the program.
+    type(error_t), allocatable, intent(out), optional :: error
     character(len=*), parameter :: bom = char(239)//char(187)//char(191)
     integer :: first
     first = 1
@@ -236,9 +251,9 @@ contains
     end if
     source%path = name
     if (index(text, char(255)) > 0) then
-      call records_from_text(without_comment_ff(text(first:)), source, cut_width)
+      call records_from_text(without_comment_ff(text(first:)), source, cut_width, error)
     else
-      call records_from_text(text(first:), source, cut_width)
+      call records_from_text(text(first:), source, cut_width, error)
     end if
   end subroutine deck_source_from_text
 
@@ -287,17 +302,21 @@ contains
   end function without_comment_ff
 
   !> The records of `text` (see deck_source_from_text; no byte-order mark handling).
-  pure subroutine records_from_text(text, source, cut_width)
+  pure subroutine records_from_text(text, source, cut_width, error)
     !> The deck's text.
     character(*), intent(in) :: text
     !> The deck (its `path` is left as it is).
     type(deck_source_t), intent(inout) :: source
     !> Cut the lines longer than this (characters; huge(1): none; default or < 1: chosen).
     integer, intent(in), optional :: cut_width
+    !> The records do not fit in memory (when given; without it, the allocation's own
+    !> failure ends the program).
+    type(error_t), allocatable, intent(out), optional :: error
     character(len=*), parameter :: lf = achar(10), cr = achar(13)
     !> Saving in bytes below which no line is cut (when the width is chosen).
     integer(int64), parameter :: least_saving = 1048576
     integer, allocatable :: line_start(:), line_end(:), lengths(:)
+    integer :: stat
     integer :: n_lines, longest, i, k, s, n_records, width, depth, r, at, group_line, fixed
     character(len=1) :: quote
     ! where the lines are
@@ -308,7 +327,12 @@ contains
       n_lines = n_lines + 1
       s = i
     end do
-    allocate (line_start(n_lines), line_end(n_lines))
+    allocate (line_start(n_lines), stat=stat)
+    if (stat == 0) allocate (line_end(n_lines), stat=stat)
+    if (stat /= 0) then
+      if (present(error)) call out_of_memory(error, "the deck's line table", 8_int64 * n_lines)
+      return
+    end if
     s = 1
     do k = 1, n_lines
       line_start(k) = s
@@ -354,7 +378,11 @@ contains
     if (width >= longest) then
       ! one record per line
       if (allocated(source%first_record)) deallocate (source%first_record)
-      allocate (character(len=longest) :: source%records(n_lines))
+      allocate (character(len=longest) :: source%records(n_lines), stat=stat)
+      if (stat /= 0) then
+        if (present(error)) call out_of_memory(error, "the deck's lines", int(longest, int64) * n_lines)
+        return
+      end if
       do k = 1, n_lines
         source%records(k) = text(line_start(k):line_end(k))
       end do
@@ -365,7 +393,11 @@ contains
     source%record_length = lengths(1:n_records)
     deallocate (lengths)
     width = record_width(source%record_length)
-    allocate (character(len=width) :: source%records(n_records))
+    allocate (character(len=width) :: source%records(n_records), stat=stat)
+    if (stat /= 0) then
+      if (present(error)) call out_of_memory(error, "the deck's records", int(width, int64) * n_records)
+      return
+    end if
     do k = 1, n_lines
       at = line_start(k)
       do r = source%first_record(k), source%first_record(k + 1) - 1
@@ -1671,6 +1703,19 @@ contains
   end subroutine require_all_set
 
   !> An input error about one variable: "<deck>: &<group>: <name>: <reason>".
+  !> The error of a deck's per-step arrays that could not be allocated (exit 2): "deck.nml:
+  !> &group: out of memory: no room for the values of omega3, eps3 (16000000 bytes)".
+  pure subroutine values_out_of_memory(ctx, names, counts, error)
+    type(deck_context_t), intent(in) :: ctx
+    !> The arrays, comma-separated.
+    character(*), intent(in) :: names
+    !> Their sizes, values.
+    integer, intent(in) :: counts(:)
+    type(error_t), allocatable, intent(out) :: error
+    call fatal_error(error, exit_input, ctx%path//": &"//ctx%group//": out of memory: no room for the values of "// &
+      names//" ("//int64_str(8_int64 * sum(int(counts, int64)))//" bytes)")
+  end subroutine values_out_of_memory
+
   pure subroutine deck_error(ctx, name, reason, error)
     !> Deck and group.
     type(deck_context_t), intent(in) :: ctx

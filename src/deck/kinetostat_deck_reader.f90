@@ -6,7 +6,7 @@ module kinetostat_deck_reader
   use kinetostat_posix, only: open_read, read_fd, close_fd
   implicit none
   private
-  public :: read_bytes_limited, read_ok, read_too_long, read_failed, read_not_opened
+  public :: read_bytes_limited, read_ok, read_too_long, read_failed, read_not_opened, read_no_memory
 
   !> Bytes asked for by one read.
   integer, parameter :: chunk = 65536
@@ -18,6 +18,8 @@ module kinetostat_deck_reader
   integer, parameter :: read_failed = 2
   !> Status: the path could not be opened.
   integer, parameter :: read_not_opened = 3
+  !> Status: the text read so far could not grow (out of memory; the text is what was read).
+  integer, parameter :: read_no_memory = 4
 
 contains
 
@@ -32,11 +34,11 @@ contains
     integer(int64), intent(in) :: limit
     !> The bytes read (at most `limit`; empty when not opened).
     character(len=:), allocatable, intent(out) :: text
-    !> read_ok, read_too_long, read_failed or read_not_opened.
+    !> read_ok, read_too_long, read_failed, read_not_opened or read_no_memory.
     integer, intent(out) :: status
     character(len=:), allocatable :: piece, grown
     integer(int64) :: n, got
-    integer :: fd
+    integer :: fd, stat
     fd = 0
     if (len(path) > 0) then
       fd = open_read(path)
@@ -54,7 +56,11 @@ contains
       if (got < 0) status = read_failed
       if (got <= 0) exit
       if (n + got > len(text, int64)) then
-        allocate (character(len=min(2 * len(text, int64), limit + chunk)) :: grown)
+        allocate (character(len=min(2 * len(text, int64), limit + chunk)) :: grown, stat=stat)
+        if (stat /= 0) then
+          status = read_no_memory
+          exit
+        end if
         grown(1:n) = text(1:n)
         call move_alloc(grown, text)
       end if
@@ -70,6 +76,7 @@ contains
       if (close_fd(fd) /= 0 .and. status == read_ok) status = read_failed
     end if
     if (status == read_failed) n = 0
+    if (status == read_no_memory) return
     text = text(1:n)
   end subroutine read_bytes_limited
 

@@ -12,9 +12,10 @@
 !> between the panel bounds (where eps = 0, by bisection in the panels next to the extreme
 !> bound) and at the bounds themselves (a load switch, where omega has a kink).
 module kinetostat_dynamics
+  use, intrinsic :: iso_fortran_env, only: int64
   use kinetostat_kinds, only: wp, pi, rad_to_deg
-  use kinetostat_error, only: error_t, fatal_error, exit_input, exit_geometry
-  use kinetostat_text, only: real_str
+  use kinetostat_error, only: error_t, fatal_error, exit_input, exit_geometry, out_of_memory
+  use kinetostat_text, only: real_str, int_str
   implicit none
   private
   public :: reduced_t, reduced_source_t, cycle_t, motion_t
@@ -181,7 +182,7 @@ contains
     real(wp), allocatable :: bounds(:), all_breaks(:)
     real(wp) :: b, w, span, c, h
     type(reduced_t) :: red
-    integer :: i, k, np, pieces, q
+    integer :: i, k, np, pieces, q, stat
 
     cycle%phi0 = phi0
     cycle%j_rotor = j_rotor
@@ -220,7 +221,17 @@ contains
     do i = 1, size(bounds) - 1
       np = np + max(1, ceiling((bounds(i + 1) - bounds(i)) / panel_max - 1.0e-9_wp))
     end do
-    allocate (cycle%node(0:np), cycle%dt(0:np), cycle%j(0:np), cycle%time(0:np))
+    allocate (cycle%node(0:np), stat=stat)
+    if (stat == 0) allocate (cycle%dt(0:np), stat=stat)
+    if (stat == 0) allocate (cycle%j(0:np), stat=stat)
+    if (stat == 0) allocate (cycle%time(0:np), stat=stat)
+    if (stat == 0) allocate (cycle%m_gl(8, np), stat=stat)
+    if (stat == 0) allocate (cycle%r_gl(8, np), stat=stat)
+    if (stat /= 0) then
+      call out_of_memory(error, "the "//int_str(np)//" panels of the cycle's quadrature", 160_int64 * np)
+      error%message = where//": dynamics: "//error%message
+      return
+    end if
     k = 0
     cycle%node(0) = phi0
     do i = 1, size(bounds) - 1
@@ -237,7 +248,6 @@ contains
     ! M_red at each panel's Gauss-Legendre points; its work at the bounds (stored in dt until
     ! M_d is known)
     cycle%basis = lagrange_basis()
-    allocate (cycle%m_gl(8, np), cycle%r_gl(8, np))
     cycle%dt(0) = 0.0_wp
     do k = 1, np
       c = 0.5_wp * (cycle%node(k - 1) + cycle%node(k))

@@ -105,7 +105,8 @@ contains
     call gears_solve(self%deck, res)
     call table%set_columns(gears_csv_columns, column_units, column_kinds)
     table%row_name = "stage"
-    call table%allocate_rows(size(res))
+    call table%allocate_rows(size(res), error)
+    if (allocated(error)) return
     do i = 1, size(res)
       table%rows(:, i) = gears_csv_values(self%deck, res, i)
     end do

@@ -9,7 +9,7 @@ module kinetostat_linkage_deck
   use kinetostat_kinds, only: wp, g_default, deg_to_rad
   use kinetostat_error, only: error_t
   use kinetostat_text, only: int_str, lower
-  use kinetostat_deck, only: longest_quoted, begin_group, &
+  use kinetostat_deck, only: values_out_of_memory, longest_quoted, begin_group, &
     deck_context_t, unset_bits, deck_source_t, namelist_probe_t, &
     deck_error, is_set, require_set, require_nonnegative, require_rule, require_per_step, optional_default, count_values, &
     require_whole, deck_array_capacities
@@ -195,6 +195,7 @@ contains
     type(force_in_t) :: force(max_forces)
     type(moment_in_t) :: moment(max_moments)
     integer, allocatable :: capacity(:), ids(:)
+    integer :: stat
     type(deck_context_t) :: ctx
     type(namelist_probe_t) :: probe
     character(len=:), allocatable :: p
@@ -209,7 +210,11 @@ contains
     frame = 0.0_wp; g = unset; gravity_angle = unset; n = unset
     allocate (drive(max_drives))
     capacity = deck_array_capacities(source, ctx%group, [character(len=11) :: "step_values"])
-    allocate (step_values(capacity(1)), source=unset)
+    allocate (step_values(capacity(1)), source=unset, stat=stat)
+    if (stat /= 0) then
+      call values_out_of_memory(ctx, "step_values", capacity, error)
+      return
+    end if
     call check_text_lengths(source, ctx, error)
     if (allocated(error)) return
     read (source%records, nml=linkage, iostat=probe%ios, iomsg=probe%msg)
@@ -431,7 +436,11 @@ contains
     call require_rule(ctx, "n", nsteps > 0, "missing (required when no drive gives a list of values)", error)
     if (allocated(error)) return
     deck%n = nsteps
-    allocate (deck%values(nsteps, nd), source=0.0_wp)
+    allocate (deck%values(nsteps, nd), source=0.0_wp, stat=stat)
+    if (stat /= 0) then
+      call values_out_of_memory(ctx, "the drives", [nsteps * nd], error)
+      return
+    end if
     !GCC$ novector
     do k = 1, nd
       if (deck%listed(k)) then

@@ -3,9 +3,10 @@
 !> input, every pair's force, each drive's effort), its INPUT DATA echo with the structural
 !> analysis, and the legacy table layout.
 module kinetostat_linkage_layout
+  use, intrinsic :: iso_fortran_env, only: int64
   use kinetostat_kinds, only: wp, rad_to_deg, deg_to_rad
   use kinetostat_deck, only: deck_source_t
-  use kinetostat_error, only: error_t
+  use kinetostat_error, only: error_t, out_of_memory
   use kinetostat_text, only: int_str, real_str
   use kinetostat_noise, only: noise_rel
   use kinetostat_vec2, only: magnitude, angle_360_deg, clean_zero, rotate
@@ -351,7 +352,7 @@ contains
     type(linkage_step_t), allocatable :: steps(:)
     real(wp), allocatable :: q(:), dq(:), residual(:), mismatch(:)
     character(len=:), allocatable :: input, effort
-    integer :: first, last, k, d, nd, np, nq
+    integer :: first, last, k, d, nd, np, nq, stat
     real(wp) :: gap
     associate (mech => self%deck%mech)
       nd = size(mech%drives)
@@ -402,11 +403,17 @@ contains
       end if
       q = table%carry(1:nq)
       dq = table%carry(nq + 1:nq + nd)
-      allocate (steps(first:last))
+      allocate (steps(first:last), stat=stat)
+      if (stat /= 0) then
+        call out_of_memory(error, "the results of a block of "//int_str(last - first + 1)// &
+          " steps", int(last - first + 1, int64) * storage_size(steps) / 8)
+        return
+      end if
       call linkage_solve_steps(self%deck, table%deck, first, last, q, dq, steps, error)
       if (allocated(error)) return
       table%carry = [q, dq]
-      call table%allocate_rows(last - first + 1)
+      call table%allocate_rows(last - first + 1, error)
+      if (allocated(error)) return
       allocate (residual(first:last), mismatch(first:last))
       gap = 0.0_wp
       !GCC$ novector

@@ -13,7 +13,7 @@
 module kinetostat_row_keeper
   use, intrinsic :: iso_fortran_env, only: int64
   use kinetostat_kinds, only: wp
-  use kinetostat_error, only: error_t, fatal_error, exit_input
+  use kinetostat_error, only: error_t, out_of_memory
   use kinetostat_text, only: int_str
   use kinetostat_step_table, only: step_table_t
   implicit none
@@ -93,7 +93,8 @@ contains
     if (n_block == 0) return
     ! the candidates: the kept rows still open, then the block's rows
     n_open = self%count - self%closed
-    allocate (pool(nc, n_open + n_block), numbers(n_open + n_block), stat=stat)
+    allocate (pool(nc, n_open + n_block), stat=stat)
+    if (stat == 0) allocate (numbers(n_open + n_block), stat=stat)
     if (stat /= 0) then
       call no_room(nc, n_open + n_block, error)
       return
@@ -162,7 +163,8 @@ contains
       if (allocated(self%numbers)) capacity = size(self%numbers)
       if (need > capacity) then
         capacity = max(need, 2 * capacity, 64)
-        allocate (grown(nc, capacity), grown_numbers(capacity), stat=stat)
+        allocate (grown(nc, capacity), stat=stat)
+        if (stat == 0) allocate (grown_numbers(capacity), stat=stat)
         if (stat /= 0) then
           call no_room(nc, capacity, error)
           return
@@ -251,8 +253,8 @@ contains
   pure subroutine no_room(columns, rows, error)
     integer, intent(in) :: columns, rows
     type(error_t), allocatable, intent(out) :: error
-    call fatal_error(error, exit_input, "out of memory: the "//int_str(rows)//" rows of "//int_str(columns)// &
-      " columns a drawing keeps do not fit")
+    call out_of_memory(error, "the "//int_str(rows)//" rows of "//int_str(columns)//" columns a drawing keeps", &
+      8_int64 * rows * columns)
   end subroutine no_room
 
 end module kinetostat_row_keeper

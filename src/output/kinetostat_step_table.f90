@@ -6,6 +6,8 @@ module kinetostat_step_table
   use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
   use, intrinsic :: iso_fortran_env, only: int64
   use kinetostat_kinds, only: wp, rad_to_deg
+  use kinetostat_error, only: error_t, out_of_memory
+  use kinetostat_text, only: int_str, int64_str
   implicit none
   private
   public :: step_table_t, column_t, echo_record_t, echo_cursor_t, remark_t, column_tally_t, edge_point_t, step_span, worst_row
@@ -273,6 +275,9 @@ module kinetostat_step_table
     !> (kinetostat_row_keeper: the row of --at K, a long run's extremes for the SVG sheet);
     !> not allocated: the rows are row_offset+1 .. row_offset+row_count().
     integer, allocatable :: row_numbers(:)
+    !> What did not fit in memory, when an allocation of the table failed ("the echo of
+    !> OMEGA3 (1000000 values) (8000000 bytes)"; the run pipeline stops with exit 2).
+    character(len=:), allocatable :: no_room
     !> Values a mechanism keeps from one block to the next (counts, sums, the last step's
     !> values); its own layout, not allocated before the first block.
     real(wp), allocatable :: carry(:)
@@ -321,6 +326,7 @@ module kinetostat_step_table
     procedure :: shaft_inertia
     procedure :: allocate_rows
     procedure :: row_count
+    procedure :: lack_room
     procedure :: run_row
     procedure :: run_rows
     procedure :: add_warning
@@ -653,12 +659,18 @@ contains
   end function shaft_inertia
 
   !> Allocate `n` rows of zeros for the columns defined so far.
-  pure subroutine allocate_rows(self, n)
+  pure subroutine allocate_rows(self, n, error)
     class(step_table_t), intent(inout) :: self
     !> Number of rows.
     integer, intent(in) :: n
+    !> The rows do not fit in memory (exit 2; when given: without it, the allocation's own
+    !> failure ends the program).
+    type(error_t), allocatable, intent(out), optional :: error
+    integer :: stat
     if (allocated(self%rows)) deallocate (self%rows)
-    allocate (self%rows(size(self%columns), n), source=0.0_wp)
+    allocate (self%rows(size(self%columns), n), source=0.0_wp, stat=stat)
+    if (stat /= 0 .and. present(error)) call out_of_memory(error, "the rows of a block of "//int_str(n)// &
+      " steps of "//int_str(size(self%columns))//" columns", 8_int64 * n * size(self%columns))
   end subroutine allocate_rows
 
   !> Whether column `c` holds whole numbers (flags and counts), written without a fraction.
@@ -739,6 +751,15 @@ contains
     if (allocated(self%rows)) row_count = size(self%rows, 2)
   end function row_count
 
+  !> Note an allocation of the table that failed: what did not fit and its size (the first
+  !> one is kept; kinetostat_run stops the run with it).
+  pure subroutine lack_room(self, what, bytes)
+    class(step_table_t), intent(inout) :: self
+    character(*), intent(in) :: what
+    integer(int64), intent(in) :: bytes
+    if (.not. allocated(self%no_room)) self%no_room = what//" ("//int64_str(bytes)//" bytes)"
+  end subroutine lack_room
+
   !> The run's row number of row k of the rows held (the step of a drawing, of a deck's
   !> per-step values).
   pure integer function run_row(self, k)
@@ -775,9 +796,15 @@ contains
     class(step_table_t), intent(inout) :: self
     !> The load's value at every row (any unit).
     real(wp), intent(in) :: values(:)
-    integer :: n, other
+    integer :: n, other, stat
     n = size(values)
-    if (.not. allocated(self%load_changes)) allocate (self%load_changes(n), source=.false.)
+    if (.not. allocated(self%load_changes)) then
+      allocate (self%load_changes(n), source=.false., stat=stat)
+      if (stat /= 0) then
+        call self%lack_room("the load switches of "//int_str(n)//" steps", 4_int64 * n)
+        return
+      end if
+    end if
     if (n < 2 .or. size(self%load_changes) /= n) return
     other = findloc(values /= values(1), .true., dim=1)
     if (other == 0) return
@@ -924,7 +951,7 @@ contains
     real(wp), intent(in) :: values(:)
     !> Unit text.
     character(*), intent(in) :: unit
-    integer :: runs, i, r
+    integer :: runs, i, r, stat
     call push_echo(self, echo_record_t(kind=echo_array_kind, name=name, unit=unit))
     associate (e => self%echo(self%echo_count))
       ! runs of equal bits (so -0 and 0, and NaNs, stay apart and come back as they were)
@@ -934,9 +961,19 @@ contains
       end do
       ! a run costs a value and an index: keep runs only when they save memory
       if (3 * runs > 2 * size(values)) then
+        allocate (e%values(size(values)), stat=stat)
+        if (stat /= 0) then
+          call self%lack_room("the echo of "//name//" ("//int_str(size(values))//" values)", 8_int64 * size(values))
+          return
+        end if
         e%values = values
       else
-        allocate (e%values(runs), e%run_end(runs))
+        allocate (e%values(runs), stat=stat)
+        if (stat == 0) allocate (e%run_end(runs), stat=stat)
+        if (stat /= 0) then
+          call self%lack_room("the echo of "//name//" ("//int_str(runs)//" runs of values)", 12_int64 * runs)
+          return
+        end if
         r = min(size(values), 1)
         if (r == 1) then
           e%values(1) = values(1)

@@ -5,7 +5,8 @@
 !> deck does not have is added the same way. Overridden values are marked in the INPUT DATA
 !> echo.
 module kinetostat_override
-  use kinetostat_error, only: error_t, fatal_error, exit_input
+  use, intrinsic :: iso_fortran_env, only: int64
+  use kinetostat_error, only: error_t, fatal_error, exit_input, out_of_memory
   use kinetostat_text, only: upper
   use kinetostat_deck, only: deck_source_t, deck_source_from_text, deck_line_count, deck_line, deck_line_length
   use kinetostat_step_table, only: step_table_t, echo_heading_kind, echo_line_kind
@@ -129,16 +130,19 @@ contains
   !> before the closing '/' (or '&end') of its first namelist group; the deck's own lines
   !> keep their numbers. A deck whose first group is not closed gets them at its end (its
   !> READ then fails as the deck alone would).
-  pure subroutine apply_overrides(source, overrides, patched)
+  pure subroutine apply_overrides(source, overrides, patched, error)
     !> The deck as read.
     type(deck_source_t), intent(in) :: source
     !> The overrides, in command-line order.
     type(override_t), intent(in) :: overrides(:)
     !> The deck to read.
     type(deck_source_t), intent(out) :: patched
+    !> The patched deck does not fit in memory (exit 2; when given: without it, the
+    !> allocation's own failure ends the program).
+    type(error_t), allocatable, intent(out), optional :: error
     character(*), parameter :: lf = achar(10)
     character(len=:), allocatable :: text, added, line
-    integer :: k, col, i, at, size_text
+    integer :: k, col, i, at, size_text, stat
     added = ""
     do i = 1, size(overrides)
       added = added//"  "//overrides(i)%name//" = "//overrides(i)%value//lf
@@ -149,7 +153,14 @@ contains
     do i = 1, deck_line_count(source)
       size_text = size_text + deck_line_length(source, i) + 1
     end do
-    allocate (character(len=size_text) :: text)
+    allocate (character(len=size_text) :: text, stat=stat)
+    if (stat /= 0) then
+      if (present(error)) then
+        call out_of_memory(error, "the deck with its --set overrides", int(size_text, int64))
+        error%message = source%path//": "//error%message
+      end if
+      return
+    end if
     at = 0
     do i = 1, deck_line_count(source)
       line = deck_line(source, i)
@@ -162,7 +173,10 @@ contains
       end if
     end do
     if (k == 0) call put(text, at, added)
-    call deck_source_from_text(source%path, text(1:at), patched)
+    call deck_source_from_text(source%path, text(1:at), patched, error=error)
+    if (present(error)) then
+      if (allocated(error)) error%message = source%path//": "//error%message
+    end if
   end subroutine apply_overrides
 
   !> The line of the first override in the deck apply_overrides writes (override i is on

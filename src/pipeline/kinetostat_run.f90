@@ -3,9 +3,10 @@
 !> buffer. The caller writes the buffer out only when all of this succeeded.
 module kinetostat_run
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+  use, intrinsic :: iso_fortran_env, only: int64
   use kinetostat_kinds, only: wp
   use kinetostat_selfcheck, only: selfcheck_tolerance
-  use kinetostat_error, only: error_t, fatal_error, exit_geometry
+  use kinetostat_error, only: error_t, fatal_error, exit_geometry, exit_input, out_of_memory
   use kinetostat_text, only: int_str
   use kinetostat_format, only: trimmed_es
   use kinetostat_step_table, only: step_table_t, echo_cursor_t, echo_real_kind, echo_array_kind
@@ -203,7 +204,16 @@ contains
       type(error_t), allocatable, intent(out) :: error
       character(len=:), allocatable :: warning
       call mech%solve(table, error)
-      if (allocated(error)) return
+      if (allocated(error)) then
+        if (index(error%message, "out of memory:") == 1) error%message = table%deck//": &"//group//": "// &
+          error%message
+        return
+      end if
+      if (allocated(table%no_room)) then
+        call fatal_error(error, exit_input, table%deck//": &"//group//": out of memory: no room for "// &
+          table%no_room)
+        return
+      end if
       ! a mechanism without blocks (gears) gives all its rows at once
       if (table%total_rows == 0) table%total_rows = table%row_count()
       call table%finish_columns()
@@ -286,6 +296,8 @@ contains
           call write_table_tail(table, options%lang, out)
         end if
       end select
+      call check_text_room(error)
+      if (allocated(error)) return
       if (.not. present(spool)) return
       call spool%drain(out, error)
       if (allocated(error)) return
@@ -365,8 +377,18 @@ contains
     !> Between parts of the head: the text so far to the spool (when over its bound).
     subroutine drain_head(error)
       type(error_t), allocatable, intent(out) :: error
+      call check_text_room(error)
+      if (allocated(error)) return
       if (present(spool)) call spool%drain(out, error)
     end subroutine drain_head
+
+    !> The output's text could not grow (out of memory): the run stops (exit 2).
+    subroutine check_text_room(error)
+      type(error_t), allocatable, intent(out) :: error
+      integer :: bytes
+      bytes = max(out%lost, later%lost, shaking%lost)
+      if (bytes > 0) call out_of_memory(error, table%deck//": the output's text", int(bytes, int64))
+    end subroutine check_text_room
   end subroutine run_mechanism
 
   !> The mechanism at row options%at_step, drawn from its sketch.

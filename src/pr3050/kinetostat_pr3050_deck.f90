@@ -3,7 +3,7 @@ module kinetostat_pr3050_deck
   use kinetostat_kinds, only: wp, g_default, deg_to_rad
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str
-  use kinetostat_deck, only: begin_group, deck_context_t, unset_real, deck_array_capacities, max_steps, &
+  use kinetostat_deck, only: values_out_of_memory, begin_group, deck_context_t, unset_real, deck_array_capacities, max_steps, &
     deck_source_t, namelist_probe_t, require_all_set, require_set, require_positive, &
     require_nonnegative, require_rule, require_per_step, optional_default, count_values
   use kinetostat_pr3050, only: pr3050_params_t
@@ -111,6 +111,7 @@ contains
     real(wp) :: j_rotor
     !> Elements allocated for each per-step array the deck may give (see deck_array_capacities).
     integer, allocatable :: capacity(:)
+    integer :: stat
     type(deck_context_t) :: ctx
     type(namelist_probe_t) :: probe
     namelist /pr3050/ l_ca, l_cb, l_cs3, delta, l_bs2, l_s1a, gamma, g, m1, m2, m3, j1, j2, j3, &
@@ -125,8 +126,16 @@ contains
     phi3_start = unset_real; phi3_end = unset_real; dphi3 = unset_real
     dynamics = ""; j_rotor = unset_real
     capacity = deck_array_capacities(source, ctx%group, [character(len=6) :: "omega3", "eps3"])
-    allocate (omega3(capacity(1)), source=unset_real)
-    allocate (eps3(capacity(2)), source=unset_real)
+    allocate (omega3(capacity(1)), source=unset_real, stat=stat)
+    if (stat /= 0) then
+      call values_out_of_memory(ctx, "omega3", capacity(1:1), error)
+      return
+    end if
+    allocate (eps3(capacity(2)), source=unset_real, stat=stat)
+    if (stat /= 0) then
+      call values_out_of_memory(ctx, "eps3", capacity(2:2), error)
+      return
+    end if
 
     read (source%records, nml=pr3050, iostat=probe%ios, iomsg=probe%msg)
     do while (probe%retry(source)) ! on failure: find the line and the assignment

@@ -1,9 +1,10 @@
 !> PR 3050 as a mechanism of the run pipeline: deck -> every rocker step -> step table, and
 !> the legacy table layout (one E-format line per step, then the prismatic-pair block).
 module kinetostat_pr3050_layout
+  use, intrinsic :: iso_fortran_env, only: int64
   use kinetostat_kinds, only: wp, deg_to_rad
   use kinetostat_deck, only: deck_source_t
-  use kinetostat_error, only: error_t
+  use kinetostat_error, only: error_t, out_of_memory
   use kinetostat_text, only: int_str, real_str
   use kinetostat_vec2, only: angle_360_deg
   use kinetostat_noise, only: noise_rel, noise_floor, force_columns, force_components, angles_0_360
@@ -125,9 +126,14 @@ contains
     !> Steps to compute (default: all).
     integer, intent(in), optional :: first, last
     type(error_t), allocatable :: step_error
-    integer :: k, k1, k2, first_bad
+    integer :: k, k1, k2, first_bad, stat
     call step_span(deck%n, k1, k2, first, last)
-    allocate (steps(k2 - k1 + 1))
+    allocate (steps(k2 - k1 + 1), stat=stat)
+    if (stat /= 0) then
+      call out_of_memory(error, "the results of a block of "//int_str(k2 - k1 + 1)//" steps", &
+        int(k2 - k1 + 1, int64) * storage_size(steps) / 8)
+      return
+    end if
     ! steps in parallel with OpenMP threads; the error reported is the first step's in step order
     first_bad = k2 + 1
     !$omp parallel do schedule(static) private(step_error) reduction(min:first_bad)
@@ -199,7 +205,8 @@ contains
       call echo_deck(self%deck, table)
     end if
     nc = size(pr3050_csv_columns)
-    call table%allocate_rows(size(steps))
+    call table%allocate_rows(size(steps), error)
+    if (allocated(error)) return
     !$omp parallel do schedule(static) private(floor, n21, m21)
     do k = 1, size(steps)
       associate (v => table%rows(:, k), s => steps(k))

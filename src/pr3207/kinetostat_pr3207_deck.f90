@@ -3,7 +3,7 @@ module kinetostat_pr3207_deck
   use kinetostat_kinds, only: wp, g_default
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str
-  use kinetostat_deck, only: &
+  use kinetostat_deck, only: values_out_of_memory, &
     begin_group, deck_context_t, unset_real, deck_array_capacities, &
     deck_source_t, namelist_probe_t, require_all_set, deck_error, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, require_per_step, optional_default, count_values, steps_over_turn
@@ -113,6 +113,7 @@ contains
     integer :: n_f5c
     !> Elements allocated for each per-step array the deck may give (see deck_array_capacities).
     integer, allocatable :: capacity(:)
+    integer :: stat
     type(deck_context_t) :: ctx
     type(namelist_probe_t) :: probe
     logical :: two_value_given
@@ -129,7 +130,11 @@ contains
     dynamics = ""; delta = unset_real; j_rotor = unset_real; j_flywheel = unset_real
     md_table = unset_real
     capacity = deck_array_capacities(source, ctx%group, ["f5c"])
-    allocate (f5c(capacity(1)), source=unset_real)
+    allocate (f5c(capacity(1)), source=unset_real, stat=stat)
+    if (stat /= 0) then
+      call values_out_of_memory(ctx, "f5c", capacity, error)
+      return
+    end if
 
     read (source%records, nml=pr3207, iostat=probe%ios, iomsg=probe%msg)
     do while (probe%retry(source)) ! on failure: find the line and the assignment

@@ -1,9 +1,11 @@
 !> PR 3207 as a mechanism of the run pipeline: deck -> every crank step -> step table, and
 !> the legacy table layout of the 1991 printout (two lines per step).
 module kinetostat_pr3207_layout
+  use, intrinsic :: iso_fortran_env, only: int64
   use kinetostat_kinds, only: wp, deg_to_rad, rad_to_deg
   use kinetostat_deck, only: deck_source_t
-  use kinetostat_error, only: error_t
+  use kinetostat_text, only: int_str
+  use kinetostat_error, only: error_t, out_of_memory
   use kinetostat_noise, only: noise_floor, force_columns, force_components, angles_0_360
   use kinetostat_step_table, only: worst_row
   use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_moment, step_span
@@ -104,7 +106,7 @@ contains
 
   !> All steps of a validated deck (in parallel with OpenMP threads); with a steady `cycle`,
   !> at the true crank speed and acceleration, with the flywheel and rotor on the crank.
-  subroutine pr3207_solve(deck, steps, first, last, cycle, motions, const)
+  subroutine pr3207_solve(deck, steps, first, last, cycle, motions, const, error)
     !> Validated deck.
     type(pr3207_deck_t), intent(in) :: deck
     !> One result per crank step (of steps first..last).
@@ -118,13 +120,20 @@ contains
     !> With a steady cycle, the same steps at the constant speed omega1 = omega_m (as without
     !> `cycle`), from the same positions.
     type(pr3207_step_t), allocatable, intent(out), optional :: const(:)
+    !> The block's results do not fit in memory (exit 2).
+    type(error_t), allocatable, intent(out), optional :: error
     type(motion_t) :: mo
     type(pr3207_position_t) :: pos
-    integer :: k, k1, k2
+    integer :: k, k1, k2, stat
     call step_span(deck%n, k1, k2, first, last)
-    allocate (steps(k2 - k1 + 1))
-    if (present(motions)) allocate (motions(k2 - k1 + 1))
-    if (present(const)) allocate (const(k2 - k1 + 1))
+    allocate (steps(k2 - k1 + 1), stat=stat)
+    if (stat == 0 .and. present(motions)) allocate (motions(k2 - k1 + 1), stat=stat)
+    if (stat == 0 .and. present(const)) allocate (const(k2 - k1 + 1), stat=stat)
+    if (stat /= 0) then
+      if (present(error)) call out_of_memory(error, "the results of a block of "//int_str(k2 - k1 + 1)//" steps", &
+        int(k2 - k1 + 1, int64) * 3 * storage_size(steps) / 8)
+      return
+    end if
     if (.not. present(cycle)) then
       !$omp parallel do schedule(static)
       do k = k1, k2
@@ -159,10 +168,11 @@ contains
     integer :: k, first, last
     call table%block_range(self%deck%n, first, last)
     if (self%deck%dyn%mode > 0) then
-      call pr3207_solve(self%deck, steps, first, last, self%cycle, motions, const)
+      call pr3207_solve(self%deck, steps, first, last, self%cycle, motions, const, error)
     else
-      call pr3207_solve(self%deck, steps, first, last)
+      call pr3207_solve(self%deck, steps, first, last, error=error)
     end if
+    if (allocated(error)) return
     if (table%first_block()) then
       call table%set_columns(pr3207_csv_columns, column_units, column_kinds)
       call add_dynamics_columns(table, self%deck%dyn%mode)
@@ -175,7 +185,8 @@ contains
       end if
       call echo_deck(self%deck, table)
     end if
-    call table%allocate_rows(size(steps))
+    call table%allocate_rows(size(steps), error)
+    if (allocated(error)) return
     !$omp parallel do schedule(static)
     do k = 1, size(steps)
       table%rows(1:size(pr3207_csv_columns), k) = pr3207_csv_values(steps(k), self%deck%p%l_ab)

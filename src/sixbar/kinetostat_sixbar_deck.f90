@@ -3,7 +3,7 @@ module kinetostat_sixbar_deck
   use kinetostat_kinds, only: wp, g_default, rad_to_deg
   use kinetostat_error, only: error_t, fatal_error, exit_geometry
   use kinetostat_text, only: real_str
-  use kinetostat_deck, only: &
+  use kinetostat_deck, only: values_out_of_memory, &
     begin_group, deck_context_t, unset_real, deck_array_capacities, &
     deck_source_t, namelist_probe_t, require_all_set, deck_error, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, require_per_step, optional_default, count_values, steps_over_turn
@@ -89,6 +89,7 @@ contains
     integer :: n_f5
     !> Elements allocated for each per-step array the deck may give (see deck_array_capacities).
     integer, allocatable :: capacity(:)
+    integer :: stat
     type(deck_context_t) :: ctx
     type(namelist_probe_t) :: probe
     namelist /sixbar/ a, b, l1, lam2, lam_s2, lam3, lam_de, lam4, lam_s4, lam_e, &
@@ -109,7 +110,11 @@ contains
     start_at_extreme = .false.
     legacy_eq2 = .false.
     capacity = deck_array_capacities(source, ctx%group, ["f5"])
-    allocate (f5(capacity(1)), source=unset_real)
+    allocate (f5(capacity(1)), source=unset_real, stat=stat)
+    if (stat /= 0) then
+      call values_out_of_memory(ctx, "f5", capacity, error)
+      return
+    end if
 
     read (source%records, nml=sixbar, iostat=probe%ios, iomsg=probe%msg)
     do while (probe%retry(source)) ! on failure: find the line and the assignment

@@ -30,14 +30,17 @@ module kinetostat_sixbar_dynamics
 
 contains
 
-  !> The source of a validated deck (a copy of its load table).
+  !> The source of a validated deck (a copy of its load table; not allocated when it does
+  !> not fit in memory).
   pure function sixbar_source(deck) result(source)
     type(sixbar_deck_t), intent(in) :: deck
     type(sixbar_source_t) :: source
+    integer :: stat
     source%p = deck%p
     source%phi_start = deck%phi_start
     source%dphi = deck%dphi
-    allocate (source%f5, source=deck%f5(1:deck%n))
+    allocate (source%f5(deck%n), stat=stat)
+    if (stat == 0) source%f5 = deck%f5(1:deck%n)
   end function sixbar_source
 
   !> The slider load at crank angle phi (rad) from the table of the steps: linear between

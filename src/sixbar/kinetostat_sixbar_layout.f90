@@ -1,9 +1,10 @@
 !> T.FTN as a mechanism of the run pipeline: deck -> every crank step -> step table, and the
 !> legacy table layout of appendix 2 (two lines per step).
 module kinetostat_sixbar_layout
+  use, intrinsic :: iso_fortran_env, only: int64
   use kinetostat_kinds, only: wp, pi, deg_to_rad, rad_to_deg
   use kinetostat_deck, only: deck_source_t
-  use kinetostat_error, only: error_t, fatal_error, exit_geometry
+  use kinetostat_error, only: error_t, fatal_error, exit_geometry, out_of_memory
   use kinetostat_text, only: real_str, int_str
   use kinetostat_noise, only: noise_floor, force_columns, force_components, angles_pm180
   use kinetostat_step_table, only: worst_row
@@ -106,6 +107,11 @@ contains
     if (allocated(error)) return
     if (self%deck%dyn%mode >= dynamics_steady) then
       self%source = sixbar_source(self%deck)
+      if (.not. allocated(self%source%f5)) then
+        call out_of_memory(error, "the load table of "//int_str(self%deck%n)//" steps", 8_int64 * self%deck%n)
+        error%message = source%path//": &sixbar: dynamics: "//error%message
+        return
+      end if
       call sixbar_cycle(self%deck, self%source, source%path, self%cycle, error)
     end if
   end subroutine read_deck
@@ -148,10 +154,15 @@ contains
     !> The motion and reduced quantities of each step (with `cycle`).
     type(motion_t), allocatable, intent(out), optional :: motions(:)
     type(motion_t) :: mo
-    integer :: k, k1, k2, first_bad
+    integer :: k, k1, k2, first_bad, stat
     call step_span(deck%n, k1, k2, first, last)
-    allocate (steps(k2 - k1 + 1))
-    if (present(motions)) allocate (motions(k2 - k1 + 1))
+    allocate (steps(k2 - k1 + 1), stat=stat)
+    if (stat == 0 .and. present(motions)) allocate (motions(k2 - k1 + 1), stat=stat)
+    if (stat /= 0) then
+      call out_of_memory(error, "the results of a block of "//int_str(k2 - k1 + 1)//" steps", &
+        int(k2 - k1 + 1, int64) * 2 * storage_size(steps) / 8)
+      return
+    end if
     ! steps in parallel with OpenMP threads; the error reported is the first step's in step order
     first_bad = k2 + 1
     if (present(cycle) .and. present(source)) then
@@ -228,7 +239,8 @@ contains
       call table%note_load(self%deck%f5(1:self%deck%n))
       call echo_deck(self%deck, table)
     end if
-    call table%allocate_rows(size(steps))
+    call table%allocate_rows(size(steps), error)
+    if (allocated(error)) return
     !$omp parallel do schedule(static)
     do k = 1, size(steps)
       table%rows(1:size(sixbar_csv_columns), k) = sixbar_csv_values(steps(k), self%deck%p%l1)

@@ -227,3 +227,45 @@ for c in $ft_children; do ft_running "$c" && ft_alive="$ft_alive $c"; done
   || fail faults-sweep-sigkill "exit $rc, children '$ft_children', still computing 1 s later '$ft_alive'"
 for c in $ft_alive; do kill -KILL "$c" 2>/dev/null; done
 rm -f "$ft_dir"/sweepfile.tmp.*
+
+# --- out of memory (a limit on the address space, ulimit -v): an allocation that scales with
+# the deck, its steps or the output fails as exit 2 with one line naming what did not fit, never
+# the run-time library's abort and backtrace
+ft_oom() {
+  local name="$1" pattern="$2"; shift 2
+  if [ "$rc" -eq 2 ] && [ "$(wc -l <"$ft_dir/oom.err")" -eq 1 ] && grep -Eq "^kinetostat: error: .*out of memory: $pattern" "$ft_dir/oom.err"; then pass
+  else fail "$name" "exit $rc: $(head -c 300 "$ft_dir/oom.err")"; fi
+}
+truncate -s 200M "$ft_dir/sparse.nml"
+(ulimit -v 100000; "$KINETOSTAT" "$ft_dir/sparse.nml" >/dev/null 2>"$ft_dir/oom.err"); rc=$?
+ft_oom faults-oom-deck-file "no room for the deck's text \(209715200 bytes\)"
+rm -f "$ft_dir/sparse.nml"
+(ulimit -v 100000; head -c 200000000 /dev/zero | "$KINETOSTAT" - >/dev/null 2>"$ft_dir/oom.err"); rc=$?
+ft_oom faults-oom-deck-stdin "no room for the deck's text \(more than [0-9]+ bytes read\)"
+# tools/test --long: runs of 10^6 steps and their drawings under limits from 20 to 64 MiB end
+# either well (exit 0) or with that one line (exit 2): no allocation that grows with the deck,
+# the steps or the output (1 MiB or more) aborts. (A small fixed allocation may still find the
+# limit reached at the edge; the program needs about 20 MiB to start.)
+if [ "${KINETOSTAT_LONG:-0}" = 1 ]; then
+  sed 's/f5c_work = 3000, f5c_idle = 0/f5c = 1000000*100, n = 1000000/; s/dphi = 30 /dphi = 0.00036 /; /phi_cut_/d' \
+    data/pr3207.nml >"$ft_dir/oom_pr3207.nml"
+  sed 's/  n = 13/  n = 1000000/; s/drive(1)%step = 30/drive(1)%step = 0.00036/' data/linkage_slider_crank.nml \
+    >"$ft_dir/oom_linkage.nml"
+  ft_bad=""
+  for run in "oom_pr3207.nml --format summary" "oom_pr3207.nml --format json" "oom_linkage.nml --format plans --at 2" \
+             "oom_linkage.nml --format svg"; do
+    for kib in 20480 24576 28672 32768 40960 49152 65536; do
+      # shellcheck disable=SC2086
+      (ulimit -v "$kib"; cd "$ft_dir" && "$KINETOSTAT" $run >/dev/null 2>"$ft_dir/oom.err"); rc=$?
+      if [ "$rc" -eq 0 ] && [ ! -s "$ft_dir/oom.err" ]; then continue; fi
+      if [ "$rc" -eq 2 ] && [ "$(wc -l <"$ft_dir/oom.err")" -eq 1 ] && grep -q "^kinetostat: error: .*out of memory: no room for " "$ft_dir/oom.err"; then
+        continue
+      fi
+      small=$(sed -n 's/.*Error allocating \([0-9]*\) bytes.*/\1/p' "$ft_dir/oom.err" | head -1)
+      if [ -n "$small" ] && [ "$small" -lt 1048576 ]; then continue; fi
+      ft_bad="$ft_bad [$run at $kib KiB: exit $rc: $(head -c 160 "$ft_dir/oom.err" | tr '\n' ' ')]"
+    done
+  done
+  [ -z "$ft_bad" ] && pass || fail faults-oom-sweep "$ft_bad"
+  rm -f "$ft_dir"/oom_*.nml
+fi
