@@ -1793,10 +1793,11 @@ contains
     real(wp) :: on(2)
     character(len=:), allocatable :: culprit
     logical :: frame_used, crank_used
-    defined = [frame_no, crank_no]
+    allocate (defined(2 + 2 * size(dyads)))
+    defined(1:2) = [frame_no, crank_no]
     do d = 1, size(dyads)
       if (.not. (is_whole_in(dyads(d)%link2, 0, huge(1)) .and. is_whole_in(dyads(d)%link3, 0, huge(1)))) return
-      defined = [defined, nint(dyads(d)%link2), nint(dyads(d)%link3)]
+      defined(2 * d + 1:2 * d + 2) = [nint(dyads(d)%link2), nint(dyads(d)%link3)]
     end do
     frame_used = .false.
     crank_used = .false.

@@ -221,6 +221,7 @@ contains
     type(word_t), allocatable :: names_a(:), names_b(:)
     character(len=:), allocatable :: only_a, only_b, shared
     integer :: i, count_a, count_b, count_shared
+    allocate (names_a(0), names_b(0)) ! defined before the call (gcc's -Wmaybe-uninitialized on the descriptor)
     call split_csv(a%columns, names_a)
     call split_csv(b%columns, names_b)
     only_a = ""
@@ -305,6 +306,7 @@ contains
     type(cell_t), allocatable :: cells(:)
     integer, allocatable :: from(:)
     integer :: nc, nk, r, i, old, partner
+    allocate (names(0), kept(0)) ! defined before the call (gcc's -Wmaybe-uninitialized on the descriptor)
     call split_csv(doc%columns, names)
     call split_csv(header, kept)
     nc = size(names)

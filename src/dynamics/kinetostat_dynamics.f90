@@ -334,6 +334,14 @@ contains
 
     call energy_in_range(cycle, 0.0_wp, where, error)
     if (allocated(error)) return
+    ! the flywheel holds about dE/delta of kinetic energy ((J_fw + J) omega_m^2 = dE/delta)
+    if (.not. (maxval(cycle%dt) - minval(cycle%dt)) / delta <= energy_limit) then
+      call fatal_error(error, exit_input, where//": delta: with the loads' work over the cycle changing the kinetic "// &
+        "energy by "//real_str(maxval(cycle%dt) - minval(cycle%dt))//" J, the flywheel for delta = "//real_str(delta)// &
+        " would hold about "//real_str((maxval(cycle%dt) - minval(cycle%dt)) / delta)//" J: out of the range of "// &
+        "the arithmetic (above 1e300 J); give a larger delta or smaller loads")
+      return
+    end if
     call textbook(cycle, delta, j_tb)
     cycle%j_flywheel_textbook = j_tb
     if (maxval(cycle%j) == minval(cycle%j)) then
@@ -473,9 +481,15 @@ contains
     j_total = maxval(cycle%j) + j_flywheel
     j_links = maxval(cycle%j) - cycle%j_rotor
     w2 = cycle%omega_mean**2
+    if (.not. maxval(abs(cycle%dt)) <= energy_limit) then
+      call fatal_error(error, exit_input, where//": dynamics: the loads' work over the cycle (the change of kinetic "// &
+        "energy dT, up to "//finite_text(maxval(abs(cycle%dt)))//" J) is out of the range of the arithmetic (above "// &
+        "1e300 J): the loads' magnitudes are too large")
+      return
+    end if
     if (0.5_wp * j_total * w2 <= energy_limit) return
     why = ": the kinetic energy (J_red + j_rotor + j_flywheel)*omega1^2/2 at the mean speed omega1 = "// &
-      real_str(cycle%omega_mean)//" rad/s with J_red + j_rotor + j_flywheel up to "//real_str(j_total)// &
+      finite_text(cycle%omega_mean)//" rad/s with J_red + j_rotor + j_flywheel up to "//finite_text(j_total)// &
       " kg*m^2 is out of the range of the arithmetic (above 1e300 J)"
     if (.not. w2 <= energy_limit .or. log10(max(w2, tiny(1.0_wp))) >= log10(max(j_total, tiny(1.0_wp)))) then
       call fatal_error(error, exit_input, where//": omega1"//why)
@@ -486,6 +500,17 @@ contains
     else
       call fatal_error(error, exit_input, where//": J_red (the links' masses and moments of inertia)"//why)
     end if
+  contains
+    !> A figure of a message: its value, or words for one beyond the largest real.
+    pure function finite_text(x) result(text)
+      real(wp), intent(in) :: x
+      character(len=:), allocatable :: text
+      if (abs(x) <= huge(x)) then
+        text = real_str(x)
+      else
+        text = "more than the largest real"
+      end if
+    end function finite_text
   end subroutine energy_in_range
 
   !> The steady cycle with the flywheel `j_flywheel` (after cycle_setup): the speed law of

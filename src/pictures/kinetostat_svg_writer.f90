@@ -459,6 +459,7 @@ contains
     ! a long run: the curve through its extremes, without rays, dots and step numbers
     thinned = thinned_run(table)
     if (thinned) then
+      allocate (keep(0)) ! defined before the assignment (gcc's -Wmaybe-uninitialized on the descriptor)
       keep = drawn_rows(table, reshape([fx, fy], [n, 2]))
       fx = fx(keep)
       fy = fy(keep)
@@ -663,6 +664,7 @@ contains
     if (len(dash) > 0) style = style//' stroke-dasharray="'//dash//'"'
     if (thinned_run(table)) then
       ! a long run: the line through its extremes, no dots (they would merge into the line)
+      allocate (keep(0)) ! defined before the assignment (gcc's -Wmaybe-uninitialized on the descriptor)
       keep = drawn_rows(table, reshape(y, [size(y), 1]))
       call out%put(svg_path(svg_polyline_d(x(keep), y(keep)), style))
       return
@@ -812,6 +814,7 @@ contains
         "#1f77b4", "")
       if (present(dashed)) then
         ! a dashed line without the dots of the data series (thinned as they are for long runs)
+        allocate (keep(0)) ! defined before the assignment (gcc's -Wmaybe-uninitialized on the descriptor)
         keep = drawn_rows(table, reshape(dashed, [size(dashed), 1]))
         call o%put(svg_path(svg_polyline_d(left + pw * (xv(keep) - xlo) / (xhi - xlo), &
           pt + ph - ph * (dashed(keep) - ylo) / (yhi - ylo)), &

@@ -253,7 +253,9 @@ expect_input_error dynamics-omega-huge "&pr3207: omega1: .*kinetic energy.*out o
 expect_input_error dynamics-rotor-huge "&pr3207: j_rotor: .*kinetic energy.*out of the range" "$(deck_with dyn_rhuge "$fw" "s/j_rotor = 0.6/j_rotor = 1e308/")"
 expect_input_error dynamics-flywheel-huge "&pr3207: j_flywheel: .*kinetic energy.*out of the range" "$(deck_with dyn_fhuge "$fw" "s/dynamics = 'steady', delta = 0.04/dynamics = 'given', j_flywheel = 1e308/")"
 expect_input_error dynamics-assur-omega-huge "&assur: omega1: .*kinetic energy.*out of the range" "$(deck_with dyn_awhuge data/assur_pr3207_flywheel.nml "s/omega1 = 7.5 /omega1 = 1e300 /")"
-expect_input_error dynamics-delta-tiny "&pr3207: delta: 0.1000000000E-299 is below what the arithmetic of the speed resolves" "$(deck_with dyn_dtiny "$fw" "s/delta = 0.04/delta = 1e-300/")"
+expect_input_error dynamics-delta-tiny "&pr3207: delta: 0.1000000000E-13 is below what the arithmetic of the speed resolves" "$(deck_with dyn_dtiny "$fw" "s/delta = 0.04/delta = 1e-14/")"
+expect_input_error dynamics-delta-tinier "&pr3207: delta: with the loads' work over the cycle changing the kinetic energy by 617.3523108 J, the flywheel for delta = 0.1000000000E-299 would hold about .*out of the range" "$(deck_with dyn_dtinier "$fw" "s/delta = 0.04/delta = 1e-300/")"
+expect_input_error dynamics-loads-huge "&pr3207: delta: with the loads' work over the cycle changing the kinetic energy by 0.2057841036E\+300 J" "$(deck_with dyn_lhuge "$fw" "s/f5c_work = 3000/f5c_work = 1e300/")"
 # a geometry error met by the cycle names the dyad, its lengths and the angle, as the plain run
 # does (a rod shorter than the crank)
 expect_input_error dynamics-cycle-geometry "&assur: dynamics: the cycle at phi1 = [0-9.]+ deg: dyad 1 \(RRP, links 2-3\): cannot be assembled: distance from its joint to the guide [0-9.E-]+ m exceeds l2 = 0.2000000000E-1 m" \

@@ -17,9 +17,9 @@ done
 # RRP by name asks for what an RRP needs (its guide angle), as kind = 2 does
 sed "s/dyad(1)%kind = 1,/dyad(1)%kind = 'RRP',/" docs/examples/fourbar.nml >"$cli_tmp/msg_kind_rrp.nml"
 expect_input_error msg-kind-rrp "dyad\(1\)%angle3: missing" "$cli_tmp/msg_kind_rrp.nml"
-# an unknown name is still not a number
+# an unknown name is named as one, with the names the kinds have
 sed "s/dyad(1)%kind = 1,/dyad(1)%kind = RRRP,/" docs/examples/fourbar.nml >"$cli_tmp/msg_kind_bad.nml"
-expect_input_error msg-kind-unknown "'RRRP' is not a number" "$cli_tmp/msg_kind_bad.nml"
+expect_input_error msg-kind-unknown "dyad\(1\)%kind = RRRP: unknown kind 'RRRP' \(a dyad's kind is RRR, RRP, RPR, PRP or RPP, or its number 1 to 5\)" "$cli_tmp/msg_kind_bad.nml"
 
 # a variable given twice: a warning naming both lines (the last value counts), exit 4 with
 # --strict; --set is not a repeat
