@@ -187,6 +187,11 @@ contains
     cycle%phi0 = phi0
     cycle%j_rotor = j_rotor
     cycle%omega_mean = omega_mean
+    if (.not. (phi0 + 2.0_wp * pi) - phi0 > 6.0_wp) then
+      call fatal_error(error, exit_input, where//": phi_start: "//real_str(phi0 * rad_to_deg)//" deg is too large: "// &
+        "the angles of a turn from there are below the resolution of the arithmetic (give the start within a turn)")
+      return
+    end if
     ! piece bounds: phi0, the switches inside the turn (sorted, distinct), phi0 + 2 pi
     if (present(drive_phi) .and. present(drive_value)) then
       allocate (cycle%drive_phi, source=drive_phi)

@@ -289,3 +289,4 @@ assert x["selfcheck"]["ok"]
 PY
   then pass; else fail "dynamics-massless-$d" "exit $rc: $(head -c 300 "$err")"; fi
 done
+expect_input_error dynamics-phi-start-huge "&pr3207: phi_start: 0.1000000000E\+21 deg is too large" "$(deck_with dyn_phuge "$fw" "s/phi_start = 0/phi_start = 1e20/")"
