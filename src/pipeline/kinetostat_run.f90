@@ -17,7 +17,10 @@ module kinetostat_run
   use kinetostat_svg_mechanism, only: write_svg_mechanism
   use kinetostat_sketch, only: sketch_t
   use kinetostat_drawing, only: drawing_t, drawing_from_sketch
-  use kinetostat_plans, only: plans_t, build_plans, write_plans_json
+  use kinetostat_plans_base, only: plans_t
+  use kinetostat_plans, only: build_plans
+  use kinetostat_plans_sheet, only: plans_sheet_t, plans_sheet
+  use kinetostat_plans_json, only: write_plans_json
   use kinetostat_svg_plans, only: write_svg_plans
   use kinetostat_dxf, only: write_dxf
   use kinetostat_error, only: exit_usage
@@ -321,6 +324,7 @@ contains
     type(sketch_t) :: topo
     type(drawing_t) :: drawing
     type(plans_t) :: plans
+    type(plans_sheet_t) :: sheet
     integer :: k
     k = options%at_step
     if (k > table%row_count()) then
@@ -340,7 +344,8 @@ contains
     if (allocated(error)) return
     if (options%plans) then
       call build_plans(topo, drawing, table, k, plans)
-      call write_plans_json(plans, table, k, out)
+      call plans_sheet(topo, drawing, plans, sheet)
+      call write_plans_json(mech%title(options%lang), plans, sheet, table, k, out)
     else if (options%format == format_dxf) then
       call write_dxf(mech%title(lang_en)//" - "//table%deck//" - "//table%row_name//" "//int_str(k), drawing, out)
     else if (options%format == format_plans) then

@@ -1,10 +1,13 @@
 # The graphical method as numbers (--format json --at K --plans): on every bundled linkage deck
-# at three steps, the plans' equations hold, the acceleration images of the centres of mass
-# equal the kinematics columns, every force polygon closes (<= 1e-9 of its largest vector)
-# with the CSV's pair forces in it, and Zhukovsky's lever equals the run's driving effort
-# (relative 1e-9); every acceleration component (normal, tangential, Coriolis) against the
-# kinematics columns and every vector equation summing to its image - tools/plans_check.py;
-# the checks can fail; usage errors.
+# at its first, second, middle and last steps (PR 3050's at the steps where its input moves;
+# its groups at rest too) - the plans' equations hold, the acceleration images of the centres
+# of mass equal the kinematics columns, every force polygon closes (<= 1e-9 of its largest
+# vector) with the CSV's pair forces in it, in the course's order (tau and n parts adjacent,
+# whole and inner reactions listed), Zhukovsky's lever equals the run's driving effort
+# (relative 1e-9) with every load force of the links' polygons on it and the loads' powers and
+# the balancing power summing to zero, the values table agrees with the plans and the CSV's
+# rates, and the groups are the same at every step and the structural analysis's
+# (kinetostat structure) - tools/plans_check.py; the checks can fail; usage errors.
 plans_check="$root/tools/plans_check.py"
 plans_dir="$cli_tmp/plans"
 mkdir -p "$plans_dir"
@@ -25,25 +28,101 @@ for spec in assur_fourbar:lever,polygons assur_fourbar_global:lever,polygons ass
   assur_sixbar_friction:lever,polygons \
   friction_slider_crank:lever,polygons; do
   name=${spec%%:*}; checks=${spec#*:}
-  flags=""
+  flags="--order --values"
   case ",$checks," in *,lever,*) flags="$flags --lever" ;; esac
   case ",$checks," in *,polygons,*) flags="$flags --polygons" ;; esac
   case ",$checks," in *,groups,*) flags="$flags --groups" ;; esac
   run_ks "data/$name.nml" --format csv --kinematics
   cp "$out" "$plans_dir/$name.csv"
   steps=$(($(wc -l <"$out") - 1))
-  ks="1 $(((steps + 1) / 2)) $steps"
-  # PR 3050 starts and stops at rest: no velocity plan there (the lever needs one)
-  case "$name" in pr3050|assur_pr3050*) ks="2 $(((steps + 1) / 2)) $((steps - 1))" ;; esac
+  ks=$(printf '%s\n' 1 2 $(((steps + 1) / 2)) "$steps" | awk '$1 <= '"$steps"' && !seen[$1]++')
+  rest=""
+  # PR 3050 starts and stops at rest: no velocity plan there (the lever needs one); its
+  # groups are checked at rest too
+  case "$name" in pr3050|assur_pr3050*) ks="2 3 $(((steps + 1) / 2)) $((steps - 1))"; rest=1 ;; esac
+  step_files=()
   for k in $ks; do
     run_ks "data/$name.nml" --format json --at "$k" --plans
     if [ "$rc" -ne 0 ]; then fail "plans-runs-$name-$k" "rc=$rc: $(head -c 300 "$err")"; continue; fi
-    cp "$out" "$plans_dir/$name.$k.json"
+    cp "$out" "$plans_dir/$name.$k.json"; step_files+=("$plans_dir/$name.$k.json")
     # shellcheck disable=SC2086  # flags is a word list
     python3 "$plans_check" "$plans_dir/$name.$k.json" "$plans_dir/$name.csv" $flags >"$cli_tmp/check.out" 2>&1 \
       && pass || fail "plans-$name-$k" "$(head -20 "$cli_tmp/check.out")"
   done
+  if [ -n "$rest" ]; then
+    run_ks "data/$name.nml" --format json --at "$rest" --plans
+    cp "$out" "$plans_dir/$name.$rest.json"; step_files+=("$plans_dir/$name.$rest.json")
+  fi
+  # the groups: the same at every step, and the structural analysis's where it runs
+  structure=()
+  case "$name" in
+    class3|fivebar|linkage_*) structure=(--structure "$("$KINETOSTAT" structure "data/$name.nml" | sed -n 's/^ STRUCTURE FORMULA: //p')") ;;
+  esac
+  python3 "$plans_check" groups "${step_files[@]}" "${structure[@]}" >"$cli_tmp/check.out" 2>&1 \
+    && pass || fail "plans-groups-$name" "$(head -5 "$cli_tmp/check.out")"
 done
+# the generic decks' groups (derived from the topology) equal the structural analysis of the
+# same mechanism written as a &linkage deck
+for twin in assur_fourbar:linkage_fourbar assur_slider_crank:linkage_slider_crank; do
+  python3 "$plans_check" groups "$plans_dir/${twin%%:*}".*.json \
+    --structure "$("$KINETOSTAT" structure "data/${twin#*:}.nml" | sed -n 's/^ STRUCTURE FORMULA: //p')" \
+    >"$cli_tmp/check.out" 2>&1 && pass || fail "plans-groups-twin-${twin%%:*}" "$(head -5 "$cli_tmp/check.out")"
+done
+# the five-bar's two drives: an input link's polygon each, M4 (not the lever's unknown) a
+# load of the lever; PR 3050's cylinder and rod one input unit at every step, at rest too
+python3 -c 'import json, sys; d = json.load(open(sys.argv[1]))
+assert [p["label"] for p in d["force_plans"]] == ["II(2,3)", "I(0,4)", "I(0,1)"], d["force_plans"]
+assert [p["moment"]["name"] for p in d["force_plans"][1:]] == ["M4", "M1"]
+assert "M4" in [l["name"] for l in d["zhukovsky"]["loads"]]' "$plans_dir/fivebar.2.json" >"$cli_tmp/check.out" 2>&1 \
+  && pass || fail plans-fivebar-drives "$(tail -3 "$cli_tmp/check.out")"
+grep -q '"groups": \[' "$plans_dir/pr3050.1.json" && grep -A1 '"groups": \[' "$plans_dir/pr3050.1.json" | grep -q '"label": "I(4,1,2,3)"' \
+  && pass || fail plans-pr3050-rest-groups "$(grep -A2 '"groups"' "$plans_dir/pr3050.1.json")"
+
+# the plans JSON in the run's envelope: program, mechanism, deck_title, overrides, selfcheck,
+# warnings; the sheet's rotation against the position frame
+run_ks data/fivebar.nml --format json --at 2 --plans --set 'link(2)%m=2'
+python3 -c 'import json, sys; d = json.load(open(sys.argv[1]))
+for key in ("program", "mechanism", "title", "deck", "deck_title", "overrides", "selfcheck", "warnings", "sheet_rotation"):
+    assert key in d, key
+assert d["overrides"] == ["link(2)%m=2"] and d["mechanism"] == "linkage" and d["selfcheck"]["ok"], d
+assert d["deck_title"] == "five-bar with two motors", d["deck_title"]' "$out" >"$cli_tmp/check.out" 2>&1 \
+  && pass || fail plans-json-envelope "$(tail -3 "$cli_tmp/check.out")"
+
+# the new checks can fail: a load left off the lever, a load's power changed, a reaction's
+# parts apart, the inner reaction dropped, the groups changed at one step, groups that are not
+# the structure's, a wrong value in the table
+python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); z = d["zhukovsky"]
+z["loads"] = [l for l in z["loads"] if l["name"] != "G4"]; print(json.dumps(d))' \
+  "$plans_dir/sixbar.2.json" >"$cli_tmp/bad.json"
+python3 "$plans_check" "$cli_tmp/bad.json" "$plans_dir/sixbar.csv" --lever >"$cli_tmp/check.out" 2>&1
+grep -q "the load forces \['G4'\] of the links' polygons are not on the lever" "$cli_tmp/check.out" && pass \
+  || fail plans-lever-load-can-fail "$(head -3 "$cli_tmp/check.out")"
+python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); l = d["zhukovsky"]["loads"][0]
+l["power"] *= 1 + 1e-6; print(json.dumps(d))' "$plans_dir/class3.2.json" >"$cli_tmp/bad.json"
+python3 "$plans_check" "$cli_tmp/bad.json" "$plans_dir/class3.csv" --lever >"$cli_tmp/check.out" 2>&1
+grep -q "lever: the loads' powers and the balancing power sum to" "$cli_tmp/check.out" && pass \
+  || fail plans-lever-power-can-fail "$(head -3 "$cli_tmp/check.out")"
+python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); v = d["force_plans"][0]["vectors"]
+v.insert(1, v.pop()); print(json.dumps(d))' "$plans_dir/linkage_fourbar.2.json" >"$cli_tmp/bad.json"
+python3 "$plans_check" "$cli_tmp/bad.json" "$plans_dir/linkage_fourbar.csv" --order >"$cli_tmp/check.out" 2>&1
+grep -q "the parts of F21 are not adjacent\|ends with" "$cli_tmp/check.out" && pass \
+  || fail plans-order-can-fail "$(head -3 "$cli_tmp/check.out")"
+python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); p = d["force_plans"][0]
+p["reactions"] = [r for r in p["reactions"] if not r["inner"]]; print(json.dumps(d))' \
+  "$plans_dir/sixbar.2.json" >"$cli_tmp/bad.json"
+python3 "$plans_check" "$cli_tmp/bad.json" "$plans_dir/sixbar.csv" --order >"$cli_tmp/check.out" 2>&1
+grep -q "no inner reaction" "$cli_tmp/check.out" && pass || fail plans-inner-can-fail "$(head -3 "$cli_tmp/check.out")"
+python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); g = d["groups"]
+g[1]["label"] = "III(2,3,4,5)"; print(json.dumps(d))' "$plans_dir/sixbar.2.json" >"$cli_tmp/bad.json"
+python3 "$plans_check" groups "$plans_dir/sixbar.1.json" "$cli_tmp/bad.json" >"$cli_tmp/check.out" 2>&1
+grep -q "groups change between steps" "$cli_tmp/check.out" && pass || fail plans-groups-can-fail "$(head -3 "$cli_tmp/check.out")"
+python3 "$plans_check" groups "$plans_dir/fivebar.2.json" --structure "I(0,1) -> II(2,3,4)" >"$cli_tmp/check.out" 2>&1
+grep -q "the structure formula" "$cli_tmp/check.out" && pass || fail plans-structure-can-fail "$(head -3 "$cli_tmp/check.out")"
+python3 -c 'import json, sys; d = json.load(open(sys.argv[1]))
+[v for v in d["values"] if v["name"] == "omega2"][0]["sense"] = "??"; print(json.dumps(d))' \
+  "$plans_dir/sixbar.2.json" >"$cli_tmp/bad.json"
+python3 "$plans_check" "$cli_tmp/bad.json" "$plans_dir/sixbar.csv" --values >"$cli_tmp/check.out" 2>&1
+grep -q "values table: omega2" "$cli_tmp/check.out" && pass || fail plans-values-can-fail "$(head -3 "$cli_tmp/check.out")"
 
 # the checks can fail: a lever off by one part in 1e6, a polygon vector moved
 python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); d["zhukovsky"]["effort"] *= 1 + 1e-6; print(json.dumps(d))' \
@@ -100,7 +179,7 @@ v["x"] += 1e-6 * abs(v["x"]) + 1e-6; print(json.dumps(d))' "$plans_dir/sixbar.1.
 python3 "$plans_check" "$cli_tmp/bad_component.json" "$plans_dir/sixbar.csv" >/dev/null 2>&1 \
   && fail plans-component-can-fail "a wrong acceleration component was accepted" || pass
 # every deck's equations name the components in the course's notation, a_B^n ... a_B^r
-grep -q '"name": "a_B^k", "kind": "k"' "$plans_dir"/pr3207.*.json && pass || fail plans-coriolis "no Coriolis component in PR 3207's plans"
+grep -q '"name": "a_B2B3^k", "kind": "k"' "$plans_dir"/pr3207.*.json && pass || fail plans-coriolis "no Coriolis component in PR 3207's plans"
 
 # ... and a group's reaction part moved (F43's tangential part in the six-bar's group 4,5)
 python3 -c 'import json, sys; d = json.load(open(sys.argv[1]))
@@ -111,6 +190,13 @@ python3 "$plans_check" "$cli_tmp/bad_group.json" "$plans_dir/sixbar.csv" --group
 # the six-bar's groups as kinetostatics solves them: the dyads 4,5 and 2,3, then the crank
 grep -o '"group": "[0-9,]*"' "$plans_dir/sixbar.1.json" | tr '\n' ' ' | grep -qx '"group": "4,5" "group": "2,3" "group": "1" ' \
   && pass || fail plans-sixbar-groups "$(grep -o '"group": "[0-9,]*"' "$plans_dir/sixbar.1.json")"
+# ... in the course's order: F43^tau, the loads of 4 and 5, F56, F43^n; then F21^tau, the loads of
+# 2 and 3 with the known F34, F36^tau, F36^n, F21^n, the inner reactions F45, F23
+python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); p = d["force_plans"]
+assert [v["name"] for v in p[0]["vectors"]] == ["F43^τ", "G4", "Phi4", "G5", "Phi5", "F5", "F56", "F43^n"], p[0]
+assert [v["name"] for v in p[1]["vectors"]] == ["F21^τ", "G2", "Phi2", "G3", "F34", "F36^τ", "F36^n", "F21^n"], p[1]
+assert [r["name"] for r in p[0]["reactions"]] == ["F43", "F56", "F45"] and [r["name"] for r in p[1]["reactions"]] == ["F21", "F36", "F23"]' \
+  "$plans_dir/sixbar_example.1.json" >"$cli_tmp/check.out" 2>&1 && pass || fail plans-sixbar-order "$(tail -3 "$cli_tmp/check.out")"
 
 # PR 3207's ram from the block's point the other way round; PR 3050's cylinder and rod one body
 # of their group (the frame's reaction on the cylinder split along the line to the rod's joint B)

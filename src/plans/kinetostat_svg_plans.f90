@@ -21,8 +21,9 @@ module kinetostat_svg_plans
   use kinetostat_label_place, only: label_boxes_t, title_attributes, anchor_start
   use kinetostat_labels, only: word => label, unit_word => unit_symbol
   use kinetostat_title_block, only: put_title_block, title_block_height
-  use kinetostat_plans, only: plans_t, plan_vector_t, plan_equation_t, component_normal, component_tangential, &
+  use kinetostat_plans_base, only: plans_t, plan_vector_t, plan_equation_t, component_normal, component_tangential, &
     component_coriolis
+  use kinetostat_plans_sheet, only: plan_scale, chain_tips, polygon_tips
   implicit none
   private
   public :: write_svg_plans
@@ -287,22 +288,6 @@ contains
     end select
   end function component_colour
 
-  !> The corners of an equation's chain on the plan: the image it starts from (the pole when
-  !> it starts there), then the running sums of its components.
-  pure subroutine chain_tips(eq, images, tips)
-    type(plan_equation_t), intent(in) :: eq
-    type(plan_vector_t), intent(in) :: images(:)
-    real(wp), allocatable, intent(out) :: tips(:, :)
-    integer :: j
-    allocate (tips(2, size(eq%vectors) + 1))
-    tips(:, 1) = 0.0_wp
-    do j = 1, size(images)
-      if (len_trim(eq%from) > 0 .and. images(j)%name == eq%from) tips(:, 1) = images(j)%v
-    end do
-    do j = 1, size(eq%vectors)
-      tips(:, j + 1) = tips(:, j) + eq%vectors(j)%v
-    end do
-  end subroutine chain_tips
 
   !> Zhukovsky's lever: the turned velocity plan (thin rays), every load as an arrow at its
   !> point's turned image.
@@ -321,13 +306,13 @@ contains
     integer :: i, n
     call put_panel(out, boxes, box, word("Zhukovsky's lever", lang), inner)
     n = 0
-    if (allocated(plans%lever_images)) n = size(plans%lever_images)
+    if (allocated(plans%loads)) n = size(plans%loads)
     allocate (v(2, size(turned) + n))
     do i = 1, size(turned)
       v(:, i) = turned(i)%v
     end do
     do i = 1, n
-      v(:, size(turned) + i) = [-plans%lever_images(i)%v(2), plans%lever_images(i)%v(1)]
+      v(:, size(turned) + i) = [-plans%loads(i)%at(2), plans%loads(i)%at(1)]
     end do
     ! room for the arrows: the plan in the middle two thirds
     call fit(v, [inner(1) + 12.0_wp, inner(2) + 12.0_wp, inner(3) - 12.0_wp, inner(4) - 12.0_wp], mu, pole)
@@ -343,13 +328,13 @@ contains
     call out%put(svg_text(tx, ty, "p", 'class="label" font-weight="bold" text-anchor="middle"'))
     fmax = 0.0_wp
     do i = 1, n
-      fmax = max(fmax, norm2(plans%lever_forces(i)%v))
+      fmax = max(fmax, norm2(plans%loads(i)%f))
     end do
     fscale = 0.0_wp
     if (fmax > 0.0_wp) fscale = 11.0_wp / fmax
     do i = 1, n
       q = pole + [v(1, size(turned) + i), -v(2, size(turned) + i)] / mu
-      t = q + fscale * [plans%lever_forces(i)%v(1), -plans%lever_forces(i)%v(2)]
+      t = q + fscale * [plans%loads(i)%f(1), -plans%loads(i)%f(2)]
       if (hypot(t(1) - q(1), t(2) - q(2)) < 0.3_wp) cycle
       call palette_colour(i, colour, dash)
       call out%put(svg_arrow(q(1), q(2), t(1), t(2), colour, 0.35_wp, 1.8_wp))
@@ -358,13 +343,13 @@ contains
     end do
     do i = 1, n
       q = pole + [v(1, size(turned) + i), -v(2, size(turned) + i)] / mu
-      t = q + fscale * [plans%lever_forces(i)%v(1), -plans%lever_forces(i)%v(2)]
+      t = q + fscale * [plans%loads(i)%f(1), -plans%loads(i)%f(2)]
       if (hypot(t(1) - q(1), t(2) - q(2)) < 0.3_wp) cycle
       call palette_colour(i, colour, dash)
-      call boxes%place(trim(plans%lever_forces(i)%name), num_size, t(1), t(2), atan2(t(2) - q(2), t(1) - q(1)), &
+      call boxes%place(trim(plans%loads(i)%name), num_size, t(1), t(2), atan2(t(2) - q(2), t(1) - q(1)), &
         seg_x, seg_y, inner, tx, ty, leader, tail=q)
       if (leader) call out%put(svg_line(t(1), t(2), tx, ty - 0.3_wp * num_size, 'stroke="#777777" stroke-width="0.15"'))
-      call out%put(svg_text(tx, ty, trim(plans%lever_forces(i)%name), 'class="num" text-anchor="middle" style="fill: '// &
+      call out%put(svg_text(tx, ty, trim(plans%loads(i)%name), 'class="num" text-anchor="middle" style="fill: '// &
         colour//'"'))
     end do
     call out%put(svg_text(box(1) + 2.0_wp, box(2) + box(4) - 2.5_wp, "μv = "//short_number(mu)//" ("// &
@@ -443,31 +428,6 @@ contains
     end do
   end subroutine put_polygons
 
-  !> A drawing scale (units per mm) at least `span`: the smallest of 1, 1.2, 1.5, 2, 2.5, 3,
-  !> 4, 5, 6, 8 times a power of ten (the scales a drawing is made at).
-  pure real(wp) function plan_scale(span)
-    real(wp), intent(in) :: span
-    real(wp), parameter :: steps(*) = [1.0_wp, 1.2_wp, 1.5_wp, 2.0_wp, 2.5_wp, 3.0_wp, 4.0_wp, 5.0_wp, 6.0_wp, &
-      8.0_wp, 10.0_wp]
-    real(wp) :: decade
-    integer :: i
-    decade = 10.0_wp**floor(log10(span))
-    plan_scale = 10.0_wp * decade
-    do i = size(steps), 1, -1
-      if (steps(i) * decade >= span * (1.0_wp - 1.0e-12_wp)) plan_scale = steps(i) * decade
-    end do
-  end function plan_scale
 
-  !> The running sums of the vectors (tips(:, 1) = 0, tips(:, j + 1) = sum of the first j).
-  pure subroutine polygon_tips(vectors, tips)
-    type(plan_vector_t), intent(in) :: vectors(:)
-    real(wp), allocatable, intent(out) :: tips(:, :)
-    integer :: j
-    allocate (tips(2, size(vectors) + 1))
-    tips(:, 1) = 0.0_wp
-    do j = 1, size(vectors)
-      tips(:, j + 1) = tips(:, j) + vectors(j)%v
-    end do
-  end subroutine polygon_tips
 
 end module kinetostat_svg_plans
