@@ -14,12 +14,14 @@ module kinetostat_run
   use kinetostat_csv_writer, only: write_csv
   use kinetostat_json_writer, only: write_json
   use kinetostat_svg_writer, only: write_svg
-  use kinetostat_svg_mechanism, only: write_svg_mechanism
+  use kinetostat_mechanism_sheet, only: write_mechanism_sheet
+  use kinetostat_sheet, only: sheet_t
+  use kinetostat_sheet_svg, only: write_sheet_svg
+  use kinetostat_sheet_dxf, only: write_sheet_dxf
   use kinetostat_sketch, only: sketch_t
   use kinetostat_drawing, only: drawing_t, drawing_from_sketch
   use kinetostat_plans, only: plans_t, build_plans, write_plans_json
   use kinetostat_svg_plans, only: write_svg_plans
-  use kinetostat_dxf, only: write_dxf
   use kinetostat_error, only: exit_usage
   use kinetostat_labels, only: lang_en
   use kinetostat_override, only: override_t, mark_overrides
@@ -321,6 +323,7 @@ contains
     type(sketch_t) :: topo
     type(drawing_t) :: drawing
     type(plans_t) :: plans
+    type(sheet_t) :: sheet
     integer :: k
     k = options%at_step
     if (k > table%row_count()) then
@@ -341,13 +344,16 @@ contains
     if (options%plans) then
       call build_plans(topo, drawing, table, k, plans)
       call write_plans_json(plans, table, k, out)
-    else if (options%format == format_dxf) then
-      call write_dxf(mech%title(lang_en)//" - "//table%deck//" - "//table%row_name//" "//int_str(k), drawing, out)
     else if (options%format == format_plans) then
       call build_plans(topo, drawing, table, k, plans)
       call write_svg_plans(mech%title(options%lang), table, k, plans, options%lang, out)
     else
-      call write_svg_mechanism(mech%title(options%lang), table, k, drawing, options%lang, out)
+      call write_mechanism_sheet(mech%title(options%lang), table, k, drawing, options%lang, sheet)
+      if (options%format == format_dxf) then
+        call write_sheet_dxf(sheet, out)
+      else
+        call write_sheet_svg(sheet, out)
+      end if
     end if
   end subroutine write_at_step
 
