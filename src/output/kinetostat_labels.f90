@@ -312,6 +312,8 @@ contains
       text = "Механизм с силами"
     case ("Hodographs and diagrams")
       text = "Годографы и диаграммы"
+    case ("not drawn, shorter than 1 mm at μF")
+      text = "не показаны, короче 1 мм при μF"
     case default
       text = english
     end select

@@ -14,7 +14,10 @@ module kinetostat_run
   use kinetostat_csv_writer, only: write_csv
   use kinetostat_json_writer, only: write_json
   use kinetostat_svg_writer, only: write_svg
-  use kinetostat_svg_mechanism, only: write_svg_mechanism
+  use kinetostat_mechanism_sheet, only: write_mechanism_sheet
+  use kinetostat_sheet, only: sheet_t
+  use kinetostat_sheet_svg, only: write_sheet_svg
+  use kinetostat_sheet_dxf, only: write_sheet_dxf
   use kinetostat_sketch, only: sketch_t
   use kinetostat_drawing, only: drawing_t, drawing_from_sketch
   use kinetostat_plans_base, only: plans_t
@@ -22,7 +25,6 @@ module kinetostat_run
   use kinetostat_plans_sheet, only: plans_sheet_t, plans_sheet
   use kinetostat_plans_json, only: write_plans_json
   use kinetostat_svg_plans, only: write_svg_plans
-  use kinetostat_dxf, only: write_dxf
   use kinetostat_error, only: exit_usage
   use kinetostat_labels, only: lang_en
   use kinetostat_override, only: override_t, mark_overrides
@@ -324,7 +326,8 @@ contains
     type(sketch_t) :: topo
     type(drawing_t) :: drawing
     type(plans_t) :: plans
-    type(plans_sheet_t) :: sheet
+    type(plans_sheet_t) :: plans_geometry
+    type(sheet_t) :: sheet
     integer :: k
     k = options%at_step
     if (k > table%row_count()) then
@@ -344,15 +347,18 @@ contains
     if (allocated(error)) return
     if (options%plans) then
       call build_plans(topo, drawing, table, k, plans)
-      call plans_sheet(topo, drawing, plans, sheet)
-      call write_plans_json(mech%title(options%lang), plans, sheet, table, k, out)
-    else if (options%format == format_dxf) then
-      call write_dxf(mech%title(lang_en)//" - "//table%deck//" - "//table%row_name//" "//int_str(k), drawing, out)
+      call plans_sheet(topo, drawing, plans, plans_geometry)
+      call write_plans_json(mech%title(options%lang), plans, plans_geometry, table, k, out)
     else if (options%format == format_plans) then
       call build_plans(topo, drawing, table, k, plans)
       call write_svg_plans(mech%title(options%lang), table, k, plans, options%lang, out)
     else
-      call write_svg_mechanism(mech%title(options%lang), table, k, drawing, options%lang, out)
+      call write_mechanism_sheet(mech%title(options%lang), table, k, drawing, options%lang, sheet)
+      if (options%format == format_dxf) then
+        call write_sheet_dxf(sheet, out)
+      else
+        call write_sheet_svg(sheet, out)
+      end if
     end if
   end subroutine write_at_step
 
