@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
 """Checks of kinetostat's plans (--format json --at K --plans; standard library only).
 
-  plans_check.py PLANS.json RUN.csv [--lever] [--polygons]
-      RUN.csv is the same deck's `--format csv --kinematics`. Checks, each printing expected
-      vs computed on failure:
+  plans_check.py PLANS.json... RUN.csv [--lever] [--polygons] [--groups] [--order] [--values]
+      RUN.csv is the same deck's `--format csv --kinematics`, PLANS.json its steps' plans.
+      Checks, each printing expected vs computed on failure:
       - the plans' equations hold: velocity_residual <= 1e-9 x (1 + largest velocity image),
         acceleration_residual <= 1e-9 x (1 + largest acceleration image);
       - every centre of mass S<i> on the acceleration plan equals the CSV's ax_S<i>, ay_S<i>
@@ -50,6 +50,23 @@
         omega<i> and eps<i> is |the CSV's omega<i>, eps<i>| with its sense (ccw for a positive
         value, cw for a negative one), every other v_.. or a_.. entry is the magnitude of the
         plans' vector of that name (relative 1e-9);
+  plans_check.py sheet SHEET.svg PLANS.json RUN.csv
+      The plans sheet (--format plans --at K) against the plans of the same step: the
+      mechanism group's joints and centres of mass (data-joint, data-point) are where its view
+      (data-origin, data-scale, data-rotation) puts the CSV's positions, the velocity plan's
+      image marks (data-image) where its group (data-pole, data-mu, data-rotation) puts the
+      plans' velocities (0.01 mm, the SVG's rounding); no transform on them or their
+      ancestors; the rotation is the JSON's sheet_rotation; and for every relative velocity
+      of a link's two points (a tangential term v_PQ of the velocity equations) the drawn
+      image difference is perpendicular to the drawn link PQ: |cos| <= 0.02 mm / the shorter
+      of the two (both at least 2 mm on the sheet).
+  plans_check.py dxf SHEET.dxf PLANS.json
+      The plans sheet as DXF (--format dxf --at K --plans) read back: the groups' comments
+      (velocity-plan, acceleration-plan, lever, force-polygon) give each drawing's pole and
+      scale; every image of both plans has its circle on layer VPLAN or APLAN at pole +
+      (q1, -q2) / mu (q the image turned by the sheet's rotation; DXF y = paper height - y;
+      0.01 mm), the lever (layer LEVER) and every unit's force polygon (POLYGONS) have as many
+      arrowheads (SOLID) as vectors drawn (1 mm and longer).
   plans_check.py groups PLANS.json... [--structure FORMULA]
       the groups (units of the structure) are the same at every step given, and with
       --structure equal the structure formula `kinetostat structure` prints (the units'
@@ -59,6 +76,7 @@ Exit status 0 when every check passes, 1 otherwise.
 import csv
 import json
 import math
+import re
 import sys
 
 
@@ -93,17 +111,236 @@ def groups_main(argv):
         sys.exit(1)
 
 
+def turned(v, deg):
+    a = math.radians(deg)
+    return (math.cos(a) * v[0] - math.sin(a) * v[1], math.sin(a) * v[0] + math.cos(a) * v[1])
+
+
+def sheet_main(argv):
+    """The plans sheet's marks against the plans and the CSV; perpendicular relative velocities."""
+    import xml.etree.ElementTree as ET
+    svg_path, json_path, csv_path = argv
+    plans = json.load(open(json_path))
+    rows = list(csv.reader(open(csv_path, newline="")))
+    header, row = rows[0], rows[plans["step"]]
+    col = {name: float(row[i]) for i, name in enumerate(header)}
+    ns = "{http://www.w3.org/2000/svg}"
+    root = ET.parse(svg_path).getroot()
+    bad = []
+    parent = {c: p for p in root.iter() for c in p}
+
+    def chain_has_transform(el):
+        while el is not None:
+            if el.get("transform"):
+                return True
+            el = parent.get(el)
+        return False
+
+    def centre(el):
+        return (float(el.get("cx")), float(el.get("cy")))
+
+    groups = {}
+    for g in root.iter(ns + "g"):
+        groups.setdefault(g.get("class"), g)
+    mech, vplan = groups.get("mechanism"), groups.get("velocity-plan")
+    if mech is None or vplan is None:
+        print(f"{svg_path}: no mechanism or velocity-plan group")
+        sys.exit(1)
+    ox, oy = map(float, mech.get("data-origin").split())
+    scale, rot = float(mech.get("data-scale")), float(mech.get("data-rotation"))
+    if abs(rot - plans["sheet_rotation"]) > 1e-9 * max(1.0, abs(rot)):
+        bad.append(f"the mechanism drawn turned by {rot} deg, the JSON's sheet_rotation {plans['sheet_rotation']}")
+    joints = {}
+    for el in mech.iter():
+        name = el.get("data-joint") or el.get("data-point")
+        if not name:
+            continue
+        if chain_has_transform(el):
+            bad.append(f"joint {name}: a transform on it or an ancestor")
+        joints[name] = centre(el)
+        if "x_" + name in col:
+            q = turned((col["x_" + name], col["y_" + name]), rot)
+            want = (ox + scale * q[0], oy - scale * q[1])
+            if math.hypot(joints[name][0] - want[0], joints[name][1] - want[1]) > 0.011:
+                bad.append(f"joint {name} drawn at {joints[name]}, the CSV's position at {want}")
+    px, py = map(float, vplan.get("data-pole").split())
+    mu, vrot = float(vplan.get("data-mu")), float(vplan.get("data-rotation"))
+    images = {}
+    for el in vplan.iter():
+        name = el.get("data-image")
+        if not name:
+            continue
+        if chain_has_transform(el):
+            bad.append(f"image {name}: a transform on it or an ancestor")
+        images[name] = centre(el)
+    for p in plans["velocity_plan"]["points"]:
+        name = p["name"].lower()
+        if name not in images:
+            bad.append(f"velocity image {name} not marked on the sheet")
+            continue
+        q = turned((p["x"], p["y"]), vrot)
+        want = (px + q[0] / mu, py - q[1] / mu)
+        if math.hypot(images[name][0] - want[0], images[name][1] - want[1]) > 0.011:
+            bad.append(f"velocity image {name} drawn at {images[name]}, the plans' at {want}")
+
+    def joint(name):
+        if name in joints:
+            return joints[name]
+        # the point of a link under another link's point (B3 under B; J21_3 under J21)
+        base = name.rsplit("_", 1)[0] if "_" in name else name.rstrip("0123456789")
+        return joints.get(base)
+
+    # the images by their position on the plan (a chain's corner is an image: B3 under B)
+    by_position = [((p["x"], p["y"]), p["name"]) for p in plans["velocity_plan"]["points"]]
+    vmax = max([math.hypot(*q) for q, _ in by_position] or [1.0])
+
+    def image_at(v):
+        for q, name in by_position:
+            if math.hypot(q[0] - v[0], q[1] - v[1]) <= 1e-9 * vmax:
+                return images.get(name.lower())
+        return None
+
+    vimg = {p["name"]: (p["x"], p["y"]) for p in plans["velocity_plan"]["points"]}
+    checked = 0
+    for eq in plans["velocity_equations"]:
+        tip = list(vimg.get(eq["from"], (0.0, 0.0))) if eq["from"] else [0.0, 0.0]
+        for v in eq["vectors"]:
+            start = tuple(tip)
+            tip = [tip[0] + v["x"], tip[1] + v["y"]]
+            if v["kind"] != "t" or not eq["from"]:
+                continue
+            a, b = joint(eq["point"]), joint(eq["from"])
+            ia, ib = image_at(tip), image_at(start)
+            if None in (a, b, ia, ib):
+                bad.append(f"{v['name']}: a point without its mark ({eq['point']}, {eq['from']}, or the images)")
+                continue
+            d_link = (a[0] - b[0], a[1] - b[1])
+            d_img = (ia[0] - ib[0], ia[1] - ib[1])
+            la, li = math.hypot(*d_link), math.hypot(*d_img)
+            if la < 2.0 or li < 2.0:
+                continue
+            checked += 1
+            cos = (d_link[0] * d_img[0] + d_link[1] * d_img[1]) / (la * li)
+            if abs(cos) > 0.02 / min(la, li):
+                bad.append(f"{v['name']}: the drawn image difference is not perpendicular to the drawn link "
+                           f"{eq['from']}{eq['point']} (cos {cos:.4f})")
+    if checked == 0 and any(v["kind"] == "t" for eq in plans["velocity_equations"] for v in eq["vectors"] if eq["from"]):
+        bad.append("no relative velocity long enough to check on the sheet")
+    if bad:
+        print(f"{svg_path}:")
+        print("\n".join(bad))
+        sys.exit(1)
+
+
+def dxf_main(argv):
+    """The plans DXF read back: images' circles, the lever's and polygons' arrowheads."""
+    dxf_path, json_path = argv
+    plans = json.load(open(json_path))
+    lines = open(dxf_path, encoding="ascii").read().split("\n")
+    pairs = [(int(lines[i].strip()), lines[i + 1]) for i in range(0, len(lines) - 1, 2)]
+    height = None
+    for i, (c, v) in enumerate(pairs):
+        if c == 9 and v == "$LIMMAX":
+            height = float(pairs[i + 2][1])
+    comments = [v for c, v in pairs if c == 999]
+    entities, cur = [], None
+    for c, v in pairs:
+        if c == 0:
+            cur = {"type": v}
+            entities.append(cur)
+        elif cur is not None and c in (8, 10, 20, 40):
+            cur[c] = v if c == 8 else float(v)
+    bad = []
+
+    def group(kind, **match):
+        for text in comments:
+            if not text.startswith("kinetostat group " + kind + " "):
+                continue
+            attrs = dict(re.findall(r"(data-[a-z-]+)=(\S+(?: [-0-9.]+(?= data-|$))?)", text))
+            if all(attrs.get(k) == v for k, v in match.items()):
+                return attrs
+        return None
+
+    for kind, layer, key in (("velocity-plan", "VPLAN", "velocity_plan"), ("acceleration-plan", "APLAN", "acceleration_plan")):
+        g = group(kind)
+        if g is None:
+            bad.append(f"no {kind} group comment")
+            continue
+        px, py = map(float, g["data-pole"].split())
+        mu, rot = float(g["data-mu"]), float(g["data-rotation"])
+        circles = [(e[10], height - e[20]) for e in entities if e["type"] == "CIRCLE" and e.get(8) == layer]
+        for p in plans[key]["points"]:
+            q = turned((p["x"], p["y"]), rot)
+            want = (px + q[0] / mu, py - q[1] / mu)
+            if not any(math.hypot(x - want[0], y - want[1]) <= 0.011 for x, y in circles):
+                bad.append(f"{layer}: no circle at the image of {p['name']} {want}")
+    heads = {layer: sum(1 for e in entities if e["type"] == "SOLID" and e.get(8) == layer) for layer in ("LEVER", "POLYGONS")}
+    g = group("lever")
+    z = plans["zhukovsky"]
+    if z["effort"] is not None:
+        if g is None:
+            bad.append("no lever group comment")
+        else:
+            mu_f = float(g["data-mu-force"])
+            drawn = 0
+            for ld in z["loads"] + [z["balancing"]]:
+                f = math.hypot(ld["couple"]["x"], ld["couple"]["y"]) if ld["kind"] == "moment" else math.hypot(ld["x"], ld["y"])
+                pair = ld["kind"] == "moment" or len(ld.get("points", [])) == 2
+                if f / mu_f >= 1.0 and not (ld["kind"] == "moment" and ld["couple"]["l"] == 0):
+                    drawn += 2 if pair else 1
+            if heads["LEVER"] != drawn:
+                bad.append(f"LEVER: {heads['LEVER']} arrowheads, {drawn} loads' forces drawn")
+    drawn = 0
+    for poly in plans["force_plans"]:
+        g = group("force-polygon", **{"data-group": poly["group"]})
+        if g is None:
+            bad.append(f"no force-polygon group comment for {poly['group']}")
+            continue
+        mu = float(g["data-mu"])
+        n = len(poly["vectors"])
+        tips = [(0.0, 0.0)]
+        for v in poly["vectors"]:
+            tips.append((tips[-1][0] + v["x"], tips[-1][1] + v["y"]))
+        drawn += sum(1 for v in poly["vectors"] if math.hypot(v["x"], v["y"]) / mu >= 1.0)
+        for r in poly["reactions"]:
+            a, b = tips[r["tail"]], tips[r["head"] % (n + 1)]
+            if math.hypot(b[0] - a[0], b[1] - a[1]) / mu >= 1.0:
+                drawn += 1
+    # the input link's drawing adds its forces' arrows (at least its polygon's)
+    if heads["POLYGONS"] < drawn:
+        bad.append(f"POLYGONS: {heads['POLYGONS']} arrowheads, the polygons draw {drawn} vectors")
+    if bad:
+        print(f"{dxf_path}:")
+        print("\n".join(bad))
+        sys.exit(1)
+
+
 def main():
     if sys.argv[1:2] == ["groups"]:
         groups_main(sys.argv[2:])
         return
+    if sys.argv[1:2] == ["sheet"] and len(sys.argv) == 5:
+        sheet_main(sys.argv[2:])
+        return
+    if sys.argv[1:2] == ["dxf"] and len(sys.argv) == 4:
+        dxf_main(sys.argv[2:])
+        return
     args = [a for a in sys.argv[1:] if not a.startswith("--")]
     flags = {a for a in sys.argv[1:] if a.startswith("--")}
-    if len(args) != 2:
+    if len(args) < 2:
         print(__doc__)
         sys.exit(1)
-    plans = json.load(open(args[0]))
-    rows = list(csv.reader(open(args[1], newline="")))
+    rows = list(csv.reader(open(args[-1], newline="")))
+    failed = False
+    for path in args[:-1]:
+        failed = check_one(path, rows, flags) or failed
+    sys.exit(1 if failed else 0)
+
+
+def check_one(path, rows, flags):
+    """Every check asked for on one step's plans; prints the failures, returns whether any."""
+    args = [path]
+    plans = json.load(open(path))
     header, row = rows[0], rows[plans["step"]]
     col = {name: float(row[i]) for i, name in enumerate(header)}
     bad = []
@@ -271,7 +508,7 @@ def main():
     if bad:
         print(f"{args[0]} (step {plans['step']}):")
         print("\n".join(bad))
-        sys.exit(1)
+    return bool(bad)
 
 
 def is_pair_force(name):

@@ -83,7 +83,8 @@ module kinetostat_cli
     "            surname, group, variant) on the legacy table and a title block on the sheets", &
     "--at K      with dxf: the mechanism at step K as an ASCII DXF drawing for CAD programs", &
     "--plans     with json and --at K: the graphical method at step K (plans of velocities and", &
-    "            accelerations, force polygons, Zhukovsky's lever) as numbers", &
+    "            accelerations, force polygons, Zhukovsky's lever) as numbers; with dxf and --at K:", &
+    "            its sheet (--format plans) as a DXF drawing", &
     "--lang      language of the table's labels: en (default) or ru (the 1991 printouts)", &
     "--kinematics  csv and json add positions of joints and centres of mass, link angles,", &
     "            angular speeds and accelerations, accelerations of the centres of mass and", &
@@ -908,8 +909,9 @@ contains
       call fatal_error(error, exit_usage, "sweep writes the summary format only (--format summary)")
     else if (allocated(args%options%pairs) .and. args%options%format /= format_svg) then
       call fatal_error(error, exit_usage, "--pairs needs --format svg")
-    else if (args%options%plans .and. (args%options%format /= format_json .or. args%options%at_step == 0)) then
-      call fatal_error(error, exit_usage, "--plans needs --format json and --at K")
+    else if (args%options%plans .and. (all(args%options%format /= [format_json, format_dxf]) .or. &
+      args%options%at_step == 0)) then
+      call fatal_error(error, exit_usage, "--plans needs --format json or dxf and --at K")
     else if (args%options%format == format_plans .and. args%options%at_step == 0) then
       call fatal_error(error, exit_usage, "--format plans needs --at K (the step whose plans are drawn)")
     else if (args%options%format == format_dxf .and. args%options%at_step == 0) then

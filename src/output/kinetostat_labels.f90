@@ -302,6 +302,36 @@ contains
       text = "входное звено"
     case ("known forces first, then the unknown reactions")
       text = "сначала известные силы, затем искомые реакции"
+    case ("Mechanism")
+      text = "Механизм"
+    case ("position")
+      text = "положение"
+    case ("the plans in the mechanism's frame")
+      text = "планы в системе координат чертежа механизма"
+    case ("Loads on the lever")
+      text = "Нагрузки на рычаге"
+    case ("image")
+      text = "точка плана"
+    case ("arms on the lever")
+      text = "плечи на рычаге"
+    case ("Values read off the plans")
+      text = "Величины по планам"
+    case ("counterclockwise")
+      text = "против часовой стрелки"
+    case ("clockwise")
+      text = "по часовой стрелке"
+    case ("at the pole")
+      text = "в полюсе"
+    case ("not drawn, shorter than 1 mm")
+      text = "не показаны, короче 1 мм"
+    case ("Balancing effort")
+      text = "Уравновешивающее усилие"
+    case ("read off the sheet (vectors to 0.5 mm, arms to 1 mm)")
+      text = "по чертежу (векторы с точностью 0,5 мм, плечи 1 мм)"
+    case ("lever")
+      text = "рычаг"
+    case ("polygons")
+      text = "планы сил"
     case ("relative velocities: v_PQ of a link's points, r along a guide")
       text = "относительные скорости: v_PQ точек звена, r вдоль направляющей"
     case ("components: n normal, τ tangential, k Coriolis, r relative")

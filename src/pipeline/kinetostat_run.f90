@@ -24,7 +24,7 @@ module kinetostat_run
   use kinetostat_plans, only: build_plans
   use kinetostat_plans_sheet, only: plans_sheet_t, plans_sheet
   use kinetostat_plans_json, only: write_plans_json
-  use kinetostat_svg_plans, only: write_svg_plans
+  use kinetostat_plans_draw, only: draw_plans_sheet
   use kinetostat_error, only: exit_usage
   use kinetostat_labels, only: lang_en
   use kinetostat_override, only: override_t, mark_overrides
@@ -345,20 +345,22 @@ contains
     if (allocated(error)) return
     call mech%force_plan(table, k, drawing, error)
     if (allocated(error)) return
-    if (options%plans) then
+    if (options%plans .or. options%format == format_plans) then
+      ! the graphical method: as numbers (json), or its sheet (plans: SVG; dxf)
       call build_plans(topo, drawing, table, k, plans)
       call plans_sheet(topo, drawing, plans, plans_geometry)
-      call write_plans_json(mech%title(options%lang), plans, plans_geometry, table, k, out)
-    else if (options%format == format_plans) then
-      call build_plans(topo, drawing, table, k, plans)
-      call write_svg_plans(mech%title(options%lang), table, k, plans, options%lang, out)
+      if (options%format == format_json) then
+        call write_plans_json(mech%title(options%lang), plans, plans_geometry, table, k, out)
+        return
+      end if
+      call draw_plans_sheet(mech%title(options%lang), table, k, drawing, plans, plans_geometry, options%lang, sheet)
     else
       call write_mechanism_sheet(mech%title(options%lang), table, k, drawing, options%lang, sheet)
-      if (options%format == format_dxf) then
-        call write_sheet_dxf(sheet, out)
-      else
-        call write_sheet_svg(sheet, out)
-      end if
+    end if
+    if (options%format == format_dxf) then
+      call write_sheet_dxf(sheet, out)
+    else
+      call write_sheet_svg(sheet, out)
     end if
   end subroutine write_at_step
 

@@ -170,7 +170,7 @@ contains
     solved(0) = .true.
     if (crank > 0) then
       solved(crank) = .true.
-      groups = [groups, plan_group_t([crank], null(), .true., 1, "I("//frame//","//group_links_text(topo, [crank])//")", driver)]
+      groups = [groups, plan_group_t([crank], null(), .true., 1, "I("//frame//","//group_numbers_text(topo, [crank])//")", driver)]
     end if
     do
       found = .false.
@@ -180,7 +180,7 @@ contains
           if (solved(j)) cycle inner
           if (count(pair_of(i, j)) == 0) cycle inner
           if (to_solved(i) /= 1 .or. to_solved(j) /= 1) cycle inner
-          groups = [groups, plan_group_t([i, j], null(), .false., 2, "II("//group_links_text(topo, [i, j])//")", "")]
+          groups = [groups, plan_group_t([i, j], null(), .false., 2, "II("//group_numbers_text(topo, [i, j])//")", "")]
           solved([i, j]) = .true.
           found = .true.
           exit outer
@@ -191,11 +191,11 @@ contains
     if (.not. all(solved)) then
       rest = pack([(i, i=1, nl)], .not. solved(1:))
       if (actuator > 0 .and. any(rest == actuator)) then
-        groups = [groups, plan_group_t(rest, null(), .true., 1, "I("//frame//","//group_links_text(topo, rest)//")", driver)]
+        groups = [groups, plan_group_t(rest, null(), .true., 1, "I("//frame//","//group_numbers_text(topo, rest)//")", driver)]
       else if (size(rest) == 4 .or. size(rest) == 6) then
-        groups = [groups, plan_group_t(rest, null(), .false., 3, "III("//group_links_text(topo, rest)//")", "")]
+        groups = [groups, plan_group_t(rest, null(), .false., 3, "III("//group_numbers_text(topo, rest)//")", "")]
       else
-        groups = [groups, plan_group_t(rest, null(), .false., 0, "("//group_links_text(topo, rest)//")", "")]
+        groups = [groups, plan_group_t(rest, null(), .false., 0, "("//group_numbers_text(topo, rest)//")", "")]
       end if
     end if
   contains
@@ -235,6 +235,24 @@ contains
       end associate
     end do
   end function frame_number
+
+  !> A group's links as the structure formula writes them, by number ("3,1,2": an &assur
+  !> deck's link L1 is link 1).
+  pure function group_numbers_text(topo, links) result(text)
+    type(sketch_t), intent(in) :: topo
+    integer, intent(in) :: links(:)
+    character(len=:), allocatable :: text
+    integer :: q
+    text = ""
+    do q = 1, size(links)
+      if (q > 1) text = text//","
+      if (topo%links(links(q))%name(1:1) == "L") then
+        text = text//topo%links(links(q))%name(2:)
+      else
+        text = text//topo%links(links(q))%name
+      end if
+    end do
+  end function group_numbers_text
 
   !> A group's links as the sheets write them, "2,3".
   pure function group_links_text(topo, links) result(text)

@@ -37,7 +37,8 @@ contains
     if (table%input_column > 0) call out%put('  '//json_string(table%columns(table%input_column)%name)//': '// &
       full_number(table%rows(table%input_column, k))//',')
     call out%put('  "sheet_rotation": '//full_number(plans%sheet_rotation)//',')
-    call out%put('  "scales": {"mu_l": '//full_number(sheet%mu_l)//', "mu_v": '//full_number(sheet%mu_v)//', "mu_a": '// &
+    call out%put('  "scales": {"mu_l": '//full_number(sheet%mu_l)//', "drawing_scale": '// &
+      json_string(sheet%view%drawing_scale%text)//', "mu_v": '//full_number(sheet%mu_v)//', "mu_a": '// &
       full_number(sheet%mu_a)//', "lever_mu_v": '//full_number(sheet%mu_lever)//', "lever_mu_F": '// &
       full_number(sheet%mu_force)//'},')
     call out%put('  "groups": [')

@@ -1,47 +1,57 @@
 !> The plans sheet's geometry: where each drawing goes on the sheet and at which scale, and
 !> what a teacher reads off it. One sheet, A2 landscape (594 x 420 mm) in the ГОСТ 2.301
-!> frame: the mechanism at mu_l, the plans of velocities and accelerations at mu_v, mu_a,
-!> Zhukovsky's lever (its plan at mu_v of its own, its loads at mu_F), the force polygons of
-!> the units of the structure (each at its mu_F), the tables of values and of the lever's
-!> loads, the title block. Everything is drawn in the mechanism drawing's frame (the
-!> position frame turned by the sheet's rotation, gravity down the sheet).
+!> frame: the mechanism at a ГОСТ 2.302 scale (mu_l, kinetostat_mechanism_view), the plans of
+!> velocities and accelerations at mu_v, mu_a, Zhukovsky's lever (its plan at mu_v of its
+!> own, its loads at mu_F) with the table of its loads, the force polygons of the units of the
+!> structure (each at its mu_F; an input link's with the link and its forces' arms at a larger
+!> scale of its own), the values table, the title block. Everything is drawn in the mechanism
+!> drawing's frame (the position frame turned by the sheet's rotation, gravity down the
+!> sheet): a vector v of the position frame is drawn as view%direction(v).
 !>
 !> The scales are the drawing scales a student would take: 1, 1.2, 1.5, 2, 2.5, 3, 4, 5, 6 or 8
 !> times a power of ten units per mm. With them the sheet compares the balancing effort
 !> from the lever with the one from the force polygons the way a teacher checks a student's
-!> sheet: every vector read off the drawing to 0.5 mm and every arm to 1 mm.
+!> sheet (compare_efforts).
 module kinetostat_plans_sheet
-  use kinetostat_kinds, only: wp, deg_to_rad
+  use kinetostat_kinds, only: wp, pi
   use kinetostat_sketch, only: sketch_t
   use kinetostat_drawing, only: drawing_t, force_pair
-  use kinetostat_plans_base, only: plans_t, plan_vector_t, plan_equation_t, load_moment, cross, perp, link_index, &
+  use kinetostat_scales, only: round_scale
+  use kinetostat_sheet, only: paper_t, iso_paper
+  use kinetostat_mechanism_view, only: mechanism_view_t, fit_mechanism_view
+  use kinetostat_plans_base, only: plans_t, plan_vector_t, plan_equation_t, load_moment, cross, link_index, &
     owner, pivot_of, guide_link, component_normal, component_tangential, component_reaction
   implicit none
   private
-  public :: plans_sheet_t, plans_sheet, plan_scale, turn, chain_tips, polygon_tips, sheet_size
+  public :: plans_sheet_t, plans_sheet, turn, chain_tips, polygon_tips, panel_inner, lever_arrow, panel_head, &
+    group_text
 
-  !> The sheet: A2 landscape, mm.
-  real(wp), parameter :: sheet_size(2) = [594.0_wp, 420.0_wp]
   !> Room kept around a drawing in its panel for its labels and arrows, mm.
   real(wp), parameter :: margin = 10.0_wp
   !> The lever's largest load arrow, mm.
   real(wp), parameter :: lever_arrow = 24.0_wp
+  !> A panel's heading band at its top and its scale line at its bottom, mm.
+  real(wp), parameter :: panel_head = 8.0_wp, panel_foot = 9.0_wp
 
-  !> The sheet's panels (x, y of the upper left corner, width, height; mm) and scales.
+  !> The sheet's panels (x0, y0, x1, y1; mm) and scales.
   type :: plans_sheet_t
-    real(wp) :: mechanism(4) = [22.0_wp, 30.0_wp, 186.0_wp, 176.0_wp]
-    real(wp) :: velocity(4) = [210.0_wp, 30.0_wp, 187.0_wp, 176.0_wp]
-    real(wp) :: acceleration(4) = [399.0_wp, 30.0_wp, 188.0_wp, 176.0_wp]
-    real(wp) :: lever(4) = [22.0_wp, 208.0_wp, 186.0_wp, 150.0_wp]
-    real(wp) :: polygons(4) = [210.0_wp, 208.0_wp, 377.0_wp, 150.0_wp]
-    real(wp) :: values(4) = [22.0_wp, 360.0_wp, 186.0_wp, 53.0_wp]
-    real(wp) :: lever_table(4) = [210.0_wp, 360.0_wp, 192.0_wp, 53.0_wp]
+    !> The paper: A2 landscape.
+    type(paper_t) :: paper
+    !> The panels: the mechanism, the two plans, the lever's drawing and its table of loads,
+    !> the force polygons, the values table, the balancing effort's results.
+    real(wp) :: mechanism(4) = 0.0_wp, velocity(4) = 0.0_wp, acceleration(4) = 0.0_wp, lever(4) = 0.0_wp, &
+      lever_table(4) = 0.0_wp, polygons(4) = 0.0_wp, values(4) = 0.0_wp, results(4) = 0.0_wp
+    !> Where the mechanism is drawn (its ГОСТ 2.302 scale; mu_l = view%mu_l()).
+    type(mechanism_view_t) :: view
     !> Lengths, m/mm; velocities (the plan and the lever's), (m/s)/mm; accelerations,
     !> (m/s^2)/mm; the lever's loads, N/mm.
     real(wp) :: mu_l = 1.0_wp, mu_v = 1.0_wp, mu_a = 1.0_wp, mu_lever = 1.0_wp, mu_force = 1.0_wp
-    !> Every unit's polygon: its cell in the polygons' panel and its scale, N/mm; an input
-    !> link's cell also shows the link with its forces and their arms (the left part of the
-    !> cell, `link_boxes`) at a larger scale of its own, mu_link (m/mm; 0: none).
+    !> The poles of the plans and of the lever on the sheet, mm.
+    real(wp) :: pole_v(2) = 0.0_wp, pole_a(2) = 0.0_wp, pole_lever(2) = 0.0_wp
+    !> Every unit's polygon: its cell in the polygons' panel (x0, y0, x1, y1) and its scale,
+    !> N/mm; an input link's cell also shows the link with its forces and their arms (the
+    !> left part of the cell, `link_boxes`) at a larger scale of its own, mu_link (m/mm; 0:
+    !> none).
     real(wp), allocatable :: cells(:, :), mu_f(:), link_boxes(:, :), mu_link(:)
     !> The sheet's rotation against the position frame, rad.
     real(wp) :: rotation = 0.0_wp
@@ -62,46 +72,50 @@ contains
     type(plans_t), intent(in) :: plans
     type(plans_sheet_t), intent(out) :: sheet
     real(wp), allocatable :: pts(:, :), tips(:, :)
-    real(wp) :: fmax, r, box(4)
+    real(wp) :: fmax, r, b(4), cell(4), quarter
     integer :: i, e, n, columns, rows
     r = drawing%view_angle
+    quarter = 0.5_wp * pi
     sheet%rotation = r
-    ! the mechanism: its points and guides, turned
-    allocate (pts(2, 0))
-    do i = 1, size(drawing%points)
-      pts = add(pts, turn(drawing%points(i)%p, r))
-    end do
-    if (allocated(drawing%guides)) then
-      do i = 1, size(drawing%guides)
-        associate (g => drawing%guides(i))
-          pts = add(pts, turn(g%p + g%half_length * [cos(g%angle), sin(g%angle)], r))
-          pts = add(pts, turn(g%p - g%half_length * [cos(g%angle), sin(g%angle)], r))
-        end associate
-      end do
-    end if
-    sheet%mu_l = fit_scale(pts, sheet%mechanism, .false.)
+    ! the panels on A2 landscape, inside the frame (x 20 .. 589, y 5 .. 415): a header band,
+    ! the mechanism and the two plans, the lever with its table and the polygons, the values
+    ! table left of the title block
+    sheet%paper = iso_paper("A2", .true.)
+    b = sheet%paper%inside()
+    sheet%mechanism = [b(1) + 2.0_wp, b(2) + 21.0_wp, b(1) + 190.0_wp, b(2) + 171.0_wp]
+    sheet%velocity = [sheet%mechanism(3) + 2.0_wp, sheet%mechanism(2), sheet%mechanism(3) + 190.0_wp, sheet%mechanism(4)]
+    sheet%acceleration = [sheet%velocity(3) + 2.0_wp, sheet%mechanism(2), b(3) - 2.0_wp, sheet%mechanism(4)]
+    sheet%lever = [b(1) + 2.0_wp, sheet%mechanism(4) + 2.0_wp, b(1) + 152.0_wp, b(4) - 57.0_wp]
+    sheet%lever_table = [sheet%lever(3), sheet%lever(2), sheet%lever(3) + 92.0_wp, sheet%lever(4)]
+    sheet%polygons = [sheet%lever_table(3) + 2.0_wp, sheet%lever(2), b(3) - 2.0_wp, sheet%lever(4)]
+    sheet%values = [b(1) + 2.0_wp, sheet%lever(4) + 2.0_wp, b(3) - 300.0_wp, b(4) - 1.0_wp]
+    sheet%results = [sheet%values(3) + 2.0_wp, sheet%values(2), b(3) - 187.0_wp, sheet%values(4)]
+    ! the mechanism at a ГОСТ 2.302 scale
+    call fit_mechanism_view(drawing, panel_inner(sheet%mechanism), 6.0_wp, sheet%view)
+    sheet%mu_l = sheet%view%mu_l()
     ! the plans: the images and the corners of the equations' chains
-    sheet%mu_v = fit_scale(plan_points(plans%velocities, plans%velocity_equations, r), sheet%velocity, .true.)
-    sheet%mu_a = fit_scale(plan_points(plans%accelerations, plans%equations, r), sheet%acceleration, .true.)
-    ! the lever: the plan turned by 90 deg more, the images of the loads' points
-    deallocate (pts)
+    call fit_plan(plan_points(plans%velocities, plans%velocity_equations), panel_inner(sheet%velocity), sheet%mu_v, &
+      sheet%pole_v)
+    call fit_plan(plan_points(plans%accelerations, plans%equations), panel_inner(sheet%acceleration), sheet%mu_a, &
+      sheet%pole_a)
+    ! the lever: the plan turned by 90 deg more, the images of the loads' points; room for
+    ! the load arrows around it
     allocate (pts(2, 0))
     do i = 1, size(plans%velocities)
-      pts = add(pts, turn(plans%velocities(i)%v, r + 0.5_wp * acos(-1.0_wp)))
+      pts = add(pts, turn(plans%velocities(i)%v, r + quarter))
     end do
     fmax = 0.0_wp
     if (plans%lever_known) then
       do i = 1, size(plans%loads)
-        pts = add(pts, turn(plans%loads(i)%at, r + 0.5_wp * acos(-1.0_wp)))
-        if (plans%loads(i)%pair) pts = add(pts, turn(plans%loads(i)%at2, r + 0.5_wp * acos(-1.0_wp)))
+        pts = add(pts, turn(plans%loads(i)%at, r + quarter))
+        if (plans%loads(i)%pair) pts = add(pts, turn(plans%loads(i)%at2, r + quarter))
         fmax = max(fmax, norm2(plans%loads(i)%f))
       end do
       fmax = max(fmax, norm2(plans%balancing%f))
     end if
-    sheet%mu_lever = fit_scale(pts, sheet%lever + [lever_arrow, lever_arrow, -2.0_wp * lever_arrow, -2.0_wp * lever_arrow], &
-      .true.)
-    sheet%mu_force = 1.0_wp
-    if (fmax > 0.0_wp) sheet%mu_force = plan_scale(fmax / lever_arrow)
+    call fit_plan(pts, panel_inner(sheet%lever) + 0.6_wp * [lever_arrow, lever_arrow, -lever_arrow, -lever_arrow], &
+      sheet%mu_lever, sheet%pole_lever)
+    sheet%mu_force = round_scale(fmax, lever_arrow)
     ! the polygons: a grid of cells, each polygon at its own scale; an input link's cell
     ! with the link drawn in its left part
     n = size(plans%group_polygons)
@@ -110,24 +124,27 @@ contains
     sheet%mu_link = 0.0_wp
     columns = max(1, min(n, 3))
     rows = max(1, (n + columns - 1) / columns)
+    b = panel_inner(sheet%polygons)
     do e = 1, n
-      sheet%cells(:, e) = [sheet%polygons(1) + 2.0_wp + (sheet%polygons(3) - 4.0_wp) / columns * modulo(e - 1, columns), &
-        sheet%polygons(2) + 8.0_wp + (sheet%polygons(4) - 10.0_wp) / rows * ((e - 1) / columns), &
-        (sheet%polygons(3) - 4.0_wp) / columns, (sheet%polygons(4) - 10.0_wp) / rows]
-      box = sheet%cells(:, e) + [0.0_wp, 4.0_wp, 0.0_wp, -8.0_wp]
+      associate (w => (b(3) - b(1)) / columns, h => (b(4) - b(2)) / rows)
+        sheet%cells(:, e) = [b(1) + w * modulo(e - 1, columns), b(2) + h * ((e - 1) / columns), &
+          b(1) + w * (modulo(e - 1, columns) + 1), b(2) + h * ((e - 1) / columns + 1)]
+      end associate
+      ! the cell: its caption above, its scale below
+      cell = sheet%cells(:, e) + [1.0_wp, 5.0_wp, -1.0_wp, -5.0_wp]
       if (plans%group_polygons(e)%input) then
         call link_points(e, pts)
         if (size(pts, 2) >= 2) then
-          sheet%link_boxes(:, e) = [box(1), box(2), 0.45_wp * box(3), box(4)]
+          sheet%link_boxes(:, e) = [cell(1), cell(2), cell(1) + 0.45_wp * (cell(3) - cell(1)), cell(4)]
           sheet%mu_link(e) = fit_scale(pts, sheet%link_boxes(:, e), .false.)
-          box = [box(1) + 0.45_wp * box(3), box(2), 0.55_wp * box(3), box(4)]
+          cell(1) = sheet%link_boxes(3, e)
         end if
       end if
       call polygon_tips(plans%group_polygons(e)%vectors, tips)
       do i = 1, size(tips, 2)
         tips(:, i) = turn(tips(:, i), r)
       end do
-      sheet%mu_f(e) = fit_scale(tips, box, .false.)
+      sheet%mu_f(e) = fit_scale(tips, cell, .false.)
     end do
     call compare_efforts(topo, drawing, plans, sheet)
   contains
@@ -136,35 +153,25 @@ contains
       integer, intent(in) :: e
       real(wp), allocatable, intent(out) :: pts(:, :)
       integer :: q, t, l
-      character(len=16) :: name
       allocate (pts(2, 0))
       do q = 1, size(drawing%points)
-        name = drawing%points(q)%name
         do t = 1, size(plans%groups)
-          if (group_text(t) /= plans%group_polygons(e)%link) cycle
+          if (group_text(plans, t) /= plans%group_polygons(e)%link) cycle
           do l = 1, size(plans%groups(t)%links)
-            if (any(topo%links(plans%groups(t)%links(l))%points == name) .or. &
-              name == "S"//topo%links(plans%groups(t)%links(l))%name) pts = add(pts, turn(drawing%points(q)%p, r))
+            associate (link => topo%links(plans%groups(t)%links(l)))
+              if (any(link%points == drawing%points(q)%name) .or. drawing%points(q)%name == "S"//link%name) then
+                pts = add(pts, turn(drawing%points(q)%p, r))
+              end if
+            end associate
           end do
         end do
       end do
     end subroutine link_points
-    !> Unit t's links as its polygon names them ("2,3").
-    pure function group_text(t) result(text)
-      integer, intent(in) :: t
-      character(len=16) :: text
-      integer :: q
-      text = ""
-      do q = 1, size(plans%groups(t)%names)
-        if (q > 1) text = trim(text)//","
-        text = trim(text)//trim(plans%groups(t)%names(q))
-      end do
-    end function group_text
-    !> The points a plan must show: its images and every corner of its equations' chains.
-    pure function plan_points(images, equations, r) result(all)
+    !> The points a plan must show (turned): its images and every corner of its equations'
+    !> chains.
+    pure function plan_points(images, equations) result(all)
       type(plan_vector_t), intent(in) :: images(:)
       type(plan_equation_t), intent(in) :: equations(:)
-      real(wp), intent(in) :: r
       real(wp), allocatable :: all(:, :), corners(:, :)
       integer :: q, t
       allocate (all(2, 0))
@@ -180,6 +187,19 @@ contains
     end function plan_points
   end subroutine plans_sheet
 
+  !> Unit t's links as its polygon names them ("2,3").
+  pure function group_text(plans, t) result(text)
+    type(plans_t), intent(in) :: plans
+    integer, intent(in) :: t
+    character(len=16) :: text
+    integer :: q
+    text = ""
+    do q = 1, size(plans%groups(t)%names)
+      if (q > 1) text = trim(text)//","
+      text = trim(text)//trim(plans%groups(t)%names(q))
+    end do
+  end function group_text
+
   !> The points with one more.
   pure function add(pts, p) result(more)
     real(wp), intent(in) :: pts(:, :), p(2)
@@ -189,42 +209,50 @@ contains
     more(:, size(pts, 2) + 1) = p
   end function add
 
-  !> The scale (units per mm, a drawing scale) at which the points (the origin with them when
-  !> `pole`) fit into the panel `box` less its margins.
+  !> The scale (units per mm, a round scale) at which the points (the origin with them when
+  !> `pole`) fit into the box (x0, y0, x1, y1, mm) less its margins.
   pure real(wp) function fit_scale(pts, box, pole)
     real(wp), intent(in) :: pts(:, :), box(4)
     logical, intent(in) :: pole
-    real(wp) :: lo(2), hi(2), span
-    if (size(pts, 2) == 0) then
-      fit_scale = 1.0_wp
-      return
-    end if
+    real(wp) :: lo(2), hi(2)
+    fit_scale = 1.0_wp
+    if (size(pts, 2) == 0) return
     lo = minval(pts, 2)
     hi = maxval(pts, 2)
     if (pole) then
       lo = min(lo, 0.0_wp)
       hi = max(hi, 0.0_wp)
     end if
-    span = max((hi(1) - lo(1)) / max(box(3) - 2.0_wp * margin, 1.0_wp), (hi(2) - lo(2)) / max(box(4) - 2.0_wp * margin - &
-      6.0_wp, 1.0_wp))
-    fit_scale = 1.0_wp
-    if (span > 0.0_wp) fit_scale = plan_scale(span)
+    if (all(hi - lo <= 0.0_wp)) return
+    fit_scale = max(round_scale(hi(1) - lo(1), max(box(3) - box(1) - 2.0_wp * margin, 1.0_wp)), &
+      round_scale(hi(2) - lo(2), max(box(4) - box(2) - 2.0_wp * margin, 1.0_wp)))
   end function fit_scale
 
-  !> A drawing scale (units per mm) at least `span`: the smallest of 1, 1.2, 1.5, 2, 2.5, 3,
-  !> 4, 5, 6, 8 times a power of ten (the scales a drawing is made at).
-  pure real(wp) function plan_scale(span)
-    real(wp), intent(in) :: span
-    real(wp), parameter :: steps(*) = [1.0_wp, 1.2_wp, 1.5_wp, 2.0_wp, 2.5_wp, 3.0_wp, 4.0_wp, 5.0_wp, 6.0_wp, &
-      8.0_wp, 10.0_wp]
-    real(wp) :: decade
-    integer :: i
-    decade = 10.0_wp**floor(log10(span))
-    plan_scale = 10.0_wp * decade
-    do i = size(steps), 1, -1
-      if (steps(i) * decade >= span * (1.0_wp - 1.0e-12_wp)) plan_scale = steps(i) * decade
-    end do
-  end function plan_scale
+  !> A plan's scale (round) and its pole on the sheet: the points (turned, in the position
+  !> frame's units) and the pole fit into `area` (x0, y0, x1, y1, mm) less its margins, centred.
+  pure subroutine fit_plan(pts, area, mu, pole)
+    real(wp), intent(in) :: pts(:, :), area(4)
+    real(wp), intent(out) :: mu, pole(2)
+    real(wp) :: lo(2), hi(2)
+    mu = fit_scale(pts, area, .true.)
+    lo = 0.0_wp
+    hi = 0.0_wp
+    if (size(pts, 2) > 0) then
+      lo = min(lo, minval(pts, 2))
+      hi = max(hi, maxval(pts, 2))
+    end if
+    ! the sheet's y runs down: the turned points' y is flipped
+    pole(1) = 0.5_wp * (area(1) + area(3)) - 0.5_wp * (lo(1) + hi(1)) / mu
+    pole(2) = 0.5_wp * (area(2) + area(4)) + 0.5_wp * (lo(2) + hi(2)) / mu
+    pole = anint(pole * 100.0_wp) / 100.0_wp
+  end subroutine fit_plan
+
+  !> A panel's drawing area: less its heading band and its scale line.
+  pure function panel_inner(box) result(area)
+    real(wp), intent(in) :: box(4)
+    real(wp) :: area(4)
+    area = [box(1) + 2.0_wp, box(2) + panel_head, box(3) - 2.0_wp, box(4) - panel_foot]
+  end function panel_inner
 
   !> v turned by `angle` rad counterclockwise.
   pure function turn(v, angle) result(w)
