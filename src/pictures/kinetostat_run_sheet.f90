@@ -133,11 +133,15 @@ contains
     reserved = 0.0_wp
     if (shaking) reserved = shaking_block_height + gap
     columns = max(3, nint(width / 62.0_wp))
+    ! a table of stages: as large as the column allows, up to three across
+    if (table%input_column == 0) columns = min(3, max(1, n_panels))
     do
       call panel_grid(columns, width, panel_w, panel_h)
       rows = (n_panels + columns - 1) / columns
       y = top + 12.0_wp + rows * (panel_h + gap)
-      if (y + chart_height + reserved <= col(4) .or. columns >= 6) exit
+      if (table%input_column == 0) panel_h = min(panel_h, 150.0_wp)
+      y = top + 12.0_wp + rows * (panel_h + gap)
+      if (table%input_column == 0 .or. y + chart_height + reserved <= col(4) .or. columns >= 6) exit
       columns = columns + 1
     end do
     run_h = col(4) - y - 2.0_wp - reserved
