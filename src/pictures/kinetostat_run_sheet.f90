@@ -216,7 +216,7 @@ contains
     character(*), intent(in) :: note(:)
     character(len=:), allocatable :: line
     integer :: n, i
-    call sheet%text(x, 12.0_wp, title, "title", size=min(3.3_wp, fitting_size(title, width) * 0.6_wp / 0.72_wp), &
+    call sheet%text(x, 12.0_wp, title, "title", size=min(3.3_wp, fitting_size(title, width) * 0.6_wp / 0.8_wp), &
       plain=.true.)
     line = word("deck", lang)//": "//table%deck
     if (allocated(table%subtitle)) line = line//"   "//table%subtitle
