@@ -231,8 +231,7 @@ def check_png(png_path, svg_path):
             pixels = memoryview(row).cast("I")  # one RGBA pixel per 32-bit word
             inked += len(pixels) - pixels.tolist().count(white[0])
             if len(colours) < 64:
-                # a sample across the whole row (its left edge alone is the sheet's margin)
-                colours.update(pixels.tolist()[::max(1, len(pixels) // 64)])
+                colours.update(pixels.tolist())
         else:
             for x in range(0, len(row), 3):
                 if row[x:x + 3] != b"\xff\xff\xff":

@@ -302,7 +302,7 @@ contains
     end subroutine try
   end subroutine place_box
 
-  !> Whether the segment a-b crosses no box taken (touching one within 0.05 mm is allowed).
+  !> Whether the segment a-b (a leader line) keeps 0.1 mm from every box taken.
   pure logical function line_is_free(self, a, b)
     class(label_boxes_t), intent(in) :: self
     !> Ends of the segment, mm.
@@ -311,7 +311,7 @@ contains
     line_is_free = .true.
     if (.not. allocated(self%box)) return
     do i = 1, size(self%box, 2)
-      if (segment_box_distance(a, b, self%box(:, i) + [0.05_wp, 0.05_wp, -0.05_wp, -0.05_wp]) <= 0.0_wp) then
+      if (segment_box_distance(a, b, self%box(:, i)) <= 0.1_wp) then
         line_is_free = .false.
         return
       end if

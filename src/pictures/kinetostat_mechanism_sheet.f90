@@ -98,7 +98,7 @@ contains
     ! the header
     call sheet%set_layer(layer_text)
     call sheet%text(inner(1) + 5.0_wp, 12.0_wp, title, "title", size=fitted_size(title, 3.3_wp, &
-      inner(3) - inner(1) - 10.0_wp, 0.72_wp), plain=.true.)
+      inner(3) - inner(1) - 10.0_wp, 0.8_wp), plain=.true.)
     line = word("deck", lang)//": "//table%deck
     if (allocated(table%subtitle)) line = line//"   "//table%subtitle
     call sheet%text(inner(1) + 5.0_wp, 17.5_wp, line, "subtitle", size=fitted_size(line, 3.0_wp, &

@@ -176,7 +176,8 @@ contains
     end select
     ! what differs from the class: in a style attribute (CSS rules beat presentation attributes)
     css = ""
-    if (abs(e%size - class_font_size(e%class)) > 1.0e-9_wp) css = css//"; font-size: "//scale_number(e%size)//"px"
+    if (abs(e%size - class_font_size(e%class)) > 1.0e-9_wp .or. len(e%class) == 0) css = css//"; font-size: "// &
+      scale_number(e%size)//"px"
     if (e%bold) css = css//"; font-weight: bold"
     if (e%italic) css = css//"; font-style: italic"
     if (allocated(e%fill)) then

@@ -19,7 +19,7 @@ module kinetostat_title_block
   use kinetostat_text, only: int_str
   use kinetostat_labels, only: lang_ru
   use kinetostat_typeset, only: char_count
-  use kinetostat_sheet, only: sheet_t, paper_t, layer_frame, anchor_middle, frame_left, frame_margin
+  use kinetostat_sheet, only: sheet_t, paper_t, layer_frame, anchor_middle, frame_left, frame_margin, line_classes
   use kinetostat_sheet_svg, only: put_sheet_elements
   implicit none
   private
@@ -237,6 +237,7 @@ contains
     character(*), intent(in), optional :: drawing_name
     type(sheet_t) :: sheet
     type(paper_t) :: paper
+    integer :: i, c
     if (.not. allocated(table%student_stamp)) return
     paper%name = ""
     paper%width = width
@@ -249,6 +250,18 @@ contains
       call put_title_block_at(sheet, title_block_from_table(table, "", ""), width - frame_margin - block_width, &
         height - frame_margin - block_height)
     end if
+    ! a sheet not on the model has not the model's style sheet: every style written out
+    do i = 1, sheet%count
+      associate (e => sheet%items(i))
+        do c = 1, size(line_classes)
+          if (line_classes(c)%name /= e%class) cycle
+          e%stroke = trim(line_classes(c)%stroke)
+          e%width = line_classes(c)%width
+          if (len(e%fill) == 0) e%fill = trim(line_classes(c)%fill)
+        end do
+        e%class = ""
+      end associate
+    end do
     call put_sheet_elements(sheet, out)
   end subroutine put_title_block
 

@@ -10,7 +10,8 @@
 !> characters between blanks and punctuation) that is
 !> - a Greek name (phi, Phi, omega, eps, delta, Delta, mu, tau, psi, pi, ...) alone or
 !>   followed by an index: phi1 -> φ₁, omega_m -> ω_m, Phi2 -> Φ₂;
-!> - "MPhi" or "MQ" with an index: MPhi3 -> M_Φ3 (ru M_и3), MQ1 -> M_Q1;
+!> - "MPhi" with an index: MPhi3 -> M_Φ3 (ru M_и3); F or M with a point's name: MQ1 -> M_Q1,
+!>   FS1 -> F_S1;
 !> - "dT" -> ΔT;
 !> - one letter with an index that starts with a digit, "_" or "^": F21 -> F₂₁, S2 -> S₂,
 !>   F5c -> F_5c, a_CB^τ, v_B2B3, a^k_B2B3, J_red;
@@ -226,7 +227,7 @@ contains
     end if
     ! the inertia moment and an external moment: M with the force's symbol as its index
     if (len(t) > 4) then
-      if (t(1:4) == "MPhi" .and. is_digit(t(5:5))) then
+      if (t(1:4) == "MPhi" .and. link_name(t(5:))) then
         mark = "Φ"
         if (lang == lang_ru) mark = "и"
         call push(runs, "M", run_base)
@@ -235,9 +236,10 @@ contains
         return
       end if
     end if
+    ! a force or moment at a named point or on a named link: FS1 -> F_S1, MQ1 -> M_Q1, GL1 -> G_L1
     if (len(t) > 2) then
-      if (t(1:2) == "MQ" .and. is_digit(t(3:3))) then
-        call push(runs, "M", run_base)
+      if (index("FGMQR", t(1:1)) > 0 .and. t(2:2) >= "A" .and. t(2:2) <= "Z" .and. is_digit(t(3:3))) then
+        call push(runs, t(1:1), run_base)
         call push(runs, t(2:), run_sub)
         ok = all_index_chars(t(3:))
         return
@@ -261,8 +263,15 @@ contains
         return
       end if
       rest = t(n + 1:)
-      if (.not. (is_digit(rest(1:1)) .or. rest(1:1) == "_" .or. rest(1:1) == "^")) cycle
       base = trim(greek_letters(g))
+      ! a link named by a letter and a number (PhiL1)
+      if (link_name(rest) .and. .not. is_digit(rest(1:1))) then
+        call push(runs, base, run_base)
+        call push(runs, rest, run_sub)
+        ok = .true.
+        return
+      end if
+      if (.not. (is_digit(rest(1:1)) .or. rest(1:1) == "_" .or. rest(1:1) == "^")) cycle
       call index_runs(base, rest, lang, runs, ok)
       return
     end do
@@ -362,6 +371,19 @@ contains
       if (part == trim(sub_en(i))) out = trim(sub_ru(i))
     end do
   end function course_subscript
+
+  !> Whether `rest` names a link or point as an index: a number ("3", "21"), or a capital
+  !> letter and a number ("L1").
+  pure logical function link_name(rest)
+    character(*), intent(in) :: rest
+    integer :: i
+    link_name = .false.
+    if (len(rest) == 0) return
+    i = 1
+    if (rest(1:1) >= "A" .and. rest(1:1) <= "Z") i = 2
+    if (i > len(rest)) return
+    link_name = verify(rest(i:), "0123456789") == 0
+  end function link_name
 
   !> A number with a word after it ("3rel") with the word in the course's words ("3отн").
   pure function number_word(part) result(out)
