@@ -303,6 +303,8 @@ def dxf_main(argv):
             tips.append((tips[-1][0] + v["x"], tips[-1][1] + v["y"]))
         drawn += sum(1 for v in poly["vectors"] if math.hypot(v["x"], v["y"]) / mu >= 1.0)
         for r in poly["reactions"]:
+            if not r["inner"] and any(v["name"] == r["name"] for v in poly["vectors"]):
+                continue  # a whole reaction drawn as it is, not split
             a, b = tips[r["tail"]], tips[r["head"] % (n + 1)]
             if math.hypot(b[0] - a[0], b[1] - a[1]) / mu >= 1.0:
                 drawn += 1

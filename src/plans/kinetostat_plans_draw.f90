@@ -38,7 +38,8 @@ module kinetostat_plans_draw
   use kinetostat_mechanism_sheet, only: fitted_size
   use kinetostat_plans_base, only: plans_t, plan_vector_t, plan_equation_t, lever_load_t, force_polygon_t, &
     component_normal, component_tangential, component_coriolis, component_relative, component_reaction, load_moment, perp
-  use kinetostat_plans_sheet, only: plans_sheet_t, turn, chain_tips, polygon_tips, panel_inner, panel_head
+  use kinetostat_plans_sheet, only: plans_sheet_t, turn, chain_tips, polygon_tips, panel_inner, panel_head, &
+    input_link_drawing
   implicit none
   private
   public :: draw_plans_sheet, display_name
@@ -593,6 +594,7 @@ contains
         ! the whole reactions and the inner ones
         do j = 1, size(poly%reactions)
           associate (r => poly%reactions(j))
+            if (.not. r%inner .and. any(poly%vectors%name == r%name)) cycle
             p = pole + tips(:, r%tail + 1)
             t = pole + tips(:, r%head + 1)
             if (norm2(t - p) < shortest) cycle
@@ -609,6 +611,7 @@ contains
         end do
         do j = 1, size(poly%reactions)
           associate (r => poly%reactions(j))
+            if (.not. r%inner .and. any(poly%vectors%name == r%name)) cycle
             p = pole + tips(:, r%tail + 1)
             t = pole + tips(:, r%head + 1)
             if (norm2(t - p) < shortest) cycle
@@ -682,20 +685,16 @@ contains
     type(drawing_t) :: link
     type(mechanism_view_t) :: view
     character(len=:), allocatable :: short
-    real(wp) :: box(4), fmax, a(2), tail(2), tip(2), d(2), foot(2), per_newton
+    real(wp) :: box(4), a(2), tail(2), tip(2), d(2), foot(2), per_newton
     real(wp), allocatable :: foot_x(:), foot_y(:)
     character(len=16), allocatable :: arm_names(:)
     integer :: j, pivot, first
     box = geo%link_boxes(:, e)
-    call link_drawing(drawing, plans, e, link, pivot)
+    call input_link_drawing(drawing, plans, e, link, pivot)
     if (pivot == 0) return
-    fmax = 0.0_wp
-    do j = 1, size(link%forces)
-      fmax = max(fmax, norm2(link%forces(j)%f))
-    end do
-    per_newton = 0.3_wp * min(box(3) - box(1), box(4) - box(2)) / max(fmax, tiny(1.0_wp))
+    view = geo%link_views(e)
+    per_newton = geo%link_force_scale(e)
     box(2) = box(2) + 4.0_wp
-    call fit_mechanism_view(link, box, 4.0_wp, view, force_scale=per_newton)
     ! the arms about the pivot first (the link's labels keep off them), named h with the force
     call sheet%set_layer(layer_polygons)
     a = view%point(link%points(pivot)%p)
@@ -743,80 +742,6 @@ contains
       end if
     end function arm_name
   end subroutine draw_input_link
-
-  !> The input link of unit e as a drawing of its own: its points and bars, its forces (all
-  !> but the frame's reactions) and moments; `pivot` is its pivot's index (0: none).
-  pure subroutine link_drawing(drawing, plans, e, link, pivot)
-    type(drawing_t), intent(in) :: drawing
-    type(plans_t), intent(in) :: plans
-    integer, intent(in) :: e
-    type(drawing_t), intent(out) :: link
-    integer, intent(out) :: pivot
-    integer :: j, q
-    character(len=16) :: name
-    logical :: mine
-    allocate (link%points(0), link%bodies(0), link%guides(0), link%forces(0), link%moments(0))
-    link%view_angle = drawing%view_angle
-    pivot = 0
-    name = plans%group_polygons(e)%link
-    do j = 1, size(drawing%bodies)
-      if (drawing%bodies(j)%name /= name) cycle
-      link%bodies = [link%bodies, drawing%bodies(j)]
-      do q = 1, size(drawing%bodies(j)%points)
-        link%points = [link%points, drawing%points(drawing%bodies(j)%points(q))]
-        link%bodies(size(link%bodies))%points(q) = size(link%points)
-        if (drawing%points(drawing%bodies(j)%points(q))%kind == point_pivot) pivot = size(link%points)
-      end do
-    end do
-    if (pivot == 0) return
-    do j = 1, size(drawing%forces)
-      associate (f => drawing%forces(j))
-        mine = .false.
-        if (f%kind == force_pair) then
-          ! F<link><o> as it is, F<o><link> reversed; not the frame's
-          if (len_trim(f%name) == 3) then
-            if (f%name(2:2) == trim(name) .and. is_moving(f%name(3:3))) then
-              link%forces = [link%forces, f]
-            else if (f%name(3:3) == trim(name) .and. is_moving(f%name(2:2))) then
-              link%forces = [link%forces, drawing_force_t("F"//f%name(3:3)//f%name(2:2), force_pair, f%at, -f%f, "")]
-            end if
-          end if
-        else
-          mine = trim(f%on_link) == trim(name) .or. f%name == "G"//trim(name) .or. f%name == "Phi"//trim(name)
-          if (mine) link%forces = [link%forces, f]
-        end if
-      end associate
-    end do
-    do j = 1, size(drawing%moments)
-      associate (m => drawing%moments(j))
-        if (trim(m%on_link) == trim(name) .or. m%name == "M"//trim(name) .or. m%name == "MPhi"//trim(name)) then
-          link%moments = [link%moments, m]
-        end if
-      end associate
-    end do
-    ! shift the link to its pivot (the frame's axes drawn there)
-    associate (a => link%points(pivot)%p)
-      do j = 1, size(link%forces)
-        link%forces(j)%at = link%forces(j)%at - a
-      end do
-      do j = 1, size(link%moments)
-        link%moments(j)%at = link%moments(j)%at - a
-      end do
-      do j = size(link%points), 1, -1
-        link%points(j)%p = link%points(j)%p - a
-      end do
-    end associate
-  contains
-    !> Whether a pair force's digit names a moving link of the plans (not the frame).
-    pure logical function is_moving(digit)
-      character(*), intent(in) :: digit
-      integer :: t
-      is_moving = .false.
-      do t = 1, size(plans%groups)
-        if (any(plans%groups(t)%names == digit) .or. any(plans%groups(t)%names == "L"//digit)) is_moving = .true.
-      end do
-    end function is_moving
-  end subroutine link_drawing
 
   !> The values table: every entry "v_B = pb·μv = 10.0 m/s", "ω2 = v_CB/l_CB = 11.5 rad/s,
   !> clockwise", in columns.

@@ -15,7 +15,7 @@
 module kinetostat_plans_sheet
   use kinetostat_kinds, only: wp, pi
   use kinetostat_sketch, only: sketch_t
-  use kinetostat_drawing, only: drawing_t, force_pair
+  use kinetostat_drawing, only: drawing_t, drawing_force_t, force_pair, point_pivot
   use kinetostat_scales, only: round_scale
   use kinetostat_sheet, only: paper_t, iso_paper
   use kinetostat_mechanism_view, only: mechanism_view_t, fit_mechanism_view
@@ -24,7 +24,7 @@ module kinetostat_plans_sheet
   implicit none
   private
   public :: plans_sheet_t, plans_sheet, turn, chain_tips, polygon_tips, panel_inner, lever_arrow, panel_head, &
-    group_text
+    group_text, input_link_drawing
 
   !> Room kept around a drawing in its panel for its labels and arrows, mm.
   real(wp), parameter :: margin = 10.0_wp
@@ -53,6 +53,10 @@ module kinetostat_plans_sheet
     !> left part of the cell, `link_boxes`) at a larger scale of its own, mu_link (m/mm; 0:
     !> none).
     real(wp), allocatable :: cells(:, :), mu_f(:), link_boxes(:, :), mu_link(:)
+    !> An input link's drawing: its view (a ГОСТ 2.302 scale; the link shifted to its pivot)
+    !> and the scale of its forces' arrows, mm per N.
+    type(mechanism_view_t), allocatable :: link_views(:)
+    real(wp), allocatable :: link_force_scale(:)
     !> The sheet's rotation against the position frame, rad.
     real(wp) :: rotation = 0.0_wp
     !> The balancing effort as measured on the sheet: from the lever and from the force
@@ -73,7 +77,8 @@ contains
     type(plans_sheet_t), intent(out) :: sheet
     real(wp), allocatable :: pts(:, :), tips(:, :)
     real(wp) :: fmax, r, b(4), cell(4), quarter
-    integer :: i, e, n, columns, rows
+    type(drawing_t) :: link
+    integer :: i, e, n, columns, rows, pivot
     r = drawing%view_angle
     quarter = 0.5_wp * pi
     sheet%rotation = r
@@ -119,7 +124,9 @@ contains
     ! the polygons: a grid of cells, each polygon at its own scale; an input link's cell
     ! with the link drawn in its left part
     n = size(plans%group_polygons)
-    allocate (sheet%cells(4, n), sheet%mu_f(n), sheet%link_boxes(4, n), sheet%mu_link(n))
+    allocate (sheet%cells(4, n), sheet%mu_f(n), sheet%link_boxes(4, n), sheet%mu_link(n), sheet%link_views(n), &
+      sheet%link_force_scale(n))
+    sheet%link_force_scale = 0.0_wp
     sheet%link_boxes = 0.0_wp
     sheet%mu_link = 0.0_wp
     columns = max(1, min(n, 3))
@@ -133,10 +140,19 @@ contains
       ! the cell: its caption above, its scale below
       cell = sheet%cells(:, e) + [1.0_wp, 5.0_wp, -1.0_wp, -5.0_wp]
       if (plans%group_polygons(e)%input) then
-        call link_points(e, pts)
-        if (size(pts, 2) >= 2) then
-          sheet%link_boxes(:, e) = [cell(1), cell(2), cell(1) + 0.45_wp * (cell(3) - cell(1)), cell(4)]
-          sheet%mu_link(e) = fit_scale(pts, sheet%link_boxes(:, e), .false.)
+        call input_link_drawing(drawing, plans, e, link, pivot)
+        if (pivot > 0) then
+          sheet%link_boxes(:, e) = [cell(1), cell(2), cell(1) + 0.55_wp * (cell(3) - cell(1)), cell(4)]
+          fmax = 0.0_wp
+          do i = 1, size(link%forces)
+            fmax = max(fmax, norm2(link%forces(i)%f))
+          end do
+          associate (box => sheet%link_boxes(:, e))
+            sheet%link_force_scale(e) = 0.25_wp * min(box(3) - box(1), box(4) - box(2)) / max(fmax, tiny(1.0_wp))
+            call fit_mechanism_view(link, box + [0.0_wp, 4.0_wp, 0.0_wp, 0.0_wp], 3.0_wp, sheet%link_views(e), &
+              force_scale=sheet%link_force_scale(e))
+          end associate
+          sheet%mu_link(e) = sheet%link_views(e)%mu_l()
           cell(1) = sheet%link_boxes(3, e)
         end if
       end if
@@ -148,25 +164,6 @@ contains
     end do
     call compare_efforts(topo, drawing, plans, sheet)
   contains
-    !> The drawn points of the links of unit e (turned), for its link drawing.
-    pure subroutine link_points(e, pts)
-      integer, intent(in) :: e
-      real(wp), allocatable, intent(out) :: pts(:, :)
-      integer :: q, t, l
-      allocate (pts(2, 0))
-      do q = 1, size(drawing%points)
-        do t = 1, size(plans%groups)
-          if (group_text(plans, t) /= plans%group_polygons(e)%link) cycle
-          do l = 1, size(plans%groups(t)%links)
-            associate (link => topo%links(plans%groups(t)%links(l)))
-              if (any(link%points == drawing%points(q)%name) .or. drawing%points(q)%name == "S"//link%name) then
-                pts = add(pts, turn(drawing%points(q)%p, r))
-              end if
-            end associate
-          end do
-        end do
-      end do
-    end subroutine link_points
     !> The points a plan must show (turned): its images and every corner of its equations'
     !> chains.
     pure function plan_points(images, equations) result(all)
@@ -227,6 +224,82 @@ contains
     fit_scale = max(round_scale(hi(1) - lo(1), max(box(3) - box(1) - 2.0_wp * margin, 1.0_wp)), &
       round_scale(hi(2) - lo(2), max(box(4) - box(2) - 2.0_wp * margin, 1.0_wp)))
   end function fit_scale
+
+  !> A plan's scale (round) and its pole on the sheet: the points (turned, in the position
+  !> frame's units) and the pole fit into `area` (x0, y0, x1, y1, mm) less its margins, centred.
+  !> The input link of unit e as a drawing of its own: its points and bars, its forces (all
+  !> but the frame's reactions) and moments; `pivot` is its pivot's index (0: none).
+  pure subroutine input_link_drawing(drawing, plans, e, link, pivot)
+    type(drawing_t), intent(in) :: drawing
+    type(plans_t), intent(in) :: plans
+    integer, intent(in) :: e
+    type(drawing_t), intent(out) :: link
+    integer, intent(out) :: pivot
+    integer :: j, q
+    character(len=16) :: name
+    logical :: mine
+    allocate (link%points(0), link%bodies(0), link%guides(0), link%forces(0), link%moments(0))
+    link%view_angle = drawing%view_angle
+    pivot = 0
+    name = plans%group_polygons(e)%link
+    do j = 1, size(drawing%bodies)
+      if (drawing%bodies(j)%name /= name) cycle
+      link%bodies = [link%bodies, drawing%bodies(j)]
+      do q = 1, size(drawing%bodies(j)%points)
+        link%points = [link%points, drawing%points(drawing%bodies(j)%points(q))]
+        link%bodies(size(link%bodies))%points(q) = size(link%points)
+        if (drawing%points(drawing%bodies(j)%points(q))%kind == point_pivot) pivot = size(link%points)
+      end do
+    end do
+    if (pivot == 0) return
+    do j = 1, size(drawing%forces)
+      associate (f => drawing%forces(j))
+        mine = .false.
+        if (f%kind == force_pair) then
+          ! F<link><o> as it is, F<o><link> reversed; not the frame's
+          if (len_trim(f%name) == 3) then
+            if (f%name(2:2) == trim(name) .and. is_moving(f%name(3:3))) then
+              link%forces = [link%forces, f]
+            else if (f%name(3:3) == trim(name) .and. is_moving(f%name(2:2))) then
+              link%forces = [link%forces, drawing_force_t("F"//f%name(3:3)//f%name(2:2), force_pair, f%at, -f%f, "")]
+            end if
+          end if
+        else
+          mine = trim(f%on_link) == trim(name) .or. f%name == "G"//trim(name) .or. f%name == "Phi"//trim(name)
+          if (mine) link%forces = [link%forces, f]
+        end if
+      end associate
+    end do
+    do j = 1, size(drawing%moments)
+      associate (m => drawing%moments(j))
+        if (trim(m%on_link) == trim(name) .or. m%name == "M"//trim(name) .or. m%name == "MPhi"//trim(name)) then
+          link%moments = [link%moments, m]
+        end if
+      end associate
+    end do
+    ! shift the link to its pivot (the frame's axes drawn there)
+    associate (a => link%points(pivot)%p)
+      do j = 1, size(link%forces)
+        link%forces(j)%at = link%forces(j)%at - a
+      end do
+      do j = 1, size(link%moments)
+        link%moments(j)%at = link%moments(j)%at - a
+      end do
+      do j = size(link%points), 1, -1
+        link%points(j)%p = link%points(j)%p - a
+      end do
+    end associate
+  contains
+    !> Whether a pair force's digit names a moving link of the plans (not the frame).
+    pure logical function is_moving(digit)
+      character(*), intent(in) :: digit
+      integer :: t
+      is_moving = .false.
+      do t = 1, size(plans%groups)
+        if (any(plans%groups(t)%names == digit) .or. any(plans%groups(t)%names == "L"//digit)) is_moving = .true.
+      end do
+    end function is_moving
+  end subroutine input_link_drawing
 
   !> A plan's scale (round) and its pole on the sheet: the points (turned, in the position
   !> frame's units) and the pole fit into `area` (x0, y0, x1, y1, mm) less its margins, centred.
@@ -399,11 +472,11 @@ contains
       sheet%effort_polygon = -s
       sheet%compared = .true.
     end if
-    ! in % of the larger; an effort that is nought to within 1e-9 of what the loads give
-    ! (their powers over the driver's rate) is nought
+    ! in % of the larger; an effort that is nought to within 1e-9 of what the loads could give
+    ! (their forces times their images' speeds, over the driver's rate) is nought
     s = 0.0_wp
     do i = 1, size(plans%loads)
-      s = s + abs(plans%loads(i)%power)
+      s = s + norm2(plans%loads(i)%f) * (norm2(plans%loads(i)%at) + norm2(plans%loads(i)%at2))
     end do
     s = 1.0e-9_wp * s / abs(plans%lever_rate)
     if (sheet%compared) sheet%difference = 100.0_wp * abs(sheet%effort_lever - sheet%effort_polygon) / &

@@ -4,7 +4,7 @@
 # line (tools/svg_check.py labels --lines: typeset boxes, every stroke as a band of its width;
 # leader lines counted and shown); the symbols typeset (tools/svg_check.py notation: no _ or ^
 # markup; on a Russian sheet no Latin word). The plans sheets (--format plans --at K, first,
-# middle, last step): no two labels overlap, none leaves the sheet. No English word on a
+# middle, last step) the same. No English word on a
 # --lang ru sheet or in a --lang ru table (tools/svg_check.py english: a word list). Every
 # check can fail.
 svg_check="$root/tools/svg_check.py"
@@ -34,7 +34,8 @@ for deck in data/*.nml; do
         run_ks "$deck" --format plans --at "$k" --lang "$lang"
         if [ "$rc" -ne 0 ]; then fail "legible-plans-runs-$name-$k-$lang" "rc=$rc: $(head -c 300 "$err")"; continue; fi
         cp "$out" "$legible_dir/$name.plans$k.$lang.svg"; plans_sheets+=("$legible_dir/$name.plans$k.$lang.svg")
-        [ "$lang" = ru ] && ru_sheets+=("$legible_dir/$name.plans$k.$lang.svg")
+        model_sheets+=("$legible_dir/$name.plans$k.$lang.svg")
+        [ "$lang" = ru ] && model_ru+=("$legible_dir/$name.plans$k.$lang.svg") && ru_sheets+=("$legible_dir/$name.plans$k.$lang.svg")
       done ;;
     esac
     if [ "$lang" = ru ]; then
