@@ -81,6 +81,7 @@ contains
     call check_text(t, "typeset F_shake ru", "Φ|_гл", shown(typeset("F_shake", lang_ru)))
     call check_text(t, "runs_text", "aCBτ", runs_text(typeset("a_CB^τ", lang_en)))
     call check_text(t, "plain_text (DXF)", "a_CB^τ F21", plain_text(typeset("a_CB^τ F21", lang_en)))
+    allocate (runs(0)) ! defined before the assignment (gcc's -Wmaybe-uninitialized on the descriptor)
     runs = typeset("S2", lang_en)
     call check_true(t, "run shifts", size(runs) == 2 .and. all(runs%shift == [run_base, run_sub]), "S2: S on the "// &
       "baseline, 2 lowered")

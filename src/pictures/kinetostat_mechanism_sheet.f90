@@ -18,7 +18,7 @@ module kinetostat_mechanism_sheet
   use kinetostat_step_table, only: step_table_t
   use kinetostat_labels, only: word => label, unit_word => unit_symbol
   use kinetostat_scales, only: nice_step, round_scale, scale_number
-  use kinetostat_typeset, only: typeset, runs_extent, text_run_t, char_count
+  use kinetostat_typeset, only: typeset, runs_extent, char_count
   use kinetostat_sheet, only: sheet_t, paper_t, iso_paper, layer_text, layer_scales, anchor_start
   use kinetostat_title_block, only: put_sheet_format, title_block_from_table, block_height, block_width
   use kinetostat_drawing, only: drawing_t, force_kind_names
@@ -258,9 +258,7 @@ contains
     character(*), intent(in) :: text
     real(wp), intent(in) :: size, width, factor
     real(wp) :: w, above, below
-    type(text_run_t), allocatable :: runs(:)
-    runs = typeset(text, 1)
-    call runs_extent(runs, w, above, below)
+    call runs_extent(typeset(text, 1), w, above, below)
     fitted_size = size
     if (w <= 0.0_wp) return
     fitted_size = min(size, floor(width / (w / 0.6_wp * factor) * 100.0_wp) / 100.0_wp)

@@ -60,6 +60,8 @@ module kinetostat_run_sheet
   real(wp), parameter :: small_size = 2.4_wp
   !> Two points nearer than this share one number label ("1,13"), mm.
   real(wp), parameter :: label_merge_distance = 1.0_wp
+  !> Bytes of a line of a note, at most.
+  integer, parameter :: note_length = 400
   !> The name of the shaking force's column (--shaking).
   character(*), parameter :: shaking_force = "F_shake"
 
@@ -91,7 +93,7 @@ contains
     type(error_t), allocatable, intent(out) :: error
     type(pair_force_t), allocatable :: every_pair(:), chosen(:)
     type(paper_t) :: paper
-    character(len=:), allocatable :: note(:)
+    character(len=note_length), allocatable :: note(:)
     integer :: columns, rows, n_panels, i
     real(wp) :: panel_w, panel_h, y, x0, y0, chart_h, inner(4), col(4), col2(4), top, run_h, width, reserved
     logical :: dynamics, shaking, two_columns
@@ -247,11 +249,11 @@ contains
     type(step_table_t), intent(in) :: table
     integer, intent(in) :: lang
     real(wp), intent(in) :: width
-    character(len=:), allocatable, intent(out) :: lines(:)
+    character(len=note_length), allocatable, intent(out) :: lines(:)
     character(len=:), allocatable :: warning, text
     call coarse_step_warning(table, warning)
     if (.not. allocated(warning)) then
-      allocate (character(len=1) :: lines(0))
+      allocate (lines(0))
       return
     end if
     text = word("The input step", lang)//" "//scale_number(table%largest_step)//" "//unit_word("deg", lang)//" "// &
@@ -265,8 +267,8 @@ contains
   pure subroutine wrapped(text, most, lines)
     character(*), intent(in) :: text
     integer, intent(in) :: most
-    character(len=:), allocatable, intent(out) :: lines(:)
-    character(len=len(text)), allocatable :: found(:)
+    character(len=note_length), allocatable, intent(out) :: lines(:)
+    character(len=note_length), allocatable :: found(:)
     integer :: start, cut, i
     allocate (found(0))
     start = 1
@@ -280,10 +282,9 @@ contains
         end do
         if (cut == start) cut = i - 1
       end if
-      found = [character(len=len(text)) :: found, text(start:cut)]
+      found = [character(len=note_length) :: found, text(start:cut)]
       start = cut + 1
     end do
-    allocate (character(len=len(text)) :: lines(size(found)))
     lines = found
   end subroutine wrapped
 
