@@ -664,14 +664,7 @@ contains
       end associate
     end do
     ! every link's angular speed from its longest relative velocity (the most exact reading)
-    do li = 1, size(topo%links)
-      call longest(plans%velocity_equations, li, e, j, l)
-      if (e == 0) cycle
-      associate (eq => plans%velocity_equations(e))
-        call put(vals, "omega"//trim(topo%links(li)%name), trim(eq%vectors(j)%name)//"/l_"//segment(eq), &
-          norm2(eq%vectors(j)%v) / l, "rad/s", sense(omega(li)))
-      end associate
-    end do
+    call put_rates(vals, plans%velocity_equations, "omega", "rad/s", omega)
     do i = 1, size(plans%accelerations)
       if (norm2(plans%accelerations(i)%v) <= size_a) cycle
       call put(vals, "a_"//trim(plans%accelerations(i)%name), "π"//image(plans%accelerations(i)%name)//"*mu_a", &
@@ -702,16 +695,27 @@ contains
       end associate
     end do
     ! every link's angular acceleration from its longest tangential component
-    do li = 1, size(topo%links)
-      call longest(plans%equations, li, e, j, l)
-      if (e == 0) cycle
-      associate (eq => plans%equations(e))
-        call put(vals, "eps"//trim(topo%links(li)%name), trim(eq%vectors(j)%name)//"/l_"//segment(eq), &
-          norm2(eq%vectors(j)%v) / l, "rad/s^2", sense(eps(li)))
-      end associate
-    end do
+    call put_rates(vals, plans%equations, "eps", "rad/s^2", eps)
     call move_alloc(vals, plans%values)
   contains
+    !> Every link's angular rate (omega or eps) from its longest tangential term: the term
+    !> over the length of its two points, with the sense of the link's `rates`.
+    pure subroutine put_rates(vals, equations, symbol, unit, rates)
+      type(plan_value_t), allocatable, intent(inout) :: vals(:)
+      type(plan_equation_t), intent(in) :: equations(:)
+      character(*), intent(in) :: symbol, unit
+      real(wp), intent(in) :: rates(:)
+      integer :: q, eq_at, term
+      real(wp) :: length
+      do q = 1, size(topo%links)
+        call longest(equations, q, eq_at, term, length)
+        if (eq_at == 0) cycle
+        associate (eq => equations(eq_at))
+          call put(vals, symbol//trim(topo%links(q)%name), trim(eq%vectors(term)%name)//"/l_"//segment(eq), &
+            norm2(eq%vectors(term)%v) / length, unit, sense(rates(q)))
+        end associate
+      end do
+    end subroutine put_rates
     !> The equation e and its tangential component j on link li whose points are farthest
     !> apart (l, m); e = 0 when the link has none that is not zero.
     pure subroutine longest(equations, li, e, j, l)

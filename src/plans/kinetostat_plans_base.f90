@@ -15,7 +15,7 @@ module kinetostat_plans_base
   public :: component_normal, component_tangential, component_coriolis, component_relative, component_reaction
   public :: load_force, load_moment
   public :: field, cross, perp, link_index, lists, sliding_on, guide_link, slides_of, slide_is_pair, driver_links
-  public :: owner, image_of, closure_of, coincident, pivot_of, frame_link
+  public :: owner, image_of, closure_of, coincident, pivot_of, point_velocity
 
   !> A named vector (a point's image on a plan, a force of a polygon).
   type :: plan_vector_t
@@ -254,6 +254,16 @@ contains
     end if
   end function field
 
+  !> Velocity of the point p (m) carried by link l (0: the frame, at rest), m/s, from the links'
+  !> velocity fields' terms v0 and angular velocities omega.
+  pure function point_velocity(v0, omega, l, p) result(v)
+    real(wp), intent(in) :: v0(:, :), omega(:), p(2)
+    integer, intent(in) :: l
+    real(wp) :: v(2)
+    v = 0.0_wp
+    if (l > 0) v = field(v0(:, l), omega(l), 0.0_wp, p, .false.)
+  end function point_velocity
+
   !> z component of a x b.
   pure real(wp) function cross(a, b)
     real(wp), intent(in) :: a(2), b(2)
@@ -283,14 +293,6 @@ contains
       if (topo%links(i)%name == "L"//trim(name)) link_index = i
     end do
   end function link_index
-
-  !> Whether the name is no moving link's: the frame (a pair force's second digit that names
-  !> no link).
-  pure logical function frame_link(topo, name)
-    type(sketch_t), intent(in) :: topo
-    character(*), intent(in) :: name
-    frame_link = link_index(topo, name) == 0
-  end function frame_link
 
   !> Whether link i lists point `p` (its own points, and its centre of mass S<name>; S1 for
   !> the link "L1").

@@ -238,9 +238,11 @@ contains
     character(*), intent(in) :: pole_name
     logical, intent(in) :: accel
     integer, intent(in) :: lang
-    real(wp), allocatable :: tips(:, :)
+    real(wp), allocatable :: tips(:, :), ends(:, :)
     real(wp) :: q(2), p(2), t(2), area(4)
     character(len=:), allocatable :: short, at_pole
+    character(len=16), allocatable :: names(:)
+    character(len=1), allocatable :: kinds(:)
     integer :: i, e, j
     area = panel_inner(box)
     short = ""
@@ -251,8 +253,9 @@ contains
     call sheet%attach("data-pole", coord(pole(1))//" "//coord(pole(2)))
     call sheet%attach("data-mu", full_number(mu))
     call sheet%attach("data-rotation", full_number(geo%rotation * rad_to_deg))
-    ! the components of the equations (a velocity equation from the pole that is one rotation
-    ! is the image's own ray)
+    ! the components of the equations head to tail (a velocity equation from the pole that is
+    ! one rotation is the image's own ray), those 1 mm and longer drawn
+    allocate (ends(4, 0), names(0), kinds(0))
     do e = 1, size(equations)
       call chain_tips(equations(e), images, tips)
       if (own_ray(equations(e), tips)) cycle
@@ -263,8 +266,13 @@ contains
           if (norm2(equations(e)%vectors(j)%v) > 0.0_wp) call listed(short, trim(equations(e)%vectors(j)%name))
           cycle
         end if
-        call sheet%arrow(p(1), p(2), t(1), t(2), component_colour(equations(e)%vectors(j)%kind), 0.25_wp, 1.5_wp)
+        ends = reshape([ends, p, t], [4, size(ends, 2) + 1])
+        names = [character(len=16) :: names, equations(e)%vectors(j)%name]
+        kinds = [character(len=1) :: kinds, equations(e)%vectors(j)%kind]
       end do
+    end do
+    do j = 1, size(names)
+      call sheet%arrow(ends(1, j), ends(2, j), ends(3, j), ends(4, j), component_colour(kinds(j)), 0.25_wp, 1.5_wp)
     end do
     ! the rays to the images
     do i = 1, size(images)
@@ -294,16 +302,9 @@ contains
       call sheet%place_label(image_label(images(i)%name), "label", q(1), q(2), atan2(q(2) - pole(2), q(1) - pole(1)), &
         area, tail=pole, italic=.true.)
     end do
-    do e = 1, size(equations)
-      call chain_tips(equations(e), images, tips)
-      if (own_ray(equations(e), tips)) cycle
-      do j = 1, size(equations(e)%vectors)
-        p = at(tips(:, j))
-        t = at(tips(:, j + 1))
-        if (norm2(t - p) < shortest) cycle
-        call sheet%place_label(trim(equations(e)%vectors(j)%name), "num", 0.5_wp * (p(1) + t(1)), 0.5_wp * (p(2) + t(2)), &
-          atan2(t(2) - p(2), t(1) - p(1)) - 0.5_wp * pi, area, colour=component_colour(equations(e)%vectors(j)%kind))
-      end do
+    do j = 1, size(names)
+      call sheet%place_label(trim(names(j)), "num", 0.5_wp * (ends(1, j) + ends(3, j)), 0.5_wp * (ends(2, j) + ends(4, j)), &
+        atan2(ends(4, j) - ends(2, j), ends(3, j) - ends(1, j)) - 0.5_wp * pi, area, colour=component_colour(kinds(j)))
     end do
     ! what is at the pole, what is too short to draw
     if (len(at_pole) > 0) call sheet%text(area(1) + 1.0_wp, area(4) - 4.0_wp, word("at the pole", lang)//" "// &
@@ -875,7 +876,7 @@ contains
       short_number(plans%flywheel_inertia)//" "//unit_word("kg*m^2", lang)//", -J·ε = "// &
       short_number(plans%flywheel_moment)//" "//unit_word("N*m", lang))
     if (plans%lever_friction) call put(lines, word("pair friction included", lang)//": -P_loss/"// &
-      rate_symbol(plans%lever_rate_name)//" = "//short_number(plans%friction_share)//" "//unit)
+      plans%lever_rate_name//" = "//short_number(plans%friction_share)//" "//unit)
     end subroutine lever_lines
     pure subroutine put(lines, line)
       character(len=240), allocatable, intent(inout) :: lines(:)
@@ -887,12 +888,5 @@ contains
       dot_sign = sign(1.0_wp, dot_product(plans%balancing%f, plans%balancing%at))
     end function dot_sign
   end subroutine results
-
-  !> The lever's rate as the sheet writes it: omega1, v_rel.
-  pure function rate_symbol(name) result(symbol)
-    character(*), intent(in) :: name
-    character(len=:), allocatable :: symbol
-    symbol = name
-  end function rate_symbol
 
 end module kinetostat_plans_draw

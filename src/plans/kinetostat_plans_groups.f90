@@ -23,7 +23,7 @@ module kinetostat_plans_groups
     slide_is_pair, driver_links, owner, closure_of
   implicit none
   private
-  public :: plan_groups, group_polygons_of, link_polygons_of, group_links_text
+  public :: plan_groups, group_polygons_of, link_polygons_of
 
   !> One reaction of a group's polygon: its parts (tangential and normal, or the whole).
   type :: reaction_parts_t
@@ -170,7 +170,8 @@ contains
     solved(0) = .true.
     if (crank > 0) then
       solved(crank) = .true.
-      groups = [groups, plan_group_t([crank], null(), .true., 1, "I("//frame//","//group_numbers_text(topo, [crank])//")", driver)]
+      groups = [groups, plan_group_t([crank], null(), .true., 1, "I("//frame//","// &
+        group_links_text(topo, [crank], .true.)//")", driver)]
     end if
     do
       found = .false.
@@ -180,7 +181,8 @@ contains
           if (solved(j)) cycle inner
           if (count(pair_of(i, j)) == 0) cycle inner
           if (to_solved(i) /= 1 .or. to_solved(j) /= 1) cycle inner
-          groups = [groups, plan_group_t([i, j], null(), .false., 2, "II("//group_numbers_text(topo, [i, j])//")", "")]
+          groups = [groups, plan_group_t([i, j], null(), .false., 2, "II("//group_links_text(topo, [i, j], .true.)// &
+            ")", "")]
           solved([i, j]) = .true.
           found = .true.
           exit outer
@@ -191,11 +193,12 @@ contains
     if (.not. all(solved)) then
       rest = pack([(i, i=1, nl)], .not. solved(1:))
       if (actuator > 0 .and. any(rest == actuator)) then
-        groups = [groups, plan_group_t(rest, null(), .true., 1, "I("//frame//","//group_numbers_text(topo, rest)//")", driver)]
+        groups = [groups, plan_group_t(rest, null(), .true., 1, "I("//frame//","// &
+          group_links_text(topo, rest, .true.)//")", driver)]
       else if (size(rest) == 4 .or. size(rest) == 6) then
-        groups = [groups, plan_group_t(rest, null(), .false., 3, "III("//group_numbers_text(topo, rest)//")", "")]
+        groups = [groups, plan_group_t(rest, null(), .false., 3, "III("//group_links_text(topo, rest, .true.)//")", "")]
       else
-        groups = [groups, plan_group_t(rest, null(), .false., 0, "("//group_numbers_text(topo, rest)//")", "")]
+        groups = [groups, plan_group_t(rest, null(), .false., 0, "("//group_links_text(topo, rest, .true.)//")", "")]
       end if
     end if
   contains
@@ -236,34 +239,22 @@ contains
     end do
   end function frame_number
 
-  !> A group's links as the structure formula writes them, by number ("3,1,2": an &assur
-  !> deck's link L1 is link 1).
-  pure function group_numbers_text(topo, links) result(text)
+  !> A group's links as the sheets write them, "2,3"; with `numbers`, by number as the
+  !> structure formula writes them ("3,1,2": an &assur deck's link L1 is link 1).
+  pure function group_links_text(topo, links, numbers) result(text)
     type(sketch_t), intent(in) :: topo
     integer, intent(in) :: links(:)
-    character(len=:), allocatable :: text
+    logical, intent(in), optional :: numbers
+    character(len=:), allocatable :: text, name
     integer :: q
     text = ""
     do q = 1, size(links)
       if (q > 1) text = text//","
-      if (topo%links(links(q))%name(1:1) == "L") then
-        text = text//topo%links(links(q))%name(2:)
-      else
-        text = text//topo%links(links(q))%name
+      name = topo%links(links(q))%name
+      if (present(numbers)) then
+        if (numbers .and. name(1:1) == "L") name = name(2:)
       end if
-    end do
-  end function group_numbers_text
-
-  !> A group's links as the sheets write them, "2,3".
-  pure function group_links_text(topo, links) result(text)
-    type(sketch_t), intent(in) :: topo
-    integer, intent(in) :: links(:)
-    character(len=:), allocatable :: text
-    integer :: q
-    text = ""
-    do q = 1, size(links)
-      if (q > 1) text = text//","
-      text = text//topo%links(links(q))%name
+      text = text//name
     end do
   end function group_links_text
 

@@ -15,7 +15,7 @@ module kinetostat_plans_lever
   use kinetostat_sketch, only: sketch_t
   use kinetostat_drawing, only: drawing_t, force_pair
   use kinetostat_plans_base, only: plans_t, lever_load_t, lever_friction_t, load_force, load_moment, field, perp, &
-    link_index, lists, sliding_on, guide_link, owner, pivot_of, coincident, slides_of, slide_t
+    link_index, lists, sliding_on, guide_link, owner, pivot_of, coincident, slides_of, slide_t, point_velocity
   implicit none
   private
   public :: lever_of
@@ -168,8 +168,7 @@ contains
       integer, intent(in) :: l
       real(wp), intent(in) :: p(2)
       real(wp) :: v(2)
-      v = 0.0_wp
-      if (l > 0) v = field(v0(:, l), omega(l), 0.0_wp, p, .false.)
+      v = point_velocity(v0, omega, l, p)
     end function velocity
     !> A force f (N) at p (m) on link l.
     pure function force_load(name, f, p, l, source) result(item)
@@ -414,8 +413,7 @@ contains
       integer, intent(in) :: l
       real(wp), intent(in) :: p(2)
       real(wp) :: v(2)
-      v = 0.0_wp
-      if (l > 0) v = field(v0(:, l), omega(l), 0.0_wp, p, .false.)
+      v = point_velocity(v0, omega, l, p)
     end function velocity
   end subroutine pair_friction_of
 
