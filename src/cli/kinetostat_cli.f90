@@ -84,8 +84,8 @@ module kinetostat_cli
     "            surname, group, variant) on the legacy table and a title block on the sheets", &
     "--at K      with dxf: the mechanism at step K (the svg sheet) as an ASCII DXF for CAD", &
     "--plans     with json and --at K: the graphical method at step K (plans of velocities and", &
-    "            accelerations, force polygons, Zhukovsky's lever) as numbers; with dxf and --at K:", &
-    "            its sheet (--format plans) as a DXF drawing", &
+    "            accelerations, force polygons, Zhukovsky's lever) as numbers; with dxf", &
+    "            and --at K: its sheet (--format plans) as a DXF drawing", &
     "--lang      language of the table's labels: en (default) or ru (the 1991 printouts)", &
     "--kinematics  csv and json add positions of joints and centres of mass, link angles,", &
     "            angular speeds and accelerations, accelerations of the centres of mass and", &
