@@ -201,21 +201,21 @@ def equal_sliding_x2(m, z1, z2, x1):
 
 
 def check_gears():
-    decks = [("data/gear_geometry_khk.nml", 3.0, 12, 24, ()),
-             ("data/gear_geometry_khk.nml", 3.0, 12, 24, ("--set", "x1=0", "--set", "x2=0")),
-             ("data/gear_geometry_khk.nml", 2.0, 17, 60, ("--set", "m=2", "--set", "z1=17", "--set", "z2=60",
+    decks = [("data/gear_geometry_shift.nml", 3.0, 12, 24, ()),
+             ("data/gear_geometry_shift.nml", 3.0, 12, 24, ("--set", "x1=0", "--set", "x2=0")),
+             ("data/gear_geometry_shift.nml", 2.0, 17, 60, ("--set", "m=2", "--set", "z1=17", "--set", "z2=60",
                                                           "--set", "x1=-0.3", "--set", "x2=1.1")),
-             ("data/gear_geometry_khk.nml", 3.0, 12, 24, ("--set", "x1=1.2", "--set", "x2=-0.8")),
-             ("data/gear_geometry_centre.nml", 3.0, 14, 35, ())]
+             ("data/gear_geometry_shift.nml", 3.0, 12, 24, ("--set", "x1=1.2", "--set", "x2=-0.8")),
+             ("data/gear_geometry_auto.nml", 4.0, 13, 27, ("--set", "a_w=82"))]
     for deck, m, z1, z2, args in decks:
         rows = run_csv(deck, *args)
         if rows:
             check_pair_row("%s %s" % (deck, " ".join(args[1::2])), rows[0], m, z1, z2)
     # a prescribed centre distance: the sum of the shifts and the equal sliding
-    rows = run_csv("data/gear_geometry_centre.nml")
+    rows = run_csv("data/gear_geometry_auto.nml", "--set", "a_w=82")
     if rows:
         r = rows[0]
-        close("centre a_w", float(r["a_w"]), 75.0, rtol=1e-12)
+        close("centre a_w", float(r["a_w"]), 82.0, rtol=1e-12)
         close("centre sliding", float(r["lambda1"]), float(r["lambda2"]), rtol=1e-7)
     # shift = 'auto'
     cases = [("data/gear_geometry_auto.nml", 4.0, 13, 27, ())]

@@ -34,9 +34,9 @@ module kinetostat_cam_profile
   character(*), parameter :: follower_names(*) = [character(len=11) :: "flat", "roller", "oscillating"]
   integer, parameter :: follower_flat = 1, follower_roller = 2, follower_oscillating = 3
   !> Samples per segment of the dense searches (then a golden-section refinement).
-  integer, parameter :: samples = 400
+  integer, parameter :: samples = 100
   !> Steps of the scan for an oscillating follower's pitch circle (then bisection).
-  integer, parameter :: radius_scan = 400
+  integer, parameter :: radius_scan = 100
   !> Golden ratio's conjugate.
   real(wp), parameter :: golden = 0.6180339887498948482_wp
 

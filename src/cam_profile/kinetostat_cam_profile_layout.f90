@@ -103,7 +103,8 @@ contains
       ! the SUMMARY block's extremes: the pressure angle (a roller) or the flat face's radius
       table%driver = "theta"
       if (design%follower == follower_flat) table%driver = "rho"
-      table%residual_label = "LIMIT OF THE CAM'S SIZE EXCEEDED (RELATIVE), ALL STEPS"
+      table%residual_label = "THETA OVER ITS LIMIT (RELATIVE), ALL STEPS"
+      if (design%follower == follower_flat) table%residual_label = "RHO BELOW RHO_MIN (RELATIVE), ALL STEPS"
       table%mismatch_label = "RADIUS OF CURVATURE: TWO FORMULAS, ALL STEPS"
       call echo_deck(self%deck, table)
       call put_sizes(design, table)

@@ -78,7 +78,7 @@ contains
       t%u_deviation, t%assembly_number, t%neighbour_margin]
     call table%echo_text("SCHEME", "single_row")
     call table%echo_real("U", self%deck%spec%u, "")
-    call table%echo_int("K", self%deck%spec%k, "planets")
+    call table%echo_int("K", self%deck%spec%k, "satellites")
     call table%echo_real("U_TOLERANCE", self%deck%spec%u_tolerance, "")
     call table%echo_int("Z_MIN", self%deck%spec%z_min, "")
     call table%echo_int("Z_RING_MIN", self%deck%spec%z_ring_min, "")
@@ -114,11 +114,11 @@ contains
     if (lang == lang_ru) then
       call put_heading(out, "УСЛОВИЯ ПОДБОРА ЧИСЕЛ ЗУБЬЕВ")
       met = "ВЫПОЛНЕНО"
-      call out%put(condition("СООСНОСТЬ", "Z3 = Z1 + 2*Z2: "//int_str(z3)//" = "//int_str(z1)//" + 2*"//int_str(z2), &
+      call out%put(condition("СООСНОСТЬ", "Z3 = Z1 + 2*Z2: "//int_str(z3)//" = "//int_str(z1)//" + "//int_str(2 * z2), &
         t%met(1), met))
       call out%put(condition("СБОРКА", "(Z1 + Z3)/K = "//int_str(z1 + z3)//"/"//int_str(k)//" = "// &
         short_number(t%assembly_number)//" - ЦЕЛОЕ", t%met(2), met))
-      call out%put(condition("СОСЕДСТВО", neighbour_text("СИН"), t%met(3), met))
+      call out%put(condition("СОСЕДСТВО", neighbour_text("sin"), t%met(3), met))
       call out%put(condition("ЗУБЬЯ", "Z1 = "//int_str(z1)//", Z2 = "//int_str(z2)//" >= "// &
         int_str(self%deck%spec%z_min)//"; Z3 = "//int_str(z3)//" >= "//int_str(self%deck%spec%z_ring_min), &
         t%met(4) .and. t%met(5), met))
@@ -126,11 +126,11 @@ contains
     else
       call put_heading(out, "CONDITIONS OF THE TRAIN")
       met = "MET"
-      call out%put(condition("COAXIALITY", "Z3 = Z1 + 2*Z2: "//int_str(z3)//" = "//int_str(z1)//" + 2*"//int_str(z2), &
+      call out%put(condition("COAXIALITY", "Z3 = Z1 + 2*Z2: "//int_str(z3)//" = "//int_str(z1)//" + "//int_str(2 * z2), &
         t%met(1), met))
       call out%put(condition("ASSEMBLY", "(Z1 + Z3)/K = "//int_str(z1 + z3)//"/"//int_str(k)//" = "// &
         short_number(t%assembly_number)//", A WHOLE NUMBER", t%met(2), met))
-      call out%put(condition("NEIGHBOURS", neighbour_text("SIN"), t%met(3), met))
+      call out%put(condition("NEIGHBOURS", neighbour_text("sin"), t%met(3), met))
       call out%put(condition("LEAST TEETH", "Z1 = "//int_str(z1)//", Z2 = "//int_str(z2)//" >= "// &
         int_str(self%deck%spec%z_min)//"; Z3 = "//int_str(z3)//" >= "//int_str(self%deck%spec%z_ring_min), &
         t%met(4) .and. t%met(5), met))
