@@ -10,7 +10,7 @@ module kinetostat_cam_profile_layout
   use kinetostat_step_table, only: step_table_t, col_input_angle, col_length, col_other, step_span
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_format, only: fixed_field, full_number, short_number, exp_field
-  use kinetostat_labels, only: lang_ru
+  use kinetostat_labels, only: label
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_cam_profile, only: cam_design_t, cam_point_t, cam_sizes_t, cam_point, motion_at, size_cam, &
     cam_extremes, segment_at, segment_limit, follower_flat, follower_roller, follower_oscillating, &
@@ -258,9 +258,9 @@ contains
         line = line//pad_left13(upper(table%columns(c)%name))
       end do
       call out%put(line)
-      line = "     "//unit_text(table%columns(1)%unit, lang)
+      line = "     "//label(table%columns(1)%unit, lang)
       do c = 2, nc
-        line = line//pad_left13(unit_text(table%columns(c)%unit, lang))
+        line = line//pad_left13(label(table%columns(c)%unit, lang))
       end do
       call out%put(line)
     end if
@@ -295,35 +295,6 @@ contains
       end do
     end function upper
   end subroutine write_results
-
-  !> A unit in the table's language (the legacy symbols in Russian).
-  pure function unit_text(unit, lang) result(t)
-    character(*), intent(in) :: unit
-    integer, intent(in) :: lang
-    character(len=:), allocatable :: t
-    t = unit
-    if (lang /= lang_ru) return
-    select case (unit)
-    case ("deg")
-      t = "град"
-    case ("m")
-      t = "м"
-    case ("m/rad")
-      t = "м/рад"
-    case ("m/rad^2")
-      t = "м/рад^2"
-    case ("1/rad")
-      t = "1/рад"
-    case ("m/s")
-      t = "м/с"
-    case ("m/s^2")
-      t = "м/с^2"
-    case ("rad/s")
-      t = "рад/с"
-    case ("rad/s^2")
-      t = "рад/с^2"
-    end select
-  end function unit_text
 
   !> The matching analysis deck: a `&cam` deck of the follower's forces at the same cam
   !> angles (translating roller: the pressure angle and the direction of motion per step;

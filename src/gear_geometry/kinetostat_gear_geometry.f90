@@ -703,7 +703,7 @@ contains
       cur = 0
       first = 0
       search: do s = 1, n
-        if (used(s)) cycle
+        if (used(s)) cycle search
         if (cur == 0) then
           cur = s
           first = seg(1, s)

@@ -173,6 +173,10 @@ contains
       text = "м/с^2"
     case ("m/rad")
       text = "м/рад"
+    case ("m/rad^2")
+      text = "м/рад^2"
+    case ("1/rad")
+      text = "1/рад"
     case ("steps")
       text = "положений"
     case ("satellites")

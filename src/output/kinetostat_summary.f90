@@ -451,7 +451,7 @@ contains
     line = ""
     first = .true.
     columns: do c = 1, size(table%columns)
-      if (.not. table%columns(c)%csv) cycle
+      if (.not. table%columns(c)%csv) cycle columns
       if (allocated(table%overrides)) then
         do i = 1, size(table%overrides)
           if (override_part(table%overrides(i), 1) == table%columns(c)%name) cycle columns
