@@ -193,7 +193,7 @@ contains
     type(contour_curve_t) :: curves(size(contour_names))
     type(pair_geometry_t) :: g
     real(wp) :: worst(6), level
-    integer :: c, k
+    integer :: c, k, gear
     p = gear_pair_t(m=1.0_wp, z1=12, z2=24)
     call blocking_contour(p, curves)
     worst = 0.0_wp
@@ -201,15 +201,17 @@ contains
       call check_true(t, "contour curve "//curves(c)%name//" has points", size(curves(c)%x1) > 10, "empty")
       do k = 1, size(curves(c)%x1)
         g = pair_geometry(p, curves(c)%x1(k), curves(c)%x2(k))
+        ! gear 1 or 2 of the pointed and interference curves
+        gear = 2 - mod(c, 2)
         select case (c)
         case (3, 4)
-          level = g%sa(c - 2) - 0.25_wp
+          level = g%sa(gear) - 0.25_wp
         case (5)
           level = g%eps_alpha - 1.0_wp
         case (6)
           level = g%eps_alpha - 1.2_wp
         case default
-          level = g%rho_low(c - 6)
+          level = g%rho_low(gear)
         end select
         worst(c - 2) = max(worst(c - 2), abs(level))
       end do

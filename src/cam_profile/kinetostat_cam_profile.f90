@@ -267,17 +267,6 @@ contains
     p%profile = rotate(c, -sg * phi)
   end function cam_point
 
-  !> The geometry at the fraction xi of segment i (its own law's one-sided values).
-  pure function segment_point(d, i, xi) result(p)
-    type(cam_design_t), intent(in) :: d
-    integer, intent(in) :: i
-    real(wp), intent(in) :: xi
-    type(cam_point_t) :: p
-    real(wp) :: s, ds, d2s
-    call segment_motion(d%seg(i), xi, s, ds, d2s)
-    p = cam_point(d, d%seg(i)%phi0 + xi * d%seg(i)%beta, s + d%seg(i)%s0, ds, d2s)
-  end function segment_point
-
   !> Largest value of f over segment i's fraction 0..1: samples, then a golden-section
   !> search between the best sample's neighbours. `which` selects f (see `quantity`).
   pure real(wp) function segment_max(d, i, which) result(best)

@@ -136,30 +136,28 @@ contains
     call table%set_selfcheck(residual, mismatch, table%driver, 0, 0)
   end subroutine solve
 
-  !> The columns of the design's follower, with their units.
+  !> The columns of the design's follower, with their units (a roller adds rho_pitch).
   pure subroutine set_columns(design, table)
     type(cam_design_t), intent(in) :: design
     type(step_table_t), intent(inout) :: table
-    character(len=9), allocatable :: names(:)
-    character(len=8), allocatable :: units(:)
-    integer, allocatable :: kinds(:)
+    character(len=9) :: names(13)
+    character(len=8) :: units(13)
+    integer :: kinds(13), n
+    names = [character(len=9) :: base_columns(1:8), "rho_pitch", base_columns(9:12)]
     if (design%follower == follower_oscillating) then
-      units = [character(len=8) :: "deg", "deg", "", "1/rad", "rad/s", "rad/s^2", "deg", "m"]
-      kinds = [col_input_angle, col_other, col_other, col_other, col_other, col_other, col_other, col_length]
+      units = [character(len=8) :: "deg", "deg", "", "1/rad", "rad/s", "rad/s^2", "deg", "m", "m", "m", "m", "m", "m"]
+      kinds = [col_input_angle, col_other, col_other, col_other, col_other, col_other, col_other, &
+        (col_length, n = 1, 6)]
     else
-      units = [character(len=8) :: "deg", "m", "m/rad", "m/rad^2", "m/s", "m/s^2", "deg", "m"]
-      kinds = [col_input_angle, col_length, col_other, col_other, col_other, col_other, col_other, col_length]
+      units = [character(len=8) :: "deg", "m", "m/rad", "m/rad^2", "m/s", "m/s^2", "deg", "m", "m", "m", "m", "m", "m"]
+      kinds = [col_input_angle, col_length, col_other, col_other, col_other, col_other, col_other, &
+        (col_length, n = 1, 6)]
     end if
-    names = base_columns(1:8)
-    if (design%follower /= follower_flat) then
-      names = [character(len=9) :: names, "rho_pitch"]
-      units = [character(len=8) :: units, "m"]
-      kinds = [kinds, col_length]
+    if (design%follower == follower_flat) then
+      call table%set_columns([names(1:8), names(10:13)], [units(1:8), units(10:13)], [kinds(1:8), kinds(10:13)])
+    else
+      call table%set_columns(names, units, kinds)
     end if
-    names = [character(len=9) :: names, base_columns(9:12)]
-    units = [character(len=8) :: units, "m", "m", "m", "m"]
-    kinds = [kinds, col_length, col_length, col_length, col_length]
-    call table%set_columns(names, units, kinds)
   end subroutine set_columns
 
   !> The cam's size and extremes over the whole turn as the run's summary records.
