@@ -18,6 +18,7 @@ module kinetostat_cam_profile
   use kinetostat_kinds, only: wp, pi
   use kinetostat_vec2, only: perp, cross, rotate
   use kinetostat_error, only: error_t, fatal_error, exit_geometry
+  use kinetostat_format, only: short_number
   implicit none
   private
   public :: law_names, law_dwell, law_constant_velocity, law_parabolic, law_harmonic, law_cycloidal, law_poly345
@@ -382,7 +383,7 @@ contains
       d%r_prime = d%r_base
       if (.not. d%r_base > 0.0_wp) then
         call fatal_error(error, exit_geometry, "rho_min is so small that any base circle keeps the profile's "// &
-          "radius of curvature above it (r_base + s + s'' >= rho_min needs r_base >= "//text(d%r_base)// &
+          "radius of curvature above it (r_base + s + s'' >= rho_min needs r_base >= "//short_number(d%r_base)// &
           " m): give the rho_min the cam must keep")
         return
       end if
@@ -414,7 +415,7 @@ contains
       end if
       if (.not. found) then
         call fatal_error(error, exit_geometry, "no pitch circle the arm reaches keeps the pressure angle within "// &
-          "its limits (pivot at "//text(dist)//" m from the cam's centre, arm "//text(d%arm)// &
+          "its limits (pivot at "//short_number(dist)//" m from the cam's centre, arm "//short_number(d%arm)// &
           " m): move the pivot, lengthen the arm or allow a larger pressure angle")
         return
       end if
@@ -438,7 +439,7 @@ contains
     end select
     if (d%follower /= follower_flat .and. .not. d%r_base > 0.0_wp) then
       call fatal_error(error, exit_geometry, "the pressure angle needs a pitch circle of only r_prime = "// &
-        text(d%r_prime)//" m, not larger than the roller (roller_radius = "//text(d%roller_radius)// &
+        short_number(d%r_prime)//" m, not larger than the roller (roller_radius = "//short_number(d%roller_radius)// &
         " m): no base circle; take a smaller roller")
     end if
   contains
@@ -451,13 +452,6 @@ contains
       trial%psi0 = arm_angle(d, rr)
       excess_at = turn_max(trial, 3)
     end function excess_at
-    pure function text(x) result(t)
-      real(wp), intent(in) :: x
-      character(len=:), allocatable :: t
-      character(len=32) :: buf
-      write (buf, '(g0.6)') x
-      t = trim(adjustl(buf))
-    end function text
   end subroutine size_cam
 
   !> The arm's angle at P between P->O and P->B when B is on the circle of radius r about O.

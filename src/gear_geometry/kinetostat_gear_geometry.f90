@@ -10,6 +10,7 @@
 module kinetostat_gear_geometry
   use kinetostat_kinds, only: wp, pi
   use kinetostat_error, only: error_t, fatal_error, exit_geometry, exit_input
+  use kinetostat_format, only: short_number
   implicit none
   private
   public :: gear_pair_t, pair_geometry_t, contour_curve_t
@@ -224,20 +225,12 @@ contains
     c = a * cos(p%alpha) / a_w
     x_sum = 0.0_wp
     if (.not. c < 1.0_wp) then
-      call fatal_error(error, exit_input, "must exceed a*cos(alpha) = "//text(a * cos(p%alpha))// &
+      call fatal_error(error, exit_input, "must exceed a*cos(alpha) = "//short_number(a * cos(p%alpha))// &
         " mm (the base circles would overlap)")
       return
     end if
     alpha_w = acos(c)
     x_sum = (involute(alpha_w) - involute(p%alpha)) * real(p%z1 + p%z2, wp) / (2.0_wp * tan(p%alpha))
-  contains
-    pure function text(x) result(t)
-      real(wp), intent(in) :: x
-      character(len=:), allocatable :: t
-      character(len=32) :: buf
-      write (buf, '(g0.10)') x
-      t = trim(adjustl(buf))
-    end function text
   end subroutine shift_sum_for_centre
 
   !> Whether the pair with these shifts meets every condition of the blocking contour: no
@@ -294,19 +287,9 @@ contains
     logical :: found
     call balance_root(p, 0.0_wp, x_sum, .true., x1, found)
     x2 = x_sum - x1
-    if (.not. found) call fatal_error(error, exit_geometry, "no split of x1 + x2 = "//text(x_sum)// &
-      " gives both gears the same largest specific sliding (x1 from "//text(search_lo)//" to "// &
-      text(search_hi)//")")
-  contains
-    pure function text(x) result(t)
-      real(wp), intent(in) :: x
-      character(len=:), allocatable :: t
-      character(len=32) :: buf
-      write (buf, '(f0.4)') x
-      t = trim(adjustl(buf))
-      if (t(1:1) == ".") t = "0"//t
-      if (t(1:min(2, len(t))) == "-.") t = "-0"//t(2:)
-    end function text
+    if (.not. found) call fatal_error(error, exit_geometry, "no split of x1 + x2 = "//short_number(x_sum)// &
+      " gives both gears the same largest specific sliding (x1 from "//short_number(search_lo)//" to "// &
+      short_number(search_hi)//")")
   end subroutine equal_sliding_split
 
   !> The root of the sliding balance along a line of the (x1, x2) plane: x2 for a fixed x1
@@ -402,7 +385,7 @@ contains
     x1 = 0.0_wp
     x2 = 0.0_wp
     if (.not. any(ok)) then
-      call fatal_error(error, exit_geometry, "no shifts x1, x2 (from "//fmt(search_lo)//" to "//fmt(search_hi)// &
+      call fatal_error(error, exit_geometry, "no shifts x1, x2 (from "//short_number(search_lo)//" to "//short_number(search_hi)// &
         ") give equal largest specific sliding without undercut, pointed teeth or interference and with "// &
         "eps_alpha >= 1.2: give x1 and x2 (see the blocking contour: kinetostat contour DECK)")
       return
@@ -506,13 +489,6 @@ contains
       end do
       edge = a_in
     end function edge
-    pure function fmt(x) result(tx)
-      real(wp), intent(in) :: x
-      character(len=:), allocatable :: tx
-      character(len=16) :: buf
-      write (buf, '(f0.1)') x
-      tx = trim(adjustl(buf))
-    end function fmt
   end subroutine auto_shift
 
   !> The blocking contour of the pair (z1, z2) in the square contour_lo <= x1, x2 <=
