@@ -40,6 +40,8 @@ module kinetostat_cam_profile
   integer, parameter :: radius_scan = 100
   !> Golden ratio's conjugate.
   real(wp), parameter :: golden = 0.6180339887498948482_wp
+  !> Radius of curvature reported where the pitch curve is straight (its curvature 0), m.
+  real(wp), parameter :: straight = 1.0e30_wp
 
   !> One segment of the law of motion.
   type :: cam_segment_t
@@ -250,7 +252,12 @@ contains
       n = sg * perp(v) / sqrt(vv)
       w = -perp(u)
       p%theta = atan2(dot_product(n, w), dot_product(n, u))
-      p%rho_pitch = vv * sqrt(vv) / (vv - sg * cross(v, v1))
+      ! a straight stretch (an inflection exactly at this angle) has no finite radius: 1e30
+      if (abs(vv - sg * cross(v, v1)) > epsilon(1.0_wp) * vv) then
+        p%rho_pitch = vv * sqrt(vv) / (vv - sg * cross(v, v1))
+      else
+        p%rho_pitch = straight
+      end if
       p%rho = p%rho_pitch - d%roller_radius
       c = b - d%roller_radius * n
       if (d%follower == follower_roller) then
@@ -258,9 +265,11 @@ contains
         y = b(2)
         q = ds - sg * d%offset
         p%rho_check = (y**2 + q**2)**1.5_wp / (y**2 + q**2 - y * d2s + q * ds)
+        if (p%rho_pitch == straight) p%rho_check = straight
       else
         ! from the cam-frame derivatives P' = R V, P'' = R (V' - sg perp(V))
-        p%rho_check = -sg * norm2(rotate(v, -sg * phi))**3 / &
+        p%rho_check = straight
+        if (p%rho_pitch /= straight) p%rho_check = -sg * norm2(rotate(v, -sg * phi))**3 / &
           cross(rotate(v, -sg * phi), rotate(v1 - sg * perp(v), -sg * phi))
       end if
     end if

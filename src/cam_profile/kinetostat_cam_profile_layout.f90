@@ -105,7 +105,7 @@ contains
       if (design%follower == follower_flat) table%driver = "rho"
       table%residual_label = "THETA OVER ITS LIMIT (RELATIVE), ALL STEPS"
       if (design%follower == follower_flat) table%residual_label = "RHO BELOW RHO_MIN (RELATIVE), ALL STEPS"
-      table%mismatch_label = "RADIUS OF CURVATURE: TWO FORMULAS, ALL STEPS"
+      table%mismatch_label = "CURVATURE: TWO FORMULAS (X R_PRIME), ALL STEPS"
       call echo_deck(self%deck, table)
       call put_sizes(design, table)
       call warnings(design, table)
@@ -125,7 +125,9 @@ contains
         limit = segment_limit(design, i)
         residual = max(residual, (abs(p%theta) - limit) / limit)
       end if
-      mismatch = max(mismatch, abs(p%rho_pitch - p%rho_check) / max(abs(p%rho_pitch), abs(p%rho_check), tiny(1.0_wp)))
+      ! the curvatures 1/rho (finite through an inflection, where rho is not) against the
+      ! base circle's
+      mismatch = max(mismatch, abs(1.0_wp / p%rho_pitch - 1.0_wp / p%rho_check) * design%r_prime)
     end do
     ! within the limit is no residual: the figure is how far beyond it a step goes
     residual = max(0.0_wp, residual)

@@ -59,8 +59,8 @@ contains
       text = "ПРЕВЫШЕНИЕ ДОПУСТИМОГО УГЛА ДАВЛЕНИЯ (ОТНОС.)"
     case ("RHO BELOW RHO_MIN (RELATIVE), ALL STEPS")
       text = "RHO МЕНЬШЕ RHO_MIN (ОТНОС.), ВСЕ ПОЛОЖЕНИЯ"
-    case ("RADIUS OF CURVATURE: TWO FORMULAS, ALL STEPS")
-      text = "РАДИУС КРИВИЗНЫ ПО ДВУМ ФОРМУЛАМ, ВСЕ ПОЛОЖЕНИЯ"
+    case ("CURVATURE: TWO FORMULAS (X R_PRIME), ALL STEPS")
+      text = "КРИВИЗНА ПО ДВУМ ФОРМУЛАМ (X R_PRIME), ВСЕ ПОЛОЖЕНИЯ"
     case ("INV(ALPHA_W) AGAINST ITS EQUATION")
       text = "INV(ALPHA_W): НЕВЯЗКА УРАВНЕНИЯ"
     case ("EPS_ALPHA: FORMULA VS THE PATH OF CONTACT'S ENDS")
