@@ -118,6 +118,7 @@ cmp -s "$out" "$cli_tmp/contour.csv" && fail contour-set "--set z1=20 did not ch
 expect_exit contour-needs-gear-deck 2 contour $cr
 expect_exit contour-no-format 1 contour $ga --format csv
 expect_exit design-no-svg 1 $ga --format svg
+expect_exit design-no-dxf 1 $cr --format dxf
 
 # --- the signs: a mirrored cam (clockwise, offset on the other side) has the opposite
 # pressure angle and the mirrored profile
