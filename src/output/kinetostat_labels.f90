@@ -52,6 +52,21 @@ contains
       text = "НАИБ. РАСХОЖДЕНИЕ N: ФОРМУЛА И РЕШЕНИЕ СИСТЕМЫ 3X3"
     case ("SUMMARY")
       text = "СВОДКА"
+    ! the design kinds (gear pair, cam): their summary block and self-check
+    case ("SIZE OF THE CAM")
+      text = "РАЗМЕРЫ КУЛАЧКА"
+    case ("THETA OVER ITS LIMIT (RELATIVE), ALL STEPS")
+      text = "ПРЕВЫШЕНИЕ ДОПУСТИМОГО УГЛА ДАВЛЕНИЯ (ОТНОС.)"
+    case ("RHO BELOW RHO_MIN (RELATIVE), ALL STEPS")
+      text = "RHO МЕНЬШЕ RHO_MIN (ОТНОС.), ВСЕ ПОЛОЖЕНИЯ"
+    case ("CURVATURE: TWO FORMULAS (X R_PRIME), ALL STEPS")
+      text = "КРИВИЗНА ПО ДВУМ ФОРМУЛАМ (X R_PRIME), ВСЕ ПОЛОЖЕНИЯ"
+    case ("INV(ALPHA_W) AGAINST ITS EQUATION")
+      text = "INV(ALPHA_W): НЕВЯЗКА УРАВНЕНИЯ"
+    case ("EPS_ALPHA: FORMULA VS THE PATH OF CONTACT'S ENDS")
+      text = "EPS_ALPHA: ФОРМУЛА И КОНЦЫ АКТИВНОЙ ЛИНИИ ЗАЦЕПЛЕНИЯ"
+    case ("(derived)")
+      text = "(вычислено)"
     case ("SHAKING FORCE AND MOMENT, FORCE AND MOMENT ON THE FRAME (MOMENTS ABOUT THE ORIGIN)")
       text = "ГЛАВНЫЙ ВЕКТОР И ГЛАВНЫЙ МОМЕНТ СИЛ "// &
         "ИНЕРЦИИ, СИЛА И МОМЕНТ НА СТОЙКУ "// &
@@ -158,6 +173,10 @@ contains
       text = "м/с^2"
     case ("m/rad")
       text = "м/рад"
+    case ("m/rad^2")
+      text = "м/рад^2"
+    case ("1/rad")
+      text = "1/рад"
     case ("steps")
       text = "положений"
     case ("satellites")

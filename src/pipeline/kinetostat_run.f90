@@ -38,7 +38,7 @@ module kinetostat_run
   private
   public :: run_options_t, run_mechanism, guard_finite, progress_i, block_rows
   public :: format_table, format_csv, format_json, format_svg, format_summary, format_plans, format_dxf, &
-    format_from_name, format_names
+    format_deck, format_from_name, format_names
 
   !> Output format: the legacy fixed-format table.
   integer, parameter :: format_table = 1
@@ -54,11 +54,13 @@ module kinetostat_run
   integer, parameter :: format_plans = 6
   !> Output format: the mechanism of step --at K as an ASCII DXF drawing.
   integer, parameter :: format_dxf = 7
+  !> Output format: the matching analysis deck of a design kind (mechanism_t%analysis_deck).
+  integer, parameter :: format_deck = 8
   !> The formats' names as --format takes them, in the order of their codes.
   character(*), parameter :: format_keys(*) = [character(len=7) :: "table", "csv", "json", "svg", "summary", &
-    "plans", "dxf"]
+    "plans", "dxf", "deck"]
   !> Names of the formats, for messages and --help.
-  character(*), parameter :: format_names = "table, csv, json, svg, summary, plans, dxf"
+  character(*), parameter :: format_names = "table, csv, json, svg, summary, plans, dxf, deck"
 
   !> Steps solved and written at a time: a run holds the rows of one block (and at most the
   !> spool's bound of output text), whatever its number of steps.
@@ -158,6 +160,12 @@ contains
 
     call mech%read_deck(source, error)
     if (allocated(error)) return
+    if ((options%format == format_svg .or. options%format == format_dxf) .and. .not. mech%force_sheet) then
+      call fatal_error(error, exit_usage, "--format "//trim(format_keys(options%format))//": "//source%path// &
+        " is &"//group//", a design: no sheet of forces; its results are the table, csv, json or summary, "// &
+        "and its analysis deck (--format deck)")
+      return
+    end if
     if (options%shaking) then
       call mech%mass_model(model)
       if (.not. model%available) then
@@ -187,8 +195,8 @@ contains
     head%chunk = options%echo_chunk
     first = 1
     do
-      ! the SVG sheet and drawing need every row at once
-      if (all(options%format /= [format_svg, format_plans, format_dxf]) .and. .not. options%plans) then
+      ! the SVG sheet, the drawing and the analysis deck need every row at once
+      if (all(options%format /= [format_svg, format_plans, format_dxf, format_deck]) .and. .not. options%plans) then
         table%block_first = first
         table%block_last = first + rows - 1
       end if
@@ -254,6 +262,9 @@ contains
         end if
       case (format_plans)
         call write_at_step(mech, table, options, out, error)
+        if (allocated(error)) return
+      case (format_deck)
+        call mech%analysis_deck(table, out, error)
         if (allocated(error)) return
       case (format_svg, format_dxf)
         call guard_drawable(table, error)

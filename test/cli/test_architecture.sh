@@ -12,7 +12,8 @@ layers = {"core": 0, "deck": 1, "output": 1, "pictures": 2, "plans": 2.2, "shaki
           "cli": 9}
 # one folder per mechanism or stage: above the pipeline, below the CLI; stages that the
 # mechanisms use (e.g. a dynamics stage) sit one below them
-mechanisms = {"pr3207", "pr3050", "sixbar", "assur", "gears", "cam", "linkage"}
+mechanisms = {"pr3207", "pr3050", "sixbar", "assur", "gears", "cam", "linkage", "gear_geometry",
+              "planetary_synthesis", "cam_profile"}
 for m in mechanisms:
     layers[m] = 5
 bad = []
