@@ -1,7 +1,9 @@
 !> The rows of a run a drawing needs, kept block by block as the run goes, so that a drawing
 !> of a run of any length needs the memory of one block and of what it draws, not of every
 !> step:
-!> - `--at K` (the mechanism, its plans, DXF, JSON --plans): row K, the run's first row and,
+!> - `--at K` (the mechanism, its plans, DXF, JSON --plans): row K, the run's first row,
+!>   `at_samples` rows spread evenly over the run (what the drawing tells of the whole run,
+!>   such as which links turn together, it reads from them: every row of a short run) and,
 !>   for each given direction through a point (a slider's guide), the rows where the point
 !>   is farthest back and forth along it (its travel, which the drawing shows);
 !> - the SVG sheet: every row of a run of up to `all_rows_limit` rows; of a longer one, per
@@ -22,6 +24,8 @@ module kinetostat_row_keeper
 
   !> A run of up to this many rows is drawn through every row.
   integer, parameter :: all_rows_limit = 4096
+  !> --at K: rows kept spread evenly over the run (first and last included).
+  integer, parameter :: at_samples = 33
   !> Buckets of a longer run on the SVG sheet: min and max of each column per bucket. A
   !> curve of one series draws sheet_buckets buckets (2 points each: 4096 points), of two
   !> (a hodograph's x and y) sheet_buckets/2: these divide sheet_buckets, so the extremes a
@@ -142,6 +146,9 @@ contains
       real(wp) :: s(size(numbers))
       integer :: i
       taken = numbers == 1 .or. numbers == self%at_row
+      do i = 1, size(numbers)
+        taken(i) = taken(i) .or. is_sample(numbers(i))
+      end do
       do i = 1, size(self%cx)
         if (self%cx(i) == 0 .or. self%cy(i) == 0) cycle
         s = self%u(1, i) * pool(self%cx(i), :) + self%u(2, i) * pool(self%cy(i), :)
@@ -150,6 +157,21 @@ contains
       end do
       keep = pack([(i, i=1, size(numbers))], taken)
     end subroutine at_rows
+
+    !> Whether run row r is one of the at_samples rows spread evenly over the run.
+    pure logical function is_sample(r)
+      integer, intent(in) :: r
+      integer :: j
+      integer(int64) :: below
+      is_sample = .true.
+      if (self%total <= at_samples) return
+      ! sample j (0 .. at_samples - 1) is row 1 + floor(j (total - 1) / (at_samples - 1))
+      below = (int(r - 1, int64) * (at_samples - 1)) / (self%total - 1)
+      do j = int(below), min(int(below) + 1, at_samples - 1)
+        if (1 + (int(j, int64) * (self%total - 1)) / (at_samples - 1) == r) return
+      end do
+      is_sample = .false.
+    end function is_sample
 
     !> Candidates `which` appended to the kept rows (growing them as needed).
     subroutine append(which, error)
