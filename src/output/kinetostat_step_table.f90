@@ -518,8 +518,11 @@ contains
     character(*), intent(in), optional :: link
     type(column_t) :: c
     real(wp), allocatable :: grown(:, :)
-    integer :: i
+    integer :: i, stat
+    ! out of memory already (kinetostat_run stops the run): nothing more is kept
+    if (allocated(self%no_room)) return
     if (allocated(self%pending) .and. k /= 1) call self%finish_columns()
+    if (allocated(self%no_room)) return
     i = self%last_kinematic + 1
     if (i > size(self%columns)) then
       i = 0
@@ -546,7 +549,13 @@ contains
         self%pending = [self%pending, 0.0_wp]
       else
         call self%finish_columns()
-        allocate (grown(i, size(self%rows, 2)), source=0.0_wp)
+        if (allocated(self%no_room)) return
+        allocate (grown(i, size(self%rows, 2)), source=0.0_wp, stat=stat)
+        if (stat /= 0) then
+          call self%lack_room("the kinematics columns of a block of "//int_str(size(self%rows, 2))//" steps", &
+            8_int64 * i * size(self%rows, 2))
+          return
+        end if
         grown(1:i - 1, :) = self%rows
         call move_alloc(grown, self%rows)
       end if
@@ -574,10 +583,15 @@ contains
   pure subroutine finish_columns(self)
     class(step_table_t), intent(inout) :: self
     real(wp), allocatable :: grown(:, :)
-    integer :: done
+    integer :: done, stat
     if (.not. allocated(self%pending)) return
     done = size(self%rows, 1)
-    allocate (grown(size(self%columns), size(self%rows, 2)), source=0.0_wp)
+    allocate (grown(size(self%columns), size(self%rows, 2)), source=0.0_wp, stat=stat)
+    if (stat /= 0) then
+      call self%lack_room("the kinematics columns of a block of "//int_str(size(self%rows, 2))//" steps", &
+        8_int64 * size(self%columns) * size(self%rows, 2))
+      return
+    end if
     grown(1:done, :) = self%rows
     grown(done + 1:, 1) = self%pending
     call move_alloc(grown, self%rows)

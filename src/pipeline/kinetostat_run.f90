@@ -229,14 +229,14 @@ contains
           error%message
         return
       end if
+      ! a mechanism without blocks (gears) gives all its rows at once
+      if (table%total_rows == 0) table%total_rows = table%row_count()
+      call table%finish_columns()
       if (allocated(table%no_room)) then
         call fatal_error(error, exit_input, table%deck//": &"//group//": out of memory: no room for "// &
           table%no_room)
         return
       end if
-      ! a mechanism without blocks (gears) gives all its rows at once
-      if (table%total_rows == 0) table%total_rows = table%row_count()
-      call table%finish_columns()
       if (options%shaking) then
         call add_shaking(table, model, error)
         if (allocated(error)) return

@@ -122,7 +122,8 @@ PY
       *--plans*)
         # shellcheck disable=SC2086
         (cd "$stream_tmp/small" && "$mem_bin" deck.nml $args >out)
-        if cmp -s "$stream_tmp/big/out" "$stream_tmp/small/out"; then pass
+        # the run's own figures (its self-check over every step) apart, the step's plans agree
+        if cmp -s <(grep -v '"selfcheck"' "$stream_tmp/big/out") <(grep -v '"selfcheck"' "$stream_tmp/small/out"); then pass
         else fail "stream-at-memory-numbers" "--at 2 of 10^6 steps differs from that of 3 steps: $(diff "$stream_tmp/big/out" "$stream_tmp/small/out" | head -4)"; fi ;;
       "--format svg")
         grep -q 'data-steps="1000000"' "$stream_tmp/big/out" && pass \
