@@ -420,18 +420,18 @@ contains
         end do
       end do
     end associate
-  contains
-    !> The first non-blank position at or after i (len + 1 when none).
-    pure integer function skip_blanks(text, i) result(k)
-      character(*), intent(in) :: text
-      integer, intent(in) :: i
-      k = i
-      do while (k <= len(text))
-        if (text(k:k) /= " " .and. text(k:k) /= achar(9)) exit
-        k = k + 1
-      end do
-    end function skip_blanks
   end subroutine kind_names_as_codes
+
+  !> The first non-blank position of `text` at or after i (len + 1 when none).
+  pure integer function skip_blanks(text, i) result(k)
+    character(*), intent(in) :: text
+    integer, intent(in) :: i
+    k = i
+    do while (k <= len(text))
+      if (text(k:k) /= " " .and. text(k:k) /= achar(9)) exit
+      k = k + 1
+    end do
+  end function skip_blanks
 
   !> A READ that failed on a line with a dyad's kind given as a name that is none of the
   !> kinds (`dyad(1)%kind = 'RRS'`): the message says so and lists the names, instead of
@@ -471,18 +471,10 @@ contains
       if (at == 0) return
       at = start + at - 1
       start = at + 5
-      i = at + 5
-      do while (i <= len(low))
-        if (low(i:i) /= " ") exit
-        i = i + 1
-      end do
+      i = skip_blanks(low, at + 5)
       if (i > len(low)) return
       if (low(i:i) /= "=") cycle
-      i = i + 1
-      do while (i <= len(low))
-        if (low(i:i) /= " ") exit
-        i = i + 1
-      end do
+      i = skip_blanks(low, i + 1)
       if (i > len(low)) return
       ! a text: quoted, or a word
       if (low(i:i) == "'" .or. low(i:i) == '"') then

@@ -5,6 +5,7 @@ module kinetostat_text
   implicit none
   private
   public :: real_str, int_str, int64_str, number_str, lower, upper, printable, utf8_length, counted, clipped, starts_with
+  public :: without_blanks
 
   !> Format of a real in a message: shortest general form with 10 significant digits.
   character(*), parameter :: real_msg_fmt = '(g0.10)'
@@ -183,6 +184,18 @@ contains
       end if
     end do
   end function utf8_length
+
+  !> The text without blanks and tabs (a namelist designator as the READ compares it:
+  !> "dyad (1) % l2" is "dyad(1)%l2").
+  pure function without_blanks(text) result(t)
+    character(*), intent(in) :: text
+    character(len=:), allocatable :: t
+    integer :: i
+    t = ""
+    do i = 1, len(text)
+      if (text(i:i) /= " " .and. text(i:i) /= achar(9)) t = t//text(i:i)
+    end do
+  end function without_blanks
 
   !> ASCII lower case.
   pure function lower(s) result(t)

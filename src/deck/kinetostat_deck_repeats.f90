@@ -2,7 +2,7 @@
 !> another): the namelist READ keeps the last value silently, which is rarely what was
 !> meant; the CLI warns about each such variable.
 module kinetostat_deck_repeats
-  use kinetostat_text, only: int_str, lower, counted
+  use kinetostat_text, only: int_str, lower, counted, without_blanks
   use kinetostat_deck, only: deck_source_t, deck_line_count, deck_line, assignment_starts
   implicit none
   private
@@ -44,7 +44,7 @@ contains
       do i = 1, size(starts)
         eq = index(line(starts(i):), "=")
         name = lower(line(starts(i):starts(i) + eq - 2))
-        name = drop_blanks(name)
+        name = without_blanks(name)
         seen = [seen, assigned_t(name, k)]
       end do
     end do
@@ -92,15 +92,5 @@ contains
     end function line_list
   end function deck_repeats
 
-  !> The text without blanks and tabs.
-  pure function drop_blanks(text) result(t)
-    character(*), intent(in) :: text
-    character(len=:), allocatable :: t
-    integer :: i
-    t = ""
-    do i = 1, len(text)
-      if (text(i:i) /= " " .and. text(i:i) /= achar(9)) t = t//text(i:i)
-    end do
-  end function drop_blanks
 
 end module kinetostat_deck_repeats

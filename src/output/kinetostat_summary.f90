@@ -5,7 +5,7 @@
 module kinetostat_summary
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use kinetostat_kinds, only: wp, deg_to_rad
-  use kinetostat_text, only: int_str, lower
+  use kinetostat_text, only: int_str, lower, without_blanks
   use kinetostat_step_table, only: step_table_t, col_force, col_force_angle, col_moment, column_tally_t, &
     edge_point_t
   use kinetostat_format, only: cell_number, trimmed_es
@@ -515,18 +515,8 @@ contains
     !> Namelist designators compared as the READ does: case and blanks do not count.
     pure logical function same_name(a, b)
       character(*), intent(in) :: a, b
-      same_name = squeezed(lower(a)) == squeezed(lower(b))
+      same_name = without_blanks(lower(a)) == without_blanks(lower(b))
     end function same_name
-
-    pure function squeezed(text) result(t)
-      character(*), intent(in) :: text
-      character(len=:), allocatable :: t
-      integer :: k
-      t = ""
-      do k = 1, len(text)
-        if (text(k:k) /= " ") t = t//text(k:k)
-      end do
-    end function squeezed
   end function override_fields
 
   !> Part 1 (the name) or 2 (the value) of "NAME=VALUE" (blank padding dropped).

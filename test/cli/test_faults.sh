@@ -190,16 +190,23 @@ ft_no_temps faults-head-1
   || fail faults-sigpipe-ignored "rc=$rc: $(grep -v warning "$ft_dir/pipe.err" | head -c 300)"
 ft_no_temps faults-sigpipe-ignored-temps
 
+# ft_sweep_started: a sweep of two children in the background; its children's ids in
+# $ft_children once they run (up to 5 s)
+ft_sweep_started() {
+  local i
+  ft_background sweep data/pr3207.nml --vary dphi=0.0004:0.0005:2 --jobs 2 -o "$ft_dir/sweepfile"
+  ft_children=""
+  for i in $(seq 1 50); do
+    ft_children=$(pgrep -P "$ft_pid" | tr '\n' ' ')
+    [ -n "$ft_children" ] && break
+    sleep 0.1
+  done
+  sleep 0.3
+}
+
 # --- SIGTERM of a sweep ends its children; no files are left
 echo old >"$ft_dir/sweepfile"
-ft_background sweep data/pr3207.nml --vary dphi=0.0004:0.0005:2 --jobs 2 -o "$ft_dir/sweepfile"
-ft_children=""
-for i in $(seq 1 50); do
-  ft_children=$(pgrep -P "$ft_pid" | tr '\n' ' ')
-  [ -n "$ft_children" ] && break
-  sleep 0.1
-done
-sleep 0.3
+ft_sweep_started
 kill -TERM "$ft_pid"; wait "$ft_pid" 2>/dev/null; rc=$?
 ft_alive=""
 for c in $ft_children; do kill -0 "$c" 2>/dev/null && ft_alive="$ft_alive $c"; done
@@ -211,14 +218,7 @@ for c in $ft_alive; do kill -KILL "$c" 2>/dev/null; done
 # --- SIGKILL of a sweep (no handler runs): its children watch a pipe to it and end within
 # 1 s when it closes (an orphan reaped by init, or a zombie, is not computing)
 ft_running() { local st; st=$(ps -o stat= -p "$1" 2>/dev/null); [ -n "$st" ] && [ "${st#Z}" = "$st" ]; }
-ft_background sweep data/pr3207.nml --vary dphi=0.0004:0.0005:2 --jobs 2 -o "$ft_dir/sweepfile"
-ft_children=""
-for i in $(seq 1 50); do
-  ft_children=$(pgrep -P "$ft_pid" | tr '\n' ' ')
-  [ -n "$ft_children" ] && break
-  sleep 0.1
-done
-sleep 0.3
+ft_sweep_started
 kill -KILL "$ft_pid"; wait "$ft_pid" 2>/dev/null; rc=$?
 sleep 1
 ft_alive=""
