@@ -35,6 +35,10 @@ program bench
   use kinetostat_run, only: run_options_t, run_mechanism, format_csv, format_table, format_json, block_rows
   use kinetostat_spool, only: spool_t
   use kinetostat_decimal, only: put_es_compact, edit_f
+  use kinetostat_csv_writer, only: write_csv
+  use kinetostat_json_writer, only: write_json
+  use kinetostat_table_writer, only: write_table_rows
+  use kinetostat_labels, only: lang_en
   implicit none
 
   !> Physical-limit estimate of one dedicated step on one core, steps/s: ~300 flops and ~15
@@ -101,6 +105,7 @@ program bench
   ! one thread, as `kinetostat` runs without OMP_NUM_THREADS
   !$ call omp_set_num_threads(1)
   call bench_writer()
+  call bench_text()
   write (output_unit, '(a,es8.1,a)') "kinetostat bench: physical-limit estimate ", limit_rate, &
     " steps/s (one dedicated step, one core)"
   do i = 1, size(header)
@@ -169,6 +174,70 @@ contains
       "   kinetostat_decimal", value_count / f_own, "   x", f_write / f_own
     if (differ > 0) write (output_unit, '(a,i0)') "  texts that differ (a bug): ", differ
   end subroutine bench_writer
+
+  !> Text output alone (the decimal writer and the row assembly of the CSV, JSON and legacy
+  !> table writers): for PR 3207 and the generic six-bar (when wanted), one block of
+  !> block_rows steps solved with the kinematics columns shown (as --kinematics), then its
+  !> rows formatted again and again for about half a CPU second per writer; cells (rows times
+  !> the columns the CSV shows) per CPU second with one thread, and MB of text per CPU second.
+  subroutine bench_text()
+    integer, parameter :: which(2) = [1, 4]
+    class(mechanism_t), allocatable :: mech
+    type(deck_source_t) :: source
+    type(step_table_t) :: table
+    type(text_buffer_t) :: out, later
+    type(error_t), allocatable :: error
+    character(len=:), allocatable :: text
+    real(wp) :: t0, t, cells, bytes
+    integer :: i, w, c, reps, shown
+    character(len=5), parameter :: writer_names(3) = [character(len=5) :: "csv", "json", "table"]
+    write (output_unit, '(a,i0,a)') "text output, one thread, ", block_rows, &
+      " steps with the kinematics columns (cells: rows x CSV columns), per CPU second:"
+    do i = 1, size(which)
+      if (.not. wanted(which(i))) cycle
+      text = scaled_deck(cases(which(i)), block_rows)
+      call deck_source_from_text(trim(cases(which(i))%deck), text, source)
+      call create_mechanism(trim(cases(which(i))%kind), mech)
+      call mech%read_deck(source, error)
+      if (allocated(error)) call fail(error)
+      table = step_table_t()
+      table%kinematics_wanted = .true.
+      call mech%solve(table, error)
+      if (allocated(error)) call fail(error)
+      call table%finish_columns()
+      table%kinematics_shown = .true.
+      shown = 0
+      do c = 1, size(table%columns)
+        if (table%columns(c)%csv .and. table%shows(c)) shown = shown + 1
+      end do
+      do w = 1, size(writer_names)
+        reps = 0
+        bytes = 0.0_wp
+        t0 = clock()
+        do
+          out%length = 0
+          later%length = 0
+          select case (w)
+          case (1)
+            call write_csv(table, out)
+          case (2)
+            call write_json("bench", table, out)
+          case default
+            call write_table_rows(mech, table, lang_en, out, later)
+          end select
+          bytes = bytes + out%length + later%length
+          reps = reps + 1
+          t = seconds_since(t0)
+          if (t > 0.5_wp) exit
+        end do
+        cells = real(reps, wp) * table%row_count() * shown
+        write (output_unit, '(2x,a8,i5,a,a6,es10.2,a,f7.1,a)') cases(which(i))%kind, shown, " columns  ", &
+          writer_names(w), cells / t, " cells/s ", bytes / t / 1.0e6_wp, " MB/s"
+      end do
+      deallocate (mech)
+    end do
+    flush (output_unit)
+  end subroutine bench_text
 
   !> One case at one step count: one row of the table.
   subroutine bench_one(c, n, path)
