@@ -24,6 +24,9 @@ module kinetostat_summary
   !> Scale of the input (or driver coordinate) steps in those sums: a step below 3.6e308
   !> becomes one below 1e140, so a product with a scaled value stays below 1.4e294.
   real(wp), parameter :: step_scale = scale(1.0_wp, -560)
+  !> A trapezoid term below this (2**40) is a subnormal number once scaled by value_scale and
+  !> step_scale (2**-1072): such terms stay out of the scaled sums.
+  real(wp), parameter :: tiny_term = scale(1.0_wp, 40)
 
   !> Extremes and mean of one column over a run.
   type :: column_stats_t
@@ -65,14 +68,20 @@ contains
   !> pipeline calls this for every block) to the run's tallies: per column its extremes
   !> and the row and input coordinate of each, its sum and trapezoid sum; the largest
   !> input step; the driver's work; the input coordinate next to the load edges. The sums
-  !> run in row order, so they are the same whatever the blocks.
+  !> run in row order, so they are the same whatever the blocks. The columns are tallied
+  !> one after the other over a tile of rows (each on its own: the same sums as row by row).
   pure subroutine tally_rows(table)
     !> The results (the tallies are updated).
     type(step_table_t), intent(inout) :: table
-    integer :: k, c, row, d, nc
-    real(wp) :: x, v, tie, coordinate
+    !> Rows tallied column by column at a time.
+    integer, parameter :: tile_rows = 256
+    integer :: k, c, row, d, nc, n, k1, k2
+    real(wp) :: x, coordinate, last_d, previous_at, term
+    real(wp), allocatable :: at(:)
+    logical, allocatable :: void(:)
     logical :: work_known, work_in_rad
     nc = size(table%columns)
+    n = table%row_count()
     if (table%tallied_rows == 0) then
       if (allocated(table%tally)) deallocate (table%tally)
       allocate (table%tally(nc))
@@ -80,13 +89,25 @@ contains
       allocate (table%edge_points(0))
       table%void_rows = 0
     end if
+    if (n == 0) return
     d = 0
     if (allocated(table%driver)) d = table%column_index(table%driver)
     call work_kind(table, d, work_known, work_in_rad)
-    do k = 1, table%row_count()
+    allocate (at(n), void(n))
+    if (table%input_column > 0) then
+      at = table%rows(table%input_column, 1:n)
+    else
+      at = 0.0_wp
+    end if
+    do k = 1, n
+      void(k) = table%is_void(k)
+    end do
+    previous_at = table%last_at
+    last_d = 0.0_wp
+    if (d > 0) last_d = table%tally(d)%last
+    do k = 1, n
       row = table%row_offset + k
-      x = 0.0_wp
-      if (table%input_column > 0) x = table%rows(table%input_column, k)
+      x = at(k)
       coordinate = 0.0_wp
       if (work_known) then
         if (work_in_rad) then
@@ -103,61 +124,30 @@ contains
       else
         table%largest_step = max(table%largest_step, abs(x - table%last_at))
         if (work_known) then
-          table%work2 = table%work2 + (table%rows(d, k) + table%tally(d)%last) * &
-                        (coordinate - table%last_coordinate)
-          table%work2_scaled = table%work2_scaled + (table%rows(d, k) * value_scale + &
-            table%tally(d)%last * value_scale) * (coordinate * step_scale - table%last_coordinate * step_scale)
+          term = (table%rows(d, k) + last_d) * (coordinate - table%last_coordinate)
+          table%work2 = table%work2 + term
+          if (.not. abs(term) < tiny_term) table%work2_scaled = table%work2_scaled + (table%rows(d, k) * value_scale + &
+            last_d * value_scale) * (coordinate * step_scale - table%last_coordinate * step_scale)
         end if
       end if
-      if (table%is_void(k)) table%void_rows = table%void_rows + 1
-      do c = 1, nc
-        v = table%rows(c, k)
-        associate (t => table%tally(c))
-          ! a cell without a value (void row) is left out of the extremes, sums and means
-          if (table%void_cell(c, k)) then
-            t%last_counted = .false.
-            cycle
-          end if
-          t%largest = max(t%largest, abs(v))
-          if (t%count == 0) then
-            t = column_tally_t(max=v, min=v, max_row=row, min_row=row, max_at=x, min_at=x, peak=v, peak_row=row, &
-                               peak_at=x, largest=abs(v), total=v, area2=0.0_wp, last=v, count=1, span=0.0_wp, &
-                               last_counted=.true., total_scaled=v * value_scale, area2_scaled=0.0_wp)
-            cycle
-          end if
-          tie = tie_rel * t%largest
-          if (v > t%max + tie) then
-            t%max = v
-            t%max_row = row
-            t%max_at = x
-          end if
-          if (v < t%min - tie) then
-            t%min = v
-            t%min_row = row
-            t%min_at = x
-          end if
-          if (v > t%peak) then
-            t%peak = v
-            t%peak_row = row
-            t%peak_at = x
-          end if
-          t%total = t%total + v
-          t%count = t%count + 1
-          if (t%last_counted) then
-            t%area2 = t%area2 + (v + t%last) * (x - table%last_at)
-            t%area2_scaled = t%area2_scaled + (v * value_scale + t%last * value_scale) * &
-                             (x * step_scale - table%last_at * step_scale)
-            t%span = t%span + (x - table%last_at)
-          end if
-          t%total_scaled = t%total_scaled + v * value_scale
-          t%last = v
-          t%last_counted = .true.
-        end associate
-      end do
+      if (void(k)) table%void_rows = table%void_rows + 1
+      ! the driver's last counted value (a void cell leaves it), as its column's tally keeps it
+      if (d > 0) then
+        if (.not. (void(k) .and. table%columns(d)%voidable)) last_d = table%rows(d, k)
+      end if
       if (near_load_edge(row)) table%edge_points = [table%edge_points, edge_point_t(row, x)]
       table%last_at = x
       table%last_coordinate = coordinate
       table%tallied_rows = row
+    end do
+    ! a tile of rows at a time, all columns over it (the tile stays in the cache)
+    do k1 = 1, n, tile_rows
+      k2 = min(n, k1 + tile_rows - 1)
+      if (k1 > 1) previous_at = at(k1 - 1)
+      do c = 1, nc
+        call tally_column(table%tally(c), table%rows(c, k1:k2), at(k1:k2), void(k1:k2), table%columns(c)%voidable, &
+                          table%row_offset + k1 - 1, previous_at)
+      end do
     end do
   contains
     !> Whether a load switches between this row and the one before or after it.
@@ -170,6 +160,78 @@ contains
       if (r < size(table%load_changes)) near_load_edge = near_load_edge .or. table%load_changes(r + 1)
     end function near_load_edge
   end subroutine tally_rows
+
+  !> One column's tally over the rows of a block, in row order (see tally_rows).
+  pure subroutine tally_column(t, values, at, void, voidable, row_offset, previous_at)
+    !> The column's tally so far (updated).
+    type(column_tally_t), intent(inout) :: t
+    !> The column's values in the block's rows.
+    real(wp), intent(in) :: values(:)
+    !> The input coordinate of each row (0 without an input column).
+    real(wp), intent(in) :: at(:)
+    !> Whether the row is void.
+    logical, intent(in) :: void(:)
+    !> Whether the column has no value in a void row (such a cell is left out).
+    logical, intent(in) :: voidable
+    !> Rows of the run before the block.
+    integer, intent(in) :: row_offset
+    !> Input coordinate of the row before the block.
+    real(wp), intent(in) :: previous_at
+    real(wp) :: v, x, last_at, tie, term
+    integer :: k, row
+    last_at = previous_at
+    do k = 1, size(values)
+      v = values(k)
+      x = at(k)
+      row = row_offset + k
+      ! a cell without a value (void row) is left out of the extremes, sums and means
+      if (voidable .and. void(k)) then
+        t%last_counted = .false.
+        last_at = x
+        cycle
+      end if
+      t%largest = max(t%largest, abs(v))
+      if (t%count == 0) then
+        t = column_tally_t(max=v, min=v, max_row=row, min_row=row, max_at=x, min_at=x, peak=v, peak_row=row, &
+                           peak_at=x, largest=abs(v), total=v, area2=0.0_wp, last=v, count=1, span=0.0_wp, &
+                           last_counted=.true., total_scaled=v * value_scale, area2_scaled=0.0_wp)
+        last_at = x
+        cycle
+      end if
+      tie = tie_rel * t%largest
+      if (v > t%max + tie) then
+        t%max = v
+        t%max_row = row
+        t%max_at = x
+      end if
+      if (v < t%min - tie) then
+        t%min = v
+        t%min_row = row
+        t%min_at = x
+      end if
+      if (v > t%peak) then
+        t%peak = v
+        t%peak_row = row
+        t%peak_at = x
+      end if
+      t%total = t%total + v
+      t%count = t%count + 1
+      if (t%last_counted) then
+        term = (v + t%last) * (x - last_at)
+        t%area2 = t%area2 + term
+        ! (a term whose scaled value would be subnormal is left out of the scaled sum: it is
+        ! below 1e-290 of any sum that overflowed, the only one that sum is used for, and
+        ! subnormal arithmetic would take most of the run's summary time)
+        if (.not. abs(term) < tiny_term) t%area2_scaled = t%area2_scaled + (v * value_scale + t%last * value_scale) * &
+                                                          (x * step_scale - last_at * step_scale)
+        t%span = t%span + (x - last_at)
+      end if
+      t%total_scaled = t%total_scaled + v * value_scale
+      t%last = v
+      t%last_counted = .true.
+      last_at = x
+    end do
+  end subroutine tally_column
 
   !> Whether the driver's work is defined (a driving moment over the input angle in deg, or a
   !> driving force over its coordinate column) and whether its coordinate is the input angle.

@@ -147,6 +147,8 @@ contains
     type(echo_cursor_t) :: head
     !> The moving links and frame pairs (--shaking).
     type(mass_model_t) :: model
+    !> A failed write of the spool while the rows were formatted (to_spool).
+    type(error_t), allocatable :: spool_error
     integer :: first, rows
 
     call mech%read_deck(source, error)
@@ -225,7 +227,11 @@ contains
       end if
       select case (options%format)
       case (format_csv)
-        call write_csv(table, out)
+        if (present(spool)) then
+          call write_csv(table, out, to_spool)
+        else
+          call write_csv(table, out)
+        end if
       case (format_summary)
         if (table%last_block()) then
           call out%put(summary_header(table, options%kinematics))
@@ -237,7 +243,11 @@ contains
           if (allocated(error)) return
         else
           do
-            call write_json(mech%title(options%lang), table, out, head)
+            if (present(spool)) then
+              call write_json(mech%title(options%lang), table, out, head, to_spool)
+            else
+              call write_json(mech%title(options%lang), table, out, head)
+            end if
             if (head%done) exit
             call drain_head(error)
             if (allocated(error)) return
@@ -258,7 +268,11 @@ contains
         end if
         if (allocated(error)) return
       case default
-        call write_table_rows(mech, table, options%lang, out, later)
+        if (present(spool)) then
+          call write_table_rows(mech, table, options%lang, out, later, to_spool)
+        else
+          call write_table_rows(mech, table, options%lang, out, later)
+        end if
         if (options%shaking) call write_shaking_rows(table, options%lang, shaking)
         if (table%last_block()) then
           if (present(spool)) then
@@ -274,6 +288,10 @@ contains
         end if
       end select
       if (.not. present(spool)) return
+      if (allocated(spool_error)) then
+        call move_alloc(spool_error, error)
+        return
+      end if
       call spool%drain(out, error)
       if (allocated(error)) return
       call later_spool%drain(later, error)
@@ -303,6 +321,14 @@ contains
         if (allocated(error)) return
       end do
     end subroutine start_output
+
+    !> The rows' text so far to the spool (when over its bound), called by the writers as
+    !> the rows are formatted in parallel; a failure is kept for run_block.
+    subroutine to_spool(text)
+      type(text_buffer_t), intent(inout) :: text
+      if (allocated(spool_error)) return
+      call spool%drain(text, spool_error)
+    end subroutine to_spool
 
     !> Between parts of the head: the text so far to the spool (when over its bound).
     subroutine drain_head(error)

@@ -13,7 +13,7 @@ module kinetostat_table_writer
   use kinetostat_text, only: upper
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_text_buffer, only: text_buffer_t
-  use kinetostat_row_blocks, only: put_row_blocks_two
+  use kinetostat_row_blocks, only: put_row_blocks_two, sink_i
   use kinetostat_shaking, only: shaking_column_names
   implicit none
   private
@@ -38,7 +38,7 @@ contains
 
   !> The mechanism's RESULTS lines of the rows now in `table` (one block of the run): in
   !> parallel parts with more than one OpenMP thread (the same bytes as one thread).
-  subroutine write_table_rows(mech, table, lang, out, later)
+  subroutine write_table_rows(mech, table, lang, out, later, sink)
     !> The mechanism (its RESULTS layout).
     class(mechanism_t), intent(in) :: mech
     !> Finite results: the rows of one block of the run.
@@ -49,7 +49,10 @@ contains
     type(text_buffer_t), intent(inout) :: out
     !> Where a layout's second section over the same rows goes (after the last row).
     type(text_buffer_t), intent(inout) :: later
-    call put_row_blocks_two(table%row_count(), table_row_room * size(table%columns), put_rows, out, later)
+    !> Takes the text of `out` so far while the rows are formatted in parallel (see
+    !> put_row_blocks).
+    procedure(sink_i), optional :: sink
+    call put_row_blocks_two(table%row_count(), table_row_room * size(table%columns), put_rows, out, later, sink)
   contains
     !> Rows first .. last of the layout.
     subroutine put_rows(first, last, part, later_part)
