@@ -8,10 +8,10 @@ module kinetostat_cli
   use kinetostat_deck_repeats, only: deck_repeats
   use kinetostat_deck, only: deck_source_t, load_deck, read_group_name, set_max_deck_size
   use kinetostat_override, only: override_t, parse_override, apply_overrides
-  use kinetostat_sweep, only: vary_t, parse_vary, run_sweep, variant_result_t, allow_selfcheck_failure_in_sweep
-  use kinetostat_posix, only: stderr_is_terminal, cpu_count, guard_signals
+  use kinetostat_sweep, only: vary_t, parse_vary, run_sweep, variant_result_t, allow_selfcheck_failure_in_sweep, sweep_npy
+  use kinetostat_posix, only: stderr_is_terminal, cpu_count, guard_signals, output_is_terminal
   use kinetostat_text, only: int_str, printable
-  use kinetostat_run, only: format_summary
+  use kinetostat_run, only: format_summary, format_npy
   use kinetostat_step_table, only: step_table_t
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_output, only: write_output_file, write_output_stdout
@@ -38,11 +38,11 @@ module kinetostat_cli
 
   !> One-line usage, printed with usage errors.
   character(*), parameter :: usage_line = "usage: kinetostat DECK|- [--set NAME=VALUE]... [-o FILE] " // &
-    "[--format table|csv|json|svg|summary|plans|dxf] [--pairs LIST] [--at K] [--plans] [--lang en|ru] " // &
+    "[--format table|csv|json|svg|summary|plans|dxf|npy] [--pairs LIST] [--at K] [--plans] [--lang en|ru] " // &
     "[--kinematics] [--frame global|link] [--shaking] [--student NAME] [--group G] [--variant N] " // &
     "[--max-deck-size BYTES] [--allow-selfcheck-failure] [--quiet] " // &
     "[--strict] | " // &
-    "kinetostat sweep DECK --vary NAME=FROM:TO:COUNT... [--part K/N] [--jobs N] | " // &
+    "kinetostat sweep DECK --vary NAME=FROM:TO:COUNT... [--part K/N] [--jobs N] [--format summary|npy] | " // &
     "kinetostat template KIND [-o FILE] | kinetostat diff A B [--rtol R] [--atol A] | " // &
     "kinetostat balance DECK [-o FILE] [--method full|crank|partial] [--fraction F] | "// &
     "kinetostat structure DECK [--lang ru] | --help | --version"
@@ -52,11 +52,11 @@ module kinetostat_cli
     "kinetostat - kinetostatic force analysis of planar mechanisms", &
     "", &
     "  kinetostat DECK [--set NAME=VALUE]... [-o FILE]", &
-    "                  [--format table|csv|json|svg|summary|plans|dxf] [--pairs LIST] [--at K]", &
+    "                  [--format table|csv|json|svg|summary|plans|dxf|npy] [--pairs LIST] [--at K]", &
     "                  [--plans] [--lang en|ru] [--kinematics] [--shaking]", &
     "                  [--max-deck-size BYTES] [--allow-selfcheck-failure] [--quiet] [--strict]", &
     "  kinetostat sweep DECK --vary NAME=FROM:TO:COUNT... [--set NAME=VALUE]... [--part K/N]", &
-    "                  [--jobs N]", &
+    "                  [--jobs N] [--format summary|npy]", &
     "                  [-o FILE] [--quiet] [--strict]", &
     "  kinetostat template KIND [-o FILE]   a commented deck to start from (KIND: a mechanism,", &
     "                                       or a preset of the generic engine)", &
@@ -73,8 +73,9 @@ module kinetostat_cli
     "            (repeatable; l_ab=0.12, f5c(3)=0, 'dyad(2)%l2=0.45'); marked (--set)", &
     "-o FILE, --output FILE  write to FILE (atomically: nothing is left behind on error)", &
     "--format    table (default, the legacy printout), csv (full precision), json, svg", &
-    "            (a sheet of force hodographs and diagrams; see docs/pictures.md), or summary", &
-    "            (a CSV header and one row: max, min, where, mean per column, work)", &
+    "            (a sheet of force hodographs and diagrams; see docs/pictures.md), summary", &
+    "            (a CSV header and one row: max, min, where, mean per column, work), or npy", &
+    "            (the CSV's columns as a NumPy .npy file: -o FILE, never to a terminal)", &
     "--pairs     with svg: only these pair forces, e.g. --pairs F16,F36", &
     "--at K      with svg: the mechanism drawn at step K with every force of the step", &
     "--at K      with plans: the graphical method's sheet of step K (plans of velocities and", &
@@ -555,9 +556,15 @@ contains
       end if
     end do
     if (size(results) == 0) return
-    if (args%part == 1) call out%put(results(1)%header)
+    if (args%options%format == format_npy) then
+      ! every part is an npy file of its own rows (numpy.concatenate joins them)
+      call sweep_npy(results, out, error)
+      if (allocated(error)) return
+    else if (args%part == 1) then
+      call out%put(results(1)%header)
+    end if
     do v = 1, size(results)
-      call out%put(results(v)%row)
+      if (args%options%format /= format_npy) call out%put(results(v)%row)
       warnings = warnings + results(v)%warning_count
       if (args%quiet .or. results(v)%warnings%length == 0) cycle
       prefix = "kinetostat: warning: "//source%path//" ("//variant_name(results(v))//"): "
@@ -904,8 +911,8 @@ contains
         "kinetostat balance DECK ...")
     else if (args%balance .and. args%fraction_given .and. args%balance_method /= 3) then
       call fatal_error(error, exit_usage, "--fraction belongs to --method partial")
-    else if (args%sweep .and. args%format_given .and. args%options%format /= format_summary) then
-      call fatal_error(error, exit_usage, "sweep writes the summary format only (--format summary)")
+    else if (args%sweep .and. args%format_given .and. all(args%options%format /= [format_summary, format_npy])) then
+      call fatal_error(error, exit_usage, "sweep writes the summary format only (--format summary, or npy)")
     else if (allocated(args%options%pairs) .and. args%options%format /= format_svg) then
       call fatal_error(error, exit_usage, "--pairs needs --format svg")
     else if (args%options%plans .and. (args%options%format /= format_json .or. args%options%at_step == 0)) then
@@ -917,6 +924,9 @@ contains
     else if (args%options%at_step > 0 .and. all(args%options%format /= [format_svg, format_plans, format_dxf]) &
       .and. .not. args%options%plans) then
       call fatal_error(error, exit_usage, "--at needs --format svg, plans or dxf (or --format json --plans)")
+    else if (args%options%format == format_npy) then
+      if (binary_to_terminal(args%out_file)) call fatal_error(error, exit_usage, "--format npy writes binary data, "// &
+        "not for a terminal: give -o FILE.npy or redirect standard output")
     end if
     if (allocated(error)) return
     if (allocated(args%options%student_name) .or. allocated(args%options%student_group) .or. &
@@ -927,6 +937,18 @@ contains
       args%options%student_stamp = run_stamp()
     end if
   end subroutine parse_args
+
+  !> Whether binary output would reach a terminal: the file of `-o` (a terminal device, or
+  !> /dev/stdout on one), or standard output when there is no `-o`.
+  logical function binary_to_terminal(out_file)
+    !> The path of `-o`, if given.
+    character(len=:), allocatable, intent(in) :: out_file
+    if (allocated(out_file)) then
+      binary_to_terminal = output_is_terminal(out_file)
+    else
+      binary_to_terminal = output_is_terminal()
+    end if
+  end function binary_to_terminal
 
   !> Date and time of the run as the 1991 header printed them: "25.11.2026 18:31".
   function run_stamp() result(stamp)

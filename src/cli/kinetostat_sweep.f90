@@ -18,13 +18,14 @@ module kinetostat_sweep
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_run, only: run_options_t, run_mechanism, format_summary
-  use kinetostat_summary, only: summary_header, summary_row
+  use kinetostat_summary, only: summary_header, summary_row, summary_values
   use kinetostat_registry, only: create_mechanism, known_kinds
+  use kinetostat_npy_writer, only: npy_header, put_npy_values
   use kinetostat_posix, only: fork_process, wait_process, exit_now, temp_anonymous, write_fd, read_fd_at, close_fd
   !$ use omp_lib, only: omp_set_num_threads
   implicit none
   private
-  public :: vary_t, parse_vary, run_sweep, variant_result_t, variant_count, allow_selfcheck_failure_in_sweep
+  public :: vary_t, parse_vary, run_sweep, variant_result_t, variant_count, allow_selfcheck_failure_in_sweep, sweep_npy
 
   !> --allow-selfcheck-failure of the sweep: a variant whose self-check fails warns (else
   !> it fails the sweep, exit 3). Set with allow_selfcheck_failure_in_sweep.
@@ -55,6 +56,8 @@ module kinetostat_sweep
     character(len=:), allocatable :: header
     !> Its summary CSV row.
     character(len=:), allocatable :: row
+    !> The numbers of that row after the overrides, as computed (summary_values; --format npy).
+    real(wp), allocatable :: values(:)
     !> Its warnings, one line each (without the "kinetostat: warning: " prefix).
     type(text_buffer_t) :: warnings
     !> Number of warnings (a failed self-check included).
@@ -307,14 +310,16 @@ contains
   end subroutine run_in_children
 
   !> Write the results of a block to descriptor `fd` (read back by load_block): per variant
-  !> "E" code, message or "R" header, row, warning count, warnings; each text after its
-  !> length (field_width digits).
+  !> "E" code, message or "R" header, row, warning count, warnings, the count of the row's
+  !> numbers and their 8 bytes each; each text after its length (field_width digits).
   subroutine save_block(fd, results, ok)
     integer, intent(in) :: fd
     type(variant_result_t), intent(in) :: results(:)
     logical, intent(out) :: ok
     type(text_buffer_t) :: buf
-    integer :: v
+    character(len=8) :: value_bytes
+    integer :: v, i
+    value_bytes = ""
     do v = 1, size(results)
       associate (r => results(v))
         if (allocated(r%error)) then
@@ -323,6 +328,11 @@ contains
           call buf%append("R"//field(len(r%header))//r%header//field(len(r%row))//r%row// &
             field(r%warning_count)//field(r%warnings%length))
           if (r%warnings%length > 0) call buf%append(r%warnings%data(1:r%warnings%length))
+          ! the numbers as their bytes (exactly as computed)
+          call buf%append(field(size(r%values)))
+          do i = 1, size(r%values)
+            call buf%append(transfer(r%values(i), value_bytes))
+          end do
         end if
       end associate
     end do
@@ -344,7 +354,7 @@ contains
     logical, intent(out) :: ok
     character(len=:), allocatable :: text, chunk
     integer(int64) :: got, offset
-    integer :: v, p, length, code
+    integer :: v, p, length, code, i
     ok = .false.
     text = ""
     offset = 0
@@ -384,6 +394,13 @@ contains
             r%warnings%length = length
           end if
           p = p + length
+          if (.not. number(length)) return
+          if (p + 8 * length - 1 > len(text)) return
+          allocate (r%values(length))
+          do i = 1, length
+            r%values(i) = transfer(text(p:p + 7), 1.0_wp)
+            p = p + 8
+          end do
         else
           return
         end if
@@ -447,6 +464,7 @@ contains
     type(run_options_t) :: options
     type(step_table_t) :: table
     type(text_buffer_t) :: out
+    logical, allocatable :: whole(:)
     integer :: i
     call apply_overrides(source, result%overrides, patched)
     call create_mechanism(group, mech)
@@ -458,11 +476,124 @@ contains
     if (allocated(result%error)) return
     result%header = summary_header(table, .false.)
     result%row = summary_row(table, .false.)
+    call summary_values(table, .false., result%values, whole)
     do i = 1, table%warning_count()
       call result%warnings%put(table%warnings(i)%text)
     end do
     result%warning_count = table%warning_count()
   end subroutine run_variant
+
+  !> The sweep's rows as an npy file (--format npy): the columns of its summary CSV header,
+  !> each a float64 field of that name, one record per variant: an override column whose
+  !> value is one number (every --vary, a --set of a number) with that number, the rest as
+  !> computed (summary_values). A --set whose value is not one number (a text, a list) is
+  !> the same in every row and is left out.
+  subroutine sweep_npy(results, out, error)
+    !> The variants, none failed, all with the same header.
+    type(variant_result_t), intent(in) :: results(:)
+    !> Where the bytes go.
+    type(text_buffer_t), intent(inout) :: out
+    !> The header and the numbers do not match (a bug).
+    type(error_t), allocatable, intent(out) :: error
+    character(len=:), allocatable :: names(:)
+    integer, allocatable :: lengths(:), kept(:)
+    real(wp), allocatable :: row(:)
+    real(wp) :: x
+    integer :: n_over, v, j
+    logical :: numeric
+    call csv_fields(results(1)%header, names, lengths)
+    n_over = size(results(1)%overrides)
+    if (size(names) /= n_over + size(results(1)%values)) then
+      call fatal_error(error, exit_input, "sweep: --format npy: "//int_str(size(names))//" summary columns but "// &
+        int_str(n_over + size(results(1)%values))//" values (a bug: please report it)")
+      return
+    end if
+    allocate (kept(0))
+    do j = 1, n_over
+      numeric = .true.
+      do v = 1, size(results)
+        numeric = numeric .and. one_number(results(v)%overrides(j)%value, x)
+      end do
+      if (numeric) kept = [kept, j]
+    end do
+    kept = [kept, [(n_over + j, j = 1, size(results(1)%values))]]
+    call out%append(npy_header(names(kept), lengths(kept), size(results)))
+    allocate (row(size(kept)))
+    do v = 1, size(results)
+      do j = 1, size(kept)
+        if (kept(j) <= n_over) then
+          numeric = one_number(results(v)%overrides(kept(j))%value, row(j))
+        else
+          row(j) = results(v)%values(kept(j) - n_over) + 0.0_wp
+        end if
+      end do
+      call put_npy_values(out, row)
+    end do
+  end subroutine sweep_npy
+
+  !> Whether `text` is one number (digits, sign, point, exponent; no repeat count, list or
+  !> text), and its value.
+  logical function one_number(text, x)
+    character(*), intent(in) :: text
+    real(wp), intent(out) :: x
+    integer :: ios
+    x = 0.0_wp
+    one_number = .false.
+    if (len_trim(text) == 0 .or. verify(trim(adjustl(text)), "0123456789+-.eEdD") /= 0) return
+    read (text, *, iostat=ios) x
+    one_number = ios == 0
+  end function one_number
+
+  !> The fields of a CSV line (quoted fields unquoted, "" inside them as one "), blank-padded
+  !> to the longest, with their lengths.
+  subroutine csv_fields(line, names, lengths)
+    character(*), intent(in) :: line
+    character(len=:), allocatable, intent(out) :: names(:)
+    integer, allocatable, intent(out) :: lengths(:)
+    character(len=:), allocatable :: fields(:)
+    integer, allocatable :: field_length(:)
+    integer :: i, count
+    logical :: quoted
+    ! at most one field more than the commas
+    count = 1
+    do i = 1, len(line)
+      if (line(i:i) == ",") count = count + 1
+    end do
+    allocate (character(len=max(1, len(line))) :: fields(count))
+    allocate (field_length(count), source=0)
+    fields = ""
+    count = 1
+    quoted = .false.
+    i = 1
+    do while (i <= len(line))
+      if (quoted .and. line(i:i) == '"' .and. i < len(line)) then
+        if (line(i + 1:i + 1) == '"') then
+          call put('"')
+          i = i + 2
+          cycle
+        end if
+      end if
+      if (line(i:i) == '"') then
+        quoted = .not. quoted
+      else if (line(i:i) == "," .and. .not. quoted) then
+        count = count + 1
+      else
+        call put(line(i:i))
+      end if
+      i = i + 1
+    end do
+    lengths = field_length(1:count)
+    allocate (character(len=max(1, maxval(lengths))) :: names(count))
+    do i = 1, count
+      names(i) = fields(i)(1:lengths(i))
+    end do
+  contains
+    subroutine put(c)
+      character, intent(in) :: c
+      field_length(count) = field_length(count) + 1
+      fields(count)(field_length(count):field_length(count)) = c
+    end subroutine put
+  end subroutine csv_fields
 
   !> "kinetostat: sweep: 37/120 variants, 12 s" on stderr, overwritten in place; only
   !> after the first second.

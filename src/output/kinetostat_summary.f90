@@ -5,14 +5,14 @@
 module kinetostat_summary
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use kinetostat_kinds, only: wp, deg_to_rad
-  use kinetostat_text, only: int_str, lower
+  use kinetostat_text, only: lower
   use kinetostat_step_table, only: step_table_t, col_force, col_force_angle, col_moment, column_tally_t, &
     edge_point_t
   use kinetostat_format, only: cell_number
   implicit none
   private
   public :: column_stats_t, column_stats, summarized, drive_work, coarse_step_warning, tally_rows
-  public :: summary_header, summary_row, coarse_step_limit
+  public :: summary_header, summary_row, summary_values, coarse_step_limit
 
   !> Values closer than this, relative to the column's largest magnitude, are a tie.
   real(wp), parameter :: tie_rel = 1.0e-12_wp
@@ -447,49 +447,99 @@ contains
   end function summary_header
 
   !> Summary CSV row of a run (the columns of `summary_header`): override values as given,
-  !> numbers at full precision (as the CSV), "_at" the input angle (or the row number).
+  !> then summary_values, numbers at full precision (as the CSV), whole numbers as such.
   pure function summary_row(table, kinematics) result(line)
     !> The results of one run (at least one row tallied).
     type(step_table_t), intent(in) :: table
     !> Whether the kinematics columns are summarized too (--kinematics).
     logical, intent(in) :: kinematics
     character(len=:), allocatable :: line
+    real(wp), allocatable :: values(:)
+    logical, allocatable :: whole(:)
+    integer :: i
+    call summary_values(table, kinematics, values, whole)
+    line = override_cells(table, 2)
+    do i = 1, size(values)
+      if (i > 1) line = line//","
+      line = line//cell_number(values(i), whole(i))
+    end do
+  end function summary_row
+
+  !> The numbers of a run's summary row after its overrides, in the order of
+  !> `summary_header`: rows (and rows left out), the first and last input coordinate, per
+  !> summarized column its largest value and where ("_at": the input coordinate, or the row
+  !> number without one), its smallest and where, its mean; the driver's work; the dynamics
+  !> figures. `whole` marks the whole numbers (counts, rows, the extremes of a flag or count
+  !> column), written as such.
+  pure subroutine summary_values(table, kinematics, values, whole)
+    !> The results of one run (at least one row tallied).
+    type(step_table_t), intent(in) :: table
+    !> Whether the kinematics columns are summarized too (--kinematics).
+    logical, intent(in) :: kinematics
+    !> The numbers.
+    real(wp), allocatable, intent(out) :: values(:)
+    !> Which of them are whole numbers.
+    logical, allocatable, intent(out) :: whole(:)
     type(column_stats_t) :: s
     real(wp) :: work
-    logical :: known, whole
+    logical :: known, at_whole
     integer :: i, c, n
-    line = override_cells(table, 2)
-    n = table%tallied_rows
-    line = line//int_str(n)
-    if (allocated(table%void_flags)) line = line//","//int_str(table%void_rows)
-    if (table%input_column > 0) line = line//","//cell_number(table%first_at, .false.)// &
-      ","//cell_number(table%last_at, .false.)
+    n = 1
+    if (allocated(table%void_flags)) n = n + 1
+    if (table%input_column > 0) n = n + 2
+    do c = 1, size(table%columns)
+      if (summarized(table, c, kinematics)) n = n + 5
+    end do
+    call drive_work(table, work, known)
+    if (known) n = n + 1
+    if (allocated(table%dynamics)) n = n + size(table%dynamics)
+    allocate (values(n), whole(n))
+    n = 0
+    call add(values, whole, n, real(table%tallied_rows, wp), .true.)
+    if (allocated(table%void_flags)) call add(values, whole, n, real(table%void_rows, wp), .true.)
+    if (table%input_column > 0) then
+      call add(values, whole, n, table%first_at, .false.)
+      call add(values, whole, n, table%last_at, .false.)
+    end if
+    at_whole = table%input_column == 0
     do c = 1, size(table%columns)
       if (.not. summarized(table, c, kinematics)) cycle
       s = column_stats(table, c)
-      whole = table%is_whole(c)
-      line = line//","//cell_number(s%max, whole)//","//at_text(s%max_row, s%max_at)//","// &
-        cell_number(s%min, whole)//","//at_text(s%min_row, s%min_at)//","//cell_number(s%mean, .false.)
+      call add(values, whole, n, s%max, table%is_whole(c))
+      call add(values, whole, n, at_value(s%max_row, s%max_at), at_whole)
+      call add(values, whole, n, s%min, table%is_whole(c))
+      call add(values, whole, n, at_value(s%min_row, s%min_at), at_whole)
+      call add(values, whole, n, s%mean, .false.)
     end do
-    call drive_work(table, work, known)
-    if (known) line = line//","//cell_number(work, .false.)
+    if (known) call add(values, whole, n, work, .false.)
     if (allocated(table%dynamics)) then
       do i = 1, size(table%dynamics)
-        line = line//","//cell_number(table%dynamics(i)%values(1), .false.)
+        call add(values, whole, n, table%dynamics(i)%values(1), .false.)
       end do
     end if
   contains
-    pure function at_text(k, x) result(t)
+    !> values(n + 1) = x, whole(n + 1) = is_whole; n advanced.
+    pure subroutine add(values, whole, n, x, is_whole)
+      real(wp), intent(inout) :: values(:)
+      logical, intent(inout) :: whole(:)
+      integer, intent(inout) :: n
+      real(wp), intent(in) :: x
+      logical, intent(in) :: is_whole
+      n = n + 1
+      values(n) = x
+      whole(n) = is_whole
+    end subroutine add
+    !> Where an extreme is: the input coordinate, or the row number without one.
+    pure real(wp) function at_value(k, x)
       integer, intent(in) :: k
       real(wp), intent(in) :: x
-      character(len=:), allocatable :: t
       if (table%input_column > 0) then
-        t = cell_number(x, .false.)
+        at_value = x
       else
-        t = int_str(k)
+        at_value = real(k, wp)
       end if
-    end function at_text
-  end function summary_row
+    end function at_value
+  end subroutine summary_values
 
   !> The CSV cells of the run's overrides (NAME=VALUE), each followed by a comma: their
   !> names (part 1, the header) or their values (part 2, the row).

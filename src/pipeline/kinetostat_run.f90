@@ -13,6 +13,7 @@ module kinetostat_run
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_csv_writer, only: write_csv
   use kinetostat_json_writer, only: write_json
+  use kinetostat_npy_writer, only: write_npy
   use kinetostat_svg_writer, only: write_svg
   use kinetostat_svg_mechanism, only: write_svg_mechanism
   use kinetostat_sketch, only: sketch_t
@@ -33,7 +34,7 @@ module kinetostat_run
   private
   public :: run_options_t, run_mechanism, guard_finite, progress_i, block_rows
   public :: format_table, format_csv, format_json, format_svg, format_summary, format_plans, format_dxf, &
-    format_from_name, format_names
+    format_npy, format_from_name, format_names
 
   !> Output format: the legacy fixed-format table.
   integer, parameter :: format_table = 1
@@ -49,11 +50,13 @@ module kinetostat_run
   integer, parameter :: format_plans = 6
   !> Output format: the mechanism of step --at K as an ASCII DXF drawing.
   integer, parameter :: format_dxf = 7
+  !> Output format: the CSV's columns as a NumPy .npy file (binary).
+  integer, parameter :: format_npy = 8
   !> The formats' names as --format takes them, in the order of their codes.
   character(*), parameter :: format_keys(*) = [character(len=7) :: "table", "csv", "json", "svg", "summary", &
-    "plans", "dxf"]
+    "plans", "dxf", "npy"]
   !> Names of the formats, for messages and --help.
-  character(*), parameter :: format_names = "table, csv, json, svg, summary, plans, dxf"
+  character(*), parameter :: format_names = "table, csv, json, svg, summary, plans, dxf, npy"
 
   !> Steps solved and written at a time: a run holds the rows of one block (and at most the
   !> spool's bound of output text), whatever its number of steps.
@@ -232,6 +235,9 @@ contains
         else
           call write_csv(table, out)
         end if
+      case (format_npy)
+        call write_npy(table, out, error)
+        if (allocated(error)) return
       case (format_summary)
         if (table%last_block()) then
           call out%put(summary_header(table, options%kinematics))
