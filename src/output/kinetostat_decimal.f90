@@ -340,7 +340,10 @@ contains
     logical, intent(out), optional :: fits
     character(len=scratch_len) :: body, wide
     integer :: n, status, first
+    logical :: done
     if (present(fits)) then
+      call fixed_fits(x, d, text, fits, done)
+      if (done) return
       call fixed_body(x, d, scratch_len, body, n, status)
       if (status == body_fallback) then
         call write_f(x, d, wide)
@@ -362,6 +365,46 @@ contains
       call write_f(x, d, text)
     end select
   end subroutine edit_f
+
+  !> edit_f's form with `fits` in one pass where |x| * 10**d rounds below 2**63 (every
+  !> table field): the digits go straight into `text` from its right end (`done`); outside
+  !> that range `done` is false and nothing is written.
+  pure subroutine fixed_fits(x, d, text, fits, done)
+    real(wp), intent(in) :: x
+    integer, intent(in) :: d
+    character(*), intent(inout) :: text
+    logical, intent(out) :: fits, done
+    integer(int64) :: m, q, unit, int_part
+    integer(i16) :: q16
+    integer :: ex, n, ni, p, w
+    logical :: negative, ok
+    done = .false.
+    fits = .false.
+    if (d < 0 .or. d > 18) return
+    call split(x, negative, m, ex)
+    call scaled_round(m, ex, d, q16, ok)
+    if (.not. ok .or. q16 > int(huge(1_int64), i16)) return
+    done = .true.
+    q = int(q16, int64)
+    unit = int(pow10(d), int64)
+    int_part = q / unit
+    ni = digit_count(int_part)             ! the leading zero of |x| < 1 too: there is room
+    n = ni + 1 + d
+    if (negative) n = n + 1
+    w = len(text)
+    fits = n < w
+    if (.not. fits) return
+    text(1:w - n) = ""
+    p = w - n
+    if (negative) then
+      p = p + 1
+      text(p:p) = "-"
+    end if
+    call put_digits(int_part, ni, text(p + 1:p + ni))
+    p = p + ni + 1
+    text(p:p) = "."
+    if (d > 0) call put_digits(q - int_part * unit, d, text(p + 1:p + d))
+  end subroutine fixed_fits
 
   !> text = x written by the compiler's WRITE with Fw.d, w = len(text) (outside the fast path).
   pure subroutine write_f(x, d, text)

@@ -31,6 +31,11 @@ module kinetostat_format
   integer, parameter :: cell_room = 24
   !> Width of the scratch buffer for one field.
   integer, parameter :: scratch_len = 64
+  !> Index of the implied DO loop below.
+  integer, private :: i_
+  !> 0.5 * 10**(-d), d = 0..18: half a unit of the last decimal of a fixed-point field (the
+  !> same numbers as the expression: 10**d is exact, its reciprocal correctly rounded).
+  real(wp), parameter :: half_units(0:18) = [(0.5_wp / 10.0_wp**i_, i_ = 0, 18)]
 
 contains
 
@@ -64,7 +69,11 @@ contains
     fits = .false.
     ! a value that rounds to zero at these decimals is printed as 0.00, never -0.00
     y = x + 0.0_wp
-    if (abs(x) < 0.5_wp * 10.0_wp**(-decimals)) y = 0.0_wp
+    if (decimals >= 0 .and. decimals <= ubound(half_units, 1)) then
+      if (abs(x) < half_units(decimals)) y = 0.0_wp
+    else if (abs(x) < 0.5_wp * 10.0_wp**(-decimals)) then
+      y = 0.0_wp
+    end if
     if (abs(x) < 1.0e30_wp) call edit_f(y, decimals, text, fits)
     if (.not. fits) call exponent_text(x, text)
   end subroutine fixed_text
