@@ -191,7 +191,7 @@ contains
     real(wp) :: t0, t, cells, bytes
     integer :: i, w, c, reps, shown
     character(len=5), parameter :: writer_names(3) = [character(len=5) :: "csv", "json", "table"]
-    write (output_unit, '(a,i0,a)') "text output, one thread, ", block_rows, &
+    write (output_unit, '(a,i0,a)') "text output alone, one thread, ", block_rows, &
       " steps with the kinematics columns (cells: rows x CSV columns), per CPU second:"
     do i = 1, size(which)
       if (.not. wanted(which(i))) cycle
@@ -231,8 +231,14 @@ contains
           if (t > 0.5_wp) exit
         end do
         cells = real(reps, wp) * table%row_count() * shown
-        write (output_unit, '(2x,a8,i5,a,a6,es10.2,a,f7.1,a)') cases(which(i))%kind, shown, " columns  ", &
-          writer_names(w), cells / t, " cells/s ", bytes / t / 1.0e6_wp, " MB/s"
+        if (w < 3) then
+          write (output_unit, '(2x,a8,i5,a,a6,es10.2,a,es10.2,a,f7.1,a)') cases(which(i))%kind, shown, " columns  ", &
+            writer_names(w), cells / t, " cells/s", real(reps, wp) * table%row_count() / t, " rows/s", &
+            bytes / t / 1.0e6_wp, " MB/s"
+        else
+          write (output_unit, '(2x,a8,i5,a,a6,a18,es10.2,a,f7.1,a)') cases(which(i))%kind, shown, " columns  ", &
+            writer_names(w), "", real(reps, wp) * table%row_count() / t, " rows/s", bytes / t / 1.0e6_wp, " MB/s"
+        end if
       end do
       deallocate (mech)
     end do

@@ -368,42 +368,56 @@ contains
 
   !> edit_f's form with `fits` in one pass where |x| * 10**d rounds below 2**63 (every
   !> table field): the digits go straight into `text` from its right end (`done`); outside
-  !> that range `done` is false and nothing is written.
+  !> that range `done` is false and nothing is written. Up to 4 decimals (every table field)
+  !> the product m * 5**d fits 64 bits and is rounded there; no division by a variable.
   pure subroutine fixed_fits(x, d, text, fits, done)
     real(wp), intent(in) :: x
     integer, intent(in) :: d
     character(*), intent(inout) :: text
     logical, intent(out) :: fits, done
-    integer(int64) :: m, q, unit, int_part
+    !> Decimals whose m * 5**d fits 64 bits (5**4 < 2**10).
+    integer, parameter :: short_decimals = 4
+    character(len=24) :: digits
+    integer(int64) :: m, q, p, rem, half
     integer(i16) :: q16
-    integer :: ex, n, ni, p, w
+    integer :: ex, n, ni, nd, at, w, sh
     logical :: negative, ok
     done = .false.
     fits = .false.
     if (d < 0 .or. d > 18) return
     call split(x, negative, m, ex)
-    call scaled_round(m, ex, d, q16, ok)
-    if (.not. ok .or. q16 > int(huge(1_int64), i16)) return
+    sh = ex + d
+    if (d <= short_decimals .and. sh < 0 .and. sh > -63) then
+      p = m * int(pow5(d), int64)
+      q = shiftr(p, -sh)
+      rem = p - shiftl(q, -sh)
+      half = shiftl(1_int64, -sh - 1)
+      if (rem > half .or. (rem == half .and. btest(q, 0))) q = q + 1
+    else
+      call scaled_round(m, ex, d, q16, ok)
+      if (.not. ok .or. q16 > int(huge(1_int64), i16)) return
+      q = int(q16, int64)
+    end if
     done = .true.
-    q = int(q16, int64)
-    unit = int(pow10(d), int64)
-    int_part = q / unit
-    ni = digit_count(int_part)             ! the leading zero of |x| < 1 too: there is room
-    n = ni + 1 + d
+    ! the digits of q, at least d + 1 of them (the leading zero of |x| < 1: there is room)
+    nd = max(digit_count(q), d + 1)
+    ni = nd - d
+    n = nd + 1
     if (negative) n = n + 1
     w = len(text)
     fits = n < w
     if (.not. fits) return
+    call put_digits(q, nd, digits(1:nd))
     text(1:w - n) = ""
-    p = w - n
+    at = w - n
     if (negative) then
-      p = p + 1
-      text(p:p) = "-"
+      at = at + 1
+      text(at:at) = "-"
     end if
-    call put_digits(int_part, ni, text(p + 1:p + ni))
-    p = p + ni + 1
-    text(p:p) = "."
-    if (d > 0) call put_digits(q - int_part * unit, d, text(p + 1:p + d))
+    text(at + 1:at + ni) = digits(1:ni)
+    at = at + ni + 1
+    text(at:at) = "."
+    text(at + 1:at + d) = digits(ni + 1:nd)
   end subroutine fixed_fits
 
   !> text = x written by the compiler's WRITE with Fw.d, w = len(text) (outside the fast path).
