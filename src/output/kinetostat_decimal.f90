@@ -377,10 +377,9 @@ contains
     logical, intent(out) :: fits, done
     !> Decimals whose m * 5**d fits 64 bits (5**4 < 2**10).
     integer, parameter :: short_decimals = 4
-    character(len=24) :: digits
     integer(int64) :: m, q, p, rem, half
     integer(i16) :: q16
-    integer :: ex, n, ni, nd, at, w, sh
+    integer :: ex, n, nd, at, w, sh, i
     logical :: negative, ok
     done = .false.
     fits = .false.
@@ -401,23 +400,29 @@ contains
     done = .true.
     ! the digits of q, at least d + 1 of them (the leading zero of |x| < 1: there is room)
     nd = max(digit_count(q), d + 1)
-    ni = nd - d
     n = nd + 1
     if (negative) n = n + 1
     w = len(text)
     fits = n < w
     if (.not. fits) return
-    call put_digits(q, nd, digits(1:nd))
-    text(1:w - n) = ""
-    at = w - n
+    ! from the right end, a character at a time (no library call for a few bytes)
+    at = w
+    do i = 1, nd
+      if (i == d + 1) then
+        text(at:at) = "."
+        at = at - 1
+      end if
+      text(at:at) = achar(48 + int(mod(q, 10_int64)))
+      q = q / 10_int64
+      at = at - 1
+    end do
     if (negative) then
-      at = at + 1
       text(at:at) = "-"
+      at = at - 1
     end if
-    text(at + 1:at + ni) = digits(1:ni)
-    at = at + ni + 1
-    text(at:at) = "."
-    text(at + 1:at + d) = digits(ni + 1:nd)
+    do i = 1, at
+      text(i:i) = " "
+    end do
   end subroutine fixed_fits
 
   !> text = x written by the compiler's WRITE with Fw.d, w = len(text) (outside the fast path).

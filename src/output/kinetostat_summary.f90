@@ -3,6 +3,7 @@
 !> the input angle; the work of the driving moment (or force) over the run; and the warning
 !> when the step is too coarse to catch a force peak next to a load that switches on or off.
 module kinetostat_summary
+  !$ use omp_lib, only: omp_get_max_threads
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use kinetostat_kinds, only: wp, deg_to_rad
   use kinetostat_text, only: lower
@@ -68,15 +69,17 @@ contains
   !> pipeline calls this for every block) to the run's tallies: per column its extremes
   !> and the row and input coordinate of each, its sum and trapezoid sum; the largest
   !> input step; the driver's work; the input coordinate next to the load edges. The sums
-  !> run in row order, so they are the same whatever the blocks. The columns are tallied
-  !> one after the other over a tile of rows (each on its own: the same sums as row by row).
-  pure subroutine tally_rows(table)
+  !> run in row order, so they are the same whatever the blocks and threads. The columns
+  !> are tallied each on its own (the same sums as row by row), in parallel with threads.
+  subroutine tally_rows(table)
     !> The results (the tallies are updated).
     type(step_table_t), intent(inout) :: table
     !> Rows tallied column by column at a time.
     integer, parameter :: tile_rows = 256
-    integer :: k, c, row, d, nc, n, k1, k2
-    real(wp) :: x, coordinate, last_d, previous_at, term
+    !> Fewest rows worth a thread.
+    integer, parameter :: min_rows_per_thread = 1024
+    integer :: k, c, row, d, nc, n, k1, k2, part, parts
+    real(wp) :: x, coordinate, last_d, previous_at, before, term
     real(wp), allocatable :: at(:)
     logical, allocatable :: void(:)
     logical :: work_known, work_in_rad
@@ -140,15 +143,23 @@ contains
       table%last_coordinate = coordinate
       table%tallied_rows = row
     end do
-    ! a tile of rows at a time, all columns over it (the tile stays in the cache)
-    do k1 = 1, n, tile_rows
-      k2 = min(n, k1 + tile_rows - 1)
-      if (k1 > 1) previous_at = at(k1 - 1)
-      do c = 1, nc
-        call tally_column(table%tally(c), table%rows(c, k1:k2), at(k1:k2), void(k1:k2), table%columns(c)%voidable, &
-                          table%row_offset + k1 - 1, previous_at)
+    ! the columns in `parts` contiguous shares (one per thread with OpenMP), each a tile of
+    ! rows at a time, all its columns over the tile (the tile stays in the cache)
+    parts = 1
+    !$ parts = max(1, min(omp_get_max_threads(), nc, n / min_rows_per_thread))
+    !$omp parallel do schedule(static) num_threads(parts) private(c, k1, k2, before) if (parts > 1)
+    do part = 1, parts
+      before = previous_at
+      do k1 = 1, n, tile_rows
+        k2 = min(n, k1 + tile_rows - 1)
+        if (k1 > 1) before = at(k1 - 1)
+        do c = (part - 1) * nc / parts + 1, part * nc / parts
+          call tally_column(table%tally(c), table%rows(c, k1:k2), at(k1:k2), void(k1:k2), table%columns(c)%voidable, &
+                            table%row_offset + k1 - 1, before)
+        end do
       end do
     end do
+    !$omp end parallel do
   contains
     !> Whether a load switches between this row and the one before or after it.
     pure logical function near_load_edge(r)
