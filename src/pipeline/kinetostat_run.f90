@@ -328,12 +328,14 @@ contains
       end do
     end subroutine start_output
 
-    !> The rows' text so far to the spool (when over its bound), called by the writers as
-    !> the rows are formatted in parallel; a failure is kept for run_block.
+    !> The rows' text so far to the spool, called by the writers after every part of the
+    !> rows formatted in parallel: over the spool's bound, or any text once the spool has its
+    !> file (so a part is written while the next are formatted); a failure is kept for
+    !> run_block.
     subroutine to_spool(text)
       type(text_buffer_t), intent(inout) :: text
       if (allocated(spool_error)) return
-      call spool%drain(text, spool_error)
+      call spool%drain(text, spool_error, force=.true.)
     end subroutine to_spool
 
     !> Between parts of the head: the text so far to the spool (when over its bound).
