@@ -5,7 +5,7 @@
 !> For every stepped mechanism (a bundled deck scaled in memory to 10^4, 10^5 and 10^6 steps,
 !> up to MAX_STEPS) it prints the solve rates (kernel and step table, steps/s; "kernel" without
 !> the kinematics columns, as a plain run, "solve" with them), the end-to-end
-!> rate of CSV, the legacy table and JSON written to a file (deck text -> output file, the
+!> rate of CSV, the legacy table, JSON and npy written to a file (deck text -> output file, the
 !> pipeline of `kinetostat DECK -o FILE`), the peak resident memory of each end-to-end run
 !> (VmHWM of /proc/self/status after resetting it through /proc/self/clear_refs), and every
 !> rate as a fraction of the physical-limit estimate of one dedicated step on one core.
@@ -32,7 +32,7 @@ program bench
   use kinetostat_registry, only: create_mechanism
   use kinetostat_step_table, only: step_table_t
   use kinetostat_text_buffer, only: text_buffer_t
-  use kinetostat_run, only: run_options_t, run_mechanism, format_csv, format_table, format_json, block_rows
+  use kinetostat_run, only: run_options_t, run_mechanism, format_csv, format_table, format_json, format_npy, block_rows
   use kinetostat_spool, only: spool_t
   use kinetostat_decimal, only: put_es_compact, edit_f
   use kinetostat_csv_writer, only: write_csv
@@ -46,14 +46,14 @@ program bench
   real(wp), parameter :: limit_rate = 2.0e6_wp
   !> Step counts of the runs.
   integer, parameter :: step_counts(*) = [10000, 100000, 1000000]
-  !> Row format: kind, steps, kernel and solve rates, three end-to-end rates, three peaks, ratios.
-  character(*), parameter :: row_fmt = '(a8,i9,5es10.2,3f8.1,5f7.3)'
+  !> Row format: kind, steps, kernel and solve rates, four end-to-end rates, four peaks, ratios.
+  character(*), parameter :: row_fmt = '(a8,i9,6es10.2,4f8.1,6f7.3)'
   !> Header lines of the table.
-  character(*), parameter :: header(*) = [character(len=128) :: &
-    "                  steps per CPU second (kernel, solve: see below)           peak MiB" // &
-    "                     ratio to limit", &
-    "    kind    steps    kernel     solve       csv     table      json     csv   table    json" // &
-    " kernel  solve    csv  table   json"]
+  character(*), parameter :: header(*) = [character(len=160) :: &
+    "                  steps per CPU second (kernel, solve: see below)                     peak MiB" // &
+    "                             ratio to limit", &
+    "    kind    steps    kernel     solve       csv     table      json       npy     csv   table    json     npy" // &
+    " kernel  solve    csv  table   json    npy"]
 
   interface
     !> glibc: give the heap's free memory back to the system (so that a peak is the run's own).
@@ -253,13 +253,13 @@ contains
     !> Output file of the end-to-end runs.
     character(*), intent(in) :: path
     character(len=:), allocatable :: text
-    real(wp) :: kernel_rate, solve_rate, rates(3), peaks(3)
-    integer, parameter :: formats(3) = [format_csv, format_table, format_json]
+    integer, parameter :: formats(*) = [format_csv, format_table, format_json, format_npy]
+    real(wp) :: kernel_rate, solve_rate, rates(size(formats)), peaks(size(formats))
     integer :: f
     text = scaled_deck(c, n)
     kernel_rate = n / solve_seconds(c, text, .false.)
     solve_rate = n / solve_seconds(c, text, .true.)
-    do f = 1, 3
+    do f = 1, size(formats)
       call reset_peak()
       rates(f) = n / end_to_end_seconds(c, text, formats(f), path)
       peaks(f) = peak_mib()
