@@ -52,8 +52,8 @@ module kinetostat_cli
     "kinetostat - kinetostatic force analysis of planar mechanisms", &
     "", &
     "  kinetostat DECK [--set NAME=VALUE]... [-o FILE]", &
-    "                  [--format table|csv|json|svg|summary|plans|dxf|npy] [--pairs LIST] [--at K]", &
-    "                  [--plans] [--lang en|ru] [--kinematics] [--shaking]", &
+    "                  [--format table|csv|json|svg|summary|plans|dxf|npy] [--pairs LIST]", &
+    "                  [--at K] [--plans] [--lang en|ru] [--kinematics] [--shaking]", &
     "                  [--max-deck-size BYTES] [--allow-selfcheck-failure] [--quiet] [--strict]", &
     "  kinetostat sweep DECK --vary NAME=FROM:TO:COUNT... [--set NAME=VALUE]... [--part K/N]", &
     "                  [--jobs N] [--format summary|npy]", &

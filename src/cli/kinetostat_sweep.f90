@@ -495,16 +495,17 @@ contains
     type(text_buffer_t), intent(inout) :: out
     !> The header and the numbers do not match (a bug).
     type(error_t), allocatable, intent(out) :: error
-    character(len=:), allocatable :: names(:)
-    integer, allocatable :: lengths(:), kept(:)
+    character(len=len(results(1)%header)) :: flat
+    integer :: ends(len(results(1)%header) + 1)
+    integer, allocatable :: kept(:)
     real(wp), allocatable :: row(:)
     real(wp) :: x
-    integer :: n_over, v, j
+    integer :: n_over, v, j, count
     logical :: numeric
-    call csv_fields(results(1)%header, names, lengths)
+    call csv_split(results(1)%header, flat, ends, count)
     n_over = size(results(1)%overrides)
-    if (size(names) /= n_over + size(results(1)%values)) then
-      call fatal_error(error, exit_input, "sweep: --format npy: "//int_str(size(names))//" summary columns but "// &
+    if (count /= n_over + size(results(1)%values)) then
+      call fatal_error(error, exit_input, "sweep: --format npy: "//int_str(count)//" summary columns but "// &
         int_str(n_over + size(results(1)%values))//" values (a bug: please report it)")
       return
     end if
@@ -517,7 +518,7 @@ contains
       if (numeric) kept = [kept, j]
     end do
     kept = [kept, [(n_over + j, j = 1, size(results(1)%values))]]
-    call out%append(npy_header(names(kept), lengths(kept), size(results)))
+    call out%append(kept_header(flat, ends, kept, size(results)))
     allocate (row(size(kept)))
     do v = 1, size(results)
       do j = 1, size(kept)
@@ -544,31 +545,28 @@ contains
     one_number = ios == 0
   end function one_number
 
-  !> The fields of a CSV line (quoted fields unquoted, "" inside them as one "), blank-padded
-  !> to the longest, with their lengths.
-  subroutine csv_fields(line, names, lengths)
+  !> The fields of a CSV line (quoted fields unquoted, "" inside them as one "): their
+  !> characters one after the other in `flat`, field i ending at ends(i) (starting after
+  !> ends(i - 1)); `count` fields.
+  pure subroutine csv_split(line, flat, ends, count)
     character(*), intent(in) :: line
-    character(len=:), allocatable, intent(out) :: names(:)
-    integer, allocatable, intent(out) :: lengths(:)
-    character(len=:), allocatable :: fields(:)
-    integer, allocatable :: field_length(:)
-    integer :: i, count
+    !> At least as long as `line`.
+    character(*), intent(out) :: flat
+    !> At least len(line) + 1 entries.
+    integer, intent(out) :: ends(:)
+    integer, intent(out) :: count
+    integer :: i, n
     logical :: quoted
-    ! at most one field more than the commas
-    count = 1
-    do i = 1, len(line)
-      if (line(i:i) == ",") count = count + 1
-    end do
-    allocate (character(len=max(1, len(line))) :: fields(count))
-    allocate (field_length(count), source=0)
-    fields = ""
-    count = 1
+    count = 0
+    n = 0
+    flat = ""
     quoted = .false.
     i = 1
     do while (i <= len(line))
-      if (quoted .and. line(i:i) == '"' .and. i < len(line)) then
+      if (line(i:i) == '"' .and. quoted .and. i < len(line)) then
         if (line(i + 1:i + 1) == '"') then
-          call put('"')
+          n = n + 1
+          flat(n:n) = '"'
           i = i + 2
           cycle
         end if
@@ -577,23 +575,43 @@ contains
         quoted = .not. quoted
       else if (line(i:i) == "," .and. .not. quoted) then
         count = count + 1
+        ends(count) = n
       else
-        call put(line(i:i))
+        n = n + 1
+        flat(n:n) = line(i:i)
       end if
       i = i + 1
     end do
-    lengths = field_length(1:count)
-    allocate (character(len=max(1, maxval(lengths))) :: names(count))
-    do i = 1, count
-      names(i) = fields(i)(1:lengths(i))
+    count = count + 1
+    ends(count) = n
+  end subroutine csv_split
+
+  !> npy_header of the fields kept(:) of a split CSV line (csv_split), `rows` records.
+  pure function kept_header(flat, ends, kept, rows) result(text)
+    character(*), intent(in) :: flat
+    integer, intent(in) :: ends(:), kept(:), rows
+    character(len=:), allocatable :: text
+    integer :: starts(size(kept)), lengths(size(kept)), j
+    do j = 1, size(kept)
+      starts(j) = 1
+      if (kept(j) > 1) starts(j) = ends(kept(j) - 1) + 1
+      lengths(j) = ends(kept(j)) - starts(j) + 1
     end do
-  contains
-    subroutine put(c)
-      character, intent(in) :: c
-      field_length(count) = field_length(count) + 1
-      fields(count)(field_length(count):field_length(count)) = c
-    end subroutine put
-  end subroutine csv_fields
+    text = named_header(flat, starts, lengths, max(1, maxval(lengths)), rows)
+  end function kept_header
+
+  !> npy_header of the names flat(starts(j):starts(j) + lengths(j) - 1).
+  pure function named_header(flat, starts, lengths, longest, rows) result(text)
+    character(*), intent(in) :: flat
+    integer, intent(in) :: starts(:), lengths(:), longest, rows
+    character(len=:), allocatable :: text
+    character(len=longest) :: names(size(starts))
+    integer :: j
+    do j = 1, size(starts)
+      names(j) = flat(starts(j):starts(j) + lengths(j) - 1)
+    end do
+    text = npy_header(names, lengths, rows)
+  end function named_header
 
   !> "kinetostat: sweep: 37/120 variants, 12 s" on stderr, overwritten in place; only
   !> after the first second.

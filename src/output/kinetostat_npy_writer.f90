@@ -40,7 +40,6 @@ contains
     type(text_buffer_t), intent(inout) :: out
     !> The rows written differ from the header's count.
     type(error_t), allocatable, intent(out) :: error
-    character(len=:), allocatable :: names(:)
     integer, allocatable :: columns(:)
     logical, allocatable :: voidable(:)
     real(wp), allocatable :: values(:)
@@ -54,13 +53,7 @@ contains
       longest = max(longest, len(table%columns(c)%name))
     end do
     n = size(columns)
-    if (table%first_block()) then
-      allocate (character(len=longest) :: names(n))
-      do c = 1, n
-        names(c) = table%columns(columns(c))%name
-      end do
-      call out%append(npy_header(names, [(len(table%columns(columns(c))%name), c = 1, n)], table%total_rows))
-    end if
+    if (table%first_block()) call out%append(table_header(table, columns, longest))
     allocate (voidable(n), values(n))
     do c = 1, n
       voidable(c) = table%columns(columns(c))%voidable
@@ -79,6 +72,23 @@ contains
         " its first block announced (a bug: please report it)")
     end if
   end subroutine write_npy
+
+  !> The header of a step table's npy file: its `columns`, the run's row count.
+  pure function table_header(table, columns, longest) result(text)
+    type(step_table_t), intent(in) :: table
+    !> The columns written.
+    integer, intent(in) :: columns(:)
+    !> Length of the longest of their names.
+    integer, intent(in) :: longest
+    character(len=:), allocatable :: text
+    character(len=longest) :: names(size(columns))
+    integer :: lengths(size(columns)), c
+    do c = 1, size(columns)
+      names(c) = table%columns(columns(c))%name
+      lengths(c) = len(table%columns(columns(c))%name)
+    end do
+    text = npy_header(names, lengths, table%total_rows)
+  end function table_header
 
   !> The header of an npy file of `rows` records of float64 fields named `names` (each of
   !> length lengths(i); trailing blanks of `names` beyond it are not part of the name).
