@@ -550,8 +550,8 @@ contains
   !> ends(i - 1)); `count` fields.
   pure subroutine csv_split(line, flat, ends, count)
     character(*), intent(in) :: line
-    !> At least as long as `line`.
-    character(*), intent(out) :: flat
+    !> The fields' characters (as long as `line`).
+    character(len=len(line)), intent(out) :: flat
     !> At least len(line) + 1 entries.
     integer, intent(out) :: ends(:)
     integer, intent(out) :: count
