@@ -435,6 +435,10 @@ contains
     logical :: known
     integer :: i, c
     line = override_cells(table, 1)
+    if (table%single_record) then
+      line = line//record_cells(table, 1)
+      return
+    end if
     line = line//"rows"
     if (allocated(table%void_flags)) line = line//",rows_left_out"
     at = "row"
@@ -468,8 +472,12 @@ contains
     real(wp), allocatable :: values(:)
     logical, allocatable :: whole(:)
     integer :: i
-    call summary_values(table, kinematics, values, whole)
     line = override_cells(table, 2)
+    if (table%single_record) then
+      line = line//record_cells(table, 2)
+      return
+    end if
+    call summary_values(table, kinematics, values, whole)
     do i = 1, size(values)
       if (i > 1) line = line//","
       line = line//cell_number(values(i), whole(i))
@@ -480,8 +488,8 @@ contains
   !> `summary_header`: rows (and rows left out), the first and last input coordinate, per
   !> summarized column its largest value and where ("_at": the input coordinate, or the row
   !> number without one), its smallest and where, its mean; the driver's work; the dynamics
-  !> figures. `whole` marks the whole numbers (counts, rows, the extremes of a flag or count
-  !> column), written as such.
+  !> figures (a one-record run: its record's values, as record_cells). `whole` marks the whole
+  !> numbers (counts, rows, the extremes of a flag or count column), written as such.
   pure subroutine summary_values(table, kinematics, values, whole)
     !> The results of one run (at least one row tallied).
     type(step_table_t), intent(in) :: table
@@ -495,6 +503,21 @@ contains
     real(wp) :: work
     logical :: known, at_whole
     integer :: i, c, n
+    if (table%single_record) then
+      ! the record's own values, as record_cells writes them
+      allocate (values(0), whole(0))
+      columns: do c = 1, size(table%columns)
+        if (.not. table%columns(c)%csv) cycle columns
+        if (allocated(table%overrides)) then
+          do i = 1, size(table%overrides)
+            if (override_part(table%overrides(i), 1) == table%columns(c)%name) cycle columns
+          end do
+        end if
+        values = [values, table%rows(c, 1)]
+        whole = [whole, table%is_whole(c)]
+      end do columns
+      return
+    end if
     n = 1
     if (allocated(table%void_flags)) n = n + 1
     if (table%input_column > 0) n = n + 2
@@ -551,6 +574,36 @@ contains
       end if
     end function at_value
   end subroutine summary_values
+
+  !> The CSV cells of a one-record run (table%single_record): its columns' names (part 1, the
+  !> header) or its values (part 2, the row), comma-separated; a column named as an override
+  !> is not repeated.
+  pure function record_cells(table, part) result(line)
+    !> The results of one run (one row).
+    type(step_table_t), intent(in) :: table
+    !> 1: names, 2: values.
+    integer, intent(in) :: part
+    character(len=:), allocatable :: line
+    integer :: c, i
+    logical :: first
+    line = ""
+    first = .true.
+    columns: do c = 1, size(table%columns)
+      if (.not. table%columns(c)%csv) cycle columns
+      if (allocated(table%overrides)) then
+        do i = 1, size(table%overrides)
+          if (override_part(table%overrides(i), 1) == table%columns(c)%name) cycle columns
+        end do
+      end if
+      if (.not. first) line = line//","
+      first = .false.
+      if (part == 1) then
+        line = line//table%columns(c)%name
+      else
+        line = line//cell_number(table%rows(c, 1), table%is_whole(c))
+      end if
+    end do columns
+  end function record_cells
 
   !> The CSV cells of the run's overrides (NAME=VALUE), each followed by a comma: their
   !> names (part 1, the header) or their values (part 2, the row).
