@@ -505,17 +505,10 @@ contains
     integer :: i, c, n
     if (table%single_record) then
       ! the record's own values, as record_cells writes them
-      allocate (values(0), whole(0))
-      columns: do c = 1, size(table%columns)
-        if (.not. table%columns(c)%csv) cycle columns
-        if (allocated(table%overrides)) then
-          do i = 1, size(table%overrides)
-            if (override_part(table%overrides(i), 1) == table%columns(c)%name) cycle columns
-          end do
-        end if
-        values = [values, table%rows(c, 1)]
-        whole = [whole, table%is_whole(c)]
-      end do columns
+      associate (cols => record_columns(table))
+        values = table%rows(cols, 1)
+        whole = [(table%is_whole(cols(i)), i = 1, size(cols))]
+      end associate
       return
     end if
     n = 1
@@ -575,6 +568,25 @@ contains
     end function at_value
   end subroutine summary_values
 
+  !> The columns of a one-record run's summary: its CSV columns but those named as an
+  !> override (the override's own column comes first).
+  pure function record_columns(table) result(cols)
+    !> The results of one run (one row).
+    type(step_table_t), intent(in) :: table
+    integer, allocatable :: cols(:)
+    integer :: c, i
+    allocate (cols(0))
+    columns: do c = 1, size(table%columns)
+      if (.not. table%columns(c)%csv) cycle columns
+      if (allocated(table%overrides)) then
+        do i = 1, size(table%overrides)
+          if (override_part(table%overrides(i), 1) == table%columns(c)%name) cycle columns
+        end do
+      end if
+      cols = [cols, c]
+    end do columns
+  end function record_columns
+
   !> The CSV cells of a one-record run (table%single_record): its columns' names (part 1, the
   !> header) or its values (part 2, the row), comma-separated; a column named as an override
   !> is not repeated.
@@ -584,25 +596,18 @@ contains
     !> 1: names, 2: values.
     integer, intent(in) :: part
     character(len=:), allocatable :: line
-    integer :: c, i
-    logical :: first
+    integer :: i
     line = ""
-    first = .true.
-    columns: do c = 1, size(table%columns)
-      if (.not. table%columns(c)%csv) cycle columns
-      if (allocated(table%overrides)) then
-        do i = 1, size(table%overrides)
-          if (override_part(table%overrides(i), 1) == table%columns(c)%name) cycle columns
-        end do
-      end if
-      if (.not. first) line = line//","
-      first = .false.
-      if (part == 1) then
-        line = line//table%columns(c)%name
-      else
-        line = line//cell_number(table%rows(c, 1), table%is_whole(c))
-      end if
-    end do columns
+    associate (cols => record_columns(table))
+      do i = 1, size(cols)
+        if (i > 1) line = line//","
+        if (part == 1) then
+          line = line//table%columns(cols(i))%name
+        else
+          line = line//cell_number(table%rows(cols(i), 1), table%is_whole(cols(i)))
+        end if
+      end do
+    end associate
   end function record_cells
 
   !> The CSV cells of the run's overrides (NAME=VALUE), each followed by a comma: their
