@@ -10,6 +10,7 @@ module kinetostat_dxf
   use kinetostat_format, only: fixed_number, short_number
   use kinetostat_text, only: int_str
   use kinetostat_text_buffer, only: text_buffer_t
+  use kinetostat_escape, only: dxf_text
   use kinetostat_drawing, only: drawing_t, point_pivot, point_com, point_plain, body_bar, body_block, body_cylinder, &
     body_rod
   implicit none
@@ -219,14 +220,14 @@ contains
     call pair(out, 40, num(r))
   end subroutine circle
 
-  !> TEXT at p of height h on `layer` (plain ASCII text is safest for R12 readers).
+  !> TEXT at p of height h on `layer`: its value through the escaper (ASCII, one line).
   pure subroutine text(out, layer, p, h, value)
     type(text_buffer_t), intent(inout) :: out
     character(*), intent(in) :: layer, value
     real(wp), intent(in) :: p(2), h
     call entity(out, "TEXT", layer, p)
     call pair(out, 40, num(h))
-    call pair(out, 1, value)
+    call pair(out, 1, dxf_text(value))
   end subroutine text
 
 end module kinetostat_dxf

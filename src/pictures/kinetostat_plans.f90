@@ -21,6 +21,7 @@ module kinetostat_plans
   use kinetostat_format, only: full_number
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_text, only: int_str
+  use kinetostat_escape, only: json_string
   implicit none
   private
   public :: plans_t, plan_vector_t, force_polygon_t, plan_equation_t, lever_friction_t, build_plans, write_plans_json
@@ -28,8 +29,9 @@ module kinetostat_plans
 
   !> A named vector (a point's image on a plan, a force of a polygon).
   type :: plan_vector_t
-    !> Name ("B", "G2", "F21").
-    character(len=16) :: name = ""
+    !> Name ("B", "G2", "F21", "a_CB^τ": up to two joint names of 16 bytes each and a
+    !> component's marks, so no name is cut).
+    character(len=48) :: name = ""
     !> Components (position frame): m/s, m/s^2 or N.
     real(wp) :: v(2) = 0.0_wp
     !> A component's kind (component_normal ... on the acceleration plan; "" otherwise).
@@ -1468,9 +1470,9 @@ contains
     integer :: i
     character(len=:), allocatable :: line
     call out%put("{")
-    call out%put('  "deck": "'//table%deck//'",')
+    call out%put('  "deck": '//json_string(table%deck)//',')
     call out%put('  "step": '//int_str(k)//',')
-    if (table%input_column > 0) call out%put('  "'//table%columns(table%input_column)%name//'": '// &
+    if (table%input_column > 0) call out%put('  '//json_string(table%columns(table%input_column)%name)//': '// &
       full_number(table%rows(table%input_column, k))//',')
     call put_vectors(out, "velocity_plan", plans%velocities, "m/s")
     call out%put('  "velocity_residual": '//full_number(plans%velocity_residual)//',')
@@ -1481,8 +1483,8 @@ contains
     call out%put('  "force_plans": [')
     do i = 1, size(plans%group_polygons)
       associate (poly => plans%group_polygons(i))
-        line = '    {"group": "'//trim(poly%link)//'", "closure": '//full_number(poly%closure)
-        if (len(poly%moment) > 0) line = line//', "moment": {"name": "'//poly%moment//'", "value": '// &
+        line = '    {"group": '//json_string(trim(poly%link))//', "closure": '//full_number(poly%closure)
+        if (len(poly%moment) > 0) line = line//', "moment": {"name": '//json_string(poly%moment)//', "value": '// &
           full_number(poly%moment_value)//'}'
         line = line//', "vectors": ['//vectors_json(poly%vectors)//"]}"
       end associate
@@ -1491,19 +1493,19 @@ contains
     call out%put("  ],")
     call out%put('  "link_force_plans": [')
     do i = 1, size(plans%polygons)
-      line = '    {"link": "'//trim(plans%polygons(i)%link)//'", "closure": '//full_number(plans%polygons(i)%closure)// &
+      line = '    {"link": '//json_string(trim(plans%polygons(i)%link))//', "closure": '//full_number(plans%polygons(i)%closure)// &
         ', "vectors": ['//vectors_json(plans%polygons(i)%vectors)//"]}"
       call put_item(out, line, i < size(plans%polygons))
     end do
     call out%put("  ],")
     if (plans%lever_known) then
-      line = '  "zhukovsky": {"driver": "'//plans%driver//'", "effort": '//full_number(plans%effort)// &
+      line = '  "zhukovsky": {"driver": '//json_string(plans%driver)//', "effort": '//full_number(plans%effort)// &
         ', "run": '//full_number(plans%run)
       if (plans%lever_flywheel) line = line//', "flywheel": {"J": '//full_number(plans%flywheel_inertia)// &
         ', "moment": '//full_number(plans%flywheel_moment)//'}'
       if (plans%lever_friction) then
-        line = line//', "friction": {"power": '//full_number(plans%friction_power)//', "rate": "'// &
-          plans%lever_rate_name//'", "share": '//full_number(plans%friction_share)//', "pairs": ['
+        line = line//', "friction": {"power": '//full_number(plans%friction_power)//', "rate": '// &
+          json_string(plans%lever_rate_name)//', "share": '//full_number(plans%friction_share)//', "pairs": ['
         do i = 1, size(plans%friction)
           if (i > 1) line = line//', '
           line = line//friction_json(plans%friction(i))
@@ -1512,8 +1514,8 @@ contains
       end if
       call out%put(line//'}')
     else
-      call out%put('  "zhukovsky": {"driver": "'//plans%driver//'", "effort": null, "run": '//full_number(plans%run)// &
-        ', "note": "'//plans%lever_note//'"}')
+      call out%put('  "zhukovsky": {"driver": '//json_string(plans%driver)//', "effort": null, "run": '// &
+        full_number(plans%run)//', "note": '//json_string(plans%lever_note)//'}')
     end if
     call out%put("}")
   end subroutine write_plans_json
@@ -1524,7 +1526,8 @@ contains
   pure function friction_json(pf) result(text)
     type(lever_friction_t), intent(in) :: pf
     character(len=:), allocatable :: text
-    text = '{"pair": "'//trim(pf%pair)//'", "on": "'//trim(pf%on)//'", "from": "'//trim(pf%from)//'", '
+    text = '{"pair": '//json_string(trim(pf%pair))//', "on": '//json_string(trim(pf%on))//', "from": '// &
+      json_string(trim(pf%from))//', '
     if (pf%prismatic) then
       text = text//'"force": '//xy(pf%force)//', "at": '//xy(pf%at)//', "relative": '//xy(pf%relative)
     else
@@ -1567,8 +1570,8 @@ contains
     call out%put('  "'//key//'": [')
     do i = 1, size(equations)
       associate (eq => equations(i))
-        line = '    {"point": "'//trim(eq%point)//'", "link": "'//trim(eq%link)//'", "from": "'//trim(eq%from)// &
-          '", "slider": "'//trim(eq%slider)//'", '
+        line = '    {"point": '//json_string(trim(eq%point))//', "link": '//json_string(trim(eq%link))//', "from": '// &
+          json_string(trim(eq%from))//', "slider": '//json_string(trim(eq%slider))//', '
         if (mark_reverse .and. eq%reverse) line = line//'"reverse": true, '
         line = line//'"vectors": ['//vectors_json(eq%vectors)//"]}"
       end associate
@@ -1581,8 +1584,8 @@ contains
   pure function vector_json(v) result(text)
     type(plan_vector_t), intent(in) :: v
     character(len=:), allocatable :: text
-    text = '{"name": "'//trim(v%name)//'", '
-    if (len_trim(v%kind) > 0) text = text//'"kind": "'//v%kind//'", '
+    text = '{"name": '//json_string(trim(v%name))//', '
+    if (len_trim(v%kind) > 0) text = text//'"kind": '//json_string(v%kind)//', '
     text = text//'"x": '//full_number(v%v(1))//', "y": '//full_number(v%v(2))//"}"
   end function vector_json
 

@@ -17,7 +17,7 @@ module kinetostat_svg_writer
   use kinetostat_step_table, only: step_table_t, col_force, col_force_angle, col_moment
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_svg, only: svg_open, svg_close, svg_line, svg_path, svg_polyline_d, svg_circle, svg_rect, &
-    svg_text, svg_arrow, coord, palette_colour
+    svg_text, svg_arrow, coord, palette_colour, xml_escape
   use kinetostat_label_place, only: label_boxes_t, title_attributes, anchor_start, anchor_end
   use kinetostat_labels, only: word => label, unit_word => unit_symbol
   use kinetostat_title_block, only: put_title_block, title_block_height
@@ -493,7 +493,7 @@ contains
     px = ox + scale * fx
     py = oy - scale * fy
     if (thinned) then
-      call out%put(svg_path(svg_polyline_d(px, py), 'class="hodograph" data-force="'//p%name// &
+      call out%put(svg_path(svg_polyline_d(px, py), 'class="hodograph" data-force="'//xml_escape(p%name)// &
         '" data-origin="'//coord(ox)//" "//coord(oy)//'" data-scale="'//full_number(scale)// &
         '" data-steps="'//int_str(n)//'" data-thinned="'//int_str(size(keep))//'"'))
       call out%put(svg_text(x0 + w - 2.0_wp, y0 + h - 8.0_wp, int_str(size(keep))//" of "//int_str(n)// &
@@ -504,7 +504,7 @@ contains
     do k = 1, n
       call out%put(svg_line(ox, oy, px(k), py(k), 'class="ray"'))
     end do
-    call out%put(svg_path(svg_polyline_d(px, py), 'class="hodograph" data-force="'//p%name// &
+    call out%put(svg_path(svg_polyline_d(px, py), 'class="hodograph" data-force="'//xml_escape(p%name)// &
       '" data-origin="'//coord(ox)//" "//coord(oy)//'" data-scale="'//full_number(scale)//'"'))
     do k = 1, n
       call out%put(svg_circle(px(k), py(k), 0.45_wp, 'class="point"'))
