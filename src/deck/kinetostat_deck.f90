@@ -1480,9 +1480,9 @@ contains
   !> unclosed '(' : "&assur dyad("). From the line opening the group to its closing '/'
   !> (or '&end', '$'), outside quotes and '!' comments: every '(' closes on its line, holds
   !> only subscript or number characters and does not nest; no ')' without '('; a '='
-  !> follows a variable name ("name", "name(2)", "a(1)%b"); a quote opened is closed; a
-  !> quoted text other than the title has at most text_chars characters (so that no text
-  !> variable is cut by the READ). After the closing '/' only blanks and '!' comments
+  !> follows a variable name ("name", "name(2)", "a(1)%b"); a quote opened is closed on its
+  !> line; a quoted text other than the title has at most text_chars characters (so that no
+  !> text variable is cut by the READ). After the closing '/' only blanks and '!' comments
   !> (the READ would ignore the rest: "delta = 1/25, j_rotor = 0.6" would be delta = 1 and
   !> no j_rotor); a '/' between two numbers is taken for a fraction ("a fraction? write
   !> 0.04"). The error names the deck, the line, the group, the variable (the name before
@@ -1583,13 +1583,13 @@ contains
           "unclosed '(' (a subscript like dyad(2) or a value like (1.0, 2.0) must close on its line)", error)
         return
       end if
-      ! a text that goes on to the next line counts its line end as a character
-      if (quote /= " ") text_length = text_length + 1
+      ! a text ends on its line (the READ would take the next line's padding into it)
+      if (quote /= " ") then
+        call syntax_failure(source, group, quote_line, "", 0, name, &
+          "unclosed quote "//quote//" (a text must end on its line with the quote it starts with)", error)
+        return
+      end if
     end do
-    if (quote /= " ") then
-      call syntax_failure(source, group, quote_line, "", 0, name, &
-        "unclosed quote "//quote//" (a text must end with the quote it starts with)", error)
-    end if
   contains
     !> The group ends at line(at:) of line k ('/', or '&end', '$end'): a '/' between two
     !> numbers is a fraction; after the end, blanks and '!' comments only.
