@@ -11,6 +11,7 @@ module kinetostat_diff
   use kinetostat_error, only: error_t, fatal_error, exit_input
   use kinetostat_text, only: int_str, lower, clipped, starts_with
   use kinetostat_text_buffer, only: text_buffer_t
+  use kinetostat_escape, only: table_text
   use kinetostat_step_table, only: column_t, col_input_angle, col_force_angle
   use kinetostat_noise, only: noise_rel
   use kinetostat_labels, only: label, lang_en, lang_ru
@@ -276,7 +277,8 @@ contains
       if (one_side) tally%compared = tally%compared + 1
     end if
     tally%differing = tally%differing + 1
-    if (tally%differing <= tally%max_report) call report%put(line)
+    ! (a line of the report: the files' texts as the messages show them, one line each)
+    if (tally%differing <= tally%max_report) call report%put(table_text(line))
   end subroutine note
 
   !> Compare cell ia of A with cell ib of B (the same key).
