@@ -63,14 +63,14 @@ contains
     character(len=:), allocatable :: shown
     integer :: i, at
     shown = printable(s)
-    if (scan(shown, "&<>""'"//achar(239)) == 0) then
+    if (scan(shown, "&<>""'"//char(239)) == 0) then
       t = shown
       return
     end if
     ! U+FFFE and U+FFFF are valid UTF-8 but no XML character: shown as their bytes
     do
-      i = index(shown, achar(239)//achar(191)//achar(190))
-      if (i == 0) i = index(shown, achar(239)//achar(191)//achar(191))
+      i = index(shown, char(239)//char(191)//char(190))
+      if (i == 0) i = index(shown, char(239)//char(191)//char(191))
       if (i == 0) exit
       shown = shown(:i - 1)//"\xEF\xBF\x"//hex_byte(iachar(shown(i + 2:i + 2)))//shown(i + 3:)
     end do

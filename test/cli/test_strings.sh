@@ -177,6 +177,14 @@ run_ks data/assur_fourbar.nml --set "crank_joint='ОпораОпора'"
 sed "s/'A'/'Опора'/g" data/linkage_fourbar.nml >"$strings_dir/joint.nml"
 run_ks "$strings_dir/joint.nml" --format csv --kinematics
 [ "$rc" -eq 0 ] && head -1 "$out" | grep -q ',x_Опора,y_Опора' && pass || fail strings-joint-linkage "exit $rc: $(head -c 300 "$err")"
+cp "$out" "$strings_dir/joint.csv"
+# kinetostat diff reads a CSV whose columns carry a Cyrillic name
+sed '3s/,\([0-9]\)/,9\1/' "$strings_dir/joint.csv" >"$strings_dir/joint_changed.csv"
+run_ks diff "$strings_dir/joint.csv" "$strings_dir/joint.csv"
+rc_same=$rc
+run_ks diff "$strings_dir/joint.csv" "$strings_dir/joint_changed.csv"
+[ "$rc_same" -eq 0 ] && [ "$rc" -eq 1 ] && grep -q '^step 2, column ' "$out" && pass \
+  || fail strings-joint-diff "exit $rc_same and $rc: $(head -3 "$out") $(cat "$err")"
 run_ks "$strings_dir/joint.nml" --format dxf --at 3
 [ "$rc" -eq 0 ] && grep -qx '\\U+041E\\U+043F\\U+043E\\U+0440\\U+0430' "$out" && check_output strings-joint-dxf dxf "$out" \
   || fail strings-joint-dxf "exit $rc: $(grep -m2 'U+' "$out") $(head -c 200 "$err")"
