@@ -143,6 +143,8 @@ python3 -c 'import json,sys; t=json.load(open(sys.argv[1], encoding="utf-8"))["d
 run_ks "$strings_dir/cp1251.nml" --format svg
 grep -q ">DECK: .*cp1251.nml   $ru_title<\|$ru_title" "$out" && check_output strings-cp1251-svg xml "$out" \
   || fail strings-cp1251-svg "the title is not on the sheet"
+"$KINETOSTAT" - <"$strings_dir/cp1251.nml" >"$strings_dir/stdin.table" 2>"$strings_dir/stdin.err"
+grep -qx " TITLE: $ru_title" "$strings_dir/stdin.table" && pass || fail strings-cp1251-stdin "$(cat "$strings_dir/stdin.err")"
 # a byte 0xFF (CP1251's я) in a title is a letter: decoded
 with_title data/assur_fourbar.nml $'a\xffb' "$strings_dir/ff_title.nml"
 run_ks "$strings_dir/ff_title.nml"
