@@ -1573,7 +1573,7 @@ contains
             return
           end if
         else if (c == "/" .or. c == "$" .or. c == "&") then
-          call check_after_group(k, i)
+          call check_after_group(source, group, line, k, i, name, error)
           return
         end if
         i = i + 1
@@ -1590,56 +1590,67 @@ contains
         return
       end if
     end do
-  contains
-    !> The group ends at line(at:) of line k ('/', or '&end', '$end'): a '/' between two
-    !> numbers is a fraction; after the end, blanks and '!' comments only.
-    subroutine check_after_group(k, at)
-      integer, intent(in) :: k, at
-      character(len=:), allocatable :: rest
-      integer :: last, j, e
-      last = at
-      if (line(at:at) /= "/") then
-        do while (last < len(line))
-          if (verify(line(last + 1:last + 1), "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ") /= 0) exit
-          last = last + 1
-        end do
-      else if (at > 1 .and. at < len(line)) then
-        ! a number written just before and just after the '/'
-        j = at - 1
-        do while (j >= 1)
-          if (index("0123456789.eEdD+-", line(j:j)) == 0) exit
-          j = j - 1
-        end do
-        e = at + 1
-        do while (e <= len(line))
-          if (index("0123456789.eEdD+-", line(e:e)) == 0) exit
-          e = e + 1
-        end do
-        if (j < at - 1 .and. e > at + 1) then
-          if (is_number_text(line(j + 1:at - 1)) .and. is_number_text(line(at + 1:e - 1))) then
-            call syntax_failure(source, group, k, "", 0, name//" = "//line(j + 1:e - 1), &
-              fraction_hint(line(j + 1:at - 1), line(at + 1:e - 1)), error)
-            return
-          end if
+  end subroutine check_namelist_syntax
+
+  !> The group ends at line(at:) of deck line k ('/', or '&end', '$end'): a '/' between two
+  !> numbers is a fraction; after the end, blanks and '!' comments only (check_namelist_syntax).
+  subroutine check_after_group(source, group, line, k, at, name, error)
+    !> The deck.
+    type(deck_source_t), intent(in) :: source
+    !> Group name.
+    character(*), intent(in) :: group
+    !> Line k of the deck.
+    character(*), intent(in) :: line
+    !> Its number, and the column of the end.
+    integer, intent(in) :: k, at
+    !> The variable of the last '='.
+    character(*), intent(in) :: name
+    !> The error (none when the end is clean).
+    type(error_t), allocatable, intent(out) :: error
+    character(len=:), allocatable :: rest
+    integer :: last, j, e
+    last = at
+    if (line(at:at) /= "/") then
+      do while (last < len(line))
+        if (verify(line(last + 1:last + 1), "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ") /= 0) exit
+        last = last + 1
+      end do
+    else if (at > 1 .and. at < len(line)) then
+      ! a number written just before and just after the '/'
+      j = at - 1
+      do while (j >= 1)
+        if (index("0123456789.eEdD+-", line(j:j)) == 0) exit
+        j = j - 1
+      end do
+      e = at + 1
+      do while (e <= len(line))
+        if (index("0123456789.eEdD+-", line(e:e)) == 0) exit
+        e = e + 1
+      end do
+      if (j < at - 1 .and. e > at + 1) then
+        if (is_number_text(line(j + 1:at - 1)) .and. is_number_text(line(at + 1:e - 1))) then
+          call syntax_failure(source, group, k, "", 0, name//" = "//line(j + 1:e - 1), &
+            fraction_hint(line(j + 1:at - 1), line(at + 1:e - 1)), error)
+          return
         end if
       end if
-      rest = adjustl(line(last + 1:))
-      j = k
-      do
-        if (len_trim(rest) > 0) then
-          if (rest(1:1) /= "!") then
-            call fatal_error(error, exit_input, source%path//":"//int_str(j)//": &"//group//": "// &
-              clipped(printable(trim(rest)), 60)//": text after the group's closing '/' (it would be ignored: "// &
-              "move it before the '/', or make it a comment with '!')")
-            return
-          end if
+    end if
+    rest = adjustl(line(last + 1:))
+    j = k
+    do
+      if (len_trim(rest) > 0) then
+        if (rest(1:1) /= "!") then
+          call fatal_error(error, exit_input, source%path//":"//int_str(j)//": &"//group//": "// &
+            clipped(printable(trim(rest)), 60)//": text after the group's closing '/' (it would be ignored: "// &
+            "move it before the '/', or make it a comment with '!')")
+          return
         end if
-        j = j + 1
-        if (j > deck_line_count(source)) exit
-        rest = adjustl(deck_line(source, j))
-      end do
-    end subroutine check_after_group
-  end subroutine check_namelist_syntax
+      end if
+      j = j + 1
+      if (j > deck_line_count(source)) exit
+      rest = adjustl(deck_line(source, j))
+    end do
+  end subroutine check_after_group
 
   !> The message for a value written as a fraction "a/b": "a fraction? write 0.04".
   pure function fraction_hint(numerator, denominator) result(hint)

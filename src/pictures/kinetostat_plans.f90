@@ -869,9 +869,9 @@ contains
       r = drawing%at(trim(plans%accelerations(t)%name)) - drawing%at(trim(plans%accelerations(ip)%name))
       nrm = -omega(g)**2 * r
       tng = eps(g) * [-r(2), r(1)]
-      eq%point = plans%accelerations(t)%name
+      eq%point = trim(plans%accelerations(t)%name)
       eq%link = topo%links(g)%name
-      eq%from = plans%accelerations(ip)%name
+      eq%from = trim(plans%accelerations(ip)%name)
       eq%slider = topo%links(m)%name
       eq%reverse = .true.
       eq%vectors = [plan_vector_t("a_"//pg//"^k", cor, component_coriolis), plan_vector_t("a_"//pg//"^r", &
@@ -899,9 +899,9 @@ contains
       type(plan_equation_t) :: eq
       real(wp) :: r(2)
       r = drawing%at(trim(plans%accelerations(ip)%name)) - drawing%at(trim(plans%accelerations(q)%name))
-      eq%point = plans%accelerations(ip)%name
+      eq%point = trim(plans%accelerations(ip)%name)
       eq%link = topo%links(i)%name
-      eq%from = plans%accelerations(q)%name
+      eq%from = trim(plans%accelerations(q)%name)
       eq%vectors = [plan_vector_t(relative_name(ip, q, mid)//"^n", -omega(i)**2 * r, component_normal), &
         plan_vector_t(relative_name(ip, q, mid)//"^τ", eps(i) * [-r(2), r(1)], component_tangential)]
     end function rotation
@@ -925,7 +925,7 @@ contains
         eq%vectors = [eq%vectors, plan_vector_t("a_"//trim(plans%accelerations(ip)%name)//"^k", cor, component_coriolis)]
         rest = rest + cor
       else
-        eq%point = plans%accelerations(ip)%name
+        eq%point = trim(plans%accelerations(ip)%name)
         eq%link = ""
         eq%from = ""
         allocate (eq%vectors(0))
