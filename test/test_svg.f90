@@ -9,8 +9,16 @@ module test_svg
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_labels, only: lang_en
   use kinetostat_svg, only: xml_escape, svg_line, svg_arrow
-  use kinetostat_svg_writer, only: write_svg, pair_force_t, find_pair_forces, select_pair_forces, nice_step, &
+  use kinetostat_run_sheet, only: write_run_sheet, pair_force_t, find_pair_forces, select_pair_forces, nice_step, &
     cycle_mean
+  use kinetostat_sheet, only: sheet_t
+  use kinetostat_sheet_svg, only: write_sheet_svg
+  use kinetostat_labels, only: lang_ru
+  use kinetostat_typeset, only: text_run_t, typeset, runs_text, plain_text, run_base, run_sub, run_sup
+  use kinetostat_scales, only: standard_drawing_scale, round_scale, drawing_scale_t
+  use kinetostat_sheet, only: iso_paper, paper_t, entity_text, entity_line
+  use kinetostat_sheet_dxf, only: write_sheet_dxf
+  use kinetostat_label_place, only: segment_box_distance
   use test_harness, only: test_counts_t, check_true, check_close
   implicit none
   private
@@ -25,7 +33,111 @@ contains
     call test_ticks_and_mean(t)
     call test_pairs(t)
     call test_sheet(t)
+    call test_typeset(t)
+    call test_scales(t)
+    call test_model(t)
   end subroutine run_svg_tests
+
+  !> The runs of a label: their texts joined by "|" with the shift marked (_ lowered, ^ raised).
+  pure function shown(runs) result(text)
+    type(text_run_t), intent(in) :: runs(:)
+    character(len=:), allocatable :: text
+    integer :: i
+    text = ""
+    do i = 1, size(runs)
+      if (i > 1) text = text//"|"
+      select case (runs(i)%shift)
+      case (run_sub)
+        text = text//"_"
+      case (run_sup)
+        text = text//"^"
+      case default
+        continue
+      end select
+      text = text//runs(i)%text
+    end do
+  end function shown
+
+  !> Label text into runs: the program's symbols typeset, words and paths as they are.
+  subroutine test_typeset(t)
+    type(test_counts_t), intent(inout) :: t
+    type(text_run_t), allocatable :: runs(:)
+    call check_text(t, "typeset F21 = 2043 N", "F|_21| = 2043 N", shown(typeset("F21 = 2043 N", lang_en)))
+    call check_text(t, "typeset a_CB^τ", "a|_CB|^τ", shown(typeset("a_CB^τ", lang_en)))
+    call check_text(t, "typeset a^k_B2B3", "a|^k|_B2B3", shown(typeset("a^k_B2B3", lang_en)))
+    call check_text(t, "typeset v_B2B3", "v|_B2B3", shown(typeset("v_B2B3", lang_en)))
+    call check_text(t, "typeset Phi2", "Φ|_2", shown(typeset("Phi2", lang_en)))
+    call check_text(t, "typeset MPhi3 en", "M|_Φ3", shown(typeset("MPhi3", lang_en)))
+    call check_text(t, "typeset MPhi3 ru", "M|_и3", shown(typeset("MPhi3", lang_ru)))
+    call check_text(t, "typeset J_red ru", "J|_пр|, кг·м²", shown(typeset("J_red, кг*м^2", lang_ru)))
+    call check_text(t, "typeset phi1, deg", "φ|_1|, deg", shown(typeset("phi1, deg", lang_en)))
+    call check_text(t, "typeset phi3rel ru", "φ|_3отн", shown(typeset("phi3rel", lang_ru)))
+    call check_text(t, "typeset dT, N*m", "ΔT, N·m", shown(typeset("dT, N*m", lang_en)))
+    call check_text(t, "typeset two subscripts", "a|_J21,3|^n", shown(typeset("a_J21_3^n", lang_en)))
+    call check_text(t, "typeset μv", "μ|_v| = 0.2", shown(typeset("μv = 0.2", lang_en)))
+    call check_text(t, "typeset FS1, MQ1", "F|_S1| M|_Q1", shown(typeset("FS1 MQ1", lang_en)))
+    call check_text(t, "typeset leaves words and paths", "deck: data/pr3207_flywheel.nml step 3 of 13", &
+      shown(typeset("deck: data/pr3207_flywheel.nml step 3 of 13", lang_en)))
+    call check_text(t, "typeset F_shake ru", "Φ|_гл", shown(typeset("F_shake", lang_ru)))
+    call check_text(t, "runs_text", "aCBτ", runs_text(typeset("a_CB^τ", lang_en)))
+    call check_text(t, "plain_text (DXF)", "a_CB^τ F21", plain_text(typeset("a_CB^τ F21", lang_en)))
+    allocate (runs(0)) ! defined before the assignment (gcc's -Wmaybe-uninitialized on the descriptor)
+    runs = typeset("S2", lang_en)
+    call check_true(t, "run shifts", size(runs) == 2 .and. all(runs%shift == [run_base, run_sub]), "S2: S on the "// &
+      "baseline, 2 lowered")
+  end subroutine test_typeset
+
+  !> ГОСТ 2.302 drawing scales and round μ scales.
+  subroutine test_scales(t)
+    type(test_counts_t), intent(inout) :: t
+    type(drawing_scale_t) :: s
+    s = standard_drawing_scale(0.3_wp)
+    call check_text(t, "drawing scale 0.3 -> 1:4", "1:4", s%text)
+    s = standard_drawing_scale(0.19_wp)
+    call check_text(t, "drawing scale 0.19 -> 1:10 (no 1:6 in the standard)", "1:10", s%text)
+    s = standard_drawing_scale(0.45_wp)
+    call check_text(t, "drawing scale 0.45 -> 1:2.5", "1:2.5", s%text)
+    s = standard_drawing_scale(3.0_wp)
+    call check_text(t, "drawing scale 3 -> 2.5:1", "2.5:1", s%text)
+    s = standard_drawing_scale(1.0e-5_wp)
+    call check_text(t, "drawing scale beyond the standard", "1:100000", s%text)
+    call check_close(t, "round scale 2741 N over 28 mm", 100.0_wp, round_scale(2741.0_wp, 28.0_wp), 0.0_wp, 1.0e-12_wp)
+    call check_close(t, "round scale 589 N over 28 mm", 25.0_wp, round_scale(589.0_wp, 28.0_wp), 0.0_wp, 1.0e-12_wp)
+  end subroutine test_scales
+
+  !> The model: paper sizes, a label placed off a line through its point, the DXF's text.
+  subroutine test_model(t)
+    type(test_counts_t), intent(inout) :: t
+    type(sheet_t) :: sheet
+    type(paper_t) :: paper
+    type(text_buffer_t) :: out
+    real(wp) :: tx, ty, b(4)
+    character(len=:), allocatable :: dxf
+    paper = iso_paper("A3", .true.)
+    call check_true(t, "A3 landscape", paper%width == 420.0_wp .and. paper%height == 297.0_wp, "420 x 297 mm")
+    paper = iso_paper("A1", .false.)
+    call check_true(t, "A1 portrait", paper%width == 594.0_wp .and. paper%height == 841.0_wp, "594 x 841 mm")
+    call sheet%open(iso_paper("A4", .false.), lang_en, "t", "d")
+    ! lines through the point in four directions: the label must sit in a quadrant between them
+    call sheet%line(50.0_wp, 100.0_wp, 150.0_wp, 100.0_wp, "link")
+    call sheet%line(100.0_wp, 50.0_wp, 100.0_wp, 150.0_wp, "link")
+    call sheet%place_label("S2", "label", 100.0_wp, 100.0_wp, 0.0_wp, [20.0_wp, 5.0_wp, 205.0_wp, 292.0_wp], tx=tx, ty=ty)
+    ! the label's box (S: 2.8 mm, 2: 1.96 mm lowered 0.84): 0.6 * (2.8 + 1.96) wide
+    b = [tx - 0.3_wp * (2.8_wp + 1.96_wp), ty - 0.8_wp * 2.8_wp, tx + 0.3_wp * (2.8_wp + 1.96_wp), ty + 0.84_wp + 0.392_wp]
+    call check_true(t, "label off the lines", segment_box_distance([50.0_wp, 100.0_wp], [150.0_wp, 100.0_wp], b) > &
+      0.25_wp .and. segment_box_distance([100.0_wp, 50.0_wp], [100.0_wp, 150.0_wp], b) > 0.25_wp, "box too near a line")
+    call check_true(t, "label near its point", hypot(tx - 100.0_wp, ty - 100.0_wp) < 6.0_wp .and. sheet%leaders == 0, &
+      "placed far away or with a leader")
+    call check_true(t, "label is the last entity", sheet%items(sheet%count)%kind == entity_text .and. &
+      sheet%items(1)%kind == entity_line, "entities out of order")
+    call sheet%text(30.0_wp, 30.0_wp, "Phi2 = 5 Н", "num")
+    call write_sheet_dxf(sheet, out)
+    dxf = out%text()
+    call check_true(t, "DXF text escaped as \U+XXXX", index(dxf, new_line("a")//"\U+03A62 = 5 \U+041D"//new_line("a")) &
+      > 0, "no Φ2 = 5 Н as \U+03A62 = 5 \U+041D")
+    call check_true(t, "DXF paper limits", index(dxf, "$LIMMAX"//new_line("a")//"10"//new_line("a")//"210.000000") > 0, &
+      "no $LIMMAX 210")
+  end subroutine test_model
 
   subroutine check_text(t, name, expected, computed)
     type(test_counts_t), intent(inout) :: t
@@ -118,6 +230,7 @@ contains
     type(test_counts_t), intent(inout) :: t
     type(step_table_t) :: table
     type(text_buffer_t) :: out
+    type(sheet_t) :: sheet
     type(error_t), allocatable :: error
     character(len=:), allocatable :: s, d
     real(wp) :: ox, oy, scale, x, y, fx, fy
@@ -126,12 +239,14 @@ contains
     ox = 0.0_wp
     oy = 0.0_wp
     call small_table(table)
-    call write_svg("TEST", table, "", lang_en, out, error)
-    call check_true(t, "write_svg runs", .not. allocated(error), "no error expected")
+    call write_run_sheet("TEST", table, "", lang_en, sheet, error)
+    call check_true(t, "write_run_sheet runs", .not. allocated(error), "no error expected")
+    if (allocated(error)) return
+    call write_sheet_svg(sheet, out)
     s = out%text()
     call check_true(t, "sheet escapes the deck name", index(s, "small&lt;&amp;&gt;.nml") > 0 .and. &
       index(s, "small<&>") == 0, "deck name not escaped")
-    call check_true(t, "sheet has the mean", index(s, "mean 25.0 N*m") > 0, &
+    call check_true(t, "sheet has the mean", index(s, "mean 25.0 N·m") > 0, &
       "mean of M1 = 10, 20, 30, 40 over 0..270 deg (trapezoid) = 25")
     i = index(s, 'data-force="F16"')
     call check_true(t, "sheet has the F16 hodograph", i > 0, "no F16 path")

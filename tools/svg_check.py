@@ -20,15 +20,30 @@
       no font other than the generic families.
 
   svg_check.py labels SHEET.svg...
-      No two text labels of a sheet overlap. A label's box: width = 0.6 x font size x
-      characters (UTF-8 characters, so a Cyrillic letter counts once), height = font size,
-      from 0.8 x font size above the baseline to 0.2 x font size below it (the font size of
-      the element's class in the sheet's style sheet, or its own font-size); horizontally
-      placed by its text-anchor (start: from x; middle: centred on x; end: ending at x);
-      a rotate(a cx cy) transform turns the box (its bounding box is taken).
+      No two text labels of a sheet overlap. A label's box: each run of its text (its own
+      text, each <tspan>, the text after a <tspan>) 0.6 x font size x characters wide (UTF-8
+      characters, so a Cyrillic letter counts once), reaching from 0.8 x its font size above
+      its baseline to 0.2 x it below (the font size of the element's own font-size, style or
+      class; a <tspan>'s dy moves the baseline for it and what follows), the runs side by
+      side; horizontally placed by its text-anchor (start: from x; middle: centred on x;
+      end: ending at x); a rotate(a cx cy) transform turns the box (its bounding box).
       Two boxes overlap when their intersection is wider and taller than 0.01 mm; a box
       must lie on the sheet (its viewBox). Every overlapping pair and every label off the
       sheet is printed with its text and position.
+
+  svg_check.py labels --lines SHEET...
+      The same, and no label lies over a line drawn on the sheet: every <line>, <path> (M/L
+      polylines), <polygon>, <polyline> and <rect> edge as a band of its stroke width (its
+      stroke-width attribute, style or class), every <circle> as a disc (radius + half its
+      stroke); the classes grid, ray and paper (light construction lines under everything)
+      are not counted. A label's leader line (class "leader") may touch its own label. A box
+      closer than its band by more than 0.01 mm fails. Prints the number of leader lines.
+
+  svg_check.py notation en|ru SHEET...
+      Typeset labels: no "_" or "^" markup in any <text> but the subtitle (the deck's path and
+      title); with ru also no run of two or more Latin letters in a run of text but point
+      names (the sheet's data-joint, data-point, data-image values), lowered or raised point
+      letters (v_CB), the program's name (kinetostat, "KINETOSTAT <KIND>" opening the title).
 
   svg_check.py english SHEET...
       No English word in a --lang ru sheet or table: a word of three or more Latin letters
@@ -216,7 +231,7 @@ def check_png(png_path, svg_path):
             pixels = memoryview(row).cast("I")  # one RGBA pixel per 32-bit word
             inked += len(pixels) - pixels.tolist().count(white[0])
             if len(colours) < 64:
-                colours.update(pixels.tolist()[:64])
+                colours.update(pixels.tolist())
         else:
             for x in range(0, len(row), 3):
                 if row[x:x + 3] != b"\xff\xff\xff":
@@ -240,53 +255,213 @@ def check_self_contained(svg_path):
             fail(f"{svg_path}: font-family {family!r} is not a generic family")
 
 
-def text_boxes(svg_path):
-    """(box, text) of every <text>: box = (x0, y0, x1, y1) in mm as the docstring says."""
-    source = open(svg_path, encoding="utf-8").read()
-    sizes = {}
+def style_sizes(source):
+    """Font sizes of the text classes and stroke widths of the line classes of the style sheet."""
+    sizes, widths = {}, {}
     for cls, body in re.findall(r"\.([A-Za-z_-]+)\s*\{([^}]*)\}", source):
         m = re.search(r"font-size:\s*([0-9.]+)px", body)
         if m:
             sizes[cls] = float(m.group(1))
+        m = re.search(r"stroke-width:\s*([0-9.]+)", body)
+        widths[cls] = float(m.group(1)) if m else 0.0
+    return sizes, widths
+
+
+def text_size(el, sizes, default=None):
+    size = None
+    if el.get("font-size"):
+        size = float(el.get("font-size").replace("px", ""))
+    m = re.search(r"font-size:\s*([0-9.]+)", el.get("style") or "")
+    if m:
+        size = float(m.group(1))
+    if size is None:
+        for cls in (el.get("class") or "").split():
+            if cls in sizes:
+                size = sizes[cls]
+    return default if size is None else size
+
+
+def text_runs(el, sizes):
+    """(text, font size, baseline offset) of every run of a <text>: its own text, each <tspan>
+    (dy moves the baseline for it and what follows), and the text after a <tspan>."""
+    base = text_size(el, sizes, 16.0)  # 16: the SVG default, a label without a size is a bug shown
+    runs = []
+    offset = 0.0
+    if el.text:
+        runs.append((el.text, base, offset))
+    for child in el:
+        if child.tag == SVG_NS + "tspan":
+            offset += float(child.get("dy", "0"))
+            runs.append(("".join(child.itertext()), text_size(child, sizes, base), offset))
+        if child.tail:
+            runs.append((child.tail, base, offset))
+    return runs, base
+
+
+def text_box(el, sizes):
+    """(box, text) of a <text>: a run of n characters at font size s is 0.6 s n wide and reaches
+    from 0.8 s above its baseline to 0.2 s below (kinetostat_typeset's measure), the runs side by
+    side; placed by text-anchor; a rotate(a cx cy) turns the box (its bounding box is taken)."""
+    runs, base = text_runs(el, sizes)
+    text = "".join(r[0] for r in runs)
+    width = sum(0.6 * size * len(t) for t, size, _ in runs)
+    top = min([off - 0.8 * size for t, size, off in runs if t] or [-0.8 * base])
+    bottom = max([off + 0.2 * size for t, size, off in runs if t] or [0.2 * base])
+    x = float(el.get("x", "0"))
+    y = float(el.get("y", "0"))
+    anchor = el.get("text-anchor", "start")
+    x0 = {"start": x, "middle": x - width / 2, "end": x - width}[anchor]
+    box = (x0, y + top, x0 + width, y + bottom)
+    m = re.search(r"rotate\(\s*([-0-9.]+)[ ,]+([-0-9.]+)[ ,]+([-0-9.]+)\s*\)", el.get("transform") or "")
+    if m:  # the box's corners turned about the centre of rotation, then their bounding box
+        a, cx, cy = (float(v) for v in m.groups())
+        c, s_ = math.cos(math.radians(a)), math.sin(math.radians(a))
+        corners = [(cx + c * (px - cx) - s_ * (py - cy), cy + s_ * (px - cx) + c * (py - cy))
+                   for px in (box[0], box[2]) for py in (box[1], box[3])]
+        box = (min(p[0] for p in corners), min(p[1] for p in corners),
+               max(p[0] for p in corners), max(p[1] for p in corners))
+    return box, text
+
+
+def text_boxes(svg_path):
+    """(box, text) of every <text>: box = (x0, y0, x1, y1) in mm as text_box says."""
+    source = open(svg_path, encoding="utf-8").read()
+    sizes, _ = style_sizes(source)
     root = ET.fromstring(source)
     boxes = []
     for el in root.iter(SVG_NS + "text"):
-        text = "".join(el.itertext())
-        if not text.strip():
-            continue
-        size = None
-        if el.get("font-size"):
-            size = float(el.get("font-size").replace("px", ""))
-        style = el.get("style") or ""
-        m = re.search(r"font-size:\s*([0-9.]+)", style)
-        if m:
-            size = float(m.group(1))
-        if size is None:
-            for cls in (el.get("class") or "").split():
-                if cls in sizes:
-                    size = sizes[cls]
-        if size is None:
-            size = 16.0  # the SVG default: a label without a size is a bug the test shows
-        x = float(el.get("x", "0"))
-        y = float(el.get("y", "0"))
-        width = 0.6 * size * len(text)
-        anchor = el.get("text-anchor", "start")
-        x0 = {"start": x, "middle": x - width / 2, "end": x - width}[anchor]
-        box = (x0, y - 0.8 * size, x0 + width, y + 0.2 * size)
-        m = re.search(r"rotate\(\s*([-0-9.]+)[ ,]+([-0-9.]+)[ ,]+([-0-9.]+)\s*\)", el.get("transform") or "")
-        if m:  # the box's corners turned about the centre of rotation, then their bounding box
-            a, cx, cy = (float(v) for v in m.groups())
-            c, s_ = math.cos(math.radians(a)), math.sin(math.radians(a))
-            corners = [(cx + c * (px - cx) - s_ * (py - cy), cy + s_ * (px - cx) + c * (py - cy))
-                       for px in (box[0], box[2]) for py in (box[1], box[3])]
-            box = (min(p[0] for p in corners), min(p[1] for p in corners),
-                   max(p[0] for p in corners), max(p[1] for p in corners))
-        boxes.append((box, text))
+        box, text = text_box(el, sizes)
+        if text.strip():
+            boxes.append((box, text))
     return boxes
 
 
-def check_labels(paths):
+# Light construction lines drawn under everything: not obstacles of labels.
+BACKGROUND_CLASSES = {"paper", "grid", "ray"}
+
+
+def drawn_segments(root, widths):
+    """Every line drawn on the sheet as (x1, y1, x2, y2, half width, kind): <line>, <path>
+    (M/L polylines), <polygon>, <polyline>, <rect> edges, and <circle>s as (cx, cy, cx, cy,
+    radius + half width, "disc"); kind "leader" for the leader lines of labels. The classes
+    BACKGROUND_CLASSES (grid, rays, paper) are left out."""
+    segments = []
+    for el in root.iter():
+        tag = el.tag.replace(SVG_NS, "")
+        if tag not in ("line", "path", "polygon", "polyline", "rect", "circle"):
+            continue
+        classes = set((el.get("class") or "").split())
+        if classes & BACKGROUND_CLASSES:
+            continue
+        width = None
+        if el.get("stroke-width"):
+            width = float(el.get("stroke-width"))
+        m = re.search(r"stroke-width:\s*([0-9.]+)", el.get("style") or "")
+        if m:
+            width = float(m.group(1))
+        if width is None:
+            width = max([widths.get(c, 0.0) for c in classes] or [0.0])
+            if not classes and el.get("stroke") in (None, "none"):
+                width = 0.0
+        half = width / 2
+        kind = "leader" if "leader" in classes else "line"
+        if tag == "line":
+            segments.append((float(el.get("x1")), float(el.get("y1")), float(el.get("x2")), float(el.get("y2")),
+                             half, kind))
+        elif tag == "circle":
+            cx, cy, r = float(el.get("cx")), float(el.get("cy")), float(el.get("r"))
+            segments.append((cx, cy, cx, cy, r + half, "disc"))
+        else:
+            if tag == "path":
+                points = path_points(el.get("d"))
+            elif tag == "rect":
+                x, y, w, h = (float(el.get(k)) for k in ("x", "y", "width", "height"))
+                points = [(x, y), (x + w, y), (x + w, y + h), (x, y + h), (x, y)]
+            else:
+                values = [float(v) for v in re.split(r"[ ,]+", el.get("points").strip())]
+                points = list(zip(values[0::2], values[1::2]))
+                if tag == "polygon":
+                    points.append(points[0])
+            for a, b in zip(points, points[1:]):
+                segments.append((a[0], a[1], b[0], b[1], half, kind))
+    return segments
+
+
+def segment_box_distance(s, box):
+    """Distance from segment s = (x1, y1, x2, y2, ...) to the box (x0, y0, x1, y1): 0 when they meet."""
+    x1, y1, x2, y2 = s[:4]
+    dx, dy = x2 - x1, y2 - y1
+    t0, t1 = 0.0, 1.0
+    for p, q in ((-dx, x1 - box[0]), (dx, box[2] - x1), (-dy, y1 - box[1]), (dy, box[3] - y1)):
+        if p == 0:
+            if q < 0:
+                t0 = 2.0
+                break
+        elif p < 0:
+            t0 = max(t0, q / p)
+        else:
+            t1 = min(t1, q / p)
+    if t0 <= t1:
+        return 0.0
+
+    def point_segment(px, py):
+        length2 = dx * dx + dy * dy
+        t = 0.0 if length2 == 0 else max(0.0, min(1.0, ((px - x1) * dx + (py - y1) * dy) / length2))
+        return math.hypot(px - x1 - t * dx, py - y1 - t * dy)
+
+    def point_box(px, py):
+        return math.hypot(max(box[0] - px, 0.0, px - box[2]), max(box[1] - py, 0.0, py - box[3]))
+    return min(point_box(x1, y1), point_box(x2, y2), point_segment(box[0], box[1]), point_segment(box[2], box[1]),
+               point_segment(box[0], box[3]), point_segment(box[2], box[3]))
+
+
+def lines_under_labels(path, boxes):
+    """The labels of a sheet that lie over a drawn line (drawn_segments), and the number of
+    its leader lines. A leader line may touch the label it leads to."""
+    source = open(path, encoding="utf-8").read()
+    _, widths = style_sizes(source)
+    segments = drawn_segments(ET.fromstring(source), widths)
+    cell = 10.0
+    grid = {}
+    for n, s in enumerate(segments):
+        reach = s[4]
+        for gx in range(int((min(s[0], s[2]) - reach) // cell), int((max(s[0], s[2]) + reach) // cell) + 1):
+            for gy in range(int((min(s[1], s[3]) - reach) // cell), int((max(s[1], s[3]) + reach) // cell) + 1):
+                grid.setdefault((gx, gy), []).append(n)
     bad = []
+    for b, text in boxes:
+        seen = set()
+        for gx in range(int(b[0] // cell), int(b[2] // cell) + 1):
+            for gy in range(int(b[1] // cell), int(b[3] // cell) + 1):
+                for n in grid.get((gx, gy), []):
+                    if n in seen:
+                        continue
+                    seen.add(n)
+                    s = segments[n]
+                    depth = s[4] - segment_box_distance(s, b)
+                    if s[5] == "leader":
+                        # its own label: an end of the leader on the box's edge
+                        inner = (b[0] + 0.05, b[1] + 0.05, b[2] - 0.05, b[3] - 0.05)
+                        if segment_box_distance(s, inner) > 0:
+                            continue
+                    if depth > 0.01:
+                        what = {"disc": "a circle", "leader": "a leader line"}.get(s[5], "a line")
+                        bad.append(f"{path}: {text!r} at ({b[0]:.2f}, {b[3]:.2f}) lies over {what} "
+                                   f"({s[0]:.2f}, {s[1]:.2f})-({s[2]:.2f}, {s[3]:.2f}) by {depth:.2f} mm")
+                        break
+                else:
+                    continue
+                break
+            else:
+                continue
+            break
+    leaders = sum(1 for s in segments if s[5] == "leader")
+    return bad, leaders
+
+
+def check_labels(paths, lines=False):
+    bad = []
+    leaders = 0
     for path in paths:
         boxes = text_boxes(path)
         view = [float(v) for v in ET.parse(path).getroot().get("viewBox").split()]
@@ -304,9 +479,15 @@ def check_labels(paths):
                 if w > 0.01 and h > 0.01:
                     bad.append(f"{path}: {ta!r} at ({a[0]:.2f}, {a[3]:.2f}) overlaps {tb!r} at "
                                f"({b[0]:.2f}, {b[3]:.2f}) by {w:.2f} x {h:.2f} mm")
+        if lines:
+            over, n = lines_under_labels(path, boxes)
+            bad += over
+            leaders += n
+    if lines:
+        print(f"{len(paths)} sheets, {leaders} leader lines")
     if bad:
         print("\n".join(bad[:40]))
-        fail(f"{len(bad)} overlapping label pairs")
+        fail(f"{len(bad)} labels over a label, a line or off the sheet")
 
 
 ENGLISH_WORDS = set("""
@@ -351,13 +532,60 @@ def check_english(paths):
         fail(f"{len(hits)} English words")
 
 
+def check_notation(paths, russian):
+    """Typeset labels: no "_" or "^" markup in a <text> (the subtitle, which holds the deck's
+    path and title, aside); on a Russian sheet also no run of two or more Latin letters in a
+    run of text except point names (the sheet's data-joint, data-point and data-image
+    values), a lowered or raised run of point letters (v_CB, a_B2B3), Roman numerals (the
+    class of a group), the program's name (kinetostat; "KINETOSTAT <KIND>" opening the
+    title) and the subtitle."""
+    hits = []
+    for path in paths:
+        source = open(path, encoding="utf-8").read()
+        sizes, _ = style_sizes(source)
+        root = ET.fromstring(source)
+        names = set()
+        for el in root.iter():
+            for key in ("data-joint", "data-point", "data-image"):
+                if el.get(key):
+                    names.add(el.get(key))
+        for el in root.iter(SVG_NS + "text"):
+            classes = (el.get("class") or "").split()
+            if "subtitle" in classes:
+                continue
+            runs, base = text_runs(el, sizes)
+            whole = "".join(r[0] for r in runs)
+            if "_" in whole or "^" in whole:
+                hits.append(f"{path}: markup in {whole!r}")
+            if not russian:
+                continue
+            for k, (text, size, offset) in enumerate(runs):
+                if "title" in classes and k == 0:
+                    text = re.sub(r"^\s*KINETOSTAT\s+\S+", " ", text)
+                text = re.sub(r"(?i)kinetostat", " ", text)
+                shifted = size < base - 1e-9
+                for token in re.findall(r"[A-Za-z0-9]+", text):
+                    if token in names or not re.search(r"[A-Za-z]{2}", token) or re.fullmatch(r"[IVX]+", token):
+                        continue
+                    if shifted and re.fullmatch(r"([A-Z][0-9]*)+", token):
+                        continue
+                    hits.append(f"{path}: Latin {token!r} in {whole!r}")
+    if hits:
+        print("\n".join(hits[:60]))
+        fail(f"{len(hits)} labels not in the course's notation")
+
+
 def main():
     if len(sys.argv) == 4 and sys.argv[1] == "hodographs":
         check_hodographs(sys.argv[2], sys.argv[3])
     elif len(sys.argv) == 4 and sys.argv[1] == "png":
         check_png(sys.argv[2], sys.argv[3])
+    elif len(sys.argv) >= 4 and sys.argv[1:3] == ["labels", "--lines"]:
+        check_labels(sys.argv[3:], lines=True)
     elif len(sys.argv) >= 3 and sys.argv[1] == "labels":
         check_labels(sys.argv[2:])
+    elif len(sys.argv) >= 4 and sys.argv[1] == "notation" and sys.argv[2] in ("en", "ru"):
+        check_notation(sys.argv[3:], sys.argv[2] == "ru")
     elif len(sys.argv) >= 3 and sys.argv[1] == "english":
         check_english(sys.argv[2:])
     elif len(sys.argv) == 3 and sys.argv[1] == "self-contained":

@@ -73,15 +73,16 @@ module kinetostat_cli
     "            (repeatable; l_ab=0.12, f5c(3)=0, 'dyad(2)%l2=0.45'); marked (--set)", &
     "-o FILE, --output FILE  write to FILE (atomically: nothing is left behind on error)", &
     "--format    table (default, the legacy printout), csv (full precision), json, svg", &
-    "            (a sheet of force hodographs and diagrams; see docs/pictures.md), or summary", &
+    "            (a sheet of force hodographs and diagrams; see docs/pictures.md), dxf (the", &
+    "            same sheet for CAD programs), or summary", &
     "            (a CSV header and one row: max, min, where, mean per column, work)", &
-    "--pairs     with svg: only these pair forces, e.g. --pairs F16,F36", &
+    "--pairs     with svg or dxf: only these pair forces, e.g. --pairs F16,F36", &
     "--at K      with svg: the mechanism drawn at step K with every force of the step", &
     "--at K      with plans: the graphical method's sheet of step K (plans of velocities and", &
     "            accelerations, force polygons, Zhukovsky's lever)", &
     "--student NAME --group G --variant N   the header line of the 1991 programs (date, time,", &
     "            surname, group, variant) on the legacy table and a title block on the sheets", &
-    "--at K      with dxf: the mechanism at step K as an ASCII DXF drawing for CAD programs", &
+    "--at K      with dxf: the mechanism at step K (the svg sheet) as an ASCII DXF for CAD", &
     "--plans     with json and --at K: the graphical method at step K (plans of velocities and", &
     "            accelerations, force polygons, Zhukovsky's lever) as numbers", &
     "--lang      language of the table's labels: en (default) or ru (the 1991 printouts)", &
@@ -906,14 +907,12 @@ contains
       call fatal_error(error, exit_usage, "--fraction belongs to --method partial")
     else if (args%sweep .and. args%format_given .and. args%options%format /= format_summary) then
       call fatal_error(error, exit_usage, "sweep writes the summary format only (--format summary)")
-    else if (allocated(args%options%pairs) .and. args%options%format /= format_svg) then
-      call fatal_error(error, exit_usage, "--pairs needs --format svg")
+    else if (allocated(args%options%pairs) .and. all(args%options%format /= [format_svg, format_dxf])) then
+      call fatal_error(error, exit_usage, "--pairs needs --format svg or dxf")
     else if (args%options%plans .and. (args%options%format /= format_json .or. args%options%at_step == 0)) then
       call fatal_error(error, exit_usage, "--plans needs --format json and --at K")
     else if (args%options%format == format_plans .and. args%options%at_step == 0) then
       call fatal_error(error, exit_usage, "--format plans needs --at K (the step whose plans are drawn)")
-    else if (args%options%format == format_dxf .and. args%options%at_step == 0) then
-      call fatal_error(error, exit_usage, "--format dxf needs --at K (the step drawn)")
     else if (args%options%at_step > 0 .and. all(args%options%format /= [format_svg, format_plans, format_dxf]) &
       .and. .not. args%options%plans) then
       call fatal_error(error, exit_usage, "--at needs --format svg, plans or dxf (or --format json --plans)")

@@ -312,6 +312,28 @@ contains
       text = "Механизм с силами"
     case ("Hodographs and diagrams")
       text = "Годографы и диаграммы"
+    case ("not drawn, shorter than 1 mm at μF")
+      text = "не показаны, короче 1 мм при μF"
+    case ("under 1 mm, not drawn")
+      text = "короче 1 мм, не показаны"
+    case ("The input step")
+      text = "Шаг входного звена"
+    case ("is coarser than")
+      text = "крупнее"
+    case ("next to a load that switches on or off")
+      text = "рядом с включением или "// &
+        "выключением нагрузки"
+    case ("the curves join the steps by chords and may miss the true peaks and the true mean; rerun with a "// &
+      "finer step")
+      text = "кривые соединяют положения хордами и могут "// &
+        "пропустить истинные максимумы и истинное "// &
+        "среднее; повторите расчет с меньшим шагом"
+    case ("points drawn")
+      text = "точек показано"
+    case ("Shaking force and moment (the resultant of the inertia forces)")
+      text = "Главный вектор и главный момент сил инерции"
+    case ("Shaking moment")
+      text = "Главный момент сил инерции"
     case default
       text = english
     end select

@@ -4,13 +4,16 @@
 !> placed horizontally by its text-anchor. Every text written on a sheet is either reserved
 !> (a fixed text: a title, a legend) or placed (a label that belongs to a point or an arrow:
 !> the first free spot near it, preferring spots away from the drawing's lines; beside its
-!> arrow first, then around its point, then farther out with a leader line).
+!> arrow first, then around its point, then farther out with a leader line). `place_box`
+!> places any box (a typeset text's) among obstacle segments that have widths (the strokes of
+!> a sheet on the drawing model); placed strictly it takes no spot over a line while one is
+!> free, and its leader lines cross no label.
 module kinetostat_label_place
   use kinetostat_kinds, only: wp, pi
   use kinetostat_format, only: fixed_number
   implicit none
   private
-  public :: label_boxes_t, text_chars, title_attributes, anchor_start, anchor_middle, anchor_end
+  public :: label_boxes_t, text_chars, title_attributes, anchor_start, anchor_middle, anchor_end, segment_box_distance
 
   !> text-anchor start (the box begins at x).
   integer, parameter :: anchor_start = 1
@@ -24,6 +27,10 @@ module kinetostat_label_place
   integer, parameter :: ring_count = 14
   !> Directions per ring.
   integer, parameter :: ring_directions = 16
+  !> Least distance a label placed strictly keeps from a line's edge, mm.
+  real(wp), parameter :: line_gap = 0.15_wp
+  !> A label placed strictly farther than this from its point (its arrow) gets a leader, mm.
+  real(wp), parameter :: leader_distance = 4.0_wp
 
   !> The boxes taken on a sheet.
   type :: label_boxes_t
@@ -34,6 +41,8 @@ module kinetostat_label_place
     procedure :: reserve_box
     procedure :: is_free
     procedure :: place
+    procedure :: place_box
+    procedure :: line_is_free
   end type label_boxes_t
 
 contains
@@ -148,102 +157,223 @@ contains
     logical, intent(out) :: leader
     !> Tail of the arrow ending at the point, mm.
     real(wp), intent(in), optional :: tail(2)
+    real(wp) :: widths(size(ox) / 2)
+    widths = 0.0_wp
+    call self%place_box(0.6_wp * font_size * text_chars(text), 0.8_wp * font_size, 0.2_wp * font_size, px, py, base, &
+      ox, oy, widths, bounds, .false., tx, ty, leader, tail)
+  end subroutine place
+
+  !> Place a box `width` mm wide reaching `above` mm above its baseline and `below` mm below
+  !> it (a text centred on tx) for the point (px, py), mm, inside `bounds`, as `place` does;
+  !> the obstacle segment k (ox, oy: from point 2k-1 to point 2k) is a band `half_widths(k)`
+  !> mm each side of its line (a stroke's half width). With `strict` no spot whose box comes
+  !> nearer than `line_gap` to an obstacle is taken while one exists (rings around the point,
+  !> then farther out with a leader line that crosses no label), and a leader line never
+  !> crosses a label already placed. The box is taken.
+  pure subroutine place_box(self, width, above, below, px, py, base, ox, oy, half_widths, bounds, strict, tx, ty, &
+      leader, tail)
+    class(label_boxes_t), intent(inout) :: self
+    !> Width of the box, mm.
+    real(wp), intent(in) :: width
+    !> Reach of the box above and below its baseline, mm.
+    real(wp), intent(in) :: above, below
+    !> The point labelled, mm.
+    real(wp), intent(in) :: px, py
+    !> Preferred direction from the point, rad (sheet coordinates).
+    real(wp), intent(in) :: base
+    !> Obstacle segments, mm (ends in pairs).
+    real(wp), intent(in) :: ox(:), oy(:)
+    !> Half width of each obstacle segment, mm.
+    real(wp), intent(in) :: half_widths(:)
+    !> Where labels may go: x0, y0, x1, y1, mm.
+    real(wp), intent(in) :: bounds(4)
+    !> Whether lines are forbidden ground (see above).
+    logical, intent(in) :: strict
+    !> Baseline centre of the text, mm.
+    real(wp), intent(out) :: tx, ty
+    !> Whether a leader line is needed.
+    logical, intent(out) :: leader
+    !> Tail of the arrow ending at the point, mm.
+    real(wp), intent(in), optional :: tail(2)
     real(wp) :: hw, hh, best, cx, cy, d, u(2), nrm(2), length, bx, by
-    integer :: i, ring, side
-    logical :: found
-    hw = 0.3_wp * font_size * text_chars(text)
-    hh = 0.5_wp * font_size
+    integer :: i, ring, side, pass
+    logical :: found, hard
+    hw = 0.5_wp * width
+    hh = 0.5_wp * (above + below)
+    length = 0.0_wp
     best = -huge(1.0_wp)
     found = .false.
     bx = px
     by = py
-    ! beside the arrow: beyond its tip, then along its shaft on either side
-    if (present(tail)) then
-      length = hypot(px - tail(1), py - tail(2))
-      if (length > 0.0_wp) then
-        u = [px - tail(1), py - tail(2)] / length
-        nrm = [-u(2), u(1)]
-        call try(self, hw, hh, bounds, ox, oy, best, bx, by, found, px + u(1) * (hw + 0.6_wp), py + u(2) * (hh + 0.6_wp), 0.0_wp)
-        do i = 1, 4
-          do side = -1, 1, 2
-            d = 1.0_wp - 0.2_wp * i
-            call try(self, hw, hh, bounds, ox, oy, best, bx, by, found, px - u(1) * d * length + side * nrm(1) * (hw + 0.6_wp), &
-              py - u(2) * d * length + side * nrm(2) * (hh + 0.6_wp), 0.3_wp * i)
+    ! strict: first only spots off every line; if there is none, the best of any spot
+    do pass = 1, merge(2, 1, strict)
+      hard = strict .and. pass == 1
+      ! beside the arrow: beyond its tip, then along its shaft on either side
+      if (present(tail)) then
+        length = hypot(px - tail(1), py - tail(2))
+        if (length > 0.0_wp) then
+          u = [px - tail(1), py - tail(2)] / length
+          nrm = [-u(2), u(1)]
+          call try(best, bx, by, found, px + u(1) * (hw + 0.6_wp), py + u(2) * (hh + 0.6_wp), 0.0_wp)
+          do i = 1, 4
+            do side = -1, 1, 2
+              d = 1.0_wp - 0.2_wp * i
+              call try(best, bx, by, found, px - u(1) * d * length + side * nrm(1) * (hw + 0.6_wp), &
+                py - u(2) * d * length + side * nrm(2) * (hh + 0.6_wp), 0.3_wp * i)
+            end do
           end do
+        end if
+      end if
+      ! rings around the point
+      do ring = 1, ring_count
+        if (found .and. ring > 4) exit
+        do i = 0, ring_directions - 1
+          d = base + i * 2.0_wp * pi / ring_directions
+          cx = px + cos(d) * (hw + 1.4_wp + (ring - 1) * 2.5_wp)
+          cy = py + sin(d) * (hh + 1.2_wp + (ring - 1) * 2.5_wp)
+          call try(best, bx, by, found, cx, cy, 0.6_wp * (ring - 1) + 0.02_wp * min(i, ring_directions - i))
+        end do
+      end do
+      ! last resort: the first free spot of a grid over the bounds, nearest first
+      if (.not. found) then
+        do ring = 1, 200
+          do i = 0, 4 * ring - 1
+            d = i * 2.0_wp * pi / (4 * ring)
+            call try(best, bx, by, found, px + ring * 1.5_wp * cos(d), py + ring * 1.0_wp * sin(d), 100.0_wp + ring)
+          end do
+          if (found) exit
         end do
       end if
-    end if
-    ! rings around the point
-    do ring = 1, ring_count
-      if (found .and. ring > 4) exit
-      do i = 0, ring_directions - 1
-        d = base + i * 2.0_wp * pi / ring_directions
-        cx = px + cos(d) * (hw + 1.4_wp + (ring - 1) * 2.5_wp)
-        cy = py + sin(d) * (hh + 1.2_wp + (ring - 1) * 2.5_wp)
-        call try(self, hw, hh, bounds, ox, oy, best, bx, by, found, cx, cy, &
-          0.6_wp * (ring - 1) + 0.02_wp * min(i, ring_directions - i))
-      end do
+      if (found) exit
     end do
-    ! last resort: the first free spot of a grid over the bounds, nearest first
-    if (.not. found) then
-      do ring = 1, 200
-        do i = 0, 4 * ring - 1
-          d = i * 2.0_wp * pi / (4 * ring)
-          call try(self, hw, hh, bounds, ox, oy, best, bx, by, found, &
-            px + ring * 1.5_wp * cos(d), py + ring * 1.0_wp * sin(d), 100.0_wp + ring)
-        end do
-        if (found) exit
-      end do
-    end if
-    leader = hypot((bx - px) / (hw + 1.4_wp), (by - py) / (hh + 1.2_wp)) > 1.6_wp
-    if (present(tail)) then
-      if (length > 0.0_wp) leader = leader .and. distance_to_segment(bx, by, tail, [px, py]) > hw + hh + 1.5_wp
-    end if
+    leader = needs_leader(bx, by)
     tx = bx
-    ty = by + 0.3_wp * font_size
+    ty = by + hh - below
     call self%reserve_box([bx - hw, by - hh, bx + hw, by + hh])
-  end subroutine place
+  contains
+    !> Whether a label centred at (qx, qy) is away from its point (a leader line joins them):
+    !> placed strictly, when its box is more than `leader_distance` from the point (from the
+    !> arrow, for an arrow's label); else when its centre is beyond the first rings.
+    pure logical function needs_leader(qx, qy)
+      real(wp), intent(in) :: qx, qy
+      real(wp) :: b(4)
+      if (strict) then
+        b = [qx - hw, qy - hh, qx + hw, qy + hh]
+        if (present(tail)) then
+          if (length > 0.0_wp) then
+            needs_leader = segment_box_distance(tail, [px, py], b) > leader_distance
+            return
+          end if
+        end if
+        needs_leader = point_box_distance([px, py], b) > leader_distance
+        return
+      end if
+      needs_leader = hypot((qx - px) / (hw + 1.4_wp), (qy - py) / (hh + 1.2_wp)) > 1.6_wp
+      if (present(tail)) then
+        if (length > 0.0_wp) needs_leader = needs_leader .and. distance_to_segment(qx, qy, tail, [px, py]) > hw + hh + 1.5_wp
+      end if
+    end function needs_leader
+    !> A candidate centre (qx, qy) at `penalty` mm: kept (best, bx, by, found) when its box
+    !> is inside `bounds`, free, off the lines (hard), and scores better than the best so far.
+    pure subroutine try(best, bx, by, found, qx, qy, penalty)
+      real(wp), intent(inout) :: best, bx, by
+      logical, intent(inout) :: found
+      real(wp), intent(in) :: qx, qy, penalty
+      real(wp) :: b(4), score, room, e(2)
+      b = [qx - hw, qy - hh, qx + hw, qy + hh]
+      if (b(1) < bounds(1) .or. b(3) > bounds(3) .or. b(2) < bounds(2) .or. b(4) > bounds(4)) return
+      if (.not. self%is_free(b)) return
+      room = clearance(b, ox, oy, half_widths)
+      if (hard) then
+        if (room < line_gap) return
+        if (needs_leader(qx, qy)) then
+          ! the leader line from the point to the box's nearest point crosses no label
+          e = [max(b(1), min(b(3), px)), max(b(2), min(b(4), py))]
+          if (.not. self%line_is_free([px, py], e)) return
+        end if
+      end if
+      score = min(room, 1.5_wp) - penalty
+      if (score > best + 1.0e-9_wp) then
+        best = score
+        bx = qx
+        by = qy
+        found = .true.
+      end if
+    end subroutine try
+  end subroutine place_box
 
-  !> A candidate centre (qx, qy) at `penalty` mm: kept (best, bx, by, found) when its box
-  !> (half sizes hw, hh) is inside `bounds`, free, and scores better than the best so far.
-  pure subroutine try(self, hw, hh, bounds, ox, oy, best, bx, by, found, qx, qy, penalty)
-    type(label_boxes_t), intent(in) :: self
-    real(wp), intent(in) :: hw, hh, bounds(4), ox(:), oy(:)
-    real(wp), intent(inout) :: best, bx, by
-    logical, intent(inout) :: found
-    real(wp), intent(in) :: qx, qy, penalty
-    real(wp) :: b(4), score
-    b = [qx - hw, qy - hh, qx + hw, qy + hh]
-    if (b(1) < bounds(1) .or. b(3) > bounds(3) .or. b(2) < bounds(2) .or. b(4) > bounds(4)) return
-    if (.not. self%is_free(b)) return
-    score = min(clearance(b, ox, oy), 1.5_wp) - penalty
-    if (score > best + 1.0e-9_wp) then
-      best = score
-      bx = qx
-      by = qy
-      found = .true.
-    end if
-  end subroutine try
+  !> Whether the segment a-b (a leader line) keeps 0.1 mm from every box taken.
+  pure logical function line_is_free(self, a, b)
+    class(label_boxes_t), intent(in) :: self
+    !> Ends of the segment, mm.
+    real(wp), intent(in) :: a(2), b(2)
+    integer :: i
+    line_is_free = .true.
+    if (.not. allocated(self%box)) return
+    do i = 1, size(self%box, 2)
+      if (segment_box_distance(a, b, self%box(:, i)) <= 0.1_wp) then
+        line_is_free = .false.
+        return
+      end if
+    end do
+  end function line_is_free
 
-  !> Least distance from the box `b` (sampled on its edges and middle line) to the segments
-  !> (ox(2k-1), oy(2k-1))-(ox(2k), oy(2k)), mm.
-  pure real(wp) function clearance(b, ox, oy)
-    real(wp), intent(in) :: b(4), ox(:), oy(:)
-    real(wp) :: sx, sy
-    integer :: i, j, k, nx
+  !> Least distance from the box `b` (x0, y0, x1, y1) to the bands of the segments
+  !> (ox(2k-1), oy(2k-1))-(ox(2k), oy(2k)) of half width `half_widths(k)`, mm (0 or less: the
+  !> box touches one); segments farther than 3 mm are not looked at (huge when none is near).
+  pure real(wp) function clearance(b, ox, oy, half_widths)
+    real(wp), intent(in) :: b(4), ox(:), oy(:), half_widths(:)
+    integer :: k
+    real(wp) :: reach
     clearance = huge(1.0_wp)
-    if (size(ox) == 0) return
-    nx = 1 + ceiling((b(3) - b(1)) / 1.2_wp)
-    do i = 0, nx
-      sx = b(1) + (b(3) - b(1)) * i / nx
-      do j = 0, 2
-        sy = b(2) + 0.5_wp * (b(4) - b(2)) * j
-        do k = 1, size(ox) - 1, 2
-          clearance = min(clearance, distance_to_segment(sx, sy, [ox(k), oy(k)], [ox(k + 1), oy(k + 1)]))
-        end do
-      end do
+    do k = 1, size(ox) - 1, 2
+      reach = 3.0_wp + half_widths((k + 1) / 2)
+      if (min(ox(k), ox(k + 1)) > b(3) + reach .or. max(ox(k), ox(k + 1)) < b(1) - reach .or. &
+        min(oy(k), oy(k + 1)) > b(4) + reach .or. max(oy(k), oy(k + 1)) < b(2) - reach) cycle
+      clearance = min(clearance, segment_box_distance([ox(k), oy(k)], [ox(k + 1), oy(k + 1)], b) - &
+        half_widths((k + 1) / 2))
     end do
   end function clearance
+
+  !> Distance from the segment a-b to the box `box` (x0, y0, x1, y1), mm: 0 when the segment
+  !> meets the box (crosses it or lies inside it).
+  pure real(wp) function segment_box_distance(a, b, box) result(distance)
+    real(wp), intent(in) :: a(2), b(2), box(4)
+    real(wp) :: t0, t1, d(2), p(4), q(4)
+    integer :: i
+    ! Liang-Barsky: the part of the segment inside the box
+    d = b - a
+    p = [-d(1), d(1), -d(2), d(2)]
+    q = [a(1) - box(1), box(3) - a(1), a(2) - box(2), box(4) - a(2)]
+    t0 = 0.0_wp
+    t1 = 1.0_wp
+    do i = 1, 4
+      if (p(i) == 0.0_wp) then
+        if (q(i) < 0.0_wp) then
+          t0 = 2.0_wp
+          exit
+        end if
+      else if (p(i) < 0.0_wp) then
+        t0 = max(t0, q(i) / p(i))
+      else
+        t1 = min(t1, q(i) / p(i))
+      end if
+    end do
+    if (t0 <= t1) then
+      distance = 0.0_wp
+      return
+    end if
+    ! apart: the nearest of the segment's ends to the box and of the box's corners to the segment
+    distance = min(point_box_distance(a, box), point_box_distance(b, box), &
+      distance_to_segment(box(1), box(2), a, b), distance_to_segment(box(3), box(2), a, b), &
+      distance_to_segment(box(1), box(4), a, b), distance_to_segment(box(3), box(4), a, b))
+  end function segment_box_distance
+
+  !> Distance from point p to the box (x0, y0, x1, y1), mm (0 inside).
+  pure real(wp) function point_box_distance(p, box)
+    real(wp), intent(in) :: p(2), box(4)
+    point_box_distance = hypot(max(box(1) - p(1), 0.0_wp, p(1) - box(3)), max(box(2) - p(2), 0.0_wp, p(2) - box(4)))
+  end function point_box_distance
 
   !> Distance from (x, y) to the segment a-b, mm.
   pure real(wp) function distance_to_segment(x, y, a, b)

@@ -1,37 +1,230 @@
-!> The student's title block on a sheet (`--student NAME --group G --variant N`): the main
-!> inscription of ГОСТ 2.104, form 1, 185 x 55 mm, in the sheet's lower right corner, in the
-!> sheet's language:
+!> The format of a sheet on the drawing model: the ГОСТ 2.301 frame (20 mm from the left
+!> edge, 5 mm from the others) and the main inscription of ГОСТ 2.104, form 1, 185 x 55 mm, in
+!> the frame's lower right corner, in the sheet's language:
 !> - left, 65 mm: the grid of changes (rows of 5 mm; columns Изм. 7, Лист 10, № докум. 23,
-!>   Подп. 15, Дата 10 mm) and the signatures Разраб. (the student, the date of the run),
-!>   Пров., Т.контр., Н.контр., Утв.;
-!> - right, 120 mm: the document's designation (group.variant and the deck), 120 x 15; the
-!>   drawing's name, 70 x 25; the letter (У, a student's drawing), mass and scale cells and
-!>   sheet 1 of 1 sheets, 50 x 25; the program and the run's time, 70 x 15; the organisation
-!>   field with the group and variant, 50 x 15.
-!> A sheet that carries it is made title_block_height mm taller so that it covers nothing.
+!>   Подп. 15, Дата 10 mm) and the signatures Разраб. (the student and the date of the run,
+!>   with --student), Пров., Т.контр., Н.контр., Утв.;
+!> - right, 120 mm: the designation (графа 2, 120 x 15: empty unless one is given), the
+!>   drawing's name (графа 1, 70 x 25: a long name is written smaller, then on two lines),
+!>   the letter (У, a student's drawing), Масса, Масштаб (the drawing's scale, "1:5", when the
+!>   sheet has one), Лист N, Листов M (50 x 25); the program and the run's time (70 x 15);
+!>   the organisation field with the group and the variant (50 x 15).
+!> Drawn on layer FRAME with the classes "border" (the frame), "thick" (0.5 mm) and "thin"
+!> (0.18 mm). `put_title_block` keeps the older entry point of sheets not yet on the model
+!> (a block under a sheet made title_block_height taller), drawn through the same code.
 module kinetostat_title_block
   use kinetostat_kinds, only: wp, version_string
   use kinetostat_step_table, only: step_table_t
   use kinetostat_text_buffer, only: text_buffer_t
-  use kinetostat_svg, only: svg_rect, svg_line, svg_text
+  use kinetostat_text, only: int_str
   use kinetostat_labels, only: lang_ru
+  use kinetostat_typeset, only: char_count
+  use kinetostat_sheet, only: sheet_t, paper_t, layer_frame, anchor_middle, frame_left, frame_margin, line_classes
+  use kinetostat_sheet_svg, only: put_sheet_elements
   implicit none
   private
-  public :: put_title_block, title_block_height
+  public :: title_block_t, title_block_from_table, put_sheet_format, put_title_block_at, put_title_block, &
+    title_block_height, block_width, block_height, fitted_text
 
   !> Size of the block (ГОСТ 2.104 form 1), mm.
   real(wp), parameter :: block_width = 185.0_wp, block_height = 55.0_wp
-  !> Height a sheet grows by to carry the block (the block and the 5 mm margin below it), mm.
+  !> Height a sheet not on a standard format grows by to carry the block (the block and the
+  !> 5 mm margin below it), mm.
   real(wp), parameter :: title_block_height = block_height + 5.0_wp
-  !> Font sizes, mm: the cells' headings, the entries, the name and designation.
-  real(wp), parameter :: head_size = 2.0_wp, entry_size = 2.4_wp
-  !> Attributes of the lines: the thick (0.5 mm) and thin (0.18 mm) lines of the grid.
-  character(*), parameter :: thick = 'stroke="#000000" stroke-width="0.5"', thin = 'stroke="#000000" stroke-width="0.18"'
+  !> Font size of the entries, mm.
+  real(wp), parameter :: entry_size = 2.4_wp
+
+  !> What the title block says.
+  type :: title_block_t
+    !> The drawing's name (графа 1), in the sheet's language.
+    character(len=:), allocatable :: drawing_name
+    !> The document's designation (графа 2); "" leaves it empty.
+    character(len=:), allocatable :: designation
+    !> The drawing's scale ("1:5"), "" when the sheet has none.
+    character(len=:), allocatable :: scale
+    !> The student (Разраб.), the group and variant (organisation field), the run's date
+    !> and time ("25.11.2026 18:31"); "" without --student.
+    character(len=:), allocatable :: student, group, variant, stamp
+    !> Лист, Листов.
+    integer :: sheet_number = 1, sheet_count = 1
+  end type title_block_t
 
 contains
 
-  !> The block at the lower right corner of a sheet `width` x `height` mm (nothing when the
-  !> run has no student's header).
+  !> The title block of a run's sheet: the student's fields from the table (--student), the
+  !> drawing's name and scale given.
+  pure function title_block_from_table(table, drawing_name, scale) result(block)
+    !> The results (their student's header).
+    type(step_table_t), intent(in) :: table
+    !> The drawing's name, in the sheet's language.
+    character(*), intent(in) :: drawing_name
+    !> The drawing's scale ("1:5"), or "".
+    character(*), intent(in) :: scale
+    type(title_block_t) :: block
+    block%drawing_name = drawing_name
+    block%designation = ""
+    block%scale = scale
+    block%student = ""
+    block%group = ""
+    block%variant = ""
+    block%stamp = ""
+    if (allocated(table%student_stamp)) then
+      block%student = table%student_name
+      block%group = table%student_group
+      block%variant = table%student_variant
+      block%stamp = table%student_stamp
+    end if
+  end function title_block_from_table
+
+  !> The frame of the sheet's paper and the title block in its lower right corner.
+  pure subroutine put_sheet_format(sheet, block)
+    type(sheet_t), intent(inout) :: sheet
+    type(title_block_t), intent(in) :: block
+    real(wp) :: w, h
+    w = sheet%paper%width
+    h = sheet%paper%height
+    call sheet%set_layer(layer_frame)
+    call sheet%rect(frame_left, frame_margin, w - frame_left - frame_margin, h - 2.0_wp * frame_margin, "border")
+    call put_title_block_at(sheet, block, w - frame_margin - block_width, h - frame_margin - block_height)
+  end subroutine put_sheet_format
+
+  !> The title block with its upper left corner at (x0, y0), mm.
+  pure subroutine put_title_block_at(sheet, block, x0, y0)
+    type(sheet_t), intent(inout) :: sheet
+    type(title_block_t), intent(in) :: block
+    real(wp), intent(in) :: x0, y0
+    real(wp) :: x, size
+    integer :: i
+    real(wp), parameter :: left_columns(5) = [7.0_wp, 10.0_wp, 23.0_wp, 15.0_wp, 10.0_wp]
+    character(len=:), allocatable :: date, name
+    call sheet%set_layer(layer_frame)
+    ! the frame and the thick lines
+    call sheet%rect(x0, y0, block_width, block_height, "thick", fill="#ffffff")
+    call sheet%line(x0 + 65.0_wp, y0, x0 + 65.0_wp, y0 + block_height, "thick")
+    call sheet%line(x0 + 65.0_wp, y0 + 15.0_wp, x0 + block_width, y0 + 15.0_wp, "thick")
+    call sheet%line(x0 + 65.0_wp, y0 + 40.0_wp, x0 + block_width, y0 + 40.0_wp, "thick")
+    call sheet%line(x0 + 135.0_wp, y0 + 15.0_wp, x0 + 135.0_wp, y0 + block_height, "thick")
+    call sheet%line(x0, y0 + 25.0_wp, x0 + 65.0_wp, y0 + 25.0_wp, "thick")
+    call sheet%line(x0, y0 + 20.0_wp, x0 + 65.0_wp, y0 + 20.0_wp, "thick")
+    ! the left part: rows of 5 mm; the columns over the changes' rows, two over the signatures
+    do i = 1, 10
+      if (i == 4 .or. i == 5) cycle
+      call sheet%line(x0, y0 + 5.0_wp * i, x0 + 65.0_wp, y0 + 5.0_wp * i, "thin")
+    end do
+    x = x0
+    do i = 1, 4
+      x = x + left_columns(i)
+      if (i == 1) then
+        call sheet%line(x, y0, x, y0 + 25.0_wp, "thick")
+      else
+        call sheet%line(x, y0, x, y0 + block_height, "thick")
+      end if
+    end do
+    ! the right part: letter, mass, scale; sheet, sheets
+    call sheet%line(x0 + 135.0_wp, y0 + 20.0_wp, x0 + block_width, y0 + 20.0_wp, "thin")
+    call sheet%line(x0 + 135.0_wp, y0 + 35.0_wp, x0 + block_width, y0 + 35.0_wp, "thin")
+    call sheet%line(x0 + 150.0_wp, y0 + 15.0_wp, x0 + 150.0_wp, y0 + 35.0_wp, "thick")
+    call sheet%line(x0 + 167.0_wp, y0 + 15.0_wp, x0 + 167.0_wp, y0 + 35.0_wp, "thick")
+    do i = 1, 2
+      call sheet%line(x0 + 135.0_wp + 5.0_wp * i, y0 + 20.0_wp, x0 + 135.0_wp + 5.0_wp * i, y0 + 35.0_wp, "thin")
+    end do
+    call sheet%line(x0 + 155.0_wp, y0 + 35.0_wp, x0 + 155.0_wp, y0 + 40.0_wp, "thin")
+
+    ! the headings
+    call heading(sheet, x0 + 3.5_wp, y0 + 24.0_wp, words("Rev.", "Изм."))
+    call heading(sheet, x0 + 12.0_wp, y0 + 24.0_wp, words("Sheet", "Лист"))
+    call heading(sheet, x0 + 28.5_wp, y0 + 24.0_wp, words("Doc. No.", "№ докум."))
+    call heading(sheet, x0 + 47.5_wp, y0 + 24.0_wp, words("Sign.", "Подп."))
+    call heading(sheet, x0 + 60.0_wp, y0 + 24.0_wp, words("Date", "Дата"))
+    call role(sheet, y0 + 29.0_wp, words("Drawn", "Разраб."))
+    call role(sheet, y0 + 34.0_wp, words("Checked", "Пров."))
+    call role(sheet, y0 + 39.0_wp, words("Tech. ctrl", "Т.контр."))
+    call role(sheet, y0 + 49.0_wp, words("Std. ctrl", "Н.контр."))
+    call role(sheet, y0 + 54.0_wp, words("Approved", "Утв."))
+    call heading(sheet, x0 + 142.5_wp, y0 + 19.0_wp, words("Lit.", "Лит."))
+    call heading(sheet, x0 + 158.5_wp, y0 + 19.0_wp, words("Mass", "Масса"))
+    call heading(sheet, x0 + 176.0_wp, y0 + 19.0_wp, words("Scale", "Масштаб"))
+    call heading(sheet, x0 + 145.0_wp, y0 + 39.0_wp, words("Sheet ", "Лист ")//int_str(block%sheet_number))
+    call heading(sheet, x0 + 170.0_wp, y0 + 39.0_wp, words("Sheets ", "Листов ")//int_str(block%sheet_count))
+
+    ! the entries
+    call sheet%text(x0 + 137.5_wp, y0 + 29.0_wp, words("S", "У"), "cell", anchor_middle, size=3.0_wp, plain=.true.)
+    if (len(block%scale) > 0) call sheet%text(x0 + 176.0_wp, y0 + 29.0_wp, fitted_text(block%scale, 16.0_wp, &
+      3.0_wp), "cell", anchor_middle, size=3.0_wp, plain=.true.)
+    if (len(block%designation) > 0) call sheet%text(x0 + 125.0_wp, y0 + 9.5_wp, fitted_text(block%designation, &
+      116.0_wp, 3.5_wp), "cell", anchor_middle, size=3.5_wp, plain=.true.)
+    ! the drawing's name: smaller, then on two lines, to fit its 70 x 25 mm
+    name = block%drawing_name
+    size = min(3.0_wp, 66.0_wp / (0.6_wp * max(1, char_count(name))))
+    if (size >= 2.2_wp) then
+      call sheet%text(x0 + 100.0_wp, y0 + 29.0_wp, name, "cell", anchor_middle, size=floor(size * 10.0_wp) / 10.0_wp)
+    else
+      call two_lines(sheet, name)
+    end if
+    call sheet%text(x0 + 100.0_wp, y0 + 46.5_wp, fitted_text(version_string, 66.0_wp, entry_size), "cell", &
+      anchor_middle, size=entry_size, plain=.true.)
+    if (len(block%stamp) > 0) then
+      date = block%stamp(:max(0, index(block%stamp, " ") - 1))
+      ! date as DD.MM.YY (the column is 10 mm)
+      if (len(date) == 10) date = date(1:6)//date(9:10)
+      call sheet%text(x0 + 18.0_wp, y0 + 29.0_wp, fitted_text(block%student, 22.0_wp, entry_size), "cell", &
+        size=entry_size, plain=.true.)
+      call sheet%text(x0 + 60.0_wp, y0 + 29.0_wp, date, "cell", anchor_middle, size=1.9_wp, plain=.true.)
+      call sheet%text(x0 + 100.0_wp, y0 + 51.5_wp, words("run ", "расчет ")//block%stamp, "cell", anchor_middle, &
+        size=entry_size, plain=.true.)
+      call sheet%text(x0 + 160.0_wp, y0 + 46.5_wp, fitted_text(words("group ", "группа ")//block%group, 46.0_wp, &
+        entry_size), "cell", anchor_middle, size=entry_size, plain=.true.)
+      call sheet%text(x0 + 160.0_wp, y0 + 51.5_wp, fitted_text(words("variant ", "вариант ")//block%variant, &
+        46.0_wp, entry_size), "cell", anchor_middle, size=entry_size, plain=.true.)
+    end if
+  contains
+    !> The English or the Russian word, by the sheet's language.
+    pure function words(english, russian) result(text)
+      character(*), intent(in) :: english, russian
+      character(len=:), allocatable :: text
+      if (sheet%lang == lang_ru) then
+        text = russian
+      else
+        text = english
+      end if
+    end function words
+    !> A cell's heading, centred at (x, y).
+    pure subroutine heading(sheet, x, y, text)
+      type(sheet_t), intent(inout) :: sheet
+      real(wp), intent(in) :: x, y
+      character(*), intent(in) :: text
+      call sheet%text(x, y, text, "cell", anchor_middle, plain=.true.)
+    end subroutine heading
+    !> A signature row's role in the first 17 mm.
+    pure subroutine role(sheet, y, text)
+      type(sheet_t), intent(inout) :: sheet
+      real(wp), intent(in) :: y
+      character(*), intent(in) :: text
+      call sheet%text(x0 + 1.0_wp, y, text, "cell", plain=.true.)
+    end subroutine role
+    !> The drawing's name on two lines, split at the blank nearest its middle.
+    pure subroutine two_lines(sheet, text)
+      type(sheet_t), intent(inout) :: sheet
+      character(*), intent(in) :: text
+      integer :: i, cut
+      real(wp) :: s
+      cut = 0
+      do i = 1, len(text)
+        if (text(i:i) /= " ") cycle
+        if (cut == 0 .or. abs(2 * i - len(text)) < abs(2 * cut - len(text))) cut = i
+      end do
+      if (cut == 0) cut = len(text) / 2
+      s = min(3.0_wp, 66.0_wp / (0.6_wp * max(1, char_count(text(:cut)), char_count(text(cut + 1:)))))
+      s = max(floor(s * 10.0_wp) / 10.0_wp, 1.6_wp)
+      call sheet%text(x0 + 100.0_wp, y0 + 26.5_wp, fitted_text(trim(text(:cut)), 66.0_wp, s), "cell", anchor_middle, &
+        size=s)
+      call sheet%text(x0 + 100.0_wp, y0 + 26.5_wp + 1.3_wp * s, fitted_text(trim(adjustl(text(cut + 1:))), 66.0_wp, s), &
+        "cell", anchor_middle, size=s)
+    end subroutine two_lines
+  end subroutine put_title_block_at
+
+  !> The older entry point: the block at the lower right corner of a sheet `width` x `height`
+  !> mm written as SVG elements into `out` (nothing when the run has no student's header).
   pure subroutine put_title_block(out, table, lang, width, height, drawing_name)
     type(text_buffer_t), intent(inout) :: out
     !> The results (their student's header).
@@ -40,113 +233,36 @@ contains
     integer, intent(in) :: lang
     !> Sheet size, mm.
     real(wp), intent(in) :: width, height
-    !> The drawing's name (in the sheet's language) for the name field; default: the deck.
+    !> The drawing's name (in the sheet's language).
     character(*), intent(in), optional :: drawing_name
-    real(wp) :: x0, y0, x
-    integer :: blank, i
-    real(wp), parameter :: left_columns(5) = [7.0_wp, 10.0_wp, 23.0_wp, 15.0_wp, 10.0_wp]
-    character(len=:), allocatable :: name, date
+    type(sheet_t) :: sheet
+    type(paper_t) :: paper
+    integer :: i, c
     if (.not. allocated(table%student_stamp)) return
-    x0 = width - 5.0_wp - block_width
-    y0 = height - 5.0_wp - block_height
-    blank = index(table%student_stamp, " ")
-    date = table%student_stamp(:blank - 1)
-    ! date as DD.MM.YY (the column is 10 mm)
-    if (len(date) == 10) date = date(1:6)//date(9:10)
-    name = table%deck
-    if (present(drawing_name)) name = drawing_name
-
-    ! the frame and the thick lines
-    call out%put(svg_rect(x0, y0, block_width, block_height, 'fill="#ffffff" '//thick))
-    call out%put(svg_line(x0 + 65.0_wp, y0, x0 + 65.0_wp, y0 + block_height, thick))
-    call out%put(svg_line(x0 + 65.0_wp, y0 + 15.0_wp, x0 + block_width, y0 + 15.0_wp, thick))
-    call out%put(svg_line(x0 + 65.0_wp, y0 + 40.0_wp, x0 + block_width, y0 + 40.0_wp, thick))
-    call out%put(svg_line(x0 + 135.0_wp, y0 + 15.0_wp, x0 + 135.0_wp, y0 + block_height, thick))
-    call out%put(svg_line(x0, y0 + 25.0_wp, x0 + 65.0_wp, y0 + 25.0_wp, thick))
-    call out%put(svg_line(x0, y0 + 20.0_wp, x0 + 65.0_wp, y0 + 20.0_wp, thick))
-    ! the left part: rows of 5 mm; the columns over the changes' rows, two over the signatures
-    do i = 1, 10
-      if (i == 4 .or. i == 5) cycle
-      call out%put(svg_line(x0, y0 + 5.0_wp * i, x0 + 65.0_wp, y0 + 5.0_wp * i, thin))
+    paper%name = ""
+    paper%width = width
+    paper%height = height
+    call sheet%open(paper, lang, "", "")
+    if (present(drawing_name)) then
+      call put_title_block_at(sheet, title_block_from_table(table, drawing_name, ""), width - frame_margin - block_width, &
+        height - frame_margin - block_height)
+    else
+      call put_title_block_at(sheet, title_block_from_table(table, "", ""), width - frame_margin - block_width, &
+        height - frame_margin - block_height)
+    end if
+    ! a sheet not on the model has not the model's style sheet: every style written out
+    do i = 1, sheet%count
+      associate (e => sheet%items(i))
+        do c = 1, size(line_classes)
+          if (line_classes(c)%name /= e%class) cycle
+          e%stroke = trim(line_classes(c)%stroke)
+          e%width = line_classes(c)%width
+          if (len(e%fill) == 0) e%fill = trim(line_classes(c)%fill)
+        end do
+        e%class = ""
+      end associate
     end do
-    x = x0
-    do i = 1, 4
-      x = x + left_columns(i)
-      if (i == 1) then
-        call out%put(svg_line(x, y0, x, y0 + 25.0_wp, thick))
-      else
-        call out%put(svg_line(x, y0, x, y0 + block_height, thick))
-      end if
-    end do
-    ! the right part: letter, mass, scale; sheet, sheets
-    call out%put(svg_line(x0 + 135.0_wp, y0 + 20.0_wp, x0 + block_width, y0 + 20.0_wp, thin))
-    call out%put(svg_line(x0 + 135.0_wp, y0 + 35.0_wp, x0 + block_width, y0 + 35.0_wp, thin))
-    call out%put(svg_line(x0 + 150.0_wp, y0 + 15.0_wp, x0 + 150.0_wp, y0 + 35.0_wp, thick))
-    call out%put(svg_line(x0 + 167.0_wp, y0 + 15.0_wp, x0 + 167.0_wp, y0 + 35.0_wp, thick))
-    do i = 1, 2
-      call out%put(svg_line(x0 + 135.0_wp + 5.0_wp * i, y0 + 20.0_wp, x0 + 135.0_wp + 5.0_wp * i, y0 + 35.0_wp, thin))
-    end do
-    call out%put(svg_line(x0 + 155.0_wp, y0 + 35.0_wp, x0 + 155.0_wp, y0 + 40.0_wp, thin))
-
-    ! the headings
-    call out%put(heading(x0 + 3.5_wp, y0 + 24.0_wp, words("Rev.", "Изм.")))
-    call out%put(heading(x0 + 12.0_wp, y0 + 24.0_wp, words("Sheet", "Лист")))
-    call out%put(heading(x0 + 28.5_wp, y0 + 24.0_wp, words("Doc. No.", "№ докум.")))
-    call out%put(heading(x0 + 47.5_wp, y0 + 24.0_wp, words("Sign.", "Подп.")))
-    call out%put(heading(x0 + 60.0_wp, y0 + 24.0_wp, words("Date", "Дата")))
-    call out%put(role(y0 + 29.0_wp, words("Drawn", "Разраб.")))
-    call out%put(role(y0 + 34.0_wp, words("Checked", "Пров.")))
-    call out%put(role(y0 + 39.0_wp, words("Tech. ctrl", "Т.контр.")))
-    call out%put(role(y0 + 49.0_wp, words("Std. ctrl", "Н.контр.")))
-    call out%put(role(y0 + 54.0_wp, words("Approved", "Утв.")))
-    call out%put(heading(x0 + 142.5_wp, y0 + 19.0_wp, words("Lit.", "Лит.")))
-    call out%put(heading(x0 + 158.5_wp, y0 + 19.0_wp, words("Mass", "Масса")))
-    call out%put(heading(x0 + 176.0_wp, y0 + 19.0_wp, words("Scale", "Масштаб")))
-    call out%put(heading(x0 + 145.0_wp, y0 + 39.0_wp, words("Sheet 1", "Лист 1")))
-    call out%put(heading(x0 + 170.0_wp, y0 + 39.0_wp, words("Sheets 1", "Листов 1")))
-
-    ! the entries
-    call out%put(svg_text(x0 + 18.0_wp, y0 + 29.0_wp, fitted_text(table%student_name, 22.0_wp, entry_size), &
-      'font-size="2.4"'))
-    call out%put(svg_text(x0 + 60.0_wp, y0 + 29.0_wp, date, 'font-size="1.9" text-anchor="middle"'))
-    call out%put(svg_text(x0 + 137.5_wp, y0 + 29.0_wp, words("S", "У"), 'font-size="3.0" text-anchor="middle"'))
-    call out%put(svg_text(x0 + 125.0_wp, y0 + 9.5_wp, fitted_text(table%student_group//"."//table%student_variant// &
-      "   "//table%deck, 116.0_wp, 3.5_wp), 'font-size="3.5" text-anchor="middle"'))
-    call out%put(svg_text(x0 + 100.0_wp, y0 + 29.0_wp, fitted_text(name, 66.0_wp, 3.0_wp), &
-      'font-size="3.0" text-anchor="middle"'))
-    call out%put(svg_text(x0 + 100.0_wp, y0 + 46.5_wp, fitted_text(version_string, 66.0_wp, entry_size), &
-      'font-size="2.4" text-anchor="middle"'))
-    call out%put(svg_text(x0 + 100.0_wp, y0 + 51.5_wp, words("run ", "расчет ")//table%student_stamp, &
-      'font-size="2.4" text-anchor="middle"'))
-    call out%put(svg_text(x0 + 160.0_wp, y0 + 46.5_wp, fitted_text(words("group ", "группа ")//table%student_group, 46.0_wp, &
-      entry_size), 'font-size="2.4" text-anchor="middle"'))
-    call out%put(svg_text(x0 + 160.0_wp, y0 + 51.5_wp, fitted_text(words("variant ", "вариант ")//table%student_variant, &
-      46.0_wp, entry_size), 'font-size="2.4" text-anchor="middle"'))
-  contains
-    !> The English or the Russian word, by the sheet's language.
-    pure function words(english, russian) result(text)
-      character(*), intent(in) :: english, russian
-      character(len=:), allocatable :: text
-      if (lang == lang_ru) then
-        text = russian
-      else
-        text = english
-      end if
-    end function words
-    !> A cell's heading, centred at (x, y).
-    pure function heading(x, y, text) result(line)
-      real(wp), intent(in) :: x, y
-      character(*), intent(in) :: text
-      character(len=:), allocatable :: line
-      line = svg_text(x, y, text, 'font-size="2.0" text-anchor="middle"')
-    end function heading
-    !> A signature row's role in the first 17 mm.
-    pure function role(y, text) result(line)
-      real(wp), intent(in) :: y
-      character(*), intent(in) :: text
-      character(len=:), allocatable :: line
-      line = svg_text(x0 + 1.0_wp, y, text, 'font-size="2.0"')
-    end function role
+    call put_sheet_elements(sheet, out)
   end subroutine put_title_block
 
   !> `text` cut (with "...") to fit `room` mm at font size `size` mm (0.6 x size per character),

@@ -13,13 +13,15 @@ module kinetostat_run
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_csv_writer, only: write_csv
   use kinetostat_json_writer, only: write_json
-  use kinetostat_svg_writer, only: write_svg
-  use kinetostat_svg_mechanism, only: write_svg_mechanism
+  use kinetostat_run_sheet, only: write_run_sheet
+  use kinetostat_mechanism_sheet, only: write_mechanism_sheet
+  use kinetostat_sheet, only: sheet_t
+  use kinetostat_sheet_svg, only: write_sheet_svg
+  use kinetostat_sheet_dxf, only: write_sheet_dxf
   use kinetostat_sketch, only: sketch_t
   use kinetostat_drawing, only: drawing_t, drawing_from_sketch
   use kinetostat_plans, only: plans_t, build_plans, write_plans_json
   use kinetostat_svg_plans, only: write_svg_plans
-  use kinetostat_dxf, only: write_dxf
   use kinetostat_error, only: exit_usage
   use kinetostat_labels, only: lang_en
   use kinetostat_override, only: override_t, mark_overrides
@@ -147,6 +149,8 @@ contains
     type(echo_cursor_t) :: head
     !> The moving links and frame pairs (--shaking).
     type(mass_model_t) :: model
+    type(sheet_t) :: sheet
+    character(len=:), allocatable :: pairs_asked
     integer :: first, rows
 
     call mech%read_deck(source, error)
@@ -173,6 +177,8 @@ contains
     table%kinematics_shown = options%kinematics
     table%kinematics_wanted = options%kinematics .or. options%link_frame .or. options%format == format_svg .or. &
       options%plans .or. options%format == format_plans .or. options%format == format_dxf .or. options%shaking
+    pairs_asked = ""
+    if (allocated(options%pairs)) pairs_asked = options%pairs
     rows = block_rows
     if (options%block_rows > 0) rows = options%block_rows
     head%chunk = options%echo_chunk
@@ -243,18 +249,22 @@ contains
             if (allocated(error)) return
           end do
         end if
-      case (format_plans, format_dxf)
+      case (format_plans)
         call write_at_step(mech, table, options, out, error)
         if (allocated(error)) return
-      case (format_svg)
+      case (format_svg, format_dxf)
         call guard_drawable(table, error)
         if (allocated(error)) return
         if (options%at_step > 0) then
           call write_at_step(mech, table, options, out, error)
-        else if (allocated(options%pairs)) then
-          call write_svg(mech%title(options%lang), table, options%pairs, options%lang, out, error)
         else
-          call write_svg(mech%title(options%lang), table, "", options%lang, out, error)
+          call write_run_sheet(mech%title(options%lang), table, pairs_asked, options%lang, sheet, error)
+          if (allocated(error)) return
+          if (options%format == format_dxf) then
+            call write_sheet_dxf(sheet, out)
+          else
+            call write_sheet_svg(sheet, out)
+          end if
         end if
         if (allocated(error)) return
       case default
@@ -321,6 +331,7 @@ contains
     type(sketch_t) :: topo
     type(drawing_t) :: drawing
     type(plans_t) :: plans
+    type(sheet_t) :: sheet
     integer :: k
     k = options%at_step
     if (k > table%row_count()) then
@@ -341,13 +352,16 @@ contains
     if (options%plans) then
       call build_plans(topo, drawing, table, k, plans)
       call write_plans_json(plans, table, k, out)
-    else if (options%format == format_dxf) then
-      call write_dxf(mech%title(lang_en)//" - "//table%deck//" - "//table%row_name//" "//int_str(k), drawing, out)
     else if (options%format == format_plans) then
       call build_plans(topo, drawing, table, k, plans)
       call write_svg_plans(mech%title(options%lang), table, k, plans, options%lang, out)
     else
-      call write_svg_mechanism(mech%title(options%lang), table, k, drawing, options%lang, out)
+      call write_mechanism_sheet(mech%title(options%lang), table, k, drawing, options%lang, sheet)
+      if (options%format == format_dxf) then
+        call write_sheet_dxf(sheet, out)
+      else
+        call write_sheet_svg(sheet, out)
+      end if
     end if
   end subroutine write_at_step
 

@@ -23,4 +23,4 @@ else fail cosmetics-interpolated-zero "$(grep -A6 'VALUE(34)' "$out")"; fi
 # cycle is roundoff (-7.2e-15 N*m in --format summary's work); the legend says 0
 grep -v '_f = \|%f2 = \|%f23 = \|%f3 = ' data/friction_slider_crank.nml >"$cli_tmp/cosmetics_conservative.nml"
 run_ks "$cli_tmp/cosmetics_conservative.nml" --format svg
-grep -q '>mean 0 N\*m<' "$out" && pass || fail cosmetics-svg-mean-zero "$(grep -o 'mean [^<]*' "$out" | tail -1)"
+grep -q '>mean 0 N·m<' "$out" && pass || fail cosmetics-svg-mean-zero "$(grep -o 'mean [^<]*' "$out" | tail -1)"

@@ -1,6 +1,7 @@
-# --format dxf --at K: the mechanism at step K as an ASCII DXF (R12 entities, layers LINKS,
-# JOINTS, GUIDES, FORCES, TEXT), read back by tools/dxf_check.py against the CSV's positions
-# on every linkage deck at three steps; the check can fail; usage errors.
+# --format dxf --at K: the --at sheet as an ASCII DXF (R12 entities, the drawing model's
+# layers), read back by tools/dxf_check.py against the CSV's positions on every linkage deck
+# at three steps (English and Russian); --format dxf: the sheet of a run; the check can fail;
+# usage errors.
 dxf_check="$root/tools/dxf_check.py"
 for deck in data/*.nml; do
   name=$(basename "$deck" .nml)
@@ -9,7 +10,8 @@ for deck in data/*.nml; do
   cp "$out" "$cli_tmp/$name.kin.csv"
   steps=$(($(wc -l <"$out") - 1))
   for k in 1 $(((steps + 1) / 2)) "$steps"; do
-    run_ks "$deck" --format dxf --at "$k"
+    lang=en; [ "$k" = 1 ] && lang=ru
+    run_ks "$deck" --format dxf --at "$k" --lang "$lang"
     if [ "$rc" -ne 0 ]; then fail "dxf-runs-$name-$k" "rc=$rc: $(head -c 300 "$err")"; continue; fi
     cp "$out" "$cli_tmp/$name.$k.dxf"
     python3 "$dxf_check" "$cli_tmp/$name.$k.dxf" "$cli_tmp/$name.kin.csv" "$k" >"$cli_tmp/check.out" 2>&1 \
@@ -21,5 +23,14 @@ awk 'BEGIN{c=0} {print} /^CIRCLE$/ {c=1} c==1 && /^ *10$/ {getline; printf "%.6f
   "$cli_tmp/sixbar.1.dxf" >"$cli_tmp/moved.dxf"
 python3 "$dxf_check" "$cli_tmp/moved.dxf" "$cli_tmp/sixbar.kin.csv" 1 >/dev/null 2>&1 \
   && fail dxf-check-can-fail "a moved joint was accepted" || pass
-expect_exit dxf-needs-at 1 data/sixbar.nml --format dxf
+# without --at: the sheet of the run (hodographs, diagrams) as DXF, read back; --pairs selects
+for deck in data/pr3207_flywheel.nml data/gears_reducer.nml; do
+  name=$(basename "$deck" .nml)
+  run_ks "$deck" --format dxf --lang ru
+  cp "$out" "$cli_tmp/$name.sheet.dxf"
+  [ "$rc" -eq 0 ] && python3 "$dxf_check" "$cli_tmp/$name.sheet.dxf" >"$cli_tmp/check.out" 2>&1 \
+    && pass || fail "dxf-sheet-$name" "rc=$rc $(head -10 "$cli_tmp/check.out")"
+done
+run_ks data/pr3207.nml --format dxf --pairs F16
+[ "$rc" -eq 0 ] && grep -q '^F16$' "$out" && ! grep -q '^F36$' "$out" && pass || fail dxf-sheet-pairs "rc=$rc"
 expect_exit dxf-not-gears 1 data/gears_reducer.nml --format dxf --at 1

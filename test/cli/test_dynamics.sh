@@ -192,7 +192,7 @@ PY
 then pass; else fail dynamics-shaking-flywheel "free machine with a flywheel: M_frame differs from M_shake (exit $rc)"; fi
 # the SVG sheet draws M_d(phi) of the table (a dashed curve, not the constant level)
 run_ks "$(deck_with md_svg "$fw" "s/j_rotor = 0.6 /j_rotor = 0.6, $mdt /")" --format svg
-if [ "$rc" -eq 0 ] && grep -q 'stroke="#333333" stroke-width="0.4" stroke-dasharray="2,1"' "$out"; then pass
+if [ "$rc" -eq 0 ] && grep -q 'stroke="#333333" stroke-width="0.4" fill="none" stroke-dasharray="2,1"' "$out"; then pass
 else fail dynamics-md-table-svg "exit $rc; no dashed M_d(phi) curve on the SVG sheet"; fi
 
 # --- a linear actuator's generic deck reduced to its stroke equals the dedicated PR 3050

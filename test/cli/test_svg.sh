@@ -83,9 +83,12 @@ for spec in pr3207:2 pr3050:4 sixbar:2 sixbar_example:1 assur_pr3207:2 assur_six
   python3 - "$cli_tmp/${name}_at.svg" "$cli_tmp/$name.csv" "$k" <<'PY' >"$cli_tmp/check.out" 2>&1 \
     && pass || fail "svg-at-forces-$name" "$(cat "$cli_tmp/check.out")"
 import csv, re, sys
-svg, table, k = open(sys.argv[1]).read(), list(csv.DictReader(open(sys.argv[2]))), int(sys.argv[3])
+import xml.etree.ElementTree as ET
+table, k = list(csv.DictReader(open(sys.argv[2]))), int(sys.argv[3])
 row = table[k - 1]
-listed = dict(re.findall(r">(F\w+) = (-?[0-9.]+) N(?: at [0-9.]+ deg)?</text>", svg))
+# the texts as a reader sees them (typeset: F<tspan>21</tspan> reads F21)
+texts = ["".join(t.itertext()) for t in ET.parse(sys.argv[1]).getroot().iter("{http://www.w3.org/2000/svg}text")]
+listed = dict(m.groups() for m in (re.fullmatch(r"(F\w+) = (-?[0-9.]+) N(?: at [0-9.]+ deg)?", t) for t in texts) if m)
 pairs = [c for c in row if c + "G" in row]
 missing = [p for p in pairs if p not in listed]
 assert not missing, f"pair forces not on the sheet: {missing}"
