@@ -6,10 +6,10 @@ _kinetostat() {
   local cur prev words cword
   cur="${COMP_WORDS[COMP_CWORD]}"
   prev="${COMP_WORDS[COMP_CWORD-1]}"
-  local kinds="pr3207 pr3050 sixbar assur gears cam fourbar engine"
+  local kinds="pr3207 pr3050 sixbar assur gears cam linkage gear_geometry planetary_synthesis cam_profile fourbar engine"
   local run_opts="-o --output --set --format --pairs --at --plans --student --group --variant --lang --kinematics --frame --max-deck-size --allow-selfcheck-failure --quiet --strict --help --version"
   case "$prev" in
-    --format) COMPREPLY=($(compgen -W "table csv json svg summary plans dxf" -- "$cur")); return ;;
+    --format) COMPREPLY=($(compgen -W "table csv json svg summary plans dxf deck" -- "$cur")); return ;;
     --frame) COMPREPLY=($(compgen -W "global link" -- "$cur")); return ;;
     --lang) COMPREPLY=($(compgen -W "en ru" -- "$cur")); return ;;
     -o|--output) COMPREPLY=($(compgen -f -- "$cur")); return ;;
@@ -37,7 +37,7 @@ _kinetostat() {
   if [[ "$cur" == -* ]]; then
     COMPREPLY=($(compgen -W "$run_opts" -- "$cur"))
   elif [ "$COMP_CWORD" -eq 1 ]; then
-    COMPREPLY=($(compgen -W "template diff sweep -" -- "$cur") $(compgen -f -X '!*.nml' -- "$cur") $(compgen -d -- "$cur"))
+    COMPREPLY=($(compgen -W "template diff sweep contour -" -- "$cur") $(compgen -f -X '!*.nml' -- "$cur") $(compgen -d -- "$cur"))
   else
     COMPREPLY=($(compgen -f -X '!*.nml' -- "$cur") $(compgen -d -- "$cur"))
   fi

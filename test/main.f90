@@ -24,12 +24,14 @@ program kinetostat_tests
   use test_hostile, only: run_hostile_tests
   use test_dynamics, only: run_dynamics_tests
   use test_shaking, only: run_shaking_tests
+  use test_synthesis, only: run_synthesis_tests
   use, intrinsic :: iso_fortran_env, only: error_unit
   implicit none
   !> Suite names, in the order they run.
   character(*), parameter :: suite_names(*) = [character(len=11) :: &
     "foundation", "pr3207", "pr3050", "sixbar", "gears", "cam", "assur", "assur_ext", "friction", "io", &
-    "kinematics", "svg", "decimal", "lapack", "blocks", "records", "shaking", "dynamics", "hostile", "linkage"]
+    "kinematics", "svg", "decimal", "lapack", "blocks", "records", "shaking", "dynamics", "hostile", "linkage", &
+    "synthesis"]
   type(test_counts_t) :: t
   logical :: selected(size(suite_names))
   integer :: i
@@ -83,6 +85,7 @@ contains
     case ("hostile"); call run_hostile_tests(t)
     case ("pr3207"); call run_pr3207_tests(t)
     case ("linkage"); call run_linkage_tests(t)
+    case ("synthesis"); call run_synthesis_tests(t)
     case ("dynamics"); call run_dynamics_tests(t)
     case ("pr3050"); call run_pr3050_tests(t)
     case ("sixbar"); call run_sixbar_tests(t)

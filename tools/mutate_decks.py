@@ -297,6 +297,8 @@ AT_FORMATS = [("svg-at", ["--format", "svg", "--at", "1"], "xml"), ("plans", ["-
               ("plans-json", ["--format", "json", "--at", "1", "--plans"], "json"),
               ("dxf", ["--format", "dxf", "--at", "1"], "dxf")]
 LINKAGE_GROUPS = {"pr3207", "pr3050", "sixbar", "assur", "linkage"}
+#: The design kinds: no sheet of forces (--format svg is a usage error).
+DESIGN_GROUPS = {"gear_geometry", "planetary_synthesis", "cam_profile"}
 CYRILLIC_TITLE = "\u0428\u0430\u0440\u043d\u0438\u0440\u043d\u044b\u0439 \u043c\u0435\u0445\u0430\u043d\u0438\u0437\u043c \u0401\u0451"
 CYRILLIC_COMMENT = "! \u0418\u0441\u0445\u043e\u0434\u043d\u044b\u0435 \u0434\u0430\u043d\u043d\u044b\u0435, \u0432\u0430\u0440\u0438\u0430\u043d\u0442 7"
 #: A row of the table of capacities in docs/cli.md: group, array, limit, what, one too many.
@@ -334,7 +336,8 @@ def string_mutations(text, raw, rng, limits, every_output):
         return made
     name = group.group(1).lower()
     slash = m.find("/", group.end())
-    formats = STRING_FORMATS + (AT_FORMATS if name in LINKAGE_GROUPS else [])
+    formats = [f for f in STRING_FORMATS if not (name in DESIGN_GROUPS and f[0] == "svg")]
+    formats += AT_FORMATS if name in LINKAGE_GROUPS else []
     titled = with_title(text, HOSTILE_TITLE)
     data = titled.encode("utf-8") if titled else raw
     if every_output:

@@ -17,13 +17,14 @@ module kinetostat_cli
   use kinetostat_output, only: write_output_file, write_output_stdout
   use kinetostat_spool, only: spool_t
   use kinetostat_mechanism, only: mechanism_t
-  use kinetostat_labels, only: lang_from_name
+  use kinetostat_labels, only: lang_from_name, lang_en
   use kinetostat_run, only: run_options_t, run_mechanism, format_from_name, format_names, format_svg, format_json, &
     format_plans, format_dxf
   use kinetostat_registry, only: create_mechanism, known_kinds, known_columns
   use kinetostat_step_table, only: column_t
   use kinetostat_diff, only: diff_options_t, diff_outputs
   use kinetostat_linkage_layout, only: linkage_structure_text
+  use kinetostat_gear_geometry_layout, only: gear_contour_text
   use kinetostat_assur_presets, only: assur_preset, preset_names
   use kinetostat_assur_layout, only: assur_mechanism_t
   use kinetostat_assur_balance, only: assur_balance, balance_method_names, balance_full
@@ -38,21 +39,23 @@ module kinetostat_cli
 
   !> One-line usage, printed with usage errors.
   character(*), parameter :: usage_line = "usage: kinetostat DECK|- [--set NAME=VALUE]... [-o FILE] " // &
-    "[--format table|csv|json|svg|summary|plans|dxf] [--pairs LIST] [--at K] [--plans] [--lang en|ru] " // &
+    "[--format table|csv|json|svg|summary|plans|dxf|deck] [--pairs LIST] [--at K] [--plans] [--lang en|ru] " // &
     "[--kinematics] [--frame global|link] [--shaking] [--student NAME] [--group G] [--variant N] " // &
     "[--max-deck-size BYTES] [--allow-selfcheck-failure] [--quiet] " // &
     "[--strict] | " // &
     "kinetostat sweep DECK --vary NAME=FROM:TO:COUNT... [--part K/N] [--jobs N] | " // &
     "kinetostat template KIND [-o FILE] | kinetostat diff A B [--rtol R] [--atol A] | " // &
     "kinetostat balance DECK [-o FILE] [--method full|crank|partial] [--fraction F] | "// &
-    "kinetostat structure DECK [--lang ru] | --help | --version"
+    "kinetostat structure DECK [--lang ru] | kinetostat contour DECK [--set NAME=VALUE]... [-o FILE] | " // &
+    "--help | --version"
 
   !> Help text (the kinds are appended from the registry).
   character(*), parameter :: help_lines(*) = [character(len=92) :: &
     "kinetostat - kinetostatic force analysis of planar mechanisms", &
     "", &
     "  kinetostat DECK [--set NAME=VALUE]... [-o FILE]", &
-    "                  [--format table|csv|json|svg|summary|plans|dxf] [--pairs LIST] [--at K]", &
+    "                  [--format table|csv|json|svg|summary|plans|dxf|deck] [--pairs LIST]", &
+    "                  [--at K]", &
     "                  [--plans] [--lang en|ru] [--kinematics] [--shaking]", &
     "                  [--max-deck-size BYTES] [--allow-selfcheck-failure] [--quiet] [--strict]", &
     "  kinetostat sweep DECK --vary NAME=FROM:TO:COUNT... [--set NAME=VALUE]... [--part K/N]", &
@@ -65,6 +68,8 @@ module kinetostat_cli
     "                  an &assur deck with counterweights added (docs/shaking.md); before/", &
     "                  after figures on stderr; --fraction: partial, default 0.5", &
     "  kinetostat structure DECK [--lang ru] [-o FILE]   structural analysis of a &linkage deck", &
+    "  kinetostat contour DECK [--set NAME=VALUE]... [-o FILE]   the blocking contour of a", &
+    "                  &gear_geometry deck's pair as CSV: curve,x1,x2", &
     "  kinetostat --help | --version", &
     "", &
     "DECK is a Fortran namelist file; its first group names the mechanism; - reads it", &
@@ -74,8 +79,9 @@ module kinetostat_cli
     "-o FILE, --output FILE  write to FILE (atomically: nothing is left behind on error)", &
     "--format    table (default, the legacy printout), csv (full precision), json, svg", &
     "            (a sheet of force hodographs and diagrams; see docs/pictures.md), dxf (the", &
-    "            same sheet for CAD programs), or summary", &
-    "            (a CSV header and one row: max, min, where, mean per column, work)", &
+    "            same sheet for CAD programs), summary (a CSV header and one row: max, min,", &
+    "            where, mean per column, work; a design's values themselves), or deck (a", &
+    "            design's analysis deck: &gears, &cam)", &
     "--pairs     with svg or dxf: only these pair forces, e.g. --pairs F16,F36", &
     "--at K      with svg: the mechanism drawn at step K with every force of the step", &
     "--at K      with plans: the graphical method's sheet of step K (plans of velocities and", &
@@ -84,7 +90,8 @@ module kinetostat_cli
     "            surname, group, variant) on the legacy table and a title block on the sheets", &
     "--at K      with dxf: the mechanism at step K (the svg sheet) as an ASCII DXF for CAD", &
     "--plans     with json and --at K: the graphical method at step K (plans of velocities and", &
-    "            accelerations, force polygons, Zhukovsky's lever) as numbers", &
+    "            accelerations, force polygons, Zhukovsky's lever) as numbers; with dxf", &
+    "            and --at K: its sheet (--format plans) as a DXF drawing", &
     "--lang      language of the table's labels: en (default) or ru (the 1991 printouts)", &
     "--kinematics  csv and json add positions of joints and centres of mass, link angles,", &
     "            angular speeds and accelerations, accelerations of the centres of mass and", &
@@ -139,6 +146,8 @@ module kinetostat_cli
     logical :: sweep = .false.
     !> The structure subcommand was given (`kinetostat structure DECK`).
     logical :: structure = .false.
+    !> The contour subcommand was given (`kinetostat contour DECK`).
+    logical :: contour = .false.
     !> The --vary axes of a sweep.
     type(vary_t), allocatable :: varies(:)
     !> --part K/N of a sweep: this process runs block K of N.
@@ -215,6 +224,8 @@ contains
         call sweep_deck(args, out, warnings, error)
       else if (args%structure) then
         call structure_of_deck(args, out, error)
+      else if (args%contour) then
+        call contour_of_deck(args, out, error)
       else if (args%balance) then
         call balance_deck(args, out, error)
       else
@@ -666,6 +677,27 @@ contains
     call linkage_structure_text(source, args%options%lang, out, error)
   end subroutine structure_of_deck
 
+  !> `kinetostat contour DECK`: the blocking contour of a `&gear_geometry` deck's pair (with
+  !> the --set overrides) as long-format CSV.
+  subroutine contour_of_deck(args, out, error)
+    type(cli_args_t), intent(in) :: args
+    type(text_buffer_t), intent(inout) :: out
+    type(error_t), allocatable, intent(out) :: error
+    type(deck_source_t) :: source, patched
+    call load_group_deck(args%deck, "gear_geometry", "contour: only &gear_geometry decks have a blocking "// &
+      "contour (a spur pair's z1, z2 and basic rack)", source, error)
+    if (allocated(error)) return
+    if (.not. allocated(args%options%overrides)) then
+      call gear_contour_text(source, out, error)
+      return
+    end if
+    call apply_overrides(source, args%options%overrides, patched)
+    call gear_contour_text(patched, out, error)
+    if (allocated(error)) then
+      if (error%code == exit_input) call blame_override(source, "gear_geometry", args%options%overrides, error)
+    end if
+  end subroutine contour_of_deck
+
   !> The deck at `path`, which must be of group `wanted`; otherwise an input error naming the
   !> deck and its group with `why`.
   subroutine load_group_deck(path, wanted, why, source, error)
@@ -853,6 +885,12 @@ contains
           return
         end if
         args%sweep = .true.
+      case ("contour")
+        if (i /= 1) then
+          call fatal_error(error, exit_usage, "contour must come first: kinetostat contour DECK [-o FILE]")
+          return
+        end if
+        args%contour = .true.
       case ("structure")
         if (i /= 1) then
           call fatal_error(error, exit_usage, "structure must come first: kinetostat structure DECK [--lang ru]")
@@ -892,6 +930,9 @@ contains
     else if (args%structure .and. (args%format_given .or. allocated(args%options%overrides) .or. &
              args%options%at_step > 0)) then
       call fatal_error(error, exit_usage, "structure takes a deck, --lang and -o only")
+    else if (args%contour .and. (args%format_given .or. args%options%at_step > 0 .or. args%options%lang /= lang_en .or. &
+             args%options%kinematics .or. args%options%shaking)) then
+      call fatal_error(error, exit_usage, "contour takes a deck, --set and -o only")
     else if (args%sweep .and. .not. allocated(args%varies)) then
       call fatal_error(error, exit_usage, "sweep needs at least one --vary NAME=FROM:TO:COUNT")
     else if (.not. args%sweep .and. (allocated(args%varies) .or. args%parts > 1 .or. args%jobs > 0)) then
@@ -909,8 +950,9 @@ contains
       call fatal_error(error, exit_usage, "sweep writes the summary format only (--format summary)")
     else if (allocated(args%options%pairs) .and. all(args%options%format /= [format_svg, format_dxf])) then
       call fatal_error(error, exit_usage, "--pairs needs --format svg or dxf")
-    else if (args%options%plans .and. (args%options%format /= format_json .or. args%options%at_step == 0)) then
-      call fatal_error(error, exit_usage, "--plans needs --format json and --at K")
+    else if (args%options%plans .and. (all(args%options%format /= [format_json, format_dxf]) .or. &
+      args%options%at_step == 0)) then
+      call fatal_error(error, exit_usage, "--plans needs --format json or dxf and --at K")
     else if (args%options%format == format_plans .and. args%options%at_step == 0) then
       call fatal_error(error, exit_usage, "--format plans needs --at K (the step whose plans are drawn)")
     else if (args%options%at_step > 0 .and. all(args%options%format /= [format_svg, format_plans, format_dxf]) &

@@ -14,6 +14,9 @@ module kinetostat_registry
   use kinetostat_gears_layout, only: new_gears
   use kinetostat_cam_layout, only: new_cam
   use kinetostat_linkage_layout, only: new_linkage
+  use kinetostat_gear_geometry_layout, only: new_gear_geometry
+  use kinetostat_planetary_synthesis_layout, only: new_planetary_synthesis
+  use kinetostat_cam_profile_layout, only: new_cam_profile
   implicit none
   private
   public :: create_mechanism, known_kinds, known_columns
@@ -31,7 +34,7 @@ module kinetostat_registry
   !> One registered kind.
   type :: registry_entry_t
     !> Namelist group name of the kind's decks.
-    character(len=16) :: name = ""
+    character(len=24) :: name = ""
     !> Its constructor.
     procedure(constructor_i), pointer, nopass :: create => null()
   end type registry_entry_t
@@ -48,7 +51,10 @@ contains
       registry_entry_t("assur", new_assur), &
       registry_entry_t("gears", new_gears), &
       registry_entry_t("cam", new_cam), &
-      registry_entry_t("linkage", new_linkage)]
+      registry_entry_t("linkage", new_linkage), &
+      registry_entry_t("gear_geometry", new_gear_geometry), &
+      registry_entry_t("planetary_synthesis", new_planetary_synthesis), &
+      registry_entry_t("cam_profile", new_cam_profile)]
   end function registry_entries
 
   !> The kinds as a comma-separated list, for messages and --help.

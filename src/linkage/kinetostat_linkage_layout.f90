@@ -134,6 +134,17 @@ contains
         end associate
       end do
       if (self%deck%g > 0.0_wp) out%down = mech%gravity / self%deck%g
+      ! the structural analysis's units: the plans draw one force polygon per unit
+      !GCC$ novector
+      do k = 1, size(mech%units)
+        allocate (joints(size(mech%units(k)%links)))
+        !GCC$ novector
+        do i = 1, size(joints)
+          joints(i) = link_name(mech, mech%units(k)%links(i))
+        end do
+        call out%add_group(joints, mech%units(k)%class, mech%units(k)%label)
+        deallocate (joints)
+      end do
     end associate
   end subroutine sketch
 

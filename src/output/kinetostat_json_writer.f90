@@ -12,7 +12,7 @@ module kinetostat_json_writer
   use kinetostat_row_blocks, only: put_row_blocks
   implicit none
   private
-  public :: write_json, json_string
+  public :: write_json, json_string, put_run_identity, put_run_verdict
 
 contains
 
@@ -75,51 +75,16 @@ contains
       end do
       call out%put(line//"},")
     end if
-    if (table%has_selfcheck .and. table%max_drive_deviation >= 0.0_wp) then
-      call out%put('  "selfcheck": {"max_residual": '//full_number(table%max_residual)// &
-        ', "max_mismatch": '//full_number(table%max_mismatch)//', "driver": '//json_string(table%driver)// &
-        ', "max_drive_deviation": '//full_number(table%max_drive_deviation)// &
-        ', "limit": '//full_number(selfcheck_tolerance)//', "ok": '// &
-        trim(merge("true ", "false", table%max_residual <= selfcheck_tolerance .and. &
-                   table%max_mismatch <= selfcheck_tolerance .and. &
-                   table%max_drive_deviation <= selfcheck_tolerance))//"},")
-    else if (table%has_selfcheck) then
-      call out%put('  "selfcheck": {"max_residual": '//full_number(table%max_residual)// &
-        ', "max_mismatch": '//full_number(table%max_mismatch)//', "driver": '//json_string(table%driver)// &
-        ', "limit": '//full_number(selfcheck_tolerance)//', "ok": '// &
-        trim(merge("true ", "false", table%max_residual <= selfcheck_tolerance .and. &
-                   table%max_mismatch <= selfcheck_tolerance))//"},")
-    else
-      call out%put('  "selfcheck": null,')
-    end if
-    line = '  "warnings": ['
-    do i = 1, table%warning_count()
-      if (i > 1) line = line//", "
-      line = line//json_string(table%warnings(i)%text)
-    end do
-    call out%put(line//"]")
+    call put_run_verdict(table, out)
     call out%put("}")
   contains
     !> The next part of the head (see `head`).
     subroutine head_part(cur)
       type(echo_cursor_t), intent(inout) :: cur
-      integer :: i, k
+      integer :: k
       if (cur%record == 0) then
         call out%put("{")
-        call out%put('  "program": '//json_string(version_string)//",")
-        call out%put('  "mechanism": '//json_string(table%mechanism)//",")
-        call out%put('  "title": '//json_string(title)//",")
-        call out%put('  "deck": '//json_string(table%deck)//",")
-        if (allocated(table%subtitle)) call out%put('  "deck_title": '//json_string(table%subtitle)//",")
-        call out%put('  "row_name": '//json_string(table%row_name)//",")
-        if (allocated(table%overrides)) then
-          line = '  "overrides": ['
-          do i = 1, size(table%overrides)
-            if (i > 1) line = line//", "
-            line = line//json_string(trim(table%overrides(i)))
-          end do
-          call out%put(line//"],")
-        end if
+        call put_run_identity(title, table, out)
         call out%put('  "input": [')
         cur%record = 1
         cur%value = 0
@@ -187,6 +152,68 @@ contains
       end do
     end subroutine put_rows
   end subroutine write_json
+
+  !> The first members of a run's JSON object: "program", "mechanism", "title", "deck",
+  !> "deck_title" (the deck's own title, when it has one), "row_name", "overrides" (the
+  !> --set changes, when any), each line ending in a comma.
+  pure subroutine put_run_identity(title, table, out)
+    !> Title of the mechanism (as the legacy table prints it).
+    character(*), intent(in) :: title
+    !> The results.
+    type(step_table_t), intent(in) :: table
+    !> Where the lines go.
+    type(text_buffer_t), intent(inout) :: out
+    character(len=:), allocatable :: line
+    integer :: i
+    call out%put('  "program": '//json_string(version_string)//",")
+    call out%put('  "mechanism": '//json_string(table%mechanism)//",")
+    call out%put('  "title": '//json_string(title)//",")
+    call out%put('  "deck": '//json_string(table%deck)//",")
+    if (allocated(table%subtitle)) call out%put('  "deck_title": '//json_string(table%subtitle)//",")
+    call out%put('  "row_name": '//json_string(table%row_name)//",")
+    if (allocated(table%overrides)) then
+      line = '  "overrides": ['
+      do i = 1, size(table%overrides)
+        if (i > 1) line = line//", "
+        line = line//json_string(trim(table%overrides(i)))
+      end do
+      call out%put(line//"],")
+    end if
+  end subroutine put_run_identity
+
+  !> The last members of a run's JSON object: "selfcheck" (null when the run has none) and
+  !> "warnings" (the last, without a comma).
+  pure subroutine put_run_verdict(table, out)
+    !> The results.
+    type(step_table_t), intent(in) :: table
+    !> Where the lines go.
+    type(text_buffer_t), intent(inout) :: out
+    character(len=:), allocatable :: line
+    integer :: i
+    if (table%has_selfcheck .and. table%max_drive_deviation >= 0.0_wp) then
+      call out%put('  "selfcheck": {"max_residual": '//full_number(table%max_residual)// &
+        ', "max_mismatch": '//full_number(table%max_mismatch)//', "driver": '//json_string(table%driver)// &
+        ', "max_drive_deviation": '//full_number(table%max_drive_deviation)// &
+        ', "limit": '//full_number(selfcheck_tolerance)//', "ok": '// &
+        trim(merge("true ", "false", table%max_residual <= selfcheck_tolerance .and. &
+                   table%max_mismatch <= selfcheck_tolerance .and. &
+                   table%max_drive_deviation <= selfcheck_tolerance))//"},")
+    else if (table%has_selfcheck) then
+      call out%put('  "selfcheck": {"max_residual": '//full_number(table%max_residual)// &
+        ', "max_mismatch": '//full_number(table%max_mismatch)//', "driver": '//json_string(table%driver)// &
+        ', "limit": '//full_number(selfcheck_tolerance)//', "ok": '// &
+        trim(merge("true ", "false", table%max_residual <= selfcheck_tolerance .and. &
+                   table%max_mismatch <= selfcheck_tolerance))//"},")
+    else
+      call out%put('  "selfcheck": null,')
+    end if
+    line = '  "warnings": ['
+    do i = 1, table%warning_count()
+      if (i > 1) line = line//", "
+      line = line//json_string(table%warnings(i)%text)
+    end do
+    call out%put(line//"]")
+  end subroutine put_run_verdict
 
   !> One INPUT DATA record as a JSON object, appended to the current line (an array of
   !> per-step values may be long: its numbers go straight into the buffer). With `cursor`,

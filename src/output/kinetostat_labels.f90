@@ -52,6 +52,21 @@ contains
       text = "НАИБ. РАСХОЖДЕНИЕ N: ФОРМУЛА И РЕШЕНИЕ СИСТЕМЫ 3X3"
     case ("SUMMARY")
       text = "СВОДКА"
+    ! the design kinds (gear pair, cam): their summary block and self-check
+    case ("SIZE OF THE CAM")
+      text = "РАЗМЕРЫ КУЛАЧКА"
+    case ("THETA OVER ITS LIMIT (RELATIVE), ALL STEPS")
+      text = "ПРЕВЫШЕНИЕ ДОПУСТИМОГО УГЛА ДАВЛЕНИЯ (ОТНОС.)"
+    case ("RHO BELOW RHO_MIN (RELATIVE), ALL STEPS")
+      text = "RHO МЕНЬШЕ RHO_MIN (ОТНОС.), ВСЕ ПОЛОЖЕНИЯ"
+    case ("CURVATURE: TWO FORMULAS (X R_PRIME), ALL STEPS")
+      text = "КРИВИЗНА ПО ДВУМ ФОРМУЛАМ (X R_PRIME), ВСЕ ПОЛОЖЕНИЯ"
+    case ("INV(ALPHA_W) AGAINST ITS EQUATION")
+      text = "INV(ALPHA_W): НЕВЯЗКА УРАВНЕНИЯ"
+    case ("EPS_ALPHA: FORMULA VS THE PATH OF CONTACT'S ENDS")
+      text = "EPS_ALPHA: ФОРМУЛА И КОНЦЫ АКТИВНОЙ ЛИНИИ ЗАЦЕПЛЕНИЯ"
+    case ("(derived)")
+      text = "(вычислено)"
     case ("SHAKING FORCE AND MOMENT, FORCE AND MOMENT ON THE FRAME (MOMENTS ABOUT THE ORIGIN)")
       text = "ГЛАВНЫЙ ВЕКТОР И ГЛАВНЫЙ МОМЕНТ СИЛ "// &
         "ИНЕРЦИИ, СИЛА И МОМЕНТ НА СТОЙКУ "// &
@@ -158,6 +173,10 @@ contains
       text = "м/с^2"
     case ("m/rad")
       text = "м/рад"
+    case ("m/rad^2")
+      text = "м/рад^2"
+    case ("1/rad")
+      text = "1/рад"
     case ("steps")
       text = "положений"
     case ("satellites")
@@ -302,6 +321,36 @@ contains
       text = "входное звено"
     case ("known forces first, then the unknown reactions")
       text = "сначала известные силы, затем искомые реакции"
+    case ("Mechanism")
+      text = "Механизм"
+    case ("position")
+      text = "положение"
+    case ("the plans in the mechanism's frame")
+      text = "планы в системе координат чертежа механизма"
+    case ("Loads on the lever")
+      text = "Нагрузки на рычаге"
+    case ("image")
+      text = "точка плана"
+    case ("arms on the lever")
+      text = "плечи на рычаге"
+    case ("Values read off the plans")
+      text = "Величины по планам"
+    case ("counterclockwise")
+      text = "против часовой стрелки"
+    case ("clockwise")
+      text = "по часовой стрелке"
+    case ("at the pole")
+      text = "в полюсе"
+    case ("not drawn, shorter than 1 mm")
+      text = "не показаны, короче 1 мм"
+    case ("Balancing effort")
+      text = "Уравновешивающее усилие"
+    case ("read off the sheet (vectors to 0.5 mm, arms to 1 mm)")
+      text = "по чертежу (векторы с точностью 0,5 мм, плечи 1 мм)"
+    case ("lever")
+      text = "рычаг"
+    case ("polygons")
+      text = "планы сил"
     case ("relative velocities: v_PQ of a link's points, r along a guide")
       text = "относительные скорости: v_PQ точек звена, r вдоль направляющей"
     case ("components: n normal, τ tangential, k Coriolis, r relative")

@@ -298,6 +298,9 @@ module kinetostat_step_table
     character(len=:), allocatable :: void_reason
     !> Void rows tallied so far.
     integer :: void_rows = 0
+    !> The run is one record (a design's figures, not steps): --format summary writes its
+    !> values under the columns' own names.
+    logical :: single_record = .false.
   contains
     procedure :: block_range
     procedure :: first_block

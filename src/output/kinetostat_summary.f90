@@ -363,6 +363,10 @@ contains
     logical :: known
     integer :: i, c
     line = override_cells(table, 1)
+    if (table%single_record) then
+      line = line//record_cells(table, 1)
+      return
+    end if
     line = line//"rows"
     if (allocated(table%void_flags)) line = line//",rows_left_out"
     at = "row"
@@ -398,6 +402,10 @@ contains
     logical :: known, whole
     integer :: i, c, n
     line = override_cells(table, 2)
+    if (table%single_record) then
+      line = line//record_cells(table, 2)
+      return
+    end if
     n = table%tallied_rows
     line = line//int_str(n)
     if (allocated(table%void_flags)) line = line//","//int_str(table%void_rows)
@@ -429,6 +437,36 @@ contains
       end if
     end function at_text
   end function summary_row
+
+  !> The CSV cells of a one-record run (table%single_record): its columns' names (part 1, the
+  !> header) or its values (part 2, the row), comma-separated; a column named as an override
+  !> is not repeated.
+  pure function record_cells(table, part) result(line)
+    !> The results of one run (one row).
+    type(step_table_t), intent(in) :: table
+    !> 1: names, 2: values.
+    integer, intent(in) :: part
+    character(len=:), allocatable :: line
+    integer :: c, i
+    logical :: first
+    line = ""
+    first = .true.
+    columns: do c = 1, size(table%columns)
+      if (.not. table%columns(c)%csv) cycle columns
+      if (allocated(table%overrides)) then
+        do i = 1, size(table%overrides)
+          if (override_part(table%overrides(i), 1) == table%columns(c)%name) cycle columns
+        end do
+      end if
+      if (.not. first) line = line//","
+      first = .false.
+      if (part == 1) then
+        line = line//table%columns(c)%name
+      else
+        line = line//cell_number(table%rows(c, 1), table%is_whole(c))
+      end if
+    end do columns
+  end function record_cells
 
   !> The CSV cells of the run's overrides (NAME=VALUE), each followed by a comma: their
   !> names (part 1, the header) or their values (part 2, the row).

@@ -7,7 +7,7 @@ module kinetostat_sketch
   use kinetostat_kinds, only: wp
   implicit none
   private
-  public :: sketch_t, sketch_link_t, sketch_guide_t
+  public :: sketch_t, sketch_link_t, sketch_guide_t, sketch_group_t
 
   !> Length of a point or link name.
   integer, parameter :: name_len = 16
@@ -37,6 +37,16 @@ module kinetostat_sketch
     character(len=:), allocatable :: on
   end type sketch_guide_t
 
+  !> A unit of the structural analysis: an input unit or an Assur group.
+  type :: sketch_group_t
+    !> Its links (names as in phi<i>).
+    character(len=name_len), allocatable :: links(:)
+    !> Class: 1 an input unit (a drive in it), 2 a dyad, 3, 4 a group of that class.
+    integer :: class = 0
+    !> As the structure formula writes it ("II(2,3)").
+    character(len=:), allocatable :: label
+  end type sketch_group_t
+
   !> The topology of a mechanism (`available` false when the mechanism has none to draw).
   type :: sketch_t
     !> Whether the mechanism provides a sketch.
@@ -49,10 +59,14 @@ module kinetostat_sketch
     type(sketch_guide_t), allocatable :: guides(:)
     !> Unit vector of gravity in the position frame.
     real(wp) :: down(2) = [0.0_wp, -1.0_wp]
+    !> The structural analysis's units in the structure formula's order, when the mechanism
+    !> has one (unallocated: the plans derive the groups from the topology).
+    type(sketch_group_t), allocatable :: groups(:)
   contains
     procedure :: add_link
     procedure :: add_pivot
     procedure :: add_guide
+    procedure :: add_group
   end type sketch_t
 
 contains
@@ -109,5 +123,26 @@ contains
     if (.not. allocated(self%guides)) allocate (self%guides(0))
     self%guides = [self%guides, sketch_guide_t(point=point, angle=angle, on=on)]
   end subroutine add_guide
+
+  !> Append a unit of the structure (links by name, class, label).
+  pure subroutine add_group(self, links, class, label)
+    class(sketch_t), intent(inout) :: self
+    !> Its links' names.
+    character(*), intent(in) :: links(:)
+    !> Class (1: input unit).
+    integer, intent(in) :: class
+    !> As the structure formula writes it.
+    character(*), intent(in) :: label
+    type(sketch_group_t) :: group
+    integer :: i
+    allocate (group%links(size(links)))
+    do i = 1, size(links)
+      group%links(i) = trim(links(i))
+    end do
+    group%class = class
+    group%label = label
+    if (.not. allocated(self%groups)) allocate (self%groups(0))
+    self%groups = [self%groups, group]
+  end subroutine add_group
 
 end module kinetostat_sketch

@@ -3,7 +3,7 @@
 !> The run pipeline (kinetostat_run) and the registry (kinetostat_registry) know mechanisms
 !> only through this type.
 module kinetostat_mechanism
-  use kinetostat_error, only: error_t
+  use kinetostat_error, only: error_t, fatal_error, exit_usage
   use kinetostat_deck, only: deck_source_t
   use kinetostat_step_table, only: step_table_t
   use kinetostat_text_buffer, only: text_buffer_t
@@ -23,6 +23,9 @@ module kinetostat_mechanism
     character(len=:), allocatable :: title_ru
     !> The kind's commented template deck, as lines (set by the constructor, as the titles).
     character(len=:), allocatable :: template(:)
+    !> Whether --format svg draws the sheet of force hodographs and diagrams (a design kind,
+    !> whose results are no forces over a cycle, has none).
+    logical :: force_sheet = .true.
   contains
     !> Read and validate the deck.
     procedure(read_deck_i), deferred :: read_deck
@@ -42,6 +45,9 @@ module kinetostat_mechanism
     !> The moving links' masses, inertias and centres of mass, and gravity, named as in the
     !> kinematics columns (after read_deck); by default not available.
     procedure :: mass_model
+    !> The matching analysis deck written from the run's results (--format deck); by default
+    !> the kind has none.
+    procedure :: analysis_deck
   end type mechanism_t
 
   abstract interface
@@ -139,5 +145,18 @@ contains
     type(mass_model_t), intent(out) :: model
     model%available = .false.
   end subroutine mass_model
+
+  !> The analysis deck of a design (--format deck): by default none, a usage error.
+  subroutine analysis_deck(self, table, out, error)
+    class(mechanism_t), intent(in) :: self
+    !> The results of the run (all rows).
+    type(step_table_t), intent(in) :: table
+    !> Where the deck's lines go.
+    type(text_buffer_t), intent(inout) :: out
+    !> The kind writes no deck, or the deck lacks what the analysis deck needs.
+    type(error_t), allocatable, intent(out) :: error
+    call fatal_error(error, exit_usage, "--format deck: only the design kinds (gear_geometry, "// &
+      "planetary_synthesis, cam_profile) write an analysis deck; "//table%deck//" is &"//table%mechanism)
+  end subroutine analysis_deck
 
 end module kinetostat_mechanism

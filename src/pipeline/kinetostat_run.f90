@@ -20,8 +20,11 @@ module kinetostat_run
   use kinetostat_sheet_dxf, only: write_sheet_dxf
   use kinetostat_sketch, only: sketch_t
   use kinetostat_drawing, only: drawing_t, drawing_from_sketch
-  use kinetostat_plans, only: plans_t, build_plans, write_plans_json
-  use kinetostat_svg_plans, only: write_svg_plans
+  use kinetostat_plans_base, only: plans_t
+  use kinetostat_plans, only: build_plans
+  use kinetostat_plans_sheet, only: plans_sheet_t, plans_sheet
+  use kinetostat_plans_json, only: write_plans_json
+  use kinetostat_plans_draw, only: draw_plans_sheet
   use kinetostat_error, only: exit_usage
   use kinetostat_labels, only: lang_en
   use kinetostat_override, only: override_t, mark_overrides
@@ -35,7 +38,7 @@ module kinetostat_run
   private
   public :: run_options_t, run_mechanism, guard_finite, progress_i, block_rows
   public :: format_table, format_csv, format_json, format_svg, format_summary, format_plans, format_dxf, &
-    format_from_name, format_names
+    format_deck, format_from_name, format_names
 
   !> Output format: the legacy fixed-format table.
   integer, parameter :: format_table = 1
@@ -51,11 +54,13 @@ module kinetostat_run
   integer, parameter :: format_plans = 6
   !> Output format: the mechanism of step --at K as an ASCII DXF drawing.
   integer, parameter :: format_dxf = 7
+  !> Output format: the matching analysis deck of a design kind (mechanism_t%analysis_deck).
+  integer, parameter :: format_deck = 8
   !> The formats' names as --format takes them, in the order of their codes.
   character(*), parameter :: format_keys(*) = [character(len=7) :: "table", "csv", "json", "svg", "summary", &
-    "plans", "dxf"]
+    "plans", "dxf", "deck"]
   !> Names of the formats, for messages and --help.
-  character(*), parameter :: format_names = "table, csv, json, svg, summary, plans, dxf"
+  character(*), parameter :: format_names = "table, csv, json, svg, summary, plans, dxf, deck"
 
   !> Steps solved and written at a time: a run holds the rows of one block (and at most the
   !> spool's bound of output text), whatever its number of steps.
@@ -155,6 +160,12 @@ contains
 
     call mech%read_deck(source, error)
     if (allocated(error)) return
+    if ((options%format == format_svg .or. options%format == format_dxf) .and. .not. mech%force_sheet) then
+      call fatal_error(error, exit_usage, "--format "//trim(format_keys(options%format))//": "//source%path// &
+        " is &"//group//", a design: no sheet of forces; its results are the table, csv, json or summary, "// &
+        "and its analysis deck (--format deck)")
+      return
+    end if
     if (options%shaking) then
       call mech%mass_model(model)
       if (.not. model%available) then
@@ -184,8 +195,8 @@ contains
     head%chunk = options%echo_chunk
     first = 1
     do
-      ! the SVG sheet and drawing need every row at once
-      if (all(options%format /= [format_svg, format_plans, format_dxf]) .and. .not. options%plans) then
+      ! the SVG sheet, the drawing and the analysis deck need every row at once
+      if (all(options%format /= [format_svg, format_plans, format_dxf, format_deck]) .and. .not. options%plans) then
         table%block_first = first
         table%block_last = first + rows - 1
       end if
@@ -251,6 +262,9 @@ contains
         end if
       case (format_plans)
         call write_at_step(mech, table, options, out, error)
+        if (allocated(error)) return
+      case (format_deck)
+        call mech%analysis_deck(table, out, error)
         if (allocated(error)) return
       case (format_svg, format_dxf)
         call guard_drawable(table, error)
@@ -331,6 +345,7 @@ contains
     type(sketch_t) :: topo
     type(drawing_t) :: drawing
     type(plans_t) :: plans
+    type(plans_sheet_t) :: plans_geometry
     type(sheet_t) :: sheet
     integer :: k
     k = options%at_step
@@ -349,19 +364,22 @@ contains
     if (allocated(error)) return
     call mech%force_plan(table, k, drawing, error)
     if (allocated(error)) return
-    if (options%plans) then
+    if (options%plans .or. options%format == format_plans) then
+      ! the graphical method: as numbers (json), or its sheet (plans: SVG; dxf)
       call build_plans(topo, drawing, table, k, plans)
-      call write_plans_json(plans, table, k, out)
-    else if (options%format == format_plans) then
-      call build_plans(topo, drawing, table, k, plans)
-      call write_svg_plans(mech%title(options%lang), table, k, plans, options%lang, out)
+      call plans_sheet(topo, drawing, plans, plans_geometry)
+      if (options%format == format_json) then
+        call write_plans_json(mech%title(options%lang), plans, plans_geometry, table, k, out)
+        return
+      end if
+      call draw_plans_sheet(mech%title(options%lang), table, k, drawing, plans, plans_geometry, options%lang, sheet)
     else
       call write_mechanism_sheet(mech%title(options%lang), table, k, drawing, options%lang, sheet)
-      if (options%format == format_dxf) then
-        call write_sheet_dxf(sheet, out)
-      else
-        call write_sheet_svg(sheet, out)
-      end if
+    end if
+    if (options%format == format_dxf) then
+      call write_sheet_dxf(sheet, out)
+    else
+      call write_sheet_svg(sheet, out)
     end if
   end subroutine write_at_step
 

@@ -5,6 +5,8 @@
 for deck in data/*.nml; do
   name=$(basename "$deck" .nml)
   [ "$name" = assur_toggle ] && continue
+  # the design kinds have no kinematics columns (--kinematics changes nothing there)
+  case "$name" in gear_geometry_*|planetary_synthesis*|cam_profile_*) continue ;; esac
   run_ks "$deck" --format csv; cp "$out" "$cli_tmp/k_plain.csv"
   run_ks "$deck" --format csv --kinematics; cp "$out" "$cli_tmp/k_kin.csv"
   python3 - "$cli_tmp/k_plain.csv" "$cli_tmp/k_kin.csv" <<'PY' && pass || fail "kinematics-csv-$name" "kinematics CSV is not the default CSV plus columns"

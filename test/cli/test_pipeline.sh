@@ -82,5 +82,5 @@ run_ks data/pr3207.nml --format=csv; cmp -s "$out" data/expected/pr3207.csv && p
 expect_exit format-unknown 1 data/pr3207.nml --format xml
 expect_exit lang-unknown 1 data/pr3207.nml --lang de
 run_ks --help
-grep -q -- '--format table|csv|json' "$out" && grep -q -- '--lang' "$out" && grep -q '^Kinds: pr3207, pr3050, sixbar, assur, gears, cam, linkage$' "$out" \
+grep -q -- '--format table|csv|json' "$out" && grep -q -- '--lang' "$out" && grep -q '^Kinds: pr3207, pr3050, sixbar, assur, gears, cam, linkage, gear_geometry, planetary_synthesis, cam_profile$' "$out" \
   && pass || fail help-lists "--help lacks formats, --lang or the registry's kinds"

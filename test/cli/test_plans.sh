@@ -1,13 +1,23 @@
 # The graphical method as numbers (--format json --at K --plans): on every bundled linkage deck
-# at three steps, the plans' equations hold, the acceleration images of the centres of mass
-# equal the kinematics columns, every force polygon closes (<= 1e-9 of its largest vector)
-# with the CSV's pair forces in it, and Zhukovsky's lever equals the run's driving effort
-# (relative 1e-9); every acceleration component (normal, tangential, Coriolis) against the
-# kinematics columns and every vector equation summing to its image - tools/plans_check.py;
-# the checks can fail; usage errors.
+# at its first, second, middle and last steps (PR 3050's at the steps where its input moves;
+# its groups at rest too) - the plans' equations hold, the acceleration images of the centres
+# of mass equal the kinematics columns, every force polygon closes (<= 1e-9 of its largest
+# vector) with the CSV's pair forces in it, in the course's order (tau and n parts adjacent,
+# whole and inner reactions listed), Zhukovsky's lever equals the run's driving effort
+# (relative 1e-9) with every load force of the links' polygons on it and the loads' powers and
+# the balancing power summing to zero, the values table agrees with the plans and the CSV's
+# rates, and the groups are the same at every step and the structural analysis's
+# (kinetostat structure) - tools/plans_check.py; the checks can fail; usage errors.
 plans_check="$root/tools/plans_check.py"
 plans_dir="$cli_tmp/plans"
 mkdir -p "$plans_dir"
+# sheet_lines SVG: its texts, one a line, the typeset runs joined (F<tspan>21</tspan> -> F21)
+sheet_lines() {
+  python3 -c 'import html, re, signal, sys
+signal.signal(signal.SIGPIPE, signal.SIG_DFL)
+for m in re.findall(r"<text[^>]*>(.*?)</text>", open(sys.argv[1], encoding="utf-8").read()):
+    print(html.unescape(re.sub(r"<[^>]+>", "", m)))' "$1"
+}
 
 # DECK:CHECKS - lever, polygons (of the links and of the groups) or groups (the groups' only).
 # The legacy PR 3207 and PR 3050 tables leave out their massless blocks' and the
@@ -25,25 +35,101 @@ for spec in assur_fourbar:lever,polygons assur_fourbar_global:lever,polygons ass
   assur_sixbar_friction:lever,polygons \
   friction_slider_crank:lever,polygons; do
   name=${spec%%:*}; checks=${spec#*:}
-  flags=""
+  flags="--order --values"
   case ",$checks," in *,lever,*) flags="$flags --lever" ;; esac
   case ",$checks," in *,polygons,*) flags="$flags --polygons" ;; esac
   case ",$checks," in *,groups,*) flags="$flags --groups" ;; esac
   run_ks "data/$name.nml" --format csv --kinematics
   cp "$out" "$plans_dir/$name.csv"
   steps=$(($(wc -l <"$out") - 1))
-  ks="1 $(((steps + 1) / 2)) $steps"
-  # PR 3050 starts and stops at rest: no velocity plan there (the lever needs one)
-  case "$name" in pr3050|assur_pr3050*) ks="2 $(((steps + 1) / 2)) $((steps - 1))" ;; esac
+  ks=$(printf '%s\n' 1 2 $(((steps + 1) / 2)) "$steps" | awk '$1 <= '"$steps"' && !seen[$1]++')
+  rest=""
+  # PR 3050 starts and stops at rest: no velocity plan there (the lever needs one); its
+  # groups are checked at rest too
+  case "$name" in pr3050|assur_pr3050*) ks="2 3 $(((steps + 1) / 2)) $((steps - 1))"; rest=1 ;; esac
+  step_files=()
   for k in $ks; do
     run_ks "data/$name.nml" --format json --at "$k" --plans
     if [ "$rc" -ne 0 ]; then fail "plans-runs-$name-$k" "rc=$rc: $(head -c 300 "$err")"; continue; fi
-    cp "$out" "$plans_dir/$name.$k.json"
-    # shellcheck disable=SC2086  # flags is a word list
-    python3 "$plans_check" "$plans_dir/$name.$k.json" "$plans_dir/$name.csv" $flags >"$cli_tmp/check.out" 2>&1 \
-      && pass || fail "plans-$name-$k" "$(head -20 "$cli_tmp/check.out")"
+    cp "$out" "$plans_dir/$name.$k.json"; step_files+=("$plans_dir/$name.$k.json")
   done
+  # shellcheck disable=SC2086  # flags is a word list
+  python3 "$plans_check" "${step_files[@]}" "$plans_dir/$name.csv" $flags >"$cli_tmp/check.out" 2>&1 \
+    && pass || fail "plans-$name-$(echo $ks | tr ' ' ',')" "$(head -20 "$cli_tmp/check.out")"
+  if [ -n "$rest" ]; then
+    run_ks "data/$name.nml" --format json --at "$rest" --plans
+    cp "$out" "$plans_dir/$name.$rest.json"; step_files+=("$plans_dir/$name.$rest.json")
+  fi
+  # the groups: the same at every step, and the structural analysis's where it runs
+  structure=()
+  case "$name" in
+    class3|fivebar|linkage_*) structure=(--structure "$("$KINETOSTAT" structure "data/$name.nml" | sed -n 's/^ STRUCTURE FORMULA: //p')") ;;
+  esac
+  python3 "$plans_check" groups "${step_files[@]}" "${structure[@]}" >"$cli_tmp/check.out" 2>&1 \
+    && pass || fail "plans-groups-$name" "$(head -5 "$cli_tmp/check.out")"
 done
+# the generic decks' groups (derived from the topology) equal the structural analysis of the
+# same mechanism written as a &linkage deck
+for twin in assur_fourbar:linkage_fourbar assur_slider_crank:linkage_slider_crank; do
+  python3 "$plans_check" groups "$plans_dir/${twin%%:*}".*.json \
+    --structure "$("$KINETOSTAT" structure "data/${twin#*:}.nml" | sed -n 's/^ STRUCTURE FORMULA: //p')" \
+    >"$cli_tmp/check.out" 2>&1 && pass || fail "plans-groups-twin-${twin%%:*}" "$(head -5 "$cli_tmp/check.out")"
+done
+# the five-bar's two drives: an input link's polygon each, M4 (not the lever's unknown) a
+# load of the lever; PR 3050's cylinder and rod one input unit at every step, at rest too
+python3 -c 'import json, sys; d = json.load(open(sys.argv[1]))
+assert [p["label"] for p in d["force_plans"]] == ["II(2,3)", "I(0,4)", "I(0,1)"], d["force_plans"]
+assert [p["moment"]["name"] for p in d["force_plans"][1:]] == ["M4", "M1"]
+assert "M4" in [l["name"] for l in d["zhukovsky"]["loads"]]' "$plans_dir/fivebar.2.json" >"$cli_tmp/check.out" 2>&1 \
+  && pass || fail plans-fivebar-drives "$(tail -3 "$cli_tmp/check.out")"
+grep -q '"groups": \[' "$plans_dir/pr3050.1.json" && grep -A1 '"groups": \[' "$plans_dir/pr3050.1.json" | grep -q '"label": "I(4,1,2,3)"' \
+  && pass || fail plans-pr3050-rest-groups "$(grep -A2 '"groups"' "$plans_dir/pr3050.1.json")"
+
+# the plans JSON in the run's envelope: program, mechanism, deck_title, overrides, selfcheck,
+# warnings; the sheet's rotation against the position frame
+run_ks data/fivebar.nml --format json --at 2 --plans --set 'link(2)%m=2'
+python3 -c 'import json, sys; d = json.load(open(sys.argv[1]))
+for key in ("program", "mechanism", "title", "deck", "deck_title", "overrides", "selfcheck", "warnings", "sheet_rotation"):
+    assert key in d, key
+assert d["overrides"] == ["link(2)%m=2"] and d["mechanism"] == "linkage" and d["selfcheck"]["ok"], d
+assert d["deck_title"] == "five-bar with two motors", d["deck_title"]' "$out" >"$cli_tmp/check.out" 2>&1 \
+  && pass || fail plans-json-envelope "$(tail -3 "$cli_tmp/check.out")"
+
+# the new checks can fail: a load left off the lever, a load's power changed, a reaction's
+# parts apart, the inner reaction dropped, the groups changed at one step, groups that are not
+# the structure's, a wrong value in the table
+python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); z = d["zhukovsky"]
+z["loads"] = [l for l in z["loads"] if l["name"] != "G4"]; print(json.dumps(d))' \
+  "$plans_dir/sixbar.2.json" >"$cli_tmp/bad.json"
+python3 "$plans_check" "$cli_tmp/bad.json" "$plans_dir/sixbar.csv" --lever >"$cli_tmp/check.out" 2>&1
+grep -q "the load forces \['G4'\] of the links' polygons are not on the lever" "$cli_tmp/check.out" && pass \
+  || fail plans-lever-load-can-fail "$(head -3 "$cli_tmp/check.out")"
+python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); l = d["zhukovsky"]["loads"][0]
+l["power"] *= 1 + 1e-6; print(json.dumps(d))' "$plans_dir/class3.2.json" >"$cli_tmp/bad.json"
+python3 "$plans_check" "$cli_tmp/bad.json" "$plans_dir/class3.csv" --lever >"$cli_tmp/check.out" 2>&1
+grep -q "lever: the loads' powers and the balancing power sum to" "$cli_tmp/check.out" && pass \
+  || fail plans-lever-power-can-fail "$(head -3 "$cli_tmp/check.out")"
+python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); v = d["force_plans"][0]["vectors"]
+v.insert(1, v.pop()); print(json.dumps(d))' "$plans_dir/linkage_fourbar.2.json" >"$cli_tmp/bad.json"
+python3 "$plans_check" "$cli_tmp/bad.json" "$plans_dir/linkage_fourbar.csv" --order >"$cli_tmp/check.out" 2>&1
+grep -q "the parts of F21 are not adjacent\|ends with" "$cli_tmp/check.out" && pass \
+  || fail plans-order-can-fail "$(head -3 "$cli_tmp/check.out")"
+python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); p = d["force_plans"][0]
+p["reactions"] = [r for r in p["reactions"] if not r["inner"]]; print(json.dumps(d))' \
+  "$plans_dir/sixbar.2.json" >"$cli_tmp/bad.json"
+python3 "$plans_check" "$cli_tmp/bad.json" "$plans_dir/sixbar.csv" --order >"$cli_tmp/check.out" 2>&1
+grep -q "no inner reaction" "$cli_tmp/check.out" && pass || fail plans-inner-can-fail "$(head -3 "$cli_tmp/check.out")"
+python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); g = d["groups"]
+g[1]["label"] = "III(2,3,4,5)"; print(json.dumps(d))' "$plans_dir/sixbar.2.json" >"$cli_tmp/bad.json"
+python3 "$plans_check" groups "$plans_dir/sixbar.1.json" "$cli_tmp/bad.json" >"$cli_tmp/check.out" 2>&1
+grep -q "groups change between steps" "$cli_tmp/check.out" && pass || fail plans-groups-can-fail "$(head -3 "$cli_tmp/check.out")"
+python3 "$plans_check" groups "$plans_dir/fivebar.2.json" --structure "I(0,1) -> II(2,3,4)" >"$cli_tmp/check.out" 2>&1
+grep -q "the structure formula" "$cli_tmp/check.out" && pass || fail plans-structure-can-fail "$(head -3 "$cli_tmp/check.out")"
+python3 -c 'import json, sys; d = json.load(open(sys.argv[1]))
+[v for v in d["values"] if v["name"] == "omega2"][0]["sense"] = "??"; print(json.dumps(d))' \
+  "$plans_dir/sixbar.2.json" >"$cli_tmp/bad.json"
+python3 "$plans_check" "$cli_tmp/bad.json" "$plans_dir/sixbar.csv" --values >"$cli_tmp/check.out" 2>&1
+grep -q "values table: omega2" "$cli_tmp/check.out" && pass || fail plans-values-can-fail "$(head -3 "$cli_tmp/check.out")"
 
 # the checks can fail: a lever off by one part in 1e6, a polygon vector moved
 python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); d["zhukovsky"]["effort"] *= 1 + 1e-6; print(json.dumps(d))' \
@@ -74,18 +160,18 @@ z["effort"] += z.pop("flywheel")["moment"]; print(json.dumps(d))' \
 python3 "$plans_check" "$cli_tmp/no_flywheel.json" "$plans_dir/pr3207_flywheel.csv" --lever >/dev/null 2>&1 \
   && fail plans-lever-flywheel-can-fail "a lever without the flywheel's inertia moment was accepted" || pass
 run_ks data/sixbar_flywheel.nml --format plans --at 5
-grep -q 'flywheel and rotor included: J = 104 kg\*m^2, -J·ε = 243 N\*m<' "$out" && pass \
-  || fail plans-flywheel-sheet "no flywheel line: $(grep -o 'class="label">[^<]*' "$out" | tail -5)"
+sheet_lines "$out" >"$cli_tmp/lines.txt"; grep -qx 'flywheel and rotor included: J = 104 kg·m², -J·ε = 243 N·m' "$cli_tmp/lines.txt" && pass \
+  || fail plans-flywheel-sheet "no flywheel line: $(sheet_lines "$out" | grep -i flywheel)"
 run_ks data/pr3207_flywheel.nml --format plans --at 5 --lang ru
-grep -q 'маховик и ротор учтены: J = 274 кг·м², -J·ε = -242 Н·м<' "$out" && pass \
-  || fail plans-flywheel-sheet-ru "no flywheel line: $(grep -o 'class="label">[^<]*' "$out" | tail -5)"
-# the friction's share on the sheet, in both languages
+sheet_lines "$out" >"$cli_tmp/lines.txt"; grep -qx 'маховик и ротор учтены: J = 274 кг·м², -J·ε = -242 Н·м' "$cli_tmp/lines.txt" && pass \
+  || fail plans-flywheel-sheet-ru "no flywheel line: $(sheet_lines "$out" | grep маховик)"
+# the friction's share on the sheet, in both languages (P_loss typeset: P with loss lowered)
 run_ks data/friction_slider_crank.nml --format plans --at 3
-grep -q 'pair friction included: -P_loss/ω1 = 2.26 N\*m<' "$out" && pass \
-  || fail plans-friction-sheet "no friction line: $(grep -o 'class="label">[^<]*' "$out" | tail -4)"
+sheet_lines "$out" >"$cli_tmp/lines.txt"; grep -qx 'pair friction included: -Ploss/ω1 = 2.26 N·m' "$cli_tmp/lines.txt" && pass \
+  || fail plans-friction-sheet "no friction line: $(sheet_lines "$out" | grep friction)"
 run_ks data/assur_pr3050_friction.nml --format plans --at 2 --lang ru
-grep -q 'трение в парах учтено: -P_loss/v_rel = 172 Н<' "$out" && pass \
-  || fail plans-friction-sheet-ru "no friction line: $(grep -o 'class="label">[^<]*' "$out" | tail -4)"
+sheet_lines "$out" >"$cli_tmp/lines.txt"; grep -qx 'трение в парах учтено: -Pтр/vотн = 172 Н' "$cli_tmp/lines.txt" && pass \
+  || fail plans-friction-sheet-ru "no friction line: $(sheet_lines "$out" | grep трение)"
 
 sed -E 's/("name": "F21", "x": )-?([0-9])/\1\21/' "$plans_dir/sixbar.1.json" >"$cli_tmp/bad_polygon.json"
 if cmp -s "$cli_tmp/bad_polygon.json" "$plans_dir/sixbar.1.json"; then
@@ -100,7 +186,7 @@ v["x"] += 1e-6 * abs(v["x"]) + 1e-6; print(json.dumps(d))' "$plans_dir/sixbar.1.
 python3 "$plans_check" "$cli_tmp/bad_component.json" "$plans_dir/sixbar.csv" >/dev/null 2>&1 \
   && fail plans-component-can-fail "a wrong acceleration component was accepted" || pass
 # every deck's equations name the components in the course's notation, a_B^n ... a_B^r
-grep -q '"name": "a_B^k", "kind": "k"' "$plans_dir"/pr3207.*.json && pass || fail plans-coriolis "no Coriolis component in PR 3207's plans"
+grep -q '"name": "a_B2B3^k", "kind": "k"' "$plans_dir"/pr3207.*.json && pass || fail plans-coriolis "no Coriolis component in PR 3207's plans"
 
 # ... and a group's reaction part moved (F43's tangential part in the six-bar's group 4,5)
 python3 -c 'import json, sys; d = json.load(open(sys.argv[1]))
@@ -111,6 +197,13 @@ python3 "$plans_check" "$cli_tmp/bad_group.json" "$plans_dir/sixbar.csv" --group
 # the six-bar's groups as kinetostatics solves them: the dyads 4,5 and 2,3, then the crank
 grep -o '"group": "[0-9,]*"' "$plans_dir/sixbar.1.json" | tr '\n' ' ' | grep -qx '"group": "4,5" "group": "2,3" "group": "1" ' \
   && pass || fail plans-sixbar-groups "$(grep -o '"group": "[0-9,]*"' "$plans_dir/sixbar.1.json")"
+# ... in the course's order: F43^tau, the loads of 4 and 5, F56, F43^n; then F21^tau, the loads of
+# 2 and 3 with the known F34, F36^tau, F36^n, F21^n, the inner reactions F45, F23
+python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); p = d["force_plans"]
+assert [v["name"] for v in p[0]["vectors"]] == ["F43^τ", "G4", "Phi4", "G5", "Phi5", "F5", "F56", "F43^n"], p[0]
+assert [v["name"] for v in p[1]["vectors"]] == ["F21^τ", "G2", "Phi2", "G3", "F34", "F36^τ", "F36^n", "F21^n"], p[1]
+assert [r["name"] for r in p[0]["reactions"]] == ["F43", "F56", "F45"] and [r["name"] for r in p[1]["reactions"]] == ["F21", "F36", "F23"]' \
+  "$plans_dir/sixbar_example.1.json" >"$cli_tmp/check.out" 2>&1 && pass || fail plans-sixbar-order "$(tail -3 "$cli_tmp/check.out")"
 
 # PR 3207's ram from the block's point the other way round; PR 3050's cylinder and rod one body
 # of their group (the frame's reaction on the cylinder split along the line to the rod's joint B)
@@ -142,17 +235,17 @@ grep -q '"link": "L1", "closure": [^,]*, "vectors": \[{"name": "GL1".*{"name": "
 for lang in en ru; do
   run_ks data/assur_pr3050.nml --format plans --at 3 --lang "$lang"
   case $lang in
-    en) want='>balancing effort from the lever: F_drive = 21395 N<' ;;
-    ru) want='>уравновешивающее усилие по рычагу: F_drive = 21395 Н<' ;;
+    en) want='balancing effort from the lever: Fdrive = 21395 N' ;;
+    ru) want='уравновешивающее усилие по рычагу: Fд = 21395 Н' ;;
   esac
-  grep -q "$want" "$out" && pass || fail "plans-assur-pr3050-sheet-$lang" "$(grep -o '>[^<]*F_drive = [^<]*<' "$out")"
+  sheet_lines "$out" >"$cli_tmp/lines.txt"; grep -qx "$want" "$cli_tmp/lines.txt" && pass || fail "plans-assur-pr3050-sheet-$lang" "$(sheet_lines "$out" | grep 21395)"
 done
 
 # the manual's worked example (T.FTN, phi1 = 66.8 deg): the lever gives M1 = 902.0 N*m
 grep -q '"zhukovsky": {"driver": "M1", "effort": 9.0203548' "$plans_dir/sixbar_example.1.json" \
   && pass || fail plans-worked-example "$(grep zhukovsky "$plans_dir/sixbar_example.1.json")"
 
-# usage: --plans needs --format json and --at; not for gears or cams
+# usage: --plans needs --format json or dxf and --at; not for gears or cams
 expect_exit plans-needs-at 1 data/sixbar.nml --format json --plans
 expect_exit plans-needs-json 1 data/sixbar.nml --format svg --at 1 --plans
 expect_exit plans-at-needs-plans 1 data/sixbar.nml --format json --at 1
@@ -170,6 +263,69 @@ if rsvg-convert -o "$plans_dir/plans.png" "$plans_dir/sixbar_example.plans.svg" 
   python3 "$root/tools/svg_check.py" png "$plans_dir/plans.png" "$plans_dir/sixbar_example.plans.svg" \
     >"$cli_tmp/check.out" 2>&1 && pass || fail plans-sheet-png "$(cat "$cli_tmp/check.out")"
 else fail plans-sheet-render "rsvg-convert failed"; fi
-grep -q '>balancing effort from the lever: M1 = 902 N\*m<' "$plans_dir/sixbar_example.plans.svg" \
-  && grep -q '>analytic value of the step: M1 = 902 N\*m<' "$plans_dir/sixbar_example.plans.svg" \
-  && pass || fail plans-sheet-lever "$(grep -o '>[^<]*M1 = [^<]*<' "$plans_dir/sixbar_example.plans.svg")"
+sheet_lines "$plans_dir/sixbar_example.plans.svg" >"$cli_tmp/lines.txt"
+grep -qx 'Pb = 9020 N;  M1 = Pb l = 902 N·m' "$cli_tmp/lines.txt" \
+  && grep -qx 'analytic value of the step: M1 = 902 N·m' "$cli_tmp/lines.txt" \
+  && pass || fail plans-sheet-lever "$(grep 'M1 = ' "$cli_tmp/lines.txt")"
+# ... the deck's title and the --set changes on it
+run_ks data/fivebar.nml --format plans --at 3 --set 'link(2)%m=2'
+sheet_lines "$out" >"$cli_tmp/lines.txt"; grep -qx 'deck: data/fivebar.nml   five-bar with two motors   --set link(2)%m=2' "$cli_tmp/lines.txt" && pass \
+  || fail plans-sheet-header "$(sheet_lines "$out" | grep deck)"
+
+# the sheet in the mechanism's frame: its joints where the CSV puts them, the velocity images
+# where the plans put them, every relative velocity of a link drawn perpendicular to the drawn
+# link (data-joint, data-point, data-image): every linkage deck at its middle step (with
+# tools/test --long at each step checked above); the plans as DXF read back
+for json in "$plans_dir"/*.json; do
+  base=${json##*/}; name=${base%%.*}; k=${base#*.}; k=${k%.json}
+  case "$k" in *[!0-9]*) continue ;; esac
+  steps=$(($(wc -l <"$plans_dir/$name.csv") - 1))
+  if [ "${KINETOSTAT_LONG:-0}" != 1 ] && [ "$k" -ne $(((steps + 1) / 2)) ]; then continue; fi
+  case "$name:$k" in pr3050:1|assur_pr3050*:1|pr3050:"$steps"|assur_pr3050*:"$steps") continue ;; esac
+  run_ks "data/$name.nml" --format plans --at "$k"
+  cp "$out" "$plans_dir/$name.$k.svg"
+  python3 "$plans_check" sheet "$plans_dir/$name.$k.svg" "$json" "$plans_dir/$name.csv" >"$cli_tmp/check.out" 2>&1 \
+    && pass || fail "plans-sheet-$name-$k" "$(head -8 "$cli_tmp/check.out")"
+done
+for spec in sixbar_example:1 pr3207:3 pr3050:3 fivebar:2 class3:19 friction_slider_crank:19; do
+  name=${spec%%:*}; k=${spec#*:}
+  run_ks "data/$name.nml" --format dxf --at "$k" --plans
+  cp "$out" "$plans_dir/$name.$k.dxf"
+  [ -f "$plans_dir/$name.$k.json" ] || { run_ks "data/$name.nml" --format json --at "$k" --plans; cp "$out" "$plans_dir/$name.$k.json"; }
+  { python3 "$root/tools/dxf_check.py" "$plans_dir/$name.$k.dxf" && python3 "$plans_check" dxf "$plans_dir/$name.$k.dxf" \
+    "$plans_dir/$name.$k.json"; } >"$cli_tmp/check.out" 2>&1 && pass || fail "plans-dxf-$name-$k" "$(head -8 "$cli_tmp/check.out")"
+done
+# ... and the sheet checks can fail: two images' marks swapped, the plan drawn unturned (the
+# old sheet: its own frame), a DXF without the velocity plan's circles
+python3 - "$plans_dir/sixbar.7.svg" >"$cli_tmp/bad.svg" <<'PY'
+import re, sys
+s = open(sys.argv[1], encoding="utf-8").read()
+marks = re.findall(r'<circle cx="[^"]*" cy="[^"]*"([^>]*data-image="(?:b|c)")', s)
+b = re.search(r'<circle (cx="[^"]*" cy="[^"]*")([^>]*data-image="b")', s)
+c = re.search(r'<circle (cx="[^"]*" cy="[^"]*")([^>]*data-image="c")', s)
+s = s.replace(b.group(0), "@@B@@").replace(c.group(0), "<circle " + b.group(1) + c.group(2)).replace("@@B@@", "<circle " + c.group(1) + b.group(2))
+print(s, end="")
+PY
+python3 "$plans_check" sheet "$cli_tmp/bad.svg" "$plans_dir/sixbar.7.json" "$plans_dir/sixbar.csv" >"$cli_tmp/check.out" 2>&1
+grep -q "velocity image b drawn at" "$cli_tmp/check.out" && pass || fail plans-sheet-marks-can-fail "$(head -3 "$cli_tmp/check.out")"
+sed -E 's/(class="velocity-plan"[^>]*data-rotation=")[^"]*"/\10"/; s/(class="mechanism"[^>]*data-rotation=")[^"]*"/\10"/' \
+  "$plans_dir/sixbar.7.svg" >"$cli_tmp/bad.svg"
+python3 - "$cli_tmp/bad.svg" "$plans_dir/sixbar.7.json" <<'PY'
+# the velocity images drawn in the position frame (unturned), the mechanism left turned
+import json, math, re, sys
+svg, plans = open(sys.argv[1], encoding="utf-8").read(), json.load(open(sys.argv[2]))
+g = re.search(r'class="velocity-plan" data-pole="([-0-9.]+) ([-0-9.]+)" data-mu="([^"]+)"', svg)
+px, py, mu = float(g.group(1)), float(g.group(2)), float(g.group(3))
+for p in plans["velocity_plan"]["points"]:
+    svg = re.sub(r'<circle cx="[^"]*" cy="[^"]*"([^>]*data-image="%s")' % p["name"].lower(),
+                 '<circle cx="%.2f" cy="%.2f"\\1' % (px + p["x"] / mu, py - p["y"] / mu), svg)
+open(sys.argv[1], "w", encoding="utf-8").write(svg)
+PY
+sed -i -E 's/(class="mechanism"[^>]*data-rotation=")0"/\1'"$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["sheet_rotation"])' "$plans_dir/sixbar.7.json")"'"/' "$cli_tmp/bad.svg"
+python3 "$plans_check" sheet "$cli_tmp/bad.svg" "$plans_dir/sixbar.7.json" "$plans_dir/sixbar.csv" >"$cli_tmp/check.out" 2>&1
+grep -q "is not perpendicular to the drawn link" "$cli_tmp/check.out" && pass \
+  || fail plans-sheet-perpendicular-can-fail "$(head -3 "$cli_tmp/check.out")"
+awk 'BEGIN { drop = 0 } { if (drop && $0 == "VPLAN") { sub(/VPLAN/, "TEXT") } print; drop = ($0 == "  8" || $0 == "8") }' \
+  "$plans_dir/sixbar_example.1.dxf" >"$cli_tmp/bad.dxf"
+python3 "$plans_check" dxf "$cli_tmp/bad.dxf" "$plans_dir/sixbar_example.1.json" >"$cli_tmp/check.out" 2>&1
+grep -q "VPLAN: no circle at the image of" "$cli_tmp/check.out" && pass || fail plans-dxf-can-fail "$(head -3 "$cli_tmp/check.out")"

@@ -218,7 +218,7 @@ python3 - "$KINETOSTAT" "$root/docs/cli.md" <<'PY' >"$strings_dir/capacities.log
 import re, subprocess, sys
 deck = {"pr3207": "data/pr3207.nml", "pr3050": "data/pr3050.nml", "sixbar": "data/sixbar.nml",
         "assur": "data/assur_fourbar.nml", "gears": "data/gears_reducer.nml", "cam": "data/cam_flat.nml",
-        "linkage": "data/linkage_fourbar.nml"}
+        "linkage": "data/linkage_fourbar.nml", "cam_profile": "data/cam_profile_flat.nml"}
 row = re.compile(r"^\| `&(\w+)` \| `([^`]+)`.*? \| (\d+) ([^|]+?) \| `([^`]+)` \|$")
 bad, rows = [], 0
 for line in open(sys.argv[2], encoding="utf-8"):

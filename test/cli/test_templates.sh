@@ -3,7 +3,7 @@
 
 # --- every template runs: exit 0, nothing on stderr (but the coarse-step remark:
 # the pr3207 and assur templates switch a load at 30 deg steps), self-check OK
-for kind in pr3207 pr3050 sixbar assur gears cam fourbar engine; do
+for kind in pr3207 pr3050 sixbar assur gears cam gear_geometry planetary_synthesis cam_profile fourbar engine; do
   run_ks template "$kind"; cp "$out" "$cli_tmp/tpl_$kind.nml"
   if [ "$rc" -ne 0 ] || [ ! -s "$cli_tmp/tpl_$kind.nml" ]; then fail "template-$kind" "rc=$rc: $(cat "$err")"; continue; fi
   run_ks "$cli_tmp/tpl_$kind.nml"
@@ -60,7 +60,7 @@ cmp -s "$out" "$cli_tmp/eq.csv" && [ -s "$out" ] && pass || fail format-equals-f
 run_ks --help
 for word in -o --output --set --format --pairs --at --lang --kinematics -q --quiet --strict -h --help -V \
   --max-deck-size --allow-selfcheck-failure --plans --student --group --variant plans dxf \
-  --version template diff --rtol --atol table csv json svg fourbar engine sweep --vary --part summary; do
+  --version template diff --rtol --atol table csv json svg fourbar engine sweep --vary --part summary deck contour; do
   if grep -q -- "$word" "$out"; then pass; else fail "help-lists-$word" "--help does not mention $word"; fi
   if grep -q -- "$(printf '%s' "$word" | sed 's/-/\\\\-/g')" man/kinetostat.1; then pass
   else fail "man-lists-$word" "man/kinetostat.1 does not mention $word"; fi

@@ -73,3 +73,45 @@ verify_case manual-6-spur "$cli_tmp/verify_gears.csv" \
   "Ft, N;$(python3 -c 'print(2 * 50 / 0.060)');r['Ft'];1e-12;rel" \
   "Fr, N;$(python3 -c 'import math; print(2 * 50 / 0.060 * math.tan(math.radians(20)))');r['Fr1'];1e-12;rel" \
   "Fn, N;$(python3 -c 'import math; print(2 * 50 / 0.060 / math.cos(math.radians(20)))');r['Fn'];1e-12;rel"
+
+# 7. A profile-shifted spur pair, the published worked example (docs/verification.md: m 3,
+#    z 12/24, x 0.6/0.36; figures printed to 3-5 digits; the table's a_w is rounded to
+#    56.500 mm, which moves alpha_w by 2.4e-4 deg and y by 4e-5)
+run_ks data/gear_geometry_shift.nml --format csv; cp "$out" "$cli_tmp/verify_shift.csv"
+verify_case shifted-spur-pair "$cli_tmp/verify_shift.csv" \
+  "inv alpha_w;0.034317;math.tan(math.radians(r['alpha_w'])) - math.radians(r['alpha_w']);1e-6;abs" \
+  "alpha_w, deg;26.0888;r['alpha_w'];5e-4;abs" "y;0.83333;r['y'];1e-4;abs" \
+  "dw1, mm;37.667;r['dw1'];5e-4;abs" "dw2, mm;75.333;r['dw2'];5e-4;abs" \
+  "addendum 1, mm;4.420;(r['da1'] - r['d1']) / 2;5e-4;abs" "addendum 2, mm;3.700;(r['da2'] - r['d2']) / 2;5e-4;abs" \
+  "dedendum 1, mm;1.950;(r['d1'] - r['df1']) / 2;5e-4;abs" "dedendum 2, mm;2.670;(r['d2'] - r['df2']) / 2;5e-4;abs" \
+  "whole depth, mm;6.370;(r['da1'] - r['df1']) / 2;5e-4;abs" \
+  "da1, mm;44.840;r['da1'];5e-4;abs" "da2, mm;79.400;r['da2'];5e-4;abs" \
+  "df1, mm;32.100;r['df1'];5e-4;abs" "df2, mm;66.660;r['df2'];5e-4;abs" \
+  "contact ratio;1.202;r['eps_alpha'];5e-4;abs"
+
+# 8. The textbook exercise of a radial flat-faced follower, simple harmonic motion out and back
+#    in one turn, 50 mm in all: the cam is the circle of radius 50 mm about (0, -25) mm, its
+#    least radius 25 mm, the face 50 mm long (relative 1e-12)
+run_ks data/cam_profile_flat.nml --format json
+python3 - "$out" <<'PY' && pass || fail verification-flat-cam-circle "$(cat "$cli_tmp/verify.txt")"
+import json, math, sys
+d = json.load(open(sys.argv[1]))
+s = {e["name"]: e["value"] for e in d["summary"]}
+cols = [c["name"] for c in d["columns"]]
+rows = [dict(zip(cols, r)) for r in d["rows"]]
+lines, bad = [], 0
+def cmp(label, published, computed, tol=1e-12):
+    global bad
+    ok = abs(computed - published) <= tol * abs(published)
+    bad += not ok
+    lines.append(f"{'ok ' if ok else 'BAD'} {label}: published {published}, computed {computed!r}")
+cmp("least radius r_base, m", 0.025, s["r_base"])
+cmp("face length, m", 0.05, s["face_width"])
+cmp("largest distance of the profile from (0, -25 mm), m", 0.05,
+    max(math.hypot(r["x_profile"], r["y_profile"] + 0.025) for r in rows))
+cmp("smallest distance of the profile from (0, -25 mm), m", 0.05,
+    min(math.hypot(r["x_profile"], r["y_profile"] + 0.025) for r in rows))
+cmp("radius of curvature at every step, m", 0.05, max(abs(r["rho"] - 0.05) for r in rows) + 0.05)
+open(__import__("os").environ["VERIFY_OUT"], "w").write("\n".join(lines) + "\n")
+sys.exit(1 if bad else 0)
+PY

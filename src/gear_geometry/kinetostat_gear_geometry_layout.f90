@@ -1,0 +1,370 @@
+!> The geometry of a spur gear pair as a mechanism of the run pipeline: deck -> the shifts
+!> (given, chosen or split from a_w) -> one row of named values, the legacy block of named
+!> values, the analysis deck (--format deck: a `&gears` stage) and the blocking contour as
+!> CSV (`kinetostat contour`).
+module kinetostat_gear_geometry_layout
+  use kinetostat_kinds, only: wp, rad_to_deg
+  use kinetostat_deck, only: deck_source_t
+  use kinetostat_error, only: error_t, fatal_error, exit_input
+  use kinetostat_text, only: int_str
+  use kinetostat_step_table, only: step_table_t, col_length, col_ratio, col_other, col_flag
+  use kinetostat_text_buffer, only: text_buffer_t
+  use kinetostat_table_writer, only: put_heading, value_line
+  use kinetostat_format, only: full_number, int_field, pad_right, short_number
+  use kinetostat_labels, only: phrase, lang_ru
+  use kinetostat_mechanism, only: mechanism_t
+  use kinetostat_gear_geometry, only: gear_pair_t, pair_geometry_t, contour_curve_t, pair_geometry, &
+    involute, auto_shift, equal_sliding_split, blocking_contour, line_of_action
+  use kinetostat_gear_geometry_deck, only: gear_geometry_deck_t, read_gear_geometry_deck, gear_geometry_template, &
+    shift_auto, shift_from_x1, shift_from_x2
+  implicit none
+  private
+  public :: gear_geometry_mechanism_t, new_gear_geometry, gear_geometry_solve, gear_geometry_columns
+  public :: gear_contour_text
+
+  !> Output columns (one row): see docs/gear-geometry.md.
+  character(*), parameter :: gear_geometry_columns(*) = [character(len=13) :: &
+    "x1", "x2", "a_w", "alpha_w", "y", "delta_y", "d1", "d2", "db1", "db2", "dw1", "dw2", "da1", "da2", &
+    "df1", "df2", "s1", "s2", "sa1", "sa2", "x1_min", "x2_min", "eps_alpha", "lambda1", "lambda2", &
+    "undercut1", "undercut2", "pointed1", "pointed2", "interference1", "interference2"]
+  !> Units of the columns.
+  character(*), parameter :: column_units(*) = [character(len=3) :: &
+    "", "", "mm", "deg", "", "", "mm", "mm", "mm", "mm", "mm", "mm", "mm", "mm", &
+    "mm", "mm", "mm", "mm", "mm", "mm", "", "", "", "", "", "", "", "", "", "", ""]
+  !> Kinds of the columns.
+  integer, parameter :: column_kinds(*) = [col_ratio, col_ratio, col_length, col_other, col_ratio, col_ratio, &
+    col_length, col_length, col_length, col_length, col_length, col_length, col_length, col_length, &
+    col_length, col_length, col_length, col_length, col_length, col_length, &
+    col_ratio, col_ratio, col_ratio, col_ratio, col_ratio, &
+    col_flag, col_flag, col_flag, col_flag, col_flag, col_flag]
+  !> First flag column.
+  integer, parameter :: first_flag = 26
+
+  !> An external spur pair of involute gears with profile shift.
+  type, extends(mechanism_t) :: gear_geometry_mechanism_t
+    !> The validated deck.
+    type(gear_geometry_deck_t) :: deck
+  contains
+    procedure :: read_deck, solve, write_results, analysis_deck
+  end type gear_geometry_mechanism_t
+
+contains
+
+  !> A new gear-geometry mechanism (the registry's constructor).
+  subroutine new_gear_geometry(mech)
+    !> The mechanism.
+    class(mechanism_t), allocatable, intent(out) :: mech
+    allocate (gear_geometry_mechanism_t :: mech)
+    mech%force_sheet = .false.
+    mech%template = gear_geometry_template
+    mech%title_en = "KINETOSTAT  GEAR_GEOMETRY  INVOLUTE SPUR GEAR PAIR WITH PROFILE SHIFT"
+    mech%title_ru = "KINETOSTAT  GEAR_GEOMETRY  ГЕОМЕТРИЧЕСКИЙ РАСЧЕТ ЭВОЛЬВЕНТНОЙ"// &
+      " ЗУБЧАТОЙ ПЕРЕДАЧИ СО СМЕЩЕНИЕМ"
+  end subroutine new_gear_geometry
+
+  subroutine read_deck(self, source, error)
+    class(gear_geometry_mechanism_t), intent(inout) :: self
+    type(deck_source_t), intent(in) :: source
+    type(error_t), allocatable, intent(out) :: error
+    call read_gear_geometry_deck(source, self%deck, error)
+  end subroutine read_deck
+
+  !> The shifts of a validated deck (given, chosen, or split from a_w) and the geometry.
+  pure subroutine gear_geometry_solve(deck, g, error)
+    !> Validated deck.
+    type(gear_geometry_deck_t), intent(in) :: deck
+    !> The geometry of the pair.
+    type(pair_geometry_t), intent(out) :: g
+    !> No shifts meet the rule (shift = 'auto'), or the shifts give no working pressure angle.
+    type(error_t), allocatable, intent(out) :: error
+    real(wp) :: x1, x2
+    x1 = deck%x1
+    x2 = deck%x2
+    if (deck%rule == shift_auto) then
+      if (deck%has_a_w) then
+        call equal_sliding_split(deck%pair, deck%x_sum, x1, x2, error)
+      else
+        call auto_shift(deck%pair, x1, x2, error)
+      end if
+      if (allocated(error)) return
+    else if (deck%rule == shift_from_x1) then
+      x2 = deck%x_sum - deck%x1
+    else if (deck%rule == shift_from_x2) then
+      x1 = deck%x_sum - deck%x2
+    end if
+    g = pair_geometry(deck%pair, x1, x2)
+    if (.not. g%valid) then
+      if (g%alpha_w > 0.0_wp) then
+        call fatal_error(error, exit_input, "x1 = "//short_number(x1)//", x2 = "//short_number(x2)// &
+          ": a tip circle lies inside its base circle (no involute flank); take larger shifts")
+      else
+        call fatal_error(error, exit_input, "x1 + x2 = "//short_number(x1 + x2)// &
+          " is too negative: inv(alpha_w) <= 0, no working pressure angle")
+      end if
+    end if
+  end subroutine gear_geometry_solve
+
+  !> The row, the INPUT DATA echo, the self-check and a warning per flag.
+  subroutine solve(self, table, error)
+    class(gear_geometry_mechanism_t), intent(in) :: self
+    type(step_table_t), intent(inout) :: table
+    type(error_t), allocatable, intent(out) :: error
+    type(pair_geometry_t) :: g
+    call gear_geometry_solve(self%deck, g, error)
+    if (allocated(error)) then
+      error%message = table%deck//": &"//table%mechanism//": "//error%message
+      return
+    end if
+    call table%set_columns(gear_geometry_columns, column_units, column_kinds)
+    table%row_name = "pair"
+    table%driver = "eps_alpha"
+    table%single_record = .true.
+    call table%allocate_rows(1)
+    table%rows(:, 1) = row_values(g)
+    table%residual_label = "INV(ALPHA_W) AGAINST ITS EQUATION"
+    table%mismatch_label = "EPS_ALPHA: FORMULA VS THE PATH OF CONTACT'S ENDS"
+    call table%set_selfcheck(involute_residual(self%deck%pair, g), path_mismatch(g), "eps_alpha", 1, 1)
+    call echo_deck(self%deck, table)
+    call flag_warnings(g, self%deck%pair, table)
+  end subroutine solve
+
+  !> The output row of the geometry.
+  pure function row_values(g) result(v)
+    type(pair_geometry_t), intent(in) :: g
+    real(wp) :: v(size(gear_geometry_columns))
+    v(1:2) = g%x
+    v(3) = g%a_w
+    v(4) = g%alpha_w * rad_to_deg
+    v(5) = g%y
+    v(6) = g%delta_y
+    v(7:8) = g%d
+    v(9:10) = g%db
+    v(11:12) = g%dw
+    v(13:14) = g%da
+    v(15:16) = g%df
+    v(17:18) = g%s
+    v(19:20) = g%sa
+    v(21:22) = g%x_min
+    v(23) = g%eps_alpha
+    v(24:25) = g%sliding
+    v(26:27) = merge(1.0_wp, 0.0_wp, g%undercut)
+    v(28:29) = merge(1.0_wp, 0.0_wp, g%pointed)
+    v(30:31) = merge(1.0_wp, 0.0_wp, g%interference)
+  end function row_values
+
+  !> Relative residual of inv(alpha_w) against inv(alpha) + 2 (x1 + x2) tan(alpha)/(z1 + z2).
+  pure real(wp) function involute_residual(p, g)
+    type(gear_pair_t), intent(in) :: p
+    type(pair_geometry_t), intent(in) :: g
+    real(wp) :: target
+    target = involute(p%alpha) + 2.0_wp * sum(g%x) * tan(p%alpha) / real(p%z1 + p%z2, wp)
+    involute_residual = abs(involute(g%alpha_w) - target) / target
+  end function involute_residual
+
+  !> eps_alpha again, from where the line of action crosses the two tip circles (solved as
+  !> quadratics in the frame of line_of_action), relative to the formula's value.
+  pure real(wp) function path_mismatch(g)
+    type(pair_geometry_t), intent(in) :: g
+    real(wp) :: pts(2, 5), u(2), o2(2), ra(2), b, c, t_near_n1, t_near_n2, eps
+    pts = line_of_action(g)
+    u = (pts(:, 2) - pts(:, 1)) / g%g
+    o2 = [g%a_w, 0.0_wp]
+    ra = 0.5_wp * g%da
+    ! gear 2's tip circle: |N1 + t u - O2| = ra2, the root nearer N1
+    b = dot_product(u, pts(:, 1) - o2)
+    c = sum((pts(:, 1) - o2)**2) - ra(2)**2
+    t_near_n1 = -b - sqrt(max(0.0_wp, b * b - c))
+    ! gear 1's tip circle: |N1 + t u| = ra1, the root nearer N2
+    b = dot_product(u, pts(:, 1))
+    c = sum(pts(:, 1)**2) - ra(1)**2
+    t_near_n2 = -b + sqrt(max(0.0_wp, b * b - c))
+    eps = (t_near_n2 - t_near_n1) / g%base_pitch
+    path_mismatch = abs(eps - g%eps_alpha) / max(abs(g%eps_alpha), 1.0e-300_wp)
+  end function path_mismatch
+
+  !> A warning for each condition of the blocking contour the pair breaks.
+  pure subroutine flag_warnings(g, p, table)
+    type(pair_geometry_t), intent(in) :: g
+    type(gear_pair_t), intent(in) :: p
+    type(step_table_t), intent(inout) :: table
+    integer :: i
+    character(len=1) :: n
+    do i = 1, 2
+      n = achar(iachar("0") + i)
+      if (g%undercut(i)) call table%add_warning("gear "//n//" is undercut: x"//n//" = "//short_number(g%x(i))// &
+        " < x"//n//"_min = "//short_number(g%x_min(i))//" (ha* - (z/2) sin^2 alpha)")
+      if (g%pointed(i)) call table%add_warning("gear "//n//"'s tooth is too thin at the tip: sa"//n//" = "// &
+        short_number(g%sa(i))//" mm < sa_min_star*m = "//short_number(p%sa_min_star * p%m)//" mm")
+      if (g%interference(i)) call table%add_warning("interference: gear "//int_str(3 - i)// &
+        "'s tip meshes below the base circle of gear "//n//" (the active path ends beyond N"//n//")")
+    end do
+    if (g%eps_alpha < 1.0_wp) call table%add_warning("eps_alpha = "//short_number(g%eps_alpha)// &
+      " < 1: the pair does not keep a tooth in mesh at all times")
+  end subroutine flag_warnings
+
+  !> The INPUT DATA echo.
+  pure subroutine echo_deck(deck, table)
+    type(gear_geometry_deck_t), intent(in) :: deck
+    type(step_table_t), intent(inout) :: table
+    call table%echo_real("M", deck%pair%m, "mm")
+    call table%echo_int("Z1", deck%pair%z1, "")
+    call table%echo_int("Z2", deck%pair%z2, "")
+    call table%echo_real("ALPHA", deck%pair%alpha * rad_to_deg, "deg")
+    call table%echo_real("HA_STAR", deck%pair%ha_star, "")
+    call table%echo_real("C_STAR", deck%pair%c_star, "")
+    call table%echo_real("SA_MIN_STAR", deck%pair%sa_min_star, "")
+    select case (deck%rule)
+    case (shift_auto)
+      call table%echo_text("SHIFT", "auto")
+    case (shift_from_x1)
+      call table%echo_real("X1", deck%x1, "")
+    case (shift_from_x2)
+      call table%echo_real("X2", deck%x2, "")
+    case default
+      call table%echo_real("X1", deck%x1, "")
+      call table%echo_real("X2", deck%x2, "")
+    end select
+    if (deck%has_a_w) then
+      call table%echo_real("A_W", deck%a_w, "mm")
+      call table%echo_real("X1 + X2", deck%x_sum, "(derived)")
+    end if
+    if (deck%has_m1) call table%echo_real("M1", deck%m1, "N*m")
+  end subroutine echo_deck
+
+  !> RESULTS: the named values of the pair, the flags in words.
+  pure subroutine write_results(self, table, lang, first, last, out, later)
+    class(gear_geometry_mechanism_t), intent(in) :: self
+    type(step_table_t), intent(in) :: table
+    integer, intent(in) :: lang
+    integer, intent(in) :: first, last
+    type(text_buffer_t), intent(inout) :: out
+    type(text_buffer_t), intent(inout) :: later
+    integer :: c
+    if (first > 1 .or. last < 1) return
+    associate (v => table%rows(:, 1))
+      do c = 1, first_flag - 1
+        call out%put(value_line(upper_name(c), v(c), phrase(trim(column_units(c)), lang)))
+      end do
+      call put_heading(out, heading(lang))
+      do c = first_flag, size(gear_geometry_columns)
+        call out%put("   "//pad_right(upper_name(c), 16)//"="//int_field(v(c), 18)//"  "//flag_word(c, v(c) /= 0.0_wp, &
+          lang))
+      end do
+    end associate
+  contains
+    pure function upper_name(c) result(name)
+      integer, intent(in) :: c
+      character(len=:), allocatable :: name
+      integer :: k
+      name = trim(gear_geometry_columns(c))
+      do k = 1, len(name)
+        if (name(k:k) >= "a" .and. name(k:k) <= "z") name(k:k) = achar(iachar(name(k:k)) - 32)
+      end do
+    end function upper_name
+  end subroutine write_results
+
+  !> Heading of the conditions block.
+  pure function heading(lang) result(text)
+    integer, intent(in) :: lang
+    character(len=:), allocatable :: text
+    if (lang == lang_ru) then
+      text = "ПРОВЕРКА ПО БЛОКИРУЮЩЕМУ КОНТУРУ (1 - УСЛОВИЕ НАРУШЕНО)"
+    else
+      text = "CONDITIONS OF THE BLOCKING CONTOUR (1 - BROKEN)"
+    end if
+  end function heading
+
+  !> What flag column c means, in words (broken or kept).
+  pure function flag_word(c, broken, lang) result(text)
+    integer, intent(in) :: c
+    logical, intent(in) :: broken
+    integer, intent(in) :: lang
+    character(len=:), allocatable :: text
+    character(len=1) :: n
+    integer :: which
+    n = achar(iachar("1") + mod(c - first_flag, 2))
+    which = (c - first_flag) / 2
+    if (lang == lang_ru) then
+      select case (which)
+      case (0)
+        text = "ПОДРЕЗАНИЕ ЗУБЬЕВ КОЛЕСА "//n
+      case (1)
+        text = "ЗАОСТРЕНИЕ ЗУБЬЕВ КОЛЕСА "//n
+      case default
+        text = "ИНТЕРФЕРЕНЦИЯ ЗУБЬЕВ КОЛЕСА "//n
+      end select
+      if (broken) then
+        text = text//": ЕСТЬ"
+      else
+        text = text//": НЕТ"
+      end if
+    else
+      select case (which)
+      case (0)
+        text = "UNDERCUT OF GEAR "//n
+      case (1)
+        text = "POINTED TEETH OF GEAR "//n
+      case default
+        text = "INTERFERENCE ON GEAR "//n
+      end select
+      if (broken) then
+        text = text//": YES"
+      else
+        text = text//": NO"
+      end if
+    end if
+  end function flag_word
+
+  !> The matching analysis deck: a `&gears` spur stage of this pair (working pitch diameter
+  !> dw1 and working pressure angle alpha_w), driven by the deck's m1.
+  subroutine analysis_deck(self, table, out, error)
+    class(gear_geometry_mechanism_t), intent(in) :: self
+    type(step_table_t), intent(in) :: table
+    type(text_buffer_t), intent(inout) :: out
+    type(error_t), allocatable, intent(out) :: error
+    if (.not. self%deck%has_m1) then
+      call fatal_error(error, exit_input, table%deck//": &gear_geometry: m1: missing: --format deck needs the "// &
+        "torque on gear 1 (N*m) of the &gears deck it writes")
+      return
+    end if
+    associate (v => table%rows(:, 1))
+      call out%put("! kinetostat deck: the forces in the mesh of the spur pair designed by a &gear_geometry")
+      call out%put("! deck (kinetostat --format deck): z1 = "//int_str(self%deck%pair%z1)//", z2 = "// &
+        int_str(self%deck%pair%z2)//", m = "//short_number(self%deck%pair%m)//" mm, x1 = "//short_number(v(1))// &
+        ", x2 = "//short_number(v(2))//", a_w = "//short_number(v(3))//" mm.")
+      call out%put("! The pitch diameter of the mesh is the working one (dw1), its angle alpha_w.")
+      call out%put("&gears")
+      call out%put("  stage   = 'spur'")
+      call out%put("  m1      = "//full_number(self%deck%m1)//"   ! N*m, torque on gear 1 from its shaft")
+      call out%put("  z1      = "//int_str(self%deck%pair%z1))
+      call out%put("  z2      = "//int_str(self%deck%pair%z2))
+      call out%put("  dw1     = "//full_number(v(11))//"   ! mm, working pitch diameter of gear 1")
+      call out%put("  alpha_w = "//full_number(v(4))//"   ! deg, working pressure angle")
+      call out%put("/")
+    end associate
+  end subroutine analysis_deck
+
+  !> `kinetostat contour DECK`: the blocking contour of the deck's pair (z1, z2 and the basic
+  !> rack) as long-format CSV "curve,x1,x2", one point a line, the curves in the order of
+  !> contour_names and each one's points in order along it.
+  subroutine gear_contour_text(source, out, error)
+    !> A `&gear_geometry` deck.
+    type(deck_source_t), intent(in) :: source
+    type(text_buffer_t), intent(inout) :: out
+    type(error_t), allocatable, intent(out) :: error
+    type(gear_geometry_deck_t) :: deck
+    type(contour_curve_t), allocatable :: curves(:)
+    integer :: c, k
+    call read_gear_geometry_deck(source, deck, error)
+    if (allocated(error)) return
+    allocate (curves(8))
+    call blocking_contour(deck%pair, curves)
+    call out%put("curve,x1,x2")
+    do c = 1, size(curves)
+      do k = 1, size(curves(c)%x1)
+        call out%put(curves(c)%name//","//full_number(curves(c)%x1(k))//","//full_number(curves(c)%x2(k)))
+      end do
+    end do
+  end subroutine gear_contour_text
+
+end module kinetostat_gear_geometry_layout

@@ -1,0 +1,206 @@
+!> Tooth numbers of a planetary train as a mechanism of the run pipeline: deck -> the search
+!> -> one row (z1, z2, z3, k, u_actual and how each condition is met), the legacy block with
+!> every condition in words, and the analysis deck (--format deck: a `&gears` planetary stage).
+module kinetostat_planetary_synthesis_layout
+  use kinetostat_kinds, only: wp
+  use kinetostat_deck, only: deck_source_t
+  use kinetostat_error, only: error_t, fatal_error, exit_input
+  use kinetostat_text, only: int_str
+  use kinetostat_step_table, only: step_table_t, col_count, col_ratio
+  use kinetostat_text_buffer, only: text_buffer_t
+  use kinetostat_table_writer, only: put_heading, value_line
+  use kinetostat_format, only: full_number, int_field, pad_right, short_number
+  use kinetostat_labels, only: lang_ru
+  use kinetostat_mechanism, only: mechanism_t
+  use kinetostat_planetary_synthesis, only: planetary_train_t, planetary_search, train_conditions
+  use kinetostat_planetary_synthesis_deck, only: planetary_synthesis_deck_t, read_planetary_synthesis_deck, &
+    planetary_synthesis_template
+  implicit none
+  private
+  public :: planetary_synthesis_mechanism_t, new_planetary_synthesis, planetary_columns
+
+  !> Output columns (one row): see docs/planetary-synthesis.md.
+  character(*), parameter :: planetary_columns(*) = [character(len=16) :: &
+    "z1", "z2", "z3", "k", "u_actual", "u_deviation", "assembly_number", "neighbour_margin"]
+  !> Units of the columns (teeth, ratios).
+  character(*), parameter :: column_units(*) = [character(len=1) :: "", "", "", "", "", "", "", ""]
+  !> Kinds of the columns.
+  integer, parameter :: column_kinds(*) = [col_count, col_count, col_count, col_count, col_ratio, col_ratio, &
+    col_ratio, col_ratio]
+
+  !> Tooth numbers of a single-row planetary train.
+  type, extends(mechanism_t) :: planetary_synthesis_mechanism_t
+    !> The validated deck.
+    type(planetary_synthesis_deck_t) :: deck
+  contains
+    procedure :: read_deck, solve, write_results, analysis_deck
+  end type planetary_synthesis_mechanism_t
+
+contains
+
+  !> A new planetary-synthesis mechanism (the registry's constructor).
+  subroutine new_planetary_synthesis(mech)
+    !> The mechanism.
+    class(mechanism_t), allocatable, intent(out) :: mech
+    allocate (planetary_synthesis_mechanism_t :: mech)
+    mech%force_sheet = .false.
+    mech%template = planetary_synthesis_template
+    mech%title_en = "KINETOSTAT  PLANETARY_SYNTHESIS  TOOTH NUMBERS OF A SINGLE-ROW PLANETARY TRAIN"
+    mech%title_ru = "KINETOSTAT  PLANETARY_SYNTHESIS  ПОДБОР ЧИСЕЛ ЗУБЬЕВ ОДНОРЯДНОГО"// &
+      " ПЛАНЕТАРНОГО МЕХАНИЗМА"
+  end subroutine new_planetary_synthesis
+
+  subroutine read_deck(self, source, error)
+    class(planetary_synthesis_mechanism_t), intent(inout) :: self
+    type(deck_source_t), intent(in) :: source
+    type(error_t), allocatable, intent(out) :: error
+    call read_planetary_synthesis_deck(source, self%deck, error)
+  end subroutine read_deck
+
+  !> The search into one row, with the INPUT DATA echo.
+  subroutine solve(self, table, error)
+    class(planetary_synthesis_mechanism_t), intent(in) :: self
+    type(step_table_t), intent(inout) :: table
+    type(error_t), allocatable, intent(out) :: error
+    type(planetary_train_t) :: t
+    call planetary_search(self%deck%spec, t, error)
+    if (allocated(error)) then
+      error%message = table%deck//": &"//table%mechanism//": "//error%message
+      return
+    end if
+    call table%set_columns(planetary_columns, column_units, column_kinds)
+    table%row_name = "train"
+    table%driver = "u_actual"
+    table%single_record = .true.
+    table%has_selfcheck = .false.
+    call table%allocate_rows(1)
+    table%rows(:, 1) = [real(t%z1, wp), real(t%z2, wp), real(t%z3, wp), real(self%deck%spec%k, wp), t%u_actual, &
+      t%u_deviation, t%assembly_number, t%neighbour_margin]
+    call table%echo_text("SCHEME", "single_row")
+    call table%echo_real("U", self%deck%spec%u, "")
+    call table%echo_int("K", self%deck%spec%k, "satellites")
+    call table%echo_real("U_TOLERANCE", self%deck%spec%u_tolerance, "")
+    call table%echo_int("Z_MIN", self%deck%spec%z_min, "")
+    call table%echo_int("Z_RING_MIN", self%deck%spec%z_ring_min, "")
+    if (self%deck%has_m) call table%echo_real("M", self%deck%m, "mm")
+    if (self%deck%has_m1) call table%echo_real("M1", self%deck%m1, "N*m")
+  end subroutine solve
+
+  !> RESULTS: the tooth numbers and the ratio, then every condition with its numbers.
+  pure subroutine write_results(self, table, lang, first, last, out, later)
+    class(planetary_synthesis_mechanism_t), intent(in) :: self
+    type(step_table_t), intent(in) :: table
+    integer, intent(in) :: lang
+    integer, intent(in) :: first, last
+    type(text_buffer_t), intent(inout) :: out
+    type(text_buffer_t), intent(inout) :: later
+    type(planetary_train_t) :: t
+    integer :: z1, z2, z3, k
+    character(len=:), allocatable :: met
+    if (first > 1 .or. last < 1) return
+    associate (v => table%rows(:, 1))
+      z1 = nint(v(1))
+      z2 = nint(v(2))
+      z3 = nint(v(3))
+      k = nint(v(4))
+      call out%put(count_line("Z1", z1))
+      call out%put(count_line("Z2", z2))
+      call out%put(count_line("Z3", z3))
+      call out%put(count_line("K", k))
+      call out%put(value_line("U_ACTUAL", v(5), ""))
+      call out%put(value_line("U_DEVIATION", v(6), ""))
+    end associate
+    t = train_conditions(self%deck%spec, z1, z2, z3)
+    if (lang == lang_ru) then
+      call put_heading(out, "УСЛОВИЯ ПОДБОРА ЧИСЕЛ ЗУБЬЕВ")
+      met = "ВЫПОЛНЕНО"
+      call out%put(condition("СООСНОСТЬ", "Z3 = Z1 + 2*Z2: "//int_str(z3)//" = "//int_str(z1)//" + "//int_str(2 * z2), &
+        t%met(1), met))
+      call out%put(condition("СБОРКА", "(Z1 + Z3)/K = "//int_str(z1 + z3)//"/"//int_str(k)//" = "// &
+        short_number(t%assembly_number)//" - ЦЕЛОЕ", t%met(2), met))
+      call out%put(condition("СОСЕДСТВО", neighbour_text("sin"), t%met(3), met))
+      call out%put(condition("ЗУБЬЯ", "Z1 = "//int_str(z1)//", Z2 = "//int_str(z2)//" >= "// &
+        int_str(self%deck%spec%z_min)//"; Z3 = "//int_str(z3)//" >= "//int_str(self%deck%spec%z_ring_min), &
+        t%met(4) .and. t%met(5), met))
+      call out%put(condition("ОТНОШЕНИЕ", ratio_text(), t%met(6), met))
+    else
+      call put_heading(out, "CONDITIONS OF THE TRAIN")
+      met = "MET"
+      call out%put(condition("COAXIALITY", "Z3 = Z1 + 2*Z2: "//int_str(z3)//" = "//int_str(z1)//" + "//int_str(2 * z2), &
+        t%met(1), met))
+      call out%put(condition("ASSEMBLY", "(Z1 + Z3)/K = "//int_str(z1 + z3)//"/"//int_str(k)//" = "// &
+        short_number(t%assembly_number)//", A WHOLE NUMBER", t%met(2), met))
+      call out%put(condition("NEIGHBOURS", neighbour_text("sin"), t%met(3), met))
+      call out%put(condition("LEAST TEETH", "Z1 = "//int_str(z1)//", Z2 = "//int_str(z2)//" >= "// &
+        int_str(self%deck%spec%z_min)//"; Z3 = "//int_str(z3)//" >= "//int_str(self%deck%spec%z_ring_min), &
+        t%met(4) .and. t%met(5), met))
+      call out%put(condition("RATIO", ratio_text(), t%met(6), met))
+    end if
+  contains
+    pure function count_line(name, n) result(line)
+      character(*), intent(in) :: name
+      integer, intent(in) :: n
+      character(len=:), allocatable :: line
+      line = "   "//pad_right(name, 16)//"="//int_field(real(n, wp), 18)
+    end function count_line
+    pure function neighbour_text(sine) result(text)
+      character(*), intent(in) :: sine
+      character(len=:), allocatable :: text
+      if (k == 1) then
+        text = "K = 1"
+      else
+        text = "(Z1 + Z2)*"//sine//"(180/K) = "//short_number(t%neighbour_margin + real(z2 + 2, wp))//" > Z2 + 2 = "// &
+          int_str(z2 + 2)
+      end if
+    end function neighbour_text
+    pure function ratio_text() result(text)
+      character(len=:), allocatable :: text
+      text = "|1 + Z3/Z1 - U| = "//short_number(abs(t%u_actual - self%deck%spec%u))//" <= U_TOLERANCE*U = "// &
+        short_number(self%deck%spec%u_tolerance * self%deck%spec%u)
+    end function ratio_text
+  end subroutine write_results
+
+  !> "   NAME           formula   MET" (NOT MET never occurs in an answer, but is said).
+  pure function condition(name, formula, ok, met) result(line)
+    character(*), intent(in) :: name, formula
+    logical, intent(in) :: ok
+    character(*), intent(in) :: met
+    character(len=:), allocatable :: line
+    line = "   "//pad_right(name, 16)//formula
+    if (ok) then
+      line = line//"   "//met
+    else
+      line = line//"   !!"
+    end if
+  end function condition
+
+  !> The matching analysis deck: a `&gears` planetary stage of the train, driven by m1 on
+  !> the sun, with the module m.
+  subroutine analysis_deck(self, table, out, error)
+    class(planetary_synthesis_mechanism_t), intent(in) :: self
+    type(step_table_t), intent(in) :: table
+    type(text_buffer_t), intent(inout) :: out
+    type(error_t), allocatable, intent(out) :: error
+    if (.not. (self%deck%has_m .and. self%deck%has_m1)) then
+      call fatal_error(error, exit_input, table%deck//": &planetary_synthesis: "// &
+        trim(merge("m1", "m ", self%deck%has_m))//": missing: --format deck needs the module m (mm) and the "// &
+        "torque on the sun m1 (N*m) of the &gears deck it writes")
+      return
+    end if
+    associate (v => table%rows(:, 1))
+      call out%put("! kinetostat deck: the forces in the planetary train chosen by a &planetary_synthesis deck")
+      call out%put("! (kinetostat --format deck): u = "//short_number(self%deck%spec%u)//" asked, u_1H = "// &
+        short_number(v(5))//".")
+      call out%put("&gears")
+      call out%put("  stage = 'planetary'")
+      call out%put("  m1    = "//full_number(self%deck%m1)//"   ! N*m, torque on the sun from its shaft")
+      call out%put("  z1    = "//int_str(nint(v(1)))//"   ! sun")
+      call out%put("  z2    = "//int_str(nint(v(2)))//"   ! planet")
+      call out%put("  z3    = "//int_str(nint(v(3)))//"   ! ring (fixed)")
+      call out%put("  k     = "//int_str(nint(v(4)))//"   ! planets")
+      call out%put("  m     = "//full_number(self%deck%m)//"   ! mm, module")
+      call out%put("/")
+    end associate
+  end subroutine analysis_deck
+
+end module kinetostat_planetary_synthesis_layout

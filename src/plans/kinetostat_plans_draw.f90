@@ -1,0 +1,892 @@
+!> The plans sheet (`--format plans --at K`, and `--format dxf --at K --plans`) on the drawing
+!> model: the graphical method at one step on one A2 landscape sheet in the ГОСТ frame, as the
+!> course draws it, every drawing in the frame of the mechanism's drawing (gravity down the
+!> sheet), so that a plan can be checked against the drawn links (v_CB perpendicular to CB):
+!> - the mechanism at a ГОСТ 2.302 scale (its joints marked data-joint, its centres of mass
+!>   data-point);
+!> - the plan of velocities: pole p, the image of every joint and centre of mass (lower-case:
+!>   b, c, s2; b3 the point of link 3 under B; p′ the image of a joint named P), marked
+!>   data-image in sheet mm, the relative velocities as the vector equations close them
+!>   (v_CB, v_B2B3), μv;
+!> - the plan of accelerations: pole π, the images, the components of every vector equation
+!>   (n, τ, k, r), μa;
+!> - Zhukovsky's lever: the plan of velocities turned by 90 deg, every load of the lever's
+!>   equation at its image at the lever's μF (a moment as its couple F = M/l at two images),
+!>   the arm of every force (dashed, from the pole), the balancing force P_bal at its image;
+!>   the table of the loads (value, image, arm in mm);
+!> - the force polygons of the units of the structure in the course's order, the whole
+!>   reactions and the inner reaction drawn; an input link's cell with the link, its forces and
+!>   their arms at a scale of its own;
+!> - the values table (v, ω with its sense, a^n, a^τ, a^k, ε with its sense) and the
+!>   balancing effort: from the lever, the analytic one, and the two as read off the sheet.
+!> A vector shorter than 1 mm at its scale is not drawn; a note names it. The numbers come
+!> from kinetostat_plans, the sheet's geometry from kinetostat_plans_sheet.
+module kinetostat_plans_draw
+  use kinetostat_kinds, only: wp, pi, version_string, rad_to_deg
+  use kinetostat_svg, only: coord
+  use kinetostat_text, only: int_str, lower
+  use kinetostat_format, only: short_number, fixed_number, full_number
+  use kinetostat_step_table, only: step_table_t
+  use kinetostat_labels, only: word => label, unit_word => unit_symbol, lang_ru
+  use kinetostat_scales, only: scale_number, round_scale
+  use kinetostat_sheet, only: sheet_t, entity_group, layer_text, layer_vplan, layer_aplan, layer_polygons, layer_lever, &
+    layer_scales, layer_frame, anchor_start, anchor_end
+  use kinetostat_title_block, only: put_sheet_format, title_block_from_table
+  use kinetostat_drawing, only: drawing_t, drawing_point_t, drawing_body_t, drawing_force_t, drawing_moment_t, &
+    force_gravity, force_inertia, force_load, force_pair, point_pivot
+  use kinetostat_mechanism_view, only: mechanism_view_t, fit_mechanism_view, draw_mechanism, force_colours
+  use kinetostat_mechanism_sheet, only: fitted_size
+  use kinetostat_plans_base, only: plans_t, plan_vector_t, plan_equation_t, lever_load_t, force_polygon_t, &
+    component_normal, component_tangential, component_coriolis, component_relative, component_reaction, load_moment, perp
+  use kinetostat_plans_sheet, only: plans_sheet_t, turn, chain_tips, polygon_tips, panel_inner, panel_head, &
+    input_link_drawing
+  implicit none
+  private
+  public :: draw_plans_sheet, display_name
+
+  !> A vector drawn shorter than this is listed, not drawn, mm.
+  real(wp), parameter :: shortest = 1.0_wp
+  !> Colours: images' rays, the plans' components (normal, tangential, Coriolis, relative),
+  !> known reactions, whole reactions, inner reactions, the balancing force, arms.
+  character(*), parameter :: ray_colour = "#1f77b4", normal_colour = "#2ca02c", tangential_colour = "#d62728", &
+    coriolis_colour = "#9467bd", relative_colour = "#ff7f0e", known_colour = "#7f3f3f", whole_colour = "#000000", &
+    inner_colour = "#9467bd", balancing_colour = "#000000", arm_colour = "#888888"
+  !> Pitch of the tables' rows, mm.
+  real(wp), parameter :: pitch = 3.2_wp
+
+contains
+
+  !> The plans sheet of row `k`.
+  pure subroutine draw_plans_sheet(title, table, k, drawing, plans, geo, lang, sheet)
+    !> Title of the mechanism.
+    character(*), intent(in) :: title
+    !> The results.
+    type(step_table_t), intent(in) :: table
+    !> Row (1-based).
+    integer, intent(in) :: k
+    !> The mechanism at that row, with its forces.
+    type(drawing_t), intent(in) :: drawing
+    !> The plans of that row and the sheet's geometry.
+    type(plans_t), intent(in) :: plans
+    type(plans_sheet_t), intent(in) :: geo
+    !> lang_en or lang_ru.
+    integer, intent(in) :: lang
+    !> The sheet made.
+    type(sheet_t), intent(out) :: sheet
+    character(len=:), allocatable :: line, short
+    real(wp) :: inner(4)
+    integer :: i
+
+    call sheet%open(geo%paper, lang, title//" - "//table%deck//" - plans, "//table%row_name//" "//int_str(k), &
+      "kinetostat --format plans --at "//int_str(k)//" sheet of "//table%deck//": the mechanism, the plans of "// &
+      "velocities and accelerations in its frame, Zhukovsky's lever, the force polygons. The mechanism's group "// &
+      "gives its view (data-origin, data-scale, data-rotation); velocity images carry data-image, in sheet mm.")
+    call put_sheet_format(sheet, title_block_from_table(table, word("Plans of velocities, accelerations, forces", lang), &
+      geo%view%drawing_scale%text))
+    inner = geo%paper%inside()
+
+    ! the header: the mechanism's title, the deck with its own title and the --set changes, the step
+    call sheet%set_layer(layer_text)
+    call sheet%text(inner(1) + 3.0_wp, 11.0_wp, title, "title", size=fitted_size(title, 3.3_wp, inner(3) - inner(1) - &
+      6.0_wp, 0.72_wp), plain=.true.)
+    line = word("deck", lang)//": "//table%deck
+    if (allocated(table%subtitle)) line = line//"   "//table%subtitle
+    if (allocated(table%overrides)) then
+      if (size(table%overrides) > 0) then
+        line = line//"   --set"
+        do i = 1, size(table%overrides)
+          line = line//" "//trim(table%overrides(i))
+        end do
+      end if
+    end if
+    call sheet%text(inner(1) + 3.0_wp, 16.5_wp, line, "subtitle", size=fitted_size(line, 3.0_wp, inner(3) - inner(1) - &
+      6.0_wp, 0.6_wp), plain=.true.)
+    line = word(table%row_name, lang)//" "//int_str(k)//" "//word("of", lang)//" "//int_str(table%row_count())
+    if (table%input_column > 0) line = line//": "//table%columns(table%input_column)%name//" = "// &
+      short_number(table%rows(table%input_column, k))//" "//unit_word(table%columns(table%input_column)%unit, lang)
+    if (allocated(drawing%view_note)) line = line//"; "//word(drawing%view_note, lang)//", "// &
+      word("the plans in the mechanism's frame", lang)
+    line = line//"; "//version_string
+    call sheet%text(inner(1) + 3.0_wp, 21.5_wp, line, "small")
+
+    ! the mechanism
+    call panel(sheet, geo%mechanism, word("Mechanism", lang)//", "//word("position", lang)//" "//int_str(k))
+    call draw_mechanism(sheet, drawing, geo%view, panel_inner(geo%mechanism), 0.0_wp, short)
+    call foot(sheet, geo%mechanism, "μl = "//scale_number(geo%mu_l)//" "//unit_word("m", lang)//"/"// &
+      unit_word("mm", lang)//" ("//geo%view%drawing_scale%text//")")
+
+    ! the plans
+    call panel(sheet, geo%velocity, word("Plan of velocities", lang))
+    call sheet%set_layer(layer_vplan)
+    call draw_plan(sheet, geo, plans%velocities, plans%velocity_equations, geo%velocity, geo%pole_v, geo%mu_v, "p", &
+      .false., lang)
+    call foot(sheet, geo%velocity, "μv = "//scale_number(geo%mu_v)//" ("//unit_word("m/s", lang)//")/"// &
+      unit_word("mm", lang)//";  "//word("relative velocities: v_PQ of a link's points, r along a guide", lang))
+    call panel(sheet, geo%acceleration, word("Plan of accelerations", lang))
+    call sheet%set_layer(layer_aplan)
+    call draw_plan(sheet, geo, plans%accelerations, plans%equations, geo%acceleration, geo%pole_a, geo%mu_a, "π", &
+      .true., lang)
+    call foot(sheet, geo%acceleration, "μa = "//scale_number(geo%mu_a)//" ("//unit_word("m/s^2", lang)//")/"// &
+      unit_word("mm", lang)//";  "//word("components: n normal, τ tangential, k Coriolis, r relative", lang))
+
+    ! the lever and its table
+    call panel(sheet, geo%lever, word("Zhukovsky's lever", lang))
+    call panel(sheet, geo%lever_table, word("Loads on the lever", lang))
+    call sheet%set_layer(layer_lever)
+    if (plans%lever_known) then
+      call draw_lever(sheet, geo, plans, lang)
+      call foot(sheet, geo%lever, "μv = "//scale_number(geo%mu_lever)//" ("//unit_word("m/s", lang)//")/"// &
+        unit_word("mm", lang)//";  μF = "//scale_number(geo%mu_force)//" "//unit_word("N", lang)//"/"// &
+        unit_word("mm", lang))
+    else
+      call sheet%text(geo%lever(1) + 3.0_wp, geo%lever(2) + panel_head + 6.0_wp, word("not drawn", lang)//": "// &
+        word(plans%lever_note, lang), "label")
+    end if
+
+    ! the force polygons
+    call panel(sheet, geo%polygons, word("Force polygons of the groups", lang)//" ("// &
+      word("known forces first, then the unknown reactions", lang)//")")
+    call sheet%set_layer(layer_polygons)
+    call draw_polygons(sheet, geo, drawing, plans, lang)
+
+    ! the values and the balancing effort
+    call panel(sheet, geo%values, word("Values read off the plans", lang))
+    call sheet%set_layer(layer_text)
+    call values_table(sheet, geo%values, plans, lang)
+    call panel(sheet, geo%results, word("Balancing effort", lang))
+    call results(sheet, geo, plans, lang)
+  end subroutine draw_plans_sheet
+
+  !> A panel's frame and heading.
+  pure subroutine panel(sheet, box, heading)
+    type(sheet_t), intent(inout) :: sheet
+    real(wp), intent(in) :: box(4)
+    character(*), intent(in) :: heading
+    call sheet%set_layer(layer_frame)
+    call sheet%rect(box(1), box(2), box(3) - box(1), box(4) - box(2), "panel")
+    call sheet%set_layer(layer_text)
+    call sheet%text(box(1) + 2.0_wp, box(2) + 5.0_wp, heading, "heading", size=fitted_size(heading, 3.2_wp, &
+      box(3) - box(1) - 4.0_wp, 0.6_wp))
+  end subroutine panel
+
+  !> A panel's scale line at its bottom.
+  pure subroutine foot(sheet, box, text)
+    type(sheet_t), intent(inout) :: sheet
+    real(wp), intent(in) :: box(4)
+    character(*), intent(in) :: text
+    call sheet%set_layer(layer_scales)
+    call sheet%text(box(1) + 2.0_wp, box(4) - 3.0_wp, text, "small", size=fitted_size(text, 2.4_wp, &
+      box(3) - box(1) - 4.0_wp, 0.6_wp))
+  end subroutine foot
+
+  !> The name of a point's image on a plan: the point's name in lower case (b, s2, j21, b3);
+  !> p′ for a joint named P (the pole is p).
+  pure function image_label(name) result(text)
+    character(*), intent(in) :: name
+    character(len=:), allocatable :: text
+    text = lower(trim(name))
+    if (text == "p") text = "p′"
+  end function image_label
+
+  !> A load's name as the sheet writes it: the program's name, typeset (Phi2 -> Φ₂, MPhi3 ->
+  !> M_Φ3 / M_и3), the friction actions M_f21, F_f21 (ru M_тр21), the balancing force P_b
+  !> (ru P_ур).
+  pure function display_name(name, lang) result(text)
+    character(*), intent(in) :: name
+    integer, intent(in) :: lang
+    character(len=:), allocatable :: text
+    character(len=:), allocatable :: f, prefix
+    integer :: at_l
+    text = trim(name)
+    f = "f"
+    if (lang == lang_ru) f = "тр"
+    if (text == "P_bal") then
+      text = "P_b"
+      if (lang == lang_ru) text = "P_ур"
+      return
+    end if
+    if (len(text) >= 3) then
+      if ((text(1:2) == "Mf" .or. text(1:2) == "Ff") .and. verify(text(3:), "0123456789") == 0) then
+        text = text(1:1)//"_"//f//text(3:)
+        return
+      end if
+    end if
+    ! a link named L<n> (an &assur deck's link 1 that is not the crank): its symbols' index
+    ! lowered whole (G_L1, Φ_L1, M_иL1, ε_L1)
+    at_l = index(text, "L", back=.true.)
+    if (at_l > 1 .and. at_l < len(text)) then
+      if (verify(text(at_l + 1:), "0123456789") == 0 .and. index(text(:at_l - 1), "_") == 0) then
+        prefix = text(:at_l - 1)
+        if (prefix == "MPhi") then
+          text = "M_"//merge("и", "Φ", lang == lang_ru)//text(at_l:)
+        else if (any(prefix == [character(len=5) :: "G", "Phi", "eps", "omega", "phi", "v", "a", "S"])) then
+          text = prefix//"_"//text(at_l:)
+        end if
+      end if
+    end if
+  end function display_name
+
+  !> A plan (velocities, or accelerations when `accel`): the pole, a ray to every image (its
+  !> name at its end; the images of the velocity plan marked data-image), the components of
+  !> every vector equation head to tail from the image they start from, named.
+  pure subroutine draw_plan(sheet, geo, images, equations, box, pole, mu, pole_name, accel, lang)
+    type(sheet_t), intent(inout) :: sheet
+    type(plans_sheet_t), intent(in) :: geo
+    type(plan_vector_t), intent(in) :: images(:)
+    type(plan_equation_t), intent(in) :: equations(:)
+    real(wp), intent(in) :: box(4), pole(2), mu
+    character(*), intent(in) :: pole_name
+    logical, intent(in) :: accel
+    integer, intent(in) :: lang
+    real(wp), allocatable :: tips(:, :), ends(:, :)
+    real(wp) :: q(2), p(2), t(2), area(4)
+    character(len=:), allocatable :: short, at_pole
+    character(len=16), allocatable :: names(:)
+    character(len=1), allocatable :: kinds(:)
+    integer :: i, e, j
+    area = panel_inner(box)
+    short = ""
+    at_pole = ""
+    ! the plan's group: where its pole is and its scale (a point of the plan v is drawn at
+    ! pole + (q1, -q2) / mu, q = v turned by the sheet's rotation)
+    call sheet%group(trim(merge("acceleration-plan", "velocity-plan    ", accel)))
+    call sheet%attach("data-pole", coord(pole(1))//" "//coord(pole(2)))
+    call sheet%attach("data-mu", full_number(mu))
+    call sheet%attach("data-rotation", full_number(geo%rotation * rad_to_deg))
+    ! the components of the equations head to tail (a velocity equation from the pole that is
+    ! one rotation is the image's own ray), those 1 mm and longer drawn
+    allocate (ends(4, 0), names(0), kinds(0))
+    do e = 1, size(equations)
+      call chain_tips(equations(e), images, tips)
+      if (own_ray(equations(e), tips)) cycle
+      do j = 1, size(equations(e)%vectors)
+        p = at(tips(:, j))
+        t = at(tips(:, j + 1))
+        if (norm2(t - p) < shortest) then
+          if (norm2(equations(e)%vectors(j)%v) > 0.0_wp) call listed(short, trim(equations(e)%vectors(j)%name))
+          cycle
+        end if
+        ends = reshape([ends, p, t], [4, size(ends, 2) + 1])
+        names = [character(len=16) :: names, equations(e)%vectors(j)%name]
+        kinds = [character(len=1) :: kinds, equations(e)%vectors(j)%kind]
+      end do
+    end do
+    do j = 1, size(names)
+      call sheet%arrow(ends(1, j), ends(2, j), ends(3, j), ends(4, j), component_colour(kinds(j)), 0.25_wp, 1.5_wp)
+    end do
+    ! the rays to the images
+    do i = 1, size(images)
+      q = at(images(i)%v)
+      if (norm2(q - pole) < shortest) cycle
+      call sheet%arrow(pole(1), pole(2), q(1), q(2), ray_colour, 0.3_wp, 1.8_wp)
+    end do
+    call sheet%circle(pole(1), pole(2), 0.7_wp, "origin")
+    do i = 1, size(images)
+      q = at(images(i)%v)
+      call sheet%circle(q(1), q(2), 0.35_wp, "point")
+      if (accel) then
+        call sheet%attach("data-acceleration-image", image_label(images(i)%name))
+      else
+        call sheet%attach("data-image", lower(trim(images(i)%name)))
+      end if
+    end do
+    ! the labels: the pole, the images, the components
+    call sheet%set_layer(layer_text)
+    call sheet%place_label(pole_name, "label", pole(1), pole(2), 0.75_wp * pi, area)
+    do i = 1, size(images)
+      q = at(images(i)%v)
+      if (norm2(q - pole) < shortest) then
+        call listed(at_pole, image_label(images(i)%name))
+        cycle
+      end if
+      call sheet%place_label(image_label(images(i)%name), "label", q(1), q(2), atan2(q(2) - pole(2), q(1) - pole(1)), &
+        area, tail=pole, italic=.true.)
+    end do
+    do j = 1, size(names)
+      call sheet%place_label(trim(names(j)), "num", 0.5_wp * (ends(1, j) + ends(3, j)), 0.5_wp * (ends(2, j) + ends(4, j)), &
+        atan2(ends(4, j) - ends(2, j), ends(3, j) - ends(1, j)) - 0.5_wp * pi, area, colour=component_colour(kinds(j)))
+    end do
+    ! what is at the pole, what is too short to draw
+    if (len(at_pole) > 0) call sheet%text(area(1) + 1.0_wp, area(4) - 4.0_wp, word("at the pole", lang)//" "// &
+      pole_name//": "//at_pole, "note")
+    if (len(short) > 0) call sheet%text(area(1) + 1.0_wp, area(4), word("not drawn, shorter than 1 mm", lang)//": "// &
+      short, "note", size=fitted_size(short, 2.6_wp, area(3) - area(1) - 50.0_wp, 0.6_wp))
+    call sheet%end_group()
+    call sheet%set_layer(merge(layer_aplan, layer_vplan, accel))
+  contains
+    !> Whether a velocity equation is its point's own ray: one rotation from the pole (about a
+    !> pivot), the image's ray drawn already.
+    pure logical function own_ray(eq, tips)
+      type(plan_equation_t), intent(in) :: eq
+      real(wp), intent(in) :: tips(:, :)
+      own_ray = .false.
+      if (size(eq%vectors) /= 1) return
+      if (norm2(at(tips(:, 1)) - pole) >= 1.0e-6_wp) return
+      ! a rotation about a pivot on the plan of velocities, a slide on the frame's guide
+      own_ray = eq%vectors(1)%kind == component_relative .or. (.not. accel .and. eq%vectors(1)%kind == &
+        component_tangential)
+    end function own_ray
+    !> Sheet point of a plan's vector (position frame) from the pole.
+    pure function at(v) result(s)
+      real(wp), intent(in) :: v(2)
+      real(wp) :: s(2)
+      s = pole + geo%view%direction(v) / mu
+    end function at
+  end subroutine draw_plan
+
+  !> Append a name to a comma-separated list.
+  pure subroutine listed(list, name)
+    character(len=:), allocatable, intent(inout) :: list
+    character(*), intent(in) :: name
+    if (len(list) > 0) list = list//", "
+    list = list//name
+  end subroutine listed
+
+  !> Colour of a plan's component: normal, tangential, Coriolis, relative.
+  pure function component_colour(kind) result(colour)
+    character(*), intent(in) :: kind
+    character(len=7) :: colour
+    select case (kind)
+    case (component_normal)
+      colour = normal_colour
+    case (component_tangential)
+      colour = tangential_colour
+    case (component_coriolis)
+      colour = coriolis_colour
+    case default
+      colour = relative_colour
+    end select
+  end function component_colour
+
+  !> Colour of a lever's load by the kind of force it comes from.
+  pure function load_colour(source) result(colour)
+    integer, intent(in) :: source
+    character(len=7) :: colour
+    select case (source)
+    case (force_pair, force_load, force_gravity, force_inertia)
+      colour = force_colours(source)
+    case default
+      colour = coriolis_colour
+    end select
+  end function load_colour
+
+  !> Zhukovsky's lever: the turned plan (thin rays to its images, named), every load at its
+  !> image (a couple's two forces), the arm of every force dashed from the pole, the
+  !> balancing force; the table of the loads beside it.
+  pure subroutine draw_lever(sheet, geo, plans, lang)
+    type(sheet_t), intent(inout) :: sheet
+    type(plans_sheet_t), intent(in) :: geo
+    type(plans_t), intent(in) :: plans
+    integer, intent(in) :: lang
+    real(wp) :: area(4), q(2), y, x
+    character(len=:), allocatable :: short, text
+    integer :: i, n
+    area = panel_inner(geo%lever)
+    short = ""
+    ! the lever's group: its pole, its scales (an image v at pole + (q1, -q2) / mu_v, q = v
+    ! turned by 90 deg and by the sheet's rotation; a force f drawn (f1, -f2) / mu_F long, f
+    ! turned by the sheet's rotation)
+    call sheet%group("lever")
+    call sheet%attach("data-pole", coord(geo%pole_lever(1))//" "//coord(geo%pole_lever(2)))
+    call sheet%attach("data-mu", full_number(geo%mu_lever))
+    call sheet%attach("data-mu-force", full_number(geo%mu_force))
+    call sheet%attach("data-rotation", full_number(geo%rotation * rad_to_deg))
+    ! the turned plan
+    do i = 1, size(plans%velocities)
+      q = image(plans%velocities(i)%v)
+      if (norm2(q - geo%pole_lever) < shortest) cycle
+      call sheet%line(geo%pole_lever(1), geo%pole_lever(2), q(1), q(2), "faint")
+    end do
+    ! the arms, then the loads
+    do i = 1, size(plans%loads)
+      call arms(sheet, plans%loads(i))
+    end do
+    call arms(sheet, plans%balancing)
+    do i = 1, size(plans%loads)
+      call arrows(sheet, plans%loads(i), load_colour(plans%loads(i)%source), 0.35_wp, short)
+    end do
+    call arrows(sheet, plans%balancing, balancing_colour, 0.5_wp, short)
+    call sheet%circle(geo%pole_lever(1), geo%pole_lever(2), 0.7_wp, "origin")
+    ! labels: the pole, the images, the loads
+    call sheet%set_layer(layer_text)
+    call sheet%place_label("p", "label", geo%pole_lever(1), geo%pole_lever(2), 0.75_wp * pi, area)
+    do i = 1, size(plans%velocities)
+      q = image(plans%velocities(i)%v)
+      if (norm2(q - geo%pole_lever) < shortest) cycle
+      call sheet%place_label(image_label(plans%velocities(i)%name), "num", q(1), q(2), atan2(q(2) - geo%pole_lever(2), &
+        q(1) - geo%pole_lever(1)), area, tail=geo%pole_lever, italic=.true.)
+    end do
+    do i = 1, size(plans%loads)
+      call names(sheet, plans%loads(i), load_colour(plans%loads(i)%source))
+    end do
+    call names(sheet, plans%balancing, balancing_colour)
+    if (len(short) > 0) call sheet%text(area(1) + 1.0_wp, area(4), word("not drawn, shorter than 1 mm", lang)//": "// &
+      short, "note", size=fitted_size(short, 2.6_wp, area(3) - area(1) - 50.0_wp, 0.6_wp))
+    call sheet%end_group()
+
+    ! the table: every load, its value, its image(s), its arm as drawn
+    call sheet%set_layer(layer_text)
+    x = geo%lever_table(1) + 2.0_wp
+    y = geo%lever_table(2) + panel_head + 6.0_wp
+    call sheet%text(x, y - 3.5_wp, word("load", lang), "small")
+    call sheet%text(x + 54.0_wp, y - 3.5_wp, word("image", lang), "small")
+    call sheet%text(x + 88.0_wp, y - 3.5_wp, "h, "//unit_word("mm", lang), "small", anchor=anchor_end)
+    n = 0
+    do i = 1, size(plans%loads) + 1
+      if (i <= size(plans%loads)) then
+        call row(sheet, plans%loads(i), n)
+      else
+        call row(sheet, plans%balancing, n)
+      end if
+    end do
+    text = "h: "//word("arms on the lever", lang)
+    call sheet%text(x, geo%lever_table(4) - 2.0_wp, text, "note")
+  contains
+    !> Sheet point of a velocity image turned by 90 deg.
+    pure function image(v) result(s)
+      real(wp), intent(in) :: v(2)
+      real(wp) :: s(2)
+      s = geo%pole_lever + geo%view%direction(turn(v, 0.5_wp * pi)) / geo%mu_lever
+    end function image
+    !> A force's arrow at the image `v`: tail and tip on the sheet.
+    pure subroutine ends(v, f, tail, tip)
+      real(wp), intent(in) :: v(2), f(2)
+      real(wp), intent(out) :: tail(2), tip(2)
+      tail = image(v)
+      tip = tail + geo%view%direction(f) / geo%mu_force
+    end subroutine ends
+    !> The arms (from the pole to the force's line) of a load's force(s).
+    pure subroutine arms(sheet, ld)
+      type(sheet_t), intent(inout) :: sheet
+      type(lever_load_t), intent(in) :: ld
+      call arm(sheet, ld%at, ld%f)
+      if (ld%pair) call arm(sheet, ld%at2, -ld%f)
+    end subroutine arms
+    pure subroutine arm(sheet, v, f)
+      type(sheet_t), intent(inout) :: sheet
+      real(wp), intent(in) :: v(2), f(2)
+      real(wp) :: tail(2), tip(2), d(2), foot(2)
+      call ends(v, f, tail, tip)
+      ! a force too short to draw has no arm drawn (and no direction to speak of)
+      if (norm2(tip - tail) < shortest) return
+      d = (tip - tail) / norm2(tip - tail)
+      foot = tail + dot_product(geo%pole_lever - tail, d) * d
+      if (norm2(foot - geo%pole_lever) < shortest) return
+      call sheet%line(geo%pole_lever(1), geo%pole_lever(2), foot(1), foot(2), stroke=arm_colour, width=0.15_wp, dash="1 0.8")
+    end subroutine arm
+    !> A load's arrow(s).
+    pure subroutine arrows(sheet, ld, colour, width, short)
+      type(sheet_t), intent(inout) :: sheet
+      type(lever_load_t), intent(in) :: ld
+      character(*), intent(in) :: colour
+      real(wp), intent(in) :: width
+      character(len=:), allocatable, intent(inout) :: short
+      real(wp) :: tail(2), tip(2)
+      if (norm2(ld%f) / geo%mu_force < shortest) then
+        if (norm2(ld%f) > 0.0_wp) call listed(short, display_name(ld%name, lang))
+        return
+      end if
+      call ends(ld%at, ld%f, tail, tip)
+      call sheet%arrow(tail(1), tail(2), tip(1), tip(2), colour, width, 2.0_wp)
+      if (.not. ld%pair) return
+      call ends(ld%at2, -ld%f, tail, tip)
+      call sheet%arrow(tail(1), tail(2), tip(1), tip(2), colour, width, 2.0_wp)
+    end subroutine arrows
+    !> A load's name at its arrow(s).
+    pure subroutine names(sheet, ld, colour)
+      type(sheet_t), intent(inout) :: sheet
+      type(lever_load_t), intent(in) :: ld
+      character(*), intent(in) :: colour
+      real(wp) :: tail(2), tip(2)
+      if (norm2(ld%f) / geo%mu_force < shortest) return
+      call ends(ld%at, ld%f, tail, tip)
+      call sheet%place_label(display_name(ld%name, lang), "num", tip(1), tip(2), atan2(tip(2) - tail(2), tip(1) - &
+        tail(1)), area, tail=tail, colour=colour)
+      if (.not. ld%pair) return
+      call ends(ld%at2, -ld%f, tail, tip)
+      call sheet%place_label(display_name(ld%name, lang), "num", tip(1), tip(2), atan2(tip(2) - tail(2), tip(1) - &
+        tail(1)), area, tail=tail, colour=colour)
+    end subroutine names
+    !> A row of the table: the load and its value (a couple: its force too), its image(s),
+    !> its arm as drawn, mm.
+    pure subroutine row(sheet, ld, n)
+      type(sheet_t), intent(inout) :: sheet
+      type(lever_load_t), intent(in) :: ld
+      integer, intent(inout) :: n
+      character(len=:), allocatable :: text, unit
+      character(len=7) :: colour
+      unit = unit_word("N", lang)
+      if (ld%kind == load_moment) then
+        text = display_name(ld%name, lang)//" = "//short_number(ld%value)//" "//unit_word("N*m", lang)
+        if (ld%pair) text = text//" → "//short_number(norm2(ld%f))//" "//unit
+      else
+        text = display_name(ld%name, lang)//" = "//short_number(ld%value)//" "//unit
+      end if
+      colour = load_colour(ld%source)
+      if (ld%name == plans%balancing%name) colour = balancing_colour
+      call sheet%text(x, y + pitch * n, text, "num", colour=colour, size=fitted_size(text, 2.2_wp, 52.0_wp, 0.6_wp))
+      call sheet%text(x + 54.0_wp, y + pitch * n, image_list(ld%image), "num", colour=colour)
+      call sheet%text(x + 88.0_wp, y + pitch * n, fixed_number(ld%arm / geo%mu_lever, 1), "num", colour=colour, &
+        anchor=anchor_end)
+      n = n + 1
+    end subroutine row
+  end subroutine draw_lever
+
+  !> "s2" or "b,c" as the sheet names images ("b, c"; p′ for P).
+  pure function image_list(text) result(out)
+    character(*), intent(in) :: text
+    character(len=:), allocatable :: out
+    integer :: comma
+    comma = index(text, ",")
+    if (comma == 0) then
+      out = image_label(text)
+    else
+      out = image_label(text(:comma - 1))//", "//image_label(trim(text(comma + 1:)))
+    end if
+  end function image_list
+
+  !> The force polygons of the units, each in its cell at its scale: the vectors head to
+  !> tail (colours: loads by kind, known reactions, unknown parts), the whole reactions and
+  !> the inner ones; an input link drawn with its forces and their arms about its pivot.
+  pure subroutine draw_polygons(sheet, geo, drawing, plans, lang)
+    type(sheet_t), intent(inout) :: sheet
+    type(plans_sheet_t), intent(in) :: geo
+    type(drawing_t), intent(in) :: drawing
+    type(plans_t), intent(in) :: plans
+    integer, intent(in) :: lang
+    real(wp), allocatable :: tips(:, :)
+    real(wp) :: cell(4), area(4), pole(2), p(2), t(2), lo(2), hi(2), mu
+    character(len=:), allocatable :: caption, short
+    integer :: e, j
+    do e = 1, size(plans%group_polygons)
+      associate (poly => plans%group_polygons(e))
+        cell = geo%cells(:, e)
+        area = cell + [1.0_wp, 5.0_wp, -1.0_wp, -5.0_wp]
+        if (geo%mu_link(e) > 0.0_wp) then
+          call draw_input_link(sheet, geo, drawing, plans, e, lang)
+          call sheet%set_layer(layer_polygons)
+          area(1) = geo%link_boxes(3, e)
+        end if
+        mu = geo%mu_f(e)
+        short = ""
+        call polygon_tips(poly%vectors, tips)
+        do j = 1, size(tips, 2)
+          tips(:, j) = geo%view%direction(tips(:, j)) / mu
+        end do
+        lo = minval(tips, 2)
+        hi = maxval(tips, 2)
+        pole = 0.5_wp * [area(1) + area(3), area(2) + area(4)] - 0.5_wp * (lo + hi)
+        pole = anint(pole * 100.0_wp) / 100.0_wp
+        ! the polygon's group: its first vertex, its scale
+        call sheet%group("force-polygon")
+        call sheet%attach("data-group", trim(poly%link))
+        call sheet%attach("data-start", coord(pole(1))//" "//coord(pole(2)))
+        call sheet%attach("data-mu", full_number(mu))
+        call sheet%attach("data-rotation", full_number(geo%rotation * rad_to_deg))
+        do j = 1, size(poly%vectors)
+          p = pole + tips(:, j)
+          t = pole + tips(:, j + 1)
+          if (norm2(t - p) < shortest) then
+            if (norm2(poly%vectors(j)%v) > 0.0_wp) call listed(short, display_name(poly%vectors(j)%name, lang))
+            cycle
+          end if
+          call sheet%arrow(p(1), p(2), t(1), t(2), vector_colour(poly%vectors(j)), 0.3_wp, 1.6_wp)
+        end do
+        ! the whole reactions and the inner ones
+        do j = 1, size(poly%reactions)
+          associate (r => poly%reactions(j))
+            if (.not. r%inner .and. any(poly%vectors%name == r%name)) cycle
+            p = pole + tips(:, r%tail + 1)
+            t = pole + tips(:, r%head + 1)
+            if (norm2(t - p) < shortest) cycle
+            call sheet%arrow(p(1), p(2), t(1), t(2), merge(inner_colour, whole_colour, r%inner), 0.2_wp, 1.6_wp)
+          end associate
+        end do
+        call sheet%set_layer(layer_text)
+        do j = 1, size(poly%vectors)
+          p = pole + tips(:, j)
+          t = pole + tips(:, j + 1)
+          if (norm2(t - p) < shortest) cycle
+          call sheet%place_label(display_name(poly%vectors(j)%name, lang), "num", 0.5_wp * (p(1) + t(1)), &
+            0.5_wp * (p(2) + t(2)), atan2(t(2) - p(2), t(1) - p(1)) - 0.5_wp * pi, area, colour=vector_colour(poly%vectors(j)))
+        end do
+        do j = 1, size(poly%reactions)
+          associate (r => poly%reactions(j))
+            if (.not. r%inner .and. any(poly%vectors%name == r%name)) cycle
+            p = pole + tips(:, r%tail + 1)
+            t = pole + tips(:, r%head + 1)
+            if (norm2(t - p) < shortest) cycle
+            call sheet%place_label(trim(r%name), "num", 0.5_wp * (p(1) + t(1)), 0.5_wp * (p(2) + t(2)), &
+              atan2(t(2) - p(2), t(1) - p(1)) + 0.5_wp * pi, area, colour=merge(inner_colour, whole_colour, r%inner))
+          end associate
+        end do
+        ! the caption and the scale
+        if (poly%input) then
+          caption = word("input link", lang)//" "//trim(poly%label)
+        else
+          caption = word("Assur group", lang)//" "//trim(poly%label)
+        end if
+        if (len(poly%moment) > 0) caption = caption//": "//poly%moment//" = "//short_number(poly%moment_value)//" "// &
+          effort_unit(poly%moment, lang)
+        call sheet%text(cell(1) + 1.0_wp, cell(2) + 3.0_wp, caption, "small", size=fitted_size(caption, 2.4_wp, &
+          cell(3) - cell(1) - 2.0_wp, 0.6_wp))
+        caption = "μF = "//scale_number(mu)//" "//unit_word("N", lang)//"/"//unit_word("mm", lang)
+        if (len(short) > 0) caption = caption//"; "//word("not drawn, shorter than 1 mm", lang)//": "//short
+        call sheet%text(cell(1) + 1.0_wp, cell(4) - 1.0_wp, caption, "small", size=fitted_size(caption, 2.4_wp, &
+          cell(3) - cell(1) - 2.0_wp, 0.6_wp))
+        call sheet%end_group()
+        call sheet%set_layer(layer_polygons)
+      end associate
+    end do
+  end subroutine draw_polygons
+
+  !> N*m for a moment (M...), N for a force.
+  pure function effort_unit(name, lang) result(unit)
+    character(*), intent(in) :: name
+    integer, intent(in) :: lang
+    character(len=:), allocatable :: unit
+    if (name(1:1) == "M") then
+      unit = unit_word("N*m", lang)
+    else
+      unit = unit_word("N", lang)
+    end if
+  end function effort_unit
+
+  !> Colour of a polygon's vector: a load by its kind (weight, inertia force, external), a
+  !> known reaction, an unknown reaction's part.
+  pure function vector_colour(v) result(colour)
+    type(plan_vector_t), intent(in) :: v
+    character(len=7) :: colour
+    if (v%kind == component_tangential) then
+      colour = tangential_colour
+    else if (v%kind == component_normal) then
+      colour = relative_colour
+    else if (v%kind == component_reaction) then
+      colour = tangential_colour
+    else if (v%name(1:1) == "G") then
+      colour = force_colours(force_gravity)
+    else if (v%name(1:3) == "Phi") then
+      colour = force_colours(force_inertia)
+    else if (len_trim(v%name) == 3 .and. v%name(1:1) == "F" .and. verify(v%name(2:3), "0123456789") == 0) then
+      colour = known_colour
+    else
+      colour = force_colours(force_load)
+    end if
+  end function vector_colour
+
+  !> The input link of unit e in the left part of its cell: the link alone at a scale of its
+  !> own, its forces (all but the frame's reaction) as arrows, the arm of each about the pivot
+  !> dashed.
+  pure subroutine draw_input_link(sheet, geo, drawing, plans, e, lang)
+    type(sheet_t), intent(inout) :: sheet
+    type(plans_sheet_t), intent(in) :: geo
+    type(drawing_t), intent(in) :: drawing
+    type(plans_t), intent(in) :: plans
+    integer, intent(in) :: e, lang
+    type(drawing_t) :: link
+    type(mechanism_view_t) :: view
+    character(len=:), allocatable :: short
+    real(wp) :: box(4), a(2), tail(2), tip(2), d(2), foot(2), per_newton
+    real(wp), allocatable :: foot_x(:), foot_y(:)
+    character(len=16), allocatable :: arm_names(:)
+    integer :: j, pivot, first
+    box = geo%link_boxes(:, e)
+    call input_link_drawing(drawing, plans, e, link, pivot)
+    if (pivot == 0) return
+    view = geo%link_views(e)
+    per_newton = geo%link_force_scale(e)
+    box(2) = box(2) + 4.0_wp
+    ! the arms about the pivot first (the link's labels keep off them), named h with the force
+    call sheet%set_layer(layer_polygons)
+    a = view%point(link%points(pivot)%p)
+    allocate (foot_x(0), foot_y(0), arm_names(0))
+    do j = 1, size(link%forces)
+      if (norm2(link%forces(j)%f) * per_newton < shortest) cycle
+      tail = view%point(link%forces(j)%at)
+      tip = tail + view%direction(link%forces(j)%f)
+      d = (tip - tail) / norm2(tip - tail)
+      foot = tail + dot_product(a - tail, d) * d
+      if (norm2(foot - a) < shortest) cycle
+      call sheet%line(a(1), a(2), foot(1), foot(2), stroke=arm_colour, width=0.15_wp, dash="1 0.8")
+      foot_x = [foot_x, 0.5_wp * (a(1) + foot(1))]
+      foot_y = [foot_y, 0.5_wp * (a(2) + foot(2))]
+      arm_names = [character(len=16) :: arm_names, arm_name(trim(link%forces(j)%name))]
+    end do
+    first = sheet%count + 1
+    call draw_mechanism(sheet, link, view, box, per_newton, short)
+    ! the link's drawing is not the mechanism's: its group and marks renamed (machine checks
+    ! read the joints of the mechanism's drawing)
+    do j = first, sheet%count
+      associate (item => sheet%items(j))
+        if (item%kind == entity_group) item%class = "input-link"
+        if (.not. allocated(item%data_names)) cycle
+        where (item%data_names == "data-joint") item%data_names = "data-link-joint"
+        where (item%data_names == "data-point") item%data_names = "data-link-point"
+      end associate
+    end do
+    call sheet%set_layer(layer_text)
+    do j = 1, size(arm_names)
+      call sheet%place_label(trim(arm_names(j)), "num", foot_x(j), foot_y(j), atan2(foot_y(j) - a(2), foot_x(j) - a(1)) - &
+        0.5_wp * pi, box, colour=arm_colour)
+    end do
+    call sheet%text(box(1), box(2) - 1.5_wp, "μl = "//scale_number(view%mu_l())//" "//unit_word("m", lang)//"/"// &
+      unit_word("mm", lang), "small")
+  contains
+    !> The arm's name: h12 for F12, h_G1 for G1.
+    pure function arm_name(force) result(name)
+      character(*), intent(in) :: force
+      character(len=:), allocatable :: name
+      if (len(force) == 3 .and. force(1:1) == "F" .and. verify(force(2:), "0123456789") == 0) then
+        name = "h"//force(2:)
+      else
+        name = "h_"//force
+      end if
+    end function arm_name
+  end subroutine draw_input_link
+
+  !> The values table: every entry "v_B = pb·μv = 10.0 m/s", "ω2 = v_CB/l_CB = 11.5 rad/s,
+  !> clockwise", in columns.
+  pure subroutine values_table(sheet, box, plans, lang)
+    type(sheet_t), intent(inout) :: sheet
+    real(wp), intent(in) :: box(4)
+    type(plans_t), intent(in) :: plans
+    integer, intent(in) :: lang
+    character(len=:), allocatable :: text
+    real(wp) :: font, width, row_pitch
+    integer :: i, rows, columns, n
+    n = size_of(plans)
+    if (n == 0) return
+    font = 2.2_wp
+    row_pitch = pitch
+    rows = max(1, int((box(4) - box(2) - panel_head - 2.0_wp) / row_pitch))
+    columns = (n + rows - 1) / rows
+    if (columns > 4) then
+      ! smaller, closer rows
+      font = 1.8_wp
+      row_pitch = 2.6_wp
+      rows = max(1, int((box(4) - box(2) - panel_head - 2.0_wp) / row_pitch))
+      columns = (n + rows - 1) / rows
+    end if
+    width = (box(3) - box(1) - 4.0_wp) / columns
+    do i = 1, n
+      associate (v => plans%values(i))
+        text = display_name(v%name, lang)
+        if (len_trim(v%formula) > 0) text = text//" = "//formula_text(trim(v%formula))
+        text = text//" = "//short_number(v%value)//" "//unit_word(trim(v%unit), lang)
+        if (v%sense == "ccw") text = text//", "//word("counterclockwise", lang)
+        if (v%sense == "cw") text = text//", "//word("clockwise", lang)
+        call sheet%text(box(1) + 2.0_wp + width * ((i - 1) / rows), box(2) + panel_head + 2.5_wp + row_pitch * &
+          modulo(i - 1, rows), text, "num", size=min(font, fitted_size(text, font, width - 1.5_wp, 0.6_wp)))
+      end associate
+    end do
+  contains
+    pure integer function size_of(plans)
+      type(plans_t), intent(in) :: plans
+      size_of = 0
+      if (allocated(plans%values)) size_of = size(plans%values)
+    end function size_of
+  end subroutine values_table
+
+  !> A values table's formula as the sheet writes it: "pb*mu_v" -> "p b · μv" (the plan's
+  !> segment, its letters apart), "2*omega3*v_B2B3" -> "2 ω3 v_B2B3".
+  pure function formula_text(formula) result(text)
+    character(*), intent(in) :: formula
+    character(len=:), allocatable :: text, rest
+    integer :: star
+    star = index(formula, "*mu_")
+    if (star > 0) then
+      text = segment(formula(:star - 1))//" · μ"//formula(star + 4:)
+      return
+    end if
+    ! the product's factors apart, each a symbol (omegaL1 -> omega_L1)
+    text = ""
+    rest = formula
+    do
+      star = index(rest, "*")
+      if (star == 0) exit
+      text = text//display_name(rest(:star - 1), 1)//" "
+      rest = rest(star + 1:)
+    end do
+    text = text//rest
+  contains
+    !> A plan's segment "pb", "b3c", "πs2" with a thin space after the pole and between images.
+    pure function segment(s) result(out)
+      character(*), intent(in) :: s
+      character(len=:), allocatable :: out
+      integer :: i
+      out = ""
+      do i = 1, len(s)
+        if (i > 1) then
+          if ((s(i:i) >= "a" .and. s(i:i) <= "z") .and. iachar(s(i - 1:i - 1)) < 128) out = out//" "
+          if ((s(i:i) >= "a" .and. s(i:i) <= "z") .and. iachar(s(i - 1:i - 1)) >= 128) out = out//" "
+        end if
+        out = out//s(i:i)
+      end do
+    end function segment
+  end function formula_text
+
+  !> The balancing effort: from the lever (P_bal and M = P_bal l), the analytic value of the
+  !> step and their difference; the two efforts as read off the sheet (the lever and the force
+  !> polygons, vectors to 0.5 mm, arms to 1 mm) in %; the flywheel's and the friction's share.
+  pure subroutine results(sheet, geo, plans, lang)
+    type(sheet_t), intent(inout) :: sheet
+    type(plans_sheet_t), intent(in) :: geo
+    type(plans_t), intent(in) :: plans
+    integer, intent(in) :: lang
+    character(len=240), allocatable :: lines(:)
+    real(wp) :: x, y, width
+    integer :: i
+    x = geo%results(1) + 2.0_wp
+    y = geo%results(2) + panel_head + 2.5_wp
+    width = geo%results(3) - geo%results(1) - 4.0_wp
+    allocate (lines(0))
+    if (.not. plans%lever_known) then
+      call put(lines, word("not drawn", lang)//": "//word(plans%lever_note, lang))
+    else
+      call lever_lines(lines)
+    end if
+    do i = 1, size(lines)
+      call sheet%text(x, y + pitch * (i - 1), trim(lines(i)), "num", size=fitted_size(trim(lines(i)), 2.2_wp, width, &
+        0.6_wp))
+    end do
+  contains
+    !> The lines of a lever that is known.
+    pure subroutine lever_lines(lines)
+      character(len=240), allocatable, intent(inout) :: lines(:)
+      character(len=:), allocatable :: unit
+      unit = effort_unit(plans%driver, lang)
+    if (plans%balancing%name == "P_bal") then
+      call put(lines, display_name("P_bal", lang)//" = "//short_number(dot_sign() * norm2(plans%balancing%f))//" "// &
+        unit_word("N", lang)//";  "//plans%driver//" = "//display_name("P_bal", lang)//" l = "// &
+        short_number(plans%effort)//" "//unit)
+    else
+      call put(lines, word("balancing effort from the lever", lang)//": "//plans%driver//" = "// &
+        short_number(plans%effort)//" "//unit)
+    end if
+    call put(lines, word("analytic value of the step", lang)//": "//plans%driver//" = "//short_number(plans%run)// &
+      " "//unit)
+    call put(lines, word("relative difference", lang)//": "//short_number(abs(plans%effort - plans%run) / &
+      max(abs(plans%run), tiny(1.0_wp))))
+    if (geo%compared) then
+      call put(lines, word("read off the sheet (vectors to 0.5 mm, arms to 1 mm)", lang)//":")
+      call put(lines, word("lever", lang)//" "//short_number(geo%effort_lever)//", "//word("polygons", lang)//" "// &
+        short_number(geo%effort_polygon)//" "//unit//": "//short_number(geo%difference)//" %")
+    end if
+    if (plans%lever_flywheel) call put(lines, word("flywheel and rotor included", lang)//": J = "// &
+      short_number(plans%flywheel_inertia)//" "//unit_word("kg*m^2", lang)//", -J·ε = "// &
+      short_number(plans%flywheel_moment)//" "//unit_word("N*m", lang))
+    if (plans%lever_friction) call put(lines, word("pair friction included", lang)//": -P_loss/"// &
+      plans%lever_rate_name//" = "//short_number(plans%friction_share)//" "//unit)
+    end subroutine lever_lines
+    pure subroutine put(lines, line)
+      character(len=240), allocatable, intent(inout) :: lines(:)
+      character(*), intent(in) :: line
+      lines = [character(len=240) :: lines, line]
+    end subroutine put
+    !> The sign of P_bal along its point's velocity.
+    pure real(wp) function dot_sign()
+      dot_sign = sign(1.0_wp, dot_product(plans%balancing%f, plans%balancing%at))
+    end function dot_sign
+  end subroutine results
+
+end module kinetostat_plans_draw
