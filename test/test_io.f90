@@ -247,7 +247,8 @@ contains
                     '"csv": false}') > 0, text)
     call check_true(t, "json array echo", index(text, '{"name": "F5C", "value": [1.000000000000E+000, ' // &
                     '2.000000000000E+000], "unit": "N"}') > 0, text)
-    call check_text(t, "json_string control characters", '"a\u0009b\\c"', json_string("a"//achar(9)//"b\c"))
+    call check_text(t, "json_string control characters", '"a\tb\\c\n\u0001\u00FF\""', &
+      json_string("a"//achar(9)//"b\c"//achar(10)//achar(1)//char(255)//'"'))
   end subroutine test_json
 
   !> The npy writer on the small table (hand-made bytes: header and two records of the CSV's

@@ -5,6 +5,7 @@ module kinetostat_csv_writer
   use kinetostat_format, only: put_cells, cell_room
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_row_blocks, only: put_row_blocks, sink_i
+  use kinetostat_escape, only: csv_field
   implicit none
   private
   public :: write_csv
@@ -34,7 +35,7 @@ contains
     do c = 1, size(table%columns)
       if (.not. shown(c)) cycle
       if (len(line) > 0) line = line//","
-      line = line//table%columns(c)%name
+      line = line//csv_field(table%columns(c)%name)
     end do
     if (table%first_block()) call out%put(line)
     allocate (columns(0))

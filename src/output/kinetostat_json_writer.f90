@@ -8,7 +8,7 @@ module kinetostat_json_writer
     col_component, echo_real_kind, echo_int_kind, echo_logical_kind, echo_array_kind, echo_text_kind, echo_heading_kind
   use kinetostat_format, only: full_number, put_cell, put_cells, cell_room
   use kinetostat_text_buffer, only: text_buffer_t
-  use kinetostat_text, only: utf8_length
+  use kinetostat_escape, only: json_string
   use kinetostat_row_blocks, only: put_row_blocks, sink_i
   implicit none
   private
@@ -259,35 +259,5 @@ contains
     if (e%overridden) text = text(1:len(text) - 1)//', "overridden": true}'
     call out%append(text)
   end subroutine put_echo_object
-
-  !> A JSON string literal: quotes, backslashes, control characters and bytes that are not
-  !> valid UTF-8 escaped (\u00XX); valid UTF-8 kept.
-  pure function json_string(s) result(text)
-    !> Text.
-    character(*), intent(in) :: s
-    character(len=:), allocatable :: text
-    character(len=6) :: esc
-    integer :: i, c, n
-    text = '"'
-    i = 1
-    do while (i <= len(s))
-      c = iachar(s(i:i))
-      n = utf8_length(s, i)
-      if (s(i:i) == '"' .or. s(i:i) == '\') then
-        text = text//'\'//s(i:i)
-      else if (c < 32 .or. c == 127 .or. n == 0) then
-        ! a control character, or a byte that is not part of valid UTF-8 (as its Latin-1
-        ! character, so that the file stays valid UTF-8 and valid JSON)
-        write (esc, '("\u",z4.4)') c
-        text = text//esc
-      else
-        text = text//s(i:i + n - 1)
-        i = i + n
-        cycle
-      end if
-      i = i + 1
-    end do
-    text = text//'"'
-  end function json_string
 
 end module kinetostat_json_writer

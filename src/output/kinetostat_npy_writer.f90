@@ -13,7 +13,8 @@ module kinetostat_npy_writer
   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
   use kinetostat_kinds, only: wp
   use kinetostat_error, only: error_t, fatal_error, exit_geometry
-  use kinetostat_text, only: int_str, utf8_length
+  use kinetostat_text, only: int_str
+  use kinetostat_escape, only: python_string
   use kinetostat_step_table, only: step_table_t
   use kinetostat_text_buffer, only: text_buffer_t
   implicit none
@@ -185,32 +186,5 @@ contains
       rest = rest / 256_int64
     end do
   end function little_endian
-
-  !> A Python string literal in single quotes: backslash, quote and control characters
-  !> escaped, valid UTF-8 kept, a byte that is not part of valid UTF-8 as \xNN (the
-  !> header's dictionary is read by Python's literal parser).
-  pure function python_string(s) result(text)
-    character(*), intent(in) :: s
-    character(len=:), allocatable :: text
-    character(len=*), parameter :: hex = "0123456789abcdef"
-    integer :: i, c, n
-    text = "'"
-    i = 1
-    do while (i <= len(s))
-      c = iachar(s(i:i))
-      n = utf8_length(s, i)
-      if (s(i:i) == "'" .or. s(i:i) == "\") then
-        text = text//"\"//s(i:i)
-      else if (c < 32 .or. c == 127 .or. n == 0) then
-        text = text//"\x"//hex(c / 16 + 1:c / 16 + 1)//hex(mod(c, 16) + 1:mod(c, 16) + 1)
-      else
-        text = text//s(i:i + n - 1)
-        i = i + n
-        cycle
-      end if
-      i = i + 1
-    end do
-    text = text//"'"
-  end function python_string
 
 end module kinetostat_npy_writer

@@ -10,6 +10,7 @@ module kinetostat_summary
   use kinetostat_step_table, only: step_table_t, col_force, col_force_angle, col_moment, column_tally_t, &
     edge_point_t
   use kinetostat_format, only: cell_number
+  use kinetostat_escape, only: csv_field
   implicit none
   private
   public :: column_stats_t, column_stats, summarized, drive_work, coarse_step_warning, tally_rows
@@ -622,7 +623,7 @@ contains
     line = ""
     if (.not. allocated(table%overrides)) return
     do i = 1, size(table%overrides)
-      line = line//csv_text(override_part(table%overrides(i), part))//","
+      line = line//csv_field(override_part(table%overrides(i), part))//","
     end do
   end function override_cells
 
@@ -639,22 +640,5 @@ contains
       t = trim(text(eq + 1:))
     end if
   end function override_part
-
-  !> A CSV field: quoted (quotes doubled) when it holds a comma, a quote or a blank.
-  pure function csv_text(text) result(t)
-    character(*), intent(in) :: text
-    character(len=:), allocatable :: t
-    integer :: i
-    if (scan(text, ',"  ') == 0) then
-      t = text
-      return
-    end if
-    t = '"'
-    do i = 1, len(text)
-      if (text(i:i) == '"') t = t//'"'
-      t = t//text(i:i)
-    end do
-    t = t//'"'
-  end function csv_text
 
 end module kinetostat_summary

@@ -14,13 +14,15 @@
 !>   layer's; dashed classes and dash overrides on line type DASHED.
 !> - Text: the typeset runs as one line (kinetostat_typeset's plain_text: F21, a_CB^τ),
 !>   every character beyond ASCII as AutoCAD's \U+XXXX (Φ -> \U+03A6), so the file is ASCII.
-!>   Every text goes through `escaped` (the one place to switch to the program's escaper).
+!>   Every text goes through `escaped`, the program's DXF escaper (kinetostat_escape's
+!>   dxf_text: also control characters as \n, \xNN, a caret as "^ ").
 module kinetostat_sheet_dxf
   use kinetostat_kinds, only: wp
   use kinetostat_format, only: fixed_number
   use kinetostat_text, only: int_str
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_typeset, only: plain_text
+  use kinetostat_escape, only: escaped => dxf_text
   use kinetostat_sheet, only: sheet_t, entity_t, entity_line, entity_polyline, entity_polygon, entity_rect, &
     entity_circle, entity_arc, entity_text, entity_group, anchor_middle, anchor_end, layer_names, line_classes
   implicit none
@@ -311,56 +313,5 @@ contains
     character(len=:), allocatable :: t
     t = fixed_number(x, 6)
   end function num
-
-  !> Text for a DXF value: one line, ASCII; a character beyond ASCII as \U+XXXX, a control
-  !> character as a blank. The one place every text of a DXF sheet is escaped.
-  pure function escaped(text) result(safe)
-    character(*), intent(in) :: text
-    character(len=:), allocatable :: safe
-    character(len=*), parameter :: hex_digits = "0123456789ABCDEF"
-    integer :: i, n, c, code, k
-    safe = ""
-    i = 1
-    do while (i <= len(text))
-      c = iachar(text(i:i))
-      if (c < 32 .or. c == 127) then
-        safe = safe//" "
-        i = i + 1
-        cycle
-      end if
-      if (c < 128) then
-        safe = safe//text(i:i)
-        i = i + 1
-        cycle
-      end if
-      ! a UTF-8 sequence: its code point
-      if (c >= 240) then
-        n = 4
-        code = iand(c, 7)
-      else if (c >= 224) then
-        n = 3
-        code = iand(c, 15)
-      else if (c >= 192) then
-        n = 2
-        code = iand(c, 31)
-      else
-        safe = safe//"?"
-        i = i + 1
-        cycle
-      end if
-      if (i + n - 1 > len(text)) then
-        safe = safe//"?"
-        exit
-      end if
-      do k = 1, n - 1
-        code = 64 * code + iand(iachar(text(i + k:i + k)), 63)
-      end do
-      safe = safe//"\U+"
-      do k = 3, 0, -1
-        safe = safe//hex_digits(iand(ishft(code, -4 * k), 15) + 1:iand(ishft(code, -4 * k), 15) + 1)
-      end do
-      i = i + n
-    end do
-  end function escaped
 
 end module kinetostat_sheet_dxf

@@ -42,6 +42,15 @@ void = [k for k, r in enumerate(records) if any(math.isnan(v) for v in r)]
 assert len(void) == 6000 and void[0] == 4000 and void[-1] == 11999, "void rows"
 PY
 
+# a Cyrillic joint name: header version 3.0 (UTF-8), the field named as in the CSV
+sed "s/dyad(1)%joints = 'B'/dyad(1)%joints = 'Б'/" data/assur_fourbar.nml >"$cli_tmp/npy_cyr.nml"
+"$KINETOSTAT" "$cli_tmp/npy_cyr.nml" --format csv --kinematics --quiet -o "$cli_tmp/npy_cyr.csv"
+"$KINETOSTAT" "$cli_tmp/npy_cyr.nml" --format npy --kinematics --quiet -o "$cli_tmp/npy_cyr.npy"
+if ! head -1 "$cli_tmp/npy_cyr.csv" | grep -q "x_Б"; then fail npy-cyrillic "the deck's joint is not named Б"
+elif python3 tools/npy_check.py "$cli_tmp/npy_cyr.npy" "$cli_tmp/npy_cyr.csv" >"$cli_tmp/npy_check.out" 2>&1 &&
+  [ "$(od -An -tu1 -j6 -N1 "$cli_tmp/npy_cyr.npy" | tr -d ' ')" = 3 ]; then pass
+else fail npy-cyrillic "not version 3.0 or not the CSV: $(head -5 "$cli_tmp/npy_check.out")"; fi
+
 # the checker can fail: one value of the last record changed
 cp "$cli_tmp/npy_long.npy" "$cli_tmp/npy_bad.npy"
 printf '\x01' | dd of="$cli_tmp/npy_bad.npy" bs=1 seek=$(($(stat -c %s "$cli_tmp/npy_bad.npy") - 3)) conv=notrunc 2>/dev/null
