@@ -368,12 +368,9 @@ contains
       real(wp) :: s(2)
       s = sheet_centre(i)
       if (span(2, i) - span(1, i) >= 2.0_wp * pi) then
-        if (len(dash) > 0) then
-          call sheet%arc(s(1), s(2), r * view%scale, 0.0_wp, 360.0_wp, stroke=colour, width=width)
-          sheet%items(sheet%count)%dash = dash
-        else
-          call sheet%circle(s(1), s(2), r * view%scale, stroke=colour, width=width, fill="none")
-        end if
+        ! a whole circle as a closed arc: a line labels keep off, not a disc
+        call sheet%arc(s(1), s(2), r * view%scale, 0.0_wp, 360.0_wp, stroke=colour, width=width)
+        if (len(dash) > 0) sheet%items(sheet%count)%dash = dash
       else
         call sheet%arc(s(1), s(2), r * view%scale, span(1, i) * rad_to_deg + 90.0_wp, (span(2, i) - span(1, i)) * &
           rad_to_deg, stroke=colour, width=width)

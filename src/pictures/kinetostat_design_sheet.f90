@@ -8,6 +8,7 @@
 !> kinds (they draw from their kernels).
 module kinetostat_design_sheet
   use kinetostat_kinds, only: wp, pi, version_string
+  use kinetostat_format, only: fixed_number
   use kinetostat_step_table, only: step_table_t
   use kinetostat_labels, only: lang_ru, word => label
   use kinetostat_typeset, only: typeset, runs_extent
@@ -90,9 +91,10 @@ contains
   !> A chart in the panel (x0, y0, w, h) with its heading: axes for x in [xlo, xhi] (tick step
   !> xstep) and y over `ys` (every value of every curve and level, zero included), the axis
   !> labels; with `right_factor`, a second scale on the right (right value = y * right_factor)
-  !> labelled `right_label`. The curves are drawn by the caller through `chart%sx`, `chart%sy`.
+  !> labelled `right_label`; `right_room` keeps its room without it (charts one under the other
+  !> with the same abscissa). The curves are drawn by the caller through `chart%sx`, `chart%sy`.
   pure subroutine put_chart(sheet, chart, x0, y0, w, h, heading, xlo, xhi, xstep, ys, xlabel, ylabel, right_factor, &
-    right_label)
+    right_label, right_room)
     type(sheet_t), intent(inout) :: sheet
     type(chart_t), intent(out) :: chart
     real(wp), intent(in) :: x0, y0, w, h
@@ -102,6 +104,7 @@ contains
     character(*), intent(in) :: xlabel, ylabel
     real(wp), intent(in), optional :: right_factor
     character(*), intent(in), optional :: right_label
+    logical, intent(in), optional :: right_room
     real(wp) :: ystep, v, t
     integer :: i
     call sheet%rect(x0, y0, w, h, "panel")
@@ -111,6 +114,9 @@ contains
     chart%top = y0 + 8.0_wp
     chart%width = w - 23.0_wp
     if (present(right_factor)) chart%width = w - 42.0_wp
+    if (present(right_room)) then
+      if (right_room) chart%width = w - 42.0_wp
+    end if
     chart%height = h - 20.0_wp
     chart%xlo = xlo
     chart%xhi = xhi
@@ -129,21 +135,17 @@ contains
     if (present(right_label)) call sheet%text(x0 + w - 3.0_wp, chart%top + 0.5_wp * chart%height, right_label, &
       "label", anchor_middle, rotation=-90.0_wp)
   contains
-    !> A tick's value with the decimals its step needs.
+    !> A tick's value with the decimals its step needs (the fewest that write it exactly).
     pure function tick_text(value, step) result(text)
       real(wp), intent(in) :: value, step
       character(len=:), allocatable :: text
-      character(len=32) :: buffer
       integer :: decimals
-      decimals = max(0, min(8, 1 - floor(log10(step) + 1.0e-9_wp)))
-      if (step <= 0.0_wp) decimals = 2
-      write (buffer, '(f0.'//achar(48 + decimals)//')') value
-      text = trim(adjustl(buffer))
-      if (text(1:1) == ".") text = "0"//text
-      if (len(text) > 1) then
-        if (text(1:2) == "-.") text = "-0"//text(2:)
-      end if
-      if (text == "-0" .or. verify(text, "-0.") == 0) text = "0"
+      do decimals = 0, 6
+        if (abs(step * 10.0_wp**decimals - anint(step * 10.0_wp**decimals)) <= 1.0e-6_wp * step * &
+          10.0_wp**decimals) exit
+      end do
+      text = fixed_number(value, min(decimals, 6))
+      if (abs(value) < 0.5_wp * step * 1.0e-6_wp) text = "0"
     end function tick_text
   end subroutine put_chart
 
