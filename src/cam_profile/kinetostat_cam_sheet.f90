@@ -223,26 +223,27 @@ contains
     om = abs(design%omega)
     mm = unit_word("mm", lang)
     deg = unit_word("deg", lang)
-    allocate (levels(2, 0))
+    allocate (levels(2, 0), y(lbound(c%s, 1):ubound(c%s, 1)))
+    factor = 1.0_wp
     select case (j)
     case (1)
       if (arm) then
-        y = c%s * rad_to_deg
+        y(:) = c%s * rad_to_deg
         heading = words("Angle of the arm ψ(φ)", "Угол поворота коромысла ψ(φ)", lang)
         ylabel = "ψ, "//deg
       else
-        y = c%s * 1000.0_wp
+        y(:) = c%s * 1000.0_wp
         heading = words("Displacement of the follower s(φ)", "Перемещение толкателя s(φ)", lang)
         ylabel = "s, "//mm
       end if
     case (2)
       if (arm) then
-        y = c%ds
+        y(:) = c%ds
         factor = om
         ylabel = "ψ′"
         right_label = "ω_2, "//unit_word("rad/s", lang)
       else
-        y = c%ds * 1000.0_wp
+        y(:) = c%ds * 1000.0_wp
         factor = om / 1000.0_wp
         ylabel = "s′, "//mm
         right_label = "v, "//unit_word("m/s", lang)
@@ -251,12 +252,12 @@ contains
         "Аналог скорости s′(φ) и скорость", lang)
     case (3)
       if (arm) then
-        y = c%d2s
+        y(:) = c%d2s
         factor = om**2
         ylabel = "ψ″"
         right_label = "ε_2, "//unit_word("rad/s^2", lang)
       else
-        y = c%d2s * 1000.0_wp
+        y(:) = c%d2s * 1000.0_wp
         factor = om**2 / 1000.0_wp
         ylabel = "s″, "//mm
         right_label = "a, "//unit_word("m/s^2", lang)
@@ -265,13 +266,13 @@ contains
         "Аналог ускорения s″(φ) и ускорение", lang)
     case default
       if (design%follower == follower_flat) then
-        y = c%rho * 1000.0_wp
+        y(:) = c%rho * 1000.0_wp
         heading = words("Radius of curvature of the profile ρ(φ) and ρ_min", &
           "Радиус кривизны профиля ρ(φ) и ρ_min", lang)
         ylabel = "ρ, "//mm
         levels = reshape([0.0_wp, design%rho_min * 1000.0_wp, 360.0_wp, design%rho_min * 1000.0_wp], [2, 2])
       else
-        y = c%theta
+        y(:) = c%theta
         heading = words("Pressure angle ϑ(φ) and its limits", &
           "Угол давления ϑ(φ) и допустимые углы", lang)
         ylabel = "ϑ, "//deg

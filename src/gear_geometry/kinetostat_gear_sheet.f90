@@ -730,7 +730,7 @@ contains
     end if
   contains
     pure subroutine add(list, n, text)
-      character(*), intent(inout) :: list(:)
+      character(len=64), intent(inout) :: list(:)
       integer, intent(inout) :: n
       character(*), intent(in) :: text
       if (n >= size(list)) return

@@ -58,8 +58,9 @@ contains
     rack_tip_radius = p%c_star * p%m / (1.0_wp - sin(p%alpha))
     ! the half tip land with that radius: pi m/4 - (ha* + c*) m tan(a) + rho tan(a) - rho/cos(a)
     room = 0.25_wp * pi * p%m - (p%ha_star + p%c_star) * p%m * tan(p%alpha)
-    if (room + rack_tip_radius * (tan(p%alpha) - 1.0_wp / cos(p%alpha)) < 0.0_wp) &
+    if (room + rack_tip_radius * (tan(p%alpha) - 1.0_wp / cos(p%alpha)) < 0.0_wp) then
       rack_tip_radius = max(0.0_wp, room / (1.0_wp / cos(p%alpha) - tan(p%alpha)))
+    end if
   end function rack_tip_radius
 
   !> The outline of a tooth of gear `i` (1 or 2) of the pair with geometry `g`.
