@@ -5,7 +5,7 @@
 module kinetostat_gear_geometry_layout
   use kinetostat_kinds, only: wp, rad_to_deg
   use kinetostat_deck, only: deck_source_t
-  use kinetostat_error, only: error_t, fatal_error, exit_input, exit_usage
+  use kinetostat_error, only: error_t, fatal_error, exit_input
   use kinetostat_text, only: int_str
   use kinetostat_step_table, only: step_table_t, col_length, col_ratio, col_other, col_flag
   use kinetostat_text_buffer, only: text_buffer_t
@@ -356,11 +356,6 @@ contains
     integer, intent(in) :: at_step
     type(sheet_t), intent(out) :: sheet
     type(error_t), allocatable, intent(out) :: error
-    if (at_step > 0) then
-      call fatal_error(error, exit_usage, "--at: "//table%deck//" is &gear_geometry, one pair: its sheet has no "// &
-        "steps to choose")
-      return
-    end if
     call draw_gear_sheet(self%deck%pair, pair_geometry(self%deck%pair, table%rows(1, 1), table%rows(2, 1)), table, &
       lang, sheet)
   end subroutine design_sheet

@@ -216,9 +216,11 @@ contains
       italic=.true.)
     call sheet%place_label("2", "small", x0 + 0.5_wp * la, 0.5_wp * (ya + yc), 0.0_wp, box, colour=planet_colour, &
       italic=.true.)
-    call sheet%text(x0 - 4.0_wp, box(4) - 1.0_wp, words("Linear speeds", "Картина линейных скоростей", &
-      lang), &
-      "heading")
+    call sheet%text(x0 - 4.0_wp, box(4) - 1.0_wp, words("Linear speeds", &
+      "Картина линейных скоростей", lang), "heading")
+    ! the ratio as the picture gives it: the slopes of the sun's and the carrier's lines
+    call sheet%text(x0 - 4.0_wp, box(4) - 7.0_wp, "u_1H = ω_1/ω_H = (v_A/r_1)/(v_B/r_B) = "// &
+      fixed_number((la / (axis_y - ya)) / (0.5_wp * la / (axis_y - yb)), 4), "small")
   end subroutine draw_speeds
 
   !> The train seen along its axis about `c` (sheet mm): sun, planets with their tip circles,

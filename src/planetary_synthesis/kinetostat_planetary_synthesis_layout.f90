@@ -4,7 +4,7 @@
 module kinetostat_planetary_synthesis_layout
   use kinetostat_kinds, only: wp
   use kinetostat_deck, only: deck_source_t
-  use kinetostat_error, only: error_t, fatal_error, exit_input, exit_usage
+  use kinetostat_error, only: error_t, fatal_error, exit_input
   use kinetostat_text, only: int_str
   use kinetostat_step_table, only: step_table_t, col_count, col_ratio
   use kinetostat_text_buffer, only: text_buffer_t
@@ -215,11 +215,6 @@ contains
     integer, intent(in) :: at_step
     type(sheet_t), intent(out) :: sheet
     type(error_t), allocatable, intent(out) :: error
-    if (at_step > 0) then
-      call fatal_error(error, exit_usage, "--at: "//table%deck//" is &planetary_synthesis, one train: its sheet "// &
-        "has no steps to choose")
-      return
-    end if
     associate (v => table%rows(:, 1))
       call draw_planetary_sheet(self%deck%spec, nint(v(1)), nint(v(2)), nint(v(3)), nint(v(4)), &
         merge(self%deck%m, 0.0_wp, self%deck%has_m), table, lang, sheet)
