@@ -77,13 +77,15 @@ module kinetostat_cli
     "            (repeatable; l_ab=0.12, f5c(3)=0, 'dyad(2)%l2=0.45'); marked (--set)", &
     "-o FILE, --output FILE  write to FILE (atomically: nothing is left behind on error)", &
     "--format    table (default, the legacy printout), csv (full precision), json, svg", &
-    "            (a sheet of force hodographs and diagrams; see docs/pictures.md), dxf (the", &
+    "            (a sheet of force hodographs and diagrams; a design's own sheet: the gear", &
+    "            pair's meshing, the train's scheme, the cam; see docs/pictures.md), dxf (the", &
     "            same sheet for CAD programs), summary (a CSV header and one row: max, min,", &
     "            where, mean per column, work; a design's values themselves), deck (a", &
     "            design's analysis deck: &gears, &cam), or npy (the CSV's columns as a NumPy", &
     "            .npy file: -o FILE, never to a terminal)", &
     "--pairs     with svg or dxf: only these pair forces, e.g. --pairs F16,F36", &
-    "--at K      with svg: the mechanism drawn at step K with every force of the step", &
+    "--at K      with svg: the mechanism drawn at step K with every force of the step (a", &
+    "            cam's sheet: its follower at row K)", &
     "--at K      with plans: the graphical method's sheet of step K (plans of velocities and", &
     "            accelerations, force polygons, Zhukovsky's lever)", &
     "--student NAME --group G --variant N   the header line of the 1991 programs (date, time,", &

@@ -5,8 +5,9 @@
 !> - HEADER ($ACADVER AC1009, $INSUNITS 4 = mm, $LIMMIN/$LIMMAX and $EXTMIN/$EXTMAX = the
 !>   paper), TABLES (line types CONTINUOUS and DASHED; the model's layers with their colours),
 !>   ENTITIES, EOF.
-!> - line -> LINE; polyline, polygon, rect -> LINEs; a filled dark polygon of 3 or 4 corners
-!>   (an arrowhead) also a SOLID; circle -> CIRCLE; arc -> ARC; text -> TEXT (height 0.7 of
+!> - line -> LINE; polyline -> POLYLINE (its VERTEXes, SEQEND), a stroked polygon -> a closed
+!>   POLYLINE (flag 70 = 1), rect -> LINEs; a filled dark polygon of 3 or 4 corners (an
+!>   arrowhead) also a SOLID; circle -> CIRCLE; arc -> ARC; text -> TEXT (height 0.7 of
 !>   the font size, the cap height; alignment 72 = 0/1/2 with its point in 11/21; rotation);
 !>   a group -> a comment (999) "kinetostat group CLASS NAME=VALUE ...", its data attributes
 !>   (the mechanism's view: where its position frame sits on the sheet, for read-back).
@@ -30,7 +31,7 @@ module kinetostat_sheet_dxf
   public :: write_sheet_dxf
 
   !> Colours of the layers (AutoCAD colour index), in the order of layer_names.
-  integer, parameter :: layer_colours(*) = [7, 5, 8, 1, 3, 5, 1, 3, 6, 7, 7, 8]
+  integer, parameter :: layer_colours(*) = [7, 5, 8, 1, 3, 5, 1, 3, 6, 7, 7, 8, 7]
   !> Colours the sheets use and their AutoCAD indices.
   character(*), parameter :: known_colours(*) = [character(len=7) :: "#d62728", "#2ca02c", "#1f77b4", "#8c564b", &
     "#ff7f0e", "#9467bd", "#e377c2", "#17becf", "#7f7f7f", "#bcbd22", "#555555", "#777777", "#999999", "#c8c8c8", &
@@ -100,17 +101,13 @@ contains
     do i = 1, sheet%count
       associate (e => sheet%items(i))
         select case (e%kind)
-        case (entity_line, entity_polyline)
-          do k = 1, size(e%x) - 1
-            call line(out, h, e, [e%x(k), e%y(k)], [e%x(k + 1), e%y(k + 1)])
-          end do
+        case (entity_line)
+          call line(out, h, e, [e%x(1), e%y(1)], [e%x(2), e%y(2)])
+        case (entity_polyline)
+          call polyline(out, h, e, .false.)
         case (entity_polygon)
           n = size(e%x)
-          if (stroked(e)) then
-            do k = 1, n
-              call line(out, h, e, [e%x(k), e%y(k)], [e%x(modulo(k, n) + 1), e%y(modulo(k, n) + 1)])
-            end do
-          end if
+          if (stroked(e)) call polyline(out, h, e, .true.)
           if (dark_fill(e) .and. (n == 3 .or. n == 4)) call solid(out, h, e)
         case (entity_rect)
           if (stroked(e)) then
@@ -198,6 +195,35 @@ contains
     call pair(out, 21, num(h - b(2)))
     call pair(out, 31, "0.0")
   end subroutine line
+  !> POLYLINE through the entity's points (closed: flag 70 = 1), its VERTEXes and SEQEND, all
+  !> on its layer.
+  pure subroutine polyline(out, h, e, closed)
+    type(text_buffer_t), intent(inout) :: out
+    real(wp), intent(in) :: h
+    type(entity_t), intent(in) :: e
+    logical, intent(in) :: closed
+    integer :: k, colour
+    call pair(out, 0, "POLYLINE")
+    call pair(out, 8, trim(layer_names(e%layer)))
+    colour = entity_colour(e)
+    if (colour > 0) call pair(out, 62, int_str(colour))
+    if (dashed(e)) call pair(out, 6, "DASHED")
+    call pair(out, 66, "1")
+    call pair(out, 10, "0.0")
+    call pair(out, 20, "0.0")
+    call pair(out, 30, "0.0")
+    call pair(out, 70, merge("1", "0", closed))
+    do k = 1, size(e%x)
+      call pair(out, 0, "VERTEX")
+      call pair(out, 8, trim(layer_names(e%layer)))
+      call pair(out, 10, num(e%x(k)))
+      call pair(out, 20, num(h - e%y(k)))
+      call pair(out, 30, "0.0")
+    end do
+    call pair(out, 0, "SEQEND")
+    call pair(out, 8, trim(layer_names(e%layer)))
+  end subroutine polyline
+
   !> SOLID over a polygon of 3 or 4 corners (a triangle repeats its last corner); DXF's
   !> fourth corner comes before the third.
   pure subroutine solid(out, h, e)

@@ -166,10 +166,13 @@ contains
     call mech%read_deck(source, error)
     if (allocated(error)) return
     if ((options%format == format_svg .or. options%format == format_dxf) .and. .not. mech%force_sheet) then
-      call fatal_error(error, exit_usage, "--format "//trim(format_keys(options%format))//": "//source%path// &
-        " is &"//group//", a design: no sheet of forces; its results are the table, csv, json or summary, "// &
-        "and its analysis deck (--format deck)")
-      return
+      if (allocated(options%pairs)) then
+        if (len(options%pairs) > 0) then
+          call fatal_error(error, exit_usage, "--pairs: "//source%path//" is &"//group//", a design: its "// &
+            "sheet has no pair forces to choose")
+          return
+        end if
+      end if
     end if
     if (options%shaking) then
       call mech%mass_model(model)
@@ -285,10 +288,18 @@ contains
       case (format_svg, format_dxf)
         call guard_drawable(table, error)
         if (allocated(error)) return
-        if (options%at_step > 0) then
+        if (mech%force_sheet .and. options%at_step > 0) then
           call write_at_step(mech, table, options, out, error)
         else
-          call write_run_sheet(mech%title(options%lang), table, pairs_asked, options%lang, sheet, error)
+          if (mech%force_sheet) then
+            call write_run_sheet(mech%title(options%lang), table, pairs_asked, options%lang, sheet, error)
+          else if (options%at_step > 0 .and. table%single_record) then
+            call fatal_error(error, exit_usage, "--at: "//table%deck//" is &"//group//", one "//table%row_name// &
+              ": its sheet has no steps to choose")
+          else
+            ! a design's sheet (the gear pair, the planetary train, the cam)
+            call mech%design_sheet(table, options%lang, options%at_step, sheet, error)
+          end if
           if (allocated(error)) return
           if (options%format == format_dxf) then
             call write_sheet_dxf(sheet, out)
