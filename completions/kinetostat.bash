@@ -9,7 +9,7 @@ _kinetostat() {
   local kinds="pr3207 pr3050 sixbar assur gears cam linkage gear_geometry planetary_synthesis cam_profile fourbar engine"
   local run_opts="-o --output --set --format --pairs --at --plans --student --group --variant --lang --kinematics --frame --max-deck-size --allow-selfcheck-failure --quiet --strict --help --version"
   case "$prev" in
-    --format) COMPREPLY=($(compgen -W "table csv json svg summary plans dxf deck" -- "$cur")); return ;;
+    --format) COMPREPLY=($(compgen -W "table csv json svg summary plans dxf deck npy" -- "$cur")); return ;;
     --frame) COMPREPLY=($(compgen -W "global link" -- "$cur")); return ;;
     --lang) COMPREPLY=($(compgen -W "en ru" -- "$cur")); return ;;
     -o|--output) COMPREPLY=($(compgen -f -- "$cur")); return ;;

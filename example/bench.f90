@@ -5,7 +5,7 @@
 !> For every stepped mechanism (a bundled deck scaled in memory to 10^4, 10^5 and 10^6 steps,
 !> up to MAX_STEPS) it prints the solve rates (kernel and step table, steps/s; "kernel" without
 !> the kinematics columns, as a plain run, "solve" with them), the end-to-end
-!> rate of CSV, the legacy table and JSON written to a file (deck text -> output file, the
+!> rate of CSV, the legacy table, JSON and npy written to a file (deck text -> output file, the
 !> pipeline of `kinetostat DECK -o FILE`), the peak resident memory of each end-to-end run
 !> (VmHWM of /proc/self/status after resetting it through /proc/self/clear_refs), and every
 !> rate as a fraction of the physical-limit estimate of one dedicated step on one core.
@@ -32,9 +32,13 @@ program bench
   use kinetostat_registry, only: create_mechanism
   use kinetostat_step_table, only: step_table_t
   use kinetostat_text_buffer, only: text_buffer_t
-  use kinetostat_run, only: run_options_t, run_mechanism, format_csv, format_table, format_json, block_rows
+  use kinetostat_run, only: run_options_t, run_mechanism, format_csv, format_table, format_json, format_npy, block_rows
   use kinetostat_spool, only: spool_t
   use kinetostat_decimal, only: put_es_compact, edit_f
+  use kinetostat_csv_writer, only: write_csv
+  use kinetostat_json_writer, only: write_json
+  use kinetostat_table_writer, only: write_table_rows
+  use kinetostat_labels, only: lang_en
   implicit none
 
   !> Physical-limit estimate of one dedicated step on one core, steps/s: ~300 flops and ~15
@@ -42,14 +46,14 @@ program bench
   real(wp), parameter :: limit_rate = 2.0e6_wp
   !> Step counts of the runs.
   integer, parameter :: step_counts(*) = [10000, 100000, 1000000]
-  !> Row format: kind, steps, kernel and solve rates, three end-to-end rates, three peaks, ratios.
-  character(*), parameter :: row_fmt = '(a8,i9,5es10.2,3f8.1,5f7.3)'
+  !> Row format: kind, steps, kernel and solve rates, four end-to-end rates, four peaks, ratios.
+  character(*), parameter :: row_fmt = '(a8,i9,6es10.2,4f8.1,6f7.3)'
   !> Header lines of the table.
-  character(*), parameter :: header(*) = [character(len=128) :: &
-    "                  steps per CPU second (kernel, solve: see below)           peak MiB" // &
-    "                     ratio to limit", &
-    "    kind    steps    kernel     solve       csv     table      json     csv   table    json" // &
-    " kernel  solve    csv  table   json"]
+  character(*), parameter :: header(*) = [character(len=160) :: &
+    "                  steps per CPU second (kernel, solve: see below)                     peak MiB" // &
+    "                             ratio to limit", &
+    "    kind    steps    kernel     solve       csv     table      json       npy     csv   table    json     npy" // &
+    " kernel  solve    csv  table   json    npy"]
 
   interface
     !> glibc: give the heap's free memory back to the system (so that a peak is the run's own).
@@ -101,6 +105,7 @@ program bench
   ! one thread, as `kinetostat` runs without OMP_NUM_THREADS
   !$ call omp_set_num_threads(1)
   call bench_writer()
+  call bench_text()
   write (output_unit, '(a,es8.1,a)') "kinetostat bench: physical-limit estimate ", limit_rate, &
     " steps/s (one dedicated step, one core)"
   do i = 1, size(header)
@@ -170,6 +175,76 @@ contains
     if (differ > 0) write (output_unit, '(a,i0)') "  texts that differ (a bug): ", differ
   end subroutine bench_writer
 
+  !> Text output alone (the decimal writer and the row assembly of the CSV, JSON and legacy
+  !> table writers): for PR 3207 and the generic six-bar (when wanted), one block of
+  !> block_rows steps solved with the kinematics columns shown (as --kinematics), then its
+  !> rows formatted again and again for about half a CPU second per writer; cells (rows times
+  !> the columns the CSV shows) per CPU second with one thread, and MB of text per CPU second.
+  subroutine bench_text()
+    integer, parameter :: which(2) = [1, 4]
+    class(mechanism_t), allocatable :: mech
+    type(deck_source_t) :: source
+    type(step_table_t) :: table
+    type(text_buffer_t) :: out, later
+    type(error_t), allocatable :: error
+    character(len=:), allocatable :: text
+    real(wp) :: t0, t, cells, bytes
+    integer :: i, w, c, reps, shown
+    character(len=5), parameter :: writer_names(3) = [character(len=5) :: "csv", "json", "table"]
+    write (output_unit, '(a,i0,a)') "text output alone, one thread, ", block_rows, &
+      " steps with the kinematics columns (cells: rows x CSV columns), per CPU second:"
+    do i = 1, size(which)
+      if (.not. wanted(which(i))) cycle
+      text = scaled_deck(cases(which(i)), block_rows)
+      call deck_source_from_text(trim(cases(which(i))%deck), text, source)
+      call create_mechanism(trim(cases(which(i))%kind), mech)
+      call mech%read_deck(source, error)
+      if (allocated(error)) call fail(error)
+      table = step_table_t()
+      table%kinematics_wanted = .true.
+      call mech%solve(table, error)
+      if (allocated(error)) call fail(error)
+      call table%finish_columns()
+      table%kinematics_shown = .true.
+      shown = 0
+      do c = 1, size(table%columns)
+        if (table%columns(c)%csv .and. table%shows(c)) shown = shown + 1
+      end do
+      do w = 1, size(writer_names)
+        reps = 0
+        bytes = 0.0_wp
+        t0 = clock()
+        do
+          out%length = 0
+          later%length = 0
+          select case (w)
+          case (1)
+            call write_csv(table, out)
+          case (2)
+            call write_json("bench", table, out)
+          case default
+            call write_table_rows(mech, table, lang_en, out, later)
+          end select
+          bytes = bytes + out%length + later%length
+          reps = reps + 1
+          t = seconds_since(t0)
+          if (t > 0.5_wp) exit
+        end do
+        cells = real(reps, wp) * table%row_count() * shown
+        if (w < 3) then
+          write (output_unit, '(2x,a8,i5,a,a6,es10.2,a,es10.2,a,f7.1,a)') cases(which(i))%kind, shown, " columns  ", &
+            writer_names(w), cells / t, " cells/s", real(reps, wp) * table%row_count() / t, " rows/s", &
+            bytes / t / 1.0e6_wp, " MB/s"
+        else
+          write (output_unit, '(2x,a8,i5,a,a6,a18,es10.2,a,f7.1,a)') cases(which(i))%kind, shown, " columns  ", &
+            writer_names(w), "", real(reps, wp) * table%row_count() / t, " rows/s", bytes / t / 1.0e6_wp, " MB/s"
+        end if
+      end do
+      deallocate (mech)
+    end do
+    flush (output_unit)
+  end subroutine bench_text
+
   !> One case at one step count: one row of the table.
   subroutine bench_one(c, n, path)
     type(bench_case_t), intent(in) :: c
@@ -178,13 +253,13 @@ contains
     !> Output file of the end-to-end runs.
     character(*), intent(in) :: path
     character(len=:), allocatable :: text
-    real(wp) :: kernel_rate, solve_rate, rates(3), peaks(3)
-    integer, parameter :: formats(3) = [format_csv, format_table, format_json]
+    integer, parameter :: formats(*) = [format_csv, format_table, format_json, format_npy]
+    real(wp) :: kernel_rate, solve_rate, rates(size(formats)), peaks(size(formats))
     integer :: f
     text = scaled_deck(c, n)
     kernel_rate = n / solve_seconds(c, text, .false.)
     solve_rate = n / solve_seconds(c, text, .true.)
-    do f = 1, 3
+    do f = 1, size(formats)
       call reset_peak()
       rates(f) = n / end_to_end_seconds(c, text, formats(f), path)
       peaks(f) = peak_mib()

@@ -118,12 +118,25 @@ contains
     type(descriptor_t), intent(in) :: dsc
     integer, intent(inout) :: bad
     character(len=:), allocatable, intent(inout) :: shown
-    character(len=dsc%w) :: mine, theirs
+    character(len=dsc%w) :: mine, theirs, fitted
     character(len=24) :: fmt
+    logical :: fits
     select case (dsc%letter)
     case ("F")
       call edit_f(x, dsc%d, mine)
       write (fmt, '("(f",i0,".",i0,")")') dsc%w, dsc%d
+      ! the form with `fits`: the same text when it leaves a blank in front, else nothing
+      fitted = "unset"
+      call edit_f(x, dsc%d, fitted, fits)
+      write (theirs, fmt) x
+      if (fits .neqv. (theirs(1:1) == " ")) then
+        bad = bad + 1
+        if (bad <= max_shown) shown = shown//" ["//hex(x)//" "//trim(fmt)//" fits "//merge("T", "F", fits)// &
+          " for '"//theirs//"']"
+      else if (fits .and. fitted /= theirs) then
+        bad = bad + 1
+        if (bad <= max_shown) shown = shown//" ["//hex(x)//" "//trim(fmt)//" fits '"//fitted//"' vs '"//theirs//"']"
+      end if
     case ("E")
       call edit_exponent(x, dsc%d, dsc%e, scientific=.false., text=mine)
       write (fmt, '("(e",i0,".",i0,"e",i0,")")') dsc%w, dsc%d, dsc%e

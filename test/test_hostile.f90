@@ -5,7 +5,9 @@ module test_hostile
   use, intrinsic :: iso_fortran_env, only: int64
   use kinetostat_kinds, only: wp
   use kinetostat_error, only: error_t, exit_input
-  use kinetostat_text, only: printable, utf8_length
+  use kinetostat_text, only: printable, utf8_length, char_count, is_name
+  use kinetostat_escape, only: xml_escape, csv_field, dxf_text, table_text
+  use kinetostat_deck_encoding, only: deck_as_utf8, utf8_problem
   use kinetostat_deck, only: deck_source_t, deck_source_from_text, check_namelist_syntax, longest_quoted, &
     load_deck, set_max_deck_size, default_max_deck_size
   use kinetostat_json_writer, only: json_string
@@ -23,6 +25,8 @@ contains
   subroutine run_hostile_tests(t)
     type(test_counts_t), intent(inout) :: t
     call test_printable(t)
+    call test_escapers(t)
+    call test_encoding(t)
     call test_syntax(t)
     call test_size_limit(t)
     call test_huge_means(t)
@@ -44,6 +48,71 @@ contains
     call check_true(t, "json_string keeps UTF-8", json_string(cyrillic) == '"'//cyrillic//'"', "UTF-8 changed")
   end subroutine test_printable
 
+  !> Each output format's escaper on hostile text: quotes, markup, separators, control
+  !> characters, bytes that are not UTF-8, non-ASCII letters.
+  subroutine test_escapers(t)
+    type(test_counts_t), intent(inout) :: t
+    character(len=*), parameter :: lf = achar(10), cyr = char(208)//char(180)  ! "д", U+0434
+    character(len=*), parameter :: hostile = 'a"b<c>&]]>'//lf//"x"//achar(1)//char(255)//"'"
+    call expect(t, "xml_escape hostile", xml_escape(hostile), "a&quot;b&lt;c&gt;&amp;]]&gt;\nx\x01\xFF&apos;")
+    call expect(t, "xml_escape keeps UTF-8", xml_escape("x "//cyr), "x "//cyr)
+    call expect(t, "xml_escape U+FFFE", xml_escape("a"//char(239)//char(191)//char(190)), "a\xEF\xBF\xBE")
+    call expect(t, "csv_field plain", csv_field("l_ab"), "l_ab")
+    call expect(t, "csv_field quotes", csv_field('a,"b" c'), '"a,""b"" c"')
+    call expect(t, "csv_field one line", csv_field("a"//lf//"b"//achar(13)//char(255)), "a\nb\r\xFF")
+    call expect(t, "dxf_text Cyrillic", dxf_text("A"//cyr), "A\U+0434")
+    call expect(t, "dxf_text 4-byte", dxf_text(char(240)//char(159)//char(152)//char(128)), "\U+D83D\U+DE00")
+    call expect(t, "dxf_text one line", dxf_text("x"//lf//"  0"//lf//"EOF"), "x\n  0\nEOF")
+    call expect(t, "dxf_text caret and percent", dxf_text("^J 50%%d"), "^ J 50%%%%%%d")
+    call expect(t, "dxf_text plain", dxf_text("F21 = 10 N"), "F21 = 10 N")
+    call expect(t, "table_text one line", table_text("a"//lf//"INJECTED"//achar(9)), "a\nINJECTED\t")
+    call check_true(t, "char_count Cyrillic", char_count(repeat(cyr, 45)) == 45, "45 expected")
+    call check_true(t, "char_count bad byte", char_count("a"//char(255)//"b") == 3, "3 expected")
+    call check_true(t, "utf8_length overlong", utf8_length(char(192)//char(128), 1) == 0 .and. &
+      utf8_length(char(224)//char(128)//char(128), 1) == 0, "an overlong form accepted")
+    call check_true(t, "utf8_length surrogate", utf8_length(char(237)//char(160)//char(128), 1) == 0, &
+      "a surrogate accepted")
+    call check_true(t, "is_name", is_name("A1_b") .and. is_name(repeat(cyr, 5)) .and. .not. is_name("1A") .and. &
+      .not. is_name("a-b") .and. .not. is_name("") .and. .not. is_name("a"//char(255)), "wrong verdict")
+  contains
+    subroutine expect(t, name, computed, expected)
+      type(test_counts_t), intent(inout) :: t
+      character(*), intent(in) :: name, computed, expected
+      call check_true(t, name, computed == expected, "expected '"//printable(expected)//"', got '"// &
+        printable(computed)//"'")
+    end subroutine expect
+  end subroutine test_escapers
+
+  !> Decks as UTF-8: kept when they are, CP1251 Cyrillic decoded, anything else refused with
+  !> the line and the byte.
+  subroutine test_encoding(t)
+    type(test_counts_t), intent(inout) :: t
+    character(len=*), parameter :: lf = achar(10)
+    character(len=:), allocatable :: text, problem
+    ! "Шарнир Ёё" in CP1251 and in UTF-8
+    character(len=*), parameter :: cp = char(216)//char(224)//char(240)//char(237)//char(232)//char(240)//" "// &
+      char(168)//char(184)
+    character(len=*), parameter :: u8 = char(208)//char(168)//char(208)//char(176)//char(209)//char(128)// &
+      char(208)//char(189)//char(208)//char(184)//char(209)//char(128)//" "//char(208)//char(129)//char(209)//char(145)
+    text = "&g title = '"//u8//"' /"
+    call deck_as_utf8(text, problem)
+    call check_true(t, "utf-8 deck kept", len(problem) == 0 .and. text == "&g title = '"//u8//"' /", problem)
+    text = "! x"//lf//"&g title = '"//cp//"' /"
+    call deck_as_utf8(text, problem)
+    call check_true(t, "cp1251 deck decoded", len(problem) == 0 .and. text == "! x"//lf//"&g title = '"//u8//"' /", &
+      printable(problem//" "//text))
+    text = "&g"//lf//" title = '"//cp//"'"//lf//" ! 30"//char(176)//lf//"/"
+    call deck_as_utf8(text, problem)
+    call check_true(t, "cp1251 degree refused", problem == "3: byte \xB0 is neither UTF-8 nor a Cyrillic letter of "// &
+      "CP1251 (save the deck as UTF-8)", problem)
+    text = "&g"//lf//" title = '"//u8//"'"//lf//" ! "//cp//lf//"/"
+    call deck_as_utf8(text, problem)
+    call check_true(t, "mixed encodings refused", index(problem, "3: byte \xD8 is not UTF-8, but line 2 is UTF-8") == 1, &
+      problem)
+    call check_true(t, "utf8_problem", utf8_problem("0.1"//char(255)) == "byte \xFF is not UTF-8" .and. &
+      len(utf8_problem(u8)) == 0, utf8_problem("0.1"//char(255)))
+  end subroutine test_encoding
+
   !> The pre-check refuses what crashed gfortran's READ and names line and variable; it
   !> passes valid decks (subscripts, complex-like values, quotes with doubled quotes).
   subroutine test_syntax(t)
@@ -58,7 +127,24 @@ contains
     call expect_syntax(t, "syntax unclosed quote", "&assur"//lf//"  title = 'abc"//lf//"/", &
                        "d.nml:2: &assur: title: unclosed quote '")
     call expect_syntax(t, "syntax valid deck", "! c (x"//lf//"&assur title = 'it''s (', dyad(1)%at2 = 0.1, 0"// &
-                       lf//"  f5c(1:2) = 2*0, x = (1.0, 2.0) ! (open"//lf//"/ dyad(", "")
+                       lf//"  f5c(1:2) = 2*0, x = (1.0, 2.0) ! (open"//lf//"/ ! dyad("//lf//lf//"  ! end", "")
+    ! after the closing '/': comments only; a '/' between two numbers is a fraction
+    call expect_syntax(t, "syntax text after the group", "&cam"//lf//"  l = 1"//lf//"/"//lf//"  l_ab = 5", &
+                       "d.nml:4: &x: l_ab = 5: text after the group's closing '/'")
+    call expect_syntax(t, "syntax text after the slash", "&cam l = 1 / f = 2 ! c", &
+                       "d.nml:1: &x: f = 2 ! c: text after the group's closing '/'")
+    call expect_syntax(t, "syntax fraction", "&cam"//lf//"  delta = 1/25, j_rotor = 0.6"//lf//"/", &
+                       "d.nml:2: &x: delta = 1/25: a fraction? write 0.04")
+    call expect_syntax(t, "syntax fraction 1/16", "&cam j_flywheel = 1/16", &
+                       "d.nml:1: &x: j_flywheel = 1/16: a fraction? write 0.0625")
+    call expect_syntax(t, "syntax fraction whole", "&cam n = 12/4", "d.nml:1: &x: n = 12/4: a fraction? write 3")
+    call expect_syntax(t, "syntax fraction by zero", "&cam a = 1./0", "d.nml:1: &x: a = 1./0: a fraction? a namelist value")
+    call expect_syntax(t, "syntax slash after a number", "&cam n = 12/"//lf//"! done", "")
+    ! a quoted text but the title has at most text_chars characters (counted, not bytes)
+    call expect_syntax(t, "syntax long text", "&cam follower = '"//repeat("x", 33)//"' /", &
+                       "d.nml:1: &x: follower: a text of 33 characters")
+    call expect_syntax(t, "syntax long Cyrillic text fits", "&cam follower = '"//repeat("Ш", 32)//"' /", "")
+    call expect_syntax(t, "syntax long title", "&cam title = '"//repeat("x", 300)//"' /", "")
     block
       type(deck_source_t) :: source
       call deck_source_from_text("d.nml", "&assur title = '"//repeat("x", 1000)//"', t2 = 'a''b'"//lf//"/", source)

@@ -13,6 +13,7 @@ module test_io
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_csv_writer, only: write_csv
   use kinetostat_json_writer, only: write_json, json_string
+  use kinetostat_npy_writer, only: write_npy, npy_header
   use kinetostat_run, only: guard_finite
   use kinetostat_diff, only: diff_options_t, diff_outputs, diff_same, diff_different
   use kinetostat_step_table, only: column_t
@@ -29,6 +30,7 @@ contains
     call test_step_table(t)
     call test_csv(t)
     call test_json(t)
+    call test_npy(t)
     call test_guard(t)
     call test_diff(t)
   end subroutine run_io_tests
@@ -257,8 +259,46 @@ contains
                     '"csv": false}') > 0, text)
     call check_true(t, "json array echo", index(text, '{"name": "F5C", "value": [1.000000000000E+000, ' // &
                     '2.000000000000E+000], "unit": "N"}') > 0, text)
-    call check_text(t, "json_string control characters", '"a\u0009b\\c"', json_string("a"//achar(9)//"b\c"))
+    call check_text(t, "json_string control characters", '"a\tb\\c\n\u0001\u00FF\""', &
+      json_string("a"//achar(9)//"b\c"//achar(10)//achar(1)//char(255)//'"'))
   end subroutine test_json
+
+  !> The npy writer on the small table (hand-made bytes: header and two records of the CSV's
+  !> five columns), a header of a name with UTF-8 letters (version 3.0), a quote and a
+  !> backslash (escaped for Python's literal parser).
+  subroutine test_npy(t)
+    type(test_counts_t), intent(inout) :: t
+    type(text_buffer_t) :: out
+    type(step_table_t) :: table
+    type(error_t), allocatable :: error
+    character(len=:), allocatable :: text, dict
+    character(len=8) :: b
+    real(wp), parameter :: row2(5) = [30.0_wp, 0.0_wp, 0.0_wp, 1.0_wp, 40.0_wp]
+    integer :: i
+    logical :: same
+    table = sample_table()
+    table%total_rows = 2
+    call write_npy(table, out, error)
+    text = out%text()
+    dict = "{'descr': [('phi1', '<f8'), ('F16', '<f8'), ('F16G', '<f8'), ('JAM', '<f8'), ('z1', '<f8')], " // &
+      "'fortran_order': False, 'shape': (2,), }"
+    call check_true(t, "npy header: magic, version 1.0, length, dictionary, 64-byte aligned", &
+      text(1:10) == char(147)//"NUMPY"//char(1)//char(0)//char(182)//char(0) .and. &
+      text(11:10 + len(dict)) == dict .and. text(192:192) == achar(10) .and. &
+      verify(text(11 + len(dict):191), " ") == 0 .and. .not. allocated(error), text(1:min(len(text), 192)))
+    same = len(text) == 192 + 2 * 5 * 8
+    do i = 1, 5
+      b = transfer(row2(i), b)
+      if (same) same = same .and. text(192 + 40 + 8 * (i - 1) + 1:192 + 40 + 8 * i) == b
+    end do
+    call check_true(t, "npy records: 2 x 5 float64, -0 written as 0, the JSON-only column left out", same, &
+      "length "//itoa(len(text))//", expected "//itoa(192 + 80))
+    text = npy_header([character(len=4) :: "Fб", "a'b\"], [3, 4], 7)
+    call check_true(t, "npy header of UTF-8 names: version 3.0, 4-byte length, quote and backslash escaped", &
+      text(7:8) == achar(3)//achar(0) .and. mod(len(text), 64) == 0 .and. &
+      index(text, "[('Fб', '<f8'), ('a\'b\\', '<f8')]") > 0 .and. &
+      index(text, "'shape': (7,)") > 0, text)
+  end subroutine test_npy
 
   subroutine test_guard(t)
     type(test_counts_t), intent(inout) :: t

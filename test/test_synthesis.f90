@@ -14,6 +14,7 @@ module test_synthesis
   use kinetostat_cam_profile, only: cam_design_t, cam_segment_t, cam_point_t, cam_point, motion_at, size_cam, &
     segment_limit, segment_motion, follower_flat, follower_roller, follower_oscillating, &
     law_dwell, law_cycloidal, law_harmonic, law_poly345, law_parabolic
+  use kinetostat_gear_teeth, only: tooth_outline_t, tooth_outline, rack_tip_radius
   use test_harness, only: test_counts_t, check_close, check_true
   implicit none
   private
@@ -28,6 +29,7 @@ contains
     call test_undercut_z12(t)
     call test_path_of_contact(t)
     call test_drawing_points(t)
+    call test_tooth_outline(t)
     call test_auto_shift(t)
     call test_centre_distance(t)
     call test_contour_points(t)
@@ -140,6 +142,125 @@ contains
     end do
     call check_close(t, "flank ends on the tip circle", 22.42_wp, norm2(xy(:, 40)), 1.0e-13_wp, 0.0_wp)
   end subroutine test_drawing_points
+
+  !> The tooth drawn (kinetostat_gear_teeth) against the tooth the rack cuts, computed a second
+  !> way: the rack's outline (straight flank, tip rounding, tip line) moved through 6001
+  !> positions of its rolling on the pitch circle, the material it leaves at each of 24 radii
+  !> from the root to the tip (the least half angle over all positions), against the outline's
+  !> half angle at that radius (its polyline's crossing), within 1e-3 m along the arc (the
+  !> drawing's chords between its points are ~5e-4 m off the curve):
+  !> ordinary teeth, a pointed one, an undercut one (z = 8 without shift), a negative shift.
+  !> And the flank on the involute, the fillet meeting it, the flank through P in the mesh.
+  subroutine test_tooth_outline(t)
+    type(test_counts_t), intent(inout) :: t
+    call case(gear_pair_t(m=4.0_wp, z1=13, z2=27), 0.395615_wp, -0.0902505_wp, 1)
+    call case(gear_pair_t(m=4.0_wp, z1=13, z2=27), 0.395615_wp, -0.0902505_wp, 2)
+    call case(gear_pair_t(m=3.0_wp, z1=12, z2=24), 0.6_wp, 0.36_wp, 1)
+    call case(gear_pair_t(m=5.0_wp, z1=8, z2=20), 0.0_wp, 0.0_wp, 1)
+    call case(gear_pair_t(m=2.0_wp, z1=10, z2=30), 1.1_wp, -0.5_wp, 1)
+    call case(gear_pair_t(m=2.0_wp, z1=10, z2=30), 1.1_wp, -0.5_wp, 2)
+  contains
+    subroutine case(p, x1, x2, i)
+      type(gear_pair_t), intent(in) :: p
+      real(wp), intent(in) :: x1, x2
+      integer, intent(in) :: i
+      type(pair_geometry_t) :: g
+      type(tooth_outline_t) :: tooth
+      real(wp), allocatable :: path(:, :)
+      real(wp) :: r, worst, drawn, cut, rr, worst_flank
+      integer :: k
+      character(len=40) :: name
+      g = pair_geometry(p, x1, x2)
+      tooth = tooth_outline(p, g, i)
+      write (name, '("z = ", i0, ", x = ", f0.3)') merge(p%z1, p%z2, i == 1), g%x(i)
+      path = reshape([tooth%fillet, tooth%flank], [2, size(tooth%fillet, 2) + size(tooth%flank, 2)])
+      worst = 0.0_wp
+      do k = 1, 24
+        r = tooth%rf + (tooth%r_end - tooth%rf) * (real(k, wp) - 0.5_wp) / 24.0_wp
+        drawn = half_angle(path, r)
+        cut = rack_cut(p, g, i, r)
+        worst = max(worst, abs(drawn - cut) * r)
+      end do
+      call check_close(t, "tooth drawn as the rack cuts it, "//trim(name)//" (mm along the arc)", 0.0_wp, worst, &
+        0.0_wp, 1.0e-3_wp * p%m)
+      ! every flank point on the involute: half angle base_half - inv(acos(rb/r))
+      worst_flank = 0.0_wp
+      do k = 1, size(tooth%flank, 2)
+        rr = norm2(tooth%flank(:, k))
+        worst_flank = max(worst_flank, abs(atan2(tooth%flank(2, k), tooth%flank(1, k)) - (tooth%base_half - &
+          involute(acos(min(1.0_wp, tooth%rb / rr))))))
+      end do
+      call check_close(t, "flank on the involute, "//trim(name)//" (rad)", 0.0_wp, worst_flank, 0.0_wp, 1.0e-13_wp)
+      call check_close(t, "fillet meets the flank, "//trim(name), 0.0_wp, norm2(tooth%fillet(:, size(tooth%fillet, 2)) &
+        - tooth%flank(:, 1)), 0.0_wp, 1.0e-4_wp * p%m)
+    end subroutine case
+    !> The half angle of the outline `path` at radius r: the least over its crossings.
+    pure real(wp) function half_angle(path, r) result(psi)
+      real(wp), intent(in) :: path(:, :), r
+      real(wp) :: r1, r2, s, q(2)
+      integer :: k
+      psi = huge(1.0_wp)
+      do k = 1, size(path, 2) - 1
+        r1 = norm2(path(:, k))
+        r2 = norm2(path(:, k + 1))
+        if ((r1 - r) * (r2 - r) > 0.0_wp .or. r1 == r2) cycle
+        s = (r - r1) / (r2 - r1)
+        q = path(:, k) + s * (path(:, k + 1) - path(:, k))
+        psi = min(psi, atan2(q(2), q(1)))
+      end do
+    end function half_angle
+    !> The half angle of the tooth the rack leaves at radius r: the rack's right side (its
+    !> straight flank down to the rounding, the rounding, the tip line's half) as a polyline of
+    !> 161 points, moved by u in 6001 steps, each position turned into the gear's frame; the
+    !> largest angle it reaches right of the space's axis at radius r is the space's half,
+    !> pi/z less it the tooth's.
+    pure real(wp) function rack_cut(p, g, i, r) result(psi)
+      type(gear_pair_t), intent(in) :: p
+      type(pair_geometry_t), intent(in) :: g
+      integer, intent(in) :: i
+      real(wp), intent(in) :: r
+      real(wp) :: rp, rho, y_ref, y_tip, yc, xc, y_tan, top, side(2, 161), q(2, 161), u, span, best, a, z
+      real(wp) :: r1, r2, s, e(2), delta
+      integer :: k, j
+      z = real(merge(p%z1, p%z2, i == 1), wp)
+      rp = 0.5_wp * g%d(i)
+      rho = rack_tip_radius(p)
+      y_ref = rp + g%x(i) * p%m
+      y_tip = y_ref - (p%ha_star + p%c_star) * p%m
+      yc = y_tip + rho
+      xc = 0.25_wp * pi * p%m - (y_ref - yc) * tan(p%alpha) - rho / cos(p%alpha)
+      y_tan = yc - rho * sin(p%alpha)
+      top = y_ref + 1.5_wp * p%m
+      do k = 1, 80
+        a = top + (y_tan - top) * real(k - 1, wp) / 79.0_wp
+        side(:, k) = [0.25_wp * pi * p%m - (y_ref - a) * tan(p%alpha), a]
+      end do
+      do k = 1, 80
+        a = -p%alpha + (p%alpha - 0.5_wp * pi) * real(k, wp) / 80.0_wp
+        side(:, 80 + k) = [xc + rho * cos(a), yc + rho * sin(a)]
+      end do
+      side(:, 161) = [0.0_wp, y_tip]
+      span = 2.5_wp * p%m + 0.6_wp * rp
+      best = -huge(1.0_wp)
+      do j = 0, 6000
+        u = -span + 2.0_wp * span * real(j, wp) / 6000.0_wp
+        do k = 1, 161
+          e = side(:, k) + [u, 0.0_wp]
+          q(:, k) = [cos(u / rp) * e(1) - sin(u / rp) * e(2), sin(u / rp) * e(1) + cos(u / rp) * e(2)]
+        end do
+        do k = 1, 160
+          r1 = norm2(q(:, k))
+          r2 = norm2(q(:, k + 1))
+          if ((r1 - r) * (r2 - r) > 0.0_wp .or. r1 == r2) cycle
+          s = (r - r1) / (r2 - r1)
+          e = q(:, k) + s * (q(:, k + 1) - q(:, k))
+          delta = 0.5_wp * pi - atan2(e(2), e(1))
+          if (abs(delta) < 1.5_wp * pi / z) best = max(best, delta)
+        end do
+      end do
+      psi = pi / z - best
+    end function rack_cut
+  end subroutine test_tooth_outline
 
   !> shift = 'auto': the point is acceptable, the sliding is equal, and a slightly nearer
   !> point of the equal-sliding curve is not acceptable or not nearer.

@@ -6,8 +6,9 @@ r"""Read back kinetostat's DXF sheets (--format dxf [--at K]; standard library o
       the sections HEADER, TABLES, ENTITIES in that order and the closing EOF; the paper's
       size in $LIMMAX is an ISO size A4..A1 (portrait or landscape); the layer table
       defines LINKS, JOINTS, GUIDES, FORCES, TEXT, VPLAN, APLAN, POLYGONS, LEVER, SCALES,
-      FRAME, CHARTS; every entity is a LINE, CIRCLE, ARC, SOLID or TEXT on a defined layer
-      with numeric coordinates, inside the paper; every TEXT is ASCII (beyond it AutoCAD's
+      FRAME, CHARTS, PROFILE; every entity is a LINE, CIRCLE, ARC, SOLID, TEXT or POLYLINE
+      (its VERTEXes, SEQEND) on a defined layer with numeric coordinates, inside the paper (an
+      ARC by the points of its sweep); every TEXT is ASCII (beyond it AutoCAD's
       \U+XXXX, decoded for the checks below); the frame (20 mm from the left edge, 5 mm
       from the others) is drawn on FRAME.
       With RUN.csv and K (the mechanism at step K): the comment "kinetostat group mechanism
@@ -36,7 +37,7 @@ def pairs(path):
 
 ISO_SIZES = {(210, 297), (297, 420), (420, 594), (594, 841)}
 LAYERS = ("LINKS", "JOINTS", "GUIDES", "FORCES", "TEXT", "VPLAN", "APLAN", "POLYGONS", "LEVER", "SCALES", "FRAME",
-          "CHARTS")
+          "CHARTS", "PROFILE")
 
 
 def decoded(text):
@@ -108,13 +109,20 @@ def main():
                 if e["type"] == "LINE":
                     lines.append((e[8], float(e[10]), float(e[20]), float(e[11]), float(e[21])))
                 points = [(float(e[10 + k]), float(e[20 + k])) for k in ((0, 1) if e["type"] == "LINE" else (0, 1, 2, 3))]
-            elif e["type"] in ("CIRCLE", "ARC"):
-                if e["type"] == "CIRCLE":
-                    circles.append((e[8], float(e[10]), float(e[20]), float(e[40])))
-                else:
-                    float(e[50]), float(e[51])
+            elif e["type"] == "CIRCLE":
+                circles.append((e[8], float(e[10]), float(e[20]), float(e[40])))
                 points = [(float(e[10]) + dx * float(e[40]), float(e[20]) + dy * float(e[40]))
                           for dx, dy in ((-1, -1), (1, 1))]
+            elif e["type"] == "ARC":
+                start, end = float(e[50]), float(e[51])
+                sweep = (end - start) % 360 or 360
+                points = [(float(e[10]) + float(e[40]) * math.cos(math.radians(start + sweep * k / 72)),
+                           float(e[20]) + float(e[40]) * math.sin(math.radians(start + sweep * k / 72)))
+                          for k in range(73)]
+            elif e["type"] in ("POLYLINE", "SEQEND"):
+                points = [(float(e.get(10, 0)), float(e.get(20, 0)))]
+            elif e["type"] == "VERTEX":
+                points = [(float(e[10]), float(e[20]))]
             elif e["type"] == "TEXT":
                 if not all(32 <= ord(ch) < 127 for ch in e[1]):
                     bad.append(f"TEXT {e[1]!r} is not ASCII")

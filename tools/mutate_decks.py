@@ -25,6 +25,26 @@ byte 0xFF, Latin-1) in and before the group, and 0xFF inside a text; a --set val
 newline or an unclosed '('; and endless input (/dev/zero, `yes | kinetostat -`), which must
 stop with exit 2 within the timeout.
 
+The classes of strings (docs/cli.md, "Strings in outputs", "Capacities of a deck"), with the
+checks valid-output and expected-error:
+
+  user_strings   (the first deck of each group; every deck with --scale 2 or more) the
+                 deck under a file name with quotes, <b>, &, ]]>, a comma, newlines with
+                 lines that look like DXF group codes ("  0", "EOF") and one starting INJECTED,
+                 control bytes and 0xFF; its title (where it has one) and --student, --group,
+                 --variant likewise: every output (table, CSV, JSON, SVG, summary, and for a
+                 linkage the --at sheet, the plans, their JSON and the DXF) must pass
+                 tools/output_check.py (valid-output: XML, JSON without an added key, CSV fields
+                 per line, DXF group-code pairs in ASCII, no added table line, no raw 0xFF)
+  set_strings    the same through --set title='...' 
+  fraction       a value written "v/4": exit 2 "a fraction? write ..." (expected-error)
+  after_group    an assignment after the group's closing '/': exit 2 naming it
+  cp1251         the deck with a Cyrillic title and comment saved in CP1251: read (decoded),
+                 never refused for its encoding; with a degree sign 0xB0 added: exit 2 naming
+                 the byte
+  capacity       one row of docs/cli.md's table of capacities for the deck's group, its
+                 "one too many" before the '/': exit 2 "at most N ..."
+
 --seed N changes the random choices (tools/test runs the fixed set, then a second run with
 a seed from the date, printed, so that a failure can be reproduced); --scale K draws K times
 as many mutations per deck (--scale 14: about 12 000 decks); --budget S stops starting new
@@ -48,6 +68,9 @@ import sys
 import tempfile
 import time
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import output_check  # noqa: E402  (tools/output_check.py: is an output well formed)
+
 SEED = 20261121
 #: Seconds per run of the binary (a healthy run takes milliseconds).
 TIMEOUT = 10
@@ -58,7 +81,8 @@ TIMEOUT = 10
 LONG_TIMEOUT = 60
 #: Every how-many-th deck also gets the -o FILE run (all of them: 1).
 OUTFILE_EVERY = 1
-CHECKS = ["exit-code", "non-finite", "error-shape", "no-leftover", "warning-shape", "runtime-text"]
+CHECKS = ["exit-code", "non-finite", "error-shape", "no-leftover", "warning-shape", "runtime-text", "valid-output",
+          "expected-error"]
 RUNTIME_TEXT = ["Fortran runtime error", "Error termination", "Backtrace", "Program received signal"]
 NONFINITE_RE = re.compile(r"(?<![A-Za-z])(nan|inf|infinity)(?![A-Za-z])", re.IGNORECASE)
 UNIT_STAR_RE = re.compile(r"(?<=[A-Za-z0-9)])\*(?=[A-Za-z(])")
@@ -257,13 +281,106 @@ SPECIAL_RUNS = [
 ]
 #: --set values that must be one-line exit 2 errors (never a crash, never two lines).
 BAD_SETS = [b"title=dyad(", b"l_ab=dyad(", b"x=1\n2", b"name\nwith=1", b"dyad(1)%l2=(1", b"force(1)%value=f(",
-            b"l=\xff", b"title='\xff'"]
+            b"l=\xff", b"title='\xff'", b"title='a\nb'"]
+
+
+#: Hostile user strings (see the docstring, user_strings).
+HOSTILE_TITLE = 'x","injected":true,"y":"<b>&amp;]]>,q\x01\t%%d ^J 0 EOF \u0428\u0430\u0440\u043d\u0438\u0440 a/b ! c & d'
+HOSTILE_FILE = b'x","injected":true,"<b>&]]>,\n  0\nEOF\nINJECTED\x01\xff%%d ^J.nml'
+HOSTILE_FIELDS = ["--student", b'\xd0\x98\xd0\xb2"<b>&]]>,\n  0\nEOF\nINJECTED\x01\xff', "--group", b"7,\n0\nEOF",
+                  "--variant", b"3\xd0"]
+HOSTILE_SET = ["--set", "title='a,\"b\" <&>]]> 0 EOF \x01\t'"]
+#: Outputs checked for a deck with hostile strings: (label, options, output_check format).
+STRING_FORMATS = [("table", [], "table"), ("csv", ["--format", "csv"], "csv"), ("json", ["--format", "json"], "json"),
+                  ("svg", ["--format", "svg"], "xml"), ("summary", ["--format", "summary"], "csv")]
+AT_FORMATS = [("svg-at", ["--format", "svg", "--at", "1"], "xml"), ("plans", ["--format", "plans", "--at", "1"], "xml"),
+              ("plans-json", ["--format", "json", "--at", "1", "--plans"], "json"),
+              ("dxf", ["--format", "dxf", "--at", "1"], "dxf")]
+LINKAGE_GROUPS = {"pr3207", "pr3050", "sixbar", "assur", "linkage"}
+#: The design kinds: no sheet of forces (--format svg is a usage error).
+DESIGN_GROUPS = {"gear_geometry", "planetary_synthesis", "cam_profile"}
+CYRILLIC_TITLE = "\u0428\u0430\u0440\u043d\u0438\u0440\u043d\u044b\u0439 \u043c\u0435\u0445\u0430\u043d\u0438\u0437\u043c \u0401\u0451"
+CYRILLIC_COMMENT = "! \u0418\u0441\u0445\u043e\u0434\u043d\u044b\u0435 \u0434\u0430\u043d\u043d\u044b\u0435, \u0432\u0430\u0440\u0438\u0430\u043d\u0442 7"
+#: A row of the table of capacities in docs/cli.md: group, array, limit, what, one too many.
+CAPACITY_RE = re.compile(r"^\| `&(\w+)` \| `([^`]+)`.*? \| (\d+) ([^|]+?) \| `([^`]+)` \|$")
+#: Per deck name: what else its run must show (see check_deck).
+SPECS = {}
+
+
+def capacities(docs):
+    """{group: [(limit, what, assignment)]} from the table of capacities in docs/cli.md."""
+    rows = {}
+    with open(docs, encoding="utf-8") as f:
+        for line in f:
+            m = CAPACITY_RE.match(line.strip())
+            if m:
+                rows.setdefault(m.group(1), []).append((m.group(3), m.group(4), m.group(5)))
+    if not rows:
+        raise SystemExit("mutation: no table of capacities in %s" % docs)
+    return rows
+
+
+def with_title(text, title):
+    """The deck with its title replaced (None when it has none)."""
+    m = re.search(r"title\s*=\s*'[^'\n]*'", text)
+    return None if m is None else text[:m.start()] + "title = '" + title + "'" + text[m.end():]
+
+
+def string_mutations(text, raw, rng, limits, every_output):
+    """[(kind, description, bytes, extra arguments, spec)] of the classes of strings; the
+    outputs with hostile strings (user_strings, set_strings) when `every_output`."""
+    made = []
+    m = masked(text)
+    group = re.search(r"^\s*&(\w+)", m, re.M)
+    if group is None:
+        return made
+    name = group.group(1).lower()
+    slash = m.find("/", group.end())
+    formats = [f for f in STRING_FORMATS if not (name in DESIGN_GROUPS and f[0] == "svg")]
+    formats += AT_FORMATS if name in LINKAGE_GROUPS else []
+    titled = with_title(text, HOSTILE_TITLE)
+    data = titled.encode("utf-8") if titled else raw
+    if every_output:
+        made.append(("user_strings", "hostile file name, title and student fields", data, HOSTILE_FIELDS,
+                     {"file": HOSTILE_FILE, "formats": formats}))
+    if titled and every_output:
+        made.append(("set_strings", "--set title with quotes, markup and control characters", raw, HOSTILE_SET,
+                     {"formats": STRING_FORMATS}))
+    targets = [(s, e) for _, _, _, els in assignments(text) for s, e in els if numeric(text[s:e])]
+    if targets:
+        s, e = rng.choice(targets)
+        made.append(("fraction", "%s written %s/4" % (text[s:e], text[s:e]), (text[:e] + "/4" + text[e:]).encode("utf-8"),
+                     [], {"expect": {"rc": 2, "stderr": r": a fraction\? "}}))
+    first = assignments(text)
+    if first and slash >= 0:
+        n, start, end, _ = first[0]
+        line = text[start:end].split("\n")[0].strip().rstrip(",")
+        made.append(("after_group", "'%s' after the closing '/'" % line, (text.rstrip("\n") + "\n  " + line + "\n").encode("utf-8"),
+                     [], {"expect": {"rc": 2, "stderr": r"text after the group's closing '/'"}}))
+    lines = text.split("\n")
+    at = next(i for i, l in enumerate(lines) if l.lstrip().startswith("&")) + 1
+    ru = "\n".join(lines[:at] + ["  " + CYRILLIC_COMMENT] + lines[at:])
+    ru = with_title(ru, CYRILLIC_TITLE) or ru
+    try:
+        made.append(("cp1251", "a Cyrillic title and comment, saved in CP1251", ru.encode("cp1251"), [],
+                     {"expect": {"not_stderr": "UTF-8|CP1251"}}))
+        made.append(("cp1251", "CP1251 with a degree sign (0xB0) in a comment", (ru + "\n! 30\u00b0\n").encode("cp1251"),
+                     [], {"expect": {"rc": 2, "stderr": r"byte \\xB0 is neither UTF-8 nor a Cyrillic letter of CP1251"}}))
+    except UnicodeEncodeError:
+        pass  # a deck with a character CP1251 does not have
+    if name in limits and slash >= 0:
+        limit, what, assignment = rng.choice(limits[name])
+        made.append(("capacity", assignment, (text[:slash] + "  " + assignment + "\n" + text[slash:]).encode("utf-8"), [],
+                     {"expect": {"rc": 2, "stderr": ": at most %s %s$" % (limit, re.escape(what))}}))
+    return made
 
 
 def derive_decks(data_dir, seed=None, scale=1):
     """The list of (name, description, deck bytes, extra arguments): fixed for a seed."""
     decks = []
     seed = SEED if seed is None else seed
+    limits = capacities(os.path.join(os.path.dirname(os.path.abspath(data_dir)), "docs", "cli.md"))
+    groups_seen = set()
     for path in sorted(glob.glob(os.path.join(data_dir, "*.nml"))):
         base = os.path.splitext(os.path.basename(path))[0]
         with open(path, encoding="utf-8") as f:
@@ -292,12 +409,21 @@ def derive_decks(data_dir, seed=None, scale=1):
         for j, value in enumerate(BAD_SETS):
             decks.append(("%s_set%02d_bad_set" % (base, j + 1), "%s: --set %r" % (base, value), raw,
                           ["--set", value]))
+        # the outputs with hostile strings: the first deck of each group (every deck with --scale)
+        group = re.search(r"^\s*&(\w+)", masked(text), re.M)
+        group = group.group(1).lower() if group else ""
+        every_output = scale > 1 or group not in groups_seen
+        groups_seen.add(group)
+        for j, (kind, desc, data, extra, spec) in enumerate(string_mutations(text, raw, rng, limits, every_output)):
+            name = "%s_s%02d_%s" % (base, j + 1, kind)
+            decks.append((name, "%s: %s" % (base, desc), data, extra))
+            SPECS[name] = spec
     for name, desc, how in SPECIAL_RUNS:
         decks.append((name, desc, how, None))
     return decks
 
 
-def run(binary, args, cwd, endless_stdin=False, timeout=TIMEOUT):
+def run(binary, args, cwd, endless_stdin=False, timeout=TIMEOUT, raw=False):
     try:
         if endless_stdin:
             # `yes | kinetostat -`: an endless pipe, closed when the program exits
@@ -311,7 +437,7 @@ def run(binary, args, cwd, endless_stdin=False, timeout=TIMEOUT):
         else:
             p = subprocess.run([binary] + args, cwd=cwd, capture_output=True, timeout=timeout,
                                stdin=subprocess.DEVNULL)
-        return p.returncode, p.stdout.decode("utf-8", "replace"), p.stderr.decode("utf-8", "replace")
+        return p.returncode, p.stdout if raw else p.stdout.decode("utf-8", "replace"), p.stderr.decode("utf-8", "replace")
     except subprocess.TimeoutExpired as exc:
         return "timeout", (exc.stdout or b"").decode("utf-8", "replace"), (exc.stderr or b"").decode("utf-8", "replace")
 
@@ -332,7 +458,7 @@ def bad_text(text):
 
 def check_deck(job):
     """Runs one deck; returns (name, description, [(check, mode, detail)], selfcheck_warning)."""
-    binary, name, desc, data, extra, with_file, deadline = job
+    binary, name, desc, data, extra, with_file, deadline, spec = job
     failures = []
     selfcheck = False
     table_run = None
@@ -350,12 +476,12 @@ def check_deck(job):
             if with_file:
                 modes.append(("-o", [source, "--format", "csv", "-o", "out.csv"] + limit))
         else:
-            deck = os.path.join(work, "deck.nml")
-            with open(deck, "wb") as f:
+            file_name = (spec or {}).get("file", b"deck.nml")
+            with open(os.path.join(os.fsencode(work), file_name), "wb") as f:
                 f.write(data)
-            modes = [("table", ["deck.nml"] + extra), ("csv", ["deck.nml", "--format", "csv"] + extra)]
+            modes = [("table", [file_name] + extra), ("csv", [file_name, "--format", "csv"] + extra)]
             if with_file:
-                modes.append(("-o", ["deck.nml", "--format", "csv", "-o", "out.csv"] + extra))
+                modes.append(("-o", [file_name, "--format", "csv", "-o", "out.csv"] + extra))
         for mode, args in modes:
             rc, out, err = run(binary, args, work, stdin_endless, LONG_TIMEOUT if "_long_" in name else TIMEOUT)
             if extra is None and rc != 2:
@@ -400,9 +526,41 @@ def check_deck(job):
                 hit = [t for t in RUNTIME_TEXT if t in text]
                 if hit:
                     failures.append(("runtime-text", mode, "%s contains %r" % (label, hit[0])))
+        if spec:
+            failures += string_checks(binary, spec, file_name, extra, work, table_run)
     finally:
         shutil.rmtree(work, ignore_errors=True)
     return name, desc, failures, selfcheck, table_run
+
+
+def string_checks(binary, spec, file_name, extra, work, table_run):
+    """The failures of valid-output (every format of spec["formats"] well formed, no raw 0xFF,
+    no raw <b> in XML) and expected-error (the table run's exit code and message)."""
+    failures = []
+    for _, options, form in spec.get("formats", []):
+        label = " ".join(options) or "table"
+        rc, out, err = run(binary, [file_name] + options + extra, work, raw=True)
+        if rc == "timeout" or rc not in (0, 2, 3):
+            failures.append(("exit-code", label, "exit %s; stderr: %s" % (rc, err.strip()[:200])))
+        if rc != 0:
+            continue
+        bad = []
+        output_check.CHECKS[form](out, bad)
+        for raw_text in [b"\xff"] + ([b"<b>"] if form == "xml" else []):
+            if raw_text in out:
+                bad.append("the raw bytes %r" % raw_text)
+        if bad:
+            failures.append(("valid-output", label, "; ".join(bad[:3])))
+    expect = spec.get("expect")
+    if expect and table_run:
+        rc, err = table_run
+        if "rc" in expect and rc != expect["rc"]:
+            failures.append(("expected-error", "table", "exit %s, expected %s: %s" % (rc, expect["rc"], err.strip()[:200])))
+        elif "stderr" in expect and not re.search(expect["stderr"], err):
+            failures.append(("expected-error", "table", "stderr does not match /%s/: %s" % (expect["stderr"], err.strip()[:200])))
+        elif "not_stderr" in expect and re.search(expect["not_stderr"], err):
+            failures.append(("expected-error", "table", "stderr matches /%s/: %s" % (expect["not_stderr"], err.strip()[:200])))
+    return failures
 
 
 #: Mutations of one variable's value (the variable is the first word of the description).
@@ -456,7 +614,7 @@ def main():
         return 1
     binary = os.path.abspath(args.bin)
     deadline = time.time() + args.budget if args.budget > 0 else None
-    jobs = [(binary, name, desc, data, extra, i % OUTFILE_EVERY == 0, deadline)
+    jobs = [(binary, name, desc, data, extra, i % OUTFILE_EVERY == 0, deadline, SPECS.get(name))
             for i, (name, desc, data, extra) in enumerate(decks) if args.only in name]
     if args.seed is not None:
         # a randomized run under a time budget runs the decks in a random order, so that
@@ -502,7 +660,7 @@ def main():
             if check not in seen:
                 failed_by_check[check] += 1
                 seen.add(check)
-            opts = {"table": "", "csv": " --format csv", "-o": " --format csv -o /tmp/ks_mut.csv"}[mode]
+            opts = {"table": "", "csv": " --format csv", "-o": " --format csv -o /tmp/ks_mut.csv"}.get(mode, " " + mode)
             if extra_of[name]:
                 opts += " " + " ".join(repr(a) for a in extra_of[name])
             if extra_of[name] is None:

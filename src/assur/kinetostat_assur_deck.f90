@@ -10,12 +10,12 @@ module kinetostat_assur_deck
   use, intrinsic :: iso_fortran_env, only: int64
   use kinetostat_kinds, only: wp, g_default, deg_to_rad, rad_to_deg
   use kinetostat_error, only: error_t, out_of_memory
-  use kinetostat_text, only: real_str, int_str, number_str, lower, upper
+  use kinetostat_text, only: real_str, int_str, number_str, lower, upper, is_name
   use kinetostat_deck, only: values_out_of_memory, longest_quoted, deck_line_count, deck_line, &
     begin_group, deck_context_t, unset_real, unset_bits, max_deck_array, &
     deck_array_capacities, deck_source_t, namelist_probe_t, deck_error, require_all_set, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, require_per_step, optional_default, count_values, steps_over_turn, &
-    is_whole_in, require_whole
+    is_whole_in, require_whole, require_chars, title_chars, text_bytes, text_chars
   use kinetostat_vec2, only: unit_at, rotate, magnitude, cross
   use kinetostat_assur_kinematics, only: link_state_t, point_state_t, point_on, dyad_pose_t, kind_names, &
     kind_has_mode, frame_state, crank_state, set_dyad_pose, pose_ok, kind_rrr, kind_rrp, kind_rpr, &
@@ -47,8 +47,10 @@ module kinetostat_assur_deck
   integer, parameter :: max_table_points = 64
   !> Unset logical marker is not available in namelists: logicals have plain defaults.
   character(*), parameter :: group_name = "assur"
-  !> Longest joint name (characters) and the length read (longer names are an error).
-  integer, parameter :: joint_name_length = 8, joint_text_length = 32
+  !> Longest joint name, characters; its storage and the length read, bytes (longer names
+  !> are an error).
+  integer, parameter :: joint_name_chars = 8, joint_name_length = text_bytes * joint_name_chars, &
+    joint_text_length = text_bytes * text_chars
 
   !> `unset_real` for the default initialisation of the deck types below. Their variables
   !> must be declared in this module only: a NaN constant loses its payload in .mod files.
@@ -212,8 +214,8 @@ module kinetostat_assur_deck
   type :: assur_deck_t
     !> Mechanism.
     type(assur_mech_t) :: mech
-    !> Title (free text).
-    character(len=80) :: title = ""
+    !> Title (free text, at most title_chars characters).
+    character(len=text_bytes * title_chars) :: title = ""
     !> First crank angle, deg.
     real(wp) :: phi_start = 0.0_wp
     !> Crank step, deg.
@@ -308,9 +310,9 @@ module kinetostat_assur_deck
 contains
 
   !> The joints' names (`dyad(i)%joints`, `crank_joint`) into deck%joint_name, J<pair> where
-  !> blank: each at most joint_name_length characters, a letter then letters, digits or _,
-  !> not S<n> (a centre of mass), and no two alike (in any case: the plans write them in
-  !> lower case).
+  !> blank: each at most joint_name_chars characters, a letter then letters (Latin or
+  !> Cyrillic), digits or _, not S<n> (a centre of mass), and no two alike (in any case:
+  !> the plans write them in lower case).
   pure subroutine read_joint_names(ctx, source, dyads, crank_joint, deck, error)
     type(deck_context_t), intent(in) :: ctx
     !> The deck's lines (the message names the line of the variable).
@@ -322,7 +324,6 @@ contains
     character(len=joint_text_length) :: given(3 * size(dyads) + 1)
     character(len=24) :: variable(3 * size(dyads) + 1)
     character(len=:), allocatable :: text
-    character(*), parameter :: letters = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
     type(deck_context_t) :: at_line
     integer :: d, ip, other
     do d = 1, size(dyads)
@@ -339,12 +340,10 @@ contains
         deck%joint_name(ip) = "J"//trim(deck%pair_name(ip)(2:))
         cycle
       end if
-      call require_rule(at_line, trim(variable(ip)), len(text) <= joint_name_length, "longer than "// &
-        int_str(joint_name_length)//" characters", error)
+      call require_chars(at_line, trim(variable(ip)), text, joint_name_chars, error)
       if (allocated(error)) return
-      call require_rule(at_line, trim(variable(ip)), index(letters, text(1:1)) > 0 .and. &
-        verify(text, letters//"0123456789_") == 0, "a joint's name is a letter followed by letters, digits or _", &
-        error)
+      call require_rule(at_line, trim(variable(ip)), is_name(text), "a joint's name is a letter followed by "// &
+        "letters (Latin or Cyrillic), digits or _", error)
       if (allocated(error)) return
       call require_rule(at_line, trim(variable(ip)), .not. ((text(1:1) == "S" .or. text(1:1) == "s") .and. &
         len(text) > 1 .and. verify(text(2:), "0123456789") == 0), "'"//text//"' is the name of a centre "// &
@@ -565,9 +564,9 @@ contains
     real(wp) :: output_link
     real(wp), allocatable :: phi1(:)
     !> Where the steps start: '' (phi_start) or 'extreme' (of the output link).
-    character(len=16) :: start_at
+    character(len=text_bytes * text_chars) :: start_at
     !> 'local' (link coordinates) or 'global' (points at the reference position phi_ref, deg).
-    character(len=16) :: coordinates
+    character(len=text_bytes * text_chars) :: coordinates
     real(wp) :: phi_ref
     !> Global form: frames of the links at the reference position; given global points of
     !> each dyad (A, B, C) and whether its centres of mass were given.
@@ -581,7 +580,7 @@ contains
     real(wp) :: delta, j_rotor, j_flywheel
     !> The driving-moment table (pairs phi deg, M_d; see kinetostat_dynamics_deck).
     real(wp) :: md_table(md_table_capacity)
-    character(len=32) :: dynamics
+    character(len=text_bytes * text_chars) :: dynamics
     !> Name of the crank's pivot on the sheets (blank: J<pair>).
     character(len=joint_text_length) :: crank_joint
     !> Friction coefficient and journal radius (m) of the crank's pivot A.
@@ -642,6 +641,16 @@ contains
     if (allocated(source%record_length)) coded%record_length = source%record_length
     coded%cut_width = source%cut_width
     call kind_names_as_codes(coded)
+    call probe%limit("dyad", max_dyads, "dyads")
+    call probe%limit("force", max_forces, "forces")
+    call probe%limit("moment", max_moments, "moments")
+    call probe%limit("force%table", 2 * max_table_points, "values ("//int_str(max_table_points)//" points)")
+    call probe%limit("moment%table", 2 * max_table_points, "values ("//int_str(max_table_points)//" points)")
+    call probe%limit("md_table", md_table_capacity, "values ("//int_str(md_table_capacity / 2)//" points)")
+    call probe%limit("omega1_step", max_deck_array, "values (one per step)")
+    call probe%limit("eps1_step", max_deck_array, "values (one per step)")
+    call probe%limit("step_values", max_deck_array, "values")
+    call probe%limit("phi1", max_deck_array, "values (one per step)")
     read (coded%records, nml=assur, iostat=probe%ios, iomsg=probe%msg)
     do while (probe%retry(coded)) ! on failure: find the line and the assignment
       read (probe%records, nml=assur, iostat=probe%ios, iomsg=probe%msg)
@@ -651,8 +660,7 @@ contains
       return
     end if
 
-    call require_rule(ctx, "title", len_trim(title) <= len(deck%title), "longer than "// &
-      int_str(len(deck%title))//" characters", error)
+    call require_chars(ctx, "title", title, title_chars, error)
     if (allocated(error)) return
 
     ! ---- two or more required variables missing: one message naming them all (a single

@@ -1453,12 +1453,15 @@ contains
     type(text_buffer_t), intent(inout) :: out
     type(text_buffer_t), intent(inout) :: later
     character(len=:), allocatable :: line1, line2, line3, line4
+    !> The lines of one step.
+    character(len=:), allocatable :: row1, row2, row3, row4
     character(len=field_width) :: name
     character(len=len(self%deck%pair_name)) :: full_name
     character(len=:), allocatable :: deg, newton, newton_m, metre
     real(wp) :: mag, ang, nn, mm
-    integer :: k, ip, np, pos
+    integer :: k, ip, np, pos, at, width
     integer, allocatable :: along(:)
+    logical, allocatable :: prismatic_pair(:)
     logical :: any_p, prismatic, drive, link_axes
 
     drive = self%deck%mech%drive_dyad > 0
@@ -1541,13 +1544,22 @@ contains
         call out%put(trim(line2))
       end if
     end if
+    ! the four lines of a step, field by field into lines of their full width (no text
+    ! grows per field)
+    width = phi_width + (np + 1) * field_width
+    allocate (character(len=width) :: row1, row2, row3, row4)
+    allocate (prismatic_pair(np))
+    do ip = 1, np
+      prismatic_pair(ip) = assur_pair_prismatic(self%deck, ip)
+    end do
     do k = first, last
       associate (v => table%rows(:, k))
-        line1 = fixed_field(v(1), phi_width, 2)
-        line2 = repeat(" ", phi_width)
-        line3 = repeat(" ", phi_width)
-        line4 = repeat(" ", phi_width)
+        row1(1:phi_width) = fixed_field(v(1), phi_width, 2)
+        row2(:) = ""
+        row3(:) = ""
+        row4(:) = ""
         pos = 1
+        at = phi_width
         do ip = 1, np
           mag = v(pos + 1)
           ang = v(pos + 2)
@@ -1557,30 +1569,33 @@ contains
           end if
           pos = pos + 2
           if (self%deck%components) pos = pos + 2
-          line1 = line1//fixed_field(mag, field_width, 2)
-          line2 = line2//fixed_field(ang, field_width, 2)
-          if (assur_pair_prismatic(self%deck, ip)) then
+          row1(at + 1:at + field_width) = fixed_field(mag, field_width, 2)
+          row2(at + 1:at + field_width) = fixed_field(ang, field_width, 2)
+          if (prismatic_pair(ip)) then
             nn = v(pos + 1)
             mm = v(pos + 2)
             pos = pos + 2
-            line3 = line3//fixed_field(nn, field_width, 2)
-            line4 = line4//fixed_field(mm, field_width, 2)
-          else
-            line3 = line3//repeat(" ", field_width)
-            line4 = line4//repeat(" ", field_width)
+            row3(at + 1:at + field_width) = fixed_field(nn, field_width, 2)
+            row4(at + 1:at + field_width) = fixed_field(mm, field_width, 2)
           end if
+          at = at + field_width
         end do
         if (drive) then
-          call out%put(line1//fixed_field(v(pos + 1), field_width, 2))
-          call out%put(line2//fixed_field(v(pos + 2), field_width, stroke_decimals))
-          call out%put(line3//fixed_field(v(pos + 3), field_width, stroke_decimals))
-          call out%put(line4//fixed_field(v(pos + 4), field_width, stroke_decimals))
+          row1(at + 1:width) = fixed_field(v(pos + 1), field_width, 2)
+          row2(at + 1:width) = fixed_field(v(pos + 2), field_width, stroke_decimals)
+          row3(at + 1:width) = fixed_field(v(pos + 3), field_width, stroke_decimals)
+          row4(at + 1:width) = fixed_field(v(pos + 4), field_width, stroke_decimals)
+          call out%put(row1)
+          call out%put(row2)
+          call out%put(row3)
+          call out%put(row4)
         else
-          call out%put(line1//fixed_field(v(pos + 1), field_width, 2))
-          call out%put(line2)
+          row1(at + 1:width) = fixed_field(v(pos + 1), field_width, 2)
+          call out%put(row1)
+          call out%put(row2(1:at))
           if (any_p) then
-            call out%put(trim(line3))
-            call out%put(trim(line4))
+            call out%put(trim(row3(1:at)))
+            call out%put(trim(row4(1:at)))
           end if
         end if
       end associate

@@ -5,7 +5,7 @@ module kinetostat_cam_deck
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str, lower
   use kinetostat_deck, only: values_out_of_memory, &
-    begin_group, deck_context_t, unset_real, deck_array_capacities, &
+    begin_group, text_bytes, text_chars, max_deck_array, deck_context_t, unset_real, deck_array_capacities, &
     deck_source_t, namelist_probe_t, require_all_set, deck_error, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, optional_default, count_values, steps_over_turn
   use kinetostat_cam, only: cam_params_t
@@ -84,7 +84,7 @@ contains
     type(cam_deck_t), intent(out) :: deck
     !> Input error naming file, group, variable and reason.
     type(error_t), allocatable, intent(out) :: error
-    character(len=16) :: follower
+    character(len=text_bytes * text_chars) :: follower
     real(wp) :: l, l_over, f, f_cam, omega_dir, phi_start, dphi
     real(wp), allocatable :: theta(:), f2(:), vdir(:), ds_dphi(:)
     !> Number of steps as given (an integer deck variable, read as a real: see require_whole).
@@ -113,6 +113,10 @@ contains
       return
     end if
 
+    call probe%limit("theta", max_deck_array, "values (one per step)")
+    call probe%limit("f2", max_deck_array, "values (one per step)")
+    call probe%limit("vdir", max_deck_array, "values (one per step)")
+    call probe%limit("ds_dphi", max_deck_array, "values (one per step)")
     read (source%records, nml=cam, iostat=probe%ios, iomsg=probe%msg)
     do while (probe%retry(source)) ! on failure: find the line and the assignment
       read (probe%records, nml=cam, iostat=probe%ios, iomsg=probe%msg)

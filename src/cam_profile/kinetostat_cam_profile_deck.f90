@@ -6,7 +6,7 @@ module kinetostat_cam_profile_deck
   use kinetostat_kinds, only: wp, deg_to_rad
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str, lower
-  use kinetostat_deck, only: begin_group, deck_context_t, unset_real, deck_source_t, namelist_probe_t, &
+  use kinetostat_deck, only: begin_group, text_bytes, text_chars, deck_context_t, unset_real, deck_source_t, namelist_probe_t, &
     deck_error, is_set, require_set, require_positive, require_nonnegative, require_rule, optional_default, &
     count_values, max_steps
   use kinetostat_cam_profile, only: cam_design_t, cam_segment_t, law_names, law_dwell, follower_names, &
@@ -68,7 +68,7 @@ contains
     type(cam_profile_deck_t), intent(out) :: deck
     !> Input error naming deck, group, variable and reason.
     type(error_t), allocatable, intent(out) :: error
-    character(len=24) :: law(max_segments), follower
+    character(len=text_bytes * text_chars) :: law(max_segments), follower
     real(wp) :: beta(max_segments), lift(max_segments), pivot(2)
     real(wp) :: offset, arm, roller_radius, pressure_angle_max, pressure_angle_max_return, rho_min, omega, step
     real(wp) :: l, l_over, f, f2, f_cam, n_real, s, s_lowest, scale
@@ -87,6 +87,9 @@ contains
     offset = unset_real; arm = unset_real; roller_radius = unset_real; pressure_angle_max = unset_real
     pressure_angle_max_return = unset_real; rho_min = unset_real; omega = unset_real; step = unset_real
     l = unset_real; l_over = unset_real; f = unset_real; f2 = unset_real; f_cam = unset_real
+    call probe%limit("law", max_segments, "segments")
+    call probe%limit("beta", max_segments, "segments")
+    call probe%limit("lift", max_segments, "segments")
     read (source%records, nml=cam_profile, iostat=probe%ios, iomsg=probe%msg)
     do while (probe%retry(source))
       read (probe%records, nml=cam_profile, iostat=probe%ios, iomsg=probe%msg)

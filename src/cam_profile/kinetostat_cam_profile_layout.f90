@@ -12,6 +12,8 @@ module kinetostat_cam_profile_layout
   use kinetostat_format, only: fixed_field, full_number, short_number, exp_field
   use kinetostat_labels, only: label
   use kinetostat_mechanism, only: mechanism_t
+  use kinetostat_sheet, only: sheet_t
+  use kinetostat_cam_sheet, only: draw_cam_sheet, cam_sheet_step
   use kinetostat_cam_profile, only: cam_design_t, cam_point_t, cam_sizes_t, cam_point, motion_at, size_cam, &
     cam_extremes, segment_at, segment_limit, follower_flat, follower_roller, follower_oscillating, &
     follower_names, law_names, law_constant_velocity
@@ -29,7 +31,7 @@ module kinetostat_cam_profile_layout
     !> The validated deck.
     type(cam_profile_deck_t) :: deck
   contains
-    procedure :: read_deck, solve, write_results, analysis_deck
+    procedure :: read_deck, solve, write_results, analysis_deck, design_sheet
   end type cam_profile_mechanism_t
 
 contains
@@ -40,6 +42,7 @@ contains
     class(mechanism_t), allocatable, intent(out) :: mech
     allocate (cam_profile_mechanism_t :: mech)
     mech%force_sheet = .false.
+    mech%sheet_name = "cam"
     mech%template = cam_profile_template
     mech%title_en = "KINETOSTAT  CAM_PROFILE  DISC CAM FOR A FOLLOWER'S LAW OF MOTION"
     mech%title_ru = "KINETOSTAT  CAM_PROFILE  ПРОФИЛИРОВАНИЕ ДИСКОВОГО КУЛАЧКА ПО ЗАКОНУ"// &
@@ -383,5 +386,26 @@ contains
       end do
     end subroutine put_list
   end subroutine analysis_deck
+
+  !> The sheet of the cam (--format svg, dxf): the motion diagrams, the pressure angle, the
+  !> profile with the follower at row --at K (else where the pressure angle is largest), the
+  !> sizes (kinetostat_cam_sheet).
+  subroutine design_sheet(self, table, lang, at_step, sheet, error)
+    class(cam_profile_mechanism_t), intent(in) :: self
+    type(step_table_t), intent(in) :: table
+    integer, intent(in) :: lang
+    integer, intent(in) :: at_step
+    type(sheet_t), intent(out) :: sheet
+    type(error_t), allocatable, intent(out) :: error
+    type(cam_design_t) :: design
+    if (at_step > table%row_count()) then
+      call fatal_error(error, exit_usage, "--at "//int_str(at_step)//": "//table%deck//" has "// &
+        int_str(table%row_count())//" cam angles (1.."//int_str(table%row_count())//")")
+      return
+    end if
+    call cam_profile_size(self%deck, design, error)
+    if (allocated(error)) return
+    call draw_cam_sheet(design, self%deck%step, table, lang, cam_sheet_step(design, table, at_step), sheet)
+  end subroutine design_sheet
 
 end module kinetostat_cam_profile_layout

@@ -9,11 +9,12 @@ module kinetostat_cli
   use kinetostat_deck, only: deck_source_t, load_deck, read_group_name, set_max_deck_size
   use kinetostat_override, only: first_override_line, override_t, parse_override, apply_overrides
   use kinetostat_sweep, only: vary_t, parse_vary, run_sweep, variant_result_t, allow_selfcheck_failure_in_sweep, &
-    sweep_header
-  use kinetostat_summary, only: override_fields, csv_text
-  use kinetostat_posix, only: stderr_is_terminal, cpu_count, guard_signals
+    sweep_header, sweep_npy
+  use kinetostat_summary, only: override_fields
+  use kinetostat_escape, only: csv_field
+  use kinetostat_posix, only: stderr_is_terminal, cpu_count, guard_signals, output_is_terminal
   use kinetostat_text, only: int_str, printable
-  use kinetostat_run, only: format_summary
+  use kinetostat_run, only: format_summary, format_npy
   use kinetostat_step_table, only: step_table_t
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_output, only: write_output_file, write_output_stdout
@@ -41,11 +42,12 @@ module kinetostat_cli
 
   !> One-line usage, printed with usage errors.
   character(*), parameter :: usage_line = "usage: kinetostat DECK|- [--set NAME=VALUE]... [-o FILE] " // &
-    "[--format table|csv|json|svg|summary|plans|dxf|deck] [--pairs LIST] [--at K] [--plans] [--lang en|ru] " // &
+    "[--format table|csv|json|svg|summary|plans|dxf|deck|npy] [--pairs LIST] [--at K] [--plans] [--lang en|ru] " // &
     "[--kinematics] [--frame global|link] [--shaking] [--student NAME] [--group G] [--variant N] " // &
     "[--max-deck-size BYTES] [--allow-selfcheck-failure] [--quiet] " // &
     "[--strict] | " // &
-    "kinetostat sweep DECK --vary NAME=FROM:TO:COUNT... [--part K/N] [--jobs N] [--keep-going] | " // &
+    "kinetostat sweep DECK --vary NAME=FROM:TO:COUNT... [--part K/N] [--jobs N] [--keep-going] " // &
+    "[--format summary|npy] | " // &
     "kinetostat template KIND [-o FILE] | kinetostat diff A B [--rtol R] [--atol A] [--common] | " // &
     "kinetostat balance DECK [-o FILE] [--method full|crank|partial] [--fraction F] [--lang en|ru] | "// &
     "kinetostat structure DECK [--lang ru] | kinetostat contour DECK [--set NAME=VALUE]... [-o FILE] | " // &
@@ -56,12 +58,11 @@ module kinetostat_cli
     "kinetostat - kinetostatic force analysis of planar mechanisms", &
     "", &
     "  kinetostat DECK [--set NAME=VALUE]... [-o FILE]", &
-    "                  [--format table|csv|json|svg|summary|plans|dxf|deck] [--pairs LIST]", &
-    "                  [--at K]", &
-    "                  [--plans] [--lang en|ru] [--kinematics] [--shaking]", &
+    "                  [--format table|csv|json|svg|summary|plans|dxf|deck|npy] [--pairs LIST]", &
+    "                  [--at K] [--plans] [--lang en|ru] [--kinematics] [--shaking]", &
     "                  [--max-deck-size BYTES] [--allow-selfcheck-failure] [--quiet] [--strict]", &
     "  kinetostat sweep DECK --vary NAME=FROM:TO:COUNT... [--set NAME=VALUE]... [--part K/N]", &
-    "                  [--jobs N] [--keep-going]", &
+    "                  [--jobs N] [--keep-going] [--format summary|npy]", &
     "                  [-o FILE] [--quiet] [--strict]", &
     "  kinetostat template KIND [-o FILE]   a commented deck to start from (KIND: a mechanism,", &
     "                                       or a preset of the generic engine)", &
@@ -81,12 +82,15 @@ module kinetostat_cli
     "            (repeatable; l_ab=0.12, f5c(3)=0, 'dyad(2)%l2=0.45'); marked (--set)", &
     "-o FILE, --output FILE  write to FILE (atomically: nothing is left behind on error)", &
     "--format    table (default, the legacy printout), csv (full precision), json, svg", &
-    "            (a sheet of force hodographs and diagrams; see docs/pictures.md), dxf (the", &
+    "            (a sheet of force hodographs and diagrams; a design's own sheet: the gear", &
+    "            pair's meshing, the train's scheme, the cam; see docs/pictures.md), dxf (the", &
     "            same sheet for CAD programs), summary (a CSV header and one row: max, min,", &
-    "            where, mean per column, work; a design's values themselves), or deck (a", &
-    "            design's analysis deck: &gears, &cam)", &
+    "            where, mean per column, work; a design's values themselves), deck (a", &
+    "            design's analysis deck: &gears, &cam), or npy (the CSV's columns as a NumPy", &
+    "            .npy file: -o FILE, never to a terminal)", &
     "--pairs     with svg or dxf: only these pair forces, e.g. --pairs F16,F36", &
-    "--at K      with svg: the mechanism drawn at step K with every force of the step", &
+    "--at K      with svg: the mechanism drawn at step K with every force of the step (a", &
+    "            cam's sheet: its follower at row K)", &
     "--at K      with plans: the graphical method's sheet of step K (plans of velocities and", &
     "            accelerations, force polygons, Zhukovsky's lever)", &
     "--student NAME --group G --variant N   the header line of the 1991 programs (date, time,", &
@@ -572,7 +576,7 @@ contains
     type(error_t), allocatable, intent(out) :: error
     type(deck_source_t) :: source
     type(override_t), allocatable :: sets(:)
-    type(variant_result_t), allocatable :: results(:)
+    type(variant_result_t), allocatable :: results(:), ran(:)
     integer :: v, i, start, first, jobs, fields
     character(len=:), allocatable :: name, prefix, header, message
     warnings = 0
@@ -615,10 +619,16 @@ contains
       write (error_unit, '(a)') "kinetostat: error: "//printable(message)
       results(v)%row = override_fields(override_texts(results(v)), 2)
       results(v)%row = results(v)%row//repeat(",", max(0, fields - csv_field_count(results(v)%row) + 1))
-      results(v)%row = results(v)%row//csv_text(printable(results(v)%error%message))
+      results(v)%row = results(v)%row//csv_field(results(v)%error%message)
       results(v)%warning_count = 0
     end do
-    if (args%part == 1) then
+    if (args%options%format == format_npy) then
+      ! every part is an npy file of its own rows (numpy.concatenate joins them); with
+      ! --keep-going a failed variant is left out (named on stderr, exit 2)
+      ran = pack(results, [(.not. allocated(results(v)%error), v = 1, size(results))])
+      if (size(ran) > 0) call sweep_npy(ran, out, error)
+      if (allocated(error)) return
+    else if (args%part == 1) then
       if (args%keep_going) then
         call out%put(header//",error")
       else
@@ -626,7 +636,9 @@ contains
       end if
     end if
     do v = 1, size(results)
-      if (args%keep_going .and. .not. allocated(results(v)%error)) then
+      if (args%options%format == format_npy) then
+        continue
+      else if (args%keep_going .and. .not. allocated(results(v)%error)) then
         call out%put(results(v)%row//",")
       else
         call out%put(results(v)%row)
@@ -1063,8 +1075,8 @@ contains
         "kinetostat balance DECK ...")
     else if (args%balance .and. args%fraction_given .and. args%balance_method /= 3) then
       call fatal_error(error, exit_usage, "--fraction belongs to --method partial")
-    else if (args%sweep .and. args%format_given .and. args%options%format /= format_summary) then
-      call fatal_error(error, exit_usage, "sweep writes the summary format only (--format summary)")
+    else if (args%sweep .and. args%format_given .and. all(args%options%format /= [format_summary, format_npy])) then
+      call fatal_error(error, exit_usage, "sweep writes the summary format only (--format summary, or npy)")
     else if (allocated(args%options%pairs) .and. all(args%options%format /= [format_svg, format_dxf])) then
       call fatal_error(error, exit_usage, "--pairs needs --format svg or dxf")
     else if (args%options%plans .and. (all(args%options%format /= [format_json, format_dxf]) .or. &
@@ -1075,6 +1087,9 @@ contains
     else if (args%options%at_step > 0 .and. all(args%options%format /= [format_svg, format_plans, format_dxf]) &
       .and. .not. args%options%plans) then
       call fatal_error(error, exit_usage, "--at needs --format svg, plans or dxf (or --format json --plans)")
+    else if (args%options%format == format_npy) then
+      if (binary_to_terminal(args%out_file)) call fatal_error(error, exit_usage, "--format npy writes binary data, "// &
+        "not for a terminal: give -o FILE.npy or redirect standard output")
     end if
     if (allocated(error)) return
     if (allocated(args%options%student_name) .or. allocated(args%options%student_group) .or. &
@@ -1085,6 +1100,18 @@ contains
       args%options%student_stamp = run_stamp()
     end if
   end subroutine parse_args
+
+  !> Whether binary output would reach a terminal: the file of `-o` (a terminal device, or
+  !> /dev/stdout on one), or standard output when there is no `-o`.
+  logical function binary_to_terminal(out_file)
+    !> The path of `-o`, if given.
+    character(len=:), allocatable, intent(in) :: out_file
+    if (allocated(out_file)) then
+      binary_to_terminal = output_is_terminal(out_file)
+    else
+      binary_to_terminal = output_is_terminal()
+    end if
+  end function binary_to_terminal
 
   !> Date and time of the run as the 1991 header printed them: "25.11.2026 18:31".
   function run_stamp() result(stamp)

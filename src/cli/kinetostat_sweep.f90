@@ -18,13 +18,14 @@ module kinetostat_sweep
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_run, only: run_options_t, run_mechanism, format_summary
-  use kinetostat_summary, only: summary_header, summary_row
+  use kinetostat_summary, only: summary_header, summary_row, summary_values, override_has_column
   use kinetostat_registry, only: create_mechanism, known_kinds
+  use kinetostat_npy_writer, only: npy_header, put_npy_values
   use kinetostat_posix, only: fork_process, wait_process, exit_now, temp_anonymous, write_fd, read_fd_at, close_fd
   !$ use omp_lib, only: omp_set_num_threads
   implicit none
   private
-  public :: vary_t, parse_vary, run_sweep, variant_result_t, variant_count, allow_selfcheck_failure_in_sweep
+  public :: vary_t, parse_vary, run_sweep, variant_result_t, variant_count, allow_selfcheck_failure_in_sweep, sweep_npy
   public :: sweep_header
 
   !> --allow-selfcheck-failure of the sweep: a variant whose self-check fails warns (else
@@ -56,6 +57,8 @@ module kinetostat_sweep
     character(len=:), allocatable :: header
     !> Its summary CSV row.
     character(len=:), allocatable :: row
+    !> The numbers of that row after the overrides, as computed (summary_values; --format npy).
+    real(wp), allocatable :: values(:)
     !> Its warnings, one line each (without the "kinetostat: warning: " prefix).
     type(text_buffer_t) :: warnings
     !> Number of warnings (a failed self-check included).
@@ -313,14 +316,16 @@ contains
   end subroutine run_in_children
 
   !> Write the results of a block to descriptor `fd` (read back by load_block): per variant
-  !> "E" code, message or "R" header, row, warning count, warnings; each text after its
-  !> length (field_width digits).
+  !> "E" code, message or "R" header, row, warning count, warnings, the count of the row's
+  !> numbers and their 8 bytes each; each text after its length (field_width digits).
   subroutine save_block(fd, results, ok)
     integer, intent(in) :: fd
     type(variant_result_t), intent(in) :: results(:)
     logical, intent(out) :: ok
     type(text_buffer_t) :: buf
-    integer :: v
+    character(len=8) :: value_bytes
+    integer :: v, i
+    value_bytes = ""
     do v = 1, size(results)
       associate (r => results(v))
         if (allocated(r%error)) then
@@ -329,6 +334,11 @@ contains
           call buf%append("R"//field(len(r%header))//r%header//field(len(r%row))//r%row// &
             field(r%warning_count)//field(r%warnings%length))
           if (r%warnings%length > 0) call buf%append(r%warnings%data(1:r%warnings%length))
+          ! the numbers as their bytes (exactly as computed)
+          call buf%append(field(size(r%values)))
+          do i = 1, size(r%values)
+            call buf%append(transfer(r%values(i), value_bytes))
+          end do
         end if
       end associate
     end do
@@ -350,7 +360,7 @@ contains
     logical, intent(out) :: ok
     character(len=:), allocatable :: text, chunk
     integer(int64) :: got, offset
-    integer :: v, p, length, code
+    integer :: v, p, length, code, i
     ok = .false.
     text = ""
     offset = 0
@@ -390,6 +400,13 @@ contains
             r%warnings%length = length
           end if
           p = p + length
+          if (.not. number(length)) return
+          if (p + 8 * length - 1 > len(text)) return
+          allocate (r%values(length))
+          do i = 1, length
+            r%values(i) = transfer(text(p:p + 7), 1.0_wp)
+            p = p + 8
+          end do
         else
           return
         end if
@@ -498,6 +515,7 @@ contains
     type(run_options_t) :: options
     type(step_table_t) :: table
     type(text_buffer_t) :: out
+    logical, allocatable :: whole(:)
     integer :: i
     if (present(deck_overrides)) then
       call apply_overrides(source, deck_overrides, patched, result%error)
@@ -514,11 +532,169 @@ contains
     if (allocated(result%error)) return
     result%header = summary_header(table, .false.)
     result%row = summary_row(table, .false.)
+    call summary_values(table, .false., result%values, whole)
     do i = 1, table%warning_count()
       call result%warnings%put(table%warnings(i)%text)
     end do
     result%warning_count = table%warning_count()
   end subroutine run_variant
+
+  !> The sweep's rows as an npy file (--format npy): the columns of its summary CSV header,
+  !> each a float64 field of that name, one record per variant: an override column whose
+  !> value is one number (every --vary, a --set of a number) with that number, the rest as
+  !> computed (summary_values). A --set whose value is not one number (a text, a list) is
+  !> the same in every row and is left out.
+  subroutine sweep_npy(results, out, error)
+    !> The variants, none failed, all with the same header.
+    type(variant_result_t), intent(in) :: results(:)
+    !> Where the bytes go.
+    type(text_buffer_t), intent(inout) :: out
+    !> The header and the numbers do not match (a bug).
+    type(error_t), allocatable, intent(out) :: error
+    character(len=len(results(1)%header)) :: flat
+    integer :: ends(len(results(1)%header) + 1)
+    !> The header's fields kept (the override columns of one number, every figure), and
+    !> where each field's value comes from: override j (> 0) or figure -k.
+    integer, allocatable :: kept(:), source(:)
+    real(wp), allocatable :: row(:)
+    real(wp) :: x
+    integer :: n_over, v, j, n_fields, field
+    logical :: numeric
+    logical :: has(size(results(1)%overrides))
+    call csv_split(results(1)%header, flat, ends, n_fields)
+    n_over = size(results(1)%overrides)
+    ! a variable set twice has one column, the later override's
+    has = override_has_column(override_names(results(1)))
+    if (n_fields /= count(has) + size(results(1)%values)) then
+      call fatal_error(error, exit_input, "sweep: --format npy: "//int_str(n_fields)//" summary columns but "// &
+        int_str(count(has) + size(results(1)%values))//" values (a bug: please report it)")
+      return
+    end if
+    allocate (kept(0), source(0))
+    field = 0
+    do j = 1, n_over
+      if (.not. has(j)) cycle
+      field = field + 1
+      numeric = .true.
+      do v = 1, size(results)
+        numeric = numeric .and. one_number(results(v)%overrides(j)%value, x)
+      end do
+      if (numeric) then
+        kept = [kept, field]
+        source = [source, j]
+      end if
+    end do
+    kept = [kept, [(field + j, j = 1, size(results(1)%values))]]
+    source = [source, [(-j, j = 1, size(results(1)%values))]]
+    call out%append(kept_header(flat, ends, kept, size(results)))
+    allocate (row(size(kept)))
+    do v = 1, size(results)
+      do j = 1, size(kept)
+        if (source(j) > 0) then
+          numeric = one_number(results(v)%overrides(source(j))%value, row(j))
+        else
+          row(j) = results(v)%values(-source(j)) + 0.0_wp
+        end if
+      end do
+      call put_npy_values(out, row)
+    end do
+  contains
+    !> The variant's overrides as "NAME=" (override_has_column compares the names).
+    pure function override_names(r) result(names)
+      type(variant_result_t), intent(in) :: r
+      character(len=:), allocatable :: names(:)
+      integer :: k, longest
+      longest = 1
+      do k = 1, size(r%overrides)
+        longest = max(longest, len(r%overrides(k)%name) + 1)
+      end do
+      allocate (character(len=longest) :: names(size(r%overrides)))
+      do k = 1, size(r%overrides)
+        names(k) = r%overrides(k)%name//"="
+      end do
+    end function override_names
+  end subroutine sweep_npy
+
+  !> Whether `text` is one number (digits, sign, point, exponent; no repeat count, list or
+  !> text), and its value.
+  logical function one_number(text, x)
+    character(*), intent(in) :: text
+    real(wp), intent(out) :: x
+    integer :: ios
+    x = 0.0_wp
+    one_number = .false.
+    if (len_trim(text) == 0 .or. verify(trim(adjustl(text)), "0123456789+-.eEdD") /= 0) return
+    read (text, *, iostat=ios) x
+    one_number = ios == 0
+  end function one_number
+
+  !> The fields of a CSV line (quoted fields unquoted, "" inside them as one "): their
+  !> characters one after the other in `flat`, field i ending at ends(i) (starting after
+  !> ends(i - 1)); `count` fields.
+  pure subroutine csv_split(line, flat, ends, count)
+    character(*), intent(in) :: line
+    !> The fields' characters (as long as `line`).
+    character(len=len(line)), intent(out) :: flat
+    !> At least len(line) + 1 entries.
+    integer, intent(out) :: ends(:)
+    integer, intent(out) :: count
+    integer :: i, n
+    logical :: quoted
+    count = 0
+    n = 0
+    flat = ""
+    quoted = .false.
+    i = 1
+    do while (i <= len(line))
+      if (line(i:i) == '"' .and. quoted .and. i < len(line)) then
+        if (line(i + 1:i + 1) == '"') then
+          n = n + 1
+          flat(n:n) = '"'
+          i = i + 2
+          cycle
+        end if
+      end if
+      if (line(i:i) == '"') then
+        quoted = .not. quoted
+      else if (line(i:i) == "," .and. .not. quoted) then
+        count = count + 1
+        ends(count) = n
+      else
+        n = n + 1
+        flat(n:n) = line(i:i)
+      end if
+      i = i + 1
+    end do
+    count = count + 1
+    ends(count) = n
+  end subroutine csv_split
+
+  !> npy_header of the fields kept(:) of a split CSV line (csv_split), `rows` records.
+  pure function kept_header(flat, ends, kept, rows) result(text)
+    character(*), intent(in) :: flat
+    integer, intent(in) :: ends(:), kept(:), rows
+    character(len=:), allocatable :: text
+    integer :: starts(size(kept)), lengths(size(kept)), j
+    do j = 1, size(kept)
+      starts(j) = 1
+      if (kept(j) > 1) starts(j) = ends(kept(j) - 1) + 1
+      lengths(j) = ends(kept(j)) - starts(j) + 1
+    end do
+    text = named_header(flat, starts, lengths, max(1, maxval(lengths)), rows)
+  end function kept_header
+
+  !> npy_header of the names flat(starts(j):starts(j) + lengths(j) - 1).
+  pure function named_header(flat, starts, lengths, longest, rows) result(text)
+    character(*), intent(in) :: flat
+    integer, intent(in) :: starts(:), lengths(:), longest, rows
+    character(len=:), allocatable :: text
+    character(len=longest) :: names(size(starts))
+    integer :: j
+    do j = 1, size(starts)
+      names(j) = flat(starts(j):starts(j) + lengths(j) - 1)
+    end do
+    text = npy_header(names, lengths, rows)
+  end function named_header
 
   !> "kinetostat: sweep: 37/120 variants, 12 s" on stderr, overwritten in place; only
   !> after the first second.

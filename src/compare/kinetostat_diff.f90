@@ -10,9 +10,10 @@ module kinetostat_diff
   use kinetostat_kinds, only: wp, rad_to_deg
   use, intrinsic :: iso_fortran_env, only: int64
   use kinetostat_error, only: error_t, fatal_error, exit_input, out_of_memory
-  use kinetostat_text, only: int_str, lower, clipped, starts_with
+  use kinetostat_text, only: int_str, lower, clipped, starts_with, is_name
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_format, only: trimmed_es
+  use kinetostat_escape, only: table_text
   use kinetostat_step_table, only: column_t, col_input_angle, col_force_angle
   use kinetostat_noise, only: noise_rel
   use kinetostat_labels, only: label, lang_en, lang_ru
@@ -37,8 +38,6 @@ module kinetostat_diff
   real(wp), parameter :: radian_deg = rad_to_deg
   !> How far ahead (in values) a value of A is looked for in B when the two are out of step.
   integer, parameter :: search_window = 20000
-  !> Characters of a column name in a CSV header.
-  character(*), parameter :: name_chars = "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_"
   !> Longest unit text kept for a CSV column.
   integer, parameter :: unit_len = 16
   !> Output form: a CSV file.
@@ -424,8 +423,25 @@ contains
       if (one_side) tally%compared = tally%compared + 1
     end if
     tally%differing = tally%differing + 1
-    if (tally%differing <= tally%max_report) call report%put(line)
+    ! (a line of the report: the files' texts as the messages show them, one line each)
+    if (tally%differing <= tally%max_report) call report%put(table_text(line))
   end subroutine note
+
+  !> Whether `line` is a CSV header of the program: names (a letter, then letters, digits and
+  !> '_'; a joint's name may be Cyrillic) separated by commas.
+  pure logical function csv_header(line)
+    character(*), intent(in) :: line
+    integer :: a, e
+    csv_header = .false.
+    a = 1
+    do while (a <= len(line) + 1)
+      e = index(line(a:), ",")
+      e = merge(len(line) + 1, a + e - 1, e == 0)
+      if (.not. is_name(line(a:e - 1))) return
+      a = e + 1
+    end do
+    csv_header = .true.
+  end function csv_header
 
   !> Compare cell ia of A with cell ib of B (the same key).
   pure subroutine compare_cell(a, b, ia, ib, options, tally, report)
@@ -526,7 +542,7 @@ contains
     else if (starts_with(first, "{")) then
       call fatal_error(error, exit_input, path//": a JSON output; compare the CSV (--format csv) or table outputs")
       return
-    else if (len(first) > 0 .and. verify(first, name_chars//",") == 0 .and. index(first, ",") > 0) then
+    else if (index(first, ",") > 0 .and. csv_header(first)) then
       call parse_csv(lines, catalog, doc, error)
       if (allocated(error)) return
     else

@@ -320,6 +320,20 @@ int kinetostat_output_plan(const char *path, char *final, int cap, int *fd) {
   return -ELOOP;
 }
 
+/* Whether `path` (a non-regular output target, plan 2) is a terminal: 1 or 0. Only a
+ * character device is opened (read-only, without becoming the controlling terminal, not
+ * waiting) to ask; nothing else is touched. */
+int kinetostat_path_is_terminal(const char *path) {
+  struct stat st;
+  int fd, yes;
+  if (stat(path, &st) != 0 || !S_ISCHR(st.st_mode)) return 0;
+  fd = open(path, O_RDONLY | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) return 0;
+  yes = isatty(fd);
+  close(fd);
+  return yes;
+}
+
 /* Open `path` for reading: the descriptor, or -errno. */
 int kinetostat_open_read(const char *path) {
   for (;;) {

@@ -10,7 +10,7 @@ module kinetostat_posix
   implicit none
   private
   public :: process_id, write_standard_output
-  public :: stderr_is_terminal
+  public :: stderr_is_terminal, output_is_terminal
   public :: fork_process, wait_process, exit_now, cpu_count
   public :: guard_signals, output_plan, temp_beside, temp_anonymous, temp_remove, open_direct
   public :: replace_file, write_fd, read_fd_at, read_fd, open_read, close_fd, system_error_text
@@ -106,6 +106,12 @@ module kinetostat_posix
       character(kind=c_char), intent(in) :: name(*), final(*)
       integer(c_int) :: err
     end function c_replace
+    function c_path_is_terminal(path) bind(c, name="kinetostat_path_is_terminal") result(yes)
+      import :: c_int, c_char
+      implicit none
+      character(kind=c_char), intent(in) :: path(*)
+      integer(c_int) :: yes
+    end function c_path_is_terminal
     function c_isatty(fd) bind(c, name="isatty") result(yes)
       import :: c_int
       implicit none
@@ -326,6 +332,28 @@ contains
   logical function stderr_is_terminal()
     stderr_is_terminal = c_isatty(2_c_int) == 1
   end function stderr_is_terminal
+
+  !> Whether the output would reach a terminal: `-o path` (links followed, as output_plan
+  !> does), or standard output without `path`.
+  logical function output_is_terminal(path)
+    !> The path of `-o`.
+    character(*), intent(in), optional :: path
+    character(len=:), allocatable :: final
+    integer :: fd
+    output_is_terminal = .false.
+    if (.not. present(path)) then
+      output_is_terminal = c_isatty(1_c_int) == 1
+      return
+    end if
+    select case (output_plan(path, final, fd))
+    case (plan_descriptor)
+      output_is_terminal = c_isatty(int(fd, c_int)) == 1
+    case (plan_direct)
+      output_is_terminal = c_path_is_terminal(final//c_null_char) == 1
+    case default
+      output_is_terminal = .false.
+    end select
+  end function output_is_terminal
 
   !> The text of a NUL-terminated C string in `buf`.
   function c_string(buf) result(text)

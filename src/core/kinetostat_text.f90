@@ -4,8 +4,8 @@ module kinetostat_text
   use kinetostat_kinds, only: wp
   implicit none
   private
-  public :: real_str, int_str, int64_str, number_str, lower, upper, printable, utf8_length, counted, clipped, starts_with
-  public :: without_blanks
+  public :: real_str, int_str, int64_str, number_str, lower, upper, printable, utf8_length, char_count, counted, &
+    clipped, starts_with, is_name, without_blanks
 
   !> Format of a real in a message: shortest general form with 10 significant digits.
   character(*), parameter :: real_msg_fmt = '(g0.10)'
@@ -152,14 +152,18 @@ contains
 
   !> Bytes of the valid UTF-8 character at `text(i:)` (1 for ASCII, 2 to 4 for a multi-byte
   !> sequence), 0 when the byte at `i` does not start a valid one (a CP1251 or Latin-1
-  !> byte, a stray continuation byte, a sequence cut short).
+  !> byte, a stray continuation byte, a sequence cut short, an overlong form, a UTF-16
+  !> surrogate or a code point beyond U+10FFFF: what a strict decoder refuses).
   pure integer function utf8_length(text, i) result(n)
     !> Any bytes.
     character(*), intent(in) :: text
     !> Position looked at.
     integer, intent(in) :: i
-    integer :: c, k
+    integer :: c, k, low, high
     c = iachar(text(i:i))
+    ! the range of the second byte (the others: 128..191)
+    low = 128
+    high = 191
     if (c < 128) then
       n = 1
       return
@@ -167,8 +171,12 @@ contains
       n = 2
     else if (c >= 224 .and. c <= 239) then
       n = 3
+      if (c == 224) low = 160
+      if (c == 237) high = 159
     else if (c >= 240 .and. c <= 244) then
       n = 4
+      if (c == 240) low = 144
+      if (c == 244) high = 143
     else
       n = 0
       return
@@ -177,7 +185,11 @@ contains
       n = 0
       return
     end if
-    do k = 1, n - 1
+    if (iachar(text(i + 1:i + 1)) < low .or. iachar(text(i + 1:i + 1)) > high) then
+      n = 0
+      return
+    end if
+    do k = 2, n - 1
       if (iachar(text(i + k:i + k)) < 128 .or. iachar(text(i + k:i + k)) > 191) then
         n = 0
         return
@@ -196,6 +208,46 @@ contains
       if (text(i:i) /= " " .and. text(i:i) /= achar(9)) t = t//text(i:i)
     end do
   end function without_blanks
+
+  !> Characters of a text: its UTF-8 characters, each byte that is not part of one counted
+  !> as one (so a Cyrillic letter counts once, not as its two bytes).
+  pure integer function char_count(text)
+    !> Any bytes.
+    character(*), intent(in) :: text
+    integer :: i
+    char_count = 0
+    i = 1
+    do while (i <= len(text))
+      i = i + max(1, utf8_length(text, i))
+      char_count = char_count + 1
+    end do
+  end function char_count
+
+  !> Whether `text` is a name: a letter, then letters, digits and '_'; a letter is Latin
+  !> (A-Z, a-z) or Cyrillic (U+0400..U+04FF, two bytes in UTF-8: А..я, Ё, ё and the rest of
+  !> the block).
+  pure logical function is_name(text)
+    !> Any bytes (no trailing blanks).
+    character(*), intent(in) :: text
+    integer :: i, c
+    logical :: letter
+    is_name = .false.
+    if (len(text) == 0) return
+    i = 1
+    do while (i <= len(text))
+      c = iachar(text(i:i))
+      letter = (c >= iachar("A") .and. c <= iachar("Z")) .or. (c >= iachar("a") .and. c <= iachar("z"))
+      if (c >= 208 .and. c <= 211 .and. i < len(text)) then
+        if (iachar(text(i + 1:i + 1)) >= 128 .and. iachar(text(i + 1:i + 1)) <= 191) then
+          i = i + 2
+          cycle
+        end if
+      end if
+      if (.not. letter .and. (i == 1 .or. .not. (c == iachar("_") .or. (c >= iachar("0") .and. c <= iachar("9"))))) return
+      i = i + 1
+    end do
+    is_name = .true.
+  end function is_name
 
   !> ASCII lower case.
   pure function lower(s) result(t)

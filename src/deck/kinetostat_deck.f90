@@ -6,8 +6,9 @@ module kinetostat_deck
   use, intrinsic :: iso_fortran_env, only: int64
   use kinetostat_kinds, only: wp
   use kinetostat_error, only: error_t, fatal_error, exit_input, out_of_memory
-  use kinetostat_text, only: real_str, int_str, int64_str, number_str, lower, printable, clipped
+  use kinetostat_text, only: real_str, int_str, int64_str, number_str, lower, printable, clipped, char_count, starts_with
   use kinetostat_deck_reader, only: read_bytes_limited, read_ok, read_too_long, read_no_memory
+  use kinetostat_deck_encoding, only: deck_as_utf8
   implicit none
   private
   public :: deck_context_t, unset_real, unset_bits, max_deck_array, max_steps
@@ -15,7 +16,7 @@ module kinetostat_deck
   public :: deck_line_count, deck_line, deck_line_length, release_deck_text
   public :: read_group_name, namelist_failure, deck_error, namelist_probe_t, require_all_set
   public :: is_set, require_set, require_positive, require_nonnegative, require_rule, require_per_step
-  public :: is_whole_in, require_whole
+  public :: is_whole_in, require_whole, require_chars, title_chars, text_chars, text_bytes
   public :: optional_default, count_values, steps_over_turn
   public :: check_namelist_syntax, longest_quoted, begin_group
   public :: deck_array_capacities, max_deck_size, set_max_deck_size, default_max_deck_size, assignment_starts
@@ -39,6 +40,14 @@ module kinetostat_deck
   character(*), parameter :: stdin_deck_name = "<stdin>"
   !> Capacity of a per-step array in a deck (values beyond it are a namelist error).
   integer, parameter :: max_deck_array = 1000000
+  !> Longest title of a deck, characters (a Cyrillic letter counts as one).
+  integer, parameter :: title_chars = 80
+  !> Longest quoted text but the title, characters (checked before the READ, so that no
+  !> text variable is ever cut).
+  integer, parameter :: text_chars = 32
+  !> Bytes a character takes at most in UTF-8: a deck's text variable holds text_bytes
+  !> times its limit in characters (text_bytes * text_chars).
+  integer, parameter :: text_bytes = 4
   !> Largest number of steps a run may have.
   integer, parameter :: max_steps = 1000000
   !> Default of the largest deck read, bytes (256 MiB; --max-deck-size).
@@ -69,6 +78,16 @@ module kinetostat_deck
     !> Lines longer than this many characters were cut (huge(1): no line was cut).
     integer :: cut_width = huge(1)
   end type deck_source_t
+
+  !> The capacity of an array of a deck group (docs/cli.md, "Capacities").
+  type :: deck_capacity_t
+    !> The array as gfortran's messages name it, lower case: "link", "force%table".
+    character(len=:), allocatable :: array
+    !> Its elements.
+    integer :: size = 0
+    !> What they are, plural ("links", "values (64 points)").
+    character(len=:), allocatable :: noun
+  end type deck_capacity_t
 
   !> Finds where a namelist READ of a deck failed, so that the message can name the line,
   !> the assignment and the variable (gfortran's iomsg names a token or an item number only).
@@ -114,7 +133,11 @@ module kinetostat_deck
     integer :: piece = 0
     !> Whether the READ of the whole deck failed and the probe has started (see retry).
     logical :: started = .false.
+    !> The group's arrays of fixed size (see `limit`): a subscript beyond one, or more values
+    !> than it holds, is reported with the limit ("link(25): at most 24 links").
+    type(deck_capacity_t), allocatable :: capacities(:)
   contains
+    procedure :: limit => probe_limit
     procedure :: retry => probe_retry
     procedure :: failed => probe_failed
     procedure :: start => probe_start
@@ -159,6 +182,8 @@ contains
       call read_bytes_limited("", max_deck_size, text, status)
       call check_read(stdin_deck_name, "cannot read the deck from standard input")
       if (allocated(error)) return
+      call as_utf8(stdin_deck_name)
+      if (allocated(error)) return
       call deck_source_from_text(stdin_deck_name, text, source, cut_width, error)
       if (allocated(error)) error%message = stdin_deck_name//": "//error%message
       return
@@ -198,9 +223,19 @@ contains
       call check_read(name, "cannot read deck")
       if (allocated(error)) return
     end if
+    call as_utf8(name)
+    if (allocated(error)) return
     call deck_source_from_text(path, text, source, cut_width, error)
     if (allocated(error)) error%message = name//": "//error%message
   contains
+    !> The text as UTF-8 (a CP1251 deck decoded), or the error naming the byte at fault.
+    subroutine as_utf8(deck_name)
+      character(*), intent(in) :: deck_name
+      character(len=:), allocatable :: problem
+      if (.not. allocated(text)) return
+      call deck_as_utf8(text, problem)
+      if (len(problem) > 0) call fatal_error(error, exit_input, deck_name//":"//problem)
+    end subroutine as_utf8
     !> The error of a read in chunks (none when all was read).
     subroutine check_read(deck_name, failure)
       character(*), intent(in) :: deck_name, failure
@@ -227,7 +262,8 @@ contains
   end subroutine set_max_deck_size
 
   !> A deck from text held in memory: lines split at LF, a CR before each LF dropped, a
-  !> leading UTF-8 byte-order mark dropped; a last line without LF is kept. A line is one
+  !> leading UTF-8 byte-order mark dropped; a last line without LF is kept (the text is
+  !> UTF-8: load_deck decodes a CP1251 deck and refuses other bytes). A line is one
   !> record, unless cutting long lines into records (see `cut_line`) at the width that
   !> needs the least memory (see `chosen_cut_width`) saves 1 MiB or more.
   pure subroutine deck_source_from_text(name, text, source, cut_width, error)
@@ -250,56 +286,8 @@ contains
       if (text(1:3) == bom) first = 4
     end if
     source%path = name
-    if (index(text, char(255)) > 0) then
-      call records_from_text(without_comment_ff(text(first:)), source, cut_width, error)
-    else
-      call records_from_text(text(first:), source, cut_width, error)
-    end if
+    call records_from_text(text(first:), source, cut_width, error)
   end subroutine deck_source_from_text
-
-  !> The text with each byte 0xFF of a comment made a blank: in a line before the first
-  !> group, and after a '!' outside quotes from the group on. gfortran's namelist READ takes
-  !> that byte (CP1251's 'я', Latin-1's 'ÿ') for the end of the file, so a comment in an
-  !> 8-bit encoding would end the comment early and its rest would be read as names.
-  pure function without_comment_ff(text) result(clean)
-    !> The deck's text.
-    character(*), intent(in) :: text
-    !> Allocated, not automatic: a deck of 10^8 bytes would overflow the stack.
-    character(len=:), allocatable :: clean
-    character(len=1) :: quote
-    logical :: in_group, comment, line_start
-    integer :: i
-    clean = text
-    in_group = .false.
-    comment = .false.
-    line_start = .true.
-    quote = " "
-    do i = 1, len(text)
-      if (text(i:i) == achar(10)) then
-        comment = .false.
-        line_start = .true.
-        cycle
-      end if
-      if (.not. in_group) then
-        if (line_start .and. text(i:i) == "&") then
-          in_group = .true.
-        else if (text(i:i) == char(255)) then
-          clean(i:i) = " "
-        end if
-        if (text(i:i) /= " " .and. text(i:i) /= achar(9)) line_start = .false.
-        cycle
-      end if
-      if (comment) then
-        if (text(i:i) == char(255)) clean(i:i) = " "
-      else if (quote /= " ") then
-        if (text(i:i) == quote) quote = " "
-      else if (text(i:i) == "'" .or. text(i:i) == '"') then
-        quote = text(i:i)
-      else if (text(i:i) == "!") then
-        comment = .true.
-      end if
-    end do
-  end function without_comment_ff
 
   !> The records of `text` (see deck_source_from_text; no byte-order mark handling).
   pure subroutine records_from_text(text, source, cut_width, error)
@@ -1135,9 +1123,95 @@ contains
         reason = "missing '=' after "//bare//" (write "//bare//" = "//trim(adjustl(line(len(bare) + 1:)))//")"
       end if
     end if
+    call capacity_reason(self, name, text, reason)
     call fatal_error(error, exit_input, ctx%path//":"//int_str(self%bad)//": &"//ctx%group//": "// &
       clipped(text, 60)//": "//reason)
   end subroutine probe_report
+
+  !> Declare an array of the group with a fixed capacity (before the READ): an overflow is
+  !> then reported as "link(25): at most 24 links".
+  pure subroutine probe_limit(self, array, size, noun)
+    class(namelist_probe_t), intent(inout) :: self
+    !> The array as gfortran names it, lower case ("link", "force%table").
+    character(*), intent(in) :: array
+    !> Its elements.
+    integer, intent(in) :: size
+    !> What they are, plural ("links").
+    character(*), intent(in) :: noun
+    if (.not. allocated(self%capacities)) allocate (self%capacities(0))
+    self%capacities = [self%capacities, deck_capacity_t(array, size, noun)]
+  end subroutine probe_limit
+
+  !> When the failed assignment (variable `name`, text `text`) overflows an array of fixed
+  !> capacity (a subscript out of range, too many values, a repeat count too large), `text`
+  !> becomes that array with its subscript ("link(25)") and `reason` its limit ("at most 24
+  !> links"; a subscript below 1: "subscripts run from 1 to 24").
+  pure subroutine capacity_reason(self, name, text, reason)
+    class(namelist_probe_t), intent(in) :: self
+    !> The assignment's variable as written ("link(25)%id").
+    character(*), intent(in) :: name
+    !> The assignment; on return the array element when the limit applies.
+    character(len=:), allocatable, intent(inout) :: text
+    !> The reason; on return the limit when it applies.
+    character(len=:), allocatable, intent(inout) :: reason
+    character(*), parameter :: out_of_range = "out of range for namelist variable "
+    character(len=:), allocatable :: array, low, part
+    integer :: at, k, c, e, v, ios
+    if (.not. allocated(self%capacities)) return
+    at = index(self%failure, out_of_range)
+    if (at > 0) then
+      array = lower(trim(self%failure(at + len(out_of_range):)))
+    else if (starts_with(reason, "too many values") .or. index(self%failure, "Repeat count too large") > 0) then
+      array = without_subscripts(lower(name))
+    else
+      return
+    end if
+    k = 0
+    do c = 1, size(self%capacities)
+      if (self%capacities(c)%array == array) k = c
+    end do
+    if (k == 0) return
+    associate (cap => self%capacities(k))
+      if (at == 0) then
+        text = name
+        reason = "at most "//int_str(cap%size)//" "//cap%noun
+        return
+      end if
+      ! the subscript of the array's last part in the variable: "force(1)%table(200)"
+      low = lower(name)
+      part = array(index(array, "%", back=.true.) + 1:)
+      c = index(low, part//"(", back=.true.)
+      if (c == 0) return
+      c = c + len(part) + 1
+      e = c
+      do while (e <= len(low))
+        if (index("0123456789+- ", low(e:e)) == 0) exit
+        e = e + 1
+      end do
+      read (low(c:e - 1), *, iostat=ios) v
+      if (ios /= 0) return
+      text = name(1:index(low(c:), ")") + c - 1)
+      if (v > cap%size) then
+        reason = "at most "//int_str(cap%size)//" "//cap%noun
+      else
+        reason = "subscripts run from 1 to "//int_str(cap%size)//" (at most "//int_str(cap%size)//" "//cap%noun//")"
+      end if
+    end associate
+  contains
+    !> "force(1)%table(2)" -> "force%table".
+    pure function without_subscripts(s) result(bare)
+      character(*), intent(in) :: s
+      character(len=:), allocatable :: bare
+      integer :: i, depth
+      bare = ""
+      depth = 0
+      do i = 1, len(s)
+        if (s(i:i) == "(") depth = depth + 1
+        if (depth == 0 .and. s(i:i) /= " ") bare = bare//s(i:i)
+        if (s(i:i) == ")") depth = depth - 1
+      end do
+    end function without_subscripts
+  end subroutine capacity_reason
 
   !> Whether an assignment's text without '=' starts with a variable's name followed by a
   !> blank and a value ("omega1 15", "dyad(1)%l2  0.35"): a name of two or more characters
@@ -1438,9 +1512,13 @@ contains
   !> unclosed '(' : "&assur dyad("). From the line opening the group to its closing '/'
   !> (or '&end', '$'), outside quotes and '!' comments: every '(' closes on its line, holds
   !> only subscript or number characters and does not nest; no ')' without '('; a '='
-  !> follows a variable name ("name", "name(2)", "a(1)%b"); a quote opened is closed.
-  !> The error names the deck, the line, the group, the variable (the name before the
-  !> last '=', or the one at fault) and the reason.
+  !> follows a variable name ("name", "name(2)", "a(1)%b"); a quote opened is closed on its
+  !> line; a quoted text other than the title has at most text_chars characters (so that no
+  !> text variable is cut by the READ). After the closing '/' only blanks and '!' comments
+  !> (the READ would ignore the rest: "delta = 1/25, j_rotor = 0.6" would be delta = 1 and
+  !> no j_rotor); a '/' between two numbers is taken for a fraction ("a fraction? write
+  !> 0.04"). The error names the deck, the line, the group, the variable (the name before
+  !> the last '=', or the one at fault) and the reason.
   subroutine check_namelist_syntax(source, group, error)
     !> The deck.
     type(deck_source_t), intent(in) :: source
@@ -1453,10 +1531,11 @@ contains
       "0123456789abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ_+-.,:* "//tab
     character(len=:), allocatable :: line, name
     character(len=1) :: quote, c
-    integer :: k, i, start, open_at, quote_line
+    integer :: k, i, start, open_at, quote_line, text_length
     logical :: started
     quote = " "
     quote_line = 0
+    text_length = 0
     started = .false.
     name = ""
     do k = 1, deck_line_count(source)
@@ -1479,20 +1558,25 @@ contains
       do while (i <= len(line))
         c = line(i:i)
         if (quote /= " ") then
-          if (c == char(255)) then
-            call syntax_failure(source, group, k, line, open_at, name, &
-              "byte \xFF in a text in quotes cannot be read (save the deck as UTF-8)", error)
-            return
-          end if
           if (c == quote) then
             ! a doubled quote stands for one quote character inside the text
             if (i < len(line)) then
               if (line(i + 1:i + 1) == quote) then
+                text_length = text_length + 1
                 i = i + 2
                 cycle
               end if
             end if
             quote = " "
+            if (text_length > text_chars .and. lower(name) /= "title") then
+              call syntax_failure(source, group, quote_line, "", 0, name, "a text of "//int_str(text_length)// &
+                " characters, more than any of its values has (at most "//int_str(text_chars)// &
+                "; only title may be longer)", error)
+              return
+            end if
+          else if (iand(iachar(c), 192) /= 128) then
+            ! a character: an ASCII byte or the first byte of a UTF-8 sequence
+            text_length = text_length + 1
           end if
         else if (open_at > 0) then
           if (c == ")") then
@@ -1506,6 +1590,7 @@ contains
         else if (c == "'" .or. c == '"') then
           quote = c
           quote_line = k
+          text_length = 0
         else if (c == "!") then
           exit
         else if (c == "(") then
@@ -1520,6 +1605,7 @@ contains
             return
           end if
         else if (c == "/" .or. c == "$" .or. c == "&") then
+          call check_after_group(source, group, line, k, i, name, error)
           return
         end if
         i = i + 1
@@ -1529,12 +1615,105 @@ contains
           "unclosed '(' (a subscript like dyad(2) or a value like (1.0, 2.0) must close on its line)", error)
         return
       end if
+      ! a text ends on its line (the READ would take the next line's padding into it)
+      if (quote /= " ") then
+        call syntax_failure(source, group, quote_line, "", 0, name, &
+          "unclosed quote "//quote//" (a text must end on its line with the quote it starts with)", error)
+        return
+      end if
     end do
-    if (quote /= " ") then
-      call syntax_failure(source, group, quote_line, "", 0, name, &
-        "unclosed quote "//quote//" (a text must end with the quote it starts with)", error)
-    end if
   end subroutine check_namelist_syntax
+
+  !> The group ends at line(at:) of deck line k ('/', or '&end', '$end'): a '/' between two
+  !> numbers is a fraction; after the end, blanks and '!' comments only (check_namelist_syntax).
+  subroutine check_after_group(source, group, line, k, at, name, error)
+    !> The deck.
+    type(deck_source_t), intent(in) :: source
+    !> Group name.
+    character(*), intent(in) :: group
+    !> Line k of the deck.
+    character(*), intent(in) :: line
+    !> Its number, and the column of the end.
+    integer, intent(in) :: k, at
+    !> The variable of the last '='.
+    character(*), intent(in) :: name
+    !> The error (none when the end is clean).
+    type(error_t), allocatable, intent(out) :: error
+    character(len=:), allocatable :: rest
+    integer :: last, j, e
+    last = at
+    if (line(at:at) /= "/") then
+      do while (last < len(line))
+        if (verify(line(last + 1:last + 1), "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ") /= 0) exit
+        last = last + 1
+      end do
+    else if (at > 1 .and. at < len(line)) then
+      ! a number written just before and just after the '/'
+      j = at - 1
+      do while (j >= 1)
+        if (index("0123456789.eEdD+-", line(j:j)) == 0) exit
+        j = j - 1
+      end do
+      e = at + 1
+      do while (e <= len(line))
+        if (index("0123456789.eEdD+-", line(e:e)) == 0) exit
+        e = e + 1
+      end do
+      if (j < at - 1 .and. e > at + 1) then
+        if (is_number_text(line(j + 1:at - 1)) .and. is_number_text(line(at + 1:e - 1))) then
+          call syntax_failure(source, group, k, "", 0, name//" = "//line(j + 1:e - 1), &
+            fraction_hint(line(j + 1:at - 1), line(at + 1:e - 1)), error)
+          return
+        end if
+      end if
+    end if
+    rest = adjustl(line(last + 1:))
+    j = k
+    do
+      if (len_trim(rest) > 0) then
+        if (rest(1:1) /= "!") then
+          call fatal_error(error, exit_input, source%path//":"//int_str(j)//": &"//group//": "// &
+            clipped(printable(trim(rest)), 60)//": text after the group's closing '/' (it would be ignored: "// &
+            "move it before the '/', or make it a comment with '!')")
+          return
+        end if
+      end if
+      j = j + 1
+      if (j > deck_line_count(source)) exit
+      rest = adjustl(deck_line(source, j))
+    end do
+  end subroutine check_after_group
+
+  !> The message for a value written as a fraction "a/b": "a fraction? write 0.04".
+  pure function fraction_hint(numerator, denominator) result(hint)
+    !> The texts before and after the '/' (numbers).
+    character(*), intent(in) :: numerator, denominator
+    character(len=:), allocatable :: hint
+    real(wp) :: a, b, q, back
+    character(len=40) :: buf
+    integer :: ios, digits
+    hint = "a fraction? a namelist value cannot be one (the '/' would end the group)"
+    read (numerator, *, iostat=ios) a
+    if (ios /= 0) return
+    read (denominator, *, iostat=ios) b
+    if (ios /= 0 .or. .not. b /= 0.0_wp) return
+    q = a / b
+    if (.not. abs(q) <= huge(q)) return
+    ! the shortest fixed or exponent form (up to 12 significant digits) that reads back to q
+    do digits = 1, 12
+      write (buf, '(es40.' // int_str(digits - 1) // 'e3)') q
+      read (buf, *) back
+      if (abs(back - q) <= 1.0e-12_wp * abs(q)) exit
+    end do
+    if (abs(q) >= 1.0e-4_wp .and. abs(q) < 1.0e7_wp .or. q == 0.0_wp) then
+      write (buf, '(f40.' // int_str(max(0, digits - 1 - floor(log10(max(abs(q), tiny(q)))))) // ')') q
+      buf = adjustl(buf)
+      if (buf(len_trim(buf):len_trim(buf)) == ".") buf(len_trim(buf):) = " "
+    else
+      write (buf, '(es40.' // int_str(max(1, digits - 1)) // 'e3)') q
+    end if
+    hint = "a fraction? write "//trim(adjustl(buf))
+  end function fraction_hint
 
   !> The pre-check's error at line `at`: "<deck>:<at>: &<group>: <variable>: <reason>"; the
   !> variable is the name written just before an unclosed '(' (at `open_at` of `line`, 0:
@@ -1815,6 +1994,23 @@ contains
     type(error_t), allocatable, intent(out) :: error
     if (.not. ok) call deck_error(ctx, name, reason, error)
   end subroutine require_rule
+
+  !> A text of at most `most` characters (UTF-8 characters, not bytes): else "longer than
+  !> 80 characters (it has 95)".
+  pure subroutine require_chars(ctx, name, text, most, error)
+    type(deck_context_t), intent(in) :: ctx
+    !> The text's variable.
+    character(*), intent(in) :: name
+    !> The text (trailing blanks do not count).
+    character(*), intent(in) :: text
+    !> Most characters.
+    integer, intent(in) :: most
+    type(error_t), allocatable, intent(out) :: error
+    integer :: n
+    n = char_count(trim(text))
+    if (n > most) call deck_error(ctx, name, "longer than "//int_str(most)//" characters (it has "// &
+      int_str(n)//")", error)
+  end subroutine require_chars
 
   !> A per-step list `name` of `count` values must have one value per step (`n`).
   pure subroutine require_per_step(ctx, name, count, n, error)

@@ -5,7 +5,7 @@ module kinetostat_gear_geometry_deck
   use kinetostat_kinds, only: wp, deg_to_rad
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, number_str, lower
-  use kinetostat_deck, only: begin_group, deck_context_t, unset_real, deck_source_t, namelist_probe_t, &
+  use kinetostat_deck, only: begin_group, text_bytes, text_chars, deck_context_t, unset_real, deck_source_t, namelist_probe_t, &
     deck_error, is_set, require_set, require_positive, require_nonnegative, require_rule, require_whole, &
     optional_default, require_all_set
   use kinetostat_gear_geometry, only: gear_pair_t, shift_sum_for_centre
@@ -73,7 +73,7 @@ contains
     type(gear_geometry_deck_t), intent(out) :: deck
     !> Input error naming deck, group, variable and reason.
     type(error_t), allocatable, intent(out) :: error
-    character(len=16) :: shift
+    character(len=text_bytes * text_chars) :: shift
     real(wp) :: m, z1, z2, x1, x2, a_w, alpha, ha_star, c_star, sa_min_star, m1
     integer :: iz1, iz2
     type(deck_context_t) :: ctx

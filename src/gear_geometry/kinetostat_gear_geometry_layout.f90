@@ -13,6 +13,8 @@ module kinetostat_gear_geometry_layout
   use kinetostat_format, only: full_number, int_field, pad_right, short_number
   use kinetostat_labels, only: phrase, lang_ru
   use kinetostat_mechanism, only: mechanism_t
+  use kinetostat_sheet, only: sheet_t
+  use kinetostat_gear_sheet, only: draw_gear_sheet
   use kinetostat_gear_geometry, only: gear_pair_t, pair_geometry_t, contour_curve_t, pair_geometry, &
     involute, auto_shift, equal_sliding_split, blocking_contour, line_of_action
   use kinetostat_gear_geometry_deck, only: gear_geometry_deck_t, read_gear_geometry_deck, gear_geometry_template, &
@@ -45,7 +47,7 @@ module kinetostat_gear_geometry_layout
     !> The validated deck.
     type(gear_geometry_deck_t) :: deck
   contains
-    procedure :: read_deck, solve, write_results, analysis_deck
+    procedure :: read_deck, solve, write_results, analysis_deck, design_sheet
   end type gear_geometry_mechanism_t
 
 contains
@@ -56,6 +58,7 @@ contains
     class(mechanism_t), allocatable, intent(out) :: mech
     allocate (gear_geometry_mechanism_t :: mech)
     mech%force_sheet = .false.
+    mech%sheet_name = "gears"
     mech%template = gear_geometry_template
     mech%title_en = "KINETOSTAT  GEAR_GEOMETRY  INVOLUTE SPUR GEAR PAIR WITH PROFILE SHIFT"
     mech%title_ru = "KINETOSTAT  GEAR_GEOMETRY  ГЕОМЕТРИЧЕСКИЙ РАСЧЕТ ЭВОЛЬВЕНТНОЙ"// &
@@ -343,6 +346,19 @@ contains
       call out%put("/")
     end associate
   end subroutine analysis_deck
+
+  !> The sheet of the pair (--format svg, dxf): the meshing drawing, the blocking contour with
+  !> the pair's shifts marked, the dimensions (kinetostat_gear_sheet).
+  subroutine design_sheet(self, table, lang, at_step, sheet, error)
+    class(gear_geometry_mechanism_t), intent(in) :: self
+    type(step_table_t), intent(in) :: table
+    integer, intent(in) :: lang
+    integer, intent(in) :: at_step
+    type(sheet_t), intent(out) :: sheet
+    type(error_t), allocatable, intent(out) :: error
+    call draw_gear_sheet(self%deck%pair, pair_geometry(self%deck%pair, table%rows(1, 1), table%rows(2, 1)), table, &
+      lang, sheet)
+  end subroutine design_sheet
 
   !> `kinetostat contour DECK`: the blocking contour of the deck's pair (z1, z2 and the basic
   !> rack) as long-format CSV "curve,x1,x2", one point a line, the curves in the order of

@@ -6,7 +6,7 @@ module kinetostat_gears_deck
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str, number_str, lower
   use kinetostat_deck, only: &
-    begin_group, deck_context_t, unset_real, &
+    begin_group, text_bytes, text_chars, deck_context_t, unset_real, &
     deck_source_t, namelist_probe_t, deck_error, is_set, require_set, require_positive, require_rule, &
     require_whole, require_all_set
   use kinetostat_gears, only: gear_stage_t, gear_helical, gear_bevel, gear_planetary, gear_kind_names
@@ -23,6 +23,9 @@ module kinetostat_gears_deck
   integer, parameter :: layout_series = 2
   !> Layout names as written in decks.
   character(*), parameter :: layout_names(2) = [character(len=8) :: "separate", "series"]
+  !> The group's arrays, one value per stage (max_stages each).
+  character(*), parameter :: stage_arrays(*) = [character(len=9) :: "stage", "m1", "z1", "z2", "m", "dw1", &
+    "alpha_w", "beta", "gamma", "z3", "k", "alpha_w23"]
   !> Largest number of teeth accepted (keeps z1 + 2*z2 and the ratios far from overflow).
   integer, parameter :: max_teeth = 100000
   !> Default operating pressure angle, deg (standard basic rack).
@@ -74,7 +77,7 @@ contains
     type(gears_deck_t), intent(out) :: deck
     !> Input error naming file, group, variable and reason.
     type(error_t), allocatable, intent(out) :: error
-    character(len=16) :: layout, stage(max_stages)
+    character(len=text_bytes * text_chars) :: layout, stage(max_stages)
     real(wp), dimension(max_stages) :: m1, m, dw1, alpha_w, alpha_w23, beta, gamma
     !> Teeth and satellite counts: integer deck variables, read as reals (see require_whole).
     real(wp), dimension(max_stages) :: z1, z2, z3, k
@@ -92,6 +95,10 @@ contains
     alpha_w23 = unset_real; beta = unset_real; gamma = unset_real
     z1 = unset_real; z2 = unset_real; z3 = unset_real; k = unset_real
 
+    ! every variable of the group is an array of one value per stage
+    do i = 1, size(stage_arrays)
+      call probe%limit(trim(stage_arrays(i)), max_stages, "stages")
+    end do
     read (source%records, nml=gears, iostat=probe%ios, iomsg=probe%msg)
     do while (probe%retry(source)) ! on failure: find the line and the assignment
       read (probe%records, nml=gears, iostat=probe%ios, iomsg=probe%msg)

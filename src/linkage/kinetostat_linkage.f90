@@ -63,8 +63,9 @@ module kinetostat_linkage
 
   !> A lower pair between links a and b (0: the frame); F<a><b> is the force on a from b.
   type :: linkage_pair_t
-    !> Name of the joint ("A", "T1").
-    character(len=8) :: name = ""
+    !> Name of the joint ("A", "T1"; at most 8 characters, Latin or Cyrillic letters: up
+    !> to 2 bytes each in UTF-8).
+    character(len=16) :: name = ""
     !> pair_r or pair_p.
     integer :: kind = pair_r
     !> Link indices (0 = frame, 1.. = moving links in deck order).

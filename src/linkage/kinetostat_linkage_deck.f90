@@ -8,11 +8,11 @@
 module kinetostat_linkage_deck
   use kinetostat_kinds, only: wp, g_default, deg_to_rad
   use kinetostat_error, only: error_t
-  use kinetostat_text, only: int_str, lower
-  use kinetostat_deck, only: values_out_of_memory, longest_quoted, begin_group, &
+  use kinetostat_text, only: int_str, lower, is_name
+  use kinetostat_deck, only: values_out_of_memory, longest_quoted, begin_group, max_deck_array, &
     deck_context_t, unset_bits, deck_source_t, namelist_probe_t, &
     deck_error, is_set, require_set, require_nonnegative, require_rule, require_per_step, optional_default, count_values, &
-    require_whole, deck_array_capacities
+    require_whole, deck_array_capacities, require_chars, title_chars, text_bytes, text_chars
   use kinetostat_vec2, only: unit_at, magnitude
   use kinetostat_linkage, only: linkage_t, pair_r, pair_p
   use kinetostat_linkage_structure, only: analyse_structure
@@ -28,8 +28,8 @@ module kinetostat_linkage_deck
   !> A load window's ends are taken this much wider (the drive's unit: deg or m), so that a
   !> step landing on an end by roundoff of start + (k-1)*step counts as inside.
   real(wp), parameter :: window_tol = 1.0e-9_wp
-  !> Longest quoted text but the title (the length of the text variables of the deck types).
-  integer, parameter :: text_limit = 64
+  !> Longest joint name, characters.
+  integer, parameter :: name_chars = 8
   !> Largest number of steps.
   integer, parameter :: max_steps = 1000000
   character(*), parameter :: group_name = "linkage"
@@ -48,11 +48,11 @@ module kinetostat_linkage_deck
 
   !> A pair as written.
   type :: pair_in_t
-    !> Joint name ("A"; default J<k>; at most 8 characters: the variable is longer so that a
-    !> longer text is reported, not cut by the namelist read).
-    character(len=64) :: name = ""
+    !> Joint name ("A"; default J<k>; at most name_chars characters: the variable is longer
+    !> so that a longer text is reported, not cut by the namelist read).
+    character(len=text_bytes * text_chars) :: name = ""
     !> 'R' (turning) or 'P' (sliding).
-    character(len=64) :: kind = ""
+    character(len=text_bytes * text_chars) :: kind = ""
     !> The two links: F<links(1)><links(2)> is the force on the first from the second.
     real(wp) :: links(2) = unset
     !> The joint at the reference position (P: a point of the guide where the block is), m.
@@ -68,7 +68,7 @@ module kinetostat_linkage_deck
   !> A drive as written.
   type :: drive_in_t
     !> The driven pair's name: R turns links(1) against links(2), P slides the block.
-    character(len=64) :: pair = ""
+    character(len=text_bytes * text_chars) :: pair = ""
     !> Law start + (k-1)*step (deg for R, m for P, stroke from the reference position) ...
     real(wp) :: start = unset, step = unset
     !> ... or a list of values, one per step.
@@ -116,8 +116,8 @@ module kinetostat_linkage_deck
   type :: linkage_deck_t
     !> The linkage (with its structural analysis).
     type(linkage_t) :: mech
-    !> Title.
-    character(len=80) :: title = ""
+    !> Title (at most title_chars characters).
+    character(len=text_bytes * title_chars) :: title = ""
     !> Number of steps.
     integer :: n = 0
     !> Gravity, m/s^2, and its direction, deg.
@@ -137,7 +137,7 @@ module kinetostat_linkage_deck
     !> The per-step load columns (n x columns).
     real(wp), allocatable :: step_values(:)
     !> The deck's link numbers of the forces' and moments' links, pair names of the drives.
-    character(len=8), allocatable :: drive_pair(:)
+    character(len=16), allocatable :: drive_pair(:)
   end type linkage_deck_t
 
   !> The commented template deck (a crank-rocker four-bar).
@@ -215,15 +215,19 @@ contains
       call values_out_of_memory(ctx, "step_values", capacity, error)
       return
     end if
-    call check_text_lengths(source, ctx, error)
-    if (allocated(error)) return
+    call probe%limit("link", max_links, "links")
+    call probe%limit("pair", max_pairs, "pairs")
+    call probe%limit("drive", max_drives, "drives")
+    call probe%limit("force", max_forces, "forces")
+    call probe%limit("moment", max_moments, "moments")
+    call probe%limit("drive%values", max_list, "values")
+    call probe%limit("step_values", max_deck_array, "values")
     read (source%records, nml=linkage, iostat=probe%ios, iomsg=probe%msg)
     do while (probe%retry(source)) ! on failure: find the line and the assignment
       read (probe%records, nml=linkage, iostat=probe%ios, iomsg=probe%msg)
     end do
     if (probe%failed(source, ctx, error)) return
-    call require_rule(ctx, "title", len_trim(title) <= len(deck%title), "longer than "// &
-      int_str(len(deck%title))//" characters", error)
+    call require_chars(ctx, "title", title, title_chars, error)
     if (allocated(error)) return
     deck%title = title
     call require_whole(ctx, "frame", frame, 0, huge(1), frame_no, error); if (allocated(error)) return
@@ -288,12 +292,12 @@ contains
             "friction is not yet supported in &linkage decks (use an &assur deck for friction)", error)
           return
         end if
-        call require_rule(ctx, p//"name", len_trim(pair(k)%name) <= len(pr%name), "longer than "// &
-          int_str(len(pr%name))//" characters", error)
+        call require_chars(ctx, p//"name", pair(k)%name, name_chars, error)
         if (allocated(error)) return
-        call require_rule(ctx, p//"name", verify(trim(pair(k)%name), &
-          "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_") == 0, &
-          "letters, digits and _ only (it names the columns x_<name>), got '"//trim(pair(k)%name)//"'", error)
+        ! (the name may start with a digit: its columns x_<name> start with a letter)
+        call require_rule(ctx, p//"name", is_name("x"//trim(pair(k)%name)), &
+          "letters (Latin or Cyrillic), digits and _ only (it names the columns x_<name>), got '"// &
+          trim(pair(k)%name)//"'", error)
         if (allocated(error)) return
         pr%name = pair(k)%name(1:len(pr%name))
         if (len_trim(pr%name) == 0) pr%name = "J"//int_str(k)
@@ -581,69 +585,6 @@ contains
       end if
     end subroutine read_schedule
   end subroutine read_linkage_group
-
-  !> Every quoted text but the title fits its variable (64 characters: a pair's name and kind,
-  !> a drive's pair), so that the namelist READ never cuts one (gfortran warns on stderr
-  !> when it does). Records are scanned as the one stream they form (a cut line's pieces in
-  !> order, lines apart; a record's trailing blanks are padding); '!' outside quotes starts a
-  !> comment.
-  subroutine check_text_lengths(source, ctx, error)
-    type(deck_source_t), intent(in) :: source
-    type(deck_context_t), intent(in) :: ctx
-    type(error_t), allocatable, intent(out) :: error
-    integer :: r, j, length, first
-    character :: quote, c
-    logical :: inside, comment
-    character(len=24) :: before
-    inside = .false.
-    quote = " "
-    length = 0
-    first = 0
-    before = ""
-    do r = 1, size(source%records)
-      comment = .false.
-      do j = 1, len_trim(source%records(r))
-        c = source%records(r)(j:j)
-        if (inside) then
-          if (c == quote) then
-            inside = .false.
-            call judge()
-            if (allocated(error)) return
-          else
-            length = length + 1
-          end if
-        else if (.not. comment) then
-          if (c == "!") then
-            comment = .true.
-          else if (c == "'" .or. c == '"') then
-            inside = .true.
-            quote = c
-            length = 0
-            first = r
-          else
-            before = before(2:)//lower(c)
-          end if
-        end if
-      end do
-    end do
-    if (inside) call judge()
-  contains
-    subroutine judge()
-      integer :: line
-      if (length > text_limit .and. index(before, "title") == 0) then
-        line = first
-        if (allocated(source%first_record)) then
-          line = 1
-          do while (line + 1 < size(source%first_record))
-            if (source%first_record(line + 1) > first) exit
-            line = line + 1
-          end do
-        end if
-        call deck_error(ctx, "text on line "//int_str(line), "a quoted text of "//int_str(length)// &
-          " characters: only title may be longer than "//int_str(text_limit), error)
-      end if
-    end subroutine judge
-  end subroutine check_text_lengths
 
   !> A drive's value at the reference position: a turning pair's angle of the driven link's
   !> axis (from the joint to the first other joint of that link at another point, else its

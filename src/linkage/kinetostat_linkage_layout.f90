@@ -15,6 +15,7 @@ module kinetostat_linkage_layout
   use kinetostat_format, only: pad_left, fixed_field
   use kinetostat_labels, only: lang_ru, lang_en
   use kinetostat_text_buffer, only: text_buffer_t
+  use kinetostat_escape, only: table_text
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_sketch, only: sketch_t
   use kinetostat_drawing, only: drawing_t, force_load
@@ -84,8 +85,8 @@ contains
     call read_linkage_deck(source, deck, error)
     if (allocated(error)) return
     call structure_lines(deck%mech, lang, lines)
-    call out%put(" DECK: "//source%path)
-    if (len_trim(deck%title) > 0) call out%put(" TITLE: "//trim(deck%title))
+    call out%put(" DECK: "//table_text(source%path))
+    if (len_trim(deck%title) > 0) call out%put(" TITLE: "//table_text(trim(deck%title)))
     !GCC$ novector
     do i = 1, size(lines)
       call out%put(" "//trim(lines(i)))

@@ -23,8 +23,8 @@ module kinetostat_decimal
   integer, parameter :: i16 = selected_int_kind(38)
   !> Index of the implied DO loops of the tables below.
   integer, private :: i_
-  !> Largest s of the table of 5**s (5**27 < 2**63).
-  integer, parameter :: max_pow5 = 27
+  !> Largest s of the table of 5**s (m * 5**31 < 2**53 * 2**72 fits the 128-bit products).
+  integer, parameter :: max_pow5 = 31
   !> 5**s, s = 0..max_pow5.
   integer(i16), parameter :: pow5(0:max_pow5) = [(5_i16**i_, i_ = 0, max_pow5)]
   !> Largest t of the table of 10**t in 128 bits.
@@ -340,7 +340,10 @@ contains
     logical, intent(out), optional :: fits
     character(len=scratch_len) :: body, wide
     integer :: n, status, first
+    logical :: done
     if (present(fits)) then
+      call fixed_fits(x, d, text, fits, done)
+      if (done) return
       call fixed_body(x, d, scratch_len, body, n, status)
       if (status == body_fallback) then
         call write_f(x, d, wide)
@@ -362,6 +365,65 @@ contains
       call write_f(x, d, text)
     end select
   end subroutine edit_f
+
+  !> edit_f's form with `fits` in one pass where |x| * 10**d rounds below 2**63 (every
+  !> table field): the digits go straight into `text` from its right end (`done`); outside
+  !> that range `done` is false and nothing is written. Up to 4 decimals (every table field)
+  !> the product m * 5**d fits 64 bits and is rounded there; no division by a variable.
+  pure subroutine fixed_fits(x, d, text, fits, done)
+    real(wp), intent(in) :: x
+    integer, intent(in) :: d
+    character(*), intent(inout) :: text
+    logical, intent(out) :: fits, done
+    !> Decimals whose m * 5**d fits 64 bits (5**4 < 2**10).
+    integer, parameter :: short_decimals = 4
+    integer(int64) :: m, q, p, rem, half
+    integer(i16) :: q16
+    integer :: ex, n, nd, at, w, sh, i
+    logical :: negative, ok
+    done = .false.
+    fits = .false.
+    if (d < 0 .or. d > 18) return
+    call split(x, negative, m, ex)
+    sh = ex + d
+    if (d <= short_decimals .and. sh < 0 .and. sh > -63) then
+      p = m * int(pow5(d), int64)
+      q = shiftr(p, -sh)
+      rem = p - shiftl(q, -sh)
+      half = shiftl(1_int64, -sh - 1)
+      if (rem > half .or. (rem == half .and. btest(q, 0))) q = q + 1
+    else
+      call scaled_round(m, ex, d, q16, ok)
+      if (.not. ok .or. q16 > int(huge(1_int64), i16)) return
+      q = int(q16, int64)
+    end if
+    done = .true.
+    ! the digits of q, at least d + 1 of them (the leading zero of |x| < 1: there is room)
+    nd = max(digit_count(q), d + 1)
+    n = nd + 1
+    if (negative) n = n + 1
+    w = len(text)
+    fits = n < w
+    if (.not. fits) return
+    ! from the right end, a character at a time (no library call for a few bytes)
+    at = w
+    do i = 1, nd
+      if (i == d + 1) then
+        text(at:at) = "."
+        at = at - 1
+      end if
+      text(at:at) = achar(48 + int(mod(q, 10_int64)))
+      q = q / 10_int64
+      at = at - 1
+    end do
+    if (negative) then
+      text(at:at) = "-"
+      at = at - 1
+    end if
+    do i = 1, at
+      text(i:i) = " "
+    end do
+  end subroutine fixed_fits
 
   !> text = x written by the compiler's WRITE with Fw.d, w = len(text) (outside the fast path).
   pure subroutine write_f(x, d, text)
@@ -393,8 +455,14 @@ contains
     call scaled_round(m, ex, d, q, ok)
     if (.not. ok) return
     if (q >= pow10(18 + d)) return        ! integer part of 19 digits or more
-    int_part = int(q / pow10(d), int64)
-    frac_part = int(q - int(int_part, i16) * pow10(d), int64)
+    if (q <= int(huge(1_int64), i16)) then
+      ! (64-bit division: the common case, several times faster than the 128-bit one)
+      int_part = int(q, int64) / int(pow10(d), int64)
+      frac_part = int(q, int64) - int_part * int(pow10(d), int64)
+    else
+      int_part = int(q / pow10(d), int64)
+      frac_part = int(q - int(int_part, i16) * pow10(d), int64)
+    end if
     if (negative) then
       n = 1
       body(1:1) = "-"
@@ -413,7 +481,9 @@ contains
   end subroutine fixed_body
 
   !> Append x in ESw.dEe form without leading blanks to buf at pos+1.. (pos advanced):
-  !> the text of adjustl(ES(d+e+6).dEe) for a CSV cell or a JSON number.
+  !> the text of adjustl(ES(d+e+6).dEe) for a CSV cell or a JSON number. The three-digit
+  !> exponent form of every CSV cell and JSON number (e = 3) is written straight into buf
+  !> (significant_digits); anything else goes through exponent_body.
   pure subroutine put_es_compact(x, d, e, buf, pos)
     !> Finite value.
     real(wp), intent(in) :: x
@@ -426,7 +496,38 @@ contains
     !> Characters in use.
     integer, intent(inout) :: pos
     character(len=scratch_len) :: body
-    integer :: w, first, n, status
+    integer(int64) :: m, q
+    integer :: w, first, n, status, ex, k, p, a
+    logical :: negative, ok
+    if (e == 3 .and. d >= 1 .and. d < max_digits) then
+      call split(x, negative, m, ex)
+      ok = .true.
+      k = 0
+      q = 0
+      if (m /= 0) call significant_digits(m, ex, d + 1, q, k, ok)
+      if (ok) then
+        p = pos
+        if (negative) then
+          p = p + 1
+          buf(p:p) = "-"
+        end if
+        call put_digits(q, d + 1, buf(p + 2:p + d + 2))
+        buf(p + 1:p + 1) = buf(p + 2:p + 2)
+        buf(p + 2:p + 2) = "."
+        p = p + d + 2
+        if (k < 0) then
+          buf(p + 1:p + 2) = "E-"
+        else
+          buf(p + 1:p + 2) = "E+"
+        end if
+        a = abs(k)
+        buf(p + 3:p + 3) = achar(48 + a / 100)
+        a = mod(a, 100)
+        buf(p + 4:p + 5) = digit_pairs(2 * a + 1:2 * a + 2)
+        pos = p + 5
+        return
+      end if
+    end if
     w = d + e + 6
     call exponent_body(x, d, e, .true., w, body, n, status)
     if (status /= body_ok) then
@@ -438,6 +539,68 @@ contains
     buf(pos + 1:pos + n) = body(1:n)
     pos = pos + n
   end subroutine put_es_compact
+
+  !> round_significant in one pass (no second rounding when the first estimate of the
+  !> exponent is one short): |x| = m * 2**e (m /= 0) rounded to n significant digits, q with
+  !> 10**(n-1) <= q < 10**n, and the decimal exponent k of its first digit; ok false outside
+  !> the exact 128-bit fast path (|x| below ~1e-15 or from ~1e13 up; the caller falls back).
+  pure subroutine significant_digits(m, e, n, q, k, ok)
+    integer(int64), intent(in) :: m
+    integer, intent(in) :: e, n
+    integer(int64), intent(out) :: q
+    integer, intent(out) :: k
+    logical, intent(out) :: ok
+    integer(i16) :: p, t, rem, half
+    integer(int64) :: r
+    integer :: s, sh, top
+    !> Where x * 10**s lies between t and t + 1: 0 on t, 1 below t + 1/2, 2 on it, 3 above.
+    integer :: fraction
+    ok = .false.
+    q = 0
+    top = e + int(bit_size(m)) - 1 - leadz(m)   ! 2**top <= |x| < 2**(top + 1)
+    ! the exponent, or one short of it: floor(top * log10(2)), exact for |top| <= 1200
+    k = shifta(top * 78913, 18)
+    s = n - 1 - k
+    if (s < 0 .or. s > max_pow5) return
+    p = int(m, i16) * pow5(s)
+    sh = e + s
+    if (sh >= 0) then
+      if (bit_size(p) - leadz(p) + sh > 126) return
+      t = shiftl(p, sh)
+      fraction = 0
+    else
+      sh = -sh
+      if (sh > 125) return
+      t = shiftr(p, sh)
+      rem = p - shiftl(t, sh)
+      half = shiftl(1_i16, sh - 1)
+      if (rem == 0) then
+        fraction = 0
+      else if (rem < half) then
+        fraction = 1
+      else if (rem == half) then
+        fraction = 2
+      else
+        fraction = 3
+      end if
+    end if
+    ! t < 2 * 10**n <= 2 * 10**17: int64 from here on
+    q = int(t, int64)
+    if (q >= int(pow10(n), int64)) then
+      ! |x| >= 10**(k+1): one digit fewer of x * 10**s, rounded from q and what lay below it
+      r = mod(q, 10_int64)
+      q = q / 10_int64
+      k = k + 1
+      if (r > 5 .or. (r == 5 .and. (fraction > 0 .or. btest(q, 0)))) q = q + 1
+    else if (fraction == 3 .or. (fraction == 2 .and. btest(q, 0))) then
+      q = q + 1
+    end if
+    if (q == int(pow10(n), int64)) then    ! rounded up to the next power of ten
+      q = int(pow10(n - 1), int64)
+      k = k + 1
+    end if
+    ok = .true.
+  end subroutine significant_digits
 
   !> Append the whole number q (any sign) to buf at pos+1.. (pos advanced), as I0 prints it.
   pure subroutine put_whole(q, buf, pos)

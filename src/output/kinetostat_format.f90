@@ -14,7 +14,7 @@ module kinetostat_format
   private
   public :: fixed_field, exp_field, int_field, full_number, whole_number, cell_number
   public :: echo_number, echo_array_number, footer_number, limit_number, pad_right, pad_left, display_width
-  public :: put_cell, put_fixed, cell_room, fixed_number, short_number, trimmed_es
+  public :: put_cell, put_cells, put_fixed, cell_room, fixed_number, short_number, trimmed_es
 
   ! The edit descriptors of the policy (kinetostat_decimal writes them exactly as the
   ! compiler's formatted WRITE would, only faster):
@@ -31,6 +31,11 @@ module kinetostat_format
   integer, parameter :: cell_room = 24
   !> Width of the scratch buffer for one field.
   integer, parameter :: scratch_len = 64
+  !> Index of the implied DO loop below.
+  integer, private :: i_
+  !> 0.5 * 10**(-d), d = 0..18: half a unit of the last decimal of a fixed-point field (the
+  !> same numbers as the expression: 10**d is exact, its reciprocal correctly rounded).
+  real(wp), parameter :: half_units(0:18) = [(0.5_wp / 10.0_wp**i_, i_ = 0, 18)]
 
 contains
 
@@ -64,7 +69,11 @@ contains
     fits = .false.
     ! a value that rounds to zero at these decimals is printed as 0.00, never -0.00
     y = x + 0.0_wp
-    if (abs(x) < 0.5_wp * 10.0_wp**(-decimals)) y = 0.0_wp
+    if (decimals >= 0 .and. decimals <= ubound(half_units, 1)) then
+      if (abs(x) < half_units(decimals)) y = 0.0_wp
+    else if (abs(x) < 0.5_wp * 10.0_wp**(-decimals)) then
+      y = 0.0_wp
+    end if
     if (abs(x) < 1.0e30_wp) call edit_f(y, decimals, text, fits)
     if (.not. fits) call exponent_text(x, text)
   end subroutine fixed_text
@@ -200,6 +209,47 @@ contains
     call out%reserve(cell_room)
     call put_cell_text(x, whole, out%data, out%length)
   end subroutine put_cell
+
+  !> Append the cells of one row (no newline): cell_number of row(columns(i)) for every i,
+  !> `separator` between them, `void_text` instead of a cell with no value (void_row and
+  !> voidable(i)). Room is made once for the whole row.
+  pure subroutine put_cells(out, row, columns, whole, voidable, void_row, separator, void_text)
+    !> Where the text goes.
+    type(text_buffer_t), intent(inout) :: out
+    !> The row's values (finite where written).
+    real(wp), intent(in) :: row(:)
+    !> Indices into `row` of the cells, in order.
+    integer, intent(in) :: columns(:)
+    !> Per cell: a column of whole numbers.
+    logical, intent(in) :: whole(:)
+    !> Per cell: a column that has no value in a void row.
+    logical, intent(in) :: voidable(:)
+    !> Whether the row is void.
+    logical, intent(in) :: void_row
+    !> Text between two cells.
+    character(*), intent(in) :: separator
+    !> Text of a cell with no value.
+    character(*), intent(in) :: void_text
+    integer :: i, n, room
+    room = size(columns) * (max(cell_room, len(void_text)) + len(separator))
+    call out%reserve(room)
+    n = out%length
+    do i = 1, size(columns)
+      if (i > 1) then
+        out%data(n + 1:n + len(separator)) = separator
+        n = n + len(separator)
+      end if
+      if (void_row) then
+        if (voidable(i)) then
+          out%data(n + 1:n + len(void_text)) = void_text
+          n = n + len(void_text)
+          cycle
+        end if
+      end if
+      call put_cell_text(row(columns(i)), whole(i), out%data, n)
+    end do
+    out%length = n
+  end subroutine put_cells
 
   !> Append fixed_field(x, width, decimals) to the output (no newline).
   pure subroutine put_fixed(out, x, width, decimals)

@@ -6,10 +6,10 @@ module kinetostat_json_writer
   use kinetostat_kinds, only: wp
   use kinetostat_step_table, only: step_table_t, echo_record_t, echo_cursor_t, column_kind_names, &
     col_component, echo_real_kind, echo_int_kind, echo_logical_kind, echo_array_kind, echo_text_kind, echo_heading_kind
-  use kinetostat_format, only: full_number, put_cell, cell_room
+  use kinetostat_format, only: full_number, put_cell, put_cells, cell_room
   use kinetostat_text_buffer, only: text_buffer_t
-  use kinetostat_text, only: utf8_length
-  use kinetostat_row_blocks, only: put_row_blocks
+  use kinetostat_escape, only: json_string
+  use kinetostat_row_blocks, only: put_row_blocks, sink_i
   implicit none
   private
   public :: write_json, json_string, put_run_identity, put_run_verdict
@@ -21,7 +21,7 @@ contains
   !> part at a time: up to a chunk of an echoed array's values, then it returns with
   !> head%done false for the caller to drain `out`, and goes on when called again; the rows
   !> come once head%done.
-  subroutine write_json(title, table, out, head)
+  subroutine write_json(title, table, out, head, sink)
     !> Title of the mechanism (as the legacy table prints it).
     character(*), intent(in) :: title
     !> Finite results.
@@ -30,9 +30,12 @@ contains
     type(text_buffer_t), intent(inout) :: out
     !> Where the head is (written whole when absent).
     type(echo_cursor_t), intent(inout), optional :: head
+    !> Takes the text so far while the rows are formatted in parallel (see put_row_blocks).
+    procedure(sink_i), optional :: sink
     type(echo_cursor_t) :: whole_head
     character(len=:), allocatable :: line
-    logical, allocatable :: whole(:)
+    logical, allocatable :: whole(:), voidable(:)
+    integer, allocatable :: columns(:)
     integer :: i, c, last
     logical :: shown(size(table%columns))
     last = 0
@@ -50,11 +53,16 @@ contains
         end do
       end if
     end if
-    allocate (whole(size(table%columns)))
+    allocate (columns(0))
     do c = 1, size(table%columns)
-      whole(c) = table%is_whole(c)
+      if (shown(c)) columns = [columns, c]
     end do
-    call put_row_blocks(table%row_count(), size(table%columns) * (cell_room + 2) + 8, put_rows, out)
+    allocate (whole(size(columns)), voidable(size(columns)))
+    do c = 1, size(columns)
+      whole(c) = table%is_whole(columns(c))
+      voidable(c) = table%columns(columns(c))%voidable
+    end do
+    call put_row_blocks(table%row_count(), size(table%columns) * (cell_room + 2) + 8, put_rows, out, sink)
     if (.not. table%last_block()) return
     call out%put("  ],")
     if (allocated(table%summary)) then
@@ -126,23 +134,13 @@ contains
     subroutine put_rows(first_row, last_row, part)
       integer, intent(in) :: first_row, last_row
       type(text_buffer_t), intent(inout) :: part
-      integer :: k, c
-      logical :: first
+      integer :: k
       ! room for every row at once (no copying while the buffer grows)
       call part%reserve((last_row - first_row + 1) * (size(table%columns) * (cell_room + 2) + 8))
       do k = first_row, last_row
         call part%append("    [")
-        first = .true.
-        do c = 1, size(table%columns)
-          if (.not. shown(c)) cycle
-          if (.not. first) call part%append(", ")
-          first = .false.
-          if (table%void_cell(c, k)) then
-            call part%append("null") ! no value (a jammed cam follower's forces)
-            cycle
-          end if
-          call put_cell(part, table%rows(c, k), whole(c))
-        end do
+        ! no value (a jammed cam follower's forces): null
+        call put_cells(part, table%rows(:, k), columns, whole, voidable, table%is_void(k), ", ", "null")
         if (table%row_offset + k < max(table%total_rows, table%row_count())) then
           call part%append("],")
         else
@@ -261,35 +259,5 @@ contains
     if (e%overridden) text = text(1:len(text) - 1)//', "overridden": true}'
     call out%append(text)
   end subroutine put_echo_object
-
-  !> A JSON string literal: quotes, backslashes, control characters and bytes that are not
-  !> valid UTF-8 escaped (\u00XX); valid UTF-8 kept.
-  pure function json_string(s) result(text)
-    !> Text.
-    character(*), intent(in) :: s
-    character(len=:), allocatable :: text
-    character(len=6) :: esc
-    integer :: i, c, n
-    text = '"'
-    i = 1
-    do while (i <= len(s))
-      c = iachar(s(i:i))
-      n = utf8_length(s, i)
-      if (s(i:i) == '"' .or. s(i:i) == '\') then
-        text = text//'\'//s(i:i)
-      else if (c < 32 .or. c == 127 .or. n == 0) then
-        ! a control character, or a byte that is not part of valid UTF-8 (as its Latin-1
-        ! character, so that the file stays valid UTF-8 and valid JSON)
-        write (esc, '("\u",z4.4)') c
-        text = text//esc
-      else
-        text = text//s(i:i + n - 1)
-        i = i + n
-        cycle
-      end if
-      i = i + 1
-    end do
-    text = text//'"'
-  end function json_string
 
 end module kinetostat_json_writer

@@ -1,24 +1,25 @@
 !> Rows of an output formatted in parallel: with OpenMP and more than one thread
-!> (OMP_NUM_THREADS > 1), the rows are cut into blocks, each block formatted into a buffer of
-!> its own by one thread, and the buffers appended in row order, so the text is byte for
-!> byte the one a single thread writes; blocks go a wave at a time, so the buffers stay
-!> small. With one thread (or without OpenMP) the rows go straight into the output.
+!> (OMP_NUM_THREADS > 1), the rows are cut into blocks, each block formatted by one thread
+!> into a buffer of its own and appended in row order (an OpenMP ordered section, while
+!> the other threads format the next blocks), so the text is byte for byte the one a single
+!> thread writes and the buffers stay small. With one thread (or without OpenMP) the rows go
+!> straight into the output.
 module kinetostat_row_blocks
-  !$ use omp_lib, only: omp_get_max_threads
+  !$ use omp_lib, only: omp_get_max_threads, omp_get_thread_num
   use, intrinsic :: iso_fortran_env, only: int64
   use kinetostat_text_buffer, only: text_buffer_t
   implicit none
   private
-  public :: put_row_blocks, put_row_blocks_two, worker_count, put_rows_i, put_rows_two_i
+  public :: put_row_blocks, put_row_blocks_two, worker_count, put_rows_i, put_rows_two_i, sink_i
 
   !> Fewest rows worth a thread: below it the rows go out serially.
   integer, parameter :: min_rows_per_thread = 256
-  !> Rows of a block: the text of one wave of blocks (threads * blocks_per_thread of them)
-  !> is all the memory the parallel formatting adds (about 6 MB for 2 threads).
+  !> Rows of a block: the text of one block per thread is all the memory the parallel
+  !> formatting adds (about 3 MB for 2 threads with the kinematics columns).
   integer, parameter :: rows_per_block = 2048
   !> Most room reserved at once, bytes (1 GiB; the buffer grows beyond it as needed).
   integer(int64), parameter :: max_reserve = 1073741824_int64
-  !> Blocks per thread in a wave (more, smaller blocks even out the threads' loads).
+  !> Blocks per thread at least (more, smaller blocks even out the threads' loads).
   integer, parameter :: blocks_per_thread = 4
 
   abstract interface
@@ -44,6 +45,14 @@ module kinetostat_row_blocks
       !> Where the second section's text goes.
       type(text_buffer_t), intent(inout) :: later
     end subroutine put_rows_two_i
+
+    !> Takes the text written so far, in row order (it may move it elsewhere and empty `out`).
+    subroutine sink_i(out)
+      import :: text_buffer_t
+      implicit none
+      !> The text so far.
+      type(text_buffer_t), intent(inout) :: out
+    end subroutine sink_i
   end interface
 
 contains
@@ -55,18 +64,22 @@ contains
   end function worker_count
 
   !> Rows 1 to `n_rows` into `out`, formatted by `put_rows` in blocks (in parallel with
-  !> more than one thread, a wave of blocks at a time), in row order.
-  subroutine put_row_blocks(n_rows, row_room, put_rows, out)
+  !> more than one thread), in row order. With `sink`, it is called with `out` after every
+  !> block appended (in row order, while the other threads format the next blocks), so that
+  !> writing the text out overlaps the formatting.
+  subroutine put_row_blocks(n_rows, row_room, put_rows, out, sink)
     !> Number of rows.
     integer, intent(in) :: n_rows
-    !> Most bytes a row takes (room is made in `out` for all rows at once).
+    !> Most bytes a row takes.
     integer, intent(in) :: row_room
     !> Formats a range of rows; it must only read shared data (it runs in several threads).
     procedure(put_rows_i) :: put_rows
     !> Where the text goes.
     type(text_buffer_t), intent(inout) :: out
+    !> Takes the text so far (e.g. to the spool's file).
+    procedure(sink_i), optional :: sink
     type(text_buffer_t) :: no_later
-    call put_row_blocks_two(n_rows, row_room, put_both, out, no_later)
+    call put_row_blocks_two(n_rows, row_room, put_both, out, no_later, sink)
   contains
     !> The one section's rows (nothing goes to `later`).
     subroutine put_both(first, last, part, later)
@@ -78,12 +91,12 @@ contains
   end subroutine put_row_blocks
 
   !> put_row_blocks for a layout that writes two sections over the same rows: each block's
-  !> text of each section into a buffer of its own, appended in row order to `out` and to
-  !> `later`.
-  subroutine put_row_blocks_two(n_rows, row_room, put_rows, out, later)
+  !> text of each section into a buffer of its thread, appended in row order to `out` and to
+  !> `later` (`sink`, if given, is called with `out` after each block).
+  subroutine put_row_blocks_two(n_rows, row_room, put_rows, out, later, sink)
     !> Number of rows.
     integer, intent(in) :: n_rows
-    !> Most bytes a row takes in `out` (room is made in `out` for all rows at once).
+    !> Most bytes a row takes in `out`.
     integer, intent(in) :: row_room
     !> Formats a range of rows; it must only read shared data (it runs in several threads).
     procedure(put_rows_two_i) :: put_rows
@@ -91,33 +104,34 @@ contains
     type(text_buffer_t), intent(inout) :: out
     !> Where the second section's text goes.
     type(text_buffer_t), intent(inout) :: later
+    !> Takes the text of `out` so far (e.g. to the spool's file).
+    procedure(sink_i), optional :: sink
     type(text_buffer_t), allocatable :: parts(:), later_parts(:)
-    integer :: threads, block_rows, n_blocks, wave, first_block, last_block, b
+    integer :: threads, block_rows, n_blocks, b, me
     threads = min(worker_count(), n_rows / min_rows_per_thread)
     if (threads <= 1) then
       call put_rows(1, n_rows, out, later)
       return
     end if
-    call out%reserve(int(min(int(n_rows, int64) * row_room, max_reserve)))
-    wave = blocks_per_thread * threads
-    block_rows = min(rows_per_block, (n_rows + wave - 1) / wave)
+    if (.not. present(sink)) call out%reserve(int(min(int(n_rows, int64) * row_room, max_reserve)))
+    block_rows = min(rows_per_block, (n_rows + blocks_per_thread * threads - 1) / (blocks_per_thread * threads))
     n_blocks = (n_rows + block_rows - 1) / block_rows
-    allocate (parts(wave), later_parts(wave))
-    do first_block = 1, n_blocks, wave
-      last_block = min(n_blocks, first_block + wave - 1)
-      !$omp parallel do schedule(dynamic, 1) num_threads(threads)
-      do b = first_block, last_block
-        parts(b - first_block + 1)%length = 0
-        later_parts(b - first_block + 1)%length = 0
-        call put_rows((b - 1) * block_rows + 1, min(n_rows, b * block_rows), parts(b - first_block + 1), &
-                      later_parts(b - first_block + 1))
-      end do
-      !$omp end parallel do
-      do b = 1, last_block - first_block + 1
-        if (parts(b)%length > 0) call out%append(parts(b)%data(1:parts(b)%length))
-        if (later_parts(b)%length > 0) call later%append(later_parts(b)%data(1:later_parts(b)%length))
-      end do
+    ! one buffer per thread: a thread formats its block, appends it in row order, then the next
+    allocate (parts(0:threads - 1), later_parts(0:threads - 1))
+    me = 0
+    !$omp parallel do schedule(dynamic, 1) ordered num_threads(threads) private(me)
+    do b = 1, n_blocks
+      !$ me = omp_get_thread_num()
+      parts(me)%length = 0
+      later_parts(me)%length = 0
+      call put_rows((b - 1) * block_rows + 1, min(n_rows, b * block_rows), parts(me), later_parts(me))
+      !$omp ordered
+      if (parts(me)%length > 0) call out%append(parts(me)%data(1:parts(me)%length))
+      if (later_parts(me)%length > 0) call later%append(later_parts(me)%data(1:later_parts(me)%length))
+      if (present(sink)) call sink(out)
+      !$omp end ordered
     end do
+    !$omp end parallel do
   end subroutine put_row_blocks_two
 
 end module kinetostat_row_blocks

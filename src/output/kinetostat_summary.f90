@@ -3,16 +3,19 @@
 !> the input angle; the work of the driving moment (or force) over the run; and the warning
 !> when the step is too coarse to catch a force peak next to a load that switches on or off.
 module kinetostat_summary
+  !$ use omp_lib, only: omp_get_max_threads
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use kinetostat_kinds, only: wp, deg_to_rad
   use kinetostat_text, only: int_str, lower, without_blanks
   use kinetostat_step_table, only: step_table_t, col_force, col_force_angle, col_moment, column_tally_t, &
     edge_point_t
   use kinetostat_format, only: cell_number, trimmed_es
+  use kinetostat_escape, only: csv_field
   implicit none
   private
   public :: column_stats_t, column_stats, summarized, drive_work, coarse_step_warning, tally_rows
-  public :: summary_header, summary_row, coarse_step_limit, dynamics_prefix, override_fields, csv_text
+  public :: summary_header, summary_row, summary_values, coarse_step_limit, dynamics_prefix, override_fields, &
+    override_has_column
 
   !> Prefix of the dynamics figures' columns in a summary (dyn_delta, dyn_M_d): their names
   !> are also deck variables (delta, a --vary column) and column summaries (J_red_max).
@@ -28,6 +31,9 @@ module kinetostat_summary
   !> Scale of the input (or driver coordinate) steps in those sums: a step below 3.6e308
   !> becomes one below 1e140, so a product with a scaled value stays below 1.4e294.
   real(wp), parameter :: step_scale = scale(1.0_wp, -560)
+  !> A trapezoid term below this (2**40) is a subnormal number once scaled by value_scale and
+  !> step_scale (2**-1072): such terms stay out of the scaled sums.
+  real(wp), parameter :: tiny_term = scale(1.0_wp, 40)
 
   !> Extremes and mean of one column over a run.
   type :: column_stats_t
@@ -69,14 +75,22 @@ contains
   !> pipeline calls this for every block) to the run's tallies: per column its extremes
   !> and the row and input coordinate of each, its sum and trapezoid sum; the largest
   !> input step; the driver's work; the input coordinate next to the load edges. The sums
-  !> run in row order, so they are the same whatever the blocks.
-  pure subroutine tally_rows(table)
+  !> run in row order, so they are the same whatever the blocks and threads. The columns
+  !> are tallied each on its own (the same sums as row by row), in parallel with threads.
+  subroutine tally_rows(table)
     !> The results (the tallies are updated).
     type(step_table_t), intent(inout) :: table
-    integer :: k, c, row, d, nc
-    real(wp) :: x, v, tie, coordinate
+    !> Rows tallied column by column at a time.
+    integer, parameter :: tile_rows = 256
+    !> Fewest rows worth a thread.
+    integer, parameter :: min_rows_per_thread = 1024
+    integer :: k, c, row, d, nc, n, k1, k2, part, parts
+    real(wp) :: x, coordinate, last_d, previous_at, before, term
+    real(wp), allocatable :: at(:)
+    logical, allocatable :: void(:)
     logical :: work_known, work_in_rad
     nc = size(table%columns)
+    n = table%row_count()
     if (table%tallied_rows == 0) then
       if (allocated(table%tally)) deallocate (table%tally)
       allocate (table%tally(nc))
@@ -84,13 +98,25 @@ contains
       allocate (table%edge_points(0))
       table%void_rows = 0
     end if
+    if (n == 0) return
     d = 0
     if (allocated(table%driver)) d = table%column_index(table%driver)
     call work_kind(table, d, work_known, work_in_rad)
-    do k = 1, table%row_count()
+    allocate (at(n), void(n))
+    if (table%input_column > 0) then
+      at = table%rows(table%input_column, 1:n)
+    else
+      at = 0.0_wp
+    end if
+    do k = 1, n
+      void(k) = table%is_void(k)
+    end do
+    previous_at = table%last_at
+    last_d = 0.0_wp
+    if (d > 0) last_d = table%tally(d)%last
+    do k = 1, n
       row = table%row_offset + k
-      x = 0.0_wp
-      if (table%input_column > 0) x = table%rows(table%input_column, k)
+      x = at(k)
       coordinate = 0.0_wp
       if (work_known) then
         if (work_in_rad) then
@@ -107,62 +133,39 @@ contains
       else
         table%largest_step = max(table%largest_step, abs(x - table%last_at))
         if (work_known) then
-          table%work2 = table%work2 + (table%rows(d, k) + table%tally(d)%last) * &
-                        (coordinate - table%last_coordinate)
-          table%work2_scaled = table%work2_scaled + (table%rows(d, k) * value_scale + &
-            table%tally(d)%last * value_scale) * (coordinate * step_scale - table%last_coordinate * step_scale)
+          term = (table%rows(d, k) + last_d) * (coordinate - table%last_coordinate)
+          table%work2 = table%work2 + term
+          if (.not. abs(term) < tiny_term) table%work2_scaled = table%work2_scaled + (table%rows(d, k) * value_scale + &
+            last_d * value_scale) * (coordinate * step_scale - table%last_coordinate * step_scale)
         end if
       end if
-      if (table%is_void(k)) table%void_rows = table%void_rows + 1
-      do c = 1, nc
-        v = table%rows(c, k)
-        associate (t => table%tally(c))
-          ! a cell without a value (void row) is left out of the extremes, sums and means
-          if (table%void_cell(c, k)) then
-            t%last_counted = .false.
-            cycle
-          end if
-          t%largest = max(t%largest, abs(v))
-          if (t%count == 0) then
-            t = column_tally_t(max=v, min=v, max_row=row, min_row=row, max_at=x, min_at=x, peak=v, peak_row=row, &
-                               peak_at=x, largest=abs(v), total=v, area2=0.0_wp, last=v, count=1, span=0.0_wp, &
-                               last_counted=.true., total_scaled=v * value_scale, area2_scaled=0.0_wp)
-            cycle
-          end if
-          tie = tie_rel * t%largest
-          if (v > t%max + tie) then
-            t%max = v
-            t%max_row = row
-            t%max_at = x
-          end if
-          if (v < t%min - tie) then
-            t%min = v
-            t%min_row = row
-            t%min_at = x
-          end if
-          if (v > t%peak) then
-            t%peak = v
-            t%peak_row = row
-            t%peak_at = x
-          end if
-          t%total = t%total + v
-          t%count = t%count + 1
-          if (t%last_counted) then
-            t%area2 = t%area2 + (v + t%last) * (x - table%last_at)
-            t%area2_scaled = t%area2_scaled + (v * value_scale + t%last * value_scale) * &
-                             (x * step_scale - table%last_at * step_scale)
-            t%span = t%span + (x - table%last_at)
-          end if
-          t%total_scaled = t%total_scaled + v * value_scale
-          t%last = v
-          t%last_counted = .true.
-        end associate
-      end do
+      if (void(k)) table%void_rows = table%void_rows + 1
+      ! the driver's last counted value (a void cell leaves it), as its column's tally keeps it
+      if (d > 0) then
+        if (.not. (void(k) .and. table%columns(d)%voidable)) last_d = table%rows(d, k)
+      end if
       if (near_load_edge(row)) table%edge_points = [table%edge_points, edge_point_t(row, x)]
       table%last_at = x
       table%last_coordinate = coordinate
       table%tallied_rows = row
     end do
+    ! the columns in `parts` contiguous shares (one per thread with OpenMP), each a tile of
+    ! rows at a time, all its columns over the tile (the tile stays in the cache)
+    parts = 1
+    !$ parts = max(1, min(omp_get_max_threads(), nc, n / min_rows_per_thread))
+    !$omp parallel do schedule(static) num_threads(parts) private(c, k1, k2, before) if (parts > 1)
+    do part = 1, parts
+      before = previous_at
+      do k1 = 1, n, tile_rows
+        k2 = min(n, k1 + tile_rows - 1)
+        if (k1 > 1) before = at(k1 - 1)
+        do c = (part - 1) * nc / parts + 1, part * nc / parts
+          call tally_column(table%tally(c), table%rows(c, k1:k2), at(k1:k2), void(k1:k2), table%columns(c)%voidable, &
+                            table%row_offset + k1 - 1, before)
+        end do
+      end do
+    end do
+    !$omp end parallel do
   contains
     !> Whether a load switches between this row and the one before or after it.
     pure logical function near_load_edge(r)
@@ -174,6 +177,78 @@ contains
       if (r < size(table%load_changes)) near_load_edge = near_load_edge .or. table%load_changes(r + 1)
     end function near_load_edge
   end subroutine tally_rows
+
+  !> One column's tally over the rows of a block, in row order (see tally_rows).
+  pure subroutine tally_column(t, values, at, void, voidable, row_offset, previous_at)
+    !> The column's tally so far (updated).
+    type(column_tally_t), intent(inout) :: t
+    !> The column's values in the block's rows.
+    real(wp), intent(in) :: values(:)
+    !> The input coordinate of each row (0 without an input column).
+    real(wp), intent(in) :: at(:)
+    !> Whether the row is void.
+    logical, intent(in) :: void(:)
+    !> Whether the column has no value in a void row (such a cell is left out).
+    logical, intent(in) :: voidable
+    !> Rows of the run before the block.
+    integer, intent(in) :: row_offset
+    !> Input coordinate of the row before the block.
+    real(wp), intent(in) :: previous_at
+    real(wp) :: v, x, last_at, tie, term
+    integer :: k, row
+    last_at = previous_at
+    do k = 1, size(values)
+      v = values(k)
+      x = at(k)
+      row = row_offset + k
+      ! a cell without a value (void row) is left out of the extremes, sums and means
+      if (voidable .and. void(k)) then
+        t%last_counted = .false.
+        last_at = x
+        cycle
+      end if
+      t%largest = max(t%largest, abs(v))
+      if (t%count == 0) then
+        t = column_tally_t(max=v, min=v, max_row=row, min_row=row, max_at=x, min_at=x, peak=v, peak_row=row, &
+                           peak_at=x, largest=abs(v), total=v, area2=0.0_wp, last=v, count=1, span=0.0_wp, &
+                           last_counted=.true., total_scaled=v * value_scale, area2_scaled=0.0_wp)
+        last_at = x
+        cycle
+      end if
+      tie = tie_rel * t%largest
+      if (v > t%max + tie) then
+        t%max = v
+        t%max_row = row
+        t%max_at = x
+      end if
+      if (v < t%min - tie) then
+        t%min = v
+        t%min_row = row
+        t%min_at = x
+      end if
+      if (v > t%peak) then
+        t%peak = v
+        t%peak_row = row
+        t%peak_at = x
+      end if
+      t%total = t%total + v
+      t%count = t%count + 1
+      if (t%last_counted) then
+        term = (v + t%last) * (x - last_at)
+        t%area2 = t%area2 + term
+        ! (a term whose scaled value would be subnormal is left out of the scaled sum: it is
+        ! below 1e-290 of any sum that overflowed, the only one that sum is used for, and
+        ! subnormal arithmetic would take most of the run's summary time)
+        if (.not. abs(term) < tiny_term) t%area2_scaled = t%area2_scaled + (v * value_scale + t%last * value_scale) * &
+                                                          (x * step_scale - last_at * step_scale)
+        t%span = t%span + (x - last_at)
+      end if
+      t%total_scaled = t%total_scaled + v * value_scale
+      t%last = v
+      t%last_counted = .true.
+      last_at = x
+    end do
+  end subroutine tally_column
 
   !> Whether the driver's work is defined (a driving moment over the input angle in deg, or a
   !> driving force over its coordinate column) and whether its coordinate is the input angle.
@@ -392,53 +467,130 @@ contains
   end function summary_header
 
   !> Summary CSV row of a run (the columns of `summary_header`): override values as given,
-  !> numbers at full precision (as the CSV), "_at" the input angle (or the row number).
+  !> then summary_values, numbers at full precision (as the CSV), whole numbers as such.
   pure function summary_row(table, kinematics) result(line)
     !> The results of one run (at least one row tallied).
     type(step_table_t), intent(in) :: table
     !> Whether the kinematics columns are summarized too (--kinematics).
     logical, intent(in) :: kinematics
     character(len=:), allocatable :: line
-    type(column_stats_t) :: s
-    real(wp) :: work
-    logical :: known, whole
-    integer :: i, c, n
+    real(wp), allocatable :: values(:)
+    logical, allocatable :: whole(:)
+    integer :: i
     line = override_cells(table, 2)
     if (table%single_record) then
       line = line//record_cells(table, 2)
       return
     end if
-    n = table%tallied_rows
-    line = line//int_str(n)
-    if (allocated(table%void_flags)) line = line//","//int_str(table%void_rows)
-    if (table%input_column > 0) line = line//","//cell_number(table%first_at, .false.)// &
-      ","//cell_number(table%last_at, .false.)
+    call summary_values(table, kinematics, values, whole)
+    do i = 1, size(values)
+      if (i > 1) line = line//","
+      line = line//cell_number(values(i), whole(i))
+    end do
+  end function summary_row
+
+  !> The numbers of a run's summary row after its overrides, in the order of
+  !> `summary_header`: rows (and rows left out), the first and last input coordinate, per
+  !> summarized column its largest value and where ("_at": the input coordinate, or the row
+  !> number without one), its smallest and where, its mean; the driver's work; the dynamics
+  !> figures (a one-record run: its record's values, as record_cells). `whole` marks the whole
+  !> numbers (counts, rows, the extremes of a flag or count column), written as such.
+  pure subroutine summary_values(table, kinematics, values, whole)
+    !> The results of one run (at least one row tallied).
+    type(step_table_t), intent(in) :: table
+    !> Whether the kinematics columns are summarized too (--kinematics).
+    logical, intent(in) :: kinematics
+    !> The numbers.
+    real(wp), allocatable, intent(out) :: values(:)
+    !> Which of them are whole numbers.
+    logical, allocatable, intent(out) :: whole(:)
+    type(column_stats_t) :: s
+    real(wp) :: work
+    logical :: known, at_whole
+    integer :: i, c, n
+    if (table%single_record) then
+      ! the record's own values, as record_cells writes them
+      associate (cols => record_columns(table))
+        values = table%rows(cols, 1)
+        whole = [(table%is_whole(cols(i)), i = 1, size(cols))]
+      end associate
+      return
+    end if
+    n = 1
+    if (allocated(table%void_flags)) n = n + 1
+    if (table%input_column > 0) n = n + 2
+    do c = 1, size(table%columns)
+      if (summarized(table, c, kinematics)) n = n + 5
+    end do
+    call drive_work(table, work, known)
+    if (known) n = n + 1
+    if (allocated(table%dynamics)) n = n + size(table%dynamics)
+    allocate (values(n), whole(n))
+    n = 0
+    call add(values, whole, n, real(table%tallied_rows, wp), .true.)
+    if (allocated(table%void_flags)) call add(values, whole, n, real(table%void_rows, wp), .true.)
+    if (table%input_column > 0) then
+      call add(values, whole, n, table%first_at, .false.)
+      call add(values, whole, n, table%last_at, .false.)
+    end if
+    at_whole = table%input_column == 0
     do c = 1, size(table%columns)
       if (.not. summarized(table, c, kinematics)) cycle
       s = column_stats(table, c)
-      whole = table%is_whole(c)
-      line = line//","//cell_number(s%max, whole)//","//at_text(s%max_row, s%max_at)//","// &
-        cell_number(s%min, whole)//","//at_text(s%min_row, s%min_at)//","//cell_number(s%mean, .false.)
+      call add(values, whole, n, s%max, table%is_whole(c))
+      call add(values, whole, n, at_value(s%max_row, s%max_at), at_whole)
+      call add(values, whole, n, s%min, table%is_whole(c))
+      call add(values, whole, n, at_value(s%min_row, s%min_at), at_whole)
+      call add(values, whole, n, s%mean, .false.)
     end do
-    call drive_work(table, work, known)
-    if (known) line = line//","//cell_number(work, .false.)
+    if (known) call add(values, whole, n, work, .false.)
     if (allocated(table%dynamics)) then
       do i = 1, size(table%dynamics)
-        line = line//","//cell_number(table%dynamics(i)%values(1), .false.)
+        call add(values, whole, n, table%dynamics(i)%values(1), .false.)
       end do
     end if
   contains
-    pure function at_text(k, x) result(t)
+    !> values(n + 1) = x, whole(n + 1) = is_whole; n advanced.
+    pure subroutine add(values, whole, n, x, is_whole)
+      real(wp), intent(inout) :: values(:)
+      logical, intent(inout) :: whole(:)
+      integer, intent(inout) :: n
+      real(wp), intent(in) :: x
+      logical, intent(in) :: is_whole
+      n = n + 1
+      values(n) = x
+      whole(n) = is_whole
+    end subroutine add
+    !> Where an extreme is: the input coordinate, or the row number without one.
+    pure real(wp) function at_value(k, x)
       integer, intent(in) :: k
       real(wp), intent(in) :: x
-      character(len=:), allocatable :: t
       if (table%input_column > 0) then
-        t = cell_number(x, .false.)
+        at_value = x
       else
-        t = int_str(k)
+        at_value = real(k, wp)
       end if
-    end function at_text
-  end function summary_row
+    end function at_value
+  end subroutine summary_values
+
+  !> The columns of a one-record run's summary: its CSV columns but those named as an
+  !> override (the override's own column comes first).
+  pure function record_columns(table) result(cols)
+    !> The results of one run (one row).
+    type(step_table_t), intent(in) :: table
+    integer, allocatable :: cols(:)
+    integer :: c, i
+    allocate (cols(0))
+    columns: do c = 1, size(table%columns)
+      if (.not. table%columns(c)%csv) cycle columns
+      if (allocated(table%overrides)) then
+        do i = 1, size(table%overrides)
+          if (override_part(table%overrides(i), 1) == table%columns(c)%name) cycle columns
+        end do
+      end if
+      cols = [cols, c]
+    end do columns
+  end function record_columns
 
   !> The CSV cells of a one-record run (table%single_record): its columns' names (part 1, the
   !> header) or its values (part 2, the row), comma-separated; a column named as an override
@@ -449,25 +601,18 @@ contains
     !> 1: names, 2: values.
     integer, intent(in) :: part
     character(len=:), allocatable :: line
-    integer :: c, i
-    logical :: first
+    integer :: i
     line = ""
-    first = .true.
-    columns: do c = 1, size(table%columns)
-      if (.not. table%columns(c)%csv) cycle columns
-      if (allocated(table%overrides)) then
-        do i = 1, size(table%overrides)
-          if (override_part(table%overrides(i), 1) == table%columns(c)%name) cycle columns
-        end do
-      end if
-      if (.not. first) line = line//","
-      first = .false.
-      if (part == 1) then
-        line = line//table%columns(c)%name
-      else
-        line = line//cell_number(table%rows(c, 1), table%is_whole(c))
-      end if
-    end do columns
+    associate (cols => record_columns(table))
+      do i = 1, size(cols)
+        if (i > 1) line = line//","
+        if (part == 1) then
+          line = line//table%columns(cols(i))%name
+        else
+          line = line//cell_number(table%rows(cols(i), 1), table%is_whole(cols(i)))
+        end if
+      end do
+    end associate
   end function record_cells
 
   !> The CSV cells of the run's overrides (NAME=VALUE), each followed by a comma: their
@@ -492,32 +637,38 @@ contains
     !> 1: names, 2: values.
     integer, intent(in) :: part
     character(len=:), allocatable :: line
+    logical :: has(size(overrides))
     integer :: i
     line = ""
+    has = override_has_column(overrides)
     do i = 1, size(overrides)
-      if (given_later(i)) cycle
-      line = line//csv_text(override_part(overrides(i), part))//","
+      if (has(i)) line = line//csv_field(override_part(overrides(i), part))//","
     end do
-  contains
-    !> Whether a later override sets the same variable (it wins, and names the column).
-    pure logical function given_later(i)
-      integer, intent(in) :: i
-      integer :: j
-      given_later = .false.
+  end function override_fields
+
+  !> Which overrides "NAME=VALUE" have a column of their own in a summary: those whose
+  !> variable no later override sets again (the later one wins, in the deck too).
+  pure function override_has_column(overrides) result(has)
+    !> The overrides, in command-line order.
+    character(*), intent(in) :: overrides(:)
+    logical :: has(size(overrides))
+    integer :: i, j
+    has = .true.
+    do i = 1, size(overrides)
       do j = i + 1, size(overrides)
         if (same_name(override_part(overrides(i), 1), override_part(overrides(j), 1))) then
-          given_later = .true.
-          return
+          has(i) = .false.
+          exit
         end if
       end do
-    end function given_later
-
+    end do
+  contains
     !> Namelist designators compared as the READ does: case and blanks do not count.
     pure logical function same_name(a, b)
       character(*), intent(in) :: a, b
       same_name = without_blanks(lower(a)) == without_blanks(lower(b))
     end function same_name
-  end function override_fields
+  end function override_has_column
 
   !> Part 1 (the name) or 2 (the value) of "NAME=VALUE" (blank padding dropped).
   pure function override_part(text, part) result(t)
@@ -532,22 +683,5 @@ contains
       t = trim(text(eq + 1:))
     end if
   end function override_part
-
-  !> A CSV field: quoted (quotes doubled) when it holds a comma, a quote or a blank.
-  pure function csv_text(text) result(t)
-    character(*), intent(in) :: text
-    character(len=:), allocatable :: t
-    integer :: i
-    if (scan(text, ',"  ') == 0) then
-      t = text
-      return
-    end if
-    t = '"'
-    do i = 1, len(text)
-      if (text(i:i) == '"') t = t//'"'
-      t = t//text(i:i)
-    end do
-    t = t//'"'
-  end function csv_text
 
 end module kinetostat_summary

@@ -11,8 +11,8 @@
 !> or its own), an anchor (start, middle, end), a rotation, a colour, bold or italic.
 !> Layers (the DXF's; SVG ignores them): LINKS, JOINTS, GUIDES, FORCES, TEXT, VPLAN, APLAN,
 !> POLYGONS, LEVER, SCALES, and FRAME (the format's frame, the title block, panels), CHARTS
-!> (axes, grids, curves of diagrams and hodographs). `set_layer` chooses the layer of the
-!> entities that follow.
+!> (axes, grids, curves of diagrams and hodographs), PROFILE (a part's outline for CAD: the
+!> cam's actual profile). `set_layer` chooses the layer of the entities that follow.
 !>
 !> Labels: every text takes its box (the measure of kinetostat_typeset, the one the
 !> legibility test reads back from the SVG); `place_label` puts a label for a point or an
@@ -41,7 +41,7 @@ module kinetostat_sheet
   public :: entity_line, entity_polyline, entity_polygon, entity_rect, entity_circle, entity_arc, entity_text, &
     entity_group, entity_group_end
   public :: layer_links, layer_joints, layer_guides, layer_forces, layer_text, layer_vplan, layer_aplan, &
-    layer_polygons, layer_lever, layer_scales, layer_frame, layer_charts, layer_names
+    layer_polygons, layer_lever, layer_scales, layer_frame, layer_charts, layer_profile, layer_names
   public :: anchor_start, anchor_middle, anchor_end
   public :: line_classes, line_class_t, text_classes, text_class_t, class_stroke_width, class_font_size, &
     arc_points, text_box, frame_left, frame_margin
@@ -49,10 +49,10 @@ module kinetostat_sheet
   !> Layers.
   integer, parameter :: layer_links = 1, layer_joints = 2, layer_guides = 3, layer_forces = 4, layer_text = 5, &
     layer_vplan = 6, layer_aplan = 7, layer_polygons = 8, layer_lever = 9, layer_scales = 10, layer_frame = 11, &
-    layer_charts = 12
+    layer_charts = 12, layer_profile = 13
   !> Their names, in the order of their numbers.
   character(*), parameter :: layer_names(*) = [character(len=8) :: "LINKS", "JOINTS", "GUIDES", "FORCES", "TEXT", &
-    "VPLAN", "APLAN", "POLYGONS", "LEVER", "SCALES", "FRAME", "CHARTS"]
+    "VPLAN", "APLAN", "POLYGONS", "LEVER", "SCALES", "FRAME", "CHARTS", "PROFILE"]
 
   !> Entity kinds.
   integer, parameter :: entity_line = 1, entity_polyline = 2, entity_polygon = 3, entity_rect = 4, &

@@ -5,8 +5,9 @@
 !> - HEADER ($ACADVER AC1009, $INSUNITS 4 = mm, $LIMMIN/$LIMMAX and $EXTMIN/$EXTMAX = the
 !>   paper), TABLES (line types CONTINUOUS and DASHED; the model's layers with their colours),
 !>   ENTITIES, EOF.
-!> - line -> LINE; polyline, polygon, rect -> LINEs; a filled dark polygon of 3 or 4 corners
-!>   (an arrowhead) also a SOLID; circle -> CIRCLE; arc -> ARC; text -> TEXT (height 0.7 of
+!> - line -> LINE; polyline -> POLYLINE (its VERTEXes, SEQEND), a stroked polygon -> a closed
+!>   POLYLINE (flag 70 = 1), rect -> LINEs; a filled dark polygon of 3 or 4 corners (an
+!>   arrowhead) also a SOLID; circle -> CIRCLE; arc -> ARC; text -> TEXT (height 0.7 of
 !>   the font size, the cap height; alignment 72 = 0/1/2 with its point in 11/21; rotation);
 !>   a group -> a comment (999) "kinetostat group CLASS NAME=VALUE ...", its data attributes
 !>   (the mechanism's view: where its position frame sits on the sheet, for read-back).
@@ -14,13 +15,15 @@
 !>   layer's; dashed classes and dash overrides on line type DASHED.
 !> - Text: the typeset runs as one line (kinetostat_typeset's plain_text: F21, a_CB^τ),
 !>   every character beyond ASCII as AutoCAD's \U+XXXX (Φ -> \U+03A6), so the file is ASCII.
-!>   Every text goes through `escaped` (the one place to switch to the program's escaper).
+!>   Every text goes through `escaped`, the program's DXF escaper (kinetostat_escape's
+!>   dxf_text: also control characters as \n, \xNN, a caret as "^ ").
 module kinetostat_sheet_dxf
   use kinetostat_kinds, only: wp
   use kinetostat_format, only: fixed_number
   use kinetostat_text, only: int_str
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_typeset, only: plain_text
+  use kinetostat_escape, only: escaped => dxf_text
   use kinetostat_sheet, only: sheet_t, entity_t, entity_line, entity_polyline, entity_polygon, entity_rect, &
     entity_circle, entity_arc, entity_text, entity_group, anchor_middle, anchor_end, layer_names, line_classes
   implicit none
@@ -28,7 +31,7 @@ module kinetostat_sheet_dxf
   public :: write_sheet_dxf
 
   !> Colours of the layers (AutoCAD colour index), in the order of layer_names.
-  integer, parameter :: layer_colours(*) = [7, 5, 8, 1, 3, 5, 1, 3, 6, 7, 7, 8]
+  integer, parameter :: layer_colours(*) = [7, 5, 8, 1, 3, 5, 1, 3, 6, 7, 7, 8, 7]
   !> Colours the sheets use and their AutoCAD indices.
   character(*), parameter :: known_colours(*) = [character(len=7) :: "#d62728", "#2ca02c", "#1f77b4", "#8c564b", &
     "#ff7f0e", "#9467bd", "#e377c2", "#17becf", "#7f7f7f", "#bcbd22", "#555555", "#777777", "#999999", "#c8c8c8", &
@@ -98,17 +101,13 @@ contains
     do i = 1, sheet%count
       associate (e => sheet%items(i))
         select case (e%kind)
-        case (entity_line, entity_polyline)
-          do k = 1, size(e%x) - 1
-            call line(out, h, e, [e%x(k), e%y(k)], [e%x(k + 1), e%y(k + 1)])
-          end do
+        case (entity_line)
+          call line(out, h, e, [e%x(1), e%y(1)], [e%x(2), e%y(2)])
+        case (entity_polyline)
+          call polyline(out, h, e, .false.)
         case (entity_polygon)
           n = size(e%x)
-          if (stroked(e)) then
-            do k = 1, n
-              call line(out, h, e, [e%x(k), e%y(k)], [e%x(modulo(k, n) + 1), e%y(modulo(k, n) + 1)])
-            end do
-          end if
+          if (stroked(e)) call polyline(out, h, e, .true.)
           if (dark_fill(e) .and. (n == 3 .or. n == 4)) call solid(out, h, e)
         case (entity_rect)
           if (stroked(e)) then
@@ -196,6 +195,35 @@ contains
     call pair(out, 21, num(h - b(2)))
     call pair(out, 31, "0.0")
   end subroutine line
+  !> POLYLINE through the entity's points (closed: flag 70 = 1), its VERTEXes and SEQEND, all
+  !> on its layer.
+  pure subroutine polyline(out, h, e, closed)
+    type(text_buffer_t), intent(inout) :: out
+    real(wp), intent(in) :: h
+    type(entity_t), intent(in) :: e
+    logical, intent(in) :: closed
+    integer :: k, colour
+    call pair(out, 0, "POLYLINE")
+    call pair(out, 8, trim(layer_names(e%layer)))
+    colour = entity_colour(e)
+    if (colour > 0) call pair(out, 62, int_str(colour))
+    if (dashed(e)) call pair(out, 6, "DASHED")
+    call pair(out, 66, "1")
+    call pair(out, 10, "0.0")
+    call pair(out, 20, "0.0")
+    call pair(out, 30, "0.0")
+    call pair(out, 70, merge("1", "0", closed))
+    do k = 1, size(e%x)
+      call pair(out, 0, "VERTEX")
+      call pair(out, 8, trim(layer_names(e%layer)))
+      call pair(out, 10, num(e%x(k)))
+      call pair(out, 20, num(h - e%y(k)))
+      call pair(out, 30, "0.0")
+    end do
+    call pair(out, 0, "SEQEND")
+    call pair(out, 8, trim(layer_names(e%layer)))
+  end subroutine polyline
+
   !> SOLID over a polygon of 3 or 4 corners (a triangle repeats its last corner); DXF's
   !> fourth corner comes before the third.
   pure subroutine solid(out, h, e)
@@ -311,56 +339,5 @@ contains
     character(len=:), allocatable :: t
     t = fixed_number(x, 6)
   end function num
-
-  !> Text for a DXF value: one line, ASCII; a character beyond ASCII as \U+XXXX, a control
-  !> character as a blank. The one place every text of a DXF sheet is escaped.
-  pure function escaped(text) result(safe)
-    character(*), intent(in) :: text
-    character(len=:), allocatable :: safe
-    character(len=*), parameter :: hex_digits = "0123456789ABCDEF"
-    integer :: i, n, c, code, k
-    safe = ""
-    i = 1
-    do while (i <= len(text))
-      c = iachar(text(i:i))
-      if (c < 32 .or. c == 127) then
-        safe = safe//" "
-        i = i + 1
-        cycle
-      end if
-      if (c < 128) then
-        safe = safe//text(i:i)
-        i = i + 1
-        cycle
-      end if
-      ! a UTF-8 sequence: its code point
-      if (c >= 240) then
-        n = 4
-        code = iand(c, 7)
-      else if (c >= 224) then
-        n = 3
-        code = iand(c, 15)
-      else if (c >= 192) then
-        n = 2
-        code = iand(c, 31)
-      else
-        safe = safe//"?"
-        i = i + 1
-        cycle
-      end if
-      if (i + n - 1 > len(text)) then
-        safe = safe//"?"
-        exit
-      end if
-      do k = 1, n - 1
-        code = 64 * code + iand(iachar(text(i + k:i + k)), 63)
-      end do
-      safe = safe//"\U+"
-      do k = 3, 0, -1
-        safe = safe//hex_digits(iand(ishft(code, -4 * k), 15) + 1:iand(ishft(code, -4 * k), 15) + 1)
-      end do
-      i = i + n
-    end do
-  end function escaped
 
 end module kinetostat_sheet_dxf

@@ -7,11 +7,13 @@
 !> two decimals (kinetostat_svg's coord); no transform on anything drawn except a rotated
 !> text's own rotate(). Overrides of a class's style go into a style attribute (CSS beats
 !> presentation attributes), without a class into presentation attributes. Every text and
-!> attribute value goes through `escaped` (the one place to switch to the program's escaper).
+!> attribute value goes through `escaped`, the program's XML escaper (kinetostat_escape's
+!> xml_escape: also control characters and bytes that are not UTF-8 as the visible \xNN).
 module kinetostat_sheet_svg
   use kinetostat_kinds, only: wp
   use kinetostat_text_buffer, only: text_buffer_t
-  use kinetostat_svg, only: xml_escape, coord, svg_polyline_d
+  use kinetostat_svg, only: coord, svg_polyline_d
+  use kinetostat_escape, only: escaped => xml_escape
   use kinetostat_scales, only: scale_number
   use kinetostat_typeset, only: text_run_t, run_base, run_sub, run_sup, sub_size, sub_shift, sup_shift
   use kinetostat_sheet, only: sheet_t, entity_t, entity_line, entity_polyline, entity_polygon, entity_rect, &
@@ -213,13 +215,5 @@ contains
     end do
     line = line//"</text>"
   end function text_element
-
-  !> Text for an XML text node or attribute value: the one place every user-supplied string
-  !> of an SVG sheet is escaped.
-  pure function escaped(text) result(safe)
-    character(*), intent(in) :: text
-    character(len=:), allocatable :: safe
-    safe = xml_escape(text)
-  end function escaped
 
 end module kinetostat_sheet_svg

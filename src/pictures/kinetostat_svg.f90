@@ -7,6 +7,7 @@ module kinetostat_svg
   use kinetostat_kinds, only: wp
   use kinetostat_format, only: fixed_number
   use kinetostat_text_buffer, only: text_buffer_t
+  use kinetostat_escape, only: xml_escape
   implicit none
   private
   public :: svg_open, svg_close, svg_line, svg_path, svg_polyline_d, svg_circle, svg_rect, svg_text, &
@@ -54,31 +55,6 @@ contains
     character(len=:), allocatable :: text
     text = fixed_number(x, coord_decimals)
   end function coord
-
-  !> Text with the five XML special characters escaped.
-  pure function xml_escape(s) result(t)
-    !> Any text (UTF-8 passes through).
-    character(*), intent(in) :: s
-    character(len=:), allocatable :: t
-    integer :: i
-    t = ""
-    do i = 1, len(s)
-      select case (s(i:i))
-      case ("&")
-        t = t//"&amp;"
-      case ("<")
-        t = t//"&lt;"
-      case (">")
-        t = t//"&gt;"
-      case ('"')
-        t = t//"&quot;"
-      case ("'")
-        t = t//"&apos;"
-      case default
-        t = t//s(i:i)
-      end select
-    end do
-  end function xml_escape
 
   !> Colour `i` (1-based) of the series palette, and its dash pattern ("" for the first
   !> round through the palette, a dash pattern after that).

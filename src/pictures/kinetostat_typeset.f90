@@ -13,6 +13,7 @@
 !> - "MPhi" with an index: MPhi3 -> M_Φ3 (ru M_и3); F or M with a point's name: MQ1 -> M_Q1,
 !>   FS1 -> F_S1;
 !> - "dT" -> ΔT;
+!> - points named one after another, each a letter and a number: N1N2 -> N₁N₂, a1b1 -> a₁b₁;
 !> - one letter with an index that starts with a digit, "_" or "^": F21 -> F₂₁, S2 -> S₂,
 !>   F5c -> F_5c, a_CB^τ, v_B2B3, a^k_B2B3, J_red;
 !> - a Greek letter with an index: φ1, Φ2, μv (μ takes letters: μ_v, μ_a, μ_F, μ_l).
@@ -217,7 +218,7 @@ contains
     type(text_run_t), allocatable, intent(out) :: runs(:)
     logical, intent(out) :: ok
     character(len=:), allocatable :: base, rest, mark
-    integer :: g, n
+    integer :: g, n, i, j
     allocate (runs(0))
     ok = .false.
     if (t == "dT") then
@@ -288,12 +289,49 @@ contains
       if (is_digit(rest(1:1)) .or. rest(1:1) == "_" .or. rest(1:1) == "^") call index_runs(base, rest, lang, runs, ok)
       return
     end if
+    ! points named one after another (N1N2, B1B2, a1b1): each letter with its number lowered
+    if (point_run(t)) then
+      i = 1
+      do while (i <= len(t))
+        j = i + 1
+        do while (j < len(t))
+          if (.not. is_digit(t(j + 1:j + 1))) exit
+          j = j + 1
+        end do
+        call push(runs, t(i:i), run_base)
+        call push(runs, t(i + 1:j), run_sub)
+        i = j + 1
+      end do
+      ok = .true.
+      return
+    end if
     ! one letter with an index
     if (len(t) >= 2 .and. is_letter(t(1:1))) then
       rest = t(2:)
       if (is_digit(rest(1:1)) .or. rest(1:1) == "_" .or. rest(1:1) == "^") call index_runs(t(1:1), rest, lang, runs, ok)
     end if
   end subroutine symbol_runs
+
+  !> Whether `t` is two or more point names in a row, each a letter and a number (N1N2).
+  pure logical function point_run(t)
+    character(*), intent(in) :: t
+    integer :: i, names
+    point_run = .false.
+    names = 0
+    i = 1
+    do while (i <= len(t))
+      if (.not. is_letter(t(i:i))) return
+      i = i + 1
+      if (i > len(t)) return
+      if (.not. is_digit(t(i:i))) return
+      do while (i <= len(t))
+        if (.not. is_digit(t(i:i))) exit
+        i = i + 1
+      end do
+      names = names + 1
+    end do
+    point_run = names >= 2
+  end function point_run
 
   !> Runs of `base` followed by the index `rest`: a leading number, then "_X" and "^Y"
   !> segments; ok false when the index is not one.

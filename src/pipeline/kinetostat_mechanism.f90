@@ -11,6 +11,7 @@ module kinetostat_mechanism
   use kinetostat_sketch, only: sketch_t
   use kinetostat_drawing, only: drawing_t
   use kinetostat_bodies, only: mass_model_t
+  use kinetostat_sheet, only: sheet_t
   implicit none
   private
   public :: mechanism_t
@@ -26,6 +27,9 @@ module kinetostat_mechanism
     !> Whether --format svg draws the sheet of force hodographs and diagrams (a design kind,
     !> whose results are no forces over a cycle, has none).
     logical :: force_sheet = .true.
+    !> A design kind's sheet, as a file's stem ("gears", "planetary", "cam": the name a
+    !> command writing every sheet of a deck gives it); "" for a kind without one.
+    character(len=:), allocatable :: sheet_name
   contains
     !> Read and validate the deck.
     procedure(read_deck_i), deferred :: read_deck
@@ -48,6 +52,9 @@ module kinetostat_mechanism
     !> The matching analysis deck written from the run's results (--format deck); by default
     !> the kind has none.
     procedure :: analysis_deck
+    !> The sheet of a design (--format svg or dxf of a kind without a sheet of forces) drawn
+    !> into a sheet of the drawing model; by default the kind has none.
+    procedure :: design_sheet
   end type mechanism_t
 
   abstract interface
@@ -158,5 +165,24 @@ contains
     call fatal_error(error, exit_usage, "--format deck: only the design kinds (gear_geometry, "// &
       "planetary_synthesis, cam_profile) write an analysis deck; "//table%deck//" is &"//table%mechanism)
   end subroutine analysis_deck
+
+  !> The sheet of a design, drawn into `sheet` from the run's results: by default none, a
+  !> usage error.
+  subroutine design_sheet(self, table, lang, at_step, sheet, error)
+    class(mechanism_t), intent(in) :: self
+    !> The results of the run (all rows).
+    type(step_table_t), intent(in) :: table
+    !> lang_en or lang_ru.
+    integer, intent(in) :: lang
+    !> A row the sheet shows (--at K: the cam's follower drawn there); 0: the kind's choice.
+    integer, intent(in) :: at_step
+    !> The sheet made.
+    type(sheet_t), intent(out) :: sheet
+    !> The kind draws no sheet, or cannot draw this one.
+    type(error_t), allocatable, intent(out) :: error
+    call sheet%open(sheet%paper, lang, "", "")
+    call fatal_error(error, exit_usage, "--format svg, dxf: "//table%deck//" is &"//table%mechanism// &
+      ", which draws no sheet")
+  end subroutine design_sheet
 
 end module kinetostat_mechanism

@@ -10,6 +10,7 @@ module kinetostat_override
   use kinetostat_text, only: upper
   use kinetostat_deck, only: deck_source_t, deck_source_from_text, deck_line_count, deck_line, deck_line_length
   use kinetostat_step_table, only: step_table_t, echo_heading_kind, echo_line_kind
+  use kinetostat_deck_encoding, only: utf8_problem
   implicit none
   private
   public :: override_t, parse_override, apply_overrides, mark_overrides, first_override_line
@@ -25,8 +26,8 @@ module kinetostat_override
 contains
 
   !> An override from "NAME=VALUE". NAME must be a namelist designator (letters, digits,
-  !> '_', subscripts in parentheses, '%' members); VALUE must be non-empty, with balanced
-  !> quotes and, outside quotes, no '/', '&', '$', '!' or '=' (which would end the group,
+  !> '_', subscripts in parentheses, '%' members); VALUE must be non-empty, UTF-8, with
+  !> balanced quotes and, outside quotes, no '/', '&', '$', '!' or '=' (which would end the group,
   !> start a comment or smuggle in a second assignment).
   pure subroutine parse_override(arg, option, override, error)
     !> The argument ("l_ab=0.12").
@@ -52,6 +53,8 @@ contains
         "(letters, digits, '_', subscripts like f5c(3), members like dyad(2)%l2)")
     else if (len(override%value) == 0) then
       call fatal_error(error, exit_input, what//"no value after '='")
+    else if (len(utf8_problem(override%value)) > 0) then
+      call fatal_error(error, exit_input, what//utf8_problem(override%value)//" (a deck's text is UTF-8)")
     else if (.not. is_plain_value(override%value)) then
       call fatal_error(error, exit_input, what//"the value must be one namelist value list: "// &
         "balanced quotes, and no '/', '&', '$', '!' or '=' outside quotes")

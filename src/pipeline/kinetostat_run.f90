@@ -15,6 +15,7 @@ module kinetostat_run
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_csv_writer, only: write_csv
   use kinetostat_json_writer, only: write_json
+  use kinetostat_npy_writer, only: write_npy
   use kinetostat_run_sheet, only: write_run_sheet
   use kinetostat_mechanism_sheet, only: write_mechanism_sheet
   use kinetostat_sheet, only: sheet_t
@@ -42,7 +43,7 @@ module kinetostat_run
   private
   public :: run_options_t, run_mechanism, guard_finite, progress_i, block_rows
   public :: format_table, format_csv, format_json, format_svg, format_summary, format_plans, format_dxf, &
-    format_deck, format_from_name, format_names
+    format_deck, format_npy, format_from_name, format_names
 
   !> Output format: the legacy fixed-format table.
   integer, parameter :: format_table = 1
@@ -60,11 +61,13 @@ module kinetostat_run
   integer, parameter :: format_dxf = 7
   !> Output format: the matching analysis deck of a design kind (mechanism_t%analysis_deck).
   integer, parameter :: format_deck = 8
+  !> Output format: the CSV's columns as a NumPy .npy file (binary).
+  integer, parameter :: format_npy = 9
   !> The formats' names as --format takes them, in the order of their codes.
   character(*), parameter :: format_keys(*) = [character(len=7) :: "table", "csv", "json", "svg", "summary", &
-    "plans", "dxf", "deck"]
+    "plans", "dxf", "deck", "npy"]
   !> Names of the formats, for messages and --help.
-  character(*), parameter :: format_names = "table, csv, json, svg, summary, plans, dxf, deck"
+  character(*), parameter :: format_names = "table, csv, json, svg, summary, plans, dxf, deck, npy"
 
   !> Steps solved and written at a time: a run holds the rows of one block (and at most the
   !> spool's bound of output text), whatever its number of steps.
@@ -161,6 +164,8 @@ contains
     !> The rows a drawing needs (--at K, the SVG sheet), kept as the blocks go.
     type(row_keeper_t) :: keeper
     logical :: drawn
+    !> A failed write of the spool while the rows were formatted (to_spool).
+    type(error_t), allocatable :: spool_error
     type(sheet_t) :: sheet
     character(len=:), allocatable :: pairs_asked
     integer :: first, rows
@@ -168,10 +173,13 @@ contains
     call mech%read_deck(source, error)
     if (allocated(error)) return
     if ((options%format == format_svg .or. options%format == format_dxf) .and. .not. mech%force_sheet) then
-      call fatal_error(error, exit_usage, "--format "//trim(format_keys(options%format))//": "//source%path// &
-        " is &"//group//", a design: no sheet of forces; its results are the table, csv, json or summary, "// &
-        "and its analysis deck (--format deck)")
-      return
+      if (allocated(options%pairs)) then
+        if (len(options%pairs) > 0) then
+          call fatal_error(error, exit_usage, "--pairs: "//source%path//" is &"//group//", a design: its "// &
+            "sheet has no pair forces to choose")
+          return
+        end if
+      end if
     end if
     if (options%shaking) then
       call mech%mass_model(model)
@@ -260,7 +268,14 @@ contains
       end if
       select case (options%format)
       case (format_csv)
-        call write_csv(table, out)
+        if (present(spool)) then
+          call write_csv(table, out, to_spool)
+        else
+          call write_csv(table, out)
+        end if
+      case (format_npy)
+        call write_npy(table, out, error)
+        if (allocated(error)) return
       case (format_summary)
         if (table%last_block()) then
           call out%put(summary_header(table, options%kinematics))
@@ -274,7 +289,11 @@ contains
           if (allocated(error)) return
         else
           do
-            call write_json(mech%title(options%lang), table, out, head)
+            if (present(spool)) then
+              call write_json(mech%title(options%lang), table, out, head, to_spool)
+            else
+              call write_json(mech%title(options%lang), table, out, head)
+            end if
             if (head%done) exit
             call drain_head(error)
             if (allocated(error)) return
@@ -295,10 +314,18 @@ contains
         if (allocated(error)) return
         if (.not. table%last_block()) then
           continue
-        else if (options%at_step > 0) then
+        else if (mech%force_sheet .and. options%at_step > 0) then
           call write_at_step(mech, table, options, out, error)
         else
-          call write_run_sheet(mech%title(options%lang), table, pairs_asked, options%lang, sheet, error)
+          if (mech%force_sheet) then
+            call write_run_sheet(mech%title(options%lang), table, pairs_asked, options%lang, sheet, error)
+          else if (options%at_step > 0 .and. table%single_record) then
+            call fatal_error(error, exit_usage, "--at: "//table%deck//" is &"//group//", one "//table%row_name// &
+              ": its sheet has no steps to choose")
+          else
+            ! a design's sheet (the gear pair, the planetary train, the cam)
+            call mech%design_sheet(table, options%lang, options%at_step, sheet, error)
+          end if
           if (allocated(error)) return
           if (options%format == format_dxf) then
             call write_sheet_dxf(sheet, out)
@@ -308,7 +335,11 @@ contains
         end if
         if (allocated(error)) return
       case default
-        call write_table_rows(mech, table, options%lang, out, later)
+        if (present(spool)) then
+          call write_table_rows(mech, table, options%lang, out, later, to_spool)
+        else
+          call write_table_rows(mech, table, options%lang, out, later)
+        end if
         if (options%shaking) call write_shaking_rows(table, options%lang, shaking)
         if (table%last_block()) then
           if (present(spool)) then
@@ -326,6 +357,10 @@ contains
       call check_text_room(error)
       if (allocated(error)) return
       if (.not. present(spool)) return
+      if (allocated(spool_error)) then
+        call move_alloc(spool_error, error)
+        return
+      end if
       call spool%drain(out, error)
       if (allocated(error)) return
       call later_spool%drain(later, error)
@@ -400,6 +435,16 @@ contains
         if (allocated(error)) return
       end do
     end subroutine start_output
+
+    !> The rows' text so far to the spool, called by the writers after every part of the
+    !> rows formatted in parallel: over the spool's bound, or any text once the spool has its
+    !> file (so a part is written while the next are formatted); a failure is kept for
+    !> run_block.
+    subroutine to_spool(text)
+      type(text_buffer_t), intent(inout) :: text
+      if (allocated(spool_error)) return
+      call spool%drain(text, spool_error, force=.true.)
+    end subroutine to_spool
 
     !> Between parts of the head: the text so far to the spool (when over its bound).
     subroutine drain_head(error)

@@ -11,9 +11,10 @@ module kinetostat_table_writer
   use kinetostat_labels, only: label, lang_ru, phrase, echo_name
   use kinetostat_summary, only: column_stats_t, column_stats, drive_work
   use kinetostat_text, only: upper
+  use kinetostat_escape, only: table_text
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_text_buffer, only: text_buffer_t
-  use kinetostat_row_blocks, only: put_row_blocks_two
+  use kinetostat_row_blocks, only: put_row_blocks_two, sink_i
   use kinetostat_shaking, only: shaking_column_names
   implicit none
   private
@@ -38,7 +39,7 @@ contains
 
   !> The mechanism's RESULTS lines of the rows now in `table` (one block of the run): in
   !> parallel parts with more than one OpenMP thread (the same bytes as one thread).
-  subroutine write_table_rows(mech, table, lang, out, later)
+  subroutine write_table_rows(mech, table, lang, out, later, sink)
     !> The mechanism (its RESULTS layout).
     class(mechanism_t), intent(in) :: mech
     !> Finite results: the rows of one block of the run.
@@ -49,7 +50,10 @@ contains
     type(text_buffer_t), intent(inout) :: out
     !> Where a layout's second section over the same rows goes (after the last row).
     type(text_buffer_t), intent(inout) :: later
-    call put_row_blocks_two(table%row_count(), table_row_room * size(table%columns), put_rows, out, later)
+    !> Takes the text of `out` so far while the rows are formatted in parallel (see
+    !> put_row_blocks).
+    procedure(sink_i), optional :: sink
+    call put_row_blocks_two(table%row_count(), table_row_room * size(table%columns), put_rows, out, later, sink)
   contains
     !> Rows first .. last of the layout.
     subroutine put_rows(first, last, part, later_part)
@@ -136,10 +140,12 @@ contains
     blank = index(table%student_stamp, " ")
     if (lang == lang_ru) then
       line = "ДАТА "//table%student_stamp(:blank - 1)//"  ВРЕМЯ "//table%student_stamp(blank + 1:)//"  ФАМИЛИЯ "// &
-        table%student_name//"  ГРУППА "//table%student_group//"  ВАРИАНТ "//table%student_variant
+        table_text(table%student_name)//"  ГРУППА "//table_text(table%student_group)//"  ВАРИАНТ "// &
+        table_text(table%student_variant)
     else
       line = "DATE "//table%student_stamp(:blank - 1)//"  TIME "//table%student_stamp(blank + 1:)//"  NAME "// &
-        table%student_name//"  GROUP "//table%student_group//"  VARIANT "//table%student_variant
+        table_text(table%student_name)//"  GROUP "//table_text(table%student_group)//"  VARIANT "// &
+        table_text(table%student_variant)
     end if
   end function student_line
 
@@ -154,12 +160,12 @@ contains
     if (cursor%record == 0) then
       if (allocated(table%student_stamp)) call out%put(" "//student_line(table, lang))
       call out%put(" "//mech%title(lang))
-      call out%put(" "//label("DECK: ", lang)//table%deck)
-      if (allocated(table%subtitle)) call out%put(" "//label("TITLE: ", lang)//table%subtitle)
+      call out%put(" "//label("DECK: ", lang)//table_text(table%deck))
+      if (allocated(table%subtitle)) call out%put(" "//label("TITLE: ", lang)//table_text(table%subtitle))
       call put_heading(out, label("INPUT DATA", lang))
       if (allocated(table%overrides)) then
         do i = 1, size(table%overrides)
-          call out%put("   --set "//trim(table%overrides(i)))
+          call out%put("   --set "//table_text(trim(table%overrides(i))))
         end do
       end if
       cursor%record = 1

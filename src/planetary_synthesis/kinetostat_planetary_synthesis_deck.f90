@@ -3,7 +3,7 @@ module kinetostat_planetary_synthesis_deck
   use kinetostat_kinds, only: wp
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, lower
-  use kinetostat_deck, only: begin_group, deck_context_t, unset_real, deck_source_t, namelist_probe_t, &
+  use kinetostat_deck, only: begin_group, text_bytes, text_chars, deck_context_t, unset_real, deck_source_t, namelist_probe_t, &
     deck_error, is_set, require_set, require_positive, require_rule, require_whole, optional_default, require_all_set
   use kinetostat_planetary_synthesis, only: planetary_spec_t, max_ring_teeth
   implicit none
@@ -47,7 +47,7 @@ contains
     type(planetary_synthesis_deck_t), intent(out) :: deck
     !> Input error naming deck, group, variable and reason.
     type(error_t), allocatable, intent(out) :: error
-    character(len=16) :: scheme
+    character(len=text_bytes * text_chars) :: scheme
     real(wp) :: u, k, u_tolerance, z_min, z_ring_min, m, m1
     type(deck_context_t) :: ctx
     type(namelist_probe_t) :: probe

@@ -12,6 +12,8 @@ module kinetostat_planetary_synthesis_layout
   use kinetostat_format, only: full_number, int_field, pad_right, short_number
   use kinetostat_labels, only: lang_ru
   use kinetostat_mechanism, only: mechanism_t
+  use kinetostat_sheet, only: sheet_t
+  use kinetostat_planetary_sheet, only: draw_planetary_sheet
   use kinetostat_planetary_synthesis, only: planetary_train_t, planetary_search, train_conditions
   use kinetostat_planetary_synthesis_deck, only: planetary_synthesis_deck_t, read_planetary_synthesis_deck, &
     planetary_synthesis_template
@@ -33,7 +35,7 @@ module kinetostat_planetary_synthesis_layout
     !> The validated deck.
     type(planetary_synthesis_deck_t) :: deck
   contains
-    procedure :: read_deck, solve, write_results, analysis_deck
+    procedure :: read_deck, solve, write_results, analysis_deck, design_sheet
   end type planetary_synthesis_mechanism_t
 
 contains
@@ -44,6 +46,7 @@ contains
     class(mechanism_t), allocatable, intent(out) :: mech
     allocate (planetary_synthesis_mechanism_t :: mech)
     mech%force_sheet = .false.
+    mech%sheet_name = "planetary"
     mech%template = planetary_synthesis_template
     mech%title_en = "KINETOSTAT  PLANETARY_SYNTHESIS  TOOTH NUMBERS OF A SINGLE-ROW PLANETARY TRAIN"
     mech%title_ru = "KINETOSTAT  PLANETARY_SYNTHESIS  ПОДБОР ЧИСЕЛ ЗУБЬЕВ ОДНОРЯДНОГО"// &
@@ -202,5 +205,20 @@ contains
       call out%put("/")
     end associate
   end subroutine analysis_deck
+
+  !> The sheet of the train (--format svg, dxf): its kinematic scheme, the picture of linear
+  !> speeds, the view along the axis, the conditions (kinetostat_planetary_sheet).
+  subroutine design_sheet(self, table, lang, at_step, sheet, error)
+    class(planetary_synthesis_mechanism_t), intent(in) :: self
+    type(step_table_t), intent(in) :: table
+    integer, intent(in) :: lang
+    integer, intent(in) :: at_step
+    type(sheet_t), intent(out) :: sheet
+    type(error_t), allocatable, intent(out) :: error
+    associate (v => table%rows(:, 1))
+      call draw_planetary_sheet(self%deck%spec, nint(v(1)), nint(v(2)), nint(v(3)), nint(v(4)), &
+        merge(self%deck%m, 0.0_wp, self%deck%has_m), table, lang, sheet)
+    end associate
+  end subroutine design_sheet
 
 end module kinetostat_planetary_synthesis_layout

@@ -459,9 +459,9 @@ contains
       r = drawing%at(trim(plans%accelerations(t)%name)) - drawing%at(trim(plans%accelerations(ip)%name))
       nrm = -omega(g)**2 * r
       tng = eps(g) * [-r(2), r(1)]
-      eq%point = plans%accelerations(t)%name
+      eq%point = trim(plans%accelerations(t)%name)
       eq%link = topo%links(g)%name
-      eq%from = plans%accelerations(ip)%name
+      eq%from = trim(plans%accelerations(ip)%name)
       eq%slider = topo%links(m)%name
       eq%reverse = .true.
       pm = coincident(trim(plans%accelerations(ip)%name), trim(topo%links(m)%name))
@@ -490,9 +490,9 @@ contains
       type(plan_equation_t) :: eq
       real(wp) :: r(2)
       r = drawing%at(trim(plans%accelerations(ip)%name)) - drawing%at(trim(plans%accelerations(q)%name))
-      eq%point = plans%accelerations(ip)%name
+      eq%point = trim(plans%accelerations(ip)%name)
       eq%link = topo%links(i)%name
-      eq%from = plans%accelerations(q)%name
+      eq%from = trim(plans%accelerations(q)%name)
       eq%vectors = [plan_vector_t(relative_name(ip, q, mid)//"^n", -omega(i)**2 * r, component_normal), &
         plan_vector_t(relative_name(ip, q, mid)//"^τ", eps(i) * [-r(2), r(1)], component_tangential)]
     end function rotation
@@ -520,7 +520,7 @@ contains
         rest = rest + cor
       else
         ! on a guide of the frame the sliding is the point's own motion: a_P along the guide
-        eq%point = plans%accelerations(ip)%name
+        eq%point = trim(plans%accelerations(ip)%name)
         eq%link = ""
         eq%from = ""
         allocate (eq%vectors(0))

@@ -19,8 +19,9 @@ module kinetostat_plans_base
 
   !> A named vector (a point's image on a plan, a force of a polygon).
   type :: plan_vector_t
-    !> Name ("B", "G2", "F21").
-    character(len=16) :: name = ""
+    !> Name ("B", "G2", "F21", "a_CB^τ": up to two joint names of 16 bytes each and a
+    !> component's marks, so no name is cut).
+    character(len=48) :: name = ""
     !> Components (position frame): m/s, m/s^2 or N.
     real(wp) :: v(2) = 0.0_wp
     !> A component's kind (component_normal ... on the acceleration plan, a reaction's part in

@@ -3,7 +3,8 @@ module kinetostat_pr3050_deck
   use kinetostat_kinds, only: wp, g_default, deg_to_rad
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str
-  use kinetostat_deck, only: values_out_of_memory, begin_group, deck_context_t, unset_real, deck_array_capacities, max_steps, &
+  use kinetostat_deck, only: values_out_of_memory, begin_group, text_bytes, text_chars, max_deck_array, deck_context_t, &
+    unset_real, deck_array_capacities, max_steps, &
     deck_source_t, namelist_probe_t, require_all_set, require_set, require_positive, &
     require_nonnegative, require_rule, require_per_step, optional_default, count_values
   use kinetostat_pr3050, only: pr3050_params_t
@@ -107,7 +108,7 @@ contains
     real(wp) :: phi3_start, phi3_end, dphi3
     real(wp), allocatable :: omega3(:), eps3(:)
     !> Machine dynamics variables: mode and the drive's mass reduced to the stroke, kg.
-    character(len=32) :: dynamics
+    character(len=text_bytes * text_chars) :: dynamics
     real(wp) :: j_rotor
     !> Elements allocated for each per-step array the deck may give (see deck_array_capacities).
     integer, allocatable :: capacity(:)
@@ -137,6 +138,8 @@ contains
       return
     end if
 
+    call probe%limit("omega3", max_deck_array, "values (one per step)")
+    call probe%limit("eps3", max_deck_array, "values (one per step)")
     read (source%records, nml=pr3050, iostat=probe%ios, iomsg=probe%msg)
     do while (probe%retry(source)) ! on failure: find the line and the assignment
       read (probe%records, nml=pr3050, iostat=probe%ios, iomsg=probe%msg)

@@ -2,9 +2,9 @@
 module kinetostat_pr3207_deck
   use kinetostat_kinds, only: wp, g_default
   use kinetostat_error, only: error_t
-  use kinetostat_text, only: real_str
+  use kinetostat_text, only: real_str, int_str
   use kinetostat_deck, only: values_out_of_memory, &
-    begin_group, deck_context_t, unset_real, deck_array_capacities, &
+    begin_group, text_bytes, text_chars, max_deck_array, deck_context_t, unset_real, deck_array_capacities, &
     deck_source_t, namelist_probe_t, require_all_set, deck_error, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, require_per_step, optional_default, count_values, steps_over_turn
   use kinetostat_pr3207, only: pr3207_params_t
@@ -106,7 +106,7 @@ contains
     real(wp) :: f5c_work, f5c_idle, phi_cut_start, phi_cut_end, delta, j_rotor, j_flywheel
     !> The driving-moment table (pairs phi deg, M_d; see kinetostat_dynamics_deck).
     real(wp) :: md_table(md_table_capacity)
-    character(len=32) :: dynamics
+    character(len=text_bytes * text_chars) :: dynamics
     real(wp), allocatable :: f5c(:)
     !> Number of steps as given (an integer deck variable, read as a real: see require_whole).
     real(wp) :: n
@@ -136,6 +136,8 @@ contains
       return
     end if
 
+    call probe%limit("f5c", max_deck_array, "values (one per step)")
+    call probe%limit("md_table", md_table_capacity, "values ("//int_str(md_table_capacity / 2)//" points)")
     read (source%records, nml=pr3207, iostat=probe%ios, iomsg=probe%msg)
     do while (probe%retry(source)) ! on failure: find the line and the assignment
       read (probe%records, nml=pr3207, iostat=probe%ios, iomsg=probe%msg)

@@ -2,9 +2,9 @@
 module kinetostat_sixbar_deck
   use kinetostat_kinds, only: wp, g_default, rad_to_deg
   use kinetostat_error, only: error_t, fatal_error, exit_geometry
-  use kinetostat_text, only: real_str
+  use kinetostat_text, only: real_str, int_str
   use kinetostat_deck, only: values_out_of_memory, &
-    begin_group, deck_context_t, unset_real, deck_array_capacities, &
+    begin_group, text_bytes, text_chars, max_deck_array, deck_context_t, unset_real, deck_array_capacities, &
     deck_source_t, namelist_probe_t, require_all_set, deck_error, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, require_per_step, optional_default, count_values, steps_over_turn
   use kinetostat_sixbar, only: sixbar_params_t, sixbar_extreme_phi1
@@ -81,7 +81,7 @@ contains
     real(wp) :: delta, j_rotor, j_flywheel
     !> The driving-moment table (pairs phi deg, M_d; see kinetostat_dynamics_deck).
     real(wp) :: md_table(md_table_capacity)
-    character(len=32) :: dynamics
+    character(len=text_bytes * text_chars) :: dynamics
     real(wp), allocatable :: f5(:)
     logical :: start_at_extreme, legacy_eq2, ok
     !> Number of steps as given (an integer deck variable, read as a real: see require_whole).
@@ -116,6 +116,8 @@ contains
       return
     end if
 
+    call probe%limit("f5", max_deck_array, "values (one per step)")
+    call probe%limit("md_table", md_table_capacity, "values ("//int_str(md_table_capacity / 2)//" points)")
     read (source%records, nml=sixbar, iostat=probe%ios, iomsg=probe%msg)
     do while (probe%retry(source)) ! on failure: find the line and the assignment
       read (probe%records, nml=sixbar, iostat=probe%ios, iomsg=probe%msg)

@@ -85,7 +85,7 @@ expect_input_error assur-rpp-parallel-slot '&assur: dyad\(2\)%slot_angle: must n
 sc=data/assur_slider_crank.nml
 expect_input_error assur-unknown-variable "&assur: dyad\(1\)%foo = 1: unknown variable 'dyad\(1\)%foo'" "$(deck_with a_unk "$sc" 's/dyad(1)%mode = 1/dyad(1)%mode = 1, dyad(1)%foo = 1/')"
 expect_input_error assur-wrong-type "&assur: dyad\(1\)%l2 = abc: 'abc' is not a number" "$(deck_with a_type "$sc" 's/dyad(1)%l2 = 0.35/dyad(1)%l2 = abc/')"
-expect_input_error assur-too-many-dyads '&assur: dyad\(17\)%kind = 1: subscript out of range' "$(deck_with a_many "$sc" 's/dyad(1)%mode = 1/dyad(1)%mode = 1, dyad(17)%kind = 1/')"
+expect_input_error assur-too-many-dyads '&assur: dyad\(17\): at most 16 dyads$' "$(deck_with a_many "$sc" 's/dyad(1)%mode = 1/dyad(1)%mode = 1, dyad(17)%kind = 1/')"
 expect_input_error assur-kind '&assur: dyad\(1\)%kind: must be 1\.\.5' "$(deck_with a_kind "$sc" 's/dyad(1)%kind = 2/dyad(1)%kind = 7/')"
 # a kind given by a name that is none of the kinds: the names are listed (not "a number is expected")
 expect_input_error assur-kind-name-unknown "^kinetostat: error: [^ ]*:[0-9]+: &assur: dyad\(1\)%kind = 'RRS': unknown kind 'RRS' \(a dyad's kind is RRR, RRP, RPR, PRP or RPP, or its number 1 to 5\)$" "$(deck_with a_rrs "$sc" "s/dyad(1)%kind = 2/dyad(1)%kind = 'RRS'/")"

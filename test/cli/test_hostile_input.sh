@@ -48,20 +48,13 @@ expect_exit deck-limit-bad-value 1 data/pr3207.nml --max-deck-size 0
 expect_exit deck-limit-not-a-number 1 data/pr3207.nml --max-deck-size 1e9
 
 # --- 8-bit comments: a CP1251 comment in the group ("! данные для расчёта", with byte 0xFF)
-# and before it are ignored (gfortran took 0xFF for the end of the file)
+# and before it: the deck is CP1251, decoded, and the comments are ignored as ever
 { printf '! \xe7\xe0\xe3\xee\xeb\xee\xe2\xee\xea \xff\n'; sed -n '1,/^&cam/p' data/cam_flat.nml
   printf '  ! \xe4\xe0\xed\xed\xfb\xe5 \xe4\xeb\xff \xf0\xe0\xf1\xf7\xb8\xf2\xe0\n'
   sed -n '/^&cam/,$p' data/cam_flat.nml | tail -n +2; } >"$cli_tmp/cp1251.nml"
 run_ks "$cli_tmp/cp1251.nml" --format csv
 [ "$rc" -eq 0 ] && cmp -s "$out" data/expected/cam_flat.csv && pass || fail cp1251-comment "exit $rc: $(head -c 300 "$err")"
-# a byte 0xFF inside a text cannot be read: a clear error with the byte escaped
-sed "s/title *=.*/title = 'a\xffb'/" data/assur_fourbar.nml >"$cli_tmp/ff_title.nml"
-expect_input_error ff-in-text 'ff_title.nml:[0-9]+: &assur: title: byte \\xFF in a text' "$cli_tmp/ff_title.nml"
-# a title in Latin-1 is escaped in the JSON (\u00e9) and the JSON stays valid UTF-8
-sed "s/title *=.*/title = 'caf\xe9 \xd0\xb4\xd0\xb0'/" data/assur_fourbar.nml >"$cli_tmp/latin1.nml"
-run_ks "$cli_tmp/latin1.nml" --format json
-python3 -c 'import json,sys; t=json.loads(open(sys.argv[1],"rb").read().decode("utf-8"))["deck_title"]; assert t == "caf\u00e9 да", t' "$out" \
-  && pass || fail json-escapes-bytes "deck_title not escaped: $(grep deck_title "$out" | head -c 200)"
+# (a byte 0xFF in a title, a Latin-1 title, a deck in two encodings: test/cli/test_strings.sh)
 # a deck path or --set value with a newline or a stray byte: the message stays one line, escaped
 run_ks "$cli_tmp/no
 such"$'\xff'.nml

@@ -1,4 +1,5 @@
-# Legible sheets. On every bundled deck's --format svg sheet and, for every linkage deck, its
+# Legible sheets. On every bundled deck's --format svg sheet (the design kinds' too) and, for
+# every linkage deck, its
 # --format svg --at K sheets at the first, second, middle and last steps, in English and
 # Russian: no text label leaves the sheet, none overlaps another and none lies over a drawn
 # line (tools/svg_check.py labels --lines: typeset boxes, every stroke as a band of its width;
@@ -17,19 +18,13 @@ for deck in data/*.nml; do
   [ "$name" = assur_toggle ] && continue
   run_ks "$deck" --format csv
   steps=$(($(wc -l <"$out") - 1))
-  # the design kinds draw no sheet of forces (--format svg is refused): their Russian table only
-  case "$name" in gear_geometry_*|planetary_synthesis*|cam_profile_*)
-    run_ks "$deck" --lang ru; cp "$out" "$legible_dir/$name.ru.table"
-    python3 "$svg_check" english "$legible_dir/$name.ru.table" >"$cli_tmp/check.out" 2>&1 \
-      && pass || fail "legible-russian-$name" "$(head -20 "$cli_tmp/check.out")"
-    continue ;;
-  esac
   for lang in en ru; do
     run_ks "$deck" --format svg --lang "$lang"
     if [ "$rc" -ne 0 ]; then fail "legible-runs-$name-$lang" "rc=$rc: $(head -c 300 "$err")"; continue; fi
     cp "$out" "$legible_dir/$name.$lang.svg"; model_sheets+=("$legible_dir/$name.$lang.svg")
     [ "$lang" = ru ] && model_ru+=("$legible_dir/$name.$lang.svg") && ru_sheets+=("$legible_dir/$name.$lang.svg")
-    case "$name" in gears_*|cam_*) ;; *)
+    # no step drawn: gear stages, cams, and the design kinds (their own sheets)
+    case "$name" in gears_*|cam_*|gear_geometry_*|planetary_synthesis*) ;; *)
       middle=$(((steps + 1) / 2))
       for k in $(printf '%s\n' 1 2 "$middle" "$steps" | awk '$1 >= 1' | sort -un); do
         [ "$k" -gt "$steps" ] && continue

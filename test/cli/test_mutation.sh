@@ -1,12 +1,13 @@
 # Deterministic mutation test, sourced by tools/test with test/cli/lib.sh.
 # tools/mutate_decks.py derives >= 500 broken or extreme decks from data/*.nml (fixed seed) and
-# runs $KINETOSTAT on each (table, CSV, -o FILE). It reports one verdict per assertion category
+# runs $KINETOSTAT on each (table, CSV, -o FILE; the decks with hostile strings in every
+# output format, checked by tools/output_check.py). It reports one verdict per assertion category
 # ("check NAME: ok" / "check NAME: FAIL (n decks)"); each category counts as ONE check here, so
 # that 500+ decks do not swamp the counters of the rest of the suite. The failing decks are
 # listed one per line (mutation, failed check, reproducer under test/out/mutation/).
 mutation_log="$cli_tmp/mutation.log"
 if python3 "$root/tools/mutate_decks.py" --bin "$KINETOSTAT" --out "$root/test/out/mutation" >"$mutation_log" 2>&1; then :; fi
-for category in exit-code non-finite error-shape no-leftover warning-shape runtime-text; do
+for category in exit-code non-finite error-shape no-leftover warning-shape runtime-text valid-output expected-error; do
   if grep -qx "check $category: ok" "$mutation_log"; then
     pass
   else
@@ -27,6 +28,16 @@ printf '#!/bin/sh\necho one >&2\necho two >&2\nexit 1\n' >"$fake"
 python3 "$root/tools/mutate_decks.py" --bin "$fake" --only pr3050_001 --out "$cli_tmp/mut_fake" >"$cli_tmp/mut_fake.log" 2>&1
 if grep -q '^check exit-code: FAIL' "$cli_tmp/mut_fake.log" && grep -q '^check error-shape: FAIL' "$cli_tmp/mut_fake.log"; then pass
 else fail mutation-can-fail-exit "a binary exiting 1 with two stderr lines passed: $(tail -2 "$cli_tmp/mut_fake.log")"; fi
+# ... and so can the classes of strings: a binary writing a JSON with an added key and a CSV row
+# over two lines for a deck with hostile strings, and one that accepts a fraction
+printf '#!/bin/sh\necho "{\\"injected\\": true}"\necho "a,b"\necho "1"\nexit 0\n' >"$fake"
+python3 "$root/tools/mutate_decks.py" --bin "$fake" --only pr3207_s01_user_strings --out "$cli_tmp/mut_fake" >"$cli_tmp/mut_fake.log" 2>&1
+if grep -q '^check valid-output: FAIL' "$cli_tmp/mut_fake.log"; then pass
+else fail mutation-can-fail-valid-output "an invalid output passed: $(tail -2 "$cli_tmp/mut_fake.log")"; fi
+printf '#!/bin/sh\necho " ok"\nexit 0\n' >"$fake"
+python3 "$root/tools/mutate_decks.py" --bin "$fake" --only pr3207_s02_fraction --out "$cli_tmp/mut_fake" >"$cli_tmp/mut_fake.log" 2>&1
+if grep -q '^check expected-error: FAIL' "$cli_tmp/mut_fake.log"; then pass
+else fail mutation-can-fail-expected-error "an accepted fraction passed: $(tail -2 "$cli_tmp/mut_fake.log")"; fi
 
 # With tools/test --long, a second, randomized run of the whole mutation set (every class above,
 # new random choices from a seed of the date, printed: `python3 tools/mutate_decks.py --seed N`

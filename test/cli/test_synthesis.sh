@@ -1,8 +1,9 @@
 # Command-line tests of the design kinds: &gear_geometry, &planetary_synthesis, &cam_profile
 # (sourced by tools/test with lib.sh): the output names, the one-record summary and a sweep
 # of it, the analysis decks (--format deck) that run and agree, the blocking contour, the
-# independent re-computation (tools/verify_synthesis.py), the signs of the pressure angle,
-# the templates, and one deck per input rule.
+# design sheets (SVG and DXF: the involutes, the cam's profile polyline), the independent
+# re-computation (tools/verify_synthesis.py), the signs of the pressure angle, the templates,
+# and one deck per input rule.
 
 gg=data/gear_geometry_shift.nml
 ga=data/gear_geometry_auto.nml
@@ -117,8 +118,77 @@ run_ks contour $ga --set z1=20 --set z2=40
 cmp -s "$out" "$cli_tmp/contour.csv" && fail contour-set "--set z1=20 did not change the contour" || pass
 expect_exit contour-needs-gear-deck 2 contour $cr
 expect_exit contour-no-format 1 contour $ga --format csv
-expect_exit design-no-svg 1 $ga --format svg
-expect_exit design-no-dxf 1 $cr --format dxf
+
+# --- the design sheets (--format svg / dxf): the same drawing model as every sheet; the
+# labels, notation, formats and frames of the SVGs are checked with every deck's sheet by
+# test_legible.sh, the goldens by tools/test. Here: they parse, the DXFs read back, the meshing
+# drawing's flanks lie on involutes of the base circles, the cam's profile is one closed
+# POLYLINE through the CSV's points, and the options the sheets take or refuse.
+synth_check="$root/tools/synthesis_check.py"
+for d in $gg $ga $ps $cr $cf $co; do
+  name=$(basename "$d" .nml)
+  for lang in en ru; do
+    run_ks "$d" --format svg --lang "$lang"; cp "$out" "$cli_tmp/$name.$lang.svg"
+    [ "$rc" -eq 0 ] && xmllint --noout "$cli_tmp/$name.$lang.svg" 2>"$cli_tmp/xml.err" && pass \
+      || fail "$name-sheet-svg-$lang" "rc=$rc $(head -c 300 "$err") $(head -3 "$cli_tmp/xml.err")"
+  done
+  run_ks "$d" --format dxf --lang ru; cp "$out" "$cli_tmp/$name.dxf"
+  [ "$rc" -eq 0 ] && python3 tools/dxf_check.py "$cli_tmp/$name.dxf" >"$cli_tmp/check.out" 2>&1 && pass \
+    || fail "$name-sheet-dxf" "rc=$rc $(head -c 300 "$err") $(head -5 "$cli_tmp/check.out")"
+  run_ks "$d" --format csv; cp "$out" "$cli_tmp/$name.csv"
+done
+for name in gear_geometry_shift gear_geometry_auto; do
+  python3 "$synth_check" involutes "$cli_tmp/$name.en.svg" "$cli_tmp/$name.csv" >"$cli_tmp/check.out" 2>&1 \
+    && pass || fail "$name-involutes" "$(head -5 "$cli_tmp/check.out")"
+done
+echo "synthesis: $(cat "$cli_tmp/check.out")"
+# an undercut pinion (z = 8 unshifted) is drawn as the rack cuts it, its flanks still involutes
+run_ks "$(deck_with undercut $gg 's/z1 = 12/z1 = 8/; s/x1 = 0.6/x1 = 0/; s/x2 = 0.36/x2 = 0/')" --format svg
+cp "$out" "$cli_tmp/undercut.svg"
+run_ks "$(deck_with undercut $gg 's/z1 = 12/z1 = 8/; s/x1 = 0.6/x1 = 0/; s/x2 = 0.36/x2 = 0/')" --format csv
+python3 "$synth_check" involutes "$cli_tmp/undercut.svg" "$out" >"$cli_tmp/check.out" 2>&1 \
+  && pass || fail gear-undercut-involutes "$(head -5 "$cli_tmp/check.out")"
+# the check can fail: two points of a flank moved 0.2 mm, across and along the sheet
+python3 - "$cli_tmp/gear_geometry_shift.en.svg" "$cli_tmp/moved.svg" <<'PY'
+import re, sys
+text = open(sys.argv[1], encoding="utf-8").read()
+m = re.search(r'<path d="([^"]*)"[^>]*data-flank="1"', text)
+pts = m.group(1).split(" L ")
+x, y = pts[5].split()
+pts[5] = f"{float(x) + 0.2:.2f} {y}"
+x, y = pts[15].split()
+pts[15] = f"{x} {float(y) + 0.2:.2f}"
+open(sys.argv[2], "w", encoding="utf-8").write(text.replace(m.group(1), " L ".join(pts), 1))
+PY
+python3 "$synth_check" involutes "$cli_tmp/moved.svg" "$cli_tmp/gear_geometry_shift.csv" >"$cli_tmp/check.out" 2>&1
+grep -q "off an involute" "$cli_tmp/check.out" && pass || fail involutes-check-can-fail "$(head -3 "$cli_tmp/check.out")"
+for name in cam_profile_roller cam_profile_flat cam_profile_oscillating; do
+  python3 "$synth_check" cam-profile "$cli_tmp/$name.dxf" "$cli_tmp/$name.csv" >"$cli_tmp/check.out" 2>&1 \
+    && pass || fail "$name-profile-polyline" "$(head -5 "$cli_tmp/check.out")"
+done
+# ... and so can the profile's: a vertex moved by 1 um on the paper
+python3 - "$cli_tmp/cam_profile_roller.dxf" "$cli_tmp/moved.dxf" <<'PY'
+import sys
+lines = open(sys.argv[1]).read().split("\n")
+# the POLYLINE on layer PROFILE; its first VERTEX's x follows
+i = next(k for k in range(len(lines) - 2) if lines[k] == "POLYLINE" and lines[k + 2] == "PROFILE")
+i = lines.index("VERTEX", i)
+i = lines.index("10", i) + 1
+lines[i] = f"{float(lines[i]) + 0.001:.6f}"
+open(sys.argv[2], "w").write("\n".join(lines))
+PY
+python3 "$synth_check" cam-profile "$cli_tmp/moved.dxf" "$cli_tmp/cam_profile_roller.csv" >"$cli_tmp/check.out" 2>&1
+grep -q "phi = 0" "$cli_tmp/check.out" && pass || fail cam-profile-check-can-fail "$(head -3 "$cli_tmp/check.out")"
+# the follower where --at puts it (else at the largest pressure angle: 260 deg on this cam)
+grep -q 'follower at φ = 260.0 deg' "$cli_tmp/cam_profile_roller.en.svg" && pass \
+  || fail cam-sheet-follower "$(grep -o 'follower at[^;]*' "$cli_tmp/cam_profile_roller.en.svg" | head -1)"
+run_ks $cr --format svg --at 13
+[ "$rc" -eq 0 ] && grep -q 'follower at φ = 60.0 deg' "$out" && pass || fail cam-sheet-at "rc=$rc $(head -c 200 "$err")"
+expect_exit cam-sheet-at-beyond 1 $cr --format svg --at 74
+expect_exit gear-sheet-no-at 1 $ga --format svg --at 1
+expect_exit planetary-sheet-no-at 1 $ps --format dxf --at 1
+expect_exit design-sheet-no-pairs 1 $ga --format svg --pairs F12
+expect_exit design-no-plans 1 $cr --format plans --at 1
 
 # --- the signs: a mirrored cam (clockwise, offset on the other side) has the opposite
 # pressure angle and the mirrored profile
