@@ -77,7 +77,7 @@ contains
         do i = 1, table%warning_count()
           said = said//"warning: "//table%warnings(i)%text//new_line("a")
         end do
-        write (figures, '(2es20.12)') table%max_residual, table%max_mismatch
+        write (figures, '(2es20.12)') table%run_tally%residual%value, table%run_tally%mismatch%value
         said = said//"self-check: "//figures
       end if
     end if

@@ -316,7 +316,7 @@ contains
         "(overflow: the deck's magnitudes are out of the representable range)", error%message)
     end if
     table = sample_table()
-    table%max_residual = ieee_value(1.0_wp, ieee_positive_inf)
+    table%run_tally%residual%value = ieee_value(1.0_wp, ieee_positive_inf)
     call guard_finite(table, error)
     call check_true(t, "guard rejects an infinite self-check figure", allocated(error), "an error")
   end subroutine test_guard

@@ -55,8 +55,9 @@ contains
     ! a steady cycle's flywheel and rotor on the input shaft: their couple -(J_fw + j_rotor) eps1
     ! = -(3 + 1)*5 joins M_shake (M_frame comes from the reactions)
     call hand_table(table)
-    call table%dynamics_real("J_flywheel", 3.0_wp, "kg*m^2")
-    call table%dynamics_real("J_rotor", 1.0_wp, "kg*m^2")
+    table%dynamics%present = .true.
+    table%dynamics%j_flywheel = 3.0_wp
+    table%dynamics%j_rotor = 1.0_wp
     call add_shaking(table, model, error)
     call check_true(t, "shaking: hand table with a flywheel runs", .not. allocated(error), "unexpected error")
     if (allocated(error)) return

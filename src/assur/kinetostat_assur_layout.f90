@@ -358,8 +358,7 @@ contains
         call put_dynamics_values(table, k, self%deck%dyn%mode, motions(k))
       end do
       if (self%deck%dyn%mode >= dynamics_steady) call constant_speed_cost(self%deck, first, last, omega1, table)
-      if (self%deck%dyn%mode >= dynamics_steady) call note_drive_deviation(table, maxval(abs(m1 - motions%md)), &
-        max(maxval(abs(motions%md)), maxval(abs(motions%m)), maxval(abs((self%cycle%j_flywheel + motions%j) * motions%eps))))
+      if (self%deck%dyn%mode >= dynamics_steady) call note_drive_deviation(table, m1, motions, self%cycle%j_flywheel)
     end if
     if (self%deck%mech%drive_dyad == 0) then
       call table%set_selfcheck(maxval(residual), maxval(mismatch), "M1", &

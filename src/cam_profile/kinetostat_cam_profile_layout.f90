@@ -134,10 +134,6 @@ contains
     end do
     ! within the limit is no residual: the figure is how far beyond it a step goes
     residual = max(0.0_wp, residual)
-    if (.not. table%first_block()) then
-      residual = max(residual, table%max_residual)
-      mismatch = max(mismatch, table%max_mismatch)
-    end if
     call table%set_selfcheck(residual, mismatch, table%driver, 0, 0)
   end subroutine solve
 

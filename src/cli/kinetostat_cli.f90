@@ -493,9 +493,9 @@ contains
     call compare(words("max |M1|     ", "наибольший |M1| (уравновешивающий момент)"), "M1", "N*m")
     call say(words("balanced deck's self-check: max residual ", "самоконтроль уравновешенного "// &
       "механизма: "// &
-      "наибольшая невязка равновесия ")//short_number(after%max_residual)//", "// &
+      "наибольшая невязка равновесия ")//short_number(after%run_tally%residual%value)//", "// &
       words("M1 against the power balance ", "M1 по сравнению с балансом "// &
-        "мощностей ")//short_number(after%max_mismatch))
+        "мощностей ")//short_number(after%run_tally%mismatch%value))
   contains
     !> The deck run with the shaking columns into a summary (its tallies).
     subroutine summary_run(deck_source, table, error)

@@ -4,6 +4,7 @@
 module kinetostat_dynamics_table
   use kinetostat_kinds, only: wp, rad_to_deg, pi
   use kinetostat_step_table, only: step_table_t, col_moment, col_component, col_other
+  use kinetostat_run_tally, only: dynamics_figures_t
   use kinetostat_dynamics, only: cycle_t, motion_t, dynamics_none, dynamics_reduced, dynamics_steady, dynamics_given
   use kinetostat_dynamics_deck, only: dynamics_deck_t, dynamics_mode_name
   implicit none
@@ -80,50 +81,57 @@ contains
     integer, intent(in) :: mode
     type(cycle_t), intent(in) :: cycle
     real(wp), intent(in) :: delta_asked
+    type(dynamics_figures_t) :: d
     if (mode < dynamics_steady .or. .not. table%first_block()) return
-    if (allocated(cycle%drive_m)) then
+    d%present = .true.
+    d%drive_table = allocated(cycle%drive_m)
+    if (d%drive_table) then
       ! a driving-moment table: its mean, the scale it was given and its extremes
-      call table%dynamics_real("M_d", -cycle%load_work / (2.0_wp * pi), "N*m")
-      call table%dynamics_real("M_d_scale", cycle%drive_scale, "")
-      call table%dynamics_real("M_d_max", maxval(cycle%drive_m), "N*m")
-      call table%dynamics_real("M_d_min", minval(cycle%drive_m), "N*m")
+      d%m_d = -cycle%load_work / (2.0_wp * pi)
+      d%m_d_scale = cycle%drive_scale
+      d%m_d_max = maxval(cycle%drive_m)
+      d%m_d_min = minval(cycle%drive_m)
     else
-      call table%dynamics_real("M_d", cycle%m_d, "N*m")
+      d%m_d = cycle%m_d
     end if
-    call table%dynamics_real("J_rotor", cycle%j_rotor, "kg*m^2")
-    call table%dynamics_real("J_red_min", minval(cycle%j), "kg*m^2")
-    call table%dynamics_real("J_red_max", maxval(cycle%j), "kg*m^2")
-    call table%dynamics_real("J_flywheel", cycle%j_flywheel, "kg*m^2")
-    if (cycle%delta > 0.0_wp) then
-      call table%dynamics_real("J_flywheel_textbook", cycle%j_flywheel_textbook, "kg*m^2")
-      if (cycle%j_flywheel > 0.0_wp) call table%dynamics_real("textbook_difference", &
-        100.0_wp * (cycle%j_flywheel_textbook - cycle%j_flywheel) / cycle%j_flywheel, "%")
-    end if
-    call table%dynamics_real("omega_mean", cycle%omega_mean, "rad/s")
-    call table%dynamics_real("omega_max", cycle%omega_max, "rad/s")
-    call table%dynamics_real("phi_omega_max", cycle%phi_max * rad_to_deg, "deg")
-    call table%dynamics_real("omega_min", cycle%omega_min, "rad/s")
-    call table%dynamics_real("phi_omega_min", cycle%phi_min * rad_to_deg, "deg")
-    if (delta_asked > 0.0_wp) call table%dynamics_real("delta_asked", delta_asked, "")
-    call table%dynamics_real("delta", cycle%delta, "")
-    call table%dynamics_real("period", cycle%period, "s")
+    d%j_rotor = cycle%j_rotor
+    d%j_red_min = minval(cycle%j)
+    d%j_red_max = maxval(cycle%j)
+    d%j_flywheel = cycle%j_flywheel
+    ! the textbook's flywheel only where a delta defines it
+    if (cycle%delta > 0.0_wp) d%j_flywheel_textbook = cycle%j_flywheel_textbook
+    d%omega_mean = cycle%omega_mean
+    d%omega_max = cycle%omega_max
+    d%phi_omega_max = cycle%phi_max * rad_to_deg
+    d%omega_min = cycle%omega_min
+    d%phi_omega_min = cycle%phi_min * rad_to_deg
+    d%delta_asked = max(0.0_wp, delta_asked)
+    d%delta = cycle%delta
+    d%period = cycle%period
+    table%dynamics = d
   end subroutine put_dynamics_figures
 
-  !> The self-check of the true motion: the largest |M1 - M_d| / scale over the blocks so far.
-  pure subroutine note_drive_deviation(table, worst, scale)
+  !> The self-check of the true motion for the rows of the block, the one place it is
+  !> computed: the largest |M1 - M_d| and the moment scale (the largest of |M_d|, |M_red| and
+  !> |(J_flywheel + J_red) eps1|), noted apart for the run pipeline to reduce over the run
+  !> as max(|M1 - M_d|) / max(scale) (kinetostat_run_tally's ratio_of_maxima_t).
+  pure subroutine note_drive_deviation(table, m1, motions, j_flywheel)
     type(step_table_t), intent(inout) :: table
-    !> Largest |M1 - M_d| of the rows of the block, N*m.
-    real(wp), intent(in) :: worst
-    !> Moment scale: |M_d|, or the loads' and inertia's moments when M_d = 0, N*m.
-    real(wp), intent(in) :: scale
-    if (table%first_block()) table%max_drive_deviation = 0.0_wp
-    if (scale > 0.0_wp) table%max_drive_deviation = max(table%max_drive_deviation, worst / scale)
+    !> The driving moment of the block's rows with the true motion, N*m.
+    real(wp), intent(in) :: m1(:)
+    !> The true motion at those rows (M_d, M_red, J_red, eps1).
+    type(motion_t), intent(in) :: motions(:)
+    !> The flywheel's inertia, kg*m^2.
+    real(wp), intent(in) :: j_flywheel
+    if (size(m1) == 0) return
+    call table%block_tally%drive_deviation%note(maxval(abs(m1 - motions%md)), max(maxval(abs(motions%md)), &
+      maxval(abs(motions%m)), maxval(abs((j_flywheel + motions%j) * motions%eps))))
   end subroutine note_drive_deviation
 
-  !> What the constant-speed assumption costs for one force column: its peak over the run with
-  !> the true motion and with omega1 = omega_m constant (the largest over the blocks so far),
-  !> and their difference in percent of the constant-speed peak (DYNAMICS block records
-  !> <name>_peak, <name>_peak_constant_speed, <name>_peak_difference).
+  !> What the constant-speed assumption costs for one force column: its peak over the block
+  !> with the true motion and with omega1 = omega_m constant, noted for the run pipeline to
+  !> take the largest over the run (DYNAMICS block records <name>_peak,
+  !> <name>_peak_constant_speed, <name>_peak_difference: step_table_t%dynamics_records).
   pure subroutine note_constant_speed_cost(table, name, peak_true, peak_const)
     type(step_table_t), intent(inout) :: table
     !> Force column ("F16").
@@ -132,22 +140,7 @@ contains
     real(wp), intent(in) :: peak_true
     !> The same at constant speed, N.
     real(wp), intent(in) :: peak_const
-    integer :: i
-    real(wp) :: t, c
-    i = table%dynamics_index(name//"_peak")
-    if (i == 0) then
-      call table%dynamics_real(name//"_peak", peak_true, "N")
-      call table%dynamics_real(name//"_peak_constant_speed", peak_const, "N")
-      call table%dynamics_real(name//"_peak_difference", 0.0_wp, "%")
-      i = size(table%dynamics) - 2
-    else
-      table%dynamics(i)%values(1) = max(table%dynamics(i)%values(1), peak_true)
-      table%dynamics(i + 1)%values(1) = max(table%dynamics(i + 1)%values(1), peak_const)
-    end if
-    t = table%dynamics(i)%values(1)
-    c = table%dynamics(i + 1)%values(1)
-    table%dynamics(i + 2)%values(1) = 0.0_wp
-    if (c > 0.0_wp) table%dynamics(i + 2)%values(1) = 100.0_wp * (t - c) / c
+    call table%block_tally%note_peak(name, peak_true, peak_const)
   end subroutine note_constant_speed_cost
 
   !> An optional logical's value, false when absent.

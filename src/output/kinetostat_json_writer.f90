@@ -9,10 +9,16 @@ module kinetostat_json_writer
   use kinetostat_format, only: full_number, put_cell, put_cells, cell_room
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_escape, only: json_string
+  use kinetostat_text, only: int_str
   use kinetostat_row_blocks, only: put_row_blocks, sink_i
   implicit none
   private
-  public :: write_json, json_string, put_run_identity, put_run_verdict
+  public :: write_json, json_string, put_run_identity, put_run_verdict, json_format_version
+
+  !> Version of the JSON outputs' layout (the run's object and the --plans object), their
+  !> first member "format_version": raised when a key changes meaning or goes (a key added
+  !> keeps it); docs/cli.md.
+  integer, parameter :: json_format_version = 1
 
 contains
 
@@ -33,6 +39,7 @@ contains
     !> Takes the text so far while the rows are formatted in parallel (see put_row_blocks).
     procedure(sink_i), optional :: sink
     type(echo_cursor_t) :: whole_head
+    type(echo_record_t), allocatable :: records(:)
     character(len=:), allocatable :: line
     logical, allocatable :: whole(:), voidable(:)
     integer, allocatable :: columns(:)
@@ -75,11 +82,12 @@ contains
       end do
       call out%put("  ],")
     end if
-    if (allocated(table%dynamics)) then
+    if (table%dynamics%present) then
+      records = table%dynamics_records()
       line = '  "dynamics": {'
-      do i = 1, size(table%dynamics)
+      do i = 1, size(records)
         if (i > 1) line = line//", "
-        line = line//json_string(table%dynamics(i)%name)//": "//full_number(table%dynamics(i)%values(1))
+        line = line//json_string(records(i)%name)//": "//full_number(records(i)%values(1))
       end do
       call out%put(line//"},")
     end if
@@ -151,9 +159,9 @@ contains
     end subroutine put_rows
   end subroutine write_json
 
-  !> The first members of a run's JSON object: "program", "mechanism", "title", "deck",
-  !> "deck_title" (the deck's own title, when it has one), "row_name", "overrides" (the
-  !> --set changes, when any), each line ending in a comma.
+  !> The first members of a run's JSON object: "format_version", "program", "mechanism",
+  !> "title", "deck", "deck_title" (the deck's own title, when it has one), "row_name",
+  !> "overrides" (the --set changes, when any), each line ending in a comma.
   pure subroutine put_run_identity(title, table, out)
     !> Title of the mechanism (as the legacy table prints it).
     character(*), intent(in) :: title
@@ -163,6 +171,7 @@ contains
     type(text_buffer_t), intent(inout) :: out
     character(len=:), allocatable :: line
     integer :: i
+    call out%put('  "format_version": '//int_str(json_format_version)//",")
     call out%put('  "program": '//json_string(version_string)//",")
     call out%put('  "mechanism": '//json_string(table%mechanism)//",")
     call out%put('  "title": '//json_string(title)//",")
@@ -188,20 +197,20 @@ contains
     type(text_buffer_t), intent(inout) :: out
     character(len=:), allocatable :: line
     integer :: i
-    if (table%has_selfcheck .and. table%max_drive_deviation >= 0.0_wp) then
-      call out%put('  "selfcheck": {"max_residual": '//full_number(table%max_residual)// &
-        ', "max_mismatch": '//full_number(table%max_mismatch)//', "driver": '//json_string(table%driver)// &
-        ', "max_drive_deviation": '//full_number(table%max_drive_deviation)// &
+    if (table%has_selfcheck .and. table%run_tally%drive_deviation%ratio() >= 0.0_wp) then
+      call out%put('  "selfcheck": {"max_residual": '//full_number(table%run_tally%residual%value)// &
+        ', "max_mismatch": '//full_number(table%run_tally%mismatch%value)//', "driver": '//json_string(table%driver)// &
+        ', "max_drive_deviation": '//full_number(table%run_tally%drive_deviation%ratio())// &
         ', "limit": '//full_number(selfcheck_tolerance)//', "ok": '// &
-        trim(merge("true ", "false", table%max_residual <= selfcheck_tolerance .and. &
-                   table%max_mismatch <= selfcheck_tolerance .and. &
-                   table%max_drive_deviation <= selfcheck_tolerance))//"},")
+        trim(merge("true ", "false", table%run_tally%residual%value <= selfcheck_tolerance .and. &
+                   table%run_tally%mismatch%value <= selfcheck_tolerance .and. &
+                   table%run_tally%drive_deviation%ratio() <= selfcheck_tolerance))//"},")
     else if (table%has_selfcheck) then
-      call out%put('  "selfcheck": {"max_residual": '//full_number(table%max_residual)// &
-        ', "max_mismatch": '//full_number(table%max_mismatch)//', "driver": '//json_string(table%driver)// &
+      call out%put('  "selfcheck": {"max_residual": '//full_number(table%run_tally%residual%value)// &
+        ', "max_mismatch": '//full_number(table%run_tally%mismatch%value)//', "driver": '//json_string(table%driver)// &
         ', "limit": '//full_number(selfcheck_tolerance)//', "ok": '// &
-        trim(merge("true ", "false", table%max_residual <= selfcheck_tolerance .and. &
-                   table%max_mismatch <= selfcheck_tolerance))//"},")
+        trim(merge("true ", "false", table%run_tally%residual%value <= selfcheck_tolerance .and. &
+                   table%run_tally%mismatch%value <= selfcheck_tolerance))//"},")
     else
       call out%put('  "selfcheck": null,')
     end if

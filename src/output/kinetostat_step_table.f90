@@ -8,6 +8,7 @@ module kinetostat_step_table
   use kinetostat_kinds, only: wp, rad_to_deg
   use kinetostat_error, only: error_t, out_of_memory
   use kinetostat_text, only: int_str, int64_str
+  use kinetostat_run_tally, only: run_tally_t, dynamics_figures_t, running_max_t
   implicit none
   private
   public :: step_table_t, column_t, echo_record_t, echo_cursor_t, remark_t, column_tally_t, edge_point_t, step_span, worst_row
@@ -223,14 +224,12 @@ module kinetostat_step_table
     integer :: echo_count = 0
     !> Whether the run has a self-check.
     logical :: has_selfcheck = .true.
-    !> Largest relative equilibrium residual over all links and rows.
-    real(wp) :: max_residual = 0.0_wp
-    !> Largest relative mismatch of the driving effort against its independent value.
-    real(wp) :: max_mismatch = 0.0_wp
-    !> Row of the run (1..) with the largest residual (0: not known).
-    integer :: residual_row = 0
-    !> Row of the run with the largest mismatch (0: not known).
-    integer :: mismatch_row = 0
+    !> The figures a kind's solve notes for the block it solved (self-check maxima, drive
+    !> deviation, force peaks, sums); the run pipeline clears it before each block.
+    type(run_tally_t) :: block_tally
+    !> The same figures over the run so far: the run pipeline merges every block's into it
+    !> (kinetostat_run_tally's merge_tally). Summaries, footers and JSON read this one.
+    type(run_tally_t) :: run_tally
     !> Name of the driving quantity ("M1", "F2", ...).
     character(len=:), allocatable :: driver
     !> Footer label of the residual line (default: all links and steps).
@@ -253,11 +252,9 @@ module kinetostat_step_table
     !> Summary records (real values and lines of text), printed after RESULTS; none by default.
     type(echo_record_t), allocatable :: summary(:)
     !> The machine dynamics figures of the run (the DYNAMICS block, JSON "dynamics": M_d, the
-    !> flywheel, the speed's extremes, delta); not allocated without a dynamics stage.
-    type(echo_record_t), allocatable :: dynamics(:)
-    !> Largest |M1 - M_d| / |M_d| over the rows with the true motion (negative: no steady
-    !> cycle in the run).
-    real(wp) :: max_drive_deviation = -1.0_wp
+    !> flywheel, the speed's extremes, delta); `present` false without a steady cycle. The
+    !> force peaks the block goes on with are in the run tally (dynamics_records lists both).
+    type(dynamics_figures_t) :: dynamics
     !> The run reports the pair forces in link axes (--frame link; the legacy table prints the
     !> link-axes columns instead of magnitudes and angles, CSV and JSON add them).
     logical :: link_frame = .false.
@@ -278,8 +275,9 @@ module kinetostat_step_table
     !> What did not fit in memory, when an allocation of the table failed ("the echo of
     !> OMEGA3 (1000000 values) (8000000 bytes)"; the run pipeline stops with exit 2).
     character(len=:), allocatable :: no_room
-    !> Values a mechanism keeps from one block to the next (counts, sums, the last step's
-    !> values); its own layout, not allocated before the first block.
+    !> State a mechanism's solver takes from one block to the next (the last step's pose, a
+    !> start for the next step's iteration; not a figure of the run: those go to
+    !> block_tally); its own layout, not allocated before the first block.
     real(wp), allocatable :: carry(:)
     !> Rows of the run summarized so far (kinetostat_summary's tally_rows).
     integer :: tallied_rows = 0
@@ -324,8 +322,7 @@ module kinetostat_step_table
     procedure :: finish_columns
     procedure :: set_columns
     procedure :: column_index
-    procedure :: dynamics_index
-    procedure :: dynamics_value
+    procedure :: dynamics_records
     procedure :: shaft_inertia
     procedure :: allocate_rows
     procedure :: row_count
@@ -348,7 +345,6 @@ module kinetostat_step_table
     procedure :: echo_line
     procedure :: summary_real
     procedure :: summary_line
-    procedure :: dynamics_real
   end type step_table_t
 
 contains
@@ -645,34 +641,70 @@ contains
     end do
   end function column_index
 
-  !> Index of the DYNAMICS record called `name` (0 when there is none).
-  pure integer function dynamics_index(self, name)
+  !> The DYNAMICS records of the run, in print order (the DYNAMICS block, JSON "dynamics",
+  !> the summary's dyn_ columns): the cycle's figures, then per pair force its peak with the
+  !> true motion, at constant speed and their difference in percent of the latter. None
+  !> without a steady cycle.
+  pure function dynamics_records(self) result(list)
     class(step_table_t), intent(in) :: self
-    !> Record name (the JSON key, e.g. "M_d").
-    character(*), intent(in) :: name
+    type(echo_record_t), allocatable :: list(:)
     integer :: i
-    dynamics_index = 0
-    if (.not. allocated(self%dynamics)) return
-    dynamics_index = findloc([(self%dynamics(i)%name == name, i = 1, size(self%dynamics))], .true., dim=1)
-  end function dynamics_index
-
-  !> The value of the DYNAMICS record called `name` (0 when there is none).
-  pure real(wp) function dynamics_value(self, name)
-    class(step_table_t), intent(in) :: self
-    !> Record name (the JSON key, e.g. "M_d").
-    character(*), intent(in) :: name
-    integer :: i
-    i = self%dynamics_index(name)
-    dynamics_value = 0.0_wp
-    if (i > 0) dynamics_value = self%dynamics(i)%values(1)
-  end function dynamics_value
+    real(wp) :: difference
+    allocate (list(0))
+    if (.not. self%dynamics%present) return
+    associate (d => self%dynamics)
+      if (d%drive_table) then
+        ! a driving-moment table: its mean, the scale it was given and its extremes
+        call add("M_d", d%m_d, "N*m")
+        call add("M_d_scale", d%m_d_scale, "")
+        call add("M_d_max", d%m_d_max, "N*m")
+        call add("M_d_min", d%m_d_min, "N*m")
+      else
+        call add("M_d", d%m_d, "N*m")
+      end if
+      call add("J_rotor", d%j_rotor, "kg*m^2")
+      call add("J_red_min", d%j_red_min, "kg*m^2")
+      call add("J_red_max", d%j_red_max, "kg*m^2")
+      call add("J_flywheel", d%j_flywheel, "kg*m^2")
+      if (d%delta > 0.0_wp) then
+        call add("J_flywheel_textbook", d%j_flywheel_textbook, "kg*m^2")
+        if (d%j_flywheel > 0.0_wp) call add("textbook_difference", &
+          100.0_wp * (d%j_flywheel_textbook - d%j_flywheel) / d%j_flywheel, "%")
+      end if
+      call add("omega_mean", d%omega_mean, "rad/s")
+      call add("omega_max", d%omega_max, "rad/s")
+      call add("phi_omega_max", d%phi_omega_max, "deg")
+      call add("omega_min", d%omega_min, "rad/s")
+      call add("phi_omega_min", d%phi_omega_min, "deg")
+      if (d%delta_asked > 0.0_wp) call add("delta_asked", d%delta_asked, "")
+      call add("delta", d%delta, "")
+      call add("period", d%period, "s")
+    end associate
+    if (.not. allocated(self%run_tally%peaks)) return
+    do i = 1, size(self%run_tally%peaks)
+      associate (p => self%run_tally%peaks(i))
+        call add(p%name//"_peak", p%true_motion, "N")
+        call add(p%name//"_peak_constant_speed", p%constant_speed, "N")
+        difference = 0.0_wp
+        if (p%constant_speed > 0.0_wp) difference = 100.0_wp * (p%true_motion - p%constant_speed) / p%constant_speed
+        call add(p%name//"_peak_difference", difference, "%")
+      end associate
+    end do
+  contains
+    pure subroutine add(name, value, unit)
+      character(*), intent(in) :: name, unit
+      real(wp), intent(in) :: value
+      list = [list, echo_record_t(kind=echo_real_kind, name=name, unit=unit, values=[value])]
+    end subroutine add
+  end function dynamics_records
 
   !> Moment of inertia turning with the input link besides the mechanism's links: the
   !> flywheel and the rotor of a steady cycle's DYNAMICS block (J_flywheel + J_rotor),
   !> kg*m^2; 0 without them.
   pure real(wp) function shaft_inertia(self)
     class(step_table_t), intent(in) :: self
-    shaft_inertia = self%dynamics_value("J_flywheel") + self%dynamics_value("J_rotor")
+    shaft_inertia = 0.0_wp
+    if (self%dynamics%present) shaft_inertia = self%dynamics%j_flywheel + self%dynamics%j_rotor
   end function shaft_inertia
 
   !> Allocate `n` rows of zeros for the columns defined so far.
@@ -719,10 +751,11 @@ contains
     if (self%columns(c)%voidable) void_cell = self%is_void(k)
   end function void_cell
 
-  !> The self-check figures of the run.
+  !> The self-check figures of the block just solved (the run pipeline merges them into the
+  !> run's: kinetostat_run_tally).
   pure subroutine set_selfcheck(self, max_residual, max_mismatch, driver, residual_row, mismatch_row)
     class(step_table_t), intent(inout) :: self
-    !> Largest relative equilibrium residual over all links and rows.
+    !> Largest relative equilibrium residual over all links and rows of the block.
     real(wp), intent(in) :: max_residual
     !> Largest relative mismatch of the driving effort.
     real(wp), intent(in) :: max_mismatch
@@ -730,17 +763,13 @@ contains
     character(*), intent(in) :: driver
     !> Row of this block (1..) with the largest residual, and with the largest mismatch.
     integer, intent(in), optional :: residual_row, mismatch_row
-    ! a later block of the run keeps the largest over all blocks (a NaN stays, for the guard)
-    if (self%row_offset == 0 .or. max_residual > self%max_residual .or. ieee_is_nan(max_residual)) then
-      self%max_residual = max_residual
-      self%residual_row = 0
-      if (present(residual_row)) self%residual_row = self%row_offset + residual_row
-    end if
-    if (self%row_offset == 0 .or. max_mismatch > self%max_mismatch .or. ieee_is_nan(max_mismatch)) then
-      self%max_mismatch = max_mismatch
-      self%mismatch_row = 0
-      if (present(mismatch_row)) self%mismatch_row = self%row_offset + mismatch_row
-    end if
+    integer :: row
+    row = 0
+    if (present(residual_row)) row = self%row_offset + residual_row
+    self%block_tally%residual = running_max_t(max_residual, row, .true.)
+    row = 0
+    if (present(mismatch_row)) row = self%row_offset + mismatch_row
+    self%block_tally%mismatch = running_max_t(max_mismatch, row, .true.)
     self%driver = driver
   end subroutine set_selfcheck
 
@@ -1052,18 +1081,6 @@ contains
     character(*), intent(in) :: text
     call append_record(self%summary, echo_record_t(kind=echo_line_kind, name=text, unit=""))
   end subroutine summary_line
-
-  !> A figure of the machine dynamics (the DYNAMICS block, JSON "dynamics").
-  pure subroutine dynamics_real(self, name, value, unit)
-    class(step_table_t), intent(inout) :: self
-    !> Name as printed and as the JSON key ("M_d").
-    character(*), intent(in) :: name
-    !> Value.
-    real(wp), intent(in) :: value
-    !> Unit text.
-    character(*), intent(in) :: unit
-    call append_record(self%dynamics, echo_record_t(kind=echo_real_kind, name=name, unit=unit, values=[value]))
-  end subroutine dynamics_real
 
   !> `record` appended to `list` (allocated when it is not).
   pure subroutine append_record(list, record)

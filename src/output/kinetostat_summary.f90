@@ -8,7 +8,7 @@ module kinetostat_summary
   use kinetostat_kinds, only: wp, deg_to_rad
   use kinetostat_text, only: int_str, lower, without_blanks
   use kinetostat_step_table, only: step_table_t, col_force, col_force_angle, col_moment, column_tally_t, &
-    edge_point_t
+    edge_point_t, echo_record_t
   use kinetostat_format, only: cell_number, trimmed_es
   use kinetostat_escape, only: csv_field
   implicit none
@@ -459,11 +459,11 @@ contains
     end do
     call drive_work(table, work, known)
     if (known) line = line//",work_"//table%driver
-    if (allocated(table%dynamics)) then
-      do i = 1, size(table%dynamics)
-        line = line//","//dynamics_prefix//table%dynamics(i)%name
+    associate (records => table%dynamics_records())
+      do i = 1, size(records)
+        line = line//","//dynamics_prefix//records(i)%name
       end do
-    end if
+    end associate
   end function summary_header
 
   !> Summary CSV row of a run (the columns of `summary_header`): override values as given,
@@ -505,6 +505,7 @@ contains
     !> Which of them are whole numbers.
     logical, allocatable, intent(out) :: whole(:)
     type(column_stats_t) :: s
+    type(echo_record_t), allocatable :: records(:)
     real(wp) :: work
     logical :: known, at_whole
     integer :: i, c, n
@@ -524,7 +525,8 @@ contains
     end do
     call drive_work(table, work, known)
     if (known) n = n + 1
-    if (allocated(table%dynamics)) n = n + size(table%dynamics)
+    records = table%dynamics_records()
+    n = n + size(records)
     allocate (values(n), whole(n))
     n = 0
     call add(values, whole, n, real(table%tallied_rows, wp), .true.)
@@ -544,11 +546,9 @@ contains
       call add(values, whole, n, s%mean, .false.)
     end do
     if (known) call add(values, whole, n, work, .false.)
-    if (allocated(table%dynamics)) then
-      do i = 1, size(table%dynamics)
-        call add(values, whole, n, table%dynamics(i)%values(1), .false.)
-      end do
-    end if
+    do i = 1, size(records)
+      call add(values, whole, n, records(i)%values(1), .false.)
+    end do
   contains
     !> values(n + 1) = x, whole(n + 1) = is_whole; n advanced.
     pure subroutine add(values, whole, n, x, is_whole)

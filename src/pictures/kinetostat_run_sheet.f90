@@ -808,28 +808,28 @@ contains
     kgm2 = unit_word("kg*m^2", lang)
     input = table%columns(ci)%name//", "//deg
     call sheet%text(x0, y0 + 4.0_wp, word("Machine dynamics (reduced to the input link)", lang), "heading")
-    call sheet%text(x0, y0 + 8.0_wp, word("Steady cycle", lang)//": M_d = "//short_number(table%dynamics_value("M_d"))// &
-      " "//nm//", "//word("flywheel", lang)//" J_fw = "//short_number(table%dynamics_value("J_flywheel"))//" "//kgm2// &
-      " ("//word("textbook", lang)//" "//short_number(table%dynamics_value("J_flywheel_textbook"))//"), delta = "// &
-      short_number(table%dynamics_value("delta")), "small")
+    call sheet%text(x0, y0 + 8.0_wp, word("Steady cycle", lang)//": M_d = "//short_number(table%dynamics%m_d)// &
+      " "//nm//", "//word("flywheel", lang)//" J_fw = "//short_number(table%dynamics%j_flywheel)//" "//kgm2// &
+      " ("//word("textbook", lang)//" "//short_number(table%dynamics%j_flywheel_textbook)//"), delta = "// &
+      short_number(table%dynamics%delta), "small")
     top = y0 + 10.0_wp
     call chart(sheet, table%rows(ci, :), table%rows(table%column_index("J_red"), :), x0, top, &
       word("Reduced moment of inertia J_red", lang), input, "J_red, "//kgm2, [real(wp) ::])
-    if (table%dynamics_index("M_d_scale") > 0 .and. allocated(table%driver)) then
+    if (table%dynamics%drive_table .and. allocated(table%driver)) then
       ! a driving-moment table: M_d(phi) = the balancing moment's column, dashed
       call chart(sheet, table%rows(ci, :), table%rows(table%column_index("M_red"), :), x0 + w + gap, top, &
         word("Reduced moment M_red and M_d (dashed)", lang), input, "M_red, "//nm, [real(wp) ::], &
         table%rows(table%column_index(table%driver), :))
     else
       call chart(sheet, table%rows(ci, :), table%rows(table%column_index("M_red"), :), x0 + w + gap, top, &
-        word("Reduced moment M_red and M_d (dashed)", lang), input, "M_red, "//nm, [table%dynamics_value("M_d")])
+        word("Reduced moment M_red and M_d (dashed)", lang), input, "M_red, "//nm, [table%dynamics%m_d])
     end if
     top = top + dynamics_chart_height + gap
     call chart(sheet, table%rows(ci, :), table%rows(table%column_index("dT"), :), x0, top, &
       word("Change of kinetic energy dT", lang), input, "dT, "//unit_word("J", lang), [real(wp) ::])
     call chart(sheet, table%rows(ci, :), table%rows(table%column_index("omega1"), :), x0 + w + gap, top, &
       word("Speed omega1 (dashed: mean, max, min)", lang), input, "omega1, "//unit_word("rad/s", lang), &
-      [table%dynamics_value("omega_mean"), table%dynamics_value("omega_max"), table%dynamics_value("omega_min")])
+      [table%dynamics%omega_mean, table%dynamics%omega_max, table%dynamics%omega_min])
     top = top + dynamics_chart_height + gap
     call chart(sheet, table%rows(table%column_index("J_red"), :), table%rows(table%column_index("dT"), :), x0, top, &
       word("Wittenbauer's curve: dT against J_red", lang), "J_red, "//kgm2, "dT, "//unit_word("J", lang), [real(wp) ::])
@@ -856,7 +856,7 @@ contains
         vmin = min(minval(yv), minval(levels))
         vmax = max(maxval(yv), maxval(levels))
         call x_range([vmin, vmax], .false., ylo, yhi, ystep)
-        if (vmin > 0.0_wp .and. vmax > 0.0_wp .and. table%dynamics_value("M_d") /= levels(1)) then
+        if (vmin > 0.0_wp .and. vmax > 0.0_wp .and. table%dynamics%m_d /= levels(1)) then
           ylo = ystep * floor(vmin / ystep + 1.0e-9_wp)
           yhi = ystep * ceiling(vmax / ystep - 1.0e-9_wp)
         else

@@ -7,9 +7,10 @@ module kinetostat_run
   use kinetostat_kinds, only: wp
   use kinetostat_selfcheck, only: selfcheck_tolerance
   use kinetostat_error, only: error_t, fatal_error, exit_geometry, exit_input, out_of_memory
-  use kinetostat_text, only: int_str
+  use kinetostat_text, only: int_str, printable
   use kinetostat_format, only: trimmed_es
   use kinetostat_step_table, only: step_table_t, echo_cursor_t, echo_real_kind, echo_array_kind
+  use kinetostat_run_tally, only: run_tally_t, merge_tally
   use kinetostat_deck, only: deck_source_t, release_deck_text
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_text_buffer, only: text_buffer_t
@@ -170,6 +171,13 @@ contains
     character(len=:), allocatable :: pairs_asked
     integer :: first, rows
 
+    rows = block_rows
+    if (options%block_rows > 0) then
+      rows = options%block_rows
+    else
+      call block_rows_asked(rows, error)
+      if (allocated(error)) return
+    end if
     call mech%read_deck(source, error)
     if (allocated(error)) return
     if ((options%format == format_svg .or. options%format == format_dxf) .and. .not. mech%force_sheet) then
@@ -205,8 +213,6 @@ contains
       options%plans .or. options%format == format_plans .or. options%format == format_dxf .or. options%shaking
     pairs_asked = ""
     if (allocated(options%pairs)) pairs_asked = options%pairs
-    rows = block_rows
-    if (options%block_rows > 0) rows = options%block_rows
     head%chunk = options%echo_chunk
     ! a drawing (the SVG sheet, --at K) keeps only the rows it draws, block by block
     drawn = any(options%format == [format_svg, format_plans, format_dxf]) .or. options%plans
@@ -231,12 +237,15 @@ contains
     subroutine run_block(error)
       type(error_t), allocatable, intent(out) :: error
       character(len=:), allocatable :: warning
+      table%block_tally = run_tally_t()
       call mech%solve(table, error)
       if (allocated(error)) then
         if (index(error%message, "out of memory:") == 1) error%message = table%deck//": &"//group//": "// &
           error%message
         return
       end if
+      ! the block's figures into the run's: the one place where blocks meet
+      call merge_tally(table%run_tally, table%block_tally)
       ! a mechanism without blocks (gears) gives all its rows at once
       if (table%total_rows == 0) table%total_rows = table%row_count()
       call table%finish_columns()
@@ -463,6 +472,29 @@ contains
     end subroutine check_text_room
   end subroutine run_mechanism
 
+  !> Rows per block: the maintainers' knob KINETOSTAT_BLOCK_ROWS (a whole number >= 1; the
+  !> output does not depend on it: test/cli/test_block_rows.sh), else `rows` as given.
+  !> Any other value is an input error (exit 2) naming the variable.
+  subroutine block_rows_asked(rows, error)
+    !> Rows per block (left as it is when the variable is unset or empty).
+    integer, intent(inout) :: rows
+    !> The variable's value is not a whole number >= 1.
+    type(error_t), allocatable, intent(out) :: error
+    character(len=32) :: text
+    integer :: length, status, value, ios
+    call get_environment_variable("KINETOSTAT_BLOCK_ROWS", text, length, status)
+    if (status == 1 .or. length == 0) return
+    value = 0
+    ios = 1
+    if (status == 0 .and. verify(trim(text), "0123456789") == 0) read (text, '(i32)', iostat=ios) value
+    if (ios /= 0 .or. value < 1) then
+      call fatal_error(error, exit_input, "KINETOSTAT_BLOCK_ROWS: expected a whole number of rows >= 1 (got '"// &
+        printable(trim(text(1:min(length, len(text)))))//"')")
+      return
+    end if
+    rows = value
+  end subroutine block_rows_asked
+
   !> The mechanism at row options%at_step, drawn from its sketch.
   subroutine write_at_step(mech, table, options, out, error)
     class(mechanism_t), intent(in) :: mech
@@ -557,13 +589,13 @@ contains
       return
     end do
     if (table%has_selfcheck) then
-      if (.not. ieee_is_finite(table%max_residual)) then
+      if (.not. ieee_is_finite(table%run_tally%residual%value)) then
         call fatal_error(error, exit_geometry, table%deck//": &"//table%mechanism//": "// &
-          selfcheck_where(table, table%residual_row)//"the self-check's equilibrium residual is not finite "// &
+          selfcheck_where(table, table%run_tally%residual%row)//"the self-check's equilibrium residual is not finite "// &
           "(overflow: the deck's magnitudes are out of the representable range)")
-      else if (.not. ieee_is_finite(table%max_mismatch)) then
+      else if (.not. ieee_is_finite(table%run_tally%mismatch%value)) then
         call fatal_error(error, exit_geometry, table%deck//": &"//table%mechanism//": "// &
-          selfcheck_where(table, table%mismatch_row)//"the self-check's "//table%driver//" mismatch is not "// &
+          selfcheck_where(table, table%run_tally%mismatch%row)//"the self-check's "//table%driver//" mismatch is not "// &
           "finite (overflow: the deck's magnitudes are out of the representable range)")
       end if
     end if
@@ -595,14 +627,14 @@ contains
     character(len=:), allocatable :: what
     character(len=:), allocatable :: residual_text, mismatch_text, limit_text
     if (.not. table%has_selfcheck .or. table%tallied_rows == 0) return
-    if (table%max_residual <= selfcheck_tolerance .and. table%max_mismatch <= selfcheck_tolerance) return
-    residual_text = trimmed_es(table%max_residual, 2)
-    mismatch_text = trimmed_es(table%max_mismatch, 2)
+    if (table%run_tally%residual%value <= selfcheck_tolerance .and. table%run_tally%mismatch%value <= selfcheck_tolerance) return
+    residual_text = trimmed_es(table%run_tally%residual%value, 2)
+    mismatch_text = trimmed_es(table%run_tally%mismatch%value, 2)
     limit_text = trimmed_es(selfcheck_tolerance, 1)
-    if (table%max_residual > selfcheck_tolerance) then
-      what = selfcheck_where(table, table%residual_row)//"equilibrium residual "//residual_text
+    if (table%run_tally%residual%value > selfcheck_tolerance) then
+      what = selfcheck_where(table, table%run_tally%residual%row)//"equilibrium residual "//residual_text
     else
-      what = selfcheck_where(table, table%mismatch_row)//table%driver//" mismatch vs the power balance "// &
+      what = selfcheck_where(table, table%run_tally%mismatch%row)//table%driver//" mismatch vs the power balance "// &
         mismatch_text
     end if
     what = "self-check failed at "//what//" (limit "//limit_text//"; max equilibrium residual "// &

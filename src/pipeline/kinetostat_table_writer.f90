@@ -191,7 +191,7 @@ contains
     type(text_buffer_t), intent(inout) :: out
     call put_run_summary(out, table, lang)
     if (allocated(table%summary)) call put_summary(out, table, lang)
-    if (allocated(table%dynamics)) call put_dynamics(out, table, lang)
+    if (table%dynamics%present) call put_dynamics(out, table, lang)
     if (table%has_selfcheck) call put_footer(out, table, lang)
   end subroutine write_table_tail
 
@@ -412,11 +412,13 @@ contains
     type(text_buffer_t), intent(inout) :: out
     type(step_table_t), intent(in) :: table
     integer, intent(in) :: lang
+    type(echo_record_t), allocatable :: records(:)
     integer :: i
     call put_heading(out, label("DYNAMICS (REDUCED TO THE INPUT LINK)", lang))
-    do i = 1, size(table%dynamics)
-      call out%put("   "//pad_right(label(table%dynamics(i)%name, lang), dynamics_name_width)//"="// &
-                   echo_number(table%dynamics(i)%values(1))//"  "//label(table%dynamics(i)%unit, lang))
+    records = table%dynamics_records()
+    do i = 1, size(records)
+      call out%put("   "//pad_right(label(records(i)%name, lang), dynamics_name_width)//"="// &
+                   echo_number(records(i)%values(1))//"  "//label(records(i)%unit, lang))
     end do
   end subroutine put_dynamics
 
@@ -426,6 +428,7 @@ contains
     type(step_table_t), intent(in) :: table
     integer, intent(in) :: lang
     character(len=:), allocatable :: residual_label, mismatch_label
+    real(wp) :: deviation
     call put_heading(out, label("SELF-CHECK (relative; limit ", lang)//limit_number(selfcheck_tolerance)//")")
     if (allocated(table%residual_label)) then
       residual_label = label(table%residual_label, lang)
@@ -441,13 +444,14 @@ contains
           " С РАВЕНСТВОМ МОЩНОСТЕЙ"
       end if
     end if
-    call out%put("   "//pad_right(residual_label, footer_label_width)//footer_number(table%max_residual)// &
-                 "  "//selfcheck_verdict(table%max_residual))
-    call out%put("   "//pad_right(mismatch_label, footer_label_width)//footer_number(table%max_mismatch)// &
-                 "  "//selfcheck_verdict(table%max_mismatch))
-    if (table%max_drive_deviation >= 0.0_wp) then
+    call out%put("   "//pad_right(residual_label, footer_label_width)//footer_number(table%run_tally%residual%value)// &
+                 "  "//selfcheck_verdict(table%run_tally%residual%value))
+    call out%put("   "//pad_right(mismatch_label, footer_label_width)//footer_number(table%run_tally%mismatch%value)// &
+                 "  "//selfcheck_verdict(table%run_tally%mismatch%value))
+    deviation = table%run_tally%drive_deviation%ratio()
+    if (deviation >= 0.0_wp) then
       call out%put("   "//pad_right(label("MAX |M1 - M_d|/|M_d| WITH THE TRUE MOTION", lang), footer_label_width)// &
-                   footer_number(table%max_drive_deviation)//"  "//selfcheck_verdict(table%max_drive_deviation))
+                   footer_number(deviation)//"  "//selfcheck_verdict(deviation))
     end if
   end subroutine put_footer
 

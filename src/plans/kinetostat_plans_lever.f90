@@ -108,7 +108,7 @@ contains
       plans%loads = [plans%loads, moment_load(trim(drawing%moments(j)%name), drawing%moments(j)%value, l, drawing%moments(j)%kind)]
     end do
     ! the true motion: the flywheel and the rotor on the driving link's shaft, -J eps on it
-    if (d > 0 .and. table%dynamics_index("J_flywheel") > 0) then
+    if (d > 0 .and. table%dynamics%present) then
       c = table%column_index("eps"//trim(topo%links(d)%name))
       if (c > 0) then
         plans%lever_flywheel = .true.

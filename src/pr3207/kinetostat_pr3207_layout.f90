@@ -197,9 +197,8 @@ contains
         call put_dynamics_values(table, k, self%deck%dyn%mode, motions(k))
       end do
       if (self%deck%dyn%mode >= dynamics_steady) call constant_speed_cost(steps, const, table)
-      if (self%deck%dyn%mode >= dynamics_steady) call note_drive_deviation(table, &
-        maxval(abs(steps%m1 - motions%md)), max(maxval(abs(motions%md)), maxval(abs(motions%m)), &
-        maxval(abs((self%cycle%j_flywheel + motions%j) * motions%eps))))
+      if (self%deck%dyn%mode >= dynamics_steady) call note_drive_deviation(table, [steps%m1], motions, &
+        self%cycle%j_flywheel)
     end if
     if (table%kinematics_wanted) then
       do k = 1, size(steps)

@@ -95,7 +95,7 @@ contains
     ! a steady cycle: the flywheel and the rotor on the input shaft, with the input's eps1
     j_input = 0.0_wp
     eps_in = 0
-    if (table%dynamics_index("J_flywheel") > 0) then
+    if (table%dynamics%present) then
       j_input = table%shaft_inertia()
       eps_in = table%column_index("eps1")
     end if

@@ -251,8 +251,7 @@ contains
         call put_dynamics_values(table, k, self%deck%dyn%mode, motions(k))
       end do
       call constant_speed_cost(table%deck, self%deck, steps, first, last, table)
-      call note_drive_deviation(table, maxval(abs(steps%m1 - motions%md)), max(maxval(abs(motions%md)), &
-        maxval(abs(motions%m)), maxval(abs((self%cycle%j_flywheel + motions%j) * motions%eps))))
+      call note_drive_deviation(table, [steps%m1], motions, self%cycle%j_flywheel)
     else
       do k = 1, merge(size(steps), 0, self%deck%dyn%mode > 0)
         call put_dynamics_values(table, k, self%deck%dyn%mode, reduced_motion(self%deck, steps(k)))

@@ -6,7 +6,9 @@ for deck in data/*.nml; do
   name=$(basename "$deck" .nml)
   [ "$name" = assur_toggle ] && continue
   run_ks "$deck" --format json
-  if [ "$rc" -eq 0 ] && python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); assert d["rows"] and d["columns"]' "$out" 2>"$cli_tmp/json.err"; then
+  # the first key is the layout's version, an integer (docs/cli.md "JSON format version")
+  if [ "$rc" -eq 0 ] && python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); assert d["rows"] and d["columns"]
+v = d.get("format_version"); assert type(v) is int and v >= 1 and list(d)[0] == "format_version", v' "$out" 2>"$cli_tmp/json.err"; then
     pass
   else
     fail "json-loads-$name" "rc=$rc: $(head -c 300 "$cli_tmp/json.err")"

@@ -85,10 +85,11 @@ assert "M4" in [l["name"] for l in d["zhukovsky"]["loads"]]' "$plans_dir/fivebar
 grep -q '"groups": \[' "$plans_dir/pr3050.1.json" && grep -A1 '"groups": \[' "$plans_dir/pr3050.1.json" | grep -q '"label": "I(4,1,2,3)"' \
   && pass || fail plans-pr3050-rest-groups "$(grep -A2 '"groups"' "$plans_dir/pr3050.1.json")"
 
-# the plans JSON in the run's envelope: program, mechanism, deck_title, overrides, selfcheck,
+# the plans JSON in the run's envelope: format_version (first), program, mechanism, deck_title, overrides, selfcheck,
 # warnings; the sheet's rotation against the position frame
 run_ks data/fivebar.nml --format json --at 2 --plans --set 'link(2)%m=2'
 python3 -c 'import json, sys; d = json.load(open(sys.argv[1]))
+assert type(d["format_version"]) is int and list(d)[0] == "format_version", d.get("format_version")
 for key in ("program", "mechanism", "title", "deck", "deck_title", "overrides", "selfcheck", "warnings", "sheet_rotation"):
     assert key in d, key
 assert d["overrides"] == ["link(2)%m=2"] and d["mechanism"] == "linkage" and d["selfcheck"]["ok"], d

@@ -1,0 +1,200 @@
+!> What a run reduces over its rows beyond the columns' own extremes and sums: the
+!> self-check's largest figures, the drive deviation of the true motion (a ratio of maxima,
+!> its numerator and denominator carried apart), the peaks of the pair forces with the true
+!> motion and at constant speed, and the sums a mechanism keeps over the run (friction
+!> works). A kind's `solve` notes its block's figures in a tally of the block; the run
+!> pipeline merges that into the run's tally after every block (merge_tally), the one place
+!> where blocks meet, so a run gives the same figures whatever its block size.
+!> Also the machine dynamics figures of a run (dynamics_figures_t), a typed record.
+module kinetostat_run_tally
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
+  use kinetostat_kinds, only: wp
+  implicit none
+  private
+  public :: running_max_t, ratio_of_maxima_t, force_peak_t, run_tally_t, dynamics_figures_t, merge_tally
+
+  !> The largest value of a figure over the rows so far and the row where it is (a NaN, once
+  !> seen, stays: the run's guard reports it).
+  type :: running_max_t
+    !> Largest value so far (0 before any).
+    real(wp) :: value = 0.0_wp
+    !> Row of the run (1..) where it is (0: not known).
+    integer :: row = 0
+    !> Whether any block gave a value.
+    logical :: seen = .false.
+  contains
+    procedure :: note => note_max
+  end type running_max_t
+
+  !> A ratio of maxima over the run, max(numerator) / max(denominator), with both maxima
+  !> carried apart (the ratio of the blocks' ratios' maximum would depend on the blocks).
+  type :: ratio_of_maxima_t
+    !> Largest numerator so far.
+    real(wp) :: numerator = 0.0_wp
+    !> Largest denominator so far.
+    real(wp) :: denominator = 0.0_wp
+    !> Whether any block gave one.
+    logical :: seen = .false.
+  contains
+    procedure :: note => note_ratio
+    procedure :: ratio
+  end type ratio_of_maxima_t
+
+  !> The peak of one pair force over the run with the true motion and at constant speed.
+  type :: force_peak_t
+    !> Force column ("F16").
+    character(len=:), allocatable :: name
+    !> Largest magnitude with the true motion, N.
+    real(wp) :: true_motion = 0.0_wp
+    !> Largest magnitude at the constant mean speed, N.
+    real(wp) :: constant_speed = 0.0_wp
+  end type force_peak_t
+
+  !> The figures of a block (noted by a kind's solve) or of the run so far (merged).
+  type :: run_tally_t
+    !> Largest relative equilibrium residual over all links and rows.
+    type(running_max_t) :: residual
+    !> Largest relative mismatch of the driving effort against its independent value.
+    type(running_max_t) :: mismatch
+    !> |M1 - M_d| over the rows with the true motion, against the moment scale (|M_d|, or the
+    !> loads' and inertia's moments when M_d = 0); not seen without a steady cycle.
+    type(ratio_of_maxima_t) :: drive_deviation
+    !> Peaks of the pair forces with the true motion and at constant speed, in the order
+    !> first noted; not allocated without.
+    type(force_peak_t), allocatable :: peaks(:)
+    !> Sums over the rows a mechanism keeps (its own layout: the friction works); not
+    !> allocated without.
+    real(wp), allocatable :: sums(:)
+  contains
+    procedure :: note_peak
+    procedure :: add_sums
+  end type run_tally_t
+
+  !> The machine dynamics figures of a run (the DYNAMICS block, JSON "dynamics"): M_d, the
+  !> flywheel, the speed's extremes, delta. `present` is false without a steady cycle.
+  type :: dynamics_figures_t
+    !> Whether the run has a steady cycle (the figures below are set).
+    logical :: present = .false.
+    !> Mean driving moment over the cycle, N*m.
+    real(wp) :: m_d = 0.0_wp
+    !> The drive is a moment table (its scale and extremes below are set).
+    logical :: drive_table = .false.
+    !> Scale the drive's table was given, -.
+    real(wp) :: m_d_scale = 0.0_wp
+    !> Largest and smallest moment of the drive's table, N*m.
+    real(wp) :: m_d_max = 0.0_wp, m_d_min = 0.0_wp
+    !> Rotor inertia reduced to the input link, kg*m^2.
+    real(wp) :: j_rotor = 0.0_wp
+    !> Smallest and largest reduced inertia over the cycle, kg*m^2.
+    real(wp) :: j_red_min = 0.0_wp, j_red_max = 0.0_wp
+    !> Flywheel inertia, kg*m^2.
+    real(wp) :: j_flywheel = 0.0_wp
+    !> The textbook's flywheel (delta > 0 only), kg*m^2.
+    real(wp) :: j_flywheel_textbook = 0.0_wp
+    !> Mean, largest and smallest speed of the input link, rad/s.
+    real(wp) :: omega_mean = 0.0_wp, omega_max = 0.0_wp, omega_min = 0.0_wp
+    !> Input angles of the largest and smallest speed, deg.
+    real(wp) :: phi_omega_max = 0.0_wp, phi_omega_min = 0.0_wp
+    !> Coefficient of speed fluctuation asked for (0: none asked), -.
+    real(wp) :: delta_asked = 0.0_wp
+    !> Coefficient of speed fluctuation of the motion, -.
+    real(wp) :: delta = 0.0_wp
+    !> Period of the cycle, s.
+    real(wp) :: period = 0.0_wp
+  end type dynamics_figures_t
+
+contains
+
+  !> Note a block's largest value at `row` of the run (a larger one, or a NaN, replaces).
+  pure subroutine note_max(self, value, row)
+    class(running_max_t), intent(inout) :: self
+    !> The block's largest value.
+    real(wp), intent(in) :: value
+    !> Its row of the run (0: not known).
+    integer, intent(in) :: row
+    if (self%seen) then
+      if (ieee_is_nan(self%value)) return
+      if (.not. (value > self%value .or. ieee_is_nan(value))) return
+    end if
+    self%value = value
+    self%row = row
+    self%seen = .true.
+  end subroutine note_max
+
+  !> Note a block's largest numerator and largest denominator.
+  pure subroutine note_ratio(self, numerator, denominator)
+    class(ratio_of_maxima_t), intent(inout) :: self
+    real(wp), intent(in) :: numerator, denominator
+    if (self%seen) then
+      self%numerator = max(self%numerator, numerator)
+      self%denominator = max(self%denominator, denominator)
+    else
+      self%numerator = numerator
+      self%denominator = denominator
+      self%seen = .true.
+    end if
+  end subroutine note_ratio
+
+  !> max(numerator) / max(denominator) (0 when the denominator is not positive; -1 when
+  !> nothing was noted).
+  pure real(wp) function ratio(self)
+    class(ratio_of_maxima_t), intent(in) :: self
+    ratio = -1.0_wp
+    if (.not. self%seen) return
+    ratio = 0.0_wp
+    if (self%denominator > 0.0_wp) ratio = self%numerator / self%denominator
+  end function ratio
+
+  !> Note a pair force's peak with the true motion and at constant speed.
+  pure subroutine note_peak(self, name, true_motion, constant_speed)
+    class(run_tally_t), intent(inout) :: self
+    !> Force column ("F16").
+    character(*), intent(in) :: name
+    !> Largest magnitude with the true motion, N.
+    real(wp), intent(in) :: true_motion
+    !> The same at constant speed, N.
+    real(wp), intent(in) :: constant_speed
+    integer :: i
+    if (.not. allocated(self%peaks)) allocate (self%peaks(0))
+    do i = 1, size(self%peaks)
+      if (self%peaks(i)%name /= name) cycle
+      self%peaks(i)%true_motion = max(self%peaks(i)%true_motion, true_motion)
+      self%peaks(i)%constant_speed = max(self%peaks(i)%constant_speed, constant_speed)
+      return
+    end do
+    self%peaks = [self%peaks, force_peak_t(name, true_motion, constant_speed)]
+  end subroutine note_peak
+
+  !> Add a block's sums (element by element; the first ones set their number).
+  pure subroutine add_sums(self, sums)
+    class(run_tally_t), intent(inout) :: self
+    real(wp), intent(in) :: sums(:)
+    if (.not. allocated(self%sums)) then
+      self%sums = sums
+    else
+      self%sums = self%sums + sums
+    end if
+  end subroutine add_sums
+
+  !> Merge a block's figures into the run's: maxima by max (a NaN stays), the ratio's
+  !> numerator and denominator each by max, peaks by max, sums by addition. The blocks
+  !> come in row order; the result does not depend on where the run was cut.
+  pure subroutine merge_tally(run, block)
+    !> The run's figures so far (updated).
+    type(run_tally_t), intent(inout) :: run
+    !> The figures of the block just solved.
+    type(run_tally_t), intent(in) :: block
+    integer :: i
+    if (block%residual%seen) call run%residual%note(block%residual%value, block%residual%row)
+    if (block%mismatch%seen) call run%mismatch%note(block%mismatch%value, block%mismatch%row)
+    if (block%drive_deviation%seen) call run%drive_deviation%note(block%drive_deviation%numerator, &
+      block%drive_deviation%denominator)
+    if (allocated(block%peaks)) then
+      do i = 1, size(block%peaks)
+        call run%note_peak(block%peaks(i)%name, block%peaks(i)%true_motion, block%peaks(i)%constant_speed)
+      end do
+    end if
+    if (allocated(block%sums)) call run%add_sums(block%sums)
+  end subroutine merge_tally
+
+end module kinetostat_run_tally
