@@ -10,6 +10,7 @@ module kinetostat_assur_layout
   use kinetostat_noise, only: noise_rel, force_components
   use kinetostat_vec2, only: magnitude, angle_360_deg, angle_180_deg, rotate, snap_noise, clean_zero
   use kinetostat_step_table, only: worst_row
+  use kinetostat_run_tally, only: trapezoid_t
   use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_component, col_length, &
     step_span, &
     col_moment, col_other, col_flag, col_ratio
@@ -79,7 +80,7 @@ module kinetostat_assur_layout
     !> The steady cycle (dynamics = 'steady' or 'given').
     type(cycle_t) :: cycle
   contains
-    procedure :: read_deck, solve, write_results, sketch, force_plan, mass_model
+    procedure :: read_deck, solve, write_results, sketch, force_plan, mass_model, finish_run
   end type assur_mechanism_t
 
 contains
@@ -370,12 +371,19 @@ contains
     if (self%deck%friction_on) then
       table%residual_label = "MAX EQUILIBRIUM RESIDUAL WITH FRICTION LOADS"
       table%mismatch_label = "MAX "//table%driver//" MISMATCH, POWER BALANCE WITH FRICTION"
-      ! the works over the run are summed block by block; the summary comes with the last
-      if (table%first_block()) table%carry = [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp]
-      call add_friction_work(self%deck, fsteps, first, table%carry)
-      if (last == self%deck%n) call friction_summary(self%deck, table%carry(1), table%carry(2), table)
+      ! the works over the run: the pipeline integrates the block's powers in row order
+      table%block_tally%integrals = friction_integrals(self%deck, fsteps, first)
     end if
   end subroutine solve
+
+  !> The run's summary with friction (works and efficiency), from the works integrated over
+  !> the whole run.
+  pure subroutine finish_run(self, table)
+    class(assur_mechanism_t), intent(in) :: self
+    type(step_table_t), intent(inout) :: table
+    if (.not. self%deck%friction_on .or. .not. allocated(table%run_tally%integrals)) return
+    call friction_summary(self%deck, table%run_tally%integrals(1)%area, table%run_tally%integrals(2)%area, table)
+  end subroutine finish_run
 
   !> The peaks of the pair forces with the true motion (the table's magnitude columns) against
   !> those at the constant mean speed (the block's steps solved again at omega1, eps1 = 0).
@@ -487,40 +495,41 @@ contains
     real(wp), intent(out) :: a_driver
     !> Work lost to friction, J.
     real(wp), intent(out) :: a_loss
-    real(wp) :: sums(4)
-    sums = 0.0_wp
-    call add_friction_work(deck, fsteps(1:size(steps)), 1, sums)
-    a_driver = sums(1)
-    a_loss = sums(2)
+    type(trapezoid_t) :: works(2)
+    real(wp), allocatable :: x(:), y(:)
+    integer :: i
+    works = friction_integrals(deck, fsteps(1:size(steps)), 1)
+    do i = 1, 2
+      x = works(i)%x
+      y = works(i)%y
+      call works(i)%feed(x, y)
+    end do
+    a_driver = works(1)%area
+    a_loss = works(2)%area
   end subroutine friction_work
 
-  !> Add steps step1 .. step1 + size(fsteps) - 1 (the next block of the run) to the sums
-  !> of friction_work: sums = [work of the driver, work lost, the last step's driver power
-  !> per radian, its loss per radian] (zeros before the first block).
-  pure subroutine add_friction_work(deck, fsteps, step1, sums)
+  !> The works of steps step1 .. step1 + size(fsteps) - 1 (a block of the run) as points
+  !> to integrate over |d phi1| in rad: [the driver's power per radian, the loss per radian]
+  !> against phi1 (deg). Fed in row order (kinetostat_run_tally), they give the work of the
+  !> driver and the work lost to friction, J.
+  pure function friction_integrals(deck, fsteps, step1) result(works)
     !> Validated deck.
     type(assur_deck_t), intent(in) :: deck
     !> Friction results of the block's steps.
     type(friction_step_t), intent(in) :: fsteps(:)
     !> Step number of fsteps(1).
     integer, intent(in) :: step1
-    !> The running sums (see above).
-    real(wp), intent(inout) :: sums(4)
-    real(wp) :: dphi, drive, loss
-    integer :: i, k
-    do i = 1, size(fsteps)
-      k = step1 - 1 + i
-      drive = fsteps(i)%driver_rate * fsteps(i)%motion_sign
-      loss = fsteps(i)%rate_total
-      if (k > 1) then
-        dphi = abs(assur_phi1_deg(deck, k) - assur_phi1_deg(deck, k - 1)) * deg_to_rad
-        sums(1) = sums(1) + 0.5_wp * dphi * (sums(3) + drive)
-        sums(2) = sums(2) + 0.5_wp * dphi * (sums(4) + loss)
-      end if
-      sums(3) = drive
-      sums(4) = loss
-    end do
-  end subroutine add_friction_work
+    type(trapezoid_t) :: works(2)
+    real(wp), allocatable :: phi(:)
+    integer :: i
+    phi = [(assur_phi1_deg(deck, step1 - 1 + i), i = 1, size(fsteps))]
+    works(1)%unit = deg_to_rad
+    works(2)%unit = deg_to_rad
+    works(1)%x = phi
+    works(2)%x = phi
+    works(1)%y = [(fsteps(i)%driver_rate * fsteps(i)%motion_sign, i = 1, size(fsteps))]
+    works(2)%y = [(fsteps(i)%rate_total, i = 1, size(fsteps))]
+  end function friction_integrals
 
   !> The summary block of a run with friction: works, cycle efficiency and what it means.
   pure subroutine friction_summary(deck, a_driver, a_loss, table)

@@ -9,6 +9,7 @@ module kinetostat_cam_layout
   use kinetostat_vec2, only: magnitude, angle_360_deg
   use kinetostat_noise, only: noise_floor, force_components
   use kinetostat_step_table, only: worst_row
+  use kinetostat_run_tally, only: flag_count_t
   use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_component, &
     step_span, &
     col_length, col_flag, col_ratio, col_other
@@ -53,7 +54,7 @@ module kinetostat_cam_layout
     !> The validated deck.
     type(cam_deck_t) :: deck
   contains
-    procedure :: read_deck, solve, write_results
+    procedure :: read_deck, solve, write_results, finish_run
   end type cam_mechanism_t
 
 contains
@@ -142,61 +143,45 @@ contains
     end if
     call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "N", &
       worst_row([steps%residual]), worst_row([steps%mismatch]))
-    call flag_warnings(self%deck, steps, first, table)
+    ! the steps jammed and those that lost contact, counted by the pipeline over the run
+    table%block_tally%flags = [flagged([steps%jammed]), flagged([steps%lost])]
+  contains
+    !> How many of the block's steps a flag marks, and the first one's row of the run.
+    pure function flagged(marks) result(f)
+      logical, intent(in) :: marks(:)
+      type(flag_count_t) :: f
+      f%count = count(marks)
+      if (f%count > 0) f%first_row = first - 1 + findloc(marks, .true., dim=1)
+    end function flagged
   end subroutine solve
 
   !> Warnings for the steps whose forces the table shows as 0: a jammed (self-locking)
-  !> follower and a lost contact, each with the number of such steps and the first one.
-  !> The counts and first steps are carried from block to block (table%carry: jammed count,
-  !> first jammed step, lost count, first lost step); the warnings come with the last block.
-  pure subroutine flag_warnings(deck, steps, step1, table)
-    !> Validated deck.
-    type(cam_deck_t), intent(in) :: deck
-    !> The computed steps of this block.
-    type(cam_step_t), intent(in) :: steps(:)
-    !> Step number of steps(1).
-    integer, intent(in) :: step1
-    !> Where the warnings go.
+  !> follower and a lost contact, each with the number of such steps over the run and the
+  !> first one.
+  pure subroutine finish_run(self, table)
+    class(cam_mechanism_t), intent(in) :: self
     type(step_table_t), intent(inout) :: table
-    real(wp) :: carry(4)
-    if (table%first_block()) table%carry = [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp]
-    ! counts and first steps taken here: a flag array passed as an argument would be copied
-    call tally(count(steps%jammed), findloc(steps%jammed, .true., dim=1), step1, table%carry(1:2))
-    call tally(count(steps%lost), findloc(steps%lost, .true., dim=1), step1, table%carry(3:4))
-    if (step1 - 1 + size(steps) < deck%n) return
-    carry = table%carry
-    call warn_flagged(deck, carry(1:2), "the follower jams (self-locking: no finite contact force moves it)", table)
-    call warn_flagged(deck, carry(3:4), "contact is lost (F2 <= 0 does not hold the follower on the cam)", table)
-  end subroutine flag_warnings
+    if (.not. allocated(table%run_tally%flags)) return
+    call warn_flagged(self%deck, table%run_tally%flags(1), "the follower jams (self-locking: no finite contact force "// &
+      "moves it)", table)
+    call warn_flagged(self%deck, table%run_tally%flags(2), "contact is lost (F2 <= 0 does not hold the follower on "// &
+      "the cam)", table)
+  end subroutine finish_run
 
-  !> Adds a block's flagged steps to `carry` (count, first flagged step).
-  pure subroutine tally(flagged, first, step1, carry)
-    !> How many steps of the block are flagged.
-    integer, intent(in) :: flagged
-    !> The first flagged step of the block (0: none).
-    integer, intent(in) :: first
-    !> Step number of the block's first step.
-    integer, intent(in) :: step1
-    !> Count so far and the first flagged step (0 while none).
-    real(wp), intent(inout) :: carry(2)
-    if (flagged > 0 .and. carry(1) == 0.0_wp) carry(2) = real(step1 - 1 + first, wp)
-    carry(1) = carry(1) + real(flagged, wp)
-  end subroutine tally
-
-  !> The warning for the steps a flag counted (`carry`: count, first step), when there are any.
-  pure subroutine warn_flagged(deck, carry, what, table)
+  !> The warning for the steps a flag counted over the run, when there are any.
+  pure subroutine warn_flagged(deck, flags, what, table)
     !> Validated deck.
     type(cam_deck_t), intent(in) :: deck
     !> Count and first flagged step.
-    real(wp), intent(in) :: carry(2)
+    type(flag_count_t), intent(in) :: flags
     !> What happens at those steps.
     character(*), intent(in) :: what
     !> Where the warning goes.
     type(step_table_t), intent(inout) :: table
     integer :: first
-    if (.not. carry(1) > 0.0_wp) return
-    first = nint(carry(2))
-    call table%add_warning(what//" at "//counted(nint(carry(1)), "step")//", the first at step "//int_str(first)// &
+    if (flags%count == 0) return
+    first = flags%first_row
+    call table%add_warning(what//" at "//counted(flags%count, "step")//", the first at step "//int_str(first)// &
       " (phi = "//number_str(cam_phi_deg(deck, first))//" deg); no forces there (empty in CSV, null in JSON, left out of"// &
       " the summary)")
   end subroutine warn_flagged

@@ -17,6 +17,7 @@ module kinetostat_linkage_layout
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_escape, only: table_text
   use kinetostat_mechanism, only: mechanism_t
+  use kinetostat_run_tally, only: running_max_t
   use kinetostat_sketch, only: sketch_t
   use kinetostat_drawing, only: drawing_t, force_load
   use kinetostat_bodies, only: mass_model_t
@@ -47,7 +48,7 @@ module kinetostat_linkage_layout
     !> The validated deck.
     type(linkage_deck_t) :: deck
   contains
-    procedure :: read_deck, solve, write_results, sketch, force_plan, mass_model
+    procedure :: read_deck, solve, write_results, sketch, force_plan, mass_model, finish_run
   end type linkage_mechanism_t
 
 contains
@@ -445,12 +446,24 @@ contains
       call drive_names(mech, 1, input, effort)
       call table%set_selfcheck(maxval(residual), maxval(mismatch), effort)
       table%mismatch_label = "MAX MISMATCH OF THE DRIVES' EFFORTS, POWER BALANCE"
-      if (gap > gap_tolerance) then
-        call table%add_warning("the group method's reactions differ from the Lagrange multipliers' by "// &
-          real_str(gap)//" of the largest reaction")
-      end if
+      ! the largest gap of the run decides the warning (finish_run)
+      table%block_tally%maxima = [running_max_t(gap, 0, .true.)]
     end associate
   end subroutine solve
+
+  !> The warning when the group method's reactions differ from the Lagrange multipliers' by
+  !> more than gap_tolerance somewhere in the run (the largest gap named).
+  pure subroutine finish_run(self, table)
+    class(linkage_mechanism_t), intent(in) :: self
+    type(step_table_t), intent(inout) :: table
+    real(wp) :: gap
+    if (.not. allocated(table%run_tally%maxima)) return
+    gap = table%run_tally%maxima(1)%value
+    if (gap > gap_tolerance) then
+      call table%add_warning("the group method's reactions differ from the Lagrange multipliers' by "// &
+        real_str(gap)//" of the largest reaction")
+    end if
+  end subroutine finish_run
 
   !> One row of the step table.
   pure subroutine fill_row(deck, k, s, v)

@@ -1,17 +1,22 @@
-!> What a run reduces over its rows beyond the columns' own extremes and sums: the
-!> self-check's largest figures, the drive deviation of the true motion (a ratio of maxima,
-!> its numerator and denominator carried apart), the peaks of the pair forces with the true
-!> motion and at constant speed, and the sums a mechanism keeps over the run (friction
-!> works). A kind's `solve` notes its block's figures in a tally of the block; the run
-!> pipeline merges that into the run's tally after every block (merge_tally), the one place
-!> where blocks meet, so a run gives the same figures whatever its block size.
+!> What a run reduces over its rows beyond the columns' own extremes and sums (those are
+!> kinetostat_summary's tally_rows, in row order): the self-check's largest figures, the
+!> drive deviation of the true motion (a ratio of maxima, its numerator and denominator
+!> carried apart), the peaks of the pair forces with the true motion and at constant speed,
+!> a mechanism's own maxima (the linkage solver's gap), trapezoid integrals over the rows
+!> (the friction works) and flag counts with their first row (a cam follower jammed). A
+!> kind's `solve` notes its block's figures in a tally of the block; the run pipeline
+!> merges that into the run's tally after every block (merge_tally), the one place where
+!> blocks meet, so a run gives the same figures whatever its block size: maxima by max,
+!> counts by addition, integrals fed with the block's points in row order (the same sums,
+!> term by term, as one block gives).
 !> Also the machine dynamics figures of a run (dynamics_figures_t), a typed record.
 module kinetostat_run_tally
   use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
   use kinetostat_kinds, only: wp
   implicit none
   private
-  public :: running_max_t, ratio_of_maxima_t, force_peak_t, run_tally_t, dynamics_figures_t, merge_tally
+  public :: running_max_t, ratio_of_maxima_t, force_peak_t, trapezoid_t, flag_count_t, run_tally_t, &
+    dynamics_figures_t, merge_tally
 
   !> The largest value of a figure over the rows so far and the row where it is (a NaN, once
   !> seen, stays: the run's guard reports it).
@@ -50,6 +55,32 @@ module kinetostat_run_tally
     real(wp) :: constant_speed = 0.0_wp
   end type force_peak_t
 
+  !> The integral of y over |dx| (times `unit`) by the trapezoid rule, over the rows in order:
+  !> in a block's tally the block's points (x, y), in the run's the sum so far and its last
+  !> point.
+  type :: trapezoid_t
+    !> The integral so far (run), unit of y times unit of x times `unit`.
+    real(wp) :: area = 0.0_wp
+    !> Factor of |dx| (deg_to_rad: an angle in deg integrated in rad).
+    real(wp) :: unit = 1.0_wp
+    !> The last point fed (run).
+    real(wp) :: last_x = 0.0_wp, last_y = 0.0_wp
+    !> Whether a point was fed (run).
+    logical :: started = .false.
+    !> The block's points in row order (block).
+    real(wp), allocatable :: x(:), y(:)
+  contains
+    procedure :: feed
+  end type trapezoid_t
+
+  !> How many rows a flag marks and the first of them.
+  type :: flag_count_t
+    !> Rows marked.
+    integer :: count = 0
+    !> First row of the run marked (0: none).
+    integer :: first_row = 0
+  end type flag_count_t
+
   !> The figures of a block (noted by a kind's solve) or of the run so far (merged).
   type :: run_tally_t
     !> Largest relative equilibrium residual over all links and rows.
@@ -62,12 +93,16 @@ module kinetostat_run_tally
     !> Peaks of the pair forces with the true motion and at constant speed, in the order
     !> first noted; not allocated without.
     type(force_peak_t), allocatable :: peaks(:)
-    !> Sums over the rows a mechanism keeps (its own layout: the friction works); not
+    !> A mechanism's own maxima over the rows (its layout: the linkage solver's gap); not
     !> allocated without.
-    real(wp), allocatable :: sums(:)
+    type(running_max_t), allocatable :: maxima(:)
+    !> A mechanism's trapezoid integrals over the rows (its layout: the friction works).
+    type(trapezoid_t), allocatable :: integrals(:)
+    !> A mechanism's flags counted over the rows (its layout: a cam follower jammed, contact
+    !> lost).
+    type(flag_count_t), allocatable :: flags(:)
   contains
     procedure :: note_peak
-    procedure :: add_sums
   end type run_tally_t
 
   !> The machine dynamics figures of a run (the DYNAMICS block, JSON "dynamics"): M_d, the
@@ -165,16 +200,20 @@ contains
     self%peaks = [self%peaks, force_peak_t(name, true_motion, constant_speed)]
   end subroutine note_peak
 
-  !> Add a block's sums (element by element; the first ones set their number).
-  pure subroutine add_sums(self, sums)
-    class(run_tally_t), intent(inout) :: self
-    real(wp), intent(in) :: sums(:)
-    if (.not. allocated(self%sums)) then
-      self%sums = sums
-    else
-      self%sums = self%sums + sums
-    end if
-  end subroutine add_sums
+  !> Feed points in row order: for each point after the first of the run the trapezoid
+  !> 0.5 |x - x_last| unit (y_last + y).
+  pure subroutine feed(self, x, y)
+    class(trapezoid_t), intent(inout) :: self
+    !> The points' abscissae and ordinates, in row order.
+    real(wp), intent(in) :: x(:), y(:)
+    integer :: k
+    do k = 1, size(x)
+      if (self%started) self%area = self%area + 0.5_wp * (abs(x(k) - self%last_x) * self%unit) * (self%last_y + y(k))
+      self%last_x = x(k)
+      self%last_y = y(k)
+      self%started = .true.
+    end do
+  end subroutine feed
 
   !> Merge a block's figures into the run's: maxima by max (a NaN stays), the ratio's
   !> numerator and denominator each by max, peaks by max, sums by addition. The blocks
@@ -194,7 +233,26 @@ contains
         call run%note_peak(block%peaks(i)%name, block%peaks(i)%true_motion, block%peaks(i)%constant_speed)
       end do
     end if
-    if (allocated(block%sums)) call run%add_sums(block%sums)
+    if (allocated(block%maxima)) then
+      if (.not. allocated(run%maxima)) allocate (run%maxima(size(block%maxima)))
+      do i = 1, size(block%maxima)
+        if (block%maxima(i)%seen) call run%maxima(i)%note(block%maxima(i)%value, block%maxima(i)%row)
+      end do
+    end if
+    if (allocated(block%integrals)) then
+      if (.not. allocated(run%integrals)) allocate (run%integrals(size(block%integrals)))
+      do i = 1, size(block%integrals)
+        run%integrals(i)%unit = block%integrals(i)%unit
+        if (allocated(block%integrals(i)%x)) call run%integrals(i)%feed(block%integrals(i)%x, block%integrals(i)%y)
+      end do
+    end if
+    if (allocated(block%flags)) then
+      if (.not. allocated(run%flags)) allocate (run%flags(size(block%flags)))
+      do i = 1, size(block%flags)
+        if (run%flags(i)%first_row == 0) run%flags(i)%first_row = block%flags(i)%first_row
+        run%flags(i)%count = run%flags(i)%count + block%flags(i)%count
+      end do
+    end if
   end subroutine merge_tally
 
 end module kinetostat_run_tally

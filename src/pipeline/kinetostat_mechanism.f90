@@ -33,8 +33,13 @@ module kinetostat_mechanism
   contains
     !> Read and validate the deck.
     procedure(read_deck_i), deferred :: read_deck
-    !> Compute every step and fill the step table (columns, rows, echo, self-check).
+    !> Compute the block's steps and fill its rows of the step table (the first block also
+    !> the columns and the echo); what the run reduces over its rows goes to
+    !> table%block_tally (self-check maxima, drive deviation, peaks, integrals, flags).
     procedure(solve_i), deferred :: solve
+    !> The run's own summary records and warnings from the figures of the whole run
+    !> (table%run_tally), once, after the last block's are merged; by default none.
+    procedure :: finish_run
     !> Title line of the legacy table in a language.
     procedure :: title
     !> The RESULTS block of the legacy table: header lines and the rows as the original laid them out.
@@ -121,6 +126,14 @@ contains
     type(text_buffer_t), intent(inout) :: out
     if (allocated(self%template)) call out%put_lines(self%template)
   end subroutine write_template
+
+  !> The run's summary records and warnings from its figures over the whole run: by default
+  !> none (the pipeline's own summary, self-check and warnings come in any case).
+  pure subroutine finish_run(self, table)
+    class(mechanism_t), intent(in) :: self
+    !> The results, table%run_tally holding the figures of every block.
+    type(step_table_t), intent(inout) :: table
+  end subroutine finish_run
 
   !> The topology for a drawing: by default none (`sketch%available` false).
   pure subroutine sketch(self, out)

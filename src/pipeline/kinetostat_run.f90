@@ -248,6 +248,7 @@ contains
       call merge_tally(table%run_tally, table%block_tally)
       ! a mechanism without blocks (gears) gives all its rows at once
       if (table%total_rows == 0) table%total_rows = table%row_count()
+      if (table%last_block()) call mech%finish_run(table)
       call table%finish_columns()
       if (allocated(table%no_room)) then
         call fatal_error(error, exit_input, table%deck//": &"//group//": out of memory: no room for "// &
