@@ -1,6 +1,8 @@
 !> A run solved and written in blocks of rows gives the output of the same run in one block,
 !> byte for byte, with the same warnings, self-check figures and errors:
-!> every bundled deck, every text format, blocks of 1, 2, 5 and 7 rows. The spool: text beyond
+!> bundled decks of six kinds (with warnings, friction, a run that fails at step 2), every text
+!> format, blocks of 1, 2, 5 and 7 rows; test/cli/test_block_rows.sh runs every deck it finds
+!> in data/ and docs/examples/ through the binary. The spool: text beyond
 !> its bound goes to a temporary file that becomes the target only when the run succeeded.
 module test_blocks
   use kinetostat_error, only: error_t
@@ -20,7 +22,8 @@ module test_blocks
   private
   public :: run_blocks_tests
 
-  !> The bundled decks (every mechanism; warnings, friction, a run that fails at step 2).
+  !> Bundled decks of pr3207, pr3050, sixbar, assur, cam and gears (warnings, friction, a run
+  !> that fails at step 2); the other kinds and the dynamics decks: test/cli/test_block_rows.sh.
   character(len=*), parameter :: decks(*) = [character(len=36) :: &
     "data/pr3207.nml", "data/pr3050.nml", "data/sixbar.nml", "data/sixbar_example.nml", &
     "data/assur_fourbar.nml", "data/assur_fourbar_global.nml", "data/assur_pr3050.nml", &

@@ -496,7 +496,7 @@ contains
     !> Work lost to friction, J.
     real(wp), intent(out) :: a_loss
     type(trapezoid_t) :: works(2)
-    real(wp), allocatable :: x(:), y(:)
+    real(wp) :: x(size(steps)), y(size(steps))
     integer :: i
     works = friction_integrals(deck, fsteps(1:size(steps)), 1)
     do i = 1, 2
@@ -520,15 +520,17 @@ contains
     !> Step number of fsteps(1).
     integer, intent(in) :: step1
     type(trapezoid_t) :: works(2)
-    real(wp), allocatable :: phi(:)
     integer :: i
-    phi = [(assur_phi1_deg(deck, step1 - 1 + i), i = 1, size(fsteps))]
-    works(1)%unit = deg_to_rad
-    works(2)%unit = deg_to_rad
-    works(1)%x = phi
-    works(2)%x = phi
-    works(1)%y = [(fsteps(i)%driver_rate * fsteps(i)%motion_sign, i = 1, size(fsteps))]
-    works(2)%y = [(fsteps(i)%rate_total, i = 1, size(fsteps))]
+    do i = 1, 2
+      works(i)%unit = deg_to_rad
+      allocate (works(i)%x(size(fsteps)), works(i)%y(size(fsteps)))
+    end do
+    do i = 1, size(fsteps)
+      works(1)%x(i) = assur_phi1_deg(deck, step1 - 1 + i)
+      works(1)%y(i) = fsteps(i)%driver_rate * fsteps(i)%motion_sign
+      works(2)%y(i) = fsteps(i)%rate_total
+    end do
+    works(2)%x = works(1)%x
   end function friction_integrals
 
   !> The summary block of a run with friction: works, cycle efficiency and what it means.

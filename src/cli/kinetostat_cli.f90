@@ -520,8 +520,8 @@ contains
       ca = before%column_index(name)
       cb = after%column_index(name)
       if (ca == 0 .or. cb == 0) return
-      a = largest(before%tally(ca))
-      b = largest(after%tally(cb))
+      a = largest(before%run_tally%columns(ca))
+      b = largest(after%run_tally%columns(cb))
       u = unit_symbol(unit, args%options%lang)
       if (a > 0.0_wp) then
         call say(label//words(": before ", ": до уравновешивания ")//short_number(a)//" "//u// &

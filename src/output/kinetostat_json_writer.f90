@@ -83,6 +83,7 @@ contains
       call out%put("  ],")
     end if
     if (table%dynamics%present) then
+      allocate (records(0)) ! defined before the assignment (gcc's -Wmaybe-uninitialized)
       records = table%dynamics_records()
       line = '  "dynamics": {'
       do i = 1, size(records)

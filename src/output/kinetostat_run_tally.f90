@@ -16,7 +16,7 @@ module kinetostat_run_tally
   implicit none
   private
   public :: running_max_t, ratio_of_maxima_t, force_peak_t, trapezoid_t, flag_count_t, run_tally_t, &
-    dynamics_figures_t, merge_tally
+    dynamics_figures_t, merge_tally, column_tally_t, edge_point_t
 
   !> The largest value of a figure over the rows so far and the row where it is (a NaN, once
   !> seen, stays: the run's guard reports it).
@@ -81,6 +81,60 @@ module kinetostat_run_tally
     integer :: first_row = 0
   end type flag_count_t
 
+  !> What a run has shown so far of one column (its rows are gone once written: a run is
+  !> solved and written in blocks of rows). Kept by kinetostat_summary's tally_rows.
+  type :: column_tally_t
+    !> Largest value so far (a later row replaces it only when larger by more than the
+    !> tie allowance: equal positions such as 0 and 360 deg keep the first).
+    real(wp) :: max = 0.0_wp
+    !> Smallest value so far (the first one on a tie).
+    real(wp) :: min = 0.0_wp
+    !> Row (1..) of `max`.
+    integer :: max_row = 0
+    !> Row of `min`.
+    integer :: min_row = 0
+    !> Input coordinate at `max_row` (unit of the input column; 0 without one).
+    real(wp) :: max_at = 0.0_wp
+    !> Input coordinate at `min_row`.
+    real(wp) :: min_at = 0.0_wp
+    !> Largest value, first row on an exact tie (the coarse-step warning's peak).
+    real(wp) :: peak = 0.0_wp
+    !> Row of `peak`.
+    integer :: peak_row = 0
+    !> Input coordinate at `peak_row`.
+    real(wp) :: peak_at = 0.0_wp
+    !> Largest magnitude so far.
+    real(wp) :: largest = 0.0_wp
+    !> Sum of the values (in row order).
+    real(wp) :: total = 0.0_wp
+    !> Sum of (v(k) + v(k-1)) * (x(k) - x(k-1)) over the rows (twice the trapezoid integral
+    !> over the input coordinate x).
+    real(wp) :: area2 = 0.0_wp
+    !> Value in the last row seen.
+    real(wp) :: last = 0.0_wp
+    !> Rows counted (a voidable column's void rows are not).
+    integer :: count = 0
+    !> Input coordinate covered by the trapezoids counted (both ends counted rows).
+    real(wp) :: span = 0.0_wp
+    !> Whether the last row seen was counted.
+    logical :: last_counted = .false.
+    !> `total` of the values scaled by kinetostat_summary's value_scale (2**-512), and
+    !> `area2` of the values and input steps scaled by value_scale and step_scale
+    !> (2**-560): the same sums in a range where they cannot overflow (|v| < 1.8e308),
+    !> used when the plain ones did.
+    real(wp) :: total_scaled = 0.0_wp
+    !> See `total_scaled`.
+    real(wp) :: area2_scaled = 0.0_wp
+  end type column_tally_t
+
+  !> The input coordinate at a row next to a load edge (for the coarse-step warning's text).
+  type :: edge_point_t
+    !> Row.
+    integer :: row = 0
+    !> Input coordinate there.
+    real(wp) :: at = 0.0_wp
+  end type edge_point_t
+
   !> The figures of a block (noted by a kind's solve) or of the run so far (merged).
   type :: run_tally_t
     !> Largest relative equilibrium residual over all links and rows.
@@ -101,6 +155,28 @@ module kinetostat_run_tally
     !> A mechanism's flags counted over the rows (its layout: a cam follower jammed, contact
     !> lost).
     type(flag_count_t), allocatable :: flags(:)
+    !> Rows of the run tallied so far (kinetostat_summary's tally_rows; run only, as the
+    !> members below).
+    integer :: rows = 0
+    !> Per column: what the rows so far showed (extremes, sums).
+    type(column_tally_t), allocatable :: columns(:)
+    !> Input coordinate of the first row tallied.
+    real(wp) :: first_at = 0.0_wp
+    !> Input coordinate of the last row tallied.
+    real(wp) :: last_at = 0.0_wp
+    !> Largest input step between two rows so far (unit of the input column).
+    real(wp) :: largest_step = 0.0_wp
+    !> Twice the driver's work so far (trapezoid sum over its coordinate), J.
+    real(wp) :: work2 = 0.0_wp
+    !> `work2` of the driver's values and coordinate steps scaled (see column_tally_t's
+    !> `area2_scaled`), used when `work2` overflowed.
+    real(wp) :: work2_scaled = 0.0_wp
+    !> The driver's coordinate in the last row tallied (m, or rad).
+    real(wp) :: last_coordinate = 0.0_wp
+    !> Input coordinates at the rows next to a load edge (for the coarse-step warning).
+    type(edge_point_t), allocatable :: edge_points(:)
+    !> Void rows tallied so far.
+    integer :: void_rows = 0
   contains
     procedure :: note_peak
   end type run_tally_t

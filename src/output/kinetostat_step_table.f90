@@ -8,7 +8,7 @@ module kinetostat_step_table
   use kinetostat_kinds, only: wp, rad_to_deg
   use kinetostat_error, only: error_t, out_of_memory
   use kinetostat_text, only: int_str, int64_str
-  use kinetostat_run_tally, only: run_tally_t, dynamics_figures_t, running_max_t
+  use kinetostat_run_tally, only: run_tally_t, dynamics_figures_t, running_max_t, column_tally_t, edge_point_t
   implicit none
   private
   public :: step_table_t, column_t, echo_record_t, echo_cursor_t, remark_t, column_tally_t, edge_point_t, step_span, worst_row
@@ -135,60 +135,6 @@ module kinetostat_step_table
     procedure :: take
   end type echo_cursor_t
 
-  !> What a run has shown so far of one column (its rows are gone once written: a run is
-  !> solved and written in blocks of rows). Kept by kinetostat_summary's tally_rows.
-  type :: column_tally_t
-    !> Largest value so far (a later row replaces it only when larger by more than the
-    !> tie allowance: equal positions such as 0 and 360 deg keep the first).
-    real(wp) :: max = 0.0_wp
-    !> Smallest value so far (the first one on a tie).
-    real(wp) :: min = 0.0_wp
-    !> Row (1..) of `max`.
-    integer :: max_row = 0
-    !> Row of `min`.
-    integer :: min_row = 0
-    !> Input coordinate at `max_row` (unit of the input column; 0 without one).
-    real(wp) :: max_at = 0.0_wp
-    !> Input coordinate at `min_row`.
-    real(wp) :: min_at = 0.0_wp
-    !> Largest value, first row on an exact tie (the coarse-step warning's peak).
-    real(wp) :: peak = 0.0_wp
-    !> Row of `peak`.
-    integer :: peak_row = 0
-    !> Input coordinate at `peak_row`.
-    real(wp) :: peak_at = 0.0_wp
-    !> Largest magnitude so far.
-    real(wp) :: largest = 0.0_wp
-    !> Sum of the values (in row order).
-    real(wp) :: total = 0.0_wp
-    !> Sum of (v(k) + v(k-1)) * (x(k) - x(k-1)) over the rows (twice the trapezoid integral
-    !> over the input coordinate x).
-    real(wp) :: area2 = 0.0_wp
-    !> Value in the last row seen.
-    real(wp) :: last = 0.0_wp
-    !> Rows counted (a voidable column's void rows are not).
-    integer :: count = 0
-    !> Input coordinate covered by the trapezoids counted (both ends counted rows).
-    real(wp) :: span = 0.0_wp
-    !> Whether the last row seen was counted.
-    logical :: last_counted = .false.
-    !> `total` of the values scaled by kinetostat_summary's value_scale (2**-512), and
-    !> `area2` of the values and input steps scaled by value_scale and step_scale
-    !> (2**-560): the same sums in a range where they cannot overflow (|v| < 1.8e308),
-    !> used when the plain ones did.
-    real(wp) :: total_scaled = 0.0_wp
-    !> See `total_scaled`.
-    real(wp) :: area2_scaled = 0.0_wp
-  end type column_tally_t
-
-  !> The input coordinate at a row next to a load edge (for the coarse-step warning's text).
-  type :: edge_point_t
-    !> Row.
-    integer :: row = 0
-    !> Input coordinate there.
-    real(wp) :: at = 0.0_wp
-  end type edge_point_t
-
   !> All results of a run.
   type :: step_table_t
     !> Mechanism kind: the namelist group name ("pr3207").
@@ -227,8 +173,10 @@ module kinetostat_step_table
     !> The figures a kind's solve notes for the block it solved (self-check maxima, drive
     !> deviation, force peaks, sums); the run pipeline clears it before each block.
     type(run_tally_t) :: block_tally
-    !> The same figures over the run so far: the run pipeline merges every block's into it
-    !> (kinetostat_run_tally's merge_tally). Summaries, footers and JSON read this one.
+    !> The same figures over the run so far, and per column its extremes, sums and trapezoid
+    !> sums in row order: the run pipeline merges every block's into it (kinetostat_run's
+    !> tally_block: merge_tally, then kinetostat_summary's tally_rows). Summaries, footers,
+    !> the self-check and JSON read this one.
     type(run_tally_t) :: run_tally
     !> Name of the driving quantity ("M1", "F2", ...).
     character(len=:), allocatable :: driver
@@ -279,32 +227,11 @@ module kinetostat_step_table
     !> start for the next step's iteration; not a figure of the run: those go to
     !> block_tally); its own layout, not allocated before the first block.
     real(wp), allocatable :: carry(:)
-    !> Rows of the run summarized so far (kinetostat_summary's tally_rows).
-    integer :: tallied_rows = 0
-    !> Per column: what the rows so far showed (extremes, sums).
-    type(column_tally_t), allocatable :: tally(:)
-    !> Input coordinate of the first and of the last row tallied.
-    real(wp) :: first_at = 0.0_wp
-    !> Input coordinate of the last row tallied.
-    real(wp) :: last_at = 0.0_wp
-    !> Largest input step between two rows so far (unit of the input column).
-    real(wp) :: largest_step = 0.0_wp
-    !> Twice the driver's work so far (trapezoid sum over its coordinate), J.
-    real(wp) :: work2 = 0.0_wp
-    !> `work2` of the driver's values and coordinate steps scaled (see column_tally_t's
-    !> `area2_scaled`), used when `work2` overflowed.
-    real(wp) :: work2_scaled = 0.0_wp
-    !> The driver's coordinate in the last row tallied (m, or rad).
-    real(wp) :: last_coordinate = 0.0_wp
-    !> Input coordinates at the rows next to a load edge (for the coarse-step warning).
-    type(edge_point_t), allocatable :: edge_points(:)
     !> Flag columns (0/1) that make a row void where one is nonzero: the voidable columns
     !> have no value there (a cam follower jammed or off the cam). Unallocated: none.
     integer, allocatable :: void_flags(:)
     !> Why a row is void, for the summary ("jammed or lost contact").
     character(len=:), allocatable :: void_reason
-    !> Void rows tallied so far.
-    integer :: void_rows = 0
     !> The run is one record (a design's figures, not steps): --format summary writes its
     !> values under the columns' own names.
     logical :: single_record = .false.

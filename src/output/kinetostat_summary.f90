@@ -91,12 +91,12 @@ contains
     logical :: work_known, work_in_rad
     nc = size(table%columns)
     n = table%row_count()
-    if (table%tallied_rows == 0) then
-      if (allocated(table%tally)) deallocate (table%tally)
-      allocate (table%tally(nc))
-      if (allocated(table%edge_points)) deallocate (table%edge_points)
-      allocate (table%edge_points(0))
-      table%void_rows = 0
+    if (table%run_tally%rows == 0) then
+      if (allocated(table%run_tally%columns)) deallocate (table%run_tally%columns)
+      allocate (table%run_tally%columns(nc))
+      if (allocated(table%run_tally%edge_points)) deallocate (table%run_tally%edge_points)
+      allocate (table%run_tally%edge_points(0))
+      table%run_tally%void_rows = 0
     end if
     if (n == 0) return
     d = 0
@@ -111,9 +111,9 @@ contains
     do k = 1, n
       void(k) = table%is_void(k)
     end do
-    previous_at = table%last_at
+    previous_at = table%run_tally%last_at
     last_d = 0.0_wp
-    if (d > 0) last_d = table%tally(d)%last
+    if (d > 0) last_d = table%run_tally%columns(d)%last
     do k = 1, n
       row = table%row_offset + k
       x = at(k)
@@ -126,28 +126,29 @@ contains
         end if
       end if
       if (row == 1) then
-        table%first_at = x
-        table%largest_step = 0.0_wp
-        table%work2 = 0.0_wp
-        table%work2_scaled = 0.0_wp
+        table%run_tally%first_at = x
+        table%run_tally%largest_step = 0.0_wp
+        table%run_tally%work2 = 0.0_wp
+        table%run_tally%work2_scaled = 0.0_wp
       else
-        table%largest_step = max(table%largest_step, abs(x - table%last_at))
+        table%run_tally%largest_step = max(table%run_tally%largest_step, abs(x - table%run_tally%last_at))
         if (work_known) then
-          term = (table%rows(d, k) + last_d) * (coordinate - table%last_coordinate)
-          table%work2 = table%work2 + term
-          if (.not. abs(term) < tiny_term) table%work2_scaled = table%work2_scaled + (table%rows(d, k) * value_scale + &
-            last_d * value_scale) * (coordinate * step_scale - table%last_coordinate * step_scale)
+          term = (table%rows(d, k) + last_d) * (coordinate - table%run_tally%last_coordinate)
+          table%run_tally%work2 = table%run_tally%work2 + term
+          if (.not. abs(term) < tiny_term) table%run_tally%work2_scaled = table%run_tally%work2_scaled + &
+            (table%rows(d, k) * value_scale + last_d * value_scale) * &
+            (coordinate * step_scale - table%run_tally%last_coordinate * step_scale)
         end if
       end if
-      if (void(k)) table%void_rows = table%void_rows + 1
+      if (void(k)) table%run_tally%void_rows = table%run_tally%void_rows + 1
       ! the driver's last counted value (a void cell leaves it), as its column's tally keeps it
       if (d > 0) then
         if (.not. (void(k) .and. table%columns(d)%voidable)) last_d = table%rows(d, k)
       end if
-      if (near_load_edge(row)) table%edge_points = [table%edge_points, edge_point_t(row, x)]
-      table%last_at = x
-      table%last_coordinate = coordinate
-      table%tallied_rows = row
+      if (near_load_edge(row)) table%run_tally%edge_points = [table%run_tally%edge_points, edge_point_t(row, x)]
+      table%run_tally%last_at = x
+      table%run_tally%last_coordinate = coordinate
+      table%run_tally%rows = row
     end do
     ! the columns in `parts` contiguous shares (one per thread with OpenMP), each a tile of
     ! rows at a time, all its columns over the tile (the tile stays in the cache)
@@ -160,7 +161,7 @@ contains
         k2 = min(n, k1 + tile_rows - 1)
         if (k1 > 1) before = at(k1 - 1)
         do c = (part - 1) * nc / parts + 1, part * nc / parts
-          call tally_column(table%tally(c), table%rows(c, k1:k2), at(k1:k2), void(k1:k2), table%columns(c)%voidable, &
+          call tally_column(table%run_tally%columns(c), table%rows(c, k1:k2), at(k1:k2), void(k1:k2), table%columns(c)%voidable, &
                             table%row_offset + k1 - 1, before)
         end do
       end do
@@ -281,8 +282,8 @@ contains
     type(column_stats_t) :: s
     real(wp) :: span
     integer :: n
-    n = table%tallied_rows
-    associate (t => table%tally(c))
+    n = table%run_tally%rows
+    associate (t => table%run_tally%columns(c))
       s%max = t%max
       s%min = t%min
       s%max_row = t%max_row
@@ -292,14 +293,14 @@ contains
       s%mean = t%total / real(max(1, t%count), wp)
       if (.not. ieee_is_finite(s%mean)) s%mean = t%total_scaled / real(max(1, t%count), wp) / value_scale
       if (table%input_column > 0 .and. n > 1) then
-        span = table%last_at - table%first_at
+        span = table%run_tally%last_at - table%run_tally%first_at
         ! rows left out (void): over the stretches between rows counted
         if (t%count < n) span = t%span
         if (span /= 0.0_wp) then
           s%mean = 0.5_wp * t%area2 / span
           if (.not. ieee_is_finite(s%mean)) then
             ! the sums overflowed (values near the largest real): the scaled ones
-            span = table%last_at * step_scale - table%first_at * step_scale
+            span = table%run_tally%last_at * step_scale - table%run_tally%first_at * step_scale
             if (t%count < n) span = t%span * step_scale
             if (span /= 0.0_wp) s%mean = 0.5_wp * (t%area2_scaled / span) / value_scale
           end if
@@ -324,13 +325,13 @@ contains
     logical :: in_rad
     work = 0.0_wp
     known = .false.
-    if (.not. allocated(table%driver) .or. table%tallied_rows == 0) return
+    if (.not. allocated(table%driver) .or. table%run_tally%rows == 0) return
     d = table%column_index(table%driver)
     call work_kind(table, d, known, in_rad)
-    if (known) work = 0.5_wp * table%work2
+    if (known) work = 0.5_wp * table%run_tally%work2
     if (known .and. .not. ieee_is_finite(work)) then
       ! the sum overflowed: the scaled one (still not finite when the work itself is not)
-      work = 0.5_wp * table%work2_scaled / value_scale / step_scale
+      work = 0.5_wp * table%run_tally%work2_scaled / value_scale / step_scale
     end if
   end subroutine drive_work
 
@@ -345,20 +346,20 @@ contains
     real(wp) :: step
     integer :: n, c, k, edge
     character(len=:), allocatable :: names, first_text
-    n = table%tallied_rows
+    n = table%run_tally%rows
     if (table%input_column == 0 .or. n < 2 .or. .not. allocated(table%load_changes)) return
     if (size(table%load_changes) /= n) return
-    step = table%largest_step
+    step = table%run_tally%largest_step
     if (.not. step > coarse_step_limit * (1.0_wp + 1.0e-9_wp)) return
     names = ""
     do c = 1, size(table%columns)
       if (.not. table%columns(c)%csv .or. table%columns(c)%kind /= col_force) cycle
-      k = table%tally(c)%peak_row
-      if (.not. table%tally(c)%peak > 0.0_wp) cycle
+      k = table%run_tally%columns(c)%peak_row
+      if (.not. table%run_tally%columns(c)%peak > 0.0_wp) cycle
       edge = near_edge(k)
       if (edge == 0) cycle
       if (len(names) == 0) then
-        first_text = " (the peak of "//table%columns(c)%name//" = "//brief(table%tally(c)%peak)// &
+        first_text = " (the peak of "//table%columns(c)%name//" = "//brief(table%run_tally%columns(c)%peak)// &
           " "//table%columns(c)%unit//" at "//input_text(k)//", the load switches between "// &
           input_text(edge - 1)//" and "//input_text(edge)//")"
         names = table%columns(c)%name
@@ -390,8 +391,8 @@ contains
       real(wp) :: x
       integer :: i
       x = 0.0_wp
-      do i = 1, size(table%edge_points)
-        if (table%edge_points(i)%row == j) x = table%edge_points(i)%at
+      do i = 1, size(table%run_tally%edge_points)
+        if (table%run_tally%edge_points(i)%row == j) x = table%run_tally%edge_points(i)%at
       end do
       t = table%columns(table%input_column)%name//" = "//brief(x)//" "//table%columns(table%input_column)%unit
     end function input_text
@@ -525,15 +526,16 @@ contains
     end do
     call drive_work(table, work, known)
     if (known) n = n + 1
+    allocate (records(0)) ! defined before the assignment (gcc's -Wmaybe-uninitialized)
     records = table%dynamics_records()
     n = n + size(records)
     allocate (values(n), whole(n))
     n = 0
-    call add(values, whole, n, real(table%tallied_rows, wp), .true.)
-    if (allocated(table%void_flags)) call add(values, whole, n, real(table%void_rows, wp), .true.)
+    call add(values, whole, n, real(table%run_tally%rows, wp), .true.)
+    if (allocated(table%void_flags)) call add(values, whole, n, real(table%run_tally%void_rows, wp), .true.)
     if (table%input_column > 0) then
-      call add(values, whole, n, table%first_at, .false.)
-      call add(values, whole, n, table%last_at, .false.)
+      call add(values, whole, n, table%run_tally%first_at, .false.)
+      call add(values, whole, n, table%run_tally%last_at, .false.)
     end if
     at_whole = table%input_column == 0
     do c = 1, size(table%columns)

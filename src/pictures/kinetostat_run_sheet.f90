@@ -254,7 +254,7 @@ contains
       allocate (lines(0))
       return
     end if
-    text = word("The input step", lang)//" "//scale_number(table%largest_step)//" "//unit_word("deg", lang)//" "// &
+    text = word("The input step", lang)//" "//scale_number(table%run_tally%largest_step)//" "//unit_word("deg", lang)//" "// &
       word("is coarser than", lang)//" "//scale_number(coarse_step_limit)//" "//unit_word("deg", lang)//" "// &
       word("next to a load that switches on or off", lang)//": "//word("the curves join the steps by chords and "// &
       "may miss the true peaks and the true mean; rerun with a finer step", lang)//"."

@@ -244,11 +244,8 @@ contains
           error%message
         return
       end if
-      ! the block's figures into the run's: the one place where blocks meet
-      call merge_tally(table%run_tally, table%block_tally)
       ! a mechanism without blocks (gears) gives all its rows at once
       if (table%total_rows == 0) table%total_rows = table%row_count()
-      if (table%last_block()) call mech%finish_run(table)
       call table%finish_columns()
       if (allocated(table%no_room)) then
         call fatal_error(error, exit_input, table%deck//": &"//group//": out of memory: no room for "// &
@@ -265,8 +262,10 @@ contains
         call start_output(error)
         if (allocated(error)) return
       end if
-      call tally_rows(table)
+      call tally_block(table)
       if (table%last_block()) then
+        ! the kind's own summary and warnings from the run's figures
+        call mech%finish_run(table)
         call guard_inputs(table, error)
         if (allocated(error)) return
         call guard_summary(table, options%kinematics, error)
@@ -473,6 +472,18 @@ contains
     end subroutine check_text_room
   end subroutine run_mechanism
 
+  !> The block just solved into the run's tally (table%run_tally), the one place where the
+  !> blocks of a run meet: the figures the kind noted for the block (self-check maxima, drive
+  !> deviation, peaks, integrals, flags: merge_tally) and per column the extremes, sums and
+  !> trapezoid sums of its rows in row order (tally_rows). Whatever the blocks, the run's
+  !> figures are those of one block of every row, bit for bit (test/cli/test_block_rows.sh).
+  subroutine tally_block(table)
+    !> The results: the block's rows and figures; the run's tally is updated.
+    type(step_table_t), intent(inout) :: table
+    call merge_tally(table%run_tally, table%block_tally)
+    call tally_rows(table)
+  end subroutine tally_block
+
   !> Rows per block: the maintainers' knob KINETOSTAT_BLOCK_ROWS (a whole number >= 1; the
   !> output does not depend on it: test/cli/test_block_rows.sh), else `rows` as given.
   !> Any other value is an input error (exit 2) naming the variable.
@@ -627,7 +638,7 @@ contains
     type(error_t), allocatable, intent(out) :: error
     character(len=:), allocatable :: what
     character(len=:), allocatable :: residual_text, mismatch_text, limit_text
-    if (.not. table%has_selfcheck .or. table%tallied_rows == 0) return
+    if (.not. table%has_selfcheck .or. table%run_tally%rows == 0) return
     if (table%run_tally%residual%value <= selfcheck_tolerance .and. table%run_tally%mismatch%value <= selfcheck_tolerance) return
     residual_text = trimmed_es(table%run_tally%residual%value, 2)
     mismatch_text = trimmed_es(table%run_tally%mismatch%value, 2)
@@ -665,7 +676,7 @@ contains
     real(wp) :: work
     logical :: known
     integer :: c
-    if (table%tallied_rows == 0) return
+    if (table%run_tally%rows == 0) return
     do c = 1, size(table%columns)
       if (.not. summarized(table, c, kinematics)) cycle
       s = column_stats(table, c)

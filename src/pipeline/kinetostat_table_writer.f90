@@ -337,14 +337,14 @@ contains
     real(wp) :: work
     logical :: known
     integer :: c, d, n
-    n = table%tallied_rows
+    n = table%run_tally%rows
     if (table%input_column == 0 .or. n == 0) return
     input = upper(table%columns(table%input_column)%name)
     call put_heading(out, label("SUMMARY", lang)//" ("//input//" "// &
-      trim(adjustl(fixed_field(table%first_at, 9, 2)))//" ... "// &
-      trim(adjustl(fixed_field(table%last_at, 9, 2)))//" "// &
+      trim(adjustl(fixed_field(table%run_tally%first_at, 9, 2)))//" ... "// &
+      trim(adjustl(fixed_field(table%run_tally%last_at, 9, 2)))//" "// &
       label(table%columns(table%input_column)%unit, lang)//")")
-    if (table%void_rows > 0) call out%put(left_out_line())
+    if (table%run_tally%void_rows > 0) call out%put(left_out_line())
     do c = 1, size(table%columns)
       if (table%columns(c)%kind /= col_force .or. .not. table%columns(c)%csv) cycle
       s = column_stats(table, c)
@@ -373,7 +373,7 @@ contains
     pure function left_out_line() result(line)
       character(len=:), allocatable :: line
       character(len=18) :: whole
-      write (whole, '(i18)') table%void_rows
+      write (whole, '(i18)') table%run_tally%void_rows
       line = name_part(label("STEPS LEFT OUT", lang))//whole//"  ("// &
         label(upper(table%void_reason)//": NO FORCES, NOT IN MAX, MIN, MEAN", lang)//")"
     end function left_out_line
@@ -415,6 +415,7 @@ contains
     type(echo_record_t), allocatable :: records(:)
     integer :: i
     call put_heading(out, label("DYNAMICS (REDUCED TO THE INPUT LINK)", lang))
+    allocate (records(0)) ! defined before the assignment (gcc's -Wmaybe-uninitialized)
     records = table%dynamics_records()
     do i = 1, size(records)
       call out%put("   "//pad_right(label(records(i)%name, lang), dynamics_name_width)//"="// &
