@@ -17,7 +17,10 @@ module test_blocks
   use kinetostat_spool, only: spool_t
   use kinetostat_posix, only: process_id
   use kinetostat_text, only: int_str
-  use test_harness, only: test_counts_t, check_true
+  use test_harness, only: test_counts_t, check_true, check_close
+  use kinetostat_kinds, only: wp
+  use kinetostat_run_tally, only: run_tally_t, running_max_t, trapezoid_t, flag_count_t, merge_tally
+  use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_nan
   implicit none
   private
   public :: run_blocks_tests
@@ -40,10 +43,66 @@ contains
   !> All tests of this suite.
   subroutine run_blocks_tests(t)
     type(test_counts_t), intent(inout) :: t
+    call test_run_tally(t)
     call test_blocks_equal_whole(t)
     call test_drawings_in_blocks(t)
     call test_spool(t)
   end subroutine run_blocks_tests
+
+  !> The run tally's merge on figures worked by hand: a run of 6 rows cut into blocks of
+  !> 1, 2, 4 and 6 rows gives the figures of the whole run bit for bit (the drive deviation
+  !> max|d| / max(scale), not the largest block ratio; the trapezoid term by term; the first
+  !> flagged row; the first of two NaN residuals).
+  subroutine test_run_tally(t)
+    type(test_counts_t), intent(inout) :: t
+    !> |M1 - M_d| and the moment scale per row: the largest ratio of a row (0.9/1) is not
+    !> the run's, max 0.9 / max 10 = 0.09.
+    real(wp), parameter :: dev(6) = [0.1_wp, 0.9_wp, 0.3_wp, 0.2_wp, 0.5_wp, 0.05_wp]
+    real(wp), parameter :: scl(6) = [10.0_wp, 1.0_wp, 2.0_wp, 4.0_wp, 3.0_wp, 1.0_wp]
+    !> Points of a trapezoid over |dx| (x in deg, integrated in rad).
+    real(wp), parameter :: x(6) = [0.0_wp, 30.0_wp, 60.0_wp, 90.0_wp, 120.0_wp, 150.0_wp]
+    real(wp), parameter :: y(6) = [1.0_wp, 3.0_wp, -2.0_wp, 0.5_wp, 7.0_wp, 1.0_wp]
+    logical, parameter :: flag(6) = [.false., .false., .true., .false., .true., .true.]
+    integer, parameter :: sizes(4) = [1, 2, 4, 6]
+    real(wp) :: residual(6), area
+    type(run_tally_t) :: run, block
+    integer :: b, k1, k2, k
+    character(len=2) :: tag
+    residual = [1.0e-16_wp, 3.0e-16_wp, ieee_value(1.0_wp, ieee_quiet_nan), 2.0e-16_wp, &
+                ieee_value(1.0_wp, ieee_quiet_nan), 9.0e-16_wp]
+    ! the trapezoid by hand: 0.5 * |dx| in rad * (y(k-1) + y(k)) summed in row order
+    area = 0.0_wp
+    do k = 2, 6
+      area = area + 0.5_wp * (abs(x(k) - x(k - 1)) * (acos(-1.0_wp) / 180.0_wp)) * (y(k - 1) + y(k))
+    end do
+    do b = 1, size(sizes)
+      write (tag, '(i2)') sizes(b)
+      run = run_tally_t()
+      do k1 = 1, 6, sizes(b)
+        k2 = min(6, k1 + sizes(b) - 1)
+        block = run_tally_t()
+        k = maxloc(residual(k1:k2), 1, mask=.not. ieee_is_nan(residual(k1:k2)))
+        if (any(ieee_is_nan(residual(k1:k2)))) k = findloc(ieee_is_nan(residual(k1:k2)), .true., 1)
+        block%residual = running_max_t(residual(k1 - 1 + k), k1 - 1 + k, .true.)
+        call block%drive_deviation%note(maxval(dev(k1:k2)), maxval(scl(k1:k2)))
+        allocate (block%integrals(1), block%flags(1))
+        block%integrals(1)%unit = acos(-1.0_wp) / 180.0_wp
+        block%integrals(1)%x = x(k1:k2)
+        block%integrals(1)%y = y(k1:k2)
+        block%flags(1) = flag_count_t(count(flag(k1:k2)), 0)
+        if (any(flag(k1:k2))) block%flags(1)%first_row = k1 - 1 + findloc(flag(k1:k2), .true., 1)
+        call merge_tally(run, block)
+      end do
+      call check_close(t, "run tally, blocks of "//tag//": drive deviation max/max", 0.09_wp, &
+        run%drive_deviation%ratio(), 1.0e-15_wp, 0.0_wp)
+      call check_true(t, "run tally, blocks of "//tag//": trapezoid term by term", &
+        run%integrals(1)%area == area, "area differs from the sum in row order")
+      call check_true(t, "run tally, blocks of "//tag//": flags 3, first at row 3", &
+        run%flags(1)%count == 3 .and. run%flags(1)%first_row == 3, "count or first row")
+      call check_true(t, "run tally, blocks of "//tag//": the first NaN residual kept (row 3)", &
+        ieee_is_nan(run%residual%value) .and. run%residual%row == 3, "residual row")
+    end do
+  end subroutine test_run_tally
 
   !> One run of `path` with `options`: its output (what the spool did not take), and its
   !> report: error text and code, or warnings and self-check figures.
