@@ -9,10 +9,24 @@ module kinetostat_json_writer
   use kinetostat_format, only: full_number, put_cell, put_cells, cell_room
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_escape, only: json_string
-  use kinetostat_row_blocks, only: put_row_blocks, sink_i
+  use kinetostat_row_blocks, only: put_row_blocks, row_writer_t, text_sink_t
   implicit none
   private
   public :: write_json, json_string, put_run_identity, put_run_verdict
+
+  !> The JSON's rows of a table: its shown columns and how each is written.
+  type, extends(row_writer_t) :: json_rows_t
+    !> The results (during write_json only).
+    type(step_table_t), pointer :: table => null()
+    !> The table's columns the JSON shows, in order.
+    integer, allocatable :: columns(:)
+    !> Per shown column: a whole number (flag, count).
+    logical, allocatable :: whole(:)
+    !> Per shown column: null in a row without values.
+    logical, allocatable :: voidable(:)
+  contains
+    procedure :: put_rows => put_json_rows
+  end type json_rows_t
 
 contains
 
@@ -25,17 +39,16 @@ contains
     !> Title of the mechanism (as the legacy table prints it).
     character(*), intent(in) :: title
     !> Finite results.
-    type(step_table_t), intent(in) :: table
+    type(step_table_t), intent(in), target :: table
     !> Where the lines go.
     type(text_buffer_t), intent(inout) :: out
     !> Where the head is (written whole when absent).
     type(echo_cursor_t), intent(inout), optional :: head
     !> Takes the text so far while the rows are formatted in parallel (see put_row_blocks).
-    procedure(sink_i), optional :: sink
+    class(text_sink_t), intent(inout), optional :: sink
     type(echo_cursor_t) :: whole_head
     character(len=:), allocatable :: line
-    logical, allocatable :: whole(:), voidable(:)
-    integer, allocatable :: columns(:)
+    type(json_rows_t) :: rows
     integer :: i, c, last
     logical :: shown(size(table%columns))
     last = 0
@@ -53,16 +66,17 @@ contains
         end do
       end if
     end if
-    allocate (columns(0))
+    allocate (rows%columns(0))
     do c = 1, size(table%columns)
-      if (shown(c)) columns = [columns, c]
+      if (shown(c)) rows%columns = [rows%columns, c]
     end do
-    allocate (whole(size(columns)), voidable(size(columns)))
-    do c = 1, size(columns)
-      whole(c) = table%is_whole(columns(c))
-      voidable(c) = table%columns(columns(c))%voidable
+    allocate (rows%whole(size(rows%columns)), rows%voidable(size(rows%columns)))
+    do c = 1, size(rows%columns)
+      rows%whole(c) = table%is_whole(rows%columns(c))
+      rows%voidable(c) = table%columns(rows%columns(c))%voidable
     end do
-    call put_row_blocks(table%row_count(), size(table%columns) * (cell_room + 2) + 8, put_rows, out, sink)
+    rows%table => table
+    call put_row_blocks(table%row_count(), size(table%columns) * (cell_room + 2) + 8, rows, out, sink)
     if (.not. table%last_block()) return
     call out%put("  ],")
     if (allocated(table%summary)) then
@@ -129,27 +143,34 @@ contains
       call out%put('  "rows": [')
       cur%done = .true.
     end subroutine head_part
-
-    !> Rows `first_row` to `last_row`, one JSON array a line.
-    subroutine put_rows(first_row, last_row, part)
-      integer, intent(in) :: first_row, last_row
-      type(text_buffer_t), intent(inout) :: part
-      integer :: k
-      ! room for every row at once (no copying while the buffer grows)
-      call part%reserve((last_row - first_row + 1) * (size(table%columns) * (cell_room + 2) + 8))
-      do k = first_row, last_row
-        call part%append("    [")
-        ! no value (a jammed cam follower's forces): null
-        call put_cells(part, table%rows(:, k), columns, whole, voidable, table%is_void(k), ", ", "null")
-        if (table%row_offset + k < max(table%total_rows, table%row_count())) then
-          call part%append("],")
-        else
-          call part%append("]")
-        end if
-        call part%end_line()
-      end do
-    end subroutine put_rows
   end subroutine write_json
+
+  !> Rows `first` to `last` of the JSON, one array a line.
+  subroutine put_json_rows(self, first, last, out, later)
+    !> The table and its shown columns.
+    class(json_rows_t), intent(in) :: self
+    !> First and last row.
+    integer, intent(in) :: first, last
+    !> Where the rows go.
+    type(text_buffer_t), intent(inout) :: out
+    !> Unused (the JSON has one section).
+    type(text_buffer_t), intent(inout) :: later
+    integer :: k
+    ! room for every row at once (no copying while the buffer grows)
+    call out%reserve((last - first + 1) * (size(self%table%columns) * (cell_room + 2) + 8))
+    do k = first, last
+      call out%append("    [")
+      ! no value (a jammed cam follower's forces): null
+      call put_cells(out, self%table%rows(:, k), self%columns, self%whole, self%voidable, self%table%is_void(k), ", ", &
+        "null")
+      if (self%table%row_offset + k < max(self%table%total_rows, self%table%row_count())) then
+        call out%append("],")
+      else
+        call out%append("]")
+      end if
+      call out%end_line()
+    end do
+  end subroutine put_json_rows
 
   !> The first members of a run's JSON object: "program", "mechanism", "title", "deck",
   !> "deck_title" (the deck's own title, when it has one), "row_name", "overrides" (the
