@@ -12,6 +12,8 @@ module kinetostat_cli_options
   public :: option_t, command_t, cli_options, cli_commands, find_option, find_command, value_options, &
     command_takes, synopsis_lines, usage_text, frame_names, choice_text
 
+  !> Longest option word of a command ("--format=summary|npy").
+  integer, parameter :: word_room = 40
   !> Longest line of synopsis_lines.
   integer, parameter :: synopsis_room = 240
 
@@ -129,8 +131,7 @@ contains
     allocate (table(0)) ! defined before the assignment (gcc's -Wuninitialized on the descriptor)
     table = cli_options()
     do k = 1, size(table)
-      if (name == trim(table(k)%name)) return
-      if (len_trim(table(k)%short) > 0 .and. name == trim(table(k)%short)) return
+      if (name == trim(table(k)%name) .or. (len_trim(name) > 0 .and. name == trim(table(k)%short))) return
     end do
     k = 0
   end function find_option
@@ -138,14 +139,20 @@ contains
   !> The index in cli_commands() of a subcommand by its word ("" the run of a deck); 0 if none.
   pure integer function find_command(name) result(k)
     character(*), intent(in) :: name
+    character(len=10), allocatable :: words(:)
+    allocate (words(0)) ! defined before the assignment (gcc's -Wuninitialized on the descriptor)
+    words = command_names()
+    k = findloc(words, name, dim=1)
+  end function find_command
+
+  !> The subcommands' words in the order of cli_commands().
+  pure function command_names() result(words)
+    character(len=10), allocatable :: words(:)
     type(command_t), allocatable :: table(:)
     allocate (table(0)) ! defined before the assignment (gcc's -Wuninitialized on the descriptor)
     table = cli_commands()
-    do k = 1, size(table)
-      if (name == trim(table(k)%name)) return
-    end do
-    k = 0
-  end function find_command
+    words = table%name
+  end function command_names
 
   !> The names (long and short) of the options that take a value.
   pure function value_options() result(names)
@@ -167,34 +174,35 @@ contains
   pure logical function command_takes(command, option)
     integer, intent(in) :: command, option
     type(option_t), allocatable :: options(:)
-    character(len=:), allocatable :: words, word
-    integer :: start, blank
+    character(len=word_room), allocatable :: words(:)
+    integer :: w
     allocate (options(0)) ! defined before the assignment (gcc's -Wuninitialized on the descriptor)
     options = cli_options()
     command_takes = any(trim(options(option)%name) == ["--help   ", "--version"])
     if (command_takes) return
     words = command_words(command)
-    start = 1
-    do while (start <= len(words))
-      blank = index(words(start:), " ")
-      if (blank == 0) blank = len(words) - start + 2
-      word = bare(words(start:start + blank - 2))
-      if (find_option(word) == option) then
-        command_takes = .true.
-        return
-      end if
-      start = start + blank
+    do w = 1, size(words)
+      command_takes = find_option(bare(trim(words(w)))) == option
+      if (command_takes) return
     end do
   end function command_takes
 
-  !> The option words of a command.
+  !> The option words of a command, one an element.
   pure function command_words(command) result(words)
     integer, intent(in) :: command
-    character(len=:), allocatable :: words
+    character(len=word_room), allocatable :: words(:)
     type(command_t), allocatable :: commands(:)
+    character(len=:), allocatable :: text
+    integer :: blank
     allocate (commands(0)) ! defined before the assignment (gcc's -Wuninitialized on the descriptor)
     commands = cli_commands()
-    words = trim(commands(command)%options)
+    text = trim(commands(command)%options)//" "
+    allocate (words(0))
+    do while (len_trim(text) > 0)
+      blank = index(text, " ")
+      words = [character(len=word_room) :: words, text(:blank - 1)]
+      text = text(blank + 1:)
+    end do
   end function command_words
 
   !> An option word of a command without its marks ("--vary!" -> "--vary",
@@ -259,8 +267,9 @@ contains
     integer, intent(in) :: c, width
     character(len=synopsis_room), allocatable :: lines(:)
     type(command_t), allocatable :: commands(:)
-    character(len=:), allocatable :: line, words, piece
-    integer :: start, blank
+    character(len=:), allocatable :: line, piece
+    character(len=word_room), allocatable :: words(:)
+    integer :: w
     allocate (commands(0)) ! defined before the assignment (gcc's -Wuninitialized on the descriptor)
     commands = cli_commands()
     allocate (lines(0))
@@ -268,17 +277,13 @@ contains
     if (len_trim(commands(c)%name) > 0) line = line//trim(commands(c)%name)//" "
     line = line//trim(commands(c)%operands)
     words = command_words(c)
-    start = 1
-    do while (start <= len(words))
-      blank = index(words(start:), " ")
-      if (blank == 0) blank = len(words) - start + 2
-      piece = option_synopsis(words(start:start + blank - 2))
+    do w = 1, size(words)
+      piece = option_synopsis(trim(words(w)))
       if (len(line) + 1 + len(piece) > width) then
         lines = [character(len=synopsis_room) :: lines, line]
         line = repeat(" ", 17)
       end if
       line = line//" "//piece
-      start = start + blank
     end do
     lines = [character(len=synopsis_room) :: lines, line]
   end function command_lines

@@ -4,22 +4,14 @@ module kinetostat_csv_writer
   use kinetostat_step_table, only: step_table_t
   use kinetostat_format, only: put_cells, cell_room
   use kinetostat_text_buffer, only: text_buffer_t
-  use kinetostat_row_blocks, only: put_row_blocks, row_writer_t, text_sink_t
+  use kinetostat_row_blocks, only: put_row_blocks, table_rows_t, text_sink_t
   use kinetostat_escape, only: csv_field
   implicit none
   private
   public :: write_csv
 
-  !> The CSV's rows of a table: its shown columns and how each is written.
-  type, extends(row_writer_t) :: csv_rows_t
-    !> The results (during write_csv only).
-    type(step_table_t), pointer :: table => null()
-    !> The table's columns the CSV shows, in order.
-    integer, allocatable :: columns(:)
-    !> Per shown column: a whole number (flag, count).
-    logical, allocatable :: whole(:)
-    !> Per shown column: empty in a row without values.
-    logical, allocatable :: voidable(:)
+  !> The CSV's rows of a table.
+  type, extends(table_rows_t) :: csv_rows_t
   contains
     procedure :: put_rows => put_csv_rows
   end type csv_rows_t
@@ -51,16 +43,7 @@ contains
       line = line//csv_field(table%columns(c)%name)
     end do
     if (table%first_block()) call out%put(line)
-    allocate (rows%columns(0))
-    do c = 1, size(table%columns)
-      if (shown(c)) rows%columns = [rows%columns, c]
-    end do
-    allocate (rows%whole(size(rows%columns)), rows%voidable(size(rows%columns)))
-    do c = 1, size(rows%columns)
-      rows%whole(c) = table%is_whole(rows%columns(c))
-      rows%voidable(c) = table%columns(rows%columns(c))%voidable
-    end do
-    rows%table => table
+    call rows%aim(table, shown)
     call put_row_blocks(table%row_count(), size(rows%columns) * (cell_room + 1) + 1, rows, out, sink)
   end subroutine write_csv
 

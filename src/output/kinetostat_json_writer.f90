@@ -9,21 +9,13 @@ module kinetostat_json_writer
   use kinetostat_format, only: full_number, put_cell, put_cells, cell_room
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_escape, only: json_string
-  use kinetostat_row_blocks, only: put_row_blocks, row_writer_t, text_sink_t
+  use kinetostat_row_blocks, only: put_row_blocks, table_rows_t, text_sink_t
   implicit none
   private
   public :: write_json, json_string, put_run_identity, put_run_verdict
 
-  !> The JSON's rows of a table: its shown columns and how each is written.
-  type, extends(row_writer_t) :: json_rows_t
-    !> The results (during write_json only).
-    type(step_table_t), pointer :: table => null()
-    !> The table's columns the JSON shows, in order.
-    integer, allocatable :: columns(:)
-    !> Per shown column: a whole number (flag, count).
-    logical, allocatable :: whole(:)
-    !> Per shown column: null in a row without values.
-    logical, allocatable :: voidable(:)
+  !> The JSON's rows of a table.
+  type, extends(table_rows_t) :: json_rows_t
   contains
     procedure :: put_rows => put_json_rows
   end type json_rows_t
@@ -66,16 +58,7 @@ contains
         end do
       end if
     end if
-    allocate (rows%columns(0))
-    do c = 1, size(table%columns)
-      if (shown(c)) rows%columns = [rows%columns, c]
-    end do
-    allocate (rows%whole(size(rows%columns)), rows%voidable(size(rows%columns)))
-    do c = 1, size(rows%columns)
-      rows%whole(c) = table%is_whole(rows%columns(c))
-      rows%voidable(c) = table%columns(rows%columns(c))%voidable
-    end do
-    rows%table => table
+    call rows%aim(table, shown)
     call put_row_blocks(table%row_count(), size(table%columns) * (cell_room + 2) + 8, rows, out, sink)
     if (.not. table%last_block()) return
     call out%put("  ],")

@@ -8,9 +8,10 @@ module kinetostat_row_blocks
   !$ use omp_lib, only: omp_get_max_threads, omp_get_thread_num
   use, intrinsic :: iso_fortran_env, only: int64
   use kinetostat_text_buffer, only: text_buffer_t
+  use kinetostat_step_table, only: step_table_t
   implicit none
   private
-  public :: put_row_blocks, put_row_blocks_two, worker_count, row_writer_t, text_sink_t
+  public :: put_row_blocks, put_row_blocks_two, worker_count, row_writer_t, text_sink_t, table_rows_t
 
   !> Fewest rows worth a thread: below it the rows go out serially.
   integer, parameter :: min_rows_per_thread = 256
@@ -29,6 +30,21 @@ module kinetostat_row_blocks
     !> Format rows `first` to `last`; it must only read shared data (it runs in several threads).
     procedure(put_rows_i), deferred :: put_rows
   end type row_writer_t
+
+  !> A writer of a step table's rows (the CSV's, the JSON's): the table and the columns it
+  !> shows, with how each is written.
+  type, abstract, extends(row_writer_t) :: table_rows_t
+    !> The results (while the writer runs only).
+    type(step_table_t), pointer :: table => null()
+    !> The table's columns shown, in order.
+    integer, allocatable :: columns(:)
+    !> Per shown column: a whole number (flag, count).
+    logical, allocatable :: whole(:)
+    !> Per shown column: no value in a row without values.
+    logical, allocatable :: voidable(:)
+  contains
+    procedure :: aim => aim_table_rows
+  end type table_rows_t
 
   !> What takes the text of an output as its rows are formatted (e.g. the spool's file).
   type, abstract :: text_sink_t
@@ -65,6 +81,23 @@ module kinetostat_row_blocks
   end interface
 
 contains
+
+  !> Aim a table writer at `table` and the columns marked in `shown`.
+  subroutine aim_table_rows(self, table, shown)
+    class(table_rows_t), intent(inout) :: self
+    !> The results (the writer keeps a pointer while it runs).
+    type(step_table_t), intent(in), target :: table
+    !> Per column of the table: whether the output shows it.
+    logical, intent(in) :: shown(:)
+    integer :: c
+    self%columns = pack([(c, c = 1, size(shown))], shown)
+    allocate (self%whole(size(self%columns)), self%voidable(size(self%columns)))
+    do c = 1, size(self%columns)
+      self%whole(c) = table%is_whole(self%columns(c))
+      self%voidable(c) = table%columns(self%columns(c))%voidable
+    end do
+    self%table => table
+  end subroutine aim_table_rows
 
   !> Threads OpenMP would use (1 without OpenMP).
   integer function worker_count()
