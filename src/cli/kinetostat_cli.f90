@@ -119,7 +119,6 @@ module kinetostat_cli
     "is not finite or a failed self-check (the step is named), 4 warnings with --strict", &
     "(output written)."]
 
-
   !> Parsed command line.
   type :: cli_args_t
     character(len=:), allocatable :: deck

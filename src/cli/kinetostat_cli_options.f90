@@ -180,6 +180,7 @@ contains
     options = cli_options()
     command_takes = any(trim(options(option)%name) == ["--help   ", "--version"])
     if (command_takes) return
+    allocate (words(0)) ! defined before the assignment (gcc's -Wuninitialized on the descriptor)
     words = command_words(command)
     do w = 1, size(words)
       command_takes = find_option(bare(trim(words(w)))) == option
@@ -276,6 +277,7 @@ contains
     line = "  kinetostat "
     if (len_trim(commands(c)%name) > 0) line = line//trim(commands(c)%name)//" "
     line = line//trim(commands(c)%operands)
+    allocate (words(0)) ! defined before the assignment (gcc's -Wuninitialized on the descriptor)
     words = command_words(c)
     do w = 1, size(words)
       piece = option_synopsis(trim(words(w)))
