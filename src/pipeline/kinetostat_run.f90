@@ -456,17 +456,17 @@ contains
     type(plans_sheet_t) :: plans_geometry
     type(sheet_t) :: sheet
     integer :: k
+    call mech%sketch(topo)
+    if (.not. topo%available) then
+      call fatal_error(error, exit_usage, table%deck//": &"//table%mechanism//": --at: this mechanism is not "// &
+        "drawn (only linkages are); --format svg without --at shows its forces")
+      return
+    end if
     ! the table holds the rows the drawing needs (kinetostat_row_keeper): find row --at K
     k = findloc(table%row_numbers, options%at_step, dim=1)
     if (k == 0) then
       call fatal_error(error, exit_usage, "--at "//int_str(options%at_step)//": "//table%deck//" has "// &
         int_str(table%run_rows())//" "//table%row_name//"s (1.."//int_str(table%run_rows())//")")
-      return
-    end if
-    call mech%sketch(topo)
-    if (.not. topo%available) then
-      call fatal_error(error, exit_usage, table%deck//": &"//table%mechanism//": --at: this mechanism is not "// &
-        "drawn (only linkages are); --format svg without --at shows its forces")
       return
     end if
     call drawing_from_sketch(topo, table, k, drawing, error)

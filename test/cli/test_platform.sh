@@ -16,12 +16,6 @@ else
   pf_flags="$(stack_flags "$KINETOSTAT")"
   [ "$pf_flags" = "RW" ] && pass || fail platform-stack-not-executable \
     "readelf -lW $KINETOSTAT: GNU_STACK flags '$pf_flags', expected 'RW'"
-  # the build users run (tools/kinetostat), when it is there
-  if [ -x .local/bin/kinetostat ]; then
-    pf_flags="$(stack_flags .local/bin/kinetostat)"
-    [ "$pf_flags" = "RW" ] && pass || fail platform-stack-release \
-      "readelf -lW .local/bin/kinetostat: GNU_STACK flags '$pf_flags', expected 'RW'"
-  fi
   # the check can fail: a program passing an internal procedure has an executable stack
   if command -v gfortran >/dev/null 2>&1; then
     cat >"$cli_tmp/tramp.f90" <<'EOF'
