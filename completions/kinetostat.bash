@@ -1,43 +1,47 @@
-# Bash completion for kinetostat: subcommands, options, kinds, formats, languages, and
-# deck files (*.nml) or outputs (*.table, *.csv, *.txt) as arguments.
+# Bash completion for kinetostat: subcommands, each one's options, kinds, formats, languages,
+# and deck files (*.nml) or outputs (*.table, *.csv, *.txt) as arguments. The lists follow
+# `kinetostat --help` (tools/check_options.py checks them against it).
 # Use: source completions/kinetostat.bash (or copy it to
 # ~/.local/share/bash-completion/completions/kinetostat).
 _kinetostat() {
-  local cur prev words cword
+  local cur prev
   cur="${COMP_WORDS[COMP_CWORD]}"
   prev="${COMP_WORDS[COMP_CWORD-1]}"
   local kinds="pr3207 pr3050 sixbar assur gears cam linkage gear_geometry planetary_synthesis cam_profile fourbar engine"
-  local run_opts="-o --output --set --format --pairs --at --plans --student --group --variant --lang --kinematics --frame --max-deck-size --allow-selfcheck-failure --quiet --strict --help --version"
+  local command="${COMP_WORDS[1]}"
+  local opts
+  case "$command" in
+    sweep) opts="--vary --set --part --jobs --keep-going --format --shaking -o --output --max-deck-size --allow-selfcheck-failure -q --quiet --strict" ;;
+    template) opts="-o --output" ;;
+    diff) opts="--rtol --atol --common -q --quiet" ;;
+    balance) opts="-o --output --method --fraction --lang --max-deck-size -q --quiet" ;;
+    structure) opts="--lang -o --output --max-deck-size -q --quiet" ;;
+    contour) opts="--set -o --output --max-deck-size -q --quiet" ;;
+    *) command=""
+       opts="--set -o --output --format --pairs --at --plans --lang --kinematics --frame --shaking --student --group --variant --max-deck-size --allow-selfcheck-failure -q --quiet --strict --version" ;;
+  esac
   case "$prev" in
-    --format) COMPREPLY=($(compgen -W "table csv json svg summary plans dxf deck npy" -- "$cur")); return ;;
+    --format)
+      if [ "$command" = sweep ]; then COMPREPLY=($(compgen -W "summary npy" -- "$cur"))
+      else COMPREPLY=($(compgen -W "table csv json svg summary plans dxf deck npy" -- "$cur")); fi
+      return ;;
     --frame) COMPREPLY=($(compgen -W "global link" -- "$cur")); return ;;
     --lang) COMPREPLY=($(compgen -W "en ru" -- "$cur")); return ;;
+    --method) COMPREPLY=($(compgen -W "full crank partial" -- "$cur")); return ;;
     -o|--output) COMPREPLY=($(compgen -f -- "$cur")); return ;;
     template) COMPREPLY=($(compgen -W "$kinds" -- "$cur")); return ;;
-    --rtol|--atol|--set|--pairs|--at|--vary|--part|--jobs|--max-deck-size) COMPREPLY=(); return ;;
-  esac
-  case "${COMP_WORDS[1]}" in
-    diff)
-      if [[ "$cur" == -* ]]; then
-        COMPREPLY=($(compgen -W "--rtol --atol --common --quiet --help" -- "$cur"))
-      else
-        COMPREPLY=($(compgen -f -X '!*.@(table|csv|txt|out)' -- "$cur") $(compgen -d -- "$cur"))
-      fi
-      return ;;
-    template)
-      COMPREPLY=($(compgen -W "-o --output" -- "$cur")); return ;;
-    sweep)
-      if [[ "$cur" == -* ]]; then
-        COMPREPLY=($(compgen -W "--vary --set --part --jobs --keep-going -o --output --max-deck-size --allow-selfcheck-failure --quiet --strict --help" -- "$cur"))
-      else
-        COMPREPLY=($(compgen -f -X '!*.nml' -- "$cur") $(compgen -d -- "$cur"))
-      fi
-      return ;;
+    --rtol|--atol|--set|--pairs|--at|--vary|--part|--jobs|--max-deck-size|--fraction|--student|--group|--variant)
+      COMPREPLY=(); return ;;
   esac
   if [[ "$cur" == -* ]]; then
-    COMPREPLY=($(compgen -W "$run_opts" -- "$cur"))
+    COMPREPLY=($(compgen -W "$opts --help" -- "$cur"))
   elif [ "$COMP_CWORD" -eq 1 ]; then
-    COMPREPLY=($(compgen -W "template diff sweep contour -" -- "$cur") $(compgen -f -X '!*.nml' -- "$cur") $(compgen -d -- "$cur"))
+    COMPREPLY=($(compgen -W "sweep template diff balance structure contour -" -- "$cur") \
+      $(compgen -f -X '!*.nml' -- "$cur") $(compgen -d -- "$cur"))
+  elif [ "$command" = diff ]; then
+    COMPREPLY=($(compgen -f -X '!*.@(table|csv|txt|out)' -- "$cur") $(compgen -d -- "$cur"))
+  elif [ "$command" = template ]; then
+    COMPREPLY=()
   else
     COMPREPLY=($(compgen -f -X '!*.nml' -- "$cur") $(compgen -d -- "$cur"))
   fi

@@ -732,6 +732,7 @@ contains
     real(wp), allocatable :: turn(:, :)
     integer :: ip
     allocate (turn(2, size(deck%pair_frame)))
+    ! scalar: libmvec's vector cos/sin move the last digit of the pair-frame components (assur_sixbar.csv)
     !GCC$ novector
     do ip = 1, size(deck%pair_frame)
       turn(1, ip) = cos(-deck%pair_frame(ip))

@@ -35,46 +35,24 @@ module kinetostat_cli
   use kinetostat_step_table, only: column_tally_t
   use kinetostat_kinds, only: wp
   use kinetostat_format, only: short_number
+  use kinetostat_cli_options, only: synopsis_lines, usage_text, value_options, find_option, find_command, &
+    command_takes, frame_names
   !$ use omp_lib, only: omp_set_num_threads
   implicit none
   private
   public :: run_cli
 
-  !> One-line usage, printed with usage errors.
-  character(*), parameter :: usage_line = "usage: kinetostat DECK|- [--set NAME=VALUE]... [-o FILE] " // &
-    "[--format table|csv|json|svg|summary|plans|dxf|deck|npy] [--pairs LIST] [--at K] [--plans] [--lang en|ru] " // &
-    "[--kinematics] [--frame global|link] [--shaking] [--student NAME] [--group G] [--variant N] " // &
-    "[--max-deck-size BYTES] [--allow-selfcheck-failure] [--quiet] " // &
-    "[--strict] | " // &
-    "kinetostat sweep DECK --vary NAME=FROM:TO:COUNT... [--part K/N] [--jobs N] [--keep-going] " // &
-    "[--format summary|npy] | " // &
-    "kinetostat template KIND [-o FILE] | kinetostat diff A B [--rtol R] [--atol A] [--common] | " // &
-    "kinetostat balance DECK [-o FILE] [--method full|crank|partial] [--fraction F] [--lang en|ru] | "// &
-    "kinetostat structure DECK [--lang ru] | kinetostat contour DECK [--set NAME=VALUE]... [-o FILE] | " // &
-    "--help | --version"
-
-  !> Help text (the kinds are appended from the registry).
+  !> Help text after the synopsis (cli_options writes that; the kinds, presets and formats
+  !> are appended from the registry and the pipeline).
   character(*), parameter :: help_lines(*) = [character(len=92) :: &
-    "kinetostat - kinetostatic force analysis of planar mechanisms", &
-    "", &
-    "  kinetostat DECK [--set NAME=VALUE]... [-o FILE]", &
-    "                  [--format table|csv|json|svg|summary|plans|dxf|deck|npy] [--pairs LIST]", &
-    "                  [--at K] [--plans] [--lang en|ru] [--kinematics] [--shaking]", &
-    "                  [--max-deck-size BYTES] [--allow-selfcheck-failure] [--quiet] [--strict]", &
-    "  kinetostat sweep DECK --vary NAME=FROM:TO:COUNT... [--set NAME=VALUE]... [--part K/N]", &
-    "                  [--jobs N] [--keep-going] [--format summary|npy]", &
-    "                  [-o FILE] [--quiet] [--strict]", &
-    "  kinetostat template KIND [-o FILE]   a commented deck to start from (KIND: a mechanism,", &
-    "                                       or a preset of the generic engine)", &
-    "  kinetostat diff A B [--rtol R] [--atol A] [--common] [--quiet]   compare two outputs", &
-    "  kinetostat balance DECK [-o FILE] [--method full|crank|partial] [--fraction F]", &
-    "                  an &assur deck with counterweights added (docs/shaking.md); before/", &
-    "                  after figures on stderr; --fraction: partial, default 0.5; --lang ru:", &
-    "                  the report in Russian", &
-    "  kinetostat structure DECK [--lang ru] [-o FILE]   structural analysis of a &linkage deck", &
-    "  kinetostat contour DECK [--set NAME=VALUE]... [-o FILE]   the blocking contour of a", &
-    "                  &gear_geometry deck's pair as CSV: curve,x1,x2", &
-    "  kinetostat --help | --version", &
+    "template KIND  a commented deck to start from (KIND: a mechanism, or a preset of the", &
+    "            generic engine)", &
+    "diff A B    compare two outputs (below)", &
+    "balance DECK  an &assur deck with counterweights added (docs/shaking.md); before/after", &
+    "            figures on stderr; --method (default full), --fraction: partial, default 0.5;", &
+    "            --lang ru: the report in Russian", &
+    "structure DECK  structural analysis of a &linkage deck", &
+    "contour DECK  the blocking contour of a &gear_geometry deck's pair as CSV: curve,x1,x2", &
     "", &
     "DECK is a Fortran namelist file; its first group names the mechanism; - reads it", &
     "from standard input (so does a pipe given as a path, e.g. /dev/stdin).", &
@@ -140,9 +118,6 @@ module kinetostat_cli
     "Exit codes: 0 ok, 1 usage, 2 input or output error, 3 geometry error, a result that", &
     "is not finite or a failed self-check (the step is named), 4 warnings with --strict", &
     "(output written)."]
-
-  !> Usage of the diff subcommand (its errors exit 2: exit 1 means "different").
-  character(*), parameter :: diff_usage = "usage: kinetostat diff A B [--rtol R] [--atol A] [--common] [--quiet]"
 
   !> Parsed command line.
   type :: cli_args_t
@@ -227,6 +202,10 @@ contains
     end if
     if (.not. allocated(error)) then
       if (args%help) then
+        call out%put("kinetostat - kinetostatic force analysis of planar mechanisms")
+        call out%put("")
+        call out%put_lines(synopsis_lines(len(help_lines)))
+        call out%put("")
         call out%put_lines(help_lines)
         call out%put("Kinds: "//known_kinds())
         call out%put("Presets (template): "//preset_names)
@@ -267,7 +246,7 @@ contains
 
     if (allocated(error)) then
       write (error_unit, '(a)') "kinetostat: error: "//printable(error%message)
-      if (error%code == exit_usage) write (error_unit, '(a)') usage_line
+      if (error%code == exit_usage) write (error_unit, '(a)') usage_text()
       exit_code = error%code
     else if (failed_variants > 0) then
       exit_code = exit_input
@@ -888,20 +867,27 @@ contains
     type(error_t), allocatable, intent(out) :: error
     integer :: i, k, n, ios
     character(len=:), allocatable :: arg, name, value
+    !> The options given (indices of cli_options()), and by which name.
+    integer, allocatable :: given(:)
+    character(len=26), allocatable :: given_as(:)
 
     n = command_argument_count()
     if (n == 0) then
       call fatal_error(error, exit_usage, "no deck given")
       return
     end if
+    allocate (given(0), given_as(0))
     i = 0
     do while (i < n)
-      call next_option(i, n, [character(len=15) :: "-o", "--output", "--format", "--lang", "--set", "--pairs", &
-                       "--at", "--frame", "--vary", "--part", "--jobs", "--method", "--fraction", &
-                       "--max-deck-size", "--student", "--group", "--variant"], name, value)
+      call next_option(i, n, value_options(), name, value)
       if (.not. allocated(value)) then
         call fatal_error(error, exit_usage, name//" needs a value")
         return
+      end if
+      k = find_option(name)
+      if (k > 0) then
+        given = [given, k]
+        given_as = [character(len=26) :: given_as, name]
       end if
       select case (name)
       case ("-h", "--help")
@@ -969,7 +955,7 @@ contains
       case ("--pairs")
         args%options%pairs = value
       case ("--frame")
-        if (value /= "global" .and. value /= "link") then
+        if (all(value /= frame_names)) then
           call fatal_error(error, exit_usage, "--frame must be global or link (got '"//value//"')")
           return
         end if
@@ -1030,7 +1016,7 @@ contains
           call parse_diff_args(args, error)
           return
         end if
-        call fatal_error(error, exit_usage, "diff must come first: "//diff_usage)
+        call fatal_error(error, exit_usage, "diff must come first: "//usage_text("diff"))
         return
       case ("template")
         if (allocated(args%deck) .or. i == n) then
@@ -1040,6 +1026,8 @@ contains
         i = i + 1
         args%template_kind = argument(i)
       case default
+        ! an option of another subcommand (--rtol): check_options_belong names it
+        if (k > 0) cycle
         arg = argument(i)
         if (len(arg) > 1 .and. arg(1:1) == "-") then
           call fatal_error(error, exit_usage, "unknown option '"//arg//"'")
@@ -1052,7 +1040,11 @@ contains
         args%deck = arg
       end select
     end do
-    if (args%help .or. args%version .or. allocated(args%template_kind)) return
+    if (args%help .or. args%version) return
+    if (allocated(args%template_kind)) then
+      call check_options_belong("template")
+      return
+    end if
     if (.not. allocated(args%deck)) then
       call fatal_error(error, exit_usage, "no deck given")
     else if (args%structure .and. (args%format_given .or. allocated(args%options%overrides) .or. &
@@ -1092,6 +1084,18 @@ contains
         "not for a terminal: give -o FILE.npy or redirect standard output")
     end if
     if (allocated(error)) return
+    if (args%sweep) then
+      call check_options_belong("sweep")
+    else if (args%balance) then
+      call check_options_belong("balance")
+    else if (args%structure) then
+      call check_options_belong("structure")
+    else if (args%contour) then
+      call check_options_belong("contour")
+    else
+      call check_options_belong("")
+    end if
+    if (allocated(error)) return
     if (allocated(args%options%student_name) .or. allocated(args%options%student_group) .or. &
       allocated(args%options%student_variant)) then
       if (.not. allocated(args%options%student_name)) args%options%student_name = "-"
@@ -1099,6 +1103,23 @@ contains
       if (.not. allocated(args%options%student_variant)) args%options%student_variant = "-"
       args%options%student_stamp = run_stamp()
     end if
+  contains
+    !> Every option given must be one of the subcommand's (cli_commands; "" the run of a
+    !> deck): otherwise a usage error naming it.
+    subroutine check_options_belong(command)
+      character(*), intent(in) :: command
+      integer :: c, j
+      c = find_command(command)
+      do j = 1, size(given)
+        if (command_takes(c, given(j))) cycle
+        if (len(command) == 0) then
+          call fatal_error(error, exit_usage, trim(given_as(j))//" does not go with the run of a deck")
+        else
+          call fatal_error(error, exit_usage, command//" does not take "//trim(given_as(j)))
+        end if
+        return
+      end do
+    end subroutine check_options_belong
   end subroutine parse_args
 
   !> Whether binary output would reach a terminal: the file of `-o` (a terminal device, or
@@ -1141,9 +1162,9 @@ contains
     n_files = 0
     i = 1
     do while (i < n)
-      call next_option(i, n, [character(len=6) :: "--rtol", "--atol"], name, value)
+      call next_option(i, n, value_options(), name, value)
       if (.not. allocated(value)) then
-        call fatal_error(error, exit_input, "diff: "//name//" needs a value; "//diff_usage)
+        call fatal_error(error, exit_input, "diff: "//name//" needs a value; "//usage_text("diff"))
         return
       end if
       select case (name)
@@ -1165,14 +1186,18 @@ contains
           args%diff_options%atol = x
         end if
       case default
+        if (find_option(name) > 0) then
+          call fatal_error(error, exit_input, "diff does not take "//name//"; "//usage_text("diff"))
+          return
+        end if
         arg = argument(i)
         if (len(arg) > 1 .and. arg(1:1) == "-") then
-          call fatal_error(error, exit_input, "diff: unknown option '"//arg//"'; "//diff_usage)
+          call fatal_error(error, exit_input, "diff: unknown option '"//arg//"'; "//usage_text("diff"))
           return
         end if
         n_files = n_files + 1
         if (n_files > 2) then
-          call fatal_error(error, exit_input, "diff: more than two files given ('"//arg//"'); "//diff_usage)
+          call fatal_error(error, exit_input, "diff: more than two files given ('"//arg//"'); "//usage_text("diff"))
           return
         end if
         if (len(arg) > len(files(1))) then
@@ -1184,7 +1209,7 @@ contains
     end do
     if (args%help) return
     if (n_files /= 2) then
-      call fatal_error(error, exit_input, "diff: needs two files; "//diff_usage)
+      call fatal_error(error, exit_input, "diff: needs two files; "//usage_text("diff"))
       return
     end if
     args%diff_files = [character(len=max(len_trim(files(1)), len_trim(files(2)))) :: files(1), files(2)]

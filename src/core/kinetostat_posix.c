@@ -10,16 +10,28 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/random.h>
 #include <sys/stat.h>
-#include <sys/statfs.h>
 #include <sys/time.h>
 #include <sys/types.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+/* Two branches where Linux and the BSDs (macOS) differ: random bytes (getrandom on Linux,
+ * getentropy elsewhere) and the links that name this process' own descriptors (procfs,
+ * /proc/self/fd/N, on Linux; /dev/fd/N elsewhere). KINETOSTAT_FORCE_PORTABLE compiles the
+ * other branch on Linux too (test/cli/test_binary.sh builds it so). */
+#if defined(__linux__) && !defined(KINETOSTAT_FORCE_PORTABLE)
+#define KS_LINUX 1
+#include <sys/random.h>
+#include <sys/statfs.h>
 #ifndef PROC_SUPER_MAGIC
 #define PROC_SUPER_MAGIC 0x9fa0
+#endif
+#else
+#define KS_LINUX 0
+#if defined(__APPLE__) || defined(__linux__)
+#include <sys/random.h> /* getentropy (macOS 10.12+; glibc 2.25+) */
+#endif
 #endif
 
 /* ---------------------------------------------------------------------------------------
@@ -128,12 +140,14 @@ static void ks_forget_temp(const char *path) {
 /* ---------------------------------------------------------------------------------------
  * Temporaries: O_CREAT|O_EXCL|O_NOFOLLOW, mode 600, unpredictable names. */
 
-/* `count` random letters and digits (getrandom, else /dev/urandom); 0 on success. */
+/* `count` random letters and digits (getrandom on Linux, getentropy elsewhere; else
+ * /dev/urandom); 0 on success. */
 static int ks_random_name(char *out, int count) {
   static const char alphabet[] = "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789";
   unsigned char bytes[64];
   int got = 0;
   if (count > (int) sizeof bytes) return -1;
+#if KS_LINUX
   while (got < count) {
     ssize_t n = getrandom(bytes + got, (size_t) (count - got), 0);
     if (n < 0) {
@@ -142,6 +156,10 @@ static int ks_random_name(char *out, int count) {
     }
     got += (int) n;
   }
+#else
+  /* at most 256 bytes at once; all or nothing */
+  if (getentropy(bytes, (size_t) count) == 0) got = count;
+#endif
   if (got < count) {
     int fd = open("/dev/urandom", O_RDONLY | O_CLOEXEC);
     if (fd < 0) return -1;
@@ -220,24 +238,52 @@ void kinetostat_temp_remove(const char *name) {
 /* ---------------------------------------------------------------------------------------
  * Where `-o PATH` goes. */
 
-/* Whether the symbolic link `link` lies on procfs (/proc/self/fd/N, /dev/stdout's
- * target...): such a link names an open file, not a path to follow. */
-static int ks_on_procfs(const char *link) {
-  char dir[KS_PATH];
-  const char *slash = strrchr(link, '/');
-  struct statfs fs;
+/* The directory part of `path` into `dir` (capacity KS_PATH): "." or "/" when it has none;
+ * 0 when it is too long. */
+static int ks_dir_of(const char *path, char *dir) {
+  const char *slash = strrchr(path, '/');
   if (slash == NULL) {
     strcpy(dir, ".");
-  } else if (slash == link) {
+  } else if (slash == path) {
     strcpy(dir, "/");
   } else {
-    size_t n = (size_t) (slash - link);
-    if (n >= sizeof dir) return 0;
-    memcpy(dir, link, n);
+    size_t n = (size_t) (slash - path);
+    if (n >= KS_PATH) return 0;
+    memcpy(dir, path, n);
     dir[n] = '\0';
   }
-  if (statfs(dir, &fs) != 0) return 0;
-  return fs.f_type == PROC_SUPER_MAGIC;
+  return 1;
+}
+
+/* Whether directories `a` and `b` are the same (device and inode). */
+static int ks_same_dir(const char *a, const char *b) {
+  struct stat sa, sb;
+  if (stat(a, &sa) != 0 || stat(b, &sb) != 0) return 0;
+  return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+}
+
+/* The directory whose entries N name this process' descriptor N. */
+#if KS_LINUX
+#define KS_FD_DIR "/proc/self/fd"
+#else
+#define KS_FD_DIR "/dev/fd"
+#endif
+
+/* Whether the symbolic link `link` lies on procfs (/proc/self/fd/N, /dev/stdout's
+ * target...), or elsewhere in the descriptor directory /dev/fd: such a link names an open
+ * file, not a path to follow. */
+static int ks_on_procfs(const char *link) {
+  char dir[KS_PATH];
+  if (!ks_dir_of(link, dir)) return 0;
+#if KS_LINUX
+  {
+    struct statfs fs;
+    if (statfs(dir, &fs) != 0) return 0;
+    return fs.f_type == PROC_SUPER_MAGIC;
+  }
+#else
+  return strcmp(dir, KS_FD_DIR) == 0 || ks_same_dir(dir, KS_FD_DIR);
+#endif
 }
 
 /* The descriptor number N of a procfs link naming one of this process' descriptors
@@ -245,7 +291,6 @@ static int ks_on_procfs(const char *link) {
 static int ks_own_descriptor(const char *link) {
   const char *slash = strrchr(link, '/');
   char dir[KS_PATH], own[64];
-  struct stat here, self;
   char *end;
   long n;
   if (slash == NULL || slash == link || (size_t) (slash - link) >= sizeof dir) return -1;
@@ -255,10 +300,9 @@ static int ks_own_descriptor(const char *link) {
   memcpy(dir, link, (size_t) (slash - link));
   dir[slash - link] = '\0';
   snprintf(own, sizeof own, "/proc/%ld/fd", (long) getpid());
-  if (strcmp(dir, "/proc/self/fd") != 0 && strcmp(dir, "/proc/thread-self/fd") != 0 && strcmp(dir, own) != 0) {
+  if (strcmp(dir, KS_FD_DIR) != 0 && strcmp(dir, "/proc/thread-self/fd") != 0 && strcmp(dir, own) != 0) {
     /* another name of the same directory (/dev/fd) */
-    if (stat(dir, &here) != 0 || stat("/proc/self/fd", &self) != 0) return -1;
-    if (here.st_dev != self.st_dev || here.st_ino != self.st_ino) return -1;
+    if (!ks_same_dir(dir, KS_FD_DIR)) return -1;
   }
   if (fcntl((int) n, F_GETFD) < 0) return -1;
   return (int) n;
@@ -277,6 +321,16 @@ int kinetostat_output_plan(const char *path, char *final, int cap, int *fd) {
   *fd = -1;
   if (snprintf(cur, sizeof cur, "%s", path) >= (int) sizeof cur) return -ENAMETOOLONG;
   for (int hops = 0; hops <= 40; hops++) {
+#if !KS_LINUX
+    /* macOS's /dev/fd/N (fdesc) are no links: lstat gives the open file itself */
+    if (ks_on_procfs(cur)) {
+      int own = ks_own_descriptor(cur);
+      if (own >= 0) {
+        *fd = own;
+        return 3;
+      }
+    }
+#endif
     if (lstat(cur, &st) != 0) {
       if (errno != ENOENT) return -errno;
       if (snprintf(final, (size_t) cap, "%s", cur) >= cap) return -ENAMETOOLONG;

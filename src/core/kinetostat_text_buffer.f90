@@ -47,7 +47,6 @@ contains
     !> The lines (of one length, blank-padded).
     character(*), intent(in) :: lines(:)
     integer :: i
-    !GCC$ novector
     do i = 1, size(lines)
       call self%put(trim(lines(i)))
     end do

@@ -13,9 +13,6 @@
 !> course's group method: each unit's links as free bodies (the pair forces at the joints as
 !> unknowns, Newton-Euler about each centre of mass), the last group first, the input units
 !> last, each with the forces of the groups solved before.
-!> Every loop is kept scalar (`!GCC$ novector`): the vector cos, sin and hypot of libmvec may
-!> differ from the scalar ones in the last bit, and the self-check figures (roundoff) are
-!> printed.
 module kinetostat_linkage
   use kinetostat_kinds, only: wp, pi
   use kinetostat_error, only: error_t, fatal_error, exit_geometry
@@ -265,7 +262,6 @@ contains
     if (work%factored) return
     call factor_dense(work%jac, work%lu, work%ipiv, error, work%trsm)
     if (allocated(error)) return
-    !GCC$ novector
     do d = 1, size(mech%drives)
       work%v(:, d) = 0.0_wp
       work%v(drive_row(mech, d), d) = 1.0_wp
@@ -304,7 +300,6 @@ contains
     real(wp), allocatable :: q(:)
     integer :: i
     allocate (q(3 * size(mech%links)))
-    !GCC$ novector
     do i = 1, size(mech%links)
       q(3 * i - 2:3 * i) = [mech%links(i)%c(1), mech%links(i)%c(2), 0.0_wp]
     end do
@@ -373,7 +368,6 @@ contains
     integer :: i
     cs(1, 0) = cos(0.0_wp)
     cs(2, 0) = sin(0.0_wp)
-    !GCC$ novector
     do i = 1, size(q) / 3
       cs(1, i) = cos(q(3 * i))
       cs(2, i) = sin(q(3 * i))
@@ -476,7 +470,6 @@ contains
     phi = 0.0_wp
     jac = 0.0_wp
     call set_turns(q, cs)
-    !GCC$ novector
     do k = 1, size(mech%pairs)
       associate (pr => mech%pairs(k))
         r = pair_row(k)
@@ -503,7 +496,6 @@ contains
         end if
       end associate
     end do
-    !GCC$ novector
     do d = 1, size(mech%drives)
       associate (pr => mech%pairs(mech%drives(d)%pair))
         r = drive_row(mech, d)
@@ -547,7 +539,6 @@ contains
     integer :: k, r, d
     h = 0.0_wp
     call set_turns(q, cs)
-    !GCC$ novector
     do k = 1, size(mech%pairs)
       associate (pr => mech%pairs(k))
         r = pair_row(k)
@@ -561,7 +552,6 @@ contains
         end if
       end associate
     end do
-    !GCC$ novector
     do d = 1, size(mech%drives)
       associate (pr => mech%pairs(mech%drives(d)%pair))
         if (pr%kind == pair_p) then
@@ -610,7 +600,6 @@ contains
     logical :: converged
     call work_ready(mech, work)
     span = 0.0_wp
-    !GCC$ novector
     do d = 1, size(dq)
       if (mech%pairs(mech%drives(d)%pair)%kind == pair_r) then
         span = max(span, abs(dq(d) - dq_from(d)) / max_substep_angle)
@@ -621,7 +610,6 @@ contains
     m = max(1, ceiling(span))
     from(:) = dq_from
     q_good(:) = q
-    !GCC$ novector
     do s = 1, m
       target = dq_from + (dq - dq_from) * (real(s, wp) / real(m, wp))
       ! predictor: the velocity analogues of the drives at the last assembled pose
@@ -631,12 +619,10 @@ contains
         return
       end if
       ! (explicit loops, not matmul: its library and inlined forms sum in different orders)
-      !GCC$ novector
       do d = 1, size(dq)
         q = q + work%v(:, d) * (target(d) - from(d))
       end do
       converged = .false.
-      !GCC$ novector
       do it = 1, max_newton
         call constraints(mech, q, target, work%phi, work%jac, work%cs)
         work%q_jac(:) = q
@@ -696,7 +682,6 @@ contains
     integer :: u, i, nr
     nr = linkage_rows(mech)
     allocate (phi(nr), jac(nr, nr), dq(size(mech%drives)), cs(2, 0:size(mech%links)))
-    !GCC$ novector
     do i = 1, size(mech%drives)
       dq(i) = mech%drives(i)%q_ref
     end do
@@ -704,7 +689,6 @@ contains
     linkage_worst_unit = 0
     if (.not. allocated(mech%units)) return
     worst = huge(1.0_wp)
-    !GCC$ novector
     do u = 1, size(mech%units)
       cols = unit_columns(mech%units(u))
       allocate (x(size(cols)))
@@ -724,7 +708,6 @@ contains
     integer, allocatable :: cols(:)
     integer :: i
     allocate (cols(3 * size(unit%links)))
-    !GCC$ novector
     do i = 1, size(unit%links)
       cols(3 * i - 2:3 * i) = [3 * unit%links(i) - 2, 3 * unit%links(i) - 1, 3 * unit%links(i)]
     end do
@@ -767,14 +750,12 @@ contains
     call work_factored(mech, q, work, error)
     if (allocated(error)) return
     qd = 0.0_wp
-    !GCC$ novector
     do d = 1, size(mech%drives)
       qd(drive_row(mech, d)) = dv(d)
     end do
     call solve_factored(work%lu, work%ipiv, qd)
     call quadratic_terms(mech, q, qd, work%zero_q, qdd, work%cs)
     qdd = -qdd
-    !GCC$ novector
     do d = 1, size(mech%drives)
       qdd(drive_row(mech, d)) = qdd(drive_row(mech, d)) + da(d)
     end do
@@ -811,7 +792,6 @@ contains
     ! physical forces (work%cs: the turns of step%q, from generalised_loads)
     allocate (step%f(2, size(mech%pairs)), step%normal(size(mech%pairs)), step%couple(size(mech%pairs)))
     allocate (step%effort(size(mech%drives)))
-    !GCC$ novector
     do k = 1, size(mech%pairs)
       associate (pr => mech%pairs(k))
         r = pair_row(k)
@@ -833,7 +813,6 @@ contains
         end if
       end associate
     end do
-    !GCC$ novector
     do d = 1, size(mech%drives)
       associate (pr => mech%pairs(mech%drives(d)%pair))
         step%effort(d) = work%lam(drive_row(mech, d))
@@ -849,7 +828,6 @@ contains
     ! self-check 1: every link's equilibrium with the physical forces at their points
     call set_turns(step%q, work%cs)
     work%bal(:) = link_balance_t()
-    !GCC$ novector
     do i = 1, n
       ref = step%q(3 * i - 2:3 * i - 1)
       associate (lk => mech%links(i))
@@ -859,18 +837,15 @@ contains
         call balance_add_couple(work%bal(i), -lk%j * step%qdd(3 * i))
       end associate
     end do
-    !GCC$ novector
     do k = 1, size(mech%forces)
       associate (fc => mech%forces(k))
         s = position_cs(mech, step%q, work%cs, fc%link, fc%at)
         call balance_add_force(work%bal(fc%link), step%q(3 * fc%link - 2:3 * fc%link - 1), s, fval(k) * force_dir(fc))
       end associate
     end do
-    !GCC$ novector
     do k = 1, size(mech%moment_link)
       call balance_add_couple(work%bal(mech%moment_link(k)), mval(k))
     end do
-    !GCC$ novector
     do k = 1, size(mech%pairs)
       associate (pr => mech%pairs(k))
         if (pr%kind == pair_r) then
@@ -885,7 +860,6 @@ contains
         end if
       end associate
     end do
-    !GCC$ novector
     do d = 1, size(mech%drives)
       associate (pr => mech%pairs(mech%drives(d)%pair))
         if (pr%kind == pair_r) then
@@ -903,11 +877,9 @@ contains
 
     ! self-check 2: each drive's effort by virtual work (the velocity analogue of that drive)
     step%mismatch = 0.0_wp
-    !GCC$ novector
     do d = 1, size(mech%drives)
       power = 0.0_wp
       terms = 0.0_wp
-      !GCC$ novector
       do i = 1, size(work%gen)
         power = power - work%gen(i) * work%v(i, d)
         terms = terms + abs(work%gen(i) * work%v(i, d))
@@ -973,7 +945,6 @@ contains
     call set_turns(step%q, work%cs)
     np = size(mech%pairs)
     ! each link's own loads: the force and its moment about the centre of mass
-    !GCC$ novector
     do i = 1, size(mech%links)
       associate (lk => mech%links(i))
         call state_cs(mech, step%q, step%qd, step%qdd, work%cs, i, lk%s, sv, vs, as)
@@ -982,7 +953,6 @@ contains
         work%load(3, i) = -lk%j * step%qdd(3 * i)
       end associate
     end do
-    !GCC$ novector
     do k = 1, size(mech%forces)
       associate (fc => mech%forces(k))
         w = fc%dir
@@ -993,25 +963,21 @@ contains
         work%load(3, fc%link) = work%load(3, fc%link) + cross(pa - work%cm(:, fc%link), w)
       end associate
     end do
-    !GCC$ novector
     do k = 1, size(mech%moment_link)
       work%load(3, mech%moment_link(k)) = work%load(3, mech%moment_link(k)) + mval(k)
     end do
     work%pair_known(:) = .false.
     work%drive_known(:) = .false.
     work%local(:) = 0
-    !GCC$ novector
     do u = size(mech%units), 1, -1
       associate (unit => mech%units(u))
         nu = size(unit%rows)
-        !GCC$ novector
         do j = 1, size(unit%links)
           work%local(unit%links(j)) = j
           work%fb(3 * j - 2:3 * j) = -work%load(:, unit%links(j))
         end do
         work%fa(1:nu, 1:nu) = 0.0_wp
         ! the forces known from the groups solved before
-        !GCC$ novector
         do k = 1, np
           if (.not. work%pair_known(k)) cycle
           call pair_effect(work%cs, k, g, h, pa, pb)
@@ -1022,7 +988,6 @@ contains
             call add_known(work, mech%pairs(k)%b, pb, [0.0_wp, 0.0_wp], -couple(k))
           end if
         end do
-        !GCC$ novector
         do d = 1, size(mech%drives)
           if (.not. work%drive_known(d)) cycle
           call drive_effect(work%cs, d, w, h(1), pa)
@@ -1030,7 +995,6 @@ contains
           call add_known(work, mech%pairs(mech%drives(d)%pair)%b, pa, -w * effort(d), -h(1) * effort(d))
         end do
         ! the unit's unknowns: a column per constraint row of the unit
-        !GCC$ novector
         do c = 1, nu
           r = unit%rows(c)
           if (r <= 2 * np) then
@@ -1051,7 +1015,6 @@ contains
         call factor_dense(work%fa(1:nu, 1:nu), work%flu(1:nu, 1:nu), work%fipiv(1:nu), error)
         if (allocated(error)) return
         call solve_factored(work%flu(1:nu, 1:nu), work%fipiv(1:nu), work%fb(1:nu))
-        !GCC$ novector
         do c = 1, nu
           r = unit%rows(c)
           if (r <= 2 * np) then
@@ -1073,7 +1036,6 @@ contains
             work%drive_known(d) = .true.
           end if
         end do
-        !GCC$ novector
         do j = 1, size(unit%links)
           work%local(unit%links(j)) = 0
         end do
@@ -1165,7 +1127,6 @@ contains
     integer :: k
     big = 0.0_wp
     diff = 0.0_wp
-    !GCC$ novector
     do k = 1, size(mech%pairs)
       if (mech%pairs(k)%kind == pair_r) then
         big = max(big, abs(step%f(1, k)), abs(step%f(2, k)))
@@ -1175,7 +1136,6 @@ contains
         diff = max(diff, abs(step%normal(k) - normal(k)), abs(step%couple(k) - couple(k)))
       end if
     end do
-    !GCC$ novector
     do k = 1, size(mech%drives)
       big = max(big, abs(step%effort(k)))
       diff = max(diff, abs(step%effort(k) - effort(k)))
@@ -1197,7 +1157,6 @@ contains
     integer :: i, k
     gen = 0.0_wp
     call set_turns(q, cs)
-    !GCC$ novector
     do i = 1, size(mech%links)
       associate (lk => mech%links(i))
         call state_cs(mech, q, qd, qdd, cs, i, lk%s, s, vs, as)
@@ -1206,7 +1165,6 @@ contains
         gen(3 * i) = gen(3 * i) - lk%j * qdd(3 * i)
       end associate
     end do
-    !GCC$ novector
     do k = 1, size(mech%forces)
       associate (fc => mech%forces(k))
         w = fc%dir
@@ -1214,7 +1172,6 @@ contains
         call add_gen(gen, fc%link, position_cs(mech, q, cs, fc%link, fc%at), fval(k) * w)
       end associate
     end do
-    !GCC$ novector
     do k = 1, size(mech%moment_link)
       gen(3 * mech%moment_link(k)) = gen(3 * mech%moment_link(k)) + mval(k)
     end do

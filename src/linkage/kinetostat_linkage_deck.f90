@@ -242,7 +242,6 @@ contains
     nl = leading(is_set(link%id))
     call require_rule(ctx, "link", nl >= 1, "at least one moving link is required (link(1)%id missing)", error)
     if (allocated(error)) return
-    !GCC$ novector
     do k = nl + 1, max_links
       if (is_set(link(k)%m) .or. is_set(link(k)%j) .or. any(is_set(link(k)%s))) then
         call deck_error(ctx, "link("//int_str(k)//")", "links must be numbered 1.."//int_str(nl + 1)// &
@@ -251,7 +250,6 @@ contains
       end if
     end do
     allocate (deck%mech%links(nl), ids(nl))
-    !GCC$ novector
     do k = 1, nl
       p = "link("//int_str(k)//")%"
       call require_whole(ctx, p//"id", link(k)%id, 0, huge(1), id, error); if (allocated(error)) return
@@ -270,7 +268,6 @@ contains
     np = leading(pair%kind /= "")
     call require_rule(ctx, "pair", np >= 1, "at least one pair is required (pair(1)%kind missing)", error)
     if (allocated(error)) return
-    !GCC$ novector
     do k = np + 1, max_pairs
       if (any(is_set(pair(k)%links)) .or. any(is_set(pair(k)%at)) .or. len_trim(pair(k)%name) > 0) then
         call deck_error(ctx, "pair("//int_str(k)//")", "pairs must be numbered 1.."//int_str(np + 1)// &
@@ -279,7 +276,6 @@ contains
       end if
     end do
     allocate (deck%mech%pairs(np))
-    !GCC$ novector
     do k = 1, np
       p = "pair("//int_str(k)//")%"
       associate (pr => deck%mech%pairs(k))
@@ -301,7 +297,6 @@ contains
         if (allocated(error)) return
         pr%name = pair(k)%name(1:len(pr%name))
         if (len_trim(pr%name) == 0) pr%name = "J"//int_str(k)
-        !GCC$ novector
         do i = 1, k - 1
           call require_rule(ctx, p//"name", deck%mech%pairs(i)%name /= pr%name, "'"//trim(pr%name)// &
             "' names pair "//int_str(i)//" already", error)
@@ -334,18 +329,14 @@ contains
     end do
     ! every link's reference point: its first pair's joint; the size of the linkage
     deck%mech%size = 0.0_wp
-    !GCC$ novector
     do k = 1, np
-      !GCC$ novector
       do i = 1, np
         deck%mech%size = max(deck%mech%size, magnitude(deck%mech%pairs(k)%at - deck%mech%pairs(i)%at))
       end do
     end do
     if (deck%mech%size <= 0.0_wp) deck%mech%size = 1.0_wp
-    !GCC$ novector
     do k = 1, nl
       count = 0
-      !GCC$ novector
       do i = 1, np
         if (deck%mech%pairs(i)%a /= k .and. deck%mech%pairs(i)%b /= k) cycle
         count = count + 1
@@ -379,11 +370,9 @@ contains
     if (is_set(n)) then
       call require_whole(ctx, "n", n, 1, max_steps, nsteps, error); if (allocated(error)) return
     end if
-    !GCC$ novector
     do k = 1, nd
       p = "drive("//int_str(k)//")%"
       i = 0
-      !GCC$ novector
       do a = 1, np
         if (deck%mech%pairs(a)%name == trim(drive(k)%pair)) i = a
       end do
@@ -428,7 +417,6 @@ contains
       end if
       deck%mech%drives(k)%q_ref = reference_value(deck%mech, i)
     end do
-    !GCC$ novector
     do k = nd + 1, max_drives
       if (is_set(drive(k)%start) .or. is_set(drive(k)%omega) .or. is_set(drive(k)%values(1)) .or. &
           is_set(drive(k)%omega_column)) then
@@ -445,7 +433,6 @@ contains
       call values_out_of_memory(ctx, "the drives", [nsteps * nd], error)
       return
     end if
-    !GCC$ novector
     do k = 1, nd
       if (deck%listed(k)) then
         deck%values(:, k) = drive(k)%values(1:nsteps)
@@ -453,13 +440,11 @@ contains
     end do
     ! a turning pair's drive angles: the driven link's axis is the drive's angle (a drive
     ! between two moving links: the angle of a's axis from b's)
-    !GCC$ novector
     do k = 1, nd
       associate (pr => deck%mech%pairs(deck%mech%drives(k)%pair))
         if (pr%kind == pair_r .and. pr%b == 0) deck%mech%links(pr%a)%angle0 = deck%mech%drives(k)%q_ref
       end associate
     end do
-    !GCC$ novector
     do k = 1, nd
       associate (pr => deck%mech%pairs(deck%mech%drives(k)%pair))
         if (pr%kind == pair_r .and. pr%b /= 0) deck%mech%drives(k)%q_ref = deck%mech%drives(k)%q_ref - &
@@ -475,7 +460,6 @@ contains
     if (allocated(error)) return
     deck%step_values = step_values(1:n_values)
     allocate (deck%omega_column(nd), deck%eps_column(nd), source=0)
-    !GCC$ novector
     do k = 1, nd
       p = "drive("//int_str(k)//")%"
       call drive_column(p//"omega_column", drive(k)%omega_column, deck%omega_column(k), error)
@@ -486,7 +470,6 @@ contains
     nf = leading(is_set(force%link))
     nm = leading(is_set(moment%link))
     allocate (deck%mech%forces(nf), deck%force_load(nf), deck%mech%moment_link(nm), deck%moment_load(nm))
-    !GCC$ novector
     do k = 1, nf
       p = "force("//int_str(k)//")%"
       call link_index(p//"link", force(k)%link, i, error); if (allocated(error)) return
@@ -502,7 +485,6 @@ contains
                          deck%force_load(k), error)
       if (allocated(error)) return
     end do
-    !GCC$ novector
     do k = 1, nm
       p = "moment("//int_str(k)//")%"
       call link_index(p//"link", moment(k)%link, i, error); if (allocated(error)) return
@@ -520,7 +502,6 @@ contains
       logical, intent(in) :: given(:)
       integer :: kk
       leading = 0
-      !GCC$ novector
       do kk = 1, size(given)
         if (.not. given(kk)) exit
         leading = kk
@@ -539,7 +520,6 @@ contains
         idx = 0
         return
       end if
-      !GCC$ novector
       do kk = 1, nl
         if (ids(kk) == v) idx = kk
       end do
@@ -598,7 +578,6 @@ contains
     if (mech%pairs(k)%kind == pair_p) return
     a = mech%pairs(k)%a
     to = mech%links(a)%s
-    !GCC$ novector
     do i = size(mech%pairs), 1, -1
       if (i == k) cycle
       if (mech%pairs(i)%a /= a .and. mech%pairs(i)%b /= a) cycle
@@ -619,7 +598,6 @@ contains
     real(wp), intent(out) :: q(:), v(:), a(:)
     integer :: d
     real(wp) :: x
-    !GCC$ novector
     do d = 1, size(deck%mech%drives)
       if (deck%listed(d)) then
         x = deck%values(k, d)

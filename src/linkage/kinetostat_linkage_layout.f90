@@ -88,7 +88,6 @@ contains
     call structure_lines(deck%mech, lang, lines)
     call out%put(" DECK: "//table_text(source%path))
     if (len_trim(deck%title) > 0) call out%put(" TITLE: "//table_text(trim(deck%title)))
-    !GCC$ novector
     do i = 1, size(lines)
       call out%put(" "//trim(lines(i)))
     end do
@@ -103,11 +102,9 @@ contains
     character(len=16), allocatable :: joints(:)
     integer :: i, k, slide
     associate (mech => self%deck%mech)
-      !GCC$ novector
       do i = 1, size(mech%links)
         allocate (joints(0))
         slide = 0
-        !GCC$ novector
         do k = 1, size(mech%pairs)
           associate (pr => mech%pairs(k))
             if (pr%a /= i .and. pr%b /= i) cycle
@@ -128,7 +125,6 @@ contains
         end if
         deallocate (joints)
       end do
-      !GCC$ novector
       do k = 1, size(mech%pairs)
         associate (pr => mech%pairs(k))
           if (pr%kind == pair_r .and. (pr%a == 0 .or. pr%b == 0)) call out%add_pivot(trim(pr%name))
@@ -137,10 +133,8 @@ contains
       end do
       if (self%deck%g > 0.0_wp) out%down = mech%gravity / self%deck%g
       ! the structural analysis's units: the plans draw one force polygon per unit
-      !GCC$ novector
       do k = 1, size(mech%units)
         allocate (joints(size(mech%units(k)%links)))
-        !GCC$ novector
         do i = 1, size(joints)
           joints(i) = link_name(mech, mech%units(k)%links(i))
         end do
@@ -183,12 +177,10 @@ contains
     real(wp) :: th, p(2), w(2)
     integer :: i, c
     associate (mech => self%deck%mech, deck => self%deck)
-      !GCC$ novector
       do i = 1, size(mech%pairs)
         call drawing%pair_from_table(table, k, force_name(mech, i), trim(mech%pairs(i)%name), error)
         if (allocated(error)) return
       end do
-      !GCC$ novector
       do i = 1, size(mech%forces)
         associate (f => mech%forces(i), lk => mech%links(mech%forces(i)%link))
           th = table%rows(table%column_index("phi"//link_name(mech, f%link)), k) * deg_to_rad - lk%angle0
@@ -199,14 +191,12 @@ contains
             linkage_load_value(deck, deck%force_load(i), table%run_row(k)) * w, link_name(mech, f%link))
         end associate
       end do
-      !GCC$ novector
       do i = 1, size(mech%moment_link)
         call drawing%add_moment("MQ"//int_str(i), force_load, drawing%at("S"//link_name(mech, mech%moment_link(i))), &
           linkage_load_value(deck, deck%moment_load(i), table%run_row(k)), link_name(mech, mech%moment_link(i)))
       end do
       call self%mass_model(model)
       call drawing%add_body_loads(table, k, model)
-      !GCC$ novector
       do i = 1, size(mech%drives)
         call drive_names(mech, i, input, effort)
         c = table%column_index(effort)
@@ -224,7 +214,6 @@ contains
     type(mass_model_t), intent(out) :: model
     integer :: i
     associate (mech => self%deck%mech)
-      !GCC$ novector
       do i = 1, size(mech%links)
         call model%add(link_name(mech, i), "S"//link_name(mech, i), mech%links(i)%m, mech%links(i)%j)
       end do
@@ -297,7 +286,6 @@ contains
     integer :: k, i, nd
     nd = size(deck%mech%drives)
     allocate (dq(nd), dv(nd), da(nd), fval(size(deck%force_load)), mval(size(deck%moment_load)))
-    !GCC$ novector
     do k = first, last
       call linkage_drive_values(deck, k, dq, dv, da)
       call linkage_assemble(deck%mech, dq_from, dq, q, work, error)
@@ -313,11 +301,9 @@ contains
         error%message = where()//": the velocities are undetermined (a dead position)"
         return
       end if
-      !GCC$ novector
       do i = 1, size(fval)
         fval(i) = linkage_load_value(deck, deck%force_load(i), k)
       end do
-      !GCC$ novector
       do i = 1, size(mval)
         mval(i) = linkage_load_value(deck, deck%moment_load(i), k)
       end do
@@ -343,7 +329,6 @@ contains
     character(len=32) :: buf
     integer :: d
     text = ""
-    !GCC$ novector
     do d = 1, size(dq)
       call drive_names(deck%mech, d, input, effort)
       if (d > 1) text = text//", "
@@ -374,7 +359,6 @@ contains
       call table%block_range(self%deck%n, first, last)
       if (table%first_block()) then
         allocate (table%columns(0))
-        !GCC$ novector
         do d = 1, nd
           call drive_names(mech, d, input, effort)
           if (mech%pairs(mech%drives(d)%pair)%kind == pair_r) then
@@ -383,7 +367,6 @@ contains
             call table%add_column(input, "m", col_length)
           end if
         end do
-        !GCC$ novector
         do k = 1, np
           call table%add_column(force_name(mech, k), "N", col_force)
           call table%add_column(force_name(mech, k)//"G", "deg", col_force_angle)
@@ -394,7 +377,6 @@ contains
             call table%add_column(force_name(mech, k)//"M", "N*m", col_moment)
           end if
         end do
-        !GCC$ novector
         do d = 1, nd
           call drive_names(mech, d, input, effort)
           if (mech%pairs(mech%drives(d)%pair)%kind == pair_r) then
@@ -408,7 +390,6 @@ contains
         call echo_deck(self%deck, table)
         ! the continuation starts at the reference position
         allocate (dq(nd))
-        !GCC$ novector
         do d = 1, nd
           dq(d) = mech%drives(d)%q_ref
         end do
@@ -429,7 +410,6 @@ contains
       if (allocated(error)) return
       allocate (residual(first:last), mismatch(first:last))
       gap = 0.0_wp
-      !GCC$ novector
       do k = first, last
         call fill_row(self%deck, k, steps(k), table%rows(:, k - first + 1))
         residual(k) = steps(k)%residual
@@ -437,7 +417,6 @@ contains
         gap = max(gap, steps(k)%solver_gap)
       end do
       if (table%kinematics_wanted) then
-        !GCC$ novector
         do k = first, last
           call put_kinematics(mech, table, k - first + 1, steps(k))
         end do
@@ -478,14 +457,12 @@ contains
     allocate (dq(nd), dv(nd), da(nd))
     call linkage_drive_values(deck, k, dq, dv, da)
     floor = 0.0_wp
-    !GCC$ novector
     do ip = 1, size(deck%mech%pairs)
       floor = max(floor, magnitude(s%f(:, ip)))
     end do
     floor = noise_rel * floor
     lever = floor * deck%mech%size
     pos = 0
-    !GCC$ novector
     do d = 1, nd
       pos = pos + 1
       if (deck%mech%pairs(deck%mech%drives(d)%pair)%kind == pair_r) then
@@ -494,7 +471,6 @@ contains
         v(pos) = dq(d)
       end if
     end do
-    !GCC$ novector
     do ip = 1, size(deck%mech%pairs)
       f = s%f(:, ip)
       if (magnitude(f) <= floor) f = 0.0_wp
@@ -509,7 +485,6 @@ contains
         pos = pos + 2
       end if
     end do
-    !GCC$ novector
     do d = 1, nd
       pos = pos + 1
       if (deck%mech%pairs(deck%mech%drives(d)%pair)%kind == pair_r) then
@@ -518,7 +493,6 @@ contains
         v(pos) = merge(0.0_wp, s%effort(d), abs(s%effort(d)) <= floor)
       end if
     end do
-    !GCC$ novector
     do d = 1, size(v)
       v(d) = clean_zero(v(d))
     end do
@@ -533,7 +507,6 @@ contains
     type(linkage_step_t), intent(in) :: s
     real(wp) :: x(2), vs(2), as(2), floor, f(2)
     integer :: k, i
-    !GCC$ novector
     do k = 1, size(mech%pairs)
       associate (pr => mech%pairs(k))
         if (pr%kind == pair_r) then
@@ -545,30 +518,25 @@ contains
         call table%put_point(r, trim(pr%name), point_position(mech, s%q, i, pr%at))
       end associate
     end do
-    !GCC$ novector
     do i = 1, size(mech%links)
       call table%put_link(r, link_name(mech, i), mech%links(i)%angle0 + s%q(3 * i), s%qd(3 * i), s%qdd(3 * i))
     end do
-    !GCC$ novector
     do i = 1, size(mech%links)
       call link_point_state(mech, s%q, s%qd, s%qdd, i, mech%links(i)%s, x, vs, as)
       call table%put_point(r, "S"//link_name(mech, i), x)
       call table%put_acceleration(r, "S"//link_name(mech, i), as)
     end do
     floor = 0.0_wp
-    !GCC$ novector
     do k = 1, size(mech%pairs)
       floor = max(floor, magnitude(s%f(:, k)))
     end do
     floor = noise_rel * floor
-    !GCC$ novector
     do k = 1, size(mech%pairs)
       f = s%f(:, k)
       where (abs(f) <= floor) f = 0.0_wp
       call table%put_components(r, force_name(mech, k), f, 0.0_wp)
     end do
     ! --frame link: each pair force in the axes of the link it acts on (the frame: global)
-    !GCC$ novector
     do k = 1, size(mech%pairs)
       i = mech%pairs(k)%a
       f = s%f(:, k)
@@ -591,14 +559,12 @@ contains
       call table%echo_real("G", deck%g, "m/s^2")
       call table%echo_real("GRAVITY_ANGLE", deck%gravity_angle, "deg")
       call table%echo_int("N", deck%n, "steps")
-      !GCC$ novector
       do i = 1, size(mech%links)
         call table%echo_line("   LINK "//link_name(mech, i))
         call table%echo_real("  M", mech%links(i)%m, "kg")
         call table%echo_real("  J", mech%links(i)%j, "kg*m^2")
         call table%echo_array("  S", mech%links(i)%s, "m")
       end do
-      !GCC$ novector
       do k = 1, size(mech%pairs)
         associate (pr => mech%pairs(k))
           if (pr%kind == pair_r) then
@@ -612,7 +578,6 @@ contains
           call table%echo_array("  AT", pr%at, "m")
         end associate
       end do
-      !GCC$ novector
       do k = 1, size(mech%drives)
         call drive_names(mech, k, input, effort)
         call table%echo_line("   DRIVE "//int_str(k)//": PAIR "//trim(deck%drive_pair(k))//", INPUT "//input// &
@@ -634,7 +599,6 @@ contains
         call echo_rate(table, "  OMEGA", deck%omega(k), deck%omega_column(k), rate_unit)
         call echo_rate(table, "  EPS", deck%eps(k), deck%eps_column(k), rate_unit//"^2")
       end do
-      !GCC$ novector
       do k = 1, size(mech%forces)
         call table%echo_line("   FORCE "//int_str(k)//": LINK "//link_name(mech, mech%forces(k)%link)// &
                              trim(merge(", FOLLOWS THE LINK", "                  ", mech%forces(k)%follow)))
@@ -642,14 +606,12 @@ contains
         call table%echo_real("  ANGLE", angle_360_deg(mech%forces(k)%dir), "deg")
         call echo_schedule(table, deck%force_load(k)%value, deck%force_load(k)%column, "N")
       end do
-      !GCC$ novector
       do k = 1, size(mech%moment_link)
         call table%echo_line("   MOMENT "//int_str(k)//": LINK "//link_name(mech, mech%moment_link(k)))
         call echo_schedule(table, deck%moment_load(k)%value, deck%moment_load(k)%column, "N*m")
       end do
       call structure_lines(mech, lang_en, lines)
       call table%echo_heading(trim(lines(1)))
-      !GCC$ novector
       do i = 2, size(lines)
         call table%echo_line("   "//trim(lines(i)))
       end do
@@ -697,7 +659,6 @@ contains
     allocate (along(np), source=0)
     associate (mech => self%deck%mech)
       if (table%link_frame) then
-        !GCC$ novector
         do ip = 1, np
           along(ip) = table%column_index(force_name(mech, ip)//"_along")
         end do
@@ -717,13 +678,11 @@ contains
         end if
         line1 = ""
         line2 = ""
-        !GCC$ novector
         do d = 1, nd
           call drive_names(mech, d, input, effort)
           line1 = line1//pad_left(upper_ascii(input), merge(first_width, field_width, d == 1))
           line2 = line2//repeat(" ", merge(first_width, field_width, d == 1))
         end do
-        !GCC$ novector
         do ip = 1, np
           if (table%link_frame) then
             line1 = line1//pad_left(force_name(mech, ip)//"_ALONG", field_width)
@@ -733,7 +692,6 @@ contains
             line2 = line2//pad_left(force_name(mech, ip)//"G", field_width)
           end if
         end do
-        !GCC$ novector
         do d = 1, nd
           call drive_names(mech, d, input, effort)
           line1 = line1//pad_left(upper_ascii(effort), field_width)
@@ -742,7 +700,6 @@ contains
         call out%put(trim(line2))
         line1 = ""
         line2 = ""
-        !GCC$ novector
         do d = 1, nd
           if (mech%pairs(mech%drives(d)%pair)%kind == pair_r) then
             line1 = line1//pad_left(deg, merge(first_width, field_width, d == 1))
@@ -751,7 +708,6 @@ contains
           end if
           line2 = line2//repeat(" ", merge(first_width, field_width, d == 1))
         end do
-        !GCC$ novector
         do ip = 1, np
           line1 = line1//pad_left(newton, field_width)
           if (table%link_frame) then
@@ -760,7 +716,6 @@ contains
             line2 = line2//pad_left(deg, field_width)
           end if
         end do
-        !GCC$ novector
         do d = 1, nd
           if (mech%pairs(mech%drives(d)%pair)%kind == pair_r) then
             line1 = line1//pad_left(newton_m, field_width)
@@ -771,19 +726,16 @@ contains
         call out%put(trim(line1))
         call out%put(trim(line2))
       end if
-      !GCC$ novector
       do k = first, last
         associate (v => table%rows(:, k))
           line1 = ""
           line2 = ""
-          !GCC$ novector
           do d = 1, nd
             line1 = line1//fixed_field(v(d), merge(first_width, field_width, d == 1), &
                                        merge(2, 4, mech%pairs(mech%drives(d)%pair)%kind == pair_r))
             line2 = line2//repeat(" ", merge(first_width, field_width, d == 1))
           end do
           pos = nd
-          !GCC$ novector
           do ip = 1, np
             if (table%link_frame) then
               line1 = line1//fixed_field(v(along(ip)), field_width, 2)
@@ -795,7 +747,6 @@ contains
             pos = pos + 4
             if (mech%pairs(ip)%kind == pair_p) pos = pos + 2
           end do
-          !GCC$ novector
           do d = 1, nd
             line1 = line1//fixed_field(v(pos + d), field_width, 2)
           end do
@@ -814,7 +765,6 @@ contains
     character(len=len(text)) :: up
     integer :: i
     up = text
-    !GCC$ novector
     do i = 1, len(text)
       if (text(i:i) >= "a" .and. text(i:i) <= "z") up(i:i) = achar(iachar(text(i:i)) - 32)
     end do

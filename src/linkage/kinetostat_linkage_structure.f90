@@ -68,7 +68,6 @@ contains
     allocate (known(0:n), source=.false.)
     known(0) = .true.
     allocate (driven(p5), source=.false.)
-    !GCC$ novector
     do k = 1, nd
       driven(mech%drives(k)%pair) = .true.
     end do
@@ -76,7 +75,6 @@ contains
     do while (.not. all(known))
       rest = pack([(i, i=1, n)], .not. known(1:n))
       found = .false.
-      !GCC$ novector
       do s = 1, min(size(rest), max_unit_links)
         ! combinations of s of the remaining links, in lexicographic order
         pick = [(i, i=1, s)]
@@ -113,7 +111,6 @@ contains
       integer, intent(in) :: set(:)
       integer :: kk
       equations = 0
-      !GCC$ novector
       do kk = 1, p5
         if (counts(kk, set)) then
           equations = equations + 2
@@ -140,7 +137,6 @@ contains
       unit%links(:) = set
       allocate (unit%rows(0), ext(0), inner(0))
       has_drive = .false.
-      !GCC$ novector
       do kk = 1, p5
         if (.not. counts(kk, set)) cycle
         unit%rows = [unit%rows, pair_row(kk), pair_row(kk) + 1]
@@ -150,7 +146,6 @@ contains
           ext = [ext, kk]
         end if
       end do
-      !GCC$ novector
       do dd = 1, nd
         if (counts(mech%drives(dd)%pair, set)) then
           unit%rows = [unit%rows, drive_row(mech, dd)]
@@ -164,7 +159,6 @@ contains
         return
       end if
       allocate (internal(size(set)), source=0)
-      !GCC$ novector
       do j = 1, size(set)
         internal(j) = count(mech%pairs(inner)%a == set(j) .or. mech%pairs(inner)%b == set(j))
       end do
@@ -188,7 +182,6 @@ contains
       integer, allocatable :: ends(:)
       integer :: kk, e
       allocate (ends(0))
-      !GCC$ novector
       do kk = 1, size(ext)
         e = mech%pairs(ext(kk))%a
         if (.not. known(e)) e = mech%pairs(ext(kk))%b
@@ -229,7 +222,6 @@ contains
       all(1:size(first)) = first
       if (present(second)) all(size(first) + 1:) = second
       text = ""
-      !GCC$ novector
       do kk = 1, size(all)
         if (kk > 1) text = text//","
         text = text//int_str(id_of(all(kk)))
@@ -254,11 +246,9 @@ contains
     integer :: i, s, j
     s = size(pick)
     more = .false.
-    !GCC$ novector
     do i = s, 1, -1
       if (pick(i) < m - s + i) then
         pick(i) = pick(i) + 1
-        !GCC$ novector
         do j = i + 1, s
           pick(j) = pick(j - 1) + 1
         end do
@@ -275,7 +265,6 @@ contains
     character(len=:), allocatable :: text
     integer :: u
     text = ""
-    !GCC$ novector
     do u = 1, size(mech%units)
       if (u > 1) text = text//" -> "
       text = text//mech%units(u)%label
@@ -301,7 +290,6 @@ contains
     call push(lines, "W = 3n - 2p5 - p4 = 3 x "//int_str(n)//" - 2 x "//int_str(p5)//" - 0 = "//int_str(3 * n - 2 * p5)// &
               " = NUMBER OF DRIVES")
     top = 1
-    !GCC$ novector
     do u = 1, size(mech%units)
       associate (un => mech%units(u))
         top = max(top, un%class)
@@ -328,7 +316,6 @@ contains
     call push(lines, "STRUCTURE FORMULA: "//structure_formula(mech))
     call push(lines, "CLASS OF THE MECHANISM: "//roman(merge(top, 0, top < 99)))
     if (lang /= lang_ru) return
-    !GCC$ novector
     do i = 1, size(lines)
       lines(i) = echo_name(trim(lines(i)), lang_ru)
     end do

@@ -10,7 +10,7 @@ module kinetostat_json_writer
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_escape, only: json_string
   use kinetostat_text, only: int_str
-  use kinetostat_row_blocks, only: put_row_blocks, sink_i
+  use kinetostat_row_blocks, only: put_row_blocks, table_rows_t, text_sink_t
   implicit none
   private
   public :: write_json, json_string, put_run_identity, put_run_verdict, json_format_version
@@ -19,6 +19,12 @@ module kinetostat_json_writer
   !> first member "format_version": raised when a key changes meaning or goes (a key added
   !> keeps it); docs/cli.md.
   integer, parameter :: json_format_version = 1
+
+  !> The JSON's rows of a table.
+  type, extends(table_rows_t) :: json_rows_t
+  contains
+    procedure :: put_rows => put_json_rows
+  end type json_rows_t
 
 contains
 
@@ -31,18 +37,17 @@ contains
     !> Title of the mechanism (as the legacy table prints it).
     character(*), intent(in) :: title
     !> Finite results.
-    type(step_table_t), intent(in) :: table
+    type(step_table_t), intent(in), target :: table
     !> Where the lines go.
     type(text_buffer_t), intent(inout) :: out
     !> Where the head is (written whole when absent).
     type(echo_cursor_t), intent(inout), optional :: head
     !> Takes the text so far while the rows are formatted in parallel (see put_row_blocks).
-    procedure(sink_i), optional :: sink
+    class(text_sink_t), intent(inout), optional :: sink
     type(echo_cursor_t) :: whole_head
     type(echo_record_t), allocatable :: records(:)
     character(len=:), allocatable :: line
-    logical, allocatable :: whole(:), voidable(:)
-    integer, allocatable :: columns(:)
+    type(json_rows_t) :: rows
     integer :: i, c, last
     logical :: shown(size(table%columns))
     last = 0
@@ -60,16 +65,8 @@ contains
         end do
       end if
     end if
-    allocate (columns(0))
-    do c = 1, size(table%columns)
-      if (shown(c)) columns = [columns, c]
-    end do
-    allocate (whole(size(columns)), voidable(size(columns)))
-    do c = 1, size(columns)
-      whole(c) = table%is_whole(columns(c))
-      voidable(c) = table%columns(columns(c))%voidable
-    end do
-    call put_row_blocks(table%row_count(), size(table%columns) * (cell_room + 2) + 8, put_rows, out, sink)
+    call rows%aim(table, shown)
+    call put_row_blocks(table%row_count(), size(table%columns) * (cell_room + 2) + 8, rows, out, sink)
     if (.not. table%last_block()) return
     call out%put("  ],")
     if (allocated(table%summary)) then
@@ -138,27 +135,34 @@ contains
       call out%put('  "rows": [')
       cur%done = .true.
     end subroutine head_part
-
-    !> Rows `first_row` to `last_row`, one JSON array a line.
-    subroutine put_rows(first_row, last_row, part)
-      integer, intent(in) :: first_row, last_row
-      type(text_buffer_t), intent(inout) :: part
-      integer :: k
-      ! room for every row at once (no copying while the buffer grows)
-      call part%reserve((last_row - first_row + 1) * (size(table%columns) * (cell_room + 2) + 8))
-      do k = first_row, last_row
-        call part%append("    [")
-        ! no value (a jammed cam follower's forces): null
-        call put_cells(part, table%rows(:, k), columns, whole, voidable, table%is_void(k), ", ", "null")
-        if (table%row_offset + k < max(table%total_rows, table%row_count())) then
-          call part%append("],")
-        else
-          call part%append("]")
-        end if
-        call part%end_line()
-      end do
-    end subroutine put_rows
   end subroutine write_json
+
+  !> Rows `first` to `last` of the JSON, one array a line.
+  subroutine put_json_rows(self, first, last, out, later)
+    !> The table and its shown columns.
+    class(json_rows_t), intent(in) :: self
+    !> First and last row.
+    integer, intent(in) :: first, last
+    !> Where the rows go.
+    type(text_buffer_t), intent(inout) :: out
+    !> Unused (the JSON has one section).
+    type(text_buffer_t), intent(inout) :: later
+    integer :: k
+    ! room for every row at once (no copying while the buffer grows)
+    call out%reserve((last - first + 1) * (size(self%table%columns) * (cell_room + 2) + 8))
+    do k = first, last
+      call out%append("    [")
+      ! no value (a jammed cam follower's forces): null
+      call put_cells(out, self%table%rows(:, k), self%columns, self%whole, self%voidable, self%table%is_void(k), ", ", &
+        "null")
+      if (self%table%row_offset + k < max(self%table%total_rows, self%table%row_count())) then
+        call out%append("],")
+      else
+        call out%append("]")
+      end if
+      call out%end_line()
+    end do
+  end subroutine put_json_rows
 
   !> The first members of a run's JSON object: "format_version", "program", "mechanism",
   !> "title", "deck", "deck_title" (the deck's own title, when it has one), "row_name",

@@ -6,7 +6,7 @@ module kinetostat_labels
   use kinetostat_text, only: starts_with
   implicit none
   private
-  public :: lang_en, lang_ru, lang_from_name, label, phrase, echo_name, unit_symbol
+  public :: lang_en, lang_ru, lang_names, lang_from_name, label, phrase, echo_name, unit_symbol
 
   !> Language: English (default).
   integer, parameter :: lang_en = 1

@@ -8,9 +8,10 @@ module kinetostat_row_blocks
   !$ use omp_lib, only: omp_get_max_threads, omp_get_thread_num
   use, intrinsic :: iso_fortran_env, only: int64
   use kinetostat_text_buffer, only: text_buffer_t
+  use kinetostat_step_table, only: step_table_t
   implicit none
   private
-  public :: put_row_blocks, put_row_blocks_two, worker_count, put_rows_i, put_rows_two_i, sink_i
+  public :: put_row_blocks, put_row_blocks_two, worker_count, row_writer_t, text_sink_t, table_rows_t
 
   !> Fewest rows worth a thread: below it the rows go out serially.
   integer, parameter :: min_rows_per_thread = 256
@@ -22,40 +23,81 @@ module kinetostat_row_blocks
   !> Blocks per thread at least (more, smaller blocks even out the threads' loads).
   integer, parameter :: blocks_per_thread = 4
 
-  abstract interface
-    !> Format rows `first` to `last` into `out`.
-    subroutine put_rows_i(first, last, out)
-      import :: text_buffer_t
-      implicit none
-      !> First and last row.
-      integer, intent(in) :: first, last
-      !> Where the text goes.
-      type(text_buffer_t), intent(inout) :: out
-    end subroutine put_rows_i
+  !> What formats rows of an output: a writer extends it with what its rows are made of
+  !> (an explicit context, not a procedure of its host: no trampoline, no executable stack).
+  type, abstract :: row_writer_t
+  contains
+    !> Format rows `first` to `last`; it must only read shared data (it runs in several threads).
+    procedure(put_rows_i), deferred :: put_rows
+  end type row_writer_t
 
+  !> A writer of a step table's rows (the CSV's, the JSON's): the table and the columns it
+  !> shows, with how each is written.
+  type, abstract, extends(row_writer_t) :: table_rows_t
+    !> The results (while the writer runs only).
+    type(step_table_t), pointer :: table => null()
+    !> The table's columns shown, in order.
+    integer, allocatable :: columns(:)
+    !> Per shown column: a whole number (flag, count).
+    logical, allocatable :: whole(:)
+    !> Per shown column: no value in a row without values.
+    logical, allocatable :: voidable(:)
+  contains
+    procedure :: aim => aim_table_rows
+  end type table_rows_t
+
+  !> What takes the text of an output as its rows are formatted (e.g. the spool's file).
+  type, abstract :: text_sink_t
+  contains
+    !> Takes the text written so far, in row order (it may move it elsewhere and empty `out`).
+    procedure(take_i), deferred :: take
+  end type text_sink_t
+
+  abstract interface
     !> Format rows `first` to `last` into two texts (a section and a second section over
-    !> the same rows, which goes after the first).
-    subroutine put_rows_two_i(first, last, out, later)
-      import :: text_buffer_t
+    !> the same rows, which goes after the first; a writer of one section leaves `later`).
+    subroutine put_rows_i(self, first, last, out, later)
+      import :: row_writer_t, text_buffer_t
       implicit none
+      !> The writer and what its rows are made of.
+      class(row_writer_t), intent(in) :: self
       !> First and last row.
       integer, intent(in) :: first, last
       !> Where the first section's text goes.
       type(text_buffer_t), intent(inout) :: out
       !> Where the second section's text goes.
       type(text_buffer_t), intent(inout) :: later
-    end subroutine put_rows_two_i
+    end subroutine put_rows_i
 
     !> Takes the text written so far, in row order (it may move it elsewhere and empty `out`).
-    subroutine sink_i(out)
-      import :: text_buffer_t
+    subroutine take_i(self, out)
+      import :: text_sink_t, text_buffer_t
       implicit none
+      !> The sink.
+      class(text_sink_t), intent(inout) :: self
       !> The text so far.
       type(text_buffer_t), intent(inout) :: out
-    end subroutine sink_i
+    end subroutine take_i
   end interface
 
 contains
+
+  !> Aim a table writer at `table` and the columns marked in `shown`.
+  subroutine aim_table_rows(self, table, shown)
+    class(table_rows_t), intent(inout) :: self
+    !> The results (the writer keeps a pointer while it runs).
+    type(step_table_t), intent(in), target :: table
+    !> Per column of the table: whether the output shows it.
+    logical, intent(in) :: shown(:)
+    integer :: c
+    self%columns = pack([(c, c = 1, size(shown))], shown)
+    allocate (self%whole(size(self%columns)), self%voidable(size(self%columns)))
+    do c = 1, size(self%columns)
+      self%whole(c) = table%is_whole(self%columns(c))
+      self%voidable(c) = table%columns(self%columns(c))%voidable
+    end do
+    self%table => table
+  end subroutine aim_table_rows
 
   !> Threads OpenMP would use (1 without OpenMP).
   integer function worker_count()
@@ -63,54 +105,46 @@ contains
     !$ worker_count = omp_get_max_threads()
   end function worker_count
 
-  !> Rows 1 to `n_rows` into `out`, formatted by `put_rows` in blocks (in parallel with
-  !> more than one thread), in row order. With `sink`, it is called with `out` after every
+  !> Rows 1 to `n_rows` into `out`, formatted by `writer` in blocks (in parallel with
+  !> more than one thread), in row order. With `sink`, its `take` gets `out` after every
   !> block appended (in row order, while the other threads format the next blocks), so that
   !> writing the text out overlaps the formatting.
-  subroutine put_row_blocks(n_rows, row_room, put_rows, out, sink)
+  subroutine put_row_blocks(n_rows, row_room, writer, out, sink)
     !> Number of rows.
     integer, intent(in) :: n_rows
     !> Most bytes a row takes.
     integer, intent(in) :: row_room
-    !> Formats a range of rows; it must only read shared data (it runs in several threads).
-    procedure(put_rows_i) :: put_rows
+    !> Formats a range of rows (one section: nothing goes to its `later`).
+    class(row_writer_t), intent(in) :: writer
     !> Where the text goes.
     type(text_buffer_t), intent(inout) :: out
     !> Takes the text so far (e.g. to the spool's file).
-    procedure(sink_i), optional :: sink
+    class(text_sink_t), intent(inout), optional :: sink
     type(text_buffer_t) :: no_later
-    call put_row_blocks_two(n_rows, row_room, put_both, out, no_later, sink)
-  contains
-    !> The one section's rows (nothing goes to `later`).
-    subroutine put_both(first, last, part, later)
-      integer, intent(in) :: first, last
-      type(text_buffer_t), intent(inout) :: part
-      type(text_buffer_t), intent(inout) :: later
-      call put_rows(first, last, part)
-    end subroutine put_both
+    call put_row_blocks_two(n_rows, row_room, writer, out, no_later, sink)
   end subroutine put_row_blocks
 
   !> put_row_blocks for a layout that writes two sections over the same rows: each block's
   !> text of each section into a buffer of its thread, appended in row order to `out` and to
   !> `later` (`sink`, if given, is called with `out` after each block).
-  subroutine put_row_blocks_two(n_rows, row_room, put_rows, out, later, sink)
+  subroutine put_row_blocks_two(n_rows, row_room, writer, out, later, sink)
     !> Number of rows.
     integer, intent(in) :: n_rows
     !> Most bytes a row takes in `out`.
     integer, intent(in) :: row_room
     !> Formats a range of rows; it must only read shared data (it runs in several threads).
-    procedure(put_rows_two_i) :: put_rows
+    class(row_writer_t), intent(in) :: writer
     !> Where the first section's text goes.
     type(text_buffer_t), intent(inout) :: out
     !> Where the second section's text goes.
     type(text_buffer_t), intent(inout) :: later
     !> Takes the text of `out` so far (e.g. to the spool's file).
-    procedure(sink_i), optional :: sink
+    class(text_sink_t), intent(inout), optional :: sink
     type(text_buffer_t), allocatable :: parts(:), later_parts(:)
     integer :: threads, block_rows, n_blocks, b, me
     threads = min(worker_count(), n_rows / min_rows_per_thread)
     if (threads <= 1) then
-      call put_rows(1, n_rows, out, later)
+      call writer%put_rows(1, n_rows, out, later)
       return
     end if
     if (.not. present(sink)) call out%reserve(int(min(int(n_rows, int64) * row_room, max_reserve)))
@@ -124,11 +158,11 @@ contains
       !$ me = omp_get_thread_num()
       parts(me)%length = 0
       later_parts(me)%length = 0
-      call put_rows((b - 1) * block_rows + 1, min(n_rows, b * block_rows), parts(me), later_parts(me))
+      call writer%put_rows((b - 1) * block_rows + 1, min(n_rows, b * block_rows), parts(me), later_parts(me))
       !$omp ordered
       if (parts(me)%length > 0) call out%append(parts(me)%data(1:parts(me)%length))
       if (later_parts(me)%length > 0) call later%append(later_parts(me)%data(1:later_parts(me)%length))
-      if (present(sink)) call sink(out)
+      if (present(sink)) call sink%take(out)
       !$omp end ordered
     end do
     !$omp end parallel do

@@ -12,6 +12,7 @@ module kinetostat_spool
   use kinetostat_posix, only: temp_anonymous, write_fd, read_fd_at, close_fd, system_error_text, plan_replace
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_output, only: output_sink_t, write_output_file, write_output_stdout
+  use kinetostat_row_blocks, only: text_sink_t
   implicit none
   private
   public :: spool_t, spool_bound
@@ -24,7 +25,9 @@ module kinetostat_spool
   integer, parameter :: eio = 5
 
   !> The output of one run on its way to its target.
-  type :: spool_t
+  !> As a text sink (`take`), it takes a writer's rows as they are formatted and keeps the
+  !> first failure to write them in `failure`.
+  type, extends(text_sink_t) :: spool_t
     !> The target file (`-o`); not allocated: standard output.
     character(len=:), allocatable :: target
     !> The name of the temporary beside the target, once made (an anonymous one has none).
@@ -39,7 +42,10 @@ module kinetostat_spool
     logical :: spilled = .false.
     !> Bytes kept in memory before they go to the file (tests make it small).
     integer :: bound = spool_bound
+    !> A failed write of `take` (the run reports it after the block).
+    type(error_t), allocatable :: failure
   contains
+    procedure :: take
     procedure :: aim
     procedure :: drain
     procedure :: absorb
@@ -56,6 +62,17 @@ contains
     character(*), intent(in), optional :: target
     if (present(target)) self%target = target
   end subroutine aim
+
+  !> The rows' text so far to the file, called by the writers after every part of the rows
+  !> formatted in parallel: over the bound, or any text once the spool has its file (so a
+  !> part is written while the next are formatted); a failure is kept in `failure`.
+  subroutine take(self, out)
+    class(spool_t), intent(inout) :: self
+    !> The text written so far that is not in the file yet.
+    type(text_buffer_t), intent(inout) :: out
+    if (allocated(self%failure)) return
+    call self%drain(out, self%failure, force=.true.)
+  end subroutine take
 
   !> When `out` holds more than `bound` bytes (or `force` and the text went to the file
   !> already), move its text to the temporary file and empty it.

@@ -165,8 +165,6 @@ contains
     !> The rows a drawing needs (--at K, the SVG sheet), kept as the blocks go.
     type(row_keeper_t) :: keeper
     logical :: drawn, whole_run
-    !> A failed write of the spool while the rows were formatted (to_spool).
-    type(error_t), allocatable :: spool_error
     type(sheet_t) :: sheet
     character(len=:), allocatable :: pairs_asked
     integer :: first, rows
@@ -192,8 +190,8 @@ contains
     if (options%shaking) then
       call mech%mass_model(model)
       if (.not. model%available) then
-        call fatal_error(error, exit_usage, "--shaking: only linkage mechanisms (pr3207, pr3050, sixbar, assur) "// &
-          "report the shaking force; "//source%path//" is &"//group)
+        call fatal_error(error, exit_usage, "--shaking: only linkage mechanisms (pr3207, pr3050, sixbar, assur, "// &
+          "linkage) report the shaking force; "//source%path//" is &"//group)
         return
       end if
     end if
@@ -279,11 +277,8 @@ contains
       end if
       select case (options%format)
       case (format_csv)
-        if (present(spool)) then
-          call write_csv(table, out, to_spool)
-        else
-          call write_csv(table, out)
-        end if
+        ! the spool takes the rows as they are formatted (when there is one)
+        call write_csv(table, out, spool)
       case (format_npy)
         call write_npy(table, out, error)
         if (allocated(error)) return
@@ -300,11 +295,7 @@ contains
           if (allocated(error)) return
         else
           do
-            if (present(spool)) then
-              call write_json(mech%title(options%lang), table, out, head, to_spool)
-            else
-              call write_json(mech%title(options%lang), table, out, head)
-            end if
+            call write_json(mech%title(options%lang), table, out, head, spool)
             if (head%done) exit
             call drain_head(error)
             if (allocated(error)) return
@@ -346,11 +337,7 @@ contains
         end if
         if (allocated(error)) return
       case default
-        if (present(spool)) then
-          call write_table_rows(mech, table, options%lang, out, later, to_spool)
-        else
-          call write_table_rows(mech, table, options%lang, out, later)
-        end if
+        call write_table_rows(mech, table, options%lang, out, later, spool)
         if (options%shaking) call write_shaking_rows(table, options%lang, shaking)
         if (table%last_block()) then
           if (present(spool)) then
@@ -368,8 +355,9 @@ contains
       call check_text_room(error)
       if (allocated(error)) return
       if (.not. present(spool)) return
-      if (allocated(spool_error)) then
-        call move_alloc(spool_error, error)
+      if (allocated(spool%failure)) then
+        ! a failed write of the spool while the rows were formatted (spool_t%take)
+        call move_alloc(spool%failure, error)
         return
       end if
       call spool%drain(out, error)
@@ -446,16 +434,6 @@ contains
         if (allocated(error)) return
       end do
     end subroutine start_output
-
-    !> The rows' text so far to the spool, called by the writers after every part of the
-    !> rows formatted in parallel: over the spool's bound, or any text once the spool has its
-    !> file (so a part is written while the next are formatted); a failure is kept for
-    !> run_block.
-    subroutine to_spool(text)
-      type(text_buffer_t), intent(inout) :: text
-      if (allocated(spool_error)) return
-      call spool%drain(text, spool_error, force=.true.)
-    end subroutine to_spool
 
     !> Between parts of the head: the text so far to the spool (when over its bound).
     subroutine drain_head(error)

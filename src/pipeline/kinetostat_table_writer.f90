@@ -14,7 +14,7 @@ module kinetostat_table_writer
   use kinetostat_escape, only: table_text
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_text_buffer, only: text_buffer_t
-  use kinetostat_row_blocks, only: put_row_blocks_two, sink_i
+  use kinetostat_row_blocks, only: put_row_blocks_two, row_writer_t, text_sink_t
   use kinetostat_shaking, only: shaking_column_names
   implicit none
   private
@@ -35,15 +35,27 @@ module kinetostat_table_writer
   !> Values per line of an echoed array.
   integer, parameter :: echo_array_per_line = 5
 
+  !> The legacy table's rows: the mechanism's RESULTS layout over a block of the table.
+  type, extends(row_writer_t) :: layout_rows_t
+    !> The mechanism (during write_table_rows only).
+    class(mechanism_t), pointer :: mech => null()
+    !> The rows of one block of the run (during write_table_rows only).
+    type(step_table_t), pointer :: table => null()
+    !> lang_en or lang_ru.
+    integer :: lang = 0
+  contains
+    procedure :: put_rows => put_layout_rows
+  end type layout_rows_t
+
 contains
 
   !> The mechanism's RESULTS lines of the rows now in `table` (one block of the run): in
   !> parallel parts with more than one OpenMP thread (the same bytes as one thread).
   subroutine write_table_rows(mech, table, lang, out, later, sink)
     !> The mechanism (its RESULTS layout).
-    class(mechanism_t), intent(in) :: mech
+    class(mechanism_t), intent(in), target :: mech
     !> Finite results: the rows of one block of the run.
-    type(step_table_t), intent(in) :: table
+    type(step_table_t), intent(in), target :: table
     !> lang_en or lang_ru.
     integer, intent(in) :: lang
     !> Where the RESULTS lines go.
@@ -52,17 +64,26 @@ contains
     type(text_buffer_t), intent(inout) :: later
     !> Takes the text of `out` so far while the rows are formatted in parallel (see
     !> put_row_blocks).
-    procedure(sink_i), optional :: sink
-    call put_row_blocks_two(table%row_count(), table_row_room * size(table%columns), put_rows, out, later, sink)
-  contains
-    !> Rows first .. last of the layout.
-    subroutine put_rows(first, last, part, later_part)
-      integer, intent(in) :: first, last
-      type(text_buffer_t), intent(inout) :: part
-      type(text_buffer_t), intent(inout) :: later_part
-      call mech%write_results(table, lang, first, last, part, later_part)
-    end subroutine put_rows
+    class(text_sink_t), intent(inout), optional :: sink
+    type(layout_rows_t) :: rows
+    rows%mech => mech
+    rows%table => table
+    rows%lang = lang
+    call put_row_blocks_two(table%row_count(), table_row_room * size(table%columns), rows, out, later, sink)
   end subroutine write_table_rows
+
+  !> Rows `first` to `last` of the mechanism's layout.
+  subroutine put_layout_rows(self, first, last, out, later)
+    !> The mechanism, the table and the language.
+    class(layout_rows_t), intent(in) :: self
+    !> First and last row.
+    integer, intent(in) :: first, last
+    !> Where the RESULTS lines go.
+    type(text_buffer_t), intent(inout) :: out
+    !> Where the layout's second section goes.
+    type(text_buffer_t), intent(inout) :: later
+    call self%mech%write_results(self%table, self%lang, first, last, out, later)
+  end subroutine put_layout_rows
 
   !> The shaking block of the legacy table (--shaking), the rows now in `table`: with the
   !> run's first block its heading and the column and unit lines; per step the input
