@@ -32,6 +32,7 @@
 module kinetostat_typeset
   use kinetostat_kinds, only: wp
   use kinetostat_labels, only: lang_ru
+  use kinetostat_text, only: replace_all
   implicit none
   private
   public :: text_run_t, run_base, run_sub, run_sup, typeset, plain_runs, runs_text, plain_text, runs_extent, &
@@ -203,12 +204,12 @@ contains
     !> Any text.
     character(*), intent(in) :: text
     character(len=:), allocatable :: out
-    out = swap(text, "*m^2", "·m²")
-    out = swap(out, "*м^2", "·м²")
-    out = swap(out, "N*m", "N·m")
-    out = swap(out, "Н*м", "Н·м")
-    out = swap(out, "s^2", "s²")
-    out = swap(out, "с^2", "с²")
+    out = replace_all(text, "*m^2", "·m²")
+    out = replace_all(out, "*м^2", "·м²")
+    out = replace_all(out, "N*m", "N·m")
+    out = replace_all(out, "Н*м", "Н·м")
+    out = replace_all(out, "s^2", "s²")
+    out = replace_all(out, "с^2", "с²")
   end function unit_text
 
   !> The runs of token `t` when it is a symbol (ok); ok false otherwise.
@@ -504,18 +505,5 @@ contains
       call push(runs, more(i)%text, more(i)%shift)
     end do
   end subroutine push_all
-
-  !> `text` with every `old` replaced by `new`.
-  pure recursive function swap(text, old, new) result(out)
-    character(*), intent(in) :: text, old, new
-    character(len=:), allocatable :: out
-    integer :: i
-    i = index(text, old)
-    if (i == 0) then
-      out = text
-    else
-      out = text(:i - 1)//new//swap(text(i + len(old):), old, new)
-    end if
-  end function swap
 
 end module kinetostat_typeset
