@@ -46,7 +46,7 @@ checks valid-output and expected-error:
                  "one too many" before the '/': exit 2 "at most N ..."
 
 --every K runs every K-th deck of the fixed set (by bundled deck, then by class) and every
-deck of the classes of strings and the special runs (tools/test: --every 3; tools/test --long
+deck of the classes of strings and the special runs (tools/test: --every 5; tools/test --long
 the whole set). --seed N changes the random choices (tools/test --long runs the fixed set, then a
 second run with a seed from the date, printed, so that a failure can be reproduced); --scale K draws K times
 as many mutations per deck (--scale 14: about 12 000 decks); --budget S stops starting new

@@ -6,7 +6,7 @@ module kinetostat_labels
   use kinetostat_text, only: starts_with, replace_all
   implicit none
   private
-  public :: lang_en, lang_ru, lang_from_name, label, phrase, echo_name, unit_symbol
+  public :: lang_en, lang_ru, lang_from_name, label, phrase, echo_name, unit_symbol, in_language
 
   !> Language: English (default).
   integer, parameter :: lang_en = 1
@@ -553,5 +553,18 @@ contains
       text = english
     end select
   end function note
+
+  !> `english` or, with lang_ru, `russian`: a text given in both wordings side by side.
+  pure function in_language(english, russian, lang) result(text)
+    character(*), intent(in) :: english, russian
+    !> lang_en or lang_ru.
+    integer, intent(in) :: lang
+    character(len=:), allocatable :: text
+    if (lang == lang_ru) then
+      text = russian
+    else
+      text = english
+    end if
+  end function in_language
 
 end module kinetostat_labels

@@ -33,6 +33,8 @@ module kinetostat_typeset
   use kinetostat_kinds, only: wp
   use kinetostat_labels, only: lang_ru
   use kinetostat_text, only: replace_all
+  ! the number of UTF-8 characters of a text (continuation bytes not counted)
+  use kinetostat_label_place, only: char_count => text_chars
   implicit none
   private
   public :: text_run_t, run_base, run_sub, run_sup, typeset, plain_runs, runs_text, plain_text, runs_extent, &
@@ -186,17 +188,6 @@ contains
       end select
     end do
   end subroutine runs_extent
-
-  !> Number of UTF-8 characters of `text` (continuation bytes not counted).
-  pure integer function char_count(text)
-    !> Text, UTF-8.
-    character(*), intent(in) :: text
-    integer :: i
-    char_count = 0
-    do i = 1, len(text)
-      if (iand(iachar(text(i:i)), 192) /= 128) char_count = char_count + 1
-    end do
-  end function char_count
 
   !> `text` with the units written typographically: N*m -> N·m, kg*m^2 -> kg·m², s^2 -> s²
   !> (also the Russian symbols, Н*м -> Н·м).

@@ -13,6 +13,9 @@ png_wanted() {
   return 1
 }
 
+# the per-deck checks of tools/svg_check.py, run in one process after the loop (svg_check.py batch)
+svg_batch="$cli_tmp/svg_batch.txt"
+: >"$svg_batch"
 for deck in data/*.nml; do
   name=$(basename "$deck" .nml)
   [ "$name" = assur_toggle ] && continue
@@ -28,8 +31,7 @@ for deck in data/*.nml; do
   if xmllint --noout "$cli_tmp/$name.svg" 2>"$cli_tmp/xmllint.err"; then pass
   else fail "svg-xmllint-$name" "$(head -5 "$cli_tmp/xmllint.err")"; fi
   # self-contained: no href, url(), script, image, non-generic font
-  python3 "$svg_check" self-contained "$cli_tmp/$name.svg" >"$cli_tmp/check.out" 2>&1 \
-    && pass || fail "svg-self-contained-$name" "$(cat "$cli_tmp/check.out")"
+  printf 'svg-self-contained-%s\tself-contained\t%s\n' "$name" "$cli_tmp/$name.svg" >>"$svg_batch"
   # rendered: the sheet's size at 96 px per inch, not blank
   if ! png_wanted "$name"; then :
   elif rsvg-convert -o "$cli_tmp/$name.png" "$cli_tmp/$name.svg" 2>"$cli_tmp/rsvg.err"; then
@@ -41,9 +43,19 @@ for deck in data/*.nml; do
   # hodographs = the CSV's components (the gear decks have stages, no hodographs)
   case "$name" in gears_*) continue ;; esac
   run_ks "$deck" --format csv; cp "$out" "$cli_tmp/$name.csv"
-  python3 "$svg_check" hodographs "$cli_tmp/$name.svg" "$cli_tmp/$name.csv" >"$cli_tmp/check.out" 2>&1 \
-    && pass || fail "svg-hodographs-$name" "$(cat "$cli_tmp/check.out")"
+  printf 'svg-hodographs-%s\thodographs\t%s\t%s\n' "$name" "$cli_tmp/$name.svg" "$cli_tmp/$name.csv" >>"$svg_batch"
 done
+python3 "$svg_check" batch "$svg_batch" >"$cli_tmp/svg_batch.out" 2>&1
+if [ "$(grep -c '^ok \|^FAIL ' "$cli_tmp/svg_batch.out")" -ne "$(grep -c . "$svg_batch")" ]; then
+  fail svg-batch "tools/svg_check.py batch did not report every check: $(tail -5 "$cli_tmp/svg_batch.out")"
+fi
+while read -r verdict check_name; do
+  case "$verdict" in
+    ok) pass ;;
+    FAIL) fail "${check_name%%:*}" "$(awk -v n="FAIL ${check_name%%:*}:" 'index($0, n) == 1 {on = 1; print; next}
+      on && /^    / {print; next} {on = 0}' "$cli_tmp/svg_batch.out")" ;;
+  esac
+done < <(grep '^ok \|^FAIL ' "$cli_tmp/svg_batch.out")
 
 # the hodograph check can fail: the first point of F36's path moved by about 0.9 mm
 sed -E '/data-force="F36"/s/d="M ([0-9]+)\.([0-9]+)/d="M \1.9\2/' "$cli_tmp/pr3207.svg" >"$cli_tmp/bad.svg"
