@@ -1,5 +1,6 @@
 !> The exact number writer (kinetostat_decimal) against the compiler's formatted WRITE, byte
-!> for byte: 10^6 pseudo-random doubles (a fixed seed, so a failure repeats) over the whole
+!> for byte: 10^5 pseudo-random doubles (10^6 with `tools/test --long`; a fixed seed, so a
+!> failure repeats; the first 10^5 are the same in both) over the whole
 !> exponent range (random bit patterns, subnormals among them), decimal ties and near-ties,
 !> values that round up to a new power of ten, +-0, each through the CSV descriptor
 !> ES20.12E3, and every third one through one more descriptor of the output policy in turn
@@ -9,13 +10,13 @@ module test_decimal
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use kinetostat_kinds, only: wp
   use kinetostat_decimal, only: edit_f, edit_exponent, put_es_compact, put_whole
-  use test_harness, only: test_counts_t, check_true
+  use test_harness, only: test_counts_t, check_true, long_checks
   implicit none
   private
   public :: run_decimal_tests
 
-  !> Number of random doubles.
-  integer, parameter :: sample_count = 1000000
+  !> Number of random doubles: of the default run, and with `tools/test --long`.
+  integer, parameter :: sample_count = 100000, long_sample_count = 1000000
   !> Mismatches printed at most.
   integer, parameter :: max_shown = 10
 
@@ -63,7 +64,8 @@ contains
     call check_true(t, "decimal: named cases through every descriptor", bad == 0, shown)
   end subroutine test_fixed_cases
 
-  !> 10^6 doubles of five families, each through ES20.12E3 and one descriptor in turn.
+  !> 10^5 (--long: 10^6) doubles of five families, each through ES20.12E3 and one descriptor
+  !> in turn.
   subroutine test_random(t)
     type(test_counts_t), intent(inout) :: t
     integer(int64) :: state
@@ -72,12 +74,13 @@ contains
     character(len=:), allocatable :: shown
     character(len=20) :: mine, theirs
     character(len=32) :: compact
-    integer :: pos
+    integer :: pos, n
+    n = merge(long_sample_count, sample_count, long_checks())
     state = 14_int64
     bad = 0
     allocate (character(len=0) :: shown) ! not shown = "" (gcc's -Wmaybe-uninitialized)
     k = 0
-    do i = 1, sample_count
+    do i = 1, n
       x = sample(state, i)
       call edit_exponent(x, 12, 3, scientific=.true., text=mine)
       write (theirs, '(es20.12e3)') x
@@ -91,7 +94,7 @@ contains
       k = mod(k, size(descriptors)) + 1
       call compare(x, descriptors(k), bad, shown)
     end do
-    call check_true(t, "decimal: 10^6 random doubles equal the compiler's formatted WRITE", bad == 0, &
+    call check_true(t, "decimal: "//itoa(n)//" random doubles equal the compiler's formatted WRITE", bad == 0, &
                     "mismatches "//itoa(bad)//":"//shown)
   end subroutine test_random
 

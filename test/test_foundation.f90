@@ -12,7 +12,7 @@ module test_foundation
   use kinetostat_selfcheck, only: link_balance, power_mismatch, link_balance_t, balance_add_force, &
     equilibrium_residual
   use kinetostat_lapack, only: solve_dense
-  use test_harness, only: test_counts_t, check_close, check_true, operator(.dot.)
+  use test_harness, only: test_counts_t, check_close, check_true, operator(.dot.), scratch_path
   implicit none
   private
   public :: run_foundation_tests
@@ -355,13 +355,14 @@ contains
   !> load_deck: a file without a final newline, with CRLF and a BOM; a missing file.
   subroutine test_load_deck(t)
     type(test_counts_t), intent(inout) :: t
-    character(len=*), parameter :: path = "build/test_load_deck.tmp"
+    character(len=:), allocatable :: path
     character(len=*), parameter :: lf = achar(10), cr = achar(13)
     character(len=:), allocatable :: long_value
     type(deck_source_t) :: src
     type(error_t), allocatable :: error
     integer :: unit
     long_value = repeat("9", 3000)
+    path = scratch_path("load_deck", ".tmp")
     open (newunit=unit, file=path, access='stream', form='unformatted', status='replace', action='write')
     write (unit) char(239)//char(187)//char(191)//"&g"//cr//lf//" x = "//long_value//lf//"/"
     close (unit)

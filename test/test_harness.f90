@@ -2,9 +2,11 @@
 module test_harness
   use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
   use kinetostat_kinds, only: wp
+  use kinetostat_posix, only: process_id
+  use kinetostat_text, only: int_str
   implicit none
   private
-  public :: test_counts_t, check_close, check_true, report_counts, operator(.dot.)
+  public :: test_counts_t, check_close, check_true, report_counts, operator(.dot.), scratch_path, long_checks
 
   !> Pass/fail counters.
   type :: test_counts_t
@@ -63,5 +65,31 @@ contains
     type(test_counts_t), intent(in) :: t
     write (*, '(a,i0,a,i0,a)') "fortran: ", t%passed, " passed, ", t%failed, " failed"
   end subroutine report_counts
+
+  !> A scratch file's path of this test process: $TMPDIR (tools/test gives its own temporary
+  !> directory; /tmp when unset) / kinetostat-test-STEM-PID SUFFIX, so that two runs at once
+  !> never write the same file.
+  function scratch_path(stem, suffix) result(path)
+    character(*), intent(in) :: stem   !< what the file is for
+    character(*), intent(in) :: suffix !< its ending, e.g. ".nml"
+    character(len=:), allocatable :: path
+    character(len=4096) :: dir
+    integer :: length, status
+    call get_environment_variable("TMPDIR", dir, length, status)
+    if (status /= 0 .or. length == 0) then
+      dir = "/tmp"
+      length = 4
+    end if
+    path = dir(:length)//"/kinetostat-test-"//stem//"-"//int_str(process_id())//suffix
+  end function scratch_path
+
+  !> Whether the heavy checks run in full: `tools/test --long` exports KINETOSTAT_LONG=1; without
+  !> it a suite runs a fixed sample of the same checks (each kind of check still runs).
+  logical function long_checks()
+    character(len=8) :: value
+    integer :: length, status
+    call get_environment_variable("KINETOSTAT_LONG", value, length, status)
+    long_checks = status == 0 .and. value == "1"
+  end function long_checks
 
 end module test_harness

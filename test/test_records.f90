@@ -17,13 +17,15 @@ module test_records
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_run, only: run_options_t, run_mechanism, format_table, format_json
   use kinetostat_text, only: int_str
-  use test_harness, only: test_counts_t, check_true
+  use test_harness, only: test_counts_t, check_true, long_checks
   implicit none
   private
   public :: run_records_tests
 
   !> Widths the lines are cut at (huge(1): whole lines) besides the one chosen.
   integer, parameter :: widths(*) = [1, 2, 3, 5, 8, 13, 21, 40, 77]
+  !> The widths the bundled decks run at without `tools/test --long` (with it: all of `widths`).
+  integer, parameter :: sample_widths(*) = [1, 5, 21]
 
   !> The bundled decks (every mechanism).
   character(len=*), parameter :: decks(*) = [character(len=36) :: &
@@ -137,13 +139,16 @@ contains
   !> as from whole lines; the same with an override written in.
   subroutine test_random_decks(t)
     type(test_counts_t), intent(inout) :: t
-    integer, parameter :: n_decks = 600
+    !> Random decks: of the default run, and with `tools/test --long` (the first are the same).
+    integer, parameter :: sample_decks = 200, long_decks = 600
+    integer :: n_decks
     character(len=:), allocatable :: text, whole, cut, first_bad
     type(deck_source_t) :: src, patched
     type(override_t) :: over(1)
     integer :: k, w, n_seed, mismatches, errors, cut_decks
     call random_seed(size=n_seed)
     call random_seed(put=[(104729 * k + 7, k=1, n_seed)])
+    n_decks = merge(long_decks, sample_decks, long_checks())
     mismatches = 0
     errors = 0
     cut_decks = 0
@@ -257,16 +262,23 @@ contains
     end function random_deck
   end subroutine test_random_decks
 
-  !> Every bundled deck, its lines cut at several widths, runs to the same output (table and
-  !> JSON) or error as from whole lines; also with an unknown variable and with a value
-  !> that is not a number (the same message, naming the same line and assignment).
+  !> Every bundled deck, its lines cut at several widths (three; all nine with `tools/test
+  !> --long`), runs to the same output (table and JSON) or error as from whole lines; also
+  !> with an unknown variable and with a value that is not a number (the same message, naming
+  !> the same line and assignment).
   subroutine test_bundled_decks(t)
     type(test_counts_t), intent(inout) :: t
     type(deck_source_t) :: source
     type(error_t), allocatable :: error
     character(len=:), allocatable :: text, whole, cut, bad, line
     integer :: d, k, w, f, runs, v
+    integer, allocatable :: cut_widths(:)
     logical :: group_seen
+    if (long_checks()) then
+      allocate (cut_widths, source=widths)
+    else
+      allocate (cut_widths, source=sample_widths)
+    end if
     runs = 0
     bad = ""
     do d = 1, size(decks)
@@ -297,11 +309,11 @@ contains
           whole = run_text(trim(decks(d)), text, huge(1), f)
           if (v > 1 .and. index(whole, "error 2: ") /= 1) bad = bad//" "//trim(decks(d))//" variant "// &
             int_str(v)//" gave no input error: "//whole(1:min(len(whole), 200))
-          do w = 1, size(widths)
-            cut = run_text(trim(decks(d)), text, widths(w), f)
+          do w = 1, size(cut_widths)
+            cut = run_text(trim(decks(d)), text, cut_widths(w), f)
             runs = runs + 1
             if (cut /= whole) bad = bad//" "//trim(decks(d))//" variant "//int_str(v)//" at width "// &
-              int_str(widths(w))//": "//cut(1:min(len(cut), 200))//" instead of "//whole(1:min(len(whole), 200))
+              int_str(cut_widths(w))//": "//cut(1:min(len(cut), 200))//" instead of "//whole(1:min(len(whole), 200))
           end do
         end do
       end do

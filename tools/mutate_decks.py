@@ -45,8 +45,10 @@ checks valid-output and expected-error:
   capacity       one row of docs/cli.md's table of capacities for the deck's group, its
                  "one too many" before the '/': exit 2 "at most N ..."
 
---seed N changes the random choices (tools/test runs the fixed set, then a second run with
-a seed from the date, printed, so that a failure can be reproduced); --scale K draws K times
+--every K runs every K-th deck of the fixed set (by bundled deck, then by class) and every
+deck of the classes of strings and the special runs (tools/test: --every 5; tools/test --long
+the whole set). --seed N changes the random choices (tools/test --long runs the fixed set, then a
+second run with a seed from the date, printed, so that a failure can be reproduced); --scale K draws K times
 as many mutations per deck (--scale 14: about 12 000 decks); --budget S stops starting new
 decks after S seconds (the decks not run are counted as skipped, never as failed).
 
@@ -593,6 +595,9 @@ def main():
                     help="list the input errors of single-variable mutations that do not name the variable")
     ap.add_argument("--seed", type=int, default=None, help="seed of the random choices (default: the fixed %d)" % SEED)
     ap.add_argument("--scale", type=int, default=1, help="draw K times as many mutations per deck (1)")
+    ap.add_argument("--every", type=int, default=1,
+                    help="run every K-th derived deck (in the fixed order: by bundled deck, then by class) "
+                         "and every deck of the classes of strings and the special runs (1: all)")
     ap.add_argument("--budget", type=float, default=0.0,
                     help="seconds after which no new deck is started (0: no limit); decks not run are skipped")
     args = ap.parse_args()
@@ -614,8 +619,10 @@ def main():
         return 1
     binary = os.path.abspath(args.bin)
     deadline = time.time() + args.budget if args.budget > 0 else None
+    every = max(1, args.every)
     jobs = [(binary, name, desc, data, extra, i % OUTFILE_EVERY == 0, deadline, SPECS.get(name))
-            for i, (name, desc, data, extra) in enumerate(decks) if args.only in name]
+            for i, (name, desc, data, extra) in enumerate(decks) if args.only in name
+            and (i % every == 0 or name in SPECS or extra is None)]
     if args.seed is not None:
         # a randomized run under a time budget runs the decks in a random order, so that
         # every class has its chance before the budget ends

@@ -53,8 +53,15 @@
       "deck: PATH   TITLE" only its first word: the deck's title is the user's words).
       Prints every hit.
 
+  svg_check.py batch LIST
+      Each line of the file LIST, "NAME<TAB>CHECK<TAB>ARGUMENT...", is one of the checks
+      above, all in this one process: prints "ok NAME" or "FAIL NAME: its message" a line,
+      and fails when any failed.
+
 Exit status 0 when the check passes, 1 with a message when it fails.
 """
+import contextlib
+import io
 import csv
 import math
 import re
@@ -603,23 +610,54 @@ def check_notation(paths, russian):
         fail(f"{len(hits)} labels not in the course's notation")
 
 
-def main():
-    if len(sys.argv) == 4 and sys.argv[1] == "hodographs":
-        check_hodographs(sys.argv[2], sys.argv[3])
-    elif len(sys.argv) == 4 and sys.argv[1] == "png":
-        check_png(sys.argv[2], sys.argv[3])
-    elif len(sys.argv) >= 4 and sys.argv[1:3] == ["labels", "--lines"]:
-        check_labels(sys.argv[3:], lines=True)
-    elif len(sys.argv) >= 3 and sys.argv[1] == "labels":
-        check_labels(sys.argv[2:])
-    elif len(sys.argv) >= 4 and sys.argv[1] == "notation" and sys.argv[2] in ("en", "ru"):
-        check_notation(sys.argv[3:], sys.argv[2] == "ru")
-    elif len(sys.argv) >= 3 and sys.argv[1] == "english":
-        check_english(sys.argv[2:])
-    elif len(sys.argv) == 3 and sys.argv[1] == "self-contained":
-        check_self_contained(sys.argv[2])
+def check_batch(listing):
+    """The checks of the file `listing`, a line each (NAME, CHECK, ARGUMENT... by tabs)."""
+    failed = 0
+    with open(listing, encoding="utf-8") as f:
+        for line in f:
+            if not line.strip():
+                continue
+            name, *argv = line.rstrip("\n").split("\t")
+            said = io.StringIO()
+            try:
+                with contextlib.redirect_stdout(said):
+                    dispatch(argv)
+                code = 0
+            except SystemExit as e:
+                code = 0 if e.code in (None, 0) else 1
+            if code == 0:
+                print(f"ok {name}")
+            else:
+                failed += 1
+                print(f"FAIL {name}: " + said.getvalue().strip().replace("\n", "\n    "))
+    if failed:
+        fail(f"{failed} checks failed")
+
+
+def dispatch(argv):
+    """One check by its command-line words (without the program's name)."""
+    if len(argv) == 3 and argv[0] == "hodographs":
+        check_hodographs(argv[1], argv[2])
+    elif len(argv) == 3 and argv[0] == "png":
+        check_png(argv[1], argv[2])
+    elif len(argv) >= 3 and argv[0:2] == ["labels", "--lines"]:
+        check_labels(argv[2:], lines=True)
+    elif len(argv) >= 2 and argv[0] == "labels":
+        check_labels(argv[1:])
+    elif len(argv) >= 3 and argv[0] == "notation" and argv[1] in ("en", "ru"):
+        check_notation(argv[2:], argv[1] == "ru")
+    elif len(argv) >= 2 and argv[0] == "english":
+        check_english(argv[1:])
+    elif len(argv) == 2 and argv[0] == "self-contained":
+        check_self_contained(argv[1])
+    elif len(argv) == 2 and argv[0] == "batch":
+        check_batch(argv[1])
     else:
         fail(__doc__)
+
+
+def main():
+    dispatch(sys.argv[1:])
 
 
 if __name__ == "__main__":

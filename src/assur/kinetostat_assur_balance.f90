@@ -20,7 +20,7 @@ module kinetostat_assur_balance
   use kinetostat_error, only: error_t, fatal_error, exit_usage, exit_geometry
   use kinetostat_text, only: int_str
   use kinetostat_format, only: full_number, short_number
-  use kinetostat_labels, only: lang_ru, unit_symbol
+  use kinetostat_labels, only: lang_ru, unit_symbol, balance_words => in_language
   use kinetostat_override, only: override_t
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_assur_kinematics, only: link_state_t, dyad_pose_t, kind_rrr, kind_rrp
@@ -151,18 +151,6 @@ contains
     if (size(overrides) == 0) call report%put(balance_words("no counterweight needed: the deck is balanced already", &
       "противовесы не нужны: механизм уже уравновешен", lang))
   end subroutine assur_balance
-
-  !> `english` or, with lang_ru, `russian`: the report's two wordings side by side.
-  pure function balance_words(english, russian, lang) result(text)
-    character(*), intent(in) :: english, russian
-    integer, intent(in) :: lang
-    character(len=:), allocatable :: text
-    if (lang == lang_ru) then
-      text = russian
-    else
-      text = english
-    end if
-  end function balance_words
 
   !> Full static balance: the first moments of the links pivoted on the frame.
   pure subroutine full_balance(deck, lang, w_new, carries, report, error)

@@ -5,7 +5,7 @@ module kinetostat_text
   implicit none
   private
   public :: real_str, int_str, int64_str, number_str, lower, upper, printable, utf8_length, char_count, counted, &
-    clipped, starts_with, is_name, without_blanks
+    clipped, starts_with, is_name, without_blanks, replace_all
 
   !> Format of a real in a message: shortest general form with 10 significant digits.
   character(*), parameter :: real_msg_fmt = '(g0.10)'
@@ -280,5 +280,18 @@ contains
       if (c >= iachar(first) .and. c <= iachar(last)) t(i:i) = achar(c + offset)
     end do
   end function shift_letters
+
+  !> `text` with every `old` replaced by `new`.
+  pure recursive function replace_all(text, old, new) result(out)
+    character(*), intent(in) :: text, old, new
+    character(len=:), allocatable :: out
+    integer :: i
+    i = index(text, old)
+    if (i == 0) then
+      out = text
+    else
+      out = text(:i - 1)//new//replace_all(text(i + len(old):), old, new)
+    end if
+  end function replace_all
 
 end module kinetostat_text

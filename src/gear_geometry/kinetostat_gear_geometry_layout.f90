@@ -283,39 +283,19 @@ contains
     logical, intent(in) :: broken
     integer, intent(in) :: lang
     character(len=:), allocatable :: text
+    !> The three flags (undercut, pointed teeth, interference) in English (column 1) and
+    !> Russian (column 2), then the answers broken and kept.
+    character(*), parameter :: words(3, 2) = reshape([character(len=60) :: &
+      "UNDERCUT OF GEAR", "POINTED TEETH OF GEAR", "INTERFERENCE ON GEAR", &
+      "ПОДРЕЗАНИЕ ЗУБЬЕВ КОЛЕСА", "ЗАОСТРЕНИЕ ЗУБЬЕВ КОЛЕСА", &
+      "ИНТЕРФЕРЕНЦИЯ ЗУБЬЕВ КОЛЕСА"], [3, 2])
+    character(*), parameter :: answers(2, 2) = reshape([character(len=10) :: &
+      ": YES", ": NO", ": ЕСТЬ", ": НЕТ"], [2, 2])
     character(len=1) :: n
-    integer :: which
+    integer :: l
     n = achar(iachar("1") + mod(c - first_flag, 2))
-    which = (c - first_flag) / 2
-    if (lang == lang_ru) then
-      select case (which)
-      case (0)
-        text = "ПОДРЕЗАНИЕ ЗУБЬЕВ КОЛЕСА "//n
-      case (1)
-        text = "ЗАОСТРЕНИЕ ЗУБЬЕВ КОЛЕСА "//n
-      case default
-        text = "ИНТЕРФЕРЕНЦИЯ ЗУБЬЕВ КОЛЕСА "//n
-      end select
-      if (broken) then
-        text = text//": ЕСТЬ"
-      else
-        text = text//": НЕТ"
-      end if
-    else
-      select case (which)
-      case (0)
-        text = "UNDERCUT OF GEAR "//n
-      case (1)
-        text = "POINTED TEETH OF GEAR "//n
-      case default
-        text = "INTERFERENCE ON GEAR "//n
-      end select
-      if (broken) then
-        text = text//": YES"
-      else
-        text = text//": NO"
-      end if
-    end if
+    l = merge(2, 1, lang == lang_ru)
+    text = trim(words(min((c - first_flag) / 2, 2) + 1, l))//" "//n//trim(answers(merge(1, 2, broken), l))
   end function flag_word
 
   !> The matching analysis deck: a `&gears` spur stage of this pair (working pitch diameter

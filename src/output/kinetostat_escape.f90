@@ -24,33 +24,7 @@ contains
     !> Any bytes.
     character(*), intent(in) :: s
     character(len=:), allocatable :: text
-    integer :: i, c, n, at
-    allocate (character(len=6 * len(s) + 2) :: text)
-    text(1:1) = '"'
-    at = 1
-    i = 1
-    do while (i <= len(s))
-      c = iachar(s(i:i))
-      n = utf8_length(s, i)
-      if (s(i:i) == '"' .or. s(i:i) == '\') then
-        call put(text, at, '\'//s(i:i))
-      else if (c == 10) then
-        call put(text, at, "\n")
-      else if (c == 13) then
-        call put(text, at, "\r")
-      else if (c == 9) then
-        call put(text, at, "\t")
-      else if (c < 32 .or. c == 127 .or. n == 0) then
-        call put(text, at, "\u00"//hex_byte(c))
-      else
-        call put(text, at, s(i:i + n - 1))
-        i = i + n
-        cycle
-      end if
-      i = i + 1
-    end do
-    call put(text, at, '"')
-    text = text(1:at)
+    text = quoted_literal(s, '"', "\u00")
   end function json_string
 
   !> A Python string literal in single quotes, as the header of an npy file holds a field's
@@ -61,15 +35,30 @@ contains
     !> Any bytes.
     character(*), intent(in) :: s
     character(len=:), allocatable :: text
+    text = quoted_literal(s, "'", "\x")
+  end function python_string
+
+  !> A string literal between `quote`s as JSON and Python write one: the quote and `\` escaped,
+  !> newline, carriage return and tab as \n, \r, \t, any other control character and any byte
+  !> that is not part of valid UTF-8 as `byte_escape` and the byte's two hex digits; valid UTF-8
+  !> kept.
+  pure function quoted_literal(s, quote, byte_escape) result(text)
+    !> Any bytes.
+    character(*), intent(in) :: s
+    !> The quote character.
+    character, intent(in) :: quote
+    !> What stands before a byte's hex digits: "\u00" (JSON) or "\x" (Python).
+    character(*), intent(in) :: byte_escape
+    character(len=:), allocatable :: text
     integer :: i, c, n, at
-    allocate (character(len=4 * len(s) + 2) :: text)
-    text(1:1) = "'"
+    allocate (character(len=(len(byte_escape) + 2) * len(s) + 2) :: text)
+    text(1:1) = quote
     at = 1
     i = 1
     do while (i <= len(s))
       c = iachar(s(i:i))
       n = utf8_length(s, i)
-      if (s(i:i) == "'" .or. s(i:i) == '\') then
+      if (s(i:i) == quote .or. s(i:i) == '\') then
         call put(text, at, '\'//s(i:i))
       else if (c == 10) then
         call put(text, at, "\n")
@@ -78,7 +67,7 @@ contains
       else if (c == 9) then
         call put(text, at, "\t")
       else if (c < 32 .or. c == 127 .or. n == 0) then
-        call put(text, at, "\x"//hex_byte(c))
+        call put(text, at, byte_escape//hex_byte(c))
       else
         call put(text, at, s(i:i + n - 1))
         i = i + n
@@ -86,9 +75,9 @@ contains
       end if
       i = i + 1
     end do
-    call put(text, at, "'")
+    call put(text, at, quote)
     text = text(1:at)
-  end function python_string
+  end function quoted_literal
 
   !> Text for an XML (SVG) text node or attribute value: shown as messages show it (a control
   !> character or a byte that is not valid UTF-8 as the visible \n, \t, \xNN), then the five

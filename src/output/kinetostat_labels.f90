@@ -3,10 +3,10 @@
 !> (ИСХОДНЫЕ ДАННЫЕ, РЕЗУЛЬТАТЫ РАСЧЕТА, ...). Mechanism-specific headings live in each
 !> mechanism's layout module.
 module kinetostat_labels
-  use kinetostat_text, only: starts_with
+  use kinetostat_text, only: starts_with, replace_all
   implicit none
   private
-  public :: lang_en, lang_ru, lang_names, lang_from_name, label, phrase, echo_name, unit_symbol
+  public :: lang_en, lang_ru, lang_names, lang_from_name, label, phrase, echo_name, unit_symbol, in_language
 
   !> Language: English (default).
   integer, parameter :: lang_en = 1
@@ -398,7 +398,7 @@ contains
     character(len=:), allocatable :: text
     text = unit
     if (lang /= lang_ru) return
-    text = swap(swap(label(unit, lang), "*", "·"), "^2", "²")
+    text = replace_all(replace_all(label(unit, lang), "*", "·"), "^2", "²")
   end function unit_symbol
 
   !> A phrase of the legacy table in language `lang`: a shared label; a unit with a note
@@ -439,27 +439,27 @@ contains
     if (lang /= lang_ru) return
     if (index(english, "STAGE ") == 1 .or. index(adjustl(english), "DYAD ") == 1 .or. &
       (index(english, "FORCE ") == 1 .or. index(english, "MOMENT ") == 1) .and. index(english, " LINK") > 0) then
-      text = swap(text, "STAGE ", "СТУПЕНЬ ")
-      text = swap(text, ": SPUR", ": ПРЯМОЗУБАЯ")
-      text = swap(text, ": HELICAL", ": КОСОЗУБАЯ")
-      text = swap(text, ": BEVEL", ": КОНИЧЕСКАЯ")
-      text = swap(text, ": PLANETARY", ": ПЛАНЕТАРНАЯ")
-      text = swap(text, "DYAD ", "ДИАДА ")
-      text = swap(text, " ON LINKS ", " НА ЗВЕНЬЯХ ")
-      text = swap(text, " LINKS ", " ЗВЕНЬЯ ")
-      text = swap(text, " AND ", " И ")
-      text = swap(text, ", MODE ", ", СБОРКА ")
-      text = swap(text, "FORCE ", "СИЛА ")
-      text = swap(text, "MOMENT ", "МОМЕНТ ")
-      text = swap(text, " LINK", " ЗВЕНО")
+      text = replace_all(text, "STAGE ", "СТУПЕНЬ ")
+      text = replace_all(text, ": SPUR", ": ПРЯМОЗУБАЯ")
+      text = replace_all(text, ": HELICAL", ": КОСОЗУБАЯ")
+      text = replace_all(text, ": BEVEL", ": КОНИЧЕСКАЯ")
+      text = replace_all(text, ": PLANETARY", ": ПЛАНЕТАРНАЯ")
+      text = replace_all(text, "DYAD ", "ДИАДА ")
+      text = replace_all(text, " ON LINKS ", " НА ЗВЕНЬЯХ ")
+      text = replace_all(text, " LINKS ", " ЗВЕНЬЯ ")
+      text = replace_all(text, " AND ", " И ")
+      text = replace_all(text, ", MODE ", ", СБОРКА ")
+      text = replace_all(text, "FORCE ", "СИЛА ")
+      text = replace_all(text, "MOMENT ", "МОМЕНТ ")
+      text = replace_all(text, " LINK", " ЗВЕНО")
     else if (is_linkage_echo(adjustl(english))) then
       text = linkage_echo_ru(english)
     else if (index(english, "M") == 1 .and. (index(english, " POWER") > 0 .or. index(english, " HOUSING") > 0 .or. &
       index(english, " BALANCE") > 0)) then
       ! a gear stage's torques: from the power balance, on the housing, from the torque balance
-      text = swap(text, " POWER", " МОЩН.")
-      text = swap(text, " HOUSING", " КОРПУСА")
-      text = swap(text, " BALANCE", " БАЛАНС")
+      text = replace_all(text, " POWER", " МОЩН.")
+      text = replace_all(text, " HOUSING", " КОРПУСА")
+      text = replace_all(text, " BALANCE", " БАЛАНС")
     end if
   end function echo_name
 
@@ -484,44 +484,44 @@ contains
     character(*), intent(in) :: english
     character(len=:), allocatable :: text
     text = english
-    text = swap(text, "STRUCTURAL ANALYSIS", "СТРУКТУРНЫЙ АНАЛИЗ")
-    text = swap(text, "MOVING LINKS n", "ПОДВИЖНЫХ ЗВЕНЬЕВ n")
-    text = swap(text, "LOWER PAIRS p5", "НИЗШИХ ПАР p5")
-    text = swap(text, "HIGHER PAIRS p4", "ВЫСШИХ ПАР p4")
-    text = swap(text, "NUMBER OF DRIVES", "ЧИСЛО ПРИВОДОВ")
-    text = swap(text, "STRUCTURE FORMULA:", "ФОРМУЛА СТРОЕНИЯ:")
-    text = swap(text, "CLASS OF THE MECHANISM:", "КЛАСС МЕХАНИЗМА:")
-    text = swap(text, "INPUT LINK(S) (MECHANISM OF CLASS I)", &
+    text = replace_all(text, "STRUCTURAL ANALYSIS", "СТРУКТУРНЫЙ АНАЛИЗ")
+    text = replace_all(text, "MOVING LINKS n", "ПОДВИЖНЫХ ЗВЕНЬЕВ n")
+    text = replace_all(text, "LOWER PAIRS p5", "НИЗШИХ ПАР p5")
+    text = replace_all(text, "HIGHER PAIRS p4", "ВЫСШИХ ПАР p4")
+    text = replace_all(text, "NUMBER OF DRIVES", "ЧИСЛО ПРИВОДОВ")
+    text = replace_all(text, "STRUCTURE FORMULA:", "ФОРМУЛА СТРОЕНИЯ:")
+    text = replace_all(text, "CLASS OF THE MECHANISM:", "КЛАСС МЕХАНИЗМА:")
+    text = replace_all(text, "INPUT LINK(S) (MECHANISM OF CLASS I)", &
       "ВХОДНОЕ ЗВЕНО (МЕХАНИЗМ I КЛАССА)")
-    text = swap(text, "DYAD (GROUP OF CLASS II, ORDER 2), KIND", &
+    text = replace_all(text, "DYAD (GROUP OF CLASS II, ORDER 2), KIND", &
       "ДИАДА (ГРУППА II КЛАССА 2-ГО ПОРЯДКА), ВИД")
-    text = swap(text, "GROUP OF CLASS III, ORDER 3", &
+    text = replace_all(text, "GROUP OF CLASS III, ORDER 3", &
       "ГРУППА III КЛАССА 3-ГО ПОРЯДКА")
-    text = swap(text, "GROUP OF CLASS III, ORDER 4", &
+    text = replace_all(text, "GROUP OF CLASS III, ORDER 4", &
       "ГРУППА III КЛАССА 4-ГО ПОРЯДКА")
-    text = swap(text, "(TWO TERNARY BASE LINKS AND FOUR BINARY LINKS)", &
+    text = replace_all(text, "(TWO TERNARY BASE LINKS AND FOUR BINARY LINKS)", &
       "(ДВА БАЗОВЫХ ЗВЕНА С ТРЕМЯ ПАРАМИ)")
-    text = swap(text, "(A TERNARY BASE LINK AND THREE BINARY LINKS)", &
+    text = replace_all(text, "(A TERNARY BASE LINK AND THREE BINARY LINKS)", &
       "(БАЗОВОЕ ЗВЕНО С ТРЕМЯ ПАРАМИ)")
-    text = swap(text, "GROUP OF CLASS IV, ORDER 2", &
+    text = replace_all(text, "GROUP OF CLASS IV, ORDER 2", &
       "ГРУППА IV КЛАССА 2-ГО ПОРЯДКА")
-    text = swap(text, "(A CLOSED FOUR-LINK CONTOUR)", &
+    text = replace_all(text, "(A CLOSED FOUR-LINK CONTOUR)", &
       "(ЗАМКНУТЫЙ ЧЕТЫРЕХЗВЕННЫЙ КОНТУР)")
-    text = swap(text, "(CLASS NOT DETERMINED)", "(КЛАСС НЕ ОПРЕДЕЛЕН)")
-    text = swap(text, "GROUP OF ", "ГРУППА ИЗ ")
-    text = swap(text, ", FOLLOWS THE LINK", ", ПОВОРАЧИВАЕТСЯ СО ЗВЕНОМ")
-    text = swap(text, ", GUIDE ON ", ", НАПРАВЛЯЮЩАЯ НА ЗВЕНЕ ")
-    text = swap(text, ", INPUT ", ", ВХОД ")
-    text = swap(text, ", EFFORT ", ", УСИЛИЕ ")
-    text = swap(text, "DRIVE ", "ПРИВОД ")
-    text = swap(text, "PAIR ", "ПАРА ")
-    text = swap(text, "FORCE ", "СИЛА ")
-    text = swap(text, "MOMENT ", "МОМЕНТ ")
-    text = swap(text, " LINKS (", " ЗВЕНЬЕВ (")
-    text = swap(text, " LINKS ", " ЗВЕНЬЯ ")
-    text = swap(text, " LINKS", " ЗВЕНЬЕВ")
-    text = swap(text, " AND ", " И ")
-    text = swap(text, "LINK ", "ЗВЕНО ")
+    text = replace_all(text, "(CLASS NOT DETERMINED)", "(КЛАСС НЕ ОПРЕДЕЛЕН)")
+    text = replace_all(text, "GROUP OF ", "ГРУППА ИЗ ")
+    text = replace_all(text, ", FOLLOWS THE LINK", ", ПОВОРАЧИВАЕТСЯ СО ЗВЕНОМ")
+    text = replace_all(text, ", GUIDE ON ", ", НАПРАВЛЯЮЩАЯ НА ЗВЕНЕ ")
+    text = replace_all(text, ", INPUT ", ", ВХОД ")
+    text = replace_all(text, ", EFFORT ", ", УСИЛИЕ ")
+    text = replace_all(text, "DRIVE ", "ПРИВОД ")
+    text = replace_all(text, "PAIR ", "ПАРА ")
+    text = replace_all(text, "FORCE ", "СИЛА ")
+    text = replace_all(text, "MOMENT ", "МОМЕНТ ")
+    text = replace_all(text, " LINKS (", " ЗВЕНЬЕВ (")
+    text = replace_all(text, " LINKS ", " ЗВЕНЬЯ ")
+    text = replace_all(text, " LINKS", " ЗВЕНЬЕВ")
+    text = replace_all(text, " AND ", " И ")
+    text = replace_all(text, "LINK ", "ЗВЕНО ")
   end function linkage_echo_ru
 
   !> A note in parentheses after a unit or a value, in Russian (unknown notes unchanged).
@@ -554,17 +554,17 @@ contains
     end select
   end function note
 
-  !> `text` with every `old` replaced by `new`.
-  pure recursive function swap(text, old, new) result(out)
-    character(*), intent(in) :: text, old, new
-    character(len=:), allocatable :: out
-    integer :: i
-    i = index(text, old)
-    if (i == 0) then
-      out = text
+  !> `english` or, with lang_ru, `russian`: a text given in both wordings side by side.
+  pure function in_language(english, russian, lang) result(text)
+    character(*), intent(in) :: english, russian
+    !> lang_en or lang_ru.
+    integer, intent(in) :: lang
+    character(len=:), allocatable :: text
+    if (lang == lang_ru) then
+      text = russian
     else
-      out = text(:i - 1)//new//swap(text(i + len(old):), old, new)
+      text = english
     end if
-  end function swap
+  end function in_language
 
 end module kinetostat_labels

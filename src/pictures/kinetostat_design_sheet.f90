@@ -10,7 +10,7 @@ module kinetostat_design_sheet
   use kinetostat_kinds, only: wp, pi, version_string
   use kinetostat_format, only: fixed_number
   use kinetostat_step_table, only: step_table_t
-  use kinetostat_labels, only: lang_ru, word => label
+  use kinetostat_labels, only: word => label, words => in_language
   use kinetostat_typeset, only: typeset, runs_extent
   use kinetostat_sheet, only: sheet_t, paper_t, layer_text, anchor_start, anchor_middle, anchor_end
   use kinetostat_title_block, only: put_sheet_format, title_block_from_table
@@ -34,18 +34,6 @@ module kinetostat_design_sheet
   end type chart_t
 
 contains
-
-  !> The English or the Russian words, by the sheet's language.
-  pure function words(english, russian, lang) result(text)
-    character(*), intent(in) :: english, russian
-    integer, intent(in) :: lang
-    character(len=:), allocatable :: text
-    if (lang == lang_ru) then
-      text = russian
-    else
-      text = english
-    end if
-  end function words
 
   !> Open `sheet` on `paper` with the frame, the title block (the drawing's name, its scale,
   !> the student's fields of the run) and the header: `heading` (typeset), the deck and its

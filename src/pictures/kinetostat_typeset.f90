@@ -32,6 +32,9 @@
 module kinetostat_typeset
   use kinetostat_kinds, only: wp
   use kinetostat_labels, only: lang_ru
+  use kinetostat_text, only: replace_all
+  ! the number of UTF-8 characters of a text (continuation bytes not counted)
+  use kinetostat_label_place, only: char_count => text_chars
   implicit none
   private
   public :: text_run_t, run_base, run_sub, run_sup, typeset, plain_runs, runs_text, plain_text, runs_extent, &
@@ -186,29 +189,18 @@ contains
     end do
   end subroutine runs_extent
 
-  !> Number of UTF-8 characters of `text` (continuation bytes not counted).
-  pure integer function char_count(text)
-    !> Text, UTF-8.
-    character(*), intent(in) :: text
-    integer :: i
-    char_count = 0
-    do i = 1, len(text)
-      if (iand(iachar(text(i:i)), 192) /= 128) char_count = char_count + 1
-    end do
-  end function char_count
-
   !> `text` with the units written typographically: N*m -> N·m, kg*m^2 -> kg·m², s^2 -> s²
   !> (also the Russian symbols, Н*м -> Н·м).
   pure function unit_text(text) result(out)
     !> Any text.
     character(*), intent(in) :: text
     character(len=:), allocatable :: out
-    out = swap(text, "*m^2", "·m²")
-    out = swap(out, "*м^2", "·м²")
-    out = swap(out, "N*m", "N·m")
-    out = swap(out, "Н*м", "Н·м")
-    out = swap(out, "s^2", "s²")
-    out = swap(out, "с^2", "с²")
+    out = replace_all(text, "*m^2", "·m²")
+    out = replace_all(out, "*м^2", "·м²")
+    out = replace_all(out, "N*m", "N·m")
+    out = replace_all(out, "Н*м", "Н·м")
+    out = replace_all(out, "s^2", "s²")
+    out = replace_all(out, "с^2", "с²")
   end function unit_text
 
   !> The runs of token `t` when it is a symbol (ok); ok false otherwise.
@@ -504,18 +496,5 @@ contains
       call push(runs, more(i)%text, more(i)%shift)
     end do
   end subroutine push_all
-
-  !> `text` with every `old` replaced by `new`.
-  pure recursive function swap(text, old, new) result(out)
-    character(*), intent(in) :: text, old, new
-    character(len=:), allocatable :: out
-    integer :: i
-    i = index(text, old)
-    if (i == 0) then
-      out = text
-    else
-      out = text(:i - 1)//new//swap(text(i + len(old):), old, new)
-    end if
-  end function swap
 
 end module kinetostat_typeset

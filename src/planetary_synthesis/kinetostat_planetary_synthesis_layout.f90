@@ -97,9 +97,13 @@ contains
     integer, intent(in) :: first, last
     type(text_buffer_t), intent(inout) :: out
     type(text_buffer_t), intent(inout) :: later
+    !> The conditions' names in English (column 1) and Russian (column 2).
+    character(*), parameter :: names(5, 2) = reshape([character(len=20) :: &
+      "COAXIALITY", "ASSEMBLY", "NEIGHBOURS", "LEAST TEETH", "RATIO", &
+      "СООСНОСТЬ", "СБОРКА", "СОСЕДСТВО", "ЗУБЬЯ", "ОТНОШЕНИЕ"], [5, 2])
     type(planetary_train_t) :: t
-    integer :: z1, z2, z3, k
-    character(len=:), allocatable :: met
+    integer :: z1, z2, z3, k, l
+    character(len=:), allocatable :: met, whole
     if (first > 1 .or. last < 1) return
     associate (v => table%rows(:, 1))
       z1 = nint(v(1))
@@ -114,31 +118,25 @@ contains
       call out%put(value_line("U_DEVIATION", v(6), ""))
     end associate
     t = train_conditions(self%deck%spec, z1, z2, z3)
-    if (lang == lang_ru) then
+    l = merge(2, 1, lang == lang_ru)
+    if (l == 2) then
       call put_heading(out, "УСЛОВИЯ ПОДБОРА ЧИСЕЛ ЗУБЬЕВ")
       met = "ВЫПОЛНЕНО"
-      call out%put(condition("СООСНОСТЬ", "Z3 = Z1 + 2*Z2: "//int_str(z3)//" = "//int_str(z1)//" + "//int_str(2 * z2), &
-        t%met(1), met))
-      call out%put(condition("СБОРКА", "(Z1 + Z3)/K = "//int_str(z1 + z3)//"/"//int_str(k)//" = "// &
-        short_number(t%assembly_number)//" - ЦЕЛОЕ", t%met(2), met))
-      call out%put(condition("СОСЕДСТВО", neighbour_text("sin"), t%met(3), met))
-      call out%put(condition("ЗУБЬЯ", "Z1 = "//int_str(z1)//", Z2 = "//int_str(z2)//" >= "// &
-        int_str(self%deck%spec%z_min)//"; Z3 = "//int_str(z3)//" >= "//int_str(self%deck%spec%z_ring_min), &
-        t%met(4) .and. t%met(5), met))
-      call out%put(condition("ОТНОШЕНИЕ", ratio_text(), t%met(6), met))
+      whole = " - ЦЕЛОЕ"
     else
       call put_heading(out, "CONDITIONS OF THE TRAIN")
       met = "MET"
-      call out%put(condition("COAXIALITY", "Z3 = Z1 + 2*Z2: "//int_str(z3)//" = "//int_str(z1)//" + "//int_str(2 * z2), &
-        t%met(1), met))
-      call out%put(condition("ASSEMBLY", "(Z1 + Z3)/K = "//int_str(z1 + z3)//"/"//int_str(k)//" = "// &
-        short_number(t%assembly_number)//", A WHOLE NUMBER", t%met(2), met))
-      call out%put(condition("NEIGHBOURS", neighbour_text("sin"), t%met(3), met))
-      call out%put(condition("LEAST TEETH", "Z1 = "//int_str(z1)//", Z2 = "//int_str(z2)//" >= "// &
-        int_str(self%deck%spec%z_min)//"; Z3 = "//int_str(z3)//" >= "//int_str(self%deck%spec%z_ring_min), &
-        t%met(4) .and. t%met(5), met))
-      call out%put(condition("RATIO", ratio_text(), t%met(6), met))
+      whole = ", A WHOLE NUMBER"
     end if
+    call out%put(condition(trim(names(1, l)), "Z3 = Z1 + 2*Z2: "//int_str(z3)//" = "//int_str(z1)//" + "// &
+      int_str(2 * z2), t%met(1), met))
+    call out%put(condition(trim(names(2, l)), "(Z1 + Z3)/K = "//int_str(z1 + z3)//"/"//int_str(k)//" = "// &
+      short_number(t%assembly_number)//whole, t%met(2), met))
+    call out%put(condition(trim(names(3, l)), neighbour_text("sin"), t%met(3), met))
+    call out%put(condition(trim(names(4, l)), "Z1 = "//int_str(z1)//", Z2 = "//int_str(z2)//" >= "// &
+      int_str(self%deck%spec%z_min)//"; Z3 = "//int_str(z3)//" >= "//int_str(self%deck%spec%z_ring_min), &
+      t%met(4) .and. t%met(5), met))
+    call out%put(condition(trim(names(5, l)), ratio_text(), t%met(6), met))
   contains
     pure function count_line(name, n) result(line)
       character(*), intent(in) :: name

@@ -75,7 +75,8 @@ $(numdiff -s ' \t\n,=()' -r "$golden_rtol" -a "$golden_atol" "$expected" "$actua
 }
 
 # expect_differ NAME EXPECTED ACTUAL: the comparison must report a difference (it can fail):
-# `kinetostat diff` exits 1 on outputs of the program, and numdiff differs too.
+# `kinetostat diff` exits 1 on outputs of the program, and numdiff exits 1 too (its verdict
+# "differ"; 255 is numdiff's own failure, not a difference).
 expect_differ() {
   local name="$1" expected="$2" actual="$3" drc
   if is_output "$expected"; then
@@ -85,10 +86,14 @@ expect_differ() {
       return
     fi
   fi
-  if numdiff -q -s ' \t\n,=()' -r "$golden_rtol" -a "$golden_atol" "$expected" "$actual" >/dev/null 2>&1; then
+  numdiff -q -s ' \t\n,=()' -r "$golden_rtol" -a "$golden_atol" "$expected" "$actual" >"$cli_tmp/numdiff.out" 2>&1
+  drc=$?
+  if [ "$drc" -eq 1 ]; then
+    pass
+  elif [ "$drc" -eq 0 ]; then
     fail "$name" "numdiff accepted a perturbed file: the golden comparison cannot fail"
   else
-    pass
+    fail "$name" "numdiff failed (exit $drc): $(head -3 "$cli_tmp/numdiff.out")"
   fi
 }
 

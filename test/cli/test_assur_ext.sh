@@ -264,7 +264,9 @@ ok = cols["F21_along"].get("frame") == "link" and cols["F21_along"].get("link") 
 sys.exit(0 if ok else 1)
 PY
 run_ks "$sc" --format json
-grep -q '_along' "$out" && fail frame-default-json "link-axes columns without --frame link" || pass
+if [ "$rc" -ne 0 ] || ! grep -q '"columns"' "$out"; then fail frame-default-json "rc=$rc: $(head -c 300 "$err")"
+elif grep -q '_along' "$out"; then fail frame-default-json "link-axes columns without --frame link"
+else pass; fi
 # other mechanisms: exit 1 naming the option; a bad value: exit 1
 expect_exit frame-link-not-assur 1 data/pr3207.nml --frame link
 grep -q '^kinetostat: error: --frame link: only the generic engine (&assur)' "$err" && pass ||

@@ -40,4 +40,6 @@ assert cols["F21_x"]["frame_angle"] == 0
 assert all(len(r) == len(d["columns"]) for r in d["rows"])
 PY
 run_ks data/sixbar.nml --format json
-if grep -q '"kinematic"' "$out"; then fail kinematics-json-default "default JSON lists kinematics columns"; else pass; fi
+if [ "$rc" -ne 0 ] || ! grep -q '"columns"' "$out"; then fail kinematics-json-default "rc=$rc: $(head -c 300 "$err")"
+elif grep -q '"kinematic"' "$out"; then fail kinematics-json-default "default JSON lists kinematics columns"
+else pass; fi

@@ -7,7 +7,9 @@
 # markup; on a Russian sheet no Latin word). The plans sheets (--format plans --at K, first,
 # middle, last step) the same. No English word on a
 # --lang ru sheet or in a --lang ru table (tools/svg_check.py english: a word list). Every
-# check can fail.
+# check can fail. The default suite draws the four steps in both languages for PR 3207 and the
+# six-bar and, for the other linkage decks, the first step in English and the middle one in
+# Russian; tools/test --long every step in both.
 svg_check="$root/tools/svg_check.py"
 legible_dir="$cli_tmp/legible"
 mkdir -p "$legible_dir"
@@ -28,6 +30,9 @@ for deck in data/*.nml; do
       middle=$(((steps + 1) / 2))
       for k in $(printf '%s\n' 1 2 "$middle" "$steps" | awk '$1 >= 1' | sort -un); do
         [ "$k" -gt "$steps" ] && continue
+        if [ "${KINETOSTAT_LONG:-0}" != 1 ] && [ "$name" != pr3207 ] && [ "$name" != sixbar ]; then
+          case "$lang:$k" in en:1 | "ru:$middle") ;; *) continue ;; esac
+        fi
         run_ks "$deck" --format svg --at "$k" --lang "$lang"
         if [ "$rc" -ne 0 ]; then fail "legible-at-runs-$name-$k-$lang" "rc=$rc: $(head -c 300 "$err")"; continue; fi
         cp "$out" "$legible_dir/$name.at$k.$lang.svg"; model_sheets+=("$legible_dir/$name.at$k.$lang.svg")
@@ -62,8 +67,9 @@ python3 "$svg_check" english "${ru_sheets[@]}" >"$cli_tmp/check.out" 2>&1 \
 sheet="$legible_dir/pr3207.at1.en.svg"
 first_text=$(grep -m1 -o '<text x="[^"]*" y="[^"]*" class="label"[^>]*>[^<]*</text>' "$sheet")
 sed "s|</svg>|$first_text</svg>|" "$sheet" >"$cli_tmp/overlap.svg"
-python3 "$svg_check" labels "$cli_tmp/overlap.svg" >/dev/null 2>&1 \
-  && fail legible-labels-can-fail "a label written twice at one place was accepted" || pass
+python3 "$svg_check" labels "$cli_tmp/overlap.svg" >"$cli_tmp/check.out" 2>&1
+grep -q "overlaps" "$cli_tmp/check.out" && pass \
+  || fail legible-labels-can-fail "a label written twice at one place was not reported: $(head -3 "$cli_tmp/check.out")"
 # ... and the line check: a label written on the middle of the sheet's first drawn line
 read -r x1 y1 x2 y2 < <(grep -m1 -o '<line x1="[^"]*" y1="[^"]*" x2="[^"]*" y2="[^"]*" class="link\|<line x1="[^"]*" y1="[^"]*" x2="[^"]*" y2="[^"]*"' \
   "$legible_dir/sixbar.at1.en.svg" | grep -o '"[-0-9.]*"' | tr -d '"' | tr '\n' ' ')
@@ -84,9 +90,11 @@ grep -q "Latin 'MPhi3'" "$cli_tmp/check.out" && pass || fail legible-notation-ru
 sed 's|>реакция<|>pair force<|' "$legible_dir/pr3207.at1.ru.svg" >"$cli_tmp/english.svg"
 if cmp -s "$cli_tmp/english.svg" "$legible_dir/pr3207.at1.ru.svg"; then
   fail legible-russian-can-fail "the perturbation did not change the sheet"
-elif python3 "$svg_check" english "$cli_tmp/english.svg" >/dev/null 2>&1; then
-  fail legible-russian-can-fail "an English word on a Russian sheet was accepted"
-else pass; fi
+else
+  python3 "$svg_check" english "$cli_tmp/english.svg" >"$cli_tmp/check.out" 2>&1
+  grep -qE "english\.svg:[0-9]+: '(pair|force)' in" "$cli_tmp/check.out" && pass \
+    || fail legible-russian-can-fail "an English word on a Russian sheet was not reported: $(head -3 "$cli_tmp/check.out")"
+fi
 # a Russian sheet's units and symbols: Н, Н·м, град; Φ and M_и typeset
 grep -q ' Н под углом [0-9.]* град<' "$legible_dir/pr3207.at1.ru.svg" && grep -q 'Н·м<' "$legible_dir/pr3207.at1.ru.svg" \
   && grep -q '>Φ<tspan dy="[0-9.]*" font-size="[0-9.]*">3</tspan>' "$legible_dir/pr3207.at2.ru.svg" \

@@ -1,6 +1,7 @@
 # Streaming: a run is solved and written in blocks of rows, and text beyond
 # the spool's memory bound (4 MiB) goes to a temporary file that becomes the output only when
-# the run succeeded. Checked on runs big enough to spill (2*10^5 steps, ~50 MB of CSV): -o and
+# the run succeeded. Checked on runs big enough to spill (4*10^4 steps, ~10 MB of CSV and 6 MB
+# of table; 2*10^5 steps, ~50 MB of CSV, with tools/test --long): -o and
 # stdout give the same bytes, nothing is left in $TMPDIR or beside the target, and a run that
 # fails at its last step (after the spool took most of the text) leaves no output file and
 # writes nothing to stdout. The byte-for-byte equality of blocked and whole runs for every
@@ -8,7 +9,9 @@
 
 stream_tmp="$cli_tmp/stream"
 mkdir -p "$stream_tmp/tmpdir" "$stream_tmp/out"
-sed 's/dphi = 30 /dphi = 0.0018, n = 200000 /' data/pr3207.nml > "$stream_tmp/big.nml"
+stream_n=40000 stream_dphi=0.009
+[ "${KINETOSTAT_LONG:-0}" = 1 ] && stream_n=200000 stream_dphi=0.0018
+sed "s/dphi = 30 /dphi = $stream_dphi, n = $stream_n /" data/pr3207.nml > "$stream_tmp/big.nml"
 for format in csv table json; do
   TMPDIR="$stream_tmp/tmpdir" "$KINETOSTAT" "$stream_tmp/big.nml" --format $format \
     -o "$stream_tmp/out/big.$format" 2>"$stream_tmp/err"; rc1=$?
@@ -27,8 +30,8 @@ for format in csv table json; do
     pass
   fi
 done
-# a run failing at its last step: f5c overflows there (exit 3), after ~50 MB of rows
-sed 's/dphi = 30 /dphi = 0.0018, n = 200000 /; s/f5c_work = 3000, f5c_idle = 0/f5c = 199999*0, 1e308/; /phi_cut_start/d' \
+# a run failing at its last step: f5c overflows there (exit 3), after ~10 MB (--long: ~50 MB) of rows
+sed "s/dphi = 30 /dphi = $stream_dphi, n = $stream_n /; s/f5c_work = 3000, f5c_idle = 0/f5c = $((stream_n - 1))*0, 1e308/; /phi_cut_start/d" \
   data/pr3207.nml > "$stream_tmp/late.nml"
 for format in csv table; do
   rm -f "$stream_tmp/out/late.$format"
@@ -38,8 +41,8 @@ for format in csv table; do
     >"$stream_tmp/late.stdout2" 2>"$stream_tmp/late.err2"; rc2=$?
   if [ "$rc1" -ne 3 ] || [ "$rc2" -ne 3 ]; then
     fail "stream-late-error-$format" "exit codes $rc1 (-o) and $rc2 (stdout), expected 3; stderr: $(head -c 300 "$stream_tmp/late.err")"
-  elif ! grep -q "step 200000" "$stream_tmp/late.err"; then
-    fail "stream-late-error-$format" "the error does not name step 200000: $(head -c 300 "$stream_tmp/late.err")"
+  elif ! grep -q "step $stream_n" "$stream_tmp/late.err"; then
+    fail "stream-late-error-$format" "the error does not name step $stream_n: $(head -c 300 "$stream_tmp/late.err")"
   elif [ -e "$stream_tmp/out/late.$format" ] || [ -s "$stream_tmp/late.stdout" ] || [ -s "$stream_tmp/late.stdout2" ]; then
     fail "stream-late-error-$format" "a failed run wrote output ($(ls -la "$stream_tmp/out"), stdout $(wc -c <"$stream_tmp/late.stdout2") bytes)"
   elif [ -n "$(ls -A "$stream_tmp/tmpdir")" ] || [ -n "$(ls "$stream_tmp/out" | grep tmp)" ]; then
