@@ -2,7 +2,7 @@
 !> (J_red, dJ_red, M_red; with a steady cycle also dT, omega1, eps1, t), the figures of the
 !> cycle (the DYNAMICS block and JSON "dynamics") and the self-check M1 = M_d.
 module kinetostat_dynamics_table
-  use kinetostat_kinds, only: wp, rad_to_deg, pi
+  use kinetostat_kinds, only: wp, rad_to_deg
   use kinetostat_step_table, only: step_table_t, col_moment, col_component, col_other
   use kinetostat_dynamics, only: cycle_t, motion_t, dynamics_none, dynamics_reduced, dynamics_steady, dynamics_given
   use kinetostat_dynamics_deck, only: dynamics_deck_t, dynamics_mode_name
@@ -29,6 +29,7 @@ contains
     end if
     call table%echo_text("DYNAMICS", dynamics_mode_name(dyn%mode))
     if (dyn%mode == dynamics_steady) call table%echo_real("DELTA", dyn%delta, "")
+    if (dyn%cycle_deg /= 360.0_wp) call table%echo_real("CYCLE", dyn%cycle_deg, "deg (two turns)")
     call table%echo_real("J_ROTOR", dyn%j_rotor, "kg*m^2")
     if (dyn%mode == dynamics_given) call table%echo_real("J_FLYWHEEL", dyn%j_flywheel, "kg*m^2")
   end subroutine echo_dynamics
@@ -83,7 +84,7 @@ contains
     if (mode < dynamics_steady .or. .not. table%first_block()) return
     if (allocated(cycle%drive_m)) then
       ! a driving-moment table: its mean, the scale it was given and its extremes
-      call table%dynamics_real("M_d", -cycle%load_work / (2.0_wp * pi), "N*m")
+      call table%dynamics_real("M_d", -cycle%load_work / cycle%span, "N*m")
       call table%dynamics_real("M_d_scale", cycle%drive_scale, "")
       call table%dynamics_real("M_d_max", maxval(cycle%drive_m), "N*m")
       call table%dynamics_real("M_d_min", minval(cycle%drive_m), "N*m")

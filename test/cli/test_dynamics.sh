@@ -222,8 +222,8 @@ rc=$?
 for d in 0.5 0.9 0.99; do
   run_ks "$fw" --set delta=$d --format json; cp "$out" "$cli_tmp/fw_d.json"; rc_a=$rc
   run_ks data/assur_pr3207_flywheel.nml --set delta=$d --format json; cp "$out" "$cli_tmp/twin_d.json"; rc_b=$rc
-  # the engine alone runs with delta = 0.285: a quarter of d needs a flywheel
-  run_ks docs/examples/engine.nml --set "dynamics='steady'" --set n=25 --set delta="$(python3 -c "print($d / 4)")" --format json
+  # the engine alone runs with delta = 0.978 over its cycle of two turns: a quarter of d needs a flywheel
+  run_ks docs/examples/engine.nml --set "dynamics='steady'" --set cycle=720 --set delta="$(python3 -c "print($d / 4)")" --format json
   rc_c=$rc
   if [ "$rc_a$rc_b$rc_c" = 000 ] && python3 - "$cli_tmp/fw_d.json" "$cli_tmp/twin_d.json" "$out" "$d" <<'PY'
 import json, sys
@@ -259,7 +259,7 @@ expect_input_error dynamics-loads-huge "&pr3207: delta: with the loads' work ove
 # a geometry error met by the cycle names the dyad, its lengths and the angle, as the plain run
 # does (a rod shorter than the crank)
 expect_input_error dynamics-cycle-geometry "&assur: dynamics: the cycle at phi1 = [0-9.]+ deg: dyad 1 \(RRP, links 2-3\): cannot be assembled: distance from its joint to the guide [0-9.E-]+ m exceeds l2 = 0.2000000000E-1 m" \
-  "$(deck_with dyn_short docs/examples/engine.nml "s/dyad(1)%l2 = 0.2,/dyad(1)%l2 = 0.02,/; s/phi_start = 0, dphi = 15, n = 49/phi_start = 0, dphi = 15, n = 25, dynamics = 'steady', delta = 0.05/")" 3
+  "$(deck_with dyn_short docs/examples/engine.nml "s/dyad(1)%l2 = 0.2,/dyad(1)%l2 = 0.02,/; s/phi_start = 0, dphi = 15, n = 49/phi_start = 0, dphi = 15, n = 49, dynamics = 'steady', delta = 0.05, cycle = 720/")" 3
 
 # --- a machine whose only inertia is its flywheel (every link massless, j_rotor = 0, J_red = 0):
 # J_fw = dE_max / (delta omega_m^2) exactly, checked by its own law: the true motion's delta is
@@ -290,3 +290,44 @@ PY
   then pass; else fail "dynamics-massless-$d" "exit $rc: $(head -c 300 "$err")"; fi
 done
 expect_input_error dynamics-phi-start-huge "&pr3207: phi_start: 0.1000000000E\+21 deg is too large" "$(deck_with dyn_phuge "$fw" "s/phi_start = 0/phi_start = 1e20/")"
+
+# --- a cycle of two turns (cycle = 720: the four-stroke engine): checked by its own law at 0.5 deg
+# steps (tools/cycle_check.py: M1 = M_d at every step, M_d = -(1/4 pi) of the loads' work over
+# both turns, dT closes over 720 deg and is the integral of M_d + M_red, the energy equation,
+# (omega_max - omega_min)/omega_m = delta, the second turn's M_red not the first's)
+eng=data/assur_engine_flywheel.nml
+run_ks "$eng" --set dphi=0.5 --set n=1441 --format json; cp "$out" "$cli_tmp/eng720.json"
+if [ "$rc" -eq 0 ] && python3 tools/cycle_check.py "$cli_tmp/eng720.json" 720 0.02 >"$cli_tmp/cycle_check.out" 2>&1; then pass
+else fail dynamics-cycle-720-law "exit $rc: $(cat "$cli_tmp/cycle_check.out") $(head -c 300 "$err")"; fi
+# the checker must fail on a run whose M_d is not its cycle's (M_d of one turn: 1 % off here)
+python3 - "$cli_tmp/eng720.json" "$cli_tmp/eng720_bad.json" <<'PY'
+import json, sys
+x = json.load(open(sys.argv[1])); x["dynamics"]["M_d"] *= 1.01
+json.dump(x, open(sys.argv[2], "w"))
+PY
+if ! python3 tools/cycle_check.py "$cli_tmp/eng720_bad.json" 720 0.02 >"$cli_tmp/cycle_check.out" 2>&1 && \
+   grep -q "max |M1 - M_d|" "$cli_tmp/cycle_check.out"; then pass
+else fail dynamics-cycle-720-law-must-fail "a wrong M_d passed: $(cat "$cli_tmp/cycle_check.out")"; fi
+# 'given' with the flywheel found gives back delta over the two turns; a driving-moment table
+# of constant shape over the cycle of 720 deg is the constant M_d (same flywheel, 1e-9)
+jfw=$(python3 -c "import json; print(repr(json.load(open('$cli_tmp/eng720.json'))['dynamics']['J_flywheel']))")
+run_ks "$(deck_with eng_given "$eng" "s/dynamics = 'steady', delta = 0.02/dynamics = 'given', j_flywheel = $jfw/")" --format json
+if [ "$rc" -eq 0 ] && python3 -c "import json,sys; d=json.load(open(sys.argv[1]))['dynamics']; sys.exit(0 if abs(d['delta']-0.02) <= 1e-9*0.02 else 1)" "$out"
+then pass; else fail dynamics-cycle-720-given "exit $rc: $(head -c 300 "$err")"; fi
+run_ks "$(deck_with eng_md "$eng" "s/cycle = 720/cycle = 720, md_table = 0, -1, 400, -1/")" --format json
+if [ "$rc" -eq 0 ] && python3 - "$out" "$jfw" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))["dynamics"]; jfw = float(sys.argv[2])
+assert abs(d["J_flywheel"] - jfw) <= 1e-9 * jfw, (d["J_flywheel"], jfw)
+assert abs(d["M_d_scale"] - 38.97702985) <= 1e-6, d["M_d_scale"]
+PY
+then pass; else fail dynamics-cycle-720-md-table "exit $rc: $(head -c 300 "$err")"; fi
+expect_input_error dynamics-cycle-table-longer "&assur: cycle: the steady cycle is one turn \(cycle = 360, the default\) but force\(1\)%table spans 720.0000000 deg of the crank angle: give cycle = 720" \
+  "$(deck_with eng_360 "$eng" "s/, cycle = 720//; s/dphi = 5, n = 145/dphi = 5, n = 73/")"
+expect_input_error dynamics-cycle-steps "&assur: dphi: the steps must cover exactly the cycle of two turns with cycle = 720: \(n - 1\)\*dphi = 360.0000000 deg, not 720" \
+  "$(deck_with eng_73 "$eng" "s/dphi = 5, n = 145/dphi = 5, n = 73/")"
+expect_input_error dynamics-cycle-value "&assur: cycle: must be 360 \(one turn\) or 720" "$(deck_with eng_540 "$eng" "s/cycle = 720/cycle = 540/")"
+expect_input_error dynamics-cycle-without "&assur: cycle: the cycle of the steady motion needs dynamics = 'steady' or 'given'" \
+  "$(deck_with eng_none "$eng" "s/dynamics = 'steady', delta = 0.02, //")"
+expect_input_error dynamics-cycle-md-table "&assur: md_table: the angles must lie within one cycle \(last - first < 720" \
+  "$(deck_with eng_md2 "$eng" "s/cycle = 720/cycle = 720, md_table = 0, 1, 720, 1/")"
