@@ -33,7 +33,7 @@ module kinetostat_assur_deck
   public :: resist_none, resist_moment, resist_force
   public :: assur_phi1_deg, assur_omega1_steps, assur_omega1, assur_eps1, assur_motion_sign
   public :: assur_load_value, assur_force_values, assur_moment_values, assur_load_steps, table_value, &
-    table_angle
+    table_angle, table_position
   public :: max_dyads, max_forces, max_moments
 
   !> Capacity of the dyad list.
