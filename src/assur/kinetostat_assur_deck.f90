@@ -45,7 +45,7 @@ module kinetostat_assur_deck
   !> Global form: largest misfit of a given joint, relative to the dyad's size.
   real(wp), parameter :: misfit_rel = 1.0e-6_wp
   !> Capacity of a load table, (position, value) points.
-  integer, parameter :: max_table_points = 64
+  integer, parameter :: max_table_points = 2881
   !> Unset logical marker is not available in namelists: logicals have plain defaults.
   character(*), parameter :: group_name = "assur"
   !> Longest joint name, characters; its storage and the length read, bytes (longer names
@@ -593,8 +593,9 @@ contains
     integer :: stat
     logical :: angles_signed, components
     type(dyad_in_t) :: dyad(max_dyads)
-    type(force_in_t) :: force(max_forces)
-    type(moment_in_t) :: moment(max_moments)
+    !> Allocated, not automatic: their tables hold max_table_points points each.
+    type(force_in_t), allocatable :: force(:)
+    type(moment_in_t), allocatable :: moment(:)
     !> One force's or moment's schedule as read (then copied into the deck).
     type(load_schedule_t) :: load
     type(deck_context_t) :: ctx
@@ -609,6 +610,7 @@ contains
     call begin_group(source, group_name, ctx, error)
     if (allocated(error)) return
     allocate (title)
+    allocate (force(max_forces), moment(max_moments))
     dynamics = ""; delta = unset_real; j_rotor = unset_real; j_flywheel = unset_real
     md_table = unset_real; cycle = unset_real
     title = ""
@@ -1542,17 +1544,25 @@ contains
     type(load_schedule_t), intent(in) :: load
     !> Position, deg or m.
     real(wp), intent(in) :: q
-    !> Segment of the table holding q.
-    integer :: seg
+    !> Segment of the table holding q, and the bounds of its search.
+    integer :: seg, lo, hi
     associate (x => load%x, v => load%v, np => size(load%x))
       if (np == 1) then
         value = v(1)
         return
       end if
-      seg = 1
-      do while (seg < np - 1 .and. q > x(seg + 1))
-        seg = seg + 1
+      ! the last segment whose start is below q (binary search; the first segment at or below x(1))
+      lo = 1
+      hi = np - 1
+      do while (hi > lo)
+        seg = (lo + hi + 1) / 2
+        if (q > x(seg)) then
+          lo = seg
+        else
+          hi = seg - 1
+        end if
       end do
+      seg = lo
       value = v(seg) + (v(seg + 1) - v(seg)) * (q - x(seg)) / (x(seg + 1) - x(seg))
     end associate
   end function table_value

@@ -14,8 +14,9 @@ module kinetostat_dynamics_deck
   public :: dynamics_deck_t, read_dynamics_settings, require_one_turn, dynamics_mode_name, deck_cycle
   public :: md_table_capacity
 
-  !> Values a deck's `md_table` may hold (pairs of angle and moment).
-  integer, parameter :: md_table_capacity = 2 * 360
+  !> Values a deck's `md_table` may hold (pairs of angle and moment): 2881 points, every 0.25 deg
+  !> over a cycle of two turns.
+  integer, parameter :: md_table_capacity = 2 * 2881
 
   !> Validated dynamics settings of a deck.
   type :: dynamics_deck_t

@@ -22,9 +22,9 @@ module kinetostat_linkage_deck
   public :: linkage_drive_values, linkage_load_value
 
   !> Capacities of the lists.
-  integer, parameter :: max_links = 24, max_pairs = 36, max_drives = 4, max_forces = 16, max_moments = 16
+  integer, parameter :: max_links = 48, max_pairs = 72, max_drives = 8, max_forces = 32, max_moments = 32
   !> Capacity of a drive's list of values.
-  integer, parameter :: max_list = 3601
+  integer, parameter :: max_list = 14401
   !> A load window's ends are taken this much wider (the drive's unit: deg or m), so that a
   !> step landing on an end by roundoff of start + (k-1)*step counts as inside.
   real(wp), parameter :: window_tol = 1.0e-9_wp

@@ -331,3 +331,33 @@ expect_input_error dynamics-cycle-without "&assur: cycle: the cycle of the stead
   "$(deck_with eng_none "$eng" "s/dynamics = 'steady', delta = 0.02, //")"
 expect_input_error dynamics-cycle-md-table "&assur: md_table: the angles must lie within one cycle \(last - first < 720" \
   "$(deck_with eng_md2 "$eng" "s/cycle = 720/cycle = 720, md_table = 0, 1, 720, 1/")"
+# --- a gas table of 1441 points (every 0.5 deg over 720 deg, the linear interpolant of the
+# engine's own table) is read and gives the engine's figures: the steady cycle's M_d and
+# flywheel, and every force of the 5 deg steps, within 1e-9
+python3 - "$eng" "$cli_tmp/eng1441.nml" <<'PY'
+import re, sys
+text = open(sys.argv[1]).read()
+body = re.search(r"force\(1\)%table = (.*?)\n/", text, re.S).group(1)
+nums = [float(v) for v in re.findall(r"-?[0-9.]+", body)]
+xs, vs = nums[0::2], nums[1::2]
+def at(x):
+    for i in range(len(xs) - 1):
+        if xs[i] <= x <= xs[i + 1]:
+            return vs[i] + (vs[i + 1] - vs[i]) * (x - xs[i]) / (xs[i + 1] - xs[i])
+pairs = ", ".join(f"{k / 2:g}, {at(k / 2)!r}" for k in range(1441))
+open(sys.argv[2], "w").write(re.sub(r"force\(1\)%table = .*?\n/", "force(1)%table = " + pairs + "\n/", text, flags=re.S))
+PY
+run_ks "$cli_tmp/eng1441.nml" --format json; cp "$out" "$cli_tmp/eng1441.json"; rc_a=$rc
+run_ks "$eng" --format json
+if [ "$rc_a$rc" = 00 ] && python3 - "$out" "$cli_tmp/eng1441.json" <<'PY'
+import json, sys
+a, b = (json.load(open(f)) for f in sys.argv[1:3])
+for key in ("M_d", "J_flywheel", "omega_min", "phi_omega_min"):
+    assert abs(a["dynamics"][key] - b["dynamics"][key]) <= 1e-9 * abs(a["dynamics"][key]), (key, a["dynamics"][key], b["dynamics"][key])
+assert [c["name"] for c in a["columns"]] == [c["name"] for c in b["columns"]]
+for ra, rb in zip(a["rows"], b["rows"]):
+    big = max(abs(v) for v in ra if v is not None)
+    for va, vb in zip(ra, rb):
+        assert abs(va - vb) <= 1e-9 * big, (ra[0], va, vb)
+PY
+then pass; else fail dynamics-table-1441-points "exit $rc_a $rc: $(head -c 300 "$err")"; fi
