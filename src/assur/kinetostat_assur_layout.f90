@@ -1390,7 +1390,8 @@ contains
     logical :: ok
     integer :: k, stat
     if (load%kind /= load_table) return
-    allocate (q(deck%n), phi(deck%n), stat=stat)
+    allocate (q(deck%n), stat=stat)
+    if (stat == 0) allocate (phi(deck%n), stat=stat)
     if (stat /= 0) return
     do k = 1, deck%n
       call table_position(deck, load, k, q(k), ok)

@@ -804,7 +804,7 @@ contains
     type(cycle_t), intent(in) :: cycle
     real(wp), intent(in) :: s
     real(wp) :: wt(8), moments(8), sp, sm
-    integer :: j
+    integer :: i, j
     sp = s
     sm = -1.0_wp
     do j = 1, 8
@@ -812,7 +812,16 @@ contains
       sp = sp * s
       sm = -sm
     end do
-    wt = matmul(cycle%basis, moments)
+    ! explicit loops, not matmul: its library (debug build) and inlined (release build) forms
+    ! sum in different orders, and t or dT would differ in a last printed digit
+    wt = 0.0_wp
+    !GCC$ novector
+    do j = 1, 8
+      !GCC$ novector
+      do i = 1, 8
+        wt(i) = wt(i) + cycle%basis(i, j) * moments(j)
+      end do
+    end do
   end function partial_weights
 
   !> Coefficients of xi^0 .. xi^7 of the 8 Lagrange polynomials through gl_xi (row i: L_i).

@@ -361,3 +361,44 @@ for ra, rb in zip(a["rows"], b["rows"]):
         assert abs(va - vb) <= 1e-9 * big, (ra[0], va, vb)
 PY
 then pass; else fail dynamics-table-1441-points "exit $rc_a $rc: $(head -c 300 "$err")"; fi
+
+# --- &linkage decks: the machine dynamics of a linkage with one drive. The twin of
+# data/pr3207_flywheel.nml in PR 3207's frame, links numbered as PR 3207's: every column both
+# have (the forces, M1, the reduced quantities, dT, omega1, eps1, t) within 1e-9 (kinetostat
+# diff --common), and the flywheel's figures; the comparison must fail with the ram 1 kg heavier
+run_ks data/linkage_pr3207_flywheel.nml --format json; cp "$out" "$cli_tmp/lk_fw.json"; rc_a=$rc
+run_ks data/linkage_pr3207_flywheel.nml --format csv; cp "$out" "$cli_tmp/lk_fw.csv"
+run_ks data/pr3207_flywheel.nml --format csv; cp "$out" "$cli_tmp/pr_fw.csv"
+"$KINETOSTAT" diff --common --rtol 1e-9 --atol 1e-9 "$cli_tmp/pr_fw.csv" "$cli_tmp/lk_fw.csv" >"$cli_tmp/lk_diff.out" 2>&1
+if [ "$rc_a" -eq 0 ] && [ $? -eq 0 ] && grep -q "^same: 6859 values agree" "$cli_tmp/lk_diff.out" && \
+   python3 - "$cli_tmp/lk_fw.json" "$cli_tmp/fw.json" <<'PY'
+import json, sys
+a, b = (json.load(open(f))["dynamics"] for f in sys.argv[1:3])
+for key in ("M_d", "J_red_max", "J_flywheel", "J_flywheel_textbook", "omega_max", "phi_omega_min", "delta", "period"):
+    assert abs(a[key] - b[key]) <= 1e-9 * abs(b[key]), (key, a[key], b[key])
+PY
+then pass; else fail dynamics-linkage-twin-pr3207 "exit $rc_a: $(head -3 "$cli_tmp/lk_diff.out")"; fi
+run_ks data/linkage_pr3207_flywheel.nml --set 'link(5)%m=61' --format csv
+if ! "$KINETOSTAT" diff --common --rtol 1e-9 --atol 1e-9 "$cli_tmp/pr_fw.csv" "$out" >"$cli_tmp/lk_diff.out" 2>&1; then pass
+else fail dynamics-linkage-twin-must-fail "a 1 kg heavier ram agreed: $(head -3 "$cli_tmp/lk_diff.out")"; fi
+# 'reduced' and 'steady' of the four-bar and the slider-crank equal their &assur twins'
+for twin in fourbar slider_crank; do
+  for mode in reduced steady; do
+    set_args=(--set "dynamics='$mode'"); [ "$mode" = steady ] && set_args+=(--set delta=0.05)
+    run_ks "data/linkage_$twin.nml" "${set_args[@]}" --format csv; cp "$out" "$cli_tmp/lk_t.csv"; rc_a=$rc
+    run_ks "data/assur_$twin.nml" "${set_args[@]}" --format csv --quiet
+    if [ "$rc_a$rc" = 00 ] && head -1 "$cli_tmp/lk_t.csv" | grep -q ",J_red,dJ_red,M_red" && \
+       "$KINETOSTAT" diff --common --rtol 1e-9 --atol 1e-9 "$out" "$cli_tmp/lk_t.csv" >"$cli_tmp/lk_diff.out" 2>&1; then pass
+    else fail "dynamics-linkage-twin-$twin-$mode" "exit $rc_a $rc: $(head -3 "$cli_tmp/lk_diff.out")"; fi
+  done
+done
+# the refusals: one line each, naming the variable
+lk=data/linkage_pr3207_flywheel.nml
+expect_input_error dynamics-linkage-two-drives "&linkage: drive\(2\): the machine dynamics reduces the machine to one input: a linkage of 2 drives" \
+  "$(deck_with lk_five data/fivebar.nml "s|^/$|  dynamics = 'reduced'\n/|")"
+expect_input_error dynamics-linkage-sliding-drive "&linkage: dynamics: a sliding drive's stroke goes out and back" \
+  "$(deck_with lk_slide data/linkage_slider_crank.nml "s|drive(1)%pair = 'A', drive(1)%start = 0, drive(1)%step = 30, drive(1)%omega = 50|drive(1)%pair = 'D', drive(1)%start = 0, drive(1)%step = 0.001, drive(1)%omega = 1|; s|^/$|  dynamics = 'steady', delta = 0.1\n/|")"
+expect_input_error dynamics-linkage-steps "&linkage: drive\(1\)%step: the steps must cover exactly the cycle \(360 deg\)" "$(deck_with lk_n "$lk" "s/n = 361/n = 181/")"
+expect_input_error dynamics-linkage-eps "&linkage: drive\(1\)%eps: a steady cycle finds the acceleration" "$(deck_with lk_eps "$lk" "s/drive(1)%omega = 7.5/drive(1)%omega = 7.5, drive(1)%eps = 1/")"
+expect_input_error dynamics-linkage-delta "&linkage: delta: must be > 0 and < 1" "$(deck_with lk_d "$lk" "s/delta = 0.04/delta = 2/")"
+expect_input_error dynamics-linkage-unknown "&linkage: dynamics: unknown value 'wobbly'" "$(deck_with lk_u "$lk" "s/'steady'/'wobbly'/")"

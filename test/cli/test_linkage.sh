@@ -157,3 +157,15 @@ lk_structure linkage-structure-order4 docs/examples/class3_order4.nml en \
   "STRUCTURE FORMULA: I(0,1) -> III(2,3,4,5,6,7)" "CLASS OF THE MECHANISM: III"
 lk_structure linkage-structure-order4-ru docs/examples/class3_order4.nml ru \
   "III(2,3,4,5,6,7)  ГРУППА III КЛАССА 4-ГО ПОРЯДКА (ДВА БАЗОВЫХ ЗВЕНА С ТРЕМЯ ПАРАМИ)"
+
+# --- the table of stages and deck kinds of docs/linkage.md: every "yes" runs, every refusal is
+# one line (exit 2) with the message the table quotes (tools/stage_table_check.py); the check can
+# fail: a "yes" turned into a refusal is caught
+python3 "$root/tools/stage_table_check.py" "$KINETOSTAT" "$root/docs/linkage.md" >"$cli_tmp/stages.out" 2>&1 \
+  && pass || fail linkage-stage-table "$(head -10 "$cli_tmp/stages.out")"
+{ grep '^| stage |\|^|---|' "$root/docs/linkage.md"; grep '^| structural analysis (`kinetostat structure`) |' "$root/docs/linkage.md" | \
+  sed 's/^| structural analysis (`kinetostat structure`) | yes |/| structural analysis (`kinetostat structure`) | refused: `no such thing` |/'; } \
+  >"$cli_tmp/stages_bad.md"
+if ! python3 "$root/tools/stage_table_check.py" "$KINETOSTAT" "$cli_tmp/stages_bad.md" >"$cli_tmp/stages.out" 2>&1 && \
+   grep -q "structural analysis (\`kinetostat structure\`) / &pr3207: refusal expected" "$cli_tmp/stages.out"; then pass
+else fail linkage-stage-table-can-fail "$(head -5 "$cli_tmp/stages.out")"; fi
