@@ -168,7 +168,7 @@ contains
     type(mass_model_t) :: model
     !> The rows a drawing needs (--at K, the SVG sheet), kept as the blocks go.
     type(row_keeper_t) :: keeper
-    logical :: drawn
+    logical :: drawn, whole_run
     !> A failed write of the spool while the rows were formatted (to_spool).
     type(error_t), allocatable :: spool_error
     type(sheet_t) :: sheet
@@ -213,12 +213,14 @@ contains
     rows = block_rows
     if (options%block_rows > 0) rows = options%block_rows
     head%chunk = options%echo_chunk
-    ! a drawing (the SVG sheet, --at K) keeps only the rows it draws, block by block
-    drawn = any(options%format == [format_svg, format_plans, format_dxf]) .or. options%plans
+    ! a drawing of forces (the SVG sheet, --at K) keeps only the rows it draws, block by
+    ! block; the analysis deck and a design's sheet (the cam's profile) need every row at once
+    drawn = mech%force_sheet .and. (any(options%format == [format_svg, format_plans, format_dxf]) .or. options%plans)
+    whole_run = options%format == format_deck .or. &
+      (.not. mech%force_sheet .and. any(options%format == [format_svg, format_dxf]))
     first = 1
     do
-      ! the analysis deck needs every row at once (a drawing keeps the rows it draws)
-      if (options%format /= format_deck) then
+      if (.not. whole_run) then
         table%block_first = first
         table%block_last = first + rows - 1
       end if
