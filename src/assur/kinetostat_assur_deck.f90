@@ -32,7 +32,8 @@ module kinetostat_assur_deck
   public :: load_schedule_t, load_constant, load_window, load_column, load_table
   public :: resist_none, resist_moment, resist_force
   public :: assur_phi1_deg, assur_omega1_steps, assur_omega1, assur_eps1, assur_motion_sign
-  public :: assur_load_value, assur_force_values, assur_moment_values, assur_load_steps, table_value
+  public :: assur_load_value, assur_force_values, assur_moment_values, assur_load_steps, table_value, &
+    table_angle, table_position
   public :: max_dyads, max_forces, max_moments
 
   !> Capacity of the dyad list.
@@ -44,7 +45,7 @@ module kinetostat_assur_deck
   !> Global form: largest misfit of a given joint, relative to the dyad's size.
   real(wp), parameter :: misfit_rel = 1.0e-6_wp
   !> Capacity of a load table, (position, value) points.
-  integer, parameter :: max_table_points = 64
+  integer, parameter :: max_table_points = 2881
   !> Unset logical marker is not available in namelists: logicals have plain defaults.
   character(*), parameter :: group_name = "assur"
   !> Longest joint name, characters; its storage and the length read, bytes (longer names
@@ -576,8 +577,9 @@ contains
     !> frame_id and crank_id as integers.
     integer :: frame_no, crank_no, nd, nf, nm, n_omega, n_eps, n_values, k, d, i
     real(wp) :: crank_at(2), crank_m, crank_j, crank_s(2), omega1, g, gravity_angle, phi_start, dphi
-    !> Machine dynamics variables (see kinetostat_dynamics_deck).
-    real(wp) :: delta, j_rotor, j_flywheel
+    !> Machine dynamics variables (see kinetostat_dynamics_deck); `cycle`: the steady cycle,
+    !> deg (360 or 720).
+    real(wp) :: delta, j_rotor, j_flywheel, cycle
     !> The driving-moment table (pairs phi deg, M_d; see kinetostat_dynamics_deck).
     real(wp) :: md_table(md_table_capacity)
     character(len=text_bytes * text_chars) :: dynamics
@@ -591,8 +593,9 @@ contains
     integer :: stat
     logical :: angles_signed, components
     type(dyad_in_t) :: dyad(max_dyads)
-    type(force_in_t) :: force(max_forces)
-    type(moment_in_t) :: moment(max_moments)
+    !> Allocated, not automatic: their tables hold max_table_points points each.
+    type(force_in_t), allocatable :: force(:)
+    type(moment_in_t), allocatable :: moment(:)
     !> One force's or moment's schedule as read (then copied into the deck).
     type(load_schedule_t) :: load
     type(deck_context_t) :: ctx
@@ -602,13 +605,14 @@ contains
     namelist /assur/ title, frame_id, crank_id, crank_at, crank_m, crank_j, crank_s, omega1, &
       omega1_step, eps1_step, g, gravity_angle, phi_start, dphi, n, dyad, force, moment, &
       step_values, angles_signed, components, drive_dyad, drive_pair, output_link, phi1, start_at, crank_f, crank_r, &
-      coordinates, phi_ref, dynamics, delta, j_rotor, j_flywheel, md_table, crank_joint
+      coordinates, phi_ref, dynamics, delta, j_rotor, j_flywheel, md_table, crank_joint, cycle
 
     call begin_group(source, group_name, ctx, error)
     if (allocated(error)) return
     allocate (title)
+    allocate (force(max_forces), moment(max_moments))
     dynamics = ""; delta = unset_real; j_rotor = unset_real; j_flywheel = unset_real
-    md_table = unset_real
+    md_table = unset_real; cycle = unset_real
     title = ""
     frame_id = 0.0_wp; crank_id = 1.0_wp; n = unset_real
     drive_dyad = unset_real; drive_pair = unset_real
@@ -907,7 +911,7 @@ contains
       if (allocated(error)) return
     end if
     call read_dynamics_settings(ctx, dynamics, delta, j_rotor, j_flywheel, omega1, deck%dyn, error, &
-      md_table)
+      md_table, cycle)
     if (allocated(error)) return
     if (deck%dyn%mode >= dynamics_steady) then
       call require_rule(ctx, "dynamics", .not. deck%friction_on, "a steady cycle with friction in the pairs is "// &
@@ -916,13 +920,45 @@ contains
       call require_rule(ctx, "phi1", .not. allocated(deck%phi_list), "a steady cycle needs phi_start and dphi "// &
         "over one turn, not a list of angles", error)
       if (allocated(error)) return
-      call require_one_turn(ctx, deck%dphi, deck%n, error); if (allocated(error)) return
+      call require_cycle_holds_tables(ctx, deck, error); if (allocated(error)) return
+      call require_one_turn(ctx, deck%dphi, deck%n, error, deck%dyn%cycle_deg); if (allocated(error)) return
       call require_rule(ctx, "step_values", .not. (any(deck%force_load%kind == load_column) .or. &
         any(deck%moment_load%kind == load_column)), "a steady cycle needs every load at any crank angle: "// &
         "give it as a constant, a window or a table, not per step", error)
       if (allocated(error)) return
     end if
   end subroutine read_assur_group
+
+  !> A steady cycle of one turn (cycle = 360) cannot hold a load table over the crank's angle
+  !> that spans more than a turn (a four-stroke engine's gas force over 720 deg): the error
+  !> names `cycle` and the table.
+  pure subroutine require_cycle_holds_tables(ctx, deck, error)
+    type(deck_context_t), intent(in) :: ctx
+    type(assur_deck_t), intent(in) :: deck
+    type(error_t), allocatable, intent(out) :: error
+    integer :: k
+    if (deck%dyn%cycle_deg > 360.0_wp) return
+    do k = 1, size(deck%force_load)
+      call check(deck%force_load(k), "force("//int_str(k)//")%table", error)
+      if (allocated(error)) return
+    end do
+    do k = 1, size(deck%moment_load)
+      call check(deck%moment_load(k), "moment("//int_str(k)//")%table", error)
+      if (allocated(error)) return
+    end do
+  contains
+    pure subroutine check(load, name, error)
+      type(load_schedule_t), intent(in) :: load
+      character(*), intent(in) :: name
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: span
+      if (load%kind /= load_table .or. load%link /= crank_index .or. load%pair /= 0) return
+      span = load%x(size(load%x)) - load%x(1)
+      call require_rule(ctx, "cycle", span <= 360.0_wp, "the steady cycle is one turn (cycle = 360, the default) "// &
+        "but "//name//" spans "//real_str(span)//" deg of the crank angle: give cycle = 720 (a four-stroke "// &
+        "engine's cycle of two turns) and steps over 720 deg", error)
+    end subroutine check
+  end subroutine require_cycle_holds_tables
 
   !> The required variables the deck lacks, in the order the checks of read_assur_deck meet
   !> them: phi_ref (global form), dphi (unless a phi1 list), omega1 (or the other of
@@ -1481,15 +1517,26 @@ contains
     if (.not. ok) return
     call link_position(states, poses, load%link, load%pair, q, dq, ddq)
     if (load%pair /= 0) return
+    q = table_angle(load, q * rad_to_deg, assur_phi1_deg(deck, k))
+  end subroutine table_position
+
+  !> The abscissa of a table over a link's angle, deg: the link's angle `q_deg` taken modulo
+  !> 360 into [x1, x1 + 360), or, over the crank's angle with a table longer than a turn (a
+  !> four-stroke cycle, period 720 deg), the crank angle `phi1_deg` modulo 720 into
+  !> [x1, x1 + 720).
+  pure real(wp) function table_angle(load, q_deg, phi1_deg) result(q)
+    !> A table load over a link's angle.
+    type(load_schedule_t), intent(in) :: load
+    !> The abscissa link's angle and the crank angle, deg.
+    real(wp), intent(in) :: q_deg, phi1_deg
     associate (x1 => load%x(1), span => load%x(size(load%x)) - load%x(1))
       if (load%link == crank_index .and. span > 360.0_wp) then
-        ! over the crank's angle, a table longer than a turn: a four-stroke cycle, period 720 deg
-        q = x1 + modulo(assur_phi1_deg(deck, k) - x1, 720.0_wp)
+        q = x1 + modulo(phi1_deg - x1, 720.0_wp)
       else
-        q = x1 + modulo(q * rad_to_deg - x1, 360.0_wp)
+        q = x1 + modulo(q_deg - x1, 360.0_wp)
       end if
     end associate
-  end subroutine table_position
+  end function table_angle
 
   !> A table load's value at position q (deg or m; inside the table): linear interpolation.
   pure real(wp) function table_value(load, q) result(value)
@@ -1497,17 +1544,25 @@ contains
     type(load_schedule_t), intent(in) :: load
     !> Position, deg or m.
     real(wp), intent(in) :: q
-    !> Segment of the table holding q.
-    integer :: seg
+    !> Segment of the table holding q, and the bounds of its search.
+    integer :: seg, lo, hi
     associate (x => load%x, v => load%v, np => size(load%x))
       if (np == 1) then
         value = v(1)
         return
       end if
-      seg = 1
-      do while (seg < np - 1 .and. q > x(seg + 1))
-        seg = seg + 1
+      ! the last segment whose start is below q (binary search; the first segment at or below x(1))
+      lo = 1
+      hi = np - 1
+      do while (hi > lo)
+        seg = (lo + hi + 1) / 2
+        if (q > x(seg)) then
+          lo = seg
+        else
+          hi = seg - 1
+        end if
       end do
+      seg = lo
       value = v(seg) + (v(seg + 1) - v(seg)) * (q - x(seg)) / (x(seg + 1) - x(seg))
     end associate
   end function table_value

@@ -12,7 +12,7 @@ module kinetostat_assur_dynamics
   use kinetostat_assur_kinematics, only: link_state_t, dyad_pose_t, point_state_t, point_on
   use kinetostat_assur, only: assur_kinematics, link_position
   use kinetostat_assur_deck, only: assur_deck_t, load_schedule_t, load_window, load_table, assur_window, &
-    table_value, assur_phi1_deg, assur_load_value
+    table_value, table_angle, assur_phi1_deg, assur_load_value
   implicit none
   private
   public :: assur_source_t, assur_cycle, assur_motion, assur_reduced_at
@@ -113,7 +113,7 @@ contains
         load_at = assur_window(phi * rad_to_deg, load%phi_on, load%phi_off, load%value, load%idle)
       case (load_table)
         call link_position(states, poses, load%link, load%pair, q, dq, ddq)
-        if (load%pair == 0) q = load%x(1) + modulo(q * rad_to_deg - load%x(1), 360.0_wp)
+        if (load%pair == 0) q = table_angle(load, q * rad_to_deg, phi * rad_to_deg)
         load_at = table_value(load, q)
       case default
         load_at = load%value

@@ -34,7 +34,8 @@ module kinetostat_assur_layout
   use kinetostat_assur_friction, only: friction_step_t, assur_friction_step
   use kinetostat_assur_deck, only: assur_deck_t, read_assur_deck, assur_template, load_schedule_t, load_constant, &
     load_column, assur_phi1_deg, assur_omega1_steps, assur_eps1, assur_motion_sign, assur_load_value, &
-    assur_load_steps, resist_none
+    assur_load_steps, resist_none, load_table, table_position
+  use kinetostat_summary, only: table_peak_warning
   implicit none
   private
   public :: assur_mechanism_t, new_assur, assur_solve, assur_csv_columns, assur_csv_values, assur_pair_prismatic
@@ -267,6 +268,12 @@ contains
       end do
       do k = 1, size(self%deck%moment_load)
         call note_load(self%deck, self%deck%moment_load(k), table)
+      end do
+      do k = 1, size(self%deck%force_load)
+        call note_table_peak(self%deck, self%deck%force_load(k), "force("//int_str(k)//")%table", "N", table)
+      end do
+      do k = 1, size(self%deck%moment_load)
+        call note_table_peak(self%deck, self%deck%moment_load(k), "moment("//int_str(k)//")%table", "N*m", table)
       end do
       if (len_trim(self%deck%title) > 0) table%subtitle = trim(self%deck%title)
       call echo_deck(self%deck, table)
@@ -1376,6 +1383,44 @@ contains
       call table%note_load(assur_load_steps(deck, load))
     end select
   end subroutine note_load
+
+  !> The warning of a load table whose peak the steps miss (table_peak_warning): from every
+  !> step's position in the table's abscissa (the crank's angle, a link's angle or stroke).
+  pure subroutine note_table_peak(deck, load, name, unit, table)
+    !> Validated deck.
+    type(assur_deck_t), intent(in) :: deck
+    !> A load's schedule (nothing unless a table).
+    type(load_schedule_t), intent(in) :: load
+    !> The table's deck variable and the load's unit.
+    character(*), intent(in) :: name, unit
+    type(step_table_t), intent(inout) :: table
+    real(wp), allocatable :: q(:), phi(:)
+    character(len=:), allocatable :: warning
+    !> How the message names a position of the table and its unit.
+    character(len=64) :: abscissa(2)
+    logical :: ok
+    integer :: k, stat
+    if (load%kind /= load_table) return
+    allocate (q(deck%n), stat=stat)
+    if (stat == 0) allocate (phi(deck%n), stat=stat)
+    if (stat /= 0) return
+    do k = 1, deck%n
+      call table_position(deck, load, k, q(k), ok)
+      if (.not. ok .and. k > 1) q(k) = q(k - 1)
+      phi(k) = assur_phi1_deg(deck, k)
+    end do
+    abscissa(2) = "deg"
+    if (load%pair /= 0) abscissa(2) = "m"
+    if (load%link == 1 .and. load%pair == 0) then
+      abscissa(1) = "phi1 ="
+    else if (load%pair == 0) then
+      abscissa(1) = "the angle of link "//int_str(deck%mech%links(load%link)%id)//" ="
+    else
+      abscissa(1) = "the stroke of link "//int_str(deck%mech%links(load%link)%id)//" ="
+    end if
+    call table_peak_warning(name, unit, load%x, load%v, q, abscissa, "phi1", "deg", phi, "dphi", warning)
+    if (allocated(warning)) call table%add_warning(warning)
+  end subroutine note_table_peak
 
   !> INPUT DATA lines of the friction of result pair `ip`: F, and R (turning pair) or
   !> CONTACT_SPAN (sliding pair; 0: resultant-normal model), named prefix//name//suffix.

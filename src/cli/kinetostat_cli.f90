@@ -51,7 +51,8 @@ module kinetostat_cli
     "balance DECK  an &assur deck with counterweights added (docs/shaking.md); before/after", &
     "            figures on stderr; --method (default full), --fraction: partial, default 0.5;", &
     "            --lang ru: the report in Russian", &
-    "structure DECK  structural analysis of a &linkage deck", &
+    "structure DECK  structural analysis of a linkage deck (&linkage, &assur, &pr3207, &pr3050,", &
+    "            &sixbar)", &
     "contour DECK  the blocking contour of a &gear_geometry deck's pair as CSV: curve,x1,x2", &
     "", &
     "DECK is a Fortran namelist file; its first group names the mechanism; - reads it", &
@@ -770,16 +771,36 @@ contains
     end subroutine name_cause
   end subroutine blame_override
 
-  !> `kinetostat structure DECK`: the structural analysis of a `&linkage` deck.
+  !> `kinetostat structure DECK`: the structural analysis of a linkage deck: a `&linkage`
+  !> deck's own; for the other linkages (PR 3207, PR 3050, the T.FTN six-bar, `&assur`) from
+  !> their model - the mechanism drawn at the first step, its units those of the plans.
   subroutine structure_of_deck(args, out, error)
     type(cli_args_t), intent(in) :: args
     type(text_buffer_t), intent(inout) :: out
     type(error_t), allocatable, intent(out) :: error
     type(deck_source_t) :: source
-    call load_group_deck(args%deck, "linkage", "structure: only &linkage decks have a structural analysis (the "// &
-      "others are fixed mechanisms or hand-decomposed dyads)", source, error)
+    type(run_options_t) :: options
+    type(step_table_t) :: table
+    !> Unaimed: the few lines stay in `out`.
+    type(spool_t) :: spool
+    character(len=:), allocatable :: group
+    call load_deck(args%deck, source, error)
     if (allocated(error)) return
-    call linkage_structure_text(source, args%options%lang, out, error)
+    call read_group_name(source, group, error)
+    if (allocated(error)) return
+    select case (group)
+    case ("linkage")
+      call linkage_structure_text(source, args%options%lang, out, error)
+    case ("pr3207", "pr3050", "sixbar", "assur")
+      options%lang = args%options%lang
+      options%format = format_plans
+      options%at_step = 1
+      options%structure = .true.
+      call run_deck(args%deck, options, table, out, error, spool)
+    case default
+      call fatal_error(error, exit_input, source%path//": &"//group//": structure: not a linkage of lower pairs "// &
+        "(a structural analysis is made of &pr3207, &pr3050, &sixbar, &assur and &linkage decks)")
+    end select
   end subroutine structure_of_deck
 
   !> `kinetostat contour DECK`: the blocking contour of a `&gear_geometry` deck's pair (with

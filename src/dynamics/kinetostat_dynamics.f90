@@ -86,8 +86,10 @@ module kinetostat_dynamics
 
   !> The steady cycle of a machine.
   type :: cycle_t
-    !> First input angle of the cycle, rad; the cycle is phi0 .. phi0 + 2 pi.
+    !> First input angle of the cycle, rad; the cycle is phi0 .. phi0 + span.
     real(wp) :: phi0 = 0.0_wp
+    !> Length of the cycle, rad: 2 pi (one turn) or 4 pi (two turns: a four-stroke engine).
+    real(wp) :: span = 2.0_wp * pi
     !> Panel bounds, rad (0 .. np).
     real(wp), allocatable :: node(:)
     !> dT at the panel bounds, J.
@@ -112,9 +114,9 @@ module kinetostat_dynamics
     !> Mean speed (omega_max + omega_min)/2, rad/s.
     real(wp) :: omega_mean = 0.0_wp
     !> Driving moment, N*m (constant, zero net work over the cycle; 0 with a driving-moment
-    !> table: drive_at; its mean is then -load_work/(2 pi)).
+    !> table: drive_at; its mean is then -load_work/span).
     real(wp) :: m_d = 0.0_wp
-    !> A driving-moment table: its angles, rad (increasing, within one turn from the first),
+    !> A driving-moment table: its angles, rad (increasing, within one cycle from the first),
     !> and its moments scaled to zero net work, N*m (not allocated: M_d constant).
     real(wp), allocatable :: drive_phi(:), drive_m(:)
     !> The factor the table's values were scaled by.
@@ -131,7 +133,7 @@ module kinetostat_dynamics
     real(wp) :: omega_max = 0.0_wp, phi_max = 0.0_wp, omega_min = 0.0_wp, phi_min = 0.0_wp
     !> Period of the cycle, s.
     real(wp) :: period = 0.0_wp
-    !> Work of the loads over the cycle per turn (= -2 pi M_d), J.
+    !> Work of the loads over the cycle (= -span M_d), J.
     real(wp) :: load_work = 0.0_wp
   end type cycle_t
 
@@ -157,15 +159,17 @@ module kinetostat_dynamics
 
 contains
 
-  !> The panels of the cycle phi0 .. phi0 + 2 pi (load switches `breaks`, rad, as bounds),
+  !> The panels of the cycle phi0 .. phi0 + span (load switches `breaks`, rad, as bounds),
   !> J_red and the work of M_red at their bounds, and M_d of zero net work; `where` names the
   !> deck in messages.
-  pure subroutine cycle_setup(source, phi0, breaks, j_rotor, omega_mean, where, cycle, error, drive_phi, drive_value)
+  pure subroutine cycle_setup(source, phi0, breaks, j_rotor, omega_mean, where, cycle, error, drive_phi, drive_value, &
+                              span)
     !> The mechanism's reduced quantities.
     class(reduced_source_t), intent(in) :: source
     !> First input angle, rad.
     real(wp), intent(in) :: phi0
-    !> Input angles where a load switches, rad (any turn; taken modulo 2 pi).
+    !> Input angles where a load switches, rad (any turn; taken modulo 2 pi, in every turn of
+    !> the cycle).
     real(wp), intent(in) :: breaks(:)
     !> Rotor's moment of inertia reduced to the input, kg*m^2.
     real(wp), intent(in) :: j_rotor
@@ -176,23 +180,28 @@ contains
     type(cycle_t), intent(out) :: cycle
     type(error_t), allocatable, intent(out) :: error
     !> A driving-moment table (optional, both or neither): angles, rad (strictly increasing,
-    !> last - first < 2 pi; periodic, linear between the points), and the moments in any
-    !> scale: they are scaled so that the cycle does zero net work.
+    !> last - first < span; periodic over the cycle, linear between the points), and the
+    !> moments in any scale: they are scaled so that the cycle does zero net work.
     real(wp), intent(in), optional :: drive_phi(:), drive_value(:)
+    !> Length of the cycle, rad: 2 pi (default, one turn) or 4 pi (two turns).
+    real(wp), intent(in), optional :: span
     real(wp), allocatable :: bounds(:), all_breaks(:)
-    real(wp) :: b, w, span, c, h
+    real(wp) :: b, w, piece, c, h
     type(reduced_t) :: red
-    integer :: i, k, np, pieces, q, stat
+    integer :: i, k, np, pieces, q, stat, turn, turns
 
     cycle%phi0 = phi0
+    if (present(span)) cycle%span = span
+    turns = nint(cycle%span / (2.0_wp * pi))
     cycle%j_rotor = j_rotor
     cycle%omega_mean = omega_mean
-    if (.not. (phi0 + 2.0_wp * pi) - phi0 > 6.0_wp) then
+    if (.not. (phi0 + cycle%span) - phi0 > 6.0_wp) then
       call fatal_error(error, exit_input, where//": phi_start: "//real_str(phi0 * rad_to_deg)//" deg is too large: "// &
         "the angles of a turn from there are below the resolution of the arithmetic (give the start within a turn)")
       return
     end if
-    ! piece bounds: phi0, the switches inside the turn (sorted, distinct), phi0 + 2 pi
+    ! piece bounds: phi0, the switches inside the cycle, in each of its turns (sorted,
+    ! distinct), phi0 + span
     if (present(drive_phi) .and. present(drive_value)) then
       allocate (cycle%drive_phi, source=drive_phi)
       allocate (cycle%drive_m, source=drive_value)
@@ -202,14 +211,16 @@ contains
       allocate (all_breaks(size(breaks)))
     end if
     all_breaks(1:size(breaks)) = breaks
-    allocate (bounds(size(all_breaks) + 2))
+    allocate (bounds(turns * size(all_breaks) + 2))
     bounds(1) = phi0
     k = 1
     do i = 1, size(all_breaks)
-      b = phi0 + modulo(all_breaks(i) - phi0, 2.0_wp * pi)
-      if (b - phi0 <= 1.0e-12_wp .or. phi0 + 2.0_wp * pi - b <= 1.0e-12_wp) cycle
-      k = k + 1
-      bounds(k) = b
+      do turn = 0, turns - 1
+        b = phi0 + modulo(all_breaks(i) - phi0, 2.0_wp * pi) + 2.0_wp * pi * real(turn, wp)
+        if (b - phi0 <= 1.0e-12_wp .or. phi0 + cycle%span - b <= 1.0e-12_wp) cycle
+        k = k + 1
+        bounds(k) = b
+      end do
     end do
     call sort(bounds(2:k))
     np = 1
@@ -219,7 +230,7 @@ contains
       bounds(np) = bounds(i)
     end do
     np = np + 1
-    bounds(np) = phi0 + 2.0_wp * pi
+    bounds(np) = phi0 + cycle%span
     bounds = bounds(1:np)
     ! panels
     np = 0
@@ -240,11 +251,11 @@ contains
     k = 0
     cycle%node(0) = phi0
     do i = 1, size(bounds) - 1
-      span = bounds(i + 1) - bounds(i)
-      pieces = max(1, ceiling(span / panel_max - 1.0e-9_wp))
+      piece = bounds(i + 1) - bounds(i)
+      pieces = max(1, ceiling(piece / panel_max - 1.0e-9_wp))
       do q = 1, pieces - 1
         k = k + 1
-        cycle%node(k) = bounds(i) + span * real(q, wp) / real(pieces, wp)
+        cycle%node(k) = bounds(i) + piece * real(q, wp) / real(pieces, wp)
       end do
       k = k + 1
       cycle%node(k) = bounds(i + 1)
@@ -277,7 +288,7 @@ contains
       cycle%j(k) = red%j + j_rotor
     end do
     cycle%load_work = cycle%dt(np)
-    cycle%m_d = -cycle%dt(np) / (2.0_wp * pi)
+    cycle%m_d = -cycle%dt(np) / cycle%span
     if (allocated(cycle%drive_m)) then
       ! the table's shape, scaled to zero net work: its work over the panels (linear in each)
       w = 0.0_wp
@@ -669,7 +680,7 @@ contains
         w_best = wx
         p_best = px
       end if
-      if (p_best >= cycle%node(np)) p_best = p_best - 2.0_wp * pi
+      if (p_best >= cycle%node(np)) p_best = p_best - cycle%span
     end subroutine refine
 
     !> The extreme of omega inside panel k (node k .. k+1), where eps = 0: bisection on the
@@ -755,7 +766,7 @@ contains
   end function dt_inside
 
   !> The driving moment at phi (rad), N*m: the constant M_d, or the scaled table, linear
-  !> between its points and periodic over the turn (continuous).
+  !> between its points and periodic over the cycle (continuous).
   pure real(wp) function drive_at(cycle, phi) result(md)
     type(cycle_t), intent(in) :: cycle
     real(wp), intent(in) :: phi
@@ -768,8 +779,8 @@ contains
       md = cycle%drive_m(1)
       return
     end if
-    x = cycle%drive_phi(1) + modulo(phi - cycle%drive_phi(1), 2.0_wp * pi)
-    ! the segment [phi_i, phi_i+1] holding x; past the last point, the wrap to the first + 2 pi
+    x = cycle%drive_phi(1) + modulo(phi - cycle%drive_phi(1), cycle%span)
+    ! the segment [phi_i, phi_i+1] holding x; past the last point, the wrap to the first + span
     i = n
     do while (i > 1)
       if (cycle%drive_phi(i) <= x) exit
@@ -781,7 +792,7 @@ contains
       x1 = cycle%drive_phi(i + 1)
       m1 = cycle%drive_m(i + 1)
     else
-      x1 = cycle%drive_phi(1) + 2.0_wp * pi
+      x1 = cycle%drive_phi(1) + cycle%span
       m1 = cycle%drive_m(1)
     end if
     md = m0 + (m1 - m0) * (x - x0) / (x1 - x0)
@@ -793,7 +804,7 @@ contains
     type(cycle_t), intent(in) :: cycle
     real(wp), intent(in) :: s
     real(wp) :: wt(8), moments(8), sp, sm
-    integer :: j
+    integer :: i, j
     sp = s
     sm = -1.0_wp
     do j = 1, 8
@@ -801,7 +812,16 @@ contains
       sp = sp * s
       sm = -sm
     end do
-    wt = matmul(cycle%basis, moments)
+    ! explicit loops, not matmul: its library (debug build) and inlined (release build) forms
+    ! sum in different orders, and t or dT would differ in a last printed digit
+    wt = 0.0_wp
+    !GCC$ novector
+    do j = 1, 8
+      !GCC$ novector
+      do i = 1, 8
+        wt(i) = wt(i) + cycle%basis(i, j) * moments(j)
+      end do
+    end do
   end function partial_weights
 
   !> Coefficients of xi^0 .. xi^7 of the 8 Lagrange polynomials through gl_xi (row i: L_i).
@@ -833,7 +853,7 @@ contains
     integer :: lo, hi, mid, np
     np = size(cycle%node) - 1
     x = phi
-    if (x < cycle%node(0) .or. x > cycle%node(np)) x = cycle%node(0) + modulo(x - cycle%node(0), 2.0_wp * pi)
+    if (x < cycle%node(0) .or. x > cycle%node(np)) x = cycle%node(0) + modulo(x - cycle%node(0), cycle%span)
     lo = 0
     hi = np
     do while (hi - lo > 1)

@@ -1,8 +1,8 @@
 !> The dynamics variables a linkage deck may give (`dynamics`, `delta`, `j_rotor`,
-!> `j_flywheel`), validated alike for every mechanism, and the rule that a steady cycle
-!> covers exactly one turn of the input.
+!> `j_flywheel`, `md_table`, `cycle`), validated alike for every mechanism, and the rule that
+!> a steady cycle's steps cover exactly its cycle of the input (one turn, or two: `cycle = 720`).
 module kinetostat_dynamics_deck
-  use kinetostat_kinds, only: wp, deg_to_rad
+  use kinetostat_kinds, only: wp, deg_to_rad, pi
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str
   use kinetostat_deck, only: deck_context_t, deck_error, is_set, require_rule, optional_default, require_nonnegative, &
@@ -14,8 +14,9 @@ module kinetostat_dynamics_deck
   public :: dynamics_deck_t, read_dynamics_settings, require_one_turn, dynamics_mode_name, deck_cycle
   public :: md_table_capacity
 
-  !> Values a deck's `md_table` may hold (pairs of angle and moment).
-  integer, parameter :: md_table_capacity = 2 * 360
+  !> Values a deck's `md_table` may hold (pairs of angle and moment): 2881 points, every 0.25 deg
+  !> over a cycle of two turns.
+  integer, parameter :: md_table_capacity = 2 * 2881
 
   !> Validated dynamics settings of a deck.
   type :: dynamics_deck_t
@@ -31,6 +32,9 @@ module kinetostat_dynamics_deck
     real(wp), allocatable :: md_phi(:)
     !> Its moments as given (any scale: scaled to zero net work over the cycle), N*m.
     real(wp), allocatable :: md_value(:)
+    !> The cycle of the steady motion, deg: 360 (one turn) or 720 (two turns: a four-stroke
+    !> engine's working cycle).
+    real(wp) :: cycle_deg = 360.0_wp
   end type dynamics_deck_t
 
 contains
@@ -54,7 +58,7 @@ contains
   !> Validate the dynamics variables as read (reals unset_real when not given; `mode_text`
   !> blank when not given). `omega1` is the deck's crank speed (the mean speed with 'steady'
   !> and 'given').
-  subroutine read_dynamics_settings(ctx, mode_text, delta, j_rotor, j_flywheel, omega1, dyn, error, md_table)
+  subroutine read_dynamics_settings(ctx, mode_text, delta, j_rotor, j_flywheel, omega1, dyn, error, md_table, cycle)
     type(deck_context_t), intent(in) :: ctx
     !> Value of `dynamics` ('none', 'reduced', 'steady', 'given'; blank: none).
     character(*), intent(in) :: mode_text
@@ -65,6 +69,9 @@ contains
     !> The deck's `md_table` (pairs phi deg, M_d; unset_real past the values given), when the
     !> mechanism offers it.
     real(wp), intent(in), optional :: md_table(:)
+    !> The deck's `cycle`, deg (360 or 720; unset_real when not given), when the mechanism
+    !> offers it.
+    real(wp), intent(in), optional :: cycle
     integer :: n_md, i
     n_md = 0
     if (present(md_table)) then
@@ -88,6 +95,17 @@ contains
     call require_rule(ctx, "md_table", n_md == 0 .or. dyn%mode >= dynamics_steady, &
       "a driving-moment table needs dynamics = 'steady' or 'given'", error)
     if (allocated(error)) return
+    if (present(cycle)) then
+      if (is_set(cycle)) then
+        call require_rule(ctx, "cycle", cycle == 360.0_wp .or. cycle == 720.0_wp, "must be 360 (one turn) or 720 "// &
+          "(two turns: a four-stroke engine's working cycle), deg (got "//real_str(cycle)//")", error)
+        if (allocated(error)) return
+        call require_rule(ctx, "cycle", dyn%mode >= dynamics_steady, &
+          "the cycle of the steady motion needs dynamics = 'steady' or 'given'", error)
+        if (allocated(error)) return
+        dyn%cycle_deg = cycle
+      end if
+    end if
     if (dyn%mode == dynamics_none) then
       call require_rule(ctx, "delta", .not. any(is_set([delta, j_rotor, j_flywheel])), &
         "delta, j_rotor and j_flywheel need dynamics = 'steady' or 'given'", error)
@@ -104,9 +122,16 @@ contains
           int_str(i)//": "//real_str(dyn%md_phi(i))//" deg after "//real_str(dyn%md_phi(i - 1))//" deg)", error)
         if (allocated(error)) return
       end do
-      call require_rule(ctx, "md_table", dyn%md_phi(size(dyn%md_phi)) - dyn%md_phi(1) < 360.0_wp, &
-        "the angles must lie within one turn (last - first < 360 deg; the table repeats every turn), got "// &
-        real_str(dyn%md_phi(size(dyn%md_phi)) - dyn%md_phi(1))//" deg", error)
+      if (dyn%cycle_deg == 360.0_wp) then
+        call require_rule(ctx, "md_table", dyn%md_phi(size(dyn%md_phi)) - dyn%md_phi(1) < 360.0_wp, &
+          "the angles must lie within one turn (last - first < 360 deg; the table repeats every turn), got "// &
+          real_str(dyn%md_phi(size(dyn%md_phi)) - dyn%md_phi(1))//" deg", error)
+      else
+        call require_rule(ctx, "md_table", dyn%md_phi(size(dyn%md_phi)) - dyn%md_phi(1) < dyn%cycle_deg, &
+          "the angles must lie within one cycle (last - first < "//real_str(dyn%cycle_deg)//" deg, cycle = "// &
+          int_str(nint(dyn%cycle_deg))//"; the table repeats every cycle), got "// &
+          real_str(dyn%md_phi(size(dyn%md_phi)) - dyn%md_phi(1))//" deg", error)
+      end if
       if (allocated(error)) return
     end if
     dyn%j_rotor = optional_default(j_rotor, 0.0_wp)
@@ -143,20 +168,30 @@ contains
     end if
   end subroutine read_dynamics_settings
 
-  !> A steady cycle covers exactly one turn: the steps phi_start + (k-1) dphi, k = 1..n, end
-  !> at phi_start + 360 deg.
-  pure subroutine require_one_turn(ctx, dphi, n, error)
+  !> A steady cycle covers exactly one turn (or its cycle, `cycle_deg` = 720: two turns): the
+  !> steps phi_start + (k-1) dphi, k = 1..n, end at phi_start + 360 deg (+ 720 deg).
+  pure subroutine require_one_turn(ctx, dphi, n, error, cycle_deg)
     type(deck_context_t), intent(in) :: ctx
     !> Crank step, deg.
     real(wp), intent(in) :: dphi
     !> Number of steps.
     integer, intent(in) :: n
     type(error_t), allocatable, intent(out) :: error
-    real(wp) :: span
+    !> The deck's cycle, deg (default 360).
+    real(wp), intent(in), optional :: cycle_deg
+    real(wp) :: span, whole
+    whole = 360.0_wp
+    if (present(cycle_deg)) whole = cycle_deg
     span = real(n - 1, wp) * dphi
-    call require_rule(ctx, "dphi", abs(span - 360.0_wp) <= 1.0e-9_wp * 360.0_wp, &
-      "the steps must cover exactly one turn of the crank with a steady cycle: (n - 1)*dphi = "// &
-      real_str(span)//" deg, not 360", error)
+    if (whole == 360.0_wp) then
+      call require_rule(ctx, "dphi", abs(span - 360.0_wp) <= 1.0e-9_wp * 360.0_wp, &
+        "the steps must cover exactly one turn of the crank with a steady cycle: (n - 1)*dphi = "// &
+        real_str(span)//" deg, not 360", error)
+    else
+      call require_rule(ctx, "dphi", abs(span - whole) <= 1.0e-9_wp * whole, &
+        "the steps must cover exactly the cycle of two turns with cycle = "//int_str(nint(whole))// &
+        ": (n - 1)*dphi = "//real_str(span)//" deg, not "//int_str(nint(whole)), error)
+    end if
   end subroutine require_one_turn
 
   !> The steady cycle a deck's settings ask for (dynamics = 'steady': the flywheel for delta;
@@ -181,9 +216,10 @@ contains
     real(wp), intent(in), optional :: j_links_constant
     if (allocated(dyn%md_phi)) then
       call cycle_setup(source, phi0, breaks, dyn%j_rotor, omega_mean, where, cycle, error, &
-                       dyn%md_phi * deg_to_rad, dyn%md_value)
+                       dyn%md_phi * deg_to_rad, dyn%md_value, span=2.0_wp * pi * (dyn%cycle_deg / 360.0_wp))
     else
-      call cycle_setup(source, phi0, breaks, dyn%j_rotor, omega_mean, where, cycle, error)
+      call cycle_setup(source, phi0, breaks, dyn%j_rotor, omega_mean, where, cycle, error, &
+                       span=2.0_wp * pi * (dyn%cycle_deg / 360.0_wp))
     end if
     if (allocated(error)) return
     if (present(j_links_constant)) cycle%j_links_constant = j_links_constant

@@ -2,7 +2,7 @@
 !> (J_red, dJ_red, M_red; with a steady cycle also dT, omega1, eps1, t), the figures of the
 !> cycle (the DYNAMICS block and JSON "dynamics") and the self-check M1 = M_d.
 module kinetostat_dynamics_table
-  use kinetostat_kinds, only: wp, rad_to_deg, pi
+  use kinetostat_kinds, only: wp, rad_to_deg
   use kinetostat_step_table, only: step_table_t, col_moment, col_component, col_other
   use kinetostat_run_tally, only: dynamics_figures_t
   use kinetostat_dynamics, only: cycle_t, motion_t, dynamics_none, dynamics_reduced, dynamics_steady, dynamics_given
@@ -30,6 +30,7 @@ contains
     end if
     call table%echo_text("DYNAMICS", dynamics_mode_name(dyn%mode))
     if (dyn%mode == dynamics_steady) call table%echo_real("DELTA", dyn%delta, "")
+    if (dyn%cycle_deg /= 360.0_wp) call table%echo_real("CYCLE", dyn%cycle_deg, "deg (two turns)")
     call table%echo_real("J_ROTOR", dyn%j_rotor, "kg*m^2")
     if (dyn%mode == dynamics_given) call table%echo_real("J_FLYWHEEL", dyn%j_flywheel, "kg*m^2")
   end subroutine echo_dynamics
@@ -87,7 +88,7 @@ contains
     d%drive_table = allocated(cycle%drive_m)
     if (d%drive_table) then
       ! a driving-moment table: its mean, the scale it was given and its extremes
-      d%m_d = -cycle%load_work / (2.0_wp * pi)
+      d%m_d = -cycle%load_work / cycle%span
       d%m_d_scale = cycle%drive_scale
       d%m_d_max = maxval(cycle%drive_m)
       d%m_d_min = minval(cycle%drive_m)

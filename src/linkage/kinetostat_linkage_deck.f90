@@ -8,7 +8,7 @@
 module kinetostat_linkage_deck
   use kinetostat_kinds, only: wp, g_default, deg_to_rad
   use kinetostat_error, only: error_t
-  use kinetostat_text, only: int_str, lower, is_name
+  use kinetostat_text, only: int_str, lower, is_name, real_str
   use kinetostat_deck, only: values_out_of_memory, longest_quoted, begin_group, max_deck_array, &
     deck_context_t, unset_bits, deck_source_t, namelist_probe_t, &
     deck_error, is_set, require_set, require_nonnegative, require_rule, require_per_step, optional_default, count_values, &
@@ -16,15 +16,17 @@ module kinetostat_linkage_deck
   use kinetostat_vec2, only: unit_at, magnitude
   use kinetostat_linkage, only: linkage_t, pair_r, pair_p
   use kinetostat_linkage_structure, only: analyse_structure
+  use kinetostat_dynamics, only: dynamics_steady
+  use kinetostat_dynamics_deck, only: dynamics_deck_t, read_dynamics_settings, md_table_capacity
   implicit none
   private
   public :: linkage_deck_t, linkage_schedule_t, read_linkage_deck, linkage_template
-  public :: linkage_drive_values, linkage_load_value
+  public :: linkage_drive_values, linkage_load_value, linkage_schedule_at
 
   !> Capacities of the lists.
-  integer, parameter :: max_links = 24, max_pairs = 36, max_drives = 4, max_forces = 16, max_moments = 16
+  integer, parameter :: max_links = 48, max_pairs = 72, max_drives = 8, max_forces = 32, max_moments = 32
   !> Capacity of a drive's list of values.
-  integer, parameter :: max_list = 3601
+  integer, parameter :: max_list = 14401
   !> A load window's ends are taken this much wider (the drive's unit: deg or m), so that a
   !> step landing on an end by roundoff of start + (k-1)*step counts as inside.
   real(wp), parameter :: window_tol = 1.0e-9_wp
@@ -138,6 +140,8 @@ module kinetostat_linkage_deck
     real(wp), allocatable :: step_values(:)
     !> The deck's link numbers of the forces' and moments' links, pair names of the drives.
     character(len=16), allocatable :: drive_pair(:)
+    !> The machine dynamics settings (dynamics = 'none' unless given).
+    type(dynamics_deck_t) :: dyn
   end type linkage_deck_t
 
   !> The commented template deck (a crank-rocker four-bar).
@@ -161,6 +165,8 @@ module kinetostat_linkage_deck
     "  drive(1)%pair = 'A', drive(1)%start = 0, drive(1)%step = 15, drive(1)%omega = 20", &
     "  force(1)%link = 2, force(1)%at = 0.25, 0.1, force(1)%angle = -90, force(1)%value = 50", &
     "  moment(1)%link = 3, moment(1)%value = -20", &
+    "  ! machine dynamics (docs/dynamics.md): omega is then the mean speed; the flywheel for delta", &
+    "  ! dynamics = 'steady', delta = 0.05, j_rotor = 0", &
         "/"]
 
 contains
@@ -201,13 +207,20 @@ contains
     character(len=:), allocatable :: p
     integer :: nl, np, nd, nf, nm, k, i, id, a, b, count, nsteps, n_values, frame_no, cols
     real(wp) :: d
-    namelist /linkage/ title, frame, g, gravity_angle, n, link, pair, drive, force, moment, step_values
+    !> Machine dynamics variables (see kinetostat_dynamics_deck): the mode, delta, the rotor
+    !> and the flywheel (kg*m^2; kg with a sliding drive), the cycle (deg), the driving-moment
+    !> table (pairs deg, N*m).
+    character(len=text_bytes * 16) :: dynamics
+    real(wp) :: delta, j_rotor, j_flywheel, cycle, md_table(md_table_capacity)
+    namelist /linkage/ title, frame, g, gravity_angle, n, link, pair, drive, force, moment, step_values, &
+      dynamics, delta, j_rotor, j_flywheel, cycle, md_table
 
     call begin_group(source, group_name, ctx, error)
     if (allocated(error)) return
     allocate (title)
     title = ""
     frame = 0.0_wp; g = unset; gravity_angle = unset; n = unset
+    dynamics = ""; delta = unset; j_rotor = unset; j_flywheel = unset; cycle = unset; md_table = unset
     allocate (drive(max_drives))
     capacity = deck_array_capacities(source, ctx%group, [character(len=11) :: "step_values"])
     allocate (step_values(capacity(1)), source=unset, stat=stat)
@@ -496,7 +509,51 @@ contains
     end do
 
     call analyse_structure(deck%mech, ctx%path//": &"//ctx%group, error)
+    if (allocated(error)) return
+    call read_dynamics(error)
   contains
+    !> The machine dynamics (docs/dynamics.md) of a linkage with one drive: reduced to it
+    !> (a turning drive: kg*m^2, N*m; a sliding one: kg, N); a steady cycle needs a turning
+    !> drive by start and step over the cycle at the constant mean speed omega.
+    subroutine read_dynamics(error)
+      type(error_t), allocatable, intent(out) :: error
+      logical :: wanted, turning
+      real(wp) :: span, whole
+      wanted = len_trim(dynamics) > 0 .and. trim(adjustl(dynamics)) /= "none"
+      if (wanted) then
+        call require_rule(ctx, "drive(2)", nd == 1, "the machine dynamics reduces the machine to one input: a "// &
+          "linkage of "//int_str(nd)//" drives (W = "//int_str(nd)//") has no single reduced moment of inertia; "// &
+          "give one drive", error)
+        if (allocated(error)) return
+        turning = deck%mech%pairs(deck%mech%drives(1)%pair)%kind == pair_r
+        call require_rule(ctx, "dynamics", turning .or. trim(adjustl(dynamics)) == "reduced", "a sliding drive's "// &
+          "stroke goes out and back with no turn to make a cycle of: only dynamics = 'reduced' (reduced to the "// &
+          "stroke: J_red in kg, M_red in N)", error)
+        if (allocated(error)) return
+      end if
+      call read_dynamics_settings(ctx, dynamics, delta, j_rotor, j_flywheel, optional_default(drive(1)%omega, 0.0_wp), &
+        deck%dyn, error, md_table, cycle)
+      if (allocated(error)) return
+      if (deck%dyn%mode < dynamics_steady) return
+      call require_rule(ctx, "drive(1)%values", .not. deck%listed(1), "a steady cycle needs the drive's law by "// &
+        "start and step over the cycle, not a list of values", error)
+      if (allocated(error)) return
+      call require_rule(ctx, "drive(1)%omega_column", deck%omega_column(1) == 0 .and. deck%eps_column(1) == 0, &
+        "a steady cycle finds the speed and acceleration (omega is the mean speed): no columns of them", error)
+      if (allocated(error)) return
+      call require_rule(ctx, "drive(1)%eps", deck%eps(1) == 0.0_wp, "a steady cycle finds the acceleration from the "// &
+        "true motion: leave eps out", error)
+      if (allocated(error)) return
+      whole = deck%dyn%cycle_deg
+      span = real(deck%n - 1, wp) * deck%step(1)
+      call require_rule(ctx, "drive(1)%step", abs(span - whole) <= 1.0e-9_wp * whole, "the steps must cover "// &
+        "exactly the cycle ("//int_str(nint(whole))//" deg) with a steady cycle: (n - 1)*step = "//real_str(span)// &
+        " deg, not "//int_str(nint(whole)), error)
+      if (allocated(error)) return
+      call require_rule(ctx, "step_values", .not. (any(deck%force_load%column > 0) .or. &
+        any(deck%moment_load%column > 0)), "a steady cycle needs every load at any drive angle: give it as a "// &
+        "constant or a window, not per step", error)
+    end subroutine read_dynamics
     !> Number of leading true entries.
     pure integer function leading(given)
       logical, intent(in) :: given(:)
@@ -633,10 +690,22 @@ contains
       else
         x = deck%start(1) + real(k - 1, wp) * deck%step(1)
       end if
-      linkage_load_value = merge(sched%value, sched%idle, x >= sched%phi_on - window_tol .and. x <= sched%phi_off + window_tol)
+      linkage_load_value = linkage_schedule_at(sched, x)
     else
       linkage_load_value = sched%value
     end if
   end function linkage_load_value
+
+  !> A load's value when the first drive has the value x (its deck unit: deg or m): a
+  !> constant, or a window's value or idle (not a step_values column).
+  pure real(wp) function linkage_schedule_at(sched, x) result(value)
+    !> The load's schedule.
+    type(linkage_schedule_t), intent(in) :: sched
+    !> The first drive's value, deg or m.
+    real(wp), intent(in) :: x
+    value = sched%value
+    if (sched%window) value = merge(sched%value, sched%idle, x >= sched%phi_on - window_tol .and. &
+                                    x <= sched%phi_off + window_tol)
+  end function linkage_schedule_at
 
 end module kinetostat_linkage_deck

@@ -4,7 +4,7 @@
 !> analysis, and the legacy table layout.
 module kinetostat_linkage_layout
   use, intrinsic :: iso_fortran_env, only: int64
-  use kinetostat_kinds, only: wp, rad_to_deg, deg_to_rad
+  use kinetostat_kinds, only: wp, rad_to_deg, deg_to_rad, pi
   use kinetostat_deck, only: deck_source_t
   use kinetostat_error, only: error_t, out_of_memory
   use kinetostat_text, only: int_str, real_str
@@ -24,6 +24,12 @@ module kinetostat_linkage_layout
   use kinetostat_linkage, only: linkage_t, linkage_step_t, pair_r, pair_p, linkage_reference_pose, linkage_assemble, &
     linkage_motion, linkage_statics, link_point_state, point_position, linkage_work_t
   use kinetostat_linkage_structure, only: structure_lines
+  use kinetostat_dynamics, only: cycle_t, motion_t, reduced_t, motion_at, dynamics_reduced, dynamics_steady
+  use kinetostat_dynamics_deck, only: deck_cycle
+  use kinetostat_dynamics_table, only: echo_dynamics, add_dynamics_columns, put_dynamics_values, &
+    put_dynamics_figures, note_drive_deviation
+  use kinetostat_linkage_dynamics, only: linkage_source_t, linkage_source_setup, linkage_reduced_at_pose, &
+    linkage_load_breaks
   use kinetostat_linkage_deck, only: linkage_deck_t, read_linkage_deck, linkage_template, linkage_drive_values, &
     linkage_load_value
   implicit none
@@ -47,6 +53,10 @@ module kinetostat_linkage_layout
   type, extends(mechanism_t) :: linkage_mechanism_t
     !> The validated deck.
     type(linkage_deck_t) :: deck
+    !> The deck as the source of the reduced quantities (a steady cycle).
+    type(linkage_source_t) :: source
+    !> The steady cycle (dynamics = 'steady' or 'given').
+    type(cycle_t) :: cycle
   contains
     procedure :: read_deck, solve, write_results, sketch, force_plan, mass_model, finish_run
   end type linkage_mechanism_t
@@ -68,7 +78,24 @@ contains
     class(linkage_mechanism_t), intent(inout) :: self
     type(deck_source_t), intent(in) :: source
     type(error_t), allocatable, intent(out) :: error
+    real(wp) :: phi0, j_crank
+    character(len=:), allocatable :: where
     call read_linkage_deck(source, self%deck, error)
+    if (allocated(error) .or. self%deck%dyn%mode < dynamics_steady) return
+    where = source%path//": &linkage"
+    phi0 = self%deck%start(1) * deg_to_rad
+    call linkage_source_setup(self%deck, phi0, 2.0_wp * pi * (self%deck%dyn%cycle_deg / 360.0_wp), where, &
+                              self%source, error)
+    if (allocated(error)) return
+    ! the driven link's own J_red when it turns on the frame (m |S - pivot|^2 + J, constant):
+    ! Merzalov's first group
+    j_crank = 0.0_wp
+    associate (mech => self%deck%mech, pr => self%deck%mech%pairs(self%deck%mech%drives(1)%pair))
+      if (pr%b == 0 .and. pr%a > 0) j_crank = mech%links(pr%a)%m * sum((mech%links(pr%a)%s - pr%at)**2) + &
+        mech%links(pr%a)%j
+    end associate
+    call deck_cycle(self%source, self%deck%dyn, phi0, linkage_load_breaks(self%deck), self%deck%omega(1), where, &
+                    self%cycle, error, j_links_constant=j_crank)
   end subroutine read_deck
 
   !> `kinetostat structure DECK`: the structural analysis of a `&linkage` deck as text.
@@ -269,7 +296,7 @@ contains
   !> Every step of rows first..last: poses by continuation from `q` (at drive values
   !> `dq_from`; both updated to the last step), then motion and reactions. Used by `solve`
   !> and the tests.
-  pure subroutine linkage_solve_steps(deck, path, first, last, q, dq_from, steps, error)
+  pure subroutine linkage_solve_steps(deck, path, first, last, q, dq_from, steps, error, motions, j_turn)
     !> Validated deck.
     type(linkage_deck_t), intent(in) :: deck
     !> Deck path for messages.
@@ -281,13 +308,35 @@ contains
     !> The steps' results.
     type(linkage_step_t), intent(out) :: steps(first:last)
     type(error_t), allocatable, intent(out) :: error
+    !> A steady cycle: the true motion of each step (the first drive's speed and
+    !> acceleration) and the flywheel and rotor turning with the driven link, kg*m^2 (their
+    !> inertia moment -j_turn eps on it, the reaction on the link it turns against).
+    type(motion_t), intent(in), optional :: motions(first:)
+    real(wp), intent(in), optional :: j_turn
     real(wp), allocatable :: dq(:), dv(:), da(:), fval(:), mval(:)
     type(linkage_work_t) :: work
-    integer :: k, i, nd
+    !> The linkage with the flywheel's moments as two more moments (a steady cycle).
+    type(linkage_t) :: turning
+    integer :: k, i, nd, nm
     nd = size(deck%mech%drives)
-    allocate (dq(nd), dv(nd), da(nd), fval(size(deck%force_load)), mval(size(deck%moment_load)))
+    nm = size(deck%moment_load)
+    allocate (dq(nd), dv(nd), da(nd), fval(size(deck%force_load)), mval(nm))
+    if (present(motions)) then
+      turning = deck%mech
+      associate (pr => deck%mech%pairs(deck%mech%drives(1)%pair))
+        turning%moment_link = [deck%mech%moment_link, pr%a]
+        if (pr%b > 0) turning%moment_link = [turning%moment_link, pr%b]
+      end associate
+      deallocate (mval)
+      allocate (mval(size(turning%moment_link)))
+    end if
+    !GCC$ novector
     do k = first, last
       call linkage_drive_values(deck, k, dq, dv, da)
+      if (present(motions)) then
+        dv(1) = motions(k)%omega
+        da(1) = motions(k)%eps
+      end if
       call linkage_assemble(deck%mech, dq_from, dq, q, work, error)
       if (allocated(error)) then
         error%message = where()//": "//error%message
@@ -304,10 +353,17 @@ contains
       do i = 1, size(fval)
         fval(i) = linkage_load_value(deck, deck%force_load(i), k)
       end do
-      do i = 1, size(mval)
+      !GCC$ novector
+      do i = 1, nm
         mval(i) = linkage_load_value(deck, deck%moment_load(i), k)
       end do
-      call linkage_statics(deck%mech, fval, mval, steps(k), work, error)
+      if (present(motions)) then
+        mval(nm + 1) = -j_turn * motions(k)%eps
+        if (size(mval) > nm + 1) mval(nm + 2) = j_turn * motions(k)%eps
+        call linkage_statics(turning, fval, mval, steps(k), work, error)
+      else
+        call linkage_statics(deck%mech, fval, mval, steps(k), work, error)
+      end if
       if (allocated(error)) then
         error%message = where()//": the reactions are undetermined (a dead position)"
         return
@@ -350,13 +406,17 @@ contains
     type(linkage_step_t), allocatable :: steps(:)
     real(wp), allocatable :: q(:), dq(:), residual(:), mismatch(:)
     character(len=:), allocatable :: input, effort
+    !> The motion and reduced quantities of each step (a dynamics stage).
+    type(motion_t), allocatable :: motions(:)
     integer :: first, last, k, d, nd, np, nq, stat
     real(wp) :: gap
+    logical :: translating
     associate (mech => self%deck%mech)
       nd = size(mech%drives)
       np = size(mech%pairs)
       nq = 3 * size(mech%links)
       call table%block_range(self%deck%n, first, last)
+      translating = mech%pairs(mech%drives(1)%pair)%kind == pair_p
       if (table%first_block()) then
         allocate (table%columns(0))
         do d = 1, nd
@@ -385,9 +445,12 @@ contains
             call table%add_column(effort, "N", col_component)
           end if
         end do
+        call add_dynamics_columns(table, self%deck%dyn%mode, translating)
+        call put_dynamics_figures(table, self%deck%dyn%mode, self%cycle, self%deck%dyn%delta)
         table%input_column = 1
         if (len_trim(self%deck%title) > 0) table%subtitle = trim(self%deck%title)
         call echo_deck(self%deck, table)
+        call echo_dynamics(table, self%deck%dyn, translating)
         ! the continuation starts at the reference position
         allocate (dq(nd))
         do d = 1, nd
@@ -403,8 +466,21 @@ contains
           " steps", int(last - first + 1, int64) * storage_size(steps) / 8)
         return
       end if
-      call linkage_solve_steps(self%deck, table%deck, first, last, q, dq, steps, error)
+      allocate (motions(first:last), stat=stat)
+      if (stat /= 0) then
+        call out_of_memory(error, "the motions of a block of "//int_str(last - first + 1)// &
+          " steps", int(last - first + 1, int64) * storage_size(motions) / 8)
+        return
+      end if
+      if (self%deck%dyn%mode >= dynamics_steady) then
+        call cycle_motions(self%deck, self%source, self%cycle, first, motions)
+        call linkage_solve_steps(self%deck, table%deck, first, last, q, dq, steps, error, motions, &
+                                 self%cycle%j_flywheel + self%cycle%j_rotor)
+      else
+        call linkage_solve_steps(self%deck, table%deck, first, last, q, dq, steps, error)
+      end if
       if (allocated(error)) return
+      if (self%deck%dyn%mode == dynamics_reduced) call reduced_motions(self%deck, first, steps, motions)
       table%carry = [q, dq]
       call table%allocate_rows(last - first + 1, error)
       if (allocated(error)) return
@@ -415,7 +491,11 @@ contains
         residual(k) = steps(k)%residual
         mismatch(k) = steps(k)%mismatch
         gap = max(gap, steps(k)%solver_gap)
+        call put_dynamics_values(table, k - first + 1, self%deck%dyn%mode, motions(k))
       end do
+      if (self%deck%dyn%mode >= dynamics_steady) then
+        call note_drive_deviation(table, [(steps(k)%effort(1), k = first, last)], motions, self%cycle%j_flywheel)
+      end if
       if (table%kinematics_wanted) then
         do k = first, last
           call put_kinematics(mech, table, k - first + 1, steps(k))
@@ -443,6 +523,51 @@ contains
         real_str(gap)//" of the largest reaction")
     end if
   end subroutine finish_run
+  !> The true motion of the steps (first:last) of a steady cycle at the first drive's values.
+  pure subroutine cycle_motions(deck, source, cycle, first, motions)
+    type(linkage_deck_t), intent(in) :: deck
+    type(linkage_source_t), intent(in) :: source
+    type(cycle_t), intent(in) :: cycle
+    !> The first step.
+    integer, intent(in) :: first
+    type(motion_t), intent(inout) :: motions(first:)
+    real(wp) :: dq(1), dv(1), da(1)
+    integer :: k
+    !GCC$ novector
+    do k = first, ubound(motions, 1)
+      call linkage_drive_values(deck, k, dq, dv, da)
+      motions(k) = motion_at(source, cycle, dq(1))
+    end do
+  end subroutine cycle_motions
+
+  !> The reduced quantities of each step (dynamics = 'reduced': the deck's own motion), from its
+  !> poses and its loads.
+  pure subroutine reduced_motions(deck, first, steps, motions)
+    type(linkage_deck_t), intent(in) :: deck
+    !> The first step.
+    integer, intent(in) :: first
+    type(linkage_step_t), intent(in) :: steps(first:)
+    type(motion_t), intent(inout) :: motions(first:)
+    real(wp) :: fval(size(deck%force_load)), mval(size(deck%moment_load))
+    type(reduced_t) :: red
+    integer :: k, i
+    !GCC$ novector
+    do k = first, ubound(motions, 1)
+      !GCC$ novector
+      do i = 1, size(fval)
+        fval(i) = linkage_load_value(deck, deck%force_load(i), k)
+      end do
+      !GCC$ novector
+      do i = 1, size(mval)
+        mval(i) = linkage_load_value(deck, deck%moment_load(i), k)
+      end do
+      red = linkage_reduced_at_pose(deck%mech, steps(k)%q, fval, mval)
+      motions(k)%omega = deck%omega(1)
+      motions(k)%j = red%j + deck%dyn%j_rotor
+      motions(k)%dj = red%dj
+      motions(k)%m = red%m
+    end do
+  end subroutine reduced_motions
 
   !> One row of the step table.
   pure subroutine fill_row(deck, k, s, v)

@@ -1,7 +1,8 @@
 !> What a run comes to, for parameter studies and the legacy table's footer: per column
 !> the largest and smallest value with the input angle where each occurs and the mean over
-!> the input angle; the work of the driving moment (or force) over the run; and the warning
-!> when the step is too coarse to catch a force peak next to a load that switches on or off.
+!> the input angle; the work of the driving moment (or force) over the run; the warning
+!> when the step is too coarse to catch a force peak next to a load that switches on or off;
+!> and the warning when the steps miss the peak of a load table (table_peak_warning).
 module kinetostat_summary
   !$ use omp_lib, only: omp_get_max_threads
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
@@ -13,7 +14,8 @@ module kinetostat_summary
   use kinetostat_escape, only: csv_field
   implicit none
   private
-  public :: column_stats_t, column_stats, summarized, drive_work, coarse_step_warning, tally_rows
+  public :: column_stats_t, column_stats, summarized, drive_work, coarse_step_warning, tally_rows, table_peak_warning, &
+    table_peak_share
   public :: summary_header, summary_row, summary_values, coarse_step_limit, dynamics_prefix, override_fields, &
     override_has_column
 
@@ -25,6 +27,9 @@ module kinetostat_summary
   real(wp), parameter :: tie_rel = 1.0e-12_wp
   !> Input steps coarser than this (deg) may miss a force peak next to a load edge.
   real(wp), parameter :: coarse_step_limit = 5.0_wp
+  !> A load table's extreme point between two steps is missed when the load there differs
+  !> from its values at both steps by more than this share of the table's range.
+  real(wp), parameter :: table_peak_share = 0.05_wp
   !> Scale of the values in the sums kept for overflow (a power of two: exact): a value
   !> below 1.8e308 becomes one below 1.4e154, so sums of 10^6 of them stay finite.
   real(wp), parameter :: value_scale = scale(1.0_wp, -512)
@@ -403,6 +408,103 @@ contains
       if (lower(table%columns(table%input_column)%name) == "phi3rel") t = "dphi3"
     end function step_variable
   end subroutine coarse_step_warning
+
+  !> A warning when the steps miss the peak of a load table: a point of the table that is a
+  !> local extreme (above or below both neighbouring points) lies strictly between the
+  !> positions of two consecutive steps, and the load there differs from the load at both
+  !> steps by more than table_peak_share of the table's range (largest - smallest value). The
+  !> worst such point (the largest of the two differences' smaller) is named. Unallocated
+  !> when the steps catch every peak. Steps whose positions jump by more than half the
+  !> table's span (the wrap of an angle past the table's end) enclose no point.
+  pure subroutine table_peak_warning(name, unit, x, v, q, abscissa, input_name, input_unit, input, step_name, warning)
+    !> The table's deck variable ("force(1)%table") and the load's unit ("N").
+    character(*), intent(in) :: name, unit
+    !> The table's positions (increasing) and values.
+    real(wp), intent(in) :: x(:), v(:)
+    !> Every step's position in the table's abscissa.
+    real(wp), intent(in) :: q(:)
+    !> The abscissa as a message names a position ("phi1 =", "the angle of link 3 ="), with its unit
+    !> ("deg", "m").
+    character(*), intent(in) :: abscissa(2)
+    !> The input coordinate's name and unit ("phi1", "deg") and its value at every step.
+    character(*), intent(in) :: input_name, input_unit
+    real(wp), intent(in) :: input(:)
+    !> The deck variable of the step ("dphi").
+    character(*), intent(in) :: step_name
+    character(len=:), allocatable, intent(out) :: warning
+    real(wp) :: range, tol, lo, hi, va, vb, miss, worst
+    integer :: np, k, j, jw, kw
+    np = size(x)
+    if (np < 3 .or. size(q) < 2) return
+    range = maxval(v) - minval(v)
+    if (.not. range > 0.0_wp) return
+    tol = 1.0e-9_wp * max(x(np) - x(1), abs(x(1)), abs(x(np)))
+    worst = 0.0_wp
+    jw = 0
+    kw = 0
+    do k = 1, size(q) - 1
+      lo = min(q(k), q(k + 1))
+      hi = max(q(k), q(k + 1))
+      if (hi - lo > 0.5_wp * (x(np) - x(1))) cycle
+      j = first_above(lo + tol)
+      if (j == 0) cycle
+      va = at(q(k))
+      vb = at(q(k + 1))
+      do while (j < np)
+        if (.not. x(j) < hi - tol) exit
+        if (j > 1) then
+          if ((v(j) > v(j - 1) .and. v(j) > v(j + 1)) .or. (v(j) < v(j - 1) .and. v(j) < v(j + 1))) then
+            miss = min(abs(v(j) - va), abs(v(j) - vb))
+            if (miss > table_peak_share * range .and. miss > worst) then
+              worst = miss
+              jw = j
+              kw = k
+            end if
+          end if
+        end if
+        j = j + 1
+      end do
+    end do
+    if (jw == 0) return
+    warning = name//": its point at "//trim(abscissa(1))//" "//brief(x(jw))//" "//trim(abscissa(2))//" ("//brief(v(jw))//" "// &
+      unit//", a local "//merge("maximum", "minimum", v(jw) > v(jw - 1))//") lies between the steps at "// &
+      input_name//" = "//brief(input(kw))//" "//input_unit//" and "//input_name//" = "//brief(input(kw + 1))//" "// &
+      input_unit//", where the load is "//brief(at(q(kw)))//" "//unit//" and "//brief(at(q(kw + 1)))//" "//unit// &
+      ": the steps miss the load's peak and the forces it causes; rerun with a finer step (e.g. --set "// &
+      step_name//"=0.5) or put a step on the point"
+  contains
+    !> The first point above position y (binary search), 0 when none.
+    pure integer function first_above(y)
+      real(wp), intent(in) :: y
+      integer :: a, b, m
+      first_above = 0
+      if (.not. x(np) > y) return
+      a = 0
+      b = np
+      do while (b - a > 1)
+        m = (a + b) / 2
+        if (x(m) > y) then
+          b = m
+        else
+          a = m
+        end if
+      end do
+      first_above = b
+    end function first_above
+    !> The table's value at position y (linear between the points; the end values outside).
+    pure real(wp) function at(y)
+      real(wp), intent(in) :: y
+      integer :: i
+      i = first_above(y)
+      if (i == 0) then
+        at = v(np)
+      else if (i == 1) then
+        at = v(1)
+      else
+        at = v(i - 1) + (v(i) - v(i - 1)) * (y - x(i - 1)) / (x(i) - x(i - 1))
+      end if
+    end function at
+  end subroutine table_peak_warning
 
   !> x for a message: two decimals without trailing zeros ("5342.17", "120", "0.5"), or
   !> exponent form for very large or small magnitudes.

@@ -26,6 +26,8 @@ module kinetostat_run
   use kinetostat_drawing, only: drawing_t, drawing_from_sketch
   use kinetostat_plans_base, only: plans_t
   use kinetostat_plans, only: build_plans
+  use kinetostat_plans_structure, only: structure_lines_of
+  use kinetostat_escape, only: table_text
   use kinetostat_plans_sheet, only: plans_sheet_t, plans_sheet
   use kinetostat_plans_json, only: write_plans_json
   use kinetostat_plans_draw, only: draw_plans_sheet
@@ -107,6 +109,9 @@ module kinetostat_run
     integer :: at_step = 0
     !> JSON with --at: the graphical method's plans of that row instead of the rows.
     logical :: plans = .false.
+    !> With --at (format_plans): the structural analysis of the mechanism drawn at that row
+    !> instead of its plans (`kinetostat structure` of a deck without an analysis of its own).
+    logical :: structure = .false.
     !> The student's header (legacy table and sheets): date and time of the run, surname,
     !> group, variant (all allocated, or none).
     character(len=:), allocatable :: student_stamp, student_name, student_group, student_variant
@@ -499,7 +504,8 @@ contains
     type(plans_t) :: plans
     type(plans_sheet_t) :: plans_geometry
     type(sheet_t) :: sheet
-    integer :: k
+    character(len=160), allocatable :: lines(:)
+    integer :: k, i
     ! a kind without a drawing of its mechanism (a design kind keeps no rows for one)
     call mech%sketch(topo)
     if (.not. topo%available) then
@@ -519,6 +525,17 @@ contains
     if (allocated(error)) return
     call mech%force_plan(table, k, drawing, error)
     if (allocated(error)) return
+    if (options%structure) then
+      call structure_lines_of(topo, drawing, table, k, options%lang, lines)
+      call out%put(" DECK: "//table_text(table%deck))
+      if (allocated(table%subtitle)) then
+        if (len_trim(table%subtitle) > 0) call out%put(" TITLE: "//table_text(trim(table%subtitle)))
+      end if
+      do i = 1, size(lines)
+        call out%put(" "//trim(lines(i)))
+      end do
+      return
+    end if
     if (options%plans .or. options%format == format_plans) then
       ! the graphical method: as numbers (json), or its sheet (plans: SVG; dxf)
       call build_plans(topo, drawing, table, k, plans)

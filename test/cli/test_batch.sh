@@ -118,7 +118,7 @@ run_ks data/pr3207.nml --set "dynamics='steady'" --set delta=5
 expect_one_line_error set-true-error-delta 2 "data/pr3207.nml: &pr3207: delta: must be > 0 and < 1 \(got 5[.0]*\): "
 grep -q "from --set" "$err" && fail set-true-error-delta-blame "blamed on one --set: $(cat "$err")" || pass
 run_ks docs/examples/engine.nml --set "dynamics='steady'" --set delta=0.02
-expect_one_line_error set-true-error-cycle 2 "docs/examples/engine.nml: &assur: dphi: the steps must cover exactly one turn"
+expect_one_line_error set-true-error-cycle 2 "docs/examples/engine.nml: &assur: cycle: the steady cycle is one turn \\(cycle = 360, the default\\) but force\\(1\\)%table spans 720"
 grep -q "from --set\|missing" "$err" && fail set-true-error-cycle-blame "blamed or 'missing': $(cat "$err")" || pass
 run_ks data/pr3207_flywheel.nml --set m5=70 --set delta=5
 expect_one_line_error set-true-error-alone 2 "&pr3207: delta: must be > 0 and < 1 \(got 5[.0]*\): .* \(from --set delta=5\)$"

@@ -222,8 +222,8 @@ rc=$?
 for d in 0.5 0.9 0.99; do
   run_ks "$fw" --set delta=$d --format json; cp "$out" "$cli_tmp/fw_d.json"; rc_a=$rc
   run_ks data/assur_pr3207_flywheel.nml --set delta=$d --format json; cp "$out" "$cli_tmp/twin_d.json"; rc_b=$rc
-  # the engine alone runs with delta = 0.285: a quarter of d needs a flywheel
-  run_ks docs/examples/engine.nml --set "dynamics='steady'" --set n=25 --set delta="$(python3 -c "print($d / 4)")" --format json
+  # the engine alone runs with delta = 0.978 over its cycle of two turns: a quarter of d needs a flywheel
+  run_ks docs/examples/engine.nml --set "dynamics='steady'" --set cycle=720 --set delta="$(python3 -c "print($d / 4)")" --format json
   rc_c=$rc
   if [ "$rc_a$rc_b$rc_c" = 000 ] && python3 - "$cli_tmp/fw_d.json" "$cli_tmp/twin_d.json" "$out" "$d" <<'PY'
 import json, sys
@@ -259,7 +259,7 @@ expect_input_error dynamics-loads-huge "&pr3207: delta: with the loads' work ove
 # a geometry error met by the cycle names the dyad, its lengths and the angle, as the plain run
 # does (a rod shorter than the crank)
 expect_input_error dynamics-cycle-geometry "&assur: dynamics: the cycle at phi1 = [0-9.]+ deg: dyad 1 \(RRP, links 2-3\): cannot be assembled: distance from its joint to the guide [0-9.E-]+ m exceeds l2 = 0.2000000000E-1 m" \
-  "$(deck_with dyn_short docs/examples/engine.nml "s/dyad(1)%l2 = 0.2,/dyad(1)%l2 = 0.02,/; s/phi_start = 0, dphi = 15, n = 49/phi_start = 0, dphi = 15, n = 25, dynamics = 'steady', delta = 0.05/")" 3
+  "$(deck_with dyn_short docs/examples/engine.nml "s/dyad(1)%l2 = 0.2,/dyad(1)%l2 = 0.02,/; s/phi_start = 0, dphi = 15, n = 49/phi_start = 0, dphi = 15, n = 49, dynamics = 'steady', delta = 0.05, cycle = 720/")" 3
 
 # --- a machine whose only inertia is its flywheel (every link massless, j_rotor = 0, J_red = 0):
 # J_fw = dE_max / (delta omega_m^2) exactly, checked by its own law: the true motion's delta is
@@ -290,3 +290,115 @@ PY
   then pass; else fail "dynamics-massless-$d" "exit $rc: $(head -c 300 "$err")"; fi
 done
 expect_input_error dynamics-phi-start-huge "&pr3207: phi_start: 0.1000000000E\+21 deg is too large" "$(deck_with dyn_phuge "$fw" "s/phi_start = 0/phi_start = 1e20/")"
+
+# --- a cycle of two turns (cycle = 720: the four-stroke engine): checked by its own law at 0.5 deg
+# steps (tools/cycle_check.py: M1 = M_d at every step, M_d = -(1/4 pi) of the loads' work over
+# both turns, dT closes over 720 deg and is the integral of M_d + M_red, the energy equation,
+# (omega_max - omega_min)/omega_m = delta, the second turn's M_red not the first's)
+eng=data/assur_engine_flywheel.nml
+run_ks "$eng" --set dphi=0.5 --set n=1441 --format json; cp "$out" "$cli_tmp/eng720.json"
+if [ "$rc" -eq 0 ] && python3 tools/cycle_check.py "$cli_tmp/eng720.json" 720 0.02 >"$cli_tmp/cycle_check.out" 2>&1; then pass
+else fail dynamics-cycle-720-law "exit $rc: $(cat "$cli_tmp/cycle_check.out") $(head -c 300 "$err")"; fi
+# the checker must fail on a run whose M_d is not its cycle's (M_d of one turn: 1 % off here)
+python3 - "$cli_tmp/eng720.json" "$cli_tmp/eng720_bad.json" <<'PY'
+import json, sys
+x = json.load(open(sys.argv[1])); x["dynamics"]["M_d"] *= 1.01
+json.dump(x, open(sys.argv[2], "w"))
+PY
+if ! python3 tools/cycle_check.py "$cli_tmp/eng720_bad.json" 720 0.02 >"$cli_tmp/cycle_check.out" 2>&1 && \
+   grep -q "max |M1 - M_d|" "$cli_tmp/cycle_check.out"; then pass
+else fail dynamics-cycle-720-law-must-fail "a wrong M_d passed: $(cat "$cli_tmp/cycle_check.out")"; fi
+# 'given' with the flywheel found gives back delta over the two turns; a driving-moment table
+# of constant shape over the cycle of 720 deg is the constant M_d (same flywheel, 1e-9)
+jfw=$(python3 -c "import json; print(repr(json.load(open('$cli_tmp/eng720.json'))['dynamics']['J_flywheel']))")
+run_ks "$(deck_with eng_given "$eng" "s/dynamics = 'steady', delta = 0.02/dynamics = 'given', j_flywheel = $jfw/")" --format json
+if [ "$rc" -eq 0 ] && python3 -c "import json,sys; d=json.load(open(sys.argv[1]))['dynamics']; sys.exit(0 if abs(d['delta']-0.02) <= 1e-9*0.02 else 1)" "$out"
+then pass; else fail dynamics-cycle-720-given "exit $rc: $(head -c 300 "$err")"; fi
+run_ks "$(deck_with eng_md "$eng" "s/cycle = 720/cycle = 720, md_table = 0, -1, 400, -1/")" --format json
+if [ "$rc" -eq 0 ] && python3 - "$out" "$jfw" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))["dynamics"]; jfw = float(sys.argv[2])
+assert abs(d["J_flywheel"] - jfw) <= 1e-9 * jfw, (d["J_flywheel"], jfw)
+assert abs(d["M_d_scale"] - 38.97702985) <= 1e-6, d["M_d_scale"]
+PY
+then pass; else fail dynamics-cycle-720-md-table "exit $rc: $(head -c 300 "$err")"; fi
+expect_input_error dynamics-cycle-table-longer "&assur: cycle: the steady cycle is one turn \(cycle = 360, the default\) but force\(1\)%table spans 720.0000000 deg of the crank angle: give cycle = 720" \
+  "$(deck_with eng_360 "$eng" "s/, cycle = 720//; s/dphi = 5, n = 145/dphi = 5, n = 73/")"
+expect_input_error dynamics-cycle-steps "&assur: dphi: the steps must cover exactly the cycle of two turns with cycle = 720: \(n - 1\)\*dphi = 360.0000000 deg, not 720" \
+  "$(deck_with eng_73 "$eng" "s/dphi = 5, n = 145/dphi = 5, n = 73/")"
+expect_input_error dynamics-cycle-value "&assur: cycle: must be 360 \(one turn\) or 720" "$(deck_with eng_540 "$eng" "s/cycle = 720/cycle = 540/")"
+expect_input_error dynamics-cycle-without "&assur: cycle: the cycle of the steady motion needs dynamics = 'steady' or 'given'" \
+  "$(deck_with eng_none "$eng" "s/dynamics = 'steady', delta = 0.02, //")"
+expect_input_error dynamics-cycle-md-table "&assur: md_table: the angles must lie within one cycle \(last - first < 720" \
+  "$(deck_with eng_md2 "$eng" "s/cycle = 720/cycle = 720, md_table = 0, 1, 720, 1/")"
+# --- a gas table of 1441 points (every 0.5 deg over 720 deg, the linear interpolant of the
+# engine's own table) is read and gives the engine's figures: the steady cycle's M_d and
+# flywheel, and every force of the 5 deg steps, within 1e-9
+python3 - "$eng" "$cli_tmp/eng1441.nml" <<'PY'
+import re, sys
+text = open(sys.argv[1]).read()
+body = re.search(r"force\(1\)%table = (.*?)\n/", text, re.S).group(1)
+nums = [float(v) for v in re.findall(r"-?[0-9.]+", body)]
+xs, vs = nums[0::2], nums[1::2]
+def at(x):
+    for i in range(len(xs) - 1):
+        if xs[i] <= x <= xs[i + 1]:
+            return vs[i] + (vs[i + 1] - vs[i]) * (x - xs[i]) / (xs[i + 1] - xs[i])
+pairs = ", ".join(f"{k / 2:g}, {at(k / 2)!r}" for k in range(1441))
+open(sys.argv[2], "w").write(re.sub(r"force\(1\)%table = .*?\n/", "force(1)%table = " + pairs + "\n/", text, flags=re.S))
+PY
+run_ks "$cli_tmp/eng1441.nml" --format json; cp "$out" "$cli_tmp/eng1441.json"; rc_a=$rc
+run_ks "$eng" --format json
+if [ "$rc_a$rc" = 00 ] && python3 - "$out" "$cli_tmp/eng1441.json" <<'PY'
+import json, sys
+a, b = (json.load(open(f)) for f in sys.argv[1:3])
+for key in ("M_d", "J_flywheel", "omega_min", "phi_omega_min"):
+    assert abs(a["dynamics"][key] - b["dynamics"][key]) <= 1e-9 * abs(a["dynamics"][key]), (key, a["dynamics"][key], b["dynamics"][key])
+assert [c["name"] for c in a["columns"]] == [c["name"] for c in b["columns"]]
+for ra, rb in zip(a["rows"], b["rows"]):
+    big = max(abs(v) for v in ra if v is not None)
+    for va, vb in zip(ra, rb):
+        assert abs(va - vb) <= 1e-9 * big, (ra[0], va, vb)
+PY
+then pass; else fail dynamics-table-1441-points "exit $rc_a $rc: $(head -c 300 "$err")"; fi
+
+# --- &linkage decks: the machine dynamics of a linkage with one drive. The twin of
+# data/pr3207_flywheel.nml in PR 3207's frame, links numbered as PR 3207's: every column both
+# have (the forces, M1, the reduced quantities, dT, omega1, eps1, t) within 1e-9 (kinetostat
+# diff --common), and the flywheel's figures; the comparison must fail with the ram 1 kg heavier
+run_ks data/linkage_pr3207_flywheel.nml --format json; cp "$out" "$cli_tmp/lk_fw.json"; rc_a=$rc
+run_ks data/linkage_pr3207_flywheel.nml --format csv; cp "$out" "$cli_tmp/lk_fw.csv"
+run_ks data/pr3207_flywheel.nml --format csv; cp "$out" "$cli_tmp/pr_fw.csv"
+"$KINETOSTAT" diff --common --rtol 1e-9 --atol 1e-9 "$cli_tmp/pr_fw.csv" "$cli_tmp/lk_fw.csv" >"$cli_tmp/lk_diff.out" 2>&1
+if [ "$rc_a" -eq 0 ] && [ $? -eq 0 ] && grep -q "^same: 6859 values agree" "$cli_tmp/lk_diff.out" && \
+   python3 - "$cli_tmp/lk_fw.json" "$cli_tmp/fw.json" <<'PY'
+import json, sys
+a, b = (json.load(open(f))["dynamics"] for f in sys.argv[1:3])
+for key in ("M_d", "J_red_max", "J_flywheel", "J_flywheel_textbook", "omega_max", "phi_omega_min", "delta", "period"):
+    assert abs(a[key] - b[key]) <= 1e-9 * abs(b[key]), (key, a[key], b[key])
+PY
+then pass; else fail dynamics-linkage-twin-pr3207 "exit $rc_a: $(head -3 "$cli_tmp/lk_diff.out")"; fi
+run_ks data/linkage_pr3207_flywheel.nml --set 'link(5)%m=61' --format csv
+if ! "$KINETOSTAT" diff --common --rtol 1e-9 --atol 1e-9 "$cli_tmp/pr_fw.csv" "$out" >"$cli_tmp/lk_diff.out" 2>&1; then pass
+else fail dynamics-linkage-twin-must-fail "a 1 kg heavier ram agreed: $(head -3 "$cli_tmp/lk_diff.out")"; fi
+# 'reduced' and 'steady' of the four-bar and the slider-crank equal their &assur twins'
+for twin in fourbar slider_crank; do
+  for mode in reduced steady; do
+    set_args=(--set "dynamics='$mode'"); [ "$mode" = steady ] && set_args+=(--set delta=0.05)
+    run_ks "data/linkage_$twin.nml" "${set_args[@]}" --format csv; cp "$out" "$cli_tmp/lk_t.csv"; rc_a=$rc
+    run_ks "data/assur_$twin.nml" "${set_args[@]}" --format csv --quiet
+    if [ "$rc_a$rc" = 00 ] && head -1 "$cli_tmp/lk_t.csv" | grep -q ",J_red,dJ_red,M_red" && \
+       "$KINETOSTAT" diff --common --rtol 1e-9 --atol 1e-9 "$out" "$cli_tmp/lk_t.csv" >"$cli_tmp/lk_diff.out" 2>&1; then pass
+    else fail "dynamics-linkage-twin-$twin-$mode" "exit $rc_a $rc: $(head -3 "$cli_tmp/lk_diff.out")"; fi
+  done
+done
+# the refusals: one line each, naming the variable
+lk=data/linkage_pr3207_flywheel.nml
+expect_input_error dynamics-linkage-two-drives "&linkage: drive\(2\): the machine dynamics reduces the machine to one input: a linkage of 2 drives" \
+  "$(deck_with lk_five data/fivebar.nml "s|^/$|  dynamics = 'reduced'\n/|")"
+expect_input_error dynamics-linkage-sliding-drive "&linkage: dynamics: a sliding drive's stroke goes out and back" \
+  "$(deck_with lk_slide data/linkage_slider_crank.nml "s|drive(1)%pair = 'A', drive(1)%start = 0, drive(1)%step = 30, drive(1)%omega = 50|drive(1)%pair = 'D', drive(1)%start = 0, drive(1)%step = 0.001, drive(1)%omega = 1|; s|^/$|  dynamics = 'steady', delta = 0.1\n/|")"
+expect_input_error dynamics-linkage-steps "&linkage: drive\(1\)%step: the steps must cover exactly the cycle \(360 deg\)" "$(deck_with lk_n "$lk" "s/n = 361/n = 181/")"
+expect_input_error dynamics-linkage-eps "&linkage: drive\(1\)%eps: a steady cycle finds the acceleration" "$(deck_with lk_eps "$lk" "s/drive(1)%omega = 7.5/drive(1)%omega = 7.5, drive(1)%eps = 1/")"
+expect_input_error dynamics-linkage-delta "&linkage: delta: must be > 0 and < 1" "$(deck_with lk_d "$lk" "s/delta = 0.04/delta = 2/")"
+expect_input_error dynamics-linkage-unknown "&linkage: dynamics: unknown value 'wobbly'" "$(deck_with lk_u "$lk" "s/'steady'/'wobbly'/")"

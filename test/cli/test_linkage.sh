@@ -28,10 +28,45 @@ run_ks data/class3.nml
 if [ "$rc" -eq 0 ] && grep -qF "STRUCTURE FORMULA: I(0,1) -> III(2,3,4,5)" "$out"; then pass
 else fail linkage-echo-structure "INPUT DATA does not echo the structure formula"; fi
 
-# structure of another kind: exit 2, one line
-run_ks structure data/assur_fourbar.nml
-if [ "$rc" -eq 2 ] && [ "$(wc -l <"$err")" -eq 1 ] && grep -q "only &linkage decks" "$err"; then pass
-else fail linkage-structure-other-kind "exit $rc: $(cat "$err")"; fi
+# structure of every linkage deck kind, from its model (the topology its sheets draw, the units
+# of its plans): PR 3207 with its frame numbered as in the deck, the T.FTN six-bar, PR 3050's
+# cylinder in its input unit, the generic engine
+lk_structure structure-pr3207 data/pr3207.nml en "STRUCTURE FORMULA: I(6,1) -> II(2,3) -> II(4,5)" \
+  "W = 3n - 2p5 - p4 = 3 x 5 - 2 x 7 - 0 = 1 = NUMBER OF DRIVES" "I(6,1)  INPUT LINK(S) (MECHANISM OF CLASS I)" \
+  "II(2,3)  DYAD (GROUP OF CLASS II, ORDER 2), KIND RPR" "II(4,5)  DYAD (GROUP OF CLASS II, ORDER 2), KIND RPP" \
+  "CLASS OF THE MECHANISM: II"
+lk_structure structure-pr3207-ru data/pr3207.nml ru "ФОРМУЛА СТРОЕНИЯ: I(6,1) -> II(2,3) -> II(4,5)" "КЛАСС МЕХАНИЗМА: II"
+lk_structure structure-sixbar data/sixbar.nml en "STRUCTURE FORMULA: I(6,1) -> II(2,3) -> II(4,5)" \
+  "II(2,3)  DYAD (GROUP OF CLASS II, ORDER 2), KIND RRR" "II(4,5)  DYAD (GROUP OF CLASS II, ORDER 2), KIND RRP"
+lk_structure structure-pr3050 data/pr3050.nml en "STRUCTURE FORMULA: I(4,1,2,3)" \
+  "W = 3n - 2p5 - p4 = 3 x 3 - 2 x 4 - 0 = 1 = NUMBER OF DRIVES" "CLASS OF THE MECHANISM: I"
+lk_structure structure-assur-pr3207 data/assur_pr3207.nml en "STRUCTURE FORMULA: I(6,1) -> II(2,3) -> II(4,5)" \
+  "W = 3n - 2p5 - p4 = 3 x 5 - 2 x 7 - 0 = 1 = NUMBER OF DRIVES" "II(2,3)  DYAD (GROUP OF CLASS II, ORDER 2), KIND RPR" \
+  "II(4,5)  DYAD (GROUP OF CLASS II, ORDER 2), KIND RPP"
+lk_structure structure-assur-pr3050 data/assur_pr3050.nml en "W = 3n - 2p5 - p4 = 3 x 3 - 2 x 4 - 0 = 1 = NUMBER OF DRIVES" \
+  "CLASS OF THE MECHANISM: I"
+lk_structure structure-engine docs/examples/engine.nml en "STRUCTURE FORMULA: I(0,1) -> II(2,3)" \
+  "II(2,3)  DYAD (GROUP OF CLASS II, ORDER 2), KIND RRP"
+# an &assur deck and its &linkage twin: the same analysis, line for line (the twin's is the
+# &linkage deck's own, by a different method)
+for twin in assur_fourbar:linkage_fourbar assur_slider_crank:linkage_slider_crank; do
+  run_ks structure "data/${twin%%:*}.nml"; grep -v '^ DECK: \|^ TITLE: ' "$out" >"$cli_tmp/st_a.txt"; rc_a=$rc
+  run_ks structure "data/${twin#*:}.nml"; grep -v '^ DECK: \|^ TITLE: ' "$out" >"$cli_tmp/st_b.txt"
+  [ "$rc_a$rc" = 00 ] && [ -s "$cli_tmp/st_a.txt" ] && cmp -s "$cli_tmp/st_a.txt" "$cli_tmp/st_b.txt" && pass \
+    || fail "structure-twin-${twin%%:*}" "$(diff "$cli_tmp/st_a.txt" "$cli_tmp/st_b.txt" | head -5)"
+done
+# -o FILE
+rm -f "$cli_tmp/st_o.txt"
+run_ks structure data/pr3207.nml -o "$cli_tmp/st_o.txt"
+[ "$rc" -eq 0 ] && [ ! -s "$out" ] && grep -qxF " STRUCTURE FORMULA: I(6,1) -> II(2,3) -> II(4,5)" "$cli_tmp/st_o.txt" && pass \
+  || fail structure-o-file "exit $rc: $(cat "$err")"
+# structure of a kind that is no linkage of lower pairs: exit 2, one line
+for deck in data/gears_reducer.nml data/cam_flat.nml data/gear_geometry_shift.nml; do
+  run_ks structure "$deck"
+  if [ "$rc" -eq 2 ] && [ "$(wc -l <"$err")" -eq 1 ] && [ ! -s "$out" ] && \
+     grep -q "^kinetostat: error: $deck: &[a-z_]*: structure: not a linkage of lower pairs (a structural analysis is made of &pr3207, &pr3050, &sixbar, &assur and &linkage decks)$" "$err"; then pass
+  else fail "linkage-structure-other-kind-$deck" "exit $rc: $(cat "$err")"; fi
+done
 
 # the &assur twins: same forces
 for pair in "linkage_fourbar assur_fourbar" "linkage_slider_crank assur_slider_crank"; do
@@ -122,3 +157,15 @@ lk_structure linkage-structure-order4 docs/examples/class3_order4.nml en \
   "STRUCTURE FORMULA: I(0,1) -> III(2,3,4,5,6,7)" "CLASS OF THE MECHANISM: III"
 lk_structure linkage-structure-order4-ru docs/examples/class3_order4.nml ru \
   "III(2,3,4,5,6,7)  ГРУППА III КЛАССА 4-ГО ПОРЯДКА (ДВА БАЗОВЫХ ЗВЕНА С ТРЕМЯ ПАРАМИ)"
+
+# --- the table of stages and deck kinds of docs/linkage.md: every "yes" runs, every refusal is
+# one line (exit 2) with the message the table quotes (tools/stage_table_check.py); the check can
+# fail: a "yes" turned into a refusal is caught
+python3 "$root/tools/stage_table_check.py" "$KINETOSTAT" "$root/docs/linkage.md" >"$cli_tmp/stages.out" 2>&1 \
+  && pass || fail linkage-stage-table "$(head -10 "$cli_tmp/stages.out")"
+{ grep '^| stage |\|^|---|' "$root/docs/linkage.md"; grep '^| structural analysis (`kinetostat structure`) |' "$root/docs/linkage.md" | \
+  sed 's/^| structural analysis (`kinetostat structure`) | yes |/| structural analysis (`kinetostat structure`) | refused: `no such thing` |/'; } \
+  >"$cli_tmp/stages_bad.md"
+if ! python3 "$root/tools/stage_table_check.py" "$KINETOSTAT" "$cli_tmp/stages_bad.md" >"$cli_tmp/stages.out" 2>&1 && \
+   grep -q "structural analysis (\`kinetostat structure\`) / &pr3207: refusal expected" "$cli_tmp/stages.out"; then pass
+else fail linkage-stage-table-can-fail "$(head -5 "$cli_tmp/stages.out")"; fi

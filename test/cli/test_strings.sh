@@ -239,11 +239,11 @@ print("\n".join(bad) or f"{rows} capacities ok")
 sys.exit(1 if bad else 0)
 PY
 # in a deck: the deck's line, and a list of too many values
-sed 's/^\/$/  link(25)%id = 25\n\//' data/linkage_fourbar.nml >"$strings_dir/link25.nml"
-expect_input_error strings-capacity-deck 'link25.nml:[0-9]+: &linkage: link\(25\): at most 24 links$' "$strings_dir/link25.nml"
+sed 's/^\/$/  link(49)%id = 49\n\//' data/linkage_fourbar.nml >"$strings_dir/link49.nml"
+expect_input_error strings-capacity-deck 'link49.nml:[0-9]+: &linkage: link\(49\): at most 48 links$' "$strings_dir/link49.nml"
 python3 -c "
 import sys
 s = open('data/pr3207_flywheel.nml').read()
-open(sys.argv[1], 'w').write(s.replace('\n/\n', '\n  md_table = ' + ', '.join(['1'] * 722) + '\n/\n'))
-" "$strings_dir/md722.nml"
-expect_input_error strings-capacity-list 'md722.nml:[0-9]+: &pr3207: md_table: at most 720 values \(360 points\)$' "$strings_dir/md722.nml"
+open(sys.argv[1], 'w').write(s.replace('\n/\n', '\n  md_table = ' + ', '.join(['1'] * 5764) + '\n/\n'))
+" "$strings_dir/md5764.nml"
+expect_input_error strings-capacity-list 'md5764.nml:[0-9]+: &pr3207: md_table: at most 5762 values \(2881 points\)$' "$strings_dir/md5764.nml"
