@@ -11,6 +11,12 @@ module kinetostat_dynamics_table
   public :: note_constant_speed_cost, echo_dynamics, add_dynamics_columns, put_dynamics_values, put_dynamics_figures, &
     note_drive_deviation
 
+  !> The DYNAMICS block's note on the flywheel's disc (a key of the labels' dictionary).
+  character(*), parameter :: flywheel_disc_note = "a disc: J_flywheel = m D^2/8, m = density * pi D^2 b/4, "// &
+    "b = width_ratio * D"
+  !> The note when the machine has no flywheel.
+  character(*), parameter :: flywheel_none_note = "no flywheel: J_flywheel = 0"
+
 contains
 
   !> The INPUT DATA echo of the dynamics settings (nothing for dynamics = 'none'); with
@@ -57,6 +63,9 @@ contains
     call table%add_column("omega1", "rad/s", col_other)
     call table%add_column("eps1", "rad/s^2", col_other)
     call table%add_column("t", "s", col_other)
+    call table%add_column("A_Md", "J", col_other)
+    call table%add_column("A_red", "J", col_other)
+    call table%add_column("T_I", "J", col_other)
   end subroutine add_dynamics_columns
 
   !> The dynamics values of row `k` (the columns add_dynamics_columns made).
@@ -71,7 +80,8 @@ contains
     c = table%column_index("J_red")
     table%rows(c:c + 2, k) = [motion%j, motion%dj, motion%m]
     if (mode == dynamics_reduced) return
-    table%rows(c + 3:c + 6, k) = [motion%dt, motion%omega, motion%eps, motion%t]
+    table%rows(c + 3:c + 9, k) = [motion%dt, motion%omega, motion%eps, motion%t, motion%a_md, motion%dt - motion%a_md, &
+                                  motion%t_i]
   end subroutine put_dynamics_values
 
   !> The figures of a solved cycle (first block only); `delta_asked` > 0 with 'steady'.
@@ -94,6 +104,7 @@ contains
     call table%dynamics_real("J_red_min", minval(cycle%j), "kg*m^2")
     call table%dynamics_real("J_red_max", maxval(cycle%j), "kg*m^2")
     call table%dynamics_real("J_flywheel", cycle%j_flywheel, "kg*m^2")
+    call put_flywheel_disc(table, cycle)
     if (cycle%delta > 0.0_wp) then
       call table%dynamics_real("J_flywheel_textbook", cycle%j_flywheel_textbook, "kg*m^2")
       if (cycle%j_flywheel > 0.0_wp) call table%dynamics_real("textbook_difference", &
@@ -108,6 +119,32 @@ contains
     call table%dynamics_real("delta", cycle%delta, "")
     call table%dynamics_real("period", cycle%period, "s")
   end subroutine put_dynamics_figures
+
+  !> The flywheel as a disc of the cycle's density rho and width ratio psi = b/D: J = m D^2/8
+  !> with m = rho pi D^2 b/4 gives D = (32 J/(pi rho psi))^(1/5), b = psi D; no disc (null
+  !> figures and a note) when the machine has no flywheel.
+  pure subroutine put_flywheel_disc(table, cycle)
+    type(step_table_t), intent(inout) :: table
+    type(cycle_t), intent(in) :: cycle
+    real(wp) :: d, b, rho, psi
+    rho = cycle%flywheel_density
+    psi = cycle%flywheel_width_ratio
+    call table%dynamics_real("flywheel_density", rho, "kg/m^3")
+    call table%dynamics_real("flywheel_width_ratio", psi, "")
+    if (cycle%j_flywheel > 0.0_wp) then
+      d = (32.0_wp * cycle%j_flywheel / (pi * rho * psi))**0.2_wp
+      b = psi * d
+      call table%dynamics_real("flywheel_D", d, "m")
+      call table%dynamics_real("flywheel_b", b, "m")
+      call table%dynamics_real("flywheel_m", rho * pi * d**2 * b / 4.0_wp, "kg")
+      call table%dynamics_note("flywheel_note", flywheel_disc_note)
+    else
+      call table%dynamics_null("flywheel_D", "m")
+      call table%dynamics_null("flywheel_b", "m")
+      call table%dynamics_null("flywheel_m", "kg")
+      call table%dynamics_note("flywheel_note", flywheel_none_note)
+    end if
+  end subroutine put_flywheel_disc
 
   !> The self-check of the true motion: the largest |M1 - M_d| / scale over the blocks so far.
   pure subroutine note_drive_deviation(table, worst, scale)

@@ -79,7 +79,14 @@ contains
       line = '  "dynamics": {'
       do i = 1, size(table%dynamics)
         if (i > 1) line = line//", "
-        line = line//json_string(table%dynamics(i)%name)//": "//full_number(table%dynamics(i)%values(1))
+        line = line//json_string(table%dynamics(i)%name)//": "
+        if (table%dynamics(i)%kind == echo_text_kind) then
+          line = line//json_string(table%dynamics(i)%text)
+        else if (allocated(table%dynamics(i)%text)) then
+          line = line//"null"
+        else
+          line = line//full_number(table%dynamics(i)%values(1))
+        end if
       end do
       call out%put(line//"},")
     end if

@@ -118,6 +118,26 @@ contains
       text = "M_d (ДВИЖУЩИЙ МОМЕНТ)"
     case ("J_flywheel")
       text = "МАХОВИК J_flywheel"
+    case ("flywheel_density")
+      text = "МАХОВИК: ПЛОТНОСТЬ"
+    case ("flywheel_width_ratio")
+      text = "МАХОВИК: b/D"
+    case ("flywheel_D")
+      text = "МАХОВИК: ДИАМЕТР D"
+    case ("flywheel_b")
+      text = "МАХОВИК: ШИРИНА b"
+    case ("flywheel_m")
+      text = "МАХОВИК: МАССА m"
+    case ("flywheel_note")
+      text = "МАХОВИК"
+    case ("a disc: J_flywheel = m D^2/8, m = density * pi D^2 b/4, b = width_ratio * D")
+      text = "ДИСК: J_flywheel = m D^2/8, m = ПЛОТНОСТЬ * pi D^2 b/4, b = (b/D) * D"
+    case ("no flywheel: J_flywheel = 0")
+      text = "МАХОВИКА НЕТ: J_flywheel = 0"
+    case ("none")
+      text = "НЕТ"
+    case ("kg/m^3")
+      text = "кг/м^3"
     case ("J_flywheel_textbook")
       text = "МАХОВИК ПО МЕРЦАЛОВУ"
     case ("textbook_difference")

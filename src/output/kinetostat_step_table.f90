@@ -318,6 +318,7 @@ module kinetostat_step_table
     procedure :: put_point
     procedure :: put_link
     procedure :: put_acceleration
+    procedure :: put_velocity
     procedure :: put_components
     procedure :: put_link_axes
     procedure :: shows
@@ -349,6 +350,8 @@ module kinetostat_step_table
     procedure :: summary_real
     procedure :: summary_line
     procedure :: dynamics_real
+    procedure :: dynamics_null
+    procedure :: dynamics_note
   end type step_table_t
 
 contains
@@ -457,7 +460,20 @@ contains
     call put_kinematic(self, k, "eps", link, "rad/s^2", col_other, eps)
   end subroutine put_link
 
-  !> Kinematics: acceleration ax_<point>, ay_<point> (m/s^2) of a centre of mass in row `k`.
+  !> Kinematics: velocity vx_<point>, vy_<point> (m/s) of a named point in row `k`.
+  pure subroutine put_velocity(self, k, point, v)
+    class(step_table_t), intent(inout) :: self
+    !> Row.
+    integer, intent(in) :: k
+    !> Point name ("B", "S3").
+    character(*), intent(in) :: point
+    !> Velocity, m/s.
+    real(wp), intent(in) :: v(2)
+    call put_kinematic(self, k, "vx_", point, "m/s", col_other, v(1))
+    call put_kinematic(self, k, "vy_", point, "m/s", col_other, v(2))
+  end subroutine put_velocity
+
+  !> Kinematics: acceleration ax_<point>, ay_<point> (m/s^2) of a named point in row `k`.
   pure subroutine put_acceleration(self, k, point, a)
     class(step_table_t), intent(inout) :: self
     !> Row.
@@ -1064,6 +1080,30 @@ contains
     character(*), intent(in) :: unit
     call append_record(self%dynamics, echo_record_t(kind=echo_real_kind, name=name, unit=unit, values=[value]))
   end subroutine dynamics_real
+
+  !> A figure of the machine dynamics that does not exist in this run (JSON null, the DYNAMICS
+  !> block "none", 0 in a summary's cell): a record of echo_real_kind with an empty `text`.
+  pure subroutine dynamics_null(self, name, unit)
+    class(step_table_t), intent(inout) :: self
+    !> Figure name ("flywheel_D").
+    character(*), intent(in) :: name
+    !> Unit text.
+    character(*), intent(in) :: unit
+    call append_record(self%dynamics, echo_record_t(kind=echo_real_kind, name=name, unit=unit, values=[0.0_wp], &
+                                                    text=""))
+  end subroutine dynamics_null
+
+  !> A note among the machine dynamics figures (JSON string, a line of the DYNAMICS block; not
+  !> in a summary).
+  pure subroutine dynamics_note(self, name, text)
+    class(step_table_t), intent(inout) :: self
+    !> Note name ("flywheel_note").
+    character(*), intent(in) :: name
+    !> The note.
+    character(*), intent(in) :: text
+    call append_record(self%dynamics, echo_record_t(kind=echo_text_kind, name=name, unit="", values=[0.0_wp], &
+                                                    text=text))
+  end subroutine dynamics_note
 
   !> `record` appended to `list` (allocated when it is not).
   pure subroutine append_record(list, record)

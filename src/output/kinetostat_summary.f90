@@ -8,7 +8,7 @@ module kinetostat_summary
   use kinetostat_kinds, only: wp, deg_to_rad
   use kinetostat_text, only: int_str, lower, without_blanks
   use kinetostat_step_table, only: step_table_t, col_force, col_force_angle, col_moment, column_tally_t, &
-    edge_point_t
+    edge_point_t, echo_text_kind
   use kinetostat_format, only: cell_number, trimmed_es
   use kinetostat_escape, only: csv_field
   implicit none
@@ -461,6 +461,7 @@ contains
     if (known) line = line//",work_"//table%driver
     if (allocated(table%dynamics)) then
       do i = 1, size(table%dynamics)
+        if (table%dynamics(i)%kind == echo_text_kind) cycle
         line = line//","//dynamics_prefix//table%dynamics(i)%name
       end do
     end if
@@ -524,7 +525,7 @@ contains
     end do
     call drive_work(table, work, known)
     if (known) n = n + 1
-    if (allocated(table%dynamics)) n = n + size(table%dynamics)
+    if (allocated(table%dynamics)) n = n + count(table%dynamics(:)%kind /= echo_text_kind)
     allocate (values(n), whole(n))
     n = 0
     call add(values, whole, n, real(table%tallied_rows, wp), .true.)
@@ -546,6 +547,7 @@ contains
     if (known) call add(values, whole, n, work, .false.)
     if (allocated(table%dynamics)) then
       do i = 1, size(table%dynamics)
+        if (table%dynamics(i)%kind == echo_text_kind) cycle
         call add(values, whole, n, table%dynamics(i)%values(1), .false.)
       end do
     end if

@@ -37,6 +37,7 @@ module kinetostat_run
   use kinetostat_spool, only: spool_t
   use kinetostat_bodies, only: mass_model_t
   use kinetostat_shaking, only: add_shaking
+  use kinetostat_point_motion, only: add_point_motion
   use kinetostat_row_keeper, only: row_keeper_t
   use kinetostat_kinds, only: deg_to_rad
   implicit none
@@ -161,6 +162,8 @@ contains
     type(echo_cursor_t) :: head
     !> The moving links and frame pairs (--shaking).
     type(mass_model_t) :: model
+    !> The mechanism's topology for the points' velocities and accelerations (--kinematics).
+    type(sketch_t) :: motion_topo
     !> The rows a drawing needs (--at K, the SVG sheet), kept as the blocks go.
     type(row_keeper_t) :: keeper
     logical :: drawn
@@ -244,6 +247,13 @@ contains
         call fatal_error(error, exit_input, table%deck//": &"//group//": out of memory: no room for "// &
           table%no_room)
         return
+      end if
+      if (options%kinematics) then
+        ! the points' velocities and accelerations (every linkage, from its sketch)
+        if (table%first_block()) call mech%sketch(motion_topo)
+        call add_point_motion(motion_topo, table, error)
+        if (allocated(error)) return
+        call table%finish_columns()
       end if
       if (options%shaking) then
         call add_shaking(table, model, error)

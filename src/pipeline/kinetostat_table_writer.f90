@@ -415,8 +415,17 @@ contains
     integer :: i
     call put_heading(out, label("DYNAMICS (REDUCED TO THE INPUT LINK)", lang))
     do i = 1, size(table%dynamics)
-      call out%put("   "//pad_right(label(table%dynamics(i)%name, lang), dynamics_name_width)//"="// &
-                   echo_number(table%dynamics(i)%values(1))//"  "//label(table%dynamics(i)%unit, lang))
+      if (table%dynamics(i)%kind == echo_text_kind) then
+        ! a note: the user's strings never reach it (numbers and fixed words)
+        call out%put("   "//pad_right(label(table%dynamics(i)%name, lang), dynamics_name_width)//"= "// &
+                     label(table%dynamics(i)%text, lang))
+      else if (allocated(table%dynamics(i)%text)) then
+        call out%put("   "//pad_right(label(table%dynamics(i)%name, lang), dynamics_name_width)//"= "// &
+                     label("none", lang))
+      else
+        call out%put("   "//pad_right(label(table%dynamics(i)%name, lang), dynamics_name_width)//"="// &
+                     echo_number(table%dynamics(i)%values(1))//"  "//label(table%dynamics(i)%unit, lang))
+      end if
     end do
   end subroutine put_dynamics
 
