@@ -498,21 +498,45 @@ contains
         index(text, "  GROUP OF ") > 0) is_linkage_echo = .true.
   end function is_linkage_echo
 
+  !> A dyad's kind in the Russian course's letters: RRP -> ВВП (R a turning pair, В; P a
+  !> sliding pair, П); other characters as they are.
+  pure function course_kind(kind) result(text)
+    !> The kind as the program writes it ("RRP").
+    character(*), intent(in) :: kind
+    character(len=:), allocatable :: text
+    integer :: i
+    text = ""
+    do i = 1, len(kind)
+      select case (kind(i:i))
+      case ("R")
+        text = text//"В"
+      case ("P")
+        text = text//"П"
+      case default
+        text = text//kind(i:i)
+      end select
+    end do
+  end function course_kind
+
   !> A general linkage's echo line in Russian, in the words of kinetostat structure --lang ru.
   pure function linkage_echo_ru(english) result(text)
     !> The English line.
     character(*), intent(in) :: english
     character(len=:), allocatable :: text
+    integer :: k
     text = english
     text = swap(text, "STRUCTURAL ANALYSIS", "СТРУКТУРНЫЙ АНАЛИЗ")
     text = swap(text, "MOVING LINKS n", "ПОДВИЖНЫХ ЗВЕНЬЕВ n")
     text = swap(text, "LOWER PAIRS p5", "НИЗШИХ ПАР p5")
     text = swap(text, "HIGHER PAIRS p4", "ВЫСШИХ ПАР p4")
-    text = swap(text, "NUMBER OF DRIVES", "ЧИСЛО ПРИВОДОВ")
+    text = swap(text, "NUMBER OF DRIVES", "ЧИСЛО НАЧАЛЬНЫХ ЗВЕНЬЕВ")
     text = swap(text, "STRUCTURE FORMULA:", "ФОРМУЛА СТРОЕНИЯ:")
     text = swap(text, "CLASS OF THE MECHANISM:", "КЛАСС МЕХАНИЗМА:")
     text = swap(text, "INPUT LINK(S) (MECHANISM OF CLASS I)", &
-      "ВХОДНОЕ ЗВЕНО (МЕХАНИЗМ I КЛАССА)")
+      "НАЧАЛЬНОЕ ЗВЕНО (МЕХАНИЗМ I КЛАССА)")
+    ! a dyad's kind in the course's letters: В (вращательная) for R, П (поступательная) for P
+    k = index(text, "), KIND ")
+    if (k > 0) text = text(1:k + 7)//course_kind(text(k + 8:))
     text = swap(text, "DYAD (GROUP OF CLASS II, ORDER 2), KIND", &
       "ДИАДА (ГРУППА II КЛАССА 2-ГО ПОРЯДКА), ВИД")
     text = swap(text, "GROUP OF CLASS III, ORDER 3", &
