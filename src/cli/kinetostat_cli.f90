@@ -35,6 +35,7 @@ module kinetostat_cli
   use kinetostat_step_table, only: column_tally_t
   use kinetostat_kinds, only: wp
   use kinetostat_format, only: short_number
+  use kinetostat_sheets, only: write_course_sheets, parse_sheet_numbers
   !$ use omp_lib, only: omp_set_num_threads
   implicit none
   private
@@ -51,6 +52,8 @@ module kinetostat_cli
     "kinetostat template KIND [-o FILE] | kinetostat diff A B [--rtol R] [--atol A] [--common] | " // &
     "kinetostat balance DECK [-o FILE] [--method full|crank|partial] [--fraction F] [--lang en|ru] | "// &
     "kinetostat structure DECK [--lang ru] | kinetostat contour DECK [--set NAME=VALUE]... [-o FILE] | " // &
+    "kinetostat sheets DECK -o DIR [--paper A1|A2|A3|A4] [--lang en|ru] [--at K] [--designation TEXT] " // &
+    "[--sheet-numbers N,N] [--student NAME] [--group G] [--variant N] [--set NAME=VALUE]... | " // &
     "--help | --version"
 
   !> Help text (the kinds are appended from the registry).
@@ -74,6 +77,10 @@ module kinetostat_cli
     "  kinetostat structure DECK [--lang ru] [-o FILE]   structural analysis of a &linkage deck", &
     "  kinetostat contour DECK [--set NAME=VALUE]... [-o FILE]   the blocking contour of a", &
     "                  &gear_geometry deck's pair as CSV: curve,x1,x2", &
+    "  kinetostat sheets DECK -o DIR [--paper A1|A2|A3|A4] [--at K] [--designation TEXT]", &
+    "                  [--sheet-numbers N,N] [--lang ru] [--student ...] [--set ...]   the", &
+    "                  course's sheets (kinetostatics; dynamics with a steady cycle) as SVG,", &
+    "                  DXF and PDF (rsvg-convert) in DIR (docs/course.md)", &
     "  kinetostat --help | --version", &
     "", &
     "DECK is a Fortran namelist file; its first group names the mechanism; - reads it", &
@@ -186,6 +193,12 @@ module kinetostat_cli
     real(wp) :: fraction = 0.5_wp
     !> Whether --fraction was given.
     logical :: fraction_given = .false.
+    !> The sheets subcommand was given (`kinetostat sheets DECK -o DIR`).
+    logical :: sheets = .false.
+    !> sheets --sheet-numbers (empty: 1..N of N).
+    integer, allocatable :: sheet_numbers(:)
+    !> Options only the sheets subcommand takes were given.
+    logical :: sheet_options = .false.
   end type cli_args_t
 
 
@@ -243,6 +256,9 @@ contains
         call contour_of_deck(args, out, error)
       else if (args%balance) then
         call balance_deck(args, out, error)
+      else if (args%sheets) then
+        call write_course_sheets(args%deck, args%options, args%out_file, args%sheet_numbers, error)
+        committed = .true.
       else
         progress_wanted = stderr_is_terminal() .and. .not. args%quiet
         progress_deck = args%deck
@@ -898,7 +914,8 @@ contains
     do while (i < n)
       call next_option(i, n, [character(len=15) :: "-o", "--output", "--format", "--lang", "--set", "--pairs", &
                        "--at", "--frame", "--vary", "--part", "--jobs", "--method", "--fraction", &
-                       "--max-deck-size", "--student", "--group", "--variant"], name, value)
+                       "--max-deck-size", "--student", "--group", "--variant", "--paper", "--designation", &
+                       "--sheet-numbers"], name, value)
       if (.not. allocated(value)) then
         call fatal_error(error, exit_usage, name//" needs a value")
         return
@@ -1019,6 +1036,26 @@ contains
           return
         end if
         args%contour = .true.
+      case ("sheets")
+        if (i /= 1) then
+          call fatal_error(error, exit_usage, "sheets must come first: kinetostat sheets DECK -o DIR")
+          return
+        end if
+        args%sheets = .true.
+      case ("--paper")
+        args%sheet_options = .true.
+        if (all(value /= ["A1", "A2", "A3", "A4"])) then
+          call fatal_error(error, exit_usage, "--paper must be A1, A2, A3 or A4 (got '"//value//"')")
+          return
+        end if
+        args%options%paper = value
+      case ("--designation")
+        args%sheet_options = .true.
+        args%options%designation = value
+      case ("--sheet-numbers")
+        args%sheet_options = .true.
+        call parse_sheet_numbers(value, args%sheet_numbers, error)
+        if (allocated(error)) return
       case ("structure")
         if (i /= 1) then
           call fatal_error(error, exit_usage, "structure must come first: kinetostat structure DECK [--lang ru]")
@@ -1053,8 +1090,18 @@ contains
       end select
     end do
     if (args%help .or. args%version .or. allocated(args%template_kind)) return
+    if (.not. allocated(args%sheet_numbers)) allocate (args%sheet_numbers(0))
     if (.not. allocated(args%deck)) then
       call fatal_error(error, exit_usage, "no deck given")
+    else if (args%sheets .and. .not. allocated(args%out_file)) then
+      call fatal_error(error, exit_usage, "sheets needs -o DIR (the directory the sheets go into)")
+    else if (args%sheets .and. (args%format_given .or. args%options%kinematics .or. args%options%shaking .or. &
+             args%options%plans .or. allocated(args%options%pairs))) then
+      call fatal_error(error, exit_usage, "sheets takes a deck, -o DIR, --paper, --lang, --at, --designation, "// &
+        "--sheet-numbers, --student, --group, --variant and --set only")
+    else if (args%sheet_options .and. .not. args%sheets) then
+      call fatal_error(error, exit_usage, "--paper, --designation and --sheet-numbers belong to the sheets "// &
+        "subcommand: kinetostat sheets DECK -o DIR ...")
     else if (args%structure .and. (args%format_given .or. allocated(args%options%overrides) .or. &
              args%options%at_step > 0)) then
       call fatal_error(error, exit_usage, "structure takes a deck, --lang and -o only")
@@ -1085,7 +1132,7 @@ contains
     else if (args%options%format == format_plans .and. args%options%at_step == 0) then
       call fatal_error(error, exit_usage, "--format plans needs --at K (the step whose plans are drawn)")
     else if (args%options%at_step > 0 .and. all(args%options%format /= [format_svg, format_plans, format_dxf]) &
-      .and. .not. args%options%plans) then
+      .and. .not. args%options%plans .and. .not. args%sheets) then
       call fatal_error(error, exit_usage, "--at needs --format svg, plans or dxf (or --format json --plans)")
     else if (args%options%format == format_npy) then
       if (binary_to_terminal(args%out_file)) call fatal_error(error, exit_usage, "--format npy writes binary data, "// &

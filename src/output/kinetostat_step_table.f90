@@ -263,6 +263,10 @@ module kinetostat_step_table
     logical :: link_frame = .false.
     !> CSV and JSON show the kinematics columns (--kinematics).
     logical :: kinematics_shown = .false.
+    !> The sheets' title block: the document's designation (графа 2 and 26; not allocated:
+    !> empty), the sheet's number and the number of sheets (kinetostat sheets --sheet-numbers).
+    character(len=:), allocatable :: designation
+    integer :: sheet_number = 1, sheet_count = 1
     !> Block asked of `solve` by the run pipeline: first and last step (0: every step at once).
     integer :: block_first = 0
     !> Last step of the block asked (0: every step).

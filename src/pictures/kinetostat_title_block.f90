@@ -24,7 +24,7 @@ module kinetostat_title_block
   implicit none
   private
   public :: title_block_t, title_block_from_table, put_sheet_format, put_title_block_at, put_title_block, &
-    title_block_height, block_width, block_height, fitted_text
+    title_block_height, block_width, block_height, fitted_text, header_indent
 
   !> Size of the block (ГОСТ 2.104 form 1), mm.
   real(wp), parameter :: block_width = 185.0_wp, block_height = 55.0_wp
@@ -68,6 +68,9 @@ contains
     block%group = ""
     block%variant = ""
     block%stamp = ""
+    if (allocated(table%designation)) block%designation = table%designation
+    block%sheet_number = table%sheet_number
+    block%sheet_count = table%sheet_count
     if (allocated(table%student_stamp)) then
       block%student = table%student_name
       block%group = table%student_group
@@ -75,6 +78,15 @@ contains
       block%stamp = table%student_stamp
     end if
   end function title_block_from_table
+
+  !> How far a sheet's header starts right of the frame: past графа 26 (70 mm) when the
+  !> sheet has a designation, mm.
+  pure real(wp) function header_indent(table)
+    type(step_table_t), intent(in) :: table
+    header_indent = 0.0_wp
+    if (.not. allocated(table%designation)) return
+    if (len(table%designation) > 0) header_indent = 72.0_wp
+  end function header_indent
 
   !> The frame of the sheet's paper and the title block in its lower right corner.
   pure subroutine put_sheet_format(sheet, block)
@@ -86,6 +98,13 @@ contains
     call sheet%set_layer(layer_frame)
     call sheet%rect(frame_left, frame_margin, w - frame_left - frame_margin, h - 2.0_wp * frame_margin, "border")
     call put_title_block_at(sheet, block, w - frame_margin - block_width, h - frame_margin - block_height)
+    if (.not. allocated(block%designation)) return
+    if (len(block%designation) == 0) return
+    ! графа 26: the designation again, turned 180 deg, in a 70 x 14 mm box in the frame's upper
+    ! left corner (read when the sheet is folded or turned over)
+    call sheet%rect(frame_left, frame_margin, 70.0_wp, 14.0_wp, "thick")
+    call sheet%text(frame_left + 35.0_wp, frame_margin + 7.0_wp - 1.2_wp, fitted_text(block%designation, 66.0_wp, &
+      3.5_wp), "cell", anchor_middle, size=3.5_wp, rotation=180.0_wp, plain=.true.)
   end subroutine put_sheet_format
 
   !> The title block with its upper left corner at (x0, y0), mm.

@@ -18,7 +18,8 @@ module kinetostat_run
   use kinetostat_npy_writer, only: write_npy
   use kinetostat_run_sheet, only: write_run_sheet
   use kinetostat_mechanism_sheet, only: write_mechanism_sheet
-  use kinetostat_sheet, only: sheet_t
+  use kinetostat_sheet, only: sheet_t, iso_paper
+  use kinetostat_dynamics_sheet, only: draw_dynamics_sheet
   use kinetostat_sheet_svg, only: write_sheet_svg
   use kinetostat_sheet_dxf, only: write_sheet_dxf
   use kinetostat_sketch, only: sketch_t
@@ -44,7 +45,10 @@ module kinetostat_run
   private
   public :: run_options_t, run_mechanism, guard_finite, progress_i, block_rows
   public :: format_table, format_csv, format_json, format_svg, format_summary, format_plans, format_dxf, &
-    format_deck, format_npy, format_from_name, format_names
+    format_deck, format_npy, format_from_name, format_names, course_none, course_dynamics
+
+  !> Course sheets (kinetostat sheets): none (the format's own drawing), the dynamics sheet.
+  integer, parameter :: course_none = 0, course_dynamics = 1
 
   !> Output format: the legacy fixed-format table.
   integer, parameter :: format_table = 1
@@ -118,6 +122,13 @@ module kinetostat_run
     !> --allow-selfcheck-failure: a failed self-check is a warning and the output is
     !> written (by default it is a computation error, exit 3, and nothing is written).
     logical :: allow_selfcheck_failure = .false.
+    !> kinetostat sheets: the course sheet drawn by --format svg/dxf (course_none: the run's
+    !> own sheet), its paper ("A1" .. "A4", landscape), the title block's designation
+    !> (графа 2 and 26), the sheet's number and the number of sheets (0: 1 of 1).
+    integer :: course_sheet = course_none
+    character(len=2) :: paper = "A1"
+    character(len=:), allocatable :: designation
+    integer :: sheet_number = 0, sheet_count = 0
   end type run_options_t
 
 contains
@@ -203,6 +214,9 @@ contains
     end if
     table%row_name = "step"
     table%driver = "M1"
+    if (allocated(options%designation)) table%designation = options%designation
+    if (options%sheet_number > 0) table%sheet_number = options%sheet_number
+    if (options%sheet_count > 0) table%sheet_count = options%sheet_count
     table%kinematics_shown = options%kinematics
     table%kinematics_wanted = options%kinematics .or. options%link_frame .or. options%format == format_svg .or. &
       options%plans .or. options%format == format_plans .or. options%format == format_dxf .or. options%shaking
@@ -327,7 +341,10 @@ contains
         else if (mech%force_sheet .and. options%at_step > 0) then
           call write_at_step(mech, table, options, out, error)
         else
-          if (mech%force_sheet) then
+          if (options%course_sheet == course_dynamics) then
+            call draw_dynamics_sheet(mech%title(options%lang), table, iso_paper(options%paper, .true.), options%lang, &
+                                     sheet)
+          else if (mech%force_sheet) then
             call write_run_sheet(mech%title(options%lang), table, pairs_asked, options%lang, sheet, error)
           else if (options%at_step > 0 .and. table%single_record) then
             call fatal_error(error, exit_usage, "--at: "//table%deck//" is &"//group//", one "//table%row_name// &

@@ -31,7 +31,7 @@ module kinetostat_plans_draw
   use kinetostat_scales, only: scale_number, round_scale
   use kinetostat_sheet, only: sheet_t, entity_group, layer_text, layer_vplan, layer_aplan, layer_polygons, layer_lever, &
     layer_scales, layer_frame, anchor_start, anchor_end
-  use kinetostat_title_block, only: put_sheet_format, title_block_from_table
+  use kinetostat_title_block, only: put_sheet_format, title_block_from_table, header_indent
   use kinetostat_drawing, only: drawing_t, drawing_point_t, drawing_body_t, drawing_force_t, drawing_moment_t, &
     force_gravity, force_inertia, force_load, force_pair, point_pivot
   use kinetostat_mechanism_view, only: mechanism_view_t, fit_mechanism_view, draw_mechanism, force_colours
@@ -84,6 +84,8 @@ contains
     call put_sheet_format(sheet, title_block_from_table(table, word("Plans of velocities, accelerations, forces", lang), &
       geo%view%drawing_scale%text))
     inner = geo%paper%inside()
+    ! right of графа 26 (the designation turned 180 deg in the upper left corner) when given
+    inner(1) = inner(1) + header_indent(table)
 
     ! the header: the mechanism's title, the deck with its own title and the --set changes, the step
     call sheet%set_layer(layer_text)
