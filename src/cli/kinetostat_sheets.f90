@@ -1,6 +1,7 @@
 !> `kinetostat sheets DECK -o DIR`: the course's drawing sheets of a linkage deck, each as SVG
 !> and DXF (the one drawing model) and as PDF at true size when rsvg-convert is installed:
-!> DIR/kinetostatics (the mechanism, the plans, Zhukovsky's lever and the force polygons at
+!> DIR/kinematics (the structure, the mechanism at the position with a trajectory, the output
+!> link's diagrams, the values), DIR/kinetostatics (the mechanism, the plans, Zhukovsky's lever and the force polygons at
 !> the position --at K, by default the step of the largest |effort| of the first drive) and,
 !> with a steady cycle, DIR/dynamics (the machine dynamics and the flywheel). Every sheet is
 !> computed before any file is written (an error writes nothing); each file is then written
@@ -18,7 +19,7 @@ module kinetostat_sheets
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_summary, only: column_stats_t, column_stats
   use kinetostat_run, only: run_options_t, run_mechanism, format_summary, format_svg, format_dxf, format_plans, &
-    course_dynamics, course_none
+    course_dynamics, course_none, course_kinematics
   use kinetostat_registry, only: create_mechanism, known_kinds
   implicit none
   private
@@ -93,6 +94,7 @@ contains
     if (k_at == 0) k_at = effort_step(table)
     dynamics = table%column_index("dT") > 0
     made = .false.
+    made(1) = .true.
     made(2) = .true.
     made(3) = dynamics
     count_made = count(made)
@@ -113,6 +115,15 @@ contains
       if (size(numbers) > 0) o%sheet_number = numbers(n)
       o%course_sheet = course_none
       select case (s)
+      case (1)
+        o%at_step = 0
+        o%course_at = k_at
+        o%kinematics = .true.
+        o%course_sheet = course_kinematics
+        o%format = format_svg
+        call add_file(trim(sheet_names(s))//".svg")
+        o%format = format_dxf
+        call add_file(trim(sheet_names(s))//".dxf")
       case (2)
         o%at_step = k_at
         o%format = format_plans

@@ -27,7 +27,7 @@ module kinetostat_dynamics_sheet
   use kinetostat_design_sheet, only: words, put_dimension, put_table, dot
   implicit none
   private
-  public :: draw_dynamics_sheet, sheet_header
+  public :: draw_dynamics_sheet, sheet_header, plot_t, put_cycle_chart, put_cycle_curve, plot_box
 
   !> Gap between panels, mm.
   real(wp), parameter :: gap = 6.0_wp
@@ -57,7 +57,7 @@ contains
     integer, intent(in) :: lang
     type(sheet_t), intent(out) :: sheet
     real(wp), allocatable :: phi(:), md(:)
-    real(wp) :: inner(4), cw, x1, x2, x3, top, hmax, mu_phi, plot_w, y, wm, wmax, wmin, jfw, delta, md_mean
+    real(wp) :: inner(4), cw, x1, x2, x3, top, hmax, mu_phi, y, wm, wmax, wmin, jfw, delta, md_mean
     real(wp) :: bottom3
     type(plot_t) :: p
     type(drawing_scale_t) :: disc_scale
@@ -103,7 +103,6 @@ contains
     hmax = (inner(4) - top - 2.0_wp * gap) / 3.0_wp
     ! one μφ for every chart over the cycle
     mu_phi = round_scale(maxval(phi) - minval(phi), cw - 24.0_wp)
-    plot_w = (maxval(phi) - minval(phi)) / mu_phi
 
     ! the driving (A_д) and the resisting (A_с) work: by the sign of M_d
     if (md_mean >= 0.0_wp) then
@@ -144,10 +143,10 @@ contains
     call dot(sheet, [p%sx(phi(kmin)), p%sy(column_at("T_I", kmin))], red, 0.8_wp)
     call sheet%place_label("T_I "//words("max", "наиб", lang)//" = "//short_number(column_at("T_I", kmax))// &
       " "//joule, "small", &
-      p%sx(phi(kmax)), p%sy(column_at("T_I", kmax)), -0.5_wp * pi, box(p))
+      p%sx(phi(kmax)), p%sy(column_at("T_I", kmax)), -0.5_wp * pi, plot_box(p))
     call sheet%place_label("T_I "//words("min", "наим", lang)//" = "//short_number(column_at("T_I", kmin))// &
       " "//joule, "small", &
-      p%sx(phi(kmin)), p%sy(column_at("T_I", kmin)), 0.5_wp * pi, box(p))
+      p%sx(phi(kmin)), p%sy(column_at("T_I", kmin)), 0.5_wp * pi, plot_box(p))
     call foot(p, "ΔT = T_I "//words("max", "наиб", lang)//" − T_I "//words("min", "наим", lang)//" = "// &
       short_number(column_at("T_I", kmax) - column_at("T_I", kmin))// &
       " "//joule//";  J_I = ΔT/(δ · omega_m^2) = "// &
@@ -195,12 +194,23 @@ contains
       column_at = v(k)
     end function column_at
 
-    !> The plot's rectangle, widened by 2 mm: where its labels may go.
-    pure function box(q) result(b)
+
+    !> A chart over the cycle at (x0, y0) in the column's width (put_cycle_chart).
+    subroutine chart(x0, y0, values, unit, sym, heading, q, zero)
+      real(wp), intent(in) :: x0, y0, values(:)
+      character(*), intent(in) :: unit, sym, heading
+      type(plot_t), intent(out) :: q
+      logical, intent(in), optional :: zero
+      call put_cycle_chart(sheet, x0, y0, cw, hmax, phi, mu_phi, values, unit, sym, heading, xlabel, lang, q, zero)
+    end subroutine chart
+
+    !> A curve over the cycle with its name (put_cycle_curve).
+    subroutine curve(q, v, colour, dash, name)
       type(plot_t), intent(in) :: q
-      real(wp) :: b(4)
-      b = [q%left + 1.0_wp, q%top + 1.0_wp, q%left + q%width - 1.0_wp, q%top + q%height - 1.0_wp]
-    end function box
+      real(wp), intent(in) :: v(:)
+      character(*), intent(in) :: colour, dash, name
+      call put_cycle_curve(sheet, q, phi, v, colour, dash, name)
+    end subroutine curve
 
     !> The panel's height of a chart.
     pure real(wp) function chart_height(q)
@@ -208,69 +218,14 @@ contains
       chart_height = q%height + 26.0_wp
     end function chart_height
 
-    !> A chart over the cycle at (x0, y0): its panel, heading with the scale μ<sym>, axes
-    !> (y over `values`, zero included unless `zero` is false) at a round μ.
-    subroutine chart(x0, y0, values, unit, sym, heading, q, zero)
-      real(wp), intent(in) :: x0, y0, values(:)
-      character(*), intent(in) :: unit, sym, heading
-      type(plot_t), intent(out) :: q
-      logical, intent(in), optional :: zero
-      real(wp) :: lo, hi, step, mu, vmin, vmax
-      logical :: with_zero
-      with_zero = .true.
-      if (present(zero)) with_zero = zero
-      vmin = minval(values)
-      vmax = maxval(values)
-      if (with_zero) then
-        vmin = min(0.0_wp, vmin)
-        vmax = max(0.0_wp, vmax)
-      end if
-      if (vmax - vmin <= 0.0_wp) vmax = vmin + max(1.0_wp, abs(vmin))
-      step = nice_step(vmax - vmin, 5, .false.)
-      lo = step * floor(vmin / step + 1.0e-9_wp)
-      hi = step * ceiling(vmax / step - 1.0e-9_wp)
-      mu = round_scale(hi - lo, hmax - 26.0_wp)
-      q%left = x0 + 19.0_wp
-      q%top = y0 + 9.0_wp
-      q%width = plot_w
-      q%height = (hi - lo) / mu
-      q%xlo = minval(phi)
-      q%xhi = maxval(phi)
-      q%ylo = lo
-      q%yhi = hi
-      call sheet%set_layer(layer_charts)
-      call sheet%rect(x0, y0, cw, q%height + 26.0_wp - 2.0_wp, "panel")
-      call sheet%text(x0 + 2.0_wp, y0 + 5.0_wp, heading//";  μ"//sym//" = "//scale_number(mu)//" "//unit//"/"// &
-        unit_word("mm", lang)//",  μφ = "//scale_number(mu_phi)//" "//deg//"/"//unit_word("mm", lang), "heading", &
-        size=min(3.0_wp, fitted_size(heading//";  μ"//sym//" = "//scale_number(mu)//" "//unit//"/mm,  μφ = "// &
-        scale_number(mu_phi)//" "//deg//"/mm", 3.0_wp, cw - 4.0_wp, 0.62_wp)))
-      call put_axes(sheet, q%left, q%top, q%width, q%height, q%xlo, q%xhi, nice_step(q%xhi - q%xlo, 8, .true.), lo, hi, &
-        step, xlabel, unit)
-    end subroutine chart
 
-    !> A curve over the cycle with its name placed beside it.
-    subroutine curve(q, v, colour, dash, name)
-      type(plot_t), intent(in) :: q
-      real(wp), intent(in) :: v(:)
-      character(*), intent(in) :: colour, dash, name
-      real(wp), allocatable :: sx(:), sy(:)
-      integer :: k
-      allocate (sx(size(v)), sy(size(v)))
-      do k = 1, size(v)
-        sx(k) = q%sx(phi(k))
-        sy(k) = q%sy(v(k))
-      end do
-      call sheet%polyline(sx, sy, stroke=colour, width=0.45_wp, dash=dash)
-      k = max(1, nint(0.62_wp * size(v)))
-      call sheet%place_label(name, "label", sx(k), sy(k), -0.5_wp * pi, box(q), colour=colour)
-    end subroutine curve
 
     !> The name of a level drawn across the plot, near its left end.
     subroutine level(q, v, name)
       type(plot_t), intent(in) :: q
       real(wp), intent(in) :: v
       character(*), intent(in) :: name
-      call sheet%place_label(name, "small", q%left + 0.12_wp * q%width, q%sy(v), -0.5_wp * pi, box(q))
+      call sheet%place_label(name, "small", q%left + 0.12_wp * q%width, q%sy(v), -0.5_wp * pi, plot_box(q))
     end subroutine level
 
     !> A line of text under the plot's axis label.
@@ -338,7 +293,7 @@ contains
       ox = q%sx(0.0_wp)
       oy = q%sy(0.0_wp)
       call sheet%circle(ox, oy, 0.8_wp, "origin")
-      call sheet%place_label("O", "label", ox, oy, 0.75_wp * pi, box(q))
+      call sheet%place_label("O", "label", ox, oy, 0.75_wp * pi, plot_box(q))
       ! the curve
       block
         real(wp), allocatable :: sx(:), sy(:)
@@ -371,8 +326,8 @@ contains
       end block
       if (on_axis) then
         call sheet%line(q%sx(0.0_wp), q%sy(yk), q%sx(0.0_wp), q%sy(yl), stroke=red, width=0.9_wp)
-        call sheet%place_label("k", "label", q%sx(0.0_wp), q%sy(yk), pi, box(q), colour=red)
-        call sheet%place_label("l", "label", q%sx(0.0_wp), q%sy(yl), pi, box(q), colour=red)
+        call sheet%place_label("k", "label", q%sx(0.0_wp), q%sy(yk), pi, plot_box(q), colour=red)
+        call sheet%place_label("l", "label", q%sx(0.0_wp), q%sy(yl), pi, plot_box(q), colour=red)
       else
         text = words("k, l off the drawing: dT at k = ", "k, l за пределами чертежа: ΔT в k = ", lang)// &
           short_number(yk)//" "//joule//", "//words("at l = ", "в l = ", lang)//short_number(yl)//" "//joule
@@ -505,6 +460,77 @@ contains
       size=fitted_size(line, 2.6_wp, w - 30.0_wp, 0.6_wp), plain=.true.)
     call sheet%text(inner(3) - 3.0_wp, inner(2) + 17.5_wp, version_string, "small", anchor_end, plain=.true.)
   end subroutine sheet_header
+
+  !> A chart over the input angle at (x0, y0), `width` wide, its plot at most `hmax` - 26 mm
+  !> high: its panel, heading with the scale μ<sym> of the quantity and μφ, axes with y over
+  !> `values` (zero included unless `zero` is false) at a round μ, x over `phi` at `mu_phi`.
+  pure subroutine put_cycle_chart(sheet, x0, y0, width, hmax, phi, mu_phi, values, unit, sym, heading, xlabel, lang, &
+    q, zero)
+    type(sheet_t), intent(inout) :: sheet
+    real(wp), intent(in) :: x0, y0, width, hmax, phi(:), mu_phi, values(:)
+    character(*), intent(in) :: unit, sym, heading, xlabel
+    integer, intent(in) :: lang
+    type(plot_t), intent(out) :: q
+    logical, intent(in), optional :: zero
+    real(wp) :: lo, hi, step, mu, vmin, vmax
+    character(len=:), allocatable :: text, deg
+    logical :: with_zero
+    with_zero = .true.
+    if (present(zero)) with_zero = zero
+    deg = unit_word("deg", lang)
+    vmin = minval(values)
+    vmax = maxval(values)
+    if (with_zero) then
+      vmin = min(0.0_wp, vmin)
+      vmax = max(0.0_wp, vmax)
+    end if
+    if (vmax - vmin <= 0.0_wp) vmax = vmin + max(1.0_wp, abs(vmin))
+    step = nice_step(vmax - vmin, 5, .false.)
+    lo = step * floor(vmin / step + 1.0e-9_wp)
+    hi = step * ceiling(vmax / step - 1.0e-9_wp)
+    mu = round_scale(hi - lo, hmax - 26.0_wp)
+    q%left = x0 + 19.0_wp
+    q%top = y0 + 9.0_wp
+    q%width = (maxval(phi) - minval(phi)) / mu_phi
+    q%height = (hi - lo) / mu
+    q%xlo = minval(phi)
+    q%xhi = maxval(phi)
+    q%ylo = lo
+    q%yhi = hi
+    call sheet%set_layer(layer_charts)
+    call sheet%rect(x0, y0, width, q%height + 24.0_wp, "panel")
+    text = heading//";  μ"//sym//" = "//scale_number(mu)//" "//unit//"/"//unit_word("mm", lang)//",  μφ = "// &
+      scale_number(mu_phi)//" "//deg//"/"//unit_word("mm", lang)
+    call sheet%text(x0 + 2.0_wp, y0 + 5.0_wp, text, "heading", size=min(3.0_wp, fitted_size(text, 3.0_wp, &
+      width - 4.0_wp, 0.62_wp)))
+    call put_axes(sheet, q%left, q%top, q%width, q%height, q%xlo, q%xhi, nice_step(q%xhi - q%xlo, 8, .true.), lo, hi, &
+      step, xlabel, unit)
+  end subroutine put_cycle_chart
+
+  !> A curve over the input angle `phi` in the plot q with its name placed beside it.
+  pure subroutine put_cycle_curve(sheet, q, phi, v, colour, dash, name)
+    type(sheet_t), intent(inout) :: sheet
+    type(plot_t), intent(in) :: q
+    real(wp), intent(in) :: phi(:), v(:)
+    character(*), intent(in) :: colour, dash, name
+    real(wp), allocatable :: sx(:), sy(:)
+    integer :: k
+    allocate (sx(size(v)), sy(size(v)))
+    do k = 1, size(v)
+      sx(k) = q%sx(phi(k))
+      sy(k) = q%sy(v(k))
+    end do
+    call sheet%polyline(sx, sy, stroke=colour, width=0.45_wp, dash=dash)
+    k = max(1, nint(0.62_wp * size(v)))
+    call sheet%place_label(name, "label", sx(k), sy(k), -0.5_wp * pi, plot_box(q), colour=colour)
+  end subroutine put_cycle_curve
+
+  !> The plot's rectangle less 1 mm: where its labels may go.
+  pure function plot_box(q) result(b)
+    type(plot_t), intent(in) :: q
+    real(wp) :: b(4)
+    b = [q%left + 1.0_wp, q%top + 1.0_wp, q%left + q%width - 1.0_wp, q%top + q%height - 1.0_wp]
+  end function plot_box
 
   !> x on the sheet of an abscissa value, mm.
   pure real(wp) function plot_x(self, x)

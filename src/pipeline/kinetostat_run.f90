@@ -20,6 +20,7 @@ module kinetostat_run
   use kinetostat_mechanism_sheet, only: write_mechanism_sheet
   use kinetostat_sheet, only: sheet_t, iso_paper
   use kinetostat_dynamics_sheet, only: draw_dynamics_sheet
+  use kinetostat_kinematics_sheet, only: draw_kinematics_sheet
   use kinetostat_sheet_svg, only: write_sheet_svg
   use kinetostat_sheet_dxf, only: write_sheet_dxf
   use kinetostat_sketch, only: sketch_t
@@ -45,10 +46,11 @@ module kinetostat_run
   private
   public :: run_options_t, run_mechanism, guard_finite, progress_i, block_rows
   public :: format_table, format_csv, format_json, format_svg, format_summary, format_plans, format_dxf, &
-    format_deck, format_npy, format_from_name, format_names, course_none, course_dynamics
+    format_deck, format_npy, format_from_name, format_names, course_none, course_dynamics, &
+    course_kinematics
 
   !> Course sheets (kinetostat sheets): none (the format's own drawing), the dynamics sheet.
-  integer, parameter :: course_none = 0, course_dynamics = 1
+  integer, parameter :: course_none = 0, course_dynamics = 1, course_kinematics = 2
 
   !> Output format: the legacy fixed-format table.
   integer, parameter :: format_table = 1
@@ -129,6 +131,8 @@ module kinetostat_run
     character(len=2) :: paper = "A1"
     character(len=:), allocatable :: designation
     integer :: sheet_number = 0, sheet_count = 0
+    !> The kinematics sheet's position (a row of the run; the sheet keeps every row).
+    integer :: course_at = 1
   end type run_options_t
 
 contains
@@ -182,7 +186,9 @@ contains
     type(error_t), allocatable :: spool_error
     type(sheet_t) :: sheet
     character(len=:), allocatable :: pairs_asked
-    integer :: first, rows
+    integer :: first, rows, k_at
+    !> The kinematics sheet's mechanism at its position.
+    type(drawing_t) :: course_drawing
 
     call mech%read_deck(source, error)
     if (allocated(error)) return
@@ -341,7 +347,22 @@ contains
         else if (mech%force_sheet .and. options%at_step > 0) then
           call write_at_step(mech, table, options, out, error)
         else
-          if (options%course_sheet == course_dynamics) then
+          if (options%course_sheet == course_kinematics) then
+            call mech%sketch(motion_topo)
+            if (.not. motion_topo%available) then
+              call fatal_error(error, exit_usage, table%deck//": &"//table%mechanism//": the kinematics sheet "// &
+                "draws linkages only")
+              return
+            end if
+            k_at = findloc(table%row_numbers, options%course_at, dim=1)
+            if (k_at == 0) k_at = minloc(abs(table%row_numbers - options%course_at), dim=1)
+            call drawing_from_sketch(motion_topo, table, k_at, course_drawing, error)
+            if (allocated(error)) return
+            call mech%force_plan(table, k_at, course_drawing, error)
+            if (allocated(error)) return
+            call draw_kinematics_sheet(mech%title(options%lang), table, motion_topo, course_drawing, k_at, &
+                                       iso_paper(options%paper, .true.), options%lang, sheet)
+          else if (options%course_sheet == course_dynamics) then
             call draw_dynamics_sheet(mech%title(options%lang), table, iso_paper(options%paper, .true.), options%lang, &
                                      sheet)
           else if (mech%force_sheet) then
