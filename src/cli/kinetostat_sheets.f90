@@ -77,10 +77,11 @@ contains
     type(step_table_t) :: table
     type(run_options_t) :: o
     type(text_buffer_t) :: scratch
-    type(text_buffer_t), allocatable :: files(:)
-    character(len=:), allocatable :: names(:)
+    !> The files of the sheets (at most two a sheet before the PDFs) and their names.
+    type(text_buffer_t) :: files(2 * size(sheet_names))
+    character(len=64) :: names(2 * size(sheet_names))
     logical :: made(size(sheet_names)), dynamics
-    integer :: k_at, i, n, s, count_made
+    integer :: k_at, i, n, s, count_made, n_files
     character(len=256) :: message
     integer :: stat
 
@@ -103,8 +104,7 @@ contains
         "give as many numbers (got "//int_str(size(numbers))//")")
       return
     end if
-    allocate (character(len=64) :: names(0))
-    allocate (files(0))
+    n_files = 0
     n = 0
     do s = 1, size(sheet_names)
       if (.not. made(s)) cycle
@@ -131,7 +131,8 @@ contains
         o%format = format_dxf
         o%plans = .true.
         call add_file(trim(sheet_names(s))//".dxf")
-      case (3)
+      case default
+        ! the dynamics sheet (3)
         o%at_step = 0
         o%course_sheet = course_dynamics
         o%format = format_svg
@@ -148,7 +149,7 @@ contains
       call fatal_error(error, exit_input, "sheets: -o "//dir//": cannot create the directory")
       return
     end if
-    do i = 1, size(files)
+    do i = 1, n_files
       call write_output_file(dir//"/"//trim(names(i)), files(i), error)
       if (allocated(error)) return
     end do
@@ -172,7 +173,8 @@ contains
     do s = 1, size(sheet_names)
       if (made(s)) cycle
       do i = 1, size(sheet_suffixes)
-        call remove_file(dir//"/"//trim(sheet_names(s))//trim(sheet_suffixes(i)))
+        call remove_file(dir//"/"//trim(sheet_names(s))//trim(sheet_suffixes(i)), error)
+        if (allocated(error)) return
       end do
     end do
   contains
@@ -180,16 +182,11 @@ contains
     subroutine add_file(name)
       character(*), intent(in) :: name
       type(step_table_t) :: t
-      type(text_buffer_t) :: text
-      type(text_buffer_t), allocatable :: grown(:)
       if (allocated(error)) return
-      call run_one(path, o, t, text, error)
+      n_files = n_files + 1
+      call run_one(path, o, t, files(n_files), error)
       if (allocated(error)) return
-      allocate (grown(size(files) + 1))
-      grown(1:size(files)) = files
-      grown(size(files) + 1) = text
-      call move_alloc(grown, files)
-      names = [character(len=64) :: names, name]
+      names(n_files) = name
     end subroutine add_file
   end subroutine write_course_sheets
 
@@ -262,15 +259,17 @@ contains
     q = q//"'"
   end function quoted
 
-  !> Remove a file if it exists (an old sheet).
-  subroutine remove_file(path)
+  !> Remove a file if it exists (an old sheet); an error when it stays.
+  subroutine remove_file(path, error)
     character(*), intent(in) :: path
+    type(error_t), allocatable, intent(out) :: error
     integer :: unit, ios
     logical :: there
     inquire (file=path, exist=there)
     if (.not. there) return
     open (newunit=unit, file=path, status="old", iostat=ios)
     if (ios == 0) close (unit, status="delete", iostat=ios)
+    if (ios /= 0) call fatal_error(error, exit_input, "sheets: cannot remove the earlier sheet "//path)
   end subroutine remove_file
 
 end module kinetostat_sheets

@@ -12,8 +12,8 @@ module kinetostat_dynamics_table
     note_drive_deviation
 
   !> The DYNAMICS block's note on the flywheel's disc (a key of the labels' dictionary).
-  character(*), parameter :: flywheel_disc_note = "a disc: J_flywheel = m D^2/8, m = density * pi D^2 b/4, "// &
-    "b = width_ratio * D"
+  character(*), parameter :: flywheel_disc_note = "a disc: J_flywheel = m D^2/8, m = density pi D^2 b/4, "// &
+    "b = width_ratio D"
   !> The note when the machine has no flywheel.
   character(*), parameter :: flywheel_none_note = "no flywheel: J_flywheel = 0"
 

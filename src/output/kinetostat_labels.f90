@@ -130,8 +130,8 @@ contains
       text = "МАХОВИК: МАССА m"
     case ("flywheel_note")
       text = "МАХОВИК"
-    case ("a disc: J_flywheel = m D^2/8, m = density * pi D^2 b/4, b = width_ratio * D")
-      text = "ДИСК: J_flywheel = m D^2/8, m = ПЛОТНОСТЬ * pi D^2 b/4, b = (b/D) * D"
+    case ("a disc: J_flywheel = m D^2/8, m = density pi D^2 b/4, b = width_ratio D")
+      text = "ДИСК: J_flywheel = m D^2/8, m = ПЛОТНОСТЬ pi D^2 b/4, b = (b/D) D"
     case ("no flywheel: J_flywheel = 0")
       text = "МАХОВИКА НЕТ: J_flywheel = 0"
     case ("none")

@@ -189,9 +189,10 @@ contains
     pure real(wp) function column_at(name, k)
       character(*), intent(in) :: name
       integer, intent(in) :: k
-      real(wp), allocatable :: v(:)
-      v = column(name)
-      column_at = v(k)
+      integer :: c
+      c = table%column_index(name)
+      column_at = 0.0_wp
+      if (c > 0) column_at = table%rows(c, k)
     end function column_at
 
 
@@ -247,6 +248,7 @@ contains
       integer :: kk, kl_row
       logical :: on_axis
       character(len=:), allocatable :: heading, text
+      allocate (jr(size(table%rows, 2)), dt(size(table%rows, 2)))
       jr = column("J_red")
       dt = column("dT")
       ! the speed law's energy at the first row: 1/2 (J_fw + J_red) omega^2 = E0 + dT

@@ -201,7 +201,66 @@ contains
         "формула строения: ", lang)//formula, "label")
       call sheet%text(x0 + 4.0_wp, y0 + 9.0_wp + 4.5_wp * size(cells, 1) + 11.0_wp, "n = "//int_str(n)//",  p5 = "// &
         int_str(p5)//",  p4 = 0,  W = 3n − 2p5 − p4 = "//int_str(3 * n - 2 * p5), "label")
+      call put_pairs(x0 + 4.0_wp, y0 + 9.0_wp + 4.5_wp * size(cells, 1) + 17.0_wp, w - 8.0_wp)
     end subroutine put_structure
+
+    !> The table of the kinematic pairs: at every point the links joined there (the frame at a
+    !> pivot), a turning pair (В) between each further link and the first; every slider a
+    !> sliding pair (П); all lower pairs of class V.
+    subroutine put_pairs(x0, y0, w)
+      real(wp), intent(in) :: x0, y0, w
+      character(len=64), allocatable :: cells(:, :)
+      character(len=16), allocatable :: seen(:), at(:)
+      character(len=16) :: pn
+      character(len=:), allocatable :: frame
+      integer :: i, j, l2, m
+      frame = "0"
+      if (size(groups) > 0) then
+        if (allocated(groups(1)%label)) then
+          if (index(groups(1)%label, "I(") == 1 .and. index(groups(1)%label, ",") > 3) then
+            frame = groups(1)%label(3:index(groups(1)%label, ",") - 1)
+          end if
+        end if
+      end if
+      allocate (cells(1, 4), seen(0))
+      cells(1, :) = [character(len=64) :: words("pair", "пара", lang), words("links", "звенья", lang), &
+        words("kind", "вид", lang), words("class", "класс", lang)]
+      do i = 1, size(topo%links)
+        do j = 1, size(topo%links(i)%points)
+          pn = topo%links(i)%points(j)
+          if (any(seen == pn)) cycle
+          seen = [character(len=16) :: seen, pn]
+          allocate (at(0))
+          if (allocated(topo%pivots)) then
+            if (any(topo%pivots == pn)) at = [character(len=16) :: frame]
+          end if
+          do l2 = 1, size(topo%links)
+            if (lists(topo, l2, trim(pn)) .and. .not. sliding_on(topo, l2, trim(pn))) then
+              at = [character(len=16) :: at, topo%links(l2)%name]
+            end if
+          end do
+          do m = 2, size(at)
+            cells = reshape([character(len=64) :: transpose(cells), trim(pn), trim(at(1))//"–"//trim(at(m)), &
+              words("turning", "вращательная", lang), "V"], [size(cells, 1) + 1, 4], order=[2, 1])
+          end do
+          deallocate (at)
+        end do
+      end do
+      do i = 1, size(slides)
+        if (.not. slide_is_pair(topo, slides, i)) cycle
+        if (slides(i)%g > 0) then
+          pn = topo%links(slides(i)%g)%name
+        else
+          pn = frame
+        end if
+        cells = reshape([character(len=64) :: transpose(cells), trim(slides(i)%name), &
+          trim(topo%links(slides(i)%m)%name)//"–"//trim(pn), words("sliding", "поступательная", lang), "V"], &
+          [size(cells, 1) + 1, 4], order=[2, 1])
+      end do
+      call sheet%set_layer(layer_text)
+      call sheet%text(x0, y0, words("Kinematic pairs", "Кинематические пары", lang), "label")
+      call put_table(sheet, x0, y0 + 2.0_wp, [0.16_wp * w, 0.16_wp * w, 0.3_wp * w, 0.12_wp * w], 4.2_wp, cells)
+    end subroutine put_pairs
 
     !> The lower pairs of the sketch: at every point, the links listing it (not as a sliding
     !> contact) and the frame for a pivot, less one; and every slider that is a pair.

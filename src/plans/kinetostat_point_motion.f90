@@ -50,7 +50,7 @@ contains
       call point_images(topo, drawing, omega, eps, a0, .true., a)
       do ip = 1, size(drawing%points)
         associate (pt => drawing%points(ip))
-          iv = image_index(v, pt%name)
+          iv = named_image(v, pt%name)
           if (iv == 0) cycle
           if (pt%kind == point_pivot) then
             call table%put_velocity(k, trim(pt%name), [0.0_wp, 0.0_wp])
@@ -64,18 +64,18 @@ contains
     end do
   contains
     !> Index of the image named `name` (0: none).
-    pure integer function image_index(images, name)
+    pure integer function named_image(images, name)
       type(plan_vector_t), intent(in) :: images(:)
       character(*), intent(in) :: name
       integer :: j
-      image_index = 0
+      named_image = 0
       do j = 1, size(images)
         if (images(j)%name == name) then
-          image_index = j
+          named_image = j
           return
         end if
       end do
-    end function image_index
+    end function named_image
   end subroutine add_point_motion
 
   !> The named points of row k (the links' points, the centres of mass with position columns,
