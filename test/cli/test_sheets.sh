@@ -143,3 +143,14 @@ expect_exit sheets-numbers-count 1 sheets data/pr3207_flywheel.nml -o "$cli_tmp/
 expect_exit sheets-format 1 sheets data/pr3207.nml -o "$cli_tmp/x" --format csv
 expect_exit sheets-paper-without 1 data/pr3207.nml --paper A3
 expect_exit sheets-gears 1 sheets data/gears_reducer.nml -o "$cli_tmp/x"
+
+# the designation and the student are a user's strings: every sheet well formed with hostile
+# ones (tools/output_check.py: XML, the DXF's group-code pairs in ASCII)
+dir="$cli_tmp/sheets_hostile"
+rm -rf "$dir"
+run_ks sheets data/pr3207_flywheel.nml -o "$dir" --designation $'<b>&amp;"x\'\x01\n0\nEOF' --student $'<i>\n999'
+ok=1
+[ "$rc" -eq 0 ] || ok=0
+for f in "$dir"/*.svg; do python3 "$root/tools/output_check.py" xml "$f" --forbid "<b>" --forbid "<i>" >/dev/null 2>&1 || ok=0; done
+for f in "$dir"/*.dxf; do python3 "$root/tools/output_check.py" dxf "$f" >/dev/null 2>&1 || ok=0; done
+[ "$ok" = 1 ] && pass || fail sheets-hostile-strings "exit $rc or a sheet not well formed"
