@@ -19,7 +19,7 @@ module kinetostat_sheets
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_summary, only: column_stats_t, column_stats
   use kinetostat_run, only: run_options_t, run_mechanism, format_summary, format_svg, format_dxf, format_plans, &
-    course_dynamics, course_none, course_kinematics
+    course_dynamics, course_none, course_kinematics, course_kinetostatics
   use kinetostat_registry, only: create_mechanism, known_kinds
   implicit none
   private
@@ -126,6 +126,7 @@ contains
         call add_file(trim(sheet_names(s))//".dxf")
       case (2)
         o%at_step = k_at
+        o%course_sheet = course_kinetostatics
         o%format = format_plans
         call add_file(trim(sheet_names(s))//".svg")
         o%format = format_dxf

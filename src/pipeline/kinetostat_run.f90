@@ -47,10 +47,10 @@ module kinetostat_run
   public :: run_options_t, run_mechanism, guard_finite, progress_i, block_rows
   public :: format_table, format_csv, format_json, format_svg, format_summary, format_plans, format_dxf, &
     format_deck, format_npy, format_from_name, format_names, course_none, course_dynamics, &
-    course_kinematics
+    course_kinematics, course_kinetostatics
 
   !> Course sheets (kinetostat sheets): none (the format's own drawing), the dynamics sheet.
-  integer, parameter :: course_none = 0, course_dynamics = 1, course_kinematics = 2
+  integer, parameter :: course_none = 0, course_dynamics = 1, course_kinematics = 2, course_kinetostatics = 3
 
   !> Output format: the legacy fixed-format table.
   integer, parameter :: format_table = 1
@@ -544,7 +544,11 @@ contains
     if (options%plans .or. options%format == format_plans) then
       ! the graphical method: as numbers (json), or its sheet (plans: SVG; dxf)
       call build_plans(topo, drawing, table, k, plans)
-      call plans_sheet(topo, drawing, plans, plans_geometry)
+      if (options%course_sheet == course_kinetostatics) then
+        call plans_sheet(topo, drawing, plans, plans_geometry, options%paper)
+      else
+        call plans_sheet(topo, drawing, plans, plans_geometry)
+      end if
       if (options%format == format_json) then
         call write_plans_json(mech%title(options%lang), plans, plans_geometry, table, k, out)
         return

@@ -41,9 +41,7 @@ for deck in $sheets_decks; do
     [ -z "$missing" ] && pass || fail "sheets-files-$deck-$lang" "missing:$missing"
     for s in $expected; do
       svg="$dir/$s.svg"
-      if [ "$s" != kinetostatics ]; then
-        sheets_iso "$svg" 841.00 594.00 >"$cli_tmp/check.out" 2>&1 || { fail "sheets-iso-$deck-$lang" "$(tail -2 "$cli_tmp/check.out")"; continue; }
-      fi
+      sheets_iso "$svg" 841.00 594.00 >"$cli_tmp/check.out" 2>&1 || { fail "sheets-iso-$deck-$s-$lang" "$(tail -2 "$cli_tmp/check.out")"; continue; }
       python3 "$sheets_check" labels --lines "$svg" >"$cli_tmp/check.out" 2>&1 \
         && python3 "$sheets_check" notation "$lang" "$svg" >>"$cli_tmp/check.out" 2>&1 \
         && python3 "$root/tools/dxf_check.py" "$dir/$s.dxf" >>"$cli_tmp/check.out" 2>&1 \
@@ -101,6 +99,7 @@ dir="$cli_tmp/sheets_opts"
 rm -rf "$dir"
 run_ks sheets data/pr3207_flywheel.nml -o "$dir" --paper A2 --designation "ТММ.КП.07.003" --sheet-numbers 4,5,6 --at 7
 if [ "$rc" -eq 0 ] && sheets_iso "$dir/dynamics.svg" 594.00 420.00 >/dev/null 2>&1 \
+  && sheets_iso "$dir/kinetostatics.svg" 594.00 420.00 >/dev/null 2>&1 \
   && [ "$(grep -c '>ТММ.КП.07.003<' "$dir/dynamics.svg")" = 2 ] && grep -q 'rotate(180' "$dir/dynamics.svg" \
   && grep -q '>Sheet 6<' "$dir/dynamics.svg" && grep -q '>Sheet 5<' "$dir/kinetostatics.svg" \
   && grep -q '>Sheet 4<' "$dir/kinematics.svg" \
