@@ -938,26 +938,10 @@ contains
         lo = max(a, cycle%phi0)
         hi = min(b, x)
         if (hi <= lo) cycle
-        work = work + 0.5_wp * (hi - lo) * (segment(i, lo - m * turn) + segment(i, hi - m * turn))
+        ! the table is linear on the segment and continuous: its trapezoid is exact
+        work = work + 0.5_wp * (hi - lo) * (drive_at(cycle, lo) + drive_at(cycle, hi))
       end do
     end do
-  contains
-    !> The table's segment i (linear from point i to the next, the last to the first + 2 pi) at u.
-    pure real(wp) function segment(i, u)
-      integer, intent(in) :: i
-      real(wp), intent(in) :: u
-      real(wp) :: x0, x1, m0, m1
-      x0 = cycle%drive_phi(i)
-      m0 = cycle%drive_m(i)
-      if (i < n) then
-        x1 = cycle%drive_phi(i + 1)
-        m1 = cycle%drive_m(i + 1)
-      else
-        x1 = cycle%drive_phi(1) + turn
-        m1 = cycle%drive_m(1)
-      end if
-      segment = m0 + (m1 - m0) * (u - x0) / (x1 - x0)
-    end function segment
   end function drive_work
 
   !> The error of a dead position met in the cycle: the mechanism's own message (the group,

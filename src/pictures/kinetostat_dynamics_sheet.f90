@@ -17,10 +17,11 @@ module kinetostat_dynamics_sheet
   use kinetostat_kinds, only: wp, pi, version_string
   use kinetostat_format, only: short_number, fixed_number
   use kinetostat_step_table, only: step_table_t
-  use kinetostat_labels, only: lang_ru, word => label, unit_word => unit_symbol
+  use kinetostat_labels, only: unit_word => unit_symbol
   use kinetostat_sheet, only: sheet_t, paper_t, layer_text, layer_charts, layer_profile, anchor_start, anchor_middle, &
     anchor_end
-  use kinetostat_title_block, only: put_sheet_format, title_block_from_table, block_height, header_indent
+  use kinetostat_title_block, only: put_sheet_format, title_block_from_table, block_height, header_indent, &
+    deck_line
   use kinetostat_mechanism_sheet, only: fitted_size
   use kinetostat_scales, only: round_scale, nice_step, scale_number, standard_drawing_scale, drawing_scale_t
   use kinetostat_run_sheet, only: put_axes
@@ -439,7 +440,6 @@ contains
     character(*), intent(in) :: heading
     real(wp) :: inner(4), w
     character(len=:), allocatable :: line
-    integer :: i
     inner = sheet%paper%inside()
     ! right of графа 26 (the designation turned 180 deg in the upper left corner) when given
     inner(1) = inner(1) + header_indent(table)
@@ -448,16 +448,7 @@ contains
     call sheet%text(inner(1) + 6.0_wp, inner(2) + 7.0_wp, heading, "title", size=fitted_size(heading, 4.5_wp, w, 0.8_wp))
     call sheet%text(inner(1) + 6.0_wp, inner(2) + 12.5_wp, title, "subtitle", size=fitted_size(title, 3.0_wp, w, 0.6_wp), &
       plain=.true.)
-    line = word("deck", lang)//": "//table%deck
-    if (allocated(table%subtitle)) line = line//"   "//table%subtitle
-    if (allocated(table%overrides)) then
-      if (size(table%overrides) > 0) then
-        line = line//"   --set"
-        do i = 1, size(table%overrides)
-          line = line//" "//trim(table%overrides(i))
-        end do
-      end if
-    end if
+    line = deck_line(table, lang)
     call sheet%text(inner(1) + 6.0_wp, inner(2) + 17.5_wp, line, "subtitle", &
       size=fitted_size(line, 2.6_wp, w - 30.0_wp, 0.6_wp), plain=.true.)
     call sheet%text(inner(3) - 3.0_wp, inner(2) + 17.5_wp, version_string, "small", anchor_end, plain=.true.)

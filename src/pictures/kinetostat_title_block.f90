@@ -17,14 +17,14 @@ module kinetostat_title_block
   use kinetostat_step_table, only: step_table_t
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_text, only: int_str
-  use kinetostat_labels, only: lang_ru
+  use kinetostat_labels, only: lang_ru, label
   use kinetostat_typeset, only: char_count
   use kinetostat_sheet, only: sheet_t, paper_t, layer_frame, anchor_middle, frame_left, frame_margin, line_classes
   use kinetostat_sheet_svg, only: put_sheet_elements
   implicit none
   private
   public :: title_block_t, title_block_from_table, put_sheet_format, put_title_block_at, put_title_block, &
-    title_block_height, block_width, block_height, fitted_text, header_indent
+    title_block_height, block_width, block_height, fitted_text, header_indent, deck_line
 
   !> Size of the block (ГОСТ 2.104 form 1), mm.
   real(wp), parameter :: block_width = 185.0_wp, block_height = 55.0_wp
@@ -87,6 +87,23 @@ contains
     if (.not. allocated(table%designation)) return
     if (len(table%designation) > 0) header_indent = 72.0_wp
   end function header_indent
+
+  !> A sheet's header line of the run: the deck, its own title and the --set changes (the
+  !> user's words: written plain).
+  pure function deck_line(table, lang) result(line)
+    type(step_table_t), intent(in) :: table
+    integer, intent(in) :: lang
+    character(len=:), allocatable :: line
+    integer :: i
+    line = label("deck", lang)//": "//table%deck
+    if (allocated(table%subtitle)) line = line//"   "//table%subtitle
+    if (.not. allocated(table%overrides)) return
+    if (size(table%overrides) == 0) return
+    line = line//"   --set"
+    do i = 1, size(table%overrides)
+      line = line//" "//trim(table%overrides(i))
+    end do
+  end function deck_line
 
   !> The frame of the sheet's paper and the title block in its lower right corner.
   pure subroutine put_sheet_format(sheet, block)

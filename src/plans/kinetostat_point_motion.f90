@@ -10,7 +10,7 @@ module kinetostat_point_motion
   use kinetostat_error, only: error_t
   use kinetostat_step_table, only: step_table_t
   use kinetostat_sketch, only: sketch_t
-  use kinetostat_drawing, only: drawing_t, column_value, point_joint, point_pivot, point_com
+  use kinetostat_drawing, only: drawing_t, column_value, point_pivot, point_com, points_from_sketch
   use kinetostat_plans_base, only: plan_vector_t
   use kinetostat_plans, only: solve_fields, point_images
   implicit none
@@ -38,7 +38,7 @@ contains
     allocate (omega(nl), eps(nl), none(2, nl))
     none = 0.0_wp
     do k = 1, table%row_count()
-      call points_of(topo, table, k, drawing, error)
+      call points_from_sketch(topo, table, k, drawing, error)
       if (allocated(error)) return
       do i = 1, nl
         omega(i) = column_value(table, "omega"//topo%links(i)%name, k)
@@ -78,38 +78,5 @@ contains
     end function named_image
   end subroutine add_point_motion
 
-  !> The named points of row k (the links' points, the centres of mass with position columns,
-  !> the pivots), without the bodies and guides a drawing adds.
-  pure subroutine points_of(topo, table, k, drawing, error)
-    type(sketch_t), intent(in) :: topo
-    type(step_table_t), intent(in) :: table
-    integer, intent(in) :: k
-    type(drawing_t), intent(out) :: drawing
-    type(error_t), allocatable, intent(out) :: error
-    integer :: i, j, kind
-    allocate (drawing%points(0), drawing%bodies(0), drawing%guides(0), drawing%forces(0), drawing%moments(0))
-    do i = 1, size(topo%links)
-      do j = 1, size(topo%links(i)%points)
-        kind = point_joint
-        if (allocated(topo%pivots)) then
-          if (any(topo%pivots == topo%links(i)%points(j))) kind = point_pivot
-        end if
-        call drawing%point_from_table(table, k, trim(topo%links(i)%points(j)), kind, error)
-        if (allocated(error)) return
-      end do
-    end do
-    do i = 1, size(topo%links)
-      if (table%column_index("x_S"//topo%links(i)%name) > 0 .and. drawing%point_index("S"//topo%links(i)%name) == 0) then
-        call drawing%point_from_table(table, k, "S"//topo%links(i)%name, point_com, error)
-        if (allocated(error)) return
-      end if
-    end do
-    if (allocated(topo%pivots)) then
-      do i = 1, size(topo%pivots)
-        call drawing%point_from_table(table, k, trim(topo%pivots(i)), point_pivot, error)
-        if (allocated(error)) return
-      end do
-    end if
-  end subroutine points_of
 
 end module kinetostat_point_motion
