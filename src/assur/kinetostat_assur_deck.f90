@@ -579,7 +579,7 @@ contains
     real(wp) :: crank_at(2), crank_m, crank_j, crank_s(2), omega1, g, gravity_angle, phi_start, dphi
     !> Machine dynamics variables (see kinetostat_dynamics_deck); `cycle`: the steady cycle,
     !> deg (360 or 720).
-    real(wp) :: delta, j_rotor, j_flywheel, cycle
+    real(wp) :: delta, j_rotor, j_flywheel, cycle, flywheel_density, flywheel_width_ratio
     !> The driving-moment table (pairs phi deg, M_d; see kinetostat_dynamics_deck).
     real(wp) :: md_table(md_table_capacity)
     character(len=text_bytes * text_chars) :: dynamics
@@ -605,7 +605,8 @@ contains
     namelist /assur/ title, frame_id, crank_id, crank_at, crank_m, crank_j, crank_s, omega1, &
       omega1_step, eps1_step, g, gravity_angle, phi_start, dphi, n, dyad, force, moment, &
       step_values, angles_signed, components, drive_dyad, drive_pair, output_link, phi1, start_at, crank_f, crank_r, &
-      coordinates, phi_ref, dynamics, delta, j_rotor, j_flywheel, md_table, crank_joint, cycle
+      coordinates, phi_ref, dynamics, delta, j_rotor, j_flywheel, md_table, crank_joint, cycle, &
+      flywheel_density, flywheel_width_ratio
 
     call begin_group(source, group_name, ctx, error)
     if (allocated(error)) return
@@ -613,6 +614,7 @@ contains
     allocate (force(max_forces), moment(max_moments))
     dynamics = ""; delta = unset_real; j_rotor = unset_real; j_flywheel = unset_real
     md_table = unset_real; cycle = unset_real
+    flywheel_density = unset_real; flywheel_width_ratio = unset_real
     title = ""
     frame_id = 0.0_wp; crank_id = 1.0_wp; n = unset_real
     drive_dyad = unset_real; drive_pair = unset_real
@@ -911,7 +913,7 @@ contains
       if (allocated(error)) return
     end if
     call read_dynamics_settings(ctx, dynamics, delta, j_rotor, j_flywheel, omega1, deck%dyn, error, &
-      md_table, cycle)
+      md_table, cycle, flywheel_density, flywheel_width_ratio)
     if (allocated(error)) return
     if (deck%dyn%mode >= dynamics_steady) then
       call require_rule(ctx, "dynamics", .not. deck%friction_on, "a steady cycle with friction in the pairs is "// &

@@ -37,6 +37,7 @@ module kinetostat_cli
   use kinetostat_format, only: short_number
   use kinetostat_cli_options, only: synopsis_lines, usage_text, value_options, find_option, find_command, &
     command_takes, frame_names
+  use kinetostat_sheets, only: write_course_sheets, parse_sheet_numbers
   !$ use omp_lib, only: omp_set_num_threads
   implicit none
   private
@@ -54,6 +55,8 @@ module kinetostat_cli
     "structure DECK  structural analysis of a linkage deck (&linkage, &assur, &pr3207, &pr3050,", &
     "            &sixbar)", &
     "contour DECK  the blocking contour of a &gear_geometry deck's pair as CSV: curve,x1,x2", &
+    "sheets DECK -o DIR  the course's sheets (kinetostatics; dynamics with a steady cycle) as", &
+    "            SVG, DXF and PDF (rsvg-convert) in DIR (docs/course.md)", &
     "", &
     "DECK is a Fortran namelist file; its first group names the mechanism; - reads it", &
     "from standard input (so does a pipe given as a path, e.g. /dev/stdin).", &
@@ -162,6 +165,12 @@ module kinetostat_cli
     real(wp) :: fraction = 0.5_wp
     !> Whether --fraction was given.
     logical :: fraction_given = .false.
+    !> The sheets subcommand was given (`kinetostat sheets DECK -o DIR`).
+    logical :: sheets = .false.
+    !> sheets --sheet-numbers (empty: 1..N of N).
+    integer, allocatable :: sheet_numbers(:)
+    !> Options only the sheets subcommand takes were given.
+    logical :: sheet_options = .false.
   end type cli_args_t
 
 
@@ -223,6 +232,9 @@ contains
         call contour_of_deck(args, out, error)
       else if (args%balance) then
         call balance_deck(args, out, error)
+      else if (args%sheets) then
+        call write_course_sheets(args%deck, args%options, args%out_file, args%sheet_numbers, error)
+        committed = .true.
       else
         progress_wanted = stderr_is_terminal() .and. .not. args%quiet
         progress_deck = args%deck
@@ -1026,6 +1038,26 @@ contains
           return
         end if
         args%contour = .true.
+      case ("sheets")
+        if (i /= 1) then
+          call fatal_error(error, exit_usage, "sheets must come first: kinetostat sheets DECK -o DIR")
+          return
+        end if
+        args%sheets = .true.
+      case ("--paper")
+        args%sheet_options = .true.
+        if (all(value /= ["A1", "A2", "A3", "A4"])) then
+          call fatal_error(error, exit_usage, "--paper must be A1, A2, A3 or A4 (got '"//value//"')")
+          return
+        end if
+        args%options%paper = value
+      case ("--designation")
+        args%sheet_options = .true.
+        args%options%designation = value
+      case ("--sheet-numbers")
+        args%sheet_options = .true.
+        call parse_sheet_numbers(value, args%sheet_numbers, error)
+        if (allocated(error)) return
       case ("structure")
         if (i /= 1) then
           call fatal_error(error, exit_usage, "structure must come first: kinetostat structure DECK [--lang ru]")
@@ -1066,8 +1098,18 @@ contains
       call check_options_belong("template")
       return
     end if
+    if (.not. allocated(args%sheet_numbers)) allocate (args%sheet_numbers(0))
     if (.not. allocated(args%deck)) then
       call fatal_error(error, exit_usage, "no deck given")
+    else if (args%sheets .and. .not. allocated(args%out_file)) then
+      call fatal_error(error, exit_usage, "sheets needs -o DIR (the directory the sheets go into)")
+    else if (args%sheets .and. (args%format_given .or. args%options%kinematics .or. args%options%shaking .or. &
+             args%options%plans .or. allocated(args%options%pairs))) then
+      call fatal_error(error, exit_usage, "sheets takes a deck, -o DIR, --paper, --lang, --at, --designation, "// &
+        "--sheet-numbers, --student, --group, --variant and --set only")
+    else if (args%sheet_options .and. .not. args%sheets) then
+      call fatal_error(error, exit_usage, "--paper, --designation and --sheet-numbers belong to the sheets "// &
+        "subcommand: kinetostat sheets DECK -o DIR ...")
     else if (args%structure .and. (args%format_given .or. allocated(args%options%overrides) .or. &
              args%options%at_step > 0)) then
       call fatal_error(error, exit_usage, "structure takes a deck, --lang and -o only")
@@ -1098,7 +1140,7 @@ contains
     else if (args%options%format == format_plans .and. args%options%at_step == 0) then
       call fatal_error(error, exit_usage, "--format plans needs --at K (the step whose plans are drawn)")
     else if (args%options%at_step > 0 .and. all(args%options%format /= [format_svg, format_plans, format_dxf]) &
-      .and. .not. args%options%plans) then
+      .and. .not. args%options%plans .and. .not. args%sheets) then
       call fatal_error(error, exit_usage, "--at needs --format svg, plans or dxf (or --format json --plans)")
     else if (args%options%format == format_npy) then
       if (binary_to_terminal(args%out_file)) call fatal_error(error, exit_usage, "--format npy writes binary data, "// &
@@ -1113,6 +1155,8 @@ contains
       call check_options_belong("structure")
     else if (args%contour) then
       call check_options_belong("contour")
+    else if (args%sheets) then
+      call check_options_belong("sheets")
     else
       call check_options_belong("")
     end if

@@ -41,7 +41,7 @@ module kinetostat_cli_options
     !> Its operands as the synopsis shows them ("DECK|-", "A B").
     character(len=8) :: operands = ""
     !> Its options in synopsis order, a blank between: each by the name the synopsis shows
-    !> ("-o" for -o/--output); "NAME!" is required (no brackets); "NAME=A|B" takes only these
+    !> ("-o" for -o/--output); "NAME!" is required (no brackets); "NAME=A|B" (or "-o=DIR") shows these
     !> of the option's values here.
     character(len=300) :: options = ""
   end type command_t
@@ -78,6 +78,9 @@ contains
       option_t("--rtol", "", "R"), &
       option_t("--atol", "", "A"), &
       option_t("--common"), &
+      option_t("--paper", "", "", "A1|A2|A3|A4"), &
+      option_t("--designation", "", "TEXT"), &
+      option_t("--sheet-numbers", "", "N,N,..."), &
       option_t("--help", "-h"), &
       option_t("--version", "-V")]
   end function cli_options
@@ -94,7 +97,9 @@ contains
       command_t("diff", "A B", "--rtol --atol --common --quiet"), &
       command_t("balance", "DECK", "-o --method --fraction --lang --max-deck-size --quiet"), &
       command_t("structure", "DECK", "--lang -o --max-deck-size --quiet"), &
-      command_t("contour", "DECK", "--set -o --max-deck-size --quiet")]
+      command_t("contour", "DECK", "--set -o --max-deck-size --quiet"), &
+      command_t("sheets", "DECK", "-o!=DIR --paper --lang --at --designation --sheet-numbers --student --group " // &
+        "--variant --set --max-deck-size --quiet")]
   end function cli_commands
 
   !> A list "a, b, c" as choices "a|b|c".

@@ -135,6 +135,9 @@ module kinetostat_dynamics
     real(wp) :: period = 0.0_wp
     !> Work of the loads over the cycle (= -span M_d), J.
     real(wp) :: load_work = 0.0_wp
+    !> The flywheel drawn as a disc: its material's density, kg/m^3, and its width over its
+    !> diameter, b/D.
+    real(wp) :: flywheel_density = 7800.0_wp, flywheel_width_ratio = 0.2_wp
   end type cycle_t
 
   !> The motion and the reduced quantities at one input angle.
@@ -155,6 +158,11 @@ module kinetostat_dynamics
     real(wp) :: m = 0.0_wp
     !> The driving moment M_d at the angle, N*m.
     real(wp) :: md = 0.0_wp
+    !> The work of the driving moment from phi0, int M_d dphi, J (dT - a_md is the loads').
+    real(wp) :: a_md = 0.0_wp
+    !> Merzalov's T_I = dT - (J_red - J_c) omega_m^2/2, J_c = j_rotor + the links' constant
+    !> part (the kinetic energy of the first group less its value at phi0), J.
+    real(wp) :: t_i = 0.0_wp
   end type motion_t
 
 contains
@@ -918,7 +926,43 @@ contains
     mo%md = drive_at(cycle, phi)
     mo%eps = (mo%md + mo%m - 0.5_wp * mo%dj * mo%omega**2) / (cycle%j_flywheel + mo%j)
     mo%t = cycle%time(k) + h * sum(cycle%r_gl(:, k + 1) * wt)
+    mo%a_md = drive_work(cycle, x)
+    mo%t_i = mo%dt - (mo%j - cycle%j_rotor - cycle%j_links_constant) * cycle%omega_mean**2 / 2.0_wp
   end function motion_from
+
+  !> The work of the driving moment from phi0 to x (rad, phi0 <= x <= phi0 + 2 pi), J: M_d (x -
+  !> phi0), or the exact integral of the table (linear between its points, periodic).
+  pure real(wp) function drive_work(cycle, x) result(work)
+    type(cycle_t), intent(in) :: cycle
+    real(wp), intent(in) :: x
+    real(wp) :: a, b, lo, hi, turn
+    integer :: n, i, m
+    work = cycle%m_d * (x - cycle%phi0)
+    if (.not. allocated(cycle%drive_m)) return
+    n = size(cycle%drive_phi)
+    work = 0.0_wp
+    if (n == 1) then
+      work = cycle%drive_m(1) * (x - cycle%phi0)
+      return
+    end if
+    turn = 2.0_wp * pi
+    ! every segment of the table, in the turns that may overlap [phi0, x]
+    do m = floor((cycle%phi0 - cycle%drive_phi(1)) / turn) - 1, floor((x - cycle%drive_phi(1)) / turn) + 1
+      do i = 1, n
+        a = cycle%drive_phi(i) + m * turn
+        if (i < n) then
+          b = cycle%drive_phi(i + 1) + m * turn
+        else
+          b = cycle%drive_phi(1) + (m + 1) * turn
+        end if
+        lo = max(a, cycle%phi0)
+        hi = min(b, x)
+        if (hi <= lo) cycle
+        ! the table is linear on the segment and continuous: its trapezoid is exact
+        work = work + 0.5_wp * (hi - lo) * (drive_at(cycle, lo) + drive_at(cycle, hi))
+      end do
+    end do
+  end function drive_work
 
   !> The error of a dead position met in the cycle: the mechanism's own message (the group,
   !> its lengths) at that input angle, as a plain run names it at a step.

@@ -5,7 +5,7 @@ module kinetostat_dynamics_deck
   use kinetostat_kinds, only: wp, deg_to_rad, pi
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str
-  use kinetostat_deck, only: deck_context_t, deck_error, is_set, require_rule, optional_default, require_nonnegative, &
+  use kinetostat_deck, only: deck_context_t, deck_error, is_set, unset_real, require_rule, optional_default, require_nonnegative, &
     count_values
   use kinetostat_dynamics, only: dynamics_none, dynamics_reduced, dynamics_steady, dynamics_given, &
     reduced_source_t, cycle_t, cycle_setup, cycle_steady, cycle_given
@@ -35,6 +35,10 @@ module kinetostat_dynamics_deck
     !> The cycle of the steady motion, deg: 360 (one turn) or 720 (two turns: a four-stroke
     !> engine's working cycle).
     real(wp) :: cycle_deg = 360.0_wp
+    !> The flywheel drawn as a disc: density of its material, kg/m^3 (steel by default).
+    real(wp) :: flywheel_density = 7800.0_wp
+    !> Its width over its diameter, b/D.
+    real(wp) :: flywheel_width_ratio = 0.2_wp
   end type dynamics_deck_t
 
 contains
@@ -58,7 +62,8 @@ contains
   !> Validate the dynamics variables as read (reals unset_real when not given; `mode_text`
   !> blank when not given). `omega1` is the deck's crank speed (the mean speed with 'steady'
   !> and 'given').
-  subroutine read_dynamics_settings(ctx, mode_text, delta, j_rotor, j_flywheel, omega1, dyn, error, md_table, cycle)
+  subroutine read_dynamics_settings(ctx, mode_text, delta, j_rotor, j_flywheel, omega1, dyn, error, md_table, cycle, &
+                                    flywheel_density, flywheel_width_ratio)
     type(deck_context_t), intent(in) :: ctx
     !> Value of `dynamics` ('none', 'reduced', 'steady', 'given'; blank: none).
     character(*), intent(in) :: mode_text
@@ -72,6 +77,10 @@ contains
     !> The deck's `cycle`, deg (360 or 720; unset_real when not given), when the mechanism
     !> offers it.
     real(wp), intent(in), optional :: cycle
+    !> The deck's `flywheel_density` (kg/m^3) and `flywheel_width_ratio` (b/D) (unset_real
+    !> when not given), when the mechanism offers them.
+    real(wp), intent(in), optional :: flywheel_density, flywheel_width_ratio
+    real(wp) :: rho, psi
     integer :: n_md, i
     n_md = 0
     if (present(md_table)) then
@@ -105,6 +114,25 @@ contains
         if (allocated(error)) return
         dyn%cycle_deg = cycle
       end if
+    end if
+    rho = unset_real
+    psi = unset_real
+    if (present(flywheel_density)) rho = flywheel_density
+    if (present(flywheel_width_ratio)) psi = flywheel_width_ratio
+    call require_rule(ctx, "flywheel_density", .not. any(is_set([rho, psi])) .or. dyn%mode >= dynamics_steady, &
+      "flywheel_density and flywheel_width_ratio (the flywheel's disc) need dynamics = 'steady' or 'given'", error)
+    if (allocated(error)) return
+    if (is_set(rho)) then
+      call require_rule(ctx, "flywheel_density", rho > 0.0_wp .and. rho < 1.0e6_wp, "must be > 0 and < 1e6 kg/m^3 "// &
+        "(the density of the flywheel's material; steel 7800; got "//real_str(rho)//")", error)
+      if (allocated(error)) return
+      dyn%flywheel_density = rho
+    end if
+    if (is_set(psi)) then
+      call require_rule(ctx, "flywheel_width_ratio", psi > 0.0_wp .and. psi <= 10.0_wp, "must be > 0 and <= 10 "// &
+        "(the disc's width b over its diameter D; 0.1 to 0.3 as a rule; got "//real_str(psi)//")", error)
+      if (allocated(error)) return
+      dyn%flywheel_width_ratio = psi
     end if
     if (dyn%mode == dynamics_none) then
       call require_rule(ctx, "delta", .not. any(is_set([delta, j_rotor, j_flywheel])), &
@@ -223,6 +251,8 @@ contains
     end if
     if (allocated(error)) return
     if (present(j_links_constant)) cycle%j_links_constant = j_links_constant
+    cycle%flywheel_density = dyn%flywheel_density
+    cycle%flywheel_width_ratio = dyn%flywheel_width_ratio
     if (dyn%mode == dynamics_steady) then
       call cycle_steady(source, dyn%delta, where, cycle, error)
     else

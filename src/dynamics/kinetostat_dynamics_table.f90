@@ -59,6 +59,9 @@ contains
     call table%add_column("omega1", "rad/s", col_other)
     call table%add_column("eps1", "rad/s^2", col_other)
     call table%add_column("t", "s", col_other)
+    call table%add_column("A_Md", "J", col_other)
+    call table%add_column("A_red", "J", col_other)
+    call table%add_column("T_I", "J", col_other)
   end subroutine add_dynamics_columns
 
   !> The dynamics values of row `k` (the columns add_dynamics_columns made).
@@ -73,7 +76,8 @@ contains
     c = table%column_index("J_red")
     table%rows(c:c + 2, k) = [motion%j, motion%dj, motion%m]
     if (mode == dynamics_reduced) return
-    table%rows(c + 3:c + 6, k) = [motion%dt, motion%omega, motion%eps, motion%t]
+    table%rows(c + 3:c + 9, k) = [motion%dt, motion%omega, motion%eps, motion%t, motion%a_md, motion%dt - motion%a_md, &
+                                  motion%t_i]
   end subroutine put_dynamics_values
 
   !> The figures of a solved cycle (first block only); `delta_asked` > 0 with 'steady'.
@@ -99,6 +103,8 @@ contains
     d%j_red_min = minval(cycle%j)
     d%j_red_max = maxval(cycle%j)
     d%j_flywheel = cycle%j_flywheel
+    d%flywheel_density = cycle%flywheel_density
+    d%flywheel_width_ratio = cycle%flywheel_width_ratio
     ! the textbook's flywheel only where a delta defines it
     if (cycle%delta > 0.0_wp) d%j_flywheel_textbook = cycle%j_flywheel_textbook
     d%omega_mean = cycle%omega_mean

@@ -113,8 +113,12 @@ contains
     call read_linkage_deck(source, deck, error)
     if (allocated(error)) return
     call structure_lines(deck%mech, lang, lines)
-    call out%put(" DECK: "//table_text(source%path))
-    if (len_trim(deck%title) > 0) call out%put(" TITLE: "//table_text(trim(deck%title)))
+    ! the Russian analysis in the course's words alone (the deck is the student's own)
+    if (lang /= lang_ru) then
+      call out%put(" DECK: "//table_text(source%path))
+      if (len_trim(deck%title) > 0) call out%put(" TITLE: "//table_text(trim(deck%title)))
+    end if
+    !GCC$ novector
     do i = 1, size(lines)
       call out%put(" "//trim(lines(i)))
     end do

@@ -85,7 +85,14 @@ contains
       line = '  "dynamics": {'
       do i = 1, size(records)
         if (i > 1) line = line//", "
-        line = line//json_string(records(i)%name)//": "//full_number(records(i)%values(1))
+        line = line//json_string(records(i)%name)//": "
+        if (records(i)%kind == echo_text_kind) then
+          line = line//json_string(records(i)%text)
+        else if (allocated(records(i)%text)) then
+          line = line//"null"
+        else
+          line = line//full_number(records(i)%values(1))
+        end if
       end do
       call out%put(line//"},")
     end if

@@ -118,6 +118,26 @@ contains
       text = "M_d (ДВИЖУЩИЙ МОМЕНТ)"
     case ("J_flywheel")
       text = "МАХОВИК J_flywheel"
+    case ("flywheel_density")
+      text = "МАХОВИК: ПЛОТНОСТЬ"
+    case ("flywheel_width_ratio")
+      text = "МАХОВИК: b/D"
+    case ("flywheel_D")
+      text = "МАХОВИК: ДИАМЕТР D"
+    case ("flywheel_b")
+      text = "МАХОВИК: ШИРИНА b"
+    case ("flywheel_m")
+      text = "МАХОВИК: МАССА m"
+    case ("flywheel_note")
+      text = "МАХОВИК"
+    case ("a disc: J_flywheel = m D^2/8, m = density pi D^2 b/4, b = width_ratio D")
+      text = "ДИСК: J_flywheel = m D^2/8, m = ПЛОТНОСТЬ pi D^2 b/4, b = (b/D) D"
+    case ("no flywheel: J_flywheel = 0")
+      text = "МАХОВИКА НЕТ: J_flywheel = 0"
+    case ("none")
+      text = "НЕТ"
+    case ("kg/m^3")
+      text = "кг/м^3"
     case ("J_flywheel_textbook")
       text = "МАХОВИК ПО МЕРЦАЛОВУ"
     case ("textbook_difference")
@@ -478,21 +498,45 @@ contains
         index(text, "  GROUP OF ") > 0) is_linkage_echo = .true.
   end function is_linkage_echo
 
+  !> A dyad's kind in the Russian course's letters: RRP -> ВВП (R a turning pair, В; P a
+  !> sliding pair, П); other characters as they are.
+  pure function course_kind(kind) result(text)
+    !> The kind as the program writes it ("RRP").
+    character(*), intent(in) :: kind
+    character(len=:), allocatable :: text
+    integer :: i
+    text = ""
+    do i = 1, len(kind)
+      select case (kind(i:i))
+      case ("R")
+        text = text//"В"
+      case ("P")
+        text = text//"П"
+      case default
+        text = text//kind(i:i)
+      end select
+    end do
+  end function course_kind
+
   !> A general linkage's echo line in Russian, in the words of kinetostat structure --lang ru.
   pure function linkage_echo_ru(english) result(text)
     !> The English line.
     character(*), intent(in) :: english
     character(len=:), allocatable :: text
+    integer :: k
     text = english
     text = replace_all(text, "STRUCTURAL ANALYSIS", "СТРУКТУРНЫЙ АНАЛИЗ")
     text = replace_all(text, "MOVING LINKS n", "ПОДВИЖНЫХ ЗВЕНЬЕВ n")
     text = replace_all(text, "LOWER PAIRS p5", "НИЗШИХ ПАР p5")
     text = replace_all(text, "HIGHER PAIRS p4", "ВЫСШИХ ПАР p4")
-    text = replace_all(text, "NUMBER OF DRIVES", "ЧИСЛО ПРИВОДОВ")
+    text = replace_all(text, "NUMBER OF DRIVES", "ЧИСЛО НАЧАЛЬНЫХ ЗВЕНЬЕВ")
     text = replace_all(text, "STRUCTURE FORMULA:", "ФОРМУЛА СТРОЕНИЯ:")
     text = replace_all(text, "CLASS OF THE MECHANISM:", "КЛАСС МЕХАНИЗМА:")
     text = replace_all(text, "INPUT LINK(S) (MECHANISM OF CLASS I)", &
-      "ВХОДНОЕ ЗВЕНО (МЕХАНИЗМ I КЛАССА)")
+      "НАЧАЛЬНОЕ ЗВЕНО (МЕХАНИЗМ I КЛАССА)")
+    ! a dyad's kind in the course's letters: В (вращательная) for R, П (поступательная) for P
+    k = index(text, "), KIND ")
+    if (k > 0) text = text(1:k + 7)//course_kind(text(k + 8:))
     text = replace_all(text, "DYAD (GROUP OF CLASS II, ORDER 2), KIND", &
       "ДИАДА (ГРУППА II КЛАССА 2-ГО ПОРЯДКА), ВИД")
     text = replace_all(text, "GROUP OF CLASS III, ORDER 3", &

@@ -12,11 +12,11 @@
 !> Also the machine dynamics figures of a run (dynamics_figures_t), a typed record.
 module kinetostat_run_tally
   use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
-  use kinetostat_kinds, only: wp
+  use kinetostat_kinds, only: wp, pi
   implicit none
   private
   public :: running_max_t, ratio_of_maxima_t, force_peak_t, trapezoid_t, flag_count_t, run_tally_t, &
-    dynamics_figures_t, merge_tally, column_tally_t, edge_point_t
+    dynamics_figures_t, flywheel_disc, merge_tally, column_tally_t, edge_point_t
 
   !> The largest value of a figure over the rows so far and the row where it is (a NaN, once
   !> seen, stays: the run's guard reports it).
@@ -202,6 +202,9 @@ module kinetostat_run_tally
     real(wp) :: j_flywheel = 0.0_wp
     !> The textbook's flywheel (delta > 0 only), kg*m^2.
     real(wp) :: j_flywheel_textbook = 0.0_wp
+    !> The flywheel drawn as a disc: density of its material, kg/m^3, and its width over its
+    !> diameter, b/D (dynamics_records gives its D, b and mass).
+    real(wp) :: flywheel_density = 7800.0_wp, flywheel_width_ratio = 0.2_wp
     !> Mean, largest and smallest speed of the input link, rad/s.
     real(wp) :: omega_mean = 0.0_wp, omega_max = 0.0_wp, omega_min = 0.0_wp
     !> Input angles of the largest and smallest speed, deg.
@@ -215,6 +218,24 @@ module kinetostat_run_tally
   end type dynamics_figures_t
 
 contains
+
+  !> The flywheel of `d` as a disc of density rho and width ratio psi = b/D: J = m D^2/8 with
+  !> m = rho pi D^2 b/4 gives D = (32 J/(pi rho psi))^(1/5), b = psi D; all 0 without a
+  !> flywheel.
+  pure subroutine flywheel_disc(d, diameter, width, mass)
+    type(dynamics_figures_t), intent(in) :: d
+    !> Its diameter D and width b, m.
+    real(wp), intent(out) :: diameter, width
+    !> Its mass, kg.
+    real(wp), intent(out) :: mass
+    diameter = 0.0_wp
+    width = 0.0_wp
+    mass = 0.0_wp
+    if (.not. d%j_flywheel > 0.0_wp) return
+    diameter = (32.0_wp * d%j_flywheel / (pi * d%flywheel_density * d%flywheel_width_ratio))**0.2_wp
+    width = d%flywheel_width_ratio * diameter
+    mass = d%flywheel_density * pi * diameter**2 * width / 4.0_wp
+  end subroutine flywheel_disc
 
   !> Note a block's largest value at `row` of the run (a larger one, or a NaN, replaces).
   pure subroutine note_max(self, value, row)

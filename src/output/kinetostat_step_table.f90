@@ -8,7 +8,7 @@ module kinetostat_step_table
   use kinetostat_kinds, only: wp, rad_to_deg
   use kinetostat_error, only: error_t, out_of_memory
   use kinetostat_text, only: int_str, int64_str
-  use kinetostat_run_tally, only: run_tally_t, dynamics_figures_t, running_max_t, column_tally_t, edge_point_t
+  use kinetostat_run_tally, only: run_tally_t, dynamics_figures_t, flywheel_disc, running_max_t, column_tally_t, edge_point_t
   implicit none
   private
   public :: step_table_t, column_t, echo_record_t, echo_cursor_t, remark_t, column_tally_t, edge_point_t, step_span, worst_row
@@ -16,6 +16,12 @@ module kinetostat_step_table
     col_flag, col_count, col_ratio, col_other, column_kind_names
   public :: echo_real_kind, echo_int_kind, echo_logical_kind, echo_array_kind, echo_text_kind, &
     echo_heading_kind, echo_line_kind
+
+  !> The DYNAMICS block's note on the flywheel's disc (a key of the labels' dictionary).
+  character(*), parameter :: flywheel_disc_note = "a disc: J_flywheel = m D^2/8, m = density pi D^2 b/4, "// &
+    "b = width_ratio D"
+  !> The note when the machine has no flywheel.
+  character(*), parameter :: flywheel_none_note = "no flywheel: J_flywheel = 0"
 
   !> Column kind: the input coordinate of the step (crank angle, cam angle), deg.
   integer, parameter :: col_input_angle = 1
@@ -208,6 +214,10 @@ module kinetostat_step_table
     logical :: link_frame = .false.
     !> CSV and JSON show the kinematics columns (--kinematics).
     logical :: kinematics_shown = .false.
+    !> The sheets' title block: the document's designation (графа 2 and 26; not allocated:
+    !> empty), the sheet's number and the number of sheets (kinetostat sheets --sheet-numbers).
+    character(len=:), allocatable :: designation
+    integer :: sheet_number = 1, sheet_count = 1
     !> Block asked of `solve` by the run pipeline: first and last step (0: every step at once).
     integer :: block_first = 0
     !> Last step of the block asked (0: every step).
@@ -243,6 +253,7 @@ module kinetostat_step_table
     procedure :: put_point
     procedure :: put_link
     procedure :: put_acceleration
+    procedure :: put_velocity
     procedure :: put_components
     procedure :: put_link_axes
     procedure :: shows
@@ -380,7 +391,20 @@ contains
     call put_kinematic(self, k, "eps", link, "rad/s^2", col_other, eps)
   end subroutine put_link
 
-  !> Kinematics: acceleration ax_<point>, ay_<point> (m/s^2) of a centre of mass in row `k`.
+  !> Kinematics: velocity vx_<point>, vy_<point> (m/s) of a named point in row `k`.
+  pure subroutine put_velocity(self, k, point, v)
+    class(step_table_t), intent(inout) :: self
+    !> Row.
+    integer, intent(in) :: k
+    !> Point name ("B", "S3").
+    character(*), intent(in) :: point
+    !> Velocity, m/s.
+    real(wp), intent(in) :: v(2)
+    call put_kinematic(self, k, "vx_", point, "m/s", col_other, v(1))
+    call put_kinematic(self, k, "vy_", point, "m/s", col_other, v(2))
+  end subroutine put_velocity
+
+  !> Kinematics: acceleration ax_<point>, ay_<point> (m/s^2) of a named point in row `k`.
   pure subroutine put_acceleration(self, k, point, a)
     class(step_table_t), intent(inout) :: self
     !> Row.
@@ -593,6 +617,7 @@ contains
       call add("J_red_min", d%j_red_min, "kg*m^2")
       call add("J_red_max", d%j_red_max, "kg*m^2")
       call add("J_flywheel", d%j_flywheel, "kg*m^2")
+      call add_flywheel_disc()
       if (d%delta > 0.0_wp) then
         call add("J_flywheel_textbook", d%j_flywheel_textbook, "kg*m^2")
         if (d%j_flywheel > 0.0_wp) call add("textbook_difference", &
@@ -623,6 +648,34 @@ contains
       real(wp), intent(in) :: value
       list = [list, echo_record_t(kind=echo_real_kind, name=name, unit=unit, values=[value])]
     end subroutine add
+    !> The flywheel as a disc (flywheel_disc); without a flywheel the disc's figures are null
+    !> (a record of echo_real_kind with an empty `text`: JSON null, the DYNAMICS block "none",
+    !> 0 in a summary) and the note says so.
+    pure subroutine add_flywheel_disc()
+      real(wp) :: diameter, width, mass
+      associate (d => self%dynamics)
+        call add("flywheel_density", d%flywheel_density, "kg/m^3")
+        call add("flywheel_width_ratio", d%flywheel_width_ratio, "")
+        if (d%j_flywheel > 0.0_wp) then
+          call flywheel_disc(d, diameter, width, mass)
+          call add("flywheel_D", diameter, "m")
+          call add("flywheel_b", width, "m")
+          call add("flywheel_m", mass, "kg")
+          list = [list, echo_record_t(kind=echo_text_kind, name="flywheel_note", unit="", values=[0.0_wp], &
+                                      text=flywheel_disc_note)]
+        else
+          call add_null("flywheel_D", "m")
+          call add_null("flywheel_b", "m")
+          call add_null("flywheel_m", "kg")
+          list = [list, echo_record_t(kind=echo_text_kind, name="flywheel_note", unit="", values=[0.0_wp], &
+                                      text=flywheel_none_note)]
+        end if
+      end associate
+    end subroutine add_flywheel_disc
+    pure subroutine add_null(name, unit)
+      character(*), intent(in) :: name, unit
+      list = [list, echo_record_t(kind=echo_real_kind, name=name, unit=unit, values=[0.0_wp], text="")]
+    end subroutine add_null
   end function dynamics_records
 
   !> Moment of inertia turning with the input link besides the mechanism's links: the

@@ -9,7 +9,7 @@ module kinetostat_summary
   use kinetostat_kinds, only: wp, deg_to_rad
   use kinetostat_text, only: int_str, lower, without_blanks
   use kinetostat_step_table, only: step_table_t, col_force, col_force_angle, col_moment, column_tally_t, &
-    edge_point_t, echo_record_t
+    edge_point_t, echo_record_t, echo_text_kind
   use kinetostat_format, only: cell_number, trimmed_es
   use kinetostat_escape, only: csv_field
   implicit none
@@ -564,6 +564,7 @@ contains
     if (known) line = line//",work_"//table%driver
     associate (records => table%dynamics_records())
       do i = 1, size(records)
+        if (records(i)%kind == echo_text_kind) cycle
         line = line//","//dynamics_prefix//records(i)%name
       end do
     end associate
@@ -630,7 +631,7 @@ contains
     if (known) n = n + 1
     allocate (records(0)) ! defined before the assignment (gcc's -Wmaybe-uninitialized)
     records = table%dynamics_records()
-    n = n + size(records)
+    n = n + count(records(:)%kind /= echo_text_kind)
     allocate (values(n), whole(n))
     n = 0
     call add(values, whole, n, real(table%run_tally%rows, wp), .true.)
@@ -651,6 +652,7 @@ contains
     end do
     if (known) call add(values, whole, n, work, .false.)
     do i = 1, size(records)
+      if (records(i)%kind == echo_text_kind) cycle
       call add(values, whole, n, records(i)%values(1), .false.)
     end do
   contains

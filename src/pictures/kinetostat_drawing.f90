@@ -19,7 +19,7 @@ module kinetostat_drawing
   use kinetostat_bodies, only: mass_model_t
   implicit none
   private
-  public :: drawing_from_sketch
+  public :: drawing_from_sketch, points_from_sketch
   public :: drawing_t, drawing_point_t, drawing_body_t, drawing_guide_t, drawing_force_t, drawing_moment_t
   public :: point_joint, point_pivot, point_com, point_plain, body_bar, body_block, body_cylinder, body_rod
   public :: force_pair, force_load, force_gravity, force_inertia, force_kind_names
@@ -453,26 +453,22 @@ contains
     call self%add_guide(p0, angle, 0.5_wp * (maxval(s) - minval(s)) + margin)
   end subroutine add_guide_over_rows
 
-  !> The points, bodies and guides of row `k` from the mechanism's topology `topo` and the
-  !> kinematics columns: every point a link, pivot or guide names (x_<P>, y_<P>; pivots with
-  !> the ground symbol), the centre of mass S<i> of every link i the table has; links as bars
-  !> through their points, blocks at their point along angle + phi<along>; guides on the
-  !> frame over the travel of their point (guides on a moving link are its bar); the sheet
-  !> turned so that `topo%down` points down.
-  pure subroutine drawing_from_sketch(topo, table, k, drawing, error)
+  !> The named points of row `k` from the mechanism's topology (the first part of
+  !> drawing_from_sketch, without bodies and guides): every point a link or pivot names
+  !> (x_<P>, y_<P>), the centre of mass S<i> of every link i the table has; the view turned so
+  !> that `topo%down` points down.
+  pure subroutine points_from_sketch(topo, table, k, drawing, error)
     !> The mechanism's topology (available).
     type(sketch_t), intent(in) :: topo
     !> The results with their kinematics columns.
     type(step_table_t), intent(in) :: table
     !> Row.
     integer, intent(in) :: k
-    !> The drawing (without forces).
+    !> The drawing: its points.
     type(drawing_t), intent(out) :: drawing
     !> A named point without position columns.
     type(error_t), allocatable, intent(out) :: error
     integer :: i, j, kind
-    real(wp) :: angle, size_scale, lo(2), hi(2)
-    character(len=:), allocatable :: along
     drawing%view_angle = -0.5_wp * pi - atan2(topo%down(2), topo%down(1))
     drawing%view_note = "gravity down the sheet"
     ! every list allocated (empty): the writers loop over them without asking
@@ -502,6 +498,30 @@ contains
         if (allocated(error)) return
       end do
     end if
+  end subroutine points_from_sketch
+
+  !> The points, bodies and guides of row `k` from the mechanism's topology `topo` and the
+  !> kinematics columns: every point a link, pivot or guide names (x_<P>, y_<P>; pivots with
+  !> the ground symbol), the centre of mass S<i> of every link i the table has; links as bars
+  !> through their points, blocks at their point along angle + phi<along>; guides on the
+  !> frame over the travel of their point (guides on a moving link are its bar); the sheet
+  !> turned so that `topo%down` points down.
+  pure subroutine drawing_from_sketch(topo, table, k, drawing, error)
+    !> The mechanism's topology (available).
+    type(sketch_t), intent(in) :: topo
+    !> The results with their kinematics columns.
+    type(step_table_t), intent(in) :: table
+    !> Row.
+    integer, intent(in) :: k
+    !> The drawing (without forces).
+    type(drawing_t), intent(out) :: drawing
+    !> A named point without position columns.
+    type(error_t), allocatable, intent(out) :: error
+    integer :: i
+    real(wp) :: angle, size_scale, lo(2), hi(2)
+    character(len=:), allocatable :: along
+    call points_from_sketch(topo, table, k, drawing, error)
+    if (allocated(error)) return
     lo = huge(1.0_wp)
     hi = -huge(1.0_wp)
     do i = 1, size(drawing%points)

@@ -17,14 +17,14 @@ module kinetostat_title_block
   use kinetostat_step_table, only: step_table_t
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_text, only: int_str
-  use kinetostat_labels, only: lang_ru
+  use kinetostat_labels, only: lang_ru, label
   use kinetostat_typeset, only: char_count
   use kinetostat_sheet, only: sheet_t, paper_t, layer_frame, anchor_middle, frame_left, frame_margin, line_classes
   use kinetostat_sheet_svg, only: put_sheet_elements
   implicit none
   private
   public :: title_block_t, title_block_from_table, put_sheet_format, put_title_block_at, put_title_block, &
-    title_block_height, block_width, block_height, fitted_text
+    title_block_height, block_width, block_height, fitted_text, header_indent, deck_line
 
   !> Size of the block (ГОСТ 2.104 form 1), mm.
   real(wp), parameter :: block_width = 185.0_wp, block_height = 55.0_wp
@@ -68,6 +68,9 @@ contains
     block%group = ""
     block%variant = ""
     block%stamp = ""
+    if (allocated(table%designation)) block%designation = table%designation
+    block%sheet_number = table%sheet_number
+    block%sheet_count = table%sheet_count
     if (allocated(table%student_stamp)) then
       block%student = table%student_name
       block%group = table%student_group
@@ -75,6 +78,32 @@ contains
       block%stamp = table%student_stamp
     end if
   end function title_block_from_table
+
+  !> How far a sheet's header starts right of the frame: past графа 26 (70 mm) when the
+  !> sheet has a designation, mm.
+  pure real(wp) function header_indent(table)
+    type(step_table_t), intent(in) :: table
+    header_indent = 0.0_wp
+    if (.not. allocated(table%designation)) return
+    if (len(table%designation) > 0) header_indent = 72.0_wp
+  end function header_indent
+
+  !> A sheet's header line of the run: the deck, its own title and the --set changes (the
+  !> user's words: written plain).
+  pure function deck_line(table, lang) result(line)
+    type(step_table_t), intent(in) :: table
+    integer, intent(in) :: lang
+    character(len=:), allocatable :: line
+    integer :: i
+    line = label("deck", lang)//": "//table%deck
+    if (allocated(table%subtitle)) line = line//"   "//table%subtitle
+    if (.not. allocated(table%overrides)) return
+    if (size(table%overrides) == 0) return
+    line = line//"   --set"
+    do i = 1, size(table%overrides)
+      line = line//" "//trim(table%overrides(i))
+    end do
+  end function deck_line
 
   !> The frame of the sheet's paper and the title block in its lower right corner.
   pure subroutine put_sheet_format(sheet, block)
@@ -86,6 +115,13 @@ contains
     call sheet%set_layer(layer_frame)
     call sheet%rect(frame_left, frame_margin, w - frame_left - frame_margin, h - 2.0_wp * frame_margin, "border")
     call put_title_block_at(sheet, block, w - frame_margin - block_width, h - frame_margin - block_height)
+    if (.not. allocated(block%designation)) return
+    if (len(block%designation) == 0) return
+    ! графа 26: the designation again, turned 180 deg, in a 70 x 14 mm box in the frame's upper
+    ! left corner (read when the sheet is folded or turned over)
+    call sheet%rect(frame_left, frame_margin, 70.0_wp, 14.0_wp, "thick")
+    call sheet%text(frame_left + 35.0_wp, frame_margin + 7.0_wp - 1.2_wp, fitted_text(block%designation, 66.0_wp, &
+      3.5_wp), "cell", anchor_middle, size=3.5_wp, rotation=180.0_wp, plain=.true.)
   end subroutine put_sheet_format
 
   !> The title block with its upper left corner at (x0, y0), mm.

@@ -19,7 +19,9 @@ module kinetostat_run
   use kinetostat_npy_writer, only: write_npy
   use kinetostat_run_sheet, only: write_run_sheet
   use kinetostat_mechanism_sheet, only: write_mechanism_sheet
-  use kinetostat_sheet, only: sheet_t
+  use kinetostat_sheet, only: sheet_t, iso_paper
+  use kinetostat_dynamics_sheet, only: draw_dynamics_sheet
+  use kinetostat_kinematics_sheet, only: draw_kinematics_sheet
   use kinetostat_sheet_svg, only: write_sheet_svg
   use kinetostat_sheet_dxf, only: write_sheet_dxf
   use kinetostat_sketch, only: sketch_t
@@ -40,13 +42,18 @@ module kinetostat_run
   use kinetostat_spool, only: spool_t
   use kinetostat_bodies, only: mass_model_t
   use kinetostat_shaking, only: add_shaking
+  use kinetostat_point_motion, only: add_point_motion
   use kinetostat_row_keeper, only: row_keeper_t
   use kinetostat_kinds, only: deg_to_rad
   implicit none
   private
   public :: run_options_t, run_mechanism, guard_finite, progress_i, block_rows
   public :: format_table, format_csv, format_json, format_svg, format_summary, format_plans, format_dxf, &
-    format_deck, format_npy, format_from_name, format_names
+    format_deck, format_npy, format_from_name, format_names, course_none, course_dynamics, &
+    course_kinematics, course_kinetostatics
+
+  !> Course sheets (kinetostat sheets): none (the format's own drawing), the dynamics sheet.
+  integer, parameter :: course_none = 0, course_dynamics = 1, course_kinematics = 2, course_kinetostatics = 3
 
   !> Output format: the legacy fixed-format table.
   integer, parameter :: format_table = 1
@@ -123,6 +130,15 @@ module kinetostat_run
     !> --allow-selfcheck-failure: a failed self-check is a warning and the output is
     !> written (by default it is a computation error, exit 3, and nothing is written).
     logical :: allow_selfcheck_failure = .false.
+    !> kinetostat sheets: the course sheet drawn by --format svg/dxf (course_none: the run's
+    !> own sheet), its paper ("A1" .. "A4", landscape), the title block's designation
+    !> (графа 2 and 26), the sheet's number and the number of sheets (0: 1 of 1).
+    integer :: course_sheet = course_none
+    character(len=2) :: paper = "A1"
+    character(len=:), allocatable :: designation
+    integer :: sheet_number = 0, sheet_count = 0
+    !> The kinematics sheet's position (a row of the run; the sheet keeps every row).
+    integer :: course_at = 1
   end type run_options_t
 
 contains
@@ -167,12 +183,16 @@ contains
     type(echo_cursor_t) :: head
     !> The moving links and frame pairs (--shaking).
     type(mass_model_t) :: model
+    !> The mechanism's topology for the points' velocities and accelerations (--kinematics).
+    type(sketch_t) :: motion_topo
     !> The rows a drawing needs (--at K, the SVG sheet), kept as the blocks go.
     type(row_keeper_t) :: keeper
     logical :: drawn, whole_run
     type(sheet_t) :: sheet
     character(len=:), allocatable :: pairs_asked
-    integer :: first, rows
+    integer :: first, rows, k_at
+    !> The kinematics sheet's mechanism at its position.
+    type(drawing_t) :: course_drawing
 
     rows = block_rows
     if (options%block_rows > 0) then
@@ -211,6 +231,9 @@ contains
     end if
     table%row_name = "step"
     table%driver = "M1"
+    if (allocated(options%designation)) table%designation = options%designation
+    if (options%sheet_number > 0) table%sheet_number = options%sheet_number
+    if (options%sheet_count > 0) table%sheet_count = options%sheet_count
     table%kinematics_shown = options%kinematics
     table%kinematics_wanted = options%kinematics .or. options%link_frame .or. options%format == format_svg .or. &
       options%plans .or. options%format == format_plans .or. options%format == format_dxf .or. options%shaking
@@ -256,6 +279,13 @@ contains
         call fatal_error(error, exit_input, table%deck//": &"//group//": out of memory: no room for "// &
           table%no_room)
         return
+      end if
+      if (options%kinematics) then
+        ! the points' velocities and accelerations (every linkage, from its sketch)
+        if (table%first_block()) call mech%sketch(motion_topo)
+        call add_point_motion(motion_topo, table, error)
+        if (allocated(error)) return
+        call table%finish_columns()
       end if
       if (options%shaking) then
         call add_shaking(table, model, error)
@@ -324,7 +354,25 @@ contains
         else if (mech%force_sheet .and. options%at_step > 0) then
           call write_at_step(mech, table, options, out, error)
         else
-          if (mech%force_sheet) then
+          if (options%course_sheet == course_kinematics) then
+            call mech%sketch(motion_topo)
+            if (.not. motion_topo%available) then
+              call fatal_error(error, exit_usage, table%deck//": &"//table%mechanism//": the kinematics sheet "// &
+                "draws linkages only")
+              return
+            end if
+            k_at = findloc(table%row_numbers, options%course_at, dim=1)
+            if (k_at == 0) k_at = minloc(abs(table%row_numbers - options%course_at), dim=1)
+            call drawing_from_sketch(motion_topo, table, k_at, course_drawing, error)
+            if (allocated(error)) return
+            call mech%force_plan(table, k_at, course_drawing, error)
+            if (allocated(error)) return
+            call draw_kinematics_sheet(mech%title(options%lang), table, motion_topo, course_drawing, k_at, &
+                                       iso_paper(options%paper, .true.), options%lang, sheet)
+          else if (options%course_sheet == course_dynamics) then
+            call draw_dynamics_sheet(mech%title(options%lang), table, iso_paper(options%paper, .true.), options%lang, &
+                                     sheet)
+          else if (mech%force_sheet) then
             call write_run_sheet(mech%title(options%lang), table, pairs_asked, options%lang, sheet, error)
           else if (options%at_step > 0 .and. table%single_record) then
             call fatal_error(error, exit_usage, "--at: "//table%deck//" is &"//group//", one "//table%row_name// &
@@ -539,7 +587,11 @@ contains
     if (options%plans .or. options%format == format_plans) then
       ! the graphical method: as numbers (json), or its sheet (plans: SVG; dxf)
       call build_plans(topo, drawing, table, k, plans)
-      call plans_sheet(topo, drawing, plans, plans_geometry)
+      if (options%course_sheet == course_kinetostatics) then
+        call plans_sheet(topo, drawing, plans, plans_geometry, options%paper)
+      else
+        call plans_sheet(topo, drawing, plans, plans_geometry)
+      end if
       if (options%format == format_json) then
         call write_plans_json(mech%title(options%lang), plans, plans_geometry, table, k, out)
         return

@@ -439,8 +439,17 @@ contains
     allocate (records(0)) ! defined before the assignment (gcc's -Wmaybe-uninitialized)
     records = table%dynamics_records()
     do i = 1, size(records)
-      call out%put("   "//pad_right(label(records(i)%name, lang), dynamics_name_width)//"="// &
-                   echo_number(records(i)%values(1))//"  "//label(records(i)%unit, lang))
+      if (records(i)%kind == echo_text_kind) then
+        ! a note: the user's strings never reach it (numbers and fixed words)
+        call out%put("   "//pad_right(label(records(i)%name, lang), dynamics_name_width)//"= "// &
+                     label(records(i)%text, lang))
+      else if (allocated(records(i)%text)) then
+        call out%put("   "//pad_right(label(records(i)%name, lang), dynamics_name_width)//"= "// &
+                     label("none", lang))
+      else
+        call out%put("   "//pad_right(label(records(i)%name, lang), dynamics_name_width)//"="// &
+                     echo_number(records(i)%values(1))//"  "//label(records(i)%unit, lang))
+      end if
     end do
   end subroutine put_dynamics
 

@@ -27,7 +27,7 @@ module kinetostat_plans
   use kinetostat_plans_lever, only: lever_of
   implicit none
   private
-  public :: build_plans
+  public :: build_plans, solve_fields, point_images
 
 contains
 

@@ -31,7 +31,7 @@ module kinetostat_plans_draw
   use kinetostat_scales, only: scale_number, round_scale
   use kinetostat_sheet, only: sheet_t, entity_group, layer_text, layer_vplan, layer_aplan, layer_polygons, layer_lever, &
     layer_scales, layer_frame, anchor_start, anchor_end
-  use kinetostat_title_block, only: put_sheet_format, title_block_from_table
+  use kinetostat_title_block, only: put_sheet_format, title_block_from_table, header_indent, deck_line
   use kinetostat_drawing, only: drawing_t, drawing_point_t, drawing_body_t, drawing_force_t, drawing_moment_t, &
     force_gravity, force_inertia, force_load, force_pair, point_pivot
   use kinetostat_mechanism_view, only: mechanism_view_t, fit_mechanism_view, draw_mechanism, force_colours
@@ -75,7 +75,6 @@ contains
     type(sheet_t), intent(out) :: sheet
     character(len=:), allocatable :: line, short
     real(wp) :: inner(4)
-    integer :: i
 
     call sheet%open(geo%paper, lang, title//" - "//table%deck//" - plans, "//table%row_name//" "//int_str(table%run_row(k)), &
       "kinetostat --format plans --at "//int_str(table%run_row(k))//" sheet of "//table%deck//": the mechanism, the plans of "// &
@@ -84,21 +83,14 @@ contains
     call put_sheet_format(sheet, title_block_from_table(table, word("Plans of velocities, accelerations, forces", lang), &
       geo%view%drawing_scale%text))
     inner = geo%paper%inside()
+    ! right of графа 26 (the designation turned 180 deg in the upper left corner) when given
+    inner(1) = inner(1) + header_indent(table)
 
     ! the header: the mechanism's title, the deck with its own title and the --set changes, the step
     call sheet%set_layer(layer_text)
     call sheet%text(inner(1) + 3.0_wp, 11.0_wp, title, "title", size=fitted_size(title, 3.3_wp, inner(3) - inner(1) - &
       6.0_wp, 0.72_wp), plain=.true.)
-    line = word("deck", lang)//": "//table%deck
-    if (allocated(table%subtitle)) line = line//"   "//table%subtitle
-    if (allocated(table%overrides)) then
-      if (size(table%overrides) > 0) then
-        line = line//"   --set"
-        do i = 1, size(table%overrides)
-          line = line//" "//trim(table%overrides(i))
-        end do
-      end if
-    end if
+    line = deck_line(table, lang)
     call sheet%text(inner(1) + 3.0_wp, 16.5_wp, line, "subtitle", size=fitted_size(line, 3.0_wp, inner(3) - inner(1) - &
       6.0_wp, 0.6_wp), plain=.true.)
     line = word(table%row_name, lang)//" "//int_str(table%run_row(k))//" "//word("of", lang)//" "//int_str(table%run_rows())

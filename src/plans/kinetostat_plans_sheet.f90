@@ -69,14 +69,17 @@ module kinetostat_plans_sheet
 contains
 
   !> The geometry of the plans sheet of `plans` (the drawing of the same step gives the
-  !> mechanism's size and the sheet's rotation).
-  pure subroutine plans_sheet(topo, drawing, plans, sheet)
+  !> mechanism's size and the sheet's rotation); on A2 landscape, or on `paper_name`
+  !> landscape (the course's sheets: A1 by default), its panels grown with the paper.
+  pure subroutine plans_sheet(topo, drawing, plans, sheet, paper_name)
     type(sketch_t), intent(in) :: topo
     type(drawing_t), intent(in) :: drawing
+    !> "A1" .. "A4" (default "A2").
+    character(*), intent(in), optional :: paper_name
     type(plans_t), intent(in) :: plans
     type(plans_sheet_t), intent(out) :: sheet
     real(wp), allocatable :: pts(:, :), tips(:, :)
-    real(wp) :: fmax, r, b(4), cell(4), quarter
+    real(wp) :: fmax, r, b(4), cell(4), quarter, fx, fy
     type(drawing_t) :: link
     integer :: i, e, n, columns, rows, pivot
     r = drawing%view_angle
@@ -86,11 +89,17 @@ contains
     ! the mechanism and the two plans, the lever with its table and the polygons, the values
     ! table left of the title block
     sheet%paper = iso_paper("A2", .true.)
+    if (present(paper_name)) sheet%paper = iso_paper(paper_name, .true.)
     b = sheet%paper%inside()
-    sheet%mechanism = [b(1) + 2.0_wp, b(2) + 21.0_wp, b(1) + 190.0_wp, b(2) + 171.0_wp]
-    sheet%velocity = [sheet%mechanism(3) + 2.0_wp, sheet%mechanism(2), sheet%mechanism(3) + 190.0_wp, sheet%mechanism(4)]
+    ! the panels' sizes grow (or shrink) with the paper from A2's (569 x 410 mm inside the
+    ! frame); the header band, the title block's 57 mm and the tables' widths stay
+    fx = (b(3) - b(1)) / 569.0_wp
+    fy = (b(4) - b(2) - 78.0_wp) / 332.0_wp
+    sheet%mechanism = [b(1) + 2.0_wp, b(2) + 21.0_wp, b(1) + 2.0_wp + 188.0_wp * fx, b(2) + 21.0_wp + 150.0_wp * fy]
+    sheet%velocity = [sheet%mechanism(3) + 2.0_wp, sheet%mechanism(2), sheet%mechanism(3) + 2.0_wp + 188.0_wp * fx, &
+      sheet%mechanism(4)]
     sheet%acceleration = [sheet%velocity(3) + 2.0_wp, sheet%mechanism(2), b(3) - 2.0_wp, sheet%mechanism(4)]
-    sheet%lever = [b(1) + 2.0_wp, sheet%mechanism(4) + 2.0_wp, b(1) + 152.0_wp, b(4) - 57.0_wp]
+    sheet%lever = [b(1) + 2.0_wp, sheet%mechanism(4) + 2.0_wp, b(1) + 2.0_wp + 150.0_wp * fx, b(4) - 57.0_wp]
     sheet%lever_table = [sheet%lever(3), sheet%lever(2), sheet%lever(3) + 92.0_wp, sheet%lever(4)]
     sheet%polygons = [sheet%lever_table(3) + 2.0_wp, sheet%lever(2), b(3) - 2.0_wp, sheet%lever(4)]
     sheet%values = [b(1) + 2.0_wp, sheet%lever(4) + 2.0_wp, b(3) - 300.0_wp, b(4) - 1.0_wp]

@@ -72,6 +72,7 @@ module kinetostat_pr3207_deck
     "  ! machine dynamics (optional): dynamics = 'none' (default), 'reduced' (J_red, M_red", &
     "  ! columns), 'steady' (flywheel for delta; omega1 = mean speed) or 'given' (j_flywheel)", &
     "  ! dynamics = 'steady', delta = 0.04, j_rotor = 0.6   ! -, kg*m^2", &
+    "  ! flywheel_density = 7800, flywheel_width_ratio = 0.2   ! kg/m^3, b/D of the flywheel's disc", &
     "/"]
 
 contains
@@ -103,7 +104,8 @@ contains
     !> Input error naming file, group, variable and reason.
     type(error_t), allocatable, intent(out) :: error
     real(wp) :: l_ab, l_ac, l_cd, l_cs3, m1, m3, m5, j3, omega1, g, phi_start, dphi
-    real(wp) :: f5c_work, f5c_idle, phi_cut_start, phi_cut_end, delta, j_rotor, j_flywheel
+    real(wp) :: f5c_work, f5c_idle, phi_cut_start, phi_cut_end, delta, j_rotor, j_flywheel, &
+      flywheel_density, flywheel_width_ratio
     !> The driving-moment table (pairs phi deg, M_d; see kinetostat_dynamics_deck).
     real(wp) :: md_table(md_table_capacity)
     character(len=text_bytes * text_chars) :: dynamics
@@ -118,7 +120,8 @@ contains
     type(namelist_probe_t) :: probe
     logical :: two_value_given
     namelist /pr3207/ l_ab, l_ac, l_cd, l_cs3, m1, m3, m5, j3, omega1, g, phi_start, dphi, n, &
-      f5c, f5c_work, f5c_idle, phi_cut_start, phi_cut_end, dynamics, delta, j_rotor, j_flywheel, md_table
+      f5c, f5c_work, f5c_idle, phi_cut_start, phi_cut_end, dynamics, delta, j_rotor, j_flywheel, md_table, &
+      flywheel_density, flywheel_width_ratio
 
     call begin_group(source, "pr3207", ctx, error)
     if (allocated(error)) return
@@ -128,6 +131,7 @@ contains
     f5c_work = unset_real; f5c_idle = unset_real; phi_cut_start = unset_real; phi_cut_end = unset_real
     n = unset_real
     dynamics = ""; delta = unset_real; j_rotor = unset_real; j_flywheel = unset_real
+    flywheel_density = unset_real; flywheel_width_ratio = unset_real
     md_table = unset_real
     capacity = deck_array_capacities(source, ctx%group, ["f5c"])
     allocate (f5c(capacity(1)), source=unset_real, stat=stat)
@@ -204,7 +208,7 @@ contains
 
     ! machine dynamics: a steady cycle needs one whole turn and the load at any crank angle
     call read_dynamics_settings(ctx, dynamics, delta, j_rotor, j_flywheel, omega1, deck%dyn, error, &
-      md_table)
+      md_table, flywheel_density, flywheel_width_ratio)
     if (allocated(error)) return
     if (deck%dyn%mode >= dynamics_steady) then
       call require_one_turn(ctx, dphi, deck%n, error); if (allocated(error)) return

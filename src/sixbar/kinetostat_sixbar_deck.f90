@@ -78,7 +78,7 @@ contains
     real(wp) :: a, b, l1, lam2, lam_s2, lam3, lam_de, lam4, lam_s4, lam_e
     real(wp) :: m1, m2, m3, m4, m5, j1, j2, j3, j4, omega1, g, dphi, phi_start, phi_ext
     !> Machine dynamics variables (see kinetostat_dynamics_deck).
-    real(wp) :: delta, j_rotor, j_flywheel
+    real(wp) :: delta, j_rotor, j_flywheel, flywheel_density, flywheel_width_ratio
     !> The driving-moment table (pairs phi deg, M_d; see kinetostat_dynamics_deck).
     real(wp) :: md_table(md_table_capacity)
     character(len=text_bytes * text_chars) :: dynamics
@@ -94,11 +94,12 @@ contains
     type(namelist_probe_t) :: probe
     namelist /sixbar/ a, b, l1, lam2, lam_s2, lam3, lam_de, lam4, lam_s4, lam_e, &
       m1, m2, m3, m4, m5, j1, j2, j3, j4, omega1, g, dphi, n, phi_start, start_at_extreme, f5, legacy_eq2, &
-      dynamics, delta, j_rotor, j_flywheel, md_table
+      dynamics, delta, j_rotor, j_flywheel, md_table, flywheel_density, flywheel_width_ratio
 
     call begin_group(source, "sixbar", ctx, error)
     if (allocated(error)) return
     dynamics = ""; delta = unset_real; j_rotor = unset_real; j_flywheel = unset_real
+    flywheel_density = unset_real; flywheel_width_ratio = unset_real
     md_table = unset_real
     a = unset_real; b = unset_real; l1 = unset_real
     lam2 = unset_real; lam_s2 = unset_real; lam3 = unset_real; lam_de = unset_real
@@ -160,7 +161,7 @@ contains
 
     ! machine dynamics (a steady cycle takes f5 as a table over the crank angle: below)
     call read_dynamics_settings(ctx, dynamics, delta, j_rotor, j_flywheel, omega1, deck%dyn, error, &
-      md_table)
+      md_table, flywheel_density, flywheel_width_ratio)
     if (allocated(error)) return
 
     deck%p = sixbar_params_t(a=a, b=b, l1=l1, lam2=lam2, lam_s2=lam_s2, lam3=lam3, lam_de=lam_de, &

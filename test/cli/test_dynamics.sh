@@ -71,11 +71,13 @@ import json, sys
 a, b = (json.load(open(f)) for f in sys.argv[1:3])
 def close(x, y, scale): return abs(x - y) <= 1e-9 * max(abs(x), abs(y), scale)
 for k, v in a["dynamics"].items():        # the peaks are named by each deck's pairs
-    if k in b["dynamics"]:
+    if k in b["dynamics"] and isinstance(v, float):
         assert close(v, b["dynamics"][k], 1e-12), (k, v, b["dynamics"][k])
+    elif k in b["dynamics"]:
+        assert v == b["dynamics"][k], (k, v, b["dynamics"][k])
 assert close(a["dynamics"]["F21_peak"], b["dynamics"]["F21_peak"], 1e-12)
 ca, cb = [c["name"] for c in a["columns"]], [c["name"] for c in b["columns"]]
-for name in ["phi1", "M1", "J_red", "dJ_red", "M_red", "dT", "omega1", "eps1", "t"]:
+for name in ["phi1", "M1", "J_red", "dJ_red", "M_red", "dT", "omega1", "eps1", "t", "A_Md", "A_red", "T_I"]:
     i, j = ca.index(name), cb.index(name)
     scale = max(abs(r[i]) for r in a["rows"])
     for ra, rb in zip(a["rows"], b["rows"]):
@@ -402,3 +404,88 @@ expect_input_error dynamics-linkage-steps "&linkage: drive\(1\)%step: the steps 
 expect_input_error dynamics-linkage-eps "&linkage: drive\(1\)%eps: a steady cycle finds the acceleration" "$(deck_with lk_eps "$lk" "s/drive(1)%omega = 7.5/drive(1)%omega = 7.5, drive(1)%eps = 1/")"
 expect_input_error dynamics-linkage-delta "&linkage: delta: must be > 0 and < 1" "$(deck_with lk_d "$lk" "s/delta = 0.04/delta = 2/")"
 expect_input_error dynamics-linkage-unknown "&linkage: dynamics: unknown value 'wobbly'" "$(deck_with lk_u "$lk" "s/'steady'/'wobbly'/")"
+# the numbers behind the dynamics sheet: A_Md = int M_d dphi and A_red = int M_red dphi from the
+# first step (their increments over two 1-deg steps against Simpson's rule over the CSV's M_red
+# and M1 = M_d, relative 1e-6 of dT's range; pairs of steps at a load switch or a point of the
+# driving-moment table - the angles after the deck - left out), dT = A_Md + A_red, A_Md = M_d (phi - phi0) for a constant M_d and the Simpson
+# integral of M1 = M_d(phi) for a driving-moment table, T_I = dT - (J_red - J_c) omega_m^2/2
+# (Merzalov, J_c = J_rotor for PR 3207), the textbook flywheel from T_I's range, and the
+# flywheel as a steel disc: J = m D^2/8, b = 0.2 D, m = 7800 pi D^2 b/4 (1e-12)
+dyn_work_check() {
+  local name="$1" jc="$2" skip="$3"; shift 3
+  run_ks "$@" --format json
+  if [ "$rc" -ne 0 ]; then fail "dynamics-work-$name" "exit $rc: $(head -c 300 "$err")"; return; fi
+  python3 - "$out" "$jc" "$skip" <<'PY' && pass || fail "dynamics-work-$name" "A_Md, A_red, T_I or the disc wrong (above)"
+import json, math, sys
+d = json.load(open(sys.argv[1]))
+jc = float(sys.argv[2])
+skip = [float(x) for x in sys.argv[3].split(",") if x]
+names = [c["name"] for c in d["columns"]]
+col = lambda n: [r[names.index(n)] for r in d["rows"]]
+assert names[names.index("t") + 1:names.index("t") + 4] == ["A_Md", "A_red", "T_I"], names
+phi = [math.radians(x) for x in col("phi1")]
+dT, amd, ared, ti = col("dT"), col("A_Md"), col("A_red"), col("T_I")
+jred, mred, m1 = col("J_red"), col("M_red"), col("M1")
+dyn = d["dynamics"]
+h = phi[1] - phi[0]
+def simpson(f, k):  # int over rows k .. k + 2
+    return h / 3 * (f[k] + 4 * f[k + 1] + f[k + 2])
+def at_switch(k):
+    return any(abs(((math.degrees(phi[j]) - a) + 180) % 360 - 180) < 1e-6 for j in range(k, k + 3) for a in skip)
+scale = max(dT) - min(dT)
+const = "M_d_scale" not in dyn
+checked = 0
+for k in range(0, len(phi) - 2):
+    # the CSV's 13 digits of the three
+    assert abs(dT[k] - amd[k] - ared[k]) <= 1e-11 * (abs(amd[k]) + abs(ared[k]) + scale), (k, dT[k], amd[k], ared[k])
+    if at_switch(k):
+        continue
+    checked += 1
+    s = simpson(mred, k)
+    assert abs(ared[k + 2] - ared[k] - s) <= 1e-6 * scale, ("A_red", k, ared[k + 2] - ared[k], s)
+    s = simpson(m1, k)
+    assert abs(amd[k + 2] - amd[k] - s) <= 1e-6 * scale, ("A_Md vs M1", k, amd[k + 2] - amd[k], s)
+assert checked > 0.9 * len(phi), checked
+for k in range(len(phi)):
+    if const:
+        assert abs(amd[k] - dyn["M_d"] * (phi[k] - phi[0])) <= 1e-11 * (abs(amd[k]) + scale), ("A_Md", k, amd[k])
+wm = dyn["omega_mean"]
+for k in range(len(phi)):
+    e = dT[k] - (jred[k] - jc) * wm ** 2 / 2
+    assert abs(ti[k] - e) <= 1e-11 * (abs(dT[k]) + abs(jred[k]) * wm ** 2), ("T_I", k, ti[k], e)
+jt = (max(ti) - min(ti)) / (dyn["delta_asked"] * wm ** 2) - jc
+assert abs(jt - dyn["J_flywheel_textbook"]) <= 2e-3 * dyn["J_flywheel_textbook"], (jt, dyn["J_flywheel_textbook"])
+J, D, b, m = dyn["J_flywheel"], dyn["flywheel_D"], dyn["flywheel_b"], dyn["flywheel_m"]
+rho, psi = dyn["flywheel_density"], dyn["flywheel_width_ratio"]
+assert abs(m * D ** 2 / 8 - J) <= 1e-12 * J and abs(b - psi * D) <= 1e-12 * D
+assert abs(m - rho * math.pi * D ** 2 * b / 4) <= 1e-12 * m
+assert abs(D - (32 * J / (math.pi * rho * psi)) ** 0.2) <= 1e-12 * D
+PY
+}
+dyn_work_check pr3207 0.6 95,265 data/pr3207_flywheel.nml
+dyn_work_check pr3207-md-table 0.6 0,90,95,180,265,270 data/pr3207_flywheel.nml --set "md_table=0,1,90,1.5,180,1,270,0.5"
+dyn_work_check pr3207-aluminium 0.6 95,265 data/pr3207_flywheel.nml --set flywheel_density=2700 --set flywheel_width_ratio=0.1
+dyn_work_check sixbar 20 216.77061636665199,217.77061636665199,36.77061636665199 data/sixbar_flywheel.nml
+# with no flywheel the disc is null and the note says so; the summary's columns stay the same
+sed "s/dynamics = 'steady', delta = 0.001/dynamics = 'given', j_flywheel = 0/" data/sixbar_flywheel.nml > "$cli_tmp/dyn_nofw.nml"
+run_ks "$cli_tmp/dyn_nofw.nml" --format json
+python3 - "$out" <<'PY' && pass || fail dynamics-disc-null "the disc of no flywheel is not null with a note"
+import json, sys
+d = json.load(open(sys.argv[1]))["dynamics"]
+assert d["J_flywheel"] == 0 and d["flywheel_D"] is None and d["flywheel_b"] is None and d["flywheel_m"] is None
+assert d["flywheel_note"].startswith("no flywheel"), d["flywheel_note"]
+PY
+run_ks "$cli_tmp/dyn_nofw.nml" --format summary; head -1 "$out" | tr , '\n' | grep flywheel > "$cli_tmp/dyn_nofw.head"
+sed "s/dynamics = 'steady', delta = 0.001/dynamics = 'given', j_flywheel = 50/" data/sixbar_flywheel.nml > "$cli_tmp/dyn_fw50.nml"
+run_ks "$cli_tmp/dyn_fw50.nml" --format summary
+if head -1 "$out" | tr , '\n' | grep flywheel | cmp -s - "$cli_tmp/dyn_nofw.head" && grep -q "dyn_flywheel_D" "$cli_tmp/dyn_nofw.head" \
+  && ! grep -q "flywheel_note" "$cli_tmp/dyn_nofw.head"; then pass
+else fail dynamics-disc-summary "the summary's flywheel columns differ with and without a flywheel"; fi
+run_ks "$cli_tmp/dyn_nofw.nml" --lang ru
+if grep -q "МАХОВИК: ДИАМЕТР D *= НЕТ" "$out"; then pass; else fail dynamics-disc-ru "no 'НЕТ' for the disc in Russian"; fi
+expect_input_error dynamics-disc-density "&pr3207: flywheel_density: must be > 0" \
+  "$(deck_with dyn_rho "$fw" "s/delta = 0.04/delta = 0.04, flywheel_density = -1/")"
+expect_input_error dynamics-disc-ratio "&pr3207: flywheel_width_ratio: must be > 0 and <= 10" \
+  "$(deck_with dyn_psi "$fw" "s/delta = 0.04/delta = 0.04, flywheel_width_ratio = 0/")"
+expect_input_error dynamics-disc-without-cycle "&pr3207: flywheel_density: .*need dynamics = 'steady' or 'given'" \
+  "$(deck_with dyn_rho2 data/pr3207.nml "s/omega1 = 7.5/omega1 = 7.5, flywheel_density = 7800/")"

@@ -43,3 +43,41 @@ run_ks data/sixbar.nml --format json
 if [ "$rc" -ne 0 ] || ! grep -q '"columns"' "$out"; then fail kinematics-json-default "rc=$rc: $(head -c 300 "$err")"
 elif grep -q '"kinematic"' "$out"; then fail kinematics-json-default "default JSON lists kinematics columns"
 else pass; fi
+
+# the points' velocities vx_P, vy_P and accelerations ax_P, ay_P against central differences
+# of the positions over the input angle (tools/motion_check.py, 4th-order stencils at 0.5 deg,
+# relative 1e-6 of the largest speed or acceleration): every linkage kind, a class-III group,
+# the true motion of a steady cycle (omega1, eps1 varying)
+motion_case() {
+  local name="$1"; shift
+  run_ks "$@" --kinematics --format csv
+  if [ "$rc" -ne 0 ]; then fail "kinematics-motion-$name" "exit $rc: $(head -c 300 "$err")"; return; fi
+  cp "$out" "$cli_tmp/motion.csv"
+  if python3 tools/motion_check.py "$cli_tmp/motion.csv" >"$cli_tmp/motion.out" 2>&1 && grep -q "^motion: OK" "$cli_tmp/motion.out"; then
+    pass
+  else
+    fail "kinematics-motion-$name" "$(tail -4 "$cli_tmp/motion.out")"
+  fi
+}
+motion_case pr3207 data/pr3207.nml --set phi_start=100 --set dphi=0.5 --set n=7
+motion_case sixbar data/sixbar_example.nml --set dphi=0.5 --set n=7 --set "f5=7*5000"
+motion_case assur-sixbar data/assur_sixbar.nml --set phi_start=100 --set dphi=0.5 --set n=7
+motion_case assur-pr3050 data/assur_slider_crank.nml --set phi_start=100 --set dphi=0.5 --set n=7
+motion_case linkage-slider-crank data/linkage_slider_crank.nml --set "drive(1)%start=40" --set "drive(1)%step=0.5" --set n=7
+motion_case class3 data/class3.nml --set "drive(1)%start=30" --set "drive(1)%step=0.5" --set n=7
+motion_case pr3207-flywheel data/pr3207_flywheel.nml --set dphi=0.5 --set n=721
+# the check must fail on a changed velocity and a changed acceleration
+run_ks data/class3.nml --set "drive(1)%start=30" --set "drive(1)%step=0.5" --set n=7 --kinematics --format csv
+for col in vx_T1 ay_B; do
+  python3 - "$out" "$col" "$cli_tmp/motion_bad.csv" <<'PY'
+import csv, sys
+rows = list(csv.reader(open(sys.argv[1])))
+c = rows[0].index(sys.argv[2])
+rows[3][c] = repr(float(rows[3][c]) * (1 + 1e-4) + 1e-3)
+csv.writer(open(sys.argv[3], "w", newline=""), lineterminator="\n").writerows(rows)
+PY
+  if python3 tools/motion_check.py "$cli_tmp/motion_bad.csv" >"$cli_tmp/motion.out" 2>&1; then
+    fail "kinematics-motion-must-fail-$col" "a changed $col passed: $(tail -2 "$cli_tmp/motion.out")"
+  elif grep -q "^motion: FAIL" "$cli_tmp/motion.out"; then pass
+  else fail "kinematics-motion-must-fail-$col" "no verdict: $(tail -2 "$cli_tmp/motion.out")"; fi
+done

@@ -22,6 +22,19 @@ lk_structure linkage-structure-slider data/linkage_slider_crank.nml en "II(2,3) 
 lk_structure linkage-structure-excavator docs/examples/excavator.nml en "STRUCTURE FORMULA: I(0,1,2,3) -> I(1,4,5,6)" \
   "W = 3n - 2p5 - p4 = 3 x 6 - 2 x 8 - 0 = 2 = NUMBER OF DRIVES"
 lk_structure linkage-structure-ru data/class3.nml ru "ФОРМУЛА СТРОЕНИЯ: I(0,1) -> III(2,3,4,5)" "КЛАСС МЕХАНИЗМА: III"
+# the Russian analysis in the course's words: the kinds ВВВ, ВВП, the number of initial links,
+# no DECK:/TITLE: lines and no Latin word but the symbols (n, p5, p4, W, x) and the Roman classes
+lk_structure linkage-structure-ru-kind data/linkage_slider_crank.nml ru \
+  "II(2,3)  ДИАДА (ГРУППА II КЛАССА 2-ГО ПОРЯДКА), ВИД ВВП" \
+  "W = 3n - 2p5 - p4 = 3 x 3 - 2 x 4 - 0 = 1 = ЧИСЛО НАЧАЛЬНЫХ ЗВЕНЬЕВ" "I(0,1)  НАЧАЛЬНОЕ ЗВЕНО (МЕХАНИЗМ I КЛАССА)"
+lk_structure linkage-structure-ru-rrr data/fivebar.nml ru "II(2,3)  ДИАДА (ГРУППА II КЛАССА 2-ГО ПОРЯДКА), ВИД ВВВ" \
+  "W = 3n - 2p5 - p4 = 3 x 4 - 2 x 5 - 0 = 2 = ЧИСЛО НАЧАЛЬНЫХ ЗВЕНЬЕВ"
+for deck in data/class3.nml data/fivebar.nml data/linkage_slider_crank.nml docs/examples/excavator.nml; do
+  run_ks structure "$deck" --lang ru
+  if [ "$rc" -eq 0 ] && ! grep -qE "DECK:|TITLE:" "$out" \
+    && ! sed -E 's/\b[IVX]+\b//g' "$out" | grep -qE "[A-Za-z]{2,}"; then pass
+  else fail "linkage-structure-ru-words-$(basename "$deck" .nml)" "exit $rc or Latin words: $(head -c 400 "$out")"; fi
+done
 
 # every run's INPUT DATA echoes the structure
 run_ks data/class3.nml

@@ -1,0 +1,276 @@
+!> `kinetostat sheets DECK -o DIR`: the course's drawing sheets of a linkage deck, each as SVG
+!> and DXF (the one drawing model) and as PDF at true size when rsvg-convert is installed:
+!> DIR/kinematics (the structure, the mechanism at the position with a trajectory, the output
+!> link's diagrams, the values), DIR/kinetostatics (the mechanism, the plans, Zhukovsky's lever and the force polygons at
+!> the position --at K, by default the step of the largest |effort| of the first drive) and,
+!> with a steady cycle, DIR/dynamics (the machine dynamics and the flywheel). Every sheet is
+!> computed before any file is written (an error writes nothing); each file is then written
+!> through a temporary beside it and renamed, and the sheets of an earlier run that this deck
+!> no longer makes are removed from DIR.
+module kinetostat_sheets
+  use kinetostat_kinds, only: wp
+  use kinetostat_error, only: error_t, fatal_error, exit_usage, exit_input
+  use kinetostat_text, only: int_str
+  use kinetostat_deck, only: deck_source_t, load_deck, read_group_name
+  use kinetostat_override, only: apply_overrides
+  use kinetostat_step_table, only: step_table_t
+  use kinetostat_text_buffer, only: text_buffer_t
+  use kinetostat_output, only: write_output_file
+  use kinetostat_mechanism, only: mechanism_t
+  use kinetostat_summary, only: column_stats_t, column_stats
+  use kinetostat_run, only: run_options_t, run_mechanism, format_summary, format_svg, format_dxf, format_plans, &
+    course_dynamics, course_none, course_kinematics, course_kinetostatics
+  use kinetostat_registry, only: create_mechanism, known_kinds
+  implicit none
+  private
+  public :: write_course_sheets, sheet_names, parse_sheet_numbers
+
+  !> The sheets' file stems, in the course's order.
+  character(*), parameter :: sheet_names(*) = [character(len=13) :: "kinematics", "kinetostatics", "dynamics"]
+  !> The files of a sheet.
+  character(*), parameter :: sheet_suffixes(*) = [character(len=4) :: ".svg", ".dxf", ".pdf"]
+
+contains
+
+  !> Parse --sheet-numbers "1,2,3": the department's numbers of the sheets in the course's
+  !> order (kinematics, kinetostatics, dynamics), whole numbers 1..999.
+  pure subroutine parse_sheet_numbers(text, numbers, error)
+    character(*), intent(in) :: text
+    integer, allocatable, intent(out) :: numbers(:)
+    type(error_t), allocatable, intent(out) :: error
+    integer :: start, k, value, ios
+    character(len=:), allocatable :: part
+    allocate (numbers(0))
+    start = 1
+    do
+      k = index(text(start:), ",")
+      if (k == 0) then
+        part = trim(adjustl(text(start:)))
+      else
+        part = trim(adjustl(text(start:start + k - 2)))
+      end if
+      value = 0
+      ios = 1
+      if (len(part) > 0 .and. len(part) <= 3) then
+        if (verify(part, "0123456789") == 0) read (part, *, iostat=ios) value
+      end if
+      if (ios /= 0 .or. value < 1) then
+        call fatal_error(error, exit_usage, "--sheet-numbers needs whole numbers 1..999 separated by commas, "// &
+          "one per sheet (kinematics, kinetostatics, dynamics), got '"//text//"'")
+        return
+      end if
+      numbers = [numbers, value]
+      if (k == 0) exit
+      start = start + k
+    end do
+  end subroutine parse_sheet_numbers
+
+  !> Compute the sheets of the deck at `path` with `options` (language, student, --set,
+  !> paper, designation, --at) and write them into the directory `dir`; `numbers` the
+  !> department's sheet numbers (empty: 1..N of N).
+  subroutine write_course_sheets(path, options, dir, numbers, error)
+    character(*), intent(in) :: path
+    type(run_options_t), intent(in) :: options
+    character(*), intent(in) :: dir
+    integer, intent(in) :: numbers(:)
+    type(error_t), allocatable, intent(out) :: error
+    type(step_table_t) :: table
+    type(run_options_t) :: o
+    type(text_buffer_t) :: scratch
+    !> The files of the sheets (at most two a sheet before the PDFs) and their names.
+    type(text_buffer_t) :: files(2 * size(sheet_names))
+    character(len=64) :: names(2 * size(sheet_names))
+    logical :: made(size(sheet_names)), dynamics
+    integer :: k_at, i, n, s, count_made, n_files
+    character(len=256) :: message
+    integer :: stat
+
+    ! the run once: its effort's extreme step (the default --at) and whether it has a cycle
+    o = options
+    o%format = format_summary
+    o%at_step = 0
+    call run_one(path, o, table, scratch, error)
+    if (allocated(error)) return
+    k_at = options%at_step
+    if (k_at == 0) k_at = effort_step(table)
+    dynamics = table%column_index("dT") > 0
+    made = .false.
+    made(1) = .true.
+    made(2) = .true.
+    made(3) = dynamics
+    count_made = count(made)
+    if (size(numbers) > 0 .and. size(numbers) /= count_made) then
+      call fatal_error(error, exit_usage, "--sheet-numbers: "//path//" makes "//int_str(count_made)//" sheets, "// &
+        "give as many numbers (got "//int_str(size(numbers))//")")
+      return
+    end if
+    n_files = 0
+    n = 0
+    do s = 1, size(sheet_names)
+      if (.not. made(s)) cycle
+      n = n + 1
+      o = options
+      o%sheet_count = count_made
+      o%sheet_number = n
+      if (size(numbers) > 0) o%sheet_number = numbers(n)
+      o%course_sheet = course_none
+      select case (s)
+      case (1)
+        o%at_step = 0
+        o%course_at = k_at
+        o%kinematics = .true.
+        o%course_sheet = course_kinematics
+        o%format = format_svg
+        call add_file(trim(sheet_names(s))//".svg")
+        o%format = format_dxf
+        call add_file(trim(sheet_names(s))//".dxf")
+      case (2)
+        o%at_step = k_at
+        o%course_sheet = course_kinetostatics
+        o%format = format_plans
+        call add_file(trim(sheet_names(s))//".svg")
+        o%format = format_dxf
+        o%plans = .true.
+        call add_file(trim(sheet_names(s))//".dxf")
+      case default
+        ! the dynamics sheet (3)
+        o%at_step = 0
+        o%course_sheet = course_dynamics
+        o%format = format_svg
+        call add_file(trim(sheet_names(s))//".svg")
+        o%format = format_dxf
+        call add_file(trim(sheet_names(s))//".dxf")
+      end select
+      if (allocated(error)) return
+    end do
+
+    ! every sheet is made: into DIR (created when missing)
+    call execute_command_line("mkdir -p -- "//quoted(dir), exitstat=stat, cmdstat=i, cmdmsg=message)
+    if (i /= 0 .or. stat /= 0) then
+      call fatal_error(error, exit_input, "sheets: -o "//dir//": cannot create the directory")
+      return
+    end if
+    do i = 1, n_files
+      call write_output_file(dir//"/"//trim(names(i)), files(i), error)
+      if (allocated(error)) return
+    end do
+    ! the PDFs at true size (the SVG's width and height are in mm)
+    call execute_command_line("command -v rsvg-convert >/dev/null 2>&1", exitstat=stat, cmdstat=i)
+    do s = 1, size(sheet_names)
+      if (.not. made(s)) cycle
+      if (i == 0 .and. stat == 0) then
+        call execute_command_line("rsvg-convert -f pdf -o "//quoted(dir//"/."//trim(sheet_names(s))//".pdf.tmp")// &
+          " "//quoted(dir//"/"//trim(sheet_names(s))//".svg")//" && mv -f -- "// &
+          quoted(dir//"/."//trim(sheet_names(s))//".pdf.tmp")//" "//quoted(dir//"/"//trim(sheet_names(s))//".pdf"), &
+          exitstat=stat)
+        if (stat /= 0) then
+          call fatal_error(error, exit_input, "sheets: rsvg-convert could not write "//dir//"/"// &
+            trim(sheet_names(s))//".pdf")
+          return
+        end if
+      end if
+    end do
+    ! the sheets this deck does not make, left by an earlier run
+    do s = 1, size(sheet_names)
+      if (made(s)) cycle
+      do i = 1, size(sheet_suffixes)
+        call remove_file(dir//"/"//trim(sheet_names(s))//trim(sheet_suffixes(i)), error)
+        if (allocated(error)) return
+      end do
+    end do
+  contains
+    !> Run the deck with `o` and keep its text as file `name`.
+    subroutine add_file(name)
+      character(*), intent(in) :: name
+      type(step_table_t) :: t
+      if (allocated(error)) return
+      n_files = n_files + 1
+      call run_one(path, o, t, files(n_files), error)
+      if (allocated(error)) return
+      names(n_files) = name
+    end subroutine add_file
+  end subroutine write_course_sheets
+
+  !> One run of the deck into `out` (no spool: the sheets are small).
+  subroutine run_one(path, options, table, out, error)
+    character(*), intent(in) :: path
+    type(run_options_t), intent(in) :: options
+    type(step_table_t), intent(out) :: table
+    type(text_buffer_t), intent(inout) :: out
+    type(error_t), allocatable, intent(out) :: error
+    character(len=:), allocatable :: group
+    class(mechanism_t), allocatable :: mech
+    type(deck_source_t) :: source, patched
+    call load_deck(path, source, error)
+    if (allocated(error)) return
+    call read_group_name(source, group, error)
+    if (allocated(error)) return
+    call create_mechanism(group, mech)
+    if (.not. allocated(mech)) then
+      call fatal_error(error, exit_input, source%path//": &"//group//": unknown mechanism (known: "// &
+        known_kinds()//")")
+      return
+    end if
+    if (.not. mech%force_sheet .or. group == "gears" .or. group == "cam") then
+      call fatal_error(error, exit_usage, "sheets: "//source%path//" is &"//group//": the course sheets are drawn "// &
+        "for linkages (pr3207, pr3050, sixbar, assur, linkage)")
+      return
+    end if
+    if (allocated(options%overrides)) then
+      call apply_overrides(source, options%overrides, patched, error)
+      if (allocated(error)) return
+      call run_mechanism(mech, group, patched, options, table, out, error)
+    else
+      call run_mechanism(mech, group, source, options, table, out, error)
+    end if
+  end subroutine run_one
+
+  !> The step of the largest |effort| of the first drive (the table's driver column; the
+  !> first step without one).
+  pure integer function effort_step(table) result(k)
+    type(step_table_t), intent(in) :: table
+    type(column_stats_t) :: s
+    integer :: c
+    k = 1
+    if (.not. allocated(table%driver)) return
+    c = table%column_index(table%driver)
+    if (c == 0) return
+    s = column_stats(table, c)
+    if (abs(s%max) >= abs(s%min)) then
+      k = s%max_row
+    else
+      k = s%min_row
+    end if
+    k = max(1, k)
+  end function effort_step
+
+  !> A path quoted for the shell (single quotes; a quote inside as '\'').
+  pure function quoted(text) result(q)
+    character(*), intent(in) :: text
+    character(len=:), allocatable :: q
+    integer :: i
+    q = "'"
+    do i = 1, len(text)
+      if (text(i:i) == "'") then
+        q = q//"'\''"
+      else
+        q = q//text(i:i)
+      end if
+    end do
+    q = q//"'"
+  end function quoted
+
+  !> Remove a file if it exists (an old sheet); an error when it stays.
+  subroutine remove_file(path, error)
+    character(*), intent(in) :: path
+    type(error_t), allocatable, intent(out) :: error
+    integer :: unit, ios
+    logical :: there
+    inquire (file=path, exist=there)
+    if (.not. there) return
+    open (newunit=unit, file=path, status="old", iostat=ios)
+    if (ios == 0) close (unit, status="delete", iostat=ios)
+    if (ios /= 0) call fatal_error(error, exit_input, "sheets: cannot remove the earlier sheet "//path)
+  end subroutine remove_file
+
+end module kinetostat_sheets

@@ -1,0 +1,417 @@
+!> The course's sheet of the structure and the kinematics (kinetostat sheets: kinematics.svg)
+!> on the drawing model, from a run with the points' velocities and accelerations
+!> (--kinematics):
+!> - the mechanism at the position --at K at a ГОСТ 2.302 scale (the title block's Масштаб),
+!>   with the trajectory of the traced point (the coupler's centre of mass: the first link
+!>   with a centre of mass of the first group after the input units) over the run's steps;
+!> - the structure: the units in the course's order (plan_groups: a &linkage deck's own
+!>   analysis, or the one derived from the topology) with their classes, the structure
+!>   formula, the number of moving links n, of lower pairs p5 and W = 3n - 2p5;
+!> - the diagrams of the output link (the last link of the last group) over the input angle:
+!>   a slider's displacement s from its extreme position along its guide with its velocity
+!>   and acceleration along it, or a rocker's angle ψ from its extreme position with ω and
+!>   ε, each at a round μ and one μφ;
+!> - the values at the position: every point's speed and acceleration, every link's ω and ε.
+module kinetostat_kinematics_sheet
+  use kinetostat_kinds, only: wp, deg_to_rad
+  use kinetostat_format, only: short_number
+  use kinetostat_text, only: int_str
+  use kinetostat_step_table, only: step_table_t
+  use kinetostat_labels, only: unit_word => unit_symbol
+  use kinetostat_sheet, only: sheet_t, paper_t, layer_text, layer_charts
+  use kinetostat_title_block, only: put_sheet_format, title_block_from_table, block_height
+  use kinetostat_scales, only: round_scale, scale_number
+  use kinetostat_sketch, only: sketch_t
+  use kinetostat_drawing, only: drawing_t, column_value
+  use kinetostat_mechanism_view, only: mechanism_view_t, fit_mechanism_view, draw_mechanism
+  use kinetostat_design_sheet, only: words, put_table
+  use kinetostat_dynamics_sheet, only: sheet_header, plot_t, put_cycle_chart, put_cycle_curve
+  use kinetostat_plans_base, only: slide_t, slides_of, slide_is_pair, lists, sliding_on, plan_group_t
+  use kinetostat_plans_groups, only: plan_groups
+  implicit none
+  private
+  public :: draw_kinematics_sheet
+
+  !> Gap between panels, mm.
+  real(wp), parameter :: gap = 6.0_wp
+
+contains
+
+  !> The kinematics sheet of row k on `paper` (landscape: three columns).
+  subroutine draw_kinematics_sheet(title, table, topo, drawing, k, paper, lang, sheet)
+    !> Title of the mechanism.
+    character(*), intent(in) :: title
+    !> The run (its kinematics columns with the points' velocities and accelerations).
+    type(step_table_t), intent(in) :: table
+    !> The mechanism's topology (available).
+    type(sketch_t), intent(in) :: topo
+    !> The mechanism at that row with its forces (drawing_from_sketch, force_plan: the drive
+    !> names the input link of the structure).
+    type(drawing_t), intent(in) :: drawing
+    !> Row of the position drawn.
+    integer, intent(in) :: k
+    type(paper_t), intent(in) :: paper
+    integer, intent(in) :: lang
+    type(sheet_t), intent(out) :: sheet
+    type(mechanism_view_t) :: view
+    type(slide_t), allocatable :: slides(:)
+    type(plan_group_t), allocatable :: groups(:)
+    real(wp) :: inner(4), cw, x1, x2, x3, top, region(4), mu_phi, hmax, y
+    real(wp), allocatable :: phi(:)
+    character(len=:), allocatable :: short, driver, traced, text
+    type(plot_t) :: q
+
+    allocate (phi(0))
+    call slides_of(topo, drawing, table, k, slides)
+    driver = ""
+    if (allocated(table%driver)) driver = table%driver
+    call plan_groups(topo, drawing, table, slides, driver, groups)
+
+    inner = paper%inside()
+    cw = (inner(3) - inner(1) - 4.0_wp * gap) / 3.0_wp
+    x1 = inner(1) + gap
+    x2 = x1 + cw + gap
+    x3 = x2 + cw + gap
+    top = inner(2) + 24.0_wp
+    region = [x1, top, x1 + cw, top + 0.58_wp * (inner(4) - top)]
+    call fit_mechanism_view(drawing, [region(1) + 4.0_wp, region(2) + 10.0_wp, region(3) - 4.0_wp, region(4) - 10.0_wp], &
+      10.0_wp, view)
+    call sheet%open(paper, lang, words("Structure and kinematics", &
+      "Структурный и кинематический анализ", lang)// &
+      " - "//table%deck, "kinetostat sheets: the kinematics sheet of "//table%deck//": the mechanism at a position "// &
+      "with a trajectory, the structure, the output link's diagrams, the values at the position.")
+    call put_sheet_format(sheet, title_block_from_table(table, words("Structure and kinematics of the mechanism", &
+      "Структурный и кинематический анализ механизма", lang), view%drawing_scale%text))
+    call sheet_header(sheet, title, table, lang, words("Structural and kinematic analysis", &
+      "Структурный и кинематический анализ механизма", lang))
+
+    ! the mechanism at the position with the traced point's trajectory
+    call sheet%set_layer(layer_charts)
+    call sheet%rect(region(1), region(2), cw, region(4) - region(2), "panel")
+    traced = traced_point()
+    text = words("Mechanism in position ", "Механизм в положении ", lang)//int_str(table%run_row(k))
+    if (table%input_column > 0) text = text//" (φ1 = "//short_number(table%rows(table%input_column, k))//" "// &
+      unit_word("deg", lang)//")"
+    if (len(traced) > 0) text = text//words("; trajectory of ", "; траектория точки ", lang)//traced
+    call sheet%text(region(1) + 2.0_wp, region(2) + 5.0_wp, text, "heading")
+    if (len(traced) > 0) call put_trajectory(traced)
+    call draw_mechanism(sheet, drawing, view, [region(1) + 2.0_wp, region(2) + 8.0_wp, region(3) - 2.0_wp, &
+      region(4) - 8.0_wp], 0.0_wp, short)
+    call sheet%set_layer(layer_text)
+    call sheet%text(region(1) + 2.0_wp, region(4) - 3.0_wp, "μl = "//scale_number(view%mu_l())//" "// &
+      unit_word("m", lang)//"/"//unit_word("mm", lang)//" ("//view%drawing_scale%text//")", "small")
+
+    ! the structure
+    call put_structure(x1, region(4) + gap, cw, inner(4) - region(4) - 2.0_wp * gap)
+
+    ! the output link's diagrams over the input angle
+    ! (a run of one position, or one whose input coordinate does not move, has none)
+    if (table%input_column > 0) phi = table%rows(table%input_column, :)
+    if (table%input_column > 0 .and. size(table%rows, 2) > 1) then
+      if (maxval(phi) - minval(phi) <= 0.0_wp) phi = [real(wp) ::]
+    end if
+    if (size(phi) > 1) then
+      mu_phi = round_scale(maxval(phi) - minval(phi), cw - 24.0_wp)
+      hmax = (inner(4) - top - 2.0_wp * gap) / 3.0_wp
+      y = top
+      call output_diagrams()
+    end if
+
+    ! the values at the position
+    call put_values(x3, top, cw, inner(4) - block_height - gap - top)
+  contains
+
+    !> The traced point: the centre of mass of the first link of the first group after the
+    !> input units, when the table has its position ("" otherwise).
+    function traced_point() result(name)
+      character(len=:), allocatable :: name
+      integer :: g, j
+      name = ""
+      do g = 1, size(groups)
+        if (groups(g)%input) cycle
+        do j = 1, size(groups(g)%links)
+          name = "S"//trim(topo%links(groups(g)%links(j))%name)
+          if (table%column_index("x_"//name) > 0) return
+        end do
+        name = ""
+        return
+      end do
+    end function traced_point
+
+    !> The trajectory of point `name` over the rows, through the view.
+    subroutine put_trajectory(name)
+      character(*), intent(in) :: name
+      real(wp), allocatable :: sx(:), sy(:)
+      real(wp) :: p(2)
+      integer :: r, cx, cy
+      cx = table%column_index("x_"//name)
+      cy = table%column_index("y_"//name)
+      allocate (sx(size(table%rows, 2)), sy(size(table%rows, 2)))
+      do r = 1, size(table%rows, 2)
+        p = view%point([table%rows(cx, r), table%rows(cy, r)])
+        sx(r) = p(1)
+        sy(r) = p(2)
+      end do
+      call sheet%polyline(sx, sy, stroke="#9467bd", width=0.35_wp, dash="2 1")
+    end subroutine put_trajectory
+
+    !> The units of the structure, n, p5, W and the formula in the panel (x0, y0, w, h).
+    subroutine put_structure(x0, y0, w, h)
+      real(wp), intent(in) :: x0, y0, w, h
+      character(len=96), allocatable :: cells(:, :)
+      character(len=:), allocatable :: formula, names
+      integer :: g, j, n, p5
+      call sheet%set_layer(layer_charts)
+      call sheet%rect(x0, y0, w, h, "panel")
+      call sheet%text(x0 + 2.0_wp, y0 + 5.0_wp, words("Structure of the mechanism", "Структура механизма", &
+        lang), &
+        "heading")
+      allocate (cells(size(groups) + 1, 3))
+      cells = ""
+      cells(1, :) = [character(len=96) :: words("unit", "группа", lang), words("links", "звенья", lang), &
+        words("kind", "вид", lang)]
+      formula = ""
+      do g = 1, size(groups)
+        names = ""
+        do j = 1, size(groups(g)%links)
+          if (j > 1) names = names//", "
+          names = names//trim(topo%links(groups(g)%links(j))%name)
+        end do
+        cells(g + 1, 1) = groups(g)%label
+        cells(g + 1, 2) = names
+        select case (groups(g)%class)
+        case (1)
+          cells(g + 1, 3) = words("input link (class I)", "начальное звено (I класс)", lang)
+        case (2)
+          cells(g + 1, 3) = words("dyad: group of class II, order 2", &
+            "диада: группа II класса 2-го порядка", lang)
+        case (3)
+          cells(g + 1, 3) = words("group of class III", "группа III класса", lang)
+        case default
+          cells(g + 1, 3) = words("group", "группа", lang)
+        end select
+        if (g > 1) formula = formula//" → "
+        formula = formula//groups(g)%label
+      end do
+      call put_table(sheet, x0 + 4.0_wp, y0 + 9.0_wp, [0.22_wp * w, 0.2_wp * w, 0.5_wp * w], 4.5_wp, cells)
+      n = size(topo%links)
+      p5 = lower_pairs()
+      call sheet%set_layer(layer_text)
+      call sheet%text(x0 + 4.0_wp, y0 + 9.0_wp + 4.5_wp * size(cells, 1) + 6.0_wp, words("structure formula: ", &
+        "формула строения: ", lang)//formula, "label")
+      call sheet%text(x0 + 4.0_wp, y0 + 9.0_wp + 4.5_wp * size(cells, 1) + 11.0_wp, "n = "//int_str(n)//",  p5 = "// &
+        int_str(p5)//",  p4 = 0,  W = 3n − 2p5 − p4 = "//int_str(3 * n - 2 * p5), "label")
+      call put_pairs(x0 + 4.0_wp, y0 + 9.0_wp + 4.5_wp * size(cells, 1) + 17.0_wp, w - 8.0_wp)
+    end subroutine put_structure
+
+    !> The table of the kinematic pairs: at every point the links joined there (the frame at a
+    !> pivot), a turning pair (В) between each further link and the first; every slider a
+    !> sliding pair (П); all lower pairs of class V.
+    subroutine put_pairs(x0, y0, w)
+      real(wp), intent(in) :: x0, y0, w
+      character(len=64), allocatable :: cells(:, :)
+      character(len=16), allocatable :: seen(:), at(:)
+      character(len=16) :: pn
+      character(len=:), allocatable :: frame
+      integer :: i, j, l2, m
+      frame = "0"
+      if (size(groups) > 0) then
+        if (allocated(groups(1)%label)) then
+          if (index(groups(1)%label, "I(") == 1 .and. index(groups(1)%label, ",") > 3) then
+            frame = groups(1)%label(3:index(groups(1)%label, ",") - 1)
+          end if
+        end if
+      end if
+      allocate (cells(1, 4), seen(0))
+      cells(1, :) = [character(len=64) :: words("pair", "пара", lang), words("links", "звенья", lang), &
+        words("kind", "вид", lang), words("class", "класс", lang)]
+      do i = 1, size(topo%links)
+        do j = 1, size(topo%links(i)%points)
+          pn = topo%links(i)%points(j)
+          if (any(seen == pn)) cycle
+          seen = [character(len=16) :: seen, pn]
+          allocate (at(0))
+          if (allocated(topo%pivots)) then
+            if (any(topo%pivots == pn)) at = [character(len=16) :: frame]
+          end if
+          do l2 = 1, size(topo%links)
+            if (lists(topo, l2, trim(pn)) .and. .not. sliding_on(topo, l2, trim(pn))) then
+              at = [character(len=16) :: at, topo%links(l2)%name]
+            end if
+          end do
+          do m = 2, size(at)
+            cells = reshape([character(len=64) :: transpose(cells), trim(pn), trim(at(1))//"–"//trim(at(m)), &
+              words("turning", "вращательная", lang), "V"], [size(cells, 1) + 1, 4], order=[2, 1])
+          end do
+          deallocate (at)
+        end do
+      end do
+      do i = 1, size(slides)
+        if (.not. slide_is_pair(topo, slides, i)) cycle
+        if (slides(i)%g > 0) then
+          pn = topo%links(slides(i)%g)%name
+        else
+          pn = frame
+        end if
+        cells = reshape([character(len=64) :: transpose(cells), trim(slides(i)%name), &
+          trim(topo%links(slides(i)%m)%name)//"–"//trim(pn), words("sliding", "поступательная", lang), "V"], &
+          [size(cells, 1) + 1, 4], order=[2, 1])
+      end do
+      call sheet%set_layer(layer_text)
+      call sheet%text(x0, y0, words("Kinematic pairs", "Кинематические пары", lang), "label")
+      call put_table(sheet, x0, y0 + 2.0_wp, [0.16_wp * w, 0.16_wp * w, 0.3_wp * w, 0.12_wp * w], 4.2_wp, cells)
+    end subroutine put_pairs
+
+    !> The lower pairs of the sketch: at every point, the links listing it (not as a sliding
+    !> contact) and the frame for a pivot, less one; and every slider that is a pair.
+    integer function lower_pairs() result(p5)
+      character(len=16), allocatable :: seen(:)
+      character(len=16) :: pn
+      integer :: i, j, m, l2
+      p5 = 0
+      allocate (seen(0))
+      do i = 1, size(topo%links)
+        do j = 1, size(topo%links(i)%points)
+          pn = topo%links(i)%points(j)
+          if (any(seen == pn)) cycle
+          seen = [character(len=16) :: seen, pn]
+          m = count([(lists(topo, l2, trim(pn)) .and. .not. sliding_on(topo, l2, trim(pn)), l2=1, size(topo%links))])
+          if (allocated(topo%pivots)) then
+            if (any(topo%pivots == pn)) m = m + 1
+          end if
+          p5 = p5 + max(0, m - 1)
+        end do
+      end do
+      do i = 1, size(slides)
+        if (slide_is_pair(topo, slides, i)) p5 = p5 + 1
+      end do
+    end function lower_pairs
+
+    !> s, v, a (a slider on a guide of the frame) or psi, omega, eps (a rocker) of the output
+    !> link over the input angle, in column 2.
+    subroutine output_diagrams()
+      integer :: out_link, g, cx, cy, cvx, cvy, cax, cay, r
+      real(wp) :: u(2), s0
+      real(wp), allocatable :: s(:), v(:), a(:)
+      character(len=:), allocatable :: name, point
+      logical :: slider
+      out_link = 0
+      do g = size(groups), 1, -1
+        if (size(groups(g)%links) > 0) then
+          out_link = groups(g)%links(size(groups(g)%links))
+          exit
+        end if
+      end do
+      if (out_link == 0) return
+      name = trim(topo%links(out_link)%name)
+      slider = .false.
+      point = ""
+      if (allocated(topo%guides)) then
+        do g = 1, size(topo%guides)
+          if (allocated(topo%guides(g)%on)) then
+            if (len(topo%guides(g)%on) > 0) cycle
+          end if
+          if (lists(topo, out_link, trim(topo%guides(g)%point))) then
+            slider = .true.
+            point = trim(topo%guides(g)%point)
+            u = [cos(topo%guides(g)%angle * deg_to_rad), sin(topo%guides(g)%angle * deg_to_rad)]
+            exit
+          end if
+        end do
+      end if
+      allocate (s(size(phi)), v(size(phi)), a(size(phi)))
+      if (slider) then
+        cx = table%column_index("x_"//point)
+        cy = table%column_index("y_"//point)
+        cvx = table%column_index("vx_"//point)
+        cvy = table%column_index("vy_"//point)
+        cax = table%column_index("ax_"//point)
+        cay = table%column_index("ay_"//point)
+        if (min(cx, cy, cvx, cvy, cax, cay) == 0) return
+        do r = 1, size(phi)
+          s(r) = table%rows(cx, r) * u(1) + table%rows(cy, r) * u(2)
+          v(r) = table%rows(cvx, r) * u(1) + table%rows(cvy, r) * u(2)
+          a(r) = table%rows(cax, r) * u(1) + table%rows(cay, r) * u(2)
+        end do
+        s0 = minval(s)
+        s = s - s0
+        call put_cycle_chart(sheet, x2, y, cw, hmax, phi, mu_phi, s, unit_word("m", lang), "s", words( &
+          "Displacement of link ", "Перемещение звена ", lang)//name//words(" from its extreme position", &
+          " от крайнего положения", lang), "φ1, "//unit_word("deg", lang), lang, q)
+        call put_cycle_curve(sheet, q, phi, s, "#1f77b4", "", "s"//name)
+        y = y + q%height + 26.0_wp + gap
+        call put_cycle_chart(sheet, x2, y, cw, hmax, phi, mu_phi, v, unit_word("m/s", lang), "v", words( &
+          "Velocity of link ", "Скорость звена ", lang)//name, "φ1, "//unit_word("deg", lang), lang, q)
+        call put_cycle_curve(sheet, q, phi, v, "#1f77b4", "", "v_"//point)
+        y = y + q%height + 26.0_wp + gap
+        call put_cycle_chart(sheet, x2, y, cw, hmax, phi, mu_phi, a, unit_word("m/s^2", lang), "a", words( &
+          "Acceleration of link ", "Ускорение звена ", lang)//name, "φ1, "//unit_word("deg", lang), lang, q)
+        call put_cycle_curve(sheet, q, phi, a, "#1f77b4", "", "a_"//point)
+      else
+        cx = table%column_index("phi"//name)
+        cvx = table%column_index("omega"//name)
+        cax = table%column_index("eps"//name)
+        if (min(cx, cvx, cax) == 0) return
+        s = table%rows(cx, :)
+        s = s - minval(s)
+        v = table%rows(cvx, :)
+        a = table%rows(cax, :)
+        call put_cycle_chart(sheet, x2, y, cw, hmax, phi, mu_phi, s, unit_word("deg", lang), "ψ", words( &
+          "Angle of link ", "Угол поворота звена ", lang)//name//words(" from its extreme position", &
+          " от крайнего положения", lang), "φ1, "//unit_word("deg", lang), lang, q)
+        call put_cycle_curve(sheet, q, phi, s, "#1f77b4", "", "ψ"//name)
+        y = y + q%height + 26.0_wp + gap
+        call put_cycle_chart(sheet, x2, y, cw, hmax, phi, mu_phi, v, unit_word("rad/s", lang), "ω", words( &
+          "Angular velocity of link ", "Угловая скорость звена ", lang)//name, "φ1, "//unit_word("deg", &
+            lang), lang, q)
+        call put_cycle_curve(sheet, q, phi, v, "#1f77b4", "", "ω"//name)
+        y = y + q%height + 26.0_wp + gap
+        call put_cycle_chart(sheet, x2, y, cw, hmax, phi, mu_phi, a, unit_word("rad/s^2", lang), "ε", words( &
+          "Angular acceleration of link ", "Угловое ускорение звена ", lang)//name, "φ1, " &
+            //unit_word("deg", lang), &
+          lang, q)
+        call put_cycle_curve(sheet, q, phi, a, "#1f77b4", "", "ε"//name)
+      end if
+    end subroutine output_diagrams
+
+    !> The values at the position: the points' speeds and accelerations, the links' ω and ε.
+    subroutine put_values(x0, y0, w, h)
+      real(wp), intent(in) :: x0, y0, w, h
+      character(len=40), allocatable :: cells(:, :)
+      real(wp) :: vv(2), aa(2)
+      integer :: ip, il, r, n
+      character(len=:), allocatable :: pname
+      call sheet%set_layer(layer_charts)
+      call sheet%rect(x0, y0, w, h, "panel")
+      call sheet%text(x0 + 2.0_wp, y0 + 5.0_wp, words("Values in position ", "Значения в положении ", lang)// &
+        int_str(table%run_row(k)), "heading")
+      n = 1 + size(drawing%points) + 1 + size(topo%links)
+      allocate (cells(n, 3))
+      cells = ""
+      cells(1, :) = [character(len=40) :: words("point", "точка", lang), "v, "//unit_word("m/s", lang), &
+        "a, "//unit_word("m/s^2", lang)]
+      r = 1
+      do ip = 1, size(drawing%points)
+        pname = trim(drawing%points(ip)%name)
+        if (table%column_index("vx_"//pname) == 0) cycle
+        vv = [column_value(table, "vx_"//pname, k), column_value(table, "vy_"//pname, k)]
+        aa = [column_value(table, "ax_"//pname, k), column_value(table, "ay_"//pname, k)]
+        r = r + 1
+        cells(r, :) = [character(len=40) :: pname, short_number(norm2(vv)), short_number(norm2(aa))]
+      end do
+      r = r + 1
+      cells(r, :) = [character(len=40) :: words("link", "звено", lang), "ω, "//unit_word("rad/s", lang), &
+        "ε, "//unit_word("rad/s^2", lang)]
+      do il = 1, size(topo%links)
+        if (table%column_index("omega"//trim(topo%links(il)%name)) == 0) cycle
+        r = r + 1
+        cells(r, :) = [character(len=40) :: trim(topo%links(il)%name), &
+          short_number(column_value(table, "omega"//trim(topo%links(il)%name), k)), &
+          short_number(column_value(table, "eps"//trim(topo%links(il)%name), k))]
+      end do
+      call sheet%set_layer(layer_text)
+      call put_table(sheet, x0 + 4.0_wp, y0 + 9.0_wp, [0.3_wp * w, 0.3_wp * w, 0.3_wp * w], 4.2_wp, cells(1:r, :))
+    end subroutine put_values
+  end subroutine draw_kinematics_sheet
+
+end module kinetostat_kinematics_sheet

@@ -1,0 +1,155 @@
+# kinetostat sheets DECK -o DIR (docs/course.md): the course's sheets of the three flywheel
+# decks and a class-III deck, in English and Russian: the files named by content (SVG, DXF,
+# and PDF when rsvg-convert is installed), an ISO A1 landscape (or --paper) sheet with the
+# ГОСТ frame and the title block (its fields: the drawing's name, Масштаб, Лист N of M, the
+# designation in графа 2 and 26, the student), no deck path in the title block, the course's
+# headings, no label over a label or a line (svg_check.py labels --lines), the notation, no
+# Latin word on a Russian sheet, the DXF read back; -o DIR all or nothing and an earlier
+# run's sheets removed; usage errors.
+sheets_check="$root/tools/svg_check.py"
+sheets_iso() {  # SVG PAPER-W PAPER-H: the paper's size and the frame
+  python3 - "$1" "$2" "$3" <<'PY'
+import re, sys
+text = open(sys.argv[1], encoding="utf-8").read()
+w, h = (float(v) for v in re.search(r'width="([0-9.]+)mm" height="([0-9.]+)mm"', text).groups())
+assert (w, h) == (float(sys.argv[2]), float(sys.argv[3])), (w, h)
+frame = f'<rect x="20.00" y="5.00" width="{w - 25:.2f}" height="{h - 10:.2f}" class="border"/>'
+assert frame in text, "no frame"
+assert re.search(r'<rect x="[0-9.]*" y="[0-9.]*" width="185.00" height="55.00"', text), "no title block"
+PY
+}
+sheets_decks="pr3207_flywheel class3"
+# the other two flywheel decks with tools/test --long (a few seconds each)
+if [ "${KINETOSTAT_LONG:-0}" = 1 ]; then sheets_decks="$sheets_decks sixbar_flywheel assur_pr3207_flywheel"; fi
+for deck in $sheets_decks; do
+  sheets_langs="en ru"
+  [ "$deck" = class3 ] && [ "${KINETOSTAT_LONG:-0}" != 1 ] && sheets_langs="en"
+  for lang in $sheets_langs; do
+    dir="$cli_tmp/sheets_${deck}_$lang"
+    rm -rf "$dir"
+    run_ks sheets "data/$deck.nml" -o "$dir" --lang "$lang" --student "Иванов И.И." --group МТ-301 --variant 7
+    if [ "$rc" -ne 0 ] || [ -s "$out" ]; then fail "sheets-run-$deck-$lang" "exit $rc: $(head -c 300 "$err")"; continue; fi
+    expected="kinematics kinetostatics"
+    case "$deck" in *flywheel) expected="dynamics kinematics kinetostatics" ;; esac
+    missing=""
+    for s in $expected; do
+      for ext in svg dxf; do [ -s "$dir/$s.$ext" ] || missing="$missing $s.$ext"; done
+      if command -v rsvg-convert >/dev/null; then [ -s "$dir/$s.pdf" ] || missing="$missing $s.pdf"; fi
+    done
+    made=$(cd "$dir" && ls | sed 's/\..*//' | sort -u | tr '\n' ' ')
+    [ "$made" = "$expected " ] || missing="$missing (made: $made)"
+    [ -z "$missing" ] && pass || fail "sheets-files-$deck-$lang" "missing:$missing"
+    for s in $expected; do
+      svg="$dir/$s.svg"
+      sheets_iso "$svg" 841.00 594.00 >"$cli_tmp/check.out" 2>&1 || { fail "sheets-iso-$deck-$s-$lang" "$(tail -2 "$cli_tmp/check.out")"; continue; }
+      python3 "$sheets_check" labels --lines "$svg" >"$cli_tmp/check.out" 2>&1 \
+        && python3 "$sheets_check" notation "$lang" "$svg" >>"$cli_tmp/check.out" 2>&1 \
+        && python3 "$root/tools/dxf_check.py" "$dir/$s.dxf" >>"$cli_tmp/check.out" 2>&1 \
+        && pass || fail "sheets-legible-$deck-$s-$lang" "$(grep -v '^[0-9]* sheets' "$cli_tmp/check.out" | head -4)"
+      if [ "$lang" = ru ]; then
+        python3 "$sheets_check" english "$svg" >"$cli_tmp/check.out" 2>&1 && pass \
+          || fail "sheets-english-$deck-$s" "$(head -3 "$cli_tmp/check.out")"
+      fi
+      # the title block: the student, Лист N of M, no deck path
+      n_total=$(echo "$expected" | wc -w)
+      grep -q ">Иванов И.И.<" "$svg" && grep -q "Листов $n_total<\|Sheets $n_total<" "$svg" \
+        && ! grep -q ">[^<]*$deck.nml[^<]*</text>" <(grep -v 'class="subtitle"' "$svg" | grep -v "deck\|файл") \
+        && pass || fail "sheets-title-block-$deck-$s-$lang" "no student, wrong sheet count or a deck path in the block"
+    done
+    if [ "$s" = dynamics ] || [ -s "$dir/dynamics.svg" ]; then
+      svg="$dir/dynamics.svg"
+      missing=""
+      if [ "$lang" = ru ]; then words="Приведенные моменты|Работы сил|Приведенный момент инерции|Мерцалова|Истинная угловая скорость|Угловое ускорение|Диаграмма Виттенбауэра|Маховик \(диск\)|Масштаб"
+      else words="Reduced moments|Work of the forces|Reduced moment of inertia|Merzalov|True speed|Angular acceleration|Wittenbauer|Flywheel \(a disc\)|Scale"; fi
+      IFS='|' read -r -a heads <<<"$words"
+      for w in "${heads[@]}"; do grep -Eq ">$w" "$svg" || grep -Eq "$w" "$svg" || missing="$missing '$w'"; done
+      grep -q ">1:[0-9.]*<" "$svg" || missing="$missing scale-1:n"
+      grep -q "μφ = 1.5 " "$svg" || missing="$missing mu-phi"
+      [ -z "$missing" ] && pass || fail "sheets-dynamics-headings-$deck-$lang" "missing:$missing"
+    fi
+  done
+done
+
+# the kinematics sheet's structure is kinetostat structure's (W, the formula), its output
+# link's diagrams and its values table the run's
+dir="$cli_tmp/sheets_class3_en"
+formula=$("$KINETOSTAT" structure data/class3.nml | sed -n 's/^ STRUCTURE FORMULA: //p' | sed 's/ -> / → /g')
+python3 - "$dir/kinematics.svg" "$formula" <<'PY' && pass || fail sheets-kinematics-structure "the structure or W differs"
+import re, sys
+plain = re.sub(r"<[^>]+>", "", open(sys.argv[1], encoding="utf-8").read())
+assert "structure formula: " + sys.argv[2] in plain, sys.argv[2]
+assert "W = 3n − 2p5 − p4 = 1" in plain, "W"
+assert "Displacement of link" in plain or "Angle of link" in plain, "output link"
+PY
+
+# the figures the dynamics sheet prints are the run's (the flywheel's J, D, the Wittenbauer
+# segment k-l = delta omega_m^2 J_fw / mu_T)
+dir="$cli_tmp/sheets_pr3207_flywheel_en"
+python3 - "$dir/dynamics.svg" <<'PY' && pass || fail sheets-dynamics-figures "the sheet's numbers differ from the run's"
+import re, sys
+t = open(sys.argv[1], encoding="utf-8").read()
+plain = re.sub(r"<[^>]+>", "", t)
+assert "k–l = 123.2 mm" in plain, "k-l"  # 0.04 * 7.5^2 * 273.8 J / 5 J/mm
+assert "= 274 kg·m²" in plain
+assert "⌀1123" in plain and ">225<" in t, "disc dimensions"
+PY
+
+# --paper, --designation (графа 2 and 26, turned 180 deg), --sheet-numbers, --at
+dir="$cli_tmp/sheets_opts"
+rm -rf "$dir"
+run_ks sheets data/pr3207_flywheel.nml -o "$dir" --paper A2 --designation "ТММ.КП.07.003" --sheet-numbers 4,5,6 --at 7
+if [ "$rc" -eq 0 ] && sheets_iso "$dir/dynamics.svg" 594.00 420.00 >/dev/null 2>&1 \
+  && sheets_iso "$dir/kinetostatics.svg" 594.00 420.00 >/dev/null 2>&1 \
+  && [ "$(grep -c '>ТММ.КП.07.003<' "$dir/dynamics.svg")" = 2 ] && grep -q 'rotate(180' "$dir/dynamics.svg" \
+  && grep -q '>Sheet 6<' "$dir/dynamics.svg" && grep -q '>Sheet 5<' "$dir/kinetostatics.svg" \
+  && grep -q '>Sheet 4<' "$dir/kinematics.svg" \
+  && grep -q '>Sheets 3<' "$dir/kinetostatics.svg" && grep -q 'step 7 of 361' "$dir/kinetostatics.svg" \
+  && python3 "$sheets_check" labels --lines "$dir/dynamics.svg" "$dir/kinetostatics.svg" >"$cli_tmp/check.out" 2>&1; then pass
+else fail sheets-options "exit $rc $(head -c 300 "$err") $(head -3 "$cli_tmp/check.out" 2>/dev/null)"; fi
+# the default position: the step of the largest |M1|
+run_ks data/assur_slider_crank.nml --format summary
+row=$(python3 - "$out" <<'PY'
+import csv, sys
+r = list(csv.DictReader(open(sys.argv[1])))[0]
+mx, mn = float(r["M1_max"]), float(r["M1_min"])
+print(r["M1_max_at"] if abs(mx) >= abs(mn) else r["M1_min_at"])
+PY
+)
+dir="$cli_tmp/sheets_at"
+run_ks sheets data/assur_slider_crank.nml -o "$dir"
+step=$(python3 -c "print(int(round(float('$row') / 30)) + 1)")
+grep -q "step $step of 13" "$dir/kinetostatics.svg" && pass || fail sheets-default-at "not at step $step (phi1 = $row deg)"
+
+# all or nothing: a failing deck writes nothing and leaves an earlier run's sheets; a deck
+# without a cycle removes the earlier dynamics sheet
+dir="$cli_tmp/sheets_aon"
+rm -rf "$dir"
+run_ks sheets data/pr3207_flywheel.nml -o "$dir"
+cp "$dir/dynamics.svg" "$cli_tmp/sheets_before.svg"
+run_ks sheets data/pr3207_flywheel.nml -o "$dir" --set l_ab=10
+if [ "$rc" -ne 0 ] && cmp -s "$dir/dynamics.svg" "$cli_tmp/sheets_before.svg" && [ "$(ls -A "$dir" | grep -c tmp)" = 0 ]; then pass
+else fail sheets-all-or-nothing "exit $rc; the earlier sheets changed or temporaries left"; fi
+run_ks sheets data/pr3207.nml -o "$dir"
+if [ "$rc" -eq 0 ] && [ ! -e "$dir/dynamics.svg" ] && [ ! -e "$dir/dynamics.dxf" ] && [ ! -e "$dir/dynamics.pdf" ] \
+  && [ -s "$dir/kinetostatics.svg" ]; then pass
+else fail sheets-stale-removed "exit $rc; $(ls "$dir")"; fi
+
+# usage errors
+expect_exit sheets-no-dir 1 sheets data/pr3207.nml
+expect_exit sheets-paper 1 sheets data/pr3207.nml -o "$cli_tmp/x" --paper A0
+expect_exit sheets-numbers 1 sheets data/pr3207.nml -o "$cli_tmp/x" --sheet-numbers 1,x
+expect_exit sheets-numbers-count 1 sheets data/pr3207_flywheel.nml -o "$cli_tmp/x" --sheet-numbers 1,2
+expect_exit sheets-format 1 sheets data/pr3207.nml -o "$cli_tmp/x" --format csv
+expect_exit sheets-paper-without 1 data/pr3207.nml --paper A3
+expect_exit sheets-gears 1 sheets data/gears_reducer.nml -o "$cli_tmp/x"
+
+# the designation and the student are a user's strings: every sheet well formed with hostile
+# ones (tools/output_check.py: XML, the DXF's group-code pairs in ASCII)
+dir="$cli_tmp/sheets_hostile"
+rm -rf "$dir"
+run_ks sheets data/pr3207_flywheel.nml -o "$dir" --designation $'<b>&amp;"x\'\x01\n0\nEOF' --student $'<i>\n999'
+ok=1
+[ "$rc" -eq 0 ] || ok=0
+for f in "$dir"/*.svg; do python3 "$root/tools/output_check.py" xml "$f" --forbid "<b>" --forbid "<i>" >/dev/null 2>&1 || ok=0; done
+for f in "$dir"/*.dxf; do python3 "$root/tools/output_check.py" dxf "$f" >/dev/null 2>&1 || ok=0; done
+[ "$ok" = 1 ] && pass || fail sheets-hostile-strings "exit $rc or a sheet not well formed"
