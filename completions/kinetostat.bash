@@ -17,6 +17,7 @@ _kinetostat() {
     balance) opts="-o --output --method --fraction --lang --max-deck-size -q --quiet" ;;
     structure) opts="--lang -o --output --max-deck-size -q --quiet" ;;
     contour) opts="--set -o --output --max-deck-size -q --quiet" ;;
+    sheets) opts="-o --output --paper --lang --at --designation --sheet-numbers --student --group --variant --set --max-deck-size -q --quiet" ;;
     *) command=""
        opts="--set -o --output --format --pairs --at --plans --lang --kinematics --frame --shaking --student --group --variant --max-deck-size --allow-selfcheck-failure -q --quiet --strict --version" ;;
   esac
@@ -28,15 +29,18 @@ _kinetostat() {
     --frame) COMPREPLY=($(compgen -W "global link" -- "$cur")); return ;;
     --lang) COMPREPLY=($(compgen -W "en ru" -- "$cur")); return ;;
     --method) COMPREPLY=($(compgen -W "full crank partial" -- "$cur")); return ;;
-    -o|--output) COMPREPLY=($(compgen -f -- "$cur")); return ;;
+    --paper) COMPREPLY=($(compgen -W "A1 A2 A3 A4" -- "$cur")); return ;;
+    -o|--output)
+      if [ "$command" = sheets ]; then COMPREPLY=($(compgen -d -- "$cur")); else COMPREPLY=($(compgen -f -- "$cur")); fi
+      return ;;
     template) COMPREPLY=($(compgen -W "$kinds" -- "$cur")); return ;;
-    --rtol|--atol|--set|--pairs|--at|--vary|--part|--jobs|--max-deck-size|--fraction|--student|--group|--variant)
+    --rtol|--atol|--set|--pairs|--at|--vary|--part|--jobs|--max-deck-size|--fraction|--student|--group|--variant|--designation|--sheet-numbers)
       COMPREPLY=(); return ;;
   esac
   if [[ "$cur" == -* ]]; then
     COMPREPLY=($(compgen -W "$opts --help" -- "$cur"))
   elif [ "$COMP_CWORD" -eq 1 ]; then
-    COMPREPLY=($(compgen -W "sweep template diff balance structure contour -" -- "$cur") \
+    COMPREPLY=($(compgen -W "sweep template diff balance structure contour sheets -" -- "$cur") \
       $(compgen -f -X '!*.nml' -- "$cur") $(compgen -d -- "$cur"))
   elif [ "$command" = diff ]; then
     COMPREPLY=($(compgen -f -X '!*.@(table|csv|txt|out)' -- "$cur") $(compgen -d -- "$cur"))

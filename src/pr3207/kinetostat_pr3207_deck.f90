@@ -208,7 +208,7 @@ contains
 
     ! machine dynamics: a steady cycle needs one whole turn and the load at any crank angle
     call read_dynamics_settings(ctx, dynamics, delta, j_rotor, j_flywheel, omega1, deck%dyn, error, &
-      md_table, flywheel_density, flywheel_width_ratio)
+      md_table=md_table, flywheel_density=flywheel_density, flywheel_width_ratio=flywheel_width_ratio)
     if (allocated(error)) return
     if (deck%dyn%mode >= dynamics_steady) then
       call require_one_turn(ctx, dphi, deck%n, error); if (allocated(error)) return

@@ -161,7 +161,7 @@ contains
 
     ! machine dynamics (a steady cycle takes f5 as a table over the crank angle: below)
     call read_dynamics_settings(ctx, dynamics, delta, j_rotor, j_flywheel, omega1, deck%dyn, error, &
-      md_table, flywheel_density, flywheel_width_ratio)
+      md_table=md_table, flywheel_density=flywheel_density, flywheel_width_ratio=flywheel_width_ratio)
     if (allocated(error)) return
 
     deck%p = sixbar_params_t(a=a, b=b, l1=l1, lam2=lam2, lam_s2=lam_s2, lam3=lam3, lam_de=lam_de, &
