@@ -3,7 +3,9 @@
 !> DIR/kinematics (the structure, the mechanism at the position with a trajectory, the output
 !> link's diagrams, the values), DIR/kinetostatics (the mechanism, the plans, Zhukovsky's lever and the force polygons at
 !> the position --at K, by default the step of the largest |effort| of the first drive) and,
-!> with a steady cycle, DIR/dynamics (the machine dynamics and the flywheel). Every sheet is
+!> with a steady cycle, DIR/dynamics (the machine dynamics and the flywheel); of a design deck
+!> its one sheet: DIR/gears (&gear_geometry: the meshing drawing and the blocking contour),
+!> DIR/planetary (&planetary_synthesis) or DIR/cam (&cam_profile). Every sheet is
 !> computed before any file is written (an error writes nothing); each file is then written
 !> through a temporary beside it and renamed, and the sheets of an earlier run that this deck
 !> no longer makes are removed from DIR.
@@ -25,8 +27,13 @@ module kinetostat_sheets
   private
   public :: write_course_sheets, sheet_names, parse_sheet_numbers
 
-  !> The sheets' file stems, in the course's order.
-  character(*), parameter :: sheet_names(*) = [character(len=13) :: "kinematics", "kinetostatics", "dynamics"]
+  !> The sheets' file stems, in the course's order: a linkage's three, then the design kinds'
+  !> (&gear_geometry, &planetary_synthesis, &cam_profile: one sheet each).
+  character(*), parameter :: sheet_names(*) = [character(len=13) :: "kinematics", "kinetostatics", "dynamics", &
+    "gears", "planetary", "cam"]
+  !> The design kinds, in the order of their sheets in sheet_names (from the fourth).
+  character(*), parameter :: design_kinds(*) = [character(len=19) :: "gear_geometry", "planetary_synthesis", &
+    "cam_profile"]
   !> The files of a sheet.
   character(*), parameter :: sheet_suffixes(*) = [character(len=4) :: ".svg", ".dxf", ".pdf"]
 
@@ -81,23 +88,36 @@ contains
     type(text_buffer_t) :: files(2 * size(sheet_names))
     character(len=64) :: names(2 * size(sheet_names))
     logical :: made(size(sheet_names)), dynamics
-    integer :: k_at, i, n, s, count_made, n_files
+    integer :: k_at, i, n, s, count_made, n_files, design
     character(len=256) :: message
+    character(len=:), allocatable :: group
+    type(deck_source_t) :: source
     integer :: stat
 
-    ! the run once: its effort's extreme step (the default --at) and whether it has a cycle
-    o = options
-    o%format = format_summary
-    o%at_step = 0
-    call run_one(path, o, table, scratch, error)
+    call load_deck(path, source, error)
     if (allocated(error)) return
-    k_at = options%at_step
-    if (k_at == 0) k_at = effort_step(table)
-    dynamics = table%column_index("dT") > 0
+    call read_group_name(source, group, error)
+    if (allocated(error)) return
+    design = design_index(group)
     made = .false.
-    made(1) = .true.
-    made(2) = .true.
-    made(3) = dynamics
+    k_at = 0
+    if (design > 0) then
+      ! a design deck: its one sheet
+      made(3 + design) = .true.
+    else
+      ! the run once: its effort's extreme step (the default --at) and whether it has a cycle
+      o = options
+      o%format = format_summary
+      o%at_step = 0
+      call run_one(path, o, table, scratch, error)
+      if (allocated(error)) return
+      k_at = options%at_step
+      if (k_at == 0) k_at = effort_step(table)
+      dynamics = table%column_index("dT") > 0
+      made(1) = .true.
+      made(2) = .true.
+      made(3) = dynamics
+    end if
     count_made = count(made)
     if (size(numbers) > 0 .and. size(numbers) /= count_made) then
       call fatal_error(error, exit_usage, "--sheet-numbers: "//path//" makes "//int_str(count_made)//" sheets, "// &
@@ -131,6 +151,12 @@ contains
         call add_file(trim(sheet_names(s))//".svg")
         o%format = format_dxf
         o%plans = .true.
+        call add_file(trim(sheet_names(s))//".dxf")
+      case (4:)
+        ! a design's sheet (the gear pair, the planetary train, the cam; --at: the cam's position)
+        o%format = format_svg
+        call add_file(trim(sheet_names(s))//".svg")
+        o%format = format_dxf
         call add_file(trim(sheet_names(s))//".dxf")
       case default
         ! the dynamics sheet (3)
@@ -211,9 +237,11 @@ contains
         known_kinds()//")")
       return
     end if
-    if (.not. mech%force_sheet .or. group == "gears" .or. group == "cam") then
+    if ((.not. mech%force_sheet .and. design_index(group) == 0) .or. group == "gears" .or. &
+        group == "cam") then
       call fatal_error(error, exit_usage, "sheets: "//source%path//" is &"//group//": the course sheets are drawn "// &
-        "for linkages (pr3207, pr3050, sixbar, assur, linkage)")
+        "for linkages (pr3207, pr3050, sixbar, assur, linkage) and the designs (gear_geometry, "// &
+        "planetary_synthesis, cam_profile)")
       return
     end if
     if (allocated(options%overrides)) then
@@ -224,6 +252,15 @@ contains
       call run_mechanism(mech, group, source, options, table, out, error)
     end if
   end subroutine run_one
+
+  !> The place of deck kind `group` in design_kinds (0: not a design kind).
+  pure integer function design_index(group) result(k)
+    character(*), intent(in) :: group
+    do k = 1, size(design_kinds)
+      if (trim(design_kinds(k)) == group) return
+    end do
+    k = 0
+  end function design_index
 
   !> The step of the largest |effort| of the first drive (the table's driver column; the
   !> first step without one).

@@ -134,6 +134,19 @@ if [ "$rc" -eq 0 ] && [ ! -e "$dir/dynamics.svg" ] && [ ! -e "$dir/dynamics.dxf"
   && [ -s "$dir/kinetostatics.svg" ]; then pass
 else fail sheets-stale-removed "exit $rc; $(ls "$dir")"; fi
 
+# a design deck: its one sheet (gears, planetary, cam) as SVG and DXF, the linkage's sheets of
+# an earlier run in the same directory removed; --at puts the cam's follower
+run_ks sheets data/cam_profile_roller.nml -o "$dir" --at 13
+if [ "$rc" -eq 0 ] && [ -s "$dir/cam.svg" ] && [ -s "$dir/cam.dxf" ] && [ ! -e "$dir/kinetostatics.svg" ] \
+  && [ ! -e "$dir/kinematics.dxf" ] && grep -q 'follower at φ = 60.0 deg' "$dir/cam.svg"; then pass
+else fail sheets-design-cam "exit $rc; $(ls "$dir")"; fi
+for d in gear_geometry_auto:gears planetary_synthesis:planetary; do
+  run_ks sheets "data/${d%%:*}.nml" -o "$dir"
+  if [ "$rc" -eq 0 ] && [ -s "$dir/${d##*:}.svg" ] && [ -s "$dir/${d##*:}.dxf" ] && [ ! -e "$dir/cam.svg" ] \
+    && xmllint --noout "$dir/${d##*:}.svg" 2>/dev/null; then pass
+  else fail "sheets-design-${d##*:}" "exit $rc; $(ls "$dir")"; fi
+done
+
 # usage errors
 expect_exit sheets-no-dir 1 sheets data/pr3207.nml
 expect_exit sheets-paper 1 sheets data/pr3207.nml -o "$cli_tmp/x" --paper A0
