@@ -484,17 +484,20 @@ contains
     type(sheet_t) :: sheet
     character(len=160), allocatable :: lines(:)
     integer :: k, i
-    ! the table holds the rows the drawing needs (kinetostat_row_keeper): find row --at K
-    k = findloc(table%row_numbers, options%at_step, dim=1)
-    if (k == 0) then
-      call fatal_error(error, exit_usage, "--at "//int_str(options%at_step)//": "//table%deck//" has "// &
-        int_str(table%run_rows())//" "//table%row_name//"s (1.."//int_str(table%run_rows())//")")
-      return
-    end if
+    ! a mechanism without a sketch keeps no rows for a drawing: refused before its rows are
+    ! looked up
     call mech%sketch(topo)
     if (.not. topo%available) then
       call fatal_error(error, exit_usage, table%deck//": &"//table%mechanism//": --at: this mechanism is not "// &
         "drawn (only linkages are); --format svg without --at shows its forces")
+      return
+    end if
+    ! the table holds the rows the drawing needs (kinetostat_row_keeper): find row --at K
+    k = 0
+    if (allocated(table%row_numbers)) k = findloc(table%row_numbers, options%at_step, dim=1)
+    if (k == 0) then
+      call fatal_error(error, exit_usage, "--at "//int_str(options%at_step)//": "//table%deck//" has "// &
+        int_str(table%run_rows())//" "//table%row_name//"s (1.."//int_str(table%run_rows())//")")
       return
     end if
     call drawing_from_sketch(topo, table, k, drawing, error)
