@@ -209,11 +209,11 @@ contains
     real(wp) :: d
     !> Machine dynamics variables (see kinetostat_dynamics_deck): the mode, delta, the rotor
     !> and the flywheel (kg*m^2; kg with a sliding drive), the cycle (deg), the driving-moment
-    !> table (pairs deg, N*m).
+    !> table (pairs deg, N*m), the flywheel's disc (density kg/m^3, width over diameter).
     character(len=text_bytes * 16) :: dynamics
-    real(wp) :: delta, j_rotor, j_flywheel, cycle, md_table(md_table_capacity)
+    real(wp) :: delta, j_rotor, j_flywheel, cycle, md_table(md_table_capacity), flywheel_density, flywheel_width_ratio
     namelist /linkage/ title, frame, g, gravity_angle, n, link, pair, drive, force, moment, step_values, &
-      dynamics, delta, j_rotor, j_flywheel, cycle, md_table
+      dynamics, delta, j_rotor, j_flywheel, cycle, md_table, flywheel_density, flywheel_width_ratio
 
     call begin_group(source, group_name, ctx, error)
     if (allocated(error)) return
@@ -221,6 +221,7 @@ contains
     title = ""
     frame = 0.0_wp; g = unset; gravity_angle = unset; n = unset
     dynamics = ""; delta = unset; j_rotor = unset; j_flywheel = unset; cycle = unset; md_table = unset
+    flywheel_density = unset; flywheel_width_ratio = unset
     allocate (drive(max_drives))
     capacity = deck_array_capacities(source, ctx%group, [character(len=11) :: "step_values"])
     allocate (step_values(capacity(1)), source=unset, stat=stat)
@@ -532,7 +533,8 @@ contains
         if (allocated(error)) return
       end if
       call read_dynamics_settings(ctx, dynamics, delta, j_rotor, j_flywheel, optional_default(drive(1)%omega, 0.0_wp), &
-        deck%dyn, error, md_table, cycle)
+        deck%dyn, error, md_table=md_table, cycle=cycle, flywheel_density=flywheel_density, &
+        flywheel_width_ratio=flywheel_width_ratio)
       if (allocated(error)) return
       if (deck%dyn%mode < dynamics_steady) return
       call require_rule(ctx, "drive(1)%values", .not. deck%listed(1), "a steady cycle needs the drive's law by "// &

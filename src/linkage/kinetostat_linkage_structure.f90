@@ -14,27 +14,15 @@ module kinetostat_linkage_structure
   use kinetostat_text, only: int_str
   use kinetostat_labels, only: lang_ru, echo_name
   use kinetostat_linkage, only: linkage_t, linkage_unit_t, pair_r, pair_row, drive_row
+  use kinetostat_plans_structure, only: roman
   implicit none
   private
-  public :: analyse_structure, structure_lines, structure_formula, roman
+  public :: analyse_structure, structure_lines, structure_formula
 
   !> Largest unit searched (links).
   integer, parameter :: max_unit_links = 8
 
 contains
-
-  !> Roman numeral of a class 1..8 ("?" for 0).
-  pure function roman(class) result(text)
-    !> Class.
-    integer, intent(in) :: class
-    character(len=:), allocatable :: text
-    character(len=4), parameter :: numerals(8) = [character(len=4) :: "I", "II", "III", "IV", "V", "VI", "VII", "VIII"]
-    if (class >= 1 .and. class <= 8) then
-      text = trim(numerals(class))
-    else
-      text = "?"
-    end if
-  end function roman
 
   !> W, the drive count check and the decomposition into units (mech%units); `ctx` names the
   !> deck and group in messages.

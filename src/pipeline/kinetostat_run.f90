@@ -34,7 +34,7 @@ module kinetostat_run
   use kinetostat_plans_json, only: write_plans_json
   use kinetostat_plans_draw, only: draw_plans_sheet
   use kinetostat_error, only: exit_usage
-  use kinetostat_labels, only: lang_en
+  use kinetostat_labels, only: lang_en, lang_ru
   use kinetostat_override, only: override_t, mark_overrides
   use kinetostat_summary, only: coarse_step_warning, summary_header, summary_row, tally_rows, column_stats_t, &
     column_stats, drive_work, summarized
@@ -575,9 +575,12 @@ contains
     if (allocated(error)) return
     if (options%structure) then
       call structure_lines_of(topo, drawing, table, k, options%lang, lines)
-      call out%put(" DECK: "//table_text(table%deck))
-      if (allocated(table%subtitle)) then
-        if (len_trim(table%subtitle) > 0) call out%put(" TITLE: "//table_text(trim(table%subtitle)))
+      ! the Russian analysis in the course's words alone (as a &linkage deck's own)
+      if (options%lang /= lang_ru) then
+        call out%put(" DECK: "//table_text(table%deck))
+        if (allocated(table%subtitle)) then
+          if (len_trim(table%subtitle) > 0) call out%put(" TITLE: "//table_text(trim(table%subtitle)))
+        end if
       end if
       do i = 1, size(lines)
         call out%put(" "//trim(lines(i)))

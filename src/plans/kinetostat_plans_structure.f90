@@ -16,7 +16,7 @@ module kinetostat_plans_structure
   use kinetostat_plans_groups, only: plan_groups
   implicit none
   private
-  public :: structure_lines_of
+  public :: structure_lines_of, roman
 
   !> Length of a line.
   integer, parameter :: line_len = 160
@@ -161,7 +161,7 @@ contains
     end function pair_kind
   end subroutine structure_lines_of
 
-  !> A class in Roman numerals ("?" outside 1..8).
+  !> A class in Roman numerals ("?" outside 1..8; the structure formula's I, II, III).
   pure function roman(class) result(text)
     integer, intent(in) :: class
     character(len=:), allocatable :: text
