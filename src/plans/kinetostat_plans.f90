@@ -27,9 +27,52 @@ module kinetostat_plans
   use kinetostat_plans_lever, only: lever_of
   implicit none
   private
-  public :: build_plans, solve_fields, point_images
+  public :: build_plans, solve_fields, point_images, field_topology_t, field_topology
+
+  !> What solve_fields and point_images read from the topology and the table's names for the
+  !> points of a drawing (the same at every row of a run: found once when many rows are solved).
+  type :: field_topology_t
+    !> incident(ip, i): point ip is a point of link i (the link lists it, not as a sliding
+    !> contact).
+    logical, allocatable :: incident(:, :)
+    !> pivot(ip): point ip is a pivot (at rest).
+    logical, allocatable :: pivot(:)
+    !> com_link(ip): for a centre of mass S<i> with an ax_S<i> column, the link i (else 0).
+    integer, allocatable :: com_link(:)
+    !> com_cols(:, ip): its ax_ and ay_ columns (0: none).
+    integer, allocatable :: com_cols(:, :)
+  end type field_topology_t
 
 contains
+
+  !> The field topology of `drawing`'s points (field_topology_t).
+  pure function field_topology(topo, drawing, table) result(t)
+    type(sketch_t), intent(in) :: topo
+    type(drawing_t), intent(in) :: drawing
+    type(step_table_t), intent(in) :: table
+    type(field_topology_t) :: t
+    integer :: np, nl, ip, i
+    character(len=16) :: pname
+    np = size(drawing%points)
+    nl = size(topo%links)
+    allocate (t%incident(np, nl), t%pivot(np), t%com_link(np), t%com_cols(2, np))
+    t%com_link = 0
+    t%com_cols = 0
+    do ip = 1, np
+      pname = drawing%points(ip)%name
+      do i = 1, nl
+        t%incident(ip, i) = lists(topo, i, trim(pname))
+        if (t%incident(ip, i)) t%incident(ip, i) = .not. sliding_on(topo, i, trim(pname))
+      end do
+      t%pivot(ip) = .false.
+      if (allocated(topo%pivots)) t%pivot(ip) = any(topo%pivots == pname)
+      if (pname(1:1) == "S") then
+        i = link_index(topo, trim(pname(2:)))
+        t%com_cols(:, ip) = [table%column_index("ax_"//trim(pname)), table%column_index("ay_"//trim(pname))]
+        if (i > 0 .and. t%com_cols(1, ip) > 0) t%com_link(ip) = i
+      end if
+    end do
+  end function field_topology
 
   !> The plans of row `k` from the topology, the drawing (with its forces) and the table.
   pure subroutine build_plans(topo, drawing, table, k, plans)
@@ -69,7 +112,7 @@ contains
   end subroutine build_plans
 
   !> Solve the links' unknown terms (v0 or a0) from the pair equations, least squares.
-  pure subroutine solve_fields(topo, drawing, table, k, omega, eps, accel, v0, c, residual)
+  pure subroutine solve_fields(topo, drawing, table, k, omega, eps, accel, v0, c, residual, known)
     type(sketch_t), intent(in) :: topo
     type(drawing_t), intent(in) :: drawing
     type(step_table_t), intent(in) :: table
@@ -80,37 +123,39 @@ contains
     real(wp), intent(in) :: v0(:, :)
     real(wp), allocatable, intent(out) :: c(:, :)
     real(wp), intent(out) :: residual
+    !> field_topology(topo, drawing, table), when the caller keeps it for many rows.
+    type(field_topology_t), intent(in), optional :: known
+    type(field_topology_t) :: t
     real(wp), allocatable :: a(:, :), b(:), x(:)
     type(slide_t), allocatable :: slides(:)
     integer :: nl, i, j, ip
-    real(wp) :: p(2)
-    character(len=16) :: pname
+    real(wp) :: p(2), ay
     nl = size(topo%links)
+    if (present(known)) then
+      t = known
+    else
+      t = field_topology(topo, drawing, table)
+    end if
     allocate (a(0, 2 * nl), b(0))
     do ip = 1, size(drawing%points)
-      pname = drawing%points(ip)%name
       p = drawing%points(ip)%p
       do i = 1, nl
-        if (.not. lists(topo, i, trim(pname))) cycle
-        if (sliding_on(topo, i, trim(pname))) cycle
+        if (.not. t%incident(ip, i)) cycle
         ! a pivot: at rest
-        if (allocated(topo%pivots)) then
-          if (any(topo%pivots == pname)) call append_rows(a, b, joint_rows(i, 0, [1.0_wp, 0.0_wp, 0.0_wp, 1.0_wp]), -own(i, p))
-        end if
+        if (t%pivot(ip)) call append_rows(a, b, joint_rows(i, 0, [1.0_wp, 0.0_wp, 0.0_wp, 1.0_wp]), -own(i, p))
         ! a joint with every later link listing the point
         do j = i + 1, nl
-          if (.not. lists(topo, j, trim(pname))) cycle
-          if (sliding_on(topo, j, trim(pname))) cycle
+          if (.not. t%incident(ip, j)) cycle
           call append_rows(a, b, joint_rows(i, j, [1.0_wp, 0.0_wp, 0.0_wp, 1.0_wp]), own(j, p) - own(i, p))
         end do
       end do
       ! centres of mass with given accelerations
-      if (accel .and. pname(1:1) == "S") then
-        i = link_index(topo, trim(pname(2:)))
-        if (i > 0 .and. table%column_index("ax_"//trim(pname)) > 0) then
-          call append_rows(a, b, joint_rows(i, 0, [1.0_wp, 0.0_wp, 0.0_wp, 1.0_wp]), [column_value(table, "ax_"//trim(pname), k), &
-            column_value(table, "ay_"//trim(pname), k)] - own(i, p))
-        end if
+      if (accel .and. t%com_link(ip) > 0) then
+        i = t%com_link(ip)
+        ay = 0.0_wp
+        if (t%com_cols(2, ip) > 0) ay = table%rows(t%com_cols(2, ip), k)
+        call append_rows(a, b, joint_rows(i, 0, [1.0_wp, 0.0_wp, 0.0_wp, 1.0_wp]), [table%rows(t%com_cols(1, ip), k), &
+          ay] - own(i, p))
       end if
     end do
     ! sliders: guides (on a link, or on the frame) and blocks sliding along a link
@@ -166,18 +211,26 @@ contains
 
   !> The image of every named point on a plan: the field of a link listing it (not as a
   !> sliding contact); points no link lists are left out.
-  pure subroutine point_images(topo, drawing, omega, eps, c, accel, images)
+  pure subroutine point_images(topo, drawing, omega, eps, c, accel, images, known)
     type(sketch_t), intent(in) :: topo
     type(drawing_t), intent(in) :: drawing
     real(wp), intent(in) :: omega(:), eps(:), c(:, :)
     logical, intent(in) :: accel
     type(plan_vector_t), allocatable, intent(out) :: images(:)
+    !> field_topology(topo, drawing, table), when the caller keeps it for many rows.
+    type(field_topology_t), intent(in), optional :: known
     integer :: ip, i
+    logical :: incident
     allocate (images(0))
     do ip = 1, size(drawing%points)
       do i = 1, size(topo%links)
-        if (.not. lists(topo, i, trim(drawing%points(ip)%name))) cycle
-        if (sliding_on(topo, i, trim(drawing%points(ip)%name))) cycle
+        if (present(known)) then
+          incident = known%incident(ip, i)
+        else
+          incident = lists(topo, i, trim(drawing%points(ip)%name))
+          if (incident) incident = .not. sliding_on(topo, i, trim(drawing%points(ip)%name))
+        end if
+        if (.not. incident) cycle
         images = [images, plan_vector_t(drawing%points(ip)%name, &
           field(c(:, i), omega(i), eps(i), drawing%points(ip)%p, accel))]
         exit

@@ -10,9 +10,9 @@ module kinetostat_point_motion
   use kinetostat_error, only: error_t
   use kinetostat_step_table, only: step_table_t
   use kinetostat_sketch, only: sketch_t
-  use kinetostat_drawing, only: drawing_t, column_value, point_pivot, point_com, points_from_sketch
+  use kinetostat_drawing, only: drawing_t, point_pivot, point_com, points_from_sketch
   use kinetostat_plans_base, only: plan_vector_t
-  use kinetostat_plans, only: solve_fields, point_images
+  use kinetostat_plans, only: solve_fields, point_images, field_topology_t, field_topology
   implicit none
   private
   public :: add_point_motion
@@ -29,28 +29,53 @@ contains
     !> A named point without position columns.
     type(error_t), allocatable, intent(out) :: error
     type(drawing_t) :: drawing
+    type(field_topology_t) :: known
     type(plan_vector_t), allocatable :: v(:), a(:)
     real(wp), allocatable :: omega(:), eps(:), v0(:, :), a0(:, :), none(:, :)
     real(wp) :: residual
+    !> Columns found once for the block: each link's omega and eps, each point's x and y.
+    integer, allocatable :: c_omega(:), c_eps(:), cx(:), cy(:), image(:)
     integer :: k, i, nl, ip, iv
     if (.not. topo%available .or. .not. allocated(topo%links)) return
+    if (table%row_count() == 0) return
     nl = size(topo%links)
-    allocate (omega(nl), eps(nl), none(2, nl))
+    allocate (omega(nl), eps(nl), none(2, nl), c_omega(nl), c_eps(nl))
     none = 0.0_wp
+    do i = 1, nl
+      c_omega(i) = table%column_index("omega"//topo%links(i)%name)
+      c_eps(i) = table%column_index("eps"//topo%links(i)%name)
+    end do
+    ! the points (the same at every row: the topology's) and where their positions are
+    call points_from_sketch(topo, table, 1, drawing, error)
+    if (allocated(error)) return
+    allocate (cx(size(drawing%points)), cy(size(drawing%points)), image(size(drawing%points)))
+    do ip = 1, size(drawing%points)
+      cx(ip) = table%column_index("x_"//trim(drawing%points(ip)%name))
+      cy(ip) = table%column_index("y_"//trim(drawing%points(ip)%name))
+    end do
+    known = field_topology(topo, drawing, table)
     do k = 1, table%row_count()
-      call points_from_sketch(topo, table, k, drawing, error)
-      if (allocated(error)) return
-      do i = 1, nl
-        omega(i) = column_value(table, "omega"//topo%links(i)%name, k)
-        eps(i) = column_value(table, "eps"//topo%links(i)%name, k)
+      do ip = 1, size(drawing%points)
+        drawing%points(ip)%p = [table%rows(cx(ip), k), table%rows(cy(ip), k)]
       end do
-      call solve_fields(topo, drawing, table, k, omega, eps, .false., none, v0, residual)
-      call solve_fields(topo, drawing, table, k, omega, eps, .true., v0, a0, residual)
-      call point_images(topo, drawing, omega, eps, v0, .false., v)
-      call point_images(topo, drawing, omega, eps, a0, .true., a)
+      do i = 1, nl
+        omega(i) = 0.0_wp
+        if (c_omega(i) > 0) omega(i) = table%rows(c_omega(i), k)
+        eps(i) = 0.0_wp
+        if (c_eps(i) > 0) eps(i) = table%rows(c_eps(i), k)
+      end do
+      call solve_fields(topo, drawing, table, k, omega, eps, .false., none, v0, residual, known)
+      call solve_fields(topo, drawing, table, k, omega, eps, .true., v0, a0, residual, known)
+      call point_images(topo, drawing, omega, eps, v0, .false., v, known)
+      call point_images(topo, drawing, omega, eps, a0, .true., a, known)
+      if (k == 1) then
+        do ip = 1, size(drawing%points)
+          image(ip) = named_image(v, drawing%points(ip)%name)
+        end do
+      end if
       do ip = 1, size(drawing%points)
         associate (pt => drawing%points(ip))
-          iv = named_image(v, pt%name)
+          iv = image(ip)
           if (iv == 0) cycle
           if (pt%kind == point_pivot) then
             call table%put_velocity(k, trim(pt%name), [0.0_wp, 0.0_wp])
