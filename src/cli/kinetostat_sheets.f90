@@ -28,12 +28,9 @@ module kinetostat_sheets
   public :: write_course_sheets, sheet_names, parse_sheet_numbers
 
   !> The sheets' file stems, in the course's order: a linkage's three, then the design kinds'
-  !> (&gear_geometry, &planetary_synthesis, &cam_profile: one sheet each).
+  !> (each kind's mechanism_t%sheet_name: &gear_geometry, &planetary_synthesis, &cam_profile).
   character(*), parameter :: sheet_names(*) = [character(len=13) :: "kinematics", "kinetostatics", "dynamics", &
     "gears", "planetary", "cam"]
-  !> The design kinds, in the order of their sheets in sheet_names (from the fourth).
-  character(*), parameter :: design_kinds(*) = [character(len=19) :: "gear_geometry", "planetary_synthesis", &
-    "cam_profile"]
   !> The files of a sheet.
   character(*), parameter :: sheet_suffixes(*) = [character(len=4) :: ".svg", ".dxf", ".pdf"]
 
@@ -92,18 +89,23 @@ contains
     character(len=256) :: message
     character(len=:), allocatable :: group
     type(deck_source_t) :: source
+    class(mechanism_t), allocatable :: mech
     integer :: stat
 
     call load_deck(path, source, error)
     if (allocated(error)) return
     call read_group_name(source, group, error)
     if (allocated(error)) return
-    design = design_index(group)
+    ! a design kind names its one sheet (an unknown kind: run_one says so)
+    design = 0
+    call create_mechanism(group, mech)
+    if (allocated(mech)) then
+      if (allocated(mech%sheet_name)) design = sheet_index(mech%sheet_name)
+    end if
     made = .false.
     k_at = 0
-    if (design > 0) then
-      ! a design deck: its one sheet
-      made(3 + design) = .true.
+    if (design > 3) then
+      made(design) = .true.
     else
       ! the run once: its effort's extreme step (the default --at) and whether it has a cycle
       o = options
@@ -237,7 +239,7 @@ contains
         known_kinds()//")")
       return
     end if
-    if ((.not. mech%force_sheet .and. design_index(group) == 0) .or. group == "gears" .or. &
+    if ((.not. mech%force_sheet .and. .not. allocated(mech%sheet_name)) .or. group == "gears" .or. &
         group == "cam") then
       call fatal_error(error, exit_usage, "sheets: "//source%path//" is &"//group//": the course sheets are drawn "// &
         "for linkages (pr3207, pr3050, sixbar, assur, linkage) and the designs (gear_geometry, "// &
@@ -253,14 +255,14 @@ contains
     end if
   end subroutine run_one
 
-  !> The place of deck kind `group` in design_kinds (0: not a design kind).
-  pure integer function design_index(group) result(k)
-    character(*), intent(in) :: group
-    do k = 1, size(design_kinds)
-      if (trim(design_kinds(k)) == group) return
+  !> The place of the sheet called `name` in sheet_names (0: none).
+  pure integer function sheet_index(name) result(k)
+    character(*), intent(in) :: name
+    do k = 1, size(sheet_names)
+      if (trim(sheet_names(k)) == name) return
     end do
     k = 0
-  end function design_index
+  end function sheet_index
 
   !> The step of the largest |effort| of the first drive (the table's driver column; the
   !> first step without one).
