@@ -4,10 +4,9 @@ module kinetostat_cam_deck
   use kinetostat_kinds, only: wp
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str, lower
-  use kinetostat_deck, only: values_out_of_memory, &
-    begin_group, text_bytes, text_chars, max_deck_array, deck_context_t, unset_real, deck_array_capacities, &
-    deck_source_t, namelist_probe_t, require_all_set, deck_error, is_set, require_set, require_positive, &
-    require_nonnegative, require_rule, optional_default, count_values, steps_over_turn
+  use kinetostat_deck, only: values_out_of_memory, begin_group, text_bytes, text_chars, max_deck_array, &
+    deck_context_t, unset_real, deck_array_capacities, deck_source_t, namelist_probe_t, deck_error, is_set, &
+    optional_default, count_values, steps_over_turn, deck_rules_t
   use kinetostat_cam, only: cam_params_t
   implicit none
   private
@@ -94,6 +93,7 @@ contains
     integer, allocatable :: capacity(:)
     integer :: stat
     type(deck_context_t) :: ctx
+    type(deck_rules_t) :: rules
     type(namelist_probe_t) :: probe
     namelist /cam/ follower, l, l_over, f, f_cam, omega_dir, phi_start, dphi, n, theta, f2, vdir, ds_dphi
 
@@ -134,19 +134,17 @@ contains
     end select
 
     ! every missing required variable in one message
-    call require_all_set(ctx, [character(len=6) :: "l", "l_over", "f", "dphi"], &
-      [l, l_over, f, dphi], error)
-    if (allocated(error)) return
-
+    rules%ctx = ctx
+    call rules%require_all_set([character(len=6) :: "l", "l_over", "f", "dphi"], [l, l_over, f, dphi])
     ! guide
-    call require_positive(ctx, "l", l, error); if (allocated(error)) return
-    call require_nonnegative(ctx, "l_over", l_over, error); if (allocated(error)) return
-    call require_nonnegative(ctx, "f", f, error); if (allocated(error)) return
-    deck%p = cam_params_t(l=l, a=l_over, f=f)
-
+    call rules%require_positive("l", l)
+    call rules%require_nonnegative("l_over", l_over)
+    call rules%require_nonnegative("f", f)
     ! cam angles
     phi_start = optional_default(phi_start, 0.0_wp)
-    call require_set(ctx, "phi_start", phi_start, error); if (allocated(error)) return
+    call rules%require_set("phi_start", phi_start)
+    if (rules%failed(error)) return
+    deck%p = cam_params_t(l=l, a=l_over, f=f)
     call steps_over_turn(ctx, dphi, n, deck%n, error); if (allocated(error)) return
     deck%phi_start = phi_start
     deck%dphi = dphi
@@ -156,14 +154,12 @@ contains
     if (allocated(error)) return
 
     if (deck%follower == follower_translating) then
-      call require_rule(ctx, "f_cam", .not. is_set(f_cam), "only for follower = 'flat' "// &
-        "(a knife/roller follower has no sliding friction at the cam)", error)
-      if (allocated(error)) return
-      call require_rule(ctx, "omega_dir", .not. is_set(omega_dir), "only for follower = 'flat'", error)
-      if (allocated(error)) return
-      call require_rule(ctx, "ds_dphi", .not. is_set(ds_dphi(1)), "only for follower = 'flat' "// &
-        "(a translating follower takes the pressure angle theta)", error)
-      if (allocated(error)) return
+      call rules%require_rule("f_cam", .not. is_set(f_cam), "only for follower = 'flat' "// &
+        "(a knife/roller follower has no sliding friction at the cam)")
+      call rules%require_rule("omega_dir", .not. is_set(omega_dir), "only for follower = 'flat'")
+      call rules%require_rule("ds_dphi", .not. is_set(ds_dphi(1)), "only for follower = 'flat' "// &
+        "(a translating follower takes the pressure angle theta)")
+      if (rules%failed(error)) return
       call per_step(ctx, "theta", theta, deck%n, .true., 0.0_wp, deck%theta_values, deck%given(1), error)
       if (allocated(error)) return
       do k = 1, deck%n
@@ -184,19 +180,17 @@ contains
       end do
       deck%mu_cam = 0.0_wp
     else
-      call require_rule(ctx, "theta", .not. is_set(theta(1)), "not for follower = 'flat' "// &
-        "(its pressure angle is 0; give ds_dphi)", error)
-      if (allocated(error)) return
-      call require_rule(ctx, "vdir", .not. is_set(vdir(1)), "not for follower = 'flat' "// &
-        "(the sign of ds_dphi gives rise or return)", error)
-      if (allocated(error)) return
+      call rules%require_rule("theta", .not. is_set(theta(1)), "not for follower = 'flat' "// &
+        "(its pressure angle is 0; give ds_dphi)")
+      call rules%require_rule("vdir", .not. is_set(vdir(1)), "not for follower = 'flat' "// &
+        "(the sign of ds_dphi gives rise or return)")
       f_cam = optional_default(f_cam, 0.0_wp)
-      call require_nonnegative(ctx, "f_cam", f_cam, error); if (allocated(error)) return
+      call rules%require_nonnegative("f_cam", f_cam)
       omega_dir = optional_default(omega_dir, 1.0_wp)
-      call require_set(ctx, "omega_dir", omega_dir, error); if (allocated(error)) return
-      call require_rule(ctx, "omega_dir", omega_dir == 1.0_wp .or. omega_dir == -1.0_wp, &
-        "must be +1 (cam turns CCW) or -1 (CW) (got "//real_str(omega_dir)//")", error)
-      if (allocated(error)) return
+      call rules%require_set("omega_dir", omega_dir)
+      call rules%require_rule("omega_dir", omega_dir == 1.0_wp .or. omega_dir == -1.0_wp, &
+        "must be +1 (cam turns CCW) or -1 (CW) (got "//real_str(omega_dir)//")")
+      if (rules%failed(error)) return
       call per_step(ctx, "ds_dphi", ds_dphi, deck%n, .true., 0.0_wp, deck%ds_dphi_values, deck%given(4), error)
       if (allocated(error)) return
       deck%f_cam = f_cam

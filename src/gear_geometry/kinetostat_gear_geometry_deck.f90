@@ -5,9 +5,8 @@ module kinetostat_gear_geometry_deck
   use kinetostat_kinds, only: wp, deg_to_rad
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, number_str, lower
-  use kinetostat_deck, only: begin_group, text_bytes, text_chars, deck_context_t, unset_real, deck_source_t, namelist_probe_t, &
-    deck_error, is_set, require_set, require_positive, require_nonnegative, require_rule, require_whole, &
-    optional_default, require_all_set
+  use kinetostat_deck, only: begin_group, text_bytes, text_chars, deck_context_t, unset_real, deck_source_t, &
+    namelist_probe_t, deck_error, is_set, optional_default, deck_rules_t
   use kinetostat_gear_geometry, only: gear_pair_t, shift_sum_for_centre
   implicit none
   private
@@ -77,6 +76,7 @@ contains
     real(wp) :: m, z1, z2, x1, x2, a_w, alpha, ha_star, c_star, sa_min_star, m1
     integer :: iz1, iz2
     type(deck_context_t) :: ctx
+    type(deck_rules_t) :: rules
     type(namelist_probe_t) :: probe
     type(error_t), allocatable :: why
     namelist /gear_geometry/ m, z1, z2, x1, x2, shift, a_w, alpha, ha_star, c_star, sa_min_star, m1
@@ -93,70 +93,60 @@ contains
     end do
     if (probe%failed(source, ctx, error)) return
 
-    call require_all_set(ctx, [character(len=2) :: "m", "z1", "z2"], [m, z1, z2], error)
-    if (allocated(error)) return
-    call require_positive(ctx, "m", m, error); if (allocated(error)) return
-    call require_teeth(ctx, "z1", z1, iz1, error); if (allocated(error)) return
-    call require_teeth(ctx, "z2", z2, iz2, error); if (allocated(error)) return
+    rules%ctx = ctx
+    call rules%require_all_set([character(len=2) :: "m", "z1", "z2"], [m, z1, z2])
+    call rules%require_positive("m", m)
+    call require_teeth(rules, "z1", z1, iz1)
+    call require_teeth(rules, "z2", z2, iz2)
+    alpha = optional_default(alpha, 20.0_wp)
+    call rules%require_set("alpha", alpha)
+    call rules%require_rule("alpha", alpha > 0.0_wp .and. alpha < 45.0_wp, "must be in (0, 45) deg (got "// &
+      real_str(alpha)//")")
+    ha_star = optional_default(ha_star, 1.0_wp)
+    call rules%require_positive("ha_star", ha_star)
+    call rules%require_rule("ha_star", ha_star <= 10.0_wp, "must be <= 10 (got "//real_str(ha_star)//")")
+    c_star = optional_default(c_star, 0.25_wp)
+    call rules%require_nonnegative("c_star", c_star)
+    call rules%require_rule("c_star", c_star <= 10.0_wp, "must be <= 10 (got "//real_str(c_star)//")")
+    sa_min_star = optional_default(sa_min_star, 0.25_wp)
+    call rules%require_nonnegative("sa_min_star", sa_min_star)
+    call rules%require_rule("sa_min_star", sa_min_star <= 10.0_wp, "must be <= 10 (got "// &
+      real_str(sa_min_star)//")")
+    ! the shifts
+    if (is_set(x1)) call require_shift(rules, "x1", x1)
+    if (is_set(x2)) call require_shift(rules, "x2", x2)
+    if (rules%failed(error)) return
     deck%pair%m = m
     deck%pair%z1 = iz1
     deck%pair%z2 = iz2
-
-    alpha = optional_default(alpha, 20.0_wp)
-    call require_set(ctx, "alpha", alpha, error); if (allocated(error)) return
-    call require_rule(ctx, "alpha", alpha > 0.0_wp .and. alpha < 45.0_wp, "must be in (0, 45) deg (got "// &
-      real_str(alpha)//")", error)
-    if (allocated(error)) return
     deck%pair%alpha = alpha * deg_to_rad
-    ha_star = optional_default(ha_star, 1.0_wp)
-    call require_positive(ctx, "ha_star", ha_star, error); if (allocated(error)) return
-    call require_rule(ctx, "ha_star", ha_star <= 10.0_wp, "must be <= 10 (got "//real_str(ha_star)//")", error)
-    if (allocated(error)) return
-    c_star = optional_default(c_star, 0.25_wp)
-    call require_nonnegative(ctx, "c_star", c_star, error); if (allocated(error)) return
-    call require_rule(ctx, "c_star", c_star <= 10.0_wp, "must be <= 10 (got "//real_str(c_star)//")", error)
-    if (allocated(error)) return
-    sa_min_star = optional_default(sa_min_star, 0.25_wp)
-    call require_nonnegative(ctx, "sa_min_star", sa_min_star, error); if (allocated(error)) return
-    call require_rule(ctx, "sa_min_star", sa_min_star <= 10.0_wp, "must be <= 10 (got "// &
-      real_str(sa_min_star)//")", error)
-    if (allocated(error)) return
     deck%pair%ha_star = ha_star
     deck%pair%c_star = c_star
     deck%pair%sa_min_star = sa_min_star
 
-    ! the shifts
-    if (is_set(x1)) then
-      call require_shift(ctx, "x1", x1, error); if (allocated(error)) return
-    end if
-    if (is_set(x2)) then
-      call require_shift(ctx, "x2", x2, error); if (allocated(error)) return
-    end if
     select case (lower(trim(adjustl(shift))))
     case ("", "given")
       deck%rule = shift_given
     case ("auto")
       deck%rule = shift_auto
-      call require_rule(ctx, "x1", .not. is_set(x1), "not with shift = 'auto' (the program chooses x1 and x2)", &
-        error)
-      if (allocated(error)) return
-      call require_rule(ctx, "x2", .not. is_set(x2), "not with shift = 'auto' (the program chooses x1 and x2)", &
-        error)
-      if (allocated(error)) return
+      call rules%require_rule("x1", .not. is_set(x1), "not with shift = 'auto' (the program chooses x1 and x2)")
+      call rules%require_rule("x2", .not. is_set(x2), "not with shift = 'auto' (the program chooses x1 and x2)")
+      if (rules%failed(error)) return
     case default
       call deck_error(ctx, "shift", "must be 'auto' or 'given' (got '"//trim(shift)//"')", error)
       return
     end select
     if (is_set(a_w)) then
-      call require_positive(ctx, "a_w", a_w, error); if (allocated(error)) return
+      call rules%require_positive("a_w", a_w)
+      if (rules%failed(error)) return
       call shift_sum_for_centre(deck%pair, a_w, deck%x_sum, why)
       if (allocated(why)) then
         call deck_error(ctx, "a_w", why%message, error)
         return
       end if
-      call require_rule(ctx, "a_w", abs(deck%x_sum) <= 1000.0_wp, "requires x1 + x2 = "// &
-        real_str(deck%x_sum)//", beyond any gear", error)
-      if (allocated(error)) return
+      call rules%require_rule("a_w", abs(deck%x_sum) <= 1000.0_wp, "requires x1 + x2 = "// &
+        real_str(deck%x_sum)//", beyond any gear")
+      if (rules%failed(error)) return
       deck%has_a_w = .true.
       deck%a_w = a_w
       if (deck%rule == shift_given) then
@@ -182,39 +172,32 @@ contains
     end if
 
     if (is_set(m1)) then
-      call require_set(ctx, "m1", m1, error); if (allocated(error)) return
+      call rules%require_set("m1", m1)
+      if (rules%failed(error)) return
       deck%has_m1 = .true.
       deck%m1 = m1
     end if
   end subroutine read_gear_geometry_deck
 
   !> A shift coefficient: finite and within +-100 (beyond that no gear exists).
-  subroutine require_shift(ctx, name, x, error)
-    type(deck_context_t), intent(in) :: ctx
+  subroutine require_shift(rules, name, x)
+    type(deck_rules_t), intent(inout) :: rules
     character(*), intent(in) :: name
     real(wp), intent(in) :: x
-    type(error_t), allocatable, intent(out) :: error
-    call require_set(ctx, name, x, error)
-    if (allocated(error)) return
-    call require_rule(ctx, name, abs(x) <= 100.0_wp, "must be within -100 .. 100 (got "//real_str(x)//")", error)
+    call rules%require_set(name, x)
+    call rules%require_rule(name, abs(x) <= 100.0_wp, "must be within -100 .. 100 (got "//real_str(x)//")")
   end subroutine require_shift
 
   !> Teeth: a whole number from 1 to max_gear_teeth.
-  subroutine require_teeth(ctx, name, z, teeth, error)
-    type(deck_context_t), intent(in) :: ctx
+  subroutine require_teeth(rules, name, z, teeth)
+    type(deck_rules_t), intent(inout) :: rules
     character(*), intent(in) :: name
     !> Deck value (an integer deck variable, read as a real).
     real(wp), intent(in) :: z
     integer, intent(out) :: teeth
-    type(error_t), allocatable, intent(out) :: error
     teeth = 0
-    if (is_set(z)) then
-      if (z < 1.0_wp) then
-        call deck_error(ctx, name, "must be >= 1 teeth (got "//number_str(z)//")", error)
-        return
-      end if
-    end if
-    call require_whole(ctx, name, z, 1, max_gear_teeth, teeth, error)
+    if (is_set(z)) call rules%require_rule(name, .not. z < 1.0_wp, "must be >= 1 teeth (got "//number_str(z)//")")
+    call rules%require_whole(name, z, 1, max_gear_teeth, teeth)
   end subroutine require_teeth
 
 end module kinetostat_gear_geometry_deck

@@ -3,8 +3,8 @@ module kinetostat_planetary_synthesis_deck
   use kinetostat_kinds, only: wp
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, lower
-  use kinetostat_deck, only: begin_group, text_bytes, text_chars, deck_context_t, unset_real, deck_source_t, namelist_probe_t, &
-    deck_error, is_set, require_set, require_positive, require_rule, require_whole, optional_default, require_all_set
+  use kinetostat_deck, only: begin_group, text_bytes, text_chars, deck_context_t, unset_real, deck_source_t, &
+    namelist_probe_t, deck_error, is_set, optional_default, deck_rules_t
   use kinetostat_planetary_synthesis, only: planetary_spec_t, max_ring_teeth
   implicit none
   private
@@ -50,6 +50,7 @@ contains
     character(len=text_bytes * text_chars) :: scheme
     real(wp) :: u, k, u_tolerance, z_min, z_ring_min, m, m1
     type(deck_context_t) :: ctx
+    type(deck_rules_t) :: rules
     type(namelist_probe_t) :: probe
     namelist /planetary_synthesis/ scheme, u, k, u_tolerance, z_min, z_ring_min, m, m1
 
@@ -70,35 +71,29 @@ contains
       call deck_error(ctx, "scheme", "must be 'single_row' (sun, planets, fixed ring; got '"//trim(scheme)//"')", error)
       return
     end select
-    call require_all_set(ctx, [character(len=1) :: "u", "k"], [u, k], error)
-    if (allocated(error)) return
-    call require_set(ctx, "u", u, error); if (allocated(error)) return
-    call require_rule(ctx, "u", u > 2.0_wp .and. u <= 1000.0_wp, "must be in (2, 1000]: u_1H = 1 + z3/z1 with "// &
-      "z3 = z1 + 2 z2 > z1 (got "//real_str(u)//")", error)
-    if (allocated(error)) return
-    deck%spec%u = u
-    call require_whole(ctx, "k", k, 1, 100, deck%spec%k, error); if (allocated(error)) return
+    rules%ctx = ctx
+    call rules%require_all_set([character(len=1) :: "u", "k"], [u, k])
+    call rules%require_set("u", u)
+    call rules%require_rule("u", u > 2.0_wp .and. u <= 1000.0_wp, "must be in (2, 1000]: u_1H = 1 + z3/z1 with "// &
+      "z3 = z1 + 2 z2 > z1 (got "//real_str(u)//")")
+    call rules%require_whole("k", k, 1, 100, deck%spec%k)
     u_tolerance = optional_default(u_tolerance, 0.04_wp)
-    call require_set(ctx, "u_tolerance", u_tolerance, error); if (allocated(error)) return
-    call require_rule(ctx, "u_tolerance", u_tolerance >= 0.0_wp .and. u_tolerance < 0.5_wp, "must be in [0, 0.5) "// &
-      "(got "//real_str(u_tolerance)//")", error)
-    if (allocated(error)) return
-    deck%spec%u_tolerance = u_tolerance
+    call rules%require_set("u_tolerance", u_tolerance)
+    call rules%require_rule("u_tolerance", u_tolerance >= 0.0_wp .and. u_tolerance < 0.5_wp, "must be in [0, 0.5) "// &
+      "(got "//real_str(u_tolerance)//")")
     z_min = optional_default(z_min, 17.0_wp)
-    call require_whole(ctx, "z_min", z_min, 1, 1000, deck%spec%z_min, error); if (allocated(error)) return
+    call rules%require_whole("z_min", z_min, 1, 1000, deck%spec%z_min)
     z_ring_min = optional_default(z_ring_min, 85.0_wp)
-    call require_whole(ctx, "z_ring_min", z_ring_min, 1, max_ring_teeth, deck%spec%z_ring_min, error)
-    if (allocated(error)) return
-    if (is_set(m)) then
-      call require_positive(ctx, "m", m, error); if (allocated(error)) return
-      deck%has_m = .true.
-      deck%m = m
-    end if
-    if (is_set(m1)) then
-      call require_set(ctx, "m1", m1, error); if (allocated(error)) return
-      deck%has_m1 = .true.
-      deck%m1 = m1
-    end if
+    call rules%require_whole("z_ring_min", z_ring_min, 1, max_ring_teeth, deck%spec%z_ring_min)
+    if (is_set(m)) call rules%require_positive("m", m)
+    if (is_set(m1)) call rules%require_set("m1", m1)
+    if (rules%failed(error)) return
+    deck%spec%u = u
+    deck%spec%u_tolerance = u_tolerance
+    deck%has_m = is_set(m)
+    if (deck%has_m) deck%m = m
+    deck%has_m1 = is_set(m1)
+    if (deck%has_m1) deck%m1 = m1
   end subroutine read_planetary_synthesis_deck
 
 end module kinetostat_planetary_synthesis_deck

@@ -3,10 +3,9 @@ module kinetostat_pr3050_deck
   use kinetostat_kinds, only: wp, g_default, deg_to_rad
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str
-  use kinetostat_deck, only: values_out_of_memory, begin_group, text_bytes, text_chars, max_deck_array, deck_context_t, &
-    unset_real, deck_array_capacities, max_steps, &
-    deck_source_t, namelist_probe_t, require_all_set, require_set, require_positive, &
-    require_nonnegative, require_rule, require_per_step, optional_default, count_values
+  use kinetostat_deck, only: values_out_of_memory, begin_group, text_bytes, text_chars, max_deck_array, &
+    deck_context_t, unset_real, deck_array_capacities, max_steps, deck_source_t, namelist_probe_t, &
+    optional_default, deck_rules_t
   use kinetostat_pr3050, only: pr3050_params_t
   use kinetostat_dynamics_deck, only: dynamics_deck_t, read_dynamics_settings
   implicit none
@@ -114,6 +113,7 @@ contains
     integer, allocatable :: capacity(:)
     integer :: stat
     type(deck_context_t) :: ctx
+    type(deck_rules_t) :: rules
     type(namelist_probe_t) :: probe
     namelist /pr3050/ l_ca, l_cb, l_cs3, delta, l_bs2, l_s1a, gamma, g, m1, m2, m3, j1, j2, j3, &
       phi3_start, phi3_end, dphi3, omega3, eps3, dynamics, j_rotor
@@ -147,54 +147,53 @@ contains
     if (probe%failed(source, ctx, error)) return
 
     ! every missing required variable in one message
-    call require_all_set(ctx, [character(len=10) :: "l_ca", "l_cb", "l_cs3", "delta", "l_bs2", "l_s1a", "gamma", "m1", &
+    rules%ctx = ctx
+    call rules%require_all_set([character(len=10) :: "l_ca", "l_cb", "l_cs3", "delta", "l_bs2", "l_s1a", "gamma", "m1", &
       "m2", "m3", "j1", "j2", "j3", "phi3_start", "phi3_end", "dphi3"], &
-      [l_ca, l_cb, l_cs3, delta, l_bs2, l_s1a, gamma, m1, m2, m3, j1, j2, j3, phi3_start, phi3_end, dphi3], error)
-    if (allocated(error)) return
+      [l_ca, l_cb, l_cs3, delta, l_bs2, l_s1a, gamma, m1, m2, m3, j1, j2, j3, phi3_start, phi3_end, dphi3])
 
     ! lengths and angles of the links
-    call require_positive(ctx, "l_ca", l_ca, error); if (allocated(error)) return
-    call require_positive(ctx, "l_cb", l_cb, error); if (allocated(error)) return
-    call require_nonnegative(ctx, "l_cs3", l_cs3, error); if (allocated(error)) return
-    call require_set(ctx, "delta", delta, error); if (allocated(error)) return
-    call require_nonnegative(ctx, "l_bs2", l_bs2, error); if (allocated(error)) return
-    call require_nonnegative(ctx, "l_s1a", l_s1a, error); if (allocated(error)) return
+    call rules%require_positive("l_ca", l_ca)
+    call rules%require_positive("l_cb", l_cb)
+    call rules%require_nonnegative("l_cs3", l_cs3)
+    call rules%require_set("delta", delta)
+    call rules%require_nonnegative("l_bs2", l_bs2)
+    call rules%require_nonnegative("l_s1a", l_s1a)
     ! gravity, masses, inertias
-    call require_set(ctx, "gamma", gamma, error); if (allocated(error)) return
+    call rules%require_set("gamma", gamma)
     g = optional_default(g, g_default)
-    call require_nonnegative(ctx, "g", g, error); if (allocated(error)) return
-    call require_nonnegative(ctx, "m1", m1, error); if (allocated(error)) return
-    call require_nonnegative(ctx, "m2", m2, error); if (allocated(error)) return
-    call require_nonnegative(ctx, "m3", m3, error); if (allocated(error)) return
-    call require_nonnegative(ctx, "j1", j1, error); if (allocated(error)) return
-    call require_nonnegative(ctx, "j2", j2, error); if (allocated(error)) return
-    call require_nonnegative(ctx, "j3", j3, error); if (allocated(error)) return
+    call rules%require_nonnegative("g", g)
+    call rules%require_nonnegative("m1", m1)
+    call rules%require_nonnegative("m2", m2)
+    call rules%require_nonnegative("m3", m3)
+    call rules%require_nonnegative("j1", j1)
+    call rules%require_nonnegative("j2", j2)
+    call rules%require_nonnegative("j3", j3)
 
     ! rocker range: N = (phi3_end - phi3_start)/dphi3 + 1
-    call require_set(ctx, "phi3_start", phi3_start, error); if (allocated(error)) return
-    call require_set(ctx, "phi3_end", phi3_end, error); if (allocated(error)) return
-    call require_positive(ctx, "dphi3", dphi3, error); if (allocated(error)) return
-    call require_rule(ctx, "phi3_end", phi3_end > phi3_start, "must be > phi3_start (got phi3_end = "// &
-      real_str(phi3_end)//", phi3_start = "//real_str(phi3_start)//"): the range gives no steps", error)
-    if (allocated(error)) return
+    call rules%require_set("phi3_start", phi3_start)
+    call rules%require_set("phi3_end", phi3_end)
+    call rules%require_positive("dphi3", dphi3)
+    call rules%require_rule("phi3_end", phi3_end > phi3_start, "must be > phi3_start (got phi3_end = "// &
+      real_str(phi3_end)//", phi3_start = "//real_str(phi3_start)//"): the range gives no steps")
+    if (rules%failed(error)) return
     deck%n = pr3050_step_count(phi3_start, phi3_end, dphi3)
-    call require_rule(ctx, "dphi3", deck%n /= -1, "too small: (phi3_end - phi3_start)/dphi3 + 1 exceeds "// &
-      int_str(max_steps)//" steps", error)
-    if (allocated(error)) return
-    call require_rule(ctx, "dphi3", deck%n /= 0, "phi3_end - phi3_start = "//real_str(phi3_end - phi3_start)// &
-      " is not a whole number of steps dphi3 = "//real_str(dphi3), error)
-    if (allocated(error)) return
+    call rules%require_rule("dphi3", deck%n /= -1, "too small: (phi3_end - phi3_start)/dphi3 + 1 exceeds "// &
+      int_str(max_steps)//" steps")
+    call rules%require_rule("dphi3", deck%n /= 0, "phi3_end - phi3_start = "//real_str(phi3_end - phi3_start)// &
+      " is not a whole number of steps dphi3 = "//real_str(dphi3))
+    if (rules%failed(error)) return
 
     ! speed law: exactly N values each
-    call speed_law_values(ctx, "omega3", omega3, deck%n, error); if (allocated(error)) return
-    call speed_law_values(ctx, "eps3", eps3, deck%n, error); if (allocated(error)) return
+    call speed_law_values(rules, "omega3", omega3, deck%n)
+    call speed_law_values(rules, "eps3", eps3, deck%n)
 
     ! machine dynamics: the reduced quantities only, reduced to the stroke (the input translates)
-    call require_rule(ctx, "dynamics", trim(adjustl(dynamics)) /= "steady" .and. trim(adjustl(dynamics)) /= "given", &
+    call rules%require_rule("dynamics", trim(adjustl(dynamics)) /= "steady" .and. trim(adjustl(dynamics)) /= "given", &
       "'"//trim(adjustl(dynamics))//"' needs a crank: PR 3050's input is the cylinder's stroke, which goes out and "// &
       "back over a rocker range, not one turn, so there is no cycle of a constant driving moment; use dynamics = "// &
-      "'reduced' (J_red, M_red reduced to the stroke)", error)
-    if (allocated(error)) return
+      "'reduced' (J_red, M_red reduced to the stroke)")
+    if (rules%failed(error)) return
     call read_dynamics_settings(ctx, dynamics, unset_real, j_rotor, unset_real, 1.0_wp, deck%dyn, error)
     if (allocated(error)) return
 
@@ -212,20 +211,18 @@ contains
   end subroutine read_pr3050_deck
 
   !> A speed-law list (omega3 or eps3): given, finite and with exactly one value per step.
-  subroutine speed_law_values(ctx, name, values, n, error)
-    type(deck_context_t), intent(in) :: ctx
+  subroutine speed_law_values(rules, name, values, n)
+    type(deck_rules_t), intent(inout) :: rules
     !> The list's variable name.
     character(*), intent(in) :: name
     !> The list as read.
     real(wp), intent(in) :: values(:)
     !> Number of steps.
     integer, intent(in) :: n
-    type(error_t), allocatable, intent(out) :: error
     integer :: count
-    call count_values(ctx, name, values, count, error); if (allocated(error)) return
-    call require_rule(ctx, name, count > 0, "missing: give N = "//int_str(n)//" values (one per step)", error)
-    if (allocated(error)) return
-    call require_per_step(ctx, name, count, n, error)
+    call rules%count_values(name, values, count)
+    call rules%require_rule(name, count > 0, "missing: give N = "//int_str(n)//" values (one per step)")
+    call rules%require_per_step(name, count, n)
   end subroutine speed_law_values
 
   !> Rocker angle of step k, deg: phi3_start + (k - 1)*dphi3 (computed, not stored per step).

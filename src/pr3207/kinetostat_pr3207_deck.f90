@@ -3,10 +3,9 @@ module kinetostat_pr3207_deck
   use kinetostat_kinds, only: wp, g_default
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str
-  use kinetostat_deck, only: values_out_of_memory, &
-    begin_group, text_bytes, text_chars, max_deck_array, deck_context_t, unset_real, deck_array_capacities, &
-    deck_source_t, namelist_probe_t, require_all_set, deck_error, is_set, require_set, require_positive, &
-    require_nonnegative, require_rule, require_per_step, optional_default, count_values, steps_over_turn
+  use kinetostat_deck, only: values_out_of_memory, begin_group, text_bytes, text_chars, max_deck_array, &
+    deck_context_t, unset_real, deck_array_capacities, deck_source_t, namelist_probe_t, deck_error, is_set, &
+    require_rule, require_per_step, optional_default, count_values, steps_over_turn, deck_rules_t
   use kinetostat_pr3207, only: pr3207_params_t
   use kinetostat_dynamics, only: dynamics_steady
   use kinetostat_dynamics_deck, only: dynamics_deck_t, read_dynamics_settings, require_one_turn, md_table_capacity
@@ -117,6 +116,7 @@ contains
     integer, allocatable :: capacity(:)
     integer :: stat
     type(deck_context_t) :: ctx
+    type(deck_rules_t) :: rules
     type(namelist_probe_t) :: probe
     logical :: two_value_given
     namelist /pr3207/ l_ab, l_ac, l_cd, l_cs3, m1, m3, m5, j3, omega1, g, phi_start, dphi, n, &
@@ -149,32 +149,31 @@ contains
     if (probe%failed(source, ctx, error)) return
 
     ! every missing required variable in one message
-    call require_all_set(ctx, [character(len=6) :: "l_ab", "l_ac", "l_cd", "l_cs3", "m1", "m3", "m5", "j3", "omega1", "dphi"], &
-      [l_ab, l_ac, l_cd, l_cs3, m1, m3, m5, j3, omega1, dphi], error)
-    if (allocated(error)) return
+    rules%ctx = ctx
+    call rules%require_all_set([character(len=6) :: "l_ab", "l_ac", "l_cd", "l_cs3", "m1", "m3", "m5", "j3", "omega1", "dphi"], &
+      [l_ab, l_ac, l_cd, l_cs3, m1, m3, m5, j3, omega1, dphi])
 
     ! lengths, masses, inertia, speed
-    call require_positive(ctx, "l_ab", l_ab, error); if (allocated(error)) return
-    call require_positive(ctx, "l_ac", l_ac, error); if (allocated(error)) return
-    call require_positive(ctx, "l_cd", l_cd, error); if (allocated(error)) return
-    call require_nonnegative(ctx, "l_cs3", l_cs3, error); if (allocated(error)) return
-    call require_nonnegative(ctx, "m1", m1, error); if (allocated(error)) return
-    call require_nonnegative(ctx, "m3", m3, error); if (allocated(error)) return
-    call require_nonnegative(ctx, "m5", m5, error); if (allocated(error)) return
-    call require_nonnegative(ctx, "j3", j3, error); if (allocated(error)) return
-    call require_set(ctx, "omega1", omega1, error); if (allocated(error)) return
+    call rules%require_positive("l_ab", l_ab)
+    call rules%require_positive("l_ac", l_ac)
+    call rules%require_positive("l_cd", l_cd)
+    call rules%require_nonnegative("l_cs3", l_cs3)
+    call rules%require_nonnegative("m1", m1)
+    call rules%require_nonnegative("m3", m3)
+    call rules%require_nonnegative("m5", m5)
+    call rules%require_nonnegative("j3", j3)
+    call rules%require_set("omega1", omega1)
     g = optional_default(g, g_default)
-    call require_nonnegative(ctx, "g", g, error); if (allocated(error)) return
-    call require_rule(ctx, "l_ab", l_ab < l_ac, "must be < l_ac (got l_ab = "//real_str(l_ab)// &
-      ", l_ac = "//real_str(l_ac)//"): the lever must oscillate, the crank must not reach C", error)
-    if (allocated(error)) return
-    call require_rule(ctx, "l_cd", l_cd > l_ac + l_ab, "must be > l_ac + l_ab = "// &
-      real_str(l_ac + l_ab)//" (got "//real_str(l_cd)//"): D must pass beyond the crank circle", error)
-    if (allocated(error)) return
+    call rules%require_nonnegative("g", g)
+    call rules%require_rule("l_ab", l_ab < l_ac, "must be < l_ac (got l_ab = "//real_str(l_ab)// &
+      ", l_ac = "//real_str(l_ac)//"): the lever must oscillate, the crank must not reach C")
+    call rules%require_rule("l_cd", l_cd > l_ac + l_ab, "must be > l_ac + l_ab = "// &
+      real_str(l_ac + l_ab)//" (got "//real_str(l_cd)//"): D must pass beyond the crank circle")
 
     ! crank angles
     phi_start = optional_default(phi_start, 0.0_wp)
-    call require_set(ctx, "phi_start", phi_start, error); if (allocated(error)) return
+    call rules%require_set("phi_start", phi_start)
+    if (rules%failed(error)) return
     call steps_over_turn(ctx, dphi, n, deck%n, error); if (allocated(error)) return
 
     ! cutting force: per-step array or the two-value form, not both
@@ -194,11 +193,12 @@ contains
         call deck_error(ctx, "f5c", "missing: give f5c(:) per step or f5c_work with phi_cut_start, phi_cut_end", error)
         return
       end if
-      call require_set(ctx, "f5c_work", f5c_work, error); if (allocated(error)) return
+      call rules%require_set("f5c_work", f5c_work)
       f5c_idle = optional_default(f5c_idle, 0.0_wp)
-      call require_set(ctx, "f5c_idle", f5c_idle, error); if (allocated(error)) return
-      call require_set(ctx, "phi_cut_start", phi_cut_start, error); if (allocated(error)) return
-      call require_set(ctx, "phi_cut_end", phi_cut_end, error); if (allocated(error)) return
+      call rules%require_set("f5c_idle", f5c_idle)
+      call rules%require_set("phi_cut_start", phi_cut_start)
+      call rules%require_set("phi_cut_end", phi_cut_end)
+      if (rules%failed(error)) return
       deck%two_value = .true.
       deck%f5c_work = f5c_work
       deck%f5c_idle = f5c_idle

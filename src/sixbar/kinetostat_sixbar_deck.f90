@@ -3,10 +3,9 @@ module kinetostat_sixbar_deck
   use kinetostat_kinds, only: wp, g_default, rad_to_deg
   use kinetostat_error, only: error_t, fatal_error, exit_geometry
   use kinetostat_text, only: real_str, int_str
-  use kinetostat_deck, only: values_out_of_memory, &
-    begin_group, text_bytes, text_chars, max_deck_array, deck_context_t, unset_real, deck_array_capacities, &
-    deck_source_t, namelist_probe_t, require_all_set, deck_error, is_set, require_set, require_positive, &
-    require_nonnegative, require_rule, require_per_step, optional_default, count_values, steps_over_turn
+  use kinetostat_deck, only: values_out_of_memory, begin_group, text_bytes, text_chars, max_deck_array, &
+    deck_context_t, unset_real, deck_array_capacities, deck_source_t, namelist_probe_t, deck_error, is_set, &
+    require_set, optional_default, steps_over_turn, deck_rules_t
   use kinetostat_sixbar, only: sixbar_params_t, sixbar_extreme_phi1
   use kinetostat_dynamics, only: dynamics_steady
   use kinetostat_dynamics_deck, only: dynamics_deck_t, read_dynamics_settings, require_one_turn, md_table_capacity
@@ -91,6 +90,7 @@ contains
     integer, allocatable :: capacity(:)
     integer :: stat
     type(deck_context_t) :: ctx
+    type(deck_rules_t) :: rules
     type(namelist_probe_t) :: probe
     namelist /sixbar/ a, b, l1, lam2, lam_s2, lam3, lam_de, lam4, lam_s4, lam_e, &
       m1, m2, m3, m4, m5, j1, j2, j3, j4, omega1, g, dphi, n, phi_start, start_at_extreme, f5, legacy_eq2, &
@@ -126,38 +126,38 @@ contains
     if (probe%failed(source, ctx, error)) return
 
     ! every missing required variable in one message
-    call require_all_set(ctx, [character(len=6) :: "a", "b", "l1", "lam2", "lam_s2", "lam3", "lam_de", "lam4", "lam_s4", "lam_e", &
+    rules%ctx = ctx
+    call rules%require_all_set([character(len=6) :: "a", "b", "l1", "lam2", "lam_s2", "lam3", "lam_de", "lam4", "lam_s4", "lam_e", &
       "m1", "m2", "m3", "m4", "m5", "j1", "j2", "j3", "j4", "omega1"], &
-      [a, b, l1, lam2, lam_s2, lam3, lam_de, lam4, lam_s4, lam_e, m1, m2, m3, m4, m5, j1, j2, j3, j4, omega1], error)
-    if (allocated(error)) return
+      [a, b, l1, lam2, lam_s2, lam3, lam_de, lam4, lam_s4, lam_e, m1, m2, m3, m4, m5, j1, j2, j3, j4, omega1])
 
     ! geometry: D, lengths and ratios
-    call require_set(ctx, "a", a, error); if (allocated(error)) return
-    call require_set(ctx, "b", b, error); if (allocated(error)) return
-    call require_rule(ctx, "b", hypot(a, b) > 0.0_wp, "a and b must not both be 0: D must differ from A", error)
-    if (allocated(error)) return
-    call require_positive(ctx, "l1", l1, error); if (allocated(error)) return
-    call require_positive(ctx, "lam2", lam2, error); if (allocated(error)) return
-    call require_nonnegative(ctx, "lam_s2", lam_s2, error); if (allocated(error)) return
-    call require_positive(ctx, "lam3", lam3, error); if (allocated(error)) return
-    call require_positive(ctx, "lam_de", lam_de, error); if (allocated(error)) return
-    call require_positive(ctx, "lam4", lam4, error); if (allocated(error)) return
-    call require_nonnegative(ctx, "lam_s4", lam_s4, error); if (allocated(error)) return
-    call require_set(ctx, "lam_e", lam_e, error); if (allocated(error)) return
+    call rules%require_set("a", a)
+    call rules%require_set("b", b)
+    call rules%require_rule("b", hypot(a, b) > 0.0_wp, "a and b must not both be 0: D must differ from A")
+    call rules%require_positive("l1", l1)
+    call rules%require_positive("lam2", lam2)
+    call rules%require_nonnegative("lam_s2", lam_s2)
+    call rules%require_positive("lam3", lam3)
+    call rules%require_positive("lam_de", lam_de)
+    call rules%require_positive("lam4", lam4)
+    call rules%require_nonnegative("lam_s4", lam_s4)
+    call rules%require_set("lam_e", lam_e)
 
     ! masses, inertia, speed, gravity
-    call require_nonnegative(ctx, "m1", m1, error); if (allocated(error)) return
-    call require_nonnegative(ctx, "m2", m2, error); if (allocated(error)) return
-    call require_nonnegative(ctx, "m3", m3, error); if (allocated(error)) return
-    call require_nonnegative(ctx, "m4", m4, error); if (allocated(error)) return
-    call require_nonnegative(ctx, "m5", m5, error); if (allocated(error)) return
-    call require_nonnegative(ctx, "j1", j1, error); if (allocated(error)) return
-    call require_nonnegative(ctx, "j2", j2, error); if (allocated(error)) return
-    call require_nonnegative(ctx, "j3", j3, error); if (allocated(error)) return
-    call require_nonnegative(ctx, "j4", j4, error); if (allocated(error)) return
-    call require_set(ctx, "omega1", omega1, error); if (allocated(error)) return
+    call rules%require_nonnegative("m1", m1)
+    call rules%require_nonnegative("m2", m2)
+    call rules%require_nonnegative("m3", m3)
+    call rules%require_nonnegative("m4", m4)
+    call rules%require_nonnegative("m5", m5)
+    call rules%require_nonnegative("j1", j1)
+    call rules%require_nonnegative("j2", j2)
+    call rules%require_nonnegative("j3", j3)
+    call rules%require_nonnegative("j4", j4)
+    call rules%require_set("omega1", omega1)
     g = optional_default(g, g_default)
-    call require_nonnegative(ctx, "g", g, error); if (allocated(error)) return
+    call rules%require_nonnegative("g", g)
+    if (rules%failed(error)) return
 
     ! machine dynamics (a steady cycle takes f5 as a table over the crank angle: below)
     call read_dynamics_settings(ctx, dynamics, delta, j_rotor, j_flywheel, omega1, deck%dyn, error, &
@@ -194,13 +194,10 @@ contains
     end if
 
     ! slider load: one value per step
-    call count_values(ctx, "f5", f5, n_f5, error); if (allocated(error)) return
-    if (n_f5 == 0) then
-      call deck_error(ctx, "f5", "missing: give f5 = v1, v2, ... (one value per step, N along +x2)", error)
-      return
-    end if
-    call require_per_step(ctx, "f5", n_f5, deck%n, error)
-    if (allocated(error)) return
+    call rules%count_values("f5", f5, n_f5)
+    call rules%require_rule("f5", n_f5 /= 0, "missing: give f5 = v1, v2, ... (one value per step, N along +x2)")
+    call rules%require_per_step("f5", n_f5, deck%n)
+    if (rules%failed(error)) return
 
     ! the read buffer is the deck's array (no second copy)
     call move_alloc(f5, deck%f5)
