@@ -47,7 +47,8 @@ checks valid-output and expected-error:
 
 --every K runs every K-th deck of the fixed set (by bundled deck, then by class) and every
 deck of the classes of strings and the special runs (tools/test: --every 5; tools/test --long
-the whole set). --seed N changes the random choices (tools/test --long runs the fixed set, then a
+the whole set); with K > 1 the CSV is written with -o only (the same CSV as on standard output,
+checked the same way), with K = 1 to standard output too. --seed N changes the random choices (tools/test --long runs the fixed set, then a
 second run with a seed from the date, printed, so that a failure can be reproduced); --scale K draws K times
 as many mutations per deck (--scale 14: about 12 000 decks); --budget S stops starting new
 decks after S seconds (the decks not run are counted as skipped, never as failed).
@@ -81,6 +82,12 @@ TIMEOUT = 10
 #: that line (1.2 s of processor time for 400 000 characters; on a loaded machine more than
 #: TIMEOUT of wall time). Still a hang detector.
 LONG_TIMEOUT = 60
+#: Bundled decks whose every run takes over a second of processor time in the debug build (the
+#: &linkage engine's steady cycle over 361 poses: 1.2 s, against 0.05 s at most for the other
+#: decks), and the factor by which the sampled gate (--every K > 1) takes fewer of the decks of
+#: their value classes: every (K * factor)-th. Their decks run with LONG_TIMEOUT (on a loaded
+#: machine a run took over 10 s of wall time).
+HEAVY_DECKS = {"linkage_pr3207_flywheel": 3}
 #: Every how-many-th deck also gets the -o FILE run (all of them: 1).
 OUTFILE_EVERY = 1
 CHECKS = ["exit-code", "non-finite", "error-shape", "no-leftover", "warning-shape", "runtime-text", "valid-output",
@@ -458,9 +465,19 @@ def bad_text(text):
     return None
 
 
+def heavy_factor(name):
+    """The factor of HEAVY_DECKS of the bundled deck a derived deck comes from (1: none)."""
+    return next((f for base, f in HEAVY_DECKS.items() if name.startswith(base + "_")), 1)
+
+
+def timeout_of(name):
+    """Wall-time limit of one run of a derived deck, s."""
+    return LONG_TIMEOUT if "_long_" in name or heavy_factor(name) > 1 else TIMEOUT
+
+
 def check_deck(job):
     """Runs one deck; returns (name, description, [(check, mode, detail)], selfcheck_warning)."""
-    binary, name, desc, data, extra, with_file, deadline, spec = job
+    binary, name, desc, data, extra, with_file, deadline, spec, stdout_csv = job
     failures = []
     selfcheck = False
     table_run = None
@@ -481,11 +498,13 @@ def check_deck(job):
             file_name = (spec or {}).get("file", b"deck.nml")
             with open(os.path.join(os.fsencode(work), file_name), "wb") as f:
                 f.write(data)
-            modes = [("table", [file_name] + extra), ("csv", [file_name, "--format", "csv"] + extra)]
+            modes = [("table", [file_name] + extra)]
+            if stdout_csv or not with_file:
+                modes.append(("csv", [file_name, "--format", "csv"] + extra))
             if with_file:
                 modes.append(("-o", [file_name, "--format", "csv", "-o", "out.csv"] + extra))
         for mode, args in modes:
-            rc, out, err = run(binary, args, work, stdin_endless, LONG_TIMEOUT if "_long_" in name else TIMEOUT)
+            rc, out, err = run(binary, args, work, stdin_endless, timeout_of(name))
             if extra is None and rc != 2:
                 failures.append(("exit-code", mode, "endless input: exit %s, expected 2 (the deck limit)" % rc))
             if mode == "table":
@@ -505,7 +524,7 @@ def check_deck(job):
                     if os.path.exists(p):
                         os.remove(p)
             if rc == "timeout" or not isinstance(rc, int) or rc not in (0, 2, 3):
-                what = "timeout after %d s" % (LONG_TIMEOUT if "_long_" in name else TIMEOUT) if rc == "timeout" else (
+                what = "timeout after %d s" % timeout_of(name) if rc == "timeout" else (
                     "killed by signal %d" % -rc if rc < 0 else "exit %d" % rc)
                 failures.append(("exit-code", mode, "%s; stderr: %s" % (what, err.strip()[:200])))
             for label, text in (("stdout", out), ("file", file_text)):
@@ -529,19 +548,19 @@ def check_deck(job):
                 if hit:
                     failures.append(("runtime-text", mode, "%s contains %r" % (label, hit[0])))
         if spec:
-            failures += string_checks(binary, spec, file_name, extra, work, table_run)
+            failures += string_checks(binary, spec, file_name, extra, work, table_run, timeout_of(name))
     finally:
         shutil.rmtree(work, ignore_errors=True)
     return name, desc, failures, selfcheck, table_run
 
 
-def string_checks(binary, spec, file_name, extra, work, table_run):
+def string_checks(binary, spec, file_name, extra, work, table_run, timeout=TIMEOUT):
     """The failures of valid-output (every format of spec["formats"] well formed, no raw 0xFF,
     no raw <b> in XML) and expected-error (the table run's exit code and message)."""
     failures = []
     for _, options, form in spec.get("formats", []):
         label = " ".join(options) or "table"
-        rc, out, err = run(binary, [file_name] + options + extra, work, raw=True)
+        rc, out, err = run(binary, [file_name] + options + extra, work, timeout=timeout, raw=True)
         if rc == "timeout" or rc not in (0, 2, 3):
             failures.append(("exit-code", label, "exit %s; stderr: %s" % (rc, err.strip()[:200])))
         if rc != 0:
@@ -620,9 +639,12 @@ def main():
     binary = os.path.abspath(args.bin)
     deadline = time.time() + args.budget if args.budget > 0 else None
     every = max(1, args.every)
-    jobs = [(binary, name, desc, data, extra, i % OUTFILE_EVERY == 0, deadline, SPECS.get(name))
+    # the sampled gate (--every K > 1) writes the CSV with -o only: the same CSV as on
+    # standard output, checked the same way (non-finite, error shape, runtime text) and for
+    # leftovers; --every 1 runs both
+    jobs = [(binary, name, desc, data, extra, i % OUTFILE_EVERY == 0, deadline, SPECS.get(name), every == 1)
             for i, (name, desc, data, extra) in enumerate(decks) if args.only in name
-            and (i % every == 0 or name in SPECS or extra is None)]
+            and (i % (every * (heavy_factor(name) if every > 1 else 1)) == 0 or name in SPECS or extra is None)]
     if args.seed is not None:
         # a randomized run under a time budget runs the decks in a random order, so that
         # every class has its chance before the budget ends
@@ -682,7 +704,7 @@ def main():
     if named + unnamed:
         print("named: %d of %d input errors (exit 2) of single-variable mutations name the variable (%.0f %%)" % (
             named, named + unnamed, 100.0 * named / (named + unnamed)))
-    runs = sum(3 if j[5] else 2 for j in jobs) - 3 * skipped
+    runs = sum((1 if j[4] is None else 1 + (j[8] or not j[5])) + j[5] for j in jobs) - 3 * skipped
     print("mutation: %d decks, %d runs, %d decks failed (%s); %d self-check warnings (not counted)%s" % (
         len(jobs) - skipped, runs, failed_decks,
         ", ".join("%s %d" % (c, failed_by_check[c]) for c in CHECKS), len(selfcheck_decks),

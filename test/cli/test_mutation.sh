@@ -3,8 +3,10 @@
 # runs $KINETOSTAT on each (table, CSV, -o FILE; the decks with hostile strings in every
 # output format, checked by tools/output_check.py). The default suite's gate runs a fixed fifth
 # of them (--every 5: every fifth deck in the fixed order, so that every class runs on a fifth of
-# the bundled decks, and every deck of the classes of strings and the endless inputs), with no
-# time limit: the same decks and the same verdict every run; tools/test --long runs them all. It reports one verdict per assertion category
+# the bundled decks - a fifteenth of the one deck whose runs take over a second, the &linkage
+# steady cycle - and every deck of the classes of strings and the endless inputs; the CSV
+# written with -o only), with no time limit: the same decks and the same verdict every run;
+# tools/test --long runs them all, the CSV to standard output too. It reports one verdict per assertion category
 # ("check NAME: ok" / "check NAME: FAIL (n decks)"); each category counts as ONE check here, so
 # that 500+ decks do not swamp the counters of the rest of the suite. The failing decks are
 # listed one per line (mutation, failed check, reproducer under test/out/mutation/).
