@@ -1,6 +1,7 @@
 # --format dxf --at K: the --at sheet as an ASCII DXF (R12 entities, the drawing model's
 # layers), read back by tools/dxf_check.py against the CSV's positions on every linkage deck
-# at three steps (English and Russian); --format dxf: the sheet of a run; the check can fail;
+# at three steps (English and Russian; a heavy deck, lib.sh, at its first step by default);
+# --format dxf: the sheet of a run; the check can fail;
 # usage errors.
 dxf_check="$root/tools/dxf_check.py"
 for deck in data/*.nml; do
@@ -9,7 +10,9 @@ for deck in data/*.nml; do
   run_ks "$deck" --format csv --kinematics
   cp "$out" "$cli_tmp/$name.kin.csv"
   steps=$(($(wc -l <"$out") - 1))
-  for k in 1 $(((steps + 1) / 2)) "$steps"; do
+  dxf_steps="1 $(((steps + 1) / 2)) $steps"
+  heavy_deck "$name" && dxf_steps=1
+  for k in $dxf_steps; do
     lang=en; [ "$k" = 1 ] && lang=ru
     run_ks "$deck" --format dxf --at "$k" --lang "$lang"
     if [ "$rc" -ne 0 ]; then fail "dxf-runs-$name-$k" "rc=$rc: $(head -c 300 "$err")"; continue; fi
