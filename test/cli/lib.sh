@@ -118,3 +118,17 @@ heavy_deck() {
   case "$1" in linkage_pr3207_flywheel) return 0 ;; esac
   return 1
 }
+
+# run_ks_cached KEY ARGS...: run_ks ARGS once per suite run: the scripts that need the same
+# output (the CSV with --kinematics of every bundled deck: test_dxf, test_kinematics,
+# test_npy) share it under $cli_tmp/cache/KEY; $out, $err and $rc as run_ks sets them (the
+# files are the cache's: copy before changing them).
+run_ks_cached() {
+  local key="$1"; shift
+  local dir="$cli_tmp/cache"
+  if [ ! -f "$dir/$key.rc" ]; then
+    mkdir -p "$dir"
+    "$KINETOSTAT" "$@" >"$dir/$key.out" 2>"$dir/$key.err"; echo "$?" >"$dir/$key.rc"
+  fi
+  out="$dir/$key.out"; err="$dir/$key.err"; read -r rc <"$dir/$key.rc"
+}

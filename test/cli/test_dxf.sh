@@ -7,7 +7,7 @@ dxf_check="$root/tools/dxf_check.py"
 for deck in data/*.nml; do
   name=$(basename "$deck" .nml)
   case "$name" in gears_*|cam_*|gear_geometry_*|planetary_synthesis*|assur_toggle) continue ;; esac
-  run_ks "$deck" --format csv --kinematics
+  run_ks_cached "$name.kin.csv" "$deck" --format csv --kinematics
   cp "$out" "$cli_tmp/$name.kin.csv"
   steps=$(($(wc -l <"$out") - 1))
   dxf_steps="1 $(((steps + 1) / 2)) $steps"

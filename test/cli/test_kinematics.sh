@@ -11,7 +11,7 @@ for deck in data/*.nml; do
   case "$name" in gear_geometry_*|planetary_synthesis*|cam_profile_*) continue ;; esac
   # the run without --kinematics: its golden (the golden check proves it the binary's output)
   cp "data/expected/$name.csv" "$cli_tmp/k_plain.csv"
-  run_ks "$deck" --format csv --kinematics; cp "$out" "$cli_tmp/k_kin.csv"
+  run_ks_cached "$name.kin.csv" "$deck" --format csv --kinematics; cp "$out" "$cli_tmp/k_kin.csv"
   python3 - "$cli_tmp/k_plain.csv" "$cli_tmp/k_kin.csv" <<'PY' && pass || fail "kinematics-csv-$name" "kinematics CSV is not the default CSV plus columns"
 import sys
 plain = open(sys.argv[1]).read().splitlines()

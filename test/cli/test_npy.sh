@@ -7,7 +7,9 @@
 npy_pairs=()
 for deck in data/*.nml; do
   name=$(basename "$deck" .nml)
-  "$KINETOSTAT" "$deck" --format csv --kinematics --quiet -o "$cli_tmp/npy_$name.csv" 2>/dev/null || continue
+  run_ks_cached "$name.kin.csv" "$deck" --format csv --kinematics
+  [ "$rc" -eq 0 ] || continue
+  cp "$out" "$cli_tmp/npy_$name.csv"
   run_ks "$deck" --format npy --kinematics --quiet -o "$cli_tmp/npy_$name.npy"
   if [ "$rc" -ne 0 ]; then fail "npy-$name" "exit $rc: $(head -c 300 "$err")"; continue; fi
   npy_pairs+=("$cli_tmp/npy_$name.npy" "$cli_tmp/npy_$name.csv")
