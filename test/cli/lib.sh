@@ -132,3 +132,17 @@ run_ks_cached() {
   fi
   out="$dir/$key.out"; err="$dir/$key.err"; read -r rc <"$dir/$key.rc"
 }
+
+# from_golden NAME SUFFIX ARGS...: the binary's output of data/NAME.nml with ARGS in $out (and
+# $rc), for a script that checks what the bundled decks' outputs look like:
+# data/expected/NAME.SUFFIX when there is one - tools/test checks that the goldens are
+# the binary's output byte for byte (tools/regen-goldens: SUFFIX csv is --format csv, svg
+# --format svg, ru.table --lang ru) - otherwise the binary run.
+from_golden() {
+  local name="$1" suffix="$2"; shift 2
+  if [ -f "data/expected/$name.$suffix" ]; then
+    out="$cli_tmp/golden.out"; cp "data/expected/$name.$suffix" "$out"; rc=0
+  else
+    run_ks "data/$name.nml" "$@"
+  fi
+}

@@ -17,18 +17,6 @@ legible_dir="$cli_tmp/legible"
 mkdir -p "$legible_dir"
 model_sheets=(); model_ru=(); plans_sheets=(); ru_sheets=()
 
-# from_golden NAME SUFFIX ARGS...: the binary's output of data/NAME.nml with ARGS in $out (and
-# $rc): data/expected/NAME.SUFFIX when there is one - tools/test checks that the goldens are
-# the binary's output byte for byte (tools/regen-goldens: SUFFIX csv is --format csv, svg
-# --format svg, ru.table --lang ru) - otherwise the binary run.
-from_golden() {
-  local name="$1" suffix="$2"; shift 2
-  if [ -f "data/expected/$name.$suffix" ]; then
-    out="$cli_tmp/golden.out"; cp "data/expected/$name.$suffix" "$out"; rc=0
-  else
-    run_ks "data/$name.nml" "$@"
-  fi
-}
 for deck in data/*.nml; do
   name=$(basename "$deck" .nml)
   [ "$name" = assur_toggle ] && continue

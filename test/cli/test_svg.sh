@@ -3,7 +3,8 @@
 # the CSV's force components; --pairs selects and rejects; the checks can fail.
 # The PNG check (0.7 s of Python a sheet) runs in the default suite on four sheets (PR 3207, the
 # generic six-bar with friction, a cam, a planetary gear train) and PR 3207's --at sheet, on
-# every sheet with tools/test --long.
+# every sheet with tools/test --long. The sheets and CSV files of the bundled decks are their
+# goldens (lib.sh from_golden).
 svg_check="$root/tools/svg_check.py"
 # png_wanted NAME: whether the sheet of deck NAME is rendered and checked as a PNG in this run
 png_wanted() {
@@ -22,7 +23,7 @@ for deck in data/*.nml; do
   [ "$name" = assur_toggle ] && continue
   # the design kinds draw their own sheets (test/cli/test_synthesis.sh), no sheet of forces
   case "$name" in gear_geometry_*|planetary_synthesis*|cam_profile_*) continue ;; esac
-  run_ks "$deck" --format svg
+  from_golden "$name" svg --format svg
   if [ "$rc" -ne 0 ]; then fail "svg-runs-$name" "rc=$rc: $(head -c 300 "$err")"; continue; fi
   cp "$out" "$cli_tmp/$name.svg"
   # well-formed XML
@@ -40,7 +41,7 @@ for deck in data/*.nml; do
   fi
   # hodographs = the CSV's components (the gear decks have stages, no hodographs)
   case "$name" in gears_*) continue ;; esac
-  run_ks "$deck" --format csv; cp "$out" "$cli_tmp/$name.csv"
+  from_golden "$name" csv --format csv; cp "$out" "$cli_tmp/$name.csv"
   printf 'svg-hodographs-%s\thodographs\t%s\t%s\n' "$name" "$cli_tmp/$name.svg" "$cli_tmp/$name.csv" >>"$svg_batch"
 done
 python3 "$svg_check" batch "$svg_batch" >"$cli_tmp/svg_batch.out" 2>&1
