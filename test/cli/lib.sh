@@ -121,7 +121,7 @@ heavy_deck() {
 
 # run_ks_cached KEY ARGS...: run_ks ARGS once per suite run: the scripts that need the same
 # output (the CSV with --kinematics of every bundled deck: test_dxf, test_kinematics,
-# test_npy) share it under $cli_tmp/cache/KEY; $out, $err and $rc as run_ks sets them (the
+# test_npy, test_plans) share it under $cli_tmp/cache/KEY; $out, $err and $rc as run_ks sets them (the
 # files are the cache's: copy before changing them).
 run_ks_cached() {
   local key="$1"; shift

@@ -28,6 +28,9 @@ par_forms=("--format table" "--format csv" "--format json" "--format svg" "--for
 par_i=0
 for deck in data/*.nml; do
   name=$(basename "$deck" .nml)
+  # the heavy deck (lib.sh) with --long only: the &linkage engine's threads are the other
+  # &linkage decks', the dynamics stage's the other flywheel decks'
+  if heavy_deck "$name"; then par_i=$((par_i + 1)); continue; fi
   for j in 0 1 2 3 4; do
     if [ "${KINETOSTAT_LONG:-0}" != 1 ] && [ $((par_i % 5)) -ne "$j" ]; then continue; fi
     # shellcheck disable=SC2086 # the form is words

@@ -39,7 +39,7 @@ for spec in assur_fourbar:lever,polygons assur_fourbar_global:lever,polygons ass
   case ",$checks," in *,lever,*) flags="$flags --lever" ;; esac
   case ",$checks," in *,polygons,*) flags="$flags --polygons" ;; esac
   case ",$checks," in *,groups,*) flags="$flags --groups" ;; esac
-  run_ks "data/$name.nml" --format csv --kinematics
+  run_ks_cached "$name.kin.csv" "data/$name.nml" --format csv --kinematics
   cp "$out" "$plans_dir/$name.csv"
   steps=$(($(wc -l <"$out") - 1))
   ks=$(printf '%s\n' 1 2 $(((steps + 1) / 2)) "$steps" | awk '$1 <= '"$steps"' && !seen[$1]++')
