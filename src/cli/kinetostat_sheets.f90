@@ -250,7 +250,9 @@ contains
     character(len=:), allocatable :: point, known, start_name, step_name, input
     logical :: slider
     integer :: link, link_number, c_in, c_omega, turns, n_rows, r0, it, c, ios, every
-    real(wp) :: phi, c0, sgn, step, delta
+    real(wp) :: phi, c0, sgn, step, phi_low, phi_high, d_low, d_high, stroke
+    real(wp), allocatable :: s_base(:)
+    character(len=:), allocatable :: pivot
 
     o = options
     o%format = format_summary
@@ -303,6 +305,17 @@ contains
     known = trim(topo%links(link)%name)
     read (known, *, iostat=ios) link_number
     if (ios /= 0) return
+    ! the input link's pivot (a slider's dead centres are told apart by the distance from it)
+    pivot = ""
+    do c = 1, size(topo%links)
+      if (trim(topo%links(c)%name) /= input(4:) .or. .not. allocated(topo%pivots)) cycle
+      do it = 1, size(topo%links(c)%points)
+        if (any(topo%pivots == topo%links(c)%points(it))) then
+          pivot = trim(topo%links(c)%points(it))
+          exit
+        end if
+      end do
+    end do
     turns = 1
     if (base%column_index("dT") > 0 .and. base%row_count() > 1) then
       if (maxval(base%rows(c_in, 1:base%row_count())) - minval(base%rows(c_in, 1:base%row_count())) > 540.0_wp) &
@@ -323,30 +336,65 @@ contains
     if (.not. allocated(probe%rows) .or. probe%row_count() < 2) return
     c0 = probe%rows(c_in, 1)
     sgn = sign(1.0_wp, probe%rows(c_in, 2) - c0)
-    ! the extreme: the deck's step of the smallest s, then Newton on v = 0
+    ! the two extremes: the deck's steps of the smallest and the largest s, then Newton on
+    ! v = 0 from each
     if (size(s) < 1) return
-    r0 = minloc(s, dim=1)
-    phi = base%rows(c_in, r0)
-    do it = 1, 12
-      call run_at(phi, probe)
-      if (.not. allocated(probe%rows)) return
-      call output_motion(topo, drawing, probe, 1, link_number, link, slider, point, s, v, a, err)
-      if (allocated(err)) return
-      if (abs(a(1)) <= tiny(1.0_wp) .or. abs(probe%rows(c_omega, 1)) <= tiny(1.0_wp)) exit
-      delta = -v(1) * probe%rows(c_omega, 1) / a(1) * 180.0_wp / acos(-1.0_wp)
-      if (abs(delta) > 360.0_wp / real(options%course_positions, wp)) then
-        ! no convergence near the step: the step's angle
-        phi = base%rows(c_in, r0)
-        exit
-      end if
-      phi = phi + delta
-      if (abs(delta) < 1.0e-10_wp) exit
-    end do
+    s_base = s
+    phi_low = extreme(minloc(s_base, dim=1), d_low)
+    phi_high = extreme(maxloc(s_base, dim=1), d_high)
+    ! position 0 begins the working stroke, the longer one in crank angle (a quick-return
+    ! mechanism's); strokes of equal angle (within 0.5 deg: a central slider-crank, an engine)
+    ! begin at the extreme farther from the input link's pivot (a slider's top dead centre)
+    stroke = modulo((phi_high - phi_low) * sgn, 360.0_wp)
+    if (stroke > 180.5_wp) then
+      phi = phi_low
+    else if (stroke < 179.5_wp) then
+      phi = phi_high
+    else if (d_high >= d_low) then
+      phi = phi_high
+    else
+      phi = phi_low
+    end if
     call run_at(phi, probe)
     if (.not. allocated(probe%rows)) return
     allocate (options%course_plan, source=probe)
     options%course_every = every
   contains
+    !> The input angle (deg) of the output link's extreme nearest the base run's row `r`:
+    !> Newton's method on its velocity, phi <- phi - v omega1 / a (the row's angle when it
+    !> does not converge near it); `far` the output point's distance from the input link's
+    !> pivot there (m; 0 for a rocker).
+    real(wp) function extreme(r, far) result(angle)
+      integer, intent(in) :: r
+      real(wp), intent(out) :: far
+      integer :: i, cx, cy, px, py
+      real(wp) :: step_angle
+      angle = base%rows(c_in, r)
+      far = 0.0_wp
+      do i = 1, 12
+        call run_at(angle, probe)
+        if (.not. allocated(probe%rows)) return
+        call output_motion(topo, drawing, probe, 1, link_number, link, slider, point, s, v, a, err)
+        if (allocated(err)) return
+        if (abs(a(1)) <= tiny(1.0_wp) .or. abs(probe%rows(c_omega, 1)) <= tiny(1.0_wp)) exit
+        step_angle = -v(1) * probe%rows(c_omega, 1) / a(1) * 180.0_wp / acos(-1.0_wp)
+        if (abs(step_angle) > 360.0_wp / real(options%course_positions, wp)) then
+          angle = base%rows(c_in, r)
+          exit
+        end if
+        angle = angle + step_angle
+        if (abs(step_angle) < 1.0e-10_wp) exit
+      end do
+      call run_at(angle, probe)
+      if (.not. allocated(probe%rows) .or. .not. slider .or. len(pivot) == 0) return
+      cx = probe%column_index("x_"//point)
+      cy = probe%column_index("y_"//point)
+      px = probe%column_index("x_"//pivot)
+      py = probe%column_index("y_"//pivot)
+      if (min(cx, cy, px, py) > 0) far = norm2([probe%rows(cx, 1) - probe%rows(px, 1), &
+        probe%rows(cy, 1) - probe%rows(py, 1)])
+    end function extreme
+
     !> The run of the deck from the table's input angle `angle` (deg) at the plan's steps;
     !> a run that fails leaves `t` without rows (no plan).
     subroutine run_at(angle, t)

@@ -262,7 +262,7 @@ contains
       if (positions%input_column > 0) then
         foot = words("position 0: the extreme position of link ", &
           "положение 0: крайнее положение звена ", lang)//output_name()
-        foot = foot//", φ1 = "//fixed_number(positions%rows(positions%input_column, 1), 2)//" "// &
+        foot = foot//", φ1 = "//fixed_number(modulo(positions%rows(positions%input_column, 1), 360.0_wp), 2)//" "// &
           unit_word("deg", lang)//words("; the positions every ", "; положения через ", lang)// &
           fixed_number(360.0_wp / real(n_positions, wp), 0)//" "//unit_word("deg", lang)
         call sheet%text(region(1) + 2.0_wp, region(4) - 7.5_wp, foot, "small")
@@ -480,14 +480,26 @@ contains
     !> link over the input angle, in column 2.
     subroutine output_diagrams()
       integer :: out_link
-      real(wp), allocatable :: s(:), v(:), a(:)
+      real(wp), allocatable :: s(:), v(:), a(:), s0(:), v0(:), a0(:)
       character(len=:), allocatable :: name, point
-      logical :: slider
+      logical :: slider, far
       type(error_t), allocatable :: err
       call output_motion(topo, drawing, table, k, output_link, out_link, slider, point, s, v, a, err)
       if (allocated(err) .or. out_link == 0) return
       name = trim(topo%links(out_link)%name)
-      s = s - minval(s)
+      ! from the extreme position 0 of the plan of positions (without a plan, the smallest)
+      far = .false.
+      if (planned) then
+        call output_motion(topo, drawing, positions, 1, output_link, out_link, slider, point, s0, v0, a0, err)
+        if (.not. allocated(err) .and. size(s0) > 0) far = abs(s0(1) - maxval(s)) < abs(s0(1) - minval(s))
+      end if
+      if (far) then
+        s = maxval(s) - s
+        v = -v
+        a = -a
+      else
+        s = s - minval(s)
+      end if
       if (slider) then
         call put_cycle_chart(sheet, x2, y, cw, hmax, phi, mu_phi, s, unit_word("m", lang), "s", words( &
           "Displacement of link ", "Перемещение звена ", lang)//name//words(" from its extreme position", &
