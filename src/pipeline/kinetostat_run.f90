@@ -200,8 +200,9 @@ contains
     type(sheet_t) :: sheet
     character(len=:), allocatable :: pairs_asked
     integer :: first, rows, k_at
-    !> The kinematics sheet's mechanism at its position.
+    !> The kinematics sheet's mechanism at its position and its plans.
     type(drawing_t) :: course_drawing
+    type(plans_t) :: course_plans
 
     rows = block_rows
     if (options%block_rows > 0) then
@@ -383,14 +384,15 @@ contains
             if (allocated(error)) return
             call mech%force_plan(table, k_at, course_drawing, error)
             if (allocated(error)) return
+            call build_plans(motion_topo, course_drawing, table, k_at, course_plans)
             if (allocated(options%course_plan)) then
               call draw_kinematics_sheet(mech%title(options%lang), table, motion_topo, course_drawing, k_at, &
                 iso_paper(options%paper, .true.), options%lang, sheet, options%course_plan, options%course_every, &
-                options%course_positions, point_name(), options%course_output_link)
+                options%course_positions, point_name(), options%course_output_link, course_plans)
             else
               call draw_kinematics_sheet(mech%title(options%lang), table, motion_topo, course_drawing, k_at, &
                 iso_paper(options%paper, .true.), options%lang, sheet, every=1, n_positions=options%course_positions, &
-                point_asked=point_name(), output_link=options%course_output_link)
+                point_asked=point_name(), output_link=options%course_output_link, plans=course_plans)
             end if
           else if (options%course_sheet == course_dynamics) then
             call draw_dynamics_sheet(mech%title(options%lang), table, iso_paper(options%paper, .true.), options%lang, &

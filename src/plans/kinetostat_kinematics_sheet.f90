@@ -29,6 +29,8 @@ module kinetostat_kinematics_sheet
   use kinetostat_dynamics_sheet, only: sheet_header, plot_t, put_cycle_chart, put_cycle_curve
   use kinetostat_plans_base, only: slide_t, slides_of, slide_is_pair, lists, sliding_on, plan_group_t
   use kinetostat_plans_groups, only: plan_groups
+  use kinetostat_plans_base, only: plans_t
+  use kinetostat_plans_draw, only: draw_kinematic_plans
   implicit none
   private
   public :: draw_kinematics_sheet, output_motion
@@ -40,7 +42,7 @@ contains
 
   !> The kinematics sheet of row k on `paper` (landscape: three columns).
   subroutine draw_kinematics_sheet(title, table, topo, drawing, k, paper, lang, sheet, positions, every, n_positions, &
-                                   point_asked, output_link)
+                                   point_asked, output_link, plans)
     !> Title of the mechanism.
     character(*), intent(in) :: title
     !> The run (its kinematics columns with the points' velocities and accelerations).
@@ -64,6 +66,8 @@ contains
     !> (--output-link; 0: the last link of the last group).
     character(*), intent(in) :: point_asked
     integer, intent(in) :: output_link
+    !> The plans of velocities and accelerations at row k (none: the values table alone).
+    type(plans_t), intent(in), optional :: plans
     type(mechanism_view_t) :: view
     type(drawing_t) :: all_positions
     type(drawing_t), allocatable :: placed(:)
@@ -152,9 +156,32 @@ contains
       call output_diagrams()
     end if
 
-    ! the values at the position
-    call put_values(x3, top, cw, inner(4) - block_height - gap - top)
+    ! the values at the position, the plans of velocities and accelerations and the values
+    ! read off them
+    if (present(plans)) then
+      call put_values(x3, top, cw, values_height())
+      y = top + values_height() + gap
+      hmax = inner(4) - block_height - gap - y
+      call draw_kinematic_plans(sheet, view, plans, [x3, y, x3 + cw, y + 0.37_wp * hmax], &
+        [x3, y + 0.37_wp * hmax + gap, x3 + cw, y + 0.74_wp * hmax], &
+        [x3, y + 0.74_wp * hmax + 2.0_wp * gap, x3 + cw, y + hmax], lang)
+    else
+      call put_values(x3, top, cw, inner(4) - block_height - gap - top)
+    end if
   contains
+
+    !> The height of the values table's panel, mm: its rows and headings.
+    real(wp) function values_height() result(h)
+      integer :: ip, il, n
+      n = 2
+      do ip = 1, size(drawing%points)
+        if (table%column_index("vx_"//trim(drawing%points(ip)%name)) > 0) n = n + 1
+      end do
+      do il = 1, size(topo%links)
+        if (table%column_index("omega"//trim(topo%links(il)%name)) > 0) n = n + 1
+      end do
+      h = 9.0_wp + 4.2_wp * n + 4.0_wp
+    end function values_height
 
     !> The output link's number ("" when there is none).
     function output_name() result(name)
