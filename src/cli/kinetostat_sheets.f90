@@ -249,7 +249,7 @@ contains
     real(wp), allocatable :: s(:), v(:), a(:)
     character(len=:), allocatable :: point, known, start_name, step_name, input
     logical :: slider
-    integer :: link, link_number, c_in, c_omega, turns, n_rows, r0, it, c, ios, every
+    integer :: link, link_number, c_in, c_omega, turns, n_rows, it, c, ios, every
     real(wp) :: phi, c0, sgn, step, phi_low, phi_high, d_low, d_high, stroke
     real(wp), allocatable :: s_base(:)
     character(len=:), allocatable :: pivot
@@ -318,8 +318,9 @@ contains
     end do
     turns = 1
     if (base%column_index("dT") > 0 .and. base%row_count() > 1) then
-      if (maxval(base%rows(c_in, 1:base%row_count())) - minval(base%rows(c_in, 1:base%row_count())) > 540.0_wp) &
+      if (maxval(base%rows(c_in, 1:base%row_count())) - minval(base%rows(c_in, 1:base%row_count())) > 540.0_wp) then
         turns = 2
+      end if
     end if
     every = rows_per_position
     ! a &sixbar deck's load is a table of one value a step: its runs keep the deck's steps
@@ -510,7 +511,8 @@ contains
       ! (a steady cycle is one block: its rows are all held)
       n = table%row_count()
       omega_m = 0.5_wp * (maxval(table%rows(cw, 1:n)) + minval(table%rows(cw, 1:n)))
-      effort = 0.5_wp * omega_m**2 * table%rows(cj, 1:n) - table%rows(cm, 1:n)
+      allocate (effort(n))
+      effort(:) = 0.5_wp * omega_m**2 * table%rows(cj, 1:n) - table%rows(cm, 1:n)
       if (n > 0) k = table%run_row(maxloc(abs(effort), dim=1))
       return
     end if
