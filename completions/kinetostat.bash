@@ -17,7 +17,7 @@ _kinetostat() {
     balance) opts="-o --output --method --fraction --lang --max-deck-size -q --quiet" ;;
     structure) opts="--lang -o --output --max-deck-size -q --quiet" ;;
     contour) opts="--set -o --output --max-deck-size -q --quiet" ;;
-    sheets) opts="-o --output --paper --lang --at --designation --sheet-numbers --student --group --variant --set --max-deck-size -q --quiet" ;;
+    sheets) opts="-o --output --paper --lang --at --designation --sheet-numbers --positions --point --output-link --student --group --variant --set --max-deck-size -q --quiet" ;;
     *) command=""
        opts="--set -o --output --format --pairs --at --plans --lang --kinematics --frame --shaking --student --group --variant --max-deck-size --allow-selfcheck-failure -q --quiet --strict --version" ;;
   esac
@@ -30,11 +30,12 @@ _kinetostat() {
     --lang) COMPREPLY=($(compgen -W "en ru" -- "$cur")); return ;;
     --method) COMPREPLY=($(compgen -W "full crank partial" -- "$cur")); return ;;
     --paper) COMPREPLY=($(compgen -W "A1 A2 A3 A4" -- "$cur")); return ;;
+    --positions) COMPREPLY=($(compgen -W "8 12" -- "$cur")); return ;;
     -o|--output)
       if [ "$command" = sheets ]; then COMPREPLY=($(compgen -d -- "$cur")); else COMPREPLY=($(compgen -f -- "$cur")); fi
       return ;;
     template) COMPREPLY=($(compgen -W "$kinds" -- "$cur")); return ;;
-    --rtol|--atol|--set|--pairs|--at|--vary|--part|--jobs|--max-deck-size|--fraction|--student|--group|--variant|--designation|--sheet-numbers)
+    --rtol|--atol|--set|--pairs|--at|--vary|--part|--jobs|--max-deck-size|--fraction|--student|--group|--variant|--designation|--sheet-numbers|--point|--output-link)
       COMPREPLY=(); return ;;
   esac
   if [[ "$cur" == -* ]]; then

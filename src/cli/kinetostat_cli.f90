@@ -1058,6 +1058,33 @@ contains
         args%sheet_options = .true.
         call parse_sheet_numbers(value, args%sheet_numbers, error)
         if (allocated(error)) return
+      case ("--positions")
+        args%sheet_options = .true.
+        if (value /= "8" .and. value /= "12") then
+          call fatal_error(error, exit_input, "--positions must be 8 or 12 (got '"//value//"')")
+          return
+        end if
+        read (value, *) args%options%course_positions
+      case ("--point")
+        args%sheet_options = .true.
+        if (len_trim(value) == 0 .or. len(value) > 16 .or. verify(value, &
+            "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_") /= 0) then
+          call fatal_error(error, exit_input, "--point needs a point's name as in the deck's columns "// &
+            "(B, S2, ...), got '"//value//"'")
+          return
+        end if
+        args%options%course_point = value
+      case ("--output-link")
+        args%sheet_options = .true.
+        if (len(value) == 0 .or. len(value) > 3 .or. verify(value, "0123456789") /= 0) then
+          call fatal_error(error, exit_input, "--output-link needs a link's number 1..999 (got '"//value//"')")
+          return
+        end if
+        read (value, *) args%options%course_output_link
+        if (args%options%course_output_link < 1) then
+          call fatal_error(error, exit_input, "--output-link needs a link's number 1..999 (got '"//value//"')")
+          return
+        end if
       case ("structure")
         if (i /= 1) then
           call fatal_error(error, exit_usage, "structure must come first: kinetostat structure DECK [--lang ru]")
@@ -1106,9 +1133,10 @@ contains
     else if (args%sheets .and. (args%format_given .or. args%options%kinematics .or. args%options%shaking .or. &
              args%options%plans .or. allocated(args%options%pairs))) then
       call fatal_error(error, exit_usage, "sheets takes a deck, -o DIR, --paper, --lang, --at, --designation, "// &
-        "--sheet-numbers, --student, --group, --variant and --set only")
+        "--sheet-numbers, --positions, --point, --output-link, --student, --group, --variant and --set only")
     else if (args%sheet_options .and. .not. args%sheets) then
-      call fatal_error(error, exit_usage, "--paper, --designation and --sheet-numbers belong to the sheets "// &
+      call fatal_error(error, exit_usage, "--paper, --designation, --sheet-numbers, --positions, --point and "// &
+        "--output-link belong to the sheets "// &
         "subcommand: kinetostat sheets DECK -o DIR ...")
     else if (args%structure .and. (args%format_given .or. allocated(args%options%overrides) .or. &
              args%options%at_step > 0)) then

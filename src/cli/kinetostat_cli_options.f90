@@ -81,6 +81,9 @@ contains
       option_t("--paper", "", "", "A1|A2|A3|A4"), &
       option_t("--designation", "", "TEXT"), &
       option_t("--sheet-numbers", "", "N,N,..."), &
+      option_t("--positions", "", "", "8|12"), &
+      option_t("--point", "", "NAME"), &
+      option_t("--output-link", "", "I"), &
       option_t("--help", "-h"), &
       option_t("--version", "-V")]
   end function cli_options
@@ -98,8 +101,8 @@ contains
       command_t("balance", "DECK", "-o --method --fraction --lang --max-deck-size --quiet"), &
       command_t("structure", "DECK", "--lang -o --max-deck-size --quiet"), &
       command_t("contour", "DECK", "--set -o --max-deck-size --quiet"), &
-      command_t("sheets", "DECK", "-o!=DIR --paper --lang --at --designation --sheet-numbers --student --group " // &
-        "--variant --set --max-deck-size --quiet")]
+      command_t("sheets", "DECK", "-o!=DIR --paper --lang --at --designation --sheet-numbers --positions --point " // &
+        "--output-link --student --group --variant --set --max-deck-size --quiet")]
   end function cli_commands
 
   !> A list "a, b, c" as choices "a|b|c".

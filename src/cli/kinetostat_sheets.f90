@@ -23,6 +23,10 @@ module kinetostat_sheets
   use kinetostat_run, only: run_options_t, run_mechanism, format_summary, format_svg, format_dxf, format_plans, &
     course_dynamics, course_none, course_kinematics, course_kinetostatics
   use kinetostat_registry, only: create_mechanism, known_kinds
+  use kinetostat_override, only: override_t
+  use kinetostat_sketch, only: sketch_t
+  use kinetostat_drawing, only: drawing_t, drawing_from_sketch
+  use kinetostat_kinematics_sheet, only: output_motion
   implicit none
   private
   public :: write_course_sheets, sheet_names, parse_sheet_numbers
@@ -31,6 +35,9 @@ module kinetostat_sheets
   !> (each kind's mechanism_t%sheet_name: &gear_geometry, &planetary_synthesis, &cam_profile).
   character(*), parameter :: sheet_names(*) = [character(len=13) :: "kinematics", "kinetostatics", "dynamics", &
     "gears", "planetary", "cam"]
+  !> The plan of positions: rows of its run between two positions (the traced point's
+  !> trajectory is drawn through them all).
+  integer, parameter :: rows_per_position = 6
   !> The files of a sheet.
   character(*), parameter :: sheet_suffixes(*) = [character(len=4) :: ".svg", ".dxf", ".pdf"]
 
@@ -140,6 +147,8 @@ contains
       case (1)
         o%at_step = 0
         o%course_at = k_at
+        call solve_positions(path, group, o, error)
+        if (allocated(error)) return
         o%kinematics = .true.
         o%course_sheet = course_kinematics
         o%format = format_svg
@@ -219,13 +228,230 @@ contains
     end subroutine add_file
   end subroutine write_course_sheets
 
-  !> One run of the deck into `out` (no spool: the sheets are small).
-  subroutine run_one(path, options, table, out, error)
+  !> The plan of positions of the kinematics sheet into options%course_plan: the output
+  !> link's extreme position (the smallest s of a slider, ψ of a rocker) found by Newton's
+  !> method on its velocity from the deck's step nearest to it (v = 0: phi <- phi - v
+  !> omega1/a), then the run of the deck from that input angle at equal steps,
+  !> rows_per_position a position, over one turn (two with a cycle of 720 deg). A kind whose
+  !> input angle cannot be set (&pr3050) gets none. --point and --output-link are checked
+  !> here (exit 2 naming the option).
+  subroutine solve_positions(path, group, options, error)
+    character(*), intent(in) :: path, group
+    type(run_options_t), intent(inout) :: options
+    type(error_t), allocatable, intent(out) :: error
+    type(run_options_t) :: o
+    type(step_table_t) :: base, probe
+    type(text_buffer_t) :: scratch
+    class(mechanism_t), allocatable :: mech
+    type(sketch_t) :: topo
+    type(drawing_t) :: drawing
+    type(error_t), allocatable :: err
+    real(wp), allocatable :: s(:), v(:), a(:)
+    character(len=:), allocatable :: point, known, start_name, step_name, input
+    logical :: slider
+    integer :: link, link_number, c_in, c_omega, turns, n_rows, it, c, ios, every
+    real(wp) :: phi, c0, sgn, step, phi_low, phi_high, d_low, d_high, stroke
+    real(wp), allocatable :: s_base(:)
+    character(len=:), allocatable :: pivot
+
+    o = options
+    o%format = format_summary
+    o%kinematics = .true.
+    o%at_step = 0
+    o%course_sheet = course_none
+    call run_one(path, o, base, scratch, error, mech)
+    if (allocated(error)) return
+    call mech%sketch(topo)
+    if (.not. topo%available) return
+    call drawing_from_sketch(topo, base, 1, drawing, err)
+    if (allocated(err)) return
+    call mech%force_plan(base, 1, drawing, err)
+    if (allocated(err)) return
+    call output_motion(topo, drawing, base, 1, options%course_output_link, link, slider, point, s, v, a, err)
+    if (allocated(err)) then
+      if (options%course_output_link > 0) call move_alloc(err, error)
+      return
+    end if
+    if (allocated(options%course_point)) then
+      if (base%column_index("x_"//options%course_point) == 0) then
+        known = ""
+        do c = 1, size(base%columns)
+          if (index(base%columns(c)%name, "x_") /= 1) cycle
+          if (len(known) > 0) known = known//", "
+          known = known//base%columns(c)%name(3:)
+        end do
+        call fatal_error(error, exit_input, "--point "//options%course_point//": "//path//" has no point "// &
+          options%course_point//" (points: "//known//")")
+        return
+      end if
+    end if
+    ! the deck's input angle and how to set it
+    c_in = base%input_column
+    if (c_in == 0) return
+    input = base%columns(c_in)%name
+    if (index(input, "phi") /= 1) return
+    c_omega = base%column_index("omega"//input(4:))
+    if (c_omega == 0) return
+    select case (group)
+    case ("pr3207", "assur", "sixbar")
+      start_name = "phi_start"
+      step_name = "dphi"
+    case ("linkage")
+      start_name = "drive(1)%start"
+      step_name = "drive(1)%step"
+    case default
+      return
+    end select
+    known = trim(topo%links(link)%name)
+    read (known, *, iostat=ios) link_number
+    if (ios /= 0) return
+    ! the input link's pivot (a slider's dead centres are told apart by the distance from it)
+    pivot = ""
+    do c = 1, size(topo%links)
+      if (trim(topo%links(c)%name) /= input(4:) .or. .not. allocated(topo%pivots)) cycle
+      do it = 1, size(topo%links(c)%points)
+        if (any(topo%pivots == topo%links(c)%points(it))) then
+          pivot = trim(topo%links(c)%points(it))
+          exit
+        end if
+      end do
+    end do
+    turns = 1
+    if (base%column_index("dT") > 0 .and. base%row_count() > 1) then
+      if (maxval(base%rows(c_in, 1:base%row_count())) - minval(base%rows(c_in, 1:base%row_count())) > 540.0_wp) then
+        turns = 2
+      end if
+    end if
+    every = rows_per_position
+    ! a &sixbar deck's load is a table of one value a step: its runs keep the deck's steps
+    if (group == "sixbar") then
+      every = (base%run_rows() - 1) / (turns * options%course_positions)
+      if (every < 1 .or. every * turns * options%course_positions /= base%run_rows() - 1) return
+    end if
+    n_rows = turns * options%course_positions * every + 1
+    step = 360.0_wp / real(options%course_positions * every, wp)
+    ! the deck's angle against the table's: a run from the deck's angle 0
+    c0 = 0.0_wp
+    sgn = 1.0_wp
+    call run_at(0.0_wp, probe)
+    if (.not. allocated(probe%rows) .or. probe%row_count() < 2) return
+    c0 = probe%rows(c_in, 1)
+    sgn = sign(1.0_wp, probe%rows(c_in, 2) - c0)
+    ! the two extremes: the deck's steps of the smallest and the largest s, then Newton on
+    ! v = 0 from each
+    if (size(s) < 1) return
+    s_base = s
+    phi_low = extreme(minloc(s_base, dim=1), d_low)
+    phi_high = extreme(maxloc(s_base, dim=1), d_high)
+    ! position 0 begins the working stroke, the longer one in crank angle (a quick-return
+    ! mechanism's); strokes of equal angle (within 0.5 deg: a central slider-crank, an engine)
+    ! begin at the extreme farther from the input link's pivot (a slider's top dead centre)
+    stroke = modulo((phi_high - phi_low) * sgn, 360.0_wp)
+    if (stroke > 180.5_wp) then
+      phi = phi_low
+    else if (stroke < 179.5_wp) then
+      phi = phi_high
+    else if (d_high >= d_low) then
+      phi = phi_high
+    else
+      phi = phi_low
+    end if
+    call run_at(phi, probe)
+    if (.not. allocated(probe%rows)) return
+    allocate (options%course_plan, source=probe)
+    options%course_every = every
+  contains
+    !> The input angle (deg) of the output link's extreme nearest the base run's row `r`:
+    !> Newton's method on its velocity, phi <- phi - v omega1 / a (the row's angle when it
+    !> does not converge near it); `far` the output point's distance from the input link's
+    !> pivot there (m; 0 for a rocker).
+    real(wp) function extreme(r, far) result(angle)
+      integer, intent(in) :: r
+      real(wp), intent(out) :: far
+      integer :: i, cx, cy, px, py
+      real(wp) :: step_angle
+      angle = base%rows(c_in, r)
+      far = 0.0_wp
+      do i = 1, 12
+        call run_at(angle, probe)
+        if (.not. allocated(probe%rows)) return
+        call output_motion(topo, drawing, probe, 1, link_number, link, slider, point, s, v, a, err)
+        if (allocated(err)) return
+        if (abs(a(1)) <= tiny(1.0_wp) .or. abs(probe%rows(c_omega, 1)) <= tiny(1.0_wp)) exit
+        step_angle = -v(1) * probe%rows(c_omega, 1) / a(1) * 180.0_wp / acos(-1.0_wp)
+        if (abs(step_angle) > 360.0_wp / real(options%course_positions, wp)) then
+          angle = base%rows(c_in, r)
+          exit
+        end if
+        angle = angle + step_angle
+        if (abs(step_angle) < 1.0e-10_wp) exit
+      end do
+      call run_at(angle, probe)
+      if (.not. allocated(probe%rows) .or. .not. slider .or. len(pivot) == 0) return
+      cx = probe%column_index("x_"//point)
+      cy = probe%column_index("y_"//point)
+      px = probe%column_index("x_"//pivot)
+      py = probe%column_index("y_"//pivot)
+      if (min(cx, cy, px, py) > 0) far = norm2([probe%rows(cx, 1) - probe%rows(px, 1), &
+        probe%rows(cy, 1) - probe%rows(py, 1)])
+    end function extreme
+
+    !> The run of the deck from the table's input angle `angle` (deg) at the plan's steps;
+    !> a run that fails leaves `t` without rows (no plan).
+    subroutine run_at(angle, t)
+      real(wp), intent(in) :: angle
+      type(step_table_t), intent(out) :: t
+      type(run_options_t) :: p
+      type(override_t), allocatable :: extra(:)
+      type(text_buffer_t) :: text
+      type(error_t), allocatable :: e
+      real(wp) :: deck_angle
+      integer :: n_extra
+      deck_angle = (angle - c0) * sgn
+      n_extra = 3
+      if (group == "sixbar") n_extra = 4
+      allocate (extra(n_extra))
+      extra(1)%name = start_name
+      extra(1)%value = real_text(deck_angle)
+      extra(2)%name = step_name
+      extra(2)%value = real_text(step)
+      extra(3)%name = "n"
+      extra(3)%value = int_str(n_rows)
+      if (group == "sixbar") then
+        extra(4)%name = "start_at_extreme"
+        extra(4)%value = ".false."
+      end if
+      p = o
+      if (allocated(p%overrides)) then
+        p%overrides = [p%overrides, extra]
+      else
+        p%overrides = extra
+      end if
+      call run_one(path, p, t, text, e)
+      if (allocated(e)) then
+        if (allocated(t%rows)) deallocate (t%rows)
+      end if
+    end subroutine run_at
+  end subroutine solve_positions
+
+  !> A real in namelist syntax, all its digits.
+  pure function real_text(x) result(text)
+    real(wp), intent(in) :: x
+    character(len=:), allocatable :: text
+    character(len=32) :: buffer
+    write (buffer, "(es25.17)") x
+    text = trim(adjustl(buffer))
+  end function real_text
+
+  !> One run of the deck into `out` (no spool: the sheets are small); `mech` the mechanism
+  !> run (its deck read).
+  subroutine run_one(path, options, table, out, error, mech_out)
     character(*), intent(in) :: path
     type(run_options_t), intent(in) :: options
     type(step_table_t), intent(out) :: table
     type(text_buffer_t), intent(inout) :: out
     type(error_t), allocatable, intent(out) :: error
+    class(mechanism_t), allocatable, intent(out), optional :: mech_out
     character(len=:), allocatable :: group
     class(mechanism_t), allocatable :: mech
     type(deck_source_t) :: source, patched
@@ -253,6 +479,7 @@ contains
     else
       call run_mechanism(mech, group, source, options, table, out, error)
     end if
+    if (present(mech_out)) call move_alloc(mech, mech_out)
   end subroutine run_one
 
   !> The place of the sheet called `name` in sheet_names (0: none).
@@ -264,13 +491,31 @@ contains
     k = 0
   end function sheet_index
 
-  !> The step of the largest |effort| of the first drive (the table's driver column; the
-  !> first step without one).
+  !> The step of the largest |effort| of the first drive at constant speed: the table's
+  !> driver column; with a steady cycle (the columns J_red, dJ_red, M_red, dT and the true
+  !> omega1), whose driver column is the constant M_d of the true motion, the effort of the
+  !> force analysis before the flywheel, M1 = omega_m^2/2 dJ_red - M_red (omega_m = (omega_max
+  !> + omega_min)/2: the drive's moment at the constant mean speed, which equals the driver
+  !> column of a run with dynamics = 'reduced'). The first step without a driver column.
   pure integer function effort_step(table) result(k)
     type(step_table_t), intent(in) :: table
     type(column_stats_t) :: s
-    integer :: c
+    integer :: c, cj, cm, cw, n
+    real(wp) :: omega_m
+    real(wp), allocatable :: effort(:)
     k = 1
+    cj = table%column_index("dJ_red")
+    cm = table%column_index("M_red")
+    cw = table%column_index("omega1")
+    if (cj > 0 .and. cm > 0 .and. cw > 0 .and. table%column_index("dT") > 0) then
+      ! (a steady cycle is one block: its rows are all held)
+      n = table%row_count()
+      omega_m = 0.5_wp * (maxval(table%rows(cw, 1:n)) + minval(table%rows(cw, 1:n)))
+      allocate (effort(n))
+      effort(:) = 0.5_wp * omega_m**2 * table%rows(cj, 1:n) - table%rows(cm, 1:n)
+      if (n > 0) k = table%run_row(maxloc(abs(effort), dim=1))
+      return
+    end if
     if (.not. allocated(table%driver)) return
     c = table%column_index(table%driver)
     if (c == 0) return

@@ -139,6 +139,15 @@ module kinetostat_run
     integer :: sheet_number = 0, sheet_count = 0
     !> The kinematics sheet's position (a row of the run; the sheet keeps every row).
     integer :: course_at = 1
+    !> The kinematics sheet's plan of positions: the number of positions (--positions, 8 or
+    !> 12), the traced point (--point; "": the coupler's centre of mass), the output link
+    !> (--output-link; 0: the last link of the last group), and the run at the positions'
+    !> angles that kinetostat sheets solved (course_every rows a position; none: no plan).
+    integer :: course_positions = 12
+    character(len=:), allocatable :: course_point
+    integer :: course_output_link = 0
+    integer :: course_every = 1
+    type(step_table_t), allocatable :: course_plan
   end type run_options_t
 
 contains
@@ -191,8 +200,9 @@ contains
     type(sheet_t) :: sheet
     character(len=:), allocatable :: pairs_asked
     integer :: first, rows, k_at
-    !> The kinematics sheet's mechanism at its position.
+    !> The kinematics sheet's mechanism at its position and its plans.
     type(drawing_t) :: course_drawing
+    type(plans_t) :: course_plans
 
     rows = block_rows
     if (options%block_rows > 0) then
@@ -261,6 +271,13 @@ contains
     if (allocated(error)) call later_spool%discard()
     if (allocated(error)) call shaking_spool%discard()
   contains
+    !> The kinematics sheet's traced point asked (--point; "" none).
+    function point_name() result(name)
+      character(len=:), allocatable :: name
+      name = ""
+      if (allocated(options%course_point)) name = options%course_point
+    end function point_name
+
     !> Solve, check, tally and write the next block.
     subroutine run_block(error)
       type(error_t), allocatable, intent(out) :: error
@@ -367,8 +384,16 @@ contains
             if (allocated(error)) return
             call mech%force_plan(table, k_at, course_drawing, error)
             if (allocated(error)) return
-            call draw_kinematics_sheet(mech%title(options%lang), table, motion_topo, course_drawing, k_at, &
-                                       iso_paper(options%paper, .true.), options%lang, sheet)
+            call build_plans(motion_topo, course_drawing, table, k_at, course_plans)
+            if (allocated(options%course_plan)) then
+              call draw_kinematics_sheet(mech%title(options%lang), table, motion_topo, course_drawing, k_at, &
+                iso_paper(options%paper, .true.), options%lang, sheet, options%course_plan, options%course_every, &
+                options%course_positions, point_name(), options%course_output_link, course_plans)
+            else
+              call draw_kinematics_sheet(mech%title(options%lang), table, motion_topo, course_drawing, k_at, &
+                iso_paper(options%paper, .true.), options%lang, sheet, every=1, n_positions=options%course_positions, &
+                point_asked=point_name(), output_link=options%course_output_link, plans=course_plans)
+            end if
           else if (options%course_sheet == course_dynamics) then
             call draw_dynamics_sheet(mech%title(options%lang), table, iso_paper(options%paper, .true.), options%lang, &
                                      sheet)

@@ -14,7 +14,7 @@
 !> - the values at the position: every point's speed and acceleration, every link's ω and ε.
 module kinetostat_kinematics_sheet
   use kinetostat_kinds, only: wp, deg_to_rad
-  use kinetostat_format, only: short_number
+  use kinetostat_format, only: short_number, fixed_number
   use kinetostat_text, only: int_str
   use kinetostat_step_table, only: step_table_t
   use kinetostat_labels, only: unit_word => unit_symbol
@@ -22,15 +22,18 @@ module kinetostat_kinematics_sheet
   use kinetostat_title_block, only: put_sheet_format, title_block_from_table, block_height
   use kinetostat_scales, only: round_scale, scale_number
   use kinetostat_sketch, only: sketch_t
-  use kinetostat_drawing, only: drawing_t, column_value
+  use kinetostat_drawing, only: drawing_t, column_value, drawing_from_sketch, body_block, point_plain
+  use kinetostat_error, only: error_t, fatal_error, exit_input
   use kinetostat_mechanism_view, only: mechanism_view_t, fit_mechanism_view, draw_mechanism
   use kinetostat_design_sheet, only: words, put_table
   use kinetostat_dynamics_sheet, only: sheet_header, plot_t, put_cycle_chart, put_cycle_curve
   use kinetostat_plans_base, only: slide_t, slides_of, slide_is_pair, lists, sliding_on, plan_group_t
   use kinetostat_plans_groups, only: plan_groups
+  use kinetostat_plans_base, only: plans_t
+  use kinetostat_plans_draw, only: draw_kinematic_plans
   implicit none
   private
-  public :: draw_kinematics_sheet
+  public :: draw_kinematics_sheet, output_motion
 
   !> Gap between panels, mm.
   real(wp), parameter :: gap = 6.0_wp
@@ -38,7 +41,8 @@ module kinetostat_kinematics_sheet
 contains
 
   !> The kinematics sheet of row k on `paper` (landscape: three columns).
-  subroutine draw_kinematics_sheet(title, table, topo, drawing, k, paper, lang, sheet)
+  subroutine draw_kinematics_sheet(title, table, topo, drawing, k, paper, lang, sheet, positions, every, n_positions, &
+                                   point_asked, output_link, plans)
     !> Title of the mechanism.
     character(*), intent(in) :: title
     !> The run (its kinematics columns with the points' velocities and accelerations).
@@ -53,7 +57,21 @@ contains
     type(paper_t), intent(in) :: paper
     integer, intent(in) :: lang
     type(sheet_t), intent(out) :: sheet
+    !> The plan of positions: the run at equal input angles from the output link's extreme
+    !> position, `every` rows a position, `n_positions` positions (8 or 12) over rows 1 ..
+    !> n_positions*every + 1 (none: no plan of positions).
+    type(step_table_t), intent(in), optional :: positions
+    integer, intent(in) :: every, n_positions
+    !> The traced point (--point; "": the coupler's centre of mass) and the output link
+    !> (--output-link; 0: the last link of the last group).
+    character(*), intent(in) :: point_asked
+    integer, intent(in) :: output_link
+    !> The plans of velocities and accelerations at row k (none: the values table alone).
+    type(plans_t), intent(in), optional :: plans
     type(mechanism_view_t) :: view
+    type(drawing_t) :: all_positions
+    type(drawing_t), allocatable :: placed(:)
+    logical :: planned
     type(slide_t), allocatable :: slides(:)
     type(plan_group_t), allocatable :: groups(:)
     real(wp) :: inner(4), cw, x1, x2, x3, top, region(4), mu_phi, hmax, y
@@ -74,8 +92,16 @@ contains
     x3 = x2 + cw + gap
     top = inner(2) + 24.0_wp
     region = [x1, top, x1 + cw, top + 0.58_wp * (inner(4) - top)]
-    call fit_mechanism_view(drawing, [region(1) + 4.0_wp, region(2) + 10.0_wp, region(3) - 4.0_wp, region(4) - 10.0_wp], &
-      10.0_wp, view)
+    ! the plan of positions: every position's drawing, and the view fitted to them all
+    planned = present(positions)
+    if (planned) call position_drawings()
+    if (planned) then
+      call fit_mechanism_view(all_positions, [region(1) + 4.0_wp, region(2) + 10.0_wp, region(3) - 4.0_wp, &
+        region(4) - 10.0_wp], 10.0_wp, view)
+    else
+      call fit_mechanism_view(drawing, [region(1) + 4.0_wp, region(2) + 10.0_wp, region(3) - 4.0_wp, &
+        region(4) - 10.0_wp], 10.0_wp, view)
+    end if
     call sheet%open(paper, lang, words("Structure and kinematics", &
       "Структурный и кинематический анализ", lang)// &
       " - "//table%deck, "kinetostat sheets: the kinematics sheet of "//table%deck//": the mechanism at a position "// &
@@ -88,15 +114,28 @@ contains
     ! the mechanism at the position with the traced point's trajectory
     call sheet%set_layer(layer_charts)
     call sheet%rect(region(1), region(2), cw, region(4) - region(2), "panel")
-    traced = traced_point()
-    text = words("Mechanism in position ", "Механизм в положении ", lang)//int_str(table%run_row(k))
+    traced = point_asked
+    if (len(traced) == 0) traced = traced_point()
+    if (planned) then
+      text = words("Plan of positions (", "План положений (", lang)//int_str(n_positions)
+      text = text//words(", from the extreme position of link ", ", от крайнего положения звена ", lang)
+      text = text//output_name()//"); "//words("the mechanism in position ", "механизм в положении ", lang)
+      text = text//int_str(table%run_row(k))
+    else
+      text = words("Mechanism in position ", "Механизм в положении ", lang)//int_str(table%run_row(k))
+    end if
     if (table%input_column > 0) text = text//" (φ1 = "//short_number(table%rows(table%input_column, k))//" "// &
       unit_word("deg", lang)//")"
     if (len(traced) > 0) text = text//words("; trajectory of ", "; траектория точки ", lang)//traced
     call sheet%text(region(1) + 2.0_wp, region(2) + 5.0_wp, text, "heading")
-    if (len(traced) > 0) call put_trajectory(traced)
+    if (planned) then
+      call put_positions()
+    else if (len(traced) > 0) then
+      call put_trajectory(traced)
+    end if
     call draw_mechanism(sheet, drawing, view, [region(1) + 2.0_wp, region(2) + 8.0_wp, region(3) - 2.0_wp, &
-      region(4) - 8.0_wp], 0.0_wp, short)
+      region(4) - 12.0_wp], 0.0_wp, short)
+    if (planned) call put_position_numbers()
     call sheet%set_layer(layer_text)
     call sheet%text(region(1) + 2.0_wp, region(4) - 3.0_wp, "μl = "//scale_number(view%mu_l())//" "// &
       unit_word("m", lang)//"/"//unit_word("mm", lang)//" ("//view%drawing_scale%text//")", "small")
@@ -117,9 +156,186 @@ contains
       call output_diagrams()
     end if
 
-    ! the values at the position
-    call put_values(x3, top, cw, inner(4) - block_height - gap - top)
+    ! the values at the position, the plans of velocities and accelerations and the values
+    ! read off them
+    if (present(plans)) then
+      call put_values(x3, top, cw, values_height())
+      y = top + values_height() + gap
+      hmax = inner(4) - block_height - gap - y
+      call draw_kinematic_plans(sheet, view, plans, [x3, y, x3 + cw, y + 0.37_wp * hmax], &
+        [x3, y + 0.37_wp * hmax + gap, x3 + cw, y + 0.74_wp * hmax], &
+        [x3, y + 0.74_wp * hmax + 2.0_wp * gap, x3 + cw, y + hmax], lang)
+    else
+      call put_values(x3, top, cw, inner(4) - block_height - gap - top)
+    end if
   contains
+
+    !> The height of the values table's panel, mm: its rows and headings.
+    real(wp) function values_height() result(h)
+      integer :: ip, il, n
+      n = 2
+      do ip = 1, size(drawing%points)
+        if (table%column_index("vx_"//trim(drawing%points(ip)%name)) > 0) n = n + 1
+      end do
+      do il = 1, size(topo%links)
+        if (table%column_index("omega"//trim(topo%links(il)%name)) > 0) n = n + 1
+      end do
+      h = 9.0_wp + 4.2_wp * n + 4.0_wp
+    end function values_height
+
+    !> The output link's number ("" when there is none).
+    function output_name() result(name)
+      character(len=:), allocatable :: name
+      integer :: link
+      logical :: slider
+      character(len=:), allocatable :: point
+      real(wp), allocatable :: s(:), v(:), a(:)
+      type(error_t), allocatable :: err
+      name = ""
+      call output_motion(topo, drawing, table, k, output_link, link, slider, point, s, v, a, err)
+      if (link > 0) name = trim(topo%links(link)%name)
+    end function output_name
+
+    !> The drawings of the positions (placed) and one drawing of all their points with the
+    !> position's own (all_positions: the view's extent).
+    subroutine position_drawings()
+      integer :: i, j
+      type(error_t), allocatable :: err
+      all_positions = drawing
+      allocate (placed(n_positions))
+      do i = 1, n_positions
+        call drawing_from_sketch(topo, positions, 1 + (i - 1) * every, placed(i), err)
+        if (allocated(err)) then
+          planned = .false.
+          return
+        end if
+        do j = 1, size(placed(i)%points)
+          call all_positions%add_point("~"//int_str(i)//trim(placed(i)%points(j)%name), placed(i)%points(j)%p, &
+            point_plain)
+        end do
+      end do
+    end subroutine position_drawings
+
+    !> The plan of positions: each position's links as thin lines (the extreme position 0
+    !> thicker), the traced point's trajectory through the run at the positions' angles and
+    !> its places numbered 0 .. n_positions-1, the crank pin's places numbered as well.
+    subroutine put_positions()
+      integer :: i, b, j, cx, cy, r, n
+      real(wp) :: p(2), c(2), d(2), w
+      real(wp), allocatable :: sx(:), sy(:)
+      do i = 1, n_positions
+        w = 0.2_wp
+        if (i == 1) w = 0.45_wp
+        do b = 1, size(placed(i)%bodies)
+          associate (body => placed(i)%bodies(b))
+            if (.not. allocated(body%points)) cycle
+            if (size(body%points) >= 2) then
+              allocate (sx(size(body%points)), sy(size(body%points)))
+              do j = 1, size(body%points)
+                p = view%point(placed(i)%points(body%points(j))%p)
+                sx(j) = p(1)
+                sy(j) = p(2)
+              end do
+              call sheet%polyline(sx, sy, stroke="#7f7f7f", width=w)
+              deallocate (sx, sy)
+            else if (size(body%points) == 1 .and. body%kind == body_block) then
+              p = view%point(placed(i)%points(body%points(1))%p)
+              d = view%direction([cos(body%angle), sin(body%angle)])
+              c = [-d(2), d(1)]
+              sx = p(1) + [-2.5_wp * d(1) - 1.5_wp * c(1), 2.5_wp * d(1) - 1.5_wp * c(1), &
+                2.5_wp * d(1) + 1.5_wp * c(1), -2.5_wp * d(1) + 1.5_wp * c(1)]
+              sy = p(2) + [-2.5_wp * d(2) - 1.5_wp * c(2), 2.5_wp * d(2) - 1.5_wp * c(2), &
+                2.5_wp * d(2) + 1.5_wp * c(2), -2.5_wp * d(2) + 1.5_wp * c(2)]
+              call sheet%polygon(sx, sy, stroke="#7f7f7f", width=w, fill="none")
+              deallocate (sx, sy)
+            end if
+          end associate
+        end do
+      end do
+      ! the traced point's trajectory over the run at the positions' angles
+      if (len(traced) > 0) then
+        cx = positions%column_index("x_"//traced)
+        cy = positions%column_index("y_"//traced)
+        if (cx > 0 .and. cy > 0) then
+          n = min(positions%row_count(), n_positions * every + 1)
+          allocate (sx(n), sy(n))
+          do r = 1, n
+            p = view%point([positions%rows(cx, r), positions%rows(cy, r)])
+            sx(r) = p(1)
+            sy(r) = p(2)
+          end do
+          call sheet%polyline(sx, sy, stroke="#9467bd", width=0.35_wp, dash="2 1")
+          deallocate (sx, sy)
+        end if
+      end if
+    end subroutine put_positions
+
+    !> The positions' numbers at the traced point and the crank pin (after every line, so
+    !> that they keep clear of them), and the foot: position 0's angle and the step.
+    subroutine put_position_numbers()
+      integer :: cx, cy
+      character(len=:), allocatable :: pin_name, foot
+      pin_name = crank_pin()
+      if (len(traced) > 0) then
+        cx = positions%column_index("x_"//traced)
+        cy = positions%column_index("y_"//traced)
+        if (cx > 0 .and. cy > 0) call number_places(cx, cy, "#9467bd")
+      end if
+      if (len(pin_name) > 0 .and. pin_name /= traced) then
+        cx = positions%column_index("x_"//pin_name)
+        cy = positions%column_index("y_"//pin_name)
+        if (cx > 0 .and. cy > 0) call number_places(cx, cy, "#000000")
+      end if
+      if (positions%input_column > 0) then
+        foot = words("position 0: the extreme position of link ", &
+          "положение 0: крайнее положение звена ", lang)//output_name()
+        foot = foot//", φ1 = "//fixed_number(modulo(positions%rows(positions%input_column, 1), 360.0_wp), 2)//" "// &
+          unit_word("deg", lang)//words("; the positions every ", "; положения через ", lang)// &
+          fixed_number(360.0_wp / real(n_positions, wp), 0)//" "//unit_word("deg", lang)
+        call sheet%text(region(1) + 2.0_wp, region(4) - 7.5_wp, foot, "small")
+      end if
+    end subroutine put_position_numbers
+
+    !> The numbers 0 .. n_positions-1 of the positions beside the places of the point whose
+    !> position columns are cx, cy, away from the places' centre.
+    subroutine number_places(cx, cy, colour)
+      integer, intent(in) :: cx, cy
+      character(*), intent(in) :: colour
+      real(wp) :: p(2), c(2), d(2)
+      integer :: i, r
+      c = 0.0_wp
+      do i = 1, n_positions
+        r = 1 + (i - 1) * every
+        c = c + view%point([positions%rows(cx, r), positions%rows(cy, r)]) / real(n_positions, wp)
+      end do
+      do i = 1, n_positions
+        r = 1 + (i - 1) * every
+        p = view%point([positions%rows(cx, r), positions%rows(cy, r)])
+        call sheet%circle(p(1), p(2), 0.5_wp, stroke=colour, width=0.25_wp, fill=colour)
+        d = p - c
+        call sheet%place_label(int_str(i - 1), "small", p(1), p(2), atan2(d(2), d(1)), &
+          [region(1) + 1.0_wp, region(2) + 7.0_wp, region(3) - 1.0_wp, region(4) - 11.0_wp], colour=colour)
+      end do
+    end subroutine number_places
+
+    !> The crank pin: the input unit's first link's first point that is not a pivot ("" none).
+    function crank_pin() result(name)
+      character(len=:), allocatable :: name
+      integer :: g, j, l
+      name = ""
+      do g = 1, size(groups)
+        if (.not. groups(g)%input) cycle
+        if (size(groups(g)%links) == 0) cycle
+        l = groups(g)%links(1)
+        do j = 1, size(topo%links(l)%points)
+          if (allocated(topo%pivots)) then
+            if (any(topo%pivots == topo%links(l)%points(j))) cycle
+          end if
+          name = trim(topo%links(l)%points(j))
+          return
+        end do
+      end do
+    end function crank_pin
 
     !> The traced point: the centre of mass of the first link of the first group after the
     !> input units, when the table has its position ("" otherwise).
@@ -290,51 +506,28 @@ contains
     !> s, v, a (a slider on a guide of the frame) or psi, omega, eps (a rocker) of the output
     !> link over the input angle, in column 2.
     subroutine output_diagrams()
-      integer :: out_link, g, cx, cy, cvx, cvy, cax, cay, r
-      real(wp) :: u(2), s0
-      real(wp), allocatable :: s(:), v(:), a(:)
+      integer :: out_link
+      real(wp), allocatable :: s(:), v(:), a(:), s0(:), v0(:), a0(:)
       character(len=:), allocatable :: name, point
-      logical :: slider
-      out_link = 0
-      do g = size(groups), 1, -1
-        if (size(groups(g)%links) > 0) then
-          out_link = groups(g)%links(size(groups(g)%links))
-          exit
-        end if
-      end do
-      if (out_link == 0) return
+      logical :: slider, far
+      type(error_t), allocatable :: err
+      call output_motion(topo, drawing, table, k, output_link, out_link, slider, point, s, v, a, err)
+      if (allocated(err) .or. out_link == 0) return
       name = trim(topo%links(out_link)%name)
-      slider = .false.
-      point = ""
-      if (allocated(topo%guides)) then
-        do g = 1, size(topo%guides)
-          if (allocated(topo%guides(g)%on)) then
-            if (len(topo%guides(g)%on) > 0) cycle
-          end if
-          if (lists(topo, out_link, trim(topo%guides(g)%point))) then
-            slider = .true.
-            point = trim(topo%guides(g)%point)
-            u = [cos(topo%guides(g)%angle * deg_to_rad), sin(topo%guides(g)%angle * deg_to_rad)]
-            exit
-          end if
-        end do
+      ! from the extreme position 0 of the plan of positions (without a plan, the smallest)
+      far = .false.
+      if (planned) then
+        call output_motion(topo, drawing, positions, 1, output_link, out_link, slider, point, s0, v0, a0, err)
+        if (.not. allocated(err) .and. size(s0) > 0) far = abs(s0(1) - maxval(s)) < abs(s0(1) - minval(s))
       end if
-      allocate (s(size(phi)), v(size(phi)), a(size(phi)))
+      if (far) then
+        s = maxval(s) - s
+        v = -v
+        a = -a
+      else
+        s = s - minval(s)
+      end if
       if (slider) then
-        cx = table%column_index("x_"//point)
-        cy = table%column_index("y_"//point)
-        cvx = table%column_index("vx_"//point)
-        cvy = table%column_index("vy_"//point)
-        cax = table%column_index("ax_"//point)
-        cay = table%column_index("ay_"//point)
-        if (min(cx, cy, cvx, cvy, cax, cay) == 0) return
-        do r = 1, size(phi)
-          s(r) = table%rows(cx, r) * u(1) + table%rows(cy, r) * u(2)
-          v(r) = table%rows(cvx, r) * u(1) + table%rows(cvy, r) * u(2)
-          a(r) = table%rows(cax, r) * u(1) + table%rows(cay, r) * u(2)
-        end do
-        s0 = minval(s)
-        s = s - s0
         call put_cycle_chart(sheet, x2, y, cw, hmax, phi, mu_phi, s, unit_word("m", lang), "s", words( &
           "Displacement of link ", "Перемещение звена ", lang)//name//words(" from its extreme position", &
           " от крайнего положения", lang), "φ1, "//unit_word("deg", lang), lang, q)
@@ -348,14 +541,6 @@ contains
           "Acceleration of link ", "Ускорение звена ", lang)//name, "φ1, "//unit_word("deg", lang), lang, q)
         call put_cycle_curve(sheet, q, phi, a, "#1f77b4", "", "a_"//point)
       else
-        cx = table%column_index("phi"//name)
-        cvx = table%column_index("omega"//name)
-        cax = table%column_index("eps"//name)
-        if (min(cx, cvx, cax) == 0) return
-        s = table%rows(cx, :)
-        s = s - minval(s)
-        v = table%rows(cvx, :)
-        a = table%rows(cax, :)
         call put_cycle_chart(sheet, x2, y, cw, hmax, phi, mu_phi, s, unit_word("deg", lang), "ψ", words( &
           "Angle of link ", "Угол поворота звена ", lang)//name//words(" from its extreme position", &
           " от крайнего положения", lang), "φ1, "//unit_word("deg", lang), lang, q)
@@ -413,5 +598,102 @@ contains
       call put_table(sheet, x0 + 4.0_wp, y0 + 9.0_wp, [0.3_wp * w, 0.3_wp * w, 0.3_wp * w], 4.2_wp, cells(1:r, :))
     end subroutine put_values
   end subroutine draw_kinematics_sheet
+
+  !> The output link's motion over the rows of `table` (the positions of row `k` give the
+  !> structure): a slider on a guide of the frame: its point's coordinate s along the guide
+  !> (m), its velocity and acceleration along it (m/s, m/s^2); any other link (a rocker):
+  !> its angle ψ (deg), ω (rad/s), ε (rad/s^2). `asked` is the link's number (--output-link;
+  !> 0: the last link of the last group); `link` its index in topo%links (0 with `error`
+  !> when there is no such link or the table lacks its columns).
+  pure subroutine output_motion(topo, drawing, table, k, asked, link, slider, point, s, v, a, error)
+    type(sketch_t), intent(in) :: topo
+    type(drawing_t), intent(in) :: drawing
+    type(step_table_t), intent(in) :: table
+    integer, intent(in) :: k, asked
+    integer, intent(out) :: link
+    logical, intent(out) :: slider
+    character(len=:), allocatable, intent(out) :: point
+    real(wp), allocatable, intent(out) :: s(:), v(:), a(:)
+    type(error_t), allocatable, intent(out) :: error
+    type(slide_t), allocatable :: slides(:)
+    type(plan_group_t), allocatable :: groups(:)
+    character(len=:), allocatable :: driver, name, known
+    real(wp) :: u(2)
+    integer :: g, cx, cy, cvx, cvy, cax, cay, n
+    link = 0
+    slider = .false.
+    point = ""
+    n = table%row_count()
+    allocate (s(0), v(0), a(0))
+    if (asked > 0) then
+      known = ""
+      do g = 1, size(topo%links)
+        if (trim(topo%links(g)%name) == int_str(asked)) link = g
+        if (g > 1) known = known//", "
+        known = known//trim(topo%links(g)%name)
+      end do
+      if (link == 0) then
+        call fatal_error(error, exit_input, "--output-link "//int_str(asked)//": "//table%deck// &
+          " has no link "//int_str(asked)//" (links: "//known//")")
+        return
+      end if
+    else
+      call slides_of(topo, drawing, table, k, slides)
+      driver = ""
+      if (allocated(table%driver)) driver = table%driver
+      call plan_groups(topo, drawing, table, slides, driver, groups)
+      do g = size(groups), 1, -1
+        if (size(groups(g)%links) > 0) then
+          link = groups(g)%links(size(groups(g)%links))
+          exit
+        end if
+      end do
+      if (link == 0) then
+        call fatal_error(error, exit_input, table%deck//": no output link found (give --output-link)")
+        return
+      end if
+    end if
+    name = trim(topo%links(link)%name)
+    if (allocated(topo%guides)) then
+      do g = 1, size(topo%guides)
+        if (allocated(topo%guides(g)%on)) then
+          if (len(topo%guides(g)%on) > 0) cycle
+        end if
+        if (lists(topo, link, trim(topo%guides(g)%point))) then
+          slider = .true.
+          point = trim(topo%guides(g)%point)
+          u = [cos(topo%guides(g)%angle * deg_to_rad), sin(topo%guides(g)%angle * deg_to_rad)]
+          exit
+        end if
+      end do
+    end if
+    if (slider) then
+      cx = table%column_index("x_"//point)
+      cy = table%column_index("y_"//point)
+      cvx = table%column_index("vx_"//point)
+      cvy = table%column_index("vy_"//point)
+      cax = table%column_index("ax_"//point)
+      cay = table%column_index("ay_"//point)
+      if (min(cx, cy, cvx, cvy, cax, cay) > 0) then
+        s = table%rows(cx, 1:n) * u(1) + table%rows(cy, 1:n) * u(2)
+        v = table%rows(cvx, 1:n) * u(1) + table%rows(cvy, 1:n) * u(2)
+        a = table%rows(cax, 1:n) * u(1) + table%rows(cay, 1:n) * u(2)
+        return
+      end if
+    else
+      cx = table%column_index("phi"//name)
+      cvx = table%column_index("omega"//name)
+      cax = table%column_index("eps"//name)
+      if (min(cx, cvx, cax) > 0) then
+        s = table%rows(cx, 1:n)
+        v = table%rows(cvx, 1:n)
+        a = table%rows(cax, 1:n)
+        return
+      end if
+    end if
+    call fatal_error(error, exit_input, "--output-link "//name//": "//table%deck//": link "//name// &
+      " has no motion columns (a slider on a guide of the frame, or a link's angle)")
+    link = 0
+  end subroutine output_motion
 
 end module kinetostat_kinematics_sheet

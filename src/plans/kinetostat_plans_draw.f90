@@ -39,10 +39,10 @@ module kinetostat_plans_draw
   use kinetostat_plans_base, only: plans_t, plan_vector_t, plan_equation_t, lever_load_t, force_polygon_t, &
     component_normal, component_tangential, component_coriolis, component_relative, component_reaction, load_moment, perp
   use kinetostat_plans_sheet, only: plans_sheet_t, turn, chain_tips, polygon_tips, panel_inner, panel_head, &
-    input_link_drawing
+    input_link_drawing, fit_kinematic_plans
   implicit none
   private
-  public :: draw_plans_sheet, display_name
+  public :: draw_plans_sheet, display_name, draw_kinematic_plans
 
   !> A vector drawn shorter than this is listed, not drawn, mm.
   real(wp), parameter :: shortest = 1.0_wp
@@ -148,6 +148,34 @@ contains
     call panel(sheet, geo%results, word("Balancing effort", lang))
     call results(sheet, geo, plans, lang)
   end subroutine draw_plans_sheet
+
+  !> The plans of velocities and accelerations and the values read off them on another
+  !> sheet (the course's kinematics sheet, whose mechanism is drawn with `view`), in the
+  !> panels `velocity`, `acceleration` and `values` (x0, y0, x1, y1, mm).
+  pure subroutine draw_kinematic_plans(sheet, view, plans, velocity, acceleration, values, lang)
+    type(sheet_t), intent(inout) :: sheet
+    type(mechanism_view_t), intent(in) :: view
+    type(plans_t), intent(in) :: plans
+    real(wp), intent(in) :: velocity(4), acceleration(4), values(4)
+    integer, intent(in) :: lang
+    type(plans_sheet_t) :: geo
+    call fit_kinematic_plans(view, plans, velocity, acceleration, geo)
+    call panel(sheet, geo%velocity, word("Plan of velocities", lang))
+    call sheet%set_layer(layer_vplan)
+    call draw_plan(sheet, geo, plans%velocities, plans%velocity_equations, geo%velocity, geo%pole_v, geo%mu_v, "p", &
+      .false., lang)
+    call foot(sheet, geo%velocity, "μv = "//scale_number(geo%mu_v)//" ("//unit_word("m/s", lang)//")/"// &
+      unit_word("mm", lang))
+    call panel(sheet, geo%acceleration, word("Plan of accelerations", lang))
+    call sheet%set_layer(layer_aplan)
+    call draw_plan(sheet, geo, plans%accelerations, plans%equations, geo%acceleration, geo%pole_a, geo%mu_a, "π", &
+      .true., lang)
+    call foot(sheet, geo%acceleration, "μa = "//scale_number(geo%mu_a)//" ("//unit_word("m/s^2", lang)//")/"// &
+      unit_word("mm", lang))
+    call panel(sheet, values, word("Values read off the plans", lang))
+    call sheet%set_layer(layer_text)
+    call values_table(sheet, values, plans, lang)
+  end subroutine draw_kinematic_plans
 
   !> A panel's frame and heading.
   pure subroutine panel(sheet, box, heading)

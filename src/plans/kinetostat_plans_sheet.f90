@@ -24,7 +24,7 @@ module kinetostat_plans_sheet
   implicit none
   private
   public :: plans_sheet_t, plans_sheet, turn, chain_tips, polygon_tips, panel_inner, lever_arrow, panel_head, &
-    group_text, input_link_drawing
+    group_text, input_link_drawing, fit_kinematic_plans
 
   !> Room kept around a drawing in its panel for its labels and arrows, mm.
   real(wp), parameter :: margin = 10.0_wp
@@ -173,23 +173,12 @@ contains
     end do
     call compare_efforts(topo, drawing, plans, sheet)
   contains
-    !> The points a plan must show (turned): its images and every corner of its equations'
-    !> chains.
+    !> The points a plan must show, turned by the drawing's angle.
     pure function plan_points(images, equations) result(all)
       type(plan_vector_t), intent(in) :: images(:)
       type(plan_equation_t), intent(in) :: equations(:)
-      real(wp), allocatable :: all(:, :), corners(:, :)
-      integer :: q, t
-      allocate (all(2, 0))
-      do q = 1, size(images)
-        all = add(all, turn(images(q)%v, r))
-      end do
-      do q = 1, size(equations)
-        call chain_tips(equations(q), images, corners)
-        do t = 1, size(corners, 2)
-          all = add(all, turn(corners(:, t), r))
-        end do
-      end do
+      real(wp), allocatable :: all(:, :)
+      all = turned_plan_points(images, equations, r)
     end function plan_points
   end subroutine plans_sheet
 
@@ -233,6 +222,44 @@ contains
     fit_scale = max(round_scale(hi(1) - lo(1), max(box(3) - box(1) - 2.0_wp * margin, 1.0_wp)), &
       round_scale(hi(2) - lo(2), max(box(4) - box(2) - 2.0_wp * margin, 1.0_wp)))
   end function fit_scale
+
+  !> The points a plan must show, turned by `r` (rad): its images and every corner of its
+  !> equations' chains.
+  pure function turned_plan_points(images, equations, r) result(all)
+    type(plan_vector_t), intent(in) :: images(:)
+    type(plan_equation_t), intent(in) :: equations(:)
+    real(wp), intent(in) :: r
+    real(wp), allocatable :: all(:, :), corners(:, :)
+    integer :: q, t
+    allocate (all(2, 0))
+    do q = 1, size(images)
+      all = add(all, turn(images(q)%v, r))
+    end do
+    do q = 1, size(equations)
+      call chain_tips(equations(q), images, corners)
+      do t = 1, size(corners, 2)
+        all = add(all, turn(corners(:, t), r))
+      end do
+    end do
+  end function turned_plan_points
+
+  !> The geometry of the plans of velocities and accelerations alone, in the panels
+  !> `velocity` and `acceleration` (x0, y0, x1, y1, mm) of another sheet (the course's
+  !> kinematics sheet) whose mechanism is drawn with `view`: the plans in its frame.
+  pure subroutine fit_kinematic_plans(view, plans, velocity, acceleration, geo)
+    type(mechanism_view_t), intent(in) :: view
+    type(plans_t), intent(in) :: plans
+    real(wp), intent(in) :: velocity(4), acceleration(4)
+    type(plans_sheet_t), intent(out) :: geo
+    geo%view = view
+    geo%rotation = view%rotation
+    geo%velocity = velocity
+    geo%acceleration = acceleration
+    call fit_plan(turned_plan_points(plans%velocities, plans%velocity_equations, geo%rotation), &
+      panel_inner(velocity), geo%mu_v, geo%pole_v)
+    call fit_plan(turned_plan_points(plans%accelerations, plans%equations, geo%rotation), &
+      panel_inner(acceleration), geo%mu_a, geo%pole_a)
+  end subroutine fit_kinematic_plans
 
   !> A plan's scale (round) and its pole on the sheet: the points (turned, in the position
   !> frame's units) and the pole fit into `area` (x0, y0, x1, y1, mm) less its margins, centred.

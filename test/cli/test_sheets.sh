@@ -82,6 +82,68 @@ assert "W = 3n − 2p5 − p4 = 1" in plain, "W"
 assert "Displacement of link" in plain or "Angle of link" in plain, "output link"
 PY
 
+# the plan of positions: 12 positions from the output link's extreme position, found by
+# solving. PR 3207: the ram's extremes are where the crank is square to the rocker, at
+# phi1 = acos(l_ab/l_ac) and 360 deg minus it; position 0 begins the working stroke (the
+# longer, from 73.17 deg: the cutting zone is 95..265 deg). The default --at of a flywheel
+# deck is the step of the largest |M1| at constant speed: the same deck without its
+# dynamics, run at 1 deg (data/pr3207.nml --set dphi=1).
+dir="$cli_tmp/sheets_pr3207_flywheel_en"
+run_ks data/pr3207.nml --set dphi=1 --format csv
+python3 - "$dir/kinematics.svg" "$dir/kinetostatics.svg" "$out" <<'PY' && pass || fail sheets-positions-pr3207 "the plan of positions or the default position differs"
+import csv, math, re, sys
+plain = re.sub(r"<[^>]+>", "", open(sys.argv[1], encoding="utf-8").read())
+assert "Plan of positions (12, from the extreme position of link 5)" in plain, "heading"
+expected = f"{math.degrees(math.acos(0.11 / 0.38)):.2f}"
+got = re.search(r"position 0: the extreme position of link 5, φ1 = ([0-9.]+) deg", plain)
+assert got and got.group(1) == expected, (got and got.group(1), expected)
+rows = list(csv.DictReader(open(sys.argv[3])))
+k = max(range(len(rows)), key=lambda i: abs(float(rows[i]["M1"]))) + 1
+kin = open(sys.argv[2], encoding="utf-8").read()
+assert f"step {k} of 361" in kin, ("default --at", k)
+assert f"position {k} " in plain, ("kinematics position", k)
+PY
+# a rocker (the four-bar's link 3, --positions 8): at position 0 the crank and the coupler
+# are in line, |AC| = l_BC + l_AB = 0.45 m, and the rocker's angle is extreme there (the
+# deck run at position 0's printed angle and 0.01 deg either side)
+dir="$cli_tmp/sheets_fourbar"
+rm -rf "$dir"
+run_ks sheets data/assur_fourbar.nml -o "$dir" --positions 8 --point C
+phi0=$(sed 's/<[^>]*>//g' "$dir/kinematics.svg" | grep -o 'position 0: the extreme position of link 3, φ1 = [0-9.]*' | sed 's/.*= //')
+if [ "$rc" -eq 0 ] && [ -n "$phi0" ]; then
+  run_ks data/assur_fourbar.nml --set "phi_start=$(python3 -c "print($phi0 - 0.01)")" --set dphi=0.01 --set n=3 \
+    --format csv --kinematics
+  python3 - "$out" "$dir/kinematics.svg" <<'PY' && pass || fail sheets-positions-rocker "position 0 is not the rocker's extreme"
+import csv, math, re, sys
+r = list(csv.DictReader(open(sys.argv[1])))
+ac = math.hypot(float(r[1]["x_C"]) - float(r[1]["x_A"]), float(r[1]["y_C"]) - float(r[1]["y_A"]))
+assert abs(ac - 0.45) < 1e-6, ("|AC|", ac)
+p = [float(x["phi3"]) for x in r]
+assert (p[1] - p[0]) * (p[1] - p[2]) > 0, ("phi3 not extreme", p)
+plain = re.sub(r"<[^>]+>", "", open(sys.argv[2], encoding="utf-8").read())
+assert "Plan of positions (8, from the extreme position of link 3)" in plain and "trajectory of C" in plain
+PY
+  python3 "$sheets_check" labels --lines "$dir/kinematics.svg" >"$cli_tmp/check.out" 2>&1 && pass \
+    || fail sheets-positions-rocker-legible "$(head -3 "$cli_tmp/check.out")"
+else fail sheets-positions-rocker "exit $rc, no position 0: $(head -c 300 "$err")"; fi
+# a four-stroke engine (cycle 720 deg): position 0 its top dead centre (the deck's 0 deg, the
+# piston farthest from the crank), the dynamics sheet over the whole cycle
+dir="$cli_tmp/sheets_engine"
+rm -rf "$dir"
+run_ks sheets data/assur_engine_flywheel.nml -o "$dir" --lang ru --output-link 3
+if [ "$rc" -eq 0 ] && sed 's/<[^>]*>//g' "$dir/kinematics.svg" | grep -q 'положение 0: крайнее положение звена 3, φ1 = 0.00 град' \
+  && grep -q '>720<' "$dir/dynamics.svg" \
+  && python3 "$sheets_check" labels --lines "$dir/kinematics.svg" "$dir/dynamics.svg" >"$cli_tmp/check.out" 2>&1 \
+  && python3 "$sheets_check" english "$dir/kinematics.svg" "$dir/dynamics.svg" >>"$cli_tmp/check.out" 2>&1; then pass
+else fail sheets-engine-720 "exit $rc $(head -c 300 "$err") $(head -3 "$cli_tmp/check.out")"; fi
+# bad values: exit 2, one line naming the option, nothing written
+for bad in "--positions 10" "--point Q" "--output-link 9" "--output-link x"; do
+  rm -rf "$cli_tmp/x"
+  run_ks sheets data/assur_fourbar.nml -o "$cli_tmp/x" $bad
+  if [ "$rc" -eq 2 ] && [ "$(wc -l <"$err")" = 1 ] && grep -q -- "${bad% *}" "$err" && [ ! -e "$cli_tmp/x" ]; then pass
+  else fail "sheets-bad-${bad// /-}" "exit $rc: $(head -c 200 "$err")"; fi
+done
+
 # the figures the dynamics sheet prints are the run's (the flywheel's J, D, the Wittenbauer
 # segment k-l = delta omega_m^2 J_fw / mu_T)
 dir="$cli_tmp/sheets_pr3207_flywheel_en"
