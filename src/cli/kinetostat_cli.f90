@@ -27,6 +27,7 @@ module kinetostat_cli
   use kinetostat_step_table, only: column_t
   use kinetostat_diff, only: diff_options_t, diff_outputs
   use kinetostat_linkage_layout, only: linkage_structure_text
+  use kinetostat_convert, only: convert_deck
   use kinetostat_gear_geometry_layout, only: gear_contour_text
   use kinetostat_assur_presets, only: assur_preset, preset_names
   use kinetostat_assur_layout, only: assur_mechanism_t
@@ -54,6 +55,8 @@ module kinetostat_cli
     "            --lang ru: the report in Russian", &
     "structure DECK  structural analysis of a linkage deck (&linkage, &assur, &pr3207, &pr3050,", &
     "            &sixbar)", &
+    "convert DECK --to linkage  the deck translated into a &linkage deck (its comments kept", &
+    "            where they map); stdout or -o FILE (docs/linkage.md)", &
     "contour DECK  the blocking contour of a &gear_geometry deck's pair as CSV: curve,x1,x2", &
     "sheets DECK -o DIR  the course's sheets (kinetostatics; dynamics with a steady cycle) as", &
     "            SVG, DXF and PDF (rsvg-convert) in DIR (docs/course.md)", &
@@ -141,6 +144,10 @@ module kinetostat_cli
     logical :: structure = .false.
     !> The contour subcommand was given (`kinetostat contour DECK`).
     logical :: contour = .false.
+    !> The convert subcommand was given (`kinetostat convert DECK --to linkage`).
+    logical :: convert = .false.
+    !> Its target model (--to).
+    character(len=:), allocatable :: convert_to
     !> The --vary axes of a sweep.
     type(vary_t), allocatable :: varies(:)
     !> --part K/N of a sweep: this process runs block K of N.
@@ -230,6 +237,8 @@ contains
         call structure_of_deck(args, out, error)
       else if (args%contour) then
         call contour_of_deck(args, out, error)
+      else if (args%convert) then
+        call convert_of_deck(args, out, error)
       else if (args%balance) then
         call balance_deck(args, out, error)
       else if (args%sheets) then
@@ -815,6 +824,18 @@ contains
     end select
   end subroutine structure_of_deck
 
+  !> `kinetostat convert DECK --to linkage`: the deck translated into the `&linkage` model,
+  !> written as a deck (all or nothing: the caller writes `out` when no error came).
+  subroutine convert_of_deck(args, out, error)
+    type(cli_args_t), intent(in) :: args
+    type(text_buffer_t), intent(inout) :: out
+    type(error_t), allocatable, intent(out) :: error
+    type(deck_source_t) :: source
+    call load_deck(args%deck, source, error, whole_lines=.true.)
+    if (allocated(error)) return
+    call convert_deck(source, out, error)
+  end subroutine convert_of_deck
+
   !> `kinetostat contour DECK`: the blocking contour of a `&gear_geometry` deck's pair (with
   !> the --set overrides) as long-format CSV.
   subroutine contour_of_deck(args, out, error)
@@ -1058,6 +1079,18 @@ contains
         args%sheet_options = .true.
         call parse_sheet_numbers(value, args%sheet_numbers, error)
         if (allocated(error)) return
+      case ("convert")
+        if (i /= 1) then
+          call fatal_error(error, exit_usage, "convert must come first: "//usage_text("convert"))
+          return
+        end if
+        args%convert = .true.
+      case ("--to")
+        if (value /= "linkage") then
+          call fatal_error(error, exit_usage, "--to must be linkage (got '"//value//"')")
+          return
+        end if
+        args%convert_to = value
       case ("structure")
         if (i /= 1) then
           call fatal_error(error, exit_usage, "structure must come first: kinetostat structure DECK [--lang ru]")
@@ -1110,6 +1143,10 @@ contains
     else if (args%sheet_options .and. .not. args%sheets) then
       call fatal_error(error, exit_usage, "--paper, --designation and --sheet-numbers belong to the sheets "// &
         "subcommand: kinetostat sheets DECK -o DIR ...")
+    else if (args%convert .and. .not. allocated(args%convert_to)) then
+      call fatal_error(error, exit_usage, "convert needs --to linkage: "//usage_text("convert"))
+    else if (.not. args%convert .and. allocated(args%convert_to)) then
+      call fatal_error(error, exit_usage, "--to belongs to the convert subcommand: "//usage_text("convert"))
     else if (args%structure .and. (args%format_given .or. allocated(args%options%overrides) .or. &
              args%options%at_step > 0)) then
       call fatal_error(error, exit_usage, "structure takes a deck, --lang and -o only")
@@ -1155,6 +1192,8 @@ contains
       call check_options_belong("structure")
     else if (args%contour) then
       call check_options_belong("contour")
+    else if (args%convert) then
+      call check_options_belong("convert")
     else if (args%sheets) then
       call check_options_belong("sheets")
     else

@@ -1,0 +1,399 @@
+!> `kinetostat convert DECK --to linkage`: a linkage deck translated into the `&linkage`
+!> model (kinetostat_convert_model) and written as a `&linkage` deck. `&pr3207` is placed in
+!> its own frame with its link numbers (frame 6, the columns F16, F21, ... keep their names);
+!> a `&linkage` deck is normalised (every variable in one canonical layout, defaults written
+!> out). Comment lines go before what their variable became; a kind the translation does not
+!> cover is a one-line refusal naming why.
+module kinetostat_convert
+  use kinetostat_kinds, only: wp, deg_to_rad, g_default
+  use kinetostat_error, only: error_t
+  use kinetostat_text, only: int_str, lower
+  use kinetostat_text_buffer, only: text_buffer_t
+  use kinetostat_deck, only: deck_source_t, read_group_name, unset_bits
+  use kinetostat_vec2, only: unit_at, magnitude
+  use kinetostat_convert_model, only: linkage_model_t, model_link_t, model_pair_t, model_drive_t, model_load_t, &
+    write_linkage_model, add_note, first_variable
+  use kinetostat_pr3207_deck, only: pr3207_deck_t, read_pr3207_deck, pr3207_f5c, pr3207_phi1_deg
+  use kinetostat_linkage_deck, only: linkage_deck_t, read_linkage_deck
+  use kinetostat_linkage, only: pair_p
+  use kinetostat_dynamics_deck, only: md_table_capacity
+  implicit none
+  private
+  public :: convert_deck, convert_targets
+
+  !> The models a deck is translated into.
+  character(*), parameter :: convert_targets = "linkage"
+  !> A load window's ends are matched this much wider (deg), as the `&linkage` reader does.
+  real(wp), parameter :: window_tol = 1.0e-9_wp
+  real(wp), parameter :: unset = transfer(unset_bits, 1.0_wp)
+
+contains
+
+  !> Translate the deck `source` into the `&linkage` model and write it to `out`.
+  subroutine convert_deck(source, out, error)
+    type(deck_source_t), intent(in) :: source
+    type(text_buffer_t), intent(inout) :: out
+    type(error_t), allocatable, intent(out) :: error
+    character(len=:), allocatable :: group
+    type(linkage_model_t) :: model
+    call read_group_name(source, group, error)
+    if (allocated(error)) return
+    select case (group)
+    case ("pr3207")
+      call from_pr3207(source, model, error)
+    case ("linkage")
+      call from_linkage(source, model, error)
+    case ("pr3050", "sixbar", "assur")
+      call refuse(source%path//": &"//group//": convert: the translation of &"//group// &
+        " decks into &linkage is not written yet (&pr3207 and &linkage decks translate)")
+    case default
+      call refuse(source%path//": &"//group//": convert: not a linkage of lower pairs (gears, cams and the "// &
+        "design kinds have no &linkage model; &pr3207 and &linkage decks translate)")
+    end select
+    if (allocated(error)) return
+    call attach_comments(source, group, model)
+    call write_linkage_model(model, out)
+
+  contains
+
+    subroutine refuse(message)
+      character(*), intent(in) :: message
+      allocate (error)
+      error%message = message
+    end subroutine refuse
+  end subroutine convert_deck
+
+  !> Line k of the deck as written.
+  pure function deck_line(source, k) result(line)
+    type(deck_source_t), intent(in) :: source
+    integer, intent(in) :: k
+    character(len=:), allocatable :: line
+    integer :: r
+    line = ""
+    do r = source%first_record(k), source%first_record(k + 1) - 1
+      line = line//source%records(r)(1:source%record_length(r))
+    end do
+  end function deck_line
+
+  !> The comment lines of the deck: those before the group go before `&linkage`, those in
+  !> the group before the line of the translation their next variable became; comment lines
+  !> after the last variable of the group and after it are left out.
+  subroutine attach_comments(source, group, model)
+    type(deck_source_t), intent(in) :: source
+    character(*), intent(in) :: group
+    type(linkage_model_t), intent(inout) :: model
+    integer :: k, first, i
+    character(len=:), allocatable :: line, var
+    logical :: inside
+    !> The comment lines (their numbers) not yet attached.
+    integer, allocatable :: pending(:)
+    integer :: npend
+    inside = .false.
+    allocate (pending(size(source%first_record)))
+    npend = 0
+    do k = 1, size(source%first_record) - 1
+      line = deck_line(source, k)
+      first = verify(line, " "//achar(9))
+      if (first == 0) cycle
+      if (line(first:first) == "!") then
+        npend = npend + 1
+        pending(npend) = k
+        cycle
+      end if
+      if (.not. inside) then
+        if (line(first:first) == "&" .or. line(first:first) == "$") then
+          do i = 1, npend
+            call add_note(model, "", deck_line(source, pending(i)))
+          end do
+          npend = 0
+          inside = .true.
+        end if
+        cycle
+      end if
+      if (line(first:first) == "/") exit
+      var = first_variable(line)
+      if (npend > 0 .and. len(var) > 0) then
+        do i = 1, npend
+          call add_note(model, target_key(group, var), deck_line(source, pending(i)))
+        end do
+      end if
+      npend = 0
+    end do
+  end subroutine attach_comments
+
+  !> The line of the translation a variable of a `&group` deck became (its key in the
+  !> writer: "link(3)", "force(1)", "dynamics", ...).
+  pure function target_key(group, var) result(key)
+    character(*), intent(in) :: group, var
+    character(len=:), allocatable :: key
+    character(len=:), allocatable :: base
+    integer :: p
+    p = index(var, "(")
+    base = var
+    if (p > 0) base = var(:p - 1)
+    select case (base)
+    case ("dynamics", "delta", "j_rotor", "j_flywheel", "cycle")
+      key = "dynamics"
+      return
+    case ("flywheel_density", "flywheel_width_ratio")
+      key = "flywheel_density"
+      return
+    case ("md_table")
+      key = "md_table"
+      return
+    case ("g", "gravity_angle")
+      key = "g"
+      return
+    end select
+    select case (group)
+    case ("pr3207")
+      select case (base)
+      case ("l_ab", "m1", "omega1", "phi_start", "dphi", "n")
+        key = "drive(1)"
+        if (base == "l_ab" .or. base == "m1") key = "link(1)"
+      case ("l_ac")
+        key = "pair(4)"
+      case ("l_cd", "l_cs3", "m3", "j3")
+        key = "link(3)"
+      case ("m5")
+        key = "link(5)"
+      case default
+        key = "force(1)"
+      end select
+    case default
+      key = var
+      if (base == "gravity_angle") key = "g"
+    end select
+  end function target_key
+
+  !> `&pr3207` in its own frame (origin A, x from A to C, gravity along +x) with its link
+  !> numbers: 1 crank AB, 2 block on the lever at B, 3 slotted lever CD, 4 block at D, 5 ram
+  !> (along y), frame 6. Points at the first step; the cutting force a window of the crank
+  !> angle where one interval covers every step as the deck's [phi_cut_start, phi_cut_end]
+  !> (mod 360) does, else a column of step_values.
+  subroutine from_pr3207(source, model, error)
+    type(deck_source_t), intent(in) :: source
+    type(linkage_model_t), intent(out) :: model
+    type(error_t), allocatable, intent(out) :: error
+    type(pr3207_deck_t) :: deck
+    real(wp) :: b(2), c(2), d(2), u(2), on, off
+    real(wp), allocatable :: f5c(:), phi(:)
+    integer :: k, shift
+    logical :: fits
+    call read_pr3207_deck(source, deck, error)
+    if (allocated(error)) return
+    associate (p => deck%p)
+      b = p%l_ab * unit_at(deck%phi_start * deg_to_rad)
+      c = [p%l_ac, 0.0_wp]
+      u = (b - c) / magnitude(b - c)
+      d = c + p%l_cd * u
+      model%title = "PR 3207 shaper mechanism (linkage form)"
+      model%frame = 6
+      model%g = p%g
+      model%gravity_angle = 0.0_wp
+      model%n = deck%n
+      model%links = [model_link_t(1, p%m1, 0.0_wp, [0.0_wp, 0.0_wp]), model_link_t(2, 0.0_wp, 0.0_wp, b), &
+        model_link_t(3, p%m3, p%j3, c + p%l_cs3 * u), model_link_t(4, 0.0_wp, 0.0_wp, d), &
+        model_link_t(5, p%m5, 0.0_wp, [0.0_wp, d(2)])]
+      model%pairs = [model_pair_t("A", "R", [1, 6], [0.0_wp, 0.0_wp], 0.0_wp, 0), &
+        model_pair_t("B", "R", [2, 1], b, 0.0_wp, 0), &
+        model_pair_t("B3", "P", [2, 3], b, atan2(u(2), u(1)) / deg_to_rad, 3), &
+        model_pair_t("C", "R", [3, 6], c, 0.0_wp, 0), &
+        model_pair_t("D", "R", [3, 4], d, 0.0_wp, 0), &
+        model_pair_t("D5", "P", [4, 5], d, 0.0_wp, 5), &
+        model_pair_t("E", "P", [5, 6], [0.0_wp, d(2)], 90.0_wp, 6)]
+      allocate (model%drives(1))
+      model%drives(1)%pair = "A"
+      model%drives(1)%start = deck%phi_start
+      model%drives(1)%step = deck%dphi
+      model%drives(1)%omega = p%omega1
+      model%drives(1)%eps = 0.0_wp
+    end associate
+    allocate (model%forces(1), model%moments(0))
+    model%forces(1) = model_load_t(link=5, at=[0.0_wp, d(2)], angle=90.0_wp)
+    allocate (f5c(deck%n), phi(deck%n))
+    do k = 1, deck%n
+      f5c(k) = pr3207_f5c(deck, k)
+      phi(k) = pr3207_phi1_deg(deck, k)
+    end do
+    fits = .false.
+    if (deck%two_value) then
+      ! the window [on, off] + 360 shift: the same force at every step?
+      do shift = -3, 3
+        on = deck%phi_cut_start + 360.0_wp * shift
+        off = on + merge(deck%phi_cut_end - deck%phi_cut_start, modulo(deck%phi_cut_end - deck%phi_cut_start, &
+          360.0_wp), deck%phi_cut_end - deck%phi_cut_start >= 360.0_wp)
+        fits = all(merge(deck%f5c_work, deck%f5c_idle, phi >= on - window_tol .and. phi <= off + window_tol) == f5c)
+        if (fits) exit
+      end do
+    end if
+    if (fits) then
+      model%forces(1)%value = deck%f5c_work
+      model%forces(1)%window = .true.
+      model%forces(1)%idle = deck%f5c_idle
+      model%forces(1)%phi_on = on
+      model%forces(1)%phi_off = off
+    else
+      model%forces(1)%column = 1
+      model%step_values = f5c
+    end if
+    model%dyn = deck%dyn
+  end subroutine from_pr3207
+
+  !> A `&linkage` deck as it reads, every default written out (the raw namelist read again
+  !> for the angles and laws as given, after the reader has validated the deck).
+  subroutine from_linkage(source, model, error)
+    type(deck_source_t), intent(in) :: source
+    type(linkage_model_t), intent(out) :: model
+    type(error_t), allocatable, intent(out) :: error
+    type(linkage_deck_t) :: deck
+    integer :: i, nd, nf, nm
+    call read_linkage_deck(source, deck, error)
+    if (allocated(error)) return
+    model%title = trim(deck%title)
+    model%frame = deck%mech%frame_id
+    model%g = deck%g
+    model%gravity_angle = deck%gravity_angle
+    model%n = deck%n
+    allocate (model%links(size(deck%mech%links)))
+    do i = 1, size(deck%mech%links)
+      associate (l => deck%mech%links(i))
+        model%links(i) = model_link_t(l%id, l%m, l%j, l%s)
+      end associate
+    end do
+    call raw_linkage(source, model, error)
+    if (allocated(error)) return
+    do i = 1, size(model%pairs)
+      associate (r => model%pairs(i), q => deck%mech%pairs(i))
+        r%name = q%name
+        r%links = [link_id(q%a), link_id(q%b)]
+        r%at = q%at
+        r%kind = merge("P", "R", q%kind == pair_p)
+        if (q%kind == pair_p) r%guide = link_id(q%guide)
+      end associate
+    end do
+    nd = size(deck%mech%drives)
+    do i = 1, nd
+      associate (d => model%drives(i))
+        d%pair = deck%mech%pairs(deck%mech%drives(i)%pair)%name
+        if (deck%listed(i)) then
+          d%values = deck%values(1:deck%n, i)
+        else
+          d%start = deck%start(i)
+          d%step = deck%step(i)
+        end if
+        d%omega = deck%omega(i)
+        d%eps = deck%eps(i)
+        d%omega_column = deck%omega_column(i)
+        d%eps_column = deck%eps_column(i)
+      end associate
+    end do
+    nf = size(deck%mech%forces)
+    do i = 1, nf
+      associate (f => model%forces(i), s => deck%force_load(i))
+        f%link = deck%mech%links(deck%mech%forces(i)%link)%id
+        f%at = deck%mech%forces(i)%at
+        f%follow = deck%mech%forces(i)%follow
+        call schedule(f, s%value, s%idle, s%phi_on, s%phi_off, s%window, s%column)
+      end associate
+    end do
+    nm = size(deck%mech%moment_link)
+    do i = 1, nm
+      associate (f => model%moments(i), s => deck%moment_load(i))
+        f%link = deck%mech%links(deck%mech%moment_link(i))%id
+        call schedule(f, s%value, s%idle, s%phi_on, s%phi_off, s%window, s%column)
+      end associate
+    end do
+    if (allocated(deck%step_values)) then
+      if (size(deck%step_values) > 0) model%step_values = deck%step_values
+    end if
+    model%dyn = deck%dyn
+
+  contains
+
+    pure integer function link_id(index)
+      integer, intent(in) :: index
+      if (index == 0) then
+        link_id = deck%mech%frame_id
+      else
+        link_id = deck%mech%links(index)%id
+      end if
+    end function link_id
+
+    pure subroutine schedule(f, value, idle, on, off, window, column)
+      type(model_load_t), intent(inout) :: f
+      real(wp), intent(in) :: value, idle, on, off
+      logical, intent(in) :: window
+      integer, intent(in) :: column
+      f%value = value
+      f%column = column
+      f%window = window
+      if (window) then
+        f%idle = idle
+        f%phi_on = on
+        f%phi_off = off
+      end if
+    end subroutine schedule
+  end subroutine from_linkage
+
+  !> The pair angles and force angles of a `&linkage` deck as given (the validated deck keeps
+  !> their unit vectors only), and the model's lists sized as the deck's.
+  subroutine raw_linkage(source, model, error)
+    type(deck_source_t), intent(in) :: source
+    type(linkage_model_t), intent(inout) :: model
+    type(error_t), allocatable, intent(out) :: error
+    integer, parameter :: max_links = 48, max_pairs = 72, max_drives = 8, max_forces = 32, max_moments = 32
+    integer, parameter :: max_list = 14401, long = 4096
+    type :: link_in_t
+      real(wp) :: id = unset, m = unset, j = unset, s(2) = unset
+    end type link_in_t
+    type :: pair_in_t
+      character(len=long) :: name = "", kind = ""
+      real(wp) :: links(2) = unset, at(2) = unset, angle = unset, guide = unset, f = unset, r = unset
+    end type pair_in_t
+    type :: drive_in_t
+      character(len=long) :: pair = ""
+      real(wp) :: start = unset, step = unset, values(max_list) = unset, omega = unset, eps = unset, &
+        omega_column = unset, eps_column = unset
+    end type drive_in_t
+    type :: force_in_t
+      real(wp) :: link = unset, at(2) = unset, angle = unset, value = unset, idle = unset, phi_on = unset, &
+        phi_off = unset, column = unset
+      logical :: follow = .false.
+    end type force_in_t
+    type :: moment_in_t
+      real(wp) :: link = unset, value = unset, idle = unset, phi_on = unset, phi_off = unset, column = unset
+    end type moment_in_t
+    character(len=long) :: title, dynamics
+    real(wp) :: frame, g, gravity_angle, n, delta, j_rotor, j_flywheel, cycle, flywheel_density, flywheel_width_ratio
+    real(wp), allocatable :: step_values(:), md_table(:)
+    type(link_in_t) :: link(max_links)
+    type(pair_in_t), allocatable :: pair(:)
+    type(drive_in_t), allocatable :: drive(:)
+    type(force_in_t) :: force(max_forces)
+    type(moment_in_t) :: moment(max_moments)
+    integer :: ios, i, np, nd, nf, nm
+    character(len=512) :: msg
+    namelist /linkage/ title, frame, g, gravity_angle, n, link, pair, drive, force, moment, step_values, &
+      dynamics, delta, j_rotor, j_flywheel, cycle, md_table, flywheel_density, flywheel_width_ratio
+    allocate (pair(max_pairs), drive(max_drives), step_values(1000000), md_table(md_table_capacity))
+    read (source%records, nml=linkage, iostat=ios, iomsg=msg)
+    if (ios /= 0) then
+      allocate (error)
+      error%message = source%path//": &linkage: convert: the deck reads with the reader but not here: "//trim(msg)
+      return
+    end if
+    np = count(pair%kind /= "")
+    nd = count(drive%pair /= "")
+    nf = count(force%link == force%link)
+    nm = count(moment%link == moment%link)
+    allocate (model%pairs(np), model%drives(nd), model%forces(nf), model%moments(nm))
+    do i = 1, np
+      if (pair(i)%angle == pair(i)%angle) model%pairs(i)%angle = pair(i)%angle
+    end do
+    do i = 1, nf
+      model%forces(i)%angle = force(i)%angle
+    end do
+  end subroutine raw_linkage
+
+end module kinetostat_convert
