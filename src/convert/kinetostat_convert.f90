@@ -9,7 +9,7 @@ module kinetostat_convert
   use kinetostat_error, only: error_t
   use kinetostat_text, only: int_str, lower
   use kinetostat_text_buffer, only: text_buffer_t
-  use kinetostat_deck, only: deck_source_t, read_group_name, unset_bits
+  use kinetostat_deck, only: deck_source_t, read_group_name, unset_bits, deck_line, deck_line_count
   use kinetostat_vec2, only: unit_at, magnitude
   use kinetostat_convert_model, only: linkage_model_t, model_link_t, model_pair_t, model_drive_t, model_load_t, &
     write_linkage_model, add_note, first_variable
@@ -63,18 +63,6 @@ contains
     end subroutine refuse
   end subroutine convert_deck
 
-  !> Line k of the deck as written.
-  pure function deck_line(source, k) result(line)
-    type(deck_source_t), intent(in) :: source
-    integer, intent(in) :: k
-    character(len=:), allocatable :: line
-    integer :: r
-    line = ""
-    do r = source%first_record(k), source%first_record(k + 1) - 1
-      line = line//source%records(r)(1:source%record_length(r))
-    end do
-  end function deck_line
-
   !> The comment lines of the deck: those before the group go before `&linkage`, those in
   !> the group before the line of the translation their next variable became; comment lines
   !> after the last variable of the group and after it are left out.
@@ -89,9 +77,9 @@ contains
     integer, allocatable :: pending(:)
     integer :: npend
     inside = .false.
-    allocate (pending(size(source%first_record)))
+    allocate (pending(deck_line_count(source)))
     npend = 0
-    do k = 1, size(source%first_record) - 1
+    do k = 1, deck_line_count(source)
       line = deck_line(source, k)
       first = verify(line, " "//achar(9))
       if (first == 0) cycle
