@@ -14,6 +14,10 @@ module kinetostat_convert
   use kinetostat_convert_model, only: linkage_model_t, model_link_t, model_pair_t, model_drive_t, model_load_t, &
     write_linkage_model, add_note, first_variable
   use kinetostat_pr3207_deck, only: pr3207_deck_t, read_pr3207_deck, pr3207_f5c, pr3207_phi1_deg
+  use kinetostat_sixbar_deck, only: sixbar_deck_t, read_sixbar_deck
+  use kinetostat_sixbar, only: sixbar_position_t, sixbar_position, sixbar_frame2_to_frame1, sixbar_down1
+  use kinetostat_pr3050_deck, only: pr3050_deck_t, read_pr3050_deck, pr3050_phi3_deg
+  use kinetostat_pr3050, only: pr3050_position_t, pr3050_position
   use kinetostat_linkage_deck, only: linkage_deck_t, read_linkage_deck
   use kinetostat_linkage, only: pair_p
   use kinetostat_dynamics_deck, only: md_table_capacity
@@ -43,7 +47,11 @@ contains
       call from_pr3207(source, model, error)
     case ("linkage")
       call from_linkage(source, model, error)
-    case ("pr3050", "sixbar", "assur")
+    case ("sixbar")
+      call from_sixbar(source, model, error)
+    case ("pr3050")
+      call from_pr3050(source, model, error)
+    case ("assur")
       call refuse(source%path//": &"//group//": convert: the translation of &"//group// &
         " decks into &linkage is not written yet (&pr3207 and &linkage decks translate)")
     case default
@@ -134,6 +142,35 @@ contains
       return
     end select
     select case (group)
+    case ("sixbar")
+      select case (base)
+      case ("a", "b", "l1", "m1", "j1", "omega1", "start_at_extreme", "phi_start", "dphi", "n")
+        key = "drive(1)"
+        if (base == "m1" .or. base == "j1") key = "link(1)"
+      case ("lam2", "lam_s2", "m2", "j2")
+        key = "link(2)"
+      case ("lam3", "lam_de", "m3", "j3")
+        key = "link(3)"
+      case ("lam4", "lam_s4", "m4", "j4")
+        key = "link(4)"
+      case ("lam_e", "m5")
+        key = "link(5)"
+      case default
+        key = "force(1)"
+      end select
+    case ("pr3050")
+      select case (base)
+      case ("l_ca", "m1", "j1", "l_s1a")
+        key = "link(1)"
+      case ("l_bs2", "m2", "j2")
+        key = "link(2)"
+      case ("l_cb", "l_cs3", "delta", "m3", "j3")
+        key = "link(3)"
+      case ("gamma")
+        key = "g"
+      case default
+        key = "drive(1)"
+      end select
     case ("pr3207")
       select case (base)
       case ("l_ab", "m1", "omega1", "phi_start", "dphi", "n")
@@ -227,6 +264,100 @@ contains
     end if
     model%dyn = deck%dyn
   end subroutine from_pr3207
+
+  !> The T.FTN six-bar (`&sixbar`) in its frame 1 (origin A, x1 along AD: the crank angles
+  !> are the deck's) with its link numbers: 1 crank AB, 2 rod BC, 3 rocker C-D-E (pivot D),
+  !> 4 rod EH, 5 slider at H along x2, frame 6. Points at the first step; the slider load a
+  !> column of step_values.
+  subroutine from_sixbar(source, model, error)
+    type(deck_source_t), intent(in) :: source
+    type(linkage_model_t), intent(out) :: model
+    type(error_t), allocatable, intent(out) :: error
+    type(sixbar_deck_t) :: deck
+    type(sixbar_position_t) :: pos
+    real(wp) :: h(2), s4(2), x2(2), down(2), guide_deg
+    call read_sixbar_deck(source, deck, error)
+    if (allocated(error)) return
+    associate (p => deck%p)
+      pos = sixbar_position(p, deck%phi_start * deg_to_rad)
+      ! frame 2 has its origin at D
+      h = pos%d + sixbar_frame2_to_frame1(p, pos%h)
+      s4 = pos%d + sixbar_frame2_to_frame1(p, pos%s4)
+      x2 = sixbar_frame2_to_frame1(p, [1.0_wp, 0.0_wp])
+      guide_deg = atan2(x2(2), x2(1)) / deg_to_rad
+      down = sixbar_down1(p)
+      model%title = "T.FTN six-bar crank-rocker-slider (linkage form)"
+      model%frame = 6
+      model%g = p%g
+      model%gravity_angle = atan2(down(2), down(1)) / deg_to_rad
+      model%n = deck%n
+      model%links = [model_link_t(1, p%m1, p%j1, [0.0_wp, 0.0_wp]), model_link_t(2, p%m2, p%j2, pos%s2), &
+        model_link_t(3, p%m3, p%j3, pos%d), model_link_t(4, p%m4, p%j4, s4), model_link_t(5, p%m5, 0.0_wp, h)]
+      model%pairs = [model_pair_t("A", "R", [1, 6], [0.0_wp, 0.0_wp], 0.0_wp, 0), &
+        model_pair_t("B", "R", [2, 1], pos%b, 0.0_wp, 0), &
+        model_pair_t("C", "R", [3, 2], pos%c, 0.0_wp, 0), &
+        model_pair_t("E", "R", [4, 3], pos%e1, 0.0_wp, 0), &
+        model_pair_t("H", "R", [4, 5], h, 0.0_wp, 0), &
+        model_pair_t("D", "R", [3, 6], pos%d, 0.0_wp, 0), &
+        model_pair_t("H6", "P", [5, 6], h, guide_deg, 6)]
+      allocate (model%drives(1))
+      model%drives(1)%pair = "A"
+      model%drives(1)%start = deck%phi_start
+      model%drives(1)%step = deck%dphi
+      model%drives(1)%omega = p%omega1
+      model%drives(1)%eps = 0.0_wp
+    end associate
+    allocate (model%moments(0))
+    model%forces = [model_load_t(link=5, at=h, angle=guide_deg, column=1)]
+    model%step_values = deck%f5(1:deck%n)
+    model%dyn = deck%dyn
+  end subroutine from_sixbar
+
+  !> PR 3050 (`&pr3050`) in its frame (origin C, x from C to A) with its link numbers: 1
+  !> cylinder (pivot A), 2 piston with rod (pin B), 3 rocker (pivot C), frame 4. The oil
+  !> force drives: the drive is the cylinder's stroke |AB| - |AB| at the first step (values,
+  !> speeds and accelerations per step from the rocker's prescribed motion), so F2 becomes
+  !> F_drive1 and phi3rel the stroke s1.
+  subroutine from_pr3050(source, model, error)
+    type(deck_source_t), intent(in) :: source
+    type(linkage_model_t), intent(out) :: model
+    type(error_t), allocatable, intent(out) :: error
+    type(pr3050_deck_t) :: deck
+    type(pr3050_position_t) :: pos, first
+    real(wp) :: axis_deg
+    integer :: k, n
+    call read_pr3050_deck(source, deck, error)
+    if (allocated(error)) return
+    n = deck%n
+    associate (p => deck%p)
+      first = pr3050_position(p, pr3050_phi3_deg(deck, 1) * deg_to_rad)
+      axis_deg = atan2(-first%e2(2), -first%e2(1)) / deg_to_rad
+      model%title = "PR 3050 four-bar with a hydraulic cylinder (linkage form)"
+      model%frame = 4
+      model%g = p%g
+      model%gravity_angle = deck%gamma_deg
+      model%n = n
+      model%links = [model_link_t(1, p%m1, p%j1, first%s1), model_link_t(2, p%m2, p%j2, first%s2), &
+        model_link_t(3, p%m3, p%j3, first%s3)]
+      model%pairs = [model_pair_t("A", "R", [1, 4], first%a, 0.0_wp, 0), &
+        model_pair_t("B1", "P", [2, 1], first%b, axis_deg, 1), &
+        model_pair_t("B", "R", [3, 2], first%b, 0.0_wp, 0), &
+        model_pair_t("C", "R", [3, 4], [0.0_wp, 0.0_wp], 0.0_wp, 0)]
+      allocate (model%drives(1), model%forces(0), model%moments(0))
+      model%drives(1)%pair = "B1"
+      model%drives(1)%omega_column = 1
+      model%drives(1)%eps_column = 2
+      allocate (model%drives(1)%values(n), model%step_values(2 * n))
+      do k = 1, n
+        pos = pr3050_position(p, pr3050_phi3_deg(deck, k) * deg_to_rad)
+        model%drives(1)%values(k) = pos%s - first%s
+        model%step_values(k) = pos%ds * deck%omega3(k)
+        model%step_values(n + k) = pos%dds * deck%omega3(k)**2 + pos%ds * deck%eps3(k)
+      end do
+      model%drives(1)%values(1) = 0.0_wp
+    end associate
+    model%dyn = deck%dyn
+  end subroutine from_pr3050
 
   !> A `&linkage` deck as it reads, every default written out (the raw namelist read again
   !> for the angles and laws as given, after the reader has validated the deck).
