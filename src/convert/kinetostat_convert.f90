@@ -18,6 +18,10 @@ module kinetostat_convert
   use kinetostat_sixbar, only: sixbar_position_t, sixbar_position, sixbar_frame2_to_frame1, sixbar_down1
   use kinetostat_pr3050_deck, only: pr3050_deck_t, read_pr3050_deck, pr3050_phi3_deg
   use kinetostat_pr3050, only: pr3050_position_t, pr3050_position
+  use kinetostat_assur_deck, only: assur_deck_t, read_assur_deck, assur_phi1_deg, assur_omega1_steps, &
+    load_schedule_t, load_window, load_column, load_table, resist_none
+  use kinetostat_assur, only: assur_kinematics, link_a, link_b
+  use kinetostat_assur_kinematics, only: link_state_t, dyad_pose_t, kind_names
   use kinetostat_linkage_deck, only: linkage_deck_t, read_linkage_deck
   use kinetostat_linkage, only: pair_p
   use kinetostat_dynamics_deck, only: md_table_capacity
@@ -52,11 +56,10 @@ contains
     case ("pr3050")
       call from_pr3050(source, model, error)
     case ("assur")
-      call refuse(source%path//": &"//group//": convert: the translation of &"//group// &
-        " decks into &linkage is not written yet (&pr3207 and &linkage decks translate)")
+      call from_assur(source, model, error)
     case default
       call refuse(source%path//": &"//group//": convert: not a linkage of lower pairs (gears, cams and the "// &
-        "design kinds have no &linkage model; &pr3207 and &linkage decks translate)")
+        "design kinds have no &linkage model; the linkage kinds &pr3207, &pr3050, &sixbar, &assur and &linkage translate)")
     end select
     if (allocated(error)) return
     call attach_comments(source, group, model)
@@ -358,6 +361,209 @@ contains
     end associate
     model%dyn = deck%dyn
   end subroutine from_pr3050
+
+  !> An `&assur` deck (crank and dyads) with its own link numbers and joint names, in its
+  !> global frame; the points at the first step. The pairs: the crank's pivot first, then
+  !> each dyad's outer pair of link a, inner pair, outer pair of link b, their links in the
+  !> order of the deck's columns (F<a><b> or, with inner_on = link3, F<b><a>). The drive's
+  !> angle is the crank's axis as `&linkage` takes it, to its first other joint: when that
+  !> joint is off the crank's x axis the angles (phi1, windows, md_table) are shifted by
+  !> the constant between the two. Friction, load tables, technological resistances and a
+  !> linear actuator are refused naming the variable.
+  subroutine from_assur(source, model, error)
+    type(deck_source_t), intent(in) :: source
+    type(linkage_model_t), intent(out) :: model
+    type(error_t), allocatable, intent(out) :: error
+    type(assur_deck_t) :: deck
+    type(link_state_t), allocatable :: states(:)
+    type(dyad_pose_t), allocatable :: poses(:)
+    integer :: nd, d, j, i, nl, ip, ncol, n
+    integer :: ids(0:1)
+    real(wp) :: offset, v(2)
+    real(wp), allocatable :: omega(:)
+    character(len=:), allocatable :: letters
+    call read_assur_deck(source, deck, error)
+    if (allocated(error)) return
+    if (deck%friction_on) then
+      call refuse_assur("crank_f, dyad(i)%f2, %f23, %f3", "friction in the pairs")
+      return
+    end if
+    if (deck%mech%drive_dyad > 0) then
+      call refuse_assur("drive_dyad", "a linear actuator drives")
+      return
+    end if
+    do i = 1, size(deck%force_load)
+      if (deck%force_load(i)%kind == load_table) then
+        call refuse_assur("force("//int_str(i)//")%table", "a load table over a link's position")
+        return
+      end if
+      if (deck%force_load(i)%resist /= resist_none) then
+        call refuse_assur("force("//int_str(i)//")%resist", "a technological resistance (its sign from the motion)")
+        return
+      end if
+    end do
+    do i = 1, size(deck%moment_load)
+      if (deck%moment_load(i)%kind == load_table) then
+        call refuse_assur("moment("//int_str(i)//")%table", "a load table over a link's position")
+        return
+      end if
+      if (deck%moment_load(i)%resist /= resist_none) then
+        call refuse_assur("moment("//int_str(i)//")%resist", "a technological resistance (its sign from the motion)")
+        return
+      end if
+    end do
+    n = deck%n
+    nd = size(deck%mech%dyads)
+    nl = 2 * nd + 1
+    allocate (states(0:nl), poses(nd))
+    call assur_kinematics(deck%mech, assur_phi1_deg(deck, 1) * deg_to_rad, states, poses, error)
+    if (allocated(error)) then
+      error%message = source%path//": &assur: convert: the first step: "//error%message
+      return
+    end if
+    model%title = trim(deck%title)
+    model%frame = deck%frame_id
+    model%g = deck%mech%g
+    model%gravity_angle = deck%gravity_angle
+    model%n = n
+    allocate (model%links(nl), model%pairs(3 * nd + 1))
+    do i = 1, nl
+      associate (l => deck%mech%links(i))
+        model%links(i) = model_link_t(l%id, l%m, l%j, at_global(i, l%s))
+      end associate
+    end do
+    ip = 3 * nd + 1
+    model%pairs(1) = model_pair_t(deck%joint_name(ip), "R", [deck%mech%links(1)%id, deck%frame_id], &
+      deck%mech%pivot, 0.0_wp, 0)
+    do d = 1, nd
+      letters = kind_names(deck%mech%dyads(d)%geom%kind)
+      associate (dy => deck%mech%dyads(d))
+        ids = [deck%mech%links(link_a(d))%id, deck%mech%links(link_b(d))%id]
+        do j = 1, 3
+          ip = 3 * (d - 1) + j
+          associate (r => model%pairs(ip + 1))
+            r%name = deck%joint_name(ip)
+            r%kind = letters(j:j)
+            select case (j)
+            case (1)
+              r%links = [ids(0), deck%mech%links(dy%on(1))%id]
+            case (2)
+              r%links = ids
+              if (deck%pair_sign(ip) < 0.0_wp) r%links = [ids(1), ids(0)]
+            case (3)
+              r%links = [ids(1), deck%mech%links(dy%on(2))%id]
+            end select
+            r%at = poses(d)%p(:, j)
+            if (r%kind == "P") then
+              r%angle = atan2(poses(d)%t(2, j), poses(d)%t(1, j)) / deg_to_rad
+              select case (j)
+              case (1)
+                r%guide = deck%mech%links(dy%on(1))%id
+              case (2)
+                r%guide = ids(1)
+              case (3)
+                r%guide = deck%mech%links(dy%on(2))%id
+              end select
+            end if
+          end associate
+        end do
+      end associate
+    end do
+    ! the crank's axis as &linkage takes it: to its first other joint in deck order
+    offset = 0.0_wp
+    do ip = 2, size(model%pairs)
+      if (any(model%pairs(ip)%links == deck%mech%links(1)%id)) then
+        v = model%pairs(ip)%at - deck%mech%pivot
+        offset = atan2(v(2), v(1)) / deg_to_rad - states(1)%th / deg_to_rad
+        offset = offset - 360.0_wp * anint(offset / 360.0_wp)
+        if (abs(offset) < 1.0e-12_wp) offset = 0.0_wp
+        exit
+      end if
+    end do
+    allocate (model%drives(1))
+    associate (dr => model%drives(1))
+      dr%pair = model%pairs(1)%name
+      if (allocated(deck%phi_list)) then
+        dr%values = deck%phi_list(1:n) + offset
+      else
+        dr%start = deck%phi_start + offset
+        dr%step = deck%dphi
+      end if
+      ! step_values: the load columns, then the crank's speed and acceleration when they vary
+      ncol = 0
+      if (allocated(deck%step_values)) then
+        do i = 1, size(deck%force_load)
+          if (deck%force_load(i)%kind == load_column) ncol = max(ncol, deck%force_load(i)%offset / n + 1)
+        end do
+        do i = 1, size(deck%moment_load)
+          if (deck%moment_load(i)%kind == load_column) ncol = max(ncol, deck%moment_load(i)%offset / n + 1)
+        end do
+      end if
+      if (ncol > 0) model%step_values = deck%step_values(1:ncol * n)
+      if (deck%prescribed .or. allocated(deck%phi_list)) then
+        omega = assur_omega1_steps(deck, 1, n)
+        if (.not. allocated(model%step_values)) allocate (model%step_values(0))
+        model%step_values = [model%step_values, omega]
+        dr%omega_column = ncol + 1
+        if (deck%prescribed) then
+          model%step_values = [model%step_values, deck%eps1_values(1:n)]
+          dr%eps_column = ncol + 2
+        end if
+      else
+        dr%omega = deck%omega1_const
+      end if
+    end associate
+    allocate (model%forces(size(deck%mech%forces)), model%moments(size(deck%mech%moment_link)))
+    do i = 1, size(model%forces)
+      associate (f => deck%mech%forces(i), m => model%forces(i))
+        m%link = deck%mech%links(f%link)%id
+        m%at = at_global(f%link, f%at)
+        m%angle = f%angle / deg_to_rad
+        if (f%follow) m%angle = (f%angle + states(f%link)%th) / deg_to_rad
+        m%follow = f%follow
+        call schedule(m, deck%force_load(i))
+      end associate
+    end do
+    do i = 1, size(model%moments)
+      model%moments(i)%link = deck%mech%links(deck%mech%moment_link(i))%id
+      call schedule(model%moments(i), deck%moment_load(i))
+    end do
+    model%dyn = deck%dyn
+    if (allocated(model%dyn%md_phi)) model%dyn%md_phi = model%dyn%md_phi + offset
+
+  contains
+
+    !> A point given in link i's coordinates, global at the first step.
+    pure function at_global(i, local) result(x)
+      integer, intent(in) :: i
+      real(wp), intent(in) :: local(2)
+      real(wp) :: x(2)
+      x = states(i)%o + [cos(states(i)%th) * local(1) - sin(states(i)%th) * local(2), &
+        sin(states(i)%th) * local(1) + cos(states(i)%th) * local(2)]
+    end function at_global
+
+    pure subroutine schedule(m, load)
+      type(model_load_t), intent(inout) :: m
+      type(load_schedule_t), intent(in) :: load
+      m%value = load%value
+      select case (load%kind)
+      case (load_window)
+        m%window = .true.
+        m%idle = load%idle
+        m%phi_on = load%phi_on + offset
+        m%phi_off = load%phi_off + offset
+      case (load_column)
+        m%column = load%offset / n + 1
+      end select
+    end subroutine schedule
+
+    subroutine refuse_assur(variable, what)
+      character(*), intent(in) :: variable, what
+      allocate (error)
+      error%message = source%path//": &assur: "//variable//": convert: "//what// &
+        " has no &linkage translation yet (run the &assur deck itself)"
+    end subroutine refuse_assur
+  end subroutine from_assur
 
   !> A `&linkage` deck as it reads, every default written out (the raw namelist read again
   !> for the angles and laws as given, after the reader has validated the deck).
