@@ -25,6 +25,7 @@ module kinetostat_convert
   use kinetostat_linkage_deck, only: linkage_deck_t, read_linkage_deck
   use kinetostat_linkage, only: pair_p
   use kinetostat_dynamics_deck, only: md_table_capacity
+  use kinetostat_dynamics, only: dynamics_steady
   implicit none
   private
   public :: convert_deck, convert_targets
@@ -281,6 +282,12 @@ contains
     real(wp) :: h(2), s4(2), x2(2), down(2), guide_deg
     call read_sixbar_deck(source, deck, error)
     if (allocated(error)) return
+    if (deck%dyn%mode >= dynamics_steady) then
+      allocate (error)
+      error%message = source%path//": &sixbar: f5: convert: the slider load of a steady cycle (a table over the "// &
+        "crank angle) has no &linkage translation yet (a &linkage deck's per-step loads cannot make a steady cycle)"
+      return
+    end if
     associate (p => deck%p)
       pos = sixbar_position(p, deck%phi_start * deg_to_rad)
       ! frame 2 has its origin at D

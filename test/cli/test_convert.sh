@@ -1,0 +1,120 @@
+# kinetostat convert DECK --to linkage (docs/linkage.md, "One model: the &linkage
+# translation"): every bundled linkage deck of data/ and docs/examples/ (found by listing the
+# folders) is converted and both decks are run; every column both CSVs have agrees within
+# rtol 1e-9, atol 1e-9 (kinetostat diff --common), but the columns the two kinds report in
+# different frames (listed per deck below, with why); a deck that fails at a step fails the
+# same way converted (exit code and step); the converted deck converts to itself, byte for
+# byte. A perturbed translation (one mass 1e-6 relative off) must fail the comparison. By
+# default a sample of the decks (one of each kind and of each feature: a few seconds of CPU);
+# KINETOSTAT_LONG=1: every deck. Refusals: one line, exit 2, naming the variable.
+
+cv_dir="$cli_tmp/convert"
+mkdir -p "$cv_dir"
+
+# The columns a kind reports in its own frames, which the &linkage form reports globally:
+# &sixbar gives the forces of group 4-5 in its frame 2 and F56 signed; an &assur dyad with a
+# frame_angle gives its three pairs in its reporting frame.
+cv_skip() {  # DECK -> a regex of the columns left out (empty: none)
+  case "$1" in
+    data/sixbar*.nml) echo '^(F43G|F45G|F56)$' ;;
+    data/assur_sixbar*.nml) echo '^(F43|F45|F56)[GxyN]$' ;;
+    *) echo '' ;;
+  esac
+}
+
+# cv_csv_without IN OUT REGEX: the CSV without the columns matching REGEX.
+cv_csv_without() {
+  python3 - "$1" "$2" "$3" <<'PY'
+import csv, re, sys
+src, dst, pattern = sys.argv[1:4]
+with open(src, newline="") as f:
+    rows = list(csv.reader(f))
+keep = [i for i, name in enumerate(rows[0]) if not (pattern and re.search(pattern, name))]
+with open(dst, "w", newline="") as f:
+    w = csv.writer(f, lineterminator="\n")
+    for r in rows:
+        w.writerow([r[i] for i in keep])
+PY
+}
+
+# cv_check NAME DECK [PERTURB-SED]: convert, run both, compare, idempotence.
+cv_check() {
+  local name="$1" deck="$2" perturb="${3:-}"
+  local conv="$cv_dir/$name.nml" a="$cv_dir/$name.a.csv" b="$cv_dir/$name.b.csv"
+  "$KINETOSTAT" convert "$deck" --to linkage -o "$conv" 2>"$cv_dir/err"
+  local rc=$?
+  if [ "$rc" -ne 0 ]; then fail "$name" "convert exit $rc: $(head -c 300 "$cv_dir/err")"; return; fi
+  if [ -n "$perturb" ]; then sed -i "$perturb" "$conv"; fi
+  local ra rb
+  "$KINETOSTAT" "$deck" --format csv --quiet -o "$a" 2>"$cv_dir/erra"; ra=$?
+  "$KINETOSTAT" "$conv" --format csv --quiet -o "$b" 2>"$cv_dir/errb"; rb=$?
+  if [ "$ra" -ne "$rb" ]; then
+    fail "$name" "exit $ra for the deck, $rb for its translation: $(head -c 200 "$cv_dir/erra") / $(head -c 200 "$cv_dir/errb")"
+    return
+  fi
+  if [ "$ra" -ne 0 ]; then
+    # both refused at a step: the same step
+    local sa sb
+    sa=$(grep -o 'step [0-9]*' "$cv_dir/erra" | head -1); sb=$(grep -o 'step [0-9]*' "$cv_dir/errb" | head -1)
+    if [ -n "$sa" ] && [ "$sa" = "$sb" ]; then pass; else fail "$name" "both exit $ra but at '$sa' and '$sb'"; fi
+    return
+  fi
+  local skip; skip=$(cv_skip "$deck")
+  cv_csv_without "$a" "$a.kept" "$skip"; cv_csv_without "$b" "$b.kept" "$skip"
+  "$KINETOSTAT" diff --common --rtol 1e-9 --atol 1e-9 "$a.kept" "$b.kept" >"$cv_dir/diff" 2>&1
+  if [ -n "$perturb" ]; then
+    if grep -q '^different:' "$cv_dir/diff"; then pass; else fail "$name" "a perturbed translation passed: $(tail -1 "$cv_dir/diff")"; fi
+    return
+  fi
+  if ! grep -q '^same:' "$cv_dir/diff"; then fail "$name" "$(head -c 600 "$cv_dir/diff")"; return; fi
+  "$KINETOSTAT" convert "$conv" --to linkage -o "$conv.again" 2>"$cv_dir/err"
+  if ! cmp -s "$conv" "$conv.again"; then
+    fail "$name" "not idempotent: $(diff "$conv" "$conv.again" | head -5)"; return
+  fi
+  pass
+}
+
+# the decks of the linkage kinds: every one (--long) or the sample
+cv_sample=" data/pr3207.nml data/pr3050.nml data/sixbar.nml data/assur_fourbar.nml \
+data/assur_sixbar.nml data/assur_slider_crank.nml data/class3.nml "
+for deck in data/*.nml docs/examples/*.nml; do
+  group=$(grep -m1 -o '^[[:space:]]*&[A-Za-z0-9_]*' "$deck" | tr -d ' \t&')
+  case "$group" in pr3207|pr3050|sixbar|assur|linkage) ;; *) continue ;; esac
+  if [ "${KINETOSTAT_LONG:-0}" != 1 ] && [[ "$cv_sample" != *" $deck "* ]]; then continue; fi
+  # kinds the translation refuses (one line, exit 2, naming the variable)
+  run_ks convert "$deck" --to linkage
+  if [ "$rc" -eq 2 ] && grep -q 'convert: .* has no &linkage translation yet' "$err"; then
+    if [ "$(wc -l <"$err")" -eq 1 ] && [ ! -s "$out" ]; then pass; else fail "convert-refusal-$deck" "$(cat "$err")"; fi
+    continue
+  fi
+  cv_check "convert-$(basename "$deck" .nml)" "$deck"
+done
+
+# the checks can fail: a translation with the lever 1e-6 heavier differs
+cv_check convert-perturbed-pr3207 data/pr3207.nml 's/link(3)%m = 22,/link(3)%m = 22.000022,/'
+cv_check convert-perturbed-assur data/assur_fourbar.nml 's/link(2)%m = 1,/link(2)%m = 1.000001,/'
+
+# the hand-written twin and the translation of data/pr3207_flywheel.nml: the same deck
+run_ks convert data/pr3207_flywheel.nml --to linkage
+if grep -qx "  frame = 6" "$out" && grep -q "pair(2)%name = 'B', pair(2)%kind = 'R', pair(2)%links = 2, 1" "$out" \
+   && grep -q "dynamics = 'steady', delta = 0.04, j_rotor = 0.6" "$out" \
+   && grep -qx "! PR 3207 (spec pr3207.md) with its machine dynamics: the reference deck at a crank step of" "$out"; then
+  pass
+else
+  fail convert-pr3207-twin "$(head -c 600 "$out")"
+fi
+
+# refusals and usage
+expect_exit convert-needs-to 1 convert data/pr3207.nml
+grep -q "convert needs --to linkage" "$err" && pass || fail convert-needs-to-message "$(cat "$err")"
+expect_exit convert-to-other 1 convert data/pr3207.nml --to assur
+run_ks convert data/gears_reducer.nml --to linkage
+if [ "$rc" -eq 2 ] && [ "$(wc -l <"$err")" -eq 1 ] && grep -q "^kinetostat: error: data/gears_reducer.nml: &gears: convert: not a linkage of lower pairs" "$err" && [ ! -s "$out" ]; then
+  pass
+else
+  fail convert-gears "exit $rc: $(cat "$err")"
+fi
+# all or nothing: a refused deck leaves no file
+rm -f "$cv_dir/none.nml"
+run_ks convert data/gears_reducer.nml --to linkage -o "$cv_dir/none.nml"
+if [ -e "$cv_dir/none.nml" ]; then fail convert-no-partial "a file was written"; else pass; fi
