@@ -23,7 +23,7 @@ FRICTION = {"&pr3207": ["--set", "crank_f=0.1"], "&pr3050": ["--set", "crank_f=0
             "&sixbar": ["--set", "crank_f=0.1"], "&assur": ["--set", "crank_f=0.1", "--set", "crank_r=0.01"],
             "&linkage": ["--set", "pair(1)%f=0.1"]}
 TABLE = {"&pr3207": ["--set", "force(1)%table=0,1,360,1"], "&pr3050": ["--set", "force(1)%table=0,1,360,1"],
-         "&sixbar": ["--set", "force(1)%table=0,1,360,1"], "&linkage": ["--set", "force(1)%table=0,1,360,1"]}
+         "&sixbar": ["--set", "force(1)%table=0,1,360,1"]}
 
 
 def command(row, kind):
@@ -62,6 +62,8 @@ def command(row, kind):
     if row == "load tables over a link's position (`force(i)%table`)":
         if kind == "&assur":
             return ["data/assur_engine_flywheel.nml"]
+        if kind == "&linkage":
+            return ["data/linkage_engine_flywheel.nml"]
         return [deck] + TABLE[kind]
     return None
 

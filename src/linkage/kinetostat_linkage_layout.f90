@@ -733,11 +733,19 @@ contains
                              trim(merge(", FOLLOWS THE LINK", "                  ", mech%forces(k)%follow)))
         call table%echo_array("  AT", mech%forces(k)%at, "m")
         call table%echo_real("  ANGLE", angle_360_deg(mech%forces(k)%dir), "deg")
-        call echo_schedule(table, deck%force_load(k)%value, deck%force_load(k)%column, "N")
+        if (deck%force_load(k)%table) then
+          call table%echo_int("  TABLE_POINTS", size(deck%force_load(k)%x), "")
+        else
+          call echo_schedule(table, deck%force_load(k)%value, deck%force_load(k)%column, "N")
+        end if
       end do
       do k = 1, size(mech%moment_link)
         call table%echo_line("   MOMENT "//int_str(k)//": LINK "//link_name(mech, mech%moment_link(k)))
-        call echo_schedule(table, deck%moment_load(k)%value, deck%moment_load(k)%column, "N*m")
+        if (deck%moment_load(k)%table) then
+          call table%echo_int("  TABLE_POINTS", size(deck%moment_load(k)%x), "")
+        else
+          call echo_schedule(table, deck%moment_load(k)%value, deck%moment_load(k)%column, "N*m")
+        end if
       end do
       call structure_lines(mech, lang_en, lines)
       call table%echo_heading(trim(lines(1)))
