@@ -14,7 +14,7 @@ module kinetostat_convert
   use kinetostat_convert_model, only: linkage_model_t, model_link_t, model_pair_t, model_drive_t, model_load_t, &
     write_linkage_model, add_note, first_variable
   use kinetostat_pr3207_deck, only: pr3207_deck_t, read_pr3207_deck, pr3207_f5c, pr3207_phi1_deg
-  use kinetostat_sixbar_deck, only: sixbar_deck_t, read_sixbar_deck
+  use kinetostat_sixbar_deck, only: sixbar_deck_t, read_sixbar_deck, sixbar_phi1_deg
   use kinetostat_sixbar, only: sixbar_position_t, sixbar_position, sixbar_frame2_to_frame1, sixbar_down1
   use kinetostat_pr3050_deck, only: pr3050_deck_t, read_pr3050_deck, pr3050_phi3_deg
   use kinetostat_pr3050, only: pr3050_position_t, pr3050_position
@@ -26,6 +26,7 @@ module kinetostat_convert
   use kinetostat_linkage, only: pair_p
   use kinetostat_dynamics_deck, only: md_table_capacity
   use kinetostat_dynamics, only: dynamics_steady
+  use kinetostat_load_table, only: max_table_points
   implicit none
   private
   public :: convert_deck, convert_targets
@@ -280,14 +281,9 @@ contains
     type(sixbar_deck_t) :: deck
     type(sixbar_position_t) :: pos
     real(wp) :: h(2), s4(2), x2(2), down(2), guide_deg
+    integer :: k
     call read_sixbar_deck(source, deck, error)
     if (allocated(error)) return
-    if (deck%dyn%mode >= dynamics_steady) then
-      allocate (error)
-      error%message = source%path//": &sixbar: f5: convert: the slider load of a steady cycle (a table over the "// &
-        "crank angle) has no &linkage translation yet (a &linkage deck's per-step loads cannot make a steady cycle)"
-      return
-    end if
     associate (p => deck%p)
       pos = sixbar_position(p, deck%phi_start * deg_to_rad)
       ! frame 2 has its origin at D
@@ -318,8 +314,18 @@ contains
       model%drives(1)%eps = 0.0_wp
     end associate
     allocate (model%moments(0))
-    model%forces = [model_load_t(link=5, at=h, angle=guide_deg, column=1)]
-    model%step_values = deck%f5(1:deck%n)
+    if (deck%dyn%mode >= dynamics_steady) then
+      ! a steady cycle takes f5 as a table over the crank angle, linear between the steps
+      model%forces = [model_load_t(link=5, at=h, angle=guide_deg)]
+      allocate (model%forces(1)%x(deck%n))
+      do k = 1, deck%n
+        model%forces(1)%x(k) = sixbar_phi1_deg(deck, k)
+      end do
+      model%forces(1)%v = deck%f5(1:deck%n)
+    else
+      model%forces = [model_load_t(link=5, at=h, angle=guide_deg, column=1)]
+      model%step_values = deck%f5(1:deck%n)
+    end if
     model%dyn = deck%dyn
   end subroutine from_sixbar
 
@@ -375,8 +381,9 @@ contains
   !> order of the deck's columns (F<a><b> or, with inner_on = link3, F<b><a>). The drive's
   !> angle is the crank's axis as `&linkage` takes it, to its first other joint: when that
   !> joint is off the crank's x axis the angles (phi1, windows, md_table) are shifted by
-  !> the constant between the two. Friction, load tables, technological resistances and a
-  !> linear actuator are refused naming the variable.
+  !> the constant between the two. Load tables over the crank become tables over the first
+  !> drive's coordinate; friction, tables over another link, technological resistances and
+  !> a linear actuator are refused naming the variable.
   subroutine from_assur(source, model, error)
     type(deck_source_t), intent(in) :: source
     type(linkage_model_t), intent(out) :: model
@@ -400,8 +407,8 @@ contains
       return
     end if
     do i = 1, size(deck%force_load)
-      if (deck%force_load(i)%kind == load_table) then
-        call refuse_assur("force("//int_str(i)//")%table", "a load table over a link's position")
+      if (deck%force_load(i)%kind == load_table .and. .not. over_crank(deck%force_load(i))) then
+        call refuse_assur("force("//int_str(i)//")%over", "a load table over a link other than the crank")
         return
       end if
       if (deck%force_load(i)%resist /= resist_none) then
@@ -410,8 +417,8 @@ contains
       end if
     end do
     do i = 1, size(deck%moment_load)
-      if (deck%moment_load(i)%kind == load_table) then
-        call refuse_assur("moment("//int_str(i)//")%table", "a load table over a link's position")
+      if (deck%moment_load(i)%kind == load_table .and. .not. over_crank(deck%moment_load(i))) then
+        call refuse_assur("moment("//int_str(i)//")%over", "a load table over a link other than the crank")
         return
       end if
       if (deck%moment_load(i)%resist /= resist_none) then
@@ -561,8 +568,18 @@ contains
         m%phi_off = load%phi_off + offset
       case (load_column)
         m%column = load%offset / n + 1
+      case (load_table)
+        ! over the crank's angle: the first drive's coordinate
+        m%x = load%x + offset
+        m%v = load%v
       end select
     end subroutine schedule
+
+    !> Whether a table's abscissa is the crank's angle.
+    pure logical function over_crank(load)
+      type(load_schedule_t), intent(in) :: load
+      over_crank = load%link == 1 .and. load%pair == 0
+    end function over_crank
 
     subroutine refuse_assur(variable, what)
       character(*), intent(in) :: variable, what
@@ -690,11 +707,12 @@ contains
     end type drive_in_t
     type :: force_in_t
       real(wp) :: link = unset, at(2) = unset, angle = unset, value = unset, idle = unset, phi_on = unset, &
-        phi_off = unset, column = unset
+        phi_off = unset, column = unset, table(2 * max_table_points) = unset, over = unset
       logical :: follow = .false.
     end type force_in_t
     type :: moment_in_t
-      real(wp) :: link = unset, value = unset, idle = unset, phi_on = unset, phi_off = unset, column = unset
+      real(wp) :: link = unset, value = unset, idle = unset, phi_on = unset, phi_off = unset, column = unset, &
+        table(2 * max_table_points) = unset, over = unset
     end type moment_in_t
     character(len=long) :: title, dynamics
     real(wp) :: frame, g, gravity_angle, n, delta, j_rotor, j_flywheel, cycle, flywheel_density, flywheel_width_ratio
@@ -725,7 +743,29 @@ contains
     end do
     do i = 1, nf
       model%forces(i)%angle = force(i)%angle
+      call raw_table(model%forces(i), force(i)%table, force(i)%over)
     end do
+    do i = 1, nm
+      call raw_table(model%moments(i), moment(i)%table, moment(i)%over)
+    end do
+
+  contains
+
+    !> A table as given: its points (up to the first unset value) and its `over`.
+    pure subroutine raw_table(m, table, over)
+      type(model_load_t), intent(inout) :: m
+      real(wp), intent(in) :: table(:), over
+      integer :: np
+      np = 0
+      do while (np < size(table))
+        if (table(np + 1) /= table(np + 1)) exit
+        np = np + 1
+      end do
+      if (np < 2) return
+      m%x = table(1:np - 1:2)
+      m%v = table(2:np:2)
+      if (over == over) m%over = nint(over)
+    end subroutine raw_table
   end subroutine raw_linkage
 
 end module kinetostat_convert

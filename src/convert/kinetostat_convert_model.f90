@@ -55,6 +55,10 @@ module kinetostat_convert_model
     logical :: window = .false.
     real(wp) :: idle = 0.0_wp, phi_on = 0.0_wp, phi_off = 0.0_wp
     integer :: column = 0
+    !> Or a table over the first drive's coordinate: pairs (position, value) as x, v.
+    real(wp), allocatable :: x(:), v(:)
+    !> The table's `over` link as given (0: not given).
+    integer :: over = 0
   end type model_load_t
 
   !> A comment line of the original deck and the line of the translation it goes before
@@ -261,12 +265,14 @@ contains
           deck_number(f%angle)
         if (f%follow) line = line//", "//p//"follow = .true."
         call keyed("force("//int_str(i)//")", line//load_tail(p, f))
+        call put_table(p, f)
       end associate
     end do
     do i = 1, size(model%moments)
       p = "moment("//int_str(i)//")%"
       associate (f => model%moments(i))
         call keyed("moment("//int_str(i)//")", "  "//p//"link = "//int_str(f%link)//load_tail(p, f))
+        call put_table(p, f)
       end associate
     end do
     if (allocated(model%step_values)) then
@@ -317,12 +323,23 @@ contains
       end do
     end subroutine put_list
 
-    !> A load's value: constant, windowed or a column.
+    !> A load's table, pairs (position, value).
+    subroutine put_table(p, f)
+      character(*), intent(in) :: p
+      type(model_load_t), intent(in) :: f
+      if (.not. allocated(f%x)) return
+      call put_list("  "//p//"table = ", reshape(transpose(reshape([f%x, f%v], [size(f%x), 2])), [2 * size(f%x)]))
+    end subroutine put_table
+
+    !> A load's value: constant, windowed, a column or a table (its points on lines of their own).
     pure function load_tail(p, f) result(s)
       character(*), intent(in) :: p
       type(model_load_t), intent(in) :: f
       character(len=:), allocatable :: s
-      if (f%column > 0) then
+      if (allocated(f%x)) then
+        s = ""
+        if (f%over > 0) s = ", "//p//"over = "//int_str(f%over)
+      else if (f%column > 0) then
         s = ", "//p//"column = "//int_str(f%column)
       else
         s = ", "//p//"value = "//deck_number(f%value)

@@ -22,13 +22,26 @@ cv_skip() {  # DECK -> a regex of the columns left out (empty: none)
   esac
 }
 
-# cv_csv_without IN OUT REGEX: the CSV without the columns matching REGEX.
+# The rows a kind gives a value the &linkage form cannot: data/sixbar_flywheel.nml's slider
+# load is a table over the crank angle whose two ends differ (f5 = 1000 N at step 1, 0 at step
+# 361, one turn later); a &linkage table is periodic and gives step 361 the value of step 1.
+cv_drop_last() {  # DECK -> 1 when its last row is left out
+  case "$1" in
+    data/sixbar_flywheel.nml) echo 1 ;;
+    *) echo 0 ;;
+  esac
+}
+
+# cv_csv_without IN OUT REGEX [DROP-LAST]: the CSV without the columns matching REGEX (and
+# without its last row when DROP-LAST is 1).
 cv_csv_without() {
-  python3 - "$1" "$2" "$3" <<'PY'
+  python3 - "$1" "$2" "$3" "${4:-0}" <<'PY'
 import csv, re, sys
-src, dst, pattern = sys.argv[1:4]
+src, dst, pattern, drop_last = sys.argv[1:5]
 with open(src, newline="") as f:
     rows = list(csv.reader(f))
+if drop_last == "1":
+    rows = rows[:-1]
 keep = [i for i, name in enumerate(rows[0]) if not (pattern and re.search(pattern, name))]
 with open(dst, "w", newline="") as f:
     w = csv.writer(f, lineterminator="\n")
@@ -60,7 +73,8 @@ cv_check() {
     return
   fi
   local skip; skip=$(cv_skip "$deck")
-  cv_csv_without "$a" "$a.kept" "$skip"; cv_csv_without "$b" "$b.kept" "$skip"
+  local drop; drop=$(cv_drop_last "$deck")
+  cv_csv_without "$a" "$a.kept" "$skip" "$drop"; cv_csv_without "$b" "$b.kept" "$skip" "$drop"
   "$KINETOSTAT" diff --common --rtol 1e-9 --atol 1e-9 "$a.kept" "$b.kept" >"$cv_dir/diff" 2>&1
   if [ -n "$perturb" ]; then
     if grep -q '^different:' "$cv_dir/diff"; then pass; else fail "$name" "a perturbed translation passed: $(tail -1 "$cv_dir/diff")"; fi
