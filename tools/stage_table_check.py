@@ -22,7 +22,7 @@ DECK = {"&pr3207": "data/pr3207.nml", "&pr3050": "data/pr3050.nml", "&sixbar": "
 GIVEN = ["--set", "dynamics='given'", "--set", "j_flywheel=1000"]
 FRICTION = {"&pr3207": ["--set", "crank_f=0.1"], "&pr3050": ["--set", "crank_f=0.1"],
             "&sixbar": ["--set", "crank_f=0.1"], "&assur": ["--set", "crank_f=0.1", "--set", "crank_r=0.01"],
-            "&linkage": ["--set", "pair(1)%f=0.1"]}
+            "&linkage": ["--set", "pair(1)%f=0.1", "--set", "pair(1)%r=0.01"]}
 TABLE = {"&pr3207": ["--set", "force(1)%table=0,1,360,1"], "&pr3050": ["--set", "force(1)%table=0,1,360,1"],
          "&sixbar": ["--set", "force(1)%table=0,1,360,1"]}
 

@@ -64,8 +64,8 @@ module kinetostat_linkage_deck
     real(wp) :: angle = unset
     !> P: the link carrying the guide (default links(2)).
     real(wp) :: guide = unset
-    !> Friction (not yet supported): coefficient and journal radius.
-    real(wp) :: f = unset, r = unset
+    !> Friction: coefficient, journal radius (R, m), the guide's and the block's lengths (P, m).
+    real(wp) :: f = unset, r = unset, guide_length = unset, block_length = unset
   end type pair_in_t
 
   !> A drive as written.
@@ -156,6 +156,10 @@ module kinetostat_linkage_deck
     character(len=16), allocatable :: drive_pair(:)
     !> The machine dynamics settings (dynamics = 'none' unless given).
     type(dynamics_deck_t) :: dyn
+    !> Friction of every pair: coefficient, journal radius (m), contact span (m; 0: the
+    !> resultant-normal model); whether any pair has friction.
+    real(wp), allocatable :: friction_f(:), friction_r(:), friction_span(:)
+    logical :: friction_on = .false.
   end type linkage_deck_t
 
   !> The commented template deck (a crank-rocker four-bar).
@@ -306,7 +310,7 @@ contains
         return
       end if
     end do
-    allocate (deck%mech%pairs(np))
+    allocate (deck%mech%pairs(np), deck%friction_f(np), deck%friction_r(np), deck%friction_span(np))
     do k = 1, np
       p = "pair("//int_str(k)//")%"
       associate (pr => deck%mech%pairs(k))
@@ -314,11 +318,8 @@ contains
           "must be 'R' (turning) or 'P' (sliding), got '"//trim(pair(k)%kind)//"'", error)
         if (allocated(error)) return
         pr%kind = merge(pair_r, pair_p, lower(trim(pair(k)%kind)) == "r")
-        if (is_set(pair(k)%f) .or. is_set(pair(k)%r)) then
-          call deck_error(ctx, p//merge("f", "r", is_set(pair(k)%f)), &
-            "friction is not yet supported in &linkage decks (use an &assur deck for friction)", error)
-          return
-        end if
+        call read_friction(p, pair(k), pr%kind, deck%friction_f(k), deck%friction_r(k), deck%friction_span(k), error)
+        if (allocated(error)) return
         call require_chars(ctx, p//"name", pair(k)%name, name_chars, error)
         if (allocated(error)) return
         ! (the name may start with a digit: its columns x_<name> start with a letter)
@@ -530,6 +531,7 @@ contains
       if (allocated(error)) return
     end do
 
+    deck%friction_on = any(deck%friction_f > 0.0_wp)
     call analyse_structure(deck%mech, ctx%path//": &"//ctx%group, error)
     if (allocated(error)) return
     call read_dynamics(error)
@@ -581,6 +583,43 @@ contains
         any(deck%moment_load%column > 0)), "a steady cycle needs every load at any drive angle: give it as a "// &
         "constant or a window, not per step", error)
     end subroutine read_dynamics
+    !> A pair's friction (docs/friction.md): f >= 0 (default 0); a turning pair's journal
+    !> radius r (> 0 when f > 0); a sliding pair's guide and block lengths (> 0 when given;
+    !> the contact span is the shorter); a variable the pair's kind does not use is refused.
+    subroutine read_friction(pfx, pin, kind, f, r, span, err)
+      character(*), intent(in) :: pfx
+      type(pair_in_t), intent(in) :: pin
+      integer, intent(in) :: kind
+      real(wp), intent(out) :: f, r, span
+      type(error_t), allocatable, intent(out) :: err
+      f = optional_default(pin%f, 0.0_wp)
+      call require_nonnegative(ctx, pfx//"f", f, err); if (allocated(err)) return
+      r = 0.0_wp
+      span = 0.0_wp
+      if (kind == pair_r) then
+        call require_rule(ctx, pfx//"guide_length", .not. is_set(pin%guide_length) .and. &
+          .not. is_set(pin%block_length), "not used by this pair (a turning pair; lengths are a sliding pair's)", err)
+        if (allocated(err)) return
+        r = optional_default(pin%r, 0.0_wp)
+        call require_nonnegative(ctx, pfx//"r", r, err); if (allocated(err)) return
+        call require_rule(ctx, pfx//"r", .not. (f > 0.0_wp .and. .not. r > 0.0_wp), &
+          "must be > 0 with friction (f > 0): the journal radius, m", err)
+      else
+        call require_rule(ctx, pfx//"r", .not. is_set(pin%r), "not used by this pair (a sliding pair has no "// &
+          "journal radius)", err)
+        if (allocated(err)) return
+        if (is_set(pin%guide_length)) then
+          call require_rule(ctx, pfx//"guide_length", pin%guide_length > 0.0_wp, "must be > 0 (m)", err)
+          if (allocated(err)) return
+          span = pin%guide_length
+        end if
+        if (is_set(pin%block_length)) then
+          call require_rule(ctx, pfx//"block_length", pin%block_length > 0.0_wp, "must be > 0 (m)", err)
+          if (allocated(err)) return
+          span = merge(min(span, pin%block_length), pin%block_length, span > 0.0_wp)
+        end if
+      end if
+    end subroutine read_friction
     !> Number of leading true entries.
     pure integer function leading(given)
       logical, intent(in) :: given(:)
