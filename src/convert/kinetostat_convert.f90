@@ -382,8 +382,8 @@ contains
   !> angle is the crank's axis as `&linkage` takes it, to its first other joint: when that
   !> joint is off the crank's x axis the angles (phi1, windows, md_table) are shifted by
   !> the constant between the two. Load tables over the crank become tables over the first
-  !> drive's coordinate; friction, tables over another link, technological resistances and
-  !> a linear actuator are refused naming the variable.
+  !> drive's coordinate; friction goes pair by pair; tables over another link,
+  !> technological resistances and a linear actuator are refused naming the variable.
   subroutine from_assur(source, model, error)
     type(deck_source_t), intent(in) :: source
     type(linkage_model_t), intent(out) :: model
@@ -398,10 +398,6 @@ contains
     character(len=:), allocatable :: letters
     call read_assur_deck(source, deck, error)
     if (allocated(error)) return
-    if (deck%friction_on) then
-      call refuse_assur("crank_f, dyad(i)%f2, %f23, %f3", "friction in the pairs")
-      return
-    end if
     if (deck%mech%drive_dyad > 0) then
       call refuse_assur("drive_dyad", "a linear actuator drives")
       return
@@ -483,6 +479,17 @@ contains
         end do
       end associate
     end do
+    ! friction: the crank's pivot is the last of the deck's pairs, the first of the model's
+    if (deck%friction_on) then
+      do ip = 1, 3 * nd + 1
+        associate (fr => deck%friction(ip), r => model%pairs(merge(1, ip + 1, ip == 3 * nd + 1)))
+          if (fr%f <= 0.0_wp) cycle
+          r%f = fr%f
+          if (r%kind == "R") r%r = fr%r
+          if (r%kind == "P" .and. fr%span > 0.0_wp) r%guide_length = fr%span
+        end associate
+      end do
+    end if
     ! the crank's axis as &linkage takes it: to its first other joint in deck order
     offset = 0.0_wp
     do ip = 2, size(model%pairs)
@@ -698,7 +705,8 @@ contains
     end type link_in_t
     type :: pair_in_t
       character(len=long) :: name = "", kind = ""
-      real(wp) :: links(2) = unset, at(2) = unset, angle = unset, guide = unset, f = unset, r = unset
+      real(wp) :: links(2) = unset, at(2) = unset, angle = unset, guide = unset, f = unset, r = unset, &
+        guide_length = unset, block_length = unset
     end type pair_in_t
     type :: drive_in_t
       character(len=long) :: pair = ""
@@ -739,7 +747,13 @@ contains
     nm = count(moment%link == moment%link)
     allocate (model%pairs(np), model%drives(nd), model%forces(nf), model%moments(nm))
     do i = 1, np
-      if (pair(i)%angle == pair(i)%angle) model%pairs(i)%angle = pair(i)%angle
+      associate (m => model%pairs(i))
+        if (pair(i)%angle == pair(i)%angle) m%angle = pair(i)%angle
+        if (pair(i)%f == pair(i)%f) m%f = pair(i)%f
+        if (pair(i)%r == pair(i)%r) m%r = pair(i)%r
+        if (pair(i)%guide_length == pair(i)%guide_length) m%guide_length = pair(i)%guide_length
+        if (pair(i)%block_length == pair(i)%block_length) m%block_length = pair(i)%block_length
+      end associate
     end do
     do i = 1, nf
       model%forces(i)%angle = force(i)%angle

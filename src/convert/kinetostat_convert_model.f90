@@ -34,6 +34,9 @@ module kinetostat_convert_model
     real(wp) :: at(2) = 0.0_wp
     real(wp) :: angle = 0.0_wp
     integer :: guide = 0
+    !> Friction: coefficient, journal radius (m), the guide's and the block's lengths (m);
+    !> a negative value is not written.
+    real(wp) :: f = -1.0_wp, r = -1.0_wp, guide_length = -1.0_wp, block_length = -1.0_wp
   end type model_pair_t
 
   !> A drive: the pair's name; the law start + (k-1)*step or a list of values (deg or m);
@@ -235,6 +238,10 @@ contains
         line = "  "//p//"name = "//quoted(trim(r%name))//", "//p//"kind = '"//r%kind//"', "//p//"links = "// &
           int_str(r%links(1))//", "//int_str(r%links(2))//", "//p//"at = "//number_list(r%at)
         if (r%kind == "P") line = line//", "//p//"angle = "//deck_number(r%angle)//", "//p//"guide = "//int_str(r%guide)
+        if (r%f >= 0.0_wp) line = line//", "//p//"f = "//deck_number(r%f)
+        if (r%r >= 0.0_wp) line = line//", "//p//"r = "//deck_number(r%r)
+        if (r%guide_length >= 0.0_wp) line = line//", "//p//"guide_length = "//deck_number(r%guide_length)
+        if (r%block_length >= 0.0_wp) line = line//", "//p//"block_length = "//deck_number(r%block_length)
         call keyed("pair("//int_str(i)//")", line)
       end associate
     end do
