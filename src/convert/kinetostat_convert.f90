@@ -398,10 +398,6 @@ contains
     character(len=:), allocatable :: letters
     call read_assur_deck(source, deck, error)
     if (allocated(error)) return
-    if (deck%mech%drive_dyad > 0) then
-      call refuse_assur("drive_dyad", "a linear actuator drives")
-      return
-    end if
     do i = 1, size(deck%force_load)
       if (deck%force_load(i)%kind == load_table .and. .not. over_crank(deck%force_load(i))) then
         call refuse_assur("force("//int_str(i)//")%over", "a load table over a link other than the crank")
@@ -501,39 +497,45 @@ contains
         exit
       end if
     end do
+    ! step_values: the load columns, then the drive's speed and acceleration when they vary
+    ncol = 0
+    if (allocated(deck%step_values)) then
+      do i = 1, size(deck%force_load)
+        if (deck%force_load(i)%kind == load_column) ncol = max(ncol, deck%force_load(i)%offset / n + 1)
+      end do
+      do i = 1, size(deck%moment_load)
+        if (deck%moment_load(i)%kind == load_column) ncol = max(ncol, deck%moment_load(i)%offset / n + 1)
+      end do
+    end if
+    allocate (model%step_values(ncol * n))
+    if (ncol > 0) model%step_values = deck%step_values(1:ncol * n)
     allocate (model%drives(1))
-    associate (dr => model%drives(1))
-      dr%pair = model%pairs(1)%name
-      if (allocated(deck%phi_list)) then
-        dr%values = deck%phi_list(1:n) + offset
-      else
-        dr%start = deck%phi_start + offset
-        dr%step = deck%dphi
-      end if
-      ! step_values: the load columns, then the crank's speed and acceleration when they vary
-      ncol = 0
-      if (allocated(deck%step_values)) then
-        do i = 1, size(deck%force_load)
-          if (deck%force_load(i)%kind == load_column) ncol = max(ncol, deck%force_load(i)%offset / n + 1)
-        end do
-        do i = 1, size(deck%moment_load)
-          if (deck%moment_load(i)%kind == load_column) ncol = max(ncol, deck%moment_load(i)%offset / n + 1)
-        end do
-      end if
-      if (ncol > 0) model%step_values = deck%step_values(1:ncol * n)
-      if (deck%prescribed .or. allocated(deck%phi_list)) then
-        omega = assur_omega1_steps(deck, 1, n)
-        if (.not. allocated(model%step_values)) allocate (model%step_values(0))
-        model%step_values = [model%step_values, omega]
-        dr%omega_column = ncol + 1
-        if (deck%prescribed) then
-          model%step_values = [model%step_values, deck%eps1_values(1:n)]
-          dr%eps_column = ncol + 2
+    if (deck%mech%drive_dyad > 0) then
+      call actuator_drive(error)
+      if (allocated(error)) return
+    else
+      associate (dr => model%drives(1))
+        dr%pair = model%pairs(1)%name
+        if (allocated(deck%phi_list)) then
+          dr%values = deck%phi_list(1:n) + offset
+        else
+          dr%start = deck%phi_start + offset
+          dr%step = deck%dphi
         end if
-      else
-        dr%omega = deck%omega1_const
-      end if
-    end associate
+        if (deck%prescribed .or. allocated(deck%phi_list)) then
+          omega = assur_omega1_steps(deck, 1, n)
+          model%step_values = [model%step_values, omega]
+          dr%omega_column = ncol + 1
+          if (deck%prescribed) then
+            model%step_values = [model%step_values, deck%eps1_values(1:n)]
+            dr%eps_column = ncol + 2
+          end if
+        else
+          dr%omega = deck%omega1_const
+        end if
+      end associate
+    end if
+    if (size(model%step_values) == 0) deallocate (model%step_values)
     allocate (model%forces(size(deck%mech%forces)), model%moments(size(deck%mech%moment_link)))
     do i = 1, size(model%forces)
       associate (f => deck%mech%forces(i), m => model%forces(i))
@@ -553,6 +555,45 @@ contains
     if (allocated(model%dyn%md_phi)) model%dyn%md_phi = model%dyn%md_phi + offset
 
   contains
+
+    !> A linear actuator drives (drive_dyad, drive_pair): the drive is its sliding pair's
+    !> stroke from the first step, with the stroke's speed and acceleration per step
+    !> (columns of step_values after the load columns) from the crank's motion.
+    subroutine actuator_drive(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(link_state_t), allocatable :: st(:)
+      type(dyad_pose_t), allocatable :: ps(:)
+      real(wp), allocatable :: w(:), eps(:), q(:), qd(:), qdd(:)
+      real(wp) :: sense
+      integer :: k, dd, jj
+      dd = deck%mech%drive_dyad
+      jj = deck%mech%drive_pair
+      allocate (st(0:nl), ps(nd), q(n), qd(n), qdd(n))
+      w = assur_omega1_steps(deck, 1, n)
+      allocate (eps(n))
+      do k = 1, n
+        eps(k) = 0.0_wp
+        if (deck%prescribed) eps(k) = deck%eps1_values(k)
+        call assur_kinematics(deck%mech, assur_phi1_deg(deck, k) * deg_to_rad, st, ps, error)
+        if (allocated(error)) then
+          error%message = source%path//": &assur: convert: step "//int_str(k)//": "//error%message
+          return
+        end if
+        q(k) = ps(dd)%stroke(jj)
+        qd(k) = ps(dd)%stroke_v(jj) * w(k)
+        qdd(k) = ps(dd)%stroke_a(jj) * w(k)**2 + ps(dd)%stroke_v(jj) * eps(k)
+      end do
+      ! the &linkage stroke runs along the guide's direction at the first step
+      sense = sign(1.0_wp, dot_product(poses(dd)%extend(:, jj), poses(dd)%t(:, jj)))
+      associate (dr => model%drives(1))
+        dr%pair = model%pairs(3 * (dd - 1) + jj + 1)%name
+        dr%values = sense * (q - q(1))
+        dr%values(1) = 0.0_wp
+        model%step_values = [model%step_values, sense * qd, sense * qdd]
+        dr%omega_column = ncol + 1
+        dr%eps_column = ncol + 2
+      end associate
+    end subroutine actuator_drive
 
     !> A point given in link i's coordinates, global at the first step.
     pure function at_global(i, local) result(x)
