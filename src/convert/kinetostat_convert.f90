@@ -176,6 +176,23 @@ contains
       case default
         key = "drive(1)"
       end select
+    case ("assur")
+      select case (base)
+      case ("frame_id", "crank_id")
+        key = "frame"
+      case ("crank_at", "crank_m", "crank_j", "crank_s", "coordinates", "phi_ref")
+        key = "link(1)"
+      case ("crank_joint", "crank_f", "crank_r")
+        key = "pair(1)"
+      case ("omega1", "omega1_step", "eps1_step", "phi_start", "dphi", "n", "phi1", "start_at", "output_link", &
+            "drive_dyad", "drive_pair")
+        key = "drive(1)"
+      case ("dyad")
+        ! a dyad's lines go before its first pair (the crank's pivot is the model's pair 1)
+        key = "pair("//int_str(3 * dyad_number(var) - 1)//")"
+      case default
+        key = var
+      end select
     case ("pr3207")
       select case (base)
       case ("l_ab", "m1", "omega1", "phi_start", "dphi", "n")
@@ -194,6 +211,20 @@ contains
       key = var
       if (base == "gravity_angle") key = "g"
     end select
+
+  contains
+
+    !> The d of "dyad(d)" (0 when it does not read).
+    pure integer function dyad_number(name)
+      character(*), intent(in) :: name
+      integer :: ios, a, b
+      dyad_number = 0
+      a = index(name, "(")
+      b = index(name, ")")
+      if (a == 0 .or. b <= a + 1) return
+      read (name(a + 1:b - 1), *, iostat=ios) dyad_number
+      if (ios /= 0) dyad_number = 0
+    end function dyad_number
   end function target_key
 
   !> `&pr3207` in its own frame (origin A, x from A to C, gravity along +x) with its link
