@@ -31,6 +31,8 @@ module kinetostat_cli
   use kinetostat_gear_geometry_layout, only: gear_contour_text
   use kinetostat_assur_presets, only: assur_preset, preset_names
   use kinetostat_assur_layout, only: assur_mechanism_t
+  use kinetostat_linkage_layout, only: linkage_mechanism_t
+  use kinetostat_linkage_balance, only: linkage_balance
   use kinetostat_assur_balance, only: assur_balance, balance_method_names, balance_full, balance_words
   use kinetostat_deck, only: deck_line_count, deck_line
   use kinetostat_step_table, only: column_tally_t
@@ -452,24 +454,40 @@ contains
     type(error_t), allocatable, intent(out) :: error
     type(deck_source_t) :: source, balanced
     type(assur_mechanism_t) :: mech
+    type(linkage_mechanism_t) :: linkage
     type(override_t), allocatable :: overrides(:)
     type(text_buffer_t) :: report
     type(step_table_t) :: before, after
+    character(len=:), allocatable :: group
     integer :: i
-    call load_group_deck(args%deck, "assur", "balance works on &assur decks (the generic engine, a crank and its "// &
-      "dyads); model the mechanism as one (e.g. data/assur_pr3207.nml for &pr3207)", source, error)
+    call load_deck(args%deck, source, error)
     if (allocated(error)) return
-    call mech%read_deck(source, error)
+    call read_group_name(source, group, error)
     if (allocated(error)) return
-    if (mech%deck%mech%drive_dyad > 0 .and. args%balance_method /= balance_full) then
-      call fatal_error(error, exit_usage, source%path//": &assur: balance --method "// &
-        trim(balance_method_names(args%balance_method))//" needs a crank that turns the mechanism; this deck is "// &
-        "driven by an actuator (drive_dyad)")
+    if (group /= "assur" .and. group /= "linkage") then
+      call fatal_error(error, exit_input, source%path//": &"//group//": balance works on &assur and &linkage decks "// &
+        "(a crank and its dyads, or any linkage of lower pairs); model the mechanism as one (e.g. "// &
+        "data/assur_pr3207.nml for &pr3207)")
       return
     end if
-    call assur_balance(mech%deck, args%balance_method, args%fraction, args%options%lang, overrides, report, error)
+    if (group == "linkage") then
+      call linkage%read_deck(source, error)
+      if (allocated(error)) return
+      call linkage_balance(linkage%deck, args%balance_method, args%fraction, args%options%lang, overrides, report, &
+                           error)
+    else
+      call mech%read_deck(source, error)
+      if (allocated(error)) return
+      if (mech%deck%mech%drive_dyad > 0 .and. args%balance_method /= balance_full) then
+        call fatal_error(error, exit_usage, source%path//": &assur: balance --method "// &
+          trim(balance_method_names(args%balance_method))//" needs a crank that turns the mechanism; this deck is "// &
+          "driven by an actuator (drive_dyad)")
+        return
+      end if
+      call assur_balance(mech%deck, args%balance_method, args%fraction, args%options%lang, overrides, report, error)
+    end if
     if (allocated(error)) then
-      error%message = source%path//": &assur: "//error%message
+      error%message = source%path//": &"//group//": "//error%message
       return
     end if
     call apply_overrides(source, overrides, balanced, error)
@@ -506,10 +524,10 @@ contains
       class(mechanism_t), allocatable :: run_mech
       type(run_options_t) :: options
       type(text_buffer_t) :: text
-      call create_mechanism("assur", run_mech)
+      call create_mechanism(group, run_mech)
       options%format = format_summary
       options%shaking = .true.
-      call run_mechanism(run_mech, "assur", deck_source, options, table, text, error)
+      call run_mechanism(run_mech, group, deck_source, options, table, text, error)
     end subroutine summary_run
 
     !> The largest magnitude of column `name` before and after.

@@ -185,6 +185,12 @@ module kinetostat_linkage_deck
     "  moment(1)%link = 3, moment(1)%value = -20", &
     "  ! machine dynamics (docs/dynamics.md): omega is then the mean speed; the flywheel for delta", &
     "  ! dynamics = 'steady', delta = 0.05, j_rotor = 0", &
+    "  ! a load over the first drive's angle (a gas force from an indicator diagram, docs/assur.md):", &
+    "  ! pairs (deg, N), linear between them; over 720 deg with cycle = 720 for a four-stroke engine", &
+    "  ! force(2)%link = 3, force(2)%at = 0.4, 0.2, force(2)%angle = 180", &
+    "  ! force(2)%table = 0, 0, 90, 40, 180, 60, 270, 20, 360, 0", &
+    "  ! friction in a pair (docs/friction.md): coefficient, journal radius (m) of a turning pair", &
+    "  ! pair(1)%f = 0.1, pair(1)%r = 0.01", &
         "/"]
 
 contains

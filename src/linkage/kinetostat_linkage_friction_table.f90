@@ -165,7 +165,7 @@ contains
     character(*), intent(in) :: input, effort
     integer, intent(in) :: lang
     type(text_buffer_t), intent(inout) :: out
-    character(len=:), allocatable :: line1, line2, watt
+    character(len=:), allocatable :: line1, line2, watt, unit
     integer :: k, c, first, last
     first = table%column_index(effort//"_0")
     last = table%column_index("eta")
@@ -175,9 +175,11 @@ contains
         call out%put(" ТРЕНИЕ: ПОТЕРИ МОЩНОСТИ В ПАРАХ, "//upper(effort)// &
                      " БЕЗ ТРЕНИЯ, МГНОВЕННЫЙ КПД")
         watt = "Вт"
+        unit = merge("Н*м", "Н   ", table%columns(first)%unit == "N*m")
       else
         call out%put(" FRICTION: POWER LOSS IN THE PAIRS, "//upper(effort)//" WITHOUT FRICTION, INSTANTANEOUS EFFICIENCY")
         watt = "W"
+        unit = table%columns(first)%unit
       end if
       line1 = pad_left(upper(input), first_width)
       line2 = repeat(" ", first_width)
@@ -187,7 +189,7 @@ contains
       end do
       line1 = line1//pad_left("P_LOSS", field_width)//pad_left(upper(effort)//"_0", field_width)// &
         pad_left("ETA", field_width)
-      line2 = line2//pad_left(watt, field_width)//pad_left(table%columns(first)%unit, field_width)
+      line2 = line2//pad_left(watt, field_width)//pad_left(trim(unit), field_width)
       call out%put(line1)
       call out%put(trim(line2))
     end if

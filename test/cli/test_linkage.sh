@@ -115,7 +115,7 @@ expect_input_error linkage-w-surplus "W = 3n - 2p5 = 3 x 5 - 2 x 7 = 1 but 2 dri
   "$(deck_with lk_twodrives data/class3.nml "s/^  drive(1)%pair = 'O'.*$/&\n  drive(2)%pair = 'B', drive(2)%start = 0, drive(2)%step = 1, drive(2)%omega = 1/")"
 expect_input_error linkage-pair-kind "pair\(2\)%kind: must be 'R' \(turning\) or 'P' \(sliding\), got 'abc'" \
   "$(deck_with lk_kind data/fivebar.nml "s/pair(2)%kind = 'R'/pair(2)%kind = 'abc'/")"
-expect_input_error linkage-friction "pair\(2\)%f: friction is not yet supported" \
+expect_input_error linkage-friction "pair\(2\)%r: must be > 0 with friction \(f > 0\)" \
   "$(deck_with lk_friction data/fivebar.nml "s/pair(2)%at = 0.1, 0/pair(2)%at = 0.1, 0, pair(2)%f = 0.1/")"
 expect_input_error linkage-unknown-pair "drive\(1\)%pair: no pair is named 'Q'" \
   "$(deck_with lk_badpair data/class3.nml "s/drive(1)%pair = 'O'/drive(1)%pair = 'Q'/")"
