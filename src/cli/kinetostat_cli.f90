@@ -6,7 +6,7 @@ module kinetostat_cli
   use kinetostat_kinds, only: wp, version_string
   use kinetostat_error, only: error_t, fatal_error, exit_success, exit_usage, exit_input, exit_warning
   use kinetostat_deck_repeats, only: deck_repeats
-  use kinetostat_deck, only: deck_source_t, load_deck, read_group_name, set_max_deck_size
+  use kinetostat_deck, only: deck_source_t, load_deck, read_group_name, set_max_deck_size, deck_source_from_text
   use kinetostat_override, only: first_override_line, override_t, parse_override, apply_overrides
   use kinetostat_sweep, only: vary_t, parse_vary, run_sweep, variant_result_t, allow_selfcheck_failure_in_sweep, &
     sweep_header, sweep_npy
@@ -52,7 +52,7 @@ module kinetostat_cli
     "template KIND  a commented deck to start from (KIND: a mechanism, or a preset of the", &
     "            generic engine)", &
     "diff A B    compare two outputs (below)", &
-    "balance DECK  an &assur deck with counterweights added (docs/shaking.md); before/after", &
+    "balance DECK  a linkage deck with counterweights added (docs/shaking.md); before/after", &
     "            figures on stderr; --method (default full), --fraction: partial, default 0.5;", &
     "            --lang ru: the report in Russian", &
     "structure DECK  structural analysis of a linkage deck (&linkage, &assur, &pr3207, &pr3050,", &
@@ -458,16 +458,29 @@ contains
     type(override_t), allocatable :: overrides(:)
     type(text_buffer_t) :: report
     type(step_table_t) :: before, after
-    character(len=:), allocatable :: group
+    character(len=:), allocatable :: group, shown
+    !> A &pr3207, &pr3050 or &sixbar deck's &linkage translation.
+    type(text_buffer_t) :: translation
     integer :: i
     call load_deck(args%deck, source, error)
     if (allocated(error)) return
     call read_group_name(source, group, error)
     if (allocated(error)) return
+    shown = "&"//group
+    if (group == "pr3207" .or. group == "pr3050" .or. group == "sixbar") then
+      ! balanced as its &linkage translation, which the balanced deck is
+      call convert_deck(source, translation, error)
+      if (allocated(error)) return
+      shown = source%path ! (not source%path itself: source is the result)
+      call deck_source_from_text(shown, translation%data(1:translation%length), source, error=error)
+      if (allocated(error)) return
+      shown = "&"//group//" (its &linkage translation)"
+      group = "linkage"
+    end if
     if (group /= "assur" .and. group /= "linkage") then
-      call fatal_error(error, exit_input, source%path//": &"//group//": balance works on &assur and &linkage decks "// &
-        "(a crank and its dyads, or any linkage of lower pairs); model the mechanism as one (e.g. "// &
-        "data/assur_pr3207.nml for &pr3207)")
+      call fatal_error(error, exit_input, source%path//": &"//group//": balance works on the linkage decks "// &
+        "(&assur and &linkage; &pr3207, &pr3050 and &sixbar through their &linkage translation): not a linkage "// &
+        "of lower pairs")
       return
     end if
     if (group == "linkage") then
@@ -487,7 +500,7 @@ contains
       call assur_balance(mech%deck, args%balance_method, args%fraction, args%options%lang, overrides, report, error)
     end if
     if (allocated(error)) then
-      error%message = source%path//": &"//group//": "//error%message
+      error%message = source%path//": "//shown//": "//error%message
       return
     end if
     call apply_overrides(source, overrides, balanced, error)

@@ -136,3 +136,19 @@ fi
 rm -f "$cv_dir/none.nml"
 run_ks convert data/gears_reducer.nml --to linkage -o "$cv_dir/none.nml"
 if [ -e "$cv_dir/none.nml" ]; then fail convert-no-partial "a file was written"; else pass; fi
+
+# kinetostat balance of a &pr3207 deck balances its &linkage translation: full balance refused
+# with the figure of the &assur twin (7.65 % of the centre of mass's travel left), the crank
+# alone written as a &linkage deck that runs
+run_ks balance data/pr3207.nml
+if [ "$rc" -eq 3 ] && grep -q "&pr3207 (its &linkage translation): full balance is impossible: .* leave 7.65 % " "$err"; then
+  pass
+else
+  fail convert-balance-pr3207-full "exit $rc: $(head -c 300 "$err")"
+fi
+"$KINETOSTAT" balance data/pr3207.nml --method crank -o "$cv_dir/balanced.nml" 2>/dev/null
+if grep -q '^&linkage' "$cv_dir/balanced.nml" && "$KINETOSTAT" "$cv_dir/balanced.nml" --quiet -o /dev/null; then
+  pass
+else
+  fail convert-balance-pr3207-crank "the balanced deck is no running &linkage deck: $(head -c 300 "$cv_dir/balanced.nml")"
+fi

@@ -33,8 +33,8 @@ balance_error "balance-fraction-text" 1 "--fraction needs a number" balance "$ro
 balance_error "balance-fraction-without-partial" 1 "--fraction belongs to --method partial" balance "$root/data/assur_slider_crank.nml" --fraction 0.5
 balance_error "balance-method" 1 "--method must be full, crank or partial" balance "$root/data/assur_fourbar.nml" --method total
 balance_error "balance-no-crank" 1 "needs a crank that turns the mechanism" balance "$root/data/assur_pr3050.nml" --method crank
-balance_error "balance-not-assur" 2 "balance works on &assur and &linkage decks" balance "$root/data/pr3207.nml"
-balance_error "balance-gears" 2 "balance works on &assur and &linkage decks" balance "$root/data/gears_reducer.nml"
+balance_error "balance-not-linkage" 2 "balance works on the linkage decks" balance "$root/data/cam_flat.nml"
+balance_error "balance-gears" 2 "balance works on the linkage decks" balance "$root/data/gears_reducer.nml"
 balance_error "balance-linkage-full-impossible" 3 "&linkage: full balance is impossible.*--method partial" balance "$root/data/linkage_slider_crank.nml"
 balance_error "balance-linkage-partial-not-slider-crank" 1 "&linkage: --method partial balances a slider-crank" balance "$root/data/linkage_fourbar.nml" --method partial
 balance_error "balance-full-impossible" 3 "full balance is impossible.*--method partial" balance "$root/data/assur_slider_crank.nml"
