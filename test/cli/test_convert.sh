@@ -152,3 +152,15 @@ if grep -q '^&linkage' "$cv_dir/balanced.nml" && "$KINETOSTAT" "$cv_dir/balanced
 else
   fail convert-balance-pr3207-crank "the balanced deck is no running &linkage deck: $(head -c 300 "$cv_dir/balanced.nml")"
 fi
+
+# comments go before what their variable became: the engine's gas-force comment before force(1)
+run_ks convert docs/examples/engine.nml --to linkage
+if python3 - "$out" <<'PY'
+import sys
+lines = open(sys.argv[1]).read().splitlines()
+i = lines.index("  ! gas force on the piston, towards the crank (-x), N, over the crank angle (deg):")
+assert lines[i + 2].startswith("  force(1)%link = 3"), lines[i + 2]
+assert lines[0].startswith("! A four-stroke engine slider-crank"), lines[0]
+assert lines.index("&linkage") > 0
+PY
+then pass; else fail convert-comments "$(head -c 600 "$out")"; fi
