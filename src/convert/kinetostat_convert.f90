@@ -263,12 +263,7 @@ contains
         model_pair_t("D", "R", [3, 4], d, 0.0_wp, 0), &
         model_pair_t("D5", "P", [4, 5], d, 0.0_wp, 5), &
         model_pair_t("E", "P", [5, 6], [0.0_wp, d(2)], 90.0_wp, 6)]
-      allocate (model%drives(1))
-      model%drives(1)%pair = "A"
-      model%drives(1)%start = deck%phi_start
-      model%drives(1)%step = deck%dphi
-      model%drives(1)%omega = p%omega1
-      model%drives(1)%eps = 0.0_wp
+      model%drives = [crank_drive(deck%phi_start, deck%dphi, p%omega1)]
     end associate
     allocate (model%forces(1), model%moments(0))
     model%forces(1) = model_load_t(link=5, at=[0.0_wp, d(2)], angle=90.0_wp)
@@ -337,12 +332,7 @@ contains
         model_pair_t("H", "R", [4, 5], h, 0.0_wp, 0), &
         model_pair_t("D", "R", [3, 6], pos%d, 0.0_wp, 0), &
         model_pair_t("H6", "P", [5, 6], h, guide_deg, 6)]
-      allocate (model%drives(1))
-      model%drives(1)%pair = "A"
-      model%drives(1)%start = deck%phi_start
-      model%drives(1)%step = deck%dphi
-      model%drives(1)%omega = p%omega1
-      model%drives(1)%eps = 0.0_wp
+      model%drives = [crank_drive(deck%phi_start, deck%dphi, p%omega1)]
     end associate
     allocate (model%moments(0))
     if (deck%dyn%mode >= dynamics_steady) then
@@ -429,26 +419,10 @@ contains
     character(len=:), allocatable :: letters
     call read_assur_deck(source, deck, error)
     if (allocated(error)) return
-    do i = 1, size(deck%force_load)
-      if (deck%force_load(i)%kind == load_table .and. .not. over_crank(deck%force_load(i))) then
-        call refuse_assur("force("//int_str(i)//")%over", "a load table over a link other than the crank")
-        return
-      end if
-      if (deck%force_load(i)%resist /= resist_none) then
-        call refuse_assur("force("//int_str(i)//")%resist", "a technological resistance (its sign from the motion)")
-        return
-      end if
-    end do
-    do i = 1, size(deck%moment_load)
-      if (deck%moment_load(i)%kind == load_table .and. .not. over_crank(deck%moment_load(i))) then
-        call refuse_assur("moment("//int_str(i)//")%over", "a load table over a link other than the crank")
-        return
-      end if
-      if (deck%moment_load(i)%resist /= resist_none) then
-        call refuse_assur("moment("//int_str(i)//")%resist", "a technological resistance (its sign from the motion)")
-        return
-      end if
-    end do
+    call refuse_loads("force", deck%force_load)
+    if (allocated(error)) return
+    call refuse_loads("moment", deck%moment_load)
+    if (allocated(error)) return
     n = deck%n
     nd = size(deck%mech%dyads)
     nl = 2 * nd + 1
@@ -660,6 +634,24 @@ contains
       over_crank = load%link == 1 .and. load%pair == 0
     end function over_crank
 
+    !> The first load of `loads` the translation does not cover: a table over a link other
+    !> than the crank, a technological resistance.
+    subroutine refuse_loads(name, loads)
+      character(*), intent(in) :: name
+      type(load_schedule_t), intent(in) :: loads(:)
+      integer :: k
+      do k = 1, size(loads)
+        if (loads(k)%kind == load_table .and. .not. over_crank(loads(k))) then
+          call refuse_assur(name//"("//int_str(k)//")%over", "a load table over a link other than the crank")
+          return
+        end if
+        if (loads(k)%resist /= resist_none) then
+          call refuse_assur(name//"("//int_str(k)//")%resist", "a technological resistance (its sign from the motion)")
+          return
+        end if
+      end do
+    end subroutine refuse_loads
+
     subroutine refuse_assur(variable, what)
       character(*), intent(in) :: variable, what
       allocate (error)
@@ -667,6 +659,16 @@ contains
         " has no &linkage translation yet (run the &assur deck itself)"
     end subroutine refuse_assur
   end subroutine from_assur
+
+  !> The drive of a crank at pair 'A' turning at a constant speed: start + (k-1)*step (deg).
+  pure function crank_drive(start, step, omega) result(drive)
+    real(wp), intent(in) :: start, step, omega
+    type(model_drive_t) :: drive
+    drive%pair = "A"
+    drive%start = start
+    drive%step = step
+    drive%omega = omega
+  end function crank_drive
 
   !> A `&linkage` deck as it reads, every default written out (the raw namelist read again
   !> for the angles and laws as given, after the reader has validated the deck).
