@@ -8,6 +8,7 @@ module kinetostat_convert_model
   use kinetostat_kinds, only: wp
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_text, only: int_str, lower
+  use kinetostat_escape, only: namelist_string
   use kinetostat_dynamics, only: dynamics_none, dynamics_reduced, dynamics_steady, dynamics_given
   use kinetostat_dynamics_deck, only: dynamics_deck_t, dynamics_mode_name
   implicit none
@@ -149,22 +150,6 @@ contains
     end do
   end function number_list
 
-  !> A text as a quoted namelist string (a quote doubled).
-  pure function quoted(text) result(s)
-    character(*), intent(in) :: text
-    character(len=:), allocatable :: s
-    integer :: i
-    s = "'"
-    do i = 1, len(text)
-      if (text(i:i) == "'") then
-        s = s//"''"
-      else
-        s = s//text(i:i)
-      end if
-    end do
-    s = s//"'"
-  end function quoted
-
   !> The variable a deck line assigns first, lower case with its index ("link(3)" of
   !> "  link(3)%m = 2"; "delta"); "" for a line that assigns none.
   pure function first_variable(line) result(name)
@@ -221,7 +206,7 @@ contains
     character(len=:), allocatable :: p, line
     call note_lines(model, "", out)
     call out%put("&linkage")
-    call keyed("title", "  title = "//quoted(model%title))
+    call keyed("title", "  title = "//namelist_string(model%title))
     call keyed("frame", "  frame = "//int_str(model%frame))
     call keyed("g", "  g = "//deck_number(model%g)//", gravity_angle = "//deck_number(model%gravity_angle))
     call keyed("n", "  n = "//int_str(model%n))
@@ -235,7 +220,7 @@ contains
     do i = 1, size(model%pairs)
       p = "pair("//int_str(i)//")%"
       associate (r => model%pairs(i))
-        line = "  "//p//"name = "//quoted(trim(r%name))//", "//p//"kind = '"//r%kind//"', "//p//"links = "// &
+        line = "  "//p//"name = "//namelist_string(trim(r%name))//", "//p//"kind = '"//r%kind//"', "//p//"links = "// &
           int_str(r%links(1))//", "//int_str(r%links(2))//", "//p//"at = "//number_list(r%at)
         if (r%kind == "P") line = line//", "//p//"angle = "//deck_number(r%angle)//", "//p//"guide = "//int_str(r%guide)
         if (r%f >= 0.0_wp) line = line//", "//p//"f = "//deck_number(r%f)
@@ -248,7 +233,7 @@ contains
     do i = 1, size(model%drives)
       p = "drive("//int_str(i)//")%"
       associate (d => model%drives(i))
-        line = "  "//p//"pair = "//quoted(trim(d%pair))
+        line = "  "//p//"pair = "//namelist_string(trim(d%pair))
         if (.not. allocated(d%values)) line = line//", "//p//"start = "//deck_number(d%start)//", "//p//"step = "// &
           deck_number(d%step)
         if (d%omega_column > 0) then

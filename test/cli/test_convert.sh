@@ -164,3 +164,13 @@ assert lines[0].startswith("! A four-stroke engine slider-crank"), lines[0]
 assert lines.index("&linkage") > 0
 PY
 then pass; else fail convert-comments "$(head -c 600 "$out")"; fi
+
+# a title with a quote comes back through the namelist escaper (the quote doubled), idempotent
+sed "s/^  title = .*/  title = 'it''s a \"test\"'/" data/linkage_fourbar.nml >"$cv_dir/quote.nml"
+"$KINETOSTAT" convert "$cv_dir/quote.nml" --to linkage -o "$cv_dir/quote2.nml"
+"$KINETOSTAT" convert "$cv_dir/quote2.nml" --to linkage -o "$cv_dir/quote3.nml"
+if grep -qxF "  title = 'it''s a \"test\"'" "$cv_dir/quote2.nml" && cmp -s "$cv_dir/quote2.nml" "$cv_dir/quote3.nml"; then
+  pass
+else
+  fail convert-title-quote "$(grep title "$cv_dir/quote2.nml")"
+fi
