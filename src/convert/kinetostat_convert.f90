@@ -354,7 +354,7 @@ contains
   !> cylinder (pivot A), 2 piston with rod (pin B), 3 rocker (pivot C), frame 4. The oil
   !> force drives: the drive is the cylinder's stroke |AB| - |AB| at the first step (values,
   !> speeds and accelerations per step from the rocker's prescribed motion), so F2 becomes
-  !> F_drive1 and phi3rel the stroke s1.
+  !> F_drive2 and phi3rel the stroke s2 (the columns of link 2, the block).
   subroutine from_pr3050(source, model, error)
     type(deck_source_t), intent(in) :: source
     type(linkage_model_t), intent(out) :: model
