@@ -36,6 +36,33 @@ module kinetostat_convert
   !> A load window's ends are matched this much wider (deg), as the `&linkage` reader does.
   real(wp), parameter :: window_tol = 1.0e-9_wp
   real(wp), parameter :: unset = transfer(unset_bits, 1.0_wp)
+  !> The raw read's text length and a drive's list capacity (the &linkage reader's).
+  integer, parameter :: raw_text = 4096, raw_list = 14401
+
+  !> The `&linkage` namelist's variables as given (read again by raw_linkage: the validated
+  !> deck keeps the pairs' and forces' directions as unit vectors only).
+  type :: link_in_t
+    real(wp) :: id = unset, m = unset, j = unset, s(2) = unset
+  end type link_in_t
+  type :: pair_in_t
+    character(len=raw_text) :: name = "", kind = ""
+    real(wp) :: links(2) = unset, at(2) = unset, angle = unset, guide = unset, f = unset, r = unset, &
+      guide_length = unset, block_length = unset
+  end type pair_in_t
+  type :: drive_in_t
+    character(len=raw_text) :: pair = ""
+    real(wp) :: start = unset, step = unset, values(raw_list) = unset, omega = unset, eps = unset, &
+      omega_column = unset, eps_column = unset
+  end type drive_in_t
+  type :: force_in_t
+    real(wp) :: link = unset, at(2) = unset, angle = unset, value = unset, idle = unset, phi_on = unset, &
+      phi_off = unset, column = unset, table(2 * max_table_points) = unset, over = unset
+    logical :: follow = .false.
+  end type force_in_t
+  type :: moment_in_t
+    real(wp) :: link = unset, value = unset, idle = unset, phi_on = unset, phi_off = unset, column = unset, &
+      table(2 * max_table_points) = unset, over = unset
+  end type moment_in_t
 
 contains
 
@@ -145,6 +172,8 @@ contains
     case ("g", "gravity_angle")
       key = "g"
       return
+    case default
+      ! the kind's own variables below
     end select
     select case (group)
     case ("sixbar")
@@ -461,7 +490,7 @@ contains
             case (2)
               r%links = ids
               if (deck%pair_sign(ip) < 0.0_wp) r%links = [ids(1), ids(0)]
-            case (3)
+            case default
               r%links = [ids(1), deck%mech%links(dy%on(2))%id]
             end select
             r%at = poses(d)%p(:, j)
@@ -472,7 +501,7 @@ contains
                 r%guide = deck%mech%links(dy%on(1))%id
               case (2)
                 r%guide = ids(1)
-              case (3)
+              case default
                 r%guide = deck%mech%links(dy%on(2))%id
               end select
             end if
@@ -625,6 +654,8 @@ contains
         ! over the crank's angle: the first drive's coordinate
         m%x = load%x + offset
         m%v = load%v
+      case default
+        ! a constant: its value only
       end select
     end subroutine schedule
 
@@ -773,30 +804,7 @@ contains
     type(linkage_model_t), intent(inout) :: model
     type(error_t), allocatable, intent(out) :: error
     integer, parameter :: max_links = 48, max_pairs = 72, max_drives = 8, max_forces = 32, max_moments = 32
-    integer, parameter :: max_list = 14401, long = 4096
-    type :: link_in_t
-      real(wp) :: id = unset, m = unset, j = unset, s(2) = unset
-    end type link_in_t
-    type :: pair_in_t
-      character(len=long) :: name = "", kind = ""
-      real(wp) :: links(2) = unset, at(2) = unset, angle = unset, guide = unset, f = unset, r = unset, &
-        guide_length = unset, block_length = unset
-    end type pair_in_t
-    type :: drive_in_t
-      character(len=long) :: pair = ""
-      real(wp) :: start = unset, step = unset, values(max_list) = unset, omega = unset, eps = unset, &
-        omega_column = unset, eps_column = unset
-    end type drive_in_t
-    type :: force_in_t
-      real(wp) :: link = unset, at(2) = unset, angle = unset, value = unset, idle = unset, phi_on = unset, &
-        phi_off = unset, column = unset, table(2 * max_table_points) = unset, over = unset
-      logical :: follow = .false.
-    end type force_in_t
-    type :: moment_in_t
-      real(wp) :: link = unset, value = unset, idle = unset, phi_on = unset, phi_off = unset, column = unset, &
-        table(2 * max_table_points) = unset, over = unset
-    end type moment_in_t
-    character(len=long) :: title, dynamics
+    character(len=raw_text) :: title, dynamics
     real(wp) :: frame, g, gravity_angle, n, delta, j_rotor, j_flywheel, cycle, flywheel_density, flywheel_width_ratio
     real(wp), allocatable :: step_values(:), md_table(:)
     type(link_in_t) :: link(max_links)

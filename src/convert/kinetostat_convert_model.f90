@@ -29,7 +29,7 @@ module kinetostat_convert_model
   !> A pair: name, kind ('R' or 'P'), its links (force on the first from the second), joint
   !> (global at the reference position, m); P: the guide's direction (deg) and link.
   type :: model_pair_t
-    character(len=16) :: name = ""
+    character(len=32) :: name = ""
     character(len=1) :: kind = "R"
     integer :: links(2) = 0
     real(wp) :: at(2) = 0.0_wp
@@ -43,7 +43,7 @@ module kinetostat_convert_model
   !> A drive: the pair's name; the law start + (k-1)*step or a list of values (deg or m);
   !> speed and acceleration constant or columns of step_values (0: the constants).
   type :: model_drive_t
-    character(len=16) :: pair = ""
+    character(len=32) :: pair = ""
     real(wp) :: start = 0.0_wp, step = 0.0_wp
     real(wp), allocatable :: values(:)
     real(wp) :: omega = 0.0_wp, eps = 0.0_wp
@@ -279,9 +279,10 @@ contains
       line = line//", j_rotor = "//deck_number(model%dyn%j_rotor)
       if (model%dyn%mode /= dynamics_reduced) line = line//", cycle = "//deck_number(model%dyn%cycle_deg)
       call keyed("dynamics", line)
-      if (model%dyn%flywheel_density /= 7800.0_wp .or. model%dyn%flywheel_width_ratio /= 0.2_wp) &
+      if (model%dyn%flywheel_density /= 7800.0_wp .or. model%dyn%flywheel_width_ratio /= 0.2_wp) then
         call keyed("flywheel_density", "  flywheel_density = "//deck_number(model%dyn%flywheel_density)// &
-        ", flywheel_width_ratio = "//deck_number(model%dyn%flywheel_width_ratio))
+          ", flywheel_width_ratio = "//deck_number(model%dyn%flywheel_width_ratio))
+      end if
       if (allocated(model%dyn%md_phi)) then
         call note_lines(model, "md_table", out)
         call put_list("  md_table = ", reshape(transpose(reshape([model%dyn%md_phi, model%dyn%md_value], &
