@@ -25,7 +25,9 @@ module kinetostat_assur_deck
   use kinetostat_assur_friction, only: pair_friction_t, friction_active
   use kinetostat_dynamics, only: dynamics_steady
   use kinetostat_dynamics_deck, only: read_dynamics_settings, require_one_turn, md_table_capacity
-  use kinetostat_assur_deck_types
+  use kinetostat_assur_deck_types, only: max_dyads, max_forces, max_moments, misfit_rel, max_table_points, &
+    group_name, joint_name_chars, joint_text_length, schedule_in_t, load_constant, load_window, load_column, &
+    load_table, crank_index, resist_none, resist_moment, resist_force, load_schedule_t, assur_deck_t
   use kinetostat_assur_deck_loads, only: read_load, resist_size, find_link, moving_link
   use kinetostat_assur_deck_names, only: kind_names_as_codes, name_unknown_kind
   use kinetostat_assur_steps, only: assur_window, assur_phi1_deg, assur_omega1_steps, assur_omega1, &

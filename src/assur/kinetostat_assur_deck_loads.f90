@@ -8,7 +8,8 @@ module kinetostat_assur_deck_loads
     optional_default, require_whole
   use kinetostat_vec2, only: magnitude
   use kinetostat_assur, only: output_pair_of
-  use kinetostat_assur_deck_types
+  use kinetostat_assur_deck_types, only: schedule_in_t, load_constant, load_window, load_column, load_table, &
+    load_schedule_t, assur_deck_t
   use kinetostat_load_table, only: read_table_points
   use kinetostat_assur_steps, only: table_position, assur_phi1_deg
   implicit none

@@ -5,7 +5,6 @@ module kinetostat_assur_deck_names
   use kinetostat_text, only: int_str, lower, upper
   use kinetostat_deck, only: deck_line_count, deck_line, deck_context_t, deck_source_t
   use kinetostat_assur_kinematics, only: kind_names
-  use kinetostat_assur_deck_types
   implicit none
   private
   public :: kind_names_as_codes, name_unknown_kind

@@ -7,7 +7,8 @@ module kinetostat_assur_steps
   use kinetostat_vec2, only: magnitude
   use kinetostat_assur_kinematics, only: link_state_t, point_state_t, point_on, dyad_pose_t
   use kinetostat_assur, only: assur_kinematics, link_position
-  use kinetostat_assur_deck_types
+  use kinetostat_assur_deck_types, only: load_window, load_column, load_table, crank_index, resist_none, &
+    resist_moment, resist_zero_rel, load_schedule_t, assur_deck_t
   use kinetostat_load_table, only: table_interpolate, table_cyclic
   implicit none
   private
