@@ -16,6 +16,7 @@ _kinetostat() {
     diff) opts="--rtol --atol --common -q --quiet" ;;
     balance) opts="-o --output --method --fraction --lang --max-deck-size -q --quiet" ;;
     structure) opts="--lang -o --output --max-deck-size -q --quiet" ;;
+    convert) opts="--to -o --output --max-deck-size -q --quiet" ;;
     contour) opts="--set -o --output --max-deck-size -q --quiet" ;;
     sheets) opts="-o --output --paper --lang --at --designation --sheet-numbers --positions --point --output-link --student --group --variant --set --max-deck-size -q --quiet" ;;
     *) command=""
@@ -31,6 +32,7 @@ _kinetostat() {
     --method) COMPREPLY=($(compgen -W "full crank partial" -- "$cur")); return ;;
     --paper) COMPREPLY=($(compgen -W "A1 A2 A3 A4" -- "$cur")); return ;;
     --positions) COMPREPLY=($(compgen -W "8 12" -- "$cur")); return ;;
+    --to) COMPREPLY=($(compgen -W "linkage" -- "$cur")); return ;;
     -o|--output)
       if [ "$command" = sheets ]; then COMPREPLY=($(compgen -d -- "$cur")); else COMPREPLY=($(compgen -f -- "$cur")); fi
       return ;;
@@ -41,7 +43,7 @@ _kinetostat() {
   if [[ "$cur" == -* ]]; then
     COMPREPLY=($(compgen -W "$opts --help" -- "$cur"))
   elif [ "$COMP_CWORD" -eq 1 ]; then
-    COMPREPLY=($(compgen -W "sweep template diff balance structure contour sheets -" -- "$cur") \
+    COMPREPLY=($(compgen -W "sweep template diff balance structure convert contour sheets -" -- "$cur") \
       $(compgen -f -X '!*.nml' -- "$cur") $(compgen -d -- "$cur"))
   elif [ "$command" = diff ]; then
     COMPREPLY=($(compgen -f -X '!*.@(table|csv|txt|out)' -- "$cur") $(compgen -d -- "$cur"))

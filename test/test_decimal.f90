@@ -11,6 +11,7 @@ module test_decimal
   use kinetostat_kinds, only: wp
   use kinetostat_decimal, only: edit_f, edit_exponent, put_es_compact, put_whole
   use test_harness, only: test_counts_t, check_true, long_checks
+  use kinetostat_convert_model, only: deck_number
   implicit none
   private
   public :: run_decimal_tests
@@ -44,7 +45,41 @@ contains
     call test_fixed_cases(t)
     call test_random(t)
     call test_whole(t)
+    call test_deck_number(t)
   end subroutine run_decimal_tests
+
+  !> The numbers of a converted deck (kinetostat convert): each reads back to the same double
+  !> (10^4 random bit patterns, finite ones; the writer takes the first digit count that does),
+  !> and the plain and exponent forms of fixed cases.
+  subroutine test_deck_number(t)
+    type(test_counts_t), intent(inout) :: t
+    integer(int64) :: state, bits
+    real(wp) :: x, back
+    integer :: i, bad, ios
+    character(len=:), allocatable :: text, shown
+    bad = 0
+    shown = ""
+    state = 88172645463325252_int64
+    do i = 1, 10000
+      state = ieor(state, ishft(state, 13)); state = ieor(state, ishft(state, -7)); state = ieor(state, ishft(state, 17))
+      bits = state
+      x = transfer(bits, x)
+      if (.not. ieee_is_finite(x)) cycle
+      text = deck_number(x)
+      read (text, *, iostat=ios) back
+      if (ios /= 0 .or. back /= x) then
+        bad = bad + 1
+        if (bad <= max_shown) shown = shown//" "//text
+      end if
+    end do
+    call check_true(t, "deck_number: 10^4 random doubles read back exactly", bad == 0, "not:"//shown)
+    call check_true(t, "deck_number: plain forms", deck_number(0.1_wp) == "0.1" .and. deck_number(-0.34_wp) == "-0.34" &
+      .and. deck_number(12.0_wp) == "12" .and. deck_number(1.5e-7_wp) == "1.5e-7" .and. deck_number(0.0_wp) == "0" &
+      .and. deck_number(0.1_wp + 0.2_wp) == "0.30000000000000004" .and. deck_number(2.0e20_wp) == "2e20" &
+      .and. deck_number(1.0e-5_wp) == "0.00001", &
+      deck_number(0.1_wp)//" "//deck_number(-0.34_wp)//" "//deck_number(12.0_wp)//" "//deck_number(1.5e-7_wp)//" "// &
+      deck_number(0.1_wp + 0.2_wp)//" "//deck_number(2.0e20_wp)//" "//deck_number(1.0e-5_wp))
+  end subroutine test_deck_number
 
   !> The cases named in the spec of the writer, each through every descriptor.
   subroutine test_fixed_cases(t)

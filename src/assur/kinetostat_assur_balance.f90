@@ -21,7 +21,8 @@ module kinetostat_assur_balance
   use kinetostat_text, only: int_str
   use kinetostat_format, only: full_number, short_number
   use kinetostat_labels, only: lang_ru, unit_symbol, balance_words => in_language
-  use kinetostat_override, only: override_t
+  use kinetostat_override, only: override_t, append_override
+  use kinetostat_least_squares, only: least_squares
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_assur_kinematics, only: link_state_t, dyad_pose_t, kind_rrr, kind_rrp
   use kinetostat_assur, only: assur_kinematics, link_a, link_b
@@ -247,6 +248,13 @@ contains
       w_new(:, pivoted(j)) = x(2 * j - 1:2 * j)
       carries(pivoted(j)) = .true.
     end do
+    ! C is the total first moment but for the counterweights' own m_c o (o: the fixed origin)
+    do j = 1, size(pivoted)
+      associate (l => deck%mech%links(pivoted(j)))
+        x(nu - 1:nu) = x(nu - 1:nu) + norm2(x(2 * j - 1:2 * j) - l%m * l%s) / link_radius(deck, pivoted(j)) * &
+          states(pivoted(j), 1)%o
+      end associate
+    end do
     call report%put(balance_words("full balance (linearly independent vectors): counterweights on the "// &
       int_str(size(pivoted))//" links pivoted on the frame; the total centre of mass stays at (", &
       "полное статическое уравновешивание (метод линейно независимых "// &
@@ -372,10 +380,10 @@ contains
           short_number(radius)//" m, "//short_number(angle)//" deg in the link's axes (m*r = "// &
           short_number(mc * radius)//" kg*m)"
       end if
-      call append(overrides, mname, full_number(m_new)//"   ! "//note//"; kinetostat balance --method "// &
+      call append_override(overrides, mname, full_number(m_new)//"   ! "//note//"; kinetostat balance --method "// &
         trim(balance_method_names(method)))
-      call append(overrides, jname, full_number(j_new))
-      call append(overrides, sname, full_number(s_deck(1))//", "//full_number(s_deck(2)))
+      call append_override(overrides, jname, full_number(j_new))
+      call append_override(overrides, sname, full_number(s_deck(1))//", "//full_number(s_deck(2)))
       call report%put(note)
       call report%put("  "//mname//" "//short_number(l%m)//" -> "//short_number(m_new)//" "// &
         unit_symbol("kg", lang)//", "//jname//" "//short_number(l%j)//" -> "//short_number(j_new)//" "// &
@@ -385,23 +393,6 @@ contains
     end associate
   end subroutine add_counterweight
 
-  !> Append the assignment `name = value` (element by element: no array constructor of a
-  !> type with deferred-length components).
-  pure subroutine append(overrides, name, value)
-    type(override_t), allocatable, intent(inout) :: overrides(:)
-    character(*), intent(in) :: name, value
-    type(override_t), allocatable :: grown(:)
-    integer :: n, k
-    n = size(overrides)
-    allocate (grown(n + 1))
-    do k = 1, n
-      grown(k)%name = overrides(k)%name
-      grown(k)%value = overrides(k)%value
-    end do
-    grown(n + 1)%name = name
-    grown(n + 1)%value = value
-    call move_alloc(grown, overrides)
-  end subroutine append
 
   !> Where link `i` carries a counterweight: at the distance of its farthest joint from its
   !> origin (the crank radius for the crank), m; 0.1 m for a link without joints off its origin.
@@ -428,48 +419,5 @@ contains
     real(wp) :: u(2)
     u = [cos(th) * v(1) - sin(th) * v(2), sin(th) * v(1) + cos(th) * v(2)]
   end function turned
-
-  !> Least squares min |a x - b| by Householder QR; an error when a's columns are
-  !> (numerically) dependent.
-  pure subroutine least_squares(a, b, x, error)
-    real(wp), intent(inout) :: a(:, :)
-    real(wp), intent(inout) :: b(:)
-    real(wp), intent(out) :: x(:)
-    type(error_t), allocatable, intent(out) :: error
-    integer :: m, n, j, i
-    real(wp) :: alpha, v(size(a, 1)), beta, largest
-    m = size(a, 1)
-    n = size(a, 2)
-    x = 0.0_wp
-    if (m < n) then
-      call fatal_error(error, exit_geometry, "fewer equations than unknowns")
-      return
-    end if
-    do j = 1, n
-      alpha = norm2(a(j:m, j))
-      if (a(j, j) > 0.0_wp) alpha = -alpha
-      v = 0.0_wp
-      v(j:m) = a(j:m, j)
-      v(j) = v(j) - alpha
-      beta = dot_product(v(j:m), v(j:m))
-      if (beta > 0.0_wp) then
-        do i = j, n
-          a(j:m, i) = a(j:m, i) - 2.0_wp * v(j:m) * dot_product(v(j:m), a(j:m, i)) / beta
-        end do
-        b(j:m) = b(j:m) - 2.0_wp * v(j:m) * dot_product(v(j:m), b(j:m)) / beta
-      end if
-    end do
-    largest = 0.0_wp
-    do j = 1, n
-      largest = max(largest, abs(a(j, j)))
-    end do
-    do j = n, 1, -1
-      if (.not. abs(a(j, j)) > 1.0e-10_wp * largest) then
-        call fatal_error(error, exit_geometry, "dependent columns")
-        return
-      end if
-      x(j) = (b(j) - dot_product(a(j, j + 1:n), x(j + 1:n))) / a(j, j)
-    end do
-  end subroutine least_squares
 
 end module kinetostat_assur_balance

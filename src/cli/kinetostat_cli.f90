@@ -6,7 +6,7 @@ module kinetostat_cli
   use kinetostat_kinds, only: wp, version_string
   use kinetostat_error, only: error_t, fatal_error, exit_success, exit_usage, exit_input, exit_warning
   use kinetostat_deck_repeats, only: deck_repeats
-  use kinetostat_deck, only: deck_source_t, load_deck, read_group_name, set_max_deck_size
+  use kinetostat_deck, only: deck_source_t, load_deck, read_group_name, set_max_deck_size, deck_source_from_text
   use kinetostat_override, only: first_override_line, override_t, parse_override, apply_overrides
   use kinetostat_sweep, only: vary_t, parse_vary, run_sweep, variant_result_t, allow_selfcheck_failure_in_sweep, &
     sweep_header, sweep_npy
@@ -27,9 +27,12 @@ module kinetostat_cli
   use kinetostat_step_table, only: column_t
   use kinetostat_diff, only: diff_options_t, diff_outputs
   use kinetostat_linkage_layout, only: linkage_structure_text
+  use kinetostat_convert, only: convert_deck
   use kinetostat_gear_geometry_layout, only: gear_contour_text
   use kinetostat_assur_presets, only: assur_preset, preset_names
   use kinetostat_assur_layout, only: assur_mechanism_t
+  use kinetostat_linkage_layout, only: linkage_mechanism_t
+  use kinetostat_linkage_balance, only: linkage_balance
   use kinetostat_assur_balance, only: assur_balance, balance_method_names, balance_full, balance_words
   use kinetostat_deck, only: deck_line_count, deck_line
   use kinetostat_step_table, only: column_tally_t
@@ -49,11 +52,13 @@ module kinetostat_cli
     "template KIND  a commented deck to start from (KIND: a mechanism, or a preset of the", &
     "            generic engine)", &
     "diff A B    compare two outputs (below)", &
-    "balance DECK  an &assur deck with counterweights added (docs/shaking.md); before/after", &
+    "balance DECK  a linkage deck with counterweights added (docs/shaking.md); before/after", &
     "            figures on stderr; --method (default full), --fraction: partial, default 0.5;", &
     "            --lang ru: the report in Russian", &
     "structure DECK  structural analysis of a linkage deck (&linkage, &assur, &pr3207, &pr3050,", &
     "            &sixbar)", &
+    "convert DECK --to linkage  the deck translated into a &linkage deck (its comments kept", &
+    "            where they map); stdout or -o FILE (docs/linkage.md)", &
     "contour DECK  the blocking contour of a &gear_geometry deck's pair as CSV: curve,x1,x2", &
     "sheets DECK -o DIR  the course's sheets (kinetostatics; dynamics with a steady cycle) as", &
     "            SVG, DXF and PDF (rsvg-convert) in DIR (docs/course.md)", &
@@ -141,6 +146,10 @@ module kinetostat_cli
     logical :: structure = .false.
     !> The contour subcommand was given (`kinetostat contour DECK`).
     logical :: contour = .false.
+    !> The convert subcommand was given (`kinetostat convert DECK --to linkage`).
+    logical :: convert = .false.
+    !> Its target model (--to).
+    character(len=:), allocatable :: convert_to
     !> The --vary axes of a sweep.
     type(vary_t), allocatable :: varies(:)
     !> --part K/N of a sweep: this process runs block K of N.
@@ -230,6 +239,8 @@ contains
         call structure_of_deck(args, out, error)
       else if (args%contour) then
         call contour_of_deck(args, out, error)
+      else if (args%convert) then
+        call convert_of_deck(args, out, error)
       else if (args%balance) then
         call balance_deck(args, out, error)
       else if (args%sheets) then
@@ -443,24 +454,53 @@ contains
     type(error_t), allocatable, intent(out) :: error
     type(deck_source_t) :: source, balanced
     type(assur_mechanism_t) :: mech
+    type(linkage_mechanism_t) :: linkage
     type(override_t), allocatable :: overrides(:)
     type(text_buffer_t) :: report
     type(step_table_t) :: before, after
+    character(len=:), allocatable :: group, shown
+    !> A &pr3207, &pr3050 or &sixbar deck's &linkage translation.
+    type(text_buffer_t) :: translation
     integer :: i
-    call load_group_deck(args%deck, "assur", "balance works on &assur decks (the generic engine, a crank and its "// &
-      "dyads); model the mechanism as one (e.g. data/assur_pr3207.nml for &pr3207)", source, error)
+    call load_deck(args%deck, source, error)
     if (allocated(error)) return
-    call mech%read_deck(source, error)
+    call read_group_name(source, group, error)
     if (allocated(error)) return
-    if (mech%deck%mech%drive_dyad > 0 .and. args%balance_method /= balance_full) then
-      call fatal_error(error, exit_usage, source%path//": &assur: balance --method "// &
-        trim(balance_method_names(args%balance_method))//" needs a crank that turns the mechanism; this deck is "// &
-        "driven by an actuator (drive_dyad)")
+    shown = "&"//group
+    if (group == "pr3207" .or. group == "pr3050" .or. group == "sixbar") then
+      ! balanced as its &linkage translation, which the balanced deck is
+      call convert_deck(source, translation, error)
+      if (allocated(error)) return
+      shown = source%path ! (not source%path itself: source is the result)
+      call deck_source_from_text(shown, translation%data(1:translation%length), source, error=error)
+      if (allocated(error)) return
+      shown = "&"//group//" (its &linkage translation)"
+      group = "linkage"
+    end if
+    if (group /= "assur" .and. group /= "linkage") then
+      call fatal_error(error, exit_input, source%path//": &"//group//": balance works on the linkage decks "// &
+        "(&assur and &linkage; &pr3207, &pr3050 and &sixbar through their &linkage translation): not a linkage "// &
+        "of lower pairs")
       return
     end if
-    call assur_balance(mech%deck, args%balance_method, args%fraction, args%options%lang, overrides, report, error)
+    if (group == "linkage") then
+      call linkage%read_deck(source, error)
+      if (allocated(error)) return
+      call linkage_balance(linkage%deck, args%balance_method, args%fraction, args%options%lang, overrides, report, &
+                           error)
+    else
+      call mech%read_deck(source, error)
+      if (allocated(error)) return
+      if (mech%deck%mech%drive_dyad > 0 .and. args%balance_method /= balance_full) then
+        call fatal_error(error, exit_usage, source%path//": &assur: balance --method "// &
+          trim(balance_method_names(args%balance_method))//" needs a crank that turns the mechanism; this deck is "// &
+          "driven by an actuator (drive_dyad)")
+        return
+      end if
+      call assur_balance(mech%deck, args%balance_method, args%fraction, args%options%lang, overrides, report, error)
+    end if
     if (allocated(error)) then
-      error%message = source%path//": &assur: "//error%message
+      error%message = source%path//": "//shown//": "//error%message
       return
     end if
     call apply_overrides(source, overrides, balanced, error)
@@ -497,10 +537,10 @@ contains
       class(mechanism_t), allocatable :: run_mech
       type(run_options_t) :: options
       type(text_buffer_t) :: text
-      call create_mechanism("assur", run_mech)
+      call create_mechanism(group, run_mech)
       options%format = format_summary
       options%shaking = .true.
-      call run_mechanism(run_mech, "assur", deck_source, options, table, text, error)
+      call run_mechanism(run_mech, group, deck_source, options, table, text, error)
     end subroutine summary_run
 
     !> The largest magnitude of column `name` before and after.
@@ -815,6 +855,18 @@ contains
     end select
   end subroutine structure_of_deck
 
+  !> `kinetostat convert DECK --to linkage`: the deck translated into the `&linkage` model,
+  !> written as a deck (all or nothing: the caller writes `out` when no error came).
+  subroutine convert_of_deck(args, out, error)
+    type(cli_args_t), intent(in) :: args
+    type(text_buffer_t), intent(inout) :: out
+    type(error_t), allocatable, intent(out) :: error
+    type(deck_source_t) :: source
+    call load_deck(args%deck, source, error, whole_lines=.true.)
+    if (allocated(error)) return
+    call convert_deck(source, out, error)
+  end subroutine convert_of_deck
+
   !> `kinetostat contour DECK`: the blocking contour of a `&gear_geometry` deck's pair (with
   !> the --set overrides) as long-format CSV.
   subroutine contour_of_deck(args, out, error)
@@ -1085,6 +1137,18 @@ contains
           call fatal_error(error, exit_input, "--output-link needs a link's number 1..999 (got '"//value//"')")
           return
         end if
+      case ("convert")
+        if (i /= 1) then
+          call fatal_error(error, exit_usage, "convert must come first: "//usage_text("convert"))
+          return
+        end if
+        args%convert = .true.
+      case ("--to")
+        if (value /= "linkage") then
+          call fatal_error(error, exit_usage, "--to must be linkage (got '"//value//"')")
+          return
+        end if
+        args%convert_to = value
       case ("structure")
         if (i /= 1) then
           call fatal_error(error, exit_usage, "structure must come first: kinetostat structure DECK [--lang ru]")
@@ -1138,6 +1202,10 @@ contains
       call fatal_error(error, exit_usage, "--paper, --designation, --sheet-numbers, --positions, --point and "// &
         "--output-link belong to the sheets "// &
         "subcommand: kinetostat sheets DECK -o DIR ...")
+    else if (args%convert .and. .not. allocated(args%convert_to)) then
+      call fatal_error(error, exit_usage, "convert needs --to linkage: "//usage_text("convert"))
+    else if (.not. args%convert .and. allocated(args%convert_to)) then
+      call fatal_error(error, exit_usage, "--to belongs to the convert subcommand: "//usage_text("convert"))
     else if (args%structure .and. (args%format_given .or. allocated(args%options%overrides) .or. &
              args%options%at_step > 0)) then
       call fatal_error(error, exit_usage, "structure takes a deck, --lang and -o only")
@@ -1183,6 +1251,8 @@ contains
       call check_options_belong("structure")
     else if (args%contour) then
       call check_options_belong("contour")
+    else if (args%convert) then
+      call check_options_belong("convert")
     else if (args%sheets) then
       call check_options_belong("sheets")
     else

@@ -75,6 +75,7 @@ contains
       option_t("--keep-going"), &
       option_t("--method", "", "", name_choices(balance_method_names)), &
       option_t("--fraction", "", "F"), &
+      option_t("--to", "", "", "linkage"), &
       option_t("--rtol", "", "R"), &
       option_t("--atol", "", "A"), &
       option_t("--common"), &
@@ -100,6 +101,7 @@ contains
       command_t("diff", "A B", "--rtol --atol --common --quiet"), &
       command_t("balance", "DECK", "-o --method --fraction --lang --max-deck-size --quiet"), &
       command_t("structure", "DECK", "--lang -o --max-deck-size --quiet"), &
+      command_t("convert", "DECK", "--to! -o --max-deck-size --quiet"), &
       command_t("contour", "DECK", "--set -o --max-deck-size --quiet"), &
       command_t("sheets", "DECK", "-o!=DIR --paper --lang --at --designation --sheet-numbers --positions --point " // &
         "--output-link --student --group --variant --set --max-deck-size --quiet")]

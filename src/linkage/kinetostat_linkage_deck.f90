@@ -17,6 +17,7 @@ module kinetostat_linkage_deck
   use kinetostat_linkage, only: linkage_t, pair_r, pair_p
   use kinetostat_linkage_structure, only: analyse_structure
   use kinetostat_dynamics, only: dynamics_steady
+  use kinetostat_load_table, only: max_table_points, read_table_points, table_interpolate, table_cyclic
   use kinetostat_dynamics_deck, only: dynamics_deck_t, read_dynamics_settings, md_table_capacity
   implicit none
   private
@@ -63,8 +64,8 @@ module kinetostat_linkage_deck
     real(wp) :: angle = unset
     !> P: the link carrying the guide (default links(2)).
     real(wp) :: guide = unset
-    !> Friction (not yet supported): coefficient and journal radius.
-    real(wp) :: f = unset, r = unset
+    !> Friction: coefficient, journal radius (R, m), the guide's and the block's lengths (P, m).
+    real(wp) :: f = unset, r = unset, guide_length = unset, block_length = unset
   end type pair_in_t
 
   !> A drive as written.
@@ -90,6 +91,10 @@ module kinetostat_linkage_deck
     real(wp) :: idle = unset, phi_on = unset, phi_off = unset
     !> Column of step_values holding the value of each step instead.
     real(wp) :: column = unset
+    !> Or the value over a position: pairs (position, value), N.
+    real(wp) :: table(2 * max_table_points) = unset
+    !> The link whose position is the table's abscissa (default: the first drive's coordinate).
+    real(wp) :: over = unset
     !> The direction turns with the link.
     logical :: follow = .false.
   end type force_in_t
@@ -98,6 +103,8 @@ module kinetostat_linkage_deck
   type :: moment_in_t
     !> Loaded link, value (N*m, counter-clockwise), window and column as for forces.
     real(wp) :: link = unset, value = unset, idle = unset, phi_on = unset, phi_off = unset, column = unset
+    !> Or the value over a position, pairs (position, value), N*m, and its abscissa as for forces.
+    real(wp) :: table(2 * max_table_points) = unset, over = unset
   end type moment_in_t
 
   !> How a load gets its value at a step.
@@ -112,6 +119,13 @@ module kinetostat_linkage_deck
     logical :: window = .false.
     !> Column of step_values (0: none).
     integer :: column = 0
+    !> Whether the value is a table over the first drive's coordinate.
+    logical :: table = .false.
+    !> Table: its points' positions (the first drive's unit: deg or m) and values.
+    real(wp), allocatable :: x(:), v(:)
+    !> Table: the period of the abscissa, deg (360, or 720 for a table over more than a turn:
+    !> a four-stroke cycle); 0 for a stroke (no period).
+    real(wp) :: period = 0.0_wp
   end type linkage_schedule_t
 
   !> A validated `&linkage` deck.
@@ -142,6 +156,10 @@ module kinetostat_linkage_deck
     character(len=16), allocatable :: drive_pair(:)
     !> The machine dynamics settings (dynamics = 'none' unless given).
     type(dynamics_deck_t) :: dyn
+    !> Friction of every pair: coefficient, journal radius (m), contact span (m; 0: the
+    !> resultant-normal model); whether any pair has friction.
+    real(wp), allocatable :: friction_f(:), friction_r(:), friction_span(:)
+    logical :: friction_on = .false.
   end type linkage_deck_t
 
   !> The commented template deck (a crank-rocker four-bar).
@@ -167,6 +185,12 @@ module kinetostat_linkage_deck
     "  moment(1)%link = 3, moment(1)%value = -20", &
     "  ! machine dynamics (docs/dynamics.md): omega is then the mean speed; the flywheel for delta", &
     "  ! dynamics = 'steady', delta = 0.05, j_rotor = 0", &
+    "  ! a load over the first drive's angle (a gas force from an indicator diagram, docs/assur.md):", &
+    "  ! pairs (deg, N), linear between them; over 720 deg with cycle = 720 for a four-stroke engine", &
+    "  ! force(2)%link = 3, force(2)%at = 0.4, 0.2, force(2)%angle = 180", &
+    "  ! force(2)%table = 0, 0, 90, 40, 180, 60, 270, 20, 360, 0", &
+    "  ! friction in a pair (docs/friction.md): coefficient, journal radius (m) of a turning pair", &
+    "  ! pair(1)%f = 0.1, pair(1)%r = 0.01", &
         "/"]
 
 contains
@@ -198,8 +222,9 @@ contains
     type(link_in_t) :: link(max_links)
     type(pair_in_t) :: pair(max_pairs)
     type(drive_in_t), allocatable :: drive(:)
-    type(force_in_t) :: force(max_forces)
-    type(moment_in_t) :: moment(max_moments)
+    !> Allocated, not automatic: their tables hold max_table_points points each.
+    type(force_in_t), allocatable :: force(:)
+    type(moment_in_t), allocatable :: moment(:)
     integer, allocatable :: capacity(:), ids(:)
     integer :: stat
     type(deck_context_t) :: ctx
@@ -222,7 +247,7 @@ contains
     frame = 0.0_wp; g = unset; gravity_angle = unset; n = unset
     dynamics = ""; delta = unset; j_rotor = unset; j_flywheel = unset; cycle = unset; md_table = unset
     flywheel_density = unset; flywheel_width_ratio = unset
-    allocate (drive(max_drives))
+    allocate (drive(max_drives), force(max_forces), moment(max_moments))
     capacity = deck_array_capacities(source, ctx%group, [character(len=11) :: "step_values"])
     allocate (step_values(capacity(1)), source=unset, stat=stat)
     if (stat /= 0) then
@@ -236,6 +261,8 @@ contains
     call probe%limit("moment", max_moments, "moments")
     call probe%limit("drive%values", max_list, "values")
     call probe%limit("step_values", max_deck_array, "values")
+    call probe%limit("force%table", 2 * max_table_points, "values ("//int_str(max_table_points)//" points)")
+    call probe%limit("moment%table", 2 * max_table_points, "values ("//int_str(max_table_points)//" points)")
     read (source%records, nml=linkage, iostat=probe%ios, iomsg=probe%msg)
     do while (probe%retry(source)) ! on failure: find the line and the assignment
       read (probe%records, nml=linkage, iostat=probe%ios, iomsg=probe%msg)
@@ -289,7 +316,7 @@ contains
         return
       end if
     end do
-    allocate (deck%mech%pairs(np))
+    allocate (deck%mech%pairs(np), deck%friction_f(np), deck%friction_r(np), deck%friction_span(np))
     do k = 1, np
       p = "pair("//int_str(k)//")%"
       associate (pr => deck%mech%pairs(k))
@@ -297,11 +324,8 @@ contains
           "must be 'R' (turning) or 'P' (sliding), got '"//trim(pair(k)%kind)//"'", error)
         if (allocated(error)) return
         pr%kind = merge(pair_r, pair_p, lower(trim(pair(k)%kind)) == "r")
-        if (is_set(pair(k)%f) .or. is_set(pair(k)%r)) then
-          call deck_error(ctx, p//merge("f", "r", is_set(pair(k)%f)), &
-            "friction is not yet supported in &linkage decks (use an &assur deck for friction)", error)
-          return
-        end if
+        call read_friction(p, pair(k), pr%kind, deck%friction_f(k), deck%friction_r(k), deck%friction_span(k), error)
+        if (allocated(error)) return
         call require_chars(ctx, p//"name", pair(k)%name, name_chars, error)
         if (allocated(error)) return
         ! (the name may start with a digit: its columns x_<name> start with a letter)
@@ -496,7 +520,9 @@ contains
       deck%mech%forces(k)%dir = unit_at(force(k)%angle * deg_to_rad)
       deck%mech%forces(k)%follow = force(k)%follow
       call read_schedule(p, force(k)%value, force(k)%idle, force(k)%phi_on, force(k)%phi_off, force(k)%column, &
-                         deck%force_load(k), error)
+                         is_set(force(k)%table(1)), deck%force_load(k), error)
+      if (allocated(error)) return
+      call read_load_table(p, force(k)%table, force(k)%over, deck%force_load(k), error)
       if (allocated(error)) return
     end do
     do k = 1, nm
@@ -505,10 +531,13 @@ contains
       call require_rule(ctx, p//"link", i > 0, "must be a moving link", error); if (allocated(error)) return
       deck%mech%moment_link(k) = i
       call read_schedule(p, moment(k)%value, moment(k)%idle, moment(k)%phi_on, moment(k)%phi_off, moment(k)%column, &
-                         deck%moment_load(k), error)
+                         is_set(moment(k)%table(1)), deck%moment_load(k), error)
+      if (allocated(error)) return
+      call read_load_table(p, moment(k)%table, moment(k)%over, deck%moment_load(k), error)
       if (allocated(error)) return
     end do
 
+    deck%friction_on = any(deck%friction_f > 0.0_wp)
     call analyse_structure(deck%mech, ctx%path//": &"//ctx%group, error)
     if (allocated(error)) return
     call read_dynamics(error)
@@ -552,10 +581,51 @@ contains
         "exactly the cycle ("//int_str(nint(whole))//" deg) with a steady cycle: (n - 1)*step = "//real_str(span)// &
         " deg, not "//int_str(nint(whole)), error)
       if (allocated(error)) return
+      call require_rule(ctx, "cycle", whole > 360.0_wp .or. .not. (any(deck%force_load%period > 360.0_wp) .or. &
+        any(deck%moment_load%period > 360.0_wp)), "a load table spans more than 360 deg (a four-stroke "// &
+        "cycle): give cycle = 720 (the engine's cycle of two turns) and steps over 720 deg", error)
+      if (allocated(error)) return
       call require_rule(ctx, "step_values", .not. (any(deck%force_load%column > 0) .or. &
         any(deck%moment_load%column > 0)), "a steady cycle needs every load at any drive angle: give it as a "// &
         "constant or a window, not per step", error)
     end subroutine read_dynamics
+    !> A pair's friction (docs/friction.md): f >= 0 (default 0); a turning pair's journal
+    !> radius r (> 0 when f > 0); a sliding pair's guide and block lengths (> 0 when given;
+    !> the contact span is the shorter); a variable the pair's kind does not use is refused.
+    subroutine read_friction(pfx, pin, kind, f, r, span, err)
+      character(*), intent(in) :: pfx
+      type(pair_in_t), intent(in) :: pin
+      integer, intent(in) :: kind
+      real(wp), intent(out) :: f, r, span
+      type(error_t), allocatable, intent(out) :: err
+      f = optional_default(pin%f, 0.0_wp)
+      call require_nonnegative(ctx, pfx//"f", f, err); if (allocated(err)) return
+      r = 0.0_wp
+      span = 0.0_wp
+      if (kind == pair_r) then
+        call require_rule(ctx, pfx//"guide_length", .not. is_set(pin%guide_length) .and. &
+          .not. is_set(pin%block_length), "not used by this pair (a turning pair; lengths are a sliding pair's)", err)
+        if (allocated(err)) return
+        r = optional_default(pin%r, 0.0_wp)
+        call require_nonnegative(ctx, pfx//"r", r, err); if (allocated(err)) return
+        call require_rule(ctx, pfx//"r", .not. (f > 0.0_wp .and. .not. r > 0.0_wp), &
+          "must be > 0 with friction (f > 0): the journal radius, m", err)
+      else
+        call require_rule(ctx, pfx//"r", .not. is_set(pin%r), "not used by this pair (a sliding pair has no "// &
+          "journal radius)", err)
+        if (allocated(err)) return
+        if (is_set(pin%guide_length)) then
+          call require_rule(ctx, pfx//"guide_length", pin%guide_length > 0.0_wp, "must be > 0 (m)", err)
+          if (allocated(err)) return
+          span = pin%guide_length
+        end if
+        if (is_set(pin%block_length)) then
+          call require_rule(ctx, pfx//"block_length", pin%block_length > 0.0_wp, "must be > 0 (m)", err)
+          if (allocated(err)) return
+          span = merge(min(span, pin%block_length), pin%block_length, span > 0.0_wp)
+        end if
+      end if
+    end subroutine read_friction
     !> Number of leading true entries.
     pure integer function leading(given)
       logical, intent(in) :: given(:)
@@ -597,11 +667,18 @@ contains
       call require_rule(ctx, name, cols >= 1, "step_values holds no column", err)
     end subroutine drive_column
     !> A load's schedule: constant value, window, or column.
-    subroutine read_schedule(pfx, value, idle, on, off, column, sched, err)
+    subroutine read_schedule(pfx, value, idle, on, off, column, tabled, sched, err)
       character(*), intent(in) :: pfx
       real(wp), intent(in) :: value, idle, on, off, column
+      !> Whether a table is given instead (read by read_load_table).
+      logical, intent(in) :: tabled
       type(linkage_schedule_t), intent(out) :: sched
       type(error_t), allocatable, intent(out) :: err
+      if (tabled) then
+        call require_rule(ctx, pfx//"table", .not. any(is_set([value, idle, on, off, column])), &
+          "give either table (values over a position) or value [idle, phi_on, phi_off] or column", err)
+        return
+      end if
       if (is_set(column)) then
         call require_whole(ctx, pfx//"column", column, 1, max(1, cols), sched%column, err); if (allocated(err)) return
         call require_rule(ctx, pfx//"column", cols >= 1, "step_values holds no column", err)
@@ -623,7 +700,74 @@ contains
         call require_rule(ctx, pfx//"idle", .not. is_set(idle), "only with phi_on and phi_off", err)
       end if
     end subroutine read_schedule
+    !> A load's table over the first drive's coordinate (`over` omitted, or the link the
+    !> first drive turns on the frame): its points, the period of a turning drive's angle
+    !> (360 deg, or 720 when the table spans more than a turn), every step inside the table.
+    subroutine read_load_table(pfx, table, over, sched, err)
+      character(*), intent(in) :: pfx
+      !> The table and its abscissa link as read.
+      real(wp), intent(in) :: table(:), over
+      type(linkage_schedule_t), intent(inout) :: sched
+      type(error_t), allocatable, intent(out) :: err
+      integer :: kk, np_t, over_link
+      real(wp) :: q, tol
+      character(len=:), allocatable :: unit
+      if (.not. is_set(table(1))) then
+        call require_rule(ctx, pfx//"over", .not. is_set(over), "only used with table", err)
+        return
+      end if
+      associate (driven => deck%mech%pairs(deck%mech%drives(1)%pair))
+        if (is_set(over)) then
+          call link_index(pfx//"over", over, over_link, err); if (allocated(err)) return
+          call require_rule(ctx, pfx//"over", over_link > 0 .and. driven%kind == pair_r .and. driven%b == 0 .and. &
+            driven%a == over_link, "a table over a link's position in a &linkage deck is over the link the first "// &
+            "drive turns on the frame (link "//int_str(ids(driven%a))//" here, or omit over: the first drive's "// &
+            "coordinate); over another link's position: an &assur deck", err)
+          if (allocated(err)) return
+        end if
+        sched%table = .true.
+        call read_table_points(ctx, pfx//"table", table, sched%x, sched%v, err); if (allocated(err)) return
+        np_t = size(sched%x)
+        unit = " m"
+        sched%period = 0.0_wp
+        if (driven%kind == pair_r) then
+          unit = " deg"
+          sched%period = merge(720.0_wp, 360.0_wp, sched%x(np_t) - sched%x(1) > 360.0_wp)
+        end if
+      end associate
+      tol = 1.0e-9_wp * max(sched%x(np_t) - sched%x(1), abs(sched%x(1)), abs(sched%x(np_t)), 1.0e-300_wp)
+      do kk = 1, nsteps
+        q = table_abscissa(sched, first_drive_value(deck, kk))
+        if (q < sched%x(1) - tol .or. q > sched%x(np_t) + tol) then
+          call deck_error(ctx, pfx//"table", "at step "//int_str(kk)//" drive(1) is at "//real_str(q)//unit// &
+            ", outside the table ["//real_str(sched%x(1))//", "//real_str(sched%x(np_t))//"]"//unit, err)
+          return
+        end if
+      end do
+    end subroutine read_load_table
   end subroutine read_linkage_group
+
+  !> The first drive's value at step k, its deck unit (deg or m).
+  pure real(wp) function first_drive_value(deck, k) result(x)
+    type(linkage_deck_t), intent(in) :: deck
+    !> Step.
+    integer, intent(in) :: k
+    if (deck%listed(1)) then
+      x = deck%values(k, 1)
+    else
+      x = deck%start(1) + real(k - 1, wp) * deck%step(1)
+    end if
+  end function first_drive_value
+
+  !> A table's abscissa when the first drive has the value x (deg or m): a turning drive's
+  !> angle taken modulo the table's period into [x1, x1 + period), a stroke as it is.
+  pure real(wp) function table_abscissa(sched, x) result(q)
+    type(linkage_schedule_t), intent(in) :: sched
+    !> The first drive's value, deg or m.
+    real(wp), intent(in) :: x
+    q = x
+    if (sched%period > 0.0_wp) q = table_cyclic(sched%x(1), x, sched%period)
+  end function table_abscissa
 
   !> A drive's value at the reference position: a turning pair's angle of the driven link's
   !> axis (from the joint to the first other joint of that link at another point, else its
@@ -683,28 +827,26 @@ contains
     type(linkage_schedule_t), intent(in) :: sched
     !> Step.
     integer, intent(in) :: k
-    real(wp) :: x
     if (sched%column > 0) then
       linkage_load_value = deck%step_values((sched%column - 1) * deck%n + k)
-    else if (sched%window) then
-      if (deck%listed(1)) then
-        x = deck%values(k, 1)
-      else
-        x = deck%start(1) + real(k - 1, wp) * deck%step(1)
-      end if
-      linkage_load_value = linkage_schedule_at(sched, x)
+    else if (sched%window .or. sched%table) then
+      linkage_load_value = linkage_schedule_at(sched, first_drive_value(deck, k))
     else
       linkage_load_value = sched%value
     end if
   end function linkage_load_value
 
   !> A load's value when the first drive has the value x (its deck unit: deg or m): a
-  !> constant, or a window's value or idle (not a step_values column).
+  !> constant, a window's value or idle, or a table's value (not a step_values column).
   pure real(wp) function linkage_schedule_at(sched, x) result(value)
     !> The load's schedule.
     type(linkage_schedule_t), intent(in) :: sched
     !> The first drive's value, deg or m.
     real(wp), intent(in) :: x
+    if (sched%table) then
+      value = table_interpolate(sched%x, sched%v, table_abscissa(sched, x))
+      return
+    end if
     value = sched%value
     if (sched%window) value = merge(sched%value, sched%idle, x >= sched%phi_on - window_tol .and. &
                                     x <= sched%phi_off + window_tol)

@@ -160,7 +160,7 @@ contains
     end do
   end function linkage_reduced_at_pose
 
-  !> The first drive's values where a load switches (its windows' ends), rad.
+  !> The first drive's values where a load switches (its windows' ends, its table's points), rad.
   pure function linkage_load_breaks(deck) result(breaks)
     type(linkage_deck_t), intent(in) :: deck
     real(wp), allocatable :: breaks(:)
@@ -169,11 +169,13 @@ contains
     !GCC$ novector
     do k = 1, size(deck%force_load)
       if (deck%force_load(k)%window) breaks = [breaks, [deck%force_load(k)%phi_on, deck%force_load(k)%phi_off] * deg_to_rad]
+      if (deck%force_load(k)%table) breaks = [breaks, deck%force_load(k)%x * deg_to_rad]
     end do
     !GCC$ novector
     do k = 1, size(deck%moment_load)
       if (deck%moment_load(k)%window) breaks = [breaks, [deck%moment_load(k)%phi_on, deck%moment_load(k)%phi_off] * &
         deg_to_rad]
+      if (deck%moment_load(k)%table) breaks = [breaks, deck%moment_load(k)%x * deg_to_rad]
     end do
   end function linkage_load_breaks
 

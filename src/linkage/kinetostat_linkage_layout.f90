@@ -24,6 +24,9 @@ module kinetostat_linkage_layout
   use kinetostat_linkage, only: linkage_t, linkage_step_t, pair_r, pair_p, linkage_reference_pose, linkage_assemble, &
     linkage_motion, linkage_statics, link_point_state, point_position, linkage_work_t
   use kinetostat_linkage_structure, only: structure_lines
+  use kinetostat_linkage_friction, only: linkage_friction_t, linkage_friction_solve
+  use kinetostat_linkage_friction_table, only: add_friction_columns, friction_values, friction_integrals, &
+    friction_summary, echo_friction, write_friction_results
   use kinetostat_dynamics, only: cycle_t, motion_t, reduced_t, motion_at, dynamics_reduced, dynamics_steady
   use kinetostat_dynamics_deck, only: deck_cycle
   use kinetostat_dynamics_table, only: echo_dynamics, add_dynamics_columns, put_dynamics_values, &
@@ -300,7 +303,7 @@ contains
   !> Every step of rows first..last: poses by continuation from `q` (at drive values
   !> `dq_from`; both updated to the last step), then motion and reactions. Used by `solve`
   !> and the tests.
-  pure subroutine linkage_solve_steps(deck, path, first, last, q, dq_from, steps, error, motions, j_turn)
+  pure subroutine linkage_solve_steps(deck, path, first, last, q, dq_from, steps, error, motions, j_turn, frictions)
     !> Validated deck.
     type(linkage_deck_t), intent(in) :: deck
     !> Deck path for messages.
@@ -317,6 +320,9 @@ contains
     !> inertia moment -j_turn eps on it, the reaction on the link it turns against).
     type(motion_t), intent(in), optional :: motions(first:)
     real(wp), intent(in), optional :: j_turn
+    !> The steps' friction results (a deck with friction).
+    type(linkage_friction_t), intent(inout), optional :: frictions(first:)
+    type(linkage_friction_t) :: fr
     real(wp), allocatable :: dq(:), dv(:), da(:), fval(:), mval(:)
     type(linkage_work_t) :: work
     !> The linkage with the flywheel's moments as two more moments (a steady cycle).
@@ -372,6 +378,20 @@ contains
         error%message = where()//": the reactions are undetermined (a dead position)"
         return
       end if
+      if (deck%friction_on) then
+        if (present(motions)) then
+          call linkage_friction_solve(turning, deck%friction_f, deck%friction_r, deck%friction_span, fval, mval, dv, &
+                                      steps(k), work, fr, error)
+        else
+          call linkage_friction_solve(deck%mech, deck%friction_f, deck%friction_r, deck%friction_span, fval, mval, &
+                                      dv, steps(k), work, fr, error)
+        end if
+        if (allocated(error)) then
+          error%message = where()//": "//error%message
+          return
+        end if
+        if (present(frictions)) frictions(k) = fr
+      end if
     end do
   contains
     !> The step for messages (written only for one).
@@ -412,6 +432,9 @@ contains
     character(len=:), allocatable :: input, effort
     !> The motion and reduced quantities of each step (a dynamics stage).
     type(motion_t), allocatable :: motions(:)
+    !> The friction results of each step (a deck with friction).
+    type(linkage_friction_t), allocatable :: frictions(:)
+    character(len=16), allocatable :: force_names(:)
     integer :: first, last, k, d, nd, np, nq, stat
     real(wp) :: gap
     logical :: translating
@@ -450,6 +473,14 @@ contains
           end if
         end do
         call add_dynamics_columns(table, self%deck%dyn%mode, translating)
+        if (self%deck%friction_on) then
+          allocate (force_names(np))
+          do k = 1, np
+            force_names(k) = force_name(mech, k)
+          end do
+          call drive_names(mech, 1, input, effort)
+          call add_friction_columns(self%deck, effort, force_names, table)
+        end if
         call put_dynamics_figures(table, self%deck%dyn%mode, self%cycle, self%deck%dyn%delta)
         table%input_column = 1
         if (len_trim(self%deck%title) > 0) table%subtitle = trim(self%deck%title)
@@ -476,12 +507,13 @@ contains
           " steps", int(last - first + 1, int64) * storage_size(motions) / 8)
         return
       end if
+      allocate (frictions(first:last))
       if (self%deck%dyn%mode >= dynamics_steady) then
         call cycle_motions(self%deck, self%source, self%cycle, first, motions)
         call linkage_solve_steps(self%deck, table%deck, first, last, q, dq, steps, error, motions, &
-                                 self%cycle%j_flywheel + self%cycle%j_rotor)
+                                 self%cycle%j_flywheel + self%cycle%j_rotor, frictions=frictions)
       else
-        call linkage_solve_steps(self%deck, table%deck, first, last, q, dq, steps, error)
+        call linkage_solve_steps(self%deck, table%deck, first, last, q, dq, steps, error, frictions=frictions)
       end if
       if (allocated(error)) return
       if (self%deck%dyn%mode == dynamics_reduced) call reduced_motions(self%deck, first, steps, motions)
@@ -496,6 +528,13 @@ contains
         mismatch(k) = steps(k)%mismatch
         gap = max(gap, steps(k)%solver_gap)
         call put_dynamics_values(table, k - first + 1, self%deck%dyn%mode, motions(k))
+        if (self%deck%friction_on) then
+          call drive_names(mech, 1, input, effort)
+          d = table%column_index(effort//"_0")
+          associate (fv => friction_values(self%deck, steps(k), frictions(k)))
+            table%rows(d:d + size(fv) - 1, k - first + 1) = fv
+          end associate
+        end if
       end do
       if (self%deck%dyn%mode >= dynamics_steady) then
         call note_drive_deviation(table, [(steps(k)%effort(1), k = first, last)], motions, self%cycle%j_flywheel)
@@ -509,6 +548,12 @@ contains
       call drive_names(mech, 1, input, effort)
       call table%set_selfcheck(maxval(residual), maxval(mismatch), effort)
       table%mismatch_label = "MAX MISMATCH OF THE DRIVES' EFFORTS, POWER BALANCE"
+      if (self%deck%friction_on) then
+        table%residual_label = "MAX EQUILIBRIUM RESIDUAL WITH FRICTION LOADS"
+        table%mismatch_label = "MAX MISMATCH OF THE DRIVES' EFFORTS, POWER BALANCE WITH FRICTION"
+        ! the works over the run: the pipeline integrates the block's powers in row order
+        table%block_tally%integrals = friction_integrals(self%deck, frictions, first)
+      end if
       ! the largest gap of the run decides the warning (finish_run)
       table%block_tally%maxima = [running_max_t(gap, 0, .true.)]
     end associate
@@ -520,6 +565,8 @@ contains
     class(linkage_mechanism_t), intent(in) :: self
     type(step_table_t), intent(inout) :: table
     real(wp) :: gap
+    if (self%deck%friction_on .and. allocated(table%run_tally%integrals)) call friction_summary(self%deck, &
+      table%run_tally%integrals(1)%area, table%run_tally%integrals(2)%area, table)
     if (.not. allocated(table%run_tally%maxima)) return
     gap = table%run_tally%maxima(1)%value
     if (gap > gap_tolerance) then
@@ -705,6 +752,7 @@ contains
             call table%echo_real("  ANGLE", angle_360_deg(pr%u), "deg")
           end if
           call table%echo_array("  AT", pr%at, "m")
+          if (deck%friction_on) call echo_friction(deck, k, table)
         end associate
       end do
       do k = 1, size(mech%drives)
@@ -733,11 +781,19 @@ contains
                              trim(merge(", FOLLOWS THE LINK", "                  ", mech%forces(k)%follow)))
         call table%echo_array("  AT", mech%forces(k)%at, "m")
         call table%echo_real("  ANGLE", angle_360_deg(mech%forces(k)%dir), "deg")
-        call echo_schedule(table, deck%force_load(k)%value, deck%force_load(k)%column, "N")
+        if (deck%force_load(k)%table) then
+          call table%echo_int("  TABLE_POINTS", size(deck%force_load(k)%x), "")
+        else
+          call echo_schedule(table, deck%force_load(k)%value, deck%force_load(k)%column, "N")
+        end if
       end do
       do k = 1, size(mech%moment_link)
         call table%echo_line("   MOMENT "//int_str(k)//": LINK "//link_name(mech, mech%moment_link(k)))
-        call echo_schedule(table, deck%moment_load(k)%value, deck%moment_load(k)%column, "N*m")
+        if (deck%moment_load(k)%table) then
+          call table%echo_int("  TABLE_POINTS", size(deck%moment_load(k)%x), "")
+        else
+          call echo_schedule(table, deck%moment_load(k)%value, deck%moment_load(k)%column, "N*m")
+        end if
       end do
       call structure_lines(mech, lang_en, lines)
       call table%echo_heading(trim(lines(1)))
@@ -884,7 +940,10 @@ contains
         end associate
       end do
     end associate
-    if (.false.) call later%put("")
+    if (self%deck%friction_on) then
+      call drive_names(self%deck%mech, 1, input, effort)
+      call write_friction_results(table, input, effort, lang, later)
+    end if
   end subroutine write_results
 
 

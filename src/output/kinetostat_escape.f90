@@ -10,7 +10,7 @@ module kinetostat_escape
   use kinetostat_text, only: printable, utf8_length
   implicit none
   private
-  public :: json_string, xml_escape, csv_field, dxf_text, table_text, python_string
+  public :: json_string, xml_escape, csv_field, dxf_text, table_text, python_string, namelist_string
 
   character(*), parameter :: hex_digits = "0123456789ABCDEF"
 
@@ -37,6 +37,25 @@ contains
     character(len=:), allocatable :: text
     text = quoted_literal(s, "'", "\x")
   end function python_string
+
+  !> A Fortran namelist string literal in single quotes, as a deck written by the program
+  !> holds a title or a name (`kinetostat convert`): a quote doubled. The texts it gets were
+  !> read from a deck, so they hold no line break.
+  pure function namelist_string(s) result(text)
+    !> A text read from a deck.
+    character(*), intent(in) :: s
+    character(len=:), allocatable :: text
+    integer :: i
+    text = "'"
+    do i = 1, len(s)
+      if (s(i:i) == "'") then
+        text = text//"''"
+      else
+        text = text//s(i:i)
+      end if
+    end do
+    text = text//"'"
+  end function namelist_string
 
   !> A string literal between `quote`s as JSON and Python write one: the quote and `\` escaped,
   !> newline, carriage return and tab as \n, \r, \t, any other control character and any byte

@@ -110,6 +110,9 @@ contains
     ! machine dynamics (the DYNAMICS block and its self-check line)
     case ("DYNAMICS (REDUCED TO THE INPUT LINK)")
       text = "ДИНАМИЧЕСКИЙ РАСЧЕТ (ПРИВЕДЕНИЕ К ВХОДНОМУ ЗВЕНУ)"
+    case ("MAX MISMATCH OF THE DRIVES' EFFORTS, POWER BALANCE WITH FRICTION")
+      text = "НАИБ. РАСХОЖДЕНИЕ УСИЛИЙ ПРИВОДОВ С БАЛАНСОМ "// &
+        "МОЩНОСТЕЙ С ТРЕНИЕМ"
     case ("MAX MISMATCH OF THE DRIVES' EFFORTS, POWER BALANCE")
       text = "НАИБ. РАСХОЖДЕНИЕ УСИЛИЙ ПРИВОДОВ С БАЛАНСОМ МОЩНОСТЕЙ"
     case ("MAX |M1 - M_d|/|M_d| WITH THE TRUE MOTION")

@@ -13,7 +13,7 @@ module kinetostat_override
   use kinetostat_deck_encoding, only: utf8_problem
   implicit none
   private
-  public :: override_t, parse_override, apply_overrides, mark_overrides, first_override_line
+  public :: override_t, parse_override, apply_overrides, mark_overrides, first_override_line, append_override
 
   !> One override.
   type :: override_t
@@ -297,5 +297,23 @@ contains
       if (hits == 1) table%echo(at)%overridden = .true.
     end do
   end subroutine mark_overrides
+
+  !> Append the assignment `name = value` (element by element: no array constructor of a
+  !> type with deferred-length components).
+  pure subroutine append_override(overrides, name, value)
+    type(override_t), allocatable, intent(inout) :: overrides(:)
+    character(*), intent(in) :: name, value
+    type(override_t), allocatable :: grown(:)
+    integer :: n, k
+    n = size(overrides)
+    allocate (grown(n + 1))
+    do k = 1, n
+      grown(k)%name = overrides(k)%name
+      grown(k)%value = overrides(k)%value
+    end do
+    grown(n + 1)%name = name
+    grown(n + 1)%value = value
+    call move_alloc(grown, overrides)
+  end subroutine append_override
 
 end module kinetostat_override

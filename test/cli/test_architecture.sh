@@ -8,7 +8,7 @@
 python3 - "$root/src" <<'PY' && pass || fail "architecture-layers" "see above"
 import os, re, sys
 src = sys.argv[1]
-layers = {"core": 0, "deck": 1, "output": 1, "pictures": 2, "plans": 2.2, "shaking": 2.5, "pipeline": 3, "compare": 3, "dynamics": 4,
+layers = {"core": 0, "deck": 1, "output": 1, "pictures": 2, "plans": 2.2, "shaking": 2.5, "pipeline": 3, "compare": 3, "dynamics": 4, "convert": 6,
           "cli": 9}
 # one folder per mechanism or stage: above the pipeline, below the CLI; stages that the
 # mechanisms use (e.g. a dynamics stage) sit one below them

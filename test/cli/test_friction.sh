@@ -98,3 +98,58 @@ for k, r in enumerate(rows):
 print("\n".join(bad) or "ok")
 sys.exit(1 if bad else 0)
 PY
+
+# &linkage friction: the twin of data/friction_slider_crank.nml agrees in every column both
+# have (M1, M1_0, P_loss_<pair>, P_loss, eta, the forces) within 1e-9
+run_ks data/linkage_friction_slider_crank.nml --format csv; cp "$out" "$cli_tmp/lf_l.csv"; rc_l=$rc
+run_ks data/friction_slider_crank.nml --format csv; cp "$out" "$cli_tmp/lf_a.csv"
+run_ks diff --common --rtol 1e-9 --atol 1e-9 "$cli_tmp/lf_a.csv" "$cli_tmp/lf_l.csv"
+if [ "$rc_l$rc" = 00 ] && grep -q "^same: [0-9]* values agree" "$out" && head -1 "$cli_tmp/lf_l.csv" | grep -q "M1,M1_0,P_loss_F21,P_loss_F23,P_loss_F30,P_loss_F10,P_loss,eta_defined,eta"; then pass
+else fail linkage-friction-twin "exit $rc_l/$rc: $(head -c 300 "$out") $(head -c 300 "$err")"; fi
+# friction on the class-III deck by the power balance at every step: M1*omega1 = the power the
+# loads absorb (gravity, the force, the moment, inertia: dT/dt) + sum P_loss, within 1e-9 of the
+# step's largest term; the same check with one pair's loss left out must fail
+fr_set=""
+for k in 1 2 3 4 5 6 7; do fr_set="$fr_set --set pair($k)%f=0.15 --set pair($k)%r=0.02"; done
+run_ks data/class3.nml --kinematics --format csv $fr_set; cp "$out" "$cli_tmp/c3f.csv"; rc_c=$rc
+cat >"$cli_tmp/c3_balance.py" <<'PY'
+import csv, math, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+drop = sys.argv[2] if len(sys.argv) > 2 else ""
+m = {1: 2, 2: 3, 3: 2, 4: 2, 5: 5}; J = {1: 0.010, 2: 0.040, 3: 0.020, 4: 0.020, 5: 0.050}
+losses = [c for c in rows[0] if c.startswith("P_loss_")]
+assert len(losses) == 7, losses
+d = (math.cos(math.radians(-120)), math.sin(math.radians(-120)))
+worst = 0.0
+for r in rows:
+    f = lambda c: float(r[c])
+    p_in = f("M1") * f("omega1")
+    terms = [abs(p_in)]
+    p_abs = 0.0
+    for i in m:
+        v = (f(f"vx_S{i}"), f(f"vy_S{i}")); a = (f(f"ax_S{i}"), f(f"ay_S{i}"))
+        grav = -m[i] * 9.81 * v[1]
+        kin = m[i] * (a[0] * v[0] + a[1] * v[1]) + J[i] * f(f"eps{i}") * f(f"omega{i}")
+        p_abs += -grav + kin
+        terms += [abs(grav), abs(kin)]
+    pf = 200 * (d[0] * f("vx_T2") + d[1] * f("vy_T2")); pm = -30 * f("omega3")
+    p_abs += -pf - pm
+    loss = sum(f(c) for c in losses if c != drop)
+    assert abs(f("P_loss") - sum(f(c) for c in losses)) <= 1e-9 * max(1, f("P_loss"))
+    terms += [abs(pf), abs(pm), loss]
+    worst = max(worst, abs(p_in - p_abs - loss) / max(terms))
+print("worst power-balance mismatch", worst)
+sys.exit(0 if worst <= 1e-9 else 1)
+PY
+if [ "$rc_c" -eq 0 ] && python3 "$cli_tmp/c3_balance.py" "$cli_tmp/c3f.csv" >"$cli_tmp/c3.out" 2>&1; then pass
+else fail linkage-friction-class3-power "exit $rc_c: $(cat "$cli_tmp/c3.out") $(head -c 300 "$err")"; fi
+if ! python3 "$cli_tmp/c3_balance.py" "$cli_tmp/c3f.csv" P_loss_F53 >"$cli_tmp/c3.out" 2>&1 && \
+   grep -q "^worst power-balance mismatch" "$cli_tmp/c3.out"; then pass
+else fail linkage-friction-class3-power-can-fail "$(cat "$cli_tmp/c3.out")"; fi
+# a turning pair's friction needs its journal radius; a sliding pair has none
+run_ks data/class3.nml --set 'pair(2)%f=0.1'
+[ "$rc" -eq 2 ] && grep -q "&linkage: pair(2)%r: must be > 0 with friction" "$err" && pass \
+  || fail linkage-friction-needs-r "exit $rc: $(cat "$err")"
+run_ks data/linkage_friction_slider_crank.nml --set 'pair(3)%r=0.01'
+[ "$rc" -eq 2 ] && grep -q "&linkage: pair(3)%r: not used by this pair" "$err" && pass \
+  || fail linkage-friction-r-on-p "exit $rc: $(cat "$err")"

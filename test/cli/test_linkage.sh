@@ -115,7 +115,7 @@ expect_input_error linkage-w-surplus "W = 3n - 2p5 = 3 x 5 - 2 x 7 = 1 but 2 dri
   "$(deck_with lk_twodrives data/class3.nml "s/^  drive(1)%pair = 'O'.*$/&\n  drive(2)%pair = 'B', drive(2)%start = 0, drive(2)%step = 1, drive(2)%omega = 1/")"
 expect_input_error linkage-pair-kind "pair\(2\)%kind: must be 'R' \(turning\) or 'P' \(sliding\), got 'abc'" \
   "$(deck_with lk_kind data/fivebar.nml "s/pair(2)%kind = 'R'/pair(2)%kind = 'abc'/")"
-expect_input_error linkage-friction "pair\(2\)%f: friction is not yet supported" \
+expect_input_error linkage-friction "pair\(2\)%r: must be > 0 with friction \(f > 0\)" \
   "$(deck_with lk_friction data/fivebar.nml "s/pair(2)%at = 0.1, 0/pair(2)%at = 0.1, 0, pair(2)%f = 0.1/")"
 expect_input_error linkage-unknown-pair "drive\(1\)%pair: no pair is named 'Q'" \
   "$(deck_with lk_badpair data/class3.nml "s/drive(1)%pair = 'O'/drive(1)%pair = 'Q'/")"
@@ -182,3 +182,73 @@ python3 "$root/tools/stage_table_check.py" "$KINETOSTAT" "$root/docs/linkage.md"
 if ! python3 "$root/tools/stage_table_check.py" "$KINETOSTAT" "$cli_tmp/stages_bad.md" >"$cli_tmp/stages.out" 2>&1 && \
    grep -q "structural analysis (\`kinetostat structure\`) / &pr3207: refusal expected" "$cli_tmp/stages.out"; then pass
 else fail linkage-stage-table-can-fail "$(head -5 "$cli_tmp/stages.out")"; fi
+
+# the engine twins: a gas table over 720 deg in a &linkage deck; every column both have agrees
+# with the &assur deck within 1e-9 (the flywheel's: its steady cycle and true motion too)
+for twin in "linkage_engine:docs/examples/engine.nml" "linkage_engine_flywheel:data/assur_engine_flywheel.nml"; do
+  run_ks "data/${twin%%:*}.nml" --format csv; cp "$out" "$cli_tmp/eng_l.csv"; rc_l=$rc
+  run_ks "${twin#*:}" --format csv --quiet; cp "$out" "$cli_tmp/eng_a.csv"
+  run_ks diff --common --rtol 1e-9 --atol 1e-9 "$cli_tmp/eng_a.csv" "$cli_tmp/eng_l.csv"
+  if [ "$rc_l$rc" = 00 ] && grep -q "^same: [0-9]* values agree" "$out" && head -1 "$cli_tmp/eng_l.csv" | grep -qE ",M1(,|$)"; then pass
+  else fail "linkage-twin-${twin%%:*}" "exit $rc_l/$rc: $(head -c 400 "$out") $(head -c 300 "$err")"; fi
+done
+# the twin check can fail: a gas table 1 % higher is seen
+sed 's/375, 27143/375, 27414/' data/linkage_engine.nml >"$cli_tmp/eng_bad.nml"
+run_ks "$cli_tmp/eng_bad.nml" --format csv; cp "$out" "$cli_tmp/eng_b.csv"
+run_ks docs/examples/engine.nml --format csv --quiet; cp "$out" "$cli_tmp/eng_a.csv"
+run_ks diff --common --rtol 1e-9 --atol 1e-9 "$cli_tmp/eng_a.csv" "$cli_tmp/eng_b.csv"
+[ "$rc" -ne 0 ] && ! grep -q "^same:" "$out" && pass || fail linkage-twin-can-fail "$(head -c 300 "$out")"
+# structure, shaking and plans of the engine deck
+lk_structure linkage-structure-engine data/linkage_engine.nml en "STRUCTURE FORMULA: I(0,1) -> II(2,3)" \
+  "II(2,3)  DYAD (GROUP OF CLASS II, ORDER 2), KIND RRP" "W = 3n - 2p5 - p4 = 3 x 3 - 2 x 4 - 0 = 1 = NUMBER OF DRIVES"
+run_ks data/linkage_engine.nml --shaking --format csv; cp "$out" "$cli_tmp/eng_ls.csv"
+run_ks docs/examples/engine.nml --shaking --format csv --quiet; cp "$out" "$cli_tmp/eng_as.csv"
+run_ks diff --common --rtol 1e-9 --atol 1e-9 "$cli_tmp/eng_as.csv" "$cli_tmp/eng_ls.csv"
+[ "$rc" -eq 0 ] && grep -q "^same:" "$out" && grep -q "F_shake_x" "$cli_tmp/eng_ls.csv" && pass \
+  || fail linkage-engine-shaking "$(head -c 300 "$out")"
+# the shaking force is minus the total momentum's rate: -sum m a_S, by central differences of
+# the total centre of mass over the steps (15 deg at 300 rad/s; tolerance 2 % of the largest)
+run_ks data/linkage_engine.nml --shaking --kinematics --format csv
+python3 - "$out" <<'PY' && pass || fail linkage-engine-shaking-fd "see above"
+import csv, math, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+m = {"1": 3.0, "2": 1.2, "3": 0.8}
+h = math.radians(15) / 300.0
+def com(r):
+    return [sum(m[k] * float(r[f"{a}_S{k}"]) for k in m) for a in "xy"]
+big = max(abs(float(r["F_shake_x"])) for r in rows)
+worst = 0.0
+for i in range(1, len(rows) - 1):
+    c0, c1, c2 = com(rows[i - 1]), com(rows[i]), com(rows[i + 1])
+    ax = (c2[0] - 2 * c1[0] + c0[0]) / h**2
+    worst = max(worst, abs(float(rows[i]["F_shake_x"]) - (-ax)))
+assert worst <= 0.02 * big, (worst, big)
+PY
+# the plans at step 5 (phi1 = 60 deg): v_B = omega*r, v_C by the slider-crank's formula, the
+# lever's effort = M1 of the run, the gas force = the table's value there (-50 N along -x)
+run_ks data/linkage_engine.nml --format json --at 5 --plans; cp "$out" "$cli_tmp/eng_plans.json"
+run_ks data/linkage_engine.nml --format csv
+python3 - "$cli_tmp/eng_plans.json" "$out" <<'PY' && pass || fail linkage-engine-plans "see above"
+import csv, json, math, sys
+p = json.load(open(sys.argv[1])); rows = list(csv.DictReader(open(sys.argv[2])))
+val = {v["name"]: v["value"] for v in p["values"]}
+phi, lam, r, w = math.radians(60), 0.25, 0.05, 300.0
+vc = r * w * (math.sin(phi) + lam * math.sin(2 * phi) / (2 * math.sqrt(1 - (lam * math.sin(phi))**2)))
+assert abs(val["v_J21"] - r * w) <= 1e-9 * r * w, (val["v_J21"], r * w)
+assert abs(val["v_J23"] - vc) <= 1e-9 * vc, (val["v_J23"], vc)
+m1 = float(rows[4]["M1"])
+assert abs(p["zhukovsky"]["effort"] - m1) <= 1e-6 * max(1.0, abs(m1)), (p["zhukovsky"]["effort"], m1)
+q1 = [l for l in p["zhukovsky"]["loads"] if l["name"] == "Q1"][0]
+assert abs(q1["x"] - 50.0) <= 1e-9, q1
+assert [g["label"] for g in p["groups"]] == ["I(0,1)", "II(2,3)"], p["groups"]
+PY
+# a table over more than a turn with a steady cycle of one turn: exit 2 naming cycle
+sed 's/cycle = 720/cycle = 360/; s/n = 145/n = 73/' data/linkage_engine_flywheel.nml >"$cli_tmp/eng_360.nml"
+run_ks "$cli_tmp/eng_360.nml"
+[ "$rc" -eq 2 ] && grep -q "&linkage: cycle: a load table spans more than 360 deg" "$err" && pass \
+  || fail linkage-table-cycle "exit $rc: $(cat "$err")"
+# over another link than the first drive's: exit 2 naming over
+sed 's/force(1)%angle = 180$/force(1)%angle = 180, force(1)%over = 2/' data/linkage_engine.nml >"$cli_tmp/eng_over.nml"
+run_ks "$cli_tmp/eng_over.nml"
+[ "$rc" -eq 2 ] && grep -q "&linkage: force(1)%over: a table over a link's position" "$err" && pass \
+  || fail linkage-table-over "exit $rc: $(cat "$err")"

@@ -38,5 +38,5 @@ run_ks diff data/expected/pr3207.csv data/expected/pr3207.csv --format csv
   || fail options-not-of-diff "rc=$rc: $(head -2 "$err")"
 # the usage line printed with a usage error is the table's, every subcommand
 run_ks --no-such-option
-[ "$rc" -eq 1 ] && [ "$(grep -o ' | kinetostat [a-z-]*' "$err" | wc -l)" -eq 8 ] && pass \
+[ "$rc" -eq 1 ] && [ "$(grep -o ' | kinetostat [a-z-]*' "$err" | wc -l)" -eq 9 ] && pass \
   || fail options-usage-line "rc=$rc: $(cat "$err")"

@@ -77,3 +77,12 @@ complete_words() {
 [ "$(complete_words kinetostat di)" = "diff" ] && pass || fail completion-subcommand "$(complete_words kinetostat di)"
 [ "$(complete_words kinetostat data/pr3207.)" = "data/pr3207.nml" ] && pass || fail completion-deck "$(complete_words kinetostat data/pr3207.)"
 [ "$(complete_words kinetostat diff --rt)" = "--rtol" ] && pass || fail completion-diff-option "$(complete_words kinetostat diff --rt)"
+# the &linkage template's commented stages (dynamics, a load table over the crank's angle,
+# friction) run when uncommented: the flywheel, the table's force and the losses appear
+run_ks template linkage
+sed -e "s/^  ! dynamics = /  dynamics = /" -e "s/^  ! force(2)%/  force(2)%/" -e "s/^  ! pair(1)%f/  pair(1)%f/" "$out" \
+  >"$cli_tmp/tpl_linkage_all.nml"
+run_ks "$cli_tmp/tpl_linkage_all.nml" --format csv
+if [ "$rc" -eq 0 ] && head -1 "$out" | grep -q "P_loss_F10" && head -1 "$out" | grep -q "J_red" && \
+   grep -q "dynamics = 'steady'" "$cli_tmp/tpl_linkage_all.nml" && grep -q "force(2)%table = " "$cli_tmp/tpl_linkage_all.nml"; then pass
+else fail template-linkage-stages "exit $rc: $(head -c 300 "$err") $(head -1 "$out" | head -c 300)"; fi

@@ -1,0 +1,209 @@
+!> The friction of an `&linkage` deck in the step table, as `&assur` has it (docs/friction.md):
+!> the columns after the drives' efforts (<effort>_0 without friction, P_loss_<pair> for every
+!> pair with friction, P_loss, eta_defined, eta), the works over the run and the summary, the
+!> INPUT DATA lines and the friction block of RESULTS.
+module kinetostat_linkage_friction_table
+  use kinetostat_kinds, only: wp, deg_to_rad
+  use kinetostat_text, only: upper
+  use kinetostat_noise, only: noise_rel
+  use kinetostat_vec2, only: magnitude, clean_zero
+  use kinetostat_run_tally, only: trapezoid_t
+  use kinetostat_step_table, only: step_table_t, col_moment, col_component, col_other, col_flag, col_ratio
+  use kinetostat_format, only: pad_left, fixed_field
+  use kinetostat_labels, only: lang_ru
+  use kinetostat_text_buffer, only: text_buffer_t
+  use kinetostat_linkage, only: linkage_t, linkage_step_t, pair_r
+  use kinetostat_linkage_friction, only: linkage_friction_t
+  use kinetostat_linkage_deck, only: linkage_deck_t, linkage_drive_values
+  implicit none
+  private
+  public :: add_friction_columns, friction_values, friction_integrals, friction_summary, echo_friction, &
+    write_friction_results
+
+  !> An efficiency within this of 0 is roundoff (A_loss = A_driver).
+  real(wp), parameter :: eta_roundoff = 1.0e-12_wp
+  !> A run spanning this close to 360 deg is a whole turn.
+  real(wp), parameter :: whole_turn_tol = 1.0e-9_wp
+  !> Widths of the friction block's first column and of the others.
+  integer, parameter :: first_width = 10, field_width = 12
+
+contains
+
+  !> The friction columns: `effort`_0 (the first drive's effort without friction: N*m or N),
+  !> P_loss_<force column> (W) for every pair with friction, P_loss, eta_defined, eta.
+  pure subroutine add_friction_columns(deck, effort, force_names, table)
+    type(linkage_deck_t), intent(in) :: deck
+    !> The first drive's effort column (M1, F_drive1).
+    character(*), intent(in) :: effort
+    !> Every pair's force column (F21, ...).
+    character(len=*), intent(in) :: force_names(:)
+    type(step_table_t), intent(inout) :: table
+    integer :: k
+    if (deck%mech%pairs(deck%mech%drives(1)%pair)%kind == pair_r) then
+      call table%add_column(effort//"_0", "N*m", col_moment)
+    else
+      call table%add_column(effort//"_0", "N", col_component)
+    end if
+    do k = 1, size(force_names)
+      if (deck%friction_f(k) > 0.0_wp) call table%add_column("P_loss_"//trim(force_names(k)), "W", col_other)
+    end do
+    call table%add_column("P_loss", "W", col_other)
+    call table%add_column("eta_defined", "", col_flag)
+    call table%add_column("eta", "", col_ratio)
+  end subroutine add_friction_columns
+
+  !> The friction values of a step in the order of add_friction_columns. eta = 1 - R/D (R the
+  !> loss, D the drives' virtual power, both per unit of the reference rate) where D > 0;
+  !> elsewhere eta_defined = 0 and eta = 0.
+  pure function friction_values(deck, s, fr) result(v)
+    type(linkage_deck_t), intent(in) :: deck
+    !> The step with friction.
+    type(linkage_step_t), intent(in) :: s
+    type(linkage_friction_t), intent(in) :: fr
+    real(wp), allocatable :: v(:)
+    real(wp) :: floor, eta
+    integer :: k
+    floor = 0.0_wp
+    do k = 1, size(s%f, 2)
+      floor = max(floor, magnitude(s%f(:, k)))
+    end do
+    floor = noise_rel * floor
+    if (deck%mech%pairs(deck%mech%drives(1)%pair)%kind == pair_r) floor = floor * deck%mech%size
+    v = [merge(0.0_wp, fr%effort0(1), abs(fr%effort0(1)) <= floor)]
+    do k = 1, size(deck%friction_f)
+      if (deck%friction_f(k) > 0.0_wp) v = [v, fr%loss(k)]
+    end do
+    if (fr%driver_rate > 0.0_wp) then
+      eta = 1.0_wp - fr%rate_total / fr%driver_rate
+      if (abs(eta) <= eta_roundoff) eta = 0.0_wp
+      v = [v, fr%p_loss, 1.0_wp, eta]
+    else
+      v = [v, fr%p_loss, 0.0_wp, 0.0_wp]
+    end if
+    v = clean_zero(v)
+  end function friction_values
+
+  !> The works of steps step1 .. step1 + size(frs) - 1 as points to integrate over the first
+  !> drive's value (rad or m): [the drives' virtual power, the loss], per unit of the
+  !> reference rate: fed in row order they give the work of the drives and the work lost, J.
+  pure function friction_integrals(deck, frs, step1) result(works)
+    type(linkage_deck_t), intent(in) :: deck
+    type(linkage_friction_t), intent(in) :: frs(:)
+    integer, intent(in) :: step1
+    type(trapezoid_t) :: works(2)
+    real(wp) :: dq(size(deck%mech%drives)), dv(size(deck%mech%drives)), da(size(deck%mech%drives))
+    integer :: i
+    do i = 1, 2
+      works(i)%unit = 1.0_wp
+      allocate (works(i)%x(size(frs)), works(i)%y(size(frs)))
+    end do
+    do i = 1, size(frs)
+      call linkage_drive_values(deck, step1 - 1 + i, dq, dv, da)
+      works(1)%x(i) = dq(1)
+      works(1)%y(i) = frs(i)%driver_rate
+      works(2)%y(i) = frs(i)%rate_total
+    end do
+    works(2)%x = works(1)%x
+  end function friction_integrals
+
+  !> The summary of a run with friction: the works, the efficiency and what it means.
+  pure subroutine friction_summary(deck, a_driver, a_loss, table)
+    type(linkage_deck_t), intent(in) :: deck
+    !> Work of the drives and work lost to friction over the run, J.
+    real(wp), intent(in) :: a_driver, a_loss
+    type(step_table_t), intent(inout) :: table
+    real(wp) :: span, eta, q1(size(deck%mech%drives)), qn(size(deck%mech%drives)), dv(size(deck%mech%drives)), &
+      da(size(deck%mech%drives))
+    logical :: turning
+    call linkage_drive_values(deck, 1, q1, dv, da)
+    call linkage_drive_values(deck, deck%n, qn, dv, da)
+    turning = deck%mech%pairs(deck%mech%drives(1)%pair)%kind == pair_r
+    span = abs(qn(1) - q1(1))
+    table%summary_heading = "WORK AND EFFICIENCY WITH FRICTION"
+    if (turning) then
+      call table%summary_real("RUN SPAN", span / deg_to_rad, "deg")
+    else
+      call table%summary_real("RUN SPAN", span, "m")
+    end if
+    call table%summary_real("A_DRIVER", clean_zero(a_driver), "J")
+    call table%summary_real("A_LOSS", clean_zero(a_loss), "J")
+    if (a_driver > 0.0_wp) then
+      eta = 1.0_wp - a_loss / a_driver
+      if (abs(eta) <= eta_roundoff) eta = 0.0_wp
+      call table%summary_real("ETA", eta, "")
+      if (turning .and. span / deg_to_rad >= 360.0_wp - whole_turn_tol) then
+        call table%summary_line("ETA = 1 - A_LOSS/A_DRIVER OVER A WHOLE TURN OF THE INPUT: THE CYCLE EFFICIENCY")
+      else
+        call table%summary_line("ETA = 1 - A_LOSS/A_DRIVER OVER LESS THAN A WHOLE TURN: NOT THE CYCLE EFFICIENCY")
+        call table%summary_line("(THE DRIVER'S WORK ALSO CHANGES THE KINETIC AND POTENTIAL ENERGY)")
+      end if
+    else
+      call table%summary_line("ETA NOT DEFINED: THE DRIVER DELIVERS NO NET WORK OVER THE RUN")
+    end if
+  end subroutine friction_summary
+
+  !> INPUT DATA lines of pair k's friction: F, and R (turning) or CONTACT_SPAN (sliding).
+  pure subroutine echo_friction(deck, k, table)
+    type(linkage_deck_t), intent(in) :: deck
+    integer, intent(in) :: k
+    type(step_table_t), intent(inout) :: table
+    if (.not. deck%friction_f(k) > 0.0_wp) return
+    call table%echo_real("  F", deck%friction_f(k), "")
+    if (deck%mech%pairs(k)%kind == pair_r) then
+      call table%echo_real("  R", deck%friction_r(k), "m")
+    else
+      call table%echo_real("  CONTACT_SPAN", deck%friction_span(k), "m")
+    end if
+  end subroutine echo_friction
+
+  !> The friction block of RESULTS: per step the first drive's value, the power loss of every
+  !> pair with friction, P_loss, the effort without friction and the instantaneous efficiency
+  !> (blank where the drives deliver no power).
+  pure subroutine write_friction_results(table, input, effort, lang, out)
+    type(step_table_t), intent(in) :: table
+    !> The first drive's input and effort columns (phi1, M1).
+    character(*), intent(in) :: input, effort
+    integer, intent(in) :: lang
+    type(text_buffer_t), intent(inout) :: out
+    character(len=:), allocatable :: line1, line2, watt, unit
+    integer :: k, c, first, last
+    first = table%column_index(effort//"_0")
+    last = table%column_index("eta")
+    if (table%first_block()) then
+      call out%put("")
+      if (lang == lang_ru) then
+        call out%put(" ТРЕНИЕ: ПОТЕРИ МОЩНОСТИ В ПАРАХ, "//upper(effort)// &
+                     " БЕЗ ТРЕНИЯ, МГНОВЕННЫЙ КПД")
+        watt = "Вт"
+        unit = merge("Н*м", "Н   ", table%columns(first)%unit == "N*m")
+      else
+        call out%put(" FRICTION: POWER LOSS IN THE PAIRS, "//upper(effort)//" WITHOUT FRICTION, INSTANTANEOUS EFFICIENCY")
+        watt = "W"
+        unit = table%columns(first)%unit
+      end if
+      line1 = pad_left(upper(input), first_width)
+      line2 = repeat(" ", first_width)
+      do c = first + 1, last - 3
+        line1 = line1//pad_left("P_"//table%columns(c)%name(8:), field_width)
+        line2 = line2//pad_left(watt, field_width)
+      end do
+      line1 = line1//pad_left("P_LOSS", field_width)//pad_left(upper(effort)//"_0", field_width)// &
+        pad_left("ETA", field_width)
+      line2 = line2//pad_left(watt, field_width)//pad_left(trim(unit), field_width)
+      call out%put(line1)
+      call out%put(trim(line2))
+    end if
+    do k = 1, table%row_count()
+      associate (v => table%rows(:, k))
+        line1 = fixed_field(v(1), first_width, 2)
+        do c = first + 1, last - 2
+          line1 = line1//fixed_field(v(c), field_width, 2)
+        end do
+        line1 = line1//fixed_field(v(first), field_width, 2)
+        if (v(last - 1) > 0.0_wp) line1 = line1//fixed_field(v(last), field_width, 4)
+        call out%put(line1)
+      end associate
+    end do
+  end subroutine write_friction_results
+
+end module kinetostat_linkage_friction_table
