@@ -6,7 +6,7 @@
 !> stroke law; forces, moments, gravity. Integer variables are read as reals and must be
 !> whole numbers.
 module kinetostat_linkage_deck
-  use kinetostat_kinds, only: wp, g_default, deg_to_rad
+  use kinetostat_kinds, only: wp, g_default, deg_to_rad, rad_to_deg
   use kinetostat_error, only: error_t
   use kinetostat_text, only: int_str, lower, is_name, real_str
   use kinetostat_deck, only: values_out_of_memory, longest_quoted, begin_group, max_deck_array, &
@@ -14,7 +14,8 @@ module kinetostat_linkage_deck
     deck_error, is_set, require_set, require_nonnegative, require_rule, require_per_step, optional_default, count_values, &
     require_whole, deck_array_capacities, require_chars, title_chars, text_bytes, text_chars
   use kinetostat_vec2, only: unit_at, magnitude
-  use kinetostat_linkage, only: linkage_t, pair_r, pair_p
+  use kinetostat_linkage, only: linkage_t, pair_r, pair_p, linkage_work_t, linkage_reference_pose, linkage_assemble, &
+    point_position
   use kinetostat_linkage_structure, only: analyse_structure
   use kinetostat_dynamics, only: dynamics_steady
   use kinetostat_load_table, only: max_table_points, read_table_points, table_interpolate, table_cyclic
@@ -22,7 +23,7 @@ module kinetostat_linkage_deck
   implicit none
   private
   public :: linkage_deck_t, linkage_schedule_t, read_linkage_deck, linkage_template
-  public :: linkage_drive_values, linkage_load_value, linkage_schedule_at
+  public :: linkage_drive_values, linkage_load_value, linkage_schedule_at, linkage_table_position
 
   !> Capacities of the lists.
   integer, parameter :: max_links = 48, max_pairs = 72, max_drives = 8, max_forces = 32, max_moments = 32
@@ -126,6 +127,9 @@ module kinetostat_linkage_deck
     !> Table: the period of the abscissa, deg (360, or 720 for a table over more than a turn:
     !> a four-stroke cycle); 0 for a stroke (no period).
     real(wp) :: period = 0.0_wp
+    !> Table over a link's position: the link (0: over the first drive's coordinate), and the
+    !> sliding pair with the frame whose stroke is its position (0: its angle).
+    integer :: link = 0, pair = 0
   end type linkage_schedule_t
 
   !> A validated `&linkage` deck.
@@ -540,6 +544,10 @@ contains
     deck%friction_on = any(deck%friction_f > 0.0_wp)
     call analyse_structure(deck%mech, ctx%path//": &"//ctx%group, error)
     if (allocated(error)) return
+    if (any(deck%force_load%link > 0) .or. any(deck%moment_load%link > 0)) then
+      call check_link_tables(error)
+      if (allocated(error)) return
+    end if
     call read_dynamics(error)
   contains
     !> The machine dynamics (docs/dynamics.md) of a linkage with one drive: reduced to it
@@ -589,6 +597,54 @@ contains
         any(deck%moment_load%column > 0)), "a steady cycle needs every load at any drive angle: give it as a "// &
         "constant or a window, not per step", error)
     end subroutine read_dynamics
+    !> Every step's position of the links that tables are over lies inside the table (the
+    !> poses by the run's continuation; a step that does not assemble is left to the run).
+    subroutine check_link_tables(err)
+      type(error_t), allocatable, intent(out) :: err
+      type(error_t), allocatable :: pose_error
+      type(linkage_work_t) :: work
+      type(linkage_schedule_t) :: sched
+      real(wp) :: q(3 * nl), dq(nd), dv(nd), da(nd), from(nd), x
+      integer :: kk, jj
+      q = linkage_reference_pose(deck%mech)
+      do jj = 1, nd
+        from(jj) = deck%mech%drives(jj)%q_ref
+      end do
+      do kk = 1, deck%n
+        call linkage_drive_values(deck, kk, dq, dv, da)
+        call linkage_assemble(deck%mech, from, dq, q, work, pose_error)
+        if (allocated(pose_error)) return
+        from = dq
+        do jj = 1, nf + nm
+          sched = merge_schedule(jj)
+          if (sched%link == 0) cycle
+          x = table_abscissa(sched, linkage_table_position(deck%mech, sched, q))
+          if (x < sched%x(1) - edge(sched) .or. x > sched%x(size(sched%x)) + edge(sched)) then
+            call deck_error(ctx, trim(merge("force( ", "moment(", jj <= nf))//int_str(merge(jj, jj - nf, jj <= nf))// &
+              ")%table", "at step "//int_str(kk)//" link "//int_str(ids(sched%link))//" is at "//real_str(x)// &
+              trim(merge(" m  ", " deg", sched%pair > 0))//", outside the table ["//real_str(sched%x(1))//", "// &
+              real_str(sched%x(size(sched%x)))//"]"//trim(merge(" m  ", " deg", sched%pair > 0)), err)
+            return
+          end if
+        end do
+      end do
+    end subroutine check_link_tables
+    !> Load jj: the forces, then the moments.
+    pure function merge_schedule(jj) result(sched)
+      integer, intent(in) :: jj
+      type(linkage_schedule_t) :: sched
+      if (jj <= nf) then
+        sched = deck%force_load(jj)
+      else
+        sched = deck%moment_load(jj - nf)
+      end if
+    end function merge_schedule
+    !> The range check's tolerance of a table.
+    pure real(wp) function edge(sched)
+      type(linkage_schedule_t), intent(in) :: sched
+      edge = 1.0e-9_wp * max(sched%x(size(sched%x)) - sched%x(1), abs(sched%x(1)), abs(sched%x(size(sched%x))), &
+        1.0e-300_wp)
+    end function edge
     !> A pair's friction (docs/friction.md): f >= 0 (default 0); a turning pair's journal
     !> radius r (> 0 when f > 0); a sliding pair's guide and block lengths (> 0 when given;
     !> the contact span is the shorter); a variable the pair's kind does not use is refused.
@@ -719,11 +775,24 @@ contains
       associate (driven => deck%mech%pairs(deck%mech%drives(1)%pair))
         if (is_set(over)) then
           call link_index(pfx//"over", over, over_link, err); if (allocated(err)) return
-          call require_rule(ctx, pfx//"over", over_link > 0 .and. driven%kind == pair_r .and. driven%b == 0 .and. &
-            driven%a == over_link, "a table over a link's position in a &linkage deck is over the link the first "// &
-            "drive turns on the frame (link "//int_str(ids(driven%a))//" here, or omit over: the first drive's "// &
-            "coordinate); over another link's position: an &assur deck", err)
+          call require_rule(ctx, pfx//"over", over_link > 0, "must be a moving link", err)
           if (allocated(err)) return
+          if (.not. (driven%kind == pair_r .and. driven%b == 0 .and. driven%a == over_link)) then
+            ! over another link's position: its angle, or its stroke on a guide of the frame
+            sched%table = .true.
+            sched%link = over_link
+            call read_table_points(ctx, pfx//"table", table, sched%x, sched%v, err); if (allocated(err)) return
+            sched%period = 360.0_wp
+            do kk = 1, size(deck%mech%pairs)
+              associate (pr => deck%mech%pairs(kk))
+                if (pr%kind == pair_p .and. min(pr%a, pr%b) == 0 .and. max(pr%a, pr%b) == over_link) then
+                  sched%pair = kk
+                  sched%period = 0.0_wp
+                end if
+              end associate
+            end do
+            return ! every step's position is checked once the poses are known (check_link_tables)
+          end if
         end if
         sched%table = .true.
         call read_table_points(ctx, pfx//"table", table, sched%x, sched%v, err); if (allocated(err)) return
@@ -820,14 +889,19 @@ contains
   end subroutine linkage_drive_values
 
   !> A load's value at step k (N or N*m).
-  pure real(wp) function linkage_load_value(deck, sched, k)
+  pure real(wp) function linkage_load_value(deck, sched, k, position)
     !> Validated deck.
     type(linkage_deck_t), intent(in) :: deck
     !> The load's schedule.
     type(linkage_schedule_t), intent(in) :: sched
     !> Step.
     integer, intent(in) :: k
-    if (sched%column > 0) then
+    !> A table over a link's position: that position at the step (linkage_table_position).
+    real(wp), intent(in), optional :: position
+    if (sched%link > 0) then
+      linkage_load_value = 0.0_wp
+      if (present(position)) linkage_load_value = table_interpolate(sched%x, sched%v, table_abscissa(sched, position))
+    else if (sched%column > 0) then
       linkage_load_value = deck%step_values((sched%column - 1) * deck%n + k)
     else if (sched%window .or. sched%table) then
       linkage_load_value = linkage_schedule_at(sched, first_drive_value(deck, k))
@@ -838,11 +912,18 @@ contains
 
   !> A load's value when the first drive has the value x (its deck unit: deg or m): a
   !> constant, a window's value or idle, or a table's value (not a step_values column).
-  pure real(wp) function linkage_schedule_at(sched, x) result(value)
+  pure real(wp) function linkage_schedule_at(sched, x, position) result(value)
     !> The load's schedule.
     type(linkage_schedule_t), intent(in) :: sched
     !> The first drive's value, deg or m.
     real(wp), intent(in) :: x
+    !> A table over a link's position: that position (linkage_table_position).
+    real(wp), intent(in), optional :: position
+    if (sched%link > 0) then
+      value = 0.0_wp
+      if (present(position)) value = table_interpolate(sched%x, sched%v, table_abscissa(sched, position))
+      return
+    end if
     if (sched%table) then
       value = table_interpolate(sched%x, sched%v, table_abscissa(sched, x))
       return
@@ -851,5 +932,24 @@ contains
     if (sched%window) value = merge(sched%value, sched%idle, x >= sched%phi_on - window_tol .and. &
                                     x <= sched%phi_off + window_tol)
   end function linkage_schedule_at
+
+  !> The position of a table's link at poses q: its angle (the angle of its axis, deg), or its
+  !> stroke along its guide on the frame from the pair's point (m); 0 for a table over the
+  !> first drive's coordinate.
+  pure real(wp) function linkage_table_position(mech, sched, q) result(x)
+    type(linkage_t), intent(in) :: mech
+    type(linkage_schedule_t), intent(in) :: sched
+    !> Poses.
+    real(wp), intent(in) :: q(:)
+    x = 0.0_wp
+    if (sched%link == 0) return
+    if (sched%pair > 0) then
+      associate (pr => mech%pairs(sched%pair))
+        x = dot_product(point_position(mech, q, sched%link, pr%at) - pr%at, pr%u)
+      end associate
+    else
+      x = (mech%links(sched%link)%angle0 + q(3 * sched%link)) * rad_to_deg
+    end if
+  end function linkage_table_position
 
 end module kinetostat_linkage_deck

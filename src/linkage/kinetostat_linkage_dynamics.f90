@@ -14,7 +14,7 @@ module kinetostat_linkage_dynamics
   use kinetostat_dynamics, only: reduced_t, reduced_source_t
   use kinetostat_linkage, only: linkage_t, linkage_work_t, linkage_assemble, linkage_motion, link_point_state, &
     linkage_reference_pose
-  use kinetostat_linkage_deck, only: linkage_deck_t, linkage_schedule_at
+  use kinetostat_linkage_deck, only: linkage_deck_t, linkage_schedule_at, linkage_table_position
   implicit none
   private
   public :: linkage_source_t, linkage_source_setup, linkage_reduced_at_pose, linkage_load_breaks
@@ -99,11 +99,13 @@ contains
     allocate (fval(size(self%deck%force_load)), mval(size(self%deck%moment_load)))
     !GCC$ novector
     do i = 1, size(fval)
-      fval(i) = linkage_schedule_at(self%deck%force_load(i), phi * rad_to_deg)
+      fval(i) = linkage_schedule_at(self%deck%force_load(i), phi * rad_to_deg, &
+        linkage_table_position(self%deck%mech, self%deck%force_load(i), q))
     end do
     !GCC$ novector
     do i = 1, size(mval)
-      mval(i) = linkage_schedule_at(self%deck%moment_load(i), phi * rad_to_deg)
+      mval(i) = linkage_schedule_at(self%deck%moment_load(i), phi * rad_to_deg, &
+        linkage_table_position(self%deck%mech, self%deck%moment_load(i), q))
     end do
     red = linkage_reduced_at_pose(self%deck%mech, q, fval, mval)
   end function at
@@ -169,13 +171,13 @@ contains
     !GCC$ novector
     do k = 1, size(deck%force_load)
       if (deck%force_load(k)%window) breaks = [breaks, [deck%force_load(k)%phi_on, deck%force_load(k)%phi_off] * deg_to_rad]
-      if (deck%force_load(k)%table) breaks = [breaks, deck%force_load(k)%x * deg_to_rad]
+      if (deck%force_load(k)%table .and. deck%force_load(k)%link == 0) breaks = [breaks, deck%force_load(k)%x * deg_to_rad]
     end do
     !GCC$ novector
     do k = 1, size(deck%moment_load)
       if (deck%moment_load(k)%window) breaks = [breaks, [deck%moment_load(k)%phi_on, deck%moment_load(k)%phi_off] * &
         deg_to_rad]
-      if (deck%moment_load(k)%table) breaks = [breaks, deck%moment_load(k)%x * deg_to_rad]
+      if (deck%moment_load(k)%table .and. deck%moment_load(k)%link == 0) breaks = [breaks, deck%moment_load(k)%x * deg_to_rad]
     end do
   end function linkage_load_breaks
 

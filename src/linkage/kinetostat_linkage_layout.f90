@@ -34,7 +34,7 @@ module kinetostat_linkage_layout
   use kinetostat_linkage_dynamics, only: linkage_source_t, linkage_source_setup, linkage_reduced_at_pose, &
     linkage_load_breaks
   use kinetostat_linkage_deck, only: linkage_deck_t, read_linkage_deck, linkage_template, linkage_drive_values, &
-    linkage_load_value
+    linkage_load_value, linkage_table_position, linkage_schedule_t
   implicit none
   private
   public :: linkage_mechanism_t, new_linkage, linkage_structure_text, linkage_solve_steps
@@ -222,12 +222,14 @@ contains
           w = f%dir
           if (f%follow) w = rotate(w, th)
           call drawing%add_force("Q"//int_str(i), force_load, p, &
-            linkage_load_value(deck, deck%force_load(i), table%run_row(k)) * w, link_name(mech, f%link))
+            linkage_load_value(deck, deck%force_load(i), table%run_row(k), row_position(deck%force_load(i))) * w, &
+            link_name(mech, f%link))
         end associate
       end do
       do i = 1, size(mech%moment_link)
         call drawing%add_moment("MQ"//int_str(i), force_load, drawing%at("S"//link_name(mech, mech%moment_link(i))), &
-          linkage_load_value(deck, deck%moment_load(i), table%run_row(k)), link_name(mech, mech%moment_link(i)))
+          linkage_load_value(deck, deck%moment_load(i), table%run_row(k), row_position(deck%moment_load(i))), &
+          link_name(mech, mech%moment_link(i)))
       end do
       call self%mass_model(model)
       call drawing%add_body_loads(table, k, model)
@@ -240,6 +242,22 @@ contains
         end if
       end do
     end associate
+  contains
+    !> The position of a table load's link at row k: its angle from the row, or its stroke from
+    !> its centre of mass on the drawing.
+    pure real(wp) function row_position(sched) result(x)
+      type(linkage_schedule_t), intent(in) :: sched
+      x = 0.0_wp
+      if (sched%link == 0) return
+      associate (mech => self%deck%mech)
+        if (sched%pair > 0) then
+          x = dot_product(drawing%at("S"//link_name(mech, sched%link)) - mech%links(sched%link)%s, &
+                          mech%pairs(sched%pair)%u)
+        else
+          x = table%rows(table%column_index("phi"//link_name(mech, sched%link)), k)
+        end if
+      end associate
+    end function row_position
   end subroutine force_plan
 
   !> The moving links' masses, inertias and centres of mass (S<i>), and gravity.
@@ -361,11 +379,12 @@ contains
         return
       end if
       do i = 1, size(fval)
-        fval(i) = linkage_load_value(deck, deck%force_load(i), k)
+        fval(i) = linkage_load_value(deck, deck%force_load(i), k, linkage_table_position(deck%mech, deck%force_load(i), q))
       end do
       !GCC$ novector
       do i = 1, nm
-        mval(i) = linkage_load_value(deck, deck%moment_load(i), k)
+        mval(i) = linkage_load_value(deck, deck%moment_load(i), k, linkage_table_position(deck%mech, deck%moment_load(i), &
+                                     q))
       end do
       if (present(motions)) then
         mval(nm + 1) = -j_turn * motions(k)%eps
@@ -606,11 +625,13 @@ contains
     do k = first, ubound(motions, 1)
       !GCC$ novector
       do i = 1, size(fval)
-        fval(i) = linkage_load_value(deck, deck%force_load(i), k)
+        fval(i) = linkage_load_value(deck, deck%force_load(i), k, linkage_table_position(deck%mech, deck%force_load(i), &
+                                     steps(k)%q))
       end do
       !GCC$ novector
       do i = 1, size(mval)
-        mval(i) = linkage_load_value(deck, deck%moment_load(i), k)
+        mval(i) = linkage_load_value(deck, deck%moment_load(i), k, linkage_table_position(deck%mech, &
+                                     deck%moment_load(i), steps(k)%q))
       end do
       red = linkage_reduced_at_pose(deck%mech, steps(k)%q, fval, mval)
       motions(k)%omega = deck%omega(1)

@@ -247,8 +247,35 @@ sed 's/cycle = 720/cycle = 360/; s/n = 145/n = 73/' data/linkage_engine_flywheel
 run_ks "$cli_tmp/eng_360.nml"
 [ "$rc" -eq 2 ] && grep -q "&linkage: cycle: a load table spans more than 360 deg" "$err" && pass \
   || fail linkage-table-cycle "exit $rc: $(cat "$err")"
-# over another link than the first drive's: exit 2 naming over
-sed 's/force(1)%angle = 180$/force(1)%angle = 180, force(1)%over = 2/' data/linkage_engine.nml >"$cli_tmp/eng_over.nml"
-run_ks "$cli_tmp/eng_over.nml"
-[ "$rc" -eq 2 ] && grep -q "&linkage: force(1)%over: a table over a link's position" "$err" && pass \
-  || fail linkage-table-over "exit $rc: $(cat "$err")"
+# a table over another link's position, as &assur's: the rocker's angle (the &linkage link's
+# axis runs from its first joint C to D, 180 deg from the &assur rocker's x-axis D->C: the same
+# table shifted by 180 deg) and the slider's stroke (from the pair's point, 0.44942810419312296 m
+# along the guide from the &assur guide point): every common column within 1e-9
+tab="0, -10, 60, -25, 120, -40, 180, -20, 240, -5, 300, -15, 360, -10"
+tab180="180, -10, 240, -25, 300, -40, 360, -20, 420, -5, 480, -15, 540, -10"
+sed "s/moment(1)%link = 3, moment(1)%value = -20/moment(1)%link = 3, moment(1)%over = 3, moment(1)%table = $tab/" \
+  data/assur_fourbar.nml >"$cli_tmp/ov_a.nml"
+sed "s/moment(1)%link = 3, moment(1)%value = -20/moment(1)%link = 3, moment(1)%over = 3, moment(1)%table = $tab180/" \
+  data/linkage_fourbar.nml >"$cli_tmp/ov_l.nml"
+sr='force(1)%value = 500, force(1)%idle = 100, force(1)%phi_on = 0, force(1)%phi_off = 180'
+sed "s/$sr/force(1)%over = 3, force(1)%table = 0.2, 500, 0.3, 300, 0.4, 100, 0.5, 0/" data/assur_slider_crank.nml \
+  >"$cli_tmp/os_a.nml"
+sed "s/$sr/force(1)%over = 3, force(1)%table = -0.24942810419312296, 500, -0.14942810419312296, 300, -0.04942810419312296, 100, 0.05057189580687704, 0/" \
+  data/linkage_slider_crank.nml >"$cli_tmp/os_l.nml"
+for t in ov os; do
+  run_ks "$cli_tmp/${t}_a.nml" --format csv --quiet; cp "$out" "$cli_tmp/${t}_a.csv"; rc_a=$rc
+  run_ks "$cli_tmp/${t}_l.nml" --format csv; cp "$out" "$cli_tmp/${t}_l.csv"; rc_l=$rc
+  run_ks diff --common --rtol 1e-9 --atol 1e-9 "$cli_tmp/${t}_a.csv" "$cli_tmp/${t}_l.csv"
+  [ "$rc_a$rc_l$rc" = 000 ] && grep -q "^same: [0-9]* values agree" "$out" && grep -q "%table" "$cli_tmp/${t}_l.nml" && pass \
+    || fail "linkage-table-over-link-$t" "exit $rc_a/$rc_l/$rc: $(head -c 300 "$out") $(head -c 300 "$err")"
+done
+# the same tables unshifted differ (the check can fail), and a step outside the table is exit 2
+sed "s/moment(1)%link = 3, moment(1)%value = -20/moment(1)%link = 3, moment(1)%over = 3, moment(1)%table = $tab/" \
+  data/linkage_fourbar.nml >"$cli_tmp/ov_l0.nml"
+run_ks "$cli_tmp/ov_l0.nml" --format csv; cp "$out" "$cli_tmp/ov_l0.csv"
+run_ks diff --common --rtol 1e-9 --atol 1e-9 "$cli_tmp/ov_a.csv" "$cli_tmp/ov_l0.csv"
+[ "$rc" -ne 0 ] && grep -q "^different:" "$out" && pass || fail linkage-table-over-link-can-fail "$(head -c 200 "$out")"
+sed "s/$sr/force(1)%over = 3, force(1)%table = -0.1, 500, 0.06, 0/" data/linkage_slider_crank.nml >"$cli_tmp/os_out.nml"
+run_ks "$cli_tmp/os_out.nml"
+[ "$rc" -eq 2 ] && grep -q "&linkage: force(1)%table: at step 4 link 3 is at -0.1086936034 m, outside the table" "$err" && pass \
+  || fail linkage-table-outside "exit $rc: $(cat "$err")"
