@@ -114,12 +114,7 @@ contains
       do ip = 1, np
         p(:, ip) = [table%rows(cx(ip), k), table%rows(cy(ip), k)]
       end do
-      do i = 1, nl
-        omega(i) = 0.0_wp
-        if (c_omega(i) > 0) omega(i) = table%rows(c_omega(i), k)
-        eps(i) = 0.0_wp
-        if (c_eps(i) > 0) eps(i) = table%rows(c_eps(i), k)
-      end do
+      call link_rates(table, k, c_omega, c_eps, omega, eps)
       do s = 1, size(slides)
         if (s_used(s)) u(:, s) = guide_direction(s)
       end do
@@ -401,6 +396,21 @@ contains
     end subroutine spread
   end subroutine closed_pass
 
+  !> The links' omega and eps at row k from their columns (0: none, the rate is 0).
+  pure subroutine link_rates(table, k, c_omega, c_eps, omega, eps)
+    type(step_table_t), intent(in) :: table
+    integer, intent(in) :: k, c_omega(:), c_eps(:)
+    !> Angular velocities, rad/s, and accelerations, rad/s^2.
+    real(wp), intent(out) :: omega(:), eps(:)
+    integer :: i
+    do i = 1, size(omega)
+      omega(i) = 0.0_wp
+      if (c_omega(i) > 0) omega(i) = table%rows(c_omega(i), k)
+      eps(i) = 0.0_wp
+      if (c_eps(i) > 0) eps(i) = table%rows(c_eps(i), k)
+    end do
+  end subroutine link_rates
+
   !> The columns of rows first..last by the plans' least-squares solve of every pair equation,
   !> row by row (a mechanism where the closed-form pass does not reach every link).
   pure subroutine by_least_squares(topo, table, drawing, known, c_omega, c_eps, cx, cy, first, last)
@@ -423,12 +433,7 @@ contains
       do ip = 1, size(drawing%points)
         drawing%points(ip)%p = [table%rows(cx(ip), k), table%rows(cy(ip), k)]
       end do
-      do i = 1, nl
-        omega(i) = 0.0_wp
-        if (c_omega(i) > 0) omega(i) = table%rows(c_omega(i), k)
-        eps(i) = 0.0_wp
-        if (c_eps(i) > 0) eps(i) = table%rows(c_eps(i), k)
-      end do
+      call link_rates(table, k, c_omega, c_eps, omega, eps)
       call solve_fields(topo, drawing, table, k, omega, eps, .false., none, v0, residual, known)
       call solve_fields(topo, drawing, table, k, omega, eps, .true., v0, a0, residual, known)
       call point_images(topo, drawing, omega, eps, v0, .false., v, known)
