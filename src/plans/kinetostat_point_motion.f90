@@ -425,7 +425,7 @@ contains
     real(wp), allocatable :: omega(:), eps(:), v0(:, :), a0(:, :), none(:, :)
     real(wp) :: residual
     integer, allocatable :: image(:)
-    integer :: k, i, nl, ip, iv
+    integer :: k, nl, ip, iv
     nl = size(topo%links)
     allocate (omega(nl), eps(nl), none(2, nl), image(size(drawing%points)))
     none = 0.0_wp
