@@ -316,14 +316,19 @@ contains
   !> 10^5) steps, of a class-III &linkage deck against a dyad &assur deck of the same size
   !> (data/class3.nml and data/assur_sixbar.nml: 5 moving links, 7 pairs each), and of the
   !> &linkage twin of the four-bar against the &assur four-bar (3 links); the ratios (the
-  !> class-III one's goal: at most 5).
+  !> class-III one's goal: at most 5); then the general engines against the dedicated kernels
+  !> per moving link (PR 3207's and the T.FTN six-bar's against their &assur decks, the &assur
+  !> four-bar against PR 3207's kernel) and &linkage against &assur on the same slider-crank
+  !> and PR 3207 with its flywheel (over one turn).
   subroutine bench_linkage(max_steps)
     !> Largest step count asked for.
     integer, intent(in) :: max_steps
     character(*), parameter :: line_fmt = '(2x,a,t54,f9.2,a,f6.2)'
+    character(*), parameter :: link_fmt = '(2x,a,t54,f9.2,f9.3,a,f6.2)'
     character(len=:), allocatable :: arg
-    character(len=32) :: count, dphi
+    character(len=32) :: count, dphi, turn
     real(wp) :: t_class3, t_sixbar, t_twin, t_fourbar
+    real(wp) :: t_pr3207, t_assur_pr3207, t_ftn, t_slider, t_slider_twin, t_fly, t_fly_twin
     logical :: asked
     integer :: i, length, n
     asked = .true.
@@ -358,6 +363,36 @@ contains
     write (output_unit, line_fmt) "linkage_fourbar.nml (&linkage, II(2,3), 3 links)", t_twin
     write (output_unit, line_fmt) "assur_fourbar.nml (&assur, one dyad, 3 links)", t_fourbar, &
       "   &linkage / &assur", t_twin / t_fourbar
+    flush (output_unit)
+    ! the general engines against the dedicated kernels, per moving link, and &linkage against
+    ! &assur on the same mechanism
+    write (turn, '(es24.17)') 360.0_wp / (n - 1)
+    t_pr3207 = per_step("data/pr3207.nml", "pr3207", "dphi = "//trim(dphi)//", n = "//trim(count), n)
+    t_assur_pr3207 = per_step("data/assur_pr3207.nml", "assur", "dphi = "//trim(dphi)//", n = "//trim(count), n)
+    t_ftn = per_step("data/sixbar.nml", "sixbar", "dphi = "//trim(dphi)//", n = "//trim(count)//", f5 = "// &
+      trim(count)//"*1000", n)
+    t_slider = per_step("data/assur_slider_crank.nml", "assur", "dphi = "//trim(dphi)//", n = "//trim(count), n)
+    t_slider_twin = per_step("data/linkage_slider_crank.nml", "linkage", "n = "//trim(count)//", drive(1)%step = "// &
+      trim(dphi), n)
+    t_fly = per_step("data/assur_pr3207_flywheel.nml", "assur", "dphi = "//trim(turn)//", n = "//trim(count), n)
+    t_fly_twin = per_step("data/linkage_pr3207_flywheel.nml", "linkage", "n = "//trim(count)//", drive(1)%step = "// &
+      trim(turn), n)
+    write (output_unit, '(a,i0,a)') "general engines against the dedicated kernels: CPU microseconds per step and per "// &
+      "moving link of the solve (", n, " steps), ratio:"
+    write (output_unit, link_fmt) "pr3207.nml (PR 3207's kernel, 5 links)", t_pr3207, t_pr3207 / 5
+    write (output_unit, link_fmt) "assur_pr3207.nml (&assur, 5 links)", t_assur_pr3207, t_assur_pr3207 / 5, &
+      "   &assur / kernel", t_assur_pr3207 / t_pr3207
+    write (output_unit, link_fmt) "assur_fourbar.nml (&assur, 3 links)", t_fourbar, t_fourbar / 3, &
+      "   &assur / kernel", (t_fourbar / 3) / (t_pr3207 / 5)
+    write (output_unit, link_fmt) "sixbar.nml (T.FTN six-bar's kernel, 5 links)", t_ftn, t_ftn / 5
+    write (output_unit, link_fmt) "assur_sixbar.nml (&assur, 5 links)", t_sixbar, t_sixbar / 5, &
+      "   &assur / kernel", t_sixbar / t_ftn
+    write (output_unit, link_fmt) "linkage_slider_crank.nml (&linkage, 3 links)", t_slider_twin, t_slider_twin / 3, &
+      "   &linkage / &assur", t_slider_twin / t_slider
+    write (output_unit, link_fmt) "assur_slider_crank.nml (&assur, 3 links)", t_slider, t_slider / 3
+    write (output_unit, link_fmt) "linkage_pr3207_flywheel.nml (&linkage, 5 links)", t_fly_twin, t_fly_twin / 5, &
+      "   &linkage / &assur", t_fly_twin / t_fly
+    write (output_unit, link_fmt) "assur_pr3207_flywheel.nml (&assur, 5 links)", t_fly, t_fly / 5
     flush (output_unit)
   end subroutine bench_linkage
 

@@ -80,6 +80,11 @@ module kinetostat_plans_base
     integer :: m = 0, g = 0
     real(wp) :: p(2) = 0.0_wp, u(2) = 0.0_wp
     character(len=16) :: name = ""
+    !> The guide's direction, deg: on link g (from its phi<g>; in the position frame when g =
+    !> 0), and whether it is a block's (u from (angle + phi<g>), else from angle and phi<g>
+    !> turned to radians apart).
+    real(wp) :: angle = 0.0_wp
+    logical :: block = .false.
   end type slide_t
 
   !> A whole reaction a group's force polygon gives: an outer reaction (its parts drawn, the
@@ -372,7 +377,7 @@ contains
           do m = 1, nl
             if (m == g) cycle
             if (lists(topo, m, trim(gd%point))) then
-              slides = [slides, slide_t(m, g, p, u, gd%point)]
+              slides = [slides, slide_t(m, g, p, u, gd%point, gd%angle, .false.)]
             else if (g > 0 .and. rod == 0 .and. .not. listed_by_any(trim(gd%point), g)) then
               ! a rod in a cylinder: a link turning with the guide's link over the whole run,
               ! with a point on the axis
@@ -382,7 +387,7 @@ contains
                 if (drawing%point_index(trim(qname)) == 0) cycle
                 q = drawing%at(trim(qname))
                 if (abs(cross(q - p, u)) <= 1.0e-9_wp * (1.0_wp + norm2(q - p))) then
-                  slides = [slides, slide_t(m, g, q, u, qname)]
+                  slides = [slides, slide_t(m, g, q, u, qname, gd%angle, .false.)]
                   rod = m
                   exit
                 end if
@@ -400,7 +405,7 @@ contains
         ip = drawing%point_index(trim(l%points(1)))
         if (ip == 0) cycle
         ang = (l%angle + column_value(table, "phi"//l%along, k)) * deg_to_rad
-        slides = [slides, slide_t(m, g, drawing%points(ip)%p, [cos(ang), sin(ang)], l%points(1))]
+        slides = [slides, slide_t(m, g, drawing%points(ip)%p, [cos(ang), sin(ang)], l%points(1), l%angle, .true.)]
       end associate
     end do
   contains

@@ -84,3 +84,62 @@ PY
   elif grep -q "^motion: FAIL" "$cli_tmp/motion.out"; then pass
   else fail "kinematics-motion-must-fail-$col" "no verdict: $(tail -2 "$cli_tmp/motion.out")"; fi
 done
+
+# the points' velocities and accelerations (closed form, link by link) against the plans of
+# velocities and accelerations of the same step (--plans --format json: the least-squares
+# solve of every pair equation, an independent solver): every point the plan and the CSV
+# share, within 1e-9 of the plan's largest vector; a slider pair (pr3207: the ram from two
+# guides), dyads, a class-III group, the general engine's slider-crank
+plans_compare() {
+  python3 - "$1" "$2" "$3" <<'PY'
+import csv, json, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+plans = json.load(open(sys.argv[2]))
+row = rows[int(sys.argv[3]) - 1]
+bad = []
+for plan, (cx, cy) in (("velocity_plan", ("vx_", "vy_")), ("acceleration_plan", ("ax_", "ay_"))):
+    pts = plans[plan]["points"]
+    scale = max(max(abs(p["x"]), abs(p["y"])) for p in pts)
+    n = 0
+    for p in pts:
+        if cx + p["name"] not in row:
+            continue
+        n += 1
+        for key, col in (("x", cx), ("y", cy)):
+            got = float(row[col + p["name"]])
+            if abs(got - p[key]) > 1e-9 * scale:
+                bad.append(f"{col}{p['name']}: csv {got!r} vs plan {p[key]!r} (tolerance {1e-9 * scale:.2e})")
+    if n == 0:
+        bad.append(f"{plan}: no point in common with the CSV")
+print("plans: FAIL " + "; ".join(bad[:4]) if bad else "plans: OK")
+PY
+}
+plans_case() {
+  local name="$1" at="$2"; shift 2
+  run_ks "$@" --kinematics --format csv
+  if [ "$rc" -ne 0 ]; then fail "kinematics-plans-$name" "exit $rc: $(head -c 300 "$err")"; return; fi
+  cp "$out" "$cli_tmp/plans.csv"
+  run_ks "$@" --plans --at "$at" --format json
+  if [ "$rc" -ne 0 ]; then fail "kinematics-plans-$name" "plans exit $rc: $(head -c 300 "$err")"; return; fi
+  cp "$out" "$cli_tmp/plans.json"
+  plans_compare "$cli_tmp/plans.csv" "$cli_tmp/plans.json" "$at" >"$cli_tmp/plans.out" 2>&1
+  if grep -q "^plans: OK" "$cli_tmp/plans.out"; then pass; else fail "kinematics-plans-$name" "$(tail -2 "$cli_tmp/plans.out")"; fi
+}
+plans_case pr3207 5 data/pr3207.nml
+plans_case assur-sixbar 4 data/assur_sixbar.nml
+plans_case assur-slider-crank 3 data/assur_slider_crank.nml
+plans_case linkage-slider-crank 3 data/linkage_slider_crank.nml
+plans_case class3 7 data/class3.nml
+plans_case sixbar 4 data/sixbar.nml
+plans_case assur-pr3050 3 data/assur_pr3050.nml
+# the comparison must fail on a changed velocity
+python3 - "$cli_tmp/plans.csv" "$cli_tmp/plans_bad.csv" <<'PY'
+import csv, sys
+rows = list(csv.reader(open(sys.argv[1])))
+c = next(j for j, n in enumerate(rows[0]) if n.startswith("vx_") and abs(float(rows[3][j])) > 1e-3)
+rows[3][c] = repr(float(rows[3][c]) * (1 + 1e-6))
+csv.writer(open(sys.argv[2], "w", newline=""), lineterminator="\n").writerows(rows)
+PY
+plans_compare "$cli_tmp/plans_bad.csv" "$cli_tmp/plans.json" 3 >"$cli_tmp/plans.out" 2>&1
+if grep -q "^plans: FAIL" "$cli_tmp/plans.out"; then pass
+else fail kinematics-plans-must-fail "a changed velocity passed: $(tail -2 "$cli_tmp/plans.out")"; fi

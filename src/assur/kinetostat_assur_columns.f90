@@ -1,0 +1,349 @@
+!> The generic engine's result columns: the CSV row of a step (phi1, every pair's force,
+!> angle, components and prismatic normal force and moment, M1 or the actuator's columns)
+!> and, with friction, the friction columns, the works over the run and their summary.
+module kinetostat_assur_columns
+  use kinetostat_kinds, only: wp, deg_to_rad, rad_to_deg
+  use kinetostat_noise, only: noise_rel
+  use kinetostat_vec2, only: magnitude, angle_360_deg, angle_180_deg, clean_zero
+  use kinetostat_run_tally, only: trapezoid_t
+  use kinetostat_step_table, only: step_table_t
+  use kinetostat_assur_statics, only: pair_is_prismatic
+  use kinetostat_assur, only: assur_step_t
+  use kinetostat_assur_friction, only: friction_step_t
+  use kinetostat_assur_deck, only: assur_deck_t, assur_phi1_deg
+  implicit none
+  private
+  public :: assur_csv_columns, assur_csv_values, assur_pair_prismatic, assur_row, assur_row_size, pair_turns, &
+    crank_length
+  public :: friction_csv_columns, friction_csv_values, friction_work, friction_integrals, friction_summary, &
+    friction_row_size
+
+  !> A run spanning at least 360 deg minus this covers a whole turn of the input, deg.
+  real(wp), parameter :: whole_turn_tol = 1.0e-9_wp
+  !> An efficiency within this of 0 is roundoff (A_loss = A_driver: the loads do no net work).
+  real(wp), parameter :: eta_roundoff = 1.0e-12_wp
+
+contains
+
+  !> Number of friction values of a row (friction_csv_columns).
+  pure integer function friction_row_size(deck)
+    !> Validated deck.
+    type(assur_deck_t), intent(in) :: deck
+    integer :: ip
+    friction_row_size = 4
+    do ip = 1, size(deck%friction)
+      if (deck%friction(ip)%f > 0.0_wp) friction_row_size = friction_row_size + 1
+    end do
+  end function friction_row_size
+
+  !> Friction columns after M1: M1_0 (M1 without friction), P_loss_<pair> for every pair with
+  !> friction, P_loss, eta_defined, eta.
+  pure function friction_csv_columns(deck) result(cols)
+    !> Validated deck.
+    type(assur_deck_t), intent(in) :: deck
+    character(len=24), allocatable :: cols(:)
+    integer :: ip
+    if (deck%mech%drive_dyad > 0) then
+      cols = [character(len=24) :: "F_drive_0"]
+    else
+      cols = [character(len=24) :: "M1_0"]
+    end if
+    do ip = 1, size(deck%friction)
+      if (deck%friction(ip)%f > 0.0_wp) cols = [character(len=24) :: cols, "P_loss_"//trim(deck%pair_name(ip))]
+    end do
+    cols = [character(len=24) :: cols, "P_loss", "eta_defined", "eta"]
+  end function friction_csv_columns
+
+  !> The friction values of one step, in the order of friction_csv_columns. The instantaneous
+  !> efficiency eta = 1 - R/(M1*s) (R: loss per radian of the input, s: its motion sign) is
+  !> defined where the driver delivers power (M1*s > 0; at rest: virtual power); elsewhere
+  !> eta_defined = 0 and eta = 0.
+  pure function friction_csv_values(deck, s, fs) result(v)
+    !> Validated deck.
+    type(assur_deck_t), intent(in) :: deck
+    !> One step with friction.
+    type(assur_step_t), intent(in) :: s
+    !> Its friction results.
+    type(friction_step_t), intent(in) :: fs
+    real(wp), allocatable :: v(:)
+    real(wp) :: driver, mfloor, eta
+    integer :: ip
+    ! M1_0 below the roundoff floor of M1 (see assur_csv_values) is 0, as M1 would be
+    mfloor = 0.0_wp
+    do ip = 1, size(s%f, 2)
+      mfloor = max(mfloor, magnitude(s%f(:, ip)))
+    end do
+    mfloor = noise_rel * mfloor * crank_length(deck)
+    v = [fs%driver_frictionless]
+    if (deck%mech%drive_dyad > 0) then
+      if (abs(v(1)) <= noise_rel * max(mfloor / crank_length(deck), abs(s%f_drive))) v(1) = 0.0_wp
+    else if (abs(v(1)) <= mfloor) then
+      v(1) = 0.0_wp
+    end if
+    do ip = 1, size(deck%friction)
+      if (deck%friction(ip)%f > 0.0_wp) v = [v, fs%loss(ip)]
+    end do
+    driver = fs%driver_rate * fs%motion_sign
+    if (driver > 0.0_wp) then
+      eta = 1.0_wp - fs%rate_total / driver
+      if (abs(eta) <= eta_roundoff) eta = 0.0_wp
+      v = [v, fs%p_loss, 1.0_wp, eta]
+    else
+      v = [v, fs%p_loss, 0.0_wp, 0.0_wp]
+    end if
+    v = clean_zero(v)
+  end function friction_csv_values
+
+  !> Work of the driver and work lost to friction over the run, J: trapezoidal sums over the
+  !> steps of M1*s and of the loss per radian R against |d phi1|.
+  pure subroutine friction_work(deck, steps, fsteps, a_driver, a_loss)
+    !> Validated deck.
+    type(assur_deck_t), intent(in) :: deck
+    !> The steps with friction.
+    type(assur_step_t), intent(in) :: steps(:)
+    !> Their friction results.
+    type(friction_step_t), intent(in) :: fsteps(:)
+    !> Work of the driver, J.
+    real(wp), intent(out) :: a_driver
+    !> Work lost to friction, J.
+    real(wp), intent(out) :: a_loss
+    type(trapezoid_t) :: works(2)
+    real(wp) :: x(size(steps)), y(size(steps))
+    integer :: i
+    works = friction_integrals(deck, fsteps(1:size(steps)), 1)
+    do i = 1, 2
+      x = works(i)%x
+      y = works(i)%y
+      call works(i)%feed(x, y)
+    end do
+    a_driver = works(1)%area
+    a_loss = works(2)%area
+  end subroutine friction_work
+
+  !> The works of steps step1 .. step1 + size(fsteps) - 1 (a block of the run) as points
+  !> to integrate over |d phi1| in rad: [the driver's power per radian, the loss per radian]
+  !> against phi1 (deg). Fed in row order (kinetostat_run_tally), they give the work of the
+  !> driver and the work lost to friction, J.
+  pure function friction_integrals(deck, fsteps, step1) result(works)
+    !> Validated deck.
+    type(assur_deck_t), intent(in) :: deck
+    !> Friction results of the block's steps.
+    type(friction_step_t), intent(in) :: fsteps(:)
+    !> Step number of fsteps(1).
+    integer, intent(in) :: step1
+    type(trapezoid_t) :: works(2)
+    integer :: i
+    do i = 1, 2
+      works(i)%unit = deg_to_rad
+      allocate (works(i)%x(size(fsteps)), works(i)%y(size(fsteps)))
+    end do
+    do i = 1, size(fsteps)
+      works(1)%x(i) = assur_phi1_deg(deck, step1 - 1 + i)
+      works(1)%y(i) = fsteps(i)%driver_rate * fsteps(i)%motion_sign
+      works(2)%y(i) = fsteps(i)%rate_total
+    end do
+    works(2)%x = works(1)%x
+  end function friction_integrals
+
+  !> The summary block of a run with friction: works, cycle efficiency and what it means.
+  pure subroutine friction_summary(deck, a_driver, a_loss, table)
+    type(assur_deck_t), intent(in) :: deck
+    !> Work of the driver over the run, J.
+    real(wp), intent(in) :: a_driver
+    !> Work lost to friction over the run, J.
+    real(wp), intent(in) :: a_loss
+    type(step_table_t), intent(inout) :: table
+    real(wp) :: span, eta
+    span = abs(assur_phi1_deg(deck, deck%n) - assur_phi1_deg(deck, 1))
+    table%summary_heading = "WORK AND EFFICIENCY WITH FRICTION"
+    call table%summary_real("RUN SPAN", span, "deg")
+    call table%summary_real("A_DRIVER", clean_zero(a_driver), "J")
+    call table%summary_real("A_LOSS", clean_zero(a_loss), "J")
+    if (a_driver > 0.0_wp) then
+      eta = 1.0_wp - a_loss / a_driver
+      if (abs(eta) <= eta_roundoff) eta = 0.0_wp
+      call table%summary_real("ETA", eta, "")
+      if (span >= 360.0_wp - whole_turn_tol) then
+        call table%summary_line("ETA = 1 - A_LOSS/A_DRIVER OVER A WHOLE TURN OF THE INPUT: THE CYCLE EFFICIENCY")
+      else
+        call table%summary_line("ETA = 1 - A_LOSS/A_DRIVER OVER LESS THAN A WHOLE TURN: NOT THE CYCLE EFFICIENCY")
+        call table%summary_line("(THE DRIVER'S WORK ALSO CHANGES THE KINETIC AND POTENTIAL ENERGY)")
+      end if
+    else
+      call table%summary_line("ETA NOT DEFINED: THE DRIVER DELIVERS NO NET WORK OVER THE RUN")
+    end if
+  end subroutine friction_summary
+
+  !> Whether result pair `ip` (dyad pairs then crank pin) is prismatic.
+  pure logical function assur_pair_prismatic(deck, ip)
+    !> Validated deck.
+    type(assur_deck_t), intent(in) :: deck
+    !> Pair result index.
+    integer, intent(in) :: ip
+    integer :: d
+    d = (ip - 1) / 3 + 1
+    if (d > size(deck%mech%dyads)) then
+      assur_pair_prismatic = .false.
+    else
+      assur_pair_prismatic = pair_is_prismatic(deck%mech%dyads(d)%geom%kind, ip - 3 * (d - 1))
+    end if
+  end function assur_pair_prismatic
+
+  !> CSV column names: phi1; per pair F, FG, [Fx, Fy], [FN, FM for prismatic pairs]; M1, or
+  !> with a linear actuator as driver F_drive, stroke, stroke_v, stroke_a.
+  pure function assur_csv_columns(deck) result(cols)
+    !> Validated deck.
+    type(assur_deck_t), intent(in) :: deck
+    character(len=24), allocatable :: cols(:)
+    integer :: ip
+    cols = [character(len=24) :: "phi1"]
+    do ip = 1, size(deck%pair_name)
+      cols = [character(len=24) :: cols, trim(deck%pair_name(ip)), trim(deck%pair_name(ip))//"G"]
+      if (deck%components) cols = [character(len=24) :: cols, trim(deck%pair_name(ip))//"x", &
+                                   trim(deck%pair_name(ip))//"y"]
+      if (assur_pair_prismatic(deck, ip)) cols = [character(len=24) :: cols, trim(deck%pair_name(ip))//"N", &
+                                                  trim(deck%pair_name(ip))//"M"]
+    end do
+    if (deck%mech%drive_dyad == 0) then
+      cols = [character(len=24) :: cols, "M1"]
+    else
+      cols = [character(len=24) :: cols, "F_drive", "stroke", "stroke_v", "stroke_a"]
+    end if
+  end function assur_csv_columns
+
+  !> The CSV row of one step, in the order of assur_csv_columns (see assur_row).
+  pure function assur_csv_values(deck, s) result(v)
+    !> Validated deck.
+    type(assur_deck_t), intent(in) :: deck
+    !> One step.
+    type(assur_step_t), intent(in) :: s
+    real(wp), allocatable :: v(:)
+    allocate (v(assur_row_size(deck)))
+    call assur_row(deck, s, crank_length(deck), pair_turns(deck), v)
+  end function assur_csv_values
+
+  !> cos and sin of the angle each pair's force is turned by into its reporting frame
+  !> (-pair_frame), as rotate computes them: (1, ip) cos, (2, ip) sin. (Not vectorised: the
+  !> vector cos and sin of libmvec may differ from the scalar ones in the last bit.)
+  pure function pair_turns(deck) result(turn)
+    !> Validated deck.
+    type(assur_deck_t), intent(in) :: deck
+    real(wp), allocatable :: turn(:, :)
+    integer :: ip
+    allocate (turn(2, size(deck%pair_frame)))
+    ! scalar: libmvec's vector cos/sin move the last digit of the pair-frame components (assur_sixbar.csv)
+    !GCC$ novector
+    do ip = 1, size(deck%pair_frame)
+      turn(1, ip) = cos(-deck%pair_frame(ip))
+      turn(2, ip) = sin(-deck%pair_frame(ip))
+    end do
+  end function pair_turns
+
+  !> Number of values of a row of assur_csv_columns.
+  pure integer function assur_row_size(deck)
+    !> Validated deck.
+    type(assur_deck_t), intent(in) :: deck
+    integer :: ip
+    assur_row_size = 1
+    do ip = 1, size(deck%pair_name)
+      assur_row_size = assur_row_size + 2
+      if (deck%components) assur_row_size = assur_row_size + 2
+      if (assur_pair_prismatic(deck, ip)) assur_row_size = assur_row_size + 2
+    end do
+    if (deck%mech%drive_dyad == 0) then
+      assur_row_size = assur_row_size + 1
+    else
+      assur_row_size = assur_row_size + 4
+    end if
+  end function assur_row_size
+
+  !> The CSV row `v` of one step, in the order of assur_csv_columns. Forces below `noise_rel`
+  !> times the step's largest force (moments below that force times the crank's length
+  !> scale) are roundoff: printed as 0 with angle 0; so are single components below that floor
+  !> (a force along an axis gets exactly that axis' angle).
+  pure subroutine assur_row(deck, s, crank, turn, v)
+    !> Validated deck.
+    type(assur_deck_t), intent(in) :: deck
+    !> One step.
+    type(assur_step_t), intent(in) :: s
+    !> The crank's length scale (crank_length), m.
+    real(wp), intent(in) :: crank
+    !> The pairs' turns into their frames (pair_turns).
+    real(wp), intent(in) :: turn(:, :)
+    !> The row (assur_row_size values).
+    real(wp), intent(out) :: v(:)
+    real(wp) :: floor, f(2), mfloor, nn, mm, f_mag
+    integer :: ip, np, pos
+    np = size(s%f, 2)
+    ! every pair's |F| first, kept in its magnitude's place until the pair is written
+    floor = 0.0_wp
+    pos = 1
+    do ip = 1, np
+      f_mag = magnitude(s%f(:, ip))
+      v(pos + 1) = f_mag
+      floor = max(floor, f_mag)
+      pos = pos + 2
+      if (deck%components) pos = pos + 2
+      if (assur_pair_prismatic(deck, ip)) pos = pos + 2
+    end do
+    floor = noise_rel * floor
+    mfloor = floor * crank
+    v(1) = s%phi1 * rad_to_deg
+    pos = 1
+    do ip = 1, np
+      ! snap_noise(pair_sign * f, floor), its length known (hypot ignores the signs)
+      if (v(pos + 1) <= floor) then
+        f = 0.0_wp
+      else
+        f = deck%pair_sign(ip) * s%f(:, ip)
+      end if
+      ! rotate(f, -deck%pair_frame(ip))
+      f = [turn(1, ip) * f(1) - turn(2, ip) * f(2), turn(2, ip) * f(1) + turn(1, ip) * f(2)]
+      where (abs(f) <= floor) f = 0.0_wp
+      v(pos + 1) = magnitude(f)
+      if (deck%angles_signed) then
+        v(pos + 2) = angle_180_deg(f)
+      else
+        v(pos + 2) = angle_360_deg(f)
+      end if
+      pos = pos + 2
+      if (deck%components) then
+        v(pos + 1:pos + 2) = f
+        pos = pos + 2
+      end if
+      if (assur_pair_prismatic(deck, ip)) then
+        nn = deck%pair_sign(ip) * s%n(ip)
+        mm = deck%pair_sign(ip) * s%m(ip)
+        if (abs(nn) <= floor) nn = 0.0_wp
+        if (abs(mm) <= mfloor) mm = 0.0_wp
+        v(pos + 1) = nn
+        v(pos + 2) = mm
+        pos = pos + 2
+      end if
+    end do
+    if (deck%mech%drive_dyad == 0) then
+      v(pos + 1) = s%m1
+      if (abs(v(pos + 1)) <= mfloor) v(pos + 1) = 0.0_wp
+    else
+      v(pos + 1:pos + 4) = [s%f_drive, s%stroke, s%stroke_v, s%stroke_a]
+      if (abs(v(pos + 1)) <= floor) v(pos + 1) = 0.0_wp
+    end if
+    do ip = 1, size(v)
+      v(ip) = clean_zero(v(ip))
+    end do
+  end subroutine assur_row
+
+  !> Length scale of the crank: its farthest attachment point from the pivot (1 m if none).
+  pure real(wp) function crank_length(deck)
+    type(assur_deck_t), intent(in) :: deck
+    integer :: d, q
+    crank_length = 0.0_wp
+    do d = 1, size(deck%mech%dyads)
+      do q = 1, 2
+        if (deck%mech%dyads(d)%on(q) == 1) crank_length = max(crank_length, magnitude(deck%mech%dyads(d)%at(:, q)))
+      end do
+    end do
+    if (.not. crank_length > 0.0_wp) crank_length = 1.0_wp
+  end function crank_length
+
+end module kinetostat_assur_columns
