@@ -20,7 +20,7 @@ module kinetostat_sheets
   use kinetostat_output, only: write_output_file
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_summary, only: column_stats_t, column_stats
-  use kinetostat_run, only: run_options_t, run_mechanism, format_summary, format_svg, format_dxf, format_plans, &
+  use kinetostat_run, only: run_options_t, block_rows, run_mechanism, format_summary, format_svg, format_dxf, format_plans, &
     course_dynamics, course_none, course_kinematics, course_kinetostatics
   use kinetostat_registry, only: create_mechanism, known_kinds
   use kinetostat_override, only: override_t
@@ -118,6 +118,9 @@ contains
       o = options
       o%format = format_summary
       o%at_step = 0
+      ! its table is read row by row: one block of the default size, whatever the maintainers'
+      ! KINETOSTAT_BLOCK_ROWS (the sheets do not depend on it)
+      o%block_rows = block_rows
       call run_one(path, o, table, scratch, error)
       if (allocated(error)) return
       k_at = options%at_step
@@ -259,6 +262,9 @@ contains
     o%kinematics = .true.
     o%at_step = 0
     o%course_sheet = course_none
+    ! these runs' tables are read row by row: one block of the default size, whatever the
+    ! maintainers' KINETOSTAT_BLOCK_ROWS (the sheets do not depend on it)
+    o%block_rows = block_rows
     call run_one(path, o, base, scratch, error, mech)
     if (allocated(error)) return
     call mech%sketch(topo)

@@ -77,3 +77,18 @@ done
 # an empty value is the default
 KINETOSTAT_BLOCK_ROWS= "$KINETOSTAT" data/pr3207.nml >"$cli_tmp/blk.out" 2>&1 && pass ||
   fail block-rows-empty "an empty KINETOSTAT_BLOCK_ROWS is not the default: $(head -c 300 "$cli_tmp/blk.out")"
+
+# kinetostat sheets: the course's sheets (their default position, the plan of positions, the
+# dynamics over the cycle) do not depend on the block size either: a four-stroke engine with
+# its flywheel in blocks of 7 rows against the default, every SVG and DXF byte for byte (a
+# PDF carries its time of making)
+blk_sheets_deck=data/assur_engine_flywheel.nml
+rm -rf "$cli_tmp/blk_sheets0" "$cli_tmp/blk_sheets7"
+"$KINETOSTAT" sheets "$blk_sheets_deck" -o "$cli_tmp/blk_sheets0" >"$cli_tmp/blk.out" 2>&1; rc0=$?
+KINETOSTAT_BLOCK_ROWS=7 "$KINETOSTAT" sheets "$blk_sheets_deck" -o "$cli_tmp/blk_sheets7" >>"$cli_tmp/blk.out" 2>&1; rcb=$?
+if [ "$rc0" -eq 0 ] && [ "$rcb" -eq 0 ] && [ -s "$cli_tmp/blk_sheets0/kinematics.svg" ] &&
+  diff -r -x "*.pdf" "$cli_tmp/blk_sheets0" "$cli_tmp/blk_sheets7" >"$cli_tmp/blk.diff" 2>&1; then
+  pass
+else
+  fail block-rows-sheets "exit $rc0 / $rcb (blocks of 7): $(head -c 300 "$cli_tmp/blk.out") $(head -c 300 "$cli_tmp/blk.diff")"
+fi
