@@ -86,11 +86,11 @@ TIMEOUT = 10
 #: TIMEOUT of wall time). Still a hang detector.
 LONG_TIMEOUT = 60
 #: Bundled decks whose every run takes over a second of processor time in the debug build (the
-#: &linkage engine's steady cycle over 361 poses: 1.2 s, against 0.05 s at most for the other
-#: decks), and the factor by which the sampled gate (--every K > 1) takes fewer of the decks of
+#: &linkage engine's steady cycles: over 361 poses 1.2 s, the engine's two turns 0.7 s, against
+#: 0.05 s at most for the other decks), and the factor by which the sampled gate (--every K > 1) takes fewer of the decks of
 #: their value classes: every (K * factor)-th. Their decks run with LONG_TIMEOUT (on a loaded
 #: machine a run took over 10 s of wall time).
-HEAVY_DECKS = {"linkage_pr3207_flywheel": 3}
+HEAVY_DECKS = {"linkage_pr3207_flywheel": 3, "linkage_engine_flywheel": 3}
 #: Every how-many-th deck also gets the -o FILE run (all of them: 1).
 OUTFILE_EVERY = 1
 CHECKS = ["exit-code", "non-finite", "error-shape", "no-leftover", "warning-shape", "runtime-text", "valid-output",
