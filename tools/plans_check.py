@@ -67,23 +67,14 @@
       (q1, -q2) / mu (q the image turned by the sheet's rotation; DXF y = paper height - y;
       0.01 mm), the lever (layer LEVER) and every unit's force polygon (POLYGONS) have as many
       arrowheads (SOLID) as vectors drawn (1 mm and longer).
-  plans_check.py batch JOBS OUTDIR
-      Several of the calls above in one process (the suite's many decks without a Python
-      start each): JOBS has one call a line, LABEL and the call's arguments separated by
-      tabs; each call's output goes to OUTDIR/LABEL.out and a line "LABEL<tab>STATUS" (its
-      exit status) to standard output.
   plans_check.py groups PLANS.json... [--structure FORMULA]
       the groups (units of the structure) are the same at every step given, and with
       --structure equal the structure formula `kinetostat structure` prints (the units'
       labels, "I(0,1) -> II(2,3)").
 Exit status 0 when every check passes, 1 otherwise.
 """
-import contextlib
 import csv
-import io
 import json
-import os
-import traceback
 import math
 import re
 import sys
@@ -326,44 +317,18 @@ def dxf_main(argv):
         sys.exit(1)
 
 
-def batch_main(argv):
-    """One call of this checker a line of JOBS (LABEL, then its arguments, tab-separated):
-    its output to OUTDIR/LABEL.out, "LABEL<tab>STATUS" to standard output."""
-    jobs_path, out_dir = argv
-    with open(jobs_path, encoding="utf-8") as jobs:
-        for line in jobs:
-            label, *args = line.rstrip("\n").split("\t")
-            text = io.StringIO()
-            status = 0
-            try:
-                with contextlib.redirect_stdout(text):
-                    main(args)
-            except SystemExit as stop:
-                status = stop.code if isinstance(stop.code, int) else 1
-            except Exception:  # a checker's crash is that call's failure, not the batch's
-                text.write(traceback.format_exc())
-                status = 1
-            with open(os.path.join(out_dir, label + ".out"), "w", encoding="utf-8") as out:
-                out.write(text.getvalue())
-            print(f"{label}\t{status}")
-
-
-def main(argv=None):
-    argv = sys.argv[1:] if argv is None else argv
-    if argv[0:1] == ["batch"] and len(argv) == 3:
-        batch_main(argv[1:])
+def main():
+    if sys.argv[1:2] == ["groups"]:
+        groups_main(sys.argv[2:])
         return
-    if argv[0:1] == ["groups"]:
-        groups_main(argv[1:])
+    if sys.argv[1:2] == ["sheet"] and len(sys.argv) == 5:
+        sheet_main(sys.argv[2:])
         return
-    if argv[0:1] == ["sheet"] and len(argv) == 4:
-        sheet_main(argv[1:])
+    if sys.argv[1:2] == ["dxf"] and len(sys.argv) == 4:
+        dxf_main(sys.argv[2:])
         return
-    if argv[0:1] == ["dxf"] and len(argv) == 3:
-        dxf_main(argv[1:])
-        return
-    args = [a for a in argv if not a.startswith("--")]
-    flags = {a for a in argv if a.startswith("--")}
+    args = [a for a in sys.argv[1:] if not a.startswith("--")]
+    flags = {a for a in sys.argv[1:] if a.startswith("--")}
     if len(args) < 2:
         print(__doc__)
         sys.exit(1)

@@ -11,27 +11,6 @@
 plans_check="$root/tools/plans_check.py"
 plans_dir="$cli_tmp/plans"
 mkdir -p "$plans_dir"
-: >"$plans_dir/jobs.tsv"
-# plans_job LABEL ARGS...: a call of tools/plans_check.py, run below with the others in one
-# Python process (LABEL names the check; no argument holds a tab)
-plans_job() {
-  local IFS=$'\t'
-  printf '%s\n' "$*" >>"$plans_dir/jobs.tsv"
-}
-# plans_batch: the calls noted so far, in one Python process (tools/plans_check.py batch): a
-# check each, its output on failure (20 lines)
-plans_batch() {
-  local label status
-  mkdir -p "$plans_dir/jobs"
-  python3 "$plans_check" batch "$plans_dir/jobs.tsv" "$plans_dir/jobs" >"$plans_dir/jobs.status" 2>"$cli_tmp/check.out" \
-    || fail plans-batch "$(head -20 "$cli_tmp/check.out")"
-  while IFS= read -r label; do
-    status=$(awk -F '\t' -v l="$label" '$1 == l { print $2 }' "$plans_dir/jobs.status")
-    if [ "$status" = 0 ]; then pass
-    else fail "$label" "${status:-no status}: $(head -20 "$plans_dir/jobs/$label.out" 2>/dev/null)"; fi
-  done < <(cut -f1 "$plans_dir/jobs.tsv")
-  : >"$plans_dir/jobs.tsv"
-}
 # sheet_lines SVG: its texts, one a line, the typeset runs joined (F<tspan>21</tspan> -> F21)
 sheet_lines() {
   python3 -c 'import html, re, signal, sys
@@ -75,7 +54,7 @@ for spec in assur_fourbar:lever,polygons assur_fourbar_global:lever,polygons ass
     cp "$out" "$plans_dir/$name.$k.json"; step_files+=("$plans_dir/$name.$k.json")
   done
   # shellcheck disable=SC2086  # flags is a word list
-  plans_job "plans-$name-$(echo $ks | tr ' ' ',')" "${step_files[@]}" "$plans_dir/$name.csv" $flags
+  check_job plans_check "plans-$name-$(echo $ks | tr ' ' ',')" "${step_files[@]}" "$plans_dir/$name.csv" $flags
   if [ -n "$rest" ]; then
     run_ks "data/$name.nml" --format json --at "$rest" --plans
     cp "$out" "$plans_dir/$name.$rest.json"; step_files+=("$plans_dir/$name.$rest.json")
@@ -85,15 +64,15 @@ for spec in assur_fourbar:lever,polygons assur_fourbar_global:lever,polygons ass
   case "$name" in
     class3|fivebar|linkage_*) structure=(--structure "$("$KINETOSTAT" structure "data/$name.nml" | sed -n 's/^ STRUCTURE FORMULA: //p')") ;;
   esac
-  plans_job "plans-groups-$name" groups "${step_files[@]}" "${structure[@]}"
+  check_job plans_check "plans-groups-$name" groups "${step_files[@]}" "${structure[@]}"
 done
 # the generic decks' groups (derived from the topology) equal the structural analysis of the
 # same mechanism written as a &linkage deck
 for twin in assur_fourbar:linkage_fourbar assur_slider_crank:linkage_slider_crank; do
-  plans_job "plans-groups-twin-${twin%%:*}" groups "$plans_dir/${twin%%:*}".*.json \
+  check_job plans_check "plans-groups-twin-${twin%%:*}" groups "$plans_dir/${twin%%:*}".*.json \
     --structure "$("$KINETOSTAT" structure "data/${twin#*:}.nml" | sed -n 's/^ STRUCTURE FORMULA: //p')"
 done
-plans_batch
+check_batch plans_check
 # the five-bar's two drives: an input link's polygon each, M4 (not the lever's unknown) a
 # load of the lever; PR 3050's cylinder and rod one input unit at every step, at rest too
 python3 -c 'import json, sys; d = json.load(open(sys.argv[1]))
@@ -313,9 +292,9 @@ for json in "$plans_dir"/*.json; do
   case "$name:$k" in pr3050:1|assur_pr3050*:1|pr3050:"$steps"|assur_pr3050*:"$steps") continue ;; esac
   run_ks "data/$name.nml" --format plans --at "$k"
   cp "$out" "$plans_dir/$name.$k.svg"
-  plans_job "plans-sheet-$name-$k" sheet "$plans_dir/$name.$k.svg" "$json" "$plans_dir/$name.csv"
+  check_job plans_check "plans-sheet-$name-$k" sheet "$plans_dir/$name.$k.svg" "$json" "$plans_dir/$name.csv"
 done
-plans_batch
+check_batch plans_check
 for spec in sixbar_example:1 pr3207:3 pr3050:3 fivebar:2 class3:19 friction_slider_crank:19; do
   name=${spec%%:*}; k=${spec#*:}
   run_ks "data/$name.nml" --format dxf --at "$k" --plans
