@@ -167,7 +167,7 @@ contains
       type(pair_geometry_t) :: g
       type(tooth_outline_t) :: tooth
       real(wp), allocatable :: path(:, :)
-      real(wp) :: r, worst, drawn, cut, rr, worst_flank
+      real(wp) :: r(24), cut(24), worst, drawn, rr, worst_flank
       integer :: k
       character(len=40) :: name
       g = pair_geometry(p, x1, x2)
@@ -176,10 +176,12 @@ contains
       path = reshape([tooth%fillet, tooth%flank], [2, size(tooth%fillet, 2) + size(tooth%flank, 2)])
       worst = 0.0_wp
       do k = 1, 24
-        r = tooth%rf + (tooth%r_end - tooth%rf) * (real(k, wp) - 0.5_wp) / 24.0_wp
-        drawn = half_angle(path, r)
-        cut = rack_cut(p, g, i, r)
-        worst = max(worst, abs(drawn - cut) * r)
+        r(k) = tooth%rf + (tooth%r_end - tooth%rf) * (real(k, wp) - 0.5_wp) / 24.0_wp
+      end do
+      cut = rack_cut(p, g, i, r)
+      do k = 1, 24
+        drawn = half_angle(path, r(k))
+        worst = max(worst, abs(drawn - cut(k)) * r(k))
       end do
       call check_close(t, "tooth drawn as the rack cuts it, "//trim(name)//" (mm along the arc)", 0.0_wp, worst, &
         0.0_wp, 1.0e-3_wp * p%m)
@@ -209,19 +211,20 @@ contains
         psi = min(psi, atan2(q(2), q(1)))
       end do
     end function half_angle
-    !> The half angle of the tooth the rack leaves at radius r: the rack's right side (its
-    !> straight flank down to the rounding, the rounding, the tip line's half) as a polyline of
-    !> 161 points, moved by u in 6001 steps, each position turned into the gear's frame; the
-    !> largest angle it reaches right of the space's axis at radius r is the space's half,
-    !> pi/z less it the tooth's.
-    pure real(wp) function rack_cut(p, g, i, r) result(psi)
+    !> The half angle of the tooth the rack leaves at each radius r(m): the rack's right side
+    !> (its straight flank down to the rounding, the rounding, the tip line's half) as a
+    !> polyline of 161 points, moved by u in 6001 steps, each position turned into the gear's
+    !> frame (once for all the radii); the largest angle it reaches right of the space's axis
+    !> at radius r(m) is the space's half, pi/z less it the tooth's.
+    pure function rack_cut(p, g, i, r) result(psi)
       type(gear_pair_t), intent(in) :: p
       type(pair_geometry_t), intent(in) :: g
       integer, intent(in) :: i
-      real(wp), intent(in) :: r
-      real(wp) :: rp, rho, y_ref, y_tip, yc, xc, y_tan, top, side(2, 161), q(2, 161), u, span, best, a, z
-      real(wp) :: r1, r2, s, e(2), delta
-      integer :: k, j
+      real(wp), intent(in) :: r(:)
+      real(wp) :: psi(size(r))
+      real(wp) :: rp, rho, y_ref, y_tip, yc, xc, y_tan, top, side(2, 161), q(2, 161), u, span, best(size(r)), a, z
+      real(wp) :: r1, r2, s, e(2), delta, radius(161)
+      integer :: k, j, m
       z = real(merge(p%z1, p%z2, i == 1), wp)
       rp = 0.5_wp * g%d(i)
       rho = rack_tip_radius(p)
@@ -247,15 +250,18 @@ contains
         do k = 1, 161
           e = side(:, k) + [u, 0.0_wp]
           q(:, k) = [cos(u / rp) * e(1) - sin(u / rp) * e(2), sin(u / rp) * e(1) + cos(u / rp) * e(2)]
+          radius(k) = norm2(q(:, k))
         end do
-        do k = 1, 160
-          r1 = norm2(q(:, k))
-          r2 = norm2(q(:, k + 1))
-          if ((r1 - r) * (r2 - r) > 0.0_wp .or. r1 == r2) cycle
-          s = (r - r1) / (r2 - r1)
-          e = q(:, k) + s * (q(:, k + 1) - q(:, k))
-          delta = 0.5_wp * pi - atan2(e(2), e(1))
-          if (abs(delta) < 1.5_wp * pi / z) best = max(best, delta)
+        do m = 1, size(r)
+          do k = 1, 160
+            r1 = radius(k)
+            r2 = radius(k + 1)
+            if ((r1 - r(m)) * (r2 - r(m)) > 0.0_wp .or. r1 == r2) cycle
+            s = (r(m) - r1) / (r2 - r1)
+            e = q(:, k) + s * (q(:, k + 1) - q(:, k))
+            delta = 0.5_wp * pi - atan2(e(2), e(1))
+            if (abs(delta) < 1.5_wp * pi / z) best(m) = max(best(m), delta)
+          end do
         end do
       end do
       psi = pi / z - best

@@ -48,7 +48,10 @@ checks valid-output and expected-error:
 --every K runs every K-th deck of the fixed set (by bundled deck, then by class) and every
 deck of the classes of strings and the special runs (tools/test: --every 5; tools/test --long
 the whole set); with K > 1 the CSV is written with -o only (the same CSV as on standard output,
-checked the same way), with K = 1 to standard output too. --seed N changes the random choices (tools/test --long runs the fixed set, then a
+checked the same way), and a deck runs one way: the table or the CSV with -o in turn along the
+fixed order (each class meets both; --modes lists them), the table only for a class with an
+expected error and no outputs to check; with K = 1 every deck runs every way, the CSV to
+standard output too. --seed N changes the random choices (tools/test --long runs the fixed set, then a
 second run with a seed from the date, printed, so that a failure can be reproduced); --scale K draws K times
 as many mutations per deck (--scale 14: about 12 000 decks); --budget S stops starting new
 decks after S seconds (the decks not run are counted as skipped, never as failed).
@@ -83,11 +86,11 @@ TIMEOUT = 10
 #: TIMEOUT of wall time). Still a hang detector.
 LONG_TIMEOUT = 60
 #: Bundled decks whose every run takes over a second of processor time in the debug build (the
-#: &linkage engine's steady cycle over 361 poses: 1.2 s, against 0.05 s at most for the other
-#: decks), and the factor by which the sampled gate (--every K > 1) takes fewer of the decks of
+#: &linkage engine's steady cycles: over 361 poses 1.2 s, the engine's two turns 0.7 s, against
+#: 0.05 s at most for the other decks), and the factor by which the sampled gate (--every K > 1) takes fewer of the decks of
 #: their value classes: every (K * factor)-th. Their decks run with LONG_TIMEOUT (on a loaded
 #: machine a run took over 10 s of wall time).
-HEAVY_DECKS = {"linkage_pr3207_flywheel": 3}
+HEAVY_DECKS = {"linkage_pr3207_flywheel": 3, "linkage_engine_flywheel": 3}
 #: Every how-many-th deck also gets the -o FILE run (all of them: 1).
 OUTFILE_EVERY = 1
 CHECKS = ["exit-code", "non-finite", "error-shape", "no-leftover", "warning-shape", "runtime-text", "valid-output",
@@ -470,6 +473,32 @@ def heavy_factor(name):
     return next((f for base, f in HEAVY_DECKS.items() if name.startswith(base + "_")), 1)
 
 
+def one_mode_of(i, every, name, extra):
+    """The one run ("table" or "-o") of the i-th derived deck in the sampled gate (every > 1):
+    in turn along the sampled decks; the table (whose exit and message expected-error checks)
+    for a deck of a class with an expected result and no outputs to check (fraction, group,
+    capacity, cp1251); None (every run) for the full set, the decks whose outputs with hostile
+    strings are checked and the special runs."""
+    if every == 1 or extra is None or "formats" in SPECS.get(name, {}):
+        return None
+    if name in SPECS:
+        return "table"
+    return "table" if (i // every) % 2 == 0 else "-o"
+
+
+def list_modes(jobs):
+    """Prints, per class of mutation, how many of the jobs run the table, the CSV with -o, both."""
+    count = {}
+    for job in jobs:
+        name, one_mode = job[1], job[9]
+        kind = name.rsplit("_", 1)[-1] if job[4] is not None else "special"
+        count.setdefault(kind, {"table": 0, "-o": 0, "both": 0})[one_mode or "both"] += 1
+    for kind in sorted(count):
+        c = count[kind]
+        print("%-14s table %4d  -o %4d  both %4d" % (kind, c["table"], c["-o"], c["both"]))
+    return 0
+
+
 def timeout_of(name):
     """Wall-time limit of one run of a derived deck, s."""
     return LONG_TIMEOUT if "_long_" in name or heavy_factor(name) > 1 else TIMEOUT
@@ -477,7 +506,7 @@ def timeout_of(name):
 
 def check_deck(job):
     """Runs one deck; returns (name, description, [(check, mode, detail)], selfcheck_warning)."""
-    binary, name, desc, data, extra, with_file, deadline, spec, stdout_csv = job
+    binary, name, desc, data, extra, with_file, deadline, spec, stdout_csv, one_mode = job
     failures = []
     selfcheck = False
     table_run = None
@@ -503,11 +532,13 @@ def check_deck(job):
                 modes.append(("csv", [file_name, "--format", "csv"] + extra))
             if with_file:
                 modes.append(("-o", [file_name, "--format", "csv", "-o", "out.csv"] + extra))
+            if one_mode:
+                modes = [m for m in modes if m[0] == one_mode]
         for mode, args in modes:
             rc, out, err = run(binary, args, work, stdin_endless, timeout_of(name))
             if extra is None and rc != 2:
                 failures.append(("exit-code", mode, "endless input: exit %s, expected 2 (the deck limit)" % rc))
-            if mode == "table":
+            if mode in ("table", one_mode):
                 table_run = (rc, err)
             file_text = ""
             if mode == "-o":
@@ -617,6 +648,8 @@ def main():
     ap.add_argument("--every", type=int, default=1,
                     help="run every K-th derived deck (in the fixed order: by bundled deck, then by class) "
                          "and every deck of the classes of strings and the special runs (1: all)")
+    ap.add_argument("--modes", action="store_true",
+                    help="list, per class of mutation, the decks run as a table, as CSV with -o, and both; run nothing")
     ap.add_argument("--budget", type=float, default=0.0,
                     help="seconds after which no new deck is started (0: no limit); decks not run are skipped")
     args = ap.parse_args()
@@ -642,9 +675,15 @@ def main():
     # the sampled gate (--every K > 1) writes the CSV with -o only: the same CSV as on
     # standard output, checked the same way (non-finite, error shape, runtime text) and for
     # leftovers; --every 1 runs both
-    jobs = [(binary, name, desc, data, extra, i % OUTFILE_EVERY == 0, deadline, SPECS.get(name), every == 1)
+    # ... and runs an ordinary derived deck one way, the table or the CSV with -o, in turn
+    # along the fixed order (every class meets both), a deck of a class with an expected error
+    # the table only (one_mode_of; tools/mutate_decks.py --every 5 --modes lists them)
+    jobs = [(binary, name, desc, data, extra, i % OUTFILE_EVERY == 0, deadline, SPECS.get(name), every == 1,
+             one_mode_of(i, every, name, extra))
             for i, (name, desc, data, extra) in enumerate(decks) if args.only in name
             and (i % (every * (heavy_factor(name) if every > 1 else 1)) == 0 or name in SPECS or extra is None)]
+    if args.modes:
+        return list_modes(jobs)
     if args.seed is not None:
         # a randomized run under a time budget runs the decks in a random order, so that
         # every class has its chance before the budget ends
@@ -704,7 +743,7 @@ def main():
     if named + unnamed:
         print("named: %d of %d input errors (exit 2) of single-variable mutations name the variable (%.0f %%)" % (
             named, named + unnamed, 100.0 * named / (named + unnamed)))
-    runs = sum((1 if j[4] is None else 1 + (j[8] or not j[5])) + j[5] for j in jobs) - 3 * skipped
+    runs = sum(1 if j[9] else (1 if j[4] is None else 1 + (j[8] or not j[5])) + j[5] for j in jobs) - 3 * skipped
     print("mutation: %d decks, %d runs, %d decks failed (%s); %d self-check warnings (not counted)%s" % (
         len(jobs) - skipped, runs, failed_decks,
         ", ".join("%s %d" % (c, failed_by_check[c]) for c in CHECKS), len(selfcheck_decks),

@@ -109,13 +109,37 @@ deck_with() {
   echo "$cli_tmp/$name.nml"
 }
 
+# check_job CHECKER LABEL ARGS...: a call `python3 tools/CHECKER.py ARGS...` (no argument
+# holding a tab), noted to run with the others of CHECKER in one Python process by
+# check_batch CHECKER: one check per call, LABEL its name, its first 20 lines of output on
+# failure (tools/batch_check.py).
+check_job() {
+  local checker="$1" IFS=$'\t'; shift
+  printf '%s\n' "$*" >>"$cli_tmp/batch.$checker.tsv"
+}
+check_batch() {
+  local checker="$1" jobs="$cli_tmp/batch.$1.tsv" label status
+  [ -s "$jobs" ] || { fail "batch-$checker" "no calls noted"; return; }
+  rm -rf "$cli_tmp/batch.$checker"
+  python3 "$root/tools/batch_check.py" "$checker" "$jobs" "$cli_tmp/batch.$checker" \
+    >"$cli_tmp/batch.$checker.status" 2>"$cli_tmp/batch.$checker.err" \
+    || fail "batch-$checker" "$(head -20 "$cli_tmp/batch.$checker.err")"
+  # the calls' statuses in the order of the calls (a label may repeat: the same call twice)
+  while IFS=$'\t' read -r label status; do
+    if [ "$status" = 0 ]; then pass
+    else fail "$label" "exit ${status:-none}: $(head -20 "$cli_tmp/batch.$checker/$label.out" 2>/dev/null)"; fi
+  done < <(paste <(cut -f1 "$jobs") <(cut -f2 "$cli_tmp/batch.$checker.status"))
+  rm -f "$jobs"
+}
+
 # heavy_deck NAME: true in the default suite (not with tools/test --long) for a bundled deck
-# whose every run takes over a second of processor time in the debug build (the &linkage
-# engine's steady cycle over 361 poses, 1.2 s; every other deck 0.05 s at most): the scripts
-# that run each bundled deck in several ways run it in one of them by default.
+# whose every run takes about a second of processor time in the debug build (the &linkage
+# engine's steady cycles: over 361 poses 1.2 s, the engine's over 145 poses of two turns
+# 0.7 s; every other deck 0.05 s at most): the scripts that run each bundled deck in several
+# ways run it in one of them by default.
 heavy_deck() {
   [ "${KINETOSTAT_LONG:-0}" != 1 ] || return 1
-  case "$1" in linkage_pr3207_flywheel) return 0 ;; esac
+  case "$1" in linkage_pr3207_flywheel | linkage_engine_flywheel) return 0 ;; esac
   return 1
 }
 

@@ -25,7 +25,8 @@ for deck in data/*.nml; do
   for lang in en ru; do
     # the slowest sheets (0.4-2.3 s each in the debug build) in Russian with --long only
     case "${KINETOSTAT_LONG:-0}:$lang:$name" in
-      0:ru:sixbar_flywheel | 0:ru:assur_pr3207_flywheel | 0:ru:friction_fourbar_resist | 0:ru:linkage_pr3207_flywheel) ;;
+      0:ru:sixbar_flywheel | 0:ru:assur_pr3207_flywheel | 0:ru:friction_fourbar_resist | 0:ru:linkage_pr3207_flywheel | \
+      0:ru:linkage_engine_flywheel) ;;
       *)
         if [ "$lang" = en ]; then from_golden "$name" svg --format svg; else run_ks "$deck" --format svg --lang "$lang"; fi
         if [ "$rc" -ne 0 ]; then fail "legible-runs-$name-$lang" "rc=$rc: $(head -c 300 "$err")"; continue; fi

@@ -54,8 +54,7 @@ for spec in assur_fourbar:lever,polygons assur_fourbar_global:lever,polygons ass
     cp "$out" "$plans_dir/$name.$k.json"; step_files+=("$plans_dir/$name.$k.json")
   done
   # shellcheck disable=SC2086  # flags is a word list
-  python3 "$plans_check" "${step_files[@]}" "$plans_dir/$name.csv" $flags >"$cli_tmp/check.out" 2>&1 \
-    && pass || fail "plans-$name-$(echo $ks | tr ' ' ',')" "$(head -20 "$cli_tmp/check.out")"
+  check_job plans_check "plans-$name-$(echo $ks | tr ' ' ',')" "${step_files[@]}" "$plans_dir/$name.csv" $flags
   if [ -n "$rest" ]; then
     run_ks "data/$name.nml" --format json --at "$rest" --plans
     cp "$out" "$plans_dir/$name.$rest.json"; step_files+=("$plans_dir/$name.$rest.json")
@@ -65,16 +64,15 @@ for spec in assur_fourbar:lever,polygons assur_fourbar_global:lever,polygons ass
   case "$name" in
     class3|fivebar|linkage_*) structure=(--structure "$("$KINETOSTAT" structure "data/$name.nml" | sed -n 's/^ STRUCTURE FORMULA: //p')") ;;
   esac
-  python3 "$plans_check" groups "${step_files[@]}" "${structure[@]}" >"$cli_tmp/check.out" 2>&1 \
-    && pass || fail "plans-groups-$name" "$(head -5 "$cli_tmp/check.out")"
+  check_job plans_check "plans-groups-$name" groups "${step_files[@]}" "${structure[@]}"
 done
 # the generic decks' groups (derived from the topology) equal the structural analysis of the
 # same mechanism written as a &linkage deck
 for twin in assur_fourbar:linkage_fourbar assur_slider_crank:linkage_slider_crank; do
-  python3 "$plans_check" groups "$plans_dir/${twin%%:*}".*.json \
-    --structure "$("$KINETOSTAT" structure "data/${twin#*:}.nml" | sed -n 's/^ STRUCTURE FORMULA: //p')" \
-    >"$cli_tmp/check.out" 2>&1 && pass || fail "plans-groups-twin-${twin%%:*}" "$(head -5 "$cli_tmp/check.out")"
+  check_job plans_check "plans-groups-twin-${twin%%:*}" groups "$plans_dir/${twin%%:*}".*.json \
+    --structure "$("$KINETOSTAT" structure "data/${twin#*:}.nml" | sed -n 's/^ STRUCTURE FORMULA: //p')"
 done
+check_batch plans_check
 # the five-bar's two drives: an input link's polygon each, M4 (not the lever's unknown) a
 # load of the lever; PR 3050's cylinder and rod one input unit at every step, at rest too
 python3 -c 'import json, sys; d = json.load(open(sys.argv[1]))
@@ -294,9 +292,9 @@ for json in "$plans_dir"/*.json; do
   case "$name:$k" in pr3050:1|assur_pr3050*:1|pr3050:"$steps"|assur_pr3050*:"$steps") continue ;; esac
   run_ks "data/$name.nml" --format plans --at "$k"
   cp "$out" "$plans_dir/$name.$k.svg"
-  python3 "$plans_check" sheet "$plans_dir/$name.$k.svg" "$json" "$plans_dir/$name.csv" >"$cli_tmp/check.out" 2>&1 \
-    && pass || fail "plans-sheet-$name-$k" "$(head -8 "$cli_tmp/check.out")"
+  check_job plans_check "plans-sheet-$name-$k" sheet "$plans_dir/$name.$k.svg" "$json" "$plans_dir/$name.csv"
 done
+check_batch plans_check
 for spec in sixbar_example:1 pr3207:3 pr3050:3 fivebar:2 class3:19 friction_slider_crank:19; do
   name=${spec%%:*}; k=${spec#*:}
   run_ks "data/$name.nml" --format dxf --at "$k" --plans
