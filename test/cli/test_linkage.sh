@@ -32,7 +32,7 @@ lk_structure linkage-structure-ru-rrr data/fivebar.nml ru "II(2,3)  ДИАДА (
 for deck in data/class3.nml data/fivebar.nml data/linkage_slider_crank.nml docs/examples/excavator.nml; do
   run_ks structure "$deck" --lang ru
   if [ "$rc" -eq 0 ] && ! grep -qE "DECK:|TITLE:" "$out" \
-    && ! sed -E 's/\b[IVX]+\b//g' "$out" | grep -qE "[A-Za-z]{2,}"; then pass
+    && ! grep -qE "[A-Za-z]{2,}" <(sed -E 's/\b[IVX]+\b//g' "$out"); then pass
   else fail "linkage-structure-ru-words-$(basename "$deck" .nml)" "exit $rc or Latin words: $(head -c 400 "$out")"; fi
 done
 
