@@ -33,6 +33,8 @@ module kinetostat_plans_sheet
   real(wp), parameter :: lever_arrow = 24.0_wp
   !> A panel's heading band at its top and its scale line at its bottom, mm.
   real(wp), parameter :: panel_head = 8.0_wp, panel_foot = 9.0_wp
+  !> The smallest box (width, height) a group drawn apart gets, else it is not drawn, mm.
+  real(wp), parameter :: min_apart(2) = [70.0_wp, 100.0_wp]
 
   !> The sheet's panels (x0, y0, x1, y1; mm) and scales.
   type :: plans_sheet_t
@@ -173,20 +175,26 @@ contains
           cell(1) = sheet%link_boxes(3, e)
         end if
       else if (sheet%groups_apart) then
-        ! the group apart: the left part of the cell, its arms' table under it
+        ! the group apart: the left part of the cell, its arms' table under it; not when the
+        ! cell is too small for it (A3, A4: the polygon keeps its cell)
         call group_apart_drawing(drawing, plans, e, link, names, inner)
         sheet%link_boxes(:, e) = [cell(1), cell(2) + 4.0_wp, cell(1) + 0.5_wp * (cell(3) - cell(1)), &
           cell(4) - row_pitch * (size(link%forces) + size(link%moments) + size(names) + 1)]
-        fmax = 0.0_wp
-        do i = 1, size(link%forces)
-          fmax = max(fmax, norm2(link%forces(i)%f))
-        end do
-        associate (box => sheet%link_boxes(:, e))
-          sheet%link_force_scale(e) = 0.25_wp * min(box(3) - box(1), box(4) - box(2)) / max(fmax, tiny(1.0_wp))
-          call fit_mechanism_view(link, box, 4.0_wp, sheet%link_views(e), force_scale=sheet%link_force_scale(e))
-        end associate
-        sheet%mu_link(e) = sheet%link_views(e)%mu_l()
-        cell(1) = sheet%link_boxes(3, e)
+        if (sheet%link_boxes(3, e) - sheet%link_boxes(1, e) < min_apart(1) .or. &
+          sheet%link_boxes(4, e) - sheet%link_boxes(2, e) < min_apart(2)) then
+          sheet%link_boxes(:, e) = 0.0_wp
+        else
+          fmax = 0.0_wp
+          do i = 1, size(link%forces)
+            fmax = max(fmax, norm2(link%forces(i)%f))
+          end do
+          associate (box => sheet%link_boxes(:, e))
+            sheet%link_force_scale(e) = 0.25_wp * min(box(3) - box(1), box(4) - box(2)) / max(fmax, tiny(1.0_wp))
+            call fit_mechanism_view(link, box, 4.0_wp, sheet%link_views(e), force_scale=sheet%link_force_scale(e))
+          end associate
+          sheet%mu_link(e) = sheet%link_views(e)%mu_l()
+          cell(1) = sheet%link_boxes(3, e)
+        end if
       end if
       call polygon_tips(plans%group_polygons(e)%vectors, tips)
       do i = 1, size(tips, 2)
