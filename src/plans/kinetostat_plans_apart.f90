@@ -93,7 +93,7 @@ contains
     links = trim(plans%group_polygons(e)%link)
     do j = 1, size(drawing%bodies)
       if (.not. in_group(links, drawing%bodies(j)%name)) cycle
-      if (.not. any(names == drawing%bodies(j)%name)) names = [names, drawing%bodies(j)%name]
+      if (.not. any(names == drawing%bodies(j)%name)) names = [character(len=16) :: names, drawing%bodies(j)%name]
       link%bodies = [link%bodies, drawing%bodies(j)]
       do q = 1, size(drawing%bodies(j)%points)
         p = 0
