@@ -342,6 +342,10 @@ contains
       text = "группа"
     case ("input link")
       text = "входное звено"
+    case ("through the joint")
+      text = "через шарнир"
+    case ("the group apart")
+      text = "группа отдельно"
     case ("known forces first, then the unknown reactions")
       text = "сначала известные силы, затем искомые реакции"
     case ("Mechanism")

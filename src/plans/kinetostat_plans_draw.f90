@@ -38,6 +38,7 @@ module kinetostat_plans_draw
   use kinetostat_mechanism_sheet, only: fitted_size
   use kinetostat_plans_base, only: plans_t, plan_vector_t, plan_equation_t, lever_load_t, force_polygon_t, &
     component_normal, component_tangential, component_coriolis, component_relative, component_reaction, load_moment, perp
+  use kinetostat_plans_apart, only: draw_group_apart
   use kinetostat_plans_sheet, only: plans_sheet_t, turn, chain_tips, polygon_tips, panel_inner, panel_head, &
     input_link_drawing, fit_kinematic_plans
   implicit none
@@ -582,7 +583,12 @@ contains
       associate (poly => plans%group_polygons(e))
         cell = geo%cells(:, e)
         area = cell + [1.0_wp, 5.0_wp, -1.0_wp, -5.0_wp]
-        if (geo%mu_link(e) > 0.0_wp) then
+        if (geo%mu_link(e) > 0.0_wp .and. .not. poly%input) then
+          call draw_group_apart(sheet, drawing, plans, e, geo%link_views(e), geo%link_boxes(:, e), &
+            geo%link_force_scale(e), lang)
+          call sheet%set_layer(layer_polygons)
+          area(1) = geo%link_boxes(3, e)
+        else if (geo%mu_link(e) > 0.0_wp) then
           call draw_input_link(sheet, geo, drawing, plans, e, lang)
           call sheet%set_layer(layer_polygons)
           area(1) = geo%link_boxes(3, e)

@@ -19,6 +19,7 @@ module kinetostat_plans_sheet
   use kinetostat_scales, only: round_scale
   use kinetostat_sheet, only: paper_t, iso_paper
   use kinetostat_mechanism_view, only: mechanism_view_t, fit_mechanism_view
+  use kinetostat_plans_apart, only: group_apart_drawing, row_pitch
   use kinetostat_plans_base, only: plans_t, plan_vector_t, plan_equation_t, load_moment, cross, link_index, &
     owner, pivot_of, guide_link, component_normal, component_tangential, component_reaction
   implicit none
@@ -32,6 +33,8 @@ module kinetostat_plans_sheet
   real(wp), parameter :: lever_arrow = 24.0_wp
   !> A panel's heading band at its top and its scale line at its bottom, mm.
   real(wp), parameter :: panel_head = 8.0_wp, panel_foot = 9.0_wp
+  !> The smallest box (width, height) a group drawn apart gets, else it is not drawn, mm.
+  real(wp), parameter :: min_apart(2) = [70.0_wp, 100.0_wp]
 
   !> The sheet's panels (x0, y0, x1, y1; mm) and scales.
   type :: plans_sheet_t
@@ -59,6 +62,9 @@ module kinetostat_plans_sheet
     real(wp), allocatable :: link_force_scale(:)
     !> The sheet's rotation against the position frame, rad.
     real(wp) :: rotation = 0.0_wp
+    !> The course sheet "kinetostatics": each Assur group drawn apart in the left part of its
+    !> polygon's cell (its box in `link_boxes`, its view in `link_views`, mu_link > 0).
+    logical :: groups_apart = .false.
     !> The balancing effort as measured on the sheet: from the lever and from the force
     !> polygons (N*m or N), their difference in % of the larger; `compared` false when the
     !> sheet gives no such comparison (the lever not drawn, no input link's polygon).
@@ -82,6 +88,8 @@ contains
     real(wp) :: fmax, r, b(4), cell(4), quarter, fx, fy
     type(drawing_t) :: link
     integer :: i, e, n, columns, rows, pivot
+    character(len=16), allocatable :: names(:)
+    integer, allocatable :: inner(:)
     r = drawing%view_angle
     quarter = 0.5_wp * pi
     sheet%rotation = r
@@ -90,6 +98,8 @@ contains
     ! table left of the title block
     sheet%paper = iso_paper("A2", .true.)
     if (present(paper_name)) sheet%paper = iso_paper(paper_name, .true.)
+    ! the course sheet (a paper named) draws the groups apart; --format plans does not
+    sheet%groups_apart = present(paper_name)
     b = sheet%paper%inside()
     ! the panels' sizes grow (or shrink) with the paper from A2's (569 x 410 mm inside the
     ! frame); the header band, the title block's 57 mm and the tables' widths stay
@@ -160,6 +170,27 @@ contains
             sheet%link_force_scale(e) = 0.25_wp * min(box(3) - box(1), box(4) - box(2)) / max(fmax, tiny(1.0_wp))
             call fit_mechanism_view(link, box + [0.0_wp, 4.0_wp, 0.0_wp, 0.0_wp], 3.0_wp, sheet%link_views(e), &
               force_scale=sheet%link_force_scale(e))
+          end associate
+          sheet%mu_link(e) = sheet%link_views(e)%mu_l()
+          cell(1) = sheet%link_boxes(3, e)
+        end if
+      else if (sheet%groups_apart) then
+        ! the group apart: the left part of the cell, its arms' table under it; not when the
+        ! cell is too small for it (A3, A4: the polygon keeps its cell)
+        call group_apart_drawing(drawing, plans, e, link, names, inner)
+        sheet%link_boxes(:, e) = [cell(1), cell(2) + 4.0_wp, cell(1) + 0.5_wp * (cell(3) - cell(1)), &
+          cell(4) - row_pitch * (size(link%forces) + size(link%moments) + size(names) + 1)]
+        if (sheet%link_boxes(3, e) - sheet%link_boxes(1, e) < min_apart(1) .or. &
+          sheet%link_boxes(4, e) - sheet%link_boxes(2, e) < min_apart(2)) then
+          sheet%link_boxes(:, e) = 0.0_wp
+        else
+          fmax = 0.0_wp
+          do i = 1, size(link%forces)
+            fmax = max(fmax, norm2(link%forces(i)%f))
+          end do
+          associate (box => sheet%link_boxes(:, e))
+            sheet%link_force_scale(e) = 0.25_wp * min(box(3) - box(1), box(4) - box(2)) / max(fmax, tiny(1.0_wp))
+            call fit_mechanism_view(link, box, 4.0_wp, sheet%link_views(e), force_scale=sheet%link_force_scale(e))
           end associate
           sheet%mu_link(e) = sheet%link_views(e)%mu_l()
           cell(1) = sheet%link_boxes(3, e)

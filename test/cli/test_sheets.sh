@@ -70,6 +70,64 @@ for deck in $sheets_decks; do
   done
 done
 
+# each Assur group drawn apart on the kinetostatics sheet: every link with one inner joint
+# gets its moment equation about it (the arms h in mm at the drawing's μl, the forces in N, the
+# couples in N·m): R^τ from the drawing's numbers = the τ drawn (the polygon's) within 0.5 %,
+# and the polygon's = the run's (--format json --plans at the sheet's step) within 1e-9 N
+sheets_moments() {  # SVG [JSON]: "ok N" or "differs: ..."
+  python3 - "$@" <<'PY'
+import json, re, sys
+text = open(sys.argv[1], encoding="utf-8").read()
+run = {}
+if len(sys.argv) > 2:
+    for poly in json.load(open(sys.argv[2]))["force_plans"]:
+        for v in poly["vectors"]:
+            run[v["name"]] = (v["x"] ** 2 + v["y"] ** 2) ** 0.5
+n, bad = 0, []
+for eq in re.finditer(r'<g class="moment-equation" data-link="([^"]*)" data-about="([^"]*)" data-mu-l="([^"]*)">(.*?)</g>\s*</g>', text, re.S):
+    mu = float(eq.group(3))
+    rest, tau = 0.0, None
+    for arm in re.finditer(r'<g class="arm"([^>]*)>', eq.group(4)):
+        a = dict(re.findall(r'(data-[\w-]+)="([^"]*)"', arm.group(1)))
+        if "data-moment" in a:
+            rest += float(a["data-moment"])
+        elif "^τ" in a["data-force-name"]:
+            tau = a
+        else:
+            rest += float(a["data-sense"]) * float(a["data-force"]) * float(a["data-h"]) * mu
+    if tau is None:
+        continue
+    n += 1
+    drawn = float(tau["data-force"])
+    computed = abs(rest) / (float(tau["data-h"]) * mu)
+    if abs(computed - drawn) > 5e-3 * max(drawn, 1e-9):
+        bad.append(f'{tau["data-force-name"]} about {eq.group(2)}: moment equation {computed:.6g} N, drawn {drawn:.6g} N')
+    name = tau["data-force-name"]
+    if run and abs(run.get(name, -1.0) - drawn) > 1e-9 * max(drawn, 1.0):
+        bad.append(f'{name}: drawn {drawn:.10g} N, run {run.get(name)}')
+groups = len(re.findall(r'class="group-apart"', text))
+if groups == 0:
+    bad.append("no group drawn apart")
+print(f"differs: {'; '.join(bad)}" if bad else f"ok {n} {groups}")
+PY
+}
+for case in pr3207_flywheel_en pr3207_flywheel_ru class3_en; do
+  svg="$cli_tmp/sheets_$case/kinetostatics.svg"
+  deck=${case%_*}
+  step=$(sed -n 's/.*plans, [^<]* \([0-9][0-9]*\)<\/title>.*/\1/p' "$svg" | head -1)
+  "$KINETOSTAT" "data/$deck.nml" --format json --at "$step" --plans >"$cli_tmp/apart.json" 2>/dev/null
+  verdict=$(sheets_moments "$svg" "$cli_tmp/apart.json")
+  case "$verdict" in ok*) pass ;; *) fail "sheets-groups-apart-$case" "$verdict" ;; esac
+done
+# class III: three τ found by three moment equations (links 2, 3, 4 about their joints with 5)
+verdict=$(sheets_moments "$cli_tmp/sheets_class3_en/kinetostatics.svg")
+[ "$verdict" = "ok 3 1" ] && pass || fail sheets-groups-apart-class3-tau "expected 3 moment equations with τ, got: $verdict"
+# must fail: an arm of R^τ drawn 2 % too long
+python3 -c "import re, sys; t = open(sys.argv[1], encoding='utf-8').read(); print(re.sub(r'(data-force-name=\"F21\^τ\" data-force=\"[^\"]*\" data-h=\")([^\"]*)', lambda m: m.group(1) + repr(1.02 * float(m.group(2))), t), end='')" \
+  "$cli_tmp/sheets_class3_en/kinetostatics.svg" >"$cli_tmp/apart_bad.svg"
+verdict=$(sheets_moments "$cli_tmp/apart_bad.svg")
+case "$verdict" in "differs: F21^τ about"*) pass ;; *) fail sheets-groups-apart-must-fail "a wrong arm passed: $verdict" ;; esac
+
 # the kinematics sheet's structure is kinetostat structure's (W, the formula), its output
 # link's diagrams and its values table the run's
 dir="$cli_tmp/sheets_class3_en"

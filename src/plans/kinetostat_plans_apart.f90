@@ -1,0 +1,313 @@
+!> An Assur group drawn apart, as the course draws it before the force polygon (the course
+!> sheet "kinetostatics"): the group's links at a scale of their own with their joints
+!> lettered; the loads on them (G, Φ, the external loads, the inertia couples); the unknown
+!> reactions at the outer pairs as the polygon gives them (split into τ and n where the polygon
+!> splits them, whole otherwise) at their pairs' points; and, for every link with one inner
+!> joint (a joint with another link of the group), the arm h of every force of that link about
+!> the inner joint (dashed, named h_G2, h_Φ2, h34 ...), with a table of the arms in mm at the
+!> drawing's μl. Each link's moment equation is attached to its group (data-link, data-about,
+!> data-mu-l; every arm data-force, data-h, data-sense) so that a check recomputes R^τ from the
+!> drawing's numbers.
+module kinetostat_plans_apart
+  use kinetostat_kinds, only: wp, pi
+  use kinetostat_format, only: short_number, full_number
+  use kinetostat_labels, only: word => label, unit_word => unit_symbol
+  use kinetostat_scales, only: scale_number
+  use kinetostat_sheet, only: sheet_t, entity_group, layer_polygons, layer_text
+  use kinetostat_drawing, only: drawing_t, drawing_force_t, point_pivot, point_joint
+  use kinetostat_mechanism_view, only: mechanism_view_t, draw_mechanism
+  use kinetostat_plans_base, only: plans_t
+  implicit none
+  private
+  public :: group_apart_drawing, draw_group_apart
+
+  !> An arm shorter than this on the drawing is not drawn (its force passes through the
+  !> joint), mm.
+  real(wp), parameter :: shortest = 0.5_wp
+  character(*), parameter :: arm_colour = "#555555"
+  !> Pitch of the arms' table's rows under the group, mm.
+  real(wp), parameter, public :: row_pitch = 2.7_wp
+
+contains
+
+  !> Whether `link` is one of the group's links (`links`: "2,3").
+  pure logical function in_group(links, link)
+    character(*), intent(in) :: links, link
+    in_group = index(","//trim(links)//",", ","//trim(link)//",") > 0 .and. len_trim(link) > 0
+  end function in_group
+
+  !> The link a polygon's vector acts on: G2, Phi2 -> 2; F21, F21^τ -> 2; a load by the
+  !> drawing's on_link ("" when unknown).
+  pure function acted_link(name, on_link) result(link)
+    character(*), intent(in) :: name, on_link
+    character(len=:), allocatable :: link
+    link = trim(on_link)
+    if (len(link) > 0) return
+    if (name(1:1) == "G" .and. len_trim(name) > 1) then
+      link = trim(name(2:))
+    else if (len_trim(name) > 3 .and. name(1:3) == "Phi") then
+      link = trim(name(4:))
+    else if (is_pair(name)) then
+      link = name(2:2)
+    end if
+  end function acted_link
+
+  !> Whether a name is a pair's reaction F<on><from> (its part ^τ, ^n after it).
+  pure logical function is_pair(name)
+    character(*), intent(in) :: name
+    character(len=:), allocatable :: base
+    base = pair_base(name)
+    is_pair = .false.
+    if (len(base) == 3) is_pair = base(1:1) == "F" .and. verify(base(2:3), "0123456789") == 0
+  end function is_pair
+
+  !> A reaction's name without its part: F21^τ -> F21.
+  pure function pair_base(name) result(base)
+    character(*), intent(in) :: name
+    character(len=:), allocatable :: base
+    integer :: hat
+    hat = index(name, "^")
+    if (hat > 0) then
+      base = trim(name(:hat - 1))
+    else
+      base = trim(name)
+    end if
+  end function pair_base
+
+  !> Group `e`'s links apart (points in metres, as the mechanism's drawing has them): its
+  !> bodies and points, every vector of its polygon as a force at its point (the polygon's
+  !> value), its links' moments; `inner(q)` the index in link%points of link q's only inner
+  !> joint (0: none or more than one), `names(q)` the group's links.
+  pure subroutine group_apart_drawing(drawing, plans, e, link, names, inner)
+    type(drawing_t), intent(in) :: drawing
+    type(plans_t), intent(in) :: plans
+    integer, intent(in) :: e
+    type(drawing_t), intent(out) :: link
+    character(len=16), allocatable, intent(out) :: names(:)
+    integer, allocatable, intent(out) :: inner(:)
+    character(len=:), allocatable :: links, base
+    integer :: j, q, i, p, found, shared
+    real(wp) :: at(2)
+    allocate (link%points(0), link%bodies(0), link%guides(0), link%forces(0), link%moments(0), names(0))
+    link%view_angle = drawing%view_angle
+    links = trim(plans%group_polygons(e)%link)
+    do j = 1, size(drawing%bodies)
+      if (.not. in_group(links, drawing%bodies(j)%name)) cycle
+      if (.not. any(names == drawing%bodies(j)%name)) names = [character(len=16) :: names, drawing%bodies(j)%name]
+      link%bodies = [link%bodies, drawing%bodies(j)]
+      do q = 1, size(drawing%bodies(j)%points)
+        p = 0
+        do i = 1, size(link%points)
+          if (link%points(i)%name == drawing%points(drawing%bodies(j)%points(q))%name) p = i
+        end do
+        if (p == 0) then
+          link%points = [link%points, drawing%points(drawing%bodies(j)%points(q))]
+          p = size(link%points)
+        end if
+        link%bodies(size(link%bodies))%points(q) = p
+      end do
+    end do
+    ! each link's inner joint: its point that another body of the group holds
+    allocate (inner(size(names)))
+    inner = 0
+    do q = 1, size(names)
+      shared = 0
+      do j = 1, size(link%bodies)
+        if (link%bodies(j)%name /= names(q)) cycle
+        do i = 1, size(link%bodies(j)%points)
+          p = link%bodies(j)%points(i)
+          if (held_elsewhere(p, names(q))) then
+            if (inner(q) /= p) shared = shared + 1
+            inner(q) = p
+          end if
+        end do
+      end do
+      if (shared /= 1) inner(q) = 0
+    end do
+    ! the polygon's vectors at their points
+    associate (poly => plans%group_polygons(e))
+      do j = 1, size(poly%vectors)
+        base = pair_base(poly%vectors(j)%name)
+        found = 0
+        do i = 1, size(drawing%forces)
+          if (drawing%forces(i)%name == base) found = i
+          if (found == 0 .and. is_pair(base)) then
+            if (drawing%forces(i)%name == "F"//base(3:3)//base(2:2)) found = i
+          end if
+        end do
+        if (found == 0) cycle
+        at = drawing%forces(found)%at
+        link%forces = [link%forces, drawing_force_t(poly%vectors(j)%name, drawing%forces(found)%kind, at, &
+          poly%vectors(j)%v, acted_link(poly%vectors(j)%name, drawing%forces(found)%on_link))]
+      end do
+    end associate
+    do j = 1, size(drawing%moments)
+      associate (m => drawing%moments(j))
+        do q = 1, size(names)
+          if (trim(m%on_link) == trim(names(q)) .or. m%name == "M"//trim(names(q)) .or. &
+            m%name == "MPhi"//trim(names(q))) then
+            link%moments = [link%moments, m]
+            link%moments(size(link%moments))%on_link = names(q)
+          end if
+        end do
+      end associate
+    end do
+    ! the outer joints drawn as joints (not the frame's pivots); the group shifted so that the
+    ! position frame's origin (its axes) lies on an inner joint, or on its first point
+    where (link%points%kind == point_pivot) link%points%kind = point_joint
+    p = 1
+    if (any(inner > 0)) p = maxval(inner)
+    if (size(link%points) == 0) return
+    at = link%points(p)%p
+    do j = 1, size(link%forces)
+      link%forces(j)%at = link%forces(j)%at - at
+    end do
+    do j = 1, size(link%moments)
+      link%moments(j)%at = link%moments(j)%at - at
+    end do
+    do j = 1, size(link%points)
+      link%points(j)%p = link%points(j)%p - at
+    end do
+  contains
+    pure logical function held_elsewhere(p, name)
+      integer, intent(in) :: p
+      character(*), intent(in) :: name
+      integer :: b
+      held_elsewhere = .false.
+      do b = 1, size(link%bodies)
+        if (link%bodies(b)%name == name) cycle
+        if (any(link%bodies(b)%points == p)) held_elsewhere = .true.
+      end do
+    end function held_elsewhere
+  end subroutine group_apart_drawing
+
+  !> Group e drawn apart in `box` at `view` (forces `per_newton` mm/N), with the arms about
+  !> each link's inner joint and their table below it.
+  pure subroutine draw_group_apart(sheet, drawing, plans, e, view, box, per_newton, lang)
+    type(sheet_t), intent(inout) :: sheet
+    type(drawing_t), intent(in) :: drawing
+    type(plans_t), intent(in) :: plans
+    integer, intent(in) :: e, lang
+    type(mechanism_view_t), intent(in) :: view
+    real(wp), intent(in) :: box(4), per_newton
+    type(drawing_t) :: link
+    character(len=16), allocatable :: names(:)
+    integer, allocatable :: inner(:)
+    character(len=:), allocatable :: short, line, arm
+    character(len=80), allocatable :: rows(:)
+    real(wp) :: a(2), tail(2), tip(2), d(2), foot(2), h, sense, mu_l, area(4)
+    real(wp), allocatable :: lx(:), ly(:), lang_angle(:)
+    character(len=16), allocatable :: lname(:)
+    integer :: j, q, first
+    call group_apart_drawing(drawing, plans, e, link, names, inner)
+    mu_l = view%mu_l()
+    area = box
+    allocate (rows(0), lx(0), ly(0), lang_angle(0), lname(0))
+    call sheet%set_layer(layer_polygons)
+    ! the moment equations: the arms about each link's inner joint first (labels keep off them)
+    do q = 1, size(names)
+      if (inner(q) == 0) cycle
+      a = view%point(link%points(inner(q))%p)
+      call sheet%group("moment-equation")
+      call sheet%attach("data-link", trim(names(q)))
+      call sheet%attach("data-about", trim(link%points(inner(q))%name))
+      call sheet%attach("data-mu-l", full_number(mu_l))
+      line = "Σ M_"//trim(link%points(inner(q))%name)//"("//trim(names(q))//"):"
+      rows = [character(len=80) :: rows, line]
+      do j = 1, size(link%forces)
+        if (trim(link%forces(j)%on_link) /= trim(names(q))) cycle
+        if (norm2(link%forces(j)%f) <= 0.0_wp) cycle
+        tail = view%point(link%forces(j)%at)
+        ! the force's direction on the sheet (a unit vector; the view turns, flips y)
+        tip = view%point(link%forces(j)%at + 1.0e-3_wp * link%forces(j)%f / norm2(link%forces(j)%f))
+        d = (tip - tail) / norm2(tip - tail)
+        foot = tail + dot_product(a - tail, d) * d
+        h = norm2(foot - a)
+        ! the moment's sense about the joint, in the position frame (counterclockwise +)
+        associate (r => link%forces(j)%at - link%points(inner(q))%p, f => link%forces(j)%f)
+          sense = sign(1.0_wp, r(1) * f(2) - r(2) * f(1))
+        end associate
+        if (h < shortest) then
+          sense = 0.0_wp
+          h = 0.0_wp
+        end if
+        arm = arm_name(trim(link%forces(j)%name), lang)
+        call sheet%group("arm")
+        call sheet%attach("data-arm", arm)
+        call sheet%attach("data-force-name", trim(link%forces(j)%name))
+        call sheet%attach("data-force", full_number(norm2(link%forces(j)%f)))
+        call sheet%attach("data-h", full_number(h))
+        call sheet%attach("data-sense", full_number(sense))
+        if (h >= shortest) then
+          call sheet%line(a(1), a(2), foot(1), foot(2), stroke=arm_colour, width=0.15_wp, dash="1 0.8")
+          call sheet%line(tail(1), tail(2), foot(1), foot(2), stroke=arm_colour, width=0.1_wp, dash="0.4 0.6")
+          lx = [lx, 0.5_wp * (a(1) + foot(1))]
+          ly = [ly, 0.5_wp * (a(2) + foot(2))]
+          lang_angle = [lang_angle, atan2(foot(2) - a(2), foot(1) - a(1)) - 0.5_wp * pi]
+          lname = [character(len=16) :: lname, arm]
+          rows = [character(len=80) :: rows, "  "//arm//" = "//short_number(h)//" "//unit_word("mm", lang)// &
+            ", "//display(trim(link%forces(j)%name), lang)//" = "//short_number(norm2(link%forces(j)%f))//" "// &
+            unit_word("N", lang)]
+        else
+          rows = [character(len=80) :: rows, "  "//display(trim(link%forces(j)%name), lang)//": "// &
+            word("through the joint", lang)]
+        end if
+        call sheet%end_group()
+      end do
+      do j = 1, size(link%moments)
+        if (trim(link%moments(j)%on_link) /= trim(names(q))) cycle
+        call sheet%group("arm")
+        call sheet%attach("data-moment-name", trim(link%moments(j)%name))
+        call sheet%attach("data-moment", full_number(link%moments(j)%value))
+        call sheet%end_group()
+        rows = [character(len=80) :: rows, "  "//display(trim(link%moments(j)%name), lang)//" = "// &
+          short_number(link%moments(j)%value)//" "//unit_word("N*m", lang)]
+      end do
+      call sheet%end_group()
+    end do
+    first = sheet%count + 1
+    call draw_mechanism(sheet, link, view, area, per_newton, short)
+    ! this drawing is not the mechanism's: its group and marks renamed (machine checks read
+    ! the joints of the mechanism's drawing)
+    do j = first, sheet%count
+      associate (item => sheet%items(j))
+        if (item%kind == entity_group) item%class = "group-apart"
+        if (.not. allocated(item%data_names)) cycle
+        where (item%data_names == "data-joint") item%data_names = "data-apart-joint"
+        where (item%data_names == "data-point") item%data_names = "data-apart-point"
+      end associate
+    end do
+    call sheet%set_layer(layer_text)
+    do j = 1, size(lname)
+      call sheet%place_label(trim(lname(j)), "num", lx(j), ly(j), lang_angle(j), area, colour=arm_colour)
+    end do
+    call sheet%text(box(1), box(2) - 1.5_wp, word("the group apart", lang)//", μl = "//scale_number(mu_l)//" "// &
+      unit_word("m", lang)//"/"//unit_word("mm", lang), "small")
+    ! the arms' table under the drawing
+    do j = 1, size(rows)
+      call sheet%text(box(1) + 1.0_wp, box(4) + row_pitch * j, trim(rows(j)), "small", size=1.8_wp)
+    end do
+  contains
+    pure function arm_name(force, lang) result(name)
+      character(*), intent(in) :: force
+      integer, intent(in) :: lang
+      character(len=:), allocatable :: name, base
+      if (is_pair(force)) then
+        base = pair_base(force)
+        name = "h"//base(2:)
+        if (index(force, "^") > 0) name = name//force(index(force, "^"):)
+      else
+        name = "h_"//display(force, lang)
+      end if
+    end function arm_name
+    !> The name as the polygon writes it (the typesetter makes Phi Φ, ^τ a superscript).
+    pure function display(name, lang) result(text)
+      character(*), intent(in) :: name
+      integer, intent(in) :: lang
+      character(len=:), allocatable :: text
+      text = trim(name)
+      if (lang < 0) text = ""
+    end function display
+  end subroutine draw_group_apart
+
+end module kinetostat_plans_apart
