@@ -16,6 +16,7 @@ module kinetostat_assur_layout
     col_moment, col_other, col_flag, col_ratio
   use kinetostat_format, only: pad_left, fixed_field
   use kinetostat_labels, only: lang_ru
+  use kinetostat_friction_block, only: write_friction_block
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_sketch, only: sketch_t
@@ -1115,65 +1116,6 @@ contains
     end if
   end subroutine echo_friction
 
-  !> The friction block of RESULTS: per step the crank angle, the power loss of every pair
-  !> with friction, P_loss, M1 without friction and the instantaneous efficiency (blank where
-  !> the driver delivers no power).
-  pure subroutine write_friction_results(deck, table, lang, out)
-    type(assur_deck_t), intent(in) :: deck
-    type(step_table_t), intent(in) :: table
-    integer, intent(in) :: lang
-    type(text_buffer_t), intent(inout) :: out
-    character(len=:), allocatable :: line1, line2, watt, unit, deg, driver, zero
-    integer :: k, c, first, last
-    if (deck%mech%drive_dyad > 0) then
-      driver = "F_DRIVE"
-      zero = "F_drive_0"
-    else
-      driver = "M1"
-      zero = "M1_0"
-    end if
-    first = table%column_index(zero)
-    last = table%column_index("eta")
-    if (table%first_block()) then
-      call out%put("")
-      if (lang == lang_ru) then
-        call out%put(" ТРЕНИЕ: ПОТЕРИ МОЩНОСТИ В ПАРАХ, "//driver// &
-                     " БЕЗ ТРЕНИЯ, МГНОВЕННЫЙ КПД")
-        watt = "Вт"
-        unit = "Н"
-        if (deck%mech%drive_dyad == 0) unit = "Н*м"
-        deg = "град"
-      else
-        call out%put(" FRICTION: POWER LOSS IN THE PAIRS, "//driver//" WITHOUT FRICTION, INSTANTANEOUS EFFICIENCY")
-        watt = "W"
-        unit = "N"
-        if (deck%mech%drive_dyad == 0) unit = "N*m"
-        deg = "deg"
-      end if
-      line1 = adjustr(pad9("PHI1"))
-      line2 = pad_left(deg, phi_width)
-      do c = first + 1, last - 3
-        line1 = line1//pad_left("P_"//table%columns(c)%name(8:), field_width)
-        line2 = line2//pad_left(watt, field_width)
-      end do
-      line1 = line1//pad_left("P_LOSS", field_width)//pad_left(upper(zero), field_width)//pad_left("ETA", field_width)
-      line2 = line2//pad_left(watt, field_width)//pad_left(unit, field_width)
-      call out%put(line1)
-      call out%put(trim(line2))
-    end if
-    do k = 1, table%row_count()
-      associate (v => table%rows(:, k))
-        line1 = fixed_field(v(1), phi_width, 2)
-        do c = first + 1, last - 2
-          line1 = line1//fixed_field(v(c), field_width, 2)
-        end do
-        line1 = line1//fixed_field(v(first), field_width, 2)
-        if (v(last - 1) > 0.0_wp) line1 = line1//fixed_field(v(last), field_width, 4)
-        call out%put(line1)
-      end associate
-    end do
-  end subroutine write_friction_results
-
   !> RESULTS: per step the crank angle, every pair's magnitude and M1; under them the angles;
   !> for prismatic pairs two more lines with the normal force and the reaction moment. With a
   !> linear actuator as driver the last column holds F_drive, stroke, stroke speed and
@@ -1335,7 +1277,15 @@ contains
       end associate
     end do
     ! the friction block follows the last row (in `later`)
-    if (self%deck%friction_on) call write_friction_results(self%deck, table, lang, later)
+    if (self%deck%friction_on) then
+      deg = "deg"
+      if (lang == lang_ru) deg = "град"
+      if (self%deck%mech%drive_dyad > 0) then
+        call write_friction_block(table, "F_drive", "N", "PHI1", deg, phi_width, lang, later)
+      else
+        call write_friction_block(table, "M1", "N*m", "PHI1", deg, phi_width, lang, later)
+      end if
+    end if
   end subroutine write_results
 
 

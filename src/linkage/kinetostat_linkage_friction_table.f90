@@ -1,7 +1,7 @@
 !> The friction of an `&linkage` deck in the step table, as `&assur` has it (docs/friction.md):
 !> the columns after the drives' efforts (<effort>_0 without friction, P_loss_<pair> for every
 !> pair with friction, P_loss, eta_defined, eta), the works over the run and the summary, the
-!> INPUT DATA lines and the friction block of RESULTS.
+!> INPUT DATA lines (the friction block of RESULTS: kinetostat_friction_block).
 module kinetostat_linkage_friction_table
   use kinetostat_kinds, only: wp, deg_to_rad
   use kinetostat_text, only: upper
@@ -17,15 +17,12 @@ module kinetostat_linkage_friction_table
   use kinetostat_linkage_deck, only: linkage_deck_t, linkage_drive_values
   implicit none
   private
-  public :: add_friction_columns, friction_values, friction_integrals, friction_summary, echo_friction, &
-    write_friction_results
+  public :: add_friction_columns, friction_values, friction_integrals, friction_summary, echo_friction
 
   !> An efficiency within this of 0 is roundoff (A_loss = A_driver).
   real(wp), parameter :: eta_roundoff = 1.0e-12_wp
   !> A run spanning this close to 360 deg is a whole turn.
   real(wp), parameter :: whole_turn_tol = 1.0e-9_wp
-  !> Widths of the friction block's first column and of the others.
-  integer, parameter :: first_width = 10, field_width = 12
 
 contains
 
@@ -155,55 +152,5 @@ contains
       call table%echo_real("  CONTACT_SPAN", deck%friction_span(k), "m")
     end if
   end subroutine echo_friction
-
-  !> The friction block of RESULTS: per step the first drive's value, the power loss of every
-  !> pair with friction, P_loss, the effort without friction and the instantaneous efficiency
-  !> (blank where the drives deliver no power).
-  pure subroutine write_friction_results(table, input, effort, lang, out)
-    type(step_table_t), intent(in) :: table
-    !> The first drive's input and effort columns (phi1, M1).
-    character(*), intent(in) :: input, effort
-    integer, intent(in) :: lang
-    type(text_buffer_t), intent(inout) :: out
-    character(len=:), allocatable :: line1, line2, watt, unit
-    integer :: k, c, first, last
-    first = table%column_index(effort//"_0")
-    last = table%column_index("eta")
-    if (table%first_block()) then
-      call out%put("")
-      if (lang == lang_ru) then
-        call out%put(" ТРЕНИЕ: ПОТЕРИ МОЩНОСТИ В ПАРАХ, "//upper(effort)// &
-                     " БЕЗ ТРЕНИЯ, МГНОВЕННЫЙ КПД")
-        watt = "Вт"
-        unit = merge("Н*м", "Н   ", table%columns(first)%unit == "N*m")
-      else
-        call out%put(" FRICTION: POWER LOSS IN THE PAIRS, "//upper(effort)//" WITHOUT FRICTION, INSTANTANEOUS EFFICIENCY")
-        watt = "W"
-        unit = table%columns(first)%unit
-      end if
-      line1 = pad_left(upper(input), first_width)
-      line2 = repeat(" ", first_width)
-      do c = first + 1, last - 3
-        line1 = line1//pad_left("P_"//table%columns(c)%name(8:), field_width)
-        line2 = line2//pad_left(watt, field_width)
-      end do
-      line1 = line1//pad_left("P_LOSS", field_width)//pad_left(upper(effort)//"_0", field_width)// &
-        pad_left("ETA", field_width)
-      line2 = line2//pad_left(watt, field_width)//pad_left(trim(unit), field_width)
-      call out%put(line1)
-      call out%put(trim(line2))
-    end if
-    do k = 1, table%row_count()
-      associate (v => table%rows(:, k))
-        line1 = fixed_field(v(1), first_width, 2)
-        do c = first + 1, last - 2
-          line1 = line1//fixed_field(v(c), field_width, 2)
-        end do
-        line1 = line1//fixed_field(v(first), field_width, 2)
-        if (v(last - 1) > 0.0_wp) line1 = line1//fixed_field(v(last), field_width, 4)
-        call out%put(line1)
-      end associate
-    end do
-  end subroutine write_friction_results
 
 end module kinetostat_linkage_friction_table

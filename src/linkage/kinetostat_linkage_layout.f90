@@ -7,7 +7,7 @@ module kinetostat_linkage_layout
   use kinetostat_kinds, only: wp, rad_to_deg, deg_to_rad, pi
   use kinetostat_deck, only: deck_source_t
   use kinetostat_error, only: error_t, out_of_memory
-  use kinetostat_text, only: int_str, real_str
+  use kinetostat_text, only: int_str, real_str, upper
   use kinetostat_noise, only: noise_rel
   use kinetostat_vec2, only: magnitude, angle_360_deg, clean_zero, rotate
   use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_component, &
@@ -15,6 +15,7 @@ module kinetostat_linkage_layout
   use kinetostat_format, only: pad_left, fixed_field
   use kinetostat_labels, only: lang_ru, lang_en
   use kinetostat_text_buffer, only: text_buffer_t
+  use kinetostat_friction_block, only: write_friction_block
   use kinetostat_escape, only: table_text
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_run_tally, only: running_max_t
@@ -26,7 +27,7 @@ module kinetostat_linkage_layout
   use kinetostat_linkage_structure, only: structure_lines
   use kinetostat_linkage_friction, only: linkage_friction_t, linkage_friction_solve
   use kinetostat_linkage_friction_table, only: add_friction_columns, friction_values, friction_integrals, &
-    friction_summary, echo_friction, write_friction_results
+    friction_summary, echo_friction
   use kinetostat_dynamics, only: cycle_t, motion_t, reduced_t, motion_at, dynamics_reduced, dynamics_steady
   use kinetostat_dynamics_deck, only: deck_cycle
   use kinetostat_dynamics_table, only: echo_dynamics, add_dynamics_columns, put_dynamics_values, &
@@ -41,6 +42,8 @@ module kinetostat_linkage_layout
 
   !> Width of the first field of the RESULTS block.
   integer, parameter :: first_width = 9
+  !> Width of the friction block's first column (the first drive's value).
+  integer, parameter :: friction_first_width = 10
   !> Width of every other field.
   integer, parameter :: field_width = 12
   !> Heading of RESULTS with --frame link.
@@ -963,7 +966,8 @@ contains
     end associate
     if (self%deck%friction_on) then
       call drive_names(self%deck%mech, 1, input, effort)
-      call write_friction_results(table, input, effort, lang, later)
+      call write_friction_block(table, effort, table%columns(table%column_index(effort//"_0"))%unit, upper(input), &
+        "", friction_first_width, lang, later)
     end if
   end subroutine write_results
 
