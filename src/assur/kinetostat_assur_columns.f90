@@ -11,17 +11,13 @@ module kinetostat_assur_columns
   use kinetostat_assur, only: assur_step_t
   use kinetostat_assur_friction, only: friction_step_t
   use kinetostat_assur_deck, only: assur_deck_t, assur_phi1_deg
+  use kinetostat_friction_block, only: friction_efficiency, eta_roundoff
   implicit none
   private
   public :: assur_csv_columns, assur_csv_values, assur_pair_prismatic, assur_row, assur_row_size, pair_turns, &
     crank_length
   public :: friction_csv_columns, friction_csv_values, friction_work, friction_integrals, friction_summary, &
     friction_row_size
-
-  !> A run spanning at least 360 deg minus this covers a whole turn of the input, deg.
-  real(wp), parameter :: whole_turn_tol = 1.0e-9_wp
-  !> An efficiency within this of 0 is roundoff (A_loss = A_driver: the loads do no net work).
-  real(wp), parameter :: eta_roundoff = 1.0e-12_wp
 
 contains
 
@@ -153,25 +149,11 @@ contains
     !> Work lost to friction over the run, J.
     real(wp), intent(in) :: a_loss
     type(step_table_t), intent(inout) :: table
-    real(wp) :: span, eta
+    real(wp) :: span
     span = abs(assur_phi1_deg(deck, deck%n) - assur_phi1_deg(deck, 1))
     table%summary_heading = "WORK AND EFFICIENCY WITH FRICTION"
     call table%summary_real("RUN SPAN", span, "deg")
-    call table%summary_real("A_DRIVER", clean_zero(a_driver), "J")
-    call table%summary_real("A_LOSS", clean_zero(a_loss), "J")
-    if (a_driver > 0.0_wp) then
-      eta = 1.0_wp - a_loss / a_driver
-      if (abs(eta) <= eta_roundoff) eta = 0.0_wp
-      call table%summary_real("ETA", eta, "")
-      if (span >= 360.0_wp - whole_turn_tol) then
-        call table%summary_line("ETA = 1 - A_LOSS/A_DRIVER OVER A WHOLE TURN OF THE INPUT: THE CYCLE EFFICIENCY")
-      else
-        call table%summary_line("ETA = 1 - A_LOSS/A_DRIVER OVER LESS THAN A WHOLE TURN: NOT THE CYCLE EFFICIENCY")
-        call table%summary_line("(THE DRIVER'S WORK ALSO CHANGES THE KINETIC AND POTENTIAL ENERGY)")
-      end if
-    else
-      call table%summary_line("ETA NOT DEFINED: THE DRIVER DELIVERS NO NET WORK OVER THE RUN")
-    end if
+    call friction_efficiency(a_driver, a_loss, span, table)
   end subroutine friction_summary
 
   !> Whether result pair `ip` (dyad pairs then crank pin) is prismatic.

@@ -15,14 +15,11 @@ module kinetostat_linkage_friction_table
   use kinetostat_linkage, only: linkage_t, linkage_step_t, pair_r
   use kinetostat_linkage_friction, only: linkage_friction_t
   use kinetostat_linkage_deck, only: linkage_deck_t, linkage_drive_values
+  use kinetostat_friction_block, only: friction_efficiency, eta_roundoff
   implicit none
   private
   public :: add_friction_columns, friction_values, friction_integrals, friction_summary, echo_friction
 
-  !> An efficiency within this of 0 is roundoff (A_loss = A_driver).
-  real(wp), parameter :: eta_roundoff = 1.0e-12_wp
-  !> A run spanning this close to 360 deg is a whole turn.
-  real(wp), parameter :: whole_turn_tol = 1.0e-9_wp
 
 contains
 
@@ -109,7 +106,7 @@ contains
     !> Work of the drives and work lost to friction over the run, J.
     real(wp), intent(in) :: a_driver, a_loss
     type(step_table_t), intent(inout) :: table
-    real(wp) :: span, eta, q1(size(deck%mech%drives)), qn(size(deck%mech%drives)), dv(size(deck%mech%drives)), &
+    real(wp) :: span, q1(size(deck%mech%drives)), qn(size(deck%mech%drives)), dv(size(deck%mech%drives)), &
       da(size(deck%mech%drives))
     logical :: turning
     call linkage_drive_values(deck, 1, q1, dv, da)
@@ -122,20 +119,10 @@ contains
     else
       call table%summary_real("RUN SPAN", span, "m")
     end if
-    call table%summary_real("A_DRIVER", clean_zero(a_driver), "J")
-    call table%summary_real("A_LOSS", clean_zero(a_loss), "J")
-    if (a_driver > 0.0_wp) then
-      eta = 1.0_wp - a_loss / a_driver
-      if (abs(eta) <= eta_roundoff) eta = 0.0_wp
-      call table%summary_real("ETA", eta, "")
-      if (turning .and. span / deg_to_rad >= 360.0_wp - whole_turn_tol) then
-        call table%summary_line("ETA = 1 - A_LOSS/A_DRIVER OVER A WHOLE TURN OF THE INPUT: THE CYCLE EFFICIENCY")
-      else
-        call table%summary_line("ETA = 1 - A_LOSS/A_DRIVER OVER LESS THAN A WHOLE TURN: NOT THE CYCLE EFFICIENCY")
-        call table%summary_line("(THE DRIVER'S WORK ALSO CHANGES THE KINETIC AND POTENTIAL ENERGY)")
-      end if
+    if (turning) then
+      call friction_efficiency(a_driver, a_loss, span / deg_to_rad, table)
     else
-      call table%summary_line("ETA NOT DEFINED: THE DRIVER DELIVERS NO NET WORK OVER THE RUN")
+      call friction_efficiency(a_driver, a_loss, 0.0_wp, table)
     end if
   end subroutine friction_summary
 

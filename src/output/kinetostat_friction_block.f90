@@ -2,7 +2,7 @@
 !> (&assur, &linkage; docs/friction.md): per step the input, the power loss of every pair with
 !> friction, P_loss, the effort without friction and the instantaneous efficiency (blank where
 !> the drive delivers no power). The columns are the step table's: <effort>_0, then
-!> P_loss_<pair> ..., P_loss, eta_defined, eta.
+!> P_loss_<pair> ..., P_loss, eta_defined, eta. Also the summary's efficiency lines.
 module kinetostat_friction_block
   use kinetostat_kinds, only: wp
   use kinetostat_text, only: upper
@@ -10,9 +10,15 @@ module kinetostat_friction_block
   use kinetostat_format, only: pad_left, fixed_field
   use kinetostat_labels, only: lang_ru
   use kinetostat_text_buffer, only: text_buffer_t
+  use kinetostat_vec2, only: clean_zero
   implicit none
   private
-  public :: write_friction_block
+  public :: write_friction_block, friction_efficiency, eta_roundoff
+
+  !> An efficiency within this of 0 is roundoff (A_loss = A_driver).
+  real(wp), parameter :: eta_roundoff = 1.0e-12_wp
+  !> A run spanning this close to 360 deg is a whole turn.
+  real(wp), parameter :: whole_turn_tol = 1.0e-9_wp
 
   !> Width of the block's columns after the first.
   integer, parameter :: field_width = 12
@@ -72,5 +78,33 @@ contains
       end associate
     end do
   end subroutine write_friction_block
+
+  !> The summary's works over the run and the efficiency with what it means: a cycle
+  !> efficiency when the input turned a whole turn, else the efficiency of the run alone.
+  pure subroutine friction_efficiency(a_driver, a_loss, turned, table)
+    !> Work of the driver over the run, J.
+    real(wp), intent(in) :: a_driver
+    !> Work lost to friction over the run, J.
+    real(wp), intent(in) :: a_loss
+    !> How far the input turned over the run, deg (0 for a sliding input).
+    real(wp), intent(in) :: turned
+    type(step_table_t), intent(inout) :: table
+    real(wp) :: eta
+    call table%summary_real("A_DRIVER", clean_zero(a_driver), "J")
+    call table%summary_real("A_LOSS", clean_zero(a_loss), "J")
+    if (a_driver > 0.0_wp) then
+      eta = 1.0_wp - a_loss / a_driver
+      if (abs(eta) <= eta_roundoff) eta = 0.0_wp
+      call table%summary_real("ETA", eta, "")
+      if (turned >= 360.0_wp - whole_turn_tol) then
+        call table%summary_line("ETA = 1 - A_LOSS/A_DRIVER OVER A WHOLE TURN OF THE INPUT: THE CYCLE EFFICIENCY")
+      else
+        call table%summary_line("ETA = 1 - A_LOSS/A_DRIVER OVER LESS THAN A WHOLE TURN: NOT THE CYCLE EFFICIENCY")
+        call table%summary_line("(THE DRIVER'S WORK ALSO CHANGES THE KINETIC AND POTENTIAL ENERGY)")
+      end if
+    else
+      call table%summary_line("ETA NOT DEFINED: THE DRIVER DELIVERS NO NET WORK OVER THE RUN")
+    end if
+  end subroutine friction_efficiency
 
 end module kinetostat_friction_block
