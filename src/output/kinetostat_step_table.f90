@@ -9,9 +9,11 @@ module kinetostat_step_table
   use kinetostat_error, only: error_t, out_of_memory
   use kinetostat_text, only: int_str, int64_str
   use kinetostat_run_tally, only: run_tally_t, dynamics_figures_t, flywheel_disc, running_max_t, column_tally_t, edge_point_t
+  use kinetostat_labels, only: label, lang_ru
   implicit none
   private
-  public :: step_table_t, column_t, echo_record_t, echo_cursor_t, remark_t, column_tally_t, edge_point_t, step_span, worst_row
+  public :: step_table_t, column_t, column, echo_record_t, echo_cursor_t, remark_t, column_tally_t, edge_point_t, &
+    step_span, worst_row
   public :: col_input_angle, col_force, col_force_angle, col_component, col_moment, col_length, &
     col_flag, col_count, col_ratio, col_other, column_kind_names
   public :: echo_real_kind, echo_int_kind, echo_logical_kind, echo_array_kind, echo_text_kind, &
@@ -62,12 +64,24 @@ module kinetostat_step_table
   !> Echo record: a line of text printed as it is (a summary line of a group of values).
   integer, parameter :: echo_line_kind = 7
 
-  !> One output column.
+  !> One output column, declared once (see `column`): its name and unit for CSV, JSON and
+  !> npy, its kind, and its heading and unit in the legacy table in English and Russian.
   type :: column_t
     !> Name as in the CSV header (e.g. "F16").
     character(len=:), allocatable :: name
     !> SI unit ("N", "deg", "N*m", "" for dimensionless).
     character(len=:), allocatable :: unit
+    !> The unit in Russian as the 1991 printouts write it ("Н", "Н*м", "град"); not allocated
+    !> when nobody declared it (the labels' dictionary has no translation of `unit`).
+    character(len=:), allocatable :: unit_ru
+    !> Heading of the column in the legacy table ("PHI1", "F16G"); "" when the legacy table
+    !> does not print the column under a heading of its own.
+    character(len=:), allocatable :: heading
+    !> The heading in Russian (the printouts' identifiers are the same: `heading` by default).
+    character(len=:), allocatable :: heading_ru
+    !> The unit under the heading when the legacy table shows another than `unit` ("deg/x1":
+    !> the angle's axis), in English and Russian; not allocated: `unit`, `unit_ru`.
+    character(len=:), allocatable :: heading_unit, heading_unit_ru
     !> Kind of quantity (col_*).
     integer :: kind = col_other
     !> False for a column shown only by the legacy table and JSON (not part of the CSV).
@@ -259,6 +273,7 @@ module kinetostat_step_table
     procedure :: shows
     procedure :: finish_columns
     procedure :: set_columns
+    procedure :: declare_columns
     procedure :: column_index
     procedure :: dynamics_records
     procedure :: shaft_inertia
@@ -337,6 +352,65 @@ contains
     last_block = self%row_offset + self%row_count() >= self%total_rows
   end function last_block
 
+  !> A column's declaration: its name and unit (CSV, JSON, npy), kind, and how the legacy
+  !> table heads it in English and Russian. The Russian unit is the labels' dictionary's
+  !> translation of `unit` unless given; the Russian heading is `heading` unless given.
+  pure function column(name, unit, kind, heading, heading_ru, unit_ru, heading_unit, heading_unit_ru, csv) result(c)
+    !> Column name (CSV header, JSON key).
+    character(*), intent(in) :: name
+    !> SI unit ("" when dimensionless).
+    character(*), intent(in) :: unit
+    !> col_* kind.
+    integer, intent(in) :: kind
+    !> Heading in the legacy table (default "": not printed under a heading of its own).
+    character(*), intent(in), optional :: heading
+    !> Heading in Russian (default `heading`).
+    character(*), intent(in), optional :: heading_ru
+    !> Unit in Russian (default: the labels' dictionary's translation of `unit`).
+    character(*), intent(in), optional :: unit_ru
+    !> Unit under the heading when not `unit` ("deg/x1"), and in Russian.
+    character(*), intent(in), optional :: heading_unit, heading_unit_ru
+    !> Whether the CSV shows it (default true).
+    logical, intent(in), optional :: csv
+    type(column_t) :: c
+    c%name = name
+    c%unit = unit
+    c%kind = kind
+    call russian_unit(c)
+    if (present(unit_ru)) c%unit_ru = unit_ru
+    c%heading = ""
+    if (present(heading)) c%heading = heading
+    c%heading_ru = c%heading
+    if (present(heading_ru)) c%heading_ru = heading_ru
+    if (present(heading_unit)) c%heading_unit = heading_unit
+    if (present(heading_unit_ru)) c%heading_unit_ru = heading_unit_ru
+    if (present(csv)) c%csv = csv
+  end function column
+
+  !> The Russian unit of column `c` from the labels' dictionary (not allocated when it has no
+  !> translation of a unit with Latin letters).
+  pure subroutine russian_unit(c)
+    type(column_t), intent(inout) :: c
+    character(len=:), allocatable :: text
+    integer :: i
+    text = label(c%unit, lang_ru)
+    if (text == c%unit) then
+      do i = 1, len(text)
+        if (index("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ", text(i:i)) > 0) return
+      end do
+    end if
+    c%unit_ru = text
+  end subroutine russian_unit
+
+  !> Append declared columns (see `column`), in order.
+  pure subroutine declare_columns(self, columns)
+    class(step_table_t), intent(inout) :: self
+    !> The declarations.
+    type(column_t), intent(in) :: columns(:)
+    if (.not. allocated(self%columns)) allocate (self%columns(0))
+    self%columns = [self%columns, columns]
+  end subroutine declare_columns
+
   !> Append one column.
   pure subroutine add_column(self, name, unit, kind, csv)
     class(step_table_t), intent(inout) :: self
@@ -348,13 +422,7 @@ contains
     integer, intent(in) :: kind
     !> Whether the CSV shows it (default true).
     logical, intent(in), optional :: csv
-    type(column_t) :: c
-    c%name = name
-    c%unit = unit
-    c%kind = kind
-    if (present(csv)) c%csv = csv
-    if (.not. allocated(self%columns)) allocate (self%columns(0))
-    self%columns = [self%columns, c]
+    call self%declare_columns([column(name, unit, kind, csv=csv)])
   end subroutine add_column
 
   !> Kinematics: the position x_<point>, y_<point> (m) of a named point (joint, centre of mass)
@@ -482,9 +550,7 @@ contains
       end do
     end if
     if (i == 0) then
-      c%name = prefix//suffix
-      c%unit = unit
-      c%kind = kind
+      c = column(prefix//suffix, unit, kind)
       c%kinematic = .not. present(link)
       c%link_axes = present(link)
       if (present(link)) c%frame_link = link
@@ -571,9 +637,7 @@ contains
     if (allocated(self%columns)) deallocate (self%columns)
     allocate (self%columns(size(names)))
     do i = 1, size(names)
-      self%columns(i)%name = trim(names(i))
-      self%columns(i)%unit = trim(units(i))
-      self%columns(i)%kind = kinds(i)
+      self%columns(i) = column(trim(names(i)), trim(units(i)), kinds(i))
     end do
   end subroutine set_columns
 

@@ -8,13 +8,13 @@ module kinetostat_pr3207_layout
   use kinetostat_error, only: error_t, out_of_memory
   use kinetostat_noise, only: noise_floor, force_columns, force_components, angles_0_360
   use kinetostat_step_table, only: worst_row
-  use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_moment, step_span
-  use kinetostat_format, only: fixed_field
+  use kinetostat_step_table, only: step_table_t, column_t, column, col_input_angle, col_moment, step_span
   use kinetostat_labels, only: lang_ru
+  use kinetostat_table_layout, only: table_field_t, field, blank_field, force_and_angle, layout_columns, &
+    put_layout_heading, put_layout_step
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_sketch, only: sketch_t
-  use kinetostat_table_writer, only: put_two_line_step
   use kinetostat_pr3207, only: pr3207_params_t, pr3207_position_t, pr3207_step_t, pr3207_step, pr3207_position, &
     pr3207_step_at
   use kinetostat_pr3207_deck, only: pr3207_deck_t, read_pr3207_deck, pr3207_template, pr3207_phi1_deg, &
@@ -28,31 +28,12 @@ module kinetostat_pr3207_layout
   use kinetostat_pr3207_dynamics, only: pr3207_cycle, pr3207_motion
   implicit none
   private
-  public :: pr3207_mechanism_t, new_pr3207, pr3207_solve, pr3207_csv_columns, pr3207_csv_values
+  public :: pr3207_mechanism_t, new_pr3207, pr3207_solve, pr3207_columns, pr3207_csv_values
 
-  !> CSV columns, in the spec's order.
-  character(*), parameter :: pr3207_csv_columns(*) = [character(len=4) :: &
-    "phi1", "F16", "F16G", "F21", "F21G", "F36", "F36G", "F34", "F34G", "F56", "F56G", "M1"]
-  !> Pair forces, in the order of the CSV columns.
+  !> Pair forces, in the order of the columns (each a magnitude and an angle column).
   character(*), parameter :: force_names(*) = [character(len=3) :: "F16", "F21", "F36", "F34", "F56"]
-  !> Units of the columns.
-  character(*), parameter :: column_units(*) = [character(len=3) :: &
-    "deg", "N", "deg", "N", "deg", "N", "deg", "N", "deg", "N", "deg", "N*m"]
-  !> Kinds of the columns.
-  integer, parameter :: column_kinds(*) = [col_input_angle, col_force, col_force_angle, col_force, col_force_angle, &
-    col_force, col_force_angle, col_force, col_force_angle, col_force, col_force_angle, col_moment]
-  !> Results header, line 1 (magnitudes) and 2 (angles), with units.
-  character(*), parameter :: header_lines(*) = [character(len=88) :: &
-    "     PHI1         F16         F21         F36         F34         F56          M1", &
-    "                 F16G        F21G        F36G        F34G        F56G", &
-    "      deg           N           N           N           N           N         N*m", &
-    "                  deg         deg         deg         deg         deg"]
-  !> The same in Russian (units as the 1991 printouts: Н, Н*м, град).
-  character(*), parameter :: header_lines_ru(*) = [character(len=100) :: &
-    "     PHI1         F16         F21         F36         F34         F56          M1", &
-    "                 F16G        F21G        F36G        F34G        F56G", &
-    "     град           Н           Н           Н           Н           Н         Н*м", &
-    "                  град        град        град        град        град"]
+  !> Number of columns of a step's row (pr3207_columns).
+  integer, parameter :: row_size = 2 + 2 * size(force_names)
 
   !> PR 3207: six-bar slotted-link (shaper) mechanism, manual section 3.
   type, extends(mechanism_t) :: pr3207_mechanism_t
@@ -174,7 +155,7 @@ contains
     end if
     if (allocated(error)) return
     if (table%first_block()) then
-      call table%set_columns(pr3207_csv_columns, column_units, column_kinds)
+      call table%declare_columns(pr3207_columns())
       call add_dynamics_columns(table, self%deck%dyn%mode)
       call put_dynamics_figures(table, self%deck%dyn%mode, self%cycle, self%deck%dyn%delta)
       table%input_column = 1
@@ -189,7 +170,7 @@ contains
     if (allocated(error)) return
     !$omp parallel do schedule(static)
     do k = 1, size(steps)
-      table%rows(1:size(pr3207_csv_columns), k) = pr3207_csv_values(steps(k), self%deck%p%l_ab)
+      table%rows(1:row_size, k) = pr3207_csv_values(steps(k), self%deck%p%l_ab)
     end do
     !$omp end parallel do
     if (allocated(motions)) then
@@ -238,6 +219,33 @@ contains
     end function peak
   end subroutine constant_speed_cost
 
+  !> The columns of a step, in the spec's order: the crank angle, every pair force's
+  !> magnitude and angle, the driving moment.
+  pure function pr3207_columns() result(cols)
+    type(column_t), allocatable :: cols(:)
+    integer :: i
+    cols = [column("phi1", "deg", col_input_angle, heading="PHI1")]
+    do i = 1, size(force_names)
+      cols = [cols, force_and_angle(trim(force_names(i)))]
+    end do
+    cols = [cols, column("M1", "N*m", col_moment, heading="M1")]
+  end function pr3207_columns
+
+  !> The RESULTS layout of a step: the crank angle (9 wide), the magnitudes and M1 (12
+  !> wide), under them the angles.
+  pure function results_layout() result(fields)
+    type(table_field_t), allocatable :: fields(:)
+    integer :: i
+    fields = [field("phi1", 9, 2)]
+    do i = 1, size(force_names)
+      fields = [fields, field(trim(force_names(i)), 12, 2)]
+    end do
+    fields = [fields, field("M1", 12, 3), blank_field(9, 2)]
+    do i = 1, size(force_names)
+      fields = [fields, field(trim(force_names(i))//"G", 12, 2, line=2)]
+    end do
+  end function results_layout
+
   !> The row of values of one step. Forces below `noise_rel` times the step's largest
   !> force (and M1 below that force times l_AB) are roundoff: printed as 0 with angle 0.
   pure function pr3207_csv_values(s, l_ab) result(v)
@@ -245,7 +253,7 @@ contains
     type(pr3207_step_t), intent(in) :: s
     !> Crank length, m (moment scale).
     real(wp), intent(in) :: l_ab
-    real(wp) :: v(size(pr3207_csv_columns))
+    real(wp) :: v(row_size)
     real(wp) :: floor, f(2, 5)
     f(:, 1) = s%f16
     f(:, 2) = s%f21
@@ -336,18 +344,16 @@ contains
     integer, intent(in) :: first, last
     type(text_buffer_t), intent(inout) :: out
     type(text_buffer_t), intent(inout) :: later
+    type(table_field_t), allocatable :: fields(:)
+    integer, allocatable :: cols(:)
     integer :: k
-    do k = 1, size(header_lines)
-      if (.not. (first == 1 .and. table%first_block())) exit
-      if (lang == lang_ru) then
-        call out%put(trim(header_lines_ru(k)))
-      else
-        call out%put(trim(header_lines(k)))
-      end if
-    end do
+    fields = results_layout()
+    ! the Russian printout's angle units stand one place right of their fields
+    if (first == 1 .and. table%first_block()) call put_layout_heading(out, table, fields, lang, .true., &
+      unit_shift=[0, merge(1, 0, lang == lang_ru)])
+    cols = layout_columns(table, fields)
     do k = first, last
-      call put_two_line_step(out, table%rows(:, k), [2, 4, 6, 8, 10], [3, 5, 7, 9, 11], &
-                             fixed_field(table%rows(12, k), 12, 3))
+      call put_layout_step(out, table%rows(:, k), fields, cols)
     end do
   end subroutine write_results
 

@@ -1,0 +1,173 @@
+!> The legacy table's RESULTS layout described by column names: a step prints as one or more
+!> lines of fixed-width fields, each field a declared column of the step table (or blank);
+!> the heading lines come from the columns' own declarations (heading, unit; English or
+!> Russian), so a layout never repeats a column's name or unit and never picks a value by
+!> its position in the row.
+module kinetostat_table_layout
+  use kinetostat_kinds, only: wp
+  use kinetostat_step_table, only: step_table_t, column_t, column, col_force, col_force_angle
+  use kinetostat_format, only: put_fixed, exp_field, pad_left
+  use kinetostat_labels, only: lang_ru
+  use kinetostat_text_buffer, only: text_buffer_t
+  implicit none
+  private
+  public :: table_field_t, field, blank_field, layout_columns, put_layout_heading, put_layout_step, heading_of, &
+    heading_unit_of, force_and_angle
+
+  !> One field of a step's lines in the legacy table.
+  type :: table_field_t
+    !> Name of the column it prints ("": a blank field, e.g. under the input angle).
+    character(len=:), allocatable :: column
+    !> Line of the step it is on (1, 2, ...).
+    integer :: line = 1
+    !> Width, characters.
+    integer :: width = 12
+    !> Decimals (fixed format) or digits after the point (exponent format).
+    integer :: decimals = 2
+    !> E format (exp_field) instead of F.
+    logical :: exponent = .false.
+  end type table_field_t
+
+contains
+
+  !> The two columns of a pair force: its magnitude `name` (N) and its angle `name`G (deg),
+  !> headed by their names; `angle_unit` is the unit under the angle's heading when not deg.
+  pure function force_and_angle(name, angle_unit) result(cols)
+    !> Force name ("F21").
+    character(*), intent(in) :: name
+    !> Heading unit of the angle ("deg/x1"), the same in both languages.
+    character(*), intent(in), optional :: angle_unit
+    type(column_t) :: cols(2)
+    cols(1) = column(name, "N", col_force, heading=name)
+    if (present(angle_unit)) then
+      cols(2) = column(name//"G", "deg", col_force_angle, heading=name//"G", heading_unit=angle_unit, &
+                       heading_unit_ru=angle_unit)
+    else
+      cols(2) = column(name//"G", "deg", col_force_angle, heading=name//"G")
+    end if
+  end function force_and_angle
+
+  !> A field printing column `name` on line `line` of a step, `width` wide with `decimals`.
+  pure function field(name, width, decimals, line, exponent) result(f)
+    !> Column name as declared.
+    character(*), intent(in) :: name
+    !> Width and decimals.
+    integer, intent(in) :: width, decimals
+    !> Line of the step (default 1).
+    integer, intent(in), optional :: line
+    !> E format (default false).
+    logical, intent(in), optional :: exponent
+    type(table_field_t) :: f
+    f%column = name
+    f%width = width
+    f%decimals = decimals
+    if (present(line)) f%line = line
+    if (present(exponent)) f%exponent = exponent
+  end function field
+
+  !> A blank field `width` wide on line `line` (under the input angle of line 1).
+  pure function blank_field(width, line) result(f)
+    integer, intent(in) :: width, line
+    type(table_field_t) :: f
+    f = field("", width, 0, line)
+  end function blank_field
+
+  !> The table's column index of every field (0 for a blank field or a column the table
+  !> does not have).
+  pure function layout_columns(table, fields) result(cols)
+    type(step_table_t), intent(in) :: table
+    type(table_field_t), intent(in) :: fields(:)
+    integer :: cols(size(fields))
+    integer :: i
+    do i = 1, size(fields)
+      cols(i) = 0
+      if (len(fields(i)%column) > 0) cols(i) = table%column_index(fields(i)%column)
+    end do
+  end function layout_columns
+
+  !> A column's heading in language `lang`.
+  pure function heading_of(c, lang) result(text)
+    type(column_t), intent(in) :: c
+    integer, intent(in) :: lang
+    character(len=:), allocatable :: text
+    text = c%heading
+    if (lang == lang_ru) text = c%heading_ru
+  end function heading_of
+
+  !> The unit under a column's heading in language `lang`.
+  pure function heading_unit_of(c, lang) result(text)
+    type(column_t), intent(in) :: c
+    integer, intent(in) :: lang
+    character(len=:), allocatable :: text
+    if (lang == lang_ru) then
+      text = c%unit_ru
+      if (allocated(c%heading_unit_ru)) text = c%heading_unit_ru
+    else
+      text = c%unit
+      if (allocated(c%heading_unit)) text = c%heading_unit
+    end if
+  end function heading_unit_of
+
+  !> The heading lines of a layout: for every line of a step the fields' headings, each
+  !> right-aligned in its field; then, with `units`, the same for their units. Trailing
+  !> blanks go.
+  pure subroutine put_layout_heading(out, table, fields, lang, units, unit_shift)
+    type(text_buffer_t), intent(inout) :: out
+    type(step_table_t), intent(in) :: table
+    type(table_field_t), intent(in) :: fields(:)
+    !> lang_en or lang_ru.
+    integer, intent(in) :: lang
+    !> Whether the unit lines follow the heading lines.
+    logical, intent(in) :: units
+    !> Blanks before the unit line of each line of a step (default none): a printout whose
+    !> units stand right of their fields keeps that, byte for byte.
+    integer, intent(in), optional :: unit_shift(:)
+    integer :: cols(size(fields))
+    character(len=:), allocatable :: line
+    integer :: pass, l, i
+    cols = layout_columns(table, fields)
+    ! pass 1: the headings; pass 2: the units
+    do pass = 1, merge(2, 1, units)
+      do l = 1, maxval(fields%line)
+        line = ""
+        if (pass == 2 .and. present(unit_shift)) line = repeat(" ", unit_shift(l))
+        do i = 1, size(fields)
+          if (fields(i)%line /= l) cycle
+          if (cols(i) == 0) then
+            line = line//repeat(" ", fields(i)%width)
+          else if (pass == 2) then
+            line = line//pad_left(heading_unit_of(table%columns(cols(i)), lang), fields(i)%width)
+          else
+            line = line//pad_left(heading_of(table%columns(cols(i)), lang), fields(i)%width)
+          end if
+        end do
+        call out%put(trim(line))
+      end do
+    end do
+  end subroutine put_layout_heading
+
+  !> The lines of one step: every field of line 1, then of line 2, ... (`cols` from
+  !> layout_columns).
+  pure subroutine put_layout_step(out, v, fields, cols)
+    type(text_buffer_t), intent(inout) :: out
+    !> The step's row.
+    real(wp), intent(in) :: v(:)
+    type(table_field_t), intent(in) :: fields(:)
+    integer, intent(in) :: cols(:)
+    integer :: l, i
+    do l = 1, maxval(fields%line)
+      do i = 1, size(fields)
+        if (fields(i)%line /= l) cycle
+        if (cols(i) == 0) then
+          call out%append(repeat(" ", fields(i)%width))
+        else if (fields(i)%exponent) then
+          call out%append(exp_field(v(cols(i)), fields(i)%width, fields(i)%decimals))
+        else
+          call put_fixed(out, v(cols(i)), fields(i)%width, fields(i)%decimals)
+        end if
+      end do
+      call out%end_line()
+    end do
+  end subroutine put_layout_step
+
+end module kinetostat_table_layout
