@@ -31,17 +31,18 @@ module kinetostat_table_layout
 contains
 
   !> The two columns of a pair force: its magnitude `name` (N) and its angle `name`G (deg),
-  !> headed by their names; `angle_unit` is the unit under the angle's heading when not deg.
-  pure function force_and_angle(name, angle_unit) result(cols)
+  !> headed by their names; `angle_unit` is the unit under the angle's heading when not deg
+  !> (and `angle_unit_ru` in Russian).
+  pure function force_and_angle(name, angle_unit, angle_unit_ru) result(cols)
     !> Force name ("F21").
     character(*), intent(in) :: name
-    !> Heading unit of the angle ("deg/x1"), the same in both languages.
-    character(*), intent(in), optional :: angle_unit
+    !> Heading unit of the angle ("deg/x1": from axis x1), in English and Russian.
+    character(*), intent(in), optional :: angle_unit, angle_unit_ru
     type(column_t) :: cols(2)
     cols(1) = column(name, "N", col_force, heading=name)
     if (present(angle_unit)) then
       cols(2) = column(name//"G", "deg", col_force_angle, heading=name//"G", heading_unit=angle_unit, &
-                       heading_unit_ru=angle_unit)
+                       heading_unit_ru=angle_unit_ru)
     else
       cols(2) = column(name//"G", "deg", col_force_angle, heading=name//"G")
     end if

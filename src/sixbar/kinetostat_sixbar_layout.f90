@@ -8,15 +8,14 @@ module kinetostat_sixbar_layout
   use kinetostat_text, only: real_str, int_str
   use kinetostat_noise, only: noise_floor, force_columns, force_components, angles_pm180
   use kinetostat_step_table, only: worst_row
-  use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_component, &
-    step_span, &
-    col_moment
-  use kinetostat_format, only: fixed_field
+  use kinetostat_step_table, only: step_table_t, column_t, column, col_input_angle, col_component, step_span, col_moment
+  use kinetostat_table_layout, only: table_field_t, field, blank_field, force_and_angle, layout_columns, &
+    put_layout_heading, put_layout_step
   use kinetostat_labels, only: lang_ru
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_sketch, only: sketch_t
-  use kinetostat_table_writer, only: put_heading, put_two_line_step
+  use kinetostat_table_writer, only: put_heading
   use kinetostat_sixbar, only: sixbar_accel, sixbar_params_t, sixbar_step_t, sixbar_step, sixbar_ok, sixbar_open1, &
     sixbar_dead1, sixbar_open2, sixbar_dead2, sixbar_frame2_to_frame1, sixbar_down1, sixbar_reduced
   use kinetostat_sixbar_deck, only: sixbar_deck_t, read_sixbar_deck, sixbar_template, sixbar_phi1_deg
@@ -28,37 +27,14 @@ module kinetostat_sixbar_layout
   use kinetostat_sixbar_dynamics, only: sixbar_source_t, sixbar_source, sixbar_cycle, sixbar_motion
   implicit none
   private
-  public :: sixbar_mechanism_t, new_sixbar, sixbar_solve, sixbar_csv_columns, sixbar_csv_values
+  public :: sixbar_mechanism_t, new_sixbar, sixbar_solve, sixbar_columns, sixbar_csv_values
 
-  !> CSV columns, in the spec's order.
-  character(*), parameter :: sixbar_csv_columns(*) = [character(len=4) :: &
-    "phi1", "F21", "F21G", "F32", "F32G", "F43", "F43G", "F45", "F45G", "F36", "F36G", &
-    "F16", "F16G", "F56", "M1"]
-  !> Pair forces with an angle column (and the guide's F56), in the order of the CSV columns.
+  !> Pair forces with an angle column (and the guide's F56), in the order of the columns.
   character(*), parameter :: force_names(*) = [character(len=3) :: "F21", "F32", "F43", "F45", "F36", "F16", "F56"]
   !> Whether a force of force_names is given in frame 2 (the others in frame 1).
   logical, parameter :: force_in_frame2(*) = [.false., .false., .true., .true., .false., .false., .true.]
-  !> Units of the columns.
-  character(*), parameter :: column_units(*) = [character(len=3) :: &
-    "deg", "N", "deg", "N", "deg", "N", "deg", "N", "deg", "N", "deg", "N", "deg", "N", "N*m"]
-  !> Kinds of the columns.
-  integer, parameter :: column_kinds(*) = [col_input_angle, col_force, col_force_angle, col_force, &
-    col_force_angle, col_force, col_force_angle, col_force, col_force_angle, col_force, col_force_angle, &
-    col_force, col_force_angle, col_component, col_moment]
-  !> Results header: appendix 2's two lines (F0 = crank angle), then units and frames.
-  character(*), parameter :: header_lines(*) = [character(len=108) :: &
-    "       F0         F21         F32         F43         F45         F36         F16         F56          M1", &
-    "                 F21G        F32G        F43G        F45G        F36G        F16G", &
-    "      deg           N           N           N           N           N           N           N         N*m", &
-    "                deg/x1      deg/x1      deg/x2      deg/x2      deg/x1      deg/x1"]
-  !> Columns of a step's first line after the crank angle: six magnitudes and F56.
-  integer, parameter :: magnitude_columns(*) = [2, 4, 6, 8, 10, 12, 14]
-  !> Columns of a step's second line: the six force angles.
-  integer, parameter :: angle_columns(*) = [3, 5, 7, 9, 11, 13]
-  !> Appendix 2's header (--lang ru): the original's eight columns and six angles, no units.
-  character(*), parameter :: header_lines_ru(*) = [character(len=96) :: &
-    "       F0         F21         F32         F43         F45         F36         F16         F56", &
-    "                 F21G        F32G        F43G        F45G        F36G        F16G"]
+  !> Number of columns of a step's row (sixbar_columns): phi1, six forces and angles, F56, M1.
+  integer, parameter :: row_size = 3 + 2 * (size(force_names) - 1)
   !> Appendix 2's dotted rule under the header and after the last row.
   character(*), parameter :: dotted_rule = " "//repeat(".", 92)
   !> Legend under the Russian table (the original printed no unit lines).
@@ -67,11 +43,8 @@ module kinetostat_sixbar_layout
       " МОДУЛИ СИЛ, Н;", &
     " F56 - СИЛА НА ПОЛЗУН 5 ОТ СТОЙКИ 6 (ПРОЕКЦИЯ НА ОСЬ Y2), Н;", &
     " F21G, F32G, F36G, F16G - УГЛЫ СИЛ ОТ ОСИ X1, F43G, F45G - ОТ ОСИ X2, град"]
-  !> The driving moment block after the Russian table (T.FTN did not print M1).
-  character(*), parameter :: moment_block_ru(*) = [character(len=64) :: &
-    "ДВИЖУЩИЙ МОМЕНТ НА КРИВОШИПЕ 1", &
-    "       F0          M1", &
-    "     град         Н*м"]
+  !> Heading of the driving moment block after the Russian table (T.FTN did not print M1).
+  character(*), parameter :: moment_heading_ru = "ДВИЖУЩИЙ МОМЕНТ НА КРИВОШИПЕ 1"
 
   !> T.FTN: six-bar crank-rocker-slider, manual section 2.
   type, extends(mechanism_t) :: sixbar_mechanism_t
@@ -232,7 +205,7 @@ contains
     end if
     if (allocated(error)) return
     if (table%first_block()) then
-      call table%set_columns(sixbar_csv_columns, column_units, column_kinds)
+      call table%declare_columns(sixbar_columns())
       call add_dynamics_columns(table, self%deck%dyn%mode)
       call put_dynamics_figures(table, self%deck%dyn%mode, self%cycle, self%deck%dyn%delta)
       table%input_column = 1
@@ -243,7 +216,7 @@ contains
     if (allocated(error)) return
     !$omp parallel do schedule(static)
     do k = 1, size(steps)
-      table%rows(1:size(sixbar_csv_columns), k) = sixbar_csv_values(steps(k), self%deck%p%l1)
+      table%rows(1:row_size, k) = sixbar_csv_values(steps(k), self%deck%p%l1)
     end do
     !$omp end parallel do
     if (allocated(motions)) then
@@ -315,6 +288,40 @@ contains
     mo%m = r(3)
   end function reduced_motion
 
+  !> The columns of a step, in the spec's order: the crank angle (appendix 2's F0), the six
+  !> pair forces' magnitudes and angles (from axis x1 or x2, as the heading's unit says), the
+  !> slider's guide force F56 along y2 and the driving moment.
+  pure function sixbar_columns() result(cols)
+    type(column_t), allocatable :: cols(:)
+    integer :: i
+    cols = [column("phi1", "deg", col_input_angle, heading="F0")]
+    do i = 1, size(force_names) - 1
+      if (force_in_frame2(i)) then
+        cols = [cols, force_and_angle(trim(force_names(i)), "deg/x2", "град/x2")]
+      else
+        cols = [cols, force_and_angle(trim(force_names(i)), "deg/x1", "град/x1")]
+      end if
+    end do
+    cols = [cols, column("F56", "N", col_component, heading="F56"), column("M1", "N*m", col_moment, heading="M1")]
+  end function sixbar_columns
+
+  !> The RESULTS layout of a step: the crank angle (9 wide), the six magnitudes and F56 (12
+  !> wide), M1 (English only: T.FTN printed it apart), under them the six angles.
+  pure function results_layout(with_m1) result(fields)
+    logical, intent(in) :: with_m1
+    type(table_field_t), allocatable :: fields(:)
+    integer :: i
+    fields = [field("phi1", 9, 2)]
+    do i = 1, size(force_names)
+      fields = [fields, field(trim(force_names(i)), 12, 2)]
+    end do
+    if (with_m1) fields = [fields, field("M1", 12, 3)]
+    fields = [fields, blank_field(9, 2)]
+    do i = 1, size(force_names) - 1
+      fields = [fields, field(trim(force_names(i))//"G", 12, 2, line=2)]
+    end do
+  end function results_layout
+
   !> The row of values of one step. Forces below `noise_rel` times the step's largest
   !> force (and M1 below that force times l1) are roundoff: printed as 0 with angle 0.
   pure function sixbar_csv_values(s, l1) result(v)
@@ -322,7 +329,7 @@ contains
     type(sixbar_step_t), intent(in) :: s
     !> Crank length, m (moment scale).
     real(wp), intent(in) :: l1
-    real(wp) :: v(size(sixbar_csv_columns))
+    real(wp) :: v(row_size)
     real(wp) :: floor, f(2, 6)
     f = reshape([s%f21, s%f32, s%f43, s%f45, s%f36, s%f16], [2, 6])
     floor = noise_floor(f, [s%f56])
@@ -430,18 +437,19 @@ contains
     integer, intent(in) :: first, last
     type(text_buffer_t), intent(inout) :: out
     type(text_buffer_t), intent(inout) :: later
+    type(table_field_t), allocatable :: fields(:)
+    integer, allocatable :: cols(:)
     integer :: k
     if (lang == lang_ru) then
       call write_results_ru(table, first, last, out, later)
       return
     end if
-    do k = 1, size(header_lines)
-      if (.not. (first == 1 .and. table%first_block())) exit
-      call out%put(trim(header_lines(k)))
-    end do
+    fields = results_layout(.true.)
+    ! the angles' units stand one place right of their fields, as they always did
+    if (first == 1 .and. table%first_block()) call put_layout_heading(out, table, fields, lang, .true., unit_shift=[0, 1])
+    cols = layout_columns(table, fields)
     do k = first, last
-      call put_two_line_step(out, table%rows(:, k), magnitude_columns, angle_columns, &
-                             fixed_field(table%rows(15, k), 12, 3))
+      call put_layout_step(out, table%rows(:, k), fields, cols)
     end do
   end subroutine write_results
 
@@ -453,24 +461,29 @@ contains
     integer, intent(in) :: first, last
     type(text_buffer_t), intent(inout) :: out
     type(text_buffer_t), intent(inout) :: later
+    type(table_field_t), allocatable :: fields(:), moment(:)
+    integer, allocatable :: cols(:), moment_cols(:)
     integer :: k
+    fields = results_layout(.false.)
+    moment = [field("phi1", 9, 2), field("M1", 12, 3)]
     if (first == 1 .and. table%first_block()) then
-      call out%put_lines(header_lines_ru)
+      call put_layout_heading(out, table, fields, lang_ru, .false.)
       call out%put(dotted_rule)
     end if
+    cols = layout_columns(table, fields)
     do k = first, last
-      call put_two_line_step(out, table%rows(:, k), magnitude_columns, angle_columns, "")
+      call put_layout_step(out, table%rows(:, k), fields, cols)
     end do
     ! the closing rule, the legend and the moment block follow the last row (in `later`)
     if (first == 1 .and. table%first_block()) then
       call later%put(dotted_rule)
       call later%put_lines(legend_ru)
-      call put_heading(later, trim(moment_block_ru(1)))
-      call later%put(trim(moment_block_ru(2)))
-      call later%put(trim(moment_block_ru(3)))
+      call put_heading(later, moment_heading_ru)
+      call put_layout_heading(later, table, moment, lang_ru, .true.)
     end if
+    moment_cols = layout_columns(table, moment)
     do k = first, last
-      call later%put(fixed_field(table%rows(1, k), 9, 2)//fixed_field(table%rows(15, k), 12, 3))
+      call put_layout_step(later, table%rows(:, k), moment, moment_cols)
     end do
   end subroutine write_results_ru
 
