@@ -9,10 +9,10 @@ module kinetostat_pr3050_layout
   use kinetostat_vec2, only: angle_360_deg
   use kinetostat_noise, only: noise_rel, noise_floor, force_columns, force_components, angles_0_360
   use kinetostat_step_table, only: worst_row
-  use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_component, &
-    step_span, &
+  use kinetostat_step_table, only: step_table_t, column_t, column, col_input_angle, col_component, step_span, &
     col_moment, col_length, col_other
-  use kinetostat_format, only: fixed_field, exp_field
+  use kinetostat_table_layout, only: table_field_t, field, force_and_angle, layout_columns, put_layout_heading, &
+    put_layout_step
   use kinetostat_labels, only: lang_ru
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_table_writer, only: put_heading
@@ -27,26 +27,12 @@ module kinetostat_pr3050_layout
   use kinetostat_dynamics_table, only: echo_dynamics, add_dynamics_columns, put_dynamics_values
   implicit none
   private
-  public :: pr3050_mechanism_t, new_pr3050, pr3050_solve, pr3050_csv_columns, pr3050_csv_values
+  public :: pr3050_mechanism_t, new_pr3050, pr3050_solve, pr3050_columns, pr3050_csv_values
 
-  !> CSV columns, in the spec's order.
-  character(*), parameter :: pr3050_csv_columns(*) = [character(len=7) :: &
-    "phi3rel", "F14", "F14G", "F34", "F34G", "F32", "F32G", "F2"]
-  !> Pair forces, in the order of the CSV columns.
+  !> Pair forces, in the order of the columns (each a magnitude and an angle column).
   character(*), parameter :: force_names(*) = [character(len=3) :: "F14", "F34", "F32"]
-  !> Units of the CSV columns.
-  character(*), parameter :: column_units(*) = [character(len=3) :: &
-    "deg", "N", "deg", "N", "deg", "N", "deg", "N"]
-  !> Kinds of the CSV columns.
-  integer, parameter :: column_kinds(*) = [col_input_angle, col_force, col_force_angle, col_force, &
-    col_force_angle, col_force, col_force_angle, col_component]
-  !> Results header (the original's identifiers) and units.
-  character(*), parameter :: header_lines(*) = [character(len=88) :: &
-    "     F13G         F14    F14G         F34    F34G         F32    F32G          F2", &
-    "      deg           N     deg           N     deg           N     deg           N"]
-  !> Results header in Russian (the original's identifiers; units in the legend).
-  character(*), parameter :: header_ru = &
-    "     F13G         F14    F14G         F34    F34G         F32    F32G          F2"
+  !> Number of CSV columns of a step's row: the rocker angle, the forces and angles, F2.
+  integer, parameter :: csv_size = 2 + 2 * size(force_names)
   !> Legend under the Russian results (the manual's section 4 wording).
   character(*), parameter :: legend_ru(*) = [character(len=160) :: &
     " F13G - УГОЛ ПОВОРОТА ЗВЕНА 3 ОТ НАЧАЛЬНОГО ПОЛОЖЕНИЯ (PHI3 - PHI3_START)," // &
@@ -61,17 +47,9 @@ module kinetostat_pr3050_layout
     "ПОСТУПАТЕЛЬНАЯ ПАРА 1-2 И ГИДРОЦИЛИНДР (N21 - НА ШТОК 2 ОТ ЦИЛИНДРА 1" // &
       " ПО E2+90 ГРАД В ТОЧКЕ B,", &
     " M21 - МОМЕНТ НА ШТОК 2 ОТ ЦИЛИНДРА 1, ПРОТИВ ЧАСОВОЙ СТРЕЛКИ)"]
-  !> Units line of the prismatic-pair block in Russian.
-  character(*), parameter :: pair_units_ru = &
-    "     град      град         м       м/с           Н         Н*м"
   !> Heading of the block with the prismatic pair 1-2 and the cylinder's motion.
   character(*), parameter :: pair_heading = &
     "PRISMATIC PAIR 1-2 (ON ROD 2 FROM CYLINDER 1: N21 ALONG E2+90 DEG AT B, M21 CCW) AND CYLINDER"
-  !> Header of the prismatic-pair block and units.
-  character(*), parameter :: pair_header_lines(*) = [character(len=88) :: &
-    "     F13G      PHI2         S      SDOT         N21         M21", &
-    "      deg       deg         m       m/s           N         N*m"]
-
   !> PR 3050: four-bar with an oscillating hydraulic cylinder, manual section 4.
   type, extends(mechanism_t) :: pr3050_mechanism_t
     !> The validated deck.
@@ -191,12 +169,7 @@ contains
       return
     end if
     if (table%first_block()) then
-      call table%set_columns(pr3050_csv_columns, column_units, column_kinds)
-      call table%add_column("PHI2", "deg", col_other, csv=.false.)
-      call table%add_column("S", "m", col_length, csv=.false.)
-      call table%add_column("SDOT", "m/s", col_other, csv=.false.)
-      call table%add_column("N21", "N", col_component, csv=.false.)
-      call table%add_column("M21", "N*m", col_moment, csv=.false.)
+      call table%declare_columns(pr3050_columns())
       call add_dynamics_columns(table, self%deck%dyn%mode, translating=.true.)
       table%input_column = 1
       table%work_column = table%column_index("S")
@@ -204,7 +177,7 @@ contains
       if (allocated(warning)) call table%add_warning(warning)
       call echo_deck(self%deck, table)
     end if
-    nc = size(pr3050_csv_columns)
+    nc = csv_size
     call table%allocate_rows(size(steps), error)
     if (allocated(error)) return
     !$omp parallel do schedule(static) private(floor, n21, m21)
@@ -284,6 +257,43 @@ contains
     end do
   end subroutine put_kinematics
 
+  !> The columns of a step: the rocker angle from the first step (the original's F13G), the
+  !> pair forces' magnitudes and angles, the driving force F2; then, for the legacy table and
+  !> JSON only, the prismatic pair 1-2 and the cylinder's motion.
+  pure function pr3050_columns() result(cols)
+    type(column_t), allocatable :: cols(:)
+    integer :: i
+    cols = [column("phi3rel", "deg", col_input_angle, heading="F13G")]
+    do i = 1, size(force_names)
+      cols = [cols, force_and_angle(trim(force_names(i)))]
+    end do
+    cols = [cols, column("F2", "N", col_component, heading="F2"), &
+            column("PHI2", "deg", col_other, heading="PHI2", csv=.false.), &
+            column("S", "m", col_length, heading="S", csv=.false.), &
+            column("SDOT", "m/s", col_other, heading="SDOT", csv=.false.), &
+            column("N21", "N", col_component, heading="N21", csv=.false.), &
+            column("M21", "N*m", col_moment, heading="M21", csv=.false.)]
+  end function pr3050_columns
+
+  !> The RESULTS line of a step: the rocker angle, the forces (E format) with their angles
+  !> (8 wide), F2.
+  pure function results_layout() result(fields)
+    type(table_field_t), allocatable :: fields(:)
+    integer :: i
+    fields = [field("phi3rel", 9, 2)]
+    do i = 1, size(force_names)
+      fields = [fields, field(trim(force_names(i)), 12, 3, exponent=.true.), field(trim(force_names(i))//"G", 8, 2)]
+    end do
+    fields = [fields, field("F2", 12, 3, exponent=.true.)]
+  end function results_layout
+
+  !> The prismatic-pair block's line of a step.
+  pure function pair_layout() result(fields)
+    type(table_field_t), allocatable :: fields(:)
+    fields = [field("phi3rel", 9, 2), field("PHI2", 10, 2), field("S", 10, 4), field("SDOT", 10, 4), &
+              field("N21", 12, 3, exponent=.true.), field("M21", 12, 3, exponent=.true.)]
+  end function pair_layout
+
   !> The row of CSV values of one step.
   !> Forces below `noise_rel` times the step's largest force are roundoff: printed as 0 with angle 0.
   pure function pr3050_csv_values(s, phi3rel) result(v)
@@ -291,7 +301,7 @@ contains
     type(pr3050_step_t), intent(in) :: s
     !> Rocker angle from the first step, phi3 - phi3_start (the original's F13G), deg.
     real(wp), intent(in) :: phi3rel
-    real(wp) :: v(size(pr3050_csv_columns))
+    real(wp) :: v(csv_size)
     real(wp) :: floor, f(2, 3)
     f = reshape([s%f14, s%f34, s%f32], [2, 3])
     floor = noise_floor(f, [s%f2])
@@ -338,23 +348,16 @@ contains
     integer, intent(in) :: first, last
     type(text_buffer_t), intent(inout) :: out
     type(text_buffer_t), intent(inout) :: later
-    integer :: k, i
-    character(len=:), allocatable :: line
-    if (first == 1 .and. table%first_block()) then
-      if (lang == lang_ru) then
-        call out%put(header_ru)
-      else
-        call out%put_lines(header_lines)
-      end if
-    end if
+    type(table_field_t), allocatable :: fields(:), pair(:)
+    integer, allocatable :: cols(:)
+    integer :: k
+    fields = results_layout()
+    pair = pair_layout()
+    ! in Russian the units are in the legend under the rows
+    if (first == 1 .and. table%first_block()) call put_layout_heading(out, table, fields, lang, lang /= lang_ru)
+    cols = layout_columns(table, fields)
     do k = first, last
-      associate (v => table%rows(:, k))
-        line = fixed_field(v(1), 9, 2)
-        do i = 2, 6, 2
-          line = line//exp_field(v(i), 12, 3)//fixed_field(v(i + 1), 8, 2)
-        end do
-        call out%put(line//exp_field(v(8), 12, 3))
-      end associate
+      call put_layout_step(out, table%rows(:, k), fields, cols)
     end do
     ! the prismatic pair's block follows the last row of the first (in `later`)
     if (first == 1 .and. table%first_block()) then
@@ -362,18 +365,14 @@ contains
         call later%put_lines(legend_ru)
         call put_heading(later, trim(pair_heading_ru(1)))
         call later%put(trim(pair_heading_ru(2)))
-        call later%put(trim(pair_header_lines(1)))
-        call later%put(pair_units_ru)
       else
         call put_heading(later, pair_heading)
-        call later%put_lines(pair_header_lines)
       end if
+      call put_layout_heading(later, table, pair, lang, .true.)
     end if
+    cols = layout_columns(table, pair)
     do k = first, last
-      associate (v => table%rows(:, k))
-        call later%put(fixed_field(v(1), 9, 2)//fixed_field(v(9), 10, 2)//fixed_field(v(10), 10, 4)// &
-                     fixed_field(v(11), 10, 4)//exp_field(v(12), 12, 3)//exp_field(v(13), 12, 3))
-      end associate
+      call put_layout_step(later, table%rows(:, k), pair, cols)
     end do
   end subroutine write_results
 
