@@ -6,7 +6,8 @@ module kinetostat_assur_columns
   use kinetostat_noise, only: noise_rel
   use kinetostat_vec2, only: magnitude, angle_360_deg, angle_180_deg, clean_zero
   use kinetostat_run_tally, only: trapezoid_t
-  use kinetostat_step_table, only: step_table_t
+  use kinetostat_step_table, only: step_table_t, column_t, column, col_input_angle, col_force, col_force_angle, &
+    col_component, col_moment, col_length, col_other, col_flag, col_ratio
   use kinetostat_assur_statics, only: pair_is_prismatic
   use kinetostat_assur, only: assur_step_t
   use kinetostat_assur_friction, only: friction_step_t
@@ -14,43 +15,45 @@ module kinetostat_assur_columns
   use kinetostat_friction_block, only: friction_efficiency, eta_roundoff
   implicit none
   private
-  public :: assur_csv_columns, assur_csv_values, assur_pair_prismatic, assur_row, assur_row_size, pair_turns, &
+  public :: assur_columns, assur_csv_values, assur_pair_prismatic, assur_row, assur_row_size, pair_turns, &
     crank_length
-  public :: friction_csv_columns, friction_csv_values, friction_work, friction_integrals, friction_summary, &
+  public :: friction_columns, friction_csv_values, friction_work, friction_integrals, friction_summary, &
     friction_row_size
+
+  !> Characters of a pair's name the legacy table's heading shows (the width of its fields).
+  integer, parameter, public :: pair_heading_width = 12
 
 contains
 
-  !> Number of friction values of a row (friction_csv_columns).
+  !> Number of friction values of a row (friction_columns).
   pure integer function friction_row_size(deck)
     !> Validated deck.
     type(assur_deck_t), intent(in) :: deck
-    integer :: ip
-    friction_row_size = 4
-    do ip = 1, size(deck%friction)
-      if (deck%friction(ip)%f > 0.0_wp) friction_row_size = friction_row_size + 1
-    end do
+    friction_row_size = size(friction_columns(deck))
   end function friction_row_size
 
-  !> Friction columns after M1: M1_0 (M1 without friction), P_loss_<pair> for every pair with
-  !> friction, P_loss, eta_defined, eta.
-  pure function friction_csv_columns(deck) result(cols)
+  !> Friction columns after M1: M1_0 (M1 without friction; F_drive_0 with an actuator),
+  !> P_loss_<pair> for every pair with friction, P_loss, eta_defined, eta, with the friction
+  !> block's headings (kinetostat_friction_block).
+  pure function friction_columns(deck) result(cols)
     !> Validated deck.
     type(assur_deck_t), intent(in) :: deck
-    character(len=24), allocatable :: cols(:)
+    type(column_t), allocatable :: cols(:)
     integer :: ip
     if (deck%mech%drive_dyad > 0) then
-      cols = [character(len=24) :: "F_drive_0"]
+      cols = [column("F_drive_0", "N", col_component, heading="F_DRIVE_0")]
     else
-      cols = [character(len=24) :: "M1_0"]
+      cols = [column("M1_0", "N*m", col_moment, heading="M1_0")]
     end if
     do ip = 1, size(deck%friction)
-      if (deck%friction(ip)%f > 0.0_wp) cols = [character(len=24) :: cols, "P_loss_"//trim(deck%pair_name(ip))]
+      if (deck%friction(ip)%f > 0.0_wp) cols = [cols, column("P_loss_"//trim(deck%pair_name(ip)), "W", col_other, &
+                                                             heading="P_"//trim(deck%pair_name(ip)))]
     end do
-    cols = [character(len=24) :: cols, "P_loss", "eta_defined", "eta"]
-  end function friction_csv_columns
+    cols = [cols, column("P_loss", "W", col_other, heading="P_LOSS"), column("eta_defined", "", col_flag), &
+            column("eta", "", col_ratio, heading="ETA")]
+  end function friction_columns
 
-  !> The friction values of one step, in the order of friction_csv_columns. The instantaneous
+  !> The friction values of one step, in the order of friction_columns. The instantaneous
   !> efficiency eta = 1 - R/(M1*s) (R: loss per radian of the input, s: its motion sign) is
   !> defined where the driver delivers power (M1*s > 0; at rest: virtual power); elsewhere
   !> eta_defined = 0 and eta = 0.
@@ -171,29 +174,36 @@ contains
     end if
   end function assur_pair_prismatic
 
-  !> CSV column names: phi1; per pair F, FG, [Fx, Fy], [FN, FM for prismatic pairs]; M1, or
-  !> with a linear actuator as driver F_drive, stroke, stroke_v, stroke_a.
-  pure function assur_csv_columns(deck) result(cols)
+  !> The columns of a step, declared once for the deck: phi1; per pair its force and angle,
+  !> with components = .true. its x and y components, for a prismatic pair the normal force
+  !> <F>N and the moment <F>M; M1, or with a linear actuator as driver F_drive, stroke,
+  !> stroke_v, stroke_a. The legacy table heads a pair by the first pair_heading_width
+  !> characters of its name.
+  pure function assur_columns(deck) result(cols)
     !> Validated deck.
     type(assur_deck_t), intent(in) :: deck
-    character(len=24), allocatable :: cols(:)
+    type(column_t), allocatable :: cols(:)
+    character(len=:), allocatable :: name, short
     integer :: ip
-    cols = [character(len=24) :: "phi1"]
+    cols = [column("phi1", "deg", col_input_angle, heading="PHI1")]
     do ip = 1, size(deck%pair_name)
-      cols = [character(len=24) :: cols, trim(deck%pair_name(ip)), trim(deck%pair_name(ip))//"G"]
-      if (deck%components) cols = [character(len=24) :: cols, trim(deck%pair_name(ip))//"x", &
-                                   trim(deck%pair_name(ip))//"y"]
-      if (assur_pair_prismatic(deck, ip)) cols = [character(len=24) :: cols, trim(deck%pair_name(ip))//"N", &
-                                                  trim(deck%pair_name(ip))//"M"]
+      name = trim(deck%pair_name(ip))
+      short = trim(deck%pair_name(ip)(1:min(len(deck%pair_name), pair_heading_width)))
+      cols = [cols, column(name, "N", col_force, heading=short), column(name//"G", "deg", col_force_angle, heading=short//"G")]
+      if (deck%components) cols = [cols, column(name//"x", "N", col_component), column(name//"y", "N", col_component)]
+      if (assur_pair_prismatic(deck, ip)) cols = [cols, column(name//"N", "N", col_component, heading=short//"N"), &
+                                                  column(name//"M", "N*m", col_moment, heading=short//"M")]
     end do
     if (deck%mech%drive_dyad == 0) then
-      cols = [character(len=24) :: cols, "M1"]
+      cols = [cols, column("M1", "N*m", col_moment, heading="M1")]
     else
-      cols = [character(len=24) :: cols, "F_drive", "stroke", "stroke_v", "stroke_a"]
+      cols = [cols, column("F_drive", "N", col_component, heading="F_DRIVE"), &
+              column("stroke", "m", col_length, heading="STROKE"), column("stroke_v", "m/s", col_other, heading="STROKE_V"), &
+              column("stroke_a", "m/s^2", col_other, heading="STROKE_A")]
     end if
-  end function assur_csv_columns
+  end function assur_columns
 
-  !> The CSV row of one step, in the order of assur_csv_columns (see assur_row).
+  !> The CSV row of one step, in the order of assur_columns (see assur_row).
   pure function assur_csv_values(deck, s) result(v)
     !> Validated deck.
     type(assur_deck_t), intent(in) :: deck
@@ -221,25 +231,14 @@ contains
     end do
   end function pair_turns
 
-  !> Number of values of a row of assur_csv_columns.
+  !> Number of values of a row of assur_columns.
   pure integer function assur_row_size(deck)
     !> Validated deck.
     type(assur_deck_t), intent(in) :: deck
-    integer :: ip
-    assur_row_size = 1
-    do ip = 1, size(deck%pair_name)
-      assur_row_size = assur_row_size + 2
-      if (deck%components) assur_row_size = assur_row_size + 2
-      if (assur_pair_prismatic(deck, ip)) assur_row_size = assur_row_size + 2
-    end do
-    if (deck%mech%drive_dyad == 0) then
-      assur_row_size = assur_row_size + 1
-    else
-      assur_row_size = assur_row_size + 4
-    end if
+    assur_row_size = size(assur_columns(deck))
   end function assur_row_size
 
-  !> The CSV row `v` of one step, in the order of assur_csv_columns. Forces below `noise_rel`
+  !> The CSV row `v` of one step, in the order of assur_columns. Forces below `noise_rel`
   !> times the step's largest force (moments below that force times the crank's length
   !> scale) are roundoff: printed as 0 with angle 0; so are single components below that floor
   !> (a force along an axis gets exactly that axis' angle).

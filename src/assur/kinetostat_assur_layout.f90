@@ -14,7 +14,8 @@ module kinetostat_assur_layout
   use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_component, col_length, &
     step_span, &
     col_moment, col_other, col_flag, col_ratio
-  use kinetostat_format, only: pad_left, fixed_field
+  use kinetostat_table_layout, only: table_field_t, field, blank_field, layout_columns, put_layout_heading, &
+    put_layout_step
   use kinetostat_labels, only: lang_ru
   use kinetostat_friction_block, only: write_friction_block
   use kinetostat_text_buffer, only: text_buffer_t
@@ -37,13 +38,13 @@ module kinetostat_assur_layout
     load_column, assur_phi1_deg, assur_omega1_steps, assur_eps1, assur_motion_sign, assur_load_value, &
     assur_load_steps, resist_none, load_table, table_position
   use kinetostat_summary, only: table_peak_warning
-  use kinetostat_assur_columns, only: assur_csv_columns, assur_csv_values, assur_pair_prismatic, assur_row, &
-    assur_row_size, pair_turns, crank_length, friction_csv_columns, friction_csv_values, friction_work, &
+  use kinetostat_assur_columns, only: assur_columns, assur_csv_values, assur_pair_prismatic, assur_row, &
+    assur_row_size, pair_turns, crank_length, friction_columns, friction_csv_values, friction_work, &
     friction_integrals, friction_summary, friction_row_size
   implicit none
   private
-  public :: assur_mechanism_t, new_assur, assur_solve, assur_csv_columns, assur_csv_values, assur_pair_prismatic
-  public :: friction_csv_columns, friction_csv_values, friction_work
+  public :: assur_mechanism_t, new_assur, assur_solve, assur_columns, assur_csv_values, assur_pair_prismatic
+  public :: friction_columns, friction_csv_values, friction_work
 
   !> Width of the PHI1 field of the RESULTS block.
   integer, parameter :: phi_width = 9
@@ -209,7 +210,6 @@ contains
     type(step_table_t), intent(inout) :: table
     type(error_t), allocatable, intent(out) :: error
     type(friction_step_t), allocatable :: fsteps(:)
-    character(len=24), allocatable :: names(:)
     real(wp), allocatable :: residual(:), mismatch(:), motion(:, :), forces(:, :, :), turn(:, :), omega1(:), m1(:)
     type(motion_t), allocatable :: motions(:)
     integer, allocatable :: slots(:)
@@ -219,47 +219,8 @@ contains
     call table%block_range(self%deck%n, first, last)
     nrow = last - first + 1
     if (table%first_block()) then
-      allocate (names(0))
-      names = assur_csv_columns(self%deck)
-      allocate (table%columns(0))
-      call table%add_column("phi1", "deg", col_input_angle)
-      c = 1
-      do ip = 1, size(self%deck%pair_name)
-        call table%add_column(trim(names(c + 1)), "N", col_force)
-        call table%add_column(trim(names(c + 2)), "deg", col_force_angle)
-        c = c + 2
-        if (self%deck%components) then
-          call table%add_column(trim(names(c + 1)), "N", col_component)
-          call table%add_column(trim(names(c + 2)), "N", col_component)
-          c = c + 2
-        end if
-        if (assur_pair_prismatic(self%deck, ip)) then
-          call table%add_column(trim(names(c + 1)), "N", col_component)
-          call table%add_column(trim(names(c + 2)), "N*m", col_moment)
-          c = c + 2
-        end if
-      end do
-      if (self%deck%mech%drive_dyad == 0) then
-        call table%add_column("M1", "N*m", col_moment)
-      else
-        call table%add_column("F_drive", "N", col_component)
-        call table%add_column("stroke", "m", col_length)
-        call table%add_column("stroke_v", "m/s", col_other)
-        call table%add_column("stroke_a", "m/s^2", col_other)
-      end if
-      if (self%deck%friction_on) then
-        names = friction_csv_columns(self%deck)
-        if (self%deck%mech%drive_dyad == 0) then
-          call table%add_column(trim(names(1)), "N*m", col_moment)
-        else
-          call table%add_column(trim(names(1)), "N", col_component)
-        end if
-        do c = 2, size(names) - 2
-          call table%add_column(trim(names(c)), "W", col_other)
-        end do
-        call table%add_column(trim(names(size(names) - 1)), "", col_flag)
-        call table%add_column(trim(names(size(names))), "", col_ratio)
-      end if
+      call table%declare_columns(assur_columns(self%deck))
+      if (self%deck%friction_on) call table%declare_columns(friction_columns(self%deck))
       call add_dynamics_columns(table, self%deck%dyn%mode, self%deck%mech%drive_dyad > 0)
       call put_dynamics_figures(table, self%deck%dyn%mode, self%cycle, self%deck%dyn%delta)
       table%input_column = 1
@@ -905,15 +866,6 @@ contains
     end do
   end function joint_name
 
-  !> A 12-wide right-adjusted header label `name//suffix`, blank when `show` is false.
-  pure function p_label(name, suffix, show) result(label)
-    character(*), intent(in) :: name, suffix
-    logical, intent(in) :: show
-    character(len=12) :: label
-    label = ""
-    if (show) label = adjustr(trim(name)//suffix)
-  end function p_label
-
   !> The INPUT DATA echo of the deck (every deck value, dyad by dyad).
   pure subroutine echo_deck(deck, table)
     type(assur_deck_t), intent(in) :: deck
@@ -1128,153 +1080,24 @@ contains
     integer, intent(in) :: first, last
     type(text_buffer_t), intent(inout) :: out
     type(text_buffer_t), intent(inout) :: later
-    character(len=:), allocatable :: line1, line2, line3, line4
-    !> The lines of one step.
-    character(len=:), allocatable :: row1, row2, row3, row4
-    character(len=field_width) :: name
-    character(len=len(self%deck%pair_name)) :: full_name
-    character(len=:), allocatable :: deg, newton, newton_m, metre
-    real(wp) :: mag, ang, nn, mm
-    integer :: k, ip, np, pos, at, width
-    integer, allocatable :: along(:)
-    logical, allocatable :: prismatic_pair(:)
-    logical :: any_p, prismatic, drive, link_axes
-
-    drive = self%deck%mech%drive_dyad > 0
-    np = size(self%deck%pair_name)
-    link_axes = table%link_frame
-    allocate (along(np))
-    do ip = 1, np
-      along(ip) = table%column_index(trim(self%deck%pair_name(ip))//"_along")
-    end do
-    any_p = .false.
-    do ip = 1, np
-      any_p = any_p .or. assur_pair_prismatic(self%deck, ip)
-    end do
+    type(table_field_t), allocatable :: fields(:)
+    integer, allocatable :: cols(:)
+    character(len=:), allocatable :: deg
+    integer :: k
+    fields = results_layout(self%deck, table%link_frame)
     if (first == 1 .and. table%first_block()) then
-      if (link_axes) then
+      if (table%link_frame) then
         if (lang == lang_ru) then
           call out%put(" "//link_axes_heading_ru)
         else
           call out%put(" "//link_axes_heading)
         end if
       end if
-      if (lang == lang_ru) then
-        deg = "град"
-        newton = "Н"
-        newton_m = "Н*м"
-        metre = "м"
-      else
-        deg = "deg"
-        newton = "N"
-        newton_m = "N*m"
-        metre = "m"
-      end if
-      line1 = adjustr(pad9("PHI1"))
-      line2 = repeat(" ", phi_width)
-      line3 = repeat(" ", phi_width)
-      line4 = repeat(" ", phi_width)
-      do ip = 1, np
-        full_name = self%deck%pair_name(ip)
-        name = full_name(1:field_width)
-        prismatic = assur_pair_prismatic(self%deck, ip)
-        if (link_axes) then
-          line1 = line1//pad_left(fit(trim(name)//"_ALONG"), field_width)
-          line2 = line2//pad_left(fit(trim(name)//"_ACROSS"), field_width)
-        else
-          line1 = line1//adjustr(name)
-          line2 = line2//pad_left(trim(name)//"G", field_width)
-        end if
-        line3 = line3//p_label(name, "N", prismatic)
-        line4 = line4//p_label(name, "M", prismatic)
-      end do
-      if (drive) then
-        ! the actuator's force, stroke, stroke speed and acceleration in the last column
-        call out%put(trim(line1//adjustr(pad12("F_DRIVE"))))
-        call out%put(trim(line2//adjustr(pad12("STROKE"))))
-        call out%put(line3//adjustr(pad12("STROKE_V")))
-        call out%put(line4//adjustr(pad12("STROKE_A")))
-      else
-        call out%put(trim(line1//adjustr(pad12("M1"))))
-        call out%put(trim(line2))
-        if (any_p) then
-          call out%put(line3)
-          call out%put(line4)
-        end if
-      end if
-      line1 = pad_left(deg, phi_width)
-      line2 = repeat(" ", phi_width)
-      do ip = 1, np
-        line1 = line1//pad_left(newton, field_width)
-        if (link_axes) then
-          line2 = line2//pad_left(newton, field_width)
-        else
-          line2 = line2//pad_left(deg, field_width)
-        end if
-      end do
-      if (drive) then
-        call out%put(trim(line1//pad_left(newton, field_width)))
-        call out%put(trim(line2//pad_left(metre, field_width)))
-      else
-        call out%put(trim(line1//pad_left(newton_m, field_width)))
-        call out%put(trim(line2))
-      end if
+      call put_layout_heading(out, table, fields, lang, .true., unit_lines=2)
     end if
-    ! the four lines of a step, field by field into lines of their full width (no text
-    ! grows per field)
-    width = phi_width + (np + 1) * field_width
-    allocate (character(len=width) :: row1, row2, row3, row4)
-    allocate (prismatic_pair(np))
-    do ip = 1, np
-      prismatic_pair(ip) = assur_pair_prismatic(self%deck, ip)
-    end do
+    cols = layout_columns(table, fields)
     do k = first, last
-      associate (v => table%rows(:, k))
-        row1(1:phi_width) = fixed_field(v(1), phi_width, 2)
-        row2(:) = ""
-        row3(:) = ""
-        row4(:) = ""
-        pos = 1
-        at = phi_width
-        do ip = 1, np
-          mag = v(pos + 1)
-          ang = v(pos + 2)
-          if (link_axes) then
-            mag = v(along(ip))
-            ang = v(along(ip) + 1)
-          end if
-          pos = pos + 2
-          if (self%deck%components) pos = pos + 2
-          row1(at + 1:at + field_width) = fixed_field(mag, field_width, 2)
-          row2(at + 1:at + field_width) = fixed_field(ang, field_width, 2)
-          if (prismatic_pair(ip)) then
-            nn = v(pos + 1)
-            mm = v(pos + 2)
-            pos = pos + 2
-            row3(at + 1:at + field_width) = fixed_field(nn, field_width, 2)
-            row4(at + 1:at + field_width) = fixed_field(mm, field_width, 2)
-          end if
-          at = at + field_width
-        end do
-        if (drive) then
-          row1(at + 1:width) = fixed_field(v(pos + 1), field_width, 2)
-          row2(at + 1:width) = fixed_field(v(pos + 2), field_width, stroke_decimals)
-          row3(at + 1:width) = fixed_field(v(pos + 3), field_width, stroke_decimals)
-          row4(at + 1:width) = fixed_field(v(pos + 4), field_width, stroke_decimals)
-          call out%put(row1)
-          call out%put(row2)
-          call out%put(row3)
-          call out%put(row4)
-        else
-          row1(at + 1:width) = fixed_field(v(pos + 1), field_width, 2)
-          call out%put(row1)
-          call out%put(row2(1:at))
-          if (any_p) then
-            call out%put(trim(row3(1:at)))
-            call out%put(trim(row4(1:at)))
-          end if
-        end if
-      end associate
+      call put_layout_step(out, table%rows(:, k), fields, cols)
     end do
     ! the friction block follows the last row (in `later`)
     if (self%deck%friction_on) then
@@ -1289,23 +1112,61 @@ contains
   end subroutine write_results
 
 
-  !> `text`, cut to the width of a field.
-  pure function fit(text) result(field)
-    character(*), intent(in) :: text
-    character(len=:), allocatable :: field
-    field = text(1:min(len(text), field_width))
-  end function fit
-
-  pure function pad9(text) result(field)
-    character(*), intent(in) :: text
-    character(len=phi_width) :: field
-    field = text
-  end function pad9
-
-  pure function pad12(text) result(field)
-    character(*), intent(in) :: text
-    character(len=field_width) :: field
-    field = text
-  end function pad12
+  !> The RESULTS layout of a step: line 1 PHI1, every pair's force and M1 (or the
+  !> actuator's force), line 2 the angles (or the stroke); with --frame link the pairs' along
+  !> and across components instead. With a prismatic pair (or an actuator) lines 3 and 4:
+  !> the normal forces and moments of the prismatic pairs (the stroke's speed and acceleration).
+  pure function results_layout(deck, link_axes) result(fields)
+    type(assur_deck_t), intent(in) :: deck
+    !> --frame link.
+    logical, intent(in) :: link_axes
+    type(table_field_t), allocatable :: fields(:)
+    character(len=:), allocatable :: name
+    logical :: drive, any_p
+    integer :: ip, line
+    drive = deck%mech%drive_dyad > 0
+    any_p = .false.
+    do ip = 1, size(deck%pair_name)
+      any_p = any_p .or. assur_pair_prismatic(deck, ip)
+    end do
+    fields = [field("phi1", phi_width, 2)]
+    do ip = 1, size(deck%pair_name)
+      name = trim(deck%pair_name(ip))
+      if (link_axes) then
+        fields = [fields, field(name//"_along", field_width, 2, cut=.true.)]
+      else
+        fields = [fields, field(name, field_width, 2, cut=.true.)]
+      end if
+    end do
+    if (drive) then
+      fields = [fields, field("F_drive", field_width, 2)]
+    else
+      fields = [fields, field("M1", field_width, 2)]
+    end if
+    fields = [fields, blank_field(phi_width, 2)]
+    do ip = 1, size(deck%pair_name)
+      name = trim(deck%pair_name(ip))
+      if (link_axes) then
+        fields = [fields, field(name//"_across", field_width, 2, line=2, cut=.true.)]
+      else
+        fields = [fields, field(name//"G", field_width, 2, line=2)]
+      end if
+    end do
+    if (drive) fields = [fields, field("stroke", field_width, stroke_decimals, line=2)]
+    if (.not. (any_p .or. drive)) return
+    do line = 3, 4
+      fields = [fields, blank_field(phi_width, line)]
+      do ip = 1, size(deck%pair_name)
+        name = trim(deck%pair_name(ip))//merge("N", "M", line == 3)
+        if (assur_pair_prismatic(deck, ip)) then
+          ! headed at the left of the field, as the table always printed them
+          fields = [fields, field(name, field_width, 2, line=line, cut=.true., left=.true.)]
+        else
+          fields = [fields, blank_field(field_width, line)]
+        end if
+      end do
+      if (drive) fields = [fields, field(merge("stroke_v", "stroke_a", line == 3), field_width, stroke_decimals, line=line)]
+    end do
+  end function results_layout
 
 end module kinetostat_assur_layout

@@ -3,7 +3,7 @@
 !> cycle (the DYNAMICS block and JSON "dynamics") and the self-check M1 = M_d.
 module kinetostat_dynamics_table
   use kinetostat_kinds, only: wp, rad_to_deg
-  use kinetostat_step_table, only: step_table_t, col_moment, col_component, col_other
+  use kinetostat_step_table, only: step_table_t, column_t, column, col_moment, col_component, col_other
   use kinetostat_run_tally, only: dynamics_figures_t
   use kinetostat_dynamics, only: cycle_t, motion_t, dynamics_none, dynamics_reduced, dynamics_steady, dynamics_given
   use kinetostat_dynamics_deck, only: dynamics_deck_t, dynamics_mode_name
@@ -45,24 +45,31 @@ contains
     !> The input translates; default false.
     logical, intent(in), optional :: translating
     if (mode == dynamics_none) return
-    if (optional_true(translating)) then
-      call table%add_column("J_red", "kg", col_other)
-      call table%add_column("dJ_red", "kg/m", col_other)
-      call table%add_column("M_red", "N", col_component)
+    call table%declare_columns(dynamics_columns(mode, optional_true(translating)))
+  end subroutine add_dynamics_columns
+
+  !> The dynamics columns of `mode` (none for dynamics_none), in the order of
+  !> put_dynamics_values; `translating`: J_red a mass (kg), dJ_red in kg/m, M_red a force (N).
+  pure function dynamics_columns(mode, translating) result(cols)
+    !> dynamics_* mode.
+    integer, intent(in) :: mode
+    !> The input translates.
+    logical, intent(in) :: translating
+    type(column_t), allocatable :: cols(:)
+    allocate (cols(0))
+    if (mode == dynamics_none) return
+    if (translating) then
+      cols = [column("J_red", "kg", col_other), column("dJ_red", "kg/m", col_other, unit_ru="кг/м"), &
+              column("M_red", "N", col_component)]
       return
     end if
-    call table%add_column("J_red", "kg*m^2", col_other)
-    call table%add_column("dJ_red", "kg*m^2/rad", col_other)
-    call table%add_column("M_red", "N*m", col_moment)
+    cols = [column("J_red", "kg*m^2", col_other), column("dJ_red", "kg*m^2/rad", col_other, unit_ru="кг*м^2/рад"), &
+            column("M_red", "N*m", col_moment)]
     if (mode == dynamics_reduced) return
-    call table%add_column("dT", "J", col_other)
-    call table%add_column("omega1", "rad/s", col_other)
-    call table%add_column("eps1", "rad/s^2", col_other)
-    call table%add_column("t", "s", col_other)
-    call table%add_column("A_Md", "J", col_other)
-    call table%add_column("A_red", "J", col_other)
-    call table%add_column("T_I", "J", col_other)
-  end subroutine add_dynamics_columns
+    cols = [cols, column("dT", "J", col_other), column("omega1", "rad/s", col_other), &
+            column("eps1", "rad/s^2", col_other), column("t", "s", col_other), column("A_Md", "J", col_other), &
+            column("A_red", "J", col_other), column("T_I", "J", col_other)]
+  end function dynamics_columns
 
   !> The dynamics values of row `k` (the columns add_dynamics_columns made).
   pure subroutine put_dynamics_values(table, k, mode, motion)

@@ -7,7 +7,7 @@ module kinetostat_step_table
   use, intrinsic :: iso_fortran_env, only: int64
   use kinetostat_kinds, only: wp, rad_to_deg
   use kinetostat_error, only: error_t, out_of_memory
-  use kinetostat_text, only: int_str, int64_str
+  use kinetostat_text, only: int_str, int64_str, upper
   use kinetostat_run_tally, only: run_tally_t, dynamics_figures_t, flywheel_disc, running_max_t, column_tally_t, edge_point_t
   use kinetostat_labels, only: label, lang_ru
   implicit none
@@ -551,6 +551,8 @@ contains
     end if
     if (i == 0) then
       c = column(prefix//suffix, unit, kind)
+      ! a link-axes column is headed in the legacy table: F21_ALONG, F21_ACROSS
+      if (present(link)) c = column(prefix//suffix, unit, kind, heading=prefix//upper(suffix))
       c%kinematic = .not. present(link)
       c%link_axes = present(link)
       if (present(link)) c%frame_link = link

@@ -6,7 +6,7 @@
 module kinetostat_table_layout
   use kinetostat_kinds, only: wp
   use kinetostat_step_table, only: step_table_t, column_t, column, col_force, col_force_angle
-  use kinetostat_format, only: put_fixed, exp_field, pad_left
+  use kinetostat_format, only: put_fixed, exp_field, pad_left, pad_right
   use kinetostat_labels, only: lang_ru
   use kinetostat_text_buffer, only: text_buffer_t
   implicit none
@@ -26,6 +26,10 @@ module kinetostat_table_layout
     integer :: decimals = 2
     !> E format (exp_field) instead of F.
     logical :: exponent = .false.
+    !> The heading cut to the field's width (else a longer one pushes the line right).
+    logical :: cut = .false.
+    !> The heading at the left of the field (the &assur table's N and M of prismatic pairs).
+    logical :: left = .false.
   end type table_field_t
 
 contains
@@ -49,7 +53,7 @@ contains
   end function force_and_angle
 
   !> A field printing column `name` on line `line` of a step, `width` wide with `decimals`.
-  pure function field(name, width, decimals, line, exponent) result(f)
+  pure function field(name, width, decimals, line, exponent, cut, left) result(f)
     !> Column name as declared.
     character(*), intent(in) :: name
     !> Width and decimals.
@@ -58,12 +62,18 @@ contains
     integer, intent(in), optional :: line
     !> E format (default false).
     logical, intent(in), optional :: exponent
+    !> Heading cut to the width (default false).
+    logical, intent(in), optional :: cut
+    !> Heading at the left of the field (default false: at the right, over the value).
+    logical, intent(in), optional :: left
     type(table_field_t) :: f
     f%column = name
     f%width = width
     f%decimals = decimals
     if (present(line)) f%line = line
     if (present(exponent)) f%exponent = exponent
+    if (present(cut)) f%cut = cut
+    if (present(left)) f%left = left
   end function field
 
   !> A blank field `width` wide on line `line` (under the input angle of line 1).
@@ -110,9 +120,10 @@ contains
   end function heading_unit_of
 
   !> The heading lines of a layout: for every line of a step the fields' headings, each
-  !> right-aligned in its field; then, with `units`, the same for their units. Trailing
-  !> blanks go.
-  pure subroutine put_layout_heading(out, table, fields, lang, units, unit_shift)
+  !> right-aligned in its field (or left-aligned: table_field_t%left); then, with `units`, the
+  !> same for their units. Trailing blanks go, except on a heading line with a left-aligned
+  !> field (as the &assur table always printed them).
+  pure subroutine put_layout_heading(out, table, fields, lang, units, unit_shift, unit_lines)
     type(text_buffer_t), intent(inout) :: out
     type(step_table_t), intent(in) :: table
     type(table_field_t), intent(in) :: fields(:)
@@ -123,41 +134,64 @@ contains
     !> Blanks before the unit line of each line of a step (default none): a printout whose
     !> units stand right of their fields keeps that, byte for byte.
     integer, intent(in), optional :: unit_shift(:)
+    !> The unit lines of only the first `unit_lines` lines of a step (default: of every line).
+    integer, intent(in), optional :: unit_lines
     integer :: cols(size(fields))
-    character(len=:), allocatable :: line
+    character(len=:), allocatable :: line, text
     integer :: pass, l, i
+    logical :: keep
     cols = layout_columns(table, fields)
     ! pass 1: the headings; pass 2: the units
     do pass = 1, merge(2, 1, units)
       do l = 1, maxval(fields%line)
+        if (pass == 2 .and. present(unit_lines)) then
+          if (l > unit_lines) exit
+        end if
         line = ""
+        keep = .false.
         if (pass == 2 .and. present(unit_shift)) line = repeat(" ", unit_shift(l))
         do i = 1, size(fields)
           if (fields(i)%line /= l) cycle
           if (cols(i) == 0) then
             line = line//repeat(" ", fields(i)%width)
+            cycle
           else if (pass == 2) then
-            line = line//pad_left(heading_unit_of(table%columns(cols(i)), lang), fields(i)%width)
+            text = heading_unit_of(table%columns(cols(i)), lang)
           else
-            line = line//pad_left(heading_of(table%columns(cols(i)), lang), fields(i)%width)
+            text = heading_of(table%columns(cols(i)), lang)
+            if (fields(i)%cut) text = text(1:min(len(text), fields(i)%width))
+            if (fields(i)%left) then
+              line = line//pad_right(text, fields(i)%width)
+              keep = .true.
+              cycle
+            end if
           end if
+          line = line//pad_left(text, fields(i)%width)
         end do
-        call out%put(trim(line))
+        if (keep) then
+          call out%put(line)
+        else
+          call out%put(trim(line))
+        end if
       end do
     end do
   end subroutine put_layout_heading
 
   !> The lines of one step: every field of line 1, then of line 2, ... (`cols` from
-  !> layout_columns).
+  !> layout_columns); blank fields at the end of a line are left out.
   pure subroutine put_layout_step(out, v, fields, cols)
     type(text_buffer_t), intent(inout) :: out
     !> The step's row.
     real(wp), intent(in) :: v(:)
     type(table_field_t), intent(in) :: fields(:)
     integer, intent(in) :: cols(:)
-    integer :: l, i
+    integer :: l, i, last
     do l = 1, maxval(fields%line)
+      last = 0
       do i = 1, size(fields)
+        if (fields(i)%line == l .and. cols(i) > 0) last = i
+      end do
+      do i = 1, last
         if (fields(i)%line /= l) cycle
         if (cols(i) == 0) then
           call out%append(repeat(" ", fields(i)%width))
