@@ -10,9 +10,10 @@ module kinetostat_linkage_layout
   use kinetostat_text, only: int_str, real_str, upper
   use kinetostat_noise, only: noise_rel
   use kinetostat_vec2, only: magnitude, angle_360_deg, clean_zero, rotate
-  use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_component, &
-    col_moment, col_length, col_other
-  use kinetostat_format, only: pad_left, fixed_field
+  use kinetostat_step_table, only: step_table_t, column_t, column, col_input_angle, col_component, col_moment, &
+    col_length, col_other
+  use kinetostat_table_layout, only: table_field_t, field, blank_field, force_and_angle, layout_columns, &
+    put_layout_heading, put_layout_step
   use kinetostat_labels, only: lang_ru, lang_en
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_friction_block, only: write_friction_block
@@ -314,6 +315,76 @@ contains
     end associate
   end subroutine drive_names
 
+  !> The columns of a step, declared once for the deck's linkage: the drives' inputs
+  !> (phi<a> deg, s<a> m), per pair its force F<a><b> with angle, x and y components (and N,
+  !> M of a sliding pair), the drives' efforts (M<a> N*m, F_drive<a> N); the inputs, forces,
+  !> angles and efforts headed in the legacy table (the names in capitals).
+  pure function linkage_columns(mech) result(cols)
+    type(linkage_t), intent(in) :: mech
+    type(column_t), allocatable :: cols(:)
+    character(len=:), allocatable :: input, effort, f
+    integer :: d, k
+    allocate (cols(0))
+    do d = 1, size(mech%drives)
+      call drive_names(mech, d, input, effort)
+      if (mech%pairs(mech%drives(d)%pair)%kind == pair_r) then
+        cols = [cols, column(input, "deg", merge(col_input_angle, col_other, d == 1), heading=upper_ascii(input))]
+      else
+        cols = [cols, column(input, "m", col_length, heading=upper_ascii(input))]
+      end if
+    end do
+    do k = 1, size(mech%pairs)
+      f = force_name(mech, k)
+      cols = [cols, force_and_angle(f), column(f//"x", "N", col_component), column(f//"y", "N", col_component)]
+      if (mech%pairs(k)%kind == pair_p) cols = [cols, column(f//"N", "N", col_component), &
+                                                column(f//"M", "N*m", col_moment)]
+    end do
+    do d = 1, size(mech%drives)
+      call drive_names(mech, d, input, effort)
+      if (mech%pairs(mech%drives(d)%pair)%kind == pair_r) then
+        cols = [cols, column(effort, "N*m", col_moment, heading=upper_ascii(effort))]
+      else
+        cols = [cols, column(effort, "N", col_component, heading=upper_ascii(effort))]
+      end if
+    end do
+  end function linkage_columns
+
+  !> The RESULTS layout of a step: line 1 the drives' inputs (the first 9 wide; angles with
+  !> 2 decimals, strokes with 4), every pair's force and the efforts; line 2 the pairs'
+  !> angles; with --frame link their along and across components instead.
+  pure function results_layout(mech, link_axes) result(fields)
+    type(linkage_t), intent(in) :: mech
+    !> --frame link.
+    logical, intent(in) :: link_axes
+    type(table_field_t), allocatable :: fields(:)
+    character(len=:), allocatable :: input, effort
+    integer :: d, k, line
+    allocate (fields(0))
+    do line = 1, 2
+      do d = 1, size(mech%drives)
+        if (line == 2) then
+          fields = [fields, blank_field(merge(first_width, field_width, d == 1), 2)]
+          cycle
+        end if
+        call drive_names(mech, d, input, effort)
+        fields = [fields, field(input, merge(first_width, field_width, d == 1), &
+                                merge(2, 4, mech%pairs(mech%drives(d)%pair)%kind == pair_r))]
+      end do
+      do k = 1, size(mech%pairs)
+        if (link_axes) then
+          fields = [fields, field(force_name(mech, k)//trim(merge("_along ", "_across", line == 1)), field_width, 2, &
+                                  line=line)]
+        else
+          fields = [fields, field(force_name(mech, k)//trim(merge(" ", "G", line == 1)), field_width, 2, line=line)]
+        end if
+      end do
+    end do
+    do d = 1, size(mech%drives)
+      call drive_names(mech, d, input, effort)
+      fields = [fields, field(effort, field_width, 2)]
+    end do
+  end function results_layout
+
   !> Values of a row: the drives' inputs, per pair |F|, angle, x, y (and N, M of a sliding
   !> pair), the drives' efforts.
   pure integer function row_size(mech)
@@ -467,33 +538,7 @@ contains
       call table%block_range(self%deck%n, first, last)
       translating = mech%pairs(mech%drives(1)%pair)%kind == pair_p
       if (table%first_block()) then
-        allocate (table%columns(0))
-        do d = 1, nd
-          call drive_names(mech, d, input, effort)
-          if (mech%pairs(mech%drives(d)%pair)%kind == pair_r) then
-            call table%add_column(input, "deg", merge(col_input_angle, col_other, d == 1))
-          else
-            call table%add_column(input, "m", col_length)
-          end if
-        end do
-        do k = 1, np
-          call table%add_column(force_name(mech, k), "N", col_force)
-          call table%add_column(force_name(mech, k)//"G", "deg", col_force_angle)
-          call table%add_column(force_name(mech, k)//"x", "N", col_component)
-          call table%add_column(force_name(mech, k)//"y", "N", col_component)
-          if (mech%pairs(k)%kind == pair_p) then
-            call table%add_column(force_name(mech, k)//"N", "N", col_component)
-            call table%add_column(force_name(mech, k)//"M", "N*m", col_moment)
-          end if
-        end do
-        do d = 1, nd
-          call drive_names(mech, d, input, effort)
-          if (mech%pairs(mech%drives(d)%pair)%kind == pair_r) then
-            call table%add_column(effort, "N*m", col_moment)
-          else
-            call table%add_column(effort, "N", col_component)
-          end if
-        end do
+        call table%declare_columns(linkage_columns(mech))
         call add_dynamics_columns(table, self%deck%dyn%mode, translating)
         if (self%deck%friction_on) then
           allocate (force_names(np))
@@ -860,110 +905,25 @@ contains
     integer, intent(in) :: first, last
     type(text_buffer_t), intent(inout) :: out
     type(text_buffer_t), intent(inout) :: later
-    character(len=:), allocatable :: line1, line2, input, effort, deg, newton, newton_m, metre
-    integer, allocatable :: along(:)
-    integer :: k, ip, d, nd, np, pos
-    nd = size(self%deck%mech%drives)
-    np = size(self%deck%mech%pairs)
-    allocate (along(np), source=0)
-    associate (mech => self%deck%mech)
+    type(table_field_t), allocatable :: fields(:)
+    integer, allocatable :: cols(:)
+    character(len=:), allocatable :: input, effort
+    integer :: k
+    fields = results_layout(self%deck%mech, table%link_frame)
+    if (first == 1 .and. table%first_block()) then
       if (table%link_frame) then
-        do ip = 1, np
-          along(ip) = table%column_index(force_name(mech, ip)//"_along")
-        end do
-      end if
-      if (first == 1 .and. table%first_block()) then
-        if (table%link_frame) then
-          if (lang == lang_ru) then
-            call out%put(" "//link_axes_heading_ru)
-          else
-            call out%put(" "//link_axes_heading)
-          end if
-        end if
         if (lang == lang_ru) then
-          deg = "град"; newton = "Н"; newton_m = "Н*м"; metre = "м"
+          call out%put(" "//link_axes_heading_ru)
         else
-          deg = "deg"; newton = "N"; newton_m = "N*m"; metre = "m"
+          call out%put(" "//link_axes_heading)
         end if
-        line1 = ""
-        line2 = ""
-        do d = 1, nd
-          call drive_names(mech, d, input, effort)
-          line1 = line1//pad_left(upper_ascii(input), merge(first_width, field_width, d == 1))
-          line2 = line2//repeat(" ", merge(first_width, field_width, d == 1))
-        end do
-        do ip = 1, np
-          if (table%link_frame) then
-            line1 = line1//pad_left(force_name(mech, ip)//"_ALONG", field_width)
-            line2 = line2//pad_left(force_name(mech, ip)//"_ACROSS", field_width)
-          else
-            line1 = line1//pad_left(force_name(mech, ip), field_width)
-            line2 = line2//pad_left(force_name(mech, ip)//"G", field_width)
-          end if
-        end do
-        do d = 1, nd
-          call drive_names(mech, d, input, effort)
-          line1 = line1//pad_left(upper_ascii(effort), field_width)
-        end do
-        call out%put(trim(line1))
-        call out%put(trim(line2))
-        line1 = ""
-        line2 = ""
-        do d = 1, nd
-          if (mech%pairs(mech%drives(d)%pair)%kind == pair_r) then
-            line1 = line1//pad_left(deg, merge(first_width, field_width, d == 1))
-          else
-            line1 = line1//pad_left(metre, merge(first_width, field_width, d == 1))
-          end if
-          line2 = line2//repeat(" ", merge(first_width, field_width, d == 1))
-        end do
-        do ip = 1, np
-          line1 = line1//pad_left(newton, field_width)
-          if (table%link_frame) then
-            line2 = line2//pad_left(newton, field_width)
-          else
-            line2 = line2//pad_left(deg, field_width)
-          end if
-        end do
-        do d = 1, nd
-          if (mech%pairs(mech%drives(d)%pair)%kind == pair_r) then
-            line1 = line1//pad_left(newton_m, field_width)
-          else
-            line1 = line1//pad_left(newton, field_width)
-          end if
-        end do
-        call out%put(trim(line1))
-        call out%put(trim(line2))
       end if
-      do k = first, last
-        associate (v => table%rows(:, k))
-          line1 = ""
-          line2 = ""
-          do d = 1, nd
-            line1 = line1//fixed_field(v(d), merge(first_width, field_width, d == 1), &
-                                       merge(2, 4, mech%pairs(mech%drives(d)%pair)%kind == pair_r))
-            line2 = line2//repeat(" ", merge(first_width, field_width, d == 1))
-          end do
-          pos = nd
-          do ip = 1, np
-            if (table%link_frame) then
-              line1 = line1//fixed_field(v(along(ip)), field_width, 2)
-              line2 = line2//fixed_field(v(along(ip) + 1), field_width, 2)
-            else
-              line1 = line1//fixed_field(v(pos + 1), field_width, 2)
-              line2 = line2//fixed_field(v(pos + 2), field_width, 2)
-            end if
-            pos = pos + 4
-            if (mech%pairs(ip)%kind == pair_p) pos = pos + 2
-          end do
-          do d = 1, nd
-            line1 = line1//fixed_field(v(pos + d), field_width, 2)
-          end do
-          call out%put(line1)
-          call out%put(trim(line2))
-        end associate
-      end do
-    end associate
+      call put_layout_heading(out, table, fields, lang, .true.)
+    end if
+    cols = layout_columns(table, fields)
+    do k = first, last
+      call put_layout_step(out, table%rows(:, k), fields, cols)
+    end do
     if (self%deck%friction_on) then
       call drive_names(self%deck%mech, 1, input, effort)
       call write_friction_block(table, effort, table%columns(table%column_index(effort//"_0"))%unit, upper(input), &
