@@ -25,13 +25,14 @@ program kinetostat_tests
   use test_dynamics, only: run_dynamics_tests
   use test_shaking, only: run_shaking_tests
   use test_synthesis, only: run_synthesis_tests
+  use test_columns, only: run_columns_tests
   use, intrinsic :: iso_fortran_env, only: error_unit
   implicit none
   !> Suite names, in the order they run.
   character(*), parameter :: suite_names(*) = [character(len=11) :: &
     "foundation", "pr3207", "pr3050", "sixbar", "gears", "cam", "assur", "assur_ext", "friction", "io", &
     "kinematics", "svg", "decimal", "lapack", "blocks", "records", "shaking", "dynamics", "hostile", "linkage", &
-    "synthesis"]
+    "synthesis", "columns"]
   type(test_counts_t) :: t
   logical :: selected(size(suite_names))
   integer :: i
@@ -102,6 +103,7 @@ contains
     case ("blocks"); call run_blocks_tests(t)
     case ("records"); call run_records_tests(t)
     case ("shaking"); call run_shaking_tests(t)
+    case ("columns"); call run_columns_tests(t)
     case default; error stop "run_suite: no suite '"//name//"'"
     end select
   end subroutine run_suite
