@@ -1082,7 +1082,6 @@ contains
     type(text_buffer_t), intent(inout) :: later
     type(table_field_t), allocatable :: fields(:)
     integer, allocatable :: cols(:)
-    character(len=:), allocatable :: deg
     integer :: k
     fields = results_layout(self%deck, table%link_frame)
     if (first == 1 .and. table%first_block()) then
@@ -1100,15 +1099,8 @@ contains
       call put_layout_step(out, table%rows(:, k), fields, cols)
     end do
     ! the friction block follows the last row (in `later`)
-    if (self%deck%friction_on) then
-      deg = "deg"
-      if (lang == lang_ru) deg = "град"
-      if (self%deck%mech%drive_dyad > 0) then
-        call write_friction_block(table, "F_drive", "N", "PHI1", deg, phi_width, lang, later)
-      else
-        call write_friction_block(table, "M1", "N*m", "PHI1", deg, phi_width, lang, later)
-      end if
-    end if
+    if (self%deck%friction_on) call write_friction_block(table, &
+      trim(merge("F_drive", "M1     ", self%deck%mech%drive_dyad > 0)), phi_width, .true., lang, later)
   end subroutine write_results
 
 

@@ -8,8 +8,7 @@ module kinetostat_linkage_friction_table
   use kinetostat_noise, only: noise_rel
   use kinetostat_vec2, only: magnitude, clean_zero
   use kinetostat_run_tally, only: trapezoid_t
-  use kinetostat_step_table, only: step_table_t, col_moment, col_component, col_other, col_flag, col_ratio
-  use kinetostat_format, only: pad_left, fixed_field
+  use kinetostat_step_table, only: step_table_t, column, col_moment, col_component, col_other, col_flag, col_ratio
   use kinetostat_labels, only: lang_ru
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_linkage, only: linkage_t, linkage_step_t, pair_r
@@ -34,16 +33,16 @@ contains
     type(step_table_t), intent(inout) :: table
     integer :: k
     if (deck%mech%pairs(deck%mech%drives(1)%pair)%kind == pair_r) then
-      call table%add_column(effort//"_0", "N*m", col_moment)
+      call table%declare_columns([column(effort//"_0", "N*m", col_moment, heading=upper(effort)//"_0")])
     else
-      call table%add_column(effort//"_0", "N", col_component)
+      call table%declare_columns([column(effort//"_0", "N", col_component, heading=upper(effort)//"_0")])
     end if
     do k = 1, size(force_names)
-      if (deck%friction_f(k) > 0.0_wp) call table%add_column("P_loss_"//trim(force_names(k)), "W", col_other)
+      if (deck%friction_f(k) > 0.0_wp) call table%declare_columns([column("P_loss_"//trim(force_names(k)), "W", &
+                                                                         col_other, heading="P_"//trim(force_names(k)))])
     end do
-    call table%add_column("P_loss", "W", col_other)
-    call table%add_column("eta_defined", "", col_flag)
-    call table%add_column("eta", "", col_ratio)
+    call table%declare_columns([column("P_loss", "W", col_other, heading="P_LOSS"), column("eta_defined", "", col_flag), &
+                                column("eta", "", col_ratio, heading="ETA")])
   end subroutine add_friction_columns
 
   !> The friction values of a step in the order of add_friction_columns. eta = 1 - R/D (R the

@@ -328,9 +328,9 @@ contains
     do d = 1, size(mech%drives)
       call drive_names(mech, d, input, effort)
       if (mech%pairs(mech%drives(d)%pair)%kind == pair_r) then
-        cols = [cols, column(input, "deg", merge(col_input_angle, col_other, d == 1), heading=upper_ascii(input))]
+        cols = [cols, column(input, "deg", merge(col_input_angle, col_other, d == 1), heading=upper(input))]
       else
-        cols = [cols, column(input, "m", col_length, heading=upper_ascii(input))]
+        cols = [cols, column(input, "m", col_length, heading=upper(input))]
       end if
     end do
     do k = 1, size(mech%pairs)
@@ -342,9 +342,9 @@ contains
     do d = 1, size(mech%drives)
       call drive_names(mech, d, input, effort)
       if (mech%pairs(mech%drives(d)%pair)%kind == pair_r) then
-        cols = [cols, column(effort, "N*m", col_moment, heading=upper_ascii(effort))]
+        cols = [cols, column(effort, "N*m", col_moment, heading=upper(effort))]
       else
-        cols = [cols, column(effort, "N", col_component, heading=upper_ascii(effort))]
+        cols = [cols, column(effort, "N", col_component, heading=upper(effort))]
       end if
     end do
   end function linkage_columns
@@ -926,21 +926,9 @@ contains
     end do
     if (self%deck%friction_on) then
       call drive_names(self%deck%mech, 1, input, effort)
-      call write_friction_block(table, effort, table%columns(table%column_index(effort//"_0"))%unit, upper(input), &
-        "", friction_first_width, lang, later)
+      ! the input's unit is not shown under it
+      call write_friction_block(table, effort, friction_first_width, .false., lang, later)
     end if
   end subroutine write_results
-
-
-  !> Upper case of the ASCII letters ("phi1" -> "PHI1").
-  pure function upper_ascii(text) result(up)
-    character(*), intent(in) :: text
-    character(len=len(text)) :: up
-    integer :: i
-    up = text
-    do i = 1, len(text)
-      if (text(i:i) >= "a" .and. text(i:i) <= "z") up(i:i) = achar(iachar(text(i:i)) - 32)
-    end do
-  end function upper_ascii
 
 end module kinetostat_linkage_layout

@@ -7,7 +7,8 @@ module kinetostat_friction_block
   use kinetostat_kinds, only: wp
   use kinetostat_text, only: upper
   use kinetostat_step_table, only: step_table_t
-  use kinetostat_format, only: pad_left, fixed_field
+  use kinetostat_format, only: fixed_field
+  use kinetostat_table_layout, only: table_field_t, field, put_layout_heading
   use kinetostat_labels, only: lang_ru
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_vec2, only: clean_zero
@@ -25,19 +26,21 @@ module kinetostat_friction_block
 
 contains
 
-  !> Write the block's heading (first block of the run only) and its rows.
-  pure subroutine write_friction_block(table, effort, effort_unit, first_label, first_unit, first_width, lang, out)
+  !> Write the block's heading (first block of the run only) and its rows. The fields are the
+  !> run's input (column 1), the columns from <effort>_0 to eta, headed and united as they
+  !> are declared (P_<pair> ... W, P_LOSS W, <EFFORT>_0 N*m or N, ETA).
+  pure subroutine write_friction_block(table, effort, first_width, input_unit, lang, out)
     type(step_table_t), intent(in) :: table
     !> The effort's column name (M1, F_drive): its column without friction is effort//"_0".
     character(*), intent(in) :: effort
-    !> The effort's unit as the CSV has it ("N*m" or "N"); Russian: Н*м, Н.
-    character(*), intent(in) :: effort_unit
-    !> The first column's heading, its unit line and its width (the row's column 1).
-    character(*), intent(in) :: first_label, first_unit
+    !> Width of the input's field.
     integer, intent(in) :: first_width
+    !> Whether the unit line shows the input's unit.
+    logical, intent(in) :: input_unit
     integer, intent(in) :: lang
     type(text_buffer_t), intent(inout) :: out
-    character(len=:), allocatable :: line1, line2, watt, unit
+    character(len=:), allocatable :: line1
+    type(table_field_t), allocatable :: fields(:)
     integer :: k, c, first, last
     first = table%column_index(effort//"_0")
     last = table%column_index("eta")
@@ -46,25 +49,15 @@ contains
       if (lang == lang_ru) then
         call out%put(" ТРЕНИЕ: ПОТЕРИ МОЩНОСТИ В ПАРАХ, "//upper(effort)// &
                      " БЕЗ ТРЕНИЯ, МГНОВЕННЫЙ КПД")
-        watt = "Вт"
-        unit = "Н"
-        if (effort_unit == "N*m") unit = "Н*м"
       else
         call out%put(" FRICTION: POWER LOSS IN THE PAIRS, "//upper(effort)//" WITHOUT FRICTION, INSTANTANEOUS EFFICIENCY")
-        watt = "W"
-        unit = effort_unit
       end if
-      line1 = pad_left(first_label, first_width)
-      line2 = pad_left(first_unit, first_width)
-      do c = first + 1, last - 3
-        line1 = line1//pad_left("P_"//table%columns(c)%name(8:), field_width)
-        line2 = line2//pad_left(watt, field_width)
+      fields = [field(table%columns(1)%name, first_width, 2, unit=input_unit)]
+      do c = first + 1, last - 2
+        fields = [fields, field(table%columns(c)%name, field_width, 2)]
       end do
-      line1 = line1//pad_left("P_LOSS", field_width)//pad_left(upper(effort)//"_0", field_width)// &
-        pad_left("ETA", field_width)
-      line2 = line2//pad_left(watt, field_width)//pad_left(unit, field_width)
-      call out%put(line1)
-      call out%put(trim(line2))
+      fields = [fields, field(effort//"_0", field_width, 2), field("eta", field_width, 4)]
+      call put_layout_heading(out, table, fields, lang, .true.)
     end if
     do k = 1, table%row_count()
       associate (v => table%rows(:, k))

@@ -30,6 +30,8 @@ module kinetostat_table_layout
     logical :: cut = .false.
     !> The heading at the left of the field (the &assur table's N and M of prismatic pairs).
     logical :: left = .false.
+    !> Whether the unit lines show the column's unit under it.
+    logical :: unit = .true.
   end type table_field_t
 
 contains
@@ -53,7 +55,7 @@ contains
   end function force_and_angle
 
   !> A field printing column `name` on line `line` of a step, `width` wide with `decimals`.
-  pure function field(name, width, decimals, line, exponent, cut, left) result(f)
+  pure function field(name, width, decimals, line, exponent, cut, left, unit) result(f)
     !> Column name as declared.
     character(*), intent(in) :: name
     !> Width and decimals.
@@ -66,6 +68,8 @@ contains
     logical, intent(in), optional :: cut
     !> Heading at the left of the field (default false: at the right, over the value).
     logical, intent(in), optional :: left
+    !> Unit shown under the heading (default true).
+    logical, intent(in), optional :: unit
     type(table_field_t) :: f
     f%column = name
     f%width = width
@@ -74,6 +78,7 @@ contains
     if (present(exponent)) f%exponent = exponent
     if (present(cut)) f%cut = cut
     if (present(left)) f%left = left
+    if (present(unit)) f%unit = unit
   end function field
 
   !> A blank field `width` wide on line `line` (under the input angle of line 1).
@@ -156,7 +161,8 @@ contains
             line = line//repeat(" ", fields(i)%width)
             cycle
           else if (pass == 2) then
-            text = heading_unit_of(table%columns(cols(i)), lang)
+            text = ""
+            if (fields(i)%unit) text = heading_unit_of(table%columns(cols(i)), lang)
           else
             text = heading_of(table%columns(cols(i)), lang)
             if (fields(i)%cut) text = text(1:min(len(text), fields(i)%width))
