@@ -8,8 +8,9 @@ module kinetostat_gears_layout
   use kinetostat_noise, only: noise_rel, force_components
   use kinetostat_vec2, only: magnitude, angle_360_deg, snap_noise
   use kinetostat_step_table, only: worst_row
-  use kinetostat_step_table, only: step_table_t, col_count, col_length, col_ratio, col_moment, col_component, &
-    col_force, col_force_angle
+  use kinetostat_step_table, only: step_table_t, column_t, column, col_count, col_length, col_ratio, col_moment, &
+    col_component, col_force, col_force_angle
+  use kinetostat_table_layout, only: force_and_angle, heading_of, heading_unit_of
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_table_writer, only: put_heading, value_line
   use kinetostat_format, only: fixed_field
@@ -20,28 +21,14 @@ module kinetostat_gears_layout
   use kinetostat_gears_deck, only: gears_deck_t, read_gears_deck, gears_template, layout_series, layout_names
   implicit none
   private
-  public :: gears_mechanism_t, new_gears, gears_solve, gears_csv_columns, gears_csv_values
+  public :: gears_mechanism_t, new_gears, gears_solve, gears_columns, gears_csv_values
 
   !> In-plane forces with an angle column, in the order of the CSV columns.
   character(*), parameter :: force_names(*) = [character(len=3) :: "F12", "FS1", "FS2", "F23", "F2H"]
 
-  !> CSV columns (one row per stage); see docs/gears-cams.md "Gears: table and CSV".
-  character(*), parameter :: gears_csv_columns(*) = [character(len=6) :: &
-    "stage", "kind", "z1", "z2", "z3", "k", "dw1", "dw2", "u", "M1", "M2", "M2P", &
-    "Ft", "Fr1", "Fa1", "Fr2", "Fa2", "Fn", "F12", "F12G", "FS1", "FS1G", "FS2", "FS2G", &
-    "F23", "F23G", "F2H", "F2HG", "M3", "M3P"]
-  !> Units of the columns.
-  character(*), parameter :: column_units(*) = [character(len=3) :: &
-    "", "", "", "", "", "", "mm", "mm", "", "N*m", "N*m", "N*m", &
-    "N", "N", "N", "N", "N", "N", "N", "deg", "N", "deg", "N", "deg", &
-    "N", "deg", "N", "deg", "N*m", "N*m"]
-  !> Kinds of the columns.
-  integer, parameter :: column_kinds(*) = [col_count, col_count, col_count, col_count, col_count, col_count, &
-    col_length, col_length, col_ratio, col_moment, col_moment, col_moment, &
-    col_component, col_component, col_component, col_component, col_component, col_component, &
-    col_force, col_force_angle, col_force, col_force_angle, col_force, col_force_angle, &
-    col_force, col_force_angle, col_force, col_force_angle, col_moment, col_moment]
-  !> CSV positions of the torque columns (M1, M2, M2P, M3, M3P).
+  !> Number of columns of a stage's row (gears_columns).
+  integer, parameter :: row_size = 30
+  !> Positions of the torque columns in a stage's row (M1, M2, M2P, M3, M3P).
   integer, parameter :: moment_columns(*) = [10, 11, 12, 29, 30]
   !> Width and decimals of a force angle in the RESULTS block (F11.4).
   integer, parameter :: angle_width = 11, angle_decimals = 4
@@ -103,7 +90,7 @@ contains
     type(gear_result_t), allocatable :: res(:)
     integer :: i
     call gears_solve(self%deck, res)
-    call table%set_columns(gears_csv_columns, column_units, column_kinds)
+    call table%declare_columns(gears_columns())
     table%row_name = "stage"
     call table%allocate_rows(size(res), error)
     if (allocated(error)) return
@@ -151,7 +138,7 @@ contains
     type(gear_result_t), intent(in) :: res(:)
     !> Stage number.
     integer, intent(in) :: i
-    real(wp) :: v(size(gears_csv_columns))
+    real(wp) :: v(row_size)
     type(gear_stage_t) :: st
     type(gear_result_t) :: r
     real(wp) :: floor, f(2, 5)
@@ -186,6 +173,27 @@ contains
       if (abs(v(moment_columns(j))) <= floor) v(moment_columns(j)) = 0.0_wp
     end do
   end function gears_csv_values
+
+  !> The columns of a stage (one row per stage; docs/gears-cams.md "Gears: table and CSV"):
+  !> its number, kind and teeth, the pitch diameters and ratio, the torques, the mesh's force
+  !> components, the in-plane forces with their angles, the ring's torques. The RESULTS block
+  !> names a value by its column's heading.
+  pure function gears_columns() result(cols)
+    type(column_t), allocatable :: cols(:)
+    integer :: j
+    cols = [column("stage", "", col_count), column("kind", "", col_count), column("z1", "", col_count), &
+            column("z2", "", col_count), column("z3", "", col_count), column("k", "", col_count), &
+            column("dw1", "mm", col_length), column("dw2", "mm", col_length, heading="DW2"), &
+            column("u", "", col_ratio, heading="U"), column("M1", "N*m", col_moment, heading="M1"), &
+            column("M2", "N*m", col_moment), column("M2P", "N*m", col_moment), &
+            column("Ft", "N", col_component, heading="FT"), column("Fr1", "N", col_component, heading="FR1"), &
+            column("Fa1", "N", col_component, heading="FA1"), column("Fr2", "N", col_component, heading="FR2"), &
+            column("Fa2", "N", col_component, heading="FA2"), column("Fn", "N", col_component, heading="FN")]
+    do j = 1, size(force_names)
+      cols = [cols, force_and_angle(trim(force_names(j)))]
+    end do
+    cols = [cols, column("M3", "N*m", col_moment), column("M3P", "N*m", col_moment)]
+  end function gears_columns
 
   !> "STAGE i: KIND" (the stage heading of both blocks).
   pure function stage_heading(i, kind) result(text)
@@ -248,36 +256,40 @@ contains
     integer, intent(in) :: first, last
     type(text_buffer_t), intent(inout) :: out
     type(text_buffer_t), intent(inout) :: later
-    integer :: i, kind
+    integer :: i, kind, c
     do i = first, last
       associate (v => table%rows(:, i))
-        kind = nint(v(2))
+        kind = nint(val("kind"))
         call put_heading(out, echo_name(stage_heading(i, kind), lang))
-        call out%put(value_line("DW2", v(8), phrase("mm", lang)))
-        call out%put(value_line("U", v(9), ""))
-        call out%put(value_line("M1", v(10), phrase("N*m", lang)))
-        call out%put(value_line("FT", v(13), phrase("N", lang)))
-        call out%put(value_line("FR1", v(14), phrase("N", lang)))
-        call out%put(value_line("FA1", v(15), phrase("N", lang)))
-        call out%put(value_line("FR2", v(16), phrase("N", lang)))
-        call out%put(value_line("FA2", v(17), phrase("N", lang)))
-        call out%put(value_line("FN", v(18), phrase("N", lang)))
-        call out%put(vector_line("F12", v(19), v(20), lang))
-        call out%put(vector_line("FS1", v(21), v(22), lang))
-        if (kind /= gear_bevel) call out%put(vector_line("FS2", v(23), v(24), lang))
+        ! the headed values, then the in-plane forces and the torques the stage's kind has
+        do c = 1, size(table%columns)
+          if (len(table%columns(c)%heading) == 0 .or. table%columns(c)%kind == col_force .or. &
+              table%columns(c)%kind == col_force_angle) cycle
+          call out%put(value_line(heading_of(table%columns(c), lang), v(c), heading_unit_of(table%columns(c), lang)))
+        end do
+        call out%put(vector_line("F12", val("F12"), val("F12G"), lang))
+        call out%put(vector_line("FS1", val("FS1"), val("FS1G"), lang))
+        if (kind /= gear_bevel) call out%put(vector_line("FS2", val("FS2"), val("FS2G"), lang))
         if (kind == gear_planetary) then
-          call out%put(vector_line("F23", v(25), v(26), lang))
-          call out%put(vector_line("F2H", v(27), v(28), lang))
-          call out%put(value_line("M_H", v(11), phrase("N*m (carrier, from forces)", lang)))
-          call out%put(value_line(echo_name("M_H POWER", lang), v(12), phrase("N*m (M1*u_1H)", lang)))
-          call out%put(value_line(echo_name("M3 HOUSING", lang), v(29), phrase("N*m (on the ring, from forces)", lang)))
-          call out%put(value_line(echo_name("M3 BALANCE", lang), v(30), phrase("N*m (M1 - M_H)", lang)))
+          call out%put(vector_line("F23", val("F23"), val("F23G"), lang))
+          call out%put(vector_line("F2H", val("F2H"), val("F2HG"), lang))
+          call out%put(value_line("M_H", val("M2"), phrase("N*m (carrier, from forces)", lang)))
+          call out%put(value_line(echo_name("M_H POWER", lang), val("M2P"), phrase("N*m (M1*u_1H)", lang)))
+          call out%put(value_line(echo_name("M3 HOUSING", lang), val("M3"), &
+                                  phrase("N*m (on the ring, from forces)", lang)))
+          call out%put(value_line(echo_name("M3 BALANCE", lang), val("M3P"), phrase("N*m (M1 - M_H)", lang)))
         else
-          call out%put(value_line("M2", v(11), phrase("N*m (from forces)", lang)))
-          call out%put(value_line(echo_name("M2 POWER", lang), v(12), phrase("N*m (power balance)", lang)))
+          call out%put(value_line("M2", val("M2"), phrase("N*m (from forces)", lang)))
+          call out%put(value_line(echo_name("M2 POWER", lang), val("M2P"), phrase("N*m (power balance)", lang)))
         end if
       end associate
     end do
+  contains
+    !> Row i's value of the column called `name`.
+    pure real(wp) function val(name)
+      character(*), intent(in) :: name
+      val = table%rows(table%column_index(name), i)
+    end function val
   end subroutine write_results
 
 
