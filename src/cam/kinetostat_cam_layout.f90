@@ -10,10 +10,10 @@ module kinetostat_cam_layout
   use kinetostat_noise, only: noise_floor, force_components
   use kinetostat_step_table, only: worst_row
   use kinetostat_run_tally, only: flag_count_t
-  use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_component, &
-    step_span, &
+  use kinetostat_step_table, only: step_table_t, column_t, column, col_input_angle, col_component, step_span, &
     col_length, col_flag, col_ratio, col_other
-  use kinetostat_format, only: fixed_field, int_field
+  use kinetostat_table_layout, only: table_field_t, field, force_and_angle, layout_columns, put_layout_heading, &
+    fields_text
   use kinetostat_labels, only: lang_ru
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_mechanism, only: mechanism_t
@@ -22,32 +22,12 @@ module kinetostat_cam_layout
     cam_phi_deg, cam_theta_deg, cam_f2, cam_vdir, cam_x_b
   implicit none
   private
-  public :: cam_mechanism_t, new_cam, cam_solve, cam_csv_columns, cam_csv_values
+  public :: cam_mechanism_t, new_cam, cam_solve, cam_columns, cam_csv_values
 
-  !> CSV columns, one row per cam angle; see docs/gears-cams.md "Cams: table and CSV".
-  character(*), parameter :: cam_csv_columns(*) = [character(len=5) :: &
-    "phi", "theta", "xB", "F2", "vdir", "N", "F21", "F21G", "F23C", "F23CG", "F23D", "F23DG", &
-    "KF", "KF2", "JAM", "LOST"]
-  !> Forces with an angle column, in the order of the CSV columns.
+  !> Forces with an angle column, in the order of the columns.
   character(*), parameter :: force_names(*) = [character(len=4) :: "F21", "F23C", "F23D"]
-  !> Units of the columns.
-  character(*), parameter :: column_units(*) = [character(len=3) :: &
-    "deg", "deg", "m", "N", "", "N", "N", "deg", "N", "deg", "N", "deg", "", "", "", ""]
-  !> Kinds of the columns.
-  integer, parameter :: column_kinds(*) = [col_input_angle, col_other, col_length, col_component, col_flag, &
-    col_component, col_force, col_force_angle, col_force, col_force_angle, col_force, col_force_angle, &
-    col_ratio, col_flag, col_flag, col_flag]
-  !> Results header with units.
-  character(*), parameter :: header_lines(*) = [character(len=128) :: &
-    "     PHI   THETA        XB         F2  V          F21    F21G         F23C   F23CG" // &
-    "         F23D   F23DG        KF  FLAGS", &
-    "     deg     deg         m          N             N     deg            N     deg" // &
-    "            N     deg"]
-
-  !> Units line of the header in Russian.
-  character(*), parameter :: units_ru = &
-    "    град    град         м          Н             Н    град            Н    град            Н   " // &
-      " град"
+  !> Number of columns of a step's row (cam_columns).
+  integer, parameter :: row_size = 16
 
   !> Cam with a translating (knife/roller) or flat follower in a guide, manual section 7.
   type, extends(mechanism_t) :: cam_mechanism_t
@@ -114,12 +94,11 @@ contains
     call cam_solve(self%deck, steps, first, last, error)
     if (allocated(error)) return
     if (table%first_block()) then
-      call table%set_columns(cam_csv_columns, column_units, column_kinds)
-      table%input_column = 1
       ! a jammed or lost-contact step has no forces: empty in CSV, null in JSON, left out of
       ! the summary (docs/gears-cams.md)
-      table%columns(6:13)%voidable = .true.
-      table%void_flags = [15, 16]
+      call table%declare_columns(cam_columns())
+      table%input_column = 1
+      table%void_flags = [table%column_index("JAM"), table%column_index("LOST")]
       table%void_reason = "jammed or lost contact"
       table%residual_label = "MAX EQUILIBRIUM RESIDUAL OF THE FOLLOWER, ALL STEPS"
       table%mismatch_label = "MAX N MISMATCH, CLOSED FORM VS 3X3 LINEAR SOLVE"
@@ -129,7 +108,7 @@ contains
     if (allocated(error)) return
     !$omp parallel do schedule(static)
     do k = 1, size(steps)
-      table%rows(1:size(cam_csv_columns), k) = cam_csv_values(self%deck, steps(k), first - 1 + k)
+      table%rows(1:row_size, k) = cam_csv_values(self%deck, steps(k), first - 1 + k)
     end do
     !$omp end parallel do
     if (table%kinematics_wanted) then
@@ -137,7 +116,7 @@ contains
         call put_kinematics(table, k, self%deck, steps(k), first - 1 + k)
       end do
       ! the force components have no value at a void step either
-      do k = size(cam_csv_columns) + 1, size(table%columns)
+      do k = row_size + 1, size(table%columns)
         if (index(table%columns(k)%name, "F2") == 1) table%columns(k)%voidable = .true.
       end do
     end if
@@ -194,7 +173,7 @@ contains
     type(cam_step_t), intent(in) :: s
     !> Step number.
     integer, intent(in) :: k
-    real(wp) :: v(size(cam_csv_columns))
+    real(wp) :: v(row_size)
     v(1) = cam_phi_deg(deck, k)
     v(2) = cam_theta_deg(deck, k)
     v(3) = cam_x_b(deck, k)
@@ -272,19 +251,55 @@ contains
     call table%echo_real("KF_LIMIT", kf_limit, "(Reshetov)")
   end subroutine echo_deck
 
+  !> The columns of a step (one row per cam angle; docs/gears-cams.md "Cams: table and CSV"):
+  !> the cam angle, the pressure angle, the follower's position, the load F2 and the motion's
+  !> direction, the forces (no value at a jammed or lost-contact step), K_F and the flags; the
+  !> flags field of RESULTS is headed on KF2.
+  pure function cam_columns() result(cols)
+    type(column_t), allocatable :: cols(:)
+    type(column_t) :: pair(2)
+    integer :: j
+    cols = [column("phi", "deg", col_input_angle, heading="PHI"), column("theta", "deg", col_other, heading="THETA"), &
+            column("xB", "m", col_length, heading="XB"), column("F2", "N", col_component, heading="F2"), &
+            column("vdir", "", col_flag, heading="V"), column("N", "N", col_component, voidable=.true.)]
+    do j = 1, size(force_names)
+      pair = force_and_angle(trim(force_names(j)))
+      pair%voidable = .true.
+      cols = [cols, pair]
+    end do
+    cols = [cols, column("KF", "", col_ratio, heading="KF", voidable=.true.), &
+            column("KF2", "", col_flag, heading="FLAGS"), column("JAM", "", col_flag), column("LOST", "", col_flag)]
+  end function cam_columns
+
+  !> The RESULTS line of a step: the cam angle (8 wide), THETA, XB, F2, the direction V, the
+  !> forces (13 wide) with their angles (8 wide), KF, then the flags field. (The units line
+  !> gives V one place, not three: the forces' units stand two places left of their fields,
+  !> as they always did.)
+  pure function results_layout() result(fields)
+    type(table_field_t), allocatable :: fields(:)
+    integer :: j
+    fields = [field("phi", 8, 2), field("theta", 8, 3), field("xB", 10, 5), field("F2", 11, 2), &
+              field("vdir", 3, 0, whole=.true., unit_width=1)]
+    do j = 1, size(force_names)
+      fields = [fields, field(trim(force_names(j)), 13, 3), field(trim(force_names(j))//"G", 8, 2)]
+    end do
+    fields = [fields, field("KF", 10, 4), field("KF2", 7, 0)]
+  end function results_layout
+
   !> Flag text of one row: lost contact, jammed, or K_F over its limit.
-  pure function flags_text(v, lang) result(t)
-    real(wp), intent(in) :: v(:)
+  pure function flags_text(kf2, jam, lost, lang) result(t)
+    !> The row's flags KF2, JAM, LOST.
+    real(wp), intent(in) :: kf2, jam, lost
     integer, intent(in) :: lang
     character(len=:), allocatable :: t
     t = ""
-    if (v(16) /= 0.0_wp) then
+    if (lost /= 0.0_wp) then
       t = "LOST CONTACT (F2 <= 0)"
       if (lang == lang_ru) t = "ПОТЕРЯ КОНТАКТА (F2 <= 0)"
-    else if (v(15) /= 0.0_wp) then
+    else if (jam /= 0.0_wp) then
       t = "JAMMED (SELF-LOCKING)"
       if (lang == lang_ru) t = "ЗАКЛИНИВАНИЕ (САМОТОРМОЖЕНИЕ)"
-    else if (v(14) /= 0.0_wp) then
+    else if (kf2 /= 0.0_wp) then
       t = "KF>2"
     end if
   end function flags_text
@@ -299,27 +314,23 @@ contains
     integer, intent(in) :: first, last
     type(text_buffer_t), intent(inout) :: out
     type(text_buffer_t), intent(inout) :: later
-    integer :: k, i
-    character(len=:), allocatable :: line
-    if (first == 1 .and. table%first_block()) then
-      call out%put(trim(header_lines(1)))
-      if (lang == lang_ru) then
-        call out%put(units_ru)
-      else
-        call out%put(trim(header_lines(2)))
-      end if
-    end if
+    type(table_field_t), allocatable :: fields(:)
+    integer, allocatable :: cols(:)
+    integer :: k, kf2, jam, lost
+    fields = results_layout()
+    if (first == 1 .and. table%first_block()) call put_layout_heading(out, table, fields, lang, .true.)
+    cols = layout_columns(table, fields)
+    kf2 = table%column_index("KF2")
+    jam = table%column_index("JAM")
+    lost = table%column_index("LOST")
     do k = first, last
       associate (v => table%rows(:, k))
-        line = fixed_field(v(1), 8, 2)//fixed_field(v(2), 8, 3)//fixed_field(v(3), 10, 5)// &
-          fixed_field(v(4), 11, 2)//int_field(v(5), 3)
-        if (v(15) == 0.0_wp .and. v(16) == 0.0_wp) then
-          do i = 7, 11, 2
-            line = line//fixed_field(v(i), 13, 3)//fixed_field(v(i + 1), 8, 2)
-          end do
-          line = line//fixed_field(v(13), 10, 4)
+        ! a jammed or lost-contact step: its flag instead of the forces
+        if (v(jam) == 0.0_wp .and. v(lost) == 0.0_wp) then
+          call out%put(fields_text(v, fields, cols, 1, size(fields) - 1)//"  "//flags_text(v(kf2), v(jam), v(lost), lang))
+        else
+          call out%put(fields_text(v, fields, cols, 1, 5)//"  "//flags_text(v(kf2), v(jam), v(lost), lang))
         end if
-        call out%put(line//"  "//flags_text(v, lang))
       end associate
     end do
   end subroutine write_results

@@ -355,7 +355,8 @@ contains
   !> A column's declaration: its name and unit (CSV, JSON, npy), kind, and how the legacy
   !> table heads it in English and Russian. The Russian unit is the labels' dictionary's
   !> translation of `unit` unless given; the Russian heading is `heading` unless given.
-  pure function column(name, unit, kind, heading, heading_ru, unit_ru, heading_unit, heading_unit_ru, csv) result(c)
+  pure function column(name, unit, kind, heading, heading_ru, unit_ru, heading_unit, heading_unit_ru, csv, voidable) &
+    result(c)
     !> Column name (CSV header, JSON key).
     character(*), intent(in) :: name
     !> SI unit ("" when dimensionless).
@@ -372,6 +373,8 @@ contains
     character(*), intent(in), optional :: heading_unit, heading_unit_ru
     !> Whether the CSV shows it (default true).
     logical, intent(in), optional :: csv
+    !> No value at a void row (default false; see column_t%voidable).
+    logical, intent(in), optional :: voidable
     type(column_t) :: c
     c%name = name
     c%unit = unit
@@ -385,6 +388,7 @@ contains
     if (present(heading_unit)) c%heading_unit = heading_unit
     if (present(heading_unit_ru)) c%heading_unit_ru = heading_unit_ru
     if (present(csv)) c%csv = csv
+    if (present(voidable)) c%voidable = voidable
   end function column
 
   !> The Russian unit of column `c` from the labels' dictionary (not allocated when it has no

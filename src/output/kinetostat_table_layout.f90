@@ -6,13 +6,13 @@
 module kinetostat_table_layout
   use kinetostat_kinds, only: wp
   use kinetostat_step_table, only: step_table_t, column_t, column, col_force, col_force_angle
-  use kinetostat_format, only: put_fixed, exp_field, pad_left, pad_right
+  use kinetostat_format, only: put_fixed, exp_field, fixed_field, int_field, pad_left, pad_right
   use kinetostat_labels, only: lang_ru
   use kinetostat_text_buffer, only: text_buffer_t
   implicit none
   private
   public :: table_field_t, field, blank_field, layout_columns, put_layout_heading, put_layout_step, heading_of, &
-    heading_unit_of, force_and_angle
+    heading_unit_of, force_and_angle, fields_text
 
   !> One field of a step's lines in the legacy table.
   type :: table_field_t
@@ -32,6 +32,11 @@ module kinetostat_table_layout
     logical :: left = .false.
     !> Whether the unit lines show the column's unit under it.
     logical :: unit = .true.
+    !> A whole number (int_field) instead of F.
+    logical :: whole = .false.
+    !> Width the field takes in the unit lines when not `width` (0): a printout whose unit
+    !> line is narrower there keeps it, byte for byte.
+    integer :: unit_width = 0
   end type table_field_t
 
 contains
@@ -55,7 +60,7 @@ contains
   end function force_and_angle
 
   !> A field printing column `name` on line `line` of a step, `width` wide with `decimals`.
-  pure function field(name, width, decimals, line, exponent, cut, left, unit) result(f)
+  pure function field(name, width, decimals, line, exponent, cut, left, unit, whole, unit_width) result(f)
     !> Column name as declared.
     character(*), intent(in) :: name
     !> Width and decimals.
@@ -70,6 +75,10 @@ contains
     logical, intent(in), optional :: left
     !> Unit shown under the heading (default true).
     logical, intent(in), optional :: unit
+    !> A whole number (default false).
+    logical, intent(in), optional :: whole
+    !> Width in the unit lines (default `width`).
+    integer, intent(in), optional :: unit_width
     type(table_field_t) :: f
     f%column = name
     f%width = width
@@ -79,6 +88,8 @@ contains
     if (present(cut)) f%cut = cut
     if (present(left)) f%left = left
     if (present(unit)) f%unit = unit
+    if (present(whole)) f%whole = whole
+    if (present(unit_width)) f%unit_width = unit_width
   end function field
 
   !> A blank field `width` wide on line `line` (under the input angle of line 1).
@@ -143,7 +154,7 @@ contains
     integer, intent(in), optional :: unit_lines
     integer :: cols(size(fields))
     character(len=:), allocatable :: line, text
-    integer :: pass, l, i
+    integer :: pass, l, i, width
     logical :: keep
     cols = layout_columns(table, fields)
     ! pass 1: the headings; pass 2: the units
@@ -157,8 +168,10 @@ contains
         if (pass == 2 .and. present(unit_shift)) line = repeat(" ", unit_shift(l))
         do i = 1, size(fields)
           if (fields(i)%line /= l) cycle
+          width = fields(i)%width
+          if (pass == 2 .and. fields(i)%unit_width > 0) width = fields(i)%unit_width
           if (cols(i) == 0) then
-            line = line//repeat(" ", fields(i)%width)
+            line = line//repeat(" ", width)
             cycle
           else if (pass == 2) then
             text = ""
@@ -167,12 +180,12 @@ contains
             text = heading_of(table%columns(cols(i)), lang)
             if (fields(i)%cut) text = text(1:min(len(text), fields(i)%width))
             if (fields(i)%left) then
-              line = line//pad_right(text, fields(i)%width)
+              line = line//pad_right(text, width)
               keep = .true.
               cycle
             end if
           end if
-          line = line//pad_left(text, fields(i)%width)
+          line = line//pad_left(text, width)
         end do
         if (keep) then
           call out%put(line)
@@ -199,10 +212,8 @@ contains
       end do
       do i = 1, last
         if (fields(i)%line /= l) cycle
-        if (cols(i) == 0) then
-          call out%append(repeat(" ", fields(i)%width))
-        else if (fields(i)%exponent) then
-          call out%append(exp_field(v(cols(i)), fields(i)%width, fields(i)%decimals))
+        if (cols(i) == 0 .or. fields(i)%exponent .or. fields(i)%whole) then
+          call out%append(field_text(v, fields(i), cols(i)))
         else
           call put_fixed(out, v(cols(i)), fields(i)%width, fields(i)%decimals)
         end if
@@ -210,5 +221,37 @@ contains
       call out%end_line()
     end do
   end subroutine put_layout_step
+
+  !> The text of fields `from` .. `to` of a step's row, one after the other (for a layout
+  !> whose line goes on with text of its own).
+  pure function fields_text(v, fields, cols, from, to) result(text)
+    real(wp), intent(in) :: v(:)
+    type(table_field_t), intent(in) :: fields(:)
+    integer, intent(in) :: cols(:)
+    integer, intent(in) :: from, to
+    character(len=:), allocatable :: text
+    integer :: i
+    text = ""
+    do i = from, to
+      text = text//field_text(v, fields(i), cols(i))
+    end do
+  end function fields_text
+
+  !> One field's text (blank for a blank field).
+  pure function field_text(v, f, col) result(text)
+    real(wp), intent(in) :: v(:)
+    type(table_field_t), intent(in) :: f
+    integer, intent(in) :: col
+    character(len=:), allocatable :: text
+    if (col == 0) then
+      text = repeat(" ", f%width)
+    else if (f%exponent) then
+      text = exp_field(v(col), f%width, f%decimals)
+    else if (f%whole) then
+      text = int_field(v(col), f%width)
+    else
+      text = fixed_field(v(col), f%width, f%decimals)
+    end if
+  end function field_text
 
 end module kinetostat_table_layout
