@@ -10,7 +10,7 @@ module kinetostat_gears_layout
   use kinetostat_step_table, only: worst_row
   use kinetostat_step_table, only: step_table_t, column_t, column, col_count, col_length, col_ratio, col_moment, &
     col_component, col_force, col_force_angle
-  use kinetostat_table_layout, only: force_and_angle, heading_of, heading_unit_of
+  use kinetostat_table_layout, only: force_and_angle, heading_of, heading_unit_of, column_value
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_table_writer, only: put_heading, value_line
   use kinetostat_format, only: fixed_field
@@ -259,7 +259,7 @@ contains
     integer :: i, kind, c
     do i = first, last
       associate (v => table%rows(:, i))
-        kind = nint(val("kind"))
+        kind = nint(column_value(table, "kind", i))
         call put_heading(out, echo_name(stage_heading(i, kind), lang))
         ! the headed values, then the in-plane forces and the torques the stage's kind has
         do c = 1, size(table%columns)
@@ -267,29 +267,33 @@ contains
               table%columns(c)%kind == col_force_angle) cycle
           call out%put(value_line(heading_of(table%columns(c), lang), v(c), heading_unit_of(table%columns(c), lang)))
         end do
-        call out%put(vector_line("F12", val("F12"), val("F12G"), lang))
-        call out%put(vector_line("FS1", val("FS1"), val("FS1G"), lang))
-        if (kind /= gear_bevel) call out%put(vector_line("FS2", val("FS2"), val("FS2G"), lang))
+        call out%put(force_line("F12"))
+        call out%put(force_line("FS1"))
+        if (kind /= gear_bevel) call out%put(force_line("FS2"))
         if (kind == gear_planetary) then
-          call out%put(vector_line("F23", val("F23"), val("F23G"), lang))
-          call out%put(vector_line("F2H", val("F2H"), val("F2HG"), lang))
-          call out%put(value_line("M_H", val("M2"), phrase("N*m (carrier, from forces)", lang)))
-          call out%put(value_line(echo_name("M_H POWER", lang), val("M2P"), phrase("N*m (M1*u_1H)", lang)))
-          call out%put(value_line(echo_name("M3 HOUSING", lang), val("M3"), &
+          call out%put(force_line("F23"))
+          call out%put(force_line("F2H"))
+          call out%put(value_line("M_H", column_value(table, "M2", i), phrase("N*m (carrier, from forces)", lang)))
+          call out%put(value_line(echo_name("M_H POWER", lang), column_value(table, "M2P", i), &
+                                  phrase("N*m (M1*u_1H)", lang)))
+          call out%put(value_line(echo_name("M3 HOUSING", lang), column_value(table, "M3", i), &
                                   phrase("N*m (on the ring, from forces)", lang)))
-          call out%put(value_line(echo_name("M3 BALANCE", lang), val("M3P"), phrase("N*m (M1 - M_H)", lang)))
+          call out%put(value_line(echo_name("M3 BALANCE", lang), column_value(table, "M3P", i), &
+                                  phrase("N*m (M1 - M_H)", lang)))
         else
-          call out%put(value_line("M2", val("M2"), phrase("N*m (from forces)", lang)))
-          call out%put(value_line(echo_name("M2 POWER", lang), val("M2P"), phrase("N*m (power balance)", lang)))
+          call out%put(value_line("M2", column_value(table, "M2", i), phrase("N*m (from forces)", lang)))
+          call out%put(value_line(echo_name("M2 POWER", lang), column_value(table, "M2P", i), &
+                                  phrase("N*m (power balance)", lang)))
         end if
       end associate
     end do
   contains
-    !> Row i's value of the column called `name`.
-    pure real(wp) function val(name)
+    !> The vector line of in-plane force `name` of stage i (magnitude and angle columns).
+    pure function force_line(name) result(line)
       character(*), intent(in) :: name
-      val = table%rows(table%column_index(name), i)
-    end function val
+      character(len=:), allocatable :: line
+      line = vector_line(name, column_value(table, name, i), column_value(table, name//"G", i), lang)
+    end function force_line
   end subroutine write_results
 
 

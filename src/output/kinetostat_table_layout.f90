@@ -12,7 +12,8 @@ module kinetostat_table_layout
   implicit none
   private
   public :: table_field_t, field, blank_field, layout_columns, put_layout_heading, put_layout_step, heading_of, &
-    heading_unit_of, force_and_angle, fields_text
+    heading_unit_of, force_and_angle, fields_text, &
+    column_value
 
   !> One field of a step's lines in the legacy table.
   type :: table_field_t
@@ -111,6 +112,16 @@ contains
       if (len(fields(i)%column) > 0) cols(i) = table%column_index(fields(i)%column)
     end do
   end function layout_columns
+
+  !> The value of the column called `name` in row `row` (the column must exist).
+  pure real(wp) function column_value(table, name, row)
+    type(step_table_t), intent(in) :: table
+    !> Column name as declared.
+    character(*), intent(in) :: name
+    !> Row of the table.
+    integer, intent(in) :: row
+    column_value = table%rows(table%column_index(name), row)
+  end function column_value
 
   !> A column's heading in language `lang`.
   pure function heading_of(c, lang) result(text)

@@ -6,7 +6,8 @@ module kinetostat_planetary_synthesis_layout
   use kinetostat_deck, only: deck_source_t
   use kinetostat_error, only: error_t, fatal_error, exit_input
   use kinetostat_text, only: int_str
-  use kinetostat_step_table, only: step_table_t, col_count, col_ratio
+  use kinetostat_step_table, only: step_table_t, column_t, column, col_count, col_ratio
+  use kinetostat_table_layout, only: heading_of, column_value
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_table_writer, only: put_heading, value_line
   use kinetostat_format, only: full_number, int_field, pad_right, short_number
@@ -20,15 +21,6 @@ module kinetostat_planetary_synthesis_layout
   implicit none
   private
   public :: planetary_synthesis_mechanism_t, new_planetary_synthesis, planetary_columns
-
-  !> Output columns (one row): see docs/planetary-synthesis.md.
-  character(*), parameter :: planetary_columns(*) = [character(len=16) :: &
-    "z1", "z2", "z3", "k", "u_actual", "u_deviation", "assembly_number", "neighbour_margin"]
-  !> Units of the columns (teeth, ratios).
-  character(*), parameter :: column_units(*) = [character(len=1) :: "", "", "", "", "", "", "", ""]
-  !> Kinds of the columns.
-  integer, parameter :: column_kinds(*) = [col_count, col_count, col_count, col_count, col_ratio, col_ratio, &
-    col_ratio, col_ratio]
 
   !> Tooth numbers of a single-row planetary train.
   type, extends(mechanism_t) :: planetary_synthesis_mechanism_t
@@ -71,7 +63,7 @@ contains
       error%message = table%deck//": &"//table%mechanism//": "//error%message
       return
     end if
-    call table%set_columns(planetary_columns, column_units, column_kinds)
+    call table%declare_columns(planetary_columns())
     table%row_name = "train"
     table%driver = "u_actual"
     table%single_record = .true.
@@ -89,6 +81,18 @@ contains
     if (self%deck%has_m1) call table%echo_real("M1", self%deck%m1, "N*m")
   end subroutine solve
 
+  !> The columns of the one row (docs/planetary-synthesis.md): the tooth numbers and the
+  !> satellites (headed counts in RESULTS), the ratio and its deviation (headed values),
+  !> the assembly number and the neighbours' margin (in the conditions' words).
+  pure function planetary_columns() result(cols)
+    type(column_t), allocatable :: cols(:)
+    cols = [column("z1", "", col_count, heading="Z1"), column("z2", "", col_count, heading="Z2"), &
+            column("z3", "", col_count, heading="Z3"), column("k", "", col_count, heading="K"), &
+            column("u_actual", "", col_ratio, heading="U_ACTUAL"), &
+            column("u_deviation", "", col_ratio, heading="U_DEVIATION"), column("assembly_number", "", col_ratio), &
+            column("neighbour_margin", "", col_ratio)]
+  end function planetary_columns
+
   !> RESULTS: the tooth numbers and the ratio, then every condition with its numbers.
   pure subroutine write_results(self, table, lang, first, last, out, later)
     class(planetary_synthesis_mechanism_t), intent(in) :: self
@@ -102,21 +106,22 @@ contains
       "COAXIALITY", "ASSEMBLY", "NEIGHBOURS", "LEAST TEETH", "RATIO", &
       "СООСНОСТЬ", "СБОРКА", "СОСЕДСТВО", "ЗУБЬЯ", "ОТНОШЕНИЕ"], [5, 2])
     type(planetary_train_t) :: t
-    integer :: z1, z2, z3, k, l
+    integer :: z1, z2, z3, k, l, c
     character(len=:), allocatable :: met, whole
     if (first > 1 .or. last < 1) return
-    associate (v => table%rows(:, 1))
-      z1 = nint(v(1))
-      z2 = nint(v(2))
-      z3 = nint(v(3))
-      k = nint(v(4))
-      call out%put(count_line("Z1", z1))
-      call out%put(count_line("Z2", z2))
-      call out%put(count_line("Z3", z3))
-      call out%put(count_line("K", k))
-      call out%put(value_line("U_ACTUAL", v(5), ""))
-      call out%put(value_line("U_DEVIATION", v(6), ""))
-    end associate
+    z1 = nint(column_value(table, "z1", 1))
+    z2 = nint(column_value(table, "z2", 1))
+    z3 = nint(column_value(table, "z3", 1))
+    k = nint(column_value(table, "k", 1))
+    ! the headed columns: counts as whole numbers, ratios as values
+    do c = 1, size(table%columns)
+      if (len(table%columns(c)%heading) == 0) cycle
+      if (table%columns(c)%kind == col_count) then
+        call out%put(count_line(heading_of(table%columns(c), lang), nint(table%rows(c, 1))))
+      else
+        call out%put(value_line(heading_of(table%columns(c), lang), table%rows(c, 1), ""))
+      end if
+    end do
     t = train_conditions(self%deck%spec, z1, z2, z3)
     l = merge(2, 1, lang == lang_ru)
     if (l == 2) then
@@ -188,20 +193,18 @@ contains
         "torque on the sun m1 (N*m) of the &gears deck it writes")
       return
     end if
-    associate (v => table%rows(:, 1))
-      call out%put("! kinetostat deck: the forces in the planetary train chosen by a &planetary_synthesis deck")
-      call out%put("! (kinetostat --format deck): u = "//short_number(self%deck%spec%u)//" asked, u_1H = "// &
-        short_number(v(5))//".")
-      call out%put("&gears")
-      call out%put("  stage = 'planetary'")
-      call out%put("  m1    = "//full_number(self%deck%m1)//"   ! N*m, torque on the sun from its shaft")
-      call out%put("  z1    = "//int_str(nint(v(1)))//"   ! sun")
-      call out%put("  z2    = "//int_str(nint(v(2)))//"   ! planet")
-      call out%put("  z3    = "//int_str(nint(v(3)))//"   ! ring (fixed)")
-      call out%put("  k     = "//int_str(nint(v(4)))//"   ! planets")
-      call out%put("  m     = "//full_number(self%deck%m)//"   ! mm, module")
-      call out%put("/")
-    end associate
+    call out%put("! kinetostat deck: the forces in the planetary train chosen by a &planetary_synthesis deck")
+    call out%put("! (kinetostat --format deck): u = "//short_number(self%deck%spec%u)//" asked, u_1H = "// &
+      short_number(column_value(table, "u_actual", 1))//".")
+    call out%put("&gears")
+    call out%put("  stage = 'planetary'")
+    call out%put("  m1    = "//full_number(self%deck%m1)//"   ! N*m, torque on the sun from its shaft")
+    call out%put("  z1    = "//int_str(nint(column_value(table, "z1", 1)))//"   ! sun")
+    call out%put("  z2    = "//int_str(nint(column_value(table, "z2", 1)))//"   ! planet")
+    call out%put("  z3    = "//int_str(nint(column_value(table, "z3", 1)))//"   ! ring (fixed)")
+    call out%put("  k     = "//int_str(nint(column_value(table, "k", 1)))//"   ! planets")
+    call out%put("  m     = "//full_number(self%deck%m)//"   ! mm, module")
+    call out%put("/")
   end subroutine analysis_deck
 
   !> The sheet of the train (--format svg, dxf): its kinematic scheme, the picture of linear
@@ -213,10 +216,9 @@ contains
     integer, intent(in) :: at_step
     type(sheet_t), intent(out) :: sheet
     type(error_t), allocatable, intent(out) :: error
-    associate (v => table%rows(:, 1))
-      call draw_planetary_sheet(self%deck%spec, nint(v(1)), nint(v(2)), nint(v(3)), nint(v(4)), &
-        merge(self%deck%m, 0.0_wp, self%deck%has_m), table, lang, sheet)
-    end associate
+    call draw_planetary_sheet(self%deck%spec, nint(column_value(table, "z1", 1)), nint(column_value(table, "z2", 1)), &
+      nint(column_value(table, "z3", 1)), nint(column_value(table, "k", 1)), &
+      merge(self%deck%m, 0.0_wp, self%deck%has_m), table, lang, sheet)
   end subroutine design_sheet
 
 end module kinetostat_planetary_synthesis_layout
