@@ -6,12 +6,13 @@ module kinetostat_gear_geometry_layout
   use kinetostat_kinds, only: wp, rad_to_deg
   use kinetostat_deck, only: deck_source_t
   use kinetostat_error, only: error_t, fatal_error, exit_input
-  use kinetostat_text, only: int_str
-  use kinetostat_step_table, only: step_table_t, col_length, col_ratio, col_other, col_flag
+  use kinetostat_text, only: int_str, upper
+  use kinetostat_step_table, only: step_table_t, column_t, column, col_length, col_ratio, col_other, col_flag
+  use kinetostat_table_layout, only: heading_of, heading_unit_of, column_value
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_table_writer, only: put_heading, value_line
   use kinetostat_format, only: full_number, int_field, pad_right, short_number
-  use kinetostat_labels, only: phrase, lang_ru
+  use kinetostat_labels, only: lang_ru
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_sheet, only: sheet_t
   use kinetostat_gear_sheet, only: draw_gear_sheet
@@ -24,23 +25,8 @@ module kinetostat_gear_geometry_layout
   public :: gear_geometry_mechanism_t, new_gear_geometry, gear_geometry_solve, gear_geometry_columns
   public :: gear_contour_text
 
-  !> Output columns (one row): see docs/gear-geometry.md.
-  character(*), parameter :: gear_geometry_columns(*) = [character(len=13) :: &
-    "x1", "x2", "a_w", "alpha_w", "y", "delta_y", "d1", "d2", "db1", "db2", "dw1", "dw2", "da1", "da2", &
-    "df1", "df2", "s1", "s2", "sa1", "sa2", "x1_min", "x2_min", "eps_alpha", "lambda1", "lambda2", &
-    "undercut1", "undercut2", "pointed1", "pointed2", "interference1", "interference2"]
-  !> Units of the columns.
-  character(*), parameter :: column_units(*) = [character(len=3) :: &
-    "", "", "mm", "deg", "", "", "mm", "mm", "mm", "mm", "mm", "mm", "mm", "mm", &
-    "mm", "mm", "mm", "mm", "mm", "mm", "", "", "", "", "", "", "", "", "", "", ""]
-  !> Kinds of the columns.
-  integer, parameter :: column_kinds(*) = [col_ratio, col_ratio, col_length, col_other, col_ratio, col_ratio, &
-    col_length, col_length, col_length, col_length, col_length, col_length, col_length, col_length, &
-    col_length, col_length, col_length, col_length, col_length, col_length, &
-    col_ratio, col_ratio, col_ratio, col_ratio, col_ratio, &
-    col_flag, col_flag, col_flag, col_flag, col_flag, col_flag]
-  !> First flag column.
-  integer, parameter :: first_flag = 26
+  !> Number of columns of the row (gear_geometry_columns).
+  integer, parameter :: row_size = 31
 
   !> An external spur pair of involute gears with profile shift.
   type, extends(mechanism_t) :: gear_geometry_mechanism_t
@@ -118,7 +104,7 @@ contains
       error%message = table%deck//": &"//table%mechanism//": "//error%message
       return
     end if
-    call table%set_columns(gear_geometry_columns, column_units, column_kinds)
+    call table%declare_columns(gear_geometry_columns())
     table%row_name = "pair"
     table%driver = "eps_alpha"
     table%single_record = .true.
@@ -131,10 +117,40 @@ contains
     call flag_warnings(g, self%deck%pair, table)
   end subroutine solve
 
+  !> The columns of the one row (docs/gear-geometry.md), each headed in RESULTS by its name
+  !> in capitals: the shifts, the centre distance and working angle, the diameters and
+  !> thicknesses of both gears (mm), the least shifts, eps_alpha, the specific slidings, then
+  !> the blocking contour's flags (undercut, pointed teeth, interference of each gear).
+  pure function gear_geometry_columns() result(cols)
+    type(column_t), allocatable :: cols(:)
+    character(*), parameter :: lengths(*) = [character(len=3) :: "d", "db", "dw", "da", "df", "s", "sa"]
+    character(*), parameter :: flags(*) = [character(len=12) :: "undercut", "pointed", "interference"]
+    integer :: j, g
+    cols = [headed("x1", "", col_ratio), headed("x2", "", col_ratio), headed("a_w", "mm", col_length), &
+            headed("alpha_w", "deg", col_other), headed("y", "", col_ratio), headed("delta_y", "", col_ratio)]
+    do j = 1, size(lengths)
+      cols = [cols, headed(trim(lengths(j))//"1", "mm", col_length), headed(trim(lengths(j))//"2", "mm", col_length)]
+    end do
+    cols = [cols, headed("x1_min", "", col_ratio), headed("x2_min", "", col_ratio), headed("eps_alpha", "", col_ratio), &
+            headed("lambda1", "", col_ratio), headed("lambda2", "", col_ratio)]
+    do j = 1, size(flags)
+      do g = 1, 2
+        cols = [cols, headed(trim(flags(j))//achar(iachar("0") + g), "", col_flag)]
+      end do
+    end do
+  contains
+    pure function headed(name, unit, kind) result(c)
+      character(*), intent(in) :: name, unit
+      integer, intent(in) :: kind
+      type(column_t) :: c
+      c = column(name, unit, kind, heading=upper(name))
+    end function headed
+  end function gear_geometry_columns
+
   !> The output row of the geometry.
   pure function row_values(g) result(v)
     type(pair_geometry_t), intent(in) :: g
-    real(wp) :: v(size(gear_geometry_columns))
+    real(wp) :: v(row_size)
     v(1:2) = g%x
     v(3) = g%a_w
     v(4) = g%alpha_w * rad_to_deg
@@ -244,26 +260,20 @@ contains
     type(text_buffer_t), intent(inout) :: later
     integer :: c
     if (first > 1 .or. last < 1) return
-    associate (v => table%rows(:, 1))
-      do c = 1, first_flag - 1
-        call out%put(value_line(upper_name(c), v(c), phrase(trim(column_units(c)), lang)))
-      end do
-      call put_heading(out, heading(lang))
-      do c = first_flag, size(gear_geometry_columns)
-        call out%put("   "//pad_right(upper_name(c), 16)//"="//int_field(v(c), 18)//"  "//flag_word(c, v(c) /= 0.0_wp, &
-          lang))
-      end do
-    end associate
-  contains
-    pure function upper_name(c) result(name)
-      integer, intent(in) :: c
-      character(len=:), allocatable :: name
-      integer :: k
-      name = trim(gear_geometry_columns(c))
-      do k = 1, len(name)
-        if (name(k:k) >= "a" .and. name(k:k) <= "z") name(k:k) = achar(iachar(name(k:k)) - 32)
-      end do
-    end function upper_name
+    ! the values, then under their heading the blocking contour's flags in words
+    do c = 1, size(table%columns)
+      associate (col => table%columns(c))
+        if (col%kind /= col_flag .and. .not. col%kinematic) &
+          call out%put(value_line(heading_of(col, lang), table%rows(c, 1), heading_unit_of(col, lang)))
+      end associate
+    end do
+    call put_heading(out, heading(lang))
+    do c = 1, size(table%columns)
+      associate (col => table%columns(c))
+        if (col%kind == col_flag) call out%put("   "//pad_right(heading_of(col, lang), 16)//"="// &
+          int_field(table%rows(c, 1), 18)//"  "//flag_word(col%name, table%rows(c, 1) /= 0.0_wp, lang))
+      end associate
+    end do
   end subroutine write_results
 
   !> Heading of the conditions block.
@@ -277,9 +287,10 @@ contains
     end if
   end function heading
 
-  !> What flag column c means, in words (broken or kept).
-  pure function flag_word(c, broken, lang) result(text)
-    integer, intent(in) :: c
+  !> What flag column `name` (undercut1, pointed2, interference1, ...) means, in words
+  !> (broken or kept).
+  pure function flag_word(name, broken, lang) result(text)
+    character(*), intent(in) :: name
     logical, intent(in) :: broken
     integer, intent(in) :: lang
     character(len=:), allocatable :: text
@@ -291,11 +302,12 @@ contains
       "ИНТЕРФЕРЕНЦИЯ ЗУБЬЕВ КОЛЕСА"], [3, 2])
     character(*), parameter :: answers(2, 2) = reshape([character(len=10) :: &
       ": YES", ": NO", ": ЕСТЬ", ": НЕТ"], [2, 2])
-    character(len=1) :: n
-    integer :: l
-    n = achar(iachar("1") + mod(c - first_flag, 2))
+    integer :: l, w
     l = merge(2, 1, lang == lang_ru)
-    text = trim(words(min((c - first_flag) / 2, 2) + 1, l))//" "//n//trim(answers(merge(1, 2, broken), l))
+    w = 3
+    if (index(name, "undercut") == 1) w = 1
+    if (index(name, "pointed") == 1) w = 2
+    text = trim(words(w, l))//" "//name(len(name):)//trim(answers(merge(1, 2, broken), l))
   end function flag_word
 
   !> The matching analysis deck: a `&gears` spur stage of this pair (working pitch diameter
@@ -310,21 +322,21 @@ contains
         "torque on gear 1 (N*m) of the &gears deck it writes")
       return
     end if
-    associate (v => table%rows(:, 1))
-      call out%put("! kinetostat deck: the forces in the mesh of the spur pair designed by a &gear_geometry")
-      call out%put("! deck (kinetostat --format deck): z1 = "//int_str(self%deck%pair%z1)//", z2 = "// &
-        int_str(self%deck%pair%z2)//", m = "//short_number(self%deck%pair%m)//" mm, x1 = "//short_number(v(1))// &
-        ", x2 = "//short_number(v(2))//", a_w = "//short_number(v(3))//" mm.")
-      call out%put("! The pitch diameter of the mesh is the working one (dw1), its angle alpha_w.")
-      call out%put("&gears")
-      call out%put("  stage   = 'spur'")
-      call out%put("  m1      = "//full_number(self%deck%m1)//"   ! N*m, torque on gear 1 from its shaft")
-      call out%put("  z1      = "//int_str(self%deck%pair%z1))
-      call out%put("  z2      = "//int_str(self%deck%pair%z2))
-      call out%put("  dw1     = "//full_number(v(11))//"   ! mm, working pitch diameter of gear 1")
-      call out%put("  alpha_w = "//full_number(v(4))//"   ! deg, working pressure angle")
-      call out%put("/")
-    end associate
+    call out%put("! kinetostat deck: the forces in the mesh of the spur pair designed by a &gear_geometry")
+    call out%put("! deck (kinetostat --format deck): z1 = "//int_str(self%deck%pair%z1)//", z2 = "// &
+      int_str(self%deck%pair%z2)//", m = "//short_number(self%deck%pair%m)//" mm, x1 = "// &
+      short_number(column_value(table, "x1", 1))// &
+      ", x2 = "//short_number(column_value(table, "x2", 1))//", a_w = "// &
+      short_number(column_value(table, "a_w", 1))//" mm.")
+    call out%put("! The pitch diameter of the mesh is the working one (dw1), its angle alpha_w.")
+    call out%put("&gears")
+    call out%put("  stage   = 'spur'")
+    call out%put("  m1      = "//full_number(self%deck%m1)//"   ! N*m, torque on gear 1 from its shaft")
+    call out%put("  z1      = "//int_str(self%deck%pair%z1))
+    call out%put("  z2      = "//int_str(self%deck%pair%z2))
+    call out%put("  dw1     = "//full_number(column_value(table, "dw1", 1))//"   ! mm, working pitch diameter of gear 1")
+    call out%put("  alpha_w = "//full_number(column_value(table, "alpha_w", 1))//"   ! deg, working pressure angle")
+    call out%put("/")
   end subroutine analysis_deck
 
   !> The sheet of the pair (--format svg, dxf): the meshing drawing, the blocking contour with
@@ -336,7 +348,8 @@ contains
     integer, intent(in) :: at_step
     type(sheet_t), intent(out) :: sheet
     type(error_t), allocatable, intent(out) :: error
-    call draw_gear_sheet(self%deck%pair, pair_geometry(self%deck%pair, table%rows(1, 1), table%rows(2, 1)), table, &
+    call draw_gear_sheet(self%deck%pair, pair_geometry(self%deck%pair, column_value(table, "x1", 1), &
+      column_value(table, "x2", 1)), table, &
       lang, sheet)
   end subroutine design_sheet
 
