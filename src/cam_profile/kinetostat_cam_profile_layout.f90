@@ -6,11 +6,11 @@ module kinetostat_cam_profile_layout
   use kinetostat_kinds, only: wp, deg_to_rad, rad_to_deg
   use kinetostat_deck, only: deck_source_t
   use kinetostat_error, only: error_t, fatal_error, exit_input, exit_usage
-  use kinetostat_text, only: int_str
-  use kinetostat_step_table, only: step_table_t, col_input_angle, col_length, col_other, step_span
+  use kinetostat_text, only: int_str, upper
+  use kinetostat_step_table, only: step_table_t, column_t, column, col_input_angle, col_length, col_other, step_span
+  use kinetostat_table_layout, only: heading_of, heading_unit_of
   use kinetostat_text_buffer, only: text_buffer_t
-  use kinetostat_format, only: fixed_field, full_number, short_number, exp_field
-  use kinetostat_labels, only: label
+  use kinetostat_format, only: fixed_field, full_number, short_number, exp_field, pad_left
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_sheet, only: sheet_t
   use kinetostat_cam_sheet, only: draw_cam_sheet, cam_sheet_step
@@ -21,10 +21,6 @@ module kinetostat_cam_profile_layout
   implicit none
   private
   public :: cam_profile_mechanism_t, new_cam_profile, cam_profile_size, cam_profile_row
-
-  !> Columns of every follower (a roller adds rho_pitch after rho).
-  character(*), parameter :: base_columns(*) = [character(len=9) :: "phi", "s", "ds", "d2s", "v", "a", "theta", &
-    "rho", "x_pitch", "y_pitch", "x_profile", "y_profile"]
 
   !> A disc cam for a follower's law of motion.
   type, extends(mechanism_t) :: cam_profile_mechanism_t
@@ -101,7 +97,7 @@ contains
     end if
     call table%block_range(self%deck%n, first, last)
     if (table%first_block()) then
-      call set_columns(design, table)
+      call table%declare_columns(cam_profile_columns(design))
       table%input_column = 1
       ! the SUMMARY block's extremes: the pressure angle (a roller) or the flat face's radius
       table%driver = "theta"
@@ -137,29 +133,32 @@ contains
     call table%set_selfcheck(residual, mismatch, table%driver, 0, 0)
   end subroutine solve
 
-  !> The columns of the design's follower, with their units (a roller adds rho_pitch).
-  pure subroutine set_columns(design, table)
+  !> The columns of the design's follower, each headed in RESULTS by its name in capitals:
+  !> the cam angle, the follower's motion and its transfer functions (an oscillating
+  !> follower's in deg and per rad), the pressure angle, the radius of curvature (and a
+  !> roller's pitch curve's, rho_pitch), the pitch curve and the profile.
+  pure function cam_profile_columns(design) result(cols)
     type(cam_design_t), intent(in) :: design
-    type(step_table_t), intent(inout) :: table
-    character(len=9) :: names(13)
-    character(len=8) :: units(13)
-    integer :: kinds(13), n
-    names = [character(len=9) :: base_columns(1:8), "rho_pitch", base_columns(9:12)]
+    type(column_t), allocatable :: cols(:)
     if (design%follower == follower_oscillating) then
-      units = [character(len=8) :: "deg", "deg", "", "1/rad", "rad/s", "rad/s^2", "deg", "m", "m", "m", "m", "m", "m"]
-      kinds = [col_input_angle, col_other, col_other, col_other, col_other, col_other, col_other, &
-        (col_length, n = 1, 6)]
+      cols = [headed("phi", "deg", col_input_angle), headed("s", "deg", col_other), headed("ds", "", col_other), &
+              headed("d2s", "1/rad", col_other), headed("v", "rad/s", col_other), headed("a", "rad/s^2", col_other)]
     else
-      units = [character(len=8) :: "deg", "m", "m/rad", "m/rad^2", "m/s", "m/s^2", "deg", "m", "m", "m", "m", "m", "m"]
-      kinds = [col_input_angle, col_length, col_other, col_other, col_other, col_other, col_other, &
-        (col_length, n = 1, 6)]
+      cols = [headed("phi", "deg", col_input_angle), headed("s", "m", col_length), headed("ds", "m/rad", col_other), &
+              headed("d2s", "m/rad^2", col_other), headed("v", "m/s", col_other), headed("a", "m/s^2", col_other)]
     end if
-    if (design%follower == follower_flat) then
-      call table%set_columns([names(1:8), names(10:13)], [units(1:8), units(10:13)], [kinds(1:8), kinds(10:13)])
-    else
-      call table%set_columns(names, units, kinds)
-    end if
-  end subroutine set_columns
+    cols = [cols, headed("theta", "deg", col_other), headed("rho", "m", col_length)]
+    if (design%follower /= follower_flat) cols = [cols, headed("rho_pitch", "m", col_length)]
+    cols = [cols, headed("x_pitch", "m", col_length), headed("y_pitch", "m", col_length), &
+            headed("x_profile", "m", col_length), headed("y_profile", "m", col_length)]
+  contains
+    pure function headed(name, unit, kind) result(c)
+      character(*), intent(in) :: name, unit
+      integer, intent(in) :: kind
+      type(column_t) :: c
+      c = column(name, unit, kind, heading=upper(name))
+    end function headed
+  end function cam_profile_columns
 
   !> The cam's size and extremes over the whole turn as the run's summary records.
   pure subroutine put_sizes(design, table)
@@ -252,14 +251,15 @@ contains
     character(len=:), allocatable :: line
     nc = size(table%columns)
     if (first == 1 .and. table%first_block()) then
-      line = "     PHI"
+      ! the input's unit 5 places in, not right-aligned, as the table always had it
+      line = pad_left(heading_of(table%columns(1), lang), 8)
       do c = 2, nc
-        line = line//pad_left13(upper(table%columns(c)%name))
+        line = line//pad_left(heading_of(table%columns(c), lang), 13)
       end do
       call out%put(line)
-      line = "     "//label(table%columns(1)%unit, lang)
+      line = "     "//heading_unit_of(table%columns(1), lang)
       do c = 2, nc
-        line = line//pad_left13(label(table%columns(c)%unit, lang))
+        line = line//pad_left(heading_unit_of(table%columns(c), lang), 13)
       end do
       call out%put(line)
     end if
@@ -272,27 +272,6 @@ contains
         call out%put(line)
       end associate
     end do
-  contains
-    pure function pad_left13(t) result(r)
-      character(*), intent(in) :: t
-      character(len=:), allocatable :: r
-      integer :: w, length, i
-      length = 0
-      do i = 1, len(t)
-        if (iachar(t(i:i)) < 128 .or. iachar(t(i:i)) >= 192) length = length + 1
-      end do
-      w = max(0, 13 - length)
-      r = repeat(" ", w)//t
-    end function pad_left13
-    pure function upper(t) result(r)
-      character(*), intent(in) :: t
-      character(len=len(t)) :: r
-      integer :: i
-      r = t
-      do i = 1, len(t)
-        if (r(i:i) >= "a" .and. r(i:i) <= "z") r(i:i) = achar(iachar(r(i:i)) - 32)
-      end do
-    end function upper
   end subroutine write_results
 
   !> The matching analysis deck: a `&cam` deck of the follower's forces at the same cam
@@ -319,7 +298,7 @@ contains
     call cam_profile_size(self%deck, design, error)
     if (allocated(error)) return
     n = table%row_count()
-    associate (ds => table%rows(3, 1:n), theta => table%rows(7, 1:n))
+    associate (ds => table%rows(table%column_index("ds"), 1:n), theta => table%rows(table%column_index("theta"), 1:n))
       tol = 1.0e-12_wp * maxval(abs(ds))
       vdir = 0.0_wp
       where (ds > tol) vdir = 1.0_wp

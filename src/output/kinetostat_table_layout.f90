@@ -138,7 +138,9 @@ contains
     integer, intent(in) :: lang
     character(len=:), allocatable :: text
     if (lang == lang_ru) then
-      text = c%unit_ru
+      ! undeclared (test_columns finds it): the English unit rather than nothing
+      text = c%unit
+      if (allocated(c%unit_ru)) text = c%unit_ru
       if (allocated(c%heading_unit_ru)) text = c%heading_unit_ru
     else
       text = c%unit
