@@ -14,8 +14,8 @@ module kinetostat_assur_layout
   use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_component, col_length, &
     step_span, &
     col_moment, col_other, col_flag, col_ratio
-  use kinetostat_table_layout, only: table_field_t, field, blank_field, layout_columns, put_layout_heading, &
-    put_layout_step
+  use kinetostat_table_layout, only: table_field_t, field, blank_field, put_layout_heading, &
+    put_layout_rows
   use kinetostat_labels, only: lang_ru
   use kinetostat_friction_block, only: write_friction_block
   use kinetostat_text_buffer, only: text_buffer_t
@@ -1081,8 +1081,6 @@ contains
     type(text_buffer_t), intent(inout) :: out
     type(text_buffer_t), intent(inout) :: later
     type(table_field_t), allocatable :: fields(:)
-    integer, allocatable :: cols(:)
-    integer :: k
     fields = results_layout(self%deck, table%link_frame)
     if (first == 1 .and. table%first_block()) then
       if (table%link_frame) then
@@ -1094,10 +1092,7 @@ contains
       end if
       call put_layout_heading(out, table, fields, lang, .true., unit_lines=2)
     end if
-    cols = layout_columns(table, fields)
-    do k = first, last
-      call put_layout_step(out, table%rows(:, k), fields, cols)
-    end do
+    call put_layout_rows(out, table, fields, first, last)
     ! the friction block follows the last row (in `later`)
     if (self%deck%friction_on) call write_friction_block(table, &
       trim(merge("F_drive", "M1     ", self%deck%mech%drive_dyad > 0)), phi_width, .true., lang, later)

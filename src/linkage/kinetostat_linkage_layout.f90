@@ -12,8 +12,8 @@ module kinetostat_linkage_layout
   use kinetostat_vec2, only: magnitude, angle_360_deg, clean_zero, rotate
   use kinetostat_step_table, only: step_table_t, column_t, column, col_input_angle, col_component, col_moment, &
     col_length, col_other
-  use kinetostat_table_layout, only: table_field_t, field, blank_field, force_and_angle, layout_columns, &
-    put_layout_heading, put_layout_step
+  use kinetostat_table_layout, only: table_field_t, field, blank_field, force_and_angle, &
+    put_layout_heading, put_layout_rows
   use kinetostat_labels, only: lang_ru, lang_en
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_friction_block, only: write_friction_block
@@ -906,9 +906,7 @@ contains
     type(text_buffer_t), intent(inout) :: out
     type(text_buffer_t), intent(inout) :: later
     type(table_field_t), allocatable :: fields(:)
-    integer, allocatable :: cols(:)
     character(len=:), allocatable :: input, effort
-    integer :: k
     fields = results_layout(self%deck%mech, table%link_frame)
     if (first == 1 .and. table%first_block()) then
       if (table%link_frame) then
@@ -920,10 +918,7 @@ contains
       end if
       call put_layout_heading(out, table, fields, lang, .true.)
     end if
-    cols = layout_columns(table, fields)
-    do k = first, last
-      call put_layout_step(out, table%rows(:, k), fields, cols)
-    end do
+    call put_layout_rows(out, table, fields, first, last)
     if (self%deck%friction_on) then
       call drive_names(self%deck%mech, 1, input, effort)
       ! the input's unit is not shown under it

@@ -11,7 +11,7 @@ module kinetostat_table_layout
   use kinetostat_text_buffer, only: text_buffer_t
   implicit none
   private
-  public :: table_field_t, field, blank_field, layout_columns, put_layout_heading, put_layout_step, heading_of, &
+  public :: table_field_t, field, blank_field, layout_columns, put_layout_heading, put_layout_step, put_layout_rows, heading_of, &
     heading_unit_of, force_and_angle, fields_text, &
     column_value
 
@@ -208,6 +208,20 @@ contains
       end do
     end do
   end subroutine put_layout_heading
+
+  !> The lines of rows `first` .. `last` of the table (put_layout_step of each).
+  pure subroutine put_layout_rows(out, table, fields, first, last)
+    type(text_buffer_t), intent(inout) :: out
+    type(step_table_t), intent(in) :: table
+    type(table_field_t), intent(in) :: fields(:)
+    integer, intent(in) :: first, last
+    integer :: cols(size(fields))
+    integer :: k
+    cols = layout_columns(table, fields)
+    do k = first, last
+      call put_layout_step(out, table%rows(:, k), fields, cols)
+    end do
+  end subroutine put_layout_rows
 
   !> The lines of one step: every field of line 1, then of line 2, ... (`cols` from
   !> layout_columns); blank fields at the end of a line are left out.

@@ -11,8 +11,8 @@ module kinetostat_pr3050_layout
   use kinetostat_step_table, only: worst_row
   use kinetostat_step_table, only: step_table_t, column_t, column, col_input_angle, col_component, step_span, &
     col_moment, col_length, col_other
-  use kinetostat_table_layout, only: table_field_t, field, force_and_angle, layout_columns, put_layout_heading, &
-    put_layout_step
+  use kinetostat_table_layout, only: table_field_t, field, force_and_angle, put_layout_heading, &
+    put_layout_rows
   use kinetostat_labels, only: lang_ru
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_table_writer, only: put_heading
@@ -349,16 +349,12 @@ contains
     type(text_buffer_t), intent(inout) :: out
     type(text_buffer_t), intent(inout) :: later
     type(table_field_t), allocatable :: fields(:), pair(:)
-    integer, allocatable :: cols(:)
     integer :: k
     fields = results_layout()
     pair = pair_layout()
     ! in Russian the units are in the legend under the rows
     if (first == 1 .and. table%first_block()) call put_layout_heading(out, table, fields, lang, lang /= lang_ru)
-    cols = layout_columns(table, fields)
-    do k = first, last
-      call put_layout_step(out, table%rows(:, k), fields, cols)
-    end do
+    call put_layout_rows(out, table, fields, first, last)
     ! the prismatic pair's block follows the last row of the first (in `later`)
     if (first == 1 .and. table%first_block()) then
       if (lang == lang_ru) then
@@ -370,10 +366,7 @@ contains
       end if
       call put_layout_heading(later, table, pair, lang, .true.)
     end if
-    cols = layout_columns(table, pair)
-    do k = first, last
-      call put_layout_step(later, table%rows(:, k), pair, cols)
-    end do
+    call put_layout_rows(later, table, pair, first, last)
   end subroutine write_results
 
   !> Rocker angle of step `k` from the first step, (k - 1)*dphi3, deg.

@@ -10,8 +10,8 @@ module kinetostat_pr3207_layout
   use kinetostat_step_table, only: worst_row
   use kinetostat_step_table, only: step_table_t, column_t, column, col_input_angle, col_moment, step_span
   use kinetostat_labels, only: lang_ru
-  use kinetostat_table_layout, only: table_field_t, field, blank_field, force_and_angle, layout_columns, &
-    put_layout_heading, put_layout_step
+  use kinetostat_table_layout, only: table_field_t, field, blank_field, force_and_angle, &
+    put_layout_heading, put_layout_rows
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_sketch, only: sketch_t
@@ -345,16 +345,11 @@ contains
     type(text_buffer_t), intent(inout) :: out
     type(text_buffer_t), intent(inout) :: later
     type(table_field_t), allocatable :: fields(:)
-    integer, allocatable :: cols(:)
-    integer :: k
     fields = results_layout()
     ! the Russian printout's angle units stand one place right of their fields
     if (first == 1 .and. table%first_block()) call put_layout_heading(out, table, fields, lang, .true., &
       unit_shift=[0, merge(1, 0, lang == lang_ru)])
-    cols = layout_columns(table, fields)
-    do k = first, last
-      call put_layout_step(out, table%rows(:, k), fields, cols)
-    end do
+    call put_layout_rows(out, table, fields, first, last)
   end subroutine write_results
 
   !> The moving links: crank 1 (its mass at the pivot A, no inertia given), lever 3 at S3,

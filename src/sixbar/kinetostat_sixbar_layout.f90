@@ -9,8 +9,8 @@ module kinetostat_sixbar_layout
   use kinetostat_noise, only: noise_floor, force_columns, force_components, angles_pm180
   use kinetostat_step_table, only: worst_row
   use kinetostat_step_table, only: step_table_t, column_t, column, col_input_angle, col_component, step_span, col_moment
-  use kinetostat_table_layout, only: table_field_t, field, blank_field, force_and_angle, layout_columns, &
-    put_layout_heading, put_layout_step
+  use kinetostat_table_layout, only: table_field_t, field, blank_field, force_and_angle, &
+    put_layout_heading, put_layout_rows
   use kinetostat_labels, only: lang_ru
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_mechanism, only: mechanism_t
@@ -438,8 +438,6 @@ contains
     type(text_buffer_t), intent(inout) :: out
     type(text_buffer_t), intent(inout) :: later
     type(table_field_t), allocatable :: fields(:)
-    integer, allocatable :: cols(:)
-    integer :: k
     if (lang == lang_ru) then
       call write_results_ru(table, first, last, out, later)
       return
@@ -447,10 +445,7 @@ contains
     fields = results_layout(.true.)
     ! the angles' units stand one place right of their fields, as they always did
     if (first == 1 .and. table%first_block()) call put_layout_heading(out, table, fields, lang, .true., unit_shift=[0, 1])
-    cols = layout_columns(table, fields)
-    do k = first, last
-      call put_layout_step(out, table%rows(:, k), fields, cols)
-    end do
+    call put_layout_rows(out, table, fields, first, last)
   end subroutine write_results
 
   !> RESULTS as appendix 2 prints them (--lang ru): the original's header and dotted rules,
@@ -462,18 +457,13 @@ contains
     type(text_buffer_t), intent(inout) :: out
     type(text_buffer_t), intent(inout) :: later
     type(table_field_t), allocatable :: fields(:), moment(:)
-    integer, allocatable :: cols(:), moment_cols(:)
-    integer :: k
     fields = results_layout(.false.)
     moment = [field("phi1", 9, 2), field("M1", 12, 3)]
     if (first == 1 .and. table%first_block()) then
       call put_layout_heading(out, table, fields, lang_ru, .false.)
       call out%put(dotted_rule)
     end if
-    cols = layout_columns(table, fields)
-    do k = first, last
-      call put_layout_step(out, table%rows(:, k), fields, cols)
-    end do
+    call put_layout_rows(out, table, fields, first, last)
     ! the closing rule, the legend and the moment block follow the last row (in `later`)
     if (first == 1 .and. table%first_block()) then
       call later%put(dotted_rule)
@@ -481,10 +471,7 @@ contains
       call put_heading(later, moment_heading_ru)
       call put_layout_heading(later, table, moment, lang_ru, .true.)
     end if
-    moment_cols = layout_columns(table, moment)
-    do k = first, last
-      call put_layout_step(later, table%rows(:, k), moment, moment_cols)
-    end do
+    call put_layout_rows(later, table, moment, first, last)
   end subroutine write_results_ru
 
   !> The moving links: crank 1, connecting rod 2, rocker 3, link 4 and slider 5 (translating),
