@@ -214,7 +214,7 @@ contains
     type(motion_t), allocatable :: motions(:)
     integer, allocatable :: slots(:)
     real(wp) :: crank
-    integer :: k, c, ip, nv, nc, np, first, last, nrow, first_bad, stat
+    integer :: k, nv, nc, np, first, last, nrow, first_bad, stat
     logical :: kinematics
     call table%block_range(self%deck%n, first, last)
     nrow = last - first + 1
@@ -1081,6 +1081,7 @@ contains
     type(text_buffer_t), intent(inout) :: out
     type(text_buffer_t), intent(inout) :: later
     type(table_field_t), allocatable :: fields(:)
+    allocate (fields(0)) ! defined before the assignment (gcc's -Wuninitialized on the descriptor)
     fields = results_layout(self%deck, table%link_frame)
     if (first == 1 .and. table%first_block()) then
       if (table%link_frame) then

@@ -317,6 +317,7 @@ contains
     type(table_field_t), allocatable :: fields(:)
     integer, allocatable :: cols(:)
     integer :: k, kf2, jam, lost
+    allocate (fields(0)) ! defined before the assignment (gcc's -Wuninitialized on the descriptor)
     fields = results_layout()
     if (first == 1 .and. table%first_block()) call put_layout_heading(out, table, fields, lang, .true.)
     cols = layout_columns(table, fields)

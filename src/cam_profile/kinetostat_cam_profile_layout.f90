@@ -8,7 +8,7 @@ module kinetostat_cam_profile_layout
   use kinetostat_error, only: error_t, fatal_error, exit_input, exit_usage
   use kinetostat_text, only: int_str, upper
   use kinetostat_step_table, only: step_table_t, column_t, column, col_input_angle, col_length, col_other, step_span
-  use kinetostat_table_layout, only: heading_of, heading_unit_of
+  use kinetostat_table_layout, only: heading_of, heading_unit_of, headed => named_column
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_format, only: fixed_field, full_number, short_number, exp_field, pad_left
   use kinetostat_mechanism, only: mechanism_t
@@ -151,13 +151,6 @@ contains
     if (design%follower /= follower_flat) cols = [cols, headed("rho_pitch", "m", col_length)]
     cols = [cols, headed("x_pitch", "m", col_length), headed("y_pitch", "m", col_length), &
             headed("x_profile", "m", col_length), headed("y_profile", "m", col_length)]
-  contains
-    pure function headed(name, unit, kind) result(c)
-      character(*), intent(in) :: name, unit
-      integer, intent(in) :: kind
-      type(column_t) :: c
-      c = column(name, unit, kind, heading=upper(name))
-    end function headed
   end function cam_profile_columns
 
   !> The cam's size and extremes over the whole turn as the run's summary records.

@@ -8,7 +8,7 @@ module kinetostat_gear_geometry_layout
   use kinetostat_error, only: error_t, fatal_error, exit_input
   use kinetostat_text, only: int_str, upper
   use kinetostat_step_table, only: step_table_t, column_t, column, col_length, col_ratio, col_other, col_flag
-  use kinetostat_table_layout, only: heading_of, heading_unit_of, column_value
+  use kinetostat_table_layout, only: heading_of, heading_unit_of, column_value, headed => named_column
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_table_writer, only: put_heading, value_line
   use kinetostat_format, only: full_number, int_field, pad_right, short_number
@@ -138,13 +138,6 @@ contains
         cols = [cols, headed(trim(flags(j))//achar(iachar("0") + g), "", col_flag)]
       end do
     end do
-  contains
-    pure function headed(name, unit, kind) result(c)
-      character(*), intent(in) :: name, unit
-      integer, intent(in) :: kind
-      type(column_t) :: c
-      c = column(name, unit, kind, heading=upper(name))
-    end function headed
   end function gear_geometry_columns
 
   !> The output row of the geometry.
@@ -263,15 +256,18 @@ contains
     ! the values, then under their heading the blocking contour's flags in words
     do c = 1, size(table%columns)
       associate (col => table%columns(c))
-        if (col%kind /= col_flag .and. .not. col%kinematic) &
+        if (col%kind /= col_flag .and. .not. col%kinematic) then
           call out%put(value_line(heading_of(col, lang), table%rows(c, 1), heading_unit_of(col, lang)))
+        end if
       end associate
     end do
     call put_heading(out, heading(lang))
     do c = 1, size(table%columns)
       associate (col => table%columns(c))
-        if (col%kind == col_flag) call out%put("   "//pad_right(heading_of(col, lang), 16)//"="// &
-          int_field(table%rows(c, 1), 18)//"  "//flag_word(col%name, table%rows(c, 1) /= 0.0_wp, lang))
+        if (col%kind == col_flag) then
+          call out%put("   "//pad_right(heading_of(col, lang), 16)//"="//int_field(table%rows(c, 1), 18)//"  "// &
+            flag_word(col%name, table%rows(c, 1) /= 0.0_wp, lang))
+        end if
       end associate
     end do
   end subroutine write_results

@@ -907,6 +907,7 @@ contains
     type(text_buffer_t), intent(inout) :: later
     type(table_field_t), allocatable :: fields(:)
     character(len=:), allocatable :: input, effort
+    allocate (fields(0)) ! defined before the assignment (gcc's -Wuninitialized on the descriptor)
     fields = results_layout(self%deck%mech, table%link_frame)
     if (first == 1 .and. table%first_block()) then
       if (table%link_frame) then

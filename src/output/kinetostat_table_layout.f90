@@ -9,11 +9,12 @@ module kinetostat_table_layout
   use kinetostat_format, only: put_fixed, exp_field, fixed_field, int_field, pad_left, pad_right
   use kinetostat_labels, only: lang_ru
   use kinetostat_text_buffer, only: text_buffer_t
+  use kinetostat_text, only: upper
   implicit none
   private
   public :: table_field_t, field, blank_field, layout_columns, put_layout_heading, put_layout_step, put_layout_rows, heading_of, &
     heading_unit_of, force_and_angle, fields_text, &
-    column_value
+    column_value, named_column
 
   !> One field of a step's lines in the legacy table.
   type :: table_field_t
@@ -41,6 +42,18 @@ module kinetostat_table_layout
   end type table_field_t
 
 contains
+
+  !> A column headed in the legacy table by its name in capitals ("eps_alpha": EPS_ALPHA).
+  pure function named_column(name, unit, kind) result(c)
+    !> Column name.
+    character(*), intent(in) :: name
+    !> Unit ("" when dimensionless).
+    character(*), intent(in) :: unit
+    !> col_* kind.
+    integer, intent(in) :: kind
+    type(column_t) :: c
+    c = column(name, unit, kind, heading=upper(name))
+  end function named_column
 
   !> The two columns of a pair force: its magnitude `name` (N) and its angle `name`G (deg),
   !> headed by their names; `angle_unit` is the unit under the angle's heading when not deg

@@ -349,7 +349,7 @@ contains
     type(text_buffer_t), intent(inout) :: out
     type(text_buffer_t), intent(inout) :: later
     type(table_field_t), allocatable :: fields(:), pair(:)
-    integer :: k
+    allocate (fields(0)) ! defined before the assignment (gcc's -Wuninitialized on the descriptor)
     fields = results_layout()
     pair = pair_layout()
     ! in Russian the units are in the legend under the rows

@@ -345,6 +345,7 @@ contains
     type(text_buffer_t), intent(inout) :: out
     type(text_buffer_t), intent(inout) :: later
     type(table_field_t), allocatable :: fields(:)
+    allocate (fields(0)) ! defined before the assignment (gcc's -Wuninitialized on the descriptor)
     fields = results_layout()
     ! the Russian printout's angle units stand one place right of their fields
     if (first == 1 .and. table%first_block()) call put_layout_heading(out, table, fields, lang, .true., &

@@ -442,6 +442,7 @@ contains
       call write_results_ru(table, first, last, out, later)
       return
     end if
+    allocate (fields(0)) ! defined before the assignment (gcc's -Wuninitialized on the descriptor)
     fields = results_layout(.true.)
     ! the angles' units stand one place right of their fields, as they always did
     if (first == 1 .and. table%first_block()) call put_layout_heading(out, table, fields, lang, .true., unit_shift=[0, 1])
@@ -457,6 +458,7 @@ contains
     type(text_buffer_t), intent(inout) :: out
     type(text_buffer_t), intent(inout) :: later
     type(table_field_t), allocatable :: fields(:), moment(:)
+    allocate (fields(0)) ! defined before the assignment (gcc's -Wuninitialized on the descriptor)
     fields = results_layout(.false.)
     moment = [field("phi1", 9, 2), field("M1", 12, 3)]
     if (first == 1 .and. table%first_block()) then
