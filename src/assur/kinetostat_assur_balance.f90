@@ -19,11 +19,11 @@ module kinetostat_assur_balance
   use kinetostat_kinds, only: wp, deg_to_rad, rad_to_deg
   use kinetostat_error, only: error_t, fatal_error, exit_usage, exit_geometry
   use kinetostat_text, only: int_str
-  use kinetostat_format, only: full_number, short_number
-  use kinetostat_labels, only: lang_ru, unit_symbol, balance_words => in_language
-  use kinetostat_override, only: override_t, append_override
-  use kinetostat_least_squares, only: least_squares
+  use kinetostat_labels, only: balance_words => in_language
+  use kinetostat_override, only: override_t
   use kinetostat_text_buffer, only: text_buffer_t
+  use kinetostat_counterweights, only: balance_full, balance_crank, balance_partial, balance_method_names, &
+    fit_full_balance, report_full_balance, report_partial_balance, counterweight_note, add_counterweight_assignments
   use kinetostat_assur_kinematics, only: link_state_t, dyad_pose_t, kind_rrr, kind_rrp
   use kinetostat_assur, only: assur_kinematics, link_a, link_b
   use kinetostat_assur_deck, only: assur_deck_t, assur_phi1_deg
@@ -31,20 +31,8 @@ module kinetostat_assur_balance
   private
   public :: assur_balance, balance_full, balance_crank, balance_partial, balance_method_names, balance_words
 
-  !> --method full: the shaking force vanishes (Berkof-Lowen).
-  integer, parameter :: balance_full = 1
-  !> --method crank: the crank's own centre of mass on its pivot.
-  integer, parameter :: balance_crank = 2
-  !> --method partial: a slider-crank's rotating mass and a fraction of its reciprocating mass.
-  integer, parameter :: balance_partial = 3
-  !> The method names, in the order of their codes.
-  character(*), parameter :: balance_method_names(*) = [character(len=7) :: "full", "crank", "partial"]
-
   !> Crank angles of the sample turn (every 5 deg).
   integer, parameter :: sample_count = 72
-  !> Full balance exists when the least-squares residual of the first moment is at most this
-  !> times its unbalanced variation.
-  real(wp), parameter :: balance_rel = 1.0e-9_wp
   !> A link's origin is fixed when it moves by at most this times the mechanism's size.
   real(wp), parameter :: fixed_rel = 1.0e-12_wp
 
@@ -74,12 +62,7 @@ contains
     real(wp), allocatable :: w_new(:, :)
     logical, allocatable :: carries(:)
     real(wp) :: pin(2), m_rec, m_rot, share, omega
-    !> Units of the report.
-    character(len=:), allocatable :: kg, m, n_unit
 
-    kg = unit_symbol("kg", lang)
-    m = unit_symbol("m", lang)
-    n_unit = unit_symbol("N", lang)
     allocate (overrides(0))
     nl = 2 * size(deck%mech%dyads) + 1
     allocate (w_new(2, nl), source=0.0_wp)
@@ -103,43 +86,8 @@ contains
         carries(1) = .true.
         omega = abs(deck%omega1_const)
         if (deck%prescribed) omega = abs(deck%omega1_values(1))
-        if (lang == lang_ru) then
-          call report%put("частичное уравновешивание кривошипно-ползунного "// &
-            "механизма (диада "//int_str(d)// &
-            "): масса кривошипа, вращающаяся масса "//short_number(m_rot)//" "//kg//" и "// &
-              "доля "// &
-            short_number(fraction)//" возвратно-поступательно движущейся "// &
-              "массы "//short_number(m_rec)//" "//kg// &
-            " на радиусе кривошипа "//short_number(norm2(pin))//" "//m)
-          call report%put("  (масса шатуна разнесена в две точки: доля "//short_number(share)// &
-            " в шарнире ползуна)")
-          call report%put("  сила инерции первого порядка (первая гармоника, "// &
-            "m_rec*r*omega1^2 = "// &
-            short_number(m_rec * norm2(pin) * omega**2)//" "//n_unit//" при omega1 = "//short_number(omega)//" "// &
-            unit_symbol("rad/s", lang)//"): вдоль направляющей "//short_number(m_rec * norm2(pin) * omega**2)// &
-            " "//n_unit//" до "// &
-              "уравновешивания, "//short_number((1.0_wp - fraction) * m_rec * norm2(pin) * omega**2)// &
-            " "//n_unit//" после; поперек направляющей 0 до, "// &
-            short_number(fraction * m_rec * norm2(pin) * omega**2)//" "//n_unit//" после")
-          call report%put("  сила инерции второго порядка (вторая гармоника, "// &
-            "m_rec*r*omega1^2*r/l): "// &
-            short_number(m_rec * norm2(pin) * omega**2 * norm2(pin) / deck%mech%dyads(d)%geom%l2)//" "//n_unit// &
-            " вдоль направляющей, не меняется (противовес на кривошипе "// &
-              "вращается с угловой скоростью omega1)")
-        else
-          call report%put("partial balance of the slider-crank (dyad "//int_str(d)//"): the crank's own mass, the "// &
-            "rotating mass "//short_number(m_rot)//" kg and "//short_number(fraction)//" of the reciprocating mass "// &
-            short_number(m_rec)//" kg at the crank radius "//short_number(norm2(pin))//" m")
-          call report%put("  (rod as two masses: "//short_number(share)//" of it at the slider's pin)")
-          call report%put("  primary component (first harmonic, m_rec*r*omega1^2 = "// &
-            short_number(m_rec * norm2(pin) * omega**2)//" N at omega1 = "//short_number(omega)//" rad/s): along the "// &
-            "guide "//short_number(m_rec * norm2(pin) * omega**2)//" N before, "// &
-            short_number((1.0_wp - fraction) * m_rec * norm2(pin) * omega**2)//" N after; across the guide 0 before, "// &
-            short_number(fraction * m_rec * norm2(pin) * omega**2)//" N after")
-          call report%put("  secondary component (second harmonic, m_rec*r*omega1^2*r/l): "// &
-            short_number(m_rec * norm2(pin) * omega**2 * norm2(pin) / deck%mech%dyads(d)%geom%l2)// &
-            " N along the guide, unchanged (a crank counterweight turns at omega1 only)")
-        end if
+        call report_partial_balance(report, lang, " (dyad "//int_str(d)//")", " (диада "//int_str(d)//")", m_rot, &
+          m_rec, fraction, share, norm2(pin), deck%mech%dyads(d)%geom%l2, omega)
       end associate
     case default
       call full_balance(deck, lang, w_new, carries, report, error)
@@ -165,10 +113,10 @@ contains
     type(text_buffer_t), intent(inout) :: report
     type(error_t), allocatable, intent(out) :: error
     type(link_state_t), allocatable :: states(:, :)
-    real(wp), allocatable :: a(:, :), b(:), x(:), moment(:, :)
+    real(wp), allocatable :: x(:), moment(:, :), theta(:, :), own(:, :), mass(:)
     integer, allocatable :: pivoted(:)
     integer :: nl, ns, i, k, j, nu
-    real(wp) :: size_scale, mean(2), unbalanced, residual, r(2)
+    real(wp) :: size_scale
 
     call sample_states(deck, states, error)
     if (allocated(error)) return
@@ -186,11 +134,6 @@ contains
       end do
     end do
     if (.not. size_scale > 0.0_wp) size_scale = 1.0_wp
-    mean = sum(moment, dim=2) / real(ns, wp)
-    unbalanced = 0.0_wp
-    do k = 1, ns
-      unbalanced = max(unbalanced, norm2(moment(:, k) - mean))
-    end do
     allocate (pivoted(0))
     do i = 1, nl
       if (maxval(abs(states(i, :)%o(1) - states(i, 1)%o(1))) > fixed_rel * size_scale) cycle
@@ -199,55 +142,12 @@ contains
           maxval(abs(sin(states(i, :)%th) - sin(states(i, 1)%th))) < 1.0e-9_wp) cycle
       pivoted = [pivoted, i]
     end do
-    if (.not. unbalanced > 0.0_wp) then
-      call report%put(balance_words("full balance: the total centre of mass does not move (nothing to balance)", &
-        "полное статическое уравновешивание: общий центр масс "// &
-          "неподвижен (уравновешивать нечего)", lang))
-      return
-    end if
-    ! unknowns: w of each pivoted link (x, y), then the constant C (x, y)
-    nu = 2 * size(pivoted) + 2
-    allocate (a(2 * ns, nu), b(2 * ns), x(nu))
-    do k = 1, ns
-      b(2 * k - 1:2 * k) = -moment(:, k)
-      do j = 1, size(pivoted)
-        i = pivoted(j)
-        associate (l => deck%mech%links(i), st => states(i, k))
-          b(2 * k - 1:2 * k) = b(2 * k - 1:2 * k) + l%m * turned(st%th, l%s)
-          a(2 * k - 1:2 * k, 2 * j - 1) = turned(st%th, [1.0_wp, 0.0_wp])
-          a(2 * k - 1:2 * k, 2 * j) = turned(st%th, [0.0_wp, 1.0_wp])
-        end associate
-      end do
-      a(2 * k - 1:2 * k, nu - 1) = [-1.0_wp, 0.0_wp]
-      a(2 * k - 1:2 * k, nu) = [0.0_wp, -1.0_wp]
-    end do
-    call least_squares(a, b, x, error)
-    if (allocated(error)) then
-      call fatal_error(error, exit_geometry, "full balance: the counterweights are not determined (the links "// &
-        "pivoted on the frame move together); balance the crank alone (--method crank)")
-      return
-    end if
-    residual = 0.0_wp
-    do k = 1, ns
-      r = -moment(:, k)
-      do j = 1, size(pivoted)
-        associate (l => deck%mech%links(pivoted(j)), st => states(pivoted(j), k))
-          r = r + l%m * turned(st%th, l%s) - turned(st%th, x(2 * j - 1:2 * j))
-        end associate
-      end do
-      residual = max(residual, norm2(r + x(nu - 1:nu)))
-    end do
-    if (residual > balance_rel * unbalanced) then
-      call fatal_error(error, exit_geometry, "full balance is impossible: counterweights on the links pivoted on "// &
-        "the frame leave "//short_number(residual / unbalanced * 100.0_wp)//" % of the centre of mass's travel "// &
-        "(a link whose origin moves, such as a slider on the frame, cannot be balanced by them); "// &
-        "use --method partial [--fraction F] (a slider-crank) or --method crank")
-      return
-    end if
-    do j = 1, size(pivoted)
-      w_new(:, pivoted(j)) = x(2 * j - 1:2 * j)
-      carries(pivoted(j)) = .true.
-    end do
+    theta = states%th
+    own = reshape([(deck%mech%links(i)%s, i = 1, nl)], [2, nl])
+    mass = deck%mech%links(1:nl)%m
+    call fit_full_balance(moment, theta, mass, own, pivoted, lang, report, w_new, carries, x, error)
+    if (allocated(error) .or. .not. allocated(x)) return
+    nu = size(x)
     ! C is the total first moment but for the counterweights' own m_c o (o: the fixed origin)
     do j = 1, size(pivoted)
       associate (l => deck%mech%links(pivoted(j)))
@@ -255,14 +155,7 @@ contains
           states(pivoted(j), 1)%o
       end associate
     end do
-    call report%put(balance_words("full balance (linearly independent vectors): counterweights on the "// &
-      int_str(size(pivoted))//" links pivoted on the frame; the total centre of mass stays at (", &
-      "полное статическое уравновешивание (метод линейно независимых "// &
-        "векторов): противовесы на "// &
-      int_str(size(pivoted))//" звеньях, вращающихся вокруг неподвижных осей; "// &
-        "общий центр масс неподвижен в точке (", &
-      lang)//short_number(x(nu - 1) / total_mass()) //", "//short_number(x(nu) / total_mass())//") "// &
-      unit_symbol("m", lang))
+    call report_full_balance(report, lang, size(pivoted), x(nu - 1:nu) / total_mass())
   contains
     !> The mass of the moving links after balancing: the centre of mass C / M needs it.
     pure real(wp) function total_mass()
@@ -360,7 +253,6 @@ contains
         s_deck = ref(i)%o + turned(ref(i)%th, s_new)
       end if
       if (i == 1) then
-        prefix = "crank_"
         mname = "crank_m"
         jname = "crank_j"
         sname = "crank_s"
@@ -370,26 +262,10 @@ contains
         jname = prefix//merge("j2", "j3", mod(i, 2) == 0)
         sname = prefix//merge("s2", "s3", mod(i, 2) == 0)
       end if
-      if (lang == lang_ru) then
-        note = "противовес на звене "//int_str(l%id)//": "//short_number(mc)//" "//unit_symbol("kg", lang)// &
-          " на радиусе r = "//short_number(radius)//" "//unit_symbol("m", lang)//", "//short_number(angle)//" "// &
-          unit_symbol("deg", lang)//" в осях звена (m*r = "//short_number(mc * radius)//" "// &
-          unit_symbol("kg", lang)//"·"//unit_symbol("m", lang)//")"
-      else
-        note = "counterweight on link "//int_str(l%id)//": "//short_number(mc)//" kg at r = "// &
-          short_number(radius)//" m, "//short_number(angle)//" deg in the link's axes (m*r = "// &
-          short_number(mc * radius)//" kg*m)"
-      end if
-      call append_override(overrides, mname, full_number(m_new)//"   ! "//note//"; kinetostat balance --method "// &
-        trim(balance_method_names(method)))
-      call append_override(overrides, jname, full_number(j_new))
-      call append_override(overrides, sname, full_number(s_deck(1))//", "//full_number(s_deck(2)))
-      call report%put(note)
-      call report%put("  "//mname//" "//short_number(l%m)//" -> "//short_number(m_new)//" "// &
-        unit_symbol("kg", lang)//", "//jname//" "//short_number(l%j)//" -> "//short_number(j_new)//" "// &
-        unit_symbol("kg*m^2", lang)//balance_words(", centre of mass (", ", центр масс (", lang)// &
-        short_number(l%s(1))//", "//short_number(l%s(2))//") -> ("//short_number(s_new(1))//", "// &
-        short_number(s_new(2))//") "//unit_symbol("m", lang)//balance_words(" in the link's axes", " в осях звена", lang))
+      note = counterweight_note(lang, l%id, mc, radius, angle, "in the link's axes", "в осях звена")
+      call add_counterweight_assignments(overrides, report, lang, method, note, &
+        mname, jname, sname, l%m, m_new, l%j, j_new, l%s, s_new, s_deck, &
+        " in the link's axes", " в осях звена")
     end associate
   end subroutine add_counterweight
 

@@ -20,10 +20,12 @@
 !> The driver is the crank's balancing moment M1, or a linear actuator's force F_drive (the
 !> input link's motion prescribed): friction in the actuator's own pair is a pair like any other.
 module kinetostat_assur_friction
-  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use kinetostat_kinds, only: wp
-  use kinetostat_error, only: error_t, fatal_error, exit_geometry
-  use kinetostat_text, only: int_str, real_str
+  use kinetostat_error, only: error_t
+  use kinetostat_text, only: real_str
+  use kinetostat_pair_friction, only: friction_tolerance, friction_max_iterations, friction_zero_rel, roundoff_rel, &
+    sign_floor_rel, friction_load, relative, note_pair_changes, reverses_at_rest, self_locking_error, &
+    friction_iteration_t
   use kinetostat_vec2, only: perp, magnitude
   use kinetostat_selfcheck, only: link_balance_t, balance_add_force, balance_add_couple, equilibrium_residual, &
     power_mismatch
@@ -35,24 +37,6 @@ module kinetostat_assur_friction
   private
   public :: pair_friction_t, friction_step_t, assur_friction_step, friction_active
   public :: friction_tolerance, friction_max_iterations, friction_zero_rel
-
-  !> Convergence tolerance of the coupled solve: every reaction (pair forces, prismatic pair
-  !> moments, M1) to this relative accuracy (estimated from the contraction of the iteration).
-  real(wp), parameter :: friction_tolerance = 1.0e-12_wp
-  !> Iteration limit of the coupled solve.
-  integer, parameter :: friction_max_iterations = 1000
-  !> A relative analogue at or below this fraction of its scale counts as zero (no friction).
-  real(wp), parameter :: friction_zero_rel = 1.0e-10_wp
-  !> Consecutive growing changes after which the iteration counts as diverging.
-  integer, parameter :: diverging_after = 20
-  !> Roundoff floor of a reaction's change, relative to the step's largest reaction.
-  real(wp), parameter :: roundoff_rel = 1.0e-14_wp
-  !> A frictionless driving effort below this, relative to the size of the effort the
-  !> step's loads make (assur_step_t's load_scale), has no sign in the self-locking test:
-  !> roundoff (M1 = -8.9e-15 N*m under loads of 100 N) is zero, not a reversal.
-  real(wp), parameter :: sign_floor_rel = 1.0e-12_wp
-  !> A change at or below this is roundoff: the iteration has reached its fixed point.
-  real(wp), parameter :: roundoff_change = 4.0_wp * epsilon(1.0_wp)
 
   !> Friction data of one pair.
   type :: pair_friction_t
@@ -191,7 +175,7 @@ contains
     type(link_balance_t), intent(out) :: extra(0:)
     real(wp), intent(out) :: power, scale
     real(wp), intent(out) :: effort(:), rate(:)
-    real(wp) :: q, normal
+    real(wp) :: q
     integer :: ip
     power = 0.0_wp
     scale = 0.0_wp
@@ -200,13 +184,8 @@ contains
     do ip = 1, size(pg)
       if (.not. friction(ip)%f > 0.0_wp) cycle
       associate (g => pg(ip))
-        if (g%prismatic) then
-          normal = abs(step%n(ip))
-          if (friction(ip)%span > 0.0_wp) normal = max(normal, 2.0_wp * abs(step%m(ip)) / friction(ip)%span)
-          q = friction(ip)%f * normal
-        else
-          q = friction(ip)%f * friction(ip)%r * magnitude(step%f(:, ip))
-        end if
+        q = friction_load(friction(ip)%f, friction(ip)%r, friction(ip)%span, g%prismatic, step%f(:, ip), &
+          step%n(ip), step%m(ip))
         effort(ip) = q
         if (g%sense == 0.0_wp) cycle
         rate(ip) = q * abs(g%rel)
@@ -232,7 +211,7 @@ contains
     real(wp), intent(in) :: length
     real(wp), intent(out) :: change
     integer, intent(out) :: where
-    real(wp) :: fmax, floor, c
+    real(wp) :: fmax, floor
     integer :: ip
     fmax = 0.0_wp
     do ip = 1, size(new%f, 2)
@@ -242,27 +221,8 @@ contains
     change = max(relative(abs(new%m1 - old%m1), max(abs(new%m1), floor * length)), &
                  relative(abs(new%f_drive - old%f_drive), max(abs(new%f_drive), floor)))
     where = 0
-    do ip = 1, size(new%f, 2)
-      c = max(relative(magnitude(new%f(:, ip) - old%f(:, ip)), max(magnitude(new%f(:, ip)), floor)), &
-              relative(abs(new%m(ip) - old%m(ip)), max(abs(new%m(ip)), floor * length)))
-      if (.not. c <= change) then
-        change = c
-        where = ip
-      end if
-    end do
+    call note_pair_changes(old%f, new%f, old%m, new%m, floor, length, change, where)
   end subroutine largest_change
-
-  !> num / den, 0 when num is 0 (also for den = 0), huge when only den is 0.
-  pure real(wp) function relative(num, den)
-    real(wp), intent(in) :: num, den
-    if (.not. num > 0.0_wp) then
-      relative = 0.0_wp
-    else if (den > 0.0_wp) then
-      relative = num / den
-    else
-      relative = huge(1.0_wp)
-    end if
-  end function relative
 
   !> Kinetostatics with friction at one input position: the step of kinetostat_assur with
   !> the friction loads of every pair, iterated from the frictionless solution until every
@@ -300,10 +260,11 @@ contains
     type(link_balance_t) :: balances(0:2 * size(mech%dyads) + 1)
     type(pair_geometry_t), allocatable :: pg(:)
     type(assur_step_t) :: old
-    real(wp) :: power_used, scale_used, power_final, scale_final, change, previous, q, length, roundoff_driver, ds
+    type(friction_iteration_t) :: iteration
+    real(wp) :: power_used, scale_used, power_final, scale_final, change, length, roundoff_driver, ds
     real(wp), allocatable :: effort(:), rate(:)
-    integer :: it, where, np, i, growing
-    logical :: converged, actuator
+    integer :: it, where, np, i
+    logical :: done, actuator
 
     call assur_step(mech, phi1, omega1, eps1, f_mag, m_mag, step, error)
     if (allocated(error)) return
@@ -325,35 +286,19 @@ contains
     ! a frictionless driving effort at roundoff level has no sign (self-locking test below)
     roundoff_driver = max(roundoff_rel * step%power_scale / abs(ds), sign_floor_rel * step%load_scale)
     fs%motion_sign = s
-    previous = 0.0_wp
-    q = 0.0_wp
-    change = 0.0_wp
     where = 0
-    converged = .false.
-    growing = 0
     do it = 1, friction_max_iterations
       call friction_loads(friction, pg, states, step, s, used, power_used, scale_used, effort, rate)
       old = step
       call assur_step(mech, phi1, omega1, eps1, f_mag, m_mag, step, error, used, power_used, scale_used, balances)
       if (allocated(error)) return
       call largest_change(old, step, length, change, where)
-      fs%iterations = it
-      if (.not. ieee_is_finite(change)) exit
-      ! contraction factor q of the iteration; the remaining error is about q/(1-q)*change
-      if (it > 1 .and. previous > 0.0_wp) q = change / previous
-      previous = change
-      converged = change <= roundoff_change .or. &
-                  (it > 1 .and. q < 1.0_wp .and. change * max(1.0_wp, q / (1.0_wp - q)) <= friction_tolerance)
-      if (converged) exit
-      growing = merge(growing + 1, 0, q >= 1.0_wp)
-      if (growing >= diverging_after) exit
+      call iteration%next(it, change, done)
+      if (done) exit
     end do
-    if (.not. converged) then
-      call fatal_error(error, exit_geometry, "friction: the coupled solve of reactions and friction loads "// &
-        trim(merge("diverges         ", "does not converge", growing >= diverging_after))//" ("// &
-        int_str(fs%iterations)//" iterations, last relative change "//real_str(change)//" in "// &
-        pair_text(friction, where)//", contraction factor "//real_str(q)//"): friction too large for this "// &
-        "position (jamming: the factor reaches 1)")
+    fs%iterations = iteration%iterations
+    if (.not. iteration%converged) then
+      call iteration%failure(pair_text(friction, where), error)
       return
     end if
 
@@ -380,13 +325,12 @@ contains
     fs%p_loss = fs%rate_total * abs(omega1)
 
     ! self-locking: the input at rest and friction reverses the driving effort
-    if (omega1 == 0.0_wp .and. abs(fs%driver_frictionless) > roundoff_driver .and. driver_of(step) /= 0.0_wp .and. &
-        sign(1.0_wp, driver_of(step)) /= sign(1.0_wp, fs%driver_frictionless)) then
-      call fatal_error(error, exit_geometry, "friction: self-locking with the input at rest: friction reverses "// &
-        "the driving effort ("//driver_text(actuator, fs%driver_frictionless)//" without friction, "// &
-        driver_text(actuator, driver_of(step))//" with it; largest friction load in "// &
-        pair_text(friction, maxloc(rate, 1))//")")
-      return
+    if (omega1 == 0.0_wp) then
+      if (reverses_at_rest(fs%driver_frictionless, driver_of(step), roundoff_driver)) then
+        call self_locking_error(driver_text(actuator, fs%driver_frictionless), driver_text(actuator, driver_of(step)), &
+          pair_text(friction, maxloc(rate, 1)), error)
+        return
+      end if
     end if
 
     ! a sliding pair's reported reaction is the whole reaction: its normal force (kept in

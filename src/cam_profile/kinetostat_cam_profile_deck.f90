@@ -7,8 +7,7 @@ module kinetostat_cam_profile_deck
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str, lower
   use kinetostat_deck, only: begin_group, text_bytes, text_chars, deck_context_t, unset_real, deck_source_t, namelist_probe_t, &
-    deck_error, is_set, require_set, require_positive, require_nonnegative, require_rule, optional_default, &
-    count_values, max_steps
+    deck_error, is_set, optional_default, max_steps, deck_rules_t
   use kinetostat_cam_profile, only: cam_design_t, cam_segment_t, law_names, law_dwell, follower_names, &
     follower_flat, follower_roller, follower_oscillating
   implicit none
@@ -75,6 +74,7 @@ contains
     integer :: n, i, code, given
     character(len=:), allocatable :: at
     type(deck_context_t) :: ctx
+    type(deck_rules_t) :: rules
     type(namelist_probe_t) :: probe
     namelist /cam_profile/ law, beta, lift, follower, offset, arm, pivot, roller_radius, pressure_angle_max, &
       pressure_angle_max_return, rho_min, omega, step, l, l_over, f, f2, f_cam
@@ -125,14 +125,13 @@ contains
         return
       end if
     end if
-    call count_values(ctx, "beta", beta, given, error); if (allocated(error)) return
-    call require_rule(ctx, "beta", given == n, "expected "//int_str(n)//" values (one per segment of law), got "// &
-      int_str(given), error)
-    if (allocated(error)) return
-    call count_values(ctx, "lift", lift, given, error); if (allocated(error)) return
-    call require_rule(ctx, "lift", given == n, "expected "//int_str(n)//" values (one per segment of law), got "// &
-      int_str(given), error)
-    if (allocated(error)) return
+    rules%ctx = ctx
+    call rules%count_values("beta", beta, given)
+    call rules%require_rule("beta", given == n, "expected "//int_str(n)//" values (one per segment of law), got "// &
+      int_str(given))
+    call rules%count_values("lift", lift, given)
+    call rules%require_rule("lift", given == n, "expected "//int_str(n)//" values (one per segment of law), got "// &
+      int_str(given))
     allocate (deck%design%seg(n), deck%lift_given(n))
     scale = 1.0_wp
     if (deck%design%follower == follower_oscillating) scale = deg_to_rad
@@ -141,165 +140,141 @@ contains
     do i = 1, n
       at = "("//int_str(i)//")"
       code = findloc(law_names, lower(trim(adjustl(law(i)))), dim=1)
-      if (code == 0) then
-        call deck_error(ctx, "law"//at, "must be 'dwell', 'constant_velocity', 'parabolic', 'harmonic', "// &
-          "'cycloidal' or 'poly345' (got '"//trim(law(i))//"')", error)
-        return
-      end if
-      call require_rule(ctx, "beta"//at, beta(i) > 0.0_wp .and. beta(i) <= 360.0_wp, "must be in (0, 360] deg "// &
-        "(got "//real_str(beta(i))//")", error)
-      if (allocated(error)) return
-      call require_rule(ctx, "lift"//at, code /= law_dwell .or. lift(i) == 0.0_wp, "must be 0 for a 'dwell' (got "// &
-        real_str(lift(i))//")", error)
-      if (allocated(error)) return
-      call require_rule(ctx, "lift"//at, abs(lift(i)) <= 1.0e3_wp, "must be within -1000 .. 1000 (got "// &
-        real_str(lift(i))//")", error)
-      if (allocated(error)) return
+      call rules%require_rule("law"//at, code /= 0, "must be 'dwell', 'constant_velocity', 'parabolic', "// &
+        "'harmonic', 'cycloidal' or 'poly345' (got '"//trim(law(i))//"')")
+      if (rules%failed(error)) return
+      call rules%require_rule("beta"//at, beta(i) > 0.0_wp .and. beta(i) <= 360.0_wp, "must be in (0, 360] deg "// &
+        "(got "//real_str(beta(i))//")")
+      call rules%require_rule("lift"//at, code /= law_dwell .or. lift(i) == 0.0_wp, "must be 0 for a 'dwell' (got "// &
+        real_str(lift(i))//")")
+      call rules%require_rule("lift"//at, abs(lift(i)) <= 1.0e3_wp, "must be within -1000 .. 1000 (got "// &
+        real_str(lift(i))//")")
       deck%design%seg(i) = cam_segment_t(law=code, beta=beta(i) * deg_to_rad, lift=lift(i) * scale, &
         phi0=sum(beta(1:i - 1)) * deg_to_rad, s0=s)
       deck%lift_given(i) = lift(i)
       s = s + lift(i) * scale
       s_lowest = min(s_lowest, s)
     end do
-    call require_rule(ctx, "beta", abs(sum(beta(1:n)) - 360.0_wp) <= 1.0e-9_wp, "must add up to 360 deg, one "// &
-      "turn (got "//real_str(sum(beta(1:n)))//")", error)
-    if (allocated(error)) return
-    call require_rule(ctx, "lift", abs(s) <= 1.0e-9_wp * maxval(abs(lift(1:n) * scale)), "must add up to 0: the "// &
-      "follower returns to its start over a turn (got "//real_str(sum(lift(1:n)))//")", error)
-    if (allocated(error)) return
-    call require_rule(ctx, "lift", s_lowest >= -1.0e-9_wp * maxval(abs(lift(1:n) * scale)), "the follower "// &
-      "must start at its lowest position (a fall before the first rise goes below it: put a rise first)", error)
-    if (allocated(error)) return
-    call require_rule(ctx, "lift", maxval(abs(lift(1:n))) > 0.0_wp, "the follower must move: give a rise", error)
-    if (allocated(error)) return
+    call rules%require_rule("beta", abs(sum(beta(1:n)) - 360.0_wp) <= 1.0e-9_wp, "must add up to 360 deg, one "// &
+      "turn (got "//real_str(sum(beta(1:n)))//")")
+    call rules%require_rule("lift", abs(s) <= 1.0e-9_wp * maxval(abs(lift(1:n) * scale)), "must add up to 0: the "// &
+      "follower returns to its start over a turn (got "//real_str(sum(lift(1:n)))//")")
+    call rules%require_rule("lift", s_lowest >= -1.0e-9_wp * maxval(abs(lift(1:n) * scale)), "the follower "// &
+      "must start at its lowest position (a fall before the first rise goes below it: put a rise first)")
+    call rules%require_rule("lift", maxval(abs(lift(1:n))) > 0.0_wp, "the follower must move: give a rise")
+    if (rules%failed(error)) return
 
     ! the follower's geometry
     select case (deck%design%follower)
     case (follower_flat)
-      call not_for(ctx, "offset", offset, "a flat face's axis passes through the cam's centre", error)
-      if (allocated(error)) return
-      call not_for(ctx, "roller_radius", roller_radius, "a flat face has no roller", error)
-      if (allocated(error)) return
-      call not_for(ctx, "arm", arm, "only an oscillating follower has an arm", error); if (allocated(error)) return
-      call not_for(ctx, "pivot", pivot(1), "only an oscillating follower has a pivot", error)
-      if (allocated(error)) return
-      call not_for(ctx, "pressure_angle_max", pressure_angle_max, "a flat face's pressure angle is 0", error)
-      if (allocated(error)) return
-      call not_for(ctx, "pressure_angle_max_return", pressure_angle_max_return, "a flat face's pressure angle is 0", &
-        error)
-      if (allocated(error)) return
-      call require_positive(ctx, "rho_min", rho_min, error); if (allocated(error)) return
+      call not_for(rules, "offset", offset, "a flat face's axis passes through the cam's centre")
+      call not_for(rules, "roller_radius", roller_radius, "a flat face has no roller")
+      call not_for(rules, "arm", arm, "only an oscillating follower has an arm")
+      call not_for(rules, "pivot", pivot(1), "only an oscillating follower has a pivot")
+      call not_for(rules, "pressure_angle_max", pressure_angle_max, "a flat face's pressure angle is 0")
+      call not_for(rules, "pressure_angle_max_return", pressure_angle_max_return, "a flat face's pressure angle is 0")
+      call rules%require_positive("rho_min", rho_min)
       deck%design%rho_min = rho_min
     case default
-      call not_for(ctx, "rho_min", rho_min, "it is the flat face's limit (a roller has its pressure angle's)", error)
-      if (allocated(error)) return
-      call require_nonnegative(ctx, "roller_radius", roller_radius, error); if (allocated(error)) return
+      call not_for(rules, "rho_min", rho_min, "it is the flat face's limit (a roller has its pressure angle's)")
+      call rules%require_nonnegative("roller_radius", roller_radius)
       deck%design%roller_radius = roller_radius
       if (deck%design%follower == follower_roller) then
-        call not_for(ctx, "arm", arm, "only an oscillating follower has an arm", error); if (allocated(error)) return
-        call not_for(ctx, "pivot", pivot(1), "only an oscillating follower has a pivot", error)
-        if (allocated(error)) return
+        call not_for(rules, "arm", arm, "only an oscillating follower has an arm")
+        call not_for(rules, "pivot", pivot(1), "only an oscillating follower has a pivot")
         offset = optional_default(offset, 0.0_wp)
-        call require_set(ctx, "offset", offset, error); if (allocated(error)) return
+        call rules%require_set("offset", offset)
         deck%design%offset = offset
         pressure_angle_max = optional_default(pressure_angle_max, 30.0_wp)
       else
-        call not_for(ctx, "offset", offset, "an oscillating follower's place is its pivot", error)
-        if (allocated(error)) return
-        call require_positive(ctx, "arm", arm, error); if (allocated(error)) return
-        call require_set(ctx, "pivot", pivot(1), error); if (allocated(error)) return
-        call require_set(ctx, "pivot(2)", pivot(2), error); if (allocated(error)) return
-        call require_rule(ctx, "pivot", norm2(pivot) > 0.0_wp, "must not be the cam's centre", error)
-        if (allocated(error)) return
-        call require_rule(ctx, "lift", maxval(deck%design%seg%s0) < 180.0_wp * deg_to_rad, "the arm must turn "// &
-          "less than 180 deg", error)
-        if (allocated(error)) return
+        call not_for(rules, "offset", offset, "an oscillating follower's place is its pivot")
+        call rules%require_positive("arm", arm)
+        call rules%require_set("pivot", pivot(1))
+        call rules%require_set("pivot(2)", pivot(2))
+        call rules%require_rule("pivot", norm2(pivot) > 0.0_wp, "must not be the cam's centre")
+        call rules%require_rule("lift", maxval(deck%design%seg%s0) < 180.0_wp * deg_to_rad, "the arm must turn "// &
+          "less than 180 deg")
         deck%design%arm = arm
         deck%design%pivot = pivot
         pressure_angle_max = optional_default(pressure_angle_max, 45.0_wp)
       end if
-      call pressure_limit(ctx, "pressure_angle_max", pressure_angle_max, error); if (allocated(error)) return
+      call pressure_limit(rules, "pressure_angle_max", pressure_angle_max)
       pressure_angle_max_return = optional_default(pressure_angle_max_return, pressure_angle_max)
-      call pressure_limit(ctx, "pressure_angle_max_return", pressure_angle_max_return, error)
-      if (allocated(error)) return
+      call pressure_limit(rules, "pressure_angle_max_return", pressure_angle_max_return)
       deck%design%limit_rise = pressure_angle_max * deg_to_rad
       deck%design%limit_return = pressure_angle_max_return * deg_to_rad
       deck%limit_rise_deg = pressure_angle_max
       deck%limit_return_deg = pressure_angle_max_return
     end select
+    if (rules%failed(error)) return
 
     ! speed and the output step
-    call require_set(ctx, "omega", omega, error); if (allocated(error)) return
-    call require_rule(ctx, "omega", omega /= 0.0_wp .and. abs(omega) <= 1.0e6_wp, "must be non-zero and within "// &
-      "+-1e6 rad/s (got "//real_str(omega)//")", error)
-    if (allocated(error)) return
+    call rules%require_set("omega", omega)
+    call rules%require_rule("omega", omega /= 0.0_wp .and. abs(omega) <= 1.0e6_wp, "must be non-zero and within "// &
+      "+-1e6 rad/s (got "//real_str(omega)//")")
     deck%design%omega = omega
-    call require_positive(ctx, "step", step, error); if (allocated(error)) return
+    call rules%require_positive("step", step)
     n_real = 360.0_wp / step
-    call require_rule(ctx, "step", abs(n_real - anint(n_real)) <= 1.0e-9_wp * n_real .and. anint(n_real) >= 1.0_wp, &
-      "must divide 360 deg into whole steps (got "//real_str(step)//")", error)
-    if (allocated(error)) return
-    call require_rule(ctx, "step", anint(n_real) < real(max_steps, wp), "too small: more than "//int_str(max_steps)// &
-      " steps", error)
-    if (allocated(error)) return
+    call rules%require_rule("step", abs(n_real - anint(n_real)) <= 1.0e-9_wp * n_real .and. anint(n_real) >= 1.0_wp, &
+      "must divide 360 deg into whole steps (got "//real_str(step)//")")
+    call rules%require_rule("step", anint(n_real) < real(max_steps, wp), "too small: more than "//int_str(max_steps)// &
+      " steps")
+    if (rules%failed(error)) return
     deck%step = 360.0_wp / anint(n_real)
     deck%n = nint(n_real) + 1
 
     ! for the analysis deck
     if (deck%design%follower == follower_oscillating) then
-      call not_for(ctx, "l", l, "the &cam analysis has translating followers only", error); if (allocated(error)) return
-      call not_for(ctx, "f2", f2, "the &cam analysis has translating followers only", error)
-      if (allocated(error)) return
+      call not_for(rules, "l", l, "the &cam analysis has translating followers only")
+      call not_for(rules, "f2", f2, "the &cam analysis has translating followers only")
     end if
     if (is_set(l)) then
-      call require_positive(ctx, "l", l, error); if (allocated(error)) return
+      call rules%require_positive("l", l)
       deck%l = l
       deck%has_guide(1) = .true.
     end if
     if (is_set(l_over)) then
-      call require_nonnegative(ctx, "l_over", l_over, error); if (allocated(error)) return
+      call rules%require_nonnegative("l_over", l_over)
       deck%l_over = l_over
       deck%has_guide(2) = .true.
     end if
     if (is_set(f)) then
-      call require_nonnegative(ctx, "f", f, error); if (allocated(error)) return
+      call rules%require_nonnegative("f", f)
       deck%f = f
       deck%has_guide(3) = .true.
     end if
     if (is_set(f2)) then
-      call require_set(ctx, "f2", f2, error); if (allocated(error)) return
+      call rules%require_set("f2", f2)
       deck%f2 = f2
       deck%has_guide(4) = .true.
     end if
     if (is_set(f_cam)) then
-      call require_rule(ctx, "f_cam", deck%design%follower == follower_flat, "only for a flat face (a roller "// &
-        "rolls)", error)
-      if (allocated(error)) return
-      call require_nonnegative(ctx, "f_cam", f_cam, error); if (allocated(error)) return
+      call rules%require_rule("f_cam", deck%design%follower == follower_flat, "only for a flat face (a roller "// &
+        "rolls)")
+      call rules%require_nonnegative("f_cam", f_cam)
       deck%f_cam = f_cam
       deck%has_f_cam = .true.
     end if
+    call rules%take(error)
   end subroutine read_cam_profile_deck
 
   !> A pressure-angle limit, deg: finite and in (0, 90).
-  subroutine pressure_limit(ctx, name, value, error)
-    type(deck_context_t), intent(in) :: ctx
+  subroutine pressure_limit(rules, name, value)
+    type(deck_rules_t), intent(inout) :: rules
     character(*), intent(in) :: name
     real(wp), intent(in) :: value
-    type(error_t), allocatable, intent(out) :: error
-    call require_set(ctx, name, value, error); if (allocated(error)) return
-    call require_rule(ctx, name, value > 0.0_wp .and. value < 90.0_wp, "must be in (0, 90) deg (got "// &
-      real_str(value)//")", error)
+    call rules%require_set(name, value)
+    call rules%require_rule(name, value > 0.0_wp .and. value < 90.0_wp, "must be in (0, 90) deg (got "// &
+      real_str(value)//")")
   end subroutine pressure_limit
 
   !> A variable this follower does not take: unset.
-  subroutine not_for(ctx, name, value, why, error)
-    type(deck_context_t), intent(in) :: ctx
+  subroutine not_for(rules, name, value, why)
+    type(deck_rules_t), intent(inout) :: rules
     character(*), intent(in) :: name
     real(wp), intent(in) :: value
     character(*), intent(in) :: why
-    type(error_t), allocatable, intent(out) :: error
-    if (is_set(value)) call deck_error(ctx, name, "not for this follower: "//why, error)
+    call rules%require_rule(name, .not. is_set(value), "not for this follower: "//why)
   end subroutine not_for
 
 end module kinetostat_cam_profile_deck

@@ -7,7 +7,7 @@ module kinetostat_deck_foreign
   use kinetostat_deck, only: deck_source_t, deck_line, deck_line_count, assignment_starts
   implicit none
   private
-  public :: refuse_variables
+  public :: refuse_variables, refuse_translated_stages
 
 contains
 
@@ -56,5 +56,35 @@ contains
       end do
     end do
   end subroutine refuse_variables
+
+  !> The stages a kind of fixed linkage (&pr3207, &pr3050, &sixbar) lacks and its `&linkage`
+  !> translation has, refused with that way out, in this order: friction (crank_f, crank_r,
+  !> dyad), a cycle of two turns (cycle: `cycle_reason`, by default the translation's), and
+  !> loads and load tables (force, moment) beside the kind's own loads (`own_loads`: " but
+  !> f5c", or empty).
+  subroutine refuse_translated_stages(source, group, own_loads, error, cycle_reason)
+    !> The deck.
+    type(deck_source_t), intent(in) :: source
+    !> Its group, lower case, without '&'.
+    character(*), intent(in) :: group
+    !> The kind's own loads, after "has no loads".
+    character(*), intent(in) :: own_loads
+    type(error_t), allocatable, intent(out) :: error
+    !> Why `cycle` is refused, when not for the translation's sake.
+    character(*), intent(in), optional :: cycle_reason
+    character(*), parameter :: way_out = "(kinetostat convert DECK --to linkage)"
+    call refuse_variables(source, group, [character(len=8) :: "crank_f", "crank_r", "dyad"], &
+      "a &"//group//" deck has no friction; its &linkage translation has "//way_out, error)
+    if (allocated(error)) return
+    if (present(cycle_reason)) then
+      call refuse_variables(source, group, [character(len=8) :: "cycle"], cycle_reason, error)
+    else
+      call refuse_variables(source, group, [character(len=8) :: "cycle"], "a &"//group//" deck's cycle is one "// &
+        "turn; a cycle of two turns runs on its &linkage translation "//way_out, error)
+    end if
+    if (allocated(error)) return
+    call refuse_variables(source, group, [character(len=8) :: "force", "moment"], "a &"//group//" deck has no "// &
+      "loads"//own_loads//", and no load tables; its &linkage translation has them "//way_out, error)
+  end subroutine refuse_translated_stages
 
 end module kinetostat_deck_foreign

@@ -58,6 +58,7 @@ module kinetostat_deck_rules
     procedure :: count_values => rules_count_values
     procedure :: ok => rules_ok
     procedure :: failed => rules_failed
+    procedure :: take => rules_take
   end type deck_rules_t
 
 contains
@@ -320,6 +321,14 @@ contains
     rules_failed = allocated(self%error)
     if (rules_failed) call move_alloc(self%error, error)
   end function rules_failed
+
+  !> The first failure into `error` (unallocated when every check passed), for a section
+  !> that ends there; the validator is clear again.
+  subroutine rules_take(self, error)
+    class(deck_rules_t), intent(inout) :: self
+    type(error_t), allocatable, intent(out) :: error
+    if (allocated(self%error)) call move_alloc(self%error, error)
+  end subroutine rules_take
 
   !> require_set, once no check has failed.
   subroutine rules_set(self, name, x)

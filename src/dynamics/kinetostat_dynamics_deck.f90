@@ -5,8 +5,8 @@ module kinetostat_dynamics_deck
   use kinetostat_kinds, only: wp, deg_to_rad, pi
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str
-  use kinetostat_deck, only: deck_context_t, deck_error, is_set, unset_real, require_rule, optional_default, require_nonnegative, &
-    count_values
+  use kinetostat_deck, only: deck_context_t, deck_error, is_set, unset_real, require_rule, optional_default, &
+    deck_rules_t
   use kinetostat_dynamics, only: dynamics_none, dynamics_reduced, dynamics_steady, dynamics_given, &
     reduced_source_t, cycle_t, cycle_setup, cycle_steady, cycle_given
   implicit none
@@ -82,11 +82,11 @@ contains
     real(wp), intent(in), optional :: flywheel_density, flywheel_width_ratio
     real(wp) :: rho, psi
     integer :: n_md, i
+    type(deck_rules_t) :: rules
+    rules%ctx = ctx
     n_md = 0
-    if (present(md_table)) then
-      call count_values(ctx, "md_table", md_table, n_md, error)
-      if (allocated(error)) return
-    end if
+    if (present(md_table)) call rules%count_values("md_table", md_table, n_md)
+    if (rules%failed(error)) return
     select case (trim(adjustl(mode_text)))
     case ("", "none")
       dyn%mode = dynamics_none
@@ -101,17 +101,14 @@ contains
         "' (expected 'none', 'reduced', 'steady' or 'given')", error)
       return
     end select
-    call require_rule(ctx, "md_table", n_md == 0 .or. dyn%mode >= dynamics_steady, &
-      "a driving-moment table needs dynamics = 'steady' or 'given'", error)
-    if (allocated(error)) return
+    call rules%require_rule("md_table", n_md == 0 .or. dyn%mode >= dynamics_steady, &
+      "a driving-moment table needs dynamics = 'steady' or 'given'")
     if (present(cycle)) then
       if (is_set(cycle)) then
-        call require_rule(ctx, "cycle", cycle == 360.0_wp .or. cycle == 720.0_wp, "must be 360 (one turn) or 720 "// &
-          "(two turns: a four-stroke engine's working cycle), deg (got "//real_str(cycle)//")", error)
-        if (allocated(error)) return
-        call require_rule(ctx, "cycle", dyn%mode >= dynamics_steady, &
-          "the cycle of the steady motion needs dynamics = 'steady' or 'given'", error)
-        if (allocated(error)) return
+        call rules%require_rule("cycle", cycle == 360.0_wp .or. cycle == 720.0_wp, "must be 360 (one turn) or 720 "// &
+          "(two turns: a four-stroke engine's working cycle), deg (got "//real_str(cycle)//")")
+        call rules%require_rule("cycle", dyn%mode >= dynamics_steady, &
+          "the cycle of the steady motion needs dynamics = 'steady' or 'given'")
         dyn%cycle_deg = cycle
       end if
     end if
@@ -119,81 +116,74 @@ contains
     psi = unset_real
     if (present(flywheel_density)) rho = flywheel_density
     if (present(flywheel_width_ratio)) psi = flywheel_width_ratio
-    call require_rule(ctx, "flywheel_density", .not. any(is_set([rho, psi])) .or. dyn%mode >= dynamics_steady, &
-      "flywheel_density and flywheel_width_ratio (the flywheel's disc) need dynamics = 'steady' or 'given'", error)
-    if (allocated(error)) return
+    call rules%require_rule("flywheel_density", .not. any(is_set([rho, psi])) .or. dyn%mode >= dynamics_steady, &
+      "flywheel_density and flywheel_width_ratio (the flywheel's disc) need dynamics = 'steady' or 'given'")
     if (is_set(rho)) then
-      call require_rule(ctx, "flywheel_density", rho > 0.0_wp .and. rho < 1.0e6_wp, "must be > 0 and < 1e6 kg/m^3 "// &
-        "(the density of the flywheel's material; steel 7800; got "//real_str(rho)//")", error)
-      if (allocated(error)) return
+      call rules%require_rule("flywheel_density", rho > 0.0_wp .and. rho < 1.0e6_wp, "must be > 0 and < 1e6 "// &
+        "kg/m^3 (the density of the flywheel's material; steel 7800; got "//real_str(rho)//")")
       dyn%flywheel_density = rho
     end if
     if (is_set(psi)) then
-      call require_rule(ctx, "flywheel_width_ratio", psi > 0.0_wp .and. psi <= 10.0_wp, "must be > 0 and <= 10 "// &
-        "(the disc's width b over its diameter D; 0.1 to 0.3 as a rule; got "//real_str(psi)//")", error)
-      if (allocated(error)) return
+      call rules%require_rule("flywheel_width_ratio", psi > 0.0_wp .and. psi <= 10.0_wp, "must be > 0 and <= 10 "// &
+        "(the disc's width b over its diameter D; 0.1 to 0.3 as a rule; got "//real_str(psi)//")")
       dyn%flywheel_width_ratio = psi
     end if
     if (dyn%mode == dynamics_none) then
-      call require_rule(ctx, "delta", .not. any(is_set([delta, j_rotor, j_flywheel])), &
-        "delta, j_rotor and j_flywheel need dynamics = 'steady' or 'given'", error)
+      call rules%require_rule("delta", .not. any(is_set([delta, j_rotor, j_flywheel])), &
+        "delta, j_rotor and j_flywheel need dynamics = 'steady' or 'given'")
+      call rules%take(error)
       return
     end if
+    if (rules%failed(error)) return
     if (n_md > 0) then
-      call require_rule(ctx, "md_table", mod(n_md, 2) == 0 .and. n_md >= 4, "give pairs of crank angle (deg) "// &
-        "and driving moment, at least two (got "//int_str(n_md)//" values)", error)
-      if (allocated(error)) return
+      call rules%require_rule("md_table", mod(n_md, 2) == 0 .and. n_md >= 4, "give pairs of crank angle (deg) "// &
+        "and driving moment, at least two (got "//int_str(n_md)//" values)")
+      if (rules%failed(error)) return
       dyn%md_phi = md_table(1:n_md:2)
       dyn%md_value = md_table(2:n_md:2)
       do i = 2, size(dyn%md_phi)
-        call require_rule(ctx, "md_table", dyn%md_phi(i) > dyn%md_phi(i - 1), "the angles must increase (point "// &
-          int_str(i)//": "//real_str(dyn%md_phi(i))//" deg after "//real_str(dyn%md_phi(i - 1))//" deg)", error)
-        if (allocated(error)) return
+        call rules%require_rule("md_table", dyn%md_phi(i) > dyn%md_phi(i - 1), "the angles must increase (point "// &
+          int_str(i)//": "//real_str(dyn%md_phi(i))//" deg after "//real_str(dyn%md_phi(i - 1))//" deg)")
       end do
-      if (dyn%cycle_deg == 360.0_wp) then
-        call require_rule(ctx, "md_table", dyn%md_phi(size(dyn%md_phi)) - dyn%md_phi(1) < 360.0_wp, &
-          "the angles must lie within one turn (last - first < 360 deg; the table repeats every turn), got "// &
-          real_str(dyn%md_phi(size(dyn%md_phi)) - dyn%md_phi(1))//" deg", error)
-      else
-        call require_rule(ctx, "md_table", dyn%md_phi(size(dyn%md_phi)) - dyn%md_phi(1) < dyn%cycle_deg, &
-          "the angles must lie within one cycle (last - first < "//real_str(dyn%cycle_deg)//" deg, cycle = "// &
-          int_str(nint(dyn%cycle_deg))//"; the table repeats every cycle), got "// &
-          real_str(dyn%md_phi(size(dyn%md_phi)) - dyn%md_phi(1))//" deg", error)
-      end if
-      if (allocated(error)) return
+      associate (first => dyn%md_phi(1), last => dyn%md_phi(size(dyn%md_phi)))
+        if (dyn%cycle_deg == 360.0_wp) then
+          call rules%require_rule("md_table", last - first < 360.0_wp, "the angles must lie within one turn "// &
+            "(last - first < 360 deg; the table repeats every turn), got "//real_str(last - first)//" deg")
+        else
+          call rules%require_rule("md_table", last - first < dyn%cycle_deg, &
+            "the angles must lie within one cycle (last - first < "//real_str(dyn%cycle_deg)//" deg, cycle = "// &
+            int_str(nint(dyn%cycle_deg))//"; the table repeats every cycle), got "//real_str(last - first)//" deg")
+        end if
+      end associate
     end if
     dyn%j_rotor = optional_default(j_rotor, 0.0_wp)
-    call require_nonnegative(ctx, "j_rotor", dyn%j_rotor, error); if (allocated(error)) return
+    call rules%require_nonnegative("j_rotor", dyn%j_rotor)
     if (dyn%mode == dynamics_reduced) then
-      call require_rule(ctx, "delta", .not. any(is_set([delta, j_flywheel])), &
-        "delta and j_flywheel need dynamics = 'steady' or 'given'", error)
+      call rules%require_rule("delta", .not. any(is_set([delta, j_flywheel])), &
+        "delta and j_flywheel need dynamics = 'steady' or 'given'")
+      call rules%take(error)
       return
     end if
-    call require_rule(ctx, "omega1", omega1 > 0.0_wp, "must be > 0 with dynamics = '"// &
-      trim(adjustl(mode_text))//"' (the mean speed; got "//real_str(omega1)//")", error)
-    if (allocated(error)) return
+    call rules%require_rule("omega1", omega1 > 0.0_wp, "must be > 0 with dynamics = '"// &
+      trim(adjustl(mode_text))//"' (the mean speed; got "//real_str(omega1)//")")
     if (dyn%mode == dynamics_steady) then
-      call require_rule(ctx, "j_flywheel", .not. is_set(j_flywheel), &
-        "is found with dynamics = 'steady' (give it with dynamics = 'given')", error)
-      if (allocated(error)) return
-      call require_rule(ctx, "delta", is_set(delta), "missing: dynamics = 'steady' needs the coefficient "// &
-        "of speed fluctuation delta", error)
-      if (allocated(error)) return
-      call require_rule(ctx, "delta", delta > 0.0_wp .and. delta < 1.0_wp, &
+      call rules%require_rule("j_flywheel", .not. is_set(j_flywheel), &
+        "is found with dynamics = 'steady' (give it with dynamics = 'given')")
+      call rules%require_rule("delta", is_set(delta), "missing: dynamics = 'steady' needs the coefficient "// &
+        "of speed fluctuation delta")
+      call rules%require_rule("delta", delta > 0.0_wp .and. delta < 1.0_wp, &
         "must be > 0 and < 1 (got "//real_str(delta)//"): the coefficient of speed fluctuation "// &
         "(omega_max - omega_min)/omega1 of a machine is a small fraction (about 1/300 to 1/5); at 1 the speed "// &
-        "would already swing from omega1/2 to 3*omega1/2", error)
-      if (allocated(error)) return
+        "would already swing from omega1/2 to 3*omega1/2")
       dyn%delta = delta
     else
-      call require_rule(ctx, "delta", .not. is_set(delta), "is found with dynamics = 'given' (give it with "// &
-        "dynamics = 'steady')", error)
-      if (allocated(error)) return
-      call require_rule(ctx, "j_flywheel", is_set(j_flywheel), "missing: dynamics = 'given' needs j_flywheel", error)
-      if (allocated(error)) return
-      call require_nonnegative(ctx, "j_flywheel", j_flywheel, error); if (allocated(error)) return
+      call rules%require_rule("delta", .not. is_set(delta), "is found with dynamics = 'given' (give it with "// &
+        "dynamics = 'steady')")
+      call rules%require_rule("j_flywheel", is_set(j_flywheel), "missing: dynamics = 'given' needs j_flywheel")
+      call rules%require_nonnegative("j_flywheel", j_flywheel)
       dyn%j_flywheel = j_flywheel
     end if
+    call rules%take(error)
   end subroutine read_dynamics_settings
 
   !> A steady cycle covers exactly one turn (or its cycle, `cycle_deg` = 720: two turns): the

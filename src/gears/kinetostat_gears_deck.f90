@@ -7,8 +7,7 @@ module kinetostat_gears_deck
   use kinetostat_text, only: real_str, int_str, number_str, lower
   use kinetostat_deck, only: &
     begin_group, text_bytes, text_chars, deck_context_t, unset_real, &
-    deck_source_t, namelist_probe_t, deck_error, is_set, require_set, require_positive, require_rule, &
-    require_whole, require_all_set
+    deck_source_t, namelist_probe_t, deck_error, is_set, deck_rules_t
   use kinetostat_gears, only: gear_stage_t, gear_helical, gear_bevel, gear_planetary, gear_kind_names
   implicit none
   private
@@ -84,6 +83,7 @@ contains
     integer :: i, n, kind, iz1, iz2, iz3, ik
     character(len=:), allocatable :: at
     type(deck_context_t) :: ctx
+    type(deck_rules_t) :: rules
     type(namelist_probe_t) :: probe
     namelist /gears/ layout, stage, m1, z1, z2, m, dw1, alpha_w, beta, gamma, z3, k, alpha_w23
 
@@ -135,22 +135,23 @@ contains
       end if
     end if
     ! nothing may be given for a stage that does not exist
-    call no_extra_real(ctx, "m1", m1, n, error); if (allocated(error)) return
-    call no_extra_real(ctx, "m", m, n, error); if (allocated(error)) return
-    call no_extra_real(ctx, "dw1", dw1, n, error); if (allocated(error)) return
-    call no_extra_real(ctx, "alpha_w", alpha_w, n, error); if (allocated(error)) return
-    call no_extra_real(ctx, "alpha_w23", alpha_w23, n, error); if (allocated(error)) return
-    call no_extra_real(ctx, "beta", beta, n, error); if (allocated(error)) return
-    call no_extra_real(ctx, "gamma", gamma, n, error); if (allocated(error)) return
-    call no_extra_real(ctx, "z1", z1, n, error); if (allocated(error)) return
-    call no_extra_real(ctx, "z2", z2, n, error); if (allocated(error)) return
-    call no_extra_real(ctx, "z3", z3, n, error); if (allocated(error)) return
-    call no_extra_real(ctx, "k", k, n, error); if (allocated(error)) return
+    rules%ctx = ctx
+    call no_extra_real(rules, "m1", m1, n)
+    call no_extra_real(rules, "m", m, n)
+    call no_extra_real(rules, "dw1", dw1, n)
+    call no_extra_real(rules, "alpha_w", alpha_w, n)
+    call no_extra_real(rules, "alpha_w23", alpha_w23, n)
+    call no_extra_real(rules, "beta", beta, n)
+    call no_extra_real(rules, "gamma", gamma, n)
+    call no_extra_real(rules, "z1", z1, n)
+    call no_extra_real(rules, "z2", z2, n)
+    call no_extra_real(rules, "z3", z3, n)
+    call no_extra_real(rules, "k", k, n)
 
     ! two or more required values missing: name them all in one message (one missing value
     ! gets its own message from the checks of its stage below)
-    call require_all_stages(ctx, deck%layout == layout_series, stage(1:n), m1, z1, z2, z3, k, m, dw1, error)
-    if (allocated(error)) return
+    call require_all_stages(rules, deck%layout == layout_series, stage(1:n), m1, z1, z2, z3, k, m, dw1)
+    if (rules%failed(error)) return
 
     deck%n = n
     allocate (deck%st(n), deck%m1(n), deck%module_mm(n))
@@ -159,118 +160,98 @@ contains
     do i = 1, n
       at = "("//int_str(i)//")"
       kind = findloc(gear_kind_names, lower(trim(adjustl(stage(i)))), dim=1)
-      if (kind == 0) then
-        call deck_error(ctx, "stage"//at, "must be 'spur', 'helical', 'bevel' or 'planetary' (got '"// &
-          trim(stage(i))//"')", error)
-        return
-      end if
+      call rules%require_rule("stage"//at, kind /= 0, "must be 'spur', 'helical', 'bevel' or 'planetary' "// &
+        "(got '"//trim(stage(i))//"')")
+      if (rules%failed(error)) return
       deck%st(i)%kind = kind
-      if (deck%layout == layout_series .and. (kind == gear_bevel .or. kind == gear_planetary)) then
-        call deck_error(ctx, "stage"//at, "'"//trim(gear_kind_names(kind))//"' cannot be a stage of "// &
-          "layout 'series' (parallel-shaft spur/helical stages only)", error)
-        return
-      end if
+      call rules%require_rule("stage"//at, deck%layout /= layout_series .or. (kind /= gear_bevel .and. &
+        kind /= gear_planetary), "'"//trim(gear_kind_names(kind))//"' cannot be a stage of "// &
+        "layout 'series' (parallel-shaft spur/helical stages only)")
 
       ! input torque
       if (deck%layout == layout_series .and. i > 1) then
-        call require_rule(ctx, "m1"//at, .not. is_set(m1(i)), "not allowed in layout 'series': "// &
-          "the torque of stage "//int_str(i)//" comes from stage "//int_str(i - 1), error)
-        if (allocated(error)) return
+        call rules%require_rule("m1"//at, .not. is_set(m1(i)), "not allowed in layout 'series': "// &
+          "the torque of stage "//int_str(i)//" comes from stage "//int_str(i - 1))
       else
-        call require_set(ctx, "m1"//at, m1(i), error); if (allocated(error)) return
+        call rules%require_set("m1"//at, m1(i))
         deck%m1(i) = m1(i)
       end if
 
       ! teeth
-      call require_teeth(ctx, "z1"//at, z1(i), iz1, error); if (allocated(error)) return
-      call require_teeth(ctx, "z2"//at, z2(i), iz2, error); if (allocated(error)) return
+      call require_teeth(rules, "z1"//at, z1(i), iz1)
+      call require_teeth(rules, "z2"//at, z2(i), iz2)
       deck%st(i)%z1 = iz1
       deck%st(i)%z2 = iz2
 
       ! size: module or pitch diameter of gear 1
       if (is_set(dw1(i))) then
-        call require_positive(ctx, "dw1"//at, dw1(i), error); if (allocated(error)) return
-        call require_rule(ctx, "m"//at, .not. is_set(m(i)), "give either m or dw1 for a stage, not both", error)
-        if (allocated(error)) return
+        call rules%require_positive("dw1"//at, dw1(i))
+        call rules%require_rule("m"//at, .not. is_set(m(i)), "give either m or dw1 for a stage, not both")
         deck%st(i)%dw1 = dw1(i) * 1.0e-3_wp
       else
-        if (.not. is_set(m(i))) then
-          call deck_error(ctx, "m"//at, "missing: give the module m (mm) or the pitch diameter dw1 (mm)", error)
-          return
-        end if
-        call require_positive(ctx, "m"//at, m(i), error); if (allocated(error)) return
+        call rules%require_rule("m"//at, is_set(m(i)), "missing: give the module m (mm) or the pitch diameter "// &
+          "dw1 (mm)")
+        call rules%require_positive("m"//at, m(i))
         deck%module_mm(i) = m(i)
         deck%st(i)%dw1 = real(iz1, wp) * m(i) * 1.0e-3_wp
       end if
 
       ! angles
-      call pressure_angle(ctx, "alpha_w"//at, alpha_w(i), alpha_default, deck%st(i)%alpha_w, error)
-      if (allocated(error)) return
+      call pressure_angle(rules, "alpha_w"//at, alpha_w(i), alpha_default, deck%st(i)%alpha_w)
       if (is_set(beta(i))) then
-        call require_set(ctx, "beta"//at, beta(i), error); if (allocated(error)) return
-        call require_rule(ctx, "beta"//at, kind == gear_helical .or. beta(i) == 0.0_wp, &
+        call rules%require_set("beta"//at, beta(i))
+        call rules%require_rule("beta"//at, kind == gear_helical .or. beta(i) == 0.0_wp, &
           "only for a 'helical' stage (stage "//int_str(i)//" is '"//trim(gear_kind_names(kind))// &
-          "'): leave it 0 or unset", error)
-        if (allocated(error)) return
-        call require_rule(ctx, "beta"//at, abs(beta(i)) < 45.0_wp, "must be in (-45, 45) deg (got "// &
-          real_str(beta(i))//")", error)
-        if (allocated(error)) return
+          "'): leave it 0 or unset")
+        call rules%require_rule("beta"//at, abs(beta(i)) < 45.0_wp, "must be in (-45, 45) deg (got "// &
+          real_str(beta(i))//")")
         deck%st(i)%beta = beta(i) * deg_to_rad
       end if
       if (is_set(gamma(i))) then
-        call require_set(ctx, "gamma"//at, gamma(i), error); if (allocated(error)) return
+        call rules%require_set("gamma"//at, gamma(i))
         deck%st(i)%gamma = gamma(i) * deg_to_rad
       end if
       if (kind == gear_bevel) deck%st(i)%delta1 = atan2(real(iz1, wp), real(iz2, wp))
 
       ! planetary data, only for planetary stages (0 = "not used" is accepted elsewhere)
       if (kind == gear_planetary) then
-        call require_teeth(ctx, "z3"//at, z3(i), iz3, error); if (allocated(error)) return
-        call require_rule(ctx, "z3"//at, iz3 == iz1 + 2 * iz2, "must be z1 + 2*z2 = "// &
-          int_str(iz1 + 2 * iz2)//" (coaxial sun, satellites and ring; got "//int_str(iz3)//")", error)
-        if (allocated(error)) return
-        if (.not. is_set(k(i))) then
-          call deck_error(ctx, "k"//at, "missing (number of satellites)", error)
-          return
-        end if
-        call require_rule(ctx, "k"//at, .not. k(i) < 1.0_wp, "must be >= 1 (got "//number_str(k(i))//")", error)
-        if (allocated(error)) return
-        call require_whole(ctx, "k"//at, k(i), 1, huge(1), ik, error); if (allocated(error)) return
-        call require_rule(ctx, "k"//at, modulo(iz1 + iz3, ik) == 0, "(z1 + z3)/k must be an integer "// &
-          "for equally spaced satellites (z1 + z3 = "//int_str(iz1 + iz3)//", k = "//int_str(ik)//")", error)
-        if (allocated(error)) return
+        call require_teeth(rules, "z3"//at, z3(i), iz3)
+        call rules%require_rule("z3"//at, iz3 == iz1 + 2 * iz2, "must be z1 + 2*z2 = "// &
+          int_str(iz1 + 2 * iz2)//" (coaxial sun, satellites and ring; got "//int_str(iz3)//")")
+        call rules%require_rule("k"//at, is_set(k(i)), "missing (number of satellites)")
+        call rules%require_rule("k"//at, .not. k(i) < 1.0_wp, "must be >= 1 (got "//number_str(k(i))//")")
+        call rules%require_whole("k"//at, k(i), 1, huge(1), ik)
+        call rules%require_rule("k"//at, modulo(iz1 + iz3, ik) == 0, "(z1 + z3)/k must be an integer "// &
+          "for equally spaced satellites (z1 + z3 = "//int_str(iz1 + iz3)//", k = "//int_str(ik)//")")
         if (ik >= 2) then
-          call require_rule(ctx, "k"//at, real(iz1 + iz2, wp) * sin(pi / real(ik, wp)) > real(iz2 + 2, wp), &
-            "too many satellites: neighbours collide, (z1 + z2)*sin(180/k) must exceed z2 + 2", error)
-          if (allocated(error)) return
+          call rules%require_rule("k"//at, real(iz1 + iz2, wp) * sin(pi / real(ik, wp)) > real(iz2 + 2, wp), &
+            "too many satellites: neighbours collide, (z1 + z2)*sin(180/k) must exceed z2 + 2")
         end if
         deck%st(i)%z3 = iz3
         deck%st(i)%k = ik
-        call pressure_angle(ctx, "alpha_w23"//at, alpha_w23(i), alpha_w(i), deck%st(i)%alpha_w23, error)
-        if (allocated(error)) return
+        call pressure_angle(rules, "alpha_w23"//at, alpha_w23(i), alpha_w(i), deck%st(i)%alpha_w23)
         if (.not. is_set(gamma(i))) deck%st(i)%gamma = 0.5_wp * pi
       else
-        call not_used_int(ctx, "z3"//at, z3(i), kind, error); if (allocated(error)) return
-        call not_used_int(ctx, "k"//at, k(i), kind, error); if (allocated(error)) return
-        call require_rule(ctx, "alpha_w23"//at, .not. is_set(alpha_w23(i)) .or. alpha_w23(i) == 0.0_wp, &
-          "only for a 'planetary' stage: leave it 0 or unset", error)
-        if (allocated(error)) return
+        call not_used_int(rules, "z3"//at, z3(i), kind)
+        call not_used_int(rules, "k"//at, k(i), kind)
+        call rules%require_rule("alpha_w23"//at, .not. is_set(alpha_w23(i)) .or. alpha_w23(i) == 0.0_wp, &
+          "only for a 'planetary' stage: leave it 0 or unset")
       end if
+      if (rules%failed(error)) return
     end do
   end subroutine read_gears_deck
 
   !> The required values of every stage of a known kind (the input torque m1 unless a later
   !> stage of a series, the teeth z1, z2, the module m unless dw1 is given, and z3, k of a
   !> planetary stage): when two or more are missing, one error naming them all.
-  subroutine require_all_stages(ctx, series, stage, m1, z1, z2, z3, k, m, dw1, error)
-    type(deck_context_t), intent(in) :: ctx
+  subroutine require_all_stages(rules, series, stage, m1, z1, z2, z3, k, m, dw1)
+    type(deck_rules_t), intent(inout) :: rules
     !> Layout 'series': the torque of a later stage comes from the stage before.
     logical, intent(in) :: series
     !> Stage kinds as given, one per stage.
     character(*), intent(in) :: stage(:)
     !> Deck values per stage (unset_real when not given).
     real(wp), intent(in) :: m1(:), z1(:), z2(:), z3(:), k(:), m(:), dw1(:)
-    type(error_t), allocatable, intent(out) :: error
     character(len=16), allocatable :: names(:)
     real(wp), allocatable :: values(:)
     character(len=:), allocatable :: at
@@ -295,17 +276,16 @@ contains
         values = [values, z3(i), k(i)]
       end if
     end do
-    if (count(.not. is_set(values)) >= 2) call require_all_set(ctx, names, values, error)
+    if (count(.not. is_set(values)) >= 2) call rules%require_all_set(names, values)
   end subroutine require_all_stages
 
   !> A pressure angle in deg: optional with `default` (itself possibly unset -> 20 deg),
   !> finite and strictly inside (0, 45) deg; returned in rad.
-  subroutine pressure_angle(ctx, name, value, default, angle, error)
-    type(deck_context_t), intent(in) :: ctx
+  subroutine pressure_angle(rules, name, value, default, angle)
+    type(deck_rules_t), intent(inout) :: rules
     character(*), intent(in) :: name
     real(wp), intent(in) :: value, default
     real(wp), intent(out) :: angle
-    type(error_t), allocatable, intent(out) :: error
     real(wp) :: a
     angle = 0.0_wp
     if (is_set(value)) then
@@ -315,60 +295,52 @@ contains
     else
       a = alpha_default
     end if
-    call require_set(ctx, name, a, error); if (allocated(error)) return
-    call require_rule(ctx, name, a > 0.0_wp .and. a < 45.0_wp, "must be in (0, 45) deg (got "// &
-      real_str(a)//")", error)
-    if (allocated(error)) return
-    angle = a * deg_to_rad
+    call rules%require_set(name, a)
+    call rules%require_rule(name, a > 0.0_wp .and. a < 45.0_wp, "must be in (0, 45) deg (got "//real_str(a)//")")
+    if (rules%ok()) angle = a * deg_to_rad
   end subroutine pressure_angle
 
   !> Teeth count: present and a whole number from 1 to max_teeth.
-  subroutine require_teeth(ctx, name, z, teeth, error)
-    type(deck_context_t), intent(in) :: ctx
+  subroutine require_teeth(rules, name, z, teeth)
+    type(deck_rules_t), intent(inout) :: rules
     character(*), intent(in) :: name
     !> Deck value (an integer deck variable, read as a real).
     real(wp), intent(in) :: z
     !> The count.
     integer, intent(out) :: teeth
-    type(error_t), allocatable, intent(out) :: error
     teeth = 0
     if (.not. is_set(z)) then
-      call deck_error(ctx, name, "missing (number of teeth)", error)
+      call rules%require_rule(name, .false., "missing (number of teeth)")
     else if (z < 1.0_wp) then
-      call deck_error(ctx, name, "must be >= 1 teeth (got "//number_str(z)//")", error)
+      call rules%require_rule(name, .false., "must be >= 1 teeth (got "//number_str(z)//")")
     else if (z > real(max_teeth, wp)) then
-      call deck_error(ctx, name, "must be <= "//int_str(max_teeth)//" teeth (got "//number_str(z)//")", error)
+      call rules%require_rule(name, .false., "must be <= "//int_str(max_teeth)//" teeth (got "//number_str(z)//")")
     else
-      call require_whole(ctx, name, z, 1, max_teeth, teeth, error)
+      call rules%require_whole(name, z, 1, max_teeth, teeth)
     end if
   end subroutine require_teeth
 
   !> A planetary-only integer on another stage: unset or 0.
-  subroutine not_used_int(ctx, name, value, kind, error)
-    type(deck_context_t), intent(in) :: ctx
+  subroutine not_used_int(rules, name, value, kind)
+    type(deck_rules_t), intent(inout) :: rules
     character(*), intent(in) :: name
     !> Deck value (an integer deck variable, read as a real).
     real(wp), intent(in) :: value
     integer, intent(in) :: kind
-    type(error_t), allocatable, intent(out) :: error
-    if (is_set(value) .and. value /= 0.0_wp) call deck_error(ctx, name, "only for a 'planetary' stage (this one is '"// &
-      trim(gear_kind_names(kind))//"'): leave it 0 or unset", error)
+    call rules%require_rule(name, .not. is_set(value) .or. value == 0.0_wp, "only for a 'planetary' stage (this one "// &
+      "is '"//trim(gear_kind_names(kind))//"'): leave it 0 or unset")
   end subroutine not_used_int
 
   !> No real value beyond the last stage.
-  subroutine no_extra_real(ctx, name, values, n, error)
-    type(deck_context_t), intent(in) :: ctx
+  subroutine no_extra_real(rules, name, values, n)
+    type(deck_rules_t), intent(inout) :: rules
     character(*), intent(in) :: name
     real(wp), intent(in) :: values(:)
     integer, intent(in) :: n
-    type(error_t), allocatable, intent(out) :: error
     integer :: i
     do i = n + 1, size(values)
-      if (is_set(values(i))) then
-        call deck_error(ctx, name//"("//int_str(i)//")", "given for stage "//int_str(i)// &
-          " but the deck has "//int_str(n)//" stage(s) (see 'stage')", error)
-        return
-      end if
+      call rules%require_rule(name//"("//int_str(i)//")", .not. is_set(values(i)), "given for stage "//int_str(i)// &
+        " but the deck has "//int_str(n)//" stage(s) (see 'stage')")
     end do
   end subroutine no_extra_real
 

@@ -13,12 +13,12 @@ module kinetostat_linkage_balance
   use kinetostat_kinds, only: wp, deg_to_rad, rad_to_deg
   use kinetostat_error, only: error_t, fatal_error, exit_usage, exit_geometry
   use kinetostat_text, only: int_str
-  use kinetostat_format, only: full_number, short_number
-  use kinetostat_labels, only: lang_ru, unit_symbol, in_language
-  use kinetostat_override, only: override_t, append_override
+  use kinetostat_labels, only: in_language
+  use kinetostat_override, only: override_t
   use kinetostat_text_buffer, only: text_buffer_t
-  use kinetostat_least_squares, only: least_squares
-  use kinetostat_vec2, only: rotate
+  use kinetostat_counterweights, only: method_crank => balance_crank, method_partial => balance_partial, &
+    method_names => balance_method_names, fit_full_balance, report_full_balance, report_partial_balance, &
+    counterweight_note, add_counterweight_assignments
   use kinetostat_linkage, only: linkage_t, linkage_work_t, pair_r, pair_p, linkage_reference_pose, linkage_assemble, &
     point_position
   use kinetostat_linkage_deck, only: linkage_deck_t, linkage_drive_values
@@ -26,15 +26,8 @@ module kinetostat_linkage_balance
   private
   public :: linkage_balance
 
-  !> The methods (the codes of kinetostat_assur_balance's balance_full, _crank, _partial).
-  integer, parameter :: method_full = 1, method_crank = 2, method_partial = 3
-  !> Their names, in the order of their codes.
-  character(*), parameter :: method_names(*) = [character(len=7) :: "full", "crank", "partial"]
   !> Positions of the sample turn (every 5 deg).
   integer, parameter :: sample_count = 72
-  !> Full balance exists when the least-squares residual is at most this times the unbalanced
-  !> travel of the first moment.
-  real(wp), parameter :: balance_rel = 1.0e-9_wp
 
 contains
 
@@ -98,7 +91,6 @@ contains
       type(error_t), allocatable, intent(out) :: err
       integer :: rod, slider, ip, jp
       real(wp) :: b(2), c(2), share, m_rec, m_rot, r, l, omega
-      character(len=:), allocatable :: kg, m, n_unit
       w = 0.0_wp
       rod = 0
       slider = 0
@@ -143,48 +135,7 @@ contains
         w = -(m_rot + fraction * m_rec) * (b - pc)
       end associate
       omega = abs(deck%omega(1))
-      kg = unit_symbol("kg", lang)
-      m = unit_symbol("m", lang)
-      n_unit = unit_symbol("N", lang)
-      if (lang == lang_ru) then
-        call rep%put("частичное уравновешивание"// &
-          " кривошипно-ползунного механизма: масса кривошипа, "// &
-          "вращающаяся масса "//short_number(m_rot)//" "//kg//" и доля"// &
-            " "//short_number(fraction)// &
-          " возвратно-поступательно движущейся массы"// &
-            " "//short_number(m_rec)//" "//kg// &
-          " на радиусе кривошипа "//short_number(r)//" "//m)
-        call rep%put("  (масса шатуна разнесена в две точки:"// &
-          " доля "//short_number(share)//" в шарнире ползуна)")
-        call rep%put("  сила инерции первого порядка (первая"// &
-          " гармоника, m_rec*r*omega1^2 = "// &
-          short_number(m_rec * r * omega**2)//" "//n_unit//" при omega1 = "//short_number(omega)//" "// &
-          unit_symbol("rad/s", lang)//"): вдоль направляющей"// &
-            " "//short_number(m_rec * r * omega**2)//" "//n_unit// &
-          " до уравновешивания,"// &
-            " "//short_number((1.0_wp - fraction) * m_rec * r * omega**2)//" "//n_unit// &
-          " после; поперек направляющей 0 до,"// &
-            " "//short_number(fraction * m_rec * r * omega**2)//" "//n_unit//" после")
-        call rep%put("  сила инерции второго порядка (вторая"// &
-          " гармоника, m_rec*r*omega1^2*r/l): "// &
-          short_number(m_rec * r * omega**2 * r / l)//" "//n_unit//" вдоль"// &
-            " направляющей, не меняется "// &
-          "(противовес на кривошипе вращается с угловой"// &
-            " скоростью omega1)")
-      else
-        call rep%put("partial balance of the slider-crank: the crank's own mass, the rotating mass "// &
-          short_number(m_rot)//" kg and "//short_number(fraction)//" of the reciprocating mass "// &
-          short_number(m_rec)//" kg at the crank radius "//short_number(r)//" m")
-        call rep%put("  (rod as two masses: "//short_number(share)//" of it at the slider's pin)")
-        call rep%put("  primary component (first harmonic, m_rec*r*omega1^2 = "// &
-          short_number(m_rec * r * omega**2)//" N at omega1 = "//short_number(omega)//" rad/s): along the "// &
-          "guide "//short_number(m_rec * r * omega**2)//" N before, "// &
-          short_number((1.0_wp - fraction) * m_rec * r * omega**2)//" N after; across the guide 0 before, "// &
-          short_number(fraction * m_rec * r * omega**2)//" N after")
-        call rep%put("  secondary component (second harmonic, m_rec*r*omega1^2*r/l): "// &
-          short_number(m_rec * r * omega**2 * r / l)//" N along the guide, unchanged (a crank counterweight "// &
-          "turns at omega1 only)")
-      end if
+      call report_partial_balance(rep, lang, "", "", m_rot, m_rec, fraction, share, r, l, omega)
     end subroutine partial
   end subroutine linkage_balance
 
@@ -217,10 +168,10 @@ contains
     logical, intent(inout) :: carries(:)
     type(text_buffer_t), intent(inout) :: report
     type(error_t), allocatable, intent(out) :: error
-    real(wp), allocatable :: poses(:, :), a(:, :), b(:), x(:), moment(:, :)
+    real(wp), allocatable :: poses(:, :), x(:), moment(:, :), theta(:, :), own(:, :), mass(:)
     integer, allocatable :: piv(:)
     integer :: nl, ns, i, k, j, nu
-    real(wp) :: mean(2), unbalanced, residual, r(2), turn
+    real(wp) :: turn
     call sample_poses(deck, poses, error)
     if (allocated(error)) return
     nl = size(carries)
@@ -232,11 +183,6 @@ contains
           deck%mech%links(i)%s)
       end do
     end do
-    mean = sum(moment, dim=2) / real(ns, wp)
-    unbalanced = 0.0_wp
-    do k = 1, ns
-      unbalanced = max(unbalanced, norm2(moment(:, k) - mean))
-    end do
     allocate (piv(0))
     do i = 1, nl
       if (.not. carries(i)) cycle
@@ -245,66 +191,17 @@ contains
       if (turn >= 1.0e-9_wp) piv = [piv, i]
     end do
     carries = .false.
-    if (.not. unbalanced > 0.0_wp) then
-      call report%put(in_language("full balance: the total centre of mass does not move (nothing to balance)", &
-        "полное статическое уравновешивание: общий"// &
-          " центр масс неподвижен (уравновешивать нечего)", lang))
-      return
-    end if
-    nu = 2 * size(piv) + 2
-    allocate (a(2 * ns, nu), b(2 * ns), x(nu))
-    do k = 1, ns
-      b(2 * k - 1:2 * k) = -moment(:, k)
-      do j = 1, size(piv)
-        i = piv(j)
-        associate (l => deck%mech%links(i))
-          b(2 * k - 1:2 * k) = b(2 * k - 1:2 * k) + l%m * rotate(l%s - pivot(:, i), poses(3 * i, k))
-          a(2 * k - 1:2 * k, 2 * j - 1) = rotate([1.0_wp, 0.0_wp], poses(3 * i, k))
-          a(2 * k - 1:2 * k, 2 * j) = rotate([0.0_wp, 1.0_wp], poses(3 * i, k))
-        end associate
-      end do
-      a(2 * k - 1:2 * k, nu - 1) = [-1.0_wp, 0.0_wp]
-      a(2 * k - 1:2 * k, nu) = [0.0_wp, -1.0_wp]
-    end do
-    call least_squares(a, b, x, error)
-    if (allocated(error)) then
-      call fatal_error(error, exit_geometry, "full balance: the counterweights are not determined (the links "// &
-        "pivoted on the frame move together); balance the crank alone (--method crank)")
-      return
-    end if
-    residual = 0.0_wp
-    do k = 1, ns
-      r = -moment(:, k)
-      do j = 1, size(piv)
-        associate (l => deck%mech%links(piv(j)))
-          r = r + rotate(l%m * (l%s - pivot(:, piv(j))) - x(2 * j - 1:2 * j), poses(3 * piv(j), k))
-        end associate
-      end do
-      residual = max(residual, norm2(r + x(nu - 1:nu)))
-    end do
-    if (residual > balance_rel * unbalanced) then
-      call fatal_error(error, exit_geometry, "full balance is impossible: counterweights on the links pivoted on "// &
-        "the frame leave "//short_number(residual / unbalanced * 100.0_wp)//" % of the centre of mass's travel "// &
-        "(a link whose origin moves, such as a slider on the frame, cannot be balanced by them); "// &
-        "use --method partial [--fraction F] (a slider-crank) or --method crank")
-      return
-    end if
-    do j = 1, size(piv)
-      w_new(:, piv(j)) = x(2 * j - 1:2 * j)
-      carries(piv(j)) = .true.
-    end do
+    theta = poses(3:3 * nl:3, :)
+    own = reshape([(deck%mech%links(i)%s - pivot(:, i), i = 1, nl)], [2, nl])
+    mass = deck%mech%links%m
+    call fit_full_balance(moment, theta, mass, own, piv, lang, report, w_new, carries, x, error)
+    if (allocated(error) .or. .not. allocated(x)) return
+    nu = size(x)
     ! the constant C is the total first moment but for the counterweights' own m_c P
     do j = 1, size(piv)
       x(nu - 1:nu) = x(nu - 1:nu) + (mass_after(piv(j)) - deck%mech%links(piv(j))%m) * pivot(:, piv(j))
     end do
-    call report%put(in_language("full balance (linearly independent vectors): counterweights on the "// &
-      int_str(size(piv))//" links pivoted on the frame; the total centre of mass stays at (", &
-      "полное статическое уравновешивание (метод"// &
-        " линейно независимых векторов): противовесы на "// &
-      int_str(size(piv))//" звеньях, вращающихся вокруг"// &
-        " неподвижных осей; общий центр масс неподвижен в точке (", &
-      lang)//short_number(x(nu - 1) / total_mass())//", "//short_number(x(nu) / total_mass())//") "// &
-      unit_symbol("m", lang))
+    call report_full_balance(report, lang, size(piv), x(nu - 1:nu) / total_mass())
   contains
     !> A pivoted link's mass with its counterweight, kg.
     pure real(wp) function mass_after(q)
@@ -401,31 +298,11 @@ contains
       s_new = p + w / m_new
       j_new = l%j + l%m * sum((l%s - s_new)**2) + mc * sum((c - s_new)**2)
       prefix = "link("//int_str(i)//")%"
-      if (lang == lang_ru) then
-        note = "противовес на звене "//int_str(l%id)//":"// &
-          " "//short_number(mc)//" "//unit_symbol("kg", lang)// &
-          " на радиусе r = "//short_number(radius)//" "//unit_symbol("m", lang)//","// &
-            " "//short_number(angle)//" "// &
-          unit_symbol("deg", lang)//" от оси вращения в исходном"// &
-            " положении (m*r = "//short_number(mc * radius)// &
-          " "//unit_symbol("kg", lang)//"·"//unit_symbol("m", lang)//")"
-      else
-        note = "counterweight on link "//int_str(l%id)//": "//short_number(mc)//" kg at r = "// &
-          short_number(radius)//" m, "//short_number(angle)//" deg from its pivot at the reference position "// &
-          "(m*r = "//short_number(mc * radius)//" kg*m)"
-      end if
-      call append_override(overrides, prefix//"m", full_number(m_new)//"   ! "//note//";"// &
-        " kinetostat balance --method "// &
-        trim(method_names(method)))
-      call append_override(overrides, prefix//"j", full_number(j_new))
-      call append_override(overrides, prefix//"s", full_number(s_new(1))//", "//full_number(s_new(2)))
-      call report%put(note)
-      call report%put("  "//prefix//"m "//short_number(l%m)//" -> "//short_number(m_new)//" "// &
-        unit_symbol("kg", lang)//", "//prefix//"j "//short_number(l%j)//" -> "//short_number(j_new)//" "// &
-        unit_symbol("kg*m^2", lang)//in_language(", centre of mass (", ", центр масс (", lang)// &
-        short_number(l%s(1))//", "//short_number(l%s(2))//") -> ("//short_number(s_new(1))//", "// &
-        short_number(s_new(2))//") "//unit_symbol("m", lang)//in_language(" at the reference position", &
-        " в исходном положении", lang))
+      note = counterweight_note(lang, l%id, mc, radius, angle, "from its pivot at the reference position", &
+        "от оси вращения в исходном положении")
+      call add_counterweight_assignments(overrides, report, lang, method, note, &
+        prefix//"m", prefix//"j", prefix//"s", l%m, m_new, l%j, j_new, l%s, s_new, s_new, &
+        " at the reference position", " в исходном положении")
     end associate
   end subroutine add_counterweight
 

@@ -19,32 +19,17 @@
 !> linkage with them as further forces (on a link's point of the guide line, turning with it)
 !> and moments; only this module knows they are friction.
 module kinetostat_linkage_friction
-  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use kinetostat_kinds, only: wp
-  use kinetostat_error, only: error_t, fatal_error, exit_geometry
-  use kinetostat_text, only: int_str, real_str
+  use kinetostat_error, only: error_t
+  use kinetostat_text, only: real_str
+  use kinetostat_pair_friction, only: friction_max_iterations, friction_zero_rel, roundoff_rel, sign_floor_rel, &
+    friction_load, relative, note_pair_changes, reverses_at_rest, self_locking_error, friction_iteration_t
   use kinetostat_vec2, only: perp, rotate, magnitude
   use kinetostat_linkage, only: linkage_t, linkage_step_t, linkage_work_t, linkage_force_t, pair_r, pair_p, &
     linkage_statics, linkage_velocity_analogues, point_position
   implicit none
   private
   public :: linkage_friction_t, linkage_friction_solve
-
-  !> Convergence tolerance of the coupled solve (every reaction, relative).
-  real(wp), parameter :: friction_tolerance = 1.0e-12_wp
-  !> Iteration limit of the coupled solve.
-  integer, parameter :: friction_max_iterations = 1000
-  !> A relative analogue at or below this fraction of its scale counts as zero.
-  real(wp), parameter :: friction_zero_rel = 1.0e-10_wp
-  !> Consecutive growing changes after which the iteration counts as diverging.
-  integer, parameter :: diverging_after = 20
-  !> Roundoff floor of a reaction's change, relative to the step's largest reaction.
-  real(wp), parameter :: roundoff_rel = 1.0e-14_wp
-  !> A change at or below this is roundoff: the fixed point is reached.
-  real(wp), parameter :: roundoff_change = 4.0_wp * epsilon(1.0_wp)
-  !> A frictionless effort below this fraction of the step's largest reaction times the
-  !> linkage's size has no sign in the self-locking test.
-  real(wp), parameter :: sign_floor_rel = 1.0e-12_wp
 
   !> Friction results of one step.
   type :: linkage_friction_t
@@ -86,9 +71,10 @@ contains
     type(linkage_t) :: loaded
     type(linkage_step_t) :: old
     real(wp), allocatable :: v(:, :), an(:), rel(:), sense(:), t(:, :), p(:, :), fx(:), mx(:), weight(:)
-    real(wp) :: ref_rate, change, previous, cq, fmax, roundoff_driver
-    integer :: np, nd, k, it, where, growing, nf0, nm0, i, j
-    logical :: converged
+    type(friction_iteration_t) :: iteration
+    real(wp) :: ref_rate, change, fmax, roundoff_driver
+    integer :: np, nd, k, it, where, nf0, nm0, i, j
+    logical :: done
 
     np = size(mech%pairs)
     nd = size(mech%drives)
@@ -147,12 +133,7 @@ contains
     allocate (fr%q(np), fr%rate(np), fr%loss(np))
     fmax = largest_force(step)
     roundoff_driver = sign_floor_rel * fmax * mech%size
-    previous = 0.0_wp
-    cq = 0.0_wp
-    change = 0.0_wp
     where = 0
-    converged = .false.
-    growing = 0
     do it = 1, friction_max_iterations
       call friction_loads(step, fr%q, fr%rate, fx, mx)
       old = step
@@ -160,22 +141,12 @@ contains
       call linkage_statics(loaded, fx, mx, step, work, error)
       if (allocated(error)) return
       call largest_change(old, step, change, where)
-      fr%iterations = it
-      if (.not. ieee_is_finite(change)) exit
-      if (it > 1 .and. previous > 0.0_wp) cq = change / previous
-      previous = change
-      converged = change <= roundoff_change .or. &
-                  (it > 1 .and. cq < 1.0_wp .and. change * max(1.0_wp, cq / (1.0_wp - cq)) <= friction_tolerance)
-      if (converged) exit
-      growing = merge(growing + 1, 0, cq >= 1.0_wp)
-      if (growing >= diverging_after) exit
+      call iteration%next(it, change, done)
+      if (done) exit
     end do
-    if (.not. converged) then
-      call fatal_error(error, exit_geometry, "friction: the coupled solve of reactions and friction loads "// &
-        trim(merge("diverges         ", "does not converge", growing >= diverging_after))//" ("// &
-        int_str(fr%iterations)//" iterations, last relative change "//real_str(change)//" in "// &
-        where_text(where)//", contraction factor "//real_str(cq)//"): friction too large for this "// &
-        "position (jamming: the factor reaches 1)")
+    fr%iterations = iteration%iterations
+    if (.not. iteration%converged) then
+      call iteration%failure(where_text(where), error)
       return
     end if
     ! the losses by the final reactions
@@ -184,12 +155,11 @@ contains
     fr%loss = fr%rate * ref_rate
     fr%p_loss = fr%rate_total * ref_rate
     fr%driver_rate = dot_product(step%effort, weight)
-    if (ref_rate == 0.0_wp .and. abs(fr%effort0(1)) > roundoff_driver .and. step%effort(1) /= 0.0_wp .and. &
-        sign(1.0_wp, step%effort(1)) /= sign(1.0_wp, fr%effort0(1))) then
-      call fatal_error(error, exit_geometry, "friction: self-locking with the input at rest: friction reverses "// &
-        "the driving effort ("//real_str(fr%effort0(1))//" without friction, "//real_str(step%effort(1))// &
-        " with it; largest friction load in "//where_text(maxloc(fr%rate, 1))//")")
-      return
+    if (ref_rate == 0.0_wp) then
+      if (reverses_at_rest(fr%effort0(1), step%effort(1), roundoff_driver)) then
+        call self_locking_error(real_str(fr%effort0(1)), real_str(step%effort(1)), where_text(maxloc(fr%rate, 1)), error)
+        return
+      end if
     end if
     ! a sliding pair's reported reaction is the whole reaction: normal plus friction
     do k = 1, np
@@ -207,7 +177,6 @@ contains
       !> The loads: the deck's, then the friction loads.
       real(wp), intent(inout) :: fxv(:), mxv(:)
       integer :: kk, jf, jm
-      real(wp) :: normal
       jf = nf0
       jm = nm0
       qv = 0.0_wp
@@ -215,13 +184,7 @@ contains
       do kk = 1, np
         if (.not. f(kk) > 0.0_wp) cycle
         associate (pr => mech%pairs(kk))
-          if (pr%kind == pair_p) then
-            normal = abs(st%normal(kk))
-            if (span(kk) > 0.0_wp) normal = max(normal, 2.0_wp * abs(st%couple(kk)) / span(kk))
-            qv(kk) = f(kk) * normal
-          else
-            qv(kk) = f(kk) * r(kk) * magnitude(st%f(:, kk))
-          end if
+          qv(kk) = friction_load(f(kk), r(kk), span(kk), pr%kind == pair_p, st%f(:, kk), st%normal(kk), st%couple(kk))
           ratev(kk) = qv(kk) * abs(rel(kk)) * abs(sense(kk))
           if (pr%kind == pair_p) then
             if (pr%a > 0) call put(fxv, jf, -qv(kk) * sense(kk))
@@ -265,7 +228,7 @@ contains
       type(linkage_step_t), intent(in) :: a, b
       real(wp), intent(out) :: ch
       integer, intent(out) :: at
-      real(wp) :: floor, c
+      real(wp) :: floor
       integer :: kk
       floor = roundoff_rel * largest_force(b)
       ch = 0.0_wp
@@ -273,14 +236,7 @@ contains
       do kk = 1, size(b%effort)
         ch = max(ch, relative(abs(b%effort(kk) - a%effort(kk)), max(abs(b%effort(kk)), floor * mech%size)))
       end do
-      do kk = 1, np
-        c = max(relative(magnitude(b%f(:, kk) - a%f(:, kk)), max(magnitude(b%f(:, kk)), floor)), &
-                relative(abs(b%couple(kk) - a%couple(kk)), max(abs(b%couple(kk)), floor * mech%size)))
-        if (.not. c <= ch) then
-          ch = c
-          at = kk
-        end if
-      end do
+      call note_pair_changes(a%f, b%f, a%couple, b%couple, floor, mech%size, ch, at)
     end subroutine largest_change
 
     !> "pair J21" or "the drives' efforts" for messages.
@@ -311,17 +267,5 @@ contains
       largest_force = max(largest_force, magnitude(st%f(:, kk)))
     end do
   end function largest_force
-
-  !> num / den, 0 when num is 0, huge when only den is 0.
-  pure real(wp) function relative(num, den)
-    real(wp), intent(in) :: num, den
-    if (.not. num > 0.0_wp) then
-      relative = 0.0_wp
-    else if (den > 0.0_wp) then
-      relative = num / den
-    else
-      relative = huge(1.0_wp)
-    end if
-  end function relative
 
 end module kinetostat_linkage_friction

@@ -3,7 +3,7 @@ module kinetostat_pr3050_deck
   use kinetostat_kinds, only: wp, g_default, deg_to_rad
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str
-  use kinetostat_deck_foreign, only: refuse_variables
+  use kinetostat_deck_foreign, only: refuse_translated_stages, refuse_variables
   use kinetostat_deck, only: values_out_of_memory, begin_group, text_bytes, text_chars, max_deck_array, &
     deck_context_t, unset_real, deck_array_capacities, max_steps, deck_source_t, namelist_probe_t, &
     optional_default, deck_rules_t
@@ -122,17 +122,9 @@ contains
     call begin_group(source, "pr3050", ctx, error)
     if (allocated(error)) return
     ! a stage this kind lacks: the reason and the way out, before the READ
-    call refuse_variables(source, "pr3050", [character(len=8) :: "crank_f", "crank_r", "dyad"], &
-      "a &pr3050 deck has no friction; "// &
-      "its &linkage translation has (kinetostat convert DECK --to linkage)", error)
-    if (allocated(error)) return
-    call refuse_variables(source, "pr3050", [character(len=8) :: "cycle"], &
+    call refuse_translated_stages(source, "pr3050", "", error, cycle_reason= &
       "PR 3050 is driven by its cylinder: its dynamics is 'reduced' only (no steady cycle; "// &
-      "in its &linkage translation neither)", error)
-    if (allocated(error)) return
-    call refuse_variables(source, "pr3050", [character(len=8) :: "force", "moment"], &
-      "a &pr3050 deck has no loads, and no load tables; "// &
-      "its &linkage translation has them (kinetostat convert DECK --to linkage)", error)
+      "in its &linkage translation neither)")
     if (allocated(error)) return
     call refuse_variables(source, "pr3050", [character(len=8) :: "md_table"], &
       "PR 3050 is driven by its cylinder: its dynamics is 'reduced' only (no driving-moment table; in its "// &

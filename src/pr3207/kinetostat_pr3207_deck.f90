@@ -3,7 +3,7 @@ module kinetostat_pr3207_deck
   use kinetostat_kinds, only: wp, g_default
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str
-  use kinetostat_deck_foreign, only: refuse_variables
+  use kinetostat_deck_foreign, only: refuse_translated_stages
   use kinetostat_deck, only: values_out_of_memory, begin_group, text_bytes, text_chars, max_deck_array, &
     deck_context_t, unset_real, deck_array_capacities, deck_source_t, namelist_probe_t, deck_error, is_set, &
     require_rule, require_per_step, optional_default, count_values, steps_over_turn, deck_rules_t
@@ -127,17 +127,7 @@ contains
     call begin_group(source, "pr3207", ctx, error)
     if (allocated(error)) return
     ! a stage this kind lacks: the reason and the way out, before the READ
-    call refuse_variables(source, "pr3207", [character(len=8) :: "crank_f", "crank_r", "dyad"], &
-      "a &pr3207 deck has no friction; "// &
-      "its &linkage translation has (kinetostat convert DECK --to linkage)", error)
-    if (allocated(error)) return
-    call refuse_variables(source, "pr3207", [character(len=8) :: "cycle"], &
-      "a &pr3207 deck's cycle is one turn; "// &
-      "a cycle of two turns runs on its &linkage translation (kinetostat convert DECK --to linkage)", error)
-    if (allocated(error)) return
-    call refuse_variables(source, "pr3207", [character(len=8) :: "force", "moment"], &
-      "a &pr3207 deck has no loads but f5c, and no load tables; "// &
-      "its &linkage translation has them (kinetostat convert DECK --to linkage)", error)
+    call refuse_translated_stages(source, "pr3207", " but f5c", error)
     if (allocated(error)) return
     l_ab = unset_real; l_ac = unset_real; l_cd = unset_real; l_cs3 = unset_real
     m1 = unset_real; m3 = unset_real; m5 = unset_real; j3 = unset_real

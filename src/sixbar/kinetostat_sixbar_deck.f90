@@ -3,7 +3,7 @@ module kinetostat_sixbar_deck
   use kinetostat_kinds, only: wp, g_default, rad_to_deg
   use kinetostat_error, only: error_t, fatal_error, exit_geometry
   use kinetostat_text, only: real_str, int_str
-  use kinetostat_deck_foreign, only: refuse_variables
+  use kinetostat_deck_foreign, only: refuse_translated_stages
   use kinetostat_deck, only: values_out_of_memory, begin_group, text_bytes, text_chars, max_deck_array, &
     deck_context_t, unset_real, deck_array_capacities, deck_source_t, namelist_probe_t, deck_error, is_set, &
     require_set, optional_default, steps_over_turn, deck_rules_t
@@ -100,17 +100,7 @@ contains
     call begin_group(source, "sixbar", ctx, error)
     if (allocated(error)) return
     ! a stage this kind lacks: the reason and the way out, before the READ
-    call refuse_variables(source, "sixbar", [character(len=8) :: "crank_f", "crank_r", "dyad"], &
-      "a &sixbar deck has no friction; "// &
-      "its &linkage translation has (kinetostat convert DECK --to linkage)", error)
-    if (allocated(error)) return
-    call refuse_variables(source, "sixbar", [character(len=8) :: "cycle"], &
-      "a &sixbar deck's cycle is one turn; "// &
-      "a cycle of two turns runs on its &linkage translation (kinetostat convert DECK --to linkage)", error)
-    if (allocated(error)) return
-    call refuse_variables(source, "sixbar", [character(len=8) :: "force", "moment"], &
-      "a &sixbar deck has no loads but f5, and no load tables; "// &
-      "its &linkage translation has them (kinetostat convert DECK --to linkage)", error)
+    call refuse_translated_stages(source, "sixbar", " but f5", error)
     if (allocated(error)) return
     dynamics = ""; delta = unset_real; j_rotor = unset_real; j_flywheel = unset_real
     flywheel_density = unset_real; flywheel_width_ratio = unset_real
