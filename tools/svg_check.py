@@ -231,20 +231,24 @@ def png_pixels(path):
             rows.append(bytes(line))
             previous = line
             continue
-        for x in range(stride):
-            a = line[x - channels] if x >= channels else 0
+        # the first pixel has no left neighbour (a = c = 0), then each filter in a loop of its own
+        for x in range(channels):
             b = previous[x]
-            c = previous[x - channels] if x >= channels else 0
-            if kind == 1:
-                line[x] = (line[x] + a) & 255
-            elif kind == 2:
-                line[x] = (line[x] + b) & 255
-            elif kind == 3:
-                line[x] = (line[x] + (a + b) // 2) & 255
+            if kind == 3:
+                line[x] = (line[x] + b // 2) & 255
             elif kind == 4:
+                line[x] = (line[x] + b) & 255  # Paeth of (0, b, 0) is b
+        if kind == 1:
+            for x in range(channels, stride):
+                line[x] = (line[x] + line[x - channels]) & 255
+        elif kind == 3:
+            for x in range(channels, stride):
+                line[x] = (line[x] + (line[x - channels] + previous[x]) // 2) & 255
+        elif kind == 4:
+            for x in range(channels, stride):
+                a, b, c = line[x - channels], previous[x], previous[x - channels]
                 pa, pb, pc = abs(b - c), abs(a - c), abs(a + b - 2 * c)
-                pred = a if pa <= pb and pa <= pc else (b if pb <= pc else c)
-                line[x] = (line[x] + pred) & 255
+                line[x] = (line[x] + (a if pa <= pb and pa <= pc else (b if pb <= pc else c))) & 255
         rows.append(bytes(line))
         previous = line
     return width, height, channels, rows
