@@ -231,20 +231,24 @@ def png_pixels(path):
             rows.append(bytes(line))
             previous = line
             continue
-        for x in range(stride):
-            a = line[x - channels] if x >= channels else 0
+        # the first pixel has no left neighbour (a = c = 0), then each filter in a loop of its own
+        for x in range(channels):
             b = previous[x]
-            c = previous[x - channels] if x >= channels else 0
-            if kind == 1:
-                line[x] = (line[x] + a) & 255
-            elif kind == 2:
-                line[x] = (line[x] + b) & 255
-            elif kind == 3:
-                line[x] = (line[x] + (a + b) // 2) & 255
+            if kind == 3:
+                line[x] = (line[x] + b // 2) & 255
             elif kind == 4:
+                line[x] = (line[x] + b) & 255  # Paeth of (0, b, 0) is b
+        if kind == 1:
+            for x in range(channels, stride):
+                line[x] = (line[x] + line[x - channels]) & 255
+        elif kind == 3:
+            for x in range(channels, stride):
+                line[x] = (line[x] + (line[x - channels] + previous[x]) // 2) & 255
+        elif kind == 4:
+            for x in range(channels, stride):
+                a, b, c = line[x - channels], previous[x], previous[x - channels]
                 pa, pb, pc = abs(b - c), abs(a - c), abs(a + b - 2 * c)
-                pred = a if pa <= pb and pa <= pc else (b if pb <= pc else c)
-                line[x] = (line[x] + pred) & 255
+                line[x] = (line[x] + (a if pa <= pb and pa <= pc else (b if pb <= pc else c))) & 255
         rows.append(bytes(line))
         previous = line
     return width, height, channels, rows
@@ -473,6 +477,11 @@ def lines_under_labels(path, boxes):
                         continue
                     seen.add(n)
                     s = segments[n]
+                    # the bounding boxes' gap is no more than the distance: a segment whose
+                    # gap leaves no depth above 0.01 mm cannot lie under the label
+                    if max(min(s[0], s[2]) - b[2], b[0] - max(s[0], s[2]),
+                           min(s[1], s[3]) - b[3], b[1] - max(s[1], s[3])) >= s[4] - 0.01 + 1e-9:
+                        continue
                     depth = s[4] - segment_box_distance(s, b)
                     if s[5] == "leader":
                         # its own label: an end of the leader on the box's edge
@@ -505,15 +514,24 @@ def check_labels(paths, lines=False):
                     b[3] > view[1] + view[3] + 0.01:
                 bad.append(f"{path}: {text!r} at ({b[0]:.2f}, {b[3]:.2f}) leaves the sheet "
                            f"(its box ends at x = {b[2]:.2f} mm of {view[2]:.2f})")
-        for i in range(len(boxes)):
-            (a, ta) = boxes[i]
-            for j in range(i + 1, len(boxes)):
-                (b, tb) = boxes[j]
-                w = min(a[2], b[2]) - max(a[0], b[0])
-                h = min(a[3], b[3]) - max(a[1], b[1])
-                if w > 0.01 and h > 0.01:
-                    bad.append(f"{path}: {ta!r} at ({a[0]:.2f}, {a[3]:.2f}) overlaps {tb!r} at "
-                               f"({b[0]:.2f}, {b[3]:.2f}) by {w:.2f} x {h:.2f} mm")
+        # every pair of boxes that overlap by more than 0.01 mm both ways, in the order of the
+        # sheet: a sweep along x (boxes by their left edges: a box meets the ones that begin
+        # before its right edge)
+        order = sorted(range(len(boxes)), key=lambda k: boxes[k][0][0])
+        pairs = []
+        for m, i in enumerate(order):
+            right = boxes[i][0][2]
+            for j in order[m + 1:]:
+                if right - boxes[j][0][0] <= 0.01:
+                    break
+                pairs.append((min(i, j), max(i, j)))
+        for i, j in sorted(pairs):
+            (a, ta), (b, tb) = boxes[i], boxes[j]
+            w = min(a[2], b[2]) - max(a[0], b[0])
+            h = min(a[3], b[3]) - max(a[1], b[1])
+            if w > 0.01 and h > 0.01:
+                bad.append(f"{path}: {ta!r} at ({a[0]:.2f}, {a[3]:.2f}) overlaps {tb!r} at "
+                           f"({b[0]:.2f}, {b[3]:.2f}) by {w:.2f} x {h:.2f} mm")
         if lines:
             over, n = lines_under_labels(path, boxes)
             bad += over

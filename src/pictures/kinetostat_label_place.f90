@@ -31,6 +31,14 @@ module kinetostat_label_place
   real(wp), parameter :: line_gap = 0.15_wp
   !> A label placed strictly farther than this from its point (its arrow) gets a leader, mm.
   real(wp), parameter :: leader_distance = 4.0_wp
+  !> Clearance from the lines beyond which a spot scores no better, mm (the search looks no
+  !> farther for lines: a clearance is the least of this and the true one).
+  real(wp), parameter :: room_enough = 1.5_wp
+  !> Slack of the bounding-box tests that skip a segment before its exact distance is taken,
+  !> mm (rounding of the exact distance is far below it, so a skip never changes a result).
+  real(wp), parameter :: skip_slack = 1.0e-9_wp
+  !> Side of a cell of the grid that files the segments near a label's point, mm.
+  real(wp), parameter :: cell_side = 4.0_wp
 
   !> The boxes taken on a sheet.
   type :: label_boxes_t
@@ -195,11 +203,25 @@ contains
     logical, intent(out) :: leader
     !> Tail of the arrow ending at the point, mm.
     real(wp), intent(in), optional :: tail(2)
-    real(wp) :: hw, hh, best, cx, cy, d, u(2), nrm(2), length, bx, by
-    integer :: i, ring, side, pass
+    real(wp) :: hw, hh, best, cx, cy, d, u(2), nrm(2), length, bx, by, zone(4)
+    integer :: i, ring, side, pass, nx, ny
+    !> The grid over `zone`: the segments filed in cell c (numbered from 1 along x, then y)
+    !> are filed(first(c):first(c + 1) - 1); a segment's lowest cell (cell_x, cell_y, from 0).
+    integer, allocatable :: first(:), filed(:), cell_x(:), cell_y(:), every(:)
     logical :: found, hard
     hw = 0.5_wp * width
     hh = 0.5_wp * (above + below)
+    ! the segments that may come within room_enough of a spot's box inside `zone` (which holds
+    ! every spot beside the arrow and on the rings) filed in a grid over it: a spot there
+    ! looks at the cells its box meets only
+    zone = [px - 2.0_wp * hw - 2.4_wp - (ring_count - 1) * 2.5_wp, py - 2.0_wp * hh - 2.2_wp - (ring_count - 1) * 2.5_wp, &
+      px + 2.0_wp * hw + 2.4_wp + (ring_count - 1) * 2.5_wp, py + 2.0_wp * hh + 2.2_wp + (ring_count - 1) * 2.5_wp]
+    if (present(tail)) zone = [min(zone(1), tail(1) - 2.0_wp * hw - 1.6_wp), min(zone(2), tail(2) - 2.0_wp * hh - 1.6_wp), &
+      max(zone(3), tail(1) + 2.0_wp * hw + 1.6_wp), max(zone(4), tail(2) + 2.0_wp * hh + 1.6_wp)]
+    nx = max(1, ceiling((zone(3) - zone(1)) / cell_side))
+    ny = max(1, ceiling((zone(4) - zone(2)) / cell_side))
+    call file_segments(first, filed, cell_x, cell_y)
+    every = [(i, i = 1, size(ox) / 2)]
     length = 0.0_wp
     best = -huge(1.0_wp)
     found = .false.
@@ -283,7 +305,11 @@ contains
       b = [qx - hw, qy - hh, qx + hw, qy + hh]
       if (b(1) < bounds(1) .or. b(3) > bounds(3) .or. b(2) < bounds(2) .or. b(4) > bounds(4)) return
       if (.not. self%is_free(b)) return
-      room = clearance(b, ox, oy, half_widths)
+      if (b(1) >= zone(1) .and. b(3) <= zone(3) .and. b(2) >= zone(2) .and. b(4) <= zone(4)) then
+        room = clearance_filed(b)
+      else
+        room = clearance(b, every)
+      end if
       if (hard) then
         if (room < line_gap) return
         if (needs_leader(qx, qy)) then
@@ -292,7 +318,7 @@ contains
           if (.not. self%line_is_free([px, py], e)) return
         end if
       end if
-      score = min(room, 1.5_wp) - penalty
+      score = min(room, room_enough) - penalty
       if (score > best + 1.0e-9_wp) then
         best = score
         bx = qx
@@ -300,6 +326,101 @@ contains
         found = .true.
       end if
     end subroutine try
+    !> Least distance from the box `b` (x0, y0, x1, y1) to the bands of the obstacle segments
+    !> numbered in `segments` (half width `half_widths(k)` each side of segment k), mm (0 or
+    !> less: the box touches one), or room_enough when that is less. A segment whose bounding
+    !> box is farther than the least so far is not measured: it cannot be nearer.
+    pure real(wp) function clearance(b, segments)
+      real(wp), intent(in) :: b(4)
+      integer, intent(in) :: segments(:)
+      integer :: i, k
+      clearance = room_enough
+      do i = 1, size(segments)
+        k = 2 * segments(i) - 1
+        if (.not. reachable(b, k, clearance)) cycle
+        clearance = min(clearance, segment_box_distance([ox(k), oy(k)], [ox(k + 1), oy(k + 1)], b) - &
+          half_widths((k + 1) / 2))
+      end do
+    end function clearance
+    !> clearance(b, all segments) for a box inside `zone`, from the segments filed in the
+    !> cells it meets (each measured once: in the lowest cell its own cells share with them).
+    pure real(wp) function clearance_filed(b)
+      real(wp), intent(in) :: b(4)
+      integer :: ix, iy, ix0, iy0, ix1, iy1, j, s, k
+      call cell_range(b, 0.0_wp, ix0, iy0, ix1, iy1)
+      clearance_filed = room_enough
+      do iy = iy0, iy1
+        do ix = ix0, ix1
+          do j = first(ix + nx * iy + 1), first(ix + nx * iy + 2) - 1
+            s = filed(j)
+            if (ix /= max(ix0, cell_x(s)) .or. iy /= max(iy0, cell_y(s))) cycle
+            k = 2 * s - 1
+            if (.not. reachable(b, k, clearance_filed)) cycle
+            clearance_filed = min(clearance_filed, segment_box_distance([ox(k), oy(k)], [ox(k + 1), oy(k + 1)], b) - &
+              half_widths(s))
+          end do
+        end do
+      end do
+    end function clearance_filed
+    !> File every segment that may come within room_enough of a box inside `zone` in the
+    !> cells of the grid that its band, grown by room_enough, meets.
+    pure subroutine file_segments(first, filed, cell_x, cell_y)
+      integer, allocatable, intent(out) :: first(:), filed(:), cell_x(:), cell_y(:)
+      integer :: s, k, ix, iy, ix0, iy0, ix1, iy1, pass_no, c
+      integer, allocatable :: fill(:)
+      allocate (first(nx * ny + 1), fill(nx * ny), cell_x(size(ox) / 2), cell_y(size(ox) / 2))
+      fill = 0
+      do pass_no = 1, 2
+        do s = 1, size(ox) / 2
+          k = 2 * s - 1
+          if (.not. reachable(zone, k, room_enough)) cycle
+          ! the band's bounding box grown by room_enough (and a margin above the rounding)
+          call cell_range([min(ox(k), ox(k + 1)), min(oy(k), oy(k + 1)), max(ox(k), ox(k + 1)), max(oy(k), oy(k + 1))], &
+            half_widths(s) + room_enough + 1.0e-6_wp, ix0, iy0, ix1, iy1)
+          cell_x(s) = ix0
+          cell_y(s) = iy0
+          do iy = iy0, iy1
+            do ix = ix0, ix1
+              c = ix + nx * iy + 1
+              fill(c) = fill(c) + 1
+              if (pass_no == 2) filed(first(c) + fill(c) - 1) = s
+            end do
+          end do
+        end do
+        if (pass_no == 2) exit
+        first(1) = 1
+        do c = 1, nx * ny
+          first(c + 1) = first(c) + fill(c)
+        end do
+        allocate (filed(first(nx * ny + 1) - 1))
+        fill = 0
+      end do
+    end subroutine file_segments
+    !> The cells (from 0, within the grid) that the box `b` grown by `grow` mm meets.
+    pure subroutine cell_range(b, grow, ix0, iy0, ix1, iy1)
+      real(wp), intent(in) :: b(4), grow
+      integer, intent(out) :: ix0, iy0, ix1, iy1
+      ix0 = cell_of(b(1) - grow, zone(1), nx)
+      ix1 = cell_of(b(3) + grow, zone(1), nx)
+      iy0 = cell_of(b(2) - grow, zone(2), ny)
+      iy1 = cell_of(b(4) + grow, zone(2), ny)
+    end subroutine cell_range
+    !> The cell (0 to n - 1) of the coordinate v on an axis of the grid starting at v0.
+    pure integer function cell_of(v, v0, n)
+      real(wp), intent(in) :: v, v0
+      integer, intent(in) :: n
+      cell_of = floor(min(max((v - v0) / cell_side, 0.0_wp), real(n - 1, wp)))
+    end function cell_of
+    !> Whether the band of the segment from point k to point k + 1 may come nearer than
+    !> `reach` to the box `b` (by their bounding boxes, with skip_slack to spare).
+    pure logical function reachable(b, k, reach)
+      real(wp), intent(in) :: b(4), reach
+      integer, intent(in) :: k
+      real(wp) :: gap_x, gap_y
+      gap_x = max(min(ox(k), ox(k + 1)) - b(3), b(1) - max(ox(k), ox(k + 1)), 0.0_wp)
+      gap_y = max(min(oy(k), oy(k + 1)) - b(4), b(2) - max(oy(k), oy(k + 1)), 0.0_wp)
+      reachable = max(gap_x, gap_y) - half_widths((k + 1) / 2) <= reach + skip_slack
+    end function reachable
   end subroutine place_box
 
   !> Whether the segment a-b (a leader line) keeps 0.1 mm from every box taken.
@@ -318,22 +439,6 @@ contains
     end do
   end function line_is_free
 
-  !> Least distance from the box `b` (x0, y0, x1, y1) to the bands of the segments
-  !> (ox(2k-1), oy(2k-1))-(ox(2k), oy(2k)) of half width `half_widths(k)`, mm (0 or less: the
-  !> box touches one); segments farther than 3 mm are not looked at (huge when none is near).
-  pure real(wp) function clearance(b, ox, oy, half_widths)
-    real(wp), intent(in) :: b(4), ox(:), oy(:), half_widths(:)
-    integer :: k
-    real(wp) :: reach
-    clearance = huge(1.0_wp)
-    do k = 1, size(ox) - 1, 2
-      reach = 3.0_wp + half_widths((k + 1) / 2)
-      if (min(ox(k), ox(k + 1)) > b(3) + reach .or. max(ox(k), ox(k + 1)) < b(1) - reach .or. &
-        min(oy(k), oy(k + 1)) > b(4) + reach .or. max(oy(k), oy(k + 1)) < b(2) - reach) cycle
-      clearance = min(clearance, segment_box_distance([ox(k), oy(k)], [ox(k + 1), oy(k + 1)], b) - &
-        half_widths((k + 1) / 2))
-    end do
-  end function clearance
 
   !> Distance from the segment a-b to the box `box` (x0, y0, x1, y1), mm: 0 when the segment
   !> meets the box (crosses it or lies inside it).

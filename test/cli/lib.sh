@@ -133,9 +133,9 @@ check_batch() {
 }
 
 # heavy_deck NAME: true in the default suite (not with tools/test --long) for a bundled deck
-# whose every run takes about a second of processor time in the debug build (the &linkage
-# engine's steady cycles: over 361 poses 1.2 s, the engine's over 145 poses of two turns
-# 0.7 s; every other deck 0.05 s at most): the scripts that run each bundled deck in several
+# whose every run takes most of a second of processor time in the checks' build (tools/test:
+# fpm's debug flags at -O1; the &linkage engine's steady cycles: over 361 poses 0.7 s, the
+# engine's over 145 poses of two turns 0.25 s; every other deck 0.02 s at most): the scripts that run each bundled deck in several
 # ways run it in one of them by default.
 heavy_deck() {
   [ "${KINETOSTAT_LONG:-0}" != 1 ] || return 1

@@ -369,8 +369,9 @@ then pass; else fail dynamics-table-1441-points "exit $rc_a $rc: $(head -c 300 "
 # have (the forces, M1, the reduced quantities, dT, omega1, eps1, t) within 1e-9 (kinetostat
 # diff --common), and the flywheel's figures; the comparison must fail with the ram 1 kg heavier
 run_ks data/linkage_pr3207_flywheel.nml --format json; cp "$out" "$cli_tmp/lk_fw.json"; rc_a=$rc
-run_ks data/linkage_pr3207_flywheel.nml --format csv; cp "$out" "$cli_tmp/lk_fw.csv"
-run_ks data/pr3207_flywheel.nml --format csv; cp "$out" "$cli_tmp/pr_fw.csv"
+# (the CSV files are the goldens: lib.sh from_golden)
+from_golden linkage_pr3207_flywheel csv --format csv; cp "$out" "$cli_tmp/lk_fw.csv"
+from_golden pr3207_flywheel csv --format csv; cp "$out" "$cli_tmp/pr_fw.csv"
 "$KINETOSTAT" diff --common --rtol 1e-9 --atol 1e-9 "$cli_tmp/pr_fw.csv" "$cli_tmp/lk_fw.csv" >"$cli_tmp/lk_diff.out" 2>&1
 if [ "$rc_a" -eq 0 ] && [ $? -eq 0 ] && grep -q "^same: 7942 values agree" "$cli_tmp/lk_diff.out" && \
    python3 - "$cli_tmp/lk_fw.json" "$cli_tmp/fw.json" <<'PY'
