@@ -182,14 +182,16 @@ contains
   end subroutine group_apart_drawing
 
   !> Group e drawn apart in `box` at `view` (forces `per_newton` mm/N), with the arms about
-  !> each link's inner joint and their table below it.
-  pure subroutine draw_group_apart(sheet, drawing, plans, e, view, box, per_newton, lang)
+  !> each link's inner joint and their table from `table_at`.
+  pure subroutine draw_group_apart(sheet, drawing, plans, e, view, box, per_newton, lang, table_at)
     type(sheet_t), intent(inout) :: sheet
     type(drawing_t), intent(in) :: drawing
     type(plans_t), intent(in) :: plans
     integer, intent(in) :: e, lang
     type(mechanism_view_t), intent(in) :: view
     real(wp), intent(in) :: box(4), per_newton
+    !> The arms' table's first row (x, y), mm.
+    real(wp), intent(in) :: table_at(2)
     type(drawing_t) :: link
     character(len=16), allocatable :: names(:)
     integer, allocatable :: inner(:)
@@ -283,9 +285,9 @@ contains
     end do
     call sheet%text(box(1), box(2) - 1.5_wp, word("the group apart", lang)//", μl = "//scale_number(mu_l)//" "// &
       unit_word("m", lang)//"/"//unit_word("mm", lang), "small")
-    ! the arms' table under the drawing
+    ! the arms' table
     do j = 1, size(rows)
-      call sheet%text(box(1) + 1.0_wp, box(4) + row_pitch * j, trim(rows(j)), "small", size=1.8_wp)
+      call sheet%text(table_at(1), table_at(2) + row_pitch * (j - 1), trim(rows(j)), "small", size=1.8_wp)
     end do
   contains
     pure function arm_name(force, lang) result(name)

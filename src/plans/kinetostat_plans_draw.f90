@@ -38,7 +38,7 @@ module kinetostat_plans_draw
   use kinetostat_mechanism_sheet, only: fitted_size
   use kinetostat_plans_base, only: plans_t, plan_vector_t, plan_equation_t, lever_load_t, force_polygon_t, &
     component_normal, component_tangential, component_coriolis, component_relative, component_reaction, load_moment, perp
-  use kinetostat_plans_apart, only: draw_group_apart
+  use kinetostat_plans_apart, only: draw_group_apart, apart_pitch => row_pitch
   use kinetostat_plans_sheet, only: plans_sheet_t, turn, chain_tips, polygon_tips, panel_inner, panel_head, &
     input_link_drawing, fit_kinematic_plans
   implicit none
@@ -81,8 +81,17 @@ contains
       "kinetostat --format plans --at "//int_str(table%run_row(k))//" sheet of "//table%deck//": the mechanism, the plans of "// &
       "velocities and accelerations in its frame, Zhukovsky's lever, the force polygons. The mechanism's group "// &
       "gives its view (data-origin, data-scale, data-rotation); velocity images carry data-image, in sheet mm.")
-    call put_sheet_format(sheet, title_block_from_table(table, word("Plans of velocities, accelerations, forces", lang), &
-      geo%view%drawing_scale%text))
+    if (geo%groups_apart) then
+      ! the course's sheet 2: the force analysis (its plans are the kinematics sheet's)
+      if (lang == lang_ru) then
+        line = "Силовой расчёт механизма"
+      else
+        line = "Force analysis of the mechanism"
+      end if
+    else
+      line = word("Plans of velocities, accelerations, forces", lang)
+    end if
+    call put_sheet_format(sheet, title_block_from_table(table, line, geo%view%drawing_scale%text))
     inner = geo%paper%inside()
     ! right of графа 26 (the designation turned 180 deg in the upper left corner) when given
     inner(1) = inner(1) + header_indent(table)
@@ -102,25 +111,39 @@ contains
     line = line//"; "//version_string
     call sheet%text(inner(1) + 3.0_wp, 21.5_wp, line, "small")
 
-    ! the mechanism
-    call panel(sheet, geo%mechanism, word("Mechanism", lang)//", "//word("position", lang)//" "//int_str(table%run_row(k)))
-    call draw_mechanism(sheet, drawing, geo%view, panel_inner(geo%mechanism), 0.0_wp, short)
-    call foot(sheet, geo%mechanism, "μl = "//scale_number(geo%mu_l)//" "//unit_word("m", lang)//"/"// &
-      unit_word("mm", lang)//" ("//geo%view%drawing_scale%text//")")
+    ! the mechanism (on the course sheet with every force at mu_F)
+    if (geo%mu_mechanism_force > 0.0_wp) then
+      call panel(sheet, geo%mechanism, word("Mechanism with its forces", lang)//", "//word("position", lang)//" "// &
+        int_str(table%run_row(k)))
+      call draw_mechanism(sheet, drawing, geo%view, panel_inner(geo%mechanism), 1.0_wp / geo%mu_mechanism_force, short)
+      line = "μl = "//scale_number(geo%mu_l)//" "//unit_word("m", lang)//"/"//unit_word("mm", lang)//" ("// &
+        geo%view%drawing_scale%text//");  μF = "//scale_number(geo%mu_mechanism_force)//" "//unit_word("N", lang)// &
+        "/"//unit_word("mm", lang)
+      if (len(short) > 0) line = line//";  "//word("not drawn, shorter than 1 mm", lang)//": "//short
+      call foot(sheet, geo%mechanism, line)
+    else
+      call panel(sheet, geo%mechanism, word("Mechanism", lang)//", "//word("position", lang)//" "// &
+        int_str(table%run_row(k)))
+      call draw_mechanism(sheet, drawing, geo%view, panel_inner(geo%mechanism), 0.0_wp, short)
+      call foot(sheet, geo%mechanism, "μl = "//scale_number(geo%mu_l)//" "//unit_word("m", lang)//"/"// &
+        unit_word("mm", lang)//" ("//geo%view%drawing_scale%text//")")
+    end if
 
-    ! the plans
-    call panel(sheet, geo%velocity, word("Plan of velocities", lang))
-    call sheet%set_layer(layer_vplan)
-    call draw_plan(sheet, geo, plans%velocities, plans%velocity_equations, geo%velocity, geo%pole_v, geo%mu_v, "p", &
-      .false., lang)
-    call foot(sheet, geo%velocity, "μv = "//scale_number(geo%mu_v)//" ("//unit_word("m/s", lang)//")/"// &
-      unit_word("mm", lang)//";  "//word("relative velocities: v_PQ of a link's points, r along a guide", lang))
-    call panel(sheet, geo%acceleration, word("Plan of accelerations", lang))
-    call sheet%set_layer(layer_aplan)
-    call draw_plan(sheet, geo, plans%accelerations, plans%equations, geo%acceleration, geo%pole_a, geo%mu_a, "π", &
-      .true., lang)
-    call foot(sheet, geo%acceleration, "μa = "//scale_number(geo%mu_a)//" ("//unit_word("m/s^2", lang)//")/"// &
-      unit_word("mm", lang)//";  "//word("components: n normal, τ tangential, k Coriolis, r relative", lang))
+    ! the plans (the course sheet leaves them to the kinematics sheet)
+    if (.not. geo%groups_apart) then
+      call panel(sheet, geo%velocity, word("Plan of velocities", lang))
+      call sheet%set_layer(layer_vplan)
+      call draw_plan(sheet, geo, plans%velocities, plans%velocity_equations, geo%velocity, geo%pole_v, geo%mu_v, "p", &
+        .false., lang)
+      call foot(sheet, geo%velocity, "μv = "//scale_number(geo%mu_v)//" ("//unit_word("m/s", lang)//")/"// &
+        unit_word("mm", lang)//";  "//word("relative velocities: v_PQ of a link's points, r along a guide", lang))
+      call panel(sheet, geo%acceleration, word("Plan of accelerations", lang))
+      call sheet%set_layer(layer_aplan)
+      call draw_plan(sheet, geo, plans%accelerations, plans%equations, geo%acceleration, geo%pole_a, geo%mu_a, "π", &
+        .true., lang)
+      call foot(sheet, geo%acceleration, "μa = "//scale_number(geo%mu_a)//" ("//unit_word("m/s^2", lang)//")/"// &
+        unit_word("mm", lang)//";  "//word("components: n normal, τ tangential, k Coriolis, r relative", lang))
+    end if
 
     ! the lever and its table
     call panel(sheet, geo%lever, word("Zhukovsky's lever", lang))
@@ -143,9 +166,11 @@ contains
     call draw_polygons(sheet, geo, drawing, plans, lang)
 
     ! the values and the balancing effort
-    call panel(sheet, geo%values, word("Values read off the plans", lang))
     call sheet%set_layer(layer_text)
-    call values_table(sheet, geo%values, plans, lang)
+    if (.not. geo%groups_apart) then
+      call panel(sheet, geo%values, word("Values read off the plans", lang))
+      call values_table(sheet, geo%values, plans, lang)
+    end if
     call panel(sheet, geo%results, word("Balancing effort", lang))
     call results(sheet, geo, plans, lang)
   end subroutine draw_plans_sheet
@@ -585,9 +610,10 @@ contains
         area = cell + [1.0_wp, 5.0_wp, -1.0_wp, -5.0_wp]
         if (geo%mu_link(e) > 0.0_wp .and. .not. poly%input) then
           call draw_group_apart(sheet, drawing, plans, e, geo%link_views(e), geo%link_boxes(:, e), &
-            geo%link_force_scale(e), lang)
+            geo%link_force_scale(e), lang, geo%arms_at(:, e))
           call sheet%set_layer(layer_polygons)
-          area(1) = geo%link_boxes(3, e)
+          area(1) = geo%link_boxes(3, e) + 1.0_wp
+          area(4) = geo%arms_at(2, e) - apart_pitch
         else if (geo%mu_link(e) > 0.0_wp) then
           call draw_input_link(sheet, geo, drawing, plans, e, lang)
           call sheet%set_layer(layer_polygons)
