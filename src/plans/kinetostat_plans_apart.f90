@@ -254,7 +254,7 @@ contains
     integer, intent(in) :: e, lang
     type(mechanism_view_t), intent(in) :: view
     real(wp), intent(in) :: box(4), per_newton
-    !> The arms' table's first row (x, y), mm.
+    !> The arms' table's first row (x, y), mm (0, 0: no table).
     real(wp), intent(in) :: table_at(2)
     type(drawing_t) :: link
     character(len=16), allocatable :: names(:)
@@ -393,7 +393,8 @@ contains
     end do
     call sheet%text(box(1), box(2) - 1.5_wp, word("the group apart", lang)//", μl = "//scale_number(mu_l)//" "// &
       unit_word("m", lang)//"/"//unit_word("mm", lang), "small")
-    ! the arms' table
+    ! the arms' table (none where table_at is 0: no room)
+    if (table_at(2) <= 0.0_wp) return
     do j = 1, size(rows)
       call sheet%text(table_at(1), table_at(2) + row_pitch * (j - 1), trim(rows(j)), "small", size=1.8_wp)
     end do

@@ -95,7 +95,7 @@ contains
     real(wp), allocatable :: pts(:, :), tips(:, :)
     real(wp) :: fmax, r, b(4), cell(4), quarter, fx, fy, top, bottom, row, fm
     type(drawing_t) :: link
-    integer :: i, e, n, columns, rows, pivot
+    integer :: i, e, n, columns, rows, pivot, table_rows
     character(len=16), allocatable :: names(:)
     integer, allocatable :: inner(:)
     r = drawing%view_angle
@@ -116,12 +116,23 @@ contains
       ! block. The mechanism at a ГОСТ 2.302 scale with its forces at a round mu_F.
       top = b(2) + 21.0_wp
       bottom = b(4) - 57.0_wp
+      ! the top row tall enough for the lever's table (its rows 2.6 mm apart at the least), at
+      ! most half the room
       row = 0.38_wp * (bottom - top)
-      sheet%mechanism = [b(1) + 2.0_wp, top, b(1) + 2.0_wp + 0.46_wp * (b(3) - b(1) - 98.0_wp), top + row]
+      if (plans%lever_known .and. b(3) - b(1) > 287.0_wp) row = min(max(row, panel_head + 12.0_wp + 2.6_wp * &
+        (size(plans%loads) + 1)), &
+        0.5_wp * (bottom - top))
+      sheet%mechanism = [b(1) + 2.0_wp, top, b(1) + 2.0_wp + 0.55_wp * (b(3) - b(1) - 98.0_wp), top + row]
       sheet%lever = [sheet%mechanism(3) + 2.0_wp, top, b(3) - 94.0_wp, top + row]
       sheet%lever_table = [sheet%lever(3), top, b(3) - 2.0_wp, top + row]
       sheet%polygons = [b(1) + 2.0_wp, top + row + 2.0_wp, b(3) - 2.0_wp, bottom]
       sheet%results = [b(1) + 2.0_wp, bottom + 2.0_wp, b(3) - 187.0_wp, b(4) - 1.0_wp]
+      ! A4: the lever's table left of the title block (its rows at 2.6 mm), the balancing
+      ! effort at the top right, so that the polygons get the height the groups need
+      if (sheet%results(3) - sheet%results(1) < 100.0_wp) then
+        sheet%lever_table = sheet%results
+        sheet%results = [sheet%lever(3), top, b(3) - 2.0_wp, top + row]
+      end if
       fm = 0.0_wp
       do i = 1, size(drawing%forces)
         fm = max(fm, norm2(drawing%forces(i)%f))
@@ -176,8 +187,9 @@ contains
       end do
       fmax = max(fmax, norm2(plans%balancing%f))
     end if
-    call fit_plan(pts, panel_inner(sheet%lever) + 0.6_wp * [lever_arrow, lever_arrow, -lever_arrow, -lever_arrow], &
-      sheet%mu_lever, sheet%pole_lever)
+    ! (the course sheet keeps the panel's last 4 mm for its note)
+    call fit_plan(pts, panel_inner(sheet%lever) + 0.6_wp * [lever_arrow, lever_arrow, -lever_arrow, -lever_arrow] - &
+      merge(4.0_wp, 0.0_wp, sheet%groups_apart) * [0.0_wp, 0.0_wp, 0.0_wp, 1.0_wp], sheet%mu_lever, sheet%pole_lever)
     sheet%mu_force = round_scale(fmax, lever_arrow)
     ! the polygons: a grid of cells, each polygon at its own scale; an input link's cell
     ! with the link drawn in its left part
@@ -191,6 +203,8 @@ contains
     columns = max(1, min(n, 3))
     rows = max(1, (n + columns - 1) / columns)
     b = panel_inner(sheet%polygons)
+    ! (the course sheet's polygons panel has no scale line at its foot: its cells go down)
+    if (sheet%groups_apart) b(4) = sheet%polygons(4) - 2.0_wp
     do e = 1, n
       associate (w => (b(3) - b(1)) / columns, h => (b(4) - b(2)) / rows)
         sheet%cells(:, e) = [b(1) + w * modulo(e - 1, columns), b(2) + h * ((e - 1) / columns), &
@@ -219,6 +233,8 @@ contains
         ! the polygon (the right part); not when the cell is too small for it
         call group_apart_drawing(drawing, plans, e, link, names, inner)
         sheet%link_boxes(:, e) = [cell(1), cell(2) + 4.0_wp, cell(1) + 0.5_wp * (cell(3) - cell(1)), cell(4)]
+        ! (the arms' table's rows: each force and couple, a heading and a result an equation)
+        table_rows = size(link%forces) + size(link%moments) + 2 * max(count(inner > 0), 1) + 1
         if (sheet%link_boxes(3, e) - sheet%link_boxes(1, e) < min_apart(1) .or. &
           sheet%link_boxes(4, e) - sheet%link_boxes(2, e) < min_apart(2)) then
           sheet%link_boxes(:, e) = 0.0_wp
@@ -233,8 +249,12 @@ contains
           end associate
           sheet%mu_link(e) = sheet%link_views(e)%mu_l()
           cell(1) = sheet%link_boxes(3, e) + 1.0_wp
-          cell(4) = cell(4) - row_pitch * (size(link%forces) + size(link%moments) + size(names) + 1)
-          sheet%arms_at(:, e) = [cell(1), cell(4) + row_pitch]
+          ! the arms' table when the polygon keeps half the cell's height (A4: the arms are
+          ! drawn and named, their table left out)
+          if (row_pitch * table_rows <= 0.5_wp * (cell(4) - cell(2))) then
+            cell(4) = cell(4) - row_pitch * table_rows
+            sheet%arms_at(:, e) = [cell(1), cell(4) + row_pitch]
+          end if
         end if
       end if
       call polygon_tips(plans%group_polygons(e)%vectors, tips)
