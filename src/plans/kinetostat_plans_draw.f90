@@ -486,7 +486,7 @@ contains
     ! not fit
     lp = pitch
     font = 2.2_wp
-    if (geo%groups_apart .and. y + pitch * size(plans%loads) > geo%lever_table(4) - 5.5_wp) then
+    if (geo%groups_apart .and. y + pitch * size(plans%loads) > geo%lever_table(4) - 1.5_wp) then
       lp = 2.6_wp
       font = 1.8_wp
     end if
@@ -499,7 +499,13 @@ contains
       end if
     end do
     text = "h: "//word("arms on the lever", lang)
-    call sheet%text(x, geo%lever_table(4) - 2.0_wp, text, "note")
+    if (geo%groups_apart) then
+      ! (the course sheet: in the heading's line, the rows below go down to the panel's foot)
+      call sheet%text(geo%lever_table(3) - 2.0_wp, geo%lever_table(2) + 5.0_wp, text, "note", anchor=anchor_end, &
+        size=2.2_wp)
+    else
+      call sheet%text(x, geo%lever_table(4) - 2.0_wp, text, "note")
+    end if
   contains
     !> Sheet point of a velocity image turned by 90 deg.
     pure function image(v) result(s)

@@ -119,7 +119,7 @@ contains
       ! the top row tall enough for the lever's table (its rows 2.6 mm apart at the least), at
       ! most half the room
       row = 0.38_wp * (bottom - top)
-      if (plans%lever_known .and. b(3) - b(1) > 287.0_wp) row = min(max(row, panel_head + 12.0_wp + 2.6_wp * &
+      if (plans%lever_known .and. b(3) - b(1) > 287.0_wp) row = min(max(row, panel_head + 8.0_wp + 2.6_wp * &
         (size(plans%loads) + 1)), &
         0.5_wp * (bottom - top))
       sheet%mechanism = [b(1) + 2.0_wp, top, b(1) + 2.0_wp + 0.55_wp * (b(3) - b(1) - 98.0_wp), top + row]
@@ -187,9 +187,9 @@ contains
       end do
       fmax = max(fmax, norm2(plans%balancing%f))
     end if
-    ! (the course sheet keeps the panel's last 4 mm for its note)
+    ! (the course sheet keeps the panel's last 7 mm for its note)
     call fit_plan(pts, panel_inner(sheet%lever) + 0.6_wp * [lever_arrow, lever_arrow, -lever_arrow, -lever_arrow] - &
-      merge(4.0_wp, 0.0_wp, sheet%groups_apart) * [0.0_wp, 0.0_wp, 0.0_wp, 1.0_wp], sheet%mu_lever, sheet%pole_lever)
+      merge(7.0_wp, 0.0_wp, sheet%groups_apart) * [0.0_wp, 0.0_wp, 0.0_wp, 1.0_wp], sheet%mu_lever, sheet%pole_lever)
     sheet%mu_force = round_scale(fmax, lever_arrow)
     ! the polygons: a grid of cells, each polygon at its own scale; an input link's cell
     ! with the link drawn in its left part
