@@ -84,7 +84,7 @@ contains
     if (geo%groups_apart) then
       ! the course's sheet 2: the force analysis (its plans are the kinematics sheet's)
       if (lang == lang_ru) then
-        line = "Силовой расчёт механизма"
+        line = "Силовой расчет механизма"
       else
         line = "Force analysis of the mechanism"
       end if
