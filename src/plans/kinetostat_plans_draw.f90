@@ -115,12 +115,17 @@ contains
     if (geo%mu_mechanism_force > 0.0_wp) then
       call panel(sheet, geo%mechanism, word("Mechanism with its forces", lang)//", "//word("position", lang)//" "// &
         int_str(table%run_row(k)))
-      call draw_mechanism(sheet, drawing, geo%view, panel_inner(geo%mechanism), 1.0_wp / geo%mu_mechanism_force, short)
+      ! (its labels clear of the two lines under it)
+      call draw_mechanism(sheet, drawing, geo%view, panel_inner(geo%mechanism) - [0.0_wp, 0.0_wp, 0.0_wp, 4.5_wp], &
+        1.0_wp / geo%mu_mechanism_force, short)
       line = "μl = "//scale_number(geo%mu_l)//" "//unit_word("m", lang)//"/"//unit_word("mm", lang)//" ("// &
         geo%view%drawing_scale%text//");  μF = "//scale_number(geo%mu_mechanism_force)//" "//unit_word("N", lang)// &
         "/"//unit_word("mm", lang)
-      if (len(short) > 0) line = line//";  "//word("not drawn, shorter than 1 mm", lang)//": "//short
       call foot(sheet, geo%mechanism, line)
+      ! the forces too short to draw on a line of their own above the scales (text 1.8 mm at
+      ! the least: on two lines where one would need smaller)
+      if (len(short) > 0) call legible_lines(sheet, geo%mechanism(1) + 2.0_wp, geo%mechanism(4) - 6.3_wp, &
+        geo%mechanism(3) - geo%mechanism(1) - 4.0_wp, word("not drawn, shorter than 1 mm", lang)//": "//short)
     else
       call panel(sheet, geo%mechanism, word("Mechanism", lang)//", "//word("position", lang)//" "// &
         int_str(table%run_row(k)))
@@ -469,8 +474,16 @@ contains
       call names(sheet, plans%loads(i), load_colour(plans%loads(i)%source))
     end do
     call names(sheet, plans%balancing, balancing_colour)
-    if (len(short) > 0) call sheet%text(area(1) + 1.0_wp, note_y, word("not drawn, shorter than 1 mm", lang)//": "// &
-      short, "note", size=fitted_size(short, 2.6_wp, area(3) - area(1) - 50.0_wp, 0.6_wp))
+    if (len(short) > 0) then
+      if (geo%groups_apart) then
+        call sheet%set_layer(layer_text)
+        call legible_lines(sheet, area(1) + 1.0_wp, note_y, area(3) - area(1) - 2.0_wp, &
+          word("not drawn, shorter than 1 mm", lang)//": "//short)
+      else
+        call sheet%text(area(1) + 1.0_wp, note_y, word("not drawn, shorter than 1 mm", lang)//": "// &
+          short, "note", size=fitted_size(short, 2.6_wp, area(3) - area(1) - 50.0_wp, 0.6_wp))
+      end if
+    end if
     call sheet%end_group()
 
     ! the table: every load, its value, its image(s), its arm as drawn
@@ -711,6 +724,29 @@ contains
       end associate
     end do
   end subroutine draw_polygons
+
+  !> `text` in `width` mm ending on the line `y`: one line at 2.4 mm or smaller down to 1.8 mm
+  !> (ГОСТ 2.304's smallest), else broken after a comma into two lines, the first 2.5 mm above.
+  pure subroutine legible_lines(sheet, x, y, width, text)
+    type(sheet_t), intent(inout) :: sheet
+    real(wp), intent(in) :: x, y, width
+    character(*), intent(in) :: text
+    integer :: cut
+    if (fitted_size(text, 2.4_wp, width, 0.6_wp) >= 1.8_wp) then
+      call sheet%text(x, y, text, "small", size=fitted_size(text, 2.4_wp, width, 0.6_wp))
+      return
+    end if
+    cut = index(text(:len(text) / 2 + 1), ", ", back=.true.)
+    if (cut == 0) cut = index(text, ", ")
+    if (cut == 0) then
+      call sheet%text(x, y, text, "small", size=1.8_wp)
+      return
+    end if
+    call sheet%text(x, y - 2.5_wp, text(:cut), "small", size=max(1.8_wp, min(fitted_size(text(:cut), 2.0_wp, &
+      width, 0.6_wp), fitted_size(text(cut + 2:), 2.0_wp, width, 0.6_wp))))
+    call sheet%text(x, y, text(cut + 2:), "small", size=max(1.8_wp, min(fitted_size(text(:cut), 2.0_wp, width, &
+      0.6_wp), fitted_size(text(cut + 2:), 2.0_wp, width, 0.6_wp))))
+  end subroutine legible_lines
 
   !> N*m for a moment (M...), N for a force.
   pure function effort_unit(name, lang) result(unit)

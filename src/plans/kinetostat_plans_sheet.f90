@@ -139,7 +139,8 @@ contains
       end do
       if (fm > 0.0_wp) then
         ! the longest arrow and the room around the drawing in proportion on a small sheet
-        associate (area => panel_inner(sheet%mechanism))
+        ! (its foot has the scales and the forces too short to draw, two lines)
+        associate (area => panel_inner(sheet%mechanism) - [0.0_wp, 0.0_wp, 0.0_wp, 4.5_wp])
           associate (side => min(area(3) - area(1), area(4) - area(2)))
             sheet%mu_mechanism_force = round_scale(fm, min(longest_arrow, 0.15_wp * side))
             call fit_mechanism_view(drawing, area, min(8.0_wp, 0.08_wp * side), sheet%view, &
