@@ -1,8 +1,9 @@
 !> `kinetostat sheets DECK -o DIR`: the course's drawing sheets of a linkage deck, each as SVG
 !> and DXF (the one drawing model) and as PDF at true size when rsvg-convert is installed:
 !> DIR/kinematics (the structure, the mechanism at the position with a trajectory, the output
-!> link's diagrams, the values), DIR/kinetostatics (the mechanism, the plans, Zhukovsky's lever and the force polygons at
-!> the position --at K, by default the step of the largest |effort| of the first drive) and,
+!> link's diagrams, the values), DIR/kinetostatics (the mechanism with its forces, Zhukovsky's
+!> lever, the force polygons with each Assur group drawn apart, at the position --at K, by
+!> default the step of the largest |effort| of the first drive) and,
 !> with a steady cycle, DIR/dynamics (the machine dynamics and the flywheel); of a design deck
 !> its one sheet: DIR/gears (&gear_geometry: the meshing drawing and the blocking contour),
 !> DIR/planetary (&planetary_synthesis) or DIR/cam (&cam_profile). Every sheet is

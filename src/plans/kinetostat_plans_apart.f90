@@ -16,7 +16,7 @@ module kinetostat_plans_apart
   use kinetostat_sheet, only: sheet_t, entity_group, layer_polygons, layer_text
   use kinetostat_drawing, only: drawing_t, drawing_force_t, point_pivot, point_joint
   use kinetostat_mechanism_view, only: mechanism_view_t, draw_mechanism
-  use kinetostat_plans_base, only: plans_t
+  use kinetostat_plans_base, only: plans_t, component_reaction, component_tangential
   implicit none
   private
   public :: group_apart_drawing, draw_group_apart
@@ -78,17 +78,23 @@ contains
   !> bodies and points, every vector of its polygon as a force at its point (the polygon's
   !> value), its links' moments; `inner(q)` the index in link%points of link q's only inner
   !> joint (0: none or more than one), `names(q)` the group's links.
-  pure subroutine group_apart_drawing(drawing, plans, e, link, names, inner)
+  pure subroutine group_apart_drawing(drawing, plans, e, link, names, inner, unknown, pivots)
     type(drawing_t), intent(in) :: drawing
     type(plans_t), intent(in) :: plans
     integer, intent(in) :: e
     type(drawing_t), intent(out) :: link
     character(len=16), allocatable, intent(out) :: names(:)
     integer, allocatable, intent(out) :: inner(:)
+    !> Whether link%forces(j) is an unknown reaction of the polygon (whole or its τ part).
+    logical, allocatable, intent(out), optional :: unknown(:)
+    !> link%points' indices of the group's pivots on the frame.
+    integer, allocatable, intent(out), optional :: pivots(:)
     character(len=:), allocatable :: links, base
     integer :: j, q, i, p, found, shared
-    real(wp) :: at(2)
-    allocate (link%points(0), link%bodies(0), link%guides(0), link%forces(0), link%moments(0), names(0))
+    real(wp) :: at(2), total, u(2), c
+    integer :: k, jj, only
+    logical, allocatable :: open(:)
+    allocate (link%points(0), link%bodies(0), link%guides(0), link%forces(0), link%moments(0), names(0), open(0))
     link%view_angle = drawing%view_angle
     links = trim(plans%group_polygons(e)%link)
     do j = 1, size(drawing%bodies)
@@ -139,6 +145,7 @@ contains
         at = drawing%forces(found)%at
         link%forces = [link%forces, drawing_force_t(poly%vectors(j)%name, drawing%forces(found)%kind, at, &
           poly%vectors(j)%v, acted_link(poly%vectors(j)%name, drawing%forces(found)%on_link))]
+        open = [open, poly%vectors(j)%kind == component_reaction .or. poly%vectors(j)%kind == component_tangential]
       end do
     end associate
     do j = 1, size(drawing%moments)
@@ -152,6 +159,40 @@ contains
         end do
       end associate
     end do
+    ! A link with one inner joint whose moment equation about it has one unknown, a whole
+    ! reaction of a guide on the frame (a slider's normal reaction, which the run gives no
+    ! line of action): its point of application shifted along the guide (square to the
+    ! force) so that the link's moments about the joint balance, as the course finds it.
+    do k = 1, size(names)
+      if (inner(k) == 0) cycle
+      only = 0
+      total = 0.0_wp
+      do jj = 1, size(link%forces)
+        if (trim(link%forces(jj)%on_link) /= trim(names(k))) cycle
+        if (open(jj)) then
+          if (only /= 0 .or. .not. frame_reaction(link%forces(jj)%name) .or. at_joint(link%forces(jj)%at)) then
+            only = -1
+            exit
+          end if
+          only = jj
+        end if
+        associate (r => link%forces(jj)%at - link%points(inner(k))%p, f => link%forces(jj)%f)
+          total = total + r(1) * f(2) - r(2) * f(1)
+        end associate
+      end do
+      if (only <= 0) cycle
+      do jj = 1, size(link%moments)
+        if (trim(link%moments(jj)%on_link) == trim(names(k))) total = total + link%moments(jj)%value
+      end do
+      associate (f => link%forces(only)%f)
+        if (norm2(f) <= 0.0_wp) cycle
+        u = [f(2), -f(1)] / norm2(f)
+        c = u(1) * f(2) - u(2) * f(1)
+        link%forces(only)%at = link%forces(only)%at - total / c * u
+      end associate
+    end do
+    if (present(unknown)) unknown = open
+    if (present(pivots)) pivots = pack([(i, i = 1, size(link%points))], link%points%kind == point_pivot)
     ! the outer joints drawn as joints (not the frame's pivots); the group shifted so that the
     ! position frame's origin (its axes) lies on an inner joint, or on its first point
     where (link%points%kind == point_pivot) link%points%kind = point_joint
@@ -169,6 +210,29 @@ contains
       link%points(j)%p = link%points(j)%p - at
     end do
   contains
+    !> Whether `at` is a pivot on the frame or a joint two of the group's links hold (a
+    !> reaction there has its line through it).
+    pure logical function at_joint(at)
+      real(wp), intent(in) :: at(2)
+      integer :: m, holders, bb
+      at_joint = .false.
+      do m = 1, size(link%points)
+        if (norm2(link%points(m)%p - at) > 1.0e-12_wp) cycle
+        holders = 0
+        do bb = 1, size(link%bodies)
+          if (any(link%bodies(bb)%points == m)) holders = holders + 1
+        end do
+        if (link%points(m)%kind == point_pivot .or. holders > 1) at_joint = .true.
+      end do
+    end function at_joint
+    !> F<link><frame>: a reaction of the frame (the frame's digit the largest of the deck's).
+    pure logical function frame_reaction(name)
+      character(*), intent(in) :: name
+      frame_reaction = .false.
+      if (len_trim(name) /= 3 .or. name(1:1) /= "F") return
+      if (verify(name(2:3), "0123456789") /= 0) return
+      frame_reaction = .not. any(names == name(3:3))
+    end function frame_reaction
     pure logical function held_elsewhere(p, name)
       integer, intent(in) :: p
       character(*), intent(in) :: name
@@ -182,14 +246,16 @@ contains
   end subroutine group_apart_drawing
 
   !> Group e drawn apart in `box` at `view` (forces `per_newton` mm/N), with the arms about
-  !> each link's inner joint and their table below it.
-  pure subroutine draw_group_apart(sheet, drawing, plans, e, view, box, per_newton, lang)
+  !> each link's inner joint and their table from `table_at`.
+  pure subroutine draw_group_apart(sheet, drawing, plans, e, view, box, per_newton, lang, table_at)
     type(sheet_t), intent(inout) :: sheet
     type(drawing_t), intent(in) :: drawing
     type(plans_t), intent(in) :: plans
     integer, intent(in) :: e, lang
     type(mechanism_view_t), intent(in) :: view
     real(wp), intent(in) :: box(4), per_newton
+    !> The arms' table's first row (x, y), mm (0, 0: no table).
+    real(wp), intent(in) :: table_at(2)
     type(drawing_t) :: link
     character(len=16), allocatable :: names(:)
     integer, allocatable :: inner(:)
@@ -198,24 +264,45 @@ contains
     real(wp) :: a(2), tail(2), tip(2), d(2), foot(2), h, sense, mu_l, area(4)
     real(wp), allocatable :: lx(:), ly(:), lang_angle(:)
     character(len=16), allocatable :: lname(:)
-    integer :: j, q, first
-    call group_apart_drawing(drawing, plans, e, link, names, inner)
+    integer :: j, q, first, k, n_eq, about, sought
+    logical, allocatable :: unknown(:)
+    integer, allocatable :: pivots(:)
+    character(len=:), allocatable :: label
+    real(wp) :: total, sought_h
+    call group_apart_drawing(drawing, plans, e, link, names, inner, unknown, pivots)
     mu_l = view%mu_l()
     area = box
     allocate (rows(0), lx(0), ly(0), lang_angle(0), lname(0))
     call sheet%set_layer(layer_polygons)
-    ! the moment equations: the arms about each link's inner joint first (labels keep off them)
-    do q = 1, size(names)
-      if (inner(q) == 0) cycle
-      a = view%point(link%points(inner(q))%p)
+    ! the moment equations: the arms about each link's inner joint first (labels keep off them);
+    ! a group without one (a sliding inner pair: the block between the links) about its
+    ! pivot on the frame, the whole group's forces (the massless block passes its reaction on)
+    n_eq = count(inner > 0)
+    if (n_eq == 0 .and. size(pivots) > 0) n_eq = 1
+    do k = 1, n_eq
+      if (count(inner > 0) == 0) then
+        about = pivots(1)
+        label = trim(plans%group_polygons(e)%link)
+      else
+        q = 0
+        do j = 1, size(names)
+          if (inner(j) > 0) q = q + 1
+          if (q == k) exit
+        end do
+        about = inner(j)
+        label = trim(names(j))
+      end if
+      a = view%point(link%points(about)%p)
       call sheet%group("moment-equation")
-      call sheet%attach("data-link", trim(names(q)))
-      call sheet%attach("data-about", trim(link%points(inner(q))%name))
+      call sheet%attach("data-link", label)
+      call sheet%attach("data-about", trim(link%points(about)%name))
       call sheet%attach("data-mu-l", full_number(mu_l))
-      line = "Σ M_"//trim(link%points(inner(q))%name)//"("//trim(names(q))//"):"
+      line = "Σ M_"//trim(link%points(about)%name)//"("//label//") = 0:"
       rows = [character(len=80) :: rows, line]
+      sought = 0
+      total = 0.0_wp
       do j = 1, size(link%forces)
-        if (trim(link%forces(j)%on_link) /= trim(names(q))) cycle
+        if (.not. member(link%forces(j)%on_link)) cycle
         if (norm2(link%forces(j)%f) <= 0.0_wp) cycle
         tail = view%point(link%forces(j)%at)
         ! the force's direction on the sheet (a unit vector; the view turns, flips y)
@@ -224,7 +311,7 @@ contains
         foot = tail + dot_product(a - tail, d) * d
         h = norm2(foot - a)
         ! the moment's sense about the joint, in the position frame (counterclockwise +)
-        associate (r => link%forces(j)%at - link%points(inner(q))%p, f => link%forces(j)%f)
+        associate (r => link%forces(j)%at - link%points(about)%p, f => link%forces(j)%f)
           sense = sign(1.0_wp, r(1) * f(2) - r(2) * f(1))
         end associate
         if (h < shortest) then
@@ -238,6 +325,15 @@ contains
         call sheet%attach("data-force", full_number(norm2(link%forces(j)%f)))
         call sheet%attach("data-h", full_number(h))
         call sheet%attach("data-sense", full_number(sense))
+        ! the unknown of the equation: the reaction's τ part (or whole, its line known) or, a
+        ! guide's reaction, its arm
+        if (unknown(j) .and. h >= shortest) then
+          sought = j
+          sought_h = h
+          call sheet%attach("data-unknown", merge("arm  ", "force", frame_force(link%forces(j)%name)))
+        else
+          total = total + sense * norm2(link%forces(j)%f) * h * mu_l
+        end if
         if (h >= shortest) then
           call sheet%line(a(1), a(2), foot(1), foot(2), stroke=arm_colour, width=0.15_wp, dash="1 0.8")
           call sheet%line(tail(1), tail(2), foot(1), foot(2), stroke=arm_colour, width=0.1_wp, dash="0.4 0.6")
@@ -247,7 +343,8 @@ contains
           lname = [character(len=16) :: lname, arm]
           rows = [character(len=80) :: rows, "  "//arm//" = "//short_number(h)//" "//unit_word("mm", lang)// &
             ", "//display(trim(link%forces(j)%name), lang)//" = "//short_number(norm2(link%forces(j)%f))//" "// &
-            unit_word("N", lang)]
+            unit_word("N", lang)//": "//short_number(sense * norm2(link%forces(j)%f) * h * mu_l)//" "// &
+            unit_word("N*m", lang)]
         else
           rows = [character(len=80) :: rows, "  "//display(trim(link%forces(j)%name), lang)//": "// &
             word("through the joint", lang)]
@@ -255,14 +352,27 @@ contains
         call sheet%end_group()
       end do
       do j = 1, size(link%moments)
-        if (trim(link%moments(j)%on_link) /= trim(names(q))) cycle
+        if (.not. member(link%moments(j)%on_link)) cycle
         call sheet%group("arm")
         call sheet%attach("data-moment-name", trim(link%moments(j)%name))
         call sheet%attach("data-moment", full_number(link%moments(j)%value))
         call sheet%end_group()
+        total = total + link%moments(j)%value
         rows = [character(len=80) :: rows, "  "//display(trim(link%moments(j)%name), lang)//" = "// &
           short_number(link%moments(j)%value)//" "//unit_word("N*m", lang)]
       end do
+      ! the unknown from the equation: |Σ of the others| / h μl (a force) or / F (an arm)
+      if (sought > 0) then
+        if (frame_force(link%forces(sought)%name)) then
+          rows = [character(len=80) :: rows, "  → "//arm_name(trim(link%forces(sought)%name), lang)//" = |Σ| / "// &
+            display(trim(link%forces(sought)%name), lang)//" = "//short_number(abs(total) / &
+            norm2(link%forces(sought)%f) / mu_l)//" "//unit_word("mm", lang)]
+        else
+          rows = [character(len=80) :: rows, "  → "//display(trim(link%forces(sought)%name), lang)//" = |Σ| / "// &
+            arm_name(trim(link%forces(sought)%name), lang)//" = "//short_number(abs(total) / (sought_h * mu_l))// &
+            " "//unit_word("N", lang)]
+        end if
+      end if
       call sheet%end_group()
     end do
     first = sheet%count + 1
@@ -283,11 +393,26 @@ contains
     end do
     call sheet%text(box(1), box(2) - 1.5_wp, word("the group apart", lang)//", μl = "//scale_number(mu_l)//" "// &
       unit_word("m", lang)//"/"//unit_word("mm", lang), "small")
-    ! the arms' table under the drawing
+    ! the arms' table (none where table_at is 0: no room)
+    if (table_at(2) <= 0.0_wp) return
     do j = 1, size(rows)
-      call sheet%text(box(1) + 1.0_wp, box(4) + row_pitch * j, trim(rows(j)), "small", size=1.8_wp)
+      call sheet%text(table_at(1), table_at(2) + row_pitch * (j - 1), trim(rows(j)), "small", size=1.8_wp)
     end do
   contains
+    !> Whether a force or a moment on link `on` is in the equation `label` (a link or the group).
+    pure logical function member(on)
+      character(*), intent(in) :: on
+      member = trim(on) == label .or. (in_group(label, on) .and. index(label, ",") > 0)
+    end function member
+    !> A reaction of the frame on the group (a guide's, its line found by the equation).
+    pure logical function frame_force(name)
+      character(*), intent(in) :: name
+      frame_force = .false.
+      if (len_trim(name) /= 3 .or. name(1:1) /= "F") return
+      if (verify(name(2:3), "0123456789") /= 0) return
+      frame_force = .not. any(names == name(3:3)) .and. .not. in_group(trim(plans%group_polygons(e)%link), name(3:3)) &
+        .and. count(inner > 0) > 0
+    end function frame_force
     pure function arm_name(force, lang) result(name)
       character(*), intent(in) :: force
       integer, intent(in) :: lang

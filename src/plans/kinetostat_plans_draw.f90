@@ -38,7 +38,7 @@ module kinetostat_plans_draw
   use kinetostat_mechanism_sheet, only: fitted_size
   use kinetostat_plans_base, only: plans_t, plan_vector_t, plan_equation_t, lever_load_t, force_polygon_t, &
     component_normal, component_tangential, component_coriolis, component_relative, component_reaction, load_moment, perp
-  use kinetostat_plans_apart, only: draw_group_apart
+  use kinetostat_plans_apart, only: draw_group_apart, apart_pitch => row_pitch
   use kinetostat_plans_sheet, only: plans_sheet_t, turn, chain_tips, polygon_tips, panel_inner, panel_head, &
     input_link_drawing, fit_kinematic_plans
   implicit none
@@ -81,8 +81,17 @@ contains
       "kinetostat --format plans --at "//int_str(table%run_row(k))//" sheet of "//table%deck//": the mechanism, the plans of "// &
       "velocities and accelerations in its frame, Zhukovsky's lever, the force polygons. The mechanism's group "// &
       "gives its view (data-origin, data-scale, data-rotation); velocity images carry data-image, in sheet mm.")
-    call put_sheet_format(sheet, title_block_from_table(table, word("Plans of velocities, accelerations, forces", lang), &
-      geo%view%drawing_scale%text))
+    if (geo%groups_apart) then
+      ! the course's sheet 2: the force analysis (its plans are the kinematics sheet's)
+      if (lang == lang_ru) then
+        line = "Силовой расчет механизма"
+      else
+        line = "Force analysis of the mechanism"
+      end if
+    else
+      line = word("Plans of velocities, accelerations, forces", lang)
+    end if
+    call put_sheet_format(sheet, title_block_from_table(table, line, geo%view%drawing_scale%text))
     inner = geo%paper%inside()
     ! right of графа 26 (the designation turned 180 deg in the upper left corner) when given
     inner(1) = inner(1) + header_indent(table)
@@ -102,25 +111,44 @@ contains
     line = line//"; "//version_string
     call sheet%text(inner(1) + 3.0_wp, 21.5_wp, line, "small")
 
-    ! the mechanism
-    call panel(sheet, geo%mechanism, word("Mechanism", lang)//", "//word("position", lang)//" "//int_str(table%run_row(k)))
-    call draw_mechanism(sheet, drawing, geo%view, panel_inner(geo%mechanism), 0.0_wp, short)
-    call foot(sheet, geo%mechanism, "μl = "//scale_number(geo%mu_l)//" "//unit_word("m", lang)//"/"// &
-      unit_word("mm", lang)//" ("//geo%view%drawing_scale%text//")")
+    ! the mechanism (on the course sheet with every force at mu_F)
+    if (geo%mu_mechanism_force > 0.0_wp) then
+      call panel(sheet, geo%mechanism, word("Mechanism with its forces", lang)//", "//word("position", lang)//" "// &
+        int_str(table%run_row(k)))
+      ! (its labels clear of the two lines under it)
+      call draw_mechanism(sheet, drawing, geo%view, panel_inner(geo%mechanism) - [0.0_wp, 0.0_wp, 0.0_wp, 4.5_wp], &
+        1.0_wp / geo%mu_mechanism_force, short)
+      line = "μl = "//scale_number(geo%mu_l)//" "//unit_word("m", lang)//"/"//unit_word("mm", lang)//" ("// &
+        geo%view%drawing_scale%text//");  μF = "//scale_number(geo%mu_mechanism_force)//" "//unit_word("N", lang)// &
+        "/"//unit_word("mm", lang)
+      call foot(sheet, geo%mechanism, line)
+      ! the forces too short to draw on a line of their own above the scales (text 1.8 mm at
+      ! the least: on two lines where one would need smaller)
+      if (len(short) > 0) call legible_lines(sheet, geo%mechanism(1) + 2.0_wp, geo%mechanism(4) - 6.3_wp, &
+        geo%mechanism(3) - geo%mechanism(1) - 4.0_wp, word("not drawn, shorter than 1 mm", lang)//": "//short)
+    else
+      call panel(sheet, geo%mechanism, word("Mechanism", lang)//", "//word("position", lang)//" "// &
+        int_str(table%run_row(k)))
+      call draw_mechanism(sheet, drawing, geo%view, panel_inner(geo%mechanism), 0.0_wp, short)
+      call foot(sheet, geo%mechanism, "μl = "//scale_number(geo%mu_l)//" "//unit_word("m", lang)//"/"// &
+        unit_word("mm", lang)//" ("//geo%view%drawing_scale%text//")")
+    end if
 
-    ! the plans
-    call panel(sheet, geo%velocity, word("Plan of velocities", lang))
-    call sheet%set_layer(layer_vplan)
-    call draw_plan(sheet, geo, plans%velocities, plans%velocity_equations, geo%velocity, geo%pole_v, geo%mu_v, "p", &
-      .false., lang)
-    call foot(sheet, geo%velocity, "μv = "//scale_number(geo%mu_v)//" ("//unit_word("m/s", lang)//")/"// &
-      unit_word("mm", lang)//";  "//word("relative velocities: v_PQ of a link's points, r along a guide", lang))
-    call panel(sheet, geo%acceleration, word("Plan of accelerations", lang))
-    call sheet%set_layer(layer_aplan)
-    call draw_plan(sheet, geo, plans%accelerations, plans%equations, geo%acceleration, geo%pole_a, geo%mu_a, "π", &
-      .true., lang)
-    call foot(sheet, geo%acceleration, "μa = "//scale_number(geo%mu_a)//" ("//unit_word("m/s^2", lang)//")/"// &
-      unit_word("mm", lang)//";  "//word("components: n normal, τ tangential, k Coriolis, r relative", lang))
+    ! the plans (the course sheet leaves them to the kinematics sheet)
+    if (.not. geo%groups_apart) then
+      call panel(sheet, geo%velocity, word("Plan of velocities", lang))
+      call sheet%set_layer(layer_vplan)
+      call draw_plan(sheet, geo, plans%velocities, plans%velocity_equations, geo%velocity, geo%pole_v, geo%mu_v, "p", &
+        .false., lang)
+      call foot(sheet, geo%velocity, "μv = "//scale_number(geo%mu_v)//" ("//unit_word("m/s", lang)//")/"// &
+        unit_word("mm", lang)//";  "//word("relative velocities: v_PQ of a link's points, r along a guide", lang))
+      call panel(sheet, geo%acceleration, word("Plan of accelerations", lang))
+      call sheet%set_layer(layer_aplan)
+      call draw_plan(sheet, geo, plans%accelerations, plans%equations, geo%acceleration, geo%pole_a, geo%mu_a, "π", &
+        .true., lang)
+      call foot(sheet, geo%acceleration, "μa = "//scale_number(geo%mu_a)//" ("//unit_word("m/s^2", lang)//")/"// &
+        unit_word("mm", lang)//";  "//word("components: n normal, τ tangential, k Coriolis, r relative", lang))
+    end if
 
     ! the lever and its table
     call panel(sheet, geo%lever, word("Zhukovsky's lever", lang))
@@ -143,9 +171,11 @@ contains
     call draw_polygons(sheet, geo, drawing, plans, lang)
 
     ! the values and the balancing effort
-    call panel(sheet, geo%values, word("Values read off the plans", lang))
     call sheet%set_layer(layer_text)
-    call values_table(sheet, geo%values, plans, lang)
+    if (.not. geo%groups_apart) then
+      call panel(sheet, geo%values, word("Values read off the plans", lang))
+      call values_table(sheet, geo%values, plans, lang)
+    end if
     call panel(sheet, geo%results, word("Balancing effort", lang))
     call results(sheet, geo, plans, lang)
   end subroutine draw_plans_sheet
@@ -399,10 +429,13 @@ contains
     type(plans_sheet_t), intent(in) :: geo
     type(plans_t), intent(in) :: plans
     integer, intent(in) :: lang
-    real(wp) :: area(4), q(2), y, x
+    real(wp) :: area(4), q(2), y, x, lp, font, note_y, wide
     character(len=:), allocatable :: short, text
     integer :: i, n
     area = panel_inner(geo%lever)
+    note_y = area(4)
+    ! the course sheet: the labels clear of the note at the panel's foot
+    if (geo%groups_apart) area(4) = area(4) - 3.5_wp
     short = ""
     ! the lever's group: its pole, its scales (an image v at pole + (q1, -q2) / mu_v, q = v
     ! turned by 90 deg and by the sheet's rotation; a force f drawn (f1, -f2) / mu_F long, f
@@ -441,17 +474,35 @@ contains
       call names(sheet, plans%loads(i), load_colour(plans%loads(i)%source))
     end do
     call names(sheet, plans%balancing, balancing_colour)
-    if (len(short) > 0) call sheet%text(area(1) + 1.0_wp, area(4), word("not drawn, shorter than 1 mm", lang)//": "// &
-      short, "note", size=fitted_size(short, 2.6_wp, area(3) - area(1) - 50.0_wp, 0.6_wp))
+    if (len(short) > 0) then
+      if (geo%groups_apart) then
+        call sheet%set_layer(layer_text)
+        call legible_lines(sheet, area(1) + 1.0_wp, note_y, area(3) - area(1) - 2.0_wp, &
+          word("not drawn, shorter than 1 mm", lang)//": "//short)
+      else
+        call sheet%text(area(1) + 1.0_wp, note_y, word("not drawn, shorter than 1 mm", lang)//": "// &
+          short, "note", size=fitted_size(short, 2.6_wp, area(3) - area(1) - 50.0_wp, 0.6_wp))
+      end if
+    end if
     call sheet%end_group()
 
     ! the table: every load, its value, its image(s), its arm as drawn
     call sheet%set_layer(layer_text)
     x = geo%lever_table(1) + 2.0_wp
     y = geo%lever_table(2) + panel_head + 6.0_wp
+    ! the columns: load, image, arm in a table 88 mm wide (narrower on A4's course sheet)
+    wide = geo%lever_table(3) - geo%lever_table(1) - 4.0_wp
     call sheet%text(x, y - 3.5_wp, word("load", lang), "small")
-    call sheet%text(x + 54.0_wp, y - 3.5_wp, word("image", lang), "small")
-    call sheet%text(x + 88.0_wp, y - 3.5_wp, "h, "//unit_word("mm", lang), "small", anchor=anchor_end)
+    call sheet%text(x + wide * 54.0_wp / 88.0_wp, y - 3.5_wp, word("image", lang), "small")
+    call sheet%text(x + wide, y - 3.5_wp, "h, "//unit_word("mm", lang), "small", anchor=anchor_end)
+    ! the rows 3.2 mm apart, closer (2.6 mm, 1.8 mm text) on a course sheet where they would
+    ! not fit
+    lp = pitch
+    font = 2.2_wp
+    if (geo%groups_apart .and. y + pitch * size(plans%loads) > geo%lever_table(4) - 1.5_wp) then
+      lp = 2.6_wp
+      font = 1.8_wp
+    end if
     n = 0
     do i = 1, size(plans%loads) + 1
       if (i <= size(plans%loads)) then
@@ -461,7 +512,13 @@ contains
       end if
     end do
     text = "h: "//word("arms on the lever", lang)
-    call sheet%text(x, geo%lever_table(4) - 2.0_wp, text, "note")
+    if (geo%groups_apart) then
+      ! (the course sheet: in the heading's line, the rows below go down to the panel's foot)
+      call sheet%text(geo%lever_table(3) - 2.0_wp, geo%lever_table(2) + 5.0_wp, text, "note", anchor=anchor_end, &
+        size=2.2_wp)
+    else
+      call sheet%text(x, geo%lever_table(4) - 2.0_wp, text, "note")
+    end if
   contains
     !> Sheet point of a velocity image turned by 90 deg.
     pure function image(v) result(s)
@@ -545,10 +602,11 @@ contains
       end if
       colour = load_colour(ld%source)
       if (ld%name == plans%balancing%name) colour = balancing_colour
-      call sheet%text(x, y + pitch * n, text, "num", colour=colour, size=fitted_size(text, 2.2_wp, 52.0_wp, 0.6_wp))
-      call sheet%text(x + 54.0_wp, y + pitch * n, image_list(ld%image), "num", colour=colour)
-      call sheet%text(x + 88.0_wp, y + pitch * n, fixed_number(ld%arm / geo%mu_lever, 1), "num", colour=colour, &
-        anchor=anchor_end)
+      call sheet%text(x, y + lp * n, text, "num", colour=colour, size=fitted_size(text, font, wide * 52.0_wp / 88.0_wp, &
+        0.6_wp))
+      call sheet%text(x + wide * 54.0_wp / 88.0_wp, y + lp * n, image_list(ld%image), "num", colour=colour, size=font)
+      call sheet%text(x + wide, y + lp * n, fixed_number(ld%arm / geo%mu_lever, 1), "num", colour=colour, &
+        anchor=anchor_end, size=font)
       n = n + 1
     end subroutine row
   end subroutine draw_lever
@@ -585,9 +643,10 @@ contains
         area = cell + [1.0_wp, 5.0_wp, -1.0_wp, -5.0_wp]
         if (geo%mu_link(e) > 0.0_wp .and. .not. poly%input) then
           call draw_group_apart(sheet, drawing, plans, e, geo%link_views(e), geo%link_boxes(:, e), &
-            geo%link_force_scale(e), lang)
+            geo%link_force_scale(e), lang, geo%arms_at(:, e))
           call sheet%set_layer(layer_polygons)
-          area(1) = geo%link_boxes(3, e)
+          area(1) = geo%link_boxes(3, e) + 1.0_wp
+          if (geo%arms_at(2, e) > 0.0_wp) area(4) = geo%arms_at(2, e) - apart_pitch
         else if (geo%mu_link(e) > 0.0_wp) then
           call draw_input_link(sheet, geo, drawing, plans, e, lang)
           call sheet%set_layer(layer_polygons)
@@ -665,6 +724,29 @@ contains
       end associate
     end do
   end subroutine draw_polygons
+
+  !> `text` in `width` mm ending on the line `y`: one line at 2.4 mm or smaller down to 1.8 mm
+  !> (ГОСТ 2.304's smallest), else broken after a comma into two lines, the first 2.5 mm above.
+  pure subroutine legible_lines(sheet, x, y, width, text)
+    type(sheet_t), intent(inout) :: sheet
+    real(wp), intent(in) :: x, y, width
+    character(*), intent(in) :: text
+    integer :: cut
+    if (fitted_size(text, 2.4_wp, width, 0.6_wp) >= 1.8_wp) then
+      call sheet%text(x, y, text, "small", size=fitted_size(text, 2.4_wp, width, 0.6_wp))
+      return
+    end if
+    cut = index(text(:len(text) / 2 + 1), ", ", back=.true.)
+    if (cut == 0) cut = index(text, ", ")
+    if (cut == 0) then
+      call sheet%text(x, y, text, "small", size=1.8_wp)
+      return
+    end if
+    call sheet%text(x, y - 2.5_wp, text(:cut), "small", size=max(1.8_wp, min(fitted_size(text(:cut), 2.0_wp, &
+      width, 0.6_wp), fitted_size(text(cut + 2:), 2.0_wp, width, 0.6_wp))))
+    call sheet%text(x, y, text(cut + 2:), "small", size=max(1.8_wp, min(fitted_size(text(:cut), 2.0_wp, width, &
+      0.6_wp), fitted_size(text(cut + 2:), 2.0_wp, width, 0.6_wp))))
+  end subroutine legible_lines
 
   !> N*m for a moment (M...), N for a force.
   pure function effort_unit(name, lang) result(unit)

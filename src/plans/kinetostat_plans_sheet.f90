@@ -33,8 +33,11 @@ module kinetostat_plans_sheet
   real(wp), parameter :: lever_arrow = 24.0_wp
   !> A panel's heading band at its top and its scale line at its bottom, mm.
   real(wp), parameter :: panel_head = 8.0_wp, panel_foot = 9.0_wp
-  !> The smallest box (width, height) a group drawn apart gets, else it is not drawn, mm.
-  real(wp), parameter :: min_apart(2) = [70.0_wp, 100.0_wp]
+  !> The smallest box (width, height) a group drawn apart gets, else it is not drawn, mm
+  !> (on A4 landscape each group gets about 44 x 60 mm).
+  real(wp), parameter :: min_apart(2) = [36.0_wp, 36.0_wp]
+  !> The mechanism's longest force arrow on the course sheet, mm.
+  real(wp), parameter :: longest_arrow = 28.0_wp
 
   !> The sheet's panels (x0, y0, x1, y1; mm) and scales.
   type :: plans_sheet_t
@@ -49,6 +52,8 @@ module kinetostat_plans_sheet
     !> Lengths, m/mm; velocities (the plan and the lever's), (m/s)/mm; accelerations,
     !> (m/s^2)/mm; the lever's loads, N/mm.
     real(wp) :: mu_l = 1.0_wp, mu_v = 1.0_wp, mu_a = 1.0_wp, mu_lever = 1.0_wp, mu_force = 1.0_wp
+    !> The course sheet: the mechanism's forces, N/mm (0: the mechanism without its forces).
+    real(wp) :: mu_mechanism_force = 0.0_wp
     !> The poles of the plans and of the lever on the sheet, mm.
     real(wp) :: pole_v(2) = 0.0_wp, pole_a(2) = 0.0_wp, pole_lever(2) = 0.0_wp
     !> Every unit's polygon: its cell in the polygons' panel (x0, y0, x1, y1) and its scale,
@@ -62,9 +67,12 @@ module kinetostat_plans_sheet
     real(wp), allocatable :: link_force_scale(:)
     !> The sheet's rotation against the position frame, rad.
     real(wp) :: rotation = 0.0_wp
-    !> The course sheet "kinetostatics": each Assur group drawn apart in the left part of its
-    !> polygon's cell (its box in `link_boxes`, its view in `link_views`, mu_link > 0).
+    !> The course sheet "kinetostatics": the mechanism with its forces, no plans of velocities
+    !> and accelerations (the kinematics sheet's), each Assur group drawn apart in the left
+    !> part of its polygon's cell (its box in `link_boxes`, its view in `link_views`, mu_link
+    !> > 0), the table of its arms at `arms_at` (x, y of the first row) under its polygon.
     logical :: groups_apart = .false.
+    real(wp), allocatable :: arms_at(:, :)
     !> The balancing effort as measured on the sheet: from the lever and from the force
     !> polygons (N*m or N), their difference in % of the larger; `compared` false when the
     !> sheet gives no such comparison (the lever not drawn, no input link's polygon).
@@ -85,9 +93,9 @@ contains
     type(plans_t), intent(in) :: plans
     type(plans_sheet_t), intent(out) :: sheet
     real(wp), allocatable :: pts(:, :), tips(:, :)
-    real(wp) :: fmax, r, b(4), cell(4), quarter, fx, fy
+    real(wp) :: fmax, r, b(4), cell(4), quarter, fx, fy, top, bottom, row, fm
     type(drawing_t) :: link
-    integer :: i, e, n, columns, rows, pivot
+    integer :: i, e, n, columns, rows, pivot, table_rows
     character(len=16), allocatable :: names(:)
     integer, allocatable :: inner(:)
     r = drawing%view_angle
@@ -101,27 +109,70 @@ contains
     ! the course sheet (a paper named) draws the groups apart; --format plans does not
     sheet%groups_apart = present(paper_name)
     b = sheet%paper%inside()
-    ! the panels' sizes grow (or shrink) with the paper from A2's (569 x 410 mm inside the
-    ! frame); the header band, the title block's 57 mm and the tables' widths stay
-    fx = (b(3) - b(1)) / 569.0_wp
-    fy = (b(4) - b(2) - 78.0_wp) / 332.0_wp
-    sheet%mechanism = [b(1) + 2.0_wp, b(2) + 21.0_wp, b(1) + 2.0_wp + 188.0_wp * fx, b(2) + 21.0_wp + 150.0_wp * fy]
-    sheet%velocity = [sheet%mechanism(3) + 2.0_wp, sheet%mechanism(2), sheet%mechanism(3) + 2.0_wp + 188.0_wp * fx, &
-      sheet%mechanism(4)]
-    sheet%acceleration = [sheet%velocity(3) + 2.0_wp, sheet%mechanism(2), b(3) - 2.0_wp, sheet%mechanism(4)]
-    sheet%lever = [b(1) + 2.0_wp, sheet%mechanism(4) + 2.0_wp, b(1) + 2.0_wp + 150.0_wp * fx, b(4) - 57.0_wp]
-    sheet%lever_table = [sheet%lever(3), sheet%lever(2), sheet%lever(3) + 92.0_wp, sheet%lever(4)]
-    sheet%polygons = [sheet%lever_table(3) + 2.0_wp, sheet%lever(2), b(3) - 2.0_wp, sheet%lever(4)]
-    sheet%values = [b(1) + 2.0_wp, sheet%lever(4) + 2.0_wp, b(3) - 300.0_wp, b(4) - 1.0_wp]
-    sheet%results = [sheet%values(3) + 2.0_wp, sheet%values(2), b(3) - 187.0_wp, sheet%values(4)]
-    ! the mechanism at a ГОСТ 2.302 scale
-    call fit_mechanism_view(drawing, panel_inner(sheet%mechanism), 6.0_wp, sheet%view)
+    if (sheet%groups_apart) then
+      ! the course sheet's panels: across the top the mechanism with its forces, Zhukovsky's
+      ! lever and its table of loads; under them the force polygons with the groups apart,
+      ! across the sheet down to the title block; the balancing effort left of the title
+      ! block. The mechanism at a ГОСТ 2.302 scale with its forces at a round mu_F.
+      top = b(2) + 21.0_wp
+      bottom = b(4) - 57.0_wp
+      ! the top row tall enough for the lever's table (its rows 2.6 mm apart at the least), at
+      ! most half the room
+      row = 0.38_wp * (bottom - top)
+      if (plans%lever_known .and. b(3) - b(1) > 287.0_wp) row = min(max(row, panel_head + 8.0_wp + 2.6_wp * &
+        (size(plans%loads) + 1)), &
+        0.5_wp * (bottom - top))
+      sheet%mechanism = [b(1) + 2.0_wp, top, b(1) + 2.0_wp + 0.55_wp * (b(3) - b(1) - 98.0_wp), top + row]
+      sheet%lever = [sheet%mechanism(3) + 2.0_wp, top, b(3) - 94.0_wp, top + row]
+      sheet%lever_table = [sheet%lever(3), top, b(3) - 2.0_wp, top + row]
+      sheet%polygons = [b(1) + 2.0_wp, top + row + 2.0_wp, b(3) - 2.0_wp, bottom]
+      sheet%results = [b(1) + 2.0_wp, bottom + 2.0_wp, b(3) - 187.0_wp, b(4) - 1.0_wp]
+      ! A4: the lever's table left of the title block (its rows at 2.6 mm), the balancing
+      ! effort at the top right, so that the polygons get the height the groups need
+      if (sheet%results(3) - sheet%results(1) < 100.0_wp) then
+        sheet%lever_table = sheet%results
+        sheet%results = [sheet%lever(3), top, b(3) - 2.0_wp, top + row]
+      end if
+      fm = 0.0_wp
+      do i = 1, size(drawing%forces)
+        fm = max(fm, norm2(drawing%forces(i)%f))
+      end do
+      if (fm > 0.0_wp) then
+        ! the longest arrow and the room around the drawing in proportion on a small sheet
+        ! (its foot has the scales and the forces too short to draw, two lines)
+        associate (area => panel_inner(sheet%mechanism) - [0.0_wp, 0.0_wp, 0.0_wp, 4.5_wp])
+          associate (side => min(area(3) - area(1), area(4) - area(2)))
+            sheet%mu_mechanism_force = round_scale(fm, min(longest_arrow, 0.15_wp * side))
+            call fit_mechanism_view(drawing, area, min(8.0_wp, 0.08_wp * side), sheet%view, &
+              force_scale=1.0_wp / sheet%mu_mechanism_force)
+          end associate
+        end associate
+      else
+        call fit_mechanism_view(drawing, panel_inner(sheet%mechanism), 6.0_wp, sheet%view)
+      end if
+    else
+      ! the panels' sizes grow (or shrink) with the paper from A2's (569 x 410 mm inside the
+      ! frame); the header band, the title block's 57 mm and the tables' widths stay
+      fx = (b(3) - b(1)) / 569.0_wp
+      fy = (b(4) - b(2) - 78.0_wp) / 332.0_wp
+      sheet%mechanism = [b(1) + 2.0_wp, b(2) + 21.0_wp, b(1) + 2.0_wp + 188.0_wp * fx, b(2) + 21.0_wp + 150.0_wp * fy]
+      sheet%velocity = [sheet%mechanism(3) + 2.0_wp, sheet%mechanism(2), sheet%mechanism(3) + 2.0_wp + 188.0_wp * fx, &
+        sheet%mechanism(4)]
+      sheet%acceleration = [sheet%velocity(3) + 2.0_wp, sheet%mechanism(2), b(3) - 2.0_wp, sheet%mechanism(4)]
+      sheet%lever = [b(1) + 2.0_wp, sheet%mechanism(4) + 2.0_wp, b(1) + 2.0_wp + 150.0_wp * fx, b(4) - 57.0_wp]
+      sheet%lever_table = [sheet%lever(3), sheet%lever(2), sheet%lever(3) + 92.0_wp, sheet%lever(4)]
+      sheet%polygons = [sheet%lever_table(3) + 2.0_wp, sheet%lever(2), b(3) - 2.0_wp, sheet%lever(4)]
+      sheet%values = [b(1) + 2.0_wp, sheet%lever(4) + 2.0_wp, b(3) - 300.0_wp, b(4) - 1.0_wp]
+      sheet%results = [sheet%values(3) + 2.0_wp, sheet%values(2), b(3) - 187.0_wp, sheet%values(4)]
+      ! the mechanism at a ГОСТ 2.302 scale
+      call fit_mechanism_view(drawing, panel_inner(sheet%mechanism), 6.0_wp, sheet%view)
+      ! the plans: the images and the corners of the equations' chains
+      call fit_plan(plan_points(plans%velocities, plans%velocity_equations), panel_inner(sheet%velocity), sheet%mu_v, &
+        sheet%pole_v)
+      call fit_plan(plan_points(plans%accelerations, plans%equations), panel_inner(sheet%acceleration), sheet%mu_a, &
+        sheet%pole_a)
+    end if
     sheet%mu_l = sheet%view%mu_l()
-    ! the plans: the images and the corners of the equations' chains
-    call fit_plan(plan_points(plans%velocities, plans%velocity_equations), panel_inner(sheet%velocity), sheet%mu_v, &
-      sheet%pole_v)
-    call fit_plan(plan_points(plans%accelerations, plans%equations), panel_inner(sheet%acceleration), sheet%mu_a, &
-      sheet%pole_a)
     ! the lever: the plan turned by 90 deg more, the images of the loads' points; room for
     ! the load arrows around it
     allocate (pts(2, 0))
@@ -137,20 +188,24 @@ contains
       end do
       fmax = max(fmax, norm2(plans%balancing%f))
     end if
-    call fit_plan(pts, panel_inner(sheet%lever) + 0.6_wp * [lever_arrow, lever_arrow, -lever_arrow, -lever_arrow], &
-      sheet%mu_lever, sheet%pole_lever)
+    ! (the course sheet keeps the panel's last 7 mm for its note)
+    call fit_plan(pts, panel_inner(sheet%lever) + 0.6_wp * [lever_arrow, lever_arrow, -lever_arrow, -lever_arrow] - &
+      merge(7.0_wp, 0.0_wp, sheet%groups_apart) * [0.0_wp, 0.0_wp, 0.0_wp, 1.0_wp], sheet%mu_lever, sheet%pole_lever)
     sheet%mu_force = round_scale(fmax, lever_arrow)
     ! the polygons: a grid of cells, each polygon at its own scale; an input link's cell
     ! with the link drawn in its left part
     n = size(plans%group_polygons)
     allocate (sheet%cells(4, n), sheet%mu_f(n), sheet%link_boxes(4, n), sheet%mu_link(n), sheet%link_views(n), &
-      sheet%link_force_scale(n))
+      sheet%link_force_scale(n), sheet%arms_at(2, n))
+    sheet%arms_at = 0.0_wp
     sheet%link_force_scale = 0.0_wp
     sheet%link_boxes = 0.0_wp
     sheet%mu_link = 0.0_wp
     columns = max(1, min(n, 3))
     rows = max(1, (n + columns - 1) / columns)
     b = panel_inner(sheet%polygons)
+    ! (the course sheet's polygons panel has no scale line at its foot: its cells go down)
+    if (sheet%groups_apart) b(4) = sheet%polygons(4) - 2.0_wp
     do e = 1, n
       associate (w => (b(3) - b(1)) / columns, h => (b(4) - b(2)) / rows)
         sheet%cells(:, e) = [b(1) + w * modulo(e - 1, columns), b(2) + h * ((e - 1) / columns), &
@@ -175,11 +230,12 @@ contains
           cell(1) = sheet%link_boxes(3, e)
         end if
       else if (sheet%groups_apart) then
-        ! the group apart: the left part of the cell, its arms' table under it; not when the
-        ! cell is too small for it (A3, A4: the polygon keeps its cell)
+        ! the group apart: the left part of the cell at its full height; its arms' table under
+        ! the polygon (the right part); not when the cell is too small for it
         call group_apart_drawing(drawing, plans, e, link, names, inner)
-        sheet%link_boxes(:, e) = [cell(1), cell(2) + 4.0_wp, cell(1) + 0.5_wp * (cell(3) - cell(1)), &
-          cell(4) - row_pitch * (size(link%forces) + size(link%moments) + size(names) + 1)]
+        sheet%link_boxes(:, e) = [cell(1), cell(2) + 4.0_wp, cell(1) + 0.5_wp * (cell(3) - cell(1)), cell(4)]
+        ! (the arms' table's rows: each force and couple, a heading and a result an equation)
+        table_rows = size(link%forces) + size(link%moments) + 2 * max(count(inner > 0), 1) + 1
         if (sheet%link_boxes(3, e) - sheet%link_boxes(1, e) < min_apart(1) .or. &
           sheet%link_boxes(4, e) - sheet%link_boxes(2, e) < min_apart(2)) then
           sheet%link_boxes(:, e) = 0.0_wp
@@ -193,7 +249,13 @@ contains
             call fit_mechanism_view(link, box, 4.0_wp, sheet%link_views(e), force_scale=sheet%link_force_scale(e))
           end associate
           sheet%mu_link(e) = sheet%link_views(e)%mu_l()
-          cell(1) = sheet%link_boxes(3, e)
+          cell(1) = sheet%link_boxes(3, e) + 1.0_wp
+          ! the arms' table when the polygon keeps half the cell's height (A4: the arms are
+          ! drawn and named, their table left out)
+          if (row_pitch * table_rows <= 0.5_wp * (cell(4) - cell(2))) then
+            cell(4) = cell(4) - row_pitch * table_rows
+            sheet%arms_at(:, e) = [cell(1), cell(4) + row_pitch]
+          end if
         end if
       end if
       call polygon_tips(plans%group_polygons(e)%vectors, tips)

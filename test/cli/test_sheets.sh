@@ -71,10 +71,14 @@ for deck in $sheets_decks; do
 done
 
 # each Assur group drawn apart on the kinetostatics sheet: every link with one inner joint
-# gets its moment equation about it (the arms h in mm at the drawing's μl, the forces in N, the
-# couples in N·m): R^τ from the drawing's numbers = the τ drawn (the polygon's) within 0.5 %,
-# and the polygon's = the run's (--format json --plans at the sheet's step) within 1e-9 N
-sheets_moments() {  # SVG [JSON]: "ok N" or "differs: ..."
+# gets its moment equation about it, a group with a sliding inner pair (PR 3207's 2,3) the
+# group's about its pivot on the frame (the arms h in mm at the drawing's μl, the forces in
+# N, the couples in N·m). The equation's unknown (data-unknown, or a τ part) from the
+# drawing's numbers = the one drawn within 0.5 %: R^τ (or a reaction whose line is known,
+# PR 3207's F21 square to the lever, arm |CB|) = |Σ of the others| / h μl; the arm of a
+# guide's reaction (PR 3207's F56 on the ram) = |Σ| / F μl. The polygon's forces = the
+# run's (--format json --plans at the sheet's step) within 1e-9 N.
+sheets_moments() {  # SVG [JSON]: "ok N GROUPS" or "differs: ..."
   python3 - "$@" <<'PY'
 import json, re, sys
 text = open(sys.argv[1], encoding="utf-8").read()
@@ -86,25 +90,31 @@ if len(sys.argv) > 2:
 n, bad = 0, []
 for eq in re.finditer(r'<g class="moment-equation" data-link="([^"]*)" data-about="([^"]*)" data-mu-l="([^"]*)">(.*?)</g>\s*</g>', text, re.S):
     mu = float(eq.group(3))
-    rest, tau = 0.0, None
+    rest, sought = 0.0, None
     for arm in re.finditer(r'<g class="arm"([^>]*)>', eq.group(4)):
         a = dict(re.findall(r'(data-[\w-]+)="([^"]*)"', arm.group(1)))
         if "data-moment" in a:
             rest += float(a["data-moment"])
-        elif "^τ" in a["data-force-name"]:
-            tau = a
+        elif "data-unknown" in a or "^τ" in a["data-force-name"]:
+            sought = a
         else:
             rest += float(a["data-sense"]) * float(a["data-force"]) * float(a["data-h"]) * mu
-    if tau is None:
+    if sought is None:
         continue
     n += 1
-    drawn = float(tau["data-force"])
-    computed = abs(rest) / (float(tau["data-h"]) * mu)
+    name = sought["data-force-name"]
+    if sought.get("data-unknown", "force").strip() == "arm":
+        drawn = float(sought["data-h"])
+        computed = abs(rest) / (float(sought["data-force"]) * mu)
+        what = "arm of " + name
+    else:
+        drawn = float(sought["data-force"])
+        computed = abs(rest) / (float(sought["data-h"]) * mu)
+        what = name
+        if run and abs(run.get(name, -1.0) - drawn) > 1e-9 * max(drawn, 1.0):
+            bad.append(f'{name}: drawn {drawn:.10g} N, run {run.get(name)}')
     if abs(computed - drawn) > 5e-3 * max(drawn, 1e-9):
-        bad.append(f'{tau["data-force-name"]} about {eq.group(2)}: moment equation {computed:.6g} N, drawn {drawn:.6g} N')
-    name = tau["data-force-name"]
-    if run and abs(run.get(name, -1.0) - drawn) > 1e-9 * max(drawn, 1.0):
-        bad.append(f'{name}: drawn {drawn:.10g} N, run {run.get(name)}')
+        bad.append(f'{what} about {eq.group(2)}: moment equation {computed:.6g}, drawn {drawn:.6g}')
 groups = len(re.findall(r'class="group-apart"', text))
 if groups == 0:
     bad.append("no group drawn apart")
@@ -122,6 +132,17 @@ done
 # class III: three τ found by three moment equations (links 2, 3, 4 about their joints with 5)
 verdict=$(sheets_moments "$cli_tmp/sheets_class3_en/kinetostatics.svg")
 [ "$verdict" = "ok 3 1" ] && pass || fail sheets-groups-apart-class3-tau "expected 3 moment equations with τ, got: $verdict"
+# PR 3207: F21 about C (the group 2,3) and the arm of F56 (the ram) found by the equations;
+# must fail: either drawn 2 % off
+svg="$cli_tmp/sheets_pr3207_flywheel_en/kinetostatics.svg"
+verdict=$(sheets_moments "$svg")
+[ "$verdict" = "ok 2 2" ] && pass || fail sheets-groups-apart-pr3207 "expected F21 about C and the arm of F56, got: $verdict"
+for bad in 'h21:F21 about C' 'h56:arm of F56 about D'; do
+  python3 -c "import re, sys; t = open(sys.argv[1], encoding='utf-8').read(); print(re.sub(r'(data-arm=\"' + sys.argv[2] + r'\"[^>]*data-h=\")([^\"]*)', lambda m: m.group(1) + repr(1.02 * float(m.group(2))), t), end='')" \
+    "$svg" "${bad%%:*}" >"$cli_tmp/apart_bad.svg"
+  verdict=$(sheets_moments "$cli_tmp/apart_bad.svg")
+  case "$verdict" in "differs: ${bad#*:}"*) pass ;; *) fail sheets-groups-apart-pr3207-must-fail "a wrong ${bad%%:*} passed: $verdict" ;; esac
+done
 # must fail: an arm of R^τ drawn 2 % too long
 python3 -c "import re, sys; t = open(sys.argv[1], encoding='utf-8').read(); print(re.sub(r'(data-force-name=\"F21\^τ\" data-force=\"[^\"]*\" data-h=\")([^\"]*)', lambda m: m.group(1) + repr(1.02 * float(m.group(2))), t), end='')" \
   "$cli_tmp/sheets_class3_en/kinetostatics.svg" >"$cli_tmp/apart_bad.svg"
