@@ -9,7 +9,7 @@ module test_assur
   use kinetostat_vec2, only: perp, cross, unit_at, rotate, magnitude
   use kinetostat_assur_kinematics, only: link_state_t, dyad_pose_t, dyad_geometry_t, &
     kind_rrr, kind_rrp, kind_rpr, kind_prp, kind_rpp, kind_names
-  use kinetostat_assur_statics, only: dyad_reactions_t, dyad_reactions, dyad_reactions_lu, pair_is_prismatic
+  use kinetostat_assur_statics, only: dyad_reactions_t, dyad_reactions, pair_is_prismatic
   use kinetostat_assur, only: assur_mech_t, assur_link_t, assur_dyad_t, assur_step_t, assur_force_t, &
     assur_step, assur_kinematics, pair_index, crank_pin_index, pair_sides
   use kinetostat_assur_deck, only: assur_deck_t, read_assur_deck, assur_window, assur_phi1_deg, assur_omega1
@@ -254,7 +254,7 @@ contains
             fk(:, j) = [uniform(state, -1.0e4_wp, 1.0e4_wp), uniform(state, -1.0e4_wp, 1.0e4_wp)]
             mk(j) = uniform(state, -3.0e3_wp, 3.0e3_wp)
           end do
-          call dyad_reactions_lu(kind, p, tt, o, fk, mk, q, error_lu)
+          call dyad_reactions(kind, p, tt, o, fk, mk, q, error_lu, dense=.true.)
           call dyad_reactions(kind, p, tt, o, fk, mk, r, error)
           if (allocated(error_lu) .neqv. allocated(error)) then
             call check_true(t, "closed form vs LU "//kind_names(kind)//": the same verdict", .false., &

@@ -16,7 +16,7 @@ module kinetostat_assur_statics
   use kinetostat_assur_kinematics, only: kind_rrr, kind_rrp, kind_rpr, kind_prp, kind_rpp
   implicit none
   private
-  public :: dyad_reactions_t, dyad_reactions, dyad_reactions_lu, pair_is_prismatic
+  public :: dyad_reactions_t, dyad_reactions, pair_is_prismatic
 
   !> Reactions of one dyad.
   type :: dyad_reactions_t
@@ -72,9 +72,10 @@ contains
   !>
   !> then F1 = -F_a - F2 and F3 = F2 - F_b. Where the 2x2's determinant is small (below
   !> closed_form_rel of its entries' scale, the largest |r_j| for lengths: near a dead
-  !> position) the six equations are solved as one system instead (dyad_reactions_lu), which
-  !> also decides whether the position is singular.
-  pure subroutine dyad_reactions(kind, p, t, o, f_known, m_known, r, error)
+  !> position) the six equations are solved as one system instead (dense_reactions), which
+  !> also decides whether the position is singular; `dense` asks for that solve whatever the
+  !> determinant (the closed form's second opinion in the tests).
+  pure subroutine dyad_reactions(kind, p, t, o, f_known, m_known, r, error, dense)
     !> Dyad kind code 1..5.
     integer, intent(in) :: kind
     !> Reference point of each pair, m.
@@ -91,6 +92,8 @@ contains
     type(dyad_reactions_t), intent(out) :: r
     !> Geometry error when the system is singular or ill-conditioned.
     type(error_t), allocatable, intent(out) :: error
+    !> Solve the six equations as one dense system (default: false).
+    logical, intent(in), optional :: dense
     !> A 2x2 whose |determinant| is at least this times the product of its columns' scales
     !> is solved in closed form: the six equations' reciprocal condition is then far above
     !> the dense solve's threshold (1e-12).
@@ -98,6 +101,9 @@ contains
     real(wp) :: r1(2), r2(2), r3(2), u1(2), u3(2), fa(2), fb(2), c1, c3, det, len2, g(2)
     real(wp) :: n1(2), n2(2), n3(2), f2(2), k1, k3
     logical :: closed
+    !> The kind solved in closed form (0: none, the dense solve).
+    integer :: kind_closed
+    kind_closed = kind
     r1 = p(:, 1) - o
     r2 = p(:, 2) - o
     r3 = p(:, 3) - o
@@ -107,7 +113,10 @@ contains
     len2 = max(r1(1)**2 + r1(2)**2, r2(1)**2 + r2(2)**2, r3(1)**2 + r3(2)**2)
     if (.not. len2 > 0.0_wp) len2 = 1.0_wp
     closed = .false.
-    select case (kind)
+    if (present(dense)) then
+      if (dense) kind_closed = 0
+    end if
+    select case (kind_closed)
     case (kind_rrr)
       u1 = r2 - r1
       u3 = r3 - r2
@@ -185,31 +194,19 @@ contains
         r%m(2) = -m_known(1) - cross(r1, r%f(:, 1)) - cross(r2, f2)
         r%m(3) = -m_known(2) + cross(r2, f2) + r%m(2) - cross(r3, r%f(:, 3))
       end if
+    case default
+      continue  ! the dense solve, asked for with `dense`
     end select
-    if (.not. closed) call dyad_reactions_lu(kind, p, t, o, f_known, m_known, r, error)
+    if (.not. closed) call dense_reactions(kind, p, t, o, f_known, m_known, r, error)
   end subroutine dyad_reactions
 
-  !> Solve the six equilibrium equations of a dyad as one dense system (LU): the second
-  !> opinion of dyad_reactions, and its answer near singular positions.
-  !> Known loads: resultant force `f_known(:,i)` on link i (a = 1, b = 2) and moment
-  !> `m_known(i)` about the point `o` (N*m). Moment rows are divided by a length scale and
-  !> the unknown moments multiplied by it, so the system is dimensionless.
-  pure subroutine dyad_reactions_lu(kind, p, t, o, f_known, m_known, r, error)
-    !> Dyad kind code 1..5.
+  !> dyad_reactions' dense solve (arguments as there): the six equilibrium equations as one
+  !> system (LU). Moment rows are divided by a length scale and the unknown moments
+  !> multiplied by it, so the system is dimensionless.
+  pure subroutine dense_reactions(kind, p, t, o, f_known, m_known, r, error)
     integer, intent(in) :: kind
-    !> Reference point of each pair, m.
-    real(wp), intent(in) :: p(2, 3)
-    !> Unit direction of the sliding line of each prismatic pair.
-    real(wp), intent(in) :: t(2, 3)
-    !> Point about which the known moments are taken, m.
-    real(wp), intent(in) :: o(2)
-    !> Known resultant forces on links a and b, N.
-    real(wp), intent(in) :: f_known(2, 2)
-    !> Known moments on links a and b about `o`, N*m.
-    real(wp), intent(in) :: m_known(2)
-    !> The reactions.
+    real(wp), intent(in) :: p(2, 3), t(2, 3), o(2), f_known(2, 2), m_known(2)
     type(dyad_reactions_t), intent(out) :: r
-    !> Geometry error when the system is singular or ill-conditioned.
     type(error_t), allocatable, intent(out) :: error
     real(wp) :: a(6, 6), b(6), x(6), scale, nrm(2)
     integer :: j, col, link, row
@@ -256,6 +253,6 @@ contains
         r%f(:, j) = x(col:col + 1)
       end if
     end do
-  end subroutine dyad_reactions_lu
+  end subroutine dense_reactions
 
 end module kinetostat_assur_statics

@@ -13,6 +13,7 @@ module kinetostat_vec2
     !> than the scalar one (the debug build's), so outputs would depend on the build.
     pure function c_hypot(x, y) result(r) bind(c, name="hypot")
       import :: c_double
+      implicit none
       real(c_double), value, intent(in) :: x, y
       real(c_double) :: r
     end function c_hypot
