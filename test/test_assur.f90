@@ -28,6 +28,7 @@ contains
   subroutine run_assur_tests(t)
     type(test_counts_t), intent(inout) :: t
     call test_cramer_oracle(t)
+    call test_closed_form_vs_lu(t)
     call test_finite_differences(t)
     call test_deck_selfchecks(t)
     call test_slider_crank_by_hand(t)
@@ -204,6 +205,84 @@ contains
                       worst <= rtol, trim(name))
     end do
   end subroutine test_cramer_oracle
+
+  ! ----------------------------------------------------------------------------------------
+  !> The closed-form dyad solve against the six equations solved as one dense system (LU), on
+  !> random configurations of every kind: the pairs' points as the poses place them
+  !> (coinciding where the kind has them) and anywhere (the equations hold for any points),
+  !> moments about a random point; the largest difference relative to the trial's largest
+  !> reaction (forces in N, moments over the dyad's size) at most 1e-12, and the reactions
+  !> satisfy both links' equilibrium to roundoff.
+  subroutine test_closed_form_vs_lu(t)
+    type(test_counts_t), intent(inout) :: t
+    real(wp), parameter :: rtol = 1.0e-12_wp
+    integer, parameter :: trials = 400
+    integer(i8) :: state
+    integer :: kind, trial, j, layout, n_closed
+    real(wp) :: p(2, 3), tt(2, 3), fk(2, 2), mk(2), o(2), scale, size_d, err, worst, resid, worst_resid
+    real(wp) :: fa(2), fb(2), ma, mb
+    type(dyad_reactions_t) :: r, q
+    type(error_t), allocatable :: error, error_lu
+    character(len=96) :: name
+    state = 20261128_i8
+    do kind = 1, 5
+      worst = 0.0_wp
+      worst_resid = 0.0_wp
+      n_closed = 0
+      do layout = 1, 2
+        do trial = 1, trials
+          do j = 1, 3
+            p(:, j) = [uniform(state, -1.0_wp, 1.0_wp), uniform(state, -1.0_wp, 1.0_wp)]
+            tt(:, j) = unit_at(uniform(state, -pi, pi))
+          end do
+          if (layout == 1) then
+            select case (kind)
+            case (kind_rrp)
+              p(:, 3) = p(:, 2)
+            case (kind_rpr, kind_rpp)
+              p(:, 2) = p(:, 1)
+            case (kind_prp)
+              p(:, 1) = p(:, 2); p(:, 3) = p(:, 2)
+            case default
+              continue
+            end select
+            o = p(:, 2)
+          else
+            o = [uniform(state, -1.0_wp, 1.0_wp), uniform(state, -1.0_wp, 1.0_wp)]
+          end if
+          do j = 1, 2
+            fk(:, j) = [uniform(state, -1.0e4_wp, 1.0e4_wp), uniform(state, -1.0e4_wp, 1.0e4_wp)]
+            mk(j) = uniform(state, -3.0e3_wp, 3.0e3_wp)
+          end do
+          call dyad_reactions(kind, p, tt, o, fk, mk, q, error_lu, dense=.true.)
+          call dyad_reactions(kind, p, tt, o, fk, mk, r, error)
+          if (allocated(error_lu) .neqv. allocated(error)) then
+            call check_true(t, "closed form vs LU "//kind_names(kind)//": the same verdict", .false., &
+                            "one of them failed")
+            cycle
+          end if
+          if (allocated(error)) cycle
+          n_closed = n_closed + 1
+          size_d = max(maxval(abs(p(:, 1) - o)), maxval(abs(p(:, 2) - o)), maxval(abs(p(:, 3) - o)), 1.0e-3_wp)
+          scale = max(maxval(abs(q%f)), maxval(abs(q%m)) / size_d)
+          err = max(maxval(abs(r%f - q%f)), maxval(abs(r%n - q%n)), maxval(abs(r%m - q%m)) / size_d) / scale
+          worst = max(worst, err)
+          ! both links' equilibrium with the closed form's reactions (moments about o)
+          fa = r%f(:, 1) + r%f(:, 2) + fk(:, 1)
+          fb = -r%f(:, 2) + r%f(:, 3) + fk(:, 2)
+          ma = cross(p(:, 1) - o, r%f(:, 1)) + r%m(1) + cross(p(:, 2) - o, r%f(:, 2)) + r%m(2) + mk(1)
+          mb = -cross(p(:, 2) - o, r%f(:, 2)) - r%m(2) + cross(p(:, 3) - o, r%f(:, 3)) + r%m(3) + mk(2)
+          resid = max(maxval(abs(fa)), maxval(abs(fb)), abs(ma) / size_d, abs(mb) / size_d) / scale
+          worst_resid = max(worst_resid, resid)
+        end do
+      end do
+      write (name, '("worst ",es9.2," of the largest reaction over ",i0," trials")') worst, n_closed
+      call check_true(t, "closed form vs LU "//kind_names(kind)//": within 1e-12", worst <= rtol .and. &
+                      n_closed > trials, trim(name))
+      write (name, '("worst residual ",es9.2)') worst_resid
+      call check_true(t, "closed form "//kind_names(kind)//": equilibrium of both links", worst_resid <= rtol, trim(name))
+    end do
+  end subroutine test_closed_form_vs_lu
 
   ! ----------------------------------------------------------------------------------------
   !> A crank at the origin plus the given dyads, links numbered 1.. in order, frame 0.

@@ -13,7 +13,7 @@
 module kinetostat_assur
   use kinetostat_kinds, only: wp
   use kinetostat_error, only: error_t, fatal_error, exit_geometry
-  use kinetostat_vec2, only: unit_at, cross, magnitude
+  use kinetostat_vec2, only: unit_at, cross, magnitude, fast_magnitude
   use kinetostat_loads, only: inertia_force, inertia_moment, gravity_force
   use kinetostat_selfcheck, only: link_balance_t, balance_add_force, balance_add_couple, equilibrium_residual, &
     power_mismatch, balance_add_balance, load_moment_scale
@@ -456,7 +456,7 @@ contains
     length = 0.0_wp
     do d = 1, size(poses)
       do j = 1, size(poses(d)%p, 2)
-        length = max(length, magnitude(poses(d)%p(:, j) - mech%pivot))
+        length = max(length, fast_magnitude(poses(d)%p(:, j) - mech%pivot))
       end do
     end do
   end function mechanism_size

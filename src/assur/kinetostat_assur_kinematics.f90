@@ -17,7 +17,7 @@
 !> slider's reference point moves (any offset of the slider is part of the line's position).
 module kinetostat_assur_kinematics
   use kinetostat_kinds, only: wp, rad_to_deg
-  use kinetostat_vec2, only: unit_at, perp, cross, rotate, magnitude
+  use kinetostat_vec2, only: unit_at, perp, cross, magnitude
   use kinetostat_text, only: real_str
   implicit none
   private
@@ -132,7 +132,7 @@ contains
 
   !> A link's frame: origin `o` (m), angle `th` (rad) with its cosine and sine, and their
   !> analogues.
-  pure function link_frame(o, th, vo, u, ao, eq) result(ls)
+  pure function link_frame(o, th, vo, u, ao, eq, e) result(ls)
     !> Origin, m.
     real(wp), intent(in) :: o(2)
     !> Angle of the x-axis, rad.
@@ -145,8 +145,14 @@ contains
     real(wp), intent(in) :: ao(2)
     !> d2 th / d phi1^2.
     real(wp), intent(in) :: eq
+    !> [cos(th), sin(th)] when the caller has them already (unit_at(th), the same values).
+    real(wp), intent(in), optional :: e(2)
     type(link_state_t) :: ls
-    ls = link_state_t(o=o, th=th, vo=vo, u=u, ao=ao, eq=eq, cos_th=cos(th), sin_th=sin(th))
+    if (present(e)) then
+      ls = link_state_t(o=o, th=th, vo=vo, u=u, ao=ao, eq=eq, cos_th=e(1), sin_th=e(2))
+    else
+      ls = link_state_t(o=o, th=th, vo=vo, u=u, ao=ao, eq=eq, cos_th=cos(th), sin_th=sin(th))
+    end if
   end function link_frame
 
   !> A point given in a link's coordinates `r` (m), with its analogues.
@@ -267,8 +273,8 @@ contains
     ub = x(2)
     rhs = c%a - a%a + g%l2 * ua**2 * ea - g%l3 * ub**2 * eb
     call solve2(g%l2 * perp(ea), -g%l3 * perp(eb), rhs, x, ok)
-    pose%link(1) = link_frame(o=a%p, th=tha, vo=a%v, u=ua, ao=a%a, eq=x(1))
-    pose%link(2) = link_frame(o=c%p, th=thb, vo=c%v, u=ub, ao=c%a, eq=x(2))
+    pose%link(1) = link_frame(o=a%p, th=tha, vo=a%v, u=ua, ao=a%a, eq=x(1), e=ea)
+    pose%link(2) = link_frame(o=c%p, th=thb, vo=c%v, u=ub, ao=c%a, eq=x(2), e=eb)
     pose%p(:, 1) = a%p
     pose%p(:, 2) = b
     pose%p(:, 3) = c%p
@@ -310,8 +316,8 @@ contains
     call solve2(g%l2 * perp(ea), -t, rhs, x, ok)
     vb = a%v + g%l2 * ua * perp(ea)
     ab = a%a + g%l2 * x(1) * perp(ea) - g%l2 * ua**2 * ea
-    pose%link(1) = link_frame(o=a%p, th=tha, vo=a%v, u=ua, ao=a%a, eq=x(1))
-    pose%link(2) = link_frame(o=b, th=gam, vo=vb, u=gam_u, ao=ab, eq=gam_eq)
+    pose%link(1) = link_frame(o=a%p, th=tha, vo=a%v, u=ua, ao=a%a, eq=x(1), e=ea)
+    pose%link(2) = link_frame(o=b, th=gam, vo=vb, u=gam_u, ao=ab, eq=gam_eq, e=t)
     pose%p(:, 1) = a%p
     pose%p(:, 2) = b
     pose%p(:, 3) = b
@@ -349,8 +355,8 @@ contains
     ds = x(2)
     rhs = a%a - c%a - 2.0_wp * ds * u * n + u**2 * (s * t + g%e * n)
     call solve2(col1, t, rhs, x, ok)
-    pose%link(1) = link_frame(o=a%p, th=th, vo=a%v, u=u, ao=a%a, eq=x(1))
-    pose%link(2) = link_frame(o=c%p, th=th, vo=c%v, u=u, ao=c%a, eq=x(1))
+    pose%link(1) = link_frame(o=a%p, th=th, vo=a%v, u=u, ao=a%a, eq=x(1), e=t)
+    pose%link(2) = link_frame(o=c%p, th=th, vo=c%v, u=u, ao=c%a, eq=x(1), e=t)
     pose%p(:, 1) = a%p
     pose%p(:, 2) = a%p
     pose%p(:, 3) = c%p
@@ -389,8 +395,8 @@ contains
     call solve2(t1, -t2, rhs, x, ok)
     vb = g1%v + ds1 * t1 + s1 * u1 * n1
     ab = g1%a + x(1) * t1 + (2.0_wp * ds1 * u1 + s1 * eq1) * n1 - s1 * u1**2 * t1
-    pose%link(1) = link_frame(o=b, th=gam1, vo=vb, u=u1, ao=ab, eq=eq1)
-    pose%link(2) = link_frame(o=b, th=gam2, vo=vb, u=u2, ao=ab, eq=eq2)
+    pose%link(1) = link_frame(o=b, th=gam1, vo=vb, u=u1, ao=ab, eq=eq1, e=t1)
+    pose%link(2) = link_frame(o=b, th=gam2, vo=vb, u=u2, ao=ab, eq=eq2, e=t2)
     pose%p(:, 1) = b
     pose%p(:, 2) = b
     pose%p(:, 3) = b
@@ -414,7 +420,9 @@ contains
     ts = unit_at(gam + g%slot_angle)
     ns = perp(ts)
     w = a%p - gp%p
-    call solve2(t, ts, w - rotate(g%slot_at, gam), x, ok)
+    ! rotate(g%slot_at, gam) with t = [cos(gam), sin(gam)]
+    call solve2(t, ts, w - [t(1) * g%slot_at(1) - t(2) * g%slot_at(2), t(2) * g%slot_at(1) + t(1) * g%slot_at(2)], &
+                x, ok)
     if (.not. ok) then
       pose%status = pose_no_assembly
       pose%detail = "its slot is parallel to its guide (slot_angle = "//real_str(g%slot_angle * rad_to_deg)//" deg)"
@@ -430,8 +438,8 @@ contains
     ob = gp%p + sb * t
     vb = gp%v + dsb * t + sb * gam_u * n
     ab = gp%a + x(1) * t + (2.0_wp * dsb * gam_u + sb * gam_eq) * n - sb * gam_u**2 * t
-    pose%link(1) = link_frame(o=a%p, th=gam + g%slot_angle, vo=a%v, u=gam_u, ao=a%a, eq=gam_eq)
-    pose%link(2) = link_frame(o=ob, th=gam, vo=vb, u=gam_u, ao=ab, eq=gam_eq)
+    pose%link(1) = link_frame(o=a%p, th=gam + g%slot_angle, vo=a%v, u=gam_u, ao=a%a, eq=gam_eq, e=ts)
+    pose%link(2) = link_frame(o=ob, th=gam, vo=vb, u=gam_u, ao=ab, eq=gam_eq, e=t)
     pose%p(:, 1) = a%p
     pose%p(:, 2) = a%p
     pose%p(:, 3) = ob

@@ -2,7 +2,7 @@
 !> the mismatch between a driving moment/force and its power-balance (virtual work) value.
 module kinetostat_selfcheck
   use kinetostat_kinds, only: wp
-  use kinetostat_vec2, only: cross, magnitude
+  use kinetostat_vec2, only: cross, fast_magnitude
   implicit none
   private
   public :: link_balance_t, link_balance, balance_add_force, balance_add_couple, balance_add_balance
@@ -53,10 +53,10 @@ contains
     real(wp) :: m, arm(2), f_mag, arm_mag
     arm = at - origin
     m = cross(arm, f)
-    f_mag = magnitude(f)
+    f_mag = fast_magnitude(f)
     ! a force at the origin has no lever arm: hypot(0, 0) = 0 without the call
     arm_mag = 0.0_wp
-    if (arm(1) /= 0.0_wp .or. arm(2) /= 0.0_wp) arm_mag = magnitude(arm)
+    if (arm(1) /= 0.0_wp .or. arm(2) /= 0.0_wp) arm_mag = fast_magnitude(arm)
     balance%sum_f = balance%sum_f + f
     balance%scale_f = balance%scale_f + f_mag
     balance%sum_m = balance%sum_m + m
@@ -127,7 +127,7 @@ contains
     floor_f = residual_floor_rel * maxval(links%scale_f)
     floor_m = residual_floor_rel * load_moment_scale(links)
     do i = 1, size(links)
-      residual = max(residual, ratio(magnitude(links(i)%sum_f), max(links(i)%scale_f, floor_f)), &
+      residual = max(residual, ratio(fast_magnitude(links(i)%sum_f), max(links(i)%scale_f, floor_f)), &
                      ratio(abs(links(i)%sum_m), max(links(i)%scale_m, floor_m)))
     end do
   end function equilibrium_residual
