@@ -200,8 +200,16 @@ module kinetostat_linkage
     !> cos and sin of each link's turn (2 x 0:n, column 0 the frame's) in the poses of the
     !> routine that set them last.
     real(wp), allocatable :: cs(:, :)
-    !> jac holds J(q_jac); lu and v hold its factors and analogues.
+    !> jac holds J(q_jac); lu (or the units' factors) and v hold its factors and analogues.
     logical :: has_jac = .false., factored = .false.
+    !> J is solved unit by unit (the units of the structural analysis partition its rows and
+    !> columns: J is block triangular in their order); otherwise as one dense system.
+    logical :: blocked = .false.
+    !> Each unit's order (3 x its links), columns of J and trsm_table (largest order x units).
+    integer, allocatable :: unit_order(:), unit_cols(:, :), unit_trsm(:, :, :)
+    !> Each unit's diagonal block of J, its LU factors and row interchanges.
+    real(wp), allocatable :: unit_block(:, :), unit_lu(:, :, :)
+    integer, allocatable :: unit_ipiv(:, :)
   end type linkage_work_t
 
 contains
@@ -233,7 +241,166 @@ contains
     work%trsm = trsm_table(nr)
     work%has_jac = .false.
     work%factored = .false.
+    call units_ready(mech, work)
   end subroutine work_ready
+
+  !> The unit-by-unit solve of J (work%blocked) when the units partition J's rows and each
+  !> unit's rows are as many as its links' coordinates (every validated deck; a linkage
+  !> built without its structure is solved densely).
+  pure subroutine units_ready(mech, work)
+    type(linkage_t), intent(in) :: mech
+    type(linkage_work_t), intent(inout) :: work
+    integer, allocatable :: owner(:)
+    integer :: u, nu, mx, nr, i, k
+    work%blocked = .false.
+    if (allocated(work%unit_order)) deallocate (work%unit_order, work%unit_cols, work%unit_trsm, work%unit_block, &
+                                                work%unit_lu, work%unit_ipiv)
+    if (.not. allocated(mech%units)) return
+    nu = size(mech%units)
+    if (nu == 0) return
+    nr = linkage_rows(mech)
+    allocate (owner(nr), source=0)
+    mx = 0
+    do u = 1, nu
+      associate (unit => mech%units(u))
+        if (.not. allocated(unit%rows) .or. .not. allocated(unit%links)) return
+        if (size(unit%rows) /= 3 * size(unit%links)) return
+        do i = 1, size(unit%rows)
+          if (unit%rows(i) < 1 .or. unit%rows(i) > nr) return
+          if (owner(unit%rows(i)) /= 0) return
+          owner(unit%rows(i)) = u
+        end do
+        mx = max(mx, size(unit%rows))
+      end associate
+    end do
+    if (any(owner == 0)) return
+    allocate (work%unit_order(nu), work%unit_cols(mx, nu), work%unit_trsm(mx, mx, nu), source=0)
+    allocate (work%unit_block(mx, mx), work%unit_lu(mx, mx, nu), source=0.0_wp)
+    allocate (work%unit_ipiv(mx, nu), source=0)
+    do u = 1, nu
+      k = size(mech%units(u)%rows)
+      work%unit_order(u) = k
+      work%unit_cols(1:k, u) = unit_columns(mech%units(u))
+      work%unit_trsm(1:k, 1:k, u) = trsm_table(k)
+    end do
+    work%blocked = .true.
+  end subroutine units_ready
+
+  !> Factors J (work%jac): each unit's diagonal block, or the whole J densely. An error: a
+  !> block (J) is singular or ill-conditioned (factor_dense's verdict).
+  pure subroutine factor_j(mech, work, error)
+    type(linkage_t), intent(in) :: mech
+    type(linkage_work_t), intent(inout) :: work
+    type(error_t), allocatable, intent(out) :: error
+    integer :: u, k, i, j
+    if (.not. work%blocked) then
+      call factor_dense(work%jac, work%lu, work%ipiv, error, work%trsm)
+      return
+    end if
+    do u = 1, size(mech%units)
+      k = work%unit_order(u)
+      associate (rows => mech%units(u)%rows, cols => work%unit_cols(:, u))
+        do j = 1, k
+          do i = 1, k
+            work%unit_block(i, j) = work%jac(rows(i), cols(j))
+          end do
+        end do
+      end associate
+      call factor_dense(work%unit_block(1:k, 1:k), work%unit_lu(1:k, 1:k, u), work%unit_ipiv(1:k, u), error, &
+                        work%unit_trsm(1:k, 1:k, u))
+      if (allocated(error)) return
+    end do
+  end subroutine factor_j
+
+  !> x = J^-1 x with factor_j's factors (x: constraint rows in, pose coordinates out): the
+  !> units in their order, each with the coordinates of the units before it known.
+  pure subroutine solve_j(mech, work, x)
+    type(linkage_t), intent(in) :: mech
+    type(linkage_work_t), intent(in) :: work
+    real(wp), intent(inout) :: x(:)
+    real(wp) :: s, rhs(size(x)), unit_x(size(work%unit_block, 1))
+    integer :: u, k, i, c, r
+    if (.not. work%blocked) then
+      call solve_factored(work%lu, work%ipiv, x)
+      return
+    end if
+    rhs(:) = x
+    x(:) = 0.0_wp
+    do u = 1, size(mech%units)
+      k = work%unit_order(u)
+      do i = 1, k
+        r = mech%units(u)%rows(i)
+        s = rhs(r)
+        do c = 1, size(x)
+          s = s - work%jac(r, c) * x(c)
+        end do
+        unit_x(i) = s
+      end do
+      call solve_factored(work%unit_lu(1:k, 1:k, u), work%unit_ipiv(1:k, u), unit_x(1:k))
+      do i = 1, k
+        x(work%unit_cols(i, u)) = unit_x(i)
+      end do
+    end do
+  end subroutine solve_j
+
+  !> x = J^-T x with factor_j's factors (x: generalised loads in, multipliers of the rows
+  !> out): the units from the last, each with the multipliers of the units after it known.
+  pure subroutine solve_jt(mech, work, x)
+    type(linkage_t), intent(in) :: mech
+    type(linkage_work_t), intent(in) :: work
+    real(wp), intent(inout) :: x(:)
+    real(wp) :: s, rhs(size(x)), unit_x(size(work%unit_block, 1))
+    integer :: u, k, i, c, r
+    rhs(:) = x
+    x(:) = 0.0_wp
+    do u = size(mech%units), 1, -1
+      k = work%unit_order(u)
+      do i = 1, k
+        c = work%unit_cols(i, u)
+        s = rhs(c)
+        do r = 1, size(x)
+          s = s - work%jac(r, c) * x(r)
+        end do
+        unit_x(i) = s
+      end do
+      call lu_solve_transposed(work%unit_lu(1:k, 1:k, u), work%unit_ipiv(1:k, u), unit_x(1:k))
+      do i = 1, k
+        x(mech%units(u)%rows(i)) = unit_x(i)
+      end do
+    end do
+  end subroutine solve_jt
+
+  !> x = A^-T x from A's factors P L U (kinetostat_lapack's factor_dense): U^T and L^T by
+  !> substitution, then the row interchanges in reverse (dgetrs with trans = 'T').
+  pure subroutine lu_solve_transposed(lu, ipiv, x)
+    real(wp), intent(in) :: lu(:, :)
+    integer, intent(in) :: ipiv(:)
+    real(wp), intent(inout) :: x(:)
+    real(wp) :: s, temp
+    integer :: n, i, k
+    n = size(lu, 1)
+    do k = 1, n
+      s = x(k)
+      do i = 1, k - 1
+        s = s - lu(i, k) * x(i)
+      end do
+      x(k) = s / lu(k, k)
+    end do
+    do k = n, 1, -1
+      s = x(k)
+      do i = k + 1, n
+        s = s - lu(i, k) * x(i)
+      end do
+      x(k) = s
+    end do
+    do k = n, 1, -1
+      if (ipiv(k) /= k) then
+        temp = x(k)
+        x(k) = x(ipiv(k))
+        x(ipiv(k)) = temp
+      end if
+    end do
+  end subroutine lu_solve_transposed
 
   !> J at poses q in `work` (evaluated unless it holds them), factored, with the velocity
   !> analogues (column d: dq/d(drive d), the other drives held). An error: J is singular.
@@ -260,12 +427,12 @@ contains
       work%factored = .false.
     end if
     if (work%factored) return
-    call factor_dense(work%jac, work%lu, work%ipiv, error, work%trsm)
+    call factor_j(mech, work, error)
     if (allocated(error)) return
     do d = 1, size(mech%drives)
       work%v(:, d) = 0.0_wp
       work%v(drive_row(mech, d), d) = 1.0_wp
-      call solve_factored(work%lu, work%ipiv, work%v(:, d))
+      call solve_j(mech, work, work%v(:, d))
     end do
     work%factored = .true.
   end subroutine work_factored
@@ -630,13 +797,13 @@ contains
         work%factored = .false.
         converged = maxval(abs(work%phi)) <= newton_tol * mech%size
         if (converged) exit
-        call factor_dense(work%jac, work%lu, work%ipiv, error, work%trsm)
+        call factor_j(mech, work, error)
         if (allocated(error)) then
           call fatal_error(error, exit_geometry, fail_text("the Jacobian is singular (a dead position)"))
           return
         end if
         work%dx(:) = -work%phi
-        call solve_factored(work%lu, work%ipiv, work%dx)
+        call solve_j(mech, work, work%dx)
         q = q + work%dx
       end do
       if (.not. converged) then
@@ -753,13 +920,13 @@ contains
     do d = 1, size(mech%drives)
       qd(drive_row(mech, d)) = dv(d)
     end do
-    call solve_factored(work%lu, work%ipiv, qd)
+    call solve_j(mech, work, qd)
     call quadratic_terms(mech, q, qd, work%zero_q, qdd, work%cs)
     qdd = -qdd
     do d = 1, size(mech%drives)
       qdd(drive_row(mech, d)) = qdd(drive_row(mech, d)) + da(d)
     end do
-    call solve_factored(work%lu, work%ipiv, qdd)
+    call solve_j(mech, work, qdd)
   end subroutine linkage_motion
 
   !> Reactions of an assembled, moving step: applied forces `fval` (N, along each force's
@@ -783,11 +950,16 @@ contains
     call work_factored(mech, step%q, work, error)
     if (allocated(error)) return
     call generalised_loads(mech, step%q, step%qd, step%qdd, fval, mval, work%gen, work%cs)
-    work%jt(:, :) = transpose(work%jac)
-    call factor_dense(work%jt, work%lut, work%ipivt, error, work%trsm)
-    if (allocated(error)) return
     work%lam(:) = -work%gen
-    call solve_factored(work%lut, work%ipivt, work%lam)
+    if (work%blocked) then
+      ! J^T is block triangular too: its units' blocks are J's, transposed
+      call solve_jt(mech, work, work%lam)
+    else
+      work%jt(:, :) = transpose(work%jac)
+      call factor_dense(work%jt, work%lut, work%ipivt, error, work%trsm)
+      if (allocated(error)) return
+      call solve_factored(work%lut, work%ipivt, work%lam)
+    end if
 
     ! physical forces (work%cs: the turns of step%q, from generalised_loads)
     allocate (step%f(2, size(mech%pairs)), step%normal(size(mech%pairs)), step%couple(size(mech%pairs)))
