@@ -9,9 +9,11 @@ digits of some outputs. This script says whether every change between OLD and NE
 directories of files NAME.csv, NAME.json, NAME.table, NAME.ru.table, NAME.svg) is such a
 roundoff change:
 
-- CSV: the same header and rows; every value within R (default 1e-12) times the largest
-  magnitude of the same unit in that row (old and new; units from NAME.json's columns) of
-  the old value. An absolute tolerance in the unit itself cannot work for a row whose forces
+- CSV: the same header and rows; every value within R (default 1e-12) times its scale of
+  the old value: the largest magnitude of the same unit in that row (old and new; units
+  from NAME.json's columns), or the column's largest magnitude over the run when that is
+  larger (a quantity crossing zero, alone of its unit in the row, such as dJ_red: its
+  roundoff is relative to its size over the cycle, not to its value at the crossing). An absolute tolerance in the unit itself cannot work for a row whose forces
   reach 2.2e4 N: the 13 significant digits written are 1e-9 N apart there, and the roundoff
   of one multiplication is ~4e-12 N.
 - every other changed line: the same text around its numbers; a changed number is
@@ -107,6 +109,7 @@ def check_csv(name, old, new, units, rtol, problems):
         problems.append(f"{name}: header or row count differ")
         return 0.0
     worst = 0.0
+    col_top = column_maxima(h_old, r_old)
     for k, (ro, rn) in enumerate(zip(r_old, r_new)):
         scale = row_scales(h_old, ro, units, rn)
         for col, (a, b) in enumerate(zip(ro, rn)):
@@ -116,7 +119,7 @@ def check_csv(name, old, new, units, rtol, problems):
             if x is None or y is None:
                 problems.append(f"{name}: row {k + 1} {h_old[col]}: '{a}' -> '{b}' (not numbers)")
                 continue
-            s = scale.get(units.get(h_old[col], "?") if units else "?", 0.0)
+            s = max(scale.get(units.get(h_old[col], "?") if units else "?", 0.0), col_top.get(h_old[col], 0.0))
             rel = abs(x - y) / s if s > 0 else math.inf
             worst = max(worst, rel)
             if rel > rtol:
@@ -151,6 +154,7 @@ def run_scale(files, stem, line):
     if raw is None or units is None:
         return 0.0
     header, rows = parse_csv(raw)
+    line = english_units(line)
     words = set(re.findall(r"[A-Za-z*/^0-9]+", line))
     wanted = {u for u in set(units.values()) if u and u in words}
     span = 1.0
@@ -191,6 +195,42 @@ def json_row_units(files, stem):
     return [c.get("unit", "") for c in doc.get("columns", [])]
 
 
+def json_row_names(files, stem):
+    raw = files.get(stem + ".json")
+    if raw is None:
+        return None
+    doc = json.loads(raw.decode())
+    return [c.get("name", "") for c in doc.get("columns", [])]
+
+
+def column_maxima(header, rows):
+    """Largest |value| of each column over the run."""
+    top = {}
+    for row in rows:
+        for name, cell in zip(header, row):
+            v = to_float(cell)
+            if v is not None and math.isfinite(v):
+                top[name] = max(top.get(name, 0.0), abs(v))
+    return top
+
+
+def old_column_maxima(files, stem):
+    raw = files.get(stem + ".csv")
+    if raw is None:
+        return {}
+    return column_maxima(*parse_csv(raw))
+
+
+# Russian unit words of the legacy tables, as whole words, to the CSV's units.
+RUSSIAN_UNITS = [("Н*м", "N*m"), ("Дж", "J"), ("град", "deg"), ("Н", "N")]
+
+
+def english_units(line):
+    for ru, en in RUSSIAN_UNITS:
+        line = re.sub(r"(?<![А-Яа-яЁё])" + re.escape(ru) + r"(?![А-Яа-яЁё])", en, line)
+    return line
+
+
 def check_text(name, stem, old, new, old_files, rtol, problems):
     lo = old.decode(errors="replace").split("\n")
     ln = new.decode(errors="replace").split("\n")
@@ -199,6 +239,8 @@ def check_text(name, stem, old, new, old_files, rtol, problems):
         return 0
     cells = None
     col_units = json_row_units(old_files, stem) if name.endswith(".json") else None
+    col_names = json_row_names(old_files, stem) if name.endswith(".json") else None
+    col_top = old_column_maxima(old_files, stem) if col_names else {}
     changed = 0
     for i, (a, b) in enumerate(zip(lo, ln)):
         if a == b:
@@ -223,7 +265,8 @@ def check_text(name, stem, old, new, old_files, rtol, problems):
             if selfcheck and max(abs(vx), abs(vy)) <= SELFCHECK_LIMIT:
                 continue
             if significant_digits(x) >= 13 or significant_digits(y) >= 13:
-                s = row_scale.get(col_units[k], 0.0) if is_row else max(abs(vx), abs(vy))
+                s = max(row_scale.get(col_units[k], 0.0), col_top.get(col_names[k], 0.0)) if is_row \
+                    else max(abs(vx), abs(vy))
                 if s > 0 and abs(vx - vy) <= rtol * s:
                     continue
                 problems.append(f"{name}:{i + 1}: {x} -> {y}: {abs(vx - vy) / s if s else math.inf:.2e} relative")
