@@ -13,7 +13,7 @@ module kinetostat_cam_layout
   use kinetostat_step_table, only: step_table_t, column_t, column, col_input_angle, col_component, step_span, &
     col_length, col_flag, col_ratio, col_other
   use kinetostat_table_layout, only: table_field_t, field, force_and_angle, layout_columns, put_layout_heading, &
-    fields_text
+    put_fields
   use kinetostat_labels, only: lang_ru
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_mechanism, only: mechanism_t
@@ -286,23 +286,33 @@ contains
     fields = [fields, field("KF", 10, 4), field("KF2", 7, 0)]
   end function results_layout
 
-  !> Flag text of one row: lost contact, jammed, or K_F over its limit.
-  pure function flags_text(kf2, jam, lost, lang) result(t)
+  !> The flag text of one row after two blanks, and the line's end: lost contact, jammed,
+  !> or K_F over its limit. Appended piece by piece, not as a function's text of deferred
+  !> length, whose length gfortran would keep in a static variable shared by the threads
+  !> formatting blocks at once.
+  pure subroutine put_flags(out, kf2, jam, lost, lang)
+    type(text_buffer_t), intent(inout) :: out
     !> The row's flags KF2, JAM, LOST.
     real(wp), intent(in) :: kf2, jam, lost
     integer, intent(in) :: lang
-    character(len=:), allocatable :: t
-    t = ""
+    call out%append("  ")
     if (lost /= 0.0_wp) then
-      t = "LOST CONTACT (F2 <= 0)"
-      if (lang == lang_ru) t = "ПОТЕРЯ КОНТАКТА (F2 <= 0)"
+      if (lang == lang_ru) then
+        call out%append("ПОТЕРЯ КОНТАКТА (F2 <= 0)")
+      else
+        call out%append("LOST CONTACT (F2 <= 0)")
+      end if
     else if (jam /= 0.0_wp) then
-      t = "JAMMED (SELF-LOCKING)"
-      if (lang == lang_ru) t = "ЗАКЛИНИВАНИЕ (САМОТОРМОЖЕНИЕ)"
+      if (lang == lang_ru) then
+        call out%append("ЗАКЛИНИВАНИЕ (САМОТОРМОЖЕНИЕ)")
+      else
+        call out%append("JAMMED (SELF-LOCKING)")
+      end if
     else if (kf2 /= 0.0_wp) then
-      t = "KF>2"
+      call out%append("KF>2")
     end if
-  end function flags_text
+    call out%end_line()
+  end subroutine put_flags
 
   !> RESULTS: one line per cam angle; a jammed or lost-contact step shows its flag instead
   !> of the forces.
@@ -328,10 +338,11 @@ contains
       associate (v => table%rows(:, k))
         ! a jammed or lost-contact step: its flag instead of the forces
         if (v(jam) == 0.0_wp .and. v(lost) == 0.0_wp) then
-          call out%put(fields_text(v, fields, cols, 1, size(fields) - 1)//"  "//flags_text(v(kf2), v(jam), v(lost), lang))
+          call put_fields(out, v, fields, cols, 1, size(fields) - 1)
         else
-          call out%put(fields_text(v, fields, cols, 1, 5)//"  "//flags_text(v(kf2), v(jam), v(lost), lang))
+          call put_fields(out, v, fields, cols, 1, 5)
         end if
+        call put_flags(out, v(kf2), v(jam), v(lost), lang)
       end associate
     end do
   end subroutine write_results

@@ -13,7 +13,7 @@ module kinetostat_table_layout
   implicit none
   private
   public :: table_field_t, field, blank_field, layout_columns, put_layout_heading, put_layout_step, put_layout_rows, heading_of, &
-    heading_unit_of, force_and_angle, fields_text, &
+    heading_unit_of, force_and_angle, put_fields, &
     column_value, named_column
 
   !> One field of a step's lines in the legacy table.
@@ -252,46 +252,43 @@ contains
       end do
       do i = 1, last
         if (fields(i)%line /= l) cycle
-        if (cols(i) == 0 .or. fields(i)%exponent .or. fields(i)%whole) then
-          call out%append(field_text(v, fields(i), cols(i)))
-        else
-          call put_fixed(out, v(cols(i)), fields(i)%width, fields(i)%decimals)
-        end if
+        call put_field(out, v, fields(i), cols(i))
       end do
       call out%end_line()
     end do
   end subroutine put_layout_step
 
-  !> The text of fields `from` .. `to` of a step's row, one after the other (for a layout
-  !> whose line goes on with text of its own).
-  pure function fields_text(v, fields, cols, from, to) result(text)
+  !> Fields `from` .. `to` of a step's row, one after the other (for a layout whose line
+  !> goes on with text of its own; the line is not ended).
+  pure subroutine put_fields(out, v, fields, cols, from, to)
+    type(text_buffer_t), intent(inout) :: out
     real(wp), intent(in) :: v(:)
     type(table_field_t), intent(in) :: fields(:)
     integer, intent(in) :: cols(:)
     integer, intent(in) :: from, to
-    character(len=:), allocatable :: text
     integer :: i
-    text = ""
     do i = from, to
-      text = text//field_text(v, fields(i), cols(i))
+      call put_field(out, v, fields(i), cols(i))
     end do
-  end function fields_text
+  end subroutine put_fields
 
-  !> One field's text (blank for a blank field).
-  pure function field_text(v, f, col) result(text)
+  !> One field's text (blank for a blank field). Each form is appended as a result of known
+  !> length: gfortran keeps the length of a deferred-length result passed as an argument in a
+  !> static variable, which the threads formatting blocks at once would share.
+  pure subroutine put_field(out, v, f, col)
+    type(text_buffer_t), intent(inout) :: out
     real(wp), intent(in) :: v(:)
     type(table_field_t), intent(in) :: f
     integer, intent(in) :: col
-    character(len=:), allocatable :: text
     if (col == 0) then
-      text = repeat(" ", f%width)
+      call out%append(repeat(" ", f%width))
     else if (f%exponent) then
-      text = exp_field(v(col), f%width, f%decimals)
+      call out%append(exp_field(v(col), f%width, f%decimals))
     else if (f%whole) then
-      text = int_field(v(col), f%width)
+      call out%append(int_field(v(col), f%width))
     else
-      text = fixed_field(v(col), f%width, f%decimals)
+      call put_fixed(out, v(col), f%width, f%decimals)
     end if
-  end function field_text
+  end subroutine put_field
 
 end module kinetostat_table_layout
