@@ -121,13 +121,15 @@ contains
         ! the gears' value lines print a force's angle beside it as "ANGLE =", and a force
         ! only in the stages that have it (F23, F2H: planetary), not under headings
         if ((c%kind == col_force_angle .or. c%kind == col_force) .and. index(printed_en, " ANGLE =") > 0) cycle
-        if (.not. (has_word(printed_en, cut(c%heading)) .or. has_word(printed_en, c%heading))) &
+        if (.not. (has_word(printed_en, cut(c%heading)) .or. has_word(printed_en, c%heading))) then
           problems = problems//new_line("a")//"  column "//c%name// &
-          ": expected the heading '"//cut(c%heading)//"' in the English RESULTS, found:"//new_line("a")//printed_en
+                     ": expected the heading '"//cut(c%heading)//"' in the English RESULTS, found:"//new_line("a")//printed_en
+        end if
         ! a value line ("INTERFERENCE1   =") shows the whole heading, a 12-wide field its cut
-        if (.not. (has_word(printed_ru, cut(c%heading_ru)) .or. has_word(printed_ru, c%heading_ru))) &
+        if (.not. (has_word(printed_ru, cut(c%heading_ru)) .or. has_word(printed_ru, c%heading_ru))) then
           problems = problems//new_line("a")//"  column "//c%name// &
-          ": expected the heading '"//cut(c%heading_ru)//"' in the Russian RESULTS, found:"//new_line("a")//printed_ru
+                     ": expected the heading '"//cut(c%heading_ru)//"' in the Russian RESULTS, found:"//new_line("a")//printed_ru
+        end if
       end associate
     end do
   end function column_problems
