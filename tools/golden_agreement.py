@@ -187,20 +187,13 @@ def significant_digits(token):
     return len(mant)
 
 
-def json_row_units(files, stem):
+def json_row_columns(files, stem):
+    """[(name, unit)] of the JSON rows' columns, or None without a JSON golden."""
     raw = files.get(stem + ".json")
     if raw is None:
         return None
     doc = json.loads(raw.decode())
-    return [c.get("unit", "") for c in doc.get("columns", [])]
-
-
-def json_row_names(files, stem):
-    raw = files.get(stem + ".json")
-    if raw is None:
-        return None
-    doc = json.loads(raw.decode())
-    return [c.get("name", "") for c in doc.get("columns", [])]
+    return [(c.get("name", ""), c.get("unit", "")) for c in doc.get("columns", [])]
 
 
 def column_maxima(header, rows):
@@ -238,8 +231,9 @@ def check_text(name, stem, old, new, old_files, rtol, problems):
         problems.append(f"{name}: {len(lo)} lines -> {len(ln)} lines")
         return 0
     cells = None
-    col_units = json_row_units(old_files, stem) if name.endswith(".json") else None
-    col_names = json_row_names(old_files, stem) if name.endswith(".json") else None
+    columns = json_row_columns(old_files, stem) if name.endswith(".json") else None
+    col_names = [n for n, _ in columns] if columns is not None else None
+    col_units = [u for _, u in columns] if columns is not None else None
     col_top = old_column_maxima(old_files, stem) if col_names else {}
     changed = 0
     for i, (a, b) in enumerate(zip(lo, ln)):

@@ -22,7 +22,7 @@ module kinetostat_lapack
   use kinetostat_error, only: error_t, fatal_error, exit_geometry
   implicit none
   private
-  public :: solve_dense, factor_dense, solve_factored, trsm_table
+  public :: solve_dense, factor_dense, solve_factored, trsm_table, lu_solve_transposed
   public :: rcond_threshold, singular_by_estimate, solve_by_dgesv, solve_by_port, inverse_norm_bound
 
   !> Margin of the cheap test: dgecon is skipped only when the bound puts rcond at least this
@@ -327,6 +327,38 @@ contains
       end if
     end do
   end subroutine lu_solve
+
+  !> x = A^-T x from A's factors P L U (factor_dense): U^T and L^T by
+  !> substitution, then the row interchanges in reverse (dgetrs with trans = 'T').
+  pure subroutine lu_solve_transposed(lu, ipiv, x)
+    real(wp), intent(in) :: lu(:, :)
+    integer, intent(in) :: ipiv(:)
+    real(wp), intent(inout) :: x(:)
+    real(wp) :: s, temp
+    integer :: n, i, k
+    n = size(lu, 1)
+    do k = 1, n
+      s = x(k)
+      do i = 1, k - 1
+        s = s - lu(i, k) * x(i)
+      end do
+      x(k) = s / lu(k, k)
+    end do
+    do k = n, 1, -1
+      s = x(k)
+      do i = k + 1, n
+        s = s - lu(i, k) * x(i)
+      end do
+      x(k) = s
+    end do
+    do k = n, 1, -1
+      if (ipiv(k) /= k) then
+        temp = x(k)
+        x(k) = x(ipiv(k))
+        x(ipiv(k)) = temp
+      end if
+    end do
+  end subroutine lu_solve_transposed
 
   !> LAPACK's dgesv itself (the reference of the tests): factors `lu`, pivots `ipiv`, solution
   !> `x` (set only when `info` = 0) and `info`.

@@ -17,7 +17,7 @@ module kinetostat_linkage
   use kinetostat_kinds, only: wp, pi
   use kinetostat_error, only: error_t, fatal_error, exit_geometry
   use kinetostat_text, only: int_str
-  use kinetostat_lapack, only: solve_dense, factor_dense, solve_factored, trsm_table
+  use kinetostat_lapack, only: solve_dense, factor_dense, solve_factored, trsm_table, lu_solve_transposed
   use kinetostat_vec2, only: rotate, perp, cross, magnitude
   use kinetostat_selfcheck, only: link_balance_t, balance_add_force, balance_add_couple, equilibrium_residual, &
     power_mismatch
@@ -369,38 +369,6 @@ contains
       end do
     end do
   end subroutine solve_jt
-
-  !> x = A^-T x from A's factors P L U (kinetostat_lapack's factor_dense): U^T and L^T by
-  !> substitution, then the row interchanges in reverse (dgetrs with trans = 'T').
-  pure subroutine lu_solve_transposed(lu, ipiv, x)
-    real(wp), intent(in) :: lu(:, :)
-    integer, intent(in) :: ipiv(:)
-    real(wp), intent(inout) :: x(:)
-    real(wp) :: s, temp
-    integer :: n, i, k
-    n = size(lu, 1)
-    do k = 1, n
-      s = x(k)
-      do i = 1, k - 1
-        s = s - lu(i, k) * x(i)
-      end do
-      x(k) = s / lu(k, k)
-    end do
-    do k = n, 1, -1
-      s = x(k)
-      do i = k + 1, n
-        s = s - lu(i, k) * x(i)
-      end do
-      x(k) = s
-    end do
-    do k = n, 1, -1
-      if (ipiv(k) /= k) then
-        temp = x(k)
-        x(k) = x(ipiv(k))
-        x(ipiv(k)) = temp
-      end if
-    end do
-  end subroutine lu_solve_transposed
 
   !> J at poses q in `work` (evaluated unless it holds them), factored, with the velocity
   !> analogues (column d: dq/d(drive d), the other drives held). An error: J is singular.
