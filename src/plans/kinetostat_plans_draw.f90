@@ -116,8 +116,14 @@ contains
       call panel(sheet, geo%mechanism, word("Mechanism with its forces", lang)//", "//word("position", lang)//" "// &
         int_str(table%run_row(k)))
       ! (its labels clear of the two lines under it)
-      call draw_mechanism(sheet, drawing, geo%view, panel_inner(geo%mechanism) - [0.0_wp, 0.0_wp, 0.0_wp, 4.5_wp], &
-        1.0_wp / geo%mu_mechanism_force, short)
+      ! (A4: its panel under 120 mm wide, its labels at 1.8 mm, the least legible size)
+      if (geo%mechanism(3) - geo%mechanism(1) < 120.0_wp) then
+        call draw_mechanism(sheet, drawing, geo%view, panel_inner(geo%mechanism) - [0.0_wp, 0.0_wp, 0.0_wp, 4.5_wp], &
+          1.0_wp / geo%mu_mechanism_force, short, label_size=1.8_wp)
+      else
+        call draw_mechanism(sheet, drawing, geo%view, panel_inner(geo%mechanism) - [0.0_wp, 0.0_wp, 0.0_wp, 4.5_wp], &
+          1.0_wp / geo%mu_mechanism_force, short)
+      end if
       line = "μl = "//scale_number(geo%mu_l)//" "//unit_word("m", lang)//"/"//unit_word("mm", lang)//" ("// &
         geo%view%drawing_scale%text//");  μF = "//scale_number(geo%mu_mechanism_force)//" "//unit_word("N", lang)// &
         "/"//unit_word("mm", lang)
