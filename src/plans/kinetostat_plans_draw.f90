@@ -734,8 +734,16 @@ contains
           cell(3) - cell(1) - 2.0_wp, 0.6_wp))
         caption = "μF = "//scale_number(mu)//" "//unit_word("N", lang)//"/"//unit_word("mm", lang)
         if (len(short) > 0) caption = caption//"; "//word("not drawn, shorter than 1 mm", lang)//": "//short
-        call sheet%text(cell(1) + 1.0_wp, cell(4) - 1.0_wp, caption, "small", size=fitted_size(caption, 2.4_wp, &
-          cell(3) - cell(1) - 2.0_wp, 0.6_wp))
+        if (poly%input .and. geo%mu_link(e) > 0.0_wp .and. geo%results(2) == geo%lever(2) .and. &
+          fitted_size(caption, 2.4_wp, cell(3) - area(1) - 2.0_wp, 0.6_wp) >= 1.8_wp) then
+          ! (A4: under the polygon where it fits there at 1.8 mm or more, clear of the link's
+          ! arms, which may reach the cell's foot)
+          call sheet%text(area(1) + 1.0_wp, cell(4) - 1.0_wp, caption, "small", size=fitted_size(caption, 2.4_wp, &
+            cell(3) - area(1) - 2.0_wp, 0.6_wp))
+        else
+          call sheet%text(cell(1) + 1.0_wp, cell(4) - 1.0_wp, caption, "small", size=fitted_size(caption, 2.4_wp, &
+            cell(3) - cell(1) - 2.0_wp, 0.6_wp))
+        end if
         call sheet%end_group()
         call sheet%set_layer(layer_polygons)
       end associate
