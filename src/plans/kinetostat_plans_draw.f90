@@ -517,8 +517,9 @@ contains
       lp = 2.6_wp
       font = 1.8_wp
       ! (A4: closer still, down to 2.2 mm, so that the last row stays inside the panel)
-      if (y + lp * size(plans%loads) > geo%lever_table(4) - 1.5_wp) &
+      if (y + lp * size(plans%loads) > geo%lever_table(4) - 1.5_wp) then
         lp = max(2.2_wp, (geo%lever_table(4) - 1.5_wp - y) / real(size(plans%loads), wp))
+      end if
     end if
     n = 0
     do i = 1, size(plans%loads) + 1
