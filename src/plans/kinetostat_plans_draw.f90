@@ -481,7 +481,7 @@ contains
     end do
     call names(sheet, plans%balancing, balancing_colour)
     if (len(short) > 0) then
-      if (geo%groups_apart .and. geo%results(2) == geo%lever(2)) then
+      if (geo%groups_apart .and. geo%lever_table(2) > geo%lever(4)) then
         ! (A4: in the balancing effort's panel beside it, at its foot, clear of the lever's
         ! arrows)
         call sheet%set_layer(layer_text)
@@ -735,7 +735,7 @@ contains
           cell(3) - cell(1) - 2.0_wp, 0.6_wp))
         caption = "μF = "//scale_number(mu)//" "//unit_word("N", lang)//"/"//unit_word("mm", lang)
         if (len(short) > 0) caption = caption//"; "//word("not drawn, shorter than 1 mm", lang)//": "//short
-        if (poly%input .and. geo%mu_link(e) > 0.0_wp .and. geo%results(2) == geo%lever(2) .and. &
+        if (poly%input .and. geo%mu_link(e) > 0.0_wp .and. geo%lever_table(2) > geo%lever(4) .and. &
           fitted_size(caption, 2.4_wp, cell(3) - area(1) - 2.0_wp, 0.6_wp) >= 1.8_wp) then
           ! (A4: under the polygon where it fits there at 1.8 mm or more, clear of the link's
           ! arms, which may reach the cell's foot)
