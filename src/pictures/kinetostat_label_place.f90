@@ -176,8 +176,9 @@ contains
   !> the obstacle segment k (ox, oy: from point 2k-1 to point 2k) is a band `half_widths(k)`
   !> mm each side of its line (a stroke's half width). With `strict` no spot whose box comes
   !> nearer than `line_gap` to an obstacle is taken while one exists (rings around the point,
-  !> then farther out with a leader line that crosses no label), and a leader line never
-  !> crosses a label already placed. The box is taken.
+  !> then farther out with a leader line that crosses no label); failing that, a spot whose
+  !> leader line crosses no label, nearest the lines' least; failing that, any spot. The box
+  !> is taken.
   pure subroutine place_box(self, width, above, below, px, py, base, ox, oy, half_widths, bounds, strict, tx, ty, &
       leader, tail)
     class(label_boxes_t), intent(inout) :: self
@@ -208,7 +209,7 @@ contains
     !> The grid over `zone`: the segments filed in cell c (numbered from 1 along x, then y)
     !> are filed(first(c):first(c + 1) - 1); a segment's lowest cell (cell_x, cell_y, from 0).
     integer, allocatable :: first(:), filed(:), cell_x(:), cell_y(:), every(:)
-    logical :: found, hard
+    logical :: found, hard, free_leader
     hw = 0.5_wp * width
     hh = 0.5_wp * (above + below)
     ! the segments that may come within room_enough of a spot's box inside `zone` (which holds
@@ -228,8 +229,9 @@ contains
     bx = px
     by = py
     ! strict: first only spots off every line; if there is none, the best of any spot
-    do pass = 1, merge(2, 1, strict)
+    do pass = 1, merge(3, 1, strict)
       hard = strict .and. pass == 1
+      free_leader = strict .and. pass <= 2
       ! beside the arrow: beyond its tip, then along its shaft on either side
       if (present(tail)) then
         length = hypot(px - tail(1), py - tail(2))
@@ -310,8 +312,8 @@ contains
       else
         room = clearance(b, every)
       end if
-      if (hard) then
-        if (room < line_gap) return
+      if (hard .and. room < line_gap) return
+      if (free_leader) then
         if (needs_leader(qx, qy)) then
           ! the leader line from the point to the box's nearest point crosses no label
           e = [max(b(1), min(b(3), px)), max(b(2), min(b(4), py))]

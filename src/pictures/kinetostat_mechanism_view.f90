@@ -202,7 +202,8 @@ contains
   !> Draw the mechanism of `drawing` on `sheet` with `view`, its labels inside `region`
   !> (x0, y0, x1, y1, mm); forces at `force_scale` mm per N (0: no forces nor moments).
   !> `short` returns the names of the forces shorter than 1 mm at that scale (not drawn).
-  pure subroutine draw_mechanism(sheet, drawing, view, region, force_scale, short)
+  !> `label_size` (mm) sets every label's font size (a small drawing: A4's course sheet).
+  pure subroutine draw_mechanism(sheet, drawing, view, region, force_scale, short, label_size)
     type(sheet_t), intent(inout) :: sheet
     type(drawing_t), intent(in) :: drawing
     type(mechanism_view_t), intent(in) :: view
@@ -211,6 +212,8 @@ contains
     real(wp), intent(in) :: force_scale
     !> Names of the forces not drawn (too short), comma-separated ("" when none).
     character(len=:), allocatable, intent(out) :: short
+    !> Font size of the labels, mm (default: their classes' sizes).
+    real(wp), intent(in), optional :: label_size
     real(wp), allocatable :: px(:), py(:), hx(:), hy(:)
     real(wp) :: q(2), t(2), origin(2), axis_tip(2, 2), u2(2)
     character(len=:), allocatable :: text
@@ -327,7 +330,7 @@ contains
     call sheet%set_layer(layer_text)
     do i = 1, n
       if (drawing%points(i)%kind == point_plain) cycle
-      call sheet%place_label(trim(drawing%points(i)%name), "label", px(i), py(i), 0.75_wp * pi, region)
+      call sheet%place_label(trim(drawing%points(i)%name), "label", px(i), py(i), 0.75_wp * pi, region, size=label_size)
     end do
     do i = 1, size(drawing%bodies)
       associate (b => drawing%bodies(i))
@@ -339,12 +342,12 @@ contains
         else
           cycle
         end if
-        call sheet%place_label(trim(b%name), "label", q(1), q(2), 0.25_wp * pi, region, italic=.true.)
+        call sheet%place_label(trim(b%name), "label", q(1), q(2), 0.25_wp * pi, region, italic=.true., size=label_size)
       end associate
     end do
     do j = 1, 2
       call sheet%place_label(merge("x", "y", j == 1), "label", axis_tip(1, j), axis_tip(2, j), &
-        atan2(axis_tip(2, j) - origin(2), axis_tip(1, j) - origin(1)), region, tail=origin, italic=.true.)
+        atan2(axis_tip(2, j) - origin(2), axis_tip(1, j) - origin(1)), region, tail=origin, italic=.true., size=label_size)
     end do
     if (force_scale > 0.0_wp) then
       do i = 1, size(drawing%forces)
@@ -353,7 +356,7 @@ contains
           call force_ends(f%at, f%f, q, t)
           text = trim(f%name)//" = "//short_number(hypot(f%f(1), f%f(2)))//" "//unit_word("N", sheet%lang)
           call sheet%place_label(text, "num", t(1), t(2), atan2(t(2) - q(2), t(1) - q(1)), region, tail=q, &
-            colour=force_colours(f%kind))
+            colour=force_colours(f%kind), size=label_size)
         end associate
       end do
       do i = 1, size(drawing%moments)
@@ -362,7 +365,7 @@ contains
           q = view%point(m%at)
           text = trim(m%name)//" = "//short_number(abs(m%value))//" "//unit_word("N*m", sheet%lang)
           call sheet%place_label(text, "num", q(1) + 5.0_wp, q(2) + 5.0_wp, 0.25_wp * pi, region, &
-            colour=force_colours(m%kind))
+            colour=force_colours(m%kind), size=label_size)
         end associate
       end do
     end if

@@ -13,7 +13,7 @@ module kinetostat_plans_apart
   use kinetostat_format, only: short_number, full_number
   use kinetostat_labels, only: word => label, unit_word => unit_symbol
   use kinetostat_scales, only: scale_number
-  use kinetostat_sheet, only: sheet_t, entity_group, layer_polygons, layer_text
+  use kinetostat_sheet, only: sheet_t, entity_group, layer_polygons, layer_text, class_font_size
   use kinetostat_drawing, only: drawing_t, drawing_force_t, point_pivot, point_joint
   use kinetostat_mechanism_view, only: mechanism_view_t, draw_mechanism
   use kinetostat_plans_base, only: plans_t, component_reaction, component_tangential
@@ -261,7 +261,7 @@ contains
     integer, allocatable :: inner(:)
     character(len=:), allocatable :: short, line, arm
     character(len=80), allocatable :: rows(:)
-    real(wp) :: a(2), tail(2), tip(2), d(2), foot(2), h, sense, mu_l, area(4)
+    real(wp) :: a(2), tail(2), tip(2), d(2), foot(2), h, sense, mu_l, area(4), label_size
     real(wp), allocatable :: lx(:), ly(:), lang_angle(:)
     character(len=16), allocatable :: lname(:)
     integer :: j, q, first, k, n_eq, about, sought
@@ -376,7 +376,14 @@ contains
       call sheet%end_group()
     end do
     first = sheet%count + 1
-    call draw_mechanism(sheet, link, view, area, per_newton, short)
+    ! (A4: a group's room under 70 mm wide, its labels and arms' names at 1.8 mm, the least
+    ! legible size)
+    label_size = merge(1.8_wp, class_font_size("num"), area(3) - area(1) < 70.0_wp)
+    if (area(3) - area(1) < 70.0_wp) then
+      call draw_mechanism(sheet, link, view, area, per_newton, short, label_size=label_size)
+    else
+      call draw_mechanism(sheet, link, view, area, per_newton, short)
+    end if
     ! this drawing is not the mechanism's: its group and marks renamed (machine checks read
     ! the joints of the mechanism's drawing)
     do j = first, sheet%count
@@ -389,7 +396,8 @@ contains
     end do
     call sheet%set_layer(layer_text)
     do j = 1, size(lname)
-      call sheet%place_label(trim(lname(j)), "num", lx(j), ly(j), lang_angle(j), area, colour=arm_colour)
+      call sheet%place_label(trim(lname(j)), "num", lx(j), ly(j), lang_angle(j), area, colour=arm_colour, &
+        size=label_size)
     end do
     call sheet%text(box(1), box(2) - 1.5_wp, word("the group apart", lang)//", μl = "//scale_number(mu_l)//" "// &
       unit_word("m", lang)//"/"//unit_word("mm", lang), "small")

@@ -116,8 +116,14 @@ contains
       call panel(sheet, geo%mechanism, word("Mechanism with its forces", lang)//", "//word("position", lang)//" "// &
         int_str(table%run_row(k)))
       ! (its labels clear of the two lines under it)
-      call draw_mechanism(sheet, drawing, geo%view, panel_inner(geo%mechanism) - [0.0_wp, 0.0_wp, 0.0_wp, 4.5_wp], &
-        1.0_wp / geo%mu_mechanism_force, short)
+      ! (A4: its panel under 120 mm wide, its labels at 1.8 mm, the least legible size)
+      if (geo%mechanism(3) - geo%mechanism(1) < 120.0_wp) then
+        call draw_mechanism(sheet, drawing, geo%view, panel_inner(geo%mechanism) - [0.0_wp, 0.0_wp, 0.0_wp, 4.5_wp], &
+          1.0_wp / geo%mu_mechanism_force, short, label_size=1.8_wp)
+      else
+        call draw_mechanism(sheet, drawing, geo%view, panel_inner(geo%mechanism) - [0.0_wp, 0.0_wp, 0.0_wp, 4.5_wp], &
+          1.0_wp / geo%mu_mechanism_force, short)
+      end if
       line = "μl = "//scale_number(geo%mu_l)//" "//unit_word("m", lang)//"/"//unit_word("mm", lang)//" ("// &
         geo%view%drawing_scale%text//");  μF = "//scale_number(geo%mu_mechanism_force)//" "//unit_word("N", lang)// &
         "/"//unit_word("mm", lang)
@@ -475,7 +481,15 @@ contains
     end do
     call names(sheet, plans%balancing, balancing_colour)
     if (len(short) > 0) then
-      if (geo%groups_apart) then
+      if (geo%groups_apart .and. geo%lever_table(2) > geo%lever(4)) then
+        ! (A4: in the balancing effort's panel beside it, at its foot, clear of the lever's
+        ! arrows)
+        call sheet%set_layer(layer_text)
+        associate (r => panel_inner(geo%results))
+          call legible_lines(sheet, r(1) + 1.0_wp, r(4), r(3) - r(1) - 2.0_wp, word("Zhukovsky's lever", lang)//": "// &
+            word("not drawn, shorter than 1 mm", lang)//": "//short)
+        end associate
+      else if (geo%groups_apart) then
         call sheet%set_layer(layer_text)
         call legible_lines(sheet, area(1) + 1.0_wp, note_y, area(3) - area(1) - 2.0_wp, &
           word("not drawn, shorter than 1 mm", lang)//": "//short)
@@ -502,6 +516,10 @@ contains
     if (geo%groups_apart .and. y + pitch * size(plans%loads) > geo%lever_table(4) - 1.5_wp) then
       lp = 2.6_wp
       font = 1.8_wp
+      ! (A4: closer still, down to 2.2 mm, so that the last row stays inside the panel)
+      if (y + lp * size(plans%loads) > geo%lever_table(4) - 1.5_wp) then
+        lp = max(2.2_wp, (geo%lever_table(4) - 1.5_wp - y) / real(size(plans%loads), wp))
+      end if
     end if
     n = 0
     do i = 1, size(plans%loads) + 1
@@ -717,8 +735,16 @@ contains
           cell(3) - cell(1) - 2.0_wp, 0.6_wp))
         caption = "μF = "//scale_number(mu)//" "//unit_word("N", lang)//"/"//unit_word("mm", lang)
         if (len(short) > 0) caption = caption//"; "//word("not drawn, shorter than 1 mm", lang)//": "//short
-        call sheet%text(cell(1) + 1.0_wp, cell(4) - 1.0_wp, caption, "small", size=fitted_size(caption, 2.4_wp, &
-          cell(3) - cell(1) - 2.0_wp, 0.6_wp))
+        if (poly%input .and. geo%mu_link(e) > 0.0_wp .and. geo%lever_table(2) > geo%lever(4) .and. &
+          fitted_size(caption, 2.4_wp, cell(3) - area(1) - 2.0_wp, 0.6_wp) >= 1.8_wp) then
+          ! (A4: under the polygon where it fits there at 1.8 mm or more, clear of the link's
+          ! arms, which may reach the cell's foot)
+          call sheet%text(area(1) + 1.0_wp, cell(4) - 1.0_wp, caption, "small", size=fitted_size(caption, 2.4_wp, &
+            cell(3) - area(1) - 2.0_wp, 0.6_wp))
+        else
+          call sheet%text(cell(1) + 1.0_wp, cell(4) - 1.0_wp, caption, "small", size=fitted_size(caption, 2.4_wp, &
+            cell(3) - cell(1) - 2.0_wp, 0.6_wp))
+        end if
         call sheet%end_group()
         call sheet%set_layer(layer_polygons)
       end associate

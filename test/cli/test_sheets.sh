@@ -235,6 +235,20 @@ assert "= 274 kg·m²" in plain
 assert "⌀1123" in plain and ">225<" in t, "disc dimensions"
 PY
 
+# A4: the kinetostatics sheet of a crowded mechanism (the class-III group; the four-bar, whose
+# lever's note and input link's arms once met lines) has no label over a label or a line,
+# leader lines counted
+for deck in class3 assur_fourbar; do
+  dir="$cli_tmp/sheets_a4_$deck"
+  rm -rf "$dir"
+  run_ks sheets "data/$deck.nml" -o "$dir" --paper A4 --student X --group G --variant 1
+  if [ "$rc" -eq 0 ] && python3 "$sheets_check" labels --lines "$dir/kinetostatics.svg" >"$cli_tmp/check.out" 2>&1; then
+    pass
+  else
+    fail "sheets-a4-legible-$deck" "exit $rc: $(grep -v '^[0-9]* sheets' "$cli_tmp/check.out" | head -4)"
+  fi
+done
+
 # --paper, --designation (графа 2 and 26, turned 180 deg), --sheet-numbers, --at
 dir="$cli_tmp/sheets_opts"
 rm -rf "$dir"
