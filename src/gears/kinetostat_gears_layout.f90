@@ -10,7 +10,7 @@ module kinetostat_gears_layout
   use kinetostat_step_table, only: worst_row
   use kinetostat_step_table, only: step_table_t, column_t, column, col_count, col_length, col_ratio, col_moment, &
     col_component, col_force, col_force_angle
-  use kinetostat_table_layout, only: force_and_angle, heading_of, heading_unit_of, column_value
+  use kinetostat_table_layout, only: forces_and_angles, heading_of, heading_unit_of, column_value
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_table_writer, only: put_heading, value_line
   use kinetostat_format, only: fixed_field
@@ -180,7 +180,6 @@ contains
   !> names a value by its column's heading.
   pure function gears_columns() result(cols)
     type(column_t), allocatable :: cols(:)
-    integer :: j
     cols = [column("stage", "", col_count), column("kind", "", col_count), column("z1", "", col_count), &
             column("z2", "", col_count), column("z3", "", col_count), column("k", "", col_count), &
             column("dw1", "mm", col_length), column("dw2", "mm", col_length, heading="DW2"), &
@@ -189,9 +188,7 @@ contains
             column("Ft", "N", col_component, heading="FT"), column("Fr1", "N", col_component, heading="FR1"), &
             column("Fa1", "N", col_component, heading="FA1"), column("Fr2", "N", col_component, heading="FR2"), &
             column("Fa2", "N", col_component, heading="FA2"), column("Fn", "N", col_component, heading="FN")]
-    do j = 1, size(force_names)
-      cols = [cols, force_and_angle(trim(force_names(j)))]
-    end do
+    cols = [cols, forces_and_angles(force_names)]
     cols = [cols, column("M3", "N*m", col_moment), column("M3P", "N*m", col_moment)]
   end function gears_columns
 

@@ -13,7 +13,7 @@ module kinetostat_table_layout
   implicit none
   private
   public :: table_field_t, field, blank_field, layout_columns, put_layout_heading, put_layout_step, put_layout_rows, heading_of, &
-    heading_unit_of, force_and_angle, put_fields, &
+    heading_unit_of, force_and_angle, forces_and_angles, put_fields, &
     column_value, named_column
 
   !> One field of a step's lines in the legacy table.
@@ -72,6 +72,18 @@ contains
       cols(2) = column(name//"G", "deg", col_force_angle, heading=name//"G")
     end if
   end function force_and_angle
+
+  !> The magnitude and angle columns of every force in `names` (blanks trimmed), in order.
+  pure function forces_and_angles(names) result(cols)
+    !> Force names ("F21", ...).
+    character(*), intent(in) :: names(:)
+    type(column_t), allocatable :: cols(:)
+    integer :: i
+    allocate (cols(2 * size(names)))
+    do i = 1, size(names)
+      cols(2 * i - 1:2 * i) = force_and_angle(trim(names(i)))
+    end do
+  end function forces_and_angles
 
   !> A field printing column `name` on line `line` of a step, `width` wide with `decimals`.
   pure function field(name, width, decimals, line, exponent, cut, left, unit, whole, unit_width) result(f)

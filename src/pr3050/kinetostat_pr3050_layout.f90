@@ -11,7 +11,7 @@ module kinetostat_pr3050_layout
   use kinetostat_step_table, only: worst_row
   use kinetostat_step_table, only: step_table_t, column_t, column, col_input_angle, col_component, step_span, &
     col_moment, col_length, col_other
-  use kinetostat_table_layout, only: table_field_t, field, force_and_angle, put_layout_heading, &
+  use kinetostat_table_layout, only: table_field_t, field, forces_and_angles, put_layout_heading, &
     put_layout_rows
   use kinetostat_labels, only: lang_ru
   use kinetostat_text_buffer, only: text_buffer_t
@@ -262,11 +262,8 @@ contains
   !> JSON only, the prismatic pair 1-2 and the cylinder's motion.
   pure function pr3050_columns() result(cols)
     type(column_t), allocatable :: cols(:)
-    integer :: i
     cols = [column("phi3rel", "deg", col_input_angle, heading="F13G")]
-    do i = 1, size(force_names)
-      cols = [cols, force_and_angle(trim(force_names(i)))]
-    end do
+    cols = [cols, forces_and_angles(force_names)]
     cols = [cols, column("F2", "N", col_component, heading="F2"), &
             column("PHI2", "deg", col_other, heading="PHI2", csv=.false.), &
             column("S", "m", col_length, heading="S", csv=.false.), &

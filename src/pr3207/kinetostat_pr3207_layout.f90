@@ -10,7 +10,7 @@ module kinetostat_pr3207_layout
   use kinetostat_step_table, only: worst_row
   use kinetostat_step_table, only: step_table_t, column_t, column, col_input_angle, col_moment, step_span
   use kinetostat_labels, only: lang_ru
-  use kinetostat_table_layout, only: table_field_t, field, blank_field, force_and_angle, &
+  use kinetostat_table_layout, only: table_field_t, field, blank_field, forces_and_angles, &
     put_layout_heading, put_layout_rows
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_mechanism, only: mechanism_t
@@ -223,11 +223,8 @@ contains
   !> magnitude and angle, the driving moment.
   pure function pr3207_columns() result(cols)
     type(column_t), allocatable :: cols(:)
-    integer :: i
     cols = [column("phi1", "deg", col_input_angle, heading="PHI1")]
-    do i = 1, size(force_names)
-      cols = [cols, force_and_angle(trim(force_names(i)))]
-    end do
+    cols = [cols, forces_and_angles(force_names)]
     cols = [cols, column("M1", "N*m", col_moment, heading="M1")]
   end function pr3207_columns
 
