@@ -481,8 +481,8 @@ contains
     end do
     call names(sheet, plans%balancing, balancing_colour)
     if (len(short) > 0) then
-      if (geo%groups_apart .and. geo%lever_table(2) > geo%lever(4)) then
-        ! (A4: in the balancing effort's panel beside it, at its foot, clear of the lever's
+      if (geo%groups_apart .and. geo%lever_table(2) > geo%lever(4) .and. geo%paper%landscape) then
+        ! (A4 landscape: in the balancing effort's panel beside it, at its foot, clear of the lever's
         ! arrows)
         call sheet%set_layer(layer_text)
         associate (r => panel_inner(geo%results))

@@ -93,7 +93,8 @@ contains
     type(plans_t), intent(in) :: plans
     type(plans_sheet_t), intent(out) :: sheet
     real(wp), allocatable :: pts(:, :), tips(:, :)
-    real(wp) :: fmax, r, b(4), cell(4), quarter, fx, fy, top, bottom, row, fm
+    real(wp) :: fmax, r, b(4), cell(4), quarter, fx, fy, top, bottom, row, fm, area(4), side, arrow
+    type(mechanism_view_t) :: trial
     type(drawing_t) :: link
     integer :: i, e, n, columns, rows, pivot, table_rows
     character(len=16), allocatable :: names(:)
@@ -105,11 +106,44 @@ contains
     ! the mechanism and the two plans, the lever with its table and the polygons, the values
     ! table left of the title block
     sheet%paper = iso_paper("A2", .true.)
-    if (present(paper_name)) sheet%paper = iso_paper(paper_name, .true.)
+    ! (A4 portrait, ГОСТ 2.301: its title block stands along the short side only)
+    if (present(paper_name)) sheet%paper = iso_paper(paper_name, paper_name /= "A4")
     ! the course sheet (a paper named) draws the groups apart; --format plans does not
     sheet%groups_apart = present(paper_name)
     b = sheet%paper%inside()
-    if (sheet%groups_apart) then
+    if (sheet%groups_apart .and. .not. sheet%paper%landscape) then
+      ! A4 portrait (inside the frame x 20 .. 205, y 5 .. 292): across the top the mechanism
+      ! with its forces (three fifths of the width) and, right of it, Zhukovsky's lever over
+      ! the balancing effort; under them the polygons with the groups apart in two columns,
+      ! the lever's table of loads in the cell after the last polygon (its rows 2.6 mm apart,
+      ! closer where they would not fit). The mechanism at the largest ГОСТ 2.302 scale its
+      ! points fit at, its forces at the round mu_F whose arrows keep inside its panel at it.
+      top = b(2) + 21.0_wp
+      bottom = b(4) - 57.0_wp
+      row = 92.0_wp
+      sheet%mechanism = [b(1) + 2.0_wp, top, b(1) + 2.0_wp + 0.6_wp * (b(3) - b(1) - 4.0_wp), top + row]
+      sheet%lever = [sheet%mechanism(3) + 2.0_wp, top, b(3) - 2.0_wp, top + row - 32.0_wp]
+      sheet%results = [sheet%lever(1), sheet%lever(4) + 2.0_wp, b(3) - 2.0_wp, top + row]
+      sheet%polygons = [b(1) + 2.0_wp, top + row + 2.0_wp, b(3) - 2.0_wp, bottom]
+      area = panel_inner(sheet%mechanism) - [0.0_wp, 0.0_wp, 0.0_wp, 4.5_wp]
+      side = min(area(3) - area(1), area(4) - area(2))
+      call fit_mechanism_view(drawing, area, 0.08_wp * side, sheet%view)
+      fm = 0.0_wp
+      do i = 1, size(drawing%forces)
+        fm = max(fm, norm2(drawing%forces(i)%f))
+      end do
+      if (fm > 0.0_wp) then
+        ! the longest arrow 15 % of the panel's side, shorter until the drawing keeps its scale
+        arrow = 0.15_wp * side
+        do
+          sheet%mu_mechanism_force = round_scale(fm, arrow)
+          call fit_mechanism_view(drawing, area, 2.0_wp, trial, force_scale=1.0_wp / sheet%mu_mechanism_force)
+          if (trial%drawing_scale%ratio >= sheet%view%drawing_scale%ratio * (1.0_wp - 1.0e-9_wp) .or. arrow < 2.0_wp) exit
+          arrow = 0.8_wp * arrow
+        end do
+        sheet%view = trial
+      end if
+    else if (sheet%groups_apart) then
       ! the course sheet's panels: across the top the mechanism with its forces, Zhukovsky's
       ! lever and its table of loads; under them the force polygons with the groups apart,
       ! across the sheet down to the title block; the balancing effort left of the title
@@ -203,9 +237,20 @@ contains
     sheet%mu_link = 0.0_wp
     columns = max(1, min(n, 3))
     rows = max(1, (n + columns - 1) / columns)
+    ! (A4 portrait: two columns, the lever's table in the cell after the last polygon)
+    if (.not. sheet%paper%landscape) then
+      columns = 2
+      rows = (n + 2) / 2
+    end if
     b = panel_inner(sheet%polygons)
     ! (the course sheet's polygons panel has no scale line at its foot: its cells go down)
     if (sheet%groups_apart) b(4) = sheet%polygons(4) - 2.0_wp
+    if (.not. sheet%paper%landscape) then
+      associate (w => (b(3) - b(1)) / columns, h => (b(4) - b(2)) / rows)
+        sheet%lever_table = [b(1) + w * modulo(n, columns) + 1.0_wp, b(2) + h * (n / columns) + 1.0_wp, &
+          b(1) + w * (modulo(n, columns) + 1) - 1.0_wp, b(2) + h * (n / columns + 1)]
+      end associate
+    end if
     do e = 1, n
       associate (w => (b(3) - b(1)) / columns, h => (b(4) - b(2)) / rows)
         sheet%cells(:, e) = [b(1) + w * modulo(e - 1, columns), b(2) + h * ((e - 1) / columns), &
@@ -233,7 +278,9 @@ contains
         ! the group apart: the left part of the cell at its full height; its arms' table under
         ! the polygon (the right part); not when the cell is too small for it
         call group_apart_drawing(drawing, plans, e, link, names, inner)
-        sheet%link_boxes(:, e) = [cell(1), cell(2) + 4.0_wp, cell(1) + 0.5_wp * (cell(3) - cell(1)), cell(4)]
+        ! (A4 portrait: three fifths of the cell, its polygon beside it needs less)
+        sheet%link_boxes(:, e) = [cell(1), cell(2) + 4.0_wp, cell(1) + merge(0.5_wp, 0.6_wp, sheet%paper%landscape) * &
+          (cell(3) - cell(1)), cell(4)]
         ! (the arms' table's rows: each force and couple, a heading and a result an equation)
         table_rows = size(link%forces) + size(link%moments) + 2 * max(count(inner > 0), 1) + 1
         if (sheet%link_boxes(3, e) - sheet%link_boxes(1, e) < min_apart(1) .or. &
