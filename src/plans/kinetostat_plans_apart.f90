@@ -19,7 +19,7 @@ module kinetostat_plans_apart
   use kinetostat_plans_base, only: plans_t, component_reaction, component_tangential
   implicit none
   private
-  public :: group_apart_drawing, draw_group_apart
+  public :: group_apart_drawing, draw_group_apart, guide_reactions_placed
 
   !> An arm shorter than this on the drawing is not drawn (its force passes through the
   !> joint), mm.
@@ -78,7 +78,7 @@ contains
   !> bodies and points, every vector of its polygon as a force at its point (the polygon's
   !> value), its links' moments; `inner(q)` the index in link%points of link q's only inner
   !> joint (0: none or more than one), `names(q)` the group's links.
-  pure subroutine group_apart_drawing(drawing, plans, e, link, names, inner, unknown, pivots)
+  pure subroutine group_apart_drawing(drawing, plans, e, link, names, inner, unknown, pivots, sources, shift)
     type(drawing_t), intent(in) :: drawing
     type(plans_t), intent(in) :: plans
     integer, intent(in) :: e
@@ -89,12 +89,18 @@ contains
     logical, allocatable, intent(out), optional :: unknown(:)
     !> link%points' indices of the group's pivots on the frame.
     integer, allocatable, intent(out), optional :: pivots(:)
+    !> The index in drawing%forces of each of link%forces, and the shift of the group's
+    !> points from the drawing's (link's point = drawing's point - shift), m.
+    integer, allocatable, intent(out), optional :: sources(:)
+    real(wp), intent(out), optional :: shift(2)
+    integer, allocatable :: source(:)
     character(len=:), allocatable :: links, base
     integer :: j, q, i, p, found, shared
     real(wp) :: at(2), total, u(2), c
     integer :: k, jj, only
     logical, allocatable :: open(:)
-    allocate (link%points(0), link%bodies(0), link%guides(0), link%forces(0), link%moments(0), names(0), open(0))
+    allocate (link%points(0), link%bodies(0), link%guides(0), link%forces(0), link%moments(0), names(0), open(0), &
+      source(0))
     link%view_angle = drawing%view_angle
     links = trim(plans%group_polygons(e)%link)
     do j = 1, size(drawing%bodies)
@@ -145,6 +151,7 @@ contains
         at = drawing%forces(found)%at
         link%forces = [link%forces, drawing_force_t(poly%vectors(j)%name, drawing%forces(found)%kind, at, &
           poly%vectors(j)%v, acted_link(poly%vectors(j)%name, drawing%forces(found)%on_link))]
+        source = [source, found]
         open = [open, poly%vectors(j)%kind == component_reaction .or. poly%vectors(j)%kind == component_tangential]
       end do
     end associate
@@ -193,6 +200,8 @@ contains
     end do
     if (present(unknown)) unknown = open
     if (present(pivots)) pivots = pack([(i, i = 1, size(link%points))], link%points%kind == point_pivot)
+    if (present(sources)) sources = source
+    if (present(shift)) shift = 0.0_wp
     ! the outer joints drawn as joints (not the frame's pivots); the group shifted so that the
     ! position frame's origin (its axes) lies on an inner joint, or on its first point
     where (link%points%kind == point_pivot) link%points%kind = point_joint
@@ -200,6 +209,7 @@ contains
     if (any(inner > 0)) p = maxval(inner)
     if (size(link%points) == 0) return
     at = link%points(p)%p
+    if (present(shift)) shift = at
     do j = 1, size(link%forces)
       link%forces(j)%at = link%forces(j)%at - at
     end do
@@ -244,6 +254,41 @@ contains
       end do
     end function held_elsewhere
   end subroutine group_apart_drawing
+
+  !> The mechanism's drawing with every whole reaction of a guide on the frame that a group
+  !> drawn apart places on its line of action (group_apart_drawing: a slider's normal
+  !> reaction, at the arm its link's moment equation gives) at that point; `moved(j)` whether
+  !> drawing%forces(j) moved, `from(:, j)` its point before, m.
+  pure subroutine guide_reactions_placed(drawing, plans, placed, moved, from)
+    type(drawing_t), intent(in) :: drawing
+    type(plans_t), intent(in) :: plans
+    type(drawing_t), intent(out) :: placed
+    logical, allocatable, intent(out) :: moved(:)
+    real(wp), allocatable, intent(out) :: from(:, :)
+    type(drawing_t) :: link
+    character(len=16), allocatable :: names(:)
+    integer, allocatable :: inner(:), sources(:)
+    real(wp) :: shift(2), at(2)
+    integer :: e, j, k
+    placed = drawing
+    allocate (moved(size(drawing%forces)), from(2, size(drawing%forces)))
+    moved = .false.
+    do j = 1, size(drawing%forces)
+      from(:, j) = drawing%forces(j)%at
+    end do
+    do e = 1, size(plans%group_polygons)
+      if (plans%group_polygons(e)%input) cycle
+      call group_apart_drawing(drawing, plans, e, link, names, inner, sources=sources, shift=shift)
+      do j = 1, size(link%forces)
+        k = sources(j)
+        if (k <= 0 .or. trim(link%forces(j)%name) /= trim(drawing%forces(k)%name)) cycle
+        at = link%forces(j)%at + shift
+        if (norm2(at - drawing%forces(k)%at) <= 1.0e-9_wp * max(1.0_wp, norm2(at))) cycle
+        placed%forces(k)%at = at
+        moved(k) = .true.
+      end do
+    end do
+  end subroutine guide_reactions_placed
 
   !> Group e drawn apart in `box` at `view` (forces `per_newton` mm/N), with the arms about
   !> each link's inner joint and their table from `table_at`.

@@ -30,7 +30,7 @@ module kinetostat_plans_draw
   use kinetostat_labels, only: word => label, unit_word => unit_symbol, lang_ru
   use kinetostat_scales, only: scale_number, round_scale
   use kinetostat_sheet, only: sheet_t, entity_group, layer_text, layer_vplan, layer_aplan, layer_polygons, layer_lever, &
-    layer_scales, layer_frame, anchor_start, anchor_end
+    layer_scales, layer_frame, layer_guides, anchor_start, anchor_end
   use kinetostat_title_block, only: put_sheet_format, title_block_from_table, header_indent, deck_line
   use kinetostat_drawing, only: drawing_t, drawing_point_t, drawing_body_t, drawing_force_t, drawing_moment_t, &
     force_gravity, force_inertia, force_load, force_pair, point_pivot
@@ -38,7 +38,7 @@ module kinetostat_plans_draw
   use kinetostat_mechanism_sheet, only: fitted_size
   use kinetostat_plans_base, only: plans_t, plan_vector_t, plan_equation_t, lever_load_t, force_polygon_t, &
     component_normal, component_tangential, component_coriolis, component_relative, component_reaction, load_moment, perp
-  use kinetostat_plans_apart, only: draw_group_apart, apart_pitch => row_pitch
+  use kinetostat_plans_apart, only: draw_group_apart, guide_reactions_placed, apart_pitch => row_pitch
   use kinetostat_plans_sheet, only: plans_sheet_t, turn, chain_tips, polygon_tips, panel_inner, panel_head, &
     input_link_drawing, fit_kinematic_plans
   implicit none
@@ -74,8 +74,12 @@ contains
     integer, intent(in) :: lang
     !> The sheet made.
     type(sheet_t), intent(out) :: sheet
-    character(len=:), allocatable :: line, short
-    real(wp) :: inner(4)
+    character(len=:), allocatable :: line, short, arms_note
+    real(wp) :: inner(4), tail(2), tip(2), foot_at(2), arm
+    type(drawing_t) :: placed
+    logical, allocatable :: moved(:)
+    real(wp), allocatable :: from(:, :)
+    integer :: j
 
     call sheet%open(geo%paper, lang, title//" - "//table%deck//" - plans, "//table%row_name//" "//int_str(table%run_row(k)), &
       "kinetostat --format plans --at "//int_str(table%run_row(k))//" sheet of "//table%deck//": the mechanism, the plans of "// &
@@ -115,13 +119,44 @@ contains
     if (geo%mu_mechanism_force > 0.0_wp) then
       call panel(sheet, geo%mechanism, word("Mechanism with its forces", lang)//", "//word("position", lang)//" "// &
         int_str(table%run_row(k)))
+      ! a guide's whole reaction at its line of action, as its group drawn apart has it, where
+      ! its arrow stays in the panel there (a thin dashed line joins it to the link's point);
+      ! else at the link's point with its arm stated under the drawing
+      call guide_reactions_placed(drawing, plans, placed, moved, from)
+      arms_note = ""
+      do j = 1, size(moved)
+        if (.not. moved(j)) cycle
+        associate (f => placed%forces(j), area => panel_inner(geo%mechanism) - [0.0_wp, 0.0_wp, 0.0_wp, 4.5_wp])
+          tail = geo%view%point(f%at)
+          tip = tail + geo%view%direction(f%f) / geo%mu_mechanism_force
+          if (all([tail, tip] >= [area(1:2), area(1:2)]) .and. all([tail, tip] <= [area(3:4), area(3:4)])) then
+            call sheet%set_layer(layer_guides)
+            foot_at = geo%view%point(from(:, j))
+            call sheet%line(foot_at(1), foot_at(2), tail(1), tail(2), stroke="#555555", width=0.15_wp, dash="1 0.8")
+          else
+            arm = norm2(f%at - from(:, j))
+            f%at = from(:, j)
+            ! (a force too short to draw is listed under the drawing)
+            if (norm2(f%f) / geo%mu_mechanism_force < 1.0_wp) cycle
+            if (len(arms_note) > 0) arms_note = arms_note//"; "
+            if (lang == lang_ru) then
+              arms_note = arms_note//display_name(trim(f%name), lang)//" приложена к точке звена, "// &
+                "её линия действия в "//short_number(arm)//" м "// &
+                "от неё (вне чертежа)"
+            else
+              arms_note = arms_note//display_name(trim(f%name), lang)//" drawn at the link's point, its line of "// &
+                "action "//short_number(arm)//" m from it (off the drawing)"
+            end if
+          end if
+        end associate
+      end do
       ! (its labels clear of the two lines under it)
       ! (A4: its panel under 120 mm wide, its labels at 1.8 mm, the least legible size)
       if (geo%mechanism(3) - geo%mechanism(1) < 120.0_wp) then
-        call draw_mechanism(sheet, drawing, geo%view, panel_inner(geo%mechanism) - [0.0_wp, 0.0_wp, 0.0_wp, 4.5_wp], &
+        call draw_mechanism(sheet, placed, geo%view, panel_inner(geo%mechanism) - [0.0_wp, 0.0_wp, 0.0_wp, 4.5_wp], &
           1.0_wp / geo%mu_mechanism_force, short, label_size=1.8_wp)
       else
-        call draw_mechanism(sheet, drawing, geo%view, panel_inner(geo%mechanism) - [0.0_wp, 0.0_wp, 0.0_wp, 4.5_wp], &
+        call draw_mechanism(sheet, placed, geo%view, panel_inner(geo%mechanism) - [0.0_wp, 0.0_wp, 0.0_wp, 4.5_wp], &
           1.0_wp / geo%mu_mechanism_force, short)
       end if
       line = "μl = "//scale_number(geo%mu_l)//" "//unit_word("m", lang)//"/"//unit_word("mm", lang)//" ("// &
@@ -132,6 +167,8 @@ contains
       ! the least: on two lines where one would need smaller)
       if (len(short) > 0) call legible_lines(sheet, geo%mechanism(1) + 2.0_wp, geo%mechanism(4) - 6.3_wp, &
         geo%mechanism(3) - geo%mechanism(1) - 4.0_wp, word("not drawn, shorter than 1 mm", lang)//": "//short)
+      if (len(arms_note) > 0) call legible_lines(sheet, geo%mechanism(1) + 2.0_wp, geo%mechanism(4) - 6.3_wp - &
+        merge(5.0_wp, 0.0_wp, len(short) > 0), geo%mechanism(3) - geo%mechanism(1) - 4.0_wp, arms_note)
     else
       call panel(sheet, geo%mechanism, word("Mechanism", lang)//", "//word("position", lang)//" "// &
         int_str(table%run_row(k)))
