@@ -235,19 +235,43 @@ assert "= 274 kg·m²" in plain
 assert "⌀1123" in plain and ">225<" in t, "disc dimensions"
 PY
 
-# A4: the kinetostatics sheet of a crowded mechanism (the class-III group; the four-bar, whose
-# lever's note and input link's arms once met lines) has no label over a label or a line,
-# leader lines counted
-for deck in class3 assur_fourbar; do
-  dir="$cli_tmp/sheets_a4_$deck"
+# A4 (ГОСТ 2.301: portrait, its title block along the short side): the kinetostatics sheet
+# 210 x 297 mm with the frame and the title block; no label over a label or a line, leader
+# lines counted (the class-III group, the four-bar, the two six-bar decks, in English and in
+# Russian); the mechanism 50 mm across at the least (its joints' extent on the sheet)
+sheets_a4="class3:en assur_fourbar:en sixbar_example:en sixbar_example:ru sixbar_flywheel:en"
+if [ "${KINETOSTAT_LONG:-0}" = 1 ]; then sheets_a4="$sheets_a4 class3:ru assur_fourbar:ru sixbar_flywheel:ru"; fi
+for deck_lang in $sheets_a4; do
+  deck="${deck_lang%:*}"; lang="${deck_lang#*:}"
+  dir="$cli_tmp/sheets_a4_${deck}_$lang"
   rm -rf "$dir"
-  run_ks sheets "data/$deck.nml" -o "$dir" --paper A4 --student X --group G --variant 1
-  if [ "$rc" -eq 0 ] && python3 "$sheets_check" labels --lines "$dir/kinetostatics.svg" >"$cli_tmp/check.out" 2>&1; then
+  run_ks sheets "data/$deck.nml" -o "$dir" --paper A4 --lang "$lang" --student X --group G --variant 1
+  if [ "$rc" -eq 0 ] && sheets_iso "$dir/kinetostatics.svg" 210.00 297.00 >"$cli_tmp/check.out" 2>&1 \
+    && python3 "$sheets_check" labels --lines "$dir/kinetostatics.svg" >>"$cli_tmp/check.out" 2>&1 \
+    && python3 - "$dir/kinetostatics.svg" >>"$cli_tmp/check.out" 2>&1 <<'PY'
+import re, sys
+t = open(sys.argv[1], encoding="utf-8").read()
+m = t[t.index('<g class="mechanism"'):]
+m = m[:m.index("</g>")] if "</g>" in m else m
+pts = [(float(x), float(y)) for x, y in re.findall(r'<circle cx="([0-9.]+)" cy="([0-9.]+)" r="[0-9.]+" class="(?:joint|com)"', m)]
+across = max(max(x for x, _ in pts) - min(x for x, _ in pts), max(y for _, y in pts) - min(y for _, y in pts))
+assert across >= 50.0, f"the mechanism is {across:.1f} mm across on A4, expected 50 mm at the least"
+PY
+  then
     pass
   else
-    fail "sheets-a4-legible-$deck" "exit $rc: $(grep -v '^[0-9]* sheets' "$cli_tmp/check.out" | head -4)"
+    fail "sheets-a4-$deck-$lang" "exit $rc: $(grep -v '^[0-9]* sheets' "$cli_tmp/check.out" | head -4)"
   fi
 done
+# PR 3207's ram: its guide's reaction F56 on the mechanism as on the group drawn apart: its line
+# of action 1.75 m from the ram (h56 = 23.4 mm at 0.075 m/mm), off the drawing, stated
+dir="$cli_tmp/sheets_a4_pr3207"
+rm -rf "$dir"
+run_ks sheets data/pr3207_flywheel.nml -o "$dir" --paper A4 --lang ru --student X --group G --variant 1
+if [ "$rc" -eq 0 ] && sed 's/<[^>]*>//g' "$dir/kinetostatics.svg" | grep -q "F56 приложена к точке звена, её линия действия в 1.75 м от неё" \
+  && grep -q 'data-arm="h56"[^>]*data-h="2.3392918' "$dir/kinetostatics.svg" \
+  && python3 "$sheets_check" labels --lines "$dir/kinetostatics.svg" >"$cli_tmp/check.out" 2>&1; then pass
+else fail sheets-a4-guide-reaction "exit $rc: no F56 line of action note, or $(head -3 "$cli_tmp/check.out")"; fi
 
 # --paper, --designation (графа 2 and 26, turned 180 deg), --sheet-numbers, --at
 dir="$cli_tmp/sheets_opts"
