@@ -19,8 +19,8 @@ module kinetostat_dynamics_sheet
   use kinetostat_step_table, only: step_table_t
   use kinetostat_run_tally, only: flywheel_disc
   use kinetostat_labels, only: unit_word => unit_symbol
-  use kinetostat_sheet, only: sheet_t, paper_t, layer_text, layer_charts, layer_profile, anchor_start, anchor_middle, &
-    anchor_end
+  use kinetostat_sheet, only: sheet_t, paper_t, course_paper, layer_text, layer_charts, layer_profile, &
+    anchor_start, anchor_middle, anchor_end
   use kinetostat_title_block, only: put_sheet_format, title_block_from_table, block_height, header_indent, &
     deck_line
   use kinetostat_mechanism_sheet, only: fitted_size
@@ -33,6 +33,8 @@ module kinetostat_dynamics_sheet
 
   !> Gap between panels, mm.
   real(wp), parameter :: gap = 6.0_wp
+  !> A4 portrait: the height of the row of Wittenbauer's diagram and the flywheel, mm.
+  real(wp), parameter :: portrait_row = 66.0_wp
   !> Colours of the curves.
   character(*), parameter :: blue = "#1f77b4", red = "#d62728", green = "#2ca02c", black = "#000000", &
     grey = "#555555"
@@ -48,7 +50,8 @@ module kinetostat_dynamics_sheet
 
 contains
 
-  !> The dynamics sheet of a run with a steady cycle on `paper` (landscape: three columns).
+  !> The dynamics sheet of a run with a steady cycle on `paper`'s size (course_paper: A1 ..
+  !> A3 landscape, three columns; A4 portrait, two).
   !> Not pure: its inner procedures draw into the host's sheet.
   subroutine draw_dynamics_sheet(title, table, paper, lang, sheet)
     !> Title of the mechanism.
@@ -60,6 +63,8 @@ contains
     type(sheet_t), intent(out) :: sheet
     real(wp), allocatable :: phi(:), md(:)
     real(wp) :: inner(4), cw, x1, x2, x3, top, hmax, mu_phi, y, wm, wmax, wmin, jfw, delta, md_mean
+    logical :: portrait
+    type(paper_t) :: page
     real(wp) :: bottom3
     !> The flywheel as a disc: its diameter and width, m, and mass, kg (0 without one).
     real(wp) :: disc_d, disc_b, disc_m
@@ -68,7 +73,8 @@ contains
     character(len=:), allocatable :: deg, nm, joule, kgm2, xlabel, a_drive, a_load
     integer :: kmax, kmin
 
-    call sheet%open(paper, lang, words("Machine dynamics", "Динамический анализ машины", lang)// &
+    page = course_paper(paper%name)
+    call sheet%open(page, lang, words("Machine dynamics", "Динамический анализ машины", lang)// &
       " - "//table%deck, &
       "kinetostat sheets: the dynamics sheet of "//table%deck//": reduced moments, work diagrams, dT, T_I, "// &
       "J_red, omega1, eps1, Wittenbauer's diagram with the tangents and kl, the flywheel.")
@@ -87,8 +93,11 @@ contains
     call flywheel_disc(table%dynamics, disc_d, disc_b, disc_m)
     md = column(table%driver)
     ! the disc's scale first: the title block's Масштаб is the flywheel's (the sheet's one drawing)
-    inner = paper%inside()
+    ! (A4 portrait: two columns of charts, Wittenbauer's diagram and the flywheel under them)
+    portrait = .not. page%landscape
+    inner = page%inside()
     cw = (inner(3) - inner(1) - 4.0_wp * gap) / 3.0_wp
+    if (portrait) cw = (inner(3) - inner(1) - 3.0_wp * gap) / 2.0_wp
     disc_scale = standard_drawing_scale(min(0.5_wp * cw - 30.0_wp, 120.0_wp) / &
       max(disc_d, 1.0e-9_wp) / 1000.0_wp)
     if (jfw > 0.0_wp) then
@@ -106,6 +115,8 @@ contains
     x3 = x2 + cw + gap
     top = inner(2) + 24.0_wp
     hmax = (inner(4) - top - 2.0_wp * gap) / 3.0_wp
+    ! (A4 portrait: three rows of charts over Wittenbauer's diagram and the flywheel)
+    if (portrait) hmax = (inner(4) - block_height - gap - top - portrait_row) / 3.0_wp - gap
     ! one μφ for every chart over the cycle
     mu_phi = round_scale(maxval(phi) - minval(phi), cw - 24.0_wp)
 
@@ -175,8 +186,14 @@ contains
 
     ! column 3: Wittenbauer's diagram; the flywheel and the figures above the title block
     bottom3 = inner(4) - block_height - gap
-    call wittenbauer(x3, top, cw, 0.55_wp * (bottom3 - top))
-    call flywheel(x3, top + 0.55_wp * (bottom3 - top) + gap, cw, bottom3 - (top + 0.55_wp * (bottom3 - top) + gap))
+    if (portrait) then
+      y = bottom3 - portrait_row
+      call wittenbauer(x1, y, cw, bottom3 - y)
+      call flywheel(x2, y, cw, bottom3 - y)
+    else
+      call wittenbauer(x3, top, cw, 0.55_wp * (bottom3 - top))
+      call flywheel(x3, top + 0.55_wp * (bottom3 - top) + gap, cw, bottom3 - (top + 0.55_wp * (bottom3 - top) + gap))
+    end if
   contains
 
     !> Column `name` over the rows.
@@ -417,7 +434,13 @@ contains
       cells(13, :) = [character(len=40) :: "ψ = b/D", short_number(table%dynamics%flywheel_width_ratio)]
       if (jfw <= 0.0_wp) cells(9:11, 2) = "—"
       call sheet%set_layer(layer_text)
-      call put_table(sheet, x0 + 0.5_wp * w, y0 + 10.0_wp, [0.3_wp * w, 0.16_wp * w], 4.2_wp, cells)
+      ! (its rows 4.2 mm apart; A4 portrait: wider, its rows closer)
+      if (w < 100.0_wp) then
+        call put_table(sheet, x0 + 0.4_wp * w, y0 + 10.0_wp, [0.42_wp * w, 0.16_wp * w], min(4.2_wp, (h - 17.0_wp) / &
+          13.0_wp), cells)
+      else
+        call put_table(sheet, x0 + 0.5_wp * w, y0 + 10.0_wp, [0.3_wp * w, 0.16_wp * w], 4.2_wp, cells)
+      end if
     end subroutine flywheel
 
     !> One hatch line at 45 deg of the rectangle (x, y, w, h), offset `c` along its top edge.
@@ -482,7 +505,8 @@ contains
       vmax = max(0.0_wp, vmax)
     end if
     if (vmax - vmin <= 0.0_wp) vmax = vmin + max(1.0_wp, abs(vmin))
-    step = nice_step(vmax - vmin, 5, .false.)
+    ! (five steps, fewer on a low chart, A4's: its ticks 5 mm apart at the least)
+    step = nice_step(vmax - vmin, max(2, min(5, floor((hmax - 26.0_wp) / 5.0_wp))), .false.)
     lo = step * floor(vmin / step + 1.0e-9_wp)
     hi = step * ceiling(vmax / step - 1.0e-9_wp)
     mu = round_scale(hi - lo, hmax - 26.0_wp)

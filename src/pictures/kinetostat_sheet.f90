@@ -37,7 +37,7 @@ module kinetostat_sheet
   use kinetostat_label_place, only: label_boxes_t
   implicit none
   private
-  public :: sheet_t, entity_t, paper_t, iso_paper, paper_fits
+  public :: sheet_t, entity_t, paper_t, iso_paper, paper_fits, course_paper
   public :: entity_line, entity_polyline, entity_polygon, entity_rect, entity_circle, entity_arc, entity_text, &
     entity_group, entity_group_end
   public :: layer_links, layer_joints, layer_guides, layer_forces, layer_text, layer_vplan, layer_aplan, &
@@ -230,6 +230,15 @@ contains
       paper%height = paper_long(i)
     end if
   end function iso_paper
+
+  !> The paper of a course sheet (`kinetostat sheets --paper`): A1, A2, A3 landscape; A4
+  !> portrait (ГОСТ 2.301: on A4 the title block stands along the short side only).
+  pure function course_paper(name) result(paper)
+    !> "A4", "A3", "A2" or "A1".
+    character(*), intent(in) :: name
+    type(paper_t) :: paper
+    paper = iso_paper(name, name /= "A4")
+  end function course_paper
 
   !> Whether a content of `width` x `height` mm fits inside the frame of `paper`.
   pure logical function paper_fits(paper, width, height)

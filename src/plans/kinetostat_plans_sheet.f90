@@ -17,7 +17,7 @@ module kinetostat_plans_sheet
   use kinetostat_sketch, only: sketch_t
   use kinetostat_drawing, only: drawing_t, drawing_force_t, force_pair, point_pivot
   use kinetostat_scales, only: round_scale
-  use kinetostat_sheet, only: paper_t, iso_paper
+  use kinetostat_sheet, only: paper_t, iso_paper, course_paper
   use kinetostat_mechanism_view, only: mechanism_view_t, fit_mechanism_view
   use kinetostat_plans_apart, only: group_apart_drawing, row_pitch
   use kinetostat_plans_base, only: plans_t, plan_vector_t, plan_equation_t, load_moment, cross, link_index, &
@@ -107,7 +107,7 @@ contains
     ! table left of the title block
     sheet%paper = iso_paper("A2", .true.)
     ! (A4 portrait, ГОСТ 2.301: its title block stands along the short side only)
-    if (present(paper_name)) sheet%paper = iso_paper(paper_name, paper_name /= "A4")
+    if (present(paper_name)) sheet%paper = course_paper(paper_name)
     ! the course sheet (a paper named) draws the groups apart; --format plans does not
     sheet%groups_apart = present(paper_name)
     b = sheet%paper%inside()
