@@ -436,7 +436,7 @@ contains
       call sheet%set_layer(layer_text)
       ! (its rows 4.2 mm apart; A4 portrait: wider, its rows closer)
       if (w < 100.0_wp) then
-        call put_table(sheet, x0 + 0.4_wp * w, y0 + 10.0_wp, [0.42_wp * w, 0.16_wp * w], min(4.2_wp, (h - 17.0_wp) / &
+        call put_table(sheet, x0 + 0.4_wp * w, y0 + 10.0_wp, [0.4_wp * w, 0.18_wp * w], min(4.2_wp, (h - 17.0_wp) / &
           13.0_wp), cells)
       else
         call put_table(sheet, x0 + 0.5_wp * w, y0 + 10.0_wp, [0.3_wp * w, 0.16_wp * w], 4.2_wp, cells)
