@@ -264,14 +264,16 @@ PY
   fi
 done
 # PR 3207's ram: its guide's reaction F56 on the mechanism as on the group drawn apart: its line
-# of action 1.75 m from the ram (h56 = 23.4 mm at 0.075 m/mm), off the drawing, stated
+# of action 1.75 m from the ram (h56 = 23.4 mm at 0.075 m/mm), off the drawing, stated; the
+# dynamics sheet on A4 portrait too (210 x 297, the frame, the title block)
 dir="$cli_tmp/sheets_a4_pr3207"
 rm -rf "$dir"
 run_ks sheets data/pr3207_flywheel.nml -o "$dir" --paper A4 --lang ru --student X --group G --variant 1
 if [ "$rc" -eq 0 ] && sed 's/<[^>]*>//g' "$dir/kinetostatics.svg" | grep -q "F56 приложена к точке звена, её линия действия в 1.75 м от неё" \
   && grep -q 'data-arm="h56"[^>]*data-h="2.3392918' "$dir/kinetostatics.svg" \
+  && sheets_iso "$dir/dynamics.svg" 210.00 297.00 >/dev/null 2>&1 \
   && python3 "$sheets_check" labels --lines "$dir/kinetostatics.svg" >"$cli_tmp/check.out" 2>&1; then pass
-else fail sheets-a4-guide-reaction "exit $rc: no F56 line of action note, or $(head -3 "$cli_tmp/check.out")"; fi
+else fail sheets-a4-guide-reaction "exit $rc: no F56 line of action note, dynamics not 210 x 297, or $(head -3 "$cli_tmp/check.out")"; fi
 
 # --paper, --designation (графа 2 and 26, turned 180 deg), --sheet-numbers, --at
 dir="$cli_tmp/sheets_opts"
