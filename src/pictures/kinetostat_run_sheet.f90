@@ -38,7 +38,7 @@ module kinetostat_run_sheet
   implicit none
   private
   public :: write_run_sheet, pair_force_t, find_pair_forces, select_pair_forces, nice_step, cycle_mean, &
-    plotted_indices, put_axes, y_range
+    plotted_indices, put_axes, y_range, wrapped, note_length
 
   !> Gap between panels, mm.
   real(wp), parameter :: gap = 3.5_wp

@@ -19,7 +19,7 @@ module kinetostat_kinematics_sheet
   use kinetostat_step_table, only: step_table_t
   use kinetostat_labels, only: unit_word => unit_symbol
   use kinetostat_sheet, only: sheet_t, paper_t, layer_text, layer_charts
-  use kinetostat_title_block, only: put_sheet_format, title_block_from_table, block_height
+  use kinetostat_title_block, only: put_sheet_format, title_block_from_table, block_height, block_width
   use kinetostat_scales, only: round_scale, scale_number
   use kinetostat_sketch, only: sketch_t
   use kinetostat_drawing, only: drawing_t, column_value, drawing_from_sketch, body_block, point_plain
@@ -31,6 +31,7 @@ module kinetostat_kinematics_sheet
   use kinetostat_plans_groups, only: plan_groups
   use kinetostat_plans_base, only: plans_t
   use kinetostat_plans_draw, only: draw_kinematic_plans
+  use kinetostat_run_sheet, only: wrapped, note_length
   implicit none
   private
   public :: draw_kinematics_sheet, output_motion
@@ -77,6 +78,13 @@ contains
     real(wp) :: inner(4), cw, x1, x2, x3, top, region(4), mu_phi, hmax, y
     real(wp), allocatable :: phi(:)
     character(len=:), allocatable :: short, driver, traced, text
+    !> The mechanism panel's heading, a line an element, and how much lower the mechanism is
+    !> drawn for its lines after the first, mm.
+    character(len=note_length), allocatable :: heading(:)
+    real(wp) :: heading_drop
+    !> Distance between the heading's lines, mm.
+    real(wp), parameter :: heading_pitch = 3.8_wp
+    integer :: i
     type(plot_t) :: q
 
     allocate (phi(0))
@@ -95,11 +103,16 @@ contains
     ! the plan of positions: every position's drawing, and the view fitted to them all
     planned = present(positions)
     if (planned) call position_drawings()
+    ! the panel's heading, in as many lines as the column needs (heading_drop: the mechanism
+    ! lower by the lines after the first)
+    traced = point_asked
+    if (len(traced) == 0) traced = traced_point()
+    call heading_lines()
     if (planned) then
-      call fit_mechanism_view(all_positions, [region(1) + 4.0_wp, region(2) + 10.0_wp, region(3) - 4.0_wp, &
-        region(4) - 10.0_wp], 10.0_wp, view)
+      call fit_mechanism_view(all_positions, [region(1) + 4.0_wp, region(2) + 10.0_wp + heading_drop, &
+        region(3) - 4.0_wp, region(4) - 10.0_wp], 10.0_wp, view)
     else
-      call fit_mechanism_view(drawing, [region(1) + 4.0_wp, region(2) + 10.0_wp, region(3) - 4.0_wp, &
+      call fit_mechanism_view(drawing, [region(1) + 4.0_wp, region(2) + 10.0_wp + heading_drop, region(3) - 4.0_wp, &
         region(4) - 10.0_wp], 10.0_wp, view)
     end if
     call sheet%open(paper, lang, words("Structure and kinematics", &
@@ -114,27 +127,16 @@ contains
     ! the mechanism at the position with the traced point's trajectory
     call sheet%set_layer(layer_charts)
     call sheet%rect(region(1), region(2), cw, region(4) - region(2), "panel")
-    traced = point_asked
-    if (len(traced) == 0) traced = traced_point()
-    if (planned) then
-      text = words("Plan of positions (", "План положений (", lang)//int_str(n_positions)
-      text = text//words(", from the extreme position of link ", ", от крайнего положения звена ", lang)
-      text = text//output_name()//"); "//words("the mechanism in position ", "механизм в положении ", lang)
-      text = text//int_str(table%run_row(k))
-    else
-      text = words("Mechanism in position ", "Механизм в положении ", lang)//int_str(table%run_row(k))
-    end if
-    if (table%input_column > 0) text = text//" (φ1 = "//short_number(table%rows(table%input_column, k))//" "// &
-      unit_word("deg", lang)//")"
-    if (len(traced) > 0) text = text//words("; trajectory of ", "; траектория точки ", lang)//traced
-    call sheet%text(region(1) + 2.0_wp, region(2) + 5.0_wp, text, "heading")
+    do i = 1, size(heading)
+      call sheet%text(region(1) + 2.0_wp, region(2) + 5.0_wp + heading_pitch * (i - 1), trim(heading(i)), "heading")
+    end do
     if (planned) then
       call put_positions()
     else if (len(traced) > 0) then
       call put_trajectory(traced)
     end if
-    call draw_mechanism(sheet, drawing, view, [region(1) + 2.0_wp, region(2) + 8.0_wp, region(3) - 2.0_wp, &
-      region(4) - 12.0_wp], 0.0_wp, short)
+    call draw_mechanism(sheet, drawing, view, [region(1) + 2.0_wp, region(2) + 8.0_wp + heading_drop, &
+      region(3) - 2.0_wp, region(4) - 12.0_wp], 0.0_wp, short)
     if (planned) call put_position_numbers()
     call sheet%set_layer(layer_text)
     call sheet%text(region(1) + 2.0_wp, region(4) - 3.0_wp, "μl = "//scale_number(view%mu_l())//" "// &
@@ -151,7 +153,12 @@ contains
     end if
     if (size(phi) > 1) then
       mu_phi = round_scale(maxval(phi) - minval(phi), cw - 24.0_wp)
-      hmax = (inner(4) - top - 2.0_wp * gap) / 3.0_wp
+      ! (down to the title block when the column reaches over it: A3)
+      if (x2 + cw > inner(3) - block_width) then
+        hmax = (inner(4) - block_height - gap - top - 2.0_wp * gap) / 3.0_wp
+      else
+        hmax = (inner(4) - top - 2.0_wp * gap) / 3.0_wp
+      end if
       y = top
       call output_diagrams()
     end if
@@ -169,6 +176,24 @@ contains
       call put_values(x3, top, cw, inner(4) - block_height - gap - top)
     end if
   contains
+
+    !> The mechanism panel's heading (what is drawn, the position, the traced point) cut at
+    !> blanks into lines that fit the column at the heading's 3.2 mm (0.6 of it a character).
+    subroutine heading_lines()
+      if (planned) then
+        text = words("Plan of positions (", "План положений (", lang)//int_str(n_positions)
+        text = text//words(", from the extreme position of link ", ", от крайнего положения звена ", lang)
+        text = text//output_name()//"); "//words("the mechanism in position ", "механизм в положении ", lang)
+        text = text//int_str(table%run_row(k))
+      else
+        text = words("Mechanism in position ", "Механизм в положении ", lang)//int_str(table%run_row(k))
+      end if
+      if (table%input_column > 0) text = text//" (φ1 = "//short_number(table%rows(table%input_column, k))//" "// &
+        unit_word("deg", lang)//")"
+      if (len(traced) > 0) text = text//words("; trajectory of ", "; траектория точки ", lang)//traced
+      call wrapped(text, int((cw - 4.0_wp) / (0.6_wp * 3.2_wp)), heading)
+      heading_drop = heading_pitch * real(size(heading) - 1, wp)
+    end subroutine heading_lines
 
     !> The height of the values table's panel, mm: its rows and headings.
     real(wp) function values_height() result(h)
