@@ -32,6 +32,7 @@ module kinetostat_kinematics_sheet
   use kinetostat_plans_base, only: plans_t
   use kinetostat_plans_draw, only: draw_kinematic_plans
   use kinetostat_run_sheet, only: wrapped, note_length
+  use kinetostat_mechanism_sheet, only: fitted_size
   implicit none
   private
   public :: draw_kinematics_sheet, output_motion
@@ -317,7 +318,13 @@ contains
         foot = foot//", φ1 = "//fixed_number(modulo(positions%rows(positions%input_column, 1), 360.0_wp), 2)//" "// &
           unit_word("deg", lang)//words("; the positions every ", "; положения через ", lang)// &
           fixed_number(360.0_wp / real(n_positions, wp), 0)//" "//unit_word("deg", lang)
-        call sheet%text(region(1) + 2.0_wp, region(4) - 7.5_wp, foot, "small")
+        ! (smaller where the column is too narrow for it at 2.4 mm: A3)
+        if (fitted_size(foot, 2.4_wp, cw - 4.0_wp, 0.6_wp) < 2.4_wp) then
+          call sheet%text(region(1) + 2.0_wp, region(4) - 7.5_wp, foot, "small", size=fitted_size(foot, 2.4_wp, &
+            cw - 4.0_wp, 0.6_wp))
+        else
+          call sheet%text(region(1) + 2.0_wp, region(4) - 7.5_wp, foot, "small")
+        end if
       end if
     end subroutine put_position_numbers
 

@@ -333,7 +333,7 @@ contains
     logical, intent(in) :: accel
     integer, intent(in) :: lang
     real(wp), allocatable :: tips(:, :), ends(:, :)
-    real(wp) :: q(2), p(2), t(2), area(4)
+    real(wp) :: q(2), p(2), t(2), area(4), labels_area(4)
     character(len=:), allocatable :: short, at_pole
     character(len=16), allocatable :: names(:)
     character(len=1), allocatable :: kinds(:)
@@ -385,20 +385,24 @@ contains
       end if
     end do
     ! the labels: the pole, the images, the components
+    ! (above the notes at the foot: what is at the pole, what is too short)
     call sheet%set_layer(layer_text)
-    call sheet%place_label(pole_name, "label", pole(1), pole(2), 0.75_wp * pi, area)
+    do i = 1, size(images)
+      if (norm2(at(images(i)%v) - pole) < shortest) call listed(at_pole, image_label(images(i)%name))
+    end do
+    labels_area = area
+    if (len(short) > 0) labels_area(4) = area(4) - 2.6_wp
+    if (len(at_pole) > 0) labels_area(4) = area(4) - 6.6_wp
+    call sheet%place_label(pole_name, "label", pole(1), pole(2), 0.75_wp * pi, labels_area)
     do i = 1, size(images)
       q = at(images(i)%v)
-      if (norm2(q - pole) < shortest) then
-        call listed(at_pole, image_label(images(i)%name))
-        cycle
-      end if
+      if (norm2(q - pole) < shortest) cycle
       call sheet%place_label(image_label(images(i)%name), "label", q(1), q(2), atan2(q(2) - pole(2), q(1) - pole(1)), &
-        area, tail=pole, italic=.true.)
+        labels_area, tail=pole, italic=.true.)
     end do
     do j = 1, size(names)
       call sheet%place_label(trim(names(j)), "num", 0.5_wp * (ends(1, j) + ends(3, j)), 0.5_wp * (ends(2, j) + ends(4, j)), &
-        atan2(ends(4, j) - ends(2, j), ends(3, j) - ends(1, j)) - 0.5_wp * pi, area, colour=component_colour(kinds(j)))
+        atan2(ends(4, j) - ends(2, j), ends(3, j) - ends(1, j)) - 0.5_wp * pi, labels_area, colour=component_colour(kinds(j)))
     end do
     ! what is at the pole, what is too short to draw
     if (len(at_pole) > 0) call sheet%text(area(1) + 1.0_wp, area(4) - 4.0_wp, word("at the pole", lang)//" "// &
