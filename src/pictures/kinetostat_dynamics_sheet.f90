@@ -22,7 +22,7 @@ module kinetostat_dynamics_sheet
   use kinetostat_sheet, only: sheet_t, paper_t, course_paper, layer_text, layer_charts, layer_profile, &
     anchor_start, anchor_middle, anchor_end
   use kinetostat_title_block, only: put_sheet_format, title_block_from_table, block_height, header_indent, &
-    deck_line
+    deck_line, block_width
   use kinetostat_mechanism_sheet, only: fitted_size
   use kinetostat_scales, only: round_scale, nice_step, scale_number, standard_drawing_scale, drawing_scale_t
   use kinetostat_run_sheet, only: put_axes
@@ -146,7 +146,10 @@ contains
       "Приведенный момент инерции J_пр", lang), p, zero=.true.)
     call curve(p, column("J_red"), blue, "", words("J_red", "J_пр", lang))
 
-    ! column 2: T_I with its extremes; omega1; eps1
+    ! column 2: T_I with its extremes; omega1; eps1 (down to the title block when the column
+    ! reaches over it: A3)
+    if (.not. portrait .and. x2 + cw > inner(3) - block_width) &
+      hmax = (inner(4) - block_height - gap - top - 2.0_wp * gap) / 3.0_wp
     y = top
     call chart(x2, y, [column("T_I")], joule, "T", words("Merzalov's T_I (first group's energy)", &
       "Кинетическая энергия T_I (метод Мерцалова)", lang), p)
