@@ -148,8 +148,9 @@ contains
 
     ! column 2: T_I with its extremes; omega1; eps1 (down to the title block when the column
     ! reaches over it: A3)
-    if (.not. portrait .and. x2 + cw > inner(3) - block_width) &
+    if (.not. portrait .and. x2 + cw > inner(3) - block_width) then
       hmax = (inner(4) - block_height - gap - top - 2.0_wp * gap) / 3.0_wp
+    end if
     y = top
     call chart(x2, y, [column("T_I")], joule, "T", words("Merzalov's T_I (first group's energy)", &
       "Кинетическая энергия T_I (метод Мерцалова)", lang), p)
@@ -160,14 +161,22 @@ contains
     call sheet%line(p%left, p%sy(column_at("T_I", kmin)), p%left + p%width, p%sy(column_at("T_I", kmin)), "mean")
     call dot(sheet, [p%sx(phi(kmax)), p%sy(column_at("T_I", kmax))], red, 0.8_wp)
     call dot(sheet, [p%sx(phi(kmin)), p%sy(column_at("T_I", kmin))], red, 0.8_wp)
-    call sheet%place_label("T_I "//words("max", "наиб", lang)//" = "//short_number(column_at("T_I", kmax))// &
-      " "//joule, "small", &
-      p%sx(phi(kmax)), p%sy(column_at("T_I", kmax)), -0.5_wp * pi, plot_box(p))
-    call sheet%place_label("T_I "//words("min", "наим", lang)//" = "//short_number(column_at("T_I", kmin))// &
-      " "//joule, "small", &
-      p%sx(phi(kmin)), p%sy(column_at("T_I", kmin)), 0.5_wp * pi, plot_box(p))
-    call foot(p, "ΔT = T_I "//words("max", "наиб", lang)//" − T_I "//words("min", "наим", lang)//" = "// &
-      short_number(column_at("T_I", kmax) - column_at("T_I", kmin))// &
+    ! (A4 portrait: the extremes under the chart, its plot too low for labels clear of its lines)
+    ! (and ΔT; J_I = ΔT/(δ ω_m²) is the flywheel table's J by Merzalov)
+    if (portrait) then
+      call foot(p, "T_I "//words("max", "наиб", lang)//" = "//short_number(column_at("T_I", kmax))//" "//joule// &
+        ",  T_I "//words("min", "наим", lang)//" = "//short_number(column_at("T_I", kmin))//" "//joule// &
+        ",  ΔT = "//short_number(column_at("T_I", kmax) - column_at("T_I", kmin))//" "//joule)
+    else
+      call sheet%place_label("T_I "//words("max", "наиб", lang)//" = "//short_number(column_at("T_I", kmax))// &
+        " "//joule, "small", &
+        p%sx(phi(kmax)), p%sy(column_at("T_I", kmax)), -0.5_wp * pi, plot_box(p))
+      call sheet%place_label("T_I "//words("min", "наим", lang)//" = "//short_number(column_at("T_I", kmin))// &
+        " "//joule, "small", &
+        p%sx(phi(kmin)), p%sy(column_at("T_I", kmin)), 0.5_wp * pi, plot_box(p))
+    end if
+    if (.not. portrait) call foot(p, "ΔT = T_I "//words("max", "наиб", lang)//" − T_I "//words("min", "наим", lang)// &
+      " = "//short_number(column_at("T_I", kmax) - column_at("T_I", kmin))// &
       " "//joule//";  J_I = ΔT/(δ · omega_m^2) = "// &
       short_number((column_at("T_I", kmax) - column_at("T_I", kmin)) / &
       (max(delta, 1.0e-300_wp) * wm**2))//" "//kgm2)
@@ -179,9 +188,14 @@ contains
     call sheet%line(p%left, p%sy(wmax), p%left + p%width, p%sy(wmax), "mean")
     call sheet%line(p%left, p%sy(wmin), p%left + p%width, p%sy(wmin), "mean")
     call curve(p, column("omega1"), blue, "", "ω1")
-    call level(p, wm, "ω_m = "//short_number(wm))
-    call level(p, wmax, "ω_max = "//short_number(wmax))
-    call level(p, wmin, "ω_min = "//short_number(wmin))
+    if (portrait) then
+      call foot(p, "ω_m = "//short_number(wm)//",  ω_max = "//short_number(wmax)//",  ω_min = "// &
+        short_number(wmin)//" "//unit_word("rad/s", lang))
+    else
+      call level(p, wm, "ω_m = "//short_number(wm))
+      call level(p, wmax, "ω_max = "//short_number(wmax))
+      call level(p, wmin, "ω_min = "//short_number(wmin))
+    end if
     y = y + chart_height(p) + gap
     call chart(x2, y, [column("eps1")], unit_word("rad/s^2", lang), "ε", &
       words("Angular acceleration ε1", "Угловое ускорение начального звена ε1", lang), p)
@@ -387,6 +401,7 @@ contains
       real(wp), intent(in) :: x0, y0, w, h
       real(wp) :: d, b, s, cx, cy, dw, bw
       character(len=40) :: cells(13, 2)
+      character(len=:), allocatable :: text
       integer :: i
       call sheet%set_layer(layer_charts)
       call sheet%rect(x0, y0, w, h, "panel")
@@ -413,8 +428,14 @@ contains
           "⌀"//fixed_number(1000.0_wp * d, 0))
         call put_dimension(sheet, [cx - 0.5_wp * bw, cy - 0.5_wp * dw], [cx + 0.5_wp * bw, cy - 0.5_wp * dw], 6.0_wp, &
           fixed_number(1000.0_wp * b, 0))
-        call sheet%text(cx, y0 + h - 3.0_wp, words("scale ", "масштаб ", lang)//disc_scale%text//", "// &
-          words("dimensions in mm", "размеры в мм", lang), "small", anchor_middle)
+        text = words("scale ", "масштаб ", lang)//disc_scale%text//", "// &
+          words("dimensions in mm", "размеры в мм", lang)
+        ! (from the panel's left edge where it is wider than the disc's half of the panel: A4)
+        if (fitted_size(text, 2.4_wp, 0.5_wp * w - 4.0_wp, 0.6_wp) < 2.4_wp) then
+          call sheet%text(x0 + 2.0_wp, y0 + h - 3.0_wp, text, "small", anchor_start)
+        else
+          call sheet%text(cx, y0 + h - 3.0_wp, text, "small", anchor_middle)
+        end if
       else
         call sheet%text(x0 + 4.0_wp, y0 + 14.0_wp, &
           words("no flywheel: J_flywheel = 0", "маховик не нужен: J_м = 0", lang), "label")

@@ -275,6 +275,22 @@ if [ "$rc" -eq 0 ] && sed 's/<[^>]*>//g' "$dir/kinetostatics.svg" | grep -q "F56
   && python3 "$sheets_check" labels --lines "$dir/kinetostatics.svg" >"$cli_tmp/check.out" 2>&1; then pass
 else fail sheets-a4-guide-reaction "exit $rc: no F56 line of action note, dynamics not 210 x 297, or $(head -3 "$cli_tmp/check.out")"; fi
 
+# A3 landscape: the kinematics and the dynamics sheets' middle column stops above the title
+# block, the mechanism panel's heading in two lines: no label over a label or a line, leader
+# lines counted (PR 3207; the engine and the six-bar in --long)
+sheets_a3="pr3207_flywheel"
+if [ "${KINETOSTAT_LONG:-0}" = 1 ]; then sheets_a3="$sheets_a3 assur_engine_flywheel sixbar_flywheel"; fi
+for deck in $sheets_a3; do
+  dir="$cli_tmp/sheets_a3_$deck"
+  rm -rf "$dir"
+  run_ks sheets "data/$deck.nml" -o "$dir" --paper A3 --lang en --student X --group G --variant 1
+  sheets_a3_svgs="$dir/kinematics.svg"
+  [ "$deck" = sixbar_flywheel ] || sheets_a3_svgs="$sheets_a3_svgs $dir/dynamics.svg"
+  if [ "$rc" -eq 0 ] && sheets_iso "$dir/kinematics.svg" 420.00 297.00 >"$cli_tmp/check.out" 2>&1 \
+    && python3 "$sheets_check" labels --lines $sheets_a3_svgs >>"$cli_tmp/check.out" 2>&1; then pass
+  else fail "sheets-a3-$deck" "exit $rc: $(grep -v '^[0-9]* sheets' "$cli_tmp/check.out" | head -4)"; fi
+done
+
 # --paper, --designation (графа 2 and 26, turned 180 deg), --sheet-numbers, --at
 dir="$cli_tmp/sheets_opts"
 rm -rf "$dir"
@@ -285,7 +301,8 @@ if [ "$rc" -eq 0 ] && sheets_iso "$dir/dynamics.svg" 594.00 420.00 >/dev/null 2>
   && grep -q '>Sheet 6<' "$dir/dynamics.svg" && grep -q '>Sheet 5<' "$dir/kinetostatics.svg" \
   && grep -q '>Sheet 4<' "$dir/kinematics.svg" \
   && grep -q '>Sheets 3<' "$dir/kinetostatics.svg" && grep -q 'step 7 of 361' "$dir/kinetostatics.svg" \
-  && python3 "$sheets_check" labels --lines "$dir/dynamics.svg" "$dir/kinetostatics.svg" >"$cli_tmp/check.out" 2>&1; then pass
+  && python3 "$sheets_check" labels --lines "$dir/dynamics.svg" "$dir/kinetostatics.svg" "$dir/kinematics.svg" \
+    >"$cli_tmp/check.out" 2>&1; then pass
 else fail sheets-options "exit $rc $(head -c 300 "$err") $(head -3 "$cli_tmp/check.out" 2>/dev/null)"; fi
 # the default position: the step of the largest |M1|
 run_ks data/assur_slider_crank.nml --format summary
