@@ -84,7 +84,7 @@ contains
     character(len=note_length), allocatable :: heading(:)
     real(wp) :: heading_drop
     !> Distance between the heading's lines, mm.
-    real(wp), parameter :: heading_pitch = 3.8_wp
+    real(wp), parameter :: heading_pitch = 4.6_wp
     integer :: i
     type(plot_t) :: q
 

@@ -275,20 +275,24 @@ if [ "$rc" -eq 0 ] && sed 's/<[^>]*>//g' "$dir/kinetostatics.svg" | grep -q "F56
   && python3 "$sheets_check" labels --lines "$dir/kinetostatics.svg" >"$cli_tmp/check.out" 2>&1; then pass
 else fail sheets-a4-guide-reaction "exit $rc: no F56 line of action note, dynamics not 210 x 297, or $(head -3 "$cli_tmp/check.out")"; fi
 
-# A3 landscape: the kinematics and the dynamics sheets' middle column stops above the title
-# block, the mechanism panel's heading in two lines: no label over a label or a line, leader
-# lines counted (PR 3207; the engine and the six-bar in --long)
-sheets_a3="pr3207_flywheel"
-if [ "${KINETOSTAT_LONG:-0}" = 1 ]; then sheets_a3="$sheets_a3 assur_engine_flywheel sixbar_flywheel"; fi
-for deck in $sheets_a3; do
-  dir="$cli_tmp/sheets_a3_$deck"
+# A3 and A2 landscape: the kinematics and the dynamics sheets' middle column stops above the
+# title block (A3), the mechanism panel's heading in two lines (in Russian on A2 its break
+# before a subscript): no label over a label or a line, leader lines counted (PR 3207; the
+# engine and the six-bar in --long)
+sheets_a3="pr3207_flywheel:A3:en:420.00:297.00 pr3207_flywheel:A2:ru:594.00:420.00"
+if [ "${KINETOSTAT_LONG:-0}" = 1 ]; then
+  sheets_a3="$sheets_a3 assur_engine_flywheel:A3:en:420.00:297.00 sixbar_flywheel:A3:ru:420.00:297.00"
+fi
+for spec in $sheets_a3; do
+  IFS=: read -r deck paper lang pw ph <<<"$spec"
+  dir="$cli_tmp/sheets_${paper}_${deck}_$lang"
   rm -rf "$dir"
-  run_ks sheets "data/$deck.nml" -o "$dir" --paper A3 --lang en --student X --group G --variant 1
+  run_ks sheets "data/$deck.nml" -o "$dir" --paper "$paper" --lang "$lang" --student X --group G --variant 1
   sheets_a3_svgs="$dir/kinematics.svg"
   [ "$deck" = sixbar_flywheel ] || sheets_a3_svgs="$sheets_a3_svgs $dir/dynamics.svg"
-  if [ "$rc" -eq 0 ] && sheets_iso "$dir/kinematics.svg" 420.00 297.00 >"$cli_tmp/check.out" 2>&1 \
+  if [ "$rc" -eq 0 ] && sheets_iso "$dir/kinematics.svg" "$pw" "$ph" >"$cli_tmp/check.out" 2>&1 \
     && python3 "$sheets_check" labels --lines $sheets_a3_svgs >>"$cli_tmp/check.out" 2>&1; then pass
-  else fail "sheets-a3-$deck" "exit $rc: $(grep -v '^[0-9]* sheets' "$cli_tmp/check.out" | head -4)"; fi
+  else fail "sheets-$paper-$deck-$lang" "exit $rc: $(grep -v '^[0-9]* sheets' "$cli_tmp/check.out" | head -4)"; fi
 done
 
 # --paper, --designation (графа 2 and 26, turned 180 deg), --sheet-numbers, --at
