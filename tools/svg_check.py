@@ -217,6 +217,9 @@ def png_pixels(path):
     stride = width * channels
     rows = []
     previous = bytearray(stride)
+    # bytewise sums without carries between bytes, on the rows as big integers (filter Up)
+    low = int.from_bytes(b"\x7f" * stride, "big")
+    high = int.from_bytes(b"\x80" * stride, "big")
     i = 0
     for _ in range(height):
         kind = raw[i]
@@ -227,7 +230,8 @@ def png_pixels(path):
             previous = line
             continue
         if kind == 2:
-            line = bytearray((u + v) & 255 for u, v in zip(line, previous))
+            u, v = int.from_bytes(line, "big"), int.from_bytes(previous, "big")
+            line = bytearray((((u & low) + (v & low)) ^ ((u ^ v) & high)).to_bytes(stride, "big"))
             rows.append(bytes(line))
             previous = line
             continue
@@ -245,13 +249,38 @@ def png_pixels(path):
             for x in range(channels, stride):
                 line[x] = (line[x] + (line[x - channels] + previous[x]) // 2) & 255
         elif kind == 4:
-            for x in range(channels, stride):
-                a, b, c = line[x - channels], previous[x], previous[x - channels]
-                pa, pb, pc = abs(b - c), abs(a - c), abs(a + b - 2 * c)
-                line[x] = (line[x] + (a if pa <= pb and pa <= pc else (b if pb <= pc else c))) & 255
+            paeth_row(line, previous, channels)
         rows.append(bytes(line))
         previous = line
     return width, height, channels, rows
+
+
+def paeth_row(line, previous, channels):
+    """Undoes the Paeth filter of a row after its first pixel, in place. Where the filtered
+    byte is 0 and the row above repeats its pixel (b = c), the predictor is the left byte
+    (|b - c| = 0 is the least distance), so the row repeats its last pixel there: such
+    stretches are copied, the other bytes computed one by one."""
+    stride = len(line)
+    # the bytes that need the full rule: a filtered byte not 0, or b != c above
+    changed = int.from_bytes(previous[channels:], "big") ^ int.from_bytes(previous[:-channels], "big")
+    busy = bytes(line[channels:])
+    marks = bytearray(changed.to_bytes(stride - channels, "big"))
+    for m in re.finditer(rb"[^\x00]+", busy):
+        marks[m.start():m.end()] = busy[m.start():m.end()]
+    x = channels
+    for m in re.finditer(rb"[^\x00]+", bytes(marks)):
+        first, last = m.start() + channels, m.end() + channels
+        if first > x:  # a stretch of the left pixel repeated
+            span = first - x
+            line[x:first] = (bytes(line[x - channels:x]) * (span // channels + 1))[:span]
+        for x in range(first, last):
+            a, b, c = line[x - channels], previous[x], previous[x - channels]
+            pa, pb, pc = abs(b - c), abs(a - c), abs(a + b - 2 * c)
+            line[x] = (line[x] + (a if pa <= pb and pa <= pc else (b if pb <= pc else c))) & 255
+        x = last
+    if stride > x:
+        span = stride - x
+        line[x:stride] = (bytes(line[x - channels:x]) * (span // channels + 1))[:span]
 
 
 def check_png(png_path, svg_path):
