@@ -11,18 +11,22 @@ module test_lapack
   use kinetostat_error, only: error_t
   use kinetostat_lapack, only: solve_dense, singular_by_estimate, solve_by_dgesv, solve_by_port, inverse_norm_bound, &
     factor_dense, solve_factored, trsm_table
-  use test_harness, only: test_counts_t, check_true
+  use test_harness, only: test_counts_t, check_true, long_checks
   implicit none
   private
   public :: run_lapack_tests
 
-  !> Fuzzed systems per size.
-  integer, parameter :: system_count = 20000
+  !> Fuzzed systems per size and check: the first 5000 of the same fixed sequence; all 20000
+  !> with `tools/test --long` (long_checks).
+  integer, parameter :: sample_system_count = 5000, long_system_count = 20000
+  !> Fuzzed systems per size in this run (run_lapack_tests sets it).
+  integer :: system_count = sample_system_count
 
 contains
 
   subroutine run_lapack_tests(t)
     type(test_counts_t), intent(inout) :: t
+    system_count = merge(long_system_count, sample_system_count, long_checks())
     call fuzz(t, 6)
     call fuzz(t, 3)
     call bound_holds(t, 6)

@@ -217,6 +217,9 @@ def png_pixels(path):
     stride = width * channels
     rows = []
     previous = bytearray(stride)
+    # bytewise sums without carries between bytes, on the rows as big integers (filter Up)
+    low = int.from_bytes(b"\x7f" * stride, "big")
+    high = int.from_bytes(b"\x80" * stride, "big")
     i = 0
     for _ in range(height):
         kind = raw[i]
@@ -227,7 +230,8 @@ def png_pixels(path):
             previous = line
             continue
         if kind == 2:
-            line = bytearray((u + v) & 255 for u, v in zip(line, previous))
+            u, v = int.from_bytes(line, "big"), int.from_bytes(previous, "big")
+            line = bytearray((((u & low) + (v & low)) ^ ((u ^ v) & high)).to_bytes(stride, "big"))
             rows.append(bytes(line))
             previous = line
             continue
@@ -245,13 +249,38 @@ def png_pixels(path):
             for x in range(channels, stride):
                 line[x] = (line[x] + (line[x - channels] + previous[x]) // 2) & 255
         elif kind == 4:
-            for x in range(channels, stride):
-                a, b, c = line[x - channels], previous[x], previous[x - channels]
-                pa, pb, pc = abs(b - c), abs(a - c), abs(a + b - 2 * c)
-                line[x] = (line[x] + (a if pa <= pb and pa <= pc else (b if pb <= pc else c))) & 255
+            paeth_row(line, previous, channels)
         rows.append(bytes(line))
         previous = line
     return width, height, channels, rows
+
+
+def paeth_row(line, previous, channels):
+    """Undoes the Paeth filter of a row after its first pixel, in place. Where the filtered
+    byte is 0 and the row above repeats its pixel (b = c), the predictor is the left byte
+    (|b - c| = 0 is the least distance), so the row repeats its last pixel there: such
+    stretches are copied, the other bytes computed one by one."""
+    stride = len(line)
+    # the bytes that need the full rule: a filtered byte not 0, or b != c above
+    changed = int.from_bytes(previous[channels:], "big") ^ int.from_bytes(previous[:-channels], "big")
+    busy = bytes(line[channels:])
+    marks = bytearray(changed.to_bytes(stride - channels, "big"))
+    for m in re.finditer(rb"[^\x00]+", busy):
+        marks[m.start():m.end()] = busy[m.start():m.end()]
+    x = channels
+    for m in re.finditer(rb"[^\x00]+", bytes(marks)):
+        first, last = m.start() + channels, m.end() + channels
+        if first > x:  # a stretch of the left pixel repeated
+            span = first - x
+            line[x:first] = (bytes(line[x - channels:x]) * (span // channels + 1))[:span]
+        for x in range(first, last):
+            a, b, c = line[x - channels], previous[x], previous[x - channels]
+            pa, pb, pc = abs(b - c), abs(a - c), abs(a + b - 2 * c)
+            line[x] = (line[x] + (a if pa <= pb and pa <= pc else (b if pb <= pc else c))) & 255
+        x = last
+    if stride > x:
+        span = stride - x
+        line[x:stride] = (bytes(line[x - channels:x]) * (span // channels + 1))[:span]
 
 
 def check_png(png_path, svg_path):
@@ -362,11 +391,18 @@ def text_box(el, sizes):
     return box, text
 
 
-def text_boxes(svg_path):
-    """(box, text) of every <text>: box = (x0, y0, x1, y1) in mm as text_box says."""
+def read_sheet(svg_path):
+    """(root element, font sizes, stroke widths of the style sheet's classes) of a sheet,
+    parsed once for all the checks of check_labels."""
     source = open(svg_path, encoding="utf-8").read()
-    sizes, _ = style_sizes(source)
-    root = ET.fromstring(source)
+    sizes, widths = style_sizes(source)
+    return ET.fromstring(source), sizes, widths
+
+
+def text_boxes(sheet):
+    """(box, text) of every <text> of a sheet (read_sheet): box = (x0, y0, x1, y1) in mm as
+    text_box says."""
+    root, sizes, _ = sheet
     boxes = []
     for el in root.iter(SVG_NS + "text"):
         box, text = text_box(el, sizes)
@@ -454,12 +490,16 @@ def segment_box_distance(s, box):
                point_segment(box[0], box[3]), point_segment(box[2], box[3]))
 
 
-def lines_under_labels(path, boxes):
-    """The labels of a sheet that lie over a drawn line (drawn_segments), and the number of
-    its leader lines. A leader line may touch the label it leads to."""
-    source = open(path, encoding="utf-8").read()
-    _, widths = style_sizes(source)
-    segments = drawn_segments(ET.fromstring(source), widths)
+def lines_under_labels(path, sheet, boxes):
+    """The labels of the sheet (read_sheet) at path that lie over a drawn line
+    (drawn_segments), and the number of its leader lines. A leader line may touch the label
+    it leads to."""
+    root, _, widths = sheet
+    segments = drawn_segments(root, widths)
+    # each segment's bounding box and the least gap between it and a label's box at which
+    # the segment cannot lie under the label
+    bounds = [(min(s[0], s[2]), min(s[1], s[3]), max(s[0], s[2]), max(s[1], s[3]), s[4] - 0.01 + 1e-9)
+              for s in segments]
     cell = 10.0
     grid = {}
     for n, s in enumerate(segments):
@@ -476,12 +516,12 @@ def lines_under_labels(path, boxes):
                     if n in seen:
                         continue
                     seen.add(n)
-                    s = segments[n]
                     # the bounding boxes' gap is no more than the distance: a segment whose
                     # gap leaves no depth above 0.01 mm cannot lie under the label
-                    if max(min(s[0], s[2]) - b[2], b[0] - max(s[0], s[2]),
-                           min(s[1], s[3]) - b[3], b[1] - max(s[1], s[3])) >= s[4] - 0.01 + 1e-9:
+                    sx0, sy0, sx1, sy1, gap = bounds[n]
+                    if sx0 - b[2] >= gap or b[0] - sx1 >= gap or sy0 - b[3] >= gap or b[1] - sy1 >= gap:
                         continue
+                    s = segments[n]
                     depth = s[4] - segment_box_distance(s, b)
                     if s[5] == "leader":
                         # its own label: an end of the leader on the box's edge
@@ -507,8 +547,9 @@ def check_labels(paths, lines=False):
     bad = []
     leaders = 0
     for path in paths:
-        boxes = text_boxes(path)
-        view = [float(v) for v in ET.parse(path).getroot().get("viewBox").split()]
+        sheet = read_sheet(path)
+        boxes = text_boxes(sheet)
+        view = [float(v) for v in sheet[0].get("viewBox").split()]
         for (b, text) in boxes:
             if b[0] < view[0] - 0.01 or b[2] > view[0] + view[2] + 0.01 or b[1] < view[1] - 0.01 or \
                     b[3] > view[1] + view[3] + 0.01:
@@ -533,7 +574,7 @@ def check_labels(paths, lines=False):
                 bad.append(f"{path}: {ta!r} at ({a[0]:.2f}, {a[3]:.2f}) overlaps {tb!r} at "
                            f"({b[0]:.2f}, {b[3]:.2f}) by {w:.2f} x {h:.2f} mm")
         if lines:
-            over, n = lines_under_labels(path, boxes)
+            over, n = lines_under_labels(path, sheet, boxes)
             bad += over
             leaders += n
     if lines:

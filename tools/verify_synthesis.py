@@ -70,13 +70,18 @@ def inv(a):
 
 
 def inv_inverse(v):
-    """Bisection on [0, pi/2) (the program uses Newton's method)."""
+    """Bisection on [0, pi/2) (the program uses Newton's method), to the last bit: it stops
+    when a step changes neither end (every later step would be the same)."""
     lo, hi = 0.0, math.pi / 2 - 1e-12
     for _ in range(200):
         mid = 0.5 * (lo + hi)
         if inv(mid) < v:
+            if lo == mid:
+                break
             lo = mid
         else:
+            if hi == mid:
+                break
             hi = mid
     return 0.5 * (lo + hi)
 
@@ -127,11 +132,15 @@ def pair(m, z1, z2, x1, x2, alpha=20.0, ha=1.0, c=0.25, sa_min=0.25, samples=200
         return math.hypot(N1[0] + t * u[0] - centre[0], N1[1] + t * u[1] - centre[1])
     def cross(centre, radius, lo, hi):
         flo = dist(lo, centre) - radius
-        for _ in range(200):
+        for _ in range(200):  # to the last bit (inv_inverse)
             mid = 0.5 * (lo + hi)
             if (dist(mid, centre) - radius > 0) == (flo > 0):
+                if lo == mid:
+                    break
                 lo = mid
             else:
+                if hi == mid:
+                    break
                 hi = mid
         return 0.5 * (lo + hi)
     # gear 2's tip circle: its crossing on N1's side of N2 (the foot of O2, t = N1N2); gear

@@ -6,7 +6,7 @@
 # Default run: the first deck listed of each kind (namelist group) in table, CSV and JSON and
 # every other deck with a dynamics stage (`dynamics = 'steady'` or 'given': its figures are
 # reduced over the run) in table and JSON, at 1, 7 and the default; SVG at 7 and the default for the first deck
-# of each kind; a heavy deck (lib.sh: heavy_deck) in table only. `tools/test --long`: every
+# of each kind; a heavy deck (lib.sh: heavy_deck) in table only, at 7 and the default. `tools/test --long`: every
 # deck, every format, all three sizes.
 
 # block_rows_same NAME ARGS...: the run in blocks of 1 and of 7 rows (or the sizes in
@@ -48,7 +48,7 @@ for deck in data/*.nml docs/examples/*.nml; do
   # hold the figures reduced over the run as well as the rows (its CSV holds the rows only)
   blk_formats="table csv json"
   [ "${KINETOSTAT_LONG:-0}" != 1 ] && [ "$first_of_kind" = 0 ] && blk_formats="table json"
-  heavy_deck "$name" && blk_formats="table"
+  heavy_deck "$name" && blk_formats="table" block_sizes="7"
   for format in $blk_formats; do
     block_rows_same "block-rows-$name-$format" "$deck" --format "$format"
   done

@@ -1,17 +1,18 @@
 # --format dxf --at K: the --at sheet as an ASCII DXF (R12 entities, the drawing model's
 # layers), read back by tools/dxf_check.py against the CSV's positions on every linkage deck
-# at three steps (English and Russian; a heavy deck, lib.sh, at its first step by default);
+# at three steps (English and Russian; a heavy deck, lib.sh, with tools/test --long only: its
+# twin, pr3207_flywheel or assur_engine_flywheel, runs);
 # --format dxf: the sheet of a run; the check can fail;
 # usage errors.
 dxf_check="$root/tools/dxf_check.py"
 for deck in data/*.nml; do
   name=$(basename "$deck" .nml)
   case "$name" in gears_*|cam_*|gear_geometry_*|planetary_synthesis*|assur_toggle) continue ;; esac
+  heavy_deck "$name" && continue
   run_ks_cached "$name.kin.csv" "$deck" --format csv --kinematics
   cp "$out" "$cli_tmp/$name.kin.csv"
   steps=$(($(wc -l <"$out") - 1))
   dxf_steps="1 $(((steps + 1) / 2)) $steps"
-  heavy_deck "$name" && dxf_steps=1
   for k in $dxf_steps; do
     lang=en; [ "$k" = 1 ] && lang=ru
     run_ks "$deck" --format dxf --at "$k" --lang "$lang"

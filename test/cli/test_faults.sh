@@ -37,6 +37,20 @@ ft_wait_for() {
   return 1
 }
 
+# ft_wait_spool: until the background run (ft_background) holds its spool's file in its
+# private TMPDIR (anonymous: seen as a descriptor in /proc/PID/fd), up to 10 s; where /proc
+# does not show descriptors, 1.5 s. Fails when the run is gone or no such file was seen.
+ft_wait_spool() {
+  local i
+  [ -d "/proc/$ft_pid/fd" ] || { sleep 1.5; return 0; }
+  for i in $(seq 1 200); do
+    ls -l "/proc/$ft_pid/fd" 2>/dev/null | grep -qF " -> $ft_tmp/" && return 0
+    [ -d "/proc/$ft_pid/fd" ] || return 1
+    sleep 0.05
+  done
+  return 1
+}
+
 # ft_background ARGS...: kinetostat in the background with SIGINT at its default action
 # (a non-interactive shell starts background jobs with SIGINT ignored), TMPDIR private;
 # its id in $ft_pid.
@@ -168,12 +182,13 @@ for sig in INT TERM HUP; do
   kill -"$sig" "$ft_pid"; wait "$ft_pid" 2>/dev/null; rc=$?
   [ "$rc" -eq $((128 + num)) ] && [ "$(cat "$ft_dir/sigfile")" = old ] && ! ls "$ft_dir"/sigfile.tmp.* >/dev/null 2>&1 \
     && pass || fail "faults-signal-$sig-o" "exit $rc (expected $((128 + num))), file $(head -c 20 "$ft_dir/sigfile"), $(ls "$ft_dir")"
-  # to standard output: the spool (anonymous, in TMPDIR) leaves nothing
+  # to standard output: the spool (anonymous, in TMPDIR) leaves nothing; the signal comes
+  # once the spool has its file
   ft_background "${ft_big[@]}"
-  sleep 1.5
+  ft_wait_spool; spooled=$?
   kill -"$sig" "$ft_pid"; wait "$ft_pid" 2>/dev/null; rc=$?
-  [ "$rc" -eq $((128 + num)) ] && [ ! -s "$ft_dir/bg.out" ] && pass \
-    || fail "faults-signal-$sig-stdout" "exit $rc (expected $((128 + num))), stdout $(wc -c <"$ft_dir/bg.out") bytes"
+  [ "$spooled" -eq 0 ] && [ "$rc" -eq $((128 + num)) ] && [ ! -s "$ft_dir/bg.out" ] && pass \
+    || fail "faults-signal-$sig-stdout" "exit $rc (expected $((128 + num))), stdout $(wc -c <"$ft_dir/bg.out") bytes, spool's file seen: $([ "$spooled" -eq 0 ] && echo yes || echo no)"
   ft_no_temps "faults-signal-$sig-temps"
 done
 # SIGTERM after 0.3 s (before the spool took anything)

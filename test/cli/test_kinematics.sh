@@ -2,13 +2,15 @@
 # columns (so every default row is a prefix of the kinematics row); the legacy table ignores
 # the option; the JSON with them loads and names them with their units and frames. The runs
 # without --kinematics are the goldens of data/expected (the golden check proves them the
-# binary's output).
+# binary's output). A heavy deck (lib.sh) with tools/test --long only: its twin
+# (pr3207_flywheel, assur_engine_flywheel) runs.
 
 for deck in data/*.nml; do
   name=$(basename "$deck" .nml)
   [ "$name" = assur_toggle ] && continue
   # the design kinds have no kinematics columns (--kinematics changes nothing there)
   case "$name" in gear_geometry_*|planetary_synthesis*|cam_profile_*) continue ;; esac
+  heavy_deck "$name" && continue
   # the run without --kinematics: its golden (the golden check proves it the binary's output)
   cp "data/expected/$name.csv" "$cli_tmp/k_plain.csv"
   run_ks_cached "$name.kin.csv" "$deck" --format csv --kinematics; cp "$out" "$cli_tmp/k_kin.csv"

@@ -1,12 +1,14 @@
 # --format npy: the CSV's columns as a NumPy .npy file. tools/npy_check.py (a reader of the
 # format in Python's standard library; numpy and pandas too when installed) compares every
 # file with the CSV of the same run: header, field names and order, record count, and every
-# value rounded to 13 significant digits against the CSV's text (an empty cell: NaN).
+# value rounded to 13 significant digits against the CSV's text (an empty cell: NaN). A heavy
+# deck (lib.sh) with tools/test --long only: its twin (pr3207_flywheel, assur_engine_flywheel) runs.
 
 # every bundled deck that runs, with the kinematics columns
 npy_pairs=()
 for deck in data/*.nml; do
   name=$(basename "$deck" .nml)
+  heavy_deck "$name" && continue
   run_ks_cached "$name.kin.csv" "$deck" --format csv --kinematics
   [ "$rc" -eq 0 ] || continue
   cp "$out" "$cli_tmp/npy_$name.csv"
