@@ -9,8 +9,8 @@ module kinetostat_dynamics_table
   use kinetostat_dynamics_deck, only: dynamics_deck_t, dynamics_mode_name
   implicit none
   private
-  public :: note_constant_speed_cost, echo_dynamics, add_dynamics_columns, put_dynamics_values, put_dynamics_figures, &
-    note_drive_deviation
+  public :: note_constant_speed_cost, note_constant_speed_costs, echo_dynamics, add_dynamics_columns, put_dynamics_values, &
+    put_dynamics_figures, note_drive_deviation
 
 contains
 
@@ -156,6 +156,21 @@ contains
     real(wp), intent(in) :: peak_const
     call table%block_tally%note_peak(name, peak_true, peak_const)
   end subroutine note_constant_speed_cost
+
+  !> note_constant_speed_cost for every force of `names`.
+  pure subroutine note_constant_speed_costs(table, names, peak_true, peak_const)
+    type(step_table_t), intent(inout) :: table
+    !> Force columns ("F16", ...), blank-padded.
+    character(*), intent(in) :: names(:)
+    !> Largest magnitude of each force over the block with the true motion, N.
+    real(wp), intent(in) :: peak_true(:)
+    !> The same at constant speed, N.
+    real(wp), intent(in) :: peak_const(:)
+    integer :: i
+    do i = 1, size(names)
+      call note_constant_speed_cost(table, trim(names(i)), peak_true(i), peak_const(i))
+    end do
+  end subroutine note_constant_speed_costs
 
   !> An optional logical's value, false when absent.
   pure logical function optional_true(flag)

@@ -13,7 +13,7 @@ module kinetostat_step_table
   implicit none
   private
   public :: step_table_t, column_t, column, echo_record_t, echo_cursor_t, remark_t, column_tally_t, edge_point_t, &
-    step_span, worst_row
+    step_span, worst_row, lack_block_memory
   public :: col_input_angle, col_force, col_force_angle, col_component, col_moment, col_length, &
     col_flag, col_count, col_ratio, col_other, column_kind_names
   public :: echo_real_kind, echo_int_kind, echo_logical_kind, echo_array_kind, echo_text_kind, &
@@ -289,6 +289,7 @@ module kinetostat_step_table
     procedure :: is_void
     procedure :: void_cell
     procedure :: set_selfcheck
+    procedure :: set_selfcheck_rows
     procedure :: echo_real => echo_value
     procedure :: echo_int => echo_value
     procedure :: echo_logical => echo_value
@@ -345,6 +346,17 @@ contains
     if (present(first)) k1 = first
     if (present(last)) k2 = last
   end subroutine step_span
+
+  !> The error of a block's results that do not fit in memory.
+  pure subroutine lack_block_memory(error, steps, step_bytes)
+    !> The error to create.
+    type(error_t), allocatable, intent(out) :: error
+    !> Steps of the block.
+    integer, intent(in) :: steps
+    !> Bytes of one step's results.
+    integer(int64), intent(in) :: step_bytes
+    call out_of_memory(error, "the results of a block of "//int_str(steps)//" steps", steps * step_bytes)
+  end subroutine lack_block_memory
 
   !> Whether the rows now in the table end the run (the footers are written then).
   pure logical function last_block(self)
@@ -822,6 +834,19 @@ contains
     self%block_tally%mismatch = running_max_t(max_mismatch, row, .true.)
     self%driver = driver
   end subroutine set_selfcheck
+
+  !> set_selfcheck from the figures of every row of the block: the largest of each and its
+  !> row (worst_row: the first NaN, else the largest).
+  pure subroutine set_selfcheck_rows(self, residuals, mismatches, driver)
+    class(step_table_t), intent(inout) :: self
+    !> Relative equilibrium residual of every row of the block.
+    real(wp), intent(in) :: residuals(:)
+    !> Relative mismatch of the driving effort of every row of the block.
+    real(wp), intent(in) :: mismatches(:)
+    !> Name of the driving quantity ("M1", "F2", ...).
+    character(*), intent(in) :: driver
+    call self%set_selfcheck(maxval(residuals), maxval(mismatches), driver, worst_row(residuals), worst_row(mismatches))
+  end subroutine set_selfcheck_rows
 
   !> Index of the worst self-check figure of a block: the first NaN, else the largest (1
   !> for an empty array).
