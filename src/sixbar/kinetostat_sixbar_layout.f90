@@ -304,7 +304,7 @@ contains
     logical, intent(in) :: with_m1
     type(table_field_t), allocatable :: fields(:)
     type(table_field_t), allocatable :: moment(:)
-    moment = [table_field_t ::]
+    allocate (moment(0)) ! no M1 (and defined before the assignment: gcc's -Wuninitialized)
     if (with_m1) moment = [field("M1", 12, 3)]
     fields = magnitudes_over_angles("phi1", force_names, force_names(1:size(force_names) - 1), moment)
   end function results_layout
