@@ -118,7 +118,7 @@ contains
         if (index(table%columns(k)%name, "F2") == 1) table%columns(k)%voidable = .true.
       end do
     end if
-    call table%set_selfcheck_rows(steps%residual, steps%mismatch, "N")
+    call table%set_selfcheck_rows([steps%residual], [steps%mismatch], "N")
     ! the steps jammed and those that lost contact, counted by the pipeline over the run
     table%block_tally%flags = [flagged([steps%jammed]), flagged([steps%lost])]
   contains

@@ -101,7 +101,7 @@ contains
         call put_kinematics(table, i, res(i))
       end do
     end if
-    call table%set_selfcheck_rows(res%residual, res%mismatch, "M2")
+    call table%set_selfcheck_rows([res%residual], [res%mismatch], "M2")
     call echo_deck(self%deck, table)
   end subroutine solve
 

@@ -200,7 +200,7 @@ contains
         call put_kinematics(table, k, self%deck%p, steps(k))
       end do
     end if
-    call table%set_selfcheck_rows(steps%residual, steps%mismatch, "F2")
+    call table%set_selfcheck_rows([steps%residual], [steps%mismatch], "F2")
   end subroutine solve
 
   !> The reduced quantities of a computed step, reduced to the stroke s (dynamics = 'reduced';

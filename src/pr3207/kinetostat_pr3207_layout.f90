@@ -183,7 +183,7 @@ contains
         call put_kinematics(table, k, self%deck%p, steps(k))
       end do
     end if
-    call table%set_selfcheck_rows(steps%residual, steps%mismatch, "M1")
+    call table%set_selfcheck_rows([steps%residual], [steps%mismatch], "M1")
   end subroutine solve
 
   !> The peaks of the pair forces with the true motion against those at omega1 = omega_m.
