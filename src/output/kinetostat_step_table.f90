@@ -274,6 +274,7 @@ module kinetostat_step_table
     procedure :: finish_columns
     procedure :: set_columns
     procedure :: declare_columns
+    procedure :: declare_record
     procedure :: column_index
     procedure :: dynamics_records
     procedure :: shaft_inertia
@@ -426,6 +427,23 @@ contains
     if (.not. allocated(self%columns)) allocate (self%columns(0))
     self%columns = [self%columns, columns]
   end subroutine declare_columns
+
+  !> Declare a design kind's one record of named values (single_record): its columns, what
+  !> the row is ("pair", "train") and the figure the run is about (driver); its row allocated.
+  pure subroutine declare_record(self, columns, row_name, driver)
+    class(step_table_t), intent(inout) :: self
+    !> The record's columns.
+    type(column_t), intent(in) :: columns(:)
+    !> What the row is.
+    character(*), intent(in) :: row_name
+    !> The column the run is about.
+    character(*), intent(in) :: driver
+    call self%declare_columns(columns)
+    self%row_name = row_name
+    self%driver = driver
+    self%single_record = .true.
+    call self%allocate_rows(1)
+  end subroutine declare_record
 
   !> Append one column.
   pure subroutine add_column(self, name, unit, kind, csv)
