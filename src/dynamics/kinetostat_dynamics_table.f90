@@ -10,7 +10,7 @@ module kinetostat_dynamics_table
   implicit none
   private
   public :: note_constant_speed_cost, note_constant_speed_costs, echo_dynamics, add_dynamics_columns, put_dynamics_values, &
-    put_dynamics_figures, note_drive_deviation
+    put_dynamics_rows, put_dynamics_figures, note_drive_deviation
 
 contains
 
@@ -86,6 +86,19 @@ contains
     table%rows(c + 3:c + 9, k) = [motion%dt, motion%omega, motion%eps, motion%t, motion%a_md, motion%dt - motion%a_md, &
                                   motion%t_i]
   end subroutine put_dynamics_values
+
+  !> put_dynamics_values for every row of the block (row k from motions(k)).
+  pure subroutine put_dynamics_rows(table, mode, motions)
+    type(step_table_t), intent(inout) :: table
+    !> dynamics_* mode.
+    integer, intent(in) :: mode
+    !> The motion and the reduced quantities of every row.
+    type(motion_t), intent(in) :: motions(:)
+    integer :: k
+    do k = 1, size(motions)
+      call put_dynamics_values(table, k, mode, motions(k))
+    end do
+  end subroutine put_dynamics_rows
 
   !> The figures of a solved cycle (first block only); `delta_asked` > 0 with 'steady'.
   pure subroutine put_dynamics_figures(table, mode, cycle, delta_asked)

@@ -341,7 +341,11 @@ contains
     !> lang_en or lang_ru.
     integer, intent(in) :: lang
     character(len=:), allocatable :: text
-    text = in_language(english, translated(english, label_words), lang)
+    if (lang == lang_ru) then
+      text = translated(english, label_words)
+    else
+      text = english
+    end if
   end function label
 
   !> A unit symbol for a drawing in language `lang`: the table's symbol (Н*м, кг*м^2) with the
@@ -483,7 +487,7 @@ contains
     integer :: i
     text = english
     do i = 1, size(words)
-      if (english_of(words(i)) /= english) cycle
+      if (words(i)(1:index(words(i), "=>") - 1) /= english) cycle
       text = russian_of(words(i))
       return
     end do

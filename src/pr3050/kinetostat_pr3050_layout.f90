@@ -23,7 +23,7 @@ module kinetostat_pr3050_layout
   use kinetostat_drawing, only: drawing_t, force_load
   use kinetostat_bodies, only: mass_model_t
   use kinetostat_dynamics, only: motion_t, dynamics_none
-  use kinetostat_dynamics_table, only: echo_dynamics, add_dynamics_columns, put_dynamics_values
+  use kinetostat_dynamics_table, only: echo_dynamics, add_dynamics_columns, put_dynamics_rows
   implicit none
   private
   public :: pr3050_mechanism_t, new_pr3050, pr3050_solve, pr3050_columns, pr3050_csv_values
@@ -192,9 +192,8 @@ contains
       end associate
     end do
     !$omp end parallel do
-    do k = 1, merge(size(steps), 0, self%deck%dyn%mode /= dynamics_none)
-      call put_dynamics_values(table, k, self%deck%dyn%mode, reduced_motion(self%deck, steps(k)))
-    end do
+    if (self%deck%dyn%mode /= dynamics_none) call put_dynamics_rows(table, self%deck%dyn%mode, &
+      reduced_motion(self%deck, steps))
     if (table%kinematics_wanted) then
       do k = 1, size(steps)
         call put_kinematics(table, k, self%deck%p, steps(k))
@@ -206,7 +205,7 @@ contains
   !> The reduced quantities of a computed step, reduced to the stroke s (dynamics = 'reduced';
   !> J_red with the drive's mass j_rotor, kg; dJ_red kg/m; M_red N); omega is the stroke's
   !> speed ds/dt of the step.
-  pure function reduced_motion(deck, s) result(mo)
+  elemental function reduced_motion(deck, s) result(mo)
     type(pr3050_deck_t), intent(in) :: deck
     type(pr3050_step_t), intent(in) :: s
     type(motion_t) :: mo

@@ -21,7 +21,7 @@ module kinetostat_pr3207_layout
   use kinetostat_bodies, only: mass_model_t
   use kinetostat_dynamics, only: cycle_t, motion_t, dynamics_steady
   use kinetostat_dynamics_table, only: note_constant_speed_costs, echo_dynamics, add_dynamics_columns, &
-    put_dynamics_values, put_dynamics_figures, &
+    put_dynamics_rows, put_dynamics_figures, &
     note_drive_deviation
   use kinetostat_pr3207_dynamics, only: pr3207_cycle, pr3207_motion
   implicit none
@@ -171,9 +171,7 @@ contains
     end do
     !$omp end parallel do
     if (allocated(motions)) then
-      do k = 1, size(steps)
-        call put_dynamics_values(table, k, self%deck%dyn%mode, motions(k))
-      end do
+      call put_dynamics_rows(table, self%deck%dyn%mode, motions)
       if (self%deck%dyn%mode >= dynamics_steady) call constant_speed_cost(steps, const, table)
       if (self%deck%dyn%mode >= dynamics_steady) call note_drive_deviation(table, [steps%m1], motions, &
         self%cycle%j_flywheel)

@@ -22,7 +22,7 @@ module kinetostat_sixbar_layout
   use kinetostat_drawing, only: drawing_t, force_load
   use kinetostat_bodies, only: mass_model_t
   use kinetostat_dynamics, only: motion_t, cycle_t, dynamics_steady
-  use kinetostat_dynamics_table, only: echo_dynamics, add_dynamics_columns, put_dynamics_values, &
+  use kinetostat_dynamics_table, only: echo_dynamics, add_dynamics_columns, put_dynamics_rows, &
     put_dynamics_figures, note_drive_deviation, note_constant_speed_costs
   use kinetostat_sixbar_dynamics, only: sixbar_source_t, sixbar_source, sixbar_cycle, sixbar_motion
   implicit none
@@ -219,15 +219,11 @@ contains
     end do
     !$omp end parallel do
     if (allocated(motions)) then
-      do k = 1, size(steps)
-        call put_dynamics_values(table, k, self%deck%dyn%mode, motions(k))
-      end do
+      call put_dynamics_rows(table, self%deck%dyn%mode, motions)
       call constant_speed_cost(table%deck, self%deck, steps, first, last, table)
       call note_drive_deviation(table, [steps%m1], motions, self%cycle%j_flywheel)
-    else
-      do k = 1, merge(size(steps), 0, self%deck%dyn%mode > 0)
-        call put_dynamics_values(table, k, self%deck%dyn%mode, reduced_motion(self%deck, steps(k)))
-      end do
+    else if (self%deck%dyn%mode > 0) then
+      call put_dynamics_rows(table, self%deck%dyn%mode, reduced_motion(self%deck, steps))
     end if
     if (table%kinematics_wanted) then
       do k = 1, size(steps)
@@ -269,7 +265,7 @@ contains
   end function pair_forces
 
   !> The reduced quantities of a computed step (dynamics = 'reduced': the deck's speed).
-  pure function reduced_motion(deck, s) result(mo)
+  elemental function reduced_motion(deck, s) result(mo)
     type(sixbar_deck_t), intent(in) :: deck
     type(sixbar_step_t), intent(in) :: s
     type(motion_t) :: mo
