@@ -4,14 +4,13 @@ module kinetostat_cam_layout
   use, intrinsic :: iso_fortran_env, only: int64
   use kinetostat_kinds, only: wp, deg_to_rad, rad_to_deg
   use kinetostat_deck, only: deck_source_t
-  use kinetostat_error, only: error_t, out_of_memory
+  use kinetostat_error, only: error_t
   use kinetostat_text, only: int_str, number_str, counted
   use kinetostat_vec2, only: magnitude, angle_360_deg
   use kinetostat_noise, only: noise_floor, force_components
-  use kinetostat_step_table, only: worst_row
   use kinetostat_run_tally, only: flag_count_t
   use kinetostat_step_table, only: step_table_t, column_t, column, col_input_angle, col_component, step_span, &
-    col_length, col_flag, col_ratio, col_other
+    col_length, col_flag, col_ratio, col_other, lack_block_memory
   use kinetostat_table_layout, only: table_field_t, field, force_and_angle, layout_columns, put_layout_heading, &
     put_fields
   use kinetostat_labels, only: lang_ru
@@ -71,8 +70,7 @@ contains
     call step_span(deck%n, k1, k2, first, last)
     allocate (steps(k2 - k1 + 1), stat=stat)
     if (stat /= 0) then
-      if (present(error)) call out_of_memory(error, "the results of a block of "//int_str(k2 - k1 + 1)//" steps", &
-        int(k2 - k1 + 1, int64) * storage_size(steps) / 8)
+      if (present(error)) call lack_block_memory(error, k2 - k1 + 1, storage_size(steps, int64) / 8)
       return
     end if
     !$omp parallel do schedule(static)
@@ -120,8 +118,7 @@ contains
         if (index(table%columns(k)%name, "F2") == 1) table%columns(k)%voidable = .true.
       end do
     end if
-    call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "N", &
-      worst_row([steps%residual]), worst_row([steps%mismatch]))
+    call table%set_selfcheck_rows([steps%residual], [steps%mismatch], "N")
     ! the steps jammed and those that lost contact, counted by the pipeline over the run
     table%block_tally%flags = [flagged([steps%jammed]), flagged([steps%lost])]
   contains
@@ -295,19 +292,17 @@ contains
     !> The row's flags KF2, JAM, LOST.
     real(wp), intent(in) :: kf2, jam, lost
     integer, intent(in) :: lang
+    !> The flags LOST and JAM in words, in English (column 1) and Russian (column 2).
+    character(*), parameter :: flag_words(2, 2) = reshape([character(len=60) :: &
+      "LOST CONTACT (F2 <= 0)", "JAMMED (SELF-LOCKING)", &
+      "ПОТЕРЯ КОНТАКТА (F2 <= 0)", "ЗАКЛИНИВАНИЕ (САМОТОРМОЖЕНИЕ)"], [2, 2])
+    integer :: l
+    l = merge(2, 1, lang == lang_ru)
     call out%append("  ")
     if (lost /= 0.0_wp) then
-      if (lang == lang_ru) then
-        call out%append("ПОТЕРЯ КОНТАКТА (F2 <= 0)")
-      else
-        call out%append("LOST CONTACT (F2 <= 0)")
-      end if
+      call out%append(flag_words(1, l)(1:len_trim(flag_words(1, l))))
     else if (jam /= 0.0_wp) then
-      if (lang == lang_ru) then
-        call out%append("ЗАКЛИНИВАНИЕ (САМОТОРМОЖЕНИЕ)")
-      else
-        call out%append("JAMMED (SELF-LOCKING)")
-      end if
+      call out%append(flag_words(2, l)(1:len_trim(flag_words(2, l))))
     else if (kf2 /= 0.0_wp) then
       call out%append("KF>2")
     end if

@@ -9,8 +9,8 @@ module kinetostat_dynamics_table
   use kinetostat_dynamics_deck, only: dynamics_deck_t, dynamics_mode_name
   implicit none
   private
-  public :: note_constant_speed_cost, echo_dynamics, add_dynamics_columns, put_dynamics_values, put_dynamics_figures, &
-    note_drive_deviation
+  public :: note_constant_speed_cost, note_constant_speed_costs, echo_dynamics, add_dynamics_columns, put_dynamics_values, &
+    put_dynamics_rows, put_dynamics_figures, note_drive_deviation
 
 contains
 
@@ -87,6 +87,19 @@ contains
                                   motion%t_i]
   end subroutine put_dynamics_values
 
+  !> put_dynamics_values for every row of the block (row k from motions(k)).
+  pure subroutine put_dynamics_rows(table, mode, motions)
+    type(step_table_t), intent(inout) :: table
+    !> dynamics_* mode.
+    integer, intent(in) :: mode
+    !> The motion and the reduced quantities of every row.
+    type(motion_t), intent(in) :: motions(:)
+    integer :: k
+    do k = 1, size(motions)
+      call put_dynamics_values(table, k, mode, motions(k))
+    end do
+  end subroutine put_dynamics_rows
+
   !> The figures of a solved cycle (first block only); `delta_asked` > 0 with 'steady'.
   pure subroutine put_dynamics_figures(table, mode, cycle, delta_asked)
     type(step_table_t), intent(inout) :: table
@@ -156,6 +169,21 @@ contains
     real(wp), intent(in) :: peak_const
     call table%block_tally%note_peak(name, peak_true, peak_const)
   end subroutine note_constant_speed_cost
+
+  !> note_constant_speed_cost for every force of `names`.
+  pure subroutine note_constant_speed_costs(table, names, peak_true, peak_const)
+    type(step_table_t), intent(inout) :: table
+    !> Force columns ("F16", ...), blank-padded.
+    character(*), intent(in) :: names(:)
+    !> Largest magnitude of each force over the block with the true motion, N.
+    real(wp), intent(in) :: peak_true(:)
+    !> The same at constant speed, N.
+    real(wp), intent(in) :: peak_const(:)
+    integer :: i
+    do i = 1, size(names)
+      call note_constant_speed_cost(table, trim(names(i)), peak_true(i), peak_const(i))
+    end do
+  end subroutine note_constant_speed_costs
 
   !> An optional logical's value, false when absent.
   pure logical function optional_true(flag)

@@ -104,11 +104,7 @@ contains
       error%message = table%deck//": &"//table%mechanism//": "//error%message
       return
     end if
-    call table%declare_columns(gear_geometry_columns())
-    table%row_name = "pair"
-    table%driver = "eps_alpha"
-    table%single_record = .true.
-    call table%allocate_rows(1)
+    call table%declare_record(gear_geometry_columns(), "pair", "eps_alpha")
     table%rows(:, 1) = row_values(g)
     table%residual_label = "INV(ALPHA_W) AGAINST ITS EQUATION"
     table%mismatch_label = "EPS_ALPHA: FORMULA VS THE PATH OF CONTACT'S ENDS"

@@ -7,7 +7,6 @@ module kinetostat_gears_layout
   use kinetostat_text, only: upper
   use kinetostat_noise, only: noise_rel, force_components
   use kinetostat_vec2, only: magnitude, angle_360_deg, snap_noise
-  use kinetostat_step_table, only: worst_row
   use kinetostat_step_table, only: step_table_t, column_t, column, col_count, col_length, col_ratio, col_moment, &
     col_component, col_force, col_force_angle
   use kinetostat_table_layout, only: forces_and_angles, heading_of, heading_unit_of, column_value
@@ -102,8 +101,7 @@ contains
         call put_kinematics(table, i, res(i))
       end do
     end if
-    call table%set_selfcheck(maxval(res%residual), maxval(res%mismatch), "M2", &
-      worst_row([res%residual]), worst_row([res%mismatch]))
+    call table%set_selfcheck_rows([res%residual], [res%mismatch], "M2")
     call echo_deck(self%deck, table)
   end subroutine solve
 

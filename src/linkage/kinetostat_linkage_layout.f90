@@ -850,19 +850,11 @@ contains
                              trim(merge(", FOLLOWS THE LINK", "                  ", mech%forces(k)%follow)))
         call table%echo_array("  AT", mech%forces(k)%at, "m")
         call table%echo_real("  ANGLE", angle_360_deg(mech%forces(k)%dir), "deg")
-        if (deck%force_load(k)%table) then
-          call table%echo_int("  TABLE_POINTS", size(deck%force_load(k)%x), "")
-        else
-          call echo_schedule(table, deck%force_load(k)%value, deck%force_load(k)%column, "N")
-        end if
+        call echo_load(table, deck%force_load(k), "N")
       end do
       do k = 1, size(mech%moment_link)
         call table%echo_line("   MOMENT "//int_str(k)//": LINK "//link_name(mech, mech%moment_link(k)))
-        if (deck%moment_load(k)%table) then
-          call table%echo_int("  TABLE_POINTS", size(deck%moment_load(k)%x), "")
-        else
-          call echo_schedule(table, deck%moment_load(k)%value, deck%moment_load(k)%column, "N*m")
-        end if
+        call echo_load(table, deck%moment_load(k), "N*m")
       end do
       call structure_lines(mech, lang_en, lines)
       call table%echo_heading(trim(lines(1)))
@@ -871,17 +863,19 @@ contains
       end do
     end associate
   contains
-    pure subroutine echo_schedule(table, value, column, unit)
+    !> A load's schedule: the size of its table, its column of step_values, or its constant.
+    pure subroutine echo_load(table, load, unit)
       type(step_table_t), intent(inout) :: table
-      real(wp), intent(in) :: value
-      integer, intent(in) :: column
+      type(linkage_schedule_t), intent(in) :: load
       character(*), intent(in) :: unit
-      if (column > 0) then
-        call table%echo_int("  COLUMN", column, "")
+      if (load%table) then
+        call table%echo_int("  TABLE_POINTS", size(load%x), "")
+      else if (load%column > 0) then
+        call table%echo_int("  COLUMN", load%column, "")
       else
-        call table%echo_real("  VALUE", value, unit)
+        call table%echo_real("  VALUE", load%value, unit)
       end if
-    end subroutine echo_schedule
+    end subroutine echo_load
     !> A drive's speed or acceleration: the constant, or its column of step_values.
     pure subroutine echo_rate(table, name, value, column, unit)
       type(step_table_t), intent(inout) :: table

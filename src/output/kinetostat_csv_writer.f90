@@ -2,19 +2,12 @@
 !> precision (13 significant digits), flags and counts as whole numbers.
 module kinetostat_csv_writer
   use kinetostat_step_table, only: step_table_t
-  use kinetostat_format, only: put_cells, cell_room
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_row_blocks, only: put_row_blocks, table_rows_t, text_sink_t
   use kinetostat_escape, only: csv_field
   implicit none
   private
   public :: write_csv
-
-  !> The CSV's rows of a table.
-  type, extends(table_rows_t) :: csv_rows_t
-  contains
-    procedure :: put_rows => put_csv_rows
-  end type csv_rows_t
 
 contains
 
@@ -30,7 +23,7 @@ contains
     !> Takes the text so far while the rows are formatted in parallel.
     class(text_sink_t), intent(inout), optional :: sink
     character(len=:), allocatable :: line
-    type(csv_rows_t) :: rows
+    type(table_rows_t) :: rows
     integer :: c
     logical :: shown(size(table%columns))
     do c = 1, size(table%columns)
@@ -43,28 +36,9 @@ contains
       line = line//csv_field(table%columns(c)%name)
     end do
     if (table%first_block()) call out%put(line)
-    call rows%aim(table, shown)
-    call put_row_blocks(table%row_count(), size(rows%columns) * (cell_room + 1) + 1, rows, out, sink)
+    ! a row without values (a jammed cam follower's forces): empty fields, never a 0
+    call rows%aim(table, shown, "", ",", "", "", "")
+    call put_row_blocks(table%row_count(), rows%row_room(size(rows%columns)), rows, out, sink)
   end subroutine write_csv
-
-  !> Rows `first` to `last` of the CSV.
-  subroutine put_csv_rows(self, first, last, out, later)
-    !> The table and its shown columns.
-    class(csv_rows_t), intent(in) :: self
-    !> First and last row.
-    integer, intent(in) :: first, last
-    !> Where the rows go.
-    type(text_buffer_t), intent(inout) :: out
-    !> Unused (the CSV has one section).
-    type(text_buffer_t), intent(inout) :: later
-    integer :: k
-    ! room for every row at once (no copying while the buffer grows)
-    call out%reserve((last - first + 1) * (size(self%columns) * (cell_room + 1) + 1))
-    do k = first, last
-      ! no value (a jammed cam follower's forces): an empty field, never a 0
-      call put_cells(out, self%table%rows(:, k), self%columns, self%whole, self%voidable, self%table%is_void(k), ",", "")
-      call out%end_line()
-    end do
-  end subroutine put_csv_rows
 
 end module kinetostat_csv_writer

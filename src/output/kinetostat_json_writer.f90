@@ -6,7 +6,7 @@ module kinetostat_json_writer
   use kinetostat_kinds, only: wp
   use kinetostat_step_table, only: step_table_t, echo_record_t, echo_cursor_t, column_kind_names, &
     col_component, echo_real_kind, echo_int_kind, echo_logical_kind, echo_array_kind, echo_text_kind, echo_heading_kind
-  use kinetostat_format, only: full_number, put_cell, put_cells, cell_room
+  use kinetostat_format, only: full_number, put_cell
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_escape, only: json_string
   use kinetostat_text, only: int_str
@@ -19,12 +19,6 @@ module kinetostat_json_writer
   !> first member "format_version": raised when a key changes meaning or goes (a key added
   !> keeps it); docs/cli.md.
   integer, parameter :: json_format_version = 1
-
-  !> The JSON's rows of a table.
-  type, extends(table_rows_t) :: json_rows_t
-  contains
-    procedure :: put_rows => put_json_rows
-  end type json_rows_t
 
 contains
 
@@ -47,7 +41,7 @@ contains
     type(echo_cursor_t) :: whole_head
     type(echo_record_t), allocatable :: records(:)
     character(len=:), allocatable :: line
-    type(json_rows_t) :: rows
+    type(table_rows_t) :: rows
     integer :: i, c, last
     logical :: shown(size(table%columns))
     last = 0
@@ -65,8 +59,9 @@ contains
         end do
       end if
     end if
-    call rows%aim(table, shown)
-    call put_row_blocks(table%row_count(), size(table%columns) * (cell_room + 2) + 8, rows, out, sink)
+    ! one array a line; a row without values (a jammed cam follower's forces): null
+    call rows%aim(table, shown, "    [", ", ", "null", "],", "]")
+    call put_row_blocks(table%row_count(), rows%row_room(size(rows%columns)), rows, out, sink)
     if (.not. table%last_block()) return
     call out%put("  ],")
     if (allocated(table%summary)) then
@@ -144,33 +139,6 @@ contains
     end subroutine head_part
   end subroutine write_json
 
-  !> Rows `first` to `last` of the JSON, one array a line.
-  subroutine put_json_rows(self, first, last, out, later)
-    !> The table and its shown columns.
-    class(json_rows_t), intent(in) :: self
-    !> First and last row.
-    integer, intent(in) :: first, last
-    !> Where the rows go.
-    type(text_buffer_t), intent(inout) :: out
-    !> Unused (the JSON has one section).
-    type(text_buffer_t), intent(inout) :: later
-    integer :: k
-    ! room for every row at once (no copying while the buffer grows)
-    call out%reserve((last - first + 1) * (size(self%table%columns) * (cell_room + 2) + 8))
-    do k = first, last
-      call out%append("    [")
-      ! no value (a jammed cam follower's forces): null
-      call put_cells(out, self%table%rows(:, k), self%columns, self%whole, self%voidable, self%table%is_void(k), ", ", &
-        "null")
-      if (self%table%row_offset + k < max(self%table%total_rows, self%table%row_count())) then
-        call out%append("],")
-      else
-        call out%append("]")
-      end if
-      call out%end_line()
-    end do
-  end subroutine put_json_rows
-
   !> The first members of a run's JSON object: "format_version", "program", "mechanism",
   !> "title", "deck", "deck_title" (the deck's own title, when it has one), "row_name",
   !> "overrides" (the --set changes, when any), each line ending in a comma.
@@ -208,21 +176,23 @@ contains
     !> Where the lines go.
     type(text_buffer_t), intent(inout) :: out
     character(len=:), allocatable :: line
+    real(wp) :: deviation
+    logical :: ok
     integer :: i
-    if (table%has_selfcheck .and. table%run_tally%drive_deviation%ratio() >= 0.0_wp) then
-      call out%put('  "selfcheck": {"max_residual": '//full_number(table%run_tally%residual%value)// &
-        ', "max_mismatch": '//full_number(table%run_tally%mismatch%value)//', "driver": '//json_string(table%driver)// &
-        ', "max_drive_deviation": '//full_number(table%run_tally%drive_deviation%ratio())// &
-        ', "limit": '//full_number(selfcheck_tolerance)//', "ok": '// &
-        trim(merge("true ", "false", table%run_tally%residual%value <= selfcheck_tolerance .and. &
-                   table%run_tally%mismatch%value <= selfcheck_tolerance .and. &
-                   table%run_tally%drive_deviation%ratio() <= selfcheck_tolerance))//"},")
-    else if (table%has_selfcheck) then
-      call out%put('  "selfcheck": {"max_residual": '//full_number(table%run_tally%residual%value)// &
-        ', "max_mismatch": '//full_number(table%run_tally%mismatch%value)//', "driver": '//json_string(table%driver)// &
-        ', "limit": '//full_number(selfcheck_tolerance)//', "ok": '// &
-        trim(merge("true ", "false", table%run_tally%residual%value <= selfcheck_tolerance .and. &
-                   table%run_tally%mismatch%value <= selfcheck_tolerance))//"},")
+    if (table%has_selfcheck) then
+      associate (tally => table%run_tally)
+        line = '  "selfcheck": {"max_residual": '//full_number(tally%residual%value)// &
+          ', "max_mismatch": '//full_number(tally%mismatch%value)//', "driver": '//json_string(table%driver)
+        ok = tally%residual%value <= selfcheck_tolerance .and. tally%mismatch%value <= selfcheck_tolerance
+        ! the drive deviation only where the run has one (a negative ratio: none)
+        deviation = tally%drive_deviation%ratio()
+        if (deviation >= 0.0_wp) then
+          line = line//', "max_drive_deviation": '//full_number(deviation)
+          ok = ok .and. deviation <= selfcheck_tolerance
+        end if
+      end associate
+      call out%put(line//', "limit": '//full_number(selfcheck_tolerance)//', "ok": '//trim(merge("true ", "false", ok))// &
+        "},")
     else
       call out%put('  "selfcheck": null,')
     end if

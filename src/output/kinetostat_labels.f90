@@ -15,6 +15,316 @@ module kinetostat_labels
   !> The languages' names as --lang takes them, in the order of their codes.
   character(*), parameter :: lang_names(*) = [character(len=2) :: "en", "ru"]
 
+  ! The tables of wordings below: an entry is "english=>russian"; the Russian wording ends in
+  ! as many blanks as the English one (the entries are blank-padded to one length).
+
+  !> The shared labels in Russian (label).
+  character(*), parameter :: label_words(*) = [character(len=360) :: &
+    "INPUT DATA=>ИСХОДНЫЕ ДАННЫЕ", &
+    "RESULTS=>РЕЗУЛЬТАТЫ РАСЧЕТА", &
+    "DECK: =>ФАЙЛ ДАННЫХ:", &
+    "TITLE: =>НАЗВАНИЕ:", &
+    "SELF-CHECK (relative; limit =>САМОКОНТРОЛЬ (ОТНОСИТЕЛЬНЫЕ "// &
+      "ВЕЛИЧИНЫ; ДОПУСК", &
+    "MAX EQUILIBRIUM RESIDUAL, ALL LINKS AND STEPS=>НАИБ. НЕВЯЗКА РАВНОВЕСИЯ ПО "// &
+      "ВСЕМ ЗВЕНЬЯМ И ПОЛОЖЕНИЯМ", &
+    "MAX EQUILIBRIUM RESIDUAL OF THE FOLLOWER, ALL STEPS=>НАИБ. НЕВЯЗКА РАВНОВЕСИЯ "// &
+      "ТОЛКАТЕЛЯ ПО ВСЕМ ПОЛОЖЕНИЯМ", &
+    "MAX N MISMATCH, CLOSED FORM VS 3X3 LINEAR SOLVE=>НАИБ. РАСХОЖДЕНИЕ N: ФОРМУЛА "// &
+      "И РЕШЕНИЕ СИСТЕМЫ 3X3", &
+    "SUMMARY=>СВОДКА", &
+    ! the design kinds (gear pair, cam): their summary block and self-check
+    "SIZE OF THE CAM=>РАЗМЕРЫ КУЛАЧКА", &
+    "THETA OVER ITS LIMIT (RELATIVE), ALL STEPS=>ПРЕВЫШЕНИЕ ДОПУСТИМОГО УГЛА "// &
+      "ДАВЛЕНИЯ (ОТНОС.)", &
+    "RHO BELOW RHO_MIN (RELATIVE), ALL STEPS=>RHO МЕНЬШЕ RHO_MIN (ОТНОС.), ВСЕ ПОЛОЖЕНИЯ", &
+    "CURVATURE: TWO FORMULAS (X R_PRIME), ALL STEPS=>КРИВИЗНА ПО ДВУМ ФОРМУЛАМ (X "// &
+      "R_PRIME), ВСЕ ПОЛОЖЕНИЯ", &
+    "INV(ALPHA_W) AGAINST ITS EQUATION=>INV(ALPHA_W): НЕВЯЗКА УРАВНЕНИЯ", &
+    "EPS_ALPHA: FORMULA VS THE PATH OF CONTACT'S ENDS=>EPS_ALPHA: ФОРМУЛА И КОНЦЫ "// &
+      "АКТИВНОЙ ЛИНИИ ЗАЦЕПЛЕНИЯ", &
+    "(derived)=>(вычислено)", &
+    "SHAKING FORCE AND MOMENT, FORCE AND MOMENT ON THE FRAME (MOMENTS ABOUT THE ORIGIN)=>ГЛАВНЫЙ "// &
+      "ВЕКТОР И ГЛАВНЫЙ МОМЕНТ СИЛ ИНЕРЦИИ, СИЛА И МОМЕНТ НА "// &
+      "СТОЙКУ (МОМЕНТЫ ОТНОСИТЕЛЬНО НАЧАЛА КООРДИНАТ)", &
+    "MAX=>НАИБ", &
+    "MIN=>НАИМ", &
+    "STEPS LEFT OUT=>ПОЛОЖЕНИЙ ИСКЛ.", &
+    "JAMMED OR LOST CONTACT: NO FORCES, NOT IN MAX, MIN, MEAN=>ЗАКЛИНИВАНИЕ ИЛИ "// &
+      "ПОТЕРЯ КОНТАКТА: СИЛ НЕТ, НЕ В МАКС., МИН., СРЕДН.", &
+    "MEAN=>СРЕДН", &
+    "AT =>ПРИ", &
+    "WORK OF =>РАБОТА", &
+    ! friction in the pairs of the generic engine (summary block and self-check)
+    "WORK AND EFFICIENCY WITH FRICTION=>РАБОТА И КПД С УЧЕТОМ ТРЕНИЯ", &
+    "ETA = 1 - A_LOSS/A_DRIVER OVER A WHOLE TURN OF THE INPUT: THE CYCLE EFFICIENCY=>ETA = 1 - "// &
+      "A_LOSS/A_DRIVER ЗА ПОЛНЫЙ ОБОРОТ ВХОДНОГО ЗВЕНА: ЦИКЛОВОЙ КПД", &
+    "ETA = 1 - A_LOSS/A_DRIVER OVER LESS THAN A WHOLE TURN: NOT THE CYCLE EFFICIENCY=>ETA = 1 - "// &
+      "A_LOSS/A_DRIVER МЕНЕЕ ЧЕМ ЗА ОБОРОТ: НЕ ЦИКЛОВОЙ КПД", &
+    "(THE DRIVER'S WORK ALSO CHANGES THE KINETIC AND POTENTIAL ENERGY)=>(РАБОТА ДВИГАТЕЛЯ "// &
+      "ИДЕТ ТАКЖЕ НА ИЗМЕНЕНИЕ КИНЕТИЧЕСКОЙ И ПОТЕНЦИАЛЬНОЙ "// &
+      "ЭНЕРГИИ)", &
+    "ETA NOT DEFINED: THE DRIVER DELIVERS NO NET WORK OVER THE RUN=>КПД НЕ ОПРЕДЕЛЕН: "// &
+      "РАБОТА ДВИГАТЕЛЯ ЗА РАСЧЕТ НЕ ПОЛОЖИТЕЛЬНА", &
+    "MAX EQUILIBRIUM RESIDUAL WITH FRICTION LOADS=>НАИБ. НЕВЯЗКА РАВНОВЕСИЯ С "// &
+      "СИЛАМИ ТРЕНИЯ", &
+    "MAX M1 MISMATCH, POWER BALANCE WITH FRICTION=>НАИБ. РАСХОЖДЕНИЕ M1, БАЛАНС "// &
+      "МОЩНОСТЕЙ С ТРЕНИЕМ", &
+    "MAX F_drive MISMATCH, POWER BALANCE WITH FRICTION=>НАИБ. РАСХОЖДЕНИЕ F_drive, "// &
+      "БАЛАНС МОЩНОСТЕЙ С ТРЕНИЕМ", &
+    ! machine dynamics (the DYNAMICS block and its self-check line)
+    "DYNAMICS (REDUCED TO THE INPUT LINK)=>ДИНАМИЧЕСКИЙ РАСЧЕТ (ПРИВЕДЕНИЕ "// &
+      "К ВХОДНОМУ ЗВЕНУ)", &
+    "MAX MISMATCH OF THE DRIVES' EFFORTS, POWER BALANCE WITH FRICTION=>НАИБ. РАСХОЖДЕНИЕ "// &
+      "УСИЛИЙ ПРИВОДОВ С БАЛАНСОМ МОЩНОСТЕЙ С ТРЕНИЕМ", &
+    "MAX MISMATCH OF THE DRIVES' EFFORTS, POWER BALANCE=>НАИБ. РАСХОЖДЕНИЕ УСИЛИЙ "// &
+      "ПРИВОДОВ С БАЛАНСОМ МОЩНОСТЕЙ", &
+    "MAX |M1 - M_d|/|M_d| WITH THE TRUE MOTION=>НАИБ. |M1 - M_d|/|M_d| ПРИ ИСТИННОМ "// &
+      "ДВИЖЕНИИ", &
+    "M_d=>M_d (ДВИЖУЩИЙ МОМЕНТ)", &
+    "J_flywheel=>МАХОВИК J_flywheel", &
+    "flywheel_density=>МАХОВИК: ПЛОТНОСТЬ", &
+    "flywheel_width_ratio=>МАХОВИК: b/D", &
+    "flywheel_D=>МАХОВИК: ДИАМЕТР D", &
+    "flywheel_b=>МАХОВИК: ШИРИНА b", &
+    "flywheel_m=>МАХОВИК: МАССА m", &
+    "flywheel_note=>МАХОВИК", &
+    "a disc: J_flywheel = m D^2/8, m = density pi D^2 b/4, b = width_ratio D=>ДИСК: J_flywheel = m "// &
+      "D^2/8, m = ПЛОТНОСТЬ pi D^2 b/4, b = (b/D) D", &
+    "no flywheel: J_flywheel = 0=>МАХОВИКА НЕТ: J_flywheel = 0", &
+    "none=>НЕТ", &
+    "kg/m^3=>кг/м^3", &
+    "J_flywheel_textbook=>МАХОВИК ПО МЕРЦАЛОВУ", &
+    "textbook_difference=>РАЗНИЦА С МЕРЦАЛОВЫМ", &
+    "J_rotor=>J_rotor (РОТОР)", &
+    "J_red_min=>ПРИВЕДЕННЫЙ МОМЕНТ ИНЕРЦИИ НАИМ", &
+    "J_red_max=>ПРИВЕДЕННЫЙ МОМЕНТ ИНЕРЦИИ НАИБ", &
+    "omega_mean=>omega СРЕДНЯЯ", &
+    "omega_max=>omega НАИБ", &
+    "phi_omega_max=>phi ПРИ omega НАИБ", &
+    "omega_min=>omega НАИМ", &
+    "phi_omega_min=>phi ПРИ omega НАИМ", &
+    "delta=>КОЭФФ. НЕРАВНОМЕРНОСТИ delta", &
+    "delta_asked=>delta ЗАДАННЫЙ", &
+    "period=>ПЕРИОД ЦИКЛА", &
+    "%=>%", &
+    "s=>с", &
+    ! units (ГОСТ symbols, as the 1991 printouts write them)
+    "J=>Дж", &
+    "m=>м", &
+    "mm=>мм", &
+    "kg=>кг", &
+    "kg*m^2=>кг*м^2", &
+    "N=>Н", &
+    "N*m=>Н*м", &
+    "deg=>град", &
+    "rad/s=>рад/с", &
+    "rad/s^2=>рад/с^2", &
+    "m/s^2=>м/с^2", &
+    "m/rad=>м/рад", &
+    "m/rad^2=>м/рад^2", &
+    "1/rad=>1/рад", &
+    "steps=>положений", &
+    "satellites=>сателлитов", &
+    "rad=>рад", &
+    "m/s=>м/с", &
+    "W=>Вт", &
+    ! the words of the SVG sheets (the course's wording: план скоростей, план сил, рычаг Жуковского)
+    "deck=>файл данных", &
+    "step=>положение", &
+    "stage=>ступень", &
+    "stages=>ступеней", &
+    "of=>из", &
+    "at=>под углом", &
+    "gravity down the sheet=>сила тяжести вниз по листу", &
+    "lengths=>длины", &
+    "forces=>силы", &
+    "pair force=>реакция", &
+    "load=>нагрузка", &
+    "weight=>вес", &
+    "inertia=>инерция", &
+    "Forces of the step (angles counterclockwise from the x axis of the mechanism's frame)=>Силы "// &
+      "положения (углы против часовой стрелки от оси x "// &
+      "системы координат механизма)", &
+    "Hodographs of the pair forces=>Годографы реакций в кинематических парах", &
+    "Tip of each force vector over the cycle, in the frame of the tables (x right, y up); point k = step "// &
+      "k; O = zero force.=>Конец вектора каждой силы за цикл в системе "// &
+      "координат таблиц (x вправо, y вверх); точка k = положение "// &
+      "k; O = нулевая сила.", &
+    "Pair forces of every stage as vectors=>Реакции каждой ступени как векторы", &
+    "The rows of this table are stages, not steps of a cycle: no hodographs and no diagrams against an "// &
+      "input angle.=>Строки этой таблицы - ступени, а не положения "// &
+      "цикла: ни годографов, ни диаграмм по углу входного "// &
+      "звена.", &
+    "This table has no pair force with an angle column: no hodographs.=>В таблице нет "// &
+      "реакций со столбцом угла: годографов нет.", &
+    "max=>наиб.", &
+    "mean=>среднее", &
+    "Driving effort=>Движущее усилие", &
+    "This table has no driving moment or force column.=>В таблице нет столбца "// &
+      "движущего момента или силы.", &
+    "Driving force=>Движущая сила", &
+    "Driving moment=>Движущий момент", &
+    "against=>по", &
+    "Magnitudes of the pair forces against=>Модули реакций по", &
+    "No pair forces to show.=>Реакций для показа нет.", &
+    "force=>сила", &
+    "no pair force=>нет реакций", &
+    "at every step=>во всех положениях", &
+    "Plan of velocities=>План скоростей", &
+    "Plan of accelerations=>План ускорений", &
+    "Zhukovsky's lever=>Рычаг Жуковского", &
+    "plan of velocities turned by 90 deg=>план скоростей, повернутый на 90 град", &
+    "Force polygons of the links=>Планы сил звеньев", &
+    "link=>звено", &
+    "Machine dynamics (reduced to the input link)=>Динамика машины (приведение "// &
+      "к входному звену)", &
+    "Steady cycle=>Установившийся режим", &
+    "flywheel=>маховик", &
+    "textbook=>по учебнику", &
+    "Reduced moment of inertia J_red=>Приведенный момент инерции J_red", &
+    "Reduced moment M_red and M_d (dashed)=>Приведенный момент M_red и M_d (штрих)", &
+    "Change of kinetic energy dT=>Изменение кинетической энергии dT", &
+    "Speed omega1 (dashed: mean, max, min)=>Скорость omega1 (штрих: средн., наиб., "// &
+      "наим.)", &
+    "Wittenbauer's curve: dT against J_red=>Кривая Виттенбауэра: dT по J_red", &
+    "Force polygons=>Планы сил", &
+    "balancing effort from the lever=>уравновешивающее усилие по рычагу", &
+    "analytic value of the step=>аналитическое значение в положении", &
+    "relative difference=>относительное расхождение", &
+    "flywheel and rotor included=>маховик и ротор учтены", &
+    "pair friction included=>трение в парах учтено", &
+    "not drawn=>не построен", &
+    "arrows: directions of the loads=>стрелки: направления нагрузок", &
+    "known forces first, then the pair forces=>сначала известные силы, затем "// &
+      "реакции", &
+    "no driver column=>нет столбца движущего усилия", &
+    "the driving link is at rest=>ведущее звено неподвижно", &
+    "the driver is not a moment on a link of the drawing=>движущее усилие - не "// &
+      "момент на звене чертежа", &
+    "the driver is neither a moment on a link nor a force on a slider of the drawing=>движущее "// &
+      "усилие - ни момент на звене, ни сила на ползуне чертежа", &
+    "Force polygons of the groups=>Планы сил групп", &
+    "Assur group=>группа", &
+    "input link=>входное звено", &
+    "through the joint=>через шарнир", &
+    "the group apart=>группа отдельно", &
+    "known forces first, then the unknown reactions=>сначала известные силы, "// &
+      "затем искомые реакции", &
+    "Mechanism=>Механизм", &
+    "position=>положение", &
+    "the plans in the mechanism's frame=>планы в системе координат чертежа "// &
+      "механизма", &
+    "Loads on the lever=>Нагрузки на рычаге", &
+    "image=>точка плана", &
+    "arms on the lever=>плечи на рычаге", &
+    "Values read off the plans=>Величины по планам", &
+    "counterclockwise=>против часовой стрелки", &
+    "clockwise=>по часовой стрелке", &
+    "at the pole=>в полюсе", &
+    "not drawn, shorter than 1 mm=>не показаны, короче 1 мм", &
+    "Balancing effort=>Уравновешивающее усилие", &
+    "read off the sheet (vectors to 0.5 mm, arms to 1 mm)=>по чертежу (векторы с "// &
+      "точностью 0,5 мм, плечи 1 мм)", &
+    "lever=>рычаг", &
+    "polygons=>планы сил", &
+    "relative velocities: v_PQ of a link's points, r along a guide=>относительные "// &
+      "скорости: v_PQ точек звена, r вдоль направляющей", &
+    "components: n normal, τ tangential, k Coriolis, r relative=>составляющие: n норм., "// &
+      "τ касат., k кориол., r относит.", &
+    "Plans of velocities, accelerations, forces=>Планы скоростей, ускорений, сил", &
+    "Mechanism with its forces=>Механизм с силами", &
+    "Hodographs and diagrams=>Годографы и диаграммы", &
+    "not drawn, shorter than 1 mm at μF=>не показаны, короче 1 мм при μF", &
+    "under 1 mm, not drawn=>короче 1 мм, не показаны", &
+    "The input step=>Шаг входного звена", &
+    "is coarser than=>крупнее", &
+    "next to a load that switches on or off=>рядом с включением или "// &
+      "выключением нагрузки", &
+    "the curves join the steps by chords and may miss the true peaks and the true mean; rerun with a "// &
+      "finer step=>кривые соединяют положения хордами и могут "// &
+      "пропустить истинные максимумы и истинное среднее; "// &
+      "повторите расчет с меньшим шагом", &
+    "points drawn=>точек показано", &
+    "Shaking force and moment (the resultant of the inertia forces)=>Главный вектор и "// &
+      "главный момент сил инерции", &
+    "Shaking moment=>Главный момент сил инерции"]
+
+  !> The notes in parentheses after a unit or a value in Russian (note).
+  character(*), parameter :: note_words(*) = [character(len=360) :: &
+    "frame 1=>система 1", &
+    "frame 2=>система 2", &
+    "rise; derived=>подъем; вычислено", &
+    "along +x2=>вдоль +x2", &
+    "from forces=>из сил", &
+    "power balance=>баланс мощностей", &
+    "carrier, from forces=>водило, из сил", &
+    "on the ring, from forces=>на коронном колесе, из сил", &
+    "echoed below as derived link coordinates=>ниже - пересчитанные "// &
+      "координаты звеньев", &
+    "derived=>вычислено"]
+
+  !> The words of the echo's composite names ("STAGE 1: SPUR", "DYAD 1: RRR LINKS 2-3, ON
+  !> LINKS 1 AND 0, MODE 1", "FORCE 2 LINK"), replaced in this order (echo_name).
+  character(*), parameter :: composite_words(*) = [character(len=360) :: &
+    "STAGE =>СТУПЕНЬ", &
+    ": SPUR=>: ПРЯМОЗУБАЯ", &
+    ": HELICAL=>: КОСОЗУБАЯ", &
+    ": BEVEL=>: КОНИЧЕСКАЯ", &
+    ": PLANETARY=>: ПЛАНЕТАРНАЯ", &
+    "DYAD =>ДИАДА", &
+    " ON LINKS => НА ЗВЕНЬЯХ", &
+    " LINKS => ЗВЕНЬЯ", &
+    " AND => И", &
+    ", MODE =>, СБОРКА", &
+    "FORCE =>СИЛА", &
+    "MOMENT =>МОМЕНТ", &
+    " LINK=> ЗВЕНО"]
+
+  !> The words of a gear stage's torques (echo_name).
+  character(*), parameter :: torque_words(*) = [character(len=360) :: &
+    " POWER=> МОЩН.", &
+    " HOUSING=> КОРПУСА", &
+    " BALANCE=> БАЛАНС"]
+
+  !> The words of a general linkage's echo lines, replaced in this order before a dyad's
+  !> kind is put in the course's letters (linkage_echo_ru).
+  character(*), parameter :: linkage_words(*) = [character(len=360) :: &
+    "STRUCTURAL ANALYSIS=>СТРУКТУРНЫЙ АНАЛИЗ", &
+    "MOVING LINKS n=>ПОДВИЖНЫХ ЗВЕНЬЕВ n", &
+    "LOWER PAIRS p5=>НИЗШИХ ПАР p5", &
+    "HIGHER PAIRS p4=>ВЫСШИХ ПАР p4", &
+    "NUMBER OF DRIVES=>ЧИСЛО НАЧАЛЬНЫХ ЗВЕНЬЕВ", &
+    "STRUCTURE FORMULA:=>ФОРМУЛА СТРОЕНИЯ:", &
+    "CLASS OF THE MECHANISM:=>КЛАСС МЕХАНИЗМА:", &
+    "INPUT LINK(S) (MECHANISM OF CLASS I)=>НАЧАЛЬНОЕ ЗВЕНО (МЕХАНИЗМ I КЛАССА)"]
+
+  !> The same after the dyad's kind (linkage_echo_ru).
+  character(*), parameter :: linkage_unit_words(*) = [character(len=360) :: &
+    "DYAD (GROUP OF CLASS II, ORDER 2), KIND=>ДИАДА (ГРУППА II КЛАССА 2-ГО "// &
+      "ПОРЯДКА), ВИД", &
+    "GROUP OF CLASS III, ORDER 3=>ГРУППА III КЛАССА 3-ГО ПОРЯДКА", &
+    "GROUP OF CLASS III, ORDER 4=>ГРУППА III КЛАССА 4-ГО ПОРЯДКА", &
+    "(TWO TERNARY BASE LINKS AND FOUR BINARY LINKS)=>(ДВА БАЗОВЫХ ЗВЕНА С ТРЕМЯ ПАРАМИ)", &
+    "(A TERNARY BASE LINK AND THREE BINARY LINKS)=>(БАЗОВОЕ ЗВЕНО С ТРЕМЯ ПАРАМИ)", &
+    "GROUP OF CLASS IV, ORDER 2=>ГРУППА IV КЛАССА 2-ГО ПОРЯДКА", &
+    "(A CLOSED FOUR-LINK CONTOUR)=>(ЗАМКНУТЫЙ ЧЕТЫРЕХЗВЕННЫЙ КОНТУР)", &
+    "(CLASS NOT DETERMINED)=>(КЛАСС НЕ ОПРЕДЕЛЕН)", &
+    "GROUP OF =>ГРУППА ИЗ", &
+    ", FOLLOWS THE LINK=>, ПОВОРАЧИВАЕТСЯ СО ЗВЕНОМ", &
+    ", GUIDE ON =>, НАПРАВЛЯЮЩАЯ НА ЗВЕНЕ", &
+    ", INPUT =>, ВХОД", &
+    ", EFFORT =>, УСИЛИЕ", &
+    "DRIVE =>ПРИВОД", &
+    "PAIR =>ПАРА", &
+    "FORCE =>СИЛА", &
+    "MOMENT =>МОМЕНТ", &
+    " LINKS (=> ЗВЕНЬЕВ (", &
+    " LINKS => ЗВЕНЬЯ", &
+    " LINKS=> ЗВЕНЬЕВ", &
+    " AND => И", &
+    "LINK =>ЗВЕНО"]
+
 contains
 
   !> Language code from its name ("en", "ru"); 0 when unknown.
@@ -31,388 +341,11 @@ contains
     !> lang_en or lang_ru.
     integer, intent(in) :: lang
     character(len=:), allocatable :: text
-    text = english
-    if (lang /= lang_ru) return
-    select case (english)
-    case ("INPUT DATA")
-      text = "ИСХОДНЫЕ ДАННЫЕ"
-    case ("RESULTS")
-      text = "РЕЗУЛЬТАТЫ РАСЧЕТА"
-    case ("DECK: ")
-      text = "ФАЙЛ ДАННЫХ: "
-    case ("TITLE: ")
-      text = "НАЗВАНИЕ: "
-    case ("SELF-CHECK (relative; limit ")
-      text = "САМОКОНТРОЛЬ (ОТНОСИТЕЛЬНЫЕ ВЕЛИЧИНЫ; ДОПУСК "
-    case ("MAX EQUILIBRIUM RESIDUAL, ALL LINKS AND STEPS")
-      text = "НАИБ. НЕВЯЗКА РАВНОВЕСИЯ ПО ВСЕМ ЗВЕНЬЯМ И ПОЛОЖЕНИЯМ"
-    case ("MAX EQUILIBRIUM RESIDUAL OF THE FOLLOWER, ALL STEPS")
-      text = "НАИБ. НЕВЯЗКА РАВНОВЕСИЯ ТОЛКАТЕЛЯ ПО ВСЕМ ПОЛОЖЕНИЯМ"
-    case ("MAX N MISMATCH, CLOSED FORM VS 3X3 LINEAR SOLVE")
-      text = "НАИБ. РАСХОЖДЕНИЕ N: ФОРМУЛА И РЕШЕНИЕ СИСТЕМЫ 3X3"
-    case ("SUMMARY")
-      text = "СВОДКА"
-    ! the design kinds (gear pair, cam): their summary block and self-check
-    case ("SIZE OF THE CAM")
-      text = "РАЗМЕРЫ КУЛАЧКА"
-    case ("THETA OVER ITS LIMIT (RELATIVE), ALL STEPS")
-      text = "ПРЕВЫШЕНИЕ ДОПУСТИМОГО УГЛА ДАВЛЕНИЯ (ОТНОС.)"
-    case ("RHO BELOW RHO_MIN (RELATIVE), ALL STEPS")
-      text = "RHO МЕНЬШЕ RHO_MIN (ОТНОС.), ВСЕ ПОЛОЖЕНИЯ"
-    case ("CURVATURE: TWO FORMULAS (X R_PRIME), ALL STEPS")
-      text = "КРИВИЗНА ПО ДВУМ ФОРМУЛАМ (X R_PRIME), ВСЕ ПОЛОЖЕНИЯ"
-    case ("INV(ALPHA_W) AGAINST ITS EQUATION")
-      text = "INV(ALPHA_W): НЕВЯЗКА УРАВНЕНИЯ"
-    case ("EPS_ALPHA: FORMULA VS THE PATH OF CONTACT'S ENDS")
-      text = "EPS_ALPHA: ФОРМУЛА И КОНЦЫ АКТИВНОЙ ЛИНИИ ЗАЦЕПЛЕНИЯ"
-    case ("(derived)")
-      text = "(вычислено)"
-    case ("SHAKING FORCE AND MOMENT, FORCE AND MOMENT ON THE FRAME (MOMENTS ABOUT THE ORIGIN)")
-      text = "ГЛАВНЫЙ ВЕКТОР И ГЛАВНЫЙ МОМЕНТ СИЛ "// &
-        "ИНЕРЦИИ, СИЛА И МОМЕНТ НА СТОЙКУ "// &
-        "(МОМЕНТЫ ОТНОСИТЕЛЬНО НАЧАЛА КООРДИНАТ)"
-    case ("MAX")
-      text = "НАИБ"
-    case ("MIN")
-      text = "НАИМ"
-    case ("STEPS LEFT OUT")
-      text = "ПОЛОЖЕНИЙ ИСКЛ."
-    case ("JAMMED OR LOST CONTACT: NO FORCES, NOT IN MAX, MIN, MEAN")
-      text = "ЗАКЛИНИВАНИЕ ИЛИ ПОТЕРЯ КОНТАКТА: СИЛ НЕТ, НЕ В МАКС., МИН., СРЕДН."
-    case ("MEAN")
-      text = "СРЕДН"
-    case ("AT ")
-      text = "ПРИ "
-    case ("WORK OF ")
-      text = "РАБОТА "
-    ! friction in the pairs of the generic engine (summary block and self-check)
-    case ("WORK AND EFFICIENCY WITH FRICTION")
-      text = "РАБОТА И КПД С УЧЕТОМ ТРЕНИЯ"
-    case ("ETA = 1 - A_LOSS/A_DRIVER OVER A WHOLE TURN OF THE INPUT: THE CYCLE EFFICIENCY")
-      text = "ETA = 1 - A_LOSS/A_DRIVER ЗА ПОЛНЫЙ ОБОРОТ ВХОДНОГО "// &
-        "ЗВЕНА: ЦИКЛОВОЙ КПД"
-    case ("ETA = 1 - A_LOSS/A_DRIVER OVER LESS THAN A WHOLE TURN: NOT THE CYCLE EFFICIENCY")
-      text = "ETA = 1 - A_LOSS/A_DRIVER МЕНЕЕ ЧЕМ ЗА ОБОРОТ: НЕ "// &
-        "ЦИКЛОВОЙ КПД"
-    case ("(THE DRIVER'S WORK ALSO CHANGES THE KINETIC AND POTENTIAL ENERGY)")
-      text = "(РАБОТА ДВИГАТЕЛЯ ИДЕТ ТАКЖЕ НА ИЗМЕНЕНИЕ "// &
-        "КИНЕТИЧЕСКОЙ И ПОТЕНЦИАЛЬНОЙ ЭНЕРГИИ)"
-    case ("ETA NOT DEFINED: THE DRIVER DELIVERS NO NET WORK OVER THE RUN")
-      text = "КПД НЕ ОПРЕДЕЛЕН: РАБОТА ДВИГАТЕЛЯ ЗА РАСЧЕТ "// &
-        "НЕ ПОЛОЖИТЕЛЬНА"
-    case ("MAX EQUILIBRIUM RESIDUAL WITH FRICTION LOADS")
-      text = "НАИБ. НЕВЯЗКА РАВНОВЕСИЯ С СИЛАМИ ТРЕНИЯ"
-    case ("MAX M1 MISMATCH, POWER BALANCE WITH FRICTION")
-      text = "НАИБ. РАСХОЖДЕНИЕ M1, БАЛАНС МОЩНОСТЕЙ С ТРЕНИЕМ"
-    case ("MAX F_drive MISMATCH, POWER BALANCE WITH FRICTION")
-      text = "НАИБ. РАСХОЖДЕНИЕ F_drive, БАЛАНС МОЩНОСТЕЙ С "// &
-        "ТРЕНИЕМ"
-    ! machine dynamics (the DYNAMICS block and its self-check line)
-    case ("DYNAMICS (REDUCED TO THE INPUT LINK)")
-      text = "ДИНАМИЧЕСКИЙ РАСЧЕТ (ПРИВЕДЕНИЕ К ВХОДНОМУ ЗВЕНУ)"
-    case ("MAX MISMATCH OF THE DRIVES' EFFORTS, POWER BALANCE WITH FRICTION")
-      text = "НАИБ. РАСХОЖДЕНИЕ УСИЛИЙ ПРИВОДОВ С БАЛАНСОМ "// &
-        "МОЩНОСТЕЙ С ТРЕНИЕМ"
-    case ("MAX MISMATCH OF THE DRIVES' EFFORTS, POWER BALANCE")
-      text = "НАИБ. РАСХОЖДЕНИЕ УСИЛИЙ ПРИВОДОВ С БАЛАНСОМ МОЩНОСТЕЙ"
-    case ("MAX |M1 - M_d|/|M_d| WITH THE TRUE MOTION")
-      text = "НАИБ. |M1 - M_d|/|M_d| ПРИ ИСТИННОМ ДВИЖЕНИИ"
-    case ("M_d")
-      text = "M_d (ДВИЖУЩИЙ МОМЕНТ)"
-    case ("J_flywheel")
-      text = "МАХОВИК J_flywheel"
-    case ("flywheel_density")
-      text = "МАХОВИК: ПЛОТНОСТЬ"
-    case ("flywheel_width_ratio")
-      text = "МАХОВИК: b/D"
-    case ("flywheel_D")
-      text = "МАХОВИК: ДИАМЕТР D"
-    case ("flywheel_b")
-      text = "МАХОВИК: ШИРИНА b"
-    case ("flywheel_m")
-      text = "МАХОВИК: МАССА m"
-    case ("flywheel_note")
-      text = "МАХОВИК"
-    case ("a disc: J_flywheel = m D^2/8, m = density pi D^2 b/4, b = width_ratio D")
-      text = "ДИСК: J_flywheel = m D^2/8, m = ПЛОТНОСТЬ pi D^2 b/4, b = (b/D) D"
-    case ("no flywheel: J_flywheel = 0")
-      text = "МАХОВИКА НЕТ: J_flywheel = 0"
-    case ("none")
-      text = "НЕТ"
-    case ("kg/m^3")
-      text = "кг/м^3"
-    case ("J_flywheel_textbook")
-      text = "МАХОВИК ПО МЕРЦАЛОВУ"
-    case ("textbook_difference")
-      text = "РАЗНИЦА С МЕРЦАЛОВЫМ"
-    case ("J_rotor")
-      text = "J_rotor (РОТОР)"
-    case ("J_red_min")
-      text = "ПРИВЕДЕННЫЙ МОМЕНТ ИНЕРЦИИ НАИМ"
-    case ("J_red_max")
-      text = "ПРИВЕДЕННЫЙ МОМЕНТ ИНЕРЦИИ НАИБ"
-    case ("omega_mean")
-      text = "omega СРЕДНЯЯ"
-    case ("omega_max")
-      text = "omega НАИБ"
-    case ("phi_omega_max")
-      text = "phi ПРИ omega НАИБ"
-    case ("omega_min")
-      text = "omega НАИМ"
-    case ("phi_omega_min")
-      text = "phi ПРИ omega НАИМ"
-    case ("delta")
-      text = "КОЭФФ. НЕРАВНОМЕРНОСТИ delta"
-    case ("delta_asked")
-      text = "delta ЗАДАННЫЙ"
-    case ("period")
-      text = "ПЕРИОД ЦИКЛА"
-    case ("%")
-      text = "%"
-    case ("s")
-      text = "с"
-    ! units (ГОСТ symbols, as the 1991 printouts write them)
-    case ("J")
-      text = "Дж"
-    case ("m")
-      text = "м"
-    case ("mm")
-      text = "мм"
-    case ("kg")
-      text = "кг"
-    case ("kg*m^2")
-      text = "кг*м^2"
-    case ("N")
-      text = "Н"
-    case ("N*m")
-      text = "Н*м"
-    case ("deg")
-      text = "град"
-    case ("rad/s")
-      text = "рад/с"
-    case ("rad/s^2")
-      text = "рад/с^2"
-    case ("m/s^2")
-      text = "м/с^2"
-    case ("m/rad")
-      text = "м/рад"
-    case ("m/rad^2")
-      text = "м/рад^2"
-    case ("1/rad")
-      text = "1/рад"
-    case ("steps")
-      text = "положений"
-    case ("satellites")
-      text = "сателлитов"
-    case ("rad")
-      text = "рад"
-    case ("m/s")
-      text = "м/с"
-    case ("W")
-      text = "Вт"
-    ! the words of the SVG sheets (the course's wording: план скоростей, план сил, рычаг Жуковского)
-    case ("deck")
-      text = "файл данных"
-    case ("step")
-      text = "положение"
-    case ("stage")
-      text = "ступень"
-    case ("stages")
-      text = "ступеней"
-    case ("of")
-      text = "из"
-    case ("at")
-      text = "под углом"
-    case ("gravity down the sheet")
-      text = "сила тяжести вниз по листу"
-    case ("lengths")
-      text = "длины"
-    case ("forces")
-      text = "силы"
-    case ("pair force")
-      text = "реакция"
-    case ("load")
-      text = "нагрузка"
-    case ("weight")
-      text = "вес"
-    case ("inertia")
-      text = "инерция"
-    case ("Forces of the step (angles counterclockwise from the x axis of the mechanism's frame)")
-      text = "Силы положения (углы против часовой "// &
-        "стрелки от оси x системы координат "// &
-        "механизма)"
-    case ("Hodographs of the pair forces")
-      text = "Годографы реакций в кинематических парах"
-    case ("Tip of each force vector over the cycle, in the frame of the tables (x right, y up); point k = step k; "// &
-      "O = zero force.")
-      text = "Конец вектора каждой силы за цикл в системе координат "// &
-        "таблиц (x вправо, y вверх); точка k = положение k; "// &
-        "O = нулевая сила."
-    case ("Pair forces of every stage as vectors")
-      text = "Реакции каждой ступени как векторы"
-    case ("The rows of this table are stages, not steps of a cycle: no hodographs and no diagrams against an "// &
-      "input angle.")
-      text = "Строки этой таблицы - ступени, а не положения цикла: "// &
-        "ни годографов, ни диаграмм по углу входного звена."
-    case ("This table has no pair force with an angle column: no hodographs.")
-      text = "В таблице нет реакций со столбцом угла: годографов нет."
-    case ("max")
-      text = "наиб."
-    case ("mean")
-      text = "среднее"
-    case ("Driving effort")
-      text = "Движущее усилие"
-    case ("This table has no driving moment or force column.")
-      text = "В таблице нет столбца движущего момента или силы."
-    case ("Driving force")
-      text = "Движущая сила"
-    case ("Driving moment")
-      text = "Движущий момент"
-    case ("against")
-      text = "по"
-    case ("Magnitudes of the pair forces against")
-      text = "Модули реакций по"
-    case ("No pair forces to show.")
-      text = "Реакций для показа нет."
-    case ("force")
-      text = "сила"
-    case ("no pair force")
-      text = "нет реакций"
-    case ("at every step")
-      text = "во всех положениях"
-    case ("Plan of velocities")
-      text = "План скоростей"
-    case ("Plan of accelerations")
-      text = "План ускорений"
-    case ("Zhukovsky's lever")
-      text = "Рычаг Жуковского"
-    case ("plan of velocities turned by 90 deg")
-      text = "план скоростей, повернутый на 90 град"
-    case ("Force polygons of the links")
-      text = "Планы сил звеньев"
-    case ("link")
-      text = "звено"
-    case ("Machine dynamics (reduced to the input link)")
-      text = "Динамика машины (приведение к входному звену)"
-    case ("Steady cycle")
-      text = "Установившийся режим"
-    case ("flywheel")
-      text = "маховик"
-    case ("textbook")
-      text = "по учебнику"
-    case ("Reduced moment of inertia J_red")
-      text = "Приведенный момент инерции J_red"
-    case ("Reduced moment M_red and M_d (dashed)")
-      text = "Приведенный момент M_red и M_d (штрих)"
-    case ("Change of kinetic energy dT")
-      text = "Изменение кинетической энергии dT"
-    case ("Speed omega1 (dashed: mean, max, min)")
-      text = "Скорость omega1 (штрих: средн., наиб., наим.)"
-    case ("Wittenbauer's curve: dT against J_red")
-      text = "Кривая Виттенбауэра: dT по J_red"
-    case ("Force polygons")
-      text = "Планы сил"
-    case ("balancing effort from the lever")
-      text = "уравновешивающее усилие по рычагу"
-    case ("analytic value of the step")
-      text = "аналитическое значение в положении"
-    case ("relative difference")
-      text = "относительное расхождение"
-    case ("flywheel and rotor included")
-      text = "маховик и ротор учтены"
-    case ("pair friction included")
-      text = "трение в парах учтено"
-    case ("not drawn")
-      text = "не построен"
-    case ("arrows: directions of the loads")
-      text = "стрелки: направления нагрузок"
-    case ("known forces first, then the pair forces")
-      text = "сначала известные силы, затем реакции"
-    case ("no driver column")
-      text = "нет столбца движущего усилия"
-    case ("the driving link is at rest")
-      text = "ведущее звено неподвижно"
-    case ("the driver is not a moment on a link of the drawing")
-      text = "движущее усилие - не момент на звене чертежа"
-    case ("the driver is neither a moment on a link nor a force on a slider of the drawing")
-      text = "движущее усилие - ни момент на звене, ни сила на ползуне чертежа"
-    case ("Force polygons of the groups")
-      text = "Планы сил групп"
-    case ("Assur group")
-      text = "группа"
-    case ("input link")
-      text = "входное звено"
-    case ("through the joint")
-      text = "через шарнир"
-    case ("the group apart")
-      text = "группа отдельно"
-    case ("known forces first, then the unknown reactions")
-      text = "сначала известные силы, затем искомые реакции"
-    case ("Mechanism")
-      text = "Механизм"
-    case ("position")
-      text = "положение"
-    case ("the plans in the mechanism's frame")
-      text = "планы в системе координат чертежа механизма"
-    case ("Loads on the lever")
-      text = "Нагрузки на рычаге"
-    case ("image")
-      text = "точка плана"
-    case ("arms on the lever")
-      text = "плечи на рычаге"
-    case ("Values read off the plans")
-      text = "Величины по планам"
-    case ("counterclockwise")
-      text = "против часовой стрелки"
-    case ("clockwise")
-      text = "по часовой стрелке"
-    case ("at the pole")
-      text = "в полюсе"
-    case ("not drawn, shorter than 1 mm")
-      text = "не показаны, короче 1 мм"
-    case ("Balancing effort")
-      text = "Уравновешивающее усилие"
-    case ("read off the sheet (vectors to 0.5 mm, arms to 1 mm)")
-      text = "по чертежу (векторы с точностью 0,5 мм, плечи 1 мм)"
-    case ("lever")
-      text = "рычаг"
-    case ("polygons")
-      text = "планы сил"
-    case ("relative velocities: v_PQ of a link's points, r along a guide")
-      text = "относительные скорости: v_PQ точек звена, r вдоль направляющей"
-    case ("components: n normal, τ tangential, k Coriolis, r relative")
-      text = "составляющие: n норм., τ касат., k кориол., r относит."
-    case ("Plans of velocities, accelerations, forces")
-      text = "Планы скоростей, ускорений, сил"
-    case ("Mechanism with its forces")
-      text = "Механизм с силами"
-    case ("Hodographs and diagrams")
-      text = "Годографы и диаграммы"
-    case ("not drawn, shorter than 1 mm at μF")
-      text = "не показаны, короче 1 мм при μF"
-    case ("under 1 mm, not drawn")
-      text = "короче 1 мм, не показаны"
-    case ("The input step")
-      text = "Шаг входного звена"
-    case ("is coarser than")
-      text = "крупнее"
-    case ("next to a load that switches on or off")
-      text = "рядом с включением или "// &
-        "выключением нагрузки"
-    case ("the curves join the steps by chords and may miss the true peaks and the true mean; rerun with a "// &
-      "finer step")
-      text = "кривые соединяют положения хордами и могут "// &
-        "пропустить истинные максимумы и истинное "// &
-        "среднее; повторите расчет с меньшим шагом"
-    case ("points drawn")
-      text = "точек показано"
-    case ("Shaking force and moment (the resultant of the inertia forces)")
-      text = "Главный вектор и главный момент сил инерции"
-    case ("Shaking moment")
-      text = "Главный момент сил инерции"
-    case default
+    if (lang == lang_ru) then
+      text = translated(english, label_words)
+    else
       text = english
-    end select
+    end if
   end function label
 
   !> A unit symbol for a drawing in language `lang`: the table's symbol (Н*м, кг*м^2) with the
@@ -423,9 +356,7 @@ contains
     !> lang_en or lang_ru.
     integer, intent(in) :: lang
     character(len=:), allocatable :: text
-    text = unit
-    if (lang /= lang_ru) return
-    text = replace_all(replace_all(label(unit, lang), "*", "·"), "^2", "²")
+    text = in_language(unit, replace_all(replace_all(label(unit, lang), "*", "·"), "^2", "²"), lang)
   end function unit_symbol
 
   !> A phrase of the legacy table in language `lang`: a shared label; a unit with a note
@@ -466,27 +397,13 @@ contains
     if (lang /= lang_ru) return
     if (index(english, "STAGE ") == 1 .or. index(adjustl(english), "DYAD ") == 1 .or. &
       (index(english, "FORCE ") == 1 .or. index(english, "MOMENT ") == 1) .and. index(english, " LINK") > 0) then
-      text = replace_all(text, "STAGE ", "СТУПЕНЬ ")
-      text = replace_all(text, ": SPUR", ": ПРЯМОЗУБАЯ")
-      text = replace_all(text, ": HELICAL", ": КОСОЗУБАЯ")
-      text = replace_all(text, ": BEVEL", ": КОНИЧЕСКАЯ")
-      text = replace_all(text, ": PLANETARY", ": ПЛАНЕТАРНАЯ")
-      text = replace_all(text, "DYAD ", "ДИАДА ")
-      text = replace_all(text, " ON LINKS ", " НА ЗВЕНЬЯХ ")
-      text = replace_all(text, " LINKS ", " ЗВЕНЬЯ ")
-      text = replace_all(text, " AND ", " И ")
-      text = replace_all(text, ", MODE ", ", СБОРКА ")
-      text = replace_all(text, "FORCE ", "СИЛА ")
-      text = replace_all(text, "MOMENT ", "МОМЕНТ ")
-      text = replace_all(text, " LINK", " ЗВЕНО")
+      call replace_words(text, composite_words)
     else if (is_linkage_echo(adjustl(english))) then
       text = linkage_echo_ru(english)
     else if (index(english, "M") == 1 .and. (index(english, " POWER") > 0 .or. index(english, " HOUSING") > 0 .or. &
       index(english, " BALANCE") > 0)) then
       ! a gear stage's torques: from the power balance, on the housing, from the torque balance
-      text = replace_all(text, " POWER", " МОЩН.")
-      text = replace_all(text, " HOUSING", " КОРПУСА")
-      text = replace_all(text, " BALANCE", " БАЛАНС")
+      call replace_words(text, torque_words)
     end if
   end function echo_name
 
@@ -532,77 +449,18 @@ contains
     character(len=:), allocatable :: text
     integer :: k
     text = english
-    text = replace_all(text, "STRUCTURAL ANALYSIS", "СТРУКТУРНЫЙ АНАЛИЗ")
-    text = replace_all(text, "MOVING LINKS n", "ПОДВИЖНЫХ ЗВЕНЬЕВ n")
-    text = replace_all(text, "LOWER PAIRS p5", "НИЗШИХ ПАР p5")
-    text = replace_all(text, "HIGHER PAIRS p4", "ВЫСШИХ ПАР p4")
-    text = replace_all(text, "NUMBER OF DRIVES", "ЧИСЛО НАЧАЛЬНЫХ ЗВЕНЬЕВ")
-    text = replace_all(text, "STRUCTURE FORMULA:", "ФОРМУЛА СТРОЕНИЯ:")
-    text = replace_all(text, "CLASS OF THE MECHANISM:", "КЛАСС МЕХАНИЗМА:")
-    text = replace_all(text, "INPUT LINK(S) (MECHANISM OF CLASS I)", &
-      "НАЧАЛЬНОЕ ЗВЕНО (МЕХАНИЗМ I КЛАССА)")
+    call replace_words(text, linkage_words)
     ! a dyad's kind in the course's letters: В (вращательная) for R, П (поступательная) for P
     k = index(text, "), KIND ")
     if (k > 0) text = text(1:k + 7)//course_kind(text(k + 8:))
-    text = replace_all(text, "DYAD (GROUP OF CLASS II, ORDER 2), KIND", &
-      "ДИАДА (ГРУППА II КЛАССА 2-ГО ПОРЯДКА), ВИД")
-    text = replace_all(text, "GROUP OF CLASS III, ORDER 3", &
-      "ГРУППА III КЛАССА 3-ГО ПОРЯДКА")
-    text = replace_all(text, "GROUP OF CLASS III, ORDER 4", &
-      "ГРУППА III КЛАССА 4-ГО ПОРЯДКА")
-    text = replace_all(text, "(TWO TERNARY BASE LINKS AND FOUR BINARY LINKS)", &
-      "(ДВА БАЗОВЫХ ЗВЕНА С ТРЕМЯ ПАРАМИ)")
-    text = replace_all(text, "(A TERNARY BASE LINK AND THREE BINARY LINKS)", &
-      "(БАЗОВОЕ ЗВЕНО С ТРЕМЯ ПАРАМИ)")
-    text = replace_all(text, "GROUP OF CLASS IV, ORDER 2", &
-      "ГРУППА IV КЛАССА 2-ГО ПОРЯДКА")
-    text = replace_all(text, "(A CLOSED FOUR-LINK CONTOUR)", &
-      "(ЗАМКНУТЫЙ ЧЕТЫРЕХЗВЕННЫЙ КОНТУР)")
-    text = replace_all(text, "(CLASS NOT DETERMINED)", "(КЛАСС НЕ ОПРЕДЕЛЕН)")
-    text = replace_all(text, "GROUP OF ", "ГРУППА ИЗ ")
-    text = replace_all(text, ", FOLLOWS THE LINK", ", ПОВОРАЧИВАЕТСЯ СО ЗВЕНОМ")
-    text = replace_all(text, ", GUIDE ON ", ", НАПРАВЛЯЮЩАЯ НА ЗВЕНЕ ")
-    text = replace_all(text, ", INPUT ", ", ВХОД ")
-    text = replace_all(text, ", EFFORT ", ", УСИЛИЕ ")
-    text = replace_all(text, "DRIVE ", "ПРИВОД ")
-    text = replace_all(text, "PAIR ", "ПАРА ")
-    text = replace_all(text, "FORCE ", "СИЛА ")
-    text = replace_all(text, "MOMENT ", "МОМЕНТ ")
-    text = replace_all(text, " LINKS (", " ЗВЕНЬЕВ (")
-    text = replace_all(text, " LINKS ", " ЗВЕНЬЯ ")
-    text = replace_all(text, " LINKS", " ЗВЕНЬЕВ")
-    text = replace_all(text, " AND ", " И ")
-    text = replace_all(text, "LINK ", "ЗВЕНО ")
+    call replace_words(text, linkage_unit_words)
   end function linkage_echo_ru
 
   !> A note in parentheses after a unit or a value, in Russian (unknown notes unchanged).
   pure function note(english) result(text)
     character(*), intent(in) :: english
     character(len=:), allocatable :: text
-    select case (english)
-    case ("frame 1")
-      text = "система 1"
-    case ("frame 2")
-      text = "система 2"
-    case ("rise; derived")
-      text = "подъем; вычислено"
-    case ("along +x2")
-      text = "вдоль +x2"
-    case ("from forces")
-      text = "из сил"
-    case ("power balance")
-      text = "баланс мощностей"
-    case ("carrier, from forces")
-      text = "водило, из сил"
-    case ("on the ring, from forces")
-      text = "на коронном колесе, из сил"
-    case ("echoed below as derived link coordinates")
-      text = "ниже - пересчитанные координаты звеньев"
-    case ("derived")
-      text = "вычислено"
-    case default
-      text = english
-    end select
+    text = translated(english, note_words)
   end function note
 
   !> `english` or, with lang_ru, `russian`: a text given in both wordings side by side.
@@ -617,5 +475,52 @@ contains
       text = english
     end if
   end function in_language
+
+  !> The Russian wording of `english` in `words` (entries "english=>russian"), or `english`
+  !> when it has none there.
+  pure function translated(english, words) result(text)
+    !> The English wording.
+    character(*), intent(in) :: english
+    !> The table of wordings.
+    character(*), intent(in) :: words(:)
+    character(len=:), allocatable :: text
+    integer :: i
+    text = english
+    do i = 1, size(words)
+      if (words(i)(1:index(words(i), "=>") - 1) /= english) cycle
+      text = russian_of(words(i))
+      return
+    end do
+  end function translated
+
+  !> Replace in `text` the English wording of every entry of `words` ("english=>russian") by
+  !> its Russian one, in the table's order.
+  pure subroutine replace_words(text, words)
+    !> The text, English on entry.
+    character(len=:), allocatable, intent(inout) :: text
+    !> The table of wordings.
+    character(*), intent(in) :: words(:)
+    integer :: i
+    do i = 1, size(words)
+      text = replace_all(text, english_of(words(i)), russian_of(words(i)))
+    end do
+  end subroutine replace_words
+
+  !> The English wording of an entry "english=>russian".
+  pure function english_of(entry) result(text)
+    character(*), intent(in) :: entry
+    character(len=:), allocatable :: text
+    text = entry(1:index(entry, "=>") - 1)
+  end function english_of
+
+  !> The Russian wording of an entry "english=>russian", with as many trailing blanks as the
+  !> English wording.
+  pure function russian_of(entry) result(text)
+    character(*), intent(in) :: entry
+    character(len=:), allocatable :: text
+    integer :: arrow
+    arrow = index(entry, "=>")
+    text = trim(entry(arrow + 2:))//repeat(" ", arrow - 1 - len_trim(entry(1:arrow - 1)))
+  end function russian_of
 
 end module kinetostat_labels

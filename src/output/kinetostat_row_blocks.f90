@@ -9,6 +9,7 @@ module kinetostat_row_blocks
   use, intrinsic :: iso_fortran_env, only: int64
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_step_table, only: step_table_t
+  use kinetostat_format, only: put_cells, cell_room
   implicit none
   private
   public :: put_row_blocks, put_row_blocks_two, worker_count, row_writer_t, text_sink_t, table_rows_t
@@ -32,8 +33,10 @@ module kinetostat_row_blocks
   end type row_writer_t
 
   !> A writer of a step table's rows (the CSV's, the JSON's): the table and the columns it
-  !> shows, with how each is written.
-  type, abstract, extends(row_writer_t) :: table_rows_t
+  !> shows, with how each is written, and how a row is framed: `opening`, the cells with
+  !> `separator` between them (`void_cell` in a row without values), then `closing` (after
+  !> the run's last row `last_closing`).
+  type, extends(row_writer_t) :: table_rows_t
     !> The results (while the writer runs only).
     type(step_table_t), pointer :: table => null()
     !> The table's columns shown, in order.
@@ -42,8 +45,20 @@ module kinetostat_row_blocks
     logical, allocatable :: whole(:)
     !> Per shown column: no value in a row without values.
     logical, allocatable :: voidable(:)
+    !> Text before a row's first cell.
+    character(len=:), allocatable :: opening
+    !> Text between two cells.
+    character(len=:), allocatable :: separator
+    !> A cell without a value (a jammed cam follower's forces): never a 0.
+    character(len=:), allocatable :: void_cell
+    !> Text after a row's last cell, but the run's last row.
+    character(len=:), allocatable :: closing
+    !> Text after the run's last row's last cell.
+    character(len=:), allocatable :: last_closing
   contains
     procedure :: aim => aim_table_rows
+    procedure :: row_room => table_row_room
+    procedure :: put_rows => put_table_rows
   end type table_rows_t
 
   !> What takes the text of an output as its rows are formatted (e.g. the spool's file).
@@ -82,13 +97,17 @@ module kinetostat_row_blocks
 
 contains
 
-  !> Aim a table writer at `table` and the columns marked in `shown`.
-  subroutine aim_table_rows(self, table, shown)
+  !> Aim a table writer at `table` and the columns marked in `shown`, its rows framed by
+  !> `opening`, `separator` (`void_cell` for a cell without a value), `closing` and, after
+  !> the run's last row, `last_closing`.
+  subroutine aim_table_rows(self, table, shown, opening, separator, void_cell, closing, last_closing)
     class(table_rows_t), intent(inout) :: self
     !> The results (the writer keeps a pointer while it runs).
     type(step_table_t), intent(in), target :: table
     !> Per column of the table: whether the output shows it.
     logical, intent(in) :: shown(:)
+    !> How a row is framed (see table_rows_t).
+    character(*), intent(in) :: opening, separator, void_cell, closing, last_closing
     integer :: c
     self%columns = pack([(c, c = 1, size(shown))], shown)
     allocate (self%whole(size(self%columns)), self%voidable(size(self%columns)))
@@ -97,7 +116,45 @@ contains
       self%voidable(c) = table%columns(self%columns(c))%voidable
     end do
     self%table => table
+    self%opening = opening
+    self%separator = separator
+    self%void_cell = void_cell
+    self%closing = closing
+    self%last_closing = last_closing
   end subroutine aim_table_rows
+
+  !> Room of a row of `n_columns` cells, bytes (its line end counted).
+  pure integer function table_row_room(self, n_columns)
+    class(table_rows_t), intent(in) :: self
+    integer, intent(in) :: n_columns
+    table_row_room = n_columns * (cell_room + len(self%separator)) + len(self%opening) + len(self%closing) + 1
+  end function table_row_room
+
+  !> Rows `first` to `last`, one line each.
+  subroutine put_table_rows(self, first, last, out, later)
+    !> The table, its shown columns and the rows' framing.
+    class(table_rows_t), intent(in) :: self
+    !> First and last row.
+    integer, intent(in) :: first, last
+    !> Where the rows go.
+    type(text_buffer_t), intent(inout) :: out
+    !> Unused (a table's rows are one section).
+    type(text_buffer_t), intent(inout) :: later
+    integer :: k
+    ! room for every row at once (no copying while the buffer grows)
+    call out%reserve((last - first + 1) * self%row_room(size(self%columns)))
+    do k = first, last
+      call out%append(self%opening)
+      call put_cells(out, self%table%rows(:, k), self%columns, self%whole, self%voidable, self%table%is_void(k), &
+        self%separator, self%void_cell)
+      if (self%table%row_offset + k < max(self%table%total_rows, self%table%row_count())) then
+        call out%append(self%closing)
+      else
+        call out%append(self%last_closing)
+      end if
+      call out%end_line()
+    end do
+  end subroutine put_table_rows
 
   !> Threads OpenMP would use (1 without OpenMP).
   integer function worker_count()

@@ -13,7 +13,7 @@ module kinetostat_step_table
   implicit none
   private
   public :: step_table_t, column_t, column, echo_record_t, echo_cursor_t, remark_t, column_tally_t, edge_point_t, &
-    step_span, worst_row
+    step_span, worst_row, lack_block_memory
   public :: col_input_angle, col_force, col_force_angle, col_component, col_moment, col_length, &
     col_flag, col_count, col_ratio, col_other, column_kind_names
   public :: echo_real_kind, echo_int_kind, echo_logical_kind, echo_array_kind, echo_text_kind, &
@@ -274,6 +274,7 @@ module kinetostat_step_table
     procedure :: finish_columns
     procedure :: set_columns
     procedure :: declare_columns
+    procedure :: declare_record
     procedure :: column_index
     procedure :: dynamics_records
     procedure :: shaft_inertia
@@ -289,6 +290,7 @@ module kinetostat_step_table
     procedure :: is_void
     procedure :: void_cell
     procedure :: set_selfcheck
+    procedure :: set_selfcheck_rows
     procedure :: echo_real => echo_value
     procedure :: echo_int => echo_value
     procedure :: echo_logical => echo_value
@@ -345,6 +347,17 @@ contains
     if (present(first)) k1 = first
     if (present(last)) k2 = last
   end subroutine step_span
+
+  !> The error of a block's results that do not fit in memory.
+  pure subroutine lack_block_memory(error, steps, step_bytes)
+    !> The error to create.
+    type(error_t), allocatable, intent(out) :: error
+    !> Steps of the block.
+    integer, intent(in) :: steps
+    !> Bytes of one step's results.
+    integer(int64), intent(in) :: step_bytes
+    call out_of_memory(error, "the results of a block of "//int_str(steps)//" steps", steps * step_bytes)
+  end subroutine lack_block_memory
 
   !> Whether the rows now in the table end the run (the footers are written then).
   pure logical function last_block(self)
@@ -414,6 +427,23 @@ contains
     if (.not. allocated(self%columns)) allocate (self%columns(0))
     self%columns = [self%columns, columns]
   end subroutine declare_columns
+
+  !> Declare a design kind's one record of named values (single_record): its columns, what
+  !> the row is ("pair", "train") and the figure the run is about (driver); its row allocated.
+  pure subroutine declare_record(self, columns, row_name, driver)
+    class(step_table_t), intent(inout) :: self
+    !> The record's columns.
+    type(column_t), intent(in) :: columns(:)
+    !> What the row is.
+    character(*), intent(in) :: row_name
+    !> The column the run is about.
+    character(*), intent(in) :: driver
+    call self%declare_columns(columns)
+    self%row_name = row_name
+    self%driver = driver
+    self%single_record = .true.
+    call self%allocate_rows(1)
+  end subroutine declare_record
 
   !> Append one column.
   pure subroutine add_column(self, name, unit, kind, csv)
@@ -822,6 +852,19 @@ contains
     self%block_tally%mismatch = running_max_t(max_mismatch, row, .true.)
     self%driver = driver
   end subroutine set_selfcheck
+
+  !> set_selfcheck from the figures of every row of the block: the largest of each and its
+  !> row (worst_row: the first NaN, else the largest).
+  pure subroutine set_selfcheck_rows(self, residuals, mismatches, driver)
+    class(step_table_t), intent(inout) :: self
+    !> Relative equilibrium residual of every row of the block.
+    real(wp), intent(in) :: residuals(:)
+    !> Relative mismatch of the driving effort of every row of the block.
+    real(wp), intent(in) :: mismatches(:)
+    !> Name of the driving quantity ("M1", "F2", ...).
+    character(*), intent(in) :: driver
+    call self%set_selfcheck(maxval(residuals), maxval(mismatches), driver, worst_row(residuals), worst_row(mismatches))
+  end subroutine set_selfcheck_rows
 
   !> Index of the worst self-check figure of a block: the first NaN, else the largest (1
   !> for an empty array).

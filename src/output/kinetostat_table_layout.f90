@@ -14,7 +14,7 @@ module kinetostat_table_layout
   private
   public :: table_field_t, field, blank_field, layout_columns, put_layout_heading, put_layout_step, put_layout_rows, heading_of, &
     heading_unit_of, force_and_angle, forces_and_angles, put_fields, &
-    column_value, named_column
+    column_value, named_column, magnitudes_over_angles
 
   !> One field of a step's lines in the legacy table.
   type :: table_field_t
@@ -117,6 +117,31 @@ contains
     if (present(whole)) f%whole = whole
     if (present(unit_width)) f%unit_width = unit_width
   end function field
+
+  !> The two lines of a step of the 1991 crank mechanisms' printouts: the input angle `input`
+  !> (9 wide) and the force magnitudes `magnitudes` (12 wide), then the fields of `tail` (the
+  !> driving moment); under them, after a blank 9 wide, the angles (<name>G, 12 wide) of
+  !> the forces `angles`. Names blank-padded.
+  pure function magnitudes_over_angles(input, magnitudes, angles, tail) result(fields)
+    !> Column of the input angle.
+    character(*), intent(in) :: input
+    !> Columns of the magnitudes, in their order on line 1.
+    character(*), intent(in) :: magnitudes(:)
+    !> Forces whose angle columns line 2 shows, in order.
+    character(*), intent(in) :: angles(:)
+    !> Fields after the magnitudes on line 1.
+    type(table_field_t), intent(in) :: tail(:)
+    type(table_field_t), allocatable :: fields(:)
+    integer :: i
+    fields = [field(input, 9, 2)]
+    do i = 1, size(magnitudes)
+      fields = [fields, field(trim(magnitudes(i)), 12, 2)]
+    end do
+    fields = [fields, tail, blank_field(9, 2)]
+    do i = 1, size(angles)
+      fields = [fields, field(trim(angles(i))//"G", 12, 2, line=2)]
+    end do
+  end function magnitudes_over_angles
 
   !> A blank field `width` wide on line `line` (under the input angle of line 1).
   pure function blank_field(width, line) result(f)

@@ -63,12 +63,8 @@ contains
       error%message = table%deck//": &"//table%mechanism//": "//error%message
       return
     end if
-    call table%declare_columns(planetary_columns())
-    table%row_name = "train"
-    table%driver = "u_actual"
-    table%single_record = .true.
+    call table%declare_record(planetary_columns(), "train", "u_actual")
     table%has_selfcheck = .false.
-    call table%allocate_rows(1)
     table%rows(:, 1) = [real(t%z1, wp), real(t%z2, wp), real(t%z3, wp), real(self%deck%spec%k, wp), t%u_actual, &
       t%u_deviation, t%assembly_number, t%neighbour_margin]
     call table%echo_text("SCHEME", "single_row")

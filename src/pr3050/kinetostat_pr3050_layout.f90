@@ -4,13 +4,12 @@ module kinetostat_pr3050_layout
   use, intrinsic :: iso_fortran_env, only: int64
   use kinetostat_kinds, only: wp, deg_to_rad
   use kinetostat_deck, only: deck_source_t
-  use kinetostat_error, only: error_t, out_of_memory
+  use kinetostat_error, only: error_t
   use kinetostat_text, only: int_str, real_str
   use kinetostat_vec2, only: angle_360_deg
   use kinetostat_noise, only: noise_rel, noise_floor, force_columns, force_components, angles_0_360
-  use kinetostat_step_table, only: worst_row
   use kinetostat_step_table, only: step_table_t, column_t, column, col_input_angle, col_component, step_span, &
-    col_moment, col_length, col_other
+    col_moment, col_length, col_other, lack_block_memory
   use kinetostat_table_layout, only: table_field_t, field, forces_and_angles, put_layout_heading, &
     put_layout_rows
   use kinetostat_labels, only: lang_ru
@@ -24,7 +23,7 @@ module kinetostat_pr3050_layout
   use kinetostat_drawing, only: drawing_t, force_load
   use kinetostat_bodies, only: mass_model_t
   use kinetostat_dynamics, only: motion_t, dynamics_none
-  use kinetostat_dynamics_table, only: echo_dynamics, add_dynamics_columns, put_dynamics_values
+  use kinetostat_dynamics_table, only: echo_dynamics, add_dynamics_columns, put_dynamics_rows
   implicit none
   private
   public :: pr3050_mechanism_t, new_pr3050, pr3050_solve, pr3050_columns, pr3050_csv_values
@@ -108,8 +107,7 @@ contains
     call step_span(deck%n, k1, k2, first, last)
     allocate (steps(k2 - k1 + 1), stat=stat)
     if (stat /= 0) then
-      call out_of_memory(error, "the results of a block of "//int_str(k2 - k1 + 1)//" steps", &
-        int(k2 - k1 + 1, int64) * storage_size(steps) / 8)
+      call lack_block_memory(error, k2 - k1 + 1, storage_size(steps, int64) / 8)
       return
     end if
     ! steps in parallel with OpenMP threads; the error reported is the first step's in step order
@@ -194,22 +192,20 @@ contains
       end associate
     end do
     !$omp end parallel do
-    do k = 1, merge(size(steps), 0, self%deck%dyn%mode /= dynamics_none)
-      call put_dynamics_values(table, k, self%deck%dyn%mode, reduced_motion(self%deck, steps(k)))
-    end do
+    if (self%deck%dyn%mode /= dynamics_none) call put_dynamics_rows(table, self%deck%dyn%mode, &
+      reduced_motion(self%deck, steps))
     if (table%kinematics_wanted) then
       do k = 1, size(steps)
         call put_kinematics(table, k, self%deck%p, steps(k))
       end do
     end if
-    call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "F2", &
-      worst_row([steps%residual]), worst_row([steps%mismatch]))
+    call table%set_selfcheck_rows([steps%residual], [steps%mismatch], "F2")
   end subroutine solve
 
   !> The reduced quantities of a computed step, reduced to the stroke s (dynamics = 'reduced';
   !> J_red with the drive's mass j_rotor, kg; dJ_red kg/m; M_red N); omega is the stroke's
   !> speed ds/dt of the step.
-  pure function reduced_motion(deck, s) result(mo)
+  elemental function reduced_motion(deck, s) result(mo)
     type(pr3050_deck_t), intent(in) :: deck
     type(pr3050_step_t), intent(in) :: s
     type(motion_t) :: mo

@@ -4,13 +4,11 @@ module kinetostat_pr3207_layout
   use, intrinsic :: iso_fortran_env, only: int64
   use kinetostat_kinds, only: wp, deg_to_rad, rad_to_deg
   use kinetostat_deck, only: deck_source_t
-  use kinetostat_text, only: int_str
-  use kinetostat_error, only: error_t, out_of_memory
+  use kinetostat_error, only: error_t
   use kinetostat_noise, only: noise_floor, force_columns, force_components, angles_0_360
-  use kinetostat_step_table, only: worst_row
-  use kinetostat_step_table, only: step_table_t, column_t, column, col_input_angle, col_moment, step_span
+  use kinetostat_step_table, only: step_table_t, column_t, column, col_input_angle, col_moment, step_span, lack_block_memory
   use kinetostat_labels, only: lang_ru
-  use kinetostat_table_layout, only: table_field_t, field, blank_field, forces_and_angles, &
+  use kinetostat_table_layout, only: table_field_t, field, magnitudes_over_angles, forces_and_angles, &
     put_layout_heading, put_layout_rows
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_mechanism, only: mechanism_t
@@ -22,8 +20,8 @@ module kinetostat_pr3207_layout
   use kinetostat_drawing, only: drawing_t, force_load
   use kinetostat_bodies, only: mass_model_t
   use kinetostat_dynamics, only: cycle_t, motion_t, dynamics_steady
-  use kinetostat_dynamics_table, only: note_constant_speed_cost, echo_dynamics, add_dynamics_columns, &
-    put_dynamics_values, put_dynamics_figures, &
+  use kinetostat_dynamics_table, only: note_constant_speed_costs, echo_dynamics, add_dynamics_columns, &
+    put_dynamics_rows, put_dynamics_figures, &
     note_drive_deviation
   use kinetostat_pr3207_dynamics, only: pr3207_cycle, pr3207_motion
   implicit none
@@ -111,8 +109,7 @@ contains
     if (stat == 0 .and. present(motions)) allocate (motions(k2 - k1 + 1), stat=stat)
     if (stat == 0 .and. present(const)) allocate (const(k2 - k1 + 1), stat=stat)
     if (stat /= 0) then
-      if (present(error)) call out_of_memory(error, "the results of a block of "//int_str(k2 - k1 + 1)//" steps", &
-        int(k2 - k1 + 1, int64) * 3 * storage_size(steps) / 8)
+      if (present(error)) call lack_block_memory(error, k2 - k1 + 1, 3_int64 * storage_size(steps) / 8)
       return
     end if
     if (.not. present(cycle)) then
@@ -174,9 +171,7 @@ contains
     end do
     !$omp end parallel do
     if (allocated(motions)) then
-      do k = 1, size(steps)
-        call put_dynamics_values(table, k, self%deck%dyn%mode, motions(k))
-      end do
+      call put_dynamics_rows(table, self%deck%dyn%mode, motions)
       if (self%deck%dyn%mode >= dynamics_steady) call constant_speed_cost(steps, const, table)
       if (self%deck%dyn%mode >= dynamics_steady) call note_drive_deviation(table, [steps%m1], motions, &
         self%cycle%j_flywheel)
@@ -186,8 +181,7 @@ contains
         call put_kinematics(table, k, self%deck%p, steps(k))
       end do
     end if
-    call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "M1", &
-      worst_row([steps%residual]), worst_row([steps%mismatch]))
+    call table%set_selfcheck_rows([steps%residual], [steps%mismatch], "M1")
   end subroutine solve
 
   !> The peaks of the pair forces with the true motion against those at omega1 = omega_m.
@@ -197,27 +191,23 @@ contains
     !> The same steps at constant speed.
     type(pr3207_step_t), intent(in) :: const(:)
     type(step_table_t), intent(inout) :: table
-    integer :: i
-    do i = 1, size(force_names)
-      call note_constant_speed_cost(table, trim(force_names(i)), peak(steps, i), peak(const, i))
+    real(wp) :: peak(size(force_names)), peak_const(size(force_names))
+    integer :: k
+    peak = 0.0_wp
+    peak_const = 0.0_wp
+    do k = 1, size(steps)
+      peak = max(peak, norm2(pair_forces(steps(k)), dim=1))
+      peak_const = max(peak_const, norm2(pair_forces(const(k)), dim=1))
     end do
-  contains
-    pure real(wp) function peak(s, i)
-      type(pr3207_step_t), intent(in) :: s(:)
-      integer, intent(in) :: i
-      integer :: k
-      peak = 0.0_wp
-      do k = 1, size(s)
-        select case (i)
-        case (1); peak = max(peak, norm2(s(k)%f16))
-        case (2); peak = max(peak, norm2(s(k)%f21))
-        case (3); peak = max(peak, norm2(s(k)%f36))
-        case (4); peak = max(peak, norm2(s(k)%f34))
-        case default; peak = max(peak, norm2(s(k)%f56))
-        end select
-      end do
-    end function peak
+    call note_constant_speed_costs(table, force_names, peak, peak_const)
   end subroutine constant_speed_cost
+
+  !> The pair forces of a step, in the order of force_names, N.
+  pure function pair_forces(s) result(f)
+    type(pr3207_step_t), intent(in) :: s
+    real(wp) :: f(2, size(force_names))
+    f = reshape([s%f16, s%f21, s%f36, s%f34, s%f56], [2, size(force_names)])
+  end function pair_forces
 
   !> The columns of a step, in the spec's order: the crank angle, every pair force's
   !> magnitude and angle, the driving moment.
@@ -228,21 +218,6 @@ contains
     cols = [cols, column("M1", "N*m", col_moment, heading="M1")]
   end function pr3207_columns
 
-  !> The RESULTS layout of a step: the crank angle (9 wide), the magnitudes and M1 (12
-  !> wide), under them the angles.
-  pure function results_layout() result(fields)
-    type(table_field_t), allocatable :: fields(:)
-    integer :: i
-    fields = [field("phi1", 9, 2)]
-    do i = 1, size(force_names)
-      fields = [fields, field(trim(force_names(i)), 12, 2)]
-    end do
-    fields = [fields, field("M1", 12, 3), blank_field(9, 2)]
-    do i = 1, size(force_names)
-      fields = [fields, field(trim(force_names(i))//"G", 12, 2, line=2)]
-    end do
-  end function results_layout
-
   !> The row of values of one step. Forces below `noise_rel` times the step's largest
   !> force (and M1 below that force times l_AB) are roundoff: printed as 0 with angle 0.
   pure function pr3207_csv_values(s, l_ab) result(v)
@@ -251,12 +226,8 @@ contains
     !> Crank length, m (moment scale).
     real(wp), intent(in) :: l_ab
     real(wp) :: v(row_size)
-    real(wp) :: floor, f(2, 5)
-    f(:, 1) = s%f16
-    f(:, 2) = s%f21
-    f(:, 3) = s%f36
-    f(:, 4) = s%f34
-    f(:, 5) = s%f56
+    real(wp) :: floor, f(2, size(force_names))
+    f = pair_forces(s)
     floor = noise_floor(f, [real(wp) ::])
     v(1) = s%phi1 * rad_to_deg
     v(2:11) = force_columns(f, floor, angles_0_360)
@@ -279,7 +250,7 @@ contains
     !> The computed step.
     type(pr3207_step_t), intent(in) :: s
     type(pr3207_position_t) :: pos
-    real(wp) :: w2, f(2, 5), floor
+    real(wp) :: w2, f(2, size(force_names)), floor
     integer :: i
     pos = pr3207_position(p, s%phi1)
     w2 = s%omega1**2
@@ -296,7 +267,7 @@ contains
     call table%put_acceleration(k, "S1", [0.0_wp, 0.0_wp])
     call table%put_acceleration(k, "S3", pos%a_s3q * w2 + pos%v_s3q * s%eps1)
     call table%put_acceleration(k, "S5", [0.0_wp, s%a5])
-    f = reshape([s%f16, s%f21, s%f36, s%f34, s%f56], [2, 5])
+    f = pair_forces(s)
     floor = noise_floor(f, [real(wp) ::])
     do i = 1, size(force_names)
       call table%put_components(k, force_names(i), force_components(f(:, i), floor), 0.0_wp)
@@ -343,7 +314,8 @@ contains
     type(text_buffer_t), intent(inout) :: later
     type(table_field_t), allocatable :: fields(:)
     allocate (fields(0)) ! defined before the assignment (gcc's -Wuninitialized on the descriptor)
-    fields = results_layout()
+    ! the crank angle (9 wide), the magnitudes and M1 (12 wide), under them the angles
+    fields = magnitudes_over_angles("phi1", force_names, force_names, [field("M1", 12, 3)])
     ! the Russian printout's angle units stand one place right of their fields
     if (first == 1 .and. table%first_block()) call put_layout_heading(out, table, fields, lang, .true., &
       unit_shift=[0, merge(1, 0, lang == lang_ru)])

@@ -7,9 +7,9 @@ module kinetostat_sixbar_layout
   use kinetostat_error, only: error_t, fatal_error, exit_geometry, out_of_memory
   use kinetostat_text, only: real_str, int_str
   use kinetostat_noise, only: noise_floor, force_columns, force_components, angles_pm180
-  use kinetostat_step_table, only: worst_row
-  use kinetostat_step_table, only: step_table_t, column_t, column, col_input_angle, col_component, step_span, col_moment
-  use kinetostat_table_layout, only: table_field_t, field, blank_field, force_and_angle, &
+  use kinetostat_step_table, only: step_table_t, column_t, column, col_input_angle, col_component, step_span, col_moment, &
+    lack_block_memory
+  use kinetostat_table_layout, only: table_field_t, field, magnitudes_over_angles, force_and_angle, &
     put_layout_heading, put_layout_rows
   use kinetostat_labels, only: lang_ru
   use kinetostat_text_buffer, only: text_buffer_t
@@ -22,8 +22,8 @@ module kinetostat_sixbar_layout
   use kinetostat_drawing, only: drawing_t, force_load
   use kinetostat_bodies, only: mass_model_t
   use kinetostat_dynamics, only: motion_t, cycle_t, dynamics_steady
-  use kinetostat_dynamics_table, only: echo_dynamics, add_dynamics_columns, put_dynamics_values, &
-    put_dynamics_figures, note_drive_deviation, note_constant_speed_cost
+  use kinetostat_dynamics_table, only: echo_dynamics, add_dynamics_columns, put_dynamics_rows, &
+    put_dynamics_figures, note_drive_deviation, note_constant_speed_costs
   use kinetostat_sixbar_dynamics, only: sixbar_source_t, sixbar_source, sixbar_cycle, sixbar_motion
   implicit none
   private
@@ -132,8 +132,7 @@ contains
     allocate (steps(k2 - k1 + 1), stat=stat)
     if (stat == 0 .and. present(motions)) allocate (motions(k2 - k1 + 1), stat=stat)
     if (stat /= 0) then
-      call out_of_memory(error, "the results of a block of "//int_str(k2 - k1 + 1)//" steps", &
-        int(k2 - k1 + 1, int64) * 2 * storage_size(steps) / 8)
+      call lack_block_memory(error, k2 - k1 + 1, 2_int64 * storage_size(steps) / 8)
       return
     end if
     ! steps in parallel with OpenMP threads; the error reported is the first step's in step order
@@ -220,23 +219,18 @@ contains
     end do
     !$omp end parallel do
     if (allocated(motions)) then
-      do k = 1, size(steps)
-        call put_dynamics_values(table, k, self%deck%dyn%mode, motions(k))
-      end do
+      call put_dynamics_rows(table, self%deck%dyn%mode, motions)
       call constant_speed_cost(table%deck, self%deck, steps, first, last, table)
       call note_drive_deviation(table, [steps%m1], motions, self%cycle%j_flywheel)
-    else
-      do k = 1, merge(size(steps), 0, self%deck%dyn%mode > 0)
-        call put_dynamics_values(table, k, self%deck%dyn%mode, reduced_motion(self%deck, steps(k)))
-      end do
+    else if (self%deck%dyn%mode > 0) then
+      call put_dynamics_rows(table, self%deck%dyn%mode, reduced_motion(self%deck, steps))
     end if
     if (table%kinematics_wanted) then
       do k = 1, size(steps)
         call put_kinematics(table, k, self%deck%p, steps(k))
       end do
     end if
-    call table%set_selfcheck(maxval(steps%residual), maxval(steps%mismatch), "M1", &
-      worst_row([steps%residual]), worst_row([steps%mismatch]))
+    call table%set_selfcheck_rows([steps%residual], [steps%mismatch], "M1")
   end subroutine solve
 
   !> The peaks of the pair forces with the true motion against those at omega1 = omega_m.
@@ -249,34 +243,29 @@ contains
     type(step_table_t), intent(inout) :: table
     type(sixbar_step_t), allocatable :: const(:)
     type(error_t), allocatable :: error
-    integer :: i
+    real(wp) :: peak(size(force_names)), peak_const(size(force_names))
+    integer :: k
     call sixbar_solve(path, deck, const, error, first, last)
     if (allocated(error)) return
-    do i = 1, size(force_names)
-      call note_constant_speed_cost(table, trim(force_names(i)), peak(steps, i), peak(const, i))
+    peak = 0.0_wp
+    peak_const = 0.0_wp
+    do k = 1, size(steps)
+      peak = max(peak, norm2(pair_forces(steps(k)), dim=1))
+      peak_const = max(peak_const, norm2(pair_forces(const(k)), dim=1))
     end do
-  contains
-    pure real(wp) function peak(s, i)
-      type(sixbar_step_t), intent(in) :: s(:)
-      integer, intent(in) :: i
-      integer :: k
-      peak = 0.0_wp
-      do k = 1, size(s)
-        select case (i)
-        case (1); peak = max(peak, norm2(s(k)%f21))
-        case (2); peak = max(peak, norm2(s(k)%f32))
-        case (3); peak = max(peak, norm2(s(k)%f43))
-        case (4); peak = max(peak, norm2(s(k)%f45))
-        case (5); peak = max(peak, norm2(s(k)%f36))
-        case (6); peak = max(peak, norm2(s(k)%f16))
-        case default; peak = max(peak, abs(s(k)%f56))
-        end select
-      end do
-    end function peak
+    call note_constant_speed_costs(table, force_names, peak, peak_const)
   end subroutine constant_speed_cost
 
+  !> The pair forces of a step, in the order of force_names (the guide's F56 along y2 as the
+  !> vector [0, F56] of frame 2), N.
+  pure function pair_forces(s) result(f)
+    type(sixbar_step_t), intent(in) :: s
+    real(wp) :: f(2, size(force_names))
+    f = reshape([s%f21, s%f32, s%f43, s%f45, s%f36, s%f16, [0.0_wp, s%f56]], [2, size(force_names)])
+  end function pair_forces
+
   !> The reduced quantities of a computed step (dynamics = 'reduced': the deck's speed).
-  pure function reduced_motion(deck, s) result(mo)
+  elemental function reduced_motion(deck, s) result(mo)
     type(sixbar_deck_t), intent(in) :: deck
     type(sixbar_step_t), intent(in) :: s
     type(motion_t) :: mo
@@ -310,16 +299,10 @@ contains
   pure function results_layout(with_m1) result(fields)
     logical, intent(in) :: with_m1
     type(table_field_t), allocatable :: fields(:)
-    integer :: i
-    fields = [field("phi1", 9, 2)]
-    do i = 1, size(force_names)
-      fields = [fields, field(trim(force_names(i)), 12, 2)]
-    end do
-    if (with_m1) fields = [fields, field("M1", 12, 3)]
-    fields = [fields, blank_field(9, 2)]
-    do i = 1, size(force_names) - 1
-      fields = [fields, field(trim(force_names(i))//"G", 12, 2, line=2)]
-    end do
+    type(table_field_t), allocatable :: moment(:)
+    allocate (moment(0)) ! no M1 (and defined before the assignment: gcc's -Wuninitialized)
+    if (with_m1) moment = [field("M1", 12, 3)]
+    fields = magnitudes_over_angles("phi1", force_names, force_names(1:size(force_names) - 1), moment)
   end function results_layout
 
   !> The row of values of one step. Forces below `noise_rel` times the step's largest
@@ -330,11 +313,11 @@ contains
     !> Crank length, m (moment scale).
     real(wp), intent(in) :: l1
     real(wp) :: v(row_size)
-    real(wp) :: floor, f(2, 6)
-    f = reshape([s%f21, s%f32, s%f43, s%f45, s%f36, s%f16], [2, 6])
-    floor = noise_floor(f, [s%f56])
+    real(wp) :: floor, f(2, size(force_names))
+    f = pair_forces(s)
+    floor = noise_floor(f(:, 1:6), [s%f56])
     v(1) = s%pos%phi1 * rad_to_deg
-    v(2:13) = force_columns(f, floor, angles_pm180)
+    v(2:13) = force_columns(f(:, 1:6), floor, angles_pm180)
     v(14) = s%f56
     if (abs(v(14)) <= floor) v(14) = 0.0_wp
     v(15) = s%m1
@@ -356,7 +339,7 @@ contains
     type(sixbar_params_t), intent(in) :: p
     !> The computed step.
     type(sixbar_step_t), intent(in) :: s
-    real(wp) :: w, frame2, f(2, 7), floor, zero(2)
+    real(wp) :: w, frame2, f(2, size(force_names)), floor, zero(2)
     integer :: i
     w = s%omega1
     zero = 0.0_wp
@@ -385,7 +368,7 @@ contains
       call table%put_acceleration(k, "S5", sixbar_frame2_to_frame1(p, [sixbar_accel(pos%a_hq(1), pos%v_hq(1), w, s%eps1), &
                                                                       0.0_wp]))
     end associate
-    f = reshape([s%f21, s%f32, s%f43, s%f45, s%f36, s%f16, [0.0_wp, s%f56]], [2, 7])
+    f = pair_forces(s)
     floor = noise_floor(f(:, 1:6), [s%f56])
     do i = 1, size(force_names)
       call table%put_components(k, trim(force_names(i)), force_components(f(:, i), floor), &
