@@ -6,7 +6,8 @@ module kinetostat_pr3207_deck
   use kinetostat_deck_foreign, only: refuse_translated_stages
   use kinetostat_deck, only: values_out_of_memory, begin_group, text_bytes, text_chars, max_deck_array, &
     deck_context_t, unset_real, deck_array_capacities, deck_source_t, namelist_probe_t, deck_error, is_set, &
-    require_rule, require_per_step, optional_default, count_values, steps_over_turn, deck_rules_t
+    require_rule, require_per_step, optional_default, count_values, deck_rules_t, &
+    rule_finite, rule_positive, rule_nonnegative
   use kinetostat_pr3207, only: pr3207_params_t
   use kinetostat_dynamics, only: dynamics_steady
   use kinetostat_dynamics_deck, only: dynamics_deck_t, read_dynamics_settings, require_one_turn, md_table_capacity
@@ -158,14 +159,9 @@ contains
       [l_ab, l_ac, l_cd, l_cs3, m1, m3, m5, j3, omega1, dphi])
 
     ! lengths, masses, inertia, speed
-    call rules%require_positive("l_ab", l_ab)
-    call rules%require_positive("l_ac", l_ac)
-    call rules%require_positive("l_cd", l_cd)
-    call rules%require_nonnegative("l_cs3", l_cs3)
-    call rules%require_nonnegative("m1", m1)
-    call rules%require_nonnegative("m3", m3)
-    call rules%require_nonnegative("m5", m5)
-    call rules%require_nonnegative("j3", j3)
+    call rules%require_each(rule_positive, [character(4) :: "l_ab", "l_ac", "l_cd"], [l_ab, l_ac, l_cd])
+    call rules%require_each(rule_nonnegative, [character(5) :: "l_cs3", "m1", "m3", "m5", "j3"], &
+      [l_cs3, m1, m3, m5, j3])
     call rules%require_set("omega1", omega1)
     g = optional_default(g, g_default)
     call rules%require_nonnegative("g", g)
@@ -175,10 +171,8 @@ contains
       real_str(l_ac + l_ab)//" (got "//real_str(l_cd)//"): D must pass beyond the crank circle")
 
     ! crank angles
-    phi_start = optional_default(phi_start, 0.0_wp)
-    call rules%require_set("phi_start", phi_start)
+    call rules%crank_steps(phi_start, dphi, n, deck%n)
     if (rules%failed(error)) return
-    call steps_over_turn(ctx, dphi, n, deck%n, error); if (allocated(error)) return
 
     ! cutting force: per-step array or the two-value form, not both
     call count_values(ctx, "f5c", f5c, n_f5c, error); if (allocated(error)) return
@@ -199,9 +193,8 @@ contains
       end if
       call rules%require_set("f5c_work", f5c_work)
       f5c_idle = optional_default(f5c_idle, 0.0_wp)
-      call rules%require_set("f5c_idle", f5c_idle)
-      call rules%require_set("phi_cut_start", phi_cut_start)
-      call rules%require_set("phi_cut_end", phi_cut_end)
+      call rules%require_each(rule_finite, [character(13) :: "f5c_idle", "phi_cut_start", "phi_cut_end"], &
+        [f5c_idle, phi_cut_start, phi_cut_end])
       if (rules%failed(error)) return
       deck%two_value = .true.
       deck%f5c_work = f5c_work

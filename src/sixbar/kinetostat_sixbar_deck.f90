@@ -6,7 +6,8 @@ module kinetostat_sixbar_deck
   use kinetostat_deck_foreign, only: refuse_translated_stages
   use kinetostat_deck, only: values_out_of_memory, begin_group, text_bytes, text_chars, max_deck_array, &
     deck_context_t, unset_real, deck_array_capacities, deck_source_t, namelist_probe_t, deck_error, is_set, &
-    require_set, optional_default, steps_over_turn, deck_rules_t
+    require_set, optional_default, steps_over_turn, deck_rules_t, &
+    rule_finite, rule_positive, rule_nonnegative
   use kinetostat_sixbar, only: sixbar_params_t, sixbar_extreme_phi1
   use kinetostat_dynamics, only: dynamics_steady
   use kinetostat_dynamics_deck, only: dynamics_deck_t, read_dynamics_settings, require_one_turn, md_table_capacity
@@ -136,28 +137,17 @@ contains
       [a, b, l1, lam2, lam_s2, lam3, lam_de, lam4, lam_s4, lam_e, m1, m2, m3, m4, m5, j1, j2, j3, j4, omega1])
 
     ! geometry: D, lengths and ratios
-    call rules%require_set("a", a)
-    call rules%require_set("b", b)
+    call rules%require_each(rule_finite, [character(1) :: "a", "b"], [a, b])
     call rules%require_rule("b", hypot(a, b) > 0.0_wp, "a and b must not both be 0: D must differ from A")
-    call rules%require_positive("l1", l1)
-    call rules%require_positive("lam2", lam2)
+    call rules%require_each(rule_positive, [character(4) :: "l1", "lam2"], [l1, lam2])
     call rules%require_nonnegative("lam_s2", lam_s2)
-    call rules%require_positive("lam3", lam3)
-    call rules%require_positive("lam_de", lam_de)
-    call rules%require_positive("lam4", lam4)
+    call rules%require_each(rule_positive, [character(6) :: "lam3", "lam_de", "lam4"], [lam3, lam_de, lam4])
     call rules%require_nonnegative("lam_s4", lam_s4)
     call rules%require_set("lam_e", lam_e)
 
     ! masses, inertia, speed, gravity
-    call rules%require_nonnegative("m1", m1)
-    call rules%require_nonnegative("m2", m2)
-    call rules%require_nonnegative("m3", m3)
-    call rules%require_nonnegative("m4", m4)
-    call rules%require_nonnegative("m5", m5)
-    call rules%require_nonnegative("j1", j1)
-    call rules%require_nonnegative("j2", j2)
-    call rules%require_nonnegative("j3", j3)
-    call rules%require_nonnegative("j4", j4)
+    call rules%require_each(rule_nonnegative, [character(2) :: "m1", "m2", "m3", "m4", "m5", "j1", "j2", "j3", "j4"], &
+      [m1, m2, m3, m4, m5, j1, j2, j3, j4])
     call rules%require_set("omega1", omega1)
     g = optional_default(g, g_default)
     call rules%require_nonnegative("g", g)
