@@ -6,8 +6,7 @@ module kinetostat_cam_deck
   use kinetostat_text, only: real_str, int_str, lower
   use kinetostat_deck, only: values_out_of_memory, begin_group, text_bytes, text_chars, max_deck_array, &
     deck_context_t, unset_real, deck_array_capacities, deck_source_t, namelist_probe_t, deck_error, is_set, &
-    optional_default, count_values, deck_rules_t, &
-    rule_finite, rule_positive, rule_nonnegative
+    optional_default, count_values, deck_rules_t, rule_nonnegative
   use kinetostat_cam, only: cam_params_t
   implicit none
   private

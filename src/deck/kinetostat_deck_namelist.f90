@@ -6,6 +6,7 @@ module kinetostat_deck_namelist
   use kinetostat_kinds, only: wp
   use kinetostat_error, only: error_t, fatal_error, exit_input
   use kinetostat_text, only: int_str, lower, printable, clipped, starts_with
+  use kinetostat_deck_rules, only: unset_real, values_out_of_memory
   use kinetostat_deck_source, only: deck_source_t, deck_context_t, deck_line_count, deck_line, &
     deck_line_length, line_slice, line_search, line_records, record_part, record_text, cut_line, append_length, &
     record_width
@@ -85,6 +86,7 @@ module kinetostat_deck_namelist
     type(deck_capacity_t), allocatable :: capacities(:)
   contains
     procedure :: limit => probe_limit
+    procedure :: per_step => probe_per_step
     procedure :: retry => probe_retry
     procedure :: failed => probe_failed
     procedure :: start => probe_start
@@ -469,6 +471,27 @@ contains
     if (.not. allocated(self%capacities)) allocate (self%capacities(0))
     self%capacities = [self%capacities, deck_capacity_t(array, size, noun)]
   end subroutine probe_limit
+
+  !> A per-step array of the group, before the READ: allocated as long as the deck may fill
+  !> it (deck_array_capacities), every element unset_real, its limit noted (max_deck_array
+  !> "values (one per step)"); when there is no room, the out-of-memory error (exit 2).
+  subroutine probe_per_step(self, source, ctx, name, values, error)
+    class(namelist_probe_t), intent(inout) :: self
+    !> The deck.
+    type(deck_source_t), intent(in) :: source
+    !> Deck and group.
+    type(deck_context_t), intent(in) :: ctx
+    !> The array's variable, lower case.
+    character(*), intent(in) :: name
+    !> The namelist's read buffer.
+    real(wp), allocatable, intent(out) :: values(:)
+    type(error_t), allocatable, intent(out) :: error
+    integer :: capacity(1), stat
+    call self%limit(name, max_deck_array, "values (one per step)")
+    capacity = deck_array_capacities(source, ctx%group, [name])
+    allocate (values(capacity(1)), source=unset_real, stat=stat)
+    if (stat /= 0) call values_out_of_memory(ctx, name, capacity, error)
+  end subroutine probe_per_step
 
   !> When the failed assignment (variable `name`, text `text`) overflows an array of fixed
   !> capacity (a subscript out of range, too many values, a repeat count too large), `text`

@@ -4,10 +4,9 @@ module kinetostat_pr3050_deck
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str
   use kinetostat_deck_foreign, only: refuse_translated_stages, refuse_variables
-  use kinetostat_deck, only: values_out_of_memory, begin_group, text_bytes, text_chars, max_deck_array, &
-    deck_context_t, unset_real, deck_array_capacities, max_steps, deck_source_t, namelist_probe_t, &
-    optional_default, deck_rules_t, &
-    rule_finite, rule_positive, rule_nonnegative
+  use kinetostat_deck, only: begin_group, text_bytes, text_chars, deck_context_t, unset_real, max_steps, &
+    deck_source_t, namelist_probe_t, optional_default, deck_rules_t, rule_finite, rule_positive, &
+    rule_nonnegative
   use kinetostat_pr3050, only: pr3050_params_t
   use kinetostat_dynamics_deck, only: dynamics_deck_t, read_dynamics_settings
   implicit none
@@ -111,9 +110,6 @@ contains
     !> Machine dynamics variables: mode and the drive's mass reduced to the stroke, kg.
     character(len=text_bytes * text_chars) :: dynamics
     real(wp) :: j_rotor
-    !> Elements allocated for each per-step array the deck may give (see deck_array_capacities).
-    integer, allocatable :: capacity(:)
-    integer :: stat
     type(deck_context_t) :: ctx
     type(deck_rules_t) :: rules
     type(namelist_probe_t) :: probe
@@ -137,20 +133,11 @@ contains
     j1 = unset_real; j2 = unset_real; j3 = unset_real
     phi3_start = unset_real; phi3_end = unset_real; dphi3 = unset_real
     dynamics = ""; j_rotor = unset_real
-    capacity = deck_array_capacities(source, ctx%group, [character(len=6) :: "omega3", "eps3"])
-    allocate (omega3(capacity(1)), source=unset_real, stat=stat)
-    if (stat /= 0) then
-      call values_out_of_memory(ctx, "omega3", capacity(1:1), error)
-      return
-    end if
-    allocate (eps3(capacity(2)), source=unset_real, stat=stat)
-    if (stat /= 0) then
-      call values_out_of_memory(ctx, "eps3", capacity(2:2), error)
-      return
-    end if
+    call probe%per_step(source, ctx, "omega3", omega3, error)
+    if (allocated(error)) return
+    call probe%per_step(source, ctx, "eps3", eps3, error)
+    if (allocated(error)) return
 
-    call probe%limit("omega3", max_deck_array, "values (one per step)")
-    call probe%limit("eps3", max_deck_array, "values (one per step)")
     read (source%records, nml=pr3050, iostat=probe%ios, iomsg=probe%msg)
     do while (probe%retry(source)) ! on failure: find the line and the assignment
       read (probe%records, nml=pr3050, iostat=probe%ios, iomsg=probe%msg)
