@@ -4,9 +4,9 @@ module kinetostat_pr3050_deck
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str
   use kinetostat_deck_foreign, only: refuse_translated_stages, refuse_variables
-  use kinetostat_deck, only: begin_group, text_bytes, text_chars, deck_context_t, unset_real, max_steps, &
-    deck_source_t, namelist_probe_t, optional_default, deck_rules_t, rule_finite, rule_positive, &
-    rule_nonnegative
+  use kinetostat_deck, only: begin_group, text_bytes, text_chars, &
+    deck_context_t, unset_real, max_steps, deck_source_t, namelist_probe_t, &
+    optional_default, deck_rules_t, rule_finite, rule_positive, rule_nonnegative
   use kinetostat_pr3050, only: pr3050_params_t
   use kinetostat_dynamics_deck, only: dynamics_deck_t, read_dynamics_settings
   implicit none

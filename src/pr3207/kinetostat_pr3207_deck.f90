@@ -4,12 +4,13 @@ module kinetostat_pr3207_deck
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str
   use kinetostat_deck_foreign, only: refuse_translated_stages
-  use kinetostat_deck, only: begin_group, text_bytes, text_chars, deck_context_t, unset_real, deck_source_t, &
-    namelist_probe_t, is_set, optional_default, deck_rules_t, rule_finite, rule_positive, rule_nonnegative
+  use kinetostat_deck, only: begin_group, text_bytes, text_chars, &
+    deck_context_t, unset_real, deck_source_t, namelist_probe_t, is_set, &
+    optional_default, deck_rules_t, rule_finite, rule_positive, rule_nonnegative
   use kinetostat_pr3207, only: pr3207_params_t
   use kinetostat_dynamics, only: dynamics_steady
-  use kinetostat_dynamics_deck, only: dynamics_deck_t, read_dynamics_settings, require_one_turn, &
-    md_table_capacity, begin_dynamics_settings
+  use kinetostat_dynamics_deck, only: dynamics_deck_t, read_dynamics_settings, require_one_turn, md_table_capacity, &
+    begin_dynamics_settings
   implicit none
   private
   public :: pr3207_deck_t, read_pr3207_deck, pr3207_template, pr3207_cut_force

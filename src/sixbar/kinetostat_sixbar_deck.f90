@@ -4,12 +4,13 @@ module kinetostat_sixbar_deck
   use kinetostat_error, only: error_t, fatal_error, exit_geometry
   use kinetostat_text, only: real_str
   use kinetostat_deck_foreign, only: refuse_translated_stages
-  use kinetostat_deck, only: begin_group, text_bytes, text_chars, deck_context_t, unset_real, deck_source_t, &
-    namelist_probe_t, is_set, optional_default, deck_rules_t, rule_finite, rule_positive, rule_nonnegative
+  use kinetostat_deck, only: begin_group, text_bytes, text_chars, &
+    deck_context_t, unset_real, deck_source_t, namelist_probe_t, is_set, &
+    optional_default, deck_rules_t, rule_finite, rule_positive, rule_nonnegative
   use kinetostat_sixbar, only: sixbar_params_t, sixbar_extreme_phi1
   use kinetostat_dynamics, only: dynamics_steady
-  use kinetostat_dynamics_deck, only: dynamics_deck_t, read_dynamics_settings, require_one_turn, &
-    md_table_capacity, begin_dynamics_settings
+  use kinetostat_dynamics_deck, only: dynamics_deck_t, read_dynamics_settings, require_one_turn, md_table_capacity, &
+    begin_dynamics_settings
   implicit none
   private
   public :: sixbar_deck_t, read_sixbar_deck, sixbar_template, sixbar_phi1_deg
