@@ -56,6 +56,7 @@ module kinetostat_deck_rules
     procedure :: require_nonnegative => rules_nonnegative
     procedure :: require_each => rules_each
     procedure :: require_rule => rules_rule
+    procedure :: require_in => rules_in
     procedure :: require_whole => rules_whole
     procedure :: require_chars => rules_chars
     procedure :: require_per_step => rules_per_step
@@ -398,6 +399,20 @@ contains
     character(*), intent(in) :: reason
     if (.not. allocated(self%error)) call require_rule(self%ctx, name, ok, reason, self%error)
   end subroutine rules_rule
+
+  !> A required real in a range, once no check has failed: set and finite, then `inside`
+  !> ("must be in (0, 45) deg (got 50)" for the range "(0, 45) deg").
+  subroutine rules_in(self, name, x, inside, range)
+    class(deck_rules_t), intent(inout) :: self
+    character(*), intent(in) :: name
+    real(wp), intent(in) :: x
+    !> Whether `x` lies in the range.
+    logical, intent(in) :: inside
+    !> The range as the message names it.
+    character(*), intent(in) :: range
+    call self%require_set(name, x)
+    call self%require_rule(name, inside, "must be in "//range//" (got "//real_str(x)//")")
+  end subroutine rules_in
 
   !> require_whole, once no check has failed (`value` is `lo` when one had).
   subroutine rules_whole(self, name, x, lo, hi, value)

@@ -6,7 +6,7 @@ module kinetostat_dynamics_deck
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str
   use kinetostat_deck, only: deck_context_t, deck_error, is_set, unset_real, require_rule, optional_default, &
-    deck_rules_t, namelist_probe_t
+    deck_rules_t, namelist_probe_t, text_bytes, text_chars
   use kinetostat_dynamics, only: dynamics_none, dynamics_reduced, dynamics_steady, dynamics_given, &
     reduced_source_t, cycle_t, cycle_setup, cycle_steady, cycle_given
   implicit none
@@ -50,7 +50,7 @@ contains
     !> The READ's probe.
     type(namelist_probe_t), intent(inout) :: probe
     !> `dynamics`.
-    character(*), intent(out) :: mode_text
+    character(len=text_bytes * text_chars), intent(out) :: mode_text
     !> `delta`, `j_rotor`, `j_flywheel`, `flywheel_density`, `flywheel_width_ratio`.
     real(wp), intent(out) :: delta, j_rotor, j_flywheel, flywheel_density, flywheel_width_ratio
     !> `md_table` (md_table_capacity values).
