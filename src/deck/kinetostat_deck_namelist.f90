@@ -909,15 +909,12 @@ contains
       do while (i <= len(line))
         c = line(i:i)
         if (quote /= " ") then
-          if (c == quote) then
+          if (c == quote .and. doubled_quote(line, i)) then
             ! a doubled quote stands for one quote character inside the text
-            if (i < len(line)) then
-              if (line(i + 1:i + 1) == quote) then
-                text_length = text_length + 1
-                i = i + 2
-                cycle
-              end if
-            end if
+            text_length = text_length + 1
+            i = i + 2
+            cycle
+          else if (c == quote) then
             quote = " "
             if (text_length > text_chars .and. lower(name) /= "title") then
               call syntax_failure(source, group, quote_line, "", 0, name, "a text of "//int_str(text_length)// &
@@ -1161,6 +1158,15 @@ contains
     end function count_char
   end function designator_before
 
+  !> Whether the quote character at `line(i:i)` is doubled (`''` inside '...', `""` inside
+  !> "..."): one quote character of the text, not its end.
+  pure logical function doubled_quote(line, i)
+    character(*), intent(in) :: line
+    integer, intent(in) :: i
+    doubled_quote = .false.
+    if (i < len(line)) doubled_quote = line(i + 1:i + 1) == line(i:i)
+  end function doubled_quote
+
   !> Length of the longest quoted text in the deck (quotes excluded, a doubled quote
   !> counted once; at least 1): a character variable of this length holds any text the
   !> deck gives, without a stack-sized buffer.
@@ -1178,18 +1184,15 @@ contains
       i = 1
       do while (i <= len(line))
         if (quote /= " ") then
-          if (line(i:i) == quote) then
-            if (i < len(line)) then
-              if (line(i + 1:i + 1) == quote) then
-                length = length + 1
-                i = i + 2
-                cycle
-              end if
-            end if
+          if (line(i:i) /= quote) then
+            length = length + 1
+          else if (doubled_quote(line, i)) then
+            ! one quote character of the text: count it, step over both
+            length = length + 1
+            i = i + 1
+          else
             quote = " "
             longest = max(longest, length)
-          else
-            length = length + 1
           end if
         else if (line(i:i) == "'" .or. line(i:i) == '"') then
           quote = line(i:i)
