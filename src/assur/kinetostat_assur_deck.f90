@@ -15,7 +15,7 @@ module kinetostat_assur_deck
     deck_context_t, unset_real, unset_bits, max_deck_array, deck_array_capacities, deck_source_t, &
     namelist_probe_t, deck_error, require_all_set, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, require_per_step, optional_default, count_values, steps_over_turn, &
-    is_whole_in, require_whole, require_chars, title_chars, text_bytes, text_chars
+    is_whole_in, require_whole, require_chars, title_chars, text_bytes, text_chars, deck_rules_t, rule_nonnegative
   use kinetostat_vec2, only: unit_at, rotate, magnitude, cross
   use kinetostat_assur_kinematics, only: link_state_t, dyad_pose_t, kind_names, kind_has_mode, frame_state, &
     crank_state, set_dyad_pose, pose_ok, kind_rrr, kind_rrp, kind_rpr, kind_prp, kind_rpp
@@ -28,7 +28,7 @@ module kinetostat_assur_deck
   use kinetostat_assur_deck_types, only: max_dyads, max_forces, max_moments, misfit_rel, max_table_points, &
     group_name, joint_name_chars, joint_text_length, schedule_in_t, load_constant, load_window, load_column, &
     load_table, crank_index, resist_none, resist_moment, resist_force, load_schedule_t, assur_deck_t
-  use kinetostat_assur_deck_loads, only: read_load, resist_size, find_link, moving_link
+  use kinetostat_assur_deck_loads, only: read_load, find_link
   use kinetostat_assur_deck_names, only: kind_names_as_codes, name_unknown_kind
   use kinetostat_assur_steps, only: assur_window, assur_phi1_deg, assur_omega1_steps, assur_omega1, &
     assur_eps1, assur_motion_sign, assur_load_value, assur_force_values, assur_moment_values, &
@@ -310,6 +310,7 @@ contains
     type(load_schedule_t) :: load
     type(deck_context_t) :: ctx
     type(namelist_probe_t) :: probe
+    type(deck_rules_t) :: rules
     integer, allocatable :: ids(:)
     character(len=:), allocatable :: name
     namelist /assur/ title, frame_id, crank_id, crank_at, crank_m, crank_j, crank_s, omega1, &
@@ -386,55 +387,53 @@ contains
     if (allocated(error)) return
 
     ! ---- frame, crank, speed law, gravity, steps
-    call require_whole(ctx, "frame_id", frame_id, 0, huge(1), frame_no, error); if (allocated(error)) return
-    call require_whole(ctx, "crank_id", crank_id, 0, huge(1), crank_no, error); if (allocated(error)) return
-    call require_rule(ctx, "crank_id", crank_no /= frame_no, &
-      "must be >= 0 and differ from frame_id (got "//int_str(crank_no)//")", error)
-    if (allocated(error)) return
-    call optional_pair(ctx, "crank_at", crank_at, error); if (allocated(error)) return
+    rules%ctx = ctx
+    call rules%require_whole("frame_id", frame_id, 0, huge(1), frame_no)
+    call rules%require_whole("crank_id", crank_id, 0, huge(1), crank_no)
+    call rules%require_rule("crank_id", crank_no /= frame_no, &
+      "must be >= 0 and differ from frame_id (got "//int_str(crank_no)//")")
+    if (rules%failed(error)) return
+    call read_pair(ctx, "crank_at", crank_at, .true., error); if (allocated(error)) return
     crank_s_given = any(is_set(crank_s))
-    call optional_pair(ctx, "crank_s", crank_s, error); if (allocated(error)) return
-    call require_rule(ctx, "coordinates", any(lower(trim(coordinates)) == [character(len=8) :: "local", "global"]), &
+    call read_pair(ctx, "crank_s", crank_s, .true., error); if (allocated(error)) return
+    call rules%require_rule("coordinates", any(lower(trim(coordinates)) == [character(len=8) :: "local", "global"]), &
       "must be 'local' (link coordinates) or 'global' (points at the reference position phi_ref), got '"// &
-      trim(coordinates)//"'", error)
-    if (allocated(error)) return
+      trim(coordinates)//"'")
     global = lower(trim(coordinates)) == "global"
     if (global) then
-      call require_set(ctx, "phi_ref", phi_ref, error); if (allocated(error)) return
+      call rules%require_set("phi_ref", phi_ref)
     else
-      call require_rule(ctx, "phi_ref", .not. is_set(phi_ref), "only used with coordinates = 'global'", error)
-      if (allocated(error)) return
+      call rules%require_rule("phi_ref", .not. is_set(phi_ref), "only used with coordinates = 'global'")
     end if
     crank_m = optional_default(crank_m, 0.0_wp)
-    call require_nonnegative(ctx, "crank_m", crank_m, error); if (allocated(error)) return
     crank_j = optional_default(crank_j, 0.0_wp)
-    call require_nonnegative(ctx, "crank_j", crank_j, error); if (allocated(error)) return
     g = optional_default(g, g_default)
-    call require_nonnegative(ctx, "g", g, error); if (allocated(error)) return
+    call rules%require_each(rule_nonnegative, [character(7) :: "crank_m", "crank_j", "g"], [crank_m, crank_j, g])
     gravity_angle = optional_default(gravity_angle, -90.0_wp)
-    call require_set(ctx, "gravity_angle", gravity_angle, error); if (allocated(error)) return
+    call rules%require_set("gravity_angle", gravity_angle)
+    if (rules%failed(error)) return
     call read_steps(ctx, phi1, phi_start, dphi, n, start_at, deck, error); if (allocated(error)) return
 
-    call count_values(ctx, "omega1_step", omega1_step, n_omega, error); if (allocated(error)) return
-    call count_values(ctx, "eps1_step", eps1_step, n_eps, error); if (allocated(error)) return
+    call rules%count_values("omega1_step", omega1_step, n_omega)
+    call rules%count_values("eps1_step", eps1_step, n_eps)
     if (n_omega > 0 .or. n_eps > 0) then
-      call require_rule(ctx, "omega1", .not. is_set(omega1), &
-        "give either omega1 (constant) or omega1_step(:) with eps1_step(:), not both", error)
-      if (allocated(error)) return
-      call require_per_step(ctx, "omega1_step", n_omega, deck%n, error)
-      if (allocated(error)) return
-      call require_per_step(ctx, "eps1_step", n_eps, deck%n, error)
-      if (allocated(error)) return
+      call rules%require_rule("omega1", .not. is_set(omega1), &
+        "give either omega1 (constant) or omega1_step(:) with eps1_step(:), not both")
+      call rules%require_per_step("omega1_step", n_omega, deck%n)
+      call rules%require_per_step("eps1_step", n_eps, deck%n)
+      if (rules%failed(error)) return
       deck%prescribed = .true.
       ! the read buffers are the deck's arrays (no second copy)
       call move_alloc(omega1_step, deck%omega1_values)
       call move_alloc(eps1_step, deck%eps1_values)
     else
-      call require_set(ctx, "omega1", omega1, error); if (allocated(error)) return
+      call rules%require_set("omega1", omega1)
+      if (rules%failed(error)) return
       deck%omega1_const = omega1
       deallocate (omega1_step, eps1_step)
     end if
-    call count_values(ctx, "step_values", step_values, n_values, error); if (allocated(error)) return
+    call rules%count_values("step_values", step_values, n_values)
+    if (rules%failed(error)) return
     call move_alloc(step_values, deck%step_values)
 
     ! ---- dyads: the leading set entries, no gaps
@@ -443,8 +442,8 @@ contains
       if (.not. is_set(dyad(d)%kind)) exit
       nd = d
     end do
-    call require_rule(ctx, "dyad", nd >= 1, "at least one dyad is required (dyad(1)%kind missing)", error)
-    if (allocated(error)) return
+    call rules%require_rule("dyad", nd >= 1, "at least one dyad is required (dyad(1)%kind missing)")
+    if (rules%failed(error)) return
     do d = nd + 1, max_dyads
       if (dyad_touched(dyad(d)) .or. is_set(dyad(d)%kind)) then
         call deck_error(ctx, "dyad("//int_str(d)//")", "dyads must be numbered 1.."//int_str(nd + 1)// &
@@ -488,47 +487,24 @@ contains
     call read_driver(ctx, drive_dyad, drive_pair, deck%mech, error); if (allocated(error)) return
 
     ! ---- external forces and moments
-    nf = 0
-    do k = 1, max_forces
-      if (.not. is_set(force(k)%link)) exit
-      nf = k
-    end do
-    nm = 0
-    do k = 1, max_moments
-      if (.not. is_set(moment(k)%link)) exit
-      nm = k
-    end do
+    nf = leading(is_set(force%link))
+    nm = leading(is_set(moment%link))
     allocate (deck%mech%forces(nf), deck%mech%moment_link(nm))
     allocate (deck%force_load(nf), deck%moment_load(nm))
     call read_output_link(ctx, output_link, ids, deck%mech, error); if (allocated(error)) return
     call crank_angles(ctx, deck, error); if (allocated(error)) return
-    do k = nf + 1, max_forces
-      if (is_set(force(k)%link) .and. k > nf + 1) then
-        call deck_error(ctx, "force("//int_str(nf + 1)//")", "missing: force("//int_str(k)// &
-          ") is given, and forces must be numbered 1, 2, ... without gaps", error)
-        return
-      else if (any(is_set([force(k)%value, force(k)%angle, force(k)%column, force(k)%fx, force(k)%fy, &
-                           force(k)%table(1)]))) then
-        call deck_error(ctx, "force("//int_str(k)//")%link", "missing (forces must be numbered without gaps)", error)
-        return
-      end if
-    end do
-    do k = nm + 1, max_moments
-      if (is_set(moment(k)%link) .and. k > nm + 1) then
-        call deck_error(ctx, "moment("//int_str(nm + 1)//")", "missing: moment("//int_str(k)// &
-          ") is given, and moments must be numbered 1, 2, ... without gaps", error)
-        return
-      else if (any(is_set([moment(k)%value, moment(k)%column, moment(k)%table(1)]))) then
-        call deck_error(ctx, "moment("//int_str(k)//")%link", "missing (moments must be numbered without gaps)", error)
-        return
-      end if
-    end do
+    call numbered_without_gaps(ctx, "force", is_set(force%link), [(any(is_set([force(k)%value, force(k)%angle, &
+      force(k)%column, force(k)%fx, force(k)%fy, force(k)%table(1)])), k = 1, max_forces)], nf, error)
+    if (allocated(error)) return
+    call numbered_without_gaps(ctx, "moment", is_set(moment%link), [(any(is_set([moment(k)%value, moment(k)%column, &
+      moment(k)%table(1)])), k = 1, max_moments)], nm, error)
+    if (allocated(error)) return
     do k = 1, nf
       name = "force("//int_str(k)//")%"
       associate (fi => force(k))
-        call moving_link(ctx, name//"link", fi%link, ids, i, error); if (allocated(error)) return
+        call find_link(ctx, name//"link", fi%link, ids, .false., i, error); if (allocated(error)) return
         at_given = any(is_set(fi%at))
-        call optional_pair(ctx, name//"at", fi%at, error); if (allocated(error)) return
+        call read_pair(ctx, name//"at", fi%at, .true., error); if (allocated(error)) return
         if (any(is_set([fi%fx, fi%fy]))) then
           call force_components(ctx, name, fi, error); if (allocated(error)) return
         end if
@@ -539,12 +515,10 @@ contains
         end if
         deck%mech%forces(k) = assur_force_t(link=i, at=fi%at, angle=fi%angle * deg_to_rad, follow=fi%follow)
         call read_load(ctx, name, fi%table, fi%over, schedule_in_t(value=fi%value, idle=fi%idle, phi_on=fi%phi_on, &
-                       phi_off=fi%phi_off, column=fi%column), ids, deck, n_values, load, error)
+                       phi_off=fi%phi_off, column=fi%column), ids, deck, n_values, merge(resist_force, resist_none, &
+                       fi%resist), i, load, error)
         if (allocated(error)) return
         if (fi%resist) then
-          call resist_size(ctx, name, fi%value, fi%idle, error); if (allocated(error)) return
-          load%resist = resist_force
-          load%resist_link = i
           load%resist_at = deck%mech%forces(k)%at
           load%resist_angle = deck%mech%forces(k)%angle
           load%resist_follow = fi%follow
@@ -555,16 +529,12 @@ contains
     do k = 1, nm
       name = "moment("//int_str(k)//")%"
       associate (mi => moment(k))
-        call moving_link(ctx, name//"link", mi%link, ids, i, error); if (allocated(error)) return
+        call find_link(ctx, name//"link", mi%link, ids, .false., i, error); if (allocated(error)) return
         deck%mech%moment_link(k) = i
         call read_load(ctx, name, mi%table, mi%over, schedule_in_t(value=mi%value, idle=mi%idle, phi_on=mi%phi_on, &
-                       phi_off=mi%phi_off, column=mi%column), ids, deck, n_values, load, error)
+                       phi_off=mi%phi_off, column=mi%column), ids, deck, n_values, merge(resist_moment, resist_none, &
+                       mi%resist), i, load, error)
         if (allocated(error)) return
-        if (mi%resist) then
-          call resist_size(ctx, name, mi%value, mi%idle, error); if (allocated(error)) return
-          load%resist = resist_moment
-          load%resist_link = i
-        end if
         deck%moment_load(k) = load
       end associate
     end do
@@ -851,12 +821,12 @@ contains
     kind = nint(dy%kind)
     call find_link(ctx, p//"on2", dy%on2, ids, .true., i1, error); if (allocated(error)) return
     call find_link(ctx, p//"on3", dy%on3, ids, .true., i3, error); if (allocated(error)) return
-    call require_pair(ctx, p//"at2", dy%at2, error); if (allocated(error)) return
-    call require_pair(ctx, p//"at3", dy%at3, error); if (allocated(error)) return
+    call read_pair(ctx, p//"at2", dy%at2, .false., error); if (allocated(error)) return
+    call read_pair(ctx, p//"at3", dy%at3, .false., error); if (allocated(error)) return
     glob(:, 1) = dy%at2
     glob(:, 3) = dy%at3
     if (is_set(dy%b(1)) .or. is_set(dy%b(2))) then
-      call require_pair(ctx, p//"b", dy%b, error); if (allocated(error)) return
+      call read_pair(ctx, p//"b", dy%b, .false., error); if (allocated(error)) return
       glob(:, 2) = dy%b
     end if
     dy%at2 = to_local(ref(i1), glob(:, 1))
@@ -894,7 +864,7 @@ contains
       if (allocated(error)) return
       if (kind == kind_rpp .and. is_set(gam)) then
         ! the slot: a global point and direction; link b's origin is at the guide point C here
-        call require_pair(ctx, p//"slot_at", dy%slot_at, error); if (allocated(error)) return
+        call read_pair(ctx, p//"slot_at", dy%slot_at, .false., error); if (allocated(error)) return
         dy%slot_at = rotate(dy%slot_at - glob(:, 3), -gam * deg_to_rad)
         if (is_set(dy%slot_angle)) dy%slot_angle = dy%slot_angle - gam
       end if
@@ -1033,7 +1003,7 @@ contains
     integer :: i
     i = ubound(ids, 1)
     if (is_set(output_link)) then
-      call moving_link(ctx, "output_link", output_link, ids, i, error); if (allocated(error)) return
+      call find_link(ctx, "output_link", output_link, ids, .false., i, error); if (allocated(error)) return
     end if
     mech%output_link = i
     mech%output_pair = output_pair_of(mech, i)
@@ -1117,35 +1087,59 @@ contains
                                dy%block23, dy%b]))
   end function dyad_touched
 
-  !> A two-component point: default (0, 0) when unset; both or none; finite.
-  subroutine optional_pair(ctx, name, x, error)
+  !> Number of leading true entries of `given`.
+  pure integer function leading(given)
+    logical, intent(in) :: given(:)
+    leading = findloc(given, .false., dim=1) - 1
+    if (leading < 0) leading = size(given)
+  end function leading
+
+  !> Loads (forces or moments) numbered 1, 2, ... without gaps: past the first `n`, whose
+  !> links are given, no entry may give its link or a value.
+  subroutine numbered_without_gaps(ctx, what, linked, touched, n, error)
+    type(deck_context_t), intent(in) :: ctx
+    !> "force" or "moment".
+    character(*), intent(in) :: what
+    !> Per entry: whether its link is given; whether any of its values is.
+    logical, intent(in) :: linked(:), touched(:)
+    !> Number of loads (the leading linked entries).
+    integer, intent(in) :: n
+    type(error_t), allocatable, intent(out) :: error
+    integer :: k
+    do k = n + 1, size(linked)
+      if (linked(k) .and. k > n + 1) then
+        call deck_error(ctx, what//"("//int_str(n + 1)//")", "missing: "//what//"("//int_str(k)// &
+          ") is given, and "//what//"s must be numbered 1, 2, ... without gaps", error)
+        return
+      else if (touched(k)) then
+        call deck_error(ctx, what//"("//int_str(k)//")%link", "missing ("//what//"s must be numbered without gaps)", &
+          error)
+        return
+      end if
+    end do
+  end subroutine numbered_without_gaps
+
+  !> A two-component point: both set and finite; with `zero_default`, (0, 0) when neither
+  !> is set.
+  subroutine read_pair(ctx, name, x, zero_default, error)
     type(deck_context_t), intent(in) :: ctx
     character(*), intent(in) :: name
     real(wp), intent(inout) :: x(2)
+    !> Whether the point is optional, (0, 0) by default.
+    logical, intent(in) :: zero_default
     type(error_t), allocatable, intent(out) :: error
-    if (.not. any(is_set(x))) then
+    if (zero_default .and. .not. any(is_set(x))) then
       x = 0.0_wp
-      return
-    end if
-    call require_pair(ctx, name, x, error)
-  end subroutine optional_pair
-
-  !> A required two-component point: both set and finite.
-  subroutine require_pair(ctx, name, x, error)
-    type(deck_context_t), intent(in) :: ctx
-    character(*), intent(in) :: name
-    real(wp), intent(in) :: x(2)
-    type(error_t), allocatable, intent(out) :: error
-    if (.not. all(is_set(x))) then
+    else if (.not. all(is_set(x))) then
       if (any(is_set(x))) then
         call deck_error(ctx, name, "needs two values (x, y), got one", error)
       else
         call deck_error(ctx, name, "missing (required variable: two values x, y)", error)
       end if
-      return
+    else if (.not. all(ieee_is_finite(x))) then
+      call deck_error(ctx, name, "must be finite numbers", error)
     end if
-    if (.not. all(ieee_is_finite(x))) call deck_error(ctx, name, "must be finite numbers", error)
-  end subroutine require_pair
+  end subroutine read_pair
 
   !> A dyad that hangs on a link no one defines, in a deck where no dyad hangs on the crank
   !> (or on the frame): the mistake is crank_id's (frame_id's), not the dyad's
@@ -1232,8 +1226,8 @@ contains
     if (allocated(error)) return
     call find_link(ctx, p//"on2", dy%on2, ids, .true., out%on(1), error); if (allocated(error)) return
     call find_link(ctx, p//"on3", dy%on3, ids, .true., out%on(2), error); if (allocated(error)) return
-    call require_pair(ctx, p//"at2", dy%at2, error); if (allocated(error)) return
-    call require_pair(ctx, p//"at3", dy%at3, error); if (allocated(error)) return
+    call read_pair(ctx, p//"at2", dy%at2, .false., error); if (allocated(error)) return
+    call read_pair(ctx, p//"at3", dy%at3, .false., error); if (allocated(error)) return
     out%at(:, 1) = dy%at2
     out%at(:, 2) = dy%at3
     ! guide angles: only for prismatic outer pairs
@@ -1273,7 +1267,7 @@ contains
       call require_set(ctx, p//"e", dy%e, error); if (allocated(error)) return
       out%geom%e = dy%e
     case (kind_rpp)
-      call optional_pair(ctx, p//"slot_at", dy%slot_at, error); if (allocated(error)) return
+      call read_pair(ctx, p//"slot_at", dy%slot_at, .true., error); if (allocated(error)) return
       call require_set(ctx, p//"slot_angle", dy%slot_angle, error); if (allocated(error)) return
       call require_rule(ctx, p//"slot_angle", abs(sin(dy%slot_angle * deg_to_rad)) > 1.0e-9_wp, &
         "must not be parallel to the guide (0 or 180 deg): the slider could not be located", error)
@@ -1297,8 +1291,8 @@ contains
     call require_nonnegative(ctx, p//"m3", dy%m3, error); if (allocated(error)) return
     dy%j3 = optional_default(dy%j3, 0.0_wp)
     call require_nonnegative(ctx, p//"j3", dy%j3, error); if (allocated(error)) return
-    call optional_pair(ctx, p//"s2", dy%s2, error); if (allocated(error)) return
-    call optional_pair(ctx, p//"s3", dy%s3, error); if (allocated(error)) return
+    call read_pair(ctx, p//"s2", dy%s2, .true., error); if (allocated(error)) return
+    call read_pair(ctx, p//"s3", dy%s3, .true., error); if (allocated(error)) return
     if (.not. is_set(dy%inner_on)) dy%inner_on = dy%link2
     call require_rule(ctx, p//"inner_on", dy%inner_on == dy%link2 .or. dy%inner_on == dy%link3, &
       "must be link2 ("//int_str(link2)//") or link3 ("//int_str(link3)//"), got "//number_str(dy%inner_on), error)

@@ -9,18 +9,18 @@ module kinetostat_assur_deck_loads
   use kinetostat_vec2, only: magnitude
   use kinetostat_assur, only: output_pair_of
   use kinetostat_assur_deck_types, only: schedule_in_t, load_constant, load_window, load_column, load_table, &
-    load_schedule_t, assur_deck_t
+    load_schedule_t, assur_deck_t, resist_none
   use kinetostat_load_table, only: read_table_points
   use kinetostat_assur_steps, only: table_position, assur_phi1_deg
   implicit none
   private
-  public :: read_load, read_table, resist_size, find_link, moving_link, read_schedule
+  public :: read_load, read_table, find_link, read_schedule
 
 contains
 
   !> The schedule of force or moment `name`: a table over a link's position (read_table), or
   !> a constant, window or step_values column (read_schedule; `over` only goes with a table).
-  subroutine read_load(ctx, name, table, over, sched, ids, deck, n_values, load, error)
+  subroutine read_load(ctx, name, table, over, sched, ids, deck, n_values, resist, link, load, error)
     type(deck_context_t), intent(in) :: ctx
     !> Prefix, e.g. "force(1)%".
     character(*), intent(in) :: name
@@ -36,6 +36,11 @@ contains
     type(assur_deck_t), intent(in) :: deck
     !> Number of step_values given.
     integer, intent(in) :: n_values
+    !> resist_force or resist_moment for a technological resistance (resist = .true.: its
+    !> size checked by resist_size), else resist_none.
+    integer, intent(in) :: resist
+    !> Internal index of the loaded link.
+    integer, intent(in) :: link
     !> The load's schedule.
     type(load_schedule_t), intent(out) :: load
     type(error_t), allocatable, intent(out) :: error
@@ -49,6 +54,10 @@ contains
       s = sched
       call read_schedule(ctx, name, s, deck%n, n_values, load, error)
     end if
+    if (allocated(error) .or. resist == resist_none) return
+    call resist_size(ctx, name, sched%value, sched%idle, error); if (allocated(error)) return
+    load%resist = resist
+    load%resist_link = link
   end subroutine read_load
 
   !> Per-step values of a load given as a table of (position, value) pairs over the position
@@ -88,7 +97,7 @@ contains
     np = size(load%x)
     i = deck%mech%output_link
     if (is_set(over)) then
-      call moving_link(ctx, name//"over", over, ids, i, error); if (allocated(error)) return
+      call find_link(ctx, name//"over", over, ids, .false., i, error); if (allocated(error)) return
     end if
     load%link = i
     load%pair = output_pair_of(deck%mech, i)
@@ -125,7 +134,8 @@ contains
       "must be >= 0 with resist = .true. (the size of the resistance; the motion gives its sign)", error)
   end subroutine resist_size
 
-  !> The internal index of a link id among `ids(0:)` (frame allowed when `allow_frame`).
+  !> The internal index of a link id among `ids(0:)`: a moving link (crank or dyad link), or
+  !> also the frame when `allow_frame`.
   subroutine find_link(ctx, name, id_in, ids, allow_frame, index, error)
     type(deck_context_t), intent(in) :: ctx
     character(*), intent(in) :: name
@@ -154,18 +164,6 @@ contains
       end if
     end if
   end subroutine find_link
-
-  !> The internal index of a moving link (crank or dyad link) among `ids(0:)`.
-  subroutine moving_link(ctx, name, id, ids, index, error)
-    type(deck_context_t), intent(in) :: ctx
-    character(*), intent(in) :: name
-    !> Link number as given (an integer deck variable, read as a real).
-    real(wp), intent(in) :: id
-    integer, intent(in) :: ids(0:)
-    integer, intent(out) :: index
-    type(error_t), allocatable, intent(out) :: error
-    call find_link(ctx, name, id, ids, .false., index, error)
-  end subroutine moving_link
 
   !> A load's schedule (constant, window, or a step_values column) from the deck.
   subroutine read_schedule(ctx, name, s, n, n_values, load, error)

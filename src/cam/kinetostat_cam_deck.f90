@@ -6,7 +6,7 @@ module kinetostat_cam_deck
   use kinetostat_text, only: real_str, int_str, lower
   use kinetostat_deck, only: values_out_of_memory, begin_group, text_bytes, text_chars, max_deck_array, &
     deck_context_t, unset_real, deck_array_capacities, deck_source_t, namelist_probe_t, deck_error, is_set, &
-    optional_default, count_values, steps_over_turn, deck_rules_t
+    optional_default, count_values, deck_rules_t, rule_nonnegative
   use kinetostat_cam, only: cam_params_t
   implicit none
   private
@@ -138,14 +138,11 @@ contains
     call rules%require_all_set([character(len=6) :: "l", "l_over", "f", "dphi"], [l, l_over, f, dphi])
     ! guide
     call rules%require_positive("l", l)
-    call rules%require_nonnegative("l_over", l_over)
-    call rules%require_nonnegative("f", f)
+    call rules%require_each(rule_nonnegative, [character(6) :: "l_over", "f"], [l_over, f])
     ! cam angles
-    phi_start = optional_default(phi_start, 0.0_wp)
-    call rules%require_set("phi_start", phi_start)
+    call rules%crank_steps(phi_start, dphi, n, deck%n)
     if (rules%failed(error)) return
     deck%p = cam_params_t(l=l, a=l_over, f=f)
-    call steps_over_turn(ctx, dphi, n, deck%n, error); if (allocated(error)) return
     deck%phi_start = phi_start
     deck%dphi = dphi
 

@@ -198,9 +198,11 @@ contains
         deck%design%pivot = pivot
         pressure_angle_max = optional_default(pressure_angle_max, 45.0_wp)
       end if
-      call pressure_limit(rules, "pressure_angle_max", pressure_angle_max)
       pressure_angle_max_return = optional_default(pressure_angle_max_return, pressure_angle_max)
-      call pressure_limit(rules, "pressure_angle_max_return", pressure_angle_max_return)
+      call rules%require_in("pressure_angle_max", pressure_angle_max, pressure_angle_max > 0.0_wp .and. &
+        pressure_angle_max < 90.0_wp, "(0, 90) deg")
+      call rules%require_in("pressure_angle_max_return", pressure_angle_max_return, pressure_angle_max_return > 0.0_wp &
+        .and. pressure_angle_max_return < 90.0_wp, "(0, 90) deg")
       deck%design%limit_rise = pressure_angle_max * deg_to_rad
       deck%design%limit_return = pressure_angle_max_return * deg_to_rad
       deck%limit_rise_deg = pressure_angle_max
@@ -228,26 +230,15 @@ contains
       call not_for(rules, "l", l, "the &cam analysis has translating followers only")
       call not_for(rules, "f2", f2, "the &cam analysis has translating followers only")
     end if
-    if (is_set(l)) then
-      call rules%require_positive("l", l)
-      deck%l = l
-      deck%has_guide(1) = .true.
-    end if
-    if (is_set(l_over)) then
-      call rules%require_nonnegative("l_over", l_over)
-      deck%l_over = l_over
-      deck%has_guide(2) = .true.
-    end if
-    if (is_set(f)) then
-      call rules%require_nonnegative("f", f)
-      deck%f = f
-      deck%has_guide(3) = .true.
-    end if
-    if (is_set(f2)) then
-      call rules%require_set("f2", f2)
-      deck%f2 = f2
-      deck%has_guide(4) = .true.
-    end if
+    deck%has_guide = is_set([l, l_over, f, f2])
+    if (deck%has_guide(1)) call rules%require_positive("l", l)
+    if (deck%has_guide(2)) call rules%require_nonnegative("l_over", l_over)
+    if (deck%has_guide(3)) call rules%require_nonnegative("f", f)
+    if (deck%has_guide(4)) call rules%require_set("f2", f2)
+    deck%l = optional_default(l, 0.0_wp)
+    deck%l_over = optional_default(l_over, 0.0_wp)
+    deck%f = optional_default(f, 0.0_wp)
+    deck%f2 = optional_default(f2, 0.0_wp)
     if (is_set(f_cam)) then
       call rules%require_rule("f_cam", deck%design%follower == follower_flat, "only for a flat face (a roller "// &
         "rolls)")
@@ -257,16 +248,6 @@ contains
     end if
     call rules%take(error)
   end subroutine read_cam_profile_deck
-
-  !> A pressure-angle limit, deg: finite and in (0, 90).
-  subroutine pressure_limit(rules, name, value)
-    type(deck_rules_t), intent(inout) :: rules
-    character(*), intent(in) :: name
-    real(wp), intent(in) :: value
-    call rules%require_set(name, value)
-    call rules%require_rule(name, value > 0.0_wp .and. value < 90.0_wp, "must be in (0, 90) deg (got "// &
-      real_str(value)//")")
-  end subroutine pressure_limit
 
   !> A variable this follower does not take: unset.
   subroutine not_for(rules, name, value, why)

@@ -6,6 +6,7 @@ module kinetostat_deck_namelist
   use kinetostat_kinds, only: wp
   use kinetostat_error, only: error_t, fatal_error, exit_input
   use kinetostat_text, only: int_str, lower, printable, clipped, starts_with
+  use kinetostat_deck_rules, only: unset_real, values_out_of_memory
   use kinetostat_deck_source, only: deck_source_t, deck_context_t, deck_line_count, deck_line, &
     deck_line_length, line_slice, line_search, line_records, record_part, record_text, cut_line, append_length, &
     record_width
@@ -85,6 +86,7 @@ module kinetostat_deck_namelist
     type(deck_capacity_t), allocatable :: capacities(:)
   contains
     procedure :: limit => probe_limit
+    procedure :: per_step => probe_per_step
     procedure :: retry => probe_retry
     procedure :: failed => probe_failed
     procedure :: start => probe_start
@@ -469,6 +471,27 @@ contains
     if (.not. allocated(self%capacities)) allocate (self%capacities(0))
     self%capacities = [self%capacities, deck_capacity_t(array, size, noun)]
   end subroutine probe_limit
+
+  !> A per-step array of the group, before the READ: allocated as long as the deck may fill
+  !> it (deck_array_capacities), every element unset_real, its limit noted (max_deck_array
+  !> "values (one per step)"); when there is no room, the out-of-memory error (exit 2).
+  subroutine probe_per_step(self, source, ctx, name, values, error)
+    class(namelist_probe_t), intent(inout) :: self
+    !> The deck.
+    type(deck_source_t), intent(in) :: source
+    !> Deck and group.
+    type(deck_context_t), intent(in) :: ctx
+    !> The array's variable, lower case.
+    character(*), intent(in) :: name
+    !> The namelist's read buffer.
+    real(wp), allocatable, intent(out) :: values(:)
+    type(error_t), allocatable, intent(out) :: error
+    integer :: capacity(1), stat
+    call self%limit(name, max_deck_array, "values (one per step)")
+    capacity = deck_array_capacities(source, ctx%group, [name])
+    allocate (values(capacity(1)), source=unset_real, stat=stat)
+    if (stat /= 0) call values_out_of_memory(ctx, name, capacity, error)
+  end subroutine probe_per_step
 
   !> When the failed assignment (variable `name`, text `text`) overflows an array of fixed
   !> capacity (a subscript out of range, too many values, a repeat count too large), `text`
@@ -886,15 +909,12 @@ contains
       do while (i <= len(line))
         c = line(i:i)
         if (quote /= " ") then
-          if (c == quote) then
+          if (c == quote .and. doubled_quote(line, i)) then
             ! a doubled quote stands for one quote character inside the text
-            if (i < len(line)) then
-              if (line(i + 1:i + 1) == quote) then
-                text_length = text_length + 1
-                i = i + 2
-                cycle
-              end if
-            end if
+            text_length = text_length + 1
+            i = i + 2
+            cycle
+          else if (c == quote) then
             quote = " "
             if (text_length > text_chars .and. lower(name) /= "title") then
               call syntax_failure(source, group, quote_line, "", 0, name, "a text of "//int_str(text_length)// &
@@ -1138,6 +1158,15 @@ contains
     end function count_char
   end function designator_before
 
+  !> Whether the quote character at `line(i:i)` is doubled (`''` inside '...', `""` inside
+  !> "..."): one quote character of the text, not its end.
+  pure logical function doubled_quote(line, i)
+    character(*), intent(in) :: line
+    integer, intent(in) :: i
+    doubled_quote = .false.
+    if (i < len(line)) doubled_quote = line(i + 1:i + 1) == line(i:i)
+  end function doubled_quote
+
   !> Length of the longest quoted text in the deck (quotes excluded, a doubled quote
   !> counted once; at least 1): a character variable of this length holds any text the
   !> deck gives, without a stack-sized buffer.
@@ -1155,18 +1184,15 @@ contains
       i = 1
       do while (i <= len(line))
         if (quote /= " ") then
-          if (line(i:i) == quote) then
-            if (i < len(line)) then
-              if (line(i + 1:i + 1) == quote) then
-                length = length + 1
-                i = i + 2
-                cycle
-              end if
-            end if
+          if (line(i:i) /= quote) then
+            length = length + 1
+          else if (doubled_quote(line, i)) then
+            ! one quote character of the text: count it, step over both
+            length = length + 1
+            i = i + 1
+          else
             quote = " "
             longest = max(longest, length)
-          else
-            length = length + 1
           end if
         else if (line(i:i) == "'" .or. line(i:i) == '"') then
           quote = line(i:i)

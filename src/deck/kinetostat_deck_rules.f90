@@ -17,6 +17,7 @@ module kinetostat_deck_rules
   public :: is_set, require_set, require_positive, require_nonnegative, require_rule, require_per_step
   public :: is_whole_in, require_whole, require_chars
   public :: optional_default, count_values, steps_over_turn, deck_rules_t
+  public :: rule_finite, rule_positive, rule_nonnegative
 
   !> Bit pattern of `unset_real`: a quiet NaN with a payload. A NaN typed in a deck
   !> ("nan", "NaN(0x1)") reads as the plain quiet NaN 7FF8000000000000, so no deck can
@@ -32,6 +33,9 @@ module kinetostat_deck_rules
   real(wp), protected :: unset_real = transfer(unset_bits, 1.0_wp)
   !> Largest number of steps a run may have.
   integer, parameter :: max_steps = 1000000
+  !> The value rules of require_value and deck_rules_t%require_each: a required real that
+  !> is finite; also > 0; also >= 0.
+  integer, parameter :: rule_finite = 0, rule_positive = 1, rule_nonnegative = 2
 
   !> A validator of one section of a reader: the deck and group its messages name, and the
   !> first failure. Its checks are the rules below and do nothing once one has failed, so a
@@ -50,12 +54,15 @@ module kinetostat_deck_rules
     procedure :: require_set => rules_set
     procedure :: require_positive => rules_positive
     procedure :: require_nonnegative => rules_nonnegative
+    procedure :: require_each => rules_each
     procedure :: require_rule => rules_rule
+    procedure :: require_in => rules_in
     procedure :: require_whole => rules_whole
     procedure :: require_chars => rules_chars
     procedure :: require_per_step => rules_per_step
     procedure :: require_all_set => rules_all_set
     procedure :: count_values => rules_count_values
+    procedure :: crank_steps => rules_crank_steps
     procedure :: ok => rules_ok
     procedure :: failed => rules_failed
     procedure :: take => rules_take
@@ -165,11 +172,7 @@ contains
     character(*), intent(in) :: name
     real(wp), intent(in) :: x
     type(error_t), allocatable, intent(out) :: error
-    if (.not. is_set(x)) then
-      call deck_error(ctx, name, "missing (required variable)", error)
-    else if (.not. ieee_is_finite(x)) then
-      call deck_error(ctx, name, "must be a finite number (got "//real_str(x)//")", error)
-    end if
+    call require_value(ctx, name, x, rule_finite, error)
   end subroutine require_set
 
   !> Required real, finite and > 0.
@@ -178,9 +181,7 @@ contains
     character(*), intent(in) :: name
     real(wp), intent(in) :: x
     type(error_t), allocatable, intent(out) :: error
-    call require_set(ctx, name, x, error)
-    if (allocated(error)) return
-    if (.not. x > 0.0_wp) call deck_error(ctx, name, "must be > 0 (got "//real_str(x)//")", error)
+    call require_value(ctx, name, x, rule_positive, error)
   end subroutine require_positive
 
   !> Required real, finite and >= 0.
@@ -189,10 +190,29 @@ contains
     character(*), intent(in) :: name
     real(wp), intent(in) :: x
     type(error_t), allocatable, intent(out) :: error
-    call require_set(ctx, name, x, error)
-    if (allocated(error)) return
-    if (.not. x >= 0.0_wp) call deck_error(ctx, name, "must be >= 0 (got "//real_str(x)//")", error)
+    call require_value(ctx, name, x, rule_nonnegative, error)
   end subroutine require_nonnegative
+
+  !> A required real under one of the value rules: set ("missing (required variable)"),
+  !> finite ("must be a finite number (got X)"), and for rule_positive > 0, for
+  !> rule_nonnegative >= 0 ("must be > 0 (got X)", "must be >= 0 (got X)").
+  subroutine require_value(ctx, name, x, rule, error)
+    type(deck_context_t), intent(in) :: ctx
+    character(*), intent(in) :: name
+    real(wp), intent(in) :: x
+    !> rule_finite, rule_positive or rule_nonnegative.
+    integer, intent(in) :: rule
+    type(error_t), allocatable, intent(out) :: error
+    if (.not. is_set(x)) then
+      call deck_error(ctx, name, "missing (required variable)", error)
+    else if (.not. ieee_is_finite(x)) then
+      call deck_error(ctx, name, "must be a finite number (got "//real_str(x)//")", error)
+    else if (rule == rule_positive .and. .not. x > 0.0_wp) then
+      call deck_error(ctx, name, "must be > 0 (got "//real_str(x)//")", error)
+    else if (rule == rule_nonnegative .and. .not. x >= 0.0_wp) then
+      call deck_error(ctx, name, "must be >= 0 (got "//real_str(x)//")", error)
+    end if
+  end subroutine require_value
 
   !> A rule between variables: when `ok` is false, report `reason` against `name`.
   pure subroutine require_rule(ctx, name, ok, reason, error)
@@ -335,7 +355,7 @@ contains
     class(deck_rules_t), intent(inout) :: self
     character(*), intent(in) :: name
     real(wp), intent(in) :: x
-    if (.not. allocated(self%error)) call require_set(self%ctx, name, x, self%error)
+    if (.not. allocated(self%error)) call require_value(self%ctx, name, x, rule_finite, self%error)
   end subroutine rules_set
 
   !> require_positive, once no check has failed.
@@ -343,7 +363,7 @@ contains
     class(deck_rules_t), intent(inout) :: self
     character(*), intent(in) :: name
     real(wp), intent(in) :: x
-    if (.not. allocated(self%error)) call require_positive(self%ctx, name, x, self%error)
+    if (.not. allocated(self%error)) call require_value(self%ctx, name, x, rule_positive, self%error)
   end subroutine rules_positive
 
   !> require_nonnegative, once no check has failed.
@@ -351,8 +371,25 @@ contains
     class(deck_rules_t), intent(inout) :: self
     character(*), intent(in) :: name
     real(wp), intent(in) :: x
-    if (.not. allocated(self%error)) call require_nonnegative(self%ctx, name, x, self%error)
+    if (.not. allocated(self%error)) call require_value(self%ctx, name, x, rule_nonnegative, self%error)
   end subroutine rules_nonnegative
+
+  !> A table of variables under one value rule, checked in order (the first failure is
+  !> kept): `call rules%require_each(rule_nonnegative, [character(2) :: "m1", "m2"], [m1, m2])`.
+  subroutine rules_each(self, rule, names, values)
+    class(deck_rules_t), intent(inout) :: self
+    !> rule_finite, rule_positive or rule_nonnegative.
+    integer, intent(in) :: rule
+    !> The variables' names (trailing blanks dropped).
+    character(*), intent(in) :: names(:)
+    !> Their values as read.
+    real(wp), intent(in) :: values(:)
+    integer :: i
+    do i = 1, size(names)
+      if (allocated(self%error)) return
+      call require_value(self%ctx, trim(names(i)), values(i), rule, self%error)
+    end do
+  end subroutine rules_each
 
   !> require_rule, once no check has failed.
   subroutine rules_rule(self, name, ok, reason)
@@ -362,6 +399,20 @@ contains
     character(*), intent(in) :: reason
     if (.not. allocated(self%error)) call require_rule(self%ctx, name, ok, reason, self%error)
   end subroutine rules_rule
+
+  !> A required real in a range, once no check has failed: set and finite, then `inside`
+  !> ("must be in (0, 45) deg (got 50)" for the range "(0, 45) deg").
+  subroutine rules_in(self, name, x, inside, range)
+    class(deck_rules_t), intent(inout) :: self
+    character(*), intent(in) :: name
+    real(wp), intent(in) :: x
+    !> Whether `x` lies in the range.
+    logical, intent(in) :: inside
+    !> The range as the message names it.
+    character(*), intent(in) :: range
+    call self%require_set(name, x)
+    call self%require_rule(name, inside, "must be in "//range//" (got "//real_str(x)//")")
+  end subroutine rules_in
 
   !> require_whole, once no check has failed (`value` is `lo` when one had).
   subroutine rules_whole(self, name, x, lo, hi, value)
@@ -409,5 +460,23 @@ contains
     count = 0
     if (.not. allocated(self%error)) call count_values(self%ctx, name, values, count, self%error)
   end subroutine rules_count_values
+
+  !> The crank angles of a run, once no check has failed: phi_start (deg, optional:
+  !> default 0) and the number of steps from dphi and n (steps_over_turn).
+  subroutine rules_crank_steps(self, phi_start, dphi, n_given, n)
+    class(deck_rules_t), intent(inout) :: self
+    !> First crank angle, deg, as read (its default when unset).
+    real(wp), intent(inout) :: phi_start
+    !> Crank step, deg (validated > 0 here).
+    real(wp), intent(in) :: dphi
+    !> `n` from the deck (a real holding a whole number), or unset_real.
+    real(wp), intent(in) :: n_given
+    !> Number of steps (0 when a check failed).
+    integer, intent(out) :: n
+    n = 0
+    phi_start = optional_default(phi_start, 0.0_wp)
+    call self%require_set("phi_start", phi_start)
+    if (.not. allocated(self%error)) call steps_over_turn(self%ctx, dphi, n_given, n, self%error)
+  end subroutine rules_crank_steps
 
 end module kinetostat_deck_rules

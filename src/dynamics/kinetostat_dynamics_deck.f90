@@ -6,13 +6,13 @@ module kinetostat_dynamics_deck
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str
   use kinetostat_deck, only: deck_context_t, deck_error, is_set, unset_real, require_rule, optional_default, &
-    deck_rules_t
+    deck_rules_t, namelist_probe_t, text_bytes, text_chars
   use kinetostat_dynamics, only: dynamics_none, dynamics_reduced, dynamics_steady, dynamics_given, &
     reduced_source_t, cycle_t, cycle_setup, cycle_steady, cycle_given
   implicit none
   private
   public :: dynamics_deck_t, read_dynamics_settings, require_one_turn, dynamics_mode_name, deck_cycle
-  public :: md_table_capacity
+  public :: md_table_capacity, begin_dynamics_settings
 
   !> Values a deck's `md_table` may hold (pairs of angle and moment): 2881 points, every 0.25 deg
   !> over a cycle of two turns.
@@ -42,6 +42,25 @@ module kinetostat_dynamics_deck
   end type dynamics_deck_t
 
 contains
+
+  !> The machine-dynamics variables of a group, before its READ: the mode blank, the rest
+  !> unset; the driving-moment table's limit noted in the probe.
+  subroutine begin_dynamics_settings(probe, mode_text, delta, j_rotor, j_flywheel, md_table, flywheel_density, &
+    flywheel_width_ratio)
+    !> The READ's probe.
+    type(namelist_probe_t), intent(inout) :: probe
+    !> `dynamics`.
+    character(len=text_bytes * text_chars), intent(out) :: mode_text
+    !> `delta`, `j_rotor`, `j_flywheel`, `flywheel_density`, `flywheel_width_ratio`.
+    real(wp), intent(out) :: delta, j_rotor, j_flywheel, flywheel_density, flywheel_width_ratio
+    !> `md_table` (md_table_capacity values).
+    real(wp), intent(out) :: md_table(:)
+    mode_text = ""
+    delta = unset_real; j_rotor = unset_real; j_flywheel = unset_real
+    flywheel_density = unset_real; flywheel_width_ratio = unset_real
+    md_table = unset_real
+    call probe%limit("md_table", md_table_capacity, "values ("//int_str(md_table_capacity / 2)//" points)")
+  end subroutine begin_dynamics_settings
 
   !> The name of a mode as the deck writes it.
   pure function dynamics_mode_name(mode) result(name)

@@ -99,9 +99,7 @@ contains
     call require_teeth(rules, "z1", z1, iz1)
     call require_teeth(rules, "z2", z2, iz2)
     alpha = optional_default(alpha, 20.0_wp)
-    call rules%require_set("alpha", alpha)
-    call rules%require_rule("alpha", alpha > 0.0_wp .and. alpha < 45.0_wp, "must be in (0, 45) deg (got "// &
-      real_str(alpha)//")")
+    call rules%require_in("alpha", alpha, alpha > 0.0_wp .and. alpha < 45.0_wp, "(0, 45) deg")
     ha_star = optional_default(ha_star, 1.0_wp)
     call rules%require_positive("ha_star", ha_star)
     call rules%require_rule("ha_star", ha_star <= 10.0_wp, "must be <= 10 (got "//real_str(ha_star)//")")

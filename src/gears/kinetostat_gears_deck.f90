@@ -295,8 +295,7 @@ contains
     else
       a = alpha_default
     end if
-    call rules%require_set(name, a)
-    call rules%require_rule(name, a > 0.0_wp .and. a < 45.0_wp, "must be in (0, 45) deg (got "//real_str(a)//")")
+    call rules%require_in(name, a, a > 0.0_wp .and. a < 45.0_wp, "(0, 45) deg")
     if (rules%ok()) angle = a * deg_to_rad
   end subroutine pressure_angle
 

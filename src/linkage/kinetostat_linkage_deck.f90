@@ -12,7 +12,8 @@ module kinetostat_linkage_deck
   use kinetostat_deck, only: values_out_of_memory, longest_quoted, begin_group, max_deck_array, &
     deck_context_t, unset_bits, deck_source_t, namelist_probe_t, &
     deck_error, is_set, require_set, require_nonnegative, require_rule, require_per_step, optional_default, count_values, &
-    require_whole, deck_array_capacities, require_chars, title_chars, text_bytes, text_chars
+    require_whole, deck_array_capacities, require_chars, title_chars, text_bytes, text_chars, &
+    deck_rules_t
   use kinetostat_vec2, only: unit_at, magnitude
   use kinetostat_linkage, only: linkage_t, pair_r, pair_p, linkage_work_t, linkage_reference_pose, linkage_assemble, &
     point_position
@@ -233,6 +234,7 @@ contains
     integer :: stat
     type(deck_context_t) :: ctx
     type(namelist_probe_t) :: probe
+    type(deck_rules_t) :: rules
     character(len=:), allocatable :: p
     integer :: nl, np, nd, nf, nm, k, i, id, a, b, count, nsteps, n_values, frame_no, cols
     real(wp) :: d
@@ -272,21 +274,22 @@ contains
       read (probe%records, nml=linkage, iostat=probe%ios, iomsg=probe%msg)
     end do
     if (probe%failed(source, ctx, error)) return
-    call require_chars(ctx, "title", title, title_chars, error)
-    if (allocated(error)) return
-    deck%title = title
-    call require_whole(ctx, "frame", frame, 0, huge(1), frame_no, error); if (allocated(error)) return
-    deck%mech%frame_id = frame_no
+    rules%ctx = ctx
+    call rules%require_chars("title", title, title_chars)
+    call rules%require_whole("frame", frame, 0, huge(1), frame_no)
     deck%g = optional_default(g, g_default)
-    call require_nonnegative(ctx, "g", deck%g, error); if (allocated(error)) return
+    call rules%require_nonnegative("g", deck%g)
     deck%gravity_angle = optional_default(gravity_angle, -90.0_wp)
-    call require_set(ctx, "gravity_angle", deck%gravity_angle, error); if (allocated(error)) return
+    call rules%require_set("gravity_angle", deck%gravity_angle)
+    if (rules%failed(error)) return
+    deck%title = title
+    deck%mech%frame_id = frame_no
     deck%mech%gravity = deck%g * unit_at(deck%gravity_angle * deg_to_rad)
 
     ! ---- links
     nl = leading(is_set(link%id))
-    call require_rule(ctx, "link", nl >= 1, "at least one moving link is required (link(1)%id missing)", error)
-    if (allocated(error)) return
+    call rules%require_rule("link", nl >= 1, "at least one moving link is required (link(1)%id missing)")
+    if (rules%failed(error)) return
     do k = nl + 1, max_links
       if (is_set(link(k)%m) .or. is_set(link(k)%j) .or. any(is_set(link(k)%s))) then
         call deck_error(ctx, "link("//int_str(k)//")", "links must be numbered 1.."//int_str(nl + 1)// &
@@ -297,22 +300,22 @@ contains
     allocate (deck%mech%links(nl), ids(nl))
     do k = 1, nl
       p = "link("//int_str(k)//")%"
-      call require_whole(ctx, p//"id", link(k)%id, 0, huge(1), id, error); if (allocated(error)) return
-      call require_rule(ctx, p//"id", id /= frame_no .and. .not. any(ids(1:k - 1) == id), &
-        "must differ from frame and from the other links (got "//int_str(id)//")", error)
-      if (allocated(error)) return
+      call rules%require_whole(p//"id", link(k)%id, 0, huge(1), id)
+      call rules%require_rule(p//"id", id /= frame_no .and. .not. any(ids(1:k - 1) == id), &
+        "must differ from frame and from the other links (got "//int_str(id)//")")
       ids(k) = id
       deck%mech%links(k)%id = id
       deck%mech%links(k)%m = optional_default(link(k)%m, 0.0_wp)
-      call require_nonnegative(ctx, p//"m", deck%mech%links(k)%m, error); if (allocated(error)) return
+      call rules%require_nonnegative(p//"m", deck%mech%links(k)%m)
       deck%mech%links(k)%j = optional_default(link(k)%j, 0.0_wp)
-      call require_nonnegative(ctx, p//"j", deck%mech%links(k)%j, error); if (allocated(error)) return
+      call rules%require_nonnegative(p//"j", deck%mech%links(k)%j)
+      if (rules%failed(error)) return
     end do
 
     ! ---- pairs
     np = leading(pair%kind /= "")
-    call require_rule(ctx, "pair", np >= 1, "at least one pair is required (pair(1)%kind missing)", error)
-    if (allocated(error)) return
+    call rules%require_rule("pair", np >= 1, "at least one pair is required (pair(1)%kind missing)")
+    if (rules%failed(error)) return
     do k = np + 1, max_pairs
       if (any(is_set(pair(k)%links)) .or. any(is_set(pair(k)%at)) .or. len_trim(pair(k)%name) > 0) then
         call deck_error(ctx, "pair("//int_str(k)//")", "pairs must be numbered 1.."//int_str(np + 1)// &
@@ -324,49 +327,47 @@ contains
     do k = 1, np
       p = "pair("//int_str(k)//")%"
       associate (pr => deck%mech%pairs(k))
-        call require_rule(ctx, p//"kind", any(lower(trim(pair(k)%kind)) == ["r", "p"]), &
-          "must be 'R' (turning) or 'P' (sliding), got '"//trim(pair(k)%kind)//"'", error)
-        if (allocated(error)) return
+        call rules%require_rule(p//"kind", any(lower(trim(pair(k)%kind)) == ["r", "p"]), &
+          "must be 'R' (turning) or 'P' (sliding), got '"//trim(pair(k)%kind)//"'")
+        if (rules%failed(error)) return
         pr%kind = merge(pair_r, pair_p, lower(trim(pair(k)%kind)) == "r")
         call read_friction(p, pair(k), pr%kind, deck%friction_f(k), deck%friction_r(k), deck%friction_span(k), error)
         if (allocated(error)) return
-        call require_chars(ctx, p//"name", pair(k)%name, name_chars, error)
-        if (allocated(error)) return
+        call rules%require_chars(p//"name", pair(k)%name, name_chars)
         ! (the name may start with a digit: its columns x_<name> start with a letter)
-        call require_rule(ctx, p//"name", is_name("x"//trim(pair(k)%name)), &
+        call rules%require_rule(p//"name", is_name("x"//trim(pair(k)%name)), &
           "letters (Latin or Cyrillic), digits and _ only (it names the columns x_<name>), got '"// &
-          trim(pair(k)%name)//"'", error)
-        if (allocated(error)) return
+          trim(pair(k)%name)//"'")
+        if (rules%failed(error)) return
         pr%name = pair(k)%name(1:len(pr%name))
         if (len_trim(pr%name) == 0) pr%name = "J"//int_str(k)
         do i = 1, k - 1
-          call require_rule(ctx, p//"name", deck%mech%pairs(i)%name /= pr%name, "'"//trim(pr%name)// &
-            "' names pair "//int_str(i)//" already", error)
-          if (allocated(error)) return
+          call rules%require_rule(p//"name", deck%mech%pairs(i)%name /= pr%name, "'"//trim(pr%name)// &
+            "' names pair "//int_str(i)//" already")
         end do
+        if (rules%failed(error)) return
         call link_index(p//"links(1)", pair(k)%links(1), a, error); if (allocated(error)) return
         call link_index(p//"links(2)", pair(k)%links(2), b, error); if (allocated(error)) return
-        call require_rule(ctx, p//"links", a /= b, "the two links must differ", error)
-        if (allocated(error)) return
+        call rules%require_rule(p//"links", a /= b, "the two links must differ")
         pr%a = a; pr%b = b
-        call require_set(ctx, p//"at(1)", pair(k)%at(1), error); if (allocated(error)) return
-        call require_set(ctx, p//"at(2)", pair(k)%at(2), error); if (allocated(error)) return
+        call rules%require_set(p//"at(1)", pair(k)%at(1))
+        call rules%require_set(p//"at(2)", pair(k)%at(2))
         pr%at = pair(k)%at
         if (pr%kind == pair_p) then
-          call require_set(ctx, p//"angle", pair(k)%angle, error); if (allocated(error)) return
+          call rules%require_set(p//"angle", pair(k)%angle)
+          if (rules%failed(error)) return
           pr%u = unit_at(pair(k)%angle * deg_to_rad)
           pr%guide = b
           if (is_set(pair(k)%guide)) then
             call link_index(p//"guide", pair(k)%guide, i, error); if (allocated(error)) return
-            call require_rule(ctx, p//"guide", i == a .or. i == b, "must be one of the pair's links", error)
-            if (allocated(error)) return
+            call rules%require_rule(p//"guide", i == a .or. i == b, "must be one of the pair's links")
             pr%guide = i
           end if
         else
-          call require_rule(ctx, p//"angle", .not. is_set(pair(k)%angle) .and. .not. is_set(pair(k)%guide), &
-            "only for sliding pairs (kind = 'P')", error)
-          if (allocated(error)) return
+          call rules%require_rule(p//"angle", .not. is_set(pair(k)%angle) .and. .not. is_set(pair(k)%guide), &
+            "only for sliding pairs (kind = 'P')")
         end if
+        if (rules%failed(error)) return
       end associate
     end do
     ! every link's reference point: its first pair's joint; the size of the linkage
@@ -390,73 +391,53 @@ contains
                                                            deck%mech%pairs(i)%at(1) - deck%mech%links(k)%c(1))
         end if
       end do
-      call require_rule(ctx, "link("//int_str(k)//")%id", count >= 1, "link "//int_str(ids(k))// &
-        " is in no pair", error)
-      if (allocated(error)) return
+      call rules%require_rule("link("//int_str(k)//")%id", count >= 1, "link "//int_str(ids(k))//" is in no pair")
       if (any(is_set(link(k)%s))) then
-        call require_set(ctx, "link("//int_str(k)//")%s(1)", link(k)%s(1), error); if (allocated(error)) return
-        call require_set(ctx, "link("//int_str(k)//")%s(2)", link(k)%s(2), error); if (allocated(error)) return
+        call rules%require_set("link("//int_str(k)//")%s(1)", link(k)%s(1))
+        call rules%require_set("link("//int_str(k)//")%s(2)", link(k)%s(2))
         deck%mech%links(k)%s = link(k)%s
       else
         deck%mech%links(k)%s = deck%mech%links(k)%c
       end if
+      if (rules%failed(error)) return
     end do
 
     ! ---- steps and drives
     nd = leading(len_trim(drive%pair) > 0)
-    call require_rule(ctx, "drive", nd >= 1, "at least one drive is required (drive(1)%pair missing)", error)
-    if (allocated(error)) return
+    call rules%require_rule("drive", nd >= 1, "at least one drive is required (drive(1)%pair missing)")
+    if (rules%failed(error)) return
     allocate (deck%mech%drives(nd), deck%start(nd), deck%step(nd), deck%omega(nd), deck%eps(nd), deck%listed(nd))
     allocate (deck%drive_pair(nd))
     nsteps = 0
-    if (is_set(n)) then
-      call require_whole(ctx, "n", n, 1, max_steps, nsteps, error); if (allocated(error)) return
-    end if
+    if (is_set(n)) call rules%require_whole("n", n, 1, max_steps, nsteps)
+    if (rules%failed(error)) return
     do k = 1, nd
       p = "drive("//int_str(k)//")%"
       i = 0
       do a = 1, np
         if (deck%mech%pairs(a)%name == trim(drive(k)%pair)) i = a
       end do
-      call require_rule(ctx, p//"pair", i > 0, "no pair is named '"//trim(drive(k)%pair)//"'", error)
-      if (allocated(error)) return
-      call require_rule(ctx, p//"pair", .not. any(deck%mech%drives(1:k - 1)%pair == i), &
-        "pair '"//trim(drive(k)%pair)//"' is driven already", error)
-      if (allocated(error)) return
+      call rules%require_rule(p//"pair", i > 0, "no pair is named '"//trim(drive(k)%pair)//"'")
+      call rules%require_rule(p//"pair", .not. any(deck%mech%drives(1:k - 1)%pair == i), &
+        "pair '"//trim(drive(k)%pair)//"' is driven already")
       deck%mech%drives(k)%pair = i
       deck%drive_pair(k) = drive(k)%pair(1:len(deck%drive_pair))
-      call count_values(ctx, p//"values", drive(k)%values, count, error); if (allocated(error)) return
+      call rules%count_values(p//"values", drive(k)%values, count)
       deck%listed(k) = count > 0
       if (count > 0) then
-        call require_rule(ctx, p//"start", .not. is_set(drive(k)%start) .and. .not. is_set(drive(k)%step), &
-          "give either values(:) or start and step, not both", error)
-        if (allocated(error)) return
+        call rules%require_rule(p//"start", .not. is_set(drive(k)%start) .and. .not. is_set(drive(k)%step), &
+          "give either values(:) or start and step, not both")
         if (nsteps == 0) nsteps = count
-        call require_per_step(ctx, p//"values", count, nsteps, error)
-        if (allocated(error)) return
+        call rules%require_per_step(p//"values", count, nsteps)
       else
-        call require_set(ctx, p//"start", drive(k)%start, error); if (allocated(error)) return
-        call require_set(ctx, p//"step", drive(k)%step, error); if (allocated(error)) return
+        call rules%require_set(p//"start", drive(k)%start)
+        call rules%require_set(p//"step", drive(k)%step)
         deck%start(k) = drive(k)%start
         deck%step(k) = drive(k)%step
       end if
-      if (is_set(drive(k)%omega_column)) then
-        call require_rule(ctx, p//"omega", .not. is_set(drive(k)%omega), "give either omega or omega_column, not both", &
-          error)
-        if (allocated(error)) return
-        deck%omega(k) = 0.0_wp
-      else
-        call require_set(ctx, p//"omega", drive(k)%omega, error); if (allocated(error)) return
-        deck%omega(k) = drive(k)%omega
-      end if
-      if (is_set(drive(k)%eps_column)) then
-        call require_rule(ctx, p//"eps", .not. is_set(drive(k)%eps), "give either eps or eps_column, not both", error)
-        if (allocated(error)) return
-        deck%eps(k) = 0.0_wp
-      else
-        deck%eps(k) = optional_default(drive(k)%eps, 0.0_wp)
-        call require_set(ctx, p//"eps", deck%eps(k), error); if (allocated(error)) return
-      end if
+      call value_or_column(p, "omega", drive(k)%omega, drive(k)%omega_column, unset, deck%omega(k))
+      call value_or_column(p, "eps", drive(k)%eps, drive(k)%eps_column, 0.0_wp, deck%eps(k))
+      if (rules%failed(error)) return
       deck%mech%drives(k)%q_ref = reference_value(deck%mech, i)
     end do
     do k = nd + 1, max_drives
@@ -514,8 +495,7 @@ contains
     allocate (deck%mech%forces(nf), deck%force_load(nf), deck%mech%moment_link(nm), deck%moment_load(nm))
     do k = 1, nf
       p = "force("//int_str(k)//")%"
-      call link_index(p//"link", force(k)%link, i, error); if (allocated(error)) return
-      call require_rule(ctx, p//"link", i > 0, "must be a moving link", error); if (allocated(error)) return
+      call link_index(p//"link", force(k)%link, i, error, moving=.true.); if (allocated(error)) return
       deck%mech%forces(k)%link = i
       call require_set(ctx, p//"at(1)", force(k)%at(1), error); if (allocated(error)) return
       call require_set(ctx, p//"at(2)", force(k)%at(2), error); if (allocated(error)) return
@@ -523,21 +503,16 @@ contains
       call require_set(ctx, p//"angle", force(k)%angle, error); if (allocated(error)) return
       deck%mech%forces(k)%dir = unit_at(force(k)%angle * deg_to_rad)
       deck%mech%forces(k)%follow = force(k)%follow
-      call read_schedule(p, force(k)%value, force(k)%idle, force(k)%phi_on, force(k)%phi_off, force(k)%column, &
-                         is_set(force(k)%table(1)), deck%force_load(k), error)
-      if (allocated(error)) return
-      call read_load_table(p, force(k)%table, force(k)%over, deck%force_load(k), error)
+      call read_load(p, force(k)%value, force(k)%idle, force(k)%phi_on, force(k)%phi_off, force(k)%column, &
+                     force(k)%table, force(k)%over, deck%force_load(k), error)
       if (allocated(error)) return
     end do
     do k = 1, nm
       p = "moment("//int_str(k)//")%"
-      call link_index(p//"link", moment(k)%link, i, error); if (allocated(error)) return
-      call require_rule(ctx, p//"link", i > 0, "must be a moving link", error); if (allocated(error)) return
+      call link_index(p//"link", moment(k)%link, i, error, moving=.true.); if (allocated(error)) return
       deck%mech%moment_link(k) = i
-      call read_schedule(p, moment(k)%value, moment(k)%idle, moment(k)%phi_on, moment(k)%phi_off, moment(k)%column, &
-                         is_set(moment(k)%table(1)), deck%moment_load(k), error)
-      if (allocated(error)) return
-      call read_load_table(p, moment(k)%table, moment(k)%over, deck%moment_load(k), error)
+      call read_load(p, moment(k)%value, moment(k)%idle, moment(k)%phi_on, moment(k)%phi_off, moment(k)%column, &
+                     moment(k)%table, moment(k)%over, deck%moment_load(k), error)
       if (allocated(error)) return
     end do
 
@@ -692,25 +667,44 @@ contains
         leading = kk
       end do
     end function leading
-    !> Internal index (0 frame, 1.. moving) of a link number given as a real.
-    subroutine link_index(name, x, idx, err)
+    !> Internal index (0 frame, 1.. moving) of a link number given as a real; with `moving`
+    !> true, the frame is refused ("must be a moving link").
+    subroutine link_index(name, x, idx, err, moving)
       character(*), intent(in) :: name
       real(wp), intent(in) :: x
       integer, intent(out) :: idx
       type(error_t), allocatable, intent(out) :: err
+      logical, intent(in), optional :: moving
       integer :: v, kk
       idx = -1
       call require_whole(ctx, name, x, 0, huge(1), v, err); if (allocated(err)) return
       if (v == frame_no) then
         idx = 0
-        return
+      else
+        do kk = 1, nl
+          if (ids(kk) == v) idx = kk
+        end do
+        call require_rule(ctx, name, idx >= 0, "no link "//int_str(v)//" (links: the frame "//int_str(frame_no)// &
+          " and link(:)%id)", err)
       end if
-      do kk = 1, nl
-        if (ids(kk) == v) idx = kk
-      end do
-      call require_rule(ctx, name, idx >= 0, "no link "//int_str(v)//" (links: the frame "//int_str(frame_no)// &
-        " and link(:)%id)", err)
+      if (allocated(err) .or. .not. present(moving)) return
+      call require_rule(ctx, name, idx > 0 .or. .not. moving, "must be a moving link", err)
     end subroutine link_index
+    !> A drive's speed or acceleration `pfx//var`: 0 when a column of step_values gives it
+    !> (`var`_column; then `var` must not be given), else the value (or its default), finite.
+    subroutine value_or_column(pfx, var, value, column, default, out)
+      character(*), intent(in) :: pfx, var
+      !> The value and the column as read; the value's default (unset: required).
+      real(wp), intent(in) :: value, column, default
+      real(wp), intent(out) :: out
+      if (is_set(column)) then
+        call rules%require_rule(pfx//var, .not. is_set(value), "give either "//var//" or "//var//"_column, not both")
+        out = 0.0_wp
+      else
+        out = optional_default(value, default)
+        call rules%require_set(pfx//var, out)
+      end if
+    end subroutine value_or_column
     !> A drive's column of speeds or accelerations, if given (else 0).
     subroutine drive_column(name, x, column, err)
       character(*), intent(in) :: name
@@ -722,6 +716,19 @@ contains
       call require_whole(ctx, name, x, 1, max(1, cols), column, err); if (allocated(err)) return
       call require_rule(ctx, name, cols >= 1, "step_values holds no column", err)
     end subroutine drive_column
+    !> A force's or moment's load: its schedule (read_schedule), or its table over a link's
+    !> position (read_load_table).
+    subroutine read_load(pfx, value, idle, on, off, column, table, over, sched, err)
+      character(*), intent(in) :: pfx
+      !> value, idle, phi_on, phi_off, column as read.
+      real(wp), intent(in) :: value, idle, on, off, column
+      !> The table and its abscissa link as read.
+      real(wp), intent(in) :: table(:), over
+      type(linkage_schedule_t), intent(out) :: sched
+      type(error_t), allocatable, intent(out) :: err
+      call read_schedule(pfx, value, idle, on, off, column, is_set(table(1)), sched, err); if (allocated(err)) return
+      call read_load_table(pfx, table, over, sched, err)
+    end subroutine read_load
     !> A load's schedule: constant value, window, or column.
     subroutine read_schedule(pfx, value, idle, on, off, column, tabled, sched, err)
       character(*), intent(in) :: pfx
@@ -774,9 +781,7 @@ contains
       end if
       associate (driven => deck%mech%pairs(deck%mech%drives(1)%pair))
         if (is_set(over)) then
-          call link_index(pfx//"over", over, over_link, err); if (allocated(err)) return
-          call require_rule(ctx, pfx//"over", over_link > 0, "must be a moving link", err)
-          if (allocated(err)) return
+          call link_index(pfx//"over", over, over_link, err, moving=.true.); if (allocated(err)) return
           if (.not. (driven%kind == pair_r .and. driven%b == 0 .and. driven%a == over_link)) then
             ! over another link's position: its angle, or its stroke on a guide of the frame
             sched%table = .true.

@@ -78,9 +78,7 @@ contains
       "z3 = z1 + 2 z2 > z1 (got "//real_str(u)//")")
     call rules%require_whole("k", k, 1, 100, deck%spec%k)
     u_tolerance = optional_default(u_tolerance, 0.04_wp)
-    call rules%require_set("u_tolerance", u_tolerance)
-    call rules%require_rule("u_tolerance", u_tolerance >= 0.0_wp .and. u_tolerance < 0.5_wp, "must be in [0, 0.5) "// &
-      "(got "//real_str(u_tolerance)//")")
+    call rules%require_in("u_tolerance", u_tolerance, u_tolerance >= 0.0_wp .and. u_tolerance < 0.5_wp, "[0, 0.5)")
     z_min = optional_default(z_min, 17.0_wp)
     call rules%require_whole("z_min", z_min, 1, 1000, deck%spec%z_min)
     z_ring_min = optional_default(z_ring_min, 85.0_wp)

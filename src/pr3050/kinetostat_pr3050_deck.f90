@@ -4,9 +4,9 @@ module kinetostat_pr3050_deck
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str
   use kinetostat_deck_foreign, only: refuse_translated_stages, refuse_variables
-  use kinetostat_deck, only: values_out_of_memory, begin_group, text_bytes, text_chars, max_deck_array, &
-    deck_context_t, unset_real, deck_array_capacities, max_steps, deck_source_t, namelist_probe_t, &
-    optional_default, deck_rules_t
+  use kinetostat_deck, only: begin_group, text_bytes, text_chars, &
+    deck_context_t, unset_real, max_steps, deck_source_t, namelist_probe_t, &
+    optional_default, deck_rules_t, rule_finite, rule_positive, rule_nonnegative
   use kinetostat_pr3050, only: pr3050_params_t
   use kinetostat_dynamics_deck, only: dynamics_deck_t, read_dynamics_settings
   implicit none
@@ -110,9 +110,6 @@ contains
     !> Machine dynamics variables: mode and the drive's mass reduced to the stroke, kg.
     character(len=text_bytes * text_chars) :: dynamics
     real(wp) :: j_rotor
-    !> Elements allocated for each per-step array the deck may give (see deck_array_capacities).
-    integer, allocatable :: capacity(:)
-    integer :: stat
     type(deck_context_t) :: ctx
     type(deck_rules_t) :: rules
     type(namelist_probe_t) :: probe
@@ -136,20 +133,11 @@ contains
     j1 = unset_real; j2 = unset_real; j3 = unset_real
     phi3_start = unset_real; phi3_end = unset_real; dphi3 = unset_real
     dynamics = ""; j_rotor = unset_real
-    capacity = deck_array_capacities(source, ctx%group, [character(len=6) :: "omega3", "eps3"])
-    allocate (omega3(capacity(1)), source=unset_real, stat=stat)
-    if (stat /= 0) then
-      call values_out_of_memory(ctx, "omega3", capacity(1:1), error)
-      return
-    end if
-    allocate (eps3(capacity(2)), source=unset_real, stat=stat)
-    if (stat /= 0) then
-      call values_out_of_memory(ctx, "eps3", capacity(2:2), error)
-      return
-    end if
+    call probe%per_step(source, ctx, "omega3", omega3, error)
+    if (allocated(error)) return
+    call probe%per_step(source, ctx, "eps3", eps3, error)
+    if (allocated(error)) return
 
-    call probe%limit("omega3", max_deck_array, "values (one per step)")
-    call probe%limit("eps3", max_deck_array, "values (one per step)")
     read (source%records, nml=pr3050, iostat=probe%ios, iomsg=probe%msg)
     do while (probe%retry(source)) ! on failure: find the line and the assignment
       read (probe%records, nml=pr3050, iostat=probe%ios, iomsg=probe%msg)
@@ -163,26 +151,18 @@ contains
       [l_ca, l_cb, l_cs3, delta, l_bs2, l_s1a, gamma, m1, m2, m3, j1, j2, j3, phi3_start, phi3_end, dphi3])
 
     ! lengths and angles of the links
-    call rules%require_positive("l_ca", l_ca)
-    call rules%require_positive("l_cb", l_cb)
+    call rules%require_each(rule_positive, [character(4) :: "l_ca", "l_cb"], [l_ca, l_cb])
     call rules%require_nonnegative("l_cs3", l_cs3)
     call rules%require_set("delta", delta)
-    call rules%require_nonnegative("l_bs2", l_bs2)
-    call rules%require_nonnegative("l_s1a", l_s1a)
+    call rules%require_each(rule_nonnegative, [character(5) :: "l_bs2", "l_s1a"], [l_bs2, l_s1a])
     ! gravity, masses, inertias
     call rules%require_set("gamma", gamma)
     g = optional_default(g, g_default)
-    call rules%require_nonnegative("g", g)
-    call rules%require_nonnegative("m1", m1)
-    call rules%require_nonnegative("m2", m2)
-    call rules%require_nonnegative("m3", m3)
-    call rules%require_nonnegative("j1", j1)
-    call rules%require_nonnegative("j2", j2)
-    call rules%require_nonnegative("j3", j3)
+    call rules%require_each(rule_nonnegative, [character(2) :: "g", "m1", "m2", "m3", "j1", "j2", "j3"], &
+      [g, m1, m2, m3, j1, j2, j3])
 
     ! rocker range: N = (phi3_end - phi3_start)/dphi3 + 1
-    call rules%require_set("phi3_start", phi3_start)
-    call rules%require_set("phi3_end", phi3_end)
+    call rules%require_each(rule_finite, [character(10) :: "phi3_start", "phi3_end"], [phi3_start, phi3_end])
     call rules%require_positive("dphi3", dphi3)
     call rules%require_rule("phi3_end", phi3_end > phi3_start, "must be > phi3_start (got phi3_end = "// &
       real_str(phi3_end)//", phi3_start = "//real_str(phi3_start)//"): the range gives no steps")

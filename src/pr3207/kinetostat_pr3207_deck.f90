@@ -2,14 +2,15 @@
 module kinetostat_pr3207_deck
   use kinetostat_kinds, only: wp, g_default
   use kinetostat_error, only: error_t
-  use kinetostat_text, only: real_str, int_str
+  use kinetostat_text, only: real_str
   use kinetostat_deck_foreign, only: refuse_translated_stages
-  use kinetostat_deck, only: values_out_of_memory, begin_group, text_bytes, text_chars, max_deck_array, &
-    deck_context_t, unset_real, deck_array_capacities, deck_source_t, namelist_probe_t, deck_error, is_set, &
-    require_rule, require_per_step, optional_default, count_values, steps_over_turn, deck_rules_t
+  use kinetostat_deck, only: begin_group, text_bytes, text_chars, &
+    deck_context_t, unset_real, deck_source_t, namelist_probe_t, is_set, &
+    optional_default, deck_rules_t, rule_finite, rule_positive, rule_nonnegative
   use kinetostat_pr3207, only: pr3207_params_t
   use kinetostat_dynamics, only: dynamics_steady
-  use kinetostat_dynamics_deck, only: dynamics_deck_t, read_dynamics_settings, require_one_turn, md_table_capacity
+  use kinetostat_dynamics_deck, only: dynamics_deck_t, read_dynamics_settings, require_one_turn, md_table_capacity, &
+    begin_dynamics_settings
   implicit none
   private
   public :: pr3207_deck_t, read_pr3207_deck, pr3207_template, pr3207_cut_force
@@ -113,9 +114,6 @@ contains
     !> Number of steps as given (an integer deck variable, read as a real: see require_whole).
     real(wp) :: n
     integer :: n_f5c
-    !> Elements allocated for each per-step array the deck may give (see deck_array_capacities).
-    integer, allocatable :: capacity(:)
-    integer :: stat
     type(deck_context_t) :: ctx
     type(deck_rules_t) :: rules
     type(namelist_probe_t) :: probe
@@ -134,18 +132,11 @@ contains
     omega1 = unset_real; g = unset_real; phi_start = unset_real; dphi = unset_real
     f5c_work = unset_real; f5c_idle = unset_real; phi_cut_start = unset_real; phi_cut_end = unset_real
     n = unset_real
-    dynamics = ""; delta = unset_real; j_rotor = unset_real; j_flywheel = unset_real
-    flywheel_density = unset_real; flywheel_width_ratio = unset_real
-    md_table = unset_real
-    capacity = deck_array_capacities(source, ctx%group, ["f5c"])
-    allocate (f5c(capacity(1)), source=unset_real, stat=stat)
-    if (stat /= 0) then
-      call values_out_of_memory(ctx, "f5c", capacity, error)
-      return
-    end if
+    call begin_dynamics_settings(probe, dynamics, delta, j_rotor, j_flywheel, md_table, flywheel_density, &
+      flywheel_width_ratio)
+    call probe%per_step(source, ctx, "f5c", f5c, error)
+    if (allocated(error)) return
 
-    call probe%limit("f5c", max_deck_array, "values (one per step)")
-    call probe%limit("md_table", md_table_capacity, "values ("//int_str(md_table_capacity / 2)//" points)")
     read (source%records, nml=pr3207, iostat=probe%ios, iomsg=probe%msg)
     do while (probe%retry(source)) ! on failure: find the line and the assignment
       read (probe%records, nml=pr3207, iostat=probe%ios, iomsg=probe%msg)
@@ -158,14 +149,9 @@ contains
       [l_ab, l_ac, l_cd, l_cs3, m1, m3, m5, j3, omega1, dphi])
 
     ! lengths, masses, inertia, speed
-    call rules%require_positive("l_ab", l_ab)
-    call rules%require_positive("l_ac", l_ac)
-    call rules%require_positive("l_cd", l_cd)
-    call rules%require_nonnegative("l_cs3", l_cs3)
-    call rules%require_nonnegative("m1", m1)
-    call rules%require_nonnegative("m3", m3)
-    call rules%require_nonnegative("m5", m5)
-    call rules%require_nonnegative("j3", j3)
+    call rules%require_each(rule_positive, [character(4) :: "l_ab", "l_ac", "l_cd"], [l_ab, l_ac, l_cd])
+    call rules%require_each(rule_nonnegative, [character(5) :: "l_cs3", "m1", "m3", "m5", "j3"], &
+      [l_cs3, m1, m3, m5, j3])
     call rules%require_set("omega1", omega1)
     g = optional_default(g, g_default)
     call rules%require_nonnegative("g", g)
@@ -175,33 +161,26 @@ contains
       real_str(l_ac + l_ab)//" (got "//real_str(l_cd)//"): D must pass beyond the crank circle")
 
     ! crank angles
-    phi_start = optional_default(phi_start, 0.0_wp)
-    call rules%require_set("phi_start", phi_start)
+    call rules%crank_steps(phi_start, dphi, n, deck%n)
     if (rules%failed(error)) return
-    call steps_over_turn(ctx, dphi, n, deck%n, error); if (allocated(error)) return
 
     ! cutting force: per-step array or the two-value form, not both
-    call count_values(ctx, "f5c", f5c, n_f5c, error); if (allocated(error)) return
+    call rules%count_values("f5c", f5c, n_f5c)
     two_value_given = any(is_set([f5c_work, f5c_idle, phi_cut_start, phi_cut_end]))
-    if (n_f5c > 0 .and. two_value_given) then
-      call deck_error(ctx, "f5c", "give either f5c(:) or f5c_work/f5c_idle/phi_cut_start/phi_cut_end, not both", error)
-      return
-    end if
+    call rules%require_rule("f5c", n_f5c == 0 .or. .not. two_value_given, "give either f5c(:) or "// &
+      "f5c_work/f5c_idle/phi_cut_start/phi_cut_end, not both")
+    call rules%require_rule("f5c", n_f5c > 0 .or. two_value_given, "missing: give f5c(:) per step or f5c_work "// &
+      "with phi_cut_start, phi_cut_end")
     if (n_f5c > 0) then
-      call require_per_step(ctx, "f5c", n_f5c, deck%n, error)
-      if (allocated(error)) return
+      call rules%require_per_step("f5c", n_f5c, deck%n)
+      if (rules%failed(error)) return
       ! the read buffer is the deck's array (no second copy)
       call move_alloc(f5c, deck%f5c_values)
     else
-      if (.not. two_value_given) then
-        call deck_error(ctx, "f5c", "missing: give f5c(:) per step or f5c_work with phi_cut_start, phi_cut_end", error)
-        return
-      end if
       call rules%require_set("f5c_work", f5c_work)
       f5c_idle = optional_default(f5c_idle, 0.0_wp)
-      call rules%require_set("f5c_idle", f5c_idle)
-      call rules%require_set("phi_cut_start", phi_cut_start)
-      call rules%require_set("phi_cut_end", phi_cut_end)
+      call rules%require_each(rule_finite, [character(13) :: "f5c_idle", "phi_cut_start", "phi_cut_end"], &
+        [f5c_idle, phi_cut_start, phi_cut_end])
       if (rules%failed(error)) return
       deck%two_value = .true.
       deck%f5c_work = f5c_work
@@ -216,9 +195,9 @@ contains
     if (allocated(error)) return
     if (deck%dyn%mode >= dynamics_steady) then
       call require_one_turn(ctx, dphi, deck%n, error); if (allocated(error)) return
-      call require_rule(ctx, "f5c", deck%two_value, "a steady cycle needs the cutting force at every crank "// &
-        "angle: give it in the two-value form (f5c_work, phi_cut_start, phi_cut_end), not per step", error)
-      if (allocated(error)) return
+      call rules%require_rule("f5c", deck%two_value, "a steady cycle needs the cutting force at every crank "// &
+        "angle: give it in the two-value form (f5c_work, phi_cut_start, phi_cut_end), not per step")
+      if (rules%failed(error)) return
     end if
 
     deck%p = pr3207_params_t(l_ab=l_ab, l_ac=l_ac, l_cd=l_cd, l_cs3=l_cs3, m1=m1, m3=m3, m5=m5, &

@@ -2,14 +2,15 @@
 module kinetostat_sixbar_deck
   use kinetostat_kinds, only: wp, g_default, rad_to_deg
   use kinetostat_error, only: error_t, fatal_error, exit_geometry
-  use kinetostat_text, only: real_str, int_str
+  use kinetostat_text, only: real_str
   use kinetostat_deck_foreign, only: refuse_translated_stages
-  use kinetostat_deck, only: values_out_of_memory, begin_group, text_bytes, text_chars, max_deck_array, &
-    deck_context_t, unset_real, deck_array_capacities, deck_source_t, namelist_probe_t, deck_error, is_set, &
-    require_set, optional_default, steps_over_turn, deck_rules_t
+  use kinetostat_deck, only: begin_group, text_bytes, text_chars, &
+    deck_context_t, unset_real, deck_source_t, namelist_probe_t, is_set, &
+    optional_default, deck_rules_t, rule_finite, rule_positive, rule_nonnegative
   use kinetostat_sixbar, only: sixbar_params_t, sixbar_extreme_phi1
   use kinetostat_dynamics, only: dynamics_steady
-  use kinetostat_dynamics_deck, only: dynamics_deck_t, read_dynamics_settings, require_one_turn, md_table_capacity
+  use kinetostat_dynamics_deck, only: dynamics_deck_t, read_dynamics_settings, require_one_turn, md_table_capacity, &
+    begin_dynamics_settings
   implicit none
   private
   public :: sixbar_deck_t, read_sixbar_deck, sixbar_template, sixbar_phi1_deg
@@ -87,9 +88,6 @@ contains
     !> Number of steps as given (an integer deck variable, read as a real: see require_whole).
     real(wp) :: n
     integer :: n_f5
-    !> Elements allocated for each per-step array the deck may give (see deck_array_capacities).
-    integer, allocatable :: capacity(:)
-    integer :: stat
     type(deck_context_t) :: ctx
     type(deck_rules_t) :: rules
     type(namelist_probe_t) :: probe
@@ -102,9 +100,8 @@ contains
     ! a stage this kind lacks: the reason and the way out, before the READ
     call refuse_translated_stages(source, "sixbar", " but f5", error)
     if (allocated(error)) return
-    dynamics = ""; delta = unset_real; j_rotor = unset_real; j_flywheel = unset_real
-    flywheel_density = unset_real; flywheel_width_ratio = unset_real
-    md_table = unset_real
+    call begin_dynamics_settings(probe, dynamics, delta, j_rotor, j_flywheel, md_table, flywheel_density, &
+      flywheel_width_ratio)
     a = unset_real; b = unset_real; l1 = unset_real
     lam2 = unset_real; lam_s2 = unset_real; lam3 = unset_real; lam_de = unset_real
     lam4 = unset_real; lam_s4 = unset_real; lam_e = unset_real
@@ -114,15 +111,9 @@ contains
     n = unset_real
     start_at_extreme = .false.
     legacy_eq2 = .false.
-    capacity = deck_array_capacities(source, ctx%group, ["f5"])
-    allocate (f5(capacity(1)), source=unset_real, stat=stat)
-    if (stat /= 0) then
-      call values_out_of_memory(ctx, "f5", capacity, error)
-      return
-    end if
+    call probe%per_step(source, ctx, "f5", f5, error)
+    if (allocated(error)) return
 
-    call probe%limit("f5", max_deck_array, "values (one per step)")
-    call probe%limit("md_table", md_table_capacity, "values ("//int_str(md_table_capacity / 2)//" points)")
     read (source%records, nml=sixbar, iostat=probe%ios, iomsg=probe%msg)
     do while (probe%retry(source)) ! on failure: find the line and the assignment
       read (probe%records, nml=sixbar, iostat=probe%ios, iomsg=probe%msg)
@@ -136,28 +127,17 @@ contains
       [a, b, l1, lam2, lam_s2, lam3, lam_de, lam4, lam_s4, lam_e, m1, m2, m3, m4, m5, j1, j2, j3, j4, omega1])
 
     ! geometry: D, lengths and ratios
-    call rules%require_set("a", a)
-    call rules%require_set("b", b)
+    call rules%require_each(rule_finite, [character(1) :: "a", "b"], [a, b])
     call rules%require_rule("b", hypot(a, b) > 0.0_wp, "a and b must not both be 0: D must differ from A")
-    call rules%require_positive("l1", l1)
-    call rules%require_positive("lam2", lam2)
+    call rules%require_each(rule_positive, [character(4) :: "l1", "lam2"], [l1, lam2])
     call rules%require_nonnegative("lam_s2", lam_s2)
-    call rules%require_positive("lam3", lam3)
-    call rules%require_positive("lam_de", lam_de)
-    call rules%require_positive("lam4", lam4)
+    call rules%require_each(rule_positive, [character(6) :: "lam3", "lam_de", "lam4"], [lam3, lam_de, lam4])
     call rules%require_nonnegative("lam_s4", lam_s4)
     call rules%require_set("lam_e", lam_e)
 
     ! masses, inertia, speed, gravity
-    call rules%require_nonnegative("m1", m1)
-    call rules%require_nonnegative("m2", m2)
-    call rules%require_nonnegative("m3", m3)
-    call rules%require_nonnegative("m4", m4)
-    call rules%require_nonnegative("m5", m5)
-    call rules%require_nonnegative("j1", j1)
-    call rules%require_nonnegative("j2", j2)
-    call rules%require_nonnegative("j3", j3)
-    call rules%require_nonnegative("j4", j4)
+    call rules%require_each(rule_nonnegative, [character(2) :: "m1", "m2", "m3", "m4", "m5", "j1", "j2", "j3", "j4"], &
+      [m1, m2, m3, m4, m5, j1, j2, j3, j4])
     call rules%require_set("omega1", omega1)
     g = optional_default(g, g_default)
     call rules%require_nonnegative("g", g)
@@ -173,10 +153,9 @@ contains
       j4=j4, omega1=omega1, g=g, legacy_eq2=legacy_eq2)
 
     ! crank angles: phi_start or the extreme position, not both
-    if (start_at_extreme .and. is_set(phi_start)) then
-      call deck_error(ctx, "phi_start", "give either phi_start or start_at_extreme = .true., not both", error)
-      return
-    end if
+    call rules%require_rule("phi_start", .not. (start_at_extreme .and. is_set(phi_start)), "give either phi_start "// &
+      "or start_at_extreme = .true., not both")
+    if (rules%failed(error)) return
     if (start_at_extreme) then
       call sixbar_extreme_phi1(deck%p, phi_ext, ok)
       if (.not. ok) then
@@ -187,11 +166,9 @@ contains
         return
       end if
       phi_start = phi_ext * rad_to_deg
-    else
-      phi_start = optional_default(phi_start, 0.0_wp)
-      call require_set(ctx, "phi_start", phi_start, error); if (allocated(error)) return
     end if
-    call steps_over_turn(ctx, dphi, n, deck%n, error); if (allocated(error)) return
+    call rules%crank_steps(phi_start, dphi, n, deck%n)
+    if (rules%failed(error)) return
     ! a steady cycle: the steps are the breakpoints of the load table f5 over one turn
     if (deck%dyn%mode >= dynamics_steady) then
       call require_one_turn(ctx, dphi, deck%n, error); if (allocated(error)) return
