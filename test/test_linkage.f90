@@ -373,11 +373,11 @@ contains
   end subroutine test_dead_position
 
   !> The closed forms of the dyads and input units against Newton's method (a second,
-  !> independent solve, here converged to 1e-14 of the linkage's size): two continuations from the reference pose, one by each, over every
-  !> step of every bundled &linkage deck whose units all have closed forms and of three decks
-  !> with the other dyad kinds (RPR, PRP, RPP), then over 40 random drive values within the
-  !> run's range: every pose within 1e-12 of the linkage's size (so the same branch
-  !> throughout), and the closed forms in use.
+  !> independent solve, here converged to 1e-14 of the linkage's size): two continuations
+  !> from the reference pose, one by each, over every step of every bundled &linkage deck
+  !> whose units all have closed forms and of three decks with the other dyad kinds (RPR,
+  !> PRP, RPP), then over 40 random drive values within the run's range: every pose within
+  !> 1e-12 of the linkage's size (so the same branch throughout), and the closed forms in use.
   subroutine test_closed_forms(t)
     type(test_counts_t), intent(inout) :: t
     character(len=*), parameter :: decks(5) = [character(len=40) :: "data/fivebar.nml", "data/linkage_fourbar.nml", &
