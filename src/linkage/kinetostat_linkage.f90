@@ -105,6 +105,9 @@ module kinetostat_linkage
     !> cos and sin of each link's turn (2 x 0:n, column 0 the frame's) in the poses of the
     !> routine that set them last.
     real(wp), allocatable :: cs(:, :)
+    !> Scratch of solve_j and solve_jt (rows) and of linkage_assemble (poses): no
+    !> allocation per step.
+    real(wp), allocatable :: rhs(:), unit_x(:), q_new(:)
     !> The poses of cs (valid when `has_cs`).
     real(wp), allocatable :: q_cs(:)
     logical :: has_cs = .false.
@@ -139,7 +142,7 @@ contains
                   work%dq0, work%zero_q, work%trsm)
       deallocate (work%fa, work%flu, work%fb, work%fipiv, work%load, work%cm, work%local, work%pair_known, &
                   work%drive_known, work%f2, work%normal2, work%couple2, work%effort2, work%gen, work%lam, work%bal, work%cs, &
-                  work%q_cs)
+                  work%q_cs, work%rhs, work%unit_x, work%q_new)
     end if
     allocate (work%fa(nr, nr), work%flu(nr, nr), work%fb(nr), work%fipiv(nr), work%load(3, size(mech%links)), &
               work%cm(2, size(mech%links)), work%local(size(mech%links)), work%pair_known(size(mech%pairs)), &
@@ -148,7 +151,8 @@ contains
               work%bal(size(mech%links)), work%cs(2, 0:size(mech%links)), work%q_cs(3 * size(mech%links)))
     allocate (work%phi(nr), work%jac(nr, nr), work%q_jac(nr), work%lu(nr, nr), work%ipiv(nr), &
               work%v(nr, size(mech%drives)), work%jt(nr, nr), work%lut(nr, nr), work%ipivt(nr), work%dx(nr))
-    allocate (work%dq0(size(mech%drives)), work%zero_q(nr), source=0.0_wp)
+    allocate (work%dq0(size(mech%drives)), work%zero_q(nr), work%rhs(nr), work%unit_x(nr), &
+              work%q_new(3 * size(mech%links)), source=0.0_wp)
     work%trsm = trsm_table(nr)
     work%has_jac = .false.
     work%factored = .false.
@@ -228,11 +232,13 @@ contains
 
   !> x = J^-1 x with factor_j's factors (x: constraint rows in, pose coordinates out): the
   !> units in their order, each with the coordinates of the units before it known.
-  pure subroutine solve_j(mech, work, x)
+  pure subroutine solve_j(mech, work, x, rhs, unit_x)
     type(linkage_t), intent(in) :: mech
     type(linkage_work_t), intent(in) :: work
     real(wp), intent(inout) :: x(:)
-    real(wp) :: s, rhs(size(x)), unit_x(size(work%unit_block, 1))
+    !> Scratch (work%rhs, work%unit_x).
+    real(wp), intent(out) :: rhs(:), unit_x(:)
+    real(wp) :: s
     integer :: u, k, i, c, r
     if (.not. work%blocked) then
       call solve_factored(work%lu, work%ipiv, x)
@@ -259,11 +265,13 @@ contains
 
   !> x = J^-T x with factor_j's factors (x: generalised loads in, multipliers of the rows
   !> out): the units from the last, each with the multipliers of the units after it known.
-  pure subroutine solve_jt(mech, work, x)
+  pure subroutine solve_jt(mech, work, x, rhs, unit_x)
     type(linkage_t), intent(in) :: mech
     type(linkage_work_t), intent(in) :: work
     real(wp), intent(inout) :: x(:)
-    real(wp) :: s, rhs(size(x)), unit_x(size(work%unit_block, 1))
+    !> Scratch (work%rhs, work%unit_x).
+    real(wp), intent(out) :: rhs(:), unit_x(:)
+    real(wp) :: s
     integer :: u, k, i, c, r
     rhs(:) = x
     x(:) = 0.0_wp
@@ -315,7 +323,7 @@ contains
     do d = 1, size(mech%drives)
       work%v(:, d) = 0.0_wp
       work%v(drive_row(mech, d), d) = 1.0_wp
-      call solve_j(mech, work, work%v(:, d))
+      call solve_j(mech, work, work%v(:, d), work%rhs, work%unit_x)
     end do
     work%factored = .true.
   end subroutine work_factored
@@ -633,23 +641,22 @@ contains
     !> Workspace (J and its factors at the last poses).
     type(linkage_work_t), intent(inout) :: work
     type(error_t), allocatable, intent(out) :: error
-    real(wp) :: q_new(size(q))
     integer :: m, s
     logical :: placed
     call work_ready(mech, work)
     if (work%closed) then
       m = substeps(mech, dq_from, dq)
-      q_new(:) = q
+      work%q_new(:) = q
       placed = .true.
       do s = 1, m - 1
-        call place_units(mech, dq_from + (dq - dq_from) * (real(s, wp) / real(m, wp)), q_new, placed)
+        call place_units(mech, dq_from + (dq - dq_from) * (real(s, wp) / real(m, wp)), work%q_new, placed)
         if (.not. placed) exit
       end do
-      if (placed) call place_units(mech, dq, q_new, placed)
+      if (placed) call place_units(mech, dq, work%q_new, placed)
       if (placed) then
-        call work_factored(mech, q_new, work, error)
+        call work_factored(mech, work%q_new, work, error)
         if (.not. allocated(error)) then
-          q(:) = q_new
+          q(:) = work%q_new
           return
         end if
         deallocate (error)
@@ -723,7 +730,7 @@ contains
           return
         end if
         work%dx(:) = -work%phi
-        call solve_j(mech, work, work%dx)
+        call solve_j(mech, work, work%dx, work%rhs, work%unit_x)
         q = q + work%dx
       end do
       if (.not. converged) then
@@ -841,14 +848,14 @@ contains
     do d = 1, size(mech%drives)
       qd(drive_row(mech, d)) = dv(d)
     end do
-    call solve_j(mech, work, qd)
+    call solve_j(mech, work, qd, work%rhs, work%unit_x)
     call work_turns(work, q)
     call quadratic_terms(mech, q, qd, work%zero_q, qdd, work%cs)
     qdd = -qdd
     do d = 1, size(mech%drives)
       qdd(drive_row(mech, d)) = qdd(drive_row(mech, d)) + da(d)
     end do
-    call solve_j(mech, work, qdd)
+    call solve_j(mech, work, qdd, work%rhs, work%unit_x)
   end subroutine linkage_motion
 
   !> Reactions of an assembled, moving step: applied forces `fval` (N, along each force's
@@ -876,7 +883,7 @@ contains
     work%lam(:) = -work%gen
     if (work%blocked) then
       ! J^T is block triangular too: its units' blocks are J's, transposed
-      call solve_jt(mech, work, work%lam)
+      call solve_jt(mech, work, work%lam, work%rhs, work%unit_x)
     else
       work%jt(:, :) = transpose(work%jac)
       call factor_dense(work%jt, work%lut, work%ipivt, error, work%trsm)
