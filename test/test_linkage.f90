@@ -7,12 +7,13 @@
 !> caught); the branch kept through a full turn; a dead
 !> position of the class-III group found (exit 3 naming the group).
 module test_linkage
+  use, intrinsic :: iso_fortran_env, only: int64
   use kinetostat_kinds, only: wp
   use kinetostat_text, only: int_str, real_str
   use kinetostat_error, only: error_t, exit_geometry, exit_input
   use kinetostat_deck, only: deck_source_t, load_deck, deck_source_from_text
   use kinetostat_linkage, only: linkage_t, linkage_step_t, linkage_reference_pose, linkage_assemble, linkage_motion, &
-    linkage_work_t, linkage_free_body, linkage_reaction_gap, linkage_statics
+    linkage_work_t, linkage_free_body, linkage_reaction_gap, linkage_statics, linkage_assemble_newton
   use kinetostat_linkage_structure, only: structure_formula
   use kinetostat_linkage_deck, only: linkage_deck_t, read_linkage_deck, linkage_drive_values, linkage_load_value
   use kinetostat_linkage_layout, only: linkage_solve_steps
@@ -37,6 +38,7 @@ contains
     call test_second_opinion(t)
     call test_full_turn(t)
     call test_dead_position(t)
+    call test_closed_forms(t)
   end subroutine run_linkage_tests
 
   !> A bundled deck, read and validated.
@@ -369,5 +371,119 @@ contains
       index(error%message, "group III(2,3,4,5)") > 0 .and. index(error%message, "step ") > 0, &
       "expected exit 3 naming the step and group III(2,3,4,5), got exit "//int_str(error%code)//": "//error%message)
   end subroutine test_dead_position
+
+  !> The closed forms of the dyads and input units against Newton's method (a second,
+  !> independent solve, here converged to 1e-14 of the linkage's size): two continuations
+  !> from the reference pose, one by each, over every step of every bundled &linkage deck
+  !> whose units all have closed forms and of three decks with the other dyad kinds (RPR,
+  !> PRP, RPP), then over 40 random drive values within the run's range: every pose within
+  !> 1e-12 of the linkage's size (so the same branch throughout), and the closed forms in use.
+  subroutine test_closed_forms(t)
+    type(test_counts_t), intent(inout) :: t
+    character(len=*), parameter :: decks(5) = [character(len=40) :: "data/fivebar.nml", "data/linkage_fourbar.nml", &
+      "data/linkage_slider_crank.nml", "data/linkage_engine.nml", "data/linkage_pr3207_flywheel.nml"]
+    type(linkage_deck_t) :: deck
+    type(deck_source_t) :: source
+    type(error_t), allocatable :: error
+    integer :: i
+    do i = 1, size(decks)
+      call bundled(trim(decks(i)), deck, t)
+      call compare(trim(decks(i)), deck)
+    end do
+    ! RPR: crank 1 (A-B), block 2 on it at B sliding in the slot of rocker 3 (pivot C)
+    call from_text("rpr", "link(1)%id = 1, link(1)%m = 1, link(1)%j = 0.01, link(1)%s = 0.05, 0 "// &
+      "link(2)%id = 2, link(2)%m = 0.5, link(2)%j = 0.001, link(2)%s = 0.1, 0 "// &
+      "link(3)%id = 3, link(3)%m = 2, link(3)%j = 0.05, link(3)%s = 0.2, 0.025 "// &
+      "pair(1)%name = 'A', pair(1)%kind = 'R', pair(1)%links = 1, 0, pair(1)%at = 0, 0 "// &
+      "pair(2)%name = 'B', pair(2)%kind = 'R', pair(2)%links = 2, 1, pair(2)%at = 0.1, 0 "// &
+      "pair(3)%name = 'T', pair(3)%kind = 'P', pair(3)%links = 2, 3, pair(3)%at = 0.1, 0, pair(3)%guide = 3, "// &
+      "pair(3)%angle = 194.03624346792648 "// &
+      "pair(4)%name = 'C', pair(4)%kind = 'R', pair(4)%links = 3, 0, pair(4)%at = 0.3, 0.05 "// &
+      "drive(1)%pair = 'A', drive(1)%start = 0, drive(1)%step = 10, drive(1)%omega = 10")
+    ! PRP: block 2 sliding along crank 1, pinned at D to slider 3 on the frame's vertical guide
+    call from_text("prp", "link(1)%id = 1, link(1)%m = 1, link(1)%j = 0.01, link(1)%s = 0.05, 0 "// &
+      "link(2)%id = 2, link(2)%m = 0.5, link(2)%j = 0.001, link(2)%s = 0.1, 0 "// &
+      "link(3)%id = 3, link(3)%m = 2, link(3)%j = 0, link(3)%s = 0.1, 0.02 "// &
+      "pair(1)%name = 'A', pair(1)%kind = 'R', pair(1)%links = 1, 0, pair(1)%at = 0, 0 "// &
+      "pair(2)%name = 'B', pair(2)%kind = 'P', pair(2)%links = 2, 1, pair(2)%at = 0.1, 0, pair(2)%guide = 1, "// &
+      "pair(2)%angle = 0 "// &
+      "pair(3)%name = 'D', pair(3)%kind = 'R', pair(3)%links = 2, 3, pair(3)%at = 0.1, 0 "// &
+      "pair(4)%name = 'E', pair(4)%kind = 'P', pair(4)%links = 3, 0, pair(4)%at = 0.1, 0.05, pair(4)%guide = 0, "// &
+      "pair(4)%angle = 90 "// &
+      "drive(1)%pair = 'A', drive(1)%start = -40, drive(1)%step = 10, drive(1)%omega = 10")
+    ! RPP: the Scotch yoke: block 2 pinned to crank 1 at B, sliding in the vertical slot of
+    ! yoke 3, which slides on the frame's horizontal guide
+    call from_text("rpp", "link(1)%id = 1, link(1)%m = 1, link(1)%j = 0.01, link(1)%s = 0.05, 0 "// &
+      "link(2)%id = 2, link(2)%m = 0.5, link(2)%j = 0.001, link(2)%s = 0.1, 0 "// &
+      "link(3)%id = 3, link(3)%m = 2, link(3)%j = 0.02, link(3)%s = 0.15, 0 "// &
+      "pair(1)%name = 'A', pair(1)%kind = 'R', pair(1)%links = 1, 0, pair(1)%at = 0, 0 "// &
+      "pair(2)%name = 'B', pair(2)%kind = 'R', pair(2)%links = 2, 1, pair(2)%at = 0.1, 0 "// &
+      "pair(3)%name = 'S', pair(3)%kind = 'P', pair(3)%links = 2, 3, pair(3)%at = 0.1, 0, pair(3)%guide = 3, "// &
+      "pair(3)%angle = 90 "// &
+      "pair(4)%name = 'E', pair(4)%kind = 'P', pair(4)%links = 3, 0, pair(4)%at = 0.2, 0, pair(4)%guide = 0, "// &
+      "pair(4)%angle = 0 "// &
+      "drive(1)%pair = 'A', drive(1)%start = 0, drive(1)%step = 10, drive(1)%omega = 10")
+  contains
+    subroutine from_text(name, body)
+      character(*), intent(in) :: name, body
+      call deck_source_from_text(name//".nml", "&linkage title = '"//name//"' frame = 0 n = 37 "//body//" /", source)
+      call read_linkage_deck(source, deck, error)
+      call check_true(t, "linkage-closed-read-"//name, .not. allocated(error), "deck error")
+      if (allocated(error)) then
+        write (*, '(a)') "  "//error%message
+        return
+      end if
+      call compare(name, deck)
+    end subroutine from_text
+    subroutine compare(name, deck)
+      character(*), intent(in) :: name
+      type(linkage_deck_t), intent(in) :: deck
+      type(linkage_work_t) :: wc, wn
+      type(error_t), allocatable :: ec, en
+      real(wp), allocatable :: qc(:), qn(:), dq(:), dv(:), da(:), from(:), lo(:), hi(:)
+      real(wp) :: worst, r
+      integer :: k, j, nd, nsteps
+      integer(int64) :: seed
+      logical :: used
+      nd = size(deck%mech%drives)
+      allocate (qc, source=linkage_reference_pose(deck%mech))
+      allocate (qn, source=qc)
+      allocate (dq(nd), dv(nd), da(nd), from(nd))
+      from(:) = deck%mech%drives%q_ref
+      allocate (lo, source=from)
+      allocate (hi, source=from)
+      worst = 0.0_wp
+      used = .true.
+      nsteps = deck%n
+      seed = 12345
+      do k = 1, nsteps + 40
+        if (k <= nsteps) then
+          call linkage_drive_values(deck, k, dq, dv, da)
+          lo = min(lo, dq)
+          hi = max(hi, dq)
+        else
+          ! a random drive value within the run's range (a linear congruential sequence)
+          do j = 1, nd
+            seed = modulo(seed * 48271_int64, 2147483647_int64)
+            r = real(seed, wp) / 2147483647.0_wp
+            dq(j) = lo(j) + r * (hi(j) - lo(j))
+          end do
+        end if
+        call linkage_assemble(deck%mech, from, dq, qc, wc, ec)
+        used = used .and. wc%closed
+        call linkage_assemble_newton(deck%mech, from, dq, qn, wn, en, 1.0e-14_wp)
+        if (allocated(ec) .or. allocated(en)) then
+          call check_true(t, "linkage-closed-"//name, allocated(ec) .eqv. allocated(en), "step "//int_str(k)// &
+            ": one solve fails, the other does not")
+          return
+        end if
+        worst = max(worst, maxval(abs(qc - qn)) / deck%mech%size)
+        from = dq
+      end do
+      call check_true(t, "linkage-closed-used-"//name, used, "a unit without a closed form")
+      call check_true(t, "linkage-closed-newton-"//name, worst <= 1.0e-12_wp, "largest pose difference / size "// &
+        real_str(worst)//" (limit 1e-12)")
+    end subroutine compare
+  end subroutine test_closed_forms
 
 end module test_linkage

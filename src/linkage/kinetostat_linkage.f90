@@ -19,6 +19,9 @@ module kinetostat_linkage
   use kinetostat_text, only: int_str
   use kinetostat_lapack, only: solve_dense, factor_dense, solve_factored, trsm_table, lu_solve_transposed
   use kinetostat_vec2, only: rotate, perp, cross, magnitude
+  use kinetostat_linkage_types, only: linkage_t, linkage_link_t, linkage_pair_t, linkage_drive_t, linkage_force_t, &
+    linkage_unit_t, pair_r, pair_p
+  use kinetostat_linkage_closed, only: place_units, point_position, turn_of
   use kinetostat_selfcheck, only: link_balance_t, balance_add_force, balance_add_couple, equilibrium_residual, &
     power_mismatch
   implicit none
@@ -26,13 +29,10 @@ module kinetostat_linkage
   public :: linkage_t, linkage_link_t, linkage_pair_t, linkage_drive_t, linkage_force_t, linkage_unit_t
   public :: linkage_step_t, linkage_work_t, pair_r, pair_p
   public :: linkage_rows, pair_row, drive_row, point_position, link_point_state
-  public :: linkage_assemble, linkage_motion, linkage_statics, linkage_reference_pose, linkage_worst_unit
+  public :: linkage_assemble, linkage_assemble_newton, linkage_motion, linkage_statics, linkage_reference_pose
+  public :: linkage_worst_unit
   public :: linkage_velocity_analogues, linkage_free_body, linkage_reaction_gap
 
-  !> Pair kind: turning (revolute) pair.
-  integer, parameter :: pair_r = 1
-  !> Pair kind: sliding (prismatic) pair.
-  integer, parameter :: pair_p = 2
   !> Newton's method: largest number of iterations of one (sub)step.
   integer, parameter :: max_newton = 40
   !> Newton's method: converged when every constraint is below this times the linkage's size.
@@ -41,101 +41,6 @@ module kinetostat_linkage
   real(wp), parameter :: max_substep_angle = 5.0_wp * pi / 180.0_wp
   !> Continuation: largest stroke of a drive in one substep, relative to the linkage's size.
   real(wp), parameter :: max_substep_stroke = 0.05_wp
-
-  !> A moving link: its reference point and mass data (global coordinates at the reference
-  !> position).
-  type :: linkage_link_t
-    !> The deck's link number.
-    integer :: id = 0
-    !> Reference point (its first pair's point at the reference position), m.
-    real(wp) :: c(2) = 0.0_wp
-    !> Angle of the link's axis at the reference position (from its first pair's point to its
-    !> second's), rad.
-    real(wp) :: angle0 = 0.0_wp
-    !> Mass, kg; moment of inertia about the centre of mass, kg*m^2.
-    real(wp) :: m = 0.0_wp, j = 0.0_wp
-    !> Centre of mass at the reference position, m.
-    real(wp) :: s(2) = 0.0_wp
-  end type linkage_link_t
-
-  !> A lower pair between links a and b (0: the frame); F<a><b> is the force on a from b.
-  type :: linkage_pair_t
-    !> Name of the joint ("A", "T1"; at most 8 characters, Latin or Cyrillic letters: up
-    !> to 2 bytes each in UTF-8).
-    character(len=16) :: name = ""
-    !> pair_r or pair_p.
-    integer :: kind = pair_r
-    !> Link indices (0 = frame, 1.. = moving links in deck order).
-    integer :: a = 0, b = 0
-    !> Sliding pair: the link that carries the guide (a or b); the other is the block.
-    integer :: guide = 0
-    !> The joint at the reference position (for P: a point of the guide line where the block
-    !> is at the reference position), m.
-    real(wp) :: at(2) = 0.0_wp
-    !> Sliding pair: unit vector of the guide at the reference position.
-    real(wp) :: u(2) = [1.0_wp, 0.0_wp]
-  end type linkage_pair_t
-
-  !> A drive on a pair: the relative angle of link a to link b of a turning pair, or the
-  !> stroke of the block along the guide of a sliding pair.
-  type :: linkage_drive_t
-    !> The driven pair.
-    integer :: pair = 0
-    !> Value at the reference position: angle, rad (R), or stroke 0 m (P).
-    real(wp) :: q_ref = 0.0_wp
-  end type linkage_drive_t
-
-  !> An external force of constant direction (global, or turning with its link).
-  type :: linkage_force_t
-    !> Loaded link index (1..n).
-    integer :: link = 1
-    !> Point of application at the reference position, m.
-    real(wp) :: at(2) = 0.0_wp
-    !> Unit vector of its direction at the reference position.
-    real(wp) :: dir(2) = [1.0_wp, 0.0_wp]
-    !> The direction turns with the link.
-    logical :: follow = .false.
-  end type linkage_force_t
-
-  !> One unit of the structural analysis: an input unit (links moved by drives) or an Assur
-  !> group, in the order the analysis found them.
-  type :: linkage_unit_t
-    !> Its link indices (1..n).
-    integer, allocatable :: links(:)
-    !> Its constraint rows (of J): the pairs among its links and between them and the links
-    !> found before, with the drives on them.
-    integer, allocatable :: rows(:)
-    !> Class: 1 input unit, 2 dyad, 3 class-III group, 4 class-IV group, 0 not classified.
-    integer :: class = 0
-    !> Order (number of external pairs).
-    integer :: order = 0
-    !> Dyad kind (RRR, RRP, RPR, PRP, RPP), blank otherwise.
-    character(len=3) :: kind = ""
-    !> Text as the structure formula writes it ("II(2,3)").
-    character(len=:), allocatable :: label
-  end type linkage_unit_t
-
-  !> A validated linkage.
-  type :: linkage_t
-    !> Moving links 1..n.
-    type(linkage_link_t), allocatable :: links(:)
-    !> Pairs in deck order.
-    type(linkage_pair_t), allocatable :: pairs(:)
-    !> Drives in deck order.
-    type(linkage_drive_t), allocatable :: drives(:)
-    !> External forces (magnitudes per step come from the deck).
-    type(linkage_force_t), allocatable :: forces(:)
-    !> Links of the external moments.
-    integer, allocatable :: moment_link(:)
-    !> Gravity acceleration vector, m/s^2.
-    real(wp) :: gravity(2) = 0.0_wp
-    !> Size of the linkage (largest distance between two of its pair points), m.
-    real(wp) :: size = 1.0_wp
-    !> Units of the structural analysis in the order found (inputs and groups).
-    type(linkage_unit_t), allocatable :: units(:)
-    !> The deck's frame number.
-    integer :: frame_id = 0
-  end type linkage_t
 
   !> The results of one step.
   type :: linkage_step_t
@@ -200,11 +105,19 @@ module kinetostat_linkage
     !> cos and sin of each link's turn (2 x 0:n, column 0 the frame's) in the poses of the
     !> routine that set them last.
     real(wp), allocatable :: cs(:, :)
+    !> Scratch of solve_j and solve_jt (rows) and of linkage_assemble (poses): no
+    !> allocation per step.
+    real(wp), allocatable :: rhs(:), unit_x(:), q_new(:)
+    !> The poses of cs (valid when `has_cs`).
+    real(wp), allocatable :: q_cs(:)
+    logical :: has_cs = .false.
     !> jac holds J(q_jac); lu (or the units' factors) and v hold its factors and analogues.
     logical :: has_jac = .false., factored = .false.
     !> J is solved unit by unit (the units of the structural analysis partition its rows and
     !> columns: J is block triangular in their order); otherwise as one dense system.
     logical :: blocked = .false.
+    !> Every unit is an input unit of one link or a dyad: the poses by closed forms.
+    logical :: closed = .false.
     !> Each unit's order (3 x its links), columns of J and trsm_table (largest order x units).
     integer, allocatable :: unit_order(:), unit_cols(:, :), unit_trsm(:, :, :)
     !> Each unit's diagonal block of J, its LU factors and row interchanges.
@@ -228,19 +141,22 @@ contains
       deallocate (work%phi, work%jac, work%q_jac, work%lu, work%ipiv, work%v, work%jt, work%lut, work%ipivt, work%dx, &
                   work%dq0, work%zero_q, work%trsm)
       deallocate (work%fa, work%flu, work%fb, work%fipiv, work%load, work%cm, work%local, work%pair_known, &
-                  work%drive_known, work%f2, work%normal2, work%couple2, work%effort2, work%gen, work%lam, work%bal, work%cs)
+                  work%drive_known, work%f2, work%normal2, work%couple2, work%effort2, work%gen, work%lam, work%bal, work%cs, &
+                  work%q_cs, work%rhs, work%unit_x, work%q_new)
     end if
     allocate (work%fa(nr, nr), work%flu(nr, nr), work%fb(nr), work%fipiv(nr), work%load(3, size(mech%links)), &
               work%cm(2, size(mech%links)), work%local(size(mech%links)), work%pair_known(size(mech%pairs)), &
               work%drive_known(size(mech%drives)), work%f2(2, size(mech%pairs)), work%normal2(size(mech%pairs)), &
               work%couple2(size(mech%pairs)), work%effort2(size(mech%drives)), work%gen(nr), work%lam(nr), &
-              work%bal(size(mech%links)), work%cs(2, 0:size(mech%links)))
+              work%bal(size(mech%links)), work%cs(2, 0:size(mech%links)), work%q_cs(3 * size(mech%links)))
     allocate (work%phi(nr), work%jac(nr, nr), work%q_jac(nr), work%lu(nr, nr), work%ipiv(nr), &
               work%v(nr, size(mech%drives)), work%jt(nr, nr), work%lut(nr, nr), work%ipivt(nr), work%dx(nr))
-    allocate (work%dq0(size(mech%drives)), work%zero_q(nr), source=0.0_wp)
+    allocate (work%dq0(size(mech%drives)), work%zero_q(nr), work%rhs(nr), work%unit_x(nr), &
+              work%q_new(3 * size(mech%links)), source=0.0_wp)
     work%trsm = trsm_table(nr)
     work%has_jac = .false.
     work%factored = .false.
+    work%has_cs = .false.
     call units_ready(mech, work)
   end subroutine work_ready
 
@@ -253,6 +169,7 @@ contains
     integer, allocatable :: owner(:)
     integer :: u, nu, mx, nr, i, k
     work%blocked = .false.
+    work%closed = .false.
     if (allocated(work%unit_order)) deallocate (work%unit_order, work%unit_cols, work%unit_trsm, work%unit_block, &
                                                 work%unit_lu, work%unit_ipiv)
     if (.not. allocated(mech%units)) return
@@ -284,6 +201,7 @@ contains
       work%unit_trsm(1:k, 1:k, u) = trsm_table(k)
     end do
     work%blocked = .true.
+    work%closed = all(mech%units%class == 2 .or. (mech%units%class == 1 .and. work%unit_order == 3))
   end subroutine units_ready
 
   !> Factors J (work%jac): each unit's diagonal block, or the whole J densely. An error: a
@@ -314,11 +232,13 @@ contains
 
   !> x = J^-1 x with factor_j's factors (x: constraint rows in, pose coordinates out): the
   !> units in their order, each with the coordinates of the units before it known.
-  pure subroutine solve_j(mech, work, x)
+  pure subroutine solve_j(mech, work, x, rhs, unit_x)
     type(linkage_t), intent(in) :: mech
     type(linkage_work_t), intent(in) :: work
     real(wp), intent(inout) :: x(:)
-    real(wp) :: s, rhs(size(x)), unit_x(size(work%unit_block, 1))
+    !> Scratch (work%rhs, work%unit_x).
+    real(wp), intent(out) :: rhs(:), unit_x(:)
+    real(wp) :: s
     integer :: u, k, i, c, r
     if (.not. work%blocked) then
       call solve_factored(work%lu, work%ipiv, x)
@@ -345,11 +265,13 @@ contains
 
   !> x = J^-T x with factor_j's factors (x: generalised loads in, multipliers of the rows
   !> out): the units from the last, each with the multipliers of the units after it known.
-  pure subroutine solve_jt(mech, work, x)
+  pure subroutine solve_jt(mech, work, x, rhs, unit_x)
     type(linkage_t), intent(in) :: mech
     type(linkage_work_t), intent(in) :: work
     real(wp), intent(inout) :: x(:)
-    real(wp) :: s, rhs(size(x)), unit_x(size(work%unit_block, 1))
+    !> Scratch (work%rhs, work%unit_x).
+    real(wp), intent(out) :: rhs(:), unit_x(:)
+    real(wp) :: s
     integer :: u, k, i, c, r
     rhs(:) = x
     x(:) = 0.0_wp
@@ -389,6 +311,7 @@ contains
     end if
     if (.not. work%has_jac) then
       ! J does not depend on the drive values (they enter the constraints only)
+      call work_turns(work, q)
       call constraints(mech, q, work%dq0, work%phi, work%jac, work%cs)
       work%q_jac(:) = q
       work%has_jac = .true.
@@ -400,7 +323,7 @@ contains
     do d = 1, size(mech%drives)
       work%v(:, d) = 0.0_wp
       work%v(drive_row(mech, d), d) = 1.0_wp
-      call solve_j(mech, work, work%v(:, d))
+      call solve_j(mech, work, work%v(:, d), work%rhs, work%unit_x)
     end do
     work%factored = .true.
   end subroutine work_factored
@@ -439,24 +362,6 @@ contains
       q(3 * i - 2:3 * i) = [mech%links(i)%c(1), mech%links(i)%c(2), 0.0_wp]
     end do
   end function linkage_reference_pose
-
-  !> Position of point `p` (given at the reference position) of link `i` (0: frame) in pose q.
-  pure function point_position(mech, q, i, p) result(x)
-    !> The linkage.
-    type(linkage_t), intent(in) :: mech
-    !> Poses.
-    real(wp), intent(in) :: q(:)
-    !> Link index.
-    integer, intent(in) :: i
-    !> The point at the reference position, m.
-    real(wp), intent(in) :: p(2)
-    real(wp) :: x(2)
-    if (i == 0) then
-      x = p
-    else
-      x = q(3 * i - 2:3 * i - 1) + rotate(p - mech%links(i)%c, q(3 * i))
-    end if
-  end function point_position
 
   !> Position, velocity and acceleration of point `p` (reference position) of link `i`.
   pure subroutine link_point_state(mech, q, qd, qdd, i, p, x, v, a)
@@ -508,6 +413,18 @@ contains
       cs(2, i) = sin(q(3 * i))
     end do
   end subroutine set_turns
+
+  !> work%cs: the turns of poses q (set_turns), unless it holds them.
+  pure subroutine work_turns(work, q)
+    type(linkage_work_t), intent(inout) :: work
+    real(wp), intent(in) :: q(:)
+    if (work%has_cs) then
+      if (all(work%q_cs == q)) return
+    end if
+    call set_turns(q, work%cs)
+    work%q_cs(:) = q
+    work%has_cs = .true.
+  end subroutine work_turns
 
   !> `v` turned by link i's turn (0: the frame) from set_turns: rotate(v, turn) bit for bit.
   pure function turned(cs, i, v) result(w)
@@ -574,14 +491,6 @@ contains
     call state_at(q, qd, qdd, i, turned(cs, i, p - mech%links(i)%c), x, v, a)
   end subroutine state_cs
 
-  !> Angle of link i (0: frame) in pose q, rad.
-  pure real(wp) function turn_of(q, i)
-    real(wp), intent(in) :: q(:)
-    integer, intent(in) :: i
-    turn_of = 0.0_wp
-    if (i > 0) turn_of = q(3 * i)
-  end function turn_of
-
   !> Adds `v` to the columns of link i (0: frame, no columns) in row r of J.
   pure subroutine put_j(jac, r, i, v)
     real(wp), intent(inout) :: jac(:, :)
@@ -598,13 +507,12 @@ contains
     real(wp), intent(in) :: dq(:)
     real(wp), intent(out) :: phi(:)
     real(wp), intent(out) :: jac(:, :)
-    !> Scratch: the turns of q (set_turns).
-    real(wp), intent(out) :: cs(:, 0:)
+    !> The turns of q (set_turns).
+    real(wp), intent(in) :: cs(:, 0:)
     real(wp) :: ra(2), rb(2), delta(2), n(2), u(2)
     integer :: k, r, a, b, blk, gd, d
     phi = 0.0_wp
     jac = 0.0_wp
-    call set_turns(q, cs)
     do k = 1, size(mech%pairs)
       associate (pr => mech%pairs(k))
         r = pair_row(k)
@@ -668,12 +576,11 @@ contains
     real(wp), intent(in) :: zero(:)
     !> h (rows).
     real(wp), intent(out) :: h(:)
-    !> Scratch: the turns of q (set_turns).
-    real(wp), intent(out) :: cs(:, 0:)
+    !> The turns of q (set_turns).
+    real(wp), intent(in) :: cs(:, 0:)
     real(wp) :: ra(2), rb(2), u(2)
     integer :: k, r, d
     h = 0.0_wp
-    call set_turns(q, cs)
     do k = 1, size(mech%pairs)
       associate (pr => mech%pairs(k))
         r = pair_row(k)
@@ -715,11 +622,15 @@ contains
               dot_product(w, a1 - a2)
   end function slide_h
 
-  !> Assembles the linkage for drive values `dq` by Newton's method from the poses `q`
-  !> (updated), walking there in substeps from the drive values `dq_from` of `q` with a
-  !> first-order predictor. `error` gives the reason and the unit whose Jacobian is the worst
-  !> conditioned ("... in group III(2,3,4,5)"; the caller names the step). `work` keeps J at
-  !> the assembled poses (for linkage_motion and linkage_statics).
+  !> Assembles the linkage for drive values `dq` from the poses `q` (updated) at the drive
+  !> values `dq_from`, walking there in substeps. Every unit an input unit of one link or a
+  !> dyad: by the closed forms of place_units, each substep on the branch nearest to the
+  !> substep before (the one Newton's method from there converges to), J factored at the
+  !> result; otherwise, or where a closed form has no position or J is singular, by Newton's
+  !> method (linkage_assemble_newton) with a first-order predictor. `error` gives the reason
+  !> and the unit whose Jacobian is the worst conditioned ("... in group III(2,3,4,5)"; the
+  !> caller names the step). `work` keeps J at the assembled poses (for linkage_motion and
+  !> linkage_statics).
   pure subroutine linkage_assemble(mech, dq_from, dq, q, work, error)
     !> The linkage.
     type(linkage_t), intent(in) :: mech
@@ -730,10 +641,37 @@ contains
     !> Workspace (J and its factors at the last poses).
     type(linkage_work_t), intent(inout) :: work
     type(error_t), allocatable, intent(out) :: error
-    real(wp) :: span, target(size(dq)), from(size(dq)), q_good(size(q))
-    integer :: m, s, it, d
-    logical :: converged
+    integer :: m, s
+    logical :: placed
     call work_ready(mech, work)
+    if (work%closed) then
+      m = substeps(mech, dq_from, dq)
+      work%q_new(:) = q
+      placed = .true.
+      do s = 1, m - 1
+        call place_units(mech, dq_from + (dq - dq_from) * (real(s, wp) / real(m, wp)), work%q_new, placed)
+        if (.not. placed) exit
+      end do
+      if (placed) call place_units(mech, dq, work%q_new, placed)
+      if (placed) then
+        call work_factored(mech, work%q_new, work, error)
+        if (.not. allocated(error)) then
+          q(:) = work%q_new
+          return
+        end if
+        deallocate (error)
+      end if
+    end if
+    call linkage_assemble_newton(mech, dq_from, dq, q, work, error)
+  end subroutine linkage_assemble
+
+  !> The number of substeps from drive values dq_from to dq (a turn of at most
+  !> max_substep_angle, a stroke of at most max_substep_stroke of the linkage's size each).
+  pure integer function substeps(mech, dq_from, dq) result(m)
+    type(linkage_t), intent(in) :: mech
+    real(wp), intent(in) :: dq_from(:), dq(:)
+    real(wp) :: span
+    integer :: d
     span = 0.0_wp
     do d = 1, size(dq)
       if (mech%pairs(mech%drives(d)%pair)%kind == pair_r) then
@@ -743,6 +681,26 @@ contains
       end if
     end do
     m = max(1, ceiling(span))
+  end function substeps
+
+  !> Newton's method (linkage_assemble's where it has no closed form, and the second,
+  !> independent solve the tests compare the closed forms with): the poses for drive values
+  !> `dq` from the poses `q` (updated), walking there in substeps from the drive values
+  !> `dq_from` of `q` with a first-order predictor.
+  pure subroutine linkage_assemble_newton(mech, dq_from, dq, q, work, error, tol)
+    type(linkage_t), intent(in) :: mech
+    real(wp), intent(in) :: dq_from(:), dq(:)
+    real(wp), intent(inout) :: q(:)
+    type(linkage_work_t), intent(inout) :: work
+    type(error_t), allocatable, intent(out) :: error
+    !> Converged when every constraint is below tol times the linkage's size (newton_tol).
+    real(wp), intent(in), optional :: tol
+    real(wp) :: target(size(dq)), from(size(dq)), q_good(size(q)), limit
+    integer :: m, s, it, d
+    logical :: converged
+    limit = newton_tol * mech%size
+    if (present(tol)) limit = tol * mech%size
+    m = substeps(mech, dq_from, dq)
     from(:) = dq_from
     q_good(:) = q
     do s = 1, m
@@ -759,11 +717,12 @@ contains
       end do
       converged = .false.
       do it = 1, max_newton
+        call work_turns(work, q)
         call constraints(mech, q, target, work%phi, work%jac, work%cs)
         work%q_jac(:) = q
         work%has_jac = .true.
         work%factored = .false.
-        converged = maxval(abs(work%phi)) <= newton_tol * mech%size
+        converged = maxval(abs(work%phi)) <= limit
         if (converged) exit
         call factor_j(mech, work, error)
         if (allocated(error)) then
@@ -771,7 +730,7 @@ contains
           return
         end if
         work%dx(:) = -work%phi
-        call solve_j(mech, work, work%dx)
+        call solve_j(mech, work, work%dx, work%rhs, work%unit_x)
         q = q + work%dx
       end do
       if (.not. converged) then
@@ -787,7 +746,7 @@ contains
       character(len=:), allocatable :: text
       text = reason//" in "//unit_name(mech, linkage_worst_unit(mech, q_good))
     end function fail_text
-  end subroutine linkage_assemble
+  end subroutine linkage_assemble_newton
 
   !> The unit ("group III(2,3,4,5)") by name for messages.
   pure function unit_name(mech, u) result(text)
@@ -820,6 +779,7 @@ contains
     do i = 1, size(mech%drives)
       dq(i) = mech%drives(i)%q_ref
     end do
+    call set_turns(q, cs)
     call constraints(mech, q, dq, phi, jac, cs)
     linkage_worst_unit = 0
     if (.not. allocated(mech%units)) return
@@ -888,13 +848,14 @@ contains
     do d = 1, size(mech%drives)
       qd(drive_row(mech, d)) = dv(d)
     end do
-    call solve_j(mech, work, qd)
+    call solve_j(mech, work, qd, work%rhs, work%unit_x)
+    call work_turns(work, q)
     call quadratic_terms(mech, q, qd, work%zero_q, qdd, work%cs)
     qdd = -qdd
     do d = 1, size(mech%drives)
       qdd(drive_row(mech, d)) = qdd(drive_row(mech, d)) + da(d)
     end do
-    call solve_j(mech, work, qdd)
+    call solve_j(mech, work, qdd, work%rhs, work%unit_x)
   end subroutine linkage_motion
 
   !> Reactions of an assembled, moving step: applied forces `fval` (N, along each force's
@@ -917,11 +878,12 @@ contains
     n = size(mech%links)
     call work_factored(mech, step%q, work, error)
     if (allocated(error)) return
+    call work_turns(work, step%q)
     call generalised_loads(mech, step%q, step%qd, step%qdd, fval, mval, work%gen, work%cs)
     work%lam(:) = -work%gen
     if (work%blocked) then
       ! J^T is block triangular too: its units' blocks are J's, transposed
-      call solve_jt(mech, work, work%lam)
+      call solve_jt(mech, work, work%lam, work%rhs, work%unit_x)
     else
       work%jt(:, :) = transpose(work%jac)
       call factor_dense(work%jt, work%lut, work%ipivt, error, work%trsm)
@@ -966,7 +928,7 @@ contains
     step%solver_gap = linkage_reaction_gap(mech, step, work%f2, work%normal2, work%couple2, work%effort2)
 
     ! self-check 1: every link's equilibrium with the physical forces at their points
-    call set_turns(step%q, work%cs)
+    call work_turns(work, step%q)
     work%bal(:) = link_balance_t()
     do i = 1, n
       ref = step%q(3 * i - 2:3 * i - 1)
@@ -1082,7 +1044,7 @@ contains
     couple = 0.0_wp
     effort = 0.0_wp
     call work_ready(mech, work)
-    call set_turns(step%q, work%cs)
+    call work_turns(work, step%q)
     np = size(mech%pairs)
     ! each link's own loads: the force and its moment about the centre of mass
     do i = 1, size(mech%links)
@@ -1291,12 +1253,11 @@ contains
     real(wp), intent(in) :: q(:), qd(:), qdd(:), fval(:), mval(:)
     !> Q (3n).
     real(wp), intent(out) :: gen(:)
-    !> Scratch: the turns of q (set_turns).
-    real(wp), intent(out) :: cs(:, 0:)
+    !> The turns of q (set_turns).
+    real(wp), intent(in) :: cs(:, 0:)
     real(wp) :: s(2), vs(2), as(2), f(2), w(2)
     integer :: i, k
     gen = 0.0_wp
-    call set_turns(q, cs)
     do i = 1, size(mech%links)
       associate (lk => mech%links(i))
         call state_cs(mech, q, qd, qdd, cs, i, lk%s, s, vs, as)
