@@ -143,6 +143,8 @@ module kinetostat_assur
     type(dyad_pose_t), allocatable :: work_poses(:)
     !> See work_states.
     type(link_balance_t), allocatable :: work_known(:)
+    !> See work_states: every pair force's length as the self-check takes it (3*nd+1), N.
+    real(wp), allocatable :: work_f_len(:)
   end type assur_step_t
 
 contains
@@ -263,26 +265,29 @@ contains
     type(link_state_t), allocatable :: states(:)
     type(dyad_pose_t), allocatable :: poses(:)
     type(link_balance_t), allocatable :: known(:)
+    real(wp), allocatable :: f_len(:)
     integer :: nd, i
 
     nd = size(mech%dyads)
     call move_alloc(step%work_states, states)
     call move_alloc(step%work_poses, poses)
     call move_alloc(step%work_known, known)
+    call move_alloc(step%work_f_len, f_len)
     call reset_step(step, 3 * nd + 1)
     if (allocated(states)) then
-      if (size(states) /= 2 * nd + 2 .or. size(poses) /= nd) deallocate (states, poses, known)
+      if (size(states) /= 2 * nd + 2 .or. size(poses) /= nd) deallocate (states, poses, known, f_len)
     end if
-    if (.not. allocated(states)) allocate (states(0:2 * nd + 1), poses(nd), known(0:2 * nd + 1))
+    if (.not. allocated(states)) allocate (states(0:2 * nd + 1), poses(nd), known(0:2 * nd + 1), f_len(3 * nd + 1))
     ! the frames and poses are set by the kinematics; the loads are sums, from zero
     do i = 0, 2 * nd + 1
       known(i) = link_balance_t()
     end do
-    call step_in(mech, phi1, omega1, eps1, f_mag, m_mag, step, states, poses, known, error, extra, &
+    call step_in(mech, phi1, omega1, eps1, f_mag, m_mag, step, states, poses, known, f_len, error, extra, &
                  extra_power, extra_scale, balances)
     call move_alloc(states, step%work_states)
     call move_alloc(poses, step%work_poses)
     call move_alloc(known, step%work_known)
+    call move_alloc(f_len, step%work_f_len)
   end subroutine assur_step
 
   !> `step` as a fresh assur_step_t (every scalar at its default) with its pair arrays for
@@ -325,8 +330,10 @@ contains
   end subroutine reset_step
 
   !> assur_step with its workspace: the frames `states` (links 0..2*nd+1), the poses `poses`
-  !> (nd) and the loads `known` (links 0..2*nd+1, at their defaults); `step` reset.
-  pure subroutine step_in(mech, phi1, omega1, eps1, f_mag, m_mag, step, states, poses, known, error, extra, &
+  !> (nd), the loads `known` (links 0..2*nd+1, at their defaults) and the pair forces'
+  !> lengths `f_len` (3*nd+1: every pair force's length as the self-check takes it, N; each
+  !> is added to two links); `step` reset.
+  pure subroutine step_in(mech, phi1, omega1, eps1, f_mag, m_mag, step, states, poses, known, f_len, error, extra, &
                           extra_power, extra_scale, balances)
     type(assur_mech_t), intent(in) :: mech
     real(wp), intent(in) :: phi1, omega1, eps1
@@ -336,6 +343,7 @@ contains
     type(link_state_t), intent(inout) :: states(0:)
     type(dyad_pose_t), intent(inout) :: poses(:)
     type(link_balance_t), intent(inout) :: known(0:)
+    real(wp), intent(inout) :: f_len(:)
     type(error_t), allocatable, intent(out) :: error
     type(link_balance_t), intent(in), optional :: extra(0:)
     real(wp), intent(in), optional :: extra_power
@@ -344,9 +352,6 @@ contains
     type(point_state_t) :: ps
     real(wp) :: w2, a_s(2), eps, phi_f(2), gw(2), m_phi, dir(2)
     real(wp) :: power, power_scale, term
-    !> Every pair force's length as the self-check takes it (fast_magnitude), N: each is
-    !> added to two links.
-    real(wp) :: f_len(3 * size(mech%dyads) + 1)
     integer :: i, d, nd, k
 
     nd = size(mech%dyads)
