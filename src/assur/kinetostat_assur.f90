@@ -31,8 +31,6 @@ module kinetostat_assur
   !> An actuator whose crank moment per newton |stroke'| is below this times the driving
   !> dyad's size (m) is in a dead position: it cannot move the input link.
   real(wp), parameter :: drive_dead_rel = 1.0e-9_wp
-  !> assur_step keeps the workspace of mechanisms of up to this many dyads in fixed arrays.
-  integer, parameter :: small_dyads = 4
 
   !> Mass data of a moving link.
   type :: assur_link_t
@@ -137,14 +135,16 @@ module kinetostat_assur
     real(wp) :: stroke_v = 0.0_wp
     !> Stroke acceleration, m/s^2.
     real(wp) :: stroke_a = 0.0_wp
-    !> Workspace of a mechanism of more than small_dyads dyads, kept between the steps a
-    !> caller solves into this result (no heap per step): the links' frames (0..2*nd+1),
-    !> the dyads' poses (nd) and the links' loads (0..2*nd+1).
+    !> Workspace kept between the steps a caller solves into this result (no heap per
+    !> step): the links' frames (0..2*nd+1), the dyads' poses (nd) and the links' loads
+    !> (0..2*nd+1).
     type(link_state_t), allocatable :: work_states(:)
     !> See work_states.
     type(dyad_pose_t), allocatable :: work_poses(:)
     !> See work_states.
     type(link_balance_t), allocatable :: work_known(:)
+    !> See work_states: every pair force's length as the self-check takes it (3*nd+1), N.
+    real(wp), allocatable :: work_f_len(:)
   end type assur_step_t
 
 contains
@@ -194,8 +194,9 @@ contains
     type(assur_mech_t), intent(in) :: mech
     !> Crank angle, rad.
     real(wp), intent(in) :: phi1
-    !> Frames of links 0..2*nd+1.
-    type(link_state_t), intent(out) :: states(0:)
+    !> Frames of links 0..2*nd+1 (each one set here, up to the failing dyad's on an error;
+    !> inout only to spare every step a second initialisation of them).
+    type(link_state_t), intent(inout) :: states(0:)
     !> Pose of each dyad (each one set here, up to the failing one on an error; inout only to
     !> spare every step a second initialisation of them).
     type(dyad_pose_t), intent(inout) :: poses(:)
@@ -259,79 +260,80 @@ contains
     real(wp), intent(in), optional :: extra_scale
     !> All loads and reactions of links 0..2*nd+1 as summed for the equilibrium residual.
     type(link_balance_t), intent(out), optional :: balances(0:)
-    ! the links' frames, the dyads' poses and the links' loads of a mechanism of up to
-    ! small_dyads dyads live in fixed local arrays (no heap per step)
-    type(link_state_t) :: states_small(0:2 * small_dyads + 1)
-    type(dyad_pose_t) :: poses_small(small_dyads)
-    type(link_balance_t) :: known_small(0:2 * small_dyads + 1)
-    type(link_state_t), allocatable :: states_big(:)
-    type(dyad_pose_t), allocatable :: poses_big(:)
-    type(link_balance_t), allocatable :: known_big(:)
-    integer :: nd
+    ! the links' frames, the dyads' poses and the links' loads: the workspace kept in `step`
+    ! from the step solved into it before (allocated once for a mechanism, no heap per step)
+    type(link_state_t), allocatable :: states(:)
+    type(dyad_pose_t), allocatable :: poses(:)
+    type(link_balance_t), allocatable :: known(:)
+    real(wp), allocatable :: f_len(:)
+    integer :: nd, i
 
     nd = size(mech%dyads)
-    if (nd > small_dyads) then
-      call move_alloc(step%work_states, states_big)
-      call move_alloc(step%work_poses, poses_big)
-      call move_alloc(step%work_known, known_big)
-    end if
+    call move_alloc(step%work_states, states)
+    call move_alloc(step%work_poses, poses)
+    call move_alloc(step%work_known, known)
+    call move_alloc(step%work_f_len, f_len)
     call reset_step(step, 3 * nd + 1)
-    if (nd <= small_dyads) then
-      call step_in(mech, phi1, omega1, eps1, f_mag, m_mag, step, states_small(0:2 * nd + 1), poses_small(1:nd), &
-                   known_small(0:2 * nd + 1), error, extra, extra_power, extra_scale, balances)
-    else
-      ! the workspace of the previous step solved into `step` (allocated once for a mechanism),
-      ! set to the defaults of fresh arrays
-      if (allocated(states_big)) then
-        if (size(states_big) /= 2 * nd + 2 .or. size(poses_big) /= nd) deallocate (states_big, poses_big, known_big)
-      end if
-      if (.not. allocated(states_big)) allocate (states_big(0:2 * nd + 1), poses_big(nd), known_big(0:2 * nd + 1))
-      states_big = link_state_t()
-      poses_big = dyad_pose_t()
-      known_big = link_balance_t()
-      call step_in(mech, phi1, omega1, eps1, f_mag, m_mag, step, states_big, poses_big, known_big, error, extra, &
-                   extra_power, extra_scale, balances)
-      call move_alloc(states_big, step%work_states)
-      call move_alloc(poses_big, step%work_poses)
-      call move_alloc(known_big, step%work_known)
+    if (allocated(states)) then
+      if (size(states) /= 2 * nd + 2 .or. size(poses) /= nd) deallocate (states, poses, known, f_len)
     end if
+    if (.not. allocated(states)) allocate (states(0:2 * nd + 1), poses(nd), known(0:2 * nd + 1), f_len(3 * nd + 1))
+    ! the frames and poses are set by the kinematics; the loads are sums, from zero
+    do i = 0, 2 * nd + 1
+      known(i) = link_balance_t()
+    end do
+    call step_in(mech, phi1, omega1, eps1, f_mag, m_mag, step, states, poses, known, f_len, error, extra, &
+                 extra_power, extra_scale, balances)
+    call move_alloc(states, step%work_states)
+    call move_alloc(poses, step%work_poses)
+    call move_alloc(known, step%work_known)
+    call move_alloc(f_len, step%work_f_len)
   end subroutine assur_step
 
   !> `step` as a fresh assur_step_t (every scalar at its default) with its pair arrays for
-  !> `np` pairs at zero, reusing arrays of that size it already has.
+  !> `np` pairs at zero, reusing arrays of that size it already has. (The scalars one by one:
+  !> an assignment of a fresh assur_step_t would copy and free its arrays every step.)
   pure subroutine reset_step(step, np)
     !> The step.
     type(assur_step_t), intent(inout) :: step
     !> Number of result pairs.
     integer, intent(in) :: np
-    real(wp), allocatable :: f(:, :), n(:), m(:)
-    call move_alloc(step%f, f)
-    call move_alloc(step%n, n)
-    call move_alloc(step%m, m)
-    step = assur_step_t()
-    if (allocated(f)) then
-      if (size(f, 2) /= np) deallocate (f)
+    step%phi1 = 0.0_wp
+    step%omega1 = 0.0_wp
+    step%eps1 = 0.0_wp
+    step%m1 = 0.0_wp
+    step%m1_power = 0.0_wp
+    step%residual = 0.0_wp
+    step%mismatch = 0.0_wp
+    step%power_scale = 0.0_wp
+    step%load_scale = 0.0_wp
+    step%f_drive = 0.0_wp
+    step%f_drive_power = 0.0_wp
+    step%stroke = 0.0_wp
+    step%stroke_v = 0.0_wp
+    step%stroke_a = 0.0_wp
+    if (allocated(step%f)) then
+      if (size(step%f, 2) /= np) deallocate (step%f)
     end if
-    if (allocated(n)) then
-      if (size(n) /= np) deallocate (n)
+    if (allocated(step%n)) then
+      if (size(step%n) /= np) deallocate (step%n)
     end if
-    if (allocated(m)) then
-      if (size(m) /= np) deallocate (m)
+    if (allocated(step%m)) then
+      if (size(step%m) /= np) deallocate (step%m)
     end if
-    if (.not. allocated(f)) allocate (f(2, np))
-    if (.not. allocated(n)) allocate (n(np))
-    if (.not. allocated(m)) allocate (m(np))
-    f = 0.0_wp
-    n = 0.0_wp
-    m = 0.0_wp
-    call move_alloc(f, step%f)
-    call move_alloc(n, step%n)
-    call move_alloc(m, step%m)
+    if (.not. allocated(step%f)) allocate (step%f(2, np))
+    if (.not. allocated(step%n)) allocate (step%n(np))
+    if (.not. allocated(step%m)) allocate (step%m(np))
+    step%f = 0.0_wp
+    step%n = 0.0_wp
+    step%m = 0.0_wp
   end subroutine reset_step
 
   !> assur_step with its workspace: the frames `states` (links 0..2*nd+1), the poses `poses`
-  !> (nd) and the loads `known` (links 0..2*nd+1, at their defaults); `step` reset.
-  pure subroutine step_in(mech, phi1, omega1, eps1, f_mag, m_mag, step, states, poses, known, error, extra, &
+  !> (nd), the loads `known` (links 0..2*nd+1, at their defaults) and the pair forces'
+  !> lengths `f_len` (3*nd+1: every pair force's length as the self-check takes it, N; each
+  !> is added to two links); `step` reset.
+  pure subroutine step_in(mech, phi1, omega1, eps1, f_mag, m_mag, step, states, poses, known, f_len, error, extra, &
                           extra_power, extra_scale, balances)
     type(assur_mech_t), intent(in) :: mech
     real(wp), intent(in) :: phi1, omega1, eps1
@@ -341,6 +343,7 @@ contains
     type(link_state_t), intent(inout) :: states(0:)
     type(dyad_pose_t), intent(inout) :: poses(:)
     type(link_balance_t), intent(inout) :: known(0:)
+    real(wp), intent(inout) :: f_len(:)
     type(error_t), allocatable, intent(out) :: error
     type(link_balance_t), intent(in), optional :: extra(0:)
     real(wp), intent(in), optional :: extra_power
@@ -414,7 +417,7 @@ contains
 
     if (mech%drive_dyad == 0) then
       ! dyads from the last to the first; each passes its outer reactions to the links it hangs on
-      call back_substitute(mech, states, poses, known, step%f, step%n, step%m, error)
+      call back_substitute(mech, states, poses, known, step%f, step%n, step%m, error, f_len)
       if (allocated(error)) return
       ! crank: pin reaction from the frame and balancing moment about the pivot
       step%m1 = -known(1)%sum_m
@@ -423,21 +426,29 @@ contains
     else
       call drive_by_actuator(mech, states, poses, known, power, power_scale, step, error)
       if (allocated(error)) return
+      do k = 1, size(f_len)
+        f_len(k) = fast_magnitude(step%f(:, k))
+      end do
     end if
     step%power_scale = power_scale
 
     ! equilibrium residual of every moving link with all its loads and reactions
-    call balance_add_force(known(1), states(1)%o, states(1)%o, step%f(:, crank_pin_index(nd)))
+    call balance_add_force(known(1), states(1)%o, states(1)%o, step%f(:, crank_pin_index(nd)), &
+                           f_len(crank_pin_index(nd)))
     call balance_add_couple(known(1), step%m1)
     do d = 1, nd
       associate (pa => link_a(d), pb => link_b(d))
-        call balance_add_force(known(pa), states(pa)%o, poses(d)%p(:, 1), step%f(:, pair_index(d, 1)))
+        call balance_add_force(known(pa), states(pa)%o, poses(d)%p(:, 1), step%f(:, pair_index(d, 1)), &
+                               f_len(pair_index(d, 1)))
         call balance_add_couple(known(pa), step%m(pair_index(d, 1)))
-        call balance_add_force(known(pa), states(pa)%o, poses(d)%p(:, 2), step%f(:, pair_index(d, 2)))
+        call balance_add_force(known(pa), states(pa)%o, poses(d)%p(:, 2), step%f(:, pair_index(d, 2)), &
+                               f_len(pair_index(d, 2)))
         call balance_add_couple(known(pa), step%m(pair_index(d, 2)))
-        call balance_add_force(known(pb), states(pb)%o, poses(d)%p(:, 2), -step%f(:, pair_index(d, 2)))
+        call balance_add_force(known(pb), states(pb)%o, poses(d)%p(:, 2), -step%f(:, pair_index(d, 2)), &
+                               f_len(pair_index(d, 2)))
         call balance_add_couple(known(pb), -step%m(pair_index(d, 2)))
-        call balance_add_force(known(pb), states(pb)%o, poses(d)%p(:, 3), step%f(:, pair_index(d, 3)))
+        call balance_add_force(known(pb), states(pb)%o, poses(d)%p(:, 3), step%f(:, pair_index(d, 3)), &
+                               f_len(pair_index(d, 3)))
         call balance_add_couple(known(pb), step%m(pair_index(d, 3)))
       end associate
     end do
@@ -452,13 +463,32 @@ contains
     type(assur_mech_t), intent(in) :: mech
     !> Pose of each dyad.
     type(dyad_pose_t), intent(in) :: poses(:)
+    !> The largest squared distance, m^2, and the point at that distance.
+    real(wp) :: sq, sq_max, far(2)
     integer :: d, j
-    length = 0.0_wp
+    ! the square root of the largest square (the root is monotonic and correctly rounded:
+    ! the largest of the roots, one root instead of one a joint)
+    sq_max = -1.0_wp
+    far = 0.0_wp
     do d = 1, size(poses)
       do j = 1, size(poses(d)%p, 2)
-        length = max(length, fast_magnitude(poses(d)%p(:, j) - mech%pivot))
+        sq = (poses(d)%p(1, j) - mech%pivot(1))**2 + (poses(d)%p(2, j) - mech%pivot(2))**2
+        if (sq > sq_max) then
+          sq_max = sq
+          far = poses(d)%p(:, j) - mech%pivot
+        end if
       end do
     end do
+    length = fast_magnitude(far)
+    ! squares outside fast_magnitude's range (where it takes hypot): the lengths one by one
+    if (.not. (sq_max >= 1.0e-290_wp .and. sq_max <= 1.0e290_wp)) then
+      length = 0.0_wp
+      do d = 1, size(poses)
+        do j = 1, size(poses(d)%p, 2)
+          length = max(length, fast_magnitude(poses(d)%p(:, j) - mech%pivot))
+        end do
+      end do
+    end if
   end function mechanism_size
 
   !> The pair whose stroke is the position of link `i` (internal index): the prismatic pair
@@ -624,8 +654,8 @@ contains
   !> Reactions of every dyad from the last to the first, each passing its outer reactions to
   !> the links it hangs on (`known` holds every link's loads about its origin and receives
   !> them); then the crank pin's reaction `f(:, crank pin)`. The crank's remaining moment is
-  !> `known(1)%sum_m`.
-  pure subroutine back_substitute(mech, states, poses, known, f, n, m, error)
+  !> `known(1)%sum_m`. `f_len` receives every pair force's fast_magnitude.
+  pure subroutine back_substitute(mech, states, poses, known, f, n, m, error, f_len)
     !> Mechanism.
     type(assur_mech_t), intent(in) :: mech
     !> Frames of links 0..2*nd+1.
@@ -642,7 +672,10 @@ contains
     real(wp), intent(inout) :: m(:)
     !> Geometry error naming the dyad.
     type(error_t), allocatable, intent(out) :: error
+    !> Length of each pair force (dyad pairs, then the crank pin) as fast_magnitude gives it, N.
+    real(wp), intent(out), optional :: f_len(:)
     type(dyad_reactions_t) :: r
+    real(wp) :: lengths(3)
     type(error_t), allocatable :: solve_error
     real(wp) :: f_known(2, 2), m_known(2), o(2)
     integer :: d, nd, q, i, jp
@@ -664,15 +697,18 @@ contains
         f(:, pair_index(d, jp)) = r%f(:, jp)
         n(pair_index(d, jp)) = r%n(jp)
         m(pair_index(d, jp)) = r%m(jp)
+        lengths(jp) = fast_magnitude(r%f(:, jp))
       end do
-      call pass_reactions(mech, states, poses, d, r%f, r%m, known)
+      if (present(f_len)) f_len(pair_index(d, 1):pair_index(d, 3)) = lengths
+      call pass_reactions(mech, states, poses, d, r%f, r%m, known, lengths)
     end do
     f(:, crank_pin_index(nd)) = -known(1)%sum_f
+    if (present(f_len)) f_len(crank_pin_index(nd)) = fast_magnitude(f(:, crank_pin_index(nd)))
   end subroutine back_substitute
 
   !> The outer reactions of dyad `d` acting back on the links it hangs on (action = -reaction,
   !> couples too); the frame (index 0) takes nothing.
-  pure subroutine pass_reactions(mech, states, poses, d, f, m, known)
+  pure subroutine pass_reactions(mech, states, poses, d, f, m, known, f_len)
     !> Mechanism.
     type(assur_mech_t), intent(in) :: mech
     !> Frames of links 0..2*nd+1.
@@ -687,13 +723,19 @@ contains
     real(wp), intent(in) :: m(3)
     !> Loads of every link.
     type(link_balance_t), intent(inout) :: known(0:)
+    !> fast_magnitude of the forces of pairs 1..3 when known, N.
+    real(wp), intent(in), optional :: f_len(3)
     integer :: q, i, jp
     integer, parameter :: pair_of_link(2) = [1, 3]
     do q = 1, 2
       jp = pair_of_link(q)
       i = mech%dyads(d)%on(q)
       if (i == 0) cycle
-      call balance_add_force(known(i), states(i)%o, poses(d)%p(:, jp), -f(:, jp))
+      if (present(f_len)) then
+        call balance_add_force(known(i), states(i)%o, poses(d)%p(:, jp), -f(:, jp), f_len(jp))
+      else
+        call balance_add_force(known(i), states(i)%o, poses(d)%p(:, jp), -f(:, jp))
+      end if
       call balance_add_couple(known(i), -m(jp))
     end do
   end subroutine pass_reactions

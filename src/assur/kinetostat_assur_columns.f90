@@ -280,8 +280,13 @@ contains
       end if
       ! rotate(f, -deck%pair_frame(ip))
       f = [turn(1, ip) * f(1) - turn(2, ip) * f(2), turn(2, ip) * f(1) + turn(1, ip) * f(2)]
-      where (abs(f) <= floor) f = 0.0_wp
-      v(pos + 1) = magnitude(f)
+      if (abs(f(1)) <= floor .or. abs(f(2)) <= floor) then
+        where (abs(f) <= floor) f = 0.0_wp
+        v(pos + 1) = magnitude(f)
+      else if (turn(1, ip) /= 1.0_wp .or. turn(2, ip) /= 0.0_wp) then
+        v(pos + 1) = magnitude(f)
+      end if
+      ! (else f is +-s%f exactly, turned by 0: its length is the one already in place)
       if (deck%angles_signed) then
         v(pos + 2) = angle_180_deg(f)
       else

@@ -216,9 +216,17 @@ contains
     real(wp), intent(in) :: at3(2)
     !> Guide direction on it (prismatic pair 3 only), rad.
     real(wp), intent(in) :: ang3
-    !> The pose.
-    type(dyad_pose_t), intent(out) :: pose
+    !> The pose (inout: a pose of the same dyad reused from step to step is not set to its
+    !> defaults whole; the parts a kind leaves are, and every kind sets the rest).
+    type(dyad_pose_t), intent(inout) :: pose
     type(point_state_t) :: a, c
+    pose%status = pose_ok
+    if (allocated(pose%detail)) deallocate (pose%detail)
+    pose%t = 0.0_wp
+    pose%stroke = 0.0_wp
+    pose%stroke_v = 0.0_wp
+    pose%stroke_a = 0.0_wp
+    pose%extend = 0.0_wp
     a = point_on(q1, at1)
     c = point_on(q3, at3)
     select case (g%kind)

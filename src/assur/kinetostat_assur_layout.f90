@@ -71,6 +71,9 @@ module kinetostat_assur_layout
     real(wp), allocatable :: f(:)
     !> Every external moment, N*m.
     real(wp), allocatable :: m(:)
+    !> The flywheel's and rotor's inertia moment on the crank as a further load of links
+    !> 0..2*nd+1 (with a dynamics stage).
+    type(link_balance_t), allocatable :: extra(:)
   end type step_loads_t
 
   !> A one-DOF linkage of class-II Assur groups on a crank (generic engine).
@@ -447,7 +450,6 @@ contains
     real(wp), intent(in), optional :: eps1
     !> Inertia moment of the flywheel and rotor on the crank, N*m (with eps1).
     real(wp), intent(in), optional :: m_input
-    type(link_balance_t), allocatable :: extra(:)
     integer :: i
     if (.not. allocated(loads%f)) allocate (loads%f(size(deck%force_load)), loads%m(size(deck%moment_load)))
     do i = 1, size(loads%f)
@@ -457,10 +459,13 @@ contains
       loads%m(i) = assur_load_value(deck, deck%moment_load(i), k)
     end do
     if (present(eps1) .and. present(m_input)) then
-      allocate (extra(0:2 * size(deck%mech%dyads) + 1))
-      call balance_add_couple(extra(1), m_input)
+      if (.not. allocated(loads%extra)) allocate (loads%extra(0:2 * size(deck%mech%dyads) + 1))
+      do i = 0, ubound(loads%extra, 1)
+        loads%extra(i) = link_balance_t()
+      end do
+      call balance_add_couple(loads%extra(1), m_input)
       call assur_step(deck%mech, assur_phi1_deg(deck, k) * deg_to_rad, w, eps1, loads%f, loads%m, step, step_error, &
-                      extra, m_input, abs(m_input))
+                      loads%extra, m_input, abs(m_input))
     else if (deck%friction_on) then
       call assur_friction_step(deck%mech, deck%friction, assur_phi1_deg(deck, k) * deg_to_rad, w, &
         assur_eps1(deck, k), assur_motion_sign(w), loads%f, loads%m, step, fstep, step_error)

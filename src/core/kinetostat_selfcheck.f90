@@ -41,7 +41,7 @@ module kinetostat_selfcheck
 contains
 
   !> Adds force `f` (N) applied at `at` (m) to `balance`, its moment taken about `origin` (m).
-  pure subroutine balance_add_force(balance, origin, at, f)
+  pure subroutine balance_add_force(balance, origin, at, f, f_length)
     !> The link's loads so far.
     type(link_balance_t), intent(inout) :: balance
     !> Reference point of the link's moments, m.
@@ -50,10 +50,17 @@ contains
     real(wp), intent(in) :: at(2)
     !> Force, N.
     real(wp), intent(in) :: f(2)
+    !> fast_magnitude(f) when the caller has it already (a reaction added to both links it
+    !> acts between), N.
+    real(wp), intent(in), optional :: f_length
     real(wp) :: m, arm(2), f_mag, arm_mag
     arm = at - origin
     m = cross(arm, f)
-    f_mag = fast_magnitude(f)
+    if (present(f_length)) then
+      f_mag = f_length
+    else
+      f_mag = fast_magnitude(f)
+    end if
     ! a force at the origin has no lever arm: hypot(0, 0) = 0 without the call
     arm_mag = 0.0_wp
     if (arm(1) /= 0.0_wp .or. arm(2) /= 0.0_wp) arm_mag = fast_magnitude(arm)
