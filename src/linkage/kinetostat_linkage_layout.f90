@@ -574,7 +574,12 @@ contains
           " steps", int(last - first + 1, int64) * storage_size(motions) / 8)
         return
       end if
-      allocate (frictions(first:last))
+      allocate (frictions(first:last), stat=stat)
+      if (stat /= 0) then
+        call out_of_memory(error, "the friction figures of a block of "//int_str(last - first + 1)// &
+          " steps", int(last - first + 1, int64) * storage_size(frictions) / 8)
+        return
+      end if
       if (self%deck%dyn%mode >= dynamics_steady) then
         call cycle_motions(self%deck, self%source, self%cycle, first, motions)
         call linkage_solve_steps(self%deck, table%deck, first, last, q, dq, steps, error, motions, &
@@ -587,7 +592,12 @@ contains
       table%carry = [q, dq]
       call table%allocate_rows(last - first + 1, error)
       if (allocated(error)) return
-      allocate (residual(first:last), mismatch(first:last))
+      allocate (residual(first:last), mismatch(first:last), stat=stat)
+      if (stat /= 0) then
+        call out_of_memory(error, "the self-check figures of a block of "//int_str(last - first + 1)// &
+          " steps", int(last - first + 1, int64) * 2 * storage_size(residual) / 8)
+        return
+      end if
       gap = 0.0_wp
       do k = first, last
         call fill_row(self%deck, k, steps(k), table%rows(:, k - first + 1))
