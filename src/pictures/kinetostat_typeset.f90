@@ -32,7 +32,7 @@
 module kinetostat_typeset
   use kinetostat_kinds, only: wp
   use kinetostat_labels, only: lang_ru
-  use kinetostat_text, only: replace_all
+  use kinetostat_text, only: replace_all, is_letter, is_digit
   ! the number of UTF-8 characters of a text (continuation bytes not counted)
   use kinetostat_label_place, only: char_count => text_chars
   implicit none
@@ -445,16 +445,6 @@ contains
     character, intent(in) :: c
     is_delimiter = iachar(c) < 128 .and. .not. (is_letter(c) .or. is_digit(c) .or. c == "_" .or. c == "^")
   end function is_delimiter
-
-  pure logical function is_letter(c)
-    character, intent(in) :: c
-    is_letter = (c >= "A" .and. c <= "Z") .or. (c >= "a" .and. c <= "z")
-  end function is_letter
-
-  pure logical function is_digit(c)
-    character, intent(in) :: c
-    is_digit = c >= "0" .and. c <= "9"
-  end function is_digit
 
   !> Whether byte `c` leads a two-byte Greek letter (U+0391..U+03C9: 0xCE, 0xCF).
   pure logical function is_greek_lead(c)
