@@ -13,7 +13,7 @@ module kinetostat_cli
   use kinetostat_summary, only: override_fields
   use kinetostat_escape, only: csv_field
   use kinetostat_posix, only: stderr_is_terminal, cpu_count, guard_signals, output_is_terminal
-  use kinetostat_text, only: int_str, printable
+  use kinetostat_text, only: int_str, printable, joined
   use kinetostat_run, only: format_summary, format_npy
   use kinetostat_step_table, only: step_table_t
   use kinetostat_text_buffer, only: text_buffer_t
@@ -683,12 +683,7 @@ contains
     function variant_name(r) result(text)
       type(variant_result_t), intent(in) :: r
       character(len=:), allocatable :: text
-      integer :: k
-      text = ""
-      do k = 1, size(r%overrides)
-        if (k > 1) text = text//", "
-        text = text//r%overrides(k)%name//"="//r%overrides(k)%value
-      end do
+      text = joined(override_texts(r), ", ")
     end function variant_name
 
     !> The variant's overrides as "NAME=VALUE" texts (the summary's form).

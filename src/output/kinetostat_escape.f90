@@ -97,7 +97,7 @@ contains
     character(*), intent(in) :: s
     character(len=:), allocatable :: t
     character(len=:), allocatable :: shown
-    integer :: i
+    integer :: i, at
     shown = printable(s)
     if (scan(shown, "&<>""'"//char(239)) == 0) then
       t = shown
@@ -110,12 +110,25 @@ contains
       if (i == 0) exit
       shown = shown(:i - 1)//"\xEF\xBF\x"//hex_byte(iachar(shown(i + 2:i + 2)))//shown(i + 3:)
     end do
-    ! "&" first: the entities' own "&" stay
-    t = replace_all(shown, "&", "&amp;")
-    t = replace_all(t, "<", "&lt;")
-    t = replace_all(t, ">", "&gt;")
-    t = replace_all(t, '"', "&quot;")
-    t = replace_all(t, "'", "&apos;")
+    allocate (character(len=6 * len(shown)) :: t)
+    at = 0
+    do i = 1, len(shown)
+      select case (shown(i:i))
+      case ("&")
+        call put_piece(t, at, "&amp;")
+      case ("<")
+        call put_piece(t, at, "&lt;")
+      case (">")
+        call put_piece(t, at, "&gt;")
+      case ('"')
+        call put_piece(t, at, "&quot;")
+      case ("'")
+        call put_piece(t, at, "&apos;")
+      case default
+        call put_piece(t, at, shown(i:i))
+      end select
+    end do
+    t = t(1:at)
   end function xml_escape
 
   !> A CSV field (RFC 4180) that stays on its row's line: shown as messages show it (control

@@ -195,12 +195,14 @@ contains
     !> Any text.
     character(*), intent(in) :: text
     character(len=:), allocatable :: out
-    out = replace_all(text, "*m^2", "·m²")
-    out = replace_all(out, "*м^2", "·м²")
-    out = replace_all(out, "N*m", "N·m")
-    out = replace_all(out, "Н*м", "Н·м")
-    out = replace_all(out, "s^2", "s²")
-    out = replace_all(out, "с^2", "с²")
+    !> What is replaced (in this order), and by what.
+    character(len=*), parameter :: plain(*) = [character(len=6) :: "*m^2", "*м^2", "N*m", "Н*м", "s^2", "с^2"]
+    character(len=*), parameter :: typeset(*) = [character(len=6) :: "·m²", "·м²", "N·m", "Н·м", "s²", "с²"]
+    integer :: k
+    out = text
+    do k = 1, size(plain)
+      out = replace_all(out, trim(plain(k)), trim(typeset(k)))
+    end do
   end function unit_text
 
   !> The runs of token `t` when it is a symbol (ok); ok false otherwise.
