@@ -209,13 +209,8 @@ contains
   pure function bare(word) result(name)
     character(*), intent(in) :: word
     character(len=:), allocatable :: name
-    integer :: cut
-    cut = scan(word, "!=")
-    if (cut == 0) then
-      name = word
-    else
-      name = word(:cut - 1)
-    end if
+    ! (a word without marks ends at the "=" added)
+    name = word(:scan(word//"=", "!=") - 1)
   end function bare
 
   !> One option word of a command as the synopsis shows it ("[--format table|csv]",
