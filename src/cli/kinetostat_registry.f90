@@ -7,7 +7,6 @@ module kinetostat_registry
   use kinetostat_deck, only: deck_source_t, deck_source_from_text, read_group_name
   use kinetostat_step_table, only: step_table_t, column_t
   use kinetostat_text_buffer, only: text_buffer_t
-  use kinetostat_text, only: joined
   use kinetostat_pr3207_layout, only: new_pr3207
   use kinetostat_pr3050_layout, only: new_pr3050
   use kinetostat_sixbar_layout, only: new_sixbar
@@ -62,9 +61,13 @@ contains
   function known_kinds() result(text)
     character(len=:), allocatable :: text
     type(registry_entry_t), allocatable :: entries(:)
+    integer :: i
     allocate (entries(0)) ! defined before the assignment (gcc's -Wuninitialized on the descriptor)
     entries = registry_entries()
-    text = joined(entries%name, ", ")
+    text = trim(entries(1)%name)
+    do i = 2, size(entries)
+      text = text//", "//trim(entries(i)%name)
+    end do
   end function known_kinds
 
   !> A new mechanism of kind `name`; unallocated when the kind is unknown.
