@@ -14,7 +14,7 @@ module test_svg
   use kinetostat_sheet, only: sheet_t
   use kinetostat_sheet_svg, only: write_sheet_svg
   use kinetostat_labels, only: lang_ru
-  use kinetostat_typeset, only: text_run_t, typeset, runs_text, plain_text, run_base, run_sub, run_sup
+  use kinetostat_typeset, only: text_run_t, typeset, plain_text, run_base, run_sub, run_sup
   use kinetostat_scales, only: standard_drawing_scale, round_scale, drawing_scale_t
   use kinetostat_sheet, only: iso_paper, paper_t, entity_text, entity_line
   use kinetostat_sheet_dxf, only: write_sheet_dxf
@@ -79,7 +79,6 @@ contains
     call check_text(t, "typeset leaves words and paths", "deck: data/pr3207_flywheel.nml step 3 of 13", &
       shown(typeset("deck: data/pr3207_flywheel.nml step 3 of 13", lang_en)))
     call check_text(t, "typeset F_shake ru", "Φ|_гл", shown(typeset("F_shake", lang_ru)))
-    call check_text(t, "runs_text", "aCBτ", runs_text(typeset("a_CB^τ", lang_en)))
     call check_text(t, "plain_text (DXF)", "a_CB^τ F21", plain_text(typeset("a_CB^τ F21", lang_en)))
     allocate (runs(0)) ! defined before the assignment (gcc's -Wmaybe-uninitialized on the descriptor)
     runs = typeset("S2", lang_en)

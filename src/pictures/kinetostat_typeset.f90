@@ -37,7 +37,7 @@ module kinetostat_typeset
   use kinetostat_label_place, only: char_count => text_chars
   implicit none
   private
-  public :: text_run_t, run_base, run_sub, run_sup, typeset, plain_runs, runs_text, plain_text, runs_extent, &
+  public :: text_run_t, run_base, run_sub, run_sup, typeset, plain_runs, plain_text, runs_extent, &
     char_count, sub_size, sub_shift, sup_shift, unit_text
 
   !> Shift of a run: on the baseline.
@@ -123,18 +123,6 @@ contains
     runs(1)%text = text
     runs(1)%shift = run_base
   end function plain_runs
-
-  !> The runs' characters one after the other (what a reader of the SVG's text sees).
-  pure function runs_text(runs) result(text)
-    !> The runs.
-    type(text_run_t), intent(in) :: runs(:)
-    character(len=:), allocatable :: text
-    integer :: i
-    text = ""
-    do i = 1, size(runs)
-      text = text//runs(i)%text
-    end do
-  end function runs_text
 
   !> The runs as one line for a writer without sub- and superscripts (DXF): a subscript
   !> after "_" unless it starts with a digit (F21, a_CB), a superscript after "^" (a_CB^τ).
