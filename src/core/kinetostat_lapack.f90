@@ -306,15 +306,10 @@ contains
     integer, intent(in) :: ipiv(:)
     !> Right-hand side in, solution out.
     real(wp), intent(inout) :: x(:)
-    real(wp) :: temp
     integer :: n, i, k
     n = size(lu, 1)
     do k = 1, n
-      if (ipiv(k) /= k) then
-        temp = x(k)
-        x(k) = x(ipiv(k))
-        x(ipiv(k)) = temp
-      end if
+      call interchange(x, k, ipiv(k))
     end do
     do k = 1, n
       if (x(k) /= 0.0_wp) then
@@ -339,7 +334,7 @@ contains
     real(wp), intent(in) :: lu(:, :)
     integer, intent(in) :: ipiv(:)
     real(wp), intent(inout) :: x(:)
-    real(wp) :: s, temp
+    real(wp) :: s
     integer :: n, i, k
     n = size(lu, 1)
     do k = 1, n
@@ -357,13 +352,20 @@ contains
       x(k) = s
     end do
     do k = n, 1, -1
-      if (ipiv(k) /= k) then
-        temp = x(k)
-        x(k) = x(ipiv(k))
-        x(ipiv(k)) = temp
-      end if
+      call interchange(x, k, ipiv(k))
     end do
   end subroutine lu_solve_transposed
+
+  !> Elements k and j of x swapped (nothing when k = j): one row interchange of dlaswp.
+  pure subroutine interchange(x, k, j)
+    real(wp), intent(inout) :: x(:)
+    integer, intent(in) :: k, j
+    real(wp) :: temp
+    if (j == k) return
+    temp = x(k)
+    x(k) = x(j)
+    x(j) = temp
+  end subroutine interchange
 
   !> One system solved by LAPACK's dgesv itself (`by_dgesv`, the reference of the tests) or
   !> as solve_dense computes it (`by_port`; the tests compare the two bit for bit): factors

@@ -386,10 +386,12 @@ contains
     character(*), intent(in) :: part
     character(len=:), allocatable :: out
     integer :: i
-    out = part
-    do i = 1, size(sub_en)
-      if (part == trim(sub_en(i))) out = trim(sub_ru(i))
-    end do
+    i = findloc(sub_en, part, dim=1)
+    if (i > 0) then
+      out = trim(sub_ru(i))
+    else
+      out = part
+    end if
   end function course_subscript
 
   !> Whether `rest` names a link or point as an index: a number ("3", "21"), or a capital
