@@ -503,6 +503,7 @@ contains
     character(*), intent(in) :: colour, dash, name
     real(wp), allocatable :: sx(:), sy(:)
     integer :: k
+    allocate (sx(size(v)), sy(size(v)))
     sx = q%sx(phi(:size(v)))
     sy = q%sy(v)
     call sheet%polyline(sx, sy, stroke=colour, width=0.45_wp, dash=dash)
