@@ -9,7 +9,7 @@ module test_lapack
   use, intrinsic :: iso_fortran_env, only: int64
   use kinetostat_kinds, only: wp
   use kinetostat_error, only: error_t
-  use kinetostat_lapack, only: solve_dense, singular_by_estimate, solve_by_dgesv, solve_by_port, inverse_norm_bound, &
+  use kinetostat_lapack, only: solve_dense, singular_by_estimate, solve_by, by_dgesv, by_port, inverse_norm_bound, &
     factor_dense, solve_factored, trsm_table
   use test_harness, only: test_counts_t, check_true, long_checks
   implicit none
@@ -61,7 +61,7 @@ contains
       do k = 1, n
         b(k) = 2.0_wp * uniform(state) - 1.0_wp
       end do
-      call solve_by_dgesv(a, b, lu_ref, ipiv_ref, x_ref, info_ref)
+      call solve_by(by_dgesv, a, b, lu_ref, ipiv_ref, x_ref, info_ref)
       call factor_dense(a, lu_own, ipiv_own, err_own, table)
       x_own = b
       if (.not. allocated(err_own)) call solve_factored(lu_own, ipiv_own, x_own)
@@ -99,8 +99,8 @@ contains
         b(k) = 2.0_wp * uniform(state) - 1.0_wp
       end do
       if (mod(i, 3) == 0) b(1) = -0.0_wp
-      call solve_by_dgesv(a, b, lu_ref, ipiv_ref, x_ref, info_ref)
-      call solve_by_port(a, b, lu_own, ipiv_own, x_own, info_own)
+      call solve_by(by_dgesv, a, b, lu_ref, ipiv_ref, x_ref, info_ref)
+      call solve_by(by_port, a, b, lu_own, ipiv_own, x_own, info_own)
       if (info_ref > 0) zero_pivots = zero_pivots + 1
       if (info_ref /= info_own .or. any(ipiv_ref /= ipiv_own) .or. &
           any(transfer(lu_ref, 0_int64, n * n) /= transfer(lu_own, 0_int64, n * n)) .or. &
@@ -166,7 +166,7 @@ contains
     b = 1.0_wp
     do i = 1, system_count
       call random_system(state, mod(i, 8), a)
-      call solve_by_port(a, b, lu, ipiv, x, info)
+      call solve_by(by_port, a, b, lu, ipiv, x, info)
       if (info > 0) cycle
       call inverse_norm_bound(lu, bound, finite)
       if (.not. finite) cycle

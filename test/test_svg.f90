@@ -8,13 +8,13 @@ module test_svg
   use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_moment
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_labels, only: lang_en
-  use kinetostat_svg, only: xml_escape, svg_line, svg_arrow
+  use kinetostat_svg, only: xml_escape, svg_line
   use kinetostat_run_sheet, only: write_run_sheet, pair_force_t, find_pair_forces, select_pair_forces, nice_step, &
     cycle_mean
   use kinetostat_sheet, only: sheet_t
   use kinetostat_sheet_svg, only: write_sheet_svg
   use kinetostat_labels, only: lang_ru
-  use kinetostat_typeset, only: text_run_t, typeset, runs_text, plain_text, run_base, run_sub, run_sup
+  use kinetostat_typeset, only: text_run_t, typeset, plain_text, run_base, run_sub, run_sup
   use kinetostat_scales, only: standard_drawing_scale, round_scale, drawing_scale_t
   use kinetostat_sheet, only: iso_paper, paper_t, entity_text, entity_line
   use kinetostat_sheet_dxf, only: write_sheet_dxf
@@ -79,7 +79,6 @@ contains
     call check_text(t, "typeset leaves words and paths", "deck: data/pr3207_flywheel.nml step 3 of 13", &
       shown(typeset("deck: data/pr3207_flywheel.nml step 3 of 13", lang_en)))
     call check_text(t, "typeset F_shake ru", "Φ|_гл", shown(typeset("F_shake", lang_ru)))
-    call check_text(t, "runs_text", "aCBτ", runs_text(typeset("a_CB^τ", lang_en)))
     call check_text(t, "plain_text (DXF)", "a_CB^τ F21", plain_text(typeset("a_CB^τ F21", lang_en)))
     allocate (runs(0)) ! defined before the assignment (gcc's -Wmaybe-uninitialized on the descriptor)
     runs = typeset("S2", lang_en)
@@ -166,16 +165,9 @@ contains
 
   subroutine test_primitives(t)
     type(test_counts_t), intent(inout) :: t
-    character(len=:), allocatable :: a
     call check_text(t, "xml_escape", "a &amp; &lt;b&gt; &quot;c&quot; &apos;d&apos;", xml_escape("a & <b> ""c"" 'd'"))
     call check_text(t, "svg_line", '<line x1="1.00" y1="2.00" x2="3.50" y2="-4.00" class="axis"/>', &
       svg_line(1.0_wp, 2.0_wp, 3.5_wp, -4.0_wp, 'class="axis"'))
-    ! an arrow: shaft to the base of the head, head ending at the tip
-    a = svg_arrow(0.0_wp, 0.0_wp, 10.0_wp, 0.0_wp, "#000000", 0.4_wp, 2.0_wp)
-    call check_true(t, "svg_arrow shaft ends at the head", index(a, 'x2="8.00" y2="0.00"') > 0, a)
-    call check_true(t, "svg_arrow head at the tip", index(a, 'points="10.00,0.00 8.00,0.70 8.00,-0.70"') > 0, a)
-    call check_text(t, "svg_arrow of zero length", "", svg_arrow(1.0_wp, 1.0_wp, 1.0_wp, 1.0_wp, "#000000", &
-      0.4_wp, 2.0_wp))
   end subroutine test_primitives
 
   subroutine test_ticks_and_mean(t)

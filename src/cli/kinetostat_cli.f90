@@ -13,7 +13,7 @@ module kinetostat_cli
   use kinetostat_summary, only: override_fields
   use kinetostat_escape, only: csv_field
   use kinetostat_posix, only: stderr_is_terminal, cpu_count, guard_signals, output_is_terminal
-  use kinetostat_text, only: int_str, printable
+  use kinetostat_text, only: int_str, printable, joined
   use kinetostat_run, only: format_summary, format_npy
   use kinetostat_step_table, only: step_table_t
   use kinetostat_text_buffer, only: text_buffer_t
@@ -23,7 +23,7 @@ module kinetostat_cli
   use kinetostat_labels, only: lang_from_name, lang_en, unit_symbol
   use kinetostat_run, only: run_options_t, run_mechanism, format_from_name, format_names, format_svg, format_json, &
     format_plans, format_dxf
-  use kinetostat_registry, only: create_mechanism, known_kinds, known_columns
+  use kinetostat_registry, only: create_mechanism, deck_mechanism, known_kinds, known_columns
   use kinetostat_step_table, only: column_t
   use kinetostat_diff, only: diff_options_t, diff_outputs
   use kinetostat_linkage_layout, only: linkage_structure_text
@@ -309,17 +309,11 @@ contains
     allocate (repeats(0))
     call load_deck(path, source, error)
     if (allocated(error)) return
-    call read_group_name(source, group, error)
+    call deck_mechanism(source, group, mech, error)
     if (allocated(error)) return
     ! variables the deck as written assigns twice (--set replaces a value on purpose); found
     ! before the run, which may release the deck's text
     repeats = deck_repeats(source)
-    call create_mechanism(group, mech)
-    if (.not. allocated(mech)) then
-      call fatal_error(error, exit_input, source%path//": &"//group//": unknown mechanism (known: "// &
-        known_kinds()//")")
-      return
-    end if
     if (.not. allocated(options%overrides)) then
       call run_mechanism(mech, group, source, options, table, out, error, spool, show_progress)
       if (.not. allocated(error)) call add_warnings(repeats, table)
@@ -689,12 +683,7 @@ contains
     function variant_name(r) result(text)
       type(variant_result_t), intent(in) :: r
       character(len=:), allocatable :: text
-      integer :: k
-      text = ""
-      do k = 1, size(r%overrides)
-        if (k > 1) text = text//", "
-        text = text//r%overrides(k)%name//"="//r%overrides(k)%value
-      end do
+      text = joined(override_texts(r), ", ")
     end function variant_name
 
     !> The variant's overrides as "NAME=VALUE" texts (the summary's form).

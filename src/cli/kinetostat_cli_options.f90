@@ -7,6 +7,7 @@ module kinetostat_cli_options
   use kinetostat_run, only: format_names
   use kinetostat_labels, only: lang_names
   use kinetostat_assur_balance, only: balance_method_names
+  use kinetostat_text, only: joined
   implicit none
   private
   public :: option_t, command_t, cli_options, cli_commands, find_option, find_command, value_options, &
@@ -58,9 +59,9 @@ contains
       option_t("--pairs", "", "LIST"), &
       option_t("--at", "", "K"), &
       option_t("--plans"), &
-      option_t("--lang", "", "", name_choices(lang_names)), &
+      option_t("--lang", "", "", joined(lang_names, "|")), &
       option_t("--kinematics"), &
-      option_t("--frame", "", "", name_choices(frame_names)), &
+      option_t("--frame", "", "", joined(frame_names, "|")), &
       option_t("--shaking"), &
       option_t("--student", "", "NAME"), &
       option_t("--group", "", "G"), &
@@ -73,7 +74,7 @@ contains
       option_t("--part", "", "K/N"), &
       option_t("--jobs", "", "N"), &
       option_t("--keep-going"), &
-      option_t("--method", "", "", name_choices(balance_method_names)), &
+      option_t("--method", "", "", joined(balance_method_names, "|")), &
       option_t("--fraction", "", "F"), &
       option_t("--to", "", "", "linkage"), &
       option_t("--rtol", "", "R"), &
@@ -120,19 +121,6 @@ contains
       text = text(:i - 1)//"|"//text(i + 2:)
     end do
   end function choice_text
-
-  !> Names as choices "a|b|c".
-  pure function name_choices(names) result(text)
-    !> One name an element (blank-padded).
-    character(*), intent(in) :: names(:)
-    character(len=:), allocatable :: text
-    integer :: i
-    text = ""
-    do i = 1, size(names)
-      if (i > 1) text = text//"|"
-      text = text//trim(names(i))
-    end do
-  end function name_choices
 
   !> The index in cli_options() of an option by its long or short name; 0 if none.
   pure integer function find_option(name) result(k)
@@ -221,13 +209,8 @@ contains
   pure function bare(word) result(name)
     character(*), intent(in) :: word
     character(len=:), allocatable :: name
-    integer :: cut
-    cut = scan(word, "!=")
-    if (cut == 0) then
-      name = word
-    else
-      name = word(:cut - 1)
-    end if
+    ! (a word without marks ends at the "=" added)
+    name = word(:scan(word//"=", "!=") - 1)
   end function bare
 
   !> One option word of a command as the synopsis shows it ("[--format table|csv]",

@@ -3,8 +3,8 @@
 !> folder under src/ + one line in `registry_entries`.
 module kinetostat_registry
   use kinetostat_mechanism, only: mechanism_t
-  use kinetostat_error, only: error_t
-  use kinetostat_deck, only: deck_source_t, deck_source_from_text
+  use kinetostat_error, only: error_t, fatal_error, exit_input
+  use kinetostat_deck, only: deck_source_t, deck_source_from_text, read_group_name
   use kinetostat_step_table, only: step_table_t, column_t
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_pr3207_layout, only: new_pr3207
@@ -19,7 +19,7 @@ module kinetostat_registry
   use kinetostat_cam_profile_layout, only: new_cam_profile
   implicit none
   private
-  public :: create_mechanism, known_kinds, known_columns
+  public :: create_mechanism, deck_mechanism, known_kinds, known_columns
 
   abstract interface
     !> Allocate a new mechanism of one kind.
@@ -87,6 +87,23 @@ contains
       end if
     end do
   end subroutine create_mechanism
+
+  !> The deck's first namelist group and a new mechanism of that kind; an input error (exit 2)
+  !> naming the deck and the group when no kind has that name.
+  subroutine deck_mechanism(source, group, mech, error)
+    !> The deck.
+    type(deck_source_t), intent(in) :: source
+    !> Its first group's name.
+    character(len=:), allocatable, intent(out) :: group
+    !> The mechanism (unallocated on error).
+    class(mechanism_t), allocatable, intent(out) :: mech
+    type(error_t), allocatable, intent(out) :: error
+    call read_group_name(source, group, error)
+    if (allocated(error)) return
+    call create_mechanism(group, mech)
+    if (.not. allocated(mech)) call fatal_error(error, exit_input, source%path//": &"//group// &
+      ": unknown mechanism (known: "//known_kinds()//")")
+  end subroutine deck_mechanism
 
   !> The columns (name, unit, kind) of every kind's output, as its template deck gives them:
   !> what `kinetostat diff` knows about the columns of a CSV file. A kind whose template does

@@ -19,7 +19,7 @@ module kinetostat_sweep
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_run, only: run_options_t, run_mechanism, format_summary
   use kinetostat_summary, only: summary_header, summary_row, summary_values, override_has_column
-  use kinetostat_registry, only: create_mechanism, known_kinds
+  use kinetostat_registry, only: create_mechanism, deck_mechanism
   use kinetostat_npy_writer, only: npy_header, put_npy_values
   use kinetostat_posix, only: fork_process, wait_process, exit_now, temp_anonymous, write_fd, read_fd_at, close_fd
   !$ use omp_lib, only: omp_set_num_threads
@@ -222,14 +222,8 @@ contains
     logical :: shown
     with_shaking = .false.
     if (present(shaking)) with_shaking = shaking
-    call read_group_name(source, group, error)
+    call deck_mechanism(source, group, probe, error)
     if (allocated(error)) return
-    call create_mechanism(group, probe)
-    if (.not. allocated(probe)) then
-      call fatal_error(error, exit_input, source%path//": &"//group//": unknown mechanism (known: "// &
-        known_kinds()//")")
-      return
-    end if
     n = variant_count(varies)
     if (n < 0) then
       call fatal_error(error, exit_input, "sweep: more than "//int_str(max_variants)//" variants")

@@ -7,7 +7,7 @@
 module kinetostat_convert_model
   use kinetostat_kinds, only: wp
   use kinetostat_text_buffer, only: text_buffer_t
-  use kinetostat_text, only: int_str, lower
+  use kinetostat_text, only: int_str, lower, string_t, joined
   use kinetostat_escape, only: namelist_string
   use kinetostat_dynamics, only: dynamics_none, dynamics_reduced, dynamics_steady, dynamics_given
   use kinetostat_dynamics_deck, only: dynamics_deck_t, dynamics_mode_name
@@ -142,13 +142,15 @@ contains
   pure function number_list(x) result(s)
     real(wp), intent(in) :: x(:)
     character(len=:), allocatable :: s
-    integer :: i
-    s = ""
-    do i = 1, size(x)
-      if (i > 1) s = s//", "
-      s = s//deck_number(x(i))
-    end do
+    s = joined(number_part(x), ", ")
   end function number_list
+
+  !> deck_number(x) as one part of a list.
+  elemental function number_part(x) result(part)
+    real(wp), intent(in) :: x
+    type(string_t) :: part
+    part%s = deck_number(x)
+  end function number_part
 
   !> The variable a deck line assigns first, lower case with its index ("link(3)" of
   !> "  link(3)%m = 2"; "delta"); "" for a line that assigns none.

@@ -23,7 +23,7 @@ module kinetostat_lapack
   implicit none
   private
   public :: solve_dense, factor_dense, solve_factored, trsm_table, lu_solve_transposed
-  public :: rcond_threshold, singular_by_estimate, solve_by_dgesv, solve_by_port, inverse_norm_bound
+  public :: rcond_threshold, singular_by_estimate, solve_by, by_dgesv, by_port, inverse_norm_bound
 
   !> Margin of the cheap test: dgecon is skipped only when the bound puts rcond at least this
   !> many times above the threshold.
@@ -35,6 +35,11 @@ module kinetostat_lapack
   !> Orders up to this are factored in fixed local arrays (the generic engine's 6 x 6 and
   !> 3 x 3, the cam's 3 x 3); larger ones allocate their workspace.
   integer, parameter :: small_order = 8
+
+  !> solve_by: LAPACK's dgesv.
+  integer, parameter :: by_dgesv = 1
+  !> solve_by: the port (lu_factor, lu_solve: what solve_dense computes).
+  integer, parameter :: by_port = 2
 
   ! LAPACK's Fortran 77 interfaces take assumed-size arrays.
   ! allow(assumed-size)
@@ -301,15 +306,10 @@ contains
     integer, intent(in) :: ipiv(:)
     !> Right-hand side in, solution out.
     real(wp), intent(inout) :: x(:)
-    real(wp) :: temp
     integer :: n, i, k
     n = size(lu, 1)
     do k = 1, n
-      if (ipiv(k) /= k) then
-        temp = x(k)
-        x(k) = x(ipiv(k))
-        x(ipiv(k)) = temp
-      end if
+      call interchange(x, k, ipiv(k))
     end do
     do k = 1, n
       if (x(k) /= 0.0_wp) then
@@ -334,7 +334,7 @@ contains
     real(wp), intent(in) :: lu(:, :)
     integer, intent(in) :: ipiv(:)
     real(wp), intent(inout) :: x(:)
-    real(wp) :: s, temp
+    real(wp) :: s
     integer :: n, i, k
     n = size(lu, 1)
     do k = 1, n
@@ -352,58 +352,54 @@ contains
       x(k) = s
     end do
     do k = n, 1, -1
-      if (ipiv(k) /= k) then
-        temp = x(k)
-        x(k) = x(ipiv(k))
-        x(ipiv(k)) = temp
-      end if
+      call interchange(x, k, ipiv(k))
     end do
   end subroutine lu_solve_transposed
 
-  !> LAPACK's dgesv itself (the reference of the tests): factors `lu`, pivots `ipiv`, solution
-  !> `x` (set only when `info` = 0) and `info`.
-  pure subroutine solve_by_dgesv(a, b, lu, ipiv, x, info)
-    !> Coefficient matrix (n x n).
-    real(wp), intent(in) :: a(:, :)
-    !> Right-hand side (n).
-    real(wp), intent(in) :: b(:)
-    !> dgetrf's factors.
-    real(wp), intent(out) :: lu(:, :)
-    !> dgetrf's row interchanges.
-    integer, intent(out) :: ipiv(:)
-    !> Solution.
-    real(wp), intent(out) :: x(:)
-    !> dgesv's info.
-    integer, intent(out) :: info
-    real(wp) :: rhs(size(a, 1), 1)
-    integer :: n
-    n = size(a, 1)
-    lu = a
-    rhs(:, 1) = b
-    call dgesv(n, 1, lu, n, ipiv, rhs, n, info)
-    x = rhs(:, 1)
-  end subroutine solve_by_dgesv
+  !> Elements k and j of x swapped (nothing when k = j): one row interchange of dlaswp.
+  pure subroutine interchange(x, k, j)
+    real(wp), intent(inout) :: x(:)
+    integer, intent(in) :: k, j
+    real(wp) :: temp
+    if (j == k) return
+    temp = x(k)
+    x(k) = x(j)
+    x(j) = temp
+  end subroutine interchange
 
-  !> What solve_dense computes, in solve_by_dgesv's form (the tests compare the two bit for
-  !> bit): factors `lu`, pivots `ipiv`, solution `x` (set only when `info` = 0), `info`.
-  pure subroutine solve_by_port(a, b, lu, ipiv, x, info)
+  !> One system solved by LAPACK's dgesv itself (`by_dgesv`, the reference of the tests) or
+  !> as solve_dense computes it (`by_port`; the tests compare the two bit for bit): factors
+  !> `lu`, pivots `ipiv`, solution `x` (set only when `info` = 0) and `info` (dgesv's: 0, or
+  !> the first zero pivot).
+  pure subroutine solve_by(solver, a, b, lu, ipiv, x, info)
+    !> by_dgesv or by_port.
+    integer, intent(in) :: solver
     !> Coefficient matrix (n x n).
     real(wp), intent(in) :: a(:, :)
     !> Right-hand side (n).
     real(wp), intent(in) :: b(:)
-    !> lu_factor's factors.
+    !> The factors (dgetrf's or lu_factor's).
     real(wp), intent(out) :: lu(:, :)
-    !> lu_factor's row interchanges.
+    !> The row interchanges.
     integer, intent(out) :: ipiv(:)
     !> Solution.
     real(wp), intent(out) :: x(:)
     !> 0, or the first zero pivot.
     integer, intent(out) :: info
+    real(wp) :: rhs(size(a, 1), 1)
+    integer :: n
     lu = a
-    call lu_factor(lu, ipiv, info)
-    x = b
-    if (info == 0) call lu_solve(lu, ipiv, x)
-  end subroutine solve_by_port
+    if (solver == by_dgesv) then
+      n = size(a, 1)
+      rhs(:, 1) = b
+      call dgesv(n, 1, lu, n, ipiv, rhs, n, info)
+      x = rhs(:, 1)
+    else
+      call lu_factor(lu, ipiv, info)
+      x = b
+      if (info == 0) call lu_solve(lu, ipiv, x)
+    end if
+  end subroutine solve_by
 
   !> dgecon's reciprocal condition estimate (1-norm) from the LU factors (`lu` may be a
   !> section of a larger array: dgecon gets a contiguous copy).

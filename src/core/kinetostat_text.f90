@@ -5,7 +5,20 @@ module kinetostat_text
   implicit none
   private
   public :: real_str, int_str, int64_str, number_str, lower, upper, printable, utf8_length, char_count, counted, &
-    clipped, starts_with, is_name, without_blanks, replace_all
+    clipped, starts_with, is_name, without_blanks, replace_all, is_letter, is_digit, put_piece, joined
+  public :: string_t, trimmed
+
+  !> One text of a list whose texts differ in length.
+  type :: string_t
+    !> The text.
+    character(len=:), allocatable :: s
+  end type string_t
+
+  !> Texts joined by a separator ("a, b, c"): of a list of string_t, or of blank-padded names
+  !> (each without its trailing blanks).
+  interface joined
+    module procedure joined_strings, joined_names
+  end interface joined
 
   !> Format of a real in a message: shortest general form with 10 significant digits.
   character(*), parameter :: real_msg_fmt = '(g0.10)'
@@ -202,11 +215,8 @@ contains
   pure function without_blanks(text) result(t)
     character(*), intent(in) :: text
     character(len=:), allocatable :: t
-    integer :: i
-    t = ""
-    do i = 1, len(text)
-      if (text(i:i) /= " " .and. text(i:i) /= achar(9)) t = t//text(i:i)
-    end do
+    t = replace_all(text, " ", "")
+    t = replace_all(t, achar(9), "")
   end function without_blanks
 
   !> Characters of a text: its UTF-8 characters, each byte that is not part of one counted
@@ -293,5 +303,57 @@ contains
       out = text(:i - 1)//new//replace_all(text(i + len(old):), old, new)
     end if
   end function replace_all
+
+  !> Whether `c` is an ASCII letter (A-Z, a-z).
+  pure logical function is_letter(c)
+    character, intent(in) :: c
+    is_letter = (c >= "A" .and. c <= "Z") .or. (c >= "a" .and. c <= "z")
+  end function is_letter
+
+  !> Whether `c` is an ASCII digit.
+  pure logical function is_digit(c)
+    character, intent(in) :: c
+    is_digit = c >= "0" .and. c <= "9"
+  end function is_digit
+
+  !> Append `piece` to `text` after its first `at` characters (`text` allocated long enough).
+  pure subroutine put_piece(text, at, piece)
+    !> The text being built.
+    character(len=:), allocatable, intent(inout) :: text
+    !> Characters of it used so far; moved past the piece.
+    integer, intent(inout) :: at
+    !> What is added.
+    character(*), intent(in) :: piece
+    text(at + 1:at + len(piece)) = piece
+    at = at + len(piece)
+  end subroutine put_piece
+
+  !> The texts of `parts` one after the other, `separator` between two.
+  pure function joined_strings(parts, separator) result(text)
+    type(string_t), intent(in) :: parts(:)
+    character(*), intent(in) :: separator
+    character(len=:), allocatable :: text
+    integer :: i
+    text = ""
+    do i = 1, size(parts)
+      if (i > 1) text = text//separator
+      text = text//parts(i)%s
+    end do
+  end function joined_strings
+
+  !> The names without their trailing blanks one after the other, `separator` between two.
+  pure function joined_names(names, separator) result(text)
+    character(*), intent(in) :: names(:)
+    character(*), intent(in) :: separator
+    character(len=:), allocatable :: text
+    text = joined_strings(trimmed(names), separator)
+  end function joined_names
+
+  !> A blank-padded name as a string_t, without its trailing blanks.
+  elemental function trimmed(name) result(part)
+    character(*), intent(in) :: name
+    type(string_t) :: part
+    part%s = trim(name)
+  end function trimmed
 
 end module kinetostat_text

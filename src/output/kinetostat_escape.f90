@@ -7,7 +7,7 @@
 !> \t, \xNN) and so is a byte that is not part of valid UTF-8 (\xNN); JSON writes these as
 !> its own escapes (\n, \u00NN). docs/cli.md, "Strings in outputs".
 module kinetostat_escape
-  use kinetostat_text, only: printable, utf8_length
+  use kinetostat_text, only: printable, utf8_length, replace_all, put_piece
   implicit none
   private
   public :: json_string, xml_escape, csv_field, dxf_text, table_text, python_string, namelist_string
@@ -45,16 +45,7 @@ contains
     !> A text read from a deck.
     character(*), intent(in) :: s
     character(len=:), allocatable :: text
-    integer :: i
-    text = "'"
-    do i = 1, len(s)
-      if (s(i:i) == "'") then
-        text = text//"''"
-      else
-        text = text//s(i:i)
-      end if
-    end do
-    text = text//"'"
+    text = "'"//replace_all(s, "'", "''")//"'"
   end function namelist_string
 
   !> A string literal between `quote`s as JSON and Python write one: the quote and `\` escaped,
@@ -78,23 +69,23 @@ contains
       c = iachar(s(i:i))
       n = utf8_length(s, i)
       if (s(i:i) == quote .or. s(i:i) == '\') then
-        call put(text, at, '\'//s(i:i))
+        call put_piece(text, at, '\'//s(i:i))
       else if (c == 10) then
-        call put(text, at, "\n")
+        call put_piece(text, at, "\n")
       else if (c == 13) then
-        call put(text, at, "\r")
+        call put_piece(text, at, "\r")
       else if (c == 9) then
-        call put(text, at, "\t")
+        call put_piece(text, at, "\t")
       else if (c < 32 .or. c == 127 .or. n == 0) then
-        call put(text, at, byte_escape//hex_byte(c))
+        call put_piece(text, at, byte_escape//hex_byte(c))
       else
-        call put(text, at, s(i:i + n - 1))
+        call put_piece(text, at, s(i:i + n - 1))
         i = i + n
         cycle
       end if
       i = i + 1
     end do
-    call put(text, at, quote)
+    call put_piece(text, at, quote)
     text = text(1:at)
   end function quoted_literal
 
@@ -124,17 +115,17 @@ contains
     do i = 1, len(shown)
       select case (shown(i:i))
       case ("&")
-        call put(t, at, "&amp;")
+        call put_piece(t, at, "&amp;")
       case ("<")
-        call put(t, at, "&lt;")
+        call put_piece(t, at, "&lt;")
       case (">")
-        call put(t, at, "&gt;")
+        call put_piece(t, at, "&gt;")
       case ('"')
-        call put(t, at, "&quot;")
+        call put_piece(t, at, "&quot;")
       case ("'")
-        call put(t, at, "&apos;")
+        call put_piece(t, at, "&apos;")
       case default
-        call put(t, at, shown(i:i))
+        call put_piece(t, at, shown(i:i))
       end select
     end do
     t = t(1:at)
@@ -148,25 +139,12 @@ contains
     character(*), intent(in) :: s
     character(len=:), allocatable :: t
     character(len=:), allocatable :: shown
-    integer :: i, at
     shown = printable(s)
     if (scan(shown, ', "') == 0) then
       t = shown
       return
     end if
-    allocate (character(len=2 * len(shown) + 2) :: t)
-    t(1:1) = '"'
-    at = 1
-    do i = 1, len(shown)
-      if (shown(i:i) == '"') then
-        t(at + 1:at + 2) = '""'
-        at = at + 2
-      else
-        t(at + 1:at + 1) = shown(i:i)
-        at = at + 1
-      end if
-    end do
-    t = t(1:at)//'"'
+    t = '"'//replace_all(shown, '"', '""')//'"'
   end function csv_field
 
   !> The value of a DXF TEXT entity (group code 1) in an R12 file, which is ASCII: a character
@@ -197,21 +175,21 @@ contains
       if (n > 1) then
         code = code_point(s(i:i + n - 1))
         if (code > 65535) then
-          call put(t, at, "\U+"//hex4(55296 + (code - 65536) / 1024)//"\U+"//hex4(56320 + mod(code - 65536, 1024)))
+          call put_piece(t, at, "\U+"//hex4(55296 + (code - 65536) / 1024)//"\U+"//hex4(56320 + mod(code - 65536, 1024)))
         else
-          call put(t, at, "\U+"//hex4(code))
+          call put_piece(t, at, "\U+"//hex4(code))
         end if
         i = i + n
         cycle
       end if
       if (s(i:i) == "^") then
-        call put(t, at, "^ ")
+        call put_piece(t, at, "^ ")
       else if (s(i:i) == "%" .and. percents) then
-        call put(t, at, "%%%")
+        call put_piece(t, at, "%%%")
       else if (c < 32 .or. c >= 127) then
-        call put(t, at, printable(s(i:i)))
+        call put_piece(t, at, printable(s(i:i)))
       else
-        call put(t, at, s(i:i))
+        call put_piece(t, at, s(i:i))
       end if
       i = i + 1
     end do
@@ -226,18 +204,6 @@ contains
     character(len=:), allocatable :: t
     t = printable(s)
   end function table_text
-
-  !> Append `piece` to `text` after its first `at` characters (`text` long enough).
-  pure subroutine put(text, at, piece)
-    !> The text being built (allocated long enough).
-    character(len=:), allocatable, intent(inout) :: text
-    !> Characters of it used so far; moved past the piece.
-    integer, intent(inout) :: at
-    !> What is added.
-    character(*), intent(in) :: piece
-    text(at + 1:at + len(piece)) = piece
-    at = at + len(piece)
-  end subroutine put
 
   !> The Unicode code point of one valid multi-byte UTF-8 character.
   pure integer function code_point(u)

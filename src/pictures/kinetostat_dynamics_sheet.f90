@@ -336,16 +336,7 @@ contains
       call sheet%circle(ox, oy, 0.8_wp, "origin")
       call sheet%place_label("O", "label", ox, oy, 0.75_wp * pi, plot_box(q))
       ! the curve
-      block
-        real(wp), allocatable :: sx(:), sy(:)
-        integer :: k
-        allocate (sx(size(jr)), sy(size(jr)))
-        do k = 1, size(jr)
-          sx(k) = q%sx(jr(k))
-          sy(k) = q%sy(dt(k))
-        end do
-        call sheet%polyline(sx, sy, stroke=blue, width=0.45_wp)
-      end block
+      call sheet%polyline(q%sx(jr), q%sy(dt), stroke=blue, width=0.45_wp)
       if (jfw <= 0.0_wp) return
       ! the tangents from k and l on the dT axis
       ! the tangents dT = y + s J over the plot, clipped to its rectangle
@@ -561,10 +552,8 @@ contains
     real(wp), allocatable :: sx(:), sy(:)
     integer :: k
     allocate (sx(size(v)), sy(size(v)))
-    do k = 1, size(v)
-      sx(k) = q%sx(phi(k))
-      sy(k) = q%sy(v(k))
-    end do
+    sx = q%sx(phi(:size(v)))
+    sy = q%sy(v)
     call sheet%polyline(sx, sy, stroke=colour, width=0.45_wp, dash=dash)
     k = max(1, nint(0.62_wp * size(v)))
     call sheet%place_label(name, "label", sx(k), sy(k), -0.5_wp * pi, plot_box(q), colour=colour)
@@ -578,14 +567,14 @@ contains
   end function plot_box
 
   !> x on the sheet of an abscissa value, mm.
-  pure real(wp) function plot_x(self, x)
+  elemental real(wp) function plot_x(self, x)
     class(plot_t), intent(in) :: self
     real(wp), intent(in) :: x
     plot_x = self%left + self%width * (x - self%xlo) / (self%xhi - self%xlo)
   end function plot_x
 
   !> y on the sheet of an ordinate value, mm.
-  pure real(wp) function plot_y(self, y)
+  elemental real(wp) function plot_y(self, y)
     class(plot_t), intent(in) :: self
     real(wp), intent(in) :: y
     plot_y = self%top + self%height - self%height * (y - self%ylo) / (self%yhi - self%ylo)

@@ -70,9 +70,7 @@ contains
     class(mechanism_view_t), intent(in) :: self
     real(wp), intent(in) :: p(2)
     real(wp) :: s(2)
-    real(wp) :: q(2)
-    q = turn(p, self%rotation)
-    s = self%origin + self%scale * [q(1), -q(2)]
+    s = self%origin + self%scale * self%direction(p)
   end function view_point
 
   !> A vector of the position frame (any unit) turned onto the sheet (y down), same length.

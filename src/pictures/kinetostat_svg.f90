@@ -11,7 +11,7 @@ module kinetostat_svg
   implicit none
   private
   public :: svg_open, svg_close, svg_line, svg_path, svg_polyline_d, svg_circle, svg_rect, svg_text, &
-    svg_arrow, svg_polygon, svg_group_open, svg_group_close, xml_escape, coord, palette_colour, &
+    svg_polygon, svg_group_open, svg_group_close, xml_escape, coord, palette_colour, &
     coord_decimals
 
   !> Decimals of every coordinate, mm (0.01 mm: far below what a printer or a screen shows).
@@ -231,36 +231,5 @@ contains
     character(len=:), allocatable :: text
     text = '<text x="'//coord(x)//'" y="'//coord(y)//'" '//attributes//">"//xml_escape(text_value)//"</text>"
   end function svg_text
-
-  !> An arrow from (x1, y1) to its tip (x2, y2), mm: a shaft and a filled head `head` mm
-  !> long (shorter arrows are all head), in `colour`, `width` mm wide.
-  pure function svg_arrow(x1, y1, x2, y2, colour, width, head) result(text)
-    !> Tail, mm.
-    real(wp), intent(in) :: x1, y1
-    !> Tip, mm.
-    real(wp), intent(in) :: x2, y2
-    !> Colour "#rrggbb".
-    character(*), intent(in) :: colour
-    !> Shaft width, mm.
-    real(wp), intent(in) :: width
-    !> Head length, mm.
-    real(wp), intent(in) :: head
-    character(len=:), allocatable :: text
-    real(wp) :: length, ux, uy, h, bx, by
-    length = hypot(x2 - x1, y2 - y1)
-    if (length <= 0.0_wp) then
-      text = ""
-      return
-    end if
-    ux = (x2 - x1) / length
-    uy = (y2 - y1) / length
-    h = min(head, length)
-    bx = x2 - h * ux
-    by = y2 - h * uy
-    text = ""
-    if (length > h) text = svg_line(x1, y1, bx, by, 'stroke="'//colour//'" stroke-width="'//coord(width)//'"')
-    text = text//svg_polygon([x2, bx - 0.35_wp * h * uy, bx + 0.35_wp * h * uy], &
-      [y2, by + 0.35_wp * h * ux, by - 0.35_wp * h * ux], 'fill="'//colour//'"')
-  end function svg_arrow
 
 end module kinetostat_svg

@@ -32,12 +32,12 @@
 module kinetostat_typeset
   use kinetostat_kinds, only: wp
   use kinetostat_labels, only: lang_ru
-  use kinetostat_text, only: replace_all
+  use kinetostat_text, only: replace_all, is_letter, is_digit
   ! the number of UTF-8 characters of a text (continuation bytes not counted)
   use kinetostat_label_place, only: char_count => text_chars
   implicit none
   private
-  public :: text_run_t, run_base, run_sub, run_sup, typeset, plain_runs, runs_text, plain_text, runs_extent, &
+  public :: text_run_t, run_base, run_sub, run_sup, typeset, plain_runs, plain_text, runs_extent, &
     char_count, sub_size, sub_shift, sup_shift, unit_text
 
   !> Shift of a run: on the baseline.
@@ -124,18 +124,6 @@ contains
     runs(1)%shift = run_base
   end function plain_runs
 
-  !> The runs' characters one after the other (what a reader of the SVG's text sees).
-  pure function runs_text(runs) result(text)
-    !> The runs.
-    type(text_run_t), intent(in) :: runs(:)
-    character(len=:), allocatable :: text
-    integer :: i
-    text = ""
-    do i = 1, size(runs)
-      text = text//runs(i)%text
-    end do
-  end function runs_text
-
   !> The runs as one line for a writer without sub- and superscripts (DXF): a subscript
   !> after "_" unless it starts with a digit (F21, a_CB), a superscript after "^" (a_CB^τ).
   pure function plain_text(runs) result(text)
@@ -195,12 +183,14 @@ contains
     !> Any text.
     character(*), intent(in) :: text
     character(len=:), allocatable :: out
-    out = replace_all(text, "*m^2", "·m²")
-    out = replace_all(out, "*м^2", "·м²")
-    out = replace_all(out, "N*m", "N·m")
-    out = replace_all(out, "Н*м", "Н·м")
-    out = replace_all(out, "s^2", "s²")
-    out = replace_all(out, "с^2", "с²")
+    !> What is replaced (in this order), and by what.
+    character(len=*), parameter :: plain(*) = [character(len=6) :: "*m^2", "*м^2", "N*m", "Н*м", "s^2", "с^2"]
+    character(len=*), parameter :: typeset(*) = [character(len=6) :: "·m²", "·м²", "N·m", "Н·м", "s²", "с²"]
+    integer :: k
+    out = text
+    do k = 1, size(plain)
+      out = replace_all(out, trim(plain(k)), trim(typeset(k)))
+    end do
   end function unit_text
 
   !> The runs of token `t` when it is a symbol (ok); ok false otherwise.
@@ -396,10 +386,12 @@ contains
     character(*), intent(in) :: part
     character(len=:), allocatable :: out
     integer :: i
-    out = part
-    do i = 1, size(sub_en)
-      if (part == trim(sub_en(i))) out = trim(sub_ru(i))
-    end do
+    i = findloc(sub_en, part, dim=1)
+    if (i > 0) then
+      out = trim(sub_ru(i))
+    else
+      out = part
+    end if
   end function course_subscript
 
   !> Whether `rest` names a link or point as an index: a number ("3", "21"), or a capital
@@ -445,16 +437,6 @@ contains
     character, intent(in) :: c
     is_delimiter = iachar(c) < 128 .and. .not. (is_letter(c) .or. is_digit(c) .or. c == "_" .or. c == "^")
   end function is_delimiter
-
-  pure logical function is_letter(c)
-    character, intent(in) :: c
-    is_letter = (c >= "A" .and. c <= "Z") .or. (c >= "a" .and. c <= "z")
-  end function is_letter
-
-  pure logical function is_digit(c)
-    character, intent(in) :: c
-    is_digit = c >= "0" .and. c <= "9"
-  end function is_digit
 
   !> Whether byte `c` leads a two-byte Greek letter (U+0391..U+03C9: 0xCE, 0xCF).
   pure logical function is_greek_lead(c)

@@ -7,7 +7,7 @@
 module kinetostat_override
   use, intrinsic :: iso_fortran_env, only: int64
   use kinetostat_error, only: error_t, fatal_error, exit_input, out_of_memory
-  use kinetostat_text, only: upper
+  use kinetostat_text, only: upper, is_letter, is_digit, put_piece
   use kinetostat_deck, only: deck_source_t, deck_source_from_text, deck_line_count, deck_line, deck_line_length
   use kinetostat_step_table, only: step_table_t, echo_heading_kind, echo_line_kind
   use kinetostat_deck_encoding, only: utf8_problem
@@ -119,16 +119,6 @@ contains
     is_plain_value = quote == " "
   end function is_plain_value
 
-  pure logical function is_letter(c)
-    character, intent(in) :: c
-    is_letter = (c >= "a" .and. c <= "z") .or. (c >= "A" .and. c <= "Z")
-  end function is_letter
-
-  pure logical function is_digit(c)
-    character, intent(in) :: c
-    is_digit = c >= "0" .and. c <= "9"
-  end function is_digit
-
   !> The deck with the overrides written, one "  NAME = VALUE" line each and in order, just
   !> before the closing '/' (or '&end') of its first namelist group; the deck's own lines
   !> keep their numbers. A deck whose first group is not closed gets them at its end (its
@@ -168,14 +158,14 @@ contains
     do i = 1, deck_line_count(source)
       line = deck_line(source, i)
       if (i == k) then
-        if (col > 1) call put(text, at, line(1:col - 1)//lf)
-        call put(text, at, added)
-        call put(text, at, line(col:)//lf)
+        if (col > 1) call put_piece(text, at, line(1:col - 1)//lf)
+        call put_piece(text, at, added)
+        call put_piece(text, at, line(col:)//lf)
       else
-        call put(text, at, line//lf)
+        call put_piece(text, at, line//lf)
       end if
     end do
-    if (k == 0) call put(text, at, added)
+    if (k == 0) call put_piece(text, at, added)
     call deck_source_from_text(source%path, text(1:at), patched, error=error)
     if (present(error)) then
       if (allocated(error)) error%message = source%path//": "//error%message
@@ -199,18 +189,6 @@ contains
       line = k
     end if
   end function first_override_line
-
-  !> `piece` into `text` after its first `at` characters (`at` counts them).
-  pure subroutine put(text, at, piece)
-    !> The text being built (long enough).
-    character(len=:), allocatable, intent(inout) :: text
-    !> Characters written so far.
-    integer, intent(inout) :: at
-    !> What comes next.
-    character(*), intent(in) :: piece
-    text(at + 1:at + len(piece)) = piece
-    at = at + len(piece)
-  end subroutine put
 
   !> Line `k` and column `col` of the character that closes the deck's first namelist group:
   !> the first '/', '&' or '$' after the group name outside quotes and '!' comments

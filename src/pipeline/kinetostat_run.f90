@@ -372,12 +372,8 @@ contains
           call write_at_step(mech, table, options, out, error)
         else
           if (options%course_sheet == course_kinematics) then
-            call mech%sketch(motion_topo)
-            if (.not. motion_topo%available) then
-              call fatal_error(error, exit_usage, table%deck//": &"//table%mechanism//": the kinematics sheet "// &
-                "draws linkages only")
-              return
-            end if
+            call drawn_sketch(mech, table, "the kinematics sheet draws linkages only", motion_topo, error)
+            if (allocated(error)) return
             k_at = findloc(table%row_numbers, options%course_at, dim=1)
             if (k_at == 0) k_at = minloc(abs(table%row_numbers - options%course_at), dim=1)
             call drawing_from_sketch(motion_topo, table, k_at, course_drawing, error)
@@ -580,12 +576,9 @@ contains
     character(len=160), allocatable :: lines(:)
     integer :: k, i
     ! a kind without a drawing of its mechanism (a design kind keeps no rows for one)
-    call mech%sketch(topo)
-    if (.not. topo%available) then
-      call fatal_error(error, exit_usage, table%deck//": &"//table%mechanism//": --at: this mechanism is not "// &
-        "drawn (only linkages are); --format svg without --at shows its forces")
-      return
-    end if
+    call drawn_sketch(mech, table, "--at: this mechanism is not drawn (only linkages are); --format svg "// &
+      "without --at shows its forces", topo, error)
+    if (allocated(error)) return
     ! the table holds the rows the drawing needs (kinetostat_row_keeper): find row --at K
     k = 0
     if (allocated(table%row_numbers)) k = findloc(table%row_numbers, options%at_step, dim=1)
@@ -793,6 +786,20 @@ contains
       end do
     end do
   end subroutine guard_drawable
+
+  !> The mechanism's sketch, or a usage error (exit 1) naming the deck, its group and `why`
+  !> when the kind has no drawing of its mechanism.
+  subroutine drawn_sketch(mech, table, why, topo, error)
+    class(mechanism_t), intent(in) :: mech
+    !> The results (their deck and group named).
+    type(step_table_t), intent(in) :: table
+    !> What cannot be done without a drawing.
+    character(*), intent(in) :: why
+    type(sketch_t), intent(out) :: topo
+    type(error_t), allocatable, intent(out) :: error
+    call mech%sketch(topo)
+    if (.not. topo%available) call fatal_error(error, exit_usage, table%deck//": &"//table%mechanism//": "//why)
+  end subroutine drawn_sketch
 
   !> "step k (phi1 = x deg)" or "stage k".
   pure function row_text(table, k) result(text)

@@ -540,7 +540,7 @@ contains
     subroutine output_diagrams()
       integer :: out_link
       real(wp), allocatable :: s(:), v(:), a(:), s0(:), v0(:), a0(:)
-      character(len=:), allocatable :: name, point
+      character(len=:), allocatable :: name, point, from_extreme
       logical :: slider, far
       type(error_t), allocatable :: err
       call output_motion(topo, drawing, table, k, output_link, out_link, slider, point, s, v, a, err)
@@ -559,37 +559,39 @@ contains
       else
         s = s - minval(s)
       end if
+      from_extreme = words(" from its extreme position", " от крайнего положения", lang)
       if (slider) then
-        call put_cycle_chart(sheet, x2, y, cw, hmax, phi, mu_phi, s, unit_word("m", lang), "s", words( &
-          "Displacement of link ", "Перемещение звена ", lang)//name//words(" from its extreme position", &
-          " от крайнего положения", lang), "φ1, "//unit_word("deg", lang), lang, q)
-        call put_cycle_curve(sheet, q, phi, s, "#1f77b4", "", "s"//name)
-        y = y + q%height + 26.0_wp + gap
-        call put_cycle_chart(sheet, x2, y, cw, hmax, phi, mu_phi, v, unit_word("m/s", lang), "v", words( &
-          "Velocity of link ", "Скорость звена ", lang)//name, "φ1, "//unit_word("deg", lang), lang, q)
-        call put_cycle_curve(sheet, q, phi, v, "#1f77b4", "", "v_"//point)
-        y = y + q%height + 26.0_wp + gap
-        call put_cycle_chart(sheet, x2, y, cw, hmax, phi, mu_phi, a, unit_word("m/s^2", lang), "a", words( &
-          "Acceleration of link ", "Ускорение звена ", lang)//name, "φ1, "//unit_word("deg", lang), lang, q)
-        call put_cycle_curve(sheet, q, phi, a, "#1f77b4", "", "a_"//point)
+        call put_diagram(s, "m", "s", words("Displacement of link ", "Перемещение звена ", lang)//name// &
+          from_extreme, "s"//name, .false.)
+        call put_diagram(v, "m/s", "v", words("Velocity of link ", "Скорость звена ", lang)//name, "v_"//point, &
+          .true.)
+        call put_diagram(a, "m/s^2", "a", words("Acceleration of link ", "Ускорение звена ", lang)//name, &
+          "a_"//point, .true.)
       else
-        call put_cycle_chart(sheet, x2, y, cw, hmax, phi, mu_phi, s, unit_word("deg", lang), "ψ", words( &
-          "Angle of link ", "Угол поворота звена ", lang)//name//words(" from its extreme position", &
-          " от крайнего положения", lang), "φ1, "//unit_word("deg", lang), lang, q)
-        call put_cycle_curve(sheet, q, phi, s, "#1f77b4", "", "ψ"//name)
-        y = y + q%height + 26.0_wp + gap
-        call put_cycle_chart(sheet, x2, y, cw, hmax, phi, mu_phi, v, unit_word("rad/s", lang), "ω", words( &
-          "Angular velocity of link ", "Угловая скорость звена ", lang)//name, "φ1, "//unit_word("deg", &
-            lang), lang, q)
-        call put_cycle_curve(sheet, q, phi, v, "#1f77b4", "", "ω"//name)
-        y = y + q%height + 26.0_wp + gap
-        call put_cycle_chart(sheet, x2, y, cw, hmax, phi, mu_phi, a, unit_word("rad/s^2", lang), "ε", words( &
-          "Angular acceleration of link ", "Угловое ускорение звена ", lang)//name, "φ1, " &
-            //unit_word("deg", lang), &
-          lang, q)
-        call put_cycle_curve(sheet, q, phi, a, "#1f77b4", "", "ε"//name)
+        call put_diagram(s, "deg", "ψ", words("Angle of link ", "Угол поворота звена ", lang)//name// &
+          from_extreme, "ψ"//name, .false.)
+        call put_diagram(v, "rad/s", "ω", words("Angular velocity of link ", "Угловая скорость звена ", &
+          lang)//name, "ω"//name, .true.)
+        call put_diagram(a, "rad/s^2", "ε", words("Angular acceleration of link ", &
+          "Угловое ускорение звена ", lang)//name, "ε"//name, .true.)
       end if
     end subroutine output_diagrams
+
+    !> One diagram of output_diagrams over the input angle, below the one before (`below`).
+    subroutine put_diagram(values, unit, symbol, title, curve_name, below)
+      !> The values.
+      real(wp), intent(in) :: values(:)
+      !> Their unit (as the sheet's language writes it) and symbol on the axis.
+      character(*), intent(in) :: unit, symbol
+      !> The diagram's title and the curve's name.
+      character(*), intent(in) :: title, curve_name
+      !> Whether a diagram stands above it.
+      logical, intent(in) :: below
+      if (below) y = y + q%height + 26.0_wp + gap
+      call put_cycle_chart(sheet, x2, y, cw, hmax, phi, mu_phi, values, unit_word(unit, lang), symbol, title, &
+        "φ1, "//unit_word("deg", lang), lang, q)
+      call put_cycle_curve(sheet, q, phi, values, "#1f77b4", "", curve_name)
+    end subroutine put_diagram
 
     !> The values at the position: the points' speeds and accelerations, the links' ω and ε.
     subroutine put_values(x0, y0, w, h)

@@ -693,15 +693,11 @@ contains
     type(plans_t), intent(inout) :: plans
     type(plan_value_t), allocatable :: vals(:)
     real(wp) :: l, size_v, size_a
-    integer :: i, e, j, li
+    integer :: e, j, li
     allocate (vals(0))
     size_v = tiny_of(plans%velocities)
     size_a = tiny_of(plans%accelerations)
-    do i = 1, size(plans%velocities)
-      if (norm2(plans%velocities(i)%v) <= size_v) cycle
-      call put(vals, "v_"//trim(plans%velocities(i)%name), "p"//image(plans%velocities(i)%name)//"*mu_v", &
-        norm2(plans%velocities(i)%v), "m/s", "")
-    end do
+    call put_absolutes(vals, plans%velocities, "v", "p", "mu_v", "m/s", size_v)
     do e = 1, size(plans%velocity_equations)
       associate (eq => plans%velocity_equations(e))
         do j = 1, size(eq%vectors)
@@ -718,11 +714,7 @@ contains
     end do
     ! every link's angular speed from its longest relative velocity (the most exact reading)
     call put_rates(vals, plans%velocity_equations, "omega", "rad/s", omega)
-    do i = 1, size(plans%accelerations)
-      if (norm2(plans%accelerations(i)%v) <= size_a) cycle
-      call put(vals, "a_"//trim(plans%accelerations(i)%name), "π"//image(plans%accelerations(i)%name)//"*mu_a", &
-        norm2(plans%accelerations(i)%v), "m/s^2", "")
-    end do
+    call put_absolutes(vals, plans%accelerations, "a", "π", "mu_a", "m/s^2", size_a)
     do e = 1, size(plans%equations)
       associate (eq => plans%equations(e))
         li = link_index(topo, trim(eq%link))
@@ -751,6 +743,23 @@ contains
     call put_rates(vals, plans%equations, "eps", "rad/s^2", eps)
     call move_alloc(vals, plans%values)
   contains
+    !> Every image's absolute velocity or acceleration (v_B = pb*mu_v), those too small to
+    !> read left out.
+    pure subroutine put_absolutes(vals, images, symbol, pole, scale, unit, smallest)
+      type(plan_value_t), allocatable, intent(inout) :: vals(:)
+      type(plan_vector_t), intent(in) :: images(:)
+      !> "v" or "a"; the plan's pole ("p", "π"); its scale ("mu_v", "mu_a"); the unit.
+      character(*), intent(in) :: symbol, pole, scale, unit
+      !> The largest length left out.
+      real(wp), intent(in) :: smallest
+      integer :: i
+      do i = 1, size(images)
+        if (norm2(images(i)%v) <= smallest) cycle
+        call put(vals, symbol//"_"//trim(images(i)%name), pole//image(images(i)%name)//"*"//scale, &
+          norm2(images(i)%v), unit, "")
+      end do
+    end subroutine put_absolutes
+
     !> Every link's angular rate (omega or eps) from its longest tangential term: the term
     !> over the length of its two points, with the sense of the link's `rates`.
     pure subroutine put_rates(vals, equations, symbol, unit, rates)

@@ -503,15 +503,13 @@ contains
     type(sketch_t), intent(in) :: topo
     integer, intent(in) :: i
     character(len=:), allocatable :: name
-    integer :: j
+    integer :: j, k
     name = ""
     if (.not. allocated(topo%pivots) .or. i == 0) return
-    do j = 1, size(topo%links(i)%points)
-      if (any(topo%pivots == topo%links(i)%points(j))) then
-        name = trim(topo%links(i)%points(j))
-        return
-      end if
-    end do
+    associate (points => topo%links(i)%points)
+      j = findloc([(any(topo%pivots == points(k)), k = 1, size(points))], .true., dim=1)
+      if (j > 0) name = trim(points(j))
+    end associate
   end function pivot_of
 
   !> The name of the point of link `link` at point `point` ("B3"; "J21_3" when the point's

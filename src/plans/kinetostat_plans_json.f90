@@ -6,13 +6,13 @@
 !> scales, and the lever's `arm_mm` its arms as drawn on the sheet.
 module kinetostat_plans_json
   use kinetostat_kinds, only: wp
-  use kinetostat_text, only: int_str
+  use kinetostat_text, only: int_str, string_t, joined
   use kinetostat_format, only: full_number
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_step_table, only: step_table_t
   use kinetostat_json_writer, only: json_string, put_run_identity, put_run_verdict
   use kinetostat_plans_base, only: plans_t, plan_vector_t, plan_equation_t, lever_load_t, lever_friction_t, &
-    force_polygon_t, load_moment
+    force_polygon_t, load_moment, plan_reaction_t
   use kinetostat_plans_sheet, only: plans_sheet_t
   implicit none
   private
@@ -188,13 +188,15 @@ contains
     type(plans_t), intent(in) :: plans
     integer, intent(in) :: i
     character(len=:), allocatable :: text
-    integer :: j
-    text = ""
-    do j = 1, size(plans%groups(i)%names)
-      if (j > 1) text = text//", "
-      text = text//json_string(trim(plans%groups(i)%names(j)))
-    end do
+    text = joined(name_json(plans%groups(i)%names), ", ")
   end function link_list
+
+  !> A blank-padded name as a JSON string.
+  elemental function name_json(name) result(part)
+    character(*), intent(in) :: name
+    type(string_t) :: part
+    part%s = json_string(trim(name))
+  end function name_json
 
   pure function logical_json(x) result(text)
     logical, intent(in) :: x
@@ -254,28 +256,29 @@ contains
   pure function reactions_json(poly) result(text)
     type(force_polygon_t), intent(in) :: poly
     character(len=:), allocatable :: text
-    integer :: j
-    text = ""
-    do j = 1, size(poly%reactions)
-      associate (r => poly%reactions(j))
-        if (j > 1) text = text//", "
-        text = text//'{"name": '//json_string(trim(r%name))//', "x": '//full_number(r%v(1))//', "y": '// &
-          full_number(r%v(2))//', "inner": '//logical_json(r%inner)//', "tail": '//int_str(r%tail)//', "head": '// &
-          int_str(r%head)//'}'
-      end associate
-    end do
+    text = joined(reaction_json(poly%reactions), ", ")
   end function reactions_json
+
+  !> One reaction of a group polygon as a JSON object.
+  elemental function reaction_json(r) result(part)
+    type(plan_reaction_t), intent(in) :: r
+    type(string_t) :: part
+    part%s = '{"name": '//json_string(trim(r%name))//', "x": '//full_number(r%v(1))//', "y": '// &
+      full_number(r%v(2))//', "inner": '//logical_json(r%inner)//', "tail": '//int_str(r%tail)//', "head": '// &
+      int_str(r%head)//'}'
+  end function reaction_json
 
   !> Vectors as JSON objects separated by commas.
   pure function vectors_json(vectors) result(text)
     type(plan_vector_t), intent(in) :: vectors(:)
     character(len=:), allocatable :: text
-    integer :: j
-    text = ""
-    do j = 1, size(vectors)
-      text = text//vector_json(vectors(j))
-      if (j < size(vectors)) text = text//", "
-    end do
+    text = joined(vector_part(vectors), ", ")
+  contains
+    elemental function vector_part(v) result(part)
+      type(plan_vector_t), intent(in) :: v
+      type(string_t) :: part
+      part%s = vector_json(v)
+    end function vector_part
   end function vectors_json
 
   !> One line of a JSON array, with a comma when more follow.

@@ -440,7 +440,7 @@ contains
       call point_images(topo, drawing, omega, eps, a0, .true., a, known)
       if (k == first) then
         do ip = 1, size(drawing%points)
-          image(ip) = named_image(v, drawing%points(ip)%name)
+          image(ip) = findloc(v%name, drawing%points(ip)%name, dim=1)
         end do
       end if
       do ip = 1, size(drawing%points)
@@ -457,20 +457,6 @@ contains
         end associate
       end do
     end do
-  contains
-    !> Index of the image named `name` (0: none).
-    pure integer function named_image(images, name)
-      type(plan_vector_t), intent(in) :: images(:)
-      character(*), intent(in) :: name
-      integer :: j
-      named_image = 0
-      do j = 1, size(images)
-        if (images(j)%name == name) then
-          named_image = j
-          return
-        end if
-      end do
-    end function named_image
   end subroutine by_least_squares
 
 end module kinetostat_point_motion
