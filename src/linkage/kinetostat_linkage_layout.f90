@@ -592,7 +592,8 @@ contains
       table%carry = [q, dq]
       call table%allocate_rows(last - first + 1, error)
       if (allocated(error)) return
-      allocate (residual(first:last), mismatch(first:last), stat=stat)
+      allocate (residual(first:last), stat=stat)
+      if (stat == 0) allocate (mismatch(first:last), stat=stat)
       if (stat /= 0) then
         call out_of_memory(error, "the self-check figures of a block of "//int_str(last - first + 1)// &
           " steps", int(last - first + 1, int64) * 2 * storage_size(residual) / 8)
