@@ -269,7 +269,7 @@ done
 dir="$cli_tmp/sheets_a4_pr3207"
 rm -rf "$dir"
 run_ks sheets data/pr3207_flywheel.nml -o "$dir" --paper A4 --lang ru --student X --group G --variant 1
-if [ "$rc" -eq 0 ] && sed 's/<[^>]*>//g' "$dir/kinetostatics.svg" | grep -q "F56 приложена к точке звена, её линия действия в 1.75 м от неё" \
+if [ "$rc" -eq 0 ] && grep -q "F56 приложена к точке звена, её линия действия в 1.75 м от неё" <(sed 's/<[^>]*>//g' "$dir/kinetostatics.svg") \
   && grep -q 'data-arm="h56"[^>]*data-h="2.3392918' "$dir/kinetostatics.svg" \
   && sheets_iso "$dir/dynamics.svg" 210.00 297.00 >/dev/null 2>&1 \
   && python3 "$sheets_check" labels --lines "$dir/kinetostatics.svg" >"$cli_tmp/check.out" 2>&1; then pass
