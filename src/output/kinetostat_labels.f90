@@ -234,6 +234,10 @@ module kinetostat_labels
       "τ касат., k кориол., r относит.", &
     "Plans of velocities, accelerations, forces=>Планы скоростей, ускорений, сил", &
     "Mechanism with its forces=>Механизм с силами", &
+    "Force analysis of the mechanism=>Силовой расчет механизма", &
+    "drawn at the link's point, its line of action=>приложена к точке звена, "// &
+      "её линия действия в", &
+    "from it (off the drawing)=>от неё (вне чертежа)", &
     "Hodographs and diagrams=>Годографы и диаграммы", &
     "not drawn, shorter than 1 mm at μF=>не показаны, короче 1 мм при μF", &
     "under 1 mm, not drawn=>короче 1 мм, не показаны", &

@@ -87,11 +87,7 @@ contains
       "gives its view (data-origin, data-scale, data-rotation); velocity images carry data-image, in sheet mm.")
     if (geo%groups_apart) then
       ! the course's sheet 2: the force analysis (its plans are the kinematics sheet's)
-      if (lang == lang_ru) then
-        line = "Силовой расчет механизма"
-      else
-        line = "Force analysis of the mechanism"
-      end if
+      line = word("Force analysis of the mechanism", lang)
     else
       line = word("Plans of velocities, accelerations, forces", lang)
     end if
@@ -139,14 +135,9 @@ contains
             ! (a force too short to draw is listed under the drawing)
             if (norm2(f%f) / geo%mu_mechanism_force < 1.0_wp) cycle
             if (len(arms_note) > 0) arms_note = arms_note//"; "
-            if (lang == lang_ru) then
-              arms_note = arms_note//display_name(trim(f%name), lang)//" приложена к точке звена, "// &
-                "её линия действия в "//short_number(arm)//" м "// &
-                "от неё (вне чертежа)"
-            else
-              arms_note = arms_note//display_name(trim(f%name), lang)//" drawn at the link's point, its line of "// &
-                "action "//short_number(arm)//" m from it (off the drawing)"
-            end if
+            arms_note = arms_note//display_name(trim(f%name), lang)//" "// &
+              word("drawn at the link's point, its line of action", lang)//" "//short_number(arm)//" "// &
+              unit_word("m", lang)//" "//word("from it (off the drawing)", lang)
           end if
         end associate
       end do
