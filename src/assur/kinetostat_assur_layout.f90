@@ -5,11 +5,11 @@ module kinetostat_assur_layout
   use, intrinsic :: iso_fortran_env, only: int64
   use kinetostat_kinds, only: wp, deg_to_rad, rad_to_deg
   use kinetostat_deck, only: deck_source_t
-  use kinetostat_error, only: error_t, fatal_error, exit_geometry, out_of_memory
+  use kinetostat_error, only: error_t, fatal_error, exit_geometry
   use kinetostat_text, only: int_str, upper
   use kinetostat_noise, only: noise_rel, force_components
   use kinetostat_vec2, only: magnitude, angle_360_deg, angle_180_deg, rotate, snap_noise, clean_zero
-  use kinetostat_step_table, only: worst_row
+  use kinetostat_step_table, only: worst_row, lack_block_memory
   use kinetostat_run_tally, only: trapezoid_t
   use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_component, col_length, &
     step_span, &
@@ -260,8 +260,7 @@ contains
     if (stat == 0) allocate (motion(3, merge(nrow, 0, kinematics)), stat=stat)
     if (stat == 0) allocate (forces(2, np, merge(nrow, 0, kinematics)), stat=stat)
     if (stat /= 0) then
-      call out_of_memory(error, "the results of a block of "//int_str(nrow)//" steps", &
-        int(nrow, int64) * (24 + 8 * (3 + 2 * np)))
+      call lack_block_memory(error, nrow, 24_int64 + 8 * (3 + 2 * np))
       return
     end if
     ! steps in parallel with OpenMP threads; the error reported is the first step's in step order
@@ -410,8 +409,7 @@ contains
     keep_friction = present(fsteps)
     if (stat == 0 .and. keep_friction) allocate (fsteps(merge(k2 - k1 + 1, 0, deck%friction_on)), stat=stat)
     if (stat /= 0) then
-      call out_of_memory(error, "the results of a block of "//int_str(k2 - k1 + 1)//" steps", &
-        int(k2 - k1 + 1, int64) * (storage_size(steps) + storage_size(fs)) / 8)
+      call lack_block_memory(error, k2 - k1 + 1, (storage_size(steps, int64) + storage_size(fs, int64)) / 8)
       return
     end if
     omega1 = assur_omega1_steps(deck, k1, k2)

@@ -6,12 +6,12 @@ module kinetostat_linkage_layout
   use, intrinsic :: iso_fortran_env, only: int64
   use kinetostat_kinds, only: wp, rad_to_deg, deg_to_rad, pi
   use kinetostat_deck, only: deck_source_t
-  use kinetostat_error, only: error_t, out_of_memory
+  use kinetostat_error, only: error_t
   use kinetostat_text, only: int_str, real_str, upper
   use kinetostat_noise, only: noise_rel
   use kinetostat_vec2, only: magnitude, angle_360_deg, clean_zero, rotate
   use kinetostat_step_table, only: step_table_t, column_t, column, col_input_angle, col_component, col_moment, &
-    col_length, col_other
+    col_length, col_other, lack_block_memory
   use kinetostat_table_layout, only: table_field_t, field, blank_field, force_and_angle, &
     put_layout_heading, put_layout_rows
   use kinetostat_labels, only: lang_ru, lang_en
@@ -564,20 +564,17 @@ contains
       dq = table%carry(nq + 1:nq + nd)
       allocate (steps(first:last), stat=stat)
       if (stat /= 0) then
-        call out_of_memory(error, "the results of a block of "//int_str(last - first + 1)// &
-          " steps", int(last - first + 1, int64) * storage_size(steps) / 8)
+        call lack_block_memory(error, last - first + 1, storage_size(steps, int64) / 8)
         return
       end if
       allocate (motions(first:last), stat=stat)
       if (stat /= 0) then
-        call out_of_memory(error, "the motions of a block of "//int_str(last - first + 1)// &
-          " steps", int(last - first + 1, int64) * storage_size(motions) / 8)
+        call lack_block_memory(error, last - first + 1, storage_size(motions, int64) / 8, "motions")
         return
       end if
       allocate (frictions(first:last), stat=stat)
       if (stat /= 0) then
-        call out_of_memory(error, "the friction figures of a block of "//int_str(last - first + 1)// &
-          " steps", int(last - first + 1, int64) * storage_size(frictions) / 8)
+        call lack_block_memory(error, last - first + 1, storage_size(frictions, int64) / 8, "friction figures")
         return
       end if
       if (self%deck%dyn%mode >= dynamics_steady) then
@@ -595,8 +592,7 @@ contains
       allocate (residual(first:last), stat=stat)
       if (stat == 0) allocate (mismatch(first:last), stat=stat)
       if (stat /= 0) then
-        call out_of_memory(error, "the self-check figures of a block of "//int_str(last - first + 1)// &
-          " steps", int(last - first + 1, int64) * 2 * storage_size(residual) / 8)
+        call lack_block_memory(error, last - first + 1, 2_int64 * storage_size(residual, int64) / 8, "self-check figures")
         return
       end if
       gap = 0.0_wp

@@ -349,14 +349,20 @@ contains
   end subroutine step_span
 
   !> The error of a block's results that do not fit in memory.
-  pure subroutine lack_block_memory(error, steps, step_bytes)
+  pure subroutine lack_block_memory(error, steps, step_bytes, what)
     !> The error to create.
     type(error_t), allocatable, intent(out) :: error
     !> Steps of the block.
     integer, intent(in) :: steps
     !> Bytes of one step's results.
     integer(int64), intent(in) :: step_bytes
-    call out_of_memory(error, "the results of a block of "//int_str(steps)//" steps", steps * step_bytes)
+    !> What the block holds (default "results": "the results of a block of N steps").
+    character(*), intent(in), optional :: what
+    if (present(what)) then
+      call out_of_memory(error, "the "//what//" of a block of "//int_str(steps)//" steps", steps * step_bytes)
+    else
+      call out_of_memory(error, "the results of a block of "//int_str(steps)//" steps", steps * step_bytes)
+    end if
   end subroutine lack_block_memory
 
   !> Whether the rows now in the table end the run (the footers are written then).
