@@ -5,8 +5,10 @@ Derives a fixed set of broken or extreme decks from data/*.nml (same seed, same 
 run), runs the kinetostat binary on each (table, CSV, and for a subset `-o FILE`) and checks
 that the program either works or fails cleanly:
 
-  exit-code     exit code in {0, 2, 3}: never 1 (usage) for a deck problem, never a signal or
-                a timeout
+  exit-code     exit code in {0, 2, 3}: never 1 (usage) for a deck problem, never a signal, never
+                over the run's limit of processor time (10 s; 60 s for the long texts and the
+                heavy decks: RLIMIT_CPU, so that the machine's load cannot reach it), never
+                30 times that limit of wall time (a hang that does not compute)
   non-finite    no NaN / Inf / Infinity and no overflow stars in stdout or the -o file
                 (a '*' is legitimate only inside a unit name between letters/digits, as in
                 "N*m", "kg*m^2", "(M1*u_1H)" of the goldens; every other '*' is flagged)
@@ -59,7 +61,8 @@ as many mutations per deck (--scale 14: about 12 000 decks); --budget S stops st
 decks after S seconds (the decks not run are counted as skipped, never as failed).
 
 Prints one line per failed (deck, check) with the mutation, the failed check and a
-reproducer (the deck is written to OUT/NAME.nml), then per check "check NAME: ok" or
+reproducer (the deck is written to OUT/NAME.nml: --out, by default a temporary directory made at
+the first failure and printed), then per check "check NAME: ok" or
 "check NAME: FAIL (n decks)", then one summary line. Exit status 0 only if nothing failed.
 Standard library only.
 """
@@ -71,7 +74,9 @@ import multiprocessing
 import os
 import re
 import random
+import resource
 import shutil
+import signal
 import subprocess
 import sys
 import tempfile
@@ -81,13 +86,20 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import output_check  # noqa: E402  (tools/output_check.py: is an output well formed)
 
 SEED = 20261121
-#: Seconds per run of the binary (a healthy run takes milliseconds).
+#: Seconds of processor time per run of the binary (a healthy run takes milliseconds): the
+#: limit is the run's own processor time (setrlimit RLIMIT_CPU: the kernel stops it with
+#: SIGXCPU), not wall time, so that the machine's load cannot turn a slow run into a failure.
 TIMEOUT = 10
-#: Seconds per run of a deck with a text or comment of 10^5 characters or more: its failing
-#: READ is repeated ~15 times by the probe that finds the line, each over records as long as
-#: that line (1.2 s of processor time for 400 000 characters; on a loaded machine more than
-#: TIMEOUT of wall time). Still a hang detector.
+#: Seconds of processor time per run of a deck with a text or comment of 10^5 characters or
+#: more: its failing READ is repeated ~15 times by the probe that finds the line, each over
+#: records as long as that line (1.2 s of processor time for 400 000 characters). Still a
+#: hang detector.
 LONG_TIMEOUT = 60
+#: Wall time per run, as a multiple of its processor-time limit: catches a run that waits
+#: without computing (a hang on a read or a lock), which RLIMIT_CPU does not; generous
+#: enough that no load of the shared machine reaches it (at a load of 30 on 2 cores a run
+#: gets a fifteenth of a core).
+WALL_FACTOR = 30
 #: Bundled decks whose every run takes over a second of processor time in the debug build (the
 #: &linkage engine's steady cycles: over 361 poses 1.2 s, the engine's two turns 0.7 s, against
 #: 0.05 s at most for the other decks), and the factor by which the sampled gate (--every K > 1) takes fewer of the decks of
@@ -441,23 +453,53 @@ def derive_decks(data_dir, seed=None, scale=1):
     return decks
 
 
-def run(binary, args, cwd, endless_stdin=False, timeout=TIMEOUT, raw=False):
+def run_limited(command, cwd, stdin, timeout):
+    """subprocess.run(command, capture_output=True) with `timeout` seconds of processor time
+    (RLIMIT_CPU set on the child once it runs, prlimit: a preexec function would cost a fork
+    of this process per run; the kernel sends SIGXCPU beyond the limit, SIGKILL a second
+    later) and WALL_FACTOR times that of wall time (subprocess.TimeoutExpired)."""
+    with subprocess.Popen(command, cwd=cwd, stdin=stdin, stdout=subprocess.PIPE, stderr=subprocess.PIPE) as p:
+        try:
+            resource.prlimit(p.pid, resource.RLIMIT_CPU, (timeout, timeout + 1))
+        except OSError:
+            pass  # it has ended already
+        try:
+            out, err = p.communicate(timeout=timeout * WALL_FACTOR)
+        except subprocess.TimeoutExpired as exc:
+            p.kill()
+            exc.stdout, exc.stderr = p.communicate()
+            raise
+        return subprocess.CompletedProcess(command, p.returncode, out, err)
+
+
+def run(binary, args, cwd, endless_stdin, timeout, raw=False):
+    """Runs the binary with `timeout` seconds of processor time (and WALL_FACTOR times that of
+    wall time); returns (exit code, or "timeout" / "cpu-limit", stdout, stderr)."""
     try:
         if endless_stdin:
             # `yes | kinetostat -`: an endless pipe, closed when the program exits
             yes = subprocess.Popen(["yes"], stdout=subprocess.PIPE)
             try:
-                p = subprocess.run([binary] + args, cwd=cwd, stdin=yes.stdout, capture_output=True, timeout=timeout)
+                p = run_limited([binary] + args, cwd, yes.stdout, timeout)
             finally:
                 yes.stdout.close()
                 yes.kill()
                 yes.wait()
         else:
-            p = subprocess.run([binary] + args, cwd=cwd, capture_output=True, timeout=timeout,
-                               stdin=subprocess.DEVNULL)
-        return p.returncode, p.stdout if raw else p.stdout.decode("utf-8", "replace"), p.stderr.decode("utf-8", "replace")
+            p = run_limited([binary] + args, cwd, subprocess.DEVNULL, timeout)
+        rc = p.returncode
+        if rc == -signal.SIGXCPU:
+            rc = "cpu-limit"
+        return rc, p.stdout if raw else p.stdout.decode("utf-8", "replace"), p.stderr.decode("utf-8", "replace")
     except subprocess.TimeoutExpired as exc:
         return "timeout", (exc.stdout or b"").decode("utf-8", "replace"), (exc.stderr or b"").decode("utf-8", "replace")
+
+
+def limit_text(rc, timeout):
+    """The failure text of a run stopped by its limit (rc "cpu-limit" or "timeout")."""
+    if rc == "cpu-limit":
+        return "over %d s of processor time (stopped)" % timeout
+    return "no end after %d s of wall time (%d s of processor time allowed)" % (timeout * WALL_FACTOR, timeout)
 
 
 def bad_text(text):
@@ -524,6 +566,12 @@ def list_modes(jobs):
     return 0
 
 
+def set_cpu_limit(seconds):
+    """Sets TIMEOUT (and LONG_TIMEOUT, six times it) in this process (a worker's initializer)."""
+    global TIMEOUT, LONG_TIMEOUT
+    TIMEOUT, LONG_TIMEOUT = seconds, 6 * seconds
+
+
 def timeout_of(name):
     """Wall-time limit of one run of a derived deck, s."""
     return LONG_TIMEOUT if "_long_" in name or heavy_factor(name) > 1 else TIMEOUT
@@ -581,8 +629,8 @@ def check_deck(job):
                 for p in [target] + leftovers:
                     if os.path.exists(p):
                         os.remove(p)
-            if rc == "timeout" or not isinstance(rc, int) or rc not in (0, 2, 3):
-                what = "timeout after %d s" % timeout_of(name) if rc == "timeout" else (
+            if not isinstance(rc, int) or rc not in (0, 2, 3):
+                what = limit_text(rc, timeout_of(name)) if rc in ("timeout", "cpu-limit") else (
                     "killed by signal %d" % -rc if rc < 0 else "exit %d" % rc)
                 failures.append(("exit-code", mode, "%s; stderr: %s" % (what, err.strip()[:200])))
             for label, text in (("stdout", out), ("file", file_text)):
@@ -612,15 +660,16 @@ def check_deck(job):
     return name, desc, failures, selfcheck, table_run
 
 
-def string_checks(binary, spec, file_name, extra, work, table_run, timeout=TIMEOUT):
+def string_checks(binary, spec, file_name, extra, work, table_run, timeout):
     """The failures of valid-output (every format of spec["formats"] well formed, no raw 0xFF,
     no raw <b> in XML) and expected-error (the table run's exit code and message)."""
     failures = []
     for _, options, form in spec.get("formats", []):
         label = " ".join(options) or "table"
-        rc, out, err = run(binary, [file_name] + options + extra, work, timeout=timeout, raw=True)
-        if rc == "timeout" or rc not in (0, 2, 3):
-            failures.append(("exit-code", label, "exit %s; stderr: %s" % (rc, err.strip()[:200])))
+        rc, out, err = run(binary, [file_name] + options + extra, work, False, timeout, raw=True)
+        if rc in ("timeout", "cpu-limit") or rc not in (0, 2, 3):
+            what = limit_text(rc, timeout) if rc in ("timeout", "cpu-limit") else "exit %s" % rc
+            failures.append(("exit-code", label, "%s; stderr: %s" % (what, err.strip()[:200])))
         if rc != 0:
             continue
         bad = []
@@ -662,8 +711,9 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--bin", default=os.environ.get("KINETOSTAT"), help="the kinetostat binary ($KINETOSTAT)")
     ap.add_argument("--data", default=os.path.join(root, "data"), help="directory of the bundled decks")
-    ap.add_argument("--out", default=os.path.join(root, "test", "out", "mutation"),
-                    help="where failing decks are written (reproducers)")
+    ap.add_argument("--out", default=None,
+                    help="where failing decks are written (reproducers; default: a new temporary "
+                         "directory, made when a deck fails and printed)")
     ap.add_argument("--list", action="store_true", help="list the decks and their mutations, run nothing")
     ap.add_argument("--only", default="", help="run only decks whose name contains this text")
     ap.add_argument("--selfcheck", action="store_true", help="also list decks that gave a self-check warning")
@@ -679,7 +729,11 @@ def main():
                     help="list, per class of mutation, the decks run as a table, as CSV with -o, and both; run nothing")
     ap.add_argument("--budget", type=float, default=0.0,
                     help="seconds after which no new deck is started (0: no limit); decks not run are skipped")
+    ap.add_argument("--cpu-limit", type=int, default=TIMEOUT,
+                    help="seconds of processor time per run (%d; six times it for the long texts and the "
+                         "heavy decks)" % TIMEOUT)
     args = ap.parse_args()
+    set_cpu_limit(max(1, args.cpu_limit))
 
     if args.seed is not None:
         print("mutation: seed %d (reproduce: python3 tools/mutate_decks.py --seed %d%s)" % (
@@ -716,7 +770,7 @@ def main():
         random.Random(args.seed).shuffle(jobs)
     data_of = {name: (data if extra is not None else b"") for name, _, data, extra in decks}
     extra_of = {name: extra for name, _, _, extra in decks}
-    with multiprocessing.Pool(args.jobs) as pool:
+    with multiprocessing.Pool(args.jobs, initializer=set_cpu_limit, initargs=(TIMEOUT,)) as pool:
         results = pool.map(check_deck, jobs, chunksize=8)
     skipped = sum(1 for r in results if r[2] is None)
     results = [r for r in results if r[2] is not None]
@@ -724,7 +778,7 @@ def main():
     failed_by_check = {c: 0 for c in CHECKS}
     failed_decks = 0
     selfcheck_decks = []
-    if os.path.isdir(args.out):
+    if args.out and os.path.isdir(args.out):
         for old in glob.glob(os.path.join(args.out, "*.nml")):
             os.remove(old)
     named = unnamed = 0
@@ -744,11 +798,16 @@ def main():
         if not failures:
             continue
         failed_decks += 1
+        if args.out is None:
+            args.out = tempfile.mkdtemp(prefix="kinetostat_mutation_")
+            print("mutation: the failing decks are written to %s" % args.out)
         os.makedirs(args.out, exist_ok=True)
         repro = os.path.join(args.out, name + ".nml")
         with open(repro, "wb") as f:
             f.write(data_of[name])
         rel = os.path.relpath(repro, os.getcwd())
+        if rel.startswith(".."):
+            rel = repro
         seen = set()
         for check, mode, detail in failures:
             if check not in seen:

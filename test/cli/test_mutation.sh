@@ -9,18 +9,22 @@
 # tools/test --long runs them all, the CSV to standard output too. It reports one verdict per assertion category
 # ("check NAME: ok" / "check NAME: FAIL (n decks)"); each category counts as ONE check here, so
 # that 500+ decks do not swamp the counters of the rest of the suite. The failing decks are
-# listed one per line (mutation, failed check, reproducer under test/out/mutation/).
+# listed one per line (mutation, failed check, reproducer in a temporary directory that the
+# tool makes at the first failure and prints: "mutation: the failing decks are written to DIR").
+# A run's limit is processor time (10 s; 60 s for the long texts and the heavy decks), not wall
+# time: the machine's load does not change the verdict.
 mutation_log="$cli_tmp/mutation.log"
 mutation_every=5
 [ "${KINETOSTAT_LONG:-0}" = 1 ] && mutation_every=1
-if python3 "$root/tools/mutate_decks.py" --bin "$KINETOSTAT" --every "$mutation_every" --out "$root/test/out/mutation" \
+if python3 "$root/tools/mutate_decks.py" --bin "$KINETOSTAT" --every "$mutation_every" \
   >"$mutation_log" 2>&1; then :; fi
 for category in exit-code non-finite error-shape no-leftover warning-shape runtime-text valid-output expected-error; do
   if grep -qx "check $category: ok" "$mutation_log"; then
     pass
   else
     fail "mutation-$category" "$(grep -m1 "^check $category:" "$mutation_log" || echo "no verdict (script failed: $(tail -3 "$mutation_log"))")
-$(grep "^FAIL .* $category (" "$mutation_log" | head -100)"
+$(grep "^FAIL .* $category (" "$mutation_log" | head -100)
+$(grep '^mutation: the failing decks are written to' "$mutation_log")"
   fi
 done
 grep -E '^(mutation|named): ' "$mutation_log"
@@ -47,6 +51,16 @@ python3 "$root/tools/mutate_decks.py" --bin "$fake" --only pr3207_s02_fraction -
 if grep -q '^check expected-error: FAIL' "$cli_tmp/mut_fake.log"; then pass
 else fail mutation-can-fail-expected-error "an accepted fraction passed: $(tail -2 "$cli_tmp/mut_fake.log")"; fi
 
+# ... and so can the limit of processor time, with --long (it spends the limit, a second, on each
+# of its three runs): a binary that computes for ever is stopped and reported
+if [ "${KINETOSTAT_LONG:-0}" = 1 ]; then
+  printf '#!/bin/sh\nwhile :; do :; done\n' >"$fake"
+  python3 "$root/tools/mutate_decks.py" --bin "$fake" --only assur_pr3050_001_delete --cpu-limit 1 \
+    --out "$cli_tmp/mut_fake" >"$cli_tmp/mut_fake.log" 2>&1
+  if grep -q '^check exit-code: FAIL' "$cli_tmp/mut_fake.log" && grep -q 'over 1 s of processor time (stopped)' "$cli_tmp/mut_fake.log"
+  then pass; else fail mutation-can-fail-cpu-limit "a binary that never ends passed: $(tail -2 "$cli_tmp/mut_fake.log")"; fi
+fi
+
 # With tools/test --long, a second, randomized run of the whole mutation set (every class above,
 # new random choices from a seed of the date, printed: `python3 tools/mutate_decks.py --seed N`
 # reproduces it), in random order within 60 s of starting decks; the decks the budget leaves
@@ -54,9 +68,9 @@ else fail mutation-can-fail-expected-error "an accepted fraction passed: $(tail 
 if [ "${KINETOSTAT_LONG:-0}" = 1 ]; then
   seed=$(date +%Y%m%d)
   python3 "$root/tools/mutate_decks.py" --bin "$KINETOSTAT" --seed "$seed" --budget 60 \
-    --out "$root/test/out/mutation_random" >"$cli_tmp/mutation_random.log" 2>&1
+    >"$cli_tmp/mutation_random.log" 2>&1
   if grep -q "^mutation: .* 0 decks failed" "$cli_tmp/mutation_random.log"; then pass
-  else fail mutation-random "seed $seed: $(grep -E '^(FAIL|check .*FAIL)' "$cli_tmp/mutation_random.log" | head -20)
+  else fail mutation-random "seed $seed: $(grep -E '^(FAIL|check .*FAIL|mutation: the failing)' "$cli_tmp/mutation_random.log" | head -20)
   $(tail -2 "$cli_tmp/mutation_random.log")"; fi
   grep -E '^mutation: ' "$cli_tmp/mutation_random.log"
 fi
