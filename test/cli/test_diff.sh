@@ -14,18 +14,20 @@ expect_diff() {
   pass
 }
 
-# --- same: every golden against itself (by default every deck's table, and the Russian table
-# and the CSV of the first deck of each kind, its namelist group; tools/test --long every
-# golden), and the table of a run from another directory
+# --- same: every golden against itself (by default every deck's table but the steady cycles'
+# (the flywheel decks: tables of 20 to 80 kB, 0.2-0.8 s each) of the first deck of each kind
+# only, and the Russian table and the CSV of the first deck of each kind, its namelist group;
+# tools/test --long every golden), and the table of a run from another directory
 diff_kinds_seen=" "
 for f in "$dexp"/*.table "$dexp"/*.csv; do
   case "$f" in
-    *.ru.table | *.csv)
+    *.ru.table | *.csv | *_flywheel.table)
       kind=$(sed -n 's/^[[:space:]]*&\([A-Za-z0-9_]*\).*/\1/p' "data/$(basename "${f%%.*}").nml" | head -1)
+      case "$f" in *.ru.table) kind="ru:$kind" ;; *.csv) kind="csv:$kind" ;; *) kind="flywheel:$kind" ;; esac
       case "${KINETOSTAT_LONG:-0}:$diff_kinds_seen" in
-        0:*" ${f##*.}:$kind "*) continue ;;
+        0:*" $kind "*) continue ;;
       esac
-      diff_kinds_seen="$diff_kinds_seen${f##*.}:$kind " ;;
+      diff_kinds_seen="$diff_kinds_seen$kind " ;;
   esac
   expect_diff "diff-self-$(basename "$f")" 0 '^same: [0-9]+ values agree' "$f" "$f"
 done
