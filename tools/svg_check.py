@@ -415,6 +415,12 @@ def text_boxes(sheet):
 BACKGROUND_CLASSES = {"paper", "grid", "ray"}
 
 
+STROKE_WIDTH_RE = re.compile(r"stroke-width:\s*([0-9.]+)")
+#: The elements drawn_segments reads, by their tag with or without the SVG namespace.
+DRAWN_TAGS = {prefix + tag: tag for tag in ("line", "path", "polygon", "polyline", "rect", "circle")
+              for prefix in ("", SVG_NS)}
+
+
 def drawn_segments(root, widths):
     """Every line drawn on the sheet as (x1, y1, x2, y2, half width, kind): <line>, <path>
     (M/L polylines), <polygon>, <polyline>, <rect> edges, and <circle>s as (cx, cy, cx, cy,
@@ -422,8 +428,8 @@ def drawn_segments(root, widths):
     BACKGROUND_CLASSES (grid, rays, paper) are left out."""
     segments = []
     for el in root.iter():
-        tag = el.tag.replace(SVG_NS, "")
-        if tag not in ("line", "path", "polygon", "polyline", "rect", "circle"):
+        tag = DRAWN_TAGS.get(el.tag)
+        if tag is None:
             continue
         classes = set((el.get("class") or "").split())
         if classes & BACKGROUND_CLASSES:
@@ -431,7 +437,8 @@ def drawn_segments(root, widths):
         width = None
         if el.get("stroke-width"):
             width = float(el.get("stroke-width"))
-        m = re.search(r"stroke-width:\s*([0-9.]+)", el.get("style") or "")
+        style = el.get("style")
+        m = STROKE_WIDTH_RE.search(style) if style else None
         if m:
             width = float(m.group(1))
         if width is None:
@@ -498,15 +505,23 @@ def lines_under_labels(path, sheet, boxes):
     segments = drawn_segments(root, widths)
     # each segment's bounding box and the least gap between it and a label's box at which
     # the segment cannot lie under the label
-    bounds = [(min(s[0], s[2]), min(s[1], s[3]), max(s[0], s[2]), max(s[1], s[3]), s[4] - 0.01 + 1e-9)
-              for s in segments]
+    # (comparisons written out: this loop runs over every stroke of every sheet checked)
+    bounds = []
     cell = 10.0
     grid = {}
     for n, s in enumerate(segments):
-        reach = s[4]
-        for gx in range(int((min(s[0], s[2]) - reach) // cell), int((max(s[0], s[2]) + reach) // cell) + 1):
-            for gy in range(int((min(s[1], s[3]) - reach) // cell), int((max(s[1], s[3]) + reach) // cell) + 1):
-                grid.setdefault((gx, gy), []).append(n)
+        x1, y1, x2, y2, reach = s[0], s[1], s[2], s[3], s[4]
+        lo_x, hi_x = (x1, x2) if x1 <= x2 else (x2, x1)
+        lo_y, hi_y = (y1, y2) if y1 <= y2 else (y2, y1)
+        bounds.append((lo_x, lo_y, hi_x, hi_y, reach - 0.01 + 1e-9))
+        gy0, gy1 = int((lo_y - reach) // cell), int((hi_y + reach) // cell) + 1
+        for gx in range(int((lo_x - reach) // cell), int((hi_x + reach) // cell) + 1):
+            for gy in range(gy0, gy1):
+                key = (gx, gy)
+                if key in grid:
+                    grid[key].append(n)
+                else:
+                    grid[key] = [n]
     bad = []
     for b, text in boxes:
         seen = set()
@@ -559,13 +574,15 @@ def check_labels(paths, lines=False):
         # sheet: a sweep along x (boxes by their left edges: a box meets the ones that begin
         # before its right edge)
         order = sorted(range(len(boxes)), key=lambda k: boxes[k][0][0])
+        lefts = [boxes[k][0][0] for k in order]
         pairs = []
         for m, i in enumerate(order):
             right = boxes[i][0][2]
-            for j in order[m + 1:]:
-                if right - boxes[j][0][0] <= 0.01:
+            for k in range(m + 1, len(order)):
+                if right - lefts[k] <= 0.01:
                     break
-                pairs.append((min(i, j), max(i, j)))
+                j = order[k]
+                pairs.append((i, j) if i < j else (j, i))
         for i, j in sorted(pairs):
             (a, ta), (b, tb) = boxes[i], boxes[j]
             w = min(a[2], b[2]) - max(a[0], b[0])
