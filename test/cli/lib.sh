@@ -143,6 +143,20 @@ heavy_deck() {
   return 1
 }
 
+# pdf_stand_in: the directory of a stand-in rsvg-convert that writes its -o file ("stand-in
+# PDF") at once, for the runs of `kinetostat sheets` whose PDF no check reads (rsvg-convert is
+# half of such a run's processor time): PATH="$(pdf_stand_in):$PATH" "$KINETOSTAT" sheets ...
+pdf_stand_in() {
+  local dir="$cli_tmp/pdf_stand_in"
+  if [ ! -x "$dir/rsvg-convert" ]; then
+    mkdir -p "$dir"
+    printf '#!/bin/sh\nwhile [ $# -gt 1 ] && [ "$1" != -o ]; do shift; done\necho "stand-in PDF" >"$2"\n' \
+      >"$dir/rsvg-convert"
+    chmod +x "$dir/rsvg-convert"
+  fi
+  echo "$dir"
+}
+
 # run_ks_cached KEY ARGS...: run_ks ARGS once per suite run: the scripts that need the same
 # output (the CSV with --kinematics of every bundled deck: test_dxf, test_kinematics,
 # test_npy, test_plans) share it under $cli_tmp/cache/KEY; $out, $err and $rc as run_ks sets them (the

@@ -71,16 +71,10 @@ for deck in $sheets_decks; do
 done
 
 # The PDFs (rsvg-convert, half of a run's processor time) are checked above; the later runs of
-# the default suite write a stand-in PDF (an rsvg-convert on PATH that writes its -o file), their
-# SVG and DXF as ever; with tools/test --long every run converts. PATH is restored at the end.
+# the default suite write a stand-in PDF (lib.sh: pdf_stand_in), their SVG and DXF as ever; with
+# tools/test --long every run converts. PATH is restored at the end.
 sheets_path="$PATH"
-if [ "${KINETOSTAT_LONG:-0}" != 1 ] && command -v rsvg-convert >/dev/null; then
-  mkdir -p "$cli_tmp/sheets_no_pdf"
-  printf '#!/bin/sh\nwhile [ $# -gt 1 ] && [ "$1" != -o ]; do shift; done\necho "stand-in PDF" >"$2"\n' \
-    >"$cli_tmp/sheets_no_pdf/rsvg-convert"
-  chmod +x "$cli_tmp/sheets_no_pdf/rsvg-convert"
-  PATH="$cli_tmp/sheets_no_pdf:$PATH"
-fi
+if [ "${KINETOSTAT_LONG:-0}" != 1 ] && command -v rsvg-convert >/dev/null; then PATH="$(pdf_stand_in):$PATH"; fi
 
 # each Assur group drawn apart on the kinetostatics sheet: every link with one inner joint
 # gets its moment equation about it, a group with a sliding inner pair (PR 3207's 2,3) the
