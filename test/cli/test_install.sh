@@ -40,17 +40,18 @@ if [ "$(cat "$inst/out")" = "binary --version" ] && [ "$(cat "$inst/err")" = "ki
 else fail install-first-run "stdout: $(cat "$inst/out"); stderr: $(cat "$inst/err"); calls: $(cat "$log")"; fi
 
 : >"$log"
-# the best of three runs (a busy machine may stall one)
+# the best of three runs' processor time (user + sys of the script and what it starts: bash's
+# `time`), which the machine's load does not stretch as it does wall time
 took_ms=100000
 for try in 1 2 3; do
-  start=$(date +%s%N)
-  PATH="$ks_path" HOME="$inst" "$inst/tree/tools/kinetostat" a b >"$inst/out" 2>"$inst/err"
-  t=$(( ($(date +%s%N) - start) / 1000000 )); [ "$t" -lt "$took_ms" ] && took_ms=$t
+  t=$( { TIMEFORMAT='%3U %3S'; time PATH="$ks_path" HOME="$inst" "$inst/tree/tools/kinetostat" a b \
+    >"$inst/out" 2>"$inst/err"; } 2>&1 | awk '{ printf "%d", ($1 + $2) * 1000 }')
+  [ "${t:-100000}" -lt "$took_ms" ] && took_ms=$t
 done
 # < 0.1 s over the binary is the promise (docs/install.md measures ~0.01 s with the real
-# binary); here the whole run, stand-in binary included, must take < 100 ms
+# binary); here the whole run, stand-in binary included, must take < 100 ms of processor time
 if [ "$(cat "$inst/out")" = "binary a b" ] && [ ! -s "$inst/err" ] && [ ! -s "$log" ] && [ "$took_ms" -lt 100 ]; then pass
-else fail install-fast-path "took ${took_ms} ms (limit 100); stdout: $(cat "$inst/out"); stderr: $(cat "$inst/err"); calls: $(cat "$log")"; fi
+else fail install-fast-path "took ${took_ms} ms of processor time (limit 100); stdout: $(cat "$inst/out"); stderr: $(cat "$inst/err"); calls: $(cat "$log")"; fi
 
 touch -d '+1 minute' "$inst/tree/src/m.f90"
 PATH="$ks_path" HOME="$inst" "$inst/tree/tools/kinetostat" >"$inst/out" 2>"$inst/err"
