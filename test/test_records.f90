@@ -140,7 +140,7 @@ contains
   subroutine test_random_decks(t)
     type(test_counts_t), intent(inout) :: t
     !> Random decks: of the default run, and with `tools/test --long` (the first are the same).
-    integer, parameter :: sample_decks = 200, long_decks = 600
+    integer, parameter :: sample_decks = 100, long_decks = 600
     integer :: n_decks
     character(len=:), allocatable :: text, whole, cut, first_bad
     type(deck_source_t) :: src, patched
