@@ -132,6 +132,9 @@ def check_dxf(data, bad):
         except ValueError:
             bad.append(f"line {i + 1}: group code {lines[i]!r} is not an integer")
             return
+    if not pairs:
+        bad.append("empty: no group codes")
+        return
     if pairs[-1] != (0, "EOF"):
         bad.append(f"does not end with 0/EOF: {pairs[-1]}")
     for i, (code, value) in enumerate(pairs):
