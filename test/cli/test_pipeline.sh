@@ -1,19 +1,36 @@
 # The one run pipeline: JSON and --lang ru for every deck, output that can never lie
 # (no NaN, no '*', checked writes, -o onto devices and FIFOs), option forms.
 
-# --- JSON loads for every bundled deck, and carries the CSV's values
+# --- JSON loads for every bundled deck, and carries the CSV's values: the JSON of every deck
+# (from_golden: the golden check proves data/expected's the binary's output), checked in one
+# Python process after the loop, a verdict line per deck
+: >"$cli_tmp/json_list.tsv"
 for deck in data/*.nml; do
   name=$(basename "$deck" .nml)
   [ "$name" = assur_toggle ] && continue
-  run_ks "$deck" --format json
-  # the first key is the layout's version, an integer (docs/cli.md "JSON format version")
-  if [ "$rc" -eq 0 ] && python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); assert d["rows"] and d["columns"]
-v = d.get("format_version"); assert type(v) is int and v >= 1 and list(d)[0] == "format_version", v' "$out" 2>"$cli_tmp/json.err"; then
-    pass
-  else
-    fail "json-loads-$name" "rc=$rc: $(head -c 300 "$cli_tmp/json.err")"
-  fi
+  from_golden "$name" json --format json
+  if [ "$rc" -ne 0 ]; then fail "json-loads-$name" "rc=$rc: $(head -c 300 "$err")"; continue; fi
+  cp "$out" "$cli_tmp/json_$name.json"
+  printf '%s\t%s\n' "$name" "$cli_tmp/json_$name.json" >>"$cli_tmp/json_list.tsv"
 done
+# the first key is the layout's version, an integer (docs/cli.md "JSON format version")
+python3 - "$cli_tmp/json_list.tsv" >"$cli_tmp/json.out" 2>&1 <<'PY'
+import json, sys
+for line in open(sys.argv[1]):
+    name, path = line.rstrip("\n").split("\t")
+    try:
+        d = json.load(open(path))
+        assert d["rows"] and d["columns"]
+        v = d.get("format_version")
+        assert type(v) is int and v >= 1 and list(d)[0] == "format_version", v
+        print("ok", name)
+    except Exception as exc:  # noqa: BLE001 - the deck's verdict, whatever went wrong
+        print("FAIL %s: %r" % (name, exc))
+PY
+while IFS=$'\t' read -r name _; do
+  if grep -qx "ok $name" "$cli_tmp/json.out"; then pass
+  else fail "json-loads-$name" "$(grep -m1 "^FAIL $name:" "$cli_tmp/json.out" || tail -3 "$cli_tmp/json.out")"; fi
+done <"$cli_tmp/json_list.tsv"
 # the JSON rows equal the CSV rows (csv columns, same text)
 run_ks data/pr3207.nml --format csv; cp "$out" "$cli_tmp/p.csv"
 run_ks data/pr3207.nml --format json; cp "$out" "$cli_tmp/p.json"
