@@ -245,8 +245,10 @@ PY
 # 210 x 297 mm with the frame and the title block; no label over a label or a line, leader
 # lines counted (the class-III group, the four-bar, the two six-bar decks, in English and in
 # Russian); the mechanism 50 mm across at the least (its joints' extent on the sheet)
-sheets_a4="class3:en assur_fourbar:en sixbar_example:en sixbar_example:ru sixbar_flywheel:en"
-if [ "${KINETOSTAT_LONG:-0}" = 1 ]; then sheets_a4="$sheets_a4 class3:ru assur_fourbar:ru sixbar_flywheel:ru"; fi
+# (the six-bar's flywheel deck, a second of processor time, with --long: PR 3207's flywheel deck
+# is drawn on A4 below)
+sheets_a4="class3:en assur_fourbar:en sixbar_example:en sixbar_example:ru"
+if [ "${KINETOSTAT_LONG:-0}" = 1 ]; then sheets_a4="$sheets_a4 sixbar_flywheel:en class3:ru assur_fourbar:ru sixbar_flywheel:ru"; fi
 for deck_lang in $sheets_a4; do
   deck="${deck_lang%:*}"; lang="${deck_lang#*:}"
   dir="$cli_tmp/sheets_a4_${deck}_$lang"
