@@ -38,6 +38,7 @@ contains
     call test_many_groups(t)
     call test_prescribed_speed_law(t)
     call test_window(t)
+    call test_rrr_angles(t)
   end subroutine run_assur_tests
 
   !> Uniform number in [lo, hi] from the LCG state.
@@ -306,6 +307,65 @@ contains
     dy%at = at
     dy%ang = ang_deg * deg_to_rad
   end function dyad
+
+  !> The RRR pose's link angles (directions by algebra, no acos or sincos) against the
+  !> trigonometric construction on 400 random four-bars, both modes, each at 36 crank
+  !> angles with A->C along every direction (the negative x-axis included): th_a =
+  !> atan2(A->C) + mode * acos(law of cosines) on that branch (not reduced), th_b = the
+  !> direction C->B, within 1e-12 rad (a jump of 2 pi would be 6.3 rad); the direction
+  !> cosines equal cos and sin of the angles within 1e-14.
+  subroutine test_rrr_angles(t)
+    type(test_counts_t), intent(inout) :: t
+    type(assur_mech_t) :: mech
+    type(link_state_t) :: states(0:3)
+    type(dyad_pose_t) :: poses(1)
+    type(error_t), allocatable :: error
+    real(wp), parameter :: z2(2) = 0.0_wp
+    integer(i8) :: state
+    real(wp) :: r1, l2, l3, d_pivot(2), phi, a(2), d(2), l, tha_ref, thb_ref, worst_a, worst_b, worst_e, b(2)
+    integer :: trial, k, mode, tried
+    state = 20261129_i8
+    worst_a = 0.0_wp
+    worst_b = 0.0_wp
+    worst_e = 0.0_wp
+    tried = 0
+    do trial = 1, 400
+      mode = merge(1, -1, mod(trial, 2) == 0)
+      r1 = uniform(state, 0.05_wp, 0.3_wp)
+      ! C on the frame anywhere around A; links long enough to assemble at every angle
+      phi = uniform(state, -pi, pi)
+      d_pivot = uniform(state, 0.5_wp, 2.0_wp) * [cos(phi), sin(phi)]
+      if (mod(trial, 5) == 0) d_pivot(2) = 0.0_wp  ! A->C along the x-axis at phi = 0, 180
+      l2 = uniform(state, 0.5_wp, 2.5_wp)
+      l3 = uniform(state, 0.5_wp, 2.5_wp)
+      mech = make_mech([dyad(kind_rrr, [1, 0], reshape([r1, 0.0_wp, d_pivot(1), d_pivot(2)], [2, 2]), &
+                             [0.0_wp, 0.0_wp], l2, l3, 0.0_wp, mode, z2, 0.0_wp)])
+      do k = 0, 35
+        phi = real(k, wp) * 10.0_wp * deg_to_rad
+        a = r1 * [cos(phi), sin(phi)]
+        d = d_pivot - a
+        l = magnitude(d)
+        if (abs((l2**2 + l**2 - l3**2) / (2.0_wp * l2 * l)) > 0.999_wp) cycle
+        call assur_kinematics(mech, phi, states, poses, error)
+        if (allocated(error)) then
+          call check_true(t, "RRR angles: assembles", .false., error%message)
+          return
+        end if
+        tried = tried + 1
+        tha_ref = atan2(d(2), d(1)) + real(mode, wp) * acos((l2**2 + l**2 - l3**2) / (2.0_wp * l2 * l))
+        b = a + l2 * [cos(tha_ref), sin(tha_ref)]
+        thb_ref = atan2(b(2) - d_pivot(2), b(1) - d_pivot(1))
+        worst_a = max(worst_a, abs(states(2)%th - tha_ref))
+        worst_b = max(worst_b, abs(states(3)%th - thb_ref))
+        worst_e = max(worst_e, abs(states(2)%cos_th - cos(states(2)%th)), abs(states(2)%sin_th - sin(states(2)%th)), &
+                      abs(states(3)%cos_th - cos(states(3)%th)), abs(states(3)%sin_th - sin(states(3)%th)))
+      end do
+    end do
+    call check_true(t, "RRR angles: positions tried", tried > 5000, "only "//int_str(tried))
+    call check_close(t, "RRR angles: th_a against atan2 + mode*acos, rad", 0.0_wp, worst_a, 0.0_wp, 1.0e-12_wp)
+    call check_close(t, "RRR angles: th_b against atan2(C->B), rad", 0.0_wp, worst_b, 0.0_wp, 1.0e-12_wp)
+    call check_close(t, "RRR angles: directions against cos, sin of th", 0.0_wp, worst_e, 0.0_wp, 1.0e-14_wp)
+  end subroutine test_rrr_angles
 
   !> Angle difference wrapped to (-pi, pi].
   pure real(wp) function wrap(x)

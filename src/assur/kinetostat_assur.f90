@@ -145,6 +145,11 @@ module kinetostat_assur
     type(link_balance_t), allocatable :: work_known(:)
     !> See work_states: every pair force's length as the self-check takes it (3*nd+1), N.
     real(wp), allocatable :: work_f_len(:)
+    !> See work_states: each external force's angle (rad, mech%forces(k)%angle) and its
+    !> [cos, sin], taken again only when the angle is another.
+    real(wp), allocatable :: work_force_angle(:)
+    !> See work_force_angle.
+    real(wp), allocatable :: work_force_dir(:, :)
   end type assur_step_t
 
 contains
@@ -265,29 +270,50 @@ contains
     type(link_state_t), allocatable :: states(:)
     type(dyad_pose_t), allocatable :: poses(:)
     type(link_balance_t), allocatable :: known(:)
-    real(wp), allocatable :: f_len(:)
-    integer :: nd, i
+    real(wp), allocatable :: f_len(:), force_angle(:), force_dir(:, :)
+    integer :: nd, i, nf
 
     nd = size(mech%dyads)
+    nf = size(mech%forces)
     call move_alloc(step%work_states, states)
     call move_alloc(step%work_poses, poses)
     call move_alloc(step%work_known, known)
     call move_alloc(step%work_f_len, f_len)
+    call move_alloc(step%work_force_angle, force_angle)
+    call move_alloc(step%work_force_dir, force_dir)
     call reset_step(step, 3 * nd + 1)
     if (allocated(states)) then
       if (size(states) /= 2 * nd + 2 .or. size(poses) /= nd) deallocate (states, poses, known, f_len)
     end if
     if (.not. allocated(states)) allocate (states(0:2 * nd + 1), poses(nd), known(0:2 * nd + 1), f_len(3 * nd + 1))
+    if (allocated(force_angle)) then
+      if (size(force_angle) /= nf) deallocate (force_angle, force_dir)
+    end if
+    if (.not. allocated(force_angle)) then
+      allocate (force_angle(nf), force_dir(2, nf))
+      do i = 1, nf
+        force_angle(i) = mech%forces(i)%angle
+        force_dir(:, i) = unit_at(force_angle(i))
+      end do
+    end if
+    do i = 1, nf
+      if (force_angle(i) /= mech%forces(i)%angle) then
+        force_angle(i) = mech%forces(i)%angle
+        force_dir(:, i) = unit_at(force_angle(i))
+      end if
+    end do
     ! the frames and poses are set by the kinematics; the loads are sums, from zero
     do i = 0, 2 * nd + 1
       known(i) = link_balance_t()
     end do
-    call step_in(mech, phi1, omega1, eps1, f_mag, m_mag, step, states, poses, known, f_len, error, extra, &
+    call step_in(mech, phi1, omega1, eps1, f_mag, m_mag, step, states, poses, known, f_len, force_dir, error, extra, &
                  extra_power, extra_scale, balances)
     call move_alloc(states, step%work_states)
     call move_alloc(poses, step%work_poses)
     call move_alloc(known, step%work_known)
     call move_alloc(f_len, step%work_f_len)
+    call move_alloc(force_angle, step%work_force_angle)
+    call move_alloc(force_dir, step%work_force_dir)
   end subroutine assur_step
 
   !> `step` as a fresh assur_step_t (every scalar at its default) with its pair arrays for
@@ -332,9 +358,10 @@ contains
   !> assur_step with its workspace: the frames `states` (links 0..2*nd+1), the poses `poses`
   !> (nd), the loads `known` (links 0..2*nd+1, at their defaults) and the pair forces'
   !> lengths `f_len` (3*nd+1: every pair force's length as the self-check takes it, N; each
-  !> is added to two links); `step` reset.
-  pure subroutine step_in(mech, phi1, omega1, eps1, f_mag, m_mag, step, states, poses, known, f_len, error, extra, &
-                          extra_power, extra_scale, balances)
+  !> is added to two links), each external force's [cos, sin] of its angle `force_dir`;
+  !> `step` reset.
+  pure subroutine step_in(mech, phi1, omega1, eps1, f_mag, m_mag, step, states, poses, known, f_len, force_dir, &
+                          error, extra, extra_power, extra_scale, balances)
     type(assur_mech_t), intent(in) :: mech
     real(wp), intent(in) :: phi1, omega1, eps1
     real(wp), intent(in) :: f_mag(:)
@@ -344,6 +371,7 @@ contains
     type(dyad_pose_t), intent(inout) :: poses(:)
     type(link_balance_t), intent(inout) :: known(0:)
     real(wp), intent(inout) :: f_len(:)
+    real(wp), intent(in) :: force_dir(:, :)
     type(error_t), allocatable, intent(out) :: error
     type(link_balance_t), intent(in), optional :: extra(0:)
     real(wp), intent(in), optional :: extra_power
@@ -385,9 +413,12 @@ contains
         i = fo%link
         ps = point_on(states(i), fo%at)
         if (fo%follow) then
-          dir = unit_at(fo%angle + states(i)%th)
+          ! the force's own direction turned by the link's angle (its cos and sin at hand)
+          associate (e => force_dir(:, k), c => states(i)%cos_th, s => states(i)%sin_th)
+            dir = [c * e(1) - s * e(2), s * e(1) + c * e(2)]
+          end associate
         else
-          dir = unit_at(fo%angle)
+          dir = force_dir(:, k)
         end if
         call balance_add_force(known(i), states(i)%o, ps%p, f_mag(k) * dir)
         term = dot_product(f_mag(k) * dir, ps%v)

@@ -241,8 +241,9 @@ contains
   !> The CSV row `v` of one step, in the order of assur_columns. Forces below `noise_rel`
   !> times the step's largest force (moments below that force times the crank's length
   !> scale) are roundoff: printed as 0 with angle 0; so are single components below that floor
-  !> (a force along an axis gets exactly that axis' angle).
-  pure subroutine assur_row(deck, s, crank, turn, v)
+  !> (a force along an axis gets exactly that axis' angle). Without `angles` (a run whose
+  !> output shows no angle) the angle cells are 0.
+  pure subroutine assur_row(deck, s, crank, turn, v, angles)
     !> Validated deck.
     type(assur_deck_t), intent(in) :: deck
     !> One step.
@@ -253,8 +254,13 @@ contains
     real(wp), intent(in) :: turn(:, :)
     !> The row (assur_row_size values).
     real(wp), intent(out) :: v(:)
+    !> Whether the pair forces' angles are computed (default true).
+    logical, intent(in), optional :: angles
     real(wp) :: floor, f(2), mfloor, nn, mm, f_mag
     integer :: ip, np, pos
+    logical :: with_angles
+    with_angles = .true.
+    if (present(angles)) with_angles = angles
     np = size(s%f, 2)
     ! every pair's |F| first, kept in its magnitude's place until the pair is written
     floor = 0.0_wp
@@ -287,7 +293,9 @@ contains
         v(pos + 1) = magnitude(f)
       end if
       ! (else f is +-s%f exactly, turned by 0: its length is the one already in place)
-      if (deck%angles_signed) then
+      if (.not. with_angles) then
+        v(pos + 2) = 0.0_wp
+      else if (deck%angles_signed) then
         v(pos + 2) = angle_180_deg(f)
       else
         v(pos + 2) = angle_360_deg(f)

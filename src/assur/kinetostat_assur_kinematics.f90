@@ -17,7 +17,7 @@
 !> slider's reference point moves (any offset of the slider is part of the line's position).
 module kinetostat_assur_kinematics
   use kinetostat_kinds, only: wp, rad_to_deg
-  use kinetostat_vec2, only: unit_at, perp, cross, magnitude
+  use kinetostat_vec2, only: unit_at, perp, cross, magnitude, fast_magnitude
   use kinetostat_text, only: real_str
   implicit none
   private
@@ -245,13 +245,19 @@ contains
     end select
   end subroutine set_dyad_pose
 
-  !> RRR: B = A + l2 e(th_a) = C + l3 e(th_b); mode +1 puts B left of A->C.
+  !> RRR: B = A + l2 e(th_a) = C + l3 e(th_b); mode +1 puts B left of A->C. The directions
+  !> come from the triangle ABC by algebra: e_a is A->C's unit vector turned by the angle at
+  !> A (its cosine by the law of cosines, its sine from that cosine), e_b is C->B's unit
+  !> vector; each link's angle is the atan2 of its direction, th_a on the branch
+  !> atan2(A->C) + mode * angle at A (in (-2 pi, 2 pi]: the same angle as before, not
+  !> reduced into (-pi, pi]).
   pure subroutine pose_rrr(g, a, c, pose)
     type(dyad_geometry_t), intent(in) :: g
     type(point_state_t), intent(in) :: a, c
     type(dyad_pose_t), intent(inout) :: pose
-    real(wp) :: d(2), l, cos_al, alpha, tha, thb, b(2), ea(2), eb(2), x(2), rhs(2), ua, ub
-    logical :: ok
+    real(wp), parameter :: two_pi = 2.0_wp * acos(-1.0_wp)
+    real(wp) :: d(2), l, cos_al, sin_al, tha, thb, b(2), ea(2), eb(2), x(2), rhs(2), ua, ub, dh(2), cb(2)
+    logical :: ok, d_up, d_down
     d = c%p - a%p
     l = magnitude(d)
     if (.not. l > 0.0_wp) then
@@ -266,12 +272,27 @@ contains
         real_str(abs(g%l2 - g%l3))//", "//real_str(g%l2 + g%l3)//"] m"
       return
     end if
-    alpha = acos(max(-1.0_wp, min(1.0_wp, cos_al)))
-    tha = atan2(d(2), d(1)) + real(g%mode, wp) * alpha
-    ea = unit_at(tha)
+    cos_al = max(-1.0_wp, min(1.0_wp, cos_al))
+    ! sin of the angle at A (in [0, pi]), signed by the mode: (1 - c)(1 + c) keeps its digits
+    ! where c is near +-1
+    sin_al = real(g%mode, wp) * sqrt((1.0_wp - cos_al) * (1.0_wp + cos_al))
+    dh = d / l
+    ea = [dh(1) * cos_al - dh(2) * sin_al, dh(2) * cos_al + dh(1) * sin_al]
     b = a%p + g%l2 * ea
-    thb = atan2(b(2) - c%p(2), b(1) - c%p(1))
-    eb = unit_at(thb)
+    cb = b - c%p
+    thb = atan2(cb(2), cb(1))
+    eb = cb / fast_magnitude(cb)
+    ! th_a on the branch of atan2(d) + mode * alpha: atan2(d) lies in (0, pi] (d_up) or in
+    ! [-pi, 0) (d_down, -pi for d(2) = -0); adding alpha in [0, pi] turns past pi only from
+    ! above the x-axis, subtracting it past -pi only from below
+    tha = atan2(ea(2), ea(1))
+    d_up = d(2) > 0.0_wp .or. (d(2) == 0.0_wp .and. d(1) < 0.0_wp .and. sign(1.0_wp, d(2)) > 0.0_wp)
+    d_down = d(2) < 0.0_wp .or. (d(2) == 0.0_wp .and. d(1) < 0.0_wp .and. sign(1.0_wp, d(2)) < 0.0_wp)
+    if (g%mode > 0) then
+      if (d_up .and. tha <= 0.0_wp) tha = tha + two_pi
+    else
+      if (d_down .and. tha > 0.0_wp) tha = tha - two_pi
+    end if
     call solve2(g%l2 * perp(ea), -g%l3 * perp(eb), c%v - a%v, x, ok)
     if (.not. ok) then
       pose%status = pose_dead
@@ -312,7 +333,7 @@ contains
     s = -dt + real(g%mode, wp) * sqrt(max(disc, 0.0_wp))
     b = gp%p + s * t
     tha = atan2(b(2) - a%p(2), b(1) - a%p(1))
-    ea = unit_at(tha)
+    ea = (b - a%p) / fast_magnitude(b - a%p)
     call solve2(g%l2 * perp(ea), -t, gp%v + s * gam_u * n - a%v, x, ok)
     if (.not. ok) then
       pose%status = pose_dead

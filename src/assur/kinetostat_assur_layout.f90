@@ -290,7 +290,7 @@ contains
           first_bad = min(first_bad, kk)
           cycle
         end if
-        call assur_row(self%deck, step, crank, turn, table%rows(1:nv, i))
+        call assur_row(self%deck, step, crank, turn, table%rows(1:nv, i), table%force_angles_wanted)
         if (self%deck%friction_on) then
           table%rows(nv + 1:nc, i) = friction_csv_values(self%deck, step, fs)
           fsteps(i) = fs

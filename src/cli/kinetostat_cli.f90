@@ -252,6 +252,7 @@ contains
         call system_clock(progress_start, progress_rate)
         progress_delay = progress_delay_seconds() * progress_rate
         if (allocated(args%out_file)) call spool%aim(args%out_file)
+        args%options%rows_unread = .true.
         call run_deck(args%deck, args%options, table, out, error, spool)
         call progress_line("")
         ran = .not. allocated(error)

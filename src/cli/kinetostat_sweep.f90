@@ -519,6 +519,7 @@ contains
     if (allocated(result%error)) return
     call create_mechanism(group, mech)
     options%format = format_summary
+    options%rows_unread = .true.
     options%shaking = shaking
     options%overrides = result%overrides
     options%allow_selfcheck_failure = sweep_allows_selfcheck_failure

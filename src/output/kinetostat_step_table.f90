@@ -180,6 +180,10 @@ module kinetostat_step_table
     !> Whether `solve` adds the kinematics and link-axes columns (true by default; the run
     !> pipeline turns it off when no output of the run shows them).
     logical :: kinematics_wanted = .true.
+    !> Whether `solve` computes the pair forces' angle columns (true by default; the run
+    !> pipeline turns it off when neither the output nor the caller reads them: a plain
+    !> --format summary, a sweep's variant; such a run's angle cells are 0).
+    logical :: force_angles_wanted = .true.
     !> The columns.
     type(column_t), allocatable :: columns(:)
     !> Values, rows(column, row).

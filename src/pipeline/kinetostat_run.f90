@@ -130,6 +130,10 @@ module kinetostat_run
     !> --allow-selfcheck-failure: a failed self-check is a warning and the output is
     !> written (by default it is a computation error, exit 3, and nothing is written).
     logical :: allow_selfcheck_failure = .false.
+    !> The caller reads the run's output, tallies and warnings, not its rows (a plain run,
+    !> a sweep's variant): with --format summary (no --shaking, --plans or --frame link) the
+    !> columns no summary shows (the pair forces' angles) need not be computed.
+    logical :: rows_unread = .false.
     !> kinetostat sheets: the course sheet drawn by --format svg/dxf (course_none: the run's
     !> own sheet), its paper ("A1" .. "A4", landscape), the title block's designation
     !> (графа 2 and 26), the sheet's number and the number of sheets (0: 1 of 1).
@@ -247,6 +251,8 @@ contains
     table%kinematics_shown = options%kinematics
     table%kinematics_wanted = options%kinematics .or. options%link_frame .or. options%format == format_svg .or. &
       options%plans .or. options%format == format_plans .or. options%format == format_dxf .or. options%shaking
+    table%force_angles_wanted = .not. (options%rows_unread .and. options%format == format_summary .and. &
+      .not. (options%shaking .or. options%plans .or. options%link_frame .or. options%kinematics))
     pairs_asked = ""
     if (allocated(options%pairs)) pairs_asked = options%pairs
     head%chunk = options%echo_chunk
