@@ -568,7 +568,8 @@ contains
     w = inner(3) - inner(1) - 12.0_wp
     call sheet%set_layer(layer_text)
     call sheet%text(inner(1) + 6.0_wp, inner(2) + 7.0_wp, heading, "title", size=fitted_size(heading, 4.5_wp, w, 0.8_wp))
-    call sheet%text(inner(1) + 6.0_wp, inner(2) + 12.5_wp, title, "subtitle", size=fitted_size(title, 3.0_wp, w, 0.6_wp), &
+    ! (the title often in capitals, Cyrillic ones wider than 0.6 of the size: fitted at 0.72)
+    call sheet%text(inner(1) + 6.0_wp, inner(2) + 12.5_wp, title, "subtitle", size=fitted_size(title, 3.0_wp, w, 0.72_wp), &
       plain=.true.)
     line = deck_line(table, lang)
     call sheet%text(inner(1) + 6.0_wp, inner(2) + 17.5_wp, line, "subtitle", &
