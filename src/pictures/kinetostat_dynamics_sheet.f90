@@ -445,7 +445,7 @@ contains
       ! the labels when every line is drawn: the origin, k and l (on the J = 0 axis: anywhere
       ! inside the axes, the lines being the obstacles)
       box = [q%left, q%top, q%left + q%width, q%top + q%height]
-      call sheet%place_label("O", "label", ox, oy, 0.75_wp * pi, box)
+      call sheet%place_label("O", "label", ox, oy, -0.25_wp * pi, box)
       if (on_axis) then
         call sheet%place_label("k", "label", q%sx(0.0_wp), q%sy(yk), -0.25_wp * pi, box, colour=red)
         call sheet%place_label("l", "label", q%sx(0.0_wp), q%sy(yl), 0.25_wp * pi, box, colour=red)
@@ -457,6 +457,9 @@ contains
       text = "ψ_max = "//fixed_number(psi_k, 2)//"° (omega_max^2/2 · μJ/μT = "//fixed_number(tan(psi_k * pi / 180.0_wp), &
         4)//"),  ψ_min = "//fixed_number(psi_l, 2)//"° (omega_min^2/2 · μJ/μT = "// &
         fixed_number(tan(psi_l * pi / 180.0_wp), 4)//")"
+      ! (A4 portrait: the law of the angles, not their tangents, in a line legible at 2.4 mm)
+      if (portrait) text = "ψ_max = "//fixed_number(psi_k, 2)//"°,  ψ_min = "//fixed_number(psi_l, 2)//"°  ("// &
+        words("tan", "тангенс", lang)//" ψ = omega^2/2 · μJ/μT)"
       call sheet%text(x0 + 2.0_wp, q%top + q%height + 14.0_wp, text, "small", size=fitted_size(text, 2.4_wp, &
         w - 4.0_wp, 0.62_wp))
       text = "k–l = "//fixed_number(kl, 1)//" "//unit_word("mm", lang)//";  J_fw = (k–l)·μT/(δ · omega_m^2) = "// &
