@@ -152,15 +152,21 @@ contains
   end function chart_y
 
   !> A linear dimension between the points a and b (sheet mm) on a dimension line `offset` mm
-  !> to the left of a -> b (negative: right), with extension lines, arrowheads and `text`
-  !> centred above it, along it.
+  !> to the left of a -> b (negative: right), with extension lines (from 1 mm off the points
+  !> to 2 mm past the dimension line), arrowheads and `text` beside the dimension line, on its
+  !> outer side, along it. ГОСТ 2.307 for a narrow one: arrowheads without room between the
+  !> extension lines go outside them, and a value without room there goes on the dimension
+  !> line's continuation past b (so it never lies over an extension line).
   pure subroutine put_dimension(sheet, a, b, offset, text)
     type(sheet_t), intent(inout) :: sheet
     real(wp), intent(in) :: a(2), b(2), offset
     character(*), intent(in) :: text
-    real(wp) :: u(2), n(2), pa(2), pb(2), length, angle, side, up(2), clear
+    real(wp) :: u(2), n(2), pa(2), pb(2), length, angle, side, up(2), clear, tw, ea(2), eb(2)
     real(wp), parameter :: size = 2.8_wp
+    !> Arrowheads' length and the dimension line's length past an outside arrowhead, mm.
+    real(wp), parameter :: head = 2.5_wp, beyond = 4.0_wp
     character(len=*), parameter :: ink = "#000000"
+    logical :: heads_out, value_out
     length = norm2(b - a)
     if (length <= 0.0_wp) return
     u = (b - a) / length
@@ -169,13 +175,30 @@ contains
     side = sign(1.0_wp, offset)
     pa = a + offset * n
     pb = b + offset * n
+    tw = text_width(sheet, text, size)
+    heads_out = length < 2.0_wp * head + 1.0_wp
+    value_out = length < tw + 2.0_wp
     call sheet%line(a(1) + side * 1.0_wp * n(1), a(2) + side * 1.0_wp * n(2), pa(1) + side * 2.0_wp * n(1), &
       pa(2) + side * 2.0_wp * n(2), stroke=ink, width=0.18_wp)
     call sheet%line(b(1) + side * 1.0_wp * n(1), b(2) + side * 1.0_wp * n(2), pb(1) + side * 2.0_wp * n(1), &
       pb(2) + side * 2.0_wp * n(2), stroke=ink, width=0.18_wp)
-    call sheet%line(pa(1), pa(2), pb(1), pb(2), stroke=ink, width=0.18_wp)
-    call sheet%arrow(pa(1) + 3.0_wp * u(1), pa(2) + 3.0_wp * u(2), pa(1), pa(2), ink, 0.18_wp, 2.5_wp)
-    call sheet%arrow(pb(1) - 3.0_wp * u(1), pb(2) - 3.0_wp * u(2), pb(1), pb(2), ink, 0.18_wp, 2.5_wp)
+    ! the dimension line: between the extension lines, on past them for outside arrowheads and
+    ! under a value beyond b
+    ea = pa
+    eb = pb
+    if (heads_out) then
+      ea = pa - beyond * u
+      eb = pb + beyond * u
+    end if
+    if (value_out) eb = pb + (merge(beyond, 0.0_wp, heads_out) + 1.0_wp + tw + 1.0_wp) * u
+    call sheet%line(ea(1), ea(2), eb(1), eb(2), stroke=ink, width=0.18_wp)
+    if (heads_out) then
+      call sheet%arrow(pa(1) - 3.0_wp * u(1), pa(2) - 3.0_wp * u(2), pa(1), pa(2), ink, 0.18_wp, head)
+      call sheet%arrow(pb(1) + 3.0_wp * u(1), pb(2) + 3.0_wp * u(2), pb(1), pb(2), ink, 0.18_wp, head)
+    else
+      call sheet%arrow(pa(1) + 3.0_wp * u(1), pa(2) + 3.0_wp * u(2), pa(1), pa(2), ink, 0.18_wp, head)
+      call sheet%arrow(pb(1) - 3.0_wp * u(1), pb(2) - 3.0_wp * u(2), pb(1), pb(2), ink, 0.18_wp, head)
+    end if
     ! the value beside the dimension line, on its outer side, along it (read from below or
     ! from the right); its glyphs clear of the line whichever way they face
     angle = atan2(u(2), u(1)) * 180.0_wp / pi
@@ -187,9 +210,15 @@ contains
     else
       clear = 0.8_wp + 1.0_wp * size
     end if
-    associate (mid => 0.5_wp * (pa + pb) + side * clear * n)
-      call sheet%text(mid(1), mid(2), text, "label", anchor_middle, rotation=angle)
-    end associate
+    if (value_out) then
+      associate (mid => pb + (merge(beyond, 0.0_wp, heads_out) + 1.0_wp + 0.5_wp * tw) * u + side * clear * n)
+        call sheet%text(mid(1), mid(2), text, "label", anchor_middle, rotation=angle)
+      end associate
+    else
+      associate (mid => 0.5_wp * (pa + pb) + side * clear * n)
+        call sheet%text(mid(1), mid(2), text, "label", anchor_middle, rotation=angle)
+      end associate
+    end if
   end subroutine put_dimension
 
   !> An angle's arc about (cx, cy) of radius r from `start` sweeping `sweep` (deg,

@@ -20,13 +20,13 @@ module kinetostat_dynamics_sheet
   use kinetostat_run_tally, only: flywheel_disc
   use kinetostat_labels, only: unit_word => unit_symbol
   use kinetostat_sheet, only: sheet_t, paper_t, course_paper, layer_text, layer_charts, layer_profile, &
-    anchor_start, anchor_middle, anchor_end
+    anchor_start, anchor_middle, anchor_end, class_font_size
   use kinetostat_title_block, only: put_sheet_format, title_block_from_table, block_height, header_indent, &
     deck_line, block_width
   use kinetostat_mechanism_sheet, only: fitted_size
   use kinetostat_scales, only: round_scale, nice_step, scale_number, standard_drawing_scale, drawing_scale_t
   use kinetostat_run_sheet, only: put_axes
-  use kinetostat_design_sheet, only: words, put_dimension, put_table, dot
+  use kinetostat_design_sheet, only: words, put_dimension, put_table, dot, text_width
   implicit none
   private
   public :: draw_dynamics_sheet, sheet_header, plot_t, put_cycle_chart, put_cycle_curve, plot_box
@@ -70,9 +70,17 @@ contains
     real(wp) :: disc_d, disc_b, disc_m
     type(plot_t) :: p
     type(drawing_scale_t) :: disc_scale
+    !> The length of a curve's stroke in a legend, mm.
+    real(wp), parameter :: legend_stroke = 5.0_wp
     character(len=:), allocatable :: deg, nm, joule, kgm2, xlabel, a_drive, a_load
     integer :: kmax, kmin
+    !> The names of the curves of the chart drawn last, placed when all its lines are drawn
+    !> (names): the text, its colour and dash, the point of the curve it names.
+    character(len=32) :: name_text(4), name_colour(4), name_dash(4)
+    real(wp) :: name_x(4), name_y(4)
+    integer :: names_queued
 
+    names_queued = 0
     page = course_paper(paper%name)
     call sheet%open(page, lang, words("Machine dynamics", "Динамический анализ машины", lang)// &
       " - "//table%deck, &
@@ -135,16 +143,19 @@ contains
       "Приведенные моменты M_пр и M_д", lang), p)
     call curve(p, column("M_red"), blue, "", words("M_red", "M_пр", lang))
     call curve(p, md, black, "2 1", words("M_d", "M_д", lang))
+    call names(p)
     y = y + chart_height(p) + gap
     call chart(x1, y, [column("A_Md"), column("A_red"), column("dT")], joule, "A", words( &
       "Work of the forces A_d, A_r and dT = A_d + A_r", "Работы сил A_д, A_с и ΔT = A_д + A_с", lang), p)
     call curve(p, column(a_drive), green, "", words("A_d", "A_д", lang))
     call curve(p, column(a_load), red, "", words("A_r", "A_с", lang))
     call curve(p, column("dT"), black, "", "ΔT")
+    call names(p)
     y = y + chart_height(p) + gap
     call chart(x1, y, [column("J_red")], kgm2, "J", words("Reduced moment of inertia J_red", &
       "Приведенный момент инерции J_пр", lang), p, zero=.true.)
     call curve(p, column("J_red"), blue, "", words("J_red", "J_пр", lang))
+    call names(p)
 
     ! column 2: T_I with its extremes; omega1; eps1 (down to the title block when the column
     ! reaches over it: A3)
@@ -161,6 +172,7 @@ contains
     call sheet%line(p%left, p%sy(column_at("T_I", kmin)), p%left + p%width, p%sy(column_at("T_I", kmin)), "mean")
     call dot(sheet, [p%sx(phi(kmax)), p%sy(column_at("T_I", kmax))], red, 0.8_wp)
     call dot(sheet, [p%sx(phi(kmin)), p%sy(column_at("T_I", kmin))], red, 0.8_wp)
+    call names(p)
     ! (A4 portrait: the extremes under the chart, its plot too low for labels clear of its lines)
     ! (and ΔT; J_I = ΔT/(δ ω_m²) is the flywheel table's J by Merzalov)
     if (portrait) then
@@ -188,6 +200,7 @@ contains
     call sheet%line(p%left, p%sy(wmax), p%left + p%width, p%sy(wmax), "mean")
     call sheet%line(p%left, p%sy(wmin), p%left + p%width, p%sy(wmin), "mean")
     call curve(p, column("omega1"), blue, "", "ω1")
+    call names(p)
     if (portrait) then
       call foot(p, "ω_m = "//short_number(wm)//",  ω_max = "//short_number(wmax)//",  ω_min = "// &
         short_number(wmin)//" "//unit_word("rad/s", lang))
@@ -200,6 +213,7 @@ contains
     call chart(x2, y, [column("eps1")], unit_word("rad/s^2", lang), "ε", &
       words("Angular acceleration ε1", "Угловое ускорение начального звена ε1", lang), p)
     call curve(p, column("eps1"), blue, "", "ε1")
+    call names(p)
 
     ! column 3: Wittenbauer's diagram; the flywheel and the figures above the title block
     bottom3 = inner(4) - block_height - gap
@@ -244,13 +258,61 @@ contains
       call put_cycle_chart(sheet, x0, y0, cw, hmax, phi, mu_phi, values, unit, sym, heading, xlabel, lang, q, zero)
     end subroutine chart
 
-    !> A curve over the cycle with its name (put_cycle_curve).
+    !> A curve over the cycle; its name is queued for `names` (the chart's first curve empties
+    !> the queue).
     subroutine curve(q, v, colour, dash, name)
       type(plot_t), intent(in) :: q
       real(wp), intent(in) :: v(:)
       character(*), intent(in) :: colour, dash, name
-      call put_cycle_curve(sheet, q, phi, v, colour, dash, name)
+      integer :: k
+      if (names_queued >= size(name_text)) names_queued = 0
+      call sheet%polyline(q%sx(phi(:size(v))), q%sy(v), stroke=colour, width=0.45_wp, dash=dash)
+      k = max(1, nint(0.62_wp * size(v)))
+      names_queued = names_queued + 1
+      name_text(names_queued) = name
+      name_colour(names_queued) = colour
+      name_dash(names_queued) = dash
+      name_x(names_queued) = q%sx(phi(k))
+      name_y(names_queued) = q%sy(v(k))
     end subroutine curve
+
+    !> The names of the chart's curves, when every line of the chart is drawn: on A4 portrait
+    !> (plots too low for a name clear of the curves and levels) a legend right of the plot,
+    !> a stroke of each curve and its name, where the panel has room for it; else each name
+    !> placed beside its curve.
+    subroutine names(q)
+      type(plot_t), intent(in) :: q
+      real(wp) :: room, longest, lx, ly
+      integer :: i
+      room = x_panel_right(q) - (q%left + q%width)
+      longest = 0.0_wp
+      do i = 1, names_queued
+        longest = max(longest, text_width(sheet, trim(name_text(i)), class_font_size("label")))
+      end do
+      call sheet%set_layer(layer_charts)
+      if (portrait .and. room >= legend_stroke + 5.0_wp + longest) then
+        lx = q%left + q%width + 2.5_wp
+        do i = 1, names_queued
+          ly = q%top + 2.0_wp + 4.0_wp * (i - 1)
+          call sheet%line(lx, ly, lx + legend_stroke, ly, stroke=trim(name_colour(i)), width=0.45_wp, &
+            dash=trim(name_dash(i)))
+          call sheet%text(lx + legend_stroke + 1.0_wp, ly + 1.0_wp, trim(name_text(i)), "label", anchor_start, &
+            colour=trim(name_colour(i)))
+        end do
+      else
+        do i = 1, names_queued
+          call sheet%place_label(trim(name_text(i)), "label", name_x(i), name_y(i), -0.5_wp * pi, plot_box(q), &
+            colour=trim(name_colour(i)))
+        end do
+      end if
+      names_queued = 0
+    end subroutine names
+
+    !> The right edge of the panel of the chart q (a chart's panel is the column's width).
+    pure real(wp) function x_panel_right(q)
+      type(plot_t), intent(in) :: q
+      x_panel_right = q%left - 19.0_wp + cw
+    end function x_panel_right
 
     !> The panel's height of a chart.
     pure real(wp) function chart_height(q)
@@ -282,7 +344,7 @@ contains
       real(wp), intent(in) :: x0, y0, w, h
       real(wp), allocatable :: jr(:), dt(:)
       real(wp) :: e0, sk, sl, yk, yl, jhi, jstep, lo, hi, step, mu_j, mu_t, vmin, vmax, j_end, psi_k, psi_l
-      real(wp) :: ox, oy, kl
+      real(wp) :: ox, oy, kl, box(4)
       type(plot_t) :: q
       integer :: kk, kl_row
       logical :: on_axis
@@ -314,6 +376,15 @@ contains
       hi = step * ceiling(vmax / step - 1.0e-9_wp)
       mu_j = round_scale(jhi, w - 30.0_wp)
       mu_t = round_scale(hi - lo, h - 42.0_wp)
+      ! room for the names of k (above it) and l (under it) inside the axes: a step more
+      ! where either is within 4 mm of the plot's edge
+      do kk = 1, 4
+        if (.not. on_axis) exit
+        if (yl - lo >= 4.0_wp * mu_t .and. hi - yk >= 4.0_wp * mu_t) exit
+        if (yl - lo < 4.0_wp * mu_t) lo = lo - step
+        if (hi - yk < 4.0_wp * mu_t) hi = hi + step
+        mu_t = round_scale(hi - lo, h - 42.0_wp)
+      end do
       q%left = x0 + 22.0_wp
       q%top = y0 + 14.0_wp
       q%width = jhi / mu_j
@@ -334,10 +405,12 @@ contains
       ox = q%sx(0.0_wp)
       oy = q%sy(0.0_wp)
       call sheet%circle(ox, oy, 0.8_wp, "origin")
-      call sheet%place_label("O", "label", ox, oy, 0.75_wp * pi, plot_box(q))
       ! the curve
       call sheet%polyline(q%sx(jr), q%sy(dt), stroke=blue, width=0.45_wp)
-      if (jfw <= 0.0_wp) return
+      if (jfw <= 0.0_wp) then
+        call sheet%place_label("O", "label", ox, oy, 0.75_wp * pi, plot_box(q))
+        return
+      end if
       ! the tangents from k and l on the dT axis
       ! the tangents dT = y + s J over the plot, clipped to its rectangle
       block
@@ -358,8 +431,6 @@ contains
       end block
       if (on_axis) then
         call sheet%line(q%sx(0.0_wp), q%sy(yk), q%sx(0.0_wp), q%sy(yl), stroke=red, width=0.9_wp)
-        call sheet%place_label("k", "label", q%sx(0.0_wp), q%sy(yk), pi, plot_box(q), colour=red)
-        call sheet%place_label("l", "label", q%sx(0.0_wp), q%sy(yl), pi, plot_box(q), colour=red)
       else
         text = words("k, l off the drawing: dT at k = ", "k, l за пределами чертежа: ΔT в k = ", lang)// &
           short_number(yk)//" "//joule//", "//words("at l = ", "в l = ", lang)//short_number(yl)//" "//joule
@@ -371,6 +442,14 @@ contains
       kl_row = minloc(dt - sl * jr, dim=1)
       call dot(sheet, [q%sx(jr(kk)), q%sy(dt(kk))], red, 0.7_wp)
       call dot(sheet, [q%sx(jr(kl_row)), q%sy(dt(kl_row))], red, 0.7_wp)
+      ! the labels when every line is drawn: the origin, k and l (on the J = 0 axis: anywhere
+      ! inside the axes, the lines being the obstacles)
+      box = [q%left, q%top, q%left + q%width, q%top + q%height]
+      call sheet%place_label("O", "label", ox, oy, -0.25_wp * pi, box)
+      if (on_axis) then
+        call sheet%place_label("k", "label", q%sx(0.0_wp), q%sy(yk), -0.25_wp * pi, box, colour=red)
+        call sheet%place_label("l", "label", q%sx(0.0_wp), q%sy(yl), 0.25_wp * pi, box, colour=red)
+      end if
       ! the angles of the tangents with the J axis as drawn: tan psi = omega^2/2 * muJ/muT
       psi_k = atan(sk * mu_j / mu_t) * 180.0_wp / pi
       psi_l = atan(sl * mu_j / mu_t) * 180.0_wp / pi
@@ -378,6 +457,9 @@ contains
       text = "ψ_max = "//fixed_number(psi_k, 2)//"° (omega_max^2/2 · μJ/μT = "//fixed_number(tan(psi_k * pi / 180.0_wp), &
         4)//"),  ψ_min = "//fixed_number(psi_l, 2)//"° (omega_min^2/2 · μJ/μT = "// &
         fixed_number(tan(psi_l * pi / 180.0_wp), 4)//")"
+      ! (A4 portrait: the law of the angles, not their tangents, in a line legible at 2.4 mm)
+      if (portrait) text = "ψ_max = "//fixed_number(psi_k, 2)//"°,  ψ_min = "//fixed_number(psi_l, 2)//"°  ("// &
+        words("tan", "тангенс", lang)//" ψ = omega^2/2 · μJ/μT)"
       call sheet%text(x0 + 2.0_wp, q%top + q%height + 14.0_wp, text, "small", size=fitted_size(text, 2.4_wp, &
         w - 4.0_wp, 0.62_wp))
       text = "k–l = "//fixed_number(kl, 1)//" "//unit_word("mm", lang)//";  J_fw = (k–l)·μT/(δ · omega_m^2) = "// &
@@ -417,7 +499,8 @@ contains
         call sheet%set_layer(layer_text)
         call put_dimension(sheet, [cx - 0.5_wp * bw, cy + 0.5_wp * dw], [cx - 0.5_wp * bw, cy - 0.5_wp * dw], 8.0_wp, &
           "⌀"//fixed_number(1000.0_wp * d, 0))
-        call put_dimension(sheet, [cx - 0.5_wp * bw, cy - 0.5_wp * dw], [cx + 0.5_wp * bw, cy - 0.5_wp * dw], 6.0_wp, &
+        ! (from right to left: a value too wide for the disc goes on the left, away from the table)
+        call put_dimension(sheet, [cx + 0.5_wp * bw, cy - 0.5_wp * dw], [cx - 0.5_wp * bw, cy - 0.5_wp * dw], -6.0_wp, &
           fixed_number(1000.0_wp * b, 0))
         text = words("scale ", "масштаб ", lang)//disc_scale%text//", "// &
           words("dimensions in mm", "размеры в мм", lang)
@@ -488,7 +571,8 @@ contains
     w = inner(3) - inner(1) - 12.0_wp
     call sheet%set_layer(layer_text)
     call sheet%text(inner(1) + 6.0_wp, inner(2) + 7.0_wp, heading, "title", size=fitted_size(heading, 4.5_wp, w, 0.8_wp))
-    call sheet%text(inner(1) + 6.0_wp, inner(2) + 12.5_wp, title, "subtitle", size=fitted_size(title, 3.0_wp, w, 0.6_wp), &
+    ! (the title often in capitals, Cyrillic ones wider than 0.6 of the size: fitted at 0.72)
+    call sheet%text(inner(1) + 6.0_wp, inner(2) + 12.5_wp, title, "subtitle", size=fitted_size(title, 3.0_wp, w, 0.72_wp), &
       plain=.true.)
     line = deck_line(table, lang)
     call sheet%text(inner(1) + 6.0_wp, inner(2) + 17.5_wp, line, "subtitle", &

@@ -602,24 +602,50 @@ contains
       if (norm2(foot - geo%pole_lever) < shortest) return
       call sheet%line(geo%pole_lever(1), geo%pole_lever(2), foot(1), foot(2), stroke=arm_colour, width=0.15_wp, dash="1 0.8")
     end subroutine arm
-    !> A load's arrow(s).
+    !> A load's arrow(s), each in a group "lever-load" (the balancing force's "lever-balancing")
+    !> with what reading the lever needs: the force's name and |F| as computed (N), its arm
+    !> as drawn (mm) and the sense of its moment about the pole (the sign of its power); the
+    !> balancing force's also the crank's length l (m) and the effort computed (N·m or N).
+    !> A force too short to draw keeps its group, empty.
     pure subroutine arrows(sheet, ld, colour, width, short)
       type(sheet_t), intent(inout) :: sheet
       type(lever_load_t), intent(in) :: ld
       character(*), intent(in) :: colour
       real(wp), intent(in) :: width
       character(len=:), allocatable, intent(inout) :: short
-      real(wp) :: tail(2), tip(2)
-      if (norm2(ld%f) / geo%mu_force < shortest) then
-        if (norm2(ld%f) > 0.0_wp) call listed(short, display_name(ld%name, lang))
-        return
-      end if
-      call ends(ld%at, ld%f, tail, tip)
-      call sheet%arrow(tail(1), tail(2), tip(1), tip(2), colour, width, 2.0_wp)
-      if (.not. ld%pair) return
-      call ends(ld%at2, -ld%f, tail, tip)
-      call sheet%arrow(tail(1), tail(2), tip(1), tip(2), colour, width, 2.0_wp)
+      logical :: drawn
+      drawn = norm2(ld%f) / geo%mu_force >= shortest
+      if (.not. drawn .and. norm2(ld%f) > 0.0_wp) call listed(short, display_name(ld%name, lang))
+      call lever_force(sheet, ld, ld%at, ld%f, colour, width, drawn)
+      if (ld%pair) call lever_force(sheet, ld, ld%at2, -ld%f, colour, width, drawn)
     end subroutine arrows
+    !> One force of a load at the image v in its group (arrows).
+    pure subroutine lever_force(sheet, ld, v, f, colour, width, drawn)
+      type(sheet_t), intent(inout) :: sheet
+      type(lever_load_t), intent(in) :: ld
+      real(wp), intent(in) :: v(2), f(2), width
+      character(*), intent(in) :: colour
+      logical, intent(in) :: drawn
+      real(wp) :: tail(2), tip(2)
+      if (ld%name == plans%balancing%name) then
+        call sheet%group("lever-balancing")
+      else
+        call sheet%group("lever-load")
+      end if
+      call sheet%attach("data-name", trim(ld%name))
+      call sheet%attach("data-force", full_number(norm2(f)))
+      call sheet%attach("data-h", full_number(abs(dot_product(f, v)) / max(norm2(f), tiny(1.0_wp)) / geo%mu_lever))
+      call sheet%attach("data-sense", trim(merge("1 ", "-1", dot_product(f, v) >= 0.0_wp)))
+      if (ld%name == plans%balancing%name) then
+        call sheet%attach("data-length", full_number(plans%balancing_length))
+        call sheet%attach("data-effort", full_number(plans%effort))
+      end if
+      if (drawn) then
+        call ends(v, f, tail, tip)
+        call sheet%arrow(tail(1), tail(2), tip(1), tip(2), colour, width, 2.0_wp)
+      end if
+      call sheet%end_group()
+    end subroutine lever_force
     !> A load's name at its arrow(s).
     pure subroutine names(sheet, ld, colour)
       type(sheet_t), intent(inout) :: sheet
@@ -1029,10 +1055,13 @@ contains
       call put(lines, word("balancing effort from the lever", lang)//": "//plans%driver//" = "// &
         short_number(plans%effort)//" "//unit)
     end if
-    call put(lines, word("analytic value of the step", lang)//": "//plans%driver//" = "//short_number(plans%run)// &
-      " "//unit)
-    call put(lines, word("relative difference", lang)//": "//short_number(abs(plans%effort - plans%run) / &
-      max(abs(plans%run), tiny(1.0_wp))))
+    ! (A4's course sheet: its panel the lever's room - the lever to be read off - not these)
+    if (.not. (geo%groups_apart .and. .not. geo%paper%landscape)) then
+      call put(lines, word("analytic value of the step", lang)//": "//plans%driver//" = "//short_number(plans%run)// &
+        " "//unit)
+      call put(lines, word("relative difference", lang)//": "//short_number(abs(plans%effort - plans%run) / &
+        max(abs(plans%run), tiny(1.0_wp))))
+    end if
     if (geo%compared) then
       call put(lines, word("read off the sheet (vectors to 0.5 mm, arms to 1 mm)", lang)//":")
       call put(lines, word("lever", lang)//" "//short_number(geo%effort_lever)//", "//word("polygons", lang)//" "// &

@@ -20,7 +20,7 @@ module kinetostat_plans_sheet
   use kinetostat_sheet, only: paper_t, iso_paper, course_paper
   use kinetostat_mechanism_view, only: mechanism_view_t, fit_mechanism_view
   use kinetostat_plans_apart, only: group_apart_drawing, row_pitch
-  use kinetostat_plans_base, only: plans_t, plan_vector_t, plan_equation_t, load_moment, cross, link_index, &
+  use kinetostat_plans_base, only: plans_t, lever_load_t, plan_vector_t, plan_equation_t, load_moment, cross, link_index, &
     owner, pivot_of, guide_link, component_normal, component_tangential, component_reaction
   implicit none
   private
@@ -122,7 +122,10 @@ contains
       bottom = b(4) - 57.0_wp
       row = 92.0_wp
       sheet%mechanism = [b(1) + 2.0_wp, top, b(1) + 2.0_wp + 0.6_wp * (b(3) - b(1) - 4.0_wp), top + row]
-      sheet%lever = [sheet%mechanism(3) + 2.0_wp, top, b(3) - 2.0_wp, top + row - 32.0_wp]
+      ! (the balancing effort's panel as high as its lines: P_bal and M, the two read off,
+      ! the flywheel's and the friction's shares)
+      sheet%lever = [sheet%mechanism(3) + 2.0_wp, top, b(3) - 2.0_wp, top + row - 2.0_wp - (panel_head + 5.0_wp + &
+        3.2_wp * (merge(2, 0, plans%lever_known) + merge(1, 0, plans%lever_flywheel) + merge(1, 0, plans%lever_friction)))]
       sheet%results = [sheet%lever(1), sheet%lever(4) + 2.0_wp, b(3) - 2.0_wp, top + row]
       sheet%polygons = [b(1) + 2.0_wp, top + row + 2.0_wp, b(3) - 2.0_wp, bottom]
       area = panel_inner(sheet%mechanism) - [0.0_wp, 0.0_wp, 0.0_wp, 4.5_wp]
@@ -222,10 +225,14 @@ contains
       end do
       fmax = max(fmax, norm2(plans%balancing%f))
     end if
-    ! (the course sheet keeps the panel's last 7 mm for its note)
-    call fit_plan(pts, panel_inner(sheet%lever) + 0.6_wp * [lever_arrow, lever_arrow, -lever_arrow, -lever_arrow] - &
-      merge(7.0_wp, 0.0_wp, sheet%groups_apart) * [0.0_wp, 0.0_wp, 0.0_wp, 1.0_wp], sheet%mu_lever, sheet%pole_lever)
-    sheet%mu_force = round_scale(fmax, lever_arrow)
+    if (sheet%groups_apart) then
+      ! (the course sheet: the lever as large as its panel allows, to be read off - lever_fit)
+      call lever_fit(plans, r, sheet%lever, sheet%mu_lever, sheet%pole_lever, sheet%mu_force)
+    else
+      call fit_plan(pts, panel_inner(sheet%lever) + 0.6_wp * [lever_arrow, lever_arrow, -lever_arrow, -lever_arrow], &
+        sheet%mu_lever, sheet%pole_lever)
+      sheet%mu_force = round_scale(fmax, lever_arrow)
+    end if
     ! the polygons: a grid of cells, each polygon at its own scale; an input link's cell
     ! with the link drawn in its left part
     n = size(plans%group_polygons)
@@ -495,6 +502,79 @@ contains
     pole(2) = 0.5_wp * (area(2) + area(4)) + 0.5_wp * (lo(2) + hi(2)) / mu
     pole = anint(pole * 100.0_wp) / 100.0_wp
   end subroutine fit_plan
+
+  !> The course sheet's lever in its panel `box` (x0, y0, x1, y1, mm; its last 7 mm kept for
+  !> its note), as large as the panel allows (its arms are what a student measures): the
+  !> loads' arrows at the round mu_force that makes the largest at most lever_arrow long and
+  !> a quarter of the area's smaller side; the lever at the smallest round mu (the series of
+  !> round_scale) at which the pole, the images and every arrow drawn from its image fit
+  !> with 3.5 mm around them for the names; centred. `r`: the sheet's rotation, rad.
+  pure subroutine lever_fit(plans, r, box, mu, pole, mu_force)
+    type(plans_t), intent(in) :: plans
+    real(wp), intent(in) :: r, box(4)
+    real(wp), intent(out) :: mu, pole(2), mu_force
+    real(wp), parameter :: room = 3.5_wp
+    real(wp), allocatable :: pts(:, :), tails(:, :), arrows(:, :)
+    real(wp) :: area(4), arrow, fmax, lo(2), hi(2), span(2)
+    integer :: i, tries
+    area = panel_inner(box) - [0.0_wp, 0.0_wp, 0.0_wp, 7.0_wp]
+    span = [area(3) - area(1), area(4) - area(2)] - 2.0_wp * room
+    arrow = min(lever_arrow, 0.25_wp * min(area(3) - area(1), area(4) - area(2)))
+    fmax = norm2(plans%balancing%f)
+    do i = 1, size(plans%loads)
+      fmax = max(fmax, norm2(plans%loads(i)%f))
+    end do
+    mu_force = round_scale(fmax, arrow)
+    ! the images (turned by 90 deg more than the sheet, y up) and the arrows (mm) at them
+    allocate (pts(2, 0), tails(2, 0), arrows(2, 0))
+    do i = 1, size(plans%velocities)
+      pts = add(pts, turn(plans%velocities(i)%v, r + 0.5_wp * pi))
+    end do
+    if (plans%lever_known) then
+      do i = 1, size(plans%loads)
+        call put_load(plans%loads(i), pts, tails, arrows)
+      end do
+      call put_load(plans%balancing, pts, tails, arrows)
+    end if
+    pts = add(pts, [0.0_wp, 0.0_wp])
+    ! the points alone first, then the next round mu until the arrows fit too
+    mu = max(round_scale(maxval(pts(1, :)) - minval(pts(1, :)), max(span(1), 1.0_wp)), &
+      round_scale(maxval(pts(2, :)) - minval(pts(2, :)), max(span(2), 1.0_wp)))
+    do tries = 1, 60
+      call extent(mu, lo, hi)
+      if (all(hi - lo <= span)) exit
+      mu = round_scale(mu * (1.0_wp + 1.0e-6_wp), 1.0_wp)
+    end do
+    ! the sheet's y runs down: the turned points' y is flipped
+    pole(1) = 0.5_wp * (area(1) + area(3)) - 0.5_wp * (lo(1) + hi(1))
+    pole(2) = 0.5_wp * (area(2) + area(4)) + 0.5_wp * (lo(2) + hi(2))
+    pole = anint(pole * 100.0_wp) / 100.0_wp
+  contains
+    !> A load's image(s) and its arrow(s) as drawn (a couple's second force reversed).
+    pure subroutine put_load(ld, pts, tails, arrows)
+      type(lever_load_t), intent(in) :: ld
+      real(wp), allocatable, intent(inout) :: pts(:, :), tails(:, :), arrows(:, :)
+      pts = add(pts, turn(ld%at, r + 0.5_wp * pi))
+      tails = add(tails, turn(ld%at, r + 0.5_wp * pi))
+      arrows = add(arrows, turn(ld%f, r) / mu_force)
+      if (.not. ld%pair) return
+      pts = add(pts, turn(ld%at2, r + 0.5_wp * pi))
+      tails = add(tails, turn(ld%at2, r + 0.5_wp * pi))
+      arrows = add(arrows, -turn(ld%f, r) / mu_force)
+    end subroutine put_load
+    !> The drawing's extent at mu (mm from the pole, y up).
+    pure subroutine extent(m, lo, hi)
+      real(wp), intent(in) :: m
+      real(wp), intent(out) :: lo(2), hi(2)
+      integer :: j
+      lo = minval(pts, 2) / m
+      hi = maxval(pts, 2) / m
+      do j = 1, size(tails, 2)
+        lo = min(lo, tails(:, j) / m + arrows(:, j))
+        hi = max(hi, tails(:, j) / m + arrows(:, j))
+      end do
+    end subroutine extent
+  end subroutine lever_fit
 
   !> A panel's drawing area: less its heading band and its scale line.
   pure function panel_inner(box) result(area)

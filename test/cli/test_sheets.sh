@@ -376,5 +376,91 @@ ok=1
 for f in "$dir"/*.svg; do python3 "$root/tools/output_check.py" xml "$f" --forbid "<b>" --forbid "<i>" >/dev/null 2>&1 || ok=0; done
 for f in "$dir"/*.dxf; do python3 "$root/tools/output_check.py" dxf "$f" >/dev/null 2>&1 || ok=0; done
 [ "$ok" = 1 ] && pass || fail sheets-hostile-strings "exit $rc or a sheet not well formed"
+
+# Zhukovsky's lever read off as a student reads it (A1 and A4, PR 3207 with its flywheel):
+# every load's arm and the balancing force's measured on the drawing (the distance from the
+# pole p to the line of its arrow, the arrow's tail and tip as drawn) and read to 0.5 mm, the
+# forces as the table gives them (a load too short to draw: its arm as the lever's group
+# states it); P_b = -sum(±F h) / h_b, M = P_b l. The read-off must agree with the computed
+# moment within 2 % of it, every drawn arm must be the one its group states within 0.1 mm
+# (the coordinates' 0.01 mm over the arrow's length), and the worst case of reading every
+# length 0.25 mm off must stay within 10 % of the moment (2 % on A1): a lever large enough to
+# read. Must fail: F5c's arrow moved 2 mm, its force 5 % off.
+sheets_lever_read() {  # SVG BOUND%: "ok ..." or "differs: ..."
+  python3 - "$@" <<'PY'
+import math, re, sys
+text = open(sys.argv[1], encoding="utf-8").read()
+bound_limit = float(sys.argv[2])
+lever = re.search(r'<g class="lever" data-pole="([-0-9.]+) ([-0-9.]+)" data-mu="([^"]+)"', text)
+px, py = float(lever.group(1)), float(lever.group(2))
+def groups(cls):
+    for g in re.finditer(r'<g class="' + cls + r'"([^>]*)>(.*?)</g>', text, re.S):
+        a = dict(re.findall(r'(data-[\w-]+)="([^"]*)"', g.group(1)))
+        line = re.search(r'<line x1="([-0-9.]+)" y1="([-0-9.]+)"', g.group(2))
+        head = re.search(r'<polygon points="([-0-9.]+),([-0-9.]+)', g.group(2))
+        ends = (float(line.group(1)), float(line.group(2)), float(head.group(1)), float(head.group(2))) if line and head else None
+        yield a, ends
+def arm(e):
+    x1, y1, x2, y2 = e
+    return abs((x2 - x1) * (py - y1) - (y2 - y1) * (px - x1)) / math.hypot(x2 - x1, y2 - y1)
+def read(h):
+    return 0.5 * round(h / 0.5)
+bad, total, spread, n = [], 0.0, 0.0, 0
+for a, e in groups("lever-load"):
+    f, h = float(a["data-force"]), float(a["data-h"])
+    if e:
+        n += 1
+        if abs(arm(e) - h) > 0.1:
+            bad.append(f'{a["data-name"]}: arm drawn {arm(e):.2f} mm, stated {h:.2f} mm')
+        h = arm(e)
+    total += float(a["data-sense"]) * f * read(h)
+    spread += 0.25 * f
+(b, e), = list(groups("lever-balancing"))
+hb = read(arm(e) if e else float(b["data-h"]))
+p = -total / (float(b["data-sense"]) * hb)
+m, l, computed = p * float(b["data-length"]), float(b["data-length"]), abs(float(b["data-effort"]))
+worst = (spread + 0.25 * abs(p)) / hb * l
+if abs(abs(m) - computed) > 0.02 * computed:
+    bad.append(f"read off {m:.4g} N·m, computed {computed:.4g} N·m (more than 2 % apart)")
+if worst > bound_limit / 100 * computed:
+    bad.append(f"too small to read: lengths 0.25 mm off move M by up to {100 * worst / computed:.1f} % (limit {bound_limit} %)")
+if n == 0:
+    bad.append("no load drawn on the lever")
+print("differs: " + "; ".join(bad) if bad else f"ok read off {m:.4g} N·m, computed {computed:.4g} N·m, |pb| {hb} mm, worst {100 * worst / computed:.1f} %")
+PY
+}
+for case in "sheets_pr3207_flywheel_en:2" "sheets_a4_pr3207:10"; do
+  svg="$cli_tmp/${case%:*}/kinetostatics.svg"
+  verdict=$(sheets_lever_read "$svg" "${case#*:}")
+  case "$verdict" in ok*) pass ;; *) fail "sheets-lever-read-${case%:*}" "$verdict" ;; esac
+done
+svg="$cli_tmp/sheets_a4_pr3207/kinetostatics.svg"
+python3 -c "import re, sys; t = open(sys.argv[1], encoding='utf-8').read(); print(re.sub(r'(data-name=\"F5c\".*?<line x1=\"[-0-9.]+\" y1=\")([-0-9.]+)', lambda m: m.group(1) + f'{float(m.group(2)) + 2:.2f}', t, count=1, flags=re.S), end='')" \
+  "$svg" >"$cli_tmp/lever_bad.svg"
+verdict=$(sheets_lever_read "$cli_tmp/lever_bad.svg" 10)
+case "$verdict" in "differs: F5c: arm drawn"*) pass ;; *) fail sheets-lever-read-must-fail-arm "an arrow 2 mm off passed: $verdict" ;; esac
+python3 -c "import re, sys; t = open(sys.argv[1], encoding='utf-8').read(); print(re.sub(r'(data-name=\"F5c\" data-force=\")([^\"]+)', lambda m: m.group(1) + repr(1.05 * float(m.group(2))), t, count=1), end='')" \
+  "$svg" >"$cli_tmp/lever_bad.svg"
+verdict=$(sheets_lever_read "$cli_tmp/lever_bad.svg" 10)
+case "$verdict" in "differs: read off"*) pass ;; *) fail sheets-lever-read-must-fail-force "a force 5 % off passed: $verdict" ;; esac
+
+# no label over a label or a line on the dynamics sheets of the flywheel decks: A4 and A1
+# (PR 3207 by default - its A1 sheets above; every flywheel deck with tools/test --long)
+sheets_dyn="sheets_a4_pr3207"
+if [ "${KINETOSTAT_LONG:-0}" = 1 ]; then
+  for deck in assur_engine_flywheel assur_pr3207_flywheel linkage_engine_flywheel linkage_pr3207_flywheel sixbar_flywheel; do
+    for paper in A4 A1; do
+      dir="$cli_tmp/sheets_dyn_${deck}_$paper"
+      rm -rf "$dir"
+      run_ks sheets "data/$deck.nml" -o "$dir" --paper "$paper"
+      [ "$rc" -eq 0 ] || fail "sheets-dynamics-run-$deck-$paper" "exit $rc: $(head -c 300 "$err")"
+      sheets_dyn="$sheets_dyn sheets_dyn_${deck}_$paper"
+    done
+  done
+fi
+for d in $sheets_dyn; do
+  python3 "$sheets_check" labels --lines "$cli_tmp/$d/dynamics.svg" >"$cli_tmp/check.out" 2>&1 && pass \
+    || fail "sheets-dynamics-legible-$d" "$(grep -v '^[0-9]* sheets' "$cli_tmp/check.out" | head -4)"
+done
 # the stand-in rsvg-convert (above) off PATH
 PATH="$sheets_path"
