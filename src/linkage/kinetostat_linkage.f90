@@ -892,8 +892,15 @@ contains
     end if
 
     ! physical forces (work%cs: the turns of step%q, from generalised_loads)
-    allocate (step%f(2, size(mech%pairs)), step%normal(size(mech%pairs)), step%couple(size(mech%pairs)))
-    allocate (step%effort(size(mech%drives)))
+    ! (a step reused from the step before keeps its arrays)
+    if (allocated(step%f)) then
+      if (size(step%f, 2) /= size(mech%pairs) .or. size(step%effort) /= size(mech%drives)) &
+        deallocate (step%f, step%normal, step%couple, step%effort)
+    end if
+    if (.not. allocated(step%f)) then
+      allocate (step%f(2, size(mech%pairs)), step%normal(size(mech%pairs)), step%couple(size(mech%pairs)))
+      allocate (step%effort(size(mech%drives)))
+    end if
     do k = 1, size(mech%pairs)
       associate (pr => mech%pairs(k))
         r = pair_row(k)
