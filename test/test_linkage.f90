@@ -506,9 +506,10 @@ contains
     !> One step's velocities, accelerations and reactions at poses q by the closed forms (wc)
     !> and by the general solve (wg: LU factors of every unit, the group method's systems
     !> by LU); the multipliers' reactions and the group method's each against their own
-    !> general solve (the two formulations against each other: test_second_opinion), with loads of every kind (each force 100 N times its number, each moment 10
-    !> N*m times its number, gravity and inertia as the deck has them) and a drive
-    !> acceleration of 3 (rad/s^2 or m/s^2) on top of the deck's.
+    !> general solve (the two formulations against each other: test_second_opinion), with
+    !> loads of every kind (each force 100 N times its number, each moment 10 N*m times its
+    !> number, gravity and inertia as the deck has them) and a drive acceleration of 3
+    !> (rad/s^2 or m/s^2) on top of the deck's.
     subroutine solves_against_general(deck, q, dv, da, wc, wg)
       type(linkage_deck_t), intent(in) :: deck
       real(wp), intent(in) :: q(:), dv(:), da(:)

@@ -985,8 +985,9 @@ contains
     ! physical forces (work%cs: the turns of step%q, from generalised_loads)
     ! (a step reused from the step before keeps its arrays)
     if (allocated(step%f)) then
-      if (size(step%f, 2) /= size(mech%pairs) .or. size(step%effort) /= size(mech%drives)) &
+      if (size(step%f, 2) /= size(mech%pairs) .or. size(step%effort) /= size(mech%drives)) then
         deallocate (step%f, step%normal, step%couple, step%effort)
+      end if
     end if
     if (.not. allocated(step%f)) then
       allocate (step%f(2, size(mech%pairs)), step%normal(size(mech%pairs)), step%couple(size(mech%pairs)))
