@@ -385,7 +385,12 @@ contains
     type(linkage_deck_t) :: deck
     type(deck_source_t) :: source
     type(error_t), allocatable :: error
-    integer :: i
+    !> The closed-form solves against the general ones at the same poses (compare's): the
+    !> largest differences of the velocities, accelerations (relative to the step's largest),
+    !> reactions by the multipliers and by the group method (relative to the step's largest
+    !> reaction); the unit solves made in closed form.
+    real(wp) :: worst_v, worst_a, worst_lam, worst_fb
+    integer :: i, small
     do i = 1, size(decks)
       call bundled(trim(decks(i)), deck, t)
       call compare(trim(decks(i)), deck)
@@ -438,13 +443,16 @@ contains
     subroutine compare(name, deck)
       character(*), intent(in) :: name
       type(linkage_deck_t), intent(in) :: deck
-      type(linkage_work_t) :: wc, wn
+      type(linkage_work_t) :: wc, wn, wg
       type(error_t), allocatable :: ec, en
       real(wp), allocatable :: qc(:), qn(:), dq(:), dv(:), da(:), from(:), lo(:), hi(:)
       real(wp) :: worst, r
       integer :: k, j, nd, nsteps
       integer(int64) :: seed
       logical :: used
+      worst_v = 0.0_wp; worst_a = 0.0_wp; worst_lam = 0.0_wp; worst_fb = 0.0_wp
+      small = 0
+      wg%small_solves = .false.
       nd = size(deck%mech%drives)
       allocate (qc, source=linkage_reference_pose(deck%mech))
       allocate (qn, source=qc)
@@ -475,15 +483,87 @@ contains
         if (allocated(ec) .or. allocated(en)) then
           call check_true(t, "linkage-closed-"//name, allocated(ec) .eqv. allocated(en), "step "//int_str(k)// &
             ": one solve fails, the other does not")
-          return
+          if (.not. (allocated(ec) .and. allocated(en))) return
+          ! (both fail: a drive value the linkage cannot reach; the steps before are compared)
+          nsteps = min(nsteps, k - 1)
+          exit
         end if
         worst = max(worst, maxval(abs(qc - qn)) / deck%mech%size)
+        if (k <= nsteps) call solves_against_general(deck, qc, dv, da, wc, wg)
         from = dq
       end do
       call check_true(t, "linkage-closed-used-"//name, used, "a unit without a closed form")
       call check_true(t, "linkage-closed-newton-"//name, worst <= 1.0e-12_wp, "largest pose difference / size "// &
         real_str(worst)//" (limit 1e-12)")
+      call check_true(t, "linkage-closed-solves-used-"//name, small == nsteps * size(deck%mech%units), &
+        int_str(small)//" unit solves in closed form, expected every unit of every step: "// &
+        int_str(nsteps * size(deck%mech%units)))
+      call check_true(t, "linkage-closed-solves-"//name, max(worst_v, worst_a, worst_lam, worst_fb) <= 1.0e-12_wp, &
+        "closed forms against the general J solve, largest difference relative to the step's largest: velocities "// &
+        real_str(worst_v)//", accelerations "//real_str(worst_a)//", multipliers' reactions "//real_str(worst_lam)// &
+        ", group method's "//real_str(worst_fb)//" (limit 1e-12)")
     end subroutine compare
+    !> One step's velocities, accelerations and reactions at poses q by the closed forms (wc)
+    !> and by the general solve (wg: LU factors of every unit, the group method's systems
+    !> by LU); the multipliers' reactions and the group method's each against their own
+    !> general solve (the two formulations against each other: test_second_opinion), with
+    !> loads of every kind (each force 100 N times its number, each moment 10 N*m times its
+    !> number, gravity and inertia as the deck has them) and a drive acceleration of 3
+    !> (rad/s^2 or m/s^2) on top of the deck's.
+    subroutine solves_against_general(deck, q, dv, da, wc, wg)
+      type(linkage_deck_t), intent(in) :: deck
+      real(wp), intent(in) :: q(:), dv(:), da(:)
+      type(linkage_work_t), intent(inout) :: wc, wg
+      type(linkage_step_t) :: sc, sg, sf
+      type(error_t), allocatable :: e1, e2
+      real(wp) :: fval(size(deck%mech%forces)), mval(size(deck%mech%moment_link)), f2(2, size(deck%mech%pairs)), &
+        n2(size(deck%mech%pairs)), c2(size(deck%mech%pairs)), e2v(size(deck%mech%drives))
+      integer :: i
+      do i = 1, size(fval)
+        fval(i) = 100.0_wp * i
+      end do
+      do i = 1, size(mval)
+        mval(i) = 10.0_wp * i
+      end do
+      sc%q = q
+      sg%q = q
+      allocate (sc%qd(size(q)), sc%qdd(size(q)), sg%qd(size(q)), sg%qdd(size(q)))
+      call linkage_motion(deck%mech, q, dv, da + 3.0_wp, sc%qd, sc%qdd, wc, e1)
+      call linkage_motion(deck%mech, q, dv, da + 3.0_wp, sg%qd, sg%qdd, wg, e2)
+      if (allocated(e1) .or. allocated(e2)) then
+        worst_v = huge(1.0_wp)
+        return
+      end if
+      small = small + count(wc%unit_small)
+      worst_v = max(worst_v, maxval(abs(sc%qd - sg%qd)) / maxval(abs(sg%qd)))
+      worst_a = max(worst_a, maxval(abs(sc%qdd - sg%qdd)) / maxval(abs(sg%qdd)))
+      ! the reactions of the general solve's motion by both: the multipliers' solves alone
+      sc%qd = sg%qd
+      sc%qdd = sg%qdd
+      call linkage_statics(deck%mech, fval, mval, sc, wc, e1)
+      call linkage_statics(deck%mech, fval, mval, sg, wg, e2)
+      if (allocated(e1) .or. allocated(e2)) then
+        worst_lam = huge(1.0_wp)
+        return
+      end if
+      worst_lam = max(worst_lam, linkage_reaction_gap(deck%mech, sg, sc%f, sc%normal, sc%couple, sc%effort))
+      ! the group method's free bodies by the closed forms
+      call linkage_free_body(deck%mech, fval, mval, sg, wc, f2, n2, c2, e2v, e1)
+      if (allocated(e1)) then
+        worst_fb = huge(1.0_wp)
+        return
+      end if
+      ! against the group method by LU (as a step's reactions)
+      sf%q = q
+      allocate (sf%f(2, size(deck%mech%pairs)), sf%normal(size(deck%mech%pairs)), sf%couple(size(deck%mech%pairs)), &
+                sf%effort(size(deck%mech%drives)))
+      call linkage_free_body(deck%mech, fval, mval, sg, wg, sf%f, sf%normal, sf%couple, sf%effort, e2)
+      if (allocated(e2)) then
+        worst_fb = huge(1.0_wp)
+        return
+      end if
+      worst_fb = max(worst_fb, linkage_reaction_gap(deck%mech, sf, f2, n2, c2, e2v))
+    end subroutine solves_against_general
   end subroutine test_closed_forms
 
 end module test_linkage

@@ -22,6 +22,8 @@ module kinetostat_linkage
   use kinetostat_linkage_types, only: linkage_t, linkage_link_t, linkage_pair_t, linkage_drive_t, linkage_force_t, &
     linkage_unit_t, pair_r, pair_p
   use kinetostat_linkage_closed, only: place_units, point_position, turn_of
+  use kinetostat_linkage_small, only: solve3, two_body_solve, small_factors_t, factor3, solve3_factored, dyad_factor, &
+    dyad_solve, dyad_solve_transposed
   use kinetostat_selfcheck, only: link_balance_t, balance_add_force, balance_add_couple, equilibrium_residual, &
     power_mismatch
   implicit none
@@ -120,9 +122,20 @@ module kinetostat_linkage
     logical :: closed = .false.
     !> Each unit's order (3 x its links), columns of J and trsm_table (largest order x units).
     integer, allocatable :: unit_order(:), unit_cols(:, :), unit_trsm(:, :, :)
-    !> Each unit's diagonal block of J, its LU factors and row interchanges.
+    !> Each unit's diagonal block of J, its LU factors and row interchanges (a unit solved in
+    !> closed form: the block itself).
     real(wp), allocatable :: unit_block(:, :), unit_lu(:, :, :)
     integer, allocatable :: unit_ipiv(:, :)
+    !> Solve an input unit of one link and a dyad in closed form (kinetostat_linkage_small)
+    !> where its determinants are clear of zero; false: every unit by its LU factors (the
+    !> general solve the tests compare the closed forms with).
+    logical :: small_solves = .true.
+    !> Each unit solved in closed form at the poses of the factors; its factors.
+    logical, allocatable :: unit_small(:)
+    type(small_factors_t), allocatable :: unit_fac(:)
+    !> A dyad's rows (unit_rows' places) of the outer pair of its first link, the inner pair
+    !> and the outer pair of its second link (the first of each pair's two; 0: no dyad).
+    integer, allocatable :: unit_dyad(:, :)
   end type linkage_work_t
 
 contains
@@ -171,7 +184,8 @@ contains
     work%blocked = .false.
     work%closed = .false.
     if (allocated(work%unit_order)) deallocate (work%unit_order, work%unit_cols, work%unit_trsm, work%unit_block, &
-                                                work%unit_lu, work%unit_ipiv)
+                                                work%unit_lu, work%unit_ipiv, work%unit_small, work%unit_fac, &
+                                                work%unit_dyad)
     if (.not. allocated(mech%units)) return
     nu = size(mech%units)
     if (nu == 0) return
@@ -193,12 +207,15 @@ contains
     if (any(owner == 0)) return
     allocate (work%unit_order(nu), work%unit_cols(mx, nu), work%unit_trsm(mx, mx, nu), source=0)
     allocate (work%unit_block(mx, mx), work%unit_lu(mx, mx, nu), source=0.0_wp)
-    allocate (work%unit_ipiv(mx, nu), source=0)
+    allocate (work%unit_ipiv(mx, nu), work%unit_dyad(3, nu), source=0)
+    allocate (work%unit_small(nu), source=.false.)
+    allocate (work%unit_fac(nu))
     do u = 1, nu
       k = size(mech%units(u)%rows)
       work%unit_order(u) = k
       work%unit_cols(1:k, u) = unit_columns(mech%units(u))
       work%unit_trsm(1:k, 1:k, u) = trsm_table(k)
+      work%unit_dyad(:, u) = dyad_rows(mech, mech%units(u))
     end do
     work%blocked = .true.
     work%closed = all(mech%units%class == 2 .or. (mech%units%class == 1 .and. work%unit_order == 3))
@@ -224,6 +241,20 @@ contains
           end do
         end do
       end associate
+      work%unit_small(u) = .false.
+      if (work%small_solves) then
+        associate (dy => work%unit_dyad(:, u))
+          if (k == 3 .and. size(mech%units(u)%links) == 1) then
+            call factor3(work%unit_block(1:3, 1:3), work%unit_fac(u), work%unit_small(u))
+          else if (k == 6 .and. dy(1) > 0) then
+            call dyad_factor(work%unit_block(1:6, 1:6), dy(1), dy(2), dy(3), work%unit_fac(u), work%unit_small(u))
+          end if
+        end associate
+        if (work%unit_small(u)) then
+          work%unit_lu(1:k, 1:k, u) = work%unit_block(1:k, 1:k)
+          cycle
+        end if
+      end if
       call factor_dense(work%unit_block(1:k, 1:k), work%unit_lu(1:k, 1:k, u), work%unit_ipiv(1:k, u), error, &
                         work%unit_trsm(1:k, 1:k, u))
       if (allocated(error)) return
@@ -256,7 +287,7 @@ contains
         end do
         unit_x(i) = s
       end do
-      call solve_factored(work%unit_lu(1:k, 1:k, u), work%unit_ipiv(1:k, u), unit_x(1:k))
+      call unit_solve(work, u, unit_x(1:k), .false.)
       do i = 1, k
         x(work%unit_cols(i, u)) = unit_x(i)
       end do
@@ -285,12 +316,72 @@ contains
         end do
         unit_x(i) = s
       end do
-      call lu_solve_transposed(work%unit_lu(1:k, 1:k, u), work%unit_ipiv(1:k, u), unit_x(1:k))
+      call unit_solve(work, u, unit_x(1:k), .true.)
       do i = 1, k
         x(mech%units(u)%rows(i)) = unit_x(i)
       end do
     end do
   end subroutine solve_jt
+
+  !> x = B^-1 x (B^-T x: `transposed`) for unit u's diagonal block B of J, with factor_j's
+  !> factors: closed forms or LU.
+  pure subroutine unit_solve(work, u, x, transposed)
+    type(linkage_work_t), intent(in) :: work
+    integer, intent(in) :: u
+    real(wp), intent(inout) :: x(:)
+    logical, intent(in) :: transposed
+    integer :: k
+    k = work%unit_order(u)
+    if (work%unit_small(u)) then
+      if (k == 3) then
+        call solve3_factored(work%unit_fac(u), x, transposed)
+      else
+        associate (dy => work%unit_dyad(:, u))
+          if (transposed) then
+            call dyad_solve_transposed(work%unit_lu(1:6, 1:6, u), dy(1), dy(2), dy(3), work%unit_fac(u), x)
+          else
+            call dyad_solve(work%unit_lu(1:6, 1:6, u), dy(1), dy(2), dy(3), work%unit_fac(u), x)
+          end if
+        end associate
+      end if
+    else if (transposed) then
+      call lu_solve_transposed(work%unit_lu(1:k, 1:k, u), work%unit_ipiv(1:k, u), x)
+    else
+      call solve_factored(work%unit_lu(1:k, 1:k, u), work%unit_ipiv(1:k, u), x)
+    end if
+  end subroutine unit_solve
+
+  !> A dyad's places in its unit's rows (dyad_factor's c1, cm, c2): the outer pair of its
+  !> first link, the inner pair, the outer pair of its second link; 0 when the unit is no
+  !> dyad of three pairs with its two rows each in turn.
+  pure function dyad_rows(mech, unit) result(c)
+    type(linkage_t), intent(in) :: mech
+    type(linkage_unit_t), intent(in) :: unit
+    integer :: c(3)
+    integer :: i, k, la, lb
+    c = 0
+    if (unit%class /= 2 .or. size(unit%links) /= 2 .or. size(unit%rows) /= 6) return
+    do i = 1, 5, 2
+      if (unit%rows(i) > 2 * size(mech%pairs) .or. mod(unit%rows(i), 2) == 0 .or. &
+          unit%rows(i + 1) /= unit%rows(i) + 1) then
+        c = 0
+        return
+      end if
+      k = (unit%rows(i) + 1) / 2
+      la = findloc(unit%links, mech%pairs(k)%a, 1)
+      lb = findloc(unit%links, mech%pairs(k)%b, 1)
+      if (mech%pairs(k)%a == 0) la = 0
+      if (mech%pairs(k)%b == 0) lb = 0
+      if (la > 0 .and. lb > 0) then
+        c(2) = i
+      else if (max(la, lb) == 1) then
+        c(1) = i
+      else if (max(la, lb) == 2) then
+        c(3) = i
+      end if
+    end do
+    if (any(c == 0)) c = 0
+  end function dyad_rows
 
   !> J at poses q in `work` (evaluated unless it holds them), factored, with the velocity
   !> analogues (column d: dq/d(drive d), the other drives held). An error: J is singular.
@@ -892,8 +983,16 @@ contains
     end if
 
     ! physical forces (work%cs: the turns of step%q, from generalised_loads)
-    allocate (step%f(2, size(mech%pairs)), step%normal(size(mech%pairs)), step%couple(size(mech%pairs)))
-    allocate (step%effort(size(mech%drives)))
+    ! (a step reused from the step before keeps its arrays)
+    if (allocated(step%f)) then
+      if (size(step%f, 2) /= size(mech%pairs) .or. size(step%effort) /= size(mech%drives)) then
+        deallocate (step%f, step%normal, step%couple, step%effort)
+      end if
+    end if
+    if (.not. allocated(step%f)) then
+      allocate (step%f(2, size(mech%pairs)), step%normal(size(mech%pairs)), step%couple(size(mech%pairs)))
+      allocate (step%effort(size(mech%drives)))
+    end if
     do k = 1, size(mech%pairs)
       associate (pr => mech%pairs(k))
         r = pair_row(k)
@@ -1039,6 +1138,7 @@ contains
     type(error_t), allocatable, intent(out) :: error
     real(wp) :: sv(2), vs(2), as(2), w(2), g(2, 2), h(2), pa(2), pb(2)
     integer :: i, j, k, d, c, r, u, nu, np
+    logical :: solved
     f = 0.0_wp
     normal = 0.0_wp
     couple = 0.0_wp
@@ -1114,9 +1214,25 @@ contains
             call add_column(work, c, mech%pairs(mech%drives(d)%pair)%b, pa, -w, -h(1))
           end if
         end do
-        call factor_dense(work%fa(1:nu, 1:nu), work%flu(1:nu, 1:nu), work%fipiv(1:nu), error)
-        if (allocated(error)) return
-        call solve_factored(work%flu(1:nu, 1:nu), work%fipiv(1:nu), work%fb(1:nu))
+        ! an input unit of one link and a dyad in closed form (kinetostat_linkage_small),
+        ! any other unit, or one whose closed form is near a zero determinant, densely
+        ! (the unknowns' columns are the unit's rows: a dyad's places as dyad_rows finds them)
+        solved = .false.
+        if (work%small_solves .and. work%blocked) then
+          if (nu == 3 .and. size(unit%links) == 1) then
+            call solve3(work%fa(1:3, 1:3), work%fb(1:3), work%unit_x(1:3), solved)
+          else if (nu == 6 .and. work%unit_dyad(1, u) > 0) then
+            call two_body_solve(work%fa(1:6, 1:6), work%fb(1:6), work%unit_dyad(1, u), work%unit_dyad(2, u), &
+                                work%unit_dyad(3, u), work%unit_x(1:6), solved)
+          end if
+        end if
+        if (solved) then
+          work%fb(1:nu) = work%unit_x(1:nu)
+        else
+          call factor_dense(work%fa(1:nu, 1:nu), work%flu(1:nu, 1:nu), work%fipiv(1:nu), error)
+          if (allocated(error)) return
+          call solve_factored(work%flu(1:nu, 1:nu), work%fipiv(1:nu), work%fb(1:nu))
+        end if
         do c = 1, nu
           r = unit%rows(c)
           if (r <= 2 * np) then

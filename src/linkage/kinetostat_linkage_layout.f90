@@ -56,6 +56,21 @@ module kinetostat_linkage_layout
   !> A gap of the Lagrange and the group method's reactions above this (relative) is a warning.
   real(wp), parameter :: gap_tolerance = 1.0e-9_wp
 
+  !> A run of steps' state (stepper_ready, linkage_solve_step).
+  type :: linkage_stepper_t
+    !> The kernel's workspace.
+    type(linkage_work_t) :: work
+    !> The linkage with the flywheel's moments as two more moments (a steady cycle).
+    type(linkage_t) :: turning
+    !> A steady cycle: the flywheel and rotor turning with the driven link, kg*m^2.
+    logical :: steady = .false.
+    real(wp) :: j_turn = 0.0_wp
+    !> The step's drive values, rates and accelerations; force magnitudes (N) and moments (N*m).
+    real(wp), allocatable :: dq(:), dv(:), da(:), fval(:), mval(:)
+    !> The step's friction results (a deck with friction).
+    type(linkage_friction_t) :: fr
+  end type linkage_stepper_t
+
   !> A planar linkage of lower pairs with any number of drives.
   type, extends(mechanism_t) :: linkage_mechanism_t
     !> The validated deck.
@@ -393,8 +408,8 @@ contains
   end function row_size
 
   !> Every step of rows first..last: poses by continuation from `q` (at drive values
-  !> `dq_from`; both updated to the last step), then motion and reactions. Used by `solve`
-  !> and the tests.
+  !> `dq_from`; both updated to the last step), then motion and reactions. Used by the tests
+  !> (`solve` takes the steps one by one, linkage_solve_step).
   pure subroutine linkage_solve_steps(deck, path, first, last, q, dq_from, steps, error, motions, j_turn, frictions)
     !> Validated deck.
     type(linkage_deck_t), intent(in) :: deck
@@ -414,85 +429,124 @@ contains
     real(wp), intent(in), optional :: j_turn
     !> The steps' friction results (a deck with friction).
     type(linkage_friction_t), intent(inout), optional :: frictions(first:)
-    type(linkage_friction_t) :: fr
-    real(wp), allocatable :: dq(:), dv(:), da(:), fval(:), mval(:)
-    type(linkage_work_t) :: work
-    !> The linkage with the flywheel's moments as two more moments (a steady cycle).
-    type(linkage_t) :: turning
-    integer :: k, i, nd, nm
-    nd = size(deck%mech%drives)
-    nm = size(deck%moment_load)
-    allocate (dq(nd), dv(nd), da(nd), fval(size(deck%force_load)), mval(nm))
-    if (present(motions)) then
-      turning = deck%mech
-      associate (pr => deck%mech%pairs(deck%mech%drives(1)%pair))
-        turning%moment_link = [deck%mech%moment_link, pr%a]
-        if (pr%b > 0) turning%moment_link = [turning%moment_link, pr%b]
-      end associate
-      deallocate (mval)
-      allocate (mval(size(turning%moment_link)))
-    end if
+    type(linkage_stepper_t) :: st
+    integer :: k
+    call stepper_ready(deck, present(motions), st, j_turn)
     !GCC$ novector
     do k = first, last
-      call linkage_drive_values(deck, k, dq, dv, da)
       if (present(motions)) then
-        dv(1) = motions(k)%omega
-        da(1) = motions(k)%eps
+        call linkage_solve_step(deck, path, k, st, q, dq_from, steps(k), error, motions(k))
+      else
+        call linkage_solve_step(deck, path, k, st, q, dq_from, steps(k), error)
       end if
-      call linkage_assemble(deck%mech, dq_from, dq, q, work, error)
+      if (allocated(error)) return
+      if (deck%friction_on .and. present(frictions)) frictions(k) = st%fr
+    end do
+  end subroutine linkage_solve_steps
+
+  !> The state of a run of steps: the kernel's workspace, the drive values and loads of the
+  !> step, and the linkage with the flywheel's moments (a steady cycle). Allocated once per
+  !> block: a step allocates nothing (the step's results are reused as well).
+  pure subroutine stepper_ready(deck, steady, st, j_turn)
+    type(linkage_deck_t), intent(in) :: deck
+    !> A steady cycle (the true motion given per step).
+    logical, intent(in) :: steady
+    type(linkage_stepper_t), intent(out) :: st
+    !> The flywheel and rotor turning with the driven link, kg*m^2 (a steady cycle).
+    real(wp), intent(in), optional :: j_turn
+    integer :: nd, nm
+    nd = size(deck%mech%drives)
+    nm = size(deck%moment_load)
+    st%steady = steady
+    if (present(j_turn)) st%j_turn = j_turn
+    allocate (st%dq(nd), st%dv(nd), st%da(nd), st%fval(size(deck%force_load)))
+    if (steady) then
+      st%turning = deck%mech
+      associate (pr => deck%mech%pairs(deck%mech%drives(1)%pair))
+        st%turning%moment_link = [deck%mech%moment_link, pr%a]
+        if (pr%b > 0) st%turning%moment_link = [st%turning%moment_link, pr%b]
+      end associate
+      allocate (st%mval(size(st%turning%moment_link)))
+    else
+      allocate (st%mval(nm))
+    end if
+  end subroutine stepper_ready
+
+  !> Step k: its poses by continuation from `q` (at drive values `dq_from`; both updated),
+  !> motion and reactions into `step` (its arrays reused when allocated), the friction
+  !> results into st%fr (a deck with friction), the drive values into st%dq.
+  pure subroutine linkage_solve_step(deck, path, k, st, q, dq_from, step, error, motion)
+    type(linkage_deck_t), intent(in) :: deck
+    character(*), intent(in) :: path
+    integer, intent(in) :: k
+    type(linkage_stepper_t), intent(inout) :: st
+    real(wp), intent(inout) :: q(:), dq_from(:)
+    type(linkage_step_t), intent(inout) :: step
+    type(error_t), allocatable, intent(out) :: error
+    !> A steady cycle: the step's true motion.
+    type(motion_t), intent(in), optional :: motion
+    integer :: i, nm
+    nm = size(deck%moment_load)
+    call linkage_drive_values(deck, k, st%dq, st%dv, st%da)
+    if (present(motion)) then
+      st%dv(1) = motion%omega
+      st%da(1) = motion%eps
+    end if
+    call linkage_assemble(deck%mech, dq_from, st%dq, q, st%work, error)
+    if (allocated(error)) then
+      error%message = where()//": "//error%message
+      return
+    end if
+    dq_from = st%dq
+    step%q = q
+    if (allocated(step%qd)) then
+      if (size(step%qd) /= size(q)) deallocate (step%qd, step%qdd)
+    end if
+    if (.not. allocated(step%qd)) allocate (step%qd(size(q)), step%qdd(size(q)))
+    call linkage_motion(deck%mech, q, st%dv, st%da, step%qd, step%qdd, st%work, error)
+    if (allocated(error)) then
+      error%message = where()//": the velocities are undetermined (a dead position)"
+      return
+    end if
+    do i = 1, size(st%fval)
+      st%fval(i) = linkage_load_value(deck, deck%force_load(i), k, linkage_table_position(deck%mech, deck%force_load(i), q))
+    end do
+    !GCC$ novector
+    do i = 1, nm
+      st%mval(i) = linkage_load_value(deck, deck%moment_load(i), k, linkage_table_position(deck%mech, &
+                                      deck%moment_load(i), q))
+    end do
+    if (st%steady .and. present(motion)) then
+      st%mval(nm + 1) = -st%j_turn * motion%eps
+      if (size(st%mval) > nm + 1) st%mval(nm + 2) = st%j_turn * motion%eps
+      call linkage_statics(st%turning, st%fval, st%mval, step, st%work, error)
+    else
+      call linkage_statics(deck%mech, st%fval, st%mval, step, st%work, error)
+    end if
+    if (allocated(error)) then
+      error%message = where()//": the reactions are undetermined (a dead position)"
+      return
+    end if
+    if (deck%friction_on) then
+      if (st%steady .and. present(motion)) then
+        call linkage_friction_solve(st%turning, deck%friction_f, deck%friction_r, deck%friction_span, st%fval, st%mval, &
+                                    st%dv, step, st%work, st%fr, error)
+      else
+        call linkage_friction_solve(deck%mech, deck%friction_f, deck%friction_r, deck%friction_span, st%fval, &
+                                    st%mval, st%dv, step, st%work, st%fr, error)
+      end if
       if (allocated(error)) then
         error%message = where()//": "//error%message
         return
       end if
-      dq_from = dq
-      steps(k)%q = q
-      allocate (steps(k)%qd(size(q)), steps(k)%qdd(size(q)))
-      call linkage_motion(deck%mech, q, dv, da, steps(k)%qd, steps(k)%qdd, work, error)
-      if (allocated(error)) then
-        error%message = where()//": the velocities are undetermined (a dead position)"
-        return
-      end if
-      do i = 1, size(fval)
-        fval(i) = linkage_load_value(deck, deck%force_load(i), k, linkage_table_position(deck%mech, deck%force_load(i), q))
-      end do
-      !GCC$ novector
-      do i = 1, nm
-        mval(i) = linkage_load_value(deck, deck%moment_load(i), k, linkage_table_position(deck%mech, deck%moment_load(i), &
-                                     q))
-      end do
-      if (present(motions)) then
-        mval(nm + 1) = -j_turn * motions(k)%eps
-        if (size(mval) > nm + 1) mval(nm + 2) = j_turn * motions(k)%eps
-        call linkage_statics(turning, fval, mval, steps(k), work, error)
-      else
-        call linkage_statics(deck%mech, fval, mval, steps(k), work, error)
-      end if
-      if (allocated(error)) then
-        error%message = where()//": the reactions are undetermined (a dead position)"
-        return
-      end if
-      if (deck%friction_on) then
-        if (present(motions)) then
-          call linkage_friction_solve(turning, deck%friction_f, deck%friction_r, deck%friction_span, fval, mval, dv, &
-                                      steps(k), work, fr, error)
-        else
-          call linkage_friction_solve(deck%mech, deck%friction_f, deck%friction_r, deck%friction_span, fval, mval, &
-                                      dv, steps(k), work, fr, error)
-        end if
-        if (allocated(error)) then
-          error%message = where()//": "//error%message
-          return
-        end if
-        if (present(frictions)) frictions(k) = fr
-      end if
-    end do
+    end if
   contains
     !> The step for messages (written only for one).
     pure function where() result(text)
       character(len=:), allocatable :: text
-      text = path//": &linkage: step "//int_str(k)//" ("//drive_text(deck, dq)//")"
+      text = path//": &linkage: step "//int_str(k)//" ("//drive_text(deck, st%dq)//")"
     end function where
-  end subroutine linkage_solve_steps
+  end subroutine linkage_solve_step
 
   !> "phi1 = 30 deg, phi4 = 162 deg" for messages.
   pure function drive_text(deck, dq) result(text)
@@ -520,17 +574,20 @@ contains
     class(linkage_mechanism_t), intent(in) :: self
     type(step_table_t), intent(inout) :: table
     type(error_t), allocatable, intent(out) :: error
-    type(linkage_step_t), allocatable :: steps(:)
-    real(wp), allocatable :: q(:), dq(:), residual(:), mismatch(:)
+    !> The step being solved (its arrays allocated at the first step of the block).
+    type(linkage_step_t) :: step
+    !> The kernel's workspace and the step's drive values and loads.
+    type(linkage_stepper_t) :: st
+    real(wp), allocatable :: q(:), dq(:), residual(:), mismatch(:), drive_effort(:)
     character(len=:), allocatable :: input, effort
     !> The motion and reduced quantities of each step (a dynamics stage).
     type(motion_t), allocatable :: motions(:)
     !> The friction results of each step (a deck with friction).
     type(linkage_friction_t), allocatable :: frictions(:)
     character(len=16), allocatable :: force_names(:)
-    integer :: first, last, k, d, nd, np, nq, stat
+    integer :: first, last, k, d, nd, np, nq, stat, friction_column
     real(wp) :: gap
-    logical :: translating
+    logical :: translating, steady
     associate (mech => self%deck%mech)
       nd = size(mech%drives)
       np = size(mech%pairs)
@@ -562,11 +619,6 @@ contains
       end if
       q = table%carry(1:nq)
       dq = table%carry(nq + 1:nq + nd)
-      allocate (steps(first:last), stat=stat)
-      if (stat /= 0) then
-        call lack_block_memory(error, last - first + 1, storage_size(steps, int64) / 8)
-        return
-      end if
       allocate (motions(first:last), stat=stat)
       if (stat /= 0) then
         call lack_block_memory(error, last - first + 1, storage_size(motions, int64) / 8, "motions")
@@ -577,46 +629,54 @@ contains
         call lack_block_memory(error, last - first + 1, storage_size(frictions, int64) / 8, "friction figures")
         return
       end if
-      if (self%deck%dyn%mode >= dynamics_steady) then
-        call cycle_motions(self%deck, self%source, self%cycle, first, motions)
-        call linkage_solve_steps(self%deck, table%deck, first, last, q, dq, steps, error, motions, &
-                                 self%cycle%j_flywheel + self%cycle%j_rotor, frictions=frictions)
-      else
-        call linkage_solve_steps(self%deck, table%deck, first, last, q, dq, steps, error, frictions=frictions)
-      end if
-      if (allocated(error)) return
-      if (self%deck%dyn%mode == dynamics_reduced) call reduced_motions(self%deck, first, steps, motions)
-      table%carry = [q, dq]
       call table%allocate_rows(last - first + 1, error)
       if (allocated(error)) return
       allocate (residual(first:last), stat=stat)
       if (stat == 0) allocate (mismatch(first:last), stat=stat)
+      if (stat == 0) allocate (drive_effort(first:last), stat=stat)
       if (stat /= 0) then
-        call lack_block_memory(error, last - first + 1, 2_int64 * storage_size(residual, int64) / 8, "self-check figures")
+        call lack_block_memory(error, last - first + 1, 3_int64 * storage_size(residual, int64) / 8, "self-check figures")
         return
       end if
+      steady = self%deck%dyn%mode >= dynamics_steady
+      if (steady) then
+        call cycle_motions(self%deck, self%source, self%cycle, first, motions)
+        call stepper_ready(self%deck, .true., st, self%cycle%j_flywheel + self%cycle%j_rotor)
+      else
+        call stepper_ready(self%deck, .false., st)
+      end if
+      if (self%deck%friction_on) then
+        call drive_names(mech, 1, input, effort)
+        friction_column = table%column_index(effort//"_0")
+      end if
+      ! each step solved into `step` (allocated once) and put into its row at once
       gap = 0.0_wp
       do k = first, last
-        call fill_row(self%deck, k, steps(k), table%rows(:, k - first + 1))
-        residual(k) = steps(k)%residual
-        mismatch(k) = steps(k)%mismatch
-        gap = max(gap, steps(k)%solver_gap)
+        if (steady) then
+          call linkage_solve_step(self%deck, table%deck, k, st, q, dq, step, error, motions(k))
+        else
+          call linkage_solve_step(self%deck, table%deck, k, st, q, dq, step, error)
+        end if
+        if (allocated(error)) return
+        if (self%deck%friction_on) frictions(k) = st%fr
+        if (self%deck%dyn%mode == dynamics_reduced) call reduced_motion(self%deck, step, st%fval, &
+          st%mval(1:size(self%deck%moment_load)), motions(k))
+        call fill_row(self%deck, st%dq, step, table%rows(:, k - first + 1))
+        residual(k) = step%residual
+        mismatch(k) = step%mismatch
+        drive_effort(k) = step%effort(1)
+        gap = max(gap, step%solver_gap)
         call put_dynamics_values(table, k - first + 1, self%deck%dyn%mode, motions(k))
         if (self%deck%friction_on) then
-          call drive_names(mech, 1, input, effort)
-          d = table%column_index(effort//"_0")
-          associate (fv => friction_values(self%deck, steps(k), frictions(k)))
-            table%rows(d:d + size(fv) - 1, k - first + 1) = fv
+          associate (fv => friction_values(self%deck, step, frictions(k)))
+            table%rows(friction_column:friction_column + size(fv) - 1, k - first + 1) = fv
           end associate
         end if
+        if (table%kinematics_wanted) call put_kinematics(mech, table, k - first + 1, step)
       end do
-      if (self%deck%dyn%mode >= dynamics_steady) then
-        call note_drive_deviation(table, [(steps(k)%effort(1), k = first, last)], motions, self%cycle%j_flywheel)
-      end if
+      table%carry = [q, dq]
+      if (steady) call note_drive_deviation(table, drive_effort, motions, self%cycle%j_flywheel)
       if (table%kinematics_wanted) then
-        do k = first, last
-          call put_kinematics(mech, table, k - first + 1, steps(k))
-        end do
         if (table%first_block()) call table%finish_columns()
       end if
       call drive_names(mech, 1, input, effort)
@@ -665,49 +725,31 @@ contains
     end do
   end subroutine cycle_motions
 
-  !> The reduced quantities of each step (dynamics = 'reduced': the deck's own motion), from its
-  !> poses and its loads.
-  pure subroutine reduced_motions(deck, first, steps, motions)
+  !> The reduced quantities of a step (dynamics = 'reduced': the deck's own motion), from its
+  !> poses and its loads (force magnitudes, N, and moments, N*m, as linkage_solve_step has
+  !> them).
+  pure subroutine reduced_motion(deck, step, fval, mval, motion)
     type(linkage_deck_t), intent(in) :: deck
-    !> The first step.
-    integer, intent(in) :: first
-    type(linkage_step_t), intent(in) :: steps(first:)
-    type(motion_t), intent(inout) :: motions(first:)
-    real(wp) :: fval(size(deck%force_load)), mval(size(deck%moment_load))
+    type(linkage_step_t), intent(in) :: step
+    real(wp), intent(in) :: fval(:), mval(:)
+    type(motion_t), intent(inout) :: motion
     type(reduced_t) :: red
-    integer :: k, i
-    !GCC$ novector
-    do k = first, ubound(motions, 1)
-      !GCC$ novector
-      do i = 1, size(fval)
-        fval(i) = linkage_load_value(deck, deck%force_load(i), k, linkage_table_position(deck%mech, deck%force_load(i), &
-                                     steps(k)%q))
-      end do
-      !GCC$ novector
-      do i = 1, size(mval)
-        mval(i) = linkage_load_value(deck, deck%moment_load(i), k, linkage_table_position(deck%mech, &
-                                     deck%moment_load(i), steps(k)%q))
-      end do
-      red = linkage_reduced_at_pose(deck%mech, steps(k)%q, fval, mval)
-      motions(k)%omega = deck%omega(1)
-      motions(k)%j = red%j + deck%dyn%j_rotor
-      motions(k)%dj = red%dj
-      motions(k)%m = red%m
-    end do
-  end subroutine reduced_motions
+    red = linkage_reduced_at_pose(deck%mech, step%q, fval, mval)
+    motion%omega = deck%omega(1)
+    motion%j = red%j + deck%dyn%j_rotor
+    motion%dj = red%dj
+    motion%m = red%m
+  end subroutine reduced_motion
 
-  !> One row of the step table.
-  pure subroutine fill_row(deck, k, s, v)
+  !> One row of the step table: the step's drive values `dq` (rad or m) and results `s`.
+  pure subroutine fill_row(deck, dq, s, v)
     type(linkage_deck_t), intent(in) :: deck
-    integer, intent(in) :: k
+    real(wp), intent(in) :: dq(:)
     type(linkage_step_t), intent(in) :: s
     real(wp), intent(out) :: v(:)
-    real(wp), allocatable :: dq(:), dv(:), da(:)
     real(wp) :: floor, f(2), lever
     integer :: d, ip, pos, nd
     nd = size(deck%mech%drives)
-    allocate (dq(nd), dv(nd), da(nd))
-    call linkage_drive_values(deck, k, dq, dv, da)
     floor = 0.0_wp
     do ip = 1, size(deck%mech%pairs)
       floor = max(floor, magnitude(s%f(:, ip)))
