@@ -3,7 +3,7 @@
 module kinetostat_assur_deck_types
   use kinetostat_kinds, only: wp
   use kinetostat_load_table, only: max_table_points
-  use kinetostat_deck, only: unset_real, unset_bits, title_chars, text_bytes, text_chars, crank_steps_t
+  use kinetostat_deck, only: unset_real, unset_bits, title_chars, text_bytes, text_chars, angle_steps_t
   use kinetostat_vec2, only: magnitude
   use kinetostat_assur, only: assur_mech_t
   use kinetostat_assur_friction, only: pair_friction_t
@@ -102,7 +102,7 @@ module kinetostat_assur_deck_types
   end type load_schedule_t
 
   !> A validated `&assur` deck.
-  type, extends(crank_steps_t) :: assur_deck_t
+  type, extends(angle_steps_t) :: assur_deck_t
     !> Mechanism.
     type(assur_mech_t) :: mech
     !> Title (free text, at most title_chars characters).

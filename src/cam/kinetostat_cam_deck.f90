@@ -6,7 +6,7 @@ module kinetostat_cam_deck
   use kinetostat_text, only: real_str, int_str, lower
   use kinetostat_deck, only: values_out_of_memory, begin_group, text_bytes, text_chars, max_deck_array, &
     deck_context_t, unset_real, deck_array_capacities, deck_source_t, namelist_probe_t, deck_error, is_set, &
-    optional_default, count_values, deck_rules_t, rule_nonnegative, crank_steps_t, &
+    optional_default, count_values, deck_rules_t, rule_nonnegative, angle_steps_t, &
     cam_phi_deg => step_angle_deg
   use kinetostat_cam, only: cam_params_t
   implicit none
@@ -20,7 +20,7 @@ module kinetostat_cam_deck
   integer, parameter :: follower_flat = 2
 
   !> A validated `&cam` deck.
-  type, extends(crank_steps_t) :: cam_deck_t
+  type, extends(angle_steps_t) :: cam_deck_t
     !> follower_translating or follower_flat.
     integer :: follower = follower_translating
     !> Guide data, SI.

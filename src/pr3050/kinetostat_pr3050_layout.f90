@@ -322,9 +322,9 @@ contains
     call table%echo_real("J1", deck%p%j1, "kg*m^2")
     call table%echo_real("J2", deck%p%j2, "kg*m^2")
     call table%echo_real("J3", deck%p%j3, "kg*m^2")
-    call table%echo_real("PHI3_START", deck%phi3_start, "deg")
+    call table%echo_real("PHI3_START", deck%phi_start, "deg")
     call table%echo_real("PHI3_END", deck%phi3_end, "deg")
-    call table%echo_real("DPHI3", deck%dphi3, "deg")
+    call table%echo_real("DPHI3", deck%dphi, "deg")
     call table%echo_int("N", deck%n, "steps")
     call table%echo_array("OMEGA3", deck%omega3(1:deck%n), "rad/s")
     call table%echo_array("EPS3", deck%eps3(1:deck%n), "rad/s^2")
@@ -367,7 +367,7 @@ contains
     type(pr3050_deck_t), intent(in) :: deck
     integer, intent(in) :: k
     real(wp) :: angle
-    angle = real(k - 1, wp) * deck%dphi3
+    angle = real(k - 1, wp) * deck%dphi
   end function phi3rel
 
   !> The moving links: cylinder 1, rod 2 and boom 3, each at its centre of mass; gravity at gamma from x.

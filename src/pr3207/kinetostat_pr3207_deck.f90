@@ -6,7 +6,7 @@ module kinetostat_pr3207_deck
   use kinetostat_deck_foreign, only: refuse_translated_stages
   use kinetostat_deck, only: begin_group, text_bytes, text_chars, &
     deck_context_t, unset_real, deck_source_t, namelist_probe_t, is_set, &
-    optional_default, deck_rules_t, rule_finite, rule_positive, rule_nonnegative, crank_steps_t, &
+    optional_default, deck_rules_t, rule_finite, rule_positive, rule_nonnegative, angle_steps_t, &
     pr3207_phi1_deg => step_angle_deg
   use kinetostat_pr3207, only: pr3207_params_t
   use kinetostat_dynamics, only: dynamics_steady
@@ -18,7 +18,7 @@ module kinetostat_pr3207_deck
   public :: pr3207_phi1_deg, pr3207_f5c, pr3207_f5c_steps
 
   !> A validated `&pr3207` deck.
-  type, extends(crank_steps_t) :: pr3207_deck_t
+  type, extends(angle_steps_t) :: pr3207_deck_t
     !> Mechanism data, SI.
     type(pr3207_params_t) :: p
     !> True when the cutting force came in the two-value form.

@@ -6,7 +6,7 @@ module kinetostat_sixbar_deck
   use kinetostat_deck_foreign, only: refuse_translated_stages
   use kinetostat_deck, only: begin_group, text_bytes, text_chars, &
     deck_context_t, unset_real, deck_source_t, namelist_probe_t, is_set, &
-    optional_default, deck_rules_t, rule_finite, rule_positive, rule_nonnegative, crank_steps_t, &
+    optional_default, deck_rules_t, rule_finite, rule_positive, rule_nonnegative, angle_steps_t, &
     sixbar_phi1_deg => step_angle_deg
   use kinetostat_sixbar, only: sixbar_params_t, sixbar_extreme_phi1
   use kinetostat_dynamics, only: dynamics_steady
@@ -19,7 +19,7 @@ module kinetostat_sixbar_deck
   !> A validated `&sixbar` deck.
   !> Its crank angles are in frame 1; phi_start is as given, or angle B0AD of the extreme
   !> position.
-  type, extends(crank_steps_t) :: sixbar_deck_t
+  type, extends(angle_steps_t) :: sixbar_deck_t
     !> Mechanism data, SI.
     type(sixbar_params_t) :: p
     !> Whether phi_start was computed as the extreme position.
