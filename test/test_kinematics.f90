@@ -293,7 +293,7 @@ contains
       end if
       do j = 1, 3
         shifted = mech
-        shifted%deck%phi3_start = mech%deck%phi3_start + real(j - 2, wp) * h_deg
+        shifted%deck%phi_start = mech%deck%phi_start + real(j - 2, wp) * h_deg
         shifted%deck%omega3 = w(1:mech%deck%n)
         shifted%deck%eps3 = e(1:mech%deck%n)
         call solve_into(t, "pr3050 fd", shifted, "data/pr3050.nml", tables(j))

@@ -3,7 +3,7 @@
 module kinetostat_assur_deck_names
   use kinetostat_error, only: error_t
   use kinetostat_text, only: int_str, lower, upper
-  use kinetostat_deck, only: deck_line_count, deck_line, deck_context_t, deck_source_t
+  use kinetostat_deck, only: deck_line_count, deck_line, deck_context_t, deck_source_t, comment_start
   use kinetostat_assur_kinematics, only: kind_names
   implicit none
   private
@@ -77,7 +77,6 @@ contains
     type(error_t), intent(inout) :: error
     character(len=:), allocatable :: text, low, designator, value
     integer :: line, d, ios, at, i, j, start
-    character(len=1) :: quote
     if (index(error%message, ctx%path//":") /= 1) return
     d = len(ctx%path) + 2
     if (d > len(error%message)) return
@@ -86,19 +85,8 @@ contains
     read (error%message(len(ctx%path) + 2:d - 1), *, iostat=ios) line
     if (ios /= 0 .or. line < 1 .or. line > deck_line_count(source)) return
     text = deck_line(source, line)
-    low = lower(text)
     ! the comment, if any, is not looked at
-    quote = " "
-    do i = 1, len(low)
-      if (quote /= " ") then
-        if (low(i:i) == quote) quote = " "
-      else if (low(i:i) == "'" .or. low(i:i) == '"') then
-        quote = low(i:i)
-      else if (low(i:i) == "!") then
-        low = low(1:i - 1)
-        exit
-      end if
-    end do
+    low = lower(text(1:comment_start(text) - 1))
     start = 1
     do
       at = index(low(start:), "%kind")

@@ -3,7 +3,7 @@
 module kinetostat_assur_deck_types
   use kinetostat_kinds, only: wp
   use kinetostat_load_table, only: max_table_points
-  use kinetostat_deck, only: unset_real, unset_bits, title_chars, text_bytes, text_chars
+  use kinetostat_deck, only: unset_real, unset_bits, title_chars, text_bytes, text_chars, angle_steps_t
   use kinetostat_vec2, only: magnitude
   use kinetostat_assur, only: assur_mech_t
   use kinetostat_assur_friction, only: pair_friction_t
@@ -102,17 +102,11 @@ module kinetostat_assur_deck_types
   end type load_schedule_t
 
   !> A validated `&assur` deck.
-  type :: assur_deck_t
+  type, extends(angle_steps_t) :: assur_deck_t
     !> Mechanism.
     type(assur_mech_t) :: mech
     !> Title (free text, at most title_chars characters).
     character(len=text_bytes * title_chars) :: title = ""
-    !> First crank angle, deg.
-    real(wp) :: phi_start = 0.0_wp
-    !> Crank step, deg.
-    real(wp) :: dphi = 0.0_wp
-    !> Number of steps.
-    integer :: n = 0
     !> Crank angles given as a list phi1(:), deg, elements 1..n (the namelist's read buffer,
     !> kept; not allocated: phi_start + (k - 1)*dphi). Step k's angle: assur_phi1_deg.
     real(wp), allocatable :: phi_list(:)

@@ -6,7 +6,8 @@ module kinetostat_cam_deck
   use kinetostat_text, only: real_str, int_str, lower
   use kinetostat_deck, only: values_out_of_memory, begin_group, text_bytes, text_chars, max_deck_array, &
     deck_context_t, unset_real, deck_array_capacities, deck_source_t, namelist_probe_t, deck_error, is_set, &
-    optional_default, count_values, deck_rules_t, rule_nonnegative
+    optional_default, count_values, deck_rules_t, rule_nonnegative, angle_steps_t, &
+    cam_phi_deg => step_angle_deg
   use kinetostat_cam, only: cam_params_t
   implicit none
   private
@@ -19,7 +20,7 @@ module kinetostat_cam_deck
   integer, parameter :: follower_flat = 2
 
   !> A validated `&cam` deck.
-  type :: cam_deck_t
+  type, extends(angle_steps_t) :: cam_deck_t
     !> follower_translating or follower_flat.
     integer :: follower = follower_translating
     !> Guide data, SI.
@@ -28,12 +29,6 @@ module kinetostat_cam_deck
     real(wp) :: f_cam = 0.0_wp
     !> Flat face: +1 cam turns counter-clockwise, -1 clockwise.
     real(wp) :: omega_dir = 1.0_wp
-    !> First cam angle, deg.
-    real(wp) :: phi_start = 0.0_wp
-    !> Cam step, deg.
-    real(wp) :: dphi = 0.0_wp
-    !> Number of steps.
-    integer :: n = 0
     !> The per-step arrays below hold the values as given (the namelist's read buffers, kept:
     !> given(i) values, 1 = the same for every step, spare elements past them unused); the
     !> value of step k is cam_theta_deg, cam_f2, cam_vdir, cam_ds_dphi (cam_phi_deg and
@@ -196,14 +191,6 @@ contains
     end if
   end subroutine read_cam_deck
 
-  !> Cam angle of step k, deg: phi_start + (k - 1)*dphi.
-  pure real(wp) function cam_phi_deg(deck, k) result(phi)
-    !> Validated deck.
-    type(cam_deck_t), intent(in) :: deck
-    !> Step number, 1..n.
-    integer, intent(in) :: k
-    phi = deck%phi_start + real(k - 1, wp) * deck%dphi
-  end function cam_phi_deg
 
   !> Pressure angle of step k, deg (flat face: 0).
   pure real(wp) function cam_theta_deg(deck, k) result(theta)

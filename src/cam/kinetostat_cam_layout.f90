@@ -7,7 +7,7 @@ module kinetostat_cam_layout
   use kinetostat_error, only: error_t
   use kinetostat_text, only: int_str, number_str, counted
   use kinetostat_vec2, only: magnitude, angle_360_deg
-  use kinetostat_noise, only: noise_floor, force_components
+  use kinetostat_noise, only: noise_floor
   use kinetostat_run_tally, only: flag_count_t
   use kinetostat_step_table, only: step_table_t, column_t, column, col_input_angle, col_component, step_span, &
     col_length, col_flag, col_ratio, col_other, lack_block_memory
@@ -205,15 +205,12 @@ contains
     !> Its step number (index of the deck's per-step values).
     integer, intent(in) :: step
     real(wp) :: f(2, 3), floor
-    integer :: j
     call table%put_point(k, "B", [cam_x_b(deck, step), -deck%p%a])
     call table%put_point(k, "C", [0.0_wp, 0.0_wp])
     call table%put_point(k, "D", [0.0_wp, deck%p%l])
     f = reshape([s%f21, s%f23c, s%f23d], [2, 3])
     floor = noise_floor(f, [real(wp) ::])
-    do j = 1, size(force_names)
-      call table%put_components(k, trim(force_names(j)), force_components(f(:, j), floor), 0.0_wp)
-    end do
+    call table%put_pair_components(k, force_names, f, floor)
   end subroutine put_kinematics
 
   !> The INPUT DATA echo of the deck.

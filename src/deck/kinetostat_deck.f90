@@ -8,11 +8,11 @@ module kinetostat_deck
     max_deck_size, set_max_deck_size, default_max_deck_size
   use kinetostat_deck_namelist, only: max_deck_array, title_chars, text_chars, text_bytes, &
     read_group_name, namelist_failure, namelist_probe_t, check_namelist_syntax, longest_quoted, begin_group, &
-    deck_array_capacities, assignment_starts
+    deck_array_capacities, assignment_starts, comment_start
   use kinetostat_deck_rules, only: unset_real, unset_bits, max_steps, deck_error, require_all_set, &
     values_out_of_memory, is_set, require_set, require_positive, require_nonnegative, require_rule, &
     require_per_step, is_whole_in, require_whole, require_chars, optional_default, count_values, &
-    steps_over_turn, deck_rules_t, rule_finite, rule_positive, rule_nonnegative
+    steps_over_turn, deck_rules_t, rule_finite, rule_positive, rule_nonnegative, angle_steps_t, step_angle_deg
   implicit none
   private
   public :: deck_context_t, unset_real, unset_bits, max_deck_array, max_steps
@@ -24,5 +24,7 @@ module kinetostat_deck
   public :: optional_default, count_values, steps_over_turn
   public :: check_namelist_syntax, longest_quoted, begin_group
   public :: deck_array_capacities, max_deck_size, set_max_deck_size, default_max_deck_size, assignment_starts
+  public :: comment_start
   public :: values_out_of_memory, deck_rules_t, rule_finite, rule_positive, rule_nonnegative
+  public :: angle_steps_t, step_angle_deg
 end module kinetostat_deck

@@ -15,6 +15,7 @@ module kinetostat_deck_namelist
   public :: max_deck_array, title_chars, text_chars, text_bytes
   public :: read_group_name, namelist_failure, namelist_probe_t
   public :: check_namelist_syntax, longest_quoted, begin_group, deck_array_capacities, assignment_starts
+  public :: comment_start
 
   !> Capacity of a per-step array in a deck (values beyond it are a namelist error).
   integer, parameter :: max_deck_array = 1000000
@@ -783,25 +784,30 @@ contains
       (v(2:2) == "t" .or. v(2:2) == "f"))
   end function is_logical_text
 
-  !> A line without its comment ('!' outside quotes) and without a trailing comma.
-  pure function strip_comment(line) result(text)
+  !> Where a line's comment starts (its '!' outside quotes), len(line) + 1 when it has none.
+  pure integer function comment_start(line) result(at)
     character(*), intent(in) :: line
-    character(len=:), allocatable :: text
     character(len=1) :: quote
-    integer :: i, n
+    integer :: i
     quote = " "
-    n = len(line)
+    at = len(line) + 1
     do i = 1, len(line)
       if (quote /= " ") then
         if (line(i:i) == quote) quote = " "
       else if (line(i:i) == "'" .or. line(i:i) == '"') then
         quote = line(i:i)
       else if (line(i:i) == "!") then
-        n = i - 1
-        exit
+        at = i
+        return
       end if
     end do
-    text = trim(adjustl(line(1:n)))
+  end function comment_start
+
+  !> A line without its comment ('!' outside quotes) and without a trailing comma.
+  pure function strip_comment(line) result(text)
+    character(*), intent(in) :: line
+    character(len=:), allocatable :: text
+    text = trim(adjustl(line(1:comment_start(line) - 1)))
     if (len(text) > 0) then
       if (text(len(text):) == ",") text = trim(text(1:len(text) - 1))
     end if

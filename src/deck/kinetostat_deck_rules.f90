@@ -18,6 +18,7 @@ module kinetostat_deck_rules
   public :: is_whole_in, require_whole, require_chars
   public :: optional_default, count_values, steps_over_turn, deck_rules_t
   public :: rule_finite, rule_positive, rule_nonnegative
+  public :: angle_steps_t, step_angle_deg
 
   !> Bit pattern of `unset_real`: a quiet NaN with a payload. A NaN typed in a deck
   !> ("nan", "NaN(0x1)") reads as the plain quiet NaN 7FF8000000000000, so no deck can
@@ -36,6 +37,18 @@ module kinetostat_deck_rules
   !> The value rules of require_value and deck_rules_t%require_each: a required real that
   !> is finite; also > 0; also >= 0.
   integer, parameter :: rule_finite = 0, rule_positive = 1, rule_nonnegative = 2
+
+  !> The input angles of a run's steps (the crank's; PR 3050's rocker's), phi_start + (k -
+  !> 1)*dphi for k = 1..n, computed, not stored (a kind's validated deck extends it; the
+  !> angle of step k is step_angle_deg).
+  type :: angle_steps_t
+    !> First angle, deg.
+    real(wp) :: phi_start = 0.0_wp
+    !> Step, deg.
+    real(wp) :: dphi = 0.0_wp
+    !> Number of steps.
+    integer :: n = 0
+  end type angle_steps_t
 
   !> A validator of one section of a reader: the deck and group its messages name, and the
   !> first failure. Its checks are the rules below and do nothing once one has failed, so a
@@ -478,5 +491,14 @@ contains
     call self%require_set("phi_start", phi_start)
     if (.not. allocated(self%error)) call steps_over_turn(self%ctx, dphi, n_given, n, self%error)
   end subroutine rules_crank_steps
+
+  !> Input angle of step k, deg: phi_start + (k - 1)*dphi.
+  pure real(wp) function step_angle_deg(steps, k) result(phi)
+    !> The validated deck's steps.
+    class(angle_steps_t), intent(in) :: steps
+    !> Step number, 1..n.
+    integer, intent(in) :: k
+    phi = steps%phi_start + real(k - 1, wp) * steps%dphi
+  end function step_angle_deg
 
 end module kinetostat_deck_rules

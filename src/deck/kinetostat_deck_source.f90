@@ -269,11 +269,8 @@ contains
     if (width >= longest) then
       ! one record per line
       if (allocated(source%first_record)) deallocate (source%first_record)
-      allocate (character(len=longest) :: source%records(n_lines), stat=stat)
-      if (stat /= 0) then
-        if (present(error)) call out_of_memory(error, "the deck's lines", int(longest, int64) * n_lines)
-        return
-      end if
+      call allocate_records(source%records, longest, n_lines, "the deck's lines", stat, error)
+      if (stat /= 0) return
       do k = 1, n_lines
         source%records(k) = text(line_start(k):line_end(k))
       end do
@@ -284,11 +281,8 @@ contains
     source%record_length = lengths(1:n_records)
     deallocate (lengths)
     width = record_width(source%record_length)
-    allocate (character(len=width) :: source%records(n_records), stat=stat)
-    if (stat /= 0) then
-      if (present(error)) call out_of_memory(error, "the deck's records", int(width, int64) * n_records)
-      return
-    end if
+    call allocate_records(source%records, width, n_records, "the deck's records", stat, error)
+    if (stat /= 0) return
     do k = 1, n_lines
       at = line_start(k)
       do r = source%first_record(k), source%first_record(k + 1) - 1
@@ -316,6 +310,19 @@ contains
       end if
     end subroutine next_line
   end subroutine records_from_text
+
+  !> A deck's `count` records of `width` characters; when they do not fit, stat /= 0 and (if
+  !> asked for) an out-of-memory error naming `what`.
+  pure subroutine allocate_records(records, width, count, what, stat, error)
+    character(len=:), allocatable, intent(out) :: records(:)
+    integer, intent(in) :: width, count
+    !> What the records hold, for the message ("the deck's lines").
+    character(*), intent(in) :: what
+    integer, intent(out) :: stat
+    type(error_t), allocatable, intent(out), optional :: error
+    allocate (character(len=width) :: records(count), stat=stat)
+    if (stat /= 0 .and. present(error)) call out_of_memory(error, what, int(width, int64) * count)
+  end subroutine allocate_records
 
   !> The record of a piece of a line: the first `abs(length)` characters of `text`, after a
   !> '!' when `length` < 0 (the piece continues a comment).

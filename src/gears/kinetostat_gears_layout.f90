@@ -5,7 +5,7 @@ module kinetostat_gears_layout
   use kinetostat_deck, only: deck_source_t
   use kinetostat_error, only: error_t
   use kinetostat_text, only: upper
-  use kinetostat_noise, only: noise_rel, force_components
+  use kinetostat_noise, only: noise_rel
   use kinetostat_vec2, only: magnitude, angle_360_deg, snap_noise
   use kinetostat_step_table, only: step_table_t, column_t, column, col_count, col_length, col_ratio, col_moment, &
     col_component, col_force, col_force_angle
@@ -123,9 +123,7 @@ contains
     call table%put_point(i, "P", r%p)
     f = reshape([r%f12, r%fs1, r%fs2, r%f23, r%f2h], [2, 5])
     floor = noise_rel * maxval([(magnitude(f(:, j)), j=1, 5)])
-    do j = 1, size(force_names)
-      call table%put_components(i, trim(force_names(j)), force_components(f(:, j), floor), 0.0_wp)
-    end do
+    call table%put_pair_components(i, force_names, f, floor)
   end subroutine put_kinematics
 
   !> The CSV row of stage `i`: diameters in mm, forces N (magnitude) and deg (angle).

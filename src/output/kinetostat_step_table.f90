@@ -10,6 +10,7 @@ module kinetostat_step_table
   use kinetostat_text, only: int_str, int64_str, upper
   use kinetostat_run_tally, only: run_tally_t, dynamics_figures_t, flywheel_disc, running_max_t, column_tally_t, edge_point_t
   use kinetostat_labels, only: label, lang_ru
+  use kinetostat_noise, only: force_components
   implicit none
   private
   public :: step_table_t, column_t, column, echo_record_t, echo_cursor_t, remark_t, column_tally_t, edge_point_t, &
@@ -273,6 +274,7 @@ module kinetostat_step_table
     procedure :: put_acceleration
     procedure :: put_velocity
     procedure :: put_components
+    procedure :: put_pair_components
     procedure :: put_link_axes
     procedure :: shows
     procedure :: finish_columns
@@ -545,6 +547,30 @@ contains
     call put_kinematic(self, k, force, "_x", "N", col_component, f(1), frame_angle)
     call put_kinematic(self, k, force, "_y", "N", col_component, f(2), frame_angle)
   end subroutine put_components
+
+  !> Kinematics: the components of every pair force names(i) = f(:, i) in row `k` (see
+  !> put_components), those at or below the roundoff `floor` as 0 (force_components).
+  pure subroutine put_pair_components(self, k, names, f, floor, frame_angles)
+    class(step_table_t), intent(inout) :: self
+    !> Row.
+    integer, intent(in) :: k
+    !> Force names ("F21"; trailing blanks dropped).
+    character(*), intent(in) :: names(:)
+    !> The forces, N: f(:, i) is force i's.
+    real(wp), intent(in) :: f(:, :)
+    !> Roundoff floor, N (see noise_floor).
+    real(wp), intent(in) :: floor
+    !> Angle of each force's frame in the position frame, deg (default: 0, the position frame).
+    real(wp), intent(in), optional :: frame_angles(:)
+    integer :: i
+    do i = 1, size(names)
+      if (present(frame_angles)) then
+        call self%put_components(k, trim(names(i)), force_components(f(:, i), floor), frame_angles(i))
+      else
+        call self%put_components(k, trim(names(i)), force_components(f(:, i), floor), 0.0_wp)
+      end if
+    end do
+  end subroutine put_pair_components
 
   !> Link axes (--frame link): components <force>_along, <force>_across (N) of a pair force
   !> in row `k` in the moving axes of the link it acts on (x along the link's x axis).

@@ -143,6 +143,7 @@ module kinetostat_drawing
     procedure :: add_moment
     procedure :: point_from_table
     procedure :: pair_from_table
+    procedure :: pairs_from_table
     procedure :: add_link_loads
     !> The weight and inertia loads of every moving link of a mass model.
     procedure :: add_body_loads
@@ -372,6 +373,26 @@ contains
     a = table%columns(cx)%frame_angle * deg_to_rad
     call self%add_force(name, force_pair, self%at(point), [cos(a) * f(1) - sin(a) * f(2), sin(a) * f(1) + cos(a) * f(2)])
   end subroutine pair_from_table
+
+  !> Every pair force names(i) at its point points(i), from row `k` (see pair_from_table).
+  pure subroutine pairs_from_table(self, table, k, names, points, error)
+    class(drawing_t), intent(inout) :: self
+    !> The results with their kinematics columns.
+    type(step_table_t), intent(in) :: table
+    !> Row.
+    integer, intent(in) :: k
+    !> Force names ("F21"; trailing blanks dropped).
+    character(*), intent(in) :: names(:)
+    !> Their points of application (points added before; trailing blanks dropped).
+    character(*), intent(in) :: points(:)
+    !> No component columns for a force.
+    type(error_t), allocatable, intent(out) :: error
+    integer :: i
+    do i = 1, size(names)
+      call self%pair_from_table(table, k, trim(names(i)), trim(points(i)), error)
+      if (allocated(error)) return
+    end do
+  end subroutine pairs_from_table
 
   !> The weight, inertia force and inertia moment of every moving link of the mass model at
   !> row `k`, each at its centre of mass (see add_link_loads).

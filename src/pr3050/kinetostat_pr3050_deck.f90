@@ -6,7 +6,8 @@ module kinetostat_pr3050_deck
   use kinetostat_deck_foreign, only: refuse_translated_stages, refuse_variables
   use kinetostat_deck, only: begin_group, text_bytes, text_chars, &
     deck_context_t, unset_real, max_steps, deck_source_t, namelist_probe_t, &
-    optional_default, deck_rules_t, rule_finite, rule_positive, rule_nonnegative
+    optional_default, deck_rules_t, rule_finite, rule_positive, rule_nonnegative, angle_steps_t, &
+    pr3050_phi3_deg => step_angle_deg
   use kinetostat_pr3050, only: pr3050_params_t
   use kinetostat_dynamics_deck, only: dynamics_deck_t, read_dynamics_settings
   implicit none
@@ -18,21 +19,17 @@ module kinetostat_pr3050_deck
   real(wp), parameter :: whole_steps_tol = 1.0e-9_wp
 
   !> A validated `&pr3050` deck.
-  type :: pr3050_deck_t
+  !> Its steps are the rocker's angles phi3: phi_start and dphi are the deck's phi3_start and
+  !> dphi3, n = (phi3_end - phi3_start)/dphi3 + 1.
+  type, extends(angle_steps_t) :: pr3050_deck_t
     !> Mechanism data, SI (angles delta, gamma in rad).
     type(pr3050_params_t) :: p
     !> Angle of CS3 ahead of CB as given, deg.
     real(wp) :: delta_deg = 0.0_wp
     !> Direction of gravity as given, deg.
     real(wp) :: gamma_deg = 0.0_wp
-    !> First rocker angle, deg.
-    real(wp) :: phi3_start = 0.0_wp
     !> Last rocker angle, deg.
     real(wp) :: phi3_end = 0.0_wp
-    !> Rocker step, deg.
-    real(wp) :: dphi3 = 0.0_wp
-    !> Number of steps N = (phi3_end - phi3_start)/dphi3 + 1.
-    integer :: n = 0
     !> Rocker angular speed per step, rad/s: elements 1..n (the namelist's read buffer, kept;
     !> it may hold a spare element past n). The rocker angle is not stored: pr3050_phi3_deg.
     real(wp), allocatable :: omega3(:)
@@ -192,9 +189,9 @@ contains
                              j1=j1, j2=j2, j3=j3)
     deck%delta_deg = delta
     deck%gamma_deg = gamma
-    deck%phi3_start = phi3_start
+    deck%phi_start = phi3_start
     deck%phi3_end = phi3_end
-    deck%dphi3 = dphi3
+    deck%dphi = dphi3
     ! the read buffers are the deck's arrays (no second copy of 10^6 values)
     call move_alloc(omega3, deck%omega3)
     call move_alloc(eps3, deck%eps3)
@@ -215,13 +212,5 @@ contains
     call rules%require_per_step(name, count, n)
   end subroutine speed_law_values
 
-  !> Rocker angle of step k, deg: phi3_start + (k - 1)*dphi3 (computed, not stored per step).
-  pure real(wp) function pr3050_phi3_deg(deck, k) result(phi3)
-    !> Validated deck.
-    type(pr3050_deck_t), intent(in) :: deck
-    !> Step number, 1..n.
-    integer, intent(in) :: k
-    phi3 = deck%phi3_start + real(k - 1, wp) * deck%dphi3
-  end function pr3050_phi3_deg
 
 end module kinetostat_pr3050_deck

@@ -7,7 +7,7 @@ module kinetostat_pr3050_layout
   use kinetostat_error, only: error_t
   use kinetostat_text, only: int_str, real_str
   use kinetostat_vec2, only: angle_360_deg
-  use kinetostat_noise, only: noise_rel, noise_floor, force_columns, force_components, angles_0_360
+  use kinetostat_noise, only: noise_rel, noise_floor, force_columns, angles_0_360
   use kinetostat_step_table, only: step_table_t, column_t, column, col_input_angle, col_component, step_span, &
     col_moment, col_length, col_other, lack_block_memory
   use kinetostat_table_layout, only: table_field_t, field, forces_and_angles, put_layout_heading, &
@@ -231,7 +231,6 @@ contains
     type(pr3050_step_t), intent(in) :: s
     type(pr3050_position_t) :: pos
     real(wp) :: w2, f(2, 3), floor
-    integer :: i
     pos = pr3050_position(p, s%phi3)
     w2 = s%omega3**2
     call table%put_point(k, "C", [0.0_wp, 0.0_wp])
@@ -248,9 +247,7 @@ contains
     call table%put_acceleration(k, "S3", pos%a_s3q * w2 + pos%v_s3q * s%eps3)
     f = reshape([s%f14, s%f34, s%f32], [2, 3])
     floor = noise_floor(f, [s%f2])
-    do i = 1, size(force_names)
-      call table%put_components(k, force_names(i), force_components(f(:, i), floor), 0.0_wp)
-    end do
+    call table%put_pair_components(k, force_names, f, floor)
   end subroutine put_kinematics
 
   !> The columns of a step: the rocker angle from the first step (the original's F13G), the
@@ -322,9 +319,9 @@ contains
     call table%echo_real("J1", deck%p%j1, "kg*m^2")
     call table%echo_real("J2", deck%p%j2, "kg*m^2")
     call table%echo_real("J3", deck%p%j3, "kg*m^2")
-    call table%echo_real("PHI3_START", deck%phi3_start, "deg")
+    call table%echo_real("PHI3_START", deck%phi_start, "deg")
     call table%echo_real("PHI3_END", deck%phi3_end, "deg")
-    call table%echo_real("DPHI3", deck%dphi3, "deg")
+    call table%echo_real("DPHI3", deck%dphi, "deg")
     call table%echo_int("N", deck%n, "steps")
     call table%echo_array("OMEGA3", deck%omega3(1:deck%n), "rad/s")
     call table%echo_array("EPS3", deck%eps3(1:deck%n), "rad/s^2")
@@ -367,7 +364,7 @@ contains
     type(pr3050_deck_t), intent(in) :: deck
     integer, intent(in) :: k
     real(wp) :: angle
-    angle = real(k - 1, wp) * deck%dphi3
+    angle = real(k - 1, wp) * deck%dphi
   end function phi3rel
 
   !> The moving links: cylinder 1, rod 2 and boom 3, each at its centre of mass; gravity at gamma from x.
@@ -395,16 +392,13 @@ contains
     integer, intent(in) :: k
     type(drawing_t), intent(inout) :: drawing
     type(error_t), allocatable, intent(out) :: error
-    character(len=3), parameter :: pairs(*) = [character(len=3) :: "F14", "F34", "F32"]
+    !> The points of the pair forces force_names.
     character(len=1), parameter :: pair_points(*) = ["A", "C", "B"]
     real(wp) :: a(2), b(2), u(2)
-    integer :: i
     type(mass_model_t) :: model
     associate (p => self%deck%p)
-      do i = 1, size(pairs)
-        call drawing%pair_from_table(table, k, trim(pairs(i)), pair_points(i), error)
-        if (allocated(error)) return
-      end do
+      call drawing%pairs_from_table(table, k, force_names, pair_points, error)
+      if (allocated(error)) return
       a = drawing%at("A")
       b = drawing%at("B")
       u = (b - a) / max(norm2(b - a), tiny(1.0_wp))

@@ -6,7 +6,8 @@ module kinetostat_pr3207_deck
   use kinetostat_deck_foreign, only: refuse_translated_stages
   use kinetostat_deck, only: begin_group, text_bytes, text_chars, &
     deck_context_t, unset_real, deck_source_t, namelist_probe_t, is_set, &
-    optional_default, deck_rules_t, rule_finite, rule_positive, rule_nonnegative
+    optional_default, deck_rules_t, rule_finite, rule_positive, rule_nonnegative, angle_steps_t, &
+    pr3207_phi1_deg => step_angle_deg
   use kinetostat_pr3207, only: pr3207_params_t
   use kinetostat_dynamics, only: dynamics_steady
   use kinetostat_dynamics_deck, only: dynamics_deck_t, read_dynamics_settings, require_one_turn, md_table_capacity, &
@@ -17,15 +18,9 @@ module kinetostat_pr3207_deck
   public :: pr3207_phi1_deg, pr3207_f5c, pr3207_f5c_steps
 
   !> A validated `&pr3207` deck.
-  type :: pr3207_deck_t
+  type, extends(angle_steps_t) :: pr3207_deck_t
     !> Mechanism data, SI.
     type(pr3207_params_t) :: p
-    !> First crank angle, deg.
-    real(wp) :: phi_start = 0.0_wp
-    !> Crank step, deg.
-    real(wp) :: dphi = 0.0_wp
-    !> Number of steps.
-    integer :: n = 0
     !> True when the cutting force came in the two-value form.
     logical :: two_value = .false.
     !> Two-value form: force on the working stroke, N (along +y).
@@ -206,14 +201,6 @@ contains
     deck%dphi = dphi
   end subroutine read_pr3207_deck
 
-  !> Crank angle of step k, deg: phi_start + (k - 1)*dphi.
-  pure real(wp) function pr3207_phi1_deg(deck, k) result(phi1)
-    !> Validated deck.
-    type(pr3207_deck_t), intent(in) :: deck
-    !> Step number, 1..n.
-    integer, intent(in) :: k
-    phi1 = deck%phi_start + real(k - 1, wp) * deck%dphi
-  end function pr3207_phi1_deg
 
   !> Cutting force of step k, N (along +y): as given per step, or from the two-value form
   !> at the step's crank angle (pr3207_cut_force).

@@ -5,7 +5,7 @@ module kinetostat_pr3207_layout
   use kinetostat_kinds, only: wp, deg_to_rad, rad_to_deg
   use kinetostat_deck, only: deck_source_t
   use kinetostat_error, only: error_t
-  use kinetostat_noise, only: noise_floor, force_columns, force_components, angles_0_360
+  use kinetostat_noise, only: noise_floor, force_columns, angles_0_360
   use kinetostat_step_table, only: step_table_t, column_t, column, col_input_angle, col_moment, step_span, lack_block_memory
   use kinetostat_labels, only: lang_ru
   use kinetostat_table_layout, only: table_field_t, field, magnitudes_over_angles, forces_and_angles, &
@@ -251,7 +251,6 @@ contains
     type(pr3207_step_t), intent(in) :: s
     type(pr3207_position_t) :: pos
     real(wp) :: w2, f(2, size(force_names)), floor
-    integer :: i
     pos = pr3207_position(p, s%phi1)
     w2 = s%omega1**2
     call table%put_point(k, "A", [0.0_wp, 0.0_wp])
@@ -269,9 +268,7 @@ contains
     call table%put_acceleration(k, "S5", [0.0_wp, s%a5])
     f = pair_forces(s)
     floor = noise_floor(f, [real(wp) ::])
-    do i = 1, size(force_names)
-      call table%put_components(k, force_names(i), force_components(f(:, i), floor), 0.0_wp)
-    end do
+    call table%put_pair_components(k, force_names, f, floor)
   end subroutine put_kinematics
 
   !> The INPUT DATA echo of the deck.
@@ -347,15 +344,12 @@ contains
     integer, intent(in) :: k
     type(drawing_t), intent(inout) :: drawing
     type(error_t), allocatable, intent(out) :: error
-    character(len=3), parameter :: pairs(*) = [character(len=3) :: "F16", "F21", "F36", "F34", "F56"]
+    !> The points of the pair forces force_names.
     character(len=2), parameter :: pair_points(*) = [character(len=2) :: "A", "B", "C", "D", "S5"]
     type(mass_model_t) :: model
-    integer :: i
     associate (p => self%deck%p)
-      do i = 1, size(pairs)
-        call drawing%pair_from_table(table, k, trim(pairs(i)), trim(pair_points(i)), error)
-        if (allocated(error)) return
-      end do
+      call drawing%pairs_from_table(table, k, force_names, pair_points, error)
+      if (allocated(error)) return
       call drawing%add_force("F5c", force_load, drawing%at("S5"), [0.0_wp, pr3207_f5c(self%deck, table%run_row(k))], "5")
       call self%mass_model(model)
       call drawing%add_body_loads(table, k, model)

@@ -6,7 +6,8 @@ module kinetostat_sixbar_deck
   use kinetostat_deck_foreign, only: refuse_translated_stages
   use kinetostat_deck, only: begin_group, text_bytes, text_chars, &
     deck_context_t, unset_real, deck_source_t, namelist_probe_t, is_set, &
-    optional_default, deck_rules_t, rule_finite, rule_positive, rule_nonnegative
+    optional_default, deck_rules_t, rule_finite, rule_positive, rule_nonnegative, angle_steps_t, &
+    sixbar_phi1_deg => step_angle_deg
   use kinetostat_sixbar, only: sixbar_params_t, sixbar_extreme_phi1
   use kinetostat_dynamics, only: dynamics_steady
   use kinetostat_dynamics_deck, only: dynamics_deck_t, read_dynamics_settings, require_one_turn, md_table_capacity, &
@@ -16,17 +17,13 @@ module kinetostat_sixbar_deck
   public :: sixbar_deck_t, read_sixbar_deck, sixbar_template, sixbar_phi1_deg
 
   !> A validated `&sixbar` deck.
-  type :: sixbar_deck_t
+  !> Its crank angles are in frame 1; phi_start is as given, or angle B0AD of the extreme
+  !> position.
+  type, extends(angle_steps_t) :: sixbar_deck_t
     !> Mechanism data, SI.
     type(sixbar_params_t) :: p
-    !> First crank angle (frame 1), deg: as given, or angle B0AD of the extreme position.
-    real(wp) :: phi_start = 0.0_wp
     !> Whether phi_start was computed as the extreme position.
     logical :: start_at_extreme = .false.
-    !> Crank step, deg.
-    real(wp) :: dphi = 0.0_wp
-    !> Number of steps.
-    integer :: n = 0
     !> Slider load per step, N, signed along +x2: elements 1..n (the namelist's read buffer,
     !> kept; it may hold a spare element past n). The crank angle is not stored:
     !> sixbar_phi1_deg.
@@ -187,13 +184,5 @@ contains
     deck%dphi = dphi
   end subroutine read_sixbar_deck
 
-  !> Crank angle of step k (frame 1), deg: phi_start + (k - 1)*dphi (computed, not stored).
-  pure real(wp) function sixbar_phi1_deg(deck, k) result(phi1)
-    !> Validated deck.
-    type(sixbar_deck_t), intent(in) :: deck
-    !> Step number, 1..n.
-    integer, intent(in) :: k
-    phi1 = deck%phi_start + real(k - 1, wp) * deck%dphi
-  end function sixbar_phi1_deg
 
 end module kinetostat_sixbar_deck

@@ -6,7 +6,7 @@ module kinetostat_sixbar_layout
   use kinetostat_deck, only: deck_source_t
   use kinetostat_error, only: error_t, fatal_error, exit_geometry, out_of_memory
   use kinetostat_text, only: real_str, int_str
-  use kinetostat_noise, only: noise_floor, force_columns, force_components, angles_pm180
+  use kinetostat_noise, only: noise_floor, force_columns, angles_pm180
   use kinetostat_step_table, only: step_table_t, column_t, column, col_input_angle, col_component, step_span, col_moment, &
     lack_block_memory
   use kinetostat_table_layout, only: table_field_t, field, magnitudes_over_angles, force_and_angle, &
@@ -340,7 +340,6 @@ contains
     !> The computed step.
     type(sixbar_step_t), intent(in) :: s
     real(wp) :: w, frame2, f(2, size(force_names)), floor, zero(2)
-    integer :: i
     w = s%omega1
     zero = 0.0_wp
     ! angle of x2 in frame 1, rad: beta - pi
@@ -370,10 +369,7 @@ contains
     end associate
     f = pair_forces(s)
     floor = noise_floor(f(:, 1:6), [s%f56])
-    do i = 1, size(force_names)
-      call table%put_components(k, trim(force_names(i)), force_components(f(:, i), floor), &
-                                merge(frame2 * rad_to_deg, 0.0_wp, force_in_frame2(i)))
-    end do
+    call table%put_pair_components(k, force_names, f, floor, merge(frame2 * rad_to_deg, 0.0_wp, force_in_frame2))
   end subroutine put_kinematics
 
   !> The INPUT DATA echo of the deck.
@@ -488,16 +484,13 @@ contains
     integer, intent(in) :: k
     type(drawing_t), intent(inout) :: drawing
     type(error_t), allocatable, intent(out) :: error
-    character(len=3), parameter :: pairs(*) = [character(len=3) :: "F21", "F32", "F43", "F45", "F36", "F16", "F56"]
+    !> The points of the pair forces force_names.
     character(len=1), parameter :: pair_points(*) = ["B", "C", "E", "H", "D", "A", "H"]
     real(wp) :: x2
-    integer :: i
     type(mass_model_t) :: model
     associate (p => self%deck%p)
-      do i = 1, size(pairs)
-        call drawing%pair_from_table(table, k, trim(pairs(i)), pair_points(i), error)
-        if (allocated(error)) return
-      end do
+      call drawing%pairs_from_table(table, k, force_names, pair_points, error)
+      if (allocated(error)) return
       ! x2 in frame 1, rad
       x2 = atan2(p%a, p%b) - pi
       call drawing%add_force("F5", force_load, drawing%at("H"), self%deck%f5(table%run_row(k)) * [cos(x2), sin(x2)], "5")
