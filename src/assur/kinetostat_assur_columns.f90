@@ -9,6 +9,7 @@ module kinetostat_assur_columns
   use kinetostat_step_table, only: step_table_t, column_t, column, col_input_angle, col_force, col_force_angle, &
     col_component, col_moment, col_length, col_other, col_flag, col_ratio
   use kinetostat_assur_statics, only: pair_is_prismatic
+  use kinetostat_assur_kinematics, only: point_state_t, point_on
   use kinetostat_assur, only: assur_step_t
   use kinetostat_assur_friction, only: friction_step_t
   use kinetostat_assur_deck, only: assur_deck_t, assur_phi1_deg
@@ -16,7 +17,7 @@ module kinetostat_assur_columns
   implicit none
   private
   public :: assur_columns, assur_csv_values, assur_pair_prismatic, assur_row, assur_row_size, pair_turns, &
-    crank_length
+    crank_length, kinematics_value_count, pair_link, assur_kinematics_row
   public :: friction_columns, friction_csv_values, friction_work, friction_integrals, friction_summary, &
     friction_row_size
 
@@ -326,6 +327,143 @@ contains
       v(ip) = clean_zero(v(ip))
     end do
   end subroutine assur_row
+
+  !> Number of values of a row of the kinematics columns (assur_kinematics_row): per pair its
+  !> reference point (2), per moving link its centre of mass (2), angle, speed and
+  !> acceleration (3) and the centre's acceleration (2), per pair its force components in
+  !> the pair's frame (2) and in the axes of the link it acts on (2).
+  pure integer function kinematics_value_count(deck)
+    !> Validated deck.
+    type(assur_deck_t), intent(in) :: deck
+    integer :: np, nl
+    np = size(deck%pair_name)
+    nl = 2 * size(deck%mech%dyads) + 1
+    kinematics_value_count = 2 * np + 2 * nl + 3 * nl + 2 * nl + 2 * np + 2 * np
+  end function kinematics_value_count
+
+  !> Internal index of the link the reported force of result pair `ip` acts on: link a for a
+  !> dyad's pair 1 and its inner pair (link b with inner_on = link3), link b for pair 3, the
+  !> crank for the crank pin.
+  pure integer function pair_link(deck, ip)
+    !> Validated deck.
+    type(assur_deck_t), intent(in) :: deck
+    !> Pair result index.
+    integer, intent(in) :: ip
+    integer :: d, j
+    d = (ip - 1) / 3 + 1
+    j = ip - 3 * (d - 1)
+    if (d > size(deck%mech%dyads)) then
+      pair_link = 1
+    else if (j == 1 .or. (j == 2 .and. deck%pair_sign(ip) > 0.0_wp)) then
+      pair_link = 2 * d
+    else
+      pair_link = 2 * d + 1
+    end if
+  end function pair_link
+
+  !> The kinematics columns of one solved step (the links' frames and the dyads' poses its
+  !> solve left in `s`) into `row`: the j-th value (kinematics_value_count, in the order the
+  !> columns were named) into row(slots(j)), none where slots(j) = 0, -0 as +0. The values:
+  !> the reference point of every pair (the crank's pair with the frame: the pivot), m; the
+  !> centre of mass S of every moving link, m; every moving link's angle (deg), angular
+  !> velocity (rad/s) and acceleration (rad/s^2); the acceleration of every S, m/s^2; every
+  !> pair force's components in the frame of its angle column and in the axes of the link it
+  !> acts on, N, a force at or below the step's roundoff floor (noise_rel times its largest
+  !> pair force) and a component at or below it as 0. Each pair's length is taken once (the
+  !> turned force's own length decides nothing: a force whose turned length is at most the
+  !> floor has both components at most the floor).
+  pure subroutine assur_kinematics_row(deck, s, turn, slots, row)
+    !> Validated deck.
+    type(assur_deck_t), intent(in) :: deck
+    !> One solved step (its work_states and work_poses set by its solve).
+    type(assur_step_t), intent(in) :: s
+    !> The pairs' turns into their frames (pair_turns).
+    real(wp), intent(in) :: turn(:, :)
+    !> Column of every value (0: not written).
+    integer, intent(in) :: slots(:)
+    !> The step's row of the table.
+    real(wp), intent(inout) :: row(:)
+    type(point_state_t) :: ps
+    real(wp) :: f_len(size(s%f, 2)), w2, floor, f(2), g(2), c, sn
+    integer :: np, nl, i, ip, d, j, js, jl, ja
+    np = size(s%f, 2)
+    nl = ubound(s%work_states, 1)
+    w2 = s%omega1**2
+    ! the pairs' reference points
+    j = 0
+    do ip = 1, np
+      d = (ip - 1) / 3 + 1
+      if (ip == np) then
+        call put_slot(row, slots, j, deck%mech%pivot(1))
+        call put_slot(row, slots, j, deck%mech%pivot(2))
+      else
+        call put_slot(row, slots, j, s%work_poses(d)%p(1, ip - 3 * (d - 1)))
+        call put_slot(row, slots, j, s%work_poses(d)%p(2, ip - 3 * (d - 1)))
+      end if
+    end do
+    ! per link: S, then (after every S) phi, omega, eps, then (after those) S's acceleration
+    js = j
+    jl = js + 2 * nl
+    ja = jl + 3 * nl
+    do i = 1, nl
+      associate (st => s%work_states(i))
+        ps = point_on(st, deck%mech%links(i)%s)
+        call put_slot(row, slots, js, ps%p(1))
+        call put_slot(row, slots, js, ps%p(2))
+        call put_slot(row, slots, jl, st%th * rad_to_deg)
+        call put_slot(row, slots, jl, st%u * s%omega1)
+        call put_slot(row, slots, jl, st%eq * w2 + st%u * s%eps1)
+        call put_slot(row, slots, ja, ps%a(1) * w2 + ps%v(1) * s%eps1)
+        call put_slot(row, slots, ja, ps%a(2) * w2 + ps%v(2) * s%eps1)
+      end associate
+    end do
+    j = ja
+    floor = 0.0_wp
+    do ip = 1, np
+      f_len(ip) = magnitude(s%f(:, ip))
+      floor = max(floor, f_len(ip))
+    end do
+    floor = noise_rel * floor
+    ! components in the pairs' frames, then in the links' axes
+    jl = j + 2 * np
+    do ip = 1, np
+      if (f_len(ip) <= floor) then
+        f = 0.0_wp
+      else
+        f = deck%pair_sign(ip) * s%f(:, ip)
+      end if
+      g = [turn(1, ip) * f(1) - turn(2, ip) * f(2), turn(2, ip) * f(1) + turn(1, ip) * f(2)]
+      call put_slot(row, slots, j, g(1), floor)
+      call put_slot(row, slots, j, g(2), floor)
+      i = pair_link(deck, ip)
+      c = cos(-s%work_states(i)%th)
+      sn = sin(-s%work_states(i)%th)
+      g = [c * f(1) - sn * f(2), sn * f(1) + c * f(2)]
+      call put_slot(row, slots, jl, g(1), floor)
+      call put_slot(row, slots, jl, g(2), floor)
+    end do
+  end subroutine assur_kinematics_row
+
+  !> assur_kinematics_row's next value `x` (the k-th; k advanced) into row(slots(k)), -0 as
+  !> +0 (none where slots(k) = 0); with `floor`, x at or below it as 0 (a force component).
+  pure subroutine put_slot(row, slots, k, x, floor)
+    !> The step's row of the table.
+    real(wp), intent(inout) :: row(:)
+    !> Column of every value.
+    integer, intent(in) :: slots(:)
+    !> Values put so far.
+    integer, intent(inout) :: k
+    !> The value.
+    real(wp), intent(in) :: x
+    !> Roundoff floor of a force component, N.
+    real(wp), intent(in), optional :: floor
+    k = k + 1
+    if (slots(k) == 0) return
+    row(slots(k)) = x + 0.0_wp
+    if (present(floor)) then
+      if (abs(x) <= floor) row(slots(k)) = 0.0_wp
+    end if
+  end subroutine put_slot
 
   !> Length scale of the crank: its farthest attachment point from the pivot (1 m if none).
   pure real(wp) function crank_length(deck)

@@ -40,7 +40,7 @@ module kinetostat_assur_layout
   use kinetostat_summary, only: table_peak_warning
   use kinetostat_assur_columns, only: assur_columns, assur_csv_values, assur_pair_prismatic, assur_row, &
     assur_row_size, pair_turns, crank_length, friction_columns, friction_csv_values, friction_work, &
-    friction_integrals, friction_summary, friction_row_size
+    friction_integrals, friction_summary, friction_row_size, kinematics_value_count, pair_link, assur_kinematics_row
   implicit none
   private
   public :: assur_mechanism_t, new_assur, assur_solve, assur_columns, assur_csv_values, assur_pair_prismatic
@@ -52,8 +52,8 @@ module kinetostat_assur_layout
   integer, parameter :: field_width = 12
   !> Decimals of the actuator's stroke (m), stroke speed (m/s) and acceleration (m/s^2).
   integer, parameter :: stroke_decimals = 4
-  !> put_kinematics' modes: values by name, the columns of the values, values by column.
-  integer, parameter :: kin_by_name = 0, kin_finding = 1, kin_by_slot = 2
+  !> put_kinematics' modes: the columns by name, the columns' indices.
+  integer, parameter :: kin_by_name = 0, kin_finding = 1
   !> Heading of RESULTS with --frame link.
   character(*), parameter :: link_axes_heading = "REACTIONS IN THE AXES OF THE LINK EACH ACTS ON "// &
     "(LINE 1 ALONG ITS X AXIS, LINE 2 ACROSS), N; CRANK PIN IN CRANK AXES (X ALONG PHI1)"
@@ -213,7 +213,7 @@ contains
     type(step_table_t), intent(inout) :: table
     type(error_t), allocatable, intent(out) :: error
     type(friction_step_t), allocatable :: fsteps(:)
-    real(wp), allocatable :: residual(:), mismatch(:), motion(:, :), forces(:, :, :), turn(:, :), omega1(:), m1(:)
+    real(wp), allocatable :: residual(:), mismatch(:), turn(:, :), omega1(:), m1(:)
     type(motion_t), allocatable :: motions(:)
     integer, allocatable :: slots(:)
     real(wp) :: crank
@@ -257,11 +257,20 @@ contains
     if (stat == 0) allocate (fsteps(merge(nrow, 0, self%deck%friction_on)), stat=stat)
     if (stat == 0) allocate (m1(nrow), stat=stat)
     if (stat == 0) allocate (motions(merge(nrow, 0, self%deck%dyn%mode /= dynamics_none)), stat=stat)
-    if (stat == 0) allocate (motion(3, merge(nrow, 0, kinematics)), stat=stat)
-    if (stat == 0) allocate (forces(2, np, merge(nrow, 0, kinematics)), stat=stat)
     if (stat /= 0) then
       call lack_block_memory(error, nrow, 24_int64 + 8 * (3 + 2 * np))
       return
+    end if
+    if (kinematics) then
+      ! the columns by name (the first block creates them), then the column of every value:
+      ! each step writes its values straight into its row
+      if (table%first_block()) then
+        call put_kinematics(table, self%deck)
+        call table%finish_columns()
+        if (allocated(table%no_room)) return
+      end if
+      allocate (slots(kinematics_value_count(self%deck)))
+      call put_kinematics(table, self%deck, slots)
     end if
     ! steps in parallel with OpenMP threads; the error reported is the first step's in step order
     ! (that step is solved again alone for its message)
@@ -297,10 +306,7 @@ contains
         end if
         residual(i) = step%residual
         mismatch(i) = step%mismatch
-        if (kinematics) then
-          motion(:, i) = [step%phi1, step%omega1, step%eps1]
-          forces(:, :, i) = step%f
-        end if
+        if (kinematics) call assur_kinematics_row(self%deck, step, turn, slots, table%rows(:, i))
       end do
       !$omp end do
     end block
@@ -308,21 +314,6 @@ contains
     if (first_bad <= last) then
       call step_failure(table%deck, self%deck, first_bad, omega1(first_bad - first + 1), error)
       return
-    end if
-    if (kinematics) then
-      ! by name for the first row (the first block creates the columns), then straight into
-      ! the columns those names give
-      allocate (slots(kinematics_value_count(self%deck)))
-      k = 1
-      if (table%first_block()) then
-        call put_kinematics(table, 1, self%deck, motion(:, 1), forces(:, :, 1))
-        call table%finish_columns()
-        k = 2
-      end if
-      call put_kinematics(table, 1, self%deck, motion(:, 1), forces(:, :, 1), slots, find=.true.)
-      do k = k, nrow
-        call put_kinematics(table, k, self%deck, motion(:, k), forces(:, :, k), slots)
-      end do
     end if
     if (self%deck%dyn%mode /= dynamics_none) then
       do k = 1, nrow
@@ -497,184 +488,95 @@ contains
       trim(adjustl(angle_text))//" deg): "//step_error%message)
   end subroutine step_failure
 
-  !> The kinematics columns of row `k`, in the deck's global frame: the reference point
-  !> J<pair> of every pair (x_J21 for the pair of F21: the pin of a revolute pair, the
-  !> slider's reference point of a prismatic pair; the crank's pair with the frame is the
-  !> pivot), the centre of mass S<id> of every moving link and its acceleration, the angle
-  !> (of the link's x axis), angular velocity and acceleration of every moving link (named
-  !> by link_label), and the components of every pair force as the F<pair>x, F<pair>y columns
-  !> give them.
+  !> The kinematics columns' names, in the deck's global frame (their values:
+  !> assur_kinematics_row, in the same order): the reference point J<pair> of every pair
+  !> (x_J21 for the pair of F21: the pin of a revolute pair, the slider's reference point of
+  !> a prismatic pair; the crank's pair with the frame is the pivot), the centre of mass
+  !> S<id> of every moving link, the angle (of the link's x axis), angular velocity and
+  !> acceleration of every moving link (named by link_label), the acceleration of every S,
+  !> and the components of every pair force as the F<pair>x, F<pair>y columns give them and
+  !> in the axes of the link it acts on.
   !>
-  !> Without `slots` the values go in by name (table%put_point, ...: columns appended on
-  !> first use). With `slots` and `find` they do not: slots(j) is set to the column of the
-  !> j-th value (0: a column that is not a kinematics column keeps its value) by the same
-  !> names; with `slots` alone row `k` gets the values straight into those columns (no name
-  !> is built), as put_kinematic would write them.
-  pure subroutine put_kinematics(table, k, deck, motion, pair_f, slots, find)
+  !> Without `slots` the columns are created (table%put_point, ...: appended on first use,
+  !> row 1 at 0 until the values come). With `slots` nothing is written: slots(j) is set to
+  !> the column of the j-th value (0: a column that is not a kinematics column keeps its
+  !> value) by the same names.
+  pure subroutine put_kinematics(table, deck, slots)
     !> The step table (columns appended on first use).
     type(step_table_t), intent(inout) :: table
-    !> Row.
-    integer, intent(in) :: k
     !> Validated deck.
     type(assur_deck_t), intent(in) :: deck
-    !> The step's crank angle (rad), speed (rad/s) and acceleration (rad/s^2).
-    real(wp), intent(in) :: motion(3)
-    !> The step's pair forces (assur_step_t%f), N.
-    real(wp), intent(in) :: pair_f(:, :)
     !> Column of every value, in the order they are put (kinematics_value_count).
-    integer, intent(inout), optional :: slots(:)
-    !> Set `slots` (true) instead of writing values.
-    logical, intent(in), optional :: find
-    type(link_state_t) :: states(0:2 * size(deck%mech%dyads) + 1)
-    type(dyad_pose_t) :: poses(size(deck%mech%dyads))
-    type(point_state_t) :: ps
-    type(error_t), allocatable :: error
+    integer, intent(out), optional :: slots(:)
+    real(wp), parameter :: zero(2) = 0.0_wp
     character(len=:), allocatable :: label
-    real(wp) :: w2, floor, f(2), phi1, omega1, eps1
-    integer :: i, ip, d, np, j, mode
+    integer :: i, ip, np, nl, j, mode
     mode = kin_by_name
-    if (present(slots)) mode = kin_by_slot
-    if (present(find)) then
-      if (find) mode = kin_finding
-    end if
-    phi1 = motion(1)
-    omega1 = motion(2)
-    eps1 = motion(3)
+    if (present(slots)) mode = kin_finding
     j = 0
-    if (mode /= kin_finding) then
-      call assur_kinematics(deck%mech, phi1, states, poses, error)
-      if (allocated(error)) return ! cannot happen: the step was solved at this angle
-    end if
-    w2 = omega1**2
-    np = size(pair_f, 2)
+    np = size(deck%pair_name)
+    nl = 2 * size(deck%mech%dyads) + 1
     do ip = 1, np
-      d = (ip - 1) / 3 + 1
-      if (ip == np) then
-        call put_kin_point(table, k, mode, j, slots, joint_name(deck, deck%pair_name(ip)), deck%mech%pivot)
+      call put_kin_point(table, mode, j, slots, joint_name(deck, deck%pair_name(ip)))
+    end do
+    do i = 1, nl
+      call put_kin_point(table, mode, j, slots, "S"//int_str(deck%mech%links(i)%id))
+    end do
+    do i = 1, nl
+      label = link_label(deck, i)
+      if (mode == kin_by_name) then
+        call table%put_link(1, label, 0.0_wp, 0.0_wp, 0.0_wp)
       else
-        call put_kin_point(table, k, mode, j, slots, joint_name(deck, deck%pair_name(ip)), poses(d)%p(:, ip - 3 * (d - 1)))
-      end if
-    end do
-    do i = 1, ubound(states, 1)
-      ps = point_on(states(i), deck%mech%links(i)%s)
-      call put_kin_point(table, k, mode, j, slots, "S"//int_str(deck%mech%links(i)%id), ps%p)
-    end do
-    do i = 1, ubound(states, 1)
-      select case (mode)
-      case (kin_by_name)
-        call table%put_link(k, link_label(deck, i), states(i)%th, states(i)%u * omega1, &
-                            states(i)%eq * w2 + states(i)%u * eps1)
-      case (kin_finding)
-        label = link_label(deck, i)
         call find_kin_slot(table, j, slots, "phi", label)
         call find_kin_slot(table, j, slots, "omega", label)
         call find_kin_slot(table, j, slots, "eps", label)
-      case default
-        call put_kin_value(table, k, j, slots, states(i)%th * rad_to_deg)
-        call put_kin_value(table, k, j, slots, states(i)%u * omega1)
-        call put_kin_value(table, k, j, slots, states(i)%eq * w2 + states(i)%u * eps1)
-      end select
+      end if
     end do
-    do i = 1, ubound(states, 1)
-      select case (mode)
-      case (kin_by_name)
-        ps = point_on(states(i), deck%mech%links(i)%s)
-        call table%put_acceleration(k, "S"//int_str(deck%mech%links(i)%id), ps%a * w2 + ps%v * eps1)
-      case (kin_finding)
+    do i = 1, nl
+      if (mode == kin_by_name) then
+        call table%put_acceleration(1, "S"//int_str(deck%mech%links(i)%id), zero)
+      else
         call find_kin_slot(table, j, slots, "ax_", "S"//int_str(deck%mech%links(i)%id))
         call find_kin_slot(table, j, slots, "ay_", "S"//int_str(deck%mech%links(i)%id))
-      case default
-        ps = point_on(states(i), deck%mech%links(i)%s)
-        f = ps%a * w2 + ps%v * eps1
-        call put_kin_value(table, k, j, slots, f(1))
-        call put_kin_value(table, k, j, slots, f(2))
-      end select
+      end if
     end do
-    floor = 0.0_wp
-    if (mode /= kin_finding) then
-      do ip = 1, np
-        floor = max(floor, magnitude(pair_f(:, ip)))
-      end do
-    end if
-    floor = noise_rel * floor
     do ip = 1, np
-      select case (mode)
-      case (kin_by_name)
-        f = rotate(snap_noise(deck%pair_sign(ip) * pair_f(:, ip), floor), -deck%pair_frame(ip))
-        call table%put_components(k, trim(deck%pair_name(ip)), force_components(f, floor), &
-                                  deck%pair_frame(ip) * rad_to_deg)
-      case (kin_finding)
+      if (mode == kin_by_name) then
+        call table%put_components(1, trim(deck%pair_name(ip)), zero, deck%pair_frame(ip) * rad_to_deg)
+      else
         call find_kin_slot(table, j, slots, trim(deck%pair_name(ip)), "_x")
         call find_kin_slot(table, j, slots, trim(deck%pair_name(ip)), "_y")
-      case default
-        f = rotate(snap_noise(deck%pair_sign(ip) * pair_f(:, ip), floor), -deck%pair_frame(ip))
-        f = force_components(f, floor)
-        call put_kin_value(table, k, j, slots, f(1))
-        call put_kin_value(table, k, j, slots, f(2))
-      end select
+      end if
     end do
     do ip = 1, np
-      i = pair_link(deck, ip)
-      select case (mode)
-      case (kin_by_name)
-        f = rotate(snap_noise(deck%pair_sign(ip) * pair_f(:, ip), floor), -states(i)%th)
-        call table%put_link_axes(k, trim(deck%pair_name(ip)), force_components(f, floor), link_label(deck, i))
-      case (kin_finding)
+      if (mode == kin_by_name) then
+        call table%put_link_axes(1, trim(deck%pair_name(ip)), zero, link_label(deck, pair_link(deck, ip)))
+      else
         call find_kin_slot(table, j, slots, trim(deck%pair_name(ip)), "_along")
         call find_kin_slot(table, j, slots, trim(deck%pair_name(ip)), "_across")
-      case default
-        f = rotate(snap_noise(deck%pair_sign(ip) * pair_f(:, ip), floor), -states(i)%th)
-        f = force_components(f, floor)
-        call put_kin_value(table, k, j, slots, f(1))
-        call put_kin_value(table, k, j, slots, f(2))
-      end select
+      end if
     end do
   end subroutine put_kinematics
 
-  !> put_kinematics' position of point `name` (x_<name>, y_<name>) in row `k` by `mode`.
-  pure subroutine put_kin_point(table, k, mode, j, slots, name, p)
+  !> put_kinematics' point `name` (x_<name>, y_<name>) by `mode`.
+  pure subroutine put_kin_point(table, mode, j, slots, name)
     !> The step table.
     type(step_table_t), intent(inout) :: table
-    !> Row.
-    integer, intent(in) :: k
-    !> kin_by_name, kin_finding or kin_by_slot.
+    !> kin_by_name or kin_finding.
     integer, intent(in) :: mode
-    !> Values put so far in the row.
+    !> Values named so far in the row.
     integer, intent(inout) :: j
     !> Column of every value.
     integer, intent(inout), optional :: slots(:)
     !> Point name.
     character(*), intent(in) :: name
-    !> Position, m.
-    real(wp), intent(in) :: p(2)
-    select case (mode)
-    case (kin_by_name)
-      call table%put_point(k, name, p)
-    case (kin_finding)
+    if (mode == kin_by_name) then
+      call table%put_point(1, name, [0.0_wp, 0.0_wp])
+    else
       call find_kin_slot(table, j, slots, "x_", name)
       call find_kin_slot(table, j, slots, "y_", name)
-    case default
-      call put_kin_value(table, k, j, slots, p(1))
-      call put_kin_value(table, k, j, slots, p(2))
-    end select
+    end if
   end subroutine put_kin_point
-
-  !> put_kinematics' next value into its column of row `k` (as put_kinematic writes it: -0
-  !> as +0).
-  pure subroutine put_kin_value(table, k, j, slots, value)
-    !> The step table.
-    type(step_table_t), intent(inout) :: table
-    !> Row.
-    integer, intent(in) :: k
-    !> Values put so far in the row.
-    integer, intent(inout) :: j
-    !> Column of every value.
-    integer, intent(in) :: slots(:)
-    !> The value.
-    real(wp), intent(in) :: value
-    j = j + 1
-    if (slots(j) > 0) table%rows(slots(j), k) = value + 0.0_wp
-  end subroutine put_kin_value
 
   !> The column of put_kinematics' next value: the last column named prefix//suffix (as
   !> put_kinematic finds it), 0 when it is not a kinematics or link-axes column.
@@ -698,36 +600,6 @@ contains
       end if
     end do
   end subroutine find_kin_slot
-
-  !> Number of values put_kinematics puts in a row.
-  pure integer function kinematics_value_count(deck)
-    !> Validated deck.
-    type(assur_deck_t), intent(in) :: deck
-    integer :: np, nl
-    np = size(deck%pair_name)
-    nl = 2 * size(deck%mech%dyads) + 1
-    kinematics_value_count = 2 * np + 2 * nl + 3 * nl + 2 * nl + 2 * np + 2 * np
-  end function kinematics_value_count
-
-  !> Internal index of the link the reported force of result pair `ip` acts on: link a for a
-  !> dyad's pair 1 and its inner pair (link b with inner_on = link3), link b for pair 3, the
-  !> crank for the crank pin.
-  pure integer function pair_link(deck, ip)
-    !> Validated deck.
-    type(assur_deck_t), intent(in) :: deck
-    !> Pair result index.
-    integer, intent(in) :: ip
-    integer :: d, j
-    d = (ip - 1) / 3 + 1
-    j = ip - 3 * (d - 1)
-    if (d > size(deck%mech%dyads)) then
-      pair_link = 1
-    else if (j == 1 .or. (j == 2 .and. deck%pair_sign(ip) > 0.0_wp)) then
-      pair_link = 2 * d
-    else
-      pair_link = 2 * d + 1
-    end if
-  end function pair_link
 
   !> The moving links: the input link and the two links of every dyad, each at its centre of
   !> mass S<id> (link names are the deck's link ids); gravity g along the deck's `down`.

@@ -150,23 +150,44 @@ contains
     ok = .false.
   end subroutine round_significant
 
-  !> The n decimal digits of q (leading zeros kept) into text(1:n).
+  !> The n decimal digits of q (leading zeros kept) into text(1:n): eight digits at a time
+  !> from the right (one 64-bit division, then two independent four-digit halves in 32-bit
+  !> arithmetic), the rest two at a time.
   pure subroutine put_digits(q, n, text)
     integer(int64), intent(in) :: q
     integer, intent(in) :: n
     character(*), intent(inout) :: text
-    integer(int64) :: r, two
-    integer :: p
+    integer(int64) :: r
+    integer :: p, eight, high, low, rest, two
     r = q
     p = n
+    do while (p >= 8)
+      eight = int(mod(r, 100000000_int64))
+      r = r / 100000000_int64
+      high = eight / 10000
+      low = eight - 10000 * high
+      call put_pair(text(p - 7:p - 6), high / 100)
+      call put_pair(text(p - 5:p - 4), mod(high, 100))
+      call put_pair(text(p - 3:p - 2), low / 100)
+      call put_pair(text(p - 1:p), mod(low, 100))
+      p = p - 8
+    end do
+    rest = int(r)
     do while (p >= 2)
-      two = mod(r, 100_int64)
-      r = r / 100_int64
-      text(p - 1:p) = digit_pairs(2 * two + 1:2 * two + 2)
+      two = mod(rest, 100)
+      rest = rest / 100
+      call put_pair(text(p - 1:p), two)
       p = p - 2
     end do
-    if (p == 1) text(1:1) = achar(48 + int(mod(r, 10_int64)))
+    if (p == 1) text(1:1) = achar(48 + mod(rest, 10))
   end subroutine put_digits
+
+  !> The two digits of 0 <= two <= 99 into `pair`.
+  pure subroutine put_pair(pair, two)
+    character(len=2), intent(out) :: pair
+    integer, intent(in) :: two
+    pair = digit_pairs(2 * two + 1:2 * two + 2)
+  end subroutine put_pair
 
   !> Number of decimal digits of q >= 0 (1 for 0).
   pure integer function digit_count(q)
