@@ -130,8 +130,10 @@ contains
       x2 = x1 + cw + gap
       x3 = x2
       if (part_drawn == 1) then
-        ! the plan of positions over the structure, the diagrams beside them
-        region = [x1, top, x1 + cw, top + 0.56_wp * (bottom - top)]
+        ! the plan of positions over the structure (its tables' height, at most 0.45 of the
+        ! column), the diagrams beside them
+        region = [x1, top, x1 + cw, bottom - gap - min(0.45_wp * (bottom - top), 34.0_wp + 4.5_wp * &
+          real(size(groups) + 1, wp) + 4.2_wp * real(lower_pairs() + 1, wp))]
       else
         ! the mechanism in the position beside the values table
         region = [x1, top, x1 + cw, top + max(70.0_wp, values_height())]
@@ -319,6 +321,7 @@ contains
     !> its places numbered 0 .. n_positions-1, the crank pin's places numbered as well.
     subroutine put_positions()
       integer :: i, b, j, cx, cy, r, n
+      character(len=:), allocatable :: pin_name
       real(wp) :: p(2), c(2), d(2), w
       real(wp), allocatable :: sx(:), sy(:)
       do i = 1, n_positions
@@ -366,10 +369,31 @@ contains
           deallocate (sx, sy)
         end if
       end if
+      ! the places of the traced point and the crank pin as dots, before the mechanism (its
+      ! labels keep clear of them)
+      pin_name = crank_pin()
+      if (len(traced) > 0) call place_dots(traced, "#9467bd")
+      if (len(pin_name) > 0 .and. pin_name /= traced) call place_dots(pin_name, "#000000")
     end subroutine put_positions
 
-    !> The positions' numbers at the traced point and the crank pin (after every line, so
-    !> that they keep clear of them), and the foot: position 0's angle and the step.
+    !> A dot at every position's place of point `name` (none when the run has no position
+    !> columns of it).
+    subroutine place_dots(name, colour)
+      character(*), intent(in) :: name, colour
+      real(wp) :: p(2)
+      integer :: i, r, cx, cy
+      cx = positions%column_index("x_"//name)
+      cy = positions%column_index("y_"//name)
+      if (cx == 0 .or. cy == 0) return
+      do i = 1, n_positions
+        r = 1 + (i - 1) * every
+        p = view%point([positions%rows(cx, r), positions%rows(cy, r)])
+        call sheet%circle(p(1), p(2), 0.5_wp, stroke=colour, width=0.25_wp, fill=colour)
+      end do
+    end subroutine place_dots
+
+    !> The positions' numbers at the traced point and the crank pin (after every line and
+    !> dot, so that they keep clear of them), and the foot: position 0's angle and the step.
     subroutine put_position_numbers()
       integer :: cx, cy
       character(len=:), allocatable :: pin_name, foot
@@ -400,8 +424,8 @@ contains
       end if
     end subroutine put_position_numbers
 
-    !> The numbers 0 .. n_positions-1 of the positions beside the places of the point whose
-    !> position columns are cx, cy, away from the places' centre.
+    !> The numbers 0 .. n_positions-1 of the positions beside the places (dots: place_dots) of
+    !> the point whose position columns are cx, cy, away from the places' centre.
     subroutine number_places(cx, cy, colour)
       integer, intent(in) :: cx, cy
       character(*), intent(in) :: colour
@@ -415,7 +439,6 @@ contains
       do i = 1, n_positions
         r = 1 + (i - 1) * every
         p = view%point([positions%rows(cx, r), positions%rows(cy, r)])
-        call sheet%circle(p(1), p(2), 0.5_wp, stroke=colour, width=0.25_wp, fill=colour)
         d = p - c
         call sheet%place_label(int_str(i - 1), "small", p(1), p(2), atan2(d(2), d(1)), &
           [region(1) + 1.0_wp, region(2) + 7.0_wp, region(3) - 1.0_wp, region(4) - 11.0_wp], colour=colour)
@@ -513,7 +536,12 @@ contains
         if (g > 1) formula = formula//" → "
         formula = formula//groups(g)%label
       end do
-      call put_table(sheet, x0 + 4.0_wp, y0 + 9.0_wp, [0.22_wp * w, 0.2_wp * w, 0.5_wp * w], 4.5_wp, cells)
+      if (part_drawn == 0) then
+        call put_table(sheet, x0 + 4.0_wp, y0 + 9.0_wp, [0.22_wp * w, 0.2_wp * w, 0.5_wp * w], 4.5_wp, cells)
+      else
+        ! (A4: the columns as wide as their longest cells, 2.4 mm characters 0.6 of it wide)
+        call put_table(sheet, x0 + 4.0_wp, y0 + 9.0_wp, fitted_columns(cells, 0.92_wp * w), 4.5_wp, cells)
+      end if
       n = size(topo%links)
       p5 = lower_pairs()
       call sheet%set_layer(layer_text)
@@ -523,6 +551,26 @@ contains
         int_str(p5)//",  p4 = 0,  W = 3n − 2p5 − p4 = "//int_str(3 * n - 2 * p5), "label")
       call put_pairs(x0 + 4.0_wp, y0 + 9.0_wp + 4.5_wp * size(cells, 1) + 17.0_wp, w - 8.0_wp)
     end subroutine put_structure
+
+    !> Widths of a table's columns that share `w` mm as their longest cells' lengths (in
+    !> characters, UTF-8's continuation bytes not counted, plus two a cell).
+    pure function fitted_columns(cells, w) result(widths)
+      character(*), intent(in) :: cells(:, :)
+      real(wp), intent(in) :: w
+      real(wp) :: widths(size(cells, 2))
+      integer :: c, r, i, n
+      widths = 2.0_wp
+      do c = 1, size(cells, 2)
+        do r = 1, size(cells, 1)
+          n = 0
+          do i = 1, len_trim(cells(r, c))
+            if (iachar(cells(r, c)(i:i)) < 128 .or. iachar(cells(r, c)(i:i)) >= 192) n = n + 1
+          end do
+          widths(c) = max(widths(c), 2.0_wp + real(n, wp))
+        end do
+      end do
+      widths = w * widths / sum(widths)
+    end function fitted_columns
 
     !> The table of the kinematic pairs: at every point the links joined there (the frame at a
     !> pivot), a turning pair (В) between each further link and the first; every slider a
