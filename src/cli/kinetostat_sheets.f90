@@ -1,7 +1,9 @@
 !> `kinetostat sheets DECK -o DIR`: the course's drawing sheets of a linkage deck, each as SVG
 !> and DXF (the one drawing model) and as PDF at true size when rsvg-convert is installed:
 !> DIR/kinematics (the structure, the mechanism at the position with a trajectory, the output
-!> link's diagrams, the values), DIR/kinetostatics (the mechanism with its forces, Zhukovsky's
+!> link's diagrams, the values; on A4 portrait two sheets: DIR/kinematics with the plan of
+!> positions, the structure and the diagrams, DIR/kinematics-2 with the values and the plans of
+!> velocities and accelerations), DIR/kinetostatics (the mechanism with its forces, Zhukovsky's
 !> lever, the force polygons with each Assur group drawn apart, at the position --at K, by
 !> default the step of the largest |effort| of the first drive) and,
 !> with a steady cycle, DIR/dynamics (the machine dynamics and the flywheel); of a design deck
@@ -33,9 +35,12 @@ module kinetostat_sheets
   public :: write_course_sheets, sheet_names, parse_sheet_numbers
 
   !> The sheets' file stems, in the course's order: a linkage's three, then the design kinds'
-  !> (each kind's mechanism_t%sheet_name: &gear_geometry, &planetary_synthesis, &cam_profile).
+  !> (each kind's mechanism_t%sheet_name: &gear_geometry, &planetary_synthesis, &cam_profile),
+  !> and the kinematics' second sheet on A4 (made with the first, numbered after it).
   character(*), parameter :: sheet_names(*) = [character(len=13) :: "kinematics", "kinetostatics", "dynamics", &
-    "gears", "planetary", "cam"]
+    "gears", "planetary", "cam", "kinematics-2"]
+  !> The place of the kinematics' second sheet (A4) in sheet_names.
+  integer, parameter :: kinematics_second = 7
   !> The plan of positions: rows of its run between two positions (the traced point's
   !> trajectory is drawn through them all).
   integer, parameter :: rows_per_position = 6
@@ -45,7 +50,7 @@ module kinetostat_sheets
 contains
 
   !> Parse --sheet-numbers "1,2,3": the department's numbers of the sheets in the course's
-  !> order (kinematics, kinetostatics, dynamics), whole numbers 1..999.
+  !> order (kinematics, on A4 its second sheet, kinetostatics, dynamics), whole numbers 1..999.
   pure subroutine parse_sheet_numbers(text, numbers, error)
     character(*), intent(in) :: text
     integer, allocatable, intent(out) :: numbers(:)
@@ -68,7 +73,7 @@ contains
       end if
       if (ios /= 0 .or. value < 1) then
         call fatal_error(error, exit_usage, "--sheet-numbers needs whole numbers 1..999 separated by commas, "// &
-          "one per sheet (kinematics, kinetostatics, dynamics), got '"//text//"'")
+          "one per sheet (kinematics, on A4 kinematics-2, kinetostatics, dynamics), got '"//text//"'")
         return
       end if
       numbers = [numbers, value]
@@ -130,6 +135,8 @@ contains
       made(1) = .true.
       made(2) = .true.
       made(3) = dynamics
+      ! (A4 portrait: the kinematics on two sheets)
+      made(kinematics_second) = options%paper == "A4"
     end if
     count_made = count(made)
     if (size(numbers) > 0 .and. size(numbers) /= count_made) then
@@ -140,7 +147,7 @@ contains
     n_files = 0
     n = 0
     do s = 1, size(sheet_names)
-      if (.not. made(s)) cycle
+      if (.not. made(s) .or. s == kinematics_second) cycle
       n = n + 1
       o = options
       o%sheet_count = count_made
@@ -159,6 +166,17 @@ contains
         call add_file(trim(sheet_names(s))//".svg")
         o%format = format_dxf
         call add_file(trim(sheet_names(s))//".dxf")
+        if (made(kinematics_second)) then
+          ! (A4: the second sheet, the next number)
+          n = n + 1
+          o%sheet_number = n
+          if (size(numbers) > 0) o%sheet_number = numbers(n)
+          o%course_part = 2
+          o%format = format_svg
+          call add_file(trim(sheet_names(kinematics_second))//".svg")
+          o%format = format_dxf
+          call add_file(trim(sheet_names(kinematics_second))//".dxf")
+        end if
       case (2)
         o%at_step = k_at
         o%course_sheet = course_kinetostatics

@@ -152,6 +152,8 @@ module kinetostat_run
     integer :: course_output_link = 0
     integer :: course_every = 1
     type(step_table_t), allocatable :: course_plan
+    !> The kinematics sheet on A4 (portrait, two sheets): which one, 1 or 2.
+    integer :: course_part = 1
   end type run_options_t
 
 contains
@@ -390,11 +392,12 @@ contains
             if (allocated(options%course_plan)) then
               call draw_kinematics_sheet(mech%title(options%lang), table, motion_topo, course_drawing, k_at, &
                 iso_paper(options%paper, .true.), options%lang, sheet, options%course_plan, options%course_every, &
-                options%course_positions, point_name(), options%course_output_link, course_plans)
+                options%course_positions, point_name(), options%course_output_link, course_plans, options%course_part)
             else
               call draw_kinematics_sheet(mech%title(options%lang), table, motion_topo, course_drawing, k_at, &
                 iso_paper(options%paper, .true.), options%lang, sheet, every=1, n_positions=options%course_positions, &
-                point_asked=point_name(), output_link=options%course_output_link, plans=course_plans)
+                point_asked=point_name(), output_link=options%course_output_link, plans=course_plans, &
+                part=options%course_part)
             end if
           else if (options%course_sheet == course_dynamics) then
             call draw_dynamics_sheet(mech%title(options%lang), table, iso_paper(options%paper, .true.), options%lang, &

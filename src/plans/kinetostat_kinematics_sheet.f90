@@ -18,7 +18,7 @@ module kinetostat_kinematics_sheet
   use kinetostat_text, only: int_str
   use kinetostat_step_table, only: step_table_t
   use kinetostat_labels, only: unit_word => unit_symbol
-  use kinetostat_sheet, only: sheet_t, paper_t, layer_text, layer_charts
+  use kinetostat_sheet, only: sheet_t, paper_t, course_paper, layer_text, layer_charts
   use kinetostat_title_block, only: put_sheet_format, title_block_from_table, block_height, block_width
   use kinetostat_scales, only: round_scale, scale_number
   use kinetostat_sketch, only: sketch_t
@@ -42,9 +42,10 @@ module kinetostat_kinematics_sheet
 
 contains
 
-  !> The kinematics sheet of row k on `paper` (landscape: three columns).
+  !> The kinematics sheet of row k on `paper`'s size (course_paper: A1 .. A3 landscape in
+  !> three columns; A4 portrait, its `part` 1 or 2, in two).
   subroutine draw_kinematics_sheet(title, table, topo, drawing, k, paper, lang, sheet, positions, every, n_positions, &
-                                   point_asked, output_link, plans)
+                                   point_asked, output_link, plans, part)
     !> Title of the mechanism.
     character(*), intent(in) :: title
     !> The run (its kinematics columns with the points' velocities and accelerations).
@@ -70,6 +71,15 @@ contains
     integer, intent(in) :: output_link
     !> The plans of velocities and accelerations at row k (none: the values table alone).
     type(plans_t), intent(in), optional :: plans
+    !> A4 portrait's sheet: 1 (the plan of positions, the structure, the output link's
+    !> diagrams; the default) or 2 (the mechanism in the position, the values there, the plans
+    !> and the values read off them); A1 .. A3 landscape draw everything on one sheet.
+    integer, intent(in), optional :: part
+    type(paper_t) :: page
+    integer :: part_drawn, n_read
+    !> The bottom of the panels (A4: above the title block) and the height of the values
+    !> read off the plans (A4), mm.
+    real(wp) :: bottom, h_read
     type(mechanism_view_t) :: view
     type(drawing_t) :: all_positions
     type(drawing_t), allocatable :: placed(:)
@@ -94,20 +104,49 @@ contains
     if (allocated(table%driver)) driver = table%driver
     call plan_groups(topo, drawing, table, slides, driver, groups)
 
-    inner = paper%inside()
-    cw = (inner(3) - inner(1) - 4.0_wp * gap) / 3.0_wp
-    x1 = inner(1) + gap
-    x2 = x1 + cw + gap
-    x3 = x2 + cw + gap
+    ! A1 .. A3 landscape: one sheet in three columns; A4 portrait (ГОСТ 2.301: its title
+    ! block along the short side) two sheets in two columns (part 1, 2)
+    page = course_paper(paper%name)
+    part_drawn = 0
+    if (.not. page%landscape) then
+      part_drawn = 1
+      if (present(part)) then
+        if (part == 2) part_drawn = 2
+      end if
+    end if
+    inner = page%inside()
     top = inner(2) + 24.0_wp
-    region = [x1, top, x1 + cw, top + 0.58_wp * (inner(4) - top)]
+    ! (A4: the panels stop above the title block, which spans the frame's width)
+    bottom = inner(4) - block_height - gap
+    if (part_drawn == 0) then
+      cw = (inner(3) - inner(1) - 4.0_wp * gap) / 3.0_wp
+      x1 = inner(1) + gap
+      x2 = x1 + cw + gap
+      x3 = x2 + cw + gap
+      region = [x1, top, x1 + cw, top + 0.58_wp * (inner(4) - top)]
+    else
+      cw = (inner(3) - inner(1) - 3.0_wp * gap) / 2.0_wp
+      x1 = inner(1) + gap
+      x2 = x1 + cw + gap
+      x3 = x2
+      if (part_drawn == 1) then
+        ! the plan of positions over the structure (its tables' height, at most 0.45 of the
+        ! column), the diagrams beside them
+        region = [x1, top, x1 + cw, bottom - gap - min(0.45_wp * (bottom - top), 34.0_wp + 4.5_wp * &
+          real(size(groups) + 1, wp) + 4.2_wp * real(lower_pairs() + 1, wp))]
+      else
+        ! the mechanism in the position beside the values table
+        region = [x1, top, x1 + cw, top + max(70.0_wp, values_height())]
+      end if
+    end if
     ! the plan of positions: every position's drawing, and the view fitted to them all
-    planned = present(positions)
+    planned = present(positions) .and. part_drawn /= 2
     if (planned) call position_drawings()
     ! the panel's heading, in as many lines as the column needs (heading_drop: the mechanism
     ! lower by the lines after the first)
     traced = point_asked
     if (len(traced) == 0) traced = traced_point()
+    if (part_drawn == 2) traced = ""
     call heading_lines()
     if (planned) then
       call fit_mechanism_view(all_positions, [region(1) + 4.0_wp, region(2) + 10.0_wp + heading_drop, &
@@ -116,14 +155,26 @@ contains
       call fit_mechanism_view(drawing, [region(1) + 4.0_wp, region(2) + 10.0_wp + heading_drop, region(3) - 4.0_wp, &
         region(4) - 10.0_wp], 10.0_wp, view)
     end if
-    call sheet%open(paper, lang, words("Structure and kinematics", &
-      "Структурный и кинематический анализ", lang)// &
-      " - "//table%deck, "kinetostat sheets: the kinematics sheet of "//table%deck//": the mechanism at a position "// &
-      "with a trajectory, the structure, the output link's diagrams, the values at the position.")
-    call put_sheet_format(sheet, title_block_from_table(table, words("Structure and kinematics of the mechanism", &
-      "Структурный и кинематический анализ механизма", lang), view%drawing_scale%text))
-    call sheet_header(sheet, title, table, lang, words("Structural and kinematic analysis", &
-      "Структурный и кинематический анализ механизма", lang))
+    if (part_drawn == 2) then
+      call sheet%open(page, lang, words("Plans of velocities and accelerations", &
+        "Планы скоростей и ускорений", lang)//" - "//table%deck, &
+        "kinetostat sheets: the second kinematics sheet (A4) of "//table%deck//": the mechanism in the "// &
+        "position, the values there, the plans of velocities and "// &
+        "accelerations and the values read off them.")
+      call put_sheet_format(sheet, title_block_from_table(table, words("Plans of velocities and accelerations", &
+        "Планы скоростей и ускорений", lang), view%drawing_scale%text))
+      call sheet_header(sheet, title, table, lang, words("Kinematic analysis: plans of velocities and accelerations", &
+        "Кинематический анализ: планы скоростей и ускорений", lang))
+    else
+      call sheet%open(page, lang, words("Structure and kinematics", &
+        "Структурный и кинематический анализ", lang)// &
+        " - "//table%deck, "kinetostat sheets: the kinematics sheet of "//table%deck//": the mechanism at a position "// &
+        "with a trajectory, the structure, the output link's diagrams, the values at the position.")
+      call put_sheet_format(sheet, title_block_from_table(table, words("Structure and kinematics of the mechanism", &
+        "Структурный и кинематический анализ механизма", lang), view%drawing_scale%text))
+      call sheet_header(sheet, title, table, lang, words("Structural and kinematic analysis", &
+        "Структурный и кинематический анализ механизма", lang))
+    end if
 
     ! the mechanism at the position with the traced point's trajectory
     call sheet%set_layer(layer_charts)
@@ -144,7 +195,11 @@ contains
       unit_word("m", lang)//"/"//unit_word("mm", lang)//" ("//view%drawing_scale%text//")", "small")
 
     ! the structure
-    call put_structure(x1, region(4) + gap, cw, inner(4) - region(4) - 2.0_wp * gap)
+    if (part_drawn == 0) then
+      call put_structure(x1, region(4) + gap, cw, inner(4) - region(4) - 2.0_wp * gap)
+    else if (part_drawn == 1) then
+      call put_structure(x1, region(4) + gap, cw, bottom - region(4) - gap)
+    end if
 
     ! the output link's diagrams over the input angle
     ! (a run of one position, or one whose input coordinate does not move, has none)
@@ -152,10 +207,12 @@ contains
     if (table%input_column > 0 .and. size(table%rows, 2) > 1) then
       if (maxval(phi) - minval(phi) <= 0.0_wp) phi = [real(wp) ::]
     end if
-    if (size(phi) > 1) then
+    if (size(phi) > 1 .and. part_drawn < 2) then
       mu_phi = round_scale(maxval(phi) - minval(phi), cw - 24.0_wp)
-      ! (down to the title block when the column reaches over it: A3)
-      if (x2 + cw > inner(3) - block_width) then
+      ! (down to the title block when the column reaches over it: A3, A4)
+      if (part_drawn == 1) then
+        hmax = (bottom - top - 2.0_wp * gap) / 3.0_wp
+      else if (x2 + cw > inner(3) - block_width) then
         hmax = (inner(4) - block_height - gap - top - 2.0_wp * gap) / 3.0_wp
       else
         hmax = (inner(4) - top - 2.0_wp * gap) / 3.0_wp
@@ -166,7 +223,24 @@ contains
 
     ! the values at the position, the plans of velocities and accelerations and the values
     ! read off them
-    if (present(plans)) then
+    if (part_drawn == 1) then
+      continue
+    else if (part_drawn == 2 .and. present(plans)) then
+      ! (A4: the values beside the mechanism, the two plans side by side under them, the values
+      ! read off them across the sheet)
+      call put_values(x2, top, cw, region(4) - top)
+      y = region(4) + gap
+      hmax = bottom - y
+      ! (the values read off in three columns of 3.2 mm rows under a heading of 8 mm, within
+      ! 0.3 .. 0.5 of the height)
+      n_read = 0
+      if (allocated(plans%values)) n_read = size(plans%values)
+      h_read = min(0.5_wp * hmax, max(0.3_wp * hmax, 11.5_wp + 3.2_wp * real((n_read + 2) / 3, wp)))
+      call draw_kinematic_plans(sheet, view, plans, [x1, y, x1 + cw, bottom - h_read - gap], &
+        [x2, y, x2 + cw, bottom - h_read - gap], [x1, bottom - h_read, x2 + cw, bottom], lang)
+    else if (part_drawn == 2) then
+      call put_values(x2, top, cw, region(4) - top)
+    else if (present(plans)) then
       call put_values(x3, top, cw, values_height())
       y = top + values_height() + gap
       hmax = inner(4) - block_height - gap - y
@@ -247,6 +321,7 @@ contains
     !> its places numbered 0 .. n_positions-1, the crank pin's places numbered as well.
     subroutine put_positions()
       integer :: i, b, j, cx, cy, r, n
+      character(len=:), allocatable :: pin_name
       real(wp) :: p(2), c(2), d(2), w
       real(wp), allocatable :: sx(:), sy(:)
       do i = 1, n_positions
@@ -294,10 +369,31 @@ contains
           deallocate (sx, sy)
         end if
       end if
+      ! the places of the traced point and the crank pin as dots, before the mechanism (its
+      ! labels keep clear of them)
+      pin_name = crank_pin()
+      if (len(traced) > 0) call place_dots(traced, "#9467bd")
+      if (len(pin_name) > 0 .and. pin_name /= traced) call place_dots(pin_name, "#000000")
     end subroutine put_positions
 
-    !> The positions' numbers at the traced point and the crank pin (after every line, so
-    !> that they keep clear of them), and the foot: position 0's angle and the step.
+    !> A dot at every position's place of point `name` (none when the run has no position
+    !> columns of it).
+    subroutine place_dots(name, colour)
+      character(*), intent(in) :: name, colour
+      real(wp) :: p(2)
+      integer :: i, r, cx, cy
+      cx = positions%column_index("x_"//name)
+      cy = positions%column_index("y_"//name)
+      if (cx == 0 .or. cy == 0) return
+      do i = 1, n_positions
+        r = 1 + (i - 1) * every
+        p = view%point([positions%rows(cx, r), positions%rows(cy, r)])
+        call sheet%circle(p(1), p(2), 0.5_wp, stroke=colour, width=0.25_wp, fill=colour)
+      end do
+    end subroutine place_dots
+
+    !> The positions' numbers at the traced point and the crank pin (after every line and
+    !> dot, so that they keep clear of them), and the foot: position 0's angle and the step.
     subroutine put_position_numbers()
       integer :: cx, cy
       character(len=:), allocatable :: pin_name, foot
@@ -328,8 +424,8 @@ contains
       end if
     end subroutine put_position_numbers
 
-    !> The numbers 0 .. n_positions-1 of the positions beside the places of the point whose
-    !> position columns are cx, cy, away from the places' centre.
+    !> The numbers 0 .. n_positions-1 of the positions beside the places (dots: place_dots) of
+    !> the point whose position columns are cx, cy, away from the places' centre.
     subroutine number_places(cx, cy, colour)
       integer, intent(in) :: cx, cy
       character(*), intent(in) :: colour
@@ -343,7 +439,6 @@ contains
       do i = 1, n_positions
         r = 1 + (i - 1) * every
         p = view%point([positions%rows(cx, r), positions%rows(cy, r)])
-        call sheet%circle(p(1), p(2), 0.5_wp, stroke=colour, width=0.25_wp, fill=colour)
         d = p - c
         call sheet%place_label(int_str(i - 1), "small", p(1), p(2), atan2(d(2), d(1)), &
           [region(1) + 1.0_wp, region(2) + 7.0_wp, region(3) - 1.0_wp, region(4) - 11.0_wp], colour=colour)
@@ -441,7 +536,12 @@ contains
         if (g > 1) formula = formula//" → "
         formula = formula//groups(g)%label
       end do
-      call put_table(sheet, x0 + 4.0_wp, y0 + 9.0_wp, [0.22_wp * w, 0.2_wp * w, 0.5_wp * w], 4.5_wp, cells)
+      if (part_drawn == 0) then
+        call put_table(sheet, x0 + 4.0_wp, y0 + 9.0_wp, [0.22_wp * w, 0.2_wp * w, 0.5_wp * w], 4.5_wp, cells)
+      else
+        ! (A4: the columns as wide as their longest cells, 2.4 mm characters 0.6 of it wide)
+        call put_table(sheet, x0 + 4.0_wp, y0 + 9.0_wp, fitted_columns(cells, 0.92_wp * w), 4.5_wp, cells)
+      end if
       n = size(topo%links)
       p5 = lower_pairs()
       call sheet%set_layer(layer_text)
@@ -451,6 +551,26 @@ contains
         int_str(p5)//",  p4 = 0,  W = 3n − 2p5 − p4 = "//int_str(3 * n - 2 * p5), "label")
       call put_pairs(x0 + 4.0_wp, y0 + 9.0_wp + 4.5_wp * size(cells, 1) + 17.0_wp, w - 8.0_wp)
     end subroutine put_structure
+
+    !> Widths of a table's columns that share `w` mm as their longest cells' lengths (in
+    !> characters, UTF-8's continuation bytes not counted, plus two a cell).
+    pure function fitted_columns(cells, w) result(widths)
+      character(*), intent(in) :: cells(:, :)
+      real(wp), intent(in) :: w
+      real(wp) :: widths(size(cells, 2))
+      integer :: c, r, i, n
+      widths = 2.0_wp
+      do c = 1, size(cells, 2)
+        do r = 1, size(cells, 1)
+          n = 0
+          do i = 1, len_trim(cells(r, c))
+            if (iachar(cells(r, c)(i:i)) < 128 .or. iachar(cells(r, c)(i:i)) >= 192) n = n + 1
+          end do
+          widths(c) = max(widths(c), 2.0_wp + real(n, wp))
+        end do
+      end do
+      widths = w * widths / sum(widths)
+    end function fitted_columns
 
     !> The table of the kinematic pairs: at every point the links joined there (the frame at a
     !> pivot), a turning pair (В) between each further link and the first; every slider a

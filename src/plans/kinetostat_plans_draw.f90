@@ -513,15 +513,7 @@ contains
     end do
     call names(sheet, plans%balancing, balancing_colour)
     if (len(short) > 0) then
-      if (geo%groups_apart .and. geo%lever_table(2) > geo%lever(4) .and. geo%paper%landscape) then
-        ! (A4 landscape: in the balancing effort's panel beside it, at its foot, clear of the lever's
-        ! arrows)
-        call sheet%set_layer(layer_text)
-        associate (r => panel_inner(geo%results))
-          call legible_lines(sheet, r(1) + 1.0_wp, r(4), r(3) - r(1) - 2.0_wp, word("Zhukovsky's lever", lang)//": "// &
-            word("not drawn, shorter than 1 mm", lang)//": "//short)
-        end associate
-      else if (geo%groups_apart) then
+      if (geo%groups_apart) then
         call sheet%set_layer(layer_text)
         call legible_lines(sheet, area(1) + 1.0_wp, note_y, area(3) - area(1) - 2.0_wp, &
           word("not drawn, shorter than 1 mm", lang)//": "//short)

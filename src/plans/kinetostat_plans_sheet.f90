@@ -33,8 +33,7 @@ module kinetostat_plans_sheet
   real(wp), parameter :: lever_arrow = 24.0_wp
   !> A panel's heading band at its top and its scale line at its bottom, mm.
   real(wp), parameter :: panel_head = 8.0_wp, panel_foot = 9.0_wp
-  !> The smallest box (width, height) a group drawn apart gets, else it is not drawn, mm
-  !> (on A4 landscape each group gets about 44 x 60 mm).
+  !> The smallest box (width, height) a group drawn apart gets, else it is not drawn, mm.
   real(wp), parameter :: min_apart(2) = [36.0_wp, 36.0_wp]
   !> The mechanism's longest force arrow on the course sheet, mm.
   real(wp), parameter :: longest_arrow = 28.0_wp
@@ -164,12 +163,6 @@ contains
       sheet%lever_table = [sheet%lever(3), top, b(3) - 2.0_wp, top + row]
       sheet%polygons = [b(1) + 2.0_wp, top + row + 2.0_wp, b(3) - 2.0_wp, bottom]
       sheet%results = [b(1) + 2.0_wp, bottom + 2.0_wp, b(3) - 187.0_wp, b(4) - 1.0_wp]
-      ! A4: the lever's table left of the title block (its rows at 2.6 mm), the balancing
-      ! effort at the top right, so that the polygons get the height the groups need
-      if (sheet%results(3) - sheet%results(1) < 100.0_wp) then
-        sheet%lever_table = sheet%results
-        sheet%results = [sheet%lever(3), top, b(3) - 2.0_wp, top + row]
-      end if
       fm = 0.0_wp
       do i = 1, size(drawing%forces)
         fm = max(fm, norm2(drawing%forces(i)%f))
