@@ -378,6 +378,10 @@ contains
   !> whose units all have closed forms and of three decks with the other dyad kinds (RPR,
   !> PRP, RPP), then over 40 random drive values within the run's range: every pose within
   !> 1e-12 of the linkage's size (so the same branch throughout), and the closed forms in use.
+  !> On every step of every deck the two formulations agree: the group method's reactions
+  !> within 1e-9 of the step's largest reaction of the Lagrange multipliers' (by the closed
+  !> forms and by LU), every link's equilibrium residual of the latter <= 1e-12 (the PRP
+  !> deck's crank, loaded by a sliding pair of the dyad, once differed by 0.81).
   subroutine test_closed_forms(t)
     type(test_counts_t), intent(inout) :: t
     character(len=*), parameter :: decks(5) = [character(len=40) :: "data/fivebar.nml", "data/linkage_fourbar.nml", &
@@ -390,6 +394,9 @@ contains
     !> reactions by the multipliers and by the group method (relative to the step's largest
     !> reaction); the unit solves made in closed form.
     real(wp) :: worst_v, worst_a, worst_lam, worst_fb
+    !> The largest gap of the group method's reactions and the multipliers' (relative to the
+    !> step's largest reaction), and the largest equilibrium residual of a link (relative).
+    real(wp) :: worst_gap, worst_res
     integer :: i, small
     do i = 1, size(decks)
       call bundled(trim(decks(i)), deck, t)
@@ -451,6 +458,7 @@ contains
       integer(int64) :: seed
       logical :: used
       worst_v = 0.0_wp; worst_a = 0.0_wp; worst_lam = 0.0_wp; worst_fb = 0.0_wp
+      worst_gap = 0.0_wp; worst_res = 0.0_wp
       small = 0
       wg%small_solves = .false.
       nd = size(deck%mech%drives)
@@ -502,6 +510,10 @@ contains
         "closed forms against the general J solve, largest difference relative to the step's largest: velocities "// &
         real_str(worst_v)//", accelerations "//real_str(worst_a)//", multipliers' reactions "//real_str(worst_lam)// &
         ", group method's "//real_str(worst_fb)//" (limit 1e-12)")
+      call check_true(t, "linkage-two-formulations-"//name, worst_gap <= 1.0e-9_wp .and. worst_res <= 1.0e-12_wp, &
+        "over "//int_str(nsteps)//" steps: the group method against the Lagrange multipliers, largest gap / "// &
+        "the step's largest reaction "//real_str(worst_gap)//" (limit 1e-9); largest equilibrium residual "// &
+        real_str(worst_res)//" (limit 1e-12)")
     end subroutine compare
     !> One step's velocities, accelerations and reactions at poses q by the closed forms (wc)
     !> and by the general solve (wg: LU factors of every unit, the group method's systems
@@ -547,6 +559,9 @@ contains
         return
       end if
       worst_lam = max(worst_lam, linkage_reaction_gap(deck%mech, sg, sc%f, sc%normal, sc%couple, sc%effort))
+      ! the two formulations against each other (linkage_statics' second opinion), both solves
+      worst_gap = max(worst_gap, sc%solver_gap, sg%solver_gap)
+      worst_res = max(worst_res, sc%residual, sg%residual)
       ! the group method's free bodies by the closed forms
       call linkage_free_body(deck%mech, fval, mval, sg, wc, f2, n2, c2, e2v, e1)
       if (allocated(e1)) then

@@ -1179,12 +1179,14 @@ contains
           work%fb(3 * j - 2:3 * j) = -work%load(:, unit%links(j))
         end do
         work%fa(1:nu, 1:nu) = 0.0_wp
-        ! the forces known from the groups solved before
+        ! the forces known from the groups solved before: each pair's force f on a (for a
+        ! sliding pair the normal force times the guide's normal, at the block's point) and
+        ! its reaction on b, with a sliding pair's couple
         do k = 1, np
           if (.not. work%pair_known(k)) cycle
           call pair_effect(work%cs, k, g, h, pa, pb)
-          call add_known(work, mech%pairs(k)%a, pa, g(:, 1) * f(1, k) + g(:, 2) * f(2, k), 0.0_wp)
-          call add_known(work, mech%pairs(k)%b, pb, -(g(:, 1) * f(1, k) + g(:, 2) * f(2, k)), 0.0_wp)
+          call add_known(work, mech%pairs(k)%a, pa, f(:, k), 0.0_wp)
+          call add_known(work, mech%pairs(k)%b, pb, -f(:, k), 0.0_wp)
           if (mech%pairs(k)%kind == pair_p) then
             call add_known(work, mech%pairs(k)%a, pa, [0.0_wp, 0.0_wp], couple(k))
             call add_known(work, mech%pairs(k)%b, pb, [0.0_wp, 0.0_wp], -couple(k))
