@@ -375,13 +375,14 @@ contains
   !> The closed forms of the dyads and input units against Newton's method (a second,
   !> independent solve, here converged to 1e-14 of the linkage's size): two continuations
   !> from the reference pose, one by each, over every step of every bundled &linkage deck
-  !> whose units all have closed forms and of three decks with the other dyad kinds (RPR,
-  !> PRP, RPP), then over 40 random drive values within the run's range: every pose within
+  !> whose units all have closed forms and of four decks with the other dyad kinds (RPR,
+  !> PRP, RPP, and RRP with its guide on the crank), then over 40 random drive values within the run's range: every pose within
   !> 1e-12 of the linkage's size (so the same branch throughout), and the closed forms in use.
   !> On every step of every deck the two formulations agree: the group method's reactions
   !> within 1e-9 of the step's largest reaction of the Lagrange multipliers' (by the closed
   !> forms and by LU), every link's equilibrium residual of the latter <= 1e-12 (the PRP
-  !> deck's crank, loaded by a sliding pair of the dyad, once differed by 0.81).
+  !> and RRP decks' cranks, loaded by a sliding pair of the dyad, once differed by 0.81 and
+  !> 0.33).
   subroutine test_closed_forms(t)
     type(test_counts_t), intent(inout) :: t
     character(len=*), parameter :: decks(5) = [character(len=40) :: "data/fivebar.nml", "data/linkage_fourbar.nml", &
@@ -435,6 +436,17 @@ contains
       "pair(4)%name = 'E', pair(4)%kind = 'P', pair(4)%links = 3, 0, pair(4)%at = 0.2, 0, pair(4)%guide = 0, "// &
       "pair(4)%angle = 0 "// &
       "drive(1)%pair = 'A', drive(1)%start = 0, drive(1)%step = 10, drive(1)%omega = 10")
+    ! RRP with the guide on the crank: block 2 sliding along crank 1, pinned at C to rocker 3
+    ! (pivot D); the crank carries the dyad's sliding pair
+    call from_text("rrp-guide-on-crank", "link(1)%id = 1, link(1)%m = 1, link(1)%j = 0.01, link(1)%s = 0.05, 0 "// &
+      "link(2)%id = 2, link(2)%m = 0.5, link(2)%j = 0.001, link(2)%s = 0.1, 0 "// &
+      "link(3)%id = 3, link(3)%m = 2, link(3)%j = 0.02, link(3)%s = 0.15, 0.05 "// &
+      "pair(1)%name = 'A', pair(1)%kind = 'R', pair(1)%links = 1, 0, pair(1)%at = 0, 0 "// &
+      "pair(2)%name = 'B', pair(2)%kind = 'P', pair(2)%links = 2, 1, pair(2)%at = 0.1, 0, pair(2)%guide = 1, "// &
+      "pair(2)%angle = 0 "// &
+      "pair(3)%name = 'C', pair(3)%kind = 'R', pair(3)%links = 2, 3, pair(3)%at = 0.1, 0 "// &
+      "pair(4)%name = 'D', pair(4)%kind = 'R', pair(4)%links = 3, 0, pair(4)%at = 0.2, 0.1 "// &
+      "drive(1)%pair = 'A', drive(1)%start = 0, drive(1)%step = 1.5, drive(1)%omega = 10")
   contains
     subroutine from_text(name, body)
       character(*), intent(in) :: name, body
