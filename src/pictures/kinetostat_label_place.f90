@@ -272,9 +272,10 @@ contains
           cx = px + cos(d) * (hw + 1.4_wp + (ring - 1) * 2.5_wp)
           cy = py + sin(d) * (hh + 1.2_wp + (ring - 1) * 2.5_wp)
           penalty = 0.6_wp * (ring - 1)
-          ! outward: a spot with a leader line as far out as the rings go
-          if (far_out == outward_all .or. far_out == outward_leaders .and. needs_leader(cx, cy)) &
+          ! outward: a spot with a leader line (outward_all: any spot) as far out as the rings go
+          if (far_out == outward_all .or. far_out == outward_leaders .and. needs_leader(cx, cy)) then
             penalty = 3.0_wp - 0.1_wp * ring
+          end if
           call try(best, bx, by, found, cx, cy, penalty + 0.02_wp * min(i, ring_directions - i))
         end do
       end do
