@@ -13,8 +13,12 @@ module kinetostat_label_place
   use kinetostat_format, only: fixed_number
   implicit none
   private
+  public :: outward_none, outward_leaders, outward_all
   public :: label_boxes_t, text_chars, title_attributes, anchor_start, anchor_middle, anchor_end, segment_box_distance
 
+  !> Where a label placed strictly goes (place_box): near its point; with a leader line
+  !> as far out as may be when it needs one; every label so.
+  integer, parameter :: outward_none = 0, outward_leaders = 1, outward_all = 2
   !> text-anchor start (the box begins at x).
   integer, parameter :: anchor_start = 1
   !> text-anchor middle (the box is centred on x).
@@ -178,9 +182,10 @@ contains
   !> nearer than `line_gap` to an obstacle is taken while one exists (rings around the point,
   !> then farther out with a leader line that crosses no label); failing that, a spot whose
   !> leader line crosses no label, nearest the lines' least; failing that, any spot. The box
-  !> is taken.
+  !> is taken. `relaxed` tells whether it fell back so (a strict placement that found no spot
+  !> off the lines with a free leader line).
   pure subroutine place_box(self, width, above, below, px, py, base, ox, oy, half_widths, bounds, strict, tx, ty, &
-      leader, tail)
+      leader, tail, relaxed, outward)
     class(label_boxes_t), intent(inout) :: self
     !> Width of the box, mm.
     real(wp), intent(in) :: width
@@ -204,12 +209,23 @@ contains
     logical, intent(out) :: leader
     !> Tail of the arrow ending at the point, mm.
     real(wp), intent(in), optional :: tail(2)
+    !> Whether a strict placement fell back to a spot near a line or with a crossing leader.
+    logical, intent(out), optional :: relaxed
+    !> Where the label goes, placed strictly: near its point (outward_none, the default);
+    !> a label with a leader line as far out as the rings reach, leaving the space near a
+    !> crowded point to the labels that come after (outward_leaders); every label so, with a
+    !> leader line (outward_all).
+    integer, intent(in), optional :: outward
     real(wp) :: hw, hh, best, cx, cy, d, u(2), nrm(2), length, bx, by, zone(4)
     integer :: i, ring, side, pass, nx, ny
     !> The grid over `zone`: the segments filed in cell c (numbered from 1 along x, then y)
     !> are filed(first(c):first(c + 1) - 1); a segment's lowest cell (cell_x, cell_y, from 0).
     integer, allocatable :: first(:), filed(:), cell_x(:), cell_y(:), every(:)
     logical :: found, hard, free_leader
+    real(wp) :: penalty
+    integer :: far_out
+    far_out = outward_none
+    if (present(outward)) far_out = outward
     hw = 0.5_wp * width
     hh = 0.5_wp * (above + below)
     ! the segments that may come within room_enough of a spot's box inside `zone` (which holds
@@ -250,12 +266,17 @@ contains
       end if
       ! rings around the point
       do ring = 1, ring_count
-        if (found .and. ring > 4) exit
+        if (found .and. ring > 4 .and. far_out == outward_none) exit
         do i = 0, ring_directions - 1
           d = base + i * 2.0_wp * pi / ring_directions
           cx = px + cos(d) * (hw + 1.4_wp + (ring - 1) * 2.5_wp)
           cy = py + sin(d) * (hh + 1.2_wp + (ring - 1) * 2.5_wp)
-          call try(best, bx, by, found, cx, cy, 0.6_wp * (ring - 1) + 0.02_wp * min(i, ring_directions - i))
+          penalty = 0.6_wp * (ring - 1)
+          ! outward: a spot with a leader line (outward_all: any spot) as far out as the rings go
+          if (far_out == outward_all .or. far_out == outward_leaders .and. needs_leader(cx, cy)) then
+            penalty = 3.0_wp - 0.1_wp * ring
+          end if
+          call try(best, bx, by, found, cx, cy, penalty + 0.02_wp * min(i, ring_directions - i))
         end do
       end do
       ! last resort: the first free spot of a grid over the bounds, nearest first
@@ -270,6 +291,7 @@ contains
       end if
       if (found) exit
     end do
+    if (present(relaxed)) relaxed = strict .and. pass > 1
     leader = needs_leader(bx, by)
     tx = bx
     ty = by + hh - below

@@ -563,8 +563,9 @@ contains
   !> its box meets no other text and no line drawn so far (kinetostat_label_place, strict),
   !> direction `base` (rad on the sheet, y down) preferred, beside the arrow from `tail` when
   !> given; a thin leader line joins it to its point when it had to go farther (counted in
-  !> `leaders`). (tx, ty), when asked, is where its baseline's middle went.
-  pure subroutine place_label(self, value, class, px, py, base, bounds, tail, colour, italic, size, tx, ty)
+  !> `leaders`). (tx, ty), when asked, is where its baseline's middle went; `relaxed`, whether
+  !> no such spot was left and the label went near a line or its leader line over a label.
+  pure subroutine place_label(self, value, class, px, py, base, bounds, tail, colour, italic, size, tx, ty, relaxed, outward)
     class(sheet_t), intent(inout) :: self
     !> The label, typeset.
     character(*), intent(in) :: value
@@ -586,6 +587,10 @@ contains
     real(wp), intent(in), optional :: size
     !> Where the label went (baseline middle), mm.
     real(wp), intent(out), optional :: tx, ty
+    !> Whether the label had to go near a line or its leader line over a label.
+    logical, intent(out), optional :: relaxed
+    !> outward_none (default), outward_leaders or outward_all (kinetostat_label_place).
+    integer, intent(in), optional :: outward
     type(entity_t) :: item
     real(wp), allocatable :: sx(:), sy(:), sw(:)
     real(wp) :: w, above, below, qx, qy, e(2), hb(4)
@@ -604,7 +609,7 @@ contains
     call runs_extent(item%runs, w, above, below)
     call self%obstacles([bounds(1) - 2.0_wp, bounds(2) - 2.0_wp, bounds(3) + 2.0_wp, bounds(4) + 2.0_wp], sx, sy, sw)
     call self%boxes%place_box(w * item%size, above * item%size, below * item%size, px, py, base, sx, sy, sw, bounds, &
-      .true., qx, qy, leader, tail)
+      .true., qx, qy, leader, tail, relaxed, outward)
     if (leader) then
       hb = [qx - 0.5_wp * w * item%size, qy - above * item%size, qx + 0.5_wp * w * item%size, qy + below * item%size]
       e = [max(hb(1), min(hb(3), px)), max(hb(2), min(hb(4), py))]

@@ -31,6 +31,7 @@ module kinetostat_plans_draw
   use kinetostat_scales, only: scale_number, round_scale
   use kinetostat_sheet, only: sheet_t, entity_group, layer_text, layer_vplan, layer_aplan, layer_polygons, layer_lever, &
     layer_scales, layer_frame, layer_guides, anchor_start, anchor_end
+  use kinetostat_label_place, only: outward_none, outward_leaders, outward_all
   use kinetostat_title_block, only: put_sheet_format, title_block_from_table, header_indent, deck_line
   use kinetostat_drawing, only: drawing_t, drawing_point_t, drawing_body_t, drawing_force_t, drawing_moment_t, &
     force_gravity, force_inertia, force_load, force_pair, point_pivot
@@ -54,6 +55,20 @@ module kinetostat_plans_draw
     inner_colour = "#9467bd", balancing_colour = "#000000", arm_colour = "#888888"
   !> Pitch of the tables' rows, mm.
   real(wp), parameter :: pitch = 3.2_wp
+  !> Orders in which a plan's labels are placed: as given (the pole, the images, the
+  !> components), reversed, the components first, the labels of the points farthest from the
+  !> pole first, those nearest first.
+  integer, parameter :: order_given = 1, order_reversed = 2, order_components_first = 3, order_outer_first = 4, &
+    order_inner_first = 5
+  !> The orders tried, in turn, until one places every label off the lines with leader lines
+  !> that cross no label, and how far out each places its labels (kinetostat_label_place):
+  !> as given, near their points; then each order with the labels that need a leader line
+  !> far out; then each with every label far out.
+  integer, parameter :: label_orders(*) = [order_given, order_given, order_reversed, order_components_first, &
+    order_outer_first, order_inner_first, order_given, order_reversed, order_components_first, order_outer_first, &
+    order_inner_first]
+  integer, parameter :: label_outward(size(label_orders)) = [outward_none, outward_leaders, outward_leaders, &
+    outward_leaders, outward_leaders, outward_leaders, outward_all, outward_all, outward_all, outward_all, outward_all]
 
 contains
 
@@ -328,7 +343,10 @@ contains
     character(len=:), allocatable :: short, at_pole
     character(len=16), allocatable :: names(:)
     character(len=1), allocatable :: kinds(:)
-    integer :: i, e, j
+    integer :: i, e, j, k, n_labels, attempt
+    type(sheet_t) :: trial, best_try
+    integer :: crowded, fewest
+    logical :: relaxed
     area = panel_inner(box)
     short = ""
     at_pole = ""
@@ -384,17 +402,26 @@ contains
     labels_area = area
     if (len(short) > 0) labels_area(4) = area(4) - 2.6_wp
     if (len(at_pole) > 0) labels_area(4) = area(4) - 6.6_wp
-    call sheet%place_label(pole_name, "label", pole(1), pole(2), 0.75_wp * pi, labels_area)
-    do i = 1, size(images)
-      q = at(images(i)%v)
-      if (norm2(q - pole) < shortest) cycle
-      call sheet%place_label(image_label(images(i)%name), "label", q(1), q(2), atan2(q(2) - pole(2), q(1) - pole(1)), &
-        labels_area, tail=pole, italic=.true.)
+    ! in the order pole, images, components; when one of them finds no spot off the lines
+    ! whose leader line crosses no label (a plan drawn small, its labels crowding round the
+    ! pole), the other orders (label_orders, label_outward) are tried in turn: the first that
+    ! places every label so is kept, else the one that leaves the fewest labels without one
+    n_labels = 1 + size(images) + size(names)
+    fewest = huge(1)
+    do attempt = 1, size(label_orders)
+      trial = sheet
+      crowded = 0
+      do k = 1, n_labels
+        call put_label(trial, label_order(label_orders(attempt), k), label_outward(attempt), relaxed)
+        if (relaxed) crowded = crowded + 1
+      end do
+      if (crowded < fewest) then
+        fewest = crowded
+        best_try = trial
+      end if
+      if (crowded == 0) exit
     end do
-    do j = 1, size(names)
-      call sheet%place_label(trim(names(j)), "num", 0.5_wp * (ends(1, j) + ends(3, j)), 0.5_wp * (ends(2, j) + ends(4, j)), &
-        atan2(ends(4, j) - ends(2, j), ends(3, j) - ends(1, j)) - 0.5_wp * pi, labels_area, colour=component_colour(kinds(j)))
-    end do
+    sheet = best_try
     ! what is at the pole, what is too short to draw
     if (len(at_pole) > 0) call sheet%text(area(1) + 1.0_wp, area(4) - 4.0_wp, word("at the pole", lang)//" "// &
       pole_name//": "//at_pole, "note")
@@ -403,6 +430,71 @@ contains
     call sheet%end_group()
     call sheet%set_layer(merge(layer_aplan, layer_vplan, accel))
   contains
+    !> Place label k (1: the pole, then the images, then the components) on `target`;
+    !> `relaxed` when it had to go near a line or its leader line over a label.
+    pure subroutine put_label(target, k, outward, relaxed)
+      type(sheet_t), intent(inout) :: target
+      integer, intent(in) :: k
+      integer, intent(in) :: outward
+      logical, intent(out) :: relaxed
+      real(wp) :: q(2)
+      integer :: i, j
+      relaxed = .false.
+      if (k == 1) then
+        call target%place_label(pole_name, "label", pole(1), pole(2), 0.75_wp * pi, labels_area, relaxed=relaxed, &
+          outward=outward)
+      else if (k <= 1 + size(images)) then
+        i = k - 1
+        q = at(images(i)%v)
+        if (norm2(q - pole) < shortest) return
+        call target%place_label(image_label(images(i)%name), "label", q(1), q(2), atan2(q(2) - pole(2), q(1) - pole(1)), &
+          labels_area, tail=pole, italic=.true., relaxed=relaxed, outward=outward)
+      else
+        j = k - 1 - size(images)
+        call target%place_label(trim(names(j)), "num", 0.5_wp * (ends(1, j) + ends(3, j)), &
+          0.5_wp * (ends(2, j) + ends(4, j)), atan2(ends(4, j) - ends(2, j), ends(3, j) - ends(1, j)) - 0.5_wp * pi, &
+          labels_area, colour=component_colour(kinds(j)), relaxed=relaxed, outward=outward)
+      end if
+    end subroutine put_label
+    !> The label placed k-th in the order `order` (order_given, order_reversed,
+    !> order_components_first, order_outer_first, order_inner_first).
+    pure integer function label_order(order, k)
+      integer, intent(in) :: order, k
+      integer :: rank(n_labels), m, ni
+      real(wp) :: r(n_labels), c(2)
+      ni = size(images)
+      select case (order)
+      case (order_reversed)
+        label_order = n_labels + 1 - k
+      case (order_components_first)
+        label_order = merge(1 + ni + k, k - size(names), k <= size(names))
+      case (order_outer_first, order_inner_first)
+        do m = 1, n_labels
+          c = anchor(m)
+          r(m) = norm2(c - pole)
+        end do
+        if (order == order_inner_first) r = -r
+        ! rank by distance, farthest first (ties in the given order)
+        do m = 1, n_labels
+          rank(m) = count(r > r(m)) + count(r(:m - 1) == r(m)) + 1
+        end do
+        label_order = findloc(rank, k, dim=1)
+      case default
+        label_order = k
+      end select
+    end function label_order
+    !> The point label m belongs to, mm.
+    pure function anchor(m) result(c)
+      integer, intent(in) :: m
+      real(wp) :: c(2)
+      if (m == 1) then
+        c = pole
+      else if (m <= 1 + size(images)) then
+        c = at(images(m - 1)%v)
+      else
+        c = 0.5_wp * (ends(1:2, m - 1 - size(images)) + ends(3:4, m - 1 - size(images)))
+      end if
+    end function anchor
     !> Whether a velocity equation is its point's own ray: one rotation from the pole (about a
     !> pivot), the image's ray drawn already.
     pure logical function own_ray(eq, tips)
