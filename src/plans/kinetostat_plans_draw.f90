@@ -343,10 +343,9 @@ contains
     character(len=:), allocatable :: short, at_pole
     character(len=16), allocatable :: names(:)
     character(len=1), allocatable :: kinds(:)
-    integer :: i, e, j, k, n_labels, attempt
-    type(sheet_t) :: trial, best_try
-    integer :: crowded, fewest
-    logical :: relaxed
+    integer :: i, e, j, n_labels, attempt
+    type(sheet_t) :: unlabelled
+    integer :: crowded, fewest, best
     area = panel_inner(box)
     short = ""
     at_pole = ""
@@ -407,21 +406,24 @@ contains
     ! pole), the other orders (label_orders, label_outward) are tried in turn: the first that
     ! places every label so is kept, else the one that leaves the fewest labels without one
     n_labels = 1 + size(images) + size(names)
+    ! (placed on the sheet itself; a later order starts again from its copy `unlabelled`, and
+    ! the best order is placed again when it was not the last tried)
+    unlabelled = sheet
     fewest = huge(1)
+    best = 1
     do attempt = 1, size(label_orders)
-      trial = sheet
-      crowded = 0
-      do k = 1, n_labels
-        call put_label(trial, label_order(label_orders(attempt), k), label_outward(attempt), relaxed)
-        if (relaxed) crowded = crowded + 1
-      end do
+      if (attempt > 1) sheet = unlabelled
+      call place_labels(sheet, attempt, crowded)
       if (crowded < fewest) then
         fewest = crowded
-        best_try = trial
+        best = attempt
       end if
       if (crowded == 0) exit
     end do
-    sheet = best_try
+    if (crowded > 0 .and. best /= size(label_orders)) then
+      sheet = unlabelled
+      call place_labels(sheet, best, crowded)
+    end if
     ! what is at the pole, what is too short to draw
     if (len(at_pole) > 0) call sheet%text(area(1) + 1.0_wp, area(4) - 4.0_wp, word("at the pole", lang)//" "// &
       pole_name//": "//at_pole, "note")
@@ -430,6 +432,21 @@ contains
     call sheet%end_group()
     call sheet%set_layer(merge(layer_aplan, layer_vplan, accel))
   contains
+    !> Every label placed on `target` in the order and reach of attempt `attempt`
+    !> (label_orders, label_outward); `crowded`: how many had to go near a line or their
+    !> leader line over a label.
+    pure subroutine place_labels(target, attempt, crowded)
+      type(sheet_t), intent(inout) :: target
+      integer, intent(in) :: attempt
+      integer, intent(out) :: crowded
+      integer :: k
+      logical :: relaxed
+      crowded = 0
+      do k = 1, n_labels
+        call put_label(target, label_order(label_orders(attempt), k), label_outward(attempt), relaxed)
+        if (relaxed) crowded = crowded + 1
+      end do
+    end subroutine place_labels
     !> Place label k (1: the pole, then the images, then the components) on `target`;
     !> `relaxed` when it had to go near a line or its leader line over a label.
     pure subroutine put_label(target, k, outward, relaxed)
