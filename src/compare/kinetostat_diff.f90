@@ -58,6 +58,10 @@ module kinetostat_diff
     logical :: common = .false.
   end type diff_options_t
 
+  !> The units english_unit knows in either language (their Russian symbols from the labels).
+  character(*), parameter :: unit_names(*) = [character(len=8) :: "m", "mm", "kg", "kg*m^2", "N", "N*m", "deg", &
+    "rad/s", "rad/s^2", "m/s^2", "m/rad", "m/s", "steps"]
+
   !> One word of a line and the character (not byte) position of its last character.
   type :: word_t
     !> The word.
@@ -160,6 +164,12 @@ module kinetostat_diff
     character(len=:), allocatable :: last_key
     !> Values on continuation lines so far.
     integer :: continued = 0
+    !> The table's heading of the results, in its language (label "RESULTS").
+    character(len=:), allocatable :: results
+    !> The beginnings of the lines not compared (deck path and title, either language).
+    type(word_t) :: ignored(4)
+    !> The known units' Russian symbols, in the order of unit_names (english_unit).
+    type(word_t) :: units_ru(size(unit_names))
   end type table_parser_t
 
 contains
@@ -680,8 +690,17 @@ contains
     doc%identity = trim(adjustl(lines(1)))
     doc%columns = ""
     doc%lang = lang_en
+    ! (the labels translated once: a lookup searches the whole dictionary)
+    p%ignored(1)%s = " "//label("DECK: ", lang_ru)
     do k = 2, size(lines)
-      if (starts_with(lines(k), " "//label("DECK: ", lang_ru))) doc%lang = lang_ru
+      if (starts_with(lines(k), p%ignored(1)%s)) doc%lang = lang_ru
+    end do
+    p%ignored(2)%s = " "//label("TITLE: ", lang_ru)
+    p%ignored(3)%s = " "//label("DECK: ", lang_en)
+    p%ignored(4)%s = " "//label("TITLE: ", lang_en)
+    p%results = label("RESULTS", doc%lang)
+    do k = 1, size(unit_names)
+      p%units_ru(k)%s = label(trim(unit_names(k)), lang_ru)
     end do
     p%section = ""
     allocate (p%pending(0))
@@ -692,7 +711,7 @@ contains
         p%in_grid = .false.
         cycle
       end if
-      if (is_ignored_line(lines(k))) cycle
+      if (is_ignored_line(lines(k), p%ignored)) cycle
       lead = verify(lines(k), " ") - 1
       if (verify(lines(k)(lead + 1:tl), ".") == 0) cycle
       if (lead <= 1) then
@@ -725,14 +744,14 @@ contains
   end subroutine parse_table
 
   !> Title, deck path and deck title lines (either language): not compared.
-  pure logical function is_ignored_line(line)
+  pure logical function is_ignored_line(line, ignored)
     character(*), intent(in) :: line
-    integer :: lang
+    !> The lines' beginnings (table_parser_t's ignored).
+    type(word_t), intent(in) :: ignored(:)
+    integer :: i
     is_ignored_line = .false.
-    do lang = lang_en, lang_ru
-      if (starts_with(line, " "//label("DECK: ", lang)) .or. starts_with(line, " "//label("TITLE: ", lang))) then
-        is_ignored_line = .true.
-      end if
+    do i = 1, size(ignored)
+      if (starts_with(line, ignored(i)%s)) is_ignored_line = .true.
     end do
   end function is_ignored_line
 
@@ -747,7 +766,7 @@ contains
     n_names = size(p%pending)
     do i = 1, size(p%pending)
       call split_words(trim(lines(p%pending(i))), words)
-      if (all_units(words)) then
+      if (all_units(words, p%units_ru)) then
         n_names = i - 1
         exit
       end if
@@ -802,7 +821,7 @@ contains
     end if
     j = min(p%sub, size(p%names))
     prefix = ""
-    if (p%section /= label("RESULTS", doc%lang)) prefix = p%section//", "
+    if (p%section /= p%results) prefix = p%section//", "
     text = ""
     do i = 1, size(words)
       call read_number(words(i)%s, value, ok)
@@ -819,7 +838,7 @@ contains
       unit = ""
       if (j <= size(p%units) .and. c > 0) then
         u = nearest_word(p%units(j)%words, p%names(j)%words(c)%last)
-        if (u > 0) unit = english_unit(p%units(j)%words(u)%s)
+        if (u > 0) unit = english_unit(p%units(j)%words(u)%s, p%units_ru)
       end if
       cell = cell_t(key=p%section//"|"//int_str(p%step)//"|"//name, &
         where=prefix//"step "//int_str(p%step)//", column "//name, text=trim(words(i)%s), unit=unit, value=value, &
@@ -903,7 +922,7 @@ contains
           if (i < last) then
             call read_number(words(i + 1)%s, value, ok)
             if (.not. ok) then
-              cell%unit = english_unit(words(i + 1)%s)
+              cell%unit = english_unit(words(i + 1)%s, p%units_ru)
               unit_word = i + 1
             end if
           end if
@@ -997,23 +1016,25 @@ contains
   end function nearest_word
 
   !> Whether every word is a unit (a line of units under a line of column names).
-  pure logical function all_units(words)
+  pure logical function all_units(words, units_ru)
     type(word_t), intent(in) :: words(:)
+    !> The known units' Russian symbols (table_parser_t's units_ru).
+    type(word_t), intent(in) :: units_ru(:)
     character(*), parameter :: known(*) = [character(len=8) :: "deg", "N", "N*m", "m", "mm", "m/s", "kg", &
       "rad/s", "deg/x1", "deg/x2"]
     integer :: i
     all_units = size(words) > 0
     do i = 1, size(words)
-      if (.not. any(known == english_unit(words(i)%s))) all_units = .false.
+      if (.not. any(known == english_unit(words(i)%s, units_ru))) all_units = .false.
     end do
   end function all_units
 
   !> A unit as printed in either language, in English (град -> deg, Н*м -> N*m, ...).
-  pure function english_unit(unit) result(english)
+  pure function english_unit(unit, units_ru) result(english)
     character(*), intent(in) :: unit
+    !> The Russian symbols of unit_names (table_parser_t's units_ru).
+    type(word_t), intent(in) :: units_ru(:)
     character(len=:), allocatable :: english
-    character(*), parameter :: units(*) = [character(len=8) :: "m", "mm", "kg", "kg*m^2", "N", "N*m", "deg", &
-      "rad/s", "rad/s^2", "m/s^2", "m/rad", "m/s", "steps"]
     character(*), parameter :: degree_ru = "град"
     integer :: i
     english = unit
@@ -1025,8 +1046,8 @@ contains
       english = "m/s"
       return
     end if
-    do i = 1, size(units)
-      if (unit == label(trim(units(i)), lang_ru)) english = trim(units(i))
+    do i = 1, size(unit_names)
+      if (unit == units_ru(i)%s) english = trim(unit_names(i))
     end do
   end function english_unit
 
