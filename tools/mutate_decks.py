@@ -47,10 +47,11 @@ checks valid-output and expected-error:
   capacity       one row of docs/cli.md's table of capacities for the deck's group, its
                  "one too many" before the '/': exit 2 "at most N ..."
 
---every K runs every K-th deck of the fixed set (by bundled deck, then by class) and every
-deck of the classes of strings and the special runs (tools/test: --every 5; tools/test --long
-the whole set), but a heavy deck's (HEAVY_DECKS) decoded CP1251 deck, which runs its whole
-analysis, with K = 1 only; with K > 1 the CSV is written with -o only (the same CSV as on
+--every K runs every K-th deck of the fixed set (by bundled deck, then by class), every deck
+of user_strings, set_strings and the special runs, and of the other classes of strings the
+first deck of each namelist group (and of each capacity row drawn) and every K-th of the others
+(string_sample) (tools/test: --every 5; tools/test --long the whole set), but a heavy deck's
+(HEAVY_DECKS) decoded CP1251 deck, which runs its whole analysis, with K = 1 only; with K > 1 the CSV is written with -o only (the same CSV as on
 standard output, checked the same way), and a deck runs one way: the table or the CSV with -o
 in turn along the fixed order (each class meets both; --modes lists them), the table only for
 a class with an expected error and no outputs to check, the endless inputs up to the default
@@ -335,6 +336,11 @@ CYRILLIC_COMMENT = "! \u0418\u0441\u0445\u043e\u0434\u043d\u044b\u0435 \u0434\u0
 CAPACITY_RE = re.compile(r"^\| `&(\w+)` \| `([^`]+)`.*? \| (\d+) ([^|]+?) \| `([^`]+)` \|$")
 #: Per deck name: what else its run must show (see check_deck).
 SPECS = {}
+#: Per deck name of a class of strings: the namelist group of the bundled deck it comes from.
+GROUP_OF = {}
+#: The decks of the classes of strings without outputs to check (fraction, after_group, cp1251,
+#: capacity) that the sampled gate runs (string_sample); None: every one.
+STRING_SAMPLE = None
 
 
 def capacities(docs):
@@ -448,6 +454,7 @@ def derive_decks(data_dir, seed=None, scale=1):
             name = "%s_s%02d_%s" % (base, j + 1, kind)
             decks.append((name, "%s: %s" % (base, desc), data, extra))
             SPECS[name] = spec
+            GROUP_OF[name] = group
     for name, desc, how in SPECIAL_RUNS:
         decks.append((name, desc, how, None))
     return decks
@@ -539,6 +546,30 @@ def one_mode_of(i, every, name, extra):
     return "table" if (i // every) % 2 == 0 else "-o"
 
 
+def string_sample(decks, every):
+    """The names of the decks of the classes of strings with an expected result and no outputs
+    to check (fraction, after_group, cp1251, capacity) that the gate of every `every`-th deck
+    runs: per class, the first deck of each namelist group (each group's reader meets every
+    class), the first deck of each row of the table of capacities drawn (each row's limit and
+    message), and every `every`-th of the class's other decks in the fixed order. The full set
+    (every = 1) runs them all."""
+    chosen, seen, count = set(), set(), {}
+    for name, desc, _, extra in decks:
+        spec = SPECS.get(name)
+        if extra is None or spec is None or "formats" in spec:
+            continue
+        kind = re.match(r".*_s\d\d_(\w+)$", name).group(1)
+        first = [(kind, GROUP_OF.get(name))]
+        if kind == "capacity":
+            first.append((kind, GROUP_OF.get(name), desc.split(": ", 1)[-1]))
+        n = count.get(kind, 0)
+        count[kind] = n + 1
+        if every == 1 or n % every == 0 or any(key not in seen for key in first):
+            chosen.add(name)
+        seen.update(first)
+    return chosen
+
+
 def sampled(i, every, name, extra):
     """Whether the i-th derived deck runs in the gate of every `every`-th deck: every K-th of
     the value classes (of a heavy deck's, every (K * factor)-th), every deck of the classes of
@@ -550,6 +581,8 @@ def sampled(i, every, name, extra):
     spec = SPECS.get(name)
     if spec is None:
         return i % (every * heavy_factor(name)) == 0
+    if "formats" not in spec and STRING_SAMPLE is not None and name not in STRING_SAMPLE:
+        return False
     return heavy_factor(name) == 1 or "formats" in spec or "rc" in spec.get("expect", {})
 
 
@@ -723,8 +756,9 @@ def main():
     ap.add_argument("--seed", type=int, default=None, help="seed of the random choices (default: the fixed %d)" % SEED)
     ap.add_argument("--scale", type=int, default=1, help="draw K times as many mutations per deck (1)")
     ap.add_argument("--every", type=int, default=1,
-                    help="run every K-th derived deck (in the fixed order: by bundled deck, then by class) "
-                         "and every deck of the classes of strings and the special runs (1: all)")
+                    help="run every K-th derived deck (in the fixed order: by bundled deck, then by class), "
+                         "every deck with hostile strings in its outputs and every special run, and of the "
+                         "other classes of strings the first of each group and every K-th (1: all)")
     ap.add_argument("--modes", action="store_true",
                     help="list, per class of mutation, the decks run as a table, as CSV with -o, and both; run nothing")
     ap.add_argument("--budget", type=float, default=0.0,
@@ -753,6 +787,8 @@ def main():
     binary = os.path.abspath(args.bin)
     deadline = time.time() + args.budget if args.budget > 0 else None
     every = max(1, args.every)
+    global STRING_SAMPLE
+    STRING_SAMPLE = string_sample(decks, every)
     # the sampled gate (--every K > 1) writes the CSV with -o only: the same CSV as on
     # standard output, checked the same way (non-finite, error shape, runtime text) and for
     # leftovers; --every 1 runs both

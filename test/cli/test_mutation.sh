@@ -4,8 +4,11 @@
 # output format, checked by tools/output_check.py). The default suite's gate runs a fixed fifth
 # of them (--every 5: every fifth deck in the fixed order, so that every class runs on a fifth of
 # the bundled decks - a fifteenth of the one deck whose runs take over a second, the &linkage
-# steady cycle - and every deck of the classes of strings and the endless inputs; the CSV
-# written with -o only), with no time limit: the same decks and the same verdict every run;
+# steady cycle - every deck of the classes of strings with outputs to check (hostile file
+# names, titles and fields) and of the endless inputs, and of the classes with an expected
+# error (fraction, text after the group, CP1251, capacity) the first deck of each namelist group
+# and of each capacity row drawn and every fifth of the others; the CSV written with -o only),
+# with no time limit: the same decks and the same verdict every run;
 # tools/test --long runs them all, the CSV to standard output too. It reports one verdict per assertion category
 # ("check NAME: ok" / "check NAME: FAIL (n decks)"); each category counts as ONE check here, so
 # that 500+ decks do not swamp the counters of the rest of the suite. The failing decks are
