@@ -7,16 +7,18 @@
 # Latin word on a Russian sheet, the DXF read back; -o DIR all or nothing and an earlier
 # run's sheets removed; usage errors.
 sheets_check="$root/tools/svg_check.py"
-sheets_iso() {  # SVG PAPER-W PAPER-H: the paper's size and the frame
-  python3 - "$1" "$2" "$3" <<'PY'
-import re, sys
-text = open(sys.argv[1], encoding="utf-8").read()
-w, h = (float(v) for v in re.search(r'width="([0-9.]+)mm" height="([0-9.]+)mm"', text).groups())
-assert (w, h) == (float(sys.argv[2]), float(sys.argv[3])), (w, h)
-frame = f'<rect x="20.00" y="5.00" width="{w - 25:.2f}" height="{h - 10:.2f}" class="border"/>'
-assert frame in text, "no frame"
-assert re.search(r'<rect x="[0-9.]*" y="[0-9.]*" width="185.00" height="55.00"', text), "no title block"
-PY
+sheets_iso() {  # SVG PAPER-W PAPER-H: the paper's size and the frame (a message and false if not)
+  local size frame
+  size=$(grep -o -m1 'width="[0-9.]*mm" height="[0-9.]*mm"' "$1" | head -1)
+  [ -n "$size" ] || { echo "$1: no width and height in mm"; return 1; }
+  # the first width x height in mm must be PAPER-W x PAPER-H; the frame's rectangle 20 mm in
+  # from the left and 5 mm from the other edges; the title block 185 x 55 mm
+  frame=$(echo "$size" | awk -v pw="$2" -v ph="$3" -F'"' '{ w = $2; h = $4; sub("mm", "", w); sub("mm", "", h)
+    if (w + 0 != pw + 0 || h + 0 != ph + 0) { print "size " w " x " h " mm, expected " pw " x " ph; exit 1 }
+    printf "<rect x=\"20.00\" y=\"5.00\" width=\"%.2f\" height=\"%.2f\" class=\"border\"/>\n", w - 25, h - 10 }') \
+    || { echo "$1: $frame"; return 1; }
+  grep -qF "$frame" "$1" || { echo "$1: no frame $frame"; return 1; }
+  grep -q '<rect x="[0-9.]*" y="[0-9.]*" width="185.00" height="55.00"' "$1" || { echo "$1: no title block"; return 1; }
 }
 sheets_decks="pr3207_flywheel class3"
 # the other two flywheel decks with tools/test --long (a few seconds each)
@@ -42,14 +44,11 @@ for deck in $sheets_decks; do
     for s in $expected; do
       svg="$dir/$s.svg"
       sheets_iso "$svg" 841.00 594.00 >"$cli_tmp/check.out" 2>&1 || { fail "sheets-iso-$deck-$s-$lang" "$(tail -2 "$cli_tmp/check.out")"; continue; }
-      python3 "$sheets_check" labels --lines "$svg" >"$cli_tmp/check.out" 2>&1 \
-        && python3 "$sheets_check" notation "$lang" "$svg" >>"$cli_tmp/check.out" 2>&1 \
-        && python3 "$root/tools/dxf_check.py" "$dir/$s.dxf" >>"$cli_tmp/check.out" 2>&1 \
-        && pass || fail "sheets-legible-$deck-$s-$lang" "$(grep -v '^[0-9]* sheets' "$cli_tmp/check.out" | head -4)"
-      if [ "$lang" = ru ]; then
-        python3 "$sheets_check" english "$svg" >"$cli_tmp/check.out" 2>&1 && pass \
-          || fail "sheets-english-$deck-$s" "$(head -3 "$cli_tmp/check.out")"
-      fi
+      # (the checkers' calls run in one Python process each after the loop: check_batch)
+      check_job svg_check "sheets-legible-$deck-$s-$lang" labels --lines "$svg"
+      check_job svg_check "sheets-notation-$deck-$s-$lang" notation "$lang" "$svg"
+      check_job dxf_check "sheets-dxf-$deck-$s-$lang" "$dir/$s.dxf"
+      [ "$lang" = ru ] && check_job svg_check "sheets-english-$deck-$s" english "$svg"
       # the title block: the student, Лист N of M, no deck path
       n_total=$(echo "$expected" | wc -w)
       grep -q ">Иванов И.И.<" "$svg" && grep -q "Листов $n_total<\|Sheets $n_total<" "$svg" \
@@ -69,6 +68,9 @@ for deck in $sheets_decks; do
     fi
   done
 done
+
+check_batch svg_check
+check_batch dxf_check
 
 # The PDFs (rsvg-convert, half of a run's processor time) are checked above; the later runs of
 # the default suite write a stand-in PDF (lib.sh: pdf_stand_in), their SVG and DXF as ever; with
