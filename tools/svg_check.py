@@ -64,6 +64,7 @@ import contextlib
 import io
 import csv
 import math
+import os
 import re
 import struct
 import sys
@@ -391,12 +392,21 @@ def text_box(el, sizes):
     return box, text
 
 
+#: The sheets parsed so far (read_sheet), by path, modification time and size: the checks of
+#: one process (a batch: tools/batch_check.py, `batch`) parse a sheet once.
+SHEETS = {}
+
+
 def read_sheet(svg_path):
     """(root element, font sizes, stroke widths of the style sheet's classes) of a sheet,
-    parsed once for all the checks of check_labels."""
-    source = open(svg_path, encoding="utf-8").read()
-    sizes, widths = style_sizes(source)
-    return ET.fromstring(source), sizes, widths
+    parsed once for all the checks of a process (labels, notation); the checks only read it."""
+    st = os.stat(svg_path)
+    key = (os.path.abspath(svg_path), st.st_mtime_ns, st.st_size)
+    if key not in SHEETS:
+        source = open(svg_path, encoding="utf-8").read()
+        sizes, widths = style_sizes(source)
+        SHEETS[key] = ET.fromstring(source), sizes, widths
+    return SHEETS[key]
 
 
 def text_boxes(sheet):
@@ -652,9 +662,7 @@ def check_notation(paths, russian):
     title) and the subtitle."""
     hits = []
     for path in paths:
-        source = open(path, encoding="utf-8").read()
-        sizes, _ = style_sizes(source)
-        root = ET.fromstring(source)
+        root, sizes, _ = read_sheet(path)
         names = set()
         for el in root.iter():
             for key in ("data-joint", "data-point", "data-image"):

@@ -61,18 +61,16 @@ for deck in data/*.nml; do
     fi
   done
 done
-# the sheets on the drawing model: off every label, every line and the sheet's edge
-python3 "$svg_check" labels --lines "${model_sheets[@]}" >"$cli_tmp/check.out" 2>&1 \
-  && pass || fail legible-labels-lines "$(head -20 "$cli_tmp/check.out")"
-echo "legible: $(grep -E '^[0-9]+ sheets, [0-9]+ leader lines' "$cli_tmp/check.out")"
-python3 "$svg_check" notation en "${model_sheets[@]}" >"$cli_tmp/check.out" 2>&1 \
-  && pass || fail legible-notation "$(head -20 "$cli_tmp/check.out")"
-python3 "$svg_check" notation ru "${model_ru[@]}" >"$cli_tmp/check.out" 2>&1 \
-  && pass || fail legible-notation-ru "$(head -20 "$cli_tmp/check.out")"
-python3 "$svg_check" labels "${plans_sheets[@]}" >"$cli_tmp/check.out" 2>&1 \
-  && pass || fail legible-labels-plans "$(head -20 "$cli_tmp/check.out")"
-python3 "$svg_check" english "${ru_sheets[@]}" >"$cli_tmp/check.out" 2>&1 \
-  && pass || fail legible-russian "$(head -20 "$cli_tmp/check.out")"
+# the sheets on the drawing model: off every label, every line and the sheet's edge; the
+# notation; no English word on a Russian sheet or table (one Python process, which parses a
+# sheet once for all its checks: check_batch, svg_check's read_sheet)
+check_job svg_check legible-labels-lines labels --lines "${model_sheets[@]}"
+check_job svg_check legible-notation notation en "${model_sheets[@]}"
+check_job svg_check legible-notation-ru notation ru "${model_ru[@]}"
+check_job svg_check legible-labels-plans labels "${plans_sheets[@]}"
+check_job svg_check legible-russian english "${ru_sheets[@]}"
+check_batch svg_check
+echo "legible: $(grep -E '^[0-9]+ sheets, [0-9]+ leader lines' "$cli_tmp/batch.svg_check/legible-labels-lines.out")"
 
 # the overlap check can fail: a second label written over the first one of a sheet
 sheet="$legible_dir/pr3207.at1.en.svg"
