@@ -36,21 +36,21 @@ grep -E '^(mutation|named): ' "$mutation_log"
 # exits 1 with two stderr lines, must be caught.
 fake="$cli_tmp/fake_kinetostat"
 printf '#!/bin/sh\necho "  1.00  NaN"\nexit 0\n' >"$fake"; chmod +x "$fake"
-python3 "$root/tools/mutate_decks.py" --bin "$fake" --only pr3050_001 --out "$cli_tmp/mut_fake" >"$cli_tmp/mut_fake.log" 2>&1
+python3 "$root/tools/mutate_decks.py" --bin "$fake" --deck pr3050 --only pr3050_001 --out "$cli_tmp/mut_fake" >"$cli_tmp/mut_fake.log" 2>&1
 if grep -q '^check non-finite: FAIL' "$cli_tmp/mut_fake.log"; then pass
 else fail mutation-can-fail-nan "a binary printing NaN passed: $(tail -2 "$cli_tmp/mut_fake.log")"; fi
 printf '#!/bin/sh\necho one >&2\necho two >&2\nexit 1\n' >"$fake"
-python3 "$root/tools/mutate_decks.py" --bin "$fake" --only pr3050_001 --out "$cli_tmp/mut_fake" >"$cli_tmp/mut_fake.log" 2>&1
+python3 "$root/tools/mutate_decks.py" --bin "$fake" --deck pr3050 --only pr3050_001 --out "$cli_tmp/mut_fake" >"$cli_tmp/mut_fake.log" 2>&1
 if grep -q '^check exit-code: FAIL' "$cli_tmp/mut_fake.log" && grep -q '^check error-shape: FAIL' "$cli_tmp/mut_fake.log"; then pass
 else fail mutation-can-fail-exit "a binary exiting 1 with two stderr lines passed: $(tail -2 "$cli_tmp/mut_fake.log")"; fi
 # ... and so can the classes of strings: a binary writing a JSON with an added key and a CSV row
 # over two lines for a deck with hostile strings, and one that accepts a fraction
 printf '#!/bin/sh\necho "{\\"injected\\": true}"\necho "a,b"\necho "1"\nexit 0\n' >"$fake"
-python3 "$root/tools/mutate_decks.py" --bin "$fake" --only pr3207_s01_user_strings --out "$cli_tmp/mut_fake" >"$cli_tmp/mut_fake.log" 2>&1
+python3 "$root/tools/mutate_decks.py" --bin "$fake" --deck pr3207 --only pr3207_s01_user_strings --out "$cli_tmp/mut_fake" >"$cli_tmp/mut_fake.log" 2>&1
 if grep -q '^check valid-output: FAIL' "$cli_tmp/mut_fake.log"; then pass
 else fail mutation-can-fail-valid-output "an invalid output passed: $(tail -2 "$cli_tmp/mut_fake.log")"; fi
 printf '#!/bin/sh\necho " ok"\nexit 0\n' >"$fake"
-python3 "$root/tools/mutate_decks.py" --bin "$fake" --only pr3207_s02_fraction --out "$cli_tmp/mut_fake" >"$cli_tmp/mut_fake.log" 2>&1
+python3 "$root/tools/mutate_decks.py" --bin "$fake" --deck pr3207 --only pr3207_s02_fraction --out "$cli_tmp/mut_fake" >"$cli_tmp/mut_fake.log" 2>&1
 if grep -q '^check expected-error: FAIL' "$cli_tmp/mut_fake.log"; then pass
 else fail mutation-can-fail-expected-error "an accepted fraction passed: $(tail -2 "$cli_tmp/mut_fake.log")"; fi
 
@@ -58,7 +58,7 @@ else fail mutation-can-fail-expected-error "an accepted fraction passed: $(tail 
 # of its three runs): a binary that computes for ever is stopped and reported
 if [ "${KINETOSTAT_LONG:-0}" = 1 ]; then
   printf '#!/bin/sh\nwhile :; do :; done\n' >"$fake"
-  python3 "$root/tools/mutate_decks.py" --bin "$fake" --only assur_pr3050_001_delete --cpu-limit 1 \
+  python3 "$root/tools/mutate_decks.py" --bin "$fake" --deck assur_pr3050 --only assur_pr3050_001_delete --cpu-limit 1 \
     --out "$cli_tmp/mut_fake" >"$cli_tmp/mut_fake.log" 2>&1
   if grep -q '^check exit-code: FAIL' "$cli_tmp/mut_fake.log" && grep -q 'over 1 s of processor time (stopped)' "$cli_tmp/mut_fake.log"
   then pass; else fail mutation-can-fail-cpu-limit "a binary that never ends passed: $(tail -2 "$cli_tmp/mut_fake.log")"; fi
