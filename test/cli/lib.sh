@@ -132,6 +132,26 @@ check_batch() {
   rm -f "$jobs"
 }
 
+# batch_run CHECKER: the calls noted with check_job for CHECKER run in one Python process
+# (tools/batch_check.py) without being counted, for checks that must fail: each call's exit
+# status and output are then read by expect_batch_fail.
+batch_run() {
+  local checker="$1" jobs="$cli_tmp/batch.$1.tsv"
+  rm -rf "$cli_tmp/batch.$checker"
+  python3 "$root/tools/batch_check.py" "$checker" "$jobs" "$cli_tmp/batch.$checker" \
+    >"$cli_tmp/batch.$checker.status" 2>"$cli_tmp/batch.$checker.err" \
+    || fail "batch-$checker" "$(head -20 "$cli_tmp/batch.$checker.err")"
+  rm -f "$jobs"
+}
+# expect_batch_fail CHECKER LABEL PATTERN NAME: the call LABEL of the last batch_run of CHECKER
+# failed (exit status not 0) with its verdict: its output matches PATTERN (grep, basic regex).
+expect_batch_fail() {
+  local checker="$1" label="$2" pattern="$3" name="$4" status
+  status=$(awk -F'\t' -v label="$label" '$1 == label { print $2 }' "$cli_tmp/batch.$checker.status")
+  if [ -n "$status" ] && [ "$status" != 0 ] && grep -q -- "$pattern" "$cli_tmp/batch.$checker/$label.out"; then pass
+  else fail "$name" "exit ${status:-none} (a failure expected): $(head -3 "$cli_tmp/batch.$checker/$label.out" 2>/dev/null)"; fi
+}
+
 # heavy_deck NAME: true in the default suite (not with tools/test --long) for a bundled deck
 # whose every run takes most of a second of processor time in the checks' build (tools/test:
 # fpm's debug flags at -O1; the &linkage engine's steady cycles: over 361 poses 0.7 s, the

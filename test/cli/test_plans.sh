@@ -96,73 +96,98 @@ assert d["deck_title"] == "five-bar with two motors", d["deck_title"]' "$out" >"
 
 # the new checks can fail: a load left off the lever, a load's power changed, a reaction's
 # parts apart, the inner reaction dropped, the groups changed at one step, groups that are not
-# the structure's, a wrong value in the table
-python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); z = d["zhukovsky"]
-z["loads"] = [l for l in z["loads"] if l["name"] != "G4"]; print(json.dumps(d))' \
-  "$plans_dir/sixbar.2.json" >"$cli_tmp/bad.json"
-python3 "$plans_check" "$cli_tmp/bad.json" "$plans_dir/sixbar.csv" --lever >"$cli_tmp/check.out" 2>&1
-grep -q "the load forces \['G4'\] of the links' polygons are not on the lever" "$cli_tmp/check.out" && pass \
-  || fail plans-lever-load-can-fail "$(head -3 "$cli_tmp/check.out")"
-python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); l = d["zhukovsky"]["loads"][0]
-l["power"] *= 1 + 1e-6; print(json.dumps(d))' "$plans_dir/class3.2.json" >"$cli_tmp/bad.json"
-python3 "$plans_check" "$cli_tmp/bad.json" "$plans_dir/class3.csv" --lever >"$cli_tmp/check.out" 2>&1
-grep -q "lever: the loads' powers and the balancing power sum to" "$cli_tmp/check.out" && pass \
-  || fail plans-lever-power-can-fail "$(head -3 "$cli_tmp/check.out")"
-python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); v = d["force_plans"][0]["vectors"]
-v.insert(1, v.pop()); print(json.dumps(d))' "$plans_dir/linkage_fourbar.2.json" >"$cli_tmp/bad.json"
-python3 "$plans_check" "$cli_tmp/bad.json" "$plans_dir/linkage_fourbar.csv" --order >"$cli_tmp/check.out" 2>&1
-grep -q "the parts of F21 are not adjacent\|ends with" "$cli_tmp/check.out" && pass \
-  || fail plans-order-can-fail "$(head -3 "$cli_tmp/check.out")"
-python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); p = d["force_plans"][0]
-p["reactions"] = [r for r in p["reactions"] if not r["inner"]]; print(json.dumps(d))' \
-  "$plans_dir/sixbar.2.json" >"$cli_tmp/bad.json"
-python3 "$plans_check" "$cli_tmp/bad.json" "$plans_dir/sixbar.csv" --order >"$cli_tmp/check.out" 2>&1
-grep -q "no inner reaction" "$cli_tmp/check.out" && pass || fail plans-inner-can-fail "$(head -3 "$cli_tmp/check.out")"
-python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); g = d["groups"]
-g[1]["label"] = "III(2,3,4,5)"; print(json.dumps(d))' "$plans_dir/sixbar.2.json" >"$cli_tmp/bad.json"
-python3 "$plans_check" groups "$plans_dir/sixbar.1.json" "$cli_tmp/bad.json" >"$cli_tmp/check.out" 2>&1
-grep -q "groups change between steps" "$cli_tmp/check.out" && pass || fail plans-groups-can-fail "$(head -3 "$cli_tmp/check.out")"
-python3 "$plans_check" groups "$plans_dir/fivebar.2.json" --structure "I(0,1) -> II(2,3,4)" >"$cli_tmp/check.out" 2>&1
-grep -q "the structure formula" "$cli_tmp/check.out" && pass || fail plans-structure-can-fail "$(head -3 "$cli_tmp/check.out")"
-python3 -c 'import json, sys; d = json.load(open(sys.argv[1]))
-[v for v in d["values"] if v["name"] == "omega2"][0]["sense"] = "??"; print(json.dumps(d))' \
-  "$plans_dir/sixbar.2.json" >"$cli_tmp/bad.json"
-python3 "$plans_check" "$cli_tmp/bad.json" "$plans_dir/sixbar.csv" --values >"$cli_tmp/check.out" 2>&1
-grep -q "values table: omega2" "$cli_tmp/check.out" && pass || fail plans-values-can-fail "$(head -3 "$cli_tmp/check.out")"
-
-# the checks can fail: a lever off by one part in 1e6, a polygon vector moved
-python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); d["zhukovsky"]["effort"] *= 1 + 1e-6; print(json.dumps(d))' \
-  "$plans_dir/sixbar.1.json" >"$cli_tmp/bad_lever.json"
-python3 "$plans_check" "$cli_tmp/bad_lever.json" "$plans_dir/sixbar.csv" --lever >"$cli_tmp/check.out" 2>&1
-grep -q "Zhukovsky's lever: expected M1 = " "$cli_tmp/check.out" && pass \
-  || fail plans-lever-can-fail "a wrong lever was not reported: $(head -3 "$cli_tmp/check.out")"
-# ... and so can the friction on the lever: left out (the effort of the loads alone, what the
-# lever gave before it counted the pairs' friction), one pair dropped, a couple turned round
-python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); z = d["zhukovsky"]
-z["effort"] -= z.pop("friction")["share"]; print(json.dumps(d))' \
-  "$plans_dir/friction_slider_crank.19.json" >"$cli_tmp/no_friction.json"
-python3 "$plans_check" "$cli_tmp/no_friction.json" "$plans_dir/friction_slider_crank.csv" --lever >"$cli_tmp/check.out" 2>&1
-grep -q "Zhukovsky's lever: the CSV has friction in .*, the lever none" "$cli_tmp/check.out" && pass \
-  || fail plans-lever-friction-can-fail "a lever without the pairs' friction was not reported: $(head -3 "$cli_tmp/check.out")"
-python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); z = d["zhukovsky"]
-z["friction"]["pairs"].pop(); print(json.dumps(d))' \
-  "$plans_dir/assur_sixbar_friction.19.json" >"$cli_tmp/pair_dropped.json"
-python3 "$plans_check" "$cli_tmp/pair_dropped.json" "$plans_dir/assur_sixbar_friction.csv" --lever >"$cli_tmp/check.out" 2>&1
-grep -q "lever friction: pairs expected" "$cli_tmp/check.out" && pass \
-  || fail plans-lever-friction-pair-can-fail "a lever missing a pair's friction was not reported: $(head -3 "$cli_tmp/check.out")"
-python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); p = d["zhukovsky"]["friction"]["pairs"][0]
-p["moment"] = -p["moment"]; print(json.dumps(d))' \
-  "$plans_dir/friction_fourbar_resist.91.json" >"$cli_tmp/couple_turned.json"
-python3 "$plans_check" "$cli_tmp/couple_turned.json" "$plans_dir/friction_fourbar_resist.csv" --lever >"$cli_tmp/check.out" 2>&1
-grep -q "turns with the relative rate" "$cli_tmp/check.out" && pass \
-  || fail plans-lever-friction-sense-can-fail "a friction couple turning with the relative rotation was not reported: $(head -3 "$cli_tmp/check.out")"
-# ... and so can the flywheel on the lever: left out (the effort of the links' loads alone)
-python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); z = d["zhukovsky"]
-z["effort"] += z.pop("flywheel")["moment"]; print(json.dumps(d))' \
-  "$plans_dir/pr3207_flywheel.181.json" >"$cli_tmp/no_flywheel.json"
-python3 "$plans_check" "$cli_tmp/no_flywheel.json" "$plans_dir/pr3207_flywheel.csv" --lever >"$cli_tmp/check.out" 2>&1
-grep -q "Zhukovsky's lever: expected M1 = " "$cli_tmp/check.out" && pass \
-  || fail plans-lever-flywheel-can-fail "a lever without the flywheel's inertia moment was not reported: $(head -3 "$cli_tmp/check.out")"
+# the structure's, a wrong value in the table; a lever off by one part in 1e6; the friction on
+# the lever left out (the effort of the loads alone, what the lever gave before it counted the
+# pairs' friction), one pair dropped, a couple turned round; the flywheel on the lever left out
+# (the effort of the links' loads alone); an acceleration component off by one part in 1e6
+# (the first equation's normal one); a group's reaction part moved (F43's tangential part in
+# the six-bar's group 4,5). The perturbed plans are made in one Python process, the checks run
+# in another (batch_run): each must fail with its verdict (expect_batch_fail).
+python3 - "$plans_dir" "$cli_tmp" <<'PY'
+import json, os, sys
+plans, tmp = sys.argv[1:]
+def perturb(source, target, change):
+    d = json.load(open(os.path.join(plans, source)))
+    change(d)
+    with open(os.path.join(tmp, target), "w") as f:
+        print(json.dumps(d), file=f)
+def drop_g4(d):
+    z = d["zhukovsky"]; z["loads"] = [l for l in z["loads"] if l["name"] != "G4"]
+def power(d):
+    d["zhukovsky"]["loads"][0]["power"] *= 1 + 1e-6
+def order(d):
+    v = d["force_plans"][0]["vectors"]; v.insert(1, v.pop())
+def inner(d):
+    p = d["force_plans"][0]; p["reactions"] = [r for r in p["reactions"] if not r["inner"]]
+def groups(d):
+    d["groups"][1]["label"] = "III(2,3,4,5)"
+def values(d):
+    [v for v in d["values"] if v["name"] == "omega2"][0]["sense"] = "??"
+def lever(d):
+    d["zhukovsky"]["effort"] *= 1 + 1e-6
+def no_friction(d):
+    z = d["zhukovsky"]; z["effort"] -= z.pop("friction")["share"]
+def pair_dropped(d):
+    d["zhukovsky"]["friction"]["pairs"].pop()
+def couple_turned(d):
+    p = d["zhukovsky"]["friction"]["pairs"][0]; p["moment"] = -p["moment"]
+def no_flywheel(d):
+    z = d["zhukovsky"]; z["effort"] += z.pop("flywheel")["moment"]
+def component(d):
+    v = d["acceleration_equations"][0]["vectors"][0]; v["x"] += 1e-6 * abs(v["x"]) + 1e-6
+def group_part(d):
+    v = [v for p in d["force_plans"] for v in p["vectors"] if v["name"] == "F43^τ"][0]
+    v["x"] += 1e-6 * abs(v["x"]) + 1e-6
+perturb("sixbar.2.json", "bad_load.json", drop_g4)
+perturb("class3.2.json", "bad_power.json", power)
+perturb("linkage_fourbar.2.json", "bad_order.json", order)
+perturb("sixbar.2.json", "bad_inner.json", inner)
+perturb("sixbar.2.json", "bad_groups.json", groups)
+perturb("sixbar.2.json", "bad_values.json", values)
+perturb("sixbar.1.json", "bad_lever.json", lever)
+perturb("friction_slider_crank.19.json", "no_friction.json", no_friction)
+perturb("assur_sixbar_friction.19.json", "pair_dropped.json", pair_dropped)
+perturb("friction_fourbar_resist.91.json", "couple_turned.json", couple_turned)
+perturb("pr3207_flywheel.181.json", "no_flywheel.json", no_flywheel)
+perturb("sixbar.1.json", "bad_component.json", component)
+perturb("sixbar.1.json", "bad_group.json", group_part)
+PY
+check_job plans_check load "$cli_tmp/bad_load.json" "$plans_dir/sixbar.csv" --lever
+check_job plans_check power "$cli_tmp/bad_power.json" "$plans_dir/class3.csv" --lever
+check_job plans_check order "$cli_tmp/bad_order.json" "$plans_dir/linkage_fourbar.csv" --order
+check_job plans_check inner "$cli_tmp/bad_inner.json" "$plans_dir/sixbar.csv" --order
+check_job plans_check groups groups "$plans_dir/sixbar.1.json" "$cli_tmp/bad_groups.json"
+check_job plans_check structure groups "$plans_dir/fivebar.2.json" --structure "I(0,1) -> II(2,3,4)"
+check_job plans_check values "$cli_tmp/bad_values.json" "$plans_dir/sixbar.csv" --values
+check_job plans_check lever "$cli_tmp/bad_lever.json" "$plans_dir/sixbar.csv" --lever
+check_job plans_check no_friction "$cli_tmp/no_friction.json" "$plans_dir/friction_slider_crank.csv" --lever
+check_job plans_check pair_dropped "$cli_tmp/pair_dropped.json" "$plans_dir/assur_sixbar_friction.csv" --lever
+check_job plans_check couple_turned "$cli_tmp/couple_turned.json" "$plans_dir/friction_fourbar_resist.csv" --lever
+check_job plans_check no_flywheel "$cli_tmp/no_flywheel.json" "$plans_dir/pr3207_flywheel.csv" --lever
+check_job plans_check component "$cli_tmp/bad_component.json" "$plans_dir/sixbar.csv"
+check_job plans_check group "$cli_tmp/bad_group.json" "$plans_dir/sixbar.csv" --groups
+sed -E 's/("name": "F21", "x": )-?([0-9])/\1\21/' "$plans_dir/sixbar.1.json" >"$cli_tmp/bad_polygon.json"
+if cmp -s "$cli_tmp/bad_polygon.json" "$plans_dir/sixbar.1.json"; then
+  fail plans-polygon-can-fail "the perturbation did not change the plans"
+else
+  check_job plans_check polygon "$cli_tmp/bad_polygon.json" "$plans_dir/sixbar.csv" --polygons
+fi
+batch_run plans_check
+expect_batch_fail plans_check load "the load forces \['G4'\] of the links' polygons are not on the lever" plans-lever-load-can-fail
+expect_batch_fail plans_check power "lever: the loads' powers and the balancing power sum to" plans-lever-power-can-fail
+expect_batch_fail plans_check order "the parts of F21 are not adjacent\|ends with" plans-order-can-fail
+expect_batch_fail plans_check inner "no inner reaction" plans-inner-can-fail
+expect_batch_fail plans_check groups "groups change between steps" plans-groups-can-fail
+expect_batch_fail plans_check structure "the structure formula" plans-structure-can-fail
+expect_batch_fail plans_check values "values table: omega2" plans-values-can-fail
+expect_batch_fail plans_check lever "Zhukovsky's lever: expected M1 = " plans-lever-can-fail
+expect_batch_fail plans_check no_friction "Zhukovsky's lever: the CSV has friction in .*, the lever none" plans-lever-friction-can-fail
+expect_batch_fail plans_check pair_dropped "lever friction: pairs expected" plans-lever-friction-pair-can-fail
+expect_batch_fail plans_check couple_turned "turns with the relative rate" plans-lever-friction-sense-can-fail
+expect_batch_fail plans_check no_flywheel "Zhukovsky's lever: expected M1 = " plans-lever-flywheel-can-fail
+expect_batch_fail plans_check component "a_B^n expected" plans-component-can-fail
+expect_batch_fail plans_check group "F43" plans-group-can-fail
+cmp -s "$cli_tmp/bad_polygon.json" "$plans_dir/sixbar.1.json" || expect_batch_fail plans_check polygon "F21" plans-polygon-can-fail
 run_ks data/sixbar_flywheel.nml --format plans --at 5
 sheet_lines "$out" >"$cli_tmp/lines.txt"; grep -qx 'flywheel and rotor included: J = 104 kg·m², -J·ε = 243 N·m' "$cli_tmp/lines.txt" && pass \
   || fail plans-flywheel-sheet "no flywheel line: $(sheet_lines "$out" | grep -i flywheel)"
@@ -177,31 +202,9 @@ run_ks data/assur_pr3050_friction.nml --format plans --at 2 --lang ru
 sheet_lines "$out" >"$cli_tmp/lines.txt"; grep -qx 'трение в парах учтено: -Pтр/vотн = 172 Н' "$cli_tmp/lines.txt" && pass \
   || fail plans-friction-sheet-ru "no friction line: $(sheet_lines "$out" | grep трение)"
 
-sed -E 's/("name": "F21", "x": )-?([0-9])/\1\21/' "$plans_dir/sixbar.1.json" >"$cli_tmp/bad_polygon.json"
-if cmp -s "$cli_tmp/bad_polygon.json" "$plans_dir/sixbar.1.json"; then
-  fail plans-polygon-can-fail "the perturbation did not change the plans"
-else
-  python3 "$plans_check" "$cli_tmp/bad_polygon.json" "$plans_dir/sixbar.csv" --polygons >"$cli_tmp/check.out" 2>&1
-  grep -q "F21" "$cli_tmp/check.out" && pass \
-    || fail plans-polygon-can-fail "a changed pair force was not reported: $(head -3 "$cli_tmp/check.out")"
-fi
-
-# ... and an acceleration component off by one part in 1e6 (the first equation's normal one)
-python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); v = d["acceleration_equations"][0]["vectors"][0]
-v["x"] += 1e-6 * abs(v["x"]) + 1e-6; print(json.dumps(d))' "$plans_dir/sixbar.1.json" >"$cli_tmp/bad_component.json"
-python3 "$plans_check" "$cli_tmp/bad_component.json" "$plans_dir/sixbar.csv" >"$cli_tmp/check.out" 2>&1
-grep -qF "a_B^n expected" "$cli_tmp/check.out" && pass \
-  || fail plans-component-can-fail "a wrong acceleration component was not reported: $(head -3 "$cli_tmp/check.out")"
 # every deck's equations name the components in the course's notation, a_B^n ... a_B^r
 grep -q '"name": "a_B2B3^k", "kind": "k"' "$plans_dir"/pr3207.*.json && pass || fail plans-coriolis "no Coriolis component in PR 3207's plans"
 
-# ... and a group's reaction part moved (F43's tangential part in the six-bar's group 4,5)
-python3 -c 'import json, sys; d = json.load(open(sys.argv[1]))
-v = [v for p in d["force_plans"] for v in p["vectors"] if v["name"] == "F43^τ"][0]
-v["x"] += 1e-6 * abs(v["x"]) + 1e-6; print(json.dumps(d))' "$plans_dir/sixbar.1.json" >"$cli_tmp/bad_group.json"
-python3 "$plans_check" "$cli_tmp/bad_group.json" "$plans_dir/sixbar.csv" --groups >"$cli_tmp/check.out" 2>&1
-grep -q "F43" "$cli_tmp/check.out" && pass \
-  || fail plans-group-can-fail "a moved reaction part was not reported: $(head -3 "$cli_tmp/check.out")"
 # the six-bar's groups as kinetostatics solves them: the dyads 4,5 and 2,3, then the crank
 grep -o '"group": "[0-9,]*"' "$plans_dir/sixbar.1.json" | tr '\n' ' ' | grep -qx '"group": "4,5" "group": "2,3" "group": "1" ' \
   && pass || fail plans-sixbar-groups "$(grep -o '"group": "[0-9,]*"' "$plans_dir/sixbar.1.json")"
