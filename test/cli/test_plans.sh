@@ -138,34 +138,30 @@ def component(d):
 def group_part(d):
     v = [v for p in d["force_plans"] for v in p["vectors"] if v["name"] == "F43^τ"][0]
     v["x"] += 1e-6 * abs(v["x"]) + 1e-6
-perturb("sixbar.2.json", "bad_load.json", drop_g4)
-perturb("class3.2.json", "bad_power.json", power)
-perturb("linkage_fourbar.2.json", "bad_order.json", order)
-perturb("sixbar.2.json", "bad_inner.json", inner)
-perturb("sixbar.2.json", "bad_groups.json", groups)
-perturb("sixbar.2.json", "bad_values.json", values)
-perturb("sixbar.1.json", "bad_lever.json", lever)
-perturb("friction_slider_crank.19.json", "no_friction.json", no_friction)
-perturb("assur_sixbar_friction.19.json", "pair_dropped.json", pair_dropped)
-perturb("friction_fourbar_resist.91.json", "couple_turned.json", couple_turned)
-perturb("pr3207_flywheel.181.json", "no_flywheel.json", no_flywheel)
-perturb("sixbar.1.json", "bad_component.json", component)
-perturb("sixbar.1.json", "bad_group.json", group_part)
+# each bundled plan and the changes made to it, each written to CHANGE.json
+for source, changes in {"sixbar.2.json": [drop_g4, inner, groups, values], "class3.2.json": [power],
+                        "linkage_fourbar.2.json": [order], "sixbar.1.json": [lever, component, group_part],
+                        "friction_slider_crank.19.json": [no_friction],
+                        "assur_sixbar_friction.19.json": [pair_dropped],
+                        "friction_fourbar_resist.91.json": [couple_turned],
+                        "pr3207_flywheel.181.json": [no_flywheel]}.items():
+    for change in changes:
+        perturb(source, change.__name__ + ".json", change)
 PY
-check_job plans_check load "$cli_tmp/bad_load.json" "$plans_dir/sixbar.csv" --lever
-check_job plans_check power "$cli_tmp/bad_power.json" "$plans_dir/class3.csv" --lever
-check_job plans_check order "$cli_tmp/bad_order.json" "$plans_dir/linkage_fourbar.csv" --order
-check_job plans_check inner "$cli_tmp/bad_inner.json" "$plans_dir/sixbar.csv" --order
-check_job plans_check groups groups "$plans_dir/sixbar.1.json" "$cli_tmp/bad_groups.json"
+check_job plans_check load "$cli_tmp/drop_g4.json" "$plans_dir/sixbar.csv" --lever
+check_job plans_check power "$cli_tmp/power.json" "$plans_dir/class3.csv" --lever
+check_job plans_check order "$cli_tmp/order.json" "$plans_dir/linkage_fourbar.csv" --order
+check_job plans_check inner "$cli_tmp/inner.json" "$plans_dir/sixbar.csv" --order
+check_job plans_check groups groups "$plans_dir/sixbar.1.json" "$cli_tmp/groups.json"
 check_job plans_check structure groups "$plans_dir/fivebar.2.json" --structure "I(0,1) -> II(2,3,4)"
-check_job plans_check values "$cli_tmp/bad_values.json" "$plans_dir/sixbar.csv" --values
-check_job plans_check lever "$cli_tmp/bad_lever.json" "$plans_dir/sixbar.csv" --lever
+check_job plans_check values "$cli_tmp/values.json" "$plans_dir/sixbar.csv" --values
+check_job plans_check lever "$cli_tmp/lever.json" "$plans_dir/sixbar.csv" --lever
 check_job plans_check no_friction "$cli_tmp/no_friction.json" "$plans_dir/friction_slider_crank.csv" --lever
 check_job plans_check pair_dropped "$cli_tmp/pair_dropped.json" "$plans_dir/assur_sixbar_friction.csv" --lever
 check_job plans_check couple_turned "$cli_tmp/couple_turned.json" "$plans_dir/friction_fourbar_resist.csv" --lever
 check_job plans_check no_flywheel "$cli_tmp/no_flywheel.json" "$plans_dir/pr3207_flywheel.csv" --lever
-check_job plans_check component "$cli_tmp/bad_component.json" "$plans_dir/sixbar.csv"
-check_job plans_check group "$cli_tmp/bad_group.json" "$plans_dir/sixbar.csv" --groups
+check_job plans_check component "$cli_tmp/component.json" "$plans_dir/sixbar.csv"
+check_job plans_check group "$cli_tmp/group_part.json" "$plans_dir/sixbar.csv" --groups
 sed -E 's/("name": "F21", "x": )-?([0-9])/\1\21/' "$plans_dir/sixbar.1.json" >"$cli_tmp/bad_polygon.json"
 if cmp -s "$cli_tmp/bad_polygon.json" "$plans_dir/sixbar.1.json"; then
   fail plans-polygon-can-fail "the perturbation did not change the plans"
