@@ -335,16 +335,20 @@ contains
     type(entity_t), intent(inout) :: item
     character(*), intent(in), optional :: class, stroke, fill, dash
     real(wp), intent(in), optional :: width
-    item%class = ""
-    item%stroke = ""
-    item%fill = ""
-    item%dash = ""
-    if (present(class)) item%class = class
-    if (present(stroke)) item%stroke = stroke
-    if (present(fill)) item%fill = fill
-    if (present(dash)) item%dash = dash
+    item%class = text_or_blank(class)
+    item%stroke = text_or_blank(stroke)
+    item%fill = text_or_blank(fill)
+    item%dash = text_or_blank(dash)
     if (present(width)) item%width = width
   end subroutine style
+
+  !> An optional style text, "" when absent.
+  pure function text_or_blank(text) result(value)
+    character(*), intent(in), optional :: text
+    character(len=:), allocatable :: value
+    value = ""
+    if (present(text)) value = text
+  end function text_or_blank
 
   !> A shape of `kind` through the points (x, y), mm, with its style (and a circle's radius),
   !> appended.
