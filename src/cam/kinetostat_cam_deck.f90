@@ -48,6 +48,9 @@ module kinetostat_cam_deck
     integer :: given(4) = 0
   end type cam_deck_t
 
+  !> The group's per-step arrays (one value per step, or one for all).
+  character(*), parameter :: per_step_arrays(4) = [character(len=7) :: "theta", "f2", "vdir", "ds_dphi"]
+
   !> Template deck, one line per entry.
   character(*), parameter :: cam_template(*) = [character(len=100) :: &
     "! kinetostat deck: cam with a translating follower in a guide (manual section 7).", &
@@ -98,7 +101,7 @@ contains
     l = unset_real; l_over = unset_real; f = unset_real; f_cam = unset_real
     omega_dir = unset_real; phi_start = unset_real; dphi = unset_real
     n = unset_real
-    capacity = deck_array_capacities(source, ctx%group, [character(len=7) :: "theta", "f2", "vdir", "ds_dphi"])
+    capacity = deck_array_capacities(source, ctx%group, per_step_arrays)
     allocate (theta(capacity(1)), source=unset_real, stat=stat)
     if (stat == 0) allocate (f2(capacity(2)), source=unset_real, stat=stat)
     if (stat == 0) allocate (vdir(capacity(3)), source=unset_real, stat=stat)
@@ -108,10 +111,7 @@ contains
       return
     end if
 
-    call probe%limit("theta", max_deck_array, "values (one per step)")
-    call probe%limit("f2", max_deck_array, "values (one per step)")
-    call probe%limit("vdir", max_deck_array, "values (one per step)")
-    call probe%limit("ds_dphi", max_deck_array, "values (one per step)")
+    call probe%limit(per_step_arrays, max_deck_array, "values (one per step)")
     read (source%records, nml=cam, iostat=probe%ios, iomsg=probe%msg)
     do while (probe%retry(source)) ! on failure: find the line and the assignment
       read (probe%records, nml=cam, iostat=probe%ios, iomsg=probe%msg)

@@ -87,9 +87,7 @@ contains
     offset = unset_real; arm = unset_real; roller_radius = unset_real; pressure_angle_max = unset_real
     pressure_angle_max_return = unset_real; rho_min = unset_real; omega = unset_real; step = unset_real
     l = unset_real; l_over = unset_real; f = unset_real; f2 = unset_real; f_cam = unset_real
-    call probe%limit("law", max_segments, "segments")
-    call probe%limit("beta", max_segments, "segments")
-    call probe%limit("lift", max_segments, "segments")
+    call probe%limit([character(4) :: "law", "beta", "lift"], max_segments, "segments")
     read (source%records, nml=cam_profile, iostat=probe%ios, iomsg=probe%msg)
     do while (probe%retry(source))
       read (probe%records, nml=cam_profile, iostat=probe%ios, iomsg=probe%msg)
@@ -108,24 +106,10 @@ contains
     deck%design%follower = code
 
     ! the segments: the leading non-blank laws, no gaps
-    n = 0
-    do i = 1, max_segments
-      if (len_trim(law(i)) == 0) exit
-      n = i
-    end do
-    if (n == 0) then
-      call deck_error(ctx, "law", "missing: give one law per segment ('dwell', 'constant_velocity', "// &
-        "'parabolic', 'harmonic', 'cycloidal', 'poly345')", error)
-      return
-    end if
-    if (n < max_segments) then
-      if (any(len_trim(law(n + 1:)) > 0)) then
-        call deck_error(ctx, "law", "values must be given without gaps (element "//int_str(n + 1)//" is missing)", &
-          error)
-        return
-      end if
-    end if
     rules%ctx = ctx
+    call rules%count_texts("law", law, "give one law per segment ('dwell', 'constant_velocity', 'parabolic', "// &
+      "'harmonic', 'cycloidal', 'poly345')", n)
+    if (rules%failed(error)) return
     call rules%count_values("beta", beta, given)
     call rules%require_rule("beta", given == n, "expected "//int_str(n)//" values (one per segment of law), got "// &
       int_str(given))

@@ -964,13 +964,10 @@ contains
         given = [given, k]
         given_as = [character(len=26) :: given_as, name]
       end if
+      if (common_flag(args, name)) cycle
       select case (name)
-      case ("-h", "--help")
-        args%help = .true.
       case ("-V", "--version")
         args%version = .true.
-      case ("--quiet", "-q")
-        args%quiet = .true.
       case ("--strict")
         args%strict = .true.
       case ("--keep-going")
@@ -1012,12 +1009,16 @@ contains
           end if
         end block
         args%fraction_given = .true.
-      case ("balance")
+      case ("balance", "contour", "sheets", "convert", "structure")
         if (i /= 1) then
-          call fatal_error(error, exit_usage, "balance must come first: kinetostat balance DECK [-o FILE] [--method M]")
+          call fatal_error(error, exit_usage, name//" must come first: "//first_word_usage(name))
           return
         end if
-        args%balance = .true.
+        args%balance = args%balance .or. name == "balance"
+        args%contour = args%contour .or. name == "contour"
+        args%sheets = args%sheets .or. name == "sheets"
+        args%convert = args%convert .or. name == "convert"
+        args%structure = args%structure .or. name == "structure"
       case ("-o", "--output")
         args%out_file = value
       case ("--format")
@@ -1074,18 +1075,6 @@ contains
           return
         end if
         args%sweep = .true.
-      case ("contour")
-        if (i /= 1) then
-          call fatal_error(error, exit_usage, "contour must come first: kinetostat contour DECK [-o FILE]")
-          return
-        end if
-        args%contour = .true.
-      case ("sheets")
-        if (i /= 1) then
-          call fatal_error(error, exit_usage, "sheets must come first: kinetostat sheets DECK -o DIR")
-          return
-        end if
-        args%sheets = .true.
       case ("--paper")
         args%sheet_options = .true.
         if (all(value /= ["A1", "A2", "A3", "A4"])) then
@@ -1127,24 +1116,12 @@ contains
           call fatal_error(error, exit_input, "--output-link needs a link's number 1..999 (got '"//value//"')")
           return
         end if
-      case ("convert")
-        if (i /= 1) then
-          call fatal_error(error, exit_usage, "convert must come first: "//usage_text("convert"))
-          return
-        end if
-        args%convert = .true.
       case ("--to")
         if (value /= "linkage") then
           call fatal_error(error, exit_usage, "--to must be linkage (got '"//value//"')")
           return
         end if
         args%convert_to = value
-      case ("structure")
-        if (i /= 1) then
-          call fatal_error(error, exit_usage, "structure must come first: kinetostat structure DECK [--lang ru]")
-          return
-        end if
-        args%structure = .true.
       case ("diff")
         if (i == 1) then
           call parse_diff_args(args, error)
@@ -1275,6 +1252,41 @@ contains
     end subroutine check_options_belong
   end subroutine parse_args
 
+  !> The flags every parser takes (-h/--help, -q/--quiet): set in `args`; whether `name` was one.
+  logical function common_flag(args, name)
+    type(cli_args_t), intent(inout) :: args
+    !> The option's name as given.
+    character(*), intent(in) :: name
+    common_flag = .true.
+    select case (name)
+    case ("-h", "--help")
+      args%help = .true.
+    case ("-q", "--quiet")
+      args%quiet = .true.
+    case default
+      common_flag = .false.
+    end select
+  end function common_flag
+
+  !> The usage a subcommand that must come first names when it does not.
+  pure function first_word_usage(command) result(text)
+    !> The subcommand's word.
+    character(*), intent(in) :: command
+    character(len=:), allocatable :: text
+    select case (command)
+    case ("balance")
+      text = "kinetostat balance DECK [-o FILE] [--method M]"
+    case ("contour")
+      text = "kinetostat contour DECK [-o FILE]"
+    case ("sheets")
+      text = "kinetostat sheets DECK -o DIR"
+    case ("structure")
+      text = "kinetostat structure DECK [--lang ru]"
+    case default
+      text = usage_text(command)
+    end select
+  end function first_word_usage
+
   !> Whether binary output would reach a terminal: the file of `-o` (a terminal device, or
   !> /dev/stdout on one), or standard output when there is no `-o`.
   logical function binary_to_terminal(out_file)
@@ -1320,11 +1332,8 @@ contains
         call fatal_error(error, exit_input, "diff: "//name//" needs a value; "//usage_text("diff"))
         return
       end if
+      if (common_flag(args, name)) cycle
       select case (name)
-      case ("-h", "--help")
-        args%help = .true.
-      case ("-q", "--quiet")
-        args%quiet = .true.
       case ("--common")
         args%diff_options%common = .true.
       case ("--rtol", "--atol")

@@ -6,7 +6,7 @@ module kinetostat_text
   private
   public :: real_str, int_str, int64_str, number_str, lower, upper, printable, utf8_length, char_count, counted, &
     clipped, starts_with, is_name, without_blanks, replace_all, is_letter, is_digit, put_piece, joined
-  public :: string_t, trimmed
+  public :: string_t, trimmed, next_item
 
   !> One text of a list whose texts differ in length.
   type :: string_t
@@ -123,8 +123,7 @@ contains
     !> Any bytes.
     character(*), intent(in) :: text
     character(len=:), allocatable :: safe
-    character(len=*), parameter :: hex = "0123456789ABCDEF"
-    integer :: i, c, n, at
+    integer :: i, n, at
     if (verify(text, " !""#$%&'()*+,-./0123456789:;<=>?@ABCDEFGHIJKLMNOPQRSTUVWXYZ[\]^_`"// &
         "abcdefghijklmnopqrstuvwxyz{|}~") == 0) then
       safe = text
@@ -134,34 +133,40 @@ contains
     at = 0
     i = 1
     do while (i <= len(text))
-      c = iachar(text(i:i))
-      n = utf8_length(text, i)
+      ! a valid multi-byte character as it is, any other byte by printable_byte
+      n = max(1, utf8_length(text, i))
       if (n > 1) then
-        safe(at + 1:at + n) = text(i:i + n - 1)
-        at = at + n
-        i = i + n
-        cycle
-      end if
-      if (c == 10) then
-        safe(at + 1:at + 2) = "\n"
-        at = at + 2
-      else if (c == 13) then
-        safe(at + 1:at + 2) = "\r"
-        at = at + 2
-      else if (c == 9) then
-        safe(at + 1:at + 2) = "\t"
-        at = at + 2
-      else if (c < 32 .or. c >= 127) then
-        safe(at + 1:at + 4) = "\x"//hex(c / 16 + 1:c / 16 + 1)//hex(mod(c, 16) + 1:mod(c, 16) + 1)
-        at = at + 4
+        call put_piece(safe, at, text(i:i + n - 1))
       else
-        safe(at + 1:at + 1) = text(i:i)
-        at = at + 1
+        call put_piece(safe, at, printable_byte(text(i:i)))
       end if
-      i = i + 1
+      i = i + n
     end do
     safe = safe(1:at)
   end function printable
+
+  !> One byte as `printable` shows it: \n, \r, \t, \xNN for a control character or a byte
+  !> beyond ASCII, itself otherwise.
+  pure function printable_byte(byte) result(shown)
+    !> The byte.
+    character, intent(in) :: byte
+    character(len=:), allocatable :: shown
+    character(len=*), parameter :: hex = "0123456789ABCDEF"
+    integer :: c
+    c = iachar(byte)
+    select case (c)
+    case (10)
+      shown = "\n"
+    case (13)
+      shown = "\r"
+    case (9)
+      shown = "\t"
+    case (0:8, 11:12, 14:31, 127:255)
+      shown = "\x"//hex(c / 16 + 1:c / 16 + 1)//hex(mod(c, 16) + 1:mod(c, 16) + 1)
+    case default
+      shown = byte
+    end select
+  end function printable_byte
 
   !> Bytes of the valid UTF-8 character at `text(i:)` (1 for ASCII, 2 to 4 for a multi-byte
   !> sequence), 0 when the byte at `i` does not start a valid one (a CP1251 or Latin-1
@@ -348,6 +353,29 @@ contains
     character(len=:), allocatable :: text
     text = joined_strings(trimmed(names), separator)
   end function joined_names
+
+  !> The item of a comma-separated list that starts at `start`, without the blanks around
+  !> it; `start` moves past the item's comma, to 0 after the last item. Walk a list with
+  !>     start = 1
+  !>     do while (start > 0)
+  !>       call next_item(list, start, item)
+  pure subroutine next_item(list, start, item)
+    !> The list ("F12, F23").
+    character(*), intent(in) :: list
+    !> Where the item starts (1 for the first); then where the next one does, or 0.
+    integer, intent(inout) :: start
+    !> The item.
+    character(len=:), allocatable, intent(out) :: item
+    integer :: comma
+    comma = index(list(start:), ",")
+    if (comma == 0) then
+      item = trim(adjustl(list(start:)))
+      start = 0
+    else
+      item = trim(adjustl(list(start:start + comma - 2)))
+      start = start + comma
+    end if
+  end subroutine next_item
 
   !> A blank-padded name as a string_t, without its trailing blanks.
   elemental function trimmed(name) result(part)

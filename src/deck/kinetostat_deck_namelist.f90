@@ -86,7 +86,8 @@ module kinetostat_deck_namelist
     !> than it holds, is reported with the limit ("link(25): at most 24 links").
     type(deck_capacity_t), allocatable :: capacities(:)
   contains
-    procedure :: limit => probe_limit
+    procedure, private :: probe_limit, probe_limit_each
+    generic :: limit => probe_limit, probe_limit_each
     procedure :: per_step => probe_per_step
     procedure :: retry => probe_retry
     procedure :: failed => probe_failed
@@ -472,6 +473,22 @@ contains
     if (.not. allocated(self%capacities)) allocate (self%capacities(0))
     self%capacities = [self%capacities, deck_capacity_t(array, size, noun)]
   end subroutine probe_limit
+
+  !> `limit` for a table of arrays of the same capacity and noun (names padded with blanks):
+  !> `call probe%limit([character(7) :: "theta", "f2"], max_deck_array, "values (one per step)")`.
+  pure subroutine probe_limit_each(self, arrays, capacity, noun)
+    class(namelist_probe_t), intent(inout) :: self
+    !> The arrays as gfortran names them, lower case.
+    character(*), intent(in) :: arrays(:)
+    !> Elements of each.
+    integer, intent(in) :: capacity
+    !> What they are, plural.
+    character(*), intent(in) :: noun
+    integer :: i
+    do i = 1, size(arrays)
+      call self%probe_limit(trim(arrays(i)), capacity, noun)
+    end do
+  end subroutine probe_limit_each
 
   !> A per-step array of the group, before the READ: allocated as long as the deck may fill
   !> it (deck_array_capacities), every element unset_real, its limit noted (max_deck_array

@@ -75,6 +75,7 @@ module kinetostat_deck_rules
     procedure :: require_per_step => rules_per_step
     procedure :: require_all_set => rules_all_set
     procedure :: count_values => rules_count_values
+    procedure :: count_texts => rules_count_texts
     procedure :: crank_steps => rules_crank_steps
     procedure :: ok => rules_ok
     procedure :: failed => rules_failed
@@ -473,6 +474,35 @@ contains
     count = 0
     if (.not. allocated(self%error)) call count_values(self%ctx, name, values, count, self%error)
   end subroutine rules_count_values
+
+  !> Number of words a deck gave for an array of texts (one per stage, segment, ...), once no
+  !> check has failed: the leading non-blank entries, at least one ("<name>: missing:
+  !> <missing>") and no non-blank entry after them (no gaps). `count` is 0 when a check failed.
+  subroutine rules_count_texts(self, name, texts, missing, count)
+    class(deck_rules_t), intent(inout) :: self
+    !> The array's name.
+    character(*), intent(in) :: name
+    !> Its entries as read (blank when not given).
+    character(*), intent(in) :: texts(:)
+    !> What to give, for the message when none is given.
+    character(*), intent(in) :: missing
+    !> How many were given.
+    integer, intent(out) :: count
+    integer :: i
+    count = 0
+    if (allocated(self%error)) return
+    do i = 1, size(texts)
+      if (len_trim(texts(i)) == 0) exit
+      count = i
+    end do
+    if (count == 0) then
+      call deck_error(self%ctx, name, "missing: "//missing, self%error)
+    else if (any(len_trim(texts(count + 1:)) > 0)) then
+      call deck_error(self%ctx, name, "values must be given without gaps (element "//int_str(count + 1)// &
+        " is missing)", self%error)
+    end if
+    if (allocated(self%error)) count = 0
+  end subroutine rules_count_texts
 
   !> The crank angles of a run, once no check has failed: phi_start (deg, optional:
   !> default 0) and the number of steps from dphi and n (steps_over_turn).

@@ -96,9 +96,7 @@ contains
     z1 = unset_real; z2 = unset_real; z3 = unset_real; k = unset_real
 
     ! every variable of the group is an array of one value per stage
-    do i = 1, size(stage_arrays)
-      call probe%limit(trim(stage_arrays(i)), max_stages, "stages")
-    end do
+    call probe%limit(stage_arrays, max_stages, "stages")
     read (source%records, nml=gears, iostat=probe%ios, iomsg=probe%msg)
     do while (probe%retry(source)) ! on failure: find the line and the assignment
       read (probe%records, nml=gears, iostat=probe%ios, iomsg=probe%msg)
@@ -117,25 +115,10 @@ contains
     end select
 
     ! number of stages: the leading non-blank stage entries, no gaps
-    n = 0
-    do i = 1, max_stages
-      if (len_trim(stage(i)) == 0) exit
-      n = i
-    end do
-    if (n == 0) then
-      call deck_error(ctx, "stage", "missing: give stage = 'spur' | 'helical' | 'bevel' | 'planetary' "// &
-        "for each stage", error)
-      return
-    end if
-    if (n < max_stages) then
-      if (any(len_trim(stage(n + 1:)) > 0)) then
-        call deck_error(ctx, "stage", "values must be given without gaps (element "//int_str(n + 1)// &
-          " is missing)", error)
-        return
-      end if
-    end if
-    ! nothing may be given for a stage that does not exist
     rules%ctx = ctx
+    call rules%count_texts("stage", stage, "give stage = 'spur' | 'helical' | 'bevel' | 'planetary' for each stage", n)
+    if (rules%failed(error)) return
+    ! nothing may be given for a stage that does not exist
     call no_extra_real(rules, "m1", m1, n)
     call no_extra_real(rules, "m", m, n)
     call no_extra_real(rules, "dw1", dw1, n)

@@ -23,7 +23,7 @@ module kinetostat_run_sheet
   use, intrinsic :: iso_fortran_env, only: int64
   use kinetostat_kinds, only: wp, deg_to_rad, version_string
   use kinetostat_error, only: error_t, fatal_error, exit_usage
-  use kinetostat_text, only: int_str, upper
+  use kinetostat_text, only: int_str, upper, next_item
   use kinetostat_format, only: fixed_number, short_number, full_number
   use kinetostat_step_table, only: step_table_t, col_force, col_force_angle, col_moment
   use kinetostat_summary, only: coarse_step_warning, coarse_step_limit, column_stats, column_stats_t
@@ -339,7 +339,7 @@ contains
     !> Usage error.
     type(error_t), allocatable, intent(out) :: error
     character(len=:), allocatable :: name, known
-    integer :: start, comma, i, k
+    integer :: start, i, k
     allocate (chosen(0))
     if (len_trim(list) == 0) then
       do i = 1, size(pairs)
@@ -348,13 +348,8 @@ contains
       return
     end if
     start = 1
-    do
-      comma = index(list(start:), ",")
-      if (comma == 0) then
-        name = trim(adjustl(list(start:)))
-      else
-        name = trim(adjustl(list(start:start + comma - 2)))
-      end if
+    do while (start > 0)
+      call next_item(list, start, name)
       k = 0
       do i = 1, size(pairs)
         if (upper(pairs(i)%name) == upper(name)) k = i
@@ -371,8 +366,6 @@ contains
         return
       end if
       if (k > 0) call push_pair(chosen, pairs(k)%name, pairs(k)%magnitude, pairs(k)%angle)
-      if (comma == 0) exit
-      start = start + comma
     end do
   end subroutine select_pair_forces
 

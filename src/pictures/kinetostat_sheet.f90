@@ -335,16 +335,41 @@ contains
     type(entity_t), intent(inout) :: item
     character(*), intent(in), optional :: class, stroke, fill, dash
     real(wp), intent(in), optional :: width
-    item%class = ""
-    item%stroke = ""
-    item%fill = ""
-    item%dash = ""
-    if (present(class)) item%class = class
-    if (present(stroke)) item%stroke = stroke
-    if (present(fill)) item%fill = fill
-    if (present(dash)) item%dash = dash
+    item%class = text_or_blank(class)
+    item%stroke = text_or_blank(stroke)
+    item%fill = text_or_blank(fill)
+    item%dash = text_or_blank(dash)
     if (present(width)) item%width = width
   end subroutine style
+
+  !> An optional style text, "" when absent.
+  pure function text_or_blank(text) result(value)
+    character(*), intent(in), optional :: text
+    character(len=:), allocatable :: value
+    value = ""
+    if (present(text)) value = text
+  end function text_or_blank
+
+  !> A shape of `kind` through the points (x, y), mm, with its style (and a circle's radius),
+  !> appended.
+  pure subroutine add_shape(self, kind, x, y, class, stroke, width, fill, dash, radius)
+    class(sheet_t), intent(inout) :: self
+    !> entity_line, entity_polyline, entity_polygon, entity_rect or entity_circle.
+    integer, intent(in) :: kind
+    !> The points (a rectangle's two corners, a circle's centre), mm.
+    real(wp), intent(in) :: x(:), y(:)
+    character(*), intent(in), optional :: class, stroke, fill, dash
+    real(wp), intent(in), optional :: width
+    !> A circle's radius, mm.
+    real(wp), intent(in), optional :: radius
+    type(entity_t) :: item
+    item%kind = kind
+    item%x = x
+    item%y = y
+    if (present(radius)) item%radius = radius
+    call style(item, class, stroke, width, fill, dash)
+    call push(self, item)
+  end subroutine add_shape
 
   !> A straight line from (x1, y1) to (x2, y2), mm.
   pure subroutine line(self, x1, y1, x2, y2, class, stroke, width, dash)
@@ -354,12 +379,7 @@ contains
     character(*), intent(in), optional :: class, stroke, dash
     !> Stroke width, mm (optional).
     real(wp), intent(in), optional :: width
-    type(entity_t) :: item
-    item%kind = entity_line
-    item%x = [x1, x2]
-    item%y = [y1, y2]
-    call style(item, class, stroke, width, dash=dash)
-    call push(self, item)
+    call add_shape(self, entity_line, [x1, x2], [y1, y2], class, stroke, width, dash=dash)
   end subroutine line
 
   !> An open line through the points (x, y), mm.
@@ -368,12 +388,7 @@ contains
     real(wp), intent(in) :: x(:), y(:)
     character(*), intent(in), optional :: class, stroke, dash
     real(wp), intent(in), optional :: width
-    type(entity_t) :: item
-    item%kind = entity_polyline
-    item%x = x
-    item%y = y
-    call style(item, class, stroke, width, dash=dash)
-    call push(self, item)
+    call add_shape(self, entity_polyline, x, y, class, stroke, width, dash=dash)
   end subroutine polyline
 
   !> A closed polygon through the points (x, y), mm.
@@ -382,12 +397,7 @@ contains
     real(wp), intent(in) :: x(:), y(:)
     character(*), intent(in), optional :: class, stroke, fill
     real(wp), intent(in), optional :: width
-    type(entity_t) :: item
-    item%kind = entity_polygon
-    item%x = x
-    item%y = y
-    call style(item, class, stroke, width, fill)
-    call push(self, item)
+    call add_shape(self, entity_polygon, x, y, class, stroke, width, fill)
   end subroutine polygon
 
   !> A rectangle with its upper left corner at (x, y), `w` x `h` mm.
@@ -396,12 +406,7 @@ contains
     real(wp), intent(in) :: x, y, w, h
     character(*), intent(in), optional :: class, stroke, fill
     real(wp), intent(in), optional :: width
-    type(entity_t) :: item
-    item%kind = entity_rect
-    item%x = [x, x + w]
-    item%y = [y, y + h]
-    call style(item, class, stroke, width, fill)
-    call push(self, item)
+    call add_shape(self, entity_rect, [x, x + w], [y, y + h], class, stroke, width, fill)
   end subroutine rect
 
   !> A circle of radius r about (cx, cy), mm.
@@ -410,13 +415,7 @@ contains
     real(wp), intent(in) :: cx, cy, r
     character(*), intent(in), optional :: class, stroke, fill
     real(wp), intent(in), optional :: width
-    type(entity_t) :: item
-    item%kind = entity_circle
-    item%x = [cx]
-    item%y = [cy]
-    item%radius = r
-    call style(item, class, stroke, width, fill)
-    call push(self, item)
+    call add_shape(self, entity_circle, [cx], [cy], class, stroke, width, fill, radius=r)
   end subroutine circle
 
   !> An arc of radius r about (cx, cy), mm, from `start` deg sweeping `sweep` deg

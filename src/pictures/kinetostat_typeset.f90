@@ -458,10 +458,11 @@ contains
         return
       end if
     end if
-    ! element by element (gfortran and deferred-length components in array constructors)
+    ! element by element (gfortran and deferred-length components in array constructors),
+    ! each run's text moved, not copied
     allocate (grown(n + 1))
     do i = 1, n
-      grown(i)%text = runs(i)%text
+      call move_alloc(runs(i)%text, grown(i)%text)
       grown(i)%shift = runs(i)%shift
     end do
     grown(n + 1)%text = text
