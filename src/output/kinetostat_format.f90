@@ -282,7 +282,7 @@ contains
 
   !> A self-check figure in the footer (10 characters).
   pure function footer_number(x) result(text)
-    !> Finite value.
+    !> Finite self-check figure.
     real(wp), intent(in) :: x
     character(len=10) :: text
     call es_text(x, 2, 1, text)

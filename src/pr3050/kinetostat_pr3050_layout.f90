@@ -369,13 +369,13 @@ contains
     end associate
   end subroutine mass_model
 
-  !> The forces of row `k` on its drawing (--format svg --at K): the pair forces at their
-  !> joints, the driving force F2 on the rod (along A->B, at S2), the weights (angle gamma),
-  !> the inertia forces and moments of links 1, 2 and 3.
+  !> The forces of row `k` on its drawing (--format svg --at K): each pair force at its joint,
+  !> the driving force F2 on the rod (along A->B, at S2), the weights (angle gamma),
+  !> the inertia forces and moments of links 1, 2 and 3; no driving moment (the oil drives).
   pure subroutine force_plan(self, table, k, drawing, error)
     class(pr3050_mechanism_t), intent(in) :: self
     type(step_table_t), intent(in) :: table
-    !> Row drawn: the oil force on the rod is its column F2.
+    !> Row drawn: its column F2 is the oil force on the rod, N.
     integer, intent(in) :: k
     type(drawing_t), intent(inout) :: drawing
     type(error_t), allocatable, intent(out) :: error
