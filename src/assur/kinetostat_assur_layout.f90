@@ -6,7 +6,7 @@ module kinetostat_assur_layout
   use kinetostat_kinds, only: wp, deg_to_rad, rad_to_deg
   use kinetostat_deck, only: deck_source_t
   use kinetostat_error, only: error_t, fatal_error, exit_geometry
-  use kinetostat_text, only: int_str, upper
+  use kinetostat_text, only: int_str, upper, joined, string_t
   use kinetostat_noise, only: noise_rel, force_components
   use kinetostat_vec2, only: magnitude, angle_360_deg, angle_180_deg, rotate, snap_noise, clean_zero
   use kinetostat_step_table, only: worst_row, lack_block_memory
@@ -14,8 +14,8 @@ module kinetostat_assur_layout
   use kinetostat_step_table, only: step_table_t, col_input_angle, col_force, col_force_angle, col_component, col_length, &
     step_span, &
     col_moment, col_other, col_flag, col_ratio
-  use kinetostat_table_layout, only: table_field_t, field, blank_field, put_layout_heading, &
-    put_layout_rows
+  use kinetostat_table_layout, only: table_field_t, field, blank_field, results_page_t, put_layout_block, &
+    link_axes_heading
   use kinetostat_labels, only: lang_ru
   use kinetostat_friction_block, only: write_friction_block
   use kinetostat_text_buffer, only: text_buffer_t
@@ -54,13 +54,6 @@ module kinetostat_assur_layout
   integer, parameter :: stroke_decimals = 4
   !> put_kinematics' modes: the columns by name, the columns' indices.
   integer, parameter :: kin_by_name = 0, kin_finding = 1
-  !> Heading of RESULTS with --frame link.
-  character(*), parameter :: link_axes_heading = "REACTIONS IN THE AXES OF THE LINK EACH ACTS ON "// &
-    "(LINE 1 ALONG ITS X AXIS, LINE 2 ACROSS), N; CRANK PIN IN CRANK AXES (X ALONG PHI1)"
-  !> The same in Russian.
-  character(*), parameter :: link_axes_heading_ru = "РЕАКЦИИ В ОСЯХ ЗВЕНА, НА КОТОРОЕ ОНИ "// &
-    "ДЕЙСТВУЮТ (СТРОКА 1 ВДОЛЬ ОСИ X ЗВЕНА, СТРОКА 2 ПОПЕРЕК), Н; "// &
-    "ШАРНИР КРИВОШИПА В ОСЯХ КРИВОШИПА (X ВДОЛЬ PHI1)"
   !> Dyad line of the INPUT DATA echo.
   character(*), parameter :: dyad_echo_fmt = '(3x,"DYAD ",i0,": ",a," LINKS ",i0,"-",i0,", ON LINKS ",i0," AND ",i0, &
     &", MODE ",i0)'
@@ -76,40 +69,50 @@ module kinetostat_assur_layout
     type(link_balance_t), allocatable :: extra(:)
   end type step_loads_t
 
+  !> Title lines of the legacy table (English, Russian).
+  character(*), parameter :: title_en = "KINETOSTAT  ASSUR  FORCE ANALYSIS OF A LINKAGE OF CLASS-II ASSUR GROUPS", &
+    title_ru = "KINETOSTAT  ASSUR  СИЛОВОЙ РАСЧЕТ МЕХАНИЗМА ИЗ ГРУПП АССУРА II" // &
+      " КЛАССА"
+
   !> A one-DOF linkage of class-II Assur groups on a crank (generic engine).
   type, extends(mechanism_t) :: assur_mechanism_t
-    !> The validated deck.
+    !> The validated deck: the dyads on the crank, their loads and the dynamics stage.
     type(assur_deck_t) :: deck
     !> The deck as the source of the reduced quantities (with a dynamics stage).
     type(assur_source_t) :: source
     !> The steady cycle (dynamics = 'steady' or 'given').
     type(cycle_t) :: cycle
   contains
-    procedure :: read_deck, solve, write_results, sketch, force_plan, mass_model, finish_run
+    procedure :: load_deck, prepare, solve, put_results, sketch, force_plan, mass_model, finish_run
   end type assur_mechanism_t
 
 contains
 
-  !> A new generic mechanism (the registry's constructor).
+  !> A new mechanism of this kind (the registry's constructor).
   subroutine new_assur(mech)
     !> The mechanism.
     class(mechanism_t), allocatable, intent(out) :: mech
     allocate (assur_mechanism_t :: mech)
-    mech%template = assur_template
-    mech%title_en = "KINETOSTAT  ASSUR  FORCE ANALYSIS OF A LINKAGE OF CLASS-II ASSUR GROUPS"
-    mech%title_ru = "KINETOSTAT  ASSUR  СИЛОВОЙ РАСЧЕТ МЕХАНИЗМА ИЗ ГРУПП АССУРА II" // &
-      " КЛАССА"
+    call mech%describe(assur_template, title_en, title_ru, "")
   end subroutine new_assur
 
-  subroutine read_deck(self, source, error)
+  subroutine load_deck(self, source, error)
     class(assur_mechanism_t), intent(inout) :: self
     type(deck_source_t), intent(in) :: source
     type(error_t), allocatable, intent(out) :: error
     call read_assur_deck(source, self%deck, error)
-    if (allocated(error) .or. self%deck%dyn%mode == dynamics_none) return
+  end subroutine load_deck
+
+  !> With a dynamics stage, the deck as the source of the reduced quantities, and the steady
+  !> cycle (dynamics = 'steady' or 'given').
+  subroutine prepare(self, path, error)
+    class(assur_mechanism_t), intent(inout) :: self
+    character(*), intent(in) :: path
+    type(error_t), allocatable, intent(out) :: error
+    if (self%deck%dyn%mode == dynamics_none) return
     self%source%deck = self%deck
-    if (self%deck%dyn%mode >= dynamics_steady) call assur_cycle(self%deck, source%path, self%cycle, error)
-  end subroutine read_deck
+    if (self%deck%dyn%mode >= dynamics_steady) call assur_cycle(self%deck, path, self%cycle, error)
+  end subroutine prepare
 
   !> The topology for a drawing: every moving link joins the joints J<pair> of its pairs (a
   !> dyad's link a: pairs 1, 2; link b: pairs 2, 3; the crank: its pivot; each link also the
@@ -646,6 +649,7 @@ contains
   pure subroutine force_plan(self, table, k, drawing, error)
     class(assur_mechanism_t), intent(in) :: self
     type(step_table_t), intent(in) :: table
+    !> Row drawn: the links' states at its crank angle place the deck's forces and moments.
     integer, intent(in) :: k
     type(drawing_t), intent(inout) :: drawing
     type(error_t), allocatable, intent(out) :: error
@@ -717,12 +721,12 @@ contains
   pure function joint_list(deck) result(text)
     type(assur_deck_t), intent(in) :: deck
     character(len=:), allocatable :: text
+    type(string_t) :: parts(size(deck%joint_name))
     integer :: ip
-    text = ""
-    do ip = 1, size(deck%joint_name)
-      if (ip > 1) text = text//", "
-      text = text//trim(deck%joint_name(ip))//" ("//trim(deck%pair_name(ip))//")"
+    do ip = 1, size(parts)
+      parts(ip)%s = trim(deck%joint_name(ip))//" ("//trim(deck%pair_name(ip))//")"
     end do
+    text = joined(parts, ", ")
   end function joint_list
 
   !> The joint of a pair: the deck's name for it (`dyad(i)%joints`, `crank_joint`), else
@@ -947,32 +951,18 @@ contains
   !> for prismatic pairs two more lines with the normal force and the reaction moment. With a
   !> linear actuator as driver the last column holds F_drive, stroke, stroke speed and
   !> acceleration (lines 1-4) instead of M1.
-  pure subroutine write_results(self, table, lang, first, last, out, later)
+  pure subroutine put_results(self, table, page, out, later)
     class(assur_mechanism_t), intent(in) :: self
     type(step_table_t), intent(in) :: table
-    integer, intent(in) :: lang
-    !> Rows of the block to write (the headings come with row 1 of the run's first block).
-    integer, intent(in) :: first, last
-    type(text_buffer_t), intent(inout) :: out
-    type(text_buffer_t), intent(inout) :: later
-    type(table_field_t), allocatable :: fields(:)
-    allocate (fields(0)) ! defined before the assignment (gcc's -Wuninitialized on the descriptor)
-    fields = results_layout(self%deck, table%link_frame)
-    if (first == 1 .and. table%first_block()) then
-      if (table%link_frame) then
-        if (lang == lang_ru) then
-          call out%put(" "//link_axes_heading_ru)
-        else
-          call out%put(" "//link_axes_heading)
-        end if
-      end if
-      call put_layout_heading(out, table, fields, lang, .true., unit_lines=2)
-    end if
-    call put_layout_rows(out, table, fields, first, last)
+    type(results_page_t), intent(in) :: page
+    type(text_buffer_t), intent(inout) :: out, later
+    ! the unit lines of the force and angle lines only; with --frame link, a line on the axes
+    call put_layout_block(out, table, page, results_layout(self%deck, table%link_frame), .true., unit_lines=2, &
+      above=link_axes_heading(table, page%lang, crank_axes=.true.))
     ! the friction block follows the last row (in `later`)
     if (self%deck%friction_on) call write_friction_block(table, &
-      trim(merge("F_drive", "M1     ", self%deck%mech%drive_dyad > 0)), phi_width, .true., lang, later)
-  end subroutine write_results
+      trim(merge("F_drive", "M1     ", self%deck%mech%drive_dyad > 0)), phi_width, .true., page%lang, later)
+  end subroutine put_results
 
 
   !> The RESULTS layout of a step: line 1 PHI1, every pair's force and M1 (or the

@@ -11,8 +11,8 @@ module kinetostat_cam_layout
   use kinetostat_run_tally, only: flag_count_t
   use kinetostat_step_table, only: step_table_t, column_t, column, col_input_angle, col_component, step_span, &
     col_length, col_flag, col_ratio, col_other, lack_block_memory
-  use kinetostat_table_layout, only: table_field_t, field, force_and_angle, layout_columns, put_layout_heading, &
-    put_fields
+  use kinetostat_table_layout, only: table_field_t, field, force_and_angle, layout_columns, put_layout_heading, results_page_t, &
+    echo_steps, put_fields
   use kinetostat_labels, only: lang_ru
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_mechanism, only: mechanism_t
@@ -28,39 +28,41 @@ module kinetostat_cam_layout
   !> Number of columns of a step's row (cam_columns).
   integer, parameter :: row_size = 16
 
+  !> Title lines of the legacy table (English, Russian).
+  character(*), parameter :: title_en = "KINETOSTAT  CAM  FORCES ON A TRANSLATING FOLLOWER IN A GUIDE (MANUAL SECTION 7)", &
+    title_ru = "KINETOSTAT  CAM  СИЛЫ В КУЛАЧКОВОМ МЕХАНИЗМЕ С" // &
+      " ПОСТУПАТЕЛЬНО ДВИЖУЩИМСЯ ТОЛКАТЕЛЕМ (РАЗДЕЛ 7)"
+
   !> Cam with a translating (knife/roller) or flat follower in a guide, manual section 7.
   type, extends(mechanism_t) :: cam_mechanism_t
-    !> The validated deck.
+    !> The validated deck: cam, follower, guide and loads per cam angle.
     type(cam_deck_t) :: deck
   contains
-    procedure :: read_deck, solve, write_results, finish_run
+    procedure :: load_deck, solve, put_results, finish_run
   end type cam_mechanism_t
 
 contains
 
-  !> A new cam mechanism (the registry's constructor).
+  !> A new mechanism of this kind (the registry's constructor).
   subroutine new_cam(mech)
     !> The mechanism.
     class(mechanism_t), allocatable, intent(out) :: mech
     allocate (cam_mechanism_t :: mech)
-    mech%template = cam_template
-    mech%title_en = "KINETOSTAT  CAM  FORCES ON A TRANSLATING FOLLOWER IN A GUIDE (MANUAL SECTION 7)"
-    mech%title_ru = "KINETOSTAT  CAM  СИЛЫ В КУЛАЧКОВОМ МЕХАНИЗМЕ С" // &
-      " ПОСТУПАТЕЛЬНО ДВИЖУЩИМСЯ ТОЛКАТЕЛЕМ (РАЗДЕЛ 7)"
+    call mech%describe(cam_template, title_en, title_ru, "")
   end subroutine new_cam
 
-  subroutine read_deck(self, source, error)
+  subroutine load_deck(self, source, error)
     class(cam_mechanism_t), intent(inout) :: self
     type(deck_source_t), intent(in) :: source
     type(error_t), allocatable, intent(out) :: error
     call read_cam_deck(source, self%deck, error)
-  end subroutine read_deck
+  end subroutine load_deck
 
   !> All steps of a validated deck (in parallel with OpenMP threads).
   subroutine cam_solve(deck, steps, first, last, error)
     !> Validated deck.
     type(cam_deck_t), intent(in) :: deck
-    !> One result per cam angle (of steps first..last).
+    !> The results at the cam angles of steps first..last, one a step.
     type(cam_step_t), allocatable, intent(out) :: steps(:)
     !> Steps to compute (default: all).
     integer, intent(in), optional :: first, last
@@ -81,7 +83,8 @@ contains
     !$omp end parallel do
   end subroutine cam_solve
 
-  !> Every step into the step table, with the INPUT DATA echo and the self-check.
+  !> The block's cam angles into the step table; with the first block the columns, the
+  !> INPUT DATA echo and the loads; the self-check of every step.
   subroutine solve(self, table, error)
     class(cam_mechanism_t), intent(in) :: self
     type(step_table_t), intent(inout) :: table
@@ -92,6 +95,7 @@ contains
     call cam_solve(self%deck, steps, first, last, error)
     if (allocated(error)) return
     if (table%first_block()) then
+      call echo_deck(self%deck, table)
       ! a jammed or lost-contact step has no forces: empty in CSV, null in JSON, left out of
       ! the summary (docs/gears-cams.md)
       call table%declare_columns(cam_columns())
@@ -100,7 +104,6 @@ contains
       table%void_reason = "jammed or lost contact"
       table%residual_label = "MAX EQUILIBRIUM RESIDUAL OF THE FOLLOWER, ALL STEPS"
       table%mismatch_label = "MAX N MISMATCH, CLOSED FORM VS 3X3 LINEAR SOLVE"
-      call echo_deck(self%deck, table)
     end if
     call table%allocate_rows(size(steps), error)
     if (allocated(error)) return
@@ -198,7 +201,7 @@ contains
     type(step_table_t), intent(inout) :: table
     !> Row.
     integer, intent(in) :: k
-    !> Validated deck.
+    !> The validated deck (the guide and the loads of each step).
     type(cam_deck_t), intent(in) :: deck
     !> The computed step.
     type(cam_step_t), intent(in) :: s
@@ -229,9 +232,7 @@ contains
       call table%echo_real("F_CAM", deck%f_cam, "")
       call table%echo_real("OMEGA_DIR", deck%omega_dir, "(+1 CCW, -1 CW)")
     end if
-    call table%echo_real("PHI_START", deck%phi_start, "deg")
-    call table%echo_real("DPHI", deck%dphi, "deg")
-    call table%echo_int("N", deck%n, "steps")
+    call echo_steps(table, deck%phi_start, deck%dphi, deck%n)
     if (deck%follower == follower_translating) then
       call table%echo_array("THETA", deck%theta_values(1:max(1, min(deck%n, deck%given(1)))), "deg")
     else
@@ -308,25 +309,22 @@ contains
 
   !> RESULTS: one line per cam angle; a jammed or lost-contact step shows its flag instead
   !> of the forces.
-  pure subroutine write_results(self, table, lang, first, last, out, later)
+  pure subroutine put_results(self, table, page, out, later)
     class(cam_mechanism_t), intent(in) :: self
     type(step_table_t), intent(in) :: table
-    integer, intent(in) :: lang
-    !> Rows of the block to write (the headings come with row 1 of the run's first block).
-    integer, intent(in) :: first, last
-    type(text_buffer_t), intent(inout) :: out
-    type(text_buffer_t), intent(inout) :: later
-    type(table_field_t), allocatable :: fields(:)
+    type(results_page_t), intent(in) :: page
+    type(text_buffer_t), intent(inout) :: out, later
     integer, allocatable :: cols(:)
+    type(table_field_t), allocatable :: fields(:)
     integer :: k, kf2, jam, lost
     allocate (fields(0)) ! defined before the assignment (gcc's -Wuninitialized on the descriptor)
     fields = results_layout()
-    if (first == 1 .and. table%first_block()) call put_layout_heading(out, table, fields, lang, .true.)
+    if (page%heading) call put_layout_heading(out, table, fields, page%lang, .true.)
     cols = layout_columns(table, fields)
     kf2 = table%column_index("KF2")
     jam = table%column_index("JAM")
     lost = table%column_index("LOST")
-    do k = first, last
+    do k = page%first, page%last
       associate (v => table%rows(:, k))
         ! a jammed or lost-contact step: its flag instead of the forces
         if (v(jam) == 0.0_wp .and. v(lost) == 0.0_wp) then
@@ -334,9 +332,9 @@ contains
         else
           call put_fields(out, v, fields, cols, 1, 5)
         end if
-        call put_flags(out, v(kf2), v(jam), v(lost), lang)
+        call put_flags(out, v(kf2), v(jam), v(lost), page%lang)
       end associate
     end do
-  end subroutine write_results
+  end subroutine put_results
 
 end module kinetostat_cam_layout

@@ -8,7 +8,7 @@ module kinetostat_cam_profile_layout
   use kinetostat_error, only: error_t, fatal_error, exit_input, exit_usage
   use kinetostat_text, only: int_str, upper
   use kinetostat_step_table, only: step_table_t, column_t, column, col_input_angle, col_length, col_other, step_span
-  use kinetostat_table_layout, only: heading_of, heading_unit_of, headed => named_column
+  use kinetostat_table_layout, only: results_page_t, heading_of, heading_unit_of, headed => named_column
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_format, only: fixed_field, full_number, short_number, exp_field, pad_left
   use kinetostat_mechanism, only: mechanism_t
@@ -22,35 +22,35 @@ module kinetostat_cam_profile_layout
   private
   public :: cam_profile_mechanism_t, new_cam_profile, cam_profile_size, cam_profile_row
 
+  !> Title lines of the legacy table (English, Russian).
+  character(*), parameter :: title_en = "KINETOSTAT  CAM_PROFILE  DISC CAM FOR A FOLLOWER'S LAW OF MOTION", &
+    title_ru = "KINETOSTAT  CAM_PROFILE  ПРОФИЛИРОВАНИЕ ДИСКОВОГО КУЛАЧКА ПО ЗАКОНУ"// &
+      " ДВИЖЕНИЯ ТОЛКАТЕЛЯ"
+
   !> A disc cam for a follower's law of motion.
   type, extends(mechanism_t) :: cam_profile_mechanism_t
-    !> The validated deck.
+    !> The validated deck: the follower's law of motion and the cam's limits.
     type(cam_profile_deck_t) :: deck
   contains
-    procedure :: read_deck, solve, write_results, analysis_deck, design_sheet
+    procedure :: load_deck, solve, put_results, analysis_deck, design_sheet
   end type cam_profile_mechanism_t
 
 contains
 
-  !> A new cam-profile mechanism (the registry's constructor).
+  !> A new mechanism of this kind (the registry's constructor).
   subroutine new_cam_profile(mech)
     !> The mechanism.
     class(mechanism_t), allocatable, intent(out) :: mech
     allocate (cam_profile_mechanism_t :: mech)
-    mech%force_sheet = .false.
-    mech%sheet_name = "cam"
-    mech%template = cam_profile_template
-    mech%title_en = "KINETOSTAT  CAM_PROFILE  DISC CAM FOR A FOLLOWER'S LAW OF MOTION"
-    mech%title_ru = "KINETOSTAT  CAM_PROFILE  ПРОФИЛИРОВАНИЕ ДИСКОВОГО КУЛАЧКА ПО ЗАКОНУ"// &
-      " ДВИЖЕНИЯ ТОЛКАТЕЛЯ"
+    call mech%describe(cam_profile_template, title_en, title_ru, "cam")
   end subroutine new_cam_profile
 
-  subroutine read_deck(self, source, error)
+  subroutine load_deck(self, source, error)
     class(cam_profile_mechanism_t), intent(inout) :: self
     type(deck_source_t), intent(in) :: source
     type(error_t), allocatable, intent(out) :: error
     call read_cam_profile_deck(source, self%deck, error)
-  end subroutine read_deck
+  end subroutine load_deck
 
   !> The deck's cam, sized (r_prime, r_base set).
   pure subroutine cam_profile_size(deck, design, error)
@@ -233,17 +233,16 @@ contains
   end subroutine echo_deck
 
   !> RESULTS: one line per cam angle.
-  pure subroutine write_results(self, table, lang, first, last, out, later)
+  pure subroutine put_results(self, table, page, out, later)
     class(cam_profile_mechanism_t), intent(in) :: self
     type(step_table_t), intent(in) :: table
-    integer, intent(in) :: lang
-    integer, intent(in) :: first, last
-    type(text_buffer_t), intent(inout) :: out
-    type(text_buffer_t), intent(inout) :: later
-    integer :: k, c, nc
+    type(results_page_t), intent(in) :: page
+    type(text_buffer_t), intent(inout) :: out, later
     character(len=:), allocatable :: line
+    integer :: k, c, nc, lang
     nc = size(table%columns)
-    if (first == 1 .and. table%first_block()) then
+    lang = page%lang
+    if (page%heading) then
       ! the input's unit 5 places in, not right-aligned, as the table always had it
       line = pad_left(heading_of(table%columns(1), lang), 8)
       do c = 2, nc
@@ -256,7 +255,7 @@ contains
       end do
       call out%put(line)
     end if
-    do k = first, last
+    do k = page%first, page%last
       associate (v => table%rows(:, k))
         line = fixed_field(v(1), 8, 2)
         do c = 2, nc
@@ -265,7 +264,7 @@ contains
         call out%put(line)
       end associate
     end do
-  end subroutine write_results
+  end subroutine put_results
 
   !> The matching analysis deck: a `&cam` deck of the follower's forces at the same cam
   !> angles (translating roller: the pressure angle and the direction of motion per step;

@@ -8,7 +8,7 @@ module kinetostat_gear_geometry_layout
   use kinetostat_error, only: error_t, fatal_error, exit_input
   use kinetostat_text, only: int_str, upper
   use kinetostat_step_table, only: step_table_t, column_t, column, col_length, col_ratio, col_other, col_flag
-  use kinetostat_table_layout, only: heading_of, heading_unit_of, column_value, headed => named_column
+  use kinetostat_table_layout, only: results_page_t, heading_of, heading_unit_of, column_value, headed => named_column
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_table_writer, only: put_heading, value_line
   use kinetostat_format, only: full_number, int_field, pad_right, short_number
@@ -28,35 +28,35 @@ module kinetostat_gear_geometry_layout
   !> Number of columns of the row (gear_geometry_columns).
   integer, parameter :: row_size = 31
 
+  !> Title lines of the legacy table (English, Russian).
+  character(*), parameter :: title_en = "KINETOSTAT  GEAR_GEOMETRY  INVOLUTE SPUR GEAR PAIR WITH PROFILE SHIFT", &
+    title_ru = "KINETOSTAT  GEAR_GEOMETRY  ГЕОМЕТРИЧЕСКИЙ РАСЧЕТ ЭВОЛЬВЕНТНОЙ"// &
+      " ЗУБЧАТОЙ ПЕРЕДАЧИ СО СМЕЩЕНИЕМ"
+
   !> An external spur pair of involute gears with profile shift.
   type, extends(mechanism_t) :: gear_geometry_mechanism_t
-    !> The validated deck.
+    !> The validated deck: teeth, module, shifts.
     type(gear_geometry_deck_t) :: deck
   contains
-    procedure :: read_deck, solve, write_results, analysis_deck, design_sheet
+    procedure :: load_deck, solve, put_results, analysis_deck, design_sheet
   end type gear_geometry_mechanism_t
 
 contains
 
-  !> A new gear-geometry mechanism (the registry's constructor).
+  !> A new mechanism of this kind (the registry's constructor).
   subroutine new_gear_geometry(mech)
     !> The mechanism.
     class(mechanism_t), allocatable, intent(out) :: mech
     allocate (gear_geometry_mechanism_t :: mech)
-    mech%force_sheet = .false.
-    mech%sheet_name = "gears"
-    mech%template = gear_geometry_template
-    mech%title_en = "KINETOSTAT  GEAR_GEOMETRY  INVOLUTE SPUR GEAR PAIR WITH PROFILE SHIFT"
-    mech%title_ru = "KINETOSTAT  GEAR_GEOMETRY  ГЕОМЕТРИЧЕСКИЙ РАСЧЕТ ЭВОЛЬВЕНТНОЙ"// &
-      " ЗУБЧАТОЙ ПЕРЕДАЧИ СО СМЕЩЕНИЕМ"
+    call mech%describe(gear_geometry_template, title_en, title_ru, "gears")
   end subroutine new_gear_geometry
 
-  subroutine read_deck(self, source, error)
+  subroutine load_deck(self, source, error)
     class(gear_geometry_mechanism_t), intent(inout) :: self
     type(deck_source_t), intent(in) :: source
     type(error_t), allocatable, intent(out) :: error
     call read_gear_geometry_deck(source, self%deck, error)
-  end subroutine read_deck
+  end subroutine load_deck
 
   !> The shifts of a validated deck (given, chosen, or split from a_w) and the geometry.
   pure subroutine gear_geometry_solve(deck, g, error)
@@ -240,15 +240,15 @@ contains
   end subroutine echo_deck
 
   !> RESULTS: the named values of the pair, the flags in words.
-  pure subroutine write_results(self, table, lang, first, last, out, later)
+  pure subroutine put_results(self, table, page, out, later)
     class(gear_geometry_mechanism_t), intent(in) :: self
     type(step_table_t), intent(in) :: table
-    integer, intent(in) :: lang
-    integer, intent(in) :: first, last
-    type(text_buffer_t), intent(inout) :: out
-    type(text_buffer_t), intent(inout) :: later
-    integer :: c
-    if (first > 1 .or. last < 1) return
+    type(results_page_t), intent(in) :: page
+    type(text_buffer_t), intent(inout) :: out, later
+    integer :: c, lang
+    ! one row: the run's only block
+    if (page%first > 1 .or. page%last < 1) return
+    lang = page%lang
     ! the values, then under their heading the blocking contour's flags in words
     do c = 1, size(table%columns)
       associate (col => table%columns(c))
@@ -266,7 +266,7 @@ contains
         end if
       end associate
     end do
-  end subroutine write_results
+  end subroutine put_results
 
   !> Heading of the conditions block.
   pure function heading(lang) result(text)

@@ -9,7 +9,7 @@ module kinetostat_gears_layout
   use kinetostat_vec2, only: magnitude, angle_360_deg, snap_noise
   use kinetostat_step_table, only: step_table_t, column_t, column, col_count, col_length, col_ratio, col_moment, &
     col_component, col_force, col_force_angle
-  use kinetostat_table_layout, only: forces_and_angles, heading_of, heading_unit_of, column_value
+  use kinetostat_table_layout, only: results_page_t, forces_and_angles, heading_of, heading_unit_of, column_value
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_table_writer, only: put_heading, value_line
   use kinetostat_format, only: fixed_field
@@ -32,33 +32,35 @@ module kinetostat_gears_layout
   !> Width and decimals of a force angle in the RESULTS block (F11.4).
   integer, parameter :: angle_width = 11, angle_decimals = 4
 
+  !> Title lines of the legacy table (English, Russian).
+  character(*), parameter :: title_en = "KINETOSTAT  GEARS  FORCES IN GEAR MESHES (MANUAL SECTION 6, FRICTION-FREE)", &
+    title_ru = "KINETOSTAT  GEARS  СИЛЫ В ЗАЦЕПЛЕНИЯХ ЗУБЧАТЫХ" // &
+      " КОЛЕС (РАЗДЕЛ 6, БЕЗ УЧЕТА ТРЕНИЯ)"
+
   !> Gear meshes: spur, helical, bevel, planetary stages, manual section 6.
   type, extends(mechanism_t) :: gears_mechanism_t
-    !> The validated deck.
+    !> The validated deck: the stages and their torques.
     type(gears_deck_t) :: deck
   contains
-    procedure :: read_deck, solve, write_results
+    procedure :: load_deck, solve, put_results
   end type gears_mechanism_t
 
 contains
 
-  !> A new gears mechanism (the registry's constructor).
+  !> A new mechanism of this kind (the registry's constructor).
   subroutine new_gears(mech)
     !> The mechanism.
     class(mechanism_t), allocatable, intent(out) :: mech
     allocate (gears_mechanism_t :: mech)
-    mech%template = gears_template
-    mech%title_en = "KINETOSTAT  GEARS  FORCES IN GEAR MESHES (MANUAL SECTION 6, FRICTION-FREE)"
-    mech%title_ru = "KINETOSTAT  GEARS  СИЛЫ В ЗАЦЕПЛЕНИЯХ ЗУБЧАТЫХ" // &
-      " КОЛЕС (РАЗДЕЛ 6, БЕЗ УЧЕТА ТРЕНИЯ)"
+    call mech%describe(gears_template, title_en, title_ru, "")
   end subroutine new_gears
 
-  subroutine read_deck(self, source, error)
+  subroutine load_deck(self, source, error)
     class(gears_mechanism_t), intent(inout) :: self
     type(deck_source_t), intent(in) :: source
     type(error_t), allocatable, intent(out) :: error
     call read_gears_deck(source, self%deck, error)
-  end subroutine read_deck
+  end subroutine load_deck
 
   !> All stages of a validated deck.
   pure subroutine gears_solve(deck, res)
@@ -81,7 +83,7 @@ contains
     end if
   end subroutine gears_solve
 
-  !> Every stage into the step table, with the INPUT DATA echo and the self-check.
+  !> A row of the step table per gear stage, the self-check of each and the INPUT DATA echo.
   subroutine solve(self, table, error)
     class(gears_mechanism_t), intent(in) :: self
     type(step_table_t), intent(inout) :: table
@@ -241,16 +243,14 @@ contains
   end function vector_line
 
   !> RESULTS: a block per stage (the mesh's named values, force vectors, torques).
-  pure subroutine write_results(self, table, lang, first, last, out, later)
+  pure subroutine put_results(self, table, page, out, later)
     class(gears_mechanism_t), intent(in) :: self
     type(step_table_t), intent(in) :: table
-    integer, intent(in) :: lang
-    !> Rows of the block to write (the headings come with row 1 of the run's first block).
-    integer, intent(in) :: first, last
-    type(text_buffer_t), intent(inout) :: out
-    type(text_buffer_t), intent(inout) :: later
-    integer :: i, kind, c
-    do i = first, last
+    type(results_page_t), intent(in) :: page
+    type(text_buffer_t), intent(inout) :: out, later
+    integer :: i, kind, c, lang
+    lang = page%lang
+    do i = page%first, page%last
       associate (v => table%rows(:, i))
         kind = nint(column_value(table, "kind", i))
         call put_heading(out, echo_name(stage_heading(i, kind), lang))
@@ -287,7 +287,7 @@ contains
       character(len=:), allocatable :: line
       line = vector_line(name, column_value(table, name, i), column_value(table, name//"G", i), lang)
     end function force_line
-  end subroutine write_results
+  end subroutine put_results
 
 
 end module kinetostat_gears_layout

@@ -13,7 +13,7 @@ module kinetostat_linkage_layout
   use kinetostat_step_table, only: step_table_t, column_t, column, col_input_angle, col_component, col_moment, &
     col_length, col_other, lack_block_memory
   use kinetostat_table_layout, only: table_field_t, field, blank_field, force_and_angle, &
-    put_layout_heading, put_layout_rows
+    results_page_t, put_layout_block, link_axes_heading
   use kinetostat_labels, only: lang_ru, lang_en
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_friction_block, only: write_friction_block
@@ -47,12 +47,6 @@ module kinetostat_linkage_layout
   integer, parameter :: friction_first_width = 10
   !> Width of every other field.
   integer, parameter :: field_width = 12
-  !> Heading of RESULTS with --frame link.
-  character(*), parameter :: link_axes_heading = "REACTIONS IN THE AXES OF THE LINK EACH ACTS ON "// &
-    "(LINE 1 ALONG ITS X AXIS, LINE 2 ACROSS), N"
-  !> The same in Russian.
-  character(*), parameter :: link_axes_heading_ru = "РЕАКЦИИ В ОСЯХ ЗВЕНА, НА КОТОРОЕ ОНИ "// &
-    "ДЕЙСТВУЮТ (СТРОКА 1 ВДОЛЬ ОСИ X ЗВЕНА, СТРОКА 2 ПОПЕРЕК), Н"
   !> A gap of the Lagrange and the group method's reactions above this (relative) is a warning.
   real(wp), parameter :: gap_tolerance = 1.0e-9_wp
 
@@ -71,40 +65,50 @@ module kinetostat_linkage_layout
     type(linkage_friction_t) :: fr
   end type linkage_stepper_t
 
+  !> Title lines of the legacy table (English, Russian).
+  character(*), parameter :: title_en = "KINETOSTAT  LINKAGE  FORCE ANALYSIS OF A PLANAR LINKAGE OF LOWER PAIRS", &
+    title_ru = "KINETOSTAT  LINKAGE  СИЛОВОЙ РАСЧЕТ ПЛОСКОГО "// &
+      "МЕХАНИЗМА С НИЗШИМИ ПАРАМИ"
+
   !> A planar linkage of lower pairs with any number of drives.
   type, extends(mechanism_t) :: linkage_mechanism_t
-    !> The validated deck.
+    !> The validated deck: links, pairs, drives, loads.
     type(linkage_deck_t) :: deck
     !> The deck as the source of the reduced quantities (a steady cycle).
     type(linkage_source_t) :: source
     !> The steady cycle (dynamics = 'steady' or 'given').
     type(cycle_t) :: cycle
   contains
-    procedure :: read_deck, solve, write_results, sketch, force_plan, mass_model, finish_run
+    procedure :: load_deck, prepare, solve, put_results, sketch, force_plan, mass_model, finish_run
   end type linkage_mechanism_t
 
 contains
 
-  !> A new linkage mechanism (the registry's constructor).
+  !> A new mechanism of this kind (the registry's constructor).
   subroutine new_linkage(mech)
     !> The mechanism.
     class(mechanism_t), allocatable, intent(out) :: mech
     allocate (linkage_mechanism_t :: mech)
-    mech%template = linkage_template
-    mech%title_en = "KINETOSTAT  LINKAGE  FORCE ANALYSIS OF A PLANAR LINKAGE OF LOWER PAIRS"
-    mech%title_ru = "KINETOSTAT  LINKAGE  СИЛОВОЙ РАСЧЕТ ПЛОСКОГО "// &
-      "МЕХАНИЗМА С НИЗШИМИ ПАРАМИ"
+    call mech%describe(linkage_template, title_en, title_ru, "")
   end subroutine new_linkage
 
-  subroutine read_deck(self, source, error)
+  subroutine load_deck(self, source, error)
     class(linkage_mechanism_t), intent(inout) :: self
     type(deck_source_t), intent(in) :: source
     type(error_t), allocatable, intent(out) :: error
+    call read_linkage_deck(source, self%deck, error)
+  end subroutine load_deck
+
+  !> The reduced quantities and the steady cycle of a deck with dynamics = 'steady' or
+  !> 'given'.
+  subroutine prepare(self, path, error)
+    class(linkage_mechanism_t), intent(inout) :: self
+    character(*), intent(in) :: path
+    type(error_t), allocatable, intent(out) :: error
     real(wp) :: phi0, j_crank
     character(len=:), allocatable :: where
-    call read_linkage_deck(source, self%deck, error)
-    if (allocated(error) .or. self%deck%dyn%mode < dynamics_steady) return
-    where = source%path//": &linkage"
+    if (self%deck%dyn%mode < dynamics_steady) return
+    where = path//": &linkage"
     phi0 = self%deck%start(1) * deg_to_rad
     call linkage_source_setup(self%deck, phi0, 2.0_wp * pi * (self%deck%dyn%cycle_deg / 360.0_wp), where, &
                               self%source, error)
@@ -118,7 +122,7 @@ contains
     end associate
     call deck_cycle(self%source, self%deck%dyn, phi0, linkage_load_breaks(self%deck), self%deck%omega(1), where, &
                     self%cycle, error, j_links_constant=j_crank)
-  end subroutine read_deck
+  end subroutine prepare
 
   !> `kinetostat structure DECK`: the structural analysis of a `&linkage` deck as text.
   subroutine linkage_structure_text(source, lang, out, error)
@@ -222,6 +226,7 @@ contains
   pure subroutine force_plan(self, table, k, drawing, error)
     class(linkage_mechanism_t), intent(in) :: self
     type(step_table_t), intent(in) :: table
+    !> Row drawn: its link angles turn the loads that follow their links.
     integer, intent(in) :: k
     type(drawing_t), intent(inout) :: drawing
     type(error_t), allocatable, intent(out) :: error
@@ -941,33 +946,19 @@ contains
 
   !> The RESULTS block: per step a line of the inputs, the pairs' magnitudes and the efforts,
   !> a line of the pairs' angles.
-  pure subroutine write_results(self, table, lang, first, last, out, later)
+  pure subroutine put_results(self, table, page, out, later)
     class(linkage_mechanism_t), intent(in) :: self
     type(step_table_t), intent(in) :: table
-    integer, intent(in) :: lang
-    integer, intent(in) :: first, last
-    type(text_buffer_t), intent(inout) :: out
-    type(text_buffer_t), intent(inout) :: later
-    type(table_field_t), allocatable :: fields(:)
+    type(results_page_t), intent(in) :: page
+    type(text_buffer_t), intent(inout) :: out, later
     character(len=:), allocatable :: input, effort
-    allocate (fields(0)) ! defined before the assignment (gcc's -Wuninitialized on the descriptor)
-    fields = results_layout(self%deck%mech, table%link_frame)
-    if (first == 1 .and. table%first_block()) then
-      if (table%link_frame) then
-        if (lang == lang_ru) then
-          call out%put(" "//link_axes_heading_ru)
-        else
-          call out%put(" "//link_axes_heading)
-        end if
-      end if
-      call put_layout_heading(out, table, fields, lang, .true.)
-    end if
-    call put_layout_rows(out, table, fields, first, last)
+    call put_layout_block(out, table, page, results_layout(self%deck%mech, table%link_frame), .true., &
+      above=link_axes_heading(table, page%lang, crank_axes=.false.))
     if (self%deck%friction_on) then
       call drive_names(self%deck%mech, 1, input, effort)
       ! the input's unit is not shown under it
-      call write_friction_block(table, effort, friction_first_width, .false., lang, later)
+      call write_friction_block(table, effort, friction_first_width, .false., page%lang, later)
     end if
-  end subroutine write_results
+  end subroutine put_results
 
 end module kinetostat_linkage_layout

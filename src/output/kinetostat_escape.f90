@@ -32,7 +32,7 @@ contains
   !> return and tab as \n, \r, \t, any other control character and any byte that is not part
   !> of valid UTF-8 as \xNN (the byte as its Latin-1 character); valid UTF-8 kept.
   pure function python_string(s) result(text)
-    !> Any bytes.
+    !> A field's name: any bytes.
     character(*), intent(in) :: s
     character(len=:), allocatable :: text
     text = quoted_literal(s, "'", "\x")

@@ -163,7 +163,7 @@ contains
 
   !> A whole number without blanks (flags and counts); full_number when beyond 1e15.
   pure function whole_number(x) result(text)
-    !> Finite value.
+    !> Finite value, a whole number below 1e15 as a rule.
     real(wp), intent(in) :: x
     character(len=:), allocatable :: text
     text = cell_number(x, .true.)
@@ -257,10 +257,8 @@ contains
     type(text_buffer_t), intent(inout) :: out
     !> Finite value.
     real(wp), intent(in) :: x
-    !> Field width, characters (>= 9).
-    integer, intent(in) :: width
-    !> Decimals of the fixed-point form.
-    integer, intent(in) :: decimals
+    !> Field width (>= 9) and decimals, as fixed_field's.
+    integer, intent(in) :: width, decimals
     call out%reserve(width)
     call fixed_text(x, decimals, out%data(out%length + 1:out%length + width))
     out%length = out%length + width
@@ -276,7 +274,7 @@ contains
 
   !> One value of an echoed array (14 characters).
   pure function echo_array_number(x) result(text)
-    !> Finite value.
+    !> Finite value of the array.
     real(wp), intent(in) :: x
     character(len=14) :: text
     call es_text(x, 6, 5, text)
@@ -284,7 +282,7 @@ contains
 
   !> A self-check figure in the footer (10 characters).
   pure function footer_number(x) result(text)
-    !> Finite value.
+    !> Finite self-check figure.
     real(wp), intent(in) :: x
     character(len=10) :: text
     call es_text(x, 2, 1, text)
@@ -292,7 +290,7 @@ contains
 
   !> A self-check limit in the footer heading, without blanks (ES8.1, e.g. 1.0E-09).
   pure function limit_number(x) result(text)
-    !> Finite value.
+    !> Finite limit, positive as a rule.
     real(wp), intent(in) :: x
     character(len=:), allocatable :: text
     text = trimmed_es(x, 1)

@@ -392,7 +392,7 @@ contains
   !> names ("FORCE 2 LINK", "STAGE 1: SPUR", "DYAD 1: RRR LINKS 2-3, ON LINKS 1 AND 0, MODE 1")
   !> translated; a deck variable's name ("PHI_START", "N") stays as it is.
   pure function echo_name(english, lang) result(text)
-    !> The English name.
+    !> The English name, as the deck or the layout spells it.
     character(*), intent(in) :: english
     !> lang_en or lang_ru.
     integer, intent(in) :: lang

@@ -7,14 +7,14 @@ module kinetostat_table_layout
   use kinetostat_kinds, only: wp
   use kinetostat_step_table, only: step_table_t, column_t, column, col_force, col_force_angle
   use kinetostat_format, only: put_fixed, exp_field, fixed_field, int_field, pad_left, pad_right
-  use kinetostat_labels, only: lang_ru
+  use kinetostat_labels, only: lang_en, lang_ru
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_text, only: upper
   implicit none
   private
   public :: table_field_t, field, blank_field, layout_columns, put_layout_heading, put_layout_step, put_layout_rows, heading_of, &
     heading_unit_of, force_and_angle, forces_and_angles, put_fields, &
-    column_value, named_column, magnitudes_over_angles
+    column_value, named_column, magnitudes_over_angles, results_page_t, put_layout_block, link_axes_heading, echo_reals, echo_steps
 
   !> One field of a step's lines in the legacy table.
   type :: table_field_t
@@ -40,6 +40,31 @@ module kinetostat_table_layout
     !> line is narrower there keeps it, byte for byte.
     integer :: unit_width = 0
   end type table_field_t
+
+  !> What a mechanism's RESULTS layout is asked for: one part of a block of the run's rows,
+  !> in a language, with or without the headings (the table writer may ask for several parts
+  !> of a block at once).
+  type :: results_page_t
+    !> lang_en or lang_ru.
+    integer :: lang = lang_en
+    !> First row of the block to write.
+    integer :: first = 1
+    !> Last row of the block to write (before `first`: none).
+    integer :: last = 0
+    !> Whether the headings come with these rows (row 1 of the run's first block).
+    logical :: heading = .false.
+  end type results_page_t
+
+  !> The heading line above a table of reactions in the axes of the links (--frame link),
+  !> English and Russian.
+  character(*), parameter :: link_axes_text(2) = [character(len=200) :: &
+    "REACTIONS IN THE AXES OF THE LINK EACH ACTS ON (LINE 1 ALONG ITS X AXIS, LINE 2 ACROSS), N", &
+    "РЕАКЦИИ В ОСЯХ ЗВЕНА, НА КОТОРОЕ ОНИ ДЕЙСТВУЮТ "// &
+    "(СТРОКА 1 ВДОЛЬ ОСИ X ЗВЕНА, СТРОКА 2 ПОПЕРЕК), Н"]
+  !> What the &assur table adds to it: the crank pin's axes, English and Russian.
+  character(*), parameter :: crank_axes_text(2) = [character(len=100) :: &
+    "; CRANK PIN IN CRANK AXES (X ALONG PHI1)", &
+    "; ШАРНИР КРИВОШИПА В ОСЯХ КРИВОШИПА (X ВДОЛЬ PHI1)"]
 
 contains
 
@@ -258,6 +283,81 @@ contains
       end do
     end do
   end subroutine put_layout_heading
+
+  !> A RESULTS block of fields: when the page has the headings, the line `above` (unless
+  !> empty), the heading lines (put_layout_heading) and the line `below`; then the page's rows.
+  pure subroutine put_layout_block(out, table, page, fields, units, unit_shift, unit_lines, above, below)
+    type(text_buffer_t), intent(inout) :: out
+    type(step_table_t), intent(in) :: table
+    !> The rows to write, the language, whether the headings come.
+    type(results_page_t), intent(in) :: page
+    type(table_field_t), intent(in) :: fields(:)
+    !> Whether the unit lines follow the heading lines.
+    logical, intent(in) :: units
+    !> As put_layout_heading's.
+    integer, intent(in), optional :: unit_shift(:), unit_lines
+    !> A line above the headings ("": none) and one below them.
+    character(*), intent(in), optional :: above, below
+    if (page%heading) then
+      if (present(above)) then
+        if (len(above) > 0) call out%put(above)
+      end if
+      call put_layout_heading(out, table, fields, page%lang, units, unit_shift, unit_lines)
+      if (present(below)) call out%put(below)
+    end if
+    call put_layout_rows(out, table, fields, page%first, page%last)
+  end subroutine put_layout_block
+
+  !> The line above a table whose reactions are in the axes of the links, a blank first ("" when the table
+  !> is in the frame's axes); with `crank_axes`, the crank pin's axes named too.
+  pure function link_axes_heading(table, lang, crank_axes) result(text)
+    type(step_table_t), intent(in) :: table
+    !> lang_en or lang_ru.
+    integer, intent(in) :: lang
+    !> Whether the crank pin's reactions are in the crank's axes (the &assur table).
+    logical, intent(in) :: crank_axes
+    character(len=:), allocatable :: text
+    integer :: l
+    text = ""
+    if (.not. table%link_frame) return
+    l = merge(2, 1, lang == lang_ru)
+    text = " "//trim(link_axes_text(l))
+    if (crank_axes) text = text//trim(crank_axes_text(l))
+  end function link_axes_heading
+
+  !> INPUT DATA records of real deck values, one a name, in order, all in one unit: an echo
+  !> as a list of names and values rather than a call per value.
+  pure subroutine echo_reals(table, names, values, unit)
+    type(step_table_t), intent(inout) :: table
+    !> The values' names, as the deck spells them (trailing blanks go).
+    character(*), intent(in) :: names(:)
+    !> The values, in the order of `names`.
+    real(wp), intent(in) :: values(:)
+    !> Their unit.
+    character(*), intent(in) :: unit
+    integer :: i
+    do i = 1, size(names)
+      call table%echo_real(trim(names(i)), values(i), unit)
+    end do
+  end subroutine echo_reals
+
+  !> The INPUT DATA records of a run of equal input steps: PHI_START, DPHI and N.
+  pure subroutine echo_steps(table, phi_start, dphi, n, start_unit)
+    type(step_table_t), intent(inout) :: table
+    !> The first input angle and the step, deg.
+    real(wp), intent(in) :: phi_start, dphi
+    !> Number of steps.
+    integer, intent(in) :: n
+    !> The unit shown with PHI_START (default "deg").
+    character(*), intent(in), optional :: start_unit
+    if (present(start_unit)) then
+      call table%echo_real("PHI_START", phi_start, start_unit)
+    else
+      call table%echo_real("PHI_START", phi_start, "deg")
+    end if
+    call table%echo_real("DPHI", dphi, "deg")
+    call table%echo_int("N", n, "steps")
+  end subroutine echo_steps
 
   !> The lines of rows `first` .. `last` of the table (put_layout_step of each).
   pure subroutine put_layout_rows(out, table, fields, first, last)

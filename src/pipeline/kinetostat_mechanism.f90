@@ -8,6 +8,7 @@ module kinetostat_mechanism
   use kinetostat_step_table, only: step_table_t
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_labels, only: lang_ru
+  use kinetostat_table_layout, only: results_page_t
   use kinetostat_sketch, only: sketch_t
   use kinetostat_drawing, only: drawing_t
   use kinetostat_bodies, only: mass_model_t
@@ -31,8 +32,16 @@ module kinetostat_mechanism
     !> command writing every sheet of a deck gives it); "" for a kind without one.
     character(len=:), allocatable :: sheet_name
   contains
-    !> Read and validate the deck.
-    procedure(read_deck_i), deferred :: read_deck
+    !> The kind's titles, template deck and design sheet, set once by its constructor.
+    procedure :: describe
+    !> Read and validate the deck (load_deck), then derive what the kind needs from it
+    !> (prepare).
+    procedure :: read_deck
+    !> Read and validate the kind's deck into the mechanism.
+    procedure(read_deck_i), deferred :: load_deck
+    !> What the kind derives from its validated deck once, before any step (a steady cycle,
+    !> the tables of the reduced quantities); by default nothing.
+    procedure :: prepare
     !> Compute the block's steps and fill its rows of the step table (the first block also
     !> the columns and the echo); what the run reduces over its rows goes to
     !> table%block_tally (self-check maxima, drive deviation, peaks, integrals, flags).
@@ -42,8 +51,10 @@ module kinetostat_mechanism
     procedure :: finish_run
     !> Title line of the legacy table in a language.
     procedure :: title
+    !> The RESULTS block of the legacy table for rows first..last of a block (put_results).
+    procedure :: write_results
     !> The RESULTS block of the legacy table: header lines and the rows as the original laid them out.
-    procedure(results_i), deferred :: write_results
+    procedure(results_i), deferred :: put_results
     !> The commented template deck.
     procedure :: write_template
     !> The topology for a drawing (links and their points, pivots, guides, gravity) after
@@ -85,26 +96,73 @@ module kinetostat_mechanism
       type(error_t), allocatable, intent(out) :: error
     end subroutine solve_i
 
-    pure subroutine results_i(self, table, lang, first, last, out, later)
-      import :: mechanism_t, step_table_t, text_buffer_t
+    pure subroutine results_i(self, table, page, out, later)
+      import :: mechanism_t, step_table_t, results_page_t, text_buffer_t
       implicit none
       class(mechanism_t), intent(in) :: self
       !> Finite results: the rows of one block of the run (headings only with the first).
       type(step_table_t), intent(in) :: table
-      !> lang_en or lang_ru.
-      integer, intent(in) :: lang
-      !> Rows of the block to write, first .. last (the headings come with row 1 of the
-      !> run's first block; the table writer may call it for parts of the block at once).
-      integer, intent(in) :: first, last
-      !> Where the lines of the RESULTS section go.
-      type(text_buffer_t), intent(inout) :: out
-      !> Where a second section over the same rows goes (printed after the last row of the
-      !> first; most layouts have none).
-      type(text_buffer_t), intent(inout) :: later
+      !> The rows of the block to write, the language and whether the headings come.
+      type(results_page_t), intent(in) :: page
+      !> Where the lines of the RESULTS section go, and where a second section over the same
+      !> rows goes (printed after the last row of the first; most layouts have none).
+      type(text_buffer_t), intent(inout) :: out, later
     end subroutine results_i
   end interface
 
 contains
+
+  !> The kind's titles, template deck and design sheet (its constructor's one call).
+  pure subroutine describe(self, template, title_en, title_ru, sheet_name)
+    class(mechanism_t), intent(inout) :: self
+    !> The commented template deck, as lines.
+    character(*), intent(in) :: template(:)
+    !> Title line of the legacy table, English and Russian.
+    character(*), intent(in) :: title_en, title_ru
+    !> The design sheet's stem ("": a kind whose sheet shows the forces over a cycle).
+    character(*), intent(in) :: sheet_name
+    self%template = template
+    self%title_en = title_en
+    self%title_ru = title_ru
+    self%force_sheet = len(sheet_name) == 0
+    if (len(sheet_name) > 0) self%sheet_name = sheet_name
+  end subroutine describe
+
+  !> Read and validate the deck, then what the kind derives from it.
+  subroutine read_deck(self, source, error)
+    class(mechanism_t), intent(inout) :: self
+    !> The deck, read into memory.
+    type(deck_source_t), intent(in) :: source
+    !> Input error naming deck, group, variable and reason (or a later stage's error).
+    type(error_t), allocatable, intent(out) :: error
+    call self%load_deck(source, error)
+    if (allocated(error)) return
+    call self%prepare(source%path, error)
+  end subroutine read_deck
+
+  !> What the kind derives from its deck before any step: by default nothing.
+  subroutine prepare(self, path, error)
+    class(mechanism_t), intent(inout) :: self
+    !> The deck's file, for messages.
+    character(*), intent(in) :: path
+    !> An error of the derivation (exit code as the kind documents).
+    type(error_t), allocatable, intent(out) :: error
+  end subroutine prepare
+
+  !> The RESULTS lines of rows `first` .. `last` of a block (the headings with row 1 of the
+  !> run's first block): the kind's put_results.
+  pure subroutine write_results(self, table, lang, first, last, out, later)
+    class(mechanism_t), intent(in) :: self
+    !> Finite results: the rows of one block of the run.
+    type(step_table_t), intent(in) :: table
+    !> lang_en or lang_ru.
+    integer, intent(in) :: lang
+    !> Rows of the block to write (the table writer may call it for parts of the block at once).
+    integer, intent(in) :: first, last
+    !> Where the RESULTS lines go, and a second section over the same rows.
+    type(text_buffer_t), intent(inout) :: out, later
+    call self%put_results(table, results_page_t(lang, first, last, first == 1 .and. table%first_block()), out, later)
+  end subroutine write_results
 
   !> Title line of the legacy table in language `lang` (lang_en, lang_ru).
   pure function title(self, lang) result(text)

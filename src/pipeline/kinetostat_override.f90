@@ -285,9 +285,10 @@ contains
     integer :: n, k
     n = size(overrides)
     allocate (grown(n + 1))
+    ! moved, not copied
     do k = 1, n
-      grown(k)%name = overrides(k)%name
-      grown(k)%value = overrides(k)%value
+      call move_alloc(overrides(k)%name, grown(k)%name)
+      call move_alloc(overrides(k)%value, grown(k)%value)
     end do
     grown(n + 1)%name = name
     grown(n + 1)%value = value

@@ -7,7 +7,7 @@ module kinetostat_planetary_synthesis_layout
   use kinetostat_error, only: error_t, fatal_error, exit_input
   use kinetostat_text, only: int_str
   use kinetostat_step_table, only: step_table_t, column_t, column, col_count, col_ratio
-  use kinetostat_table_layout, only: heading_of, column_value
+  use kinetostat_table_layout, only: results_page_t, heading_of, column_value
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_table_writer, only: put_heading, value_line
   use kinetostat_format, only: full_number, int_field, pad_right, short_number
@@ -22,35 +22,35 @@ module kinetostat_planetary_synthesis_layout
   private
   public :: planetary_synthesis_mechanism_t, new_planetary_synthesis, planetary_columns
 
+  !> Title lines of the legacy table (English, Russian).
+  character(*), parameter :: title_en = "KINETOSTAT  PLANETARY_SYNTHESIS  TOOTH NUMBERS OF A SINGLE-ROW PLANETARY TRAIN", &
+    title_ru = "KINETOSTAT  PLANETARY_SYNTHESIS  ПОДБОР ЧИСЕЛ ЗУБЬЕВ ОДНОРЯДНОГО"// &
+      " ПЛАНЕТАРНОГО МЕХАНИЗМА"
+
   !> Tooth numbers of a single-row planetary train.
   type, extends(mechanism_t) :: planetary_synthesis_mechanism_t
-    !> The validated deck.
+    !> The validated deck: the ratio wanted and the limits of the train.
     type(planetary_synthesis_deck_t) :: deck
   contains
-    procedure :: read_deck, solve, write_results, analysis_deck, design_sheet
+    procedure :: load_deck, solve, put_results, analysis_deck, design_sheet
   end type planetary_synthesis_mechanism_t
 
 contains
 
-  !> A new planetary-synthesis mechanism (the registry's constructor).
+  !> A new mechanism of this kind (the registry's constructor).
   subroutine new_planetary_synthesis(mech)
     !> The mechanism.
     class(mechanism_t), allocatable, intent(out) :: mech
     allocate (planetary_synthesis_mechanism_t :: mech)
-    mech%force_sheet = .false.
-    mech%sheet_name = "planetary"
-    mech%template = planetary_synthesis_template
-    mech%title_en = "KINETOSTAT  PLANETARY_SYNTHESIS  TOOTH NUMBERS OF A SINGLE-ROW PLANETARY TRAIN"
-    mech%title_ru = "KINETOSTAT  PLANETARY_SYNTHESIS  ПОДБОР ЧИСЕЛ ЗУБЬЕВ ОДНОРЯДНОГО"// &
-      " ПЛАНЕТАРНОГО МЕХАНИЗМА"
+    call mech%describe(planetary_synthesis_template, title_en, title_ru, "planetary")
   end subroutine new_planetary_synthesis
 
-  subroutine read_deck(self, source, error)
+  subroutine load_deck(self, source, error)
     class(planetary_synthesis_mechanism_t), intent(inout) :: self
     type(deck_source_t), intent(in) :: source
     type(error_t), allocatable, intent(out) :: error
     call read_planetary_synthesis_deck(source, self%deck, error)
-  end subroutine read_deck
+  end subroutine load_deck
 
   !> The search into one row, with the INPUT DATA echo.
   subroutine solve(self, table, error)
@@ -90,13 +90,11 @@ contains
   end function planetary_columns
 
   !> RESULTS: the tooth numbers and the ratio, then every condition with its numbers.
-  pure subroutine write_results(self, table, lang, first, last, out, later)
+  pure subroutine put_results(self, table, page, out, later)
     class(planetary_synthesis_mechanism_t), intent(in) :: self
     type(step_table_t), intent(in) :: table
-    integer, intent(in) :: lang
-    integer, intent(in) :: first, last
-    type(text_buffer_t), intent(inout) :: out
-    type(text_buffer_t), intent(inout) :: later
+    type(results_page_t), intent(in) :: page
+    type(text_buffer_t), intent(inout) :: out, later
     !> The conditions' names in English (column 1) and Russian (column 2).
     character(*), parameter :: names(5, 2) = reshape([character(len=20) :: &
       "COAXIALITY", "ASSEMBLY", "NEIGHBOURS", "LEAST TEETH", "RATIO", &
@@ -104,7 +102,9 @@ contains
     type(planetary_train_t) :: t
     integer :: z1, z2, z3, k, l, c
     character(len=:), allocatable :: met, whole
-    if (first > 1 .or. last < 1) return
+    integer :: lang
+    if (page%first > 1 .or. page%last < 1) return
+    lang = page%lang
     z1 = nint(column_value(table, "z1", 1))
     z2 = nint(column_value(table, "z2", 1))
     z3 = nint(column_value(table, "z3", 1))
@@ -160,7 +160,7 @@ contains
       text = "|1 + Z3/Z1 - U| = "//short_number(abs(t%u_actual - self%deck%spec%u))//" <= U_TOLERANCE*U = "// &
         short_number(self%deck%spec%u_tolerance * self%deck%spec%u)
     end function ratio_text
-  end subroutine write_results
+  end subroutine put_results
 
   !> "   NAME           formula   MET" (NOT MET never occurs in an answer, but is said).
   pure function condition(name, formula, ok, met) result(line)

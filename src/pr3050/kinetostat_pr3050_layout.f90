@@ -10,8 +10,8 @@ module kinetostat_pr3050_layout
   use kinetostat_noise, only: noise_rel, noise_floor, force_columns, angles_0_360
   use kinetostat_step_table, only: step_table_t, column_t, column, col_input_angle, col_component, step_span, &
     col_moment, col_length, col_other, lack_block_memory
-  use kinetostat_table_layout, only: table_field_t, field, forces_and_angles, put_layout_heading, &
-    put_layout_rows
+  use kinetostat_table_layout, only: table_field_t, field, forces_and_angles, results_page_t, &
+    put_layout_block, echo_reals
   use kinetostat_labels, only: lang_ru
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_table_writer, only: put_heading
@@ -49,33 +49,36 @@ module kinetostat_pr3050_layout
   !> Heading of the block with the prismatic pair 1-2 and the cylinder's motion.
   character(*), parameter :: pair_heading = &
     "PRISMATIC PAIR 1-2 (ON ROD 2 FROM CYLINDER 1: N21 ALONG E2+90 DEG AT B, M21 CCW) AND CYLINDER"
+  !> Title lines of the legacy table (English, Russian).
+  character(*), parameter :: title_en = "KINETOSTAT  PR 3050  FORCE ANALYSIS OF THE FOUR-BAR "// &
+    "WITH AN OSCILLATING HYDRAULIC CYLINDER", &
+    title_ru = "KINETOSTAT  PR 3050  СИЛОВОЙ РАСЧЕТ ЧЕТЫРЕХЗВЕННОГО" // &
+      " МЕХАНИЗМА С КАЧАЮЩИМСЯ ГИДРОЦИЛИНДРОМ"
+
   !> PR 3050: four-bar with an oscillating hydraulic cylinder, manual section 4.
   type, extends(mechanism_t) :: pr3050_mechanism_t
-    !> The validated deck.
+    !> The validated deck (PR 3050 card images).
     type(pr3050_deck_t) :: deck
   contains
-    procedure :: read_deck, solve, write_results, sketch, force_plan, mass_model
+    procedure :: load_deck, solve, put_results, sketch, force_plan, mass_model
   end type pr3050_mechanism_t
 
 contains
 
-  !> A new PR 3050 mechanism (the registry's constructor).
+  !> A new mechanism of this kind (the registry's constructor).
   subroutine new_pr3050(mech)
     !> The mechanism.
     class(mechanism_t), allocatable, intent(out) :: mech
     allocate (pr3050_mechanism_t :: mech)
-    mech%template = pr3050_template
-    mech%title_en = "KINETOSTAT  PR 3050  FORCE ANALYSIS OF THE FOUR-BAR WITH AN OSCILLATING HYDRAULIC CYLINDER"
-    mech%title_ru = "KINETOSTAT  PR 3050  СИЛОВОЙ РАСЧЕТ ЧЕТЫРЕХЗВЕННОГО" // &
-      " МЕХАНИЗМА С КАЧАЮЩИМСЯ ГИДРОЦИЛИНДРОМ"
+    call mech%describe(pr3050_template, title_en, title_ru, "")
   end subroutine new_pr3050
 
-  subroutine read_deck(self, source, error)
+  subroutine load_deck(self, source, error)
     class(pr3050_mechanism_t), intent(inout) :: self
     type(deck_source_t), intent(in) :: source
     type(error_t), allocatable, intent(out) :: error
     call read_pr3050_deck(source, self%deck, error)
-  end subroutine read_deck
+  end subroutine load_deck
 
   !> The topology for a drawing: cylinder 1 from A along the axis (through S1), rod 2 from B
   !> (through S2) sliding in it, rocker 3 C-B with its centre of mass S3; pivots C, A; the
@@ -194,11 +197,7 @@ contains
     !$omp end parallel do
     if (self%deck%dyn%mode /= dynamics_none) call put_dynamics_rows(table, self%deck%dyn%mode, &
       reduced_motion(self%deck, steps))
-    if (table%kinematics_wanted) then
-      do k = 1, size(steps)
-        call put_kinematics(table, k, self%deck%p, steps(k))
-      end do
-    end if
+    if (table%kinematics_wanted) call put_kinematics(table, self%deck%p, steps)
     call table%set_selfcheck_rows([steps%residual], [steps%mismatch], "F2")
   end subroutine solve
 
@@ -217,37 +216,40 @@ contains
     mo%m = r(3)
   end function reduced_motion
 
-  !> The kinematics columns of step `k` (frame: origin C, x from C to A): joints C, A, B and
+  !> The kinematics columns of the block's steps (frame: origin C, x from C to A): joints C, A, B and
   !> centres of mass S1, S2, S3; links 1 (cylinder) and 2 (rod), which turn together, and 3
   !> (rocker); accelerations of S1, S2, S3; components of the pair forces in the same frame.
-  pure subroutine put_kinematics(table, k, p, s)
+  pure subroutine put_kinematics(table, p, steps)
     !> The step table (columns appended on first use).
     type(step_table_t), intent(inout) :: table
-    !> Row.
-    integer, intent(in) :: k
-    !> Mechanism data.
+    !> PR 3050's lengths and angles.
     type(pr3050_params_t), intent(in) :: p
-    !> The computed step.
-    type(pr3050_step_t), intent(in) :: s
+    !> The block's computed steps, one a row.
+    type(pr3050_step_t), intent(in) :: steps(:)
     type(pr3050_position_t) :: pos
     real(wp) :: w2, f(2, 3), floor
-    pos = pr3050_position(p, s%phi3)
-    w2 = s%omega3**2
-    call table%put_point(k, "C", [0.0_wp, 0.0_wp])
-    call table%put_point(k, "A", pos%a)
-    call table%put_point(k, "B", pos%b)
-    call table%put_point(k, "S1", pos%s1)
-    call table%put_point(k, "S2", pos%s2)
-    call table%put_point(k, "S3", pos%s3)
-    call table%put_link(k, "1", pos%phi2, s%omega2, s%eps2)
-    call table%put_link(k, "2", pos%phi2, s%omega2, s%eps2)
-    call table%put_link(k, "3", s%phi3, s%omega3, s%eps3)
-    call table%put_acceleration(k, "S1", pos%a_s1q * w2 + pos%v_s1q * s%eps3)
-    call table%put_acceleration(k, "S2", pos%a_s2q * w2 + pos%v_s2q * s%eps3)
-    call table%put_acceleration(k, "S3", pos%a_s3q * w2 + pos%v_s3q * s%eps3)
-    f = reshape([s%f14, s%f34, s%f32], [2, 3])
-    floor = noise_floor(f, [s%f2])
-    call table%put_pair_components(k, force_names, f, floor)
+    integer :: k
+    do k = 1, size(steps)
+      associate (s => steps(k))
+        w2 = s%omega3**2
+        pos = pr3050_position(p, s%phi3)
+        call table%put_point(k, "C", [0.0_wp, 0.0_wp])
+        call table%put_point(k, "A", pos%a)
+        call table%put_point(k, "B", pos%b)
+        call table%put_point(k, "S1", pos%s1)
+        call table%put_point(k, "S2", pos%s2)
+        call table%put_point(k, "S3", pos%s3)
+        call table%put_link(k, "1", pos%phi2, s%omega2, s%eps2)
+        call table%put_link(k, "2", pos%phi2, s%omega2, s%eps2)
+        call table%put_link(k, "3", s%phi3, s%omega3, s%eps3)
+        call table%put_acceleration(k, "S1", pos%a_s1q * w2 + pos%v_s1q * s%eps3)
+        call table%put_acceleration(k, "S2", pos%a_s2q * w2 + pos%v_s2q * s%eps3)
+        call table%put_acceleration(k, "S3", pos%a_s3q * w2 + pos%v_s3q * s%eps3)
+        f = reshape([s%f14, s%f34, s%f32], [2, 3])
+        floor = noise_floor(f, [s%f2])
+        call table%put_pair_components(k, force_names, f, floor)
+      end associate
+    end do
   end subroutine put_kinematics
 
   !> The columns of a step: the rocker angle from the first step (the original's F13G), the
@@ -301,27 +303,22 @@ contains
     if (abs(v(8)) <= floor) v(8) = 0.0_wp
   end function pr3050_csv_values
 
-  !> The INPUT DATA echo of the deck.
+  !> The INPUT DATA echo of the deck in the order of PR 3050's cards: the rocker and the
+  !> cylinder (lengths and angles), g, masses, inertias, the rocker's steps and motion.
   pure subroutine echo_deck(deck, table)
     type(pr3050_deck_t), intent(in) :: deck
     type(step_table_t), intent(inout) :: table
-    call table%echo_real("L_CA", deck%p%l_ca, "m")
-    call table%echo_real("L_CB", deck%p%l_cb, "m")
-    call table%echo_real("L_CS3", deck%p%l_cs3, "m")
-    call table%echo_real("DELTA", deck%delta_deg, "deg")
-    call table%echo_real("L_BS2", deck%p%l_bs2, "m")
-    call table%echo_real("L_S1A", deck%p%l_s1a, "m")
-    call table%echo_real("GAMMA", deck%gamma_deg, "deg")
-    call table%echo_real("G", deck%p%g, "m/s^2")
-    call table%echo_real("M1", deck%p%m1, "kg")
-    call table%echo_real("M2", deck%p%m2, "kg")
-    call table%echo_real("M3", deck%p%m3, "kg")
-    call table%echo_real("J1", deck%p%j1, "kg*m^2")
-    call table%echo_real("J2", deck%p%j2, "kg*m^2")
-    call table%echo_real("J3", deck%p%j3, "kg*m^2")
-    call table%echo_real("PHI3_START", deck%phi_start, "deg")
-    call table%echo_real("PHI3_END", deck%phi3_end, "deg")
-    call table%echo_real("DPHI3", deck%dphi, "deg")
+    associate (p => deck%p)
+      call echo_reals(table, [character(len=5) :: "L_CA", "L_CB", "L_CS3"], [p%l_ca, p%l_cb, p%l_cs3], "m")
+      call table%echo_real("DELTA", deck%delta_deg, "deg")
+      call echo_reals(table, [character(len=5) :: "L_BS2", "L_S1A"], [p%l_bs2, p%l_s1a], "m")
+      call table%echo_real("GAMMA", deck%gamma_deg, "deg")
+      call table%echo_real("G", p%g, "m/s^2")
+      call echo_reals(table, [character(len=2) :: "M1", "M2", "M3"], [p%m1, p%m2, p%m3], "kg")
+      call echo_reals(table, [character(len=2) :: "J1", "J2", "J3"], [p%j1, p%j2, p%j3], "kg*m^2")
+    end associate
+    call echo_reals(table, [character(len=10) :: "PHI3_START", "PHI3_END", "DPHI3"], &
+      [deck%phi_start, deck%phi3_end, deck%dphi], "deg")
     call table%echo_int("N", deck%n, "steps")
     call table%echo_array("OMEGA3", deck%omega3(1:deck%n), "rad/s")
     call table%echo_array("EPS3", deck%eps3(1:deck%n), "rad/s^2")
@@ -330,34 +327,23 @@ contains
 
   !> RESULTS: one line per step (rocker angle, three reactions with angles, F2; E format as
   !> the original), then the prismatic pair 1-2 and the cylinder's motion.
-  pure subroutine write_results(self, table, lang, first, last, out, later)
+  pure subroutine put_results(self, table, page, out, later)
     class(pr3050_mechanism_t), intent(in) :: self
     type(step_table_t), intent(in) :: table
-    integer, intent(in) :: lang
-    !> Rows of the block to write (the headings come with row 1 of the run's first block).
-    integer, intent(in) :: first, last
-    type(text_buffer_t), intent(inout) :: out
-    type(text_buffer_t), intent(inout) :: later
-    type(table_field_t), allocatable :: fields(:), pair(:)
-    allocate (fields(0)) ! defined before the assignment (gcc's -Wuninitialized on the descriptor)
-    fields = results_layout()
-    pair = pair_layout()
+    type(results_page_t), intent(in) :: page
+    type(text_buffer_t), intent(inout) :: out, later
     ! in Russian the units are in the legend under the rows
-    if (first == 1 .and. table%first_block()) call put_layout_heading(out, table, fields, lang, lang /= lang_ru)
-    call put_layout_rows(out, table, fields, first, last)
+    call put_layout_block(out, table, page, results_layout(), page%lang /= lang_ru)
     ! the prismatic pair's block follows the last row of the first (in `later`)
-    if (first == 1 .and. table%first_block()) then
-      if (lang == lang_ru) then
-        call later%put_lines(legend_ru)
-        call put_heading(later, trim(pair_heading_ru(1)))
-        call later%put(trim(pair_heading_ru(2)))
-      else
-        call put_heading(later, pair_heading)
-      end if
-      call put_layout_heading(later, table, pair, lang, .true.)
+    if (page%heading .and. page%lang == lang_ru) then
+      call later%put_lines(legend_ru)
+      call put_heading(later, trim(pair_heading_ru(1)))
+      call later%put(trim(pair_heading_ru(2)))
+    else if (page%heading) then
+      call put_heading(later, pair_heading)
     end if
-    call put_layout_rows(later, table, pair, first, last)
-  end subroutine write_results
+    call put_layout_block(later, table, page, pair_layout(), .true.)
+  end subroutine put_results
 
   !> Rocker angle of step `k` from the first step, (k - 1)*dphi3, deg.
   pure function phi3rel(deck, k) result(angle)
@@ -376,19 +362,20 @@ contains
       call model%add("2", "S2", p%m2, p%j2)
       call model%add("3", "S3", p%m3, p%j3)
       model%gravity = p%g * [cos(p%gamma), sin(p%gamma)]
-      ! the oil force drives between cylinder and rod: no reaction on the frame
+      ! the oil force acts between cylinder and rod, inside the mechanism: no reaction on the frame
       call model%add_frame_pair("F14", "A", "")
       call model%add_frame_pair("F34", "C", "")
       model%drive = ""
     end associate
   end subroutine mass_model
 
-  !> The forces of row `k` on its drawing (--format svg --at K): the pair forces at their
-  !> joints, the driving force F2 on the rod (along A->B, at S2), the weights (angle gamma),
-  !> the inertia forces and moments of links 1, 2 and 3.
+  !> The forces of row `k` on its drawing (--format svg --at K): each pair force at its joint,
+  !> the driving force F2 on the rod (along A->B, at S2), the weights (angle gamma),
+  !> the inertia forces and moments of links 1, 2 and 3; no driving moment (the oil drives).
   pure subroutine force_plan(self, table, k, drawing, error)
     class(pr3050_mechanism_t), intent(in) :: self
     type(step_table_t), intent(in) :: table
+    !> Row drawn: its column F2 is the oil force on the rod, N.
     integer, intent(in) :: k
     type(drawing_t), intent(inout) :: drawing
     type(error_t), allocatable, intent(out) :: error

@@ -9,7 +9,7 @@ module kinetostat_pr3207_layout
   use kinetostat_step_table, only: step_table_t, column_t, column, col_input_angle, col_moment, step_span, lack_block_memory
   use kinetostat_labels, only: lang_ru
   use kinetostat_table_layout, only: table_field_t, field, magnitudes_over_angles, forces_and_angles, &
-    put_layout_heading, put_layout_rows
+    results_page_t, put_layout_block, echo_reals, echo_steps
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_sketch, only: sketch_t
@@ -33,37 +33,45 @@ module kinetostat_pr3207_layout
   !> Number of columns of a step's row (pr3207_columns).
   integer, parameter :: row_size = 2 + 2 * size(force_names)
 
+  !> Title lines of the legacy table (English, Russian).
+  character(*), parameter :: title_en = "KINETOSTAT  PR 3207  FORCE ANALYSIS OF THE SIX-BAR SLOTTED-LINK (SHAPER) MECHANISM", &
+    title_ru = "KINETOSTAT  PR 3207  СИЛОВОЙ РАСЧЕТ ШЕСТИЗВЕННОГО" // &
+      " КУЛИСНОГО МЕХАНИЗМА (ПОПЕРЕЧНО-СТРОГАЛЬНОГО)"
+
   !> PR 3207: six-bar slotted-link (shaper) mechanism, manual section 3.
   type, extends(mechanism_t) :: pr3207_mechanism_t
-    !> The validated deck.
+    !> The validated deck (PR 3207 card images).
     type(pr3207_deck_t) :: deck
     !> The steady cycle (dynamics = 'steady' or 'given').
     type(cycle_t) :: cycle
   contains
-    procedure :: read_deck, solve, write_results, sketch, force_plan, mass_model
+    procedure :: load_deck, prepare, solve, put_results, sketch, force_plan, mass_model
   end type pr3207_mechanism_t
 
 contains
 
-  !> A new PR 3207 mechanism (the registry's constructor).
+  !> A new mechanism of this kind (the registry's constructor).
   subroutine new_pr3207(mech)
     !> The mechanism.
     class(mechanism_t), allocatable, intent(out) :: mech
     allocate (pr3207_mechanism_t :: mech)
-    mech%template = pr3207_template
-    mech%title_en = "KINETOSTAT  PR 3207  FORCE ANALYSIS OF THE SIX-BAR SLOTTED-LINK (SHAPER) MECHANISM"
-    mech%title_ru = "KINETOSTAT  PR 3207  СИЛОВОЙ РАСЧЕТ ШЕСТИЗВЕННОГО" // &
-      " КУЛИСНОГО МЕХАНИЗМА (ПОПЕРЕЧНО-СТРОГАЛЬНОГО)"
+    call mech%describe(pr3207_template, title_en, title_ru, "")
   end subroutine new_pr3207
 
-  subroutine read_deck(self, source, error)
+  subroutine load_deck(self, source, error)
     class(pr3207_mechanism_t), intent(inout) :: self
     type(deck_source_t), intent(in) :: source
     type(error_t), allocatable, intent(out) :: error
     call read_pr3207_deck(source, self%deck, error)
-    if (allocated(error)) return
-    if (self%deck%dyn%mode >= dynamics_steady) call pr3207_cycle(self%deck, source%path, self%cycle, error)
-  end subroutine read_deck
+  end subroutine load_deck
+
+  !> The steady cycle of a deck with dynamics = 'steady' or 'given'.
+  subroutine prepare(self, path, error)
+    class(pr3207_mechanism_t), intent(inout) :: self
+    character(*), intent(in) :: path
+    type(error_t), allocatable, intent(out) :: error
+    if (self%deck%dyn%mode >= dynamics_steady) call pr3207_cycle(self%deck, path, self%cycle, error)
+  end subroutine prepare
 
   !> The topology for a drawing: crank A-B, block 2 at B sliding along the lever C-D, block 4
   !> at D sliding along x in the ram's slot, the ram from its guide (x = 0, along y) to D;
@@ -136,7 +144,8 @@ contains
     !$omp end parallel do
   end subroutine pr3207_solve
 
-  !> Every step into the step table, with the INPUT DATA echo and the self-check.
+  !> The block's crank steps into the step table (with a steady cycle at the true crank
+  !> speed, with its costs and the drive's deviation); the echo with the first block.
   subroutine solve(self, table, error)
     class(pr3207_mechanism_t), intent(in) :: self
     type(step_table_t), intent(inout) :: table
@@ -176,11 +185,7 @@ contains
       if (self%deck%dyn%mode >= dynamics_steady) call note_drive_deviation(table, [steps%m1], motions, &
         self%cycle%j_flywheel)
     end if
-    if (table%kinematics_wanted) then
-      do k = 1, size(steps)
-        call put_kinematics(table, k, self%deck%p, steps(k))
-      end do
-    end if
+    if (table%kinematics_wanted) call put_kinematics(table, self%deck%p, steps)
     call table%set_selfcheck_rows([steps%residual], [steps%mismatch], "M1")
   end subroutine solve
 
@@ -235,64 +240,62 @@ contains
     if (abs(v(12)) <= floor * l_ab) v(12) = 0.0_wp
   end function pr3207_csv_values
 
-  !> The kinematics columns of step `k` (frame: origin A, x from A to C): joints A, B, C, D
+  !> The kinematics columns of the block's steps (frame: origin A, x from A to C): joints A, B, C, D
   !> and centres of mass S1 (= A), S3, S5 (the ram's, taken on the line x = 0 through A, as
   !> the generic twin deck does: only its travel y5 = y_D is defined); links 1 (crank), 2
   !> (block, turns with the lever) and 3 (lever); accelerations of S1, S3, S5; components of
   !> the pair forces in the same frame. Block 4 and the ram 5 translate (no angle columns).
-  pure subroutine put_kinematics(table, k, p, s)
+  pure subroutine put_kinematics(table, p, steps)
     !> The step table (columns appended on first use).
     type(step_table_t), intent(inout) :: table
-    !> Row.
-    integer, intent(in) :: k
-    !> Mechanism data.
+    !> Lengths, masses and the crank speed of PR 3207.
     type(pr3207_params_t), intent(in) :: p
-    !> The computed step.
-    type(pr3207_step_t), intent(in) :: s
+    !> The block's computed steps, one a row.
+    type(pr3207_step_t), intent(in) :: steps(:)
     type(pr3207_position_t) :: pos
     real(wp) :: w2, f(2, size(force_names)), floor
-    pos = pr3207_position(p, s%phi1)
-    w2 = s%omega1**2
-    call table%put_point(k, "A", [0.0_wp, 0.0_wp])
-    call table%put_point(k, "B", pos%b)
-    call table%put_point(k, "C", [p%l_ac, 0.0_wp])
-    call table%put_point(k, "D", pos%d)
-    call table%put_point(k, "S1", [0.0_wp, 0.0_wp])
-    call table%put_point(k, "S3", pos%s3)
-    call table%put_point(k, "S5", [0.0_wp, pos%y5])
-    call table%put_link(k, "1", s%phi1, s%omega1, s%eps1)
-    call table%put_link(k, "2", pos%phi3, pos%u31 * s%omega1, s%eps3)
-    call table%put_link(k, "3", pos%phi3, pos%u31 * s%omega1, s%eps3)
-    call table%put_acceleration(k, "S1", [0.0_wp, 0.0_wp])
-    call table%put_acceleration(k, "S3", pos%a_s3q * w2 + pos%v_s3q * s%eps1)
-    call table%put_acceleration(k, "S5", [0.0_wp, s%a5])
-    f = pair_forces(s)
-    floor = noise_floor(f, [real(wp) ::])
-    call table%put_pair_components(k, force_names, f, floor)
+    integer :: k
+    do k = 1, size(steps)
+      associate (s => steps(k))
+        pos = pr3207_position(p, s%phi1)
+        w2 = s%omega1**2
+        call table%put_point(k, "A", [0.0_wp, 0.0_wp])
+        call table%put_point(k, "B", pos%b)
+        call table%put_point(k, "C", [p%l_ac, 0.0_wp])
+        call table%put_point(k, "D", pos%d)
+        call table%put_point(k, "S1", [0.0_wp, 0.0_wp])
+        call table%put_point(k, "S3", pos%s3)
+        call table%put_point(k, "S5", [0.0_wp, pos%y5])
+        call table%put_link(k, "1", s%phi1, s%omega1, s%eps1)
+        call table%put_link(k, "2", pos%phi3, pos%u31 * s%omega1, s%eps3)
+        call table%put_link(k, "3", pos%phi3, pos%u31 * s%omega1, s%eps3)
+        call table%put_acceleration(k, "S1", [0.0_wp, 0.0_wp])
+        call table%put_acceleration(k, "S3", pos%a_s3q * w2 + pos%v_s3q * s%eps1)
+        call table%put_acceleration(k, "S5", [0.0_wp, s%a5])
+        f = pair_forces(s)
+        floor = noise_floor(f, [real(wp) ::])
+        call table%put_pair_components(k, force_names, f, floor)
+      end associate
+    end do
   end subroutine put_kinematics
 
-  !> The INPUT DATA echo of the deck.
+  !> The INPUT DATA echo of the deck, in the order of its cards: lengths, masses, the
+  !> lever's inertia, the crank speed, g, the steps and the cutting force.
   pure subroutine echo_deck(deck, table)
     type(pr3207_deck_t), intent(in) :: deck
     type(step_table_t), intent(inout) :: table
-    call table%echo_real("L_AB", deck%p%l_ab, "m")
-    call table%echo_real("L_AC", deck%p%l_ac, "m")
-    call table%echo_real("L_CD", deck%p%l_cd, "m")
-    call table%echo_real("L_CS3", deck%p%l_cs3, "m")
-    call table%echo_real("M1", deck%p%m1, "kg")
-    call table%echo_real("M3", deck%p%m3, "kg")
-    call table%echo_real("M5", deck%p%m5, "kg")
-    call table%echo_real("J3", deck%p%j3, "kg*m^2")
-    call table%echo_real("OMEGA1", deck%p%omega1, "rad/s")
-    call table%echo_real("G", deck%p%g, "m/s^2")
-    call table%echo_real("PHI_START", deck%phi_start, "deg")
-    call table%echo_real("DPHI", deck%dphi, "deg")
-    call table%echo_int("N", deck%n, "steps")
+    associate (p => deck%p)
+      call echo_reals(table, [character(len=5) :: "L_AB", "L_AC", "L_CD", "L_CS3"], [p%l_ab, p%l_ac, p%l_cd, p%l_cs3], "m")
+      call echo_reals(table, [character(len=2) :: "M1", "M3", "M5"], [p%m1, p%m3, p%m5], "kg")
+      call table%echo_real("J3", p%j3, "kg*m^2")
+      call table%echo_real("OMEGA1", p%omega1, "rad/s")
+      call table%echo_real("G", p%g, "m/s^2")
+    end associate
+    call echo_steps(table, deck%phi_start, deck%dphi, deck%n)
     if (deck%two_value) then
-      call table%echo_real("F5C_WORK", deck%f5c_work, "N")
-      call table%echo_real("F5C_IDLE", deck%f5c_idle, "N")
-      call table%echo_real("PHI_CUT_START", deck%phi_cut_start, "deg")
-      call table%echo_real("PHI_CUT_END", deck%phi_cut_end, "deg")
+      call echo_reals(table, [character(len=8) :: "F5C_WORK", "F5C_IDLE"], [deck%f5c_work, deck%f5c_idle], "N")
+      call echo_reals(table, [character(len=13) :: "PHI_CUT_START", "PHI_CUT_END"], &
+        [deck%phi_cut_start, deck%phi_cut_end], "deg")
     else
       call table%echo_array("F5C", deck%f5c_values(1:deck%n), "N")
     end if
@@ -301,23 +304,16 @@ contains
 
   !> RESULTS: header, then per step the magnitudes (with the crank angle and M1) and under
   !> them the angles, fields 9 and 12 wide as in the original printout.
-  pure subroutine write_results(self, table, lang, first, last, out, later)
+  pure subroutine put_results(self, table, page, out, later)
     class(pr3207_mechanism_t), intent(in) :: self
     type(step_table_t), intent(in) :: table
-    integer, intent(in) :: lang
-    !> Rows of the block to write (the headings come with row 1 of the run's first block).
-    integer, intent(in) :: first, last
-    type(text_buffer_t), intent(inout) :: out
-    type(text_buffer_t), intent(inout) :: later
-    type(table_field_t), allocatable :: fields(:)
-    allocate (fields(0)) ! defined before the assignment (gcc's -Wuninitialized on the descriptor)
-    ! the crank angle (9 wide), the magnitudes and M1 (12 wide), under them the angles
-    fields = magnitudes_over_angles("phi1", force_names, force_names, [field("M1", 12, 3)])
-    ! the Russian printout's angle units stand one place right of their fields
-    if (first == 1 .and. table%first_block()) call put_layout_heading(out, table, fields, lang, .true., &
-      unit_shift=[0, merge(1, 0, lang == lang_ru)])
-    call put_layout_rows(out, table, fields, first, last)
-  end subroutine write_results
+    type(results_page_t), intent(in) :: page
+    type(text_buffer_t), intent(inout) :: out, later
+    ! the crank angle (9 wide), the magnitudes and M1 (12 wide), under them the angles; the
+    ! Russian printout's angle units stand one place right of their fields
+    call put_layout_block(out, table, page, magnitudes_over_angles("phi1", force_names, force_names, &
+      [field("M1", 12, 3)]), .true., unit_shift=[0, merge(1, 0, page%lang == lang_ru)])
+  end subroutine put_results
 
   !> The moving links: crank 1 (its mass at the pivot A, no inertia given), lever 3 at S3,
   !> ram 5 at S5 (translating); the blocks 2 and 4 are massless. Gravity along +x.

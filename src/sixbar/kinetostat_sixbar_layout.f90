@@ -10,7 +10,7 @@ module kinetostat_sixbar_layout
   use kinetostat_step_table, only: step_table_t, column_t, column, col_input_angle, col_component, step_span, col_moment, &
     lack_block_memory
   use kinetostat_table_layout, only: table_field_t, field, magnitudes_over_angles, force_and_angle, &
-    put_layout_heading, put_layout_rows
+    results_page_t, put_layout_block, echo_reals, echo_steps
   use kinetostat_labels, only: lang_ru
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_mechanism, only: mechanism_t
@@ -46,48 +46,57 @@ module kinetostat_sixbar_layout
   !> Heading of the driving moment block after the Russian table (T.FTN did not print M1).
   character(*), parameter :: moment_heading_ru = "ДВИЖУЩИЙ МОМЕНТ НА КРИВОШИПЕ 1"
 
+  !> Title lines of the legacy table (English, Russian).
+  character(*), parameter :: title_en = "KINETOSTAT  T.FTN  FORCE ANALYSIS OF THE SIX-BAR CRANK-ROCKER-SLIDER MECHANISM", &
+    title_ru = "KINETOSTAT  T.FTN  КПФ И УСИЛИЯ" // &
+      " КРИВОШИПНО-КОРОМЫСЛОВО-ПОЛЗУННОГО" // &
+      " МЕХАНИЗМА"
+
   !> T.FTN: six-bar crank-rocker-slider, manual section 2.
   type, extends(mechanism_t) :: sixbar_mechanism_t
-    !> The validated deck.
+    !> The validated deck (T.FTN data).
     type(sixbar_deck_t) :: deck
     !> The reduced quantities at any crank angle (dynamics = 'steady' or 'given').
     type(sixbar_source_t) :: source
     !> The steady cycle (dynamics = 'steady' or 'given').
     type(cycle_t) :: cycle
   contains
-    procedure :: read_deck, solve, write_results, sketch, force_plan, mass_model
+    procedure :: load_deck, prepare, solve, put_results, sketch, force_plan, mass_model
   end type sixbar_mechanism_t
 
 contains
 
-  !> A new T.FTN mechanism (the registry's constructor).
+  !> A new mechanism of this kind (the registry's constructor).
   subroutine new_sixbar(mech)
     !> The mechanism.
     class(mechanism_t), allocatable, intent(out) :: mech
     allocate (sixbar_mechanism_t :: mech)
-    mech%template = sixbar_template
-    mech%title_en = "KINETOSTAT  T.FTN  FORCE ANALYSIS OF THE SIX-BAR CRANK-ROCKER-SLIDER MECHANISM"
-    mech%title_ru = "KINETOSTAT  T.FTN  КПФ И УСИЛИЯ" // &
-      " КРИВОШИПНО-КОРОМЫСЛОВО-ПОЛЗУННОГО" // &
-      " МЕХАНИЗМА"
+    call mech%describe(sixbar_template, title_en, title_ru, "")
   end subroutine new_sixbar
 
-  subroutine read_deck(self, source, error)
+  subroutine load_deck(self, source, error)
     class(sixbar_mechanism_t), intent(inout) :: self
     type(deck_source_t), intent(in) :: source
     type(error_t), allocatable, intent(out) :: error
     call read_sixbar_deck(source, self%deck, error)
-    if (allocated(error)) return
+  end subroutine load_deck
+
+  !> The reduced quantities' load table and the steady cycle of a deck with dynamics =
+  !> 'steady' or 'given'.
+  subroutine prepare(self, path, error)
+    class(sixbar_mechanism_t), intent(inout) :: self
+    character(*), intent(in) :: path
+    type(error_t), allocatable, intent(out) :: error
     if (self%deck%dyn%mode >= dynamics_steady) then
       self%source = sixbar_source(self%deck)
       if (.not. allocated(self%source%f5)) then
         call out_of_memory(error, "the load table of "//int_str(self%deck%n)//" steps", 8_int64 * self%deck%n)
-        error%message = source%path//": &sixbar: dynamics: "//error%message
+        error%message = path//": &sixbar: dynamics: "//error%message
         return
       end if
-      call sixbar_cycle(self%deck, self%source, source%path, self%cycle, error)
+      call sixbar_cycle(self%deck, self%source, path, self%cycle, error)
     end if
-  end subroutine read_deck
+  end subroutine prepare
 
   !> The topology for a drawing (frame 1): crank A-B, rod B-C, rocker C-D-E, rod E-H, slider 5
   !> at H on the guide along x2 (at beta - 180 deg); pivots A, D; gravity -y0.
@@ -188,7 +197,8 @@ contains
     end select
   end function failure_text
 
-  !> Every step into the step table, with the INPUT DATA echo and the self-check.
+  !> The block's crank steps into the step table, the reduced quantities of a dynamics stage,
+  !> the self-check; the columns, loads and INPUT DATA echo with the first block.
   subroutine solve(self, table, error)
     class(sixbar_mechanism_t), intent(in) :: self
     type(step_table_t), intent(inout) :: table
@@ -225,11 +235,7 @@ contains
     else if (self%deck%dyn%mode > 0) then
       call put_dynamics_rows(table, self%deck%dyn%mode, reduced_motion(self%deck, steps))
     end if
-    if (table%kinematics_wanted) then
-      do k = 1, size(steps)
-        call put_kinematics(table, k, self%deck%p, steps(k))
-      end do
-    end if
+    if (table%kinematics_wanted) call put_kinematics(table, self%deck%p, steps)
     call table%set_selfcheck_rows([steps%residual], [steps%mismatch], "M1")
   end subroutine solve
 
@@ -324,83 +330,82 @@ contains
     if (abs(v(15)) <= floor * l1) v(15) = 0.0_wp
   end function sixbar_csv_values
 
-  !> The kinematics columns of step `k`, all positions and link angles in frame 1 (origin A,
+  !> The kinematics columns of the block's steps, all positions and link angles in frame 1 (origin A,
   !> x1 along AD: the frame of phi1 and of the generic twin deck data/assur_sixbar.nml):
   !> joints A, B, C, D, E, H and centres of mass S1 (= A), S2, S3 (= D), S4, S5 (= H); links
   !> 1..4 (the slider 5 translates along x2); accelerations of S1..S5; components of the
   !> pair forces in the frames of their angle columns: F21, F32, F36, F16 in frame 1; F43,
   !> F45 and the guide's F56 (along y2) in frame 2, whose x axis lies at beta - 180 deg.
-  pure subroutine put_kinematics(table, k, p, s)
+  pure subroutine put_kinematics(table, p, steps)
     !> The step table (columns appended on first use).
     type(step_table_t), intent(inout) :: table
-    !> Row.
-    integer, intent(in) :: k
-    !> Mechanism data.
+    !> T.FTN's data (the lengths as l1 and ratios to it).
     type(sixbar_params_t), intent(in) :: p
-    !> The computed step.
-    type(sixbar_step_t), intent(in) :: s
+    !> The block's computed steps, one a row.
+    type(sixbar_step_t), intent(in) :: steps(:)
     real(wp) :: w, frame2, f(2, size(force_names)), floor, zero(2)
-    w = s%omega1
-    zero = 0.0_wp
-    ! angle of x2 in frame 1, rad: beta - pi
-    frame2 = atan2(p%a, p%b) - pi
-    associate (pos => s%pos)
-      call table%put_point(k, "A", zero)
-      call table%put_point(k, "B", pos%b)
-      call table%put_point(k, "C", pos%c)
-      call table%put_point(k, "D", pos%d)
-      call table%put_point(k, "E", pos%e1)
-      call table%put_point(k, "H", pos%d + sixbar_frame2_to_frame1(p, pos%h))
-      call table%put_point(k, "S1", zero)
-      call table%put_point(k, "S2", pos%s2)
-      call table%put_point(k, "S3", pos%d)
-      call table%put_point(k, "S4", pos%d + sixbar_frame2_to_frame1(p, pos%s4))
-      call table%put_point(k, "S5", pos%d + sixbar_frame2_to_frame1(p, pos%h))
-      call table%put_link(k, "1", pos%phi1, w, s%eps1)
-      call table%put_link(k, "2", pos%phi2, pos%u21 * w, s%eps(2))
-      call table%put_link(k, "3", pos%phi3, pos%u31 * w, s%eps(3))
-      call table%put_link(k, "4", modulo(pos%phi4 + frame2 + pi, 2.0_wp * pi) - pi, pos%u41 * w, s%eps(4))
-      call table%put_acceleration(k, "S1", zero)
-      call table%put_acceleration(k, "S2", sixbar_accel(pos%a_s2q, pos%v_s2q, w, s%eps1))
-      call table%put_acceleration(k, "S3", zero)
-      call table%put_acceleration(k, "S4", sixbar_frame2_to_frame1(p, sixbar_accel(pos%a_s4q, pos%v_s4q, w, s%eps1)))
-      call table%put_acceleration(k, "S5", sixbar_frame2_to_frame1(p, [sixbar_accel(pos%a_hq(1), pos%v_hq(1), w, s%eps1), &
-                                                                      0.0_wp]))
-    end associate
-    f = pair_forces(s)
-    floor = noise_floor(f(:, 1:6), [s%f56])
-    call table%put_pair_components(k, force_names, f, floor, merge(frame2 * rad_to_deg, 0.0_wp, force_in_frame2))
+    integer :: k
+    do k = 1, size(steps)
+      associate (s => steps(k))
+        w = s%omega1
+        zero = 0.0_wp
+        ! angle of x2 in frame 1, rad: beta - pi
+        frame2 = atan2(p%a, p%b) - pi
+        associate (pos => s%pos)
+          call table%put_point(k, "A", zero)
+          call table%put_point(k, "B", pos%b)
+          call table%put_point(k, "C", pos%c)
+          call table%put_point(k, "D", pos%d)
+          call table%put_point(k, "E", pos%e1)
+          call table%put_point(k, "H", pos%d + sixbar_frame2_to_frame1(p, pos%h))
+          call table%put_point(k, "S1", zero)
+          call table%put_point(k, "S2", pos%s2)
+          call table%put_point(k, "S3", pos%d)
+          call table%put_point(k, "S4", pos%d + sixbar_frame2_to_frame1(p, pos%s4))
+          call table%put_point(k, "S5", pos%d + sixbar_frame2_to_frame1(p, pos%h))
+          call table%put_link(k, "1", pos%phi1, w, s%eps1)
+          call table%put_link(k, "2", pos%phi2, pos%u21 * w, s%eps(2))
+          call table%put_link(k, "3", pos%phi3, pos%u31 * w, s%eps(3))
+          call table%put_link(k, "4", modulo(pos%phi4 + frame2 + pi, 2.0_wp * pi) - pi, pos%u41 * w, s%eps(4))
+          call table%put_acceleration(k, "S1", zero)
+          call table%put_acceleration(k, "S2", sixbar_accel(pos%a_s2q, pos%v_s2q, w, s%eps1))
+          call table%put_acceleration(k, "S3", zero)
+          call table%put_acceleration(k, "S4", sixbar_frame2_to_frame1(p, sixbar_accel(pos%a_s4q, pos%v_s4q, w, s%eps1)))
+          call table%put_acceleration(k, "S5", sixbar_frame2_to_frame1(p, [sixbar_accel(pos%a_hq(1), pos%v_hq(1), w, s%eps1), &
+                                                                          0.0_wp]))
+      end associate
+      f = pair_forces(s)
+      floor = noise_floor(f(:, 1:6), [s%f56])
+      call table%put_pair_components(k, force_names, f, floor, merge(frame2 * rad_to_deg, 0.0_wp, force_in_frame2))
+      end associate
+    end do
   end subroutine put_kinematics
 
-  !> The INPUT DATA echo of the deck.
+  !> The INPUT DATA echo of the deck: T.FTN's frame and lengths (the ratios LAM* to l1 with
+  !> their meaning as the unit), masses, inertias, speed, g, the steps and the load F5.
   pure subroutine echo_deck(deck, table)
     type(sixbar_deck_t), intent(in) :: deck
     type(step_table_t), intent(inout) :: table
-    call table%echo_real("A", deck%p%a, "m")
-    call table%echo_real("B", deck%p%b, "m")
-    call table%echo_real("L1", deck%p%l1, "m")
-    call table%echo_real("LAM2", deck%p%lam2, "l_BC/l1")
-    call table%echo_real("LAM_S2", deck%p%lam_s2, "l_BS2/l_BC")
-    call table%echo_real("LAM3", deck%p%lam3, "l_DC/l1")
-    call table%echo_real("LAM_DE", deck%p%lam_de, "l_DE/l1")
-    call table%echo_real("LAM4", deck%p%lam4, "l_EH/l1")
-    call table%echo_real("LAM_S4", deck%p%lam_s4, "l_ES4/l_EH")
-    call table%echo_real("LAM_E", deck%p%lam_e, "e/l1")
-    call table%echo_real("M1", deck%p%m1, "kg")
-    call table%echo_real("M2", deck%p%m2, "kg")
-    call table%echo_real("M3", deck%p%m3, "kg")
-    call table%echo_real("M4", deck%p%m4, "kg")
-    call table%echo_real("M5", deck%p%m5, "kg")
-    call table%echo_real("J1", deck%p%j1, "kg*m^2")
-    call table%echo_real("J2", deck%p%j2, "kg*m^2")
-    call table%echo_real("J3", deck%p%j3, "kg*m^2")
-    call table%echo_real("J4", deck%p%j4, "kg*m^2")
-    call table%echo_real("OMEGA1", deck%p%omega1, "rad/s")
-    call table%echo_real("G", deck%p%g, "m/s^2")
+    !> The length ratios of the deck and what each is.
+    character(*), parameter :: ratio_names(*) = [character(len=6) :: "LAM2", "LAM_S2", "LAM3", "LAM_DE", "LAM4", &
+      "LAM_S4", "LAM_E"]
+    character(*), parameter :: ratio_units(*) = [character(len=10) :: "l_BC/l1", "l_BS2/l_BC", "l_DC/l1", "l_DE/l1", &
+      "l_EH/l1", "l_ES4/l_EH", "e/l1"]
+    real(wp) :: ratios(size(ratio_names))
+    integer :: i
+    associate (p => deck%p)
+      call echo_reals(table, [character(len=2) :: "A", "B", "L1"], [p%a, p%b, p%l1], "m")
+      ratios = [p%lam2, p%lam_s2, p%lam3, p%lam_de, p%lam4, p%lam_s4, p%lam_e]
+      do i = 1, size(ratio_names)
+        call table%echo_real(trim(ratio_names(i)), ratios(i), trim(ratio_units(i)))
+      end do
+      call echo_reals(table, [character(len=2) :: "M1", "M2", "M3", "M4", "M5"], [p%m1, p%m2, p%m3, p%m4, p%m5], "kg")
+      call echo_reals(table, [character(len=2) :: "J1", "J2", "J3", "J4"], [p%j1, p%j2, p%j3, p%j4], "kg*m^2")
+      call table%echo_real("OMEGA1", p%omega1, "rad/s")
+      call table%echo_real("G", p%g, "m/s^2")
+    end associate
     call table%echo_logical("START_AT_EXTREME", deck%start_at_extreme, "")
-    call table%echo_real("PHI_START", deck%phi_start, "deg (frame 1)")
-    call table%echo_real("DPHI", deck%dphi, "deg")
-    call table%echo_int("N", deck%n, "steps")
+    call echo_steps(table, deck%phi_start, deck%dphi, deck%n, start_unit="deg (frame 1)")
     call table%echo_array("F5", deck%f5(1:deck%n), "N (along +x2)")
     call table%echo_logical("LEGACY_EQ2", deck%p%legacy_eq2, "(1991 erratum in eps_q2)")
     call echo_dynamics(table, deck%dyn)
@@ -408,64 +413,51 @@ contains
 
   !> RESULTS as appendix 2: per step the crank angle, six force magnitudes, F56 and M1, and
   !> under them the six force angles; fields 9 and 12 wide.
-  pure subroutine write_results(self, table, lang, first, last, out, later)
+  pure subroutine put_results(self, table, page, out, later)
     class(sixbar_mechanism_t), intent(in) :: self
     type(step_table_t), intent(in) :: table
-    integer, intent(in) :: lang
-    !> Rows of the block to write (the headings come with row 1 of the run's first block).
-    integer, intent(in) :: first, last
-    type(text_buffer_t), intent(inout) :: out
-    type(text_buffer_t), intent(inout) :: later
-    type(table_field_t), allocatable :: fields(:)
-    if (lang == lang_ru) then
-      call write_results_ru(table, first, last, out, later)
-      return
+    type(results_page_t), intent(in) :: page
+    type(text_buffer_t), intent(inout) :: out, later
+    if (page%lang == lang_ru) then
+      call put_results_ru(table, page, out, later)
+    else
+      ! the angles' units stand one place right of their fields, as they always did
+      call put_layout_block(out, table, page, results_layout(.true.), .true., unit_shift=[0, 1])
     end if
-    allocate (fields(0)) ! defined before the assignment (gcc's -Wuninitialized on the descriptor)
-    fields = results_layout(.true.)
-    ! the angles' units stand one place right of their fields, as they always did
-    if (first == 1 .and. table%first_block()) call put_layout_heading(out, table, fields, lang, .true., unit_shift=[0, 1])
-    call put_layout_rows(out, table, fields, first, last)
-  end subroutine write_results
+  end subroutine put_results
 
   !> RESULTS as appendix 2 prints them (--lang ru): the original's header and dotted rules,
   !> the eight columns and six angles per step, a legend with the units, then M1 apart.
-  pure subroutine write_results_ru(table, first, last, out, later)
+  pure subroutine put_results_ru(table, page, out, later)
     type(step_table_t), intent(in) :: table
-    !> Rows of the block to write (the headings come with row 1 of the run's first block).
-    integer, intent(in) :: first, last
-    type(text_buffer_t), intent(inout) :: out
-    type(text_buffer_t), intent(inout) :: later
-    type(table_field_t), allocatable :: fields(:), moment(:)
-    allocate (fields(0)) ! defined before the assignment (gcc's -Wuninitialized on the descriptor)
-    fields = results_layout(.false.)
-    moment = [field("phi1", 9, 2), field("M1", 12, 3)]
-    if (first == 1 .and. table%first_block()) then
-      call put_layout_heading(out, table, fields, lang_ru, .false.)
-      call out%put(dotted_rule)
-    end if
-    call put_layout_rows(out, table, fields, first, last)
+    !> The rows of the block to write; the headings come with row 1 of the run's first block.
+    type(results_page_t), intent(in) :: page
+    type(text_buffer_t), intent(inout) :: out, later
+    ! the eight columns and six angles, no unit lines, the dotted rule under the heading
+    call put_layout_block(out, table, page, results_layout(.false.), .false., below=dotted_rule)
     ! the closing rule, the legend and the moment block follow the last row (in `later`)
-    if (first == 1 .and. table%first_block()) then
+    if (page%heading) then
       call later%put(dotted_rule)
       call later%put_lines(legend_ru)
       call put_heading(later, moment_heading_ru)
-      call put_layout_heading(later, table, moment, lang_ru, .true.)
     end if
-    call put_layout_rows(later, table, moment, first, last)
-  end subroutine write_results_ru
+    call put_layout_block(later, table, page, [field("phi1", 9, 2), field("M1", 12, 3)], .true.)
+  end subroutine put_results_ru
 
   !> The moving links: crank 1, connecting rod 2, rocker 3, link 4 and slider 5 (translating),
   !> each at its centre of mass; gravity in frame 1.
   pure subroutine mass_model(self, model)
     class(sixbar_mechanism_t), intent(in) :: self
     type(mass_model_t), intent(out) :: model
+    real(wp) :: masses(5), inertias(5)
+    integer :: i
     associate (p => self%deck%p)
-      call model%add("1", "S1", p%m1, p%j1)
-      call model%add("2", "S2", p%m2, p%j2)
-      call model%add("3", "S3", p%m3, p%j3)
-      call model%add("4", "S4", p%m4, p%j4)
-      call model%add("5", "S5", p%m5, 0.0_wp)
+      ! link i at its centre of mass Si; the slider 5 translates
+      masses = [p%m1, p%m2, p%m3, p%m4, p%m5]
+      inertias = [p%j1, p%j2, p%j3, p%j4, 0.0_wp]
+      do i = 1, size(masses)
+        call model%add(int_str(i), "S"//int_str(i), masses(i), inertias(i))
+      end do
       model%gravity = p%g * sixbar_down1(p)
       ! the slider's guide force passes through H (every other force on it does)
       call model%add_frame_pair("F16", "A", "")
