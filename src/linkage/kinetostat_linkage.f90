@@ -376,36 +376,19 @@ contains
     !> Scratch (work%rhs, work%unit_x).
     real(wp), intent(out) :: rhs(:), unit_x(:)
     real(wp) :: s
-    integer :: u, k, i, c, r, slot, lo, e
-    logical :: sparse
+    integer :: u, k, i, r
     if (.not. work%blocked) then
       call solve_factored(work%lu, work%ipiv, x)
       return
     end if
     rhs(:) = x
     x(:) = 0.0_wp
-    sparse = by_rows(work)
     do u = 1, size(mech%units)
       k = work%unit_order(u)
       do i = 1, k
         r = mech%units(u)%rows(i)
         s = rhs(r)
-        if (sparse) then
-          ! the row's two links in the columns' order (the dense sum's order: the same digits)
-          lo = 1
-          if (work%jl(2, r) < work%jl(1, r)) lo = 2
-          do slot = lo, 3 - lo, 3 - 2 * lo
-            e = work%jl(slot, r)
-            if (e == 0) cycle
-            s = s - work%je(1, slot, r) * x(3 * e - 2)
-            s = s - work%je(2, slot, r) * x(3 * e - 1)
-            s = s - work%je(3, slot, r) * x(3 * e)
-          end do
-        else
-          do c = 1, size(x)
-            s = s - work%jac(r, c) * x(c)
-          end do
-        end if
+        call take_products(work, r, x, .false., s)
         unit_x(i) = s
       end do
       call unit_solve(work, u, unit_x(1:k), .false.)
@@ -424,29 +407,15 @@ contains
     !> Scratch (work%rhs, work%unit_x).
     real(wp), intent(out) :: rhs(:), unit_x(:)
     real(wp) :: s
-    integer :: u, k, i, c, r, j, e, m
-    logical :: sparse
+    integer :: u, k, i, c
     rhs(:) = x
     x(:) = 0.0_wp
-    sparse = by_rows(work)
     do u = size(mech%units), 1, -1
       k = work%unit_order(u)
       do i = 1, k
         c = work%unit_cols(i, u)
         s = rhs(c)
-        if (sparse) then
-          ! the rows of the column's link in increasing order (the dense sum's order)
-          e = (c + 2) / 3
-          m = c - 3 * e + 3
-          do j = 1, work%link_deg(e)
-            r = work%link_row(j, e)
-            s = s - work%je(m, work%link_slot(j, e), r) * x(r)
-          end do
-        else
-          do r = 1, size(x)
-            s = s - work%jac(r, c) * x(r)
-          end do
-        end if
+        call take_products(work, c, x, .true., s)
         unit_x(i) = s
       end do
       call unit_solve(work, u, unit_x(1:k), .true.)
@@ -455,6 +424,46 @@ contains
       end do
     end do
   end subroutine solve_jt
+
+  !> s - (row i of J) . x, the terms in the columns' order; `transposed`: s - (column i of
+  !> J) . x, in the rows' order. With by_rows by the row's two links' columns (the column's
+  !> link's rows): the dense sum's terms in its order, so the same digits.
+  pure subroutine take_products(work, i, x, transposed, s)
+    type(linkage_work_t), intent(in) :: work
+    integer, intent(in) :: i
+    real(wp), intent(in) :: x(:)
+    logical, intent(in) :: transposed
+    real(wp), intent(inout) :: s
+    integer :: c, slot, lo, e, m, j, r
+    if (.not. by_rows(work)) then
+      if (transposed) then
+        do r = 1, size(x)
+          s = s - work%jac(r, i) * x(r)
+        end do
+      else
+        do c = 1, size(x)
+          s = s - work%jac(i, c) * x(c)
+        end do
+      end if
+    else if (transposed) then
+      e = (i + 2) / 3
+      m = i - 3 * e + 3
+      do j = 1, work%link_deg(e)
+        r = work%link_row(j, e)
+        s = s - work%je(m, work%link_slot(j, e), r) * x(r)
+      end do
+    else
+      lo = 1
+      if (work%jl(2, i) < work%jl(1, i)) lo = 2
+      do slot = lo, 3 - lo, 3 - 2 * lo
+        e = work%jl(slot, i)
+        if (e == 0) cycle
+        s = s - work%je(1, slot, i) * x(3 * e - 2)
+        s = s - work%je(2, slot, i) * x(3 * e - 1)
+        s = s - work%je(3, slot, i) * x(3 * e)
+      end do
+    end if
+  end subroutine take_products
 
   !> x = B^-1 x (B^-T x: `transposed`) for unit u's diagonal block B of J, with factor_j's
   !> factors: closed forms or LU.
