@@ -590,6 +590,9 @@ contains
         return
       end if
       worst_fb = max(worst_fb, linkage_reaction_gap(deck%mech, sf, f2, n2, c2, e2v))
+      ! the closed forms' reactions (J by its rows' links, no second solve of their own)
+      ! against the group method by LU: the two formulations, as the second opinion would
+      worst_gap = max(worst_gap, linkage_reaction_gap(deck%mech, sc, sf%f, sf%normal, sf%couple, sf%effort))
     end subroutine solves_against_general
   end subroutine test_closed_forms
 

@@ -17,7 +17,7 @@ module kinetostat_linkage_dynamics
   use kinetostat_linkage_deck, only: linkage_deck_t, linkage_schedule_at, linkage_table_position
   implicit none
   private
-  public :: linkage_source_t, linkage_source_setup, linkage_reduced_at_pose, linkage_load_breaks
+  public :: linkage_source_t, linkage_source_setup, linkage_reduced_at_pose, linkage_load_breaks, linkage_source_at
 
   !> Spacing of the cycle's stored poses, rad (0.5 deg).
   real(wp), parameter :: pose_step = 0.5_wp * pi / 180.0_wp
@@ -70,12 +70,13 @@ contains
   end subroutine linkage_source_setup
 
   !> The pose at drive angle phi (rad): Newton's method from the nearest stored pose.
-  pure subroutine pose_at(self, phi, q, error)
+  pure subroutine pose_at(self, phi, q, work, error)
     class(linkage_source_t), intent(in) :: self
     real(wp), intent(in) :: phi
     real(wp), allocatable, intent(out) :: q(:)
+    !> The kernel's workspace (J and its factors at q on return).
+    type(linkage_work_t), intent(inout) :: work
     type(error_t), allocatable, intent(out) :: error
-    type(linkage_work_t) :: work
     integer :: j, m
     m = ubound(self%poses, 2)
     j = min(m, max(0, nint((phi - self%phi0) / self%h)))
@@ -88,10 +89,23 @@ contains
     class(linkage_source_t), intent(in) :: self
     real(wp), intent(in) :: phi
     type(reduced_t) :: red
+    type(linkage_work_t) :: work
+    call linkage_source_at(self, phi, work, red)
+  end function at
+
+  !> `at` with the caller's workspace (a run of angles allocates it once; the same values).
+  pure subroutine linkage_source_at(self, phi, work, red)
+    class(linkage_source_t), intent(in) :: self
+    !> Drive angle, rad.
+    real(wp), intent(in) :: phi
+    !> The kernel's workspace.
+    type(linkage_work_t), intent(inout) :: work
+    !> The reduced quantities (not ok where the linkage cannot be assembled).
+    type(reduced_t), intent(out) :: red
     real(wp), allocatable :: q(:), fval(:), mval(:)
     type(error_t), allocatable :: error
     integer :: i
-    call pose_at(self, phi, q, error)
+    call pose_at(self, phi, q, work, error)
     if (allocated(error)) then
       red%ok = .false.
       return
@@ -107,8 +121,8 @@ contains
       mval(i) = linkage_schedule_at(self%deck%moment_load(i), phi * rad_to_deg, &
         linkage_table_position(self%deck%mech, self%deck%moment_load(i), q))
     end do
-    red = linkage_reduced_at_pose(self%deck%mech, q, fval, mval)
-  end function at
+    call reduced_at_pose(self%deck%mech, q, fval, mval, work, red)
+  end subroutine linkage_source_at
 
   !> Why there are no reduced quantities at phi (rad): the pose solve's message.
   pure function failure(self, phi) result(text)
@@ -117,8 +131,9 @@ contains
     character(len=:), allocatable :: text
     real(wp), allocatable :: q(:)
     type(error_t), allocatable :: error
+    type(linkage_work_t) :: work
     text = ""
-    call pose_at(self, phi, q, error)
+    call pose_at(self, phi, q, work, error)
     if (allocated(error)) text = error%message
   end function failure
 
@@ -130,6 +145,16 @@ contains
     real(wp), intent(in) :: q(:), fval(:), mval(:)
     type(reduced_t) :: red
     type(linkage_work_t) :: work
+    call reduced_at_pose(mech, q, fval, mval, work, red)
+  end function linkage_reduced_at_pose
+
+  !> linkage_reduced_at_pose with the caller's workspace (J's factors at q reused when it
+  !> has them).
+  pure subroutine reduced_at_pose(mech, q, fval, mval, work, red)
+    type(linkage_t), intent(in) :: mech
+    real(wp), intent(in) :: q(:), fval(:), mval(:)
+    type(linkage_work_t), intent(inout) :: work
+    type(reduced_t), intent(out) :: red
     type(error_t), allocatable :: error
     real(wp) :: v(size(q)), a(size(q)), x(2), vs(2), as(2), w(2)
     integer :: i, k
@@ -160,7 +185,7 @@ contains
     do k = 1, size(mech%moment_link)
       red%m = red%m + mval(k) * v(3 * mech%moment_link(k))
     end do
-  end function linkage_reduced_at_pose
+  end subroutine reduced_at_pose
 
   !> The first drive's values where a load switches (its windows' ends, its table's points), rad.
   pure function linkage_load_breaks(deck) result(breaks)

@@ -29,12 +29,12 @@ module kinetostat_linkage_layout
   use kinetostat_linkage_friction, only: linkage_friction_t, linkage_friction_solve
   use kinetostat_linkage_friction_table, only: add_friction_columns, friction_values, friction_integrals, &
     friction_summary, echo_friction
-  use kinetostat_dynamics, only: cycle_t, motion_t, reduced_t, motion_at, dynamics_reduced, dynamics_steady
+  use kinetostat_dynamics, only: cycle_t, motion_t, reduced_t, motion_from, dynamics_reduced, dynamics_steady
   use kinetostat_dynamics_deck, only: deck_cycle
   use kinetostat_dynamics_table, only: echo_dynamics, add_dynamics_columns, put_dynamics_values, &
     put_dynamics_figures, note_drive_deviation
   use kinetostat_linkage_dynamics, only: linkage_source_t, linkage_source_setup, linkage_reduced_at_pose, &
-    linkage_load_breaks
+    linkage_load_breaks, linkage_source_at
   use kinetostat_linkage_deck, only: linkage_deck_t, read_linkage_deck, linkage_template, linkage_drive_values, &
     linkage_load_value, linkage_table_position, linkage_schedule_t
   implicit none
@@ -722,11 +722,15 @@ contains
     integer, intent(in) :: first
     type(motion_t), intent(inout) :: motions(first:)
     real(wp) :: dq(1), dv(1), da(1)
+    type(linkage_work_t) :: work
+    type(reduced_t) :: red
     integer :: k
+    ! (motion_at's values, one workspace for the steps instead of one per step)
     !GCC$ novector
     do k = first, ubound(motions, 1)
       call linkage_drive_values(deck, k, dq, dv, da)
-      motions(k) = motion_at(source, cycle, dq(1))
+      call linkage_source_at(source, dq(1), work, red)
+      motions(k) = motion_from(cycle, dq(1), red)
     end do
   end subroutine cycle_motions
 

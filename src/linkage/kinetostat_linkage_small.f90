@@ -113,14 +113,21 @@ contains
     logical, intent(out) :: ok
     integer :: i, j, k
     i = maxloc(abs(n), 1)
-    j = mod(i, 3) + 1
-    k = mod(j, 3) + 1
+    call others(i, j, k)
     ok = abs(n(i)) > small_screen * norm3(u) * norm3(v)
     if (.not. ok) return
     ! rows j, k: [u(j) v(j); u(k) v(k)], whose determinant is n(i)
     y1 = (r(j) * v(k) - v(j) * r(k)) / n(i)
     y2 = (u(j) * r(k) - r(j) * u(k)) / n(i)
   end subroutine solve_3x2
+
+  !> The two indices of 1..3 after i in cyclic order (i, j, k: an even permutation).
+  pure subroutine others(i, j, k)
+    integer, intent(in) :: i
+    integer, intent(out) :: j, k
+    j = mod(i, 3) + 1
+    k = mod(j, 3) + 1
+  end subroutine others
 
   !> Length of a 3-vector.
   pure real(wp) function norm3(u)
@@ -240,8 +247,7 @@ contains
     integer, intent(in) :: c, off, pick
     real(wp), intent(out) :: x(3)
     integer :: j, k
-    j = mod(pick, 3) + 1
-    k = mod(j, 3) + 1
+    call others(pick, j, k)
     x(pick) = 0.0_wp
     x(j) = (r(1) * b(c + 1, off + k) - b(c, off + k) * r(2)) / n(pick)
     x(k) = (b(c, off + j) * r(2) - r(1) * b(c + 1, off + j)) / n(pick)
@@ -254,8 +260,7 @@ contains
     integer, intent(in) :: c, off, pick
     real(wp), intent(out) :: y(2)
     integer :: j, k
-    j = mod(pick, 3) + 1
-    k = mod(j, 3) + 1
+    call others(pick, j, k)
     ! [rows(1,j) rows(2,j); rows(1,k) rows(2,k)] y = [rest(j); rest(k)], determinant n(pick)
     y(1) = (rest(j) * b(c + 1, off + k) - b(c + 1, off + j) * rest(k)) / n(pick)
     y(2) = (b(c, off + j) * rest(k) - rest(j) * b(c, off + k)) / n(pick)
