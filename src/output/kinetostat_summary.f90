@@ -77,11 +77,12 @@ contains
   end function summarized
 
   !> Add the rows now in the table (the run's rows row_offset+1 .., in order; the run
-  !> pipeline calls this for every block) to the run's tallies: per column its extremes
-  !> and the row and input coordinate of each, its sum and trapezoid sum; the largest
-  !> input step; the driver's work; the input coordinate next to the load edges. The sums
-  !> run in row order, so they are the same whatever the blocks and threads. The columns
-  !> are tallied each on its own (the same sums as row by row), in parallel with threads.
+  !> pipeline calls this for every block) to the run's tallies: per column the outputs read
+  !> (step_table_t's tallied) its extremes and the row and input coordinate of each, its sum
+  !> and trapezoid sum; the largest input step; the driver's work; the input coordinate next
+  !> to the load edges. The sums run in row order, so they are the same whatever the blocks
+  !> and threads. The columns are tallied each on its own (the same sums as row by row), in
+  !> parallel with threads.
   subroutine tally_rows(table)
     !> The results (the tallies are updated).
     type(step_table_t), intent(inout) :: table
@@ -89,7 +90,8 @@ contains
     integer, parameter :: tile_rows = 256
     !> Fewest rows worth a thread.
     integer, parameter :: min_rows_per_thread = 1024
-    integer :: k, c, row, d, nc, n, k1, k2, part, parts
+    integer :: k, c, i, row, d, nc, nt, n, k1, k2, part, parts
+    integer, allocatable :: tally(:)
     real(wp) :: x, coordinate, last_d, previous_at, before, term
     real(wp), allocatable :: at(:)
     logical, allocatable :: void(:)
@@ -155,17 +157,21 @@ contains
       table%run_tally%last_coordinate = coordinate
       table%run_tally%rows = row
     end do
-    ! the columns in `parts` contiguous shares (one per thread with OpenMP), each a tile of
-    ! rows at a time, all its columns over the tile (the tile stays in the cache)
+    ! the columns the run's outputs read (step_table_t's tallied), in `parts` contiguous
+    ! shares (one per thread with OpenMP), each a tile of rows at a time, all its columns over
+    ! the tile (the tile stays in the cache)
+    tally = pack([(c, c = 1, nc)], [(table%tallied(c), c = 1, nc)])
+    nt = size(tally)
     parts = 1
-    !$ parts = max(1, min(omp_get_max_threads(), nc, n / min_rows_per_thread))
-    !$omp parallel do schedule(static) num_threads(parts) private(c, k1, k2, before) if (parts > 1)
+    !$ parts = max(1, min(omp_get_max_threads(), nt, n / min_rows_per_thread))
+    !$omp parallel do schedule(static) num_threads(parts) private(c, i, k1, k2, before) if (parts > 1)
     do part = 1, parts
       before = previous_at
       do k1 = 1, n, tile_rows
         k2 = min(n, k1 + tile_rows - 1)
         if (k1 > 1) before = at(k1 - 1)
-        do c = (part - 1) * nc / parts + 1, part * nc / parts
+        do i = (part - 1) * nt / parts + 1, part * nt / parts
+          c = tally(i)
           call tally_column(table%run_tally%columns(c), table%rows(c, k1:k2), at(k1:k2), void(k1:k2), table%columns(c)%voidable, &
                             table%row_offset + k1 - 1, before)
         end do
