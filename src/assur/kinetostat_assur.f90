@@ -275,11 +275,14 @@ contains
     ! used in place, not moved out and back: a move of an array's descriptor costs more than
     ! a small mechanism's step takes)
     if (allocated(step%work_states)) then
-      if (size(step%work_states) /= 2 * nd + 2 .or. size(step%work_poses) /= nd) &
+      if (size(step%work_states) /= 2 * nd + 2 .or. size(step%work_poses) /= nd) then
         deallocate (step%work_states, step%work_poses, step%work_known, step%work_f_len)
+      end if
     end if
-    if (.not. allocated(step%work_states)) allocate (step%work_states(0:2 * nd + 1), step%work_poses(nd), &
-      step%work_known(0:2 * nd + 1), step%work_f_len(3 * nd + 1))
+    if (.not. allocated(step%work_states)) then
+      allocate (step%work_states(0:2 * nd + 1), step%work_poses(nd), step%work_known(0:2 * nd + 1), &
+                step%work_f_len(3 * nd + 1))
+    end if
     if (allocated(step%work_force_angle)) then
       if (size(step%work_force_angle) /= nf) deallocate (step%work_force_angle, step%work_force_dir)
     end if

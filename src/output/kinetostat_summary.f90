@@ -208,6 +208,10 @@ contains
     real(wp), intent(in) :: previous_at
     real(wp) :: v, x, last_at, tie, term
     integer :: k, row
+    ! the tally in a local copy while the rows run (its fields stay in registers instead of
+    ! going to memory and back every row)
+    type(column_tally_t) :: tl
+    tl = t
     last_at = previous_at
     do k = 1, size(values)
       v = values(k)
@@ -215,51 +219,52 @@ contains
       row = row_offset + k
       ! a cell without a value (void row) is left out of the extremes, sums and means
       if (voidable .and. void(k)) then
-        t%last_counted = .false.
+        tl%last_counted = .false.
         last_at = x
         cycle
       end if
-      t%largest = max(t%largest, abs(v))
-      if (t%count == 0) then
-        t = column_tally_t(max=v, min=v, max_row=row, min_row=row, max_at=x, min_at=x, peak=v, peak_row=row, &
+      tl%largest = max(tl%largest, abs(v))
+      if (tl%count == 0) then
+        tl = column_tally_t(max=v, min=v, max_row=row, min_row=row, max_at=x, min_at=x, peak=v, peak_row=row, &
                            peak_at=x, largest=abs(v), total=v, area2=0.0_wp, last=v, count=1, span=0.0_wp, &
                            last_counted=.true., total_scaled=v * value_scale, area2_scaled=0.0_wp)
         last_at = x
         cycle
       end if
-      tie = tie_rel * t%largest
-      if (v > t%max + tie) then
-        t%max = v
-        t%max_row = row
-        t%max_at = x
+      tie = tie_rel * tl%largest
+      if (v > tl%max + tie) then
+        tl%max = v
+        tl%max_row = row
+        tl%max_at = x
       end if
-      if (v < t%min - tie) then
-        t%min = v
-        t%min_row = row
-        t%min_at = x
+      if (v < tl%min - tie) then
+        tl%min = v
+        tl%min_row = row
+        tl%min_at = x
       end if
-      if (v > t%peak) then
-        t%peak = v
-        t%peak_row = row
-        t%peak_at = x
+      if (v > tl%peak) then
+        tl%peak = v
+        tl%peak_row = row
+        tl%peak_at = x
       end if
-      t%total = t%total + v
-      t%count = t%count + 1
-      if (t%last_counted) then
-        term = (v + t%last) * (x - last_at)
-        t%area2 = t%area2 + term
+      tl%total = tl%total + v
+      tl%count = tl%count + 1
+      if (tl%last_counted) then
+        term = (v + tl%last) * (x - last_at)
+        tl%area2 = tl%area2 + term
         ! (a term whose scaled value would be subnormal is left out of the scaled sum: it is
         ! below 1e-290 of any sum that overflowed, the only one that sum is used for, and
         ! subnormal arithmetic would take most of the run's summary time)
-        if (.not. abs(term) < tiny_term) t%area2_scaled = t%area2_scaled + (v * value_scale + t%last * value_scale) * &
+        if (.not. abs(term) < tiny_term) tl%area2_scaled = tl%area2_scaled + (v * value_scale + tl%last * value_scale) * &
                                                           (x * step_scale - last_at * step_scale)
-        t%span = t%span + (x - last_at)
+        tl%span = tl%span + (x - last_at)
       end if
-      t%total_scaled = t%total_scaled + v * value_scale
-      t%last = v
-      t%last_counted = .true.
+      tl%total_scaled = tl%total_scaled + v * value_scale
+      tl%last = v
+      tl%last_counted = .true.
       last_at = x
     end do
+    t = tl
   end subroutine tally_column
 
   !> Whether the driver's work is defined (a driving moment over the input angle in deg, or a
