@@ -20,7 +20,7 @@ module kinetostat_assur
   use kinetostat_text, only: int_str
   use kinetostat_format, only: trimmed_es
   use kinetostat_assur_kinematics, only: link_state_t, point_state_t, dyad_geometry_t, dyad_pose_t, &
-    point_on, crank_state, frame_state, set_dyad_pose, kind_names, pose_ok, pose_no_assembly
+    crank_state, frame_state, set_dyad_pose, kind_names, pose_ok, pose_no_assembly
   use kinetostat_assur_statics, only: dyad_reactions_t, dyad_reactions, pair_is_prismatic
   implicit none
   private
@@ -265,55 +265,45 @@ contains
     real(wp), intent(in), optional :: extra_scale
     !> All loads and reactions of links 0..2*nd+1 as summed for the equilibrium residual.
     type(link_balance_t), intent(out), optional :: balances(0:)
-    ! the links' frames, the dyads' poses and the links' loads: the workspace kept in `step`
-    ! from the step solved into it before (allocated once for a mechanism, no heap per step)
-    type(link_state_t), allocatable :: states(:)
-    type(dyad_pose_t), allocatable :: poses(:)
-    type(link_balance_t), allocatable :: known(:)
-    real(wp), allocatable :: f_len(:), force_angle(:), force_dir(:, :)
     integer :: nd, i, nf
 
     nd = size(mech%dyads)
     nf = size(mech%forces)
-    call move_alloc(step%work_states, states)
-    call move_alloc(step%work_poses, poses)
-    call move_alloc(step%work_known, known)
-    call move_alloc(step%work_f_len, f_len)
-    call move_alloc(step%work_force_angle, force_angle)
-    call move_alloc(step%work_force_dir, force_dir)
     call reset_step(step, 3 * nd + 1)
-    if (allocated(states)) then
-      if (size(states) /= 2 * nd + 2 .or. size(poses) /= nd) deallocate (states, poses, known, f_len)
+    ! the links' frames, the dyads' poses and the links' loads: the workspace kept in `step`
+    ! from the step solved into it before (allocated once for a mechanism, no heap per step;
+    ! used in place, not moved out and back: a move of an array's descriptor costs more than
+    ! a small mechanism's step takes)
+    if (allocated(step%work_states)) then
+      if (size(step%work_states) /= 2 * nd + 2 .or. size(step%work_poses) /= nd) then
+        deallocate (step%work_states, step%work_poses, step%work_known, step%work_f_len)
+      end if
     end if
-    if (.not. allocated(states)) allocate (states(0:2 * nd + 1), poses(nd), known(0:2 * nd + 1), f_len(3 * nd + 1))
-    if (allocated(force_angle)) then
-      if (size(force_angle) /= nf) deallocate (force_angle, force_dir)
+    if (.not. allocated(step%work_states)) then
+      allocate (step%work_states(0:2 * nd + 1), step%work_poses(nd), step%work_known(0:2 * nd + 1), &
+                step%work_f_len(3 * nd + 1))
     end if
-    if (.not. allocated(force_angle)) then
-      allocate (force_angle(nf), force_dir(2, nf))
+    if (allocated(step%work_force_angle)) then
+      if (size(step%work_force_angle) /= nf) deallocate (step%work_force_angle, step%work_force_dir)
+    end if
+    if (.not. allocated(step%work_force_angle)) then
+      allocate (step%work_force_angle(nf), step%work_force_dir(2, nf))
       do i = 1, nf
-        force_angle(i) = mech%forces(i)%angle
-        force_dir(:, i) = unit_at(force_angle(i))
+        step%work_force_angle(i) = mech%forces(i)%angle
+        step%work_force_dir(:, i) = unit_at(step%work_force_angle(i))
       end do
     end if
     do i = 1, nf
-      if (force_angle(i) /= mech%forces(i)%angle) then
-        force_angle(i) = mech%forces(i)%angle
-        force_dir(:, i) = unit_at(force_angle(i))
+      if (step%work_force_angle(i) /= mech%forces(i)%angle) then
+        step%work_force_angle(i) = mech%forces(i)%angle
+        step%work_force_dir(:, i) = unit_at(step%work_force_angle(i))
       end if
     end do
     ! the frames and poses are set by the kinematics; the loads are sums, from zero
     do i = 0, 2 * nd + 1
-      known(i) = link_balance_t()
+      step%work_known(i) = link_balance_t()
     end do
-    call step_in(mech, phi1, omega1, eps1, f_mag, m_mag, step, states, poses, known, f_len, force_dir, error, extra, &
-                 extra_power, extra_scale, balances)
-    call move_alloc(states, step%work_states)
-    call move_alloc(poses, step%work_poses)
-    call move_alloc(known, step%work_known)
-    call move_alloc(f_len, step%work_f_len)
-    call move_alloc(force_angle, step%work_force_angle)
-    call move_alloc(force_dir, step%work_force_dir)
+    call step_in(mech, phi1, omega1, eps1, f_mag, m_mag, step, error, extra, extra_power, extra_scale, balances)
   end subroutine assur_step
 
   !> `step` as a fresh assur_step_t (every scalar at its default) with its pair arrays for
@@ -355,23 +345,18 @@ contains
     step%m = 0.0_wp
   end subroutine reset_step
 
-  !> assur_step with its workspace: the frames `states` (links 0..2*nd+1), the poses `poses`
-  !> (nd), the loads `known` (links 0..2*nd+1, at their defaults) and the pair forces'
-  !> lengths `f_len` (3*nd+1: every pair force's length as the self-check takes it, N; each
-  !> is added to two links), each external force's [cos, sin] of its angle `force_dir`;
-  !> `step` reset.
-  pure subroutine step_in(mech, phi1, omega1, eps1, f_mag, m_mag, step, states, poses, known, f_len, force_dir, &
-                          error, extra, extra_power, extra_scale, balances)
+  !> assur_step on its reset `step`, with the workspace in it: the frames `states` (links
+  !> 0..2*nd+1), the poses `poses` (nd), the loads `known` (links 0..2*nd+1, at their
+  !> defaults), the pair forces' lengths `f_len` (3*nd+1: every pair force's length as the
+  !> self-check takes it, N; each is added to two links) and each external force's [cos, sin]
+  !> of its angle `force_dir`.
+  pure subroutine step_in(mech, phi1, omega1, eps1, f_mag, m_mag, step, error, extra, extra_power, extra_scale, &
+                          balances)
     type(assur_mech_t), intent(in) :: mech
     real(wp), intent(in) :: phi1, omega1, eps1
     real(wp), intent(in) :: f_mag(:)
     real(wp), intent(in) :: m_mag(:)
     type(assur_step_t), intent(inout) :: step
-    type(link_state_t), intent(inout) :: states(0:)
-    type(dyad_pose_t), intent(inout) :: poses(:)
-    type(link_balance_t), intent(inout) :: known(0:)
-    real(wp), intent(inout) :: f_len(:)
-    real(wp), intent(in) :: force_dir(:, :)
     type(error_t), allocatable, intent(out) :: error
     type(link_balance_t), intent(in), optional :: extra(0:)
     real(wp), intent(in), optional :: extra_power
@@ -382,109 +367,125 @@ contains
     real(wp) :: power, power_scale, term
     integer :: i, d, nd, k
 
-    nd = size(mech%dyads)
-    step%phi1 = phi1
-    step%omega1 = omega1
-    step%eps1 = eps1
-    call assur_kinematics(mech, phi1, states, poses, error)
-    if (allocated(error)) return
-    w2 = omega1**2
+    associate (states => step%work_states, poses => step%work_poses, known => step%work_known, &
+               f_len => step%work_f_len, force_dir => step%work_force_dir)
+      nd = size(mech%dyads)
+      step%phi1 = phi1
+      step%omega1 = omega1
+      step%eps1 = eps1
+      call assur_kinematics(mech, phi1, states, poses, error)
+      if (allocated(error)) return
+      w2 = omega1**2
 
-    ! applied loads on every moving link, summed about the link's origin; power terms
-    power = 0.0_wp
-    power_scale = 0.0_wp
-    do i = 1, ubound(states, 1)
-      associate (lk => mech%links(i), st => states(i))
-        ps = point_on(st, lk%s)
-        a_s = ps%a * w2 + ps%v * eps1
-        eps = st%eq * w2 + st%u * eps1
-        gw = gravity_force(lk%m, mech%g, mech%down)
-        phi_f = inertia_force(lk%m, a_s)
-        m_phi = inertia_moment(lk%j, eps)
-        call balance_add_force(known(i), st%o, ps%p, gw + phi_f)
-        call balance_add_couple(known(i), m_phi)
-        term = dot_product(gw + phi_f, ps%v)
-        power = power + term + m_phi * st%u
-        power_scale = power_scale + abs(term) + abs(m_phi * st%u)
-      end associate
-    end do
-    do k = 1, size(mech%forces)
-      associate (fo => mech%forces(k))
-        i = fo%link
-        ps = point_on(states(i), fo%at)
-        if (fo%follow) then
-          ! the force's own direction turned by the link's angle (its cos and sin at hand)
-          associate (e => force_dir(:, k), c => states(i)%cos_th, s => states(i)%sin_th)
-            dir = [c * e(1) - s * e(2), s * e(1) + c * e(2)]
-          end associate
-        else
-          dir = force_dir(:, k)
-        end if
-        call balance_add_force(known(i), states(i)%o, ps%p, f_mag(k) * dir)
-        term = dot_product(f_mag(k) * dir, ps%v)
-        power = power + term
-        power_scale = power_scale + abs(term)
-      end associate
-    end do
-    do k = 1, size(mech%moment_link)
-      i = mech%moment_link(k)
-      call balance_add_couple(known(i), m_mag(k))
-      power = power + m_mag(k) * states(i)%u
-      power_scale = power_scale + abs(m_mag(k) * states(i)%u)
-    end do
-    if (present(extra)) then
+      ! applied loads on every moving link, summed about the link's origin; power terms
+      power = 0.0_wp
+      power_scale = 0.0_wp
       do i = 1, ubound(states, 1)
-        call balance_add_balance(known(i), extra(i))
+        associate (lk => mech%links(i), st => states(i))
+          call point_motion(st, lk%s, ps)
+          a_s = ps%a * w2 + ps%v * eps1
+          eps = st%eq * w2 + st%u * eps1
+          gw = gravity_force(lk%m, mech%g, mech%down)
+          phi_f = inertia_force(lk%m, a_s)
+          m_phi = inertia_moment(lk%j, eps)
+          call balance_add_force(known(i), st%o, ps%p, gw + phi_f)
+          call balance_add_couple(known(i), m_phi)
+          term = dot_product(gw + phi_f, ps%v)
+          power = power + term + m_phi * st%u
+          power_scale = power_scale + abs(term) + abs(m_phi * st%u)
+        end associate
       end do
-    end if
-    if (present(extra_power)) power = power + extra_power
-    if (present(extra_scale)) power_scale = power_scale + extra_scale
-    ! the size of a driving effort these loads make
-    if (mech%drive_dyad == 0) then
-      step%load_scale = load_moment_scale(known(1:), mechanism_size(mech, poses))
-    else
-      step%load_scale = maxval(known(1:)%scale_f)
-    end if
-
-    if (mech%drive_dyad == 0) then
-      ! dyads from the last to the first; each passes its outer reactions to the links it hangs on
-      call back_substitute(mech, states, poses, known, step%f, step%n, step%m, error, f_len)
-      if (allocated(error)) return
-      ! crank: pin reaction from the frame and balancing moment about the pivot
-      step%m1 = -known(1)%sum_m
-      step%m1_power = -power
-      step%mismatch = power_mismatch(step%m1, step%m1_power, power_scale, step%load_scale)
-    else
-      call drive_by_actuator(mech, states, poses, known, power, power_scale, step, error)
-      if (allocated(error)) return
-      do k = 1, size(f_len)
-        f_len(k) = fast_magnitude(step%f(:, k))
+      do k = 1, size(mech%forces)
+        associate (fo => mech%forces(k))
+          i = fo%link
+          call point_motion(states(i), fo%at, ps)
+          if (fo%follow) then
+            ! the force's own direction turned by the link's angle (its cos and sin at hand)
+            associate (e => force_dir(:, k), c => states(i)%cos_th, s => states(i)%sin_th)
+              dir = [c * e(1) - s * e(2), s * e(1) + c * e(2)]
+            end associate
+          else
+            dir = force_dir(:, k)
+          end if
+          call balance_add_force(known(i), states(i)%o, ps%p, f_mag(k) * dir)
+          term = dot_product(f_mag(k) * dir, ps%v)
+          power = power + term
+          power_scale = power_scale + abs(term)
+        end associate
       end do
-    end if
-    step%power_scale = power_scale
+      do k = 1, size(mech%moment_link)
+        i = mech%moment_link(k)
+        call balance_add_couple(known(i), m_mag(k))
+        power = power + m_mag(k) * states(i)%u
+        power_scale = power_scale + abs(m_mag(k) * states(i)%u)
+      end do
+      if (present(extra)) then
+        do i = 1, ubound(states, 1)
+          call balance_add_balance(known(i), extra(i))
+        end do
+      end if
+      if (present(extra_power)) power = power + extra_power
+      if (present(extra_scale)) power_scale = power_scale + extra_scale
+      ! the size of a driving effort these loads make
+      if (mech%drive_dyad == 0) then
+        step%load_scale = load_moment_scale(known(1:), mechanism_size(mech, poses))
+      else
+        step%load_scale = maxval(known(1:)%scale_f)
+      end if
 
-    ! equilibrium residual of every moving link with all its loads and reactions
-    call balance_add_force(known(1), states(1)%o, states(1)%o, step%f(:, crank_pin_index(nd)), &
-                           f_len(crank_pin_index(nd)))
-    call balance_add_couple(known(1), step%m1)
-    do d = 1, nd
-      associate (pa => link_a(d), pb => link_b(d))
-        call balance_add_force(known(pa), states(pa)%o, poses(d)%p(:, 1), step%f(:, pair_index(d, 1)), &
-                               f_len(pair_index(d, 1)))
-        call balance_add_couple(known(pa), step%m(pair_index(d, 1)))
-        call balance_add_force(known(pa), states(pa)%o, poses(d)%p(:, 2), step%f(:, pair_index(d, 2)), &
-                               f_len(pair_index(d, 2)))
-        call balance_add_couple(known(pa), step%m(pair_index(d, 2)))
-        call balance_add_force(known(pb), states(pb)%o, poses(d)%p(:, 2), -step%f(:, pair_index(d, 2)), &
-                               f_len(pair_index(d, 2)))
-        call balance_add_couple(known(pb), -step%m(pair_index(d, 2)))
-        call balance_add_force(known(pb), states(pb)%o, poses(d)%p(:, 3), step%f(:, pair_index(d, 3)), &
-                               f_len(pair_index(d, 3)))
-        call balance_add_couple(known(pb), step%m(pair_index(d, 3)))
-      end associate
-    end do
-    step%residual = equilibrium_residual(known(1:))
-    if (present(balances)) balances = known
+      if (mech%drive_dyad == 0) then
+        ! dyads from the last to the first; each passes its outer reactions to the links it hangs on
+        call back_substitute(mech, states, poses, known, step%f, step%n, step%m, error, f_len)
+        if (allocated(error)) return
+        ! crank: pin reaction from the frame and balancing moment about the pivot
+        step%m1 = -known(1)%sum_m
+        step%m1_power = -power
+        step%mismatch = power_mismatch(step%m1, step%m1_power, power_scale, step%load_scale)
+      else
+        call drive_by_actuator(mech, power, power_scale, step, error)
+        if (allocated(error)) return
+        do k = 1, size(f_len)
+          f_len(k) = fast_magnitude(step%f(:, k))
+        end do
+      end if
+      step%power_scale = power_scale
+
+      ! equilibrium residual of every moving link with all its loads and reactions
+      call balance_add_force(known(1), states(1)%o, states(1)%o, step%f(:, crank_pin_index(nd)), &
+                             f_len(crank_pin_index(nd)))
+      call balance_add_couple(known(1), step%m1)
+      do d = 1, nd
+        associate (pa => link_a(d), pb => link_b(d))
+          call balance_add_force(known(pa), states(pa)%o, poses(d)%p(:, 1), step%f(:, pair_index(d, 1)), &
+                                 f_len(pair_index(d, 1)))
+          call balance_add_couple(known(pa), step%m(pair_index(d, 1)))
+          call balance_add_force(known(pa), states(pa)%o, poses(d)%p(:, 2), step%f(:, pair_index(d, 2)), &
+                                 f_len(pair_index(d, 2)))
+          call balance_add_couple(known(pa), step%m(pair_index(d, 2)))
+          call balance_add_force(known(pb), states(pb)%o, poses(d)%p(:, 2), -step%f(:, pair_index(d, 2)), &
+                                 f_len(pair_index(d, 2)))
+          call balance_add_couple(known(pb), -step%m(pair_index(d, 2)))
+          call balance_add_force(known(pb), states(pb)%o, poses(d)%p(:, 3), step%f(:, pair_index(d, 3)), &
+                                 f_len(pair_index(d, 3)))
+          call balance_add_couple(known(pb), step%m(pair_index(d, 3)))
+        end associate
+      end do
+      step%residual = equilibrium_residual(known(1:))
+      if (present(balances)) balances = known
+    end associate
+  contains
+    !> point_on(st, r) in place (inlined: a function's result of this size comes back
+    !> through memory, which costs a small mechanism's step more than the arithmetic).
+    pure subroutine point_motion(st, r, ps)
+      type(link_state_t), intent(in) :: st
+      real(wp), intent(in) :: r(2)
+      type(point_state_t), intent(out) :: ps
+      real(wp) :: w(2)
+      w = [st%cos_th * r(1) - st%sin_th * r(2), st%sin_th * r(1) + st%cos_th * r(2)]
+      ps%p = st%o + w
+      ps%v = st%vo + st%u * [-w(2), w(1)]
+      ps%a = st%ao + st%eq * [-w(2), w(1)] - st%u**2 * w
+    end subroutine point_motion
   end subroutine step_in
 
   !> Size of the mechanism at this position: the largest distance of a dyad's joint from
@@ -776,73 +777,71 @@ contains
   !> carries no balancing moment. Reactions are linear in the loads: one pass with the applied
   !> loads (crank moment M0), one with a unit actuator force (Mu); F_drive = -M0/Mu. Mu is
   !> -stroke' by virtual work, so Mu = 0 is a dead position of the actuator. Self-check: the
-  !> power balance F_drive*stroke' + sum of the loads' powers = 0. On return `known` holds the
+  !> power balance F_drive*stroke' + sum of the loads' powers = 0. On return `step%work_known` holds the
   !> applied loads, the actuator's forces and the reactions passed back by every dyad.
-  pure subroutine drive_by_actuator(mech, states, poses, known, power, power_scale, step, error)
+  pure subroutine drive_by_actuator(mech, power, power_scale, step, error)
     !> Mechanism.
     type(assur_mech_t), intent(in) :: mech
-    !> Frames of links 0..2*nd+1.
-    type(link_state_t), intent(in) :: states(0:)
-    !> Pose of each dyad.
-    type(dyad_pose_t), intent(in) :: poses(:)
-    !> Applied loads of every link (N, N*m about its origin).
-    type(link_balance_t), intent(inout) :: known(0:)
     !> Power analogue of the applied loads (N*m per rad of phi1) and its scale.
     real(wp), intent(in) :: power, power_scale
-    !> Results (f, n, m allocated and zero).
+    !> Results (f, n, m allocated and zero), with the frames of links 0..2*nd+1
+    !> (work_states), the pose of each dyad (work_poses) and the applied loads of every link
+    !> (work_known: N, N*m about its origin).
     type(assur_step_t), intent(inout) :: step
     !> Geometry error.
     type(error_t), allocatable, intent(out) :: error
-    type(link_balance_t) :: applied(0:ubound(known, 1)), unit(0:ubound(known, 1))
+    type(link_balance_t) :: applied(0:ubound(step%work_known, 1)), unit(0:ubound(step%work_known, 1))
     real(wp) :: fu(2, size(step%f, 2)), nu(size(step%n)), mu(size(step%m)), extend(2), at(2)
     real(wp) :: m1_loads, m1_unit, lever, ds
     integer :: sides(2), dd, jd, d, nd
-    nd = size(mech%dyads)
-    dd = mech%drive_dyad
-    jd = mech%drive_pair
-    sides = pair_sides(mech, dd, jd)
-    extend = poses(dd)%extend(:, jd)
-    at = poses(dd)%p(:, jd)
-    applied = known
-    call balance_add_force(unit(sides(1)), states(sides(1))%o, at, extend)
-    call balance_add_force(unit(sides(2)), states(sides(2))%o, at, -extend)
-    fu = 0.0_wp
-    nu = 0.0_wp
-    mu = 0.0_wp
-    call back_substitute(mech, states, poses, known, step%f, step%n, step%m, error)
-    if (allocated(error)) return
-    call back_substitute(mech, states, poses, unit, fu, nu, mu, error)
-    if (allocated(error)) return
-    m1_loads = -known(1)%sum_m
-    m1_unit = -unit(1)%sum_m
-    lever = 0.0_wp
-    do d = 1, 3
-      lever = max(lever, magnitude(poses(dd)%p(:, d) - mech%pivot))
-    end do
-    if (.not. abs(m1_unit) > drive_dead_rel * lever) then
-      call fatal_error(error, exit_geometry, dyad_label(mech, dd)//": the actuator (pair "//int_str(jd)// &
-        ") cannot move the input link here (dead position: |stroke'| = "//trimmed_es(abs(m1_unit), 3)//" m/rad)")
-      return
-    end if
-    step%f_drive = -m1_loads / m1_unit
-    step%f = step%f + step%f_drive * fu
-    step%n = step%n + step%f_drive * nu
-    step%m = step%m + step%f_drive * mu
-    step%m1 = 0.0_wp
-    ds = poses(dd)%stroke_v(jd)
-    step%stroke = poses(dd)%stroke(jd)
-    step%stroke_v = ds * step%omega1
-    step%stroke_a = poses(dd)%stroke_a(jd) * step%omega1**2 + ds * step%eps1
-    step%f_drive_power = -power / ds
-    step%mismatch = power_mismatch(step%f_drive, step%f_drive_power, power_scale / abs(ds), step%load_scale)
-    ! every link's loads with the final reactions, for the equilibrium residual
-    known = applied
-    call balance_add_force(known(sides(1)), states(sides(1))%o, at, step%f_drive * extend)
-    call balance_add_force(known(sides(2)), states(sides(2))%o, at, -step%f_drive * extend)
-    do d = nd, 1, -1
-      call pass_reactions(mech, states, poses, d, step%f(:, pair_index(d, 1):pair_index(d, 3)), &
-                          step%m(pair_index(d, 1):pair_index(d, 3)), known)
-    end do
+    associate (states => step%work_states, poses => step%work_poses, known => step%work_known)
+      nd = size(mech%dyads)
+      dd = mech%drive_dyad
+      jd = mech%drive_pair
+      sides = pair_sides(mech, dd, jd)
+      extend = poses(dd)%extend(:, jd)
+      at = poses(dd)%p(:, jd)
+      applied = known
+      call balance_add_force(unit(sides(1)), states(sides(1))%o, at, extend)
+      call balance_add_force(unit(sides(2)), states(sides(2))%o, at, -extend)
+      fu = 0.0_wp
+      nu = 0.0_wp
+      mu = 0.0_wp
+      call back_substitute(mech, states, poses, known, step%f, step%n, step%m, error)
+      if (allocated(error)) return
+      call back_substitute(mech, states, poses, unit, fu, nu, mu, error)
+      if (allocated(error)) return
+      m1_loads = -known(1)%sum_m
+      m1_unit = -unit(1)%sum_m
+      lever = 0.0_wp
+      do d = 1, 3
+        lever = max(lever, magnitude(poses(dd)%p(:, d) - mech%pivot))
+      end do
+      if (.not. abs(m1_unit) > drive_dead_rel * lever) then
+        call fatal_error(error, exit_geometry, dyad_label(mech, dd)//": the actuator (pair "//int_str(jd)// &
+          ") cannot move the input link here (dead position: |stroke'| = "//trimmed_es(abs(m1_unit), 3)//" m/rad)")
+        return
+      end if
+      step%f_drive = -m1_loads / m1_unit
+      step%f = step%f + step%f_drive * fu
+      step%n = step%n + step%f_drive * nu
+      step%m = step%m + step%f_drive * mu
+      step%m1 = 0.0_wp
+      ds = poses(dd)%stroke_v(jd)
+      step%stroke = poses(dd)%stroke(jd)
+      step%stroke_v = ds * step%omega1
+      step%stroke_a = poses(dd)%stroke_a(jd) * step%omega1**2 + ds * step%eps1
+      step%f_drive_power = -power / ds
+      step%mismatch = power_mismatch(step%f_drive, step%f_drive_power, power_scale / abs(ds), step%load_scale)
+      ! every link's loads with the final reactions, for the equilibrium residual
+      known = applied
+      call balance_add_force(known(sides(1)), states(sides(1))%o, at, step%f_drive * extend)
+      call balance_add_force(known(sides(2)), states(sides(2))%o, at, -step%f_drive * extend)
+      do d = nd, 1, -1
+        call pass_reactions(mech, states, poses, d, step%f(:, pair_index(d, 1):pair_index(d, 3)), &
+                            step%m(pair_index(d, 1):pair_index(d, 3)), known)
+      end do
+    end associate
   end subroutine drive_by_actuator
 
 end module kinetostat_assur

@@ -36,20 +36,29 @@ contains
   end function noise_floor
 
   !> Magnitude and angle (deg) columns of forces: [|f1|, angle1, |f2|, angle2, ...];
-  !> a force at or below `floor` is roundoff and gives 0, 0.
-  pure function force_columns(f, floor, angle_range) result(v)
+  !> a force at or below `floor` is roundoff and gives 0, 0. Without `angles` (a run whose
+  !> outputs show no angle: step_table_t's force_angles_wanted) the angle cells are 0.
+  pure function force_columns(f, floor, angle_range, angles) result(v)
     !> Forces, N (2 x n).
     real(wp), intent(in) :: f(:, :)
     !> Roundoff floor, N (see noise_floor).
     real(wp), intent(in) :: floor
     !> angles_0_360 or angles_pm180.
     integer, intent(in) :: angle_range
+    !> Whether the angles are computed (default true).
+    logical, intent(in), optional :: angles
     real(wp) :: v(2 * size(f, 2))
     real(wp) :: fi(2)
     integer :: i
     do i = 1, size(f, 2)
       fi = snap_noise(f(:, i), floor)
       v(2 * i - 1) = magnitude(fi)
+      if (present(angles)) then
+        if (.not. angles) then
+          v(2 * i) = 0.0_wp
+          cycle
+        end if
+      end if
       if (angle_range == angles_pm180) then
         v(2 * i) = angle_180_deg(fi)
       else

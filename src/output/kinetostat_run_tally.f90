@@ -158,7 +158,8 @@ module kinetostat_run_tally
     !> Rows of the run tallied so far (kinetostat_summary's tally_rows; run only, as the
     !> members below).
     integer :: rows = 0
-    !> Per column: what the rows so far showed (extremes, sums).
+    !> Per column: what the rows so far showed (extremes, sums); only the columns the run's
+    !> outputs read (step_table_t's tallied) are kept, the others stay at their defaults.
     type(column_tally_t), allocatable :: columns(:)
     !> Input coordinate of the first row tallied.
     real(wp) :: first_at = 0.0_wp

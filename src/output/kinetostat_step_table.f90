@@ -277,6 +277,7 @@ module kinetostat_step_table
     procedure :: put_pair_components
     procedure :: put_link_axes
     procedure :: shows
+    procedure :: tallied
     procedure :: finish_columns
     procedure :: set_columns
     procedure :: declare_columns
@@ -562,13 +563,12 @@ contains
     real(wp), intent(in) :: floor
     !> Angle of each force's frame in the position frame, deg (default: 0, the position frame).
     real(wp), intent(in), optional :: frame_angles(:)
+    real(wp) :: frame_angle
     integer :: i
+    frame_angle = 0.0_wp
     do i = 1, size(names)
-      if (present(frame_angles)) then
-        call self%put_components(k, trim(names(i)), force_components(f(:, i), floor), frame_angles(i))
-      else
-        call self%put_components(k, trim(names(i)), force_components(f(:, i), floor), 0.0_wp)
-      end if
+      if (present(frame_angles)) frame_angle = frame_angles(i)
+      call self%put_components(k, trim(names(i)), force_components(f(:, i), floor), frame_angle)
     end do
   end subroutine put_pair_components
 
@@ -695,6 +695,20 @@ contains
       shows = self%kinematics_shown .or. .not. self%columns(c)%kinematic
     end if
   end function shows
+
+  !> Whether the run's tally keeps column `c`'s extremes, sums and trapezoid sums
+  !> (kinetostat_summary's tally_rows): every column whose figures an output or a check of
+  !> the run reads (the summaries, the table's SUMMARY block, the driver's extremes and mean,
+  !> the overflow guard, the coarse-step warning), that is all but the input coordinate (its
+  !> first and last values and largest step are the run's own figures), a force's angle (a
+  !> direction has no extremes or mean) and a kinematics column CSV and JSON do not show.
+  pure logical function tallied(self, c)
+    class(step_table_t), intent(in) :: self
+    !> Column index.
+    integer, intent(in) :: c
+    tallied = c /= self%input_column .and. self%columns(c)%kind /= col_force_angle .and. &
+      (self%kinematics_shown .or. .not. self%columns(c)%kinematic)
+  end function tallied
 
   !> Set all columns at once from parallel lists of names, units and kinds.
   pure subroutine set_columns(self, names, units, kinds)
@@ -832,7 +846,14 @@ contains
     !> failure ends the program).
     type(error_t), allocatable, intent(out), optional :: error
     integer :: stat
-    if (allocated(self%rows)) deallocate (self%rows)
+    ! the block before's rows when they have the shape (no fresh pages for every block)
+    if (allocated(self%rows)) then
+      if (size(self%rows, 1) == size(self%columns) .and. size(self%rows, 2) == n) then
+        self%rows = 0.0_wp
+        return
+      end if
+      deallocate (self%rows)
+    end if
     allocate (self%rows(size(self%columns), n), source=0.0_wp, stat=stat)
     if (stat /= 0 .and. present(error)) call out_of_memory(error, "the rows of a block of "//int_str(n)// &
       " steps of "//int_str(size(self%columns))//" columns", 8_int64 * n * size(self%columns))

@@ -77,11 +77,12 @@ contains
   end function summarized
 
   !> Add the rows now in the table (the run's rows row_offset+1 .., in order; the run
-  !> pipeline calls this for every block) to the run's tallies: per column its extremes
-  !> and the row and input coordinate of each, its sum and trapezoid sum; the largest
-  !> input step; the driver's work; the input coordinate next to the load edges. The sums
-  !> run in row order, so they are the same whatever the blocks and threads. The columns
-  !> are tallied each on its own (the same sums as row by row), in parallel with threads.
+  !> pipeline calls this for every block) to the run's tallies: per column the outputs read
+  !> (step_table_t's tallied) its extremes and the row and input coordinate of each, its sum
+  !> and trapezoid sum; the largest input step; the driver's work; the input coordinate next
+  !> to the load edges. The sums run in row order, so they are the same whatever the blocks
+  !> and threads. The columns are tallied each on its own (the same sums as row by row), in
+  !> parallel with threads.
   subroutine tally_rows(table)
     !> The results (the tallies are updated).
     type(step_table_t), intent(inout) :: table
@@ -89,7 +90,8 @@ contains
     integer, parameter :: tile_rows = 256
     !> Fewest rows worth a thread.
     integer, parameter :: min_rows_per_thread = 1024
-    integer :: k, c, row, d, nc, n, k1, k2, part, parts
+    integer :: k, c, i, row, d, nc, nt, n, k1, k2, part, parts
+    integer, allocatable :: tally(:)
     real(wp) :: x, coordinate, last_d, previous_at, before, term
     real(wp), allocatable :: at(:)
     logical, allocatable :: void(:)
@@ -155,17 +157,21 @@ contains
       table%run_tally%last_coordinate = coordinate
       table%run_tally%rows = row
     end do
-    ! the columns in `parts` contiguous shares (one per thread with OpenMP), each a tile of
-    ! rows at a time, all its columns over the tile (the tile stays in the cache)
+    ! the columns the run's outputs read (step_table_t's tallied), in `parts` contiguous
+    ! shares (one per thread with OpenMP), each a tile of rows at a time, all its columns over
+    ! the tile (the tile stays in the cache)
+    tally = pack([(c, c = 1, nc)], [(table%tallied(c), c = 1, nc)])
+    nt = size(tally)
     parts = 1
-    !$ parts = max(1, min(omp_get_max_threads(), nc, n / min_rows_per_thread))
-    !$omp parallel do schedule(static) num_threads(parts) private(c, k1, k2, before) if (parts > 1)
+    !$ parts = max(1, min(omp_get_max_threads(), nt, n / min_rows_per_thread))
+    !$omp parallel do schedule(static) num_threads(parts) private(c, i, k1, k2, before) if (parts > 1)
     do part = 1, parts
       before = previous_at
       do k1 = 1, n, tile_rows
         k2 = min(n, k1 + tile_rows - 1)
         if (k1 > 1) before = at(k1 - 1)
-        do c = (part - 1) * nc / parts + 1, part * nc / parts
+        do i = (part - 1) * nt / parts + 1, part * nt / parts
+          c = tally(i)
           call tally_column(table%run_tally%columns(c), table%rows(c, k1:k2), at(k1:k2), void(k1:k2), table%columns(c)%voidable, &
                             table%row_offset + k1 - 1, before)
         end do
@@ -202,6 +208,10 @@ contains
     real(wp), intent(in) :: previous_at
     real(wp) :: v, x, last_at, tie, term
     integer :: k, row
+    ! the tally in a local copy while the rows run (its fields stay in registers instead of
+    ! going to memory and back every row)
+    type(column_tally_t) :: tl
+    tl = t
     last_at = previous_at
     do k = 1, size(values)
       v = values(k)
@@ -209,51 +219,52 @@ contains
       row = row_offset + k
       ! a cell without a value (void row) is left out of the extremes, sums and means
       if (voidable .and. void(k)) then
-        t%last_counted = .false.
+        tl%last_counted = .false.
         last_at = x
         cycle
       end if
-      t%largest = max(t%largest, abs(v))
-      if (t%count == 0) then
-        t = column_tally_t(max=v, min=v, max_row=row, min_row=row, max_at=x, min_at=x, peak=v, peak_row=row, &
+      tl%largest = max(tl%largest, abs(v))
+      if (tl%count == 0) then
+        tl = column_tally_t(max=v, min=v, max_row=row, min_row=row, max_at=x, min_at=x, peak=v, peak_row=row, &
                            peak_at=x, largest=abs(v), total=v, area2=0.0_wp, last=v, count=1, span=0.0_wp, &
                            last_counted=.true., total_scaled=v * value_scale, area2_scaled=0.0_wp)
         last_at = x
         cycle
       end if
-      tie = tie_rel * t%largest
-      if (v > t%max + tie) then
-        t%max = v
-        t%max_row = row
-        t%max_at = x
+      tie = tie_rel * tl%largest
+      if (v > tl%max + tie) then
+        tl%max = v
+        tl%max_row = row
+        tl%max_at = x
       end if
-      if (v < t%min - tie) then
-        t%min = v
-        t%min_row = row
-        t%min_at = x
+      if (v < tl%min - tie) then
+        tl%min = v
+        tl%min_row = row
+        tl%min_at = x
       end if
-      if (v > t%peak) then
-        t%peak = v
-        t%peak_row = row
-        t%peak_at = x
+      if (v > tl%peak) then
+        tl%peak = v
+        tl%peak_row = row
+        tl%peak_at = x
       end if
-      t%total = t%total + v
-      t%count = t%count + 1
-      if (t%last_counted) then
-        term = (v + t%last) * (x - last_at)
-        t%area2 = t%area2 + term
+      tl%total = tl%total + v
+      tl%count = tl%count + 1
+      if (tl%last_counted) then
+        term = (v + tl%last) * (x - last_at)
+        tl%area2 = tl%area2 + term
         ! (a term whose scaled value would be subnormal is left out of the scaled sum: it is
         ! below 1e-290 of any sum that overflowed, the only one that sum is used for, and
         ! subnormal arithmetic would take most of the run's summary time)
-        if (.not. abs(term) < tiny_term) t%area2_scaled = t%area2_scaled + (v * value_scale + t%last * value_scale) * &
+        if (.not. abs(term) < tiny_term) tl%area2_scaled = tl%area2_scaled + (v * value_scale + tl%last * value_scale) * &
                                                           (x * step_scale - last_at * step_scale)
-        t%span = t%span + (x - last_at)
+        tl%span = tl%span + (x - last_at)
       end if
-      t%total_scaled = t%total_scaled + v * value_scale
-      t%last = v
-      t%last_counted = .true.
+      tl%total_scaled = tl%total_scaled + v * value_scale
+      tl%last = v
+      tl%last_counted = .true.
       last_at = x
     end do
+    t = tl
   end subroutine tally_column
 
   !> Whether the driver's work is defined (a driving moment over the input angle in deg, or a

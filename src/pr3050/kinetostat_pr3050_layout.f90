@@ -184,7 +184,7 @@ contains
     !$omp parallel do schedule(static) private(floor, n21, m21)
     do k = 1, size(steps)
       associate (v => table%rows(:, k), s => steps(k))
-        v(1:nc) = pr3050_csv_values(s, phi3rel(self%deck, first - 1 + k))
+        v(1:nc) = pr3050_csv_values(s, phi3rel(self%deck, first - 1 + k), table%force_angles_wanted)
         floor = noise_rel * maxval(abs(v(2:8:2)))
         n21 = s%n21
         if (abs(n21) <= floor) n21 = 0.0_wp
@@ -288,17 +288,19 @@ contains
 
   !> The row of CSV values of one step.
   !> Forces below `noise_rel` times the step's largest force are roundoff: printed as 0 with angle 0.
-  pure function pr3050_csv_values(s, phi3rel) result(v)
+  pure function pr3050_csv_values(s, phi3rel, angles) result(v)
     !> Results of the step.
     type(pr3050_step_t), intent(in) :: s
     !> Rocker angle from the first step, phi3 - phi3_start (the original's F13G), deg.
     real(wp), intent(in) :: phi3rel
+    !> Whether the forces' angles are computed (default true; else 0).
+    logical, intent(in), optional :: angles
     real(wp) :: v(csv_size)
     real(wp) :: floor, f(2, 3)
     f = reshape([s%f14, s%f34, s%f32], [2, 3])
     floor = noise_floor(f, [s%f2])
     v(1) = phi3rel
-    v(2:7) = force_columns(f, floor, angles_0_360)
+    v(2:7) = force_columns(f, floor, angles_0_360, angles)
     v(8) = s%f2
     if (abs(v(8)) <= floor) v(8) = 0.0_wp
   end function pr3050_csv_values

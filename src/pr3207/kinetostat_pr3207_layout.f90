@@ -176,7 +176,7 @@ contains
     if (allocated(error)) return
     !$omp parallel do schedule(static)
     do k = 1, size(steps)
-      table%rows(1:row_size, k) = pr3207_csv_values(steps(k), self%deck%p%l_ab)
+      table%rows(1:row_size, k) = pr3207_csv_values(steps(k), self%deck%p%l_ab, table%force_angles_wanted)
     end do
     !$omp end parallel do
     if (allocated(motions)) then
@@ -225,17 +225,19 @@ contains
 
   !> The row of values of one step. Forces below `noise_rel` times the step's largest
   !> force (and M1 below that force times l_AB) are roundoff: printed as 0 with angle 0.
-  pure function pr3207_csv_values(s, l_ab) result(v)
+  pure function pr3207_csv_values(s, l_ab, angles) result(v)
     !> One computed step.
     type(pr3207_step_t), intent(in) :: s
     !> Crank length, m (moment scale).
     real(wp), intent(in) :: l_ab
+    !> Whether the forces' angles are computed (default true; else 0).
+    logical, intent(in), optional :: angles
     real(wp) :: v(row_size)
     real(wp) :: floor, f(2, size(force_names))
     f = pair_forces(s)
     floor = noise_floor(f, [real(wp) ::])
     v(1) = s%phi1 * rad_to_deg
-    v(2:11) = force_columns(f, floor, angles_0_360)
+    v(2:11) = force_columns(f, floor, angles_0_360, angles)
     v(12) = s%m1
     if (abs(v(12)) <= floor * l_ab) v(12) = 0.0_wp
   end function pr3207_csv_values

@@ -225,7 +225,7 @@ contains
     if (allocated(error)) return
     !$omp parallel do schedule(static)
     do k = 1, size(steps)
-      table%rows(1:row_size, k) = sixbar_csv_values(steps(k), self%deck%p%l1)
+      table%rows(1:row_size, k) = sixbar_csv_values(steps(k), self%deck%p%l1, table%force_angles_wanted)
     end do
     !$omp end parallel do
     if (allocated(motions)) then
@@ -313,17 +313,19 @@ contains
 
   !> The row of values of one step. Forces below `noise_rel` times the step's largest
   !> force (and M1 below that force times l1) are roundoff: printed as 0 with angle 0.
-  pure function sixbar_csv_values(s, l1) result(v)
+  pure function sixbar_csv_values(s, l1, angles) result(v)
     !> One computed step.
     type(sixbar_step_t), intent(in) :: s
     !> Crank length, m (moment scale).
     real(wp), intent(in) :: l1
+    !> Whether the forces' angles are computed (default true; else 0).
+    logical, intent(in), optional :: angles
     real(wp) :: v(row_size)
     real(wp) :: floor, f(2, size(force_names))
     f = pair_forces(s)
     floor = noise_floor(f(:, 1:6), [s%f56])
     v(1) = s%pos%phi1 * rad_to_deg
-    v(2:13) = force_columns(f(:, 1:6), floor, angles_pm180)
+    v(2:13) = force_columns(f(:, 1:6), floor, angles_pm180, angles)
     v(14) = s%f56
     if (abs(v(14)) <= floor) v(14) = 0.0_wp
     v(15) = s%m1
