@@ -42,7 +42,7 @@ module kinetostat_plans_draw
     component_normal, component_tangential, component_coriolis, component_relative, component_reaction, load_moment, perp
   use kinetostat_plans_apart, only: draw_group_apart, guide_reactions_placed, apart_pitch => row_pitch
   use kinetostat_plans_sheet, only: plans_sheet_t, turn, chain_tips, polygon_tips, panel_inner, panel_head, &
-    input_link_drawing, fit_kinematic_plans, note_size, least_note_size, note_pitch
+    input_link_drawing, fit_kinematic_plans, note_size, least_note_size, note_pitch, plan_inner
   implicit none
   private
   public :: draw_plans_sheet, display_name, draw_kinematic_plans, values_table_height
@@ -340,16 +340,18 @@ contains
     logical, intent(in) :: accel
     integer, intent(in) :: lang
     real(wp), allocatable :: tips(:, :), ends(:, :)
-    real(wp) :: q(2), p(2), t(2), area(4), labels_area(4), pole_font, short_font, notes_top, y
+    real(wp) :: q(2), p(2), t(2), area(4), labels_area(4), pole_font, short_font
     character(len=:), allocatable :: short, at_pole
-    !> The notes' lines (what is at the pole, what is too short to draw).
-    character(len=note_length), allocatable :: pole_lines(:), short_lines(:)
+    !> The notes' lines (what is at the pole, what is too short to draw), all of them with
+    !> their font sizes and baselines, mm.
+    character(len=note_length), allocatable :: pole_lines(:), short_lines(:), note_text(:)
+    real(wp), allocatable :: note_font(:), note_y(:)
     character(len=16), allocatable :: names(:)
     character(len=1), allocatable :: kinds(:)
     integer :: i, e, j, n_labels, attempt
     type(sheet_t) :: unlabelled
     integer :: crowded, fewest, best
-    area = panel_inner(box)
+    area = plan_inner(box)
     short = ""
     at_pole = ""
     ! the plan's group: where its pole is and its scale (a point of the plan v is drawn at
@@ -410,9 +412,17 @@ contains
       area(3) - area(1) - 2.0_wp, pole_lines, pole_font)
     if (len(short) > 0) call note_lines(word("not drawn, shorter than 1 mm", lang)//": "//short, &
       area(3) - area(1) - 2.0_wp, short_lines, short_font)
+    ! (every line's baseline from the last, on the area's foot, up: a line's pitch the larger
+    ! font's of the two times note_pitch)
+    note_text = [character(len=note_length) :: pole_lines, short_lines]
+    note_font = [spread(pole_font, 1, size(pole_lines)), spread(short_font, 1, size(short_lines))]
+    allocate (note_y(size(note_text)))
     labels_area = area
-    notes_top = area(4) - note_pitch * (pole_font * size(pole_lines) + short_font * size(short_lines))
-    if (size(pole_lines) + size(short_lines) > 0) labels_area(4) = notes_top
+    do i = size(note_text), 1, -1
+      note_y(i) = area(4)
+      if (i < size(note_text)) note_y(i) = note_y(i + 1) - note_pitch * max(note_font(i), note_font(i + 1))
+      labels_area(4) = note_y(i) - note_pitch * note_font(i)
+    end do
     ! in the order pole, images, components; when one of them finds no spot off the lines
     ! whose leader line crosses no label (a plan drawn small, its labels crowding round the
     ! pole), the other orders (label_orders, label_outward) are tried in turn: the first that
@@ -437,14 +447,8 @@ contains
       call place_labels(sheet, best, crowded)
     end if
     ! what is at the pole, what is too short to draw
-    y = notes_top
-    do i = 1, size(pole_lines)
-      y = y + note_pitch * pole_font
-      call sheet%text(area(1) + 1.0_wp, y, trim(pole_lines(i)), "note", size=pole_font)
-    end do
-    do i = 1, size(short_lines)
-      y = y + note_pitch * short_font
-      call sheet%text(area(1) + 1.0_wp, y, trim(short_lines(i)), "note", size=short_font)
+    do i = 1, size(note_text)
+      call sheet%text(area(1) + 1.0_wp, note_y(i), trim(note_text(i)), "note", size=note_font(i))
     end do
     call sheet%end_group()
     call sheet%set_layer(merge(layer_aplan, layer_vplan, accel))

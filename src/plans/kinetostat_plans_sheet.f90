@@ -25,7 +25,7 @@ module kinetostat_plans_sheet
   implicit none
   private
   public :: plans_sheet_t, plans_sheet, turn, chain_tips, polygon_tips, panel_inner, lever_arrow, panel_head, &
-    group_text, input_link_drawing, fit_kinematic_plans, plan_margin
+    group_text, input_link_drawing, fit_kinematic_plans, plan_margin, plan_inner
 
   !> Room kept around a drawing in its panel for its labels and arrows, mm (a plan of
   !> velocities or accelerations: as much on a large panel, less on a small one: plan_margin).
@@ -204,9 +204,9 @@ contains
       ! the mechanism at a ГОСТ 2.302 scale
       call fit_mechanism_view(drawing, panel_inner(sheet%mechanism), 6.0_wp, sheet%view)
       ! the plans: the images and the corners of the equations' chains
-      call fit_noted_plan(plans%velocities, plans%velocity_equations, r, panel_inner(sheet%velocity), sheet%mu_v, &
+      call fit_noted_plan(plans%velocities, plans%velocity_equations, r, plan_inner(sheet%velocity), sheet%mu_v, &
         sheet%pole_v)
-      call fit_noted_plan(plans%accelerations, plans%equations, r, panel_inner(sheet%acceleration), sheet%mu_a, &
+      call fit_noted_plan(plans%accelerations, plans%equations, r, plan_inner(sheet%acceleration), sheet%mu_a, &
         sheet%pole_a)
     end if
     sheet%mu_l = sheet%view%mu_l()
@@ -398,16 +398,17 @@ contains
     geo%rotation = view%rotation
     geo%velocity = velocity
     geo%acceleration = acceleration
-    call fit_noted_plan(plans%velocities, plans%velocity_equations, geo%rotation, panel_inner(velocity), geo%mu_v, &
+    call fit_noted_plan(plans%velocities, plans%velocity_equations, geo%rotation, plan_inner(velocity), geo%mu_v, &
       geo%pole_v)
-    call fit_noted_plan(plans%accelerations, plans%equations, geo%rotation, panel_inner(acceleration), geo%mu_a, &
+    call fit_noted_plan(plans%accelerations, plans%equations, geo%rotation, plan_inner(acceleration), geo%mu_a, &
       geo%pole_a)
   end subroutine fit_kinematic_plans
 
   !> A plan of velocities or accelerations in `area` (a panel's drawing area, x0, y0, x1, y1,
   !> mm): its round scale mu and its pole (fit_plan) with plan_margin around it and, at its
   !> foot, the lines of its notes (what lies at the pole, what is too short to draw at mu:
-  !> note_lines_needed, refitted at the larger mu they leave until they need no more lines).
+  !> note_lines_needed) in the lower half of the margin, the area raised by what they need
+  !> more; refitted at the larger mu they leave until they need no more lines.
   pure subroutine fit_noted_plan(images, equations, r, area, mu, pole)
     type(plan_vector_t), intent(in) :: images(:)
     type(plan_equation_t), intent(in) :: equations(:)
@@ -419,8 +420,10 @@ contains
     pts = turned_plan_points(images, equations, r)
     lines = 0
     do tries = 1, 8
-      room = area - [0.0_wp, 0.0_wp, 0.0_wp, note_band(lines)]
-      call fit_plan(pts, room, mu, pole, plan_margin(room))
+      ! (the notes in the lower half of the margin, the area raised by what they need more)
+      room = area
+      room(4) = area(4) - max(0.0_wp, note_band(lines) - 0.5_wp * plan_margin(area))
+      call fit_plan(pts, room, mu, pole, plan_margin(area))
       more = note_lines_needed(images, equations, mu, area(3) - area(1) - 2.0_wp)
       if (more <= lines) exit
       lines = more
@@ -662,6 +665,14 @@ contains
     real(wp) :: area(4)
     area = [box(1) + 2.0_wp, box(2) + panel_head, box(3) - 2.0_wp, box(4) - panel_foot]
   end function panel_inner
+
+  !> A plan's drawing area in its panel: less its heading band and the 6.5 mm its scale line
+  !> needs at its foot (its notes stand right above that line).
+  pure function plan_inner(box) result(area)
+    real(wp), intent(in) :: box(4)
+    real(wp) :: area(4)
+    area = [box(1) + 2.0_wp, box(2) + panel_head, box(3) - 2.0_wp, box(4) - 6.5_wp]
+  end function plan_inner
 
   !> v turned by `angle` rad counterclockwise.
   pure function turn(v, angle) result(w)
