@@ -571,7 +571,8 @@ PATH="$sheets_path"
 
 # The plans of velocities and accelerations fill their panels on every paper: each plan's
 # drawing (its rays, components, pole and images) is at least PERCENT % of its panel's smaller
-# side across (its larger extent; A4's second kinematics sheet, A3 and A2 reused from above),
+# side across (its larger extent; 35 % on A4's second kinematics sheet, A2 and A1, 25 % on A3;
+# the sheets of the checks above),
 # every word of the plan (its labels and its notes "at the pole π: ...", "not drawn, shorter
 # than 1 mm: ...") inside its panel, no note smaller than 1.8 mm (ГОСТ 2.304's smallest).
 # Must fail: a plan drawn at half its size, a note moved 80 mm right, past its panel's edge.
@@ -622,7 +623,8 @@ print("differs: " + "; ".join(bad[:6]) if bad else f"ok {seen} plans, the smalle
 PY
 }
 sheets_fill_svgs="$cli_tmp/sheets_a4_class3_en/kinematics-2.svg $cli_tmp/sheets_a4_pr3207/kinematics-2.svg"
-sheets_fill_svgs="$sheets_fill_svgs $cli_tmp/sheets_A3_pr3207_flywheel_en/kinematics.svg $cli_tmp/sheets_A2_pr3207_flywheel_ru/kinematics.svg"
+sheets_fill_svgs="$sheets_fill_svgs $cli_tmp/sheets_A2_pr3207_flywheel_ru/kinematics.svg"
+sheets_fill_a3="$cli_tmp/sheets_A3_pr3207_flywheel_en/kinematics.svg"
 sheets_fill_svgs="$sheets_fill_svgs $cli_tmp/sheets_class3_en/kinematics.svg"
 # (assur_pr3207_flywheel on A3: its acceleration plan's note "at the pole π: j16, ..." as wide
 # as its panel; a few seconds, with --long)
@@ -633,10 +635,13 @@ if [ "${KINETOSTAT_LONG:-0}" = 1 ]; then
   [ "$rc" -eq 0 ] || fail sheets-plans-fill-run "exit $rc: $(head -c 300 "$err")"
   python3 "$sheets_check" labels --lines "$dir/kinematics.svg" >"$cli_tmp/check.out" 2>&1 && pass \
     || fail sheets-plans-fill-assur-A3-legible "$(grep -v '^[0-9]* sheets' "$cli_tmp/check.out" | head -3)"
-  sheets_fill_svgs="$sheets_fill_svgs $dir/kinematics.svg"
+  sheets_fill_a3="$sheets_fill_a3 $dir/kinematics.svg"
 fi
 verdict=$(sheets_plans_fill 35 $sheets_fill_svgs)
 case "$verdict" in ok*) pass ;; *) fail sheets-plans-fill "$verdict" ;; esac
+# (A3: its third column holds the values, the two plans and the values read off: 25 %)
+verdict=$(sheets_plans_fill 25 $sheets_fill_a3)
+case "$verdict" in ok*) pass ;; *) fail sheets-plans-fill-A3 "$verdict" ;; esac
 # must fail: the acceleration plan drawn at half its size about its pole; a note moved 80 mm
 # right, past the panel's edge
 svg="$cli_tmp/sheets_a4_class3_en/kinematics-2.svg"
@@ -647,10 +652,12 @@ start = t.index('<g class="acceleration-plan"')
 end = t.index("</g>", start)
 px, py = (float(v) for v in re.search(r'data-pole="([-0-9.]+) ([-0-9.]+)"', t[start:]).groups())
 half = lambda m, o: f"{o + 0.5 * (float(m) - o):.2f}"
-body = re.sub(r'(x[12]?|cx)="([-0-9.]+)"', lambda m: f'{m.group(1)}="{half(m.group(2), px)}"', t[start:end])
-body = re.sub(r'(y[12]?|cy)="([-0-9.]+)"', lambda m: f'{m.group(1)}="{half(m.group(2), py)}"', body)
-body = re.sub(r'points="([^"]*)"', lambda m: 'points="' + " ".join(
-    f"{half(a, px)},{half(b, py)}" for a, b in (p.split(",") for p in m.group(1).split())) + '"', body)
+def shrink(el):
+    el = re.sub(r' (x1|x2|cx)="([-0-9.]+)"', lambda m: f' {m.group(1)}="{half(m.group(2), px)}"', el.group(0))
+    el = re.sub(r' (y1|y2|cy)="([-0-9.]+)"', lambda m: f' {m.group(1)}="{half(m.group(2), py)}"', el)
+    return re.sub(r'points="([^"]*)"', lambda m: 'points="' + " ".join(
+        f"{half(a, px)},{half(b, py)}" for a, b in (p.split(",") for p in m.group(1).split())) + '"', el)
+body = re.sub(r'<(?:line|circle|polygon) [^>]*>', shrink, t[start:end])
 print(t[:start] + body + t[end:], end="")
 PY
 verdict=$(sheets_plans_fill 35 "$cli_tmp/fill_bad.svg")
