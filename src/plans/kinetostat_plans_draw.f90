@@ -414,6 +414,7 @@ contains
       area(3) - area(1) - 2.0_wp, short_lines, short_font)
     ! (every line's baseline from the last, on the area's foot, up: a line's pitch the larger
     ! font's of the two times note_pitch)
+    allocate (note_text(0), note_font(0))
     note_text = [character(len=note_length) :: pole_lines, short_lines]
     note_font = [spread(pole_font, 1, size(pole_lines)), spread(short_font, 1, size(short_lines))]
     allocate (note_y(size(note_text)))
@@ -964,12 +965,12 @@ contains
     real(wp), intent(out) :: font
     character(len=:), allocatable :: line, rest
     integer :: cut, i
+    allocate (lines(0))
     font = fitted_size(text, note_size, width, 0.6_wp)
     if (font >= least_note_size) then
       lines = [character(len=note_length) :: text]
       return
     end if
-    allocate (lines(0))
     line = ""
     rest = text
     do while (len(rest) > 0)
@@ -1143,8 +1144,9 @@ contains
       integer :: i
       legible = .true.
       do i = 1, n
-        if (fitted_size(value_text(plans%values(i), lang), font, (w - 4.0_wp) / c - 1.5_wp, 0.6_wp) < 1.8_wp) &
+        if (fitted_size(value_text(plans%values(i), lang), font, (w - 4.0_wp) / c - 1.5_wp, 0.6_wp) < 1.8_wp) then
           legible = .false.
+        end if
       end do
     end function legible
   end subroutine values_layout
@@ -1165,8 +1167,9 @@ contains
     do c = 4, 1, -1
       fits = .true.
       do i = 1, n
-        if (fitted_size(value_text(plans%values(i), lang), 1.8_wp, (w - 4.0_wp) / c - 1.5_wp, 0.6_wp) < 1.8_wp) &
+        if (fitted_size(value_text(plans%values(i), lang), 1.8_wp, (w - 4.0_wp) / c - 1.5_wp, 0.6_wp) < 1.8_wp) then
           fits = .false.
+        end if
       end do
       if (fits .or. c == 1) exit
     end do

@@ -417,6 +417,7 @@ contains
     real(wp), allocatable :: pts(:, :)
     real(wp) :: room(4)
     integer :: lines, more, tries
+    allocate (pts(2, 0))
     pts = turned_plan_points(images, equations, r)
     lines = 0
     do tries = 1, 8
@@ -455,12 +456,13 @@ contains
     integer, allocatable :: pieces(:)
     integer :: i, e, j
     lines = 0
-    pieces = [integer ::]
+    allocate (pieces(0))
     do i = 1, size(images)
       if (norm2(images(i)%v) / mu < 1.0_wp) pieces = [pieces, len_trim(images(i)%name) + 3]
     end do
     if (size(pieces) > 0) lines = lines + packed_lines(len("at the pole π: "), pieces)
-    pieces = [integer ::]
+    deallocate (pieces)
+    allocate (pieces(0))
     do e = 1, size(equations)
       do j = 1, size(equations(e)%vectors)
         associate (v => equations(e)%vectors(j)%v)
