@@ -30,7 +30,7 @@ module kinetostat_kinematics_sheet
   use kinetostat_plans_base, only: slide_t, slides_of, slide_is_pair, lists, sliding_on, plan_group_t
   use kinetostat_plans_groups, only: plan_groups
   use kinetostat_plans_base, only: plans_t
-  use kinetostat_plans_draw, only: draw_kinematic_plans
+  use kinetostat_plans_draw, only: draw_kinematic_plans, values_table_height
   use kinetostat_run_sheet, only: wrapped, note_length
   use kinetostat_mechanism_sheet, only: fitted_size
   implicit none
@@ -39,6 +39,8 @@ module kinetostat_kinematics_sheet
 
   !> Gap between panels, mm.
   real(wp), parameter :: gap = 6.0_wp
+  !> Pitch of the rows of the values at the position in two tables side by side, mm.
+  real(wp), parameter :: compact_pitch = 3.8_wp
 
 contains
 
@@ -76,7 +78,9 @@ contains
     !> and the values read off them); A1 .. A3 landscape draw everything on one sheet.
     integer, intent(in), optional :: part
     type(paper_t) :: page
-    integer :: part_drawn, n_read
+    integer :: part_drawn
+    !> The values at the position in two tables side by side (the points', the links').
+    logical :: compact
     !> The bottom of the panels (A4: above the title block) and the height of the values
     !> read off the plans (A4), mm.
     real(wp) :: bottom, h_read
@@ -118,8 +122,12 @@ contains
     top = inner(2) + 24.0_wp
     ! (A4: the panels stop above the title block, which spans the frame's width)
     bottom = inner(4) - block_height - gap
+    ! (the values at the position: the points' and the links' tables side by side in a column
+    ! narrower than 200 mm: A2, A3, A4's second sheet)
+    compact = .false.
     if (part_drawn == 0) then
       cw = (inner(3) - inner(1) - 4.0_wp * gap) / 3.0_wp
+      compact = cw < 200.0_wp
       x1 = inner(1) + gap
       x2 = x1 + cw + gap
       x3 = x2 + cw + gap
@@ -135,7 +143,9 @@ contains
         region = [x1, top, x1 + cw, bottom - gap - min(0.45_wp * (bottom - top), 34.0_wp + 4.5_wp * &
           real(size(groups) + 1, wp) + 4.2_wp * real(lower_pairs() + 1, wp))]
       else
-        ! the mechanism in the position beside the values table
+        ! the mechanism in the position beside the values table (its points and links side by
+        ! side)
+        compact = .true.
         region = [x1, top, x1 + cw, top + max(70.0_wp, values_height())]
       end if
     end if
@@ -152,8 +162,9 @@ contains
       call fit_mechanism_view(all_positions, [region(1) + 4.0_wp, region(2) + 10.0_wp + heading_drop, &
         region(3) - 4.0_wp, region(4) - 10.0_wp], 10.0_wp, view)
     else
+      ! (A4's second sheet: the mechanism in its panel beside the values with 4 mm around it)
       call fit_mechanism_view(drawing, [region(1) + 4.0_wp, region(2) + 10.0_wp + heading_drop, region(3) - 4.0_wp, &
-        region(4) - 10.0_wp], 10.0_wp, view)
+        region(4) - 10.0_wp], merge(4.0_wp, 10.0_wp, part_drawn == 2), view)
     end if
     if (part_drawn == 2) then
       call sheet%open(page, lang, words("Plans of velocities and accelerations", &
@@ -231,11 +242,9 @@ contains
       call put_values(x2, top, cw, region(4) - top)
       y = region(4) + gap
       hmax = bottom - y
-      ! (the values read off in three columns of 3.2 mm rows under a heading of 8 mm, within
-      ! 0.3 .. 0.5 of the height)
-      n_read = 0
-      if (allocated(plans%values)) n_read = size(plans%values)
-      h_read = min(0.5_wp * hmax, max(0.3_wp * hmax, 11.5_wp + 3.2_wp * real((n_read + 2) / 3, wp)))
+      ! (the values read off as high as they need at 1.8 mm, half the height at the most; the
+      ! plans the rest)
+      h_read = min(0.5_wp * hmax, values_table_height(plans, 2.0_wp * cw + gap, lang))
       call draw_kinematic_plans(sheet, view, plans, [x1, y, x1 + cw, bottom - h_read - gap], &
         [x2, y, x2 + cw, bottom - h_read - gap], [x1, bottom - h_read, x2 + cw, bottom], lang)
     else if (part_drawn == 2) then
@@ -244,9 +253,19 @@ contains
       call put_values(x3, top, cw, values_height())
       y = top + values_height() + gap
       hmax = inner(4) - block_height - gap - y
-      call draw_kinematic_plans(sheet, view, plans, [x3, y, x3 + cw, y + 0.37_wp * hmax], &
-        [x3, y + 0.37_wp * hmax + gap, x3 + cw, y + 0.74_wp * hmax], &
-        [x3, y + 0.74_wp * hmax + 2.0_wp * gap, x3 + cw, y + hmax], lang)
+      if (compact) then
+        ! (A2, A3: the values read off as high as they need at 1.8 mm, 0.3 of the height at the
+        ! most; the two plans the rest)
+        h_read = min(0.3_wp * hmax, values_table_height(plans, cw, lang))
+        associate (ph => 0.5_wp * (hmax - h_read) - gap)
+          call draw_kinematic_plans(sheet, view, plans, [x3, y, x3 + cw, y + ph], [x3, y + ph + gap, x3 + cw, y + 2.0_wp * ph + &
+            gap], [x3, y + hmax - h_read, x3 + cw, y + hmax], lang)
+        end associate
+      else
+        call draw_kinematic_plans(sheet, view, plans, [x3, y, x3 + cw, y + 0.37_wp * hmax], &
+          [x3, y + 0.37_wp * hmax + gap, x3 + cw, y + 0.74_wp * hmax], &
+          [x3, y + 0.74_wp * hmax + 2.0_wp * gap, x3 + cw, y + hmax], lang)
+      end if
     else
       call put_values(x3, top, cw, inner(4) - block_height - gap - top)
     end if
@@ -272,15 +291,20 @@ contains
 
     !> The height of the values table's panel, mm: its rows and headings.
     real(wp) function values_height() result(h)
-      integer :: ip, il, n
-      n = 2
+      integer :: ip, il, np, nl
+      np = 1
+      nl = 1
       do ip = 1, size(drawing%points)
-        if (table%column_index("vx_"//trim(drawing%points(ip)%name)) > 0) n = n + 1
+        if (table%column_index("vx_"//trim(drawing%points(ip)%name)) > 0) np = np + 1
       end do
       do il = 1, size(topo%links)
-        if (table%column_index("omega"//trim(topo%links(il)%name)) > 0) n = n + 1
+        if (table%column_index("omega"//trim(topo%links(il)%name)) > 0) nl = nl + 1
       end do
-      h = 9.0_wp + 4.2_wp * n + 4.0_wp
+      if (compact) then
+        h = 9.0_wp + compact_pitch * max(np, nl) + 4.0_wp
+      else
+        h = 9.0_wp + 4.2_wp * (np + nl) + 4.0_wp
+      end if
     end function values_height
 
     !> The output link's number ("" when there is none).
@@ -718,7 +742,7 @@ contains
       real(wp), intent(in) :: x0, y0, w, h
       character(len=40), allocatable :: cells(:, :)
       real(wp) :: vv(2), aa(2)
-      integer :: ip, il, r, n
+      integer :: ip, il, r, n, r_points
       character(len=:), allocatable :: pname
       call sheet%set_layer(layer_charts)
       call sheet%rect(x0, y0, w, h, "panel")
@@ -738,6 +762,7 @@ contains
         r = r + 1
         cells(r, :) = [character(len=40) :: pname, short_number(norm2(vv)), short_number(norm2(aa))]
       end do
+      r_points = r
       r = r + 1
       cells(r, :) = [character(len=40) :: words("link", "звено", lang), "ω, "//unit_word("rad/s", lang), &
         "ε, "//unit_word("rad/s^2", lang)]
@@ -749,7 +774,17 @@ contains
           short_number(column_value(table, "eps"//trim(topo%links(il)%name), k))]
       end do
       call sheet%set_layer(layer_text)
-      call put_table(sheet, x0 + 4.0_wp, y0 + 9.0_wp, [0.3_wp * w, 0.3_wp * w, 0.3_wp * w], 4.2_wp, cells(1:r, :))
+      if (compact) then
+        ! (the points' table and the links' beside it, their first columns narrower)
+        associate (half => 0.5_wp * (w - 11.0_wp))
+          call put_table(sheet, x0 + 4.0_wp, y0 + 9.0_wp, [0.26_wp * half, 0.37_wp * half, 0.37_wp * half], &
+            compact_pitch, cells(1:r_points, :))
+          call put_table(sheet, x0 + 7.0_wp + half, y0 + 9.0_wp, [0.26_wp * half, 0.37_wp * half, 0.37_wp * half], &
+            compact_pitch, cells(r_points + 1:r, :))
+        end associate
+      else
+        call put_table(sheet, x0 + 4.0_wp, y0 + 9.0_wp, [0.3_wp * w, 0.3_wp * w, 0.3_wp * w], 4.2_wp, cells(1:r, :))
+      end if
     end subroutine put_values
   end subroutine draw_kinematics_sheet
 

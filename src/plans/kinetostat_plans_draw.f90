@@ -37,14 +37,15 @@ module kinetostat_plans_draw
     force_gravity, force_inertia, force_load, force_pair, point_pivot
   use kinetostat_mechanism_view, only: mechanism_view_t, fit_mechanism_view, draw_mechanism, force_colours
   use kinetostat_mechanism_sheet, only: fitted_size
-  use kinetostat_plans_base, only: plans_t, plan_vector_t, plan_equation_t, lever_load_t, force_polygon_t, &
+  use kinetostat_run_sheet, only: note_length
+  use kinetostat_plans_base, only: plans_t, plan_value_t, plan_vector_t, plan_equation_t, lever_load_t, force_polygon_t, &
     component_normal, component_tangential, component_coriolis, component_relative, component_reaction, load_moment, perp
   use kinetostat_plans_apart, only: draw_group_apart, guide_reactions_placed, apart_pitch => row_pitch
   use kinetostat_plans_sheet, only: plans_sheet_t, turn, chain_tips, polygon_tips, panel_inner, panel_head, &
-    input_link_drawing, fit_kinematic_plans
+    input_link_drawing, fit_kinematic_plans, note_size, least_note_size, note_pitch, plan_inner
   implicit none
   private
-  public :: draw_plans_sheet, display_name, draw_kinematic_plans
+  public :: draw_plans_sheet, display_name, draw_kinematic_plans, values_table_height
 
   !> A vector drawn shorter than this is listed, not drawn, mm.
   real(wp), parameter :: shortest = 1.0_wp
@@ -339,14 +340,18 @@ contains
     logical, intent(in) :: accel
     integer, intent(in) :: lang
     real(wp), allocatable :: tips(:, :), ends(:, :)
-    real(wp) :: q(2), p(2), t(2), area(4), labels_area(4)
+    real(wp) :: q(2), p(2), t(2), area(4), labels_area(4), pole_font, short_font
     character(len=:), allocatable :: short, at_pole
+    !> The notes' lines (what is at the pole, what is too short to draw), all of them with
+    !> their font sizes and baselines, mm.
+    character(len=note_length), allocatable :: pole_lines(:), short_lines(:), note_text(:)
+    real(wp), allocatable :: note_font(:), note_y(:)
     character(len=16), allocatable :: names(:)
     character(len=1), allocatable :: kinds(:)
     integer :: i, e, j, n_labels, attempt
     type(sheet_t) :: unlabelled
     integer :: crowded, fewest, best
-    area = panel_inner(box)
+    area = plan_inner(box)
     short = ""
     at_pole = ""
     ! the plan's group: where its pole is and its scale (a point of the plan v is drawn at
@@ -398,9 +403,27 @@ contains
     do i = 1, size(images)
       if (norm2(at(images(i)%v) - pole) < shortest) call listed(at_pole, image_label(images(i)%name))
     end do
+    ! (the notes' lines at the area's foot, the last on its bottom edge: note_lines; the
+    ! labels above them)
+    allocate (pole_lines(0), short_lines(0))
+    pole_font = note_size
+    short_font = note_size
+    if (len(at_pole) > 0) call note_lines(word("at the pole", lang)//" "//pole_name//": "//at_pole, &
+      area(3) - area(1) - 2.0_wp, pole_lines, pole_font)
+    if (len(short) > 0) call note_lines(word("not drawn, shorter than 1 mm", lang)//": "//short, &
+      area(3) - area(1) - 2.0_wp, short_lines, short_font)
+    ! (every line's baseline from the last, on the area's foot, up: a line's pitch the larger
+    ! font's of the two times note_pitch)
+    allocate (note_text(0), note_font(0))
+    note_text = [character(len=note_length) :: pole_lines, short_lines]
+    note_font = [spread(pole_font, 1, size(pole_lines)), spread(short_font, 1, size(short_lines))]
+    allocate (note_y(size(note_text)))
     labels_area = area
-    if (len(short) > 0) labels_area(4) = area(4) - 2.6_wp
-    if (len(at_pole) > 0) labels_area(4) = area(4) - 6.6_wp
+    do i = size(note_text), 1, -1
+      note_y(i) = area(4)
+      if (i < size(note_text)) note_y(i) = note_y(i + 1) - note_pitch * max(note_font(i), note_font(i + 1))
+      labels_area(4) = note_y(i) - note_pitch * note_font(i)
+    end do
     ! in the order pole, images, components; when one of them finds no spot off the lines
     ! whose leader line crosses no label (a plan drawn small, its labels crowding round the
     ! pole), the other orders (label_orders, label_outward) are tried in turn: the first that
@@ -425,10 +448,9 @@ contains
       call place_labels(sheet, best, crowded)
     end if
     ! what is at the pole, what is too short to draw
-    if (len(at_pole) > 0) call sheet%text(area(1) + 1.0_wp, area(4) - 4.0_wp, word("at the pole", lang)//" "// &
-      pole_name//": "//at_pole, "note")
-    if (len(short) > 0) call sheet%text(area(1) + 1.0_wp, area(4), word("not drawn, shorter than 1 mm", lang)//": "// &
-      short, "note", size=fitted_size(short, 2.6_wp, area(3) - area(1) - 50.0_wp, 0.6_wp))
+    do i = 1, size(note_text)
+      call sheet%text(area(1) + 1.0_wp, note_y(i), trim(note_text(i)), "note", size=note_font(i))
+    end do
     call sheet%end_group()
     call sheet%set_layer(merge(layer_aplan, layer_vplan, accel))
   contains
@@ -933,6 +955,44 @@ contains
       0.6_wp), fitted_size(text(cut + 2:), 2.0_wp, width, 0.6_wp))))
   end subroutine legible_lines
 
+  !> A note of `width` mm in lines: one line at note_size or smaller down to least_note_size
+  !> when it fits so, else broken after its commas into as many lines as it needs at the least
+  !> size (each line as full as it goes); `font` the size of them all.
+  pure subroutine note_lines(text, width, lines, font)
+    character(*), intent(in) :: text
+    real(wp), intent(in) :: width
+    character(len=note_length), allocatable, intent(out) :: lines(:)
+    real(wp), intent(out) :: font
+    character(len=:), allocatable :: line, rest
+    integer :: cut, i
+    allocate (lines(0))
+    font = fitted_size(text, note_size, width, 0.6_wp)
+    if (font >= least_note_size) then
+      lines = [character(len=note_length) :: text]
+      return
+    end if
+    line = ""
+    rest = text
+    do while (len(rest) > 0)
+      cut = index(rest, ", ")
+      if (cut == 0) cut = len(rest) + 1
+      if (len(line) > 0 .and. fitted_size(line//", "//rest(:cut - 1), least_note_size, width, 0.6_wp) < &
+        least_note_size) then
+        lines = [character(len=note_length) :: lines, line//","]
+        line = ""
+      end if
+      if (len(line) > 0) line = line//", "
+      line = line//rest(:cut - 1)
+      rest = rest(min(cut + 2, len(rest) + 1):)
+    end do
+    lines = [character(len=note_length) :: lines, line]
+    font = note_size
+    do i = 1, size(lines)
+      font = min(font, fitted_size(trim(lines(i)), note_size, width, 0.6_wp))
+    end do
+    font = max(font, least_note_size)
+  end subroutine note_lines
+
   !> N*m for a moment (M...), N for a force.
   pure function effort_unit(name, lang) result(unit)
     character(*), intent(in) :: name
@@ -1046,39 +1106,87 @@ contains
     integer, intent(in) :: lang
     character(len=:), allocatable :: text
     real(wp) :: font, width, row_pitch
-    integer :: i, rows, columns, n
-    n = size_of(plans)
-    if (n == 0) return
-    font = 2.2_wp
-    row_pitch = pitch
-    rows = max(1, int((box(4) - box(2) - panel_head - 2.0_wp) / row_pitch))
-    columns = (n + rows - 1) / rows
-    if (columns > 4) then
-      ! smaller, closer rows
-      font = 1.8_wp
-      row_pitch = 2.6_wp
-      rows = max(1, int((box(4) - box(2) - panel_head - 2.0_wp) / row_pitch))
-      columns = (n + rows - 1) / rows
-    end if
+    integer :: i, rows, columns
+    if (.not. allocated(plans%values)) return
+    if (size(plans%values) == 0) return
+    call values_layout(plans, box(3) - box(1), box(4) - box(2), lang, font, row_pitch, rows, columns)
     width = (box(3) - box(1) - 4.0_wp) / columns
-    do i = 1, n
-      associate (v => plans%values(i))
-        text = display_name(v%name, lang)
-        if (len_trim(v%formula) > 0) text = text//" = "//formula_text(trim(v%formula))
-        text = text//" = "//short_number(v%value)//" "//unit_word(trim(v%unit), lang)
-        if (v%sense == "ccw") text = text//", "//word("counterclockwise", lang)
-        if (v%sense == "cw") text = text//", "//word("clockwise", lang)
-        call sheet%text(box(1) + 2.0_wp + width * ((i - 1) / rows), box(2) + panel_head + 2.5_wp + row_pitch * &
-          modulo(i - 1, rows), text, "num", size=min(font, fitted_size(text, font, width - 1.5_wp, 0.6_wp)))
-      end associate
+    do i = 1, size(plans%values)
+      text = value_text(plans%values(i), lang)
+      call sheet%text(box(1) + 2.0_wp + width * ((i - 1) / rows), box(2) + panel_head + 2.5_wp + row_pitch * &
+        modulo(i - 1, rows), text, "num", size=min(font, fitted_size(text, font, width - 1.5_wp, 0.6_wp)))
+    end do
+  end subroutine values_table
+
+  !> The values table's layout in a panel `w` x `h` mm: its rows 3.2 mm apart at 2.2 mm, or
+  !> 2.6 mm apart at 1.8 mm (ГОСТ 2.304's smallest) when that needs more than four columns
+  !> or a line would be smaller than 1.8 mm; as many rows as the panel holds, the columns
+  !> they need.
+  pure subroutine values_layout(plans, w, h, lang, font, row_pitch, rows, columns)
+    type(plans_t), intent(in) :: plans
+    real(wp), intent(in) :: w, h
+    integer, intent(in) :: lang
+    real(wp), intent(out) :: font, row_pitch
+    integer, intent(out) :: rows, columns
+    integer :: attempt, n
+    n = size(plans%values)
+    do attempt = 1, 2
+      font = merge(2.2_wp, 1.8_wp, attempt == 1)
+      row_pitch = merge(pitch, 2.6_wp, attempt == 1)
+      rows = max(1, int((h - panel_head - 2.0_wp) / row_pitch))
+      columns = (n + rows - 1) / rows
+      if (columns <= 4 .and. legible(columns)) exit
     end do
   contains
-    pure integer function size_of(plans)
-      type(plans_t), intent(in) :: plans
-      size_of = 0
-      if (allocated(plans%values)) size_of = size(plans%values)
-    end function size_of
-  end subroutine values_table
+    !> Whether every value's line is 1.8 mm or larger in `c` columns.
+    pure logical function legible(c)
+      integer, intent(in) :: c
+      integer :: i
+      legible = .true.
+      do i = 1, n
+        if (fitted_size(value_text(plans%values(i), lang), font, (w - 4.0_wp) / c - 1.5_wp, 0.6_wp) < 1.8_wp) then
+          legible = .false.
+        end if
+      end do
+    end function legible
+  end subroutine values_layout
+
+  !> The least height of a values table's panel `w` mm wide that keeps every line 1.8 mm or
+  !> larger (values_layout: rows 2.6 mm apart in as many columns, four at the most, as keep
+  !> them so), mm; 0 when there are no values.
+  pure real(wp) function values_table_height(plans, w, lang) result(h)
+    type(plans_t), intent(in) :: plans
+    real(wp), intent(in) :: w
+    integer, intent(in) :: lang
+    integer :: c, i, n
+    logical :: fits
+    h = 0.0_wp
+    if (.not. allocated(plans%values)) return
+    n = size(plans%values)
+    if (n == 0) return
+    do c = 4, 1, -1
+      fits = .true.
+      do i = 1, n
+        if (fitted_size(value_text(plans%values(i), lang), 1.8_wp, (w - 4.0_wp) / c - 1.5_wp, 0.6_wp) < 1.8_wp) then
+          fits = .false.
+        end if
+      end do
+      if (fits .or. c == 1) exit
+    end do
+    h = panel_head + 2.0_wp + 2.6_wp * real((n + c - 1) / c, wp) + 1.5_wp
+  end function values_table_height
+
+  !> A value's line: its name, its formula, the value, its unit and its sense.
+  pure function value_text(v, lang) result(text)
+    type(plan_value_t), intent(in) :: v
+    integer, intent(in) :: lang
+    character(len=:), allocatable :: text
+    text = display_name(v%name, lang)
+    if (len_trim(v%formula) > 0) text = text//" = "//formula_text(trim(v%formula))
+    text = text//" = "//short_number(v%value)//" "//unit_word(trim(v%unit), lang)
+    if (v%sense == "ccw") text = text//", "//word("counterclockwise", lang)
+    if (v%sense == "cw") text = text//", "//word("clockwise", lang)
+  end function value_text
 
   !> A values table's formula as the sheet writes it: "pb*mu_v" -> "p b · μv" (the plan's
   !> segment, its letters apart), "2*omega3*v_B2B3" -> "2 ω3 v_B2B3".

@@ -25,10 +25,17 @@ module kinetostat_plans_sheet
   implicit none
   private
   public :: plans_sheet_t, plans_sheet, turn, chain_tips, polygon_tips, panel_inner, lever_arrow, panel_head, &
-    group_text, input_link_drawing, fit_kinematic_plans
+    group_text, input_link_drawing, fit_kinematic_plans, plan_margin, plan_inner
 
-  !> Room kept around a drawing in its panel for its labels and arrows, mm.
+  !> Room kept around a drawing in its panel for its labels and arrows, mm (a plan of
+  !> velocities or accelerations: as much on a large panel, less on a small one: plan_margin).
   real(wp), parameter :: margin = 10.0_wp
+  !> A plan's labels' height (class "label"), mm: a plan keeps 1.5 of it around it at the least.
+  real(wp), parameter :: label_height = 2.8_wp
+  !> A plan's notes at its foot (what is at the pole, what is too short to draw): their
+  !> largest and least font sizes (ГОСТ 2.304's smallest), mm, and the pitch of their lines
+  !> in font sizes (a line's subscripts and superscripts reach 1.4 of it).
+  real(wp), parameter, public :: note_size = 2.6_wp, least_note_size = 1.8_wp, note_pitch = 1.45_wp
   !> The lever's largest load arrow, mm.
   real(wp), parameter :: lever_arrow = 24.0_wp
   !> A panel's heading band at its top and its scale line at its bottom, mm.
@@ -197,9 +204,9 @@ contains
       ! the mechanism at a ГОСТ 2.302 scale
       call fit_mechanism_view(drawing, panel_inner(sheet%mechanism), 6.0_wp, sheet%view)
       ! the plans: the images and the corners of the equations' chains
-      call fit_plan(plan_points(plans%velocities, plans%velocity_equations), panel_inner(sheet%velocity), sheet%mu_v, &
+      call fit_noted_plan(plans%velocities, plans%velocity_equations, r, plan_inner(sheet%velocity), sheet%mu_v, &
         sheet%pole_v)
-      call fit_plan(plan_points(plans%accelerations, plans%equations), panel_inner(sheet%acceleration), sheet%mu_a, &
+      call fit_noted_plan(plans%accelerations, plans%equations, r, plan_inner(sheet%acceleration), sheet%mu_a, &
         sheet%pole_a)
     end if
     sheet%mu_l = sheet%view%mu_l()
@@ -312,14 +319,6 @@ contains
       sheet%mu_f(e) = fit_scale(tips, cell, .false.)
     end do
     call compare_efforts(topo, drawing, plans, sheet)
-  contains
-    !> The points a plan must show, turned by the drawing's angle.
-    pure function plan_points(images, equations) result(all)
-      type(plan_vector_t), intent(in) :: images(:)
-      type(plan_equation_t), intent(in) :: equations(:)
-      real(wp), allocatable :: all(:, :)
-      all = turned_plan_points(images, equations, r)
-    end function plan_points
   end subroutine plans_sheet
 
   !> Unit t's links as its polygon names them ("2,3").
@@ -346,10 +345,14 @@ contains
 
   !> The scale (units per mm, a round scale) at which the points (the origin with them when
   !> `pole`) fit into the box (x0, y0, x1, y1, mm) less its margins.
-  pure real(wp) function fit_scale(pts, box, pole)
+  pure real(wp) function fit_scale(pts, box, pole, room)
     real(wp), intent(in) :: pts(:, :), box(4)
     logical, intent(in) :: pole
-    real(wp) :: lo(2), hi(2)
+    !> The margins, mm (default: margin).
+    real(wp), intent(in), optional :: room
+    real(wp) :: lo(2), hi(2), m
+    m = margin
+    if (present(room)) m = room
     fit_scale = 1.0_wp
     if (size(pts, 2) == 0) return
     lo = minval(pts, 2)
@@ -359,8 +362,8 @@ contains
       hi = max(hi, 0.0_wp)
     end if
     if (all(hi - lo <= 0.0_wp)) return
-    fit_scale = max(round_scale(hi(1) - lo(1), max(box(3) - box(1) - 2.0_wp * margin, 1.0_wp)), &
-      round_scale(hi(2) - lo(2), max(box(4) - box(2) - 2.0_wp * margin, 1.0_wp)))
+    fit_scale = max(round_scale(hi(1) - lo(1), max(box(3) - box(1) - 2.0_wp * m, 1.0_wp)), &
+      round_scale(hi(2) - lo(2), max(box(4) - box(2) - 2.0_wp * m, 1.0_wp)))
   end function fit_scale
 
   !> The points a plan must show, turned by `r` (rad): its images and every corner of its
@@ -395,11 +398,98 @@ contains
     geo%rotation = view%rotation
     geo%velocity = velocity
     geo%acceleration = acceleration
-    call fit_plan(turned_plan_points(plans%velocities, plans%velocity_equations, geo%rotation), &
-      panel_inner(velocity), geo%mu_v, geo%pole_v)
-    call fit_plan(turned_plan_points(plans%accelerations, plans%equations, geo%rotation), &
-      panel_inner(acceleration), geo%mu_a, geo%pole_a)
+    call fit_noted_plan(plans%velocities, plans%velocity_equations, geo%rotation, plan_inner(velocity), geo%mu_v, &
+      geo%pole_v)
+    call fit_noted_plan(plans%accelerations, plans%equations, geo%rotation, plan_inner(acceleration), geo%mu_a, &
+      geo%pole_a)
   end subroutine fit_kinematic_plans
+
+  !> A plan of velocities or accelerations in `area` (a panel's drawing area, x0, y0, x1, y1,
+  !> mm): its round scale mu and its pole (fit_plan) with plan_margin around it and, at its
+  !> foot, the lines of its notes (what lies at the pole, what is too short to draw at mu:
+  !> note_lines_needed) in the lower half of the margin, the area raised by what they need
+  !> more; refitted at the larger mu they leave until they need no more lines.
+  pure subroutine fit_noted_plan(images, equations, r, area, mu, pole)
+    type(plan_vector_t), intent(in) :: images(:)
+    type(plan_equation_t), intent(in) :: equations(:)
+    real(wp), intent(in) :: r, area(4)
+    real(wp), intent(out) :: mu, pole(2)
+    real(wp), allocatable :: pts(:, :)
+    real(wp) :: room(4)
+    integer :: lines, more, tries
+    allocate (pts(2, 0))
+    pts = turned_plan_points(images, equations, r)
+    lines = 0
+    do tries = 1, 8
+      ! (the notes in the lower half of the margin, the area raised by what they need more)
+      room = area
+      room(4) = area(4) - max(0.0_wp, note_band(lines) - 0.5_wp * plan_margin(area))
+      call fit_plan(pts, room, mu, pole, plan_margin(area))
+      more = note_lines_needed(images, equations, mu, area(3) - area(1) - 2.0_wp)
+      if (more <= lines) exit
+      lines = more
+    end do
+  end subroutine fit_noted_plan
+
+  !> The height of `lines` lines of a plan's notes at their foot, mm (at their largest size).
+  pure real(wp) function note_band(lines)
+    integer, intent(in) :: lines
+    note_band = real(lines, wp) * note_pitch * note_size
+  end function note_band
+
+  !> The room a plan keeps around it in its drawing area for its labels, mm: 10 mm on a large
+  !> panel, 8 % of the area's smaller side on a smaller one, 1.5 labels' height at the least.
+  pure real(wp) function plan_margin(area)
+    real(wp), intent(in) :: area(4)
+    plan_margin = min(margin, max(1.5_wp * label_height, 0.08_wp * min(area(3) - area(1), area(4) - area(2))))
+  end function plan_margin
+
+  !> How many lines of `width` mm a plan's notes need at most at scale mu: "at the pole π: "
+  !> and the images within 1 mm of it, "not drawn, shorter than 1 mm: " and the components
+  !> shorter (every one, the English words, a character 0.6 of the least note size wide: what
+  !> the sheet writes is no longer), each note broken after its commas (kinetostat_plans_draw:
+  !> note_lines).
+  pure integer function note_lines_needed(images, equations, mu, width) result(lines)
+    type(plan_vector_t), intent(in) :: images(:)
+    type(plan_equation_t), intent(in) :: equations(:)
+    real(wp), intent(in) :: mu, width
+    integer, allocatable :: pieces(:)
+    integer :: i, e, j
+    lines = 0
+    allocate (pieces(0))
+    do i = 1, size(images)
+      if (norm2(images(i)%v) / mu < 1.0_wp) pieces = [pieces, len_trim(images(i)%name) + 3]
+    end do
+    if (size(pieces) > 0) lines = lines + packed_lines(len("at the pole π: "), pieces)
+    deallocate (pieces)
+    allocate (pieces(0))
+    do e = 1, size(equations)
+      do j = 1, size(equations(e)%vectors)
+        associate (v => equations(e)%vectors(j)%v)
+          if (norm2(v) > 0.0_wp .and. norm2(v) / mu < 1.0_wp) pieces = [pieces, len_trim(equations(e)%vectors(j)%name) + 2]
+        end associate
+      end do
+    end do
+    if (size(pieces) > 0) lines = lines + packed_lines(len("not drawn, shorter than 1 mm: "), pieces)
+  contains
+    !> Lines of a note: its words, then every name (its characters and ", ") on the line
+    !> while it fits.
+    pure integer function packed_lines(words, names) result(n)
+      integer, intent(in) :: words, names(:)
+      real(wp) :: used, each
+      integer :: k
+      each = 0.6_wp * least_note_size
+      n = 1
+      used = each * real(words, wp)
+      do k = 1, size(names)
+        if (used + each * real(names(k), wp) > width .and. k > 1) then
+          n = n + 1
+          used = 0.0_wp
+        end if
+        used = used + each * real(names(k), wp)
+      end do
+    end function packed_lines
+  end function note_lines_needed
 
   !> A plan's scale (round) and its pole on the sheet: the points (turned, in the position
   !> frame's units) and the pole fit into `area` (x0, y0, x1, y1, mm) less its margins, centred.
@@ -479,11 +569,13 @@ contains
 
   !> A plan's scale (round) and its pole on the sheet: the points (turned, in the position
   !> frame's units) and the pole fit into `area` (x0, y0, x1, y1, mm) less its margins, centred.
-  pure subroutine fit_plan(pts, area, mu, pole)
+  pure subroutine fit_plan(pts, area, mu, pole, room)
     real(wp), intent(in) :: pts(:, :), area(4)
     real(wp), intent(out) :: mu, pole(2)
+    !> The room kept around the points, mm (default: margin).
+    real(wp), intent(in), optional :: room
     real(wp) :: lo(2), hi(2)
-    mu = fit_scale(pts, area, .true.)
+    mu = fit_scale(pts, area, .true., room)
     lo = 0.0_wp
     hi = 0.0_wp
     if (size(pts, 2) > 0) then
@@ -575,6 +667,14 @@ contains
     real(wp) :: area(4)
     area = [box(1) + 2.0_wp, box(2) + panel_head, box(3) - 2.0_wp, box(4) - panel_foot]
   end function panel_inner
+
+  !> A plan's drawing area in its panel: less its heading band and the 6.5 mm its scale line
+  !> needs at its foot (its notes stand right above that line).
+  pure function plan_inner(box) result(area)
+    real(wp), intent(in) :: box(4)
+    real(wp) :: area(4)
+    area = [box(1) + 2.0_wp, box(2) + panel_head, box(3) - 2.0_wp, box(4) - 6.5_wp]
+  end function plan_inner
 
   !> v turned by `angle` rad counterclockwise.
   pure function turn(v, angle) result(w)

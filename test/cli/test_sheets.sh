@@ -570,3 +570,102 @@ if [ "${KINETOSTAT_LONG:-0}" = 1 ]; then
 fi
 # the stand-in rsvg-convert (above) off PATH
 PATH="$sheets_path"
+
+# The plans of velocities and accelerations fill their panels on every paper: each plan's
+# drawing (its rays, components, pole and images) is at least PERCENT % of its panel's smaller
+# side across (its larger extent; 35 % on A4's second kinematics sheet, A2 and A1, 25 % on A3;
+# the sheets of the checks above),
+# every word of the plan (its labels and its notes "at the pole π: ...", "not drawn, shorter
+# than 1 mm: ...") inside its panel, no note smaller than 1.8 mm (ГОСТ 2.304's smallest).
+# Must fail: a plan drawn at half its size, a note moved 80 mm right, past its panel's edge.
+sheets_plans_fill() {  # PERCENT SVG...: "ok ..." or "differs: ..."
+  python3 - "$root/tools" "$@" <<'PY'
+import math, re, sys
+sys.path.insert(0, sys.argv[1])
+import xml.etree.ElementTree as ET
+import svg_check as sc
+least = float(sys.argv[2]) / 100
+bad, seen, worst = [], 0, 1e9
+for path in sys.argv[3:]:
+    src = open(path, encoding="utf-8").read()
+    sizes, _ = sc.style_sizes(src)
+    panel = None
+    for el in ET.fromstring(src).iter():
+        if el.tag == sc.SVG_NS + "rect" and el.get("class") == "panel":
+            panel = [float(el.get(k)) for k in ("x", "y", "width", "height")]
+        if el.tag != sc.SVG_NS + "g" or el.get("class") not in ("velocity-plan", "acceleration-plan"):
+            continue
+        seen += 1
+        x, y, w, h = panel
+        pts = []
+        for c in el.iter():
+            tag = c.tag.replace(sc.SVG_NS, "")
+            if tag == "line" and c.get("class") != "leader":
+                pts += [(float(c.get("x1")), float(c.get("y1"))), (float(c.get("x2")), float(c.get("y2")))]
+            elif tag == "polygon":
+                v = [float(s) for s in re.split(r"[ ,]+", c.get("points").strip())]
+                pts += list(zip(v[0::2], v[1::2]))
+            elif tag == "circle":
+                pts.append((float(c.get("cx")), float(c.get("cy"))))
+            elif tag == "text":
+                (x0, y0, x1, y1), text = sc.text_box(c, sizes)
+                if x0 < x - 0.01 or x1 > x + w + 0.01 or y0 < y - 0.01 or y1 > y + h + 0.01:
+                    bad.append(f"{path}: {text[:40]!r} leaves its panel ({x0:.2f} .. {x1:.2f} of {x:.2f} .. {x + w:.2f} mm)")
+                if c.get("class") == "note" and sc.text_size(c, sizes) < 1.8 - 1e-9:
+                    bad.append(f"{path}: note {text[:40]!r} at {sc.text_size(c, sizes)} mm")
+        across = max(max(p[0] for p in pts) - min(p[0] for p in pts), max(p[1] for p in pts) - min(p[1] for p in pts))
+        share = across / min(w, h)
+        worst = min(worst, share)
+        if share < least:
+            bad.append(f"{path}: the {el.get('class')} is {across:.1f} mm across in its {w:.1f} x {h:.1f} mm panel "
+                       f"({100 * share:.0f} %, expected {100 * least:.0f} % at the least)")
+if seen == 0:
+    bad.append("no plan found")
+print("differs: " + "; ".join(bad[:6]) if bad else f"ok {seen} plans, the smallest {100 * worst:.0f} % of its panel")
+PY
+}
+sheets_fill_svgs="$cli_tmp/sheets_a4_class3_en/kinematics-2.svg $cli_tmp/sheets_a4_pr3207/kinematics-2.svg"
+sheets_fill_svgs="$sheets_fill_svgs $cli_tmp/sheets_A2_pr3207_flywheel_ru/kinematics.svg"
+sheets_fill_a3="$cli_tmp/sheets_A3_pr3207_flywheel_en/kinematics.svg"
+sheets_fill_svgs="$sheets_fill_svgs $cli_tmp/sheets_class3_en/kinematics.svg"
+# (assur_pr3207_flywheel on A3: its acceleration plan's note "at the pole π: j16, ..." as wide
+# as its panel; a few seconds, with --long)
+if [ "${KINETOSTAT_LONG:-0}" = 1 ]; then
+  dir="$cli_tmp/sheets_fill_assur_A3"
+  rm -rf "$dir"
+  run_ks sheets data/assur_pr3207_flywheel.nml -o "$dir" --paper A3
+  [ "$rc" -eq 0 ] || fail sheets-plans-fill-run "exit $rc: $(head -c 300 "$err")"
+  python3 "$sheets_check" labels --lines "$dir/kinematics.svg" >"$cli_tmp/check.out" 2>&1 && pass \
+    || fail sheets-plans-fill-assur-A3-legible "$(grep -v '^[0-9]* sheets' "$cli_tmp/check.out" | head -3)"
+  sheets_fill_a3="$sheets_fill_a3 $dir/kinematics.svg"
+fi
+verdict=$(sheets_plans_fill 35 $sheets_fill_svgs)
+case "$verdict" in ok*) pass ;; *) fail sheets-plans-fill "$verdict" ;; esac
+# (A3: its third column holds the values, the two plans and the values read off: 25 %)
+verdict=$(sheets_plans_fill 25 $sheets_fill_a3)
+case "$verdict" in ok*) pass ;; *) fail sheets-plans-fill-A3 "$verdict" ;; esac
+# must fail: the acceleration plan drawn at half its size about its pole; a note moved 80 mm
+# right, past the panel's edge
+svg="$cli_tmp/sheets_a4_class3_en/kinematics-2.svg"
+python3 - "$svg" >"$cli_tmp/fill_bad.svg" <<'PY'
+import re, sys
+t = open(sys.argv[1], encoding="utf-8").read()
+start = t.index('<g class="acceleration-plan"')
+end = t.index("</g>", start)
+px, py = (float(v) for v in re.search(r'data-pole="([-0-9.]+) ([-0-9.]+)"', t[start:]).groups())
+half = lambda m, o: f"{o + 0.5 * (float(m) - o):.2f}"
+def shrink(el):
+    el = re.sub(r' (x1|x2|cx)="([-0-9.]+)"', lambda m: f' {m.group(1)}="{half(m.group(2), px)}"', el.group(0))
+    el = re.sub(r' (y1|y2|cy)="([-0-9.]+)"', lambda m: f' {m.group(1)}="{half(m.group(2), py)}"', el)
+    return re.sub(r'points="([^"]*)"', lambda m: 'points="' + " ".join(
+        f"{half(a, px)},{half(b, py)}" for a, b in (p.split(",") for p in m.group(1).split())) + '"', el)
+body = re.sub(r'<(?:line|circle|polygon) [^>]*>', shrink, t[start:end])
+print(t[:start] + body + t[end:], end="")
+PY
+verdict=$(sheets_plans_fill 35 "$cli_tmp/fill_bad.svg")
+case "$verdict" in "differs: "*"acceleration-plan is"*) pass ;; *) fail sheets-plans-fill-must-fail-size "a plan at half its size passed: $verdict" ;; esac
+sed -E '/<g class="acceleration-plan"/,/<\/g>/ s/(<text x=")([0-9.]+)(" y="[0-9.]+" class="note")/\1\2X\3/' "$svg" \
+  | python3 -c "import re, sys; print(re.sub(r'x=\"([0-9.]+)X\"', lambda m: f'x=\"{float(m.group(1)) + 80:.2f}\"', sys.stdin.read()), end='')" \
+  >"$cli_tmp/fill_bad.svg"
+verdict=$(sheets_plans_fill 35 "$cli_tmp/fill_bad.svg")
+case "$verdict" in "differs: "*"leaves its panel"*) pass ;; *) fail sheets-plans-fill-must-fail-note "a note off its panel passed: $verdict" ;; esac
