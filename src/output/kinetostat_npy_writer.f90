@@ -8,6 +8,8 @@
 !> characters) holds the number of rows, which the run knows from its first block, so the
 !> rows are written block by block as the CSV's are and memory stays flat.
 !> Format: https://numpy.org/doc/stable/reference/generated/numpy.lib.format.html
+!> put_row appends to a text buffer's character(*) data in place (intent(inout) by design).
+! allow(assumed-size-character-intent)
 module kinetostat_npy_writer
   use, intrinsic :: iso_fortran_env, only: int32, int64
   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
