@@ -44,6 +44,7 @@ contains
     type(test_counts_t), intent(inout) :: t
     call test_fixed_cases(t)
     call test_random(t)
+    call test_cell_ties(t)
     call test_whole(t)
     call test_deck_number(t)
   end subroutine run_decimal_tests
@@ -132,6 +133,56 @@ contains
     call check_true(t, "decimal: "//itoa(n)//" random doubles equal the compiler's formatted WRITE", bad == 0, &
                     "mismatches "//itoa(bad)//":"//shown)
   end subroutine test_random
+
+  !> The CSV cell (ES20.12E3 without blanks) where its double-precision rounding must give
+  !> way to the exact one: 13-digit decimals plus a half unit of the 13th digit (a tie in
+  !> decimal, never exactly one in binary but within an ulp of it) nudged by 0 to +-3 ulp,
+  !> 13-digit decimals and their neighbours, and magnitudes 1e-11 .. 1e12 uniform in the
+  !> logarithm, both signs: 3 * 10^5 values (--long: 3 * 10^6), each against the compiler's
+  !> formatted WRITE.
+  subroutine test_cell_ties(t)
+    type(test_counts_t), intent(inout) :: t
+    integer(int64) :: state, digits13
+    real(wp) :: x, u
+    integer :: i, j, bad, n, pos, expo
+    character(len=:), allocatable :: shown
+    character(len=20) :: theirs
+    character(len=32) :: compact
+    n = 3 * merge(long_sample_count, sample_count, long_checks())
+    state = 37_int64
+    bad = 0
+    allocate (character(len=0) :: shown)
+    do i = 1, n
+      digits13 = 1000000000000_int64 + mod(abs(next(state)), 9000000000000_int64)
+      expo = int(mod(abs(next(state)), 24_int64)) - 23
+      select case (mod(i, 3))
+      case (0) ! a decimal tie of the 13th digit, nudged
+        x = (real(digits13, wp) + 0.5_wp) * 10.0_wp**expo
+        do j = 1, int(mod(abs(next(state)), 7_int64)) - 3
+          x = nearest(x, 1.0_wp)
+        end do
+        do j = 1, 3 - int(mod(abs(next(state)), 7_int64))
+          x = nearest(x, -1.0_wp)
+        end do
+      case (1) ! a 13-digit decimal, or a neighbour
+        x = real(digits13, wp) * 10.0_wp**expo
+        if (btest(state, 5)) x = nearest(x, merge(1.0_wp, -1.0_wp, btest(state, 6)))
+      case default
+        u = real(shiftr(next(state), 11), wp) * 2.0_wp**(-53)
+        x = 10.0_wp**(23.0_wp * u - 11.0_wp)
+      end select
+      if (btest(state, 9)) x = -x
+      write (theirs, '(es20.12e3)') x
+      pos = 0
+      call put_es_compact(x, 12, 3, compact, pos)
+      if (compact(1:pos) /= trim(adjustl(theirs))) then
+        bad = bad + 1
+        if (bad <= max_shown) shown = shown//" ["//hex(x)//" '"//compact(1:pos)//"' vs '"//trim(adjustl(theirs))//"']"
+      end if
+    end do
+    call check_true(t, "decimal: "//itoa(n)//" CSV cells at and near 13-digit ties equal the compiler's ES20.12E3", &
+                    bad == 0, "mismatches "//itoa(bad)//":"//shown)
+  end subroutine test_cell_ties
 
   !> put_whole against I0.
   subroutine test_whole(t)

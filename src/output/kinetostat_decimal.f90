@@ -42,6 +42,15 @@ module kinetostat_decimal
   integer, parameter :: max_digits = 17
   !> Width of the scratch texts.
   integer, parameter :: scratch_len = 72
+  !> Digits after the point of a CSV cell or JSON number (ES20.12E3): cell_digits_fast's case.
+  integer, parameter :: cell_decimals = 12
+  !> 10**t as doubles, t = 0..max_exact_pow10 (exact: 5**22 < 2**53).
+  integer, parameter :: max_exact_pow10 = 22
+  !> The exact powers of ten as doubles.
+  real(wp), parameter :: exact_pow10(0:max_exact_pow10) = [(real(pow10(i_), wp), i_ = 0, max_exact_pow10)]
+  !> How far from a half the fraction of |x| * 10**s, computed in double precision, must lie
+  !> for its rounding to be the exact one (its error is below 2**-10 where it is < 10**13).
+  real(wp), parameter :: tie_margin = 2.0_wp**(-8)
   !> Status of a field body: written.
   integer, parameter :: body_ok = 0
   !> Status of a field body: does not fit its width (the field is all '*').
@@ -519,7 +528,11 @@ contains
     character(len=scratch_len) :: body
     integer(int64) :: m, q
     integer :: w, first, n, status, ex, k, p, a
-    logical :: negative, ok
+    logical :: negative, ok, done
+    if (e == 3 .and. d == cell_decimals) then
+      call cell_digits_fast(x, buf, pos, done)
+      if (done) return
+    end if
     if (e == 3 .and. d >= 1 .and. d < max_digits) then
       call split(x, negative, m, ex)
       ok = .true.
@@ -622,6 +635,89 @@ contains
     end if
     ok = .true.
   end subroutine significant_digits
+
+  !> put_es_compact's ES20.12E3 for the common magnitudes (1e-10 <= |x| < ~1e11) in double
+  !> precision: |x| * 10**s (s = 12 - the decimal exponent, 10**s exact) rounded once by the
+  !> multiplication, off the exact product by under 2**-10 (the product is below 10**13), so
+  !> the nearest integer is the exact rounding unless the fraction lies within tie_margin of
+  !> a half; then, and outside that range, `done` is false, nothing is written and the
+  !> exact 128-bit path decides. The 13 digits go straight into buf.
+  pure subroutine cell_digits_fast(x, buf, pos, done)
+    !> Finite value.
+    real(wp), intent(in) :: x
+    !> Output characters (room for 20 more).
+    character(*), intent(inout) :: buf
+    !> Characters in use.
+    integer, intent(inout) :: pos
+    !> Whether the number was written.
+    logical, intent(out) :: done
+    integer(int64), parameter :: ten13 = 10000000000000_int64, ten12 = 1000000000000_int64, &
+      ten8 = 100000000_int64
+    integer(int64) :: bits, q, rest
+    real(wp) :: a, y, t, f
+    integer :: top, k, s, attempt, p, first, high, eight, h2, l4, a3
+    done = .false.
+    bits = transfer(x, bits)
+    if (bits == 0_int64) then          ! +0 (-0 keeps its sign: the exact path writes it)
+      buf(pos + 1:pos + 19) = "0.000000000000E+000"
+      pos = pos + 19
+      done = .true.
+      return
+    end if
+    a = abs(x)
+    ! 2**top <= |x| < 2**(top + 1) for a normal x (0 and subnormals: not here)
+    top = int(iand(shiftr(bits, 52), 2047_int64)) - 1023
+    if (top < -34 .or. top > 36) return
+    k = shifta(top * 78913, 18)        ! the decimal exponent, or one short of it
+    q = 0
+    do attempt = 1, 2
+      s = cell_decimals - k
+      if (s < 0 .or. s > max_exact_pow10) return
+      y = a * exact_pow10(s)
+      t = aint(y)
+      f = y - t                         ! exact
+      if (abs(f - 0.5_wp) <= tie_margin) return
+      q = int(t, int64)
+      if (f > 0.5_wp) q = q + 1
+      if (q < ten13) exit
+      k = k + 1                         ! |x| >= 10**(k+1), or it rounded up to it
+    end do
+    if (q >= ten13 .or. q < ten12) return
+    p = pos
+    if (bits < 0) then
+      p = p + 1
+      buf(p:p) = "-"
+    end if
+    first = int(q / ten12)
+    rest = q - first * ten12
+    high = int(rest / ten8)            ! digits 2-5
+    eight = int(rest - high * ten8)    ! digits 6-13
+    buf(p + 1:p + 1) = achar(48 + first)
+    buf(p + 2:p + 2) = "."
+    h2 = high / 100
+    buf(p + 3:p + 4) = digit_pairs(2 * h2 + 1:2 * h2 + 2)
+    h2 = high - 100 * h2
+    buf(p + 5:p + 6) = digit_pairs(2 * h2 + 1:2 * h2 + 2)
+    l4 = eight / 10000
+    h2 = l4 / 100
+    buf(p + 7:p + 8) = digit_pairs(2 * h2 + 1:2 * h2 + 2)
+    h2 = l4 - 100 * h2
+    buf(p + 9:p + 10) = digit_pairs(2 * h2 + 1:2 * h2 + 2)
+    l4 = eight - 10000 * l4
+    h2 = l4 / 100
+    buf(p + 11:p + 12) = digit_pairs(2 * h2 + 1:2 * h2 + 2)
+    h2 = l4 - 100 * h2
+    buf(p + 13:p + 14) = digit_pairs(2 * h2 + 1:2 * h2 + 2)
+    if (k < 0) then
+      buf(p + 15:p + 17) = "E-0"
+    else
+      buf(p + 15:p + 17) = "E+0"
+    end if
+    a3 = abs(k)                         ! below 100 here
+    buf(p + 18:p + 19) = digit_pairs(2 * a3 + 1:2 * a3 + 2)
+    pos = p + 19
+    done = .true.
+  end subroutine cell_digits_fast
 
   !> Append the whole number q (any sign) to buf at pos+1.. (pos advanced), as I0 prints it.
   pure subroutine put_whole(q, buf, pos)

@@ -8,6 +8,8 @@
 !> characters) holds the number of rows, which the run knows from its first block, so the
 !> rows are written block by block as the CSV's are and memory stays flat.
 !> Format: https://numpy.org/doc/stable/reference/generated/numpy.lib.format.html
+!> put_row appends to a text buffer's character(*) data in place (intent(inout) by design).
+! allow(assumed-size-character-intent)
 module kinetostat_npy_writer
   use, intrinsic :: iso_fortran_env, only: int32, int64
   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
@@ -43,7 +45,6 @@ contains
     type(error_t), allocatable, intent(out) :: error
     integer, allocatable :: columns(:)
     logical, allocatable :: voidable(:)
-    real(wp), allocatable :: values(:)
     real(wp) :: nan
     integer :: c, k, n, longest
     allocate (columns(0))
@@ -55,18 +56,26 @@ contains
     end do
     n = size(columns)
     if (table%first_block()) call out%append(table_header(table, columns, longest))
-    allocate (voidable(n), values(n))
+    allocate (voidable(n))
     do c = 1, n
       voidable(c) = table%columns(columns(c))%voidable
     end do
     nan = ieee_value(1.0_wp, ieee_quiet_nan)
     call out%reserve(table%row_count() * n * value_bytes)
-    do k = 1, table%row_count()
-      ! +0.0: minus zero as zero, as in the CSV
-      values = table%rows(columns, k) + 0.0_wp
-      if (table%is_void(k)) where (voidable) values = nan
-      call put_npy_values(out, values)
-    end do
+    if (.not. host_little_endian()) then
+      do k = 1, table%row_count()
+        call put_npy_values(out, merge(nan, table%rows(columns, k) + 0.0_wp, voidable .and. table%is_void(k)))
+      end do
+    else
+      ! each row's values straight into the buffer (+0.0: minus zero as zero, as in the CSV)
+      do k = 1, table%row_count()
+        if (table%is_void(k)) then
+          call put_row(table%rows(:, k), columns, out%data, out%length, nan, voidable)
+        else
+          call put_row(table%rows(:, k), columns, out%data, out%length)
+        end if
+      end do
+    end if
     if (table%last_block() .and. table%row_offset + table%row_count() /= table%total_rows) then
       call fatal_error(error, exit_geometry, table%deck//": &"//table%mechanism//": --format npy: the run gave "// &
         int_str(table%row_offset + table%row_count())//" rows, not the "//int_str(table%total_rows)// &
@@ -148,6 +157,39 @@ contains
     end do
     out%length = n
   end subroutine put_npy_values
+
+  !> Append row(columns) to buf at n+1.. (n advanced) as float64 in the machine's byte
+  !> order (the caller's machine stores them little-endian), minus zero as zero; with `void`,
+  !> the cells marked in it are NaN.
+  pure subroutine put_row(row, columns, buf, n, nan, void)
+    !> The row's values.
+    real(wp), intent(in) :: row(:)
+    !> The columns written, in order.
+    integer, intent(in) :: columns(:)
+    !> Output bytes (room for 8 per column).
+    character(*), intent(inout) :: buf
+    !> Bytes in use.
+    integer, intent(inout) :: n
+    !> The value of a void cell.
+    real(wp), intent(in), optional :: nan
+    !> Per column: no value in this row.
+    logical, intent(in), optional :: void(:)
+    character(len=value_bytes) :: bytes
+    integer :: i
+    if (present(void) .and. present(nan)) then
+      do i = 1, size(columns)
+        bytes = transfer(merge(nan, row(columns(i)) + 0.0_wp, void(i)), bytes)
+        buf(n + 1:n + value_bytes) = bytes
+        n = n + value_bytes
+      end do
+      return
+    end if
+    do i = 1, size(columns)
+      bytes = transfer(row(columns(i)) + 0.0_wp, bytes)
+      buf(n + 1:n + value_bytes) = bytes
+      n = n + value_bytes
+    end do
+  end subroutine put_row
 
   !> Whether this machine stores numbers least significant byte first.
   pure logical function host_little_endian()

@@ -66,6 +66,10 @@ module kinetostat_row_blocks
   contains
     !> Takes the text written so far, in row order (it may move it elsewhere and empty `out`).
     procedure(take_i), deferred :: take
+    !> Takes the text so far and then a part after it (by default: the part appended to the
+    !> text, then `take`; a sink that writes the text out may write the part straight from
+    !> its own buffer, without the copy).
+    procedure :: take_part
   end type text_sink_t
 
   abstract interface
@@ -144,17 +148,29 @@ contains
     ! room for every row at once (no copying while the buffer grows)
     call out%reserve((last - first + 1) * self%row_room(size(self%columns)))
     do k = first, last
-      call out%append(self%opening)
+      if (len(self%opening) > 0) call out%append(self%opening)
       call put_cells(out, self%table%rows(:, k), self%columns, self%whole, self%voidable, self%table%is_void(k), &
         self%separator, self%void_cell)
       if (self%table%row_offset + k < max(self%table%total_rows, self%table%row_count())) then
-        call out%append(self%closing)
+        if (len(self%closing) > 0) call out%append(self%closing)
       else
         call out%append(self%last_closing)
       end if
       call out%end_line()
     end do
   end subroutine put_table_rows
+
+  !> The part appended to `out`, then the sink's `take` (text_sink_t's default take_part).
+  subroutine take_part(self, out, part)
+    !> The sink.
+    class(text_sink_t), intent(inout) :: self
+    !> The text so far.
+    type(text_buffer_t), intent(inout) :: out
+    !> The text that comes after it (left as it is).
+    type(text_buffer_t), intent(in) :: part
+    if (part%length > 0) call out%append(part%data(1:part%length))
+    call self%take(out)
+  end subroutine take_part
 
   !> Threads OpenMP would use (1 without OpenMP).
   integer function worker_count()
@@ -217,9 +233,12 @@ contains
       later_parts(me)%length = 0
       call writer%put_rows((b - 1) * block_rows + 1, min(n_rows, b * block_rows), parts(me), later_parts(me))
       !$omp ordered
-      if (parts(me)%length > 0) call out%append(parts(me)%data(1:parts(me)%length))
+      if (present(sink)) then
+        call sink%take_part(out, parts(me))
+      else if (parts(me)%length > 0) then
+        call out%append(parts(me)%data(1:parts(me)%length))
+      end if
       if (later_parts(me)%length > 0) call later%append(later_parts(me)%data(1:later_parts(me)%length))
-      if (present(sink)) call sink%take(out)
       !$omp end ordered
     end do
     !$omp end parallel do

@@ -46,6 +46,7 @@ module kinetostat_spool
     type(error_t), allocatable :: failure
   contains
     procedure :: take
+    procedure :: take_part => take_spool_part
     procedure :: aim
     procedure :: drain
     procedure :: absorb
@@ -73,6 +74,26 @@ contains
     if (allocated(self%failure)) return
     call self%drain(out, self%failure, force=.true.)
   end subroutine take
+
+  !> take, then `part` after the text so far: once the text goes to the file, `part` is
+  !> written from its own buffer (not copied into `out` first: this runs while the other
+  !> threads wait their turn to hand over their parts).
+  subroutine take_spool_part(self, out, part)
+    class(spool_t), intent(inout) :: self
+    !> The text written so far that is not in the file yet.
+    type(text_buffer_t), intent(inout) :: out
+    !> The text that comes after it (left as it is).
+    type(text_buffer_t), intent(in) :: part
+    if (allocated(self%failure)) return
+    if (self%spilled .and. out%length > 0) call self%drain(out, self%failure, force=.true.)
+    if (allocated(self%failure)) return
+    if (self%spilled .and. out%length == 0) then
+      if (part%length > 0) call put(self, part%data(1:part%length), self%failure)
+      return
+    end if
+    if (part%length > 0) call out%append(part%data(1:part%length))
+    call self%drain(out, self%failure, force=.true.)
+  end subroutine take_spool_part
 
   !> When `out` holds more than `bound` bytes (or `force` and the text went to the file
   !> already), move its text to the temporary file and empty it.
