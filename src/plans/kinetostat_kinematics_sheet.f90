@@ -173,7 +173,7 @@ contains
     if (part_drawn == 2) then
       call sheet%open(page, lang, words("Plans of velocities and accelerations", &
         "Планы скоростей и ускорений", lang)//" - "//table%deck, &
-        "kinetostat sheets: the second kinematics sheet (A3, A4) of "//table%deck//": the mechanism in the "// &
+        "kinetostat sheets: the second kinematics sheet ("//page%name//") of "//table%deck//": the mechanism in the "// &
         "position, the values there, the plans of velocities and "// &
         "accelerations and the values read off them.")
       call put_sheet_format(sheet, title_block_from_table(table, words("Plans of velocities and accelerations", &
