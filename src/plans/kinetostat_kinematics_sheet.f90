@@ -127,7 +127,7 @@ contains
     bottom_left = bottom
     if (page%landscape) bottom_left = inner(4) - gap
     ! (the values at the position: the points' and the links' tables side by side in a column
-    ! narrower than 200 mm: A2, A3, A4's second sheet)
+    ! narrower than 200 mm: A2, A3's and A4's second sheet)
     compact = .false.
     if (part_drawn == 0) then
       cw = (inner(3) - inner(1) - 4.0_wp * gap) / 3.0_wp
@@ -241,7 +241,7 @@ contains
     if (part_drawn == 1) then
       continue
     else if (part_drawn == 2 .and. present(plans)) then
-      ! (A4: the values beside the mechanism, the two plans side by side under them, the values
+      ! (A3, A4: the values beside the mechanism, the two plans side by side under them, the values
       ! read off them across the sheet)
       call put_values(x2, top, cw, region(4) - top)
       y = region(4) + gap
@@ -258,7 +258,7 @@ contains
       y = top + values_height() + gap
       hmax = inner(4) - block_height - gap - y
       if (compact) then
-        ! (A2, A3: the values read off as high as they need at 1.8 mm, 0.3 of the height at the
+        ! (A2: the values read off as high as they need at 1.8 mm, 0.3 of the height at the
         ! most; the two plans the rest)
         h_read = min(0.3_wp * hmax, values_table_height(plans, cw, lang))
         associate (ph => 0.5_wp * (hmax - h_read) - gap)
