@@ -298,12 +298,14 @@ for spec in $sheets_a3; do
   dir="$cli_tmp/sheets_${paper}_${deck}_$lang"
   rm -rf "$dir"
   run_ks sheets "data/$deck.nml" -o "$dir" --paper "$paper" --lang "$lang" --student X --group G --variant 1
+  sheet_word=Sheet; total_word=Sheets
+  [ "$lang" = ru ] && { sheet_word="Лист"; total_word="Листов"; }
   sheets_a3_svgs="$dir/kinematics.svg"
   [ "$paper" = A3 ] && sheets_a3_svgs="$sheets_a3_svgs $dir/kinematics-2.svg"
   [ "$deck" = sixbar_flywheel ] || sheets_a3_svgs="$sheets_a3_svgs $dir/dynamics.svg"
   if [ "$rc" -eq 0 ] && sheets_iso "$dir/kinematics.svg" "$pw" "$ph" >"$cli_tmp/check.out" 2>&1 \
-    && { [ "$paper" != A3 ] || { sheets_iso "$dir/kinematics-2.svg" "$pw" "$ph" && grep -q '>Sheet 2<' "$dir/kinematics-2.svg" \
-      && grep -q '>Sheet 3<' "$dir/kinetostatics.svg" && grep -q '>Sheets 4<' "$dir/kinematics.svg"; }; } >>"$cli_tmp/check.out" 2>&1 \
+    && { [ "$paper" != A3 ] || { sheets_iso "$dir/kinematics-2.svg" "$pw" "$ph" && grep -q ">$sheet_word 2<" "$dir/kinematics-2.svg" \
+      && grep -q ">$sheet_word 3<" "$dir/kinetostatics.svg" && grep -q ">$total_word 4<" "$dir/kinematics.svg"; }; } >>"$cli_tmp/check.out" 2>&1 \
     && python3 "$sheets_check" labels --lines $sheets_a3_svgs >>"$cli_tmp/check.out" 2>&1; then pass
   else fail "sheets-$paper-$deck-$lang" "exit $rc: $(grep -v '^[0-9]* sheets' "$cli_tmp/check.out" | head -4)"; fi
 done
