@@ -1,7 +1,7 @@
 !> `kinetostat sheets DECK -o DIR`: the course's drawing sheets of a linkage deck, each as SVG
 !> and DXF (the one drawing model) and as PDF at true size when rsvg-convert is installed:
 !> DIR/kinematics (the structure, the mechanism at the position with a trajectory, the output
-!> link's diagrams, the values; on A4 portrait two sheets: DIR/kinematics with the plan of
+!> link's diagrams, the values; on A3 and A4 two sheets: DIR/kinematics with the plan of
 !> positions, the structure and the diagrams, DIR/kinematics-2 with the values and the plans of
 !> velocities and accelerations), DIR/kinetostatics (the mechanism with its forces, Zhukovsky's
 !> lever, the force polygons with each Assur group drawn apart, at the position --at K, by
@@ -30,16 +30,17 @@ module kinetostat_sheets
   use kinetostat_sketch, only: sketch_t
   use kinetostat_drawing, only: drawing_t, drawing_from_sketch
   use kinetostat_kinematics_sheet, only: output_motion
+  use kinetostat_sheet, only: kinematics_sheets
   implicit none
   private
   public :: write_course_sheets, sheet_names, parse_sheet_numbers
 
   !> The sheets' file stems, in the course's order: a linkage's three, then the design kinds'
   !> (each kind's mechanism_t%sheet_name: &gear_geometry, &planetary_synthesis, &cam_profile),
-  !> and the kinematics' second sheet on A4 (made with the first, numbered after it).
+  !> and the kinematics' second sheet on A3, A4 (made with the first, numbered after it).
   character(*), parameter :: sheet_names(*) = [character(len=13) :: "kinematics", "kinetostatics", "dynamics", &
     "gears", "planetary", "cam", "kinematics-2"]
-  !> The place of the kinematics' second sheet (A4) in sheet_names.
+  !> The place of the kinematics' second sheet (A3, A4) in sheet_names.
   integer, parameter :: kinematics_second = 7
   !> The plan of positions: rows of its run between two positions (the traced point's
   !> trajectory is drawn through them all).
@@ -50,7 +51,7 @@ module kinetostat_sheets
 contains
 
   !> Parse --sheet-numbers "1,2,3": the department's numbers of the sheets in the course's
-  !> order (kinematics, on A4 its second sheet, kinetostatics, dynamics), whole numbers 1..999.
+  !> order (kinematics, on A3, A4 its second sheet, kinetostatics, dynamics), whole numbers 1..999.
   pure subroutine parse_sheet_numbers(text, numbers, error)
     character(*), intent(in) :: text
     integer, allocatable, intent(out) :: numbers(:)
@@ -73,7 +74,7 @@ contains
       end if
       if (ios /= 0 .or. value < 1) then
         call fatal_error(error, exit_usage, "--sheet-numbers needs whole numbers 1..999 separated by commas, "// &
-          "one per sheet (kinematics, on A4 kinematics-2, kinetostatics, dynamics), got '"//text//"'")
+          "one per sheet (kinematics, on A3, A4 kinematics-2, kinetostatics, dynamics), got '"//text//"'")
         return
       end if
       numbers = [numbers, value]
@@ -135,8 +136,8 @@ contains
       made(1) = .true.
       made(2) = .true.
       made(3) = dynamics
-      ! (A4 portrait: the kinematics on two sheets)
-      made(kinematics_second) = options%paper == "A4"
+      ! (A3, A4: the kinematics on two sheets)
+      made(kinematics_second) = kinematics_sheets(options%paper) == 2
     end if
     count_made = count(made)
     if (size(numbers) > 0 .and. size(numbers) /= count_made) then
@@ -167,7 +168,7 @@ contains
         o%format = format_dxf
         call add_file(trim(sheet_names(s))//".dxf")
         if (made(kinematics_second)) then
-          ! (A4: the second sheet, the next number)
+          ! (A3, A4: the second sheet, the next number)
           n = n + 1
           o%sheet_number = n
           if (size(numbers) > 0) o%sheet_number = numbers(n)

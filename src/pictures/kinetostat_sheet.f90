@@ -37,7 +37,7 @@ module kinetostat_sheet
   use kinetostat_label_place, only: label_boxes_t
   implicit none
   private
-  public :: sheet_t, entity_t, paper_t, iso_paper, paper_fits, course_paper
+  public :: sheet_t, entity_t, paper_t, iso_paper, paper_fits, course_paper, kinematics_sheets
   public :: entity_line, entity_polyline, entity_polygon, entity_rect, entity_circle, entity_arc, entity_text, &
     entity_group, entity_group_end
   public :: layer_links, layer_joints, layer_guides, layer_forces, layer_text, layer_vplan, layer_aplan, &
@@ -239,6 +239,15 @@ contains
     type(paper_t) :: paper
     paper = iso_paper(name, name /= "A4")
   end function course_paper
+
+  !> How many sheets the course's kinematics takes on paper `name`: one on A1, A2 (three
+  !> columns); two on A3 and A4 (kinematics: the plan of positions, the structure, the output
+  !> link's diagrams; kinematics-2: the mechanism in the position, the values, the plans).
+  pure integer function kinematics_sheets(name)
+    !> "A4", "A3", "A2" or "A1".
+    character(*), intent(in) :: name
+    kinematics_sheets = merge(2, 1, name == "A3" .or. name == "A4")
+  end function kinematics_sheets
 
   !> Whether a content of `width` x `height` mm fits inside the frame of `paper`.
   pure logical function paper_fits(paper, width, height)

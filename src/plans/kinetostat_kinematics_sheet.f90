@@ -18,7 +18,7 @@ module kinetostat_kinematics_sheet
   use kinetostat_text, only: int_str
   use kinetostat_step_table, only: step_table_t
   use kinetostat_labels, only: unit_word => unit_symbol
-  use kinetostat_sheet, only: sheet_t, paper_t, course_paper, layer_text, layer_charts
+  use kinetostat_sheet, only: sheet_t, paper_t, course_paper, kinematics_sheets, layer_text, layer_charts
   use kinetostat_title_block, only: put_sheet_format, title_block_from_table, block_height, block_width
   use kinetostat_scales, only: round_scale, scale_number
   use kinetostat_sketch, only: sketch_t
@@ -44,8 +44,8 @@ module kinetostat_kinematics_sheet
 
 contains
 
-  !> The kinematics sheet of row k on `paper`'s size (course_paper: A1 .. A3 landscape in
-  !> three columns; A4 portrait, its `part` 1 or 2, in two).
+  !> The kinematics sheet of row k on `paper`'s size (course_paper: A1, A2 landscape in
+  !> three columns; A3 landscape and A4 portrait, its `part` 1 or 2, in two).
   subroutine draw_kinematics_sheet(title, table, topo, drawing, k, paper, lang, sheet, positions, every, n_positions, &
                                    point_asked, output_link, plans, part)
     !> Title of the mechanism.
@@ -73,17 +73,18 @@ contains
     integer, intent(in) :: output_link
     !> The plans of velocities and accelerations at row k (none: the values table alone).
     type(plans_t), intent(in), optional :: plans
-    !> A4 portrait's sheet: 1 (the plan of positions, the structure, the output link's
+    !> A3's or A4's sheet: 1 (the plan of positions, the structure, the output link's
     !> diagrams; the default) or 2 (the mechanism in the position, the values there, the plans
-    !> and the values read off them); A1 .. A3 landscape draw everything on one sheet.
+    !> and the values read off them); A1, A2 draw everything on one sheet.
     integer, intent(in), optional :: part
     type(paper_t) :: page
     integer :: part_drawn
     !> The values at the position in two tables side by side (the points', the links').
     logical :: compact
-    !> The bottom of the panels (A4: above the title block) and the height of the values
-    !> read off the plans (A4), mm.
-    real(wp) :: bottom, h_read
+    !> The bottom of the panels (A3, A4: above the title block), of the left column's (A3:
+    !> beside the title block, down to the frame) and the height of the values read off the
+    !> plans (A3, A4), mm.
+    real(wp) :: bottom, bottom_left, h_read
     type(mechanism_view_t) :: view
     type(drawing_t) :: all_positions
     type(drawing_t), allocatable :: placed(:)
@@ -108,11 +109,11 @@ contains
     if (allocated(table%driver)) driver = table%driver
     call plan_groups(topo, drawing, table, slides, driver, groups)
 
-    ! A1 .. A3 landscape: one sheet in three columns; A4 portrait (ГОСТ 2.301: its title
-    ! block along the short side) two sheets in two columns (part 1, 2)
+    ! A1, A2 landscape: one sheet in three columns; A3 landscape and A4 portrait (ГОСТ 2.301:
+    ! its title block along the short side) two sheets in two columns (part 1, 2)
     page = course_paper(paper%name)
     part_drawn = 0
-    if (.not. page%landscape) then
+    if (kinematics_sheets(page%name) == 2) then
       part_drawn = 1
       if (present(part)) then
         if (part == 2) part_drawn = 2
@@ -120,10 +121,13 @@ contains
     end if
     inner = page%inside()
     top = inner(2) + 24.0_wp
-    ! (A4: the panels stop above the title block, which spans the frame's width)
+    ! (A4: the panels stop above the title block, which spans the frame's width; A3 landscape:
+    ! the left column, clear of the block, goes down to the frame)
     bottom = inner(4) - block_height - gap
+    bottom_left = bottom
+    if (page%landscape) bottom_left = inner(4) - gap
     ! (the values at the position: the points' and the links' tables side by side in a column
-    ! narrower than 200 mm: A2, A3, A4's second sheet)
+    ! narrower than 200 mm: A2, A3's and A4's second sheet)
     compact = .false.
     if (part_drawn == 0) then
       cw = (inner(3) - inner(1) - 4.0_wp * gap) / 3.0_wp
@@ -140,7 +144,7 @@ contains
       if (part_drawn == 1) then
         ! the plan of positions over the structure (its tables' height, at most 0.45 of the
         ! column), the diagrams beside them
-        region = [x1, top, x1 + cw, bottom - gap - min(0.45_wp * (bottom - top), 34.0_wp + 4.5_wp * &
+        region = [x1, top, x1 + cw, bottom_left - gap - min(0.45_wp * (bottom_left - top), 34.0_wp + 4.5_wp * &
           real(size(groups) + 1, wp) + 4.2_wp * real(lower_pairs() + 1, wp))]
       else
         ! the mechanism in the position beside the values table (its points and links side by
@@ -169,7 +173,7 @@ contains
     if (part_drawn == 2) then
       call sheet%open(page, lang, words("Plans of velocities and accelerations", &
         "Планы скоростей и ускорений", lang)//" - "//table%deck, &
-        "kinetostat sheets: the second kinematics sheet (A4) of "//table%deck//": the mechanism in the "// &
+        "kinetostat sheets: the second kinematics sheet ("//page%name//") of "//table%deck//": the mechanism in the "// &
         "position, the values there, the plans of velocities and "// &
         "accelerations and the values read off them.")
       call put_sheet_format(sheet, title_block_from_table(table, words("Plans of velocities and accelerations", &
@@ -209,7 +213,7 @@ contains
     if (part_drawn == 0) then
       call put_structure(x1, region(4) + gap, cw, inner(4) - region(4) - 2.0_wp * gap)
     else if (part_drawn == 1) then
-      call put_structure(x1, region(4) + gap, cw, bottom - region(4) - gap)
+      call put_structure(x1, region(4) + gap, cw, bottom_left - region(4) - gap)
     end if
 
     ! the output link's diagrams over the input angle
@@ -237,7 +241,7 @@ contains
     if (part_drawn == 1) then
       continue
     else if (part_drawn == 2 .and. present(plans)) then
-      ! (A4: the values beside the mechanism, the two plans side by side under them, the values
+      ! (A3, A4: the values beside the mechanism, the two plans side by side under them, the values
       ! read off them across the sheet)
       call put_values(x2, top, cw, region(4) - top)
       y = region(4) + gap
@@ -254,7 +258,7 @@ contains
       y = top + values_height() + gap
       hmax = inner(4) - block_height - gap - y
       if (compact) then
-        ! (A2, A3: the values read off as high as they need at 1.8 mm, 0.3 of the height at the
+        ! (A2: the values read off as high as they need at 1.8 mm, 0.3 of the height at the
         ! most; the two plans the rest)
         h_read = min(0.3_wp * hmax, values_table_height(plans, cw, lang))
         associate (ph => 0.5_wp * (hmax - h_read) - gap)

@@ -285,10 +285,10 @@ if [ "$rc" -eq 0 ] && grep -q "F56 приложена к точке звена, 
   && python3 "$sheets_check" labels --lines "$dir/kinetostatics.svg" >"$cli_tmp/check.out" 2>&1; then pass
 else fail sheets-a4-guide-reaction "exit $rc: no F56 line of action note, dynamics not 210 x 297, or $(head -3 "$cli_tmp/check.out")"; fi
 
-# A3 and A2 landscape: the kinematics and the dynamics sheets' middle column stops above the
-# title block (A3), the mechanism panel's heading in two lines (in Russian on A2 its break
-# before a subscript): no label over a label or a line, leader lines counted (PR 3207; the
-# engine and the six-bar in --long)
+# A3 and A2 landscape: the kinematics (on A3 its two sheets, kinematics and kinematics-2, as
+# A4's) and the dynamics sheets' middle column stops above the title block (A3), the mechanism
+# panel's heading in two lines (in Russian on A2 its break before a subscript): no label over a
+# label or a line, leader lines counted (PR 3207; the engine and the six-bar in --long)
 sheets_a3="pr3207_flywheel:A3:en:420.00:297.00 pr3207_flywheel:A2:ru:594.00:420.00"
 if [ "${KINETOSTAT_LONG:-0}" = 1 ]; then
   sheets_a3="$sheets_a3 assur_engine_flywheel:A3:en:420.00:297.00 sixbar_flywheel:A3:ru:420.00:297.00"
@@ -298,9 +298,14 @@ for spec in $sheets_a3; do
   dir="$cli_tmp/sheets_${paper}_${deck}_$lang"
   rm -rf "$dir"
   run_ks sheets "data/$deck.nml" -o "$dir" --paper "$paper" --lang "$lang" --student X --group G --variant 1
+  sheet_word=Sheet; total_word=Sheets
+  [ "$lang" = ru ] && { sheet_word="Лист"; total_word="Листов"; }
   sheets_a3_svgs="$dir/kinematics.svg"
+  [ "$paper" = A3 ] && sheets_a3_svgs="$sheets_a3_svgs $dir/kinematics-2.svg"
   [ "$deck" = sixbar_flywheel ] || sheets_a3_svgs="$sheets_a3_svgs $dir/dynamics.svg"
   if [ "$rc" -eq 0 ] && sheets_iso "$dir/kinematics.svg" "$pw" "$ph" >"$cli_tmp/check.out" 2>&1 \
+    && { [ "$paper" != A3 ] || { sheets_iso "$dir/kinematics-2.svg" "$pw" "$ph" && grep -q ">$sheet_word 2<" "$dir/kinematics-2.svg" \
+      && grep -q ">$sheet_word 3<" "$dir/kinetostatics.svg" && grep -q ">$total_word 4<" "$dir/kinematics.svg"; }; } >>"$cli_tmp/check.out" 2>&1 \
     && python3 "$sheets_check" labels --lines $sheets_a3_svgs >>"$cli_tmp/check.out" 2>&1; then pass
   else fail "sheets-$paper-$deck-$lang" "exit $rc: $(grep -v '^[0-9]* sheets' "$cli_tmp/check.out" | head -4)"; fi
 done
@@ -573,11 +578,13 @@ PATH="$sheets_path"
 
 # The plans of velocities and accelerations fill their panels on every paper: each plan's
 # drawing (its rays, components, pole and images) is at least PERCENT % of its panel's smaller
-# side across (its larger extent; 35 % on A4's second kinematics sheet, A2 and A1, 25 % on A3;
+# side across (its larger extent; 35 % on A3's and A4's second kinematics sheet, A2 and A1;
 # the sheets of the checks above),
 # every word of the plan (its labels and its notes "at the pole π: ...", "not drawn, shorter
-# than 1 mm: ...") inside its panel, no note smaller than 1.8 mm (ГОСТ 2.304's smallest).
-# Must fail: a plan drawn at half its size, a note moved 80 mm right, past its panel's edge.
+# than 1 mm: ...") inside its panel, no note and no line of the values read off the plans
+# smaller than 1.8 mm (ГОСТ 2.304's smallest).
+# Must fail: a plan drawn at half its size, a note moved 80 mm right, past its panel's edge,
+# the values read off the plans at 1.4 mm.
 sheets_plans_fill() {  # PERCENT SVG...: "ok ..." or "differs: ..."
   python3 - "$root/tools" "$@" <<'PY'
 import math, re, sys
@@ -586,13 +593,20 @@ import xml.etree.ElementTree as ET
 import svg_check as sc
 least = float(sys.argv[2]) / 100
 bad, seen, worst = [], 0, 1e9
+read_heads = ("Values read off the plans", "Величины по планам")
 for path in sys.argv[3:]:
     src = open(path, encoding="utf-8").read()
     sizes, _ = sc.style_sizes(src)
-    panel = None
+    panel, read_panel, smallest_read = None, None, 1e9
     for el in ET.fromstring(src).iter():
         if el.tag == sc.SVG_NS + "rect" and el.get("class") == "panel":
             panel = [float(el.get(k)) for k in ("x", "y", "width", "height")]
+        if el.tag == sc.SVG_NS + "text" and "".join(el.itertext()) in read_heads:
+            read_panel = panel
+        if el.tag == sc.SVG_NS + "text" and read_panel is not None and el.get("class") == "num":
+            x, y, w, h = read_panel
+            if x <= float(el.get("x")) <= x + w and y <= float(el.get("y")) <= y + h:
+                smallest_read = min(smallest_read, sc.text_size(el, sizes))
         if el.tag != sc.SVG_NS + "g" or el.get("class") not in ("velocity-plan", "acceleration-plan"):
             continue
         seen += 1
@@ -619,6 +633,10 @@ for path in sys.argv[3:]:
         if share < least:
             bad.append(f"{path}: the {el.get('class')} is {across:.1f} mm across in its {w:.1f} x {h:.1f} mm panel "
                        f"({100 * share:.0f} %, expected {100 * least:.0f} % at the least)")
+    if read_panel is None or smallest_read == 1e9:
+        bad.append(f"{path}: no values read off the plans")
+    elif smallest_read < 1.8 - 1e-9:
+        bad.append(f"{path}: the values read off the plans at {smallest_read} mm (1.8 mm at the least)")
 if seen == 0:
     bad.append("no plan found")
 print("differs: " + "; ".join(bad[:6]) if bad else f"ok {seen} plans, the smallest {100 * worst:.0f} % of its panel")
@@ -626,24 +644,21 @@ PY
 }
 sheets_fill_svgs="$cli_tmp/sheets_a4_class3_en/kinematics-2.svg $cli_tmp/sheets_a4_pr3207/kinematics-2.svg"
 sheets_fill_svgs="$sheets_fill_svgs $cli_tmp/sheets_A2_pr3207_flywheel_ru/kinematics.svg"
-sheets_fill_a3="$cli_tmp/sheets_A3_pr3207_flywheel_en/kinematics.svg"
+sheets_fill_svgs="$sheets_fill_svgs $cli_tmp/sheets_A3_pr3207_flywheel_en/kinematics-2.svg"
 sheets_fill_svgs="$sheets_fill_svgs $cli_tmp/sheets_class3_en/kinematics.svg"
 # (assur_pr3207_flywheel on A3: its acceleration plan's note "at the pole π: j16, ..." as wide
-# as its panel; a few seconds, with --long)
+# as its panel, the most values read off; a few seconds, with --long)
 if [ "${KINETOSTAT_LONG:-0}" = 1 ]; then
   dir="$cli_tmp/sheets_fill_assur_A3"
   rm -rf "$dir"
   run_ks sheets data/assur_pr3207_flywheel.nml -o "$dir" --paper A3
   [ "$rc" -eq 0 ] || fail sheets-plans-fill-run "exit $rc: $(head -c 300 "$err")"
-  python3 "$sheets_check" labels --lines "$dir/kinematics.svg" >"$cli_tmp/check.out" 2>&1 && pass \
+  python3 "$sheets_check" labels --lines "$dir/kinematics.svg" "$dir/kinematics-2.svg" >"$cli_tmp/check.out" 2>&1 && pass \
     || fail sheets-plans-fill-assur-A3-legible "$(grep -v '^[0-9]* sheets' "$cli_tmp/check.out" | head -3)"
-  sheets_fill_a3="$sheets_fill_a3 $dir/kinematics.svg"
+  sheets_fill_svgs="$sheets_fill_svgs $dir/kinematics-2.svg"
 fi
 verdict=$(sheets_plans_fill 35 $sheets_fill_svgs)
 case "$verdict" in ok*) pass ;; *) fail sheets-plans-fill "$verdict" ;; esac
-# (A3: its third column holds the values, the two plans and the values read off: 25 %)
-verdict=$(sheets_plans_fill 25 $sheets_fill_a3)
-case "$verdict" in ok*) pass ;; *) fail sheets-plans-fill-A3 "$verdict" ;; esac
 # must fail: the acceleration plan drawn at half its size about its pole; a note moved 80 mm
 # right, past the panel's edge
 svg="$cli_tmp/sheets_a4_class3_en/kinematics-2.svg"
@@ -669,3 +684,12 @@ sed -E '/<g class="acceleration-plan"/,/<\/g>/ s/(<text x=")([0-9.]+)(" y="[0-9.
   >"$cli_tmp/fill_bad.svg"
 verdict=$(sheets_plans_fill 35 "$cli_tmp/fill_bad.svg")
 case "$verdict" in "differs: "*"leaves its panel"*) pass ;; *) fail sheets-plans-fill-must-fail-note "a note off its panel passed: $verdict" ;; esac
+# must fail: the values read off the plans at 1.4 mm (as they were on one A3 sheet)
+python3 - "$svg" >"$cli_tmp/fill_bad.svg" <<'PY'
+import re, sys
+t = open(sys.argv[1], encoding="utf-8").read()
+start = t.index(">Values read off the plans<")
+print(t[:start] + re.sub(r'class="num"( style="font-size: [0-9.]+px")?', 'class="num" style="font-size: 1.4px"', t[start:]), end="")
+PY
+verdict=$(sheets_plans_fill 35 "$cli_tmp/fill_bad.svg")
+case "$verdict" in "differs: "*"values read off the plans at 1.4 mm"*) pass ;; *) fail sheets-plans-fill-must-fail-read "values read off at 1.4 mm passed: $verdict" ;; esac
