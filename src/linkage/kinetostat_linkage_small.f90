@@ -96,8 +96,7 @@ contains
     det = m11 * m22 - m12 * m21
     ok = abs(det) > small_screen * (abs(m11) + abs(m12)) * (abs(m21) + abs(m22))
     if (.not. ok) return
-    x(cm) = (r1 * m22 - m12 * r2) / det
-    x(cm + 1) = (m11 * r2 - m21 * r1) / det
+    x(cm:cm + 1) = cramer2(m11, m12, m21, m22, r1, r2, det)
     res = b(1:3) - a(1:3, cm) * x(cm) - a(1:3, cm + 1) * x(cm + 1)
     call solve_3x2(a(1:3, c1), a(1:3, c1 + 1), n1, res, x(c1), x(c1 + 1), ok)
     if (.not. ok) return
@@ -112,14 +111,25 @@ contains
     real(wp), intent(out) :: y1, y2
     logical, intent(out) :: ok
     integer :: i, j, k
+    real(wp) :: y(2)
     i = maxloc(abs(n), 1)
     call others(i, j, k)
     ok = abs(n(i)) > small_screen * norm3(u) * norm3(v)
     if (.not. ok) return
     ! rows j, k: [u(j) v(j); u(k) v(k)], whose determinant is n(i)
-    y1 = (r(j) * v(k) - v(j) * r(k)) / n(i)
-    y2 = (u(j) * r(k) - r(j) * u(k)) / n(i)
+    y = cramer2(u(j), v(j), u(k), v(k), r(j), r(k), n(i))
+    y1 = y(1)
+    y2 = y(2)
   end subroutine solve_3x2
+
+  !> x of [m11 m12; m21 m22] x = [r1; r2] by Cramer's rule, det = m11 m22 - m12 m21 given
+  !> (clear of zero: the caller screens it).
+  pure function cramer2(m11, m12, m21, m22, r1, r2, det) result(x)
+    real(wp), intent(in) :: m11, m12, m21, m22, r1, r2, det
+    real(wp) :: x(2)
+    x(1) = (r1 * m22 - m12 * r2) / det
+    x(2) = (m11 * r2 - m21 * r1) / det
+  end function cramer2
 
   !> The two indices of 1..3 after i in cyclic order (i, j, k: an even permutation).
   pure subroutine others(i, j, k)
@@ -211,8 +221,7 @@ contains
     call particular(b, c2, 3, f%n(:, 2), f%pick(2), r(c2:c2 + 1), x2)
     rm(1) = r(cm) - dot_product(b(cm, 1:3), x1) - dot_product(b(cm, 4:6), x2)
     rm(2) = r(cm + 1) - dot_product(b(cm + 1, 1:3), x1) - dot_product(b(cm + 1, 4:6), x2)
-    t(1) = (rm(1) * f%p(2, 2) - f%p(1, 2) * rm(2)) / f%det
-    t(2) = (f%p(1, 1) * rm(2) - f%p(2, 1) * rm(1)) / f%det
+    t = cramer2(f%p(1, 1), f%p(1, 2), f%p(2, 1), f%p(2, 2), rm(1), rm(2), f%det)
     x(1:3) = x1 + t(1) * f%n(:, 1)
     x(4:6) = x2 + t(2) * f%n(:, 2)
   end subroutine dyad_solve
@@ -230,8 +239,7 @@ contains
     g(1) = dot_product(f%n(:, 1), s(1:3))
     g(2) = dot_product(f%n(:, 2), s(4:6))
     ! p^T ym = g
-    ym(1) = (g(1) * f%p(2, 2) - f%p(2, 1) * g(2)) / f%det
-    ym(2) = (f%p(1, 1) * g(2) - f%p(1, 2) * g(1)) / f%det
+    ym = cramer2(f%p(1, 1), f%p(2, 1), f%p(1, 2), f%p(2, 2), g(1), g(2), f%det)
     y(cm:cm + 1) = ym
     rest = s(1:3) - b(cm, 1:3) * ym(1) - b(cm + 1, 1:3) * ym(2)
     call outer_multipliers(b, c1, 0, f%n(:, 1), f%pick(1), rest, y(c1:c1 + 1))
@@ -249,8 +257,7 @@ contains
     integer :: j, k
     call others(pick, j, k)
     x(pick) = 0.0_wp
-    x(j) = (r(1) * b(c + 1, off + k) - b(c, off + k) * r(2)) / n(pick)
-    x(k) = (b(c, off + j) * r(2) - r(1) * b(c + 1, off + j)) / n(pick)
+    x([j, k]) = cramer2(b(c, off + j), b(c, off + k), b(c + 1, off + j), b(c + 1, off + k), r(1), r(2), n(pick))
   end subroutine particular
 
   !> y with rows^T y = rest (rows: rows c, c+1 of b on columns off+1..off+3; 3 equations,
@@ -262,8 +269,7 @@ contains
     integer :: j, k
     call others(pick, j, k)
     ! [rows(1,j) rows(2,j); rows(1,k) rows(2,k)] y = [rest(j); rest(k)], determinant n(pick)
-    y(1) = (rest(j) * b(c + 1, off + k) - b(c + 1, off + j) * rest(k)) / n(pick)
-    y(2) = (b(c, off + j) * rest(k) - rest(j) * b(c, off + k)) / n(pick)
+    y = cramer2(b(c, off + j), b(c + 1, off + j), b(c, off + k), b(c + 1, off + k), rest(j), rest(k), n(pick))
   end subroutine outer_multipliers
 
 end module kinetostat_linkage_small
