@@ -20,7 +20,7 @@ module kinetostat_assur
   use kinetostat_text, only: int_str
   use kinetostat_format, only: trimmed_es
   use kinetostat_assur_kinematics, only: link_state_t, point_state_t, dyad_geometry_t, dyad_pose_t, &
-    crank_state, frame_state, set_dyad_pose, kind_names, pose_ok, pose_no_assembly
+    crank_state, point_motion, frame_state, set_dyad_pose, kind_names, pose_ok, pose_no_assembly
   use kinetostat_assur_statics, only: dyad_reactions_t, dyad_reactions, pair_is_prismatic
   implicit none
   private
@@ -473,19 +473,6 @@ contains
       step%residual = equilibrium_residual(known(1:))
       if (present(balances)) balances = known
     end associate
-  contains
-    !> point_on(st, r) in place (inlined: a function's result of this size comes back
-    !> through memory, which costs a small mechanism's step more than the arithmetic).
-    pure subroutine point_motion(st, r, ps)
-      type(link_state_t), intent(in) :: st
-      real(wp), intent(in) :: r(2)
-      type(point_state_t), intent(out) :: ps
-      real(wp) :: w(2)
-      w = [st%cos_th * r(1) - st%sin_th * r(2), st%sin_th * r(1) + st%cos_th * r(2)]
-      ps%p = st%o + w
-      ps%v = st%vo + st%u * [-w(2), w(1)]
-      ps%a = st%ao + st%eq * [-w(2), w(1)] - st%u**2 * w
-    end subroutine point_motion
   end subroutine step_in
 
   !> Size of the mechanism at this position: the largest distance of a dyad's joint from

@@ -22,7 +22,7 @@ module kinetostat_assur_kinematics
   implicit none
   private
   public :: link_state_t, point_state_t, dyad_geometry_t, dyad_pose_t
-  public :: point_on, crank_state, frame_state, set_dyad_pose
+  public :: point_on, point_motion, crank_state, frame_state, set_dyad_pose
   public :: kind_rrr, kind_rrp, kind_rpr, kind_prp, kind_rpp, kind_names, kind_has_mode
   public :: pose_ok, pose_no_assembly, pose_dead
 
@@ -162,13 +162,25 @@ contains
     !> Local coordinates, m.
     real(wp), intent(in) :: r(2)
     type(point_state_t) :: ps
+    call point_motion(ls, r, ps)
+  end function point_on
+
+  !> point_on(ls, r) into ps (a step's hot path: a function's result of this size comes back
+  !> through memory, which costs a small mechanism's step more than the arithmetic).
+  pure subroutine point_motion(ls, r, ps)
+    !> Link frame.
+    type(link_state_t), intent(in) :: ls
+    !> Local coordinates, m.
+    real(wp), intent(in) :: r(2)
+    !> The point's position, m, and its velocity and acceleration analogues.
+    type(point_state_t), intent(out) :: ps
     real(wp) :: w(2)
     ! rotate(r, ls%th) with the frame's own cosine and sine
     w = [ls%cos_th * r(1) - ls%sin_th * r(2), ls%sin_th * r(1) + ls%cos_th * r(2)]
     ps%p = ls%o + w
     ps%v = ls%vo + ls%u * perp(w)
     ps%a = ls%ao + ls%eq * perp(w) - ls%u**2 * w
-  end function point_on
+  end subroutine point_motion
 
   !> Solve [c1 c2] x = rhs (2x2); `ok` false when the columns are (nearly) parallel:
   !> |det| <= reach_tol |c1| |c2| (the lengths by hypot). The test is settled first from the
