@@ -15,7 +15,7 @@
 module kinetostat_kinematics_sheet
   use kinetostat_kinds, only: wp, deg_to_rad
   use kinetostat_format, only: short_number, fixed_number
-  use kinetostat_text, only: int_str
+  use kinetostat_text, only: int_str, char_count
   use kinetostat_step_table, only: step_table_t
   use kinetostat_labels, only: unit_word => unit_symbol
   use kinetostat_sheet, only: sheet_t, paper_t, course_paper, kinematics_sheets, layer_text, layer_charts
@@ -586,15 +586,11 @@ contains
       character(*), intent(in) :: cells(:, :)
       real(wp), intent(in) :: w
       real(wp) :: widths(size(cells, 2))
-      integer :: c, r, i, n
+      integer :: c, r
       widths = 2.0_wp
       do c = 1, size(cells, 2)
         do r = 1, size(cells, 1)
-          n = 0
-          do i = 1, len_trim(cells(r, c))
-            if (iachar(cells(r, c)(i:i)) < 128 .or. iachar(cells(r, c)(i:i)) >= 192) n = n + 1
-          end do
-          widths(c) = max(widths(c), 2.0_wp + real(n, wp))
+          widths(c) = max(widths(c), 2.0_wp + real(char_count(trim(cells(r, c))), wp))
         end do
       end do
       widths = w * widths / sum(widths)
