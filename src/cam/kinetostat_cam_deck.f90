@@ -12,12 +12,25 @@ module kinetostat_cam_deck
   implicit none
   private
   public :: cam_deck_t, read_cam_deck, cam_template, follower_translating, follower_flat
-  public :: cam_phi_deg, cam_theta_deg, cam_f2, cam_vdir, cam_ds_dphi, cam_x_b
+  public :: step_values_t, cam_phi_deg, cam_vdir, cam_x_b
 
   !> Follower: knife-edge or roller, pressure angle from the deck, no friction at the cam.
   integer, parameter :: follower_translating = 1
   !> Follower: flat face normal to its axis, pressure angle 0, friction at the cam.
   integer, parameter :: follower_flat = 2
+
+  !> A per-step variable as a deck gives it: one value per step, or one for every step. The
+  !> values are the namelist's read buffer, kept (spare elements past them unused), so no
+  !> per-step array is stored beyond what the deck gives.
+  type :: step_values_t
+    !> The values as given (element 1 the default when none is given).
+    real(wp), allocatable :: values(:)
+    !> How many values the deck gave (0 or 1: element 1 for every step).
+    integer :: given = 0
+  contains
+    procedure :: at => step_value_at
+    procedure :: as_given => step_values_as_given
+  end type step_values_t
 
   !> A validated `&cam` deck.
   type, extends(angle_steps_t) :: cam_deck_t
@@ -29,23 +42,20 @@ module kinetostat_cam_deck
     real(wp) :: f_cam = 0.0_wp
     !> Flat face: +1 cam turns counter-clockwise, -1 clockwise.
     real(wp) :: omega_dir = 1.0_wp
-    !> The per-step arrays below hold the values as given (the namelist's read buffers, kept:
-    !> given(i) values, 1 = the same for every step, spare elements past them unused); the
-    !> value of step k is cam_theta_deg, cam_f2, cam_vdir, cam_ds_dphi (cam_phi_deg and
-    !> cam_x_b are implied), so no per-step array is stored beyond what the deck gives.
-    !> Translating: pressure angle, deg, as given (unused by a flat face: its angle is 0).
-    real(wp), allocatable :: theta_values(:)
-    !> Follower load, N, as given (> 0 presses it onto the cam).
-    real(wp), allocatable :: f2_values(:)
-    !> Translating: motion +1 rise, -1 return, 0 at rest, as given (element 1 holds the
-    !> default +1 when the deck gives none).
-    real(wp), allocatable :: vdir_values(:)
-    !> Flat face: velocity analogue ds/dphi, m/rad, as given (unused by a translating follower).
-    real(wp), allocatable :: ds_dphi_values(:)
+    !> The per-step values as the deck gives them (step k's value: theta%at(k)). A value
+    !> this follower does not take is 0 for every step: theta of a flat face (its pressure
+    !> angle is 0), ds_dphi of a translating follower.
+    !> Translating: pressure angle, deg.
+    type(step_values_t) :: theta
+    !> Follower load, N (> 0 presses it onto the cam).
+    type(step_values_t) :: f2
+    !> Translating: motion +1 rise, -1 return, 0 at rest (the default +1 when the deck gives
+    !> none); a flat face's motion is the sign of ds_dphi (see cam_vdir).
+    type(step_values_t) :: vdir
+    !> Flat face: velocity analogue ds/dphi, m/rad.
+    type(step_values_t) :: ds_dphi
     !> Signed friction at the cam along +x on the follower (flat face: -omega_dir*f_cam).
     real(wp) :: mu_cam = 0.0_wp
-    !> Count of values given for theta, f2, vdir, ds_dphi (1 = constant).
-    integer :: given(4) = 0
   end type cam_deck_t
 
   !> The group's per-step arrays (one value per step, or one for all).
@@ -142,7 +152,7 @@ contains
     deck%dphi = dphi
 
     ! load, either follower
-    call per_step(ctx, "f2", f2, deck%n, .true., 0.0_wp, deck%f2_values, deck%given(2), error)
+    call per_step(ctx, "f2", f2, deck%n, .true., 0.0_wp, deck%f2, error)
     if (allocated(error)) return
 
     if (deck%follower == follower_translating) then
@@ -152,16 +162,16 @@ contains
       call rules%require_rule("ds_dphi", .not. is_set(ds_dphi(1)), "only for follower = 'flat' "// &
         "(a translating follower takes the pressure angle theta)")
       if (rules%failed(error)) return
-      call per_step(ctx, "theta", theta, deck%n, .true., 0.0_wp, deck%theta_values, deck%given(1), error)
+      call per_step(ctx, "theta", theta, deck%n, .true., 0.0_wp, deck%theta, error)
       if (allocated(error)) return
       do k = 1, deck%n
-        if (.not. abs(cam_theta_deg(deck, k)) < 90.0_wp) then
+        if (.not. abs(deck%theta%at(k)) < 90.0_wp) then
           call deck_error(ctx, "theta("//int_str(k)//")", "must be in (-90, 90) deg (got "// &
-            real_str(cam_theta_deg(deck, k))//")", error)
+            real_str(deck%theta%at(k))//")", error)
           return
         end if
       end do
-      call per_step(ctx, "vdir", vdir, deck%n, .false., 1.0_wp, deck%vdir_values, deck%given(3), error)
+      call per_step(ctx, "vdir", vdir, deck%n, .false., 1.0_wp, deck%vdir, error)
       if (allocated(error)) return
       do k = 1, deck%n
         if (cam_vdir(deck, k) /= 1.0_wp .and. cam_vdir(deck, k) /= -1.0_wp .and. cam_vdir(deck, k) /= 0.0_wp) then
@@ -170,6 +180,7 @@ contains
           return
         end if
       end do
+      deck%ds_dphi = step_values_t([0.0_wp], 0)
       deck%mu_cam = 0.0_wp
     else
       call rules%require_rule("theta", .not. is_set(theta(1)), "not for follower = 'flat' "// &
@@ -183,33 +194,15 @@ contains
       call rules%require_rule("omega_dir", omega_dir == 1.0_wp .or. omega_dir == -1.0_wp, &
         "must be +1 (cam turns CCW) or -1 (CW) (got "//real_str(omega_dir)//")")
       if (rules%failed(error)) return
-      call per_step(ctx, "ds_dphi", ds_dphi, deck%n, .true., 0.0_wp, deck%ds_dphi_values, deck%given(4), error)
+      call per_step(ctx, "ds_dphi", ds_dphi, deck%n, .true., 0.0_wp, deck%ds_dphi, error)
       if (allocated(error)) return
+      deck%theta = step_values_t([0.0_wp], 0)
       deck%f_cam = f_cam
       deck%omega_dir = omega_dir
       deck%mu_cam = -omega_dir * f_cam
     end if
   end subroutine read_cam_deck
 
-
-  !> Pressure angle of step k, deg (flat face: 0).
-  pure real(wp) function cam_theta_deg(deck, k) result(theta)
-    !> Validated deck.
-    type(cam_deck_t), intent(in) :: deck
-    !> Step number, 1..n.
-    integer, intent(in) :: k
-    theta = 0.0_wp
-    if (deck%follower == follower_translating) theta = given_value(deck%theta_values, deck%given(1), k)
-  end function cam_theta_deg
-
-  !> Follower load of step k, N.
-  pure real(wp) function cam_f2(deck, k) result(f2)
-    !> Validated deck.
-    type(cam_deck_t), intent(in) :: deck
-    !> Step number, 1..n.
-    integer, intent(in) :: k
-    f2 = given_value(deck%f2_values, deck%given(2), k)
-  end function cam_f2
 
   !> Motion of step k: +1 rise, -1 return, 0 at rest (flat face: the sign of ds/dphi).
   pure real(wp) function cam_vdir(deck, k) result(vdir)
@@ -220,54 +213,49 @@ contains
     !> Flat face: velocity analogue of the step, m/rad.
     real(wp) :: ds_dphi
     if (deck%follower == follower_translating) then
-      vdir = given_value(deck%vdir_values, deck%given(3), k)
+      vdir = deck%vdir%at(k)
     else
-      ds_dphi = cam_ds_dphi(deck, k)
+      ds_dphi = deck%ds_dphi%at(k)
       vdir = sign(1.0_wp, ds_dphi)
       if (ds_dphi == 0.0_wp) vdir = 0.0_wp
     end if
   end function cam_vdir
 
-  !> Flat face: velocity analogue ds/dphi of step k, m/rad (translating: 0).
-  pure real(wp) function cam_ds_dphi(deck, k) result(ds_dphi)
-    !> Validated deck.
-    type(cam_deck_t), intent(in) :: deck
-    !> Step number, 1..n.
-    integer, intent(in) :: k
-    ds_dphi = 0.0_wp
-    if (deck%follower == follower_flat) ds_dphi = given_value(deck%ds_dphi_values, deck%given(4), k)
-  end function cam_ds_dphi
-
-  !> Contact offset x_B of step k, m (flat face: omega_dir*ds_dphi; translating: 0).
+  !> Contact offset x_B of step k, m: omega_dir*ds_dphi (a flat face; 0 for a translating
+  !> follower, whose ds_dphi is 0).
   pure real(wp) function cam_x_b(deck, k) result(x_b)
     !> Validated deck.
     type(cam_deck_t), intent(in) :: deck
     !> Step number, 1..n.
     integer, intent(in) :: k
-    x_b = 0.0_wp
-    if (deck%follower == follower_flat) x_b = deck%omega_dir * cam_ds_dphi(deck, k)
+    x_b = deck%omega_dir * deck%ds_dphi%at(k)
   end function cam_x_b
 
-  !> Step k's value of a per-step variable given as `given` values (0 or 1: element 1 for
-  !> every step).
-  pure real(wp) function given_value(values, given, k) result(v)
-    !> The values as given (element 1 the default when none given).
-    real(wp), intent(in) :: values(:)
-    !> How many values the deck gave (0, 1 or n).
-    integer, intent(in) :: given
+  !> The value of step k.
+  pure real(wp) function step_value_at(self, k) result(v)
+    class(step_values_t), intent(in) :: self
     !> Step number, 1..n.
     integer, intent(in) :: k
-    if (given <= 1) then
-      v = values(1)
+    if (self%given <= 1) then
+      v = self%values(1)
     else
-      v = values(k)
+      v = self%values(k)
     end if
-  end function given_value
+  end function step_value_at
+
+  !> The values as given, for the input echo: the first min(n, given) values, one at least.
+  pure function step_values_as_given(self, n) result(values)
+    class(step_values_t), intent(in) :: self
+    !> Number of steps.
+    integer, intent(in) :: n
+    real(wp), allocatable :: values(:)
+    values = self%values(1:max(1, min(n, self%given)))
+  end function step_values_as_given
 
   !> A per-step array: n values, or one value for all steps; `required` or else `default`.
-  !> The read buffer becomes `out` as it is (moved, not copied; element 1 set to `default`
-  !> when none is given): step k's value is given_value(out, given, k).
-  subroutine per_step(ctx, name, values, n, required, default, out, given, error)
+  !> The read buffer becomes `out`'s values as it is (moved, not copied; element 1 set to
+  !> `default` when none is given).
+  subroutine per_step(ctx, name, values, n, required, default, out, error)
     !> Deck and group, for messages.
     type(deck_context_t), intent(in) :: ctx
     !> Variable name.
@@ -281,24 +269,22 @@ contains
     !> Value of every step when not given and not required.
     real(wp), intent(in) :: default
     !> The values as given (see above).
-    real(wp), allocatable, intent(out) :: out(:)
-    !> How many values the deck gave (0, 1 or n).
-    integer, intent(out) :: given
+    type(step_values_t), intent(out) :: out
     type(error_t), allocatable, intent(out) :: error
-    call count_values(ctx, name, values, given, error)
+    call count_values(ctx, name, values, out%given, error)
     if (allocated(error)) return
-    if (given == 0) then
+    if (out%given == 0) then
       if (required) then
         call deck_error(ctx, name, "missing: give one value per step ("//int_str(n)//") or one for all", error)
         return
       end if
       values(1) = default
-      call move_alloc(values, out)
-    else if (given == 1 .or. given == n) then
-      call move_alloc(values, out)
+      call move_alloc(values, out%values)
+    else if (out%given == 1 .or. out%given == n) then
+      call move_alloc(values, out%values)
     else
       call deck_error(ctx, name, "expected "//int_str(n)//" values (one per step) or 1 (the same for all), got "// &
-        int_str(given), error)
+        int_str(out%given), error)
     end if
   end subroutine per_step
 

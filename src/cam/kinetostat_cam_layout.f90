@@ -18,7 +18,7 @@ module kinetostat_cam_layout
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_cam, only: cam_step_t, cam_step, cam_critical_angle, kf_limit
   use kinetostat_cam_deck, only: cam_deck_t, read_cam_deck, cam_template, follower_translating, &
-    cam_phi_deg, cam_theta_deg, cam_f2, cam_vdir, cam_x_b
+    cam_phi_deg, cam_vdir, cam_x_b
   implicit none
   private
   public :: cam_mechanism_t, new_cam, cam_solve, cam_columns, cam_csv_values
@@ -77,8 +77,8 @@ contains
     end if
     !$omp parallel do schedule(static)
     do k = k1, k2
-      steps(k - k1 + 1) = cam_step(deck%p, cam_theta_deg(deck, k) * deg_to_rad, cam_x_b(deck, k), deck%mu_cam, &
-                          cam_f2(deck, k), cam_vdir(deck, k))
+      steps(k - k1 + 1) = cam_step(deck%p, deck%theta%at(k) * deg_to_rad, cam_x_b(deck, k), deck%mu_cam, &
+                          deck%f2%at(k), cam_vdir(deck, k))
     end do
     !$omp end parallel do
   end subroutine cam_solve
@@ -175,9 +175,9 @@ contains
     integer, intent(in) :: k
     real(wp) :: v(row_size)
     v(1) = cam_phi_deg(deck, k)
-    v(2) = cam_theta_deg(deck, k)
+    v(2) = deck%theta%at(k)
     v(3) = cam_x_b(deck, k)
-    v(4) = cam_f2(deck, k)
+    v(4) = deck%f2%at(k)
     v(5) = cam_vdir(deck, k)
     v(6) = s%n
     v(7) = magnitude(s%f21)
@@ -234,13 +234,13 @@ contains
     end if
     call echo_steps(table, deck%phi_start, deck%dphi, deck%n)
     if (deck%follower == follower_translating) then
-      call table%echo_array("THETA", deck%theta_values(1:max(1, min(deck%n, deck%given(1)))), "deg")
+      call table%echo_array("THETA", deck%theta%as_given(deck%n), "deg")
     else
-      call table%echo_array("DS_DPHI", deck%ds_dphi_values(1:max(1, min(deck%n, deck%given(4)))), "m/rad")
+      call table%echo_array("DS_DPHI", deck%ds_dphi%as_given(deck%n), "m/rad")
     end if
-    call table%echo_array("F2", deck%f2_values(1:max(1, min(deck%n, deck%given(2)))), "N")
+    call table%echo_array("F2", deck%f2%as_given(deck%n), "N")
     if (deck%follower == follower_translating) then
-      call table%echo_array("VDIR", deck%vdir_values(1:max(1, min(deck%n, deck%given(3)))), "")
+      call table%echo_array("VDIR", deck%vdir%as_given(deck%n), "")
       call table%echo_real("THETA_CR", cam_critical_angle(deck%p) * rad_to_deg, "deg (rise; derived)")
     end if
     call table%echo_real("KF_LIMIT", kf_limit, "(Reshetov)")
