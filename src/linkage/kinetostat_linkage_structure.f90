@@ -14,7 +14,7 @@ module kinetostat_linkage_structure
   use kinetostat_text, only: int_str
   use kinetostat_labels, only: lang_ru, echo_name
   use kinetostat_linkage, only: linkage_t, linkage_unit_t, pair_r, pair_row, drive_row
-  use kinetostat_plans_structure, only: roman
+  use kinetostat_plans_structure, only: roman, unit_description
   implicit none
   private
   public :: analyse_structure, structure_lines, structure_formula
@@ -268,7 +268,6 @@ contains
     integer, intent(in) :: lang
     !> The lines (without the leading indentation).
     character(len=160), allocatable, intent(out) :: lines(:)
-    character(len=:), allocatable :: line
     integer :: n, p5, u, top, i
     n = size(mech%links)
     p5 = size(mech%pairs)
@@ -282,23 +281,7 @@ contains
       associate (un => mech%units(u))
         top = max(top, un%class)
         if (un%class == 0) top = 99
-        select case (un%class)
-        case (1)
-          line = "INPUT LINK(S) (MECHANISM OF CLASS I)"
-        case (2)
-          line = "DYAD (GROUP OF CLASS II, ORDER 2), KIND "//un%kind
-        case (3)
-          if (un%order == 4) then
-            line = "GROUP OF CLASS III, ORDER 4 (TWO TERNARY BASE LINKS AND FOUR BINARY LINKS)"
-          else
-            line = "GROUP OF CLASS III, ORDER 3 (A TERNARY BASE LINK AND THREE BINARY LINKS)"
-          end if
-        case (4)
-          line = "GROUP OF CLASS IV, ORDER 2 (A CLOSED FOUR-LINK CONTOUR)"
-        case default
-          line = "GROUP OF "//int_str(size(un%links))//" LINKS (CLASS NOT DETERMINED)"
-        end select
-        call push(lines, un%label//"  "//line)
+        call push(lines, un%label//"  "//unit_description(un%class, size(un%links), un%kind))
       end associate
     end do
     call push(lines, "STRUCTURE FORMULA: "//structure_formula(mech))

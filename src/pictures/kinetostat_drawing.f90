@@ -148,6 +148,7 @@ module kinetostat_drawing
     !> The weight and inertia loads of every moving link of a mass model.
     procedure :: add_body_loads
     procedure :: add_guide_over_rows
+    procedure :: move_points_and_loads
   end type drawing_t
 
 contains
@@ -473,6 +474,25 @@ contains
     p0 = p0 + (0.5_wp * (minval(s) + maxval(s)) - dot_product(u, p0)) * u
     call self%add_guide(p0, angle, 0.5_wp * (maxval(s) - minval(s)) + margin)
   end subroutine add_guide_over_rows
+
+  !> Moves the drawing's points and the points of application of its forces and moments by
+  !> `by` (its bodies and guides stay: a drawing taken apart to be moved has none that it
+  !> draws from their own coordinates).
+  pure subroutine move_points_and_loads(self, by)
+    class(drawing_t), intent(inout) :: self
+    !> The move, m.
+    real(wp), intent(in) :: by(2)
+    integer :: j
+    do j = 1, size(self%forces)
+      self%forces(j)%at = self%forces(j)%at + by
+    end do
+    do j = 1, size(self%moments)
+      self%moments(j)%at = self%moments(j)%at + by
+    end do
+    do j = 1, size(self%points)
+      self%points(j)%p = self%points(j)%p + by
+    end do
+  end subroutine move_points_and_loads
 
   !> The named points of row `k` from the mechanism's topology (the first part of
   !> drawing_from_sketch, without bodies and guides): every point a link or pivot names

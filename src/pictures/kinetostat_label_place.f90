@@ -52,7 +52,6 @@ module kinetostat_label_place
     procedure :: reserve
     procedure :: reserve_box
     procedure :: is_free
-    procedure :: place
     procedure :: place_box
     procedure :: line_is_free
   end type label_boxes_t
@@ -142,42 +141,15 @@ contains
     end do
   end function is_free
 
-  !> Place a label (text-anchor middle) for the point (px, py), mm, inside `bounds` (x0, y0,
-  !> x1, y1): on a box no label has taken, as far as may be from the obstacle segments
-  !> (ox, oy: segment k from point 2k-1 to point 2k; equal ends make a point). With
-  !> `tail` (the tail of an arrow whose tip is the point) the spots beside the arrow come
-  !> first. Rings of spots around the point follow, direction `base` (rad, on the sheet:
-  !> y down) first. (tx, ty) is the centre of the text's baseline; `leader` is true when the
-  !> label sits away from its point (the caller draws a line to it). The box is taken.
-  pure subroutine place(self, text, font_size, px, py, base, ox, oy, bounds, tx, ty, leader, tail)
-    class(label_boxes_t), intent(inout) :: self
-    !> The text, UTF-8.
-    character(*), intent(in) :: text
-    !> Font size, mm.
-    real(wp), intent(in) :: font_size
-    !> The point labelled, mm.
-    real(wp), intent(in) :: px, py
-    !> Preferred direction from the point, rad (sheet coordinates).
-    real(wp), intent(in) :: base
-    !> Obstacle segments, mm (ends in pairs).
-    real(wp), intent(in) :: ox(:), oy(:)
-    !> Where labels may go: x0, y0, x1, y1, mm.
-    real(wp), intent(in) :: bounds(4)
-    !> Baseline centre of the text, mm.
-    real(wp), intent(out) :: tx, ty
-    !> Whether a leader line is needed.
-    logical, intent(out) :: leader
-    !> Tail of the arrow ending at the point, mm.
-    real(wp), intent(in), optional :: tail(2)
-    real(wp) :: widths(size(ox) / 2)
-    widths = 0.0_wp
-    call self%place_box(0.6_wp * font_size * text_chars(text), 0.8_wp * font_size, 0.2_wp * font_size, px, py, base, &
-      ox, oy, widths, bounds, .false., tx, ty, leader, tail)
-  end subroutine place
-
   !> Place a box `width` mm wide reaching `above` mm above its baseline and `below` mm below
-  !> it (a text centred on tx) for the point (px, py), mm, inside `bounds`, as `place` does;
-  !> the obstacle segment k (ox, oy: from point 2k-1 to point 2k) is a band `half_widths(k)`
+  !> it (a label, text-anchor middle, centred on tx) for the point (px, py), mm, inside
+  !> `bounds` (x0, y0, x1, y1): on a box no label has taken, as far as may be from the
+  !> obstacle segments. With `tail` (the tail of an arrow whose tip is the point) the spots
+  !> beside the arrow come first. Rings of spots around the point follow, direction `base`
+  !> (rad, on the sheet: y down) first. (tx, ty) is the centre of the box's baseline;
+  !> `leader` is true when the label sits away from its point (the caller draws a line to
+  !> it). The obstacle segment k (ox, oy: from point 2k-1 to point 2k; equal ends make a
+  !> point) is a band `half_widths(k)`
   !> mm each side of its line (a stroke's half width). With `strict` no spot whose box comes
   !> nearer than `line_gap` to an obstacle is taken while one exists (rings around the point,
   !> then farther out with a leader line that crosses no label); failing that, a spot whose

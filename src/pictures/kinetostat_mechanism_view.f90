@@ -28,13 +28,14 @@ module kinetostat_mechanism_view
   use kinetostat_format, only: short_number, full_number
   use kinetostat_labels, only: unit_word => unit_symbol
   use kinetostat_scales, only: drawing_scale_t, standard_drawing_scale, scale_number
-  use kinetostat_sheet, only: sheet_t, layer_links, layer_joints, layer_guides, layer_forces, layer_text
+  use kinetostat_sheet, only: sheet_t, entity_group, layer_links, layer_joints, layer_guides, layer_forces, layer_text
   use kinetostat_svg, only: coord
   use kinetostat_drawing, only: drawing_t, drawing_body_t, point_pivot, point_com, point_plain, body_bar, &
     body_block, body_cylinder, body_rod
   implicit none
   private
-  public :: mechanism_view_t, fit_mechanism_view, draw_mechanism, force_colours, shortest_drawn_force
+  public :: mechanism_view_t, fit_mechanism_view, draw_mechanism, force_colours, shortest_drawn_force, &
+    mark_other_drawing
 
   !> Colours of the force kinds (pair, load, weight, inertia).
   character(*), parameter :: force_colours(*) = [character(len=7) :: "#d62728", "#2ca02c", "#8c564b", "#1f77b4"]
@@ -385,6 +386,29 @@ contains
       tip = tail + force_scale * view%direction(f)
     end subroutine force_ends
   end subroutine draw_mechanism
+
+  !> Renames the marks of a drawing of draw_mechanism that is not the mechanism's (a link or
+  !> a group drawn apart), the sheet's entities from `first` on: its group's class becomes
+  !> `group_class`, its marks data-joint and data-point become data-<mark>-joint and
+  !> data-<mark>-point (machine checks read the joints of the mechanism's drawing).
+  pure subroutine mark_other_drawing(sheet, first, group_class, mark)
+    type(sheet_t), intent(inout) :: sheet
+    !> The drawing's first entity.
+    integer, intent(in) :: first
+    !> The class of its group ("input-link").
+    character(*), intent(in) :: group_class
+    !> The word in its marks ("link").
+    character(*), intent(in) :: mark
+    integer :: j
+    do j = first, sheet%count
+      associate (item => sheet%items(j))
+        if (item%kind == entity_group) item%class = group_class
+        if (.not. allocated(item%data_names)) cycle
+        where (item%data_names == "data-joint") item%data_names = "data-"//mark//"-joint"
+        where (item%data_names == "data-point") item%data_names = "data-"//mark//"-point"
+      end associate
+    end do
+  end subroutine mark_other_drawing
 
   !> Vector `v` turned counterclockwise by `angle` (rad).
   pure function turn(v, angle) result(w)

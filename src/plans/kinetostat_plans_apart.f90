@@ -13,10 +13,10 @@ module kinetostat_plans_apart
   use kinetostat_format, only: short_number, full_number
   use kinetostat_labels, only: word => label, unit_word => unit_symbol
   use kinetostat_scales, only: scale_number
-  use kinetostat_sheet, only: sheet_t, entity_group, layer_polygons, layer_text, class_font_size
+  use kinetostat_sheet, only: sheet_t, layer_polygons, layer_text, class_font_size
   use kinetostat_drawing, only: drawing_t, drawing_force_t, point_pivot, point_joint
-  use kinetostat_mechanism_view, only: mechanism_view_t, draw_mechanism
-  use kinetostat_plans_base, only: plans_t, component_reaction, component_tangential
+  use kinetostat_mechanism_view, only: mechanism_view_t, draw_mechanism, mark_other_drawing
+  use kinetostat_plans_base, only: plans_t, owner, component_reaction, component_tangential
   implicit none
   private
   public :: group_apart_drawing, draw_group_apart, guide_reactions_placed
@@ -37,19 +37,12 @@ contains
   end function in_group
 
   !> The link a polygon's vector acts on: G2, Phi2 -> 2; F21, F21^τ -> 2; a load by the
-  !> drawing's on_link ("" when unknown).
+  !> drawing's on_link ("" when unknown): the owner of the vector, a pair force's part
+  !> counted as the pair force.
   pure function acted_link(name, on_link) result(link)
     character(*), intent(in) :: name, on_link
     character(len=:), allocatable :: link
-    link = trim(on_link)
-    if (len(link) > 0) return
-    if (name(1:1) == "G" .and. len_trim(name) > 1) then
-      link = trim(name(2:))
-    else if (len_trim(name) > 3 .and. name(1:3) == "Phi") then
-      link = trim(name(4:))
-    else if (is_pair(name)) then
-      link = name(2:2)
-    end if
+    link = owner(pair_base(name), on_link)
   end function acted_link
 
   !> Whether a name is a pair's reaction F<on><from> (its part ^τ, ^n after it).
@@ -210,15 +203,7 @@ contains
     if (size(link%points) == 0) return
     at = link%points(p)%p
     if (present(shift)) shift = at
-    do j = 1, size(link%forces)
-      link%forces(j)%at = link%forces(j)%at - at
-    end do
-    do j = 1, size(link%moments)
-      link%moments(j)%at = link%moments(j)%at - at
-    end do
-    do j = 1, size(link%points)
-      link%points(j)%p = link%points(j)%p - at
-    end do
+    call link%move_points_and_loads(-at)
   contains
     !> Whether `at` is a pivot on the frame or a joint two of the group's links hold (a
     !> reaction there has its line through it).
@@ -429,16 +414,7 @@ contains
     else
       call draw_mechanism(sheet, link, view, area, per_newton, short)
     end if
-    ! this drawing is not the mechanism's: its group and marks renamed (machine checks read
-    ! the joints of the mechanism's drawing)
-    do j = first, sheet%count
-      associate (item => sheet%items(j))
-        if (item%kind == entity_group) item%class = "group-apart"
-        if (.not. allocated(item%data_names)) cycle
-        where (item%data_names == "data-joint") item%data_names = "data-apart-joint"
-        where (item%data_names == "data-point") item%data_names = "data-apart-point"
-      end associate
-    end do
+    call mark_other_drawing(sheet, first, "group-apart", "apart")
     call sheet%set_layer(layer_text)
     do j = 1, size(lname)
       call sheet%place_label(trim(lname(j)), "num", lx(j), ly(j), lang_angle(j), area, colour=arm_colour, &

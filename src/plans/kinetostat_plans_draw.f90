@@ -29,13 +29,14 @@ module kinetostat_plans_draw
   use kinetostat_step_table, only: step_table_t
   use kinetostat_labels, only: word => label, unit_word => unit_symbol, lang_ru
   use kinetostat_scales, only: scale_number, round_scale
-  use kinetostat_sheet, only: sheet_t, entity_group, layer_text, layer_vplan, layer_aplan, layer_polygons, layer_lever, &
+  use kinetostat_sheet, only: sheet_t, layer_text, layer_vplan, layer_aplan, layer_polygons, layer_lever, &
     layer_scales, layer_frame, layer_guides, anchor_start, anchor_end
   use kinetostat_label_place, only: outward_none, outward_leaders, outward_all
   use kinetostat_title_block, only: put_sheet_format, title_block_from_table, header_indent, deck_line
   use kinetostat_drawing, only: drawing_t, drawing_point_t, drawing_body_t, drawing_force_t, drawing_moment_t, &
     force_gravity, force_inertia, force_load, force_pair, point_pivot
-  use kinetostat_mechanism_view, only: mechanism_view_t, fit_mechanism_view, draw_mechanism, force_colours
+  use kinetostat_mechanism_view, only: mechanism_view_t, fit_mechanism_view, draw_mechanism, force_colours, &
+    mark_other_drawing
   use kinetostat_mechanism_sheet, only: fitted_size
   use kinetostat_run_sheet, only: note_length
   use kinetostat_plans_base, only: plans_t, plan_value_t, plan_vector_t, plan_equation_t, lever_load_t, force_polygon_t, &
@@ -186,18 +187,10 @@ contains
 
     ! the plans (the course sheet leaves them to the kinematics sheet)
     if (.not. geo%groups_apart) then
-      call panel(sheet, geo%velocity, word("Plan of velocities", lang))
-      call sheet%set_layer(layer_vplan)
-      call draw_plan(sheet, geo, plans%velocities, plans%velocity_equations, geo%velocity, geo%pole_v, geo%mu_v, "p", &
-        .false., lang)
-      call foot(sheet, geo%velocity, "μv = "//scale_number(geo%mu_v)//" ("//unit_word("m/s", lang)//")/"// &
-        unit_word("mm", lang)//";  "//word("relative velocities: v_PQ of a link's points, r along a guide", lang))
-      call panel(sheet, geo%acceleration, word("Plan of accelerations", lang))
-      call sheet%set_layer(layer_aplan)
-      call draw_plan(sheet, geo, plans%accelerations, plans%equations, geo%acceleration, geo%pole_a, geo%mu_a, "π", &
-        .true., lang)
-      call foot(sheet, geo%acceleration, "μa = "//scale_number(geo%mu_a)//" ("//unit_word("m/s^2", lang)//")/"// &
-        unit_word("mm", lang)//";  "//word("components: n normal, τ tangential, k Coriolis, r relative", lang))
+      call draw_plan(sheet, geo, plans%velocities, plans%velocity_equations, geo%velocity, geo%pole_v, geo%mu_v, &
+        .false., lang, ";  "//word("relative velocities: v_PQ of a link's points, r along a guide", lang))
+      call draw_plan(sheet, geo, plans%accelerations, plans%equations, geo%acceleration, geo%pole_a, geo%mu_a, &
+        .true., lang, ";  "//word("components: n normal, τ tangential, k Coriolis, r relative", lang))
     end if
 
     ! the lever and its table
@@ -241,18 +234,10 @@ contains
     integer, intent(in) :: lang
     type(plans_sheet_t) :: geo
     call fit_kinematic_plans(view, plans, velocity, acceleration, geo)
-    call panel(sheet, geo%velocity, word("Plan of velocities", lang))
-    call sheet%set_layer(layer_vplan)
-    call draw_plan(sheet, geo, plans%velocities, plans%velocity_equations, geo%velocity, geo%pole_v, geo%mu_v, "p", &
-      .false., lang)
-    call foot(sheet, geo%velocity, "μv = "//scale_number(geo%mu_v)//" ("//unit_word("m/s", lang)//")/"// &
-      unit_word("mm", lang))
-    call panel(sheet, geo%acceleration, word("Plan of accelerations", lang))
-    call sheet%set_layer(layer_aplan)
-    call draw_plan(sheet, geo, plans%accelerations, plans%equations, geo%acceleration, geo%pole_a, geo%mu_a, "π", &
-      .true., lang)
-    call foot(sheet, geo%acceleration, "μa = "//scale_number(geo%mu_a)//" ("//unit_word("m/s^2", lang)//")/"// &
-      unit_word("mm", lang))
+    call draw_plan(sheet, geo, plans%velocities, plans%velocity_equations, geo%velocity, geo%pole_v, geo%mu_v, .false., &
+      lang, "")
+    call draw_plan(sheet, geo, plans%accelerations, plans%equations, geo%acceleration, geo%pole_a, geo%mu_a, .true., &
+      lang, "")
     call panel(sheet, values, word("Values read off the plans", lang))
     call sheet%set_layer(layer_text)
     call values_table(sheet, values, plans, lang)
@@ -327,18 +312,21 @@ contains
     end if
   end function display_name
 
-  !> A plan (velocities, or accelerations when `accel`): the pole, a ray to every image (its
-  !> name at its end; the images of the velocity plan marked data-image), the components of
-  !> every vector equation head to tail from the image they start from, named.
-  pure subroutine draw_plan(sheet, geo, images, equations, box, pole, mu, pole_name, accel, lang)
+  !> The panel `box` of a plan (velocities, or accelerations when `accel`): its heading; the
+  !> pole, a ray to every image (its name at its end; the images of the velocity plan marked
+  !> data-image), the components of every vector equation head to tail from the image they
+  !> start from, named; its scale line at the bottom followed by `legend`.
+  pure subroutine draw_plan(sheet, geo, images, equations, box, pole, mu, accel, lang, legend)
     type(sheet_t), intent(inout) :: sheet
     type(plans_sheet_t), intent(in) :: geo
     type(plan_vector_t), intent(in) :: images(:)
     type(plan_equation_t), intent(in) :: equations(:)
     real(wp), intent(in) :: box(4), pole(2), mu
-    character(*), intent(in) :: pole_name
     logical, intent(in) :: accel
     integer, intent(in) :: lang
+    !> Text after the scale ("" for none).
+    character(*), intent(in) :: legend
+    character(len=:), allocatable :: heading, pole_name, scale
     real(wp), allocatable :: tips(:, :), ends(:, :)
     real(wp) :: q(2), p(2), t(2), area(4), labels_area(4), pole_font, short_font
     character(len=:), allocatable :: short, at_pole
@@ -351,6 +339,17 @@ contains
     integer :: i, e, j, n_labels, attempt
     type(sheet_t) :: unlabelled
     integer :: crowded, fewest, best
+    if (accel) then
+      heading = "Plan of accelerations"
+      pole_name = "π"
+      scale = "μa = "//scale_number(mu)//" ("//unit_word("m/s^2", lang)//")/"
+    else
+      heading = "Plan of velocities"
+      pole_name = "p"
+      scale = "μv = "//scale_number(mu)//" ("//unit_word("m/s", lang)//")/"
+    end if
+    call panel(sheet, box, word(heading, lang))
+    call sheet%set_layer(merge(layer_aplan, layer_vplan, accel))
     area = plan_inner(box)
     short = ""
     at_pole = ""
@@ -453,6 +452,7 @@ contains
     end do
     call sheet%end_group()
     call sheet%set_layer(merge(layer_aplan, layer_vplan, accel))
+    call foot(sheet, box, scale//unit_word("mm", lang)//legend)
   contains
     !> Every label placed on `target` in the order and reach of attempt `attempt`
     !> (label_orders, label_outward); `crowded`: how many had to go near a line or their
@@ -553,6 +553,22 @@ contains
       s = pole + geo%view%direction(v) / mu
     end function at
   end subroutine draw_plan
+
+  !> Where reaction `j` of polygon `poly` stands on the sheet: from p to t, its tail and head
+  !> vertices of the polygon's `tips` from `pole`, mm; `drawn` when it is shown (an inner
+  !> reaction, or a whole one not among the polygon's vectors) and at least `shortest` long.
+  pure subroutine reaction_span(poly, j, pole, tips, p, t, drawn)
+    type(force_polygon_t), intent(in) :: poly
+    integer, intent(in) :: j
+    real(wp), intent(in) :: pole(2), tips(:, :)
+    real(wp), intent(out) :: p(2), t(2)
+    logical, intent(out) :: drawn
+    associate (r => poly%reactions(j))
+      p = pole + tips(:, r%tail + 1)
+      t = pole + tips(:, r%head + 1)
+      drawn = (r%inner .or. .not. any(poly%vectors%name == r%name)) .and. norm2(t - p) >= shortest
+    end associate
+  end subroutine reaction_span
 
   !> Append a name to a comma-separated list.
   pure subroutine listed(list, name)
@@ -835,6 +851,7 @@ contains
     real(wp), allocatable :: tips(:, :)
     real(wp) :: cell(4), area(4), pole(2), p(2), t(2), lo(2), hi(2), mu
     character(len=:), allocatable :: caption, short
+    logical :: drawn
     integer :: e, j
     do e = 1, size(plans%group_polygons)
       associate (poly => plans%group_polygons(e))
@@ -878,13 +895,9 @@ contains
         end do
         ! the whole reactions and the inner ones
         do j = 1, size(poly%reactions)
-          associate (r => poly%reactions(j))
-            if (.not. r%inner .and. any(poly%vectors%name == r%name)) cycle
-            p = pole + tips(:, r%tail + 1)
-            t = pole + tips(:, r%head + 1)
-            if (norm2(t - p) < shortest) cycle
-            call sheet%arrow(p(1), p(2), t(1), t(2), merge(inner_colour, whole_colour, r%inner), 0.2_wp, 1.6_wp)
-          end associate
+          call reaction_span(poly, j, pole, tips, p, t, drawn)
+          if (.not. drawn) cycle
+          call sheet%arrow(p(1), p(2), t(1), t(2), merge(inner_colour, whole_colour, poly%reactions(j)%inner), 0.2_wp, 1.6_wp)
         end do
         call sheet%set_layer(layer_text)
         do j = 1, size(poly%vectors)
@@ -895,11 +908,9 @@ contains
             0.5_wp * (p(2) + t(2)), atan2(t(2) - p(2), t(1) - p(1)) - 0.5_wp * pi, area, colour=vector_colour(poly%vectors(j)))
         end do
         do j = 1, size(poly%reactions)
+          call reaction_span(poly, j, pole, tips, p, t, drawn)
+          if (.not. drawn) cycle
           associate (r => poly%reactions(j))
-            if (.not. r%inner .and. any(poly%vectors%name == r%name)) cycle
-            p = pole + tips(:, r%tail + 1)
-            t = pole + tips(:, r%head + 1)
-            if (norm2(t - p) < shortest) cycle
             call sheet%place_label(trim(r%name), "num", 0.5_wp * (p(1) + t(1)), 0.5_wp * (p(2) + t(2)), &
               atan2(t(2) - p(2), t(1) - p(1)) + 0.5_wp * pi, area, colour=merge(inner_colour, whole_colour, r%inner))
           end associate
@@ -1067,16 +1078,7 @@ contains
     end do
     first = sheet%count + 1
     call draw_mechanism(sheet, link, view, box, per_newton, short)
-    ! the link's drawing is not the mechanism's: its group and marks renamed (machine checks
-    ! read the joints of the mechanism's drawing)
-    do j = first, sheet%count
-      associate (item => sheet%items(j))
-        if (item%kind == entity_group) item%class = "input-link"
-        if (.not. allocated(item%data_names)) cycle
-        where (item%data_names == "data-joint") item%data_names = "data-link-joint"
-        where (item%data_names == "data-point") item%data_names = "data-link-point"
-      end associate
-    end do
+    call mark_other_drawing(sheet, first, "input-link", "link")
     call sheet%set_layer(layer_text)
     do j = 1, size(arm_names)
       call sheet%place_label(trim(arm_names(j)), "num", foot_x(j), foot_y(j), atan2(foot_y(j) - a(2), foot_x(j) - a(1)) - &

@@ -610,12 +610,9 @@ contains
       integer :: t, x, y
       name = "F"//link_digits(first_link(ba))//link_digits(first_link(bo))
       do t = 1, size(drawing%forces)
+        call group_pair(t, x, y)
+        if (x == 0) cycle
         associate (f => drawing%forces(t))
-          if (f%kind /= force_pair .or. len_trim(f%name) /= 3 .or. f%name(1:1) /= "F") cycle
-          x = link_index(topo, f%name(2:2))
-          y = link_index(topo, f%name(3:3))
-          if (x == 0 .or. y == 0) cycle
-          if (.not. (member(x) .and. member(y))) cycle
           if (body(x) == ba .and. body(y) == bo) name = f%name
           if (body(x) == bo .and. body(y) == ba) name = "F"//f%name(3:3)//f%name(2:2)
         end associate
@@ -649,15 +646,10 @@ contains
       do bb = 1, nb
         joined = .false.
         do t = 1, size(drawing%forces)
-          associate (f => drawing%forces(t))
-            if (f%kind /= force_pair .or. len_trim(f%name) /= 3 .or. f%name(1:1) /= "F") cycle
-            o = link_index(topo, f%name(2:2))
-            y = link_index(topo, f%name(3:3))
-            if (o == 0 .or. y == 0) cycle
-            if (.not. (member(o) .and. member(y))) cycle
-            if (body(o) == bb .and. body(y) /= bb) joined(body(y)) = .true.
-            if (body(y) == bb .and. body(o) /= bb) joined(body(o)) = .true.
-          end associate
+          call group_pair(t, o, y)
+          if (o == 0) cycle
+          if (body(o) == bb .and. body(y) /= bb) joined(body(y)) = .true.
+          if (body(y) == bb .and. body(o) /= bb) joined(body(o)) = .true.
         end do
         joins = count(joined)
         if (joins > best) then
@@ -666,6 +658,24 @@ contains
         end if
       end do
     end function base_body
+    !> The links x, y of the drawing's force t when it is a pair force F<x><y> between two
+    !> links of the group; else 0, 0.
+    pure subroutine group_pair(t, x, y)
+      integer, intent(in) :: t
+      integer, intent(out) :: x, y
+      x = 0
+      y = 0
+      associate (f => drawing%forces(t))
+        if (f%kind /= force_pair .or. len_trim(f%name) /= 3 .or. f%name(1:1) /= "F") return
+        x = link_index(topo, f%name(2:2))
+        y = link_index(topo, f%name(3:3))
+      end associate
+      if (x > 0 .and. y > 0) then
+        if (member(x) .and. member(y)) return
+      end if
+      x = 0
+      y = 0
+    end subroutine group_pair
   end subroutine group_polygons_of
 
   !> The force polygon of every link: its loads (weight, inertia force, external loads), then

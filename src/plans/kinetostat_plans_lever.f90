@@ -117,7 +117,7 @@ contains
         plans%loads = [plans%loads, moment_load("M_fw", plans%flywheel_moment, d, 0)]
       end if
     end if
-    call pair_friction_of(topo, drawing, table, k, omega, v0, plans)
+    call pair_friction_of(plans)
     if (len(plans%lever_note) > 0) return
     do j = 1, size(plans%friction)
       associate (pf => plans%friction(j))
@@ -335,86 +335,73 @@ contains
       item = force_load("P_bal", plans%effort / best**2 * perp(b - a), b, d, 0)
       length = best
     end subroutine balancing_at_pin
-  end subroutine lever_of
-
-  !> Friction in the pairs on Zhukovsky's lever. For every pair with a P_loss_<pair> column
-  !> (the run's power lost in it, W): the equal and opposite actions on its two links (F21: on
-  !> link 2 and on link 1; a link the topology does not have is the frame, at rest), opposing
-  !> their relative motion on the plan - at a revolute pair a couple M_f, of size P_loss over
-  !> |omega_2 - omega_1|, whose power on the lever is M_f omega_2 - M_f omega_1; at a prismatic
-  !> pair (a <pair>N column) a force F_f along the relative sliding v_2 - v_1 (the same at
-  !> every point: the links turn together), of size P_loss over |v_2 - v_1|, acting at the
-  !> images of the pair's point on the two links, power F_f.v_2 - F_f.v_1. A pair at relative
-  !> rest on the plan (within 1e-10 of its links' rates) contributes nothing. Sets
-  !> plans%lever_note when a pair's links are not known.
-  pure subroutine pair_friction_of(topo, drawing, table, k, omega, v0, plans)
-    type(sketch_t), intent(in) :: topo
-    type(drawing_t), intent(in) :: drawing
-    type(step_table_t), intent(in) :: table
-    integer, intent(in) :: k
-    real(wp), intent(in) :: omega(:), v0(:, :)
-    type(plans_t), intent(inout) :: plans
-    !> A relative rate at or below this fraction of the links' rates is rest.
-    real(wp), parameter :: rest_rel = 1.0e-10_wp
-    character(*), parameter :: loss_prefix = "P_loss_"
-    type(lever_friction_t) :: pf
-    character(len=:), allocatable :: pair
-    real(wp) :: loss, size_rel, scale
-    integer :: c, a, b, j
-    allocate (plans%friction(0))
-    plans%friction_power = 0.0_wp
-    do c = 1, size(table%columns)
-      if (index(table%columns(c)%name, loss_prefix) /= 1) cycle
-      plans%lever_friction = .true.
-      pair = trim(table%columns(c)%name(len(loss_prefix) + 1:))
-      if (len(pair) /= 3 .or. pair(1:1) /= "F" .or. verify(pair(2:3), "0123456789") /= 0) then
-        plans%lever_note = "friction of pair "//pair//": its links are not known"
-        return
-      end if
-      pf = lever_friction_t(pair=pair, on=pair(2:2), from=pair(3:3))
-      a = link_index(topo, pair(2:2))
-      b = link_index(topo, pair(3:3))
-      if (a == 0 .and. b == 0) then
-        plans%lever_note = "friction of pair "//pair//": its links are not known"
-        return
-      end if
-      loss = table%rows(c, k)
-      pf%prismatic = table%column_index(pair//"N") > 0
-      if (pf%prismatic) then
-        if (allocated(drawing%forces)) then
-          do j = 1, size(drawing%forces)
-            if (drawing%forces(j)%name == pair) pf%at = drawing%forces(j)%at
-          end do
+    !> Friction in the pairs on Zhukovsky's lever. For every pair with a P_loss_<pair> column
+    !> (the run's power lost in it, W): the equal and opposite actions on its two links (F21: on
+    !> link 2 and on link 1; a link the topology does not have is the frame, at rest), opposing
+    !> their relative motion on the plan - at a revolute pair a couple M_f, of size P_loss over
+    !> |omega_2 - omega_1|, whose power on the lever is M_f omega_2 - M_f omega_1; at a prismatic
+    !> pair (a <pair>N column) a force F_f along the relative sliding v_2 - v_1 (the same at
+    !> every point: the links turn together), of size P_loss over |v_2 - v_1|, acting at the
+    !> images of the pair's point on the two links, power F_f.v_2 - F_f.v_1. A pair at relative
+    !> rest on the plan (within 1e-10 of its links' rates) contributes nothing. Sets
+    !> plans%lever_note when a pair's links are not known.
+    pure subroutine pair_friction_of(plans)
+      !> The lever's plans (passed: a pure procedure defines no variable of its host).
+      type(plans_t), intent(inout) :: plans
+      !> A relative rate at or below this fraction of the links' rates is rest.
+      real(wp), parameter :: rest_rel = 1.0e-10_wp
+      character(*), parameter :: loss_prefix = "P_loss_"
+      type(lever_friction_t) :: pf
+      character(len=:), allocatable :: pair
+      real(wp) :: loss, size_rel, scale
+      integer :: c, a, b, j
+      allocate (plans%friction(0))
+      plans%friction_power = 0.0_wp
+      do c = 1, size(table%columns)
+        if (index(table%columns(c)%name, loss_prefix) /= 1) cycle
+        plans%lever_friction = .true.
+        pair = trim(table%columns(c)%name(len(loss_prefix) + 1:))
+        if (len(pair) /= 3 .or. pair(1:1) /= "F" .or. verify(pair(2:3), "0123456789") /= 0) then
+          plans%lever_note = "friction of pair "//pair//": its links are not known"
+          return
         end if
-        pf%relative = velocity(a, pf%at) - velocity(b, pf%at)
-        size_rel = norm2(pf%relative)
-        scale = norm2(velocity(a, pf%at)) + norm2(velocity(b, pf%at))
-        if (size_rel > rest_rel * scale) pf%force = -loss / size_rel * pf%relative / size_rel
-        pf%power = dot_product(pf%force, velocity(a, pf%at)) + dot_product(-pf%force, velocity(b, pf%at))
-      else
-        pf%relative = [rate_of(a) - rate_of(b), 0.0_wp]
-        size_rel = abs(pf%relative(1))
-        scale = abs(rate_of(a)) + abs(rate_of(b))
-        if (size_rel > rest_rel * scale) pf%moment = -sign(loss / size_rel, pf%relative(1))
-        pf%power = pf%moment * rate_of(a) + (-pf%moment) * rate_of(b)
-      end if
-      plans%friction = [plans%friction, pf]
-      plans%friction_power = plans%friction_power + pf%power
-    end do
-  contains
+        pf = lever_friction_t(pair=pair, on=pair(2:2), from=pair(3:3))
+        a = link_index(topo, pair(2:2))
+        b = link_index(topo, pair(3:3))
+        if (a == 0 .and. b == 0) then
+          plans%lever_note = "friction of pair "//pair//": its links are not known"
+          return
+        end if
+        loss = table%rows(c, k)
+        pf%prismatic = table%column_index(pair//"N") > 0
+        if (pf%prismatic) then
+          if (allocated(drawing%forces)) then
+            do j = 1, size(drawing%forces)
+              if (drawing%forces(j)%name == pair) pf%at = drawing%forces(j)%at
+            end do
+          end if
+          pf%relative = velocity(a, pf%at) - velocity(b, pf%at)
+          size_rel = norm2(pf%relative)
+          scale = norm2(velocity(a, pf%at)) + norm2(velocity(b, pf%at))
+          if (size_rel > rest_rel * scale) pf%force = -loss / size_rel * pf%relative / size_rel
+          pf%power = dot_product(pf%force, velocity(a, pf%at)) + dot_product(-pf%force, velocity(b, pf%at))
+        else
+          pf%relative = [rate_of(a) - rate_of(b), 0.0_wp]
+          size_rel = abs(pf%relative(1))
+          scale = abs(rate_of(a)) + abs(rate_of(b))
+          if (size_rel > rest_rel * scale) pf%moment = -sign(loss / size_rel, pf%relative(1))
+          pf%power = pf%moment * rate_of(a) + (-pf%moment) * rate_of(b)
+        end if
+        plans%friction = [plans%friction, pf]
+        plans%friction_power = plans%friction_power + pf%power
+      end do
+    end subroutine pair_friction_of
     !> Angular velocity of link l (0: the frame), rad/s.
     pure real(wp) function rate_of(l)
       integer, intent(in) :: l
       rate_of = 0.0_wp
       if (l > 0) rate_of = omega(l)
     end function rate_of
-    !> Velocity of the point p carried by link l (0: the frame), m/s.
-    pure function velocity(l, p) result(v)
-      integer, intent(in) :: l
-      real(wp), intent(in) :: p(2)
-      real(wp) :: v(2)
-      v = point_velocity(v0, omega, l, p)
-    end function velocity
-  end subroutine pair_friction_of
+  end subroutine lever_of
 
 end module kinetostat_plans_lever

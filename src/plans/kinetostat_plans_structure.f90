@@ -16,7 +16,7 @@ module kinetostat_plans_structure
   use kinetostat_plans_groups, only: plan_groups
   implicit none
   private
-  public :: structure_lines_of, roman
+  public :: structure_lines_of, roman, unit_description
 
   !> Length of a line.
   integer, parameter :: line_len = 160
@@ -39,7 +39,7 @@ contains
     !> The pairs: links a and b (0 the frame), kind 'R' or 'P'.
     integer, allocatable :: pa(:), pb(:)
     character(len=1), allocatable :: pk(:)
-    character(len=:), allocatable :: driver, formula, line
+    character(len=:), allocatable :: driver, formula
     integer, allocatable :: bodies(:)
     integer :: n, p5, g, i, ip, s, top
     driver = ""
@@ -87,21 +87,7 @@ contains
       associate (gr => groups(g))
         top = max(top, gr%class)
         if (gr%class == 0) top = 99
-        select case (gr%class)
-        case (1)
-          line = "INPUT LINK(S) (MECHANISM OF CLASS I)"
-        case (2)
-          line = "DYAD (GROUP OF CLASS II, ORDER 2), KIND "//dyad_kind(gr%links)
-        case (3)
-          if (size(gr%links) == 6) then
-            line = "GROUP OF CLASS III, ORDER 4 (TWO TERNARY BASE LINKS AND FOUR BINARY LINKS)"
-          else
-            line = "GROUP OF CLASS III, ORDER 3 (A TERNARY BASE LINK AND THREE BINARY LINKS)"
-          end if
-        case default
-          line = "GROUP OF "//int_str(size(gr%links))//" LINKS (CLASS NOT DETERMINED)"
-        end select
-        call push(gr%label//"  "//line)
+        call push(gr%label//"  "//unit_description(gr%class, size(gr%links), dyad_kind(gr%links)))
         if (g > 1) formula = formula//" -> "
         formula = formula//gr%label
       end associate
@@ -160,6 +146,36 @@ contains
       end do
     end function pair_kind
   end subroutine structure_lines_of
+
+  !> What a unit of the structure is, in the words of `kinetostat structure`: the input
+  !> link(s) (class I), a dyad of `kind` (class II), a group of class III of order 3 (four
+  !> links) or 4 (six links), a closed four-link contour (class IV), else a group of
+  !> `n_links` links whose class was not found.
+  pure function unit_description(class, n_links, kind) result(line)
+    !> The unit's class (0: not found).
+    integer, intent(in) :: class
+    !> Number of its links.
+    integer, intent(in) :: n_links
+    !> A dyad's kind (RRR, RRP, RPR, PRP, RPP).
+    character(*), intent(in) :: kind
+    character(len=:), allocatable :: line
+    select case (class)
+    case (1)
+      line = "INPUT LINK(S) (MECHANISM OF CLASS I)"
+    case (2)
+      line = "DYAD (GROUP OF CLASS II, ORDER 2), KIND "//kind
+    case (3)
+      if (n_links == 6) then
+        line = "GROUP OF CLASS III, ORDER 4 (TWO TERNARY BASE LINKS AND FOUR BINARY LINKS)"
+      else
+        line = "GROUP OF CLASS III, ORDER 3 (A TERNARY BASE LINK AND THREE BINARY LINKS)"
+      end if
+    case (4)
+      line = "GROUP OF CLASS IV, ORDER 2 (A CLOSED FOUR-LINK CONTOUR)"
+    case default
+      line = "GROUP OF "//int_str(n_links)//" LINKS (CLASS NOT DETERMINED)"
+    end select
+  end function unit_description
 
   !> A class in Roman numerals ("?" outside 1..8; the structure formula's I, II, III).
   pure function roman(class) result(text)
