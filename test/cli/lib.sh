@@ -17,6 +17,13 @@ run_ks() {
   "$KINETOSTAT" "$@" >"$out" 2>"$err"; rc=$?
 }
 
+# run_ks_into FILE ARGS...: run_ks with stdout written to FILE ($out is FILE): for an output a
+# script keeps, without a copy (a process) per run.
+run_ks_into() {
+  out="$1"; err="$cli_tmp/stderr"; shift
+  "$KINETOSTAT" "$@" >"$out" 2>"$err"; rc=$?
+}
+
 # expect_exit NAME CODE ARGS...: exit code must be CODE.
 expect_exit() {
   local name="$1" code="$2"; shift 2

@@ -11,6 +11,7 @@
 plans_check="$root/tools/plans_check.py"
 plans_dir="$cli_tmp/plans"
 mkdir -p "$plans_dir"
+declare -A plans_steps  # a deck's step count (its CSV's rows), noted once
 # sheet_lines SVG: its texts, one a line, the typeset runs joined (F<tspan>21</tspan> -> F21)
 sheet_lines() {
   python3 -c 'import html, re, signal, sys
@@ -41,7 +42,7 @@ for spec in assur_fourbar:lever,polygons assur_fourbar_global:lever,polygons ass
   case ",$checks," in *,groups,*) flags="$flags --groups" ;; esac
   run_ks_cached "$name.kin.csv" "data/$name.nml" --format csv --kinematics
   cp "$out" "$plans_dir/$name.csv"
-  steps=$(($(wc -l <"$out") - 1))
+  steps=$(($(wc -l <"$out") - 1)); plans_steps[$name]=$steps
   ks=$(printf '%s\n' 1 2 $(((steps + 1) / 2)) "$steps" | awk '$1 <= '"$steps"' && !seen[$1]++')
   rest=""
   # PR 3050 starts and stops at rest: no velocity plan there (the lever needs one); its
@@ -49,15 +50,15 @@ for spec in assur_fourbar:lever,polygons assur_fourbar_global:lever,polygons ass
   case "$name" in pr3050|assur_pr3050*) ks="2 3 $(((steps + 1) / 2)) $((steps - 1))"; rest=1 ;; esac
   step_files=()
   for k in $ks; do
-    run_ks "data/$name.nml" --format json --at "$k" --plans
+    run_ks_into "$plans_dir/$name.$k.json" "data/$name.nml" --format json --at "$k" --plans
     if [ "$rc" -ne 0 ]; then fail "plans-runs-$name-$k" "rc=$rc: $(head -c 300 "$err")"; continue; fi
-    cp "$out" "$plans_dir/$name.$k.json"; step_files+=("$plans_dir/$name.$k.json")
+    step_files+=("$plans_dir/$name.$k.json")
   done
   # shellcheck disable=SC2086  # flags is a word list
   check_job plans_check "plans-$name-$(echo $ks | tr ' ' ',')" "${step_files[@]}" "$plans_dir/$name.csv" $flags
   if [ -n "$rest" ]; then
-    run_ks "data/$name.nml" --format json --at "$rest" --plans
-    cp "$out" "$plans_dir/$name.$rest.json"; step_files+=("$plans_dir/$name.$rest.json")
+    run_ks_into "$plans_dir/$name.$rest.json" "data/$name.nml" --format json --at "$rest" --plans
+    step_files+=("$plans_dir/$name.$rest.json")
   fi
   # the groups: the same at every step, and the structural analysis's where it runs
   structure=()
@@ -289,19 +290,17 @@ sheet_lines "$out" >"$cli_tmp/lines.txt"; grep -qx 'deck: data/fivebar.nml   fiv
 for json in "$plans_dir"/*.json; do
   base=${json##*/}; name=${base%%.*}; k=${base#*.}; k=${k%.json}
   case "$k" in *[!0-9]*) continue ;; esac
-  steps=$(($(wc -l <"$plans_dir/$name.csv") - 1))
+  steps=${plans_steps[$name]}
   if [ "${KINETOSTAT_LONG:-0}" != 1 ] && [ "$k" -ne $(((steps + 1) / 2)) ]; then continue; fi
   case "$name:$k" in pr3050:1|assur_pr3050*:1|pr3050:"$steps"|assur_pr3050*:"$steps") continue ;; esac
-  run_ks "data/$name.nml" --format plans --at "$k"
-  cp "$out" "$plans_dir/$name.$k.svg"
+  run_ks_into "$plans_dir/$name.$k.svg" "data/$name.nml" --format plans --at "$k"
   check_job plans_check "plans-sheet-$name-$k" sheet "$plans_dir/$name.$k.svg" "$json" "$plans_dir/$name.csv"
 done
 check_batch plans_check
 for spec in sixbar_example:1 pr3207:3 pr3050:3 fivebar:2 class3:19 friction_slider_crank:19; do
   name=${spec%%:*}; k=${spec#*:}
-  run_ks "data/$name.nml" --format dxf --at "$k" --plans
-  cp "$out" "$plans_dir/$name.$k.dxf"
-  [ -f "$plans_dir/$name.$k.json" ] || { run_ks "data/$name.nml" --format json --at "$k" --plans; cp "$out" "$plans_dir/$name.$k.json"; }
+  run_ks_into "$plans_dir/$name.$k.dxf" "data/$name.nml" --format dxf --at "$k" --plans
+  [ -f "$plans_dir/$name.$k.json" ] || run_ks_into "$plans_dir/$name.$k.json" "data/$name.nml" --format json --at "$k" --plans
   { python3 "$root/tools/dxf_check.py" "$plans_dir/$name.$k.dxf" && python3 "$plans_check" dxf "$plans_dir/$name.$k.dxf" \
     "$plans_dir/$name.$k.json"; } >"$cli_tmp/check.out" 2>&1 && pass || fail "plans-dxf-$name-$k" "$(head -8 "$cli_tmp/check.out")"
 done

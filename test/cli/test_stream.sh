@@ -54,15 +54,21 @@ done
 # the INPUT DATA echo of 131 073 different omega3 values (tools/scale-decks --distinct, five
 # to a line; with tools/test --long 2*10^5): the heads written a chunk of at most 65 536 values
 # at a time through the spool, two whole chunks and a last one of one value, a chunk's end in
-# the middle of a table line; -o and stdout the same, every value echoed once and in order
+# the middle of a table line; every value echoed once and in order (-o; with --long stdout too,
+# the same bytes)
 echo_n=131073 echo_last=4.999985E-01
 [ "${KINETOSTAT_LONG:-0}" = 1 ] && echo_n=200000 echo_last=4.999990E-01
 tools/scale-decks "$echo_n" "$stream_tmp" --distinct
+# (the same run to standard output, compared with -o's, with tools/test --long: the runs above
+# compare the two sinks of the spool on 6-10 MB outputs; each of these runs 0.5 s)
 for format in table json; do
   TMPDIR="$stream_tmp/tmpdir" "$KINETOSTAT" "$stream_tmp/pr3050_lines.nml" --format $format \
     -o "$stream_tmp/out/lines.$format" 2>"$stream_tmp/err"; rc1=$?
-  TMPDIR="$stream_tmp/tmpdir" "$KINETOSTAT" "$stream_tmp/pr3050_lines.nml" --format $format \
-    >"$stream_tmp/lines.stdout.$format" 2>>"$stream_tmp/err"; rc2=$?
+  rc2=0
+  if [ "${KINETOSTAT_LONG:-0}" = 1 ]; then
+    TMPDIR="$stream_tmp/tmpdir" "$KINETOSTAT" "$stream_tmp/pr3050_lines.nml" --format $format \
+      >"$stream_tmp/lines.stdout.$format" 2>>"$stream_tmp/err"; rc2=$?
+  fi
   if [ "$format" = table ]; then
     # the OMEGA3 echo: lines of five values (the last of what is left), the first 3.000000E-01
     echoed=$(awk '/OMEGA3\('"$echo_n"'\)/{on=1; next} on && /^      /{n++; last=$NF; if (n==1) first=$1; next} on{exit}
@@ -75,7 +81,7 @@ for format in table json; do
   fi
   if [ "$rc1" -ne 0 ] || [ "$rc2" -ne 0 ]; then
     fail "stream-echo-$format" "exit codes $rc1 (-o) and $rc2 (stdout); stderr: $(head -c 300 "$stream_tmp/err")"
-  elif ! cmp -s "$stream_tmp/out/lines.$format" "$stream_tmp/lines.stdout.$format"; then
+  elif [ "${KINETOSTAT_LONG:-0}" = 1 ] && ! cmp -s "$stream_tmp/out/lines.$format" "$stream_tmp/lines.stdout.$format"; then
     fail "stream-echo-$format" "-o and stdout differ: $(cmp "$stream_tmp/out/lines.$format" "$stream_tmp/lines.stdout.$format")"
   elif [ "$echoed" != "$expected" ]; then
     fail "stream-echo-$format" "echo of OMEGA3: expected $expected, got $echoed"
