@@ -22,7 +22,7 @@ module kinetostat_dynamics_sheet
   use kinetostat_sheet, only: sheet_t, paper_t, course_paper, layer_text, layer_charts, layer_profile, &
     anchor_start, anchor_middle, anchor_end, class_font_size
   use kinetostat_title_block, only: put_sheet_format, title_block_from_table, block_height, header_indent, &
-    deck_line, block_width
+    course_title, course_data_line, block_width
   use kinetostat_mechanism_sheet, only: fitted_size
   use kinetostat_scales, only: round_scale, nice_step, scale_number, standard_drawing_scale, drawing_scale_t
   use kinetostat_run_sheet, only: put_axes
@@ -82,9 +82,8 @@ contains
 
     names_queued = 0
     page = course_paper(paper%name)
-    call sheet%open(page, lang, words("Machine dynamics", "Динамический анализ машины", lang)// &
-      " - "//table%deck, &
-      "kinetostat sheets: the dynamics sheet of "//table%deck//": reduced moments, work diagrams, dT, T_I, "// &
+    call sheet%open(page, lang, words("Machine dynamics", "Динамический анализ машины", lang), &
+      "kinetostat sheets: the dynamics sheet: reduced moments, work diagrams, dT, T_I, "// &
       "J_red, omega1, eps1, Wittenbauer's diagram with the tangents and kl, the flywheel.")
     deg = unit_word("deg", lang)
     nm = unit_word("N*m", lang)
@@ -555,8 +554,9 @@ contains
     end subroutine hatch_line
   end subroutine draw_dynamics_sheet
 
-  !> The header of a course sheet: its heading, the mechanism's title, the deck with its own
-  !> title and the --set changes of the run, the program.
+  !> The header of a course sheet: its heading, the mechanism's name (course_title), the
+  !> deck's own title and the --set changes of the run (course_data_line: no file), the
+  !> program.
   pure subroutine sheet_header(sheet, title, table, lang, heading)
     type(sheet_t), intent(inout) :: sheet
     character(*), intent(in) :: title
@@ -572,10 +572,11 @@ contains
     call sheet%set_layer(layer_text)
     call sheet%text(inner(1) + 6.0_wp, inner(2) + 7.0_wp, heading, "title", size=fitted_size(heading, 4.5_wp, w, 0.8_wp))
     ! (the title often in capitals, Cyrillic ones wider than 0.6 of the size: fitted at 0.72)
-    call sheet%text(inner(1) + 6.0_wp, inner(2) + 12.5_wp, title, "subtitle", size=fitted_size(title, 3.0_wp, w, 0.72_wp), &
+    line = course_title(title)
+    call sheet%text(inner(1) + 6.0_wp, inner(2) + 12.5_wp, line, "subtitle", size=fitted_size(line, 3.0_wp, w, 0.72_wp), &
       plain=.true.)
-    line = deck_line(table, lang)
-    call sheet%text(inner(1) + 6.0_wp, inner(2) + 17.5_wp, line, "subtitle", &
+    line = course_data_line(table, lang)
+    if (len(line) > 0) call sheet%text(inner(1) + 6.0_wp, inner(2) + 17.5_wp, line, "subtitle", &
       size=fitted_size(line, 2.6_wp, w - 30.0_wp, 0.6_wp), plain=.true.)
     call sheet%text(inner(3) - 3.0_wp, inner(2) + 17.5_wp, version_string, "small", anchor_end, plain=.true.)
   end subroutine sheet_header

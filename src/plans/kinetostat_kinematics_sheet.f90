@@ -172,8 +172,9 @@ contains
     end if
     if (part_drawn == 2) then
       call sheet%open(page, lang, words("Plans of velocities and accelerations", &
-        "Планы скоростей и ускорений", lang)//" - "//table%deck, &
-        "kinetostat sheets: the second kinematics sheet ("//page%name//") of "//table%deck//": the mechanism in the "// &
+        "Планы скоростей и ускорений", lang)//", "//words("position", "положение", lang)//" "// &
+        int_str(table%run_row(k)), &
+        "kinetostat sheets: the second kinematics sheet ("//page%name//"): the mechanism in the "// &
         "position, the values there, the plans of velocities and "// &
         "accelerations and the values read off them.")
       call put_sheet_format(sheet, title_block_from_table(table, words("Plans of velocities and accelerations", &
@@ -183,7 +184,8 @@ contains
     else
       call sheet%open(page, lang, words("Structure and kinematics", &
         "Структурный и кинематический анализ", lang)// &
-        " - "//table%deck, "kinetostat sheets: the kinematics sheet of "//table%deck//": the mechanism at a position "// &
+        ", "//words("position", "положение", lang)//" "//int_str(table%run_row(k)), &
+        "kinetostat sheets: the kinematics sheet: the mechanism at a position "// &
         "with a trajectory, the structure, the output link's diagrams, the values at the position.")
       call put_sheet_format(sheet, title_block_from_table(table, words("Structure and kinematics of the mechanism", &
         "Структурный и кинематический анализ механизма", lang), view%drawing_scale%text))

@@ -32,7 +32,8 @@ module kinetostat_plans_draw
   use kinetostat_sheet, only: sheet_t, entity_group, layer_text, layer_vplan, layer_aplan, layer_polygons, layer_lever, &
     layer_scales, layer_frame, layer_guides, anchor_start, anchor_end
   use kinetostat_label_place, only: outward_none, outward_leaders, outward_all
-  use kinetostat_title_block, only: put_sheet_format, title_block_from_table, header_indent, deck_line
+  use kinetostat_title_block, only: put_sheet_format, title_block_from_table, header_indent, deck_line, &
+    course_title, course_data_line
   use kinetostat_drawing, only: drawing_t, drawing_point_t, drawing_body_t, drawing_force_t, drawing_moment_t, &
     force_gravity, force_inertia, force_load, force_pair, point_pivot
   use kinetostat_mechanism_view, only: mechanism_view_t, fit_mechanism_view, draw_mechanism, force_colours
@@ -97,14 +98,20 @@ contains
     real(wp), allocatable :: from(:, :)
     integer :: j
 
-    call sheet%open(geo%paper, lang, title//" - "//table%deck//" - plans, "//table%row_name//" "//int_str(table%run_row(k)), &
-      "kinetostat --format plans --at "//int_str(table%run_row(k))//" sheet of "//table%deck//": the mechanism, the plans of "// &
-      "velocities and accelerations in its frame, Zhukovsky's lever, the force polygons. The mechanism's group "// &
-      "gives its view (data-origin, data-scale, data-rotation); velocity images carry data-image, in sheet mm.")
     if (geo%groups_apart) then
-      ! the course's sheet 2: the force analysis (its plans are the kinematics sheet's)
+      ! the course's sheet 2: the force analysis (its plans are the kinematics sheet's); no
+      ! file named on it (course_data_line), the mechanism's name in the course's words
       line = word("Force analysis of the mechanism", lang)
+      call sheet%open(geo%paper, lang, line//", "//word("position", lang)//" "//int_str(table%run_row(k)), &
+        "kinetostat sheets: the kinetostatics sheet: the mechanism with its forces, Zhukovsky's lever, the force "// &
+        "polygons, each Assur group drawn apart. The mechanism's group gives its view (data-origin, data-scale, "// &
+        "data-rotation); velocity images carry data-image, in sheet mm.")
     else
+      call sheet%open(geo%paper, lang, title//" - "//table%deck//" - plans, "//table%row_name//" "// &
+        int_str(table%run_row(k)), "kinetostat --format plans --at "//int_str(table%run_row(k))//" sheet of "// &
+        table%deck//": the mechanism, the plans of velocities and accelerations in its frame, Zhukovsky's lever, "// &
+        "the force polygons. The mechanism's group gives its view (data-origin, data-scale, data-rotation); "// &
+        "velocity images carry data-image, in sheet mm.")
       line = word("Plans of velocities, accelerations, forces", lang)
     end if
     call put_sheet_format(sheet, title_block_from_table(table, line, geo%view%drawing_scale%text))
@@ -114,11 +121,14 @@ contains
 
     ! the header: the mechanism's title, the deck with its own title and the --set changes, the step
     call sheet%set_layer(layer_text)
-    call sheet%text(inner(1) + 3.0_wp, 11.0_wp, title, "title", size=fitted_size(title, 3.3_wp, inner(3) - inner(1) - &
+    line = title
+    if (geo%groups_apart) line = course_title(title)
+    call sheet%text(inner(1) + 3.0_wp, 11.0_wp, line, "title", size=fitted_size(line, 3.3_wp, inner(3) - inner(1) - &
       6.0_wp, 0.72_wp), plain=.true.)
     line = deck_line(table, lang)
-    call sheet%text(inner(1) + 3.0_wp, 16.5_wp, line, "subtitle", size=fitted_size(line, 3.0_wp, inner(3) - inner(1) - &
-      6.0_wp, 0.6_wp), plain=.true.)
+    if (geo%groups_apart) line = course_data_line(table, lang)
+    if (len(line) > 0) call sheet%text(inner(1) + 3.0_wp, 16.5_wp, line, "subtitle", &
+      size=fitted_size(line, 3.0_wp, inner(3) - inner(1) - 6.0_wp, 0.6_wp), plain=.true.)
     line = word(table%row_name, lang)//" "//int_str(table%run_row(k))//" "//word("of", lang)//" "//int_str(table%run_rows())
     if (table%input_column > 0) line = line//": "//table%columns(table%input_column)%name//" = "// &
       short_number(table%rows(table%input_column, k))//" "//unit_word(table%columns(table%input_column)%unit, lang)

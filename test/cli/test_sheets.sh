@@ -132,7 +132,7 @@ PY
 for case in pr3207_flywheel_en pr3207_flywheel_ru class3_en; do
   svg="$cli_tmp/sheets_$case/kinetostatics.svg"
   deck=${case%_*}
-  step=$(sed -n 's/.*plans, [^<]* \([0-9][0-9]*\)<\/title>.*/\1/p' "$svg" | head -1)
+  step=$(sed -n 's/.*\(position\|положение\) \([0-9][0-9]*\)<\/title>.*/\2/p' "$svg" | head -1)
   "$KINETOSTAT" "data/$deck.nml" --format json --at "$step" --plans >"$cli_tmp/apart.json" 2>/dev/null
   verdict=$(sheets_moments "$svg" "$cli_tmp/apart.json")
   case "$verdict" in ok*) pass ;; *) fail "sheets-groups-apart-$case" "$verdict" ;; esac
@@ -693,3 +693,78 @@ print(t[:start] + re.sub(r'class="num"( style="font-size: [0-9.]+px")?', 'class=
 PY
 verdict=$(sheets_plans_fill 35 "$cli_tmp/fill_bad.svg")
 case "$verdict" in "differs: "*"values read off the plans at 1.4 mm"*) pass ;; *) fail sheets-plans-fill-must-fail-read "values read off at 1.4 mm passed: $verdict" ;; esac
+
+# No file on a course sheet: no deck path (no "data/", no ".nml") anywhere in an SVG (its
+# visible text, its <title> and <desc>, its attributes) or a DXF (its TEXT and its comments);
+# and on a Russian sheet no Latin word of three or more letters in the visible text (SVG
+# <text>, DXF TEXT) but these exceptions: the deck's own title (its `title = '...'`, the user's
+# words), the program's name "kinetostat" and Roman numerals (a group's class, III); a
+# sub- or superscript (l_AB) is a run of its own (these runs have no --set). Every offending text
+# printed. The sheets of the checks above (A1: PR 3207's flywheel deck in both languages, the
+# class-III deck in English, and here in Russian; A4, A3, A2 of PR 3207's flywheel deck and
+# A4 of the class-III deck; with --long the six-bar's and the &assur PR 3207 flywheel decks,
+# both languages).
+sheets_no_file() {  # DECK LANG FILE...: "ok N texts" or the offending texts
+  python3 - "$@" <<'PY'
+import re, sys
+import xml.etree.ElementTree as ET
+deck, lang, paths = sys.argv[1], sys.argv[2], sys.argv[3:]
+title = re.search(r"^\s*title\s*=\s*'([^']*)'", open(deck, encoding="utf-8").read(), re.M | re.I)
+title = title.group(1) if title else None
+bad, n = [], 0
+def visible(path):
+    src = open(path, encoding="utf-8").read()
+    if path.endswith(".svg"):
+        # a <text>'s runs apart (a sub- or superscript, l_AB, is a run of its own)
+        runs = lambda el: [el.text or ""] + [r for c in el.iter() if c is not el for r in (c.text or "", c.tail or "")]
+        return src, [runs(el) for el in ET.fromstring(src).iter("{http://www.w3.org/2000/svg}text")]
+    lines = src.split("\n")
+    texts, entity = [], None
+    for i in range(0, len(lines) - 1, 2):
+        code, value = lines[i].strip(), lines[i + 1]
+        if code == "0":
+            entity = value
+        elif code == "1" and entity == "TEXT":
+            texts.append([re.sub(r"\\U\+([0-9A-Fa-f]{4})", lambda m: chr(int(m.group(1), 16)), value)])
+    return src, texts
+for path in paths:
+    src, texts = visible(path)
+    n += len(texts)
+    for what in ("data/", ".nml"):
+        if what in src:
+            where = ["".join(t) for t in texts if what in "".join(t)] or [l.strip() for l in src.split("\n") if what in l]
+            bad.append(f"{path}: {what!r} in {where[0][:160]!r}")
+    if lang != "ru":
+        continue
+    for t in texts:
+        words = []
+        for run in t:
+            rest = run.replace(title, " ") if title else run
+            rest = re.sub(r"\bkinetostat\b", " ", rest)
+            words += [w for w in re.findall(r"[A-Za-z]{3,}", rest) if not re.fullmatch(r"[IVX]+", w)]
+        if words:
+            bad.append(f"{path}: Latin {', '.join(words)} in {''.join(t)[:160]!r}")
+if not n:
+    bad.append("no text read")
+print("differs: " + "\n  ".join(bad[:40]) if bad else f"ok {n} texts")
+PY
+}
+dir="$cli_tmp/sheets_class3_ru"
+if [ ! -s "$dir/kinematics.svg" ]; then
+  PATH="$(pdf_stand_in):$PATH" run_ks sheets data/class3.nml -o "$dir" --lang ru --student "Иванов И.И." --group МТ-301 --variant 7
+  [ "$rc" -eq 0 ] || fail sheets-no-file-run "exit $rc: $(head -c 300 "$err")"
+fi
+for spec in pr3207_flywheel:en:sheets_pr3207_flywheel_en pr3207_flywheel:ru:sheets_pr3207_flywheel_ru \
+  class3:en:sheets_class3_en class3:ru:sheets_class3_ru class3:en:sheets_a4_class3_en pr3207_flywheel:ru:sheets_a4_pr3207 \
+  pr3207_flywheel:en:sheets_A3_pr3207_flywheel_en pr3207_flywheel:ru:sheets_A2_pr3207_flywheel_ru \
+  sixbar_flywheel:en:sheets_sixbar_flywheel_en sixbar_flywheel:ru:sheets_sixbar_flywheel_ru \
+  assur_pr3207_flywheel:en:sheets_assur_pr3207_flywheel_en assur_pr3207_flywheel:ru:sheets_assur_pr3207_flywheel_ru; do
+  IFS=: read -r deck lang d <<<"$spec"
+  [ -d "$cli_tmp/$d" ] || continue
+  verdict=$(sheets_no_file "data/$deck.nml" "$lang" "$cli_tmp/$d"/*.svg "$cli_tmp/$d"/*.dxf)
+  case "$verdict" in ok*) pass ;; *) fail "sheets-no-file-$d" "$verdict" ;; esac
+done
+# must fail: a path in a DXF's TEXT, an English word on a Russian sheet
+sed 's|>Масштаб<|>Масштаб data/x.nml scale<|' "$cli_tmp/sheets_class3_ru/kinematics.svg" >"$cli_tmp/no_file_bad.svg"
+verdict=$(sheets_no_file data/class3.nml ru "$cli_tmp/no_file_bad.svg")
+case "$verdict" in *"'data/' in 'Масштаб data/x.nml scale'"*"Latin data, nml, scale in"*) pass ;; *) fail sheets-no-file-must-fail "a path and English words passed: $verdict" ;; esac
