@@ -249,10 +249,17 @@ contains
       y = region(4) + gap
       hmax = bottom - y
       ! (the values read off as high as they need at 1.8 mm, half the height at the most; the
-      ! plans the rest)
+      ! plans the rest; A3 landscape: left of the title block, where they fit there, the plans
+      ! down to the block's top)
       h_read = min(0.5_wp * hmax, values_table_height(plans, 2.0_wp * cw + gap, lang))
-      call draw_kinematic_plans(sheet, view, plans, [x1, y, x1 + cw, bottom - h_read - gap], &
-        [x2, y, x2 + cw, bottom - h_read - gap], [x1, bottom - h_read, x2 + cw, bottom], lang)
+      if (page%landscape .and. values_table_height(plans, inner(3) - block_width - gap - x1, lang) <= &
+        block_height - gap) then
+        call draw_kinematic_plans(sheet, view, plans, [x1, y, x1 + cw, bottom], [x2, y, x2 + cw, bottom], &
+          [x1, bottom + gap, inner(3) - block_width - gap, inner(4) - gap], lang)
+      else
+        call draw_kinematic_plans(sheet, view, plans, [x1, y, x1 + cw, bottom - h_read - gap], &
+          [x2, y, x2 + cw, bottom - h_read - gap], [x1, bottom - h_read, x2 + cw, bottom], lang)
+      end if
     else if (part_drawn == 2) then
       call put_values(x2, top, cw, region(4) - top)
     else if (present(plans)) then
@@ -425,7 +432,8 @@ contains
     !> The positions' numbers at the traced point and the crank pin (after every line and
     !> dot, so that they keep clear of them), and the foot: position 0's angle and the step.
     subroutine put_position_numbers()
-      integer :: cx, cy
+      integer :: cx, cy, cut
+      real(wp) :: size
       character(len=:), allocatable :: pin_name, foot
       pin_name = crank_pin()
       if (len(traced) > 0) then
@@ -444,8 +452,15 @@ contains
         foot = foot//", φ1 = "//fixed_number(modulo(positions%rows(positions%input_column, 1), 360.0_wp), 2)//" "// &
           unit_word("deg", lang)//words("; the positions every ", "; положения через ", lang)// &
           fixed_number(360.0_wp / real(n_positions, wp), 0)//" "//unit_word("deg", lang)
-        ! (smaller where the column is too narrow for it at 2.4 mm: A3)
-        if (fitted_size(foot, 2.4_wp, cw - 4.0_wp, 0.6_wp) < 2.4_wp) then
+        ! (smaller where the column is too narrow for it at 2.4 mm: A3; on two lines, broken
+        ! after the position's angle, where one would be smaller than 1.8 mm: A4)
+        cut = index(foot, "; ", back=.true.)
+        if (fitted_size(foot, 2.4_wp, cw - 4.0_wp, 0.6_wp) < 1.8_wp .and. cut > 0) then
+          size = min(2.4_wp, fitted_size(foot(:cut), 2.4_wp, cw - 4.0_wp, 0.6_wp), &
+            fitted_size(foot(cut + 2:), 2.4_wp, cw - 4.0_wp, 0.6_wp))
+          call sheet%text(region(1) + 2.0_wp, region(4) - 7.5_wp - 1.3_wp * size, foot(:cut), "small", size=size)
+          call sheet%text(region(1) + 2.0_wp, region(4) - 7.5_wp, foot(cut + 2:), "small", size=size)
+        else if (fitted_size(foot, 2.4_wp, cw - 4.0_wp, 0.6_wp) < 2.4_wp) then
           call sheet%text(region(1) + 2.0_wp, region(4) - 7.5_wp, foot, "small", size=fitted_size(foot, 2.4_wp, &
             cw - 4.0_wp, 0.6_wp))
         else
@@ -733,7 +748,7 @@ contains
       character(*), intent(in) :: title, curve_name
       !> Whether a diagram stands above it.
       logical, intent(in) :: below
-      if (below) y = y + q%height + 26.0_wp + gap
+      if (below) y = y + q%height + 26.0_wp + q%head + gap
       call put_cycle_chart(sheet, x2, y, cw, hmax, phi, mu_phi, values, unit_word(unit, lang), symbol, title, &
         "φ1, "//unit_word("deg", lang), lang, q)
       call put_cycle_curve(sheet, q, phi, values, "#1f77b4", "", curve_name)

@@ -768,3 +768,44 @@ done
 sed 's|>Масштаб<|>Масштаб data/x.nml scale<|' "$cli_tmp/sheets_class3_ru/kinematics.svg" >"$cli_tmp/no_file_bad.svg"
 verdict=$(sheets_no_file data/class3.nml ru "$cli_tmp/no_file_bad.svg")
 case "$verdict" in *"'data/' in 'Масштаб data/x.nml scale'"*"Latin data, nml, scale in"*) pass ;; *) fail sheets-no-file-must-fail "a path and English words passed: $verdict" ;; esac
+
+# Legible on A4 and A3: no text of a course sheet smaller than 1.8 mm (the project's least
+# size, ГОСТ 2.304's smallest; a sub- or superscript's run aside: its text's size counts) -
+# a value's line too long for its column broken after the value, a chart's heading with its
+# scales on two lines, the plan of positions' foot on two; and A3's second kinematics sheet
+# uses the strip left of the title block (a panel there: the values read off the plans).
+# Every text too small printed.
+sheets_least_text() {  # SVG...: "ok SMALLEST" or the texts too small
+  python3 - "$root/tools" "$@" <<'PY'
+import re, sys
+sys.path.insert(0, sys.argv[1])
+import xml.etree.ElementTree as ET
+import svg_check as sc
+bad, least = [], 1e9
+for path in sys.argv[2:]:
+    src = open(path, encoding="utf-8").read()
+    sizes, _ = sc.style_sizes(src)
+    for el in ET.fromstring(src).iter(sc.SVG_NS + "text"):
+        size = sc.text_size(el, sizes)
+        least = min(least, size)
+        if size < 1.8 - 1e-9:
+            bad.append(f"{path}: {size} mm {''.join(el.itertext())[:100]!r}")
+print("differs: " + "\n  ".join(bad[:20]) if bad else f"ok {least}")
+PY
+}
+for d in sheets_a4_class3_en sheets_a4_pr3207 sheets_A3_pr3207_flywheel_en sheets_a4_class3_ru sheets_a4_sixbar_flywheel_en \
+  sheets_a4_sixbar_flywheel_ru sheets_a4_assur_pr3207_flywheel_en sheets_a4_assur_pr3207_flywheel_ru; do
+  [ -d "$cli_tmp/$d" ] || continue
+  verdict=$(sheets_least_text "$cli_tmp/$d"/*.svg)
+  case "$verdict" in ok*) pass ;; *) fail "sheets-least-text-$d" "$verdict" ;; esac
+done
+verdict=$(python3 - "$cli_tmp/sheets_A3_pr3207_flywheel_en/kinematics-2.svg" <<'PY'
+import re, sys
+t = open(sys.argv[1], encoding="utf-8").read()
+bx, by = (float(v) for v in re.search(r'<rect x="([0-9.]+)" y="([0-9.]+)" width="185.00" height="55.00"', t).groups())
+beside = [(x, y, w, h) for x, y, w, h in ((float(a) for a in m) for m in re.findall(
+    r'<rect x="([0-9.]+)" y="([0-9.]+)" width="([0-9.]+)" height="([0-9.]+)" class="panel"', t)) if y >= by and x + w <= bx]
+print(f"ok {beside[0][2]:.0f} x {beside[0][3]:.0f} mm" if beside else f"no panel left of the title block at x {bx} y {by}")
+PY
+)
+case "$verdict" in ok*) pass ;; *) fail sheets-A3-strip "$verdict" ;; esac
