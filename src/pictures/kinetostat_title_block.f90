@@ -17,7 +17,7 @@ module kinetostat_title_block
   use kinetostat_step_table, only: step_table_t
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_text, only: int_str
-  use kinetostat_labels, only: lang_ru, label
+  use kinetostat_labels, only: lang_ru, label, in_language
   use kinetostat_typeset, only: char_count
   use kinetostat_sheet, only: sheet_t, paper_t, layer_frame, anchor_middle, frame_left, frame_margin, line_classes
   use kinetostat_sheet_svg, only: put_sheet_elements
@@ -133,26 +133,15 @@ contains
     integer :: i
     line = ""
     if (allocated(table%subtitle)) then
-      if (len_trim(table%subtitle) > 0) line = words("mechanism: ", "механизм: ")//trim(table%subtitle)
+      if (len_trim(table%subtitle) > 0) line = in_language("mechanism: ", "механизм: ", lang)//trim(table%subtitle)
     end if
     if (.not. allocated(table%overrides)) return
     if (size(table%overrides) == 0) return
     if (len(line) > 0) line = line//";  "
-    line = line//words("data changed:", "изменения данных:")
+    line = line//in_language("data changed:", "изменения данных:", lang)
     do i = 1, size(table%overrides)
       line = line//" "//trim(table%overrides(i))
     end do
-  contains
-    !> The English or the Russian words, by `lang`.
-    pure function words(english, russian) result(text)
-      character(*), intent(in) :: english, russian
-      character(len=:), allocatable :: text
-      if (lang == lang_ru) then
-        text = russian
-      else
-        text = english
-      end if
-    end function words
   end function course_data_line
 
   !> The frame of the sheet's paper and the title block in its lower right corner.
