@@ -249,13 +249,14 @@ contains
       y = region(4) + gap
       hmax = bottom - y
       ! (the values read off as high as they need at 1.8 mm, half the height at the most; the
-      ! plans the rest; A3 landscape: left of the title block, where they fit there, the plans
-      ! down to the block's top)
+      ! plans the rest; A3 landscape: in the left column from the frame's foot up, left of the
+      ! title block and higher where they need more, the plan of accelerations down to the
+      ! block's top)
       h_read = min(0.5_wp * hmax, values_table_height(plans, 2.0_wp * cw + gap, lang))
-      if (page%landscape .and. values_table_height(plans, inner(3) - block_width - gap - x1, lang) <= &
-        block_height - gap) then
-        call draw_kinematic_plans(sheet, view, plans, [x1, y, x1 + cw, bottom], [x2, y, x2 + cw, bottom], &
-          [x1, bottom + gap, inner(3) - block_width - gap, inner(4) - gap], lang)
+      if (page%landscape) then
+        h_read = max(block_height - gap, min(0.5_wp * hmax, values_table_height(plans, cw, lang)))
+        call draw_kinematic_plans(sheet, view, plans, [x1, y, x1 + cw, inner(4) - gap - h_read - gap], &
+          [x2, y, x2 + cw, bottom], [x1, inner(4) - gap - h_read, x1 + cw, inner(4) - gap], lang)
       else
         call draw_kinematic_plans(sheet, view, plans, [x1, y, x1 + cw, bottom - h_read - gap], &
           [x2, y, x2 + cw, bottom - h_read - gap], [x1, bottom - h_read, x2 + cw, bottom], lang)

@@ -773,7 +773,8 @@ case "$verdict" in *"'data/' in 'Масштаб data/x.nml scale'"*"Latin data, 
 # size, ГОСТ 2.304's smallest; a sub- or superscript's run aside: its text's size counts) -
 # a value's line too long for its column broken after the value, a chart's heading with its
 # scales on two lines, the plan of positions' foot on two; and A3's second kinematics sheet
-# uses the strip left of the title block (a panel there: the values read off the plans).
+# uses the strip left of the title block (a panel reaching 45 mm down beside it: the values
+# read off the plans).
 # Every text too small printed.
 sheets_least_text() {  # SVG...: "ok SMALLEST" or the texts too small
   python3 - "$root/tools" "$@" <<'PY'
@@ -804,7 +805,7 @@ import re, sys
 t = open(sys.argv[1], encoding="utf-8").read()
 bx, by = (float(v) for v in re.search(r'<rect x="([0-9.]+)" y="([0-9.]+)" width="185.00" height="55.00"', t).groups())
 beside = [(x, y, w, h) for x, y, w, h in ((float(a) for a in m) for m in re.findall(
-    r'<rect x="([0-9.]+)" y="([0-9.]+)" width="([0-9.]+)" height="([0-9.]+)" class="panel"', t)) if y >= by and x + w <= bx]
+    r'<rect x="([0-9.]+)" y="([0-9.]+)" width="([0-9.]+)" height="([0-9.]+)" class="panel"', t)) if y + h >= by + 45 and x + w <= bx]
 print(f"ok {beside[0][2]:.0f} x {beside[0][3]:.0f} mm" if beside else f"no panel left of the title block at x {bx} y {by}")
 PY
 )
