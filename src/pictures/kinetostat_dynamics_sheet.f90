@@ -22,7 +22,7 @@ module kinetostat_dynamics_sheet
   use kinetostat_sheet, only: sheet_t, paper_t, course_paper, layer_text, layer_charts, layer_profile, &
     anchor_start, anchor_middle, anchor_end, class_font_size
   use kinetostat_title_block, only: put_sheet_format, title_block_from_table, block_height, header_indent, &
-    deck_line, block_width
+    course_title, course_data_line, block_width
   use kinetostat_mechanism_sheet, only: fitted_size
   use kinetostat_scales, only: round_scale, nice_step, scale_number, standard_drawing_scale, drawing_scale_t
   use kinetostat_run_sheet, only: put_axes
@@ -43,6 +43,9 @@ module kinetostat_dynamics_sheet
   type :: plot_t
     real(wp) :: left = 0.0_wp, top = 0.0_wp, width = 1.0_wp, height = 1.0_wp
     real(wp) :: xlo = 0.0_wp, xhi = 1.0_wp, ylo = 0.0_wp, yhi = 1.0_wp
+    !> The heading's second line (its scales, where one line would be smaller than 2.5 mm):
+    !> how much lower the plot and the panel's foot are, mm (0: one line, or two that fit).
+    real(wp) :: head = 0.0_wp
   contains
     procedure :: sx => plot_x
     procedure :: sy => plot_y
@@ -82,9 +85,8 @@ contains
 
     names_queued = 0
     page = course_paper(paper%name)
-    call sheet%open(page, lang, words("Machine dynamics", "Динамический анализ машины", lang)// &
-      " - "//table%deck, &
-      "kinetostat sheets: the dynamics sheet of "//table%deck//": reduced moments, work diagrams, dT, T_I, "// &
+    call sheet%open(page, lang, words("Machine dynamics", "Динамический анализ машины", lang), &
+      "kinetostat sheets: the dynamics sheet: reduced moments, work diagrams, dT, T_I, "// &
       "J_red, omega1, eps1, Wittenbauer's diagram with the tangents and kl, the flywheel.")
     deg = unit_word("deg", lang)
     nm = unit_word("N*m", lang)
@@ -317,7 +319,7 @@ contains
     !> The panel's height of a chart.
     pure real(wp) function chart_height(q)
       type(plot_t), intent(in) :: q
-      chart_height = q%height + 26.0_wp
+      chart_height = q%height + 26.0_wp + q%head
     end function chart_height
 
 
@@ -555,8 +557,9 @@ contains
     end subroutine hatch_line
   end subroutine draw_dynamics_sheet
 
-  !> The header of a course sheet: its heading, the mechanism's title, the deck with its own
-  !> title and the --set changes of the run, the program.
+  !> The header of a course sheet: its heading, the mechanism's name (course_title), the
+  !> deck's own title and the --set changes of the run (course_data_line: no file), the
+  !> program.
   pure subroutine sheet_header(sheet, title, table, lang, heading)
     type(sheet_t), intent(inout) :: sheet
     character(*), intent(in) :: title
@@ -572,10 +575,11 @@ contains
     call sheet%set_layer(layer_text)
     call sheet%text(inner(1) + 6.0_wp, inner(2) + 7.0_wp, heading, "title", size=fitted_size(heading, 4.5_wp, w, 0.8_wp))
     ! (the title often in capitals, Cyrillic ones wider than 0.6 of the size: fitted at 0.72)
-    call sheet%text(inner(1) + 6.0_wp, inner(2) + 12.5_wp, title, "subtitle", size=fitted_size(title, 3.0_wp, w, 0.72_wp), &
+    line = course_title(title)
+    call sheet%text(inner(1) + 6.0_wp, inner(2) + 12.5_wp, line, "subtitle", size=fitted_size(line, 3.0_wp, w, 0.72_wp), &
       plain=.true.)
-    line = deck_line(table, lang)
-    call sheet%text(inner(1) + 6.0_wp, inner(2) + 17.5_wp, line, "subtitle", &
+    line = course_data_line(table, lang)
+    if (len(line) > 0) call sheet%text(inner(1) + 6.0_wp, inner(2) + 17.5_wp, line, "subtitle", &
       size=fitted_size(line, 2.6_wp, w - 30.0_wp, 0.6_wp), plain=.true.)
     call sheet%text(inner(3) - 3.0_wp, inner(2) + 17.5_wp, version_string, "small", anchor_end, plain=.true.)
   end subroutine sheet_header
@@ -591,7 +595,7 @@ contains
     integer, intent(in) :: lang
     type(plot_t), intent(out) :: q
     logical, intent(in), optional :: zero
-    real(wp) :: lo, hi, step, mu, vmin, vmax
+    real(wp) :: lo, hi, step, mu, vmin, vmax, size, two
     character(len=:), allocatable :: text, deg
     logical :: with_zero
     with_zero = .true.
@@ -608,9 +612,26 @@ contains
     step = nice_step(vmax - vmin, max(2, min(5, floor((hmax - 26.0_wp) / 5.0_wp))), .false.)
     lo = step * floor(vmin / step + 1.0e-9_wp)
     hi = step * ceiling(vmax / step - 1.0e-9_wp)
-    mu = round_scale(hi - lo, hmax - 26.0_wp)
+    ! the heading with its scales on one line, or, where that would be smaller than 2.5 mm
+    ! (ГОСТ 2.304's smallest but 1.8 mm) and two lines larger, the scales on a second line,
+    ! the plot lower by its pitch
+    text = heading//";  μ"//sym//" = "//scale_number(mu_of(0.0_wp))//" "//unit//"/"//unit_word("mm", lang)//",  μφ = "// &
+      scale_number(mu_phi)//" "//deg//"/"//unit_word("mm", lang)
+    size = min(3.0_wp, fitted_size(text, 3.0_wp, width - 4.0_wp, 0.62_wp))
+    q%head = 0.0_wp
+    if (size < 2.5_wp) then
+      two = min(3.0_wp, fitted_size(heading, 3.0_wp, width - 4.0_wp, 0.62_wp), fitted_size(text(len(heading) + 4:), &
+        3.0_wp, width - 4.0_wp, 0.62_wp))
+      if (two > size) then
+        ! (the lines' baselines 2 + 0.9 and 2 + 2.25 sizes under the panel's top, the plot's
+        ! top label 2.7 mm under the second: lower than a line's plot where that is below 9 mm)
+        size = two
+        q%head = max(0.0_wp, 2.25_wp * size - 4.3_wp)
+      end if
+    end if
+    mu = mu_of(q%head)
     q%left = x0 + 19.0_wp
-    q%top = y0 + 9.0_wp
+    q%top = y0 + 9.0_wp + q%head
     q%width = (maxval(phi) - minval(phi)) / mu_phi
     q%height = (hi - lo) / mu
     q%xlo = minval(phi)
@@ -618,13 +639,23 @@ contains
     q%ylo = lo
     q%yhi = hi
     call sheet%set_layer(layer_charts)
-    call sheet%rect(x0, y0, width, q%height + 24.0_wp, "panel")
+    call sheet%rect(x0, y0, width, q%height + 24.0_wp + q%head, "panel")
     text = heading//";  μ"//sym//" = "//scale_number(mu)//" "//unit//"/"//unit_word("mm", lang)//",  μφ = "// &
       scale_number(mu_phi)//" "//deg//"/"//unit_word("mm", lang)
-    call sheet%text(x0 + 2.0_wp, y0 + 5.0_wp, text, "heading", size=min(3.0_wp, fitted_size(text, 3.0_wp, &
-      width - 4.0_wp, 0.62_wp)))
+    if (size > min(3.0_wp, fitted_size(text, 3.0_wp, width - 4.0_wp, 0.62_wp))) then
+      call sheet%text(x0 + 2.0_wp, y0 + 2.0_wp + 0.9_wp * size, heading//";", "heading", size=size)
+      call sheet%text(x0 + 2.0_wp, y0 + 2.0_wp + 2.25_wp * size, text(len(heading) + 4:), "heading", size=size)
+    else
+      call sheet%text(x0 + 2.0_wp, y0 + 5.0_wp, text, "heading", size=size)
+    end if
     call put_axes(sheet, q%left, q%top, q%width, q%height, q%xlo, q%xhi, nice_step(q%xhi - q%xlo, 8, .true.), lo, hi, &
       step, xlabel, unit)
+  contains
+    !> The chart's round μ of the quantity with its plot `drop` mm lower.
+    pure real(wp) function mu_of(drop)
+      real(wp), intent(in) :: drop
+      mu_of = round_scale(hi - lo, hmax - 26.0_wp - drop)
+    end function mu_of
   end subroutine put_cycle_chart
 
   !> A curve over the input angle `phi` in the plot q with its name placed beside it.

@@ -17,14 +17,14 @@ module kinetostat_title_block
   use kinetostat_step_table, only: step_table_t
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_text, only: int_str
-  use kinetostat_labels, only: lang_ru, label
+  use kinetostat_labels, only: lang_ru, label, in_language
   use kinetostat_typeset, only: char_count
   use kinetostat_sheet, only: sheet_t, paper_t, layer_frame, anchor_middle, frame_left, frame_margin, line_classes
   use kinetostat_sheet_svg, only: put_sheet_elements
   implicit none
   private
   public :: title_block_t, title_block_from_table, put_sheet_format, put_title_block_at, put_title_block, &
-    title_block_height, block_width, block_height, fitted_text, header_indent, deck_line
+    title_block_height, block_width, block_height, fitted_text, header_indent, deck_line, course_title, course_data_line
 
   !> Size of the block (ГОСТ 2.104 form 1), mm.
   real(wp), parameter :: block_width = 185.0_wp, block_height = 55.0_wp
@@ -104,6 +104,45 @@ contains
       line = line//" "//trim(table%overrides(i))
     end do
   end function deck_line
+
+  !> The mechanism's name on a course sheet: the kind's title line without the program's
+  !> name and kind ("KINETOSTAT  PR 3207  СИЛОВОЙ РАСЧЕТ ..." -> "СИЛОВОЙ РАСЧЕТ ..."), in the
+  !> sheet's language.
+  pure function course_title(title) result(text)
+    !> The kind's title line (mechanism_t%title).
+    character(*), intent(in) :: title
+    character(len=:), allocatable :: text
+    character(*), parameter :: program = "KINETOSTAT  "
+    integer :: k
+    text = trim(title)
+    if (index(text, program) /= 1) return
+    k = index(text(len(program) + 1:), "  ")
+    if (k == 0) return
+    text = trim(adjustl(text(len(program) + k:)))
+  end function course_title
+
+  !> A course sheet's line under the mechanism's name: the deck's own title and the --set
+  !> changes of the run (the user's words, written plain), and no file: the sheet is handed
+  !> in, its data is the mechanism, not where it was kept ("механизм: TITLE;  изменения
+  !> данных: l_ab=0.12"); "" when the deck has neither.
+  pure function course_data_line(table, lang) result(line)
+    type(step_table_t), intent(in) :: table
+    !> lang_en or lang_ru.
+    integer, intent(in) :: lang
+    character(len=:), allocatable :: line
+    integer :: i
+    line = ""
+    if (allocated(table%subtitle)) then
+      if (len_trim(table%subtitle) > 0) line = in_language("mechanism: ", "механизм: ", lang)//trim(table%subtitle)
+    end if
+    if (.not. allocated(table%overrides)) return
+    if (size(table%overrides) == 0) return
+    if (len(line) > 0) line = line//";  "
+    line = line//in_language("data changed:", "изменения данных:", lang)
+    do i = 1, size(table%overrides)
+      line = line//" "//trim(table%overrides(i))
+    end do
+  end function course_data_line
 
   !> The frame of the sheet's paper and the title block in its lower right corner.
   pure subroutine put_sheet_format(sheet, block)

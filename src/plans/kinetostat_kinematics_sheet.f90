@@ -172,8 +172,9 @@ contains
     end if
     if (part_drawn == 2) then
       call sheet%open(page, lang, words("Plans of velocities and accelerations", &
-        "Планы скоростей и ускорений", lang)//" - "//table%deck, &
-        "kinetostat sheets: the second kinematics sheet ("//page%name//") of "//table%deck//": the mechanism in the "// &
+        "Планы скоростей и ускорений", lang)//", "//words("position", "положение", lang)//" "// &
+        int_str(table%run_row(k)), &
+        "kinetostat sheets: the second kinematics sheet ("//page%name//"): the mechanism in the "// &
         "position, the values there, the plans of velocities and "// &
         "accelerations and the values read off them.")
       call put_sheet_format(sheet, title_block_from_table(table, words("Plans of velocities and accelerations", &
@@ -183,7 +184,8 @@ contains
     else
       call sheet%open(page, lang, words("Structure and kinematics", &
         "Структурный и кинематический анализ", lang)// &
-        " - "//table%deck, "kinetostat sheets: the kinematics sheet of "//table%deck//": the mechanism at a position "// &
+        ", "//words("position", "положение", lang)//" "//int_str(table%run_row(k)), &
+        "kinetostat sheets: the kinematics sheet: the mechanism at a position "// &
         "with a trajectory, the structure, the output link's diagrams, the values at the position.")
       call put_sheet_format(sheet, title_block_from_table(table, words("Structure and kinematics of the mechanism", &
         "Структурный и кинематический анализ механизма", lang), view%drawing_scale%text))
@@ -247,10 +249,18 @@ contains
       y = region(4) + gap
       hmax = bottom - y
       ! (the values read off as high as they need at 1.8 mm, half the height at the most; the
-      ! plans the rest)
+      ! plans the rest; A3 landscape: in the left column from the frame's foot up, left of the
+      ! title block and higher where they need more, the plan of accelerations down to the
+      ! block's top)
       h_read = min(0.5_wp * hmax, values_table_height(plans, 2.0_wp * cw + gap, lang))
-      call draw_kinematic_plans(sheet, view, plans, [x1, y, x1 + cw, bottom - h_read - gap], &
-        [x2, y, x2 + cw, bottom - h_read - gap], [x1, bottom - h_read, x2 + cw, bottom], lang)
+      if (page%landscape) then
+        h_read = max(block_height - gap, min(0.5_wp * hmax, values_table_height(plans, cw, lang)))
+        call draw_kinematic_plans(sheet, view, plans, [x1, y, x1 + cw, inner(4) - gap - h_read - gap], &
+          [x2, y, x2 + cw, bottom], [x1, inner(4) - gap - h_read, x1 + cw, inner(4) - gap], lang)
+      else
+        call draw_kinematic_plans(sheet, view, plans, [x1, y, x1 + cw, bottom - h_read - gap], &
+          [x2, y, x2 + cw, bottom - h_read - gap], [x1, bottom - h_read, x2 + cw, bottom], lang)
+      end if
     else if (part_drawn == 2) then
       call put_values(x2, top, cw, region(4) - top)
     else if (present(plans)) then
@@ -423,7 +433,8 @@ contains
     !> The positions' numbers at the traced point and the crank pin (after every line and
     !> dot, so that they keep clear of them), and the foot: position 0's angle and the step.
     subroutine put_position_numbers()
-      integer :: cx, cy
+      integer :: cx, cy, cut
+      real(wp) :: size
       character(len=:), allocatable :: pin_name, foot
       pin_name = crank_pin()
       if (len(traced) > 0) then
@@ -442,8 +453,15 @@ contains
         foot = foot//", φ1 = "//fixed_number(modulo(positions%rows(positions%input_column, 1), 360.0_wp), 2)//" "// &
           unit_word("deg", lang)//words("; the positions every ", "; положения через ", lang)// &
           fixed_number(360.0_wp / real(n_positions, wp), 0)//" "//unit_word("deg", lang)
-        ! (smaller where the column is too narrow for it at 2.4 mm: A3)
-        if (fitted_size(foot, 2.4_wp, cw - 4.0_wp, 0.6_wp) < 2.4_wp) then
+        ! (smaller where the column is too narrow for it at 2.4 mm: A3; on two lines, broken
+        ! after the position's angle, where one would be smaller than 1.8 mm: A4)
+        cut = index(foot, "; ", back=.true.)
+        if (fitted_size(foot, 2.4_wp, cw - 4.0_wp, 0.6_wp) < 1.8_wp .and. cut > 0) then
+          size = min(2.4_wp, fitted_size(foot(:cut), 2.4_wp, cw - 4.0_wp, 0.6_wp), &
+            fitted_size(foot(cut + 2:), 2.4_wp, cw - 4.0_wp, 0.6_wp))
+          call sheet%text(region(1) + 2.0_wp, region(4) - 7.5_wp - 1.3_wp * size, foot(:cut), "small", size=size)
+          call sheet%text(region(1) + 2.0_wp, region(4) - 7.5_wp, foot(cut + 2:), "small", size=size)
+        else if (fitted_size(foot, 2.4_wp, cw - 4.0_wp, 0.6_wp) < 2.4_wp) then
           call sheet%text(region(1) + 2.0_wp, region(4) - 7.5_wp, foot, "small", size=fitted_size(foot, 2.4_wp, &
             cw - 4.0_wp, 0.6_wp))
         else
@@ -731,7 +749,7 @@ contains
       character(*), intent(in) :: title, curve_name
       !> Whether a diagram stands above it.
       logical, intent(in) :: below
-      if (below) y = y + q%height + 26.0_wp + gap
+      if (below) y = y + q%height + 26.0_wp + q%head + gap
       call put_cycle_chart(sheet, x2, y, cw, hmax, phi, mu_phi, values, unit_word(unit, lang), symbol, title, &
         "φ1, "//unit_word("deg", lang), lang, q)
       call put_cycle_curve(sheet, q, phi, values, "#1f77b4", "", curve_name)

@@ -32,7 +32,8 @@ module kinetostat_plans_draw
   use kinetostat_sheet, only: sheet_t, layer_text, layer_vplan, layer_aplan, layer_polygons, layer_lever, &
     layer_scales, layer_frame, layer_guides, anchor_start, anchor_end
   use kinetostat_label_place, only: outward_none, outward_leaders, outward_all
-  use kinetostat_title_block, only: put_sheet_format, title_block_from_table, header_indent, deck_line
+  use kinetostat_title_block, only: put_sheet_format, title_block_from_table, header_indent, deck_line, &
+    course_title, course_data_line
   use kinetostat_drawing, only: drawing_t, drawing_point_t, drawing_body_t, drawing_force_t, drawing_moment_t, &
     force_gravity, force_inertia, force_load, force_pair, point_pivot
   use kinetostat_mechanism_view, only: mechanism_view_t, fit_mechanism_view, draw_mechanism, force_colours, &
@@ -57,6 +58,8 @@ module kinetostat_plans_draw
     inner_colour = "#9467bd", balancing_colour = "#000000", arm_colour = "#888888"
   !> Pitch of the tables' rows, mm.
   real(wp), parameter :: pitch = 3.2_wp
+  !> The longest row of the values table, bytes.
+  integer, parameter :: value_length = 200
   !> Orders in which a plan's labels are placed: as given (the pole, the images, the
   !> components), reversed, the components first, the labels of the points farthest from the
   !> pole first, those nearest first.
@@ -98,14 +101,20 @@ contains
     real(wp), allocatable :: from(:, :)
     integer :: j
 
-    call sheet%open(geo%paper, lang, title//" - "//table%deck//" - plans, "//table%row_name//" "//int_str(table%run_row(k)), &
-      "kinetostat --format plans --at "//int_str(table%run_row(k))//" sheet of "//table%deck//": the mechanism, the plans of "// &
-      "velocities and accelerations in its frame, Zhukovsky's lever, the force polygons. The mechanism's group "// &
-      "gives its view (data-origin, data-scale, data-rotation); velocity images carry data-image, in sheet mm.")
     if (geo%groups_apart) then
-      ! the course's sheet 2: the force analysis (its plans are the kinematics sheet's)
+      ! the course's sheet 2: the force analysis (its plans are the kinematics sheet's); no
+      ! file named on it (course_data_line), the mechanism's name in the course's words
       line = word("Force analysis of the mechanism", lang)
+      call sheet%open(geo%paper, lang, line//", "//word("position", lang)//" "//int_str(table%run_row(k)), &
+        "kinetostat sheets: the kinetostatics sheet: the mechanism with its forces, Zhukovsky's lever, the force "// &
+        "polygons, each Assur group drawn apart. The mechanism's group gives its view (data-origin, data-scale, "// &
+        "data-rotation); velocity images carry data-image, in sheet mm.")
     else
+      call sheet%open(geo%paper, lang, title//" - "//table%deck//" - plans, "//table%row_name//" "// &
+        int_str(table%run_row(k)), "kinetostat --format plans --at "//int_str(table%run_row(k))//" sheet of "// &
+        table%deck//": the mechanism, the plans of velocities and accelerations in its frame, Zhukovsky's lever, "// &
+        "the force polygons. The mechanism's group gives its view (data-origin, data-scale, data-rotation); "// &
+        "velocity images carry data-image, in sheet mm.")
       line = word("Plans of velocities, accelerations, forces", lang)
     end if
     call put_sheet_format(sheet, title_block_from_table(table, line, geo%view%drawing_scale%text))
@@ -115,11 +124,14 @@ contains
 
     ! the header: the mechanism's title, the deck with its own title and the --set changes, the step
     call sheet%set_layer(layer_text)
-    call sheet%text(inner(1) + 3.0_wp, 11.0_wp, title, "title", size=fitted_size(title, 3.3_wp, inner(3) - inner(1) - &
+    line = title
+    if (geo%groups_apart) line = course_title(title)
+    call sheet%text(inner(1) + 3.0_wp, 11.0_wp, line, "title", size=fitted_size(line, 3.3_wp, inner(3) - inner(1) - &
       6.0_wp, 0.72_wp), plain=.true.)
     line = deck_line(table, lang)
-    call sheet%text(inner(1) + 3.0_wp, 16.5_wp, line, "subtitle", size=fitted_size(line, 3.0_wp, inner(3) - inner(1) - &
-      6.0_wp, 0.6_wp), plain=.true.)
+    if (geo%groups_apart) line = course_data_line(table, lang)
+    if (len(line) > 0) call sheet%text(inner(1) + 3.0_wp, 16.5_wp, line, "subtitle", &
+      size=fitted_size(line, 3.0_wp, inner(3) - inner(1) - 6.0_wp, 0.6_wp), plain=.true.)
     line = word(table%row_name, lang)//" "//int_str(table%run_row(k))//" "//word("of", lang)//" "//int_str(table%run_rows())
     if (table%input_column > 0) line = line//": "//table%columns(table%input_column)%name//" = "// &
       short_number(table%rows(table%input_column, k))//" "//unit_word(table%columns(table%input_column)%unit, lang)
@@ -1100,44 +1112,61 @@ contains
   end subroutine draw_input_link
 
   !> The values table: every entry "v_B = pb·μv = 10.0 m/s", "ω2 = v_CB/l_CB = 11.5 rad/s,
-  !> clockwise", in columns.
+  !> clockwise", in columns; an entry that would be smaller than 1.8 mm broken after its value
+  !> (its sense on the next row, indented), as the plans' notes are.
   pure subroutine values_table(sheet, box, plans, lang)
     type(sheet_t), intent(inout) :: sheet
     real(wp), intent(in) :: box(4)
     type(plans_t), intent(in) :: plans
     integer, intent(in) :: lang
-    character(len=:), allocatable :: text
+    character(len=value_length), allocatable :: lines(:)
+    logical, allocatable :: continued(:)
     real(wp) :: font, width, row_pitch
     integer :: i, rows, columns
+    logical :: broken
     if (.not. allocated(plans%values)) return
     if (size(plans%values) == 0) return
-    call values_layout(plans, box(3) - box(1), box(4) - box(2), lang, font, row_pitch, rows, columns)
+    call values_layout(plans, box(3) - box(1), box(4) - box(2), lang, font, row_pitch, rows, columns, broken)
     width = (box(3) - box(1) - 4.0_wp) / columns
-    do i = 1, size(plans%values)
-      text = value_text(plans%values(i), lang)
-      call sheet%text(box(1) + 2.0_wp + width * ((i - 1) / rows), box(2) + panel_head + 2.5_wp + row_pitch * &
-        modulo(i - 1, rows), text, "num", size=min(font, fitted_size(text, font, width - 1.5_wp, 0.6_wp)))
+    call value_lines(plans, lang, merge(width - 1.5_wp, 1.0e6_wp, broken), lines, continued)
+    do i = 1, size(lines)
+      call sheet%text(box(1) + 2.0_wp + merge(3.0_wp, 0.0_wp, continued(i)) + width * ((i - 1) / rows), &
+        box(2) + panel_head + 2.5_wp + row_pitch * modulo(i - 1, rows), trim(lines(i)), "num", &
+        size=min(font, fitted_size(trim(lines(i)), font, width - 1.5_wp - merge(3.0_wp, 0.0_wp, continued(i)), 0.6_wp)))
     end do
   end subroutine values_table
 
   !> The values table's layout in a panel `w` x `h` mm: its rows 3.2 mm apart at 2.2 mm, or
   !> 2.6 mm apart at 1.8 mm (ГОСТ 2.304's smallest) when that needs more than four columns
   !> or a line would be smaller than 1.8 mm; as many rows as the panel holds, the columns
-  !> they need.
-  pure subroutine values_layout(plans, w, h, lang, font, row_pitch, rows, columns)
+  !> they need; `broken` when even so a line would be smaller: then the entries too long
+  !> are broken after their value (value_lines) in the fewest columns that hold the rows.
+  pure subroutine values_layout(plans, w, h, lang, font, row_pitch, rows, columns, broken)
     type(plans_t), intent(in) :: plans
     real(wp), intent(in) :: w, h
     integer, intent(in) :: lang
     real(wp), intent(out) :: font, row_pitch
     integer, intent(out) :: rows, columns
-    integer :: attempt, n
+    logical, intent(out) :: broken
+    character(len=value_length), allocatable :: lines(:)
+    logical, allocatable :: continued(:)
+    integer :: attempt, n, c
     n = size(plans%values)
+    broken = .false.
     do attempt = 1, 2
       font = merge(2.2_wp, 1.8_wp, attempt == 1)
       row_pitch = merge(pitch, 2.6_wp, attempt == 1)
       rows = max(1, int((h - panel_head - 2.0_wp) / row_pitch))
       columns = (n + rows - 1) / rows
-      if (columns <= 4 .and. legible(columns)) exit
+      if (columns <= 4 .and. legible(columns)) return
+    end do
+    do c = 1, 4
+      call value_lines(plans, lang, (w - 4.0_wp) / c - 1.5_wp, lines, continued)
+      if ((size(lines) + rows - 1) / rows <= c) then
+        columns = c
+        broken = .true.
+        return
+      end if
     end do
   contains
     !> Whether every value's line is 1.8 mm or larger in `c` columns.
@@ -1153,13 +1182,42 @@ contains
     end function legible
   end subroutine values_layout
 
+  !> The values table's rows for columns `width` mm wide: each entry on one row, or, where it
+  !> would be smaller than 1.8 mm there, broken after its value: "ω1 = v_B/l_AB = 7.51 rad/s,"
+  !> and its sense on the next row (`continued`, written 3 mm in).
+  pure subroutine value_lines(plans, lang, width, lines, continued)
+    type(plans_t), intent(in) :: plans
+    integer, intent(in) :: lang
+    real(wp), intent(in) :: width
+    character(len=value_length), allocatable, intent(out) :: lines(:)
+    logical, allocatable, intent(out) :: continued(:)
+    character(len=:), allocatable :: text
+    integer :: i, cut
+    allocate (lines(0), continued(0))
+    do i = 1, size(plans%values)
+      text = value_text(plans%values(i), lang)
+      cut = 0
+      if (plans%values(i)%sense == "ccw" .or. plans%values(i)%sense == "cw") cut = index(text, ", ", back=.true.)
+      if (cut > 0 .and. fitted_size(text, 1.8_wp, width, 0.6_wp) < 1.8_wp) then
+        lines = [character(len=value_length) :: lines, text(:cut), text(cut + 2:)]
+        continued = [continued, .false., .true.]
+      else
+        lines = [character(len=value_length) :: lines, text]
+        continued = [continued, .false.]
+      end if
+    end do
+  end subroutine value_lines
+
   !> The least height of a values table's panel `w` mm wide that keeps every line 1.8 mm or
   !> larger (values_layout: rows 2.6 mm apart in as many columns, four at the most, as keep
-  !> them so), mm; 0 when there are no values.
+  !> them so; an entry broken after its value where even one column would not), mm; 0 when
+  !> there are no values.
   pure real(wp) function values_table_height(plans, w, lang) result(h)
     type(plans_t), intent(in) :: plans
     real(wp), intent(in) :: w
     integer, intent(in) :: lang
+    character(len=value_length), allocatable :: lines(:)
+    logical, allocatable :: continued(:)
     integer :: c, i, n
     logical :: fits
     h = 0.0_wp
@@ -1173,9 +1231,23 @@ contains
           fits = .false.
         end if
       end do
-      if (fits .or. c == 1) exit
+      if (fits) exit
     end do
-    h = panel_head + 2.0_wp + 2.6_wp * real((n + c - 1) / c, wp) + 1.5_wp
+    if (fits) then
+      h = panel_head + 2.0_wp + 2.6_wp * real((n + c - 1) / c, wp) + 1.5_wp
+      return
+    end if
+    ! (broken after the value in as many columns, four at the most, as keep the rows legible)
+    do c = 4, 1, -1
+      call value_lines(plans, lang, (w - 4.0_wp) / c - 1.5_wp, lines, continued)
+      fits = .true.
+      do i = 1, size(lines)
+        if (fitted_size(trim(lines(i)), 1.8_wp, (w - 4.0_wp) / c - 1.5_wp - merge(3.0_wp, 0.0_wp, continued(i)), &
+          0.6_wp) < 1.8_wp) fits = .false.
+      end do
+      if (fits) exit
+    end do
+    h = panel_head + 2.0_wp + 2.6_wp * real((size(lines) + max(c, 1) - 1) / max(c, 1), wp) + 1.5_wp
   end function values_table_height
 
   !> A value's line: its name, its formula, the value, its unit and its sense.

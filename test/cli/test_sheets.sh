@@ -138,7 +138,7 @@ PY
 for case in pr3207_flywheel_en pr3207_flywheel_ru class3_en; do
   svg="$cli_tmp/sheets_$case/kinetostatics.svg"
   deck=${case%_*}
-  step=$(sed -n 's/.*plans, [^<]* \([0-9][0-9]*\)<\/title>.*/\1/p' "$svg" | head -1)
+  step=$(sed -n 's/.*\(position\|положение\) \([0-9][0-9]*\)<\/title>.*/\2/p' "$svg" | head -1)
   "$KINETOSTAT" "data/$deck.nml" --format json --at "$step" --plans >"$cli_tmp/apart.json" 2>/dev/null
   verdict=$(sheets_moments "$svg" "$cli_tmp/apart.json")
   case "$verdict" in ok*) pass ;; *) fail "sheets-groups-apart-$case" "$verdict" ;; esac
@@ -699,3 +699,120 @@ print(t[:start] + re.sub(r'class="num"( style="font-size: [0-9.]+px")?', 'class=
 PY
 verdict=$(sheets_plans_fill 35 "$cli_tmp/fill_bad.svg")
 case "$verdict" in "differs: "*"values read off the plans at 1.4 mm"*) pass ;; *) fail sheets-plans-fill-must-fail-read "values read off at 1.4 mm passed: $verdict" ;; esac
+
+# No file on a course sheet: no deck path (no "data/", no ".nml") anywhere in an SVG (its
+# visible text, its <title> and <desc>, its attributes) or a DXF (its TEXT and its comments);
+# and on a Russian sheet no Latin word of three or more letters in the visible text (SVG
+# <text>, DXF TEXT) but these exceptions: the deck's own title (its `title = '...'`, the user's
+# words), the program's name "kinetostat" and Roman numerals (a group's class, III); a
+# sub- or superscript (l_AB) is a run of its own (these runs have no --set). Every offending text
+# printed. The sheets of the checks above (A1: PR 3207's flywheel deck in both languages, the
+# class-III deck in English, and here in Russian; A4, A3, A2 of PR 3207's flywheel deck and
+# A4 of the class-III deck; with --long the six-bar's and the &assur PR 3207 flywheel decks,
+# both languages).
+sheets_no_file() {  # DECK LANG FILE...: "ok N texts" or the offending texts
+  python3 - "$@" <<'PY'
+import re, sys
+import xml.etree.ElementTree as ET
+deck, lang, paths = sys.argv[1], sys.argv[2], sys.argv[3:]
+title = re.search(r"^\s*title\s*=\s*'([^']*)'", open(deck, encoding="utf-8").read(), re.M | re.I)
+title = title.group(1) if title else None
+bad, n = [], 0
+def visible(path):
+    src = open(path, encoding="utf-8").read()
+    if path.endswith(".svg"):
+        # a <text>'s runs apart (a sub- or superscript, l_AB, is a run of its own)
+        runs = lambda el: [el.text or ""] + [r for c in el.iter() if c is not el for r in (c.text or "", c.tail or "")]
+        return src, [runs(el) for el in ET.fromstring(src).iter("{http://www.w3.org/2000/svg}text")]
+    lines = src.split("\n")
+    texts, entity = [], None
+    for i in range(0, len(lines) - 1, 2):
+        code, value = lines[i].strip(), lines[i + 1]
+        if code == "0":
+            entity = value
+        elif code == "1" and entity == "TEXT":
+            texts.append([re.sub(r"\\U\+([0-9A-Fa-f]{4})", lambda m: chr(int(m.group(1), 16)), value)])
+    return src, texts
+for path in paths:
+    src, texts = visible(path)
+    n += len(texts)
+    for what in ("data/", ".nml"):
+        if what in src:
+            where = ["".join(t) for t in texts if what in "".join(t)] or [l.strip() for l in src.split("\n") if what in l]
+            bad.append(f"{path}: {what!r} in {where[0][:160]!r}")
+    if lang != "ru":
+        continue
+    for t in texts:
+        words = []
+        for run in t:
+            rest = run.replace(title, " ") if title else run
+            rest = re.sub(r"\bkinetostat\b", " ", rest)
+            words += [w for w in re.findall(r"[A-Za-z]{3,}", rest) if not re.fullmatch(r"[IVX]+", w)]
+        if words:
+            bad.append(f"{path}: Latin {', '.join(words)} in {''.join(t)[:160]!r}")
+if not n:
+    bad.append("no text read")
+print("differs: " + "\n  ".join(bad[:40]) if bad else f"ok {n} texts")
+PY
+}
+dir="$cli_tmp/sheets_class3_ru"
+if [ ! -s "$dir/kinematics.svg" ]; then
+  PATH="$(pdf_stand_in):$PATH" run_ks sheets data/class3.nml -o "$dir" --lang ru --student "Иванов И.И." --group МТ-301 --variant 7
+  [ "$rc" -eq 0 ] || fail sheets-no-file-run "exit $rc: $(head -c 300 "$err")"
+fi
+for spec in pr3207_flywheel:en:sheets_pr3207_flywheel_en pr3207_flywheel:ru:sheets_pr3207_flywheel_ru \
+  class3:en:sheets_class3_en class3:ru:sheets_class3_ru class3:en:sheets_a4_class3_en pr3207_flywheel:ru:sheets_a4_pr3207 \
+  pr3207_flywheel:en:sheets_A3_pr3207_flywheel_en pr3207_flywheel:ru:sheets_A2_pr3207_flywheel_ru \
+  sixbar_flywheel:en:sheets_sixbar_flywheel_en sixbar_flywheel:ru:sheets_sixbar_flywheel_ru \
+  assur_pr3207_flywheel:en:sheets_assur_pr3207_flywheel_en assur_pr3207_flywheel:ru:sheets_assur_pr3207_flywheel_ru; do
+  IFS=: read -r deck lang d <<<"$spec"
+  [ -d "$cli_tmp/$d" ] || continue
+  verdict=$(sheets_no_file "data/$deck.nml" "$lang" "$cli_tmp/$d"/*.svg "$cli_tmp/$d"/*.dxf)
+  case "$verdict" in ok*) pass ;; *) fail "sheets-no-file-$d" "$verdict" ;; esac
+done
+# must fail: a path in a DXF's TEXT, an English word on a Russian sheet
+sed 's|>Масштаб<|>Масштаб data/x.nml scale<|' "$cli_tmp/sheets_class3_ru/kinematics.svg" >"$cli_tmp/no_file_bad.svg"
+verdict=$(sheets_no_file data/class3.nml ru "$cli_tmp/no_file_bad.svg")
+case "$verdict" in *"'data/' in 'Масштаб data/x.nml scale'"*"Latin data, nml, scale in"*) pass ;; *) fail sheets-no-file-must-fail "a path and English words passed: $verdict" ;; esac
+
+# Legible on A4 and A3: no text of a course sheet smaller than 1.8 mm (the project's least
+# size, ГОСТ 2.304's smallest; a sub- or superscript's run aside: its text's size counts) -
+# a value's line too long for its column broken after the value, a chart's heading with its
+# scales on two lines, the plan of positions' foot on two; and A3's second kinematics sheet
+# uses the strip left of the title block (a panel reaching 45 mm down beside it: the values
+# read off the plans).
+# Every text too small printed.
+sheets_least_text() {  # SVG...: "ok SMALLEST" or the texts too small
+  python3 - "$root/tools" "$@" <<'PY'
+import re, sys
+sys.path.insert(0, sys.argv[1])
+import xml.etree.ElementTree as ET
+import svg_check as sc
+bad, least = [], 1e9
+for path in sys.argv[2:]:
+    src = open(path, encoding="utf-8").read()
+    sizes, _ = sc.style_sizes(src)
+    for el in ET.fromstring(src).iter(sc.SVG_NS + "text"):
+        size = sc.text_size(el, sizes)
+        least = min(least, size)
+        if size < 1.8 - 1e-9:
+            bad.append(f"{path}: {size} mm {''.join(el.itertext())[:100]!r}")
+print("differs: " + "\n  ".join(bad[:20]) if bad else f"ok {least}")
+PY
+}
+for d in sheets_a4_class3_en sheets_a4_pr3207 sheets_A3_pr3207_flywheel_en sheets_a4_class3_ru sheets_a4_sixbar_flywheel_en \
+  sheets_a4_sixbar_flywheel_ru sheets_a4_assur_pr3207_flywheel_en sheets_a4_assur_pr3207_flywheel_ru; do
+  [ -d "$cli_tmp/$d" ] || continue
+  verdict=$(sheets_least_text "$cli_tmp/$d"/*.svg)
+  case "$verdict" in ok*) pass ;; *) fail "sheets-least-text-$d" "$verdict" ;; esac
+done
+verdict=$(python3 - "$cli_tmp/sheets_A3_pr3207_flywheel_en/kinematics-2.svg" <<'PY'
+import re, sys
+t = open(sys.argv[1], encoding="utf-8").read()
+bx, by = (float(v) for v in re.search(r'<rect x="([0-9.]+)" y="([0-9.]+)" width="185.00" height="55.00"', t).groups())
+beside = [(x, y, w, h) for x, y, w, h in ((float(a) for a in m) for m in re.findall(
+    r'<rect x="([0-9.]+)" y="([0-9.]+)" width="([0-9.]+)" height="([0-9.]+)" class="panel"', t)) if y + h >= by + 45 and x + w <= bx]
+print(f"ok {beside[0][2]:.0f} x {beside[0][3]:.0f} mm" if beside else f"no panel left of the title block at x {bx} y {by}")
+PY
+)
+case "$verdict" in ok*) pass ;; *) fail sheets-A3-strip "$verdict" ;; esac
