@@ -307,7 +307,9 @@ contains
   end subroutine assur_step
 
   !> `step` as a fresh assur_step_t (every scalar at its default) with its pair arrays for
-  !> `np` pairs at zero, reusing arrays of that size it already has. (The scalars one by one:
+  !> `np` pairs, reusing arrays of that size it already has (zero when new; the solve sets
+  !> every entry but the crank pin's n and m, which stay 0; after an error they hold a
+  !> partial solve). (The scalars one by one:
   !> an assignment of a fresh assur_step_t would copy and free its arrays every step.)
   pure subroutine reset_step(step, np)
     !> The step.
@@ -337,12 +339,12 @@ contains
     if (allocated(step%m)) then
       if (size(step%m) /= np) deallocate (step%m)
     end if
-    if (.not. allocated(step%f)) allocate (step%f(2, np))
-    if (.not. allocated(step%n)) allocate (step%n(np))
-    if (.not. allocated(step%m)) allocate (step%m(np))
-    step%f = 0.0_wp
-    step%n = 0.0_wp
-    step%m = 0.0_wp
+    ! zero when allocated; reused arrays are not cleared again (three calls of memset a step):
+    ! the solve sets every pair force and every dyad pair's normal force and moment, and the
+    ! crank pin's normal force and moment are never set (they stay 0)
+    if (.not. allocated(step%f)) allocate (step%f(2, np), source=0.0_wp)
+    if (.not. allocated(step%n)) allocate (step%n(np), source=0.0_wp)
+    if (.not. allocated(step%m)) allocate (step%m(np), source=0.0_wp)
   end subroutine reset_step
 
   !> assur_step on its reset `step`, with the workspace in it: the frames `states` (links
@@ -364,7 +366,7 @@ contains
     type(link_balance_t), intent(out), optional :: balances(0:)
     type(point_state_t) :: ps
     real(wp) :: w2, a_s(2), eps, phi_f(2), gw(2), m_phi, dir(2)
-    real(wp) :: power, power_scale, term
+    real(wp) :: power, power_scale, term, f_ba(2)
     integer :: i, d, nd, k
 
     associate (states => step%work_states, poses => step%work_poses, known => step%work_known, &
@@ -462,8 +464,10 @@ contains
           call balance_add_force(known(pa), states(pa)%o, poses(d)%p(:, 2), step%f(:, pair_index(d, 2)), &
                                  f_len(pair_index(d, 2)))
           call balance_add_couple(known(pa), step%m(pair_index(d, 2)))
-          call balance_add_force(known(pb), states(pb)%o, poses(d)%p(:, 2), -step%f(:, pair_index(d, 2)), &
-                                 f_len(pair_index(d, 2)))
+          ! (the inner pair's force on b into a local pair first: the negated array section of
+          ! an allocatable would be a temporary on the heap every step)
+          f_ba = -step%f(:, pair_index(d, 2))
+          call balance_add_force(known(pb), states(pb)%o, poses(d)%p(:, 2), f_ba, f_len(pair_index(d, 2)))
           call balance_add_couple(known(pb), -step%m(pair_index(d, 2)))
           call balance_add_force(known(pb), states(pb)%o, poses(d)%p(:, 3), step%f(:, pair_index(d, 3)), &
                                  f_len(pair_index(d, 3)))

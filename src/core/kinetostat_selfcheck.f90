@@ -127,12 +127,14 @@ contains
     !> The loads of every link of the step.
     type(link_balance_t), intent(in) :: links(:)
     real(wp) :: residual
-    real(wp) :: floor_f, floor_m
+    real(wp) :: floor_f, floor_m, scale_f_max, lever_max, arm_max
     integer :: i
     residual = 0.0_wp
     if (size(links) == 0) return
-    floor_f = residual_floor_rel * maxval(links%scale_f)
-    floor_m = residual_floor_rel * load_moment_scale(links)
+    ! maxval(links%scale_f) and load_moment_scale(links) in one pass over the links
+    call largest_scales(links, scale_f_max, lever_max, arm_max)
+    floor_f = residual_floor_rel * scale_f_max
+    floor_m = residual_floor_rel * max(lever_max, scale_f_max * arm_max)
     do i = 1, size(links)
       residual = max(residual, ratio(fast_magnitude(links(i)%sum_f), max(links(i)%scale_f, floor_f)), &
                      ratio(abs(links(i)%sum_m), max(links(i)%scale_m, floor_m)))
@@ -150,13 +152,36 @@ contains
     !> pivot; 0 when not known).
     real(wp), intent(in), optional :: length
     real(wp) :: scale
-    real(wp) :: arm
+    real(wp) :: arm, scale_f_max, lever_max
     scale = 0.0_wp
     if (size(links) == 0) return
-    arm = maxval(links%arm_max)
+    call largest_scales(links, scale_f_max, lever_max, arm)
     if (present(length)) arm = max(arm, length)
-    scale = max(maxval(links%lever_m), maxval(links%scale_f) * arm)
+    scale = max(lever_max, scale_f_max * arm)
   end function load_moment_scale
+
+  !> maxval(links%scale_f), maxval(links%lever_m) and maxval(links%arm_max) in one pass
+  !> (as maxval takes them: a NaN is passed over unless every value is one).
+  pure subroutine largest_scales(links, scale_f_max, lever_max, arm_max)
+    !> The loads of every link of the step (at least one).
+    type(link_balance_t), intent(in) :: links(:)
+    !> The largest force sum, N, lever sum, N*m, and lever arm, m.
+    real(wp), intent(out) :: scale_f_max, lever_max, arm_max
+    integer :: i
+    scale_f_max = links(1)%scale_f
+    lever_max = links(1)%lever_m
+    arm_max = links(1)%arm_max
+    do i = 2, size(links)
+      if (links(i)%scale_f > scale_f_max .or. is_nan(scale_f_max)) scale_f_max = links(i)%scale_f
+      if (links(i)%lever_m > lever_max .or. is_nan(lever_max)) lever_max = links(i)%lever_m
+      if (links(i)%arm_max > arm_max .or. is_nan(arm_max)) arm_max = links(i)%arm_max
+    end do
+  contains
+    pure logical function is_nan(x)
+      real(wp), intent(in) :: x
+      is_nan = x /= x
+    end function is_nan
+  end subroutine largest_scales
 
   !> Relative mismatch of a driving moment (or force) `q` against its power-balance value
   !> `q_power`, scaled by `scale` = sum of the magnitudes of the power terms (>= |q_power|),

@@ -379,7 +379,8 @@ contains
       ! lines no longer than the candidate: one record; longer: several
       up_to = sum(line_count(1:min(candidate, tried)))
       cost = up_to + count(long_lines <= candidate)
-      do l = candidate + 1, tried
+      ! (no line is longer than `longest`: the counts beyond it are 0)
+      do l = candidate + 1, min(tried, longest)
         cost = cost + line_count(l) * ((l + candidate - 25) / (candidate - 24))
       end do
       do k = 1, size(long_lines)

@@ -115,9 +115,13 @@ contains
     else
       at = 0.0_wp
     end if
-    do k = 1, n
-      void(k) = table%is_void(k)
-    end do
+    if (allocated(table%void_flags)) then
+      do k = 1, n
+        void(k) = table%is_void(k)
+      end do
+    else
+      void = .false.
+    end if
     previous_at = table%run_tally%last_at
     last_d = 0.0_wp
     if (d > 0) last_d = table%run_tally%columns(d)%last
