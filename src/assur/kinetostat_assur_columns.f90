@@ -243,8 +243,9 @@ contains
   !> times the step's largest force (moments below that force times the crank's length
   !> scale) are roundoff: printed as 0 with angle 0; so are single components below that floor
   !> (a force along an axis gets exactly that axis' angle). Without `angles` (a run whose
-  !> output shows no angle) the angle cells are 0.
-  pure subroutine assur_row(deck, s, crank, turn, v, angles)
+  !> output shows no angle) the angle cells are 0. With `lengths`, every pair force's length
+  !> |F| as well (assur_kinematics_row's).
+  pure subroutine assur_row(deck, s, crank, turn, v, angles, lengths)
     !> Validated deck.
     type(assur_deck_t), intent(in) :: deck
     !> One step.
@@ -257,6 +258,8 @@ contains
     real(wp), intent(out) :: v(:)
     !> Whether the pair forces' angles are computed (default true).
     logical, intent(in), optional :: angles
+    !> Per pair: the length of its force, N.
+    real(wp), intent(out), optional :: lengths(:)
     real(wp) :: floor, f(2), mfloor, nn, mm, f_mag
     integer :: ip, np, pos
     logical :: with_angles
@@ -269,6 +272,7 @@ contains
     do ip = 1, np
       f_mag = magnitude(s%f(:, ip))
       v(pos + 1) = f_mag
+      if (present(lengths)) lengths(ip) = f_mag
       floor = max(floor, f_mag)
       pos = pos + 2
       if (deck%components) pos = pos + 2
@@ -369,22 +373,24 @@ contains
   !> velocity (rad/s) and acceleration (rad/s^2); the acceleration of every S, m/s^2; every
   !> pair force's components in the frame of its angle column and in the axes of the link it
   !> acts on, N, a force at or below the step's roundoff floor (noise_rel times its largest
-  !> pair force) and a component at or below it as 0. Each pair's length is taken once (the
-  !> turned force's own length decides nothing: a force whose turned length is at most the
-  !> floor has both components at most the floor).
-  pure subroutine assur_kinematics_row(deck, s, turn, slots, row)
+  !> pair force) and a component at or below it as 0. Each pair's length is the one assur_row
+  !> took (the turned force's own length decides nothing: a force whose turned length is at
+  !> most the floor has both components at most the floor).
+  pure subroutine assur_kinematics_row(deck, s, turn, f_len, slots, row)
     !> Validated deck.
     type(assur_deck_t), intent(in) :: deck
     !> One solved step (its work_states and work_poses set by its solve).
     type(assur_step_t), intent(in) :: s
     !> The pairs' turns into their frames (pair_turns).
     real(wp), intent(in) :: turn(:, :)
+    !> Per pair: the length of its force (assur_row's `lengths`), N.
+    real(wp), intent(in) :: f_len(:)
     !> Column of every value (0: not written).
     integer, intent(in) :: slots(:)
     !> The step's row of the table.
     real(wp), intent(inout) :: row(:)
     type(point_state_t) :: ps
-    real(wp) :: f_len(size(s%f, 2)), w2, floor, f(2), g(2), c, sn
+    real(wp) :: w2, floor, f(2), g(2), c, sn
     integer :: np, nl, i, ip, d, j, js, jl, ja
     np = size(s%f, 2)
     nl = ubound(s%work_states, 1)
@@ -420,7 +426,6 @@ contains
     j = ja
     floor = 0.0_wp
     do ip = 1, np
-      f_len(ip) = magnitude(s%f(:, ip))
       floor = max(floor, f_len(ip))
     end do
     floor = noise_rel * floor

@@ -284,7 +284,10 @@ contains
       type(friction_step_t) :: fs
       type(step_loads_t) :: loads
       type(error_t), allocatable :: step_error
+      !> The step's pair force lengths (assur_row's, for the kinematics row).
+      real(wp), allocatable :: lengths(:)
       integer :: kk, i
+      allocate (lengths(np))
       !$omp do schedule(dynamic, 64) reduction(min:first_bad)
       do kk = first, last
         i = kk - first + 1
@@ -302,14 +305,14 @@ contains
           first_bad = min(first_bad, kk)
           cycle
         end if
-        call assur_row(self%deck, step, crank, turn, table%rows(1:nv, i), table%force_angles_wanted)
+        call assur_row(self%deck, step, crank, turn, table%rows(1:nv, i), table%force_angles_wanted, lengths)
         if (self%deck%friction_on) then
           table%rows(nv + 1:nc, i) = friction_csv_values(self%deck, step, fs)
           fsteps(i) = fs
         end if
         residual(i) = step%residual
         mismatch(i) = step%mismatch
-        if (kinematics) call assur_kinematics_row(self%deck, step, turn, slots, table%rows(:, i))
+        if (kinematics) call assur_kinematics_row(self%deck, step, turn, lengths, slots, table%rows(:, i))
       end do
       !$omp end do
     end block

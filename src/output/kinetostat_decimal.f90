@@ -51,6 +51,10 @@ module kinetostat_decimal
   !> How far from a half the fraction of |x| * 10**s, computed in double precision, must lie
   !> for its rounding to be the exact one (its error is below 2**-10 where it is < 10**13).
   real(wp), parameter :: tie_margin = 2.0_wp**(-8)
+  !> The exponent part of a CSV cell whose decimal exponent is i (cell_digits_fast's range).
+  character(len=5), parameter :: exponent_texts(-12:12) = ["E-012", "E-011", "E-010", "E-009", "E-008", &
+    "E-007", "E-006", "E-005", "E-004", "E-003", "E-002", "E-001", "E+000", "E+001", "E+002", "E+003", &
+    "E+004", "E+005", "E+006", "E+007", "E+008", "E+009", "E+010", "E+011", "E+012"]
   !> Status of a field body: written.
   integer, parameter :: body_ok = 0
   !> Status of a field body: does not fit its width (the field is all '*').
@@ -641,7 +645,10 @@ contains
   !> multiplication, off the exact product by under 2**-10 (the product is below 10**13), so
   !> the nearest integer is the exact rounding unless the fraction lies within tie_margin of
   !> a half; then, and outside that range, `done` is false, nothing is written and the
-  !> exact 128-bit path decides. The 13 digits go straight into buf.
+  !> exact 128-bit path decides. The text goes straight into buf, without a branch on the
+  !> sign: the "-" is always stored and passed over for a negative x; the first digit and
+  !> the point, then four and eight digits each made at once in an integer's bytes
+  !> (four_digits, eight_digits) and stored whole, then the exponent from a table.
   pure subroutine cell_digits_fast(x, buf, pos, done)
     !> Finite value.
     real(wp), intent(in) :: x
@@ -653,9 +660,9 @@ contains
     logical, intent(out) :: done
     integer(int64), parameter :: ten13 = 10000000000000_int64, ten12 = 1000000000000_int64, &
       ten8 = 100000000_int64
-    integer(int64) :: bits, q, rest
-    real(wp) :: a, y, t, f
-    integer :: top, k, s, attempt, p, first, high, eight, h2, l4, a3
+    integer(int64) :: bits, q, high
+    real(wp) :: a, y, f
+    integer :: top, k, s, p, lead, four
     done = .false.
     bits = transfer(x, bits)
     if (bits == 0_int64) then          ! +0 (-0 keeps its sign: the exact path writes it)
@@ -665,59 +672,67 @@ contains
       return
     end if
     a = abs(x)
-    ! 2**top <= |x| < 2**(top + 1) for a normal x (0 and subnormals: not here)
     top = int(iand(shiftr(bits, 52), 2047_int64)) - 1023
     if (top < -34 .or. top > 36) return
     k = shifta(top * 78913, 18)        ! the decimal exponent, or one short of it
-    q = 0
-    do attempt = 1, 2
-      s = cell_decimals - k
-      if (s < 0 .or. s > max_exact_pow10) return
-      y = a * exact_pow10(s)
-      t = aint(y)
-      f = y - t                         ! exact
+    s = cell_decimals - k
+    if (s > max_exact_pow10) return
+    y = a * exact_pow10(s)             ! below 2 * 10**13
+    q = int(y, int64)                  ! y's whole part (exact: y < 2**53)
+    f = y - real(q, wp)                ! its fraction (exact)
+    if (abs(f - 0.5_wp) <= tie_margin) return
+    if (f > 0.5_wp) q = q + 1_int64
+    if (q >= ten13) then               ! |x| >= 10**(k+1), or it rounded up to it
+      k = k + 1
+      y = a * exact_pow10(s - 1)
+      q = int(y, int64)
+      f = y - real(q, wp)
       if (abs(f - 0.5_wp) <= tie_margin) return
-      q = int(t, int64)
-      if (f > 0.5_wp) q = q + 1
-      if (q < ten13) exit
-      k = k + 1                         ! |x| >= 10**(k+1), or it rounded up to it
-    end do
-    if (q >= ten13 .or. q < ten12) return
+      if (f > 0.5_wp) q = q + 1_int64
+      if (q >= ten13 .or. q < ten12) return
+    else if (q < ten12) then
+      return
+    end if
     p = pos
-    if (bits < 0) then
-      p = p + 1
-      buf(p:p) = "-"
-    end if
-    first = int(q / ten12)
-    rest = q - first * ten12
-    high = int(rest / ten8)            ! digits 2-5
-    eight = int(rest - high * ten8)    ! digits 6-13
-    buf(p + 1:p + 1) = achar(48 + first)
+    buf(p + 1:p + 1) = "-"
+    p = p + int(shiftr(bits, 63))      ! past the "-" of a negative x
+    high = q / ten8                    ! the first five digits
+    lead = int(high) / 10000
+    four = int(high) - 10000 * lead
+    buf(p + 1:p + 1) = achar(48 + lead)
     buf(p + 2:p + 2) = "."
-    h2 = high / 100
-    buf(p + 3:p + 4) = digit_pairs(2 * h2 + 1:2 * h2 + 2)
-    h2 = high - 100 * h2
-    buf(p + 5:p + 6) = digit_pairs(2 * h2 + 1:2 * h2 + 2)
-    l4 = eight / 10000
-    h2 = l4 / 100
-    buf(p + 7:p + 8) = digit_pairs(2 * h2 + 1:2 * h2 + 2)
-    h2 = l4 - 100 * h2
-    buf(p + 9:p + 10) = digit_pairs(2 * h2 + 1:2 * h2 + 2)
-    l4 = eight - 10000 * l4
-    h2 = l4 / 100
-    buf(p + 11:p + 12) = digit_pairs(2 * h2 + 1:2 * h2 + 2)
-    h2 = l4 - 100 * h2
-    buf(p + 13:p + 14) = digit_pairs(2 * h2 + 1:2 * h2 + 2)
-    if (k < 0) then
-      buf(p + 15:p + 17) = "E-0"
-    else
-      buf(p + 15:p + 17) = "E+0"
-    end if
-    a3 = abs(k)                         ! below 100 here
-    buf(p + 18:p + 19) = digit_pairs(2 * a3 + 1:2 * a3 + 2)
+    buf(p + 3:p + 6) = transfer(four_digits(four), "abcd")
+    buf(p + 7:p + 14) = transfer(eight_digits(q - high * ten8), "abcdefgh")
+    buf(p + 15:p + 19) = exponent_texts(k)
     pos = p + 19
     done = .true.
   end subroutine cell_digits_fast
+
+  !> The 8 decimal digits of 0 <= v < 10**8 as ASCII bytes of one integer, the first digit
+  !> in its lowest byte (so stored in this order on a little-endian machine): the halves,
+  !> the pairs and the digits each split in parallel in the integer's lanes, dividing by
+  !> multiplying (n * 10486 / 2**20 is n / 100 for n < 10**4, n * 103 / 2**10 is n / 10
+  !> for n < 100).
+  pure integer(int64) function eight_digits(v) result(w)
+    integer(int64), intent(in) :: v
+    integer(int64) :: merged, hundreds, pairs, tens
+    merged = v / 10000_int64
+    merged = merged + shiftl(v - 10000_int64 * merged, 32)
+    hundreds = iand(shiftr(merged * 10486_int64, 20), int(z'0000007F0000007F', int64))
+    pairs = hundreds + shiftl(merged - 100_int64 * hundreds, 16)
+    tens = iand(shiftr(pairs * 103_int64, 10), int(z'000F000F000F000F', int64))
+    w = tens + shiftl(pairs - 10_int64 * tens, 8) + int(z'3030303030303030', int64)
+  end function eight_digits
+
+  !> The 4 decimal digits of 0 <= v < 10**4 as ASCII bytes of one integer (as eight_digits).
+  pure integer function four_digits(v) result(w)
+    integer, intent(in) :: v
+    integer :: pairs, tens
+    pairs = shiftr(v * 10486, 20)
+    pairs = pairs + shiftl(v - 100 * pairs, 16)
+    tens = iand(shiftr(pairs * 103, 10), int(z'000F000F'))
+    w = tens + shiftl(pairs - 10 * tens, 8) + int(z'30303030')
+  end function four_digits
 
   !> Append the whole number q (any sign) to buf at pos+1.. (pos advanced), as I0 prints it.
   pure subroutine put_whole(q, buf, pos)

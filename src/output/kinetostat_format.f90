@@ -236,7 +236,11 @@ contains
     n = out%length
     do i = 1, size(columns)
       if (i > 1) then
-        out%data(n + 1:n + len(separator)) = separator
+        if (len(separator) == 1) then
+          out%data(n + 1:n + 1) = separator(1:1)   ! (a one-character store, not a copy call)
+        else
+          out%data(n + 1:n + len(separator)) = separator
+        end if
         n = n + len(separator)
       end if
       if (void_row) then

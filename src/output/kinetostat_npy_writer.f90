@@ -66,8 +66,12 @@ contains
       do k = 1, table%row_count()
         call put_npy_values(out, merge(nan, table%rows(columns, k) + 0.0_wp, voidable .and. table%is_void(k)))
       end do
+    else if (n == size(table%columns) .and. .not. allocated(table%void_flags)) then
+      ! every column, no void row: the block's rows lie in memory as the records do, copied
+      ! value by value (+0.0: minus zero as zero, as in the CSV)
+      call put_values(table%rows(:, 1:table%row_count()), out%data, out%length)
     else
-      ! each row's values straight into the buffer (+0.0: minus zero as zero, as in the CSV)
+      ! each row's values straight into the buffer
       do k = 1, table%row_count()
         if (table%is_void(k)) then
           call put_row(table%rows(:, k), columns, out%data, out%length, nan, voidable)
@@ -190,6 +194,26 @@ contains
       n = n + value_bytes
     end do
   end subroutine put_row
+
+  !> Append every value of `values` (in array element order) to buf at n+1.. (n advanced)
+  !> as float64 in the machine's byte order, minus zero as zero.
+  pure subroutine put_values(values, buf, n)
+    !> The values (records one after the other).
+    real(wp), intent(in) :: values(:, :)
+    !> Output bytes (room for 8 per value).
+    character(*), intent(inout) :: buf
+    !> Bytes in use.
+    integer, intent(inout) :: n
+    integer :: i, k, m
+    m = n
+    do k = 1, size(values, 2)
+      do i = 1, size(values, 1)
+        buf(m + 1:m + value_bytes) = transfer(values(i, k) + 0.0_wp, buf(1:value_bytes))
+        m = m + value_bytes
+      end do
+    end do
+    n = m
+  end subroutine put_values
 
   !> Whether this machine stores numbers least significant byte first.
   pure logical function host_little_endian()
