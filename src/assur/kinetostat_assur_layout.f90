@@ -93,7 +93,9 @@ contains
     !> The mechanism.
     class(mechanism_t), allocatable, intent(out) :: mech
     allocate (assur_mechanism_t :: mech)
-    call mech%describe(assur_template, title_en, title_ru, "")
+    call mech%describe(assur_template, title_en, title_ru, "", &
+      "Linkage of class-II Assur groups", &
+      "Механизм из групп Ассура II класса")
   end subroutine new_assur
 
   subroutine load_deck(self, source, error)

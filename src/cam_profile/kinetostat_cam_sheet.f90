@@ -31,7 +31,7 @@ module kinetostat_cam_sheet
   use kinetostat_sheet, only: sheet_t, paper_t, iso_paper, layer_links, layer_guides, layer_forces, layer_text, &
     layer_charts, layer_profile, layer_frame, anchor_middle
   use kinetostat_title_block, only: block_width, block_height
-  use kinetostat_design_sheet, only: words, open_design_sheet, chart_t, put_chart, put_angle, put_table, dot
+  use kinetostat_design_sheet, only: words, open_design_sheet, sheet_of, chart_t, put_chart, put_angle, put_table, dot
   use kinetostat_cam_profile, only: cam_design_t, cam_point_t, cam_sizes_t, cam_point, motion_at, cam_extremes, &
     segment_at, segment_limit, follower_flat, follower_roller, follower_oscillating
   implicit none
@@ -125,7 +125,7 @@ contains
       short_number(design%omega)//" "//unit_word("rad/s", lang)//"; "//words("follower at", "толкатель при", lang)// &
       " phi = "//fixed_number(table%rows(1, k), 1)//" "//unit_word("deg", lang)//"; "//words("scale", "масштаб", lang)// &
       " "//drawing_scale%text, &
-      "kinetostat sheet of "//table%deck//": the cam's motion diagrams and its profile at "//drawing_scale%text// &
+      sheet_of(table)//"the cam's motion diagrams and its profile at "//drawing_scale%text// &
       ". Group cam: sheet point = data-origin + data-scale * (x, -y), (x, y) in the cam frame (m), data-scale in "// &
       "mm per m; the path of class profile is the actual profile through data-subdivision points per output "// &
       "step, its vertex j * data-subdivision the CSV's row j + 1.")

@@ -24,7 +24,7 @@ module kinetostat_sheets
   use kinetostat_mechanism, only: mechanism_t
   use kinetostat_summary, only: column_stats_t, column_stats
   use kinetostat_run, only: run_options_t, block_rows, run_mechanism, format_summary, format_svg, format_dxf, format_plans, &
-    course_dynamics, course_none, course_kinematics, course_kinetostatics
+    course_dynamics, course_none, course_kinematics, course_kinetostatics, course_design
   use kinetostat_registry, only: create_mechanism, known_kinds
   use kinetostat_override, only: override_t
   use kinetostat_sketch, only: sketch_t
@@ -188,6 +188,7 @@ contains
         call add_file(trim(sheet_names(s))//".dxf")
       case (4:)
         ! a design's sheet (the gear pair, the planetary train, the cam; --at: the cam's position)
+        o%course_sheet = course_design
         o%format = format_svg
         call add_file(trim(sheet_names(s))//".svg")
         o%format = format_dxf

@@ -32,7 +32,7 @@ module kinetostat_gear_sheet
   use kinetostat_sheet, only: sheet_t, paper_t, iso_paper, layer_links, layer_guides, layer_forces, layer_text, &
     layer_scales, layer_charts, layer_frame, anchor_start, anchor_middle
   use kinetostat_title_block, only: block_width, block_height
-  use kinetostat_design_sheet, only: words, open_design_sheet, chart_t, put_chart, put_dimension, put_angle, &
+  use kinetostat_design_sheet, only: words, open_design_sheet, sheet_of, chart_t, put_chart, put_dimension, put_angle, &
     put_table, put_side_ticks, dot
   use kinetostat_gear_geometry, only: gear_pair_t, pair_geometry_t, contour_curve_t, pair_geometry, involute, &
     involute_flank, line_of_action, blocking_contour, contour_names, contour_lo, contour_hi, equal_sliding_x2
@@ -129,7 +129,7 @@ contains
       "z1 = "//int_str(p%z1)//", z2 = "//int_str(p%z2)//", m = "//short_number(p%m)//" "//unit_word("mm", lang)// &
       ", x1 = "//fixed_number(g%x(1), 4)//", x2 = "//fixed_number(g%x(2), 4)//"; "// &
       words("scale", "масштаб", lang)//" "//view%drawing_scale%text, &
-      "kinetostat sheet of "//table%deck//": the meshing drawing of the gear pair at "//view%drawing_scale%text// &
+      sheet_of(table)//"the meshing drawing of the gear pair at "//view%drawing_scale%text// &
       ", the blocking contour and the dimensions. Group meshing: sheet point = data-origin + data-scale * "// &
       "(q1, -q2), q = the pair's point (mm; O1 at the origin, O2 on +x) turned by data-rotation (deg); paths "// &
       "with data-flank = N are flanks of gear N, on involutes of its base circle.")

@@ -89,7 +89,9 @@ contains
     !> The mechanism.
     class(mechanism_t), allocatable, intent(out) :: mech
     allocate (linkage_mechanism_t :: mech)
-    call mech%describe(linkage_template, title_en, title_ru, "")
+    call mech%describe(linkage_template, title_en, title_ru, "", &
+      "Planar linkage of lower pairs", &
+      "Плоский механизм с низшими парами")
   end subroutine new_linkage
 
   subroutine load_deck(self, source, error)

@@ -13,12 +13,12 @@ module kinetostat_design_sheet
   use kinetostat_labels, only: word => label, words => in_language
   use kinetostat_typeset, only: typeset, runs_extent
   use kinetostat_sheet, only: sheet_t, paper_t, layer_text, anchor_start, anchor_middle, anchor_end
-  use kinetostat_title_block, only: put_sheet_format, title_block_from_table
+  use kinetostat_title_block, only: put_sheet_format, title_block_from_table, course_data_line
   use kinetostat_mechanism_sheet, only: fitted_size
   use kinetostat_run_sheet, only: put_axes, y_range
   implicit none
   private
-  public :: words, open_design_sheet, chart_t, put_chart, put_dimension, put_angle, put_table, put_side_ticks, &
+  public :: words, open_design_sheet, sheet_of, chart_t, put_chart, put_dimension, put_angle, put_table, put_side_ticks, &
     text_width, dot
 
   !> A chart of quantities against an abscissa, placed in a panel.
@@ -52,19 +52,40 @@ contains
     character(*), intent(in) :: description
     real(wp) :: inner(4), w
     character(len=:), allocatable :: deck_line
-    call sheet%open(paper, lang, drawing_name//" - "//table%deck, description)
+    ! (a course sheet's results come without their file: no path on the sheet)
+    if (len(table%deck) > 0) then
+      call sheet%open(paper, lang, drawing_name//" - "//table%deck, description)
+    else
+      call sheet%open(paper, lang, drawing_name, description)
+    end if
     call put_sheet_format(sheet, title_block_from_table(table, drawing_name, scale))
     inner = paper%inside()
     w = inner(3) - inner(1) - 10.0_wp
     call sheet%set_layer(layer_text)
     call sheet%text(inner(1) + 5.0_wp, 12.0_wp, heading, "title", size=fitted_size(heading, 3.3_wp, w, 0.8_wp))
-    deck_line = word("deck", lang)//": "//table%deck
-    if (allocated(table%subtitle)) deck_line = deck_line//"   "//table%subtitle
-    call sheet%text(inner(1) + 5.0_wp, 17.5_wp, deck_line, "subtitle", size=fitted_size(deck_line, 3.0_wp, w, 0.6_wp), &
-      plain=.true.)
+    if (len(table%deck) > 0) then
+      deck_line = word("deck", lang)//": "//table%deck
+      if (allocated(table%subtitle)) deck_line = deck_line//"   "//table%subtitle
+    else
+      deck_line = course_data_line(table, lang)
+    end if
+    if (len(deck_line) > 0) call sheet%text(inner(1) + 5.0_wp, 17.5_wp, deck_line, "subtitle", &
+      size=fitted_size(deck_line, 3.0_wp, w, 0.6_wp), plain=.true.)
     call sheet%text(inner(1) + 5.0_wp, 22.5_wp, line//"; "//version_string, "small", &
       size=fitted_size(line//"; "//version_string, 2.4_wp, w, 0.6_wp))
   end subroutine open_design_sheet
+
+  !> The start of a design sheet's description: "kinetostat sheet of DECK: ", or without
+  !> the file on a course sheet ("kinetostat sheet: ").
+  pure function sheet_of(table) result(text)
+    type(step_table_t), intent(in) :: table
+    character(len=:), allocatable :: text
+    if (len(table%deck) > 0) then
+      text = "kinetostat sheet of "//table%deck//": "
+    else
+      text = "kinetostat sheet: "
+    end if
+  end function sheet_of
 
   !> Width of `text` typeset on `sheet` at font size `size`, mm.
   pure real(wp) function text_width(sheet, text, size)

@@ -13,6 +13,7 @@ module kinetostat_mechanism
   use kinetostat_drawing, only: drawing_t
   use kinetostat_bodies, only: mass_model_t
   use kinetostat_sheet, only: sheet_t
+  use kinetostat_title_block, only: course_title
   implicit none
   private
   public :: mechanism_t
@@ -23,6 +24,9 @@ module kinetostat_mechanism
     character(len=:), allocatable :: title_en
     !> Title line of the legacy table, Russian (the 1991 printout's wording where known).
     character(len=:), allocatable :: title_ru
+    !> The mechanism's name on a course sheet, English and Russian ("Six-bar slotted-link
+    !> mechanism of a shaper"); unset: the title line without the program's name and kind.
+    character(len=:), allocatable :: name_en, name_ru
     !> The kind's commented template deck, as lines (set by the constructor, as the titles).
     character(len=:), allocatable :: template(:)
     !> Whether --format svg draws the sheet of force hodographs and diagrams (a design kind,
@@ -51,6 +55,8 @@ module kinetostat_mechanism
     procedure :: finish_run
     !> Title line of the legacy table in a language.
     procedure :: title
+    !> The mechanism's name on a course sheet in a language.
+    procedure :: course_name
     !> The RESULTS block of the legacy table for rows first..last of a block (put_results).
     procedure :: write_results
     !> The RESULTS block of the legacy table: header lines and the rows as the original laid them out.
@@ -113,7 +119,7 @@ module kinetostat_mechanism
 contains
 
   !> The kind's titles, template deck and design sheet (its constructor's one call).
-  pure subroutine describe(self, template, title_en, title_ru, sheet_name)
+  pure subroutine describe(self, template, title_en, title_ru, sheet_name, name_en, name_ru)
     class(mechanism_t), intent(inout) :: self
     !> The commented template deck, as lines.
     character(*), intent(in) :: template(:)
@@ -121,9 +127,14 @@ contains
     character(*), intent(in) :: title_en, title_ru
     !> The design sheet's stem ("": a kind whose sheet shows the forces over a cycle).
     character(*), intent(in) :: sheet_name
+    !> The mechanism's name on a course sheet, English and Russian (the subject of the
+    !> sheet, in the nominative: the title line names the analysis).
+    character(*), intent(in), optional :: name_en, name_ru
     self%template = template
     self%title_en = title_en
     self%title_ru = title_ru
+    if (present(name_en)) self%name_en = name_en
+    if (present(name_ru)) self%name_ru = name_ru
     self%force_sheet = len(sheet_name) == 0
     if (len(sheet_name) > 0) self%sheet_name = sheet_name
   end subroutine describe
@@ -176,6 +187,23 @@ contains
       text = self%title_en
     end if
   end function title
+
+  !> The mechanism's name on a course sheet in language `lang`: the kind's own name when its
+  !> constructor gave one, else the title line without the program's name and kind
+  !> (course_title).
+  pure function course_name(self, lang) result(text)
+    class(mechanism_t), intent(in) :: self
+    !> lang_en or lang_ru.
+    integer, intent(in) :: lang
+    character(len=:), allocatable :: text
+    if (lang == lang_ru .and. allocated(self%name_ru)) then
+      text = self%name_ru
+    else if (lang /= lang_ru .and. allocated(self%name_en)) then
+      text = self%name_en
+    else
+      text = course_title(self%title(lang))
+    end if
+  end function course_name
 
   !> The commented template deck of the kind (nothing when the constructor set none).
   pure subroutine write_template(self, out)

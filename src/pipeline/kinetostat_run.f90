@@ -50,10 +50,11 @@ module kinetostat_run
   public :: run_options_t, run_mechanism, guard_finite, progress_i, block_rows
   public :: format_table, format_csv, format_json, format_svg, format_summary, format_plans, format_dxf, &
     format_deck, format_npy, format_from_name, format_names, course_none, course_dynamics, &
-    course_kinematics, course_kinetostatics
+    course_kinematics, course_kinetostatics, course_design
 
   !> Course sheets (kinetostat sheets): none (the format's own drawing), the dynamics sheet.
-  integer, parameter :: course_none = 0, course_dynamics = 1, course_kinematics = 2, course_kinetostatics = 3
+  integer, parameter :: course_none = 0, course_dynamics = 1, course_kinematics = 2, course_kinetostatics = 3, &
+    course_design = 4
 
   !> Output format: the legacy fixed-format table.
   integer, parameter :: format_table = 1
@@ -390,17 +391,17 @@ contains
             if (allocated(error)) return
             call build_plans(motion_topo, course_drawing, table, k_at, course_plans)
             if (allocated(options%course_plan)) then
-              call draw_kinematics_sheet(mech%title(options%lang), table, motion_topo, course_drawing, k_at, &
+              call draw_kinematics_sheet(mech%course_name(options%lang), table, motion_topo, course_drawing, k_at, &
                 iso_paper(options%paper, .true.), options%lang, sheet, options%course_plan, options%course_every, &
                 options%course_positions, point_name(), options%course_output_link, course_plans, options%course_part)
             else
-              call draw_kinematics_sheet(mech%title(options%lang), table, motion_topo, course_drawing, k_at, &
+              call draw_kinematics_sheet(mech%course_name(options%lang), table, motion_topo, course_drawing, k_at, &
                 iso_paper(options%paper, .true.), options%lang, sheet, every=1, n_positions=options%course_positions, &
                 point_asked=point_name(), output_link=options%course_output_link, plans=course_plans, &
                 part=options%course_part)
             end if
           else if (options%course_sheet == course_dynamics) then
-            call draw_dynamics_sheet(mech%title(options%lang), table, iso_paper(options%paper, .true.), options%lang, &
+            call draw_dynamics_sheet(mech%course_name(options%lang), table, iso_paper(options%paper, .true.), options%lang, &
                                      sheet)
           else if (mech%force_sheet) then
             call write_run_sheet(mech%title(options%lang), table, pairs_asked, options%lang, sheet, error)
@@ -408,8 +409,13 @@ contains
             call fatal_error(error, exit_usage, "--at: "//table%deck//" is &"//group//", one "//table%row_name// &
               ": its sheet has no steps to choose")
           else
-            ! a design's sheet (the gear pair, the planetary train, the cam)
-            call mech%design_sheet(table, options%lang, options%at_step, sheet, error)
+            ! a design's sheet (the gear pair, the planetary train, the cam); on a course sheet
+            ! (kinetostat sheets) from the results without their file: the sheet names none
+            if (options%course_sheet == course_design) then
+              call mech%design_sheet(without_file(table), options%lang, options%at_step, sheet, error)
+            else
+              call mech%design_sheet(table, options%lang, options%at_step, sheet, error)
+            end if
           end if
           if (allocated(error)) return
           if (options%format == format_dxf) then
@@ -535,6 +541,15 @@ contains
     end subroutine check_text_room
   end subroutine run_mechanism
 
+  !> The results `table` without their file (a course sheet names none: what it shows is
+  !> the mechanism, not where its deck was kept); a design's results are one record.
+  pure function without_file(table) result(course)
+    type(step_table_t), intent(in) :: table
+    type(step_table_t) :: course
+    course = table
+    course%deck = ""
+  end function without_file
+
   !> The block just solved into the run's tally (table%run_tally), the one place where the
   !> blocks of a run meet: the figures the kind noted for the block (self-check maxima, drive
   !> deviation, peaks, integrals, flags: merge_tally) and per column the extremes, sums and
@@ -626,7 +641,12 @@ contains
         call write_plans_json(mech%title(options%lang), plans, plans_geometry, table, k, out)
         return
       end if
-      call draw_plans_sheet(mech%title(options%lang), table, k, drawing, plans, plans_geometry, options%lang, sheet)
+      if (options%course_sheet == course_kinetostatics) then
+        call draw_plans_sheet(mech%course_name(options%lang), table, k, drawing, plans, plans_geometry, options%lang, &
+          sheet)
+      else
+        call draw_plans_sheet(mech%title(options%lang), table, k, drawing, plans, plans_geometry, options%lang, sheet)
+      end if
     else
       call write_mechanism_sheet(mech%title(options%lang), table, k, drawing, options%lang, sheet)
     end if

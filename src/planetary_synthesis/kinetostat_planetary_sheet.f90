@@ -21,7 +21,7 @@ module kinetostat_planetary_sheet
   use kinetostat_sheet, only: sheet_t, paper_t, iso_paper, layer_links, layer_guides, layer_forces, layer_text, &
     layer_frame, layer_vplan, anchor_middle, anchor_start
   use kinetostat_title_block, only: block_width, block_height
-  use kinetostat_design_sheet, only: words, open_design_sheet, put_table, dot
+  use kinetostat_design_sheet, only: words, open_design_sheet, sheet_of, put_table, dot
   use kinetostat_planetary_synthesis, only: planetary_spec_t, planetary_train_t, train_conditions
   implicit none
   private
@@ -83,7 +83,7 @@ contains
         //short_number(spec%u), &
       "z_1 = "//int_str(z1)//", z_2 = "//int_str(z2)//", z_3 = "//int_str(z3)//", k = "//int_str(k)// &
       ", u_1H = "//fixed_number(t%u_actual, 4)//"; "//scale_line, &
-      "kinetostat sheet of "//table%deck//": the planetary train's kinematic scheme, its picture of linear "// &
+      sheet_of(table)//"the planetary train's kinematic scheme, its picture of linear "// &
       "speeds, its view along the axis and the conditions of its tooth numbers.")
 
     axis_y = 0.5_wp * (scheme(2) + scheme(4))

@@ -70,7 +70,9 @@ contains
     !> The mechanism.
     class(mechanism_t), allocatable, intent(out) :: mech
     allocate (pr3050_mechanism_t :: mech)
-    call mech%describe(pr3050_template, title_en, title_ru, "")
+    call mech%describe(pr3050_template, title_en, title_ru, "", &
+      "Four-bar with an oscillating hydraulic cylinder", &
+      "Четырехзвенный механизм с качающимся гидроцилиндром")
   end subroutine new_pr3050
 
   subroutine load_deck(self, source, error)

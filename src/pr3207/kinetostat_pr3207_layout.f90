@@ -55,7 +55,9 @@ contains
     !> The mechanism.
     class(mechanism_t), allocatable, intent(out) :: mech
     allocate (pr3207_mechanism_t :: mech)
-    call mech%describe(pr3207_template, title_en, title_ru, "")
+    call mech%describe(pr3207_template, title_en, title_ru, "", &
+      "Six-bar slotted-link mechanism of a shaper", &
+      "Шестизвенный кулисный механизм поперечно-строгального станка")
   end subroutine new_pr3207
 
   subroutine load_deck(self, source, error)

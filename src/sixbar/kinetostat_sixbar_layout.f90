@@ -71,7 +71,9 @@ contains
     !> The mechanism.
     class(mechanism_t), allocatable, intent(out) :: mech
     allocate (sixbar_mechanism_t :: mech)
-    call mech%describe(sixbar_template, title_en, title_ru, "")
+    call mech%describe(sixbar_template, title_en, title_ru, "", &
+      "Six-bar crank-rocker-slider mechanism", &
+      "Шестизвенный кривошипно-коромыслово-ползунный механизм")
   end subroutine new_sixbar
 
   subroutine load_deck(self, source, error)
