@@ -770,6 +770,15 @@ for spec in pr3207_flywheel:en:sheets_pr3207_flywheel_en pr3207_flywheel:ru:shee
   verdict=$(sheets_no_file "data/$deck.nml" "$lang" "$cli_tmp/$d"/*.svg "$cli_tmp/$d"/*.dxf)
   case "$verdict" in ok*) pass ;; *) fail "sheets-no-file-$d" "$verdict" ;; esac
 done
+# the design kinds' sheets made by kinetostat sheets name no file either (in Russian: the
+# gear pair, the planetary train, the cam)
+for deck in gear_geometry_shift planetary_synthesis cam_profile_roller; do
+  d="sheets_design_ru_$deck"
+  PATH="$(pdf_stand_in):$PATH" run_ks sheets "data/$deck.nml" -o "$cli_tmp/$d" --lang ru
+  [ "$rc" -eq 0 ] || { fail "sheets-no-file-$d" "exit $rc: $(head -c 300 "$err")"; continue; }
+  verdict=$(sheets_no_file "data/$deck.nml" ru "$cli_tmp/$d"/*.svg "$cli_tmp/$d"/*.dxf)
+  case "$verdict" in ok*) pass ;; *) fail "sheets-no-file-$d" "$verdict" ;; esac
+done
 # must fail: a path in a DXF's TEXT, an English word on a Russian sheet
 sed 's|>Масштаб<|>Масштаб data/x.nml scale<|' "$cli_tmp/sheets_class3_ru/kinematics.svg" >"$cli_tmp/no_file_bad.svg"
 verdict=$(sheets_no_file data/class3.nml ru "$cli_tmp/no_file_bad.svg")
