@@ -18,10 +18,10 @@ module kinetostat_linkage
   use kinetostat_error, only: error_t, fatal_error, exit_geometry
   use kinetostat_text, only: int_str
   use kinetostat_lapack, only: solve_dense, factor_dense, solve_factored, trsm_table, lu_solve_transposed
-  use kinetostat_vec2, only: perp, cross
+  use kinetostat_vec2, only: perp, cross, fast_magnitude
   use kinetostat_linkage_types, only: linkage_t, linkage_link_t, linkage_pair_t, linkage_drive_t, linkage_force_t, &
     linkage_unit_t, pair_r, pair_p
-  use kinetostat_linkage_closed, only: place_units, point_position
+  use kinetostat_linkage_closed, only: place_units, dyad_arms, point_position
   use kinetostat_linkage_constraints, only: linkage_rows, pair_row, drive_row, linkage_reference_pose, &
     link_point_state, set_turns, turned, position_cs, constraints, quadratic_terms
   use kinetostat_linkage_small, only: solve3, two_body_solve, small_factors_t, factor3, solve3_factored, dyad_factor, &
@@ -104,6 +104,9 @@ module kinetostat_linkage
     real(wp), allocatable :: f2(:, :), normal2(:), couple2(:), effort2(:)
     !> The generalised loads and the multipliers (rows).
     real(wp), allocatable :: gen(:), lam(:)
+    !> Each link's centre of mass and its acceleration (2 x n) as generalised_loads found
+    !> them (the self-check's equilibrium takes them from there).
+    real(wp), allocatable :: s_cm(:, :), a_cm(:, :)
     !> Each link's balance (the self-check).
     type(link_balance_t), allocatable :: bal(:)
     !> cos and sin of each link's turn (2 x 0:n, column 0 the frame's) in the poses of the
@@ -122,6 +125,8 @@ module kinetostat_linkage
     logical :: blocked = .false.
     !> Every unit is an input unit of one link or a dyad: the poses by closed forms.
     logical :: closed = .false.
+    !> The dyads' arms for the closed forms (kinetostat_linkage_closed's dyad_arms).
+    real(wp), allocatable :: arms(:, :)
     !> Each unit's order (3 x its links), columns of J and trsm_table (largest order x units).
     integer, allocatable :: unit_order(:), unit_cols(:, :), unit_trsm(:, :, :)
     !> Each unit's diagonal block of J, its LU factors and row interchanges (a unit solved in
@@ -144,6 +149,9 @@ module kinetostat_linkage
     !> take J from these (no dense J: its off-block products over the rows' two links only).
     integer, allocatable :: jl(:, :)
     real(wp), allocatable :: je(:, :, :)
+    !> The place of link jl(slot, r) among the links of the unit of row r (0: the frame, or
+    !> a link of a unit before).
+    integer, allocatable :: jl_place(:, :)
     !> Each link's rows of J in increasing order (link_row(1:link_deg(i), i)) and the slot
     !> (1, 2) of jl that names it.
     integer, allocatable :: link_row(:, :), link_slot(:, :), link_deg(:)
@@ -166,14 +174,15 @@ contains
                   work%dq0, work%zero_q, work%trsm)
       deallocate (work%fa, work%flu, work%fb, work%fipiv, work%load, work%cm, work%local, work%pair_known, &
                   work%drive_known, work%f2, work%normal2, work%couple2, work%effort2, work%gen, work%lam, work%bal, work%cs, &
-                  work%q_cs, work%rhs, work%unit_x, work%q_new)
+                  work%q_cs, work%rhs, work%unit_x, work%q_new, work%s_cm, work%a_cm)
       deallocate (work%jl, work%je, work%link_row, work%link_slot, work%link_deg)
     end if
     allocate (work%fa(nr, nr), work%flu(nr, nr), work%fb(nr), work%fipiv(nr), work%load(3, size(mech%links)), &
               work%cm(2, size(mech%links)), work%local(size(mech%links)), work%pair_known(size(mech%pairs)), &
               work%drive_known(size(mech%drives)), work%f2(2, size(mech%pairs)), work%normal2(size(mech%pairs)), &
               work%couple2(size(mech%pairs)), work%effort2(size(mech%drives)), work%gen(nr), work%lam(nr), &
-              work%bal(size(mech%links)), work%cs(2, 0:size(mech%links)), work%q_cs(3 * size(mech%links)))
+              work%bal(size(mech%links)), work%cs(2, 0:size(mech%links)), work%q_cs(3 * size(mech%links)), &
+              work%s_cm(2, size(mech%links)), work%a_cm(2, size(mech%links)))
     allocate (work%phi(nr), work%jac(nr, nr), work%q_jac(nr), work%lu(nr, nr), work%ipiv(nr), &
               work%v(nr, size(mech%drives)), work%jt(nr, nr), work%lut(nr, nr), work%ipivt(nr), work%dx(nr))
     allocate (work%dq0(size(mech%drives)), work%zero_q(nr), work%rhs(nr), work%unit_x(nr), &
@@ -266,12 +275,12 @@ contains
     type(linkage_t), intent(in) :: mech
     type(linkage_work_t), intent(inout) :: work
     integer, allocatable :: owner(:)
-    integer :: u, nu, mx, nr, i, k
+    integer :: u, nu, mx, nr, i, k, slot
     work%blocked = .false.
     work%closed = .false.
     if (allocated(work%unit_order)) deallocate (work%unit_order, work%unit_cols, work%unit_trsm, work%unit_block, &
                                                 work%unit_lu, work%unit_ipiv, work%unit_small, work%unit_fac, &
-                                                work%unit_dyad)
+                                                work%unit_dyad, work%arms, work%jl_place)
     if (.not. allocated(mech%units)) return
     nu = size(mech%units)
     if (nu == 0) return
@@ -302,6 +311,16 @@ contains
       work%unit_cols(1:k, u) = unit_columns(mech%units(u))
       work%unit_trsm(1:k, 1:k, u) = trsm_table(k)
       work%unit_dyad(:, u) = dyad_rows(mech, mech%units(u))
+    end do
+    work%arms = dyad_arms(mech)
+    allocate (work%jl_place(2, nr), source=0)
+    do u = 1, nu
+      do i = 1, size(mech%units(u)%rows)
+        k = mech%units(u)%rows(i)
+        do slot = 1, 2
+          if (work%jl(slot, k) > 0) work%jl_place(slot, k) = findloc(mech%units(u)%links, work%jl(slot, k), 1)
+        end do
+      end do
     end do
     work%blocked = .true.
     work%closed = all(mech%units%class == 2 .or. (mech%units%class == 1 .and. work%unit_order == 3))
@@ -362,8 +381,7 @@ contains
     do i = 1, k
       r = unit%rows(i)
       do slot = 1, 2
-        if (work%jl(slot, r) == 0) cycle
-        e = findloc(unit%links, work%jl(slot, r), 1)
+        e = work%jl_place(slot, r)
         if (e > 0) work%unit_block(i, 3 * e - 2:3 * e) = work%je(:, slot, r)
       end do
     end do
@@ -599,14 +617,20 @@ contains
     call work_ready(mech, work)
     if (work%closed) then
       m = substeps(mech, dq_from, dq)
+      ! (the turns' cos and sin go with the poses: place_units updates them as it places)
+      call work_turns(work, q)
+      work%has_cs = .false.
       work%q_new(:) = q
       placed = .true.
       do s = 1, m - 1
-        call place_units(mech, dq_from + (dq - dq_from) * (real(s, wp) / real(m, wp)), work%q_new, placed)
+        call place_units(mech, dq_from + (dq - dq_from) * (real(s, wp) / real(m, wp)), work%q_new, placed, work%cs, &
+                         work%arms)
         if (.not. placed) exit
       end do
-      if (placed) call place_units(mech, dq, work%q_new, placed)
+      if (placed) call place_units(mech, dq, work%q_new, placed, work%cs, work%arms)
       if (placed) then
+        work%q_cs(:) = work%q_new
+        work%has_cs = .true.
         call work_factored(mech, work%q_new, work, error)
         if (.not. allocated(error)) then
           q(:) = work%q_new
@@ -829,14 +853,14 @@ contains
     !> Workspace (J and its factors at the last poses).
     type(linkage_work_t), intent(inout) :: work
     type(error_t), allocatable, intent(out) :: error
-    real(wp) :: terms, power, s(2), vs(2), as(2), ref(2)
+    real(wp) :: terms, power, s(2), vs(2), as(2), ref(2), f_length
     integer :: n, k, d, i, r
     logical :: closed
     n = size(mech%links)
     call work_factored(mech, step%q, work, error)
     if (allocated(error)) return
     call work_turns(work, step%q)
-    call generalised_loads(mech, step%q, step%qd, step%qdd, fval, mval, work%gen, work%cs)
+    call generalised_loads(mech, step%q, step%qd, step%qdd, fval, mval, work%gen, work%cs, work%s_cm, work%a_cm)
     work%lam(:) = -work%gen
     if (work%blocked) then
       ! J^T is block triangular too: its units' blocks are J's, transposed
@@ -900,13 +924,15 @@ contains
       step%solver_gap = linkage_reaction_gap(mech, step, work%f2, work%normal2, work%couple2, work%effort2)
     end if
 
-    ! self-check 1: every link's equilibrium with the physical forces at their points
+    ! self-check 1: every link's equilibrium with the physical forces at their points (the
+    ! centres of mass and their accelerations of generalised_loads)
     call work_turns(work, step%q)
     work%bal(:) = link_balance_t()
     do i = 1, n
       ref = step%q(3 * i - 2:3 * i - 1)
       associate (lk => mech%links(i))
-        call link_point_state(mech, step%q, step%qd, step%qdd, i, lk%s, s, vs, as, work%cs)
+        s = work%s_cm(:, i)
+        as = work%a_cm(:, i)
         call balance_add_force(work%bal(i), ref, s, lk%m * mech%gravity)
         call balance_add_force(work%bal(i), ref, s, -lk%m * as)
         call balance_add_couple(work%bal(i), -lk%j * step%qdd(3 * i))
@@ -926,12 +952,15 @@ contains
         if (pr%kind == pair_r) then
           ! each link's own coordinates of the joint (they differ by Newton's residual, whose
           ! lever would otherwise show in the moments of a link whose loads all act there)
-          call add_on(work%bal, pr%a, position_cs(mech, step%q, work%cs, pr%a, pr%at), step%f(:, k), 0.0_wp)
-          call add_on(work%bal, pr%b, position_cs(mech, step%q, work%cs, pr%b, pr%at), -step%f(:, k), 0.0_wp)
+          ! (the force's length once for both links: |f| = |-f|)
+          f_length = fast_magnitude(step%f(:, k))
+          call add_on(work%bal, pr%a, position_cs(mech, step%q, work%cs, pr%a, pr%at), step%f(:, k), 0.0_wp, f_length)
+          call add_on(work%bal, pr%b, position_cs(mech, step%q, work%cs, pr%b, pr%at), -step%f(:, k), 0.0_wp, f_length)
         else
           s = position_cs(mech, step%q, work%cs, pr%a + pr%b - pr%guide, pr%at)
-          call add_on(work%bal, pr%a, s, step%f(:, k), step%couple(k))
-          call add_on(work%bal, pr%b, s, -step%f(:, k), -step%couple(k))
+          f_length = fast_magnitude(step%f(:, k))
+          call add_on(work%bal, pr%a, s, step%f(:, k), step%couple(k), f_length)
+          call add_on(work%bal, pr%b, s, -step%f(:, k), -step%couple(k), f_length)
         end if
       end associate
     end do
@@ -967,13 +996,15 @@ contains
       step%mismatch = max(step%mismatch, power_mismatch(step%effort(d), power, terms))
     end do
   contains
-    !> Adds force f at point p and couple c to link i's balance (nothing for the frame).
-    pure subroutine add_on(bal, i, p, f, c)
+    !> Adds force f at point p and couple c to link i's balance (nothing for the frame); f_len:
+    !> fast_magnitude(f) when the caller has it.
+    pure subroutine add_on(bal, i, p, f, c, f_len)
       type(link_balance_t), intent(inout) :: bal(:)
       integer, intent(in) :: i
       real(wp), intent(in) :: p(2), f(2), c
+      real(wp), intent(in), optional :: f_len
       if (i == 0) return
-      if (f(1) /= 0.0_wp .or. f(2) /= 0.0_wp) call balance_add_force(bal(i), step%q(3 * i - 2:3 * i - 1), p, f)
+      if (f(1) /= 0.0_wp .or. f(2) /= 0.0_wp) call balance_add_force(bal(i), step%q(3 * i - 2:3 * i - 1), p, f, f_len)
       if (c /= 0.0_wp) call balance_add_couple(bal(i), c)
     end subroutine add_on
     !> Direction of force fc in the step's pose.
@@ -1240,19 +1271,23 @@ contains
 
   !> Generalised applied loads Q (3 per link: force, moment about the reference point):
   !> external forces and moments, gravity, d'Alembert's inertia force and moment.
-  pure subroutine generalised_loads(mech, q, qd, qdd, fval, mval, gen, cs)
+  pure subroutine generalised_loads(mech, q, qd, qdd, fval, mval, gen, cs, s_cm, a_cm)
     type(linkage_t), intent(in) :: mech
     real(wp), intent(in) :: q(:), qd(:), qdd(:), fval(:), mval(:)
     !> Q (3n).
     real(wp), intent(out) :: gen(:)
     !> The turns of q (set_turns).
     real(wp), intent(in) :: cs(:, 0:)
+    !> Each link's centre of mass (m) and its acceleration (m/s^2), 2 x n.
+    real(wp), intent(out) :: s_cm(:, :), a_cm(:, :)
     real(wp) :: s(2), vs(2), as(2), f(2), w(2)
     integer :: i, k
     gen = 0.0_wp
     do i = 1, size(mech%links)
       associate (lk => mech%links(i))
         call link_point_state(mech, q, qd, qdd, i, lk%s, s, vs, as, cs)
+        s_cm(:, i) = s
+        a_cm(:, i) = as
         f = lk%m * (mech%gravity - as)
         call add_gen(gen, i, s, f)
         gen(3 * i) = gen(3 * i) - lk%j * qdd(3 * i)
