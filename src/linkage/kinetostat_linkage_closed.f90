@@ -10,7 +10,7 @@ module kinetostat_linkage_closed
   use kinetostat_linkage_types, only: linkage_t, pair_r
   implicit none
   private
-  public :: place_units, dyad_arms, point_position, turn_of
+  public :: place_units, dyad_arms, point_position, turn_of, turned, position_cs
   public :: circle_circle, circle_line, line_line, turn_through, turn_between, unwrap
 
   !> Two lines are taken as parallel (no closed form; Newton's method decides) when the sine
@@ -66,13 +66,13 @@ contains
         lk = mech%units(u)%links(1)
         kn = pr%a + pr%b - lk
         val = dq(d) - mech%drives(d)%q_ref
-        x = position_of(mech, q, cs, kn, pr%at)
+        x = position_cs(mech, q, cs, kn, pr%at)
         if (pr%kind == pair_r) then
           th = turn_of(q, kn) + merge(val, -val, lk == pr%a)
         else
           ! the block's point is the guide's moved by the stroke along the guide
           th = turn_of(q, kn)
-          w = turned_by(cs, kn, pr%u) * val
+          w = turned(cs, kn, pr%u) * val
           x = x + merge(-w, w, lk == pr%guide)
         end if
         call put_pose(mech, q, cs, lk, pr%at, x, th)
@@ -103,9 +103,9 @@ contains
     b = mech%pairs(inner)%at
     associate (p1 => mech%pairs(e(1)), p2 => mech%pairs(e(2)), pin => mech%pairs(inner))
       if (pin%kind == pair_r .and. p1%kind == pair_r .and. p2%kind == pair_r) then
-        a = position_of(mech, q, cs, p1%a + p1%b - set(1), p1%at)
-        c = position_of(mech, q, cs, p2%a + p2%b - set(2), p2%at)
-        call circle_circle(a, arms(1), c, arms(2), position_of(mech, q, cs, set(1), b), x, placed)
+        a = position_cs(mech, q, cs, p1%a + p1%b - set(1), p1%at)
+        c = position_cs(mech, q, cs, p2%a + p2%b - set(2), p2%at)
+        call circle_circle(a, arms(1), c, arms(2), position_cs(mech, q, cs, set(1), b), x, placed)
         if (.not. placed) return
         call put_pose(mech, q, cs, set(1), b, x, turn_from(x - a, arms(3), q(3 * set(1))))
         call put_pose(mech, q, cs, set(2), b, x, turn_from(x - c, arms(4), q(3 * set(2))))
@@ -116,9 +116,9 @@ contains
         lp = set(3 - j)
         kr = e(j)
         kpp = e(3 - j)
-        a = position_of(mech, q, cs, mech%pairs(kr)%a + mech%pairs(kr)%b - lr, mech%pairs(kr)%at)
+        a = position_cs(mech, q, cs, mech%pairs(kr)%a + mech%pairs(kr)%b - lr, mech%pairs(kr)%at)
         call slide_line(kpp, lp, b, th, n1, s1)
-        call circle_line(a, arms(j), n1, s1, position_of(mech, q, cs, lr, b), x, placed)
+        call circle_line(a, arms(j), n1, s1, position_cs(mech, q, cs, lr, b), x, placed)
         if (.not. placed) return
         call put_pose(mech, q, cs, lr, b, x, turn_from(x - a, arms(2 + j), q(3 * lr)))
         call put_pose(mech, q, cs, lp, b, x, th)
@@ -131,8 +131,8 @@ contains
         call put_pose(mech, q, cs, set(2), b, x, th2)
       else if (p1%kind == pair_r .and. p2%kind == pair_r) then
         ! one turn th for both: (perp(u) turned by th) . (c - a) = -perp(u) . (p1%at - p2%at)
-        a = position_of(mech, q, cs, p1%a + p1%b - set(1), p1%at)
-        c = position_of(mech, q, cs, p2%a + p2%b - set(2), p2%at)
+        a = position_cs(mech, q, cs, p1%a + p1%b - set(1), p1%at)
+        c = position_cs(mech, q, cs, p2%a + p2%b - set(2), p2%at)
         call turn_through(perp(pin%u), c - a, dot_product(perp(pin%u), p1%at - p2%at), q(3 * set(1)), th, placed)
         if (.not. placed) return
         call put_pose(mech, q, cs, set(1), p1%at, a, th)
@@ -145,11 +145,11 @@ contains
         kpp = e(3 - j)
         ! the turning link turns with the sliding one, whose turn is its outer guide's
         th = turn_of(q, mech%pairs(kpp)%a + mech%pairs(kpp)%b - lp)
-        a = position_of(mech, q, cs, mech%pairs(kr)%a + mech%pairs(kr)%b - lr, mech%pairs(kr)%at)
+        a = position_cs(mech, q, cs, mech%pairs(kr)%a + mech%pairs(kr)%b - lr, mech%pairs(kr)%at)
         call put_pose(mech, q, cs, lr, mech%pairs(kr)%at, a, th)
         ! the sliding link's point b: on the inner guide through lr's point b, and on the outer
-        n1 = perp(turned_by(cs, lr, pin%u))
-        s1 = dot_product(n1, position_of(mech, q, cs, lr, b))
+        n1 = perp(turned(cs, lr, pin%u))
+        s1 = dot_product(n1, position_cs(mech, q, cs, lr, b))
         call slide_line(kpp, lp, b, th, n2, s2)
         call line_line(n1, s1, n2, s2, x, placed)
         if (.not. placed) return
@@ -165,8 +165,8 @@ contains
       real(wp), intent(out) :: th, n(2), s
       associate (pr => mech%pairs(k))
         th = turn_of(q, pr%a + pr%b - lk)
-        n = perp(turned_by(cs, pr%a + pr%b - lk, pr%u))
-        s = dot_product(n, position_of(mech, q, cs, pr%a + pr%b - lk, pr%at) - turned_by(cs, pr%a + pr%b - lk, pr%at - p))
+        n = perp(turned(cs, pr%a + pr%b - lk, pr%u))
+        s = dot_product(n, position_cs(mech, q, cs, pr%a + pr%b - lk, pr%at) - turned(cs, pr%a + pr%b - lk, pr%at - p))
       end associate
     end subroutine slide_line
   end subroutine place_dyad
@@ -236,28 +236,33 @@ contains
     q(3 * i) = th
     cs(1, i) = cos(th)
     cs(2, i) = sin(th)
-    q(3 * i - 2:3 * i - 1) = x - turned_by(cs, i, p - mech%links(i)%c)
+    q(3 * i - 2:3 * i - 1) = x - turned(cs, i, p - mech%links(i)%c)
   end subroutine put_pose
 
-  !> v turned by link i's turn (0: the frame) as cs holds it: rotate(v, turn) bit for bit.
-  pure function turned_by(cs, i, v) result(w)
+  !> `v` turned by link i's turn (0: the frame) from set_turns (kinetostat_linkage_constraints)
+  !> or place_units: rotate(v, turn) bit for bit.
+  pure function turned(cs, i, v) result(w)
+    !> Turns from set_turns.
     real(wp), intent(in) :: cs(:, 0:)
+    !> Link index (0: frame).
     integer, intent(in) :: i
+    !> Vector to turn.
     real(wp), intent(in) :: v(2)
     real(wp) :: w(2)
     w = [cs(1, i) * v(1) - cs(2, i) * v(2), cs(2, i) * v(1) + cs(1, i) * v(2)]
-  end function turned_by
+  end function turned
 
-  !> point_position with the turns of cs.
-  pure function position_of(mech, q, cs, i, p) result(x)
+  !> point_position with the turns of set_turns.
+  pure function position_cs(mech, q, cs, i, p) result(x)
+    !> The linkage; link i (0: frame).
     type(linkage_t), intent(in) :: mech
-    real(wp), intent(in) :: q(:), cs(:, 0:)
     integer, intent(in) :: i
-    real(wp), intent(in) :: p(2)
+    !> Poses, their turns (set_turns) and the point at the reference position (m).
+    real(wp), intent(in) :: q(:), cs(:, 0:), p(2)
     real(wp) :: x(2)
     x = p
-    if (i > 0) x = q(3 * i - 2:3 * i - 1) + turned_by(cs, i, p - mech%links(i)%c)
-  end function position_of
+    if (i > 0) x = q(3 * i - 2:3 * i - 1) + turned(cs, i, p - mech%links(i)%c)
+  end function position_cs
 
   !> Position of point `p` (given at the reference position) of link `i` (0: frame) in pose q.
   pure function point_position(mech, q, i, p) result(x)

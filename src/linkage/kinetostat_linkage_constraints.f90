@@ -7,7 +7,7 @@ module kinetostat_linkage_constraints
   use kinetostat_kinds, only: wp
   use kinetostat_vec2, only: rotate, perp
   use kinetostat_linkage_types, only: linkage_t, linkage_pair_t, pair_r, pair_p
-  use kinetostat_linkage_closed, only: turn_of
+  use kinetostat_linkage_closed, only: turn_of, turned, position_cs
   implicit none
   private
   public :: linkage_rows, pair_row, drive_row, linkage_reference_pose, link_point_state, state_at
@@ -104,30 +104,6 @@ contains
       cs(2, i) = sin(q(3 * i))
     end do
   end subroutine set_turns
-
-  !> `v` turned by link i's turn (0: the frame) from set_turns: rotate(v, turn) bit for bit.
-  pure function turned(cs, i, v) result(w)
-    !> Turns from set_turns.
-    real(wp), intent(in) :: cs(:, 0:)
-    !> Link index (0: frame).
-    integer, intent(in) :: i
-    !> Vector to turn.
-    real(wp), intent(in) :: v(2)
-    real(wp) :: w(2)
-    w = [cs(1, i) * v(1) - cs(2, i) * v(2), cs(2, i) * v(1) + cs(1, i) * v(2)]
-  end function turned
-
-  !> point_position with the turns of set_turns.
-  pure function position_cs(mech, q, cs, i, p) result(x)
-    !> The linkage; link i (0: frame).
-    type(linkage_t), intent(in) :: mech
-    integer, intent(in) :: i
-    !> Poses, their turns (set_turns) and the point at the reference position (m).
-    real(wp), intent(in) :: q(:), cs(:, 0:), p(2)
-    real(wp) :: x(2)
-    x = p
-    if (i > 0) x = q(3 * i - 2:3 * i - 1) + turned(cs, i, p - mech%links(i)%c)
-  end function position_cs
 
   !> Lever of point p of link i from its reference point (0 for the frame), m, with the turns
   !> of set_turns.
