@@ -853,7 +853,7 @@ contains
     !> Workspace (J and its factors at the last poses).
     type(linkage_work_t), intent(inout) :: work
     type(error_t), allocatable, intent(out) :: error
-    real(wp) :: terms, power, s(2), vs(2), as(2), ref(2), f_length
+    real(wp) :: terms, power, s(2), vs(2), as(2), ref(2), f_length, fk(2)
     integer :: n, k, d, i, r
     logical :: closed
     n = size(mech%links)
@@ -953,14 +953,17 @@ contains
           ! each link's own coordinates of the joint (they differ by Newton's residual, whose
           ! lever would otherwise show in the moments of a link whose loads all act there)
           ! (the force's length once for both links: |f| = |-f|)
-          f_length = fast_magnitude(step%f(:, k))
-          call add_on(work%bal, pr%a, position_cs(mech, step%q, work%cs, pr%a, pr%at), step%f(:, k), 0.0_wp, f_length)
-          call add_on(work%bal, pr%b, position_cs(mech, step%q, work%cs, pr%b, pr%at), -step%f(:, k), 0.0_wp, f_length)
+          ! (fk: a copy of fixed size, so that -fk takes no temporary array from the heap)
+          fk = step%f(:, k)
+          f_length = fast_magnitude(fk)
+          call add_on(work%bal, pr%a, position_cs(mech, step%q, work%cs, pr%a, pr%at), fk, 0.0_wp, f_length)
+          call add_on(work%bal, pr%b, position_cs(mech, step%q, work%cs, pr%b, pr%at), -fk, 0.0_wp, f_length)
         else
           s = position_cs(mech, step%q, work%cs, pr%a + pr%b - pr%guide, pr%at)
-          f_length = fast_magnitude(step%f(:, k))
-          call add_on(work%bal, pr%a, s, step%f(:, k), step%couple(k), f_length)
-          call add_on(work%bal, pr%b, s, -step%f(:, k), -step%couple(k), f_length)
+          fk = step%f(:, k)
+          f_length = fast_magnitude(fk)
+          call add_on(work%bal, pr%a, s, fk, step%couple(k), f_length)
+          call add_on(work%bal, pr%b, s, -fk, -step%couple(k), f_length)
         end if
       end associate
     end do

@@ -140,7 +140,7 @@ contains
     real(wp), intent(inout) :: je(:, :, :)
     !> The turns of q (set_turns).
     real(wp), intent(in) :: cs(:, 0:)
-    real(wp) :: ra(2), rb(2), delta(2), n(2), u(2)
+    real(wp) :: ra(2), rb(2), delta(2), n(2), u(2), xa(2), xb(2)
     integer :: k, r, a, b, blk, gd, d
     phi = 0.0_wp
     do k = 1, size(mech%pairs)
@@ -150,7 +150,11 @@ contains
           a = pr%a; b = pr%b
           ra = lever_cs(mech, cs, a, pr%at)
           rb = lever_cs(mech, cs, b, pr%at)
-          phi(r:r + 1) = position_cs(mech, q, cs, a, pr%at) - position_cs(mech, q, cs, b, pr%at)
+          ! (through fixed-size locals: no temporary array from the heap)
+          xa = position_cs(mech, q, cs, a, pr%at)
+          xb = position_cs(mech, q, cs, b, pr%at)
+          phi(r) = xa(1) - xb(1)
+          phi(r + 1) = xa(2) - xb(2)
           call put_j(je, r, 1, [1.0_wp, 0.0_wp, -ra(2)])
           call put_j(je, r + 1, 1, [0.0_wp, 1.0_wp, ra(1)])
           call put_j(je, r, 2, [-1.0_wp, 0.0_wp, rb(2)])
