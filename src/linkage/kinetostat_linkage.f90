@@ -18,10 +18,12 @@ module kinetostat_linkage
   use kinetostat_error, only: error_t, fatal_error, exit_geometry
   use kinetostat_text, only: int_str
   use kinetostat_lapack, only: solve_dense, factor_dense, solve_factored, trsm_table, lu_solve_transposed
-  use kinetostat_vec2, only: rotate, perp, cross, magnitude
+  use kinetostat_vec2, only: perp, cross, fast_magnitude
   use kinetostat_linkage_types, only: linkage_t, linkage_link_t, linkage_pair_t, linkage_drive_t, linkage_force_t, &
     linkage_unit_t, pair_r, pair_p
-  use kinetostat_linkage_closed, only: place_units, point_position, turn_of
+  use kinetostat_linkage_closed, only: place_units, dyad_arms, point_position
+  use kinetostat_linkage_constraints, only: linkage_rows, pair_row, drive_row, linkage_reference_pose, &
+    link_point_state, set_turns, turned, position_cs, constraints, quadratic_terms
   use kinetostat_linkage_small, only: solve3, two_body_solve, small_factors_t, factor3, solve3_factored, dyad_factor, &
     dyad_solve, dyad_solve_transposed
   use kinetostat_selfcheck, only: link_balance_t, balance_add_force, balance_add_couple, equilibrium_residual, &
@@ -102,6 +104,9 @@ module kinetostat_linkage
     real(wp), allocatable :: f2(:, :), normal2(:), couple2(:), effort2(:)
     !> The generalised loads and the multipliers (rows).
     real(wp), allocatable :: gen(:), lam(:)
+    !> Each link's centre of mass and its acceleration (2 x n) as generalised_loads found
+    !> them (the self-check's equilibrium takes them from there).
+    real(wp), allocatable :: s_cm(:, :), a_cm(:, :)
     !> Each link's balance (the self-check).
     type(link_balance_t), allocatable :: bal(:)
     !> cos and sin of each link's turn (2 x 0:n, column 0 the frame's) in the poses of the
@@ -120,6 +125,8 @@ module kinetostat_linkage
     logical :: blocked = .false.
     !> Every unit is an input unit of one link or a dyad: the poses by closed forms.
     logical :: closed = .false.
+    !> The dyads' arms for the closed forms (kinetostat_linkage_closed's dyad_arms).
+    real(wp), allocatable :: arms(:, :)
     !> Each unit's order (3 x its links), columns of J and trsm_table (largest order x units).
     integer, allocatable :: unit_order(:), unit_cols(:, :), unit_trsm(:, :, :)
     !> Each unit's diagonal block of J, its LU factors and row interchanges (a unit solved in
@@ -142,6 +149,9 @@ module kinetostat_linkage
     !> take J from these (no dense J: its off-block products over the rows' two links only).
     integer, allocatable :: jl(:, :)
     real(wp), allocatable :: je(:, :, :)
+    !> The place of link jl(slot, r) among the links of the unit of row r (0: the frame, or
+    !> a link of a unit before).
+    integer, allocatable :: jl_place(:, :)
     !> Each link's rows of J in increasing order (link_row(1:link_deg(i), i)) and the slot
     !> (1, 2) of jl that names it.
     integer, allocatable :: link_row(:, :), link_slot(:, :), link_deg(:)
@@ -164,14 +174,15 @@ contains
                   work%dq0, work%zero_q, work%trsm)
       deallocate (work%fa, work%flu, work%fb, work%fipiv, work%load, work%cm, work%local, work%pair_known, &
                   work%drive_known, work%f2, work%normal2, work%couple2, work%effort2, work%gen, work%lam, work%bal, work%cs, &
-                  work%q_cs, work%rhs, work%unit_x, work%q_new)
+                  work%q_cs, work%rhs, work%unit_x, work%q_new, work%s_cm, work%a_cm)
       deallocate (work%jl, work%je, work%link_row, work%link_slot, work%link_deg)
     end if
     allocate (work%fa(nr, nr), work%flu(nr, nr), work%fb(nr), work%fipiv(nr), work%load(3, size(mech%links)), &
               work%cm(2, size(mech%links)), work%local(size(mech%links)), work%pair_known(size(mech%pairs)), &
               work%drive_known(size(mech%drives)), work%f2(2, size(mech%pairs)), work%normal2(size(mech%pairs)), &
               work%couple2(size(mech%pairs)), work%effort2(size(mech%drives)), work%gen(nr), work%lam(nr), &
-              work%bal(size(mech%links)), work%cs(2, 0:size(mech%links)), work%q_cs(3 * size(mech%links)))
+              work%bal(size(mech%links)), work%cs(2, 0:size(mech%links)), work%q_cs(3 * size(mech%links)), &
+              work%s_cm(2, size(mech%links)), work%a_cm(2, size(mech%links)))
     allocate (work%phi(nr), work%jac(nr, nr), work%q_jac(nr), work%lu(nr, nr), work%ipiv(nr), &
               work%v(nr, size(mech%drives)), work%jt(nr, nr), work%lut(nr, nr), work%ipivt(nr), work%dx(nr))
     allocate (work%dq0(size(mech%drives)), work%zero_q(nr), work%rhs(nr), work%unit_x(nr), &
@@ -264,12 +275,12 @@ contains
     type(linkage_t), intent(in) :: mech
     type(linkage_work_t), intent(inout) :: work
     integer, allocatable :: owner(:)
-    integer :: u, nu, mx, nr, i, k
+    integer :: u, nu, mx, nr, i, k, slot
     work%blocked = .false.
     work%closed = .false.
     if (allocated(work%unit_order)) deallocate (work%unit_order, work%unit_cols, work%unit_trsm, work%unit_block, &
                                                 work%unit_lu, work%unit_ipiv, work%unit_small, work%unit_fac, &
-                                                work%unit_dyad)
+                                                work%unit_dyad, work%arms, work%jl_place)
     if (.not. allocated(mech%units)) return
     nu = size(mech%units)
     if (nu == 0) return
@@ -300,6 +311,16 @@ contains
       work%unit_cols(1:k, u) = unit_columns(mech%units(u))
       work%unit_trsm(1:k, 1:k, u) = trsm_table(k)
       work%unit_dyad(:, u) = dyad_rows(mech, mech%units(u))
+    end do
+    work%arms = dyad_arms(mech)
+    allocate (work%jl_place(2, nr), source=0)
+    do u = 1, nu
+      do i = 1, size(mech%units(u)%rows)
+        k = mech%units(u)%rows(i)
+        do slot = 1, 2
+          if (work%jl(slot, k) > 0) work%jl_place(slot, k) = findloc(mech%units(u)%links, work%jl(slot, k), 1)
+        end do
+      end do
     end do
     work%blocked = .true.
     work%closed = all(mech%units%class == 2 .or. (mech%units%class == 1 .and. work%unit_order == 3))
@@ -360,8 +381,7 @@ contains
     do i = 1, k
       r = unit%rows(i)
       do slot = 1, 2
-        if (work%jl(slot, r) == 0) cycle
-        e = findloc(unit%links, work%jl(slot, r), 1)
+        e = work%jl_place(slot, r)
         if (e > 0) work%unit_block(i, 3 * e - 2:3 * e) = work%je(:, slot, r)
       end do
     end do
@@ -561,96 +581,6 @@ contains
     work%factored = .true.
   end subroutine work_factored
 
-  !> Number of constraint rows (2 per pair, 1 per drive).
-  pure integer function linkage_rows(mech)
-    !> The linkage.
-    type(linkage_t), intent(in) :: mech
-    linkage_rows = 2 * size(mech%pairs) + size(mech%drives)
-  end function linkage_rows
-
-  !> First row of pair `k`.
-  pure integer function pair_row(k)
-    !> Pair number.
-    integer, intent(in) :: k
-    pair_row = 2 * k - 1
-  end function pair_row
-
-  !> Row of drive `d`.
-  pure integer function drive_row(mech, d)
-    !> The linkage.
-    type(linkage_t), intent(in) :: mech
-    !> Drive number.
-    integer, intent(in) :: d
-    drive_row = 2 * size(mech%pairs) + d
-  end function drive_row
-
-  !> The poses of the reference position (every link at its reference point, turned by 0).
-  pure function linkage_reference_pose(mech) result(q)
-    !> The linkage.
-    type(linkage_t), intent(in) :: mech
-    real(wp), allocatable :: q(:)
-    integer :: i
-    allocate (q(3 * size(mech%links)))
-    do i = 1, size(mech%links)
-      q(3 * i - 2:3 * i) = [mech%links(i)%c(1), mech%links(i)%c(2), 0.0_wp]
-    end do
-  end function linkage_reference_pose
-
-  !> Position, velocity and acceleration of point `p` (reference position) of link `i`.
-  pure subroutine link_point_state(mech, q, qd, qdd, i, p, x, v, a, cs)
-    !> The linkage.
-    type(linkage_t), intent(in) :: mech
-    !> Poses and their derivatives.
-    real(wp), intent(in) :: q(:), qd(:), qdd(:)
-    !> Link index (0: frame).
-    integer, intent(in) :: i
-    !> The point at the reference position, m.
-    real(wp), intent(in) :: p(2)
-    !> Position (m), velocity (m/s), acceleration (m/s^2).
-    real(wp), intent(out) :: x(2), v(2), a(2)
-    !> The turns of q (set_turns), when the caller has them.
-    real(wp), intent(in), optional :: cs(:, 0:)
-    if (i == 0) then
-      x = p; v = 0.0_wp; a = 0.0_wp
-    else if (present(cs)) then
-      call state_at(q, qd, qdd, i, turned(cs, i, p - mech%links(i)%c), x, v, a)
-    else
-      call state_at(q, qd, qdd, i, rotate(p - mech%links(i)%c, q(3 * i)), x, v, a)
-    end if
-  end subroutine link_point_state
-
-  !> Position, velocity and acceleration of the point of moving link `i` at `r` (m) from its
-  !> origin, turned with the link.
-  pure subroutine state_at(q, qd, qdd, i, r, x, v, a)
-    !> Poses and their derivatives.
-    real(wp), intent(in) :: q(:), qd(:), qdd(:)
-    !> Link index (> 0).
-    integer, intent(in) :: i
-    !> The point from the link's origin in the global frame, m.
-    real(wp), intent(in) :: r(2)
-    !> Position (m), velocity (m/s), acceleration (m/s^2).
-    real(wp), intent(out) :: x(2), v(2), a(2)
-    x = q(3 * i - 2:3 * i - 1) + r
-    v = qd(3 * i - 2:3 * i - 1) + qd(3 * i) * perp(r)
-    a = qdd(3 * i - 2:3 * i - 1) + qdd(3 * i) * perp(r) - qd(3 * i)**2 * r
-  end subroutine state_at
-
-  !> cos and sin of every link's turn in poses q (column 0: the frame's, of a turn 0): with
-  !> `turned`, rotate's arithmetic without a cos and a sin per call.
-  pure subroutine set_turns(q, cs)
-    !> Poses (3n).
-    real(wp), intent(in) :: q(:)
-    !> cos and sin of each link's turn (2 x 0:n).
-    real(wp), intent(out) :: cs(:, 0:)
-    integer :: i
-    cs(1, 0) = cos(0.0_wp)
-    cs(2, 0) = sin(0.0_wp)
-    do i = 1, size(q) / 3
-      cs(1, i) = cos(q(3 * i))
-      cs(2, i) = sin(q(3 * i))
-    end do
-  end subroutine set_turns
-
   !> work%cs: the turns of poses q (set_turns), unless it holds them.
   pure subroutine work_turns(work, q)
     type(linkage_work_t), intent(inout) :: work
@@ -662,178 +592,6 @@ contains
     work%q_cs(:) = q
     work%has_cs = .true.
   end subroutine work_turns
-
-  !> `v` turned by link i's turn (0: the frame) from set_turns: rotate(v, turn) bit for bit.
-  pure function turned(cs, i, v) result(w)
-    !> Turns from set_turns.
-    real(wp), intent(in) :: cs(:, 0:)
-    !> Link index (0: frame).
-    integer, intent(in) :: i
-    !> Vector to turn.
-    real(wp), intent(in) :: v(2)
-    real(wp) :: w(2)
-    w = [cs(1, i) * v(1) - cs(2, i) * v(2), cs(2, i) * v(1) + cs(1, i) * v(2)]
-  end function turned
-
-  !> point_position with the turns of set_turns.
-  pure function position_cs(mech, q, cs, i, p) result(x)
-    !> The linkage; link i (0: frame).
-    type(linkage_t), intent(in) :: mech
-    integer, intent(in) :: i
-    !> Poses, their turns (set_turns) and the point at the reference position (m).
-    real(wp), intent(in) :: q(:), cs(:, 0:), p(2)
-    real(wp) :: x(2)
-    x = p
-    if (i > 0) x = q(3 * i - 2:3 * i - 1) + turned(cs, i, p - mech%links(i)%c)
-  end function position_cs
-
-  !> Lever of point p of link i from its reference point (0 for the frame), m, with the turns
-  !> of set_turns.
-  pure function lever_cs(mech, cs, i, p) result(r)
-    !> The linkage.
-    type(linkage_t), intent(in) :: mech
-    !> Turns (set_turns).
-    real(wp), intent(in) :: cs(:, 0:)
-    !> Link index (0: frame).
-    integer, intent(in) :: i
-    !> The point at the reference position, m.
-    real(wp), intent(in) :: p(2)
-    real(wp) :: r(2)
-    r = 0.0_wp
-    if (i > 0) r = turned(cs, i, p - mech%links(i)%c)
-  end function lever_cs
-
-  !> Row r of J on the columns of its link in `slot` (work%jl(slot, r)): v.
-  pure subroutine put_j(je, r, slot, v)
-    real(wp), intent(inout) :: je(:, :, :)
-    integer, intent(in) :: r, slot
-    real(wp), intent(in) :: v(3)
-    je(:, slot, r) = v
-  end subroutine put_j
-
-  !> Constraints phi(q) for drive values `dq` and their Jacobian J by its rows' links (je, as
-  !> work%je: slot 1 the first link of work%jl, 2 the second).
-  pure subroutine constraints(mech, q, dq, phi, je, cs)
-    type(linkage_t), intent(in) :: mech
-    real(wp), intent(in) :: q(:)
-    !> Drive values, rad or m.
-    real(wp), intent(in) :: dq(:)
-    real(wp), intent(out) :: phi(:)
-    real(wp), intent(inout) :: je(:, :, :)
-    !> The turns of q (set_turns).
-    real(wp), intent(in) :: cs(:, 0:)
-    real(wp) :: ra(2), rb(2), delta(2), n(2), u(2)
-    integer :: k, r, a, b, blk, gd, d
-    phi = 0.0_wp
-    do k = 1, size(mech%pairs)
-      associate (pr => mech%pairs(k))
-        r = pair_row(k)
-        if (pr%kind == pair_r) then
-          a = pr%a; b = pr%b
-          ra = lever_cs(mech, cs, a, pr%at)
-          rb = lever_cs(mech, cs, b, pr%at)
-          phi(r:r + 1) = position_cs(mech, q, cs, a, pr%at) - position_cs(mech, q, cs, b, pr%at)
-          call put_j(je, r, 1, [1.0_wp, 0.0_wp, -ra(2)])
-          call put_j(je, r + 1, 1, [0.0_wp, 1.0_wp, ra(1)])
-          call put_j(je, r, 2, [-1.0_wp, 0.0_wp, rb(2)])
-          call put_j(je, r + 1, 2, [0.0_wp, -1.0_wp, -rb(1)])
-        else
-          gd = pr%guide
-          blk = pr%a + pr%b - gd
-          phi(r) = turn_of(q, blk) - turn_of(q, gd)
-          call put_j(je, r, 1, [0.0_wp, 0.0_wp, 1.0_wp])
-          call put_j(je, r, 2, [0.0_wp, 0.0_wp, -1.0_wp])
-          u = turned(cs, gd, pr%u)
-          n = perp(u)
-          delta = position_cs(mech, q, cs, blk, pr%at) - position_cs(mech, q, cs, gd, pr%at)
-          phi(r + 1) = dot_product(n, delta)
-          call slide_row(je, r + 1, n, lever_cs(mech, cs, blk, pr%at), lever_cs(mech, cs, gd, pr%at), delta)
-        end if
-      end associate
-    end do
-    do d = 1, size(mech%drives)
-      associate (pr => mech%pairs(mech%drives(d)%pair))
-        r = drive_row(mech, d)
-        if (pr%kind == pair_r) then
-          phi(r) = turn_of(q, pr%a) - turn_of(q, pr%b) - (dq(d) - mech%drives(d)%q_ref)
-          call put_j(je, r, 1, [0.0_wp, 0.0_wp, 1.0_wp])
-          call put_j(je, r, 2, [0.0_wp, 0.0_wp, -1.0_wp])
-        else
-          gd = pr%guide
-          blk = pr%a + pr%b - gd
-          u = turned(cs, gd, pr%u)
-          delta = position_cs(mech, q, cs, blk, pr%at) - position_cs(mech, q, cs, gd, pr%at)
-          phi(r) = dot_product(u, delta) - (dq(d) - mech%drives(d)%q_ref)
-          call slide_row(je, r, u, lever_cs(mech, cs, blk, pr%at), lever_cs(mech, cs, gd, pr%at), delta)
-        end if
-      end associate
-    end do
-  end subroutine constraints
-
-  !> Row r of J for w . (p_blk - p_gd), w turning with the guide link gd (slot 1 the block's
-  !> link, 2 the guide's).
-  pure subroutine slide_row(je, r, w, rblk, rgd, delta)
-    real(wp), intent(inout) :: je(:, :, :)
-    integer, intent(in) :: r
-    real(wp), intent(in) :: w(2), rblk(2), rgd(2), delta(2)
-    call put_j(je, r, 1, [w(1), w(2), dot_product(w, perp(rblk))])
-    call put_j(je, r, 2, [-w(1), -w(2), dot_product(perp(w), delta) - dot_product(w, perp(rgd))])
-  end subroutine slide_row
-
-  !> The velocity-dependent part h of the constraints' second derivative (J qdd + h = drive
-  !> accelerations).
-  pure subroutine quadratic_terms(mech, q, qd, zero, h, cs)
-    type(linkage_t), intent(in) :: mech
-    real(wp), intent(in) :: q(:), qd(:)
-    !> Zeros (3n).
-    real(wp), intent(in) :: zero(:)
-    !> h (rows).
-    real(wp), intent(out) :: h(:)
-    !> The turns of q (set_turns).
-    real(wp), intent(in) :: cs(:, 0:)
-    real(wp) :: ra(2), rb(2), u(2)
-    integer :: k, r, d
-    h = 0.0_wp
-    do k = 1, size(mech%pairs)
-      associate (pr => mech%pairs(k))
-        r = pair_row(k)
-        if (pr%kind == pair_r) then
-          ra = lever_cs(mech, cs, pr%a, pr%at)
-          rb = lever_cs(mech, cs, pr%b, pr%at)
-          h(r:r + 1) = -turn_of(qd, pr%a)**2 * ra + turn_of(qd, pr%b)**2 * rb
-        else
-          u = turned(cs, pr%guide, pr%u)
-          h(r + 1) = slide_h(mech, q, qd, zero, cs, pr, perp(u))
-        end if
-      end associate
-    end do
-    do d = 1, size(mech%drives)
-      associate (pr => mech%pairs(mech%drives(d)%pair))
-        if (pr%kind == pair_p) then
-          u = turned(cs, pr%guide, pr%u)
-          h(drive_row(mech, d)) = slide_h(mech, q, qd, zero, cs, pr, u)
-        end if
-      end associate
-    end do
-  end subroutine quadratic_terms
-
-  !> h of a sliding row w . delta (delta: the block's point minus the guide's, w turning with
-  !> the guide link g): -wg^2 w.delta + 2 wg perp(w).d(delta)/dt + w.(centripetal
-  !> accelerations of the block's point minus the guide's).
-  pure real(wp) function slide_h(mech, q, qd, zero, cs, pr, w)
-    type(linkage_t), intent(in) :: mech
-    real(wp), intent(in) :: q(:), qd(:), zero(:), cs(:, 0:)
-    type(linkage_pair_t), intent(in) :: pr
-    real(wp), intent(in) :: w(2)
-    real(wp) :: x1(2), v1(2), a1(2), x2(2), v2(2), a2(2), wg
-    integer :: blk
-    blk = pr%a + pr%b - pr%guide
-    call link_point_state(mech, q, qd, zero, blk, pr%at, x1, v1, a1, cs)
-    call link_point_state(mech, q, qd, zero, pr%guide, pr%at, x2, v2, a2, cs)
-    wg = turn_of(qd, pr%guide)
-    slide_h = -wg**2 * dot_product(w, x1 - x2) + 2.0_wp * wg * dot_product(perp(w), v1 - v2) + &
-              dot_product(w, a1 - a2)
-  end function slide_h
 
   !> Assembles the linkage for drive values `dq` from the poses `q` (updated) at the drive
   !> values `dq_from`, walking there in substeps. Every unit an input unit of one link or a
@@ -859,14 +617,20 @@ contains
     call work_ready(mech, work)
     if (work%closed) then
       m = substeps(mech, dq_from, dq)
+      ! (the turns' cos and sin go with the poses: place_units updates them as it places)
+      call work_turns(work, q)
+      work%has_cs = .false.
       work%q_new(:) = q
       placed = .true.
       do s = 1, m - 1
-        call place_units(mech, dq_from + (dq - dq_from) * (real(s, wp) / real(m, wp)), work%q_new, placed)
+        call place_units(mech, dq_from + (dq - dq_from) * (real(s, wp) / real(m, wp)), work%q_new, placed, work%cs, &
+                         work%arms)
         if (.not. placed) exit
       end do
-      if (placed) call place_units(mech, dq, work%q_new, placed)
+      if (placed) call place_units(mech, dq, work%q_new, placed, work%cs, work%arms)
       if (placed) then
+        work%q_cs(:) = work%q_new
+        work%has_cs = .true.
         call work_factored(mech, work%q_new, work, error)
         if (.not. allocated(error)) then
           q(:) = work%q_new
@@ -1089,14 +853,14 @@ contains
     !> Workspace (J and its factors at the last poses).
     type(linkage_work_t), intent(inout) :: work
     type(error_t), allocatable, intent(out) :: error
-    real(wp) :: terms, power, s(2), vs(2), as(2), ref(2)
+    real(wp) :: terms, power, s(2), vs(2), as(2), ref(2), f_length, fk(2)
     integer :: n, k, d, i, r
     logical :: closed
     n = size(mech%links)
     call work_factored(mech, step%q, work, error)
     if (allocated(error)) return
     call work_turns(work, step%q)
-    call generalised_loads(mech, step%q, step%qd, step%qdd, fval, mval, work%gen, work%cs)
+    call generalised_loads(mech, step%q, step%qd, step%qdd, fval, mval, work%gen, work%cs, work%s_cm, work%a_cm)
     work%lam(:) = -work%gen
     if (work%blocked) then
       ! J^T is block triangular too: its units' blocks are J's, transposed
@@ -1160,13 +924,15 @@ contains
       step%solver_gap = linkage_reaction_gap(mech, step, work%f2, work%normal2, work%couple2, work%effort2)
     end if
 
-    ! self-check 1: every link's equilibrium with the physical forces at their points
+    ! self-check 1: every link's equilibrium with the physical forces at their points (the
+    ! centres of mass and their accelerations of generalised_loads)
     call work_turns(work, step%q)
     work%bal(:) = link_balance_t()
     do i = 1, n
       ref = step%q(3 * i - 2:3 * i - 1)
       associate (lk => mech%links(i))
-        call link_point_state(mech, step%q, step%qd, step%qdd, i, lk%s, s, vs, as, work%cs)
+        s = work%s_cm(:, i)
+        as = work%a_cm(:, i)
         call balance_add_force(work%bal(i), ref, s, lk%m * mech%gravity)
         call balance_add_force(work%bal(i), ref, s, -lk%m * as)
         call balance_add_couple(work%bal(i), -lk%j * step%qdd(3 * i))
@@ -1186,12 +952,18 @@ contains
         if (pr%kind == pair_r) then
           ! each link's own coordinates of the joint (they differ by Newton's residual, whose
           ! lever would otherwise show in the moments of a link whose loads all act there)
-          call add_on(work%bal, pr%a, position_cs(mech, step%q, work%cs, pr%a, pr%at), step%f(:, k), 0.0_wp)
-          call add_on(work%bal, pr%b, position_cs(mech, step%q, work%cs, pr%b, pr%at), -step%f(:, k), 0.0_wp)
+          ! (the force's length once for both links: |f| = |-f|)
+          ! (fk: a copy of fixed size, so that -fk takes no temporary array from the heap)
+          fk = step%f(:, k)
+          f_length = fast_magnitude(fk)
+          call add_on(work%bal, pr%a, position_cs(mech, step%q, work%cs, pr%a, pr%at), fk, 0.0_wp, f_length)
+          call add_on(work%bal, pr%b, position_cs(mech, step%q, work%cs, pr%b, pr%at), -fk, 0.0_wp, f_length)
         else
           s = position_cs(mech, step%q, work%cs, pr%a + pr%b - pr%guide, pr%at)
-          call add_on(work%bal, pr%a, s, step%f(:, k), step%couple(k))
-          call add_on(work%bal, pr%b, s, -step%f(:, k), -step%couple(k))
+          fk = step%f(:, k)
+          f_length = fast_magnitude(fk)
+          call add_on(work%bal, pr%a, s, fk, step%couple(k), f_length)
+          call add_on(work%bal, pr%b, s, -fk, -step%couple(k), f_length)
         end if
       end associate
     end do
@@ -1227,13 +999,15 @@ contains
       step%mismatch = max(step%mismatch, power_mismatch(step%effort(d), power, terms))
     end do
   contains
-    !> Adds force f at point p and couple c to link i's balance (nothing for the frame).
-    pure subroutine add_on(bal, i, p, f, c)
+    !> Adds force f at point p and couple c to link i's balance (nothing for the frame); f_len:
+    !> fast_magnitude(f) when the caller has it.
+    pure subroutine add_on(bal, i, p, f, c, f_len)
       type(link_balance_t), intent(inout) :: bal(:)
       integer, intent(in) :: i
       real(wp), intent(in) :: p(2), f(2), c
+      real(wp), intent(in), optional :: f_len
       if (i == 0) return
-      if (f(1) /= 0.0_wp .or. f(2) /= 0.0_wp) call balance_add_force(bal(i), step%q(3 * i - 2:3 * i - 1), p, f)
+      if (f(1) /= 0.0_wp .or. f(2) /= 0.0_wp) call balance_add_force(bal(i), step%q(3 * i - 2:3 * i - 1), p, f, f_len)
       if (c /= 0.0_wp) call balance_add_couple(bal(i), c)
     end subroutine add_on
     !> Direction of force fc in the step's pose.
@@ -1500,19 +1274,23 @@ contains
 
   !> Generalised applied loads Q (3 per link: force, moment about the reference point):
   !> external forces and moments, gravity, d'Alembert's inertia force and moment.
-  pure subroutine generalised_loads(mech, q, qd, qdd, fval, mval, gen, cs)
+  pure subroutine generalised_loads(mech, q, qd, qdd, fval, mval, gen, cs, s_cm, a_cm)
     type(linkage_t), intent(in) :: mech
     real(wp), intent(in) :: q(:), qd(:), qdd(:), fval(:), mval(:)
     !> Q (3n).
     real(wp), intent(out) :: gen(:)
     !> The turns of q (set_turns).
     real(wp), intent(in) :: cs(:, 0:)
+    !> Each link's centre of mass (m) and its acceleration (m/s^2), 2 x n.
+    real(wp), intent(out) :: s_cm(:, :), a_cm(:, :)
     real(wp) :: s(2), vs(2), as(2), f(2), w(2)
     integer :: i, k
     gen = 0.0_wp
     do i = 1, size(mech%links)
       associate (lk => mech%links(i))
         call link_point_state(mech, q, qd, qdd, i, lk%s, s, vs, as, cs)
+        s_cm(:, i) = s
+        a_cm(:, i) = as
         f = lk%m * (mech%gravity - as)
         call add_gen(gen, i, s, f)
         gen(3 * i) = gen(3 * i) - lk%j * qdd(3 * i)
