@@ -48,7 +48,9 @@ contains
     !> The mechanism.
     class(mechanism_t), allocatable, intent(out) :: mech
     allocate (cam_mechanism_t :: mech)
-    call mech%describe(cam_template, title_en, title_ru, "")
+    call mech%describe(cam_template, title_en, title_ru, "", &
+      "Cam mechanism with a translating follower", &
+      "Кулачковый механизм с поступательно движущимся толкателем")
   end subroutine new_cam
 
   subroutine load_deck(self, source, error)

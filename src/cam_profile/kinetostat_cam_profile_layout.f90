@@ -42,7 +42,9 @@ contains
     !> The mechanism.
     class(mechanism_t), allocatable, intent(out) :: mech
     allocate (cam_profile_mechanism_t :: mech)
-    call mech%describe(cam_profile_template, title_en, title_ru, "cam")
+    call mech%describe(cam_profile_template, title_en, title_ru, "cam", &
+      "Disc cam mechanism", &
+      "Кулачковый механизм с дисковым кулачком")
   end subroutine new_cam_profile
 
   subroutine load_deck(self, source, error)

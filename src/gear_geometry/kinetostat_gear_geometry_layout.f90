@@ -48,7 +48,9 @@ contains
     !> The mechanism.
     class(mechanism_t), allocatable, intent(out) :: mech
     allocate (gear_geometry_mechanism_t :: mech)
-    call mech%describe(gear_geometry_template, title_en, title_ru, "gears")
+    call mech%describe(gear_geometry_template, title_en, title_ru, "gears", &
+      "Involute spur gear pair", &
+      "Эвольвентная зубчатая передача")
   end subroutine new_gear_geometry
 
   subroutine load_deck(self, source, error)

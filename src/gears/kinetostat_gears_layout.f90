@@ -52,7 +52,9 @@ contains
     !> The mechanism.
     class(mechanism_t), allocatable, intent(out) :: mech
     allocate (gears_mechanism_t :: mech)
-    call mech%describe(gears_template, title_en, title_ru, "")
+    call mech%describe(gears_template, title_en, title_ru, "", &
+      "Gear trains", &
+      "Зубчатые механизмы")
   end subroutine new_gears
 
   subroutine load_deck(self, source, error)

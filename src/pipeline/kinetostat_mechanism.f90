@@ -13,7 +13,6 @@ module kinetostat_mechanism
   use kinetostat_drawing, only: drawing_t
   use kinetostat_bodies, only: mass_model_t
   use kinetostat_sheet, only: sheet_t
-  use kinetostat_title_block, only: course_title
   implicit none
   private
   public :: mechanism_t
@@ -25,7 +24,7 @@ module kinetostat_mechanism
     !> Title line of the legacy table, Russian (the 1991 printout's wording where known).
     character(len=:), allocatable :: title_ru
     !> The mechanism's name on a course sheet, English and Russian ("Six-bar slotted-link
-    !> mechanism of a shaper"); unset: the title line without the program's name and kind.
+    !> mechanism of a shaper").
     character(len=:), allocatable :: name_en, name_ru
     !> The kind's commented template deck, as lines (set by the constructor, as the titles).
     character(len=:), allocatable :: template(:)
@@ -129,12 +128,12 @@ contains
     character(*), intent(in) :: sheet_name
     !> The mechanism's name on a course sheet, English and Russian (the subject of the
     !> sheet, in the nominative: the title line names the analysis).
-    character(*), intent(in), optional :: name_en, name_ru
+    character(*), intent(in) :: name_en, name_ru
     self%template = template
     self%title_en = title_en
     self%title_ru = title_ru
-    if (present(name_en)) self%name_en = name_en
-    if (present(name_ru)) self%name_ru = name_ru
+    self%name_en = name_en
+    self%name_ru = name_ru
     self%force_sheet = len(sheet_name) == 0
     if (len(sheet_name) > 0) self%sheet_name = sheet_name
   end subroutine describe
@@ -188,20 +187,16 @@ contains
     end if
   end function title
 
-  !> The mechanism's name on a course sheet in language `lang`: the kind's own name when its
-  !> constructor gave one, else the title line without the program's name and kind
-  !> (course_title).
+  !> The mechanism's name on a course sheet in language `lang` (lang_en, lang_ru).
   pure function course_name(self, lang) result(text)
     class(mechanism_t), intent(in) :: self
     !> lang_en or lang_ru.
     integer, intent(in) :: lang
     character(len=:), allocatable :: text
-    if (lang == lang_ru .and. allocated(self%name_ru)) then
+    if (lang == lang_ru) then
       text = self%name_ru
-    else if (lang /= lang_ru .and. allocated(self%name_en)) then
-      text = self%name_en
     else
-      text = course_title(self%title(lang))
+      text = self%name_en
     end if
   end function course_name
 

@@ -42,7 +42,9 @@ contains
     !> The mechanism.
     class(mechanism_t), allocatable, intent(out) :: mech
     allocate (planetary_synthesis_mechanism_t :: mech)
-    call mech%describe(planetary_synthesis_template, title_en, title_ru, "planetary")
+    call mech%describe(planetary_synthesis_template, title_en, title_ru, "planetary", &
+      "Single-row planetary train", &
+      "Однорядный планетарный механизм")
   end subroutine new_planetary_synthesis
 
   subroutine load_deck(self, source, error)
