@@ -163,44 +163,28 @@ contains
         if (allocated(error)) return
         o%kinematics = .true.
         o%course_sheet = course_kinematics
-        o%format = format_svg
-        call add_file(trim(sheet_names(s))//".svg")
-        o%format = format_dxf
-        call add_file(trim(sheet_names(s))//".dxf")
+        call add_svg_and_dxf(sheet_names(s), format_svg)
         if (made(kinematics_second)) then
           ! (A3, A4: the second sheet, the next number)
           n = n + 1
           o%sheet_number = n
           if (size(numbers) > 0) o%sheet_number = numbers(n)
           o%course_part = 2
-          o%format = format_svg
-          call add_file(trim(sheet_names(kinematics_second))//".svg")
-          o%format = format_dxf
-          call add_file(trim(sheet_names(kinematics_second))//".dxf")
+          call add_svg_and_dxf(sheet_names(kinematics_second), format_svg)
         end if
       case (2)
         o%at_step = k_at
         o%course_sheet = course_kinetostatics
-        o%format = format_plans
-        call add_file(trim(sheet_names(s))//".svg")
-        o%format = format_dxf
-        o%plans = .true.
-        call add_file(trim(sheet_names(s))//".dxf")
+        call add_svg_and_dxf(sheet_names(s), format_plans)
       case (4:)
         ! a design's sheet (the gear pair, the planetary train, the cam; --at: the cam's position)
         o%course_sheet = course_design
-        o%format = format_svg
-        call add_file(trim(sheet_names(s))//".svg")
-        o%format = format_dxf
-        call add_file(trim(sheet_names(s))//".dxf")
+        call add_svg_and_dxf(sheet_names(s), format_svg)
       case default
         ! the dynamics sheet (3)
         o%at_step = 0
         o%course_sheet = course_dynamics
-        o%format = format_svg
-        call add_file(trim(sheet_names(s))//".svg")
-        o%format = format_dxf
-        call add_file(trim(sheet_names(s))//".dxf")
+        call add_svg_and_dxf(sheet_names(s), format_svg)
       end select
       if (allocated(error)) return
     end do
@@ -250,6 +234,18 @@ contains
       if (allocated(error)) return
       names(n_files) = name
     end subroutine add_file
+
+    !> The sheet `stem` drawn as `svg_format` (svg; plans: the graphical method's sheet) into
+    !> stem.svg, then as DXF into stem.dxf (a plans sheet's DXF: --format dxf --plans).
+    subroutine add_svg_and_dxf(stem, svg_format)
+      character(*), intent(in) :: stem
+      integer, intent(in) :: svg_format
+      o%format = svg_format
+      call add_file(trim(stem)//".svg")
+      o%format = format_dxf
+      if (svg_format == format_plans) o%plans = .true.
+      call add_file(trim(stem)//".dxf")
+    end subroutine add_svg_and_dxf
   end subroutine write_course_sheets
 
   !> The plan of positions of the kinematics sheet into options%course_plan: the output
