@@ -7,7 +7,7 @@ module kinetostat_mechanism
   use kinetostat_deck, only: deck_source_t
   use kinetostat_step_table, only: step_table_t
   use kinetostat_text_buffer, only: text_buffer_t
-  use kinetostat_labels, only: lang_ru
+  use kinetostat_labels, only: in_language
   use kinetostat_table_layout, only: results_page_t
   use kinetostat_sketch, only: sketch_t
   use kinetostat_drawing, only: drawing_t
@@ -180,11 +180,7 @@ contains
     !> lang_en or lang_ru.
     integer, intent(in) :: lang
     character(len=:), allocatable :: text
-    if (lang == lang_ru) then
-      text = self%title_ru
-    else
-      text = self%title_en
-    end if
+    text = in_language(self%title_en, self%title_ru, lang)
   end function title
 
   !> The mechanism's name on a course sheet in language `lang` (lang_en, lang_ru).
@@ -193,11 +189,7 @@ contains
     !> lang_en or lang_ru.
     integer, intent(in) :: lang
     character(len=:), allocatable :: text
-    if (lang == lang_ru) then
-      text = self%name_ru
-    else
-      text = self%name_en
-    end if
+    text = in_language(self%name_en, self%name_ru, lang)
   end function course_name
 
   !> The commented template deck of the kind (nothing when the constructor set none).
