@@ -94,16 +94,22 @@ contains
     type(step_table_t), intent(in) :: table
     integer, intent(in) :: lang
     character(len=:), allocatable :: line
-    integer :: i
     line = label("deck", lang)//": "//table%deck
     if (allocated(table%subtitle)) line = line//"   "//table%subtitle
-    if (.not. allocated(table%overrides)) return
-    if (size(table%overrides) == 0) return
-    line = line//"   --set"
-    do i = 1, size(table%overrides)
-      line = line//" "//trim(table%overrides(i))
-    end do
+    if (len(set_changes(table)) > 0) line = line//"   --set"//set_changes(table)
   end function deck_line
+
+  !> The run's --set changes, each after a blank (" l_ab=0.12 dphi=1"); "" when none.
+  pure function set_changes(table) result(text)
+    type(step_table_t), intent(in) :: table
+    character(len=:), allocatable :: text
+    integer :: i
+    text = ""
+    if (.not. allocated(table%overrides)) return
+    do i = 1, size(table%overrides)
+      text = text//" "//trim(table%overrides(i))
+    end do
+  end function set_changes
 
   !> The mechanism's name on a course sheet: the kind's title line without the program's
   !> name and kind ("KINETOSTAT  PR 3207  СИЛОВОЙ РАСЧЕТ ..." -> "СИЛОВОЙ РАСЧЕТ ..."), in the
@@ -130,18 +136,13 @@ contains
     !> lang_en or lang_ru.
     integer, intent(in) :: lang
     character(len=:), allocatable :: line
-    integer :: i
     line = ""
     if (allocated(table%subtitle)) then
       if (len_trim(table%subtitle) > 0) line = in_language("mechanism: ", "механизм: ", lang)//trim(table%subtitle)
     end if
-    if (.not. allocated(table%overrides)) return
-    if (size(table%overrides) == 0) return
+    if (len(set_changes(table)) == 0) return
     if (len(line) > 0) line = line//";  "
-    line = line//in_language("data changed:", "изменения данных:", lang)
-    do i = 1, size(table%overrides)
-      line = line//" "//trim(table%overrides(i))
-    end do
+    line = line//in_language("data changed:", "изменения данных:", lang)//set_changes(table)
   end function course_data_line
 
   !> The frame of the sheet's paper and the title block in its lower right corner.
