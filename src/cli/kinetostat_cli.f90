@@ -15,7 +15,7 @@ module kinetostat_cli
   use kinetostat_posix, only: stderr_is_terminal, cpu_count, guard_signals, output_is_terminal
   use kinetostat_text, only: int_str, printable, joined
   use kinetostat_run, only: format_summary, format_npy
-  use kinetostat_step_table, only: step_table_t
+  use kinetostat_step_table, only: step_table_t, student_t
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_output, only: write_output_file, write_output_stdout
   use kinetostat_spool, only: spool_t
@@ -978,12 +978,12 @@ contains
         args%options%kinematics = .true.
       case ("--plans")
         args%options%plans = .true.
-      case ("--student")
-        args%options%student_name = value
-      case ("--group")
-        args%options%student_group = value
-      case ("--variant")
-        args%options%student_variant = value
+      case ("--student", "--group", "--variant")
+        ! the fields not given are "-"; the stamp is the run's, set once all options are read
+        if (.not. allocated(args%options%student)) args%options%student = student_t("-", "-", "-", "")
+        if (name == "--student") args%options%student%name = value
+        if (name == "--group") args%options%student%group = value
+        if (name == "--variant") args%options%student%variant = value
       case ("--shaking")
         args%options%shaking = .true.
       case ("--method")
@@ -1226,13 +1226,7 @@ contains
       call check_options_belong("")
     end if
     if (allocated(error)) return
-    if (allocated(args%options%student_name) .or. allocated(args%options%student_group) .or. &
-      allocated(args%options%student_variant)) then
-      if (.not. allocated(args%options%student_name)) args%options%student_name = "-"
-      if (.not. allocated(args%options%student_group)) args%options%student_group = "-"
-      if (.not. allocated(args%options%student_variant)) args%options%student_variant = "-"
-      args%options%student_stamp = run_stamp()
-    end if
+    if (allocated(args%options%student)) args%options%student%stamp = run_stamp()
   contains
     !> Every option given must be one of the subcommand's (cli_commands; "" the run of a
     !> deck): otherwise a usage error naming it.

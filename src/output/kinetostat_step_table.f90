@@ -14,7 +14,7 @@ module kinetostat_step_table
   implicit none
   private
   public :: step_table_t, column_t, column, echo_record_t, echo_cursor_t, remark_t, column_tally_t, edge_point_t, &
-    step_span, worst_row, lack_block_memory
+    student_t, step_span, worst_row, lack_block_memory
   public :: col_input_angle, col_force, col_force_angle, col_component, col_moment, col_length, &
     col_flag, col_count, col_ratio, col_other, column_kind_names
   public :: echo_real_kind, echo_int_kind, echo_logical_kind, echo_array_kind, echo_text_kind, &
@@ -104,6 +104,15 @@ module kinetostat_step_table
     logical :: voidable = .false.
   end type column_t
 
+  !> The student's header of a run (--student, --group, --variant): who ran the deck and
+  !> when, for the legacy table's student line and the sheets' title blocks.
+  type :: student_t
+    !> Surname, group and variant ("-" when not given).
+    character(len=:), allocatable :: name, group, variant
+    !> Date and time of the run ("25.11.2026 18:31").
+    character(len=:), allocatable :: stamp
+  end type student_t
+
   !> One remark of a run for the user (a warning on stderr, in JSON).
   type :: remark_t
     !> The text, without "kinetostat: warning: <deck>: ".
@@ -164,9 +173,8 @@ module kinetostat_step_table
     character(len=:), allocatable :: deck
     !> A line printed under the deck line of the legacy table (the deck's own title), if any.
     character(len=:), allocatable :: subtitle
-    !> The student's header (--student, --group, --variant): date and time of the run
-    !> ("25.11.2026 18:31"), surname, group, variant; unallocated when not asked for.
-    character(len=:), allocatable :: student_stamp, student_name, student_group, student_variant
+    !> The student's header (--student, --group, --variant); unallocated when not asked for.
+    type(student_t), allocatable :: student
     !> What one row is, for messages ("step", "stage").
     character(len=:), allocatable :: row_name
     !> Index of the column holding the input coordinate (0 when there is none).

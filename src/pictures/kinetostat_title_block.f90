@@ -14,7 +14,7 @@
 !> (a block under a sheet made title_block_height taller), drawn through the same code.
 module kinetostat_title_block
   use kinetostat_kinds, only: wp, version_string
-  use kinetostat_step_table, only: step_table_t
+  use kinetostat_step_table, only: step_table_t, student_t
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_text, only: int_str
   use kinetostat_labels, only: lang_ru, label, in_language
@@ -43,8 +43,8 @@ module kinetostat_title_block
     !> The drawing's scale ("1:5"), "" when the sheet has none.
     character(len=:), allocatable :: scale
     !> The student (Разраб.), the group and variant (organisation field), the run's date
-    !> and time ("25.11.2026 18:31"); "" without --student.
-    character(len=:), allocatable :: student, group, variant, stamp
+    !> and time ("25.11.2026 18:31"); each "" without --student.
+    type(student_t) :: student
     !> Лист, Листов.
     integer :: sheet_number = 1, sheet_count = 1
   end type title_block_t
@@ -64,19 +64,11 @@ contains
     block%drawing_name = drawing_name
     block%designation = ""
     block%scale = scale
-    block%student = ""
-    block%group = ""
-    block%variant = ""
-    block%stamp = ""
+    block%student = student_t("", "", "", "")
     if (allocated(table%designation)) block%designation = table%designation
     block%sheet_number = table%sheet_number
     block%sheet_count = table%sheet_count
-    if (allocated(table%student_stamp)) then
-      block%student = table%student_name
-      block%group = table%student_group
-      block%variant = table%student_variant
-      block%stamp = table%student_stamp
-    end if
+    if (allocated(table%student)) block%student = table%student
   end function title_block_from_table
 
   !> How far a sheet's header starts right of the frame: past графа 26 (70 mm) when the
@@ -239,18 +231,18 @@ contains
     end if
     call sheet%text(x0 + 100.0_wp, y0 + 46.5_wp, fitted_text(version_string, 66.0_wp, entry_size), "cell", &
       anchor_middle, size=entry_size, plain=.true.)
-    if (len(block%stamp) > 0) then
-      date = block%stamp(:max(0, index(block%stamp, " ") - 1))
+    if (len(block%student%stamp) > 0) then
+      date = block%student%stamp(:max(0, index(block%student%stamp, " ") - 1))
       ! date as DD.MM.YY (the column is 10 mm)
       if (len(date) == 10) date = date(1:6)//date(9:10)
-      call sheet%text(x0 + 18.0_wp, y0 + 29.0_wp, fitted_text(block%student, 22.0_wp, entry_size), "cell", &
+      call sheet%text(x0 + 18.0_wp, y0 + 29.0_wp, fitted_text(block%student%name, 22.0_wp, entry_size), "cell", &
         size=entry_size, plain=.true.)
       call sheet%text(x0 + 60.0_wp, y0 + 29.0_wp, date, "cell", anchor_middle, size=1.9_wp, plain=.true.)
-      call sheet%text(x0 + 100.0_wp, y0 + 51.5_wp, words("run ", "расчет ")//block%stamp, "cell", anchor_middle, &
+      call sheet%text(x0 + 100.0_wp, y0 + 51.5_wp, words("run ", "расчет ")//block%student%stamp, "cell", anchor_middle, &
         size=entry_size, plain=.true.)
-      call sheet%text(x0 + 160.0_wp, y0 + 46.5_wp, fitted_text(words("group ", "группа ")//block%group, 46.0_wp, &
+      call sheet%text(x0 + 160.0_wp, y0 + 46.5_wp, fitted_text(words("group ", "группа ")//block%student%group, 46.0_wp, &
         entry_size), "cell", anchor_middle, size=entry_size, plain=.true.)
-      call sheet%text(x0 + 160.0_wp, y0 + 51.5_wp, fitted_text(words("variant ", "вариант ")//block%variant, &
+      call sheet%text(x0 + 160.0_wp, y0 + 51.5_wp, fitted_text(words("variant ", "вариант ")//block%student%variant, &
         46.0_wp, entry_size), "cell", anchor_middle, size=entry_size, plain=.true.)
     end if
   contains
@@ -314,7 +306,7 @@ contains
     type(sheet_t) :: sheet
     type(paper_t) :: paper
     integer :: i, c
-    if (.not. allocated(table%student_stamp)) return
+    if (.not. allocated(table%student)) return
     paper%name = ""
     paper%width = width
     paper%height = height

@@ -9,7 +9,7 @@ module kinetostat_run
   use kinetostat_error, only: error_t, fatal_error, exit_geometry, exit_input, out_of_memory
   use kinetostat_text, only: int_str, printable
   use kinetostat_format, only: trimmed_es
-  use kinetostat_step_table, only: step_table_t, echo_cursor_t, echo_real_kind, echo_array_kind
+  use kinetostat_step_table, only: step_table_t, student_t, echo_cursor_t, echo_real_kind, echo_array_kind
   use kinetostat_run_tally, only: run_tally_t, merge_tally
   use kinetostat_deck, only: deck_source_t, release_deck_text
   use kinetostat_mechanism, only: mechanism_t
@@ -120,9 +120,8 @@ module kinetostat_run
     !> With --at (format_plans): the structural analysis of the mechanism drawn at that row
     !> instead of its plans (`kinetostat structure` of a deck without an analysis of its own).
     logical :: structure = .false.
-    !> The student's header (legacy table and sheets): date and time of the run, surname,
-    !> group, variant (all allocated, or none).
-    character(len=:), allocatable :: student_stamp, student_name, student_group, student_variant
+    !> The student's header (legacy table and sheets); unallocated when not asked for.
+    type(student_t), allocatable :: student
     !> Rows per block (0: block_rows); the output does not depend on it (tests vary it).
     integer :: block_rows = 0
     !> Values of an echoed array written between drains of the output (0: the step table's
@@ -240,12 +239,7 @@ contains
     call release_deck_text(source)
     table%mechanism = group
     table%deck = source%path
-    if (allocated(options%student_stamp)) then
-      table%student_stamp = options%student_stamp
-      table%student_name = options%student_name
-      table%student_group = options%student_group
-      table%student_variant = options%student_variant
-    end if
+    if (allocated(options%student)) table%student = options%student
     table%row_name = "step"
     table%driver = "M1"
     if (allocated(options%designation)) table%designation = options%designation

@@ -158,15 +158,15 @@ contains
     integer, intent(in) :: lang
     character(len=:), allocatable :: line
     integer :: blank
-    blank = index(table%student_stamp, " ")
+    blank = index(table%student%stamp, " ")
     if (lang == lang_ru) then
-      line = "ДАТА "//table%student_stamp(:blank - 1)//"  ВРЕМЯ "//table%student_stamp(blank + 1:)//"  ФАМИЛИЯ "// &
-        table_text(table%student_name)//"  ГРУППА "//table_text(table%student_group)//"  ВАРИАНТ "// &
-        table_text(table%student_variant)
+      line = "ДАТА "//table%student%stamp(:blank - 1)//"  ВРЕМЯ "//table%student%stamp(blank + 1:)//"  ФАМИЛИЯ "// &
+        table_text(table%student%name)//"  ГРУППА "//table_text(table%student%group)//"  ВАРИАНТ "// &
+        table_text(table%student%variant)
     else
-      line = "DATE "//table%student_stamp(:blank - 1)//"  TIME "//table%student_stamp(blank + 1:)//"  NAME "// &
-        table_text(table%student_name)//"  GROUP "//table_text(table%student_group)//"  VARIANT "// &
-        table_text(table%student_variant)
+      line = "DATE "//table%student%stamp(:blank - 1)//"  TIME "//table%student%stamp(blank + 1:)//"  NAME "// &
+        table_text(table%student%name)//"  GROUP "//table_text(table%student%group)//"  VARIANT "// &
+        table_text(table%student%variant)
     end if
   end function student_line
 
@@ -179,7 +179,7 @@ contains
     type(echo_cursor_t), intent(inout) :: cursor
     integer :: i
     if (cursor%record == 0) then
-      if (allocated(table%student_stamp)) call out%put(" "//student_line(table, lang))
+      if (allocated(table%student)) call out%put(" "//student_line(table, lang))
       call out%put(" "//mech%title(lang))
       call out%put(" "//label("DECK: ", lang)//table_text(table%deck))
       if (allocated(table%subtitle)) call out%put(" "//label("TITLE: ", lang)//table_text(table%subtitle))

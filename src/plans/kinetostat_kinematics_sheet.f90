@@ -94,6 +94,8 @@ contains
     real(wp) :: inner(4), cw, x1, x2, x3, top, region(4), mu_phi, hmax, y
     real(wp), allocatable :: phi(:)
     character(len=:), allocatable :: short, driver, traced, text
+    !> The sheet's name, its description, the title block's drawing name and the header.
+    character(len=:), allocatable :: sheet_name, about, drawing_name, header
     !> The mechanism panel's heading, a line an element, and how much lower the mechanism is
     !> drawn for its lines after the first, mm.
     character(len=note_length), allocatable :: heading(:)
@@ -170,28 +172,27 @@ contains
       call fit_mechanism_view(drawing, [region(1) + 4.0_wp, region(2) + 10.0_wp + heading_drop, region(3) - 4.0_wp, &
         region(4) - 10.0_wp], merge(4.0_wp, 10.0_wp, part_drawn == 2), view)
     end if
+    ! the sheet's name (with the position), description, title block and header
     if (part_drawn == 2) then
-      call sheet%open(page, lang, words("Plans of velocities and accelerations", &
-        "Планы скоростей и ускорений", lang)//", "//words("position", "положение", lang)//" "// &
-        int_str(table%run_row(k)), &
-        "kinetostat sheets: the second kinematics sheet ("//page%name//"): the mechanism in the "// &
-        "position, the values there, the plans of velocities and "// &
-        "accelerations and the values read off them.")
-      call put_sheet_format(sheet, title_block_from_table(table, words("Plans of velocities and accelerations", &
-        "Планы скоростей и ускорений", lang), view%drawing_scale%text))
-      call sheet_header(sheet, title, table, lang, words("Kinematic analysis: plans of velocities and accelerations", &
-        "Кинематический анализ: планы скоростей и ускорений", lang))
+      sheet_name = words("Plans of velocities and accelerations", "Планы скоростей и ускорений", lang)
+      about = "kinetostat sheets: the second kinematics sheet ("//page%name//"): the mechanism in the "// &
+        "position, the values there, the plans of velocities and accelerations and the values read off them."
+      drawing_name = sheet_name
+      header = words("Kinematic analysis: plans of velocities and accelerations", &
+        "Кинематический анализ: планы скоростей и ускорений", lang)
     else
-      call sheet%open(page, lang, words("Structure and kinematics", &
-        "Структурный и кинематический анализ", lang)// &
-        ", "//words("position", "положение", lang)//" "//int_str(table%run_row(k)), &
-        "kinetostat sheets: the kinematics sheet: the mechanism at a position "// &
-        "with a trajectory, the structure, the output link's diagrams, the values at the position.")
-      call put_sheet_format(sheet, title_block_from_table(table, words("Structure and kinematics of the mechanism", &
-        "Структурный и кинематический анализ механизма", lang), view%drawing_scale%text))
-      call sheet_header(sheet, title, table, lang, words("Structural and kinematic analysis", &
-        "Структурный и кинематический анализ механизма", lang))
+      sheet_name = words("Structure and kinematics", "Структурный и кинематический анализ", lang)
+      about = "kinetostat sheets: the kinematics sheet: the mechanism at a position "// &
+        "with a trajectory, the structure, the output link's diagrams, the values at the position."
+      drawing_name = words("Structure and kinematics of the mechanism", &
+        "Структурный и кинематический анализ механизма", lang)
+      header = words("Structural and kinematic analysis", &
+        "Структурный и кинематический анализ механизма", lang)
     end if
+    call sheet%open(page, lang, sheet_name//", "//words("position", "положение", lang)//" "//int_str(table%run_row(k)), &
+      about)
+    call put_sheet_format(sheet, title_block_from_table(table, drawing_name, view%drawing_scale%text))
+    call sheet_header(sheet, title, table, lang, header)
 
     ! the mechanism at the position with the traced point's trajectory
     call sheet%set_layer(layer_charts)

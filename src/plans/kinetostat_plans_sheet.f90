@@ -269,16 +269,7 @@ contains
         call input_link_drawing(drawing, plans, e, link, pivot)
         if (pivot > 0) then
           sheet%link_boxes(:, e) = [cell(1), cell(2), cell(1) + 0.55_wp * (cell(3) - cell(1)), cell(4)]
-          fmax = 0.0_wp
-          do i = 1, size(link%forces)
-            fmax = max(fmax, norm2(link%forces(i)%f))
-          end do
-          associate (box => sheet%link_boxes(:, e))
-            sheet%link_force_scale(e) = 0.25_wp * min(box(3) - box(1), box(4) - box(2)) / max(fmax, tiny(1.0_wp))
-            call fit_mechanism_view(link, box + [0.0_wp, 4.0_wp, 0.0_wp, 0.0_wp], 3.0_wp, sheet%link_views(e), &
-              force_scale=sheet%link_force_scale(e))
-          end associate
-          sheet%mu_link(e) = sheet%link_views(e)%mu_l()
+          call fit_link_view(sheet, e, link, sheet%link_boxes(:, e) + [0.0_wp, 4.0_wp, 0.0_wp, 0.0_wp], 3.0_wp)
           cell(1) = sheet%link_boxes(3, e)
         end if
       else if (sheet%groups_apart) then
@@ -294,15 +285,7 @@ contains
           sheet%link_boxes(4, e) - sheet%link_boxes(2, e) < min_apart(2)) then
           sheet%link_boxes(:, e) = 0.0_wp
         else
-          fmax = 0.0_wp
-          do i = 1, size(link%forces)
-            fmax = max(fmax, norm2(link%forces(i)%f))
-          end do
-          associate (box => sheet%link_boxes(:, e))
-            sheet%link_force_scale(e) = 0.25_wp * min(box(3) - box(1), box(4) - box(2)) / max(fmax, tiny(1.0_wp))
-            call fit_mechanism_view(link, box, 4.0_wp, sheet%link_views(e), force_scale=sheet%link_force_scale(e))
-          end associate
-          sheet%mu_link(e) = sheet%link_views(e)%mu_l()
+          call fit_link_view(sheet, e, link, sheet%link_boxes(:, e), 4.0_wp)
           cell(1) = sheet%link_boxes(3, e) + 1.0_wp
           ! the arms' table when the polygon keeps half the cell's height (A4: the arms are
           ! drawn and named, their table left out)
@@ -320,6 +303,29 @@ contains
     end do
     call compare_efforts(topo, drawing, plans, sheet)
   end subroutine plans_sheet
+
+  !> The drawing of link (or group) `e` apart with its forces: the force scale that draws
+  !> its largest force a quarter of the smaller side of its box link_boxes(:, e), its view
+  !> fitted into `frame` with `margin` mm around, and its length scale.
+  pure subroutine fit_link_view(sheet, e, link, frame, margin)
+    type(plans_sheet_t), intent(inout) :: sheet
+    integer, intent(in) :: e
+    !> The link's drawing with its forces.
+    type(drawing_t), intent(in) :: link
+    !> Where its view goes, mm (x1, y1, x2, y2).
+    real(wp), intent(in) :: frame(4), margin
+    real(wp) :: fmax
+    integer :: i
+    fmax = 0.0_wp
+    do i = 1, size(link%forces)
+      fmax = max(fmax, norm2(link%forces(i)%f))
+    end do
+    associate (box => sheet%link_boxes(:, e))
+      sheet%link_force_scale(e) = 0.25_wp * min(box(3) - box(1), box(4) - box(2)) / max(fmax, tiny(1.0_wp))
+    end associate
+    call fit_mechanism_view(link, frame, margin, sheet%link_views(e), force_scale=sheet%link_force_scale(e))
+    sheet%mu_link(e) = sheet%link_views(e)%mu_l()
+  end subroutine fit_link_view
 
   !> Unit t's links as its polygon names them ("2,3").
   pure function group_text(plans, t) result(text)
