@@ -3,7 +3,7 @@
 module kinetostat_cam_deck
   use kinetostat_kinds, only: wp
   use kinetostat_error, only: error_t
-  use kinetostat_text, only: real_str, int_str, lower
+  use kinetostat_text, only: real_str, int_str
   use kinetostat_deck, only: values_out_of_memory, begin_group, text_bytes, text_chars, max_deck_array, &
     deck_context_t, unset_real, deck_array_capacities, deck_source_t, namelist_probe_t, deck_error, is_set, &
     optional_default, count_values, deck_rules_t, rule_nonnegative, angle_steps_t, &
@@ -18,6 +18,8 @@ module kinetostat_cam_deck
   integer, parameter :: follower_translating = 1
   !> Follower: flat face normal to its axis, pressure angle 0, friction at the cam.
   integer, parameter :: follower_flat = 2
+  !> The followers as decks name them (index: follower_translating, follower_flat).
+  character(*), parameter :: follower_names(2) = [character(len=11) :: "translating", "flat"]
 
   !> A per-step variable as a deck gives it: one value per step, or one for every step. The
   !> values are the namelist's read buffer, kept (spare elements past them unused), so no
@@ -128,18 +130,9 @@ contains
     end do
     if (probe%failed(source, ctx, error)) return
 
-    select case (lower(trim(adjustl(follower))))
-    case ("", "translating")
-      deck%follower = follower_translating
-    case ("flat")
-      deck%follower = follower_flat
-    case default
-      call deck_error(ctx, "follower", "must be 'translating' or 'flat' (got '"//trim(follower)//"')", error)
-      return
-    end select
-
-    ! every missing required variable in one message
     rules%ctx = ctx
+    call rules%require_choice("follower", follower, follower_names, deck%follower, default=follower_translating)
+    ! every missing required variable in one message
     call rules%require_all_set([character(len=6) :: "l", "l_over", "f", "dphi"], [l, l_over, f, dphi])
     ! guide
     call rules%require_positive("l", l)

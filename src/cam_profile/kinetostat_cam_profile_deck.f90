@@ -5,9 +5,9 @@
 module kinetostat_cam_profile_deck
   use kinetostat_kinds, only: wp, deg_to_rad
   use kinetostat_error, only: error_t
-  use kinetostat_text, only: real_str, int_str, lower
+  use kinetostat_text, only: real_str, int_str
   use kinetostat_deck, only: begin_group, text_bytes, text_chars, deck_context_t, unset_real, deck_source_t, namelist_probe_t, &
-    deck_error, is_set, optional_default, max_steps, deck_rules_t
+    is_set, optional_default, max_steps, deck_rules_t
   use kinetostat_cam_profile, only: cam_design_t, cam_segment_t, law_names, law_dwell, follower_names, &
     follower_flat, follower_roller, follower_oscillating
   implicit none
@@ -94,19 +94,9 @@ contains
     end do
     if (probe%failed(source, ctx, error)) return
 
-    ! the follower
-    code = findloc(follower_names, lower(trim(adjustl(follower))), dim=1)
-    if (len_trim(follower) == 0) then
-      call deck_error(ctx, "follower", "missing: give 'flat', 'roller' or 'oscillating'", error)
-      return
-    else if (code == 0) then
-      call deck_error(ctx, "follower", "must be 'flat', 'roller' or 'oscillating' (got '"//trim(follower)//"')", error)
-      return
-    end if
-    deck%design%follower = code
-
-    ! the segments: the leading non-blank laws, no gaps
     rules%ctx = ctx
+    call rules%require_choice("follower", follower, follower_names, deck%design%follower)
+    ! the segments: the leading non-blank laws, no gaps
     call rules%count_texts("law", law, "give one law per segment ('dwell', 'constant_velocity', 'parabolic', "// &
       "'harmonic', 'cycloidal', 'poly345')", n)
     if (rules%failed(error)) return
@@ -123,9 +113,7 @@ contains
     s_lowest = 0.0_wp
     do i = 1, n
       at = "("//int_str(i)//")"
-      code = findloc(law_names, lower(trim(adjustl(law(i)))), dim=1)
-      call rules%require_rule("law"//at, code /= 0, "must be 'dwell', 'constant_velocity', 'parabolic', "// &
-        "'harmonic', 'cycloidal' or 'poly345' (got '"//trim(law(i))//"')")
+      call rules%require_choice("law"//at, law(i), law_names, code)
       if (rules%failed(error)) return
       call rules%require_rule("beta"//at, beta(i) > 0.0_wp .and. beta(i) <= 360.0_wp, "must be in (0, 360] deg "// &
         "(got "//real_str(beta(i))//")")

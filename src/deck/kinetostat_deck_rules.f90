@@ -8,7 +8,7 @@ module kinetostat_deck_rules
   use, intrinsic :: iso_fortran_env, only: int64
   use kinetostat_kinds, only: wp
   use kinetostat_error, only: error_t, fatal_error, exit_input
-  use kinetostat_text, only: real_str, int_str, int64_str, number_str, char_count
+  use kinetostat_text, only: real_str, int_str, int64_str, number_str, char_count, lower
   use kinetostat_deck_source, only: deck_context_t
   implicit none
   private
@@ -72,6 +72,7 @@ module kinetostat_deck_rules
     procedure :: require_in => rules_in
     procedure :: require_whole => rules_whole
     procedure :: require_chars => rules_chars
+    procedure :: require_choice => rules_choice
     procedure :: require_per_step => rules_per_step
     procedure :: require_all_set => rules_all_set
     procedure :: count_values => rules_count_values
@@ -447,6 +448,42 @@ contains
     integer, intent(in) :: most
     if (.not. allocated(self%error)) call require_chars(self%ctx, name, text, most, self%error)
   end subroutine rules_chars
+
+  !> A keyword variable, once no check has failed: its text (blanks around it and case
+  !> ignored) one of `names`, `code` its index there; a blank text means names(default), or
+  !> without `default` is "missing: give 'a', 'b' or 'c'"; any other text "must be 'a', 'b'
+  !> or 'c' (got 'd')". `code` is 0 when a check failed.
+  subroutine rules_choice(self, name, text, names, code, default)
+    class(deck_rules_t), intent(inout) :: self
+    character(*), intent(in) :: name
+    !> The text as the deck gives it.
+    character(*), intent(in) :: text
+    !> The words accepted, in the order the message lists them (trailing blanks dropped).
+    character(*), intent(in) :: names(:)
+    integer, intent(out) :: code
+    !> The index of the word a blank text stands for.
+    integer, intent(in), optional :: default
+    character(len=:), allocatable :: choices
+    integer :: i
+    code = 0
+    if (allocated(self%error)) return
+    choices = "'"//trim(names(1))//"'"
+    do i = 2, size(names)
+      if (i < size(names)) then
+        choices = choices//", '"//trim(names(i))//"'"
+      else
+        choices = choices//" or '"//trim(names(i))//"'"
+      end if
+    end do
+    if (len_trim(text) == 0 .and. present(default)) then
+      code = default
+    else if (len_trim(text) == 0) then
+      call self%require_rule(name, .false., "missing: give "//choices)
+    else
+      code = findloc(names, lower(trim(adjustl(text))), dim=1)
+      call self%require_rule(name, code /= 0, "must be "//choices//" (got '"//trim(text)//"')")
+    end if
+  end subroutine rules_choice
 
   !> require_per_step, once no check has failed.
   subroutine rules_per_step(self, name, count, n)

@@ -7,7 +7,7 @@ module kinetostat_gears_deck
   use kinetostat_text, only: real_str, int_str, number_str, lower
   use kinetostat_deck, only: &
     begin_group, text_bytes, text_chars, deck_context_t, unset_real, &
-    deck_source_t, namelist_probe_t, deck_error, is_set, deck_rules_t
+    deck_source_t, namelist_probe_t, is_set, deck_rules_t
   use kinetostat_gears, only: gear_stage_t, gear_helical, gear_bevel, gear_planetary, gear_kind_names
   implicit none
   private
@@ -103,19 +103,9 @@ contains
     end do
     if (probe%failed(source, ctx, error)) return
 
-    ! layout
-    select case (lower(trim(adjustl(layout))))
-    case ("", "separate")
-      deck%layout = layout_separate
-    case ("series")
-      deck%layout = layout_series
-    case default
-      call deck_error(ctx, "layout", "must be 'separate' or 'series' (got '"//trim(layout)//"')", error)
-      return
-    end select
-
-    ! number of stages: the leading non-blank stage entries, no gaps
     rules%ctx = ctx
+    call rules%require_choice("layout", layout, layout_names, deck%layout, default=layout_separate)
+    ! number of stages: the leading non-blank stage entries, no gaps
     call rules%count_texts("stage", stage, "give stage = 'spur' | 'helical' | 'bevel' | 'planetary' for each stage", n)
     if (rules%failed(error)) return
     ! nothing may be given for a stage that does not exist
@@ -142,9 +132,7 @@ contains
     deck%module_mm = 0.0_wp
     do i = 1, n
       at = "("//int_str(i)//")"
-      kind = findloc(gear_kind_names, lower(trim(adjustl(stage(i)))), dim=1)
-      call rules%require_rule("stage"//at, kind /= 0, "must be 'spur', 'helical', 'bevel' or 'planetary' "// &
-        "(got '"//trim(stage(i))//"')")
+      call rules%require_choice("stage"//at, stage(i), gear_kind_names, kind)
       if (rules%failed(error)) return
       deck%st(i)%kind = kind
       call rules%require_rule("stage"//at, deck%layout /= layout_series .or. (kind /= gear_bevel .and. &
