@@ -319,7 +319,7 @@ contains
       coordinates, phi_ref, dynamics, delta, j_rotor, j_flywheel, md_table, crank_joint, cycle, &
       flywheel_density, flywheel_width_ratio
 
-    call begin_group(source, group_name, ctx, error)
+    call begin_group(source, group_name, ctx, error, rules)
     if (allocated(error)) return
     allocate (title)
     allocate (force(max_forces), moment(max_moments))
@@ -386,7 +386,6 @@ contains
     if (allocated(error)) return
 
     ! ---- frame, crank, speed law, gravity, steps
-    rules%ctx = ctx
     call rules%require_whole("frame_id", frame_id, 0, huge(1), frame_no)
     call rules%require_whole("crank_id", crank_id, 0, huge(1), crank_no)
     call rules%require_rule("crank_id", crank_no /= frame_no, &

@@ -107,7 +107,7 @@ contains
     type(namelist_probe_t) :: probe
     namelist /cam/ follower, l, l_over, f, f_cam, omega_dir, phi_start, dphi, n, theta, f2, vdir, ds_dphi
 
-    call begin_group(source, "cam", ctx, error)
+    call begin_group(source, "cam", ctx, error, rules)
     if (allocated(error)) return
     follower = " "
     l = unset_real; l_over = unset_real; f = unset_real; f_cam = unset_real
@@ -130,7 +130,6 @@ contains
     end do
     if (probe%failed(source, ctx, error)) return
 
-    rules%ctx = ctx
     call rules%require_choice("follower", follower, follower_names, deck%follower, default=follower_translating)
     ! every missing required variable in one message
     call rules%require_all_set([character(len=6) :: "l", "l_over", "f", "dphi"], [l, l_over, f, dphi])

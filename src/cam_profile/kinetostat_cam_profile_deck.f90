@@ -79,7 +79,7 @@ contains
     namelist /cam_profile/ law, beta, lift, follower, offset, arm, pivot, roller_radius, pressure_angle_max, &
       pressure_angle_max_return, rho_min, omega, step, l, l_over, f, f2, f_cam
 
-    call begin_group(source, "cam_profile", ctx, error)
+    call begin_group(source, "cam_profile", ctx, error, rules)
     if (allocated(error)) return
     law = " "
     follower = " "
@@ -94,7 +94,6 @@ contains
     end do
     if (probe%failed(source, ctx, error)) return
 
-    rules%ctx = ctx
     call rules%require_choice("follower", follower, follower_names, deck%design%follower)
     ! the segments: the leading non-blank laws, no gaps
     call rules%count_texts("law", law, "give one law per segment ('dwell', 'constant_velocity', 'parabolic', "// &

@@ -6,7 +6,7 @@ module kinetostat_deck_namelist
   use kinetostat_kinds, only: wp
   use kinetostat_error, only: error_t, fatal_error, exit_input
   use kinetostat_text, only: int_str, lower, printable, clipped, starts_with
-  use kinetostat_deck_rules, only: unset_real, values_out_of_memory
+  use kinetostat_deck_rules, only: unset_real, values_out_of_memory, deck_rules_t
   use kinetostat_deck_source, only: deck_source_t, deck_context_t, deck_line_count, deck_line, &
     deck_line_length, line_slice, line_search, line_records, record_part, record_text, cut_line, append_length, &
     record_width
@@ -865,9 +865,10 @@ contains
     end do
   end function assignment_starts
 
-  !> The start of every deck reader: the context its messages name (deck path and group)
-  !> and the syntax pre-check of the group's text (check_namelist_syntax) before the READ.
-  subroutine begin_group(source, group, ctx, error)
+  !> The start of every deck reader: the context its messages name (deck path and group),
+  !> given to its validator too, and the syntax pre-check of the group's text
+  !> (check_namelist_syntax) before the READ.
+  subroutine begin_group(source, group, ctx, error, rules)
     !> The deck.
     type(deck_source_t), intent(in) :: source
     !> Group name, lower case, without '&'.
@@ -876,8 +877,11 @@ contains
     type(deck_context_t), intent(out) :: ctx
     !> The syntax error (none when the text passes).
     type(error_t), allocatable, intent(out) :: error
+    !> The reader's validator, naming the same deck and group.
+    type(deck_rules_t), intent(out), optional :: rules
     ctx%path = source%path
     ctx%group = group
+    if (present(rules)) rules%ctx = ctx
     call check_namelist_syntax(source, group, error)
   end subroutine begin_group
 

@@ -52,8 +52,8 @@ module kinetostat_deck_rules
 
   !> A validator of one section of a reader: the deck and group its messages name, and the
   !> first failure. Its checks are the rules below and do nothing once one has failed, so a
-  !> section calls them in order and asks once, at its end, whether one failed:
-  !>     rules%ctx = ctx
+  !> section calls them in order and asks once, at its end, whether one failed (a reader's
+  !> begin_group gives it the deck and group):
   !>     call rules%require_positive("l_ab", deck%l_ab)
   !>     call rules%require_whole("n", deck%n, 1, max_steps, n)
   !>     if (rules%failed(error)) return

@@ -81,7 +81,7 @@ contains
     type(error_t), allocatable :: why
     namelist /gear_geometry/ m, z1, z2, x1, x2, shift, a_w, alpha, ha_star, c_star, sa_min_star, m1
 
-    call begin_group(source, "gear_geometry", ctx, error)
+    call begin_group(source, "gear_geometry", ctx, error, rules)
     if (allocated(error)) return
     shift = " "
     m = unset_real; z1 = unset_real; z2 = unset_real; x1 = unset_real; x2 = unset_real
@@ -93,7 +93,6 @@ contains
     end do
     if (probe%failed(source, ctx, error)) return
 
-    rules%ctx = ctx
     call rules%require_all_set([character(len=2) :: "m", "z1", "z2"], [m, z1, z2])
     call rules%require_positive("m", m)
     call require_teeth(rules, "z1", z1, iz1)

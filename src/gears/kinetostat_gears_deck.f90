@@ -87,7 +87,7 @@ contains
     type(namelist_probe_t) :: probe
     namelist /gears/ layout, stage, m1, z1, z2, m, dw1, alpha_w, beta, gamma, z3, k, alpha_w23
 
-    call begin_group(source, "gears", ctx, error)
+    call begin_group(source, "gears", ctx, error, rules)
     if (allocated(error)) return
     layout = " "
     stage = " "
@@ -103,7 +103,6 @@ contains
     end do
     if (probe%failed(source, ctx, error)) return
 
-    rules%ctx = ctx
     call rules%require_choice("layout", layout, layout_names, deck%layout, default=layout_separate)
     ! number of stages: the leading non-blank stage entries, no gaps
     call rules%count_texts("stage", stage, "give stage = 'spur' | 'helical' | 'bevel' | 'planetary' for each stage", n)

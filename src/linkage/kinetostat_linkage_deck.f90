@@ -246,7 +246,7 @@ contains
     namelist /linkage/ title, frame, g, gravity_angle, n, link, pair, drive, force, moment, step_values, &
       dynamics, delta, j_rotor, j_flywheel, cycle, md_table, flywheel_density, flywheel_width_ratio
 
-    call begin_group(source, group_name, ctx, error)
+    call begin_group(source, group_name, ctx, error, rules)
     if (allocated(error)) return
     allocate (title)
     title = ""
@@ -274,7 +274,6 @@ contains
       read (probe%records, nml=linkage, iostat=probe%ios, iomsg=probe%msg)
     end do
     if (probe%failed(source, ctx, error)) return
-    rules%ctx = ctx
     call rules%require_chars("title", title, title_chars)
     call rules%require_whole("frame", frame, 0, huge(1), frame_no)
     deck%g = optional_default(g, g_default)

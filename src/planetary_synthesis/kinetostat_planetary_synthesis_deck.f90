@@ -54,7 +54,7 @@ contains
     type(namelist_probe_t) :: probe
     namelist /planetary_synthesis/ scheme, u, k, u_tolerance, z_min, z_ring_min, m, m1
 
-    call begin_group(source, "planetary_synthesis", ctx, error)
+    call begin_group(source, "planetary_synthesis", ctx, error, rules)
     if (allocated(error)) return
     scheme = " "
     u = unset_real; k = unset_real; u_tolerance = unset_real; z_min = unset_real; z_ring_min = unset_real
@@ -71,7 +71,6 @@ contains
       call deck_error(ctx, "scheme", "must be 'single_row' (sun, planets, fixed ring; got '"//trim(scheme)//"')", error)
       return
     end select
-    rules%ctx = ctx
     call rules%require_all_set([character(len=1) :: "u", "k"], [u, k])
     call rules%require_set("u", u)
     call rules%require_rule("u", u > 2.0_wp .and. u <= 1000.0_wp, "must be in (2, 1000]: u_1H = 1 + z3/z1 with "// &

@@ -113,7 +113,7 @@ contains
     namelist /pr3050/ l_ca, l_cb, l_cs3, delta, l_bs2, l_s1a, gamma, g, m1, m2, m3, j1, j2, j3, &
       phi3_start, phi3_end, dphi3, omega3, eps3, dynamics, j_rotor
 
-    call begin_group(source, "pr3050", ctx, error)
+    call begin_group(source, "pr3050", ctx, error, rules)
     if (allocated(error)) return
     ! a stage this kind lacks: the reason and the way out, before the READ
     call refuse_translated_stages(source, "pr3050", "", error, cycle_reason= &
@@ -142,7 +142,6 @@ contains
     if (probe%failed(source, ctx, error)) return
 
     ! every missing required variable in one message
-    rules%ctx = ctx
     call rules%require_all_set([character(len=10) :: "l_ca", "l_cb", "l_cs3", "delta", "l_bs2", "l_s1a", "gamma", "m1", &
       "m2", "m3", "j1", "j2", "j3", "phi3_start", "phi3_end", "dphi3"], &
       [l_ca, l_cb, l_cs3, delta, l_bs2, l_s1a, gamma, m1, m2, m3, j1, j2, j3, phi3_start, phi3_end, dphi3])

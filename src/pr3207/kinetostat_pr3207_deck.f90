@@ -117,7 +117,7 @@ contains
       f5c, f5c_work, f5c_idle, phi_cut_start, phi_cut_end, dynamics, delta, j_rotor, j_flywheel, md_table, &
       flywheel_density, flywheel_width_ratio
 
-    call begin_group(source, "pr3207", ctx, error)
+    call begin_group(source, "pr3207", ctx, error, rules)
     if (allocated(error)) return
     ! a stage this kind lacks: the reason and the way out, before the READ
     call refuse_translated_stages(source, "pr3207", " but f5c", error)
@@ -139,7 +139,6 @@ contains
     if (probe%failed(source, ctx, error)) return
 
     ! every missing required variable in one message
-    rules%ctx = ctx
     call rules%require_all_set([character(len=6) :: "l_ab", "l_ac", "l_cd", "l_cs3", "m1", "m3", "m5", "j3", "omega1", "dphi"], &
       [l_ab, l_ac, l_cd, l_cs3, m1, m3, m5, j3, omega1, dphi])
 

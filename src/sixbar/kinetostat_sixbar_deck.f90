@@ -92,7 +92,7 @@ contains
       m1, m2, m3, m4, m5, j1, j2, j3, j4, omega1, g, dphi, n, phi_start, start_at_extreme, f5, legacy_eq2, &
       dynamics, delta, j_rotor, j_flywheel, md_table, flywheel_density, flywheel_width_ratio
 
-    call begin_group(source, "sixbar", ctx, error)
+    call begin_group(source, "sixbar", ctx, error, rules)
     if (allocated(error)) return
     ! a stage this kind lacks: the reason and the way out, before the READ
     call refuse_translated_stages(source, "sixbar", " but f5", error)
@@ -118,7 +118,6 @@ contains
     if (probe%failed(source, ctx, error)) return
 
     ! every missing required variable in one message
-    rules%ctx = ctx
     call rules%require_all_set([character(len=6) :: "a", "b", "l1", "lam2", "lam_s2", "lam3", "lam_de", "lam4", "lam_s4", "lam_e", &
       "m1", "m2", "m3", "m4", "m5", "j1", "j2", "j3", "j4", "omega1"], &
       [a, b, l1, lam2, lam_s2, lam3, lam_de, lam4, lam_s4, lam_e, m1, m2, m3, m4, m5, j1, j2, j3, j4, omega1])
