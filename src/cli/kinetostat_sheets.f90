@@ -25,7 +25,7 @@ module kinetostat_sheets
   use kinetostat_summary, only: column_stats_t, column_stats
   use kinetostat_run, only: run_options_t, block_rows, run_mechanism, format_summary, format_svg, format_dxf, format_plans, &
     course_dynamics, course_none, course_kinematics, course_kinetostatics, course_design
-  use kinetostat_registry, only: create_mechanism, known_kinds
+  use kinetostat_registry, only: create_mechanism, deck_mechanism
   use kinetostat_override, only: override_t
   use kinetostat_sketch, only: sketch_t
   use kinetostat_drawing, only: drawing_t, drawing_from_sketch
@@ -480,14 +480,8 @@ contains
     type(deck_source_t) :: source, patched
     call load_deck(path, source, error)
     if (allocated(error)) return
-    call read_group_name(source, group, error)
+    call deck_mechanism(source, group, mech, error)
     if (allocated(error)) return
-    call create_mechanism(group, mech)
-    if (.not. allocated(mech)) then
-      call fatal_error(error, exit_input, source%path//": &"//group//": unknown mechanism (known: "// &
-        known_kinds()//")")
-      return
-    end if
     if ((.not. mech%force_sheet .and. .not. allocated(mech%sheet_name)) .or. group == "gears" .or. &
         group == "cam") then
       call fatal_error(error, exit_usage, "sheets: "//source%path//" is &"//group//": the course sheets are drawn "// &
