@@ -15,7 +15,8 @@ module kinetostat_assur_deck
     deck_context_t, unset_real, unset_bits, max_deck_array, deck_array_capacities, deck_source_t, &
     namelist_probe_t, deck_error, require_all_set, is_set, require_set, require_positive, &
     require_nonnegative, require_rule, require_per_step, optional_default, count_values, steps_over_turn, &
-    is_whole_in, require_whole, require_chars, title_chars, text_bytes, text_chars, deck_rules_t, rule_nonnegative
+    is_whole_in, require_whole, require_chars, title_chars, text_bytes, text_chars, deck_rules_t, rule_nonnegative, &
+    rule_positive
   use kinetostat_vec2, only: unit_at, rotate, magnitude, cross
   use kinetostat_assur_kinematics, only: link_state_t, dyad_pose_t, kind_names, kind_has_mode, frame_state, &
     crank_state, set_dyad_pose, pose_ok, kind_rrr, kind_rrp, kind_rpr, kind_prp, kind_rpp
@@ -1201,6 +1202,9 @@ contains
     character(len=:), allocatable :: p, kn
     logical :: p1, p3
     integer :: kind, link2, link3
+    !> The checks of the dimensions and of the masses.
+    type(deck_rules_t) :: rules
+    rules = deck_rules_t(ctx)
     p = "dyad("//int_str(d)//")%"
     call require_rule(ctx, p//"kind", is_whole_in(dy%kind, 1, 5), "must be 1..5 "// &
       "(1 RRR, 2 RRP, 3 RPR, 4 PRP, 5 RPP), got "//number_str(dy%kind), error)
@@ -1253,8 +1257,8 @@ contains
     if (allocated(error)) return
     select case (kind)
     case (kind_rrr)
-      call require_positive(ctx, p//"l2", dy%l2, error); if (allocated(error)) return
-      call require_positive(ctx, p//"l3", dy%l3, error); if (allocated(error)) return
+      call rules%require_each(rule_positive, [character(len=len(p) + 2) :: p//"l2", p//"l3"], [dy%l2, dy%l3])
+      if (rules%failed(error)) return
       out%geom%l2 = dy%l2
       out%geom%l3 = dy%l3
     case (kind_rrp)
@@ -1282,13 +1286,12 @@ contains
     end if
     ! masses
     dy%m2 = optional_default(dy%m2, 0.0_wp)
-    call require_nonnegative(ctx, p//"m2", dy%m2, error); if (allocated(error)) return
     dy%j2 = optional_default(dy%j2, 0.0_wp)
-    call require_nonnegative(ctx, p//"j2", dy%j2, error); if (allocated(error)) return
     dy%m3 = optional_default(dy%m3, 0.0_wp)
-    call require_nonnegative(ctx, p//"m3", dy%m3, error); if (allocated(error)) return
     dy%j3 = optional_default(dy%j3, 0.0_wp)
-    call require_nonnegative(ctx, p//"j3", dy%j3, error); if (allocated(error)) return
+    call rules%require_each(rule_nonnegative, [character(len=len(p) + 2) :: p//"m2", p//"j2", p//"m3", p//"j3"], &
+      [dy%m2, dy%j2, dy%m3, dy%j3])
+    if (rules%failed(error)) return
     call read_pair(ctx, p//"s2", dy%s2, .true., error); if (allocated(error)) return
     call read_pair(ctx, p//"s3", dy%s3, .true., error); if (allocated(error)) return
     if (.not. is_set(dy%inner_on)) dy%inner_on = dy%link2

@@ -13,7 +13,7 @@ module kinetostat_linkage_deck
     deck_context_t, unset_bits, deck_source_t, namelist_probe_t, &
     deck_error, is_set, require_set, require_nonnegative, require_rule, require_per_step, optional_default, count_values, &
     require_whole, deck_array_capacities, require_chars, title_chars, text_bytes, text_chars, &
-    deck_rules_t
+    deck_rules_t, rule_finite
   use kinetostat_vec2, only: unit_at, magnitude
   use kinetostat_linkage, only: linkage_t, pair_r, pair_p, linkage_work_t, linkage_reference_pose, linkage_assemble, &
     point_position
@@ -496,10 +496,10 @@ contains
       p = "force("//int_str(k)//")%"
       call link_index(p//"link", force(k)%link, i, error, moving=.true.); if (allocated(error)) return
       deck%mech%forces(k)%link = i
-      call require_set(ctx, p//"at(1)", force(k)%at(1), error); if (allocated(error)) return
-      call require_set(ctx, p//"at(2)", force(k)%at(2), error); if (allocated(error)) return
+      call rules%require_each(rule_finite, [character(len=len(p) + 5) :: p//"at(1)", p//"at(2)", p//"angle"], &
+        [force(k)%at, force(k)%angle])
+      if (rules%failed(error)) return
       deck%mech%forces(k)%at = force(k)%at
-      call require_set(ctx, p//"angle", force(k)%angle, error); if (allocated(error)) return
       deck%mech%forces(k)%dir = unit_at(force(k)%angle * deg_to_rad)
       deck%mech%forces(k)%follow = force(k)%follow
       call read_load(p, force(k)%value, force(k)%idle, force(k)%phi_on, force(k)%phi_off, force(k)%column, &
