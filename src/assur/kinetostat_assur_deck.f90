@@ -1214,18 +1214,15 @@ contains
     p1 = kind == kind_prp
     p3 = kind == kind_rrp .or. kind == kind_prp .or. kind == kind_rpp
     ! link ids: new and distinct
-    call require_rule(ctx, p//"link2", is_set(dy%link2), "missing (required link number)", error)
-    if (allocated(error)) return
-    call require_rule(ctx, p//"link3", is_set(dy%link3), "missing (required link number)", error)
-    if (allocated(error)) return
-    call require_whole(ctx, p//"link2", dy%link2, 0, huge(1), link2, error); if (allocated(error)) return
-    call require_whole(ctx, p//"link3", dy%link3, 0, huge(1), link3, error); if (allocated(error)) return
-    call require_rule(ctx, p//"link2", all(ids /= link2), "link number "// &
-      int_str(link2)//" must be >= 0 and not used by the frame, the crank or an earlier dyad", error)
-    if (allocated(error)) return
-    call require_rule(ctx, p//"link3", all(ids /= link3) .and. link3 /= link2, &
-      "link number "//int_str(link3)//" must be >= 0, differ from link2 and not be used before", error)
-    if (allocated(error)) return
+    call rules%require_rule(p//"link2", is_set(dy%link2), "missing (required link number)")
+    call rules%require_rule(p//"link3", is_set(dy%link3), "missing (required link number)")
+    call rules%require_whole(p//"link2", dy%link2, 0, huge(1), link2)
+    call rules%require_whole(p//"link3", dy%link3, 0, huge(1), link3)
+    call rules%require_rule(p//"link2", all(ids /= link2), "link number "// &
+      int_str(link2)//" must be >= 0 and not used by the frame, the crank or an earlier dyad")
+    call rules%require_rule(p//"link3", all(ids /= link3) .and. link3 /= link2, &
+      "link number "//int_str(link3)//" must be >= 0, differ from link2 and not be used before")
+    if (rules%failed(error)) return
     call find_link(ctx, p//"on2", dy%on2, ids, .true., out%on(1), error); if (allocated(error)) return
     call find_link(ctx, p//"on3", dy%on3, ids, .true., out%on(2), error); if (allocated(error)) return
     call read_pair(ctx, p//"at2", dy%at2, .false., error); if (allocated(error)) return
