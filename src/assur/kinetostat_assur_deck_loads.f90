@@ -5,7 +5,7 @@ module kinetostat_assur_deck_loads
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str, number_str
   use kinetostat_deck, only: deck_context_t, max_deck_array, deck_error, is_set, require_set, require_rule, &
-    optional_default, require_whole
+    optional_default, require_whole, deck_rules_t
   use kinetostat_vec2, only: magnitude
   use kinetostat_assur, only: output_pair_of
   use kinetostat_assur_deck_types, only: schedule_in_t, load_constant, load_window, load_column, load_table, &
@@ -179,17 +179,18 @@ contains
     type(load_schedule_t), intent(out) :: load
     type(error_t), allocatable, intent(out) :: error
     integer :: column
+    !> The checks of a column schedule.
+    type(deck_rules_t) :: rules
     if (is_set(s%column)) then
-      call require_rule(ctx, name//"column", .not. any(is_set([s%value, s%idle, s%phi_on, s%phi_off])), &
-        "give either column (per-step values) or value [idle, phi_on, phi_off], not both", error)
-      if (allocated(error)) return
-      call require_whole(ctx, name//"column", s%column, 1, max_deck_array, column, error)
-      if (allocated(error)) return
+      rules = deck_rules_t(ctx)
+      call rules%require_rule(name//"column", .not. any(is_set([s%value, s%idle, s%phi_on, s%phi_off])), &
+        "give either column (per-step values) or value [idle, phi_on, phi_off], not both")
+      call rules%require_whole(name//"column", s%column, 1, max_deck_array, column)
       ! column*n in real arithmetic: both may be up to a million
-      call require_rule(ctx, name//"column", real(column, wp) * real(n, wp) <= real(n_values, wp), &
+      call rules%require_rule(name//"column", real(column, wp) * real(n, wp) <= real(n_values, wp), &
         "step_values has "//int_str(n_values)//" values; column "//int_str(column)//" needs "// &
-        number_str(real(column, wp) * real(n, wp))//" (n = "//int_str(n)//" per column)", error)
-      if (allocated(error)) return
+        number_str(real(column, wp) * real(n, wp))//" (n = "//int_str(n)//" per column)")
+      if (rules%failed(error)) return
       load%kind = load_column
       load%offset = (column - 1) * n
       return

@@ -531,45 +531,43 @@ contains
       type(error_t), allocatable, intent(out) :: error
       logical :: wanted, turning
       real(wp) :: span, whole
+      !> The checks of what the dynamics asks of the drive, the steps and the loads.
+      type(deck_rules_t) :: checks
+      checks = deck_rules_t(ctx)
       wanted = len_trim(dynamics) > 0 .and. trim(adjustl(dynamics)) /= "none"
       if (wanted) then
-        call require_rule(ctx, "drive(2)", nd == 1, "the machine dynamics reduces the machine to one input: a "// &
+        call checks%require_rule("drive(2)", nd == 1, "the machine dynamics reduces the machine to one input: a "// &
           "linkage of "//int_str(nd)//" drives (W = "//int_str(nd)//") has no single reduced moment of inertia; "// &
-          "give one drive", error)
-        if (allocated(error)) return
+          "give one drive")
         turning = deck%mech%pairs(deck%mech%drives(1)%pair)%kind == pair_r
-        call require_rule(ctx, "dynamics", turning .or. trim(adjustl(dynamics)) == "reduced", "a sliding drive's "// &
+        call checks%require_rule("dynamics", turning .or. trim(adjustl(dynamics)) == "reduced", "a sliding drive's "// &
           "stroke goes out and back with no turn to make a cycle of: only dynamics = 'reduced' (reduced to the "// &
-          "stroke: J_red in kg, M_red in N)", error)
-        if (allocated(error)) return
+          "stroke: J_red in kg, M_red in N)")
+        if (checks%failed(error)) return
       end if
       call read_dynamics_settings(ctx, dynamics, delta, j_rotor, j_flywheel, optional_default(drive(1)%omega, 0.0_wp), &
         deck%dyn, error, md_table=md_table, cycle=cycle, flywheel_density=flywheel_density, &
         flywheel_width_ratio=flywheel_width_ratio)
       if (allocated(error)) return
       if (deck%dyn%mode < dynamics_steady) return
-      call require_rule(ctx, "drive(1)%values", .not. deck%listed(1), "a steady cycle needs the drive's law by "// &
-        "start and step over the cycle, not a list of values", error)
-      if (allocated(error)) return
-      call require_rule(ctx, "drive(1)%omega_column", deck%omega_column(1) == 0 .and. deck%eps_column(1) == 0, &
-        "a steady cycle finds the speed and acceleration (omega is the mean speed): no columns of them", error)
-      if (allocated(error)) return
-      call require_rule(ctx, "drive(1)%eps", deck%eps(1) == 0.0_wp, "a steady cycle finds the acceleration from the "// &
-        "true motion: leave eps out", error)
-      if (allocated(error)) return
+      call checks%require_rule("drive(1)%values", .not. deck%listed(1), "a steady cycle needs the drive's law by "// &
+        "start and step over the cycle, not a list of values")
+      call checks%require_rule("drive(1)%omega_column", deck%omega_column(1) == 0 .and. deck%eps_column(1) == 0, &
+        "a steady cycle finds the speed and acceleration (omega is the mean speed): no columns of them")
+      call checks%require_rule("drive(1)%eps", deck%eps(1) == 0.0_wp, "a steady cycle finds the acceleration from "// &
+        "the true motion: leave eps out")
       whole = deck%dyn%cycle_deg
       span = real(deck%n - 1, wp) * deck%step(1)
-      call require_rule(ctx, "drive(1)%step", abs(span - whole) <= 1.0e-9_wp * whole, "the steps must cover "// &
+      call checks%require_rule("drive(1)%step", abs(span - whole) <= 1.0e-9_wp * whole, "the steps must cover "// &
         "exactly the cycle ("//int_str(nint(whole))//" deg) with a steady cycle: (n - 1)*step = "//real_str(span)// &
-        " deg, not "//int_str(nint(whole)), error)
-      if (allocated(error)) return
-      call require_rule(ctx, "cycle", whole > 360.0_wp .or. .not. (any(deck%force_load%period > 360.0_wp) .or. &
+        " deg, not "//int_str(nint(whole)))
+      call checks%require_rule("cycle", whole > 360.0_wp .or. .not. (any(deck%force_load%period > 360.0_wp) .or. &
         any(deck%moment_load%period > 360.0_wp)), "a load table spans more than 360 deg (a four-stroke "// &
-        "cycle): give cycle = 720 (the engine's cycle of two turns) and steps over 720 deg", error)
-      if (allocated(error)) return
-      call require_rule(ctx, "step_values", .not. (any(deck%force_load%column > 0) .or. &
+        "cycle): give cycle = 720 (the engine's cycle of two turns) and steps over 720 deg")
+      call checks%require_rule("step_values", .not. (any(deck%force_load%column > 0) .or. &
         any(deck%moment_load%column > 0)), "a steady cycle needs every load at any drive angle: give it as a "// &
-        "constant or a window, not per step", error)
+        "constant or a window, not per step")
+      call checks%take(error)
     end subroutine read_dynamics
     !> Every step's position of the links that tables are over lies inside the table (the
     !> poses by the run's continuation; a step that does not assemble is left to the run).
