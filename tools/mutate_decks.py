@@ -200,6 +200,26 @@ def numeric(token):
     return REAL_RE.match(value) is not None
 
 
+@functools.lru_cache(maxsize=None)
+def value_targets(text, kind):
+    """((name, index, start, end, token), ...): the elements a value kind can change (once a
+    text and kind: every draw of a deck's kind chooses among the same)."""
+    targets = []
+    for name, _, _, els in assignments(text):
+        for idx, (s, e) in enumerate(els):
+            tok = text[s:e]
+            if kind == "int_for_real" and not (numeric(tok) and not INT_RE.match(tok.split("*")[-1])):
+                continue
+            if kind == "real_for_int" and not INT_RE.match(tok.split("*")[-1]):
+                continue
+            if kind in ("zero", "negative", "big", "neg_big", "tiny", "e20", "em20", "e15") and not numeric(tok):
+                continue
+            if kind in ("zero", "negative") and float(tok.split("*")[-1].replace("d", "e").replace("D", "e")) == 0.0:
+                continue
+            targets.append((name, idx, s, e, tok))
+    return tuple(targets)
+
+
 def value_mutation(text, kind, rng):
     """(description, new_text) for a value kind, or None when the deck offers no target."""
     assigns = assignments(text)
@@ -216,19 +236,7 @@ def value_mutation(text, kind, rng):
             return "%s: one element more" % name, text[:e] + ", " + text[s:e] + text[e:]
         prev_end, (s, e) = els[-2][1], els[-1]
         return "%s: last element dropped" % name, text[:prev_end] + text[e:]
-    targets = []
-    for name, _, _, els in assigns:
-        for idx, (s, e) in enumerate(els):
-            tok = text[s:e]
-            if kind == "int_for_real" and not (numeric(tok) and not INT_RE.match(tok.split("*")[-1])):
-                continue
-            if kind == "real_for_int" and not INT_RE.match(tok.split("*")[-1]):
-                continue
-            if kind in ("zero", "negative", "big", "neg_big", "tiny", "e20", "em20", "e15") and not numeric(tok):
-                continue
-            if kind in ("zero", "negative") and float(tok.split("*")[-1].replace("d", "e").replace("D", "e")) == 0.0:
-                continue
-            targets.append((name, idx, s, e, tok))
+    targets = value_targets(text, kind)
     if not targets:
         return None
     name, idx, s, e, tok = rng.choice(targets)
