@@ -251,19 +251,24 @@ assert r["j_rotor"] == "0.7" and r["delta"] == "0.03" and abs(float(r["dyn_delta
 PY
 then pass; else fail sweep-header-unique "exit $rc: $(head -1 "$cli_tmp/sweep_delta.csv" | head -c 300)"; fi
 # every bundled deck's --format summary (with --kinematics, and --shaking where a linkage)
-bad=""
+# (each header noted as "DECK OPTS|HEADER"; one awk finds the names twice)
+: >"$cli_tmp/hdrs"
 for deck in data/*.nml; do
   case "$deck" in data/assur_toggle.nml) continue ;; esac
+  name="${deck##*/}"
   for opts in "" "--kinematics" "--shaking --kinematics"; do
     # a heavy deck (lib.sh) with the most columns only
-    heavy_deck "$(basename "$deck" .nml)" && [ "$opts" != "--shaking --kinematics" ] && continue
+    heavy_deck "${name%.nml}" && [ "$opts" != "--shaking --kinematics" ] && continue
     # shellcheck disable=SC2086
     "$KINETOSTAT" "$deck" --format summary --quiet $opts >"$cli_tmp/hdr.csv" 2>/dev/null || continue
-    d=$(head -1 "$cli_tmp/hdr.csv" | tr ',' '\n' | sort | uniq -d | head -3 | tr '\n' ' ')
-    [ -n "$d" ] && bad="$bad $deck $opts: $d;"
+    read -r header <"$cli_tmp/hdr.csv"
+    printf '%s %s|%s\n' "$deck" "$opts" "$header" >>"$cli_tmp/hdrs"
   done
 done
-[ -z "$bad" ] && pass || fail summary-header-unique "names twice:$bad"
+bad=$(awk -F'|' '{ n = split($2, names, ","); split("", seen); twice = ""
+  for (i = 1; i <= n; i++) if (seen[names[i]]++ == 1) twice = twice " " names[i]
+  if (twice != "") printf " %s:%s;", $1, twice }' "$cli_tmp/hdrs")
+[ -s "$cli_tmp/hdrs" ] && [ -z "$bad" ] && pass || fail summary-header-unique "names twice:$bad (headers: $(wc -l <"$cli_tmp/hdrs"))"
 
 # --- sweep --keep-going: every variant written, an error column last (empty on good rows),
 # exit 2 when any failed; the header does not depend on a variant succeeding, and --part
