@@ -147,7 +147,7 @@ run_py() {
   local name env=() status="" fd chunks
   # the exported variables (no process: a variable's attributes, by the first letter of its name)
   for name in ${!A@} ${!B@} ${!C@} ${!D@} ${!E@} ${!F@} ${!G@} ${!H@} ${!I@} ${!J@} ${!K@} ${!L@} ${!M@} ${!N@} ${!O@} ${!P@} ${!Q@} ${!R@} ${!S@} ${!T@} ${!U@} ${!V@} ${!W@} ${!X@} ${!Y@} ${!Z@} ${!a@} ${!b@} ${!c@} ${!d@} ${!e@} ${!f@} ${!g@} ${!h@} ${!i@} ${!j@} ${!k@} ${!l@} ${!m@} ${!n@} ${!o@} ${!p@} ${!q@} ${!r@} ${!s@} ${!t@} ${!u@} ${!v@} ${!w@} ${!x@} ${!y@} ${!z@} ${!_@}; do
-    [[ ${!name@a} == *x* ]] && env+=("$name=${!name}")
+    [[ -v $name ]] && [[ ${!name@a} == *x* ]] && env+=("$name=${!name}")
   done
   printf '%s\0' "$BASHPID" "$PWD" "${#env[@]}" "${env[@]}" "$@" $'\001end' 1<>"$py_server_dir/req"
   exec {fd}<>"$py_server_dir/resp"
