@@ -50,7 +50,7 @@ checks valid-output and expected-error:
 --every K runs every K-th deck of the fixed set (by bundled deck, then by class), every deck
 of user_strings, set_strings and the special runs, and of the other classes of strings the
 first deck of each namelist group (and of each capacity row drawn) and every K-th of the others
-(string_sample) (tools/test: --every 7; tools/test --long the whole set), but a heavy deck's
+(string_sample) (tools/test: --every 9; tools/test --long the whole set), but a heavy deck's
 (HEAVY_DECKS) decoded CP1251 deck, which runs its whole analysis, with K = 1 only; with K > 1 the CSV is written with -o only (the same CSV as on
 standard output, checked the same way), and a deck runs one way: the table or the CSV with -o
 in turn along the fixed order (each class meets both; --modes lists them), the table only for
@@ -818,7 +818,7 @@ def main():
     # leftovers; --every 1 runs both
     # ... and runs an ordinary derived deck one way, the table or the CSV with -o, in turn
     # along the fixed order (every class meets both), a deck of a class with an expected error
-    # the table only (one_mode_of; tools/mutate_decks.py --every 7 --modes lists them)
+    # the table only (one_mode_of; tools/mutate_decks.py --every 9 --modes lists them)
     jobs = [(binary, name, desc, data, extra, i % OUTFILE_EVERY == 0, deadline, SPECS.get(name), every == 1,
              one_mode_of(i, every, name, extra))
             for i, (name, desc, data, extra) in enumerate(decks) if args.only in name and sampled(i, every, name, extra)]
