@@ -50,7 +50,7 @@ checks valid-output and expected-error:
 --every K runs every K-th deck of the fixed set (by bundled deck, then by class), every deck
 of user_strings, set_strings and the special runs, and of the other classes of strings the
 first deck of each namelist group (and of each capacity row drawn) and every K-th of the others
-(string_sample) (tools/test: --every 5; tools/test --long the whole set), but a heavy deck's
+(string_sample) (tools/test: --every 9; tools/test --long the whole set), but a heavy deck's
 (HEAVY_DECKS) decoded CP1251 deck, which runs its whole analysis, with K = 1 only; with K > 1 the CSV is written with -o only (the same CSV as on
 standard output, checked the same way), and a deck runs one way: the table or the CSV with -o
 in turn along the fixed order (each class meets both; --modes lists them), the table only for
@@ -200,6 +200,26 @@ def numeric(token):
     return REAL_RE.match(value) is not None
 
 
+@functools.lru_cache(maxsize=None)
+def value_targets(text, kind):
+    """((name, index, start, end, token), ...): the elements a value kind can change (once a
+    text and kind: every draw of a deck's kind chooses among the same)."""
+    targets = []
+    for name, _, _, els in assignments(text):
+        for idx, (s, e) in enumerate(els):
+            tok = text[s:e]
+            if kind == "int_for_real" and not (numeric(tok) and not INT_RE.match(tok.split("*")[-1])):
+                continue
+            if kind == "real_for_int" and not INT_RE.match(tok.split("*")[-1]):
+                continue
+            if kind in ("zero", "negative", "big", "neg_big", "tiny", "e20", "em20", "e15") and not numeric(tok):
+                continue
+            if kind in ("zero", "negative") and float(tok.split("*")[-1].replace("d", "e").replace("D", "e")) == 0.0:
+                continue
+            targets.append((name, idx, s, e, tok))
+    return tuple(targets)
+
+
 def value_mutation(text, kind, rng):
     """(description, new_text) for a value kind, or None when the deck offers no target."""
     assigns = assignments(text)
@@ -216,19 +236,7 @@ def value_mutation(text, kind, rng):
             return "%s: one element more" % name, text[:e] + ", " + text[s:e] + text[e:]
         prev_end, (s, e) = els[-2][1], els[-1]
         return "%s: last element dropped" % name, text[:prev_end] + text[e:]
-    targets = []
-    for name, _, _, els in assigns:
-        for idx, (s, e) in enumerate(els):
-            tok = text[s:e]
-            if kind == "int_for_real" and not (numeric(tok) and not INT_RE.match(tok.split("*")[-1])):
-                continue
-            if kind == "real_for_int" and not INT_RE.match(tok.split("*")[-1]):
-                continue
-            if kind in ("zero", "negative", "big", "neg_big", "tiny", "e20", "em20", "e15") and not numeric(tok):
-                continue
-            if kind in ("zero", "negative") and float(tok.split("*")[-1].replace("d", "e").replace("D", "e")) == 0.0:
-                continue
-            targets.append((name, idx, s, e, tok))
+    targets = value_targets(text, kind)
     if not targets:
         return None
     name, idx, s, e, tok = rng.choice(targets)
@@ -810,7 +818,7 @@ def main():
     # leftovers; --every 1 runs both
     # ... and runs an ordinary derived deck one way, the table or the CSV with -o, in turn
     # along the fixed order (every class meets both), a deck of a class with an expected error
-    # the table only (one_mode_of; tools/mutate_decks.py --every 5 --modes lists them)
+    # the table only (one_mode_of; tools/mutate_decks.py --every 9 --modes lists them)
     jobs = [(binary, name, desc, data, extra, i % OUTFILE_EVERY == 0, deadline, SPECS.get(name), every == 1,
              one_mode_of(i, every, name, extra))
             for i, (name, desc, data, extra) in enumerate(decks) if args.only in name and sampled(i, every, name, extra)]

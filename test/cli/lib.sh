@@ -116,6 +116,51 @@ deck_with() {
   echo "$cli_tmp/$name.nml"
 }
 
+# run_py ARGS...: `python3 ARGS...` (ARGS: - with the script on standard input, -c CODE, or
+# FILE.py, then the script's arguments) run by the script's Python server when one is
+# running (tools/python_server.py: one interpreter for the many short calls of a script, each
+# call in fresh globals with its own arguments, working directory, environment, standard
+# input, output and exit status), else by python3. tools/test starts a server before each CLI
+# script and stops it after (python_server_start, python_server_stop: its processor time is
+# the script's). One call at a time: no run_py in a background job or beside another in a
+# pipeline.
+python_server_start() {
+  [ -z "${py_server_pid:-}" ] || return 0
+  py_server_dir="$cli_tmp/python_server"
+  rm -rf "$py_server_dir"
+  mkdir -p "$py_server_dir" && mkfifo "$py_server_dir/req" "$py_server_dir/resp" || return 1
+  python3 "$root/tools/python_server.py" "$py_server_dir" </dev/null &
+  py_server_pid=$!
+  # its first answer once it reads its requests (a request sent before would be lost)
+  local ready=""
+  read -r ready <"$py_server_dir/resp"
+  [ "$ready" = ready ] || { echo "python_server_start: no server ($ready)" >&2; wait "$py_server_pid"; py_server_pid=""; }
+}
+python_server_stop() {
+  [ -n "${py_server_pid:-}" ] || return 0
+  printf 'quit\0\001end\0' 1<>"$py_server_dir/req"
+  wait "$py_server_pid"
+  py_server_pid=""
+}
+run_py() {
+  if [ -z "${py_server_pid:-}" ] || ! kill -0 "$py_server_pid" 2>/dev/null; then python3 "$@"; return; fi
+  local name env=() status="" fd chunks
+  # the exported variables (no process: a variable's attributes, by the first letter of its name)
+  for name in ${!A@} ${!B@} ${!C@} ${!D@} ${!E@} ${!F@} ${!G@} ${!H@} ${!I@} ${!J@} ${!K@} ${!L@} ${!M@} ${!N@} ${!O@} ${!P@} ${!Q@} ${!R@} ${!S@} ${!T@} ${!U@} ${!V@} ${!W@} ${!X@} ${!Y@} ${!Z@} ${!a@} ${!b@} ${!c@} ${!d@} ${!e@} ${!f@} ${!g@} ${!h@} ${!i@} ${!j@} ${!k@} ${!l@} ${!m@} ${!n@} ${!o@} ${!p@} ${!q@} ${!r@} ${!s@} ${!t@} ${!u@} ${!v@} ${!w@} ${!x@} ${!y@} ${!z@} ${!_@}; do
+    [[ -v $name ]] && [[ ${!name@a} == *x* ]] && env+=("$name=${!name}")
+  done
+  printf '%s\0' "$BASHPID" "$PWD" "${#env[@]}" "${env[@]}" "$@" $'\001end' 1<>"$py_server_dir/req"
+  exec {fd}<>"$py_server_dir/resp"
+  until read -r -t 5 -u "$fd" status; do
+    kill -0 "$py_server_pid" 2>/dev/null || { status=""; break; }
+  done
+  exec {fd}<&-
+  if [ -z "$status" ]; then echo "run_py: the Python server stopped (tools/python_server.py)" >&2; return 1; fi
+  mapfile -d '' chunks <"$py_server_dir/out"; printf '%s' "${chunks[@]}"
+  mapfile -d '' chunks <"$py_server_dir/err"; printf '%s' "${chunks[@]}" >&2
+  return "$status"
+}
+
 # check_job CHECKER LABEL ARGS...: a call `python3 tools/CHECKER.py ARGS...` (no argument
 # holding a tab), noted to run with the others of CHECKER in one Python process by
 # check_batch CHECKER: one check per call, LABEL its name, its first 20 lines of output on

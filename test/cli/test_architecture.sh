@@ -5,7 +5,7 @@
 # - one module per file, the file named after its module, every module prefixed kinetostat_;
 # - no folder holds more than 30 % of the lines of src/.
 # A new folder must be given its layer here and in docs/architecture.md's map.
-python3 - "$root/src" <<'PY' && pass || fail "architecture-layers" "see above"
+run_py - "$root/src" <<'PY' && pass || fail "architecture-layers" "see above"
 import os, re, sys
 src = sys.argv[1]
 layers = {"core": 0, "deck": 1, "output": 1, "pictures": 2, "plans": 2.2, "shaking": 2.5, "pipeline": 3, "compare": 3, "dynamics": 4, "convert": 6,

@@ -224,7 +224,7 @@ run_ks "$sc" --format csv --frame global
 cmp -s "$out" "$cli_tmp/frame_global.csv" && pass || fail frame-global-is-default "--frame global differs from the default"
 # the slider's frame pair F30 (guide along x): along 0, across = F30N; the crank pin F10 at
 # phi1 = 0 in crank axes = its global components; phi1 = 90: along = F10y, across = -F10x
-python3 - "$cli_tmp/frame_link.csv" <<'PY' && pass || fail frame-link-csv-values "link-axes values wrong"
+run_py - "$cli_tmp/frame_link.csv" <<'PY' && pass || fail frame-link-csv-values "link-axes values wrong"
 import csv, sys
 rows = list(csv.DictReader(open(sys.argv[1])))
 bad = []
@@ -255,7 +255,7 @@ run_ks "$sc" --frame link --lang ru
 grep -q '^ РЕАКЦИИ В ОСЯХ ЗВЕНА' "$out" && pass || fail frame-link-table-ru "no Russian heading"
 # JSON: the link-axes columns carry their frame and link
 run_ks "$sc" --format json --frame link
-python3 - "$out" <<'PY' && pass || fail frame-link-json "link-axes columns without frame/link"
+run_py - "$out" <<'PY' && pass || fail frame-link-json "link-axes columns without frame/link"
 import json, sys
 d = json.load(open(sys.argv[1]))
 cols = {c["name"]: c for c in d["columns"]}

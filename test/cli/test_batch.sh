@@ -72,10 +72,10 @@ grep -q '^   --set l_ab=0.12$' "$out" && grep -q '^   --set dphi=15$' "$out" && 
 grep -q '^   L_AB            =   1.200000000E-01  m (--set)$' "$out" && pass || fail set-echo-mark "L_AB is not marked (--set)"
 [ "$(grep -c '(--set)' "$out")" -eq 2 ] && pass || fail set-echo-mark-count "expected 2 marked records: $(grep '(--set)' "$out")"
 run_ks data/assur_slider_crank.nml --set 'dyad(1)%l2=0.36' --format json
-python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); assert d["overrides"] == ["dyad(1)%l2=0.36"], d["overrides"]' "$out" \
+run_py -c 'import json,sys; d=json.load(open(sys.argv[1])); assert d["overrides"] == ["dyad(1)%l2=0.36"], d["overrides"]' "$out" \
   && pass || fail set-json-overrides "JSON has no overrides list"
 run_ks data/pr3207.nml --set l_ab=0.12 --format json
-python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); assert [e["name"] for e in d["input"] if e.get("overridden")] == ["L_AB"]' "$out" \
+run_py -c 'import json,sys; d=json.load(open(sys.argv[1])); assert [e["name"] for e in d["input"] if e.get("overridden")] == ["L_AB"]' "$out" \
   && pass || fail set-json-mark "JSON does not mark L_AB overridden"
 # without --set nothing changes (the goldens cover this byte for byte)
 

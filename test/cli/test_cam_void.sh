@@ -3,7 +3,7 @@
 # never 0; the summary leaves them out of the extremes and means and says how many.
 
 run_ks data/cam_translating.nml --format csv
-python3 - "$out" <<'PY' && pass || fail cam-void-csv "jammed/lost rows are not empty in the force columns"
+run_py - "$out" <<'PY' && pass || fail cam-void-csv "jammed/lost rows are not empty in the force columns"
 import csv, sys
 rows = list(csv.DictReader(open(sys.argv[1])))
 void = [r for r in rows if r["JAM"] == "1" or r["LOST"] == "1"]
@@ -16,7 +16,7 @@ if not ok:
 PY
 
 run_ks data/cam_translating.nml --format json
-python3 - "$out" <<'PY' && pass || fail cam-void-json "JSON invalid or the void cells are not null"
+run_py - "$out" <<'PY' && pass || fail cam-void-json "JSON invalid or the void cells are not null"
 import json, sys
 doc = json.load(open(sys.argv[1]))
 cols = [c["name"] if isinstance(c, dict) else c for c in doc["columns"]]
@@ -31,7 +31,7 @@ PY
 # the stretches between such steps, divided by the angle they cover), rows_left_out = 2
 run_ks data/cam_translating.nml --format csv; cp "$out" "$cli_tmp/cam_void.csv"
 run_ks data/cam_translating.nml --format summary
-python3 - "$out" "$cli_tmp/cam_void.csv" <<'PY' && pass || fail cam-void-summary "summary counts jammed/lost steps"
+run_py - "$out" "$cli_tmp/cam_void.csv" <<'PY' && pass || fail cam-void-summary "summary counts jammed/lost steps"
 import csv, sys
 s = next(csv.DictReader(open(sys.argv[1])))
 rows = list(csv.DictReader(open(sys.argv[2])))

@@ -38,7 +38,7 @@ cv_drop_last() {  # DECK -> 1 when its last row is left out
 # cv_csv_without IN OUT REGEX [DROP-LAST]: the CSV without the columns matching REGEX (and
 # without its last row when DROP-LAST is 1).
 cv_csv_without() {
-  python3 - "$1" "$2" "$3" "${4:-0}" <<'PY'
+  run_py - "$1" "$2" "$3" "${4:-0}" <<'PY'
 import csv, re, sys
 src, dst, pattern, drop_last = sys.argv[1:5]
 with open(src, newline="") as f:
@@ -155,7 +155,7 @@ fi
 
 # comments go before what their variable became: the engine's gas-force comment before force(1)
 run_ks convert docs/examples/engine.nml --to linkage
-if python3 - "$out" <<'PY'
+if run_py - "$out" <<'PY'
 import sys
 lines = open(sys.argv[1]).read().splitlines()
 i = lines.index("  ! gas force on the piston, towards the crank (-x), N, over the crank angle (deg):")

@@ -135,7 +135,7 @@ expect_diff diff-unknown-option 2 "unknown option '--frob'" --frob "$dexp/pr3207
 
 # --- CSV columns are matched by name: another order is the same file; a column on one side
 # only is a difference (exit 1, listed); --common compares the shared columns only
-python3 - "$dexp/assur_fourbar.csv" "$cli_tmp/reordered.csv" <<'PY'
+run_py - "$dexp/assur_fourbar.csv" "$cli_tmp/reordered.csv" <<'PY'
 import csv, sys
 rows = list(csv.reader(open(sys.argv[1])))
 order = list(range(len(rows[0])))[::-1]

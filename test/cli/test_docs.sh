@@ -16,7 +16,7 @@ done
 # = 8282 - 4500 N, relative 1e-6 (the rod's own inertia adds a small transverse part, < 1e-6
 # of it here).
 run_ks docs/examples/engine.nml --format csv
-python3 - "$out" <<'PY' && pass || fail docs-engine-hand-check "F23 at phi1 = 360 is not 3782 N (rel 1e-6)"
+run_py - "$out" <<'PY' && pass || fail docs-engine-hand-check "F23 at phi1 = 360 is not 3782 N (rel 1e-6)"
 import csv, sys
 rows = [r for r in csv.DictReader(open(sys.argv[1])) if float(r["phi1"]) == 360.0]
 expected = 8282 - 0.8 * 0.05 * 300**2 * (1 + 0.05 / 0.2)
@@ -30,7 +30,7 @@ PY
 # x = r cos(phi) + sqrt(l^2 - r^2 sin^2(phi)) by hand, equals -(work of M1) of a 0.25 deg run
 # (gravity and inertia do no net work over the cycle); relative 1e-3 (trapezoidal rules).
 run_ks docs/examples/engine.nml --set dphi=0.25 --set n=2881 --format summary
-python3 - "$out" docs/examples/engine.nml <<'PY' && pass || fail docs-engine-cycle-work "the engine's work per cycle is not the indicator diagram's"
+run_py - "$out" docs/examples/engine.nml <<'PY' && pass || fail docs-engine-cycle-work "the engine's work per cycle is not the indicator diagram's"
 import csv, math, re, sys
 row = next(csv.DictReader(open(sys.argv[1])))
 deck = open(sys.argv[2]).read()
@@ -50,7 +50,7 @@ if not work > 400 or abs(computed - work) > 1e-3 * work:
 PY
 # README "One example": every shown line (not the '...' cuts) is a line of the real output.
 run_ks data/pr3207.nml
-python3 - README.md "$out" <<'PY' && pass || fail readme-example "README's example lines are not in the output"
+run_py - README.md "$out" <<'PY' && pass || fail readme-example "README's example lines are not in the output"
 import sys
 readme = open(sys.argv[1], encoding="utf-8").read()
 block = readme.split("## One example", 1)[1].split("```", 2)[1]
@@ -72,7 +72,7 @@ if grep -q '^different: 415 of 450 values differ' "$out"; then pass; else fail d
 "$KINETOSTAT" sweep docs/examples/fourbar.nml --vary 'dyad(1)%at2(1)=0.08:0.12:5' 2>/dev/null |
   awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i } { print $1 "," $c["M1_max"] "," $c["M1_min"] "," $c["F10_max"] }' \
   >"$cli_tmp/tut_sweep.txt"
-python3 - docs/tutorial.md "$cli_tmp/tut_sweep.txt" <<'PY' && pass || fail docs-tutorial-sweep "the tutorial's sweep rows are not the program's"
+run_py - docs/tutorial.md "$cli_tmp/tut_sweep.txt" <<'PY' && pass || fail docs-tutorial-sweep "the tutorial's sweep rows are not the program's"
 import sys
 doc = open(sys.argv[1], encoding="utf-8").read()
 block = doc.split("## 4. A parameter study", 1)[1].split("```")[3]

@@ -25,12 +25,12 @@ check_batch dxf_check
 # the check can fail: joint A moved by 1 mm (the first circle's x)
 awk 'BEGIN{c=0} {print} /^CIRCLE$/ {c=1} c==1 && /^ *10$/ {getline; printf "%.6f\n", $1 + 1; c=2}' \
   "$cli_tmp/sixbar.1.dxf" >"$cli_tmp/moved.dxf"
-python3 "$dxf_check" "$cli_tmp/moved.dxf" "$cli_tmp/sixbar.kin.csv" 1 >"$cli_tmp/check.out" 2>&1
+run_py "$dxf_check" "$cli_tmp/moved.dxf" "$cli_tmp/sixbar.kin.csv" 1 >"$cli_tmp/check.out" 2>&1
 grep -q '^point A: no circle on JOINTS' "$cli_tmp/check.out" && pass \
   || fail dxf-check-can-fail "a moved joint was not reported as such: $(head -3 "$cli_tmp/check.out")"
 # ... and so can it in a batch (tools/batch_check.py, as the decks' checks above run)
 printf 'moved\t%s\t%s\t1\n' "$cli_tmp/moved.dxf" "$cli_tmp/sixbar.kin.csv" >"$cli_tmp/moved.tsv"
-python3 "$root/tools/batch_check.py" dxf_check "$cli_tmp/moved.tsv" "$cli_tmp/moved" >"$cli_tmp/moved.status" 2>&1
+run_py "$root/tools/batch_check.py" dxf_check "$cli_tmp/moved.tsv" "$cli_tmp/moved" >"$cli_tmp/moved.status" 2>&1
 grep -qx "$(printf 'moved\t1')" "$cli_tmp/moved.status" && grep -q '^point A: no circle on JOINTS' "$cli_tmp/moved/moved.out" \
   && pass || fail dxf-batch-can-fail "a moved joint passed in a batch: $(cat "$cli_tmp/moved.status")"
 # without --at: the sheet of the run (hodographs, diagrams) as DXF, read back; --pairs selects
@@ -38,7 +38,7 @@ for deck in data/pr3207_flywheel.nml data/gears_reducer.nml; do
   name=$(basename "$deck" .nml)
   run_ks "$deck" --format dxf --lang ru
   cp "$out" "$cli_tmp/$name.sheet.dxf"
-  [ "$rc" -eq 0 ] && python3 "$dxf_check" "$cli_tmp/$name.sheet.dxf" >"$cli_tmp/check.out" 2>&1 \
+  [ "$rc" -eq 0 ] && run_py "$dxf_check" "$cli_tmp/$name.sheet.dxf" >"$cli_tmp/check.out" 2>&1 \
     && pass || fail "dxf-sheet-$name" "rc=$rc $(head -10 "$cli_tmp/check.out")"
 done
 run_ks data/pr3207.nml --format dxf --pairs F16

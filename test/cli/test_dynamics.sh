@@ -4,7 +4,7 @@ fw=data/pr3207_flywheel.nml
 # --- the bundled deck: delta reached, M1 = M_d in the footer, the columns, ru labels
 run_ks "$fw" --format json; cp "$out" "$cli_tmp/fw.json"
 [ "$rc" -eq 0 ] && pass || fail dynamics-json-exit "exit $rc: $(cat "$err")"
-if python3 - "$cli_tmp/fw.json" <<'PY'
+if run_py - "$cli_tmp/fw.json" <<'PY'
 import json, sys
 d = json.load(open(sys.argv[1]))
 dy, cols = d["dynamics"], [c["name"] for c in d["columns"]]
@@ -29,10 +29,10 @@ else fail dynamics-footer "no M1 = M_d footer line: $(tail -4 "$out")"; fi
 
 # --- 'given' with the flywheel found gives back delta; a huge flywheel gives the constant-speed
 # force magnitudes (angles of forces near zero are undefined)
-jfw=$(python3 -c "import json; print(repr(json.load(open('$cli_tmp/fw.json'))['dynamics']['J_flywheel']))")
+jfw=$(run_py -c "import json; print(repr(json.load(open('$cli_tmp/fw.json'))['dynamics']['J_flywheel']))")
 given=$(deck_with fw_given "$fw" "s/dynamics = 'steady', delta = 0.04/dynamics = 'given', j_flywheel = $jfw/")
 run_ks "$given" --format json
-if python3 -c "import json,sys; d=json.load(open(sys.argv[1])); sys.exit(0 if abs(d['dynamics']['delta']-0.04) <= 4e-11 else 1)" /dev/stdin <"$out"
+if run_py -c "import json,sys; d=json.load(open(sys.argv[1])); sys.exit(0 if abs(d['dynamics']['delta']-0.04) <= 4e-11 else 1)" /dev/stdin <"$out"
 then pass; else fail dynamics-given-delta "delta with the found flywheel: $(grep -o '"delta": [^,]*' "$out")"; fi
 huge=$(deck_with fw_huge data/pr3207.nml "s/phi_start = 0, dphi = 30/phi_start = 0, dphi = 30, dynamics = 'given', j_flywheel = 1e12/")
 run_ks "$huge" --format csv
@@ -55,7 +55,7 @@ expect_input_error dynamics-no-flywheel-needed "no flywheel is needed" "$(deck_w
 expect_input_error dynamics-not-one-turn "exactly one turn" "$(deck_with dyn_turn "$fw" "s/dphi = 1 /dphi = 1, n = 181 /")"
 # loads that do net positive work (an engine's case): M_d < 0 is the consumer's moment, M1 = M_d
 run_ks "$(deck_with dyn_engine "$fw" "s/f5c_work = 3000/f5c_work = -3000/")" --format json
-if [ "$rc" -eq 0 ] && python3 -c "import json,sys; d=json.load(open(sys.argv[1])); sys.exit(0 if d['dynamics']['M_d'] < 0 and d['selfcheck']['ok'] else 1)" "$out"
+if [ "$rc" -eq 0 ] && run_py -c "import json,sys; d=json.load(open(sys.argv[1])); sys.exit(0 if d['dynamics']['M_d'] < 0 and d['selfcheck']['ok'] else 1)" "$out"
 then pass; else fail dynamics-negative-md "loads driving the machine: exit $rc, $(head -c 300 "$err")"; fi
 expect_input_error dynamics-machine-stops "the speed would fall to zero" "$(deck_with dyn_stop "$fw" "s/dynamics = 'steady', delta = 0.04/dynamics = 'given', j_flywheel = 0/")"
 expect_input_error dynamics-omega-positive "omega1: must be > 0" "$(deck_with dyn_w0 "$fw" "s/omega1 = 7.5 /omega1 = -7.5 /")"
@@ -66,7 +66,7 @@ expect_input_error dynamics-given-delta "is found with dynamics = 'given'" "$(de
 # --- the generic twin gives the same numbers (relative 1e-9)
 run_ks "$fw" --format json; cp "$out" "$cli_tmp/twin_a.json"
 run_ks data/assur_pr3207_flywheel.nml --format json; cp "$out" "$cli_tmp/twin_b.json"
-if python3 - "$cli_tmp/twin_a.json" "$cli_tmp/twin_b.json" <<'PY'
+if run_py - "$cli_tmp/twin_a.json" "$cli_tmp/twin_b.json" <<'PY'
 import json, sys
 a, b = (json.load(open(f)) for f in sys.argv[1:3])
 def close(x, y, scale): return abs(x - y) <= 1e-9 * max(abs(x), abs(y), scale)
@@ -90,7 +90,7 @@ expect_input_error dynamics-assur-friction "friction in the pairs" "$(deck_with 
 
 # --- --format summary carries the figures of the DYNAMICS block
 run_ks "$fw" --format summary
-if python3 - "$out" "$cli_tmp/fw.json" <<'PY'
+if run_py - "$out" "$cli_tmp/fw.json" <<'PY'
 import csv, json, sys
 h, v = list(csv.reader(open(sys.argv[1])))
 d = json.load(open(sys.argv[2]))["dynamics"]
@@ -111,7 +111,7 @@ run_ks data/sixbar_flywheel.nml --format json; cp "$out" "$cli_tmp/six_a.json"
 # crank angle (the dedicated deck's per-step table, linear between its steps)
 six_twin=$(deck_with six_twin data/assur_sixbar.nml "s/dphi = 30, n = 13/dphi = 1, n = 361, dynamics = 'steady', delta = 0.001/; s/, force(1)%column = 1/\n  force(1)%over = 1, force(1)%table = 36.77061636665199, 1000, 216.77061636665199, 1000, 217.77061636665199, 0, 396.77061636665199, 0/; /step_values/d")
 run_ks "$six_twin" --format json; cp "$out" "$cli_tmp/six_b.json"
-if python3 - "$cli_tmp/six_a.json" "$cli_tmp/six_b.json" <<'PY'
+if run_py - "$cli_tmp/six_a.json" "$cli_tmp/six_b.json" <<'PY'
 import json, sys
 a, b = (json.load(open(f)) for f in sys.argv[1:3])
 def close(x, y, scale): return abs(x - y) <= 1e-9 * max(abs(x), abs(y), scale)
@@ -134,7 +134,7 @@ then pass; else fail dynamics-sixbar-twin "data/sixbar_flywheel.nml: delta, M1 =
 
 # --- PR 3050: the reduced quantities reduced to the cylinder's stroke (mass kg, force N)
 run_ks "$(deck_with p50_red data/pr3050.nml "s/^\/$/  dynamics = 'reduced'\n\//")" --format json
-if [ "$rc" -eq 0 ] && python3 - "$out" <<'PY'
+if [ "$rc" -eq 0 ] && run_py - "$out" <<'PY'
 import json, sys
 d = json.load(open(sys.argv[1]))
 units = {c["name"]: c["unit"] for c in d["columns"]}
@@ -154,7 +154,7 @@ expect_input_error dynamics-pr3050-given "needs a crank" "$(deck_with p50_gv dat
 mdt="md_table = 0, 1, 90, 1.5, 180, 1, 270, 0.5"
 run_ks "$(deck_with md_a "$fw" "s/j_rotor = 0.6 /j_rotor = 0.6, $mdt /")" --format json; cp "$out" "$cli_tmp/md_a.json"
 run_ks "$(deck_with md_b data/assur_pr3207_flywheel.nml "s/j_rotor = 0.6 /j_rotor = 0.6, $mdt /")" --format json; cp "$out" "$cli_tmp/md_b.json"
-if python3 - "$cli_tmp/md_a.json" "$cli_tmp/md_b.json" "$cli_tmp/fw.json" <<'PY'
+if run_py - "$cli_tmp/md_a.json" "$cli_tmp/md_b.json" "$cli_tmp/fw.json" <<'PY'
 import json, math, sys
 a, b, c = (json.load(open(f)) for f in sys.argv[1:4])
 def close(x, y, scale): return abs(x - y) <= 1e-9 * max(abs(x), abs(y), scale)
@@ -183,7 +183,7 @@ expect_input_error dynamics-md-table-mode "md_table: a driving-moment table need
 # --- --shaking with a steady cycle: the flywheel's and rotor's couple -(J_fw + j_rotor) eps1 is
 # part of M_shake, so d'Alembert's M_frame = M_shake holds for a free machine (no loads, g = 0)
 run_ks "$(deck_with sh_free data/assur_pr3207_flywheel.nml "s/g = 9.81, /g = 0, /; s/force(1)%value = 3000/force(1)%value = 0/; s/dynamics = 'steady', delta = 0.04/dynamics = 'given', j_flywheel = 2/")" --shaking --format csv
-if [ "$rc" -eq 0 ] && python3 - "$out" <<'PY'
+if [ "$rc" -eq 0 ] && run_py - "$out" <<'PY'
 import csv, sys
 rows = list(csv.DictReader(open(sys.argv[1])))
 scale = max(abs(float(r["M_shake"])) for r in rows)
@@ -200,7 +200,7 @@ else fail dynamics-md-table-svg "exit $rc; no dashed M_d(phi) curve on the SVG s
 # --- a linear actuator's generic deck reduced to its stroke equals the dedicated PR 3050
 run_ks data/assur_pr3050.nml --set "dynamics='reduced'" --format csv; cp "$out" "$cli_tmp/act_generic.csv"
 run_ks data/pr3050.nml --set "dynamics='reduced'" --format csv; cp "$out" "$cli_tmp/act_pr3050.csv"
-if python3 - "$cli_tmp/act_generic.csv" "$cli_tmp/act_pr3050.csv" <<'PY'
+if run_py - "$cli_tmp/act_generic.csv" "$cli_tmp/act_pr3050.csv" <<'PY'
 import csv, sys
 a = list(csv.DictReader(open(sys.argv[1]))); d = list(csv.DictReader(open(sys.argv[2])))
 assert len(a) == len(d) > 0, (len(a), len(d))
@@ -225,9 +225,9 @@ for d in 0.5 0.9 0.99; do
   run_ks "$fw" --set delta=$d --format json; cp "$out" "$cli_tmp/fw_d.json"; rc_a=$rc
   run_ks data/assur_pr3207_flywheel.nml --set delta=$d --format json; cp "$out" "$cli_tmp/twin_d.json"; rc_b=$rc
   # the engine alone runs with delta = 0.978 over its cycle of two turns: a quarter of d needs a flywheel
-  run_ks docs/examples/engine.nml --set "dynamics='steady'" --set cycle=720 --set delta="$(python3 -c "print($d / 4)")" --format json
+  run_ks docs/examples/engine.nml --set "dynamics='steady'" --set cycle=720 --set delta="$(run_py -c "print($d / 4)")" --format json
   rc_c=$rc
-  if [ "$rc_a$rc_b$rc_c" = 000 ] && python3 - "$cli_tmp/fw_d.json" "$cli_tmp/twin_d.json" "$out" "$d" <<'PY'
+  if [ "$rc_a$rc_b$rc_c" = 000 ] && run_py - "$cli_tmp/fw_d.json" "$cli_tmp/twin_d.json" "$out" "$d" <<'PY'
 import json, sys
 a, b, c = (json.load(open(f)) for f in sys.argv[1:4])
 for x, d in ((a, float(sys.argv[4])), (b, float(sys.argv[4])), (c, float(sys.argv[4]) / 4)):
@@ -270,7 +270,7 @@ expect_input_error dynamics-cycle-geometry "&assur: dynamics: the cycle at phi1 
 massless=$(deck_with dyn_massless "$fw" "s/m1 = 12, m3 = 22, m5 = 60/m1 = 0, m3 = 0, m5 = 0/; s/j3 = 1.1/j3 = 0/; s/j_rotor = 0.6/j_rotor = 0/")
 for d in 0.04 0.5; do
   run_ks "$massless" --set delta=$d --set dphi=0.1 --set n=3601 --format json
-  if [ "$rc" -eq 0 ] && python3 - "$out" "$d" <<'PY'
+  if [ "$rc" -eq 0 ] && run_py - "$out" "$d" <<'PY'
 import json, sys
 x = json.load(open(sys.argv[1])); d = float(sys.argv[2]); dy = x["dynamics"]
 cols = [c["name"] for c in x["columns"]]; rows = x["rows"]
@@ -299,25 +299,25 @@ expect_input_error dynamics-phi-start-huge "&pr3207: phi_start: 0.1000000000E\+2
 # (omega_max - omega_min)/omega_m = delta, the second turn's M_red not the first's)
 eng=data/assur_engine_flywheel.nml
 run_ks "$eng" --set dphi=0.5 --set n=1441 --format json; cp "$out" "$cli_tmp/eng720.json"
-if [ "$rc" -eq 0 ] && python3 tools/cycle_check.py "$cli_tmp/eng720.json" 720 0.02 >"$cli_tmp/cycle_check.out" 2>&1; then pass
+if [ "$rc" -eq 0 ] && run_py tools/cycle_check.py "$cli_tmp/eng720.json" 720 0.02 >"$cli_tmp/cycle_check.out" 2>&1; then pass
 else fail dynamics-cycle-720-law "exit $rc: $(cat "$cli_tmp/cycle_check.out") $(head -c 300 "$err")"; fi
 # the checker must fail on a run whose M_d is not its cycle's (M_d of one turn: 1 % off here)
-python3 - "$cli_tmp/eng720.json" "$cli_tmp/eng720_bad.json" <<'PY'
+run_py - "$cli_tmp/eng720.json" "$cli_tmp/eng720_bad.json" <<'PY'
 import json, sys
 x = json.load(open(sys.argv[1])); x["dynamics"]["M_d"] *= 1.01
 json.dump(x, open(sys.argv[2], "w"))
 PY
-if ! python3 tools/cycle_check.py "$cli_tmp/eng720_bad.json" 720 0.02 >"$cli_tmp/cycle_check.out" 2>&1 && \
+if ! run_py tools/cycle_check.py "$cli_tmp/eng720_bad.json" 720 0.02 >"$cli_tmp/cycle_check.out" 2>&1 && \
    grep -q "max |M1 - M_d|" "$cli_tmp/cycle_check.out"; then pass
 else fail dynamics-cycle-720-law-must-fail "a wrong M_d passed: $(cat "$cli_tmp/cycle_check.out")"; fi
 # 'given' with the flywheel found gives back delta over the two turns; a driving-moment table
 # of constant shape over the cycle of 720 deg is the constant M_d (same flywheel, 1e-9)
-jfw=$(python3 -c "import json; print(repr(json.load(open('$cli_tmp/eng720.json'))['dynamics']['J_flywheel']))")
+jfw=$(run_py -c "import json; print(repr(json.load(open('$cli_tmp/eng720.json'))['dynamics']['J_flywheel']))")
 run_ks "$(deck_with eng_given "$eng" "s/dynamics = 'steady', delta = 0.02/dynamics = 'given', j_flywheel = $jfw/")" --format json
-if [ "$rc" -eq 0 ] && python3 -c "import json,sys; d=json.load(open(sys.argv[1]))['dynamics']; sys.exit(0 if abs(d['delta']-0.02) <= 1e-9*0.02 else 1)" "$out"
+if [ "$rc" -eq 0 ] && run_py -c "import json,sys; d=json.load(open(sys.argv[1]))['dynamics']; sys.exit(0 if abs(d['delta']-0.02) <= 1e-9*0.02 else 1)" "$out"
 then pass; else fail dynamics-cycle-720-given "exit $rc: $(head -c 300 "$err")"; fi
 run_ks "$(deck_with eng_md "$eng" "s/cycle = 720/cycle = 720, md_table = 0, -1, 400, -1/")" --format json
-if [ "$rc" -eq 0 ] && python3 - "$out" "$jfw" <<'PY'
+if [ "$rc" -eq 0 ] && run_py - "$out" "$jfw" <<'PY'
 import json, sys
 d = json.load(open(sys.argv[1]))["dynamics"]; jfw = float(sys.argv[2])
 assert abs(d["J_flywheel"] - jfw) <= 1e-9 * jfw, (d["J_flywheel"], jfw)
@@ -336,7 +336,7 @@ expect_input_error dynamics-cycle-md-table "&assur: md_table: the angles must li
 # --- a gas table of 1441 points (every 0.5 deg over 720 deg, the linear interpolant of the
 # engine's own table) is read and gives the engine's figures: the steady cycle's M_d and
 # flywheel, and every force of the 5 deg steps, within 1e-9
-python3 - "$eng" "$cli_tmp/eng1441.nml" <<'PY'
+run_py - "$eng" "$cli_tmp/eng1441.nml" <<'PY'
 import re, sys
 text = open(sys.argv[1]).read()
 body = re.search(r"force\(1\)%table = (.*?)\n/", text, re.S).group(1)
@@ -351,7 +351,7 @@ open(sys.argv[2], "w").write(re.sub(r"force\(1\)%table = .*?\n/", "force(1)%tabl
 PY
 run_ks "$cli_tmp/eng1441.nml" --format json; cp "$out" "$cli_tmp/eng1441.json"; rc_a=$rc
 run_ks "$eng" --format json
-if [ "$rc_a$rc" = 00 ] && python3 - "$out" "$cli_tmp/eng1441.json" <<'PY'
+if [ "$rc_a$rc" = 00 ] && run_py - "$out" "$cli_tmp/eng1441.json" <<'PY'
 import json, sys
 a, b = (json.load(open(f)) for f in sys.argv[1:3])
 for key in ("M_d", "J_flywheel", "omega_min", "phi_omega_min"):
@@ -374,7 +374,7 @@ from_golden linkage_pr3207_flywheel csv --format csv; cp "$out" "$cli_tmp/lk_fw.
 from_golden pr3207_flywheel csv --format csv; cp "$out" "$cli_tmp/pr_fw.csv"
 "$KINETOSTAT" diff --common --rtol 1e-9 --atol 1e-9 "$cli_tmp/pr_fw.csv" "$cli_tmp/lk_fw.csv" >"$cli_tmp/lk_diff.out" 2>&1
 if [ "$rc_a" -eq 0 ] && [ $? -eq 0 ] && grep -q "^same: 7942 values agree" "$cli_tmp/lk_diff.out" && \
-   python3 - "$cli_tmp/lk_fw.json" "$cli_tmp/fw.json" <<'PY'
+   run_py - "$cli_tmp/lk_fw.json" "$cli_tmp/fw.json" <<'PY'
 import json, sys
 a, b = (json.load(open(f))["dynamics"] for f in sys.argv[1:3])
 for key in ("M_d", "J_red_max", "J_flywheel", "J_flywheel_textbook", "omega_max", "phi_omega_min", "delta", "period"):
@@ -416,7 +416,7 @@ dyn_work_check() {
   local name="$1" jc="$2" skip="$3"; shift 3
   run_ks "$@" --format json
   if [ "$rc" -ne 0 ]; then fail "dynamics-work-$name" "exit $rc: $(head -c 300 "$err")"; return; fi
-  python3 - "$out" "$jc" "$skip" <<'PY' && pass || fail "dynamics-work-$name" "A_Md, A_red, T_I or the disc wrong (above)"
+  run_py - "$out" "$jc" "$skip" <<'PY' && pass || fail "dynamics-work-$name" "A_Md, A_red, T_I or the disc wrong (above)"
 import json, math, sys
 d = json.load(open(sys.argv[1]))
 jc = float(sys.argv[2])
@@ -470,7 +470,7 @@ dyn_work_check sixbar 20 216.77061636665199,217.77061636665199,36.77061636665199
 # with no flywheel the disc is null and the note says so; the summary's columns stay the same
 sed "s/dynamics = 'steady', delta = 0.001/dynamics = 'given', j_flywheel = 0/" data/sixbar_flywheel.nml > "$cli_tmp/dyn_nofw.nml"
 run_ks "$cli_tmp/dyn_nofw.nml" --format json
-python3 - "$out" <<'PY' && pass || fail dynamics-disc-null "the disc of no flywheel is not null with a note"
+run_py - "$out" <<'PY' && pass || fail dynamics-disc-null "the disc of no flywheel is not null with a note"
 import json, sys
 d = json.load(open(sys.argv[1]))["dynamics"]
 assert d["J_flywheel"] == 0 and d["flywheel_D"] is None and d["flywheel_b"] is None and d["flywheel_m"] is None

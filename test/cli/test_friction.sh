@@ -30,7 +30,7 @@ run_ks "$(deck_with fr_half "$fr_deck" 's/phi_start = 0, dphi = 10 /phi_start = 
 [ "$rc" -eq 0 ] && grep -q "LESS THAN A WHOLE TURN: NOT THE CYCLE EFFICIENCY" "$out" && pass ||
   fail friction-partial-run-note "exit $rc, or no partial-run note: $(tail -8 "$out")"
 run_ks "$fr_deck" --format json
-python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); s={r.get("name"): r.get("value") for r in d["summary"]};
+run_py -c 'import json,sys; d=json.load(open(sys.argv[1])); s={r.get("name"): r.get("value") for r in d["summary"]};
 assert s["A_DRIVER"] > 0 and abs(s["ETA"]) < 1e-9, s' "$out" 2>"$cli_tmp/json.log" && pass ||
   fail friction-json-summary "$(tail -3 "$cli_tmp/json.log")"
 
@@ -78,7 +78,7 @@ expect_input_error friction-infinite-f 'dyad\(1\)%f2: must be a finite number' \
 # dx_S3/dphi1 from the neighbouring steps). With the normal force alone the balance misses
 # f*|N| (up to 19 N).
 run_ks "$fr_deck" --format csv --kinematics
-python3 - "$out" >"$cli_tmp/fr_whole.log" 2>&1 <<'PY' && pass || fail friction-whole-reaction "$(head -5 "$cli_tmp/fr_whole.log")"
+run_py - "$out" >"$cli_tmp/fr_whole.log" 2>&1 <<'PY' && pass || fail friction-whole-reaction "$(head -5 "$cli_tmp/fr_whole.log")"
 import csv, math, sys
 rows = [{k: float(v) for k, v in r.items()} for r in csv.DictReader(open(sys.argv[1]))]
 m3, g, f, load = 1.5, 9.81, 0.15, 500.0
@@ -141,9 +141,9 @@ for r in rows:
 print("worst power-balance mismatch", worst)
 sys.exit(0 if worst <= 1e-9 else 1)
 PY
-if [ "$rc_c" -eq 0 ] && python3 "$cli_tmp/c3_balance.py" "$cli_tmp/c3f.csv" >"$cli_tmp/c3.out" 2>&1; then pass
+if [ "$rc_c" -eq 0 ] && run_py "$cli_tmp/c3_balance.py" "$cli_tmp/c3f.csv" >"$cli_tmp/c3.out" 2>&1; then pass
 else fail linkage-friction-class3-power "exit $rc_c: $(cat "$cli_tmp/c3.out") $(head -c 300 "$err")"; fi
-if ! python3 "$cli_tmp/c3_balance.py" "$cli_tmp/c3f.csv" P_loss_F53 >"$cli_tmp/c3.out" 2>&1 && \
+if ! run_py "$cli_tmp/c3_balance.py" "$cli_tmp/c3f.csv" P_loss_F53 >"$cli_tmp/c3.out" 2>&1 && \
    grep -q "^worst power-balance mismatch" "$cli_tmp/c3.out"; then pass
 else fail linkage-friction-class3-power-can-fail "$(cat "$cli_tmp/c3.out")"; fi
 # a turning pair's friction needs its journal radius; a sliding pair has none

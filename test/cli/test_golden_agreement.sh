@@ -5,7 +5,7 @@
 ga_old="$cli_tmp/ga_old"; ga_new="$cli_tmp/ga_new"
 rm -rf "$ga_old" "$ga_new"; mkdir -p "$ga_old" "$ga_new"
 for f in assur_fourbar.csv assur_fourbar.json assur_fourbar.table; do cp "data/expected/$f" "$ga_old/"; done
-ga_run() { python3 tools/golden_agreement.py "$ga_old" "$ga_new" >"$cli_tmp/ga.out" 2>&1; ga_rc=$?; }
+ga_run() { run_py tools/golden_agreement.py "$ga_old" "$ga_new" >"$cli_tmp/ga.out" 2>&1; ga_rc=$?; }
 cp "$ga_old"/* "$ga_new/"
 ga_run
 if [ "$ga_rc" -eq 0 ] && grep -q "0 of 3 files differ; every change is roundoff" "$cli_tmp/ga.out"; then pass

@@ -20,7 +20,7 @@ run_ks data/assur_fourbar.nml --set 'title=dyad('
   && pass || fail syntax-set-paren "exit $rc: $(head -c 300 "$err")"
 
 # --- strings of any length: a 400 000-character title is refused (80 at most), no stack overflow
-python3 -c "
+run_py -c "
 import re, sys
 s = open('data/assur_fourbar.nml').read()
 open(sys.argv[1], 'w').write(re.sub(r\"title\s*=\s*'[^']*'\", \"title = '\" + 'x' * 400000 + \"'\", s))
@@ -121,7 +121,7 @@ run_ks "$(deck_with transverse_static "$cli_tmp/transverse.nml" 's/omega1 = 10/o
 # turned atan(0.2) = 11.31 deg from the normal (the shape of PMKS+'s published case:
 # 99.23 N at 90 deg normal, 101.19 N at 78.7 deg whole)
 run_ks "$(deck_with transverse_f "$cli_tmp/transverse.nml" 's/dyad(1)%mode = 1/dyad(1)%mode = 1, dyad(1)%f3 = 0.2/')" --format csv
-python3 - "$out" <<'PY' >"$cli_tmp/transverse_f.log" 2>&1 && pass || fail friction-transverse-whole "$(head -3 "$cli_tmp/transverse_f.log")"
+run_py - "$out" <<'PY' >"$cli_tmp/transverse_f.log" 2>&1 && pass || fail friction-transverse-whole "$(head -3 "$cli_tmp/transverse_f.log")"
 import csv, math, sys
 rows = list(csv.DictReader(open(sys.argv[1])))
 bad = []
@@ -144,6 +144,6 @@ run_ks data/pr3207.nml --set phi_start=1e20 -o "$cli_tmp/never.out"
   && [ ! -e "$cli_tmp/never.out" ] && pass || fail selfcheck-failure-exit-3 "exit $rc: $(cat "$err")"
 run_ks data/pr3207.nml --set phi_start=1e20 --allow-selfcheck-failure --format json
 [ "$rc" -eq 0 ] && grep -q "^kinetostat: warning: data/pr3207.nml: self-check failed at step" "$err" \
-  && python3 -c 'import json,sys; w=json.load(open(sys.argv[1]))["warnings"]; assert any("self-check failed" in x for x in w), w' "$out" \
+  && run_py -c 'import json,sys; w=json.load(open(sys.argv[1]))["warnings"]; assert any("self-check failed" in x for x in w), w' "$out" \
   && pass || fail selfcheck-allowed-warning "exit $rc: $(head -c 300 "$err")"
 expect_exit selfcheck-allowed-strict 4 data/pr3207.nml --set phi_start=1e20 --allow-selfcheck-failure --strict

@@ -21,7 +21,7 @@ for deck in data/*.nml; do
 done
 # every deck's CSV with --kinematics is its default CSV plus columns: a line "ok NAME" or
 # "FAIL NAME: why" per deck (a deck with no line fails too)
-python3 - "$cli_tmp/k_pairs.tsv" >"$cli_tmp/k_pairs.out" 2>&1 <<'PY'
+run_py - "$cli_tmp/k_pairs.tsv" >"$cli_tmp/k_pairs.out" 2>&1 <<'PY'
 import sys
 for line in open(sys.argv[1]):
     name, plain_path, kin_path = line.rstrip("\n").split("\t")
@@ -47,7 +47,7 @@ done <"$cli_tmp/k_pairs.tsv"
 rm -f "$cli_tmp/k_pairs.tsv"
 
 run_ks data/sixbar.nml --format json --kinematics
-python3 - "$out" <<'PY' && pass || fail kinematics-json "JSON with --kinematics does not load or lacks the columns"
+run_py - "$out" <<'PY' && pass || fail kinematics-json "JSON with --kinematics does not load or lacks the columns"
 import json, sys
 d = json.load(open(sys.argv[1]))
 cols = {c["name"]: c for c in d["columns"]}
@@ -73,7 +73,7 @@ motion_case() {
   run_ks "$@" --kinematics --format csv
   if [ "$rc" -ne 0 ]; then fail "kinematics-motion-$name" "exit $rc: $(head -c 300 "$err")"; return; fi
   cp "$out" "$cli_tmp/motion.csv"
-  if python3 tools/motion_check.py "$cli_tmp/motion.csv" >"$cli_tmp/motion.out" 2>&1 && grep -q "^motion: OK" "$cli_tmp/motion.out"; then
+  if run_py tools/motion_check.py "$cli_tmp/motion.csv" >"$cli_tmp/motion.out" 2>&1 && grep -q "^motion: OK" "$cli_tmp/motion.out"; then
     pass
   else
     fail "kinematics-motion-$name" "$(tail -4 "$cli_tmp/motion.out")"
@@ -89,14 +89,14 @@ motion_case pr3207-flywheel data/pr3207_flywheel.nml --set dphi=0.5 --set n=721
 # the check must fail on a changed velocity and a changed acceleration
 run_ks data/class3.nml --set "drive(1)%start=30" --set "drive(1)%step=0.5" --set n=7 --kinematics --format csv
 for col in vx_T1 ay_B; do
-  python3 - "$out" "$col" "$cli_tmp/motion_bad.csv" <<'PY'
+  run_py - "$out" "$col" "$cli_tmp/motion_bad.csv" <<'PY'
 import csv, sys
 rows = list(csv.reader(open(sys.argv[1])))
 c = rows[0].index(sys.argv[2])
 rows[3][c] = repr(float(rows[3][c]) * (1 + 1e-4) + 1e-3)
 csv.writer(open(sys.argv[3], "w", newline=""), lineterminator="\n").writerows(rows)
 PY
-  if python3 tools/motion_check.py "$cli_tmp/motion_bad.csv" >"$cli_tmp/motion.out" 2>&1; then
+  if run_py tools/motion_check.py "$cli_tmp/motion_bad.csv" >"$cli_tmp/motion.out" 2>&1; then
     fail "kinematics-motion-must-fail-$col" "a changed $col passed: $(tail -2 "$cli_tmp/motion.out")"
   elif grep -q "^motion: FAIL" "$cli_tmp/motion.out"; then pass
   else fail "kinematics-motion-must-fail-$col" "no verdict: $(tail -2 "$cli_tmp/motion.out")"; fi
@@ -108,7 +108,7 @@ done
 # share, within 1e-9 of the plan's largest vector; a slider pair (pr3207: the ram from two
 # guides), dyads, a class-III group, the general engine's slider-crank
 plans_compare() {
-  python3 - "$1" "$2" "$3" <<'PY'
+  run_py - "$1" "$2" "$3" <<'PY'
 import csv, json, sys
 rows = list(csv.DictReader(open(sys.argv[1])))
 plans = json.load(open(sys.argv[2]))
@@ -150,7 +150,7 @@ plans_case class3 7 data/class3.nml
 plans_case sixbar 4 data/sixbar.nml
 plans_case assur-pr3050 3 data/assur_pr3050.nml
 # the comparison must fail on a changed velocity
-python3 - "$cli_tmp/plans.csv" "$cli_tmp/plans_bad.csv" <<'PY'
+run_py - "$cli_tmp/plans.csv" "$cli_tmp/plans_bad.csv" <<'PY'
 import csv, sys
 rows = list(csv.reader(open(sys.argv[1])))
 c = next(j for j, n in enumerate(rows[0]) if n.startswith("vx_") and abs(float(rows[3][j])) > 1e-3)

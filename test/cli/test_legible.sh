@@ -84,31 +84,31 @@ echo "legible: $(grep -E '^[0-9]+ sheets, [0-9]+ leader lines' "$cli_tmp/batch.s
 sheet="$legible_dir/pr3207.at1.en.svg"
 first_text=$(grep -m1 -o '<text x="[^"]*" y="[^"]*" class="label"[^>]*>[^<]*</text>' "$sheet")
 sed "s|</svg>|$first_text</svg>|" "$sheet" >"$cli_tmp/overlap.svg"
-python3 "$svg_check" labels "$cli_tmp/overlap.svg" >"$cli_tmp/check.out" 2>&1
+run_py "$svg_check" labels "$cli_tmp/overlap.svg" >"$cli_tmp/check.out" 2>&1
 grep -q "overlaps" "$cli_tmp/check.out" && pass \
   || fail legible-labels-can-fail "a label written twice at one place was not reported: $(head -3 "$cli_tmp/check.out")"
 # ... and the line check: a label written on the middle of the sheet's first drawn line
 read -r x1 y1 x2 y2 < <(grep -m1 -o '<line x1="[^"]*" y1="[^"]*" x2="[^"]*" y2="[^"]*" class="link\|<line x1="[^"]*" y1="[^"]*" x2="[^"]*" y2="[^"]*"' \
   "$legible_dir/sixbar.at1.en.svg" | grep -o '"[-0-9.]*"' | tr -d '"' | tr '\n' ' ')
-awk -v x="$(python3 -c "print(($x1 + $x2) / 2)")" -v y="$(python3 -c "print(($y1 + $y2) / 2)")" \
+awk -v x="$(run_py -c "print(($x1 + $x2) / 2)")" -v y="$(run_py -c "print(($y1 + $y2) / 2)")" \
   '{ sub("</svg>", "<text x=\"" x "\" y=\"" y "\" class=\"num\" text-anchor=\"middle\">F21</text></svg>"); print }' \
   "$legible_dir/sixbar.at1.en.svg" >"$cli_tmp/online.svg"
-if python3 "$svg_check" labels --lines "$cli_tmp/online.svg" >"$cli_tmp/check.out" 2>&1; then
+if run_py "$svg_check" labels --lines "$cli_tmp/online.svg" >"$cli_tmp/check.out" 2>&1; then
   fail legible-lines-can-fail "a label written over a line was accepted"
 else grep -q "lies over a line" "$cli_tmp/check.out" && pass || fail legible-lines-can-fail "$(head -3 "$cli_tmp/check.out")"; fi
 # ... and the notation checks: markup on an English sheet, a Latin word on a Russian one
 sed 's|</svg>|<text x="30" y="30" class="num">a_CB^n</text></svg>|' "$legible_dir/sixbar.at1.en.svg" >"$cli_tmp/markup.svg"
-python3 "$svg_check" notation en "$cli_tmp/markup.svg" >"$cli_tmp/check.out" 2>&1
+run_py "$svg_check" notation en "$cli_tmp/markup.svg" >"$cli_tmp/check.out" 2>&1
 grep -q "markup in 'a_CB^n'" "$cli_tmp/check.out" && pass || fail legible-notation-can-fail "a_CB^n accepted"
 sed 's|</svg>|<text x="30" y="30" class="num">MPhi3 = 615 Н·м</text></svg>|' "$legible_dir/sixbar.at1.ru.svg" >"$cli_tmp/latin.svg"
-python3 "$svg_check" notation ru "$cli_tmp/latin.svg" >"$cli_tmp/check.out" 2>&1
+run_py "$svg_check" notation ru "$cli_tmp/latin.svg" >"$cli_tmp/check.out" 2>&1
 grep -q "Latin 'MPhi3'" "$cli_tmp/check.out" && pass || fail legible-notation-ru-can-fail "MPhi3 accepted on a Russian sheet"
 # ... and so can the word check: an English legend word on a Russian sheet
 sed 's|>реакция<|>pair force<|' "$legible_dir/pr3207.at1.ru.svg" >"$cli_tmp/english.svg"
 if cmp -s "$cli_tmp/english.svg" "$legible_dir/pr3207.at1.ru.svg"; then
   fail legible-russian-can-fail "the perturbation did not change the sheet"
 else
-  python3 "$svg_check" english "$cli_tmp/english.svg" >"$cli_tmp/check.out" 2>&1
+  run_py "$svg_check" english "$cli_tmp/english.svg" >"$cli_tmp/check.out" 2>&1
   grep -qE "english\.svg:[0-9]+: '(pair|force)' in" "$cli_tmp/check.out" && pass \
     || fail legible-russian-can-fail "an English word on a Russian sheet was not reported: $(head -3 "$cli_tmp/check.out")"
 fi
@@ -122,7 +122,7 @@ grep -q 'style="font-style: italic">x</text>' "$legible_dir/sixbar.at1.en.svg" \
   && grep -q 'style="font-style: italic">y</text>' "$legible_dir/sixbar.at1.en.svg" \
   && pass || fail legible-axes "no x and y axis labels on the --at sheet"
 # standard formats with the ГОСТ frame: every sheet on the model is an ISO size, framed
-python3 - "${model_sheets[@]}" <<'PY' >"$cli_tmp/check.out" 2>&1 && pass || fail legible-formats "$(head -5 "$cli_tmp/check.out")"
+run_py - "${model_sheets[@]}" <<'PY' >"$cli_tmp/check.out" 2>&1 && pass || fail legible-formats "$(head -5 "$cli_tmp/check.out")"
 import re, sys
 iso = {(210, 297), (297, 420), (420, 594), (594, 841)}
 for path in sys.argv[1:]:
@@ -158,8 +158,8 @@ for args in "--format svg" "--format svg --at 2" "--format plans --at 2"; do
   grep -q '>МТ-301.7' "$cli_tmp/student.svg" && missing="$missing deck-in-designation"
   [ "$args" = "--format svg --at 2" ] && ! grep -q '>1:[0-9.]*<' "$cli_tmp/student.svg" && missing="$missing scale"
   [ -z "$missing" ] \
-    && python3 "$svg_check" labels "$cli_tmp/student.svg" >"$cli_tmp/check.out" 2>&1 \
-    && python3 "$svg_check" english "$cli_tmp/student.svg" >>"$cli_tmp/check.out" 2>&1 \
+    && run_py "$svg_check" labels "$cli_tmp/student.svg" >"$cli_tmp/check.out" 2>&1 \
+    && run_py "$svg_check" english "$cli_tmp/student.svg" >>"$cli_tmp/check.out" 2>&1 \
     && pass || fail "legible-student-sheet-$args" "missing:$missing $(head -5 "$cli_tmp/check.out")"
   # shellcheck disable=SC2086  # args is a word list
   run_ks data/sixbar.nml $args --student Ivanov --group MT-301 --variant 7
@@ -169,7 +169,7 @@ for args in "--format svg" "--format svg --at 2" "--format plans --at 2"; do
     grep -q ">$w<" "$out" || missing="$missing '$w'"
   done
   cp "$out" "$cli_tmp/student_en.svg"
-  [ -z "$missing" ] && python3 "$svg_check" labels "$cli_tmp/student_en.svg" >"$cli_tmp/check.out" 2>&1 \
+  [ -z "$missing" ] && run_py "$svg_check" labels "$cli_tmp/student_en.svg" >"$cli_tmp/check.out" 2>&1 \
     && pass || fail "legible-student-sheet-en-$args" "missing:$missing $(head -5 "$cli_tmp/check.out")"
 done
 # a long drawing name fits its field (smaller, or on two lines), not cut

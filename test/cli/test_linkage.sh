@@ -86,7 +86,7 @@ for pair in "linkage_fourbar assur_fourbar" "linkage_slider_crank assur_slider_c
   set -- $pair
   run_ks "data/$1.nml" --format csv; cp "$out" "$cli_tmp/lk_new.csv"
   run_ks "data/$2.nml" --format csv --quiet; cp "$out" "$cli_tmp/lk_old.csv"
-  python3 - "$cli_tmp/lk_new.csv" "$cli_tmp/lk_old.csv" <<'PY' && pass || fail "linkage-equals-$2" "forces differ (see above)"
+  run_py - "$cli_tmp/lk_new.csv" "$cli_tmp/lk_old.csv" <<'PY' && pass || fail "linkage-equals-$2" "forces differ (see above)"
 import csv, sys
 new = list(csv.DictReader(open(sys.argv[1])))
 old = list(csv.DictReader(open(sys.argv[2])))
@@ -130,7 +130,7 @@ else fail linkage-dead-position "exit $rc: $(cat "$err")"; fi
 # --frame link: each pair force in the axes of the link it acts on; at phi1 = 0 the crank's
 # axis is +x, so F10_along = F10x and F10_across = F10y
 run_ks data/class3.nml --format csv --frame link
-python3 - "$out" <<'PY' && pass || fail linkage-frame-link "F10 in the crank's axes differs from its global components at phi1 = 0"
+run_py - "$out" <<'PY' && pass || fail linkage-frame-link "F10 in the crank's axes differs from its global components at phi1 = 0"
 import csv, sys
 row = next(csv.DictReader(open(sys.argv[1])))
 assert float(row["phi1"]) == 0.0
@@ -174,12 +174,12 @@ lk_structure linkage-structure-order4-ru docs/examples/class3_order4.nml ru \
 # --- the table of stages and deck kinds of docs/linkage.md: every "yes" runs, every refusal is
 # one line (exit 2) with the message the table quotes (tools/stage_table_check.py); the check can
 # fail: a "yes" turned into a refusal is caught
-python3 "$root/tools/stage_table_check.py" "$KINETOSTAT" "$root/docs/linkage.md" >"$cli_tmp/stages.out" 2>&1 \
+run_py "$root/tools/stage_table_check.py" "$KINETOSTAT" "$root/docs/linkage.md" >"$cli_tmp/stages.out" 2>&1 \
   && pass || fail linkage-stage-table "$(head -10 "$cli_tmp/stages.out")"
 { grep '^| stage |\|^|---|' "$root/docs/linkage.md"; grep '^| structural analysis (`kinetostat structure`) |' "$root/docs/linkage.md" | \
   sed 's/^| structural analysis (`kinetostat structure`) | yes |/| structural analysis (`kinetostat structure`) | refused: `no such thing` |/'; } \
   >"$cli_tmp/stages_bad.md"
-if ! python3 "$root/tools/stage_table_check.py" "$KINETOSTAT" "$cli_tmp/stages_bad.md" >"$cli_tmp/stages.out" 2>&1 && \
+if ! run_py "$root/tools/stage_table_check.py" "$KINETOSTAT" "$cli_tmp/stages_bad.md" >"$cli_tmp/stages.out" 2>&1 && \
    grep -q "structural analysis (\`kinetostat structure\`) / &pr3207: refusal expected" "$cli_tmp/stages.out"; then pass
 else fail linkage-stage-table-can-fail "$(head -5 "$cli_tmp/stages.out")"; fi
 
@@ -209,7 +209,7 @@ run_ks diff --common --rtol 1e-9 --atol 1e-9 "$cli_tmp/eng_as.csv" "$cli_tmp/eng
 # the shaking force is minus the total momentum's rate: -sum m a_S, by central differences of
 # the total centre of mass over the steps (15 deg at 300 rad/s; tolerance 2 % of the largest)
 run_ks data/linkage_engine.nml --shaking --kinematics --format csv
-python3 - "$out" <<'PY' && pass || fail linkage-engine-shaking-fd "see above"
+run_py - "$out" <<'PY' && pass || fail linkage-engine-shaking-fd "see above"
 import csv, math, sys
 rows = list(csv.DictReader(open(sys.argv[1])))
 m = {"1": 3.0, "2": 1.2, "3": 0.8}
@@ -228,7 +228,7 @@ PY
 # lever's effort = M1 of the run, the gas force = the table's value there (-50 N along -x)
 run_ks data/linkage_engine.nml --format json --at 5 --plans; cp "$out" "$cli_tmp/eng_plans.json"
 run_ks data/linkage_engine.nml --format csv
-python3 - "$cli_tmp/eng_plans.json" "$out" <<'PY' && pass || fail linkage-engine-plans "see above"
+run_py - "$cli_tmp/eng_plans.json" "$out" <<'PY' && pass || fail linkage-engine-plans "see above"
 import csv, json, math, sys
 p = json.load(open(sys.argv[1])); rows = list(csv.DictReader(open(sys.argv[2])))
 val = {v["name"]: v["value"] for v in p["values"]}

@@ -17,7 +17,7 @@ for deck in data/*.nml; do
   npy_pairs+=("$cli_tmp/npy_$name.npy" "$cli_tmp/npy_$name.csv")
 done
 if [ "${#npy_pairs[@]}" -lt 40 ]; then fail npy-decks "only $((${#npy_pairs[@]} / 2)) decks ran"; fi
-python3 tools/npy_check.py "${npy_pairs[@]}" >"$cli_tmp/npy_check.out" 2>&1 && pass ||
+run_py tools/npy_check.py "${npy_pairs[@]}" >"$cli_tmp/npy_check.out" 2>&1 && pass ||
   fail npy-decks-against-csv "$(head -20 "$cli_tmp/npy_check.out")"
 
 # more rows than a block (8192): the header's count and the rows of every block; a cam deck
@@ -32,12 +32,12 @@ for deck in npy_long npy_cam; do
   "$KINETOSTAT" "$cli_tmp/$deck.nml" --format csv --quiet -o "$cli_tmp/$deck.csv"
   OMP_NUM_THREADS=1 "$KINETOSTAT" "$cli_tmp/$deck.nml" --format npy --quiet -o "$cli_tmp/$deck.npy"
   OMP_NUM_THREADS=2 "$KINETOSTAT" "$cli_tmp/$deck.nml" --format npy --quiet >"$cli_tmp/${deck}_2.npy"
-  python3 tools/npy_check.py "$cli_tmp/$deck.npy" "$cli_tmp/$deck.csv" >"$cli_tmp/npy_check.out" 2>&1 && pass ||
+  run_py tools/npy_check.py "$cli_tmp/$deck.npy" "$cli_tmp/$deck.csv" >"$cli_tmp/npy_check.out" 2>&1 && pass ||
     fail "$deck-against-csv" "$(head -20 "$cli_tmp/npy_check.out")"
   cmp -s "$cli_tmp/$deck.npy" "$cli_tmp/${deck}_2.npy" && pass ||
     fail "$deck-threads" "2 threads (stdout) differ from 1 (-o): $(cmp "$cli_tmp/$deck.npy" "$cli_tmp/${deck}_2.npy")"
 done
-python3 - "$cli_tmp/npy_cam.npy" <<'PY' && pass || fail npy-cam-nan "not NaN exactly in the jammed and lost steps"
+run_py - "$cli_tmp/npy_cam.npy" <<'PY' && pass || fail npy-cam-nan "not NaN exactly in the jammed and lost steps"
 import math, sys
 sys.path.insert(0, "tools")
 from npy_check import read_npy
@@ -51,14 +51,14 @@ sed "s/dyad(1)%joints = 'B'/dyad(1)%joints = 'Б'/" data/assur_fourbar.nml >"$cl
 "$KINETOSTAT" "$cli_tmp/npy_cyr.nml" --format csv --kinematics --quiet -o "$cli_tmp/npy_cyr.csv"
 "$KINETOSTAT" "$cli_tmp/npy_cyr.nml" --format npy --kinematics --quiet -o "$cli_tmp/npy_cyr.npy"
 if ! head -1 "$cli_tmp/npy_cyr.csv" | grep -q "x_Б"; then fail npy-cyrillic "the deck's joint is not named Б"
-elif python3 tools/npy_check.py "$cli_tmp/npy_cyr.npy" "$cli_tmp/npy_cyr.csv" >"$cli_tmp/npy_check.out" 2>&1 &&
+elif run_py tools/npy_check.py "$cli_tmp/npy_cyr.npy" "$cli_tmp/npy_cyr.csv" >"$cli_tmp/npy_check.out" 2>&1 &&
   [ "$(od -An -tu1 -j6 -N1 "$cli_tmp/npy_cyr.npy" | tr -d ' ')" = 3 ]; then pass
 else fail npy-cyrillic "not version 3.0 or not the CSV: $(head -5 "$cli_tmp/npy_check.out")"; fi
 
 # the checker can fail: one value of the last record changed
 cp "$cli_tmp/npy_long.npy" "$cli_tmp/npy_bad.npy"
 printf '\x01' | dd of="$cli_tmp/npy_bad.npy" bs=1 seek=$(($(stat -c %s "$cli_tmp/npy_bad.npy") - 3)) conv=notrunc 2>/dev/null
-if python3 tools/npy_check.py "$cli_tmp/npy_bad.npy" "$cli_tmp/npy_long.csv" >"$cli_tmp/npy_check.out" 2>&1; then
+if run_py tools/npy_check.py "$cli_tmp/npy_bad.npy" "$cli_tmp/npy_long.csv" >"$cli_tmp/npy_check.out" 2>&1; then
   fail npy-check-must-fail "a changed value was accepted"
 elif grep -q "row 20000, M1: npy" "$cli_tmp/npy_check.out"; then pass; else
   fail npy-check-must-fail "the report does not name row 20000, M1: $(head -5 "$cli_tmp/npy_check.out")"
@@ -69,7 +69,7 @@ sweep_args=(sweep data/assur_fourbar.nml --vary crank_m=0.4:0.6:3 --vary omega1=
 "$KINETOSTAT" "${sweep_args[@]}" -o "$cli_tmp/npy_sweep.csv"
 run_ks "${sweep_args[@]}" --format npy --jobs 1 -o "$cli_tmp/npy_sweep.npy"
 if [ "$rc" -eq 0 ]; then
-  python3 tools/npy_check.py "$cli_tmp/npy_sweep.npy" "$cli_tmp/npy_sweep.csv" >"$cli_tmp/npy_check.out" 2>&1 && pass ||
+  run_py tools/npy_check.py "$cli_tmp/npy_sweep.npy" "$cli_tmp/npy_sweep.csv" >"$cli_tmp/npy_check.out" 2>&1 && pass ||
     fail npy-sweep-against-csv "$(head -20 "$cli_tmp/npy_check.out")"
 else
   fail npy-sweep "exit $rc: $(head -c 300 "$err")"
@@ -78,7 +78,7 @@ fi
 cmp -s "$cli_tmp/npy_sweep.npy" "$cli_tmp/npy_sweep_2.npy" && pass || fail npy-sweep-jobs "--jobs 2 differs from --jobs 1"
 "$KINETOSTAT" "${sweep_args[@]}" --format npy --part 1/2 -o "$cli_tmp/npy_part1.npy"
 "$KINETOSTAT" "${sweep_args[@]}" --format npy --part 2/2 -o "$cli_tmp/npy_part2.npy"
-python3 - "$cli_tmp/npy_sweep.npy" "$cli_tmp/npy_part1.npy" "$cli_tmp/npy_part2.npy" <<'PY' && pass || fail npy-sweep-parts "the parts' records (3 and 3) are not the whole sweep's"
+run_py - "$cli_tmp/npy_sweep.npy" "$cli_tmp/npy_part1.npy" "$cli_tmp/npy_part2.npy" <<'PY' && pass || fail npy-sweep-parts "the parts' records (3 and 3) are not the whole sweep's"
 import sys
 sys.path.insert(0, "tools")
 from npy_check import read_npy
@@ -94,14 +94,14 @@ twice_args=(sweep data/pr3207.nml --vary l_ab=0.08:0.1:2 --set m5=60 --set m5=61
 "$KINETOSTAT" "${twice_args[@]}" -o "$cli_tmp/npy_twice.csv"
 run_ks "${twice_args[@]}" --format npy -o "$cli_tmp/npy_twice.npy"
 if [ "$rc" -eq 0 ]; then
-  python3 tools/npy_check.py "$cli_tmp/npy_twice.npy" "$cli_tmp/npy_twice.csv" >"$cli_tmp/npy_check.out" 2>&1 && pass ||
+  run_py tools/npy_check.py "$cli_tmp/npy_twice.npy" "$cli_tmp/npy_twice.csv" >"$cli_tmp/npy_check.out" 2>&1 && pass ||
     fail npy-sweep-set-twice "$(head -20 "$cli_tmp/npy_check.out")"
 else
   fail npy-sweep-set-twice "exit $rc: $(head -c 300 "$err")"
 fi
 # --keep-going: the variants that ran (l_ab = 0.3; 0.4 and 0.5 fail), exit 2
 run_ks sweep data/pr3207.nml --vary l_ab=0.3:0.5:3 --keep-going --format npy --quiet -o "$cli_tmp/npy_kept.npy"
-python3 - "$cli_tmp/npy_kept.npy" <<'PY' && [ "$rc" -eq 2 ] && pass || fail npy-sweep-keep-going "exit $rc (expected 2) or not the one variant that ran"
+run_py - "$cli_tmp/npy_kept.npy" <<'PY' && [ "$rc" -eq 2 ] && pass || fail npy-sweep-keep-going "exit $rc (expected 2) or not the one variant that ran"
 import sys
 sys.path.insert(0, "tools")
 from npy_check import read_npy

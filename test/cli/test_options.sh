@@ -4,22 +4,22 @@
 # --method, kind and preset.
 
 opt_dir="$cli_tmp/options"; mkdir -p "$opt_dir"
-python3 tools/check_options.py "$KINETOSTAT" >"$opt_dir/check.out" 2>&1
+run_py tools/check_options.py "$KINETOSTAT" >"$opt_dir/check.out" 2>&1
 grep -qx 'check_options: ok' "$opt_dir/check.out" && pass || fail options-man-completion "$(head -20 "$opt_dir/check.out")"
 
 # the check can fail: a kind dropped from the completion, an option from the man page's
 # synopsis, a subcommand from the completion
 sed 's/ linkage / /' completions/kinetostat.bash >"$opt_dir/no_linkage.bash"
-python3 tools/check_options.py "$KINETOSTAT" --completion "$opt_dir/no_linkage.bash" --man "" >"$opt_dir/bad1.out" 2>&1
+run_py tools/check_options.py "$KINETOSTAT" --completion "$opt_dir/no_linkage.bash" --man "" >"$opt_dir/bad1.out" 2>&1
 grep -q "^check_options: completion: 'kinetostat template ' lacks the kind linkage$" "$opt_dir/bad1.out" \
   && grep -q '^check_options: [0-9]* problems$' "$opt_dir/bad1.out" && pass \
   || fail options-check-fails-on-completion "$(cat "$opt_dir/bad1.out")"
 sed 's/ balance structure / /' completions/kinetostat.bash >"$opt_dir/no_sub.bash"
-python3 tools/check_options.py "$KINETOSTAT" --completion "$opt_dir/no_sub.bash" --man "" >"$opt_dir/bad2.out" 2>&1
+run_py tools/check_options.py "$KINETOSTAT" --completion "$opt_dir/no_sub.bash" --man "" >"$opt_dir/bad2.out" 2>&1
 grep -q "lacks the subcommand structure$" "$opt_dir/bad2.out" && pass \
   || fail options-check-fails-on-subcommand "$(cat "$opt_dir/bad2.out")"
 awk '!(/^\.RB \[ \\-\\-shaking \]$/ && !done++)' man/kinetostat.1 >"$opt_dir/no_shaking.1"
-python3 tools/check_options.py "$KINETOSTAT" --completion "" --man "$opt_dir/no_shaking.1" >"$opt_dir/bad3.out" 2>&1
+run_py tools/check_options.py "$KINETOSTAT" --completion "" --man "$opt_dir/no_shaking.1" >"$opt_dir/bad3.out" 2>&1
 grep -q "^check_options: man: SYNOPSIS of 'kinetostat' differs from --help: lacks \['--shaking'\]" "$opt_dir/bad3.out" \
   && pass || fail options-check-fails-on-man "$(cat "$opt_dir/bad3.out")"
 

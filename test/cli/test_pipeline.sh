@@ -14,7 +14,7 @@ for deck in data/*.nml; do
   printf '%s\t%s\n' "$name" "$cli_tmp/json_$name.json" >>"$cli_tmp/json_list.tsv"
 done
 # the first key is the layout's version, an integer (docs/cli.md "JSON format version")
-python3 - "$cli_tmp/json_list.tsv" >"$cli_tmp/json.out" 2>&1 <<'PY'
+run_py - "$cli_tmp/json_list.tsv" >"$cli_tmp/json.out" 2>&1 <<'PY'
 import json, sys
 for line in open(sys.argv[1]):
     name, path = line.rstrip("\n").split("\t")
@@ -34,7 +34,7 @@ done <"$cli_tmp/json_list.tsv"
 # the JSON rows equal the CSV rows (csv columns, same text)
 run_ks data/pr3207.nml --format csv; cp "$out" "$cli_tmp/p.csv"
 run_ks data/pr3207.nml --format json; cp "$out" "$cli_tmp/p.json"
-python3 - "$cli_tmp/p.csv" "$cli_tmp/p.json" <<'PY' && pass || fail json-equals-csv "JSON rows differ from the CSV"
+run_py - "$cli_tmp/p.csv" "$cli_tmp/p.json" <<'PY' && pass || fail json-equals-csv "JSON rows differ from the CSV"
 import csv, json, sys
 rows = list(csv.reader(open(sys.argv[1])))
 d = json.load(open(sys.argv[2]))
@@ -54,7 +54,7 @@ for deck in data/pr3207.nml data/assur_sixbar.nml data/pr3050.nml; do
     pass; else fail "ru-rows-$name" "numeric rows differ between --lang en and --lang ru"; fi
 done
 # units lines are as wide (in characters) as the header they sit under
-python3 - "$cli_tmp/pr3207.ru" <<'PY' && pass || fail ru-units-aligned "Cyrillic units line misaligned"
+run_py - "$cli_tmp/pr3207.ru" <<'PY' && pass || fail ru-units-aligned "Cyrillic units line misaligned"
 import sys
 lines = open(sys.argv[1], encoding="utf-8").read().split("\n")
 i = next(k for k, l in enumerate(lines) if l.strip().startswith("PHI1"))

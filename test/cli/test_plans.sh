@@ -14,7 +14,7 @@ mkdir -p "$plans_dir"
 declare -A plans_steps  # a deck's step count (its CSV's rows), noted once
 # sheet_lines SVG: its texts, one a line, the typeset runs joined (F<tspan>21</tspan> -> F21)
 sheet_lines() {
-  python3 -c 'import html, re, signal, sys
+  run_py -c 'import html, re, signal, sys
 signal.signal(signal.SIGPIPE, signal.SIG_DFL)
 for m in re.findall(r"<text[^>]*>(.*?)</text>", open(sys.argv[1], encoding="utf-8").read()):
     print(html.unescape(re.sub(r"<[^>]+>", "", m)))' "$1"
@@ -76,7 +76,7 @@ done
 check_batch plans_check
 # the five-bar's two drives: an input link's polygon each, M4 (not the lever's unknown) a
 # load of the lever; PR 3050's cylinder and rod one input unit at every step, at rest too
-python3 -c 'import json, sys; d = json.load(open(sys.argv[1]))
+run_py -c 'import json, sys; d = json.load(open(sys.argv[1]))
 assert [p["label"] for p in d["force_plans"]] == ["II(2,3)", "I(0,4)", "I(0,1)"], d["force_plans"]
 assert [p["moment"]["name"] for p in d["force_plans"][1:]] == ["M4", "M1"]
 assert "M4" in [l["name"] for l in d["zhukovsky"]["loads"]]' "$plans_dir/fivebar.2.json" >"$cli_tmp/check.out" 2>&1 \
@@ -87,7 +87,7 @@ grep -q '"groups": \[' "$plans_dir/pr3050.1.json" && grep -A1 '"groups": \[' "$p
 # the plans JSON in the run's envelope: format_version (first), program, mechanism, deck_title, overrides, selfcheck,
 # warnings; the sheet's rotation against the position frame
 run_ks data/fivebar.nml --format json --at 2 --plans --set 'link(2)%m=2'
-python3 -c 'import json, sys; d = json.load(open(sys.argv[1]))
+run_py -c 'import json, sys; d = json.load(open(sys.argv[1]))
 assert type(d["format_version"]) is int and list(d)[0] == "format_version", d.get("format_version")
 for key in ("program", "mechanism", "title", "deck", "deck_title", "overrides", "selfcheck", "warnings", "sheet_rotation"):
     assert key in d, key
@@ -104,7 +104,7 @@ assert d["deck_title"] == "five-bar with two motors", d["deck_title"]' "$out" >"
 # (the first equation's normal one); a group's reaction part moved (F43's tangential part in
 # the six-bar's group 4,5). The perturbed plans are made in one Python process, the checks run
 # in another (batch_run): each must fail with its verdict (expect_batch_fail).
-python3 - "$plans_dir" "$cli_tmp" <<'PY'
+run_py - "$plans_dir" "$cli_tmp" <<'PY'
 import json, os, sys
 plans, tmp = sys.argv[1:]
 def perturb(source, target, change):
@@ -207,7 +207,7 @@ grep -o '"group": "[0-9,]*"' "$plans_dir/sixbar.1.json" | tr '\n' ' ' | grep -qx
   && pass || fail plans-sixbar-groups "$(grep -o '"group": "[0-9,]*"' "$plans_dir/sixbar.1.json")"
 # ... in the course's order: F43^tau, the loads of 4 and 5, F56, F43^n; then F21^tau, the loads of
 # 2 and 3 with the known F34, F36^tau, F36^n, F21^n, the inner reactions F45, F23
-python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); p = d["force_plans"]
+run_py -c 'import json, sys; d = json.load(open(sys.argv[1])); p = d["force_plans"]
 assert [v["name"] for v in p[0]["vectors"]] == ["F43^τ", "G4", "Phi4", "G5", "Phi5", "F5", "F56", "F43^n"], p[0]
 assert [v["name"] for v in p[1]["vectors"]] == ["F21^τ", "G2", "Phi2", "G3", "F34", "F36^τ", "F36^n", "F21^n"], p[1]
 assert [r["name"] for r in p[0]["reactions"]] == ["F43", "F56", "F45"] and [r["name"] for r in p[1]["reactions"]] == ["F21", "F36", "F23"]' \
@@ -224,7 +224,7 @@ grep -q '"group": "1,2,3".*"name": "F14^τ"' "$plans_dir"/pr3050.*.json \
 # against the dedicated program at the same steps: the lever's effort, and the frame's reaction
 # on the cylinder split along A-B the same way (relative 1e-9 of the polygon's largest vector)
 for k in 2 5 9; do
-  python3 -c 'import json, math, sys
+  run_py -c 'import json, math, sys
 g, d = (json.load(open(f)) for f in sys.argv[1:3])
 zg, zd = g["zhukovsky"], d["zhukovsky"]
 assert abs(zg["effort"] - zd["effort"]) <= 1e-9 * abs(zd["effort"]), (zg, zd)
@@ -265,13 +265,13 @@ run_ks data/sixbar_example.nml --format plans --at 1
 cp "$out" "$plans_dir/sixbar_example.plans.svg"
 xmllint --noout "$plans_dir/sixbar_example.plans.svg" 2>"$cli_tmp/xmllint.err" && pass \
   || fail plans-sheet-xmllint "$(head -5 "$cli_tmp/xmllint.err")"
-python3 "$root/tools/svg_check.py" self-contained "$plans_dir/sixbar_example.plans.svg" >"$cli_tmp/check.out" 2>&1 \
+run_py "$root/tools/svg_check.py" self-contained "$plans_dir/sixbar_example.plans.svg" >"$cli_tmp/check.out" 2>&1 \
   && pass || fail plans-sheet-self-contained "$(cat "$cli_tmp/check.out")"
 # rendered to a PNG and decoded (1.3 s) with tools/test --long; the default suite renders the
 # plans as test_sheets' kinematics sheet to PDF and test_svg's sheets to PNG
 if [ "${KINETOSTAT_LONG:-0}" != 1 ]; then :
 elif rsvg-convert -o "$plans_dir/plans.png" "$plans_dir/sixbar_example.plans.svg" 2>/dev/null; then
-  python3 "$root/tools/svg_check.py" png "$plans_dir/plans.png" "$plans_dir/sixbar_example.plans.svg" \
+  run_py "$root/tools/svg_check.py" png "$plans_dir/plans.png" "$plans_dir/sixbar_example.plans.svg" \
     >"$cli_tmp/check.out" 2>&1 && pass || fail plans-sheet-png "$(cat "$cli_tmp/check.out")"
 else fail plans-sheet-render "rsvg-convert failed"; fi
 sheet_lines "$plans_dir/sixbar_example.plans.svg" >"$cli_tmp/lines.txt"
@@ -301,12 +301,12 @@ for spec in sixbar_example:1 pr3207:3 pr3050:3 fivebar:2 class3:19 friction_slid
   name=${spec%%:*}; k=${spec#*:}
   run_ks_into "$plans_dir/$name.$k.dxf" "data/$name.nml" --format dxf --at "$k" --plans
   [ -f "$plans_dir/$name.$k.json" ] || run_ks_into "$plans_dir/$name.$k.json" "data/$name.nml" --format json --at "$k" --plans
-  { python3 "$root/tools/dxf_check.py" "$plans_dir/$name.$k.dxf" && python3 "$plans_check" dxf "$plans_dir/$name.$k.dxf" \
+  { run_py "$root/tools/dxf_check.py" "$plans_dir/$name.$k.dxf" && run_py "$plans_check" dxf "$plans_dir/$name.$k.dxf" \
     "$plans_dir/$name.$k.json"; } >"$cli_tmp/check.out" 2>&1 && pass || fail "plans-dxf-$name-$k" "$(head -8 "$cli_tmp/check.out")"
 done
 # ... and the sheet checks can fail: two images' marks swapped, the plan drawn unturned (the
 # old sheet: its own frame), a DXF without the velocity plan's circles
-python3 - "$plans_dir/sixbar.7.svg" >"$cli_tmp/bad.svg" <<'PY'
+run_py - "$plans_dir/sixbar.7.svg" >"$cli_tmp/bad.svg" <<'PY'
 import re, sys
 s = open(sys.argv[1], encoding="utf-8").read()
 marks = re.findall(r'<circle cx="[^"]*" cy="[^"]*"([^>]*data-image="(?:b|c)")', s)
@@ -315,11 +315,11 @@ c = re.search(r'<circle (cx="[^"]*" cy="[^"]*")([^>]*data-image="c")', s)
 s = s.replace(b.group(0), "@@B@@").replace(c.group(0), "<circle " + b.group(1) + c.group(2)).replace("@@B@@", "<circle " + c.group(1) + b.group(2))
 print(s, end="")
 PY
-python3 "$plans_check" sheet "$cli_tmp/bad.svg" "$plans_dir/sixbar.7.json" "$plans_dir/sixbar.csv" >"$cli_tmp/check.out" 2>&1
+run_py "$plans_check" sheet "$cli_tmp/bad.svg" "$plans_dir/sixbar.7.json" "$plans_dir/sixbar.csv" >"$cli_tmp/check.out" 2>&1
 grep -q "velocity image b drawn at" "$cli_tmp/check.out" && pass || fail plans-sheet-marks-can-fail "$(head -3 "$cli_tmp/check.out")"
 sed -E 's/(class="velocity-plan"[^>]*data-rotation=")[^"]*"/\10"/; s/(class="mechanism"[^>]*data-rotation=")[^"]*"/\10"/' \
   "$plans_dir/sixbar.7.svg" >"$cli_tmp/bad.svg"
-python3 - "$cli_tmp/bad.svg" "$plans_dir/sixbar.7.json" <<'PY'
+run_py - "$cli_tmp/bad.svg" "$plans_dir/sixbar.7.json" <<'PY'
 # the velocity images drawn in the position frame (unturned), the mechanism left turned
 import json, math, re, sys
 svg, plans = open(sys.argv[1], encoding="utf-8").read(), json.load(open(sys.argv[2]))
@@ -330,11 +330,11 @@ for p in plans["velocity_plan"]["points"]:
                  '<circle cx="%.2f" cy="%.2f"\\1' % (px + p["x"] / mu, py - p["y"] / mu), svg)
 open(sys.argv[1], "w", encoding="utf-8").write(svg)
 PY
-sed -i -E 's/(class="mechanism"[^>]*data-rotation=")0"/\1'"$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["sheet_rotation"])' "$plans_dir/sixbar.7.json")"'"/' "$cli_tmp/bad.svg"
-python3 "$plans_check" sheet "$cli_tmp/bad.svg" "$plans_dir/sixbar.7.json" "$plans_dir/sixbar.csv" >"$cli_tmp/check.out" 2>&1
+sed -i -E 's/(class="mechanism"[^>]*data-rotation=")0"/\1'"$(run_py -c 'import json,sys; print(json.load(open(sys.argv[1]))["sheet_rotation"])' "$plans_dir/sixbar.7.json")"'"/' "$cli_tmp/bad.svg"
+run_py "$plans_check" sheet "$cli_tmp/bad.svg" "$plans_dir/sixbar.7.json" "$plans_dir/sixbar.csv" >"$cli_tmp/check.out" 2>&1
 grep -q "is not perpendicular to the drawn link" "$cli_tmp/check.out" && pass \
   || fail plans-sheet-perpendicular-can-fail "$(head -3 "$cli_tmp/check.out")"
 awk 'BEGIN { drop = 0 } { if (drop && $0 == "VPLAN") { sub(/VPLAN/, "TEXT") } print; drop = ($0 == "  8" || $0 == "8") }' \
   "$plans_dir/sixbar_example.1.dxf" >"$cli_tmp/bad.dxf"
-python3 "$plans_check" dxf "$cli_tmp/bad.dxf" "$plans_dir/sixbar_example.1.json" >"$cli_tmp/check.out" 2>&1
+run_py "$plans_check" dxf "$cli_tmp/bad.dxf" "$plans_dir/sixbar_example.1.json" >"$cli_tmp/check.out" 2>&1
 grep -q "VPLAN: no circle at the image of" "$cli_tmp/check.out" && pass || fail plans-dxf-can-fail "$(head -3 "$cli_tmp/check.out")"

@@ -6,7 +6,7 @@
 # sizes by hand: the rocker's swing (law of cosines at the extreme positions, crank and
 # coupler in line) and the offset slider-crank's stroke
 resist_hand() {
-  python3 -c "
+  run_py -c "
 import math
 swing = math.acos((0.3**2 + 0.25**2 - 0.45**2) / (2*0.3*0.25)) - math.acos((0.3**2 + 0.25**2 - 0.25**2) / (2*0.3*0.25))
 stroke = math.sqrt(0.45**2 - 0.02**2) - math.sqrt(0.25**2 - 0.02**2)
@@ -17,7 +17,7 @@ read -r useful_rocker useful_slider <<<"$(resist_hand)"
 # 1. the bundled deck: driver's work - friction losses = useful work (rel 1e-4: trapezoidal
 #    rule over 2 deg steps, ~1.4e-5 here); cycle efficiency 0.959 (not 0)
 run_ks data/friction_fourbar_resist.nml
-python3 - "$out" "$useful_rocker" <<'PY' && pass || fail resist-fourbar-work "useful work or efficiency off"
+run_py - "$out" "$useful_rocker" <<'PY' && pass || fail resist-fourbar-work "useful work or efficiency off"
 import re, sys
 text = open(sys.argv[1]).read()
 get = lambda k: float(re.search(r"^\s*" + k + r"\s*=\s*(\S+)", text, re.M).group(1))
@@ -32,7 +32,7 @@ PY
 #    N*m, 0 only where the rocker stops (the echoed VALUE list against omega3 of --kinematics)
 run_ks data/friction_fourbar_resist.nml --format csv --kinematics; cp "$out" "$cli_tmp/resist_kin.csv"
 run_ks data/friction_fourbar_resist.nml
-python3 - "$out" "$cli_tmp/resist_kin.csv" <<'PY' && pass || fail resist-fourbar-sign "a resisting moment helps the motion"
+run_py - "$out" "$cli_tmp/resist_kin.csv" <<'PY' && pass || fail resist-fourbar-sign "a resisting moment helps the motion"
 import csv, re, sys
 text = open(sys.argv[1]).read()
 block = text.split("RESIST", 1)[1].split("VALUE(", 1)[1]
@@ -55,7 +55,7 @@ PY
 sed -e 's/force(1)%value = 500, force(1)%idle = 100, force(1)%phi_on = 0, force(1)%phi_off = 180/force(1)%value = 500, force(1)%resist = .true./' \
     -e 's/dphi = 30 /dphi = 1 /' data/assur_slider_crank.nml >"$cli_tmp/resist_slider.nml"
 run_ks "$cli_tmp/resist_slider.nml" --format summary
-python3 - "$out" "$useful_slider" <<'PY' && pass || fail resist-slider-work "work of the resisting force off"
+run_py - "$out" "$useful_slider" <<'PY' && pass || fail resist-slider-work "work of the resisting force off"
 import csv, sys
 row = list(csv.DictReader(open(sys.argv[1])))[0]
 work, useful = float(row["work_M1"]), float(sys.argv[2])

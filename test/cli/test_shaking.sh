@@ -7,7 +7,7 @@ while IFS= read -r line; do
     "FAIL "*) fail "shaking" "${line#FAIL }" ;;
     *) fail "shaking" "unexpected line from tools/shaking_check.py: $line" ;;
   esac
-done < <(python3 "$root/tools/shaking_check.py" "$KINETOSTAT" 2>&1)
+done < <(run_py "$root/tools/shaking_check.py" "$KINETOSTAT" 2>&1)
 
 # the option leaves the default outputs alone and adds its columns at the end
 run_ks "$root/data/assur_fourbar.nml" --format csv --shaking
@@ -58,7 +58,7 @@ for args in "assur_fourbar.nml" "assur_fourbar.nml --method crank" "assur_slider
   sed -e 's/^kinetostat: balance: //' -e 's/[A-Za-z0-9_]*([0-9]*)%[A-Za-z0-9_]*//g' "$err" >"$cli_tmp/balance_ru.txt"
   if [ "$rc" -ne 0 ] || ! grep -q 'противовес' "$cli_tmp/balance_ru.txt" || ! grep -q 'уравновешивани' "$cli_tmp/balance_ru.txt"; then
     fail "balance-ru ($args)" "exit $rc; report: $(head -c 400 "$err")"
-  elif ! python3 "$root/tools/svg_check.py" english "$cli_tmp/balance_ru.txt" >"$cli_tmp/balance_ru.check" 2>&1; then
+  elif ! run_py "$root/tools/svg_check.py" english "$cli_tmp/balance_ru.txt" >"$cli_tmp/balance_ru.check" 2>&1; then
     fail "balance-ru ($args)" "English words in the Russian report: $(head -5 "$cli_tmp/balance_ru.check")"
   else
     cp "$out" "$cli_tmp/balanced_ru.nml"
@@ -80,7 +80,7 @@ run_ks balance "$root/data/linkage_fourbar.nml" -o "$cli_tmp/lb.nml"; rc_l=$rc; 
 run_ks balance "$root/data/assur_fourbar.nml" -o "$cli_tmp/ab.nml"; cp "$err" "$cli_tmp/ab.err"
 run_ks "$cli_tmp/lb.nml" --shaking --kinematics --format csv; cp "$out" "$cli_tmp/lb.csv"; rc_r=$rc
 run_ks "$root/data/linkage_fourbar.nml" --shaking --format csv; cp "$out" "$cli_tmp/l0.csv"
-python3 - "$cli_tmp/lb.err" "$cli_tmp/ab.err" "$cli_tmp/lb.csv" "$cli_tmp/l0.csv" "$cli_tmp/lb.nml" <<'PY' && [ "$rc_l$rc_r" = 00 ] && pass || fail balance-linkage-fourbar "exit $rc_l/$rc_r (see above)"
+run_py - "$cli_tmp/lb.err" "$cli_tmp/ab.err" "$cli_tmp/lb.csv" "$cli_tmp/l0.csv" "$cli_tmp/lb.nml" <<'PY' && [ "$rc_l$rc_r" = 00 ] && pass || fail balance-linkage-fourbar "exit $rc_l/$rc_r (see above)"
 import csv, re, sys
 lk, asr = open(sys.argv[1]).read(), open(sys.argv[2]).read()
 num = lambda t, pat: re.findall(pat, t)

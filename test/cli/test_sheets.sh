@@ -93,7 +93,7 @@ if [ "${KINETOSTAT_LONG:-0}" != 1 ] && command -v rsvg-convert >/dev/null; then 
 # guide's reaction (PR 3207's F56 on the ram) = |Σ| / F μl. The polygon's forces = the
 # run's (--format json --plans at the sheet's step) within 1e-9 N.
 sheets_moments() {  # SVG [JSON]: "ok N GROUPS" or "differs: ..."
-  python3 - "$@" <<'PY'
+  run_py - "$@" <<'PY'
 import json, re, sys
 text = open(sys.argv[1], encoding="utf-8").read()
 run = {}
@@ -152,13 +152,13 @@ svg="$cli_tmp/sheets_pr3207_flywheel_en/kinetostatics.svg"
 verdict=$(sheets_moments "$svg")
 [ "$verdict" = "ok 2 2" ] && pass || fail sheets-groups-apart-pr3207 "expected F21 about C and the arm of F56, got: $verdict"
 for bad in 'h21:F21 about C' 'h56:arm of F56 about D'; do
-  python3 -c "import re, sys; t = open(sys.argv[1], encoding='utf-8').read(); print(re.sub(r'(data-arm=\"' + sys.argv[2] + r'\"[^>]*data-h=\")([^\"]*)', lambda m: m.group(1) + repr(1.02 * float(m.group(2))), t), end='')" \
+  run_py -c "import re, sys; t = open(sys.argv[1], encoding='utf-8').read(); print(re.sub(r'(data-arm=\"' + sys.argv[2] + r'\"[^>]*data-h=\")([^\"]*)', lambda m: m.group(1) + repr(1.02 * float(m.group(2))), t), end='')" \
     "$svg" "${bad%%:*}" >"$cli_tmp/apart_bad.svg"
   verdict=$(sheets_moments "$cli_tmp/apart_bad.svg")
   case "$verdict" in "differs: ${bad#*:}"*) pass ;; *) fail sheets-groups-apart-pr3207-must-fail "a wrong ${bad%%:*} passed: $verdict" ;; esac
 done
 # must fail: an arm of R^τ drawn 2 % too long
-python3 -c "import re, sys; t = open(sys.argv[1], encoding='utf-8').read(); print(re.sub(r'(data-force-name=\"F21\^τ\" data-force=\"[^\"]*\" data-h=\")([^\"]*)', lambda m: m.group(1) + repr(1.02 * float(m.group(2))), t), end='')" \
+run_py -c "import re, sys; t = open(sys.argv[1], encoding='utf-8').read(); print(re.sub(r'(data-force-name=\"F21\^τ\" data-force=\"[^\"]*\" data-h=\")([^\"]*)', lambda m: m.group(1) + repr(1.02 * float(m.group(2))), t), end='')" \
   "$cli_tmp/sheets_class3_en/kinetostatics.svg" >"$cli_tmp/apart_bad.svg"
 verdict=$(sheets_moments "$cli_tmp/apart_bad.svg")
 case "$verdict" in "differs: F21^τ about"*) pass ;; *) fail sheets-groups-apart-must-fail "a wrong arm passed: $verdict" ;; esac
@@ -167,7 +167,7 @@ case "$verdict" in "differs: F21^τ about"*) pass ;; *) fail sheets-groups-apart
 # link's diagrams and its values table the run's
 dir="$cli_tmp/sheets_class3_en"
 formula=$("$KINETOSTAT" structure data/class3.nml | sed -n 's/^ STRUCTURE FORMULA: //p' | sed 's/ -> / → /g')
-python3 - "$dir/kinematics.svg" "$formula" <<'PY' && pass || fail sheets-kinematics-structure "the structure or W differs"
+run_py - "$dir/kinematics.svg" "$formula" <<'PY' && pass || fail sheets-kinematics-structure "the structure or W differs"
 import re, sys
 plain = re.sub(r"<[^>]+>", "", open(sys.argv[1], encoding="utf-8").read())
 assert "structure formula: " + sys.argv[2] in plain, sys.argv[2]
@@ -183,7 +183,7 @@ PY
 # dynamics, run at 1 deg (data/pr3207.nml --set dphi=1).
 dir="$cli_tmp/sheets_pr3207_flywheel_en"
 run_ks data/pr3207.nml --set dphi=1 --format csv
-python3 - "$dir/kinematics.svg" "$dir/kinetostatics.svg" "$out" <<'PY' && pass || fail sheets-positions-pr3207 "the plan of positions or the default position differs"
+run_py - "$dir/kinematics.svg" "$dir/kinetostatics.svg" "$out" <<'PY' && pass || fail sheets-positions-pr3207 "the plan of positions or the default position differs"
 import csv, math, re, sys
 plain = re.sub(r"<[^>]+>", "", open(sys.argv[1], encoding="utf-8").read())
 assert "Plan of positions (12, from the extreme position of link 5)" in plain, "heading"
@@ -204,9 +204,9 @@ rm -rf "$dir"
 run_ks sheets data/assur_fourbar.nml -o "$dir" --positions 8 --point C
 phi0=$(sed 's/<[^>]*>//g' "$dir/kinematics.svg" | grep -o 'position 0: the extreme position of link 3, φ1 = [0-9.]*' | sed 's/.*= //')
 if [ "$rc" -eq 0 ] && [ -n "$phi0" ]; then
-  run_ks data/assur_fourbar.nml --set "phi_start=$(python3 -c "print($phi0 - 0.01)")" --set dphi=0.01 --set n=3 \
+  run_ks data/assur_fourbar.nml --set "phi_start=$(run_py -c "print($phi0 - 0.01)")" --set dphi=0.01 --set n=3 \
     --format csv --kinematics
-  python3 - "$out" "$dir/kinematics.svg" <<'PY' && pass || fail sheets-positions-rocker "position 0 is not the rocker's extreme"
+  run_py - "$out" "$dir/kinematics.svg" <<'PY' && pass || fail sheets-positions-rocker "position 0 is not the rocker's extreme"
 import csv, math, re, sys
 r = list(csv.DictReader(open(sys.argv[1])))
 ac = math.hypot(float(r[1]["x_C"]) - float(r[1]["x_A"]), float(r[1]["y_C"]) - float(r[1]["y_A"]))
@@ -216,7 +216,7 @@ assert (p[1] - p[0]) * (p[1] - p[2]) > 0, ("phi3 not extreme", p)
 plain = re.sub(r"<[^>]+>", "", open(sys.argv[2], encoding="utf-8").read())
 assert "Plan of positions (8, from the extreme position of link 3)" in plain and "trajectory of C" in plain
 PY
-  python3 "$sheets_check" labels --lines "$dir/kinematics.svg" >"$cli_tmp/check.out" 2>&1 && pass \
+  run_py "$sheets_check" labels --lines "$dir/kinematics.svg" >"$cli_tmp/check.out" 2>&1 && pass \
     || fail sheets-positions-rocker-legible "$(head -3 "$cli_tmp/check.out")"
 else fail sheets-positions-rocker "exit $rc, no position 0: $(head -c 300 "$err")"; fi
 # a four-stroke engine (cycle 720 deg): position 0 its top dead centre (the deck's 0 deg, the
@@ -226,8 +226,8 @@ rm -rf "$dir"
 run_ks sheets data/assur_engine_flywheel.nml -o "$dir" --lang ru --output-link 3
 if [ "$rc" -eq 0 ] && grep -q 'положение 0: крайнее положение звена 3, φ1 = 0.00 град' <(sed 's/<[^>]*>//g' "$dir/kinematics.svg") \
   && grep -q '>720<' "$dir/dynamics.svg" \
-  && python3 "$sheets_check" labels --lines "$dir/kinematics.svg" "$dir/dynamics.svg" >"$cli_tmp/check.out" 2>&1 \
-  && python3 "$sheets_check" english "$dir/kinematics.svg" "$dir/dynamics.svg" >>"$cli_tmp/check.out" 2>&1; then pass
+  && run_py "$sheets_check" labels --lines "$dir/kinematics.svg" "$dir/dynamics.svg" >"$cli_tmp/check.out" 2>&1 \
+  && run_py "$sheets_check" english "$dir/kinematics.svg" "$dir/dynamics.svg" >>"$cli_tmp/check.out" 2>&1; then pass
 else fail sheets-engine-720 "exit $rc $(head -c 300 "$err") $(head -3 "$cli_tmp/check.out")"; fi
 # bad values: exit 2, one line naming the option, nothing written
 for bad in "--positions 10" "--point Q" "--output-link 9" "--output-link x"; do
@@ -240,7 +240,7 @@ done
 # the figures the dynamics sheet prints are the run's (the flywheel's J, D, the Wittenbauer
 # segment k-l = delta omega_m^2 J_fw / mu_T)
 dir="$cli_tmp/sheets_pr3207_flywheel_en"
-python3 - "$dir/dynamics.svg" <<'PY' && pass || fail sheets-dynamics-figures "the sheet's numbers differ from the run's"
+run_py - "$dir/dynamics.svg" <<'PY' && pass || fail sheets-dynamics-figures "the sheet's numbers differ from the run's"
 import re, sys
 t = open(sys.argv[1], encoding="utf-8").read()
 plain = re.sub(r"<[^>]+>", "", t)
@@ -263,8 +263,8 @@ for deck_lang in $sheets_a4; do
   rm -rf "$dir"
   run_ks sheets "data/$deck.nml" -o "$dir" --paper A4 --lang "$lang" --student X --group G --variant 1
   if [ "$rc" -eq 0 ] && sheets_iso "$dir/kinetostatics.svg" 210.00 297.00 >"$cli_tmp/check.out" 2>&1 \
-    && python3 "$sheets_check" labels --lines "$dir/kinetostatics.svg" >>"$cli_tmp/check.out" 2>&1 \
-    && python3 - "$dir/kinetostatics.svg" >>"$cli_tmp/check.out" 2>&1 <<'PY'
+    && run_py "$sheets_check" labels --lines "$dir/kinetostatics.svg" >>"$cli_tmp/check.out" 2>&1 \
+    && run_py - "$dir/kinetostatics.svg" >>"$cli_tmp/check.out" 2>&1 <<'PY'
 import re, sys
 t = open(sys.argv[1], encoding="utf-8").read()
 m = t[t.index('<g class="mechanism"'):]
@@ -288,7 +288,7 @@ run_ks sheets data/pr3207_flywheel.nml -o "$dir" --paper A4 --lang ru --student 
 if [ "$rc" -eq 0 ] && grep -q "F56 приложена к точке звена, её линия действия в 1.75 м от неё" <(sed 's/<[^>]*>//g' "$dir/kinetostatics.svg") \
   && grep -q 'data-arm="h56"[^>]*data-h="2.3392918' "$dir/kinetostatics.svg" \
   && sheets_iso "$dir/dynamics.svg" 210.00 297.00 >/dev/null 2>&1 \
-  && python3 "$sheets_check" labels --lines "$dir/kinetostatics.svg" >"$cli_tmp/check.out" 2>&1; then pass
+  && run_py "$sheets_check" labels --lines "$dir/kinetostatics.svg" >"$cli_tmp/check.out" 2>&1; then pass
 else fail sheets-a4-guide-reaction "exit $rc: no F56 line of action note, dynamics not 210 x 297, or $(head -3 "$cli_tmp/check.out")"; fi
 
 # A3 and A2 landscape: the kinematics (on A3 its two sheets, kinematics and kinematics-2, as
@@ -303,7 +303,10 @@ for spec in $sheets_a3; do
   IFS=: read -r deck paper lang pw ph <<<"$spec"
   dir="$cli_tmp/sheets_${paper}_${deck}_$lang"
   rm -rf "$dir"
-  run_ks sheets "data/$deck.nml" -o "$dir" --paper "$paper" --lang "$lang" --student X --group G --variant 1
+  # (A2 with the options checked below: --designation, --sheet-numbers, --at)
+  sheets_opts=()
+  [ "$paper" = A2 ] && sheets_opts=(--designation "ТММ.КП.07.003" --sheet-numbers 4,5,6 --at 7)
+  run_ks sheets "data/$deck.nml" -o "$dir" --paper "$paper" --lang "$lang" --student X --group G --variant 1 "${sheets_opts[@]}"
   sheet_word=Sheet; total_word=Sheets
   [ "$lang" = ru ] && { sheet_word="Лист"; total_word="Листов"; }
   sheets_a3_svgs="$dir/kinematics.svg"
@@ -312,26 +315,24 @@ for spec in $sheets_a3; do
   if [ "$rc" -eq 0 ] && sheets_iso "$dir/kinematics.svg" "$pw" "$ph" >"$cli_tmp/check.out" 2>&1 \
     && { [ "$paper" != A3 ] || { sheets_iso "$dir/kinematics-2.svg" "$pw" "$ph" && grep -q ">$sheet_word 2<" "$dir/kinematics-2.svg" \
       && grep -q ">$sheet_word 3<" "$dir/kinetostatics.svg" && grep -q ">$total_word 4<" "$dir/kinematics.svg"; }; } >>"$cli_tmp/check.out" 2>&1 \
-    && python3 "$sheets_check" labels --lines $sheets_a3_svgs >>"$cli_tmp/check.out" 2>&1; then pass
+    && run_py "$sheets_check" labels --lines $sheets_a3_svgs >>"$cli_tmp/check.out" 2>&1; then pass
   else fail "sheets-$paper-$deck-$lang" "exit $rc: $(grep -v '^[0-9]* sheets' "$cli_tmp/check.out" | head -4)"; fi
 done
 
-# --paper, --designation (графа 2 and 26, turned 180 deg), --sheet-numbers, --at
-dir="$cli_tmp/sheets_opts"
-rm -rf "$dir"
-run_ks sheets data/pr3207_flywheel.nml -o "$dir" --paper A2 --designation "ТММ.КП.07.003" --sheet-numbers 4,5,6 --at 7
-if [ "$rc" -eq 0 ] && sheets_iso "$dir/dynamics.svg" 594.00 420.00 >/dev/null 2>&1 \
+# --paper, --designation (графа 2 and 26, turned 180 deg), --sheet-numbers, --at: the A2
+# sheets above (in Russian)
+dir="$cli_tmp/sheets_A2_pr3207_flywheel_ru"
+if sheets_iso "$dir/dynamics.svg" 594.00 420.00 >/dev/null 2>&1 \
   && sheets_iso "$dir/kinetostatics.svg" 594.00 420.00 >/dev/null 2>&1 \
   && [ "$(grep -c '>ТММ.КП.07.003<' "$dir/dynamics.svg")" = 2 ] && grep -q 'rotate(180' "$dir/dynamics.svg" \
-  && grep -q '>Sheet 6<' "$dir/dynamics.svg" && grep -q '>Sheet 5<' "$dir/kinetostatics.svg" \
-  && grep -q '>Sheet 4<' "$dir/kinematics.svg" \
-  && grep -q '>Sheets 3<' "$dir/kinetostatics.svg" && grep -q 'step 7 of 361' "$dir/kinetostatics.svg" \
-  && python3 "$sheets_check" labels --lines "$dir/dynamics.svg" "$dir/kinetostatics.svg" "$dir/kinematics.svg" \
-    >"$cli_tmp/check.out" 2>&1; then pass
-else fail sheets-options "exit $rc $(head -c 300 "$err") $(head -3 "$cli_tmp/check.out" 2>/dev/null)"; fi
+  && grep -q '>Лист 6<' "$dir/dynamics.svg" && grep -q '>Лист 5<' "$dir/kinetostatics.svg" \
+  && grep -q '>Лист 4<' "$dir/kinematics.svg" \
+  && grep -q '>Листов 3<' "$dir/kinetostatics.svg" && grep -q 'положение 7 из 361' "$dir/kinetostatics.svg" \
+  && run_py "$sheets_check" labels --lines "$dir/kinetostatics.svg" >"$cli_tmp/check.out" 2>&1; then pass
+else fail sheets-options "$(ls "$dir" | tr '\n' ' ') $(head -3 "$cli_tmp/check.out" 2>/dev/null)"; fi
 # the default position: the step of the largest |M1|
 run_ks data/assur_slider_crank.nml --format summary
-row=$(python3 - "$out" <<'PY'
+row=$(run_py - "$out" <<'PY'
 import csv, sys
 r = list(csv.DictReader(open(sys.argv[1])))[0]
 mx, mn = float(r["M1_max"]), float(r["M1_min"])
@@ -340,14 +341,15 @@ PY
 )
 dir="$cli_tmp/sheets_at"
 run_ks sheets data/assur_slider_crank.nml -o "$dir"
-step=$(python3 -c "print(int(round(float('$row') / 30)) + 1)")
+step=$(run_py -c "print(int(round(float('$row') / 30)) + 1)")
 grep -q "step $step of 13" "$dir/kinetostatics.svg" && pass || fail sheets-default-at "not at step $step (phi1 = $row deg)"
 
 # all or nothing: a failing deck writes nothing and leaves an earlier run's sheets; a deck
 # without a cycle removes the earlier dynamics sheet
 dir="$cli_tmp/sheets_aon"
 rm -rf "$dir"
-run_ks sheets data/pr3207_flywheel.nml -o "$dir"
+# (the first A1 run's sheets of the same deck, copied)
+cp -r "$cli_tmp/sheets_pr3207_flywheel_en" "$dir"
 cp "$dir/dynamics.svg" "$cli_tmp/sheets_before.svg"
 run_ks sheets data/pr3207_flywheel.nml -o "$dir" --set l_ab=10
 if [ "$rc" -ne 0 ] && cmp -s "$dir/dynamics.svg" "$cli_tmp/sheets_before.svg" && [ "$(ls -A "$dir" | grep -c tmp)" = 0 ]; then pass
@@ -386,8 +388,8 @@ rm -rf "$dir"
 run_ks sheets data/pr3207_flywheel.nml -o "$dir" --designation $'<b>&amp;"x\'\x01\n0\nEOF' --student $'<i>\n999'
 ok=1
 [ "$rc" -eq 0 ] || ok=0
-for f in "$dir"/*.svg; do python3 "$root/tools/output_check.py" xml "$f" --forbid "<b>" --forbid "<i>" >/dev/null 2>&1 || ok=0; done
-for f in "$dir"/*.dxf; do python3 "$root/tools/output_check.py" dxf "$f" >/dev/null 2>&1 || ok=0; done
+for f in "$dir"/*.svg; do run_py "$root/tools/output_check.py" xml "$f" --forbid "<b>" --forbid "<i>" >/dev/null 2>&1 || ok=0; done
+for f in "$dir"/*.dxf; do run_py "$root/tools/output_check.py" dxf "$f" >/dev/null 2>&1 || ok=0; done
 [ "$ok" = 1 ] && pass || fail sheets-hostile-strings "exit $rc or a sheet not well formed"
 
 # Zhukovsky's lever read off as a student reads it (A1 and A4, PR 3207 with its flywheel):
@@ -400,7 +402,7 @@ for f in "$dir"/*.dxf; do python3 "$root/tools/output_check.py" dxf "$f" >/dev/n
 # length 0.25 mm off must stay within 10 % of the moment (2 % on A1): a lever large enough to
 # read. Must fail: F5c's arrow moved 2 mm, its force 5 % off.
 sheets_lever_read() {  # SVG BOUND%: "ok ..." or "differs: ..."
-  python3 - "$@" <<'PY'
+  run_py - "$@" <<'PY'
 import math, re, sys
 text = open(sys.argv[1], encoding="utf-8").read()
 bound_limit = float(sys.argv[2])
@@ -448,11 +450,11 @@ for case in "sheets_pr3207_flywheel_en:2" "sheets_a4_pr3207:10"; do
   case "$verdict" in ok*) pass ;; *) fail "sheets-lever-read-${case%:*}" "$verdict" ;; esac
 done
 svg="$cli_tmp/sheets_a4_pr3207/kinetostatics.svg"
-python3 -c "import re, sys; t = open(sys.argv[1], encoding='utf-8').read(); print(re.sub(r'(data-name=\"F5c\".*?<line x1=\"[-0-9.]+\" y1=\")([-0-9.]+)', lambda m: m.group(1) + f'{float(m.group(2)) + 2:.2f}', t, count=1, flags=re.S), end='')" \
+run_py -c "import re, sys; t = open(sys.argv[1], encoding='utf-8').read(); print(re.sub(r'(data-name=\"F5c\".*?<line x1=\"[-0-9.]+\" y1=\")([-0-9.]+)', lambda m: m.group(1) + f'{float(m.group(2)) + 2:.2f}', t, count=1, flags=re.S), end='')" \
   "$svg" >"$cli_tmp/lever_bad.svg"
 verdict=$(sheets_lever_read "$cli_tmp/lever_bad.svg" 10)
 case "$verdict" in "differs: F5c: arm drawn"*) pass ;; *) fail sheets-lever-read-must-fail-arm "an arrow 2 mm off passed: $verdict" ;; esac
-python3 -c "import re, sys; t = open(sys.argv[1], encoding='utf-8').read(); print(re.sub(r'(data-name=\"F5c\" data-force=\")([^\"]+)', lambda m: m.group(1) + repr(1.05 * float(m.group(2))), t, count=1), end='')" \
+run_py -c "import re, sys; t = open(sys.argv[1], encoding='utf-8').read(); print(re.sub(r'(data-name=\"F5c\" data-force=\")([^\"]+)', lambda m: m.group(1) + repr(1.05 * float(m.group(2))), t, count=1), end='')" \
   "$svg" >"$cli_tmp/lever_bad.svg"
 verdict=$(sheets_lever_read "$cli_tmp/lever_bad.svg" 10)
 case "$verdict" in "differs: read off"*) pass ;; *) fail sheets-lever-read-must-fail-force "a force 5 % off passed: $verdict" ;; esac
@@ -472,7 +474,7 @@ if [ "${KINETOSTAT_LONG:-0}" = 1 ]; then
   done
 fi
 for d in $sheets_dyn; do
-  python3 "$sheets_check" labels --lines "$cli_tmp/$d/dynamics.svg" >"$cli_tmp/check.out" 2>&1 && pass \
+  run_py "$sheets_check" labels --lines "$cli_tmp/$d/dynamics.svg" >"$cli_tmp/check.out" 2>&1 && pass \
     || fail "sheets-dynamics-legible-$d" "$(grep -v '^[0-9]* sheets' "$cli_tmp/check.out" | head -4)"
 done
 # A4 (portrait, ГОСТ 2.301): the kinematics on two sheets, kinematics (the plan of positions,
@@ -484,7 +486,7 @@ done
 # directories of the checks above are reused; PR 3207 and the class-III deck by default, the
 # other flywheel decks and languages with --long.
 sheets_in_block() {  # SVG...: "ok" or what lies inside the title block
-  python3 - "$@" <<'PY'
+  run_py - "$@" <<'PY'
 import re, sys
 bad = []
 for path in sys.argv[1:]:
@@ -548,13 +550,13 @@ for deck_lang in $sheets_a4k; do
     number=$((number + 1))
     svg="$dir/$s.svg"
     sheets_iso "$svg" 210.00 297.00 >>"$cli_tmp/check.out" 2>&1 || ok=0
-    python3 "$sheets_check" labels --lines "$svg" >>"$cli_tmp/check.out" 2>&1 || ok=0
+    run_py "$sheets_check" labels --lines "$svg" >>"$cli_tmp/check.out" 2>&1 || ok=0
     verdict=$(sheets_in_block "$svg")
     [ "$verdict" = ok ] || { ok=0; echo "$verdict" >>"$cli_tmp/check.out"; }
     head_word="${heads%%|*}"; [ "$s" = kinematics-2 ] && head_word="${heads#*|}"
     grep -q "$head_word" "$svg" && grep -q ">$sheet_word $number<" "$svg" && grep -q ">$total_word $n_total<" "$svg" \
       || { ok=0; echo "$s: no '$head_word' or not $sheet_word $number of $n_total" >>"$cli_tmp/check.out"; }
-    if [ "$lang" = ru ]; then python3 "$sheets_check" english "$svg" >>"$cli_tmp/check.out" 2>&1 || ok=0; fi
+    if [ "$lang" = ru ]; then run_py "$sheets_check" english "$svg" >>"$cli_tmp/check.out" 2>&1 || ok=0; fi
   done
   [ "$ok" = 1 ] && pass || fail "sheets-a4-kinematics-$deck-$lang" "$(grep -v '^[0-9]* sheets\|^ok$' "$cli_tmp/check.out" | head -4)"
 done
@@ -592,7 +594,7 @@ PATH="$sheets_path"
 # Must fail: a plan drawn at half its size, a note moved 80 mm right, past its panel's edge,
 # the values read off the plans at 1.4 mm.
 sheets_plans_fill() {  # PERCENT SVG...: "ok ..." or "differs: ..."
-  python3 - "$root/tools" "$@" <<'PY'
+  run_py - "$root/tools" "$@" <<'PY'
 import math, re, sys
 sys.path.insert(0, sys.argv[1])
 import xml.etree.ElementTree as ET
@@ -659,7 +661,7 @@ if [ "${KINETOSTAT_LONG:-0}" = 1 ]; then
   rm -rf "$dir"
   run_ks sheets data/assur_pr3207_flywheel.nml -o "$dir" --paper A3
   [ "$rc" -eq 0 ] || fail sheets-plans-fill-run "exit $rc: $(head -c 300 "$err")"
-  python3 "$sheets_check" labels --lines "$dir/kinematics.svg" "$dir/kinematics-2.svg" >"$cli_tmp/check.out" 2>&1 && pass \
+  run_py "$sheets_check" labels --lines "$dir/kinematics.svg" "$dir/kinematics-2.svg" >"$cli_tmp/check.out" 2>&1 && pass \
     || fail sheets-plans-fill-assur-A3-legible "$(grep -v '^[0-9]* sheets' "$cli_tmp/check.out" | head -3)"
   sheets_fill_svgs="$sheets_fill_svgs $dir/kinematics-2.svg"
 fi
@@ -668,7 +670,7 @@ case "$verdict" in ok*) pass ;; *) fail sheets-plans-fill "$verdict" ;; esac
 # must fail: the acceleration plan drawn at half its size about its pole; a note moved 80 mm
 # right, past the panel's edge
 svg="$cli_tmp/sheets_a4_class3_en/kinematics-2.svg"
-python3 - "$svg" >"$cli_tmp/fill_bad.svg" <<'PY'
+run_py - "$svg" >"$cli_tmp/fill_bad.svg" <<'PY'
 import re, sys
 t = open(sys.argv[1], encoding="utf-8").read()
 start = t.index('<g class="acceleration-plan"')
@@ -686,12 +688,12 @@ PY
 verdict=$(sheets_plans_fill 35 "$cli_tmp/fill_bad.svg")
 case "$verdict" in "differs: "*"acceleration-plan is"*) pass ;; *) fail sheets-plans-fill-must-fail-size "a plan at half its size passed: $verdict" ;; esac
 sed -E '/<g class="acceleration-plan"/,/<\/g>/ s/(<text x=")([0-9.]+)(" y="[0-9.]+" class="note")/\1\2X\3/' "$svg" \
-  | python3 -c "import re, sys; print(re.sub(r'x=\"([0-9.]+)X\"', lambda m: f'x=\"{float(m.group(1)) + 80:.2f}\"', sys.stdin.read()), end='')" \
+  | run_py -c "import re, sys; print(re.sub(r'x=\"([0-9.]+)X\"', lambda m: f'x=\"{float(m.group(1)) + 80:.2f}\"', sys.stdin.read()), end='')" \
   >"$cli_tmp/fill_bad.svg"
 verdict=$(sheets_plans_fill 35 "$cli_tmp/fill_bad.svg")
 case "$verdict" in "differs: "*"leaves its panel"*) pass ;; *) fail sheets-plans-fill-must-fail-note "a note off its panel passed: $verdict" ;; esac
 # must fail: the values read off the plans at 1.4 mm (as they were on one A3 sheet)
-python3 - "$svg" >"$cli_tmp/fill_bad.svg" <<'PY'
+run_py - "$svg" >"$cli_tmp/fill_bad.svg" <<'PY'
 import re, sys
 t = open(sys.argv[1], encoding="utf-8").read()
 start = t.index(">Values read off the plans<")
@@ -711,7 +713,7 @@ case "$verdict" in "differs: "*"values read off the plans at 1.4 mm"*) pass ;; *
 # A4 of the class-III deck; with --long the six-bar's and the &assur PR 3207 flywheel decks,
 # both languages).
 sheets_no_file() {  # DECK LANG FILE...: "ok N texts" or the offending texts
-  python3 - "$@" <<'PY'
+  run_py - "$@" <<'PY'
 import re, sys
 import xml.etree.ElementTree as ET
 deck, lang, paths = sys.argv[1], sys.argv[2], sys.argv[3:]
@@ -792,7 +794,7 @@ case "$verdict" in *"'data/' in 'Масштаб data/x.nml scale'"*"Latin data, 
 # read off the plans).
 # Every text too small printed.
 sheets_least_text() {  # SVG...: "ok SMALLEST" or the texts too small
-  python3 - "$root/tools" "$@" <<'PY'
+  run_py - "$root/tools" "$@" <<'PY'
 import re, sys
 sys.path.insert(0, sys.argv[1])
 import xml.etree.ElementTree as ET
@@ -815,7 +817,7 @@ for d in sheets_a4_class3_en sheets_a4_pr3207 sheets_A3_pr3207_flywheel_en sheet
   verdict=$(sheets_least_text "$cli_tmp/$d"/*.svg)
   case "$verdict" in ok*) pass ;; *) fail "sheets-least-text-$d" "$verdict" ;; esac
 done
-verdict=$(python3 - "$cli_tmp/sheets_A3_pr3207_flywheel_en/kinematics-2.svg" <<'PY'
+verdict=$(run_py - "$cli_tmp/sheets_A3_pr3207_flywheel_en/kinematics-2.svg" <<'PY'
 import re, sys
 t = open(sys.argv[1], encoding="utf-8").read()
 bx, by = (float(v) for v in re.search(r'<rect x="([0-9.]+)" y="([0-9.]+)" width="185.00" height="55.00"', t).groups())

@@ -53,5 +53,5 @@ run_ks "$(deck_with strict_bad data/cam_flat.nml 's/^  l  .*/  l = -1/')" --stri
 [ "$rc" -eq 2 ] && pass || fail strict-error-code "exit $rc for an input error with --strict, expected 2"
 # the JSON lists the warnings
 run_ks data/cam_translating.nml --format json
-python3 -c 'import json,sys; w=json.load(open(sys.argv[1]))["warnings"]; assert len(w) == 2 and "jams" in w[0] and "lost" in w[1], w' "$out" \
+run_py -c 'import json,sys; w=json.load(open(sys.argv[1]))["warnings"]; assert len(w) == 2 and "jams" in w[0] and "lost" in w[1], w' "$out" \
   && pass || fail strict-json-warnings "JSON warnings list is not the two cam warnings"

@@ -12,7 +12,7 @@ rm -rf "$strings_dir"; mkdir -p "$strings_dir"
 # for xml).
 check_output() {
   local name="$1" format="$2" file="$3"; shift 3
-  if ! python3 "$output_check" "$format" "$file" "$@" >"$strings_dir/check.out" 2>&1; then
+  if ! run_py "$output_check" "$format" "$file" "$@" >"$strings_dir/check.out" 2>&1; then
     fail "$name" "$(head -8 "$strings_dir/check.out")"; return
   fi
   if [ "$format" = xml ] && ! xmllint --noout "$file" 2>"$strings_dir/xmllint.err"; then
@@ -23,7 +23,7 @@ check_output() {
 
 # with_title DECK TITLE OUT: DECK with its title line made "  title = 'TITLE'" (any bytes).
 with_title() {
-  python3 -c '
+  run_py -c '
 import os, re, sys
 text = open(sys.argv[1], "rb").read()
 title = os.fsencode(sys.argv[2])
@@ -59,13 +59,13 @@ for base in assur_fourbar linkage_fourbar; do
 done
 # the JSON keeps the strings as text: the title and the path are there, escaped, not added keys
 run_ks "$hostile_dir/linkage_fourbar.nml" --format json --at 3 --plans
-python3 - "$out" <<'PY' && pass || fail strings-plans-json-deck "the deck path is not the JSON's text"
+run_py - "$out" <<'PY' && pass || fail strings-plans-json-deck "the deck path is not the JSON's text"
 import json, sys
 d = json.load(open(sys.argv[1], encoding="utf-8"))
 assert d["deck"].endswith('injected":true,"y":"<b>&]]>,"q\x01\t\n  0\nEOF\nINJECTED\u00ffé %%d ^J/linkage_fourbar.nml'), d["deck"]
 PY
 run_ks "$hostile_dir/assur_fourbar.nml" --format json
-python3 - "$out" <<'PY' && pass || fail strings-json-title "the title is not the JSON's text"
+run_py - "$out" <<'PY' && pass || fail strings-json-title "the title is not the JSON's text"
 import json, sys
 d = json.load(open(sys.argv[1], encoding="utf-8"))
 assert d["deck_title"] == 'x","injected":true,"y":"<b>&amp;]]>,q\x01\t%%d ^J 0 EOF Шарнир a/b ! c & d', d["deck_title"]
@@ -73,7 +73,7 @@ PY
 # the table's lines: DECK, TITLE and the student line each one line, escaped as the messages
 # write them (\n, \t, \xNN)
 run_ks "$hostile_dir/assur_fourbar.nml" --student "$student" --group "$group" --variant "$variant"
-python3 - "$out" "$hostile_dir/assur_fourbar.nml" "$student" "$group" "$variant" <<'PY' && pass || fail strings-table-lines "see above"
+run_py - "$out" "$hostile_dir/assur_fourbar.nml" "$student" "$group" "$variant" <<'PY' && pass || fail strings-table-lines "see above"
 import os, sys
 def shown(b):
     out, i = [], 0
@@ -130,7 +130,7 @@ run_ks data/pr3207.nml --set $'l_ab=0.11\xff'
 ru_title='Шарнирный четырёхзвенник: кривошип, шатун, коромысло (ЁЖИК)'
 with_title data/assur_fourbar.nml "$ru_title" "$strings_dir/ru.nml"
 sed '1i ! Исходные данные: вариант 7' "$strings_dir/ru.nml" >"$strings_dir/utf8.nml"
-python3 -c 'import sys; open(sys.argv[2], "wb").write(open(sys.argv[1], encoding="utf-8").read().encode("cp1251"))' \
+run_py -c 'import sys; open(sys.argv[2], "wb").write(open(sys.argv[1], encoding="utf-8").read().encode("cp1251"))' \
   "$strings_dir/utf8.nml" "$strings_dir/cp1251.nml"
 run_ks "$strings_dir/cp1251.nml"; cp "$out" "$strings_dir/cp1251.table"
 run_ks "$strings_dir/utf8.nml"
@@ -138,7 +138,7 @@ run_ks "$strings_dir/utf8.nml"
   && diff <(grep -v '^ DECK:' "$strings_dir/cp1251.table") <(grep -v '^ DECK:' "$out") >/dev/null \
   && pass || fail strings-cp1251-table "$(grep TITLE "$strings_dir/cp1251.table") $(head -c 200 "$err")"
 run_ks "$strings_dir/cp1251.nml" --format json
-python3 -c 'import json,sys; t=json.load(open(sys.argv[1], encoding="utf-8"))["deck_title"]; assert t == sys.argv[2], t' \
+run_py -c 'import json,sys; t=json.load(open(sys.argv[1], encoding="utf-8"))["deck_title"]; assert t == sys.argv[2], t' \
   "$out" "$ru_title" && pass || fail strings-cp1251-json "$(grep deck_title "$out")"
 run_ks "$strings_dir/cp1251.nml" --format svg
 grep -q ">DECK: .*cp1251.nml   $ru_title<\|$ru_title" "$out" && check_output strings-cp1251-svg xml "$out" \
@@ -162,8 +162,8 @@ expect_input_error strings-latin1 'latin1.nml:[0-9]+: byte \\xB0 is neither UTF-
 # --- texts count characters: a 45-letter Russian title (90 bytes) is accepted, 81 letters are
 # refused saying so; a 5-letter Cyrillic joint name is accepted in both generic groups and
 # names the kinematics columns, the sheet's label and the DXF's text
-title45=$(python3 -c 'print("Ж" * 45)')
-title81=$(python3 -c 'print("Ж" * 81)')
+title45=$(run_py -c 'print("Ж" * 45)')
+title81=$(run_py -c 'print("Ж" * 81)')
 for base in assur_fourbar linkage_fourbar; do
   run_ks "data/$base.nml" --set "title='$title45'"
   [ "$rc" -eq 0 ] && grep -qx " TITLE: $title45" "$out" && pass || fail "strings-title45-$base" "exit $rc: $(head -c 300 "$err")"
@@ -214,7 +214,7 @@ run_ks "$strings_dir/slash_text.nml"
 
 # --- capacities: every row of docs/cli.md's table, its last column given as --set, is exit 2
 # naming the array element and the limit of the middle column
-python3 - "$KINETOSTAT" "$root/docs/cli.md" <<'PY' >"$strings_dir/capacities.log" 2>&1 && pass || fail strings-capacities "$(head -20 "$strings_dir/capacities.log")"
+run_py - "$KINETOSTAT" "$root/docs/cli.md" <<'PY' >"$strings_dir/capacities.log" 2>&1 && pass || fail strings-capacities "$(head -20 "$strings_dir/capacities.log")"
 import re, subprocess, sys
 deck = {"pr3207": "data/pr3207.nml", "pr3050": "data/pr3050.nml", "sixbar": "data/sixbar.nml",
         "assur": "data/assur_fourbar.nml", "gears": "data/gears_reducer.nml", "cam": "data/cam_flat.nml",
@@ -241,7 +241,7 @@ PY
 # in a deck: the deck's line, and a list of too many values
 sed 's/^\/$/  link(49)%id = 49\n\//' data/linkage_fourbar.nml >"$strings_dir/link49.nml"
 expect_input_error strings-capacity-deck 'link49.nml:[0-9]+: &linkage: link\(49\): at most 48 links$' "$strings_dir/link49.nml"
-python3 -c "
+run_py -c "
 import sys
 s = open('data/pr3207_flywheel.nml').read()
 open(sys.argv[1], 'w').write(s.replace('\n/\n', '\n  md_table = ' + ', '.join(['1'] * 5764) + '\n/\n'))

@@ -8,7 +8,7 @@ for deck in data/pr3207.nml data/assur_slider_crank.nml data/sixbar.nml data/pr3
   name=$(basename "$deck" .nml)
   run_ks "$deck" --format csv --quiet; cp "$out" "$cli_tmp/sum_$name.csv"
   run_ks "$deck" --format summary --quiet; cp "$out" "$cli_tmp/sum_$name.summary"
-  python3 - "$cli_tmp/sum_$name.csv" "$cli_tmp/sum_$name.summary" "$name" <<'PY' && pass || fail "summary-recomputed-$name" "see above"
+  run_py - "$cli_tmp/sum_$name.csv" "$cli_tmp/sum_$name.summary" "$name" <<'PY' && pass || fail "summary-recomputed-$name" "see above"
 import csv, math, sys
 rows = list(csv.DictReader(open(sys.argv[1])))
 summary = list(csv.DictReader(open(sys.argv[2])))
@@ -62,7 +62,7 @@ done
 # slider moves along -x with the larger force, which then drives. dphi = 0.05 deg: the
 # trapezoid's error at the two load steps is below 1e-3 of W.
 run_ks data/assur_slider_crank.nml --set dphi=0.05 --format summary --quiet
-python3 - "$out" <<'PY' && pass || fail summary-work-energy "work of M1 is not the resistance's energy"
+run_py - "$out" <<'PY' && pass || fail summary-work-energy "work of M1 is not the resistance's energy"
 import csv, math, sys
 s = next(csv.DictReader(open(sys.argv[1])))
 r, l, e = 0.1, 0.35, 0.02
@@ -90,7 +90,7 @@ grep -q '^ SUMMARY (PHI1 0.00 ... 360.00 deg)$' "$out" \
   && grep -q '^   M1 MIN          =  -2.257429062E+02  N\*m  AT PHI1 =    30.00 deg$' "$out" \
   && grep -q '^   WORK OF M1      =   1.095725074E+03  J$' "$out" && pass || fail summary-table-block "$(grep -A10 '^ SUMMARY' "$out")"
 run_ks data/pr3207.nml --format summary --quiet
-python3 -c 'import csv,sys; s=next(csv.DictReader(open(sys.argv[1]))); assert "%.9E" % float(s["F16_max"]) == "5.342165581E+03" and float(s["F16_max_at"]) == 120' "$out" \
+run_py -c 'import csv,sys; s=next(csv.DictReader(open(sys.argv[1]))); assert "%.9E" % float(s["F16_max"]) == "5.342165581E+03" and float(s["F16_max_at"]) == 120' "$out" \
   && pass || fail summary-table-equals-csv "the block and the summary disagree"
 # no block without an input angle (the gears' stages)
 run_ks data/gears_reducer.nml
@@ -112,7 +112,7 @@ run_ks data/pr3207.nml --set f5c_work=0 --strict
 # the 30 deg step misses the peak: F16's true peak (dphi = 0.5) is higher
 run_ks data/pr3207.nml --set dphi=0.5 --format summary --quiet; cp "$out" "$cli_tmp/fine.summary"
 run_ks data/pr3207.nml --format summary --quiet
-python3 - "$out" "$cli_tmp/fine.summary" <<'PY' && pass || fail coarse-peak-missed "the fine run's F16 peak is not above the coarse one"
+run_py - "$out" "$cli_tmp/fine.summary" <<'PY' && pass || fail coarse-peak-missed "the fine run's F16 peak is not above the coarse one"
 import csv, sys
 coarse = float(next(csv.DictReader(open(sys.argv[1])))["F16_max"])
 fine = next(csv.DictReader(open(sys.argv[2])))
@@ -127,12 +127,12 @@ run_ks docs/examples/engine.nml --set dphi=30 --set n=25 --format csv
 [ "$rc" -eq 0 ] && [ "$(wc -l <"$err")" -eq 1 ] && grep -q "^kinetostat: warning: docs/examples/engine.nml: force(1)%table: its point at phi1 = 375 deg (27143 N, a local maximum) lies between the steps at phi1 = 360 deg and phi1 = 390 deg, where the load is 8282 N and 17019 N: the steps miss the load's peak and the forces it causes; rerun with a finer step (e.g. --set dphi=0.5) or put a step on the point$" "$err" \
   && pass || fail table-peak-warning-text "rc=$rc $(cat "$err")"
 run_ks docs/examples/engine.nml --set dphi=30 --set n=25 --format json --quiet
-python3 -c "import json,sys; w=json.load(open(sys.argv[1]))['warnings']; sys.exit(0 if len(w) == 1 and 'force(1)%table: its point at phi1 = 375 deg' in str(w[0]) else 1)" "$out" \
+run_py -c "import json,sys; w=json.load(open(sys.argv[1]))['warnings']; sys.exit(0 if len(w) == 1 and 'force(1)%table: its point at phi1 = 375 deg' in str(w[0]) else 1)" "$out" \
   && pass || fail table-peak-warning-json "$(head -c 300 "$out")"
 expect_exit table-peak-warning-strict 4 docs/examples/engine.nml --set dphi=30 --set n=25 --strict --quiet
 run_ks docs/examples/engine.nml --set dphi=30 --set n=25 --format summary --quiet; cp "$out" "$cli_tmp/eng30.summary"
 run_ks docs/examples/engine.nml --set dphi=0.5 --set n=1441 --format summary --strict; cp "$out" "$cli_tmp/eng05.summary"
-[ "$rc" -eq 0 ] && [ ! -s "$err" ] && python3 - "$cli_tmp/eng30.summary" "$cli_tmp/eng05.summary" <<'PY' && pass || fail table-peak-missed "rc=$rc $(cat "$err")"
+[ "$rc" -eq 0 ] && [ ! -s "$err" ] && run_py - "$cli_tmp/eng30.summary" "$cli_tmp/eng05.summary" <<'PY' && pass || fail table-peak-missed "rc=$rc $(cat "$err")"
 import csv, sys
 coarse, fine = (float(next(csv.DictReader(open(f)))["F21_max"]) for f in sys.argv[1:3])
 assert abs(coarse - 10355.0) < 1 and abs(fine - 17450.0) < 1 and 0.40 < 1 - coarse / fine < 0.42, (coarse, fine)
@@ -237,7 +237,7 @@ expect_exit sweep-jobs-not-sweep 1 data/pr3207.nml --jobs 2
 # J_red_min twice)
 run_ks sweep data/pr3207_flywheel.nml --vary delta=0.03:0.05:2 --set j_rotor=0.6 --set j_rotor=0.7 --quiet
 cp "$out" "$cli_tmp/sweep_delta.csv"
-if [ "$rc" -eq 0 ] && python3 - "$cli_tmp/sweep_delta.csv" <<'PY'
+if [ "$rc" -eq 0 ] && run_py - "$cli_tmp/sweep_delta.csv" <<'PY'
 import csv, sys
 rows = list(csv.reader(open(sys.argv[1])))
 h = rows[0]
@@ -251,26 +251,31 @@ assert r["j_rotor"] == "0.7" and r["delta"] == "0.03" and abs(float(r["dyn_delta
 PY
 then pass; else fail sweep-header-unique "exit $rc: $(head -1 "$cli_tmp/sweep_delta.csv" | head -c 300)"; fi
 # every bundled deck's --format summary (with --kinematics, and --shaking where a linkage)
-bad=""
+# (each header noted as "DECK OPTS|HEADER"; one awk finds the names twice)
+: >"$cli_tmp/hdrs"
 for deck in data/*.nml; do
   case "$deck" in data/assur_toggle.nml) continue ;; esac
+  name="${deck##*/}"
   for opts in "" "--kinematics" "--shaking --kinematics"; do
     # a heavy deck (lib.sh) with the most columns only
-    heavy_deck "$(basename "$deck" .nml)" && [ "$opts" != "--shaking --kinematics" ] && continue
+    heavy_deck "${name%.nml}" && [ "$opts" != "--shaking --kinematics" ] && continue
     # shellcheck disable=SC2086
     "$KINETOSTAT" "$deck" --format summary --quiet $opts >"$cli_tmp/hdr.csv" 2>/dev/null || continue
-    d=$(head -1 "$cli_tmp/hdr.csv" | tr ',' '\n' | sort | uniq -d | head -3 | tr '\n' ' ')
-    [ -n "$d" ] && bad="$bad $deck $opts: $d;"
+    read -r header <"$cli_tmp/hdr.csv"
+    printf '%s %s|%s\n' "$deck" "$opts" "$header" >>"$cli_tmp/hdrs"
   done
 done
-[ -z "$bad" ] && pass || fail summary-header-unique "names twice:$bad"
+bad=$(awk -F'|' '{ n = split($2, names, ","); split("", seen); twice = ""
+  for (i = 1; i <= n; i++) if (seen[names[i]]++ == 1) twice = twice " " names[i]
+  if (twice != "") printf " %s:%s;", $1, twice }' "$cli_tmp/hdrs")
+[ -s "$cli_tmp/hdrs" ] && [ -z "$bad" ] && pass || fail summary-header-unique "names twice:$bad (headers: $(wc -l <"$cli_tmp/hdrs"))"
 
 # --- sweep --keep-going: every variant written, an error column last (empty on good rows),
 # exit 2 when any failed; the header does not depend on a variant succeeding, and --part
 # parts agree (concatenated, the whole sweep, byte for byte)
 run_ks sweep data/pr3207.nml --vary l_ab=0.3:0.5:3 --vary m5=50:60:2 --keep-going --quiet
 cp "$out" "$cli_tmp/keep.csv"
-if [ "$rc" -eq 2 ] && python3 - "$cli_tmp/keep.csv" "$err" <<'PY'
+if [ "$rc" -eq 2 ] && run_py - "$cli_tmp/keep.csv" "$err" <<'PY'
 import csv, sys
 rows = list(csv.reader(open(sys.argv[1])))
 h = rows[0]

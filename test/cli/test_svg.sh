@@ -35,7 +35,7 @@ for deck in data/*.nml; do
   # rendered: the sheet's size at 96 px per inch, not blank
   if ! png_wanted "$name"; then :
   elif rsvg-convert -o "$cli_tmp/$name.png" "$cli_tmp/$name.svg" 2>"$cli_tmp/rsvg.err"; then
-    python3 "$svg_check" png "$cli_tmp/$name.png" "$cli_tmp/$name.svg" >"$cli_tmp/check.out" 2>&1 \
+    run_py "$svg_check" png "$cli_tmp/$name.png" "$cli_tmp/$name.svg" >"$cli_tmp/check.out" 2>&1 \
       && pass || fail "svg-png-$name" "$(cat "$cli_tmp/check.out")"
   else
     fail "svg-render-$name" "rsvg-convert failed: $(head -3 "$cli_tmp/rsvg.err")"
@@ -45,7 +45,7 @@ for deck in data/*.nml; do
   from_golden "$name" csv --format csv; cp "$out" "$cli_tmp/$name.csv"
   printf 'svg-hodographs-%s\thodographs\t%s\t%s\n' "$name" "$cli_tmp/$name.svg" "$cli_tmp/$name.csv" >>"$svg_batch"
 done
-python3 "$svg_check" batch "$svg_batch" >"$cli_tmp/svg_batch.out" 2>&1
+run_py "$svg_check" batch "$svg_batch" >"$cli_tmp/svg_batch.out" 2>&1
 if [ "$(grep -c '^ok \|^FAIL ' "$cli_tmp/svg_batch.out")" -ne "$(grep -c . "$svg_batch")" ]; then
   fail svg-batch "tools/svg_check.py batch did not report every check: $(tail -5 "$cli_tmp/svg_batch.out")"
 fi
@@ -61,7 +61,7 @@ done < <(grep '^ok \|^FAIL ' "$cli_tmp/svg_batch.out")
 sed -E '/data-force="F36"/s/d="M ([0-9]+)\.([0-9]+)/d="M \1.9\2/' "$cli_tmp/pr3207.svg" >"$cli_tmp/bad.svg"
 if cmp -s "$cli_tmp/pr3207.svg" "$cli_tmp/bad.svg"; then fail svg-check-can-fail "the perturbation did not change the sheet"
 else
-  python3 "$svg_check" hodographs "$cli_tmp/bad.svg" "$cli_tmp/pr3207.csv" >"$cli_tmp/check.out" 2>&1
+  run_py "$svg_check" hodographs "$cli_tmp/bad.svg" "$cli_tmp/pr3207.csv" >"$cli_tmp/check.out" 2>&1
   grep -q "F36" "$cli_tmp/check.out" && pass \
     || fail svg-check-can-fail "a moved hodograph point was not reported: $(head -3 "$cli_tmp/check.out")"
 fi
@@ -69,7 +69,7 @@ fi
 printf '<svg xmlns="http://www.w3.org/2000/svg" width="210mm" height="297mm" viewBox="0 0 210 297">%s</svg>\n' \
   '<rect width="210" height="297" fill="#ffffff"/>' >"$cli_tmp/blank.svg"
 rsvg-convert -o "$cli_tmp/blank.png" "$cli_tmp/blank.svg" 2>/dev/null
-python3 "$svg_check" png "$cli_tmp/blank.png" "$cli_tmp/blank.svg" >"$cli_tmp/check.out" 2>&1
+run_py "$svg_check" png "$cli_tmp/blank.png" "$cli_tmp/blank.svg" >"$cli_tmp/check.out" 2>&1
 grep -q "looks blank" "$cli_tmp/check.out" && pass \
   || fail svg-blank-can-fail "a blank PNG was not reported: $(head -3 "$cli_tmp/check.out")"
 
@@ -102,17 +102,17 @@ for spec in pr3207:2 pr3050:4 sixbar:2 sixbar_example:1 assur_pr3207:2 assur_six
   cp "$out" "$cli_tmp/${name}_at.svg"
   xmllint --noout "$cli_tmp/${name}_at.svg" 2>"$cli_tmp/xmllint.err" && pass \
     || fail "svg-at-xmllint-$name" "$(head -5 "$cli_tmp/xmllint.err")"
-  python3 "$svg_check" self-contained "$cli_tmp/${name}_at.svg" >"$cli_tmp/check.out" 2>&1 \
+  run_py "$svg_check" self-contained "$cli_tmp/${name}_at.svg" >"$cli_tmp/check.out" 2>&1 \
     && pass || fail "svg-at-self-contained-$name" "$(cat "$cli_tmp/check.out")"
   if ! png_wanted "$name"; then :
   elif rsvg-convert -o "$cli_tmp/${name}_at.png" "$cli_tmp/${name}_at.svg" 2>"$cli_tmp/rsvg.err"; then
-    python3 "$svg_check" png "$cli_tmp/${name}_at.png" "$cli_tmp/${name}_at.svg" >"$cli_tmp/check.out" 2>&1 \
+    run_py "$svg_check" png "$cli_tmp/${name}_at.png" "$cli_tmp/${name}_at.svg" >"$cli_tmp/check.out" 2>&1 \
       && pass || fail "svg-at-png-$name" "$(cat "$cli_tmp/check.out")"
   else
     fail "svg-at-render-$name" "rsvg-convert failed: $(head -3 "$cli_tmp/rsvg.err")"
   fi
   run_ks "data/$name.nml" --format csv; cp "$out" "$cli_tmp/$name.csv"
-  python3 - "$cli_tmp/${name}_at.svg" "$cli_tmp/$name.csv" "$k" <<'PY' >"$cli_tmp/check.out" 2>&1 \
+  run_py - "$cli_tmp/${name}_at.svg" "$cli_tmp/$name.csv" "$k" <<'PY' >"$cli_tmp/check.out" 2>&1 \
     && pass || fail "svg-at-forces-$name" "$(cat "$cli_tmp/check.out")"
 import csv, re, sys
 import xml.etree.ElementTree as ET

@@ -4,13 +4,13 @@
 # smallest components are drawn: every peak survives); valid XML, a small file; the numbers
 # (legend, CSV) are those of the full run.
 long_n=20001
-long_d=$(python3 -c "print(360 / ($long_n - 1))")
+long_d=$(run_py -c "print(360 / ($long_n - 1))")
 run_ks data/pr3207.nml --set dphi="$long_d" --set n=$long_n --format svg --quiet; cp "$out" "$cli_tmp/long.svg"
 run_ks data/pr3207.nml --set dphi="$long_d" --set n=$long_n --format csv --quiet; cp "$out" "$cli_tmp/long.csv"
-python3 tools/svg_check.py hodographs "$cli_tmp/long.svg" "$cli_tmp/long.csv" >"$cli_tmp/long_check.txt" 2>&1 \
+run_py tools/svg_check.py hodographs "$cli_tmp/long.svg" "$cli_tmp/long.csv" >"$cli_tmp/long_check.txt" 2>&1 \
   && pass || fail svg-long-hodographs "$(cat "$cli_tmp/long_check.txt")"
 xmllint --noout "$cli_tmp/long.svg" 2>"$cli_tmp/long_xml.txt" && pass || fail svg-long-xml "$(head -3 "$cli_tmp/long_xml.txt")"
-python3 - "$cli_tmp/long.svg" <<'PY' && pass || fail svg-long-size "a path has more than 4096 points or the file is large"
+run_py - "$cli_tmp/long.svg" <<'PY' && pass || fail svg-long-size "a path has more than 4096 points or the file is large"
 import os, re, sys
 text = open(sys.argv[1]).read()
 most = max(len(re.findall(r"[ML] ", d)) for d in re.findall(r' d="([^"]*)"', text))

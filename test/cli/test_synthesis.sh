@@ -27,7 +27,7 @@ gear_header="x1,x2,a_w,alpha_w,y,delta_y,d1,d2,db1,db2,dw1,dw2,da1,da2,df1,df2,s
 eps_alpha,lambda1,lambda2,undercut1,undercut2,pointed1,pointed2,interference1,interference2"
 [ "$(head -1 "$out")" = "$gear_header" ] && pass || fail gear-csv-header "$(head -1 "$out")"
 run_ks $ps --format json
-python3 - "$out" <<'PY' && pass || fail planetary-json "JSON lacks z1, z2, z3, u_actual or they do not satisfy z3 = z1 + 2 z2"
+run_py - "$out" <<'PY' && pass || fail planetary-json "JSON lacks z1, z2, z3, u_actual or they do not satisfy z3 = z1 + 2 z2"
 import json, sys
 d = json.load(open(sys.argv[1]))
 names = [c["name"] for c in d["columns"]]
@@ -36,7 +36,7 @@ assert {"z1", "z2", "z3", "u_actual"} <= set(names), names
 assert row["z3"] == row["z1"] + 2 * row["z2"] and abs(row["u_actual"] - (1 + row["z3"] / row["z1"])) < 1e-12
 PY
 run_ks $cr --format json
-python3 - "$out" <<'PY' && pass || fail cam-json "the summary lacks r_base, r_prime or r_base != r_prime - roller_radius"
+run_py - "$out" <<'PY' && pass || fail cam-json "the summary lacks r_base, r_prime or r_base != r_prime - roller_radius"
 import json, sys
 d = json.load(open(sys.argv[1]))
 s = {e["name"]: e["value"] for e in d["summary"]}
@@ -44,7 +44,7 @@ assert abs(s["r_base"] - (s["r_prime"] - 0.008)) < 1e-14, s
 assert abs(s["theta_rise_max"] - 30) < 1e-9 and s["theta_return_max"] <= 45 + 1e-9, s
 PY
 run_ks $cf --format json
-python3 - "$out" <<'PY' && pass || fail cam-flat-json "the flat face's summary lacks face_width or rho_min"
+run_py - "$out" <<'PY' && pass || fail cam-flat-json "the flat face's summary lacks face_width or rho_min"
 import json, sys
 d = json.load(open(sys.argv[1]))
 s = {e["name"]: e["value"] for e in d["summary"]}
@@ -62,7 +62,7 @@ run_ks $gg --format csv; cp "$out" "$cli_tmp/gear.csv"
 run_ks $gg --format summary
 cmp -s "$out" "$cli_tmp/gear.csv" && pass || fail gear-summary-values "summary differs from the CSV: $(head -c 300 "$out")"
 run_ks sweep $gg --vary x1=0:1:11 --jobs 1
-python3 - "$out" <<'PY' && pass || fail gear-sweep-study "the sweep over x1 is not a study of the pair: $(head -c 300 "$out")"
+run_py - "$out" <<'PY' && pass || fail gear-sweep-study "the sweep over x1 is not a study of the pair: $(head -c 300 "$out")"
 import csv, sys
 rows = list(csv.DictReader(open(sys.argv[1])))
 header = open(sys.argv[1]).readline().strip().split(",")
@@ -89,7 +89,7 @@ for d in $cr $cf; do
   run_ks "$cli_tmp/${name}_cam.nml" --format csv --quiet; cp "$out" "$cli_tmp/${name}_cam.csv"
   [ "$rc" -eq 0 ] && pass || fail "$name-deck-runs" "rc=$rc: $(head -c 300 "$err")"
   run_ks "$d" --format csv; cp "$out" "$cli_tmp/${name}_profile.csv"
-  python3 - "$cli_tmp/${name}_profile.csv" "$cli_tmp/${name}_cam.csv" <<'PY' && pass || fail "$name-deck-agrees" "the &cam run does not take the profile's angles"
+  run_py - "$cli_tmp/${name}_profile.csv" "$cli_tmp/${name}_cam.csv" <<'PY' && pass || fail "$name-deck-agrees" "the &cam run does not take the profile's angles"
 import csv, sys
 a = list(csv.DictReader(open(sys.argv[1])))
 b = list(csv.DictReader(open(sys.argv[2])))
@@ -133,12 +133,12 @@ for d in $gg $ga $ps $cr $cf $co; do
       || fail "$name-sheet-svg-$lang" "rc=$rc $(head -c 300 "$err") $(head -3 "$cli_tmp/xml.err")"
   done
   run_ks "$d" --format dxf --lang ru; cp "$out" "$cli_tmp/$name.dxf"
-  [ "$rc" -eq 0 ] && python3 tools/dxf_check.py "$cli_tmp/$name.dxf" >"$cli_tmp/check.out" 2>&1 && pass \
+  [ "$rc" -eq 0 ] && run_py tools/dxf_check.py "$cli_tmp/$name.dxf" >"$cli_tmp/check.out" 2>&1 && pass \
     || fail "$name-sheet-dxf" "rc=$rc $(head -c 300 "$err") $(head -5 "$cli_tmp/check.out")"
   run_ks "$d" --format csv; cp "$out" "$cli_tmp/$name.csv"
 done
 for name in gear_geometry_shift gear_geometry_auto; do
-  python3 "$synth_check" involutes "$cli_tmp/$name.en.svg" "$cli_tmp/$name.csv" >"$cli_tmp/check.out" 2>&1 \
+  run_py "$synth_check" involutes "$cli_tmp/$name.en.svg" "$cli_tmp/$name.csv" >"$cli_tmp/check.out" 2>&1 \
     && pass || fail "$name-involutes" "$(head -5 "$cli_tmp/check.out")"
 done
 echo "synthesis: $(cat "$cli_tmp/check.out")"
@@ -146,10 +146,10 @@ echo "synthesis: $(cat "$cli_tmp/check.out")"
 run_ks "$(deck_with undercut $gg 's/z1 = 12/z1 = 8/; s/x1 = 0.6/x1 = 0/; s/x2 = 0.36/x2 = 0/')" --format svg
 cp "$out" "$cli_tmp/undercut.svg"
 run_ks "$(deck_with undercut $gg 's/z1 = 12/z1 = 8/; s/x1 = 0.6/x1 = 0/; s/x2 = 0.36/x2 = 0/')" --format csv
-python3 "$synth_check" involutes "$cli_tmp/undercut.svg" "$out" >"$cli_tmp/check.out" 2>&1 \
+run_py "$synth_check" involutes "$cli_tmp/undercut.svg" "$out" >"$cli_tmp/check.out" 2>&1 \
   && pass || fail gear-undercut-involutes "$(head -5 "$cli_tmp/check.out")"
 # the check can fail: two points of a flank moved 0.2 mm, across and along the sheet
-python3 - "$cli_tmp/gear_geometry_shift.en.svg" "$cli_tmp/moved.svg" <<'PY'
+run_py - "$cli_tmp/gear_geometry_shift.en.svg" "$cli_tmp/moved.svg" <<'PY'
 import re, sys
 text = open(sys.argv[1], encoding="utf-8").read()
 m = re.search(r'<path d="([^"]*)"[^>]*data-flank="1"', text)
@@ -160,14 +160,14 @@ x, y = pts[15].split()
 pts[15] = f"{x} {float(y) + 0.2:.2f}"
 open(sys.argv[2], "w", encoding="utf-8").write(text.replace(m.group(1), " L ".join(pts), 1))
 PY
-python3 "$synth_check" involutes "$cli_tmp/moved.svg" "$cli_tmp/gear_geometry_shift.csv" >"$cli_tmp/check.out" 2>&1
+run_py "$synth_check" involutes "$cli_tmp/moved.svg" "$cli_tmp/gear_geometry_shift.csv" >"$cli_tmp/check.out" 2>&1
 grep -q "off an involute" "$cli_tmp/check.out" && pass || fail involutes-check-can-fail "$(head -3 "$cli_tmp/check.out")"
 for name in cam_profile_roller cam_profile_flat cam_profile_oscillating; do
-  python3 "$synth_check" cam-profile "$cli_tmp/$name.dxf" "$cli_tmp/$name.csv" >"$cli_tmp/check.out" 2>&1 \
+  run_py "$synth_check" cam-profile "$cli_tmp/$name.dxf" "$cli_tmp/$name.csv" >"$cli_tmp/check.out" 2>&1 \
     && pass || fail "$name-profile-polyline" "$(head -5 "$cli_tmp/check.out")"
 done
 # ... and so can the profile's: a vertex moved by 1 um on the paper
-python3 - "$cli_tmp/cam_profile_roller.dxf" "$cli_tmp/moved.dxf" <<'PY'
+run_py - "$cli_tmp/cam_profile_roller.dxf" "$cli_tmp/moved.dxf" <<'PY'
 import sys
 lines = open(sys.argv[1]).read().split("\n")
 # the POLYLINE on layer PROFILE; its first VERTEX's x follows
@@ -177,7 +177,7 @@ i = lines.index("10", i) + 1
 lines[i] = f"{float(lines[i]) + 0.001:.6f}"
 open(sys.argv[2], "w").write("\n".join(lines))
 PY
-python3 "$synth_check" cam-profile "$cli_tmp/moved.dxf" "$cli_tmp/cam_profile_roller.csv" >"$cli_tmp/check.out" 2>&1
+run_py "$synth_check" cam-profile "$cli_tmp/moved.dxf" "$cli_tmp/cam_profile_roller.csv" >"$cli_tmp/check.out" 2>&1
 grep -q "phi = 0" "$cli_tmp/check.out" && pass || fail cam-profile-check-can-fail "$(head -3 "$cli_tmp/check.out")"
 # the follower where --at puts it (else at the largest pressure angle: 260 deg on this cam)
 grep -q 'follower at φ = 260.0 deg' "$cli_tmp/cam_profile_roller.en.svg" && pass \
@@ -194,7 +194,7 @@ expect_exit design-no-plans 1 $cr --format plans --at 1
 # pressure angle and the mirrored profile
 run_ks $cr --format csv; cp "$out" "$cli_tmp/ccw.csv"
 run_ks $cr --format csv --set omega=-10 --set offset=-0.005; cp "$out" "$cli_tmp/cw.csv"
-python3 - "$cli_tmp/ccw.csv" "$cli_tmp/cw.csv" <<'PY' && pass || fail cam-mirror "the mirrored cam's angle or profile is not mirrored"
+run_py - "$cli_tmp/ccw.csv" "$cli_tmp/cw.csv" <<'PY' && pass || fail cam-mirror "the mirrored cam's angle or profile is not mirrored"
 import csv, sys
 a = list(csv.DictReader(open(sys.argv[1])))
 b = list(csv.DictReader(open(sys.argv[2])))
@@ -204,16 +204,16 @@ for p, q in zip(a, b):
 PY
 # a positive offset lowers the rise's pressure angle of a counter-clockwise cam
 run_ks $cr --format json --set offset=0
-r0=$(python3 -c 'import json,sys; print({e["name"]: e["value"] for e in json.load(open(sys.argv[1]))["summary"]}["r_prime"])' "$out")
+r0=$(run_py -c 'import json,sys; print({e["name"]: e["value"] for e in json.load(open(sys.argv[1]))["summary"]}["r_prime"])' "$out")
 run_ks $cr --format json
-r5=$(python3 -c 'import json,sys; print({e["name"]: e["value"] for e in json.load(open(sys.argv[1]))["summary"]}["r_prime"])' "$out")
-python3 -c "import sys; sys.exit(not $r5 < $r0)" && pass || fail cam-offset-sense "offset 5 mm: r_prime $r5 not below $r0 without offset"
+r5=$(run_py -c 'import json,sys; print({e["name"]: e["value"] for e in json.load(open(sys.argv[1]))["summary"]}["r_prime"])' "$out")
+run_py -c "import sys; sys.exit(not $r5 < $r0)" && pass || fail cam-offset-sense "offset 5 mm: r_prime $r5 not below $r0 without offset"
 
 # --- the independent re-computation
-if python3 tools/verify_synthesis.py "$KINETOSTAT" >"$cli_tmp/verify_synthesis.out" 2>&1; then pass
+if run_py tools/verify_synthesis.py "$KINETOSTAT" >"$cli_tmp/verify_synthesis.out" 2>&1; then pass
 else fail verify-synthesis "$(tail -20 "$cli_tmp/verify_synthesis.out")"; fi
 if [ "${KINETOSTAT_LONG:-0}" = 1 ]; then
-  if python3 tools/verify_synthesis.py "$KINETOSTAT" --long >"$cli_tmp/verify_synthesis.out" 2>&1; then pass
+  if run_py tools/verify_synthesis.py "$KINETOSTAT" --long >"$cli_tmp/verify_synthesis.out" 2>&1; then pass
   else fail verify-synthesis-long "$(tail -20 "$cli_tmp/verify_synthesis.out")"; fi
 fi
 

@@ -23,7 +23,7 @@ cmp -s "$cli_tmp/tpl_engine.nml" docs/examples/engine.nml && pass || fail templa
 # back, gravity and inertia are conservative), so the mean of M1 over the 24 steps of
 # 15 deg is ~0 next to its peak (trapezoid rule; 5 % of the peak allowed).
 run_ks "$cli_tmp/tpl_fourbar.nml" --format csv
-python3 - "$out" <<'PY' && pass || fail template-fourbar-work "mean M1 over a turn not ~0"
+run_py - "$out" <<'PY' && pass || fail template-fourbar-work "mean M1 over a turn not ~0"
 import csv, sys
 m = [float(r["M1"]) for r in csv.DictReader(open(sys.argv[1]))]
 mean = sum(m[:-1]) / (len(m) - 1)
@@ -35,7 +35,7 @@ PY
 # piston's inertia force m3*r*omega^2*(1 + r/l): 8282 - 0.8*0.05*300^2*1.25 = 3782 N (rel
 # 1e-3: the rod's own inertia adds a little).
 run_ks "$cli_tmp/tpl_engine.nml" --format csv
-python3 - "$out" <<'PY' && pass || fail template-engine-tdc "F23 at the firing TDC is not ~3782 N"
+run_py - "$out" <<'PY' && pass || fail template-engine-tdc "F23 at the firing TDC is not ~3782 N"
 import csv, sys
 r = [row for row in csv.DictReader(open(sys.argv[1])) if float(row["phi1"]) == 360.0][0]
 if abs(float(r["F23"]) - 3782.0) > 3.782:

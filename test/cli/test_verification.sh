@@ -6,7 +6,7 @@
 # kind: rel (relative difference) or abs (absolute, e.g. degrees)
 verify_case() {
   local name="$1" csv="$2"; shift 2
-  python3 - "$csv" "$@" <<'PY' && pass || fail "verification-$name" "$(cat "$cli_tmp/verify.txt")"
+  run_py - "$csv" "$@" <<'PY' && pass || fail "verification-$name" "$(cat "$cli_tmp/verify.txt")"
 import csv, math, sys
 rows = list(csv.DictReader(open(sys.argv[1])))
 r = {k: float(v) for k, v in rows[0].items() if v != ""}
@@ -63,16 +63,16 @@ run_ks data/cam_translating.nml --quiet
 theta_cr=$(grep 'THETA_CR' "$out" | awk '{print $3}')
 printf 'x\n%s\n' "$theta_cr" >"$cli_tmp/verify_cam.csv"
 verify_case manual-7-theta-cr "$cli_tmp/verify_cam.csv" \
-  "theta_cr, deg;$(python3 -c 'import math; print(math.degrees(math.atan(0.04 / (0.3 * (0.04 + 2 * 0.05)))))');r['x'];1e-9;rel"
+  "theta_cr, deg;$(run_py -c 'import math; print(math.degrees(math.atan(0.04 / (0.3 * (0.04 + 2 * 0.05)))))');r['x'];1e-9;rel"
 
 # 6. Manual §6, the mesh forces of a spur pair (formulas Ft = 2 M1 / d_w1, Fr = Ft tan(alpha_w),
 #    Fn = Ft / cos(alpha_w)) on data/gears_reducer.nml's first stage (M1 = 50 N*m, d_w1 = 60 mm):
 #    relative 1e-12
 run_ks data/gears_reducer.nml --format csv; cp "$out" "$cli_tmp/verify_gears.csv"
 verify_case manual-6-spur "$cli_tmp/verify_gears.csv" \
-  "Ft, N;$(python3 -c 'print(2 * 50 / 0.060)');r['Ft'];1e-12;rel" \
-  "Fr, N;$(python3 -c 'import math; print(2 * 50 / 0.060 * math.tan(math.radians(20)))');r['Fr1'];1e-12;rel" \
-  "Fn, N;$(python3 -c 'import math; print(2 * 50 / 0.060 / math.cos(math.radians(20)))');r['Fn'];1e-12;rel"
+  "Ft, N;$(run_py -c 'print(2 * 50 / 0.060)');r['Ft'];1e-12;rel" \
+  "Fr, N;$(run_py -c 'import math; print(2 * 50 / 0.060 * math.tan(math.radians(20)))');r['Fr1'];1e-12;rel" \
+  "Fn, N;$(run_py -c 'import math; print(2 * 50 / 0.060 / math.cos(math.radians(20)))');r['Fn'];1e-12;rel"
 
 # 7. A profile-shifted spur pair, the published worked example (docs/verification.md: m 3,
 #    z 12/24, x 0.6/0.36; figures printed to 3-5 digits; the table's a_w is rounded to
@@ -93,7 +93,7 @@ verify_case shifted-spur-pair "$cli_tmp/verify_shift.csv" \
 #    in one turn, 50 mm in all: the cam is the circle of radius 50 mm about (0, -25) mm, its
 #    least radius 25 mm, the face 50 mm long (relative 1e-12)
 run_ks data/cam_profile_flat.nml --format json
-python3 - "$out" <<'PY' && pass || fail verification-flat-cam-circle "$(cat "$cli_tmp/verify.txt")"
+run_py - "$out" <<'PY' && pass || fail verification-flat-cam-circle "$(cat "$cli_tmp/verify.txt")"
 import json, math, sys
 d = json.load(open(sys.argv[1]))
 s = {e["name"]: e["value"] for e in d["summary"]}
