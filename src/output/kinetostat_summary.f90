@@ -364,8 +364,9 @@ contains
         ts(c)%last = last(l)
         ts(c)%count = ts(c)%count + (k2 - k1 + 1)
         ! (a NaN sum: a term overflowed, or a sum before did)
-        if (.not. (big(l) < tiny_term .and. area2(l) == area2(l))) &
+        if (.not. (big(l) < tiny_term .and. area2(l) == area2(l))) then
           call scaled_area(ts(c), rows(c, k1:k2), at(k1:k2), last_before, before)
+        end if
         call fold_extremes(ts(c), rows(c, k1:k2), at(k1:k2), row_offset + k1 - 1, hi(l), lo(l))
       end do
     end do
@@ -387,33 +388,11 @@ contains
     integer, intent(in) :: row_offset
     !> The largest and the smallest of `values`.
     real(wp), intent(in) :: hi, lo
-    real(wp) :: v, largest, tie
+    real(wp) :: tie
     integer :: k
     tie = tie_rel * t%largest
-    if (.not. hi <= t%max + tie) then
-      largest = t%largest
-      do k = 1, size(values)
-        v = values(k)
-        largest = max(largest, abs(v))
-        if (v > t%max + tie_rel * largest) then
-          t%max = v
-          t%max_row = row_offset + k
-          t%max_at = at(k)
-        end if
-      end do
-    end if
-    if (.not. lo >= t%min - tie) then
-      largest = t%largest
-      do k = 1, size(values)
-        v = values(k)
-        largest = max(largest, abs(v))
-        if (v < t%min - tie_rel * largest) then
-          t%min = v
-          t%min_row = row_offset + k
-          t%min_at = at(k)
-        end if
-      end do
-    end if
+    if (.not. hi <= t%max + tie) call record_by_rows(1.0_wp, t%max, t%max_row, t%max_at)
+    if (.not. lo >= t%min - tie) call record_by_rows(-1.0_wp, t%min, t%min_row, t%min_at)
     if (.not. hi <= t%peak) then
       do k = 1, size(values)
         if (values(k) > t%peak) then
@@ -424,6 +403,31 @@ contains
       end do
     end if
     t%largest = max(t%largest, abs(hi), abs(lo))
+  contains
+    !> The largest value (sense 1) or the smallest (sense -1: the largest of the negated
+    !> values, bit for bit the same test, as fl(-a + b) = -fl(a - b)) by the tie rule, row by
+    !> row with the column's largest magnitude so far.
+    pure subroutine record_by_rows(sense, value, row, value_at)
+      !> 1 or -1.
+      real(wp), intent(in) :: sense
+      !> The extreme so far and the input coordinate at its row (updated).
+      real(wp), intent(inout) :: value, value_at
+      !> Its row (updated).
+      integer, intent(inout) :: row
+      real(wp) :: best, largest
+      integer :: j
+      largest = t%largest
+      best = sense * value
+      do j = 1, size(values)
+        largest = max(largest, abs(values(j)))
+        if (sense * values(j) > best + tie_rel * largest) then
+          best = sense * values(j)
+          row = row_offset + j
+          value_at = at(j)
+        end if
+      end do
+      value = sense * best
+    end subroutine record_by_rows
   end subroutine fold_extremes
 
   !> A column's scaled trapezoid sum (the overflow guard's) over rows in order, as
