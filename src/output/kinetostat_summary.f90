@@ -165,7 +165,7 @@ contains
     ! shares (one per thread with OpenMP). A row that is void where a tallied column is
     ! voidable, and a row after which a column is not yet counted with its last row (the run's
     ! first row, the row after a void one), go column by column (tally_column); the rows
-    ! between, a tile at a time, go four columns at a time (fold_rows: the same figures)
+    ! between, a tile at a time, go two columns at a time (fold_rows: the same figures)
     tally = pack([(c, c = 1, nc)], [(table%tallied(c), c = 1, nc)])
     nt = size(tally)
     any_voidable = .false.
