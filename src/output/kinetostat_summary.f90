@@ -86,8 +86,8 @@ contains
   subroutine tally_rows(table)
     !> The results (the tallies are updated).
     type(step_table_t), intent(inout) :: table
-    !> Rows tallied column by column at a time.
-    integer, parameter :: tile_rows = 256
+    !> Rows folded into the columns' tallies at a time (fold_rows).
+    integer, parameter :: tile_rows = 64
     !> Fewest rows worth a thread.
     integer, parameter :: min_rows_per_thread = 1024
     integer :: k, c, i, row, d, nc, nt, n, k1, k2, part, parts
@@ -95,7 +95,7 @@ contains
     real(wp) :: x, coordinate, last_d, previous_at, before, term
     real(wp), allocatable :: at(:)
     logical, allocatable :: void(:)
-    logical :: work_known, work_in_rad
+    logical :: work_known, work_in_rad, any_voidable, steady
     nc = size(table%columns)
     n = table%row_count()
     if (table%run_tally%rows == 0) then
@@ -162,24 +162,49 @@ contains
       table%run_tally%rows = row
     end do
     ! the columns the run's outputs read (step_table_t's tallied), in `parts` contiguous
-    ! shares (one per thread with OpenMP), each a tile of rows at a time, all its columns over
-    ! the tile (the tile stays in the cache)
+    ! shares (one per thread with OpenMP). A row that is void where a tallied column is
+    ! voidable, and a row after which a column is not yet counted with its last row (the run's
+    ! first row, the row after a void one), go column by column (tally_column); the rows
+    ! between, a tile at a time, go two columns at a time (fold_rows: the same figures)
     tally = pack([(c, c = 1, nc)], [(table%tallied(c), c = 1, nc)])
     nt = size(tally)
+    any_voidable = .false.
+    do i = 1, nt
+      any_voidable = any_voidable .or. table%columns(tally(i))%voidable
+    end do
     parts = 1
     !$ parts = max(1, min(omp_get_max_threads(), nt, n / min_rows_per_thread))
-    !$omp parallel do schedule(static) num_threads(parts) private(c, i, k1, k2, before) if (parts > 1)
+    !$omp parallel do schedule(static) num_threads(parts) private(c, i, k1, k2, before, steady) if (parts > 1)
     do part = 1, parts
-      before = previous_at
-      do k1 = 1, n, tile_rows
-        k2 = min(n, k1 + tile_rows - 1)
-        if (k1 > 1) before = at(k1 - 1)
-        do i = (part - 1) * nt / parts + 1, part * nt / parts
-          c = tally(i)
-          call tally_column(table%run_tally%columns(c), table%rows(c, k1:k2), at(k1:k2), void(k1:k2), table%columns(c)%voidable, &
-                            table%row_offset + k1 - 1, before)
+      associate (share => tally((part - 1) * nt / parts + 1:part * nt / parts))
+        steady = .true.
+        do i = 1, size(share)
+          steady = steady .and. table%run_tally%columns(share(i))%count > 0 .and. &
+            table%run_tally%columns(share(i))%last_counted
         end do
-      end do
+        k1 = 1
+        do while (k1 <= n)
+          before = previous_at
+          if (k1 > 1) before = at(k1 - 1)
+          if (steady .and. .not. (any_voidable .and. void(k1))) then
+            k2 = k1
+            do while (k2 < n .and. k2 - k1 + 1 < tile_rows)
+              if (any_voidable .and. void(k2 + 1)) exit
+              k2 = k2 + 1
+            end do
+            call fold_rows(table%run_tally%columns, share, table%rows, at, k1, k2, table%row_offset, before)
+          else
+            k2 = k1
+            do i = 1, size(share)
+              c = share(i)
+              call tally_column(table%run_tally%columns(c), table%rows(c, k1:k1), at(k1:k1), void(k1:k1), &
+                                table%columns(c)%voidable, table%row_offset + k1 - 1, before)
+            end do
+            steady = .not. (any_voidable .and. void(k1))
+          end if
+          k1 = k2 + 1
+        end do
+      end associate
     end do
     !$omp end parallel do
   contains
@@ -270,6 +295,166 @@ contains
     end do
     t = tl
   end subroutine tally_column
+
+  !> Fold rows k1..k2 of the block into the tallies of columns `cols`, every one of them
+  !> counted so far with its last row (no void cell among these rows): the figures
+  !> tally_column gives row by row, bit for bit. The sums run over the rows in order, two
+  !> columns at a time (independent lanes the compiler keeps in one vector register), with
+  !> the rows' largest and smallest value, from which fold_extremes finds the extremes; the
+  !> overflow guard's scaled trapezoid sum is added row by row (scaled_area) only where a
+  !> term reaches it (|term| >= tiny_term, or a sum not finite).
+  pure subroutine fold_rows(ts, cols, rows, at, k1, k2, row_offset, before)
+    !> The run's tallies of every column (those of `cols` updated).
+    type(column_tally_t), intent(inout) :: ts(:)
+    !> The columns to fold.
+    integer, intent(in) :: cols(:)
+    !> The block's values, rows(column, row).
+    real(wp), intent(in) :: rows(:, :)
+    !> The input coordinate of each row of the block (0 without an input column).
+    real(wp), intent(in) :: at(:)
+    !> The rows to fold.
+    integer, intent(in) :: k1, k2
+    !> Rows of the run before the block.
+    integer, intent(in) :: row_offset
+    !> Input coordinate of row k1 - 1 (of the row before the block when k1 = 1).
+    real(wp), intent(in) :: before
+    integer, parameter :: lanes = 2
+    real(wp), dimension(lanes) :: v, last, hi, lo, total, total_scaled, area2, span, big, term
+    real(wp) :: dx(k2 - k1 + 1), last_before
+    integer :: lane(lanes), i0, l, k, c, m
+    dx(1) = at(k1) - before
+    do k = k1 + 1, k2
+      dx(k - k1 + 1) = at(k) - at(k - 1)
+    end do
+    m = size(cols)
+    do i0 = 1, m, lanes
+      ! (the last lanes repeat the last column where fewer are left; only the real ones are kept)
+      do l = 1, lanes
+        lane(l) = cols(min(i0 + l - 1, m))
+        last(l) = ts(lane(l))%last
+        total(l) = ts(lane(l))%total
+        total_scaled(l) = ts(lane(l))%total_scaled
+        area2(l) = ts(lane(l))%area2
+        span(l) = ts(lane(l))%span
+      end do
+      hi = -huge(1.0_wp)
+      lo = huge(1.0_wp)
+      big = 0.0_wp
+      do k = k1, k2
+        do l = 1, lanes
+          v(l) = rows(lane(l), k)
+        end do
+        hi = max(hi, v)
+        lo = min(lo, v)
+        total = total + v
+        total_scaled = total_scaled + v * value_scale
+        term = (v + last) * dx(k - k1 + 1)
+        area2 = area2 + term
+        big = max(big, abs(term))
+        span = span + dx(k - k1 + 1)
+        last = v
+      end do
+      do l = 1, min(lanes, m - i0 + 1)
+        c = lane(l)
+        last_before = ts(c)%last
+        ts(c)%total = total(l)
+        ts(c)%total_scaled = total_scaled(l)
+        ts(c)%area2 = area2(l)
+        ts(c)%span = span(l)
+        ts(c)%last = last(l)
+        ts(c)%count = ts(c)%count + (k2 - k1 + 1)
+        ! (a NaN sum: a term overflowed, or a sum before did)
+        if (.not. (big(l) < tiny_term .and. area2(l) == area2(l))) then
+          call scaled_area(ts(c), rows(c, k1:k2), at(k1:k2), last_before, before)
+        end if
+        call fold_extremes(ts(c), rows(c, k1:k2), at(k1:k2), row_offset + k1 - 1, hi(l), lo(l))
+      end do
+    end do
+  end subroutine fold_rows
+
+  !> A column's extremes (largest magnitude, largest and smallest value with the tie rule,
+  !> peak) over rows in order, as tally_column finds them, given the rows' largest and
+  !> smallest value: the tie allowance only grows with the rows, so where those stay within
+  !> the bounds of an extreme as it was before the first row, that extreme stays; an
+  !> extreme that may change is found row by row (its own loop: the others are not touched).
+  pure subroutine fold_extremes(t, values, at, row_offset, hi, lo)
+    !> The column's tally (its extremes updated).
+    type(column_tally_t), intent(inout) :: t
+    !> The column's values in the rows.
+    real(wp), intent(in) :: values(:)
+    !> The input coordinate of each row.
+    real(wp), intent(in) :: at(:)
+    !> Rows of the run before the first of them.
+    integer, intent(in) :: row_offset
+    !> The largest and the smallest of `values`.
+    real(wp), intent(in) :: hi, lo
+    real(wp) :: tie
+    integer :: k
+    tie = tie_rel * t%largest
+    if (.not. hi <= t%max + tie) call record_by_rows(1.0_wp, t%max, t%max_row, t%max_at)
+    if (.not. lo >= t%min - tie) call record_by_rows(-1.0_wp, t%min, t%min_row, t%min_at)
+    if (.not. hi <= t%peak) then
+      do k = 1, size(values)
+        if (values(k) > t%peak) then
+          t%peak = values(k)
+          t%peak_row = row_offset + k
+          t%peak_at = at(k)
+        end if
+      end do
+    end if
+    t%largest = max(t%largest, abs(hi), abs(lo))
+  contains
+    !> The largest value (sense 1) or the smallest (sense -1: the largest of the negated
+    !> values, bit for bit the same test, as fl(-a + b) = -fl(a - b)) by the tie rule, row by
+    !> row with the column's largest magnitude so far.
+    pure subroutine record_by_rows(sense, value, row, value_at)
+      !> 1 or -1.
+      real(wp), intent(in) :: sense
+      !> The extreme so far and the input coordinate at its row (updated).
+      real(wp), intent(inout) :: value, value_at
+      !> Its row (updated).
+      integer, intent(inout) :: row
+      real(wp) :: best, largest
+      integer :: j
+      largest = t%largest
+      best = sense * value
+      do j = 1, size(values)
+        largest = max(largest, abs(values(j)))
+        if (sense * values(j) > best + tie_rel * largest) then
+          best = sense * values(j)
+          row = row_offset + j
+          value_at = at(j)
+        end if
+      end do
+      value = sense * best
+    end subroutine record_by_rows
+  end subroutine fold_extremes
+
+  !> A column's scaled trapezoid sum (the overflow guard's) over rows in order, as
+  !> tally_column adds it: the terms not below tiny_term (or not finite).
+  pure subroutine scaled_area(t, values, at, last, before)
+    !> The column's tally (its area2_scaled updated).
+    type(column_tally_t), intent(inout) :: t
+    !> The column's values in the rows.
+    real(wp), intent(in) :: values(:)
+    !> The input coordinate of each row.
+    real(wp), intent(in) :: at(:)
+    !> The column's value and the input coordinate in the row before the first.
+    real(wp), intent(in) :: last, before
+    real(wp) :: v, x, last_v, last_at, term
+    integer :: k
+    last_v = last
+    last_at = before
+    do k = 1, size(values)
+      v = values(k)
+      x = at(k)
+      term = (v + last_v) * (x - last_at)
+      if (.not. abs(term) < tiny_term) t%area2_scaled = t%area2_scaled + (v * value_scale + last_v * value_scale) * &
+                                                       (x * step_scale - last_at * step_scale)
+      last_v = v
+      last_at = x
+    end do
+  end subroutine scaled_area
 
   !> Whether the driver's work is defined (a driving moment over the input angle in deg, or a
   !> driving force over its coordinate column) and whether its coordinate is the input angle.

@@ -201,27 +201,32 @@ contains
       d = [cos(ang), sin(ang)]
     end function guide_direction
     !> The links' translation terms of this row (velocities or accelerations) by the pass.
+    !> (Written component by component into c, which the caller gives whole: no array
+    !> temporary, so nothing is allocated per row.)
     pure subroutine translations(pass, accel, c, parallel)
       type(pass_step_t), intent(in) :: pass(:)
       logical, intent(in) :: accel
-      real(wp), intent(out) :: c(:, :)
+      real(wp), intent(inout) :: c(:, :)
       !> Set when a link's two guides are parallel at this step.
       logical, intent(inout) :: parallel
-      real(wp) :: r(2), det
-      integer :: st, m, q, j, e
-      c = 0.0_wp
+      real(wp) :: r(2), det, f(2)
+      integer :: st, m, q, j, e, i
+      do i = 1, size(c, 2)
+        c(1, i) = 0.0_wp
+        c(2, i) = 0.0_wp
+      end do
       do st = 1, size(pass)
         m = pass(st)%link
         q = pass(st)%point
         select case (pass(st)%kind)
         case (from_pivot)
-          c(:, m) = -own(m, p(:, q), accel)
+          f = -own(m, p(:, q), accel)
         case (from_joint)
           j = pass(st)%known
-          c(:, m) = c(:, j) + own(j, p(:, q), accel) - own(m, p(:, q), accel)
+          f = c(:, j) + own(j, p(:, q), accel) - own(m, p(:, q), accel)
         case (from_com)
-          c(:, m) = [table%rows(known%com_cols(1, q), k), 0.0_wp] - own(m, p(:, q), accel)
-          if (known%com_cols(2, q) > 0) c(2, m) = c(2, m) + table%rows(known%com_cols(2, q), k)
+          f = [table%rows(known%com_cols(1, q), k), 0.0_wp] - own(m, p(:, q), accel)
+          if (known%com_cols(2, q) > 0) f(2) = f(2) + table%rows(known%com_cols(2, q), k)
         case (from_slides)
           ! c x u_e = r_e for the two guides: Cramer's rule
           do e = 1, 2
@@ -233,11 +238,14 @@ contains
               parallel = .true.
               return
             end if
-            c(:, m) = [(u1(1) * r(2) - u2(1) * r(1)) / det, (u1(2) * r(2) - u2(2) * r(1)) / det]
+            f = [(u1(1) * r(2) - u2(1) * r(1)) / det, (u1(2) * r(2) - u2(2) * r(1)) / det]
           end associate
         case default
           ! (no other kind of step)
+          cycle
         end select
+        c(1, m) = f(1)
+        c(2, m) = f(2)
       end do
     end subroutine translations
     !> The right-hand side r of slider s's equation c_m x u = r for its unknown link m (the
