@@ -3,6 +3,7 @@
 !> differences; self-check of the three generic decks; an offset slider-crank solved by hand;
 !> the T.FTN worked example (manual section 2); toggle positions; prescribed crank speed law.
 module test_assur
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
   use kinetostat_kinds, only: wp, pi, deg_to_rad, rad_to_deg
   use kinetostat_text, only: int_str
   use kinetostat_error, only: error_t, exit_geometry
@@ -374,12 +375,10 @@ contains
     wrap = x - 2.0_wp * pi * anint(x / (2.0_wp * pi))
   end function wrap
 
-  !> Transfer functions of every link of three test mechanisms (all five kinds, moving guides)
-  !> against central differences of the positions.
-  subroutine test_finite_differences(t)
-    type(test_counts_t), intent(inout) :: t
+  !> Three two-dyad mechanisms of all five kinds with moving guides (massless, unloaded):
+  !> RRR+RRP (the RRP's guide on the RRR's link a), RPR+PRP, RPR+RPP.
+  function two_dyad_mechs() result(mechs)
     type(assur_mech_t) :: mechs(3)
-    character(len=*), parameter :: labels(3) = ["RRR+RRP", "RPR+PRP", "RPR+RPP"]
     real(wp), parameter :: z2(2) = 0.0_wp
     mechs(1) = make_mech([ &
       dyad(kind_rrr, [1, 0], reshape([0.1_wp, 0.0_wp, 0.35_wp, 0.05_wp], [2, 2]), [0.0_wp, 0.0_wp], &
@@ -396,6 +395,15 @@ contains
            0.0_wp, 0.0_wp, 0.0_wp, -1, z2, 0.0_wp), &
       dyad(kind_rpp, [0, 3], reshape([0.5_wp, 0.1_wp, 0.1_wp, 0.05_wp], [2, 2]), [0.0_wp, 20.0_wp], &
            0.0_wp, 0.0_wp, 0.0_wp, 1, [0.05_wp, 0.02_wp], 70.0_wp)])
+  end function two_dyad_mechs
+
+  !> Transfer functions of every link of three test mechanisms (all five kinds, moving guides)
+  !> against central differences of the positions.
+  subroutine test_finite_differences(t)
+    type(test_counts_t), intent(inout) :: t
+    type(assur_mech_t) :: mechs(3)
+    character(len=*), parameter :: labels(3) = ["RRR+RRP", "RPR+PRP", "RPR+RPP"]
+    mechs = two_dyad_mechs()
     call fd_mech(t, mechs(1), labels(1))
     call fd_mech(t, mechs(2), labels(2))
     call fd_mech(t, mechs(3), labels(3))
@@ -803,21 +811,7 @@ contains
     type(error_t), allocatable :: e1, e2
     real(wp) :: phi
     integer :: m, k, g, bad, solved, nan_bad
-    mechs(1) = make_mech([ &
-      dyad(kind_rrr, [1, 0], reshape([0.1_wp, 0.0_wp, 0.35_wp, 0.05_wp], [2, 2]), [0.0_wp, 0.0_wp], &
-           0.3_wp, 0.25_wp, 0.0_wp, 1, z2, 0.0_wp), &
-      dyad(kind_rrp, [3, 2], reshape([0.15_wp, 0.05_wp, 0.0_wp, 0.02_wp], [2, 2]), [0.0_wp, 5.0_wp], &
-           0.2_wp, 0.0_wp, 0.0_wp, 1, z2, 0.0_wp)])
-    mechs(2) = make_mech([ &
-      dyad(kind_rpr, [1, 0], reshape([0.1_wp, 0.0_wp, 0.3_wp, 0.0_wp], [2, 2]), [0.0_wp, 0.0_wp], &
-           0.0_wp, 0.0_wp, 0.03_wp, 1, z2, 0.0_wp), &
-      dyad(kind_prp, [3, 0], reshape([0.2_wp, 0.0_wp, 0.0_wp, 0.25_wp], [2, 2]), [90.0_wp, 0.0_wp], &
-           0.0_wp, 0.0_wp, 0.0_wp, 1, z2, 0.0_wp)])
-    mechs(3) = make_mech([ &
-      dyad(kind_rpr, [1, 0], reshape([0.1_wp, 0.0_wp, 0.3_wp, 0.0_wp], [2, 2]), [0.0_wp, 0.0_wp], &
-           0.0_wp, 0.0_wp, 0.0_wp, -1, z2, 0.0_wp), &
-      dyad(kind_rpp, [0, 3], reshape([0.5_wp, 0.1_wp, 0.1_wp, 0.05_wp], [2, 2]), [0.0_wp, 20.0_wp], &
-           0.0_wp, 0.0_wp, 0.0_wp, 1, [0.05_wp, 0.02_wp], 70.0_wp)])
+    mechs(1:3) = two_dyad_mechs()
     mechs(4) = make_mech([dyad(kind_rrr, [1, 0], reshape([0.1_wp, 0.0_wp, 0.3_wp, 0.0_wp], [2, 2]), &
                                [0.0_wp, 0.0_wp], 0.35_wp, 0.25_wp, 0.0_wp, 1, z2, 0.0_wp)])
     bad = 0
@@ -846,9 +840,9 @@ contains
         select case (m)
         case (1)
           if (any(with%work_states([2, 3, 5])%th /= without%work_states([2, 3, 5])%th) .or. &
-              .not. is_nan(without%work_states(4)%th)) nan_bad = nan_bad + 1
+              .not. ieee_is_nan(without%work_states(4)%th)) nan_bad = nan_bad + 1
         case (4)
-          if (.not. (is_nan(without%work_states(2)%th) .and. is_nan(without%work_states(3)%th))) nan_bad = nan_bad + 1
+          if (.not. all(ieee_is_nan(without%work_states(2:3)%th))) nan_bad = nan_bad + 1
         case default
           if (any(with%work_states(2:5)%th /= without%work_states(2:5)%th)) nan_bad = nan_bad + 1
         end select
@@ -859,11 +853,6 @@ contains
     call check_true(t, "without link angles: the angles a guide needs kept, RRR and RRP link a NaN", nan_bad == 0, &
                     int_str(nan_bad)//" steps differ")
     call check_true(t, "without link angles: at least 40 of 96 steps assembled", solved >= 40, int_str(solved))
-  contains
-    pure logical function is_nan(x)
-      real(wp), intent(in) :: x
-      is_nan = x /= x
-    end function is_nan
   end subroutine test_link_angles_off
 
   ! ----------------------------------------------------------------------------------------

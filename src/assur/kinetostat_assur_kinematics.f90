@@ -171,14 +171,7 @@ contains
     real(wp), intent(in) :: eq
     !> [cos(th), sin(th)].
     real(wp), intent(in) :: e(2)
-    ls%o = o
-    ls%th = th
-    ls%vo = vo
-    ls%u = u
-    ls%ao = ao
-    ls%eq = eq
-    ls%cos_th = e(1)
-    ls%sin_th = e(2)
+    ls = link_state_t(o=o, th=th, vo=vo, u=u, ao=ao, eq=eq, cos_th=e(1), sin_th=e(2))
   end subroutine set_link_frame
 
   !> A point given in a link's coordinates `r` (m), with its analogues.
