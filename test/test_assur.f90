@@ -3,6 +3,7 @@
 !> differences; self-check of the three generic decks; an offset slider-crank solved by hand;
 !> the T.FTN worked example (manual section 2); toggle positions; prescribed crank speed law.
 module test_assur
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
   use kinetostat_kinds, only: wp, pi, deg_to_rad, rad_to_deg
   use kinetostat_text, only: int_str
   use kinetostat_error, only: error_t, exit_geometry
@@ -39,6 +40,7 @@ contains
     call test_prescribed_speed_law(t)
     call test_window(t)
     call test_rrr_angles(t)
+    call test_link_angles_off(t)
   end subroutine run_assur_tests
 
   !> Uniform number in [lo, hi] from the LCG state.
@@ -373,12 +375,10 @@ contains
     wrap = x - 2.0_wp * pi * anint(x / (2.0_wp * pi))
   end function wrap
 
-  !> Transfer functions of every link of three test mechanisms (all five kinds, moving guides)
-  !> against central differences of the positions.
-  subroutine test_finite_differences(t)
-    type(test_counts_t), intent(inout) :: t
+  !> Three two-dyad mechanisms of all five kinds with moving guides (massless, unloaded):
+  !> RRR+RRP (the RRP's guide on the RRR's link a), RPR+PRP, RPR+RPP.
+  function two_dyad_mechs() result(mechs)
     type(assur_mech_t) :: mechs(3)
-    character(len=*), parameter :: labels(3) = ["RRR+RRP", "RPR+PRP", "RPR+RPP"]
     real(wp), parameter :: z2(2) = 0.0_wp
     mechs(1) = make_mech([ &
       dyad(kind_rrr, [1, 0], reshape([0.1_wp, 0.0_wp, 0.35_wp, 0.05_wp], [2, 2]), [0.0_wp, 0.0_wp], &
@@ -395,6 +395,15 @@ contains
            0.0_wp, 0.0_wp, 0.0_wp, -1, z2, 0.0_wp), &
       dyad(kind_rpp, [0, 3], reshape([0.5_wp, 0.1_wp, 0.1_wp, 0.05_wp], [2, 2]), [0.0_wp, 20.0_wp], &
            0.0_wp, 0.0_wp, 0.0_wp, 1, [0.05_wp, 0.02_wp], 70.0_wp)])
+  end function two_dyad_mechs
+
+  !> Transfer functions of every link of three test mechanisms (all five kinds, moving guides)
+  !> against central differences of the positions.
+  subroutine test_finite_differences(t)
+    type(test_counts_t), intent(inout) :: t
+    type(assur_mech_t) :: mechs(3)
+    character(len=*), parameter :: labels(3) = ["RRR+RRP", "RPR+PRP", "RPR+RPP"]
+    mechs = two_dyad_mechs()
     call fd_mech(t, mechs(1), labels(1))
     call fd_mech(t, mechs(2), labels(2))
     call fd_mech(t, mechs(3), labels(3))
@@ -785,6 +794,66 @@ contains
     call check_true(t, "more than 4 dyads: the self-check of the last step", &
                     reused%residual <= 1.0e-12_wp .and. reused%mismatch <= 1.0e-12_wp, "residual or mismatch above 1e-12")
   end subroutine test_many_groups
+
+  ! ----------------------------------------------------------------------------------------
+  !> A step solved without the links' angles (assur_step_t%link_angles = .false., as a run
+  !> that shows none solves it) gives the same bits as one with them: every pair force,
+  !> normal force and couple, M1 and its power value, the self-check's residual and
+  !> mismatch, every link's frame but its angle; the angles of a dyad a later dyad turns its
+  !> guide with (RRR+RRP: the RRP's guide on the RRR's link a), of an RPR, PRP or RPP and of
+  !> a guided slider are still the same, those of an RRR (the four-bar) and of an RRP's link
+  !> a are NaN. Four mechanisms of all five kinds with masses, 24 crank angles.
+  subroutine test_link_angles_off(t)
+    type(test_counts_t), intent(inout) :: t
+    type(assur_mech_t) :: mechs(4)
+    real(wp), parameter :: z2(2) = 0.0_wp
+    type(assur_step_t) :: with, without
+    type(error_t), allocatable :: e1, e2
+    real(wp) :: phi
+    integer :: m, k, g, bad, solved, nan_bad
+    mechs(1:3) = two_dyad_mechs()
+    mechs(4) = make_mech([dyad(kind_rrr, [1, 0], reshape([0.1_wp, 0.0_wp, 0.3_wp, 0.0_wp], [2, 2]), &
+                               [0.0_wp, 0.0_wp], 0.35_wp, 0.25_wp, 0.0_wp, 1, z2, 0.0_wp)])
+    bad = 0
+    nan_bad = 0
+    solved = 0
+    do m = 1, 4
+      do g = 1, ubound(mechs(m)%links, 1)
+        mechs(m)%links(g) = assur_link_t(id=g, m=1.0_wp + 0.2_wp * g, j=0.01_wp * g, s=[0.04_wp * mod(g, 3), 0.01_wp])
+      end do
+      mechs(m)%g = 9.81_wp
+      without%link_angles = .false.
+      do k = 0, 23
+        phi = (7.0_wp + 15.0_wp * k) * deg_to_rad
+        call assur_step(mechs(m), phi, 20.0_wp, 3.0_wp, [real(wp) ::], [real(wp) ::], with, e1)
+        call assur_step(mechs(m), phi, 20.0_wp, 3.0_wp, [real(wp) ::], [real(wp) ::], without, e2)
+        if (allocated(e1) .neqv. allocated(e2)) bad = bad + 1
+        if (allocated(e1) .or. allocated(e2)) cycle
+        solved = solved + 1
+        if (any(transfer(with%f, 0_i8, size(with%f)) /= transfer(without%f, 0_i8, size(without%f))) .or. &
+            any(transfer(with%n, 0_i8, size(with%n)) /= transfer(without%n, 0_i8, size(without%n))) .or. &
+            any(transfer(with%m, 0_i8, size(with%m)) /= transfer(without%m, 0_i8, size(without%m))) .or. &
+            with%m1 /= without%m1 .or. with%m1_power /= without%m1_power .or. &
+            with%residual /= without%residual .or. with%mismatch /= without%mismatch .or. &
+            any(with%work_states%u /= without%work_states%u) .or. &
+            any(with%work_states%cos_th /= without%work_states%cos_th)) bad = bad + 1
+        select case (m)
+        case (1)
+          if (any(with%work_states([2, 3, 5])%th /= without%work_states([2, 3, 5])%th) .or. &
+              .not. ieee_is_nan(without%work_states(4)%th)) nan_bad = nan_bad + 1
+        case (4)
+          if (.not. all(ieee_is_nan(without%work_states(2:3)%th))) nan_bad = nan_bad + 1
+        case default
+          if (any(with%work_states(2:5)%th /= without%work_states(2:5)%th)) nan_bad = nan_bad + 1
+        end select
+      end do
+    end do
+    call check_true(t, "without link angles: the same bits as with them (4 mechanisms, 24 angles)", bad == 0, &
+                    int_str(bad)//" steps differ")
+    call check_true(t, "without link angles: the angles a guide needs kept, RRR and RRP link a NaN", nan_bad == 0, &
+                    int_str(nan_bad)//" steps differ")
+    call check_true(t, "without link angles: at least 40 of 96 steps assembled", solved >= 40, int_str(solved))
+  end subroutine test_link_angles_off
 
   ! ----------------------------------------------------------------------------------------
   !> Prescribed omega(k), eps(k): a crank with J about its pivot and massless, unloaded dyad

@@ -20,7 +20,8 @@ module kinetostat_assur
   use kinetostat_text, only: int_str
   use kinetostat_format, only: trimmed_es
   use kinetostat_assur_kinematics, only: link_state_t, point_state_t, dyad_geometry_t, dyad_pose_t, &
-    crank_state, point_motion, frame_state, set_dyad_pose, kind_names, pose_ok, pose_no_assembly
+    set_crank_state, point_motion, frame_state, set_dyad_pose, kind_names, pose_ok, pose_no_assembly, kind_rrp, &
+    kind_prp, kind_rpp
   use kinetostat_assur_statics, only: dyad_reactions_t, dyad_reactions, pair_is_prismatic
   implicit none
   private
@@ -135,6 +136,10 @@ module kinetostat_assur
     real(wp) :: stroke_v = 0.0_wp
     !> Stroke acceleration, m/s^2.
     real(wp) :: stroke_a = 0.0_wp
+    !> Whether a step solved into this result computes the links' angles (work_states%th;
+    !> false: where no dyad after a link turns a guide with it, the angles of the RRR and
+    !> RRP links are NaN and take no atan2 -- for a caller that shows no link angle).
+    logical :: link_angles = .true.
     !> Workspace kept between the steps a caller solves into this result (no heap per
     !> step): the links' frames (0..2*nd+1), the dyads' poses (nd) and the links' loads
     !> (0..2*nd+1).
@@ -194,7 +199,7 @@ contains
   end function dyad_label
 
   !> Kinematics of every link at crank angle `phi1` (rad): frames 0..2*nd+1 and dyad poses.
-  pure subroutine assur_kinematics(mech, phi1, states, poses, error)
+  pure subroutine assur_kinematics(mech, phi1, states, poses, error, link_angles)
     !> Mechanism.
     type(assur_mech_t), intent(in) :: mech
     !> Crank angle, rad.
@@ -207,13 +212,19 @@ contains
     type(dyad_pose_t), intent(inout) :: poses(:)
     !> Geometry error naming the dyad.
     type(error_t), allocatable, intent(out) :: error
+    !> Whether every link's angle is wanted (default true; false: only those a later dyad
+    !> turns its guide with, see assur_step_t%link_angles).
+    logical, intent(in), optional :: link_angles
     integer :: d
+    logical :: all_angles
+    all_angles = .true.
+    if (present(link_angles)) all_angles = link_angles
     states(0) = frame_state()
-    states(1) = crank_state(mech%pivot, phi1)
+    call set_crank_state(mech%pivot, phi1, states(1))
     do d = 1, size(mech%dyads)
       associate (dy => mech%dyads(d))
         call set_dyad_pose(dy%geom, states(dy%on(1)), dy%at(:, 1), dy%ang(1), &
-                           states(dy%on(2)), dy%at(:, 2), dy%ang(2), poses(d))
+                           states(dy%on(2)), dy%at(:, 2), dy%ang(2), poses(d), all_angles .or. turns_a_guide(mech, d))
         if (poses(d)%status /= pose_ok) then
           if (poses(d)%status == pose_no_assembly) then
             if (allocated(poses(d)%detail)) then
@@ -232,6 +243,24 @@ contains
       end associate
     end do
   end subroutine assur_kinematics
+
+  !> Whether a dyad after dyad `d` has a guide on one of its links (a prismatic outer pair
+  !> whose direction turns with that link's angle).
+  pure logical function turns_a_guide(mech, d) result(turns)
+    !> Mechanism.
+    type(assur_mech_t), intent(in) :: mech
+    !> Dyad number.
+    integer, intent(in) :: d
+    integer :: dd
+    turns = .false.
+    do dd = d + 1, size(mech%dyads)
+      associate (kind => mech%dyads(dd)%geom%kind, on => mech%dyads(dd)%on)
+        if (kind == kind_prp .and. (on(1) == link_a(d) .or. on(1) == link_b(d))) turns = .true.
+        if ((kind == kind_rrp .or. kind == kind_prp .or. kind == kind_rpp) .and. &
+            (on(2) == link_a(d) .or. on(2) == link_b(d))) turns = .true.
+      end associate
+    end do
+  end function turns_a_guide
 
   !> Kinetostatic analysis at crank angle `phi1` (rad), crank speed `omega1` (rad/s) and
   !> acceleration `eps1` (rad/s^2), with the external forces' magnitudes `f_mag` (N) and
@@ -366,8 +395,8 @@ contains
     type(link_balance_t), intent(out), optional :: balances(0:)
     type(point_state_t) :: ps
     real(wp) :: w2, a_s(2), eps, phi_f(2), gw(2), m_phi, dir(2)
-    real(wp) :: power, power_scale, term, f_ba(2)
-    integer :: i, d, nd, k
+    real(wp) :: power, power_scale, term, f_pair(2)
+    integer :: i, d, nd, k, ip, pa, pb
 
     associate (states => step%work_states, poses => step%work_poses, known => step%work_known, &
                f_len => step%work_f_len, force_dir => step%work_force_dir)
@@ -375,7 +404,7 @@ contains
       step%phi1 = phi1
       step%omega1 = omega1
       step%eps1 = eps1
-      call assur_kinematics(mech, phi1, states, poses, error)
+      call assur_kinematics(mech, phi1, states, poses, error, step%link_angles)
       if (allocated(error)) return
       w2 = omega1**2
 
@@ -452,27 +481,31 @@ contains
       end if
       step%power_scale = power_scale
 
-      ! equilibrium residual of every moving link with all its loads and reactions
-      call balance_add_force(known(1), states(1)%o, states(1)%o, step%f(:, crank_pin_index(nd)), &
-                             f_len(crank_pin_index(nd)))
+      ! equilibrium residual of every moving link with all its loads and reactions (each pair
+      ! force into a local pair first: a section of an allocatable passed on costs a small
+      ! mechanism's step more than the sums, and its negation would be a heap temporary)
+      ip = crank_pin_index(nd)
+      f_pair = step%f(:, ip)
+      call balance_add_force(known(1), states(1)%o, states(1)%o, f_pair, f_len(ip))
       call balance_add_couple(known(1), step%m1)
       do d = 1, nd
-        associate (pa => link_a(d), pb => link_b(d))
-          call balance_add_force(known(pa), states(pa)%o, poses(d)%p(:, 1), step%f(:, pair_index(d, 1)), &
-                                 f_len(pair_index(d, 1)))
-          call balance_add_couple(known(pa), step%m(pair_index(d, 1)))
-          call balance_add_force(known(pa), states(pa)%o, poses(d)%p(:, 2), step%f(:, pair_index(d, 2)), &
-                                 f_len(pair_index(d, 2)))
-          call balance_add_couple(known(pa), step%m(pair_index(d, 2)))
-          ! (the inner pair's force on b into a local pair first: the negated array section of
-          ! an allocatable would be a temporary on the heap every step)
-          f_ba = -step%f(:, pair_index(d, 2))
-          call balance_add_force(known(pb), states(pb)%o, poses(d)%p(:, 2), f_ba, f_len(pair_index(d, 2)))
-          call balance_add_couple(known(pb), -step%m(pair_index(d, 2)))
-          call balance_add_force(known(pb), states(pb)%o, poses(d)%p(:, 3), step%f(:, pair_index(d, 3)), &
-                                 f_len(pair_index(d, 3)))
-          call balance_add_couple(known(pb), step%m(pair_index(d, 3)))
-        end associate
+        pa = link_a(d)
+        pb = link_b(d)
+        ip = pair_index(d, 1)
+        f_pair = step%f(:, ip)
+        call balance_add_force(known(pa), states(pa)%o, poses(d)%p(:, 1), f_pair, f_len(ip))
+        call balance_add_couple(known(pa), step%m(ip))
+        ip = pair_index(d, 2)
+        f_pair = step%f(:, ip)
+        call balance_add_force(known(pa), states(pa)%o, poses(d)%p(:, 2), f_pair, f_len(ip))
+        call balance_add_couple(known(pa), step%m(ip))
+        f_pair = -f_pair
+        call balance_add_force(known(pb), states(pb)%o, poses(d)%p(:, 2), f_pair, f_len(ip))
+        call balance_add_couple(known(pb), -step%m(ip))
+        ip = pair_index(d, 3)
+        f_pair = step%f(:, ip)
+        call balance_add_force(known(pb), states(pb)%o, poses(d)%p(:, 3), f_pair, f_len(ip))
+        call balance_add_couple(known(pb), step%m(ip))
       end do
       step%residual = equilibrium_residual(known(1:))
       if (present(balances)) balances = known
@@ -681,22 +714,23 @@ contains
   pure subroutine back_substitute(mech, states, poses, known, f, n, m, error, f_len)
     !> Mechanism.
     type(assur_mech_t), intent(in) :: mech
-    !> Frames of links 0..2*nd+1.
-    type(link_state_t), intent(in) :: states(0:)
+    !> Frames of links 0..2*nd+1 (explicit shapes here: a step's arrays are contiguous, and
+    !> the strides of assumed shapes cost a small mechanism's step more than its sums).
+    type(link_state_t), intent(in) :: states(0:2 * size(mech%dyads) + 1)
     !> Pose of each dyad.
-    type(dyad_pose_t), intent(in) :: poses(:)
+    type(dyad_pose_t), intent(in) :: poses(size(mech%dyads))
     !> Loads of every link (N, N*m about its origin); reactions of later dyads are added.
-    type(link_balance_t), intent(inout) :: known(0:)
+    type(link_balance_t), intent(inout) :: known(0:2 * size(mech%dyads) + 1)
     !> Pair forces (dyad pairs, then the crank pin), N.
-    real(wp), intent(inout) :: f(:, :)
+    real(wp), intent(inout) :: f(2, 3 * size(mech%dyads) + 1)
     !> Signed normal forces of prismatic pairs, N.
-    real(wp), intent(inout) :: n(:)
+    real(wp), intent(inout) :: n(3 * size(mech%dyads) + 1)
     !> Reaction moments of prismatic pairs, N*m.
-    real(wp), intent(inout) :: m(:)
+    real(wp), intent(inout) :: m(3 * size(mech%dyads) + 1)
     !> Geometry error naming the dyad.
     type(error_t), allocatable, intent(out) :: error
     !> Length of each pair force (dyad pairs, then the crank pin) as fast_magnitude gives it, N.
-    real(wp), intent(out), optional :: f_len(:)
+    real(wp), intent(out), optional :: f_len(3 * size(mech%dyads) + 1)
     type(dyad_reactions_t) :: r
     real(wp) :: lengths(3)
     type(error_t), allocatable :: solve_error
@@ -735,9 +769,9 @@ contains
     !> Mechanism.
     type(assur_mech_t), intent(in) :: mech
     !> Frames of links 0..2*nd+1.
-    type(link_state_t), intent(in) :: states(0:)
+    type(link_state_t), intent(in) :: states(0:2 * size(mech%dyads) + 1)
     !> Pose of each dyad.
-    type(dyad_pose_t), intent(in) :: poses(:)
+    type(dyad_pose_t), intent(in) :: poses(size(mech%dyads))
     !> Dyad number.
     integer, intent(in) :: d
     !> Forces of the dyad's pairs 1..3 (pair 1 on a, pair 3 on b), N.
@@ -745,7 +779,7 @@ contains
     !> Reaction moments of the dyad's pairs 1..3, N*m.
     real(wp), intent(in) :: m(3)
     !> Loads of every link.
-    type(link_balance_t), intent(inout) :: known(0:)
+    type(link_balance_t), intent(inout) :: known(0:2 * size(mech%dyads) + 1)
     !> fast_magnitude of the forces of pairs 1..3 when known, N.
     real(wp), intent(in), optional :: f_len(3)
     integer :: q, i, jp

@@ -16,13 +16,14 @@
 !> A, C: outer pins; B: inner pin; a guide is a line on an earlier link along which the
 !> slider's reference point moves (any offset of the slider is part of the line's position).
 module kinetostat_assur_kinematics
+  use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
   use kinetostat_kinds, only: wp, rad_to_deg
   use kinetostat_vec2, only: unit_at, perp, cross, magnitude, fast_magnitude
   use kinetostat_text, only: real_str
   implicit none
   private
   public :: link_state_t, point_state_t, dyad_geometry_t, dyad_pose_t
-  public :: point_on, point_motion, crank_state, frame_state, set_dyad_pose
+  public :: point_on, point_motion, crank_state, set_crank_state, frame_state, set_dyad_pose
   public :: kind_rrr, kind_rrp, kind_rpr, kind_prp, kind_rpp, kind_names, kind_has_mode
   public :: pose_ok, pose_no_assembly, pose_dead
 
@@ -55,7 +56,7 @@ module kinetostat_assur_kinematics
     real(wp) :: ao(2) = 0.0_wp
     !> eps_q = d2 th / d phi1^2.
     real(wp) :: eq = 0.0_wp
-    !> cos(th) and sin(th), kept with th (link_frame, crank_state) for point_on.
+    !> cos(th) and sin(th), kept with th (set_link_frame, crank_state) for point_on.
     real(wp) :: cos_th = 1.0_wp
     !> See cos_th.
     real(wp) :: sin_th = 0.0_wp
@@ -127,12 +128,35 @@ contains
     !> Crank angle, rad.
     real(wp), intent(in) :: phi1
     type(link_state_t) :: ls
-    ls = link_frame(o=pivot, th=phi1, vo=[0.0_wp, 0.0_wp], u=1.0_wp, ao=[0.0_wp, 0.0_wp], eq=0.0_wp)
+    call set_crank_state(pivot, phi1, ls)
   end function crank_state
 
-  !> A link's frame: origin `o` (m), angle `th` (rad) with its cosine and sine, and their
-  !> analogues.
-  pure function link_frame(o, th, vo, u, ao, eq, e) result(ls)
+  !> crank_state(pivot, phi1) into `ls` (a step's hot path: set in place, not returned
+  !> through memory).
+  pure subroutine set_crank_state(pivot, phi1, ls)
+    !> Pivot A, m.
+    real(wp), intent(in) :: pivot(2)
+    !> Crank angle, rad.
+    real(wp), intent(in) :: phi1
+    !> The crank's frame.
+    type(link_state_t), intent(inout) :: ls
+    ls%o = pivot
+    ls%th = phi1
+    ls%vo = 0.0_wp
+    ls%u = 1.0_wp
+    ls%ao = 0.0_wp
+    ls%eq = 0.0_wp
+    ls%cos_th = cos(phi1)
+    ls%sin_th = sin(phi1)
+  end subroutine set_crank_state
+
+  !> A link's frame into `ls`: origin `o` (m), angle `th` (rad) with its cosine and sine
+  !> `e` = [cos(th), sin(th)] (as unit_at(th) gives them, or the direction whose angle th
+  !> is), and their analogues (set in place: a frame returned by a function comes back
+  !> through memory).
+  pure subroutine set_link_frame(ls, o, th, vo, u, ao, eq, e)
+    !> The frame.
+    type(link_state_t), intent(inout) :: ls
     !> Origin, m.
     real(wp), intent(in) :: o(2)
     !> Angle of the x-axis, rad.
@@ -145,15 +169,10 @@ contains
     real(wp), intent(in) :: ao(2)
     !> d2 th / d phi1^2.
     real(wp), intent(in) :: eq
-    !> [cos(th), sin(th)] when the caller has them already (unit_at(th), the same values).
-    real(wp), intent(in), optional :: e(2)
-    type(link_state_t) :: ls
-    if (present(e)) then
-      ls = link_state_t(o=o, th=th, vo=vo, u=u, ao=ao, eq=eq, cos_th=e(1), sin_th=e(2))
-    else
-      ls = link_state_t(o=o, th=th, vo=vo, u=u, ao=ao, eq=eq, cos_th=cos(th), sin_th=sin(th))
-    end if
-  end function link_frame
+    !> [cos(th), sin(th)].
+    real(wp), intent(in) :: e(2)
+    ls = link_state_t(o=o, th=th, vo=vo, u=u, ao=ao, eq=eq, cos_th=e(1), sin_th=e(2))
+  end subroutine set_link_frame
 
   !> A point given in a link's coordinates `r` (m), with its analogues.
   pure function point_on(ls, r) result(ps)
@@ -172,14 +191,21 @@ contains
     type(link_state_t), intent(in) :: ls
     !> Local coordinates, m.
     real(wp), intent(in) :: r(2)
-    !> The point's position, m, and its velocity and acceleration analogues.
-    type(point_state_t), intent(out) :: ps
-    real(wp) :: w(2)
-    ! rotate(r, ls%th) with the frame's own cosine and sine
-    w = [ls%cos_th * r(1) - ls%sin_th * r(2), ls%sin_th * r(1) + ls%cos_th * r(2)]
-    ps%p = ls%o + w
-    ps%v = ls%vo + ls%u * perp(w)
-    ps%a = ls%ao + ls%eq * perp(w) - ls%u**2 * w
+    !> The point's position, m, and its velocity and acceleration analogues (every
+    !> component set; inout only to spare a call the defaults' initialisation).
+    type(point_state_t), intent(inout) :: ps
+    real(wp) :: w1, w2, u2
+    ! rotate(r, ls%th) with the frame's own cosine and sine, w = [w1, w2], perp(w) = [-w2, w1]
+    ! (in scalars: the array expressions cost a small mechanism's step more than the arithmetic)
+    w1 = ls%cos_th * r(1) - ls%sin_th * r(2)
+    w2 = ls%sin_th * r(1) + ls%cos_th * r(2)
+    u2 = ls%u**2
+    ps%p(1) = ls%o(1) + w1
+    ps%p(2) = ls%o(2) + w2
+    ps%v(1) = ls%vo(1) + ls%u * (-w2)
+    ps%v(2) = ls%vo(2) + ls%u * w1
+    ps%a(1) = ls%ao(1) + ls%eq * (-w2) - u2 * w1
+    ps%a(2) = ls%ao(2) + ls%eq * w1 - u2 * w2
   end subroutine point_motion
 
   !> Solve [c1 c2] x = rhs (2x2); `ok` false when the columns are (nearly) parallel:
@@ -210,10 +236,21 @@ contains
     x(2) = cross(c1, rhs) / det
   end subroutine solve2
 
+  !> solve2 again with the same columns `c1`, `c2` for another right-hand side `rhs` (the
+  !> columns found solvable by solve2 before: no test), the same arithmetic.
+  pure subroutine solve2_again(c1, c2, rhs, x)
+    real(wp), intent(in) :: c1(2), c2(2), rhs(2)
+    real(wp), intent(out) :: x(2)
+    real(wp) :: det
+    det = cross(c1, c2)
+    x(1) = cross(rhs, c2) / det
+    x(2) = cross(c1, rhs) / det
+  end subroutine solve2_again
+
   !> Position analysis of a dyad: `q1` and `q3` are the frames of the links its outer pairs
   !> attach to, `at1`/`at3` the attachment points in those links' coordinates (m) and
   !> `ang1`/`ang3` the guide directions relative to those links (rad, prismatic outer pairs).
-  pure subroutine set_dyad_pose(g, q1, at1, ang1, q3, at3, ang3, pose)
+  pure subroutine set_dyad_pose(g, q1, at1, ang1, q3, at3, ang3, pose, angles)
     !> Dyad geometry.
     type(dyad_geometry_t), intent(in) :: g
     !> Frame of the link pair 1 attaches to.
@@ -231,7 +268,15 @@ contains
     !> The pose (inout: a pose of the same dyad reused from step to step is not set to its
     !> defaults whole; the parts a kind leaves are, and every kind sets the rest).
     type(dyad_pose_t), intent(inout) :: pose
+    !> Whether the links' angles `th` are wanted (default true). Without them an RRR dyad's
+    !> two and an RRP dyad's link a take no atan2 and their `th` is NaN (their directions,
+    !> cos_th and sin_th, are set): for a step whose results show no link angle and whose
+    !> later dyads turn no guide with these links.
+    logical, intent(in), optional :: angles
     type(point_state_t) :: a, c
+    logical :: with_angles
+    with_angles = .true.
+    if (present(angles)) with_angles = angles
     pose%status = pose_ok
     if (allocated(pose%detail)) deallocate (pose%detail)
     pose%t = 0.0_wp
@@ -239,13 +284,13 @@ contains
     pose%stroke_v = 0.0_wp
     pose%stroke_a = 0.0_wp
     pose%extend = 0.0_wp
-    a = point_on(q1, at1)
-    c = point_on(q3, at3)
+    call point_motion(q1, at1, a)
+    call point_motion(q3, at3, c)
     select case (g%kind)
     case (kind_rrr)
-      call pose_rrr(g, a, c, pose)
+      call pose_rrr(g, a, c, pose, with_angles)
     case (kind_rrp)
-      call pose_rrp(g, a, c, q3%th + ang3, q3%u, q3%eq, pose)
+      call pose_rrp(g, a, c, q3%th + ang3, q3%u, q3%eq, pose, with_angles)
     case (kind_rpr)
       call pose_rpr(g, a, c, pose)
     case (kind_prp)
@@ -263,12 +308,16 @@ contains
   !> vector; each link's angle is the atan2 of its direction, th_a on the branch
   !> atan2(A->C) + mode * angle at A (in (-2 pi, 2 pi]: the same angle as before, not
   !> reduced into (-pi, pi]).
-  pure subroutine pose_rrr(g, a, c, pose)
+  pure subroutine pose_rrr(g, a, c, pose, angles)
     type(dyad_geometry_t), intent(in) :: g
     type(point_state_t), intent(in) :: a, c
     type(dyad_pose_t), intent(inout) :: pose
+    !> Whether th_a and th_b are computed (else NaN).
+    logical, intent(in) :: angles
     real(wp), parameter :: two_pi = 2.0_wp * acos(-1.0_wp)
     real(wp) :: d(2), l, cos_al, sin_al, tha, thb, b(2), ea(2), eb(2), x(2), rhs(2), ua, ub, dh(2), cb(2)
+    !> The velocity and acceleration equations' columns (the same matrix for both).
+    real(wp) :: col1(2), col2(2)
     logical :: ok, d_up, d_down
     d = c%p - a%p
     l = magnitude(d)
@@ -292,20 +341,27 @@ contains
     ea = [dh(1) * cos_al - dh(2) * sin_al, dh(2) * cos_al + dh(1) * sin_al]
     b = a%p + g%l2 * ea
     cb = b - c%p
-    thb = atan2(cb(2), cb(1))
     eb = cb / fast_magnitude(cb)
-    ! th_a on the branch of atan2(d) + mode * alpha: atan2(d) lies in (0, pi] (d_up) or in
-    ! [-pi, 0) (d_down, -pi for d(2) = -0); adding alpha in [0, pi] turns past pi only from
-    ! above the x-axis, subtracting it past -pi only from below
-    tha = atan2(ea(2), ea(1))
-    d_up = d(2) > 0.0_wp .or. (d(2) == 0.0_wp .and. d(1) < 0.0_wp .and. sign(1.0_wp, d(2)) > 0.0_wp)
-    d_down = d(2) < 0.0_wp .or. (d(2) == 0.0_wp .and. d(1) < 0.0_wp .and. sign(1.0_wp, d(2)) < 0.0_wp)
-    if (g%mode > 0) then
-      if (d_up .and. tha <= 0.0_wp) tha = tha + two_pi
+    if (angles) then
+      thb = atan2(cb(2), cb(1))
+      ! th_a on the branch of atan2(d) + mode * alpha: atan2(d) lies in (0, pi] (d_up) or in
+      ! [-pi, 0) (d_down, -pi for d(2) = -0); adding alpha in [0, pi] turns past pi only from
+      ! above the x-axis, subtracting it past -pi only from below
+      tha = atan2(ea(2), ea(1))
+      d_up = d(2) > 0.0_wp .or. (d(2) == 0.0_wp .and. d(1) < 0.0_wp .and. sign(1.0_wp, d(2)) > 0.0_wp)
+      d_down = d(2) < 0.0_wp .or. (d(2) == 0.0_wp .and. d(1) < 0.0_wp .and. sign(1.0_wp, d(2)) < 0.0_wp)
+      if (g%mode > 0) then
+        if (d_up .and. tha <= 0.0_wp) tha = tha + two_pi
+      else
+        if (d_down .and. tha > 0.0_wp) tha = tha - two_pi
+      end if
     else
-      if (d_down .and. tha > 0.0_wp) tha = tha - two_pi
+      tha = ieee_value(tha, ieee_quiet_nan)
+      thb = tha
     end if
-    call solve2(g%l2 * perp(ea), -g%l3 * perp(eb), c%v - a%v, x, ok)
+    col1 = g%l2 * perp(ea)
+    col2 = -g%l3 * perp(eb)
+    call solve2(col1, col2, c%v - a%v, x, ok)
     if (.not. ok) then
       pose%status = pose_dead
       return
@@ -313,9 +369,9 @@ contains
     ua = x(1)
     ub = x(2)
     rhs = c%a - a%a + g%l2 * ua**2 * ea - g%l3 * ub**2 * eb
-    call solve2(g%l2 * perp(ea), -g%l3 * perp(eb), rhs, x, ok)
-    pose%link(1) = link_frame(o=a%p, th=tha, vo=a%v, u=ua, ao=a%a, eq=x(1), e=ea)
-    pose%link(2) = link_frame(o=c%p, th=thb, vo=c%v, u=ub, ao=c%a, eq=x(2), e=eb)
+    call solve2_again(col1, col2, rhs, x)
+    call set_link_frame(pose%link(1), o=a%p, th=tha, vo=a%v, u=ua, ao=a%a, eq=x(1), e=ea)
+    call set_link_frame(pose%link(2), o=c%p, th=thb, vo=c%v, u=ub, ao=c%a, eq=x(2), e=eb)
     pose%p(:, 1) = a%p
     pose%p(:, 2) = b
     pose%p(:, 3) = c%p
@@ -323,13 +379,15 @@ contains
 
   !> RRP: B = A + l2 e(th_a) = G + s t (guide through G at angle gam); mode +1 takes the
   !> larger s (B further along +t).
-  pure subroutine pose_rrp(g, a, gp, gam, gam_u, gam_eq, pose)
+  pure subroutine pose_rrp(g, a, gp, gam, gam_u, gam_eq, pose, angles)
     type(dyad_geometry_t), intent(in) :: g
     type(point_state_t), intent(in) :: a, gp
     real(wp), intent(in) :: gam, gam_u, gam_eq
     type(dyad_pose_t), intent(inout) :: pose
+    !> Whether th_a is computed (else NaN).
+    logical, intent(in) :: angles
     real(wp) :: t(2), n(2), d(2), dt, disc, s, b(2), tha, ea(2), x(2), rhs(2), ua, ds
-    real(wp) :: vb(2), ab(2)
+    real(wp) :: vb(2), ab(2), col1(2)
     logical :: ok
     t = unit_at(gam)
     n = perp(t)
@@ -344,9 +402,14 @@ contains
     end if
     s = -dt + real(g%mode, wp) * sqrt(max(disc, 0.0_wp))
     b = gp%p + s * t
-    tha = atan2(b(2) - a%p(2), b(1) - a%p(1))
+    if (angles) then
+      tha = atan2(b(2) - a%p(2), b(1) - a%p(1))
+    else
+      tha = ieee_value(tha, ieee_quiet_nan)
+    end if
     ea = (b - a%p) / fast_magnitude(b - a%p)
-    call solve2(g%l2 * perp(ea), -t, gp%v + s * gam_u * n - a%v, x, ok)
+    col1 = g%l2 * perp(ea)
+    call solve2(col1, -t, gp%v + s * gam_u * n - a%v, x, ok)
     if (.not. ok) then
       pose%status = pose_dead
       return
@@ -354,11 +417,11 @@ contains
     ua = x(1)
     ds = x(2)
     rhs = gp%a + (2.0_wp * ds * gam_u + s * gam_eq) * n - s * gam_u**2 * t - a%a + g%l2 * ua**2 * ea
-    call solve2(g%l2 * perp(ea), -t, rhs, x, ok)
+    call solve2_again(col1, -t, rhs, x)
     vb = a%v + g%l2 * ua * perp(ea)
     ab = a%a + g%l2 * x(1) * perp(ea) - g%l2 * ua**2 * ea
-    pose%link(1) = link_frame(o=a%p, th=tha, vo=a%v, u=ua, ao=a%a, eq=x(1), e=ea)
-    pose%link(2) = link_frame(o=b, th=gam, vo=vb, u=gam_u, ao=ab, eq=gam_eq, e=t)
+    call set_link_frame(pose%link(1), o=a%p, th=tha, vo=a%v, u=ua, ao=a%a, eq=x(1), e=ea)
+    call set_link_frame(pose%link(2), o=b, th=gam, vo=vb, u=gam_u, ao=ab, eq=gam_eq, e=t)
     pose%p(:, 1) = a%p
     pose%p(:, 2) = b
     pose%p(:, 3) = b
@@ -395,9 +458,9 @@ contains
     u = x(1)
     ds = x(2)
     rhs = a%a - c%a - 2.0_wp * ds * u * n + u**2 * (s * t + g%e * n)
-    call solve2(col1, t, rhs, x, ok)
-    pose%link(1) = link_frame(o=a%p, th=th, vo=a%v, u=u, ao=a%a, eq=x(1), e=t)
-    pose%link(2) = link_frame(o=c%p, th=th, vo=c%v, u=u, ao=c%a, eq=x(1), e=t)
+    call solve2_again(col1, t, rhs, x)
+    call set_link_frame(pose%link(1), o=a%p, th=th, vo=a%v, u=u, ao=a%a, eq=x(1), e=t)
+    call set_link_frame(pose%link(2), o=c%p, th=th, vo=c%v, u=u, ao=c%a, eq=x(1), e=t)
     pose%p(:, 1) = a%p
     pose%p(:, 2) = a%p
     pose%p(:, 3) = c%p
@@ -428,16 +491,16 @@ contains
     s1 = x(1)
     s2 = x(2)
     b = g1%p + s1 * t1
-    call solve2(t1, -t2, g2%v - g1%v + s2 * u2 * n2 - s1 * u1 * n1, x, ok)
+    call solve2_again(t1, -t2, g2%v - g1%v + s2 * u2 * n2 - s1 * u1 * n1, x)
     ds1 = x(1)
     ds2 = x(2)
     rhs = g2%a - g1%a + (2.0_wp * ds2 * u2 + s2 * eq2) * n2 - s2 * u2**2 * t2 &
           - (2.0_wp * ds1 * u1 + s1 * eq1) * n1 + s1 * u1**2 * t1
-    call solve2(t1, -t2, rhs, x, ok)
+    call solve2_again(t1, -t2, rhs, x)
     vb = g1%v + ds1 * t1 + s1 * u1 * n1
     ab = g1%a + x(1) * t1 + (2.0_wp * ds1 * u1 + s1 * eq1) * n1 - s1 * u1**2 * t1
-    pose%link(1) = link_frame(o=b, th=gam1, vo=vb, u=u1, ao=ab, eq=eq1, e=t1)
-    pose%link(2) = link_frame(o=b, th=gam2, vo=vb, u=u2, ao=ab, eq=eq2, e=t2)
+    call set_link_frame(pose%link(1), o=b, th=gam1, vo=vb, u=u1, ao=ab, eq=eq1, e=t1)
+    call set_link_frame(pose%link(2), o=b, th=gam2, vo=vb, u=u2, ao=ab, eq=eq2, e=t2)
     pose%p(:, 1) = b
     pose%p(:, 2) = b
     pose%p(:, 3) = b
@@ -471,16 +534,16 @@ contains
     end if
     sb = x(1)
     sa = x(2)
-    call solve2(t, ts, a%v - gp%v - gam_u * perp(w), x, ok)
+    call solve2_again(t, ts, a%v - gp%v - gam_u * perp(w), x)
     dsb = x(1)
     dsa = x(2)
     rhs = a%a - gp%a - 2.0_wp * gam_u * (dsb * n + dsa * ns) - gam_eq * perp(w) + gam_u**2 * w
-    call solve2(t, ts, rhs, x, ok)
+    call solve2_again(t, ts, rhs, x)
     ob = gp%p + sb * t
     vb = gp%v + dsb * t + sb * gam_u * n
     ab = gp%a + x(1) * t + (2.0_wp * dsb * gam_u + sb * gam_eq) * n - sb * gam_u**2 * t
-    pose%link(1) = link_frame(o=a%p, th=gam + g%slot_angle, vo=a%v, u=gam_u, ao=a%a, eq=gam_eq, e=ts)
-    pose%link(2) = link_frame(o=ob, th=gam, vo=vb, u=gam_u, ao=ab, eq=gam_eq, e=t)
+    call set_link_frame(pose%link(1), o=a%p, th=gam + g%slot_angle, vo=a%v, u=gam_u, ao=a%a, eq=gam_eq, e=ts)
+    call set_link_frame(pose%link(2), o=ob, th=gam, vo=vb, u=gam_u, ao=ab, eq=gam_eq, e=t)
     pose%p(:, 1) = a%p
     pose%p(:, 2) = a%p
     pose%p(:, 3) = ob

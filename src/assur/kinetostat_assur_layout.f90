@@ -290,6 +290,8 @@ contains
       real(wp), allocatable :: lengths(:)
       integer :: kk, i
       allocate (lengths(np))
+      ! the links' angles only where a column shows them (the kinematics columns)
+      step%link_angles = kinematics
       !$omp do schedule(dynamic, 64) reduction(min:first_bad)
       do kk = first, last
         i = kk - first + 1
