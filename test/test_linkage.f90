@@ -558,7 +558,12 @@ contains
         worst_v = huge(1.0_wp)
         return
       end if
-      small = small + count(wc%unit_small)
+      ! the units solved from the points (the fast path: every unit) or by J's closed forms
+      if (wc%has_fast) then
+        small = small + size(deck%mech%units)
+      else
+        small = small + count(wc%unit_small)
+      end if
       worst_v = max(worst_v, maxval(abs(sc%qd - sg%qd)) / maxval(abs(sg%qd)))
       worst_a = max(worst_a, maxval(abs(sc%qdd - sg%qdd)) / maxval(abs(sg%qdd)))
       ! the reactions of the general solve's motion by both: the multipliers' solves alone

@@ -1,0 +1,333 @@
+!> The general engine's velocities and accelerations of a linkage whose units are all input
+!> units of one link and dyads, straight from the points (as the dyad engine does), without
+!> the Jacobian: unit by unit in the structural analysis' order, each link's motion from the
+!> links placed before it.
+!>
+!> An input unit: its link turns (R drive) or slides (P drive) relative to its known link by
+!> the drive's rate. A dyad of links 1 and 2: each link's motion is fixed by its outer pair up
+!> to one parameter t_j — about the outer turning pair's joint X_j it turns with any rate
+!> t_j; along an outer sliding pair it turns with its known link and slides with any rate t_j
+!> along the guide u_j. The inner pair's two equations give t_1 and t_2: a turning pair at B,
+!> v_1(B) = v_2(B); a sliding pair at the block's point X with the guide's normal n,
+!> omega_1 = omega_2 and n . (v_1(X) - v_2(X)) = 0. The accelerations are the same 2 x 2
+!> system with the right-hand sides of the velocity terms (the centripetal -omega^2 r, and
+!> along a sliding pair Coriolis' 2 omega perp(v_rel)). Each 2 x 2 reports whether its
+!> determinant is clear of zero (above small_screen of its rows' scale); where one is not,
+!> the caller solves with J (which also decides whether the position is singular).
+module kinetostat_linkage_dyads
+  use kinetostat_kinds, only: wp
+  use kinetostat_vec2, only: perp
+  use kinetostat_linkage_types, only: linkage_t, pair_r
+  use kinetostat_linkage_closed, only: turned, position_cs
+  use kinetostat_linkage_small, only: small_screen
+  implicit none
+  private
+  public :: dyad_plan_t, plan_dyads, dyad_velocities, dyad_accelerations
+
+  !> Unit kinds of the plan.
+  integer, parameter :: unit_input = 1, unit_dyad = 2
+
+  !> Each unit's links and pairs (every unit an input unit of one link or a dyad).
+  type :: dyad_plan_t
+    !> The plan applies (every unit an input unit of one link driven at its own pair, or a
+    !> dyad of two links and three pairs with one outer pair on each link).
+    logical :: ok = .false.
+    !> Per unit: unit_input or unit_dyad.
+    integer, allocatable :: kind(:)
+    !> Per unit: an input unit's link (1) and known link (2); a dyad's links (1, 2).
+    integer, allocatable :: link(:, :)
+    !> Per unit: an input unit's pair (1) and drive (2); a dyad's outer pairs of its links
+    !> (1, 2) and inner pair (3).
+    integer, allocatable :: pair(:, :)
+    !> Per dyad: the known link of each outer pair (0: the frame).
+    integer, allocatable :: known(:, :)
+    !> Per dyad: the 2 x 2 system of t_1, t_2 at the last poses (m11, m21, m12, m22) and its
+    !> determinant.
+    real(wp), allocatable :: m(:, :), det(:)
+    !> Per dyad: each link's point X_j (2 x 2), its parameter's direction (vP per t: 2 x 2;
+    !> omega per t: 2) and the inner pair's point (turning: the joint; sliding: the block's
+    !> point) and the guide's normal (sliding).
+    real(wp), allocatable :: px(:, :, :), dv(:, :, :), dw(:, :), pb(:, :), nb(:, :)
+  end type dyad_plan_t
+
+contains
+
+  !> The plan of `mech`'s units (plan%ok false when a unit is neither kind).
+  pure subroutine plan_dyads(mech, plan)
+    type(linkage_t), intent(in) :: mech
+    type(dyad_plan_t), intent(out) :: plan
+    integer :: u, nu, i, r, np, nk, d, kp(3), j, inner, e(2)
+    plan%ok = .false.
+    if (.not. allocated(mech%units)) return
+    nu = size(mech%units)
+    np = size(mech%pairs)
+    allocate (plan%kind(nu), plan%link(2, nu), plan%pair(3, nu), plan%known(2, nu), source=0)
+    allocate (plan%m(4, nu), plan%det(nu), plan%dw(2, nu), plan%pb(2, nu), plan%nb(2, nu), source=0.0_wp)
+    allocate (plan%px(2, 2, nu), plan%dv(2, 2, nu), source=0.0_wp)
+    do u = 1, nu
+      nk = 0
+      d = 0
+      do i = 1, size(mech%units(u)%rows)
+        r = mech%units(u)%rows(i)
+        if (r > 2 * np) then
+          d = r - 2 * np
+        else if (mod(r, 2) == 1) then
+          if (nk == 3) return
+          nk = nk + 1
+          kp(nk) = (r + 1) / 2
+        end if
+      end do
+      if (mech%units(u)%class == 1) then
+        if (size(mech%units(u)%links) /= 1 .or. nk /= 1 .or. d == 0) return
+        if (mech%drives(d)%pair /= kp(1)) return
+        plan%kind(u) = unit_input
+        plan%link(1, u) = mech%units(u)%links(1)
+        plan%link(2, u) = mech%pairs(kp(1))%a + mech%pairs(kp(1))%b - plan%link(1, u)
+        plan%pair(1:2, u) = [kp(1), d]
+      else if (mech%units(u)%class == 2) then
+        if (size(mech%units(u)%links) /= 2 .or. nk /= 3 .or. d /= 0) return
+        associate (set => mech%units(u)%links)
+          inner = 0
+          e = 0
+          do i = 1, 3
+            associate (pr => mech%pairs(kp(i)))
+              if (any(set == pr%a) .and. any(set == pr%b)) then
+                if (inner /= 0) return
+                inner = kp(i)
+              else
+                j = merge(1, 2, pr%a == set(1) .or. pr%b == set(1))
+                if (e(j) /= 0) return
+                e(j) = kp(i)
+              end if
+            end associate
+          end do
+          if (inner == 0 .or. any(e == 0)) return
+          plan%kind(u) = unit_dyad
+          plan%link(:, u) = set
+          plan%pair(:, u) = [e(1), e(2), inner]
+          do j = 1, 2
+            plan%known(j, u) = mech%pairs(e(j))%a + mech%pairs(e(j))%b - set(j)
+          end do
+        end associate
+      else
+        return
+      end if
+    end do
+    plan%ok = .true.
+  end subroutine plan_dyads
+
+  !> Velocity of link i's point x (0: the frame) from the velocities qd.
+  pure function point_velocity(q, qd, i, x) result(v)
+    real(wp), intent(in) :: q(:), qd(:), x(2)
+    integer, intent(in) :: i
+    real(wp) :: v(2)
+    v = 0.0_wp
+    if (i > 0) v = qd(3 * i - 2:3 * i - 1) + qd(3 * i) * perp(x - q(3 * i - 2:3 * i - 1))
+  end function point_velocity
+
+  !> Acceleration of link i's point x (0: the frame) from the velocities qd and accelerations
+  !> qdd.
+  pure function point_acceleration(q, qd, qdd, i, x) result(a)
+    real(wp), intent(in) :: q(:), qd(:), qdd(:), x(2)
+    integer, intent(in) :: i
+    real(wp) :: a(2), r(2)
+    a = 0.0_wp
+    if (i == 0) return
+    r = x - q(3 * i - 2:3 * i - 1)
+    a = qdd(3 * i - 2:3 * i - 1) + qdd(3 * i) * perp(r) - qd(3 * i)**2 * r
+  end function point_acceleration
+
+  !> Angular rate (or acceleration) of link i (0 for the frame) in qd.
+  pure real(wp) function rate_of(qd, i)
+    real(wp), intent(in) :: qd(:)
+    integer, intent(in) :: i
+    rate_of = 0.0_wp
+    if (i > 0) rate_of = qd(3 * i)
+  end function rate_of
+
+  !> The velocities qd of poses q (turns cs) for the drives' rates `rate`, unit by unit; the
+  !> dyads' 2 x 2 systems into the plan (for dyad_accelerations). ok false where a dyad's
+  !> determinant is not clear of zero.
+  pure subroutine dyad_velocities(mech, plan, q, cs, rate, qd, ok)
+    type(linkage_t), intent(in) :: mech
+    type(dyad_plan_t), intent(inout) :: plan
+    real(wp), intent(in) :: q(:), cs(:, 0:), rate(:)
+    real(wp), intent(out) :: qd(:)
+    logical, intent(out) :: ok
+    real(wp) :: x(2), u(2), w, vp(2), b(2, 2), beta(2), rhs(2), t(2), c1(2), c2(2), scale
+    integer :: un, j, lk, kn, k
+    qd = 0.0_wp
+    ok = .false.
+    do un = 1, size(plan%kind)
+      if (plan%kind(un) == unit_input) then
+        lk = plan%link(1, un)
+        kn = plan%link(2, un)
+        associate (pr => mech%pairs(plan%pair(1, un)))
+          if (pr%kind == pair_r) then
+            x = position_cs(mech, q, cs, lk, pr%at)
+            w = rate_of(qd, kn) + merge(rate(plan%pair(2, un)), -rate(plan%pair(2, un)), lk == pr%a)
+            vp = point_velocity(q, qd, kn, x)
+          else
+            x = position_cs(mech, q, cs, pr%a + pr%b - pr%guide, pr%at)
+            u = turned(cs, pr%guide, pr%u)
+            w = rate_of(qd, kn)
+            vp = point_velocity(q, qd, kn, x) + merge(-u, u, lk == pr%guide) * rate(plan%pair(2, un))
+          end if
+        end associate
+        call put_velocity(qd, lk, x, vp, w)
+        cycle
+      end if
+      ! a dyad: each link's point X_j, its known motion (b, beta) and its parameter's (dv, dw)
+      do j = 1, 2
+        lk = plan%link(j, un)
+        kn = plan%known(j, un)
+        associate (pr => mech%pairs(plan%pair(j, un)))
+          if (pr%kind == pair_r) then
+            x = position_cs(mech, q, cs, lk, pr%at)
+            b(:, j) = point_velocity(q, qd, kn, x)
+            beta(j) = 0.0_wp
+            plan%dv(:, j, un) = 0.0_wp
+            plan%dw(j, un) = 1.0_wp
+          else
+            x = position_cs(mech, q, cs, pr%a + pr%b - pr%guide, pr%at)
+            b(:, j) = point_velocity(q, qd, kn, x)
+            beta(j) = rate_of(qd, kn)
+            plan%dv(:, j, un) = turned(cs, pr%guide, pr%u)
+            plan%dw(j, un) = 0.0_wp
+          end if
+          plan%px(:, j, un) = x
+        end associate
+      end do
+      associate (pin => mech%pairs(plan%pair(3, un)), px => plan%px(:, :, un), dvj => plan%dv(:, :, un), &
+                 dwj => plan%dw(:, un), m => plan%m(:, un))
+        if (pin%kind == pair_r) then
+          x = position_cs(mech, q, cs, plan%link(1, un), pin%at)
+          plan%pb(:, un) = x
+          c1 = dvj(:, 1) + dwj(1) * perp(x - px(:, 1))
+          c2 = dvj(:, 2) + dwj(2) * perp(x - px(:, 2))
+          m = [c1(1), c1(2), -c2(1), -c2(2)]
+          rhs = b(:, 2) + beta(2) * perp(x - px(:, 2)) - b(:, 1) - beta(1) * perp(x - px(:, 1))
+        else
+          x = position_cs(mech, q, cs, pin%a + pin%b - pin%guide, pin%at)
+          plan%pb(:, un) = x
+          plan%nb(:, un) = perp(turned(cs, pin%guide, pin%u))
+          c1 = dvj(:, 1) + dwj(1) * perp(x - px(:, 1))
+          c2 = dvj(:, 2) + dwj(2) * perp(x - px(:, 2))
+          m = [dwj(1), dot_product(plan%nb(:, un), c1), -dwj(2), -dot_product(plan%nb(:, un), c2)]
+          rhs(1) = beta(2) - beta(1)
+          rhs(2) = dot_product(plan%nb(:, un), b(:, 2) + beta(2) * perp(x - px(:, 2)) - b(:, 1) - &
+                               beta(1) * perp(x - px(:, 1)))
+        end if
+        plan%det(un) = m(1) * m(4) - m(3) * m(2)
+        scale = (abs(m(1)) + abs(m(3))) * (abs(m(2)) + abs(m(4)))
+        if (.not. abs(plan%det(un)) > small_screen * scale) return
+        t = solve2(m, plan%det(un), rhs)
+        do j = 1, 2
+          k = plan%link(j, un)
+          call put_velocity(qd, k, px(:, j), b(:, j) + t(j) * dvj(:, j), beta(j) + t(j) * dwj(j))
+        end do
+      end associate
+    end do
+    ok = .true.
+  contains
+    !> Link i's velocities from its point x's velocity vx and its rate w.
+    pure subroutine put_velocity(qd, i, x, vx, w)
+      real(wp), intent(inout) :: qd(:)
+      integer, intent(in) :: i
+      real(wp), intent(in) :: x(2), vx(2), w
+      qd(3 * i) = w
+      qd(3 * i - 2:3 * i - 1) = vx + w * perp(q(3 * i - 2:3 * i - 1) - x)
+    end subroutine put_velocity
+  end subroutine dyad_velocities
+
+  !> The accelerations qdd of poses q with velocities qd (of dyad_velocities, whose 2 x 2
+  !> systems the plan holds) for the drives' accelerations `acc`.
+  pure subroutine dyad_accelerations(mech, plan, q, cs, qd, acc, qdd)
+    type(linkage_t), intent(in) :: mech
+    type(dyad_plan_t), intent(in) :: plan
+    real(wp), intent(in) :: q(:), cs(:, 0:), qd(:), acc(:)
+    real(wp), intent(out) :: qdd(:)
+    real(wp) :: x(2), u(2), al, ap(2), b(2, 2), beta(2), rhs(2), t(2), r1(2), r2(2), w1, w2, wg
+    integer :: un, j, lk, kn
+    qdd = 0.0_wp
+    do un = 1, size(plan%kind)
+      if (plan%kind(un) == unit_input) then
+        lk = plan%link(1, un)
+        kn = plan%link(2, un)
+        associate (pr => mech%pairs(plan%pair(1, un)))
+          if (pr%kind == pair_r) then
+            x = position_cs(mech, q, cs, lk, pr%at)
+            al = rate_of(qdd, kn) + merge(acc(plan%pair(2, un)), -acc(plan%pair(2, un)), lk == pr%a)
+            ap = point_acceleration(q, qd, qdd, kn, x)
+          else
+            x = position_cs(mech, q, cs, pr%a + pr%b - pr%guide, pr%at)
+            u = turned(cs, pr%guide, pr%u)
+            al = rate_of(qdd, kn)
+            ap = point_acceleration(q, qd, qdd, kn, x) + 2.0_wp * rate_of(qd, kn) * &
+                 perp(point_velocity(q, qd, lk, x) - point_velocity(q, qd, kn, x)) + &
+                 merge(-u, u, lk == pr%guide) * acc(plan%pair(2, un))
+          end if
+        end associate
+        call put_acceleration(qdd, lk, x, ap, al)
+        cycle
+      end if
+      associate (px => plan%px(:, :, un), dvj => plan%dv(:, :, un), dwj => plan%dw(:, un), m => plan%m(:, un))
+        do j = 1, 2
+          lk = plan%link(j, un)
+          kn = plan%known(j, un)
+          b(:, j) = point_acceleration(q, qd, qdd, kn, px(:, j))
+          if (dwj(j) /= 0.0_wp) then
+            beta(j) = 0.0_wp
+          else
+            ! along the outer guide: Coriolis' term of the sliding
+            beta(j) = rate_of(qdd, kn)
+            b(:, j) = b(:, j) + 2.0_wp * rate_of(qd, kn) * &
+                      perp(point_velocity(q, qd, lk, px(:, j)) - point_velocity(q, qd, kn, px(:, j)))
+          end if
+        end do
+        w1 = rate_of(qd, plan%link(1, un))
+        w2 = rate_of(qd, plan%link(2, un))
+        x = plan%pb(:, un)
+        r1 = x - px(:, 1)
+        r2 = x - px(:, 2)
+        associate (pin => mech%pairs(plan%pair(3, un)))
+          if (pin%kind == pair_r) then
+            rhs = b(:, 2) + beta(2) * perp(r2) - w2**2 * r2 - b(:, 1) - beta(1) * perp(r1) + w1**2 * r1
+          else
+            wg = rate_of(qd, pin%guide)
+            rhs(1) = beta(2) - beta(1)
+            rhs(2) = dot_product(plan%nb(:, un), b(:, 2) + beta(2) * perp(r2) - w2**2 * r2 - b(:, 1) - &
+                                 beta(1) * perp(r1) + w1**2 * r1 + 2.0_wp * wg * &
+                                 perp(point_velocity(q, qd, plan%link(1, un), x) - &
+                                      point_velocity(q, qd, plan%link(2, un), x)))
+          end if
+        end associate
+        t = solve2(m, plan%det(un), rhs)
+        do j = 1, 2
+          call put_acceleration(qdd, plan%link(j, un), px(:, j), b(:, j) + t(j) * dvj(:, j), beta(j) + t(j) * dwj(j))
+        end do
+      end associate
+    end do
+  contains
+    !> Link i's accelerations from its point x's acceleration ax and its angular
+    !> acceleration al (its rate from qd).
+    pure subroutine put_acceleration(qdd, i, x, ax, al)
+      real(wp), intent(inout) :: qdd(:)
+      integer, intent(in) :: i
+      real(wp), intent(in) :: x(2), ax(2), al
+      real(wp) :: r(2)
+      r = q(3 * i - 2:3 * i - 1) - x
+      qdd(3 * i) = al
+      qdd(3 * i - 2:3 * i - 1) = ax + al * perp(r) - qd(3 * i)**2 * r
+    end subroutine put_acceleration
+  end subroutine dyad_accelerations
+
+  !> [m(1) m(3); m(2) m(4)] t = rhs by Cramer's rule with the determinant det.
+  pure function solve2(m, det, rhs) result(t)
+    real(wp), intent(in) :: m(4), det, rhs(2)
+    real(wp) :: t(2)
+    t(1) = (rhs(1) * m(4) - m(3) * rhs(2)) / det
+    t(2) = (m(1) * rhs(2) - rhs(1) * m(2)) / det
+  end function solve2
+
+end module kinetostat_linkage_dyads
