@@ -26,7 +26,7 @@ module kinetostat_linkage
     link_point_state, set_turns, turned, position_cs, constraints, quadratic_terms
   use kinetostat_linkage_small, only: solve3, two_body_solve, small_factors_t, factor3, solve3_factored, dyad_factor, &
     dyad_solve, dyad_solve_transposed
-  use kinetostat_linkage_dyads, only: dyad_plan_t, plan_dyads, dyad_velocities, dyad_accelerations
+  use kinetostat_linkage_dyads, only: dyad_plan_t, plan_dyads, dyad_velocities, dyad_accelerations, dyad_reactions
   use kinetostat_selfcheck, only: link_balance_t, balance_add_force, balance_add_couple, equilibrium_residual, &
     power_mismatch
   implicit none
@@ -961,9 +961,19 @@ contains
 
     step%solver_gap = 0.0_wp
     if (fast) then
-      call free_bodies(mech, fval, mval, step%q, step%qd, step%qdd, work, step%f, step%normal, step%couple, &
-                       step%effort, error)
-      if (allocated(error)) return
+      ! each link's own loads (force, moment about its reference point: Q), then the units'
+      ! reactions in closed form, the last first (kinetostat_linkage_dyads)
+      do i = 1, n
+        work%load(:, i) = work%gen(3 * i - 2:3 * i)
+      end do
+      call dyad_reactions(mech, work%plan, step%q, work%cs, work%load, step%f, step%normal, step%couple, step%effort, &
+                          closed)
+      if (.not. closed) then
+        ! (a 2 x 2 near a zero determinant: the free bodies by LU decide)
+        call free_bodies(mech, fval, mval, step%q, step%qd, step%qdd, work, step%f, step%normal, step%couple, &
+                         step%effort, error)
+        if (allocated(error)) return
+      end if
       work%fast_statics = work%fast_statics + 1
       if (work%fast_statics == 1) then
         ! the second opinion at the workspace's first step: the Lagrange multipliers

@@ -14,15 +14,24 @@
 !> along a sliding pair Coriolis' 2 omega perp(v_rel)). Each 2 x 2 reports whether its
 !> determinant is clear of zero (above small_screen of its rows' scale); where one is not,
 !> the caller solves with J (which also decides whether the position is singular).
+!>
+!> The reactions by the group method in closed form, the last unit first, each with the
+!> reactions of the units after it on its links (as the dyad engine solves its dyads): of a
+!> dyad, link j's equation that leaves out its outer pair's unknowns — the moments about an
+!> outer turning pair's joint, the forces along an outer sliding pair's guide — gives two
+!> equations in the inner pair's two unknowns (a force's components; a sliding pair's normal
+!> force and couple); each outer pair's unknowns then follow from its link's forces' sum (and a
+!> sliding pair's couple from the moments about its block's point). An input unit: its pair's
+!> force and the drive's effort from its link's three equations.
 module kinetostat_linkage_dyads
   use kinetostat_kinds, only: wp
-  use kinetostat_vec2, only: perp
-  use kinetostat_linkage_types, only: linkage_t, pair_r
+  use kinetostat_vec2, only: perp, cross
+  use kinetostat_linkage_types, only: linkage_t, pair_r, pair_p
   use kinetostat_linkage_closed, only: turned, position_cs
   use kinetostat_linkage_small, only: small_screen
   implicit none
   private
-  public :: dyad_plan_t, plan_dyads, dyad_velocities, dyad_accelerations
+  public :: dyad_plan_t, plan_dyads, dyad_velocities, dyad_accelerations, dyad_reactions
 
   !> Unit kinds of the plan.
   integer, parameter :: unit_input = 1, unit_dyad = 2
@@ -321,6 +330,162 @@ contains
       qdd(3 * i - 2:3 * i - 1) = ax + al * perp(r) - qd(3 * i)**2 * r
     end subroutine put_acceleration
   end subroutine dyad_accelerations
+
+  !> The reactions of poses q (turns cs) by the group method in closed form (the module's
+  !> header), with the plan's points of dyad_velocities at q. load: each link's own loads
+  !> (force, N, and moment about its reference point, N*m: 3 x n; the reactions of the
+  !> units solved are added to the links before them). Results as linkage_step_t's f, normal,
+  !> couple, effort. ok false where a dyad's 2 x 2 is near a zero determinant.
+  pure subroutine dyad_reactions(mech, plan, q, cs, load, f, normal, couple, effort, ok)
+    type(linkage_t), intent(in) :: mech
+    type(dyad_plan_t), intent(in) :: plan
+    real(wp), intent(in) :: q(:), cs(:, 0:)
+    real(wp), intent(inout) :: load(:, :)
+    real(wp), intent(out) :: f(:, :), normal(:), couple(:), effort(:)
+    logical, intent(out) :: ok
+    real(wp) :: m(4), rhs(2), x(2), sig(2), fin(2), cin, xo(2), n(2), u(2), fo(2), co, det, mx
+    integer :: un, j, lk, kn, k, d
+    ok = .false.
+    do un = size(plan%kind), 1, -1
+      if (plan%kind(un) == unit_input) then
+        lk = plan%link(1, un)
+        kn = plan%link(2, un)
+        k = plan%pair(1, un)
+        d = plan%pair(2, un)
+        associate (pr => mech%pairs(k))
+          if (pr%kind == pair_r) then
+            xo = position_cs(mech, q, cs, lk, pr%at)
+            fo = -load(1:2, lk)
+            co = -moment_about(q, load, lk, xo)
+            ! on a: the force and the drive's moment
+            f(:, k) = merge(fo, -fo, lk == pr%a)
+            normal(k) = 0.0_wp
+            couple(k) = 0.0_wp
+            effort(d) = merge(co, -co, lk == pr%a)
+            call add_load(q, load, kn, xo, -fo, -co)
+          else
+            xo = position_cs(mech, q, cs, pr%a + pr%b - pr%guide, pr%at)
+            u = turned(cs, pr%guide, pr%u)
+            n = perp(u)
+            ! on lk: normal force along n, effort along u, couple
+            normal(k) = -dot_product(n, load(1:2, lk))
+            effort(d) = -dot_product(u, load(1:2, lk))
+            couple(k) = -moment_about(q, load, lk, xo)
+            fo = normal(k) * n + effort(d) * u
+            co = couple(k)
+            if (lk /= pr%a) then
+              normal(k) = -normal(k)
+              effort(d) = -effort(d)
+              couple(k) = -couple(k)
+            end if
+            f(:, k) = normal(k) * n
+            call add_load(q, load, kn, xo, -fo, -co)
+          end if
+        end associate
+        cycle
+      end if
+      ! a dyad: the inner pair's unknowns x (on link 1: sig(1) = +-1 as link 1 is its a or b;
+      ! on link 2 the opposite)
+      associate (pin => mech%pairs(plan%pair(3, un)), px => plan%px(:, :, un))
+        sig(1) = merge(1.0_wp, -1.0_wp, plan%link(1, un) == pin%a)
+        sig(2) = -sig(1)
+        do j = 1, 2
+          lk = plan%link(j, un)
+          associate (po => mech%pairs(plan%pair(j, un)))
+            if (po%kind == pair_r) then
+              ! the moments about the outer joint
+              mx = moment_about(q, load, lk, px(:, j))
+              if (pin%kind == pair_r) then
+                m(j) = -sig(j) * (plan%pb(2, un) - px(2, j))
+                m(2 + j) = sig(j) * (plan%pb(1, un) - px(1, j))
+              else
+                m(j) = sig(j) * cross(plan%pb(:, un) - px(:, j), plan%nb(:, un))
+                m(2 + j) = sig(j)
+              end if
+              rhs(j) = -mx
+            else
+              ! the forces along the outer guide
+              u = plan%dv(:, j, un)
+              if (pin%kind == pair_r) then
+                m(j) = sig(j) * u(1)
+                m(2 + j) = sig(j) * u(2)
+              else
+                m(j) = sig(j) * dot_product(u, plan%nb(:, un))
+                m(2 + j) = 0.0_wp
+              end if
+              rhs(j) = -dot_product(u, load(1:2, lk))
+            end if
+          end associate
+        end do
+        det = m(1) * m(4) - m(3) * m(2)
+        if (.not. abs(det) > small_screen * (abs(m(1)) + abs(m(3))) * (abs(m(2)) + abs(m(4)))) return
+        x = solve2(m, det, rhs)
+        k = plan%pair(3, un)
+        ! (the force on link j is sig(j) times the unknowns': on the pair's link a, x itself)
+        if (pin%kind == pair_r) then
+          f(:, k) = x
+          normal(k) = 0.0_wp
+          couple(k) = 0.0_wp
+          fin = x
+          cin = 0.0_wp
+        else
+          normal(k) = x(1)
+          couple(k) = x(2)
+          f(:, k) = normal(k) * plan%nb(:, un)
+          fin = x(1) * plan%nb(:, un)
+          cin = x(2)
+        end if
+        ! the inner pair's reaction on each link (sig(j) times fin, cin at pb), then each
+        ! outer pair's unknowns from that link's equations
+        do j = 1, 2
+          lk = plan%link(j, un)
+          call add_load(q, load, lk, plan%pb(:, un), sig(j) * fin, sig(j) * cin)
+          kn = plan%known(j, un)
+          k = plan%pair(j, un)
+          associate (po => mech%pairs(k))
+            xo = px(:, j)
+            if (po%kind == pair_r) then
+              fo = -load(1:2, lk)
+              co = 0.0_wp
+              f(:, k) = merge(fo, -fo, lk == po%a)
+              normal(k) = 0.0_wp
+              couple(k) = 0.0_wp
+            else
+              n = perp(plan%dv(:, j, un))
+              normal(k) = -dot_product(n, load(1:2, lk))
+              co = -moment_about(q, load, lk, xo)
+              fo = normal(k) * n
+              couple(k) = co
+              if (lk /= po%a) then
+                normal(k) = -normal(k)
+                couple(k) = -couple(k)
+              end if
+              f(:, k) = normal(k) * n
+            end if
+            call add_load(q, load, kn, xo, -fo, -co)
+          end associate
+        end do
+      end associate
+    end do
+    ok = .true.
+  end subroutine dyad_reactions
+
+  !> The moment of link i's loads (load: force, moment about its reference point) about x.
+  pure real(wp) function moment_about(q, load, i, x)
+    real(wp), intent(in) :: q(:), load(:, :), x(2)
+    integer, intent(in) :: i
+    moment_about = load(3, i) + cross(q(3 * i - 2:3 * i - 1) - x, load(1:2, i))
+  end function moment_about
+
+  !> Force fo at point x and couple co added to link i's loads (nothing for the frame).
+  pure subroutine add_load(q, load, i, x, fo, co)
+    real(wp), intent(in) :: q(:), x(2), fo(2), co
+    real(wp), intent(inout) :: load(:, :)
+    integer, intent(in) :: i
+    if (i == 0) return
+    load(1:2, i) = load(1:2, i) + fo
+    load(3, i) = load(3, i) + cross(x - q(3 * i - 2:3 * i - 1), fo) + co
+  end subroutine add_load
 
   !> [m(1) m(3); m(2) m(4)] t = rhs by Cramer's rule with the determinant det.
   pure function solve2(m, det, rhs) result(t)
