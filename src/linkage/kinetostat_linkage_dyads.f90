@@ -362,7 +362,8 @@ contains
             normal(k) = 0.0_wp
             couple(k) = 0.0_wp
             effort(d) = merge(co, -co, lk == pr%a)
-            call add_load(q, load, kn, xo, -fo, -co)
+            ! (each link's own coordinates of the joint, as the self-check takes them)
+            call add_load(q, load, kn, position_cs(mech, q, cs, kn, pr%at), -fo, -co)
           else
             xo = position_cs(mech, q, cs, pr%a + pr%b - pr%guide, pr%at)
             u = turned(cs, pr%guide, pr%u)
@@ -439,7 +440,12 @@ contains
         ! outer pair's unknowns from that link's equations
         do j = 1, 2
           lk = plan%link(j, un)
-          call add_load(q, load, lk, plan%pb(:, un), sig(j) * fin, sig(j) * cin)
+          if (j == 2 .and. pin%kind == pair_r) then
+            ! (each link's own coordinates of the joint, as the self-check takes them)
+            call add_load(q, load, lk, position_cs(mech, q, cs, lk, pin%at), sig(j) * fin, sig(j) * cin)
+          else
+            call add_load(q, load, lk, plan%pb(:, un), sig(j) * fin, sig(j) * cin)
+          end if
           kn = plan%known(j, un)
           k = plan%pair(j, un)
           associate (po => mech%pairs(k))
@@ -450,6 +456,7 @@ contains
               f(:, k) = merge(fo, -fo, lk == po%a)
               normal(k) = 0.0_wp
               couple(k) = 0.0_wp
+              xo = position_cs(mech, q, cs, kn, po%at)
             else
               n = perp(plan%dv(:, j, un))
               normal(k) = -dot_product(n, load(1:2, lk))
