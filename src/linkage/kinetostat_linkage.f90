@@ -364,7 +364,7 @@ contains
     integer :: d, n3
     ok = .true.
     if (work%has_fast) then
-      if (all(work%q_fast == q)) return
+      if (same_poses(work%q_fast, q)) return
     end if
     work%has_fast = .false.
     n3 = size(q)
@@ -634,12 +634,24 @@ contains
     work%factored = .true.
   end subroutine work_factored
 
+  !> The poses a and b are the same numbers (a loop that stops at the first difference: the
+  !> workspace's checks, several a step).
+  pure logical function same_poses(a, b)
+    real(wp), intent(in) :: a(:), b(:)
+    integer :: i
+    same_poses = .false.
+    do i = 1, size(b)
+      if (a(i) /= b(i)) return
+    end do
+    same_poses = .true.
+  end function same_poses
+
   !> work%cs: the turns of poses q (set_turns), unless it holds them.
   pure subroutine work_turns(work, q)
     type(linkage_work_t), intent(inout) :: work
     real(wp), intent(in) :: q(:)
     if (work%has_cs) then
-      if (all(work%q_cs == q)) return
+      if (same_poses(work%q_cs, q)) return
     end if
     call set_turns(q, work%cs)
     work%q_cs(:) = q
@@ -940,7 +952,7 @@ contains
     n = size(mech%links)
     call work_ready(mech, work)
     fast = use_fast(work) .and. work%has_fast
-    if (fast) fast = all(work%q_fast == step%q)
+    if (fast) fast = same_poses(work%q_fast, step%q)
     if (.not. fast) then
       call work_factored(mech, step%q, work, error)
       if (allocated(error)) return
