@@ -1048,10 +1048,22 @@ contains
           ! (fk: a copy of fixed size, so that -fk takes no temporary array from the heap)
           fk = step%f(:, k)
           f_length = fast_magnitude(fk)
-          call add_on(work%bal, pr%a, position_cs(mech, step%q, work%cs, pr%a, pr%at), fk, 0.0_wp, f_length)
-          call add_on(work%bal, pr%b, position_cs(mech, step%q, work%cs, pr%b, pr%at), -fk, 0.0_wp, f_length)
+          if (fast) then
+            ! (the points the fast path took at these poses)
+            s = work%plan%xa(:, k)
+            vs = work%plan%xb(:, k)
+          else
+            s = position_cs(mech, step%q, work%cs, pr%a, pr%at)
+            vs = position_cs(mech, step%q, work%cs, pr%b, pr%at)
+          end if
+          call add_on(work%bal, pr%a, s, fk, 0.0_wp, f_length)
+          call add_on(work%bal, pr%b, vs, -fk, 0.0_wp, f_length)
         else
-          s = position_cs(mech, step%q, work%cs, pr%a + pr%b - pr%guide, pr%at)
+          if (fast) then
+            s = work%plan%xa(:, k)
+          else
+            s = position_cs(mech, step%q, work%cs, pr%a + pr%b - pr%guide, pr%at)
+          end if
           fk = step%f(:, k)
           f_length = fast_magnitude(fk)
           call add_on(work%bal, pr%a, s, fk, step%couple(k), f_length)

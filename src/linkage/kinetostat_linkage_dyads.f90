@@ -57,6 +57,9 @@ module kinetostat_linkage_dyads
     !> omega per t: 2) and the inner pair's point (turning: the joint; sliding: the block's
     !> point) and the guide's normal (sliding).
     real(wp), allocatable :: px(:, :, :), dv(:, :, :), dw(:, :), pb(:, :), nb(:, :)
+    !> Each pair's point on its link a and on its link b at the last poses (a sliding pair:
+    !> the block's point for both), m (2 x pairs).
+    real(wp), allocatable :: xa(:, :), xb(:, :)
   end type dyad_plan_t
 
 contains
@@ -72,7 +75,7 @@ contains
     np = size(mech%pairs)
     allocate (plan%kind(nu), plan%link(2, nu), plan%pair(3, nu), plan%known(2, nu), source=0)
     allocate (plan%m(4, nu), plan%det(nu), plan%dw(2, nu), plan%pb(2, nu), plan%nb(2, nu), source=0.0_wp)
-    allocate (plan%px(2, 2, nu), plan%dv(2, 2, nu), source=0.0_wp)
+    allocate (plan%px(2, 2, nu), plan%dv(2, 2, nu), plan%xa(2, np), plan%xb(2, np), source=0.0_wp)
     do u = 1, nu
       nk = 0
       d = 0
@@ -125,6 +128,20 @@ contains
     plan%ok = .true.
   end subroutine plan_dyads
 
+  !> Pair k's point on link lk (one of its links; a sliding pair: the block's point) at the
+  !> poses of the last dyad_velocities.
+  pure function joint_of(mech, plan, k, lk) result(x)
+    type(linkage_t), intent(in) :: mech
+    type(dyad_plan_t), intent(in) :: plan
+    integer, intent(in) :: k, lk
+    real(wp) :: x(2)
+    if (lk == mech%pairs(k)%a) then
+      x = plan%xa(:, k)
+    else
+      x = plan%xb(:, k)
+    end if
+  end function joint_of
+
   !> Velocity of link i's point x (0: the frame) from the velocities qd.
   pure function point_velocity(q, qd, i, x) result(v)
     real(wp), intent(in) :: q(:), qd(:), x(2)
@@ -167,17 +184,29 @@ contains
     integer :: un, j, lk, kn, k
     qd = 0.0_wp
     ok = .false.
+    ! each pair's points, once for the poses (dyad_accelerations and dyad_reactions take them)
+    do k = 1, size(mech%pairs)
+      associate (pr => mech%pairs(k))
+        if (pr%kind == pair_r) then
+          plan%xa(:, k) = position_cs(mech, q, cs, pr%a, pr%at)
+          plan%xb(:, k) = position_cs(mech, q, cs, pr%b, pr%at)
+        else
+          plan%xa(:, k) = position_cs(mech, q, cs, pr%a + pr%b - pr%guide, pr%at)
+          plan%xb(:, k) = plan%xa(:, k)
+        end if
+      end associate
+    end do
     do un = 1, size(plan%kind)
       if (plan%kind(un) == unit_input) then
         lk = plan%link(1, un)
         kn = plan%link(2, un)
         associate (pr => mech%pairs(plan%pair(1, un)))
           if (pr%kind == pair_r) then
-            x = position_cs(mech, q, cs, lk, pr%at)
+            x = joint_of(mech, plan, plan%pair(1, un), lk)
             w = rate_of(qd, kn) + merge(rate(plan%pair(2, un)), -rate(plan%pair(2, un)), lk == pr%a)
             vp = point_velocity(q, qd, kn, x)
           else
-            x = position_cs(mech, q, cs, pr%a + pr%b - pr%guide, pr%at)
+            x = joint_of(mech, plan, plan%pair(1, un), pr%a + pr%b - pr%guide)
             u = turned(cs, pr%guide, pr%u)
             w = rate_of(qd, kn)
             vp = point_velocity(q, qd, kn, x) + merge(-u, u, lk == pr%guide) * rate(plan%pair(2, un))
@@ -192,13 +221,13 @@ contains
         kn = plan%known(j, un)
         associate (pr => mech%pairs(plan%pair(j, un)))
           if (pr%kind == pair_r) then
-            x = position_cs(mech, q, cs, lk, pr%at)
+            x = joint_of(mech, plan, plan%pair(j, un), lk)
             b(:, j) = point_velocity(q, qd, kn, x)
             beta(j) = 0.0_wp
             plan%dv(:, j, un) = 0.0_wp
             plan%dw(j, un) = 1.0_wp
           else
-            x = position_cs(mech, q, cs, pr%a + pr%b - pr%guide, pr%at)
+            x = joint_of(mech, plan, plan%pair(j, un), pr%a + pr%b - pr%guide)
             b(:, j) = point_velocity(q, qd, kn, x)
             beta(j) = rate_of(qd, kn)
             plan%dv(:, j, un) = turned(cs, pr%guide, pr%u)
@@ -210,14 +239,14 @@ contains
       associate (pin => mech%pairs(plan%pair(3, un)), px => plan%px(:, :, un), dvj => plan%dv(:, :, un), &
                  dwj => plan%dw(:, un), m => plan%m(:, un))
         if (pin%kind == pair_r) then
-          x = position_cs(mech, q, cs, plan%link(1, un), pin%at)
+          x = joint_of(mech, plan, plan%pair(3, un), plan%link(1, un))
           plan%pb(:, un) = x
           c1 = dvj(:, 1) + dwj(1) * perp(x - px(:, 1))
           c2 = dvj(:, 2) + dwj(2) * perp(x - px(:, 2))
           m = [c1(1), c1(2), -c2(1), -c2(2)]
           rhs = b(:, 2) + beta(2) * perp(x - px(:, 2)) - b(:, 1) - beta(1) * perp(x - px(:, 1))
         else
-          x = position_cs(mech, q, cs, pin%a + pin%b - pin%guide, pin%at)
+          x = joint_of(mech, plan, plan%pair(3, un), pin%a + pin%b - pin%guide)
           plan%pb(:, un) = x
           plan%nb(:, un) = perp(turned(cs, pin%guide, pin%u))
           c1 = dvj(:, 1) + dwj(1) * perp(x - px(:, 1))
@@ -265,11 +294,11 @@ contains
         kn = plan%link(2, un)
         associate (pr => mech%pairs(plan%pair(1, un)))
           if (pr%kind == pair_r) then
-            x = position_cs(mech, q, cs, lk, pr%at)
+            x = joint_of(mech, plan, plan%pair(1, un), lk)
             al = rate_of(qdd, kn) + merge(acc(plan%pair(2, un)), -acc(plan%pair(2, un)), lk == pr%a)
             ap = point_acceleration(q, qd, qdd, kn, x)
           else
-            x = position_cs(mech, q, cs, pr%a + pr%b - pr%guide, pr%at)
+            x = joint_of(mech, plan, plan%pair(1, un), pr%a + pr%b - pr%guide)
             u = turned(cs, pr%guide, pr%u)
             al = rate_of(qdd, kn)
             ap = point_acceleration(q, qd, qdd, kn, x) + 2.0_wp * rate_of(qd, kn) * &
@@ -354,7 +383,7 @@ contains
         d = plan%pair(2, un)
         associate (pr => mech%pairs(k))
           if (pr%kind == pair_r) then
-            xo = position_cs(mech, q, cs, lk, pr%at)
+            xo = joint_of(mech, plan, k, lk)
             fo = -load(1:2, lk)
             co = -moment_about(q, load, lk, xo)
             ! on a: the force and the drive's moment
@@ -363,9 +392,9 @@ contains
             couple(k) = 0.0_wp
             effort(d) = merge(co, -co, lk == pr%a)
             ! (each link's own coordinates of the joint, as the self-check takes them)
-            call add_load(q, load, kn, position_cs(mech, q, cs, kn, pr%at), -fo, -co)
+            call add_load(q, load, kn, joint_of(mech, plan, k, kn), -fo, -co)
           else
-            xo = position_cs(mech, q, cs, pr%a + pr%b - pr%guide, pr%at)
+            xo = joint_of(mech, plan, k, pr%a + pr%b - pr%guide)
             u = turned(cs, pr%guide, pr%u)
             n = perp(u)
             ! on lk: normal force along n, effort along u, couple
@@ -442,7 +471,7 @@ contains
           lk = plan%link(j, un)
           if (j == 2 .and. pin%kind == pair_r) then
             ! (each link's own coordinates of the joint, as the self-check takes them)
-            call add_load(q, load, lk, position_cs(mech, q, cs, lk, pin%at), sig(j) * fin, sig(j) * cin)
+            call add_load(q, load, lk, joint_of(mech, plan, plan%pair(3, un), lk), sig(j) * fin, sig(j) * cin)
           else
             call add_load(q, load, lk, plan%pb(:, un), sig(j) * fin, sig(j) * cin)
           end if
@@ -456,7 +485,7 @@ contains
               f(:, k) = merge(fo, -fo, lk == po%a)
               normal(k) = 0.0_wp
               couple(k) = 0.0_wp
-              xo = position_cs(mech, q, cs, kn, po%at)
+              xo = joint_of(mech, plan, k, kn)
             else
               n = perp(plan%dv(:, j, un))
               normal(k) = -dot_product(n, load(1:2, lk))
