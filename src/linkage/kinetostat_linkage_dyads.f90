@@ -27,7 +27,7 @@ module kinetostat_linkage_dyads
   use kinetostat_kinds, only: wp
   use kinetostat_vec2, only: perp, cross
   use kinetostat_linkage_types, only: linkage_t, pair_r, pair_p
-  use kinetostat_linkage_closed, only: turned, position_cs
+  use kinetostat_linkage_closed, only: turned, position_cs, unit_pairs
   use kinetostat_linkage_small, only: small_screen
   implicit none
   private
@@ -68,7 +68,7 @@ contains
   pure subroutine plan_dyads(mech, plan)
     type(linkage_t), intent(in) :: mech
     type(dyad_plan_t), intent(out) :: plan
-    integer :: u, nu, i, r, np, nk, d, kp(3), j, inner, e(2)
+    integer :: u, nu, i, np, nk, d, kp(3), j, inner, e(2)
     plan%ok = .false.
     if (.not. allocated(mech%units)) return
     nu = size(mech%units)
@@ -77,18 +77,8 @@ contains
     allocate (plan%m(4, nu), plan%det(nu), plan%dw(2, nu), plan%pb(2, nu), plan%nb(2, nu), source=0.0_wp)
     allocate (plan%px(2, 2, nu), plan%dv(2, 2, nu), plan%xa(2, np), plan%xb(2, np), source=0.0_wp)
     do u = 1, nu
-      nk = 0
-      d = 0
-      do i = 1, size(mech%units(u)%rows)
-        r = mech%units(u)%rows(i)
-        if (r > 2 * np) then
-          d = r - 2 * np
-        else if (mod(r, 2) == 1) then
-          if (nk == 3) return
-          nk = nk + 1
-          kp(nk) = (r + 1) / 2
-        end if
-      end do
+      call unit_pairs(mech, u, kp, nk, d)
+      if (nk > 3) return
       if (mech%units(u)%class == 1) then
         if (size(mech%units(u)%links) /= 1 .or. nk /= 1 .or. d == 0) return
         if (mech%drives(d)%pair /= kp(1)) return
@@ -142,6 +132,32 @@ contains
     end if
   end function joint_of
 
+  !> Input unit un: its link lk, known link kn, the drive's pair's point x (a turning pair's
+  !> joint on lk; a sliding pair's block point), the guide u (sliding), and the sign sgn of
+  !> the drive's rate in lk's motion relative to kn (turning: +1 where lk is the pair's link a;
+  !> sliding: +1 where lk is the block).
+  pure subroutine input_unit(mech, plan, cs, un, lk, kn, x, u, sgn)
+    type(linkage_t), intent(in) :: mech
+    type(dyad_plan_t), intent(in) :: plan
+    real(wp), intent(in) :: cs(:, 0:)
+    integer, intent(in) :: un
+    integer, intent(out) :: lk, kn
+    real(wp), intent(out) :: x(2), u(2), sgn
+    lk = plan%link(1, un)
+    kn = plan%link(2, un)
+    associate (pr => mech%pairs(plan%pair(1, un)))
+      u = 0.0_wp
+      if (pr%kind == pair_r) then
+        x = joint_of(mech, plan, plan%pair(1, un), lk)
+        sgn = merge(1.0_wp, -1.0_wp, lk == pr%a)
+      else
+        x = joint_of(mech, plan, plan%pair(1, un), pr%a + pr%b - pr%guide)
+        u = turned(cs, pr%guide, pr%u)
+        sgn = merge(-1.0_wp, 1.0_wp, lk == pr%guide)
+      end if
+    end associate
+  end subroutine input_unit
+
   !> Velocity of link i's point x (0: the frame) from the velocities qd.
   pure function point_velocity(q, qd, i, x) result(v)
     real(wp), intent(in) :: q(:), qd(:), x(2)
@@ -180,7 +196,7 @@ contains
     real(wp), intent(in) :: q(:), cs(:, 0:), rate(:)
     real(wp), intent(out) :: qd(:)
     logical, intent(out) :: ok
-    real(wp) :: x(2), u(2), w, vp(2), b(2, 2), beta(2), rhs(2), t(2), c1(2), c2(2), scale
+    real(wp) :: x(2), u(2), w, vp(2), b(2, 2), beta(2), rhs(2), t(2), c1(2), c2(2), scale, sgn
     integer :: un, j, lk, kn, k
     qd = 0.0_wp
     ok = .false.
@@ -198,20 +214,14 @@ contains
     end do
     do un = 1, size(plan%kind)
       if (plan%kind(un) == unit_input) then
-        lk = plan%link(1, un)
-        kn = plan%link(2, un)
-        associate (pr => mech%pairs(plan%pair(1, un)))
-          if (pr%kind == pair_r) then
-            x = joint_of(mech, plan, plan%pair(1, un), lk)
-            w = rate_of(qd, kn) + merge(rate(plan%pair(2, un)), -rate(plan%pair(2, un)), lk == pr%a)
-            vp = point_velocity(q, qd, kn, x)
-          else
-            x = joint_of(mech, plan, plan%pair(1, un), pr%a + pr%b - pr%guide)
-            u = turned(cs, pr%guide, pr%u)
-            w = rate_of(qd, kn)
-            vp = point_velocity(q, qd, kn, x) + merge(-u, u, lk == pr%guide) * rate(plan%pair(2, un))
-          end if
-        end associate
+        call input_unit(mech, plan, cs, un, lk, kn, x, u, sgn)
+        if (mech%pairs(plan%pair(1, un))%kind == pair_r) then
+          w = rate_of(qd, kn) + sgn * rate(plan%pair(2, un))
+          vp = point_velocity(q, qd, kn, x)
+        else
+          w = rate_of(qd, kn)
+          vp = point_velocity(q, qd, kn, x) + (sgn * rate(plan%pair(2, un))) * u
+        end if
         call put_velocity(qd, lk, x, vp, w)
         cycle
       end if
@@ -285,27 +295,20 @@ contains
     type(dyad_plan_t), intent(in) :: plan
     real(wp), intent(in) :: q(:), cs(:, 0:), qd(:), acc(:)
     real(wp), intent(out) :: qdd(:)
-    real(wp) :: x(2), u(2), al, ap(2), b(2, 2), beta(2), rhs(2), t(2), r1(2), r2(2), w1, w2, wg
+    real(wp) :: x(2), u(2), al, ap(2), b(2, 2), beta(2), rhs(2), t(2), r1(2), r2(2), w1, w2, wg, sgn
     integer :: un, j, lk, kn
     qdd = 0.0_wp
     do un = 1, size(plan%kind)
       if (plan%kind(un) == unit_input) then
-        lk = plan%link(1, un)
-        kn = plan%link(2, un)
-        associate (pr => mech%pairs(plan%pair(1, un)))
-          if (pr%kind == pair_r) then
-            x = joint_of(mech, plan, plan%pair(1, un), lk)
-            al = rate_of(qdd, kn) + merge(acc(plan%pair(2, un)), -acc(plan%pair(2, un)), lk == pr%a)
-            ap = point_acceleration(q, qd, qdd, kn, x)
-          else
-            x = joint_of(mech, plan, plan%pair(1, un), pr%a + pr%b - pr%guide)
-            u = turned(cs, pr%guide, pr%u)
-            al = rate_of(qdd, kn)
-            ap = point_acceleration(q, qd, qdd, kn, x) + 2.0_wp * rate_of(qd, kn) * &
-                 perp(point_velocity(q, qd, lk, x) - point_velocity(q, qd, kn, x)) + &
-                 merge(-u, u, lk == pr%guide) * acc(plan%pair(2, un))
-          end if
-        end associate
+        call input_unit(mech, plan, cs, un, lk, kn, x, u, sgn)
+        if (mech%pairs(plan%pair(1, un))%kind == pair_r) then
+          al = rate_of(qdd, kn) + sgn * acc(plan%pair(2, un))
+          ap = point_acceleration(q, qd, qdd, kn, x)
+        else
+          al = rate_of(qdd, kn)
+          ap = point_acceleration(q, qd, qdd, kn, x) + 2.0_wp * rate_of(qd, kn) * &
+               perp(point_velocity(q, qd, lk, x) - point_velocity(q, qd, kn, x)) + (sgn * acc(plan%pair(2, un))) * u
+        end if
         call put_acceleration(qdd, lk, x, ap, al)
         cycle
       end if
