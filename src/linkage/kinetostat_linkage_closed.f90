@@ -10,7 +10,7 @@ module kinetostat_linkage_closed
   use kinetostat_linkage_types, only: linkage_t, pair_r
   implicit none
   private
-  public :: place_units, dyad_arms, point_position, turn_of, turned, position_cs, unit_pairs
+  public :: place_units, dyad_arms, point_position, turn_of, turned, position_cs, unit_pairs, dyad_pairs
   public :: circle_circle, circle_line, line_line, turn_through, turn_between, unwrap
 
   !> Two lines are taken as parallel (no closed form; Newton's method decides) when the sine

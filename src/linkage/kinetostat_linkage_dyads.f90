@@ -27,7 +27,7 @@ module kinetostat_linkage_dyads
   use kinetostat_kinds, only: wp
   use kinetostat_vec2, only: perp, cross
   use kinetostat_linkage_types, only: linkage_t, pair_r, pair_p
-  use kinetostat_linkage_closed, only: turned, position_cs, unit_pairs
+  use kinetostat_linkage_closed, only: turned, position_cs, unit_pairs, dyad_pairs
   use kinetostat_linkage_small, only: small_screen
   implicit none
   private
@@ -68,7 +68,7 @@ contains
   pure subroutine plan_dyads(mech, plan)
     type(linkage_t), intent(in) :: mech
     type(dyad_plan_t), intent(out) :: plan
-    integer :: u, nu, i, np, nk, d, kp(3), j, inner, e(2)
+    integer :: u, nu, np, nk, d, kp(3), j, inner, e(2)
     plan%ok = .false.
     if (.not. allocated(mech%units)) return
     nu = size(mech%units)
@@ -89,20 +89,7 @@ contains
       else if (mech%units(u)%class == 2) then
         if (size(mech%units(u)%links) /= 2 .or. nk /= 3 .or. d /= 0) return
         associate (set => mech%units(u)%links)
-          inner = 0
-          e = 0
-          do i = 1, 3
-            associate (pr => mech%pairs(kp(i)))
-              if (any(set == pr%a) .and. any(set == pr%b)) then
-                if (inner /= 0) return
-                inner = kp(i)
-              else
-                j = merge(1, 2, pr%a == set(1) .or. pr%b == set(1))
-                if (e(j) /= 0) return
-                e(j) = kp(i)
-              end if
-            end associate
-          end do
+          call dyad_pairs(mech, set, kp, inner, e)
           if (inner == 0 .or. any(e == 0)) return
           plan%kind(u) = unit_dyad
           plan%link(:, u) = set
