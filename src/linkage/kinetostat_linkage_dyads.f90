@@ -27,7 +27,7 @@ module kinetostat_linkage_dyads
   use kinetostat_kinds, only: wp
   use kinetostat_vec2, only: perp, cross
   use kinetostat_linkage_types, only: linkage_t, pair_r, pair_p
-  use kinetostat_linkage_closed, only: turned, position_cs, unit_pairs, dyad_pairs
+  use kinetostat_linkage_closed, only: turned, position_cs, unit_pairs, dyad_pairs, turn_of
   use kinetostat_linkage_small, only: small_screen
   implicit none
   private
@@ -166,14 +166,6 @@ contains
     a = qdd(3 * i - 2:3 * i - 1) + qdd(3 * i) * perp(r) - qd(3 * i)**2 * r
   end function point_acceleration
 
-  !> Angular rate (or acceleration) of link i (0 for the frame) in qd.
-  pure real(wp) function rate_of(qd, i)
-    real(wp), intent(in) :: qd(:)
-    integer, intent(in) :: i
-    rate_of = 0.0_wp
-    if (i > 0) rate_of = qd(3 * i)
-  end function rate_of
-
   !> The velocities qd of poses q (turns cs) for the drives' rates `rate`, unit by unit; the
   !> dyads' 2 x 2 systems into the plan (for dyad_accelerations). ok false where a dyad's
   !> determinant is not clear of zero.
@@ -203,10 +195,10 @@ contains
       if (plan%kind(un) == unit_input) then
         call input_unit(mech, plan, cs, un, lk, kn, x, u, sgn)
         if (mech%pairs(plan%pair(1, un))%kind == pair_r) then
-          w = rate_of(qd, kn) + sgn * rate(plan%pair(2, un))
+          w = turn_of(qd, kn) + sgn * rate(plan%pair(2, un))
           vp = point_velocity(q, qd, kn, x)
         else
-          w = rate_of(qd, kn)
+          w = turn_of(qd, kn)
           vp = point_velocity(q, qd, kn, x) + (sgn * rate(plan%pair(2, un))) * u
         end if
         call put_velocity(qd, lk, x, vp, w)
@@ -226,7 +218,7 @@ contains
           else
             x = joint_of(mech, plan, plan%pair(j, un), pr%a + pr%b - pr%guide)
             b(:, j) = point_velocity(q, qd, kn, x)
-            beta(j) = rate_of(qd, kn)
+            beta(j) = turn_of(qd, kn)
             plan%dv(:, j, un) = turned(cs, pr%guide, pr%u)
             plan%dw(j, un) = 0.0_wp
           end if
@@ -289,11 +281,11 @@ contains
       if (plan%kind(un) == unit_input) then
         call input_unit(mech, plan, cs, un, lk, kn, x, u, sgn)
         if (mech%pairs(plan%pair(1, un))%kind == pair_r) then
-          al = rate_of(qdd, kn) + sgn * acc(plan%pair(2, un))
+          al = turn_of(qdd, kn) + sgn * acc(plan%pair(2, un))
           ap = point_acceleration(q, qd, qdd, kn, x)
         else
-          al = rate_of(qdd, kn)
-          ap = point_acceleration(q, qd, qdd, kn, x) + 2.0_wp * rate_of(qd, kn) * &
+          al = turn_of(qdd, kn)
+          ap = point_acceleration(q, qd, qdd, kn, x) + 2.0_wp * turn_of(qd, kn) * &
                perp(point_velocity(q, qd, lk, x) - point_velocity(q, qd, kn, x)) + (sgn * acc(plan%pair(2, un))) * u
         end if
         call put_acceleration(qdd, lk, x, ap, al)
@@ -308,13 +300,13 @@ contains
             beta(j) = 0.0_wp
           else
             ! along the outer guide: Coriolis' term of the sliding
-            beta(j) = rate_of(qdd, kn)
-            b(:, j) = b(:, j) + 2.0_wp * rate_of(qd, kn) * &
+            beta(j) = turn_of(qdd, kn)
+            b(:, j) = b(:, j) + 2.0_wp * turn_of(qd, kn) * &
                       perp(point_velocity(q, qd, lk, px(:, j)) - point_velocity(q, qd, kn, px(:, j)))
           end if
         end do
-        w1 = rate_of(qd, plan%link(1, un))
-        w2 = rate_of(qd, plan%link(2, un))
+        w1 = turn_of(qd, plan%link(1, un))
+        w2 = turn_of(qd, plan%link(2, un))
         x = plan%pb(:, un)
         r1 = x - px(:, 1)
         r2 = x - px(:, 2)
@@ -322,7 +314,7 @@ contains
           if (pin%kind == pair_r) then
             rhs = b(:, 2) + beta(2) * perp(r2) - w2**2 * r2 - b(:, 1) - beta(1) * perp(r1) + w1**2 * r1
           else
-            wg = rate_of(qd, pin%guide)
+            wg = turn_of(qd, pin%guide)
             rhs(1) = beta(2) - beta(1)
             rhs(2) = dot_product(plan%nb(:, un), b(:, 2) + beta(2) * perp(r2) - w2**2 * r2 - b(:, 1) - &
                                  beta(1) * perp(r1) + w1**2 * r1 + 2.0_wp * wg * &
