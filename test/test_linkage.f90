@@ -378,10 +378,14 @@ contains
   !> whose units all have closed forms and of four decks with the other dyad kinds (RPR,
   !> PRP, RPP, and RRP with its guide on the crank), then over 40 random drive values within the run's range: every pose within
   !> 1e-12 of the linkage's size (so the same branch throughout), and the closed forms in use.
-  !> On every step of every deck the two formulations agree: the group method's reactions
-  !> within 1e-9 of the step's largest reaction of the Lagrange multipliers' (by the closed
-  !> forms and by LU), every link's equilibrium residual of the latter <= 1e-12 (the PRP
-  !> and RRP decks' cranks, loaded by a sliding pair of the dyad, once differed by 0.81 and
+  !> Both assembly branches: the four-bar crossed and the slider-crank with its slider on
+  !> the other side. At every step the fast path (velocities, accelerations and the reactions
+  !> from the points and the dyads' closed forms, no J: every unit of every step) against the
+  !> general solve (J by LU, the Lagrange multipliers): within 1e-12 of the step's largest
+  !> value. On every step of every deck the two formulations agree: the group method's
+  !> reactions within 1e-9 of the step's largest reaction of the Lagrange multipliers' (by
+  !> the closed forms and by LU), every link's equilibrium residual <= 1e-12 (the PRP and
+  !> RRP decks' cranks, loaded by a sliding pair of the dyad, once differed by 0.81 and
   !> 0.33).
   subroutine test_closed_forms(t)
     type(test_counts_t), intent(inout) :: t
@@ -447,6 +451,31 @@ contains
       "pair(3)%name = 'C', pair(3)%kind = 'R', pair(3)%links = 2, 3, pair(3)%at = 0.1, 0 "// &
       "pair(4)%name = 'D', pair(4)%kind = 'R', pair(4)%links = 3, 0, pair(4)%at = 0.2, 0.1 "// &
       "drive(1)%pair = 'A', drive(1)%start = 0, drive(1)%step = 1.5, drive(1)%omega = 10")
+    ! the other assembly branches: the four-bar with C mirrored across B-D (crossed), the
+    ! slider-crank with its slider on the other side of the crank's pivot
+    call from_text("fourbar-other-branch", "link(1)%id = 1, link(1)%m = 0.5, link(1)%j = 0.002, "// &
+      "link(1)%s = 0.038302222155948904, 0.032139380484326963 "// &
+      "link(2)%id = 2, link(2)%m = 1.0, link(2)%j = 0.0102, link(2)%s = 0.15994577290272566, -0.08960178669321153 "// &
+      "link(3)%id = 3, link(3)%m = 0.8, link(3)%j = 0.0042, link(3)%s = 0.2716435507467767, -0.1217411671775385 "// &
+      "pair(1)%name = 'B', pair(1)%kind = 'R', pair(1)%links = 2, 1, pair(1)%at = 0.076604444311897807, "// &
+      "0.064278760968653925 "// &
+      "pair(2)%name = 'C', pair(2)%kind = 'R', pair(2)%links = 2, 3, pair(2)%at = 0.24328710149355348, "// &
+      "-0.243482334355077 "// &
+      "pair(3)%name = 'D', pair(3)%kind = 'R', pair(3)%links = 3, 0, pair(3)%at = 0.3, 0 "// &
+      "pair(4)%name = 'A', pair(4)%kind = 'R', pair(4)%links = 1, 0, pair(4)%at = 0, 0 "// &
+      "drive(1)%pair = 'A', drive(1)%start = 0, drive(1)%step = 10, drive(1)%omega = 20 "// &
+      "force(1)%link = 2, force(1)%at = 0.2, -0.1, force(1)%angle = 30, force(1)%follow = .true., "// &
+      "force(1)%value = 50 moment(1)%link = 3, moment(1)%value = -20")
+    call from_text("slider-crank-other-branch", "link(1)%id = 1, link(1)%m = 2.0, link(1)%j = 0.01, link(1)%s = 0, 0 "// &
+      "link(2)%id = 2, link(2)%m = 1.5, link(2)%j = 0.02, link(2)%s = -0.07471405209656148, 0.01 "// &
+      "link(3)%id = 3, link(3)%m = 3.0, link(3)%j = 0, link(3)%s = -0.24942810419312297, 0.02 "// &
+      "pair(1)%name = 'B', pair(1)%kind = 'R', pair(1)%links = 2, 1, pair(1)%at = 0.1, 0 "// &
+      "pair(2)%name = 'C', pair(2)%kind = 'R', pair(2)%links = 2, 3, pair(2)%at = -0.24942810419312297, 0.02 "// &
+      "pair(3)%name = 'D', pair(3)%kind = 'P', pair(3)%links = 3, 0, pair(3)%at = -0.24942810419312297, 0.02, "// &
+      "pair(3)%angle = 0, pair(3)%guide = 0 "// &
+      "pair(4)%name = 'A', pair(4)%kind = 'R', pair(4)%links = 1, 0, pair(4)%at = 0, 0 "// &
+      "drive(1)%pair = 'A', drive(1)%start = 0, drive(1)%step = 10, drive(1)%omega = 50 "// &
+      "force(1)%link = 3, force(1)%at = -0.24942810419312297, 0.02, force(1)%angle = 0, force(1)%value = 500")
   contains
     subroutine from_text(name, body)
       character(*), intent(in) :: name, body
@@ -519,8 +548,8 @@ contains
         int_str(small)//" unit solves in closed form, expected every unit of every step: "// &
         int_str(nsteps * size(deck%mech%units)))
       call check_true(t, "linkage-closed-solves-"//name, max(worst_v, worst_a, worst_lam, worst_fb) <= 1.0e-12_wp, &
-        "closed forms against the general J solve, largest difference relative to the step's largest: velocities "// &
-        real_str(worst_v)//", accelerations "//real_str(worst_a)//", multipliers' reactions "//real_str(worst_lam)// &
+        "the fast path against the general J solve, largest difference relative to the step's largest: velocities "// &
+        real_str(worst_v)//", accelerations "//real_str(worst_a)//", reactions "//real_str(worst_lam)// &
         ", group method's "//real_str(worst_fb)//" (limit 1e-12)")
       call check_true(t, "linkage-two-formulations-"//name, worst_gap <= 1.0e-9_wp .and. worst_res <= 1.0e-12_wp, &
         "over "//int_str(nsteps)//" steps: the group method against the Lagrange multipliers, largest gap / "// &
@@ -558,7 +587,12 @@ contains
         worst_v = huge(1.0_wp)
         return
       end if
-      small = small + count(wc%unit_small)
+      ! the units solved from the points (the fast path: every unit) or by J's closed forms
+      if (wc%has_fast) then
+        small = small + size(deck%mech%units)
+      else
+        small = small + count(wc%unit_small)
+      end if
       worst_v = max(worst_v, maxval(abs(sc%qd - sg%qd)) / maxval(abs(sg%qd)))
       worst_a = max(worst_a, maxval(abs(sc%qdd - sg%qdd)) / maxval(abs(sg%qdd)))
       ! the reactions of the general solve's motion by both: the multipliers' solves alone

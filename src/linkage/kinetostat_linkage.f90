@@ -26,6 +26,7 @@ module kinetostat_linkage
     link_point_state, set_turns, turned, position_cs, constraints, quadratic_terms
   use kinetostat_linkage_small, only: solve3, two_body_solve, small_factors_t, factor3, solve3_factored, dyad_factor, &
     dyad_solve, dyad_solve_transposed
+  use kinetostat_linkage_dyads, only: dyad_plan_t, plan_dyads, dyad_velocities, dyad_accelerations, dyad_reactions
   use kinetostat_selfcheck, only: link_balance_t, balance_add_force, balance_add_couple, equilibrium_residual, &
     power_mismatch
   implicit none
@@ -155,6 +156,22 @@ module kinetostat_linkage
     !> Each link's rows of J in increasing order (link_row(1:link_deg(i), i)) and the slot
     !> (1, 2) of jl that names it.
     integer, allocatable :: link_row(:, :), link_slot(:, :), link_deg(:)
+    !> Every unit an input unit of one link or a dyad (`closed`): the velocities,
+    !> accelerations and velocity analogues from the points (kinetostat_linkage_dyads, no J)
+    !> and the reactions by the group method's closed forms; false: by J (the general solve
+    !> the tests compare with).
+    logical :: fast = .true.
+    !> The units' links and pairs and the dyads' 2 x 2 systems (kinetostat_linkage_dyads).
+    type(dyad_plan_t) :: plan
+    !> v holds the velocity analogues of the poses q_fast from the points (valid when
+    !> has_fast).
+    real(wp), allocatable :: q_fast(:)
+    logical :: has_fast = .false.
+    !> The steps whose reactions the fast path solved with this workspace (the first is also
+    !> solved by the Lagrange multipliers: solver_gap).
+    integer :: fast_statics = 0
+    !> A drive's unit rate (scratch, drives).
+    real(wp), allocatable :: rate(:)
   end type linkage_work_t
 
 contains
@@ -174,7 +191,7 @@ contains
                   work%dq0, work%zero_q, work%trsm)
       deallocate (work%fa, work%flu, work%fb, work%fipiv, work%load, work%cm, work%local, work%pair_known, &
                   work%drive_known, work%f2, work%normal2, work%couple2, work%effort2, work%gen, work%lam, work%bal, work%cs, &
-                  work%q_cs, work%rhs, work%unit_x, work%q_new, work%s_cm, work%a_cm)
+                  work%q_cs, work%rhs, work%unit_x, work%q_new, work%s_cm, work%a_cm, work%q_fast, work%rate)
       deallocate (work%jl, work%je, work%link_row, work%link_slot, work%link_deg)
     end if
     allocate (work%fa(nr, nr), work%flu(nr, nr), work%fb(nr), work%fipiv(nr), work%load(3, size(mech%links)), &
@@ -186,12 +203,14 @@ contains
     allocate (work%phi(nr), work%jac(nr, nr), work%q_jac(nr), work%lu(nr, nr), work%ipiv(nr), &
               work%v(nr, size(mech%drives)), work%jt(nr, nr), work%lut(nr, nr), work%ipivt(nr), work%dx(nr))
     allocate (work%dq0(size(mech%drives)), work%zero_q(nr), work%rhs(nr), work%unit_x(nr), &
-              work%q_new(3 * size(mech%links)), source=0.0_wp)
+              work%q_new(3 * size(mech%links)), work%q_fast(3 * size(mech%links)), work%rate(size(mech%drives)), &
+              source=0.0_wp)
     work%trsm = trsm_table(nr)
     call rows_ready(mech, work)
     work%has_jac = .false.
     work%factored = .false.
     work%has_cs = .false.
+    work%has_fast = .false.
     call units_ready(mech, work)
   end subroutine work_ready
 
@@ -324,7 +343,41 @@ contains
     end do
     work%blocked = .true.
     work%closed = all(mech%units%class == 2 .or. (mech%units%class == 1 .and. work%unit_order == 3))
+    if (work%closed) call plan_dyads(mech, work%plan)
   end subroutine units_ready
+
+  !> The fast path applies (`fast`, every unit an input unit of one link or a dyad with its
+  !> plan, the small solves on).
+  pure logical function use_fast(work)
+    type(linkage_work_t), intent(in) :: work
+    use_fast = work%fast .and. work%closed .and. work%small_solves
+    if (use_fast) use_fast = work%plan%ok
+  end function use_fast
+
+  !> The velocity analogues of poses q from the points into work%v (unless it holds them);
+  !> ok false where a dyad's 2 x 2 is near a zero determinant (then J decides).
+  pure subroutine fast_analogues(mech, q, work, ok)
+    type(linkage_t), intent(in) :: mech
+    real(wp), intent(in) :: q(:)
+    type(linkage_work_t), intent(inout) :: work
+    logical, intent(out) :: ok
+    integer :: d, n3
+    ok = .true.
+    if (work%has_fast) then
+      if (same_poses(work%q_fast, q)) return
+    end if
+    work%has_fast = .false.
+    n3 = size(q)
+    call work_turns(work, q)
+    do d = 1, size(mech%drives)
+      work%rate(:) = 0.0_wp
+      work%rate(d) = 1.0_wp
+      call dyad_velocities(mech, work%plan, q, work%cs, work%rate, work%v(1:n3, d), ok)
+      if (.not. ok) return
+    end do
+    work%q_fast(:) = q
+    work%has_fast = .true.
+  end subroutine fast_analogues
 
   !> Factors J (work%jac): each unit's diagonal block, or the whole J densely. An error: a
   !> block (J) is singular or ill-conditioned (factor_dense's verdict).
@@ -581,12 +634,24 @@ contains
     work%factored = .true.
   end subroutine work_factored
 
+  !> The poses a and b are the same numbers (a loop that stops at the first difference: the
+  !> workspace's checks, several a step).
+  pure logical function same_poses(a, b)
+    real(wp), intent(in) :: a(:), b(:)
+    integer :: i
+    same_poses = .false.
+    do i = 1, size(b)
+      if (a(i) /= b(i)) return
+    end do
+    same_poses = .true.
+  end function same_poses
+
   !> work%cs: the turns of poses q (set_turns), unless it holds them.
   pure subroutine work_turns(work, q)
     type(linkage_work_t), intent(inout) :: work
     real(wp), intent(in) :: q(:)
     if (work%has_cs) then
-      if (all(work%q_cs == q)) return
+      if (same_poses(work%q_cs, q)) return
     end if
     call set_turns(q, work%cs)
     work%q_cs(:) = q
@@ -631,6 +696,15 @@ contains
       if (placed) then
         work%q_cs(:) = work%q_new
         work%has_cs = .true.
+        if (use_fast(work)) then
+          ! the velocity analogues from the points (no J): their 2 x 2 systems clear of a
+          ! zero determinant, or J decides below
+          call fast_analogues(mech, work%q_new, work, placed)
+          if (placed) then
+            q(:) = work%q_new
+            return
+          end if
+        end if
         call work_factored(mech, work%q_new, work, error)
         if (.not. allocated(error)) then
           q(:) = work%q_new
@@ -820,8 +894,22 @@ contains
     type(linkage_work_t), intent(inout) :: work
     type(error_t), allocatable, intent(out) :: error
     integer :: d
+    logical :: ok
     qd = 0.0_wp
     qdd = 0.0_wp
+    call work_ready(mech, work)
+    if (use_fast(work)) then
+      ! from the points: qd from the velocity analogues, qdd unit by unit
+      call fast_analogues(mech, q, work, ok)
+      if (ok) then
+        do d = 1, size(mech%drives)
+          qd = qd + work%v(1:size(q), d) * dv(d)
+        end do
+        call work_turns(work, q)
+        call dyad_accelerations(mech, work%plan, q, work%cs, qd, da, qdd)
+        return
+      end if
+    end if
     call work_factored(mech, q, work, error)
     if (allocated(error)) return
     qd = 0.0_wp
@@ -839,10 +927,15 @@ contains
   end subroutine linkage_motion
 
   !> Reactions of an assembled, moving step: applied forces `fval` (N, along each force's
-  !> direction) and moments `mval` (N*m), gravity and inertia; the global system J^T lambda =
-  !> -Q, and the self-check: the group method's free bodies as the second opinion
-  !> (linkage_free_body, step%solver_gap), the equilibrium of every link with the physical
-  !> forces, the power balance of every drive with the velocity analogues.
+  !> direction) and moments `mval` (N*m), gravity and inertia, and the self-check: the
+  !> equilibrium of every link with the physical forces, the power balance of every drive
+  !> with the velocity analogues. Every unit an input unit of one link or a dyad (the fast
+  !> path, whose velocity analogues linkage_assemble or linkage_motion found at these poses):
+  !> by the group method's free bodies in closed form, unit by unit (linkage_free_body), and
+  !> at the first step solved with `work` also by the Lagrange multipliers (J^T lambda = -Q)
+  !> as the second opinion (step%solver_gap; 0 at the other steps). Otherwise: by the Lagrange
+  !> multipliers, with the group method as the second opinion where a unit was factored by
+  !> LU (step%solver_gap).
   pure subroutine linkage_statics(mech, fval, mval, step, work, error)
     !> The linkage.
     type(linkage_t), intent(in) :: mech
@@ -854,25 +947,19 @@ contains
     type(linkage_work_t), intent(inout) :: work
     type(error_t), allocatable, intent(out) :: error
     real(wp) :: terms, power, s(2), vs(2), as(2), ref(2), f_length, fk(2)
-    integer :: n, k, d, i, r
-    logical :: closed
+    integer :: n, k, d, i
+    logical :: closed, fast
     n = size(mech%links)
-    call work_factored(mech, step%q, work, error)
-    if (allocated(error)) return
+    call work_ready(mech, work)
+    fast = use_fast(work) .and. work%has_fast
+    if (fast) fast = same_poses(work%q_fast, step%q)
+    if (.not. fast) then
+      call work_factored(mech, step%q, work, error)
+      if (allocated(error)) return
+    end if
     call work_turns(work, step%q)
     call generalised_loads(mech, step%q, step%qd, step%qdd, fval, mval, work%gen, work%cs, work%s_cm, work%a_cm)
-    work%lam(:) = -work%gen
-    if (work%blocked) then
-      ! J^T is block triangular too: its units' blocks are J's, transposed
-      call solve_jt(mech, work, work%lam, work%rhs, work%unit_x)
-    else
-      work%jt(:, :) = transpose(work%jac)
-      call factor_dense(work%jt, work%lut, work%ipivt, error, work%trsm)
-      if (allocated(error)) return
-      call solve_factored(work%lut, work%ipivt, work%lam)
-    end if
 
-    ! physical forces (work%cs: the turns of step%q, from generalised_loads)
     ! (a step reused from the step before keeps its arrays)
     if (allocated(step%f)) then
       if (size(step%f, 2) /= size(mech%pairs) .or. size(step%effort) /= size(mech%drives)) then
@@ -883,45 +970,50 @@ contains
       allocate (step%f(2, size(mech%pairs)), step%normal(size(mech%pairs)), step%couple(size(mech%pairs)))
       allocate (step%effort(size(mech%drives)))
     end if
-    do k = 1, size(mech%pairs)
-      associate (pr => mech%pairs(k))
-        r = pair_row(k)
-        if (pr%kind == pair_r) then
-          step%f(:, k) = work%lam(r:r + 1)
-          step%normal(k) = 0.0_wp
-          step%couple(k) = 0.0_wp
-        else
-          ! rows: couple lambda(r) and normal force lambda(r+1)*n on the block
-          s = perp(turned(work%cs, pr%guide, pr%u))
-          if (pr%guide == pr%b) then
-            step%normal(k) = work%lam(r + 1)
-            step%couple(k) = work%lam(r)
-          else
-            step%normal(k) = -work%lam(r + 1)
-            step%couple(k) = -work%lam(r)
-          end if
-          step%f(:, k) = step%normal(k) * s
-        end if
-      end associate
-    end do
-    do d = 1, size(mech%drives)
-      associate (pr => mech%pairs(mech%drives(d)%pair))
-        step%effort(d) = work%lam(drive_row(mech, d))
-        if (pr%kind == pair_p .and. pr%guide == pr%a) step%effort(d) = -step%effort(d)
-      end associate
-    end do
 
-    ! the second opinion: the course's group method, which shares no equation with the above,
-    ! where a unit was solved by LU (a class-III or class-IV group, a dyad near a zero
-    ! determinant, the general solve); every unit in closed form: the equilibrium of every
-    ! link below (the group method's equations with these reactions) is the check
     step%solver_gap = 0.0_wp
-    closed = by_rows(work)
-    if (closed) closed = all(work%unit_small)
-    if (.not. closed) then
-      call linkage_free_body(mech, fval, mval, step, work, work%f2, work%normal2, work%couple2, work%effort2, error)
+    if (fast) then
+      ! each link's own loads (force, moment about its reference point: Q), then the units'
+      ! reactions in closed form, the last first (kinetostat_linkage_dyads)
+      do i = 1, n
+        work%load(:, i) = work%gen(3 * i - 2:3 * i)
+      end do
+      call dyad_reactions(mech, work%plan, step%q, work%cs, work%load, step%f, step%normal, step%couple, step%effort, &
+                          closed)
+      if (.not. closed) then
+        ! (a 2 x 2 near a zero determinant: the free bodies by LU decide)
+        call free_bodies(mech, fval, mval, step%q, step%qd, step%qdd, work, step%f, step%normal, step%couple, &
+                         step%effort, error)
+        if (allocated(error)) return
+      end if
+      work%fast_statics = work%fast_statics + 1
+      if (work%fast_statics == 1) then
+        ! the second opinion at the workspace's first step: the Lagrange multipliers
+        call work_factored(mech, step%q, work, error)
+        if (allocated(error)) return
+        call lagrange_reactions(mech, work, work%f2, work%normal2, work%couple2, work%effort2, error)
+        if (allocated(error)) return
+        step%solver_gap = linkage_reaction_gap(mech, step, work%f2, work%normal2, work%couple2, work%effort2)
+        ! (work_factored put J's velocity analogues into work%v: the power balance below
+        ! takes those of the points, as at every other step)
+        work%has_fast = .false.
+        call fast_analogues(mech, step%q, work, fast)
+      end if
+    else
+      call lagrange_reactions(mech, work, step%f, step%normal, step%couple, step%effort, error)
       if (allocated(error)) return
-      step%solver_gap = linkage_reaction_gap(mech, step, work%f2, work%normal2, work%couple2, work%effort2)
+      ! the second opinion: the course's group method, which shares no equation with the
+      ! above, where a unit was solved by LU (a class-III or class-IV group, a dyad near a
+      ! zero determinant, the general solve); every unit in closed form: the equilibrium of
+      ! every link below (the group method's equations with these reactions) is the check
+      closed = by_rows(work)
+      if (closed) closed = all(work%unit_small)
+      if (.not. closed) then
+        call free_bodies(mech, fval, mval, step%q, step%qd, step%qdd, work, work%f2, work%normal2, work%couple2, &
+                         work%effort2, error)
+        if (allocated(error)) return
+        step%solver_gap = linkage_reaction_gap(mech, step, work%f2, work%normal2, work%couple2, work%effort2)
+      end if
     end if
 
     ! self-check 1: every link's equilibrium with the physical forces at their points (the
@@ -956,10 +1048,22 @@ contains
           ! (fk: a copy of fixed size, so that -fk takes no temporary array from the heap)
           fk = step%f(:, k)
           f_length = fast_magnitude(fk)
-          call add_on(work%bal, pr%a, position_cs(mech, step%q, work%cs, pr%a, pr%at), fk, 0.0_wp, f_length)
-          call add_on(work%bal, pr%b, position_cs(mech, step%q, work%cs, pr%b, pr%at), -fk, 0.0_wp, f_length)
+          if (fast) then
+            ! (the points the fast path took at these poses)
+            s = work%plan%xa(:, k)
+            vs = work%plan%xb(:, k)
+          else
+            s = position_cs(mech, step%q, work%cs, pr%a, pr%at)
+            vs = position_cs(mech, step%q, work%cs, pr%b, pr%at)
+          end if
+          call add_on(work%bal, pr%a, s, fk, 0.0_wp, f_length)
+          call add_on(work%bal, pr%b, vs, -fk, 0.0_wp, f_length)
         else
-          s = position_cs(mech, step%q, work%cs, pr%a + pr%b - pr%guide, pr%at)
+          if (fast) then
+            s = work%plan%xa(:, k)
+          else
+            s = position_cs(mech, step%q, work%cs, pr%a + pr%b - pr%guide, pr%at)
+          end if
           fk = step%f(:, k)
           f_length = fast_magnitude(fk)
           call add_on(work%bal, pr%a, s, fk, step%couple(k), f_length)
@@ -1019,6 +1123,55 @@ contains
     end function force_dir
   end subroutine linkage_statics
 
+  !> The reactions by the Lagrange multipliers of the constraints, J^T lambda = -Q (Q: the
+  !> generalised loads in work%gen; J's factors in work at the step's poses, whose turns
+  !> work%cs holds), as linkage_step_t's f, normal, couple, effort.
+  pure subroutine lagrange_reactions(mech, work, f, normal, couple, effort, error)
+    type(linkage_t), intent(in) :: mech
+    type(linkage_work_t), intent(inout) :: work
+    real(wp), intent(out) :: f(:, :), normal(:), couple(:), effort(:)
+    type(error_t), allocatable, intent(out) :: error
+    real(wp) :: s(2)
+    integer :: k, d, r
+    work%lam(:) = -work%gen
+    if (work%blocked) then
+      ! J^T is block triangular too: its units' blocks are J's, transposed
+      call solve_jt(mech, work, work%lam, work%rhs, work%unit_x)
+    else
+      work%jt(:, :) = transpose(work%jac)
+      call factor_dense(work%jt, work%lut, work%ipivt, error, work%trsm)
+      if (allocated(error)) return
+      call solve_factored(work%lut, work%ipivt, work%lam)
+    end if
+    do k = 1, size(mech%pairs)
+      associate (pr => mech%pairs(k))
+        r = pair_row(k)
+        if (pr%kind == pair_r) then
+          f(:, k) = work%lam(r:r + 1)
+          normal(k) = 0.0_wp
+          couple(k) = 0.0_wp
+        else
+          ! rows: couple lambda(r) and normal force lambda(r+1)*n on the block
+          s = perp(turned(work%cs, pr%guide, pr%u))
+          if (pr%guide == pr%b) then
+            normal(k) = work%lam(r + 1)
+            couple(k) = work%lam(r)
+          else
+            normal(k) = -work%lam(r + 1)
+            couple(k) = -work%lam(r)
+          end if
+          f(:, k) = normal(k) * s
+        end if
+      end associate
+    end do
+    do d = 1, size(mech%drives)
+      associate (pr => mech%pairs(mech%drives(d)%pair))
+        effort(d) = work%lam(drive_row(mech, d))
+        if (pr%kind == pair_p .and. pr%guide == pr%a) effort(d) = -effort(d)
+      end associate
+    end do
+  end subroutine lagrange_reactions
+
   !> The reactions by the course's group method, independently of the Lagrange form: every
   !> link a free body (its own loads: gravity, d'Alembert's force -m a_S and moment -J_S eps,
   !> the external forces and moments; the pair forces at the joints), three equations per
@@ -1044,6 +1197,19 @@ contains
     !> Effort of every drive on link a: moment (N*m) or force along the guide (N).
     real(wp), intent(out) :: effort(:)
     type(error_t), allocatable, intent(out) :: error
+    call free_bodies(mech, fval, mval, step%q, step%qd, step%qdd, work, f, normal, couple, effort, error)
+  end subroutine linkage_free_body
+
+  !> linkage_free_body of poses q, velocities qd and accelerations qdd.
+  pure subroutine free_bodies(mech, fval, mval, q, qd, qdd, work, f, normal, couple, effort, error)
+    type(linkage_t), intent(in) :: mech
+    real(wp), intent(in) :: fval(:), mval(:)
+    real(wp), intent(in) :: q(:), qd(:), qdd(:)
+    type(linkage_work_t), intent(inout) :: work
+    real(wp), intent(out) :: f(:, :)
+    real(wp), intent(out) :: normal(:), couple(:)
+    real(wp), intent(out) :: effort(:)
+    type(error_t), allocatable, intent(out) :: error
     real(wp) :: sv(2), vs(2), as(2), w(2), g(2, 2), h(2), pa(2), pb(2)
     integer :: i, j, k, d, c, r, u, nu, np
     logical :: solved
@@ -1052,15 +1218,15 @@ contains
     couple = 0.0_wp
     effort = 0.0_wp
     call work_ready(mech, work)
-    call work_turns(work, step%q)
+    call work_turns(work, q)
     np = size(mech%pairs)
     ! each link's own loads: the force and its moment about the centre of mass
     do i = 1, size(mech%links)
       associate (lk => mech%links(i))
-        call link_point_state(mech, step%q, step%qd, step%qdd, i, lk%s, sv, vs, as, work%cs)
+        call link_point_state(mech, q, qd, qdd, i, lk%s, sv, vs, as, work%cs)
         work%cm(:, i) = sv
         work%load(1:2, i) = lk%m * mech%gravity - lk%m * as
-        work%load(3, i) = -lk%j * step%qdd(3 * i)
+        work%load(3, i) = -lk%j * qdd(3 * i)
       end associate
     end do
     do k = 1, size(mech%forces)
@@ -1068,7 +1234,7 @@ contains
         w = fc%dir
         if (fc%follow) w = turned(work%cs, fc%link, fc%dir)
         w = fval(k) * w
-        pa = position_cs(mech, step%q, work%cs, fc%link, fc%at)
+        pa = position_cs(mech, q, work%cs, fc%link, fc%at)
         work%load(1:2, fc%link) = work%load(1:2, fc%link) + w
         work%load(3, fc%link) = work%load(3, fc%link) + cross(pa - work%cm(:, fc%link), w)
       end associate
@@ -1183,13 +1349,13 @@ contains
           g(:, 1) = [1.0_wp, 0.0_wp]
           g(:, 2) = [0.0_wp, 1.0_wp]
           h = 0.0_wp
-          pa = position_cs(mech, step%q, cs, pr%a, pr%at)
-          pb = position_cs(mech, step%q, cs, pr%b, pr%at)
+          pa = position_cs(mech, q, cs, pr%a, pr%at)
+          pb = position_cs(mech, q, cs, pr%b, pr%at)
         else
           g(:, 1) = 0.0_wp
           g(:, 2) = perp(turned(cs, pr%guide, pr%u))
           h = [1.0_wp, 0.0_wp]
-          pa = position_cs(mech, step%q, cs, pr%a + pr%b - pr%guide, pr%at)
+          pa = position_cs(mech, q, cs, pr%a + pr%b - pr%guide, pr%at)
           pb = pa
         end if
       end associate
@@ -1207,7 +1373,7 @@ contains
         else
           w = turned(cs, pr%guide, pr%u)
           h = 0.0_wp
-          p = position_cs(mech, step%q, cs, pr%a + pr%b - pr%guide, pr%at)
+          p = position_cs(mech, q, cs, pr%a + pr%b - pr%guide, pr%at)
         end if
       end associate
     end subroutine drive_effect
@@ -1239,7 +1405,7 @@ contains
       work%fb(3 * e - 1) = work%fb(3 * e - 1) - fo(2)
       work%fb(3 * e) = work%fb(3 * e) - cross(p - work%cm(:, i), fo) - co
     end subroutine add_known
-  end subroutine linkage_free_body
+  end subroutine free_bodies
 
   !> Largest difference of two sets of reactions (the step's and another's: f, normal,
   !> couple, effort), relative to the step's largest reaction (force components of the

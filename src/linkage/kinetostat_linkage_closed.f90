@@ -10,7 +10,7 @@ module kinetostat_linkage_closed
   use kinetostat_linkage_types, only: linkage_t, pair_r
   implicit none
   private
-  public :: place_units, dyad_arms, point_position, turn_of, turned, position_cs
+  public :: place_units, dyad_arms, point_position, turn_of, turned, position_cs, unit_pairs, dyad_pairs
   public :: circle_circle, circle_line, line_line, turn_through, turn_between, unwrap
 
   !> Two lines are taken as parallel (no closed form; Newton's method decides) when the sine
@@ -38,23 +38,12 @@ contains
     real(wp), intent(inout) :: cs(:, 0:)
     !> The dyads' arms (dyad_arms).
     real(wp), intent(in) :: arms(:, :)
-    integer :: u, i, r, np, nk, d, lk, kn, kp(3)
+    integer :: u, nk, d, lk, kn, kp(3)
     real(wp) :: val, th, x(2), w(2)
-    np = size(mech%pairs)
     placed = .false.
     do u = 1, size(mech%units)
-      nk = 0
-      d = 0
-      do i = 1, size(mech%units(u)%rows)
-        r = mech%units(u)%rows(i)
-        if (r > 2 * np) then
-          d = r - 2 * np
-        else if (mod(r, 2) == 1) then
-          if (nk == 3) return
-          nk = nk + 1
-          kp(nk) = (r + 1) / 2
-        end if
-      end do
+      call unit_pairs(mech, u, kp, nk, d)
+      if (nk > 3) return
       if (mech%units(u)%class == 2 .and. nk == 3) then
         call place_dyad(mech, mech%units(u)%links, kp, q, placed, cs, arms(:, u))
         if (.not. placed) return
@@ -80,6 +69,32 @@ contains
     end do
     placed = .true.
   end subroutine place_units
+
+  !> Unit u's pairs kp(1:nk) (their first rows among its rows, in order; nk = 4: more than
+  !> three) and its drive d (the last among its rows; 0: none).
+  pure subroutine unit_pairs(mech, u, kp, nk, d)
+    type(linkage_t), intent(in) :: mech
+    integer, intent(in) :: u
+    integer, intent(out) :: kp(3), nk, d
+    integer :: i, r, np
+    np = size(mech%pairs)
+    kp = 0
+    nk = 0
+    d = 0
+    do i = 1, size(mech%units(u)%rows)
+      r = mech%units(u)%rows(i)
+      if (r > 2 * np) then
+        d = r - 2 * np
+      else if (mod(r, 2) == 1) then
+        if (nk == 3) then
+          nk = 4
+          return
+        end if
+        nk = nk + 1
+        kp(nk) = (r + 1) / 2
+      end if
+    end do
+  end subroutine unit_pairs
 
   !> The dyad of links set(1), set(2) and pairs kp (one inner, one outer on each link) placed
   !> in closed form: RRR two circles; RRP a circle and a line (the slider's turn is its
@@ -199,20 +214,12 @@ contains
   pure function dyad_arms(mech) result(arms)
     type(linkage_t), intent(in) :: mech
     real(wp), allocatable :: arms(:, :)
-    integer :: u, i, r, nk, kp(3), inner, e(2), j
+    integer :: u, nk, d, kp(3), inner, e(2), j
     real(wp) :: v0(2)
     allocate (arms(4, size(mech%units)), source=0.0_wp)
     do u = 1, size(mech%units)
       if (mech%units(u)%class /= 2 .or. size(mech%units(u)%links) /= 2) cycle
-      nk = 0
-      do i = 1, size(mech%units(u)%rows)
-        r = mech%units(u)%rows(i)
-        if (r <= 2 * size(mech%pairs) .and. mod(r, 2) == 1) then
-          if (nk == 3) exit
-          nk = nk + 1
-          kp(nk) = (r + 1) / 2
-        end if
-      end do
+      call unit_pairs(mech, u, kp, nk, d)
       if (nk /= 3) cycle
       call dyad_pairs(mech, mech%units(u)%links, kp, inner, e)
       if (inner == 0 .or. any(e == 0)) cycle
