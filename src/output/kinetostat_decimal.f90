@@ -58,24 +58,27 @@ module kinetostat_decimal
     "E+004", "E+005", "E+006", "E+007", "E+008", "E+009", "E+010", "E+011", "E+012"]
   !> A whole-number cell (flag, count) is written as one below this magnitude.
   real(wp), parameter :: whole_limit = 1.0e15_wp
-  !> floor(log10(2**(b - 1023))), the decimal exponent of the smallest double of biased binary
-  !> exponent b, or one short of it (k of the largest of the binade when 10**(k+1) lies in it).
-  integer, parameter :: binade_exponents(0:2047) = [(shifta((i_ - 1023) * 78913, 18), i_ = 0, 2047)]
-  !> The decimal exponent put_cell_numbers assumes for row j of its tables: j = b, the
-  !> binade's first exponent; j = b + 2048, one more (|x| >= 10**(that + 1) in binade b).
-  integer, parameter :: cell_exponents(0:4095) = [(binade_exponents(iand(i_, 2047)) + shiftr(i_, 11), i_ = 0, 4095)]
-  !> The CSV cell's fast range of decimal exponents: 10**(12 - k) is an exact double.
-  integer, parameter :: fast_low = cell_decimals - max_exact_pow10, fast_high = cell_decimals
-  !> 10**(12 - k) for the exponent k of cell_exponents(j), 0 outside the fast range (|x| times
-  !> it is then 0 and the cell goes the exact way).
-  real(wp), parameter :: cell_scales(0:4095) = [(merge(exact_pow10(min(max(cell_decimals - cell_exponents(i_), 0), &
-    max_exact_pow10)), 0.0_wp, cell_exponents(i_) >= fast_low .and. cell_exponents(i_) <= fast_high), i_ = 0, 4095)]
-  !> The five bytes "E+ddd" of exponent cell_exponents(j), little-endian in one integer (the
-  !> separator is added in the bytes above them).
+  ! (The tables below are expressions of their index alone: an element of another named
+  ! array in a long implied DO makes the compiler's evaluation quadratic, minutes a build.)
+  !> The decimal exponent put_cell_numbers assumes for row j of its tables, in the table's
+  !> first half (j = b, the biased binary exponent of |x|) floor(log10(2**(b - 1023))), the
+  !> exponent of the binade's first double; in its second half (j = b + 2048) one more, for
+  !> the part of the binade from the next power of ten on.
+  !> 10**(12 - k) for the exponent k of row j, 0 outside the fast range (|x| times it is then
+  !> 0 and the cell goes the exact way).
+  real(wp), parameter :: cell_scales(0:4095) = [(merge(10.0_wp**min(max(cell_decimals &
+    - (shifta((iand(i_, 2047) - 1023) * 78913, 18) + shiftr(i_, 11)), 0), max_exact_pow10), 0.0_wp, &
+    shifta((iand(i_, 2047) - 1023) * 78913, 18) + shiftr(i_, 11) >= cell_decimals - max_exact_pow10 .and. &
+    shifta((iand(i_, 2047) - 1023) * 78913, 18) + shiftr(i_, 11) <= cell_decimals), i_ = 0, 4095)]
+  !> The five bytes "E+ddd" of the exponent k of row j, little-endian in one integer (the
+  !> separator is added in the bytes above them; |k| < 1000: k * 5243 / 2**19 is k / 100,
+  !> k * 205 / 2**11 is k / 10).
   integer(int64), parameter :: cell_exponent_words(0:4095) = [(69_int64 + 256_int64 * merge(45_int64, 43_int64, &
-    cell_exponents(i_) < 0) + 65536_int64 * (48 + mod(abs(cell_exponents(i_)) / 100, 10)) &
-    + 16777216_int64 * (48 + mod(abs(cell_exponents(i_)) / 10, 10)) &
-    + 4294967296_int64 * (48 + mod(abs(cell_exponents(i_)), 10)), i_ = 0, 4095)]
+    shifta((iand(i_, 2047) - 1023) * 78913, 18) + shiftr(i_, 11) < 0) &
+    + 65536_int64 * (48 + shiftr(abs(shifta((iand(i_, 2047) - 1023) * 78913, 18) + shiftr(i_, 11)) * 5243, 19)) &
+    + 16777216_int64 * (48 + mod(shiftr(abs(shifta((iand(i_, 2047) - 1023) * 78913, 18) + shiftr(i_, 11)) * 205, 11), 10)) &
+    + 4294967296_int64 * (48 + mod(abs(shifta((iand(i_, 2047) - 1023) * 78913, 18) + shiftr(i_, 11)), 10)), &
+    i_ = 0, 4095)]
   !> |x| * 10**s from this up has one digit too many: the next exponent's row of the tables
   !> (a product rounded up to it from below rounds to 10**13 too, the same text).
   real(wp), parameter :: cell_overflow = 1.0e13_wp
