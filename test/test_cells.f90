@@ -67,13 +67,8 @@ contains
         separator = ","
       end if
       ! the row as the cells were written before, one at a time
-      expected = 0
+      call one_row(row, columns, whole, separator, theirs, expected)
       do i = 1, row_length
-        if (i > 1) then
-          theirs(expected + 1:expected + len(separator)) = separator
-          expected = expected + len(separator)
-        end if
-        call one_cell(row(columns(i)), whole(i), theirs, expected)
         n_values = n_values + 1
         if (mod(n_values, every) == 0 .and. .not. whole(i)) then
           pos = 0
@@ -89,14 +84,7 @@ contains
       pos = 0
       if (mod(r, 3) == 0) then
         ! the form without whole columns: every cell a full number
-        expected = 0
-        do i = 1, row_length
-          if (i > 1) then
-            theirs(expected + 1:expected + len(separator)) = separator
-            expected = expected + len(separator)
-          end if
-          call one_cell(row(columns(i)), .false., theirs, expected)
-        end do
+        call one_row(row, columns, spread(.false., 1, row_length), separator, theirs, expected)
         call put_cell_numbers(row, columns, separator, mine, pos)
       else
         call put_cell_numbers(row, columns, separator, mine, pos, whole)
@@ -144,6 +132,25 @@ contains
     end if
     call put_es_compact(x + 0.0_wp, 12, 3, buf, pos)
   end subroutine one_cell
+
+  !> A row the way rows were written before put_cell_numbers: one_cell after one_cell.
+  subroutine one_row(row, columns, whole, separator, buf, pos)
+    real(wp), intent(in) :: row(:)
+    integer, intent(in) :: columns(:)
+    logical, intent(in) :: whole(:)
+    character(*), intent(in) :: separator
+    character(*), intent(inout) :: buf
+    integer, intent(out) :: pos
+    integer :: i
+    pos = 0
+    do i = 1, size(columns)
+      if (i > 1) then
+        buf(pos + 1:pos + len(separator)) = separator
+        pos = pos + len(separator)
+      end if
+      call one_cell(row(columns(i)), whole(i), buf, pos)
+    end do
+  end subroutine one_row
 
   !> The first differing cell of two rows, with the value's bits.
   function first_difference(mine, theirs, row, columns) result(text)
