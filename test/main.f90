@@ -17,6 +17,7 @@ program kinetostat_tests
   use test_kinematics, only: run_kinematics_tests
   use test_svg, only: run_svg_tests
   use test_decimal, only: run_decimal_tests
+  use test_cells, only: run_cells_tests
   use test_lapack, only: run_lapack_tests
   use test_blocks, only: run_blocks_tests
   use test_records, only: run_records_tests
@@ -32,7 +33,7 @@ program kinetostat_tests
   character(*), parameter :: suite_names(*) = [character(len=11) :: &
     "foundation", "pr3207", "pr3050", "sixbar", "gears", "cam", "assur", "assur_ext", "friction", "io", &
     "kinematics", "svg", "decimal", "lapack", "blocks", "records", "shaking", "dynamics", "hostile", "linkage", &
-    "synthesis", "columns"]
+    "synthesis", "columns", "cells"]
   type(test_counts_t) :: t
   logical :: selected(size(suite_names))
   integer :: i
@@ -99,6 +100,7 @@ contains
     case ("kinematics"); call run_kinematics_tests(t)
     case ("svg"); call run_svg_tests(t)
     case ("decimal"); call run_decimal_tests(t)
+    case ("cells"); call run_cells_tests(t)
     case ("lapack"); call run_lapack_tests(t)
     case ("blocks"); call run_blocks_tests(t)
     case ("records"); call run_records_tests(t)

@@ -13,11 +13,12 @@
 !> an internal WRITE does), so intent(out)/(inout) with an assumed length is the design here.
 ! allow(assumed-size-character-intent)
 module kinetostat_decimal
-  use, intrinsic :: iso_fortran_env, only: int64
+  use, intrinsic :: iso_fortran_env, only: int16, int64
   use kinetostat_kinds, only: wp
   implicit none
   private
   public :: edit_f, edit_exponent, put_es_compact, put_whole, i16
+  public :: put_cell_number, put_cell_numbers
 
   !> Integer kind of the exact products (128 bits).
   integer, parameter :: i16 = selected_int_kind(38)
@@ -55,6 +56,32 @@ module kinetostat_decimal
   character(len=5), parameter :: exponent_texts(-12:12) = ["E-012", "E-011", "E-010", "E-009", "E-008", &
     "E-007", "E-006", "E-005", "E-004", "E-003", "E-002", "E-001", "E+000", "E+001", "E+002", "E+003", &
     "E+004", "E+005", "E+006", "E+007", "E+008", "E+009", "E+010", "E+011", "E+012"]
+  !> A whole-number cell (flag, count) is written as one below this magnitude.
+  real(wp), parameter :: whole_limit = 1.0e15_wp
+  ! (The tables below are expressions of their index alone: an element of another named
+  ! array in a long implied DO makes the compiler's evaluation quadratic, minutes a build.)
+  !> The decimal exponent put_cell_numbers assumes for row j of its tables, in the table's
+  !> first half (j = b, the biased binary exponent of |x|) floor(log10(2**(b - 1023))), the
+  !> exponent of the binade's first double; in its second half (j = b + 2048) one more, for
+  !> the part of the binade from the next power of ten on.
+  !> 10**(12 - k) for the exponent k of row j, 0 outside the fast range (|x| times it is then
+  !> 0 and the cell goes the exact way).
+  real(wp), parameter :: cell_scales(0:4095) = [(merge(10.0_wp**min(max(cell_decimals &
+    - (shifta((iand(i_, 2047) - 1023) * 78913, 18) + shiftr(i_, 11)), 0), max_exact_pow10), 0.0_wp, &
+    shifta((iand(i_, 2047) - 1023) * 78913, 18) + shiftr(i_, 11) >= cell_decimals - max_exact_pow10 .and. &
+    shifta((iand(i_, 2047) - 1023) * 78913, 18) + shiftr(i_, 11) <= cell_decimals), i_ = 0, 4095)]
+  !> The five bytes "E+ddd" of the exponent k of row j, little-endian in one integer (the
+  !> separator is added in the bytes above them; |k| < 1000: k * 5243 / 2**19 is k / 100,
+  !> k * 205 / 2**11 is k / 10).
+  integer(int64), parameter :: cell_exponent_words(0:4095) = [(69_int64 + 256_int64 * merge(45_int64, 43_int64, &
+    shifta((iand(i_, 2047) - 1023) * 78913, 18) + shiftr(i_, 11) < 0) &
+    + 65536_int64 * (48 + shiftr(abs(shifta((iand(i_, 2047) - 1023) * 78913, 18) + shiftr(i_, 11)) * 5243, 19)) &
+    + 16777216_int64 * (48 + mod(shiftr(abs(shifta((iand(i_, 2047) - 1023) * 78913, 18) + shiftr(i_, 11)) * 205, 11), 10)) &
+    + 4294967296_int64 * (48 + mod(abs(shifta((iand(i_, 2047) - 1023) * 78913, 18) + shiftr(i_, 11)), 10)), &
+    i_ = 0, 4095)]
+  !> |x| * 10**s from this up has one digit too many: the next exponent's row of the tables
+  !> (a product rounded up to it from below rounds to 10**13 too, the same text).
+  real(wp), parameter :: cell_overflow = 1.0e13_wp
   !> Status of a field body: written.
   integer, parameter :: body_ok = 0
   !> Status of a field body: does not fit its width (the field is all '*').
@@ -708,6 +735,119 @@ contains
     done = .true.
   end subroutine cell_digits_fast
 
+  !> A CSV cell or JSON number appended to buf at pos+1.. (pos advanced; room for 24 more):
+  !> in a column of whole numbers (flags, counts) a whole value below 1e15 as I0 prints it,
+  !> anything else ES20.12E3 without blanks (-0 as 0).
+  pure subroutine put_cell_number(x, whole, buf, pos)
+    !> Finite value.
+    real(wp), intent(in) :: x
+    !> True for a column of whole numbers.
+    logical, intent(in) :: whole
+    !> Output characters.
+    character(*), intent(inout) :: buf
+    !> Characters in use.
+    integer, intent(inout) :: pos
+    if (whole) then
+      if (abs(x) < whole_limit .and. x == aint(x)) then
+        call put_whole(nint(x, kind=int64), buf, pos)
+        return
+      end if
+    end if
+    call put_es_compact(x + 0.0_wp, cell_decimals, 3, buf, pos)
+  end subroutine put_cell_number
+
+  !> The cells of one row appended to buf at pos+1.. (pos advanced): put_cell_number of
+  !> row(columns(i)) for every i, `separator` between them. Room: 20 + len(separator)
+  !> characters a cell and 3 more (stored past the text, and overwritten by what follows).
+  !> A cell of the common magnitudes (1e-10 <= |x| < 1e13) is written in the row's loop:
+  !> |x| times the power of ten its binary exponent selects from a table (the table's second
+  !> half when the product has 14 digits before the point), rounded as cell_digits_fast
+  !> rounds, its 13 digits made in the bytes of two integers, and the exponent with the
+  !> separator stored as one integer from the table; zero is one copy; ties, whole numbers
+  !> and other magnitudes go through put_cell_number.
+  pure subroutine put_cell_numbers(row, columns, separator, buf, pos, whole)
+    !> The row's values (finite where written).
+    real(wp), intent(in), contiguous :: row(:)
+    !> Indices into `row` of the cells, in order.
+    integer, intent(in), contiguous :: columns(:)
+    !> Text between two cells: one or two characters.
+    character(*), intent(in) :: separator
+    !> Output characters.
+    character(*), intent(inout) :: buf
+    !> Characters in use.
+    integer, intent(inout) :: pos
+    !> Per cell: a column of whole numbers (absent: none is).
+    logical, intent(in), contiguous, optional :: whole(:)
+    integer(int64), parameter :: ten13 = 10000000000000_int64, ten12 = 1000000000000_int64, &
+      ten8 = 100000000_int64
+    !> n * 109951163 / 2**40 is n / 10**4 for 0 <= n < 10**8.
+    integer(int64), parameter :: by_ten4 = 109951163_int64
+    !> The bytes "d." of the first digit d = 0, little-endian ("0" = 48, "." = 46).
+    integer, parameter :: zero_point = 48 + 256 * 46
+    character(len=2) :: sep2
+    integer(int64) :: bits, q, high, low, sep_word, p, n_sep
+    real(wp) :: x, a, y, f
+    integer :: i, j, lead, at
+    logical :: any_whole
+    any_whole = present(whole)
+    n_sep = len(separator)
+    sep2 = separator
+    sep_word = shiftl(int(ichar(sep2(1:1)), int64), 40)
+    if (n_sep > 1) sep_word = sep_word + shiftl(int(ichar(sep2(2:2)), int64), 48)
+    p = pos
+    do i = 1, size(columns)
+      x = row(columns(i))
+      bits = transfer(x, bits)
+      if (any_whole) then
+        if (whole(i)) then
+          at = int(p)
+          call put_cell_number(x, .true., buf, at)
+          p = at
+          buf(p + 1:p + 2) = sep2
+          p = p + n_sep
+          cycle
+        end if
+      end if
+      j = int(shiftr(shiftl(bits, 1), 53))      ! the biased binary exponent
+      a = abs(x)
+      y = a * cell_scales(j)
+      if (y >= cell_overflow) then
+        j = j + 2048
+        y = a * cell_scales(j)
+      end if
+      q = int(y, int64)
+      f = y - real(q, wp)
+      if (abs(f - 0.5_wp) > tie_margin) then
+        if (f > 0.5_wp) q = q + 1_int64
+        if (q >= ten12 .and. q < ten13) then
+          buf(p + 1:p + 1) = "-"
+          p = p + shiftr(bits, 63)               ! past the "-" of a negative x
+          high = q / ten8                        ! the first five digits
+          low = q - high * ten8
+          lead = int(shiftr(high * by_ten4, 40))
+          buf(p + 1:p + 2) = transfer(int(zero_point + lead, int16), "ab")
+          buf(p + 3:p + 6) = transfer(four_digits(int(high) - 10000 * lead), "abcd")
+          buf(p + 7:p + 14) = transfer(eight_digits(low), "abcdefgh")
+          buf(p + 15:p + 22) = transfer(cell_exponent_words(j) + sep_word, "abcdefgh")
+          p = p + 19 + n_sep
+          cycle
+        end if
+      end if
+      if (shiftl(bits, 1) == 0_int64) then         ! +-0
+        buf(p + 1:p + 19) = "0.000000000000E+000"
+        p = p + 19
+      else
+        at = int(p)
+        call put_cell_number(x, .false., buf, at)
+        p = at
+      end if
+      buf(p + 1:p + 2) = sep2
+      p = p + n_sep
+    end do
+    if (size(columns) > 0) p = p - n_sep
+    pos = int(p)
+  end subroutine put_cell_numbers
+
   !> The 8 decimal digits of 0 <= v < 10**8 as ASCII bytes of one integer, the first digit
   !> in its lowest byte (so stored in this order on a little-endian machine): the halves,
   !> the pairs and the digits each split in parallel in the integer's lanes, dividing by
@@ -716,7 +856,7 @@ contains
   pure integer(int64) function eight_digits(v) result(w)
     integer(int64), intent(in) :: v
     integer(int64) :: merged, hundreds, pairs, tens
-    merged = v / 10000_int64
+    merged = shiftr(v * 109951163_int64, 40)       ! v / 10**4 (exact for v < 10**8)
     merged = merged + shiftl(v - 10000_int64 * merged, 32)
     hundreds = iand(shiftr(merged * 10486_int64, 20), int(z'0000007F0000007F', int64))
     pairs = hundreds + shiftl(merged - 100_int64 * hundreds, 16)

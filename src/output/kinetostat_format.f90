@@ -8,7 +8,7 @@
 module kinetostat_format
   use, intrinsic :: iso_fortran_env, only: int64
   use kinetostat_kinds, only: wp
-  use kinetostat_decimal, only: edit_f, edit_exponent, put_es_compact, put_whole
+  use kinetostat_decimal, only: edit_f, edit_exponent, put_whole, put_cell_number
   use kinetostat_text_buffer, only: text_buffer_t
   implicit none
   private
@@ -18,15 +18,13 @@ module kinetostat_format
 
   ! The edit descriptors of the policy (kinetostat_decimal writes them exactly as the
   ! compiler's formatted WRITE would, only faster):
-  !   CSV cell, JSON number   ES20.12E3 without blanks (full_digits, full_exponent_digits)
+  !   CSV cell, JSON number   ES20.12E3 without blanks; in a column of flags or counts a whole
+  !                           value below 1e15 as I0 (kinetostat_decimal's put_cell_number,
+  !                           a row at once: put_cell_numbers)
   !   INPUT DATA value        ES18.9, ES18.9E3 for three-digit exponents
   !   echoed array value      ES14.6, ES14.5E3
   !   self-check figure       ES10.2, ES10.1E3; its limit ES8.1
   !   table fields            Fw.d, else ESw.(w-8) / ESw.(w-9)E3; legacy Ew.d / Ew.dE3
-  !> Digits after the point of a full-precision number (13 significant digits).
-  integer, parameter :: full_digits = 12
-  !> Exponent digits of a full-precision number.
-  integer, parameter :: full_exponent_digits = 3
   !> Room a CSV cell needs at most, characters.
   integer, parameter :: cell_room = 24
   !> Width of the scratch buffer for one field.
@@ -189,13 +187,7 @@ contains
     logical, intent(in) :: whole
     character(*), intent(inout) :: buf
     integer, intent(inout) :: n
-    if (whole) then
-      if (abs(x) < 1.0e15_wp .and. x == aint(x)) then
-        call put_whole(nint(x, kind=int64), buf, n)
-        return
-      end if
-    end if
-    call put_es_compact(x + 0.0_wp, full_digits, full_exponent_digits, buf, n)
+    call put_cell_number(x, whole, buf, n)
   end subroutine put_cell_text
 
   !> Append cell_number(x, whole) to the output (no newline).

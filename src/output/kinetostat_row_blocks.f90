@@ -10,6 +10,7 @@ module kinetostat_row_blocks
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_step_table, only: step_table_t
   use kinetostat_format, only: put_cells, cell_room
+  use kinetostat_decimal, only: put_cell_numbers
   implicit none
   private
   public :: put_row_blocks, put_row_blocks_two, worker_count, row_writer_t, text_sink_t, table_rows_t
@@ -45,6 +46,8 @@ module kinetostat_row_blocks
     logical, allocatable :: whole(:)
     !> Per shown column: no value in a row without values.
     logical, allocatable :: voidable(:)
+    !> Whether any shown column holds whole numbers.
+    logical :: any_whole = .false.
     !> Text before a row's first cell.
     character(len=:), allocatable :: opening
     !> Text between two cells.
@@ -119,6 +122,7 @@ contains
       self%whole(c) = table%is_whole(self%columns(c))
       self%voidable(c) = table%columns(self%columns(c))%voidable
     end do
+    self%any_whole = any(self%whole)
     self%table => table
     self%opening = opening
     self%separator = separator
@@ -149,8 +153,14 @@ contains
     call out%reserve((last - first + 1) * self%row_room(size(self%columns)))
     do k = first, last
       if (len(self%opening) > 0) call out%append(self%opening)
-      call put_cells(out, self%table%rows(:, k), self%columns, self%whole, self%voidable, self%table%is_void(k), &
-        self%separator, self%void_cell)
+      if (self%table%is_void(k) .or. len(self%separator) < 1 .or. len(self%separator) > 2) then
+        call put_cells(out, self%table%rows(:, k), self%columns, self%whole, self%voidable, self%table%is_void(k), &
+          self%separator, self%void_cell)
+      else if (self%any_whole) then
+        call put_cell_numbers(self%table%rows(:, k), self%columns, self%separator, out%data, out%length, self%whole)
+      else
+        call put_cell_numbers(self%table%rows(:, k), self%columns, self%separator, out%data, out%length)
+      end if
       if (self%table%row_offset + k < max(self%table%total_rows, self%table%row_count())) then
         if (len(self%closing) > 0) call out%append(self%closing)
       else
