@@ -8,12 +8,16 @@
 !> change of scale, whole and half numbers, zeros), both signs, joined by "," and by ", ",
 !> every seventh column one of whole numbers: 3.2 * 10^4 values (10^7 with `tools/test
 !> --long`; a fixed seed, the first rows the same in both).
+!> The reference writers fill a caller's buffer as the writer under test does, so their
+!> character(*) buffers are intent(inout) by design.
+! allow(assumed-size-character-intent)
 module test_cells
   use, intrinsic :: iso_fortran_env, only: int64
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use kinetostat_kinds, only: wp
   use kinetostat_decimal, only: put_cell_numbers, put_es_compact, put_whole
-  use test_harness, only: test_counts_t, check_true, long_checks
+  use kinetostat_text, only: int_str
+  use test_harness, only: test_counts_t, check_true, long_checks, next, hex
   implicit none
   private
   public :: run_cells_tests
@@ -91,14 +95,14 @@ contains
       end if
       if (pos /= expected .or. mine(1:pos) /= theirs(1:expected)) then
         bad = bad + 1
-        if (bad <= max_shown) shown = shown//" [row "//itoa(r)//": "//first_difference(mine(1:pos), theirs(1:expected), &
+        if (bad <= max_shown) shown = shown//" [row "//int_str(r)//": "//first_difference(mine(1:pos), theirs(1:expected), &
           row, columns)//"]"
       end if
     end do
-    call check_true(t, "cells: "//itoa(n_rows * row_length)//" values in rows equal the cells written one at a time", &
-      bad == 0, "rows differ "//itoa(bad)//":"//shown)
-    call check_true(t, "cells: every "//itoa(every)//"th full number equals the compiler's ES20.12E3", bad_write == 0, &
-      "mismatches "//itoa(bad_write)//":"//shown)
+    call check_true(t, "cells: "//int_str(n_rows * row_length)//" values in rows equal the cells written one at a time", &
+      bad == 0, "rows differ "//int_str(bad)//":"//shown)
+    call check_true(t, "cells: every "//int_str(every)//"th full number equals the compiler's ES20.12E3", bad_write == 0, &
+      "mismatches "//int_str(bad_write)//":"//shown)
   end subroutine test_rows
 
   !> The writer stores at most 3 characters past a row's text (the room its callers make)
@@ -164,7 +168,7 @@ contains
       if (mine(i:i) /= theirs(i:i)) exit
       if (mine(i:i) == ",") cell = cell + 1
     end do
-    text = "cell "//itoa(cell)//" "//hex(row(columns(min(cell, size(columns)))))//" at "//itoa(i)//": '"// &
+    text = "cell "//int_str(cell)//" "//hex(row(columns(min(cell, size(columns)))))//" at "//int_str(i)//": '"// &
       mine(max(1, i - 20):min(len(mine), i + 20))//"' vs '"//theirs(max(1, i - 20):min(len(theirs), i + 20))//"'"
   end function first_difference
 
@@ -229,30 +233,5 @@ contains
       y = nearest(y, real(sign(1, steps), wp))
     end do
   end function nudged
-
-  !> xorshift64 (Marsaglia): the same sequence in every build.
-  function next(state) result(z)
-    integer(int64), intent(inout) :: state
-    integer(int64) :: z
-    state = ieor(state, shiftl(state, 13))
-    state = ieor(state, shiftr(state, 7))
-    state = ieor(state, shiftl(state, 17))
-    z = state
-  end function next
-
-  !> The bits of x in hex (a failing value can be reproduced exactly).
-  function hex(x) result(text)
-    real(wp), intent(in) :: x
-    character(len=18) :: text
-    write (text, '("z",z16.16)') transfer(x, 1_int64)
-  end function hex
-
-  function itoa(i) result(text)
-    integer, intent(in) :: i
-    character(len=:), allocatable :: text
-    character(len=16) :: buf
-    write (buf, '(i0)') i
-    text = trim(buf)
-  end function itoa
 
 end module test_cells

@@ -10,7 +10,8 @@ module test_decimal
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use kinetostat_kinds, only: wp
   use kinetostat_decimal, only: edit_f, edit_exponent, put_es_compact, put_whole
-  use test_harness, only: test_counts_t, check_true, long_checks
+  use kinetostat_text, only: int_str
+  use test_harness, only: test_counts_t, check_true, long_checks, next, hex
   use kinetostat_convert_model, only: deck_number
   implicit none
   private
@@ -132,8 +133,8 @@ contains
       k = mod(k, size(descriptors)) + 1
       call compare(x, descriptors(k), bad, shown)
     end do
-    call check_true(t, "decimal: "//itoa(n)//" random doubles equal the compiler's formatted WRITE", bad == 0, &
-                    "mismatches "//itoa(bad)//":"//shown)
+    call check_true(t, "decimal: "//int_str(n)//" random doubles equal the compiler's formatted WRITE", bad == 0, &
+                    "mismatches "//int_str(bad)//":"//shown)
   end subroutine test_random
 
   !> The CSV cell (ES20.12E3 without blanks) where its double-precision rounding must give
@@ -182,8 +183,8 @@ contains
         if (bad <= max_shown) shown = shown//" ["//hex(x)//" '"//compact(1:pos)//"' vs '"//trim(adjustl(theirs))//"']"
       end if
     end do
-    call check_true(t, "decimal: "//itoa(n)//" CSV cells at and near 13-digit ties equal the compiler's ES20.12E3", &
-                    bad == 0, "mismatches "//itoa(bad)//":"//shown)
+    call check_true(t, "decimal: "//int_str(n)//" CSV cells at and near 13-digit ties equal the compiler's ES20.12E3", &
+                    bad == 0, "mismatches "//int_str(bad)//":"//shown)
   end subroutine test_cell_ties
 
   !> put_whole against I0.
@@ -200,7 +201,7 @@ contains
       write (theirs, '(i0)') cases(i)
       if (mine(1:pos) /= trim(theirs)) bad = bad + 1
     end do
-    call check_true(t, "decimal: whole numbers equal I0", bad == 0, itoa(bad)//" differ")
+    call check_true(t, "decimal: whole numbers equal I0", bad == 0, int_str(bad)//" differ")
   end subroutine test_whole
 
   !> One value through one descriptor, mine against the compiler's.
@@ -282,31 +283,5 @@ contains
       if (btest(bits, 3)) x = -x
     end select
   end function sample
-
-  !> xorshift64 (Marsaglia): shifts and exclusive ors only, so no signed overflow (which an
-  !> optimising build may assume away) and the same sequence in every build.
-  function next(state) result(z)
-    integer(int64), intent(inout) :: state
-    integer(int64) :: z
-    state = ieor(state, shiftl(state, 13))
-    state = ieor(state, shiftr(state, 7))
-    state = ieor(state, shiftl(state, 17))
-    z = state
-  end function next
-
-  !> The bits of x in hex (a failing value can be reproduced exactly).
-  function hex(x) result(text)
-    real(wp), intent(in) :: x
-    character(len=18) :: text
-    write (text, '("z",z16.16,"")') transfer(x, 1_int64)
-  end function hex
-
-  function itoa(i) result(text)
-    integer, intent(in) :: i
-    character(len=:), allocatable :: text
-    character(len=16) :: buf
-    write (buf, '(i0)') i
-    text = trim(buf)
-  end function itoa
 
 end module test_decimal

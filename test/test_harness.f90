@@ -1,5 +1,6 @@
 !> Minimal test helpers: checks that print expected vs computed on failure and count.
 module test_harness
+  use, intrinsic :: iso_fortran_env, only: int64
   use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
   use kinetostat_kinds, only: wp
   use kinetostat_posix, only: process_id
@@ -7,6 +8,7 @@ module test_harness
   implicit none
   private
   public :: test_counts_t, check_close, check_true, report_counts, operator(.dot.), scratch_path, long_checks
+  public :: next, hex
 
   !> Pass/fail counters.
   type :: test_counts_t
@@ -92,4 +94,23 @@ contains
     long_checks = status == 0 .and. value == "1"
   end function long_checks
 
+  !> xorshift64 (Marsaglia): shifts and exclusive ors only, so no signed overflow (which an
+  !> optimising build may assume away) and the same sequence in every build.
+  function next(state) result(z)
+    !> The generator's state (not 0), advanced.
+    integer(int64), intent(inout) :: state
+    integer(int64) :: z
+    state = ieor(state, shiftl(state, 13))
+    state = ieor(state, shiftr(state, 7))
+    state = ieor(state, shiftl(state, 17))
+    z = state
+  end function next
+
+  !> The bits of x in hex (a failing value can be reproduced exactly).
+  function hex(x) result(text)
+    !> The value.
+    real(wp), intent(in) :: x
+    character(len=18) :: text
+    write (text, '("z",z16.16)') transfer(x, 1_int64)
+  end function hex
 end module test_harness
