@@ -4,8 +4,8 @@ module kinetostat_cam_deck
   use kinetostat_kinds, only: wp
   use kinetostat_error, only: error_t
   use kinetostat_text, only: real_str, int_str
-  use kinetostat_deck, only: values_out_of_memory, begin_group, text_bytes, text_chars, max_deck_array, &
-    deck_context_t, unset_real, deck_array_capacities, deck_source_t, namelist_probe_t, deck_error, is_set, &
+  use kinetostat_deck, only: begin_group, text_bytes, text_chars, &
+    deck_context_t, unset_real, deck_source_t, namelist_probe_t, deck_error, is_set, &
     optional_default, count_values, deck_rules_t, rule_nonnegative, angle_steps_t, &
     cam_phi_deg => step_angle_deg
   use kinetostat_cam, only: cam_params_t
@@ -60,9 +60,6 @@ module kinetostat_cam_deck
     real(wp) :: mu_cam = 0.0_wp
   end type cam_deck_t
 
-  !> The group's per-step arrays (one value per step, or one for all).
-  character(*), parameter :: per_step_arrays(4) = [character(len=7) :: "theta", "f2", "vdir", "ds_dphi"]
-
   !> Template deck, one line per entry.
   character(*), parameter :: cam_template(*) = [character(len=100) :: &
     "! kinetostat deck: cam with a translating follower in a guide (manual section 7).", &
@@ -99,9 +96,6 @@ contains
     !> Number of steps as given (an integer deck variable, read as a real: see require_whole).
     real(wp) :: n
     integer :: k
-    !> Elements allocated for each per-step array the deck may give (see deck_array_capacities).
-    integer, allocatable :: capacity(:)
-    integer :: stat
     type(deck_context_t) :: ctx
     type(deck_rules_t) :: rules
     type(namelist_probe_t) :: probe
@@ -113,17 +107,16 @@ contains
     l = unset_real; l_over = unset_real; f = unset_real; f_cam = unset_real
     omega_dir = unset_real; phi_start = unset_real; dphi = unset_real
     n = unset_real
-    capacity = deck_array_capacities(source, ctx%group, per_step_arrays)
-    allocate (theta(capacity(1)), source=unset_real, stat=stat)
-    if (stat == 0) allocate (f2(capacity(2)), source=unset_real, stat=stat)
-    if (stat == 0) allocate (vdir(capacity(3)), source=unset_real, stat=stat)
-    if (stat == 0) allocate (ds_dphi(capacity(4)), source=unset_real, stat=stat)
-    if (stat /= 0) then
-      call values_out_of_memory(ctx, "theta, f2, vdir, ds_dphi", capacity, error)
-      return
-    end if
+    ! the per-step arrays: one value per step, or one for all
+    call probe%per_step(source, ctx, "theta", theta, error)
+    if (allocated(error)) return
+    call probe%per_step(source, ctx, "f2", f2, error)
+    if (allocated(error)) return
+    call probe%per_step(source, ctx, "vdir", vdir, error)
+    if (allocated(error)) return
+    call probe%per_step(source, ctx, "ds_dphi", ds_dphi, error)
+    if (allocated(error)) return
 
-    call probe%limit(per_step_arrays, max_deck_array, "values (one per step)")
     read (source%records, nml=cam, iostat=probe%ios, iomsg=probe%msg)
     do while (probe%retry(source)) ! on failure: find the line and the assignment
       read (probe%records, nml=cam, iostat=probe%ios, iomsg=probe%msg)
