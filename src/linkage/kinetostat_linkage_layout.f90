@@ -24,7 +24,7 @@ module kinetostat_linkage_layout
   use kinetostat_drawing, only: drawing_t, force_load
   use kinetostat_bodies, only: mass_model_t
   use kinetostat_linkage, only: linkage_t, linkage_step_t, pair_r, pair_p, linkage_reference_pose, linkage_assemble, &
-    linkage_motion, linkage_statics, link_point_state, point_position, linkage_work_t
+    linkage_motion, linkage_fast_motion, linkage_statics, link_point_state, point_position, linkage_work_t
   use kinetostat_linkage_structure, only: structure_lines
   use kinetostat_linkage_friction, only: linkage_friction_t, linkage_friction_solve
   use kinetostat_linkage_friction_table, only: add_friction_columns, friction_values, friction_integrals, &
@@ -493,27 +493,35 @@ contains
     !> A steady cycle: the step's true motion.
     type(motion_t), intent(in), optional :: motion
     integer :: i, nm
+    logical :: fast
     nm = size(deck%moment_load)
     call linkage_drive_values(deck, k, st%dq, st%dv, st%da)
     if (present(motion)) then
       st%dv(1) = motion%omega
       st%da(1) = motion%eps
     end if
-    call linkage_assemble(deck%mech, dq_from, st%dq, q, st%work, error)
-    if (allocated(error)) then
-      error%message = where()//": "//error%message
-      return
-    end if
-    dq_from = st%dq
-    step%q = q
     if (allocated(step%qd)) then
       if (size(step%qd) /= size(q)) deallocate (step%qd, step%qdd)
     end if
     if (.not. allocated(step%qd)) allocate (step%qd(size(q)), step%qdd(size(q)))
-    call linkage_motion(deck%mech, q, st%dv, st%da, step%qd, step%qdd, st%work, error)
-    if (allocated(error)) then
-      error%message = where()//": the velocities are undetermined (a dead position)"
-      return
+    ! every unit an input unit or a dyad: the poses, velocities and accelerations in one pass;
+    ! otherwise (or where that declines) by linkage_assemble and linkage_motion
+    call linkage_fast_motion(deck%mech, dq_from, st%dq, st%dv, st%da, q, step%qd, step%qdd, st%work, fast)
+    if (.not. fast) then
+      call linkage_assemble(deck%mech, dq_from, st%dq, q, st%work, error)
+      if (allocated(error)) then
+        error%message = where()//": "//error%message
+        return
+      end if
+    end if
+    dq_from = st%dq
+    step%q = q
+    if (.not. fast) then
+      call linkage_motion(deck%mech, q, st%dv, st%da, step%qd, step%qdd, st%work, error)
+      if (allocated(error)) then
+        error%message = where()//": the velocities are undetermined (a dead position)"
+        return
+      end if
     end if
     do i = 1, size(st%fval)
       st%fval(i) = linkage_load_value(deck, deck%force_load(i), k, linkage_table_position(deck%mech, deck%force_load(i), q))
@@ -758,12 +766,15 @@ contains
     real(wp), intent(in) :: dq(:)
     type(linkage_step_t), intent(in) :: s
     real(wp), intent(out) :: v(:)
-    real(wp) :: floor, f(2), lever
+    real(wp) :: floor, f(2), lever, length
+    ! each pair's force's length (one hypot a pair, for the floor and the row).
+    real(wp) :: lengths(size(deck%mech%pairs))
     integer :: d, ip, pos, nd
     nd = size(deck%mech%drives)
     floor = 0.0_wp
     do ip = 1, size(deck%mech%pairs)
-      floor = max(floor, magnitude(s%f(:, ip)))
+      lengths(ip) = magnitude(s%f(:, ip))
+      floor = max(floor, lengths(ip))
     end do
     floor = noise_rel * floor
     lever = floor * deck%mech%size
@@ -778,9 +789,16 @@ contains
     end do
     do ip = 1, size(deck%mech%pairs)
       f = s%f(:, ip)
-      if (magnitude(f) <= floor) f = 0.0_wp
-      where (abs(f) <= floor) f = 0.0_wp
-      v(pos + 1) = magnitude(f)
+      length = lengths(ip)
+      if (length <= floor) then
+        f = 0.0_wp
+        length = 0.0_wp
+      else if (abs(f(1)) <= floor .or. abs(f(2)) <= floor) then
+        ! a component below the floor is dropped: the length of what is left
+        where (abs(f) <= floor) f = 0.0_wp
+        length = magnitude(f)
+      end if
+      v(pos + 1) = length
       v(pos + 2) = angle_360_deg(f)
       v(pos + 3:pos + 4) = f
       pos = pos + 4
