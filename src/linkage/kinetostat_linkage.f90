@@ -1000,7 +1000,7 @@ contains
   !> as the second opinion (step%solver_gap; 0 at the other steps). Otherwise: by the Lagrange
   !> multipliers, with the group method as the second opinion where a unit was factored by
   !> LU (step%solver_gap).
-  pure subroutine linkage_statics(mech, fval, mval, step, work, error)
+  pure subroutine linkage_statics(mech, fval, mval, step, work, error, moved)
     !> The linkage.
     type(linkage_t), intent(in) :: mech
     !> Force magnitudes (N) and moments (N*m) of the step.
@@ -1010,18 +1010,23 @@ contains
     !> Workspace (J and its factors at the last poses).
     type(linkage_work_t), intent(inout) :: work
     type(error_t), allocatable, intent(out) :: error
+    !> True: linkage_fast_motion solved step%q with `work` just before (its velocity
+    !> analogues and turns are those of step%q).
+    logical, intent(in), optional :: moved
     real(wp) :: terms, power, s(2), vs(2), as(2), ref(2), f_length, fk(2)
     integer :: n, k, d, i
-    logical :: closed, fast
+    logical :: closed, fast, known
     n = size(mech%links)
     call work_ready(mech, work)
+    known = .false.
+    if (present(moved)) known = moved
     fast = use_fast(work) .and. work%has_fast
-    if (fast) fast = same_poses(work%q_fast, step%q)
+    if (fast .and. .not. known) fast = same_poses(work%q_fast, step%q)
     if (.not. fast) then
       call work_factored(mech, step%q, work, error)
       if (allocated(error)) return
     end if
-    call work_turns(work, step%q)
+    if (.not. (fast .and. known)) call work_turns(work, step%q)
     call generalised_loads(mech, step%q, step%qd, step%qdd, fval, mval, work%gen, work%cs, work%s_cm, work%a_cm)
 
     ! (a step reused from the step before keeps its arrays)
@@ -1521,12 +1526,15 @@ contains
     real(wp), intent(in) :: cs(:, 0:)
     !> Each link's centre of mass (m) and its acceleration (m/s^2), 2 x n.
     real(wp), intent(out) :: s_cm(:, :), a_cm(:, :)
-    real(wp) :: s(2), vs(2), as(2), f(2), w(2)
+    real(wp) :: s(2), as(2), f(2), w(2), r(2)
     integer :: i, k
     gen = 0.0_wp
     do i = 1, size(mech%links)
       associate (lk => mech%links(i))
-        call link_point_state(mech, q, qd, qdd, i, lk%s, s, vs, as, cs)
+        ! (link_point_state's arithmetic: the centre of mass from the reference point, r)
+        r = turned(cs, i, lk%s - lk%c)
+        s = q(3 * i - 2:3 * i - 1) + r
+        as = qdd(3 * i - 2:3 * i - 1) + qdd(3 * i) * perp(r) - qd(3 * i)**2 * r
         s_cm(:, i) = s
         a_cm(:, i) = as
         f = lk%m * (mech%gravity - as)

@@ -210,12 +210,11 @@ contains
     qd = 0.0_wp
     ok = .false.
     ! each pair's points, once for the poses (dyad_accelerations and dyad_reactions take them)
-    ! (position_cs's arithmetic with the plan's local points)
+    ! (position_cs's arithmetic with the plan's local points; element by element, which
+    ! takes no memcpy for two numbers)
     do k = 1, size(plan%ia)
-      plan%xa(:, k) = plan%da(:, k)
-      if (plan%ia(k) > 0) plan%xa(:, k) = q(3 * plan%ia(k) - 2:3 * plan%ia(k) - 1) + turned(cs, plan%ia(k), plan%da(:, k))
-      plan%xb(:, k) = plan%db(:, k)
-      if (plan%ib(k) > 0) plan%xb(:, k) = q(3 * plan%ib(k) - 2:3 * plan%ib(k) - 1) + turned(cs, plan%ib(k), plan%db(:, k))
+      call place_point(plan%ia(k), plan%da(1, k), plan%da(2, k), plan%xa(1, k), plan%xa(2, k))
+      call place_point(plan%ib(k), plan%db(1, k), plan%db(2, k), plan%xb(1, k), plan%xb(2, k))
     end do
     do un = 1, size(plan%kind)
       if (plan%kind(un) == unit_input) then
@@ -283,6 +282,20 @@ contains
     end do
     ok = .true.
   contains
+    !> The point (x1, x2) of link i at (d1, d2) from its reference point at the reference
+    !> position (the frame: at (d1, d2)), in the poses q.
+    pure subroutine place_point(i, d1, d2, x1, x2)
+      integer, intent(in) :: i
+      real(wp), intent(in) :: d1, d2
+      real(wp), intent(out) :: x1, x2
+      if (i > 0) then
+        x1 = q(3 * i - 2) + (cs(1, i) * d1 - cs(2, i) * d2)
+        x2 = q(3 * i - 1) + (cs(2, i) * d1 + cs(1, i) * d2)
+      else
+        x1 = d1
+        x2 = d2
+      end if
+    end subroutine place_point
     !> Link i's velocities from its point x's velocity vx and its rate w.
     pure subroutine put_velocity(qd, i, x, vx, w)
       real(wp), intent(inout) :: qd(:)

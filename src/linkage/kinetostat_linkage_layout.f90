@@ -534,9 +534,9 @@ contains
     if (st%steady .and. present(motion)) then
       st%mval(nm + 1) = -st%j_turn * motion%eps
       if (size(st%mval) > nm + 1) st%mval(nm + 2) = st%j_turn * motion%eps
-      call linkage_statics(st%turning, st%fval, st%mval, step, st%work, error)
+      call linkage_statics(st%turning, st%fval, st%mval, step, st%work, error, fast)
     else
-      call linkage_statics(deck%mech, st%fval, st%mval, step, st%work, error)
+      call linkage_statics(deck%mech, st%fval, st%mval, step, st%work, error, fast)
     end if
     if (allocated(error)) then
       error%message = where()//": the reactions are undetermined (a dead position)"
