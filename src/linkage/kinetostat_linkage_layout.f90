@@ -676,7 +676,7 @@ contains
         if (self%deck%friction_on) frictions(k) = st%fr
         if (self%deck%dyn%mode == dynamics_reduced) call reduced_motion(self%deck, step, st%fval, &
           st%mval(1:size(self%deck%moment_load)), motions(k))
-        call fill_row(self%deck, st%dq, step, table%rows(:, k - first + 1))
+        call fill_row(self%deck, st%dq, step, table%rows(:, k - first + 1), table%force_angles_wanted)
         residual(k) = step%residual
         mismatch(k) = step%mismatch
         drive_effort(k) = step%effort(1)
@@ -760,21 +760,26 @@ contains
     motion%m = red%m
   end subroutine reduced_motion
 
-  !> One row of the step table: the step's drive values `dq` (rad or m) and results `s`.
-  pure subroutine fill_row(deck, dq, s, v)
+  !> One row of the step table: the step's drive values `dq` (rad or m) and results `s`;
+  !> without `angles` (step_table_t's force_angles_wanted: no output of the run shows them)
+  !> the forces' angle cells are 0.
+  pure subroutine fill_row(deck, dq, s, v, angles)
     type(linkage_deck_t), intent(in) :: deck
     real(wp), intent(in) :: dq(:)
     type(linkage_step_t), intent(in) :: s
     real(wp), intent(out) :: v(:)
+    logical, intent(in) :: angles
     real(wp) :: floor, f(2), lever, length
-    ! each pair's force's length (one hypot a pair, for the floor and the row).
-    real(wp) :: lengths(size(deck%mech%pairs))
     integer :: d, ip, pos, nd
     nd = size(deck%mech%drives)
+    ! each pair's force's length into its cell (one hypot a pair, for the floor and the row;
+    ! the cell, not an automatic array, which would be a malloc a row)
     floor = 0.0_wp
+    pos = nd
     do ip = 1, size(deck%mech%pairs)
-      lengths(ip) = magnitude(s%f(:, ip))
-      floor = max(floor, lengths(ip))
+      v(pos + 1) = magnitude(s%f(:, ip))
+      floor = max(floor, v(pos + 1))
+      pos = pos + merge(6, 4, deck%mech%pairs(ip)%kind == pair_p)
     end do
     floor = noise_rel * floor
     lever = floor * deck%mech%size
@@ -789,7 +794,7 @@ contains
     end do
     do ip = 1, size(deck%mech%pairs)
       f = s%f(:, ip)
-      length = lengths(ip)
+      length = v(pos + 1)
       if (length <= floor) then
         f = 0.0_wp
         length = 0.0_wp
@@ -799,7 +804,8 @@ contains
         length = magnitude(f)
       end if
       v(pos + 1) = length
-      v(pos + 2) = angle_360_deg(f)
+      v(pos + 2) = 0.0_wp
+      if (angles) v(pos + 2) = angle_360_deg(f)
       v(pos + 3:pos + 4) = f
       pos = pos + 4
       if (deck%mech%pairs(ip)%kind == pair_p) then
