@@ -21,7 +21,7 @@ module kinetostat_linkage
   use kinetostat_vec2, only: perp, cross, fast_magnitude
   use kinetostat_linkage_types, only: linkage_t, linkage_link_t, linkage_pair_t, linkage_drive_t, linkage_force_t, &
     linkage_unit_t, pair_r, pair_p
-  use kinetostat_linkage_closed, only: place_units, dyad_arms, point_position
+  use kinetostat_linkage_closed, only: place_units, units_pairs, dyad_arms, point_position
   use kinetostat_linkage_constraints, only: linkage_rows, pair_row, drive_row, linkage_reference_pose, &
     link_point_state, set_turns, turned, position_cs, constraints, quadratic_terms
   use kinetostat_linkage_small, only: solve3, two_body_solve, small_factors_t, factor3, solve3_factored, dyad_factor, &
@@ -35,6 +35,7 @@ module kinetostat_linkage
   public :: linkage_step_t, linkage_work_t, pair_r, pair_p
   public :: linkage_rows, pair_row, drive_row, point_position, link_point_state
   public :: linkage_assemble, linkage_assemble_newton, linkage_motion, linkage_statics, linkage_reference_pose
+  public :: linkage_fast_motion
   public :: linkage_worst_unit
   public :: linkage_velocity_analogues, linkage_free_body, linkage_reaction_gap
 
@@ -128,6 +129,8 @@ module kinetostat_linkage
     logical :: closed = .false.
     !> The dyads' arms for the closed forms (kinetostat_linkage_closed's dyad_arms).
     real(wp), allocatable :: arms(:, :)
+    !> Each unit's pairs for the closed forms (kinetostat_linkage_closed's units_pairs).
+    integer, allocatable :: pairs_of(:, :)
     !> Each unit's order (3 x its links), columns of J and trsm_table (largest order x units).
     integer, allocatable :: unit_order(:), unit_cols(:, :), unit_trsm(:, :, :)
     !> Each unit's diagonal block of J, its LU factors and row interchanges (a unit solved in
@@ -300,6 +303,7 @@ contains
     if (allocated(work%unit_order)) deallocate (work%unit_order, work%unit_cols, work%unit_trsm, work%unit_block, &
                                                 work%unit_lu, work%unit_ipiv, work%unit_small, work%unit_fac, &
                                                 work%unit_dyad, work%arms, work%jl_place)
+    if (allocated(work%pairs_of)) deallocate (work%pairs_of)
     if (.not. allocated(mech%units)) return
     nu = size(mech%units)
     if (nu == 0) return
@@ -332,6 +336,7 @@ contains
       work%unit_dyad(:, u) = dyad_rows(mech, mech%units(u))
     end do
     work%arms = dyad_arms(mech)
+    work%pairs_of = units_pairs(mech)
     allocate (work%jl_place(2, nr), source=0)
     do u = 1, nu
       do i = 1, size(mech%units(u)%rows)
@@ -361,14 +366,23 @@ contains
     real(wp), intent(in) :: q(:)
     type(linkage_work_t), intent(inout) :: work
     logical, intent(out) :: ok
-    integer :: d, n3
     ok = .true.
     if (work%has_fast) then
       if (same_poses(work%q_fast, q)) return
     end if
+    call work_turns(work, q)
+    call points_analogues(mech, q, work, ok)
+  end subroutine fast_analogues
+
+  !> fast_analogues at poses q whose turns work%cs holds, whatever work%v holds.
+  pure subroutine points_analogues(mech, q, work, ok)
+    type(linkage_t), intent(in) :: mech
+    real(wp), intent(in) :: q(:)
+    type(linkage_work_t), intent(inout) :: work
+    logical, intent(out) :: ok
+    integer :: d, n3
     work%has_fast = .false.
     n3 = size(q)
-    call work_turns(work, q)
     do d = 1, size(mech%drives)
       work%rate(:) = 0.0_wp
       work%rate(d) = 1.0_wp
@@ -377,7 +391,7 @@ contains
     end do
     work%q_fast(:) = q
     work%has_fast = .true.
-  end subroutine fast_analogues
+  end subroutine points_analogues
 
   !> Factors J (work%jac): each unit's diagonal block, or the whole J densely. An error: a
   !> block (J) is singular or ill-conditioned (factor_dense's verdict).
@@ -677,25 +691,11 @@ contains
     !> Workspace (J and its factors at the last poses).
     type(linkage_work_t), intent(inout) :: work
     type(error_t), allocatable, intent(out) :: error
-    integer :: m, s
     logical :: placed
     call work_ready(mech, work)
     if (work%closed) then
-      m = substeps(mech, dq_from, dq)
-      ! (the turns' cos and sin go with the poses: place_units updates them as it places)
-      call work_turns(work, q)
-      work%has_cs = .false.
-      work%q_new(:) = q
-      placed = .true.
-      do s = 1, m - 1
-        call place_units(mech, dq_from + (dq - dq_from) * (real(s, wp) / real(m, wp)), work%q_new, placed, work%cs, &
-                         work%arms)
-        if (.not. placed) exit
-      end do
-      if (placed) call place_units(mech, dq, work%q_new, placed, work%cs, work%arms)
+      call place_closed(mech, dq_from, dq, q, work, placed)
       if (placed) then
-        work%q_cs(:) = work%q_new
-        work%has_cs = .true.
         if (use_fast(work)) then
           ! the velocity analogues from the points (no J): their 2 x 2 systems clear of a
           ! zero determinant, or J decides below
@@ -715,6 +715,70 @@ contains
     end if
     call linkage_assemble_newton(mech, dq_from, dq, q, work, error)
   end subroutine linkage_assemble
+
+  !> The closed forms' placing (every unit an input unit of one link or a dyad): work%q_new
+  !> the poses at drive values dq from poses q at dq_from, by place_units in substeps, each
+  !> on the branch nearest to the substep before; work%cs their turns. placed false where a
+  !> closed form has no position.
+  pure subroutine place_closed(mech, dq_from, dq, q, work, placed)
+    type(linkage_t), intent(in) :: mech
+    real(wp), intent(in) :: dq_from(:), dq(:), q(:)
+    type(linkage_work_t), intent(inout) :: work
+    logical, intent(out) :: placed
+    integer :: m, s
+    m = substeps(mech, dq_from, dq)
+    ! (the turns' cos and sin go with the poses: place_units updates them as it places)
+    call work_turns(work, q)
+    work%has_cs = .false.
+    work%q_new(:) = q
+    placed = .true.
+    do s = 1, m - 1
+      call place_units(mech, dq_from + (dq - dq_from) * (real(s, wp) / real(m, wp)), work%q_new, placed, work%cs, &
+                       work%arms, work%pairs_of)
+      if (.not. placed) return
+    end do
+    call place_units(mech, dq, work%q_new, placed, work%cs, work%arms, work%pairs_of)
+    if (.not. placed) return
+    work%q_cs(:) = work%q_new
+    work%has_cs = .true.
+  end subroutine place_closed
+
+  !> A step of the fast path in one pass (every unit an input unit of one link or a dyad):
+  !> linkage_assemble's closed forms, then linkage_motion's velocities and accelerations from
+  !> the points, without their checks of which poses the workspace holds. q: in, the poses at
+  !> drive values dq_from; out, at dq; qd, qdd their velocities and accelerations for the
+  !> drives' rates dv and accelerations da. done false (q, qd and qdd as they came): not a
+  !> step for the fast path (another kind of unit, a closed form without a position, a 2 x 2
+  !> near a zero determinant): linkage_assemble and linkage_motion decide.
+  pure subroutine linkage_fast_motion(mech, dq_from, dq, dv, da, q, qd, qdd, work, done)
+    !> The linkage.
+    type(linkage_t), intent(in) :: mech
+    !> Drive values of the poses q and the wanted ones, rad or m.
+    real(wp), intent(in) :: dq_from(:), dq(:)
+    !> Drive rates and accelerations (rad/s, rad/s^2 or m/s, m/s^2).
+    real(wp), intent(in) :: dv(:), da(:)
+    !> Poses: in, assembled at dq_from; out, at dq.
+    real(wp), intent(inout) :: q(:)
+    !> Velocities and accelerations of the poses.
+    real(wp), intent(inout) :: qd(:), qdd(:)
+    !> Workspace.
+    type(linkage_work_t), intent(inout) :: work
+    !> The step was solved here.
+    logical, intent(out) :: done
+    integer :: d
+    done = .false.
+    call work_ready(mech, work)
+    if (.not. use_fast(work)) return
+    call place_closed(mech, dq_from, dq, q, work, done)
+    if (done) call points_analogues(mech, work%q_new, work, done)
+    if (.not. done) return
+    q(:) = work%q_new
+    qd = 0.0_wp
+    do d = 1, size(mech%drives)
+      qd = qd + work%v(1:size(q), d) * dv(d)
+    end do
+    call dyad_accelerations(mech, work%plan, q, work%cs, qd, da, qdd)
+  end subroutine linkage_fast_motion
 
   !> The number of substeps from drive values dq_from to dq (a turn of at most
   !> max_substep_angle, a stroke of at most max_substep_stroke of the linkage's size each).
@@ -936,7 +1000,7 @@ contains
   !> as the second opinion (step%solver_gap; 0 at the other steps). Otherwise: by the Lagrange
   !> multipliers, with the group method as the second opinion where a unit was factored by
   !> LU (step%solver_gap).
-  pure subroutine linkage_statics(mech, fval, mval, step, work, error)
+  pure subroutine linkage_statics(mech, fval, mval, step, work, error, moved)
     !> The linkage.
     type(linkage_t), intent(in) :: mech
     !> Force magnitudes (N) and moments (N*m) of the step.
@@ -946,18 +1010,23 @@ contains
     !> Workspace (J and its factors at the last poses).
     type(linkage_work_t), intent(inout) :: work
     type(error_t), allocatable, intent(out) :: error
+    !> True: linkage_fast_motion solved step%q with `work` just before (its velocity
+    !> analogues and turns are those of step%q).
+    logical, intent(in), optional :: moved
     real(wp) :: terms, power, s(2), vs(2), as(2), ref(2), f_length, fk(2)
     integer :: n, k, d, i
-    logical :: closed, fast
+    logical :: closed, fast, known
     n = size(mech%links)
     call work_ready(mech, work)
+    known = .false.
+    if (present(moved)) known = moved
     fast = use_fast(work) .and. work%has_fast
-    if (fast) fast = same_poses(work%q_fast, step%q)
+    if (fast .and. .not. known) fast = same_poses(work%q_fast, step%q)
     if (.not. fast) then
       call work_factored(mech, step%q, work, error)
       if (allocated(error)) return
     end if
-    call work_turns(work, step%q)
+    if (.not. (fast .and. known)) call work_turns(work, step%q)
     call generalised_loads(mech, step%q, step%qd, step%qdd, fval, mval, work%gen, work%cs, work%s_cm, work%a_cm)
 
     ! (a step reused from the step before keeps its arrays)
@@ -1017,8 +1086,9 @@ contains
     end if
 
     ! self-check 1: every link's equilibrium with the physical forces at their points (the
-    ! centres of mass and their accelerations of generalised_loads)
-    call work_turns(work, step%q)
+    ! centres of mass and their accelerations of generalised_loads; the fast path's reactions
+    ! kept the turns of step%q)
+    if (.not. fast) call work_turns(work, step%q)
     work%bal(:) = link_balance_t()
     do i = 1, n
       ref = step%q(3 * i - 2:3 * i - 1)
@@ -1041,13 +1111,13 @@ contains
     end do
     do k = 1, size(mech%pairs)
       associate (pr => mech%pairs(k))
+        ! (the force's length once for both links: |f| = |-f|; fk: a copy of fixed size, so
+        ! that -fk takes no temporary array from the heap)
+        fk = step%f(:, k)
+        f_length = fast_magnitude(fk)
         if (pr%kind == pair_r) then
           ! each link's own coordinates of the joint (they differ by Newton's residual, whose
           ! lever would otherwise show in the moments of a link whose loads all act there)
-          ! (the force's length once for both links: |f| = |-f|)
-          ! (fk: a copy of fixed size, so that -fk takes no temporary array from the heap)
-          fk = step%f(:, k)
-          f_length = fast_magnitude(fk)
           if (fast) then
             ! (the points the fast path took at these poses)
             s = work%plan%xa(:, k)
@@ -1056,31 +1126,31 @@ contains
             s = position_cs(mech, step%q, work%cs, pr%a, pr%at)
             vs = position_cs(mech, step%q, work%cs, pr%b, pr%at)
           end if
-          call add_on(work%bal, pr%a, s, fk, 0.0_wp, f_length)
-          call add_on(work%bal, pr%b, vs, -fk, 0.0_wp, f_length)
+          call balance_on(work%bal, step%q, pr%a, s, fk, 0.0_wp, f_length)
+          call balance_on(work%bal, step%q, pr%b, vs, -fk, 0.0_wp, f_length)
         else
           if (fast) then
             s = work%plan%xa(:, k)
           else
             s = position_cs(mech, step%q, work%cs, pr%a + pr%b - pr%guide, pr%at)
           end if
-          fk = step%f(:, k)
-          f_length = fast_magnitude(fk)
-          call add_on(work%bal, pr%a, s, fk, step%couple(k), f_length)
-          call add_on(work%bal, pr%b, s, -fk, -step%couple(k), f_length)
+          call balance_on(work%bal, step%q, pr%a, s, fk, step%couple(k), f_length)
+          call balance_on(work%bal, step%q, pr%b, s, -fk, -step%couple(k), f_length)
         end if
       end associate
     end do
     do d = 1, size(mech%drives)
       associate (pr => mech%pairs(mech%drives(d)%pair))
         if (pr%kind == pair_r) then
-          call add_on(work%bal, pr%a, [0.0_wp, 0.0_wp], [0.0_wp, 0.0_wp], step%effort(d))
-          call add_on(work%bal, pr%b, [0.0_wp, 0.0_wp], [0.0_wp, 0.0_wp], -step%effort(d))
+          ! (a couple only)
+          if (pr%a > 0 .and. step%effort(d) /= 0.0_wp) call balance_add_couple(work%bal(pr%a), step%effort(d))
+          if (pr%b > 0 .and. step%effort(d) /= 0.0_wp) call balance_add_couple(work%bal(pr%b), -step%effort(d))
         else
           s = position_cs(mech, step%q, work%cs, pr%a + pr%b - pr%guide, pr%at)
           vs = turned(work%cs, pr%guide, pr%u) * step%effort(d)
-          call add_on(work%bal, pr%a, s, vs, 0.0_wp)
-          call add_on(work%bal, pr%b, s, -vs, 0.0_wp)
+          f_length = fast_magnitude(vs)
+          call balance_on(work%bal, step%q, pr%a, s, vs, 0.0_wp, f_length)
+          call balance_on(work%bal, step%q, pr%b, s, -vs, 0.0_wp, f_length)
         end if
       end associate
     end do
@@ -1103,17 +1173,6 @@ contains
       step%mismatch = max(step%mismatch, power_mismatch(step%effort(d), power, terms))
     end do
   contains
-    !> Adds force f at point p and couple c to link i's balance (nothing for the frame); f_len:
-    !> fast_magnitude(f) when the caller has it.
-    pure subroutine add_on(bal, i, p, f, c, f_len)
-      type(link_balance_t), intent(inout) :: bal(:)
-      integer, intent(in) :: i
-      real(wp), intent(in) :: p(2), f(2), c
-      real(wp), intent(in), optional :: f_len
-      if (i == 0) return
-      if (f(1) /= 0.0_wp .or. f(2) /= 0.0_wp) call balance_add_force(bal(i), step%q(3 * i - 2:3 * i - 1), p, f, f_len)
-      if (c /= 0.0_wp) call balance_add_couple(bal(i), c)
-    end subroutine add_on
     !> Direction of force fc in the step's pose.
     pure function force_dir(fc) result(w)
       type(linkage_force_t), intent(in) :: fc
@@ -1122,6 +1181,24 @@ contains
       if (fc%follow) w = turned(work%cs, fc%link, fc%dir)
     end function force_dir
   end subroutine linkage_statics
+
+  !> Adds force f (N; f_len: its fast_magnitude) at point p (m) and couple c (N*m) to link
+  !> i's balance, its moments about the link's reference point of poses q (nothing for the
+  !> frame; a zero force or couple is not added).
+  pure subroutine balance_on(bal, q, i, p, f, c, f_len)
+    type(link_balance_t), intent(inout) :: bal(:)
+    real(wp), intent(in) :: q(:), p(2), f(2), c, f_len
+    integer, intent(in) :: i
+    real(wp) :: origin(2)
+    if (i == 0) return
+    if (f(1) /= 0.0_wp .or. f(2) /= 0.0_wp) then
+      ! (a copy of fixed size: no packing of the section of an assumed-shape q)
+      origin(1) = q(3 * i - 2)
+      origin(2) = q(3 * i - 1)
+      call balance_add_force(bal(i), origin, p, f, f_len)
+    end if
+    if (c /= 0.0_wp) call balance_add_couple(bal(i), c)
+  end subroutine balance_on
 
   !> The reactions by the Lagrange multipliers of the constraints, J^T lambda = -Q (Q: the
   !> generalised loads in work%gen; J's factors in work at the step's poses, whose turns
@@ -1449,12 +1526,15 @@ contains
     real(wp), intent(in) :: cs(:, 0:)
     !> Each link's centre of mass (m) and its acceleration (m/s^2), 2 x n.
     real(wp), intent(out) :: s_cm(:, :), a_cm(:, :)
-    real(wp) :: s(2), vs(2), as(2), f(2), w(2)
+    real(wp) :: s(2), as(2), f(2), w(2), r(2)
     integer :: i, k
     gen = 0.0_wp
     do i = 1, size(mech%links)
       associate (lk => mech%links(i))
-        call link_point_state(mech, q, qd, qdd, i, lk%s, s, vs, as, cs)
+        ! (link_point_state's arithmetic: the centre of mass from the reference point, r)
+        r = turned(cs, i, lk%s - lk%c)
+        s = q(3 * i - 2:3 * i - 1) + r
+        as = qdd(3 * i - 2:3 * i - 1) + qdd(3 * i) * perp(r) - qd(3 * i)**2 * r
         s_cm(:, i) = s
         a_cm(:, i) = as
         f = lk%m * (mech%gravity - as)

@@ -10,7 +10,7 @@ module kinetostat_linkage_closed
   use kinetostat_linkage_types, only: linkage_t, pair_r
   implicit none
   private
-  public :: place_units, dyad_arms, point_position, turn_of, turned, position_cs, unit_pairs, dyad_pairs
+  public :: place_units, units_pairs, dyad_arms, point_position, turn_of, turned, position_cs, unit_pairs, dyad_pairs
   public :: circle_circle, circle_line, line_line, turn_through, turn_between, unwrap
 
   !> Two lines are taken as parallel (no closed form; Newton's method decides) when the sine
@@ -25,7 +25,7 @@ contains
   !> its kind (place_dyad). placed is false where a unit has none or no position. The
   !> links' turns as cos and sin (cs) come in with q and go out with the new poses: each
   !> turn's cos and sin taken once, where the link is placed.
-  pure subroutine place_units(mech, dq, q, placed, cs, arms)
+  pure subroutine place_units(mech, dq, q, placed, cs, arms, pairs_of)
     !> The linkage.
     type(linkage_t), intent(in) :: mech
     !> Drive values, rad or m.
@@ -38,14 +38,28 @@ contains
     real(wp), intent(inout) :: cs(:, 0:)
     !> The dyads' arms (dyad_arms).
     real(wp), intent(in) :: arms(:, :)
-    integer :: u, nk, d, lk, kn, kp(3)
+    !> Each unit's pairs as unit_pairs and dyad_pairs find them (units_pairs), when the
+    !> caller keeps them.
+    integer, intent(in), optional :: pairs_of(:, :)
+    integer :: u, nk, d, lk, kn, kp(3), inner, e(2)
     real(wp) :: val, th, x(2), w(2)
     placed = .false.
     do u = 1, size(mech%units)
-      call unit_pairs(mech, u, kp, nk, d)
+      if (present(pairs_of)) then
+        kp = pairs_of(1:3, u)
+        nk = pairs_of(4, u)
+        d = pairs_of(5, u)
+        inner = pairs_of(6, u)
+        e = pairs_of(7:8, u)
+      else
+        call unit_pairs(mech, u, kp, nk, d)
+        inner = -1
+        e = 0
+      end if
       if (nk > 3) return
       if (mech%units(u)%class == 2 .and. nk == 3) then
-        call place_dyad(mech, mech%units(u)%links, kp, q, placed, cs, arms(:, u))
+        if (inner < 0) call dyad_pairs(mech, mech%units(u)%links, kp, inner, e)
+        call place_dyad(mech, mech%units(u)%links, inner, e, q, placed, cs, arms(:, u))
         if (.not. placed) return
         cycle
       end if
@@ -96,24 +110,42 @@ contains
     end do
   end subroutine unit_pairs
 
-  !> The dyad of links set(1), set(2) and pairs kp (one inner, one outer on each link) placed
+  !> Every unit's pairs for place_units (8 x units): unit_pairs' kp(1:3), nk and d, and a
+  !> dyad's (class II, three pairs) inner pair and outer pairs e(1:2) of dyad_pairs (-1 and
+  !> 0 for any other unit).
+  pure function units_pairs(mech) result(pairs_of)
+    !> The linkage.
+    type(linkage_t), intent(in) :: mech
+    integer, allocatable :: pairs_of(:, :)
+    integer :: u, kp(3), nk, d, inner, e(2)
+    allocate (pairs_of(8, size(mech%units)), source=0)
+    do u = 1, size(mech%units)
+      call unit_pairs(mech, u, kp, nk, d)
+      inner = -1
+      e = 0
+      if (mech%units(u)%class == 2 .and. nk == 3) call dyad_pairs(mech, mech%units(u)%links, kp, inner, e)
+      pairs_of(:, u) = [kp, nk, d, inner, e]
+    end do
+  end function units_pairs
+
+  !> The dyad of links set(1), set(2), its inner pair and outer pairs e (of set(1), set(2); as
+  !> dyad_pairs finds them) placed
   !> in closed form: RRR two circles; RRP a circle and a line (the slider's turn is its
   !> guide's); RPR the common turn that brings the guide through the other link's joint;
   !> PRP two lines (both turns known); RPP the turning link at its joint with the sliding
   !> link's turn, then the sliding link by two lines. placed is false for PPP, for outer
   !> pairs both on one link, and where there is no position.
   !> arms: dyad_arms' column of the dyad; cs: as place_units'.
-  pure subroutine place_dyad(mech, set, kp, q, placed, cs, arms)
+  pure subroutine place_dyad(mech, set, inner, e, q, placed, cs, arms)
     type(linkage_t), intent(in) :: mech
-    integer, intent(in) :: set(2), kp(3)
+    integer, intent(in) :: set(2), inner, e(2)
     real(wp), intent(inout) :: q(:)
     logical, intent(out) :: placed
     real(wp), intent(inout) :: cs(:, 0:)
     real(wp), intent(in) :: arms(4)
-    integer :: j, inner, e(2), kr, kpp, lr, lp
+    integer :: j, kr, kpp, lr, lp
     real(wp) :: a(2), c(2), b(2), x(2), n1(2), n2(2), s1, s2, th, th2
     placed = .false.
-    call dyad_pairs(mech, set, kp, inner, e)
     if (inner == 0 .or. any(e == 0)) return
     b = mech%pairs(inner)%at
     associate (p1 => mech%pairs(e(1)), p2 => mech%pairs(e(2)), pin => mech%pairs(inner))

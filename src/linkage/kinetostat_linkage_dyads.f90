@@ -27,7 +27,7 @@ module kinetostat_linkage_dyads
   use kinetostat_kinds, only: wp
   use kinetostat_vec2, only: perp, cross
   use kinetostat_linkage_types, only: linkage_t, pair_r, pair_p
-  use kinetostat_linkage_closed, only: turned, position_cs, unit_pairs, dyad_pairs, turn_of
+  use kinetostat_linkage_closed, only: turned, unit_pairs, dyad_pairs, turn_of
   use kinetostat_linkage_small, only: small_screen
   implicit none
   private
@@ -60,6 +60,11 @@ module kinetostat_linkage_dyads
     !> Each pair's point on its link a and on its link b at the last poses (a sliding pair:
     !> the block's point for both), m (2 x pairs).
     real(wp), allocatable :: xa(:, :), xb(:, :)
+    !> Each pair's links whose points xa and xb are (a sliding pair: the block's link for
+    !> both; 0: the frame) and those points relative to their links' reference points at the
+    !> reference position (the frame: the points themselves), m (2 x pairs).
+    integer, allocatable :: ia(:), ib(:)
+    real(wp), allocatable :: da(:, :), db(:, :)
   end type dyad_plan_t
 
 contains
@@ -68,7 +73,7 @@ contains
   pure subroutine plan_dyads(mech, plan)
     type(linkage_t), intent(in) :: mech
     type(dyad_plan_t), intent(out) :: plan
-    integer :: u, nu, np, nk, d, kp(3), j, inner, e(2)
+    integer :: u, nu, np, nk, d, kp(3), j, inner, e(2), k
     plan%ok = .false.
     if (.not. allocated(mech%units)) return
     nu = size(mech%units)
@@ -76,6 +81,21 @@ contains
     allocate (plan%kind(nu), plan%link(2, nu), plan%pair(3, nu), plan%known(2, nu), source=0)
     allocate (plan%m(4, nu), plan%det(nu), plan%dw(2, nu), plan%pb(2, nu), plan%nb(2, nu), source=0.0_wp)
     allocate (plan%px(2, 2, nu), plan%dv(2, 2, nu), plan%xa(2, np), plan%xb(2, np), source=0.0_wp)
+    allocate (plan%ia(np), plan%ib(np), source=0)
+    allocate (plan%da(2, np), plan%db(2, np), source=0.0_wp)
+    do k = 1, np
+      associate (pr => mech%pairs(k))
+        if (pr%kind == pair_r) then
+          plan%ia(k) = pr%a
+          plan%ib(k) = pr%b
+        else
+          plan%ia(k) = pr%a + pr%b - pr%guide
+          plan%ib(k) = plan%ia(k)
+        end if
+        plan%da(:, k) = local_point(plan%ia(k), pr%at)
+        plan%db(:, k) = local_point(plan%ib(k), pr%at)
+      end associate
+    end do
     do u = 1, nu
       call unit_pairs(mech, u, kp, nk, d)
       if (nk > 3) return
@@ -103,6 +123,16 @@ contains
       end if
     end do
     plan%ok = .true.
+  contains
+    !> Point p (m) from link i's reference point at the reference position, as position_cs
+    !> takes it (the frame: p).
+    pure function local_point(i, p) result(x)
+      integer, intent(in) :: i
+      real(wp), intent(in) :: p(2)
+      real(wp) :: x(2)
+      x = p
+      if (i > 0) x = p - mech%links(i)%c
+    end function local_point
   end subroutine plan_dyads
 
   !> Pair k's point on link lk (one of its links; a sliding pair: the block's point) at the
@@ -180,16 +210,11 @@ contains
     qd = 0.0_wp
     ok = .false.
     ! each pair's points, once for the poses (dyad_accelerations and dyad_reactions take them)
-    do k = 1, size(mech%pairs)
-      associate (pr => mech%pairs(k))
-        if (pr%kind == pair_r) then
-          plan%xa(:, k) = position_cs(mech, q, cs, pr%a, pr%at)
-          plan%xb(:, k) = position_cs(mech, q, cs, pr%b, pr%at)
-        else
-          plan%xa(:, k) = position_cs(mech, q, cs, pr%a + pr%b - pr%guide, pr%at)
-          plan%xb(:, k) = plan%xa(:, k)
-        end if
-      end associate
+    ! (position_cs's arithmetic with the plan's local points; element by element, which
+    ! takes no memcpy for two numbers)
+    do k = 1, size(plan%ia)
+      call place_point(plan%ia(k), plan%da(1, k), plan%da(2, k), plan%xa(1, k), plan%xa(2, k))
+      call place_point(plan%ib(k), plan%db(1, k), plan%db(2, k), plan%xb(1, k), plan%xb(2, k))
     end do
     do un = 1, size(plan%kind)
       if (plan%kind(un) == unit_input) then
@@ -257,6 +282,20 @@ contains
     end do
     ok = .true.
   contains
+    !> The point (x1, x2) of link i at (d1, d2) from its reference point at the reference
+    !> position (the frame: at (d1, d2)), in the poses q.
+    pure subroutine place_point(i, d1, d2, x1, x2)
+      integer, intent(in) :: i
+      real(wp), intent(in) :: d1, d2
+      real(wp), intent(out) :: x1, x2
+      if (i > 0) then
+        x1 = q(3 * i - 2) + (cs(1, i) * d1 - cs(2, i) * d2)
+        x2 = q(3 * i - 1) + (cs(2, i) * d1 + cs(1, i) * d2)
+      else
+        x1 = d1
+        x2 = d2
+      end if
+    end subroutine place_point
     !> Link i's velocities from its point x's velocity vx and its rate w.
     pure subroutine put_velocity(qd, i, x, vx, w)
       real(wp), intent(inout) :: qd(:)

@@ -24,7 +24,7 @@ module kinetostat_linkage_layout
   use kinetostat_drawing, only: drawing_t, force_load
   use kinetostat_bodies, only: mass_model_t
   use kinetostat_linkage, only: linkage_t, linkage_step_t, pair_r, pair_p, linkage_reference_pose, linkage_assemble, &
-    linkage_motion, linkage_statics, link_point_state, point_position, linkage_work_t
+    linkage_motion, linkage_fast_motion, linkage_statics, link_point_state, point_position, linkage_work_t
   use kinetostat_linkage_structure, only: structure_lines
   use kinetostat_linkage_friction, only: linkage_friction_t, linkage_friction_solve
   use kinetostat_linkage_friction_table, only: add_friction_columns, friction_values, friction_integrals, &
@@ -493,27 +493,35 @@ contains
     !> A steady cycle: the step's true motion.
     type(motion_t), intent(in), optional :: motion
     integer :: i, nm
+    logical :: fast
     nm = size(deck%moment_load)
     call linkage_drive_values(deck, k, st%dq, st%dv, st%da)
     if (present(motion)) then
       st%dv(1) = motion%omega
       st%da(1) = motion%eps
     end if
-    call linkage_assemble(deck%mech, dq_from, st%dq, q, st%work, error)
-    if (allocated(error)) then
-      error%message = where()//": "//error%message
-      return
-    end if
-    dq_from = st%dq
-    step%q = q
     if (allocated(step%qd)) then
       if (size(step%qd) /= size(q)) deallocate (step%qd, step%qdd)
     end if
     if (.not. allocated(step%qd)) allocate (step%qd(size(q)), step%qdd(size(q)))
-    call linkage_motion(deck%mech, q, st%dv, st%da, step%qd, step%qdd, st%work, error)
-    if (allocated(error)) then
-      error%message = where()//": the velocities are undetermined (a dead position)"
-      return
+    ! every unit an input unit or a dyad: the poses, velocities and accelerations in one pass;
+    ! otherwise (or where that declines) by linkage_assemble and linkage_motion
+    call linkage_fast_motion(deck%mech, dq_from, st%dq, st%dv, st%da, q, step%qd, step%qdd, st%work, fast)
+    if (.not. fast) then
+      call linkage_assemble(deck%mech, dq_from, st%dq, q, st%work, error)
+      if (allocated(error)) then
+        error%message = where()//": "//error%message
+        return
+      end if
+    end if
+    dq_from = st%dq
+    step%q = q
+    if (.not. fast) then
+      call linkage_motion(deck%mech, q, st%dv, st%da, step%qd, step%qdd, st%work, error)
+      if (allocated(error)) then
+        error%message = where()//": the velocities are undetermined (a dead position)"
+        return
+      end if
     end if
     do i = 1, size(st%fval)
       st%fval(i) = linkage_load_value(deck, deck%force_load(i), k, linkage_table_position(deck%mech, deck%force_load(i), q))
@@ -526,9 +534,9 @@ contains
     if (st%steady .and. present(motion)) then
       st%mval(nm + 1) = -st%j_turn * motion%eps
       if (size(st%mval) > nm + 1) st%mval(nm + 2) = st%j_turn * motion%eps
-      call linkage_statics(st%turning, st%fval, st%mval, step, st%work, error)
+      call linkage_statics(st%turning, st%fval, st%mval, step, st%work, error, fast)
     else
-      call linkage_statics(deck%mech, st%fval, st%mval, step, st%work, error)
+      call linkage_statics(deck%mech, st%fval, st%mval, step, st%work, error, fast)
     end if
     if (allocated(error)) then
       error%message = where()//": the reactions are undetermined (a dead position)"
@@ -668,7 +676,7 @@ contains
         if (self%deck%friction_on) frictions(k) = st%fr
         if (self%deck%dyn%mode == dynamics_reduced) call reduced_motion(self%deck, step, st%fval, &
           st%mval(1:size(self%deck%moment_load)), motions(k))
-        call fill_row(self%deck, st%dq, step, table%rows(:, k - first + 1))
+        call fill_row(self%deck, st%dq, step, table%rows(:, k - first + 1), table%force_angles_wanted)
         residual(k) = step%residual
         mismatch(k) = step%mismatch
         drive_effort(k) = step%effort(1)
@@ -752,18 +760,26 @@ contains
     motion%m = red%m
   end subroutine reduced_motion
 
-  !> One row of the step table: the step's drive values `dq` (rad or m) and results `s`.
-  pure subroutine fill_row(deck, dq, s, v)
+  !> One row of the step table: the step's drive values `dq` (rad or m) and results `s`;
+  !> without `angles` (step_table_t's force_angles_wanted: no output of the run shows them)
+  !> the forces' angle cells are 0.
+  pure subroutine fill_row(deck, dq, s, v, angles)
     type(linkage_deck_t), intent(in) :: deck
     real(wp), intent(in) :: dq(:)
     type(linkage_step_t), intent(in) :: s
     real(wp), intent(out) :: v(:)
-    real(wp) :: floor, f(2), lever
+    logical, intent(in) :: angles
+    real(wp) :: floor, f(2), lever, length
     integer :: d, ip, pos, nd
     nd = size(deck%mech%drives)
+    ! each pair's force's length into its cell (one hypot a pair, for the floor and the row;
+    ! the cell, not an automatic array, which would be a malloc a row)
     floor = 0.0_wp
+    pos = nd
     do ip = 1, size(deck%mech%pairs)
-      floor = max(floor, magnitude(s%f(:, ip)))
+      v(pos + 1) = magnitude(s%f(:, ip))
+      floor = max(floor, v(pos + 1))
+      pos = pos + merge(6, 4, deck%mech%pairs(ip)%kind == pair_p)
     end do
     floor = noise_rel * floor
     lever = floor * deck%mech%size
@@ -778,10 +794,18 @@ contains
     end do
     do ip = 1, size(deck%mech%pairs)
       f = s%f(:, ip)
-      if (magnitude(f) <= floor) f = 0.0_wp
-      where (abs(f) <= floor) f = 0.0_wp
-      v(pos + 1) = magnitude(f)
-      v(pos + 2) = angle_360_deg(f)
+      length = v(pos + 1)
+      if (length <= floor) then
+        f = 0.0_wp
+        length = 0.0_wp
+      else if (abs(f(1)) <= floor .or. abs(f(2)) <= floor) then
+        ! a component below the floor is dropped: the length of what is left
+        where (abs(f) <= floor) f = 0.0_wp
+        length = magnitude(f)
+      end if
+      v(pos + 1) = length
+      v(pos + 2) = 0.0_wp
+      if (angles) v(pos + 2) = angle_360_deg(f)
       v(pos + 3:pos + 4) = f
       pos = pos + 4
       if (deck%mech%pairs(ip)%kind == pair_p) then
