@@ -10,7 +10,7 @@ module kinetostat_row_blocks
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_step_table, only: step_table_t
   use kinetostat_format, only: put_cells, cell_room
-  use kinetostat_decimal, only: put_cell_numbers
+  use kinetostat_decimal, only: put_cell_numbers, put_cell_lines
   implicit none
   private
   public :: put_row_blocks, put_row_blocks_two, worker_count, row_writer_t, text_sink_t, table_rows_t
@@ -148,10 +148,21 @@ contains
     type(text_buffer_t), intent(inout) :: out
     !> Unused (a table's rows are one section).
     type(text_buffer_t), intent(inout) :: later
-    integer :: k
-    ! room for every row at once (no copying while the buffer grows)
-    call out%reserve((last - first + 1) * self%row_room(size(self%columns)))
-    do k = first, last
+    integer :: k, last_framed
+    ! room for every row at once (no copying while the buffer grows; 8 bytes stored past it)
+    call out%reserve((last - first + 1) * self%row_room(size(self%columns)) + 8)
+    k = first
+    if (.not. allocated(self%table%void_flags) .and. len(self%separator) >= 1 .and. len(self%separator) <= 2 .and. &
+      len(self%opening) <= 8 .and. len(self%closing) < 8) then
+      ! no row without values: whole lines at once, but the run's last row (its own closing)
+      last_framed = min(last, max(self%table%total_rows, self%table%row_count()) - self%table%row_offset - 1)
+      if (last_framed >= first) then
+        call put_cell_lines(self%table%rows(:, first:last_framed), size(self%table%rows, 1), last_framed - first + 1, &
+          self%columns, self%opening, self%separator, self%closing//new_line("a"), out%data, out%length, self%whole)
+        k = last_framed + 1
+      end if
+    end if
+    do k = k, last
       if (len(self%opening) > 0) call out%append(self%opening)
       if (self%table%is_void(k) .or. len(self%separator) < 1 .or. len(self%separator) > 2) then
         call put_cells(out, self%table%rows(:, k), self%columns, self%whole, self%voidable, self%table%is_void(k), &
