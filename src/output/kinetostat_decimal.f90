@@ -835,10 +835,10 @@ contains
     real(wp), parameter :: ten12 = 1.0e12_wp
     !> The bytes "d." of the first digit d = 0, little-endian ("0" = 48, "." = 46).
     integer, parameter :: zero_point = 48 + 256 * 46
-    integer(int64) :: bits, q, high, low, sep_text, sep_word, open_word, close_word, p
+    integer(int64) :: bits, q, high, low, lead, half8, j, sep_text, sep_word, open_word, close_word, p
     integer :: cells(size(columns))
     real(wp) :: x, a, y, f
-    integer :: i, k, j, c, lead, half8, at, n_sep, n_open, n_close
+    integer :: i, k, c, at, n_sep, n_open, n_close
     n_sep = len(separator)
     n_open = len(opening)
     n_close = len(closing)
@@ -865,11 +865,11 @@ contains
         end if
         x = rows(c, k)
         bits = transfer(x, bits)
-        j = int(shiftr(shiftl(bits, 1), 53))      ! the biased binary exponent
+        j = shiftr(shiftl(bits, 1), 53)           ! the biased binary exponent
         a = abs(x)
         y = a * cell_scales(j)
         if (y >= cell_switch) then
-          j = j + 2048
+          j = j + 2048_int64
           y = a * cell_scales(j)
         end if
         fast: block
@@ -885,12 +885,12 @@ contains
           p = p + shiftr(bits, 63)               ! past the "-" of a negative x
           high = int(shiftr(int(q, i16) * by_ten8, 89))   ! the first five digits
           low = q - high * ten8                  ! the other eight
-          lead = int(shiftr(high * by_ten4, 40))
-          half8 = int(shiftr(low * by_ten4, 40))
+          lead = shiftr(high * by_ten4, 40)
+          half8 = shiftr(low * by_ten4, 40)
           buf(p + 1:p + 2) = transfer(int(zero_point + lead, int16), "ab")
-          buf(p + 3:p + 6) = transfer(digit_quads(int(high) - 10000 * lead), "abcd")
+          buf(p + 3:p + 6) = transfer(digit_quads(high - 10000_int64 * lead), "abcd")
           buf(p + 7:p + 10) = transfer(digit_quads(half8), "abcd")
-          buf(p + 11:p + 14) = transfer(digit_quads(int(low) - 10000 * half8), "abcd")
+          buf(p + 11:p + 14) = transfer(digit_quads(low - 10000_int64 * half8), "abcd")
           buf(p + 15:p + 22) = transfer(cell_exponent_words(j) + sep_word, "abcdefgh")
           p = p + 19 + n_sep
           cycle
