@@ -8,7 +8,7 @@
 !> change of scale, whole and half numbers, zeros), both signs, joined by "," and by ", ",
 !> every seventh column one of whole numbers: 3.2 * 10^4 values (10^7 with `tools/test
 !> --long`; a fixed seed, the first rows the same in both); and the same rows, four at a
-!> time, as whole lines framed as the JSON's (put_cell_lines).
+!> time, as whole lines framed as the JSON's.
 !> The reference writers fill a caller's buffer as the writer under test does, so their
 !> character(*) buffers are intent(inout) by design.
 ! allow(assumed-size-character-intent)
@@ -16,7 +16,7 @@ module test_cells
   use, intrinsic :: iso_fortran_env, only: int64
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use kinetostat_kinds, only: wp
-  use kinetostat_decimal, only: put_cell_numbers, put_cell_lines, put_es_compact, put_whole
+  use kinetostat_decimal, only: put_cell_numbers, put_es_compact, put_whole
   use kinetostat_text, only: int_str
   use test_harness, only: test_counts_t, check_true, long_checks, next, hex
   implicit none
@@ -31,9 +31,9 @@ module test_cells
   integer, parameter :: write_every = 1, long_write_every = 97
   !> Mismatches printed at most.
   integer, parameter :: max_shown = 5
-  !> Rows a block of put_cell_lines (lines framed as the JSON's rows).
+  !> Rows a block of put_cell_numbers (lines framed as the JSON's rows).
   integer, parameter :: block_rows = 4
-  !> The framing of a JSON row (put_cell_lines' opening and closing).
+  !> The framing of a JSON row (put_cell_numbers' opening and closing).
   character(*), parameter :: json_opening = "    [", json_closing = "],"
 
 contains
@@ -99,16 +99,16 @@ contains
       if (mod(r, 3) == 0) then
         ! the form without whole columns: every cell a full number
         call one_row(row, columns, spread(.false., 1, row_length), separator, theirs, expected)
-        call put_cell_numbers(row, columns, separator, mine, pos)
+        call put_cell_numbers(row, row_length, 1, columns, "", separator, "", mine, pos)
       else
-        call put_cell_numbers(row, columns, separator, mine, pos, whole)
+        call put_cell_numbers(row, row_length, 1, columns, "", separator, "", mine, pos, whole)
       end if
       if (pos /= expected .or. mine(1:pos) /= theirs(1:expected)) then
         bad = bad + 1
         if (bad <= max_shown) shown = shown//" [row "//int_str(r)//": "//first_difference(mine(1:pos), theirs(1:expected), &
           row, columns)//"]"
       end if
-      ! a block of rows as whole lines (put_cell_lines, the JSON's framing), every separator ", "
+      ! a block of rows as whole lines (put_cell_numbers, the JSON's framing), every separator ", "
       block(:, mod(r - 1, block_rows) + 1) = row
       call one_row(row, columns, whole, ", ", theirs, expected)
       expected_lines(n_expected_lines + 1:n_expected_lines + len(json_opening) + expected + len(json_closing) + 1) = &
@@ -116,7 +116,7 @@ contains
       n_expected_lines = n_expected_lines + len(json_opening) + expected + len(json_closing) + 1
       if (mod(r, block_rows) == 0) then
         n_lines = 0
-        call put_cell_lines(block, row_length, block_rows, columns, json_opening, ", ", json_closing//new_line("a"), &
+        call put_cell_numbers(block, row_length, block_rows, columns, json_opening, ", ", json_closing//new_line("a"), &
           lines, n_lines, whole)
         if (n_lines /= n_expected_lines .or. lines(1:n_lines) /= expected_lines(1:n_expected_lines)) then
           bad_lines = bad_lines + 1
@@ -146,13 +146,13 @@ contains
     row = [-1.234567890123456e-5_wp, 0.0_wp, 7.0_wp, -9.87654321e12_wp]
     buf = repeat("#", len(buf))
     pos = 10
-    call put_cell_numbers(row, [(i, i = 1, 4)], ",", buf, pos, [.false., .false., .true., .false.])
+    call put_cell_numbers(row, 4, 1, [(i, i = 1, 4)], "", ",", "", buf, pos, [.false., .false., .true., .false.])
     ok = buf(1:10) == repeat("#", 10) .and. buf(pos + 9:) == repeat("#", len(buf) - pos - 8) .and. &
       buf(11:pos) == "-1.234567890123E-005,0.000000000000E+000,7,-9.876543210000E+012"
     call check_true(t, "cells: a row's text in place, at most 8 characters stored past it", ok, "'"//buf(1:pos + 9)//"'")
   end subroutine test_room
 
-  !> Lines of rows (put_cell_lines): each framed by its opening and closing, the text in
+  !> Lines of rows (put_cell_numbers): each framed by its opening and closing, the text in
   !> place and at most 8 characters stored past it.
   subroutine test_lines_room(t)
     type(test_counts_t), intent(inout) :: t
@@ -163,7 +163,7 @@ contains
     rows = reshape([1.5_wp, -2.0_wp, 0.25_wp, 3.0e-11_wp, 4.0_wp, -0.0_wp], [3, 2])
     buf = repeat("#", len(buf))
     pos = 3
-    call put_cell_lines(rows, 3, 2, [3, 1], "[", ", ", "]"//new_line("a"), buf, pos)
+    call put_cell_numbers(rows, 3, 2, [3, 1], "[", ", ", "]"//new_line("a"), buf, pos)
     ok = buf(1:3) == "###" .and. buf(pos + 9:) == repeat("#", len(buf) - pos - 8) .and. &
       buf(4:pos) == "[2.500000000000E-001, 1.500000000000E+000]"//new_line("a")// &
       "[0.000000000000E+000, 3.000000000000E-011]"//new_line("a")

@@ -18,7 +18,7 @@ module kinetostat_decimal
   implicit none
   private
   public :: edit_f, edit_exponent, put_es_compact, put_whole, i16
-  public :: put_cell_number, put_cell_numbers, put_cell_lines
+  public :: put_cell_number, put_cell_numbers
 
   !> Integer kind of the exact products (128 bits).
   integer, parameter :: i16 = selected_int_kind(38)
@@ -760,30 +760,6 @@ contains
     call put_es_compact(x + 0.0_wp, cell_decimals, 3, buf, pos)
   end subroutine put_cell_number
 
-  !> The cells of one row appended to buf at pos+1.. (pos advanced): put_cell_number of
-  !> row(columns(i)) for every i, `separator` between them (put_cell_lines of one row
-  !> without framing). Room: 20 + len(separator) characters a cell and 8 more (stored past
-  !> the text, and overwritten by what follows).
-  pure subroutine put_cell_numbers(row, columns, separator, buf, pos, whole)
-    !> The row's values (finite where written).
-    real(wp), intent(in), contiguous :: row(:)
-    !> Indices into `row` of the cells, in order.
-    integer, intent(in), contiguous :: columns(:)
-    !> Text between two cells: one or two characters.
-    character(*), intent(in) :: separator
-    !> Output characters.
-    character(*), intent(inout) :: buf
-    !> Characters in use.
-    integer, intent(inout) :: pos
-    !> Per cell: a column of whole numbers (absent: none is).
-    logical, intent(in), contiguous, optional :: whole(:)
-    if (present(whole)) then
-      call put_cell_lines(row, size(row), 1, columns, "", separator, "", buf, pos, whole)
-    else
-      call put_cell_lines(row, size(row), 1, columns, "", separator, "", buf, pos)
-    end if
-  end subroutine put_cell_numbers
-
   !> Lines of cells appended to buf at pos+1.. (pos advanced): for each row k of `rows`,
   !> `opening`, put_cell_number of rows(columns(i), k) for every i with `separator` between
   !> them, then `closing` (the line's end included, if any). Room: 20 + len(separator)
@@ -797,7 +773,7 @@ contains
   !> its 13 digits made in the bytes of two integers, and the exponent with the separator
   !> stored as one integer from the table; the opening and the closing are one store each;
   !> zero is one copy; whole numbers and other magnitudes go through put_cell_number.
-  pure subroutine put_cell_lines(rows, n_values, n_rows, columns, opening, separator, closing, buf, pos, whole)
+  pure subroutine put_cell_numbers(rows, n_values, n_rows, columns, opening, separator, closing, buf, pos, whole)
     !> Values a row (the leading extent of `rows`).
     integer, intent(in) :: n_values
     !> Rows.
@@ -911,7 +887,7 @@ contains
       p = p + n_close
     end do
     pos = int(p)
-  end subroutine put_cell_lines
+  end subroutine put_cell_numbers
 
   !> Up to 8 characters as the bytes of one integer, the first in its lowest byte (stored in
   !> this order on a little-endian machine); the rest zero.
@@ -924,7 +900,7 @@ contains
     end do
   end function text_word
 
-  !> put_cell_lines' 13 digits of |x| (a normal double, bits its bits) times 10**s, exactly:
+  !> put_cell_numbers' 13 digits of |x| (a normal double, bits its bits) times 10**s, exactly:
   !> the 128-bit product of its mantissa and 5**s, shifted, rounded to the nearest integer,
   !> ties to even (0 <= s <= 22 and the result below 2**44: the shift lies in 9 .. 125).
   pure subroutine exact_cell_digits(bits, s, q)
