@@ -10,7 +10,7 @@ module kinetostat_row_blocks
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_step_table, only: step_table_t
   use kinetostat_format, only: put_cells, cell_room
-  use kinetostat_decimal, only: put_cell_numbers, put_cell_lines
+  use kinetostat_decimal, only: put_cell_numbers
   implicit none
   private
   public :: put_row_blocks, put_row_blocks_two, worker_count, row_writer_t, text_sink_t, table_rows_t
@@ -157,7 +157,7 @@ contains
       ! no row without values: whole lines at once, but the run's last row (its own closing)
       last_framed = min(last, max(self%table%total_rows, self%table%row_count()) - self%table%row_offset - 1)
       if (last_framed >= first) then
-        call put_cell_lines(self%table%rows(:, first:last_framed), size(self%table%rows, 1), last_framed - first + 1, &
+        call put_cell_numbers(self%table%rows(:, first:last_framed), size(self%table%rows, 1), last_framed - first + 1, &
           self%columns, self%opening, self%separator, self%closing//new_line("a"), out%data, out%length, self%whole)
         k = last_framed + 1
       end if
@@ -167,10 +167,9 @@ contains
       if (self%table%is_void(k) .or. len(self%separator) < 1 .or. len(self%separator) > 2) then
         call put_cells(out, self%table%rows(:, k), self%columns, self%whole, self%voidable, self%table%is_void(k), &
           self%separator, self%void_cell)
-      else if (self%any_whole) then
-        call put_cell_numbers(self%table%rows(:, k), self%columns, self%separator, out%data, out%length, self%whole)
       else
-        call put_cell_numbers(self%table%rows(:, k), self%columns, self%separator, out%data, out%length)
+        call put_cell_numbers(self%table%rows(:, k), size(self%table%rows, 1), 1, self%columns, "", self%separator, "", &
+          out%data, out%length, self%whole)
       end if
       if (self%table%row_offset + k < max(self%table%total_rows, self%table%row_count())) then
         if (len(self%closing) > 0) call out%append(self%closing)
