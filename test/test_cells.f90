@@ -7,7 +7,8 @@
 !> magnitudes 1e-14 .. 1e16 uniform in the logarithm, products of 10**13 at the writer's
 !> change of scale, whole and half numbers, zeros), both signs, joined by "," and by ", ",
 !> every seventh column one of whole numbers: 3.2 * 10^4 values (10^7 with `tools/test
-!> --long`; a fixed seed, the first rows the same in both).
+!> --long`; a fixed seed, the first rows the same in both); and the same rows, four at a
+!> time, as whole lines framed as the JSON's.
 !> The reference writers fill a caller's buffer as the writer under test does, so their
 !> character(*) buffers are intent(inout) by design.
 ! allow(assumed-size-character-intent)
@@ -30,6 +31,10 @@ module test_cells
   integer, parameter :: write_every = 1, long_write_every = 97
   !> Mismatches printed at most.
   integer, parameter :: max_shown = 5
+  !> Rows a block of put_cell_numbers (lines framed as the JSON's rows).
+  integer, parameter :: block_rows = 4
+  !> The framing of a JSON row (put_cell_numbers' opening and closing).
+  character(*), parameter :: json_opening = "    [", json_closing = "],"
 
 contains
 
@@ -37,6 +42,7 @@ contains
     type(test_counts_t), intent(inout) :: t
     call test_rows(t)
     call test_room(t)
+    call test_lines_room(t)
   end subroutine run_cells_tests
 
   !> Rows of every family through put_cell_numbers against one_cell and the WRITE.
@@ -46,10 +52,12 @@ contains
     integer :: columns(row_length)
     logical :: whole(row_length)
     character(len=row_length * 32) :: mine, theirs
+    character(len=block_rows * (row_length * 32 + 16)) :: lines, expected_lines
+    real(wp) :: block(row_length, block_rows)
     character(len=32) :: cell, written
     character(len=:), allocatable :: separator, shown
     integer(int64) :: state
-    integer :: n_rows, every, r, i, pos, expected, bad, bad_write, n_values
+    integer :: n_rows, every, r, i, pos, expected, bad, bad_write, n_values, bad_lines, n_lines, n_expected_lines
     n_rows = merge(long_rows, sample_rows, long_checks())
     every = merge(long_write_every, write_every, long_checks())
     do i = 1, row_length
@@ -59,7 +67,9 @@ contains
     state = 20261129_int64
     bad = 0
     bad_write = 0
+    bad_lines = 0
     n_values = 0
+    n_expected_lines = 0
     allocate (character(len=0) :: shown)
     do r = 1, n_rows
       do i = 1, row_length
@@ -89,23 +99,43 @@ contains
       if (mod(r, 3) == 0) then
         ! the form without whole columns: every cell a full number
         call one_row(row, columns, spread(.false., 1, row_length), separator, theirs, expected)
-        call put_cell_numbers(row, columns, separator, mine, pos)
+        call put_cell_numbers(row, row_length, 1, columns, "", separator, "", mine, pos)
       else
-        call put_cell_numbers(row, columns, separator, mine, pos, whole)
+        call put_cell_numbers(row, row_length, 1, columns, "", separator, "", mine, pos, whole)
       end if
       if (pos /= expected .or. mine(1:pos) /= theirs(1:expected)) then
         bad = bad + 1
         if (bad <= max_shown) shown = shown//" [row "//int_str(r)//": "//first_difference(mine(1:pos), theirs(1:expected), &
           row, columns)//"]"
       end if
+      ! a block of rows as whole lines (put_cell_numbers, the JSON's framing), every separator ", "
+      block(:, mod(r - 1, block_rows) + 1) = row
+      call one_row(row, columns, whole, ", ", theirs, expected)
+      expected_lines(n_expected_lines + 1:n_expected_lines + len(json_opening) + expected + len(json_closing) + 1) = &
+        json_opening//theirs(1:expected)//json_closing//new_line("a")
+      n_expected_lines = n_expected_lines + len(json_opening) + expected + len(json_closing) + 1
+      if (mod(r, block_rows) == 0) then
+        n_lines = 0
+        call put_cell_numbers(block, row_length, block_rows, columns, json_opening, ", ", json_closing//new_line("a"), &
+          lines, n_lines, whole)
+        if (n_lines /= n_expected_lines .or. lines(1:n_lines) /= expected_lines(1:n_expected_lines)) then
+          bad_lines = bad_lines + 1
+          if (bad_lines <= max_shown) shown = shown//" [lines of rows "//int_str(r - block_rows + 1)//" .. "// &
+            int_str(r)//": "//int_str(n_lines)//" vs "//int_str(n_expected_lines)//" characters]"
+        end if
+        n_expected_lines = 0
+      end if
     end do
     call check_true(t, "cells: "//int_str(n_rows * row_length)//" values in rows equal the cells written one at a time", &
       bad == 0, "rows differ "//int_str(bad)//":"//shown)
+    call check_true(t, "cells: "//int_str(n_rows / block_rows)//" blocks of "//int_str(block_rows)// &
+      " rows as framed lines equal the rows written one at a time", bad_lines == 0, &
+      "blocks differ "//int_str(bad_lines)//":"//shown)
     call check_true(t, "cells: every "//int_str(every)//"th full number equals the compiler's ES20.12E3", bad_write == 0, &
       "mismatches "//int_str(bad_write)//":"//shown)
   end subroutine test_rows
 
-  !> The writer stores at most 3 characters past a row's text (the room its callers make)
+  !> The writer stores at most 8 characters past a row's text (the room its callers make)
   !> and never before it.
   subroutine test_room(t)
     type(test_counts_t), intent(inout) :: t
@@ -116,11 +146,30 @@ contains
     row = [-1.234567890123456e-5_wp, 0.0_wp, 7.0_wp, -9.87654321e12_wp]
     buf = repeat("#", len(buf))
     pos = 10
-    call put_cell_numbers(row, [(i, i = 1, 4)], ",", buf, pos, [.false., .false., .true., .false.])
-    ok = buf(1:10) == repeat("#", 10) .and. buf(pos + 4:) == repeat("#", len(buf) - pos - 3) .and. &
+    call put_cell_numbers(row, 4, 1, [(i, i = 1, 4)], "", ",", "", buf, pos, [.false., .false., .true., .false.])
+    ok = buf(1:10) == repeat("#", 10) .and. buf(pos + 9:) == repeat("#", len(buf) - pos - 8) .and. &
       buf(11:pos) == "-1.234567890123E-005,0.000000000000E+000,7,-9.876543210000E+012"
-    call check_true(t, "cells: a row's text in place, at most 3 characters stored past it", ok, "'"//buf(1:pos + 4)//"'")
+    call check_true(t, "cells: a row's text in place, at most 8 characters stored past it", ok, "'"//buf(1:pos + 9)//"'")
   end subroutine test_room
+
+  !> Lines of rows (put_cell_numbers): each framed by its opening and closing, the text in
+  !> place and at most 8 characters stored past it.
+  subroutine test_lines_room(t)
+    type(test_counts_t), intent(inout) :: t
+    character(len=200) :: buf
+    real(wp) :: rows(3, 2)
+    integer :: pos
+    logical :: ok
+    rows = reshape([1.5_wp, -2.0_wp, 0.25_wp, 3.0e-11_wp, 4.0_wp, -0.0_wp], [3, 2])
+    buf = repeat("#", len(buf))
+    pos = 3
+    call put_cell_numbers(rows, 3, 2, [3, 1], "[", ", ", "]"//new_line("a"), buf, pos)
+    ok = buf(1:3) == "###" .and. buf(pos + 9:) == repeat("#", len(buf) - pos - 8) .and. &
+      buf(4:pos) == "[2.500000000000E-001, 1.500000000000E+000]"//new_line("a")// &
+      "[0.000000000000E+000, 3.000000000000E-011]"//new_line("a")
+    call check_true(t, "cells: rows as framed lines in place, at most 8 characters stored past them", ok, &
+      "'"//buf(1:pos + 9)//"'")
+  end subroutine test_lines_room
 
   !> One cell the way every cell was written before put_cell_numbers.
   subroutine one_cell(x, whole, buf, pos)

@@ -79,9 +79,13 @@ module kinetostat_decimal
     + 16777216_int64 * (48 + mod(shiftr(abs(shifta((iand(i_, 2047) - 1023) * 78913, 18) + shiftr(i_, 11)) * 205, 11), 10)) &
     + 4294967296_int64 * (48 + mod(abs(shifta((iand(i_, 2047) - 1023) * 78913, 18) + shiftr(i_, 11)), 10)), &
     i_ = 0, 4095)]
-  !> |x| * 10**s from this up has one digit too many: the next exponent's row of the tables
-  !> (a product rounded up to it from below rounds to 10**13 too, the same text).
-  real(wp), parameter :: cell_overflow = 1.0e13_wp
+  !> The 4 decimal digits of n = 0..9999 as ASCII bytes of one integer, the first digit in
+  !> its lowest byte (stored in this order on a little-endian machine).
+  integer, parameter :: digit_quads(0:9999) = [(48 + i_ / 1000 + 256 * (48 + mod(i_ / 100, 10)) &
+    + 65536 * (48 + mod(i_ / 10, 10)) + 16777216 * (48 + mod(i_, 10)), i_ = 0, 9999)]
+  !> 12 - k for the exponent k of row j of the tables above (the power of ten of its scale).
+  integer, parameter :: cell_scale_exponents(0:4095) = [(cell_decimals - (shifta((iand(i_, 2047) - 1023) * 78913, 18) &
+    + shiftr(i_, 11)), i_ = 0, 4095)]
   !> Status of a field body: written.
   integer, parameter :: body_ok = 0
   !> Status of a field body: does not fit its width (the field is all '*').
@@ -756,97 +760,166 @@ contains
     call put_es_compact(x + 0.0_wp, cell_decimals, 3, buf, pos)
   end subroutine put_cell_number
 
-  !> The cells of one row appended to buf at pos+1.. (pos advanced): put_cell_number of
-  !> row(columns(i)) for every i, `separator` between them. Room: 20 + len(separator)
-  !> characters a cell and 3 more (stored past the text, and overwritten by what follows).
-  !> A cell of the common magnitudes (1e-10 <= |x| < 1e13) is written in the row's loop:
-  !> |x| times the power of ten its binary exponent selects from a table (the table's second
-  !> half when the product has 14 digits before the point), rounded as cell_digits_fast
-  !> rounds, its 13 digits made in the bytes of two integers, and the exponent with the
-  !> separator stored as one integer from the table; zero is one copy; ties, whole numbers
-  !> and other magnitudes go through put_cell_number.
-  pure subroutine put_cell_numbers(row, columns, separator, buf, pos, whole)
-    !> The row's values (finite where written).
-    real(wp), intent(in), contiguous :: row(:)
-    !> Indices into `row` of the cells, in order.
+  !> Lines of cells appended to buf at pos+1.. (pos advanced): for each row k of `rows`,
+  !> `opening`, put_cell_number of rows(columns(i), k) for every i with `separator` between
+  !> them, then `closing` (the line's end included, if any). Room: 20 + len(separator)
+  !> characters a cell, len(opening) + len(closing) a row, and 8 more (stored past the
+  !> text, and overwritten by what follows).
+  !> A cell of the common magnitudes (1e-10 <= |x| < 1e13) is written in the loop: |x| times
+  !> the power of ten its binary exponent selects from a table (the table's second half when
+  !> the product rounds to 14 digits), rounded to the nearest integer by adding 2**52 (the
+  !> product's error is below 2**-10, so the rounding is the exact one unless the product
+  !> lies within that of a half; then the exact 128-bit product decides, exact_cell_digits),
+  !> its 13 digits made in the bytes of two integers, and the exponent with the separator
+  !> stored as one integer from the table; the opening and the closing are one store each;
+  !> zero is one copy; whole numbers and other magnitudes go through put_cell_number.
+  pure subroutine put_cell_numbers(rows, n_values, n_rows, columns, opening, separator, closing, buf, pos, whole)
+    !> Values a row (the leading extent of `rows`).
+    integer, intent(in) :: n_values
+    !> Rows.
+    integer, intent(in) :: n_rows
+    !> The rows' values, a row a column (finite where written).
+    real(wp), intent(in) :: rows(n_values, n_rows)
+    !> Indices into a row of the cells, in order.
     integer, intent(in), contiguous :: columns(:)
+    !> Text before a row's first cell: at most 8 characters.
+    character(*), intent(in) :: opening
     !> Text between two cells: one or two characters.
     character(*), intent(in) :: separator
+    !> Text after a row's last cell: at most 8 characters.
+    character(*), intent(in) :: closing
     !> Output characters.
     character(*), intent(inout) :: buf
     !> Characters in use.
     integer, intent(inout) :: pos
     !> Per cell: a column of whole numbers (absent: none is).
     logical, intent(in), contiguous, optional :: whole(:)
-    integer(int64), parameter :: ten13 = 10000000000000_int64, ten12 = 1000000000000_int64, &
-      ten8 = 100000000_int64
+    integer(int64), parameter :: ten8 = 100000000_int64, ten13 = 10000000000000_int64
     !> n * 109951163 / 2**40 is n / 10**4 for 0 <= n < 10**8.
     integer(int64), parameter :: by_ten4 = 109951163_int64
+    !> n * 6189700196426901375 / 2**89 is n / 10**8 for 0 <= n < 2**63.
+    integer(i16), parameter :: by_ten8 = 6189700196426901375_i16
+    !> The bits of y + 2**52 below 2**52: y rounded to the nearest integer (y < 2**52).
+    integer(int64), parameter :: low52 = shiftl(1_int64, 52) - 1_int64
+    real(wp), parameter :: two52 = 2.0_wp**52
+    !> |y - q| from this on: the exact product decides the rounding.
+    real(wp), parameter :: near_half = 0.5_wp - 2.0_wp**(-10)
+    !> The product from this on rounds to 10**13 or more: the table's second half (10**13 -
+    !> 1/2 + 2**-9, the next double above the last one that rounds below 10**13).
+    real(wp), parameter :: cell_switch = 1.0e13_wp - 0.5_wp + 2.0_wp**(-9)
+    !> The products of the fast magnitudes are from this up (0 outside them).
+    real(wp), parameter :: ten12 = 1.0e12_wp
     !> The bytes "d." of the first digit d = 0, little-endian ("0" = 48, "." = 46).
     integer, parameter :: zero_point = 48 + 256 * 46
-    character(len=2) :: sep2
-    integer(int64) :: bits, q, high, low, sep_word, p, n_sep
+    integer(int64) :: bits, q, high, low, lead, half8, j, sep_text, sep_word, open_word, close_word, p
+    integer :: cells(size(columns))
     real(wp) :: x, a, y, f
-    integer :: i, j, lead, at
-    logical :: any_whole
-    any_whole = present(whole)
+    integer :: i, k, c, at, n_sep, n_open, n_close
     n_sep = len(separator)
-    sep2 = separator
-    sep_word = shiftl(int(ichar(sep2(1:1)), int64), 40)
-    if (n_sep > 1) sep_word = sep_word + shiftl(int(ichar(sep2(2:2)), int64), 48)
+    n_open = len(opening)
+    n_close = len(closing)
+    sep_text = text_word(separator)
+    sep_word = shiftl(sep_text, 40)
+    open_word = text_word(opening)
+    close_word = text_word(closing)
+    ! a whole-number column's index negative
+    cells = columns
+    if (present(whole)) cells = merge(-columns, columns, whole)
     p = pos
-    do i = 1, size(columns)
-      x = row(columns(i))
-      bits = transfer(x, bits)
-      if (any_whole) then
-        if (whole(i)) then
+    do k = 1, n_rows
+      buf(p + 1:p + 8) = transfer(open_word, "abcdefgh")
+      p = p + n_open
+      do i = 1, size(cells)
+        c = cells(i)
+        if (c < 0) then                          ! a whole-number column
           at = int(p)
-          call put_cell_number(x, .true., buf, at)
+          call put_cell_number(rows(-c, k), .true., buf, at)
           p = at
-          buf(p + 1:p + 2) = sep2
+          buf(p + 1:p + 8) = transfer(sep_text, "abcdefgh")
           p = p + n_sep
           cycle
         end if
-      end if
-      j = int(shiftr(shiftl(bits, 1), 53))      ! the biased binary exponent
-      a = abs(x)
-      y = a * cell_scales(j)
-      if (y >= cell_overflow) then
-        j = j + 2048
+        x = rows(c, k)
+        bits = transfer(x, bits)
+        j = shiftr(shiftl(bits, 1), 53)           ! the biased binary exponent
+        a = abs(x)
         y = a * cell_scales(j)
-      end if
-      q = int(y, int64)
-      f = y - real(q, wp)
-      if (abs(f - 0.5_wp) > tie_margin) then
-        if (f > 0.5_wp) q = q + 1_int64
-        if (q >= ten12 .and. q < ten13) then
+        if (y >= cell_switch) then
+          j = j + 2048_int64
+          y = a * cell_scales(j)
+        end if
+        fast: block
+          if (.not. (y >= ten12)) exit fast      ! zero, or not a fast magnitude
+          f = y + two52
+          q = iand(transfer(f, q), low52)       ! y rounded to the nearest integer
+          f = y - (f - two52)                   ! y - q
+          if (abs(f) >= near_half) then
+            call exact_cell_digits(bits, cell_scale_exponents(j), q)
+            if (q >= ten13) exit fast
+          end if
           buf(p + 1:p + 1) = "-"
           p = p + shiftr(bits, 63)               ! past the "-" of a negative x
-          high = q / ten8                        ! the first five digits
-          low = q - high * ten8
-          lead = int(shiftr(high * by_ten4, 40))
+          high = int(shiftr(int(q, i16) * by_ten8, 89))   ! the first five digits
+          low = q - high * ten8                  ! the other eight
+          lead = shiftr(high * by_ten4, 40)
+          half8 = shiftr(low * by_ten4, 40)
           buf(p + 1:p + 2) = transfer(int(zero_point + lead, int16), "ab")
-          buf(p + 3:p + 6) = transfer(four_digits(int(high) - 10000 * lead), "abcd")
-          buf(p + 7:p + 14) = transfer(eight_digits(low), "abcdefgh")
+          buf(p + 3:p + 6) = transfer(digit_quads(high - 10000_int64 * lead), "abcd")
+          buf(p + 7:p + 10) = transfer(digit_quads(half8), "abcd")
+          buf(p + 11:p + 14) = transfer(digit_quads(low - 10000_int64 * half8), "abcd")
           buf(p + 15:p + 22) = transfer(cell_exponent_words(j) + sep_word, "abcdefgh")
           p = p + 19 + n_sep
           cycle
+        end block fast
+        if (shiftl(bits, 1) == 0_int64) then     ! +-0
+          buf(p + 1:p + 19) = "0.000000000000E+000"
+          p = p + 19
+        else
+          at = int(p)
+          call put_cell_number(x, .false., buf, at)
+          p = at
         end if
-      end if
-      if (shiftl(bits, 1) == 0_int64) then         ! +-0
-        buf(p + 1:p + 19) = "0.000000000000E+000"
-        p = p + 19
-      else
-        at = int(p)
-        call put_cell_number(x, .false., buf, at)
-        p = at
-      end if
-      buf(p + 1:p + 2) = sep2
-      p = p + n_sep
+        buf(p + 1:p + 8) = transfer(sep_text, "abcdefgh")
+        p = p + n_sep
+      end do
+      if (size(cells) > 0) p = p - n_sep
+      buf(p + 1:p + 8) = transfer(close_word, "abcdefgh")
+      p = p + n_close
     end do
-    if (size(columns) > 0) p = p - n_sep
     pos = int(p)
   end subroutine put_cell_numbers
+
+  !> Up to 8 characters as the bytes of one integer, the first in its lowest byte (stored in
+  !> this order on a little-endian machine); the rest zero.
+  pure integer(int64) function text_word(text) result(w)
+    character(*), intent(in) :: text
+    integer :: i
+    w = 0
+    do i = min(len(text), 8), 1, -1
+      w = shiftl(w, 8) + ichar(text(i:i))
+    end do
+  end function text_word
+
+  !> put_cell_numbers' 13 digits of |x| (a normal double, bits its bits) times 10**s, exactly:
+  !> the 128-bit product of its mantissa and 5**s, shifted, rounded to the nearest integer,
+  !> ties to even (0 <= s <= 22 and the result below 2**44: the shift lies in 9 .. 125).
+  pure subroutine exact_cell_digits(bits, s, q)
+    !> The bits of x.
+    integer(int64), intent(in) :: bits
+    !> The power of ten.
+    integer, intent(in) :: s
+    !> The result.
+    integer(int64), intent(out) :: q
+    integer(i16) :: p, t, rem, half
+    integer :: sh
+    p = int(iand(bits, shiftl(1_int64, 52) - 1_int64) + shiftl(1_int64, 52), i16) * pow5(s)
+    sh = 1075 - int(iand(shiftr(bits, 52), 2047_int64)) - s       ! -(e + s)
+    t = shiftr(p, sh)
+    rem = p - shiftl(t, sh)
+    half = shiftl(1_i16, sh - 1)
+    if (rem > half .or. (rem == half .and. btest(t, 0))) t = t + 1
+    q = int(t, int64)
+  end subroutine exact_cell_digits
 
   !> The 8 decimal digits of 0 <= v < 10**8 as ASCII bytes of one integer, the first digit
   !> in its lowest byte (so stored in this order on a little-endian machine): the halves,

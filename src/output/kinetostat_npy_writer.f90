@@ -8,10 +8,9 @@
 !> characters) holds the number of rows, which the run knows from its first block, so the
 !> rows are written block by block as the CSV's are and memory stays flat.
 !> Format: https://numpy.org/doc/stable/reference/generated/numpy.lib.format.html
-!> put_row appends to a text buffer's character(*) data in place (intent(inout) by design).
-! allow(assumed-size-character-intent)
 module kinetostat_npy_writer
   use, intrinsic :: iso_fortran_env, only: int32, int64
+  use, intrinsic :: iso_c_binding, only: c_f_pointer, c_loc
   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
   use kinetostat_kinds, only: wp
   use kinetostat_error, only: error_t, fatal_error, exit_geometry
@@ -39,12 +38,13 @@ contains
   subroutine write_npy(table, out, error)
     !> Finite results.
     type(step_table_t), intent(in) :: table
-    !> Where the bytes go.
-    type(text_buffer_t), intent(inout) :: out
+    !> Where the bytes go (its reserved bytes are written through a float64 view).
+    type(text_buffer_t), intent(inout), target :: out
     !> The rows written differ from the header's count.
     type(error_t), allocatable, intent(out) :: error
     integer, allocatable :: columns(:)
     logical, allocatable :: voidable(:)
+    real(wp), pointer, contiguous :: records(:, :)
     real(wp) :: nan
     integer :: c, k, n, longest
     allocate (columns(0))
@@ -66,19 +66,17 @@ contains
       do k = 1, table%row_count()
         call put_npy_values(out, merge(nan, table%rows(columns, k) + 0.0_wp, voidable .and. table%is_void(k)))
       end do
-    else if (n == size(table%columns) .and. .not. allocated(table%void_flags)) then
-      ! every column, no void row: the block's rows lie in memory as the records do, copied
-      ! value by value (+0.0: minus zero as zero, as in the CSV)
-      call put_values(table%rows(:, 1:table%row_count()), out%data, out%length)
-    else
-      ! each row's values straight into the buffer
-      do k = 1, table%row_count()
-        if (table%is_void(k)) then
-          call put_row(table%rows(:, k), columns, out%data, out%length, nan, voidable)
-        else
-          call put_row(table%rows(:, k), columns, out%data, out%length)
-        end if
-      end do
+    else if (table%row_count() > 0 .and. n > 0) then
+      ! the records straight into the buffer (the machine's byte order is the file's): its
+      ! reserved bytes seen as the block's records of float64 values
+      call c_f_pointer(c_loc(out%data(out%length + 1:out%length + 1)), records, [n, table%row_count()])
+      call put_records(table%rows(:, 1:table%row_count()), size(table%rows, 1), table%row_count(), columns, records)
+      if (allocated(table%void_flags)) then
+        do k = 1, table%row_count()
+          if (table%is_void(k)) records(:, k) = merge(nan, records(:, k), voidable)
+        end do
+      end if
+      out%length = out%length + n * table%row_count() * value_bytes
     end if
     if (table%last_block() .and. table%row_offset + table%row_count() /= table%total_rows) then
       call fatal_error(error, exit_geometry, table%deck//": &"//table%mechanism//": --format npy: the run gave "// &
@@ -162,58 +160,31 @@ contains
     out%length = n
   end subroutine put_npy_values
 
-  !> Append row(columns) to buf at n+1.. (n advanced) as float64 in the machine's byte
-  !> order (the caller's machine stores them little-endian), minus zero as zero; with `void`,
-  !> the cells marked in it are NaN.
-  pure subroutine put_row(row, columns, buf, n, nan, void)
-    !> The row's values.
-    real(wp), intent(in) :: row(:)
+  !> The records of rows(columns, :), minus zero as zero (+0.0).
+  pure subroutine put_records(rows, n_values, n_rows, columns, records)
+    !> Values a row (the leading extent of `rows`).
+    integer, intent(in) :: n_values
+    !> Rows.
+    integer, intent(in) :: n_rows
+    !> The rows' values, a row a column.
+    real(wp), intent(in) :: rows(n_values, n_rows)
     !> The columns written, in order.
     integer, intent(in) :: columns(:)
-    !> Output bytes (room for 8 per column).
-    character(*), intent(inout) :: buf
-    !> Bytes in use.
-    integer, intent(inout) :: n
-    !> The value of a void cell.
-    real(wp), intent(in), optional :: nan
-    !> Per column: no value in this row.
-    logical, intent(in), optional :: void(:)
-    character(len=value_bytes) :: bytes
-    integer :: i
-    if (present(void) .and. present(nan)) then
-      do i = 1, size(columns)
-        bytes = transfer(merge(nan, row(columns(i)) + 0.0_wp, void(i)), bytes)
-        buf(n + 1:n + value_bytes) = bytes
-        n = n + value_bytes
-      end do
-      return
+    !> The records, one a column.
+    real(wp), intent(out) :: records(size(columns), n_rows)
+    integer :: i, k
+    if (size(columns) == n_values) then
+      if (all(columns == [(i, i = 1, n_values)])) then
+        records = rows + 0.0_wp              ! every column, in order
+        return
+      end if
     end if
-    do i = 1, size(columns)
-      bytes = transfer(row(columns(i)) + 0.0_wp, bytes)
-      buf(n + 1:n + value_bytes) = bytes
-      n = n + value_bytes
-    end do
-  end subroutine put_row
-
-  !> Append every value of `values` (in array element order) to buf at n+1.. (n advanced)
-  !> as float64 in the machine's byte order, minus zero as zero.
-  pure subroutine put_values(values, buf, n)
-    !> The values (records one after the other).
-    real(wp), intent(in) :: values(:, :)
-    !> Output bytes (room for 8 per value).
-    character(*), intent(inout) :: buf
-    !> Bytes in use.
-    integer, intent(inout) :: n
-    integer :: i, k, m
-    m = n
-    do k = 1, size(values, 2)
-      do i = 1, size(values, 1)
-        buf(m + 1:m + value_bytes) = transfer(values(i, k) + 0.0_wp, buf(1:value_bytes))
-        m = m + value_bytes
+    do k = 1, n_rows
+      do i = 1, size(columns)
+        records(i, k) = rows(columns(i), k) + 0.0_wp
       end do
     end do
-    n = m
-  end subroutine put_values
+  end subroutine put_records
 
   !> Whether this machine stores numbers least significant byte first.
   pure logical function host_little_endian()

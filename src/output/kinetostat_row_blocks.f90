@@ -148,18 +148,28 @@ contains
     type(text_buffer_t), intent(inout) :: out
     !> Unused (a table's rows are one section).
     type(text_buffer_t), intent(inout) :: later
-    integer :: k
-    ! room for every row at once (no copying while the buffer grows)
-    call out%reserve((last - first + 1) * self%row_room(size(self%columns)))
-    do k = first, last
+    integer :: k, last_framed
+    ! room for every row at once (no copying while the buffer grows; 8 bytes stored past it)
+    call out%reserve((last - first + 1) * self%row_room(size(self%columns)) + 8)
+    k = first
+    if (.not. allocated(self%table%void_flags) .and. len(self%separator) >= 1 .and. len(self%separator) <= 2 .and. &
+      len(self%opening) <= 8 .and. len(self%closing) < 8) then
+      ! no row without values: whole lines at once, but the run's last row (its own closing)
+      last_framed = min(last, max(self%table%total_rows, self%table%row_count()) - self%table%row_offset - 1)
+      if (last_framed >= first) then
+        call put_cell_numbers(self%table%rows(:, first:last_framed), size(self%table%rows, 1), last_framed - first + 1, &
+          self%columns, self%opening, self%separator, self%closing//new_line("a"), out%data, out%length, self%whole)
+        k = last_framed + 1
+      end if
+    end if
+    do k = k, last
       if (len(self%opening) > 0) call out%append(self%opening)
       if (self%table%is_void(k) .or. len(self%separator) < 1 .or. len(self%separator) > 2) then
         call put_cells(out, self%table%rows(:, k), self%columns, self%whole, self%voidable, self%table%is_void(k), &
           self%separator, self%void_cell)
-      else if (self%any_whole) then
-        call put_cell_numbers(self%table%rows(:, k), self%columns, self%separator, out%data, out%length, self%whole)
       else
-        call put_cell_numbers(self%table%rows(:, k), self%columns, self%separator, out%data, out%length)
+        call put_cell_numbers(self%table%rows(:, k), size(self%table%rows, 1), 1, self%columns, "", self%separator, "", &
+          out%data, out%length, self%whole)
       end if
       if (self%table%row_offset + k < max(self%table%total_rows, self%table%row_count())) then
         if (len(self%closing) > 0) call out%append(self%closing)
