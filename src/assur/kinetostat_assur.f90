@@ -15,8 +15,8 @@ module kinetostat_assur
   use kinetostat_error, only: error_t, fatal_error, exit_geometry
   use kinetostat_vec2, only: unit_at, cross, magnitude, fast_magnitude
   use kinetostat_loads, only: inertia_force, inertia_moment, gravity_force
-  use kinetostat_selfcheck, only: link_balance_t, balance_add_force, balance_add_couple, equilibrium_residual, &
-    power_mismatch, balance_add_balance, load_moment_scale
+  use kinetostat_selfcheck, only: link_balance_t, balance_add_force, balance_add_lever, balance_add_couple, &
+    equilibrium_residual, power_mismatch, balance_add_balance, load_moment_scale
   use kinetostat_text, only: int_str
   use kinetostat_format, only: trimmed_es
   use kinetostat_assur_kinematics, only: link_state_t, point_state_t, dyad_geometry_t, dyad_pose_t, &
@@ -376,7 +376,7 @@ contains
       end if
       step%power_scale = power_scale
 
-      call link_equilibrium(mech, states, poses, step%f, step%m, f_len, step%m1, known, step%residual)
+      call link_equilibrium(mech, known, states, poses, step%f, step%m, f_len, step%m1, step%residual)
       if (present(balances)) balances = known
     end associate
   end subroutine assur_step
@@ -448,15 +448,14 @@ contains
     real(wp) :: w2, a_s(2), eps, phi_f(2), gw(2), m_phi, dir(2), term
     integer :: i, k
 
-    ! the loads are sums, from zero
-    do i = 0, ubound(known, 1)
-      known(i) = link_balance_t()
-    end do
+    ! the loads are sums, from zero (each moving link's zeroed in the loop that adds its own)
+    known(0) = link_balance_t()
     w2 = omega1**2
     power = 0.0_wp
     power_scale = 0.0_wp
     do i = 1, ubound(states, 1)
       associate (lk => mech%links(i), st => states(i))
+        known(i) = link_balance_t()
         call point_motion(st, lk%s, ps)
         a_s = ps%a * w2 + ps%v * eps1
         eps = st%eq * w2 + st%u * eps1
@@ -501,9 +500,11 @@ contains
   !> applied loads and the reactions passed back; `residual` is the largest relative
   !> equilibrium residual of the moving links. Each pair force goes into a local pair first
   !> (its negation in place would be a temporary).
-  pure subroutine link_equilibrium(mech, states, poses, f, m, f_len, m1, known, residual)
+  pure subroutine link_equilibrium(mech, known, states, poses, f, m, f_len, m1, residual)
     !> Mechanism.
     type(assur_mech_t), intent(in) :: mech
+    !> Loads of every link (N, N*m about its origin); the reactions are added.
+    type(link_balance_t), intent(inout) :: known(0:2 * size(mech%dyads) + 1)
     !> Frames of links 0..2*nd+1.
     type(link_state_t), intent(in) :: states(0:2 * size(mech%dyads) + 1)
     !> Pose of each dyad.
@@ -516,8 +517,6 @@ contains
     real(wp), intent(in) :: f_len(3 * size(mech%dyads) + 1)
     !> Balancing moment on the crank, N*m.
     real(wp), intent(in) :: m1
-    !> Loads of every link (N, N*m about its origin); the reactions are added.
-    type(link_balance_t), intent(inout) :: known(0:2 * size(mech%dyads) + 1)
     !> Largest relative equilibrium residual of the moving links.
     real(wp), intent(out) :: residual
     real(wp) :: f_pair(2)
@@ -525,14 +524,14 @@ contains
     nd = size(mech%dyads)
     ip = crank_pin_index(nd)
     f_pair = f(:, ip)
-    call balance_add_force(known(1), states(1)%o, states(1)%o, f_pair, f_len(ip))
+    call add_at_origin(known(1), states(1)%o, states(1)%o, f_pair, f_len(ip))
     call balance_add_couple(known(1), m1)
     do d = 1, nd
       pa = link_a(d)
       pb = link_b(d)
       ip = pair_index(d, 1)
       f_pair = f(:, ip)
-      call balance_add_force(known(pa), states(pa)%o, poses(d)%p(:, 1), f_pair, f_len(ip))
+      call add_at_origin(known(pa), states(pa)%o, poses(d)%p(:, 1), f_pair, f_len(ip))
       call balance_add_couple(known(pa), m(ip))
       ip = pair_index(d, 2)
       f_pair = f(:, ip)
@@ -543,11 +542,31 @@ contains
       call balance_add_couple(known(pb), -m(ip))
       ip = pair_index(d, 3)
       f_pair = f(:, ip)
-      call balance_add_force(known(pb), states(pb)%o, poses(d)%p(:, 3), f_pair, f_len(ip))
+      call add_at_origin(known(pb), states(pb)%o, poses(d)%p(:, 3), f_pair, f_len(ip))
       call balance_add_couple(known(pb), m(ip))
     end do
     residual = equilibrium_residual(known(1:))
   end subroutine link_equilibrium
+
+  !> balance_add_force(balance, origin, at, f, f_length) for a force the poses apply at the
+  !> link's origin (the crank's pin; a dyad's outer pair on its own link: every kind puts
+  !> link a's origin at pair 1 and link b's at pair 3), the same sums: where `at` - `origin`
+  !> is zero (as it is), its lever arm's length is 0 without balance_add_force's call.
+  pure subroutine add_at_origin(balance, origin, at, f, f_length)
+    !> The link's loads so far.
+    type(link_balance_t), intent(inout) :: balance
+    !> The link's origin and the force's point of application, m; the force, N.
+    real(wp), intent(in) :: origin(2), at(2), f(2)
+    !> fast_magnitude(f), N.
+    real(wp), intent(in) :: f_length
+    real(wp) :: arm(2)
+    arm = at - origin
+    if (arm(1) == 0.0_wp .and. arm(2) == 0.0_wp) then
+      call balance_add_lever(balance, arm, 0.0_wp, f, f_length)
+    else
+      call balance_add_force(balance, origin, at, f, f_length)
+    end if
+  end subroutine add_at_origin
 
   !> Size of the mechanism at this position: the largest distance of a dyad's joint from
   !> the crank pivot, m (a lever arm of the driving moment).
