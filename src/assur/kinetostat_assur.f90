@@ -15,12 +15,12 @@ module kinetostat_assur
   use kinetostat_error, only: error_t, fatal_error, exit_geometry
   use kinetostat_vec2, only: unit_at, cross, magnitude, fast_magnitude
   use kinetostat_loads, only: inertia_force, inertia_moment, gravity_force
-  use kinetostat_selfcheck, only: link_balance_t, balance_add_force, balance_add_couple, equilibrium_residual, &
-    power_mismatch, balance_add_balance, load_moment_scale
+  use kinetostat_selfcheck, only: link_balance_t, balance_add_force, balance_add_lever, balance_add_couple, &
+    equilibrium_residual, power_mismatch, balance_add_balance, load_moment_scale
   use kinetostat_text, only: int_str
   use kinetostat_format, only: trimmed_es
   use kinetostat_assur_kinematics, only: link_state_t, point_state_t, dyad_geometry_t, dyad_pose_t, &
-    set_crank_state, point_motion, frame_state, set_dyad_pose, kind_names, pose_ok, pose_no_assembly, kind_rrp, &
+    set_crank_state, point_motion, set_dyad_pose, kind_names, pose_ok, pose_no_assembly, kind_rrp, &
     kind_prp, kind_rpp
   use kinetostat_assur_statics, only: dyad_reactions_t, dyad_reactions, pair_is_prismatic
   implicit none
@@ -205,11 +205,13 @@ contains
     !> Crank angle, rad.
     real(wp), intent(in) :: phi1
     !> Frames of links 0..2*nd+1 (each one set here, up to the failing dyad's on an error;
-    !> inout only to spare every step a second initialisation of them).
-    type(link_state_t), intent(inout) :: states(0:)
+    !> inout only to spare every step a second initialisation of them; explicit shapes: a
+    !> step's arrays are contiguous, and the strides of assumed shapes cost a small
+    !> mechanism's step more than its sums).
+    type(link_state_t), intent(inout) :: states(0:2 * size(mech%dyads) + 1)
     !> Pose of each dyad (each one set here, up to the failing one on an error; inout only to
     !> spare every step a second initialisation of them).
-    type(dyad_pose_t), intent(inout) :: poses(:)
+    type(dyad_pose_t), intent(inout) :: poses(size(mech%dyads))
     !> Geometry error naming the dyad.
     type(error_t), allocatable, intent(out) :: error
     !> Whether every link's angle is wanted (default true; false: only those a later dyad
@@ -219,7 +221,7 @@ contains
     logical :: all_angles
     all_angles = .true.
     if (present(link_angles)) all_angles = link_angles
-    states(0) = frame_state()
+    states(0) = link_state_t()  ! the frame: at rest at the origin (frame_state)
     call set_crank_state(mech%pivot, phi1, states(1))
     do d = 1, size(mech%dyads)
       associate (dy => mech%dyads(d))
@@ -294,7 +296,8 @@ contains
     real(wp), intent(in), optional :: extra_scale
     !> All loads and reactions of links 0..2*nd+1 as summed for the equilibrium residual.
     type(link_balance_t), intent(out), optional :: balances(0:)
-    integer :: nd, i, nf
+    real(wp) :: power, power_scale
+    integer :: nd, i, nf, k
 
     nd = size(mech%dyads)
     nf = size(mech%forces)
@@ -328,11 +331,54 @@ contains
         step%work_force_dir(:, i) = unit_at(step%work_force_angle(i))
       end if
     end do
-    ! the frames and poses are set by the kinematics; the loads are sums, from zero
-    do i = 0, 2 * nd + 1
-      step%work_known(i) = link_balance_t()
-    end do
-    call step_in(mech, phi1, omega1, eps1, f_mag, m_mag, step, error, extra, extra_power, extra_scale, balances)
+    ! the frames and poses are set by the kinematics, the loads summed from zero by
+    ! applied_loads; the sums run in applied_loads and link_equilibrium, which take the
+    ! workspace as explicit shapes (an allocatable component's descriptor read again at every
+    ! use costs a small mechanism's step more than its sums)
+    associate (states => step%work_states, poses => step%work_poses, known => step%work_known, &
+               f_len => step%work_f_len)
+      step%phi1 = phi1
+      step%omega1 = omega1
+      step%eps1 = eps1
+      call assur_kinematics(mech, phi1, states, poses, error, step%link_angles)
+      if (allocated(error)) return
+
+      ! applied loads on every moving link, summed about the link's origin; power terms
+      call applied_loads(mech, omega1, eps1, f_mag, m_mag, states, step%work_force_dir, known, power, power_scale)
+      if (present(extra)) then
+        do k = 1, ubound(states, 1)
+          call balance_add_balance(known(k), extra(k))
+        end do
+      end if
+      if (present(extra_power)) power = power + extra_power
+      if (present(extra_scale)) power_scale = power_scale + extra_scale
+      ! the size of a driving effort these loads make
+      if (mech%drive_dyad == 0) then
+        step%load_scale = load_moment_scale(known(1:), mechanism_size(mech, poses))
+      else
+        step%load_scale = maxval(known(1:)%scale_f)
+      end if
+
+      if (mech%drive_dyad == 0) then
+        ! dyads from the last to the first; each passes its outer reactions to the links it hangs on
+        call back_substitute(mech, states, poses, known, step%f, step%n, step%m, error, f_len)
+        if (allocated(error)) return
+        ! crank: pin reaction from the frame and balancing moment about the pivot
+        step%m1 = -known(1)%sum_m
+        step%m1_power = -power
+        step%mismatch = power_mismatch(step%m1, step%m1_power, power_scale, step%load_scale)
+      else
+        call drive_by_actuator(mech, power, power_scale, step, error)
+        if (allocated(error)) return
+        do k = 1, size(f_len)
+          f_len(k) = fast_magnitude(step%f(:, k))
+        end do
+      end if
+      step%power_scale = power_scale
+
+      call link_equilibrium(mech, known, states, poses, step%f, step%m, f_len, step%m1, step%residual)
+      if (present(balances)) balances = known
+    end associate
   end subroutine assur_step
 
   !> `step` as a fresh assur_step_t (every scalar at its default) with its pair arrays for
@@ -376,141 +422,151 @@ contains
     if (.not. allocated(step%m)) allocate (step%m(np), source=0.0_wp)
   end subroutine reset_step
 
-  !> assur_step on its reset `step`, with the workspace in it: the frames `states` (links
-  !> 0..2*nd+1), the poses `poses` (nd), the loads `known` (links 0..2*nd+1, at their
-  !> defaults), the pair forces' lengths `f_len` (3*nd+1: every pair force's length as the
-  !> self-check takes it, N; each is added to two links) and each external force's [cos, sin]
-  !> of its angle `force_dir`.
-  pure subroutine step_in(mech, phi1, omega1, eps1, f_mag, m_mag, step, error, extra, extra_power, extra_scale, &
-                          balances)
+  !> The applied loads of every moving link into `known` (from zero; forces and moments about
+  !> the link's origin): weights, d'Alembert forces and moments, the external forces (given
+  !> magnitudes `f_mag`, N, directions `force_dir`) and moments (`m_mag`, N*m); their virtual
+  !> power per unit crank speed `power` (N*m) and the sum of its terms' magnitudes
+  !> `power_scale` (N*m).
+  pure subroutine applied_loads(mech, omega1, eps1, f_mag, m_mag, states, force_dir, known, power, power_scale)
+    !> Mechanism.
     type(assur_mech_t), intent(in) :: mech
-    real(wp), intent(in) :: phi1, omega1, eps1
+    !> Crank speed, rad/s, and angular acceleration, rad/s^2.
+    real(wp), intent(in) :: omega1, eps1
+    !> Magnitudes of the external forces, N.
     real(wp), intent(in) :: f_mag(:)
+    !> External moments, N*m.
     real(wp), intent(in) :: m_mag(:)
-    type(assur_step_t), intent(inout) :: step
-    type(error_t), allocatable, intent(out) :: error
-    type(link_balance_t), intent(in), optional :: extra(0:)
-    real(wp), intent(in), optional :: extra_power
-    real(wp), intent(in), optional :: extra_scale
-    type(link_balance_t), intent(out), optional :: balances(0:)
+    !> Frames of links 0..2*nd+1.
+    type(link_state_t), intent(in) :: states(0:2 * size(mech%dyads) + 1)
+    !> [cos, sin] of each external force's angle.
+    real(wp), intent(in) :: force_dir(2, size(mech%forces))
+    !> Loads of every link (N, N*m about its origin).
+    type(link_balance_t), intent(inout) :: known(0:2 * size(mech%dyads) + 1)
+    !> Virtual power of the loads per unit crank speed and the sum of its terms' magnitudes, N*m.
+    real(wp), intent(out) :: power, power_scale
     type(point_state_t) :: ps
-    real(wp) :: w2, a_s(2), eps, phi_f(2), gw(2), m_phi, dir(2)
-    real(wp) :: power, power_scale, term, f_pair(2)
-    integer :: i, d, nd, k, ip, pa, pb
+    real(wp) :: w2, a_s(2), eps, phi_f(2), gw(2), m_phi, dir(2), term
+    integer :: i, k
 
-    associate (states => step%work_states, poses => step%work_poses, known => step%work_known, &
-               f_len => step%work_f_len, force_dir => step%work_force_dir)
-      nd = size(mech%dyads)
-      step%phi1 = phi1
-      step%omega1 = omega1
-      step%eps1 = eps1
-      call assur_kinematics(mech, phi1, states, poses, error, step%link_angles)
-      if (allocated(error)) return
-      w2 = omega1**2
+    ! the loads are sums, from zero (each moving link's zeroed in the loop that adds its own)
+    known(0) = link_balance_t()
+    w2 = omega1**2
+    power = 0.0_wp
+    power_scale = 0.0_wp
+    do i = 1, ubound(states, 1)
+      associate (lk => mech%links(i), st => states(i))
+        known(i) = link_balance_t()
+        call point_motion(st, lk%s, ps)
+        a_s = ps%a * w2 + ps%v * eps1
+        eps = st%eq * w2 + st%u * eps1
+        gw = gravity_force(lk%m, mech%g, mech%down)
+        phi_f = inertia_force(lk%m, a_s)
+        m_phi = inertia_moment(lk%j, eps)
+        call balance_add_force(known(i), st%o, ps%p, gw + phi_f)
+        call balance_add_couple(known(i), m_phi)
+        term = dot_product(gw + phi_f, ps%v)
+        power = power + term + m_phi * st%u
+        power_scale = power_scale + abs(term) + abs(m_phi * st%u)
+      end associate
+    end do
+    do k = 1, size(mech%forces)
+      associate (fo => mech%forces(k))
+        i = fo%link
+        call point_motion(states(i), fo%at, ps)
+        if (fo%follow) then
+          ! the force's own direction turned by the link's angle (its cos and sin at hand)
+          associate (e => force_dir(:, k), c => states(i)%cos_th, s => states(i)%sin_th)
+            dir = [c * e(1) - s * e(2), s * e(1) + c * e(2)]
+          end associate
+        else
+          dir = force_dir(:, k)
+        end if
+        call balance_add_force(known(i), states(i)%o, ps%p, f_mag(k) * dir)
+        term = dot_product(f_mag(k) * dir, ps%v)
+        power = power + term
+        power_scale = power_scale + abs(term)
+      end associate
+    end do
+    do k = 1, size(mech%moment_link)
+      i = mech%moment_link(k)
+      call balance_add_couple(known(i), m_mag(k))
+      power = power + m_mag(k) * states(i)%u
+      power_scale = power_scale + abs(m_mag(k) * states(i)%u)
+    end do
+  end subroutine applied_loads
 
-      ! applied loads on every moving link, summed about the link's origin; power terms
-      power = 0.0_wp
-      power_scale = 0.0_wp
-      do i = 1, ubound(states, 1)
-        associate (lk => mech%links(i), st => states(i))
-          call point_motion(st, lk%s, ps)
-          a_s = ps%a * w2 + ps%v * eps1
-          eps = st%eq * w2 + st%u * eps1
-          gw = gravity_force(lk%m, mech%g, mech%down)
-          phi_f = inertia_force(lk%m, a_s)
-          m_phi = inertia_moment(lk%j, eps)
-          call balance_add_force(known(i), st%o, ps%p, gw + phi_f)
-          call balance_add_couple(known(i), m_phi)
-          term = dot_product(gw + phi_f, ps%v)
-          power = power + term + m_phi * st%u
-          power_scale = power_scale + abs(term) + abs(m_phi * st%u)
-        end associate
-      end do
-      do k = 1, size(mech%forces)
-        associate (fo => mech%forces(k))
-          i = fo%link
-          call point_motion(states(i), fo%at, ps)
-          if (fo%follow) then
-            ! the force's own direction turned by the link's angle (its cos and sin at hand)
-            associate (e => force_dir(:, k), c => states(i)%cos_th, s => states(i)%sin_th)
-              dir = [c * e(1) - s * e(2), s * e(1) + c * e(2)]
-            end associate
-          else
-            dir = force_dir(:, k)
-          end if
-          call balance_add_force(known(i), states(i)%o, ps%p, f_mag(k) * dir)
-          term = dot_product(f_mag(k) * dir, ps%v)
-          power = power + term
-          power_scale = power_scale + abs(term)
-        end associate
-      end do
-      do k = 1, size(mech%moment_link)
-        i = mech%moment_link(k)
-        call balance_add_couple(known(i), m_mag(k))
-        power = power + m_mag(k) * states(i)%u
-        power_scale = power_scale + abs(m_mag(k) * states(i)%u)
-      end do
-      if (present(extra)) then
-        do i = 1, ubound(states, 1)
-          call balance_add_balance(known(i), extra(i))
-        end do
-      end if
-      if (present(extra_power)) power = power + extra_power
-      if (present(extra_scale)) power_scale = power_scale + extra_scale
-      ! the size of a driving effort these loads make
-      if (mech%drive_dyad == 0) then
-        step%load_scale = load_moment_scale(known(1:), mechanism_size(mech, poses))
-      else
-        step%load_scale = maxval(known(1:)%scale_f)
-      end if
+  !> The self-check's equilibrium: every pair's reaction added to both links it acts between
+  !> (the crank's pin and balancing moment `m1` to the crank) in `known`, which holds the
+  !> applied loads and the reactions passed back; `residual` is the largest relative
+  !> equilibrium residual of the moving links. Each pair force goes into a local pair first
+  !> (its negation in place would be a temporary).
+  pure subroutine link_equilibrium(mech, known, states, poses, f, m, f_len, m1, residual)
+    !> Mechanism.
+    type(assur_mech_t), intent(in) :: mech
+    !> Loads of every link (N, N*m about its origin); the reactions are added.
+    type(link_balance_t), intent(inout) :: known(0:2 * size(mech%dyads) + 1)
+    !> Frames of links 0..2*nd+1.
+    type(link_state_t), intent(in) :: states(0:2 * size(mech%dyads) + 1)
+    !> Pose of each dyad.
+    type(dyad_pose_t), intent(in) :: poses(size(mech%dyads))
+    !> Pair forces (dyad pairs, then the crank pin), N.
+    real(wp), intent(in) :: f(2, 3 * size(mech%dyads) + 1)
+    !> Reaction moments of prismatic pairs, N*m.
+    real(wp), intent(in) :: m(3 * size(mech%dyads) + 1)
+    !> Length of each pair force as fast_magnitude gives it, N.
+    real(wp), intent(in) :: f_len(3 * size(mech%dyads) + 1)
+    !> Balancing moment on the crank, N*m.
+    real(wp), intent(in) :: m1
+    !> Largest relative equilibrium residual of the moving links.
+    real(wp), intent(out) :: residual
+    real(wp) :: f_pair(2)
+    integer :: d, nd, ip, pa, pb
+    nd = size(mech%dyads)
+    ip = crank_pin_index(nd)
+    f_pair = f(:, ip)
+    call add_at_origin(known(1), states(1)%o, states(1)%o, f_pair, f_len(ip))
+    call balance_add_couple(known(1), m1)
+    do d = 1, nd
+      pa = link_a(d)
+      pb = link_b(d)
+      ip = pair_index(d, 1)
+      f_pair = f(:, ip)
+      call add_at_origin(known(pa), states(pa)%o, poses(d)%p(:, 1), f_pair, f_len(ip))
+      call balance_add_couple(known(pa), m(ip))
+      ip = pair_index(d, 2)
+      f_pair = f(:, ip)
+      call balance_add_force(known(pa), states(pa)%o, poses(d)%p(:, 2), f_pair, f_len(ip))
+      call balance_add_couple(known(pa), m(ip))
+      f_pair = -f_pair
+      call balance_add_force(known(pb), states(pb)%o, poses(d)%p(:, 2), f_pair, f_len(ip))
+      call balance_add_couple(known(pb), -m(ip))
+      ip = pair_index(d, 3)
+      f_pair = f(:, ip)
+      call add_at_origin(known(pb), states(pb)%o, poses(d)%p(:, 3), f_pair, f_len(ip))
+      call balance_add_couple(known(pb), m(ip))
+    end do
+    residual = equilibrium_residual(known(1:))
+  end subroutine link_equilibrium
 
-      if (mech%drive_dyad == 0) then
-        ! dyads from the last to the first; each passes its outer reactions to the links it hangs on
-        call back_substitute(mech, states, poses, known, step%f, step%n, step%m, error, f_len)
-        if (allocated(error)) return
-        ! crank: pin reaction from the frame and balancing moment about the pivot
-        step%m1 = -known(1)%sum_m
-        step%m1_power = -power
-        step%mismatch = power_mismatch(step%m1, step%m1_power, power_scale, step%load_scale)
-      else
-        call drive_by_actuator(mech, power, power_scale, step, error)
-        if (allocated(error)) return
-        do k = 1, size(f_len)
-          f_len(k) = fast_magnitude(step%f(:, k))
-        end do
-      end if
-      step%power_scale = power_scale
-
-      ! equilibrium residual of every moving link with all its loads and reactions (each pair
-      ! force into a local pair first: a section of an allocatable passed on costs a small
-      ! mechanism's step more than the sums, and its negation would be a heap temporary)
-      ip = crank_pin_index(nd)
-      f_pair = step%f(:, ip)
-      call balance_add_force(known(1), states(1)%o, states(1)%o, f_pair, f_len(ip))
-      call balance_add_couple(known(1), step%m1)
-      do d = 1, nd
-        pa = link_a(d)
-        pb = link_b(d)
-        ip = pair_index(d, 1)
-        f_pair = step%f(:, ip)
-        call balance_add_force(known(pa), states(pa)%o, poses(d)%p(:, 1), f_pair, f_len(ip))
-        call balance_add_couple(known(pa), step%m(ip))
-        ip = pair_index(d, 2)
-        f_pair = step%f(:, ip)
-        call balance_add_force(known(pa), states(pa)%o, poses(d)%p(:, 2), f_pair, f_len(ip))
-        call balance_add_couple(known(pa), step%m(ip))
-        f_pair = -f_pair
-        call balance_add_force(known(pb), states(pb)%o, poses(d)%p(:, 2), f_pair, f_len(ip))
-        call balance_add_couple(known(pb), -step%m(ip))
-        ip = pair_index(d, 3)
-        f_pair = step%f(:, ip)
-        call balance_add_force(known(pb), states(pb)%o, poses(d)%p(:, 3), f_pair, f_len(ip))
-        call balance_add_couple(known(pb), step%m(ip))
-      end do
-      step%residual = equilibrium_residual(known(1:))
-      if (present(balances)) balances = known
-    end associate
-  end subroutine step_in
+  !> balance_add_force(balance, origin, at, f, f_length) for a force the poses apply at the
+  !> link's origin (the crank's pin; a dyad's outer pair on its own link: every kind puts
+  !> link a's origin at pair 1 and link b's at pair 3), the same sums: where `at` - `origin`
+  !> is zero (as it is), its lever arm's length is 0 without balance_add_force's call.
+  pure subroutine add_at_origin(balance, origin, at, f, f_length)
+    !> The link's loads so far.
+    type(link_balance_t), intent(inout) :: balance
+    !> The link's origin and the force's point of application, m; the force, N.
+    real(wp), intent(in) :: origin(2), at(2), f(2)
+    !> fast_magnitude(f), N.
+    real(wp), intent(in) :: f_length
+    real(wp) :: arm(2)
+    arm = at - origin
+    if (arm(1) == 0.0_wp .and. arm(2) == 0.0_wp) then
+      call balance_add_lever(balance, arm, 0.0_wp, f, f_length)
+    else
+      call balance_add_force(balance, origin, at, f, f_length)
+    end if
+  end subroutine add_at_origin
 
   !> Size of the mechanism at this position: the largest distance of a dyad's joint from
   !> the crank pivot, m (a lever arm of the driving moment).
@@ -518,7 +574,7 @@ contains
     !> Mechanism.
     type(assur_mech_t), intent(in) :: mech
     !> Pose of each dyad.
-    type(dyad_pose_t), intent(in) :: poses(:)
+    type(dyad_pose_t), intent(in) :: poses(size(mech%dyads))
     !> The largest squared distance, m^2, and the point at that distance.
     real(wp) :: sq, sq_max, far(2)
     integer :: d, j
