@@ -80,9 +80,11 @@ module kinetostat_decimal
     + 4294967296_int64 * (48 + mod(abs(shifta((iand(i_, 2047) - 1023) * 78913, 18) + shiftr(i_, 11)), 10)), &
     i_ = 0, 4095)]
   !> The 4 decimal digits of n = 0..9999 as ASCII bytes of one integer, the first digit in
-  !> its lowest byte (stored in this order on a little-endian machine).
-  integer, parameter :: digit_quads(0:9999) = [(48 + i_ / 1000 + 256 * (48 + mod(i_ / 100, 10)) &
-    + 65536 * (48 + mod(i_ / 10, 10)) + 16777216 * (48 + mod(i_, 10)), i_ = 0, 9999)]
+  !> its lowest byte (stored in this order on a little-endian machine). Each division is
+  !> exact (n less its remainder), as a constant expression must be under -Werror.
+  integer, parameter :: digit_quads(0:9999) = [(48 + (i_ - mod(i_, 1000)) / 1000 &
+    + 256 * (48 + mod((i_ - mod(i_, 100)) / 100, 10)) &
+    + 65536 * (48 + mod((i_ - mod(i_, 10)) / 10, 10)) + 16777216 * (48 + mod(i_, 10)), i_ = 0, 9999)]
   !> 12 - k for the exponent k of row j of the tables above (the power of ten of its scale).
   integer, parameter :: cell_scale_exponents(0:4095) = [(cell_decimals - (shifta((iand(i_, 2047) - 1023) * 78913, 18) &
     + shiftr(i_, 11)), i_ = 0, 4095)]
