@@ -32,7 +32,7 @@ module kinetostat_assur_deck
   use kinetostat_assur_deck_loads, only: read_load, find_link
   use kinetostat_assur_deck_names, only: kind_names_as_codes, name_unknown_kind
   use kinetostat_assur_steps, only: assur_window, assur_phi1_deg, assur_omega1_steps, assur_omega1, &
-    assur_eps1, assur_motion_sign, assur_load_value, assur_force_values, assur_moment_values, &
+    assur_eps1, assur_motion_sign, assur_load_value, &
     assur_load_steps, table_value, table_angle, table_position
   implicit none
   private
@@ -40,7 +40,7 @@ module kinetostat_assur_deck
   public :: load_schedule_t, load_constant, load_window, load_column, load_table
   public :: resist_none, resist_moment, resist_force
   public :: assur_phi1_deg, assur_omega1_steps, assur_omega1, assur_eps1, assur_motion_sign
-  public :: assur_load_value, assur_force_values, assur_moment_values, assur_load_steps, table_value, &
+  public :: assur_load_value, assur_load_steps, table_value, &
     table_angle, table_position
   public :: max_dyads, max_forces, max_moments
 

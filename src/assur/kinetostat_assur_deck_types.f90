@@ -132,9 +132,9 @@ module kinetostat_assur_deck_types
     real(wp), allocatable :: eps1_values(:)
     !> The deck's step_values (columns of n values each), N or N*m (the read buffer, kept).
     real(wp), allocatable :: step_values(:)
-    !> How each external force's magnitude (N) is given per step (see assur_force_values).
+    !> How each external force's magnitude (N) is given per step (see assur_load_value).
     type(load_schedule_t), allocatable :: force_load(:)
-    !> How each external moment (N*m) is given per step (see assur_moment_values).
+    !> How each external moment (N*m) is given per step (see assur_load_value).
     type(load_schedule_t), allocatable :: moment_load(:)
     !> Machine dynamics settings (dynamics, delta, j_rotor, j_flywheel).
     type(dynamics_deck_t) :: dyn

@@ -26,7 +26,7 @@ module kinetostat_assur_friction
   use kinetostat_pair_friction, only: friction_tolerance, friction_max_iterations, friction_zero_rel, roundoff_rel, &
     sign_floor_rel, friction_load, relative, note_pair_changes, reverses_at_rest, self_locking_error, &
     friction_iteration_t
-  use kinetostat_vec2, only: perp, magnitude
+  use kinetostat_vec2, only: perp, magnitude, largest_magnitude
   use kinetostat_selfcheck, only: link_balance_t, balance_add_force, balance_add_couple, equilibrium_residual, &
     power_mismatch
   use kinetostat_assur_kinematics, only: link_state_t, dyad_pose_t
@@ -211,13 +211,8 @@ contains
     real(wp), intent(in) :: length
     real(wp), intent(out) :: change
     integer, intent(out) :: where
-    real(wp) :: fmax, floor
-    integer :: ip
-    fmax = 0.0_wp
-    do ip = 1, size(new%f, 2)
-      fmax = max(fmax, magnitude(new%f(:, ip)))
-    end do
-    floor = roundoff_rel * fmax
+    real(wp) :: floor
+    floor = roundoff_rel * largest_magnitude(new%f)
     change = max(relative(abs(new%m1 - old%m1), max(abs(new%m1), floor * length)), &
                  relative(abs(new%f_drive - old%f_drive), max(abs(new%f_drive), floor)))
     where = 0

@@ -13,7 +13,7 @@ module kinetostat_assur_steps
   implicit none
   private
   public :: assur_window, assur_phi1_deg, assur_omega1_steps, assur_omega1, assur_eps1, assur_motion_sign, &
-    assur_load_value, assur_force_values, assur_moment_values, assur_load_steps, table_value, table_angle, &
+    assur_load_value, assur_load_steps, table_value, table_angle, &
     table_position
 
 
@@ -194,36 +194,6 @@ contains
     if (abs(rate) <= tol) return
     sense = sign(1.0_wp, rate) * assur_motion_sign(assur_omega1(deck, k))
   end function resist_sense
-
-  !> Force magnitudes of step k, N (one per deck%force_load).
-  pure function assur_force_values(deck, k) result(values)
-    !> Validated deck.
-    type(assur_deck_t), intent(in) :: deck
-    !> Step number, 1..n.
-    integer, intent(in) :: k
-    !> One value per force, N.
-    real(wp) :: values(size(deck%force_load))
-    !> Force number.
-    integer :: i
-    do i = 1, size(values)
-      values(i) = assur_load_value(deck, deck%force_load(i), k)
-    end do
-  end function assur_force_values
-
-  !> Moments of step k, N*m (one per deck%moment_load).
-  pure function assur_moment_values(deck, k) result(values)
-    !> Validated deck.
-    type(assur_deck_t), intent(in) :: deck
-    !> Step number, 1..n.
-    integer, intent(in) :: k
-    !> One value per moment, N*m.
-    real(wp) :: values(size(deck%moment_load))
-    !> Moment number.
-    integer :: i
-    do i = 1, size(values)
-      values(i) = assur_load_value(deck, deck%moment_load(i), k)
-    end do
-  end function assur_moment_values
 
   !> A load's value at every step, N or N*m (for the echo and the load-edge marks; a
   !> temporary of n values).

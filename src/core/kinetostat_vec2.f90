@@ -4,7 +4,7 @@ module kinetostat_vec2
   use kinetostat_kinds, only: wp, rad_to_deg
   implicit none
   private
-  public :: polar, unit_at, perp, cross, rotate, magnitude, fast_magnitude
+  public :: polar, unit_at, perp, cross, rotate, magnitude, fast_magnitude, largest_magnitude
   public :: angle_360_deg, angle_180_deg, clean_zero, snap_noise
 
   interface
@@ -74,6 +74,19 @@ contains
     real(wp) :: r
     r = c_hypot(v(1), v(2))
   end function magnitude
+
+  !> The largest length of the columns of `f` (0 when it has none): a step's largest pair
+  !> force, N, as the roundoff floors and convergence tests scale by it.
+  pure function largest_magnitude(f) result(r)
+    !> Plane vectors, one a column (2 x n).
+    real(wp), intent(in) :: f(:, :)
+    real(wp) :: r
+    integer :: i
+    r = 0.0_wp
+    do i = 1, size(f, 2)
+      r = max(r, magnitude(f(:, i)))
+    end do
+  end function largest_magnitude
 
   !> Euclidean length as sqrt(x**2 + y**2) where the squares neither overflow nor lose
   !> digits to underflow (within an ulp or so of `magnitude`'s hypot, at a fraction of its

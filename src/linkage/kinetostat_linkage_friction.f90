@@ -24,7 +24,7 @@ module kinetostat_linkage_friction
   use kinetostat_text, only: real_str
   use kinetostat_pair_friction, only: friction_max_iterations, friction_zero_rel, roundoff_rel, sign_floor_rel, &
     friction_load, relative, note_pair_changes, reverses_at_rest, self_locking_error, friction_iteration_t
-  use kinetostat_vec2, only: perp, rotate, magnitude
+  use kinetostat_vec2, only: perp, rotate, magnitude, largest_magnitude
   use kinetostat_linkage, only: linkage_t, linkage_step_t, linkage_work_t, linkage_force_t, pair_r, pair_p, &
     linkage_statics, linkage_velocity_analogues, point_position
   implicit none
@@ -131,7 +131,7 @@ contains
 
     fr%effort0 = step%effort
     allocate (fr%q(np), fr%rate(np), fr%loss(np))
-    fmax = largest_force(step)
+    fmax = largest_magnitude(step%f)
     roundoff_driver = sign_floor_rel * fmax * mech%size
     where = 0
     do it = 1, friction_max_iterations
@@ -230,7 +230,7 @@ contains
       integer, intent(out) :: at
       real(wp) :: floor
       integer :: kk
-      floor = roundoff_rel * largest_force(b)
+      floor = roundoff_rel * largest_magnitude(b%f)
       ch = 0.0_wp
       at = 0
       do kk = 1, size(b%effort)
@@ -258,14 +258,5 @@ contains
     if (abs(x) > tol) sense_of = sign(1.0_wp, x)
   end function sense_of
 
-  !> The step's largest pair force, N.
-  pure real(wp) function largest_force(st)
-    type(linkage_step_t), intent(in) :: st
-    integer :: kk
-    largest_force = 0.0_wp
-    do kk = 1, size(st%f, 2)
-      largest_force = max(largest_force, magnitude(st%f(:, kk)))
-    end do
-  end function largest_force
 
 end module kinetostat_linkage_friction

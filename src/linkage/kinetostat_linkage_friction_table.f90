@@ -6,7 +6,7 @@ module kinetostat_linkage_friction_table
   use kinetostat_kinds, only: wp, deg_to_rad
   use kinetostat_text, only: upper
   use kinetostat_noise, only: noise_rel
-  use kinetostat_vec2, only: magnitude, clean_zero
+  use kinetostat_vec2, only: largest_magnitude, clean_zero
   use kinetostat_run_tally, only: trapezoid_t
   use kinetostat_step_table, only: step_table_t, column, col_moment, col_component, col_other, col_flag, col_ratio
   use kinetostat_labels, only: lang_ru
@@ -56,11 +56,7 @@ contains
     real(wp), allocatable :: v(:)
     real(wp) :: floor, eta
     integer :: k
-    floor = 0.0_wp
-    do k = 1, size(s%f, 2)
-      floor = max(floor, magnitude(s%f(:, k)))
-    end do
-    floor = noise_rel * floor
+    floor = noise_rel * largest_magnitude(s%f)
     if (deck%mech%pairs(deck%mech%drives(1)%pair)%kind == pair_r) floor = floor * deck%mech%size
     v = [merge(0.0_wp, fr%effort0(1), abs(fr%effort0(1)) <= floor)]
     do k = 1, size(deck%friction_f)

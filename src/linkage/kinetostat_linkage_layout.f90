@@ -9,7 +9,7 @@ module kinetostat_linkage_layout
   use kinetostat_error, only: error_t
   use kinetostat_text, only: int_str, real_str, upper
   use kinetostat_noise, only: noise_rel
-  use kinetostat_vec2, only: magnitude, angle_360_deg, clean_zero, rotate
+  use kinetostat_vec2, only: magnitude, largest_magnitude, angle_360_deg, clean_zero, rotate
   use kinetostat_step_table, only: step_table_t, column_t, column, col_input_angle, col_component, col_moment, &
     col_length, col_other, lack_block_memory
   use kinetostat_table_layout, only: table_field_t, field, blank_field, force_and_angle, &
@@ -855,11 +855,7 @@ contains
       call table%put_point(r, "S"//link_name(mech, i), x)
       call table%put_acceleration(r, "S"//link_name(mech, i), as)
     end do
-    floor = 0.0_wp
-    do k = 1, size(mech%pairs)
-      floor = max(floor, magnitude(s%f(:, k)))
-    end do
-    floor = noise_rel * floor
+    floor = noise_rel * largest_magnitude(s%f(:, :size(mech%pairs)))
     do k = 1, size(mech%pairs)
       f = s%f(:, k)
       where (abs(f) <= floor) f = 0.0_wp

@@ -3,7 +3,7 @@
 !> with angle 0; magnitude and angle columns of forces.
 module kinetostat_noise
   use kinetostat_kinds, only: wp
-  use kinetostat_vec2, only: magnitude, snap_noise, angle_360_deg, angle_180_deg
+  use kinetostat_vec2, only: magnitude, largest_magnitude, snap_noise, angle_360_deg, angle_180_deg
   implicit none
   private
   public :: noise_rel, angles_0_360, angles_pm180, noise_floor, force_columns, force_components
@@ -26,11 +26,7 @@ contains
     !> Further signed forces of the step, N (may be empty).
     real(wp), intent(in) :: others(:)
     real(wp) :: floor
-    integer :: i
-    floor = 0.0_wp
-    do i = 1, size(f, 2)
-      floor = max(floor, magnitude(f(:, i)))
-    end do
+    floor = largest_magnitude(f)
     if (size(others) > 0) floor = max(floor, maxval(abs(others)))
     floor = noise_rel * floor
   end function noise_floor
