@@ -4,7 +4,7 @@
 module kinetostat_assur_columns
   use kinetostat_kinds, only: wp, deg_to_rad, rad_to_deg
   use kinetostat_noise, only: noise_rel
-  use kinetostat_vec2, only: magnitude, angle_360_deg, angle_180_deg, clean_zero
+  use kinetostat_vec2, only: magnitude, largest_magnitude, angle_360_deg, angle_180_deg, clean_zero
   use kinetostat_run_tally, only: trapezoid_t
   use kinetostat_step_table, only: step_table_t, column_t, column, col_input_angle, col_force, col_force_angle, &
     col_component, col_moment, col_length, col_other, col_flag, col_ratio
@@ -13,7 +13,7 @@ module kinetostat_assur_columns
   use kinetostat_assur, only: assur_step_t
   use kinetostat_assur_friction, only: friction_step_t
   use kinetostat_assur_deck, only: assur_deck_t, assur_phi1_deg
-  use kinetostat_friction_block, only: friction_efficiency, eta_roundoff
+  use kinetostat_friction_block, only: friction_efficiency, friction_step_values
   implicit none
   private
   public :: assur_columns, assur_csv_values, assur_pair_prismatic, assur_row, assur_row_size, pair_turns, &
@@ -66,32 +66,17 @@ contains
     !> Its friction results.
     type(friction_step_t), intent(in) :: fs
     real(wp), allocatable :: v(:)
-    real(wp) :: driver, mfloor, eta
-    integer :: ip
+    real(wp) :: mfloor, effort0
     ! M1_0 below the roundoff floor of M1 (see assur_csv_values) is 0, as M1 would be
-    mfloor = 0.0_wp
-    do ip = 1, size(s%f, 2)
-      mfloor = max(mfloor, magnitude(s%f(:, ip)))
-    end do
-    mfloor = noise_rel * mfloor * crank_length(deck)
-    v = [fs%driver_frictionless]
+    mfloor = noise_rel * largest_magnitude(s%f) * crank_length(deck)
+    effort0 = fs%driver_frictionless
     if (deck%mech%drive_dyad > 0) then
-      if (abs(v(1)) <= noise_rel * max(mfloor / crank_length(deck), abs(s%f_drive))) v(1) = 0.0_wp
-    else if (abs(v(1)) <= mfloor) then
-      v(1) = 0.0_wp
+      if (abs(effort0) <= noise_rel * max(mfloor / crank_length(deck), abs(s%f_drive))) effort0 = 0.0_wp
+    else if (abs(effort0) <= mfloor) then
+      effort0 = 0.0_wp
     end if
-    do ip = 1, size(deck%friction)
-      if (deck%friction(ip)%f > 0.0_wp) v = [v, fs%loss(ip)]
-    end do
-    driver = fs%driver_rate * fs%motion_sign
-    if (driver > 0.0_wp) then
-      eta = 1.0_wp - fs%rate_total / driver
-      if (abs(eta) <= eta_roundoff) eta = 0.0_wp
-      v = [v, fs%p_loss, 1.0_wp, eta]
-    else
-      v = [v, fs%p_loss, 0.0_wp, 0.0_wp]
-    end if
-    v = clean_zero(v)
+    v = friction_step_values(effort0, deck%friction%f, fs%loss, fs%p_loss, fs%rate_total, &
+                             fs%driver_rate * fs%motion_sign)
   end function friction_csv_values
 
   !> Work of the driver and work lost to friction over the run, J: trapezoidal sums over the

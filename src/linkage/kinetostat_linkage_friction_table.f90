@@ -6,7 +6,7 @@ module kinetostat_linkage_friction_table
   use kinetostat_kinds, only: wp, deg_to_rad
   use kinetostat_text, only: upper
   use kinetostat_noise, only: noise_rel
-  use kinetostat_vec2, only: largest_magnitude, clean_zero
+  use kinetostat_vec2, only: largest_magnitude
   use kinetostat_run_tally, only: trapezoid_t
   use kinetostat_step_table, only: step_table_t, column, col_moment, col_component, col_other, col_flag, col_ratio
   use kinetostat_labels, only: lang_ru
@@ -14,7 +14,7 @@ module kinetostat_linkage_friction_table
   use kinetostat_linkage, only: linkage_t, linkage_step_t, pair_r
   use kinetostat_linkage_friction, only: linkage_friction_t
   use kinetostat_linkage_deck, only: linkage_deck_t, linkage_drive_values
-  use kinetostat_friction_block, only: friction_efficiency, eta_roundoff
+  use kinetostat_friction_block, only: friction_efficiency, friction_step_values
   implicit none
   private
   public :: add_friction_columns, friction_values, friction_integrals, friction_summary, echo_friction
@@ -54,22 +54,11 @@ contains
     type(linkage_step_t), intent(in) :: s
     type(linkage_friction_t), intent(in) :: fr
     real(wp), allocatable :: v(:)
-    real(wp) :: floor, eta
-    integer :: k
+    real(wp) :: floor
     floor = noise_rel * largest_magnitude(s%f)
     if (deck%mech%pairs(deck%mech%drives(1)%pair)%kind == pair_r) floor = floor * deck%mech%size
-    v = [merge(0.0_wp, fr%effort0(1), abs(fr%effort0(1)) <= floor)]
-    do k = 1, size(deck%friction_f)
-      if (deck%friction_f(k) > 0.0_wp) v = [v, fr%loss(k)]
-    end do
-    if (fr%driver_rate > 0.0_wp) then
-      eta = 1.0_wp - fr%rate_total / fr%driver_rate
-      if (abs(eta) <= eta_roundoff) eta = 0.0_wp
-      v = [v, fr%p_loss, 1.0_wp, eta]
-    else
-      v = [v, fr%p_loss, 0.0_wp, 0.0_wp]
-    end if
-    v = clean_zero(v)
+    v = friction_step_values(merge(0.0_wp, fr%effort0(1), abs(fr%effort0(1)) <= floor), deck%friction_f, fr%loss, &
+                             fr%p_loss, fr%rate_total, fr%driver_rate)
   end function friction_values
 
   !> The works of steps step1 .. step1 + size(frs) - 1 as points to integrate over the first

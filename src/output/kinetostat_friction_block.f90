@@ -14,7 +14,7 @@ module kinetostat_friction_block
   use kinetostat_vec2, only: clean_zero
   implicit none
   private
-  public :: write_friction_block, friction_efficiency, eta_roundoff
+  public :: write_friction_block, friction_efficiency, friction_step_values, eta_roundoff
 
   !> An efficiency within this of 0 is roundoff (A_loss = A_driver).
   real(wp), parameter :: eta_roundoff = 1.0e-12_wp
@@ -25,6 +25,35 @@ module kinetostat_friction_block
   integer, parameter :: field_width = 12
 
 contains
+
+  !> A step's friction columns, <effort>_0, P_loss_<pair> of every pair with friction,
+  !> P_loss, eta_defined, eta (1 - the loss rate over the driver's rate where the driver
+  !> delivers power; elsewhere eta_defined = 0 and eta = 0), each roundoff made 0 (clean_zero).
+  pure function friction_step_values(effort0, f, loss, p_loss, rate_total, driver_rate) result(v)
+    !> The driving effort without friction, N*m or N (already snapped to its roundoff floor).
+    real(wp), intent(in) :: effort0
+    !> Friction coefficient of every pair (a pair with f > 0 has a column).
+    real(wp), intent(in) :: f(:)
+    !> Power lost in every pair, W (one per f).
+    real(wp), intent(in) :: loss(:)
+    !> Power lost in all the pairs, W.
+    real(wp), intent(in) :: p_loss
+    !> Rate of the loss, in driver_rate's unit.
+    real(wp), intent(in) :: rate_total
+    !> The driver's power (W, or per unit of the input's rate): eta is defined where it is > 0.
+    real(wp), intent(in) :: driver_rate
+    real(wp), allocatable :: v(:)
+    real(wp) :: eta
+    v = [effort0, pack(loss(:size(f)), f > 0.0_wp)]
+    if (driver_rate > 0.0_wp) then
+      eta = 1.0_wp - rate_total / driver_rate
+      if (abs(eta) <= eta_roundoff) eta = 0.0_wp
+      v = [v, p_loss, 1.0_wp, eta]
+    else
+      v = [v, p_loss, 0.0_wp, 0.0_wp]
+    end if
+    v = clean_zero(v)
+  end function friction_step_values
 
   !> Write the block's heading (first block of the run only) and its rows. The fields are the
   !> run's input (column 1), the columns from <effort>_0 to eta, headed and united as they
