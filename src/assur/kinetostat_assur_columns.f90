@@ -270,11 +270,23 @@ contains
     end do
   end function pair_turns
 
-  !> Number of values of a row of assur_columns.
+  !> Number of values of a row of assur_columns, counted as it declares them (without
+  !> declaring them: a column's declaration looks its Russian unit up).
   pure integer function assur_row_size(deck)
     !> Validated deck.
     type(assur_deck_t), intent(in) :: deck
-    assur_row_size = size(assur_columns(deck))
+    integer :: ip
+    assur_row_size = 1
+    do ip = 1, size(deck%pair_name)
+      assur_row_size = assur_row_size + 2
+      if (deck%components) assur_row_size = assur_row_size + 2
+      if (assur_pair_prismatic(deck, ip)) assur_row_size = assur_row_size + 2
+    end do
+    if (deck%mech%drive_dyad == 0) then
+      assur_row_size = assur_row_size + 1
+    else
+      assur_row_size = assur_row_size + 4
+    end if
   end function assur_row_size
 
   !> The CSV row `v` of one step, in the order of assur_columns. Forces below `noise_rel`
