@@ -102,6 +102,9 @@ contains
     end do
     ! the link whose field gives each point's image: the first listing it
     allocate (host(np), cv(2, np), ca(2, np), p(2, np), omega(nl), eps(nl), v0(2, nl), a0(2, nl))
+    ! (a link the pass does not reach stays at rest; the others are set by every row's pass)
+    v0 = 0.0_wp
+    a0 = 0.0_wp
     host = 0
     do ip = 1, np
       do i = 1, nl
@@ -227,9 +230,10 @@ contains
       end if
       d = [cos(ang), sin(ang)]
     end function guide_direction
-    !> The links' translation terms of this row (velocities or accelerations) by the pass.
-    !> (Written component by component into c, which the caller gives whole: no array
-    !> temporary, so nothing is allocated per row.)
+    !> The links' translation terms of this row (velocities or accelerations) by the pass:
+    !> each link of the pass from links set before it in the same pass (those the pass does
+    !> not reach keep the zero they were given once). (Written component by component into
+    !> c, which the caller gives whole: no array temporary, so nothing is allocated per row.)
     pure subroutine translations(pass, accel, c, parallel)
       type(pass_step_t), intent(in) :: pass(:)
       logical, intent(in) :: accel
@@ -237,11 +241,7 @@ contains
       !> Set when a link's two guides are parallel at this step.
       logical, intent(inout) :: parallel
       real(wp) :: r(2), det, f(2)
-      integer :: st, m, q, j, e, i
-      do i = 1, size(c, 2)
-        c(1, i) = 0.0_wp
-        c(2, i) = 0.0_wp
-      end do
+      integer :: st, m, q, j, e
       do st = 1, size(pass)
         m = pass(st)%link
         q = pass(st)%point
