@@ -15,6 +15,7 @@ module test_columns
   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_positive_inf
   use kinetostat_kinds, only: wp
   use kinetostat_assur_columns, only: force_length
+  use kinetostat_text, only: int_str
   use test_harness, only: test_counts_t, check_true, next, hex
   implicit none
   private
@@ -81,7 +82,7 @@ contains
         call compare(-special(i), special(j))
       end do
     end do
-    call check_true(t, "force_length is hypot bit for bit", bad == 0, int_text(bad)//" differ, first: "//first)
+    call check_true(t, "force_length is hypot bit for bit", bad == 0, int_str(bad)//" differ, first: "//first)
   contains
     !> One comparison (the first difference kept for the message).
     subroutine compare(a, b)
@@ -102,14 +103,6 @@ contains
         lo + int(modulo(shiftr(bits, 1), int(hi - lo + 1, int64))))
       if (btest(bits, 0)) v = -v
     end function random_value
-    !> An integer as text.
-    function int_text(n) result(text)
-      integer, intent(in) :: n
-      character(len=:), allocatable :: text
-      character(len=16) :: buf
-      write (buf, '(i0)') n
-      text = trim(buf)
-    end function int_text
   end subroutine test_force_length
 
   !> The declarations of a deck's run and its legacy table in both languages.
