@@ -512,8 +512,10 @@ contains
         js = js + 2
         jl = jl + 3
         ja = ja + 2
-        ! the turn into the link's axes (one cos and sin of the angle, taken together)
-        th = -st%th
+        ! the turn into the link's axes, by -th: [cos th, sin th; -sin th, cos th] (cos and
+        ! sin of one argument: one sincos call; the C library's cos is even and its sin odd,
+        ! bit for bit, so these are the values of cos(-th) and -sin(-th))
+        th = st%th
         c = cos(th)
         sn = sin(th)
         cos_link(i) = c
@@ -544,8 +546,8 @@ contains
       i = plan%link(ip)
       c = cos_link(i)
       sn = sin_link(i)
-      values(jl + 1) = component(c * f1 - sn * f2)
-      values(jl + 2) = component(sn * f1 + c * f2)
+      values(jl + 1) = component(c * f1 + sn * f2)
+      values(jl + 2) = component(c * f2 - sn * f1)
       jl = jl + 2
     end do
     do j = 1, size(slots)
