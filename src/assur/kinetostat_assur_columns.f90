@@ -461,7 +461,7 @@ contains
   !> took (the turned force's own length decides nothing: a force whose turned length is at
   !> most the floor has both components at most the floor). The values are put in order
   !> into `values` (the caller's workspace) and then into their columns.
-  pure subroutine assur_kinematics_row(deck, plan, s, f_len, slots, values, row)
+  pure subroutine assur_kinematics_row(deck, plan, s, f_len, slots, values, link_turns, row)
     !> Validated deck.
     type(assur_deck_t), intent(in) :: deck
     !> The deck's row plan (row_plan).
@@ -474,11 +474,12 @@ contains
     integer, intent(in) :: slots(:)
     !> Workspace of kinematics_value_count values.
     real(wp), intent(inout) :: values(:)
+    !> Workspace (2, moving links): each link's cos and sin of its angle.
+    real(wp), intent(inout) :: link_turns(:, :)
     !> The step's row of the table.
     real(wp), intent(inout) :: row(:)
     type(point_state_t) :: ps
     real(wp) :: w2, floor, f1, f2, c, sn, th
-    real(wp) :: cos_link(size(s%work_states) - 1), sin_link(size(s%work_states) - 1)
     integer :: np, nl, i, ip, d, j, js, jl, ja, q
     np = size(s%f, 2)
     nl = ubound(s%work_states, 1)
@@ -518,8 +519,8 @@ contains
         th = st%th
         c = cos(th)
         sn = sin(th)
-        cos_link(i) = c
-        sin_link(i) = sn
+        link_turns(1, i) = c
+        link_turns(2, i) = sn
       end associate
     end do
     j = ja
@@ -544,8 +545,8 @@ contains
       values(j + 2) = component(sn * f1 + c * f2)
       j = j + 2
       i = plan%link(ip)
-      c = cos_link(i)
-      sn = sin_link(i)
+      c = link_turns(1, i)
+      sn = link_turns(2, i)
       values(jl + 1) = component(c * f1 + sn * f2)
       values(jl + 2) = component(c * f2 - sn * f1)
       jl = jl + 2

@@ -288,11 +288,11 @@ contains
       type(friction_step_t) :: fs
       type(step_loads_t) :: loads
       type(error_t), allocatable :: step_error
-      !> The step's pair force lengths (assur_row's, for the kinematics row) and the
-      !> kinematics row's values.
-      real(wp), allocatable :: lengths(:), values(:)
+      !> The step's pair force lengths (assur_row's, for the kinematics row), the
+      !> kinematics row's values and its links' cos and sin.
+      real(wp), allocatable :: lengths(:), values(:), link_turns(:, :)
       integer :: kk, i
-      allocate (lengths(np), values(size(slots)))
+      allocate (lengths(np), values(size(slots)), link_turns(2, 2 * size(self%deck%mech%dyads) + 1))
       ! the links' angles only where a column shows them (the kinematics columns)
       step%link_angles = kinematics
       !$omp do schedule(dynamic, 64) reduction(min:first_bad)
@@ -319,7 +319,8 @@ contains
         end if
         residual(i) = step%residual
         mismatch(i) = step%mismatch
-        if (kinematics) call assur_kinematics_row(self%deck, plan, step, lengths, slots, values, table%rows(:, i))
+        if (kinematics) call assur_kinematics_row(self%deck, plan, step, lengths, slots, values, link_turns, &
+          table%rows(:, i))
       end do
       !$omp end do
     end block
