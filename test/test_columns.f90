@@ -11,7 +11,12 @@ module test_columns
   use kinetostat_step_table, only: step_table_t, column_t, column, col_other, col_force, col_force_angle
   use kinetostat_text_buffer, only: text_buffer_t
   use kinetostat_labels, only: lang_en, lang_ru
-  use test_harness, only: test_counts_t, check_true
+  use, intrinsic :: iso_fortran_env, only: int64
+  use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_positive_inf
+  use kinetostat_kinds, only: wp
+  use kinetostat_assur_columns, only: force_length
+  use kinetostat_text, only: int_str
+  use test_harness, only: test_counts_t, check_true, next, hex
   implicit none
   private
   public :: run_columns_tests
@@ -32,6 +37,7 @@ contains
     type(test_counts_t), intent(inout) :: t
     integer :: i
     call test_checker_fails(t)
+    call test_force_length(t)
     do i = 1, size(decks)
       call test_deck(t, trim(decks(i)), .false.)
     end do
@@ -39,6 +45,65 @@ contains
     call test_deck(t, "data/assur_pr3050_friction.nml", .true.)
     call test_deck(t, "data/linkage_slider_crank.nml", .true.)
   end subroutine run_columns_tests
+
+  !> The assur rows' force_length gives hypot's bits: random components over the whole
+  !> range of exponents (each side of its thresholds) and of ratios, near-equal pairs, and
+  !> zeros, subnormals, infinities and NaN.
+  subroutine test_force_length(t)
+    type(test_counts_t), intent(inout) :: t
+    real(wp) :: x, y, special(7)
+    integer(int64) :: state
+    integer :: i, j, bad
+    character(len=:), allocatable :: first
+    state = 88172645463325252_int64
+    bad = 0
+    first = ""
+    do i = 1, 400000
+      x = random_value(-620, 620)
+      select case (mod(i, 4))
+      case (0)
+        y = random_value(-620, 620)
+      case (1)
+        ! a ratio within 2**-60 .. 2**4 (the negligible threshold 2**-54 among them)
+        y = x * random_value(-60, 4)
+      case (2)
+        ! nearly equal (the kernel's first branch)
+        y = x * (1.0_wp + random_value(-52, -1))
+      case default
+        y = x * random_value(-3, 3)
+      end select
+      call compare(x, y)
+    end do
+    special = [0.0_wp, -0.0_wp, tiny(1.0_wp) / 8.0_wp, huge(1.0_wp), ieee_value(1.0_wp, ieee_positive_inf), &
+      ieee_value(1.0_wp, ieee_quiet_nan), 1.5_wp]
+    do i = 1, size(special)
+      do j = 1, size(special)
+        call compare(special(i), special(j))
+        call compare(-special(i), special(j))
+      end do
+    end do
+    call check_true(t, "force_length is hypot bit for bit", bad == 0, int_str(bad)//" differ, first: "//first)
+  contains
+    !> One comparison (the first difference kept for the message).
+    subroutine compare(a, b)
+      real(wp), intent(in) :: a, b
+      real(wp) :: h, g
+      h = hypot(a, b)
+      g = force_length(a, b)
+      if (transfer(h, 1_int64) == transfer(g, 1_int64)) return
+      bad = bad + 1
+      if (len(first) == 0) first = "x = "//hex(a)//", y = "//hex(b)//": hypot "//hex(h)//", force_length "//hex(g)
+    end subroutine compare
+    !> A random value of either sign with a random exponent in lo .. hi.
+    real(wp) function random_value(lo, hi) result(v)
+      integer, intent(in) :: lo, hi
+      integer(int64) :: bits
+      bits = next(state)
+      v = scale(1.0_wp + real(shiftr(bits, 12), wp) * scale(1.0_wp, -52), &
+        lo + int(modulo(shiftr(bits, 1), int(hi - lo + 1, int64))))
+      if (btest(bits, 0)) v = -v
+    end function random_value
+  end subroutine test_force_length
 
   !> The declarations of a deck's run and its legacy table in both languages.
   subroutine test_deck(t, path, link_frame)

@@ -17,12 +17,29 @@ module kinetostat_assur_columns
   implicit none
   private
   public :: assur_columns, assur_csv_values, assur_pair_prismatic, assur_row, assur_row_size, pair_turns, &
-    crank_length, kinematics_value_count, pair_link, assur_kinematics_row
+    crank_length, kinematics_value_count, pair_link, assur_kinematics_row, row_plan_t, row_plan, force_length
   public :: friction_columns, friction_csv_values, friction_work, friction_integrals, friction_summary, &
     friction_row_size
 
   !> Characters of a pair's name the legacy table's heading shows (the width of its fields).
   integer, parameter, public :: pair_heading_width = 12
+
+  !> What a step's row takes of the deck, found once for a block (row_plan): per pair its
+  !> turn into its frame, whether it is prismatic and the link its force acts on.
+  type :: row_plan_t
+    !> The pairs' turns into their frames (pair_turns).
+    real(wp), allocatable :: turn(:, :)
+    !> Per pair: whether its turn is another than none (cos 1, sin 0).
+    logical, allocatable :: turned(:)
+    !> Per pair: whether it is prismatic (assur_pair_prismatic).
+    logical, allocatable :: prismatic(:)
+    !> Per pair: the link its reported force acts on (pair_link).
+    integer, allocatable :: link(:)
+    !> The crank's length scale (crank_length), m.
+    real(wp) :: crank = 1.0_wp
+    !> Whether the pair forces' angles are computed (else their cells are 0).
+    logical :: angles = .true.
+  end type row_plan_t
 
 contains
 
@@ -196,9 +213,30 @@ contains
     !> One step.
     type(assur_step_t), intent(in) :: s
     real(wp), allocatable :: v(:)
+    real(wp) :: lengths(size(s%f, 2))
     allocate (v(assur_row_size(deck)))
-    call assur_row(deck, s, crank_length(deck), pair_turns(deck), v)
+    call assur_row(deck, row_plan(deck, .true.), s, v, lengths)
   end function assur_csv_values
+
+  !> The row plan of a deck (see row_plan_t).
+  pure function row_plan(deck, angles) result(plan)
+    !> Validated deck.
+    type(assur_deck_t), intent(in) :: deck
+    !> Whether the pair forces' angles are computed.
+    logical, intent(in) :: angles
+    type(row_plan_t) :: plan
+    integer :: ip, np
+    np = size(deck%pair_name)
+    plan%turn = pair_turns(deck)
+    allocate (plan%turned(np), plan%prismatic(np), plan%link(np))
+    do ip = 1, np
+      plan%turned(ip) = plan%turn(1, ip) /= 1.0_wp .or. plan%turn(2, ip) /= 0.0_wp
+      plan%prismatic(ip) = assur_pair_prismatic(deck, ip)
+      plan%link(ip) = pair_link(deck, ip)
+    end do
+    plan%crank = crank_length(deck)
+    plan%angles = angles
+  end function row_plan
 
   !> cos and sin of the angle each pair's force is turned by into its reporting frame
   !> (-pair_frame), as rotate computes them: (1, ip) cos, (2, ip) sin. (Not vectorised: the
@@ -217,105 +255,151 @@ contains
     end do
   end function pair_turns
 
-  !> Number of values of a row of assur_columns.
+  !> Number of values of a row of assur_columns, counted as it declares them (without
+  !> declaring them: a column's declaration looks its Russian unit up).
   pure integer function assur_row_size(deck)
     !> Validated deck.
     type(assur_deck_t), intent(in) :: deck
-    assur_row_size = size(assur_columns(deck))
+    integer :: ip
+    assur_row_size = 1
+    do ip = 1, size(deck%pair_name)
+      assur_row_size = assur_row_size + 2
+      if (deck%components) assur_row_size = assur_row_size + 2
+      if (assur_pair_prismatic(deck, ip)) assur_row_size = assur_row_size + 2
+    end do
+    if (deck%mech%drive_dyad == 0) then
+      assur_row_size = assur_row_size + 1
+    else
+      assur_row_size = assur_row_size + 4
+    end if
   end function assur_row_size
 
   !> The CSV row `v` of one step, in the order of assur_columns. Forces below `noise_rel`
   !> times the step's largest force (moments below that force times the crank's length
   !> scale) are roundoff: printed as 0 with angle 0; so are single components below that floor
-  !> (a force along an axis gets exactly that axis' angle). Without `angles` (a run whose
-  !> output shows no angle) the angle cells are 0. With `lengths`, every pair force's length
-  !> |F| as well (assur_kinematics_row's).
-  pure subroutine assur_row(deck, s, crank, turn, v, angles, lengths)
+  !> (a force along an axis gets exactly that axis' angle). Without plan%angles (a run whose
+  !> output shows no angle) the angle cells are 0. Every pair force's length |F| goes to
+  !> `lengths` as well (assur_kinematics_row's). -0 is written as +0.
+  pure subroutine assur_row(deck, plan, s, v, lengths)
     !> Validated deck.
     type(assur_deck_t), intent(in) :: deck
+    !> The deck's row plan (row_plan).
+    type(row_plan_t), intent(in) :: plan
     !> One step.
     type(assur_step_t), intent(in) :: s
-    !> The crank's length scale (crank_length), m.
-    real(wp), intent(in) :: crank
-    !> The pairs' turns into their frames (pair_turns).
-    real(wp), intent(in) :: turn(:, :)
     !> The row (assur_row_size values).
     real(wp), intent(out) :: v(:)
-    !> Whether the pair forces' angles are computed (default true).
-    logical, intent(in), optional :: angles
     !> Per pair: the length of its force, N.
-    real(wp), intent(out), optional :: lengths(:)
-    real(wp) :: floor, f(2), mfloor, nn, mm, f_mag
+    real(wp), intent(out) :: lengths(:)
+    real(wp) :: floor, f1, f2, g1, g2, c, sn, mfloor, nn, mm, f_mag
     integer :: ip, np, pos
-    logical :: with_angles
-    with_angles = .true.
-    if (present(angles)) with_angles = angles
     np = size(s%f, 2)
-    ! every pair's |F| first, kept in its magnitude's place until the pair is written
+    ! every pair's |F| first: the step's roundoff floor
     floor = 0.0_wp
-    pos = 1
     do ip = 1, np
-      f_mag = magnitude(s%f(:, ip))
-      v(pos + 1) = f_mag
-      if (present(lengths)) lengths(ip) = f_mag
+      f_mag = force_length(s%f(1, ip), s%f(2, ip))
+      lengths(ip) = f_mag
       floor = max(floor, f_mag)
-      pos = pos + 2
-      if (deck%components) pos = pos + 2
-      if (assur_pair_prismatic(deck, ip)) pos = pos + 2
     end do
     floor = noise_rel * floor
-    mfloor = floor * crank
-    v(1) = s%phi1 * rad_to_deg
+    mfloor = floor * plan%crank
+    v(1) = s%phi1 * rad_to_deg + 0.0_wp
     pos = 1
     do ip = 1, np
       ! snap_noise(pair_sign * f, floor), its length known (hypot ignores the signs)
-      if (v(pos + 1) <= floor) then
-        f = 0.0_wp
+      if (lengths(ip) <= floor) then
+        f1 = 0.0_wp
+        f2 = 0.0_wp
       else
-        f = deck%pair_sign(ip) * s%f(:, ip)
+        f1 = deck%pair_sign(ip) * s%f(1, ip)
+        f2 = deck%pair_sign(ip) * s%f(2, ip)
       end if
       ! rotate(f, -deck%pair_frame(ip))
-      f = [turn(1, ip) * f(1) - turn(2, ip) * f(2), turn(2, ip) * f(1) + turn(1, ip) * f(2)]
-      if (abs(f(1)) <= floor .or. abs(f(2)) <= floor) then
-        where (abs(f) <= floor) f = 0.0_wp
-        v(pos + 1) = magnitude(f)
-      else if (turn(1, ip) /= 1.0_wp .or. turn(2, ip) /= 0.0_wp) then
-        v(pos + 1) = magnitude(f)
+      c = plan%turn(1, ip)
+      sn = plan%turn(2, ip)
+      g1 = c * f1 - sn * f2
+      g2 = sn * f1 + c * f2
+      f_mag = lengths(ip)
+      if (abs(g1) <= floor .or. abs(g2) <= floor) then
+        if (abs(g1) <= floor) g1 = 0.0_wp
+        if (abs(g2) <= floor) g2 = 0.0_wp
+        f_mag = force_length(g1, g2)
+      else if (plan%turned(ip)) then
+        f_mag = force_length(g1, g2)
       end if
-      ! (else f is +-s%f exactly, turned by 0: its length is the one already in place)
-      if (.not. with_angles) then
+      ! (else f is +-s%f exactly, turned by 0: its length is the one already taken)
+      v(pos + 1) = f_mag + 0.0_wp
+      if (.not. plan%angles) then
         v(pos + 2) = 0.0_wp
       else if (deck%angles_signed) then
-        v(pos + 2) = angle_180_deg(f)
+        v(pos + 2) = angle_180_deg([g1, g2]) + 0.0_wp
       else
-        v(pos + 2) = angle_360_deg(f)
+        v(pos + 2) = angle_360_deg([g1, g2]) + 0.0_wp
       end if
       pos = pos + 2
       if (deck%components) then
-        v(pos + 1:pos + 2) = f
+        v(pos + 1) = g1 + 0.0_wp
+        v(pos + 2) = g2 + 0.0_wp
         pos = pos + 2
       end if
-      if (assur_pair_prismatic(deck, ip)) then
+      if (plan%prismatic(ip)) then
         nn = deck%pair_sign(ip) * s%n(ip)
         mm = deck%pair_sign(ip) * s%m(ip)
         if (abs(nn) <= floor) nn = 0.0_wp
         if (abs(mm) <= mfloor) mm = 0.0_wp
-        v(pos + 1) = nn
-        v(pos + 2) = mm
+        v(pos + 1) = nn + 0.0_wp
+        v(pos + 2) = mm + 0.0_wp
         pos = pos + 2
       end if
     end do
     if (deck%mech%drive_dyad == 0) then
-      v(pos + 1) = s%m1
-      if (abs(v(pos + 1)) <= mfloor) v(pos + 1) = 0.0_wp
+      v(pos + 1) = s%m1 + 0.0_wp
+      if (abs(s%m1) <= mfloor) v(pos + 1) = 0.0_wp
     else
-      v(pos + 1:pos + 4) = [s%f_drive, s%stroke, s%stroke_v, s%stroke_a]
-      if (abs(v(pos + 1)) <= floor) v(pos + 1) = 0.0_wp
+      v(pos + 1) = s%f_drive + 0.0_wp
+      if (abs(s%f_drive) <= floor) v(pos + 1) = 0.0_wp
+      v(pos + 2) = s%stroke + 0.0_wp
+      v(pos + 3) = s%stroke_v + 0.0_wp
+      v(pos + 4) = s%stroke_a + 0.0_wp
     end if
-    do ip = 1, size(v)
-      v(ip) = clean_zero(v(ip))
-    end do
   end subroutine assur_row
+
+  !> |(x, y)|, the value hypot gives (vec2's magnitude) at a third of its cost: where neither
+  !> component is huge (the larger at most 2**511) or tiny (the smaller at least 2**-459)
+  !> and the smaller is not negligible beside the larger (above 2**-54 of it), the
+  !> arithmetic of the GNU C library's hypot (2.35 and later, built without a fused
+  !> multiply-add, as on x86-64): the square root of the sum of squares corrected by its
+  !> error, operation for operation; elsewhere (a zero, an infinity or NaN) hypot itself.
+  !> (test_columns compares the two bit for bit.)
+  pure real(wp) function force_length(x, y) result(h)
+    !> The components.
+    real(wp), intent(in) :: x, y
+    real(wp), parameter :: large = scale(1.0_wp, 511), small = scale(1.0_wp, -459), negligible = scale(1.0_wp, -54)
+    real(wp) :: ax, ay, delta, t1, t2
+    ! (as hypot orders them: with a NaN, ax or ay is NaN and hypot takes it)
+    if (abs(x) < abs(y)) then
+      ax = abs(y)
+      ay = abs(x)
+    else
+      ax = abs(x)
+      ay = abs(y)
+    end if
+    if (.not. (ax <= large .and. ay >= small .and. ay > negligible * ax)) then
+      h = hypot(x, y)
+      return
+    end if
+    h = sqrt(ax * ax + ay * ay)
+    if (h <= ay + ay) then
+      delta = h - ay
+      t1 = ax * ((delta + delta) - ax)
+      t2 = (delta - ((ax - ay) + (ax - ay))) * delta
+    else
+      delta = h - ax
+      t1 = (delta + delta) * (ax - (ay + ay))
+      t2 = (4.0_wp * delta - ay) * ay + delta * delta
+    end if
+    h = h - (t1 + t2) / (h + h)
+  end function force_length
 
   !> Number of values of a row of the kinematics columns (assur_kinematics_row): per pair its
   !> reference point (2), per moving link its centre of mass (2), angle, speed and
@@ -360,38 +444,43 @@ contains
   !> acts on, N, a force at or below the step's roundoff floor (noise_rel times its largest
   !> pair force) and a component at or below it as 0. Each pair's length is the one assur_row
   !> took (the turned force's own length decides nothing: a force whose turned length is at
-  !> most the floor has both components at most the floor).
-  pure subroutine assur_kinematics_row(deck, s, turn, f_len, slots, row)
+  !> most the floor has both components at most the floor). The values are put in order
+  !> into `values` (the caller's workspace) and then into their columns.
+  pure subroutine assur_kinematics_row(deck, plan, s, f_len, slots, values, link_turns, row)
     !> Validated deck.
     type(assur_deck_t), intent(in) :: deck
+    !> The deck's row plan (row_plan).
+    type(row_plan_t), intent(in) :: plan
     !> One solved step (its work_states and work_poses set by its solve).
     type(assur_step_t), intent(in) :: s
-    !> The pairs' turns into their frames (pair_turns).
-    real(wp), intent(in) :: turn(:, :)
     !> Per pair: the length of its force (assur_row's `lengths`), N.
     real(wp), intent(in) :: f_len(:)
     !> Column of every value (0: not written).
     integer, intent(in) :: slots(:)
+    !> Workspace of kinematics_value_count values.
+    real(wp), intent(inout) :: values(:)
+    !> Workspace (2, moving links): each link's cos and sin of its angle.
+    real(wp), intent(inout) :: link_turns(:, :)
     !> The step's row of the table.
     real(wp), intent(inout) :: row(:)
     type(point_state_t) :: ps
-    real(wp) :: w2, floor, f(2), g(2), c, sn
-    integer :: np, nl, i, ip, d, j, js, jl, ja
+    real(wp) :: w2, floor, f1, f2, c, sn, th
+    integer :: np, nl, i, ip, d, j, js, jl, ja, q
     np = size(s%f, 2)
     nl = ubound(s%work_states, 1)
     w2 = s%omega1**2
     ! the pairs' reference points
     j = 0
-    do ip = 1, np
+    do ip = 1, np - 1
       d = (ip - 1) / 3 + 1
-      if (ip == np) then
-        call put_slot(row, slots, j, deck%mech%pivot(1))
-        call put_slot(row, slots, j, deck%mech%pivot(2))
-      else
-        call put_slot(row, slots, j, s%work_poses(d)%p(1, ip - 3 * (d - 1)))
-        call put_slot(row, slots, j, s%work_poses(d)%p(2, ip - 3 * (d - 1)))
-      end if
+      q = ip - 3 * (d - 1)
+      values(j + 1) = s%work_poses(d)%p(1, q)
+      values(j + 2) = s%work_poses(d)%p(2, q)
+      j = j + 2
     end do
+    values(j + 1) = deck%mech%pivot(1)
+    values(j + 2) = deck%mech%pivot(2)
+    j = j + 2
     ! per link: S, then (after every S) phi, omega, eps, then (after those) S's acceleration
     js = j
     jl = js + 2 * nl
@@ -399,13 +488,24 @@ contains
     do i = 1, nl
       associate (st => s%work_states(i))
         ps = point_on(st, deck%mech%links(i)%s)
-        call put_slot(row, slots, js, ps%p(1))
-        call put_slot(row, slots, js, ps%p(2))
-        call put_slot(row, slots, jl, st%th * rad_to_deg)
-        call put_slot(row, slots, jl, st%u * s%omega1)
-        call put_slot(row, slots, jl, st%eq * w2 + st%u * s%eps1)
-        call put_slot(row, slots, ja, ps%a(1) * w2 + ps%v(1) * s%eps1)
-        call put_slot(row, slots, ja, ps%a(2) * w2 + ps%v(2) * s%eps1)
+        values(js + 1) = ps%p(1)
+        values(js + 2) = ps%p(2)
+        values(jl + 1) = st%th * rad_to_deg
+        values(jl + 2) = st%u * s%omega1
+        values(jl + 3) = st%eq * w2 + st%u * s%eps1
+        values(ja + 1) = ps%a(1) * w2 + ps%v(1) * s%eps1
+        values(ja + 2) = ps%a(2) * w2 + ps%v(2) * s%eps1
+        js = js + 2
+        jl = jl + 3
+        ja = ja + 2
+        ! the turn into the link's axes, by -th: [cos th, sin th; -sin th, cos th] (cos and
+        ! sin of one argument: one sincos call; the C library's cos is even and its sin odd,
+        ! bit for bit, so these are the values of cos(-th) and -sin(-th))
+        th = st%th
+        c = cos(th)
+        sn = sin(th)
+        link_turns(1, i) = c
+        link_turns(2, i) = sn
       end associate
     end do
     j = ja
@@ -418,42 +518,35 @@ contains
     jl = j + 2 * np
     do ip = 1, np
       if (f_len(ip) <= floor) then
-        f = 0.0_wp
+        f1 = 0.0_wp
+        f2 = 0.0_wp
       else
-        f = deck%pair_sign(ip) * s%f(:, ip)
+        f1 = deck%pair_sign(ip) * s%f(1, ip)
+        f2 = deck%pair_sign(ip) * s%f(2, ip)
       end if
-      g = [turn(1, ip) * f(1) - turn(2, ip) * f(2), turn(2, ip) * f(1) + turn(1, ip) * f(2)]
-      call put_slot(row, slots, j, g(1), floor)
-      call put_slot(row, slots, j, g(2), floor)
-      i = pair_link(deck, ip)
-      c = cos(-s%work_states(i)%th)
-      sn = sin(-s%work_states(i)%th)
-      g = [c * f(1) - sn * f(2), sn * f(1) + c * f(2)]
-      call put_slot(row, slots, jl, g(1), floor)
-      call put_slot(row, slots, jl, g(2), floor)
+      c = plan%turn(1, ip)
+      sn = plan%turn(2, ip)
+      values(j + 1) = component(c * f1 - sn * f2)
+      values(j + 2) = component(sn * f1 + c * f2)
+      j = j + 2
+      i = plan%link(ip)
+      c = link_turns(1, i)
+      sn = link_turns(2, i)
+      values(jl + 1) = component(c * f1 + sn * f2)
+      values(jl + 2) = component(c * f2 - sn * f1)
+      jl = jl + 2
     end do
+    do j = 1, size(slots)
+      if (slots(j) > 0) row(slots(j)) = values(j) + 0.0_wp
+    end do
+  contains
+    !> A force component, 0 at or below the floor.
+    pure real(wp) function component(x)
+      real(wp), intent(in) :: x
+      component = x
+      if (abs(x) <= floor) component = 0.0_wp
+    end function component
   end subroutine assur_kinematics_row
-
-  !> assur_kinematics_row's next value `x` (the k-th; k advanced) into row(slots(k)), -0 as
-  !> +0 (none where slots(k) = 0); with `floor`, x at or below it as 0 (a force component).
-  pure subroutine put_slot(row, slots, k, x, floor)
-    !> The step's row of the table.
-    real(wp), intent(inout) :: row(:)
-    !> Column of every value.
-    integer, intent(in) :: slots(:)
-    !> Values put so far.
-    integer, intent(inout) :: k
-    !> The value.
-    real(wp), intent(in) :: x
-    !> Roundoff floor of a force component, N.
-    real(wp), intent(in), optional :: floor
-    k = k + 1
-    if (slots(k) == 0) return
-    row(slots(k)) = x + 0.0_wp
-    if (present(floor)) then
-      if (abs(x) <= floor) row(slots(k)) = 0.0_wp
-    end if
-  end subroutine put_slot
 
   !> Length scale of the crank: its farthest attachment point from the pivot (1 m if none).
   pure real(wp) function crank_length(deck)

@@ -39,8 +39,9 @@ module kinetostat_assur_layout
     assur_load_steps, resist_none, load_table, table_position
   use kinetostat_summary, only: table_peak_warning
   use kinetostat_assur_columns, only: assur_columns, assur_csv_values, assur_pair_prismatic, assur_row, &
-    assur_row_size, pair_turns, crank_length, friction_columns, friction_csv_values, friction_work, &
-    friction_integrals, friction_summary, friction_row_size, kinematics_value_count, pair_link, assur_kinematics_row
+    assur_row_size, friction_columns, friction_csv_values, friction_work, &
+    friction_integrals, friction_summary, friction_row_size, kinematics_value_count, pair_link, assur_kinematics_row, &
+    row_plan_t, row_plan
   implicit none
   private
   public :: assur_mechanism_t, new_assur, assur_solve, assur_columns, assur_csv_values, assur_pair_prismatic
@@ -218,10 +219,10 @@ contains
     type(step_table_t), intent(inout) :: table
     type(error_t), allocatable, intent(out) :: error
     type(friction_step_t), allocatable :: fsteps(:)
-    real(wp), allocatable :: residual(:), mismatch(:), turn(:, :), omega1(:), m1(:)
+    real(wp), allocatable :: residual(:), mismatch(:), omega1(:), m1(:)
     type(motion_t), allocatable :: motions(:)
     integer, allocatable :: slots(:)
-    real(wp) :: crank
+    type(row_plan_t) :: plan
     integer :: k, nv, nc, np, first, last, nrow, first_bad, stat
     logical :: kinematics
     call table%block_range(self%deck%n, first, last)
@@ -252,8 +253,7 @@ contains
     nc = nv
     if (self%deck%friction_on) nc = nv + friction_row_size(self%deck)
     kinematics = table%kinematics_wanted
-    crank = crank_length(self%deck)
-    turn = pair_turns(self%deck)
+    plan = row_plan(self%deck, table%force_angles_wanted)
     omega1 = assur_omega1_steps(self%deck, first, last)
     call table%allocate_rows(nrow, error)
     if (allocated(error)) return
@@ -276,6 +276,8 @@ contains
       end if
       allocate (slots(kinematics_value_count(self%deck)))
       call put_kinematics(table, self%deck, slots)
+    else
+      allocate (slots(0))
     end if
     ! steps in parallel with OpenMP threads; the error reported is the first step's in step order
     ! (that step is solved again alone for its message)
@@ -286,10 +288,11 @@ contains
       type(friction_step_t) :: fs
       type(step_loads_t) :: loads
       type(error_t), allocatable :: step_error
-      !> The step's pair force lengths (assur_row's, for the kinematics row).
-      real(wp), allocatable :: lengths(:)
+      !> The step's pair force lengths (assur_row's, for the kinematics row), the
+      !> kinematics row's values and its links' cos and sin.
+      real(wp), allocatable :: lengths(:), values(:), link_turns(:, :)
       integer :: kk, i
-      allocate (lengths(np))
+      allocate (lengths(np), values(size(slots)), link_turns(2, 2 * size(self%deck%mech%dyads) + 1))
       ! the links' angles only where a column shows them (the kinematics columns)
       step%link_angles = kinematics
       !$omp do schedule(dynamic, 64) reduction(min:first_bad)
@@ -309,14 +312,15 @@ contains
           first_bad = min(first_bad, kk)
           cycle
         end if
-        call assur_row(self%deck, step, crank, turn, table%rows(1:nv, i), table%force_angles_wanted, lengths)
+        call assur_row(self%deck, plan, step, table%rows(1:nv, i), lengths)
         if (self%deck%friction_on) then
           table%rows(nv + 1:nc, i) = friction_csv_values(self%deck, step, fs)
           fsteps(i) = fs
         end if
         residual(i) = step%residual
         mismatch(i) = step%mismatch
-        if (kinematics) call assur_kinematics_row(self%deck, step, turn, lengths, slots, table%rows(:, i))
+        if (kinematics) call assur_kinematics_row(self%deck, plan, step, lengths, slots, values, link_turns, &
+          table%rows(:, i))
       end do
       !$omp end do
     end block

@@ -193,6 +193,12 @@ module kinetostat_step_table
     !> pipeline turns it off when neither the output nor the caller reads them: a plain
     !> --format summary, a sweep's variant; such a run's angle cells are 0).
     logical :: force_angles_wanted = .true.
+    !> Whether an output of the run reads the columns' figures over the run (true by
+    !> default: the summaries, the legacy table's SUMMARY block, the sheets). The run
+    !> pipeline turns it off for CSV, npy and JSON, which show the rows and the self-check
+    !> only: the run's tally then keeps no more than the coarse-step warning reads (see
+    !> `tallied`).
+    logical :: summaries_wanted = .true.
     !> The columns.
     type(column_t), allocatable :: columns(:)
     !> Values, rows(column, row).
@@ -413,8 +419,11 @@ contains
     c%name = name
     c%unit = unit
     c%kind = kind
-    call russian_unit(c)
-    if (present(unit_ru)) c%unit_ru = unit_ru
+    if (present(unit_ru)) then
+      c%unit_ru = unit_ru
+    else
+      call russian_unit(c)
+    end if
     c%heading = ""
     if (present(heading)) c%heading = heading
     c%heading_ru = c%heading
@@ -611,7 +620,7 @@ contains
     character(*), intent(in), optional :: link
     type(column_t) :: c
     real(wp), allocatable :: grown(:, :)
-    integer :: i, stat
+    integer :: i, j, stat
     ! out of memory already (kinetostat_run stops the run): nothing more is kept
     if (allocated(self%no_room)) return
     if (allocated(self%pending) .and. k /= 1) call self%finish_columns()
@@ -628,14 +637,28 @@ contains
       end do
     end if
     if (i == 0) then
-      c = column(prefix//suffix, unit, kind)
+      ! the Russian unit of an earlier column added here with the same unit (the labels'
+      ! dictionary is looked up once per unit, not once per column)
+      do j = size(self%columns), 1, -1
+        if (.not. (self%columns(j)%kinematic .or. self%columns(j)%link_axes)) cycle
+        if (.not. allocated(self%columns(j)%unit_ru)) cycle
+        if (self%columns(j)%unit == unit) exit
+      end do
       ! a link-axes column is headed in the legacy table: F21_ALONG, F21_ACROSS
-      if (present(link)) c = column(prefix//suffix, unit, kind, heading=prefix//upper(suffix))
+      if (j > 0 .and. present(link)) then
+        c = column(prefix//suffix, unit, kind, heading=prefix//upper(suffix), unit_ru=self%columns(j)%unit_ru)
+      else if (j > 0) then
+        c = column(prefix//suffix, unit, kind, unit_ru=self%columns(j)%unit_ru)
+      else if (present(link)) then
+        c = column(prefix//suffix, unit, kind, heading=prefix//upper(suffix))
+      else
+        c = column(prefix//suffix, unit, kind)
+      end if
       c%kinematic = .not. present(link)
       c%link_axes = present(link)
       if (present(link)) c%frame_link = link
       if (present(frame_angle)) c%frame_angle = frame_angle
-      self%columns = [self%columns, c]
+      call append_column(self%columns, c)
       i = size(self%columns)
       if (k == 1 .and. size(self%rows, 2) > 1) then
         if (.not. allocated(self%pending)) allocate (self%pending(0))
@@ -670,6 +693,54 @@ contains
       named = name(1:len(prefix)) == prefix .and. name(len(prefix) + 1:) == suffix
     end function named
   end subroutine put_kinematic
+
+  !> Append column `c` (left empty) to `columns`: the columns there are moved into the grown
+  !> list, not copied (a copy would allocate every text of every column again: a row's
+  !> kinematics columns, added one at a time, would copy the list once per column).
+  pure subroutine append_column(columns, c)
+    !> The columns (grown by one).
+    type(column_t), allocatable, intent(inout) :: columns(:)
+    !> The new column.
+    type(column_t), intent(inout) :: c
+    type(column_t), allocatable :: grown(:)
+    integer :: i, n
+    n = size(columns)
+    allocate (grown(n + 1))
+    do i = 1, n
+      call move_column(columns(i), grown(i))
+    end do
+    call move_column(c, grown(n + 1))
+    call move_alloc(grown, columns)
+  end subroutine append_column
+
+  !> Column `from` into `to` (every component of column_t; the texts moved, `from`'s left
+  !> unallocated).
+  pure subroutine move_column(from, to)
+    !> The column moved.
+    type(column_t), intent(inout) :: from
+    !> Where it goes (a column of a new list).
+    type(column_t), intent(inout) :: to
+    call move_text(from%name, to%name)
+    call move_text(from%unit, to%unit)
+    call move_text(from%unit_ru, to%unit_ru)
+    call move_text(from%heading, to%heading)
+    call move_text(from%heading_ru, to%heading_ru)
+    call move_text(from%heading_unit, to%heading_unit)
+    call move_text(from%heading_unit_ru, to%heading_unit_ru)
+    call move_text(from%frame_link, to%frame_link)
+    to%kind = from%kind
+    to%csv = from%csv
+    to%kinematic = from%kinematic
+    to%frame_angle = from%frame_angle
+    to%link_axes = from%link_axes
+    to%voidable = from%voidable
+  end subroutine move_column
+
+  !> move_alloc of a deferred-length text (allocated or not).
+  pure subroutine move_text(from, to)
+    character(len=:), allocatable, intent(inout) :: from, to
+    if (allocated(from)) call move_alloc(from, to)
+  end subroutine move_text
 
   !> Give `rows` every column added so far (the pending kinematics columns of row 1, zero in
   !> the other rows); the run pipeline calls it after the mechanism's solve.
@@ -710,12 +781,18 @@ contains
   !> the overflow guard, the coarse-step warning), that is all but the input coordinate (its
   !> first and last values and largest step are the run's own figures), a force's angle (a
   !> direction has no extremes or mean) and a kinematics column CSV and JSON do not show.
+  !> Without summaries_wanted, only the force columns of a run with switching loads (the
+  !> coarse-step warning reads their peaks).
   pure logical function tallied(self, c)
     class(step_table_t), intent(in) :: self
     !> Column index.
     integer, intent(in) :: c
-    tallied = c /= self%input_column .and. self%columns(c)%kind /= col_force_angle .and. &
-      (self%kinematics_shown .or. .not. self%columns(c)%kinematic)
+    if (self%summaries_wanted) then
+      tallied = c /= self%input_column .and. self%columns(c)%kind /= col_force_angle .and. &
+        (self%kinematics_shown .or. .not. self%columns(c)%kinematic)
+    else
+      tallied = self%columns(c)%kind == col_force .and. self%columns(c)%csv .and. allocated(self%load_changes)
+    end if
   end function tallied
 
   !> Set all columns at once from parallel lists of names, units and kinds.

@@ -250,6 +250,9 @@ contains
       options%plans .or. options%format == format_plans .or. options%format == format_dxf .or. options%shaking
     table%force_angles_wanted = .not. (options%rows_unread .and. options%format == format_summary .and. &
       .not. (options%shaking .or. options%plans .or. options%link_frame .or. options%kinematics))
+    ! CSV, npy and JSON show the rows and the self-check: no column's figures over the run
+    table%summaries_wanted = .not. (any(options%format == [format_csv, format_npy]) .or. &
+      (options%format == format_json .and. .not. options%plans))
     pairs_asked = ""
     if (allocated(options%pairs)) pairs_asked = options%pairs
     head%chunk = options%echo_chunk
@@ -779,9 +782,10 @@ contains
   end subroutine judge_selfcheck
 
   !> guard_finite for the figures of the run's summary (the SUMMARY block of the table,
-  !> --format summary, a sweep's rows): each summarized column's mean and the driver's
-  !> work. The means are averages of finite values and kept in range (see column_stats);
-  !> only a work beyond the largest real is left, an error (exit 3) naming it.
+  !> --format summary, a sweep's rows): each summarized column's mean (of those the run
+  !> tallies) and the driver's work. The means are averages of finite values and kept in
+  !> range (see column_stats); only a work beyond the largest real is left, an error (exit
+  !> 3) naming it.
   pure subroutine guard_summary(table, kinematics, error)
     !> The results (all rows tallied).
     type(step_table_t), intent(in) :: table
@@ -795,7 +799,7 @@ contains
     integer :: c
     if (table%run_tally%rows == 0) return
     do c = 1, size(table%columns)
-      if (.not. summarized(table, c, kinematics)) cycle
+      if (.not. (summarized(table, c, kinematics) .and. table%tallied(c))) cycle
       s = column_stats(table, c)
       if (ieee_is_finite(s%mean)) cycle
       call fatal_error(error, exit_geometry, table%deck//": &"//table%mechanism//": the mean of "// &

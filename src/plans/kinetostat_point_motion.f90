@@ -54,9 +54,12 @@ contains
     !> its velocity and acceleration columns (0: none), each slider's point and the phi column
     !> of its guide's link (0: the frame).
     integer, allocatable :: c_omega(:), c_eps(:), cx(:), cy(:), host(:), cv(:, :), ca(:, :), s_point(:), s_phi(:)
+    !> The points (with a host link) that have velocity columns and those that have
+    !> acceleration columns, nv and na of them.
+    integer, allocatable :: v_points(:), a_points(:)
     logical, allocatable :: s_used(:)
     logical :: closed, parallel
-    integer :: k, i, nl, np, ip, s
+    integer :: k, i, nl, np, ip, s, j, nv, na
     if (.not. topo%available .or. .not. allocated(topo%links)) return
     if (table%row_count() == 0) return
     nl = size(topo%links)
@@ -99,6 +102,9 @@ contains
     end do
     ! the link whose field gives each point's image: the first listing it
     allocate (host(np), cv(2, np), ca(2, np), p(2, np), omega(nl), eps(nl), v0(2, nl), a0(2, nl))
+    ! (a link the pass does not reach stays at rest; the others are set by every row's pass)
+    v0 = 0.0_wp
+    a0 = 0.0_wp
     host = 0
     do ip = 1, np
       do i = 1, nl
@@ -110,9 +116,13 @@ contains
     end do
     cv = 0
     ca = 0
+    allocate (v_points(np), a_points(np))
+    nv = 0
+    na = 0
     do k = 1, table%row_count()
       do ip = 1, np
-        p(:, ip) = [table%rows(cx(ip), k), table%rows(cy(ip), k)]
+        p(1, ip) = table%rows(cx(ip), k)
+        p(2, ip) = table%rows(cy(ip), k)
       end do
       call link_rates(table, k, c_omega, c_eps, omega, eps)
       do s = 1, size(slides)
@@ -124,28 +134,32 @@ contains
       if (parallel) then
         ! two guides of a link parallel at this step: the pair equations together
         call by_least_squares(topo, table, drawing, known, c_omega, c_eps, cx, cy, k, k)
-        if (k == 1) call find_columns(table, cv, ca)
+        if (k == 1) call find_columns(table, cv, ca, nv, na, v_points, a_points)
         cycle
       end if
       if (k == 1) then
         ! the first row names the columns (as the mechanism's own kinematics columns)
         call first_row(table)
         if (allocated(table%no_room)) return
-        call find_columns(table, cv, ca)
+        call find_columns(table, cv, ca, nv, na, v_points, a_points)
         cycle
       end if
-      do ip = 1, np
-        i = host(ip)
-        if (i == 0) cycle
-        if (cv(1, ip) > 0) then
-          table%rows(cv(1, ip), k) = v0(1, i) - omega(i) * p(2, ip)
-          table%rows(cv(2, ip), k) = v0(2, i) + omega(i) * p(1, ip)
-        end if
-        if (ca(1, ip) > 0) then
-          table%rows(ca(1, ip), k) = a0(1, i) - eps(i) * p(2, ip) - omega(i)**2 * p(1, ip)
-          table%rows(ca(2, ip), k) = a0(2, i) + eps(i) * p(1, ip) - omega(i)**2 * p(2, ip)
-        end if
-      end do
+      ! the points with velocity columns, then those with acceleration columns (lists found
+      ! with the columns)
+      associate (row => table%rows(:, k))
+        do j = 1, nv
+          ip = v_points(j)
+          i = host(ip)
+          row(cv(1, ip)) = v0(1, i) - omega(i) * p(2, ip)
+          row(cv(2, ip)) = v0(2, i) + omega(i) * p(1, ip)
+        end do
+        do j = 1, na
+          ip = a_points(j)
+          i = host(ip)
+          row(ca(1, ip)) = a0(1, i) - eps(i) * p(2, ip) - omega(i)**2 * p(1, ip)
+          row(ca(2, ip)) = a0(2, i) + eps(i) * p(1, ip) - omega(i)**2 * p(2, ip)
+        end do
+      end associate
     end do
   contains
     !> Row 1 through the table's named setters (they add the columns).
@@ -167,10 +181,13 @@ contains
         end if
       end do
     end subroutine first_row
-    !> The columns' indices for the rows after the first (a pivot's stay at zero).
-    pure subroutine find_columns(t, cv, ca)
+    !> The columns' indices for the rows after the first (a pivot's stay at zero) and the lists
+    !> of the points that have them.
+    pure subroutine find_columns(t, cv, ca, nv, na, v_points, a_points)
       type(step_table_t), intent(inout) :: t
       integer, intent(inout) :: cv(:, :), ca(:, :)
+      !> The points with velocity columns and with acceleration columns, and how many.
+      integer, intent(inout) :: nv, na, v_points(:), a_points(:)
       character(len=:), allocatable :: name
       integer :: ip
       call t%finish_columns()
@@ -183,6 +200,19 @@ contains
           t%column_index("ay_"//name)]
         if (any(cv(:, ip) == 0)) cv(:, ip) = 0
         if (any(ca(:, ip) == 0)) ca(:, ip) = 0
+      end do
+      nv = 0
+      na = 0
+      do ip = 1, np
+        if (host(ip) == 0) cycle
+        if (cv(1, ip) > 0) then
+          nv = nv + 1
+          v_points(nv) = ip
+        end if
+        if (ca(1, ip) > 0) then
+          na = na + 1
+          a_points(na) = ip
+        end if
       end do
     end subroutine find_columns
     !> Unit vector of slider s's guide at row k (as slides_of finds it: a link without a phi
@@ -200,9 +230,10 @@ contains
       end if
       d = [cos(ang), sin(ang)]
     end function guide_direction
-    !> The links' translation terms of this row (velocities or accelerations) by the pass.
-    !> (Written component by component into c, which the caller gives whole: no array
-    !> temporary, so nothing is allocated per row.)
+    !> The links' translation terms of this row (velocities or accelerations) by the pass:
+    !> each link of the pass from links set before it in the same pass (those the pass does
+    !> not reach keep the zero they were given once). (Written component by component into
+    !> c, which the caller gives whole: no array temporary, so nothing is allocated per row.)
     pure subroutine translations(pass, accel, c, parallel)
       type(pass_step_t), intent(in) :: pass(:)
       logical, intent(in) :: accel
@@ -210,11 +241,7 @@ contains
       !> Set when a link's two guides are parallel at this step.
       logical, intent(inout) :: parallel
       real(wp) :: r(2), det, f(2)
-      integer :: st, m, q, j, e, i
-      do i = 1, size(c, 2)
-        c(1, i) = 0.0_wp
-        c(2, i) = 0.0_wp
-      end do
+      integer :: st, m, q, j, e
       do st = 1, size(pass)
         m = pass(st)%link
         q = pass(st)%point
