@@ -54,10 +54,11 @@ contains
     real(wp) :: x, y, special(7)
     integer(int64) :: state
     integer :: i, j, bad
-    character(len=:), allocatable :: first
+    !> The first difference (its operands and both results in hexadecimal).
+    character(len=160) :: first
     state = 88172645463325252_int64
     bad = 0
-    first = ""
+    first = " "
     do i = 1, 400000
       x = random_value(-620, 620)
       select case (mod(i, 4))
@@ -82,7 +83,7 @@ contains
         call compare(-special(i), special(j))
       end do
     end do
-    call check_true(t, "force_length is hypot bit for bit", bad == 0, int_str(bad)//" differ, first: "//first)
+    call check_true(t, "force_length is hypot bit for bit", bad == 0, int_str(bad)//" differ, first: "//trim(first))
   contains
     !> One comparison (the first difference kept for the message).
     subroutine compare(a, b)
@@ -92,7 +93,7 @@ contains
       g = force_length(a, b)
       if (transfer(h, 1_int64) == transfer(g, 1_int64)) return
       bad = bad + 1
-      if (len(first) == 0) first = "x = "//hex(a)//", y = "//hex(b)//": hypot "//hex(h)//", force_length "//hex(g)
+      if (bad == 1) first = "x = "//hex(a)//", y = "//hex(b)//": hypot "//hex(h)//", force_length "//hex(g)
     end subroutine compare
     !> A random value of either sign with a random exponent in lo .. hi.
     real(wp) function random_value(lo, hi) result(v)

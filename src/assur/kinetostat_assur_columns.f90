@@ -92,8 +92,8 @@ contains
     else if (abs(effort0) <= mfloor) then
       effort0 = 0.0_wp
     end if
-    v = friction_step_values(effort0, deck%friction%f, fs%loss, fs%p_loss, fs%rate_total, &
-                             fs%driver_rate * fs%motion_sign)
+    v = friction_step_values(effort0, pack(fs%loss(:size(deck%friction)), deck%friction%f > 0.0_wp), fs%p_loss, &
+                             fs%rate_total, fs%driver_rate * fs%motion_sign)
   end function friction_csv_values
 
   !> Work of the driver and work lost to friction over the run, J: trapezoidal sums over the
@@ -227,7 +227,7 @@ contains
     type(row_plan_t) :: plan
     integer :: ip, np
     np = size(deck%pair_name)
-    plan%turn = pair_turns(deck)
+    allocate (plan%turn, source=pair_turns(deck))
     allocate (plan%turned(np), plan%prismatic(np), plan%link(np))
     do ip = 1, np
       plan%turned(ip) = plan%turn(1, ip) /= 1.0_wp .or. plan%turn(2, ip) /= 0.0_wp

@@ -57,8 +57,9 @@ contains
     real(wp) :: floor
     floor = noise_rel * largest_magnitude(s%f)
     if (deck%mech%pairs(deck%mech%drives(1)%pair)%kind == pair_r) floor = floor * deck%mech%size
-    v = friction_step_values(merge(0.0_wp, fr%effort0(1), abs(fr%effort0(1)) <= floor), deck%friction_f, fr%loss, &
-                             fr%p_loss, fr%rate_total, fr%driver_rate)
+    v = friction_step_values(merge(0.0_wp, fr%effort0(1), abs(fr%effort0(1)) <= floor), &
+                             pack(fr%loss(:size(deck%friction_f)), deck%friction_f > 0.0_wp), fr%p_loss, &
+                             fr%rate_total, fr%driver_rate)
   end function friction_values
 
   !> The works of steps step1 .. step1 + size(frs) - 1 as points to integrate over the first

@@ -29,13 +29,11 @@ contains
   !> A step's friction columns, <effort>_0, P_loss_<pair> of every pair with friction,
   !> P_loss, eta_defined, eta (1 - the loss rate over the driver's rate where the driver
   !> delivers power; elsewhere eta_defined = 0 and eta = 0), each roundoff made 0 (clean_zero).
-  pure function friction_step_values(effort0, f, loss, p_loss, rate_total, driver_rate) result(v)
+  pure function friction_step_values(effort0, losses, p_loss, rate_total, driver_rate) result(v)
     !> The driving effort without friction, N*m or N (already snapped to its roundoff floor).
     real(wp), intent(in) :: effort0
-    !> Friction coefficient of every pair (a pair with f > 0 has a column).
-    real(wp), intent(in) :: f(:)
-    !> Power lost in every pair, W (one per f).
-    real(wp), intent(in) :: loss(:)
+    !> Power lost in each pair with friction (f > 0), W, in the pairs' order.
+    real(wp), intent(in) :: losses(:)
     !> Power lost in all the pairs, W.
     real(wp), intent(in) :: p_loss
     !> Rate of the loss, in driver_rate's unit.
@@ -44,7 +42,7 @@ contains
     real(wp), intent(in) :: driver_rate
     real(wp), allocatable :: v(:)
     real(wp) :: eta
-    v = [effort0, pack(loss(:size(f)), f > 0.0_wp)]
+    v = [effort0, losses]
     if (driver_rate > 0.0_wp) then
       eta = 1.0_wp - rate_total / driver_rate
       if (abs(eta) <= eta_roundoff) eta = 0.0_wp
