@@ -44,6 +44,12 @@ module kinetostat_posix
       character(kind=c_char), intent(out) :: buf(count)
       integer(c_long_long) :: got
     end function c_read_at
+    function c_close(fd) bind(c, name="kinetostat_close") result(err)
+      import :: c_int
+      implicit none
+      integer(c_int), value :: fd
+      integer(c_int) :: err
+    end function c_close
     subroutine c_error_text(err, text, cap) bind(c, name="kinetostat_error_text")
       import :: c_int, c_char
       implicit none
@@ -71,11 +77,28 @@ module kinetostat_posix
       character(kind=c_char), intent(out) :: name(cap)
       integer(c_int) :: fd
     end function c_temp_beside
+    function c_temp_anonymous() bind(c, name="kinetostat_temp_anonymous") result(fd)
+      import :: c_int
+      implicit none
+      integer(c_int) :: fd
+    end function c_temp_anonymous
     subroutine c_temp_remove(name) bind(c, name="kinetostat_temp_remove")
       import :: c_char
       implicit none
       character(kind=c_char), intent(in) :: name(*)
     end subroutine c_temp_remove
+    function c_open_read(path) bind(c, name="kinetostat_open_read") result(fd)
+      import :: c_int, c_char
+      implicit none
+      character(kind=c_char), intent(in) :: path(*)
+      integer(c_int) :: fd
+    end function c_open_read
+    function c_open_direct(path) bind(c, name="kinetostat_open_direct") result(fd)
+      import :: c_int, c_char
+      implicit none
+      character(kind=c_char), intent(in) :: path(*)
+      integer(c_int) :: fd
+    end function c_open_direct
     function c_replace(fd, name, final) bind(c, name="kinetostat_replace") result(err)
       import :: c_int, c_char
       implicit none
@@ -83,47 +106,45 @@ module kinetostat_posix
       character(kind=c_char), intent(in) :: name(*), final(*)
       integer(c_int) :: err
     end function c_replace
+    function c_path_is_terminal(path) bind(c, name="kinetostat_path_is_terminal") result(yes)
+      import :: c_int, c_char
+      implicit none
+      character(kind=c_char), intent(in) :: path(*)
+      integer(c_int) :: yes
+    end function c_path_is_terminal
+    function c_isatty(fd) bind(c, name="isatty") result(yes)
+      import :: c_int
+      implicit none
+      integer(c_int), value :: fd
+      integer(c_int) :: yes
+    end function c_isatty
+    function c_getpid() bind(c, name="getpid") result(pid)
+      import :: c_int
+      implicit none
+      integer(c_int) :: pid
+    end function c_getpid
+    function c_fork() bind(c, name="kinetostat_fork") result(pid)
+      import :: c_int
+      implicit none
+      integer(c_int) :: pid
+    end function c_fork
+    function c_wait(pid) bind(c, name="kinetostat_wait") result(status)
+      import :: c_int
+      implicit none
+      integer(c_int), value :: pid
+      integer(c_int) :: status
+    end function c_wait
     subroutine c_exit_now(code) bind(c, name="kinetostat_exit_now")
       import :: c_int
       implicit none
       integer(c_int), value :: code
     end subroutine c_exit_now
-  end interface
-
-  ! the C functions of one signature share its interface
-  ! allow(assumed-size)
-  abstract interface
-    !> A C function of an int (a descriptor, a process id) giving an int.
-    function c_int_of_int(n) bind(c) result(r)
+    function c_cpu_count() bind(c, name="kinetostat_cpu_count") result(n)
       import :: c_int
       implicit none
-      integer(c_int), value :: n
-      integer(c_int) :: r
-    end function c_int_of_int
-    !> A C function of a NUL-terminated path giving an int (a descriptor, a flag).
-    function c_int_of_path(path) bind(c) result(r)
-      import :: c_int, c_char
-      implicit none
-      character(kind=c_char), intent(in) :: path(*)
-      integer(c_int) :: r
-    end function c_int_of_path
-    !> A C function of nothing giving an int.
-    function c_int_of_nothing() bind(c) result(r)
-      import :: c_int
-      implicit none
-      integer(c_int) :: r
-    end function c_int_of_nothing
+      integer(c_int) :: n
+    end function c_cpu_count
   end interface
-  procedure(c_int_of_int), bind(c, name="kinetostat_close") :: c_close
-  procedure(c_int_of_int), bind(c, name="isatty") :: c_isatty
-  procedure(c_int_of_int), bind(c, name="kinetostat_wait") :: c_wait
-  procedure(c_int_of_path), bind(c, name="kinetostat_open_read") :: c_open_read
-  procedure(c_int_of_path), bind(c, name="kinetostat_open_direct") :: c_open_direct
-  procedure(c_int_of_path), bind(c, name="kinetostat_path_is_terminal") :: c_path_is_terminal
-  procedure(c_int_of_nothing), bind(c, name="kinetostat_temp_anonymous") :: c_temp_anonymous
-  procedure(c_int_of_nothing), bind(c, name="getpid") :: c_getpid
-  procedure(c_int_of_nothing), bind(c, name="kinetostat_fork") :: c_fork
-  procedure(c_int_of_nothing), bind(c, name="kinetostat_cpu_count") :: c_cpu_count
 
 contains
 
