@@ -306,14 +306,7 @@ contains
     v(1) = s%phi1 * rad_to_deg + 0.0_wp
     pos = 1
     do ip = 1, np
-      ! snap_noise(pair_sign * f, floor), its length known (hypot ignores the signs)
-      if (lengths(ip) <= floor) then
-        f1 = 0.0_wp
-        f2 = 0.0_wp
-      else
-        f1 = deck%pair_sign(ip) * s%f(1, ip)
-        f2 = deck%pair_sign(ip) * s%f(2, ip)
-      end if
+      call signed_force(deck%pair_sign(ip), s%f(:, ip), lengths(ip), floor, f1, f2)
       ! rotate(f, -deck%pair_frame(ip))
       c = plan%turn(1, ip)
       sn = plan%turn(2, ip)
@@ -400,6 +393,28 @@ contains
     end if
     h = h - (t1 + t2) / (h + h)
   end function force_length
+
+  !> A pair's reported force, `sign` times its components f (snap_noise(sign * f, floor)
+  !> with the force's length already known: hypot ignores the signs), N.
+  pure subroutine signed_force(sign, f, length, floor, f1, f2)
+    !> The pair's sign (+1, or -1 where the force on the other link is reported).
+    real(wp), intent(in) :: sign
+    !> The pair force's components, N.
+    real(wp), intent(in) :: f(2)
+    !> Its length, N.
+    real(wp), intent(in) :: length
+    !> The step's roundoff floor, N: a force at or below it is 0.
+    real(wp), intent(in) :: floor
+    !> The reported components, N.
+    real(wp), intent(out) :: f1, f2
+    if (length <= floor) then
+      f1 = 0.0_wp
+      f2 = 0.0_wp
+    else
+      f1 = sign * f(1)
+      f2 = sign * f(2)
+    end if
+  end subroutine signed_force
 
   !> Number of values of a row of the kinematics columns (assur_kinematics_row): per pair its
   !> reference point (2), per moving link its centre of mass (2), angle, speed and
@@ -517,13 +532,7 @@ contains
     ! components in the pairs' frames, then in the links' axes
     jl = j + 2 * np
     do ip = 1, np
-      if (f_len(ip) <= floor) then
-        f1 = 0.0_wp
-        f2 = 0.0_wp
-      else
-        f1 = deck%pair_sign(ip) * s%f(1, ip)
-        f2 = deck%pair_sign(ip) * s%f(2, ip)
-      end if
+      call signed_force(deck%pair_sign(ip), s%f(:, ip), f_len(ip), floor, f1, f2)
       c = plan%turn(1, ip)
       sn = plan%turn(2, ip)
       values(j + 1) = component(c * f1 - sn * f2)
