@@ -5,7 +5,7 @@ module kinetostat_selfcheck
   use kinetostat_vec2, only: cross, fast_magnitude
   implicit none
   private
-  public :: link_balance_t, link_balance, balance_add_force, balance_add_lever, balance_add_couple, balance_add_balance
+  public :: link_balance_t, link_balance, balance_add_force, balance_add_couple, balance_add_balance
   public :: equilibrium_residual, power_mismatch
   public :: selfcheck_tolerance, residual_floor_rel, load_moment_scale
 
@@ -53,8 +53,9 @@ contains
     !> fast_magnitude(f) when the caller has it already (a reaction added to both links it
     !> acts between), N.
     real(wp), intent(in), optional :: f_length
-    real(wp) :: arm(2), f_mag, arm_mag
+    real(wp) :: m, arm(2), f_mag, arm_mag
     arm = at - origin
+    m = cross(arm, f)
     if (present(f_length)) then
       f_mag = f_length
     else
@@ -63,33 +64,13 @@ contains
     ! a force at the origin has no lever arm: hypot(0, 0) = 0 without the call
     arm_mag = 0.0_wp
     if (arm(1) /= 0.0_wp .or. arm(2) /= 0.0_wp) arm_mag = fast_magnitude(arm)
-    call balance_add_lever(balance, arm, arm_mag, f, f_mag)
-  end subroutine balance_add_force
-
-  !> balance_add_force with the lever arm and the lengths at hand: adds force `f` (N), whose
-  !> lever arm from the reference point of the moments is `arm` (m), to `balance` (the same
-  !> sums; a force at the reference point, `arm` = 0 and `arm_length` = 0, takes no square
-  !> root).
-  pure subroutine balance_add_lever(balance, arm, arm_length, f, f_length)
-    !> The link's loads so far.
-    type(link_balance_t), intent(inout) :: balance
-    !> Point of application minus the reference point, m.
-    real(wp), intent(in) :: arm(2)
-    !> Length of `arm` as balance_add_force takes it (0 for a zero arm), m.
-    real(wp), intent(in) :: arm_length
-    !> Force, N.
-    real(wp), intent(in) :: f(2)
-    !> fast_magnitude(f), N.
-    real(wp), intent(in) :: f_length
-    real(wp) :: m
-    m = cross(arm, f)
     balance%sum_f = balance%sum_f + f
-    balance%scale_f = balance%scale_f + f_length
+    balance%scale_f = balance%scale_f + f_mag
     balance%sum_m = balance%sum_m + m
     balance%scale_m = balance%scale_m + abs(m)
-    balance%lever_m = balance%lever_m + arm_length * f_length
-    balance%arm_max = max(balance%arm_max, arm_length)
-  end subroutine balance_add_lever
+    balance%lever_m = balance%lever_m + arm_mag * f_mag
+    balance%arm_max = max(balance%arm_max, arm_mag)
+  end subroutine balance_add_force
 
   !> Adds couple `c` (N*m, CCW positive) to `balance`.
   pure subroutine balance_add_couple(balance, c)

@@ -38,27 +38,19 @@ contains
     real(wp), intent(inout) :: cs(:, 0:)
     !> The dyads' arms (dyad_arms).
     real(wp), intent(in) :: arms(:, :)
-    !> Each unit's pairs as unit_pairs and dyad_pairs find them (units_pairs), when the
-    !> caller keeps them.
-    integer, intent(in), optional :: pairs_of(:, :)
+    !> Each unit's pairs as unit_pairs and dyad_pairs find them (units_pairs).
+    integer, intent(in) :: pairs_of(:, :)
     integer :: u, nk, d, lk, kn, kp(3), inner, e(2)
     real(wp) :: val, th, x(2), w(2)
     placed = .false.
     do u = 1, size(mech%units)
-      if (present(pairs_of)) then
-        kp = pairs_of(1:3, u)
-        nk = pairs_of(4, u)
-        d = pairs_of(5, u)
-        inner = pairs_of(6, u)
-        e = pairs_of(7:8, u)
-      else
-        call unit_pairs(mech, u, kp, nk, d)
-        inner = -1
-        e = 0
-      end if
+      kp = pairs_of(1:3, u)
+      nk = pairs_of(4, u)
+      d = pairs_of(5, u)
+      inner = pairs_of(6, u)
+      e = pairs_of(7:8, u)
       if (nk > 3) return
       if (mech%units(u)%class == 2 .and. nk == 3) then
-        if (inner < 0) call dyad_pairs(mech, mech%units(u)%links, kp, inner, e)
         call place_dyad(mech, mech%units(u)%links, inner, e, q, placed, cs, arms(:, u))
         if (.not. placed) return
         cycle

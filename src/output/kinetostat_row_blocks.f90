@@ -46,8 +46,6 @@ module kinetostat_row_blocks
     logical, allocatable :: whole(:)
     !> Per shown column: no value in a row without values.
     logical, allocatable :: voidable(:)
-    !> Whether any shown column holds whole numbers.
-    logical :: any_whole = .false.
     !> Text before a row's first cell.
     character(len=:), allocatable :: opening
     !> Text between two cells.
@@ -122,7 +120,6 @@ contains
       self%whole(c) = table%is_whole(self%columns(c))
       self%voidable(c) = table%columns(self%columns(c))%voidable
     end do
-    self%any_whole = any(self%whole)
     self%table => table
     self%opening = opening
     self%separator = separator

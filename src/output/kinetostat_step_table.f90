@@ -620,6 +620,8 @@ contains
     character(*), intent(in), optional :: link
     type(column_t) :: c
     real(wp), allocatable :: grown(:, :)
+    !> The new column's legacy heading and Russian unit, where it has them.
+    character(len=:), allocatable :: heading, unit_ru
     integer :: i, j, stat
     ! out of memory already (kinetostat_run stops the run): nothing more is kept
     if (allocated(self%no_room)) return
@@ -644,16 +646,11 @@ contains
         if (.not. allocated(self%columns(j)%unit_ru)) cycle
         if (self%columns(j)%unit == unit) exit
       end do
+      if (j > 0) unit_ru = self%columns(j)%unit_ru
       ! a link-axes column is headed in the legacy table: F21_ALONG, F21_ACROSS
-      if (j > 0 .and. present(link)) then
-        c = column(prefix//suffix, unit, kind, heading=prefix//upper(suffix), unit_ru=self%columns(j)%unit_ru)
-      else if (j > 0) then
-        c = column(prefix//suffix, unit, kind, unit_ru=self%columns(j)%unit_ru)
-      else if (present(link)) then
-        c = column(prefix//suffix, unit, kind, heading=prefix//upper(suffix))
-      else
-        c = column(prefix//suffix, unit, kind)
-      end if
+      if (present(link)) heading = prefix//upper(suffix)
+      ! (an unallocated heading or unit_ru is an absent argument: column's defaults)
+      c = column(prefix//suffix, unit, kind, heading=heading, unit_ru=unit_ru)
       c%kinematic = .not. present(link)
       c%link_axes = present(link)
       if (present(link)) c%frame_link = link
