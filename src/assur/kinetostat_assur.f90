@@ -15,7 +15,7 @@ module kinetostat_assur
   use kinetostat_error, only: error_t, fatal_error, exit_geometry
   use kinetostat_vec2, only: unit_at, cross, magnitude, fast_magnitude
   use kinetostat_loads, only: inertia_force, inertia_moment, gravity_force
-  use kinetostat_selfcheck, only: link_balance_t, balance_add_force, balance_add_lever, balance_add_couple, &
+  use kinetostat_selfcheck, only: link_balance_t, balance_add_force, balance_add_couple, &
     equilibrium_residual, power_mismatch, balance_add_balance, load_moment_scale
   use kinetostat_text, only: int_str
   use kinetostat_format, only: trimmed_es
@@ -524,14 +524,14 @@ contains
     nd = size(mech%dyads)
     ip = crank_pin_index(nd)
     f_pair = f(:, ip)
-    call add_at_origin(known(1), states(1)%o, states(1)%o, f_pair, f_len(ip))
+    call balance_add_force(known(1), states(1)%o, states(1)%o, f_pair, f_len(ip))
     call balance_add_couple(known(1), m1)
     do d = 1, nd
       pa = link_a(d)
       pb = link_b(d)
       ip = pair_index(d, 1)
       f_pair = f(:, ip)
-      call add_at_origin(known(pa), states(pa)%o, poses(d)%p(:, 1), f_pair, f_len(ip))
+      call balance_add_force(known(pa), states(pa)%o, poses(d)%p(:, 1), f_pair, f_len(ip))
       call balance_add_couple(known(pa), m(ip))
       ip = pair_index(d, 2)
       f_pair = f(:, ip)
@@ -542,31 +542,11 @@ contains
       call balance_add_couple(known(pb), -m(ip))
       ip = pair_index(d, 3)
       f_pair = f(:, ip)
-      call add_at_origin(known(pb), states(pb)%o, poses(d)%p(:, 3), f_pair, f_len(ip))
+      call balance_add_force(known(pb), states(pb)%o, poses(d)%p(:, 3), f_pair, f_len(ip))
       call balance_add_couple(known(pb), m(ip))
     end do
     residual = equilibrium_residual(known(1:))
   end subroutine link_equilibrium
-
-  !> balance_add_force(balance, origin, at, f, f_length) for a force the poses apply at the
-  !> link's origin (the crank's pin; a dyad's outer pair on its own link: every kind puts
-  !> link a's origin at pair 1 and link b's at pair 3), the same sums: where `at` - `origin`
-  !> is zero (as it is), its lever arm's length is 0 without balance_add_force's call.
-  pure subroutine add_at_origin(balance, origin, at, f, f_length)
-    !> The link's loads so far.
-    type(link_balance_t), intent(inout) :: balance
-    !> The link's origin and the force's point of application, m; the force, N.
-    real(wp), intent(in) :: origin(2), at(2), f(2)
-    !> fast_magnitude(f), N.
-    real(wp), intent(in) :: f_length
-    real(wp) :: arm(2)
-    arm = at - origin
-    if (arm(1) == 0.0_wp .and. arm(2) == 0.0_wp) then
-      call balance_add_lever(balance, arm, 0.0_wp, f, f_length)
-    else
-      call balance_add_force(balance, origin, at, f, f_length)
-    end if
-  end subroutine add_at_origin
 
   !> Size of the mechanism at this position: the largest distance of a dyad's joint from
   !> the crank pivot, m (a lever arm of the driving moment).
