@@ -14,12 +14,20 @@ module test_columns
   use, intrinsic :: iso_fortran_env, only: int64
   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_positive_inf
   use kinetostat_kinds, only: wp
-  use kinetostat_assur_columns, only: force_length
+  use kinetostat_assur_columns, only: force_length, assur_row_size, assur_columns
+  use kinetostat_assur_deck, only: assur_deck_t, read_assur_deck
   use kinetostat_text, only: int_str
   use test_harness, only: test_counts_t, check_true, next, hex
   implicit none
   private
   public :: run_columns_tests
+
+  !> `&assur` decks with every kind of row: prismatic pairs (their N and M columns), the
+  !> force components, a driving actuator (F_drive and the stroke), friction, a flywheel.
+  character(*), parameter :: assur_decks(*) = [character(len=40) :: &
+    "data/assur_fourbar.nml", "data/assur_slider_crank.nml", "data/assur_sixbar.nml", "data/assur_pr3050.nml", &
+    "data/assur_pr3050_friction.nml", "data/assur_pr3207.nml", "data/assur_pr3207_flywheel.nml", &
+    "data/assur_engine_flywheel.nml", "data/friction_fourbar_resist.nml", "data/friction_slider_crank.nml"]
 
   !> Decks of every kind: the linkage family with its prismatic pairs, actuators and
   !> friction, the dynamics columns, the gears, cams and design kinds.
@@ -38,6 +46,9 @@ contains
     integer :: i
     call test_checker_fails(t)
     call test_force_length(t)
+    do i = 1, size(assur_decks)
+      call test_row_size(t, trim(assur_decks(i)))
+    end do
     do i = 1, size(decks)
       call test_deck(t, trim(decks(i)), .false.)
     end do
@@ -105,6 +116,23 @@ contains
       if (btest(bits, 0)) v = -v
     end function random_value
   end subroutine test_force_length
+
+  !> assur_row_size (a row's values, counted without declaring the columns: their Russian
+  !> units are looked up in the labels' dictionary) against the columns assur_columns
+  !> declares, for an `&assur` deck.
+  subroutine test_row_size(t, path)
+    type(test_counts_t), intent(inout) :: t
+    character(*), intent(in) :: path
+    type(deck_source_t) :: source
+    type(assur_deck_t) :: deck
+    type(error_t), allocatable :: error
+    call load_deck(path, source, error)
+    if (.not. allocated(error)) call read_assur_deck(source, deck, error)
+    call check_true(t, "row size "//path//" reads", .not. allocated(error), "expected a deck, found an error")
+    if (allocated(error)) return
+    call check_true(t, "row size "//path, assur_row_size(deck) == size(assur_columns(deck)), &
+      "assur_row_size "//int_str(assur_row_size(deck))//", columns declared "//int_str(size(assur_columns(deck))))
+  end subroutine test_row_size
 
   !> The declarations of a deck's run and its legacy table in both languages.
   subroutine test_deck(t, path, link_frame)
